@@ -1,0 +1,177 @@
+//! The command line (clap): `plcsh` opens the REPL on a simulated K2; `-c` runs commands
+//! one-shot; subcommands are thin calls into the session and the shell.
+//! Exit status: 0 when every command succeeded, 1 when any failed, 2 for a usage error.
+
+use crate::core::{Clock, ErrorKind};
+use crate::k2::catalog;
+use crate::output::{self, Outcome, Style};
+use crate::session::Session;
+use crate::shell::{repl, Shell};
+use clap::{Parser, Subcommand, ValueEnum};
+use std::io::{IsTerminal, Write};
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum TimeMode {
+    /// Simulator time follows the wall clock.
+    Wall,
+    /// Simulator time moves only when stepped (`sim step`, waits in scripts).
+    Stepped,
+}
+
+#[derive(Parser, Debug)]
+#[command(name = "plcsh", version, about = "A shell for commissioning and debugging Kinco K2 PLCs and servo drives", long_about = None)]
+pub struct Cli {
+    /// Run these commands (separated by `;`) and exit.
+    #[arg(short = 'c', long = "command", value_name = "COMMANDS")]
+    pub command: Option<String>,
+    /// Print one JSON object per command result.
+    #[arg(long, global = true)]
+    pub json: bool,
+    /// Show more (request counts; -vv frames).
+    #[arg(short, long, action = clap::ArgAction::Count, global = true)]
+    pub verbose: u8,
+    /// Model of the default simulated PLC.
+    #[arg(long, default_value = catalog::DEFAULT_MODEL, global = true)]
+    pub model: String,
+    /// Add a device: NAME=URL (or just URL, which replaces `plc`). Repeatable.
+    #[arg(long = "device", short = 'd', value_name = "NAME=URL", global = true)]
+    pub devices: Vec<String>,
+    /// Simulator time: follow the wall clock, or move only when stepped.
+    #[arg(long, value_enum, default_value = "wall", global = true)]
+    pub time: TimeMode,
+    #[command(subcommand)]
+    pub sub: Option<Sub>,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Sub {
+    /// List the K2 model catalogue (areas, I/O, counters, pulse outputs, manual disagreements).
+    Models,
+}
+
+/// Splits `NAME=URL` (or a bare URL, named `plc`).
+pub fn split_device_arg(arg: &str) -> (String, String) {
+    if let Some((name, url)) = arg.split_once('=') {
+        if !name.is_empty()
+            && !name.contains(':')
+            && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-')
+        {
+            return (name.to_string(), url.to_string());
+        }
+    }
+    ("plc".to_string(), arg.to_string())
+}
+
+/// Builds the session the flags describe: `plc` on the simulator, then every `--device`.
+pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
+    let clock = match cli.time {
+        TimeMode::Wall => Clock::following(),
+        TimeMode::Stepped => Clock::stepped(),
+    };
+    let mut s = Session::new(clock);
+    s.open("plc", &format!("sim:{}", cli.model))?;
+    for d in &cli.devices {
+        let (name, url) = split_device_arg(d);
+        s.open(&name, &url)?;
+    }
+    s.use_device("plc")?;
+    Ok(s)
+}
+
+/// Entry point; returns the process exit status.
+pub fn main() -> i32 {
+    let cli = match Cli::try_parse() {
+        Ok(c) => c,
+        Err(e) => {
+            let _ = e.print();
+            return if e.use_stderr() { 2 } else { 0 };
+        }
+    };
+    let stdout_tty = std::io::stdout().is_terminal();
+    let style = Style::detect(cli.json, stdout_tty);
+    let mut out = std::io::stdout().lock();
+    let session = match build_session(&cli) {
+        Ok(s) => s,
+        Err(e) => {
+            let _ = output::write_error(&mut out, style, "open", &e, None);
+            return if e.kind == ErrorKind::Usage { 2 } else { 1 };
+        }
+    };
+    let _ =
+        signal_hook::flag::register_conditional_shutdown(signal_hook::consts::SIGINT, 130, session.interrupt.clone());
+    let _ = signal_hook::flag::register(signal_hook::consts::SIGINT, session.interrupt.clone());
+    let mut shell = Shell::new(session, style);
+    shell.verbose = cli.verbose > 0;
+
+    if let Some(sub) = &cli.sub {
+        return match sub {
+            Sub::Models => {
+                let o = models_outcome();
+                let _ = output::write_outcome(&mut out, style, &o);
+                0
+            }
+        };
+    }
+    if let Some(cmds) = &cli.command {
+        return i32::from(!shell.run_line(cmds, &mut out));
+    }
+    drop(out);
+    if std::io::stdin().is_terminal() {
+        repl::interactive(&mut shell)
+    } else {
+        let stdin = std::io::stdin();
+        let mut input = stdin.lock();
+        let mut out = std::io::stdout().lock();
+        let code = repl::batch(&mut shell, &mut input, &mut out);
+        let _ = out.flush();
+        code
+    }
+}
+
+/// The catalogue as a table and JSON.
+pub fn models_outcome() -> Outcome {
+    let rows = catalog::MODELS
+        .iter()
+        .map(|m| {
+            let pto: Vec<String> = m.pto.iter().map(|p| format!("{} {}k", p.output, p.max_hz / 1000)).collect();
+            let hsc: Vec<String> = m
+                .hsc
+                .iter()
+                .map(|h| format!("HSC{} {}k/{}k", h.channel, h.max_hz_single / 1000, h.max_hz_ab / 1000))
+                .collect();
+            vec![
+                m.name.to_string(),
+                format!("{}/{}/{}", m.di, m.dout, m.dio),
+                format!("{}/{}", m.ai, m.ao),
+                format!(
+                    "I{} Q{} M{} V{} AI{} AQ{}",
+                    m.i_bytes, m.q_bytes, m.m_bytes, m.v_bytes, m.ai_bytes, m.aq_bytes
+                ),
+                if hsc.is_empty() { "-".into() } else { hsc.join(", ") },
+                if pto.is_empty() { "none (relay outputs)".into() } else { pto.join(", ") },
+                m.discrepancies
+                    .iter()
+                    .map(|d| format!("{}: chose {}; {}", d.what, d.chosen, d.other))
+                    .collect::<Vec<_>>()
+                    .join("; "),
+            ]
+        })
+        .collect();
+    Outcome::new("models")
+        .table(
+            &["model", "DI/DO/DIO", "AI/AO", "area bytes", "HSC (1-phase/AB)", "pulse outputs", "manual disagreements"],
+            rows,
+        )
+        .with("models", catalog::MODELS)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn device_args_with_and_without_names() {
+        assert_eq!(split_device_arg("press=sim:K209EA-50DX"), ("press".into(), "sim:K209EA-50DX".into()));
+        assert_eq!(split_device_arg("tcp://127.0.0.1:502?unit=1"), ("plc".into(), "tcp://127.0.0.1:502?unit=1".into()));
+    }
+}

@@ -1,0 +1,143 @@
+//! The virtual clock every simulator reads (design: "time is a value, not a sleep").
+//!
+//! Two modes: *following* the wall clock (the REPL's default, so pulses go out in real
+//! time), or *stepped*, where time moves only when told (`sim step 500ms`, a script's
+//! `plcsh.sleep` in stepped mode). Simulators compute their state analytically from the
+//! elapsed virtual time, so one step of an hour costs the same as a step of a millisecond.
+//! The clock is shared (cheap `Clone`) by every simulated device in a session, so wired
+//! devices see one time.
+
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
+
+#[derive(Debug)]
+struct State {
+    stepped: bool,
+    /// Virtual time at `anchor`.
+    base: Duration,
+    anchor: Instant,
+}
+
+/// A shared virtual clock. Time starts at zero when the clock is created.
+#[derive(Clone, Debug)]
+pub struct Clock {
+    state: Arc<Mutex<State>>,
+}
+
+impl Default for Clock {
+    fn default() -> Self {
+        Clock::following()
+    }
+}
+
+impl Clock {
+    /// A clock that follows the wall clock.
+    pub fn following() -> Clock {
+        Clock { state: Arc::new(Mutex::new(State { stepped: false, base: Duration::ZERO, anchor: Instant::now() })) }
+    }
+
+    /// A clock that moves only when stepped.
+    pub fn stepped() -> Clock {
+        let c = Clock::following();
+        c.state.lock().unwrap().stepped = true;
+        c
+    }
+
+    fn lock(&self) -> std::sync::MutexGuard<'_, State> {
+        self.state.lock().unwrap_or_else(|p| p.into_inner())
+    }
+
+    /// Virtual time since the clock started.
+    pub fn now(&self) -> Duration {
+        let s = self.lock();
+        if s.stepped {
+            s.base
+        } else {
+            s.base + s.anchor.elapsed()
+        }
+    }
+
+    pub fn is_stepped(&self) -> bool {
+        self.lock().stepped
+    }
+
+    /// Advances by exactly `d` and leaves the clock stepped from then on.
+    pub fn step(&self, d: Duration) {
+        let mut s = self.lock();
+        let now = if s.stepped { s.base } else { s.base + s.anchor.elapsed() };
+        s.base = now + d;
+        s.stepped = true;
+    }
+
+    /// Makes the clock follow the wall clock again, from the current virtual time.
+    pub fn run(&self) {
+        let mut s = self.lock();
+        if s.stepped {
+            s.anchor = Instant::now();
+            s.stepped = false;
+        }
+    }
+
+    /// Waits `d` of virtual time: instantly in stepped mode (the clock is advanced), for
+    /// real otherwise. Returns `false` if `interrupt` was raised before the time was up.
+    pub fn sleep(&self, d: Duration, interrupt: &AtomicBool) -> bool {
+        if self.is_stepped() {
+            self.step(d);
+            return !interrupt.load(Ordering::Relaxed);
+        }
+        let end = Instant::now() + d;
+        loop {
+            if interrupt.load(Ordering::Relaxed) {
+                return false;
+            }
+            let now = Instant::now();
+            if now >= end {
+                return true;
+            }
+            std::thread::sleep((end - now).min(Duration::from_millis(20)));
+        }
+    }
+}
+
+/// Formats a virtual time as `12.345678s`.
+pub fn format_time(d: Duration) -> String {
+    format!("{}.{:06}s", d.as_secs(), d.subsec_micros())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn stepped_clock_moves_only_when_told() {
+        let c = Clock::stepped();
+        assert_eq!(c.now(), Duration::ZERO);
+        std::thread::sleep(Duration::from_millis(2));
+        assert_eq!(c.now(), Duration::ZERO);
+        c.step(Duration::from_millis(500));
+        assert_eq!(c.now(), Duration::from_millis(500));
+        let never = AtomicBool::new(false);
+        assert!(c.sleep(Duration::from_secs(600), &never));
+        assert_eq!(c.now(), Duration::from_millis(600_500));
+    }
+
+    #[test]
+    fn following_clock_becomes_stepped_after_a_step_and_resumes_on_run() {
+        let c = Clock::following();
+        c.step(Duration::from_secs(10));
+        assert!(c.is_stepped());
+        let t = c.now();
+        assert!(t >= Duration::from_secs(10));
+        c.run();
+        assert!(!c.is_stepped());
+        assert!(c.now() >= t);
+    }
+
+    #[test]
+    fn sleep_returns_false_when_interrupted() {
+        let c = Clock::following();
+        let stop = AtomicBool::new(true);
+        assert!(!c.sleep(Duration::from_secs(5), &stop));
+    }
+}

@@ -1,0 +1,386 @@
+//! IEC 61131-3 / KincoBuilder literals (`../shared/spec/k2.md` §2): `133`, `-5`, `16#85`,
+//! `2#1010_0101`, `8#17`, `B#16#85`, `W#16#FFFF`, `DW#16#…`, `DI#100`, `INT#-3`,
+//! `REAL#1.5`, `T#500ms`, and `TRUE`/`FALSE`/`ON`/`OFF` for bits.
+//!
+//! Parsing and fitting are two steps: [`parse_literal`] reads the text; [`Literal::fit`]
+//! checks it against the operand it is written to. A value that does not fit is an error,
+//! never a silent wrap: `300` into a byte fails, `-1` into a WORD fails unless it is written
+//! as a signed type (`INT#-1`), and a bit pattern (`16#FFFF`) fills any operand of its width.
+
+use super::value::{mask, DataType, Value};
+
+/// A parsed literal, not yet checked against an operand.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Literal {
+    pub value: Value,
+    /// The type the literal was written as (`INT#-3` → INT, `W#16#FFFF` → WORD).
+    pub declared: Option<DataType>,
+    /// Written in a radix (`16#`, `2#`, `8#`): a bit pattern rather than a number.
+    pub pattern: bool,
+    /// The text as typed (for messages).
+    pub text: String,
+}
+
+/// Why a literal did not parse; `column` is 0-based within the literal text.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LiteralError {
+    pub column: usize,
+    pub message: String,
+}
+
+fn err(column: usize, message: impl Into<String>) -> LiteralError {
+    LiteralError { column, message: message.into() }
+}
+
+/// Parses one literal. Spaces around `#` are accepted (`B # 16 # 85`, as the manual's
+/// scanned text writes it); other spaces are not.
+pub fn parse_literal(text: &str) -> Result<Literal, LiteralError> {
+    let trimmed = text.trim();
+    if trimmed.is_empty() {
+        return Err(err(0, "a value is missing"));
+    }
+    let compact: String = squeeze_hash_spaces(trimmed);
+    if let Some(pos) = compact.find(char::is_whitespace) {
+        return Err(err(pos, format!("unexpected space in value `{trimmed}`")));
+    }
+    let upper = compact.to_ascii_uppercase();
+    let mut lit = match upper.as_str() {
+        "TRUE" | "ON" => {
+            Literal { value: Value::Bool(true), declared: Some(DataType::Bool), pattern: false, text: String::new() }
+        }
+        "FALSE" | "OFF" => {
+            Literal { value: Value::Bool(false), declared: Some(DataType::Bool), pattern: false, text: String::new() }
+        }
+        _ => parse_typed(&upper)?,
+    };
+    lit.text = trimmed.to_string();
+    Ok(lit)
+}
+
+fn squeeze_hash_spaces(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    let chars: Vec<char> = s.chars().collect();
+    for (i, &c) in chars.iter().enumerate() {
+        if c.is_whitespace() {
+            let prev = chars[..i].iter().rev().find(|c| !c.is_whitespace());
+            let next = chars[i + 1..].iter().find(|c| !c.is_whitespace());
+            if prev == Some(&'#') || next == Some(&'#') {
+                continue;
+            }
+        }
+        out.push(c);
+    }
+    out
+}
+
+/// Type prefixes: `B#`, `W#`, `DW#` are bit patterns; the others are typed numbers.
+const TYPE_PREFIXES: &[(&str, DataType)] = &[
+    ("DW", DataType::DWord),
+    ("DWORD", DataType::DWord),
+    ("W", DataType::Word),
+    ("WORD", DataType::Word),
+    ("B", DataType::Byte),
+    ("BYTE", DataType::Byte),
+    ("DI", DataType::DInt),
+    ("DINT", DataType::DInt),
+    ("INT", DataType::Int),
+    ("I", DataType::Int),
+    ("SINT", DataType::SInt),
+    ("REAL", DataType::Real),
+    ("R", DataType::Real),
+    ("BOOL", DataType::Bool),
+    ("UINT", DataType::Word),
+    ("UDINT", DataType::DWord),
+    ("USINT", DataType::Byte),
+];
+
+fn parse_typed(s: &str) -> Result<Literal, LiteralError> {
+    // T#500ms / TIME#1s200ms
+    if let Some(rest) = s.strip_prefix("T#").or_else(|| s.strip_prefix("TIME#")) {
+        let ms = parse_duration_ms(rest).map_err(|m| err(s.len() - rest.len(), m))?;
+        return Ok(Literal { value: Value::Int(ms), declared: None, pattern: false, text: String::new() });
+    }
+    if let Some(hash) = s.find('#') {
+        let head = &s[..hash];
+        if let Some(&(_, t)) = TYPE_PREFIXES.iter().find(|(p, _)| *p == head) {
+            let rest = &s[hash + 1..];
+            let mut inner = parse_number(rest).map_err(|e| err(e.column + hash + 1, e.message))?;
+            if t == DataType::Real {
+                inner.value = Value::Real(inner.value.as_f64());
+            } else if let Value::Real(_) = inner.value {
+                return Err(err(
+                    hash + 1,
+                    format!("{head}# takes an integer; write REAL#{rest} for a floating-point value"),
+                ));
+            }
+            let is_pattern_type = matches!(t, DataType::Byte | DataType::Word | DataType::DWord);
+            if t != DataType::Real {
+                let (lo, hi) = t.int_range();
+                let v = inner.value.as_i64();
+                if v < lo || v > hi {
+                    return Err(err(0, format!("{v} does not fit {} ({lo}…{hi})", t.name())));
+                }
+            }
+            return Ok(Literal {
+                value: if t == DataType::Bool { Value::Bool(inner.value.as_i64() != 0) } else { inner.value },
+                declared: Some(t),
+                pattern: is_pattern_type || inner.pattern,
+                text: String::new(),
+            });
+        }
+        if head.chars().all(|c| c.is_ascii_digit() || c == '-') {
+            return parse_number(s);
+        }
+        return Err(err(
+            0,
+            format!("unknown type prefix `{head}#` (use B#, W#, DW#, INT#, DI#, REAL#, T# or a radix 2#, 8#, 16#)"),
+        ));
+    }
+    parse_number(s)
+}
+
+/// A plain or radix number: `-5`, `1.5`, `16#85`, `2#1010_0101`, `8#17`.
+fn parse_number(s: &str) -> Result<Literal, LiteralError> {
+    let (neg, body, off) = match s.strip_prefix('-') {
+        Some(r) => (true, r, 1),
+        None => (false, s.strip_prefix('+').unwrap_or(s), usize::from(s.starts_with('+'))),
+    };
+    if body.is_empty() {
+        return Err(err(off, "a number is missing"));
+    }
+    if let Some(hash) = body.find('#') {
+        let radix: u32 = match &body[..hash] {
+            "16" => 16,
+            "8" => 8,
+            "2" => 2,
+            "10" => 10,
+            r => return Err(err(off, format!("radix {r}# is not one of 2#, 8#, 10#, 16#"))),
+        };
+        let digits: String = body[hash + 1..].chars().filter(|&c| c != '_').collect();
+        if digits.is_empty() {
+            return Err(err(off + hash + 1, format!("no digits after {radix}#")));
+        }
+        if let Some((i, c)) = body[hash + 1..].char_indices().find(|&(_, c)| c != '_' && !c.is_digit(radix)) {
+            return Err(err(off + hash + 1 + i, format!("`{c}` is not a base-{radix} digit")));
+        }
+        let v = u64::from_str_radix(&digits, radix).map_err(|_| err(off, "number too large"))?;
+        if v > u32::MAX as u64 {
+            return Err(err(off, format!("{s} is wider than 32 bits")));
+        }
+        let v = if neg { -(v as i64) } else { v as i64 };
+        return Ok(Literal { value: Value::Int(v), declared: None, pattern: radix != 10 && !neg, text: String::new() });
+    }
+    let digits: String = body.chars().filter(|&c| c != '_').collect();
+    if digits.contains(['.', 'E', 'e']) {
+        let f: f64 = digits.parse().map_err(|_| err(off, format!("`{s}` is not a number")))?;
+        return Ok(Literal {
+            value: Value::Real(if neg { -f } else { f }),
+            declared: None,
+            pattern: false,
+            text: String::new(),
+        });
+    }
+    if let Some((i, c)) = body.char_indices().find(|&(_, c)| !c.is_ascii_digit() && c != '_') {
+        return Err(err(off + i, format!("`{c}` is not a digit in `{s}`")));
+    }
+    let v: i64 = digits.parse().map_err(|_| err(off, format!("{s} is too large")))?;
+    Ok(Literal { value: Value::Int(if neg { -v } else { v }), declared: None, pattern: false, text: String::new() })
+}
+
+/// `500ms`, `1s200ms`, `2.5s`, `1m30s`, `1h`, `250us` → milliseconds (µs are rounded down
+/// only if exact; otherwise an error, since T# values are whole milliseconds).
+pub fn parse_duration_ms(s: &str) -> Result<i64, String> {
+    let us = parse_duration_us(s)?;
+    if us % 1000 != 0 {
+        return Err(format!("T#{s} is not a whole number of milliseconds"));
+    }
+    Ok(us / 1000)
+}
+
+/// A duration in microseconds from text like `500ms`, `1s200ms`, `2.5s`, `250us`, `1h`.
+pub fn parse_duration_us(s: &str) -> Result<i64, String> {
+    let s = s.trim().to_ascii_lowercase();
+    if s.is_empty() {
+        return Err("a duration is missing (e.g. 500ms, 2s, 250us)".into());
+    }
+    let mut total: f64 = 0.0;
+    let mut rest = s.as_str();
+    while !rest.is_empty() {
+        let num_len = rest.find(|c: char| !(c.is_ascii_digit() || c == '.' || c == '_')).unwrap_or(rest.len());
+        if num_len == 0 {
+            return Err(format!("`{s}` is not a duration (e.g. 500ms, 2s, 250us)"));
+        }
+        let n: f64 = rest[..num_len].replace('_', "").parse().map_err(|_| format!("`{s}` is not a duration"))?;
+        rest = &rest[num_len..];
+        let unit_len = rest.find(|c: char| c.is_ascii_digit()).unwrap_or(rest.len());
+        let factor = match &rest[..unit_len] {
+            "d" => 86_400e6,
+            "h" => 3_600e6,
+            "m" | "min" => 60e6,
+            "s" | "" => 1e6,
+            "ms" => 1e3,
+            "us" | "µs" => 1.0,
+            u => return Err(format!("unknown time unit `{u}` in `{s}` (use h, m, s, ms, us)")),
+        };
+        total += n * factor;
+        rest = &rest[unit_len..];
+    }
+    Ok(total.round() as i64)
+}
+
+impl Literal {
+    /// Checks this literal against an operand of type `target` whose significant width is
+    /// `bits` (equal to `target.bits()` except for bit groups such as `K1M0`, 4 bits), and
+    /// returns the value in the operand's own type.
+    pub fn fit(&self, target: DataType, bits: u32) -> Result<Value, String> {
+        let shown = &self.text;
+        match target {
+            DataType::Bool => {
+                return match self.value {
+                    Value::Bool(b) => Ok(Value::Bool(b)),
+                    Value::Int(0) => Ok(Value::Bool(false)),
+                    Value::Int(1) => Ok(Value::Bool(true)),
+                    _ => Err(format!("{shown} does not fit a bit (use 0/1, TRUE/FALSE, ON/OFF)")),
+                };
+            }
+            DataType::Real => {
+                return match self.value {
+                    Value::Bool(_) => Err(format!("{shown} is a bit, not a REAL")),
+                    v => Ok(Value::Real(v.as_f64())),
+                };
+            }
+            _ => {}
+        }
+        let v = match self.value {
+            Value::Bool(b) => b as i64,
+            Value::Int(i) => i,
+            Value::Real(r) => {
+                if self.declared == Some(DataType::Real) && bits == 32 {
+                    // REAL#1.5 into a 32-bit integer operand stores the IEEE pattern.
+                    return Ok(target.decode((r as f32).to_bits()));
+                }
+                return Err(format!(
+                    "{shown} is not an integer; a {} holds whole numbers (to store an IEEE float use a 32-bit operand with /REAL, e.g. VD100/REAL)",
+                    target.name()
+                ));
+            }
+        };
+        let raw: u64 = match self.declared {
+            Some(t) if t.is_signed() => {
+                if t.bits() > bits {
+                    return Err(format!(
+                        "{shown} is a {} ({} bits) and does not fit a {bits}-bit operand",
+                        t.name(),
+                        t.bits()
+                    ));
+                }
+                v as u64 & mask(bits)
+            }
+            Some(t) if t != DataType::Bool && t.bits() > bits => {
+                return Err(format!(
+                    "{shown} is a {} ({} bits) and does not fit a {bits}-bit operand",
+                    t.name(),
+                    t.bits()
+                ));
+            }
+            _ if self.pattern || !target.is_signed() => {
+                if v < 0 || v as u64 > mask(bits) {
+                    let hint = if v < 0 && !target.is_signed() {
+                        format!("; write it as a signed type (INT#{v}, DI#{v}) to store its two's complement")
+                    } else {
+                        String::new()
+                    };
+                    let what =
+                        if bits == target.bits() { target.name().to_string() } else { format!("a {bits}-bit group") };
+                    return Err(format!("{shown} is out of range for {what} (0…{}){hint}", mask(bits)));
+                }
+                v as u64
+            }
+            _ => {
+                let (lo, hi) = (-(1i64 << (bits - 1)), (1i64 << (bits - 1)) - 1);
+                if v < lo || v > hi {
+                    return Err(format!("{shown} does not fit {} ({lo}…{hi})", target.name()));
+                }
+                v as u64 & mask(bits)
+            }
+        };
+        Ok(target.decode(raw as u32))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn fit(s: &str, t: DataType) -> Result<Value, String> {
+        parse_literal(s).map_err(|e| e.message)?.fit(t, t.bits())
+    }
+
+    #[test]
+    fn every_literal_form_parses() {
+        let cases: &[(&str, Value)] = &[
+            ("133", Value::Int(133)),
+            ("-5", Value::Int(-5)),
+            ("16#85", Value::Int(0x85)),
+            ("2#1010_0101", Value::Int(0xA5)),
+            ("8#17", Value::Int(15)),
+            ("B#16#85", Value::Int(0x85)),
+            ("b # 16 # 85", Value::Int(0x85)),
+            ("W#16#FFFF", Value::Int(0xFFFF)),
+            ("DW#16#DEADBEEF", Value::Int(0xDEAD_BEEF)),
+            ("DI#100", Value::Int(100)),
+            ("INT#-3", Value::Int(-3)),
+            ("REAL#1.5", Value::Real(1.5)),
+            ("1.5", Value::Real(1.5)),
+            ("T#500ms", Value::Int(500)),
+            ("T#1s200ms", Value::Int(1200)),
+            ("TRUE", Value::Bool(true)),
+            ("off", Value::Bool(false)),
+        ];
+        for (s, v) in cases {
+            assert_eq!(parse_literal(s).unwrap().value, *v, "{s}");
+        }
+    }
+
+    #[test]
+    fn values_that_do_not_fit_are_errors_not_wraps() {
+        assert_eq!(fit("300", DataType::Byte).unwrap_err(), "300 is out of range for BYTE (0…255)");
+        assert!(fit("-1", DataType::Word).unwrap_err().contains("INT#-1"));
+        assert_eq!(fit("INT#-1", DataType::Word), Ok(Value::Int(0xFFFF)));
+        assert_eq!(fit("16#FFFF", DataType::Int), Ok(Value::Int(-1)));
+        assert!(fit("W#16#FFFF", DataType::Byte).is_err());
+        assert!(fit("DI#100", DataType::Word).is_err());
+        assert_eq!(fit("INT#-3", DataType::DInt), Ok(Value::Int(-3)));
+        assert_eq!(fit("-1", DataType::Int), Ok(Value::Int(-1)));
+        assert!(fit("32768", DataType::Int).is_err());
+        assert!(fit("1.5", DataType::DWord).unwrap_err().contains("REAL"));
+        assert_eq!(fit("REAL#1.5", DataType::DWord), Ok(Value::Int(0x3FC0_0000)));
+        assert_eq!(fit("2", DataType::Real), Ok(Value::Real(2.0)));
+        assert!(fit("2", DataType::Bool).is_err());
+        assert_eq!(fit("1", DataType::Bool), Ok(Value::Bool(true)));
+        assert_eq!(
+            parse_literal("16").unwrap().fit(DataType::Word, 4).unwrap_err(),
+            "16 is out of range for a 4-bit group (0…15)"
+        );
+    }
+
+    #[test]
+    fn bad_literals_point_at_the_column() {
+        let e = parse_literal("16#8G").unwrap_err();
+        assert_eq!(e.column, 4);
+        assert!(e.message.contains("base-16"));
+        assert!(parse_literal("X#5").unwrap_err().message.contains("unknown type prefix"));
+        assert_eq!(parse_literal("12a").unwrap_err().column, 2);
+        assert!(parse_literal("").is_err());
+        assert!(parse_literal("INT#40000").is_err());
+        assert!(parse_literal("T#5parsecs").is_err());
+    }
+
+    #[test]
+    fn durations() {
+        assert_eq!(parse_duration_us("250us"), Ok(250));
+        assert_eq!(parse_duration_us("2.5s"), Ok(2_500_000));
+        assert_eq!(parse_duration_us("1m30s"), Ok(90_000_000));
+        assert!(parse_duration_us("fast").is_err());
+    }
+}

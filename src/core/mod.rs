@@ -1,0 +1,16 @@
+//! Family-neutral building blocks: values, literals, operands, the device trait, errors
+//! and the virtual clock. Nothing here knows a PLC model or a wire protocol.
+
+pub mod clock;
+pub mod device;
+pub mod error;
+pub mod literal;
+pub mod operand;
+pub mod url;
+pub mod value;
+
+pub use clock::Clock;
+pub use device::{Device, DeviceInfo};
+pub use error::{Error, ErrorKind, Result};
+pub use operand::{Candidate, Operand, OperandSpace};
+pub use value::{DataType, Value};

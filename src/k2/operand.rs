@@ -1,0 +1,651 @@
+//! The K2 operand grammar (`../shared/spec/k2.md` §2, bit groups from
+//! `../shared/spec/fx-and-masterk.md` A): a pure parser and printer, no model knowledge
+//! (bounds are checked by [`super::space`]).
+//!
+//! Forms: bit `M10.3`; byte `VB301`; word `VW100`, `AIW0`; double word `VD3010`; timers and
+//! counters `T5`, `C10`; bit groups `K1M0`…`K8M0` (4·n bits from any bit area, `K4M10.4`
+//! starts mid-byte); an optional `%` prefix; a view suffix `/INT`, `/DINT`, `/REAL`, `/SINT`
+//! that reads the same bytes as another type of the same width. Ranges: `VW0..VW20`
+//! (inclusive, step = operand size) and the count form `VW0[10]` (ten words from VW0) —
+//! brackets cannot be mistaken for the `device:` prefix. Input is case-insensitive; output
+//! is canonical upper case.
+
+use crate::core::{DataType, Error, ErrorKind, Result};
+
+/// A K2 memory area.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Area {
+    I,
+    Q,
+    M,
+    V,
+    SM,
+    AI,
+    AQ,
+    T,
+    C,
+}
+
+impl Area {
+    pub const ALL: [Area; 9] = [Area::I, Area::Q, Area::M, Area::V, Area::SM, Area::AI, Area::AQ, Area::T, Area::C];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Area::I => "I",
+            Area::Q => "Q",
+            Area::M => "M",
+            Area::V => "V",
+            Area::SM => "SM",
+            Area::AI => "AI",
+            Area::AQ => "AQ",
+            Area::T => "T",
+            Area::C => "C",
+        }
+    }
+
+    pub fn meaning(self) -> &'static str {
+        match self {
+            Area::I => "digital inputs",
+            Area::Q => "digital outputs",
+            Area::M => "internal memory bits",
+            Area::V => "variable memory",
+            Area::SM => "special memory (system and function registers)",
+            Area::AI => "analog inputs",
+            Area::AQ => "analog outputs",
+            Area::T => "timers (current value)",
+            Area::C => "counters (current value)",
+        }
+    }
+
+    /// Areas that have bit, byte, word and double-word forms.
+    pub fn is_bit_area(self) -> bool {
+        matches!(self, Area::I | Area::Q | Area::M | Area::V | Area::SM)
+    }
+
+    fn index(self) -> u64 {
+        Area::ALL.iter().position(|a| *a == self).unwrap() as u64
+    }
+}
+
+/// How much of the area an operand covers.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Width {
+    Bit(u8),
+    Byte,
+    Word,
+    DWord,
+    /// `KnX`: 4·n bits starting at bit `bit` of the byte.
+    Group {
+        n: u8,
+        bit: u8,
+    },
+    /// A timer or counter (`T5`): `byte` holds the element number.
+    Element,
+}
+
+impl Width {
+    /// Bytes spanned (bit operands: 1; groups: the bytes they touch).
+    pub fn bytes(self) -> u32 {
+        match self {
+            Width::Bit(_) | Width::Byte => 1,
+            Width::Word => 2,
+            Width::DWord => 4,
+            Width::Group { n, bit } => (bit as u32 + 4 * n as u32).div_ceil(8),
+            Width::Element => 1,
+        }
+    }
+    fn code(self) -> (u64, u64, u64) {
+        match self {
+            Width::Bit(b) => (0, b as u64, 0),
+            Width::Byte => (1, 0, 0),
+            Width::Word => (2, 0, 0),
+            Width::DWord => (3, 0, 0),
+            Width::Group { n, bit } => (4, bit as u64, n as u64),
+            Width::Element => (5, 0, 0),
+        }
+    }
+}
+
+/// A parsed K2 operand.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct K2Operand {
+    pub area: Area,
+    pub width: Width,
+    /// Byte address (or element number for T/C).
+    pub byte: u32,
+    /// The type the value is shown and written as.
+    pub view: DataType,
+}
+
+impl K2Operand {
+    pub fn new(area: Area, width: Width, byte: u32) -> K2Operand {
+        K2Operand { area, width, byte, view: default_view(area, width) }
+    }
+    pub fn bit(area: Area, byte: u32, bit: u8) -> K2Operand {
+        K2Operand::new(area, Width::Bit(bit), byte)
+    }
+    pub fn byte(area: Area, byte: u32) -> K2Operand {
+        K2Operand::new(area, Width::Byte, byte)
+    }
+    pub fn word(area: Area, byte: u32) -> K2Operand {
+        K2Operand::new(area, Width::Word, byte)
+    }
+    pub fn dword(area: Area, byte: u32) -> K2Operand {
+        K2Operand::new(area, Width::DWord, byte)
+    }
+
+    /// Significant bits of the value.
+    pub fn bits(&self) -> u32 {
+        match self.width {
+            Width::Group { n, .. } => 4 * n as u32,
+            _ => self.view.bits(),
+        }
+    }
+
+    /// Packs into the family-neutral operand key.
+    pub fn key(&self) -> u64 {
+        let (kind, bit, n) = self.width.code();
+        let view = DataType::ALL.iter().position(|t| *t == self.view).unwrap() as u64;
+        (self.byte as u64) | (self.area.index() << 32) | (kind << 36) | (bit << 40) | (n << 44) | (view << 48)
+    }
+
+    pub fn from_key(key: u64) -> K2Operand {
+        let area = Area::ALL[((key >> 32) & 0xF) as usize];
+        let bit = ((key >> 40) & 0xF) as u8;
+        let n = ((key >> 44) & 0xF) as u8;
+        let width = match (key >> 36) & 0xF {
+            0 => Width::Bit(bit),
+            1 => Width::Byte,
+            2 => Width::Word,
+            3 => Width::DWord,
+            4 => Width::Group { n, bit },
+            _ => Width::Element,
+        };
+        K2Operand { area, width, byte: key as u32, view: DataType::ALL[((key >> 48) & 0xF) as usize] }
+    }
+
+    pub fn to_core(&self) -> crate::core::Operand {
+        crate::core::Operand { key: self.key(), dtype: self.view, bits: self.bits() as u8 }
+    }
+
+    /// The operand's canonical text (`VW100`, `M10.3`, `K4M0`, `VD100/REAL`).
+    pub fn canonical(&self) -> String {
+        let a = self.area.name();
+        let mut s = match self.width {
+            Width::Bit(b) => format!("{a}{}.{b}", self.byte),
+            Width::Byte => format!("{a}B{}", self.byte),
+            Width::Word => format!("{a}W{}", self.byte),
+            Width::DWord => format!("{a}D{}", self.byte),
+            Width::Group { n, bit: 0 } => format!("K{n}{a}{}", self.byte),
+            Width::Group { n, bit } => format!("K{n}{a}{}.{bit}", self.byte),
+            Width::Element => format!("{a}{}", self.byte),
+        };
+        if self.view != default_view(self.area, self.width) {
+            s.push('/');
+            s.push_str(self.view.name());
+        }
+        s
+    }
+
+    /// The next operand of the same size (for ranges and counts).
+    fn next(&self) -> K2Operand {
+        let mut o = *self;
+        match self.width {
+            Width::Bit(7) => {
+                o.byte += 1;
+                o.width = Width::Bit(0);
+            }
+            Width::Bit(b) => o.width = Width::Bit(b + 1),
+            Width::Group { n, bit } => {
+                let abs = self.byte * 8 + bit as u32 + 4 * n as u32;
+                o.byte = abs / 8;
+                o.width = Width::Group { n, bit: (abs % 8) as u8 };
+            }
+            Width::Element => o.byte += 1,
+            w => o.byte += w.bytes(),
+        }
+        o
+    }
+
+    /// Position in bits from the start of the area (orders operands of one size).
+    fn ordinal(&self) -> u64 {
+        match self.width {
+            Width::Bit(b) | Width::Group { bit: b, .. } => self.byte as u64 * 8 + b as u64,
+            _ => self.byte as u64 * 8,
+        }
+    }
+}
+
+/// The natural type of an operand: unsigned for bytes/words/dwords (as KincoBuilder
+/// shows them), INT for analog words, timers and counters.
+pub fn default_view(area: Area, width: Width) -> DataType {
+    match (area, width) {
+        (_, Width::Bit(_)) => DataType::Bool,
+        (_, Width::Byte) => DataType::Byte,
+        (Area::AI | Area::AQ, Width::Word) => DataType::Int,
+        (_, Width::Word) => DataType::Word,
+        (_, Width::DWord) => DataType::DWord,
+        (_, Width::Group { n, .. }) if n <= 4 => DataType::Word,
+        (_, Width::Group { .. }) => DataType::DWord,
+        (_, Width::Element) => DataType::Int,
+    }
+}
+
+/// Most operands a single range may expand to.
+pub const MAX_RANGE: usize = 4096;
+
+fn op_err(col: usize, msg: impl Into<String>) -> Error {
+    Error::new(ErrorKind::Operand, msg).column(col)
+}
+
+/// Parses an operand expression: one operand, a range `A..B`, or a count `A[n]`.
+pub fn parse_expr(text: &str) -> Result<Vec<K2Operand>> {
+    let lead = text.len() - text.trim_start().len();
+    let t = text.trim();
+    if let Some(dots) = t.find("..") {
+        let a = parse_one(&t[..dots]).map_err(|e| e.shift(lead))?;
+        let b = parse_one(&t[dots + 2..]).map_err(|e| e.shift(lead + dots + 2))?;
+        if a.area != b.area || std::mem::discriminant(&a.width) != std::mem::discriminant(&b.width) || a.view != b.view
+        {
+            return Err(op_err(
+                lead + dots + 2,
+                format!("a range needs two operands of one area and size: {}..{}", a.canonical(), b.canonical()),
+            ));
+        }
+        if let (Width::Group { n: na, .. }, Width::Group { n: nb, .. }) = (a.width, b.width) {
+            if na != nb {
+                return Err(op_err(lead, "a range of bit groups needs one group size"));
+            }
+        }
+        if b.ordinal() < a.ordinal() {
+            return Err(op_err(
+                lead + dots + 2,
+                format!("range end {} is before its start {}", b.canonical(), a.canonical()),
+            ));
+        }
+        let mut out = vec![a];
+        let mut cur = a;
+        while cur.ordinal() < b.ordinal() {
+            cur = cur.next();
+            if cur.ordinal() > b.ordinal() {
+                return Err(op_err(
+                    lead + dots + 2,
+                    format!(
+                        "{} is not on a {}-step from {} (ranges step by the operand size)",
+                        b.canonical(),
+                        a.width.bytes(),
+                        a.canonical()
+                    ),
+                ));
+            }
+            out.push(cur);
+            if out.len() > MAX_RANGE {
+                return Err(op_err(lead, format!("range longer than {MAX_RANGE} operands")));
+            }
+        }
+        return Ok(out);
+    }
+    if let Some(open) = t.find('[') {
+        let a = parse_one(&t[..open]).map_err(|e| e.shift(lead))?;
+        let inner = t[open + 1..]
+            .strip_suffix(']')
+            .ok_or_else(|| op_err(lead + t.len(), "missing `]` in count form (e.g. VW0[10])"))?;
+        let n: usize = inner
+            .trim()
+            .parse()
+            .map_err(|_| op_err(lead + open + 1, format!("`{inner}` is not a count (e.g. VW0[10])")))?;
+        if n == 0 || n > MAX_RANGE {
+            return Err(op_err(lead + open + 1, format!("count must be 1…{MAX_RANGE}")));
+        }
+        let mut out = Vec::with_capacity(n);
+        let mut cur = a;
+        for _ in 0..n {
+            out.push(cur);
+            cur = cur.next();
+        }
+        return Ok(out);
+    }
+    Ok(vec![parse_one(t).map_err(|e| e.shift(lead))?])
+}
+
+/// Parses exactly one operand.
+pub fn parse_one(text: &str) -> Result<K2Operand> {
+    let lead = text.len() - text.trim_start().len();
+    let t = text.trim();
+    if t.is_empty() {
+        return Err(op_err(lead, "an operand is missing"));
+    }
+    let (body, view) = match t.find('/') {
+        Some(slash) => {
+            let name = &t[slash + 1..];
+            let v = DataType::from_name(name).ok_or_else(|| {
+                op_err(
+                    lead + slash + 1,
+                    format!("unknown type `{name}` (use BOOL, BYTE, SINT, WORD, INT, DWORD, DINT, REAL)"),
+                )
+            })?;
+            (&t[..slash], Some((v, slash + 1)))
+        }
+        None => (t, None),
+    };
+    let pct = usize::from(body.starts_with('%'));
+    let s = body[pct..].to_ascii_uppercase();
+    let base = lead + pct;
+    let mut op = parse_body(&s, body).map_err(|e| e.shift(base))?;
+    if let Some((v, col)) = view {
+        if v.bits() != op.view.bits() || matches!(op.width, Width::Group { .. }) {
+            return Err(op_err(lead + col, format!(
+                "{} is {} bits wide; /{} needs {} bits (views keep the width: /SINT on bytes, /INT on words, /DINT or /REAL on double words)",
+                op.canonical(),
+                op.bits(),
+                v.name(),
+                v.bits()
+            )));
+        }
+        op.view = v;
+    }
+    Ok(op)
+}
+
+/// Reads a decimal number at the start of `s`; returns it and its length.
+fn number(s: &str) -> Option<(u32, usize)> {
+    let len = s.find(|c: char| !c.is_ascii_digit()).unwrap_or(s.len());
+    if len == 0 {
+        return None;
+    }
+    s[..len].parse().ok().map(|n| (n, len))
+}
+
+fn parse_body(s: &str, original: &str) -> Result<K2Operand> {
+    if let Some(rest) = s.strip_prefix('K') {
+        if rest.starts_with(|c: char| c.is_ascii_digit()) {
+            return parse_group(rest, original);
+        }
+    }
+    let (area, alen) = if s.starts_with("SM") {
+        (Area::SM, 2)
+    } else if s.starts_with("AI") {
+        (Area::AI, 2)
+    } else if s.starts_with("AQ") {
+        (Area::AQ, 2)
+    } else {
+        match s.chars().next() {
+            Some('I') => (Area::I, 1),
+            Some('Q') => (Area::Q, 1),
+            Some('M') => (Area::M, 1),
+            Some('V') => (Area::V, 1),
+            Some('T') => (Area::T, 1),
+            Some('C') => (Area::C, 1),
+            _ => return Err(unknown_area(s)),
+        }
+    };
+    let rest = &s[alen..];
+    let trailing = |used: usize| -> Result<()> {
+        if used < rest.len() {
+            Err(op_err(
+                alen + used,
+                format!("unexpected `{}` after {}", &original[alen + used..], &original[..alen + used]),
+            ))
+        } else {
+            Ok(())
+        }
+    };
+    match area {
+        Area::T | Area::C => {
+            let (n, len) = number(rest).ok_or_else(|| {
+                op_err(alen, format!("{} needs a number ({}0…{}255)", area.name(), area.name(), area.name()))
+            })?;
+            trailing(len)?;
+            Ok(K2Operand::new(area, Width::Element, n))
+        }
+        Area::AI | Area::AQ => {
+            let Some(r) = rest.strip_prefix('W') else {
+                return Err(op_err(alen, format!("analog values are words: {}W0, {}W2 …", area.name(), area.name())));
+            };
+            let (n, len) = number(r).ok_or_else(|| {
+                op_err(alen + 1, format!("{}W needs a byte address (e.g. {}W0)", area.name(), area.name()))
+            })?;
+            trailing(len + 1)?;
+            if n % 2 != 0 {
+                return Err(op_err(
+                    alen + 1,
+                    format!("analog words are at even addresses: {a}W{} or {a}W{}", n - 1, n + 1, a = area.name()),
+                ));
+            }
+            Ok(K2Operand::word(area, n))
+        }
+        _ => {
+            let width = match rest.chars().next() {
+                Some('B') => Some(Width::Byte),
+                Some('W') => Some(Width::Word),
+                Some('D') => Some(Width::DWord),
+                _ => None,
+            };
+            if let Some(w) = width {
+                let (n, len) = number(&rest[1..])
+                    .ok_or_else(|| op_err(alen + 1, format!("{}{} needs a byte address", area.name(), &rest[..1])))?;
+                if rest[1 + len..].starts_with('.') {
+                    return Err(op_err(
+                        alen + 1 + len,
+                        format!(
+                            "a {} has no bit; write the bit as {}{n}.{}",
+                            if w == Width::Byte { "byte" } else { "word" },
+                            area.name(),
+                            &rest[2 + len..]
+                        ),
+                    ));
+                }
+                trailing(len + 1)?;
+                return Ok(K2Operand::new(area, w, n));
+            }
+            let (n, len) = number(rest).ok_or_else(|| {
+                op_err(
+                    alen,
+                    format!("{a} needs a bit (`{a}0.0`) or a size letter (`{a}B0`, `{a}W0`, `{a}D0`)", a = area.name()),
+                )
+            })?;
+            let after = &rest[len..];
+            let Some(b) = after.strip_prefix('.') else {
+                if after.is_empty() {
+                    return Err(op_err(
+                        alen + len,
+                        format!("{a}{n} needs a bit ({a}{n}.0) or a size ({a}B{n}, {a}W{n}, {a}D{n})", a = area.name()),
+                    ));
+                }
+                return trailing(len).map(|_| unreachable!());
+            };
+            let (bit, blen) = number(b).ok_or_else(|| op_err(alen + len + 1, "a bit number 0…7 is missing"))?;
+            if bit > 7 {
+                return Err(op_err(
+                    alen + len + 1,
+                    format!("bit {bit} does not exist: bits are 0…7 ({}{n}.7 is the last)", area.name()),
+                ));
+            }
+            trailing(len + 1 + blen)?;
+            Ok(K2Operand::bit(area, n, bit as u8))
+        }
+    }
+}
+
+fn parse_group(rest: &str, original: &str) -> Result<K2Operand> {
+    let n = rest.as_bytes()[0] - b'0';
+    if !(1..=8).contains(&n) || rest.as_bytes().get(1).is_some_and(|c| c.is_ascii_digit()) {
+        return Err(op_err(1, "bit groups are K1…K8 (4 to 32 bits)"));
+    }
+    let inner = &rest[1..];
+    let body = parse_body(inner, &original[original.len() - inner.len()..]).or_else(|_| {
+        // `K4M0` names a byte without a bit: read it as bit 0.
+        parse_body(&format!("{inner}.0"), &format!("{}.0", &original[original.len() - inner.len()..]))
+    });
+    let op = body.map_err(|e| e.shift(2))?;
+    let Width::Bit(bit) = op.width else {
+        return Err(op_err(
+            2,
+            format!("K{n} groups bits: write K{n}{}{} (a bit address), not a byte or word", op.area.name(), op.byte),
+        ));
+    };
+    if !op.area.is_bit_area() {
+        return Err(op_err(2, format!("K{n} groups bits of I, Q, M, V or SM")));
+    }
+    Ok(K2Operand::new(op.area, Width::Group { n, bit }, op.byte))
+}
+
+fn unknown_area(s: &str) -> Error {
+    let head: String = s.chars().take_while(|c| c.is_ascii_alphabetic()).collect();
+    let mut near: Vec<(usize, &str)> = [
+        "I", "Q", "M", "V", "SM", "AI", "AQ", "T", "C", "VB", "VW", "VD", "MB", "MW", "MD", "SMB", "SMW", "SMD", "AIW",
+        "AQW", "IB", "QB",
+    ]
+    .iter()
+    .map(|c| (edit_distance(&head, c), *c))
+    .collect();
+    near.sort();
+    let tail = &s[head.len()..];
+    let suggestions: Vec<String> =
+        near.iter().map(|(_, c)| format!("{c}{tail}")).filter(|s| parse_body(s, s).is_ok()).take(3).collect();
+    op_err(0, format!("`{s}` is not a K2 operand: unknown area `{head}`"))
+        .hint(format!("areas are I Q M V SM AI AQ T C; did you mean {}?", suggestions.join(", ")))
+}
+
+/// Levenshtein distance, for suggestions.
+pub fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut prev: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut cur = vec![i + 1];
+        for (j, cb) in b.iter().enumerate() {
+            cur.push((prev[j] + usize::from(ca != *cb)).min(prev[j + 1] + 1).min(cur[j] + 1));
+        }
+        prev = cur;
+    }
+    prev[b.len()]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn canon(s: &str) -> String {
+        let ops = parse_expr(s).unwrap_or_else(|e| panic!("{s}: {e}"));
+        ops.iter().map(|o| o.canonical()).collect::<Vec<_>>().join(" ")
+    }
+
+    /// Golden vectors: every area and form (k2.md §2).
+    #[test]
+    fn golden_every_area_and_form() {
+        let cases = [
+            ("I0.0", "I0.0"),
+            ("q0.5", "Q0.5"),
+            ("M10.3", "M10.3"),
+            ("SM0.1", "SM0.1"),
+            ("V100.2", "V100.2"),
+            ("IB0", "IB0"),
+            ("QB0", "QB0"),
+            ("MB1", "MB1"),
+            ("MW0", "MW0"),
+            ("MD4", "MD4"),
+            ("vb301", "VB301"),
+            ("VW100", "VW100"),
+            ("VD3010", "VD3010"),
+            ("SMB67", "SMB67"),
+            ("smw68", "SMW68"),
+            ("SMD72", "SMD72"),
+            ("%SMD208", "SMD208"),
+            ("%vw0", "VW0"),
+            ("AIW0", "AIW0"),
+            ("AQW2", "AQW2"),
+            ("T5", "T5"),
+            ("c255", "C255"),
+            ("IW0", "IW0"),
+            ("QD0", "QD0"),
+            ("K1M0", "K1M0"),
+            ("K4M0", "K4M0"),
+            ("k8m0", "K8M0"),
+            ("K2Q0", "K2Q0"),
+            ("K4M10.4", "K4M10.4"),
+            ("K1I0.0", "K1I0"),
+            ("VD100/real", "VD100/REAL"),
+            ("VW0/INT", "VW0/INT"),
+            ("VB0/sint", "VB0/SINT"),
+            ("VD4/DWORD", "VD4"),
+        ];
+        for (input, want) in cases {
+            assert_eq!(canon(input), want, "{input}");
+        }
+    }
+
+    #[test]
+    fn natural_types() {
+        let t = |s: &str| parse_one(s).unwrap().view;
+        assert_eq!(t("M0.0"), DataType::Bool);
+        assert_eq!(t("VB0"), DataType::Byte);
+        assert_eq!(t("VW0"), DataType::Word);
+        assert_eq!(t("VD0"), DataType::DWord);
+        assert_eq!(t("AIW0"), DataType::Int);
+        assert_eq!(t("T0"), DataType::Int);
+        assert_eq!(t("K4M0"), DataType::Word);
+        assert_eq!(t("K5M0"), DataType::DWord);
+        assert_eq!(parse_one("K1M0").unwrap().bits(), 4);
+    }
+
+    #[test]
+    fn round_trip_is_canonical_and_stable() {
+        for s in ["%vw100", "m10.3", "smb67", "k4m10.4", "vd0/real", "aqw0", "c7", "%SM0.1"] {
+            let a = parse_one(s).unwrap();
+            let printed = a.canonical();
+            let b = parse_one(&printed).unwrap();
+            assert_eq!(a, b, "{s}");
+            assert_eq!(b.canonical(), printed);
+            assert_eq!(K2Operand::from_key(a.key()), a, "key round trip {s}");
+        }
+    }
+
+    #[test]
+    fn ranges_step_by_size_inclusive() {
+        assert_eq!(canon("VW0..VW6"), "VW0 VW2 VW4 VW6");
+        assert_eq!(canon("VW0[3]"), "VW0 VW2 VW4");
+        assert_eq!(canon("M0.6..M1.1"), "M0.6 M0.7 M1.0 M1.1");
+        assert_eq!(canon("I0.0[3]"), "I0.0 I0.1 I0.2");
+        assert_eq!(canon("VD0..VD8"), "VD0 VD4 VD8");
+        assert_eq!(canon("T0..T2"), "T0 T1 T2");
+        assert_eq!(canon("K1M0[3]"), "K1M0 K1M0.4 K1M1");
+        assert_eq!(parse_expr("VW0..VW20").unwrap().len(), 11);
+    }
+
+    #[test]
+    fn bad_input_is_an_error_with_a_column() {
+        let e = |s: &str| parse_expr(s).unwrap_err();
+        assert_eq!(e("XW0").kind, ErrorKind::Operand);
+        assert!(e("XW0").hint.clone().unwrap().contains("areas are"));
+        let b = e("M10.9");
+        assert_eq!(b.column, Some(4));
+        assert!(b.message.contains("bits are 0…7"));
+        assert!(e("M10").message.contains("needs a bit"));
+        assert!(e("VW10.3").message.contains("has no bit"));
+        assert!(e("AIW1").message.contains("even"));
+        assert!(e("AIB0").message.contains("words"));
+        assert!(e("VW0..VB4").message.contains("one area and size"));
+        assert!(e("VW4..VW0").message.contains("before"));
+        assert!(e("VW0..VW3").message.contains("step"));
+        assert!(e("VW0[0]").message.contains("count"));
+        assert!(e("VW0[x]").message.contains("not a count"));
+        assert!(e("VW0[3").message.contains("missing `]`"));
+        assert!(e("K9M0").message.contains("K1…K8"));
+        assert!(e("K4VW0").message.contains("groups bits"));
+        assert!(e("K4T0").message.contains("groups bits"));
+        assert!(e("VW0/REAL").message.contains("16 bits"));
+        assert!(e("VW0/FOO").message.contains("unknown type"));
+        let t = e("VW10x");
+        assert_eq!(t.column, Some(4));
+        assert!(t.message.contains("unexpected `x`"));
+        assert_eq!(e("  %VW10x").column, Some(7));
+        assert!(e("").message.contains("missing"));
+        assert!(e("VW0..VW10000").message.contains("longer"));
+    }
+
+    #[test]
+    fn edit_distance_basics() {
+        assert_eq!(edit_distance("VX", "VW"), 1);
+        assert_eq!(edit_distance("", "SM"), 2);
+    }
+}

@@ -1,0 +1,295 @@
+//! The K2 operand space bound to one model: the grammar of [`super::operand`] plus the
+//! model's area sizes (`../shared/spec/k2.md` §1), SM register names for hints, `help` and
+//! completion (from [`super::sm_map`]). An operand past the model's area is refused here,
+//! before anything reaches a device, with the model and the area's last address.
+
+use super::catalog::{self, Model};
+use super::operand::{self, Area, K2Operand, Width};
+use super::sm_map::{self, SmSize};
+use crate::core::{Candidate, Error, ErrorKind, Operand, OperandSpace, Result};
+
+/// K2 operands for one model.
+#[derive(Clone, Copy, Debug)]
+pub struct K2Space {
+    pub model: &'static Model,
+}
+
+impl K2Space {
+    pub fn new(model: &'static Model) -> K2Space {
+        K2Space { model }
+    }
+
+    /// Size of an area on this model: bytes, or elements for T and C.
+    pub fn area_len(&self, area: Area) -> u32 {
+        let m = self.model;
+        match area {
+            Area::I => m.i_bytes,
+            Area::Q => m.q_bytes,
+            Area::M => m.m_bytes,
+            Area::V => m.v_bytes,
+            Area::SM => catalog::SM_BYTES,
+            Area::AI => m.ai_bytes,
+            Area::AQ => m.aq_bytes,
+            Area::T => catalog::TIMERS,
+            Area::C => catalog::COUNTERS,
+        }
+    }
+
+    /// Checks an operand against the model's areas.
+    pub fn check(&self, op: &K2Operand) -> Result<()> {
+        let len = self.area_len(op.area);
+        let name = op.canonical();
+        if len == 0 {
+            return Err(Error::new(
+                ErrorKind::Range,
+                format!("{} has no {} area ({})", self.model.name, op.area.name(), op.area.meaning()),
+            )
+            .operand(name)
+            .hint(self.models_with(op.area)));
+        }
+        let end = op.byte as u64 + op.width.bytes() as u64;
+        if end > len as u64 {
+            let last = last_of(op, len);
+            return Err(Error::new(
+                ErrorKind::Range,
+                format!(
+                    "{name} is past the end of the {} area on {} (last {} is {last})",
+                    op.area.name(),
+                    self.model.name,
+                    kind_word(op.width)
+                ),
+            )
+            .operand(name));
+        }
+        Ok(())
+    }
+
+    fn models_with(&self, area: Area) -> String {
+        let with: Vec<&str> =
+            catalog::MODELS.iter().filter(|m| K2Space::new(m).area_len(area) > 0).map(|m| m.name).collect();
+        format!("models with {}: {}", area.name(), with.join(", "))
+    }
+
+    /// Parses and bounds-checks, returning K2 operands.
+    pub fn parse_k2(&self, text: &str) -> Result<Vec<K2Operand>> {
+        let ops = operand::parse_expr(text)?;
+        for o in &ops {
+            self.check(o)?;
+        }
+        Ok(ops)
+    }
+}
+
+fn kind_word(w: Width) -> &'static str {
+    match w {
+        Width::Bit(_) => "bit",
+        Width::Byte => "byte",
+        Width::Word => "word",
+        Width::DWord => "double word",
+        Width::Group { .. } => "group",
+        Width::Element => "element",
+    }
+}
+
+/// The last operand of the same size that fits an area of `len`.
+fn last_of(op: &K2Operand, len: u32) -> String {
+    let mut o = *op;
+    match op.width {
+        Width::Bit(_) => {
+            o.byte = len - 1;
+            o.width = Width::Bit(7);
+        }
+        Width::Element => o.byte = len - 1,
+        Width::Group { n, .. } => {
+            let bits = len * 8 - 4 * n as u32;
+            o.byte = bits / 8;
+            o.width = Width::Group { n, bit: (bits % 8) as u8 };
+        }
+        w => o.byte = len.saturating_sub(w.bytes()),
+    }
+    if matches!(op.area, Area::AI | Area::AQ) && o.byte % 2 == 1 {
+        o.byte -= 1;
+    }
+    o.canonical()
+}
+
+/// The SM register name of an operand, when the table has one.
+fn sm_name(op: &K2Operand) -> Option<&'static sm_map::SmName> {
+    if op.area != Area::SM {
+        return None;
+    }
+    let size = match op.width {
+        Width::Bit(b) => SmSize::Bit(b),
+        Width::Byte => SmSize::Byte,
+        Width::Word => SmSize::Word,
+        Width::DWord => SmSize::DWord,
+        _ => return None,
+    };
+    sm_map::lookup(op.byte, size)
+}
+
+impl OperandSpace for K2Space {
+    fn family(&self) -> &'static str {
+        "k2"
+    }
+
+    fn parse(&self, text: &str) -> Result<Vec<Operand>> {
+        Ok(self.parse_k2(text)?.iter().map(|o| o.to_core()).collect())
+    }
+
+    fn name(&self, op: &Operand) -> String {
+        K2Operand::from_key(op.key).canonical()
+    }
+
+    fn describe(&self, op: &Operand) -> Option<String> {
+        let k = K2Operand::from_key(op.key);
+        if let Some(n) = sm_name(&k) {
+            return Some(n.meaning.clone());
+        }
+        if k.area == Area::SM {
+            let over = sm_map::overlapping(k.byte, k.width.bytes());
+            if !over.is_empty() {
+                let names: Vec<String> = over.iter().map(|n| format!("{} ({})", n.operand(), n.meaning)).collect();
+                return Some(format!("overlaps {}", names.join(", ")));
+            }
+        }
+        if k.area == Area::Q {
+            for p in self.model.pto {
+                if let (Width::Bit(b), Some(spec)) = (k.width, Some(p)) {
+                    if format!("Q{}.{}", k.byte, b) == spec.output {
+                        return Some(format!(
+                            "digital output; PTO{}/PWM{} pulse output (max {} kHz)",
+                            p.channel,
+                            p.channel,
+                            p.max_hz / 1000
+                        ));
+                    }
+                    if format!("Q{}.{}", k.byte, b) == spec.direction {
+                        return Some(format!("digital output; direction output of position channel {}", p.channel));
+                    }
+                }
+            }
+        }
+        if k.area == Area::V && k.byte >= catalog::EEPROM_FIRST {
+            return Some("variable memory, in the E2PROM backup area (VB3648–VB4095, §2.2.8)".into());
+        }
+        Some(k.area.meaning().to_string())
+    }
+
+    fn help(&self, text: &str) -> Result<String> {
+        let ops = self.parse_k2(text)?;
+        let k = ops[0];
+        let core = k.to_core();
+        let mut s = format!("{} — {}\n", k.canonical(), self.describe(&core).unwrap_or_default());
+        let (lo, hi) = k.view.int_range();
+        let range = match k.width {
+            Width::Group { n, .. } => format!("0…{}", (1u64 << (4 * n)) - 1),
+            _ if k.view == crate::core::DataType::Real => "IEEE 754 single".into(),
+            _ => format!("{lo}…{hi}"),
+        };
+        s.push_str(&format!("type {} ({} bits), range {range}\n", k.view.name(), k.bits()));
+        s.push_str(&format!(
+            "area {} ({}): {} {} on {}\n",
+            k.area.name(),
+            k.area.meaning(),
+            self.area_len(k.area),
+            if matches!(k.area, Area::T | Area::C) { "elements" } else { "bytes" },
+            self.model.name
+        ));
+        if let Some(n) = sm_name(&k) {
+            s.push_str(&format!("manual {}\n", n.section));
+        } else {
+            s.push_str("manual §2 (operands, k2.md §2)\n");
+        }
+        Ok(s)
+    }
+
+    fn complete(&self, prefix: &str) -> Vec<Candidate> {
+        let p = prefix.trim_start_matches('%').to_ascii_uppercase();
+        let mut out: Vec<Candidate> = Vec::new();
+        if p.starts_with('S') {
+            for n in sm_map::names() {
+                let name = n.operand();
+                if name.starts_with(&p) {
+                    out.push(Candidate { text: name, meaning: n.meaning.clone() });
+                }
+            }
+            return out;
+        }
+        for (form, meaning) in [
+            ("I", "input bit I0.0"),
+            ("IB", "input byte"),
+            ("Q", "output bit Q0.0"),
+            ("QB", "output byte"),
+            ("M", "memory bit M0.0"),
+            ("MB", "memory byte"),
+            ("MW", "memory word"),
+            ("MD", "memory double word"),
+            ("V", "V bit V0.0"),
+            ("VB", "V byte"),
+            ("VW", "V word"),
+            ("VD", "V double word"),
+            ("SM", "special memory"),
+            ("AIW", "analog input word"),
+            ("AQW", "analog output word"),
+            ("T", "timer"),
+            ("C", "counter"),
+            ("K4M", "16-bit group of M bits"),
+        ] {
+            if form.starts_with(&p) && p.len() < form.len() {
+                out.push(Candidate { text: form.to_string(), meaning: meaning.to_string() });
+            }
+        }
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn space(m: &str) -> K2Space {
+        K2Space::new(catalog::find(m).unwrap())
+    }
+
+    #[test]
+    fn bounds_follow_the_model() {
+        let s = space("K205-16DT");
+        assert!(s.parse_k2("VW4094").is_ok());
+        let e = s.parse_k2("VW4095").unwrap_err();
+        assert_eq!(e.kind, ErrorKind::Range);
+        assert!(e.message.contains("K205-16DT") && e.message.contains("VW4094"), "{}", e.message);
+        assert!(s.parse_k2("VB4096").unwrap_err().message.contains("VB4095"));
+        assert!(s.parse_k2("I1.7").is_ok());
+        assert!(s.parse_k2("I2.0").unwrap_err().message.contains("I1.7"));
+        assert!(s.parse_k2("AIW0").unwrap_err().hint.clone().unwrap().contains("K205EA-18DT"));
+        assert!(s.parse_k2("T256").unwrap_err().message.contains("T255"));
+        assert!(s.parse_k2("MD1020").is_ok());
+        assert!(s.parse_k2("MD1021").unwrap_err().message.contains("MD1020"));
+        let big = space("K209M-56DT");
+        assert!(big.parse_k2("VW16382").is_ok());
+        assert!(space("K209EA-50DX").parse_k2("AIW10").is_ok());
+        assert!(space("K209EA-50DX").parse_k2("AIW12").unwrap_err().message.contains("AIW10"));
+    }
+
+    #[test]
+    fn describe_uses_the_sm_table() {
+        let s = space("K205-16DT");
+        let op = s.parse("SMB67").unwrap()[0];
+        assert_eq!(s.describe(&op).unwrap(), "PTO0/PWM0 (Q0.0) control byte");
+        let odd = s.parse("SMW67").unwrap()[0];
+        assert!(s.describe(&odd).unwrap().contains("SMB67"));
+        let q = s.parse("Q0.0").unwrap()[0];
+        assert!(s.describe(&q).unwrap().contains("PTO0"));
+        assert!(s.help("SMD72").unwrap().contains("§3.4.2.2"));
+    }
+
+    #[test]
+    fn completion_lists_sm_names_with_meaning() {
+        let s = space("K205-16DT");
+        let c = s.complete("SMB6");
+        assert!(c.iter().any(|c| c.text == "SMB67" && c.meaning.contains("control")), "{c:?}");
+        assert!(c.iter().all(|c| c.text.starts_with("SMB6")));
+        assert!(s.complete("v").iter().any(|c| c.text == "VW"));
+    }
+}

@@ -1,0 +1,248 @@
+//! Rendering command results: tables (comfy-table) for people, one JSON object per line
+//! (serde) for programs. Everything writes to `impl Write`, so it is testable without a
+//! terminal. Depends on core value types only.
+//!
+//! JSON schema (stable; documented in README.md):
+//! success `{"ok":true,"cmd":…,"device":…,"values":[{"operand","value","type"}],…}`;
+//! failure `{"ok":false,"cmd":…,"error":{"kind","message","device"?,"operand"?,"hint"?,"column"?}}`.
+
+use crate::core::{DataType, Error, Value};
+use crate::session::Reading;
+use comfy_table::{presets, ContentArrangement, Table};
+use serde::Serialize;
+use std::io::{self, Write};
+
+/// How a result is shown to a person.
+#[derive(Clone, Debug, Default)]
+pub enum View {
+    /// `operand = value` lines (the `values` field).
+    #[default]
+    Values,
+    /// A table.
+    Table { headers: Vec<String>, rows: Vec<Vec<String>> },
+    /// Free text.
+    Text(String),
+    /// Nothing (the command succeeded silently).
+    Quiet,
+}
+
+/// The result of one command.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Outcome {
+    pub cmd: String,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub device: Option<String>,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub values: Vec<Reading>,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub writes: Vec<Reading>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub message: Option<String>,
+    /// Command-specific fields (flattened into the JSON object).
+    #[serde(flatten)]
+    pub data: serde_json::Map<String, serde_json::Value>,
+    #[serde(skip)]
+    pub view: View,
+}
+
+impl Outcome {
+    pub fn new(cmd: &str) -> Outcome {
+        Outcome { cmd: cmd.to_string(), ..Default::default() }
+    }
+    pub fn quiet(mut self) -> Outcome {
+        self.view = View::Quiet;
+        self
+    }
+    pub fn text(mut self, t: impl Into<String>) -> Outcome {
+        let t = t.into();
+        self.message = Some(t.clone());
+        self.view = View::Text(t);
+        self
+    }
+    pub fn with(mut self, key: &str, v: impl Serialize) -> Outcome {
+        self.data.insert(key.to_string(), serde_json::to_value(v).unwrap_or(serde_json::Value::Null));
+        self
+    }
+    pub fn table(mut self, headers: &[&str], rows: Vec<Vec<String>>) -> Outcome {
+        self.view = View::Table { headers: headers.iter().map(|s| s.to_string()).collect(), rows };
+        self
+    }
+    /// The same data as `--json` prints, as a JSON value (for Lua and tests).
+    pub fn to_json(&self) -> serde_json::Value {
+        serde_json::to_value(JsonOk { ok: true, outcome: self }).unwrap_or_default()
+    }
+}
+
+#[derive(Serialize)]
+struct JsonOk<'a> {
+    ok: bool,
+    #[serde(flatten)]
+    outcome: &'a Outcome,
+}
+
+#[derive(Serialize)]
+struct JsonErr<'a> {
+    ok: bool,
+    cmd: &'a str,
+    error: &'a Error,
+}
+
+/// Output settings.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Style {
+    pub json: bool,
+    pub color: bool,
+}
+
+impl Style {
+    /// Colour only on a terminal and only when `NO_COLOR` is unset (no-color.org).
+    pub fn detect(json: bool, is_terminal: bool) -> Style {
+        let no_color = std::env::var_os("NO_COLOR").is_some_and(|v| !v.is_empty());
+        Style { json, color: is_terminal && !no_color && !json }
+    }
+}
+
+/// The JSON text of an error line, for callers that need it outside a writer.
+pub fn error_json(cmd: &str, e: &Error) -> serde_json::Value {
+    serde_json::to_value(JsonErr { ok: false, cmd, error: e }).unwrap_or_default()
+}
+
+/// Writes one successful result.
+pub fn write_outcome(w: &mut dyn Write, style: Style, o: &Outcome) -> io::Result<()> {
+    if style.json {
+        serde_json::to_writer(&mut *w, &JsonOk { ok: true, outcome: o })?;
+        return writeln!(w);
+    }
+    match &o.view {
+        View::Quiet => Ok(()),
+        View::Text(t) => writeln!(w, "{t}"),
+        View::Values => {
+            let width = o.values.iter().map(|r| label(r).len()).max().unwrap_or(0);
+            for r in &o.values {
+                writeln!(w, "{:<width$}  {}", label(r), show_value(&r.value, r.dtype))?;
+            }
+            Ok(())
+        }
+        View::Table { headers, rows } => {
+            let mut t = Table::new();
+            t.load_preset(if style.color { presets::UTF8_FULL_CONDENSED } else { presets::ASCII_MARKDOWN });
+            t.set_content_arrangement(ContentArrangement::Disabled);
+            if !style.color {
+                t.force_no_tty();
+            }
+            t.set_header(headers);
+            for r in rows {
+                t.add_row(r);
+            }
+            writeln!(w, "{t}")
+        }
+    }
+}
+
+fn label(r: &Reading) -> String {
+    match &r.device {
+        Some(d) => format!("{d}:{}", r.operand),
+        None => r.operand.clone(),
+    }
+}
+
+/// A value as a person reads it: decimal, with the hex pattern for bytes and words.
+pub fn show_value(v: &Value, t: DataType) -> String {
+    match (v, t) {
+        (Value::Int(i), DataType::Byte | DataType::Word | DataType::DWord) if *i > 9 => {
+            format!("{i} ({})", hex(*i as u64, t.bits()))
+        }
+        (v, _) => v.to_string(),
+    }
+}
+
+/// `16#85`, `16#01F4`: IEC hex with the operand's width.
+pub fn hex(raw: u64, bits: u32) -> String {
+    format!("16#{:0w$X}", raw & crate::core::value::mask(bits.clamp(1, 32)), w = (bits.div_ceil(4)) as usize)
+}
+
+/// `2#1000_0101`: IEC binary grouped in nibbles.
+pub fn binary(raw: u64, bits: u32) -> String {
+    let s = format!("{:0w$b}", raw & crate::core::value::mask(bits.clamp(1, 32)), w = bits as usize);
+    let chunks: Vec<String> = s.as_bytes().rchunks(4).rev().map(|c| String::from_utf8_lossy(c).into_owned()).collect();
+    format!("2#{}", chunks.join("_"))
+}
+
+/// Writes one error, with a caret under the column when the error came from `line`.
+pub fn write_error(w: &mut dyn Write, style: Style, cmd: &str, e: &Error, line: Option<&str>) -> io::Result<()> {
+    if style.json {
+        serde_json::to_writer(&mut *w, &JsonErr { ok: false, cmd, error: e })?;
+        return writeln!(w);
+    }
+    if let (Some(line), Some(col)) = (line, e.column) {
+        if col <= line.chars().count() {
+            writeln!(w, "  {line}")?;
+            writeln!(w, "  {}^", " ".repeat(col))?;
+        }
+    }
+    let (red, reset) = if style.color { ("\x1b[31m", "\x1b[0m") } else { ("", "") };
+    let mut msg = e.clone();
+    let hint = msg.hint.take();
+    writeln!(w, "{red}error[{}]{reset}: {msg}", e.kind.name())?;
+    if let Some(h) = hint {
+        writeln!(w, "  hint: {h}")?;
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::core::ErrorKind;
+
+    fn reading(op: &str, v: i64, t: DataType) -> Reading {
+        Reading { operand: op.into(), value: Value::Int(v), dtype: t, device: None }
+    }
+
+    #[test]
+    fn json_line_matches_the_documented_shape() {
+        let mut o = Outcome::new("get");
+        o.device = Some("plc".into());
+        o.values.push(reading("VW100", 5, DataType::Word));
+        let mut buf = Vec::new();
+        write_outcome(&mut buf, Style { json: true, color: false }, &o).unwrap();
+        assert_eq!(
+            String::from_utf8(buf).unwrap(),
+            "{\"ok\":true,\"cmd\":\"get\",\"device\":\"plc\",\"values\":[{\"operand\":\"VW100\",\"value\":5,\"type\":\"WORD\"}]}\n"
+        );
+    }
+
+    #[test]
+    fn error_json_and_caret() {
+        let e = Error::new(ErrorKind::Value, "300 does not fit").operand("VB2").column(11);
+        let mut buf = Vec::new();
+        write_error(&mut buf, Style { json: true, color: false }, "set", &e, None).unwrap();
+        let v: serde_json::Value = serde_json::from_slice(&buf).unwrap();
+        assert_eq!(v["ok"], false);
+        assert_eq!(v["error"]["kind"], "value");
+        assert_eq!(v["error"]["operand"], "VB2");
+        let mut human = Vec::new();
+        write_error(&mut human, Style::default(), "set", &e, Some("set VB2=300")).unwrap();
+        let text = String::from_utf8(human).unwrap();
+        assert!(text.contains("  set VB2=300\n             ^\n"), "{text}");
+        assert!(text.contains("error[value]"));
+    }
+
+    #[test]
+    fn hex_and_binary_use_the_operand_width() {
+        assert_eq!(hex(0x85, 8), "16#85");
+        assert_eq!(hex(500, 16), "16#01F4");
+        assert_eq!(binary(0x85, 8), "2#1000_0101");
+        assert_eq!(binary(1, 1), "2#1");
+        assert_eq!(binary(0xFFFF_FFFF, 32).len(), 2 + 32 + 7);
+    }
+
+    #[test]
+    fn table_renders_without_colour_as_ascii() {
+        let o = Outcome::new("read").table(&["operand", "value"], vec![vec!["VW0".into(), "1".into()]]);
+        let mut buf = Vec::new();
+        write_outcome(&mut buf, Style::default(), &o).unwrap();
+        let s = String::from_utf8(buf).unwrap();
+        assert!(s.contains("| VW0") && !s.contains('\x1b'), "{s}");
+    }
+}

@@ -1,0 +1,293 @@
+//! The session: the open devices and their names, the shared virtual clock, and the
+//! interrupt flag. It is the one API the REPL, Lua and one-shot commands call; front ends
+//! never touch transports or simulators directly.
+//!
+//! Device URLs are opened through one list, [`open_url`]: a new family adds its schemes
+//! there.
+
+use crate::core::url::DeviceUrl;
+use crate::core::{Clock, DataType, Device, Error, ErrorKind, Operand, Result, Value};
+use serde::Serialize;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
+
+/// One value read or written, as reported to users and scripts.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Reading {
+    pub operand: String,
+    pub value: Value,
+    #[serde(rename = "type")]
+    pub dtype: DataType,
+    /// Set when a command touches several devices.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub device: Option<String>,
+}
+
+/// An open device with its name.
+pub struct Entry {
+    pub name: String,
+    pub url: String,
+    pub device: Box<dyn Device>,
+}
+
+/// How `set` items arrive: operand text and value text, with their columns in the line.
+#[derive(Clone, Debug)]
+pub struct SetItem {
+    pub operand: String,
+    pub value: String,
+    pub column: usize,
+    pub value_column: usize,
+}
+
+/// A resolved operand: which device, which operands.
+#[derive(Clone, Debug)]
+pub struct Target {
+    pub device: usize,
+    pub ops: Vec<Operand>,
+}
+
+pub struct Session {
+    devices: Vec<Entry>,
+    current: usize,
+    pub clock: Clock,
+    pub interrupt: Arc<AtomicBool>,
+}
+
+/// Opens a device from its URL. Every scheme plcsh knows is listed here.
+pub fn open_url(url: &str, clock: &Clock) -> Result<Box<dyn Device>> {
+    let u = DeviceUrl::parse(url)?;
+    match u.scheme.as_str() {
+        "sim" => {
+            u.expect_params(&["model"])?;
+            let model = u.param("model").unwrap_or(&u.target);
+            crate::k2::open_sim(model, clock.clone())
+        }
+        other => {
+            Err(Error::usage(format!("unknown device scheme `{other}:` in {url}")).hint("known schemes: sim:MODEL"))
+        }
+    }
+}
+
+impl Session {
+    /// An empty session with the given clock.
+    pub fn new(clock: Clock) -> Session {
+        Session { devices: Vec::new(), current: 0, clock, interrupt: Arc::new(AtomicBool::new(false)) }
+    }
+
+    /// Opens `url` under `name` (replacing a device of that name) and makes it current if
+    /// it is the first.
+    pub fn open(&mut self, name: &str, url: &str) -> Result<()> {
+        if name.is_empty() || !name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-') {
+            return Err(Error::usage(format!("`{name}` is not a device name (letters, digits, _ and -)")));
+        }
+        let device = open_url(url, &self.clock).map_err(|e| e.device(name))?;
+        self.add(name, url, device);
+        Ok(())
+    }
+
+    /// Adds an already-open device.
+    pub fn add(&mut self, name: &str, url: &str, device: Box<dyn Device>) {
+        let entry = Entry { name: name.to_string(), url: url.to_string(), device };
+        match self.devices.iter().position(|e| e.name == name) {
+            Some(i) => self.devices[i] = entry,
+            None => self.devices.push(entry),
+        }
+    }
+
+    pub fn close(&mut self, name: &str) -> Result<()> {
+        let i = self.index(name)?;
+        self.devices.remove(i);
+        if self.current >= self.devices.len() {
+            self.current = 0;
+        } else if self.current > i {
+            self.current -= 1;
+        }
+        Ok(())
+    }
+
+    pub fn entries(&self) -> &[Entry] {
+        &self.devices
+    }
+
+    pub fn index(&self, name: &str) -> Result<usize> {
+        self.devices.iter().position(|e| e.name == name).ok_or_else(|| {
+            let names: Vec<&str> = self.devices.iter().map(|e| e.name.as_str()).collect();
+            Error::usage(format!("no device named `{name}`")).hint(if names.is_empty() {
+                "no device is open; add one with --device NAME=URL".to_string()
+            } else {
+                format!("open devices: {}", names.join(", "))
+            })
+        })
+    }
+
+    pub fn use_device(&mut self, name: &str) -> Result<()> {
+        self.current = self.index(name)?;
+        Ok(())
+    }
+
+    pub fn current_name(&self) -> Option<&str> {
+        self.devices.get(self.current).map(|e| e.name.as_str())
+    }
+
+    pub fn entry(&mut self, i: usize) -> &mut Entry {
+        &mut self.devices[i]
+    }
+
+    pub fn device(&mut self, name: &str) -> Result<&mut Box<dyn Device>> {
+        let i = self.index(name)?;
+        Ok(&mut self.devices[i].device)
+    }
+
+    /// The current device's index, or an error when none is open.
+    pub fn current_index(&self) -> Result<usize> {
+        if self.devices.is_empty() {
+            Err(Error::usage("no device is open").hint("add one with --device NAME=URL or `connect NAME URL`"))
+        } else {
+            Ok(self.current)
+        }
+    }
+
+    /// Splits `dev:OPERAND` and parses the operand with that device's grammar.
+    pub fn resolve(&self, text: &str) -> Result<Target> {
+        let lead = text.len() - text.trim_start().len();
+        let t = text.trim();
+        let (device, body, offset) = match t.find(':') {
+            Some(c) => (self.index(&t[..c]).map_err(|e| e.column(lead))?, &t[c + 1..], lead + c + 1),
+            None => (self.current_index()?, t, lead),
+        };
+        let entry = &self.devices[device];
+        let ops = entry.device.operands().parse(body).map_err(|e| e.shift(offset).device(&entry.name))?;
+        Ok(Target { device, ops })
+    }
+
+    pub fn name_of(&self, device: usize, op: &Operand) -> String {
+        self.devices[device].device.operands().name(op)
+    }
+
+    /// Reads operand expressions (each may be a range) from any devices.
+    pub fn get(&mut self, texts: &[&str]) -> Result<Vec<(usize, Reading)>> {
+        let targets: Vec<Target> = texts.iter().map(|t| self.resolve(t)).collect::<Result<_>>()?;
+        let mut out = Vec::new();
+        // Batch consecutive operands of one device so drivers can coalesce.
+        let mut i = 0;
+        while i < targets.len() {
+            let dev = targets[i].device;
+            let mut ops: Vec<Operand> = Vec::new();
+            while i < targets.len() && targets[i].device == dev {
+                ops.extend_from_slice(&targets[i].ops);
+                i += 1;
+            }
+            let entry = &mut self.devices[dev];
+            let values = entry.device.read(&ops).map_err(|e| e.device(&entry.name))?;
+            for (op, v) in ops.iter().zip(values) {
+                out.push((
+                    dev,
+                    Reading { operand: entry.device.operands().name(op), value: v, dtype: op.dtype, device: None },
+                ));
+            }
+        }
+        Ok(out)
+    }
+
+    /// Validates every item first (operand, value, bounds); writes nothing if any is bad.
+    /// Then writes in the order given.
+    pub fn set(&mut self, items: &[SetItem]) -> Result<Vec<(usize, Reading)>> {
+        let mut plan: Vec<(usize, Operand, Value)> = Vec::new();
+        for it in items {
+            let target = self.resolve(&it.operand).map_err(|e| e.shift(it.column))?;
+            let entry = &self.devices[target.device];
+            let lit = crate::core::literal::parse_literal(&it.value).map_err(|e| {
+                Error::new(ErrorKind::Value, e.message)
+                    .column(it.value_column + e.column)
+                    .operand(it.operand.trim())
+                    .device(&entry.name)
+            })?;
+            for op in &target.ops {
+                let v = lit.fit(op.dtype, op.bits as u32).map_err(|m| {
+                    Error::new(ErrorKind::Value, m)
+                        .operand(entry.device.operands().name(op))
+                        .device(&entry.name)
+                        .column(it.value_column)
+                })?;
+                plan.push((target.device, *op, v));
+            }
+        }
+        let mut out = Vec::new();
+        let mut i = 0;
+        while i < plan.len() {
+            let dev = plan[i].0;
+            let mut batch = Vec::new();
+            while i < plan.len() && plan[i].0 == dev {
+                batch.push((plan[i].1, plan[i].2));
+                i += 1;
+            }
+            let entry = &mut self.devices[dev];
+            entry.device.write(&batch).map_err(|e| e.device(&entry.name))?;
+            for (op, v) in batch {
+                out.push((
+                    dev,
+                    Reading { operand: entry.device.operands().name(&op), value: v, dtype: op.dtype, device: None },
+                ));
+            }
+        }
+        Ok(out)
+    }
+
+    /// Raises the interrupt flag (Ctrl-C); waits and scripts check it.
+    pub fn interrupt(&self) {
+        self.interrupt.store(true, Ordering::Relaxed);
+    }
+
+    pub fn clear_interrupt(&self) {
+        self.interrupt.store(false, Ordering::Relaxed);
+    }
+
+    pub fn interrupted(&self) -> bool {
+        self.interrupt.load(Ordering::Relaxed)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn session() -> Session {
+        let mut s = Session::new(Clock::stepped());
+        s.open("plc", "sim:K205-16DT").unwrap();
+        s
+    }
+
+    fn item(op: &str, v: &str) -> SetItem {
+        SetItem { operand: op.into(), value: v.into(), column: 0, value_column: 0 }
+    }
+
+    #[test]
+    fn set_then_get_in_order() {
+        let mut s = session();
+        s.set(&[item("SMB67", "16#85"), item("SMW68", "500"), item("SMD72", "1000")]).unwrap();
+        let r = s.get(&["SMB67", "SMW68", "SMD72"]).unwrap();
+        let v: Vec<i64> = r.iter().map(|(_, r)| r.value.as_i64()).collect();
+        assert_eq!(v, vec![133, 500, 1000]);
+    }
+
+    #[test]
+    fn a_bad_item_writes_nothing() {
+        let mut s = session();
+        let e = s.set(&[item("VW0", "1"), item("VB2", "300"), item("VW4", "2")]).unwrap_err();
+        assert_eq!(e.kind, ErrorKind::Value);
+        assert_eq!(e.operand.as_deref(), Some("VB2"));
+        let r = s.get(&["VW0", "VW4"]).unwrap();
+        assert!(r.iter().all(|(_, r)| r.value == Value::Int(0)));
+    }
+
+    #[test]
+    fn device_prefix_addresses_another_device() {
+        let mut s = session();
+        s.open("other", "sim:K209M-56DT").unwrap();
+        s.set(&[item("other:VW16000", "9")]).unwrap();
+        assert_eq!(s.get(&["other:VW16000"]).unwrap()[0].1.value, Value::Int(9));
+        assert!(s.get(&["VW16000"]).is_err(), "the current device is the K205");
+        let e = s.get(&["nope:VW0"]).unwrap_err();
+        assert!(e.hint.clone().unwrap().contains("plc"));
+    }
+}

@@ -1,0 +1,88 @@
+//! `use`, `devices`, `connect`, `close`: naming and switching devices in the session.
+
+use super::CommandSpec;
+use crate::core::{Error, Result};
+use crate::output::Outcome;
+use crate::shell::{lex, Args, Shell};
+
+pub const USE: CommandSpec = CommandSpec {
+    name: "use",
+    aliases: &[],
+    usage: "use DEVICE",
+    summary: "make DEVICE the one operands without a prefix go to",
+    subcommands: &[],
+    run: use_cmd,
+};
+
+pub const DEVICES: CommandSpec = CommandSpec {
+    name: "devices",
+    aliases: &[],
+    usage: "devices",
+    summary: "list open devices",
+    subcommands: &[],
+    run: devices,
+};
+
+pub const CONNECT: CommandSpec = CommandSpec {
+    name: "connect",
+    aliases: &["open"],
+    usage: "connect NAME URL   e.g. connect press sim:K209EA-50DX",
+    summary: "open a device under a name",
+    subcommands: &[],
+    run: connect,
+};
+
+pub const CLOSE: CommandSpec = CommandSpec {
+    name: "close",
+    aliases: &[],
+    usage: "close NAME",
+    summary: "close a device",
+    subcommands: &[],
+    run: close,
+};
+
+fn one_word<'a>(args: &Args<'a>, usage: &str) -> Result<&'a str> {
+    let w = lex::words(args.text)?;
+    match w.as_slice() {
+        [(_, name)] => Ok(name),
+        _ => Err(Error::usage(format!("usage: {usage}")).column(args.offset)),
+    }
+}
+
+fn use_cmd(sh: &mut Shell, args: Args) -> Result<Outcome> {
+    let name = one_word(&args, USE.usage)?;
+    sh.session.use_device(name).map_err(|e| e.column(args.offset))?;
+    let mut o = Outcome::new("use");
+    o.device = Some(name.to_string());
+    Ok(o.quiet())
+}
+
+fn devices(sh: &mut Shell, _args: Args) -> Result<Outcome> {
+    let current = sh.session.current_name().map(str::to_string);
+    let mut rows = Vec::new();
+    let mut list = Vec::new();
+    for e in sh.session.entries() {
+        let info = e.device.info();
+        let mark = if Some(&e.name) == current.as_ref() { "*" } else { "" };
+        rows.push(vec![format!("{mark}{}", e.name), info.family.to_string(), info.model.clone(), e.url.clone()]);
+        list.push(serde_json::json!({"name": e.name, "family": info.family, "model": info.model, "url": e.url, "simulated": info.simulated, "current": mark == "*"}));
+    }
+    Ok(Outcome::new("devices").table(&["name", "family", "model", "url"], rows).with("devices", list))
+}
+
+fn connect(sh: &mut Shell, args: Args) -> Result<Outcome> {
+    let w = lex::words(args.text)?;
+    let [(_, name), (_, url)] = w.as_slice() else {
+        return Err(Error::usage(format!("usage: {}", CONNECT.usage)).column(args.offset));
+    };
+    sh.session.open(name, url)?;
+    let mut o = Outcome::new("connect");
+    o.device = Some(name.to_string());
+    Ok(o.quiet())
+}
+
+fn close(sh: &mut Shell, args: Args) -> Result<Outcome> {
+    let name = one_word(&args, CLOSE.usage)?;
+    sh.session.close(name)?;
+    Ok(Outcome::new("close").quiet())
+}

@@ -1,0 +1,125 @@
+//! `get`, `set` and `read`: operand access through the session.
+
+use super::CommandSpec;
+use crate::core::{DataType, Error, Result, Value};
+use crate::output::{binary, hex, Outcome};
+use crate::session::SetItem;
+use crate::shell::{lex, Args, Shell};
+
+pub const GET: CommandSpec = CommandSpec {
+    name: "get",
+    aliases: &["g"],
+    usage: "get OPERAND…   e.g. get VW100 SMD72 plc:M0.0 VW0..VW8",
+    summary: "read operands (ranges and device: prefixes allowed)",
+    subcommands: &[],
+    run: get,
+};
+
+pub const SET: CommandSpec = CommandSpec {
+    name: "set",
+    aliases: &["s"],
+    usage: "set OPERAND=VALUE[, OPERAND=VALUE…]   e.g. set SMB67=16#85, SMW68=500, SMD72=1000",
+    summary: "write operands in order; the whole line is checked before anything is written",
+    subcommands: &[],
+    run: set,
+};
+
+pub const READ: CommandSpec = CommandSpec {
+    name: "read",
+    aliases: &["r"],
+    usage: "read RANGE…   e.g. read VW0..VW20, read VB0[16]",
+    summary: "read a range as a table: value, hex and binary",
+    subcommands: &[],
+    run: read,
+};
+
+fn operand_words<'a>(args: &Args<'a>, what: &str) -> Result<Vec<(usize, &'a str)>> {
+    let w = lex::words(args.text).map_err(|e| e.shift(args.offset))?;
+    if w.is_empty() {
+        return Err(Error::usage(format!("{what} needs at least one operand")).column(args.offset));
+    }
+    Ok(w)
+}
+
+fn read_values(sh: &mut Shell, args: &Args) -> Result<(Option<String>, Vec<crate::session::Reading>)> {
+    let words = operand_words(args, "get")?;
+    let mut targets = Vec::new();
+    for &(col, w) in &words {
+        targets.push(sh.session.resolve(w).map_err(|e| e.shift(args.offset + col))?);
+    }
+    let texts: Vec<&str> = words.iter().map(|w| w.1).collect();
+    let readings = sh.session.get(&texts)?;
+    let first = targets.first().map(|t| t.device);
+    let many = targets.iter().any(|t| Some(t.device) != first);
+    let name = |i: usize| sh.session.entries()[i].name.clone();
+    let device = first.map(name);
+    let values = readings
+        .into_iter()
+        .map(|(dev, mut r)| {
+            if many {
+                r.device = Some(sh.session.entries()[dev].name.clone());
+            }
+            r
+        })
+        .collect();
+    Ok((device, values))
+}
+
+fn get(sh: &mut Shell, args: Args) -> Result<Outcome> {
+    let (device, values) = read_values(sh, &args)?;
+    let mut o = Outcome::new("get");
+    o.device = device;
+    o.values = values;
+    Ok(o)
+}
+
+fn set(sh: &mut Shell, args: Args) -> Result<Outcome> {
+    if args.text.is_empty() {
+        return Err(Error::usage("set needs OPERAND=VALUE items").hint(SET.usage).column(args.offset));
+    }
+    let mut items = Vec::new();
+    for (col, piece) in lex::split_top(args.text, ',').map_err(|e| e.shift(args.offset))? {
+        let lead = piece.len() - piece.trim_start().len();
+        let p = piece.trim();
+        let column = args.offset + col + lead;
+        let Some(eq) = p.find('=') else {
+            return Err(Error::syntax(format!("`{p}` is not OPERAND=VALUE")).column(column).hint(SET.usage));
+        };
+        let vtext = &p[eq + 1..];
+        let vlead = vtext.len() - vtext.trim_start().len();
+        items.push(SetItem {
+            operand: p[..eq].to_string(),
+            value: vtext.trim().to_string(),
+            column,
+            value_column: column + eq + 1 + vlead,
+        });
+    }
+    let writes = sh.session.set(&items)?;
+    let mut o = Outcome::new("set");
+    o.device = writes.first().map(|(d, _)| sh.session.entries()[*d].name.clone());
+    o.writes = writes.into_iter().map(|(_, r)| r).collect();
+    Ok(o.quiet())
+}
+
+fn read(sh: &mut Shell, args: Args) -> Result<Outcome> {
+    let (device, values) = read_values(sh, &args)?;
+    let rows = values
+        .iter()
+        .map(|r| {
+            let raw = match r.value {
+                Value::Real(f) => (f as f32).to_bits() as u64,
+                v => v.as_i64() as u64,
+            };
+            let bits = if r.dtype == DataType::Bool { 1 } else { r.dtype.bits() };
+            let label = match &r.device {
+                Some(d) => format!("{d}:{}", r.operand),
+                None => r.operand.clone(),
+            };
+            vec![label, r.value.to_string(), r.dtype.name().to_string(), hex(raw, bits), binary(raw, bits)]
+        })
+        .collect();
+    let mut o = Outcome::new("read").table(&["operand", "value", "type", "hex", "binary"], rows);
+    o.device = device;
+    o.values = values;
+    Ok(o)
+}

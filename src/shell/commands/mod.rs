@@ -1,0 +1,51 @@
+//! The command registry: every shell command in one list, one file per command family.
+//! Completion, `help` and the README's command table all read this list.
+
+mod device;
+mod help;
+mod io;
+mod sim;
+
+use super::{Args, Shell};
+use crate::core::Result;
+use crate::output::Outcome;
+
+/// One shell command.
+pub struct CommandSpec {
+    pub name: &'static str,
+    pub aliases: &'static [&'static str],
+    pub usage: &'static str,
+    pub summary: &'static str,
+    /// Sub-commands, for completion.
+    pub subcommands: &'static [&'static str],
+    pub run: fn(&mut Shell, Args) -> Result<Outcome>,
+}
+
+/// Every command, in the order `help` lists them.
+pub const COMMANDS: &[CommandSpec] = &[
+    io::GET,
+    io::SET,
+    io::READ,
+    device::USE,
+    device::DEVICES,
+    device::CONNECT,
+    device::CLOSE,
+    sim::SIM,
+    help::HELP,
+    help::QUIT,
+];
+
+pub fn find(name: &str) -> Option<&'static CommandSpec> {
+    COMMANDS.iter().find(|c| c.name == name || c.aliases.contains(&name))
+}
+
+/// "did you mean" for an unknown command.
+pub fn suggest(name: &str) -> String {
+    let mut best: Vec<(usize, &str)> =
+        COMMANDS.iter().map(|c| (crate::k2::operand::edit_distance(name, c.name), c.name)).collect();
+    best.sort();
+    match best.first() {
+        Some((d, n)) if *d <= 2 => format!("did you mean `{n}`? `help` lists the commands"),
+        _ => "`help` lists the commands".to_string(),
+    }
+}

@@ -1,0 +1,45 @@
+//! `sim time`, `sim step DURATION`, `sim run`: the session's virtual clock.
+
+use super::CommandSpec;
+use crate::core::clock::format_time;
+use crate::core::literal::parse_duration_us;
+use crate::core::{Error, Result};
+use crate::output::Outcome;
+use crate::shell::{Args, Shell};
+use std::time::Duration;
+
+pub const SIM: CommandSpec = CommandSpec {
+    name: "sim",
+    aliases: &[],
+    usage: "sim time | sim step DURATION | sim run",
+    summary: "show the simulator clock, step it (and keep it stepped), or let it follow the wall clock",
+    subcommands: &["time", "step", "run"],
+    run: sim,
+};
+
+fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
+    let mut it = args.text.split_whitespace();
+    let sub = it.next().unwrap_or("time");
+    let clock = sh.session.clock.clone();
+    match sub {
+        "time" => {}
+        "step" => {
+            let d = it
+                .next()
+                .ok_or_else(|| Error::usage("sim step needs a duration, e.g. sim step 500ms").column(args.offset))?;
+            let us = parse_duration_us(d).map_err(|m| Error::usage(m).column(args.offset + 5))?;
+            if us < 0 {
+                return Err(Error::usage("time only moves forward"));
+            }
+            clock.step(Duration::from_micros(us as u64));
+        }
+        "run" => clock.run(),
+        other => return Err(Error::usage(format!("unknown `sim {other}`")).hint(SIM.usage).column(args.offset)),
+    }
+    let now = clock.now();
+    let mode = if clock.is_stepped() { "stepped" } else { "following the wall clock" };
+    Ok(Outcome::new("sim")
+        .text(format!("simulator time {} ({mode})", format_time(now)))
+        .with("time_us", now.as_micros() as u64)
+        .with("stepped", clock.is_stepped()))
+}

@@ -1,0 +1,105 @@
+//! The command language shared by the REPL, one-shot `-c` and Lua's `plcsh.exec`:
+//! `get VW100 SMD72`, `set SMB67=16#85, SMW68=500, SMD72=1000`, `read VW0..VW20`,
+//! several commands per line separated by `;`. Commands are registered in one list
+//! (`commands::COMMANDS`), one file per command family, each a thin call into the session.
+
+pub mod commands;
+pub mod lex;
+pub mod repl;
+
+use crate::core::{Error, ErrorKind, Result};
+use crate::output::{self, Outcome, Style};
+use crate::session::Session;
+use std::io::Write;
+
+/// The part of a line a command received, with its column in the line (for carets).
+#[derive(Clone, Copy, Debug)]
+pub struct Args<'a> {
+    pub text: &'a str,
+    pub offset: usize,
+}
+
+/// The shell: a session plus output settings.
+pub struct Shell {
+    pub session: Session,
+    pub style: Style,
+    pub verbose: bool,
+    /// Set by `quit`.
+    pub quit: bool,
+}
+
+/// One command's result, with the command name for error reporting.
+pub type CmdResult = std::result::Result<Outcome, (String, Error)>;
+
+impl Shell {
+    pub fn new(session: Session, style: Style) -> Shell {
+        Shell { session, style, verbose: false, quit: false }
+    }
+
+    /// Runs every command on the line in order and returns their results. A failing
+    /// command does not stop the ones after it on the same line only if it is not a
+    /// write: after a failed command the rest of the line is skipped (the line is treated
+    /// like a script: later commands usually depend on earlier ones).
+    pub fn exec(&mut self, line: &str) -> Vec<CmdResult> {
+        let mut results = Vec::new();
+        let parts = match lex::split_commands(line) {
+            Ok(p) => p,
+            Err(e) => return vec![Err(("line".into(), e))],
+        };
+        for (offset, part) in parts {
+            let lead = part.len() - part.trim_start().len();
+            let cmd_text = part.trim();
+            if cmd_text.is_empty() {
+                continue;
+            }
+            let r = self.exec_one(cmd_text, offset + lead);
+            let failed = r.is_err();
+            results.push(r);
+            if failed || self.quit {
+                break;
+            }
+        }
+        results
+    }
+
+    fn exec_one(&mut self, text: &str, offset: usize) -> CmdResult {
+        let name_len = text.find(char::is_whitespace).unwrap_or(text.len());
+        let name = text[..name_len].to_ascii_lowercase();
+        let rest = &text[name_len..];
+        let lead = rest.len() - rest.trim_start().len();
+        let args = Args { text: rest.trim(), offset: offset + name_len + lead };
+        let Some(spec) = commands::find(&name) else {
+            let e = Error::new(ErrorKind::Usage, format!("unknown command `{name}`"))
+                .column(offset)
+                .hint(commands::suggest(&name));
+            return Err((name, e));
+        };
+        self.session.clear_interrupt();
+        (spec.run)(self, args).map_err(|e| (spec.name.to_string(), e))
+    }
+
+    /// Runs a line and writes each result; returns true when every command succeeded.
+    pub fn run_line(&mut self, line: &str, out: &mut dyn Write) -> bool {
+        let mut ok = true;
+        for r in self.exec(line) {
+            let w = match &r {
+                Ok(o) => output::write_outcome(out, self.style, o),
+                Err((cmd, e)) => {
+                    ok = false;
+                    output::write_error(out, self.style, cmd, e, Some(line))
+                }
+            };
+            if w.is_err() {
+                return false;
+            }
+        }
+        let _ = out.flush();
+        ok
+    }
+
+    /// The name of the device a command acts on by default.
+    pub fn current_device(&self) -> Result<String> {
+        let i = self.session.current_index()?;
+        Ok(self.session.entries()[i].name.clone())
+    }
+}

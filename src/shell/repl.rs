@@ -1,0 +1,109 @@
+//! The interactive loop (rustyline) and the non-interactive one (commands from a pipe,
+//! no prompt or echo). History persists in the user's data directory.
+
+use super::Shell;
+use rustyline::error::ReadlineError;
+use std::io::{BufRead, Write};
+use std::path::PathBuf;
+
+/// Where the REPL keeps its history (`~/.local/share/plcsh/history.txt` on Linux).
+pub fn history_path() -> Option<PathBuf> {
+    directories::ProjectDirs::from("", "", "plcsh").map(|d| d.data_dir().join("history.txt"))
+}
+
+/// Runs the interactive REPL until `quit` or end of input. Returns the exit status.
+pub fn interactive(shell: &mut Shell) -> i32 {
+    let mut ed = match rustyline::DefaultEditor::new() {
+        Ok(e) => e,
+        Err(e) => {
+            eprintln!("cannot start the line editor: {e}");
+            return 1;
+        }
+    };
+    let history = history_path();
+    if let Some(h) = &history {
+        let _ = ed.load_history(h);
+    }
+    let mut out = std::io::stdout();
+    let _ = writeln!(
+        out,
+        "plcsh {} — `help` lists commands, `quit` leaves. Devices: {}",
+        env!("CARGO_PKG_VERSION"),
+        device_list(shell)
+    );
+    loop {
+        let prompt = format!("{}> ", shell.session.current_name().unwrap_or("plcsh"));
+        match ed.readline(&prompt) {
+            Ok(line) => {
+                if line.trim().is_empty() {
+                    continue;
+                }
+                let _ = ed.add_history_entry(line.as_str());
+                shell.run_line(&line, &mut out);
+                if shell.quit {
+                    break;
+                }
+            }
+            Err(ReadlineError::Interrupted) => continue,
+            Err(ReadlineError::Eof) => break,
+            Err(e) => {
+                eprintln!("input error: {e}");
+                break;
+            }
+        }
+    }
+    if let Some(h) = &history {
+        if let Some(dir) = h.parent() {
+            let _ = std::fs::create_dir_all(dir);
+        }
+        let _ = ed.save_history(h);
+    }
+    0
+}
+
+fn device_list(shell: &Shell) -> String {
+    shell
+        .session
+        .entries()
+        .iter()
+        .map(|e| {
+            format!(
+                "{} ({} {})",
+                e.name,
+                e.device.info().model,
+                if e.device.info().simulated { "simulated" } else { e.url.as_str() }
+            )
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// Runs commands from a reader, one line at a time, no prompt. Returns 0 when every
+/// command succeeded, 1 otherwise.
+pub fn batch(shell: &mut Shell, input: &mut dyn BufRead, out: &mut dyn Write) -> i32 {
+    let mut ok = true;
+    let mut line = String::new();
+    loop {
+        line.clear();
+        match input.read_line(&mut line) {
+            Ok(0) => break,
+            Ok(_) => {}
+            Err(e) => {
+                eprintln!("input error: {e}");
+                return 1;
+            }
+        }
+        let l = line.trim_end_matches(['\n', '\r']);
+        if l.trim().is_empty() || l.trim_start().starts_with('#') {
+            continue;
+        }
+        ok &= shell.run_line(l, out);
+        if shell.quit {
+            break;
+        }
+        if shell.session.interrupted() {
+            return 130;
+        }
+    }
+    i32::from(!ok)
+}

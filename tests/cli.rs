@@ -1,0 +1,91 @@
+//! The real binary: piped stdin, `-c`, `--json`, exit codes (issue: foundation).
+
+mod common;
+use common::*;
+
+#[test]
+fn piped_set_then_get_prints_the_three_values_as_json() {
+    let o = run(&["--json"], "set SMB67=16#85, SMW68=500, SMD72=1000\nget SMB67 SMW68 SMD72\n");
+    assert!(o.status.success(), "{}", stdout(&o));
+    let lines = json_lines(&o);
+    assert_eq!(lines.len(), 2, "one JSON object per command");
+    let values: Vec<i64> = lines[1]["values"].as_array().unwrap().iter().map(|v| v["value"].as_i64().unwrap()).collect();
+    assert_eq!(values, vec![133, 500, 1000]);
+    assert_eq!(lines[1]["values"][0]["type"], "BYTE");
+    assert_eq!(lines[1]["device"], "plc");
+}
+
+#[test]
+fn one_shot_with_semicolons() {
+    let o = run(&["-c", "set VW100=5; get VW100", "--json"], "");
+    assert!(o.status.success());
+    let lines = json_lines(&o);
+    assert_eq!(lines[1], serde_json::json!({"ok":true,"cmd":"get","device":"plc","values":[{"operand":"VW100","value":5,"type":"WORD"}]}));
+}
+
+#[test]
+fn a_bad_item_writes_nothing_and_the_repl_continues() {
+    let o = run(&["--json"], "set VW0=1, VB2=300, VW4=2\nget VW0 VB2 VW4\n");
+    assert_eq!(o.status.code(), Some(1), "a failed command makes the exit status 1");
+    let lines = json_lines(&o);
+    assert_eq!(lines[0]["ok"], false);
+    assert_eq!(lines[0]["error"]["kind"], "value");
+    assert_eq!(lines[0]["error"]["operand"], "VB2");
+    assert!(lines[0]["error"]["message"].as_str().unwrap().contains("300"));
+    let zeros: Vec<i64> = lines[1]["values"].as_array().unwrap().iter().map(|v| v["value"].as_i64().unwrap()).collect();
+    assert_eq!(zeros, vec![0, 0, 0], "nothing was written");
+}
+
+#[test]
+fn human_errors_point_at_the_column() {
+    let o = run(&["-c", "set VW0=1, VB2=300"], "");
+    let s = stdout(&o);
+    assert!(s.contains("  set VW0=1, VB2=300\n                 ^\n"), "{s}");
+    assert!(s.contains("out of range for BYTE"), "{s}");
+}
+
+#[test]
+fn usage_errors_exit_2() {
+    let o = run(&["--no-such-flag"], "");
+    assert_eq!(o.status.code(), Some(2));
+    let o = run(&["--device", "x=bogus:1"], "");
+    assert_eq!(o.status.code(), Some(2));
+}
+
+#[test]
+fn model_flag_and_device_prefix() {
+    let o = run(&["--model", "K209M-56DT", "--device", "small=sim:K205-16DT", "--json", "-c", "set VW16000=7, small:VW0=3; get VW16000 small:VW0"], "");
+    assert!(o.status.success(), "{}", stdout(&o));
+    let lines = json_lines(&o);
+    assert_eq!(lines[1]["values"][0]["value"], 7);
+    assert_eq!(lines[1]["values"][1]["device"], "small");
+    let o = run(&["--json", "-c", "get VW16000"], "");
+    let lines = json_lines(&o);
+    assert_eq!(lines[0]["error"]["kind"], "range");
+    assert!(lines[0]["error"]["message"].as_str().unwrap().contains("VW4094"));
+}
+
+#[test]
+fn read_prints_a_table_with_hex_and_binary() {
+    let o = run(&["-c", "set VB0=16#85; read VB0..VB1"], "");
+    let s = stdout(&o);
+    assert!(s.contains("16#85") && s.contains("2#1000_0101"), "{s}");
+}
+
+#[test]
+fn stepped_time_from_the_command_line() {
+    let o = run(&["--time", "stepped", "--json", "-c", "get SM0.1; sim step 499ms; get SM0.5; sim step 2ms; get SM0.5 SM0.1"], "");
+    let l = json_lines(&o);
+    assert_eq!(l[0]["values"][0]["value"], true, "first scan");
+    assert_eq!(l[2]["values"][0]["value"], true, "SM0.5 still on at 499 ms");
+    assert_eq!(l[4]["values"][0]["value"], false, "SM0.5 off at 501 ms");
+    assert_eq!(l[4]["values"][1]["value"], false, "first scan over");
+}
+
+#[test]
+fn models_lists_the_catalogue() {
+    let o = run(&["models", "--json"], "");
+    let l = json_lines(&o);
+    let names: Vec<&str> = l[0]["models"].as_array().unwrap().iter().map(|m| m["name"].as_str().unwrap()).collect();
+    assert!(names.contains(&"K205-16DR") && names.contains(&"K209M-56DT"));
+}
