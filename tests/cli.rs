@@ -9,7 +9,8 @@ fn piped_set_then_get_prints_the_three_values_as_json() {
     assert!(o.status.success(), "{}", stdout(&o));
     let lines = json_lines(&o);
     assert_eq!(lines.len(), 2, "one JSON object per command");
-    let values: Vec<i64> = lines[1]["values"].as_array().unwrap().iter().map(|v| v["value"].as_i64().unwrap()).collect();
+    let values: Vec<i64> =
+        lines[1]["values"].as_array().unwrap().iter().map(|v| v["value"].as_i64().unwrap()).collect();
     assert_eq!(values, vec![133, 500, 1000]);
     assert_eq!(lines[1]["values"][0]["type"], "BYTE");
     assert_eq!(lines[1]["device"], "plc");
@@ -20,7 +21,10 @@ fn one_shot_with_semicolons() {
     let o = run(&["-c", "set VW100=5; get VW100", "--json"], "");
     assert!(o.status.success());
     let lines = json_lines(&o);
-    assert_eq!(lines[1], serde_json::json!({"ok":true,"cmd":"get","device":"plc","values":[{"operand":"VW100","value":5,"type":"WORD"}]}));
+    assert_eq!(
+        lines[1],
+        serde_json::json!({"ok":true,"cmd":"get","device":"plc","values":[{"operand":"VW100","value":5,"type":"WORD"}]})
+    );
 }
 
 #[test]
@@ -54,7 +58,18 @@ fn usage_errors_exit_2() {
 
 #[test]
 fn model_flag_and_device_prefix() {
-    let o = run(&["--model", "K209M-56DT", "--device", "small=sim:K205-16DT", "--json", "-c", "set VW16000=7, small:VW0=3; get VW16000 small:VW0"], "");
+    let o = run(
+        &[
+            "--model",
+            "K209M-56DT",
+            "--device",
+            "small=sim:K205-16DT",
+            "--json",
+            "-c",
+            "set VW16000=7, small:VW0=3; get VW16000 small:VW0",
+        ],
+        "",
+    );
     assert!(o.status.success(), "{}", stdout(&o));
     let lines = json_lines(&o);
     assert_eq!(lines[1]["values"][0]["value"], 7);
@@ -74,7 +89,10 @@ fn read_prints_a_table_with_hex_and_binary() {
 
 #[test]
 fn stepped_time_from_the_command_line() {
-    let o = run(&["--time", "stepped", "--json", "-c", "get SM0.1; sim step 499ms; get SM0.5; sim step 2ms; get SM0.5 SM0.1"], "");
+    let o = run(
+        &["--time", "stepped", "--json", "-c", "get SM0.1; sim step 499ms; get SM0.5; sim step 2ms; get SM0.5 SM0.1"],
+        "",
+    );
     let l = json_lines(&o);
     assert_eq!(l[0]["values"][0]["value"], true, "first scan");
     assert_eq!(l[2]["values"][0]["value"], true, "SM0.5 still on at 499 ms");

@@ -4,6 +4,7 @@
 pub mod clock;
 pub mod device;
 pub mod error;
+pub mod link;
 pub mod literal;
 pub mod operand;
 pub mod url;

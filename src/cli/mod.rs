@@ -1,10 +1,13 @@
 //! The command line (clap): `plcsh` opens the REPL on a simulated K2; `-c` runs commands
 //! one-shot; subcommands are thin calls into the session and the shell.
 //! Exit status: 0 when every command succeeded, 1 when any failed, 2 for a usage error.
+//! One file per subcommand (`models.rs` …), each a thin call into the library.
+
+mod models;
 
 use crate::core::{Clock, ErrorKind};
 use crate::k2::catalog;
-use crate::output::{self, Outcome, Style};
+use crate::output::{self, Style};
 use crate::session::Session;
 use crate::shell::{repl, Shell};
 use clap::{Parser, Subcommand, ValueEnum};
@@ -106,7 +109,7 @@ pub fn main() -> i32 {
     if let Some(sub) = &cli.sub {
         return match sub {
             Sub::Models => {
-                let o = models_outcome();
+                let o = models::outcome();
                 let _ = output::write_outcome(&mut out, style, &o);
                 0
             }
@@ -126,43 +129,6 @@ pub fn main() -> i32 {
         let _ = out.flush();
         code
     }
-}
-
-/// The catalogue as a table and JSON.
-pub fn models_outcome() -> Outcome {
-    let rows = catalog::MODELS
-        .iter()
-        .map(|m| {
-            let pto: Vec<String> = m.pto.iter().map(|p| format!("{} {}k", p.output, p.max_hz / 1000)).collect();
-            let hsc: Vec<String> = m
-                .hsc
-                .iter()
-                .map(|h| format!("HSC{} {}k/{}k", h.channel, h.max_hz_single / 1000, h.max_hz_ab / 1000))
-                .collect();
-            vec![
-                m.name.to_string(),
-                format!("{}/{}/{}", m.di, m.dout, m.dio),
-                format!("{}/{}", m.ai, m.ao),
-                format!(
-                    "I{} Q{} M{} V{} AI{} AQ{}",
-                    m.i_bytes, m.q_bytes, m.m_bytes, m.v_bytes, m.ai_bytes, m.aq_bytes
-                ),
-                if hsc.is_empty() { "-".into() } else { hsc.join(", ") },
-                if pto.is_empty() { "none (relay outputs)".into() } else { pto.join(", ") },
-                m.discrepancies
-                    .iter()
-                    .map(|d| format!("{}: chose {}; {}", d.what, d.chosen, d.other))
-                    .collect::<Vec<_>>()
-                    .join("; "),
-            ]
-        })
-        .collect();
-    Outcome::new("models")
-        .table(
-            &["model", "DI/DO/DIO", "AI/AO", "area bytes", "HSC (1-phase/AB)", "pulse outputs", "manual disagreements"],
-            rows,
-        )
-        .with("models", catalog::MODELS)
 }
 
 #[cfg(test)]

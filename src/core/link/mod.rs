@@ -1,0 +1,5 @@
+//! Transports, apart from codecs: pseudo-terminals (the simulators serve serial protocols on
+//! them), serial ports, TCP. Drivers take any byte stream, so the same driver code runs on a
+//! real port, a pty served by the simulator, or an in-memory pipe in tests.
+
+pub mod pty;
