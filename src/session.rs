@@ -6,7 +6,7 @@
 //! there.
 
 use crate::core::url::DeviceUrl;
-use crate::core::{Clock, DataType, Device, Error, ErrorKind, Operand, Result, Value};
+use crate::core::{Clock, DataType, Device, Error, Operand, Result, Value};
 use serde::Serialize;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
@@ -196,18 +196,13 @@ impl Session {
         for it in items {
             let target = self.resolve(&it.operand).map_err(|e| e.shift(it.column))?;
             let entry = &self.devices[target.device];
-            let lit = crate::core::literal::parse_literal(&it.value).map_err(|e| {
-                Error::new(ErrorKind::Value, e.message)
-                    .column(it.value_column + e.column)
-                    .operand(it.operand.trim())
-                    .device(&entry.name)
-            })?;
+            let space = entry.device.operands();
             for op in &target.ops {
-                let v = lit.fit(op.dtype, op.bits as u32).map_err(|m| {
-                    Error::new(ErrorKind::Value, m)
-                        .operand(entry.device.operands().name(op))
-                        .device(&entry.name)
-                        .column(it.value_column)
+                let v = space.value(op, &it.value).map_err(|e| {
+                    let col = it.value_column + e.column.unwrap_or(0);
+                    let mut e = e.operand(space.name(op)).device(&entry.name);
+                    e.column = Some(col);
+                    e
                 })?;
                 plan.push((target.device, *op, v));
             }
@@ -231,6 +226,25 @@ impl Session {
             }
         }
         Ok(out)
+    }
+
+    /// Writes numeric values (from Lua or a typed helper) to one device, in order, after
+    /// checking every value against its operand; writes nothing if any is bad.
+    pub fn write_values(&mut self, device: usize, items: &[(Operand, Value)]) -> Result<()> {
+        let entry = &mut self.devices[device];
+        let space = entry.device.operands();
+        let mut checked = Vec::with_capacity(items.len());
+        for (op, v) in items {
+            let v = space.check(op, *v).map_err(|e| e.operand(space.name(op)).device(&entry.name))?;
+            checked.push((*op, v));
+        }
+        entry.device.write(&checked).map_err(|e| e.device(&entry.name))
+    }
+
+    /// Reads parsed operands from one device.
+    pub fn read_values(&mut self, device: usize, ops: &[Operand]) -> Result<Vec<Value>> {
+        let entry = &mut self.devices[device];
+        entry.device.read(ops).map_err(|e| e.device(&entry.name))
     }
 
     /// Raises the interrupt flag (Ctrl-C); waits and scripts check it.
@@ -278,6 +292,15 @@ mod tests {
         assert_eq!(e.operand.as_deref(), Some("VB2"));
         let r = s.get(&["VW0", "VW4"]).unwrap();
         assert!(r.iter().all(|(_, r)| r.value == Value::Int(0)));
+    }
+
+    #[test]
+    fn numeric_writes_are_checked() {
+        let mut s = session();
+        let t = s.resolve("VB0").unwrap();
+        assert!(s.write_values(t.device, &[(t.ops[0], Value::Int(256))]).is_err());
+        s.write_values(t.device, &[(t.ops[0], Value::Int(255))]).unwrap();
+        assert_eq!(s.read_values(t.device, &t.ops).unwrap(), vec![Value::Int(255)]);
     }
 
     #[test]

@@ -6,8 +6,9 @@
 //! of family types (a new family is a new folder, not a change here) and keeps batch
 //! reads cheap: an operand is 16 bytes, parsed once.
 
-use super::error::Result;
-use super::value::DataType;
+use super::error::{Error, ErrorKind, Result};
+use super::literal::parse_literal;
+use super::value::{DataType, Value};
 
 /// A parsed, validated operand of some device family.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -42,4 +43,16 @@ pub trait OperandSpace: Send + Sync {
     fn help(&self, text: &str) -> Result<String>;
     /// Candidates that start with `prefix` (case-insensitive), for completion.
     fn complete(&self, prefix: &str) -> Vec<Candidate>;
+    /// Parses the value text of `set OP=VALUE` for this operand and checks that it fits.
+    /// The default reads an IEC literal; a family overrides it to accept its own value
+    /// syntax (e.g. a servo's `300rpm`). Errors carry a column within `text`.
+    fn value(&self, op: &Operand, text: &str) -> Result<Value> {
+        let lit = parse_literal(text).map_err(|e| Error::new(ErrorKind::Value, e.message).column(e.column))?;
+        lit.fit(op.dtype, op.bits as u32).map_err(|m| Error::new(ErrorKind::Value, m))
+    }
+    /// Checks a numeric value (from Lua or a typed helper) against the operand.
+    fn check(&self, op: &Operand, v: Value) -> Result<Value> {
+        let lit = super::literal::Literal { value: v, declared: None, pattern: false, text: v.to_string() };
+        lit.fit(op.dtype, op.bits as u32).map_err(|m| Error::new(ErrorKind::Value, m))
+    }
 }
