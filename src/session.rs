@@ -264,6 +264,7 @@ impl Session {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::core::ErrorKind;
 
     fn session() -> Session {
         let mut s = Session::new(Clock::stepped());
