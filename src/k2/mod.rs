@@ -1,6 +1,7 @@
 //! Everything about the Kinco K2 PLC family in one room: the model catalogue, the operand
 //! grammar, SM register tables, the memory image and the simulator.
 
+pub mod agent;
 pub mod catalog;
 pub mod memory;
 pub mod operand;

@@ -1,0 +1,444 @@
+//! The helper mailbox protocol (issue 5): how plcsh reaches SM registers and PLC
+//! instructions on a real K2, whose Modbus map covers only I, Q, M, AI, AQ and V
+//! (`../shared/spec/k2.md` §3). A small PLC-side helper program (`lib/k2_agent.il`) runs
+//! every scan and executes commands that plcsh leaves in a mailbox in V memory.
+//! Pure: this module only lays out and interprets the mailbox's words; the simulator's
+//! helper ([`execute_scan`]) and the wire driver's client use it from both sides.
+//!
+//! Layout (byte offsets from the mailbox base, default VB3400 — below the E2PROM backup
+//! area VB3648, §2.2.8; every field is a V word, S7 big-endian):
+//!
+//! | offset | field | written by |
+//! |---|---|---|
+//! | +0 | signature 16#4B41 ("KA") | helper, every scan |
+//! | +2 | protocol version | helper, every scan |
+//! | +4 | heartbeat (+1 per scan) | helper |
+//! | +6 | reply length in bytes | helper |
+//! | +8, +10, +12 | ack 0: sequence, token, result (latest) | helper |
+//! | +14 … +30 | acks 1–3 (older, shifted down on each execution) | helper |
+//! | +32 … +95 | reply data (64 bytes) of ack 0 | helper |
+//! | +96 | request sequence | client |
+//! | +98 | request token | client |
+//! | +100 | command | client |
+//! | +102, +104, +106 | arguments 1–3 | client |
+//! | +108 … +171 | request data (64 bytes) | client |
+//!
+//! A client writes the whole request (+96…) in ONE Modbus write and reads acks and reply
+//! (+0…+95) in ONE read; the PLC serves a Modbus request between scans, so each is atomic
+//! with respect to the helper. The helper executes when request sequence ≠ ack-0 sequence,
+//! then records (sequence, token, result), newest first. Two clients that race with the same
+//! sequence number are told apart by their tokens: the loser finds another token under its
+//! sequence, knows its command never ran (the helper runs a sequence number once), and
+//! retries; the four-entry ack history lets a client confirm its command even when another
+//! client's command ran right after it.
+
+use std::fmt;
+
+/// Mailbox base when the device does not say (`agent=VB3400`).
+pub const DEFAULT_BASE: u32 = 3400;
+/// Bytes the mailbox occupies (VB3400…VB3571 by default).
+pub const SIZE: u32 = 172;
+pub const SIGNATURE: u16 = 0x4B41;
+pub const VERSION: u16 = 1;
+/// Largest data block of one command (SM bytes read or written at once).
+pub const DATA_MAX: usize = 64;
+/// Number of acknowledgements kept.
+pub const ACKS: usize = 4;
+
+pub const OFF_SIGNATURE: u32 = 0;
+pub const OFF_VERSION: u32 = 2;
+pub const OFF_HEARTBEAT: u32 = 4;
+pub const OFF_REPLY_LEN: u32 = 6;
+pub const OFF_ACKS: u32 = 8;
+pub const OFF_REPLY: u32 = 32;
+pub const OFF_REQUEST: u32 = 96;
+pub const OFF_REQ_DATA: u32 = 108;
+/// Words a client reads to see acks and reply in one request.
+pub const STATUS_WORDS: u16 = (OFF_REQUEST / 2) as u16;
+/// Words a client writes for one request (header and full data block).
+pub const REQUEST_WORDS: u16 = ((SIZE - OFF_REQUEST) / 2) as u16;
+
+/// Command codes.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Command {
+    /// Write `data` to SM bytes from `start`.
+    SmWrite { start: u16, data: Vec<u8> },
+    /// Read `len` SM bytes from `start`.
+    SmRead { start: u16, len: u16 },
+    /// Execute PLS for a pulse output channel.
+    Pls(u8),
+    /// Execute HDEF (counter, mode).
+    Hdef { hsc: u8, mode: u8 },
+    /// Execute HSC for a counter.
+    Hsc(u8),
+    /// Emergency stop of a position channel (PSTOP).
+    Pstop(u8),
+    /// SET_RTC with an 8-byte BCD buffer.
+    SetRtc([u8; 8]),
+    /// READ_RTC into an 8-byte BCD buffer.
+    ReadRtc,
+    /// Does nothing; proves the helper runs.
+    Ping,
+}
+
+impl Command {
+    pub fn code(&self) -> u16 {
+        match self {
+            Command::SmWrite { .. } => 1,
+            Command::SmRead { .. } => 2,
+            Command::Pls(_) => 3,
+            Command::Hdef { .. } => 4,
+            Command::Hsc(_) => 5,
+            Command::Pstop(_) => 6,
+            Command::SetRtc(_) => 7,
+            Command::ReadRtc => 8,
+            Command::Ping => 9,
+        }
+    }
+
+    /// (args, data) of the request block.
+    fn args(&self) -> ([u16; 3], Vec<u8>) {
+        match self {
+            Command::SmWrite { start, data } => ([*start, data.len() as u16, 0], data.clone()),
+            Command::SmRead { start, len } => ([*start, *len, 0], Vec::new()),
+            Command::Pls(n) | Command::Hsc(n) | Command::Pstop(n) => ([*n as u16, 0, 0], Vec::new()),
+            Command::Hdef { hsc, mode } => ([*hsc as u16, *mode as u16, 0], Vec::new()),
+            Command::SetRtc(b) => ([0, 8, 0], b.to_vec()),
+            Command::ReadRtc | Command::Ping => ([0, 0, 0], Vec::new()),
+        }
+    }
+
+    /// Decodes a request block (the helper's side).
+    pub fn decode(code: u16, args: [u16; 3], data: &[u8]) -> Result<Command, ResultCode> {
+        let len = args[1] as usize;
+        Ok(match code {
+            1 => {
+                if len == 0 || len > DATA_MAX {
+                    return Err(ResultCode::BadRange);
+                }
+                Command::SmWrite { start: args[0], data: data[..len].to_vec() }
+            }
+            2 => {
+                if len == 0 || len > DATA_MAX {
+                    return Err(ResultCode::BadRange);
+                }
+                Command::SmRead { start: args[0], len: args[1] }
+            }
+            3 => Command::Pls(channel(args[0])?),
+            4 => {
+                Command::Hdef { hsc: channel(args[0])?, mode: u8::try_from(args[1]).map_err(|_| ResultCode::BadMode)? }
+            }
+            5 => Command::Hsc(channel(args[0])?),
+            6 => Command::Pstop(channel(args[0])?),
+            7 => {
+                let mut b = [0u8; 8];
+                b.copy_from_slice(&data[..8]);
+                Command::SetRtc(b)
+            }
+            8 => Command::ReadRtc,
+            9 => Command::Ping,
+            _ => return Err(ResultCode::UnknownCommand),
+        })
+    }
+}
+
+fn channel(v: u16) -> Result<u8, ResultCode> {
+    if v < 4 {
+        Ok(v as u8)
+    } else {
+        Err(ResultCode::BadChannel)
+    }
+}
+
+/// The helper's result codes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ResultCode {
+    Ok,
+    UnknownCommand,
+    BadRange,
+    ReadOnly,
+    BadChannel,
+    BadMode,
+    InstructionFailed,
+    BadClock,
+    Other(u16),
+}
+
+impl ResultCode {
+    pub fn code(self) -> u16 {
+        match self {
+            ResultCode::Ok => 0,
+            ResultCode::UnknownCommand => 1,
+            ResultCode::BadRange => 2,
+            ResultCode::ReadOnly => 3,
+            ResultCode::BadChannel => 4,
+            ResultCode::BadMode => 5,
+            ResultCode::InstructionFailed => 6,
+            ResultCode::BadClock => 7,
+            ResultCode::Other(c) => c,
+        }
+    }
+
+    pub fn from_code(c: u16) -> ResultCode {
+        match c {
+            0 => ResultCode::Ok,
+            1 => ResultCode::UnknownCommand,
+            2 => ResultCode::BadRange,
+            3 => ResultCode::ReadOnly,
+            4 => ResultCode::BadChannel,
+            5 => ResultCode::BadMode,
+            6 => ResultCode::InstructionFailed,
+            7 => ResultCode::BadClock,
+            c => ResultCode::Other(c),
+        }
+    }
+}
+
+impl fmt::Display for ResultCode {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            ResultCode::Ok => "done",
+            ResultCode::UnknownCommand => "the helper does not know this command (update lib/k2_agent.il)",
+            ResultCode::BadRange => "SM range outside SMB0…SMB549 or longer than 64 bytes",
+            ResultCode::ReadOnly => "SMB0 holds the system status bits and is read-only",
+            ResultCode::BadChannel => "no such channel on this PLC",
+            ResultCode::BadMode => "the counter does not have this mode",
+            ResultCode::InstructionFailed => "the PLC instruction reported an error",
+            ResultCode::BadClock => "the date or time is not valid",
+            ResultCode::Other(_) => "unknown result code",
+        })?;
+        if let ResultCode::Other(c) = self {
+            write!(f, " {c}")?;
+        }
+        Ok(())
+    }
+}
+
+/// The words of a request block (written at base + OFF_REQUEST in one Modbus write).
+pub fn request_words(seq: u16, token: u16, cmd: &Command) -> Vec<u16> {
+    let (args, data) = cmd.args();
+    let mut w = vec![seq, token, cmd.code(), args[0], args[1], args[2]];
+    let mut bytes = data;
+    bytes.resize(DATA_MAX, 0);
+    w.extend(bytes.chunks(2).map(|c| u16::from_be_bytes([c[0], c[1]])));
+    w
+}
+
+/// One acknowledgement.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Ack {
+    pub seq: u16,
+    pub token: u16,
+    pub result: ResultCode,
+}
+
+/// What a client sees in one status read (words from base + 0).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Status {
+    pub signature: u16,
+    pub version: u16,
+    pub heartbeat: u16,
+    pub acks: [Ack; ACKS],
+    /// Reply data of `acks[0]`.
+    pub reply: Vec<u8>,
+}
+
+impl Status {
+    /// Parses the words read from base + 0 (at least STATUS_WORDS of them).
+    pub fn parse(words: &[u16]) -> Status {
+        let ack = |i: usize| {
+            let o = (OFF_ACKS / 2) as usize + 3 * i;
+            Ack { seq: words[o], token: words[o + 1], result: ResultCode::from_code(words[o + 2]) }
+        };
+        let len = (words[(OFF_REPLY_LEN / 2) as usize] as usize).min(DATA_MAX);
+        let reply: Vec<u8> = words[(OFF_REPLY / 2) as usize..(OFF_REQUEST / 2) as usize]
+            .iter()
+            .flat_map(|w| w.to_be_bytes())
+            .take(len)
+            .collect();
+        Status {
+            signature: words[0],
+            version: words[1],
+            heartbeat: words[2],
+            acks: [ack(0), ack(1), ack(2), ack(3)],
+            reply,
+        }
+    }
+
+    /// The acknowledgement of (seq, token), if the history still has it.
+    pub fn find(&self, seq: u16, token: u16) -> Option<(usize, Ack)> {
+        self.acks.iter().enumerate().find(|(_, a)| a.seq == seq && a.token == token).map(|(i, a)| (i, *a))
+    }
+}
+
+/// The next sequence number after `seq` (never 0, so a cleared mailbox is never "acked").
+pub fn next_seq(seq: u16) -> u16 {
+    match seq.wrapping_add(1) {
+        0 => 1,
+        s => s,
+    }
+}
+
+/// Byte access to the V area the helper runs in (the simulator's memory, or a test buffer).
+pub trait VMemory {
+    fn v(&self) -> &[u8];
+    fn v_mut(&mut self) -> &mut [u8];
+}
+
+fn word(v: &[u8], at: usize) -> u16 {
+    u16::from_be_bytes([v[at], v[at + 1]])
+}
+
+fn put(v: &mut [u8], at: usize, w: u16) {
+    v[at..at + 2].copy_from_slice(&w.to_be_bytes());
+}
+
+/// One scan of the helper program, as `lib/k2_agent.il` does it: refresh signature,
+/// version and heartbeat; if a new request is waiting, run it through `exec` and record
+/// the acknowledgement. `exec` returns reply data or a result code.
+pub fn execute_scan(
+    mem: &mut dyn VMemory,
+    base: u32,
+    exec: &mut dyn FnMut(Command) -> Result<Vec<u8>, ResultCode>,
+) -> Option<Ack> {
+    let b = base as usize;
+    let v = mem.v_mut();
+    put(v, b, SIGNATURE);
+    put(v, b + 2, VERSION);
+    let hb = word(v, b + 4).wrapping_add(1);
+    put(v, b + 4, hb);
+    let req = b + OFF_REQUEST as usize;
+    let seq = word(v, req);
+    let ack0 = word(v, b + OFF_ACKS as usize);
+    if seq == ack0 {
+        return None;
+    }
+    let token = word(v, req + 2);
+    let code = word(v, req + 4);
+    let args = [word(v, req + 6), word(v, req + 8), word(v, req + 10)];
+    let data: Vec<u8> = v[b + OFF_REQ_DATA as usize..b + SIZE as usize].to_vec();
+    let (result, reply) = match Command::decode(code, args, &data) {
+        Ok(cmd) => match exec(cmd) {
+            Ok(r) => (ResultCode::Ok, r),
+            Err(rc) => (rc, Vec::new()),
+        },
+        Err(rc) => (rc, Vec::new()),
+    };
+    let v = mem.v_mut();
+    // Shift the history down (ack 3 falls off), newest first.
+    let acks = b + OFF_ACKS as usize;
+    v.copy_within(acks..acks + 18, acks + 6);
+    let mut r = reply;
+    r.truncate(DATA_MAX);
+    put(v, b + OFF_REPLY_LEN as usize, r.len() as u16);
+    let rep = b + OFF_REPLY as usize;
+    v[rep..rep + r.len()].copy_from_slice(&r);
+    v[rep + r.len()..rep + DATA_MAX].fill(0);
+    put(v, acks + 2, token);
+    put(v, acks + 4, result.code());
+    put(v, acks, seq);
+    Some(Ack { seq, token, result })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    struct Buf(Vec<u8>);
+    impl VMemory for Buf {
+        fn v(&self) -> &[u8] {
+            &self.0
+        }
+        fn v_mut(&mut self) -> &mut [u8] {
+            &mut self.0
+        }
+    }
+
+    fn write_request(m: &mut Buf, seq: u16, token: u16, cmd: &Command) {
+        for (i, w) in request_words(seq, token, cmd).iter().enumerate() {
+            put(&mut m.0, (DEFAULT_BASE + OFF_REQUEST) as usize + 2 * i, *w);
+        }
+    }
+
+    fn status(m: &Buf) -> Status {
+        let b = DEFAULT_BASE as usize;
+        let words: Vec<u16> = (0..STATUS_WORDS as usize).map(|i| word(&m.0, b + 2 * i)).collect();
+        Status::parse(&words)
+    }
+
+    #[test]
+    fn layout_fits_below_the_backup_area_and_in_one_request() {
+        const { assert!(DEFAULT_BASE + SIZE <= crate::k2::catalog::EEPROM_FIRST) };
+        // One FC03 read and one FC16 write each (k2.md §3: at most 100 words per request).
+        const { assert!(STATUS_WORDS <= 100 && REQUEST_WORDS <= 100) };
+        assert_eq!(request_words(1, 2, &Command::Ping).len(), REQUEST_WORDS as usize);
+    }
+
+    #[test]
+    fn a_scan_executes_a_new_request_once() {
+        let mut m = Buf(vec![0; 4096]);
+        let mut ran = Vec::new();
+        let cmd = Command::SmWrite { start: 67, data: vec![0x85] };
+        write_request(&mut m, 1, 0xBEEF, &cmd);
+        let ack = execute_scan(&mut m, DEFAULT_BASE, &mut |c| {
+            ran.push(c);
+            Ok(Vec::new())
+        });
+        assert_eq!(ack, Some(Ack { seq: 1, token: 0xBEEF, result: ResultCode::Ok }));
+        assert!(execute_scan(&mut m, DEFAULT_BASE, &mut |_| panic!("ran twice")).is_none());
+        assert_eq!(ran, vec![cmd]);
+        let s = status(&m);
+        assert_eq!((s.signature, s.version, s.heartbeat), (SIGNATURE, VERSION, 2));
+        assert_eq!(s.find(1, 0xBEEF).unwrap().1.result, ResultCode::Ok);
+    }
+
+    #[test]
+    fn reply_data_and_history() {
+        let mut m = Buf(vec![0; 4096]);
+        write_request(&mut m, 1, 7, &Command::SmRead { start: 66, len: 3 });
+        execute_scan(&mut m, DEFAULT_BASE, &mut |_| Ok(vec![0x80, 1, 2]));
+        assert_eq!(status(&m).reply, vec![0x80, 1, 2]);
+        write_request(&mut m, 2, 9, &Command::Pls(0));
+        execute_scan(&mut m, DEFAULT_BASE, &mut |_| Ok(Vec::new()));
+        let s = status(&m);
+        assert_eq!(s.acks[0].seq, 2);
+        assert_eq!(s.find(1, 7).map(|x| x.0), Some(1), "the older ack is still found");
+        assert!(s.reply.is_empty());
+    }
+
+    #[test]
+    fn a_racing_client_is_told_apart_by_its_token() {
+        let mut m = Buf(vec![0; 4096]);
+        // A and B both saw ack 0 and chose sequence 1; B's write landed last.
+        write_request(&mut m, 1, 0xA, &Command::Pls(0));
+        write_request(&mut m, 1, 0xB, &Command::Pls(1));
+        let mut ran = Vec::new();
+        execute_scan(&mut m, DEFAULT_BASE, &mut |c| {
+            ran.push(c);
+            Ok(vec![])
+        });
+        let s = status(&m);
+        assert!(s.find(1, 0xA).is_none(), "A learns its command did not run");
+        assert!(s.find(1, 0xB).is_some());
+        assert_eq!(ran, vec![Command::Pls(1)], "only B's command ran, intact");
+    }
+
+    #[test]
+    fn bad_requests_get_result_codes_not_execution() {
+        let mut m = Buf(vec![0; 4096]);
+        write_request(&mut m, 1, 1, &Command::Pls(9));
+        let a = execute_scan(&mut m, DEFAULT_BASE, &mut |_| panic!("must not run")).unwrap();
+        assert_eq!(a.result, ResultCode::BadChannel);
+        put(&mut m.0, (DEFAULT_BASE + OFF_REQUEST + 4) as usize, 77);
+        put(&mut m.0, (DEFAULT_BASE + OFF_REQUEST) as usize, 2);
+        let a = execute_scan(&mut m, DEFAULT_BASE, &mut |_| panic!("must not run")).unwrap();
+        assert_eq!(a.result, ResultCode::UnknownCommand);
+        assert!(ResultCode::BadRange.to_string().contains("64 bytes"));
+    }
+
+    #[test]
+    fn sequence_numbers_skip_zero() {
+        assert_eq!(next_seq(u16::MAX), 1);
+        assert_eq!(next_seq(5), 6);
+    }
+}
