@@ -36,12 +36,16 @@ pub struct Cli {
     /// Model of the default simulated PLC.
     #[arg(long, default_value = catalog::DEFAULT_MODEL, global = true)]
     pub model: String,
-    /// Add a device: NAME=URL (or just URL, which replaces `plc`). Repeatable.
+    /// Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made
+    /// current) or a bare URL (which replaces `plc`). Repeatable.
     #[arg(long = "device", short = 'd', value_name = "NAME=URL", global = true)]
     pub devices: Vec<String>,
     /// Simulator time: follow the wall clock, or move only when stepped.
     #[arg(long, value_enum, default_value = "wall", global = true)]
     pub time: TimeMode,
+    /// Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).
+    #[arg(long, value_name = "FILE", global = true)]
+    pub config: Option<std::path::PathBuf>,
     #[command(subcommand)]
     pub sub: Option<Sub>,
 }
@@ -50,10 +54,15 @@ pub struct Cli {
 pub enum Sub {
     /// List the K2 model catalogue (areas, I/O, counters, pulse outputs, manual disagreements).
     Models,
+    /// List open devices and the device profiles (devices.toml), with problems in that file.
+    Devices,
 }
 
-/// Splits `NAME=URL` (or a bare URL, named `plc`).
+/// Splits `NAME=URL` (or a bare URL, named `plc`; or a bare profile name, named after itself).
 pub fn split_device_arg(arg: &str) -> (String, String) {
+    if !arg.contains(['=', ':']) {
+        return (arg.to_string(), arg.to_string());
+    }
     if let Some((name, url)) = arg.split_once('=') {
         if !name.is_empty()
             && !name.contains(':')
@@ -72,12 +81,19 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
         TimeMode::Stepped => Clock::stepped(),
     };
     let mut s = Session::new(clock);
+    if let Some(path) = cli.config.clone().or_else(crate::profile::default_path) {
+        s.profiles = crate::profile::Profiles::load(&path);
+    }
     s.open("plc", &format!("sim:{}", cli.model))?;
+    let mut current = "plc".to_string();
     for d in &cli.devices {
         let (name, url) = split_device_arg(d);
         s.open(&name, &url)?;
+        if name == url {
+            current = name;
+        }
     }
-    s.use_device("plc")?;
+    s.use_device(&current)?;
     Ok(s)
 }
 
@@ -103,6 +119,9 @@ pub fn main() -> i32 {
     let _ =
         signal_hook::flag::register_conditional_shutdown(signal_hook::consts::SIGINT, 130, session.interrupt.clone());
     let _ = signal_hook::flag::register(signal_hook::consts::SIGINT, session.interrupt.clone());
+    for p in &session.profiles.problems {
+        eprintln!("plcsh: warning: {p}");
+    }
     let mut shell = Shell::new(session, style);
     shell.verbose = cli.verbose > 0;
 
@@ -113,6 +132,7 @@ pub fn main() -> i32 {
                 let _ = output::write_outcome(&mut out, style, &o);
                 0
             }
+            Sub::Devices => i32::from(!shell.run_line("devices", &mut out)),
         };
     }
     if let Some(cmds) = &cli.command {
@@ -139,5 +159,7 @@ mod tests {
     fn device_args_with_and_without_names() {
         assert_eq!(split_device_arg("press=sim:K209EA-50DX"), ("press".into(), "sim:K209EA-50DX".into()));
         assert_eq!(split_device_arg("tcp://127.0.0.1:502?unit=1"), ("plc".into(), "tcp://127.0.0.1:502?unit=1".into()));
+        assert_eq!(split_device_arg("press1"), ("press1".into(), "press1".into()), "a bare profile name");
+        assert_eq!(split_device_arg("p=press1"), ("p".into(), "press1".into()));
     }
 }

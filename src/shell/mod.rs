@@ -4,6 +4,8 @@
 //! (`commands::COMMANDS`), one file per command family, each a thin call into the session.
 
 pub mod commands;
+pub mod complete;
+pub mod helper;
 pub mod lex;
 pub mod repl;
 

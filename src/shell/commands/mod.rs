@@ -4,6 +4,7 @@
 mod device;
 mod help;
 mod io;
+pub mod profiles;
 mod sim;
 
 use super::{Args, Shell};
