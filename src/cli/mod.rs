@@ -3,6 +3,7 @@
 //! Exit status: 0 when every command succeeded, 1 when any failed, 2 for a usage error.
 //! One file per subcommand (`models.rs` …), each a thin call into the library.
 
+pub mod completions;
 mod models;
 
 use crate::core::{Clock, ErrorKind};
@@ -56,6 +57,15 @@ pub enum Sub {
     Models,
     /// List open devices and the device profiles (devices.toml), with problems in that file.
     Devices,
+    /// Print a shell completion script (bash, zsh, fish, powershell), or write them all.
+    Completions {
+        /// The shell to print the script for.
+        #[arg(value_enum)]
+        shell: Option<clap_complete::Shell>,
+        /// Write every script into DIR (plcsh.bash, _plcsh, plcsh.fish, _plcsh.ps1).
+        #[arg(long, value_name = "DIR")]
+        write: Option<std::path::PathBuf>,
+    },
 }
 
 /// Splits `NAME=URL` (or a bare URL, named `plc`; or a bare profile name, named after itself).
@@ -132,6 +142,7 @@ pub fn main() -> i32 {
                 let _ = output::write_outcome(&mut out, style, &o);
                 0
             }
+            Sub::Completions { shell, write } => completions::run(*shell, write.as_deref(), &mut out),
             Sub::Devices => i32::from(!shell.run_line("devices", &mut out)),
         };
     }
