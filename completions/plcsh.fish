@@ -31,7 +31,7 @@ complete -c plcsh -n "__fish_plcsh_needs_command" -l time -d 'Simulator time: fo
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_needs_command" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
 complete -c plcsh -n "__fish_plcsh_needs_command" -l json -d 'Print one JSON object per command result'
-complete -c plcsh -n "__fish_plcsh_needs_command" -s v -l verbose -d 'Show more (request counts; -vv frames)'
+complete -c plcsh -n "__fish_plcsh_needs_command" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_needs_command" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c plcsh -n "__fish_plcsh_needs_command" -s V -l version -d 'Print version'
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "models" -d 'List the K2 model catalogue (areas, I/O, counters, pulse outputs, manual disagreements)'
@@ -44,7 +44,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l time -d 'Simulato
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l json -d 'Print one JSON object per command result'
-complete -c plcsh -n "__fish_plcsh_using_subcommand models" -s v -l verbose -d 'Show more (request counts; -vv frames)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand models" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
@@ -52,7 +52,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l time -d 'Simulat
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l json -d 'Print one JSON object per command result'
-complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -s v -l verbose -d 'Show more (request counts; -vv frames)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l write -d 'Write every script into DIR (plcsh.bash, _plcsh, plcsh.fish, _plcsh.ps1)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l model -d 'Model of the default simulated PLC' -r
@@ -61,7 +61,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l time -d 'Sim
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l json -d 'Print one JSON object per command result'
-complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -s v -l verbose -d 'Show more (request counts; -vv frames)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices completions help" -f -a "models" -d 'List the K2 model catalogue (areas, I/O, counters, pulse outputs, manual disagreements)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices completions help" -f -a "devices" -d 'List open devices and the device profiles (devices.toml), with problems in that file'

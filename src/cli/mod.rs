@@ -31,7 +31,7 @@ pub struct Cli {
     /// Print one JSON object per command result.
     #[arg(long, global = true)]
     pub json: bool,
-    /// Show more (request counts; -vv frames).
+    /// Show more: each frame sent and received in hex with timing, request counts, sample rates.
     #[arg(short, long, action = clap::ArgAction::Count, global = true)]
     pub verbose: u8,
     /// Model of the default simulated PLC.
@@ -134,6 +134,10 @@ pub fn main() -> i32 {
     }
     let mut shell = Shell::new(session, style);
     shell.verbose = cli.verbose > 0;
+    if cli.verbose > 0 {
+        // Every driver reports its frames to core::trace; -v shows them on stderr in hex with timing.
+        crate::core::trace::set_sink(Some(std::sync::Arc::new(crate::core::trace::StderrSink)));
+    }
 
     if let Some(sub) = &cli.sub {
         return match sub {

@@ -6,6 +6,8 @@ mod help;
 mod io;
 pub mod profiles;
 mod sim;
+mod trend;
+mod watch;
 
 use super::{Args, Shell};
 use crate::core::Result;
@@ -32,6 +34,9 @@ pub const COMMANDS: &[CommandSpec] = &[
     device::CONNECT,
     device::CLOSE,
     sim::SIM,
+    watch::WATCH,
+    trend::TRACE,
+    trend::PLOT,
     help::HELP,
     help::QUIT,
 ];
