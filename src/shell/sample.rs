@@ -165,7 +165,8 @@ pub fn run(
     let mut stats = Stats::default();
     let mut k: u64 = 0;
     loop {
-        let t = clock.now().saturating_sub(start);
+        // The first sample defines time zero; later ones carry their measured clock time.
+        let t = if k == 0 { Duration::ZERO } else { clock.now().saturating_sub(start) };
         let readings = session.get(texts)?.into_iter().map(|(_, r)| r).collect();
         on(&Sample { index: k, t, readings })?;
         k += 1;
