@@ -7,6 +7,8 @@ pub mod cli;
 pub mod core;
 pub mod k2;
 pub mod output;
+pub mod plot;
+pub mod profile;
 pub mod servo;
 pub mod session;
 pub mod shell;

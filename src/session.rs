@@ -28,6 +28,8 @@ pub struct Entry {
     pub name: String,
     pub url: String,
     pub device: Box<dyn Device>,
+    /// Write rules from the device's profile (`read_only`, `allow`), checked before every write.
+    pub guard: Option<crate::profile::Guard>,
 }
 
 /// How `set` items arrive: operand text and value text, with their columns in the line.
@@ -51,7 +53,13 @@ pub struct Session {
     current: usize,
     pub clock: Clock,
     pub interrupt: Arc<AtomicBool>,
+    /// Device profiles (`connect press1`), from the profile file.
+    pub profiles: crate::profile::Profiles,
 }
+
+/// URL schemes with what they open, for completion and hints. Keep in step with [`open_url`]
+/// (a test checks that every scheme listed here is one `open_url` knows).
+pub const SCHEMES: &[(&str, &str)] = &[("sim:", "in-process K2 simulator: sim:MODEL")];
 
 /// Opens a device from its URL. Every scheme plcsh knows is listed here.
 pub fn open_url(url: &str, clock: &Clock) -> Result<Box<dyn Device>> {
@@ -71,14 +79,23 @@ pub fn open_url(url: &str, clock: &Clock) -> Result<Box<dyn Device>> {
 impl Session {
     /// An empty session with the given clock.
     pub fn new(clock: Clock) -> Session {
-        Session { devices: Vec::new(), current: 0, clock, interrupt: Arc::new(AtomicBool::new(false)) }
+        Session {
+            devices: Vec::new(),
+            current: 0,
+            clock,
+            interrupt: Arc::new(AtomicBool::new(false)),
+            profiles: Default::default(),
+        }
     }
 
     /// Opens `url` under `name` (replacing a device of that name) and makes it current if
-    /// it is the first.
+    /// it is the first. A `url` without a scheme is a profile name (`crate::profile`).
     pub fn open(&mut self, name: &str, url: &str) -> Result<()> {
         if name.is_empty() || !name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-') {
             return Err(Error::usage(format!("`{name}` is not a device name (letters, digits, _ and -)")));
+        }
+        if !url.contains(':') {
+            return crate::profile::open(self, name, url);
         }
         let device = open_url(url, &self.clock).map_err(|e| e.device(name))?;
         self.add(name, url, device);
@@ -87,7 +104,7 @@ impl Session {
 
     /// Adds an already-open device.
     pub fn add(&mut self, name: &str, url: &str, device: Box<dyn Device>) {
-        let entry = Entry { name: name.to_string(), url: url.to_string(), device };
+        let entry = Entry { name: name.to_string(), url: url.to_string(), device, guard: None };
         match self.devices.iter().position(|e| e.name == name) {
             Some(i) => self.devices[i] = entry,
             None => self.devices.push(entry),
@@ -160,6 +177,15 @@ impl Session {
         Ok(Target { device, ops })
     }
 
+    /// Refuses a write the device's profile does not allow (before anything is sent).
+    pub fn check_write(&self, device: usize, op: &Operand) -> Result<()> {
+        let e = &self.devices[device];
+        match &e.guard {
+            Some(g) => g.check(e.device.operands(), op).map_err(|err| err.device(&e.name)),
+            None => Ok(()),
+        }
+    }
+
     pub fn name_of(&self, device: usize, op: &Operand) -> String {
         self.devices[device].device.operands().name(op)
     }
@@ -204,6 +230,7 @@ impl Session {
                     e.column = Some(col);
                     e
                 })?;
+                self.check_write(target.device, op).map_err(|e| e.column(it.column))?;
                 plan.push((target.device, *op, v));
             }
         }
@@ -231,6 +258,9 @@ impl Session {
     /// Writes numeric values (from Lua or a typed helper) to one device, in order, after
     /// checking every value against its operand; writes nothing if any is bad.
     pub fn write_values(&mut self, device: usize, items: &[(Operand, Value)]) -> Result<()> {
+        for (op, _) in items {
+            self.check_write(device, op)?;
+        }
         let entry = &mut self.devices[device];
         let space = entry.device.operands();
         let mut checked = Vec::with_capacity(items.len());
@@ -302,6 +332,15 @@ mod tests {
         assert!(s.write_values(t.device, &[(t.ops[0], Value::Int(256))]).is_err());
         s.write_values(t.device, &[(t.ops[0], Value::Int(255))]).unwrap();
         assert_eq!(s.read_values(t.device, &t.ops).unwrap(), vec![Value::Int(255)]);
+    }
+
+    #[test]
+    fn every_listed_scheme_is_known_to_open_url() {
+        for (scheme, _) in SCHEMES {
+            if let Err(e) = open_url(&format!("{scheme}x"), &Clock::stepped()) {
+                assert!(!e.message.contains("unknown device scheme"), "{scheme}: {}", e.message);
+            }
+        }
     }
 
     #[test]

@@ -3,6 +3,7 @@
 //! Exit status: 0 when every command succeeded, 1 when any failed, 2 for a usage error.
 //! One file per subcommand (`models.rs` …), each a thin call into the library.
 
+pub mod completions;
 mod models;
 
 use crate::core::{Clock, ErrorKind};
@@ -30,18 +31,22 @@ pub struct Cli {
     /// Print one JSON object per command result.
     #[arg(long, global = true)]
     pub json: bool,
-    /// Show more (request counts; -vv frames).
+    /// Show more: each frame sent and received in hex with timing, request counts, sample rates.
     #[arg(short, long, action = clap::ArgAction::Count, global = true)]
     pub verbose: u8,
     /// Model of the default simulated PLC.
     #[arg(long, default_value = catalog::DEFAULT_MODEL, global = true)]
     pub model: String,
-    /// Add a device: NAME=URL (or just URL, which replaces `plc`). Repeatable.
+    /// Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made
+    /// current) or a bare URL (which replaces `plc`). Repeatable.
     #[arg(long = "device", short = 'd', value_name = "NAME=URL", global = true)]
     pub devices: Vec<String>,
     /// Simulator time: follow the wall clock, or move only when stepped.
     #[arg(long, value_enum, default_value = "wall", global = true)]
     pub time: TimeMode,
+    /// Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).
+    #[arg(long, value_name = "FILE", global = true)]
+    pub config: Option<std::path::PathBuf>,
     #[command(subcommand)]
     pub sub: Option<Sub>,
 }
@@ -50,10 +55,24 @@ pub struct Cli {
 pub enum Sub {
     /// List the K2 model catalogue (areas, I/O, counters, pulse outputs, manual disagreements).
     Models,
+    /// List open devices and the device profiles (devices.toml), with problems in that file.
+    Devices,
+    /// Print a shell completion script (bash, zsh, fish, powershell), or write them all.
+    Completions {
+        /// The shell to print the script for.
+        #[arg(value_enum)]
+        shell: Option<clap_complete::Shell>,
+        /// Write every script into DIR (plcsh.bash, _plcsh, plcsh.fish, _plcsh.ps1).
+        #[arg(long, value_name = "DIR")]
+        write: Option<std::path::PathBuf>,
+    },
 }
 
-/// Splits `NAME=URL` (or a bare URL, named `plc`).
+/// Splits `NAME=URL` (or a bare URL, named `plc`; or a bare profile name, named after itself).
 pub fn split_device_arg(arg: &str) -> (String, String) {
+    if !arg.contains(['=', ':']) {
+        return (arg.to_string(), arg.to_string());
+    }
     if let Some((name, url)) = arg.split_once('=') {
         if !name.is_empty()
             && !name.contains(':')
@@ -72,12 +91,19 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
         TimeMode::Stepped => Clock::stepped(),
     };
     let mut s = Session::new(clock);
+    if let Some(path) = cli.config.clone().or_else(crate::profile::default_path) {
+        s.profiles = crate::profile::Profiles::load(&path);
+    }
     s.open("plc", &format!("sim:{}", cli.model))?;
+    let mut current = "plc".to_string();
     for d in &cli.devices {
         let (name, url) = split_device_arg(d);
         s.open(&name, &url)?;
+        if name == url {
+            current = name;
+        }
     }
-    s.use_device("plc")?;
+    s.use_device(&current)?;
     Ok(s)
 }
 
@@ -103,8 +129,15 @@ pub fn main() -> i32 {
     let _ =
         signal_hook::flag::register_conditional_shutdown(signal_hook::consts::SIGINT, 130, session.interrupt.clone());
     let _ = signal_hook::flag::register(signal_hook::consts::SIGINT, session.interrupt.clone());
+    for p in &session.profiles.problems {
+        eprintln!("plcsh: warning: {p}");
+    }
     let mut shell = Shell::new(session, style);
     shell.verbose = cli.verbose > 0;
+    if cli.verbose > 0 {
+        // Every driver reports its frames to core::trace; -v shows them on stderr in hex with timing.
+        crate::core::trace::set_sink(Some(std::sync::Arc::new(crate::core::trace::StderrSink)));
+    }
 
     if let Some(sub) = &cli.sub {
         return match sub {
@@ -113,6 +146,8 @@ pub fn main() -> i32 {
                 let _ = output::write_outcome(&mut out, style, &o);
                 0
             }
+            Sub::Completions { shell, write } => completions::run(*shell, write.as_deref(), &mut out),
+            Sub::Devices => i32::from(!shell.run_line("devices", &mut out)),
         };
     }
     if let Some(cmds) = &cli.command {
@@ -139,5 +174,7 @@ mod tests {
     fn device_args_with_and_without_names() {
         assert_eq!(split_device_arg("press=sim:K209EA-50DX"), ("press".into(), "sim:K209EA-50DX".into()));
         assert_eq!(split_device_arg("tcp://127.0.0.1:502?unit=1"), ("plc".into(), "tcp://127.0.0.1:502?unit=1".into()));
+        assert_eq!(split_device_arg("press1"), ("press1".into(), "press1".into()), "a bare profile name");
+        assert_eq!(split_device_arg("p=press1"), ("p".into(), "press1".into()));
     }
 }

@@ -4,8 +4,12 @@
 //! (`commands::COMMANDS`), one file per command family, each a thin call into the session.
 
 pub mod commands;
+pub mod complete;
+pub mod helper;
 pub mod lex;
+pub mod progress;
 pub mod repl;
+pub mod sample;
 
 use crate::core::{Error, ErrorKind, Result};
 use crate::output::{self, Outcome, Style};
@@ -26,6 +30,8 @@ pub struct Shell {
     pub verbose: bool,
     /// Set by `quit`.
     pub quit: bool,
+    /// The last `trace`, for `plot`.
+    pub last_trace: Option<sample::Recording>,
 }
 
 /// One command's result, with the command name for error reporting.
@@ -33,7 +39,7 @@ pub type CmdResult = std::result::Result<Outcome, (String, Error)>;
 
 impl Shell {
     pub fn new(session: Session, style: Style) -> Shell {
-        Shell { session, style, verbose: false, quit: false }
+        Shell { session, style, verbose: false, quit: false, last_trace: None }
     }
 
     /// Runs every command on the line in order and returns their results. A failing
@@ -81,6 +87,7 @@ impl Shell {
     /// Runs a line and writes each result; returns true when every command succeeded.
     pub fn run_line(&mut self, line: &str, out: &mut dyn Write) -> bool {
         let mut ok = true;
+        let before = self.verbose.then(|| self.requests());
         for r in self.exec(line) {
             let w = match &r {
                 Ok(o) => output::write_outcome(out, self.style, o),
@@ -94,7 +101,30 @@ impl Shell {
             }
         }
         let _ = out.flush();
+        if let Some(before) = before {
+            self.report_requests(&before);
+        }
         ok
+    }
+
+    /// Wire requests sent so far, per open device (for `-v`).
+    fn requests(&self) -> Vec<(String, u64)> {
+        self.session.entries().iter().map(|e| (e.name.clone(), e.device.requests())).collect()
+    }
+
+    /// `-v`: how many requests the line sent, per device (nothing for in-process devices).
+    fn report_requests(&self, before: &[(String, u64)]) {
+        let sent: Vec<String> = self
+            .requests()
+            .into_iter()
+            .filter_map(|(name, n)| {
+                let was = before.iter().find(|(b, _)| *b == name).map(|(_, c)| *c).unwrap_or(0);
+                (n > was).then(|| format!("{name} {}", n - was))
+            })
+            .collect();
+        if !sent.is_empty() {
+            eprintln!("requests: {}", sent.join(", "));
+        }
     }
 
     /// The name of the device a command acts on by default.

@@ -1,7 +1,9 @@
 //! The interactive loop (rustyline) and the non-interactive one (commands from a pipe,
 //! no prompt or echo). History persists in the user's data directory.
 
+use super::helper::ShellHelper;
 use super::Shell;
+use crate::session::Session;
 use rustyline::error::ReadlineError;
 use std::io::{BufRead, Write};
 use std::path::PathBuf;
@@ -13,13 +15,16 @@ pub fn history_path() -> Option<PathBuf> {
 
 /// Runs the interactive REPL until `quit` or end of input. Returns the exit status.
 pub fn interactive(shell: &mut Shell) -> i32 {
-    let mut ed = match rustyline::DefaultEditor::new() {
-        Ok(e) => e,
-        Err(e) => {
-            eprintln!("cannot start the line editor: {e}");
-            return 1;
-        }
-    };
+    let config = rustyline::Config::builder().completion_type(rustyline::CompletionType::List).build();
+    let mut ed: rustyline::Editor<ShellHelper, rustyline::history::DefaultHistory> =
+        match rustyline::Editor::with_config(config) {
+            Ok(e) => e,
+            Err(e) => {
+                eprintln!("cannot start the line editor: {e}");
+                return 1;
+            }
+        };
+    ed.set_helper(Some(ShellHelper::new(shell.style.color)));
     let history = history_path();
     if let Some(h) = &history {
         let _ = ed.load_history(h);
@@ -33,7 +38,16 @@ pub fn interactive(shell: &mut Shell) -> i32 {
     );
     loop {
         let prompt = format!("{}> ", shell.session.current_name().unwrap_or("plcsh"));
-        match ed.readline(&prompt) {
+        // Lend the session to the completer while the line is read (see helper.rs).
+        let placeholder = Session::new(shell.session.clock.clone());
+        if let Some(h) = ed.helper_mut() {
+            h.session = Some(std::mem::replace(&mut shell.session, placeholder));
+        }
+        let read = ed.readline(&prompt);
+        if let Some(s) = ed.helper_mut().and_then(|h| h.session.take()) {
+            shell.session = s;
+        }
+        match read {
             Ok(line) => {
                 if line.trim().is_empty() {
                     continue;

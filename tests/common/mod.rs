@@ -16,7 +16,7 @@ pub fn plcsh() -> Command {
     let home = std::env::temp_dir().join(format!("plcsh-test-home-{}", std::process::id()));
     let _ = std::fs::create_dir_all(&home);
     c.env("HOME", &home).env("XDG_DATA_HOME", home.join("data")).env("XDG_CONFIG_HOME", home.join("config"));
-    c.env_remove("NO_COLOR");
+    c.env_remove("NO_COLOR").env_remove("PLCSH_CONFIG");
     c
 }
 

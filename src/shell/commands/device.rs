@@ -18,7 +18,7 @@ pub const DEVICES: CommandSpec = CommandSpec {
     name: "devices",
     aliases: &[],
     usage: "devices",
-    summary: "list open devices",
+    summary: "list open devices and device profiles",
     subcommands: &[],
     run: devices,
 };
@@ -26,8 +26,8 @@ pub const DEVICES: CommandSpec = CommandSpec {
 pub const CONNECT: CommandSpec = CommandSpec {
     name: "connect",
     aliases: &["open"],
-    usage: "connect NAME URL   e.g. connect press sim:K209EA-50DX",
-    summary: "open a device under a name",
+    usage: "connect NAME URL | connect PROFILE   e.g. connect press sim:K209EA-50DX, connect press1",
+    summary: "open a device under a name, or a device profile from devices.toml",
     subcommands: &[],
     run: connect,
 };
@@ -58,22 +58,16 @@ fn use_cmd(sh: &mut Shell, args: Args) -> Result<Outcome> {
 }
 
 fn devices(sh: &mut Shell, _args: Args) -> Result<Outcome> {
-    let current = sh.session.current_name().map(str::to_string);
-    let mut rows = Vec::new();
-    let mut list = Vec::new();
-    for e in sh.session.entries() {
-        let info = e.device.info();
-        let mark = if Some(&e.name) == current.as_ref() { "*" } else { "" };
-        rows.push(vec![format!("{mark}{}", e.name), info.family.to_string(), info.model.clone(), e.url.clone()]);
-        list.push(serde_json::json!({"name": e.name, "family": info.family, "model": info.model, "url": e.url, "simulated": info.simulated, "current": mark == "*"}));
-    }
-    Ok(Outcome::new("devices").table(&["name", "family", "model", "url"], rows).with("devices", list))
+    let (rows, o) = super::profiles::devices_and_profiles(&sh.session);
+    Ok(o.table(&["name", "family", "model", "url", "writes"], rows))
 }
 
 fn connect(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let w = lex::words(args.text)?;
-    let [(_, name), (_, url)] = w.as_slice() else {
-        return Err(Error::usage(format!("usage: {}", CONNECT.usage)).column(args.offset));
+    let (name, url) = match w.as_slice() {
+        [(_, profile)] => (profile, profile),
+        [(_, name), (_, url)] => (name, url),
+        _ => return Err(Error::usage(format!("usage: {}", CONNECT.usage)).column(args.offset)),
     };
     sh.session.open(name, url)?;
     let mut o = Outcome::new("connect");

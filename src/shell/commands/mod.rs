@@ -4,7 +4,10 @@
 mod device;
 mod help;
 mod io;
+pub mod profiles;
 mod sim;
+mod trend;
+mod watch;
 
 use super::{Args, Shell};
 use crate::core::Result;
@@ -31,6 +34,9 @@ pub const COMMANDS: &[CommandSpec] = &[
     device::CONNECT,
     device::CLOSE,
     sim::SIM,
+    watch::WATCH,
+    trend::TRACE,
+    trend::PLOT,
     help::HELP,
     help::QUIT,
 ];

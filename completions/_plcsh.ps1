@@ -1,0 +1,107 @@
+
+using namespace System.Management.Automation
+using namespace System.Management.Automation.Language
+
+Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
+    param($wordToComplete, $commandAst, $cursorPosition)
+
+    $commandElements = $commandAst.CommandElements
+    $command = @(
+        'plcsh'
+        for ($i = 1; $i -lt $commandElements.Count; $i++) {
+            $element = $commandElements[$i]
+            if ($element -isnot [StringConstantExpressionAst] -or
+                $element.StringConstantType -ne [StringConstantType]::BareWord -or
+                $element.Value.StartsWith('-') -or
+                $element.Value -eq $wordToComplete) {
+                break
+        }
+        $element.Value
+    }) -join ';'
+
+    $completions = @(switch ($command) {
+        'plcsh' {
+            [CompletionResult]::new('-c', '-c', [CompletionResultType]::ParameterName, 'Run these commands (separated by `;`) and exit')
+            [CompletionResult]::new('--command', '--command', [CompletionResultType]::ParameterName, 'Run these commands (separated by `;`) and exit')
+            [CompletionResult]::new('--model', '--model', [CompletionResultType]::ParameterName, 'Model of the default simulated PLC')
+            [CompletionResult]::new('-d', '-d', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
+            [CompletionResult]::new('--device', '--device', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
+            [CompletionResult]::new('--time', '--time', [CompletionResultType]::ParameterName, 'Simulator time: follow the wall clock, or move only when stepped')
+            [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'Print one JSON object per command result')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
+            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
+            [CompletionResult]::new('models', 'models', [CompletionResultType]::ParameterValue, 'List the K2 model catalogue (areas, I/O, counters, pulse outputs, manual disagreements)')
+            [CompletionResult]::new('devices', 'devices', [CompletionResultType]::ParameterValue, 'List open devices and the device profiles (devices.toml), with problems in that file')
+            [CompletionResult]::new('completions', 'completions', [CompletionResultType]::ParameterValue, 'Print a shell completion script (bash, zsh, fish, powershell), or write them all')
+            [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
+            break
+        }
+        'plcsh;models' {
+            [CompletionResult]::new('--model', '--model', [CompletionResultType]::ParameterName, 'Model of the default simulated PLC')
+            [CompletionResult]::new('-d', '-d', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
+            [CompletionResult]::new('--device', '--device', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
+            [CompletionResult]::new('--time', '--time', [CompletionResultType]::ParameterName, 'Simulator time: follow the wall clock, or move only when stepped')
+            [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'Print one JSON object per command result')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            break
+        }
+        'plcsh;devices' {
+            [CompletionResult]::new('--model', '--model', [CompletionResultType]::ParameterName, 'Model of the default simulated PLC')
+            [CompletionResult]::new('-d', '-d', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
+            [CompletionResult]::new('--device', '--device', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
+            [CompletionResult]::new('--time', '--time', [CompletionResultType]::ParameterName, 'Simulator time: follow the wall clock, or move only when stepped')
+            [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'Print one JSON object per command result')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            break
+        }
+        'plcsh;completions' {
+            [CompletionResult]::new('--write', '--write', [CompletionResultType]::ParameterName, 'Write every script into DIR (plcsh.bash, _plcsh, plcsh.fish, _plcsh.ps1)')
+            [CompletionResult]::new('--model', '--model', [CompletionResultType]::ParameterName, 'Model of the default simulated PLC')
+            [CompletionResult]::new('-d', '-d', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
+            [CompletionResult]::new('--device', '--device', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
+            [CompletionResult]::new('--time', '--time', [CompletionResultType]::ParameterName, 'Simulator time: follow the wall clock, or move only when stepped')
+            [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'Print one JSON object per command result')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            break
+        }
+        'plcsh;help' {
+            [CompletionResult]::new('models', 'models', [CompletionResultType]::ParameterValue, 'List the K2 model catalogue (areas, I/O, counters, pulse outputs, manual disagreements)')
+            [CompletionResult]::new('devices', 'devices', [CompletionResultType]::ParameterValue, 'List open devices and the device profiles (devices.toml), with problems in that file')
+            [CompletionResult]::new('completions', 'completions', [CompletionResultType]::ParameterValue, 'Print a shell completion script (bash, zsh, fish, powershell), or write them all')
+            [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
+            break
+        }
+        'plcsh;help;models' {
+            break
+        }
+        'plcsh;help;devices' {
+            break
+        }
+        'plcsh;help;completions' {
+            break
+        }
+        'plcsh;help;help' {
+            break
+        }
+    })
+
+    $completions.Where{ $_.CompletionText -like "$wordToComplete*" } |
+        Sort-Object -Property ListItemText
+}

@@ -1,0 +1,69 @@
+# Print an optspec for argparse to handle cmd's options that are independent of any subcommand.
+function __fish_plcsh_global_optspecs
+    string join \n c/command= json v/verbose model= d/device= time= config= h/help V/version
+end
+
+function __fish_plcsh_needs_command
+    # Figure out if the current invocation already has a command.
+    set -l cmd (commandline -opc)
+    set -e cmd[1]
+    argparse -s (__fish_plcsh_global_optspecs) -- $cmd 2>/dev/null
+    or return
+    if set -q argv[1]
+        # Also print the command, so this can be used to figure out what it is.
+        echo $argv[1]
+        return 1
+    end
+    return 0
+end
+
+function __fish_plcsh_using_subcommand
+    set -l cmd (__fish_plcsh_needs_command)
+    test -z "$cmd"
+    and return 1
+    contains -- $cmd[1] $argv
+end
+
+complete -c plcsh -n "__fish_plcsh_needs_command" -s c -l command -d 'Run these commands (separated by `;`) and exit' -r
+complete -c plcsh -n "__fish_plcsh_needs_command" -l model -d 'Model of the default simulated PLC' -r
+complete -c plcsh -n "__fish_plcsh_needs_command" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_needs_command" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
+stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
+complete -c plcsh -n "__fish_plcsh_needs_command" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
+complete -c plcsh -n "__fish_plcsh_needs_command" -l json -d 'Print one JSON object per command result'
+complete -c plcsh -n "__fish_plcsh_needs_command" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
+complete -c plcsh -n "__fish_plcsh_needs_command" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c plcsh -n "__fish_plcsh_needs_command" -s V -l version -d 'Print version'
+complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "models" -d 'List the K2 model catalogue (areas, I/O, counters, pulse outputs, manual disagreements)'
+complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "devices" -d 'List open devices and the device profiles (devices.toml), with problems in that file'
+complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "completions" -d 'Print a shell completion script (bash, zsh, fish, powershell), or write them all'
+complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l model -d 'Model of the default simulated PLC' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand models" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
+stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
+complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l json -d 'Print one JSON object per command result'
+complete -c plcsh -n "__fish_plcsh_using_subcommand models" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
+complete -c plcsh -n "__fish_plcsh_using_subcommand models" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l model -d 'Model of the default simulated PLC' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
+stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
+complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l json -d 'Print one JSON object per command result'
+complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
+complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l write -d 'Write every script into DIR (plcsh.bash, _plcsh, plcsh.fish, _plcsh.ps1)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l model -d 'Model of the default simulated PLC' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
+stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
+complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l json -d 'Print one JSON object per command result'
+complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
+complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices completions help" -f -a "models" -d 'List the K2 model catalogue (areas, I/O, counters, pulse outputs, manual disagreements)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices completions help" -f -a "devices" -d 'List open devices and the device profiles (devices.toml), with problems in that file'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices completions help" -f -a "completions" -d 'Print a shell completion script (bash, zsh, fish, powershell), or write them all'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices completions help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'

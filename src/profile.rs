@@ -1,0 +1,435 @@
+//! Device profiles: the devices a technician works with, named once in a TOML file in the
+//! user's config directory (`~/.config/plcsh/devices.toml` on Linux; `PLCSH_CONFIG` or
+//! `--config FILE` override it), so `connect press1` or `--device press1` replaces a URL.
+//!
+//! ```toml
+//! [devices.press1]
+//! url = "rtu:/dev/ttyUSB0?baud=115200&unit=3"
+//! model = "K209EA-50DX"          # any other key becomes a URL parameter
+//! read_only = true               # refuse every write
+//! allow = ["VW100..VW120", "M0.0"]   # or: refuse writes outside these operands
+//! [devices.press1.options]        # passed to Device::set_option after opening
+//! word_order = "swapped"
+//! ```
+//!
+//! Profiles belong to the session layer: the write rules (`read_only`, `allow`) become a
+//! [`Guard`] on the open device, and the session checks it before anything reaches the device,
+//! for every front end. A bad file is reported with file:line (toml's spans) and never stops
+//! the shell: a broken profile is skipped, the others and the defaults still work.
+
+use crate::core::url::DeviceUrl;
+use crate::core::{Error, Operand, OperandSpace, Result};
+use serde::Deserialize;
+use std::collections::{BTreeMap, HashSet};
+use std::fmt;
+use std::path::{Path, PathBuf};
+use toml::Spanned;
+
+/// One named device profile.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Profile {
+    pub name: String,
+    /// The URL with the profile's extra keys appended as parameters.
+    pub url: String,
+    /// Options for `Device::set_option`, from `[devices.NAME.options]`.
+    pub options: Vec<(String, String)>,
+    pub read_only: bool,
+    /// Write allow-list (operand expressions), when present.
+    pub allow: Option<Vec<String>>,
+    /// Where the profile is defined (`file:line`).
+    pub origin: String,
+}
+
+/// A problem in the profile file, at a line.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Problem {
+    pub file: String,
+    pub line: usize,
+    pub message: String,
+}
+
+impl fmt::Display for Problem {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}:{}: {}", self.file, self.line, self.message)
+    }
+}
+
+/// The profiles loaded from one file, and what was wrong in it.
+#[derive(Clone, Debug, Default)]
+pub struct Profiles {
+    list: Vec<Profile>,
+    pub problems: Vec<Problem>,
+    /// The file they came from (also when it does not exist yet).
+    pub file: Option<PathBuf>,
+}
+
+/// The profile file's path: `PLCSH_CONFIG`, else the user's config directory.
+pub fn default_path() -> Option<PathBuf> {
+    if let Some(p) = std::env::var_os("PLCSH_CONFIG").filter(|p| !p.is_empty()) {
+        return Some(PathBuf::from(p));
+    }
+    directories::ProjectDirs::from("", "", "plcsh").map(|d| d.config_dir().join("devices.toml"))
+}
+
+#[derive(Deserialize)]
+struct RawFile {
+    #[serde(default)]
+    devices: BTreeMap<String, Spanned<BTreeMap<String, Spanned<toml::Value>>>>,
+}
+
+fn line_of(text: &str, offset: usize) -> usize {
+    text[..offset.min(text.len())].bytes().filter(|b| *b == b'\n').count() + 1
+}
+
+fn scalar(v: &toml::Value) -> Option<String> {
+    match v {
+        toml::Value::String(s) => Some(s.clone()),
+        toml::Value::Integer(i) => Some(i.to_string()),
+        toml::Value::Float(f) => Some(f.to_string()),
+        toml::Value::Boolean(b) => Some(b.to_string()),
+        _ => None,
+    }
+}
+
+fn valid_name(n: &str) -> bool {
+    !n.is_empty() && n.chars().all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-')
+}
+
+impl Profiles {
+    /// Reads the profile file; a missing file is no profiles and no problem.
+    pub fn load(path: &Path) -> Profiles {
+        match std::fs::read_to_string(path) {
+            Ok(text) => Profiles::parse(&text, path),
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+                Profiles { file: Some(path.to_path_buf()), ..Default::default() }
+            }
+            Err(e) => Profiles {
+                problems: vec![Problem {
+                    file: path.display().to_string(),
+                    line: 0,
+                    message: format!("cannot read: {e}"),
+                }],
+                file: Some(path.to_path_buf()),
+                ..Default::default()
+            },
+        }
+    }
+
+    /// Parses profile text; `path` is used in messages only.
+    pub fn parse(text: &str, path: &Path) -> Profiles {
+        let file = path.display().to_string();
+        let mut out = Profiles { file: Some(path.to_path_buf()), ..Default::default() };
+        let raw: RawFile = match toml::from_str(text) {
+            Ok(r) => r,
+            Err(e) => {
+                let line = e.span().map(|s| line_of(text, s.start)).unwrap_or(0);
+                out.problems.push(Problem {
+                    file,
+                    line,
+                    message: format!("{} (no profile from this file is loaded)", e.message().trim_end()),
+                });
+                return out;
+            }
+        };
+        for (name, section) in raw.devices {
+            let origin_line = line_of(text, section.span().start);
+            let problem = |at: usize, m: String| Problem { file: file.clone(), line: line_of(text, at), message: m };
+            match profile(&name, section.get_ref(), &format!("{file}:{origin_line}")) {
+                Ok(p) => out.list.push(p),
+                Err((at, m)) => {
+                    let at = at.unwrap_or(section.span().start);
+                    out.problems.push(problem(at, format!("profile `{name}` skipped: {m}")));
+                }
+            }
+        }
+        out
+    }
+
+    pub fn list(&self) -> &[Profile] {
+        &self.list
+    }
+
+    pub fn get(&self, name: &str) -> Option<&Profile> {
+        self.list.iter().find(|p| p.name == name)
+    }
+
+    /// "no profile named x" with the known names and the file, for errors.
+    pub fn unknown(&self, name: &str) -> Error {
+        let names: Vec<&str> = self.list.iter().map(|p| p.name.as_str()).collect();
+        let file = self.file.as_ref().map(|f| f.display().to_string()).unwrap_or_else(|| "devices.toml".into());
+        Error::usage(format!("`{name}` is neither a device URL nor a profile")).hint(if names.is_empty() {
+            format!("give a URL (sim:MODEL, tcp://HOST:PORT …) or define [devices.{name}] in {file}")
+        } else {
+            format!("profiles in {file}: {}", names.join(", "))
+        })
+    }
+}
+
+type Bad = (Option<usize>, String);
+
+fn profile(
+    name: &str,
+    keys: &BTreeMap<String, Spanned<toml::Value>>,
+    origin: &str,
+) -> std::result::Result<Profile, Bad> {
+    if !valid_name(name) {
+        return Err((None, "a profile name is letters, digits, _ and -".into()));
+    }
+    let at = |v: &Spanned<toml::Value>| Some(v.span().start);
+    let url = match keys.get("url") {
+        Some(v) => match v.get_ref() {
+            toml::Value::String(s) => s.clone(),
+            _ => return Err((at(v), "`url` must be a string".into())),
+        },
+        None => return Err((None, "`url` is missing (e.g. url = \"tcp://192.168.1.10:502?unit=1\")".into())),
+    };
+    let parsed = DeviceUrl::parse(&url).map_err(|e| (at(&keys["url"]), e.message.clone()))?;
+    let mut p = Profile {
+        name: name.to_string(),
+        url: url.clone(),
+        options: Vec::new(),
+        read_only: false,
+        allow: None,
+        origin: origin.to_string(),
+    };
+    let mut extra = Vec::new();
+    for (k, v) in keys {
+        match k.as_str() {
+            "url" => {}
+            "read_only" => match v.get_ref() {
+                toml::Value::Boolean(b) => p.read_only = *b,
+                _ => return Err((at(v), "`read_only` must be true or false".into())),
+            },
+            "allow" => {
+                let items = match v.get_ref() {
+                    toml::Value::Array(a) => {
+                        a.iter().map(|i| i.as_str().map(str::to_string)).collect::<Option<Vec<_>>>()
+                    }
+                    _ => None,
+                };
+                match items {
+                    Some(items) => p.allow = Some(items),
+                    None => {
+                        return Err((
+                            at(v),
+                            "`allow` must be a list of operands, e.g. [\"VW100..VW120\", \"M0.0\"]".into(),
+                        ))
+                    }
+                }
+            }
+            "options" => match v.get_ref() {
+                toml::Value::Table(t) => {
+                    for (ok, ov) in t {
+                        let s =
+                            scalar(ov).ok_or((at(v), format!("option `{ok}` must be a string, number or boolean")))?;
+                        p.options.push((ok.clone(), s));
+                    }
+                }
+                _ => return Err((at(v), "`options` must be a table".into())),
+            },
+            _ => {
+                let s = scalar(v.get_ref()).ok_or((at(v), format!("`{k}` must be a string, number or boolean")))?;
+                if parsed.param(k).is_none() {
+                    extra.push(format!("{k}={s}"));
+                }
+            }
+        }
+    }
+    if !extra.is_empty() {
+        let sep = if url.contains('?') { '&' } else { '?' };
+        p.url = format!("{url}{sep}{}", extra.join("&"));
+    }
+    Ok(p)
+}
+
+/// Opens profile `profile` under device name `name`: its URL, then its options, then its
+/// write rules as the entry's [`Guard`]. Called by `Session::open` for a URL without a scheme.
+pub fn open(s: &mut crate::session::Session, name: &str, profile: &str) -> Result<()> {
+    let p = s.profiles.get(profile).cloned().ok_or_else(|| s.profiles.unknown(profile).device(name))?;
+    let from = format!("from profile `{}` ({})", p.name, p.origin);
+    let mut device = crate::session::open_url(&p.url, &s.clock).map_err(|e| e.device(name).cause(&from))?;
+    for (k, v) in &p.options {
+        device.set_option(k, v).map_err(|e| e.device(name).cause(&from))?;
+    }
+    let guard = Guard::build(&p, device.operands()).map_err(|e| e.device(name))?;
+    s.add(name, &p.url, device);
+    let i = s.index(name)?;
+    s.entry(i).guard = guard;
+    Ok(())
+}
+
+/// The write rules of a profile, bound to an open device's operand space.
+#[derive(Clone, Debug)]
+pub struct Guard {
+    profile: String,
+    origin: String,
+    read_only: bool,
+    /// Allowed operand names (views stripped: `VW0/INT` is `VW0`) and the list as written.
+    allow: Option<(HashSet<String>, Vec<String>)>,
+}
+
+/// An operand's name without a type view (`VD100/REAL` → `VD100`): views share the bytes.
+fn bare(name: &str) -> &str {
+    name.split('/').next().unwrap_or(name)
+}
+
+impl Guard {
+    /// The guard for `p` on a device with operand space `space`; `None` when the profile has
+    /// no write rules. An allow item that is not an operand of the device is an error.
+    pub fn build(p: &Profile, space: &dyn OperandSpace) -> Result<Option<Guard>> {
+        if !p.read_only && p.allow.is_none() {
+            return Ok(None);
+        }
+        let allow = match &p.allow {
+            None => None,
+            Some(items) => {
+                let mut set = HashSet::new();
+                for item in items {
+                    let ops = space.parse(item).map_err(|e| {
+                        Error::usage(format!("profile `{}` ({}): allow item `{item}`: {}", p.name, p.origin, e.message))
+                            .hint("allow items are operands or ranges of this device, e.g. \"VW100..VW120\"")
+                    })?;
+                    set.extend(ops.iter().map(|o| bare(&space.name(o)).to_string()));
+                }
+                Some((set, items.clone()))
+            }
+        };
+        Ok(Some(Guard { profile: p.name.clone(), origin: p.origin.clone(), read_only: p.read_only, allow }))
+    }
+
+    /// Refuses a write the profile does not allow, naming the profile and the rule.
+    pub fn check(&self, space: &dyn OperandSpace, op: &Operand) -> Result<()> {
+        let name = space.name(op);
+        if self.read_only {
+            return Err(Error::usage(format!(
+                "write refused: profile `{}` is read_only ({})",
+                self.profile, self.origin
+            ))
+            .operand(name)
+            .hint("reading works; to write, remove `read_only = true` from the profile"));
+        }
+        if let Some((set, items)) = &self.allow {
+            if !set.contains(bare(&name)) {
+                return Err(Error::usage(format!(
+                    "write refused: {name} is not in profile `{}`'s allow list [{}] ({})",
+                    self.profile,
+                    items.join(", "),
+                    self.origin
+                ))
+                .operand(name)
+                .hint("writes are allowed only to the operands listed, with the same size"));
+            }
+        }
+        Ok(())
+    }
+
+    /// A short description for `devices` (`read only`, `allow VW100..VW120, M0.0`).
+    pub fn summary(&self) -> String {
+        match (&self.allow, self.read_only) {
+            (_, true) => "read only".into(),
+            (Some((_, items)), false) => format!("allow {}", items.join(", ")),
+            (None, false) => String::new(),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::k2::{catalog, space::K2Space};
+
+    fn parse(text: &str) -> Profiles {
+        Profiles::parse(text, Path::new("/home/u/.config/plcsh/devices.toml"))
+    }
+
+    const GOOD: &str = r#"
+[devices.press1]
+url = "rtu:/dev/ttyUSB0?baud=115200&unit=3"
+model = "K209EA-50DX"
+allow = ["VW100..VW104", "M0.0"]
+
+[devices.axis1]
+url = "kinco:/dev/ttyUSB1?id=1"
+encoder = 65536
+read_only = true
+[devices.axis1.options]
+word_order = "swapped"
+"#;
+
+    #[test]
+    fn profiles_with_extra_keys_rules_and_options() {
+        let p = parse(GOOD);
+        assert!(p.problems.is_empty(), "{:?}", p.problems);
+        let press = p.get("press1").unwrap();
+        assert_eq!(press.url, "rtu:/dev/ttyUSB0?baud=115200&unit=3&model=K209EA-50DX");
+        assert_eq!(press.allow.as_deref(), Some(&["VW100..VW104".to_string(), "M0.0".to_string()][..]));
+        assert!(!press.read_only);
+        assert_eq!(press.origin, "/home/u/.config/plcsh/devices.toml:2");
+        let axis = p.get("axis1").unwrap();
+        assert_eq!(axis.url, "kinco:/dev/ttyUSB1?id=1&encoder=65536");
+        assert!(axis.read_only);
+        assert_eq!(axis.options, vec![("word_order".to_string(), "swapped".to_string())]);
+        let names: Vec<&str> = p.list().iter().map(|p| p.name.as_str()).collect();
+        assert_eq!(names, vec!["axis1", "press1"]);
+    }
+
+    #[test]
+    fn a_url_parameter_wins_over_the_same_extra_key() {
+        let p = parse("[devices.a]\nurl = \"sim:K205-16DT?model=K209M-56DT\"\nmodel = \"K205-16DT\"\n");
+        assert_eq!(p.get("a").unwrap().url, "sim:K205-16DT?model=K209M-56DT");
+    }
+
+    #[test]
+    fn a_syntax_error_is_reported_with_its_line_and_loads_nothing() {
+        let p = parse("[devices.a]\nurl = \"sim:\"\n\n[devices.b]\nurl = sim:K205\n");
+        assert!(p.list().is_empty());
+        assert_eq!(p.problems.len(), 1);
+        let shown = p.problems[0].to_string();
+        assert!(shown.starts_with("/home/u/.config/plcsh/devices.toml:5: "), "{shown}");
+    }
+
+    #[test]
+    fn a_bad_profile_is_skipped_with_its_line_and_the_others_load() {
+        let text = "[devices.ok]\nurl = \"sim:K205-16DT\"\n\n[devices.nourl]\nmodel = \"x\"\n\n[devices.badro]\nurl = \"sim:\"\nread_only = \"yes\"\n\n[devices.badallow]\nurl = \"sim:\"\nallow = \"VW0\"\n\n[devices.\"bad name\"]\nurl = \"sim:\"\n";
+        let p = parse(text);
+        let names: Vec<&str> = p.list().iter().map(|p| p.name.as_str()).collect();
+        assert_eq!(names, vec!["ok"]);
+        let lines: Vec<(usize, bool)> = p.problems.iter().map(|pr| (pr.line, pr.message.contains("skipped"))).collect();
+        // BTreeMap order: "bad name", badallow, badro, nourl.
+        assert_eq!(lines, vec![(15, true), (13, true), (9, true), (4, true)], "{:?}", p.problems);
+        assert!(p.problems[3].message.contains("`url` is missing"));
+        assert!(p.problems[2].message.contains("read_only"));
+    }
+
+    #[test]
+    fn missing_file_is_no_profiles_and_no_problem() {
+        let p = Profiles::load(Path::new("/nonexistent/plcsh/devices.toml"));
+        assert!(p.list().is_empty() && p.problems.is_empty());
+        assert!(p.unknown("press1").hint.clone().unwrap().contains("[devices.press1]"));
+    }
+
+    #[test]
+    fn guard_enforces_read_only_and_the_allow_list() {
+        let space = K2Space::new(catalog::find("K205-16DT").unwrap());
+        let p = parse(GOOD);
+        let g = Guard::build(p.get("press1").unwrap(), &space).unwrap().unwrap();
+        let op = |t: &str| space.parse(t).unwrap()[0];
+        assert!(g.check(&space, &op("VW102")).is_ok());
+        assert!(g.check(&space, &op("VW102/INT")).is_ok(), "a view of an allowed operand");
+        assert!(g.check(&space, &op("M0.0")).is_ok());
+        let e = g.check(&space, &op("VW106")).unwrap_err();
+        assert!(e.message.contains("press1") && e.message.contains("allow list"), "{}", e.message);
+        assert_eq!(e.operand.as_deref(), Some("VW106"));
+        assert!(g.check(&space, &op("VB100")).is_err(), "a different size is not listed");
+        let mut ro = p.get("axis1").unwrap().clone();
+        ro.url = "sim:".into();
+        let g = Guard::build(&ro, &space).unwrap().unwrap();
+        assert!(g.check(&space, &op("VW0")).unwrap_err().message.contains("read_only"));
+        let mut bad = p.get("press1").unwrap().clone();
+        bad.allow = Some(vec!["VX1".into()]);
+        assert!(Guard::build(&bad, &space).unwrap_err().message.contains("allow item `VX1`"));
+        let mut none = bad.clone();
+        none.allow = None;
+        assert!(Guard::build(&none, &space).unwrap().is_none());
+    }
+}

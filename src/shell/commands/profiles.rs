@@ -1,0 +1,54 @@
+//! The `devices` listing: open devices (the current one marked `*`), then the profiles from
+//! devices.toml that are not open, then any problem in that file (with file:line). Shared by
+//! the REPL's `devices` and `plcsh devices`.
+
+use crate::output::Outcome;
+use crate::session::Session;
+
+/// Table rows and the outcome (with `devices`, `profiles`, `problems` for JSON).
+pub fn devices_and_profiles(s: &Session) -> (Vec<Vec<String>>, Outcome) {
+    let current = s.current_name().map(str::to_string);
+    let mut rows = Vec::new();
+    let mut list = Vec::new();
+    for e in s.entries() {
+        let info = e.device.info();
+        let is_current = Some(&e.name) == current.as_ref();
+        let mark = if is_current { "*" } else { "" };
+        let writes = e.guard.as_ref().map(|g| g.summary()).unwrap_or_default();
+        rows.push(vec![
+            format!("{mark}{}", e.name),
+            info.family.to_string(),
+            info.model.clone(),
+            e.url.clone(),
+            writes.clone(),
+        ]);
+        list.push(serde_json::json!({"name": e.name, "family": info.family, "model": info.model, "url": e.url,
+            "simulated": info.simulated, "current": is_current, "writes": writes}));
+    }
+    let mut profiles = Vec::new();
+    for p in s.profiles.list() {
+        let open = s.entries().iter().any(|e| e.name == p.name);
+        if !open {
+            let writes = match (&p.allow, p.read_only) {
+                (_, true) => "read only".to_string(),
+                (Some(a), false) => format!("allow {}", a.join(", ")),
+                (None, false) => String::new(),
+            };
+            rows.push(vec![p.name.clone(), "(profile)".into(), String::new(), p.url.clone(), writes]);
+        }
+        profiles.push(serde_json::json!({"name": p.name, "url": p.url, "read_only": p.read_only,
+            "allow": p.allow, "origin": p.origin, "open": open}));
+    }
+    let problems: Vec<String> = s.profiles.problems.iter().map(|p| p.to_string()).collect();
+    for p in &problems {
+        rows.push(vec!["(problem)".into(), String::new(), String::new(), p.clone(), String::new()]);
+    }
+    let mut o = Outcome::new("devices").with("devices", list).with("profiles", profiles);
+    if !problems.is_empty() {
+        o = o.with("problems", problems);
+    }
+    if let Some(f) = &s.profiles.file {
+        o = o.with("profile_file", f.display().to_string());
+    }
+    (rows, o)
+}

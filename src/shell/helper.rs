@@ -1,0 +1,122 @@
+//! The rustyline glue: completion, inline hints (the operand's meaning, the rest of a unique
+//! name, the command's usage, a history continuation) and dimmed hint text. The logic is in
+//! `complete.rs`; this file only adapts it to rustyline's traits.
+//!
+//! The helper holds the session while the editor reads a line (the REPL moves it in before
+//! `readline` and takes it back after), so completion sees the devices as they are now,
+//! without shared ownership or locks in the rest of the shell.
+
+use super::complete::{self, DeviceView, ProfileView, View};
+use crate::session::Session;
+use rustyline::completion::{Completer, Pair};
+use rustyline::highlight::Highlighter;
+use rustyline::hint::{Hinter, HistoryHinter};
+use rustyline::validate::Validator;
+use rustyline::{Context, Helper};
+use std::borrow::Cow;
+
+/// The completion view of a session.
+pub fn view_of<'a>(session: &'a Session, files: &'a dyn Fn(&str) -> Vec<String>) -> View<'a> {
+    let current = session.current_name().and_then(|n| session.index(n).ok());
+    View {
+        devices: session
+            .entries()
+            .iter()
+            .map(|e| DeviceView {
+                name: &e.name,
+                family: e.device.info().family,
+                model: &e.device.info().model,
+                space: e.device.operands(),
+            })
+            .collect(),
+        current,
+        profiles: session.profiles.list().iter().map(|p| ProfileView { name: &p.name, url: &p.url }).collect(),
+        files,
+    }
+}
+
+/// The REPL's rustyline helper.
+pub struct ShellHelper {
+    /// The session, lent to the helper while a line is read.
+    pub session: Option<Session>,
+    history: HistoryHinter,
+    /// Dim hints (a terminal without NO_COLOR).
+    pub color: bool,
+}
+
+impl ShellHelper {
+    pub fn new(color: bool) -> ShellHelper {
+        ShellHelper { session: None, history: HistoryHinter::new(), color }
+    }
+}
+
+/// A hint: `display` is shown after the cursor, `insert` is what → accepts.
+pub struct ShellHint {
+    display: String,
+    insert: Option<String>,
+}
+
+impl rustyline::hint::Hint for ShellHint {
+    fn display(&self) -> &str {
+        &self.display
+    }
+    fn completion(&self) -> Option<&str> {
+        self.insert.as_deref()
+    }
+}
+
+impl Completer for ShellHelper {
+    type Candidate = Pair;
+
+    fn complete(&self, line: &str, pos: usize, _ctx: &Context<'_>) -> rustyline::Result<(usize, Vec<Pair>)> {
+        let Some(s) = &self.session else { return Ok((pos, Vec::new())) };
+        let c = complete::complete(line, pos, &view_of(s, &complete::list_paths));
+        let width = c.items.iter().map(|s| s.text.chars().count()).max().unwrap_or(0);
+        let pairs = c
+            .items
+            .into_iter()
+            .map(|s| Pair {
+                display: if s.meaning.is_empty() {
+                    s.text.clone()
+                } else {
+                    format!("{:<width$}  {}", s.text, s.meaning)
+                },
+                replacement: s.text,
+            })
+            .collect();
+        Ok((c.start, pairs))
+    }
+}
+
+impl Hinter for ShellHelper {
+    type Hint = ShellHint;
+
+    fn hint(&self, line: &str, pos: usize, ctx: &Context<'_>) -> Option<ShellHint> {
+        let pure = self.session.as_ref().and_then(|s| complete::hint(line, pos, &view_of(s, &complete::list_paths)));
+        let history = self.history.hint(line, pos, ctx).filter(|h| !h.is_empty());
+        match (history, pure) {
+            (Some(h), p) => {
+                let note = p.map(|p| p.note).unwrap_or_default();
+                Some(ShellHint { display: format!("{h}{note}"), insert: Some(h) })
+            }
+            (None, Some(p)) => Some(ShellHint {
+                display: format!("{}{}", p.insert.clone().unwrap_or_default(), p.note),
+                insert: p.insert,
+            }),
+            (None, None) => None,
+        }
+    }
+}
+
+impl Highlighter for ShellHelper {
+    fn highlight_hint<'h>(&self, hint: &'h str) -> Cow<'h, str> {
+        if self.color {
+            Cow::Owned(format!("\x1b[2m{hint}\x1b[0m"))
+        } else {
+            Cow::Borrowed(hint)
+        }
+    }
+}
+
+impl Validator for ShellHelper {}
+impl Helper for ShellHelper {}

@@ -1,0 +1,116 @@
+//! Device profiles through the real binary (issue 8 §2): `--config`, `PLCSH_CONFIG`, the
+//! user's config directory, `connect PROFILE`, `--device PROFILE`, `plcsh devices`, write
+//! rules enforced before anything reaches the device, and a bad file that does not stop the shell.
+
+mod common;
+use common::*;
+use std::path::PathBuf;
+
+fn config(name: &str, text: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("plcsh-profiles-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let f = dir.join("devices.toml");
+    std::fs::write(&f, text).unwrap();
+    f
+}
+
+const PROFILES: &str = r#"
+[devices.press1]
+url = "sim:K205-16DT"
+model = "K209EA-50DX"
+allow = ["VW100..VW104", "M0.0"]
+
+[devices.viewer]
+url = "sim:K205-16DT"
+read_only = true
+"#;
+
+#[test]
+fn connect_a_profile_and_its_allow_list_is_enforced() {
+    let f = config("allow", PROFILES);
+    let o = run(
+        &["--config", f.to_str().unwrap(), "--json"],
+        "connect press1\nuse press1\nset VW102=7\nset VW100=1, VW200=5\nget VW100 VW200 VW102 AIW10\n",
+    );
+    let l = json_lines(&o);
+    assert_eq!(l[0]["ok"], true, "{l:?}");
+    assert_eq!(l[2]["ok"], true, "VW102 is allowed");
+    assert_eq!(l[3]["ok"], false);
+    let err = &l[3]["error"];
+    assert_eq!(err["operand"], "VW200");
+    assert_eq!(err["device"], "press1");
+    let msg = err["message"].as_str().unwrap();
+    assert!(msg.contains("profile `press1`") && msg.contains("allow list") && msg.contains("devices.toml:2"), "{msg}");
+    let v: Vec<i64> = l[4]["values"].as_array().unwrap().iter().map(|v| v["value"].as_i64().unwrap()).collect();
+    assert_eq!(&v[..3], &[0, 0, 7], "the refused line wrote nothing, VW100 included");
+    // `model` from the profile reached the URL: the K209EA has AIW10, the K205 has no AI.
+    assert_eq!(l[4]["ok"], true);
+}
+
+#[test]
+fn a_read_only_profile_given_as_device_is_current_and_refuses_writes() {
+    let f = config("ro", PROFILES);
+    let o =
+        plcsh_env(&["--device", "viewer", "--json", "-c", "get VW0; set VW0=1"], "PLCSH_CONFIG", f.to_str().unwrap());
+    let l = json_lines(&o);
+    assert_eq!(l[0]["device"], "viewer", "a bare profile becomes the current device");
+    assert_eq!(l[1]["ok"], false);
+    assert!(l[1]["error"]["message"].as_str().unwrap().contains("read_only"));
+    assert_eq!(o.status.code(), Some(1));
+}
+
+fn plcsh_env(args: &[&str], key: &str, value: &str) -> std::process::Output {
+    plcsh().args(args).env(key, value).stdin(std::process::Stdio::null()).output().unwrap()
+}
+
+#[test]
+fn devices_lists_profiles_and_open_devices() {
+    let f = config("list", PROFILES);
+    let o = run(&["devices", "--json", "--config", f.to_str().unwrap()], "");
+    let l = json_lines(&o);
+    let profiles: Vec<&str> =
+        l[0]["profiles"].as_array().unwrap().iter().map(|p| p["name"].as_str().unwrap()).collect();
+    assert_eq!(profiles, vec!["press1", "viewer"]);
+    assert_eq!(l[0]["devices"][0]["name"], "plc");
+    let human = stdout(&run(&["devices", "--config", f.to_str().unwrap()], ""));
+    assert!(
+        human.contains("viewer") && human.contains("read only") && human.contains("allow VW100..VW104, M0.0"),
+        "{human}"
+    );
+}
+
+#[test]
+fn a_bad_file_is_reported_with_its_line_and_the_shell_still_works() {
+    let f = config("bad", "[devices.ok]\nurl = \"sim:K205-16DT\"\n\n[devices.broken]\nread_only = true\n");
+    let o = run(&["--config", f.to_str().unwrap(), "--json", "-c", "connect ok; set VW0=3; get VW0"], "");
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains(&format!("{}:4: profile `broken` skipped: `url` is missing", f.display())), "{err}");
+    let l = json_lines(&o);
+    assert_eq!(l[2]["values"][0]["value"], 3, "the good profile still works");
+    let f = config("syntax", "[devices.a\nurl = 1\n");
+    let o = run(&["--config", f.to_str().unwrap(), "--json", "-c", "get VW0; connect a"], "");
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains(&format!("{}:1: ", f.display())), "{err}");
+    let l = json_lines(&o);
+    assert_eq!(l[0]["ok"], true, "defaults still work");
+    assert_eq!(l[1]["ok"], false);
+    assert!(l[1]["error"]["message"].as_str().unwrap().contains("neither a device URL nor a profile"));
+}
+
+#[test]
+fn the_default_file_is_in_the_users_config_directory() {
+    // common::plcsh sets XDG_CONFIG_HOME to <private home>/config.
+    let home = std::env::temp_dir().join(format!("plcsh-profiles-home-{}", std::process::id()));
+    let dir = home.join("config/plcsh");
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("devices.toml"), PROFILES).unwrap();
+    let o = plcsh()
+        .env("XDG_CONFIG_HOME", home.join("config"))
+        .args(["--json", "-c", "connect viewer; devices"])
+        .stdin(std::process::Stdio::null())
+        .output()
+        .unwrap();
+    let l = json_lines(&o);
+    assert_eq!(l[0]["ok"], true, "{l:?}");
+    assert!(l[1]["profile_file"].as_str().unwrap().ends_with("config/plcsh/devices.toml"));
+}
