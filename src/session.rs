@@ -62,9 +62,10 @@ pub fn open_url(url: &str, clock: &Clock) -> Result<Box<dyn Device>> {
             let model = u.param("model").unwrap_or(&u.target);
             crate::k2::open_sim(model, clock.clone())
         }
-        other => {
-            Err(Error::usage(format!("unknown device scheme `{other}:` in {url}")).hint("known schemes: sim:MODEL"))
-        }
+        "kinco" => crate::servo::driver::open_serial(&u),
+        "sim-servo" => crate::servo::driver::open_sim(&u, clock),
+        other => Err(Error::usage(format!("unknown device scheme `{other}:` in {url}"))
+            .hint("known schemes: sim:MODEL, kinco:/dev/ttyUSB0?id=1, sim-servo:?id=1")),
     }
 }
 

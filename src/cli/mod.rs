@@ -4,6 +4,7 @@
 //! One file per subcommand (`models.rs` …), each a thin call into the library.
 
 mod models;
+mod serve;
 
 use crate::core::{Clock, ErrorKind};
 use crate::k2::catalog;
@@ -50,6 +51,17 @@ pub struct Cli {
 pub enum Sub {
     /// List the K2 model catalogue (areas, I/O, counters, pulse outputs, manual disagreements).
     Models,
+    /// Simulators for other programs (`sim serve`).
+    Sim {
+        #[command(subcommand)]
+        cmd: SimCmd,
+    },
+}
+
+#[derive(Subcommand, Debug)]
+pub enum SimCmd {
+    /// Serve simulators on pseudo-terminals; prints one JSON readiness line.
+    Serve(serve::ServeArgs),
 }
 
 /// Splits `NAME=URL` (or a bare URL, named `plc`).
@@ -65,7 +77,8 @@ pub fn split_device_arg(arg: &str) -> (String, String) {
     ("plc".to_string(), arg.to_string())
 }
 
-/// Builds the session the flags describe: `plc` on the simulator, then every `--device`.
+/// Builds the session the flags describe: `plc` on the simulator, a simulated drive
+/// `servo`, then every `--device`.
 pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
     let clock = match cli.time {
         TimeMode::Wall => Clock::following(),
@@ -73,6 +86,7 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
     };
     let mut s = Session::new(clock);
     s.open("plc", &format!("sim:{}", cli.model))?;
+    s.open("servo", "sim-servo:?id=1")?;
     for d in &cli.devices {
         let (name, url) = split_device_arg(d);
         s.open(&name, &url)?;
@@ -113,6 +127,7 @@ pub fn main() -> i32 {
                 let _ = output::write_outcome(&mut out, style, &o);
                 0
             }
+            Sub::Sim { cmd: SimCmd::Serve(a) } => serve::run(a),
         };
     }
     if let Some(cmds) = &cli.command {

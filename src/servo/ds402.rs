@@ -290,6 +290,11 @@ pub fn enable(ops: &mut dyn ServoOps, w: &Waiter) -> Result<Vec<&'static str>> {
     let sw = statusword(ops)?;
     match State::from_statusword(sw) {
         Some(State::OperationEnabled) => return Ok(Vec::new()),
+        Some(State::QuickStopActive) => {
+            // CiA 402 transition 16: quick stop active → operation enabled directly.
+            step(ops, w, "enable operation", cw::ENABLE_OPERATION, &[State::OperationEnabled])?;
+            return Ok(vec!["enable operation"]);
+        }
         Some(State::Fault | State::FaultReactionActive) => {
             return Err(Error::state(format!("the drive is in fault (statusword 16#{sw:04X})"))
                 .hint("run servo fault-reset, then servo enable"))
