@@ -50,7 +50,9 @@ pub const SILENCE_CAUSES: &str =
 enum Exchange {
     Reply([u8; FRAME_LEN]),
     /// Nothing whole arrived; `partial` holds any stray bytes.
-    Silent { partial: Vec<u8> },
+    Silent {
+        partial: Vec<u8>,
+    },
 }
 
 /// A Kinco servo drive on some transport.
@@ -151,7 +153,10 @@ impl Driver {
         let ms = self.timeout.as_millis();
         let head = format!("no reply from drive id {} to {} of {} within {ms} ms", req.id, verb(req), req.object());
         let likely = if let Some(b) = bad_checksum {
-            format!("likely cause: bad checksum — the frame ends in {:02X}, the bytes before it need {:02X}", b.got, b.want)
+            format!(
+                "likely cause: bad checksum — the frame ends in {:02X}, the bytes before it need {:02X}",
+                b.got, b.want
+            )
         } else if !partial.is_empty() {
             format!(
                 "likely cause: bad checksum — only {} stray byte(s) came back ({}), so frames are being corrupted on the line (baud rate or wiring)",
@@ -180,10 +185,7 @@ impl Driver {
                 req.object()
             )
         } else if is_statusword && self.answered && req.id == self.id {
-            format!(
-                "likely cause: the drive stopped answering — id {} answered before; check power and cable",
-                req.id
-            )
+            format!("likely cause: the drive stopped answering — id {} answered before; check power and cable", req.id)
         } else {
             format!(
                 "likely cause: wrong id — nothing answers on drive id {} (factory id 1, panel d5.01; also check power, cable and baud rate)",

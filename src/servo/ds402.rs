@@ -278,7 +278,11 @@ fn step(ops: &mut dyn ServoOps, w: &Waiter, what: &str, cw: u16, want: &[State])
                 names.join(" or "),
                 st.map(State::name).unwrap_or("unknown state")
             ))
-            .hint(if sw & 0x08 != 0 { "the drive is in fault: run servo fault-reset" } else { "check servo status" }));
+            .hint(if sw & 0x08 != 0 {
+                "the drive is in fault: run servo fault-reset"
+            } else {
+                "check servo status"
+            }));
         }
         w.sleep(POLL)?;
     }
@@ -437,10 +441,7 @@ pub fn wait_target(ops: &mut dyn ServoOps, w: &Waiter, timeout: Duration) -> Res
             let pos = read(ops, "position_actual").map(|p| format!(", position_actual {p}")).unwrap_or_default();
             return Err(Error::new(
                 ErrorKind::Timeout,
-                format!(
-                    "target not reached within {:.3} s (statusword 16#{sw:04X}{pos})",
-                    timeout.as_secs_f64()
-                ),
+                format!("target not reached within {:.3} s (statusword 16#{sw:04X}{pos})", timeout.as_secs_f64()),
             )
             .hint("a longer timeout=, or servo status to see why"));
         }

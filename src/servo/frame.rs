@@ -177,11 +177,23 @@ pub enum Reply {
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Mismatch {
     BadChecksum(BadChecksum),
-    Id { got: u8, want: u8 },
-    Object { got: String, want: String },
-    Func { got: u8, request: u8 },
+    Id {
+        got: u8,
+        want: u8,
+    },
+    Object {
+        got: String,
+        want: String,
+    },
+    Func {
+        got: u8,
+        request: u8,
+    },
     /// A write acknowledgement whose data differs from the request.
-    Echo { got: u32, want: u32 },
+    Echo {
+        got: u32,
+        want: u32,
+    },
 }
 
 impl fmt::Display for Mismatch {

@@ -84,13 +84,22 @@ pub fn open_serial(path: &str, baud: u32) -> Result<Box<dyn Transport>> {
         .map_err(|e| {
             Error::link(format!("cannot open serial port {path}"))
                 .cause(e)
-                .hint("check the path (ls /dev/ttyUSB* /dev/ttyS*) and that your user may open it (group dialout)")
+                .hint("check the path (ls /dev/ttyUSB* /dev/ttyS*), that your user may open it (group dialout) and that no other program holds it")
         })?;
     Ok(Box::new(Serial(port)))
 }
 
 /// A serial port.
 pub struct Serial(pub serialport::TTYPort);
+
+impl Drop for Serial {
+    /// Clears TIOCEXCL before closing, as a precaution: on a pty whose server keeps the
+    /// slave open (the simulator) the tty is never fully closed, and the flag must not
+    /// outlive this client and refuse the next one.
+    fn drop(&mut self) {
+        let _ = self.0.set_exclusive(false);
+    }
+}
 
 fn timed_out(e: &io::Error) -> bool {
     matches!(e.kind(), io::ErrorKind::TimedOut | io::ErrorKind::WouldBlock)

@@ -68,6 +68,7 @@ impl Object {
 use Access::{ReadOnly as RO, ReadWrite as RW};
 use DataType::{Byte as U8, DInt as I32, DWord as U32, Int as I16, SInt as I8, Word as U16};
 
+#[allow(clippy::too_many_arguments)] // one table row: the columns are the arguments
 const fn o(
     name: &'static str,
     index: u16,
@@ -250,8 +251,10 @@ pub fn parse(text: &str) -> Result<ObjRef> {
         }
         (None, Some(dt)) => dt,
         (None, None) => {
-            return Err(operand_err(format!("{index:04X}.{sub:02X} is not in the object table, so its size is unknown"))
-                .hint(format!("add a type suffix, e.g. {index:04X}.{sub:02X}/u16 (u8, i8, u16, i16, u32, i32)")))
+            return Err(operand_err(format!(
+                "{index:04X}.{sub:02X} is not in the object table, so its size is unknown"
+            ))
+            .hint(format!("add a type suffix, e.g. {index:04X}.{sub:02X}/u16 (u8, i8, u16, i16, u32, i32)")))
         }
     };
     Ok(ObjRef { index, sub, dtype })

@@ -39,13 +39,13 @@ enum Task {
 /// Default values at power-up, by object name (everything else starts at 0).
 const DEFAULTS: &[(&str, i64)] = &[
     ("operating_mode", 1),
-    ("profile_velocity", 273_067),        // 100 rpm at R = 10000
-    ("profile_acceleration", 16_384),     // 100 rps/s
-    ("profile_deceleration", 16_384),     // 100 rps/s
-    ("quickstop_deceleration", 163_840),  // 1000 rps/s
-    ("homing_speed_switch", 136_533),     // 50 rpm
-    ("homing_speed_zero", 27_307),        // 10 rpm
-    ("homing_acceleration", 16_384),      // 100 rps/s
+    ("profile_velocity", 273_067),       // 100 rpm at R = 10000
+    ("profile_acceleration", 16_384),    // 100 rps/s
+    ("profile_deceleration", 16_384),    // 100 rps/s
+    ("quickstop_deceleration", 163_840), // 1000 rps/s
+    ("homing_speed_switch", 136_533),    // 50 rpm
+    ("homing_speed_zero", 27_307),       // 10 rpm
+    ("homing_acceleration", 16_384),     // 100 rps/s
     ("homing_method", 19),
     ("position_window", 10),
     ("max_following_error", 10_000),

@@ -178,8 +178,7 @@ fn status(ops: &mut dyn ServoOps) -> Result<Outcome> {
     for (bit, name) in &st.bits {
         rows.push(vec![format!("bit {bit}"), name.to_string()]);
     }
-    let bits: Vec<serde_json::Value> =
-        st.bits.iter().map(|(b, n)| serde_json::json!({"bit": b, "name": n})).collect();
+    let bits: Vec<serde_json::Value> = st.bits.iter().map(|(b, n)| serde_json::json!({"bit": b, "name": n})).collect();
     Ok(Outcome::new("servo")
         .table(&["field", "value"], rows)
         .with("state", &st.state)
@@ -208,10 +207,9 @@ fn value_for(space: &ServoSpace, name: &str, text: &str, col: usize) -> Result<i
 fn opt_int(opts: &[lex::Opt], key: &str, at: impl Fn(usize) -> usize) -> Result<Option<i64>> {
     match opts.iter().find(|o| o.1 == key) {
         None => Ok(None),
-        Some(&(c, _, v)) => v
-            .parse()
-            .map(Some)
-            .map_err(|_| Error::usage(format!("`{key}={v}` is not a whole number")).column(at(c))),
+        Some(&(c, _, v)) => {
+            v.parse().map(Some).map_err(|_| Error::usage(format!("`{key}={v}` is not a whole number")).column(at(c)))
+        }
     }
 }
 
@@ -225,7 +223,9 @@ fn profile(space: &ServoSpace, opts: &[lex::Opt], known: &[&str], at: usize, wit
             "acc" => p.acc = Some(value_for(space, "profile_acceleration", v, v_col)?),
             "dec" => p.dec = Some(value_for(space, "profile_deceleration", v, v_col)?),
             _ => {
-                return Err(Error::usage(format!("unknown option `{k}`")).column(c).hint(format!("options: {}", known.join(", "))))
+                return Err(Error::usage(format!("unknown option `{k}`"))
+                    .column(c)
+                    .hint(format!("options: {}", known.join(", "))))
             }
         }
     }
@@ -244,8 +244,9 @@ fn move_cmd(
     let (kind, target) = match pos.as_slice() {
         [(_, k), (c, p)] if *k == "abs" || *k == "rel" => (*k, value_for(space, "target_position", p, base + c)?),
         _ => {
-            return Err(Error::usage("usage: servo move abs|rel POS [speed=300rpm acc=100rps/s dec=100rps/s]")
-                .column(col))
+            return Err(
+                Error::usage("usage: servo move abs|rel POS [speed=300rpm acc=100rps/s dec=100rps/s]").column(col)
+            )
         }
     };
     let p = profile(space, &opts, &["speed", "acc", "dec"], base, true)?;
@@ -267,8 +268,9 @@ fn move_cmd(
 fn jog(ops: &mut dyn ServoOps, space: &ServoSpace, rest: &[lex::Word], base: usize, col: usize) -> Result<Outcome> {
     let (pos, opts) = lex::options(rest);
     let [(c, s)] = pos.as_slice() else {
-        return Err(Error::usage("usage: servo jog SPEED [acc=… dec=…], e.g. servo jog 300rpm; servo jog 0 stops")
-            .column(col));
+        return Err(
+            Error::usage("usage: servo jog SPEED [acc=… dec=…], e.g. servo jog 300rpm; servo jog 0 stops").column(col)
+        );
     };
     let speed = value_for(space, "target_velocity", s, base + c)?;
     let p = profile(space, &opts, &["acc", "dec"], base, false)?;
@@ -288,7 +290,9 @@ fn wait(ops: &mut dyn ServoOps, w: &Waiter, rest: &[lex::Word], base: usize, col
     let mut timeout = DEFAULT_WAIT;
     for &(c, k, v) in &opts {
         if k != "timeout" {
-            return Err(Error::usage(format!("unknown option `{k}`")).column(base + c).hint("servo wait target timeout=5s"));
+            return Err(Error::usage(format!("unknown option `{k}`"))
+                .column(base + c)
+                .hint("servo wait target timeout=5s"));
         }
         let us = parse_duration_us(v).map_err(|m| Error::usage(m).column(base + c + k.len() + 1))?;
         timeout = Duration::from_micros(us.max(0) as u64);
@@ -308,14 +312,19 @@ fn wait(ops: &mut dyn ServoOps, w: &Waiter, rest: &[lex::Word], base: usize, col
 /// plus `objects: [{operand, index, value, unit, eng, eng_unit}]`.
 fn read(ops: &mut dyn ServoOps, space: &ServoSpace, rest: &[lex::Word], base: usize, col: usize) -> Result<Outcome> {
     if rest.is_empty() {
-        return Err(Error::usage("servo read needs objects, e.g. servo read target_velocity position_actual").column(col));
+        return Err(
+            Error::usage("servo read needs objects, e.g. servo read target_velocity position_actual").column(col)
+        );
     }
     let r = space.resolution.get();
     let mut rows = Vec::new();
     let mut values = Vec::new();
     let mut objs = Vec::new();
     for &(c, text) in rest {
-        let o = objects::parse(text).map_err(|e| { let e = if e.column.is_none() { e.column(0) } else { e }; e.shift(base + c) })?;
+        let o = objects::parse(text).map_err(|e| {
+            let e = if e.column.is_none() { e.column(0) } else { e };
+            e.shift(base + c)
+        })?;
         let v = o.dtype.decode(ops.read_raw(o)?);
         let unit = o.object().map(|x| x.unit).unwrap_or(units::Unit::None);
         let eng = units::engineering(unit, v.as_i64(), r);
@@ -360,8 +369,8 @@ fn raw(ops: &mut dyn ServoOps, rest: &[lex::Word], base: usize, col: usize) -> R
     let mut bytes = Vec::new();
     for &(c, w) in rest {
         let h = w.trim_start_matches("0x").trim_start_matches("16#");
-        let b = u8::from_str_radix(h, 16)
-            .map_err(|_| Error::usage(format!("`{w}` is not a hex byte")).column(base + c))?;
+        let b =
+            u8::from_str_radix(h, 16).map_err(|_| Error::usage(format!("`{w}` is not a hex byte")).column(base + c))?;
         bytes.push(b);
     }
     let frame: [u8; FRAME_LEN] = match bytes.len() {
