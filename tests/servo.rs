@@ -234,3 +234,30 @@ fn units_and_refusals_from_the_command_line() {
     assert_eq!(l[0]["error"]["kind"], "unsupported");
     assert!(l[0]["error"]["message"].as_str().unwrap().contains("read-only"));
 }
+
+#[test]
+fn state_machine_commands_from_the_shell() {
+    let o = run(
+        &[
+            "--time",
+            "stepped",
+            "--json",
+            "-c",
+            "servo status; servo enable; servo jog 60rpm; sim step 1s; servo quickstop; servo disable; servo enable; servo sim fault 16#2310; servo status; servo fault-reset; servo fault-reset; servo mode homing; get servo:error_code",
+        ],
+        "",
+    );
+    let l = json_lines(&o);
+    assert!(o.status.success(), "{l:?}");
+    assert_eq!(l[0]["state"], "ready to switch on");
+    assert_eq!(l[0]["statusword"], 0x4231);
+    assert_eq!(l[4]["state"], "quick stop active");
+    assert_eq!(l[5]["state"], "switch on disabled", "disable from quick stop is disable voltage");
+    assert_eq!(l[8]["state"], "fault");
+    assert_eq!(l[8]["fault"], true);
+    assert_eq!(l[8]["bits"][0], serde_json::json!({"bit": 3, "name": "fault"}));
+    assert_eq!(l[9]["state"], "switch on disabled");
+    assert_eq!(l[10]["state"], "switch on disabled", "no fault: left alone");
+    assert_eq!(l[11]["mode"], 6);
+    assert_eq!(l[12]["values"][0]["value"], 0, "error code cleared by the reset");
+}

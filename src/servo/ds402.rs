@@ -311,13 +311,23 @@ pub fn enable(ops: &mut dyn ServoOps, w: &Waiter) -> Result<Vec<&'static str>> {
     Ok(vec!["shutdown", "switch on", "enable operation"])
 }
 
-/// `servo disable`: shutdown (the motor is no longer powered).
+/// `servo disable`: shutdown (0x06), so the motor is no longer powered; from "quick stop
+/// active", where CiA 402 has no shutdown transition, disable voltage (0x00).
 pub fn disable(ops: &mut dyn ServoOps, w: &Waiter) -> Result<State> {
+    if State::from_statusword(statusword(ops)?) == Some(State::QuickStopActive) {
+        return step(ops, w, "disable voltage", cw::DISABLE_VOLTAGE, &[State::SwitchOnDisabled]);
+    }
     step(ops, w, "shutdown", cw::SHUTDOWN, &[State::ReadyToSwitchOn, State::SwitchOnDisabled])
 }
 
 /// `servo fault-reset`: a rising edge on bit 7 (0x06, then 0x86 as Kinco's examples do).
+/// A drive that is not in fault is left alone (0x06 would disable it).
 pub fn fault_reset(ops: &mut dyn ServoOps, w: &Waiter) -> Result<State> {
+    let sw = statusword(ops)?;
+    match State::from_statusword(sw) {
+        Some(State::Fault | State::FaultReactionActive) | None => {}
+        Some(s) => return Ok(s),
+    }
     write(ops, "controlword", cw::SHUTDOWN as i64)?;
     step(
         ops,
