@@ -75,7 +75,7 @@ fn main() {
         let url = format!("kinco:{}?id=1&baud={baud}", link.display());
         let mut d = open_url(&url, &Clock::following()).unwrap();
         run(&format!("pty + served sim (baud={baud} set)"), d.as_mut(), "statusword");
-        run(&format!("pty + served sim, 32-bit object"), d.as_mut(), "position_actual");
+        run(&format!("  same, 32-bit object (baud={baud})"), d.as_mut(), "position_actual");
     }
     let mut d = open_url("sim-servo:?id=1", &Clock::following()).unwrap();
     run("in-process sim-servo (no pty)", d.as_mut(), "statusword");
