@@ -76,7 +76,8 @@ fn enable_move_wait_and_read_back_over_a_real_pty() {
     assert_ne!(sw & (1 << 10), 0);
     let pos = d.operands().parse("position_actual").unwrap()[0];
     assert_eq!(d.read(&[pos]).unwrap(), vec![Value::Int(10_000)]);
-    // Drive 1 on the same line was not touched.
+    // Drive 1 on the same line was not touched. (Both devices share one open port: a second
+    // open of the exclusive port would fail, so this also shows the line registry at work.)
     let mut d1 = open(&srv.url("id=1"));
     assert_eq!(d1.read(&[pos]).unwrap(), vec![Value::Int(0)]);
 }
@@ -84,15 +85,16 @@ fn enable_move_wait_and_read_back_over_a_real_pty() {
 #[test]
 fn silence_over_a_pty_is_diagnosed_and_the_link_recovers() {
     let srv = Server::start("silence", &[]);
-    // Wrong id: nothing answers id 7.
+    // Both devices are open at once and share the port (this process never reopens a port
+    // it closed: a child forked meanwhile by a parallel test could still hold its lock).
     let mut wrong = open(&srv.url("id=7&timeout=150ms"));
+    let mut d = open(&srv.url("id=1&timeout=150ms"));
+    // Wrong id: nothing answers id 7.
     let sw = wrong.operands().parse("statusword").unwrap()[0];
     let e = wrong.read(&[sw]).unwrap_err();
     assert_eq!(e.kind, ErrorKind::Link);
     assert!(e.message.contains("likely cause: wrong id"), "{e}");
     assert!(e.hint.as_deref().unwrap().contains("(3) a bad checksum"), "{e:?}");
-    drop(wrong);
-    let mut d = open(&srv.url("id=1&timeout=150ms"));
     // Bad checksum: the served drive ignores the frame.
     let mut bad = Frame::read(1, 0x6041, 0).to_bytes();
     bad[9] ^= 0x55;
@@ -111,6 +113,13 @@ fn silence_over_a_pty_is_diagnosed_and_the_link_recovers() {
 #[test]
 fn read_only_write_gets_the_abort_code_in_words_over_a_pty() {
     let srv = Server::start("abort", &[]);
+    // Through the binary's `servo raw`, as JSON (first: the port is exclusive, and this
+    // process opens it below).
+    let o =
+        run(&["-d", &format!("ax={}", srv.url("id=1")), "--json", "-c", "servo ax raw 01 2B 41 60 00 01 00 00 00"], "");
+    let l = json_lines(&o);
+    assert_eq!(l[0]["abort_code"], 0x0601_0002, "{l:?}");
+    assert_eq!(l[0]["abort"], "attempt to write a read-only object");
     let mut d = open(&srv.url("id=1"));
     // The table refuses it before sending …
     let sw = d.operands().parse("statusword").unwrap()[0];
@@ -120,13 +129,6 @@ fn read_only_write_gets_the_abort_code_in_words_over_a_pty() {
     let e = d.as_servo().unwrap().write_raw(ObjRef::of(objects::named("statusword")), 1).unwrap_err();
     assert_eq!(e.kind, ErrorKind::Refused);
     assert!(e.message.contains("16#06010002 — attempt to write a read-only object"), "{e}");
-    // The same through the binary's `servo raw`, as JSON (the port is exclusive: close ours).
-    drop(d);
-    let o =
-        run(&["-d", &format!("ax={}", srv.url("id=1")), "--json", "-c", "servo ax raw 01 2B 41 60 00 01 00 00 00"], "");
-    let l = json_lines(&o);
-    assert_eq!(l[0]["abort_code"], 0x0601_0002, "{l:?}");
-    assert_eq!(l[0]["abort"], "attempt to write a read-only object");
 }
 
 #[test]
