@@ -38,6 +38,7 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             [CompletionResult]::new('models', 'models', [CompletionResultType]::ParameterValue, 'List the K2 model catalogue (areas, I/O, counters, pulse outputs, manual disagreements)')
             [CompletionResult]::new('devices', 'devices', [CompletionResultType]::ParameterValue, 'List open devices and the device profiles (devices.toml), with problems in that file')
             [CompletionResult]::new('completions', 'completions', [CompletionResultType]::ParameterValue, 'Print a shell completion script (bash, zsh, fish, powershell), or write them all')
+            [CompletionResult]::new('sim', 'sim', [CompletionResultType]::ParameterValue, 'Simulators for other programs (`sim serve`)')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
         }
@@ -81,10 +82,53 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             break
         }
+        'plcsh;sim' {
+            [CompletionResult]::new('--model', '--model', [CompletionResultType]::ParameterName, 'Model of the default simulated PLC')
+            [CompletionResult]::new('-d', '-d', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
+            [CompletionResult]::new('--device', '--device', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
+            [CompletionResult]::new('--time', '--time', [CompletionResultType]::ParameterName, 'Simulator time: follow the wall clock, or move only when stepped')
+            [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'Print one JSON object per command result')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('serve', 'serve', [CompletionResultType]::ParameterValue, 'Serve simulators on pseudo-terminals; prints one JSON readiness line')
+            [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
+            break
+        }
+        'plcsh;sim;serve' {
+            [CompletionResult]::new('--servo-pty', '--servo-pty', [CompletionResultType]::ParameterName, 'Serve simulated Kinco servo drives on a new pseudo-terminal; LINK becomes a symlink to it')
+            [CompletionResult]::new('--servo-id', '--servo-id', [CompletionResultType]::ParameterName, 'Drive ids on the servo line (several drives share it)')
+            [CompletionResult]::new('--model', '--model', [CompletionResultType]::ParameterName, 'Model of the default simulated PLC')
+            [CompletionResult]::new('-d', '-d', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
+            [CompletionResult]::new('--device', '--device', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
+            [CompletionResult]::new('--time', '--time', [CompletionResultType]::ParameterName, 'Simulator time: follow the wall clock, or move only when stepped')
+            [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)')
+            [CompletionResult]::new('--servo-loop', '--servo-loop', [CompletionResultType]::ParameterName, 'RS232 loop mode: echo every request before the reply (connect with echo=1)')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'Print one JSON object per command result')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            break
+        }
+        'plcsh;sim;help' {
+            [CompletionResult]::new('serve', 'serve', [CompletionResultType]::ParameterValue, 'Serve simulators on pseudo-terminals; prints one JSON readiness line')
+            [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
+            break
+        }
+        'plcsh;sim;help;serve' {
+            break
+        }
+        'plcsh;sim;help;help' {
+            break
+        }
         'plcsh;help' {
             [CompletionResult]::new('models', 'models', [CompletionResultType]::ParameterValue, 'List the K2 model catalogue (areas, I/O, counters, pulse outputs, manual disagreements)')
             [CompletionResult]::new('devices', 'devices', [CompletionResultType]::ParameterValue, 'List open devices and the device profiles (devices.toml), with problems in that file')
             [CompletionResult]::new('completions', 'completions', [CompletionResultType]::ParameterValue, 'Print a shell completion script (bash, zsh, fish, powershell), or write them all')
+            [CompletionResult]::new('sim', 'sim', [CompletionResultType]::ParameterValue, 'Simulators for other programs (`sim serve`)')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
         }
@@ -95,6 +139,13 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             break
         }
         'plcsh;help;completions' {
+            break
+        }
+        'plcsh;help;sim' {
+            [CompletionResult]::new('serve', 'serve', [CompletionResultType]::ParameterValue, 'Serve simulators on pseudo-terminals; prints one JSON readiness line')
+            break
+        }
+        'plcsh;help;sim;serve' {
             break
         }
         'plcsh;help;help' {

@@ -59,7 +59,11 @@ pub struct Session {
 
 /// URL schemes with what they open, for completion and hints. Keep in step with [`open_url`]
 /// (a test checks that every scheme listed here is one `open_url` knows).
-pub const SCHEMES: &[(&str, &str)] = &[("sim:", "in-process K2 simulator: sim:MODEL")];
+pub const SCHEMES: &[(&str, &str)] = &[
+    ("sim:", "in-process K2 simulator: sim:MODEL"),
+    ("kinco:", "Kinco servo drive on a serial port: kinco:/dev/ttyUSB0?id=1&baud=38400"),
+    ("sim-servo:", "in-process Kinco servo simulator: sim-servo:?id=1"),
+];
 
 /// Opens a device from its URL. Every scheme plcsh knows is listed here.
 pub fn open_url(url: &str, clock: &Clock) -> Result<Box<dyn Device>> {
@@ -70,9 +74,10 @@ pub fn open_url(url: &str, clock: &Clock) -> Result<Box<dyn Device>> {
             let model = u.param("model").unwrap_or(&u.target);
             crate::k2::open_sim(model, clock.clone())
         }
-        other => {
-            Err(Error::usage(format!("unknown device scheme `{other}:` in {url}")).hint("known schemes: sim:MODEL"))
-        }
+        "kinco" => crate::servo::driver::open_serial(&u),
+        "sim-servo" => crate::servo::driver::open_sim(&u, clock),
+        other => Err(Error::usage(format!("unknown device scheme `{other}:` in {url}"))
+            .hint("known schemes: sim:MODEL, kinco:/dev/ttyUSB0?id=1, sim-servo:?id=1")),
     }
 }
 

@@ -29,7 +29,7 @@ impl Drop for Server {
 
 fn serve() -> Option<(Server, String)> {
     let probe = plcsh().args(["sim", "serve", "--help"]).stdin(Stdio::null()).output().unwrap();
-    if !probe.status.success() {
+    if !probe.status.success() || !String::from_utf8_lossy(&probe.stdout).contains("--tcp") {
         eprintln!("this build has no `plcsh sim serve` (the wire branch is not merged): skipping");
         return None;
     }

@@ -5,6 +5,7 @@
 
 pub mod completions;
 mod models;
+mod serve;
 
 use crate::core::{Clock, ErrorKind};
 use crate::k2::catalog;
@@ -66,6 +67,17 @@ pub enum Sub {
         #[arg(long, value_name = "DIR")]
         write: Option<std::path::PathBuf>,
     },
+    /// Simulators for other programs (`sim serve`).
+    Sim {
+        #[command(subcommand)]
+        cmd: SimCmd,
+    },
+}
+
+#[derive(Subcommand, Debug)]
+pub enum SimCmd {
+    /// Serve simulators on pseudo-terminals; prints one JSON readiness line.
+    Serve(serve::ServeArgs),
 }
 
 /// Splits `NAME=URL` (or a bare URL, named `plc`; or a bare profile name, named after itself).
@@ -84,7 +96,8 @@ pub fn split_device_arg(arg: &str) -> (String, String) {
     ("plc".to_string(), arg.to_string())
 }
 
-/// Builds the session the flags describe: `plc` on the simulator, then every `--device`.
+/// Builds the session the flags describe: `plc` on the simulator, a simulated drive
+/// `servo`, then every `--device`.
 pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
     let clock = match cli.time {
         TimeMode::Wall => Clock::following(),
@@ -96,6 +109,7 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
     }
     s.open("plc", &format!("sim:{}", cli.model))?;
     let mut current = "plc".to_string();
+    s.open("servo", "sim-servo:?id=1")?;
     for d in &cli.devices {
         let (name, url) = split_device_arg(d);
         s.open(&name, &url)?;
@@ -148,6 +162,7 @@ pub fn main() -> i32 {
             }
             Sub::Completions { shell, write } => completions::run(*shell, write.as_deref(), &mut out),
             Sub::Devices => i32::from(!shell.run_line("devices", &mut out)),
+            Sub::Sim { cmd: SimCmd::Serve(a) } => serve::run(a),
         };
     }
     if let Some(cmds) = &cli.command {

@@ -466,7 +466,11 @@ mod tests {
         let (_, all) = texts("");
         assert_eq!(all.len(), COMMANDS.len(), "every command is offered on an empty line");
         assert_eq!(texts("sim s"), (4, vec!["step".to_string()]));
-        assert_eq!(texts("get VW0; se").1, vec!["set".to_string()], "the command after `;`");
+        let after = texts("get VW0; se").1;
+        assert!(
+            after.contains(&"set".to_string()) && after.iter().all(|c| c.starts_with("se")),
+            "the command after `;`"
+        );
         assert!(texts("exi").1.contains(&"exit".to_string()), "aliases when no name matches");
     }
 

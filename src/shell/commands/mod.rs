@@ -5,6 +5,7 @@ mod device;
 mod help;
 mod io;
 pub mod profiles;
+mod servo;
 mod sim;
 mod trend;
 mod watch;
@@ -37,6 +38,7 @@ pub const COMMANDS: &[CommandSpec] = &[
     watch::WATCH,
     trend::TRACE,
     trend::PLOT,
+    servo::SERVO,
     help::HELP,
     help::QUIT,
 ];

@@ -1,0 +1,87 @@
+//! Servo link benchmark (not part of `cargo test`): request/reply turnaround of the Kinco
+//! driver over a pseudo-terminal against the simulator served by the real binary
+//! (`plcsh sim serve --servo-pty`), next to the wire-time floor of a real RS232 line.
+//!
+//! Run: `cargo bench --bench servo_link`. A pty has no baud-rate pacing: bytes cross it at
+//! memory speed whatever baud rate the client sets, so the pty figures measure the
+//! software path (driver + kernel pty + simulator process), not a line.
+
+use plcsh::core::{Clock, Device};
+use plcsh::session::open_url;
+use std::io::{BufRead, BufReader};
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+const N: usize = 5000;
+
+fn floor(baud: u32) -> Duration {
+    // 10 bytes × 10 bits (start + 8 data + stop) each way.
+    Duration::from_secs_f64(2.0 * 10.0 * 10.0 / baud as f64)
+}
+
+fn percentile(sorted: &[Duration], p: f64) -> Duration {
+    sorted[((sorted.len() as f64 - 1.0) * p).round() as usize]
+}
+
+fn run(label: &str, d: &mut dyn Device, op_name: &str) {
+    let op = d.operands().parse(op_name).unwrap()[0];
+    for _ in 0..200 {
+        d.read(&[op]).unwrap();
+    }
+    let mut each = Vec::with_capacity(N);
+    let start = Instant::now();
+    for _ in 0..N {
+        let t = Instant::now();
+        d.read(&[op]).unwrap();
+        each.push(t.elapsed());
+    }
+    let total = start.elapsed();
+    each.sort();
+    let tx = N as f64 / total.as_secs_f64();
+    println!(
+        "{label:<34} {tx:>9.0} req/s {:>9.0} frames/s   turnaround mean {:>7.1} µs  p50 {:>7.1} µs  p99 {:>7.1} µs  max {:>8.1} µs",
+        2.0 * tx,
+        total.as_secs_f64() * 1e6 / N as f64,
+        percentile(&each, 0.5).as_secs_f64() * 1e6,
+        percentile(&each, 0.99).as_secs_f64() * 1e6,
+        each[each.len() - 1].as_secs_f64() * 1e6,
+    );
+}
+
+fn main() {
+    let dir = std::env::temp_dir().join(format!("plcsh-servo-bench-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let link = dir.join("ttyKINCO");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_plcsh"))
+        .args(["sim", "serve", "--servo-pty", link.to_str().unwrap(), "--servo-id", "1"])
+        .stdout(Stdio::piped())
+        .spawn()
+        .expect("start plcsh sim serve");
+    let mut ready = String::new();
+    BufReader::new(child.stdout.take().unwrap()).read_line(&mut ready).unwrap();
+    println!("served simulator: {}", ready.trim());
+    println!("{N} statusword reads (one 10-byte request + one 10-byte reply each)\n");
+    for baud in [38_400u32, 115_200] {
+        let f = floor(baud);
+        println!(
+            "{:<34} {:>9.0} req/s {:>9.0} frames/s   turnaround floor {:>7.1} µs (wire time only)",
+            format!("RS232 wire floor @ {baud}"),
+            1.0 / f.as_secs_f64(),
+            2.0 / f.as_secs_f64(),
+            f.as_secs_f64() * 1e6
+        );
+    }
+    for baud in [38_400u32, 115_200] {
+        let url = format!("kinco:{}?id=1&baud={baud}", link.display());
+        let mut d = open_url(&url, &Clock::following()).unwrap();
+        run(&format!("pty + served sim (baud={baud} set)"), d.as_mut(), "statusword");
+        run(&format!("  same, 32-bit object (baud={baud})"), d.as_mut(), "position_actual");
+    }
+    let mut d = open_url("sim-servo:?id=1", &Clock::following()).unwrap();
+    run("in-process sim-servo (no pty)", d.as_mut(), "statusword");
+    println!("\nnote: a pty does not pace bytes at the baud rate; the figures above the floor are software cost.");
+    let pid = nix::unistd::Pid::from_raw(child.id() as i32);
+    let _ = nix::sys::signal::kill(pid, nix::sys::signal::Signal::SIGTERM);
+    let _ = child.wait();
+    let _ = std::fs::remove_dir_all(&dir);
+}

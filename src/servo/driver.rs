@@ -1,0 +1,565 @@
+//! The Kinco servo driver: a [`Device`] speaking the 10-byte RS232 protocol over any
+//! [`Transport`] — a serial port (`kinco:/dev/ttyUSB0?baud=38400&id=1`), a pty served by
+//! `plcsh sim serve`, or the in-process simulator (`sim-servo:?id=1`, which therefore runs
+//! this same code).
+//!
+//! Several drives on one line: one device per drive id, sharing the port
+//! (`--device ax1=kinco:/dev/ttyUSB0?id=1 --device ax2=kinco:/dev/ttyUSB0?id=2`); the line
+//! registry in [`super::link`] opens the port once and serialises requests. This keeps
+//! each drive a named device with its own operands, units and `servo` helpers, instead of
+//! an id inside every operand.
+//!
+//! One request, one reply (§2). Replies are checked against the request (id, object,
+//! function, echoed data); a mismatch or a bad checksum is a link error. No reply within
+//! the timeout is a link error that lists the manual's three causes (wrong id, unknown
+//! object, bad checksum; seed §2.4) and says which is likely, found by asking the same id
+//! for its statusword: if that answers, the object is probably unknown; if not, the id is
+//! probably wrong. In loop mode (`echo=1`, public notes "RS232 loop") the echoed request is
+//! read and compared first; an echo that differs means the line corrupts frames, so the
+//! drive sees a bad checksum.
+//!
+//! URL parameters: `id` (default 1), `baud` (38400), `echo` (0), `timeout` (200ms; a
+//! number is milliseconds), `encoder` (10000, or `auto` to read 6410.03 at open);
+//! `sim-servo:` also takes `drives=1,2` (the simulated ids on the line, default the `id`).
+//! `sim-servo:NAME?…` devices with the same NAME share one simulated line.
+
+use super::frame::{self, abort_text, decode_reply, Frame, Reply, Size, FRAME_LEN};
+use super::link::{self, SharedLine, Transport};
+use super::objects::{ObjRef, ServoSpace};
+use super::sim::{SimLine, SimLink};
+use super::units::{self, Resolution};
+use super::ServoOps;
+use crate::core::literal::parse_duration_us;
+use crate::core::trace::{self, Dir};
+use crate::core::url::DeviceUrl;
+use crate::core::{Clock, Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
+
+/// Factory baud rate (seed §1).
+pub const DEFAULT_BAUD: u32 = 38_400;
+/// Default reply timeout. A frame takes 2.6 ms at 38400 baud each way; drives answer
+/// within a few ms.
+pub const DEFAULT_TIMEOUT: Duration = Duration::from_millis(200);
+
+/// The manual's three reasons a drive stays silent (seed §2.4).
+pub const SILENCE_CAUSES: &str =
+    "a Kinco drive does not answer (1) a wrong drive id, (2) an object that does not exist, (3) a bad checksum (manual §2.4)";
+
+/// What came back for one request.
+enum Exchange {
+    Reply([u8; FRAME_LEN]),
+    /// Nothing whole arrived; `partial` holds any stray bytes.
+    Silent {
+        partial: Vec<u8>,
+    },
+}
+
+/// A Kinco servo drive on some transport.
+pub struct Driver {
+    info: DeviceInfo,
+    space: ServoSpace,
+    line: SharedLine,
+    id: u8,
+    echo: bool,
+    timeout: Duration,
+    requests: u64,
+    /// This id has answered at least once.
+    answered: bool,
+}
+
+impl Driver {
+    /// A driver for drive `id` on `line`.
+    pub fn attach(line: SharedLine, id: u8, echo: bool, timeout: Duration, info: DeviceInfo) -> Driver {
+        Driver { info, space: ServoSpace::default(), line, id, echo, timeout, requests: 0, answered: false }
+    }
+
+    pub fn id(&self) -> u8 {
+        self.id
+    }
+
+    pub fn resolution(&self) -> &Resolution {
+        &self.space.resolution
+    }
+
+    fn read_exact(t: &mut dyn Transport, want: usize, deadline: Instant) -> std::io::Result<Vec<u8>> {
+        let mut got = vec![0u8; want];
+        let mut n = 0;
+        while n < want {
+            let left = deadline.saturating_duration_since(Instant::now());
+            let k = t.recv(&mut got[n..], left)?;
+            if k == 0 {
+                break;
+            }
+            n += k;
+        }
+        got.truncate(n);
+        Ok(got)
+    }
+
+    /// Sends one frame and collects the reply (skipping the echo in loop mode).
+    fn exchange(&mut self, bytes: &[u8; FRAME_LEN]) -> Result<Exchange> {
+        self.requests += 1;
+        let name = self.line.name.clone();
+        let mut t = self.line.transport.lock().unwrap_or_else(|p| p.into_inner());
+        let io_err = |e: std::io::Error| Error::link(format!("serial I/O on {name} failed")).cause(e);
+        t.discard_input().map_err(io_err)?;
+        trace::frame(&name, Dir::Sent, bytes);
+        t.send(bytes).map_err(io_err)?;
+        let deadline = Instant::now() + self.timeout;
+        if self.echo {
+            let echo = Self::read_exact(t.as_mut(), FRAME_LEN, deadline).map_err(io_err)?;
+            if echo.len() < FRAME_LEN {
+                return Err(Error::link(format!("no echo of the request on {name} (loop mode is on)"))
+                    .hint("the loop is open (cable) or the line is not in loop mode: drop echo=1 from the URL"));
+            }
+            trace::frame(&name, Dir::Received, &echo);
+            if echo != bytes {
+                return Err(Error::link(format!(
+                    "the echo differs from the request on {name}: sent {}, echoed {}; likely cause: bad checksum — the drive ignores a corrupted frame",
+                    trace::hex_bytes(bytes),
+                    trace::hex_bytes(&echo)
+                ))
+                .hint("check the baud rate (drive default 38400, panel d5.02) and the wiring"));
+            }
+        }
+        let got = Self::read_exact(t.as_mut(), FRAME_LEN, deadline).map_err(io_err)?;
+        if !got.is_empty() {
+            trace::frame(&name, Dir::Received, &got);
+        }
+        Ok(match <[u8; FRAME_LEN]>::try_from(got.as_slice()) {
+            Ok(b) => Exchange::Reply(b),
+            Err(_) => Exchange::Silent { partial: got },
+        })
+    }
+
+    /// One request: send, check the reply, decode it; diagnose silence.
+    pub fn transact(&mut self, req: Frame, size: Size) -> Result<Reply> {
+        match self.exchange(&req.to_bytes())? {
+            Exchange::Reply(b) => match decode_reply(&req, &b, size) {
+                Ok(r) => {
+                    self.answered = true;
+                    Ok(r)
+                }
+                Err(m) => Err(Error::link(format!("bad reply to {} of {}: {m}", verb(&req), req.object()))
+                    .hint("another master or drive may be talking on the line, or the baud rate is wrong")),
+            },
+            Exchange::Silent { partial } => Err(self.silence(&req, &partial, None)),
+        }
+    }
+
+    /// The link error for a request nobody answered, with the likely cause.
+    fn silence(&mut self, req: &Frame, partial: &[u8], bad_checksum: Option<frame::BadChecksum>) -> Error {
+        let ms = self.timeout.as_millis();
+        let head = format!("no reply from drive id {} to {} of {} within {ms} ms", req.id, verb(req), req.object());
+        let likely = if let Some(b) = bad_checksum {
+            format!(
+                "likely cause: bad checksum — the frame ends in {:02X}, the bytes before it need {:02X}",
+                b.got, b.want
+            )
+        } else if !partial.is_empty() {
+            format!(
+                "likely cause: bad checksum — only {} stray byte(s) came back ({}), so frames are being corrupted on the line (baud rate or wiring)",
+                partial.len(),
+                trace::hex_bytes(partial)
+            )
+        } else {
+            self.probe(req)
+        };
+        Error::link(format!("{head}; {likely}")).hint(SILENCE_CAUSES)
+    }
+
+    /// Asks the same id for its statusword to tell "wrong id" from "unknown object".
+    fn probe(&mut self, req: &Frame) -> String {
+        let is_statusword = (req.index, req.sub) == (0x6041, 0) && req.func == frame::func::READ;
+        let answers = if is_statusword {
+            false
+        } else {
+            let probe = Frame::read(req.id, 0x6041, 0);
+            matches!(self.exchange(&probe.to_bytes()), Ok(Exchange::Reply(b)) if decode_reply(&probe, &b, Size::B2).is_ok())
+        };
+        if answers {
+            format!(
+                "likely cause: unknown object — drive id {} answers statusword reads, so {} probably does not exist on this drive",
+                req.id,
+                req.object()
+            )
+        } else if is_statusword && self.answered && req.id == self.id {
+            format!("likely cause: the drive stopped answering — id {} answered before; check power and cable", req.id)
+        } else {
+            format!(
+                "likely cause: wrong id — nothing answers on drive id {} (factory id 1, panel d5.01; also check power, cable and baud rate)",
+                req.id
+            )
+        }
+    }
+
+    fn refused(&self, req: &Frame, what: &str, code: u32) -> Error {
+        Error::new(
+            ErrorKind::Refused,
+            format!(
+                "drive id {} refused the {} of {what}: abort code 16#{code:08X} — {}",
+                req.id,
+                verb(req),
+                abort_text(code)
+            ),
+        )
+        .operand(what)
+    }
+
+    /// Reads one object's raw value (masked to its size).
+    pub fn read_obj(&mut self, r: ObjRef) -> Result<u32> {
+        let req = Frame::read(self.id, r.index, r.sub);
+        match self.transact(req, r.size())? {
+            Reply::Value(v) => Ok(v),
+            Reply::Abort(code) => Err(self.refused(&req, &r.name(), code)),
+            Reply::Written => unreachable!("decode_reply refuses a write acknowledgement to a read"),
+        }
+    }
+
+    /// Writes one object's raw value; the function code follows the object's size.
+    pub fn write_obj(&mut self, r: ObjRef, raw: u32) -> Result<()> {
+        let req = Frame::write(self.id, r.index, r.sub, r.size(), raw);
+        match self.transact(req, r.size())? {
+            Reply::Written => Ok(()),
+            Reply::Abort(code) => Err(self.refused(&req, &r.name(), code)),
+            Reply::Value(_) => unreachable!("decode_reply refuses a read reply to a write"),
+        }
+    }
+
+    /// Sends a hand-made frame as is; returns the reply bytes. Silence is diagnosed,
+    /// including a bad checksum in the frame itself.
+    pub fn raw(&mut self, bytes: [u8; FRAME_LEN]) -> Result<[u8; FRAME_LEN]> {
+        let bad = Frame::from_bytes(&bytes).err();
+        match self.exchange(&bytes)? {
+            Exchange::Reply(b) => Ok(b),
+            Exchange::Silent { partial } => {
+                let req = Frame {
+                    id: bytes[0],
+                    func: bytes[1],
+                    index: u16::from_le_bytes([bytes[2], bytes[3]]),
+                    sub: bytes[4],
+                    data: 0,
+                };
+                Err(self.silence(&req, &partial, bad))
+            }
+        }
+    }
+
+    fn sim(&self) -> Option<Arc<Mutex<SimLine>>> {
+        self.line.transport.lock().unwrap_or_else(|p| p.into_inner()).sim_line()
+    }
+
+    /// Reads the encoder resolution from 6410.03 and uses it for unit conversion.
+    pub fn read_resolution(&mut self) -> Result<u32> {
+        let r = self.read_obj(ObjRef::of(super::objects::named("encoder_resolution")))?;
+        if r == 0 {
+            return Err(Error::state("the drive reports encoder resolution 0 (6410.03)"));
+        }
+        self.space.resolution.set(r);
+        Ok(r)
+    }
+}
+
+fn verb(f: &Frame) -> &'static str {
+    if f.func == frame::func::READ {
+        "read"
+    } else {
+        "write"
+    }
+}
+
+impl Device for Driver {
+    fn info(&self) -> &DeviceInfo {
+        &self.info
+    }
+
+    fn operands(&self) -> &dyn OperandSpace {
+        &self.space
+    }
+
+    fn read(&mut self, ops: &[Operand]) -> Result<Vec<Value>> {
+        ops.iter()
+            .map(|op| {
+                let r = ObjRef::from_operand(op);
+                if let Some(o) = r.object().filter(|o| !o.readable()) {
+                    return Err(Error::unsupported(format!("{} is write-only", o.name)).operand(o.name));
+                }
+                Ok(r.dtype.decode(self.read_obj(r)?))
+            })
+            .collect()
+    }
+
+    fn write(&mut self, items: &[(Operand, Value)]) -> Result<()> {
+        for (op, _) in items {
+            self.space.check_writable(&ObjRef::from_operand(op))?;
+        }
+        for (op, v) in items {
+            let r = ObjRef::from_operand(op);
+            self.write_obj(r, r.dtype.encode(v))?;
+        }
+        Ok(())
+    }
+
+    fn requests(&self) -> u64 {
+        self.requests
+    }
+
+    fn as_servo(&mut self) -> Option<&mut dyn ServoOps> {
+        Some(self)
+    }
+
+    fn set_option(&mut self, key: &str, value: &str) -> Result<()> {
+        match key {
+            "encoder" if value == "auto" => self.read_resolution().map(|_| ()),
+            "encoder" => {
+                self.space.resolution.set(units::parse_resolution(value).map_err(Error::usage)?);
+                Ok(())
+            }
+            "timeout" => {
+                self.timeout = parse_timeout(value)?;
+                Ok(())
+            }
+            _ => Err(Error::usage(format!("servo devices have no option `{key}`")).hint("options: encoder, timeout")),
+        }
+    }
+}
+
+impl ServoOps for Driver {
+    fn drive_id(&self) -> u8 {
+        self.id
+    }
+    fn resolution(&self) -> Resolution {
+        self.space.resolution.clone()
+    }
+    fn read_raw(&mut self, obj: ObjRef) -> Result<u32> {
+        self.read_obj(obj)
+    }
+    fn write_raw(&mut self, obj: ObjRef, raw: u32) -> Result<()> {
+        self.write_obj(obj, raw)
+    }
+    fn raw_frame(&mut self, bytes: [u8; FRAME_LEN]) -> Result<[u8; FRAME_LEN]> {
+        self.raw(bytes)
+    }
+    fn read_resolution(&mut self) -> Result<u32> {
+        Driver::read_resolution(self)
+    }
+    fn simulator(&mut self) -> Option<Arc<Mutex<SimLine>>> {
+        self.sim()
+    }
+}
+
+fn parse_timeout(v: &str) -> Result<Duration> {
+    let us = match v.parse::<u64>() {
+        Ok(ms) => ms as i64 * 1000,
+        Err(_) => parse_duration_us(v).map_err(Error::usage)?,
+    };
+    if us <= 0 {
+        return Err(Error::usage(format!("timeout `{v}` must be positive (e.g. 200ms)")));
+    }
+    Ok(Duration::from_micros(us as u64))
+}
+
+/// Shared URL settings of both schemes.
+struct Common {
+    id: u8,
+    echo: bool,
+    timeout: Duration,
+    encoder: Option<String>,
+}
+
+fn common(u: &DeviceUrl) -> Result<Common> {
+    let id = u.param_num::<u8>("id")?.unwrap_or(1);
+    let echo = match u.param("echo").or(u.param("loop")) {
+        None | Some("0") | Some("false") | Some("off") => false,
+        Some("1") | Some("true") | Some("on") | Some("") => true,
+        Some(v) => return Err(Error::usage(format!("`echo={v}` in {} is not 0 or 1", u.text))),
+    };
+    let timeout = u.param("timeout").map(parse_timeout).transpose()?.unwrap_or(DEFAULT_TIMEOUT);
+    Ok(Common { id, echo, timeout, encoder: u.param("encoder").map(str::to_string) })
+}
+
+fn finish(mut d: Driver, c: &Common) -> Result<Box<dyn Device>> {
+    if let Some(e) = &c.encoder {
+        d.set_option("encoder", e)?;
+    }
+    Ok(Box::new(d))
+}
+
+/// Opens `kinco:PORT?baud=38400&id=1&echo=0&timeout=200ms&encoder=10000`.
+pub fn open_serial(u: &DeviceUrl) -> Result<Box<dyn Device>> {
+    u.expect_params(&["id", "baud", "echo", "loop", "timeout", "encoder"])?;
+    let c = common(u)?;
+    let baud = u.param_num::<u32>("baud")?.unwrap_or(DEFAULT_BAUD);
+    if u.target.is_empty() {
+        return Err(Error::usage(format!("{} names no serial port", u.text)).hint("e.g. kinco:/dev/ttyUSB0?id=1"));
+    }
+    let settings = format!("{baud} baud 8N1{}", if c.echo { ", loop" } else { "" });
+    let line = link::shared(&u.target, &settings, || link::open_serial(&u.target, baud))?;
+    let info = DeviceInfo {
+        family: "servo",
+        model: format!("Kinco servo, id {}", c.id),
+        link: format!("{} ({settings})", u.target),
+        simulated: false,
+    };
+    finish(Driver::attach(line, c.id, c.echo, c.timeout, info), &c)
+}
+
+/// Opens `sim-servo:[NAME]?id=1&drives=1,2&echo=0`: the in-process simulator.
+pub fn open_sim(u: &DeviceUrl, clock: &Clock) -> Result<Box<dyn Device>> {
+    u.expect_params(&["id", "drives", "echo", "loop", "timeout", "encoder"])?;
+    let c = common(u)?;
+    let ids = match u.param("drives") {
+        None => vec![c.id],
+        Some(list) => parse_ids(list).map_err(|m| Error::usage(format!("{m} in {}", u.text)))?,
+    };
+    let make = || -> Result<Box<dyn Transport>> {
+        let mut l = SimLine::new(&ids, clock.clone());
+        l.echo = c.echo;
+        Ok(Box::new(SimLink::new(Arc::new(Mutex::new(l)))))
+    };
+    let name = if u.target.is_empty() { "sim-servo".to_string() } else { format!("sim-servo:{}", u.target) };
+    let line = if u.target.is_empty() {
+        link::private(&name, make()?)
+    } else {
+        let settings = if c.echo { "loop" } else { "" };
+        let line = link::shared(&name, settings, make)?;
+        if let Some(sim) = line.transport.lock().unwrap_or_else(|p| p.into_inner()).sim_line() {
+            let mut s = sim.lock().unwrap_or_else(|p| p.into_inner());
+            for id in &ids {
+                s.add_drive(*id);
+            }
+        }
+        line
+    };
+    let info = DeviceInfo {
+        family: "servo",
+        model: format!("simulated Kinco servo, id {}", c.id),
+        link: u.text.clone(),
+        simulated: true,
+    };
+    finish(Driver::attach(line, c.id, c.echo, c.timeout, info), &c)
+}
+
+/// Parses `1,2,5` (drive ids 0–255).
+pub fn parse_ids(list: &str) -> std::result::Result<Vec<u8>, String> {
+    let ids: std::result::Result<Vec<u8>, _> = list.split(',').map(|s| s.trim().parse::<u8>()).collect();
+    match ids {
+        Ok(v) if !v.is_empty() => Ok(v),
+        _ => Err(format!("`{list}` is not a list of drive ids (0–255), e.g. 1,2")),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::servo::objects;
+    use crate::servo::sim::serve;
+    use std::os::unix::net::UnixStream;
+
+    fn sim(url: &str) -> Box<dyn Device> {
+        open_sim(&DeviceUrl::parse(url).unwrap(), &Clock::stepped()).unwrap()
+    }
+
+    fn op(d: &dyn Device, name: &str) -> Operand {
+        d.operands().parse(name).unwrap()[0]
+    }
+
+    #[test]
+    fn reads_and_writes_through_the_frame_codec() {
+        let mut d = sim("sim-servo:?id=1");
+        let sw = op(d.as_ref(), "statusword");
+        assert_eq!(d.read(&[sw]).unwrap(), vec![Value::Int(0x4231)]);
+        let tv = op(d.as_ref(), "target_velocity");
+        d.write(&[(tv, Value::Int(-5))]).unwrap();
+        assert_eq!(d.read(&[tv]).unwrap(), vec![Value::Int(-5)]);
+        assert_eq!(d.requests(), 3);
+        let e = d.write(&[(sw, Value::Int(1))]).unwrap_err();
+        assert_eq!(e.kind, ErrorKind::Unsupported, "refused before sending");
+        assert_eq!(d.requests(), 3, "nothing went on the wire");
+    }
+
+    #[test]
+    fn silence_is_diagnosed() {
+        // Drive 3 is addressed but only drive 1 exists on the line.
+        let mut d = sim("sim-servo:?id=3&drives=1");
+        let e = d.read(&[op(d.as_ref(), "statusword")]).unwrap_err();
+        assert_eq!(e.kind, ErrorKind::Link);
+        assert!(e.message.contains("likely cause: wrong id"), "{e}");
+        assert!(e.hint.as_deref().unwrap().contains("(2) an object that does not exist"));
+        let mut d = sim("sim-servo:?id=1");
+        let e = d.read(&[op(d.as_ref(), "2FF0.09/u16")]).unwrap_err();
+        assert!(e.message.contains("likely cause: unknown object"), "{e}");
+        let s = d.as_servo().unwrap();
+        let mut bad = Frame::read(1, 0x6041, 0).to_bytes();
+        bad[9] = bad[9].wrapping_add(1);
+        let e = s.raw_frame(bad).unwrap_err();
+        assert!(e.message.contains("likely cause: bad checksum"), "{e}");
+        // The shell stays usable: the next request works.
+        assert_eq!(d.read(&[op(d.as_ref(), "statusword")]).unwrap(), vec![Value::Int(0x4231)]);
+    }
+
+    #[test]
+    fn read_only_write_through_the_low_level_path_gets_the_abort_in_words() {
+        let mut d = sim("sim-servo:?id=1");
+        let s = d.as_servo().unwrap();
+        let e = s.write_raw(ObjRef::of(objects::named("statusword")), 1).unwrap_err();
+        assert_eq!(e.kind, ErrorKind::Refused);
+        assert!(e.message.contains("16#06010002") && e.message.contains("read-only"), "{e}");
+    }
+
+    #[test]
+    fn drives_on_a_named_simulated_line_share_it() {
+        let clock = Clock::stepped();
+        let open = |u: &str| open_sim(&DeviceUrl::parse(u).unwrap(), &clock).unwrap();
+        let mut a = open("sim-servo:shared-test?id=1");
+        let mut b = open("sim-servo:shared-test?id=2");
+        let ids = a.as_servo().unwrap().simulator().unwrap().lock().unwrap().ids();
+        assert_eq!(ids, vec![1, 2]);
+        let cw = op(a.as_ref(), "controlword");
+        b.write(&[(cw, Value::Int(0x0F))]).unwrap();
+        let sw = op(a.as_ref(), "statusword");
+        assert_eq!(a.read(&[sw]).unwrap()[0].as_i64() & 0x6F, 0x21, "drive 1 untouched");
+        assert_eq!(b.read(&[sw]).unwrap()[0].as_i64() & 0x6F, 0x27, "drive 2 enabled");
+        assert!(open_sim(&DeviceUrl::parse("sim-servo:shared-test?id=3&echo=1").unwrap(), &clock).is_err());
+    }
+
+    #[test]
+    fn loop_mode_skips_the_echo() {
+        let mut d = sim("sim-servo:?id=1&echo=1");
+        assert_eq!(d.read(&[op(d.as_ref(), "statusword")]).unwrap(), vec![Value::Int(0x4231)]);
+    }
+
+    #[test]
+    fn encoder_resolution_from_the_url_option_or_the_drive() {
+        let mut d = sim("sim-servo:?id=1&encoder=65536");
+        let tv = op(d.as_ref(), "target_velocity");
+        assert_eq!(d.operands().value(&tv, "1rpm").unwrap(), Value::Int(17_896));
+        d.set_option("encoder", "auto").unwrap();
+        assert_eq!(d.operands().value(&tv, "1rpm").unwrap(), Value::Int(2731), "the simulator says 10000");
+        assert!(d.set_option("encoder", "0").is_err());
+        assert!(d.set_option("colour", "red").is_err());
+    }
+
+    #[test]
+    fn over_a_socket_pair_with_the_served_simulator() {
+        // The transport-generic path: the driver on one end of a socket pair, the
+        // simulator's serve loop on the other.
+        let (a, b) = UnixStream::pair().unwrap();
+        let clock = Clock::stepped();
+        let line = Arc::new(Mutex::new(SimLine::new(&[1], clock)));
+        let stop = Arc::new(std::sync::atomic::AtomicBool::new(false));
+        let (l2, s2) = (line.clone(), stop.clone());
+        let server = std::thread::spawn(move || serve::serve_line(Box::new(b), &l2, &s2));
+        let info = DeviceInfo { family: "servo", model: "test".into(), link: "pair".into(), simulated: false };
+        let mut d = Driver::attach(link::private("pair", Box::new(a)), 1, false, Duration::from_secs(5), info);
+        let sw = ObjRef::of(objects::named("statusword"));
+        assert_eq!(d.read_obj(sw).unwrap(), 0x4231);
+        d.timeout = Duration::from_millis(50);
+        let e = d.read_obj(ObjRef { index: 0x2FF0, sub: 9, dtype: crate::core::DataType::Word }).unwrap_err();
+        assert!(e.message.contains("unknown object"), "{e}");
+        stop.store(true, std::sync::atomic::Ordering::Relaxed);
+        drop(d);
+        server.join().unwrap().unwrap();
+    }
+}

@@ -1,0 +1,444 @@
+//! `servo …`: DS402 helpers for Kinco drives (`servo::ds402`), running through
+//! `Device::as_servo()` on the serial driver and the simulator alike.
+//!
+//! Which drive: `servo [DEVICE] SUBCOMMAND …`. A first word that names an open device
+//! (and is not a subcommand) picks it; otherwise the current device if it is a servo,
+//! otherwise the only servo device open (the default session's `servo`).
+//! Waits run on the session's virtual clock for simulated drives (a stepped clock advances
+//! instantly) and on the wall clock for real ones; Ctrl-C interrupts them.
+
+use super::CommandSpec;
+use crate::core::literal::parse_duration_us;
+use crate::core::{Clock, Error, ErrorKind, Result, Value};
+use crate::output::Outcome;
+use crate::servo::ds402::{self, Profile, Waiter};
+use crate::servo::frame::{abort_text, func, Frame, FRAME_LEN};
+use crate::servo::objects::{self, ObjRef, ServoSpace};
+use crate::servo::{units, ServoOps};
+use crate::session::Reading;
+use crate::shell::{lex, Args, Shell};
+use std::time::Duration;
+
+pub const SERVO: CommandSpec = CommandSpec {
+    name: "servo",
+    aliases: &[],
+    usage: "servo [DEVICE] status|enable|disable|fault-reset|quickstop|mode NAME|move abs|rel POS [speed=300rpm acc=100rps/s dec=100rps/s]|jog SPEED|home [method=N]|wait target [timeout=5s]|save|read OBJ…|encoder [N|auto]|raw BYTES…|sim fault [CODE]|sim switch POS",
+    summary: "Kinco servo helpers: DS402 state machine, moves, jog, homing, waits, units, raw frames",
+    subcommands: &[
+        "status",
+        "enable",
+        "disable",
+        "fault-reset",
+        "quickstop",
+        "mode",
+        "move",
+        "jog",
+        "home",
+        "wait",
+        "save",
+        "read",
+        "encoder",
+        "raw",
+        "sim",
+    ],
+    run: servo,
+};
+
+/// Default `servo wait target` timeout.
+const DEFAULT_WAIT: Duration = Duration::from_secs(10);
+
+fn servo(sh: &mut Shell, args: Args) -> Result<Outcome> {
+    let words = lex::words(args.text).map_err(|e| e.shift(args.offset))?;
+    let (dev, rest) = pick_device(sh, &words).map_err(|e| match e.column {
+        Some(_) => e.shift(args.offset),
+        None => e.column(args.offset),
+    })?;
+    let Some(&(col, sub)) = rest.first() else {
+        return Err(Error::usage("servo needs a subcommand").hint(SERVO.usage).column(args.offset));
+    };
+    let rest = &rest[1..];
+    let name = sh.session.entries()[dev].name.clone();
+    let simulated = sh.session.entries()[dev].device.info().simulated;
+    let clock = if simulated { sh.session.clock.clone() } else { Clock::following() };
+    let interrupt = sh.session.interrupt.clone();
+    let entry = sh.session.entry(dev);
+    let space = ServoSpace::new(entry.device.as_servo().expect("picked a servo").resolution());
+    let ops: &mut dyn ServoOps = entry.device.as_servo().expect("picked a servo");
+    let w = Waiter { clock, interrupt: &interrupt };
+    let at = |c: usize| args.offset + c;
+    let r = match sub {
+        "status" => status(ops),
+        "enable" => {
+            let steps = ds402::enable(ops, &w)?;
+            let msg = if steps.is_empty() {
+                "already in operation enabled".to_string()
+            } else {
+                format!("operation enabled ({})", steps.join(" → "))
+            };
+            Ok(Outcome::new("servo").text(msg).with("state", "operation enabled").with("steps", steps))
+        }
+        "disable" => state_outcome(ds402::disable(ops, &w)?),
+        "fault-reset" => state_outcome(ds402::fault_reset(ops, &w)?),
+        "quickstop" => state_outcome(ds402::quickstop(ops, &w)?),
+        "mode" => {
+            let Some(&(c, m)) = rest.first() else {
+                return Err(Error::usage("servo mode needs a mode: position, velocity, immediate-velocity or homing")
+                    .column(at(col)));
+            };
+            let n = ds402::mode_number(m).ok_or_else(|| {
+                Error::usage(format!("unknown mode `{m}`"))
+                    .column(at(c))
+                    .hint("position (1), velocity (3), immediate-velocity (-3), homing (6)")
+            })?;
+            ds402::set_mode(ops, n)?;
+            Ok(Outcome::new("servo")
+                .text(format!("operating mode {n} ({})", ds402::mode_name(n)))
+                .with("mode", n)
+                .with("mode_name", ds402::mode_name(n)))
+        }
+        "move" => move_cmd(ops, &w, &space, rest, args.offset, at(col)),
+        "jog" => jog(ops, &space, rest, args.offset, at(col)),
+        "home" => {
+            let (_, opts) = lex::options(rest);
+            let method = opt_int(&opts, "method", at)?;
+            ds402::home(ops, method)?;
+            Ok(Outcome::new("servo").text("homing started (mode 6, controlword 16#000F → 16#001F)"))
+        }
+        "wait" => wait(ops, &w, rest, args.offset, at(col)),
+        "save" => {
+            ds402::save(ops)?;
+            Ok(Outcome::new("servo").text("parameters stored (2FF0.01 = 1)"))
+        }
+        "read" => read(ops, &space, rest, args.offset, at(col)),
+        "encoder" => encoder(ops, rest, args.offset, at(col)),
+        "raw" => raw(ops, rest, args.offset, at(col)),
+        "sim" => sim(ops, rest, args.offset, at(col)),
+        other => {
+            return Err(Error::usage(format!("unknown `servo {other}`")).column(at(col)).hint(SERVO.usage));
+        }
+    };
+    r.map(|mut o| {
+        o.device = Some(name.clone());
+        o
+    })
+    .map_err(|e| e.device(name))
+}
+
+/// Splits an optional leading device name off the words.
+fn pick_device<'a>(sh: &mut Shell, words: &'a [lex::Word<'a>]) -> Result<(usize, &'a [lex::Word<'a>])> {
+    let is_servo = |sh: &mut Shell, i: usize| sh.session.entry(i).device.as_servo().is_some();
+    if let Some(&(col, first)) = words.first() {
+        if !SERVO.subcommands.contains(&first) {
+            if let Ok(i) = sh.session.index(first) {
+                if !is_servo(sh, i) {
+                    return Err(Error::usage(format!("`{first}` is not a servo drive")).column(col));
+                }
+                return Ok((i, &words[1..]));
+            }
+        }
+    }
+    if let Ok(i) = sh.session.current_index() {
+        if is_servo(sh, i) {
+            return Ok((i, words));
+        }
+    }
+    let servos: Vec<usize> = (0..sh.session.entries().len()).filter(|&i| is_servo(sh, i)).collect();
+    match servos.as_slice() {
+        [i] => Ok((*i, words)),
+        [] => Err(Error::usage("no servo drive is open")
+            .hint("open one with --device ax=kinco:/dev/ttyUSB0?id=1 or connect ax sim-servo:?id=1")),
+        many => {
+            let names: Vec<String> = many.iter().map(|&i| sh.session.entries()[i].name.clone()).collect();
+            Err(Error::usage("several servo drives are open; name one").hint(format!(
+                "servo {} status (open: {})",
+                names[0],
+                names.join(", ")
+            )))
+        }
+    }
+}
+
+fn state_outcome(s: ds402::State) -> Result<Outcome> {
+    Ok(Outcome::new("servo").text(s.name().to_string()).with("state", s.name()))
+}
+
+fn status(ops: &mut dyn ServoOps) -> Result<Outcome> {
+    let st = ds402::status(ops)?;
+    let r = ops.resolution().get();
+    let pos = ds402::read(ops, "position_actual")?;
+    let vel = ds402::read(ops, "velocity_actual")?;
+    let rpm = units::dec_to_rpm(vel, r);
+    let mode = st.mode.unwrap_or(0);
+    let mut rows: Vec<Vec<String>> = vec![
+        vec!["state".into(), format!("{} (statusword 16#{:04X})", st.state, st.statusword)],
+        vec!["mode".into(), format!("{mode} ({})", ds402::mode_name(mode))],
+        vec!["position_actual".into(), format!("{pos} inc")],
+        vec!["velocity_actual".into(), format!("{vel} DEC = {} rpm", units::show(rpm))],
+    ];
+    for (bit, name) in &st.bits {
+        rows.push(vec![format!("bit {bit}"), name.to_string()]);
+    }
+    let bits: Vec<serde_json::Value> = st.bits.iter().map(|(b, n)| serde_json::json!({"bit": b, "name": n})).collect();
+    Ok(Outcome::new("servo")
+        .table(&["field", "value"], rows)
+        .with("state", &st.state)
+        .with("statusword", st.statusword)
+        .with("bits", bits)
+        .with("fault", st.fault)
+        .with("target_reached", st.target_reached)
+        .with("mode", mode)
+        .with("mode_name", ds402::mode_name(mode))
+        .with("position_actual", pos)
+        .with("velocity_actual", vel)
+        .with("velocity_rpm", rpm))
+}
+
+/// Parses a value for a table object with the device's units (`300rpm`, `2.5rev`, DEC).
+fn value_for(space: &ServoSpace, name: &str, text: &str, col: usize) -> Result<i64> {
+    let r = ObjRef::of(objects::named(name));
+    space.parse_value(&r, text).map(|v| v.as_i64()).map_err(|e| {
+        let c = e.column.unwrap_or(0);
+        let mut e = e.operand(name);
+        e.column = Some(col + c);
+        e
+    })
+}
+
+fn opt_int(opts: &[lex::Opt], key: &str, at: impl Fn(usize) -> usize) -> Result<Option<i64>> {
+    match opts.iter().find(|o| o.1 == key) {
+        None => Ok(None),
+        Some(&(c, _, v)) => {
+            v.parse().map(Some).map_err(|_| Error::usage(format!("`{key}={v}` is not a whole number")).column(at(c)))
+        }
+    }
+}
+
+fn profile(space: &ServoSpace, opts: &[lex::Opt], known: &[&str], at: usize, with_speed: bool) -> Result<Profile> {
+    let mut p = Profile::default();
+    for &(c, k, v) in opts {
+        let c = at + c;
+        let v_col = c + k.len() + 1;
+        match k {
+            "speed" if with_speed => p.speed = Some(value_for(space, "profile_velocity", v, v_col)?),
+            "acc" => p.acc = Some(value_for(space, "profile_acceleration", v, v_col)?),
+            "dec" => p.dec = Some(value_for(space, "profile_deceleration", v, v_col)?),
+            _ => {
+                return Err(Error::usage(format!("unknown option `{k}`"))
+                    .column(c)
+                    .hint(format!("options: {}", known.join(", "))))
+            }
+        }
+    }
+    Ok(p)
+}
+
+fn move_cmd(
+    ops: &mut dyn ServoOps,
+    w: &Waiter,
+    space: &ServoSpace,
+    rest: &[lex::Word],
+    base: usize,
+    col: usize,
+) -> Result<Outcome> {
+    let (pos, opts) = lex::options(rest);
+    let (kind, target) = match pos.as_slice() {
+        [(_, k), (c, p)] if *k == "abs" || *k == "rel" => (*k, value_for(space, "target_position", p, base + c)?),
+        _ => {
+            return Err(
+                Error::usage("usage: servo move abs|rel POS [speed=300rpm acc=100rps/s dec=100rps/s]").column(col)
+            )
+        }
+    };
+    let p = profile(space, &opts, &["speed", "acc", "dec"], base, true)?;
+    ds402::move_to(ops, w, kind == "rel", target, p)?;
+    let r = space.resolution.get();
+    let mut text = format!("{} move to {target} inc started", if kind == "rel" { "relative" } else { "absolute" });
+    if let Some(s) = p.speed {
+        text.push_str(&format!(" at {} rpm ({s} DEC)", units::show(units::dec_to_rpm(s, r))));
+    }
+    let mut o = Outcome::new("servo").text(text).with("move", kind).with("target_position", target);
+    for (k, v) in [("profile_velocity", p.speed), ("profile_acceleration", p.acc), ("profile_deceleration", p.dec)] {
+        if let Some(v) = v {
+            o = o.with(k, v);
+        }
+    }
+    Ok(o)
+}
+
+fn jog(ops: &mut dyn ServoOps, space: &ServoSpace, rest: &[lex::Word], base: usize, col: usize) -> Result<Outcome> {
+    let (pos, opts) = lex::options(rest);
+    let [(c, s)] = pos.as_slice() else {
+        return Err(
+            Error::usage("usage: servo jog SPEED [acc=… dec=…], e.g. servo jog 300rpm; servo jog 0 stops").column(col)
+        );
+    };
+    let speed = value_for(space, "target_velocity", s, base + c)?;
+    let p = profile(space, &opts, &["acc", "dec"], base, false)?;
+    ds402::jog(ops, speed, p)?;
+    let rpm = units::dec_to_rpm(speed, space.resolution.get());
+    Ok(Outcome::new("servo")
+        .text(format!("jogging at {} rpm ({speed} DEC, mode 3)", units::show(rpm)))
+        .with("target_velocity", speed)
+        .with("rpm", rpm))
+}
+
+fn wait(ops: &mut dyn ServoOps, w: &Waiter, rest: &[lex::Word], base: usize, col: usize) -> Result<Outcome> {
+    let (pos, opts) = lex::options(rest);
+    if !matches!(pos.as_slice(), [(_, "target")]) {
+        return Err(Error::usage("usage: servo wait target [timeout=5s]").column(col));
+    }
+    let mut timeout = DEFAULT_WAIT;
+    for &(c, k, v) in &opts {
+        if k != "timeout" {
+            return Err(Error::usage(format!("unknown option `{k}`"))
+                .column(base + c)
+                .hint("servo wait target timeout=5s"));
+        }
+        let us = parse_duration_us(v).map_err(|m| Error::usage(m).column(base + c + k.len() + 1))?;
+        timeout = Duration::from_micros(us.max(0) as u64);
+    }
+    let start = w.clock.now();
+    let sw = ds402::wait_target(ops, w, timeout)?;
+    let took = w.clock.now() - start;
+    let pos = ds402::read(ops, "position_actual")?;
+    Ok(Outcome::new("servo")
+        .text(format!("target reached after {:.3} s (position_actual {pos} inc)", took.as_secs_f64()))
+        .with("statusword", sw)
+        .with("position_actual", pos)
+        .with("waited_s", took.as_secs_f64()))
+}
+
+/// `servo read OBJ…`: raw value plus engineering units. JSON: `values` as `get` gives,
+/// plus `objects: [{operand, index, value, unit, eng, eng_unit}]`.
+fn read(ops: &mut dyn ServoOps, space: &ServoSpace, rest: &[lex::Word], base: usize, col: usize) -> Result<Outcome> {
+    if rest.is_empty() {
+        return Err(
+            Error::usage("servo read needs objects, e.g. servo read target_velocity position_actual").column(col)
+        );
+    }
+    let r = space.resolution.get();
+    let mut rows = Vec::new();
+    let mut values = Vec::new();
+    let mut objs = Vec::new();
+    for &(c, text) in rest {
+        let o = objects::parse(text).map_err(|e| {
+            let e = if e.column.is_none() { e.column(0) } else { e };
+            e.shift(base + c)
+        })?;
+        let v = o.dtype.decode(ops.read_raw(o)?);
+        let unit = o.object().map(|x| x.unit).unwrap_or(units::Unit::None);
+        let eng = units::engineering(unit, v.as_i64(), r);
+        rows.push(vec![
+            o.name(),
+            o.address(),
+            v.to_string(),
+            unit.raw_label().to_string(),
+            eng.map(|(e, u)| format!("{} {u}", units::show(e))).unwrap_or_default(),
+        ]);
+        objs.push(serde_json::json!({
+            "operand": o.name(), "index": o.address(), "value": v, "unit": unit.raw_label(),
+            "eng": eng.map(|e| e.0), "eng_unit": eng.map(|e| e.1),
+        }));
+        values.push(Reading { operand: o.name(), value: v, dtype: o.dtype, device: None });
+    }
+    let mut out = Outcome::new("servo")
+        .table(&["object", "index", "value", "unit", "engineering"], rows)
+        .with("objects", objs)
+        .with("encoder_resolution", r);
+    out.values = values;
+    Ok(out)
+}
+
+fn encoder(ops: &mut dyn ServoOps, rest: &[lex::Word], base: usize, col: usize) -> Result<Outcome> {
+    let res = ops.resolution();
+    match rest {
+        [] => {}
+        [(_, "auto")] | [(_, "read")] => {
+            ops.read_resolution()?;
+        }
+        [(c, v)] => res.set(units::parse_resolution(v).map_err(|m| Error::usage(m).column(base + c))?),
+        _ => return Err(Error::usage("usage: servo encoder [N|auto]").column(col)),
+    }
+    let r = res.get();
+    Ok(Outcome::new("servo").text(format!("encoder resolution {r} inc/rev")).with("encoder_resolution", r))
+}
+
+/// `servo raw 01 40 41 60 00 00 00 00 00 [CS]`: 9 bytes get their checksum appended;
+/// 10 are sent as typed (to check a hand-computed checksum).
+fn raw(ops: &mut dyn ServoOps, rest: &[lex::Word], base: usize, col: usize) -> Result<Outcome> {
+    let mut bytes = Vec::new();
+    for &(c, w) in rest {
+        let h = w.trim_start_matches("0x").trim_start_matches("16#");
+        let b =
+            u8::from_str_radix(h, 16).map_err(|_| Error::usage(format!("`{w}` is not a hex byte")).column(base + c))?;
+        bytes.push(b);
+    }
+    let frame: [u8; FRAME_LEN] = match bytes.len() {
+        9 => {
+            let mut f = [0u8; FRAME_LEN];
+            f[..9].copy_from_slice(&bytes);
+            f[9] = crate::servo::frame::checksum(&bytes);
+            f
+        }
+        10 => bytes.try_into().expect("10 bytes"),
+        n => {
+            return Err(Error::usage(format!("a frame is 9 bytes (checksum added) or 10 bytes, not {n}"))
+                .column(col)
+                .hint("e.g. servo raw 01 40 41 60 00 00 00 00 00"))
+        }
+    };
+    let reply = ops.raw_frame(frame)?;
+    let hex = crate::core::trace::hex_bytes;
+    let meaning = match Frame::from_bytes(&reply) {
+        Err(e) => format!("reply has a {e}"),
+        Ok(f) if f.func == func::ERROR => {
+            format!("0x80 error: abort code 16#{:08X} — {}", f.data, abort_text(f.data))
+        }
+        Ok(f) if f.func == func::WRITE_OK => format!("write to {} acknowledged", f.object()),
+        Ok(f) => format!("{} = {} (16#{:X})", f.object(), f.data, f.data),
+    };
+    let mut o = Outcome::new("servo")
+        .text(format!("→ {}\n← {}  {meaning}", hex(&frame), hex(&reply)))
+        .with("sent", hex(&frame))
+        .with("reply", hex(&reply))
+        .with("meaning", &meaning);
+    if let Ok(f) = Frame::from_bytes(&reply) {
+        if f.func == func::ERROR {
+            o = o.with("abort_code", f.data).with("abort", abort_text(f.data));
+        }
+    }
+    Ok(o)
+}
+
+/// Simulator controls: `servo sim fault [CODE]`, `servo sim switch POS`.
+fn sim(ops: &mut dyn ServoOps, rest: &[lex::Word], base: usize, col: usize) -> Result<Outcome> {
+    let id = ops.drive_id();
+    let Some(line) = ops.simulator() else {
+        return Err(Error::unsupported("servo sim works on in-process simulated drives (sim-servo:)").column(col));
+    };
+    let mut l = line.lock().unwrap_or_else(|p| p.into_inner());
+    let num = |c: usize, s: &str| -> Result<i64> {
+        let lit = crate::core::literal::parse_literal(s).map_err(|e| Error::usage(e.message).column(base + c))?;
+        match lit.value {
+            Value::Int(i) => Ok(i),
+            _ => Err(Error::usage(format!("`{s}` is not a whole number")).column(base + c)),
+        }
+    };
+    match rest {
+        [(_, "fault")] | [(_, "fault"), _] => {
+            let code = match rest.get(1) {
+                Some(&(c, s)) => u16::try_from(num(c, s)?)
+                    .map_err(|_| Error::new(ErrorKind::Value, "a fault code is 16 bits").column(base + c))?,
+                None => crate::servo::sim::drive::DEFAULT_FAULT,
+            };
+            l.inject_fault(id, code);
+            Ok(Outcome::new("servo").text(format!("drive id {id}: fault 16#{code:04X} injected")).with("fault", code))
+        }
+        [(_, "switch"), (c, p)] => {
+            let pos = num(*c, p)?;
+            l.set_home_switch(id, pos as f64);
+            Ok(Outcome::new("servo").text(format!("drive id {id}: home switch at {pos} inc")).with("home_switch", pos))
+        }
+        _ => Err(Error::usage("usage: servo sim fault [CODE] | servo sim switch POS").column(col)),
+    }
+}
