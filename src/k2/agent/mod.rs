@@ -1,4 +1,5 @@
 //! The PLC-side helper ("agent") that gives plcsh SM registers and PLC instructions on a
 //! real K2 over Modbus: its mailbox protocol, shared by the simulator and the wire driver.
 
+pub mod il;
 pub mod protocol;

@@ -32,6 +32,7 @@
 //! retries; the four-entry ack history lets a client confirm its command even when another
 //! client's command ran right after it.
 
+use crate::k2::catalog::SM_BYTES;
 use std::fmt;
 
 /// Mailbox base when the device does not say (`agent=VB3400`).
@@ -111,19 +112,16 @@ impl Command {
     /// Decodes a request block (the helper's side).
     pub fn decode(code: u16, args: [u16; 3], data: &[u8]) -> Result<Command, ResultCode> {
         let len = args[1] as usize;
+        // The same checks, in the same order, as the helper program (il.rs, network 3).
+        if code == 1 && args[0] == 0 {
+            return Err(ResultCode::ReadOnly);
+        }
+        if matches!(code, 1 | 2) && (len == 0 || len > DATA_MAX || args[0] as u32 + len as u32 > SM_BYTES) {
+            return Err(ResultCode::BadRange);
+        }
         Ok(match code {
-            1 => {
-                if len == 0 || len > DATA_MAX {
-                    return Err(ResultCode::BadRange);
-                }
-                Command::SmWrite { start: args[0], data: data[..len].to_vec() }
-            }
-            2 => {
-                if len == 0 || len > DATA_MAX {
-                    return Err(ResultCode::BadRange);
-                }
-                Command::SmRead { start: args[0], len: args[1] }
-            }
+            1 => Command::SmWrite { start: args[0], data: data[..len].to_vec() },
+            2 => Command::SmRead { start: args[0], len: args[1] },
             3 => Command::Pls(channel(args[0])?),
             4 => {
                 Command::Hdef { hsc: channel(args[0])?, mode: u8::try_from(args[1]).map_err(|_| ResultCode::BadMode)? }
@@ -434,6 +432,10 @@ mod tests {
         let a = execute_scan(&mut m, DEFAULT_BASE, &mut |_| panic!("must not run")).unwrap();
         assert_eq!(a.result, ResultCode::UnknownCommand);
         assert!(ResultCode::BadRange.to_string().contains("64 bytes"));
+        write_request(&mut m, 3, 1, &Command::SmWrite { start: 0, data: vec![1] });
+        assert_eq!(execute_scan(&mut m, DEFAULT_BASE, &mut |_| panic!("SMB0")).unwrap().result, ResultCode::ReadOnly);
+        write_request(&mut m, 4, 1, &Command::SmRead { start: 540, len: 20 });
+        assert_eq!(execute_scan(&mut m, DEFAULT_BASE, &mut |_| panic!("past")).unwrap().result, ResultCode::BadRange);
     }
 
     #[test]
