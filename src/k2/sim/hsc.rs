@@ -290,6 +290,11 @@ impl HscChannel {
                 r.status, r.mpv_control, r.table
             ));
         }
+        if let Some(t) = &mut self.table {
+            // The PV type and cyclic bits apply at every HSC, also to a table kept from before.
+            t.relative = b & mpv::RELATIVE != 0;
+            t.cyclic = t.relative && b & mpv::CYCLIC != 0;
+        }
         if let Some(t) = &self.table {
             if self.multi {
                 if b & mpv::KEEP_SEGMENT == 0 || self.cmp.seg >= t.pvs.len() {

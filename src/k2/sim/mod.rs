@@ -618,6 +618,9 @@ pub fn open(model: &str, clock: Clock) -> Result<K2Sim> {
 }
 
 #[cfg(test)]
+mod behaviour_tests;
+
+#[cfg(test)]
 mod tests {
     use super::*;
     use std::sync::atomic::AtomicBool;
