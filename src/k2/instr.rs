@@ -208,7 +208,7 @@ impl RtcTime {
     /// second, 0, weekday). Kinco's own layout is not in the manual (kinco-public-notes):
     /// this is the S7-200 one, stated as an assumption.
     pub fn to_bcd8(&self) -> [u8; 8] {
-        let b = |v: u8| (v / 10) << 4 | v % 10;
+        let b = |v: u8| ((v / 10) << 4) | (v % 10);
         [
             b((self.year % 100) as u8),
             b(self.month),
@@ -331,7 +331,7 @@ mod tests {
         let t = RtcTime::parse("2026-11-22T10:05:59").unwrap();
         assert_eq!(t.weekday(), 1);
         assert_eq!(t.to_bcd8(), [0x26, 0x11, 0x22, 0x10, 0x05, 0x59, 0, 1]);
-        assert_eq!(RtcTime::parse("1970-01-01T00:00:00").map(|_| ()).unwrap_err().contains("2000"), true);
+        assert!(RtcTime::parse("1970-01-01T00:00:00").map(|_| ()).unwrap_err().contains("2000"));
         assert_eq!(RtcTime::from_secs(0).weekday(), 5, "1970-01-01 was a Thursday");
     }
 }

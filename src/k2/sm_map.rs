@@ -244,16 +244,9 @@ pub struct HscModeInputs {
     pub start: Option<(u32, u8)>,
 }
 
-const fn mi(
-    channel: u8,
-    mode: u8,
-    kind: HscKind,
-    count: u8,
-    second: Option<u8>,
-    dir: Option<u8>,
-    reset: Option<u8>,
-    start: Option<u8>,
-) -> HscModeInputs {
+/// `pins` = [second, dir, reset, start] as bits of IB0.
+const fn mi(channel: u8, mode: u8, kind: HscKind, count: u8, pins: [Option<u8>; 4]) -> HscModeInputs {
+    let [second, dir, reset, start] = pins;
     // Every HSC input is in IB0 (§3.3.1).
     const fn pin(b: Option<u8>) -> Option<(u32, u8)> {
         match b {
@@ -261,7 +254,16 @@ const fn mi(
             None => None,
         }
     }
-    HscModeInputs { channel, mode, kind, count: (0, count), second: pin(second), dir: pin(dir), reset: pin(reset), start: pin(start) }
+    HscModeInputs {
+        channel,
+        mode,
+        kind,
+        count: (0, count),
+        second: pin(second),
+        dir: pin(dir),
+        reset: pin(reset),
+        start: pin(start),
+    }
 }
 
 /// The same modes as [`HSC_MODES`], structured for the simulator (§3.3.1 tables; the
@@ -270,26 +272,26 @@ const fn mi(
 pub const HSC_MODE_INPUTS: &[HscModeInputs] = {
     use HscKind::*;
     &[
-        mi(0, 0, InternalDir, 1, None, None, None, None),
-        mi(0, 1, InternalDir, 1, None, None, Some(0), None),
-        mi(0, 2, InternalDir, 1, None, None, Some(0), Some(5)),
-        mi(0, 3, ExternalDir, 1, None, Some(5), None, None),
-        mi(0, 4, ExternalDir, 1, None, Some(5), Some(0), None),
-        mi(0, 6, TwoPulse, 0, Some(1), None, None, None),
-        mi(0, 9, Quadrature, 1, Some(0), None, None, None),
-        mi(1, 0, InternalDir, 3, None, None, None, None),
-        mi(1, 1, InternalDir, 3, None, None, Some(4), None),
-        mi(1, 2, InternalDir, 3, None, None, Some(4), Some(6)),
-        mi(1, 3, ExternalDir, 3, None, Some(2), None, None),
-        mi(1, 4, ExternalDir, 3, None, Some(2), Some(4), None),
-        mi(1, 6, TwoPulse, 2, Some(3), None, None, None),
-        mi(1, 7, TwoPulse, 2, Some(3), None, Some(4), None),
-        mi(1, 9, Quadrature, 3, Some(2), None, None, None),
-        mi(1, 10, Quadrature, 3, Some(2), None, Some(4), None),
-        mi(2, 0, InternalDir, 5, None, None, None, None),
-        mi(2, 9, Quadrature, 4, Some(5), None, None, None),
-        mi(3, 0, InternalDir, 7, None, None, None, None),
-        mi(3, 9, Quadrature, 6, Some(7), None, None, None),
+        mi(0, 0, InternalDir, 1, [None, None, None, None]),
+        mi(0, 1, InternalDir, 1, [None, None, Some(0), None]),
+        mi(0, 2, InternalDir, 1, [None, None, Some(0), Some(5)]),
+        mi(0, 3, ExternalDir, 1, [None, Some(5), None, None]),
+        mi(0, 4, ExternalDir, 1, [None, Some(5), Some(0), None]),
+        mi(0, 6, TwoPulse, 0, [Some(1), None, None, None]),
+        mi(0, 9, Quadrature, 1, [Some(0), None, None, None]),
+        mi(1, 0, InternalDir, 3, [None, None, None, None]),
+        mi(1, 1, InternalDir, 3, [None, None, Some(4), None]),
+        mi(1, 2, InternalDir, 3, [None, None, Some(4), Some(6)]),
+        mi(1, 3, ExternalDir, 3, [None, Some(2), None, None]),
+        mi(1, 4, ExternalDir, 3, [None, Some(2), Some(4), None]),
+        mi(1, 6, TwoPulse, 2, [Some(3), None, None, None]),
+        mi(1, 7, TwoPulse, 2, [Some(3), None, Some(4), None]),
+        mi(1, 9, Quadrature, 3, [Some(2), None, None, None]),
+        mi(1, 10, Quadrature, 3, [Some(2), None, Some(4), None]),
+        mi(2, 0, InternalDir, 5, [None, None, None, None]),
+        mi(2, 9, Quadrature, 4, [Some(5), None, None, None]),
+        mi(3, 0, InternalDir, 7, [None, None, None, None]),
+        mi(3, 9, Quadrature, 6, [Some(7), None, None, None]),
     ]
 };
 

@@ -77,7 +77,7 @@ pub struct PvTable {
 /// Reads a PV table at V offset `start` (§3.3.3): count byte, then DINTs. Relative PVs with
 /// |PV| ≤ 1, or absolute PVs within 1 of the previous one, end the table there.
 pub fn read_table(v: &[u8], start: u32, relative: bool, cyclic: bool) -> std::result::Result<PvTable, String> {
-    if start % 2 == 0 {
+    if start.is_multiple_of(2) {
         return Err(format!("the PV table start {start} is even (it must be an odd V offset, §3.3.2)"));
     }
     let s = start as usize;
@@ -117,7 +117,8 @@ struct Drive {
 
 impl Drive {
     fn at(&self, t: Duration) -> i64 {
-        self.up.iter().map(|w| w.rises(t) as i64).sum::<i64>() - self.down.iter().map(|w| w.rises(t) as i64).sum::<i64>()
+        self.up.iter().map(|w| w.rises(t) as i64).sum::<i64>()
+            - self.down.iter().map(|w| w.rises(t) as i64).sum::<i64>()
     }
 
     /// The earliest time in (a, b] at which the count since `a` reaches `k` in direction
@@ -400,7 +401,7 @@ impl HscChannel {
     /// would only be dropped from the log.
     fn skip_cycles(&mut self, sign: i64, remaining: u64, used: &mut u64, cv: &mut i64, skipped: &mut u64) {
         let Some(t) = &self.table else { return };
-        if !(self.multi && t.cyclic && self.cmp.seg == 0) || !t.pvs.iter().all(|p| p.signum() == sign) {
+        if !(self.multi && t.cyclic && self.cmp.seg == 0 && t.pvs.iter().all(|p| p.signum() == sign)) {
             return;
         }
         let l: i64 = t.pvs.iter().sum();
@@ -512,7 +513,13 @@ impl HscChannel {
     }
 
     /// Counts edges the user wrote to the inputs (`set I0.1=1`), at `now`.
-    pub fn input_edges(&mut self, mem: &mut Memory, old: &[u8], now: Duration, raised: &mut Vec<(Duration, EventKind)>) {
+    pub fn input_edges(
+        &mut self,
+        mem: &mut Memory,
+        old: &[u8],
+        now: Duration,
+        raised: &mut Vec<(Duration, EventKind)>,
+    ) {
         let Some(m) = self.mode else { return };
         if !self.running {
             return;
@@ -555,13 +562,7 @@ impl HscChannel {
                 let (da, db) = (o(a) != n(a), o(b) != n(b));
                 let s = |up: bool| if up { 1 } else { -1 };
                 match (da, db) {
-                    (true, false) if !self.rate4x => {
-                        if n(a) {
-                            s(!n(b))
-                        } else {
-                            0
-                        }
-                    }
+                    (true, false) if !self.rate4x && n(a) => s(!n(b)),
                     (true, false) => s(n(a) != n(b)),
                     (false, true) if self.rate4x => s(n(a) == n(b)),
                     _ => 0,

@@ -102,7 +102,7 @@ impl Source {
 }
 
 pub fn show_hz(hz: u64) -> String {
-    if hz >= 1000 && hz % 1000 == 0 {
+    if hz >= 1000 && hz.is_multiple_of(1000) {
         format!("{} kHz", hz / 1000)
     } else {
         format!("{hz} Hz")
@@ -178,8 +178,8 @@ mod tests {
         let a = i.wave((0, 1)).unwrap();
         let b = i.wave((0, 0)).unwrap();
         assert_eq!(b.origin_ns - a.origin_ns, 250_000);
-        assert_eq!(i.quad((0, 1), (0, 0)).unwrap().1, true);
-        assert_eq!(i.quad((0, 0), (0, 1)).unwrap().1, false);
+        assert!(i.quad((0, 1), (0, 0)).unwrap().1);
+        assert!(!i.quad((0, 0), (0, 1)).unwrap().1);
         i.add(Source::Freq { pin: (0, 0), wave: Wave::new(5, Duration::ZERO) });
         assert!(i.quad((0, 1), (0, 0)).is_none(), "a new source on one pin replaces the pair");
         assert!(i.remove((0, 0)).is_some());

@@ -211,11 +211,7 @@ impl K2Sim {
                     if bit_hit {
                         return Err(Error::new(
                             ErrorKind::State,
-                            format!(
-                                "{} is driven by a simulated signal ({})",
-                                inputs::pin_name(p),
-                                s.describe()
-                            ),
+                            format!("{} is driven by a simulated signal ({})", inputs::pin_name(p), s.describe()),
                         )
                         .operand(op.canonical())
                         .hint(format!("stop it first: sim input {} off", inputs::pin_name(p))));
@@ -264,8 +260,11 @@ impl K2Sim {
             let list: Vec<String> =
                 self.pto.iter().map(|p| format!("{} ({})", p.regs.channel, p.spec.output)).collect();
             let extra = if ch == 3 { " (Q0.5 is a pulse output only on K209M-56DT)" } else { "" };
-            Error::unsupported(format!("{} has no pulse channel {ch}{extra}", m.name))
-                .hint(format!("pulse channels on {}: {}", m.name, list.join(", ")))
+            Error::unsupported(format!("{} has no pulse channel {ch}{extra}", m.name)).hint(format!(
+                "pulse channels on {}: {}",
+                m.name,
+                list.join(", ")
+            ))
         })
     }
 
@@ -273,8 +272,11 @@ impl K2Sim {
         let m = self.model();
         self.hsc.iter().position(|h| h.regs.channel == ch).ok_or_else(|| {
             let list: Vec<String> = self.hsc.iter().map(|h| format!("HSC{}", h.regs.channel)).collect();
-            Error::unsupported(format!("{} has no high-speed counter HSC{ch}", m.name))
-                .hint(format!("counters on {}: {}", m.name, list.join(", ")))
+            Error::unsupported(format!("{} has no high-speed counter HSC{ch}", m.name)).hint(format!(
+                "counters on {}: {}",
+                m.name,
+                list.join(", ")
+            ))
         })
     }
 
@@ -314,7 +316,9 @@ impl K2Sim {
         self.advance();
         let now = self.last;
         let s = match s {
-            Source::Freq { pin, wave } => Source::Freq { pin, wave: inputs::Wave { origin_ns: now.as_nanos(), ..wave } },
+            Source::Freq { pin, wave } => {
+                Source::Freq { pin, wave: inputs::Wave { origin_ns: now.as_nanos(), ..wave } }
+            }
             Source::Quad { lead, lag, wave } => {
                 Source::Quad { lead, lag, wave: inputs::Wave { origin_ns: now.as_nanos(), ..wave } }
             }

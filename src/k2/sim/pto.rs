@@ -325,9 +325,12 @@ impl PtoChannel {
     /// Sets the invalid bit and builds the refusal.
     fn refuse(&self, mem: &mut Memory, msg: String, operand: String, hint: String) -> Error {
         mem.set_sm_bit(self.regs.status, st::INVALID, true);
-        Error::new(ErrorKind::Refused, format!("PLS {}: {msg}; status bit SM{}.4 set", self.regs.channel, self.regs.status))
-            .operand(operand)
-            .hint(hint)
+        Error::new(
+            ErrorKind::Refused,
+            format!("PLS {}: {msg}; status bit SM{}.4 set", self.regs.channel, self.regs.status),
+        )
+        .operand(operand)
+        .hint(hint)
     }
 
     /// Checks a cycle against the channel's frequency limit.
@@ -462,7 +465,7 @@ impl PtoChannel {
         let start = mem.sm_word(r.profile) as u32;
         let tab = format!("SMW{}", r.profile);
         let v_len = mem.v.len() as u32;
-        if start % 2 == 0 {
+        if start.is_multiple_of(2) {
             return Err(self.refuse(
                 mem,
                 format!("the profile table start SMW{} = {start} is even", r.profile),

@@ -142,7 +142,7 @@ pub fn hex(bytes: &[u8]) -> String {
 }
 
 pub fn unhex(s: &str) -> Option<Vec<u8>> {
-    if s.len() % 2 != 0 {
+    if !s.len().is_multiple_of(2) {
         return None;
     }
     (0..s.len()).step_by(2).map(|i| u8::from_str_radix(s.get(i..i + 2)?, 16).ok()).collect()
@@ -229,7 +229,8 @@ mod tests {
         save(&path, "K209M-56DT", ModelState::default()).unwrap();
         assert_eq!(load(&path, "K205-16DT").unwrap().unwrap().backup, "2a", "other models are kept");
         assert!(load(&path, "K204ET-16DT").unwrap().is_none());
-        let leftovers = std::fs::read_dir(&dir).unwrap().filter(|e| e.as_ref().unwrap().file_name() != "s.json").count();
+        let leftovers =
+            std::fs::read_dir(&dir).unwrap().filter(|e| e.as_ref().unwrap().file_name() != "s.json").count();
         assert_eq!(leftovers, 0, "no temporary file left behind");
         std::fs::write(&path, "{not json").unwrap();
         assert!(load(&path, "K205-16DT").is_err());
