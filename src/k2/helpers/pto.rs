@@ -52,7 +52,7 @@ pub fn channel(model: &Model, ch: u8) -> Result<(&'static PtoSpec, PtoRegs)> {
 fn to_base(us: u64, what: &str) -> Result<(u64, bool)> {
     if us <= 65_535 {
         Ok((us, false))
-    } else if us % 1000 == 0 && us / 1000 <= 65_535 {
+    } else if us.is_multiple_of(1000) && us / 1000 <= 65_535 {
         Ok((us / 1000, true))
     } else {
         Err(bad(
@@ -110,7 +110,7 @@ pub fn plan_pwm(model: &Model, ch: u8, cycle_us: u64, width_us: u64, sync: bool)
     check_freq(spec, cycle_us, "cycle")?;
     let (cycle, ms) = to_base(cycle_us, "cycle")?;
     let width = if ms {
-        if width_us % 1000 != 0 {
+        if !width_us.is_multiple_of(1000) {
             return Err(bad(
                 "width",
                 format!("width={width_us} µs: with a {cycle_us} µs cycle the time base is 1 ms, so the width must be whole ms"),
@@ -212,7 +212,7 @@ pub fn plan_profile(
     backup: (u32, u32),
 ) -> Result<Profile> {
     let (spec, r) = channel(model, ch)?;
-    if at % 2 == 0 {
+    if at.is_multiple_of(2) {
         return Err(bad("at", format!("VB{at} is even: a profile table must start at an odd V address (§3.4.2.1)"))
             .hint(format!("e.g. at VB{}", at + 1)));
     }
