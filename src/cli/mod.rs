@@ -42,6 +42,9 @@ pub struct Cli {
     /// Simulator time: follow the wall clock, or move only when stepped.
     #[arg(long, value_enum, default_value = "wall", global = true)]
     pub time: TimeMode,
+    /// Simulator state file (backup area, retained ranges, clock); default in the user's data directory.
+    #[arg(long, value_name = "FILE", global = true)]
+    pub state: Option<std::path::PathBuf>,
     #[command(subcommand)]
     pub sub: Option<Sub>,
 }
@@ -73,6 +76,10 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
     };
     let mut s = Session::new(clock);
     s.open("plc", &format!("sim:{}", cli.model))?;
+    // The simulated PLC keeps its backup area, retained ranges and clock (k2.md §7).
+    if let Some(state) = cli.state.clone().or_else(crate::k2::sim::state::default_path) {
+        s.device("plc")?.set_option("state", &state.to_string_lossy()).map_err(|e| e.device("plc"))?;
+    }
     for d in &cli.devices {
         let (name, url) = split_device_arg(d);
         s.open(&name, &url)?;

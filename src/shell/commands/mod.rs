@@ -1,10 +1,17 @@
 //! The command registry: every shell command in one list, one file per command family.
 //! Completion, `help` and the README's command table all read this list.
 
+mod counter;
 mod device;
+mod eeprom;
+mod events;
 mod help;
 mod io;
+mod k2cmd;
+mod pulse;
+mod rtc;
 mod sim;
+mod siminputs;
 
 use super::{Args, Shell};
 use crate::core::Result;
@@ -31,6 +38,17 @@ pub const COMMANDS: &[CommandSpec] = &[
     device::CONNECT,
     device::CLOSE,
     sim::SIM,
+    pulse::PLS,
+    pulse::PSTOP,
+    pulse::PTO,
+    pulse::PWM,
+    pulse::PROFILE,
+    counter::HDEF,
+    counter::HSC,
+    events::EVENTS,
+    events::WAIT,
+    rtc::RTC,
+    eeprom::EEPROM,
     help::HELP,
     help::QUIT,
 ];
