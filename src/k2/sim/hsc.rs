@@ -107,26 +107,62 @@ pub fn read_table(v: &[u8], start: u32, relative: bool, cyclic: bool) -> std::re
     Ok(PvTable { pvs, relative, cyclic: cyclic && relative })
 }
 
-/// Edge streams counting up and down during one interval (each stream is the rising
-/// edges of a wave; falling edges are the wave shifted by half a period).
-#[derive(Clone, Debug, Default)]
+/// Up to four edge streams (each the rising edges of a wave; falling edges are the wave
+/// shifted by half a period). Inline, so computing a drive allocates nothing.
+#[derive(Clone, Copy, Debug, Default)]
+struct Streams {
+    w: [Option<Wave>; 4],
+}
+
+impl Streams {
+    fn of(ws: &[Wave]) -> Streams {
+        let mut s = Streams::default();
+        for (slot, w) in s.w.iter_mut().zip(ws) {
+            *slot = Some(*w);
+        }
+        s
+    }
+    fn push(&mut self, w: Wave) {
+        if let Some(slot) = self.w.iter_mut().find(|s| s.is_none()) {
+            *slot = Some(w);
+        }
+    }
+    fn iter(&self) -> impl Iterator<Item = &Wave> {
+        self.w.iter().flatten()
+    }
+    fn at(&self, t: Duration) -> i64 {
+        self.iter().map(|w| w.rises(t) as i64).sum()
+    }
+    fn single(&self) -> Option<&Wave> {
+        let mut it = self.iter();
+        match (it.next(), it.next()) {
+            (Some(w), None) => Some(w),
+            _ => None,
+        }
+    }
+    fn is_empty(&self) -> bool {
+        self.w[0].is_none()
+    }
+}
+
+/// Edge streams counting up and down during one interval.
+#[derive(Clone, Copy, Debug, Default)]
 struct Drive {
-    up: Vec<Wave>,
-    down: Vec<Wave>,
+    up: Streams,
+    down: Streams,
 }
 
 impl Drive {
     fn at(&self, t: Duration) -> i64 {
-        self.up.iter().map(|w| w.rises(t) as i64).sum::<i64>()
-            - self.down.iter().map(|w| w.rises(t) as i64).sum::<i64>()
+        self.up.at(t) - self.down.at(t)
     }
 
     /// The earliest time in (a, b] at which the count since `a` reaches `k` in direction
     /// `sign`.
     fn time_of(&self, a: Duration, b: Duration, k: u64, sign: i64) -> Duration {
-        let single = match (self.up.as_slice(), self.down.as_slice()) {
-            ([w], []) if sign > 0 => Some(w),
-            ([], [w]) if sign < 0 => Some(w),
+        let single = match (sign > 0, self.up.single(), self.down.is_empty(), self.down.single(), self.up.is_empty()) {
+            (true, Some(w), true, _, _) => Some(w),
+            (false, _, _, Some(w), true) => Some(w),
             _ => None,
         };
         if let Some(w) = single {
@@ -448,15 +484,23 @@ impl HscChannel {
                 }
             }
             HscKind::TwoPulse => {
-                d.up.extend(inputs.wave(m.count));
-                d.down.extend(m.second.and_then(|p| inputs.wave(p)));
+                if let Some(w) = inputs.wave(m.count) {
+                    d.up.push(w);
+                }
+                if let Some(w) = m.second.and_then(|p| inputs.wave(p)) {
+                    d.down.push(w);
+                }
             }
             HscKind::Quadrature => {
                 let (a, b) = (m.count, m.second?);
                 if let Some((w, a_leads)) = inputs.quad(a, b) {
                     let half = w.half_ns();
                     let (wa, wb) = if a_leads { (w, w.shifted(half / 2)) } else { (w.shifted(half / 2), w) };
-                    let edges = if self.rate4x { vec![wa, wa.shifted(half), wb, wb.shifted(half)] } else { vec![wa] };
+                    let edges = if self.rate4x {
+                        Streams::of(&[wa, wa.shifted(half), wb, wb.shifted(half)])
+                    } else {
+                        Streams::of(&[wa])
+                    };
                     if a_leads {
                         d.up = edges
                     } else {
@@ -470,16 +514,16 @@ impl HscChannel {
                             match (self.rate4x, b_high) {
                                 (false, false) => d.up.push(wa),
                                 (false, true) => d.down.push(wa),
-                                (true, false) => (d.up, d.down) = (vec![wa], vec![fall]),
-                                (true, true) => (d.up, d.down) = (vec![fall], vec![wa]),
+                                (true, false) => (d.up, d.down) = (Streams::of(&[wa]), Streams::of(&[fall])),
+                                (true, true) => (d.up, d.down) = (Streams::of(&[fall]), Streams::of(&[wa])),
                             }
                         }
                         (None, Some(wb)) if self.rate4x => {
                             let fall = wb.shifted(wb.half_ns());
                             if level(mem, a) {
-                                (d.up, d.down) = (vec![wb], vec![fall])
+                                (d.up, d.down) = (Streams::of(&[wb]), Streams::of(&[fall]))
                             } else {
-                                (d.up, d.down) = (vec![fall], vec![wb])
+                                (d.up, d.down) = (Streams::of(&[fall]), Streams::of(&[wb]))
                             }
                         }
                         _ => return None,

@@ -45,9 +45,13 @@ impl Wave {
     pub fn rises(&self, t: Duration) -> u64 {
         let t = t.as_nanos();
         if t <= self.origin_ns {
-            0
-        } else {
-            ((t - self.origin_ns) * self.hz as u128 / 1_000_000_000) as u64
+            return 0;
+        }
+        let e = t - self.origin_ns;
+        // 64-bit arithmetic while it cannot overflow (a day at 200 kHz), 128-bit beyond.
+        match u64::try_from(e).ok().and_then(|e| e.checked_mul(self.hz)) {
+            Some(p) => p / 1_000_000_000,
+            None => (e * self.hz as u128 / 1_000_000_000) as u64,
         }
     }
 

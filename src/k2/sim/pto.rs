@@ -112,7 +112,7 @@ impl PtoRun {
         }
         let e = t.saturating_sub(self.start).as_nanos();
         let s = self.seg_at(e);
-        s.first + (((e - s.start_ns) / s.cycle_ns as u128) as u64).min(s.count)
+        s.first + (div(e - s.start_ns, s.cycle_ns)).min(s.count)
     }
 
     /// The output level at `t` (50 % duty: high in the first half of each cycle).
@@ -122,7 +122,17 @@ impl PtoRun {
         }
         let e = (t - self.start).as_nanos();
         let s = self.seg_at(e);
-        ((e - s.start_ns) % s.cycle_ns as u128) < (s.cycle_ns as u128 / 2)
+        let into = e - s.start_ns;
+        let phase = into - div(into, s.cycle_ns) as u128 * s.cycle_ns as u128;
+        phase < (s.cycle_ns as u128 / 2)
+    }
+}
+
+/// `a / b`, in 64-bit arithmetic when `a` fits (the usual case: 584 years of ns).
+fn div(a: u128, b: u64) -> u64 {
+    match u64::try_from(a) {
+        Ok(a) => a / b,
+        Err(_) => (a / b as u128) as u64,
     }
 }
 
