@@ -181,12 +181,19 @@ impl K2Sim {
                 if lo < r.pos_cv + 4 && r.pos_cv < hi {
                     return Err(Error::new(
                         ErrorKind::Refused,
-                        format!(
-                            "{} touches SMD{}, the read-only current value of position channel {} (manual §3.4.3.1)",
-                            op.canonical(),
-                            r.pos_cv,
-                            r.channel
-                        ),
+                        if op.canonical() == format!("SMD{}", r.pos_cv) {
+                            format!(
+                                "SMD{} is the read-only current value of position channel {} (manual §3.4.3.1)",
+                                r.pos_cv, r.channel
+                            )
+                        } else {
+                            format!(
+                                "{} overlaps SMD{}, the read-only current value of position channel {} (manual §3.4.3.1)",
+                                op.canonical(),
+                                r.pos_cv,
+                                r.channel
+                            )
+                        },
                     )
                     .operand(op.canonical())
                     .hint(format!(
