@@ -48,6 +48,9 @@ pub struct Cli {
     /// Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).
     #[arg(long, value_name = "FILE", global = true)]
     pub config: Option<std::path::PathBuf>,
+    /// Simulator state file (backup area, retained ranges, clock); default in the user's data directory.
+    #[arg(long, value_name = "FILE", global = true)]
+    pub state: Option<std::path::PathBuf>,
     #[command(subcommand)]
     pub sub: Option<Sub>,
 }
@@ -110,6 +113,10 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
     s.open("plc", &format!("sim:{}", cli.model))?;
     let mut current = "plc".to_string();
     s.open("servo", "sim-servo:?id=1")?;
+    // The simulated PLC keeps its backup area, retained ranges and clock (k2.md §7).
+    if let Some(state) = cli.state.clone().or_else(crate::k2::sim::state::default_path) {
+        s.device("plc")?.set_option("state", &state.to_string_lossy()).map_err(|e| e.device("plc"))?;
+    }
     for d in &cli.devices {
         let (name, url) = split_device_arg(d);
         s.open(&name, &url)?;

@@ -216,6 +216,95 @@ pub const HSC_MODES: &[(u8, u8, &str)] = &[
     (3, 9, "A/B quadrature, A = I0.6, B = I0.7"),
 ];
 
+/// How a counter mode takes its count (§3.3.1).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum HscKind {
+    /// One count input, direction from the control byte (SM37.3 …).
+    InternalDir,
+    /// One count input, direction from an input (1 = up).
+    ExternalDir,
+    /// Two inputs: one counts up, one counts down.
+    TwoPulse,
+    /// A/B quadrature (1x or 4x by SM37.2 …).
+    Quadrature,
+}
+
+/// The inputs of one counter mode (§3.3.1), as bit addresses in the I area (byte, bit).
+/// `count` is the count input (modes 0–4), the up input (modes 6/7) or A (modes 9/10);
+/// `second` is the down input (6/7) or B (9/10).
+#[derive(Clone, Copy, Debug)]
+pub struct HscModeInputs {
+    pub channel: u8,
+    pub mode: u8,
+    pub kind: HscKind,
+    pub count: (u32, u8),
+    pub second: Option<(u32, u8)>,
+    pub dir: Option<(u32, u8)>,
+    pub reset: Option<(u32, u8)>,
+    pub start: Option<(u32, u8)>,
+}
+
+/// `pins` = [second, dir, reset, start] as bits of IB0.
+const fn mi(channel: u8, mode: u8, kind: HscKind, count: u8, pins: [Option<u8>; 4]) -> HscModeInputs {
+    let [second, dir, reset, start] = pins;
+    // Every HSC input is in IB0 (§3.3.1).
+    const fn pin(b: Option<u8>) -> Option<(u32, u8)> {
+        match b {
+            Some(b) => Some((0, b)),
+            None => None,
+        }
+    }
+    HscModeInputs {
+        channel,
+        mode,
+        kind,
+        count: (0, count),
+        second: pin(second),
+        dir: pin(dir),
+        reset: pin(reset),
+        start: pin(start),
+    }
+}
+
+/// The same modes as [`HSC_MODES`], structured for the simulator (§3.3.1 tables; the
+/// unit test below keeps the two in step). HSC0 mode 6: up I0.0, down I0.1; HSC1 mode 6:
+/// up I0.2, down I0.3 (the manual's columns "Счёт вверх"/"Счёт вниз").
+pub const HSC_MODE_INPUTS: &[HscModeInputs] = {
+    use HscKind::*;
+    &[
+        mi(0, 0, InternalDir, 1, [None, None, None, None]),
+        mi(0, 1, InternalDir, 1, [None, None, Some(0), None]),
+        mi(0, 2, InternalDir, 1, [None, None, Some(0), Some(5)]),
+        mi(0, 3, ExternalDir, 1, [None, Some(5), None, None]),
+        mi(0, 4, ExternalDir, 1, [None, Some(5), Some(0), None]),
+        mi(0, 6, TwoPulse, 0, [Some(1), None, None, None]),
+        mi(0, 9, Quadrature, 1, [Some(0), None, None, None]),
+        mi(1, 0, InternalDir, 3, [None, None, None, None]),
+        mi(1, 1, InternalDir, 3, [None, None, Some(4), None]),
+        mi(1, 2, InternalDir, 3, [None, None, Some(4), Some(6)]),
+        mi(1, 3, ExternalDir, 3, [None, Some(2), None, None]),
+        mi(1, 4, ExternalDir, 3, [None, Some(2), Some(4), None]),
+        mi(1, 6, TwoPulse, 2, [Some(3), None, None, None]),
+        mi(1, 7, TwoPulse, 2, [Some(3), None, Some(4), None]),
+        mi(1, 9, Quadrature, 3, [Some(2), None, None, None]),
+        mi(1, 10, Quadrature, 3, [Some(2), None, Some(4), None]),
+        mi(2, 0, InternalDir, 5, [None, None, None, None]),
+        mi(2, 9, Quadrature, 4, [Some(5), None, None, None]),
+        mi(3, 0, InternalDir, 7, [None, None, None, None]),
+        mi(3, 9, Quadrature, 6, [Some(7), None, None, None]),
+    ]
+};
+
+/// The inputs of counter `channel` in `mode`, if the manual lists that mode.
+pub fn hsc_mode(channel: u8, mode: u8) -> Option<&'static HscModeInputs> {
+    HSC_MODE_INPUTS.iter().find(|m| m.channel == channel && m.mode == mode)
+}
+
+/// The modes the manual lists for counter `channel`.
+pub fn hsc_modes_of(channel: u8) -> Vec<u8> {
+    HSC_MODE_INPUTS.iter().filter(|m| m.channel == channel).map(|m| m.mode).collect()
+}
+
 /// Every named SM register, generated from the channel tables above plus the system bits.
 pub fn names() -> &'static [SmName] {
     use std::sync::OnceLock;
@@ -355,6 +444,28 @@ mod tests {
                 assert!(!(a.byte == b.byte && a.size == b.size), "{} twice", a.operand());
             }
         }
+    }
+
+    #[test]
+    fn structured_modes_match_the_text_table() {
+        assert_eq!(HSC_MODES.len(), HSC_MODE_INPUTS.len());
+        for &(ch, mode, text) in HSC_MODES {
+            let m = hsc_mode(ch, mode).unwrap_or_else(|| panic!("HSC{ch} mode {mode} missing"));
+            let pin = |p: (u32, u8)| format!("I{}.{}", p.0, p.1);
+            assert!(text.contains(&pin(m.count)), "HSC{ch} mode {mode}: {text}");
+            for p in [m.second, m.dir, m.reset, m.start].into_iter().flatten() {
+                assert!(text.contains(&pin(p)), "HSC{ch} mode {mode}: {text} lacks {}", pin(p));
+            }
+            let word = match m.kind {
+                HscKind::InternalDir => "direction by",
+                HscKind::ExternalDir => "direction input",
+                HscKind::TwoPulse => "two-pulse",
+                HscKind::Quadrature => "quadrature",
+            };
+            assert!(text.contains(word), "HSC{ch} mode {mode}: {text}");
+        }
+        // Mode 6's up input is listed first in the text.
+        assert!(HSC_MODES.iter().any(|m| m.0 == 0 && m.1 == 6 && m.2.starts_with("up I0.0")));
     }
 
     #[test]

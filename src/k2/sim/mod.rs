@@ -2,15 +2,33 @@
 //! manual says, driven by the session's virtual clock.
 //!
 //! Everything time-dependent is computed from elapsed virtual time when the simulator is
-//! touched ([`K2Sim::advance`]), never by ticking: the system bits (SM0.0 always on, SM0.1
-//! first scan, SM0.5 1-second clock, SM0.6 scan toggle), and — as their modules land — the
-//! pulse outputs and counters. The Modbus server (`plcsh sim serve`) serves this same type.
+//! touched ([`K2Sim::advance_to`]), never by ticking: the system bits (SM0.0 always on, SM0.1
+//! first scan, SM0.5 1-second clock, SM0.6 scan toggle), the pulse outputs ([`pto`]), the
+//! high-speed counters ([`hsc`]) fed by simulated input signals ([`inputs`]), the event
+//! log ([`events`]) and the real-time clock ([`rtc`]). The backup area and retained ranges
+//! persist through [`state`]. The Modbus server (`plcsh sim serve`) serves this same type.
+
+pub mod events;
+pub mod hsc;
+pub mod inputs;
+pub mod pto;
+pub mod rtc;
+pub mod state;
 
 use crate::core::{Clock, Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
 use crate::k2::catalog::{self, Model};
+use crate::k2::instr::{self, Event, EventKind, EventMatch, RtcTime};
 use crate::k2::memory::Memory;
 use crate::k2::operand::{Area, K2Operand, Width};
+use crate::k2::sm_map::{HSC_REGS, PTO_REGS};
 use crate::k2::space::K2Space;
+use events::EventLog;
+use hsc::HscChannel;
+use inputs::{Inputs, Pin, Source};
+use pto::PtoChannel;
+use rtc::Rtc;
+use state::{Backup, Retain};
+use std::path::PathBuf;
 use std::time::Duration;
 
 /// Scan time the simulator assumes (the manual gives no figure; 1 ms is typical of a
@@ -27,18 +45,36 @@ pub struct K2Sim {
     start: Duration,
     /// Virtual time of the last `advance`.
     pub last: Duration,
+    /// Pulse output channels the model has (none on relay models).
+    pub pto: Vec<PtoChannel>,
+    /// High-speed counters the model has.
+    pub hsc: Vec<HscChannel>,
+    /// Simulated signals on the inputs.
+    pub inputs: Inputs,
+    pub events: EventLog,
+    pub rtc: Rtc,
+    pub backup: Backup,
 }
 
 impl K2Sim {
     pub fn new(model: &'static Model, clock: Clock) -> K2Sim {
         let start = clock.now();
+        let mut mem = Memory::new(model);
+        let pto = model.pto.iter().map(|p| PtoChannel::new(PTO_REGS[p.channel as usize], *p, &mut mem)).collect();
+        let hsc = model.hsc.iter().map(|h| HscChannel::new(HSC_REGS[h.channel as usize], *h)).collect();
         let mut sim = K2Sim {
             info: DeviceInfo { family: "k2", model: model.name.to_string(), link: "sim".into(), simulated: true },
             space: K2Space::new(model),
-            mem: Memory::new(model),
+            mem,
             clock,
             start,
             last: start,
+            pto,
+            hsc,
+            inputs: Inputs::default(),
+            events: EventLog::default(),
+            rtc: Rtc::new(instr::host_local_now(), start),
+            backup: Backup { since: start, ..Backup::default() },
         };
         sim.refresh_system_bits(start);
         sim
@@ -63,10 +99,43 @@ impl K2Sim {
         self.advance_to(now);
     }
 
-    /// Brings the simulation up to virtual time `now`.
+    /// Brings the simulation up to virtual time `now`: pulses, counts, events, input
+    /// levels and system bits, all computed from the elapsed time in one step.
     pub fn advance_to(&mut self, now: Duration) {
+        let last = self.last;
+        let now = now.max(last);
+        let mut raised = Vec::new();
+        let mut skipped = 0u64;
+        for p in &mut self.pto {
+            p.advance(&mut self.mem, now, &mut raised);
+        }
+        for h in &mut self.hsc {
+            h.advance(&mut self.mem, &self.inputs, last, now, &mut raised, &mut skipped);
+        }
+        self.refresh_input_levels(now);
+        if skipped > 0 {
+            self.events.skip(skipped);
+        }
+        if !raised.is_empty() {
+            self.events.extend(raised);
+        }
         self.last = now;
         self.refresh_system_bits(now);
+    }
+
+    /// Writes the sources' current levels into the input image.
+    fn refresh_input_levels(&mut self, now: Duration) {
+        for s in &self.inputs.sources {
+            for p in s.pins() {
+                if let (Some(w), Some(b)) = (self.inputs.wave(p), self.mem.i.get_mut(p.0 as usize)) {
+                    if w.level(now) {
+                        *b |= 1 << p.1
+                    } else {
+                        *b &= !(1 << p.1)
+                    }
+                }
+            }
+        }
     }
 
     fn refresh_system_bits(&mut self, now: Duration) {
@@ -105,10 +174,296 @@ impl K2Sim {
             .operand(op.canonical())
             .hint("SM0.0 is always on, SM0.1 marks the first scan, SM0.5 is the 1-second clock"));
         }
-        if op.area == Area::I && matches!(op.width, Width::Group { .. }) {
-            return Ok(());
+        let (lo, hi) = (op.byte, op.byte + op.width.bytes());
+        if op.area == Area::SM {
+            for p in &self.pto {
+                let r = p.regs;
+                if lo < r.pos_cv + 4 && r.pos_cv < hi {
+                    return Err(Error::new(
+                        ErrorKind::Refused,
+                        if op.canonical() == format!("SMD{}", r.pos_cv) {
+                            format!(
+                                "SMD{} is the read-only current value of position channel {} (manual §3.4.3.1)",
+                                r.pos_cv, r.channel
+                            )
+                        } else {
+                            format!(
+                                "{} overlaps SMD{}, the read-only current value of position channel {} (manual §3.4.3.1)",
+                                op.canonical(),
+                                r.pos_cv,
+                                r.channel
+                            )
+                        },
+                    )
+                    .operand(op.canonical())
+                    .hint(format!(
+                        "load a new value through SMD{} and SM{}.4 (set SMD{}=100, SM{}.4=1), or clear it with SM{}.6",
+                        r.pos_new_cv, r.pos_control, r.pos_new_cv, r.pos_control, r.pos_control
+                    )));
+                }
+            }
+        }
+        if op.area == Area::I {
+            for s in &self.inputs.sources {
+                for p in s.pins() {
+                    let bit_hit = match op.width {
+                        Width::Bit(b) => p == (op.byte, b),
+                        Width::Group { n, bit } => {
+                            let abs = p.0 * 8 + p.1 as u32;
+                            let first = op.byte * 8 + bit as u32;
+                            abs >= first && abs < first + 4 * n as u32
+                        }
+                        _ => p.0 >= lo && p.0 < hi,
+                    };
+                    if bit_hit {
+                        return Err(Error::new(
+                            ErrorKind::State,
+                            format!("{} is driven by a simulated signal ({})", inputs::pin_name(p), s.describe()),
+                        )
+                        .operand(op.canonical())
+                        .hint(format!("stop it first: sim input {} off", inputs::pin_name(p))));
+                    }
+                }
+            }
         }
         Ok(())
+    }
+
+    /// Bookkeeping after the user wrote `op`: counter edges, E2PROM wear, SMD38 holds.
+    fn after_write(&mut self, op: &K2Operand, raised: &mut Vec<(Duration, EventKind)>) {
+        let (lo, hi) = (op.byte, op.byte + op.width.bytes());
+        match op.area {
+            Area::V => {
+                for (byte, writes) in self.backup.count(lo, hi - lo) {
+                    raised.push((self.last, EventKind::EepromWear { byte, writes }));
+                }
+            }
+            Area::SM => {
+                for h in &mut self.hsc {
+                    if lo < h.regs.cv + 4 && h.regs.cv < hi {
+                        h.user_cv = true;
+                    }
+                }
+                for p in &self.pto {
+                    p.apply_position_bits(&mut self.mem);
+                }
+            }
+            _ => {}
+        }
+    }
+
+    // ---- channels -------------------------------------------------------------------
+
+    fn pto_index(&self, ch: u8) -> Result<usize> {
+        let m = self.model();
+        if m.relay {
+            return Err(Error::unsupported(format!(
+                "{} has relay outputs: no PTO/PWM pulse outputs (manual §2.2.6)",
+                m.name
+            ))
+            .hint("pulse outputs need a transistor-output model, e.g. K205-16DT"));
+        }
+        self.pto.iter().position(|p| p.regs.channel == ch).ok_or_else(|| {
+            let list: Vec<String> =
+                self.pto.iter().map(|p| format!("{} ({})", p.regs.channel, p.spec.output)).collect();
+            let extra = if ch == 3 { " (Q0.5 is a pulse output only on K209M-56DT)" } else { "" };
+            Error::unsupported(format!("{} has no pulse channel {ch}{extra}", m.name)).hint(format!(
+                "pulse channels on {}: {}",
+                m.name,
+                list.join(", ")
+            ))
+        })
+    }
+
+    fn hsc_index(&self, ch: u8) -> Result<usize> {
+        let m = self.model();
+        self.hsc.iter().position(|h| h.regs.channel == ch).ok_or_else(|| {
+            let list: Vec<String> = self.hsc.iter().map(|h| format!("HSC{}", h.regs.channel)).collect();
+            Error::unsupported(format!("{} has no high-speed counter HSC{ch}", m.name)).hint(format!(
+                "counters on {}: {}",
+                m.name,
+                list.join(", ")
+            ))
+        })
+    }
+
+    /// Other channels whose control byte has the enable bit set (for "did you mean").
+    fn other_enabled(&self, ch: u8) -> Vec<String> {
+        self.pto
+            .iter()
+            .filter(|p| p.regs.channel != ch)
+            .filter(|p| self.mem.sm_byte(p.regs.control) & pto::ctl::ENABLE != 0)
+            .map(|p| {
+                format!(
+                    "SMB{} = 16#{:02X} is set: that is PTO{}'s control byte ({}) — did you mean PLS {}?",
+                    p.regs.control,
+                    self.mem.sm_byte(p.regs.control),
+                    p.regs.channel,
+                    p.spec.output,
+                    p.regs.channel
+                )
+            })
+            .collect()
+    }
+
+    // ---- simulation controls ----------------------------------------------------------
+
+    /// Checks that `pin` is an input of this model.
+    pub fn check_input(&self, pin: Pin) -> Result<()> {
+        let op = K2Operand::bit(Area::I, pin.0, pin.1);
+        self.space.check(&op)
+    }
+
+    /// Adds (or replaces) a signal source; returns a description with any counter that
+    /// counts it and frequency warnings.
+    pub fn add_source(&mut self, s: Source) -> Result<String> {
+        for p in s.pins() {
+            self.check_input(p)?;
+        }
+        self.advance();
+        let now = self.last;
+        let s = match s {
+            Source::Freq { pin, wave } => {
+                Source::Freq { pin, wave: inputs::Wave { origin_ns: now.as_nanos(), ..wave } }
+            }
+            Source::Quad { lead, lag, wave } => {
+                Source::Quad { lead, lag, wave: inputs::Wave { origin_ns: now.as_nanos(), ..wave } }
+            }
+        };
+        self.inputs.add(s);
+        self.refresh_input_levels(now);
+        let mut msg = s.describe();
+        for h in &self.hsc {
+            let Some(m) = h.mode else { continue };
+            let pins: Vec<Pin> = [Some(m.count), m.second].into_iter().flatten().collect();
+            if !s.pins().iter().any(|p| pins.contains(p)) {
+                continue;
+            }
+            let quad = m.kind == crate::k2::sm_map::HscKind::Quadrature;
+            let max = if quad { h.spec.max_hz_ab } else { h.spec.max_hz_single } as u64;
+            msg.push_str(&format!("; counted by HSC{} (mode {})", h.regs.channel, m.mode));
+            if s.hz() > max {
+                msg.push_str(&format!(
+                    "; warning: above HSC{}'s {} Hz limit on {} (§3.3): a real PLC would miss counts",
+                    h.regs.channel,
+                    max,
+                    self.model().name
+                ));
+            }
+        }
+        Ok(msg)
+    }
+
+    /// Stops the source driving `pin`; the input keeps its last level.
+    pub fn remove_source(&mut self, pin: Pin) -> Result<Source> {
+        self.check_input(pin)?;
+        self.advance();
+        self.inputs.remove(pin).ok_or_else(|| {
+            Error::usage(format!("no simulated signal drives {}", inputs::pin_name(pin)))
+                .hint("`sim inputs` lists the sources")
+        })
+    }
+
+    /// The earliest future time at which a channel will raise an event from what runs now.
+    pub fn next_event_due(&self) -> Option<Duration> {
+        let p = self.pto.iter().filter_map(|p| p.next_due());
+        let h = self.hsc.iter().filter_map(|h| h.next_due(&self.inputs, &self.mem, self.last));
+        p.chain(h).min()
+    }
+
+    /// Battery-retained ranges (`VB0..VB99`, `MB0[10]`): V or M byte ranges.
+    pub fn set_retain(&mut self, text: &str) -> Result<()> {
+        let mut ranges = Vec::new();
+        if !text.trim().eq_ignore_ascii_case("none") {
+            for part in text.split([',', ' ']).filter(|p| !p.is_empty()) {
+                let ops = self.space.parse_k2(part)?;
+                let area = ops[0].area;
+                if !matches!(area, Area::V | Area::M) {
+                    return Err(Error::usage(format!("{part}: only V and M ranges can be retained"))
+                        .hint("e.g. sim retain VB0..VB99 MB0[16]"));
+                }
+                let first = ops.iter().map(|o| o.byte).min().unwrap_or(0);
+                let end = ops.iter().map(|o| o.byte + o.width.bytes()).max().unwrap_or(0);
+                ranges.push(Retain { area, first, len: end - first });
+            }
+        }
+        self.backup.retain = ranges;
+        Ok(())
+    }
+
+    /// Reads the state file (if it has an entry for this model) and restores the backup
+    /// area, retained ranges, E2PROM counts and the clock; from then on the simulator
+    /// saves there.
+    pub fn attach_state(&mut self, path: PathBuf) -> Result<()> {
+        if let Some(st) = state::load(&path, self.model().name)? {
+            self.backup.set_last(st.backup_last.clamp(catalog::EEPROM_LAST_DEFAULT, catalog::EEPROM_LAST_MAX))?;
+            if let Some(bytes) = state::unhex(&st.backup) {
+                let lo = catalog::EEPROM_FIRST as usize;
+                let n = bytes.len().min(self.mem.v.len().saturating_sub(lo));
+                self.mem.v[lo..lo + n].copy_from_slice(&bytes[..n]);
+            }
+            for (i, w) in st.eeprom_writes.iter().enumerate().take(self.backup.writes.len()) {
+                self.backup.writes[i] = *w;
+            }
+            self.backup.retain.clear();
+            for r in &st.retain {
+                let area = if r.area == "M" { Area::M } else { Area::V };
+                let Some(bytes) = state::unhex(&r.data) else { continue };
+                let buf = self.mem.area_mut(area);
+                let lo = r.first as usize;
+                if lo + bytes.len() <= buf.len() {
+                    buf[lo..lo + bytes.len()].copy_from_slice(&bytes);
+                    self.backup.retain.push(Retain { area, first: r.first, len: bytes.len() as u32 });
+                }
+            }
+            if let Some(rtc) = st.rtc {
+                let away = unix_now() - rtc.host_unix;
+                self.rtc = Rtc::new(RtcTime::from_secs(rtc.civil_secs + away.max(0)), self.last);
+            }
+        }
+        self.backup.path = Some(path);
+        Ok(())
+    }
+
+    /// Writes the state file now (also done when the simulator is dropped).
+    pub fn save_state(&mut self) -> Result<()> {
+        let Some(path) = self.backup.path.clone() else { return Ok(()) };
+        self.advance();
+        let lo = catalog::EEPROM_FIRST as usize;
+        let hi = (self.backup.last as usize + 1).min(self.mem.v.len());
+        let retain = self
+            .backup
+            .retain
+            .iter()
+            .map(|r| {
+                let a = self.mem.area(r.area);
+                state::RetainSaved {
+                    area: r.area.name().to_string(),
+                    first: r.first,
+                    data: state::hex(&a[r.first as usize..(r.first + r.len) as usize]),
+                }
+            })
+            .collect();
+        let st = state::ModelState {
+            backup_last: self.backup.last,
+            backup: state::hex(self.mem.v.get(lo..hi).unwrap_or(&[])),
+            eeprom_writes: self.backup.writes.clone(),
+            retain,
+            rtc: Some(state::RtcSaved { civil_secs: self.rtc.read(self.last).to_secs(), host_unix: unix_now() }),
+        };
+        state::save(&path, self.model().name, st)
+    }
+}
+
+fn unix_now() -> i64 {
+    std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).unwrap_or_default().as_secs() as i64
+}
+
+impl Drop for K2Sim {
+    fn drop(&mut self) {
+        if let Err(e) = self.save_state() {
+            eprintln!("plcsh: the simulator state was not saved: {e}");
+        }
     }
 }
 
@@ -137,10 +492,22 @@ impl Device for K2Sim {
             self.check_writable(&K2Operand::from_key(o.key))?;
         }
         self.advance();
+        let old_i = self.mem.i.clone();
+        let mut raised = Vec::new();
         for (o, v) in items {
             let k = K2Operand::from_key(o.key);
             let raw = o.dtype.encode(v);
             self.mem.write(&k, raw);
+            self.after_write(&k, &mut raised);
+        }
+        if self.mem.i != old_i {
+            let now = self.last;
+            for h in &mut self.hsc {
+                h.input_edges(&mut self.mem, &old_i, now, &mut raised);
+            }
+        }
+        if !raised.is_empty() {
+            self.events.extend(raised);
         }
         Ok(())
     }
@@ -148,12 +515,108 @@ impl Device for K2Sim {
     fn as_k2(&mut self) -> Option<&mut dyn crate::k2::K2Ops> {
         Some(self)
     }
+
+    /// `state=FILE` (persist there), `backup_last=4095` (E2PROM area end),
+    /// `retain=VB0..VB99,MB0[8]` (battery-retained ranges, or `none`).
+    fn set_option(&mut self, key: &str, value: &str) -> Result<()> {
+        match key {
+            "state" => self.attach_state(PathBuf::from(value)),
+            "backup_last" => {
+                let n: u32 = value.trim().trim_start_matches(['V', 'B', 'v', 'b']).parse().map_err(|_| {
+                    Error::usage(format!("backup_last={value} is not a V byte address")).hint("e.g. backup_last=4095")
+                })?;
+                self.backup.set_last(n)
+            }
+            "retain" => self.set_retain(value),
+            _ => Err(Error::usage(format!("K2 simulators have no option `{key}`"))
+                .hint("options: state=FILE, backup_last=3902…4095, retain=RANGES")),
+        }
+    }
 }
 
 impl crate::k2::K2Ops for K2Sim {
     fn model(&self) -> &'static Model {
         self.space.model
     }
+
+    fn pls(&mut self, channel: u8) -> Result<String> {
+        let i = self.pto_index(channel)?;
+        self.advance();
+        let now = self.last;
+        let r = self.pto[i].pls(&mut self.mem, now);
+        match r {
+            Err(e) if e.kind == ErrorKind::State => {
+                let others = self.other_enabled(channel);
+                let hint = if others.is_empty() {
+                    format!(
+                        "set the control byte first, e.g. set SMB{}=16#85, SMW{}=500, SMD{}=1000",
+                        self.pto[i].regs.control, self.pto[i].regs.cycle, self.pto[i].regs.count
+                    )
+                } else {
+                    others.join("; ")
+                };
+                Err(e.hint(hint))
+            }
+            r => r,
+        }
+    }
+
+    fn hdef(&mut self, counter: u8, mode: u8) -> Result<String> {
+        let i = self.hsc_index(counter)?;
+        self.advance();
+        self.hsc[i].hdef(mode)
+    }
+
+    fn hsc(&mut self, counter: u8) -> Result<String> {
+        let i = self.hsc_index(counter)?;
+        self.advance();
+        self.hsc[i].hsc(&mut self.mem)
+    }
+
+    fn pstop(&mut self, channel: u8) -> Result<String> {
+        let i = self.pto_index(channel)?;
+        self.advance();
+        let p = &mut self.pto[i];
+        let what = p.pstop(&mut self.mem);
+        let r = p.regs;
+        Ok(format!(
+            "PSTOP {channel}: {}; emergency-stop latch SM{}.7 = 1 (clear it with set SM{}.7=0)",
+            if what.is_empty() { "nothing was running".to_string() } else { format!("{what} stopped") },
+            r.pos_control,
+            r.pos_control
+        ))
+    }
+
+    fn read_rtc(&mut self) -> Result<RtcTime> {
+        self.advance();
+        Ok(self.rtc.read(self.last))
+    }
+
+    fn set_rtc(&mut self, t: RtcTime) -> Result<()> {
+        t.validate().map_err(Error::usage)?;
+        self.advance();
+        self.rtc.set(t, self.last);
+        Ok(())
+    }
+
+    fn events(&mut self, clear: bool) -> Result<Vec<Event>> {
+        self.advance();
+        let l = self.events.list();
+        if clear {
+            self.events.clear();
+        }
+        Ok(l)
+    }
+
+    fn take_event(&mut self, m: &EventMatch) -> Result<Option<Event>> {
+        self.advance();
+        Ok(self.events.take(m))
+    }
+
+    fn backup_area(&self) -> (u32, u32) {
+        (catalog::EEPROM_FIRST, self.backup.last)
+    }
+
     fn as_sim(&mut self) -> Option<&mut K2Sim> {
         Some(self)
     }
@@ -164,6 +627,9 @@ pub fn open(model: &str, clock: Clock) -> Result<K2Sim> {
     let name = if model.is_empty() { catalog::DEFAULT_MODEL } else { model };
     Ok(K2Sim::new(catalog::lookup(name)?, clock))
 }
+
+#[cfg(test)]
+mod behaviour_tests;
 
 #[cfg(test)]
 mod tests {

@@ -1,12 +1,19 @@
 //! The command registry: every shell command in one list, one file per command family.
 //! Completion, `help` and the README's command table all read this list.
 
+mod counter;
 mod device;
+mod eeprom;
+mod events;
 mod help;
 mod io;
+mod k2cmd;
 pub mod profiles;
+mod pulse;
+mod rtc;
 mod servo;
 mod sim;
+mod siminputs;
 mod trend;
 mod watch;
 
@@ -39,6 +46,17 @@ pub const COMMANDS: &[CommandSpec] = &[
     trend::TRACE,
     trend::PLOT,
     servo::SERVO,
+    pulse::PLS,
+    pulse::PSTOP,
+    pulse::PTO,
+    pulse::PWM,
+    pulse::PROFILE,
+    counter::HDEF,
+    counter::HSC,
+    events::EVENTS,
+    events::WAIT,
+    rtc::RTC,
+    eeprom::EEPROM,
     help::HELP,
     help::QUIT,
 ];

@@ -1,4 +1,6 @@
-//! `sim time`, `sim step DURATION`, `sim run`: the session's virtual clock.
+//! `sim time`, `sim step DURATION`, `sim run`: the session's virtual clock; `sim input`,
+//! `sim quad`, `sim inputs`: simulated signals on the PLC's inputs for the high-speed
+//! counters; `sim retain`: battery-retained ranges.
 
 use super::CommandSpec;
 use crate::core::clock::format_time;
@@ -11,9 +13,9 @@ use std::time::Duration;
 pub const SIM: CommandSpec = CommandSpec {
     name: "sim",
     aliases: &[],
-    usage: "sim time | sim step DURATION | sim run",
-    summary: "show the simulator clock, step it (and keep it stepped), or let it follow the wall clock",
-    subcommands: &["time", "step", "run"],
+    usage: "sim time | sim step DURATION | sim run | sim input I0.1 freq=1kHz [dir=up|down] | sim input I0.1 off | sim quad A B freq=1kHz | sim inputs | sim retain RANGES|none",
+    summary: "the simulator's clock (show, step and keep stepped, follow the wall clock), input signals for the counters, retained ranges",
+    subcommands: &["time", "step", "run", "input", "quad", "inputs", "retain"],
     run: sim,
 };
 
@@ -34,6 +36,7 @@ fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
             clock.step(Duration::from_micros(us as u64));
         }
         "run" => clock.run(),
+        "input" | "quad" | "inputs" | "retain" => return super::siminputs::run(sh, sub, args),
         other => return Err(Error::usage(format!("unknown `sim {other}`")).hint(SIM.usage).column(args.offset)),
     }
     let now = clock.now();

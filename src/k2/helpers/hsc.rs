@@ -1,0 +1,290 @@
+//! High-speed counter helper (manual §3.3; k2.md §4): `hsc N mode=9 rate=4x
+//! pv=[100,200,300] relative cyclic at VB3009` plans the control byte, CV, the single PV or
+//! the PV table with its multi-PV control byte, then HDEF and HSC; and the status decoder.
+//! Registers from [`crate::k2::sm_map::HSC_REGS`], modes from `HSC_MODE_INPUTS`.
+
+use super::{bad, overlaps_backup, read_ops, Instr, Plan, Written};
+use crate::core::{DataType, Device, Error, Result};
+use crate::k2::catalog::Model;
+use crate::k2::operand::{Area, K2Operand};
+use crate::k2::sim::hsc::{ctl, mpv, MAX_PVS};
+use crate::k2::sm_map::{self, HscKind, HscRegs, HSC_REGS};
+
+/// What the user asked for.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct HscRequest {
+    pub counter: u8,
+    pub mode: u8,
+    /// 4x quadrature (modes 9/10).
+    pub rate4x: bool,
+    /// Count direction for modes 0–2 (`dir=up|down`); `None` = up.
+    pub up: Option<bool>,
+    /// Load this current value (bit 6).
+    pub cv: Option<i32>,
+    /// Preset values: one without `at` = single PV; a table with `at`.
+    pub pv: Vec<i32>,
+    pub relative: bool,
+    pub cyclic: bool,
+    /// PV table start (odd V offset).
+    pub at: Option<u32>,
+    pub reset_low: bool,
+    pub start_low: bool,
+    /// Allow a table in the E2PROM backup area.
+    pub force: bool,
+}
+
+/// The counter's registers, or an error naming the model's counters.
+pub fn counter(model: &Model, n: u8) -> Result<HscRegs> {
+    if model.hsc(n).is_none() {
+        let list: Vec<String> = model.hsc.iter().map(|h| format!("HSC{}", h.channel)).collect();
+        return Err(Error::unsupported(format!("{} has no high-speed counter HSC{n}", model.name)).hint(format!(
+            "counters on {}: {}",
+            model.name,
+            list.join(", ")
+        )));
+    }
+    Ok(HSC_REGS[n as usize])
+}
+
+/// Plans the writes and HDEF + HSC for a request (§3.3.5 method 1).
+pub fn plan(model: &Model, q: &HscRequest, backup: (u32, u32)) -> Result<Plan> {
+    let r = counter(model, q.counter)?;
+    let n = q.counter;
+    let m = sm_map::hsc_mode(n, q.mode).ok_or_else(|| {
+        let modes: Vec<String> = sm_map::hsc_modes_of(n).iter().map(|m| m.to_string()).collect();
+        bad("mode", format!("HSC{n} has no mode {} (manual §3.3.1)", q.mode))
+            .hint(format!("HSC{n}'s modes: {}", modes.join(", ")))
+    })?;
+    if q.rate4x && m.kind != HscKind::Quadrature {
+        return Err(bad("rate", format!("rate=4x applies to the A/B modes (9, 10), not mode {}", q.mode)));
+    }
+    if q.up.is_some() && m.kind != HscKind::InternalDir {
+        return Err(bad(
+            "dir",
+            format!("mode {} takes its direction from its inputs; dir= applies to modes 0–2 (§3.3.2)", q.mode),
+        ));
+    }
+    if q.reset_low && m.reset.is_none() {
+        return Err(bad("reset", format!("mode {} has no reset input", q.mode)));
+    }
+    if q.start_low && m.start.is_none() {
+        return Err(bad("start", format!("mode {} has no start input", q.mode)));
+    }
+    let mut p = Plan::default();
+    let mut c = ctl::ENABLE;
+    if q.rate4x {
+        c |= ctl::RATE_4X;
+    }
+    if q.reset_low {
+        c |= ctl::RESET_LOW;
+    }
+    if q.start_low {
+        c |= ctl::START_LOW;
+    }
+    if m.kind == HscKind::InternalDir {
+        c |= ctl::WRITE_DIR;
+        if q.up.unwrap_or(true) {
+            c |= ctl::DIR_UP;
+        }
+    }
+    if let Some(cv) = q.cv {
+        c |= ctl::WRITE_CV;
+        p.dint(Area::SM, r.cv, cv as i64);
+    }
+    if q.cyclic && !q.relative {
+        return Err(bad(
+            "cyclic",
+            "cyclic CV = PV interrupts need relative PVs (§3.3.2: SM141.2 acts only with SM141.1)",
+        ));
+    }
+    match (q.pv.len(), q.at) {
+        (0, None) => {
+            p.byte(Area::SM, r.mpv_control, 0);
+        }
+        (1, None) if !q.relative => {
+            c |= ctl::WRITE_PV;
+            p.dint(Area::SM, r.pv, q.pv[0] as i64);
+            p.byte(Area::SM, r.mpv_control, 0);
+        }
+        (_, None) => {
+            return Err(bad("pv", "a PV table (several PVs, relative or cyclic) needs a V address: add `at VB3009`"))
+        }
+        (0, Some(_)) => return Err(bad("pv", "`at` needs PVs: pv=[100,200,300]")),
+        (k, Some(at)) => {
+            if at % 2 == 0 {
+                return Err(bad("at", format!("VB{at} is even: the PV table starts at an odd V address (§3.3.2)"))
+                    .hint(format!("e.g. at VB{}", at + 1)));
+            }
+            if k > MAX_PVS as usize {
+                return Err(bad("pv", format!("{k} PVs: a counter has at most {MAX_PVS} (§3.3.3)")));
+            }
+            let last = at + 4 * k as u32;
+            if last >= model.v_bytes {
+                return Err(bad("at", format!("the PV table VB{at}…VB{last} runs past the V area")));
+            }
+            if overlaps_backup(at, last, backup) && !q.force {
+                return Err(bad(
+                    "at",
+                    format!(
+                        "the PV table VB{at}…VB{last} overlaps the E2PROM backup area VB{}…VB{} (§2.2.8)",
+                        backup.0, backup.1
+                    ),
+                )
+                .hint("move the table below VB3648, or add `force`"));
+            }
+            for (i, pv) in q.pv.iter().enumerate() {
+                let ends = if q.relative {
+                    (*pv as i64).abs() <= 1
+                } else {
+                    i > 0 && (*pv as i64 - q.pv[i - 1] as i64).abs() <= 1
+                };
+                if ends {
+                    return Err(bad(
+                        "pv",
+                        format!(
+                            "PV{} = {pv} would end the table there (§3.3.3: relative |PV| > 1, absolute neighbours differ by > 1)",
+                            i + 1
+                        ),
+                    ));
+                }
+            }
+            p.byte(Area::V, at, k as i64);
+            for (i, pv) in q.pv.iter().enumerate() {
+                p.dint(Area::V, at + 1 + 4 * i as u32, *pv as i64);
+            }
+            p.word(Area::SM, r.table, at as i64);
+            let mut b = mpv::MULTI | mpv::LOAD;
+            if q.relative {
+                b |= mpv::RELATIVE;
+            }
+            if q.cyclic {
+                b |= mpv::CYCLIC;
+            }
+            p.byte(Area::SM, r.mpv_control, b as i64);
+            let first = r.event_base as u32;
+            p.notes.push(format!("CV = PV events {}…{} (§3.3.4)", first, first + k as u32 - 1));
+        }
+    }
+    p.writes.insert(0, (K2Operand::byte(Area::SM, r.control), crate::core::Value::Int(c as i64)));
+    p.then.push(Instr::Hdef(n, q.mode));
+    p.then.push(Instr::Hsc(n));
+    Ok(p)
+}
+
+/// Meanings of an HSC status byte (§3.3.2).
+pub fn decode_status(s: u8) -> Vec<&'static str> {
+    let mut w = vec![if s & 0x20 != 0 { "counting up" } else { "counting down" }];
+    if s & 0x40 != 0 {
+        w.push("CV = PV");
+    }
+    if s & 0x80 != 0 {
+        w.push("CV > PV");
+    }
+    if s & 0x08 != 0 {
+        w.push("PV table fault");
+    }
+    w
+}
+
+/// `hsc status N`.
+pub fn status(dev: &mut dyn Device, model: &Model, n: u8) -> Result<(Vec<Written>, Vec<String>)> {
+    let r = counter(model, n)?;
+    let mut cv = K2Operand::dword(Area::SM, r.cv);
+    cv.view = DataType::DInt;
+    let mut pv = K2Operand::dword(Area::SM, r.pv);
+    pv.view = DataType::DInt;
+    let ops = [
+        K2Operand::byte(Area::SM, r.status),
+        K2Operand::byte(Area::SM, r.control),
+        cv,
+        pv,
+        K2Operand::byte(Area::SM, r.mpv_control),
+        K2Operand::byte(Area::SM, r.segment),
+    ];
+    let vals = read_ops(dev, &ops)?;
+    let st = vals[0].value.as_i64() as u8;
+    let c = vals[1].value.as_i64() as u8;
+    let b = vals[4].value.as_i64() as u8;
+    let mut words: Vec<String> = decode_status(st).into_iter().map(String::from).collect();
+    words.insert(0, if c & ctl::ENABLE != 0 { "enabled".into() } else { "disabled".into() });
+    words.push(format!("CV {}", vals[2].value.as_i64()));
+    if b & mpv::MULTI != 0 {
+        words.push(format!(
+            "multi-PV {}{}, segment {}",
+            if b & mpv::RELATIVE != 0 { "relative" } else { "absolute" },
+            if b & mpv::CYCLIC != 0 { " cyclic" } else { "" },
+            vals[5].value.as_i64()
+        ));
+    } else {
+        words.push(format!("single PV {}", vals[3].value.as_i64()));
+    }
+    Ok((vals, words))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::k2::catalog::find;
+
+    #[test]
+    fn the_issue_example_plans_table_and_control_bytes() {
+        let q = HscRequest {
+            counter: 0,
+            mode: 9,
+            rate4x: true,
+            pv: vec![100, 200, 300],
+            relative: true,
+            cyclic: true,
+            at: Some(3009),
+            ..Default::default()
+        };
+        let p = plan(find("K205-16DT").unwrap(), &q, (3648, 3902)).unwrap();
+        assert_eq!(p.value_of("SMB37"), Some(0x84), "enable + 4x");
+        assert_eq!(p.value_of("VB3009"), Some(3));
+        assert_eq!(p.value_of("VD3010/DINT"), Some(100));
+        assert_eq!(p.value_of("VD3018/DINT"), Some(300));
+        assert_eq!(p.value_of("SMW142"), Some(3009));
+        assert_eq!(p.value_of("SMB141"), Some(0x17));
+        assert_eq!(p.then, vec![Instr::Hdef(0, 9), Instr::Hsc(0)]);
+        assert!(p.notes[0].contains("64…66"));
+    }
+
+    #[test]
+    fn single_pv_and_direction() {
+        let q = HscRequest { counter: 1, mode: 0, up: Some(false), cv: Some(-5), pv: vec![-100], ..Default::default() };
+        let p = plan(find("K205-16DT").unwrap(), &q, (3648, 3902)).unwrap();
+        assert_eq!(p.value_of("SMB47"), Some(0xF0), "enable, write CV, write PV, write dir, down");
+        assert_eq!(p.value_of("SMD52/DINT"), Some(-100));
+        assert_eq!(p.value_of("SMD48/DINT"), Some(-5));
+        assert_eq!(p.value_of("SMB151"), Some(0));
+    }
+
+    #[test]
+    fn refusals() {
+        let m = find("K205-16DT").unwrap();
+        let b = (3648, 3902);
+        let base = HscRequest { counter: 0, mode: 0, ..Default::default() };
+        assert!(plan(m, &HscRequest { mode: 5, ..base.clone() }, b)
+            .unwrap_err()
+            .hint
+            .clone()
+            .unwrap()
+            .contains("0, 1, 2, 3, 4, 6, 9"));
+        assert!(plan(m, &HscRequest { rate4x: true, ..base.clone() }, b).is_err());
+        assert!(plan(m, &HscRequest { pv: vec![1, 2], ..base.clone() }, b).unwrap_err().message.contains("at VB"));
+        assert!(plan(m, &HscRequest { pv: vec![10], at: Some(3008), ..base.clone() }, b).is_err());
+        let e = plan(m, &HscRequest { pv: vec![10, 1], relative: true, at: Some(1), ..base.clone() }, b).unwrap_err();
+        assert!(e.message.contains("PV2 = 1"), "{e}");
+        assert!(plan(m, &HscRequest { pv: vec![10], cyclic: true, at: Some(1), ..base.clone() }, b).is_err());
+        assert!(plan(m, &HscRequest { pv: vec![10], at: Some(3649), ..base.clone() }, b).is_err());
+        assert!(plan(m, &HscRequest { counter: 2, mode: 3, ..base.clone() }, b).is_err());
+        assert!(plan(find("K209M-56DT").unwrap(), &HscRequest { counter: 3, ..base.clone() }, b).is_err());
+        assert!(plan(m, &HscRequest { mode: 3, up: Some(true), ..base }, b).is_err(), "dir= with external direction");
+    }
+
+    #[test]
+    fn status_words() {
+        assert_eq!(decode_status(0x60), vec!["counting up", "CV = PV"]);
+        assert_eq!(decode_status(0x88), vec!["counting down", "CV > PV", "PV table fault"]);
+    }
+}

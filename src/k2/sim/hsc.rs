@@ -1,0 +1,697 @@
+//! The high-speed counters HSC0–HSC3 (manual §3.3; k2.md §4): every mode of §3.3.1
+//! (inputs from [`crate::k2::sm_map::HSC_MODE_INPUTS`]), counting from simulated input
+//! signals ([`super::inputs`]) and from edges written to I0.x; single-PV and multi-PV
+//! compare (absolute / relative / cyclic), the "CV = PV" events with the manual's numbers,
+//! the status byte and the current-segment byte.
+//!
+//! Counting over an interval is arithmetic: the edges each input wave makes between two
+//! instants. A "CV = PV" crossing inside the interval is timed exactly by inverting the
+//! wave (one division for a single input, a binary search for 4x quadrature). Two-pulse
+//! mode (6/7) with both inputs driven is treated as moving monotonically at the net rate
+//! within one interval — crossings are timed approximately there (stated assumption).
+//!
+//! Behaviour where the manual is silent (stated assumptions):
+//! - SMD38 … shows the live count. A value the user writes there is kept (not overwritten
+//!   by the live count) until the next `HSC`, which loads it when SM37.6 is set.
+//! - SM141.5 "reset interrupt variable": 0 → `HSC` restarts the table at PV1 with the
+//!   current value as the relative reference; 1 → it continues from the current segment.
+//! - External reset (modes 1, 2, 4, 7, 10) acts on the edge into the active level (SM37.0:
+//!   0 = active high) and clears CV; start (mode 2) gates counting while inactive.
+//! - External direction input (modes 3, 4): level 1 counts up.
+//! - A/B mode with two independent square waves (not a `sim quad` pair) counts nothing: a
+//!   real decoder would count noise.
+//! - CV is a DINT in SMD38 (wraps); the simulator keeps a 64-bit value internally.
+//! - In relative cyclic mode a step that would raise more events than the log keeps skips
+//!   whole cycles arithmetically (they are counted as dropped), so an hour costs no more
+//!   than a second.
+
+use super::events::LOG_CAP;
+use super::inputs::{Inputs, Pin, Wave};
+use crate::core::{Error, ErrorKind, Result};
+use crate::k2::catalog::HscSpec;
+use crate::k2::instr::EventKind;
+use crate::k2::memory::Memory;
+use crate::k2::sm_map::{self, HscKind, HscModeInputs, HscRegs};
+use std::time::Duration;
+
+/// Control byte bits (§3.3.2).
+pub mod ctl {
+    pub const RESET_LOW: u8 = 1 << 0;
+    pub const START_LOW: u8 = 1 << 1;
+    pub const RATE_4X: u8 = 1 << 2;
+    pub const DIR_UP: u8 = 1 << 3;
+    pub const WRITE_DIR: u8 = 1 << 4;
+    pub const WRITE_PV: u8 = 1 << 5;
+    pub const WRITE_CV: u8 = 1 << 6;
+    pub const ENABLE: u8 = 1 << 7;
+}
+
+/// Multi-PV control byte bits (§3.3.2).
+pub mod mpv {
+    pub const MULTI: u8 = 1 << 0;
+    pub const RELATIVE: u8 = 1 << 1;
+    pub const CYCLIC: u8 = 1 << 2;
+    pub const LOAD: u8 = 1 << 4;
+    pub const KEEP_SEGMENT: u8 = 1 << 5;
+}
+
+/// Status byte bits (§3.3.2).
+pub mod st {
+    pub const TABLE_FAULT: u8 = 3;
+    pub const DIR_UP: u8 = 5;
+    pub const EQUAL: u8 = 6;
+    pub const GREATER: u8 = 7;
+}
+
+/// Most PVs in a table (§3.3.3).
+pub const MAX_PVS: u8 = 32;
+
+/// A loaded PV table.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct PvTable {
+    pub pvs: Vec<i64>,
+    pub relative: bool,
+    pub cyclic: bool,
+}
+
+/// Reads a PV table at V offset `start` (§3.3.3): count byte, then DINTs. Relative PVs with
+/// |PV| ≤ 1, or absolute PVs within 1 of the previous one, end the table there.
+pub fn read_table(v: &[u8], start: u32, relative: bool, cyclic: bool) -> std::result::Result<PvTable, String> {
+    if start.is_multiple_of(2) {
+        return Err(format!("the PV table start {start} is even (it must be an odd V offset, §3.3.2)"));
+    }
+    let s = start as usize;
+    if s >= v.len() {
+        return Err(format!("the PV table start VB{start} is past the V area"));
+    }
+    let n = v[s];
+    if n == 0 || n > MAX_PVS {
+        return Err(format!("the PV table at VB{start} holds {n} PVs (1–{MAX_PVS} allowed)"));
+    }
+    if s + 1 + 4 * n as usize > v.len() {
+        return Err(format!("the PV table at VB{start} runs past the V area"));
+    }
+    let mut pvs: Vec<i64> = Vec::new();
+    for k in 0..n as usize {
+        let o = s + 1 + 4 * k;
+        let pv = i32::from_be_bytes([v[o], v[o + 1], v[o + 2], v[o + 3]]) as i64;
+        let ends = if relative { pv.abs() <= 1 } else { pvs.last().is_some_and(|p| (pv - p).abs() <= 1) };
+        if ends {
+            break;
+        }
+        pvs.push(pv);
+    }
+    if pvs.is_empty() {
+        return Err(format!("the PV table at VB{start} ends before its first PV (|PV| must be > 1)"));
+    }
+    Ok(PvTable { pvs, relative, cyclic: cyclic && relative })
+}
+
+/// Up to four edge streams (each the rising edges of a wave; falling edges are the wave
+/// shifted by half a period). Inline, so computing a drive allocates nothing.
+#[derive(Clone, Copy, Debug, Default)]
+struct Streams {
+    w: [Option<Wave>; 4],
+}
+
+impl Streams {
+    fn of(ws: &[Wave]) -> Streams {
+        let mut s = Streams::default();
+        for (slot, w) in s.w.iter_mut().zip(ws) {
+            *slot = Some(*w);
+        }
+        s
+    }
+    fn push(&mut self, w: Wave) {
+        if let Some(slot) = self.w.iter_mut().find(|s| s.is_none()) {
+            *slot = Some(w);
+        }
+    }
+    fn iter(&self) -> impl Iterator<Item = &Wave> {
+        self.w.iter().flatten()
+    }
+    fn at(&self, t: Duration) -> i64 {
+        self.iter().map(|w| w.rises(t) as i64).sum()
+    }
+    fn single(&self) -> Option<&Wave> {
+        let mut it = self.iter();
+        match (it.next(), it.next()) {
+            (Some(w), None) => Some(w),
+            _ => None,
+        }
+    }
+    fn is_empty(&self) -> bool {
+        self.w[0].is_none()
+    }
+}
+
+/// Edge streams counting up and down during one interval.
+#[derive(Clone, Copy, Debug, Default)]
+struct Drive {
+    up: Streams,
+    down: Streams,
+}
+
+impl Drive {
+    fn at(&self, t: Duration) -> i64 {
+        self.up.at(t) - self.down.at(t)
+    }
+
+    /// The earliest time in (a, b] at which the count since `a` reaches `k` in direction
+    /// `sign`.
+    fn time_of(&self, a: Duration, b: Duration, k: u64, sign: i64) -> Duration {
+        let single = match (sign > 0, self.up.single(), self.down.is_empty(), self.down.single(), self.up.is_empty()) {
+            (true, Some(w), true, _, _) => Some(w),
+            (false, _, _, Some(w), true) => Some(w),
+            _ => None,
+        };
+        if let Some(w) = single {
+            return w.rise_time(w.rises(a) + k).min(b);
+        }
+        let base = self.at(a);
+        let (mut lo, mut hi) = (a.as_nanos(), b.as_nanos());
+        while lo < hi {
+            let mid = lo + (hi - lo) / 2;
+            let t = Duration::from_nanos(mid as u64);
+            if (self.at(t) - base) * sign >= k as i64 {
+                hi = mid;
+            } else {
+                lo = mid + 1;
+            }
+        }
+        Duration::from_nanos(hi as u64)
+    }
+}
+
+fn level(mem: &Memory, p: Pin) -> bool {
+    mem.i.get(p.0 as usize).is_some_and(|b| b >> p.1 & 1 != 0)
+}
+
+fn level_in(i: &[u8], p: Pin) -> bool {
+    i.get(p.0 as usize).is_some_and(|b| b >> p.1 & 1 != 0)
+}
+
+/// Compare state in multi-PV mode.
+#[derive(Clone, Copy, Debug, Default)]
+struct Compare {
+    seg: usize,
+    target: i64,
+    done: bool,
+}
+
+/// One high-speed counter.
+#[derive(Clone, Debug)]
+pub struct HscChannel {
+    pub regs: HscRegs,
+    pub spec: HscSpec,
+    pub mode: Option<&'static HscModeInputs>,
+    pub running: bool,
+    cv: i64,
+    dir_up: bool,
+    rate4x: bool,
+    reset_low: bool,
+    start_low: bool,
+    pv: i64,
+    multi: bool,
+    table: Option<PvTable>,
+    fault: bool,
+    cmp: Compare,
+    last_up: bool,
+    /// The user wrote SMD38 …: keep it until the next `HSC`.
+    pub user_cv: bool,
+}
+
+impl HscChannel {
+    pub fn new(regs: HscRegs, spec: HscSpec) -> HscChannel {
+        HscChannel {
+            regs,
+            spec,
+            mode: None,
+            running: false,
+            cv: 0,
+            dir_up: false,
+            rate4x: false,
+            reset_low: false,
+            start_low: false,
+            pv: 0,
+            multi: false,
+            table: None,
+            fault: false,
+            cmp: Compare::default(),
+            last_up: true,
+            user_cv: false,
+        }
+    }
+
+    pub fn cv(&self) -> i64 {
+        self.cv
+    }
+
+    pub fn table(&self) -> Option<&PvTable> {
+        self.table.as_ref()
+    }
+
+    /// The value compared against now (the current PV), if any.
+    pub fn current_pv(&self) -> Option<i64> {
+        if self.multi {
+            self.table.as_ref().map(|_| self.cmp.target)
+        } else {
+            Some(self.pv)
+        }
+    }
+
+    /// `HDEF n, mode`.
+    pub fn hdef(&mut self, mode: u8) -> Result<String> {
+        let ch = self.regs.channel;
+        let Some(m) = sm_map::hsc_mode(ch, mode) else {
+            let modes: Vec<String> = sm_map::hsc_modes_of(ch).iter().map(|m| m.to_string()).collect();
+            return Err(Error::new(ErrorKind::Value, format!("HSC{ch} has no mode {mode} (manual §3.3.1)"))
+                .hint(format!("HSC{ch}'s modes: {}", modes.join(", "))));
+        };
+        self.mode = Some(m);
+        self.running = false;
+        let text = sm_map::HSC_MODES.iter().find(|t| t.0 == ch && t.1 == mode).map(|t| t.2).unwrap_or("");
+        Ok(format!("HSC{ch} mode {mode}: {text}"))
+    }
+
+    /// `HSC n` (§3.3.5): applies the control byte and (multi-)PV settings, starts or stops.
+    pub fn hsc(&mut self, mem: &mut Memory) -> Result<String> {
+        let r = self.regs;
+        let ch = r.channel;
+        let Some(m) = self.mode else {
+            return Err(Error::state(format!("HSC{ch} has no mode yet")).hint(format!(
+                "run `hdef {ch} MODE` first (HDEF, manual §3.3.5); modes: {}",
+                sm_map::hsc_modes_of(ch).iter().map(|m| m.to_string()).collect::<Vec<_>>().join(", ")
+            )));
+        };
+        let c = mem.sm_byte(r.control);
+        self.user_cv = false;
+        if c & ctl::ENABLE == 0 {
+            self.running = false;
+            return Ok(format!("HSC{ch} stopped (enable bit SM{}.7 is 0); CV {}", r.control, self.cv));
+        }
+        self.reset_low = c & ctl::RESET_LOW != 0;
+        self.start_low = c & ctl::START_LOW != 0;
+        self.rate4x = c & ctl::RATE_4X != 0;
+        if c & ctl::WRITE_DIR != 0 && m.kind == HscKind::InternalDir {
+            self.dir_up = c & ctl::DIR_UP != 0;
+        }
+        if c & ctl::WRITE_CV != 0 {
+            self.cv = mem.sm_dword(r.cv) as i32 as i64;
+        }
+        let b = mem.sm_byte(r.mpv_control);
+        self.multi = b & mpv::MULTI != 0;
+        let mut notes = Vec::new();
+        if !self.multi {
+            if c & ctl::WRITE_PV != 0 {
+                self.pv = mem.sm_dword(r.pv) as i32 as i64;
+            }
+            self.fault = false;
+        } else if b & mpv::LOAD != 0 {
+            let start = mem.sm_word(r.table) as u32;
+            match read_table(&mem.v, start, b & mpv::RELATIVE != 0, b & mpv::CYCLIC != 0) {
+                Ok(t) => {
+                    self.table = Some(t);
+                    self.fault = false;
+                }
+                Err(e) => {
+                    self.table = None;
+                    self.fault = true;
+                    notes.push(format!("PV table fault (SM{}.3 = 1): {e}", r.status));
+                }
+            }
+        } else if self.table.is_none() {
+            self.fault = true;
+            notes.push(format!(
+                "PV table fault (SM{}.3 = 1): no table loaded; set SM{}.4 to load the table at SMW{}",
+                r.status, r.mpv_control, r.table
+            ));
+        }
+        if let Some(t) = &mut self.table {
+            // The PV type and cyclic bits apply at every HSC, also to a table kept from before.
+            t.relative = b & mpv::RELATIVE != 0;
+            t.cyclic = t.relative && b & mpv::CYCLIC != 0;
+        }
+        if let Some(t) = &self.table {
+            if self.multi {
+                if b & mpv::KEEP_SEGMENT == 0 || self.cmp.seg >= t.pvs.len() {
+                    self.cmp.seg = 0;
+                }
+                self.cmp.done = false;
+                self.cmp.target = if t.relative { self.cv + t.pvs[self.cmp.seg] } else { t.pvs[self.cmp.seg] };
+            }
+        }
+        self.running = true;
+        self.publish(mem);
+        let cmp = match (&self.table, self.multi) {
+            (Some(t), true) => format!(
+                "{} {} PVs{}, next CV = PV at {}",
+                t.pvs.len(),
+                if t.relative { "relative" } else { "absolute" },
+                if t.cyclic { " (cyclic)" } else { "" },
+                self.cmp.target
+            ),
+            (None, true) => "no PV table".to_string(),
+            _ => format!("single PV {}", self.pv),
+        };
+        let mut msg = format!("HSC{ch} counting in mode {} from CV {}; {cmp}", m.mode, self.cv);
+        for n in notes {
+            msg.push_str("; ");
+            msg.push_str(&n);
+        }
+        Ok(msg)
+    }
+
+    fn target(&self) -> Option<i64> {
+        if self.multi {
+            if self.table.is_some() && !self.cmp.done {
+                Some(self.cmp.target)
+            } else {
+                None
+            }
+        } else {
+            Some(self.pv)
+        }
+    }
+
+    fn hit_kind(&self) -> EventKind {
+        let channel = self.regs.channel;
+        if self.multi {
+            EventKind::HscCvEqPv { channel, pv: Some(self.cmp.seg as u8 + 1) }
+        } else {
+            EventKind::HscCvEqPv { channel, pv: None }
+        }
+    }
+
+    fn on_hit(&mut self, cv: i64) {
+        if !self.multi {
+            return;
+        }
+        let Some(t) = &self.table else { return };
+        self.cmp.seg += 1;
+        if self.cmp.seg == t.pvs.len() {
+            if t.relative && t.cyclic {
+                self.cmp.seg = 0;
+                self.cmp.target = cv + t.pvs[0];
+            } else {
+                self.cmp.done = true;
+                self.cmp.seg = t.pvs.len() - 1;
+            }
+        } else {
+            self.cmp.target = if t.relative { cv + t.pvs[self.cmp.seg] } else { t.pvs[self.cmp.seg] };
+        }
+    }
+
+    /// Applies `total` counts along a monotone path, raising CV = PV events timed by
+    /// `time_of(k)` (the time of the k-th count).
+    fn count(
+        &mut self,
+        total: i64,
+        time_of: &dyn Fn(u64) -> Duration,
+        raised: &mut Vec<(Duration, EventKind)>,
+        skipped: &mut u64,
+    ) {
+        if total == 0 {
+            return;
+        }
+        let sign = total.signum();
+        let n = total.unsigned_abs();
+        self.last_up = sign > 0;
+        let mut used = 0u64;
+        let mut cv = self.cv;
+        while let Some(target) = self.target() {
+            let dist = (target - cv) * sign;
+            if dist <= 0 || dist as u64 > n - used {
+                break;
+            }
+            used += dist as u64;
+            cv = target;
+            raised.push((time_of(used), self.hit_kind()));
+            self.on_hit(cv);
+            self.skip_cycles(sign, n - used, &mut used, &mut cv, skipped);
+        }
+        self.cv += total;
+    }
+
+    /// In relative cyclic mode, at the start of a cycle, jumps over whole cycles that
+    /// would only be dropped from the log.
+    fn skip_cycles(&mut self, sign: i64, remaining: u64, used: &mut u64, cv: &mut i64, skipped: &mut u64) {
+        let Some(t) = &self.table else { return };
+        if !(self.multi && t.cyclic && self.cmp.seg == 0 && t.pvs.iter().all(|p| p.signum() == sign)) {
+            return;
+        }
+        let l: i64 = t.pvs.iter().sum();
+        let cycle = l.unsigned_abs();
+        let per = t.pvs.len() as u64;
+        let keep = LOG_CAP as u64 / per + 1;
+        let cycles = remaining / cycle;
+        if cycles > keep {
+            let skip = cycles - keep;
+            *used += skip * cycle;
+            *cv += l * skip as i64;
+            self.cmp.target += l * skip as i64;
+            *skipped += skip * per;
+        }
+    }
+
+    fn active(level: bool, low: bool) -> bool {
+        level != low
+    }
+
+    /// The edge streams that count during an interval starting now.
+    fn drive(&self, inputs: &Inputs, mem: &Memory) -> Option<Drive> {
+        let m = self.mode?;
+        if !self.running {
+            return None;
+        }
+        if let Some(s) = m.start {
+            if !Self::active(level(mem, s), self.start_low) {
+                return None;
+            }
+        }
+        let mut d = Drive::default();
+        match m.kind {
+            HscKind::InternalDir | HscKind::ExternalDir => {
+                let w = inputs.wave(m.count)?;
+                let up = match m.kind {
+                    HscKind::InternalDir => self.dir_up,
+                    _ => m.dir.is_some_and(|p| level(mem, p)),
+                };
+                if up {
+                    d.up.push(w)
+                } else {
+                    d.down.push(w)
+                }
+            }
+            HscKind::TwoPulse => {
+                if let Some(w) = inputs.wave(m.count) {
+                    d.up.push(w);
+                }
+                if let Some(w) = m.second.and_then(|p| inputs.wave(p)) {
+                    d.down.push(w);
+                }
+            }
+            HscKind::Quadrature => {
+                let (a, b) = (m.count, m.second?);
+                if let Some((w, a_leads)) = inputs.quad(a, b) {
+                    let half = w.half_ns();
+                    let (wa, wb) = if a_leads { (w, w.shifted(half / 2)) } else { (w.shifted(half / 2), w) };
+                    let edges = if self.rate4x {
+                        Streams::of(&[wa, wa.shifted(half), wb, wb.shifted(half)])
+                    } else {
+                        Streams::of(&[wa])
+                    };
+                    if a_leads {
+                        d.up = edges
+                    } else {
+                        d.down = edges
+                    }
+                } else {
+                    match (inputs.wave(a), inputs.wave(b)) {
+                        (Some(wa), None) => {
+                            let b_high = level(mem, b);
+                            let fall = wa.shifted(wa.half_ns());
+                            match (self.rate4x, b_high) {
+                                (false, false) => d.up.push(wa),
+                                (false, true) => d.down.push(wa),
+                                (true, false) => (d.up, d.down) = (Streams::of(&[wa]), Streams::of(&[fall])),
+                                (true, true) => (d.up, d.down) = (Streams::of(&[fall]), Streams::of(&[wa])),
+                            }
+                        }
+                        (None, Some(wb)) if self.rate4x => {
+                            let fall = wb.shifted(wb.half_ns());
+                            if level(mem, a) {
+                                (d.up, d.down) = (Streams::of(&[wb]), Streams::of(&[fall]))
+                            } else {
+                                (d.up, d.down) = (Streams::of(&[fall]), Streams::of(&[wb]))
+                            }
+                        }
+                        _ => return None,
+                    }
+                }
+            }
+        }
+        Some(d)
+    }
+
+    /// Counts the interval (last, now] from the input sources.
+    pub fn advance(
+        &mut self,
+        mem: &mut Memory,
+        inputs: &Inputs,
+        last: Duration,
+        now: Duration,
+        raised: &mut Vec<(Duration, EventKind)>,
+        skipped: &mut u64,
+    ) {
+        if now > last {
+            if let Some(d) = self.drive(inputs, mem) {
+                let total = d.at(now) - d.at(last);
+                if total != 0 {
+                    let sign = total.signum();
+                    self.count(total, &|k| d.time_of(last, now, k, sign), raised, skipped);
+                }
+            }
+        }
+        self.publish(mem);
+    }
+
+    /// Counts edges the user wrote to the inputs (`set I0.1=1`), at `now`.
+    pub fn input_edges(
+        &mut self,
+        mem: &mut Memory,
+        old: &[u8],
+        now: Duration,
+        raised: &mut Vec<(Duration, EventKind)>,
+    ) {
+        let Some(m) = self.mode else { return };
+        if !self.running {
+            return;
+        }
+        let new = mem.i.clone();
+        let (o, n) = (|p: Pin| level_in(old, p), |p: Pin| level_in(&new, p));
+        if let Some(p) = m.reset {
+            if !Self::active(o(p), self.reset_low) && Self::active(n(p), self.reset_low) {
+                self.cv = 0;
+                raised.push((now, EventKind::HscReset { channel: self.regs.channel }));
+            }
+        }
+        if let Some(p) = m.start {
+            if !Self::active(n(p), self.start_low) {
+                self.publish(mem);
+                return;
+            }
+        }
+        let rise = |p: Pin| !o(p) && n(p);
+        let delta: i64 = match m.kind {
+            HscKind::InternalDir | HscKind::ExternalDir => {
+                let up = match m.kind {
+                    HscKind::InternalDir => self.dir_up,
+                    _ => m.dir.is_some_and(n),
+                };
+                if rise(m.count) {
+                    if up {
+                        1
+                    } else {
+                        -1
+                    }
+                } else {
+                    0
+                }
+            }
+            HscKind::TwoPulse => i64::from(rise(m.count)) - m.second.map_or(0, |p| i64::from(rise(p))),
+            HscKind::Quadrature => {
+                let Some(b) = m.second else { return };
+                let a = m.count;
+                let (da, db) = (o(a) != n(a), o(b) != n(b));
+                let s = |up: bool| if up { 1 } else { -1 };
+                match (da, db) {
+                    (true, false) if !self.rate4x && n(a) => s(!n(b)),
+                    (true, false) => s(n(a) != n(b)),
+                    (false, true) if self.rate4x => s(n(a) == n(b)),
+                    _ => 0,
+                }
+            }
+        };
+        let mut skipped = 0;
+        self.count(delta, &|_| now, raised, &mut skipped);
+        self.publish(mem);
+    }
+
+    /// Writes CV, status and segment into the SM registers.
+    pub fn publish(&self, mem: &mut Memory) {
+        let r = self.regs;
+        if !self.user_cv {
+            mem.set_sm_dword(r.cv, self.cv as i32 as u32);
+        }
+        let up = match self.mode.map(|m| m.kind) {
+            Some(HscKind::InternalDir) => self.dir_up,
+            Some(HscKind::ExternalDir) => self.mode.and_then(|m| m.dir).is_some_and(|p| level(mem, p)),
+            _ => self.last_up,
+        };
+        let (eq, gt) = match self.current_pv() {
+            Some(pv) => (self.cv == pv, self.cv > pv),
+            None => (false, false),
+        };
+        let mut s = mem.sm_byte(r.status);
+        for (bit, on) in [(st::TABLE_FAULT, self.fault), (st::DIR_UP, up), (st::EQUAL, eq), (st::GREATER, gt)] {
+            if on {
+                s |= 1 << bit
+            } else {
+                s &= !(1 << bit)
+            }
+        }
+        mem.set_sm_byte(r.status, s);
+        mem.set_sm_byte(r.segment, if self.multi { self.cmp.seg as u8 } else { 0 });
+    }
+
+    /// When the next CV = PV crossing will happen from the current sources, if it will
+    /// (for `wait event` in stepped time).
+    pub fn next_due(&self, inputs: &Inputs, mem: &Memory, now: Duration) -> Option<Duration> {
+        let d = self.drive(inputs, mem)?;
+        let target = self.target()?;
+        let rate_probe = now + Duration::from_secs(1);
+        let sign = (d.at(rate_probe) - d.at(now)).signum();
+        let dist = (target - self.cv) * sign;
+        if sign == 0 || dist <= 0 {
+            return None;
+        }
+        // Search far enough ahead: a day of virtual time bounds any wait.
+        let horizon = now + Duration::from_secs(86_400);
+        if (d.at(horizon) - d.at(now)) * sign < dist {
+            return None;
+        }
+        Some(d.time_of(now, horizon, dist as u64, sign))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tables_end_at_small_relative_pvs_and_close_absolute_ones() {
+        let mut v = vec![0u8; 64];
+        v[9] = 3;
+        v[10..14].copy_from_slice(&10i32.to_be_bytes());
+        v[14..18].copy_from_slice(&1i32.to_be_bytes());
+        v[18..22].copy_from_slice(&1000i32.to_be_bytes());
+        let t = read_table(&v, 9, true, true).unwrap();
+        assert_eq!(t.pvs, vec![10], "|PV| ≤ 1 ends a relative table");
+        let t = read_table(&v, 9, false, true).unwrap();
+        assert_eq!(t.pvs, vec![10, 1, 1000], "absolute neighbours differ by more than 1");
+        assert!(!t.cyclic, "cyclic applies to relative tables only");
+        v[14..18].copy_from_slice(&11i32.to_be_bytes());
+        assert_eq!(read_table(&v, 9, false, false).unwrap().pvs, vec![10], "11 is within 1 of 10: the table ends");
+    }
+
+    #[test]
+    fn table_faults() {
+        let v = vec![0u8; 64];
+        assert!(read_table(&v, 8, true, false).unwrap_err().contains("even"));
+        assert!(read_table(&v, 9, true, false).unwrap_err().contains("0 PVs"));
+        let mut v = vec![0u8; 64];
+        v[1] = 33;
+        assert!(read_table(&v, 1, true, false).unwrap_err().contains("33 PVs"));
+    }
+}

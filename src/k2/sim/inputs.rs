@@ -1,0 +1,192 @@
+//! Simulated signals on the PLC's inputs, for the high-speed counters to count: a square
+//! wave of a given frequency on one input (`sim input I0.1 freq=1kHz`), or an A/B
+//! quadrature pair (`sim quad I0.1 I0.0 freq=1kHz`, the first input leading by a quarter
+//! period = counting up).
+//!
+//! A wave is described analytically — its frequency and its time origin — so the number
+//! of edges between any two instants is one multiplication and one division, and an hour
+//! at 200 kHz costs the same as a millisecond. Waves start low; the k-th rising edge is at
+//! `origin + k / f` (k ≥ 1) and each high phase lasts half a period.
+
+use std::time::Duration;
+
+/// An input bit in the I area: (byte, bit).
+pub type Pin = (u32, u8);
+
+pub fn pin_name(p: Pin) -> String {
+    format!("I{}.{}", p.0, p.1)
+}
+
+/// A square wave, 50 % duty.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Wave {
+    /// Frequency in Hz (> 0).
+    pub hz: u64,
+    /// Time origin in ns of virtual time.
+    pub origin_ns: u128,
+}
+
+impl Wave {
+    pub fn new(hz: u64, origin: Duration) -> Wave {
+        Wave { hz, origin_ns: origin.as_nanos() }
+    }
+
+    /// The same wave shifted later by `ns`.
+    pub fn shifted(self, ns: u128) -> Wave {
+        Wave { hz: self.hz, origin_ns: self.origin_ns + ns }
+    }
+
+    /// Half a period, in ns.
+    pub fn half_ns(&self) -> u128 {
+        500_000_000 / self.hz as u128
+    }
+
+    /// Rising edges in (origin, t].
+    pub fn rises(&self, t: Duration) -> u64 {
+        let t = t.as_nanos();
+        if t <= self.origin_ns {
+            return 0;
+        }
+        let e = t - self.origin_ns;
+        // 64-bit arithmetic while it cannot overflow (a day at 200 kHz), 128-bit beyond.
+        match u64::try_from(e).ok().and_then(|e| e.checked_mul(self.hz)) {
+            Some(p) => p / 1_000_000_000,
+            None => (e * self.hz as u128 / 1_000_000_000) as u64,
+        }
+    }
+
+    /// Falling edges in (origin, t].
+    pub fn falls(&self, t: Duration) -> u64 {
+        self.shifted(self.half_ns()).rises(t)
+    }
+
+    /// The level at `t`.
+    pub fn level(&self, t: Duration) -> bool {
+        self.rises(t) > self.falls(t)
+    }
+
+    /// The time of the n-th rising edge (n ≥ 1).
+    pub fn rise_time(&self, n: u64) -> Duration {
+        let ns = self.origin_ns + (n as u128 * 1_000_000_000).div_ceil(self.hz as u128);
+        Duration::from_nanos(ns.min(u64::MAX as u128) as u64)
+    }
+}
+
+/// One signal source.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Source {
+    /// A square wave on one input.
+    Freq { pin: Pin, wave: Wave },
+    /// A quadrature pair: `lead`'s wave leads `lag`'s by a quarter period.
+    Quad { lead: Pin, lag: Pin, wave: Wave },
+}
+
+impl Source {
+    pub fn pins(&self) -> Vec<Pin> {
+        match *self {
+            Source::Freq { pin, .. } => vec![pin],
+            Source::Quad { lead, lag, .. } => vec![lead, lag],
+        }
+    }
+
+    pub fn hz(&self) -> u64 {
+        match *self {
+            Source::Freq { wave, .. } | Source::Quad { wave, .. } => wave.hz,
+        }
+    }
+
+    pub fn describe(&self) -> String {
+        match *self {
+            Source::Freq { pin, wave } => format!("{} square wave {}", pin_name(pin), show_hz(wave.hz)),
+            Source::Quad { lead, lag, wave } => {
+                format!("A/B quadrature {} leads {} at {}", pin_name(lead), pin_name(lag), show_hz(wave.hz))
+            }
+        }
+    }
+}
+
+pub fn show_hz(hz: u64) -> String {
+    if hz >= 1000 && hz.is_multiple_of(1000) {
+        format!("{} kHz", hz / 1000)
+    } else {
+        format!("{hz} Hz")
+    }
+}
+
+/// Every active source.
+#[derive(Clone, Debug, Default)]
+pub struct Inputs {
+    pub sources: Vec<Source>,
+}
+
+impl Inputs {
+    /// The wave on `pin`, if a source drives it.
+    pub fn wave(&self, pin: Pin) -> Option<Wave> {
+        self.sources.iter().find_map(|s| match *s {
+            Source::Freq { pin: p, wave } if p == pin => Some(wave),
+            Source::Quad { lead, wave, .. } if lead == pin => Some(wave),
+            Source::Quad { lag, wave, .. } if lag == pin => Some(wave.shifted(wave.half_ns() / 2)),
+            _ => None,
+        })
+    }
+
+    /// The quadrature source on exactly this pair, with `true` when `a` leads (counting up).
+    pub fn quad(&self, a: Pin, b: Pin) -> Option<(Wave, bool)> {
+        self.sources.iter().find_map(|s| match *s {
+            Source::Quad { lead, lag, wave } if lead == a && lag == b => Some((wave, true)),
+            Source::Quad { lead, lag, wave } if lead == b && lag == a => Some((wave, false)),
+            _ => None,
+        })
+    }
+
+    pub fn drives(&self, pin: Pin) -> Option<&Source> {
+        self.sources.iter().find(|s| s.pins().contains(&pin))
+    }
+
+    /// Adds a source, replacing any that drives one of its pins.
+    pub fn add(&mut self, s: Source) {
+        let pins = s.pins();
+        self.sources.retain(|o| !o.pins().iter().any(|p| pins.contains(p)));
+        self.sources.push(s);
+    }
+
+    /// Removes the source driving `pin`; returns it.
+    pub fn remove(&mut self, pin: Pin) -> Option<Source> {
+        let i = self.sources.iter().position(|s| s.pins().contains(&pin))?;
+        Some(self.sources.remove(i))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_wave_counts_edges_analytically() {
+        let w = Wave::new(1000, Duration::from_millis(10));
+        assert_eq!(w.rises(Duration::from_millis(10)), 0);
+        assert!(!w.level(Duration::from_micros(10_500)), "starts low");
+        assert_eq!(w.rises(Duration::from_millis(11)), 1, "first rising edge one period after the origin");
+        assert!(w.level(Duration::from_micros(11_200)));
+        assert!(!w.level(Duration::from_micros(11_600)));
+        assert_eq!(w.rises(Duration::from_secs(3600) + Duration::from_millis(10)), 3_600_000);
+        assert_eq!(w.rise_time(1), Duration::from_millis(11));
+        assert_eq!(w.falls(Duration::from_micros(11_499)), 0);
+        assert_eq!(w.falls(Duration::from_micros(11_500)), 1);
+    }
+
+    #[test]
+    fn quadrature_lag_is_a_quarter_period_late() {
+        let mut i = Inputs::default();
+        i.add(Source::Quad { lead: (0, 1), lag: (0, 0), wave: Wave::new(1000, Duration::ZERO) });
+        let a = i.wave((0, 1)).unwrap();
+        let b = i.wave((0, 0)).unwrap();
+        assert_eq!(b.origin_ns - a.origin_ns, 250_000);
+        assert!(i.quad((0, 1), (0, 0)).unwrap().1);
+        assert!(!i.quad((0, 0), (0, 1)).unwrap().1);
+        i.add(Source::Freq { pin: (0, 0), wave: Wave::new(5, Duration::ZERO) });
+        assert!(i.quad((0, 1), (0, 0)).is_none(), "a new source on one pin replaces the pair");
+        assert!(i.remove((0, 0)).is_some());
+        assert!(i.sources.is_empty());
+    }
+}

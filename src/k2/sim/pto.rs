@@ -1,0 +1,559 @@
+//! The PTO/PWM pulse generators (manual §3.4.2; k2.md §5) and the position counter of each
+//! pulse channel (§3.4.3.1; k2.md §6), computed analytically from virtual time.
+//!
+//! A running pulse train is a start time plus a list of segments (cycle, count); the
+//! pulses output by any instant are found by arithmetic, never by stepping pulse by pulse.
+//! Registers come from [`crate::k2::sm_map::PTO_REGS`]; channel existence and frequency
+//! limits from the model catalogue.
+//!
+//! Behaviour where the manual is silent (stated assumptions):
+//! - `PLS` while a PTO is running replaces the running train from that instant (pulses
+//!   already out stay counted); the manual's "after this a new PTO with the updated cycle
+//!   starts being generated" (§3.4.2.3) is read this way. S7-200 would queue it instead.
+//! - `PLS` with the enable bit clear stops the channel; stopping a running PTO this way (or
+//!   by PSTOP) sets status bit 5 "aborted by user command" and raises no completion event.
+//! - At power-up both idle bits (SM66.7 PTO idle, SM66.3 PWM idle) are 1: nothing runs.
+//! - The generator keeps the last loaded cycle/width/count; a `PLS` loads only the fields
+//!   whose update bit is set, so `16#84` after power-up (cycle never loaded = 0) is refused
+//!   as an invalid cycle.
+//! - A PWM cycle below 2, or any cycle faster than the channel's limit, is refused with
+//!   status bit 4 too (the only error bit the status byte has).
+//! - Position counting (SMD212 …) counts PTO pulses. The sign is the direction output's
+//!   level (Q0.2 …: 0 forward = +, 1 reverse = −) while SM201.3 = 0; with SM201.3 = 1 the
+//!   pin is a plain output and pulses count forward. PWM pulses are not counted.
+//! - SM201.6 (clear) and SM201.4 (load SMD208) act on every scan while set, as the manual
+//!   warns ("avoid keeping this bit at 1"); SM201.7 is latched by PSTOP and only the user
+//!   clears it. It blocks position instructions (PREL/PABS/PHOME/PJOG, not simulated); PLS
+//!   is not one of them and still runs.
+
+use crate::core::{Error, ErrorKind, Result};
+use crate::k2::catalog::PtoSpec;
+use crate::k2::instr::EventKind;
+use crate::k2::memory::Memory;
+use crate::k2::sm_map::PtoRegs;
+use std::time::Duration;
+
+/// Control byte bits (§3.4.2.2).
+pub mod ctl {
+    pub const UPDATE_CYCLE: u8 = 1 << 0;
+    pub const UPDATE_WIDTH: u8 = 1 << 1;
+    pub const UPDATE_COUNT: u8 = 1 << 2;
+    pub const BASE_MS: u8 = 1 << 3;
+    pub const PWM_SYNC: u8 = 1 << 4;
+    pub const MULTI: u8 = 1 << 5;
+    pub const PWM: u8 = 1 << 6;
+    pub const ENABLE: u8 = 1 << 7;
+}
+
+/// Status byte bits (§3.4.2.2).
+pub mod st {
+    pub const PWM_IDLE: u8 = 3;
+    pub const INVALID: u8 = 4;
+    pub const ABORTED: u8 = 5;
+    pub const PTO_IDLE: u8 = 7;
+}
+
+/// Position control byte bits (§3.4.3.1).
+pub mod pos {
+    pub const DIR_DISABLE: u8 = 3;
+    pub const LOAD: u8 = 4;
+    pub const CLEAR: u8 = 6;
+    pub const ESTOP: u8 = 7;
+}
+
+/// Most segments in a profile table (§3.4.2.1).
+pub const MAX_SEGMENTS: u8 = 64;
+
+/// One segment of a running train.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Seg {
+    pub cycle_ns: u64,
+    pub count: u64,
+    /// Offset of the segment's start from the train's start, ns.
+    start_ns: u128,
+    /// Pulses of the train before this segment.
+    first: u64,
+}
+
+/// A running PTO train.
+#[derive(Clone, Debug)]
+pub struct PtoRun {
+    pub start: Duration,
+    pub segs: Vec<Seg>,
+    pub total: u64,
+    pub end: Duration,
+}
+
+impl PtoRun {
+    pub fn new(start: Duration, segs: &[(u64, u64)]) -> PtoRun {
+        let mut out = Vec::with_capacity(segs.len());
+        let (mut t, mut first) = (0u128, 0u64);
+        for &(cycle_ns, count) in segs {
+            out.push(Seg { cycle_ns, count, start_ns: t, first });
+            t += cycle_ns as u128 * count as u128;
+            first += count;
+        }
+        PtoRun { start, segs: out, total: first, end: start + dur(t) }
+    }
+
+    pub fn duration(&self) -> Duration {
+        self.end - self.start
+    }
+
+    fn seg_at(&self, elapsed: u128) -> &Seg {
+        let i = self.segs.partition_point(|s| s.start_ns <= elapsed);
+        &self.segs[i.saturating_sub(1)]
+    }
+
+    /// Pulses completed by `t`.
+    pub fn pulses_at(&self, t: Duration) -> u64 {
+        if t >= self.end {
+            return self.total;
+        }
+        let e = t.saturating_sub(self.start).as_nanos();
+        let s = self.seg_at(e);
+        s.first + (div(e - s.start_ns, s.cycle_ns)).min(s.count)
+    }
+
+    /// The output level at `t` (50 % duty: high in the first half of each cycle).
+    pub fn level_at(&self, t: Duration) -> bool {
+        if t >= self.end || t < self.start {
+            return false;
+        }
+        let e = (t - self.start).as_nanos();
+        let s = self.seg_at(e);
+        let into = e - s.start_ns;
+        let phase = into - div(into, s.cycle_ns) as u128 * s.cycle_ns as u128;
+        phase < (s.cycle_ns as u128 / 2)
+    }
+}
+
+/// `a / b`, in 64-bit arithmetic when `a` fits (the usual case: 584 years of ns).
+fn div(a: u128, b: u64) -> u64 {
+    match u64::try_from(a) {
+        Ok(a) => a / b,
+        Err(_) => (a / b as u128) as u64,
+    }
+}
+
+fn dur(ns: u128) -> Duration {
+    Duration::from_nanos(ns.min(u64::MAX as u128) as u64)
+}
+
+/// A running PWM.
+#[derive(Clone, Copy, Debug)]
+struct PwmRun {
+    start: Duration,
+    cycle_ns: u64,
+    width_ns: u64,
+}
+
+impl PwmRun {
+    fn level_at(&self, t: Duration) -> bool {
+        let e = t.saturating_sub(self.start).as_nanos();
+        (e % self.cycle_ns as u128) < self.width_ns as u128
+    }
+    /// The first cycle boundary at or after `t` (a synchronous update takes effect there).
+    fn next_boundary(&self, t: Duration) -> Duration {
+        let e = t.saturating_sub(self.start).as_nanos();
+        let c = self.cycle_ns as u128;
+        self.start + dur(e.div_ceil(c) * c)
+    }
+}
+
+#[derive(Clone, Debug)]
+enum Run {
+    Idle,
+    Pto(PtoRun),
+    Pwm { now: PwmRun, next: Option<PwmRun> },
+}
+
+/// One pulse output channel.
+#[derive(Clone, Debug)]
+pub struct PtoChannel {
+    pub regs: PtoRegs,
+    pub spec: PtoSpec,
+    out: (u32, u8),
+    dir: (u32, u8),
+    /// The generator's loaded registers.
+    cycle: u16,
+    width: u16,
+    count: u32,
+    run: Run,
+    /// Pulses of the current train already added to the position counter.
+    counted: u64,
+}
+
+fn q_bit(mem: &Memory, p: (u32, u8)) -> bool {
+    mem.q.get(p.0 as usize).is_some_and(|b| b >> p.1 & 1 != 0)
+}
+
+fn set_q(mem: &mut Memory, p: (u32, u8), on: bool) {
+    if let Some(b) = mem.q.get_mut(p.0 as usize) {
+        if on {
+            *b |= 1 << p.1
+        } else {
+            *b &= !(1 << p.1)
+        }
+    }
+}
+
+/// `Q0.2` → (0, 2).
+fn q_pin(text: &str) -> (u32, u8) {
+    let (b, bit) = text.trim_start_matches('Q').split_once('.').unwrap_or(("0", "0"));
+    (b.parse().unwrap_or(0), bit.parse().unwrap_or(0))
+}
+
+impl PtoChannel {
+    pub fn new(regs: PtoRegs, spec: PtoSpec, mem: &mut Memory) -> PtoChannel {
+        mem.set_sm_bit(regs.status, st::PTO_IDLE, true);
+        mem.set_sm_bit(regs.status, st::PWM_IDLE, true);
+        PtoChannel {
+            regs,
+            spec,
+            out: q_pin(spec.output),
+            dir: q_pin(spec.direction),
+            cycle: 0,
+            width: 0,
+            count: 0,
+            run: Run::Idle,
+            counted: 0,
+        }
+    }
+
+    pub fn is_pto_busy(&self) -> bool {
+        matches!(self.run, Run::Pto(_))
+    }
+
+    pub fn is_pwm_running(&self) -> bool {
+        matches!(self.run, Run::Pwm { .. })
+    }
+
+    /// The running train, if any.
+    pub fn train(&self) -> Option<&PtoRun> {
+        match &self.run {
+            Run::Pto(r) => Some(r),
+            _ => None,
+        }
+    }
+
+    /// When this channel next raises an event (PTO completion), if it will.
+    pub fn next_due(&self) -> Option<Duration> {
+        self.train().map(|r| r.end)
+    }
+
+    fn name(&self) -> String {
+        format!("PTO{} ({})", self.regs.channel, self.spec.output)
+    }
+
+    /// Brings the channel to `now`: counts pulses into the position counter, finishes
+    /// trains (raising their completion events), drives the output pin, and applies the
+    /// position control bits.
+    pub fn advance(&mut self, mem: &mut Memory, now: Duration, raised: &mut Vec<(Duration, EventKind)>) {
+        let r = self.regs;
+        let mut drive = None;
+        match &mut self.run {
+            Run::Idle => {}
+            Run::Pto(train) => {
+                let p = train.pulses_at(now);
+                let new = p - self.counted;
+                self.counted = p;
+                drive = Some(train.level_at(now));
+                if now >= train.end {
+                    raised.push((train.end, EventKind::PtoComplete { channel: r.channel }));
+                    self.run = Run::Idle;
+                    mem.set_sm_bit(r.status, st::PTO_IDLE, true);
+                }
+                self.count_pulses(mem, new);
+            }
+            Run::Pwm { now: cur, next } => {
+                if let Some(n) = *next {
+                    if now >= n.start {
+                        *cur = n;
+                        *next = None;
+                    }
+                }
+                drive = Some(cur.level_at(now));
+            }
+        }
+        if let Some(level) = drive {
+            set_q(mem, self.out, level);
+        }
+        self.apply_position_bits(mem);
+    }
+
+    fn count_pulses(&self, mem: &mut Memory, n: u64) {
+        if n == 0 {
+            return;
+        }
+        let r = self.regs;
+        let reverse = !mem.sm_bit(r.pos_control, pos::DIR_DISABLE) && q_bit(mem, self.dir);
+        let cv = mem.sm_dword(r.pos_cv) as i32;
+        let d = n as i64 as i32;
+        let cv = if reverse { cv.wrapping_sub(d) } else { cv.wrapping_add(d) };
+        mem.set_sm_dword(r.pos_cv, cv as u32);
+    }
+
+    /// SM201.6 clears SMD212; SM201.4 loads SMD208 into it (§3.4.3.1).
+    pub fn apply_position_bits(&self, mem: &mut Memory) {
+        let r = self.regs;
+        if mem.sm_bit(r.pos_control, pos::CLEAR) {
+            mem.set_sm_dword(r.pos_cv, 0);
+        }
+        if mem.sm_bit(r.pos_control, pos::LOAD) {
+            let v = mem.sm_dword(r.pos_new_cv);
+            mem.set_sm_dword(r.pos_cv, v);
+        }
+    }
+
+    /// Stops whatever runs (PLS with enable clear, PSTOP). Returns what was stopped.
+    fn stop(&mut self, mem: &mut Memory) -> &'static str {
+        let r = self.regs;
+        let what = match self.run {
+            Run::Pto(_) => {
+                mem.set_sm_bit(r.status, st::ABORTED, true);
+                "PTO"
+            }
+            Run::Pwm { .. } => "PWM",
+            Run::Idle => "",
+        };
+        self.run = Run::Idle;
+        self.counted = 0;
+        mem.set_sm_bit(r.status, st::PTO_IDLE, true);
+        mem.set_sm_bit(r.status, st::PWM_IDLE, true);
+        set_q(mem, self.out, false);
+        what
+    }
+
+    /// PSTOP: stops the output and latches SM201.7 (§3.4.3.1).
+    pub fn pstop(&mut self, mem: &mut Memory) -> &'static str {
+        let what = self.stop(mem);
+        mem.set_sm_bit(self.regs.pos_control, pos::ESTOP, true);
+        what
+    }
+
+    /// Sets the invalid bit and builds the refusal.
+    fn refuse(&self, mem: &mut Memory, msg: String, operand: String, hint: String) -> Error {
+        mem.set_sm_bit(self.regs.status, st::INVALID, true);
+        Error::new(
+            ErrorKind::Refused,
+            format!("PLS {}: {msg}; status bit SM{}.4 set", self.regs.channel, self.regs.status),
+        )
+        .operand(operand)
+        .hint(hint)
+    }
+
+    /// Checks a cycle against the channel's frequency limit.
+    fn check_freq(&self, mem: &mut Memory, cycle_ns: u64, what: String) -> Result<()> {
+        let max = self.spec.max_hz as u64;
+        if cycle_ns * max < 1_000_000_000 {
+            let min_us = 1_000_000u64.div_ceil(max);
+            return Err(self.refuse(
+                mem,
+                format!(
+                    "{what} is {} Hz, above {}'s limit of {} Hz on this model (manual §3.4)",
+                    1_000_000_000 / cycle_ns,
+                    self.spec.output,
+                    max
+                ),
+                format!("SMW{}", self.regs.cycle),
+                format!("the shortest cycle on {} is {min_us} µs", self.spec.output),
+            ));
+        }
+        Ok(())
+    }
+
+    /// Executes `PLS` for this channel at `now` (the caller advanced to `now` first).
+    /// `v` is the V area (profile tables).
+    pub fn pls(&mut self, mem: &mut Memory, now: Duration) -> Result<String> {
+        let r = self.regs;
+        let c = mem.sm_byte(r.control);
+        if c & ctl::ENABLE == 0 {
+            let what = self.stop(mem);
+            if what.is_empty() {
+                return Err(Error::state(format!(
+                    "PLS {} did nothing: the control byte SMB{} = 16#{c:02X} has the enable bit SM{}.7 clear and {} is idle",
+                    r.channel,
+                    r.control,
+                    r.control,
+                    self.name()
+                ))
+                .operand(format!("SMB{}", r.control)));
+            }
+            return Ok(format!("{} stopped ({what}; enable bit SM{}.7 is 0)", self.name(), r.control));
+        }
+        let base_ns: u64 = if c & ctl::BASE_MS != 0 { 1_000_000 } else { 1_000 };
+        let unit = if c & ctl::BASE_MS != 0 { "ms" } else { "µs" };
+        if c & ctl::UPDATE_CYCLE != 0 {
+            self.cycle = mem.sm_word(r.cycle);
+        }
+        if c & ctl::UPDATE_WIDTH != 0 {
+            self.width = mem.sm_word(r.width);
+        }
+        if c & ctl::UPDATE_COUNT != 0 {
+            self.count = mem.sm_dword(r.count);
+        }
+        let cyc = format!("SMW{}", r.cycle);
+        if c & ctl::PWM != 0 {
+            if self.cycle < 2 {
+                return Err(self.refuse(
+                    mem,
+                    format!("PWM cycle time {} is below 2", self.cycle),
+                    cyc,
+                    format!("set SMW{} (2…65535) and the update bit SM{}.0, then PLS again", r.cycle, r.control),
+                ));
+            }
+            let cycle_ns = self.cycle as u64 * base_ns;
+            self.check_freq(mem, cycle_ns, format!("cycle {} {unit}", self.cycle))?;
+            let width_ns = (self.width.min(self.cycle)) as u64 * base_ns;
+            let new = PwmRun { start: now, cycle_ns, width_ns };
+            let sync = c & ctl::PWM_SYNC != 0;
+            self.run = match &self.run {
+                Run::Pwm { now: cur, .. } if sync => {
+                    let at = cur.next_boundary(now);
+                    Run::Pwm { now: *cur, next: Some(PwmRun { start: at, ..new }) }
+                }
+                _ => Run::Pwm { now: new, next: None },
+            };
+            self.counted = 0;
+            for (b, v) in [(st::PWM_IDLE, false), (st::PTO_IDLE, true), (st::INVALID, false), (st::ABORTED, false)] {
+                mem.set_sm_bit(r.status, b, v);
+            }
+            let duty = new.width_ns as f64 * 100.0 / cycle_ns as f64;
+            return Ok(format!(
+                "{}: PWM cycle {} {unit}, width {} {unit} ({duty:.1} %){}",
+                self.name(),
+                self.cycle,
+                self.width.min(self.cycle),
+                if sync { ", synchronous update" } else { "" }
+            ));
+        }
+        let segs: Vec<(u64, u64)> = if c & ctl::MULTI != 0 {
+            self.profile_segments(mem, base_ns, unit)?
+        } else {
+            if self.cycle < 2 || self.count < 2 {
+                let (what, op, reg) = if self.cycle < 2 {
+                    (format!("cycle time {}", self.cycle), cyc, format!("SMW{} with SM{}.0", r.cycle, r.control))
+                } else {
+                    (
+                        format!("pulse count {}", self.count),
+                        format!("SMD{}", r.count),
+                        format!("SMD{} with SM{}.2", r.count, r.control),
+                    )
+                };
+                return Err(self.refuse(
+                    mem,
+                    format!("{what} is below 2 (cycle and count must both be > 1, §3.4.2.2)"),
+                    op,
+                    format!("load {reg} set (e.g. SMB{}=16#85), then PLS again", r.control),
+                ));
+            }
+            let cycle_ns = self.cycle as u64 * base_ns;
+            self.check_freq(mem, cycle_ns, format!("cycle {} {unit}", self.cycle))?;
+            vec![(cycle_ns, self.count as u64)]
+        };
+        let train = PtoRun::new(now, &segs);
+        let msg = format!(
+            "{}: {} pulses in {} segment{}, {:.6} s",
+            self.name(),
+            train.total,
+            segs.len(),
+            if segs.len() == 1 { "" } else { "s" },
+            train.duration().as_secs_f64()
+        );
+        self.run = Run::Pto(train);
+        self.counted = 0;
+        for (b, v) in [(st::PTO_IDLE, false), (st::PWM_IDLE, true), (st::INVALID, false), (st::ABORTED, false)] {
+            mem.set_sm_bit(r.status, b, v);
+        }
+        Ok(msg)
+    }
+
+    /// Reads and checks the multi-segment profile table at SMW168 … (§3.4.2.1).
+    fn profile_segments(&self, mem: &mut Memory, base_ns: u64, unit: &str) -> Result<Vec<(u64, u64)>> {
+        let r = self.regs;
+        let start = mem.sm_word(r.profile) as u32;
+        let tab = format!("SMW{}", r.profile);
+        let v_len = mem.v.len() as u32;
+        if start.is_multiple_of(2) {
+            return Err(self.refuse(
+                mem,
+                format!("the profile table start SMW{} = {start} is even", r.profile),
+                tab,
+                format!("the table must start at an odd V address, e.g. SMW{}=3001 for VB3001 (§3.4.2.1)", r.profile),
+            ));
+        }
+        if start >= v_len {
+            return Err(self.refuse(
+                mem,
+                format!("the profile table start VB{start} is past the V area (VB{})", v_len - 1),
+                tab,
+                "point it at an odd address inside V".into(),
+            ));
+        }
+        let n = mem.v[start as usize];
+        if n == 0 || n > MAX_SEGMENTS {
+            return Err(self.refuse(
+                mem,
+                format!("the profile table at VB{start} holds {n} segments (1–{MAX_SEGMENTS} allowed)"),
+                format!("VB{start}"),
+                "write the segment count into the table's first byte".into(),
+            ));
+        }
+        let end = start + 1 + 8 * n as u32;
+        if end > v_len {
+            return Err(self.refuse(
+                mem,
+                format!("the profile table VB{start}…VB{} runs past the V area", end - 1),
+                format!("VB{start}"),
+                "move the table or use fewer segments".into(),
+            ));
+        }
+        let mut segs = Vec::with_capacity(n as usize);
+        for k in 0..n as u32 {
+            let off = (start + 1 + 8 * k) as usize;
+            let cycle = u16::from_be_bytes([mem.v[off], mem.v[off + 1]]);
+            let count = u32::from_be_bytes([mem.v[off + 4], mem.v[off + 5], mem.v[off + 6], mem.v[off + 7]]);
+            if cycle < 2 {
+                return Err(self.refuse(
+                    mem,
+                    format!("segment {} cycle time VW{} = {cycle} is below 2", k + 1, off),
+                    format!("VW{off}"),
+                    "cycles are 2…65535 in the channel's time base".into(),
+                ));
+            }
+            if count < 1 {
+                return Err(self.refuse(
+                    mem,
+                    format!("segment {} pulse count VD{} is 0", k + 1, off + 4),
+                    format!("VD{}", off + 4),
+                    "every segment needs at least 1 pulse".into(),
+                ));
+            }
+            let cycle_ns = cycle as u64 * base_ns;
+            self.check_freq(mem, cycle_ns, format!("segment {} cycle {cycle} {unit}", k + 1))?;
+            segs.push((cycle_ns, count as u64));
+        }
+        Ok(segs)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn trains_are_arithmetic() {
+        let t = PtoRun::new(Duration::from_millis(10), &[(500_000, 1000), (250_000, 4000)]);
+        assert_eq!(t.total, 5000);
+        assert_eq!(t.duration(), Duration::from_millis(500 + 1000));
+        assert_eq!(t.pulses_at(Duration::from_millis(10)), 0);
+        assert_eq!(t.pulses_at(Duration::from_micros(10_499)), 0);
+        assert_eq!(t.pulses_at(Duration::from_micros(10_500)), 1);
+        assert_eq!(t.pulses_at(Duration::from_millis(510)), 1000);
+        assert_eq!(t.pulses_at(Duration::from_micros(510_250)), 1001);
+        assert_eq!(t.pulses_at(Duration::from_secs(100)), 5000);
+        assert!(t.level_at(Duration::from_micros(10_100)));
+        assert!(!t.level_at(Duration::from_micros(10_300)));
+    }
+}

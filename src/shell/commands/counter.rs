@@ -1,0 +1,149 @@
+//! High-speed counter commands (manual §3.3): the instructions `hdef N MODE` and `hsc N`,
+//! the typed helper `hsc N mode=… pv=[…] …` and `hsc status N`.
+
+use super::k2cmd::{self, check_options, done_outcome, opt, value_err};
+use super::CommandSpec;
+use crate::core::{Error, Result};
+use crate::k2::helpers::{self, hsc as hh};
+use crate::output::Outcome;
+use crate::shell::lex::{self, Word};
+use crate::shell::{Args, Shell};
+
+pub const HDEF: CommandSpec = CommandSpec {
+    name: "hdef",
+    aliases: &[],
+    usage: "hdef N MODE   e.g. hdef 0 9",
+    summary: "run the HDEF instruction: give counter HSC N its mode (§3.3.1)",
+    subcommands: &[],
+    run: hdef,
+};
+
+pub const HSC: CommandSpec = CommandSpec {
+    name: "hsc",
+    aliases: &[],
+    usage: "hsc N | hsc N mode=9 [rate=4x] [pv=[100,200,300] [relative] [cyclic] at VB3009] [cv=0] [dir=up|down] [reset=low] [start=low] [force] | hsc status N",
+    summary: "run the HSC instruction; with options, write the counter's registers first (then HDEF, HSC); or decode its status",
+    subcommands: &["status"],
+    run: hsc,
+};
+
+fn words<'a>(args: &Args<'a>) -> Result<Vec<Word<'a>>> {
+    Ok(lex::words(args.text)
+        .map_err(|e| e.shift(args.offset))?
+        .into_iter()
+        .map(|(c, w)| (c + args.offset, w))
+        .collect())
+}
+
+fn number<T: std::str::FromStr>(w: Word, what: &str) -> Result<T> {
+    w.1.parse().map_err(|_| value_err(w.0, format!("`{}` is not {what}", w.1)))
+}
+
+fn hdef(sh: &mut Shell, args: Args) -> Result<Outcome> {
+    let w = words(&args)?;
+    if w.len() != 2 {
+        return Err(Error::usage("hdef takes a counter and a mode").column(args.offset).hint(HDEF.usage));
+    }
+    let (dev, n) = k2cmd::channel(sh, w[0], "counter", 3)?;
+    let mode: u8 = number(w[1], "a mode number")?;
+    let name = k2cmd::name(sh, dev);
+    let r = k2cmd::k2(sh, dev)?.hdef(n, mode).map_err(|e| e.device(&name).column(w[1].0))?;
+    let mut o = Outcome::new("hdef").text(r.clone()).with("report", r);
+    o.device = Some(name);
+    Ok(o)
+}
+
+fn hsc(sh: &mut Shell, args: Args) -> Result<Outcome> {
+    let w = words(&args)?;
+    let (pos, opts) = lex::options(&w);
+    if pos.first().is_some_and(|p| p.1.eq_ignore_ascii_case("status")) {
+        let word = *pos.get(1).ok_or_else(|| Error::usage("hsc status needs a counter number").column(args.offset))?;
+        let (dev, n) = k2cmd::channel(sh, word, "counter", 3)?;
+        let name = k2cmd::name(sh, dev);
+        let model = k2cmd::k2(sh, dev)?.model();
+        let (vals, words) = hh::status(sh.session.entry(dev).device.as_mut(), model, n).map_err(|e| e.device(&name))?;
+        let mut o = Outcome::new("hsc").text(format!("HSC{n}: {}", words.join("; "))).with("status", &words);
+        o.device = Some(name);
+        o.values = k2cmd::readings(&vals);
+        return Ok(o);
+    }
+    let word =
+        *pos.first().ok_or_else(|| Error::usage("hsc needs a counter number").column(args.offset).hint(HSC.usage))?;
+    let (dev, n) = k2cmd::channel(sh, word, "counter", 3)?;
+    let name = k2cmd::name(sh, dev);
+    if pos.len() == 1 && opts.is_empty() {
+        let r = k2cmd::k2(sh, dev)?.hsc(n).map_err(|e| e.device(&name))?;
+        let mut o = Outcome::new("hsc").text(r.clone()).with("report", r);
+        o.device = Some(name);
+        return Ok(o);
+    }
+    check_options(&opts, &["mode", "rate", "pv", "cv", "dir", "reset", "start"], HSC.usage)?;
+    let mut q = hh::HscRequest { counter: n, ..Default::default() };
+    let (mc, mt) = opt(&opts, "mode").ok_or_else(|| Error::usage("the hsc helper needs mode=").hint(HSC.usage))?;
+    q.mode = number((mc, mt), "a mode number")?;
+    if let Some((c, r)) = opt(&opts, "rate") {
+        q.rate4x = match r.to_ascii_lowercase().as_str() {
+            "4x" | "4" => true,
+            "1x" | "1" => false,
+            _ => return Err(value_err(c, format!("rate={r}: use 1x or 4x"))),
+        };
+    }
+    if let Some((c, d)) = opt(&opts, "dir") {
+        q.up = Some(match d.to_ascii_lowercase().as_str() {
+            "up" => true,
+            "down" => false,
+            _ => return Err(value_err(c, format!("dir={d}: use up or down"))),
+        });
+    }
+    for (key, slot) in [("reset", &mut q.reset_low), ("start", &mut q.start_low)] {
+        if let Some((c, v)) = opt(&opts, key) {
+            *slot = match v.to_ascii_lowercase().as_str() {
+                "low" => true,
+                "high" => false,
+                _ => return Err(value_err(c, format!("{key}={v}: the active level is high or low"))),
+            };
+        }
+    }
+    if let Some((c, v)) = opt(&opts, "cv") {
+        q.cv = Some(number((c, v), "a DINT current value")?);
+    }
+    if let Some((c, v)) = opt(&opts, "pv") {
+        let inner = v.strip_prefix('[').and_then(|t| t.strip_suffix(']')).unwrap_or(v);
+        for (k, p) in lex::split_top(inner, ',')? {
+            let p = p.trim();
+            if !p.is_empty() {
+                q.pv.push(number((c + 4 + k, p), "a DINT preset value")?);
+            }
+        }
+    }
+    let mut i = 1;
+    while i < pos.len() {
+        let (c, t) = pos[i];
+        match t.to_ascii_lowercase().as_str() {
+            "relative" => q.relative = true,
+            "absolute" => q.relative = false,
+            "cyclic" => q.cyclic = true,
+            "force" => q.force = true,
+            "at" => {
+                let (c2, a) = *pos.get(i + 1).ok_or_else(|| Error::usage("`at` needs a V address").column(c))?;
+                q.at = Some(
+                    a.to_ascii_uppercase()
+                        .trim_start_matches('%')
+                        .strip_prefix("VB")
+                        .and_then(|n| n.parse().ok())
+                        .ok_or_else(|| value_err(c2, format!("`{a}` is not a V byte address (e.g. VB3009)")))?,
+                );
+                i += 1;
+            }
+            _ => return Err(Error::usage(format!("unexpected `{t}`")).column(c).hint(HSC.usage)),
+        }
+        i += 1;
+    }
+    let (model, backup) = {
+        let k2 = k2cmd::k2(sh, dev)?;
+        (k2.model(), k2.backup_area())
+    };
+    let plan = hh::plan(model, &q, backup).map_err(|e| e.device(&name))?;
+    let d = helpers::execute(sh.session.entry(dev).device.as_mut(), &plan).map_err(|e| e.device(&name))?;
+    Ok(done_outcome("hsc", name, d))
+}

@@ -1,0 +1,124 @@
+//! `eeprom dump FILE [all]`, `eeprom restore FILE`, `eeprom status`, `eeprom area LAST`:
+//! the E2PROM backup area VB3648… (manual §2.2.8). Dump and restore go through plain V
+//! reads and writes, so they work on any K2 connection; `status` and `area` configure and
+//! inspect the simulator's E2PROM.
+
+use super::k2cmd;
+use super::CommandSpec;
+use crate::core::{Error, Result, Value};
+use crate::k2::catalog::{EEPROM_ENDURANCE, EEPROM_FIRST, EEPROM_LAST_MAX};
+use crate::k2::operand::{Area, K2Operand};
+use crate::k2::sim::state;
+use crate::output::Outcome;
+use crate::shell::{Args, Shell};
+
+pub const EEPROM: CommandSpec = CommandSpec {
+    name: "eeprom",
+    aliases: &[],
+    usage: "eeprom dump FILE [all] | eeprom restore FILE | eeprom status | eeprom area 3902|4095",
+    summary:
+        "save or load the E2PROM backup area (VB3648…) as a binary file; show write counts; set where the area ends",
+    subcommands: &["dump", "restore", "status", "area"],
+    run: eeprom,
+};
+
+fn eeprom(sh: &mut Shell, args: Args) -> Result<Outcome> {
+    let parts: Vec<&str> = args.text.split_whitespace().collect();
+    let dev = sh.session.current_index()?;
+    let name = k2cmd::name(sh, dev);
+    let (first, last) = k2cmd::k2(sh, dev)?.backup_area();
+    let ops = |last: u32| -> Vec<K2Operand> { (first..=last).map(|b| K2Operand::byte(Area::V, b)).collect() };
+    let mut o = match parts.as_slice() {
+        ["dump", file, rest @ ..] => {
+            let end = match rest {
+                [] => last,
+                ["all"] => EEPROM_LAST_MAX,
+                _ => return Err(Error::usage("eeprom dump FILE [all]").column(args.offset)),
+            };
+            let core: Vec<_> = ops(end).iter().map(|o| o.to_core()).collect();
+            let vals = sh.session.read_values(dev, &core)?;
+            let bytes: Vec<u8> = vals.iter().map(|v| v.as_i64() as u8).collect();
+            state::write_atomic(std::path::Path::new(file), &bytes)?;
+            Outcome::new("eeprom")
+                .text(format!("saved VB{first}…VB{end} ({} bytes) to {file}", bytes.len()))
+                .with("bytes", bytes.len())
+                .with("file", file)
+        }
+        ["restore", file] => {
+            let bytes = std::fs::read(file).map_err(|e| Error::io(format!("cannot read {file}")).cause(e))?;
+            let room = (last - first + 1) as usize;
+            if bytes.len() > room {
+                return Err(Error::usage(format!(
+                    "{file} holds {} bytes but the backup area VB{first}…VB{last} has {room}",
+                    bytes.len()
+                ))
+                .hint("extend the area first: eeprom area 4095"));
+            }
+            let items: Vec<_> = ops(first + bytes.len() as u32 - 1)
+                .iter()
+                .zip(&bytes)
+                .map(|(o, b)| (o.to_core(), Value::Int(*b as i64)))
+                .collect();
+            sh.session.write_values(dev, &items)?;
+            Outcome::new("eeprom")
+                .text(format!(
+                    "restored {} bytes into VB{first}…VB{} from {file}",
+                    bytes.len(),
+                    first + bytes.len() as u32 - 1
+                ))
+                .with("bytes", bytes.len())
+        }
+        ["status"] => {
+            let s = k2cmd::sim(sh, dev, "eeprom status")?;
+            s.advance();
+            let mut lines = vec![format!("backup area VB{first}…VB{last} ({} bytes)", last - first + 1)];
+            let elapsed = s.last.saturating_sub(s.backup.since).as_secs_f64();
+            let mut data = serde_json::Map::new();
+            if let Some((byte, total, session)) = s.backup.hottest() {
+                lines.push(format!(
+                    "most-written byte VB{byte}: {total} writes ({:.3} % of ~{EEPROM_ENDURANCE})",
+                    total as f64 * 100.0 / EEPROM_ENDURANCE as f64
+                ));
+                data.insert("hottest".into(), serde_json::json!({"byte": byte, "writes": total, "session": session}));
+                if session > 0 && elapsed > 0.0 {
+                    let rate = session as f64 / elapsed;
+                    let left = EEPROM_ENDURANCE.saturating_sub(total) as f64 / rate;
+                    lines.push(format!(
+                        "at this session's rate ({rate:.1} writes/s of virtual time) it wears out in {}",
+                        human(left)
+                    ));
+                    if left < 10.0 * 365.0 * 86_400.0 {
+                        lines.push("warning: this would wear the E2PROM within 10 years; keep frequently changing data out of the backup area (§2.2.8)".into());
+                    }
+                    data.insert("wear_out_s".into(), serde_json::json!(left));
+                }
+            } else {
+                lines.push("no writes counted".into());
+            }
+            let mut o = Outcome::new("eeprom").text(lines.join("\n")).with("first", first).with("last", last);
+            o.data.extend(data);
+            o
+        }
+        ["area", n] => {
+            let n = n.trim_start_matches(['V', 'B', 'v', 'b']);
+            sh.session.entry(dev).device.set_option("backup_last", n).map_err(|e| e.device(&name))?;
+            let (_, last) = k2cmd::k2(sh, dev)?.backup_area();
+            Outcome::new("eeprom").text(format!("backup area VB{EEPROM_FIRST}…VB{last}")).with("last", last)
+        }
+        _ => return Err(Error::usage("unknown eeprom command").column(args.offset).hint(EEPROM.usage)),
+    };
+    o.device = Some(name);
+    Ok(o)
+}
+
+fn human(secs: f64) -> String {
+    if secs < 3600.0 {
+        format!("{:.0} s", secs)
+    } else if secs < 86_400.0 * 2.0 {
+        format!("{:.1} h", secs / 3600.0)
+    } else if secs < 86_400.0 * 730.0 {
+        format!("{:.0} days", secs / 86_400.0)
+    } else {
+        format!("{:.0} years", secs / (365.0 * 86_400.0))
+    }
+}

@@ -1,0 +1,104 @@
+//! Plumbing shared by the K2 special-function commands (`pls`, `pto`, `hsc`, `events`,
+//! `rtc`, `eeprom`, `sim input`): finding the device and channel a command names, reaching
+//! its [`K2Ops`], and turning helper results into an [`Outcome`].
+
+use crate::core::{Error, ErrorKind, Result};
+use crate::k2::helpers::{Done, Written};
+use crate::k2::sim::K2Sim;
+use crate::k2::K2Ops;
+use crate::output::Outcome;
+use crate::session::Reading;
+use crate::shell::lex::{Opt, Word};
+use crate::shell::Shell;
+
+/// `0` or `press:0` → (device index, channel number).
+pub fn channel(sh: &Shell, word: Word, what: &str, max: u8) -> Result<(usize, u8)> {
+    let (col, text) = word;
+    let (dev, num, off) = match text.rsplit_once(':') {
+        Some((d, n)) => (sh.session.index(d).map_err(|e| e.column(col))?, n, d.len() + 1),
+        None => (sh.session.current_index()?, text, 0),
+    };
+    let n: u8 = num
+        .parse()
+        .ok()
+        .filter(|n| *n <= max)
+        .ok_or_else(|| Error::usage(format!("`{num}` is not a {what} number (0…{max})")).column(col + off))?;
+    Ok((dev, n))
+}
+
+/// The device's name.
+pub fn name(sh: &Shell, dev: usize) -> String {
+    sh.session.entries()[dev].name.clone()
+}
+
+/// The K2 instructions of device `dev`.
+pub fn k2(sh: &mut Shell, dev: usize) -> Result<&mut dyn K2Ops> {
+    let name = name(sh, dev);
+    sh.session
+        .entry(dev)
+        .device
+        .as_k2()
+        .ok_or_else(|| Error::unsupported(format!("{name} is not a K2 PLC")).device(name))
+}
+
+/// The simulator behind device `dev`, or an error saying the control is simulator-only.
+pub fn sim<'a>(sh: &'a mut Shell, dev: usize, what: &str) -> Result<&'a mut K2Sim> {
+    let name = name(sh, dev);
+    k2(sh, dev)?.as_sim().ok_or_else(|| {
+        Error::unsupported(format!("{what} is a simulator control; {name} is not simulated")).device(name)
+    })
+}
+
+/// Helper writes as the output's readings.
+pub fn readings(w: &[Written]) -> Vec<Reading> {
+    w.iter().map(|w| Reading { operand: w.operand.clone(), value: w.value, dtype: w.dtype, device: None }).collect()
+}
+
+/// The outcome of an executed helper: the raw writes first, then what the device did.
+pub fn done_outcome(cmd: &str, device: String, d: Done) -> Outcome {
+    let mut lines = Vec::new();
+    if !d.writes.is_empty() {
+        let w: Vec<String> = d
+            .writes
+            .iter()
+            .map(|w| match (w.dtype, w.value) {
+                (crate::core::DataType::Byte, v) if v.as_i64() > 9 => {
+                    format!("{}={}", w.operand, crate::output::hex(v.as_i64() as u64, 8))
+                }
+                (_, v) => format!("{}={v}", w.operand),
+            })
+            .collect();
+        lines.push(format!("set {}", w.join(", ")));
+    }
+    for r in &d.reports {
+        lines.push(r.clone());
+    }
+    for n in &d.notes {
+        lines.push(format!("note: {n}"));
+    }
+    let mut o = Outcome::new(cmd).text(lines.join("\n")).with("reports", &d.reports).with("notes", &d.notes);
+    o.device = Some(device);
+    o.writes = readings(&d.writes);
+    o
+}
+
+/// Looks up an option, with the error for an unknown one.
+pub fn check_options(opts: &[Opt], known: &[&str], usage: &str) -> Result<()> {
+    for &(col, k, _) in opts {
+        if !known.contains(&k) {
+            return Err(Error::usage(format!("unknown option `{k}=`"))
+                .column(col)
+                .hint(format!("options: {}; usage: {usage}", known.join(", "))));
+        }
+    }
+    Ok(())
+}
+
+pub fn opt<'a>(opts: &[Opt<'a>], key: &str) -> Option<(usize, &'a str)> {
+    opts.iter().find(|o| o.1 == key).map(|o| (o.0, o.2))
+}
+
+/// A value error at a column.
+pub fn value_err(col: usize, msg: impl Into<String>) -> Error {
+    Error::new(ErrorKind::Value, msg).column(col)
+}

@@ -1,0 +1,273 @@
+//! Pulse output commands (manual §3.4): the instructions `pls N` and `pstop N`, and the
+//! typed helpers `pto`, `pwm`, `profile` that write the registers for the user, validate
+//! first, and print the raw writes they made.
+
+use super::k2cmd::{self, check_options, done_outcome, opt, value_err};
+use super::CommandSpec;
+use crate::core::{Error, Result};
+use crate::k2::helpers::{self, pto as hp};
+use crate::output::Outcome;
+use crate::shell::lex::{self, Word};
+use crate::shell::{Args, Shell};
+
+pub const PLS: CommandSpec = CommandSpec {
+    name: "pls",
+    aliases: &[],
+    usage: "pls N   e.g. set SMB67=16#85, SMW68=500, SMD72=1000; pls 0",
+    summary: "run the PLS instruction on pulse channel N (0 = Q0.0, 1 = Q0.1, 2 = Q0.4, 3 = Q0.5 on K209M)",
+    subcommands: &[],
+    run: pls,
+};
+
+pub const PSTOP: CommandSpec = CommandSpec {
+    name: "pstop",
+    aliases: &[],
+    usage: "pstop N",
+    summary: "emergency-stop pulse channel N (latches SM201.7 …; clear it with set SM201.7=0)",
+    subcommands: &[],
+    run: pstop,
+};
+
+pub const PTO: CommandSpec = CommandSpec {
+    name: "pto",
+    aliases: &[],
+    usage: "pto N freq=2kHz count=1000 | pto N cycle=500us count=1000 | pto status N",
+    summary: "start a single-segment pulse train (writes SMB67, SMW68, SMD72, then PLS), or decode its status",
+    subcommands: &["status"],
+    run: pto,
+};
+
+pub const PWM: CommandSpec = CommandSpec {
+    name: "pwm",
+    aliases: &[],
+    usage: "pwm N cycle=1ms width=250us [async]",
+    summary: "start PWM on channel N (writes SMB67=16#D3, SMW68, SMW70, then PLS)",
+    subcommands: &[],
+    run: pwm,
+};
+
+pub const PROFILE: CommandSpec = CommandSpec {
+    name: "profile",
+    aliases: &[],
+    usage: "profile N at VB3001 [(cycle=500us, count=1000), (freq=4kHz, count=4000), …] [force] [plan]",
+    summary: "multi-segment PTO from a profile table (writes the table, SMW168, SMB67=16#A0, then PLS); `plan` only shows the timeline",
+    subcommands: &[],
+    run: profile,
+};
+
+fn words<'a>(args: &Args<'a>) -> Result<Vec<Word<'a>>> {
+    Ok(lex::words(args.text)
+        .map_err(|e| e.shift(args.offset))?
+        .into_iter()
+        .map(|(c, w)| (c + args.offset, w))
+        .collect())
+}
+
+fn instruction(sh: &mut Shell, args: Args, cmd: &str, usage: &str) -> Result<Outcome> {
+    let w = words(&args)?;
+    let Some(&word) = w.first() else {
+        return Err(Error::usage(format!("a pulse channel number is missing: {usage}")).column(args.offset));
+    };
+    if w.len() > 1 {
+        return Err(Error::usage(format!("{cmd} takes one channel number")).column(w[1].0).hint(usage.to_string()));
+    }
+    let (dev, ch) = k2cmd::channel(sh, word, "pulse channel", 3)?;
+    let name = k2cmd::name(sh, dev);
+    let k2 = k2cmd::k2(sh, dev)?;
+    let report = if cmd == "pls" { k2.pls(ch) } else { k2.pstop(ch) }.map_err(|e| e.device(&name))?;
+    let mut o = Outcome::new(cmd).text(report.clone()).with("report", report).with("channel", ch);
+    o.device = Some(name);
+    Ok(o)
+}
+
+fn pls(sh: &mut Shell, args: Args) -> Result<Outcome> {
+    instruction(sh, args, "pls", PLS.usage)
+}
+
+fn pstop(sh: &mut Shell, args: Args) -> Result<Outcome> {
+    instruction(sh, args, "pstop", PSTOP.usage)
+}
+
+/// `freq=` or `cycle=` → a rate.
+fn rate(opts: &[lex::Opt]) -> Result<Option<hp::Rate>> {
+    match (opt(opts, "freq"), opt(opts, "cycle")) {
+        (Some(_), Some((c, _))) => Err(Error::usage("give freq= or cycle=, not both").column(c)),
+        (Some((c, f)), None) => Ok(Some(hp::Rate::Hz(helpers::parse_freq_hz(f).map_err(|m| value_err(c, m))?))),
+        (None, Some((c, t))) => Ok(Some(hp::Rate::CycleUs(helpers::parse_us(t).map_err(|m| value_err(c, m))?))),
+        (None, None) => Ok(None),
+    }
+}
+
+fn count(opts: &[lex::Opt], key: &str) -> Result<Option<u64>> {
+    opt(opts, key)
+        .map(|(c, v)| {
+            v.replace('_', "").parse::<u64>().map_err(|_| value_err(c, format!("{key}={v} is not a whole number")))
+        })
+        .transpose()
+}
+
+/// The device's model and its configured backup area.
+fn model_of(sh: &mut Shell, dev: usize) -> Result<(&'static crate::k2::catalog::Model, (u32, u32))> {
+    let k2 = k2cmd::k2(sh, dev)?;
+    Ok((k2.model(), k2.backup_area()))
+}
+
+fn run_plan(sh: &mut Shell, dev: usize, cmd: &str, plan: &helpers::Plan) -> Result<Outcome> {
+    let name = k2cmd::name(sh, dev);
+    let d = helpers::execute(sh.session.entry(dev).device.as_mut(), plan).map_err(|e| e.device(&name))?;
+    Ok(done_outcome(cmd, name, d))
+}
+
+fn pto(sh: &mut Shell, args: Args) -> Result<Outcome> {
+    let w = words(&args)?;
+    let (pos, opts) = lex::options(&w);
+    if pos.first().is_some_and(|p| p.1.eq_ignore_ascii_case("status")) {
+        let word = *pos.get(1).ok_or_else(|| Error::usage("pto status needs a channel number").column(args.offset))?;
+        let (dev, ch) = k2cmd::channel(sh, word, "pulse channel", 3)?;
+        let name = k2cmd::name(sh, dev);
+        let (model, _) = model_of(sh, dev)?;
+        let (vals, words) =
+            hp::status(sh.session.entry(dev).device.as_mut(), model, ch).map_err(|e| e.device(&name))?;
+        let mut o = Outcome::new("pto").text(format!("PTO{ch}: {}", words.join("; "))).with("status", &words);
+        o.device = Some(name);
+        o.values = k2cmd::readings(&vals);
+        return Ok(o);
+    }
+    check_options(&opts, &["freq", "cycle", "count"], PTO.usage)?;
+    let word = *pos.first().ok_or_else(|| Error::usage(PTO.usage).column(args.offset))?;
+    if let Some(extra) = pos.get(1) {
+        return Err(Error::usage(format!("unexpected `{}`", extra.1)).column(extra.0).hint(PTO.usage));
+    }
+    let (dev, ch) = k2cmd::channel(sh, word, "pulse channel", 3)?;
+    let rate =
+        rate(&opts)?.ok_or_else(|| Error::usage("pto needs freq= or cycle=").column(args.offset).hint(PTO.usage))?;
+    let n =
+        count(&opts, "count")?.ok_or_else(|| Error::usage("pto needs count=").column(args.offset).hint(PTO.usage))?;
+    let (model, _) = model_of(sh, dev)?;
+    let name = k2cmd::name(sh, dev);
+    let plan = hp::plan_pto(model, ch, rate, n).map_err(|e| e.device(&name))?;
+    run_plan(sh, dev, "pto", &plan)
+}
+
+fn pwm(sh: &mut Shell, args: Args) -> Result<Outcome> {
+    let w = words(&args)?;
+    let (pos, opts) = lex::options(&w);
+    check_options(&opts, &["cycle", "width", "freq"], PWM.usage)?;
+    let word = *pos.first().ok_or_else(|| Error::usage(PWM.usage).column(args.offset))?;
+    let mut sync = true;
+    for p in &pos[1..] {
+        match p.1.to_ascii_lowercase().as_str() {
+            "async" => sync = false,
+            "sync" => sync = true,
+            _ => return Err(Error::usage(format!("unexpected `{}`", p.1)).column(p.0).hint(PWM.usage)),
+        }
+    }
+    let (dev, ch) = k2cmd::channel(sh, word, "pulse channel", 3)?;
+    let cycle = match rate(&opts)? {
+        Some(hp::Rate::CycleUs(us)) => us,
+        Some(hp::Rate::Hz(f)) => (1e6 / f).round() as u64,
+        None => return Err(Error::usage("pwm needs cycle= (or freq=)").column(args.offset).hint(PWM.usage)),
+    };
+    let (wc, wt) = opt(&opts, "width").ok_or_else(|| Error::usage("pwm needs width=").hint(PWM.usage))?;
+    let width = crate::core::literal::parse_duration_us(wt).map_err(|m| value_err(wc, m))?;
+    if width < 0 {
+        return Err(value_err(wc, "the width cannot be negative"));
+    }
+    let (model, _) = model_of(sh, dev)?;
+    let name = k2cmd::name(sh, dev);
+    let plan = hp::plan_pwm(model, ch, cycle, width as u64, sync).map_err(|e| e.device(&name))?;
+    run_plan(sh, dev, "pwm", &plan)
+}
+
+/// `[(cycle=500us, count=1000), …]` → segments.
+fn segments(text: &str, col: usize) -> Result<Vec<hp::Segment>> {
+    let inner = text.strip_prefix('[').and_then(|t| t.strip_suffix(']')).ok_or_else(|| {
+        Error::syntax("the segment list goes in brackets: [(cycle=500us, count=1000), …]").column(col)
+    })?;
+    let mut out = Vec::new();
+    for (c, item) in lex::split_top(inner, ',').map_err(|e| e.shift(col + 1))? {
+        let t = item.trim();
+        if t.is_empty() {
+            continue;
+        }
+        let at = col + 1 + c + (item.len() - item.trim_start().len());
+        let body = t.strip_prefix('(').and_then(|t| t.strip_suffix(')')).ok_or_else(|| {
+            Error::syntax(format!("`{t}` is not a segment: write (cycle=500us, count=1000)")).column(at)
+        })?;
+        let ws: Vec<Word> = lex::words(body)?.into_iter().map(|(c2, w)| (at + 1 + c2, w)).collect();
+        let (pos, opts) = lex::options(&ws);
+        if let Some(p) = pos.first() {
+            return Err(Error::syntax(format!("unexpected `{}` in a segment", p.1)).column(p.0));
+        }
+        check_options(&opts, &["cycle", "freq", "count"], PROFILE.usage)?;
+        let rate = rate(&opts)?.ok_or_else(|| Error::usage("a segment needs cycle= or freq=").column(at))?;
+        let count = count(&opts, "count")?.ok_or_else(|| Error::usage("a segment needs count=").column(at))?;
+        out.push(hp::Segment { rate, count });
+    }
+    Ok(out)
+}
+
+fn profile(sh: &mut Shell, args: Args) -> Result<Outcome> {
+    let w = words(&args)?;
+    let word = *w.first().ok_or_else(|| Error::usage(PROFILE.usage).column(args.offset))?;
+    let (dev, ch) = k2cmd::channel(sh, word, "pulse channel", 3)?;
+    let (mut at, mut list, mut force, mut plan_only) = (None, None, false, false);
+    let mut i = 1;
+    while i < w.len() {
+        let (c, t) = w[i];
+        match t.to_ascii_lowercase().as_str() {
+            "at" => {
+                let (c2, a) =
+                    *w.get(i + 1).ok_or_else(|| Error::usage("`at` needs a V address, e.g. at VB3001").column(c))?;
+                let n = a
+                    .to_ascii_uppercase()
+                    .trim_start_matches('%')
+                    .strip_prefix("VB")
+                    .and_then(|n| n.parse::<u32>().ok())
+                    .ok_or_else(|| value_err(c2, format!("`{a}` is not a V byte address (e.g. VB3001)")))?;
+                at = Some(n);
+                i += 1;
+            }
+            "force" => force = true,
+            "plan" => plan_only = true,
+            _ if t.starts_with('[') => list = Some(segments(t, c)?),
+            _ => return Err(Error::usage(format!("unexpected `{t}`")).column(c).hint(PROFILE.usage)),
+        }
+        i += 1;
+    }
+    let at = at.ok_or_else(|| Error::usage("profile needs `at VBxxxx` (an odd V address)").hint(PROFILE.usage))?;
+    let list = list.ok_or_else(|| Error::usage("profile needs a segment list [(cycle=…, count=…), …]"))?;
+    let (model, backup) = model_of(sh, dev)?;
+    let name = k2cmd::name(sh, dev);
+    let pr = hp::plan_profile(model, ch, at, &list, force, backup).map_err(|e| e.device(&name))?;
+    let tl = hp::timeline(&pr.table, pr.base_ms);
+    if plan_only {
+        let rows = tl
+            .points
+            .iter()
+            .enumerate()
+            .map(|(k, p)| {
+                vec![
+                    (k + 1).to_string(),
+                    format!("{:.6}", p.start_us as f64 / 1e6),
+                    format!("{:.6}", p.end_us as f64 / 1e6),
+                    format!("{:.1}", p.freq_hz),
+                    p.pulses.to_string(),
+                ]
+            })
+            .collect();
+        let mut o = Outcome::new("profile")
+            .table(&["segment", "start s", "end s", "Hz", "pulses"], rows)
+            .with("timeline", &tl)
+            .with("planned_writes", pr.plan.writes.len());
+        o.device = Some(name);
+        return Ok(o);
+    }
+    let mut o = run_plan(sh, dev, "profile", &pr.plan)?;
+    o = o.with("timeline", &tl);
+    if let Some(m) = o.message.as_mut() {
+        m.push_str(&format!("\nprofile: {} pulses in {:.6} s", tl.total_pulses, tl.duration_us as f64 / 1e6));
+        o.view = crate::output::View::Text(m.clone());
+    }
+    Ok(o)
+}

@@ -1,0 +1,135 @@
+//! `sim input I0.1 freq=1kHz [dir=up|down]`, `sim input I0.1 off`, `sim quad A B freq=…
+//! [dir=down]`, `sim inputs`, `sim retain RANGES|none` — simulator-only controls, reached
+//! through `K2Ops::as_sim`.
+
+use super::k2cmd::{self, check_options, opt, value_err};
+use crate::core::{Error, Result, Value};
+use crate::k2::helpers::parse_freq_hz;
+use crate::k2::sim::inputs::{pin_name, Pin, Source, Wave};
+use crate::k2::sm_map::{HscKind, HSC_MODE_INPUTS};
+use crate::output::Outcome;
+use crate::shell::lex::{self, Word};
+use crate::shell::{Args, Shell};
+use std::time::Duration;
+
+const USAGE: &str = "sim input I0.1 freq=1kHz [dir=up|down] | sim input I0.1 off | sim quad A B freq=1kHz [dir=down] | sim inputs | sim retain VB0..VB99 MB0[8] | sim retain none";
+
+fn pin(w: Word) -> Result<Pin> {
+    let t = w.1.to_ascii_uppercase();
+    let body = t.trim_start_matches('%').strip_prefix('I');
+    body.and_then(|b| b.split_once('.'))
+        .and_then(|(b, bit)| Some((b.parse().ok()?, bit.parse().ok().filter(|x: &u8| *x < 8)?)))
+        .ok_or_else(|| value_err(w.0, format!("`{}` is not an input bit (e.g. I0.1)", w.1)))
+}
+
+fn hz(opts: &[lex::Opt]) -> Result<u64> {
+    let (c, f) = opt(opts, "freq").ok_or_else(|| Error::usage("a signal needs freq=, e.g. freq=1kHz").hint(USAGE))?;
+    let hz = parse_freq_hz(f).map_err(|m| value_err(c, m))?;
+    if hz.fract() != 0.0 || hz > 10_000_000.0 {
+        return Err(value_err(c, format!("freq={f}: whole Hz up to 10 MHz")));
+    }
+    Ok(hz as u64)
+}
+
+pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
+    let all: Vec<Word> = lex::words(args.text)?.into_iter().map(|(c, w)| (c + args.offset, w)).collect();
+    let w = &all[1..];
+    let (pos, opts) = lex::options(w);
+    let dev = sh.session.current_index()?;
+    let name = k2cmd::name(sh, dev);
+    let mut o = match sub {
+        "inputs" => {
+            let s = k2cmd::sim(sh, dev, "sim inputs")?;
+            let list: Vec<String> = s.inputs.sources.iter().map(|s| s.describe()).collect();
+            Outcome::new("sim")
+                .text(if list.is_empty() { "no simulated input signals".into() } else { list.join("\n") })
+                .with("sources", &list)
+        }
+        "retain" => {
+            let text: Vec<&str> = w.iter().map(|w| w.1).collect();
+            let s = k2cmd::sim(sh, dev, "sim retain")?;
+            if !text.is_empty() {
+                s.set_retain(&text.join(" ")).map_err(|e| e.device(&name))?;
+            }
+            let list: Vec<String> = s
+                .backup
+                .retain
+                .iter()
+                .map(|r| format!("{}B{}..{}B{}", r.area.name(), r.first, r.area.name(), r.first + r.len - 1))
+                .collect();
+            Outcome::new("sim")
+                .text(if list.is_empty() {
+                    "no retained ranges".into()
+                } else {
+                    format!("retained: {}", list.join(" "))
+                })
+                .with("retain", &list)
+        }
+        "input" => {
+            check_options(&opts, &["freq", "dir"], USAGE)?;
+            let p = pin(*pos.first().ok_or_else(|| Error::usage(USAGE).column(args.offset))?)?;
+            if pos.get(1).is_some_and(|w| w.1.eq_ignore_ascii_case("off")) {
+                let s = k2cmd::sim(sh, dev, "sim input")?;
+                let old = s.remove_source(p).map_err(|e| e.device(&name))?;
+                Outcome::new("sim").text(format!("stopped: {}", old.describe()))
+            } else {
+                if let Some(x) = pos.get(1) {
+                    return Err(Error::usage(format!("unexpected `{}`", x.1)).column(x.0).hint(USAGE));
+                }
+                let f = hz(&opts)?;
+                let mut msg = String::new();
+                if let Some((c, d)) = opt(&opts, "dir") {
+                    let up = match d.to_ascii_lowercase().as_str() {
+                        "up" => true,
+                        "down" => false,
+                        _ => return Err(value_err(c, format!("dir={d}: use up or down"))),
+                    };
+                    // The direction input paired with this count input (modes 3/4, §3.3.1).
+                    let dir = HSC_MODE_INPUTS
+                        .iter()
+                        .find(|m| m.kind == HscKind::ExternalDir && m.count == p)
+                        .and_then(|m| m.dir)
+                        .ok_or_else(|| {
+                            value_err(c, format!("{} has no direction input: dir= applies to I0.1 (direction I0.5) and I0.3 (direction I0.2)", pin_name(p)))
+                        })?;
+                    let op = crate::k2::operand::K2Operand::bit(crate::k2::operand::Area::I, dir.0, dir.1).to_core();
+                    sh.session.write_values(dev, &[(op, Value::Bool(up))])?;
+                    msg = format!("; direction input {} = {}", pin_name(dir), u8::from(up));
+                }
+                let s = k2cmd::sim(sh, dev, "sim input")?;
+                let d = s
+                    .add_source(Source::Freq { pin: p, wave: Wave::new(f, Duration::ZERO) })
+                    .map_err(|e| e.device(&name))?;
+                Outcome::new("sim").text(format!("{d}{msg}"))
+            }
+        }
+        "quad" => {
+            check_options(&opts, &["freq", "dir"], USAGE)?;
+            if pos.len() != 2 {
+                return Err(Error::usage("sim quad needs two inputs: A (leading) and B")
+                    .column(args.offset)
+                    .hint(USAGE));
+            }
+            let (mut a, mut b) = (pin(pos[0])?, pin(pos[1])?);
+            if a == b {
+                return Err(value_err(pos[1].0, "A and B must be different inputs"));
+            }
+            if let Some((c, d)) = opt(&opts, "dir") {
+                match d.to_ascii_lowercase().as_str() {
+                    "up" => {}
+                    "down" => std::mem::swap(&mut a, &mut b),
+                    _ => return Err(value_err(c, format!("dir={d}: use up (A leads) or down (B leads)"))),
+                }
+            }
+            let f = hz(&opts)?;
+            let s = k2cmd::sim(sh, dev, "sim quad")?;
+            let d = s
+                .add_source(Source::Quad { lead: a, lag: b, wave: Wave::new(f, Duration::ZERO) })
+                .map_err(|e| e.device(&name))?;
+            Outcome::new("sim").text(d)
+        }
+        _ => unreachable!("dispatched by sim.rs"),
+    };
+    o.device = Some(name);
+    Ok(o)
+}
