@@ -121,3 +121,24 @@ fn eeprom_dump_and_restore_through_a_file() {
     assert_eq!(l[1]["values"][1]["value"], 2);
     assert_eq!(l[2]["hottest"]["writes"], 1, "restoring wrote each byte once");
 }
+
+#[test]
+fn profile_plan_draws_the_ramp_and_writes_nothing() {
+    let svg = std::env::temp_dir().join(format!("plcsh-plan-{}.svg", std::process::id()));
+    let cmd = format!(
+        "profile 0 at VB3001 [(freq=1kHz, count=100), (freq=5kHz, count=2000)] plan to={}; get SMW168 VB3001",
+        svg.display()
+    );
+    let o = run(&["--time", "stepped", "-c", &cmd], "");
+    let text = stdout(&o);
+    assert!(text.contains("PTO0 frequency (Hz)") && text.contains('┤') && text.contains('⠉'), "a terminal chart: {text}");
+    assert!(text.contains("2100 pulses"), "{text}");
+    let pic = std::fs::read_to_string(&svg).expect("the SVG was written");
+    assert!(pic.starts_with("<svg") && pic.contains("PTO0 frequency"));
+    let _ = std::fs::remove_file(&svg);
+    let o = run(&["--time", "stepped", "--json", "-c", &cmd], "");
+    let l = json_lines(&o);
+    assert_eq!(l[0]["timeline"]["total_pulses"], 2100);
+    assert_eq!(l[1]["values"][0]["value"], 0, "plan wrote nothing: SMW168 still 0");
+    assert_eq!(l[1]["values"][1]["value"], 0, "nor the table");
+}

@@ -49,8 +49,8 @@ pub const PWM: CommandSpec = CommandSpec {
 pub const PROFILE: CommandSpec = CommandSpec {
     name: "profile",
     aliases: &[],
-    usage: "profile N at VB3001 [(cycle=500us, count=1000), (freq=4kHz, count=4000), …] [force] [plan]",
-    summary: "multi-segment PTO from a profile table (writes the table, SMW168, SMB67=16#A0, then PLS); `plan` only shows the timeline",
+    usage: "profile N at VB3001 [(cycle=500us, count=1000), (freq=4kHz, count=4000), …] [force] [plan [to=FILE.svg]]",
+    summary: "multi-segment PTO from a profile table (writes the table, SMW168, SMB67=16#A0, then PLS); `plan` only draws the frequency over time",
     subcommands: &[],
     run: profile,
 };
@@ -211,7 +211,7 @@ fn profile(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let w = words(&args)?;
     let word = *w.first().ok_or_else(|| Error::usage(PROFILE.usage).column(args.offset))?;
     let (dev, ch) = k2cmd::channel(sh, word, "pulse channel", 3)?;
-    let (mut at, mut list, mut force, mut plan_only) = (None, None, false, false);
+    let (mut at, mut list, mut force, mut plan_only, mut svg_to) = (None, None, false, false, None);
     let mut i = 1;
     while i < w.len() {
         let (c, t) = w[i];
@@ -230,6 +230,7 @@ fn profile(sh: &mut Shell, args: Args) -> Result<Outcome> {
             }
             "force" => force = true,
             "plan" => plan_only = true,
+            _ if t.to_ascii_lowercase().starts_with("to=") => svg_to = Some(t[3..].to_string()),
             _ if t.starts_with('[') => list = Some(segments(t, c)?),
             _ => return Err(Error::usage(format!("unexpected `{t}`")).column(c).hint(PROFILE.usage)),
         }
@@ -242,24 +243,37 @@ fn profile(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let pr = hp::plan_profile(model, ch, at, &list, force, backup).map_err(|e| e.device(&name))?;
     let tl = hp::timeline(&pr.table, pr.base_ms);
     if plan_only {
-        let rows = tl
-            .points
-            .iter()
-            .enumerate()
-            .map(|(k, p)| {
-                vec![
-                    (k + 1).to_string(),
-                    format!("{:.6}", p.start_us as f64 / 1e6),
-                    format!("{:.6}", p.end_us as f64 / 1e6),
-                    format!("{:.1}", p.freq_hz),
-                    p.pulses.to_string(),
-                ]
-            })
-            .collect();
-        let mut o = Outcome::new("profile")
-            .table(&["segment", "start s", "end s", "Hz", "pulses"], rows)
-            .with("timeline", &tl)
-            .with("planned_writes", pr.plan.writes.len());
+        // Frequency over time, drawn before anything is sent (issue 8: "see the ramp").
+        let mut points: Vec<(f64, f64)> = tl.points.iter().map(|p| (p.start_us as f64 / 1e6, p.freq_hz)).collect();
+        if let Some(last) = tl.points.last() {
+            points.push((last.end_us as f64 / 1e6, last.freq_hz));
+        }
+        let series = crate::plot::Series::new(format!("PTO{ch} frequency"), "Hz", points).stepped();
+        if let Some(path) = &svg_to {
+            std::fs::write(path, crate::plot::svg(std::slice::from_ref(&series), 800, 220))
+                .map_err(|e| Error::io(format!("cannot write {path}")).cause(e))?;
+        }
+        let mut text = crate::plot::terminal(std::slice::from_ref(&series), 64, 8);
+        for (k, p) in tl.points.iter().enumerate() {
+            text.push_str(&format!(
+                "segment {}: {:.6}–{:.6} s  {:.1} Hz  {} pulses\n",
+                k + 1,
+                p.start_us as f64 / 1e6,
+                p.end_us as f64 / 1e6,
+                p.freq_hz,
+                p.pulses
+            ));
+        }
+        text.push_str(&format!(
+            "total: {} pulses in {:.6} s; nothing was written (drop `plan` to run it)",
+            tl.total_pulses,
+            tl.duration_us as f64 / 1e6
+        ));
+        let mut o =
+            Outcome::new("profile").text(text).with("timeline", &tl).with("planned_writes", pr.plan.writes.len());
+        if let Some(path) = svg_to {
+            o = o.with("svg", path);
+        }
         o.device = Some(name);
         return Ok(o);
     }
