@@ -4,6 +4,7 @@
 //! One file per subcommand (`models.rs` …), each a thin call into the library.
 
 mod models;
+mod run;
 
 use crate::core::{Clock, ErrorKind};
 use crate::k2::catalog;
@@ -50,6 +51,8 @@ pub struct Cli {
 pub enum Sub {
     /// List the K2 model catalogue (areas, I/O, counters, pulse outputs, manual disagreements).
     Models,
+    /// Run a Lua script: plcsh [--time stepped] [--device NAME=URL] run SCRIPT.lua [ARGS…]
+    Run(run::RunArgs),
 }
 
 /// Splits `NAME=URL` (or a bare URL, named `plc`).
@@ -105,6 +108,9 @@ pub fn main() -> i32 {
     let _ = signal_hook::flag::register(signal_hook::consts::SIGINT, session.interrupt.clone());
     let mut shell = Shell::new(session, style);
     shell.verbose = cli.verbose > 0;
+    if !matches!(cli.sub, Some(Sub::Run(_))) {
+        crate::script::install(&mut shell);
+    }
 
     if let Some(sub) = &cli.sub {
         return match sub {
@@ -113,6 +119,7 @@ pub fn main() -> i32 {
                 let _ = output::write_outcome(&mut out, style, &o);
                 0
             }
+            Sub::Run(args) => run::main(&mut shell, args, style),
         };
     }
     if let Some(cmds) = &cli.command {

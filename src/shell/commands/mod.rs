@@ -4,6 +4,7 @@
 mod device;
 mod help;
 mod io;
+pub mod lua;
 mod sim;
 
 use super::{Args, Shell};
@@ -31,6 +32,7 @@ pub const COMMANDS: &[CommandSpec] = &[
     device::CONNECT,
     device::CLOSE,
     sim::SIM,
+    lua::LUA,
     help::HELP,
     help::QUIT,
 ];
