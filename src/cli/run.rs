@@ -32,11 +32,7 @@ pub fn main(shell: &mut Shell, args: &RunArgs, style: Style) -> i32 {
         Ok(()) => 0,
         Err(f) => {
             let mut out = std::io::stdout().lock();
-            let _ = if style.json {
-                writeln!(out, "{}", f.json("run"))
-            } else {
-                write!(out, "{}", f.human())
-            };
+            let _ = if style.json { writeln!(out, "{}", f.json("run")) } else { write!(out, "{}", f.human()) };
             let _ = out.flush();
             if f.interrupted() {
                 130

@@ -235,12 +235,10 @@ pub fn register(lua: &Lua) -> mlua::Result<()> {
     p.set("now", lua.create_function(|lua, ()| Ok(now(lua)?.as_secs_f64() * 1000.0))?)?;
     p.set("stepped", lua.create_function(|lua, ()| with_shell(lua, |sh| Ok(sh.session.clock.is_stepped())))?)?;
     p.set("wait_until", lua.create_function(wait_until)?)?;
+    p.set("_interrupted", lua.create_function(|lua, ()| Ok(interrupt_flag(lua)?.load(Ordering::Relaxed)))?)?;
     p.set("errinfo", lua.create_function(errinfo)?)?;
     p.set("table", lua.create_function(table)?)?;
-    p.set(
-        "_write",
-        lua.create_function(|lua, text: String| show(lua, &Outcome::new("print").text(text)))?,
-    )?;
+    p.set("_write", lua.create_function(|lua, text: String| show(lua, &Outcome::new("print").text(text)))?)?;
     lua.set_named_registry_value(ABORT_KEY, lua.create_table()?)?;
     p.set(
         "on_abort",
@@ -262,8 +260,8 @@ pub fn register(lua: &Lua) -> mlua::Result<()> {
     json.set(
         "decode",
         lua.create_function(|lua, s: String| {
-            let j: serde_json::Value = serde_json::from_str(&s)
-                .map_err(|e| raise(Error::new(ErrorKind::Value, format!("not JSON: {e}"))))?;
+            let j: serde_json::Value =
+                serde_json::from_str(&s).map_err(|e| raise(Error::new(ErrorKind::Value, format!("not JSON: {e}"))))?;
             json_to_lua(lua, &j)
         })?,
     )?;

@@ -44,7 +44,7 @@ pub const BRIDGE: &[Bridge] = &[
     // Any device.
     row("read", "", "read"),
     row("help", "", "help"),
-    row("cmd", "", ""),
+    row("cmd", "", ""), // plc:cmd("pls 0; pls 1"): any command line, on this device
     // K2 pulse outputs and counters (PTO/PWM/HSC helpers).
     row("pls", "k2", "pls"),
     row("pto", "k2", "pto"),
@@ -80,7 +80,8 @@ pub const BRIDGE: &[Bridge] = &[
 
 fn usage(b: &Bridge, msg: String) -> Error {
     let shown = if b.template.is_empty() { "a command line".to_string() } else { format!("`{}`", b.template) };
-    Error::usage(format!("{}: {msg}", b.method)).hint(format!("{} runs {shown} with extra arguments appended", b.method))
+    Error::usage(format!("{}: {msg}", b.method))
+        .hint(format!("{} runs {shown} with extra arguments appended", b.method))
 }
 
 fn number(n: f64) -> String {
@@ -115,7 +116,10 @@ pub fn word(v: &Value) -> Result<String> {
             }
         }
         Value::Table(t) if is_list(t) => {
-            let items: Vec<String> = t.sequence_values::<Value>().map(|v| v.map_err(lua_err).and_then(|v| word(&v))).collect::<Result<_>>()?;
+            let items: Vec<String> = t
+                .sequence_values::<Value>()
+                .map(|v| v.map_err(lua_err).and_then(|v| word(&v)))
+                .collect::<Result<_>>()?;
             format!("[{}]", items.join(", "))
         }
         Value::Table(t) => format!("({})", options(t, &[])?.join(", ")),
@@ -179,10 +183,15 @@ pub fn render(b: &Bridge, args: &[Value]) -> Result<String> {
         rest = &rest[close + 1..];
     }
     out.push_str(rest);
+    // `cmd` (an empty template) takes command text as typed.
+    let raw = b.template.is_empty();
     for arg in it {
         let words = match arg {
             Value::Table(t) if !is_list(t) => options(t, b.options)?,
             Value::Nil => continue,
+            Value::String(s) if raw => {
+                vec![s.to_str().map_err(|_| Error::usage("command text is not UTF-8"))?.to_string()]
+            }
             v => vec![word(v)?],
         };
         for w in words {

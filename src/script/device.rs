@@ -189,7 +189,10 @@ fn to_value(sh: &Shell, i: usize, op: &Operand, v: &Value) -> Result<V> {
         other => {
             return Err(named(Error::new(
                 crate::core::ErrorKind::Value,
-                format!("cannot write a Lua {} (use a number, a boolean or a literal such as \"16#85\")", other.type_name()),
+                format!(
+                    "cannot write a Lua {} (use a number, a boolean or a literal such as \"16#85\")",
+                    other.type_name()
+                ),
             )))
         }
     })
@@ -281,7 +284,8 @@ pub fn register(lua: &Lua) -> mlua::Result<()> {
                     Some(n) => n,
                     None => {
                         let base = url.split(':').next().unwrap_or("dev").replace(['+', '.'], "_");
-                        let base = if base.starts_with("sim") && !base.contains("servo") { "plc".to_string() } else { base };
+                        let base =
+                            if base.starts_with("sim") && !base.contains("servo") { "plc".to_string() } else { base };
                         (1..)
                             .map(|k| if k == 1 { base.clone() } else { format!("{base}{k}") })
                             .find(|c| sh.session.index(c).is_err())

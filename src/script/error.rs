@@ -122,7 +122,8 @@ impl Failure {
     /// The error as the shell reports a failed `lua` line: location in the message.
     pub fn into_shell_error(self) -> Error {
         let mut e = self.error;
-        if let Some(l) = &self.location {
+        // `lua:1` (a line typed in the shell) says nothing the user does not know.
+        if let Some(l) = self.location.as_ref().filter(|l| !l.starts_with("lua:")) {
             if !e.message.starts_with(l.as_str()) {
                 e.message = format!("{l}: {}", e.message);
             }

@@ -182,10 +182,7 @@ impl Engine {
         if self.lua.load(format!("return {code}")).into_function().is_ok() {
             return false;
         }
-        matches!(
-            self.lua.load(code).into_function(),
-            Err(mlua::Error::SyntaxError { incomplete_input: true, .. })
-        )
+        matches!(self.lua.load(code).into_function(), Err(mlua::Error::SyntaxError { incomplete_input: true, .. }))
     }
 }
 
@@ -220,3 +217,6 @@ impl ScriptHook for Hook {
 pub fn install(shell: &mut Shell) {
     shell.script = Some(Box::new(Hook { engine: None, interrupt: shell.session.interrupt.clone() }));
 }
+
+#[cfg(test)]
+mod tests;

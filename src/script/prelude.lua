@@ -5,6 +5,17 @@
 local plcsh = plcsh
 local write, select, tostring, type, error = plcsh._write, select, tostring, type, error
 
+-- Ctrl-C must reach the top even through pcall: a protected call that failed while the
+-- script is being interrupted re-raises (the hook would otherwise be caught forever).
+local rawpcall, rawxpcall, rawresume, stopping = pcall, xpcall, coroutine.resume, plcsh._interrupted
+local function pass(ok, ...)
+  if not ok and stopping() then error((...), 0) end
+  return ok, ...
+end
+function pcall(f, ...) return pass(rawpcall(f, ...)) end
+function xpcall(f, handler, ...) return pass(rawxpcall(f, handler, ...)) end
+function coroutine.resume(co, ...) return pass(rawresume(co, ...)) end
+
 -- print goes through the shell's output (a JSON line under --json).
 function print(...)
   local n = select("#", ...)
