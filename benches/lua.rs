@@ -31,9 +31,15 @@ fn main() {
     let cases = [
         ("field write  plc.VW100 = i", format!("local plc = plc for i = 1, {n} do plc.VW100 = i & 0xFFFF end")),
         ("field write  plc.SMB67 = i (SM byte)", format!("local plc = plc for i = 1, {n} do plc.SMB67 = i & 0xFF end")),
-        ("field write  plc['M0.3'] = bool", format!("local plc = plc for i = 1, {n} do plc['M0.3'] = (i & 1) == 1 end")),
+        (
+            "field write  plc['M0.3'] = bool",
+            format!("local plc = plc for i = 1, {n} do plc['M0.3'] = (i & 1) == 1 end"),
+        ),
         ("field read   v = plc.VW100", format!("local plc, s = plc, 0 for i = 1, {n} do s = s + plc.VW100 end")),
-        ("plc:get(VW0, VW2)  calls (2 values each)", format!("local plc = plc for i = 1, {n} // 2 do local a, b = plc:get('VW0', 'VW2') end")),
+        (
+            "plc:get(VW0, VW2)  calls (2 values each)",
+            format!("local plc = plc for i = 1, {n} // 2 do local a, b = plc:get('VW0', 'VW2') end"),
+        ),
     ];
     println!("Lua register access against the in-process simulator ({n} operations each):");
     for (name, code) in &cases {

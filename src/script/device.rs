@@ -143,7 +143,7 @@ impl Handle {
                 }
             }
             [Value::String(_), ..] => {
-                if args.len() % 2 != 0 {
+                if !args.len().is_multiple_of(2) {
                     return Err(raise(Error::usage(format!(
                         "set: {} arguments; pass OPERAND, value, OPERAND, value …",
                         args.len()

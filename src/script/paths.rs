@@ -2,7 +2,8 @@
 //! 1. every directory in `PLCSH_LIB` (`:`-separated),
 //! 2. the user's config directory (`~/.config/plcsh/lib` on Linux, via `directories`),
 //! 3. the project's `lib/` — next to the executable (`target/release/plcsh` → `lib/` two
-//!    levels up, or `../lib` of an installed tree), else the source tree it was built from,
+//!    levels up, or `../lib` of an installed tree), else the source tree it was built from;
+//!
 //! then Lua's defaults. `plcsh run` also adds the script's own directory.
 //! The list is visible to scripts as `plcsh.lib_dirs`.
 

@@ -226,7 +226,13 @@ fn the_interrupt_flag_stops_a_busy_loop_and_runs_handlers() {
     let (mut sh, e, buf) = setup();
     // Stands in for the SIGINT handler (tests/lua.rs sends a real SIGINT to the binary).
     let flag = sh.session.interrupt.clone();
-    let ctrl_c = e.lua().create_function(move |_, ()| Ok(flag.store(true, Ordering::Relaxed))).unwrap();
+    let ctrl_c = e
+        .lua()
+        .create_function(move |_, ()| {
+            flag.store(true, Ordering::Relaxed);
+            Ok(())
+        })
+        .unwrap();
     e.lua().globals().set("ctrl_c", ctrl_c).unwrap();
     let f = run(
         &mut sh,
