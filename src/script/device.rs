@@ -283,9 +283,11 @@ pub fn register(lua: &Lua) -> mlua::Result<()> {
                 let name = match name {
                     Some(n) => n,
                     None => {
-                        let base = url.split(':').next().unwrap_or("dev").replace(['+', '.'], "_");
-                        let base =
-                            if base.starts_with("sim") && !base.contains("servo") { "plc".to_string() } else { base };
+                        // A servo URL (`kinco:`, `sim-servo:`) is named `servo`, anything else `plc`;
+                        // taken names get a number (`plc2`).
+                        let scheme = url.split(':').next().unwrap_or("").to_ascii_lowercase();
+                        let servo = scheme.contains("servo") || scheme == "kinco";
+                        let base = if servo { "servo".to_string() } else { "plc".to_string() };
                         (1..)
                             .map(|k| if k == 1 { base.clone() } else { format!("{base}{k}") })
                             .find(|c| sh.session.index(c).is_err())

@@ -94,8 +94,10 @@ impl Engine {
                     failure.error.kind = ErrorKind::Interrupted;
                 }
                 self.run_abort_handlers(&handlers, &failure, stop.as_deref());
+                // Leave the flag as the run ended: a piped shell stops after an interrupted
+                // line, as it does after an interrupted command (the next command clears it).
                 if let Some(s) = &stop {
-                    s.store(false, Ordering::Relaxed);
+                    s.store(failure.interrupted(), Ordering::Relaxed);
                 }
                 Err(failure)
             }

@@ -179,6 +179,10 @@ fn a_closed_device_gives_a_clear_error() {
     // Reopened under the same name as another model: the operand cache is not reused.
     run(&mut sh, &e, "plcsh.connect('sim:K209M-56DT', 'big'); h.VW16000 = 5").unwrap();
     assert_eq!(get(&mut sh, "big:VW16000"), 5);
+    // Without a name, a K2 is `plc` or the next free `plcN`.
+    let o = run(&mut sh, &e, "local d = plcsh.connect('sim:K205-16DT'); d.VW0 = 4; return d:name()").unwrap();
+    assert_eq!(o.data["results"][0], "plc2");
+    assert_eq!(get(&mut sh, "plc2:VW0"), 4);
     let f = run(&mut sh, &e, "plcsh.device('nope')").unwrap_err();
     assert!(f.error.hint.clone().unwrap().contains("plc"), "{:?}", f.error);
 }
@@ -245,7 +249,8 @@ fn the_interrupt_flag_stops_a_busy_loop_and_runs_handlers() {
     assert!(f.interrupted(), "{:?}", f.error);
     assert!(buf.text().contains("cleanup interrupted"), "{}", buf.text());
     assert_eq!(get(&mut sh, "VW0"), 1, "the handler ran with the flag cleared");
-    assert!(!sh.session.interrupted(), "the flag is cleared for the next command");
+    assert!(sh.session.interrupted(), "the flag stays up for the caller (the next command clears it)");
+    sh.session.clear_interrupt();
     // Waits are interrupted too.
     let f = run(&mut sh, &e, "ctrl_c(); plcsh.sleep(10)").unwrap_err();
     assert!(f.interrupted());
