@@ -40,6 +40,7 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             [CompletionResult]::new('devices', 'devices', [CompletionResultType]::ParameterValue, 'List open devices and the device profiles (devices.toml), with problems in that file')
             [CompletionResult]::new('completions', 'completions', [CompletionResultType]::ParameterValue, 'Print a shell completion script (bash, zsh, fish, powershell), or write them all')
             [CompletionResult]::new('sim', 'sim', [CompletionResultType]::ParameterValue, 'Simulators for other programs (`sim serve`)')
+            [CompletionResult]::new('run', 'run', [CompletionResultType]::ParameterValue, 'Run a Lua script: plcsh [--time stepped] [--device NAME=URL] run SCRIPT.lua [ARGS…]')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
         }
@@ -130,11 +131,26 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
         'plcsh;sim;help;help' {
             break
         }
+        'plcsh;run' {
+            [CompletionResult]::new('--model', '--model', [CompletionResultType]::ParameterName, 'Model of the default simulated PLC')
+            [CompletionResult]::new('-d', '-d', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
+            [CompletionResult]::new('--device', '--device', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
+            [CompletionResult]::new('--time', '--time', [CompletionResultType]::ParameterName, 'Simulator time: follow the wall clock, or move only when stepped')
+            [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)')
+            [CompletionResult]::new('--state', '--state', [CompletionResultType]::ParameterName, 'Simulator state file (backup area, retained ranges, clock); default in the user''s data directory')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'Print one JSON object per command result')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            break
+        }
         'plcsh;help' {
             [CompletionResult]::new('models', 'models', [CompletionResultType]::ParameterValue, 'List the K2 model catalogue (areas, I/O, counters, pulse outputs, manual disagreements)')
             [CompletionResult]::new('devices', 'devices', [CompletionResultType]::ParameterValue, 'List open devices and the device profiles (devices.toml), with problems in that file')
             [CompletionResult]::new('completions', 'completions', [CompletionResultType]::ParameterValue, 'Print a shell completion script (bash, zsh, fish, powershell), or write them all')
             [CompletionResult]::new('sim', 'sim', [CompletionResultType]::ParameterValue, 'Simulators for other programs (`sim serve`)')
+            [CompletionResult]::new('run', 'run', [CompletionResultType]::ParameterValue, 'Run a Lua script: plcsh [--time stepped] [--device NAME=URL] run SCRIPT.lua [ARGS…]')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
         }
@@ -152,6 +168,9 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             break
         }
         'plcsh;help;sim;serve' {
+            break
+        }
+        'plcsh;help;run' {
             break
         }
         'plcsh;help;help' {

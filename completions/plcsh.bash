@@ -28,6 +28,9 @@ _plcsh() {
             plcsh,models)
                 cmd="plcsh__subcmd__models"
                 ;;
+            plcsh,run)
+                cmd="plcsh__subcmd__run"
+                ;;
             plcsh,sim)
                 cmd="plcsh__subcmd__sim"
                 ;;
@@ -42,6 +45,9 @@ _plcsh() {
                 ;;
             plcsh__subcmd__help,models)
                 cmd="plcsh__subcmd__help__subcmd__models"
+                ;;
+            plcsh__subcmd__help,run)
+                cmd="plcsh__subcmd__help__subcmd__run"
                 ;;
             plcsh__subcmd__help,sim)
                 cmd="plcsh__subcmd__help__subcmd__sim"
@@ -68,7 +74,7 @@ _plcsh() {
 
     case "${cmd}" in
         plcsh)
-            opts="-c -v -d -h -V --command --json --verbose --model --device --time --config --state --help --version models devices completions sim help"
+            opts="-c -v -d -h -V --command --json --verbose --model --device --time --config --state --help --version models devices completions sim run help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -194,7 +200,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__help)
-            opts="models devices completions sim help"
+            opts="models devices completions sim run help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -263,6 +269,20 @@ _plcsh() {
             COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
             return 0
             ;;
+        plcsh__subcmd__help__subcmd__run)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
         plcsh__subcmd__help__subcmd__sim)
             opts="serve"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
@@ -292,6 +312,44 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__models)
+            opts="-v -d -h --json --verbose --model --device --time --config --state --help"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --model)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --device)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --time)
+                    COMPREPLY=($(compgen -W "wall stepped" -- "${cur}"))
+                    return 0
+                    ;;
+                --config)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --state)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        plcsh__subcmd__run)
             opts="-v -d -h --json --verbose --model --device --time --config --state --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )

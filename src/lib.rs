@@ -1,7 +1,7 @@
 //! plcsh: a shell for commissioning and debugging Kinco K2 PLCs and Kinco servo drives.
 //!
 //! Layers (see `../shared/design.md`): `core` ← device families (`k2`, `servo`) ←
-//! `session` ← front ends (`shell`, `cli`). `output` renders core values only.
+//! `session` ← front ends (`shell`, `cli`, `script`). `output` renders core values only.
 
 pub mod cli;
 pub mod core;
@@ -9,6 +9,7 @@ pub mod k2;
 pub mod output;
 pub mod plot;
 pub mod profile;
+pub mod script;
 pub mod servo;
 pub mod session;
 pub mod shell;

@@ -131,7 +131,10 @@ fn profile_plan_draws_the_ramp_and_writes_nothing() {
     );
     let o = run(&["--time", "stepped", "-c", &cmd], "");
     let text = stdout(&o);
-    assert!(text.contains("PTO0 frequency (Hz)") && text.contains('┤') && text.contains('⠉'), "a terminal chart: {text}");
+    assert!(
+        text.contains("PTO0 frequency (Hz)") && text.contains('┤') && text.contains('⠉'),
+        "a terminal chart: {text}"
+    );
     assert!(text.contains("2100 pulses"), "{text}");
     let pic = std::fs::read_to_string(&svg).expect("the SVG was written");
     assert!(pic.starts_with("<svg") && pic.contains("PTO0 frequency"));

@@ -5,6 +5,7 @@
 
 pub mod completions;
 mod models;
+mod run;
 mod serve;
 
 use crate::core::{Clock, ErrorKind};
@@ -75,6 +76,8 @@ pub enum Sub {
         #[command(subcommand)]
         cmd: SimCmd,
     },
+    /// Run a Lua script: plcsh [--time stepped] [--device NAME=URL] run SCRIPT.lua [ARGS…]
+    Run(run::RunArgs),
 }
 
 #[derive(Subcommand, Debug)]
@@ -159,6 +162,9 @@ pub fn main() -> i32 {
         // Every driver reports its frames to core::trace; -v shows them on stderr in hex with timing.
         crate::core::trace::set_sink(Some(std::sync::Arc::new(crate::core::trace::StderrSink)));
     }
+    if !matches!(cli.sub, Some(Sub::Run(_))) {
+        crate::script::install(&mut shell);
+    }
 
     if let Some(sub) = &cli.sub {
         return match sub {
@@ -170,6 +176,7 @@ pub fn main() -> i32 {
             Sub::Completions { shell, write } => completions::run(*shell, write.as_deref(), &mut out),
             Sub::Devices => i32::from(!shell.run_line("devices", &mut out)),
             Sub::Sim { cmd: SimCmd::Serve(a) } => serve::run(a),
+            Sub::Run(args) => run::main(&mut shell, args, style),
         };
     }
     if let Some(cmds) = &cli.command {

@@ -2,6 +2,9 @@
 //! `get VW100 SMD72`, `set SMB67=16#85, SMW68=500, SMD72=1000`, `read VW0..VW20`,
 //! several commands per line separated by `;`. Commands are registered in one list
 //! (`commands::COMMANDS`), one file per command family, each a thin call into the session.
+//! Lua lines (`lua …`, `:…`, a `lua` … `end` block) are whole: `;` belongs to Lua there; the
+//! shell hands them to a [`ScriptHook`] the cli installs (`script::install`), so the shell
+//! knows the hook, not the language.
 
 pub mod commands;
 pub mod complete;
@@ -32,6 +35,16 @@ pub struct Shell {
     pub quit: bool,
     /// The last `trace`, for `plot`.
     pub last_trace: Option<sample::Recording>,
+    /// Runs Lua (`lua …`, `:…`); `None` while a chunk runs (no nesting) or when not installed.
+    pub script: Option<Box<dyn ScriptHook>>,
+}
+
+/// An embedded language the shell hands whole lines to (Lua, `src/script/`).
+pub trait ScriptHook: Send {
+    /// Runs a chunk with the shell; the outcome shows the chunk's results.
+    fn run(&mut self, shell: &mut Shell, code: &str) -> Result<Outcome>;
+    /// True while `code` is an unfinished chunk (the REPL then reads another line).
+    fn incomplete(&mut self, code: &str) -> bool;
 }
 
 /// One command's result, with the command name for error reporting.
@@ -39,7 +52,7 @@ pub type CmdResult = std::result::Result<Outcome, (String, Error)>;
 
 impl Shell {
     pub fn new(session: Session, style: Style) -> Shell {
-        Shell { session, style, verbose: false, quit: false, last_trace: None }
+        Shell { session, style, verbose: false, quit: false, last_trace: None, script: None }
     }
 
     /// Runs every command on the line in order and returns their results. A failing
@@ -47,6 +60,10 @@ impl Shell {
     /// write: after a failed command the rest of the line is skipped (the line is treated
     /// like a script: later commands usually depend on earlier ones).
     pub fn exec(&mut self, line: &str) -> Vec<CmdResult> {
+        if let Some((offset, code)) = commands::lua::whole_line(line) {
+            let args = Args { text: &code, offset };
+            return vec![(commands::lua::LUA.run)(self, args).map_err(|e| ("lua".to_string(), e))];
+        }
         let mut results = Vec::new();
         let parts = match lex::split_commands(line) {
             Ok(p) => p,
@@ -125,6 +142,11 @@ impl Shell {
         if !sent.is_empty() {
             eprintln!("requests: {}", sent.join(", "));
         }
+    }
+
+    /// True while `text` is a Lua chunk that needs more lines (REPL continuation).
+    pub fn needs_more(&mut self, text: &str) -> bool {
+        commands::lua::needs_more(self, text)
     }
 
     /// The name of the device a command acts on by default.

@@ -48,9 +48,19 @@ pub fn interactive(shell: &mut Shell) -> i32 {
             shell.session = s;
         }
         match read {
-            Ok(line) => {
+            Ok(mut line) => {
                 if line.trim().is_empty() {
                     continue;
+                }
+                // An unfinished Lua chunk continues on the next line.
+                while shell.needs_more(&line) {
+                    match ed.readline(".. ") {
+                        Ok(more) => {
+                            line.push('\n');
+                            line.push_str(&more);
+                        }
+                        Err(_) => break,
+                    }
                 }
                 let _ = ed.add_history_entry(line.as_str());
                 shell.run_line(&line, &mut out);
@@ -107,11 +117,20 @@ pub fn batch(shell: &mut Shell, input: &mut dyn BufRead, out: &mut dyn Write) ->
                 return 1;
             }
         }
-        let l = line.trim_end_matches(['\n', '\r']);
+        let mut l = line.trim_end_matches(['\n', '\r']).to_string();
         if l.trim().is_empty() || l.trim_start().starts_with('#') {
             continue;
         }
-        ok &= shell.run_line(l, out);
+        // An unfinished Lua chunk continues on the next line.
+        while shell.needs_more(&l) {
+            let mut more = String::new();
+            if input.read_line(&mut more).unwrap_or(0) == 0 {
+                break;
+            }
+            l.push('\n');
+            l.push_str(more.trim_end_matches(['\n', '\r']));
+        }
+        ok &= shell.run_line(&l, out);
         if shell.quit {
             break;
         }

@@ -8,6 +8,7 @@ mod events;
 mod help;
 mod io;
 mod k2cmd;
+pub mod lua;
 pub mod profiles;
 mod pulse;
 mod rtc;
@@ -57,6 +58,7 @@ pub const COMMANDS: &[CommandSpec] = &[
     events::WAIT,
     rtc::RTC,
     eeprom::EEPROM,
+    lua::LUA,
     help::HELP,
     help::QUIT,
 ];

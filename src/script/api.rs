@@ -1,0 +1,271 @@
+//! The `plcsh` table: the command language (`plcsh.exec`), time (`sleep`, `now`,
+//! `wait_until`), abort handlers, JSON, tables and printing through the shell's output.
+//!
+//! While a chunk runs, the shell (and with it the session) lives in the Lua state's app
+//! data (see `script::Engine`); every function here borrows it for the length of one Rust
+//! call and never while Lua code runs, so Lua callbacks can nest freely.
+
+use super::error::{facing, raise, raise_cmd};
+use crate::core::{Error, ErrorKind};
+use crate::output::{self, Outcome};
+use crate::shell::Shell;
+use mlua::serde::SerializeOptions;
+use mlua::{Function, Lua, LuaSerdeExt, MultiValue, Table, Value};
+use std::io::Write;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
+use std::time::Duration;
+
+/// Where `print` and `plcsh.table` write: the shell's output (stdout, or a buffer in tests).
+pub struct Sink(pub Box<dyn Write + Send>);
+
+/// Registry key of the list of `plcsh.on_abort` handlers.
+pub const ABORT_KEY: &str = "plcsh.on_abort";
+
+/// Runs `f` with the shell the running chunk works on.
+pub fn with_shell<R>(lua: &Lua, f: impl FnOnce(&mut Shell) -> crate::core::Result<R>) -> mlua::Result<R> {
+    let mut sh = lua
+        .try_app_data_mut::<Shell>()
+        .map_err(|e| raise(Error::state(format!("the session is busy: {e}"))))?
+        .ok_or_else(|| raise(Error::state("no session: Lua runs only inside plcsh")))?;
+    f(&mut sh).map_err(raise)
+}
+
+/// The interrupt flag (Ctrl-C) of the session.
+pub fn interrupt_flag(lua: &Lua) -> mlua::Result<Arc<AtomicBool>> {
+    with_shell(lua, |sh| Ok(sh.session.interrupt.clone()))
+}
+
+pub fn interrupted_error() -> Error {
+    Error::new(ErrorKind::Interrupted, "interrupted (Ctrl-C)")
+}
+
+/// JSON → Lua (tables for objects and arrays; JSON null becomes nil).
+pub fn json_to_lua(lua: &Lua, v: &serde_json::Value) -> mlua::Result<Value> {
+    lua.to_value_with(v, SerializeOptions::new().serialize_none_to_null(false).serialize_unit_to_null(false))
+}
+
+/// Runs shell `line` (on device `device`, made current for the call) and returns one table
+/// per command; a failed command raises its error.
+pub fn exec_on(lua: &Lua, device: Option<&str>, line: &str) -> mlua::Result<MultiValue> {
+    let stop = interrupt_flag(lua)?;
+    if stop.load(Ordering::Relaxed) {
+        return Err(raise(interrupted_error()));
+    }
+    let results = with_shell(lua, |sh| {
+        let back = sh.session.current_name().map(str::to_string);
+        if let Some(d) = device {
+            super::device::index(sh, d)?;
+            sh.session.use_device(d)?;
+        }
+        let r = sh.exec(line);
+        if let (Some(_), Some(b)) = (device, back) {
+            let _ = sh.session.use_device(&b);
+        }
+        Ok(r)
+    })?;
+    let mut out = MultiValue::new();
+    for r in results {
+        match r {
+            Ok(o) => out.push_back(json_to_lua(lua, &o.to_json())?),
+            Err((cmd, e)) => {
+                if e.kind == ErrorKind::Interrupted {
+                    // The command saw Ctrl-C (and cleared the flag): keep the script aborting.
+                    stop.store(true, Ordering::Relaxed);
+                }
+                return Err(raise_cmd(&cmd, e));
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// Writes an outcome through the shell's output (honouring `--json`).
+pub fn show(lua: &Lua, o: &Outcome) -> mlua::Result<()> {
+    let style = with_shell(lua, |sh| Ok(sh.style))?;
+    let mut sink = lua.app_data_mut::<Sink>().ok_or_else(|| raise(Error::state("no output")))?;
+    output::write_outcome(&mut *sink.0, style, o).and_then(|_| sink.0.flush()).map_err(|e| raise(e.into()))
+}
+
+fn millis(ms: f64, what: &str) -> mlua::Result<Duration> {
+    if !ms.is_finite() || ms < 0.0 {
+        return Err(raise(Error::usage(format!("{what}: {ms} is not a duration in milliseconds (a number ≥ 0)"))));
+    }
+    Ok(Duration::from_secs_f64(ms / 1000.0))
+}
+
+/// Waits `d` of virtual time (instantly when the clock is stepped); raises on Ctrl-C.
+fn sleep(lua: &Lua, d: Duration) -> mlua::Result<()> {
+    let (clock, stop) = with_shell(lua, |sh| Ok((sh.session.clock.clone(), sh.session.interrupt.clone())))?;
+    if stop.load(Ordering::Relaxed) || !clock.sleep(d, &stop) {
+        return Err(raise(interrupted_error()));
+    }
+    Ok(())
+}
+
+fn now(lua: &Lua) -> mlua::Result<Duration> {
+    with_shell(lua, |sh| Ok(sh.session.clock.now()))
+}
+
+fn truthy(v: &Value) -> bool {
+    !matches!(v, Value::Nil | Value::Boolean(false))
+}
+
+/// `plcsh.wait_until(fn, {timeout=ms, every=ms, what="…"})` (or a number: the timeout).
+fn wait_until(lua: &Lua, (f, opts): (Function, Value)) -> mlua::Result<Value> {
+    let (mut timeout, mut every, mut what) = (None, Duration::from_millis(10), None::<String>);
+    match &opts {
+        Value::Nil => {}
+        Value::Integer(_) | Value::Number(_) => timeout = Some(millis(lua.unpack(opts.clone())?, "timeout")?),
+        Value::Table(t) => {
+            if let Some(ms) = t.get::<Option<f64>>("timeout")? {
+                timeout = Some(millis(ms, "timeout")?);
+            }
+            if let Some(ms) = t.get::<Option<f64>>("every")? {
+                every = millis(ms, "every")?.max(Duration::from_micros(1));
+            }
+            what = t.get::<Option<String>>("what")?;
+        }
+        other => {
+            return Err(raise(Error::usage(format!(
+                "wait_until's second argument is {{timeout=ms, every=ms}} or a timeout, not a {}",
+                other.type_name()
+            ))))
+        }
+    }
+    let start = now(lua)?;
+    loop {
+        let v: Value = f.call(())?;
+        if truthy(&v) {
+            return Ok(v);
+        }
+        let waited = now(lua)? - start;
+        let step = match timeout {
+            Some(t) if waited >= t => {
+                let what = what.map(|w| format!(" ({w})")).unwrap_or_default();
+                return Err(raise(
+                    Error::new(ErrorKind::Timeout, format!("wait_until: condition{what} still false after {t:?}"))
+                        .hint("raise `timeout`, or check the condition with plcsh.exec/get"),
+                ));
+            }
+            Some(t) => every.min(t - waited),
+            None => every,
+        };
+        sleep(lua, step)?;
+    }
+}
+
+/// `plcsh.errinfo(e)`: the fields of an error caught with `pcall`.
+fn errinfo(lua: &Lua, e: Value) -> mlua::Result<Value> {
+    let t = lua.create_table()?;
+    match e {
+        Value::Error(err) => match facing(&err) {
+            Some(f) => {
+                let j = serde_json::to_value(&f.error).unwrap_or_default();
+                let t = json_to_lua(lua, &j)?;
+                if let (Value::Table(t), Some(c)) = (&t, &f.cmd) {
+                    t.set("cmd", c.as_str())?;
+                }
+                return Ok(t);
+            }
+            None => {
+                t.set("kind", "script")?;
+                t.set("message", err.to_string())?;
+            }
+        },
+        Value::Table(t) => return Ok(Value::Table(t)),
+        other => {
+            t.set("kind", "script")?;
+            t.set("message", lua.coerce_string(other)?.map(|s| s.to_string_lossy()).unwrap_or_default())?;
+        }
+    }
+    Ok(Value::Table(t))
+}
+
+/// A cell of `plcsh.table`.
+fn cell(lua: &Lua, v: &Value) -> mlua::Result<String> {
+    Ok(match v {
+        Value::Nil => String::new(),
+        Value::Table(_) => serde_json::to_string(&lua.from_value::<serde_json::Value>(v.clone())?).unwrap_or_default(),
+        Value::Number(n) if n.fract() == 0.0 && n.abs() < 1e15 => format!("{n:.1}"),
+        other => lua.coerce_string(other.clone())?.map(|s| s.to_string_lossy()).unwrap_or_else(|| format!("{other:?}")),
+    })
+}
+
+/// `plcsh.table(rows [, headers])`: rows are lists or keyed tables.
+fn table(lua: &Lua, (rows, headers): (Table, Option<Vec<String>>)) -> mlua::Result<()> {
+    let rows: Vec<Table> = rows.sequence_values::<Table>().collect::<mlua::Result<_>>()?;
+    let keyed = rows.first().is_some_and(|r| r.raw_len() == 0);
+    let headers = match headers {
+        Some(h) => h,
+        None if keyed => {
+            let mut keys: Vec<String> = Vec::new();
+            for r in &rows {
+                for p in r.pairs::<String, Value>() {
+                    let k = p?.0;
+                    if !keys.contains(&k) {
+                        keys.push(k);
+                    }
+                }
+            }
+            keys.sort();
+            keys
+        }
+        None => (1..=rows.iter().map(|r| r.raw_len()).max().unwrap_or(0)).map(|i| i.to_string()).collect(),
+    };
+    let mut cells = Vec::new();
+    for r in &rows {
+        let mut line = Vec::new();
+        for (i, h) in headers.iter().enumerate() {
+            let v: Value = if keyed { r.get(h.as_str())? } else { r.get(i + 1)? };
+            line.push(cell(lua, &v)?);
+        }
+        cells.push(line);
+    }
+    let hs: Vec<&str> = headers.iter().map(String::as_str).collect();
+    let json: Vec<Vec<String>> = cells.clone();
+    show(lua, &Outcome::new("table").table(&hs, cells).with("headers", &headers).with("rows", json))
+}
+
+/// Registers the `plcsh` table (device functions are added by `device::register`).
+pub fn register(lua: &Lua) -> mlua::Result<()> {
+    let p = lua.create_table()?;
+    p.set("exec", lua.create_function(|lua, line: String| exec_on(lua, None, &line))?)?;
+    p.set("sleep", lua.create_function(|lua, ms: f64| sleep(lua, millis(ms, "sleep")?))?)?;
+    p.set("now", lua.create_function(|lua, ()| Ok(now(lua)?.as_secs_f64() * 1000.0))?)?;
+    p.set("stepped", lua.create_function(|lua, ()| with_shell(lua, |sh| Ok(sh.session.clock.is_stepped())))?)?;
+    p.set("wait_until", lua.create_function(wait_until)?)?;
+    p.set("_interrupted", lua.create_function(|lua, ()| Ok(interrupt_flag(lua)?.load(Ordering::Relaxed)))?)?;
+    p.set("errinfo", lua.create_function(errinfo)?)?;
+    p.set("table", lua.create_function(table)?)?;
+    p.set("_write", lua.create_function(|lua, text: String| show(lua, &Outcome::new("print").text(text)))?)?;
+    lua.set_named_registry_value(ABORT_KEY, lua.create_table()?)?;
+    p.set(
+        "on_abort",
+        lua.create_function(|lua, f: Function| {
+            let list: Table = lua.named_registry_value(ABORT_KEY)?;
+            list.push(f)
+        })?,
+    )?;
+    let json = lua.create_table()?;
+    json.set(
+        "encode",
+        lua.create_function(|lua, (v, opts): (Value, Option<Table>)| {
+            let j: serde_json::Value = lua.from_value(v)?;
+            let pretty = opts.map(|o| o.get::<Option<bool>>("pretty")).transpose()?.flatten().unwrap_or(false);
+            let s = if pretty { serde_json::to_string_pretty(&j) } else { serde_json::to_string(&j) };
+            s.map_err(mlua::Error::external)
+        })?,
+    )?;
+    json.set(
+        "decode",
+        lua.create_function(|lua, s: String| {
+            let j: serde_json::Value =
+                serde_json::from_str(&s).map_err(|e| raise(Error::new(ErrorKind::Value, format!("not JSON: {e}"))))?;
+            json_to_lua(lua, &j)
+        })?,
+    )?;
+    p.set("json", json)?;
+    lua.globals().set("plcsh", p)?;
+    Ok(())
+}

@@ -1,0 +1,224 @@
+//! Lua automation (mlua, Lua 5.4): `plcsh run SCRIPT.lua`, and `lua …` / `:…` in the shell.
+//! Devices are Lua objects (`device.rs`), every shell helper is a method through one bridge
+//! (`bridge.rs`), the command language is `plcsh.exec` (`api.rs`).
+//!
+//! Ownership: the shell owns the session; while a chunk runs, the shell is moved into the Lua
+//! state's app data and moved back afterwards ([`Engine::with_shell`]), so Lua callbacks reach
+//! the session without locks or raw pointers and the Lua state can persist across REPL lines.
+//!
+//! Safety: Ctrl-C raises the session's interrupt flag (the cli registers it for SIGINT); a
+//! Lua hook checks it every [`HOOK_EVERY`] instructions, and every wait checks it too. A chunk
+//! that ends with an error or an interrupt runs its `plcsh.on_abort` handlers (last registered
+//! first) before the error is reported.
+
+mod api;
+mod bridge;
+mod device;
+pub mod error;
+mod paths;
+
+pub use bridge::{Bridge, BRIDGE};
+pub use error::Failure;
+
+use crate::core::{Error, ErrorKind};
+use crate::output::Outcome;
+use crate::session::Session;
+use crate::shell::{ScriptHook, Shell};
+use mlua::{HookTriggers, Lua, MultiValue, Table, Value, VmState};
+use std::io::Write;
+use std::path::Path;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
+
+/// Lua instructions between two checks of the interrupt flag.
+pub const HOOK_EVERY: u32 = 1000;
+
+/// The Lua modules, registered in this order (the design's "one explicit list").
+const MODULES: &[fn(&Lua) -> mlua::Result<()>] = &[api::register, device::register, paths::register];
+
+/// A Lua state wired to plcsh.
+pub struct Engine {
+    lua: Lua,
+}
+
+impl Engine {
+    /// A Lua state whose `print` writes to `out`, interrupted by `interrupt`.
+    pub fn new(interrupt: Arc<AtomicBool>, out: Box<dyn Write + Send>) -> mlua::Result<Engine> {
+        let lua = Lua::new();
+        for register in MODULES {
+            register(&lua)?;
+        }
+        lua.load(include_str!("prelude.lua")).set_name("=plcsh").exec()?;
+        lua.set_app_data(api::Sink(out));
+        lua.set_hook(HookTriggers::new().every_nth_instruction(HOOK_EVERY), move |_, _| {
+            if interrupt.load(Ordering::Relaxed) {
+                Err(error::raise(api::interrupted_error()))
+            } else {
+                Ok(VmState::Continue)
+            }
+        })?;
+        Ok(Engine { lua })
+    }
+
+    /// An engine for `shell`, printing to stdout.
+    pub fn for_shell(shell: &Shell) -> mlua::Result<Engine> {
+        Engine::new(shell.session.interrupt.clone(), Box::new(std::io::stdout()))
+    }
+
+    pub fn lua(&self) -> &Lua {
+        &self.lua
+    }
+
+    /// Runs `f` with `shell` moved into the Lua state (see the module doc).
+    pub fn with_shell<R>(&self, shell: &mut Shell, f: impl FnOnce(&Lua) -> R) -> R {
+        let placeholder = Shell::new(Session::new(shell.session.clock.clone()), shell.style);
+        let owned = std::mem::replace(shell, placeholder);
+        self.lua.set_app_data(owned);
+        let r = f(&self.lua);
+        *shell = self.lua.remove_app_data::<Shell>().expect("the shell is back");
+        r
+    }
+
+    /// Calls `f`; on an error or Ctrl-C runs the abort handlers. The handler list is
+    /// emptied either way: handlers belong to one run.
+    fn protected(&self, f: mlua::Function, args: MultiValue) -> Result<MultiValue, Failure> {
+        let r = f.call::<MultiValue>(args);
+        let handlers: Table = self.lua.named_registry_value(api::ABORT_KEY).expect("abort list");
+        let _ = self.lua.set_named_registry_value(api::ABORT_KEY, self.lua.create_table().expect("table"));
+        let stop = api::interrupt_flag(&self.lua).ok();
+        match r {
+            Ok(v) => Ok(v),
+            Err(e) => {
+                let mut failure = error::failure(&e);
+                if stop.as_ref().is_some_and(|s| s.load(Ordering::Relaxed)) {
+                    failure.error.kind = ErrorKind::Interrupted;
+                }
+                self.run_abort_handlers(&handlers, &failure, stop.as_deref());
+                // Leave the flag as the run ended: a piped shell stops after an interrupted
+                // line, as it does after an interrupted command (the next command clears it).
+                if let Some(s) = &stop {
+                    s.store(failure.interrupted(), Ordering::Relaxed);
+                }
+                Err(failure)
+            }
+        }
+    }
+
+    /// Runs the handlers, last registered first; each may be interrupted by its own Ctrl-C.
+    fn run_abort_handlers(&self, handlers: &Table, why: &Failure, stop: Option<&AtomicBool>) {
+        let list: Vec<mlua::Function> = handlers.sequence_values().filter_map(|f| f.ok()).collect();
+        if list.is_empty() {
+            return;
+        }
+        let reason = if why.interrupted() { "interrupted" } else { "failed" };
+        let _ = api::show(
+            &self.lua,
+            &Outcome::new("abort")
+                .text(format!("script {reason}: running {} on_abort handler(s)", list.len()))
+                .with("handlers", list.len()),
+        );
+        for f in list.iter().rev() {
+            if let Some(s) = stop {
+                s.store(false, Ordering::Relaxed);
+            }
+            if let Err(e) = f.call::<()>(reason) {
+                let fail = error::failure(&e);
+                let _ = api::show(&self.lua, &Outcome::new("abort").text(format!("on_abort handler {}", fail.human())));
+            }
+        }
+    }
+
+    /// Runs a script file with `args` (in `arg` and `...`, as the standalone `lua` does).
+    pub fn run_file(&self, shell: &mut Shell, path: &Path, args: &[String]) -> Result<(), Failure> {
+        let code = std::fs::read(path).map_err(|e| Failure {
+            error: Error::io(format!("cannot read {}: {e}", path.display())),
+            location: None,
+            traceback: None,
+        })?;
+        self.with_shell(shell, |lua| {
+            let setup = || -> mlua::Result<(mlua::Function, MultiValue)> {
+                device::refresh_globals(lua)?;
+                paths::add_script_dir(lua, path)?;
+                let arg = lua.create_table()?;
+                arg.raw_set(-1, std::env::args().next().unwrap_or_else(|| "plcsh".into()))?;
+                arg.raw_set(0, path.display().to_string())?;
+                for (i, a) in args.iter().enumerate() {
+                    arg.raw_set(i + 1, a.as_str())?;
+                }
+                lua.globals().set("arg", arg)?;
+                let f = lua.load(&code[..]).set_name(format!("@{}", path.display())).into_function()?;
+                let va = args.iter().map(|a| lua.create_string(a).map(Value::String)).collect::<mlua::Result<_>>()?;
+                Ok((f, va))
+            };
+            let (f, va) = setup().map_err(|e| error::failure(&e))?;
+            self.protected(f, va).map(|_| ())
+        })
+    }
+
+    /// Runs one chunk typed in the shell; an expression's values are shown, as `lua` does.
+    pub fn run_chunk(&self, shell: &mut Shell, code: &str) -> Result<Outcome, Failure> {
+        self.with_shell(shell, |lua| {
+            device::refresh_globals(lua).map_err(|e| error::failure(&e))?;
+            let f = match lua.load(format!("return {code}")).set_name("=lua").into_function() {
+                Ok(f) => f,
+                Err(_) => lua.load(code).set_name("=lua").into_function().map_err(|e| error::failure(&e))?,
+            };
+            let values = self.protected(f, MultiValue::new())?;
+            if values.is_empty() {
+                return Ok(Outcome::new("lua").quiet());
+            }
+            let tostring: mlua::Function = lua.globals().get("tostring").map_err(|e| error::failure(&e))?;
+            let mut shown = Vec::new();
+            let mut json = Vec::new();
+            for v in &values {
+                shown.push(tostring.call::<String>(v.clone()).unwrap_or_else(|_| format!("{v:?}")));
+                json.push(mlua::LuaSerdeExt::from_value::<serde_json::Value>(lua, v.clone()).unwrap_or_default());
+            }
+            Ok(Outcome::new("lua").text(shown.join("\t")).with("results", json))
+        })
+    }
+
+    /// True when `code` is an unfinished chunk (as the standalone `lua` decides: the
+    /// statement does not compile and the error is at `<eof>`).
+    pub fn incomplete(&self, code: &str) -> bool {
+        if self.lua.load(format!("return {code}")).into_function().is_ok() {
+            return false;
+        }
+        matches!(self.lua.load(code).into_function(), Err(mlua::Error::SyntaxError { incomplete_input: true, .. }))
+    }
+}
+
+/// The shell's `lua` hook: one Lua state, created on first use, persisting across lines.
+struct Hook {
+    engine: Option<Engine>,
+    interrupt: Arc<AtomicBool>,
+}
+
+impl Hook {
+    fn engine(&mut self) -> crate::core::Result<&Engine> {
+        if self.engine.is_none() {
+            let e = Engine::new(self.interrupt.clone(), Box::new(std::io::stdout()))
+                .map_err(|e| Error::new(ErrorKind::Script, format!("cannot start Lua: {e}")))?;
+            self.engine = Some(e);
+        }
+        Ok(self.engine.as_ref().expect("engine"))
+    }
+}
+
+impl ScriptHook for Hook {
+    fn run(&mut self, shell: &mut Shell, code: &str) -> crate::core::Result<Outcome> {
+        self.engine()?.run_chunk(shell, code).map_err(Failure::into_shell_error)
+    }
+
+    fn incomplete(&mut self, code: &str) -> bool {
+        self.engine().is_ok_and(|e| e.incomplete(code))
+    }
+}
+
+/// Installs Lua into the shell (`lua …`, `:…`, `lua` … `end`).
+pub fn install(shell: &mut Shell) {
+    shell.script = Some(Box::new(Hook { engine: None, interrupt: shell.session.interrupt.clone() }));
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,99 @@
+-- The parts of the plcsh Lua API that read best in Lua: print through the shell's output,
+-- checks that make scripts double as tests, and small conveniences over plcsh.exec.
+-- Loaded once per Lua state, after the Rust modules (src/script/mod.rs).
+
+local plcsh = plcsh
+local write, select, tostring, type, error = plcsh._write, select, tostring, type, error
+
+-- Ctrl-C must reach the top even through pcall: a protected call that failed while the
+-- script is being interrupted re-raises (the hook would otherwise be caught forever).
+local rawpcall, rawxpcall, rawresume, stopping = pcall, xpcall, coroutine.resume, plcsh._interrupted
+local function pass(ok, ...)
+  if not ok and stopping() then error((...), 0) end
+  return ok, ...
+end
+function pcall(f, ...) return pass(rawpcall(f, ...)) end
+function xpcall(f, handler, ...) return pass(rawxpcall(f, handler, ...)) end
+function coroutine.resume(co, ...) return pass(rawresume(co, ...)) end
+
+-- print goes through the shell's output (a JSON line under --json).
+function print(...)
+  local n = select("#", ...)
+  local parts = {}
+  for i = 1, n do
+    parts[i] = tostring((select(i, ...)))
+  end
+  write(table.concat(parts, "\t"))
+end
+
+local function show(v, depth)
+  depth = depth or 0
+  if type(v) == "string" then
+    return string.format("%q", v)
+  elseif type(v) ~= "table" or depth > 3 then
+    return tostring(v)
+  end
+  local keys = {}
+  for k in pairs(v) do keys[#keys + 1] = k end
+  table.sort(keys, function(a, b) return tostring(a) < tostring(b) end)
+  local parts = {}
+  for _, k in ipairs(keys) do
+    parts[#parts + 1] = (type(k) == "number" and "" or (tostring(k) .. "=")) .. show(v[k], depth + 1)
+  end
+  return "{" .. table.concat(parts, ", ") .. "}"
+end
+plcsh.show = show
+
+local function equal(a, b)
+  if a == b then return true end
+  if type(a) == "number" and type(b) == "number" then return a == b end
+  if type(a) ~= "table" or type(b) ~= "table" then return false end
+  for k, v in pairs(a) do
+    if not equal(v, b[k]) then return false end
+  end
+  for k in pairs(b) do
+    if a[k] == nil then return false end
+  end
+  return true
+end
+
+plcsh.checks = 0
+
+local function fail(what, msg, detail)
+  local text = what .. " failed" .. (msg and (": " .. tostring(msg)) or "")
+  if detail then text = text .. "\n" .. detail end
+  error(text, 3)
+end
+
+-- plcsh.assert_eq(actual, expected, msg): deep equality; the error shows both values.
+function plcsh.assert_eq(actual, expected, msg)
+  plcsh.checks = plcsh.checks + 1
+  if not equal(actual, expected) then
+    fail("assert_eq", msg, "  actual:   " .. show(actual) .. "\n  expected: " .. show(expected))
+  end
+  return actual
+end
+
+-- plcsh.assert_near(actual, expected, tolerance, msg): |actual - expected| <= tolerance.
+function plcsh.assert_near(actual, expected, tolerance, msg)
+  plcsh.checks = plcsh.checks + 1
+  if type(actual) ~= "number" or math.abs(actual - expected) > tolerance then
+    fail("assert_near", msg, "  actual:   " .. show(actual) .. "\n  expected: " .. show(expected)
+      .. " ± " .. tostring(tolerance))
+  end
+  return actual
+end
+
+-- plcsh.check(condition, msg): like assert, counted, reported at the caller's line.
+function plcsh.check(cond, msg, ...)
+  plcsh.checks = plcsh.checks + 1
+  if not cond then
+    fail("check", msg, select("#", ...) > 0 and ("  values: " .. show({...})) or nil)
+  end
+  return cond
+end
+
+-- plcsh.devices(): the open devices ({name, family, model, url, simulated, current}).
+function plcsh.devices()
+  return plcsh.exec("devices").devices
+end

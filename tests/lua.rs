@@ -1,0 +1,165 @@
+//! Lua through the real binary: `plcsh run`, exit status, file:line on errors, Ctrl-C
+//! running the abort handlers, the REPL's `lua`, `:` and block forms (issue 7).
+
+mod common;
+use common::*;
+use std::io::{BufRead, BufReader, Write};
+use std::path::PathBuf;
+use std::process::Stdio;
+
+/// Writes a script into a fresh directory and returns its path.
+fn script(name: &str, code: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("plcsh-lua-test-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = dir.join(name);
+    std::fs::write(&p, code).unwrap();
+    p
+}
+
+#[test]
+fn run_passes_arguments_and_exits_zero() {
+    let p = script("args.lua", "print(arg[0]:match('args.lua$') ~= nil, arg[1], arg[2], select('#', ...))\n");
+    let o = run(&["run", p.to_str().unwrap(), "one", "--two"], "");
+    assert!(o.status.success(), "{}", stdout(&o));
+    assert_eq!(stdout(&o), "true\tone\t--two\t2\n");
+}
+
+#[test]
+fn a_runtime_error_reports_file_and_line_and_exits_1() {
+    let p = script("boom.lua", "local plc = plcsh.device('plc')\nplc.VW0 = 1\nlocal t = nil\nprint(t.x)\n");
+    let o = run(&["run", p.to_str().unwrap()], "");
+    assert_eq!(o.status.code(), Some(1));
+    let s = stdout(&o);
+    let loc = format!("{}:4:", p.display());
+    assert!(s.contains(&format!("error[script]: {loc} attempt to index a nil value")), "{s}");
+    assert!(s.contains("stack traceback:") && s.contains("in main chunk"), "{s}");
+}
+
+#[test]
+fn a_device_error_keeps_kind_device_operand_and_line_in_json() {
+    let p = script("range.lua", "plc.VW0 = 1\n\nplc.VB2 = 300\n");
+    let o = run(&["--json", "run", p.to_str().unwrap()], "");
+    assert_eq!(o.status.code(), Some(1));
+    let l = json_lines(&o);
+    let e = &l[0]["error"];
+    assert_eq!(l[0]["cmd"], "run");
+    assert_eq!(e["kind"], "value");
+    assert_eq!(e["device"], "plc");
+    assert_eq!(e["operand"], "VB2");
+    assert_eq!(e["where"], format!("{}:3", p.display()));
+    assert!(e["traceback"].as_str().unwrap().contains("main chunk"));
+}
+
+#[test]
+fn a_syntax_error_names_the_line() {
+    let p = script("syntax.lua", "x = 1\ny = = 2\n");
+    let o = run(&["run", p.to_str().unwrap()], "");
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stdout(&o).contains(&format!("error[syntax]: {}:2:", p.display())), "{}", stdout(&o));
+}
+
+#[test]
+fn device_flags_and_stepped_time_apply_to_scripts() {
+    let p = script(
+        "flags.lua",
+        "big.VW16000 = 3\nplcsh.sleep(600000)\nprint(plcsh.stepped(), plcsh.now(), big.VW16000, big:info().model)\n",
+    );
+    let o = run(&["--time", "stepped", "--device", "big=sim:K209M-56DT", "run", p.to_str().unwrap()], "");
+    assert!(o.status.success(), "{}", stdout(&o));
+    assert_eq!(stdout(&o), "true\t600000.0\t3\tK209M-56DT\n");
+}
+
+#[test]
+fn ctrl_c_during_wait_until_runs_the_abort_handlers_and_exits_non_zero() {
+    let marker = std::env::temp_dir().join(format!("plcsh-abort-marker-{}", std::process::id()));
+    let _ = std::fs::remove_file(&marker);
+    let p = script(
+        "forever.lua",
+        &format!(
+            "plcsh.on_abort(function(why)\n  plc.VW0 = 99\n  local f = io.open({:?}, 'w'); f:write(why, ' ', plc.VW0); f:close()\n  print('ABORT HANDLER ' .. why)\nend)\nprint('READY')\nplcsh.wait_until(function() return false end)\nprint('NOT REACHED')\n",
+            marker.to_str().unwrap()
+        ),
+    );
+    let mut child = plcsh()
+        .args(["run", p.to_str().unwrap()])
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut lines = BufReader::new(child.stdout.take().unwrap()).lines();
+    // Readiness: the script is about to wait.
+    let first = lines.next().unwrap().unwrap();
+    assert_eq!(first, "READY");
+    nix::sys::signal::kill(nix::unistd::Pid::from_raw(child.id() as i32), nix::sys::signal::Signal::SIGINT).unwrap();
+    let rest: Vec<String> = lines.map(|l| l.unwrap()).collect();
+    let status = child.wait().unwrap();
+    assert_eq!(status.code(), Some(130), "{rest:?}");
+    let text = rest.join("\n");
+    assert!(text.contains("ABORT HANDLER interrupted"), "{text}");
+    assert!(text.contains("error[interrupted]"), "{text}");
+    assert!(!text.contains("NOT REACHED"), "{text}");
+    assert_eq!(std::fs::read_to_string(&marker).unwrap(), "interrupted 99");
+    let _ = std::fs::remove_file(&marker);
+}
+
+#[test]
+fn repl_lua_forms_share_one_state() {
+    let input = "lua x = 20; y = 22\n:x + y\nlua\nfor i = 1, 2 do\n  print('line ' .. i)\nend\nend\n:function twice(v)\n  return v * 2\nend\n:twice(plc.VW0 + 4)\nset VW0=1; get VW0\n";
+    let o = run(&[], input);
+    assert!(o.status.success(), "{}", stdout(&o));
+    assert_eq!(stdout(&o), "42\nline 1\nline 2\n8\nVW0  1\n");
+}
+
+#[test]
+fn repl_lua_in_json_mode() {
+    let o =
+        run(&["--json", "-c", ":plc.VW0 = 7; print('hi'); return plc.VW0, plcsh.exec('get VW0').values[1].value"], "");
+    assert!(o.status.success(), "{}", stdout(&o));
+    let l = json_lines(&o);
+    assert_eq!(l[0], serde_json::json!({"ok": true, "cmd": "print", "message": "hi"}));
+    assert_eq!(l[1]["results"], serde_json::json!([7, 7]));
+    let o = run(&["--json", "-c", "lua plc.VB0 = 300"], "");
+    assert_eq!(o.status.code(), Some(1));
+    let l = json_lines(&o);
+    assert_eq!(l[0]["error"]["operand"], "VB0");
+}
+
+#[test]
+fn require_finds_the_project_lib() {
+    let p = script("req.lua", "local c = require('commission')\nprint(type(c.new))\n");
+    let o = run(&["run", p.to_str().unwrap()], "");
+    assert!(o.status.success(), "{}", stdout(&o));
+    assert_eq!(stdout(&o), "function\n");
+    // PLCSH_LIB comes first.
+    let dir = p.parent().unwrap().join("mylib");
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("commission.lua"), "return {new = 'mine'}\n").unwrap();
+    let mut cmd = plcsh();
+    cmd.env("PLCSH_LIB", &dir).args(["run", p.to_str().unwrap()]);
+    let o = cmd.output().unwrap();
+    assert_eq!(stdout(&o), "string\n");
+}
+
+#[test]
+fn a_failed_checklist_step_fails_the_script() {
+    let p = script(
+        "check.lua",
+        "local c = require('commission').new('demo')\nc:step('ok', function() end)\nc:step('bad', function() plcsh.assert_eq(plc.VW0, 5, 'VW0') end)\nc:step('later', function() end)\nc:run()\n",
+    );
+    let o = run(&["run", p.to_str().unwrap()], "");
+    assert_eq!(o.status.code(), Some(1));
+    let s = stdout(&o);
+    assert!(s.contains("[x] 1. ok"), "{s}");
+    assert!(s.contains("[ ] 2. bad — FAILED") && s.contains("actual:   0"), "{s}");
+    assert!(s.contains("[-] 3. later (skipped)"), "{s}");
+    assert!(s.contains(&format!("{}:5: demo: 1 step(s) failed", p.display())), "{s}");
+}
+
+#[test]
+fn stdin_closes_cleanly_after_an_unfinished_block() {
+    let mut child = plcsh().stdin(Stdio::piped()).stdout(Stdio::piped()).spawn().unwrap();
+    child.stdin.take().unwrap().write_all(b"lua\nprint(1)\n").unwrap();
+    let o = child.wait_with_output().unwrap();
+    assert_eq!(String::from_utf8_lossy(&o.stdout), "1\n");
+}
