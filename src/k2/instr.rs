@@ -220,6 +220,28 @@ impl RtcTime {
             self.weekday(),
         ]
     }
+
+    /// Reads the 8-byte BCD buffer of [`RtcTime::to_bcd8`] (years 00–99 are 2000–2099),
+    /// checking every digit and the date.
+    pub fn from_bcd8(b: &[u8; 8]) -> Result<RtcTime, String> {
+        let d = |v: u8| -> Result<u8, String> {
+            if v >> 4 > 9 || v & 0xF > 9 {
+                Err(format!("16#{v:02X} is not a BCD byte"))
+            } else {
+                Ok((v >> 4) * 10 + (v & 0xF))
+            }
+        };
+        let t = RtcTime {
+            year: 2000 + d(b[0])? as u16,
+            month: d(b[1])?,
+            day: d(b[2])?,
+            hour: d(b[3])?,
+            minute: d(b[4])?,
+            second: d(b[5])?,
+        };
+        t.validate()?;
+        Ok(t)
+    }
 }
 
 impl fmt::Display for RtcTime {

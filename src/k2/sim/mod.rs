@@ -8,6 +8,7 @@
 //! log ([`events`]) and the real-time clock ([`rtc`]). The backup area and retained ranges
 //! persist through [`state`]. The Modbus server (`plcsh sim serve`) serves this same type.
 
+pub mod agent;
 pub mod events;
 pub mod hsc;
 pub mod inputs;
@@ -54,6 +55,8 @@ pub struct K2Sim {
     pub events: EventLog,
     pub rtc: Rtc,
     pub backup: Backup,
+    /// The PLC-side helper program, when served with `--agent` (issue 5).
+    pub agent: Option<agent::Agent>,
 }
 
 impl K2Sim {
@@ -75,6 +78,7 @@ impl K2Sim {
             events: EventLog::default(),
             rtc: Rtc::new(instr::host_local_now(), start),
             backup: Backup { since: start, ..Backup::default() },
+            agent: None,
         };
         sim.refresh_system_bits(start);
         sim
@@ -121,6 +125,7 @@ impl K2Sim {
         }
         self.last = now;
         self.refresh_system_bits(now);
+        self.agent_scans(now);
     }
 
     /// Writes the sources' current levels into the input image.
