@@ -38,7 +38,7 @@ impl K2Sim {
     /// Installs the helper with its mailbox at VB`base` (even, inside V).
     pub fn enable_agent(&mut self, base: u32) -> Result<(), String> {
         let end = base + crate::k2::agent::il::TOTAL_SIZE;
-        if base % 2 != 0 || end > self.mem.v.len() as u32 {
+        if !base.is_multiple_of(2) || end > self.mem.v.len() as u32 {
             return Err(format!(
                 "the helper's mailbox needs an even V address with {} bytes free up to VB{} (got VB{base})",
                 crate::k2::agent::il::TOTAL_SIZE,
