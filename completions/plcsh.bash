@@ -16,6 +16,9 @@ _plcsh() {
             ",$1")
                 cmd="plcsh"
                 ;;
+            plcsh,agent)
+                cmd="plcsh__subcmd__agent"
+                ;;
             plcsh,completions)
                 cmd="plcsh__subcmd__completions"
                 ;;
@@ -34,6 +37,21 @@ _plcsh() {
             plcsh,sim)
                 cmd="plcsh__subcmd__sim"
                 ;;
+            plcsh__subcmd__agent,help)
+                cmd="plcsh__subcmd__agent__subcmd__help"
+                ;;
+            plcsh__subcmd__agent,il)
+                cmd="plcsh__subcmd__agent__subcmd__il"
+                ;;
+            plcsh__subcmd__agent__subcmd__help,help)
+                cmd="plcsh__subcmd__agent__subcmd__help__subcmd__help"
+                ;;
+            plcsh__subcmd__agent__subcmd__help,il)
+                cmd="plcsh__subcmd__agent__subcmd__help__subcmd__il"
+                ;;
+            plcsh__subcmd__help,agent)
+                cmd="plcsh__subcmd__help__subcmd__agent"
+                ;;
             plcsh__subcmd__help,completions)
                 cmd="plcsh__subcmd__help__subcmd__completions"
                 ;;
@@ -51,6 +69,9 @@ _plcsh() {
                 ;;
             plcsh__subcmd__help,sim)
                 cmd="plcsh__subcmd__help__subcmd__sim"
+                ;;
+            plcsh__subcmd__help__subcmd__agent,il)
+                cmd="plcsh__subcmd__help__subcmd__agent__subcmd__il"
                 ;;
             plcsh__subcmd__help__subcmd__sim,serve)
                 cmd="plcsh__subcmd__help__subcmd__sim__subcmd__serve"
@@ -74,7 +95,7 @@ _plcsh() {
 
     case "${cmd}" in
         plcsh)
-            opts="-c -v -d -h -V --command --json --verbose --model --device --time --config --state --help --version models devices completions sim run help"
+            opts="-c -v -d -h -V --command --json --verbose --model --device --time --config --state --help --version models devices completions sim agent run help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -85,6 +106,128 @@ _plcsh() {
                     return 0
                     ;;
                 -c)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --model)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --device)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --time)
+                    COMPREPLY=($(compgen -W "wall stepped" -- "${cur}"))
+                    return 0
+                    ;;
+                --config)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --state)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        plcsh__subcmd__agent)
+            opts="-v -d -h --json --verbose --model --device --time --config --state --help il help"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --model)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --device)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --time)
+                    COMPREPLY=($(compgen -W "wall stepped" -- "${cur}"))
+                    return 0
+                    ;;
+                --config)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --state)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        plcsh__subcmd__agent__subcmd__help)
+            opts="il help"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        plcsh__subcmd__agent__subcmd__help__subcmd__help)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        plcsh__subcmd__agent__subcmd__help__subcmd__il)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        plcsh__subcmd__agent__subcmd__il)
+            opts="-v -d -h --base --json --verbose --model --device --time --config --state --help"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --base)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -200,8 +343,36 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__help)
-            opts="models devices completions sim run help"
+            opts="models devices completions sim agent run help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        plcsh__subcmd__help__subcmd__agent)
+            opts="il"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        plcsh__subcmd__help__subcmd__agent__subcmd__il)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
             fi

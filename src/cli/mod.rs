@@ -3,6 +3,7 @@
 //! Exit status: 0 when every command succeeded, 1 when any failed, 2 for a usage error.
 //! One file per subcommand (`models.rs` …), each a thin call into the library.
 
+mod agent;
 pub mod completions;
 mod models;
 mod run;
@@ -76,6 +77,8 @@ pub enum Sub {
         #[command(subcommand)]
         cmd: SimCmd,
     },
+    /// The PLC-side helper program that gives plcsh SM registers and instructions on a real K2.
+    Agent(agent::AgentArgs),
     /// Run a Lua script: plcsh [--time stepped] [--device NAME=URL] run SCRIPT.lua [ARGS…]
     Run(run::RunArgs),
 }
@@ -176,6 +179,7 @@ pub fn main() -> i32 {
             Sub::Completions { shell, write } => completions::run(*shell, write.as_deref(), &mut out),
             Sub::Devices => i32::from(!shell.run_line("devices", &mut out)),
             Sub::Sim { cmd: SimCmd::Serve(a) } => serve::run(a),
+            Sub::Agent(a) => agent::run(a, &mut out),
             Sub::Run(args) => run::main(&mut shell, args, style),
         };
     }
