@@ -27,7 +27,7 @@ pub fn parse_base(text: &str) -> Result<u32, String> {
         .trim_start_matches("VB")
         .parse()
         .map_err(|_| format!("`{text}` is not a V byte address (e.g. VB{})", protocol::DEFAULT_BASE))?;
-    if n % 2 != 0 || n + il::TOTAL_SIZE > crate::k2::catalog::EEPROM_FIRST {
+    if !n.is_multiple_of(2) || n + il::TOTAL_SIZE > crate::k2::catalog::EEPROM_FIRST {
         return Err(format!(
             "the mailbox needs an even address with {} bytes free below the E2PROM area VB{} (got VB{n})",
             il::TOTAL_SIZE,
