@@ -4,11 +4,12 @@
 -- Run: plcsh --time stepped run scripts/hsc_quadrature_multi_pv.lua
 
 local plc = plcsh.device("plc")
-plcsh.on_abort(function() plc:sim_off("I0.1") end)
+-- On an error or Ctrl-C, stop the signal (pcall: it may already be off).
+plcsh.on_abort(function() pcall(plc.sim_off, plc, "I0.1") end)
 
 local FREQ_HZ = 1000
 local COUNTS_PER_S = 4 * FREQ_HZ -- quadrature counted 4x
-local US_PER_COUNT = 1e6 // COUNTS_PER_S
+local US_PER_COUNT = 1000000 // COUNTS_PER_S
 
 -- Virtual time in whole µs (plcsh.now() is in ms), as the event log stamps it.
 local function now_us() return math.floor(plcsh.now() * 1000 + 0.5) end
@@ -45,7 +46,7 @@ local want = {
 plcsh.assert_eq(#log, #want, "five CV = PV events up to CV 3200")
 -- The simulated A signal starts low: the first count comes one period after the source
 -- starts, then one count every quarter period.
-local first_us = t0 + 1e6 // FREQ_HZ
+local first_us = t0 + 1000000 // FREQ_HZ
 for i, w in ipairs(want) do
   local e = log[i]
   plcsh.assert_eq({ e.number, e.pv, e.kind }, { w.number, w.pv, "hsc_cv_eq_pv" }, "event " .. i)

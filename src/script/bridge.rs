@@ -348,17 +348,26 @@ mod tests {
         assert_eq!(render_lua("pto", "0, {freq=2000, count=1000}").unwrap(), "pto 0 count=1000 freq=2000");
         assert_eq!(render_lua("pto", "0, {cycle=500, count=1000}").unwrap(), "pto 0 count=1000 cycle=500us");
         assert_eq!(render_lua("pto", "0, {cycle='1ms', count=10}").unwrap(), "pto 0 count=10 cycle=1ms");
-        assert_eq!(render_lua("pwm", "0, {cycle=1000, width=250}, 'async'").unwrap(), "pwm 0 cycle=1000us width=250us async");
+        assert_eq!(
+            render_lua("pwm", "0, {cycle=1000, width=250}, 'async'").unwrap(),
+            "pwm 0 cycle=1000us width=250us async"
+        );
         assert_eq!(render_lua("move_abs", "10000, {rpm=300}").unwrap(), "servo move abs 10000 speed=300rpm");
-        assert_eq!(render_lua("move_rel", "-5, {speed='10rpm', acc='100rps/s'}").unwrap(), "servo move rel -5 acc=100rps/s speed=10rpm");
+        assert_eq!(
+            render_lua("move_rel", "-5, {speed='10rpm', acc='100rps/s'}").unwrap(),
+            "servo move rel -5 acc=100rps/s speed=10rpm"
+        );
         assert_eq!(render_lua("jog", "{rpm=-50}").unwrap(), "servo jog -50rpm");
         assert_eq!(render_lua("jog", "'100rpm'").unwrap(), "servo jog 100rpm");
         assert_eq!(render_lua("enable", "").unwrap(), "servo enable");
         assert_eq!(render_lua("fault_reset", "").unwrap(), "servo fault-reset");
         assert_eq!(render_lua("home", "{method=35}").unwrap(), "servo home method=35");
         assert_eq!(
-            render_lua("profile", "0, 'VB3000', {{cycle='500us', count=1000}, {cycle=250, count=2000}, {freq=4000, count=9}}")
-                .unwrap(),
+            render_lua(
+                "profile",
+                "0, 'VB3000', {{cycle='500us', count=1000}, {cycle=250, count=2000}, {freq=4000, count=9}}"
+            )
+            .unwrap(),
             "profile 0 at VB3000 [(count=1000, cycle=500us), (count=2000, cycle=250us), (count=9, freq=4000)]"
         );
         assert_eq!(
@@ -377,7 +386,10 @@ mod tests {
         assert_eq!(render_lua("wait_target", "1500").unwrap(), "servo wait target timeout=1500ms");
         assert_eq!(render_lua("events", "{keep=true}").unwrap(), "events keep");
         assert_eq!(render_lua("eeprom_dump", "'my backup.bin'").unwrap(), "eeprom dump \"my backup.bin\"");
-        assert_eq!(render_lua("sim_quad", "'I0.1', 'I0.0', {freq='1kHz', dir='up'}").unwrap(), "sim quad I0.1 I0.0 dir=up freq=1kHz");
+        assert_eq!(
+            render_lua("sim_quad", "'I0.1', 'I0.0', {freq='1kHz', dir='up'}").unwrap(),
+            "sim quad I0.1 I0.0 dir=up freq=1kHz"
+        );
         assert_eq!(render_lua("sim_off", "'I0.1'").unwrap(), "sim input I0.1 off");
         assert_eq!(render_lua("pto", "0, {freq=2000.0}").unwrap(), "pto 0 freq=2000");
         assert_eq!(render_lua("cmd", "'get VW0'").unwrap(), "get VW0");
