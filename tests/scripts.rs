@@ -1,23 +1,12 @@
 //! Every `scripts/*.lua` runs with the real binary against the default simulator in stepped
 //! time and must exit 0: the scripts assert their own outcomes (issue 7, "what it must show").
+//! A script whose expectation is made wrong must fail with exit status 1, naming the line.
 
 mod common;
 use common::*;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
-/// TEMPORARY: scripts that need commands from other branches (K2 pulse/counter/RTC/E2PROM
-/// helpers, the servo drive). The integrator empties this list after the merge.
-const NOT_RUNNABLE_UNTIL_MERGE: &[&str] = &[
-    "pto_single_segment.lua",
-    "pto_profile_ramp.lua",
-    "hsc_quadrature_multi_pv.lua",
-    "servo_move.lua",
-    "eeprom_backup.lua",
-    "rtc_from_host.lua",
-    "k2_and_servo.lua",
-];
-
-fn scripts() -> Vec<std::path::PathBuf> {
+fn scripts() -> Vec<PathBuf> {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scripts");
     let mut v: Vec<_> = std::fs::read_dir(&dir)
         .expect("scripts/")
@@ -28,33 +17,67 @@ fn scripts() -> Vec<std::path::PathBuf> {
     v
 }
 
+fn run_script(path: &Path) -> std::process::Output {
+    run(&["--time", "stepped", "run", path.to_str().unwrap()], "")
+}
+
 #[test]
 fn every_script_runs_and_passes_its_checks() {
     let all = scripts();
     assert!(all.len() >= 10, "the issue's example scripts are all there");
-    let mut ran = 0;
+    let mut failed = Vec::new();
     for path in &all {
         let name = path.file_name().unwrap().to_str().unwrap();
-        if NOT_RUNNABLE_UNTIL_MERGE.contains(&name) {
-            continue;
+        let o = run_script(path);
+        if !o.status.success() {
+            failed.push(format!("{name} ({:?}):\n{}\n{}", o.status, stdout(&o), String::from_utf8_lossy(&o.stderr)));
         }
-        let o = run(&["--time", "stepped", "run", path.to_str().unwrap()], "");
-        assert!(
-            o.status.success(),
-            "{name} failed ({:?}):\n{}\n{}",
-            o.status,
-            stdout(&o),
-            String::from_utf8_lossy(&o.stderr)
-        );
-        ran += 1;
     }
-    assert!(ran >= 3, "at least the scripts runnable on this branch ran");
+    assert!(failed.is_empty(), "{} script(s) failed:\n{}", failed.len(), failed.join("\n"));
+}
+
+/// The scripts' checks can fail: a copy of `name` with `from` replaced by `to` exits 1 and
+/// reports the failed check at the line holding `at` (`from`'s line when `at` is empty).
+fn fails_when_changed(name: &str, from: &str, to: &str, at: &str, expect: &str) {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("scripts").join(name);
+    let code = std::fs::read_to_string(&src).unwrap();
+    assert!(code.contains(from), "{name} no longer contains `{from}`");
+    let at = if at.is_empty() { from } else { at };
+    let line = code[..code.find(at).expect("`at` is in the script")].matches('\n').count() + 1;
+    let dir = std::env::temp_dir().join(format!("plcsh-scripts-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = dir.join(name);
+    std::fs::write(&p, code.replacen(from, to, 1)).unwrap();
+    // `require` finds lib/ through the project path, not the script's directory.
+    let o = run_script(&p);
+    let out = stdout(&o);
+    assert_eq!(o.status.code(), Some(1), "{name} with `{to}` must fail:\n{out}");
+    assert!(out.contains(&format!("{}:{line}:", p.display())), "{name}: the failing line {line} is named:\n{out}");
+    assert!(out.contains(expect), "{name}: `{expect}` in:\n{out}");
 }
 
 #[test]
-fn the_skip_list_names_only_existing_scripts() {
-    let names: Vec<String> = scripts().iter().map(|p| p.file_name().unwrap().to_string_lossy().into_owned()).collect();
-    for s in NOT_RUNNABLE_UNTIL_MERGE {
-        assert!(names.iter().any(|n| n == s), "{s} is in the skip list but not in scripts/");
-    }
+fn a_wrong_expectation_fails_the_script_with_exit_status_1() {
+    fails_when_changed(
+        "pto_single_segment.lua",
+        "plcsh.assert_eq(plc.SMD212, 998,",
+        "plcsh.assert_eq(plc.SMD212, 999,",
+        "",
+        "actual:   998",
+    );
+    fails_when_changed("pto_profile_ramp.lua", "plc.SMD212, pulses,", "plc.SMD212, pulses + 1,", "", "expected: 14201");
+    fails_when_changed(
+        "hsc_quadrature_multi_pv.lua",
+        "{ number = 66, pv = 3, cv = 2110 }",
+        "{ number = 66, pv = 3, cv = 2111 }",
+        "plcsh.assert_eq(e.time_us,",
+        "expected: 503500",
+    );
+    fails_when_changed(
+        "rtc_from_host.lua",
+        "\"2026-11-22T10:01:30\"",
+        "\"2026-11-22T10:01:31\"",
+        "",
+        "actual:   \"2026-11-22T10:01:30\"",
+    );
 }

@@ -4,12 +4,17 @@
 //! A new shell helper becomes reachable from Lua by adding one row to [`BRIDGE`].
 //!
 //! How arguments become command text:
-//! - the template's `{}` takes the next argument as a word, `{ms}` the next as a duration
-//!   (a number is milliseconds, `5000` → `5000ms`; a string such as `"5s"` passes as typed);
+//! - the template's `{}` takes the next argument as a word; `{UNIT}` (`{ms}`, `{rpm}`) takes
+//!   it with UNIT appended when it is a number (`5000` → `5000ms`; a string such as `"5s"`
+//!   passes as typed); a part in `[…]` is optional and dropped when its argument is missing
+//!   or nil (`wait event {} [timeout={ms}]`);
 //! - the remaining arguments are appended in order: numbers, strings (quoted when they hold
-//!   spaces, `,` or `;`), booleans; a table with keys becomes `key=value` options (sorted by key,
-//!   since Lua tables are unordered; renamed and given a unit by the row's `options`); a list
-//!   becomes `[a, b]`, a list of keyed tables `[(k=v, …), …]` (`profile`'s segments).
+//!   spaces, `,` or `;`), booleans; a list becomes `[a, b]`, a list of keyed tables
+//!   `[(k=v, …), …]` (`profile`'s segments);
+//! - a table with keys becomes options, sorted by key (Lua tables are unordered): `key=value`,
+//!   `true` as the bare word `key` (`relative=true` → `relative`), `false` left out; the
+//!   row's [`Opt`]s rename keys, give numbers a unit (also inside nested tables, so a
+//!   segment's `cycle=500` is `cycle=500us`), or write `key value` (`at VB3009`).
 //!
 //! The command runs with the handle's device made current (as `use NAME; CMD; use BACK`), so
 //! commands that act on "the current device" act on the handle's device.
@@ -18,6 +23,34 @@ use super::api;
 use crate::core::{Error, Result};
 use mlua::{Lua, Table, Value};
 
+/// How one Lua option key is written in the command.
+#[derive(Debug)]
+pub struct Opt {
+    /// The key in the Lua table (`rpm`).
+    pub key: &'static str,
+    /// The command's key (`speed`); empty for a bare value (`servo jog 100rpm`).
+    pub to: &'static str,
+    /// Appended to numbers (`rpm`, `us`).
+    pub unit: &'static str,
+    /// Written as `key value` (`at VB3009`) instead of `key=value`.
+    pub spaced: bool,
+}
+
+/// `key=NUMBERunit`.
+const fn unit(key: &'static str, unit: &'static str) -> Opt {
+    Opt { key, to: key, unit, spaced: false }
+}
+
+/// `to=NUMBERunit` for Lua key `key`.
+const fn rename(key: &'static str, to: &'static str, unit: &'static str) -> Opt {
+    Opt { key, to, unit, spaced: false }
+}
+
+/// `key VALUE`.
+const fn spaced(key: &'static str) -> Opt {
+    Opt { key, to: key, unit: "", spaced: true }
+}
+
 /// One Lua method → shell command row.
 #[derive(Debug)]
 pub struct Bridge {
@@ -25,57 +58,84 @@ pub struct Bridge {
     pub method: &'static str,
     /// The device family it applies to (`k2`, `servo`), or `""` for every family.
     pub family: &'static str,
-    /// The command text; `{}` and `{ms}` take arguments in order, the rest are appended.
+    /// The command text; `{}`/`{UNIT}` take arguments in order, `[…]` is optional, the rest
+    /// are appended.
     pub template: &'static str,
-    /// Option renames: (Lua key, command key, unit appended to numbers).
-    pub options: &'static [(&'static str, &'static str, &'static str)],
+    /// How option keys are written (renames, units, `key value` forms).
+    pub options: &'static [Opt],
 }
 
 const fn row(method: &'static str, family: &'static str, template: &'static str) -> Bridge {
     Bridge { method, family, template, options: &[] }
 }
 
-/// Servo speeds: `{rpm=300}` → `speed=300rpm`.
-const SPEED: &[(&str, &str, &str)] = &[("rpm", "speed", "rpm"), ("speed", "speed", "")];
+const fn with(method: &'static str, family: &'static str, template: &'static str, options: &'static [Opt]) -> Bridge {
+    Bridge { method, family, template, options }
+}
 
-/// Every device method that runs a shell command. Commands of the K2 motion, servo and
-/// simulator helpers (issues 3–6) are listed with the syntax their issues give.
+/// Pulse timing: a number is microseconds, the manual's default time base (k2.md §5);
+/// `freq` needs no unit (a number is Hz).
+const PULSE: &[Opt] = &[unit("cycle", "us"), unit("width", "us")];
+
+/// `at VB3009` (the PV table address, k2.md §4).
+const HSC: &[Opt] = &[spaced("at")];
+
+/// Servo speeds: `{rpm=300}` → `speed=300rpm` (a bare `speed` number is the drive's DEC).
+const SPEED: &[Opt] = &[rename("rpm", "speed", "rpm")];
+
+/// `servo:jog{rpm=100}` → `servo jog 100rpm`.
+const JOG: &[Opt] = &[Opt { key: "rpm", to: "", unit: "rpm", spaced: true }];
+
+/// Every device method that runs a shell command: the K2 helpers of issue 4, the servo
+/// helpers of issue 6, the simulator's input signals.
 pub const BRIDGE: &[Bridge] = &[
     // Any device.
     row("read", "", "read"),
     row("help", "", "help"),
     row("cmd", "", ""), // plc:cmd("pls 0; pls 1"): any command line, on this device
-    // K2 pulse outputs and counters (PTO/PWM/HSC helpers).
-    row("pls", "k2", "pls"),
-    row("pto", "k2", "pto"),
-    row("pwm", "k2", "pwm"),
-    row("profile", "k2", "profile {} at {}"),
-    row("hsc", "k2", "hsc"),
-    row("hdef", "k2", "hdef"),
-    row("pstop", "k2", "pstop"),
+    // K2 pulse outputs (k2.md §5, §6).
+    row("pls", "k2", "pls {}"),
+    row("pstop", "k2", "pstop {}"),
+    with("pto", "k2", "pto {}", PULSE),
+    row("pto_status", "k2", "pto status {}"),
+    with("pwm", "k2", "pwm {}", PULSE),
+    with("profile", "k2", "profile {} at {}", PULSE),
+    // K2 high-speed counters (k2.md §4).
+    row("hdef", "k2", "hdef {} {}"),
+    with("hsc", "k2", "hsc {}", HSC),
+    row("hsc_status", "k2", "hsc status {}"),
+    // Interrupt events.
     row("events", "k2", "events"),
-    row("wait_event", "k2", "wait event {} timeout={ms}"),
-    // K2 real-time clock and E2PROM backup.
+    row("wait_event", "k2", "wait event {} [timeout={ms}]"),
+    // K2 real-time clock and E2PROM backup (k2.md §7).
     row("rtc", "k2", "rtc"),
-    row("rtc_set", "k2", "rtc set"),
+    row("rtc_set", "k2", "rtc set {}"),
     row("rtc_sync", "k2", "rtc sync"),
-    row("eeprom_dump", "k2", "eeprom dump"),
-    row("eeprom_restore", "k2", "eeprom restore"),
-    // K2 simulator inputs.
-    row("sim_input", "k2", "sim input"),
-    row("sim_quad", "k2", "sim quad"),
-    // Kinco servo drive.
+    row("eeprom_dump", "k2", "eeprom dump {}"),
+    row("eeprom_restore", "k2", "eeprom restore {}"),
+    row("eeprom_status", "k2", "eeprom status"),
+    row("eeprom_area", "k2", "eeprom area {}"),
+    // K2 simulator input signals.
+    row("sim_input", "k2", "sim input {}"),
+    row("sim_quad", "k2", "sim quad {} {}"),
+    row("sim_off", "k2", "sim input {} off"),
+    row("sim_inputs", "k2", "sim inputs"),
+    // Kinco servo drive (kinco-servo.md).
     row("status", "servo", "servo status"),
     row("enable", "servo", "servo enable"),
     row("disable", "servo", "servo disable"),
     row("fault_reset", "servo", "servo fault-reset"),
     row("quickstop", "servo", "servo quickstop"),
-    row("mode", "servo", "servo mode"),
-    Bridge { method: "move_abs", family: "servo", template: "servo move abs", options: SPEED },
-    Bridge { method: "move_rel", family: "servo", template: "servo move rel", options: SPEED },
-    row("jog", "servo", "servo jog"),
-    row("wait_target", "servo", "servo wait target timeout={ms}"),
+    row("mode", "servo", "servo mode {}"),
+    with("move_abs", "servo", "servo move abs {}", SPEED),
+    with("move_rel", "servo", "servo move rel {}", SPEED),
+    with("jog", "servo", "servo jog", JOG),
+    row("home", "servo", "servo home"),
+    row("wait_target", "servo", "servo wait target [timeout={ms}]"),
     row("save", "servo", "servo save"),
+    row("encoder", "servo", "servo encoder"),
+    row("sim_fault", "servo", "servo sim fault"),
+    row("sim_switch", "servo", "servo sim switch {}"),
 ];
 
 fn usage(b: &Bridge, msg: String) -> Error {
@@ -98,8 +158,12 @@ fn is_list(t: &Table) -> bool {
     n > 0 && t.pairs::<Value, Value>().count() == n
 }
 
-/// One argument as a word of command text.
-pub fn word(v: &Value) -> Result<String> {
+fn is_number(v: &Value) -> bool {
+    matches!(v, Value::Integer(_) | Value::Number(_))
+}
+
+/// One argument as a word of command text; `opts` apply inside keyed tables.
+pub fn word(v: &Value, opts: &[Opt]) -> Result<String> {
     Ok(match v {
         Value::Integer(i) => i.to_string(),
         Value::Number(n) => number(*n),
@@ -118,11 +182,11 @@ pub fn word(v: &Value) -> Result<String> {
         Value::Table(t) if is_list(t) => {
             let items: Vec<String> = t
                 .sequence_values::<Value>()
-                .map(|v| v.map_err(lua_err).and_then(|v| word(&v)))
+                .map(|v| v.map_err(lua_err).and_then(|v| word(&v, opts)))
                 .collect::<Result<_>>()?;
             format!("[{}]", items.join(", "))
         }
-        Value::Table(t) => format!("({})", options(t, &[])?.join(", ")),
+        Value::Table(t) => format!("({})", options(t, opts)?.join(", ")),
         other => return Err(Error::usage(format!("cannot pass a Lua {} to a command", other.type_name()))),
     })
 }
@@ -131,8 +195,8 @@ fn lua_err(e: mlua::Error) -> Error {
     Error::usage(e.to_string())
 }
 
-/// A keyed table as `key=value` words, sorted by key, with renames and units.
-fn options(t: &Table, renames: &[(&str, &str, &str)]) -> Result<Vec<String>> {
+/// A keyed table as option words, sorted by key (see the module doc).
+fn options(t: &Table, opts: &[Opt]) -> Result<Vec<String>> {
     let mut pairs = Vec::new();
     for p in t.pairs::<Value, Value>() {
         let (k, v) = p.map_err(lua_err)?;
@@ -143,46 +207,85 @@ fn options(t: &Table, renames: &[(&str, &str, &str)]) -> Result<Vec<String>> {
         pairs.push((key, v));
     }
     pairs.sort_by(|a, b| a.0.cmp(&b.0));
-    pairs
-        .into_iter()
-        .map(|(k, v)| {
-            let (name, unit) = match renames.iter().find(|r| r.0 == k) {
-                Some(&(_, to, unit)) => (to.to_string(), unit),
-                None => (k, ""),
-            };
-            let mut text = word(&v)?;
-            if !unit.is_empty() && matches!(v, Value::Integer(_) | Value::Number(_)) {
-                text.push_str(unit);
+    let mut out = Vec::new();
+    for (k, v) in pairs {
+        let o = opts.iter().find(|o| o.key == k);
+        let to = o.map_or(k.as_str(), |o| o.to);
+        match v {
+            Value::Boolean(true) => out.push(to.to_string()),
+            Value::Boolean(false) => {}
+            v => {
+                let mut text = word(&v, opts)?;
+                if let Some(o) = o.filter(|o| !o.unit.is_empty() && is_number(&v)) {
+                    text.push_str(o.unit);
+                }
+                out.push(match o {
+                    Some(o) if o.spaced && to.is_empty() => text,
+                    Some(o) if o.spaced => format!("{to} {text}"),
+                    _ => format!("{to}={text}"),
+                });
             }
-            Ok(format!("{name}={text}"))
-        })
-        .collect()
+        }
+    }
+    Ok(out)
 }
 
-/// A duration argument: a number is milliseconds.
-fn duration(v: &Value) -> Result<String> {
-    match v {
-        Value::Integer(_) | Value::Number(_) => Ok(format!("{}ms", word(v)?)),
-        _ => word(v),
+/// A placeholder's argument: `{}` as a word, `{UNIT}` with UNIT appended to a number.
+fn placeholder(spec: &str, v: &Value) -> Result<String> {
+    let mut text = word(v, &[])?;
+    if !spec.is_empty() && is_number(v) {
+        text.push_str(spec);
     }
+    Ok(text)
+}
+
+/// Fills the placeholders of `part` (a piece of template without `[…]`) from `it`. Returns
+/// None when an argument is missing or nil.
+fn fill<'a>(part: &str, it: &mut std::iter::Peekable<impl Iterator<Item = &'a Value>>) -> Result<Option<String>> {
+    let mut out = String::new();
+    let mut rest = part;
+    while let Some(open) = rest.find('{') {
+        out.push_str(&rest[..open]);
+        let close = rest[open..].find('}').map(|c| open + c).unwrap_or(rest.len() - 1);
+        match it.peek() {
+            None | Some(Value::Nil) => {
+                it.next();
+                return Ok(None);
+            }
+            Some(v) => out.push_str(&placeholder(&rest[open + 1..close], v)?),
+        }
+        it.next();
+        rest = &rest[close + 1..];
+    }
+    out.push_str(rest);
+    Ok(Some(out))
 }
 
 /// The command text for a call of `b` with `args` (the arguments after the handle).
 pub fn render(b: &Bridge, args: &[Value]) -> Result<String> {
     let mut out = String::new();
-    let mut it = args.iter();
+    let mut it = args.iter().peekable();
     let mut rest = b.template;
-    while let Some(open) = rest.find('{') {
-        out.push_str(&rest[..open]);
-        let close = rest[open..].find('}').map(|c| open + c).unwrap_or(rest.len() - 1);
-        let spec = &rest[open + 1..close];
-        let Some(arg) = it.next() else {
-            return Err(usage(b, format!("missing argument for `{{{spec}}}`")));
+    while !rest.is_empty() {
+        let (part, optional, next) = match rest.find('[') {
+            Some(0) => {
+                let close = rest.find(']').unwrap_or(rest.len() - 1);
+                (&rest[1..close], true, &rest[close + 1..])
+            }
+            Some(open) => (&rest[..open], false, &rest[open..]),
+            None => (rest, false, ""),
         };
-        out.push_str(&if spec == "ms" { duration(arg)? } else { word(arg)? });
-        rest = &rest[close + 1..];
+        match fill(part, &mut it)? {
+            Some(text) => out.push_str(&text),
+            None if optional => {}
+            None => {
+                let spec = part.find('{').map(|o| &part[o..=part[o..].find('}').map_or(o, |c| o + c)]);
+                return Err(usage(b, format!("missing argument for `{}`", spec.unwrap_or("{}"))));
+            }
+        }
+        rest = next;
     }
-    out.push_str(rest);
+    let mut out = out.trim_end().to_string();
     // `cmd` (an empty template) takes command text as typed.
     let raw = b.template.is_empty();
     for arg in it {
@@ -192,7 +295,7 @@ pub fn render(b: &Bridge, args: &[Value]) -> Result<String> {
             Value::String(s) if raw => {
                 vec![s.to_str().map_err(|_| Error::usage("command text is not UTF-8"))?.to_string()]
             }
-            v => vec![word(v)?],
+            v => vec![word(v, b.options)?],
         };
         for w in words {
             if !out.is_empty() {
@@ -243,29 +346,64 @@ mod tests {
     fn options_tables_and_lists_become_command_text() {
         assert_eq!(render_lua("pls", "0").unwrap(), "pls 0");
         assert_eq!(render_lua("pto", "0, {freq=2000, count=1000}").unwrap(), "pto 0 count=1000 freq=2000");
+        assert_eq!(render_lua("pto", "0, {cycle=500, count=1000}").unwrap(), "pto 0 count=1000 cycle=500us");
+        assert_eq!(render_lua("pto", "0, {cycle='1ms', count=10}").unwrap(), "pto 0 count=10 cycle=1ms");
+        assert_eq!(
+            render_lua("pwm", "0, {cycle=1000, width=250}, 'async'").unwrap(),
+            "pwm 0 cycle=1000us width=250us async"
+        );
         assert_eq!(render_lua("move_abs", "10000, {rpm=300}").unwrap(), "servo move abs 10000 speed=300rpm");
+        assert_eq!(
+            render_lua("move_rel", "-5, {speed='10rpm', acc='100rps/s'}").unwrap(),
+            "servo move rel -5 acc=100rps/s speed=10rpm"
+        );
+        assert_eq!(render_lua("jog", "{rpm=-50}").unwrap(), "servo jog -50rpm");
+        assert_eq!(render_lua("jog", "'100rpm'").unwrap(), "servo jog 100rpm");
         assert_eq!(render_lua("enable", "").unwrap(), "servo enable");
         assert_eq!(render_lua("fault_reset", "").unwrap(), "servo fault-reset");
+        assert_eq!(render_lua("home", "{method=35}").unwrap(), "servo home method=35");
         assert_eq!(
-            render_lua("profile", "0, 'VB3000', {{cycle='500us', count=1000}, {cycle='250us', count=2000}}").unwrap(),
-            "profile 0 at VB3000 [(count=1000, cycle=500us), (count=2000, cycle=250us)]"
+            render_lua(
+                "profile",
+                "0, 'VB3000', {{cycle='500us', count=1000}, {cycle=250, count=2000}, {freq=4000, count=9}}"
+            )
+            .unwrap(),
+            "profile 0 at VB3000 [(count=1000, cycle=500us), (count=2000, cycle=250us), (count=9, freq=4000)]"
         );
-        assert_eq!(render_lua("hsc", "0, {mode=9, pv={100, 200}}").unwrap(), "hsc 0 mode=9 pv=[100, 200]");
+        assert_eq!(
+            render_lua("profile", "0, 'VB3001', {{cycle=500, count=2}}, {force=true, plan=false}").unwrap(),
+            "profile 0 at VB3001 [(count=2, cycle=500us)] force"
+        );
+        assert_eq!(
+            render_lua("hsc", "0, {mode=9, pv={100, 200}, relative=true, cyclic=true, at='VB3009', cv=100}").unwrap(),
+            "hsc 0 at VB3009 cv=100 cyclic mode=9 pv=[100, 200] relative"
+        );
+        assert_eq!(render_lua("hdef", "1, 12").unwrap(), "hdef 1 12");
         assert_eq!(render_lua("wait_event", "28, 5000").unwrap(), "wait event 28 timeout=5000ms");
         assert_eq!(render_lua("wait_event", "28, '2s'").unwrap(), "wait event 28 timeout=2s");
+        assert_eq!(render_lua("wait_event", "28").unwrap(), "wait event 28", "the timeout is optional");
+        assert_eq!(render_lua("wait_target", "").unwrap(), "servo wait target");
+        assert_eq!(render_lua("wait_target", "1500").unwrap(), "servo wait target timeout=1500ms");
+        assert_eq!(render_lua("events", "{keep=true}").unwrap(), "events keep");
         assert_eq!(render_lua("eeprom_dump", "'my backup.bin'").unwrap(), "eeprom dump \"my backup.bin\"");
+        assert_eq!(
+            render_lua("sim_quad", "'I0.1', 'I0.0', {freq='1kHz', dir='up'}").unwrap(),
+            "sim quad I0.1 I0.0 dir=up freq=1kHz"
+        );
+        assert_eq!(render_lua("sim_off", "'I0.1'").unwrap(), "sim input I0.1 off");
         assert_eq!(render_lua("pto", "0, {freq=2000.0}").unwrap(), "pto 0 freq=2000");
         assert_eq!(render_lua("cmd", "'get VW0'").unwrap(), "get VW0");
     }
 
     #[test]
     fn a_missing_template_argument_is_a_usage_error() {
-        let e = render_lua("wait_event", "28").unwrap_err();
-        assert!(e.message.contains("missing argument"), "{e}");
-        assert!(e.hint.clone().unwrap().contains("wait event {} timeout={ms}"));
+        let e = render_lua("profile", "0").unwrap_err();
+        assert!(e.message.contains("missing argument for `{}`"), "{e}");
+        assert!(e.hint.clone().unwrap().contains("profile {} at {}"));
+        assert!(render_lua("pls", "").is_err());
+        assert!(render_lua("rtc_set", "nil").is_err());
         assert!(render_lua("cmd", "").is_err());
     }
-
     #[test]
     fn method_names_are_unique() {
         for (i, b) in BRIDGE.iter().enumerate() {

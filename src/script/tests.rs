@@ -291,3 +291,6 @@ fn incomplete_chunks_are_detected() {
     assert!(!e.incomplete("1 +"), "a syntax error is reported, not continued");
     assert!(!e.incomplete("plc.VW0"));
 }
+
+#[path = "bridge_tests.rs"]
+mod bridge_tests;
