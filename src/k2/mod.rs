@@ -3,6 +3,7 @@
 
 pub mod catalog;
 pub mod memory;
+pub mod modbus_map;
 pub mod operand;
 pub mod sim;
 pub mod sm_map;
