@@ -2,6 +2,7 @@
 //! grammar, SM register tables, the memory image and the simulator.
 
 pub mod catalog;
+pub mod coalesce;
 pub mod memory;
 pub mod modbus_map;
 pub mod operand;
