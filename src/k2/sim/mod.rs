@@ -6,6 +6,8 @@
 //! first scan, SM0.5 1-second clock, SM0.6 scan toggle), and — as their modules land — the
 //! pulse outputs and counters. The Modbus server (`plcsh sim serve`) serves this same type.
 
+pub mod modbus_server;
+
 use crate::core::{Clock, Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
 use crate::k2::catalog::{self, Model};
 use crate::k2::memory::Memory;
