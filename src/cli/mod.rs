@@ -4,6 +4,7 @@
 //! One file per subcommand (`models.rs` …), each a thin call into the library.
 
 mod models;
+mod serve;
 
 use crate::core::{Clock, ErrorKind};
 use crate::k2::catalog;
@@ -50,6 +51,11 @@ pub struct Cli {
 pub enum Sub {
     /// List the K2 model catalogue (areas, I/O, counters, pulse outputs, manual disagreements).
     Models,
+    /// Simulator services: `sim serve` puts the simulated K2 on Modbus TCP / RTU.
+    Sim {
+        #[command(subcommand)]
+        cmd: serve::SimCmd,
+    },
 }
 
 /// Splits `NAME=URL` (or a bare URL, named `plc`).
@@ -105,6 +111,9 @@ pub fn main() -> i32 {
     let _ = signal_hook::flag::register(signal_hook::consts::SIGINT, session.interrupt.clone());
     let mut shell = Shell::new(session, style);
     shell.verbose = cli.verbose > 0;
+    if cli.verbose > 1 {
+        crate::core::trace::set_sink(Some(std::sync::Arc::new(crate::core::trace::StderrSink)));
+    }
 
     if let Some(sub) = &cli.sub {
         return match sub {
@@ -113,6 +122,7 @@ pub fn main() -> i32 {
                 let _ = output::write_outcome(&mut out, style, &o);
                 0
             }
+            Sub::Sim { cmd: serve::SimCmd::Serve(args) } => serve::run(&cli, args, style, &mut out),
         };
     }
     if let Some(cmds) = &cli.command {

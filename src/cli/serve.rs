@@ -1,0 +1,195 @@
+//! `plcsh sim serve`: serves simulated devices on real transports so any client (an HMI,
+//! mbpoll, pymodbus, plcsh itself) can use them, and a lab or CI needs no hardware.
+//!
+//! The K2 simulator is served over Modbus TCP (`--tcp`), Modbus RTU on a pseudo-terminal
+//! (`--rtu-pty LINK`) and RTU over TCP (`--rtu-tcp`), all on one shared simulator. Network
+//! addresses bind loopback unless a host is given (`--tcp 5020` = `127.0.0.1:5020`; port 0
+//! picks a free port). When every transport is up, one JSON line on stdout names what was
+//! bound (real ports, pty device, link) so scripts wait for it instead of sleeping. Ctrl-C
+//! or SIGTERM stop it; the pty symlink is removed.
+//!
+//! Shape: each served family adds its endpoints in its own function ([`serve_k2`]) — it
+//! binds, spawns its tasks and adds its fields to the readiness line — so more families
+//! (a servo drive on a pty) slot in beside it.
+
+use super::Cli;
+use crate::core::link::async_pty::AsyncPty;
+use crate::core::{Clock, Error, Result};
+use crate::k2::sim::modbus_server::{self, K2Service};
+use crate::output::{self, Style};
+use clap::{Args, Subcommand};
+use serde_json::{json, Map, Value as Json};
+use std::io::Write;
+use std::net::SocketAddr;
+use std::path::PathBuf;
+use std::sync::{Arc, Mutex};
+use tokio::net::TcpListener;
+use tokio::task::JoinSet;
+
+/// `plcsh sim …`
+#[derive(Subcommand, Debug)]
+pub enum SimCmd {
+    /// Serve the simulator over Modbus TCP, Modbus RTU on a pseudo-terminal, and/or RTU over TCP.
+    Serve(ServeArgs),
+}
+
+#[derive(Args, Debug)]
+pub struct ServeArgs {
+    /// Modbus TCP on ADDR (`127.0.0.1:5020`, `5020`, `0` for a free port; loopback unless a host is given).
+    #[arg(long, value_name = "ADDR")]
+    pub tcp: Option<String>,
+    /// Modbus RTU on a new pseudo-terminal, with a symlink to its device at LINK.
+    #[arg(long = "rtu-pty", value_name = "LINK")]
+    pub rtu_pty: Option<PathBuf>,
+    /// Modbus RTU frames over TCP on ADDR (as a serial-to-Ethernet gateway carries them).
+    #[arg(long = "rtu-tcp", value_name = "ADDR")]
+    pub rtu_tcp: Option<String>,
+    /// Modbus unit id (slave address) the K2 answers to; requests for other ids get no reply.
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u8).range(1..=247))]
+    pub unit: u8,
+}
+
+/// `HOST:PORT`, or a bare port on 127.0.0.1.
+pub fn listen_addr(text: &str) -> Result<SocketAddr> {
+    let t = text.trim();
+    let full = if let Ok(port) = t.trim_start_matches(':').parse::<u16>() {
+        format!("127.0.0.1:{port}")
+    } else {
+        t.to_string()
+    };
+    full.parse().map_err(|_| {
+        Error::usage(format!("`{text}` is not an address to listen on"))
+            .hint("use HOST:PORT (127.0.0.1:5020, 0.0.0.0:502) or a port (5020; 0 picks a free one)")
+    })
+}
+
+async fn bind(text: &str) -> Result<TcpListener> {
+    let addr = listen_addr(text)?;
+    TcpListener::bind(addr).await.map_err(|e| {
+        Error::io(format!("cannot listen on {addr}"))
+            .cause(e)
+            .hint("choose another port (0 picks a free one); ports below 1024 need privileges")
+    })
+}
+
+/// Files to remove when the server stops.
+#[derive(Default)]
+struct Cleanup {
+    links: Vec<PathBuf>,
+}
+
+impl Drop for Cleanup {
+    fn drop(&mut self) {
+        for l in &self.links {
+            let _ = std::fs::remove_file(l);
+        }
+    }
+}
+
+/// Binds the K2's transports, spawns their servers and names them in `ready`.
+async fn serve_k2(
+    cli: &Cli,
+    args: &ServeArgs,
+    clock: &Clock,
+    tasks: &mut JoinSet<std::io::Result<()>>,
+    ready: &mut Map<String, Json>,
+    cleanup: &mut Cleanup,
+) -> Result<()> {
+    let sim = crate::k2::sim::open(&cli.model, clock.clone())?;
+    ready.insert("model".into(), json!(sim.model().name));
+    ready.insert("unit".into(), json!(args.unit));
+    let service = K2Service::new(Arc::new(Mutex::new(sim)), args.unit);
+    if let Some(a) = &args.tcp {
+        let l = bind(a).await?;
+        ready.insert("tcp".into(), json!(l.local_addr()?.to_string()));
+        tasks.spawn(modbus_server::serve_tcp(l, service.clone()));
+    }
+    if let Some(a) = &args.rtu_tcp {
+        let l = bind(a).await?;
+        ready.insert("rtu_tcp".into(), json!(l.local_addr()?.to_string()));
+        tasks.spawn(modbus_server::serve_rtu_over_tcp(l, service.clone()));
+    }
+    if let Some(link) = &args.rtu_pty {
+        let pty = AsyncPty::open()?;
+        pty.link(link)?;
+        cleanup.links.push(link.clone());
+        ready.insert("rtu_pty".into(), json!({"path": pty.path(), "link": link}));
+        let service = service.clone();
+        tasks.spawn(async move { modbus_server::serve_rtu(&pty, service).await });
+    }
+    Ok(())
+}
+
+async fn until_stopped() -> std::io::Result<()> {
+    let mut term = tokio::signal::unix::signal(tokio::signal::unix::SignalKind::terminate())?;
+    tokio::select! {
+        r = tokio::signal::ctrl_c() => r,
+        _ = term.recv() => Ok(()),
+    }
+}
+
+async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
+    if args.tcp.is_none() && args.rtu_pty.is_none() && args.rtu_tcp.is_none() {
+        return Err(Error::usage("sim serve needs at least one transport")
+            .hint("e.g. plcsh sim serve --tcp 127.0.0.1:5020 --rtu-pty /tmp/k2 --rtu-tcp 0"));
+    }
+    let clock = match cli.time {
+        super::TimeMode::Wall => Clock::following(),
+        super::TimeMode::Stepped => Clock::stepped(),
+    };
+    let mut tasks = JoinSet::new();
+    let mut ready = Map::new();
+    ready.insert("ok".into(), json!(true));
+    ready.insert("cmd".into(), json!("sim serve"));
+    let mut cleanup = Cleanup::default();
+    serve_k2(cli, args, &clock, &mut tasks, &mut ready, &mut cleanup).await?;
+    serde_json::to_writer(&mut *out, &ready).map_err(|e| Error::io("cannot print the readiness line").cause(e))?;
+    writeln!(out)?;
+    out.flush()?;
+    tokio::select! {
+        r = until_stopped() => r.map_err(|e| Error::io("cannot wait for signals").cause(e)),
+        Some(r) = tasks.join_next() => {
+            let e = match r {
+                Ok(Ok(())) => "a server stopped".to_string(),
+                Ok(Err(e)) => e.to_string(),
+                Err(e) => e.to_string(),
+            };
+            Err(Error::io("serving failed").cause(e))
+        }
+    }
+}
+
+/// Runs `plcsh sim serve`; returns the exit status.
+pub fn run(cli: &Cli, args: &ServeArgs, style: Style, out: &mut dyn Write) -> i32 {
+    let rt = match tokio::runtime::Builder::new_current_thread().enable_all().build() {
+        Ok(rt) => rt,
+        Err(e) => {
+            let _ = output::write_error(out, style, "sim serve", &Error::io("cannot start a runtime").cause(e), None);
+            return 1;
+        }
+    };
+    match rt.block_on(serve(cli, args, out)) {
+        Ok(()) => 0,
+        Err(e) => {
+            let _ = output::write_error(out, style, "sim serve", &e, None);
+            if e.kind == crate::core::ErrorKind::Usage {
+                2
+            } else {
+                1
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bare_ports_bind_loopback() {
+        assert_eq!(listen_addr("5020").unwrap().to_string(), "127.0.0.1:5020");
+        assert_eq!(listen_addr(":0").unwrap().to_string(), "127.0.0.1:0");
+        assert_eq!(listen_addr("0.0.0.0:502").unwrap().to_string(), "0.0.0.0:502");
+        assert!(listen_addr("localhost:x").is_err());
+    }
+}
