@@ -62,8 +62,9 @@ pub fn open_url(url: &str, clock: &Clock) -> Result<Box<dyn Device>> {
             let model = u.param("model").unwrap_or(&u.target);
             crate::k2::open_sim(model, clock.clone())
         }
+        "tcp" | "rtu" | "rtu+tcp" => crate::k2::open_wire(&u),
         other => {
-            Err(Error::usage(format!("unknown device scheme `{other}:` in {url}")).hint("known schemes: sim:MODEL"))
+            Err(Error::usage(format!("unknown device scheme `{other}:` in {url}")).hint("known schemes: sim:MODEL, tcp://HOST:PORT, rtu:/dev/PORT, rtu+tcp://HOST:PORT"))
         }
     }
 }

@@ -3,6 +3,7 @@
 
 pub mod catalog;
 pub mod coalesce;
+pub mod driver;
 pub mod memory;
 pub mod modbus_map;
 pub mod operand;
@@ -25,4 +26,9 @@ pub trait K2Ops {
 /// Opens a K2 device from a URL the session recognised as K2 (`sim:MODEL`).
 pub fn open_sim(model: &str, clock: crate::core::Clock) -> crate::core::Result<Box<dyn Device>> {
     Ok(Box::new(sim::open(model, clock)?))
+}
+
+/// Opens a real K2 (or a served simulator) from `tcp://`, `rtu:` or `rtu+tcp://` URLs.
+pub fn open_wire(url: &crate::core::url::DeviceUrl) -> crate::core::Result<Box<dyn Device>> {
+    Ok(Box::new(driver::K2Wire::open(url)?))
 }

@@ -4,3 +4,4 @@
 
 pub mod async_pty;
 pub mod pty;
+pub mod traced;
