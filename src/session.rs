@@ -63,9 +63,8 @@ pub fn open_url(url: &str, clock: &Clock) -> Result<Box<dyn Device>> {
             crate::k2::open_sim(model, clock.clone())
         }
         "tcp" | "rtu" | "rtu+tcp" => crate::k2::open_wire(&u),
-        other => {
-            Err(Error::usage(format!("unknown device scheme `{other}:` in {url}")).hint("known schemes: sim:MODEL, tcp://HOST:PORT, rtu:/dev/PORT, rtu+tcp://HOST:PORT"))
-        }
+        other => Err(Error::usage(format!("unknown device scheme `{other}:` in {url}"))
+            .hint("known schemes: sim:MODEL, tcp://HOST:PORT, rtu:/dev/PORT, rtu+tcp://HOST:PORT")),
     }
 }
 

@@ -120,12 +120,18 @@ async fn serve_k2(
     Ok(())
 }
 
-async fn until_stopped() -> std::io::Result<()> {
-    let mut term = tokio::signal::unix::signal(tokio::signal::unix::SignalKind::terminate())?;
-    tokio::select! {
-        r = tokio::signal::ctrl_c() => r,
-        _ = term.recv() => Ok(()),
-    }
+/// Waits for Ctrl-C or SIGTERM. Both handlers are installed when this is called, before
+/// the readiness line goes out, so a signal sent right after it is not lost.
+fn until_stopped() -> std::io::Result<impl std::future::Future<Output = ()>> {
+    use tokio::signal::unix::{signal, SignalKind};
+    let mut int = signal(SignalKind::interrupt())?;
+    let mut term = signal(SignalKind::terminate())?;
+    Ok(async move {
+        tokio::select! {
+            _ = int.recv() => {},
+            _ = term.recv() => {},
+        }
+    })
 }
 
 async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
@@ -133,6 +139,7 @@ async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
         return Err(Error::usage("sim serve needs at least one transport")
             .hint("e.g. plcsh sim serve --tcp 127.0.0.1:5020 --rtu-pty /tmp/k2 --rtu-tcp 0"));
     }
+    let stopped = until_stopped().map_err(|e| Error::io("cannot install signal handlers").cause(e))?;
     let clock = match cli.time {
         super::TimeMode::Wall => Clock::following(),
         super::TimeMode::Stepped => Clock::stepped(),
@@ -147,7 +154,7 @@ async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
     writeln!(out)?;
     out.flush()?;
     tokio::select! {
-        r = until_stopped() => r.map_err(|e| Error::io("cannot wait for signals").cause(e)),
+        () = stopped => Ok(()),
         Some(r) = tasks.join_next() => {
             let e = match r {
                 Ok(Ok(())) => "a server stopped".to_string(),

@@ -229,7 +229,8 @@ mod tests {
         assert_eq!(runs[2].items, vec![3], "VB1 comes after VW10, so it is not folded into the first run");
         let many: Vec<Span> = parse_expr("VW0..VW298").unwrap().iter().map(|o| locate_write(&s, o).unwrap()).collect();
         assert_eq!(plan_writes(&many).iter().map(|r| r.span.count).collect::<Vec<_>>(), vec![100, 50]);
-        let coils: Vec<Span> = parse_expr("M0.0..M119.7").unwrap().iter().map(|o| locate_write(&s, o).unwrap()).collect();
+        let coils: Vec<Span> =
+            parse_expr("M0.0..M119.7").unwrap().iter().map(|o| locate_write(&s, o).unwrap()).collect();
         assert_eq!(plan_writes(&coils).iter().map(|r| r.span.count).collect::<Vec<_>>(), vec![800, 160]);
         assert_eq!(plan_writes(&[w("Q0.0"), w("M0.0")]).len(), 2);
     }

@@ -361,7 +361,14 @@ impl K2Wire {
                         .filter(|&i| coalesce::find(std::slice::from_ref(req), &spans[i]).is_some())
                         .collect();
                     let first = mine.first().copied().unwrap_or(0);
-                    return Err(self.explain(f, "reading", req, req.table().read_fc(), &ops[first], mine.len().saturating_sub(1)));
+                    return Err(self.explain(
+                        f,
+                        "reading",
+                        req,
+                        req.table().read_fc(),
+                        &ops[first],
+                        mine.len().saturating_sub(1),
+                    ));
                 }
             }
         }
@@ -400,8 +407,7 @@ impl Device for K2Wire {
 
     fn read(&mut self, ops: &[Operand]) -> Result<Vec<Value>> {
         let k2: Vec<K2Operand> = ops.iter().map(|o| K2Operand::from_key(o.key)).collect();
-        let spans: Vec<Span> =
-            k2.iter().map(|o| modbus_map::locate_read(&self.space, o)).collect::<Result<_>>()?;
+        let spans: Vec<Span> = k2.iter().map(|o| modbus_map::locate_read(&self.space, o)).collect::<Result<_>>()?;
         let plan = coalesce::plan_reads(&spans, self.link.costs());
         let blocks = self.read_plan(&plan, &spans, &k2)?;
         let order = self.settings.word_order;
@@ -418,8 +424,7 @@ impl Device for K2Wire {
 
     fn write(&mut self, items: &[(Operand, Value)]) -> Result<()> {
         let k2: Vec<K2Operand> = items.iter().map(|(o, _)| K2Operand::from_key(o.key)).collect();
-        let spans: Vec<Span> =
-            k2.iter().map(|o| modbus_map::locate_write(&self.space, o)).collect::<Result<_>>()?;
+        let spans: Vec<Span> = k2.iter().map(|o| modbus_map::locate_write(&self.space, o)).collect::<Result<_>>()?;
         let raws: Vec<u32> = items.iter().map(|(o, v)| o.dtype.encode(v)).collect();
         let order = self.settings.word_order;
 

@@ -232,7 +232,7 @@ fn span_in(space: &K2Space, table: Table, op: &K2Operand) -> Result<Span> {
         bit_extent(op)
     } else {
         let end_byte = op.byte + op.width.bytes();
-        (op.byte / 2, (end_byte + 1) / 2 - op.byte / 2)
+        (op.byte / 2, end_byte.div_ceil(2) - op.byte / 2)
     };
     if first + count > region.len(space) {
         // The operand space checks bounds first; this only fires for an unchecked operand.

@@ -87,13 +87,7 @@ impl K2Service {
 }
 
 /// The area bytes a request addresses, after the limit and bound checks.
-fn area_of(
-    sim: &K2Sim,
-    fc: u8,
-    table: Table,
-    addr: u16,
-    count: usize,
-) -> Result<(Area, u32), Exception> {
+fn area_of(sim: &K2Sim, fc: u8, table: Table, addr: u16, count: usize) -> Result<(Area, u32), Exception> {
     modbus_map::check_quantity(fc, count)?;
     let (region, off) = modbus_map::resolve(sim.space(), table, addr, count as u16)?;
     Ok((region.area, off))
