@@ -72,6 +72,20 @@ fn plan_region(s: &[Span], costs: Costs, out: &mut Vec<Span>) {
     let overhead = costs.request_bytes as u64 * 8;
     let per_unit = unit_cost(table);
     let n = s.len();
+    // Fast path (the common `get VW0..VW198`): everything fits one request and the gaps
+    // cost less than a request. Any split into k ≥ 2 requests saves at most the gaps and
+    // pays k − 1 more overheads, so one request is optimal.
+    let lo = s[0].start as u32;
+    let mut hi = lo;
+    let mut gaps = 0u64;
+    for sp in s {
+        gaps += (sp.start as u32).saturating_sub(hi) as u64;
+        hi = hi.max(sp.end());
+    }
+    if hi - lo <= limit && gaps * per_unit <= overhead {
+        out.push(Span { region: s[0].region, start: lo as u16, count: (hi - lo) as u16 });
+        return;
+    }
     // best[j] = (cost, requests, first span of the last request) covering s[..j].
     let mut best: Vec<(u64, u32, usize)> = vec![(0, 0, 0); n + 1];
     for j in 1..=n {

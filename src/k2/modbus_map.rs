@@ -370,9 +370,17 @@ fn raw_into_bytes(op: &K2Operand, raw: u32, bytes: &mut [u8], order: WordOrder) 
     }
 }
 
-/// Registers → the big-endian bytes they hold.
-fn words_to_bytes(words: &[u16]) -> Vec<u8> {
-    words.iter().flat_map(|w| w.to_be_bytes()).collect()
+/// Most registers one operand spans (`VD301`: 3).
+const MAX_SPAN_WORDS: usize = 4;
+
+/// Registers → the big-endian bytes they hold (no allocation: an operand spans ≤ 3).
+fn words_to_bytes(words: &[u16]) -> [u8; 2 * MAX_SPAN_WORDS] {
+    assert!(words.len() <= MAX_SPAN_WORDS, "an operand spans at most {MAX_SPAN_WORDS} registers");
+    let mut b = [0u8; 2 * MAX_SPAN_WORDS];
+    for (i, w) in words.iter().enumerate() {
+        b[2 * i..2 * i + 2].copy_from_slice(&w.to_be_bytes());
+    }
+    b
 }
 
 /// Decodes an operand's raw pattern from the data of exactly its span (as given by
@@ -394,7 +402,7 @@ pub fn decode(op: &K2Operand, data: Data<'_>, order: WordOrder) -> u32 {
                 // Bytes, words, double words: byte k of the area is bits 8k…8k+7; the value
                 // is the bytes in S7 (big-endian) order.
                 _ => {
-                    let bytes: Vec<u8> = (0..op.width.bytes()).map(|k| (v >> (8 * k)) as u8).collect();
+                    let bytes = v.to_le_bytes(); // byte k of the span = bits 8k…8k+7
                     raw_from_bytes(op, &bytes, WordOrder::HighFirst)
                 }
             }

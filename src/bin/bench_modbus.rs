@@ -1,0 +1,409 @@
+//! The Modbus benchmark (issue 3, item 4): plcsh's wire driver and simulator server side by
+//! side with libmodbus (C), pymodbus and mbpoll, over loopback TCP and RTU on a pty, with the
+//! 12-byte echo round trip as the floor. Run it through `bench/run.sh`, which installs the
+//! peers (Debian `libmodbus-dev`, `mbpoll`; PyPI `pymodbus`) and builds the C programs in
+//! `bench/c`; it is not part of `cargo test` or CI (slow, installs packages).
+//!
+//! Every loop is bounded (a count and a time), one request is in flight, and every address is
+//! on 127.0.0.1 or a pseudo-terminal. Servers are waited for through their readiness lines.
+//!
+//! Usage: `bench_modbus [--seconds S] [--count N] [--runs R] [--peers DIR] [--py DIR]`
+//! (`--peers`: the built C programs, default `target/bench`; `--py`: `bench/py`).
+
+use plcsh::core::Clock;
+use serde_json::Value as Json;
+use std::io::{BufRead, BufReader, Read};
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
+
+/// One measured series.
+#[derive(Clone, Debug, Default)]
+struct Fig {
+    n: f64,
+    secs: f64,
+    p50: Option<f64>,
+    p99: Option<f64>,
+}
+
+impl Fig {
+    fn rate(&self) -> f64 {
+        if self.secs > 0.0 {
+            self.n / self.secs
+        } else {
+            0.0
+        }
+    }
+    fn from_json(j: &Json) -> Option<Fig> {
+        Some(Fig {
+            n: j["n"].as_f64()?,
+            secs: j["secs"].as_f64()?,
+            p50: j["p50_us"].as_f64(),
+            p99: j["p99_us"].as_f64(),
+        })
+    }
+    fn from_latencies(mut lat: Vec<f64>, secs: f64) -> Fig {
+        lat.sort_by(f64::total_cmp);
+        let n = lat.len();
+        Fig {
+            n: n as f64,
+            secs,
+            p50: lat.get(n / 2).map(|s| s * 1e6),
+            p99: lat.get(n * 99 / 100).map(|s| s * 1e6),
+        }
+    }
+}
+
+struct Opts {
+    /// Each throughput figure is the best of this many runs (other load on the machine only
+    /// ever slows a run down).
+    rounds: usize,
+    seconds: f64,
+    count: u64,
+    runs: usize,
+    peers: PathBuf,
+    py: PathBuf,
+    plcsh: PathBuf,
+}
+
+/// A server process, killed on drop.
+struct Server {
+    child: Child,
+    ready: Json,
+    name: &'static str,
+}
+
+impl Server {
+    /// Starts `cmd` and waits for its first stdout line (a JSON readiness line).
+    fn start(name: &'static str, mut cmd: Command) -> Option<Server> {
+        let mut child = cmd.stdout(Stdio::piped()).stderr(Stdio::null()).spawn().ok()?;
+        let mut line = String::new();
+        BufReader::new(child.stdout.take()?).read_line(&mut line).ok()?;
+        match serde_json::from_str(&line) {
+            Ok(ready) => Some(Server { child, ready, name }),
+            Err(_) => {
+                eprintln!("{name}: no readiness line (got {line:?})");
+                let _ = child.kill();
+                None
+            }
+        }
+    }
+    fn field(&self, k: &str) -> String {
+        self.ready[k].as_str().unwrap_or_default().to_string()
+    }
+}
+
+impl Drop for Server {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+        let _ = self.name;
+    }
+}
+
+static ROUNDS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(3);
+
+/// A peer's figure: the best of the configured number of runs.
+fn peer(c: Command) -> Option<Fig> {
+    let rounds = ROUNDS.load(std::sync::atomic::Ordering::Relaxed);
+    best(rounds, || {
+        let mut again = Command::new(c.get_program());
+        again.args(c.get_args());
+        peer_once(again)
+    })
+}
+
+/// The run with the most transactions per second of `rounds` runs.
+fn best(rounds: usize, mut f: impl FnMut() -> Option<Fig>) -> Option<Fig> {
+    (0..rounds.max(1)).filter_map(|_| f()).max_by(|a, b| a.rate().total_cmp(&b.rate()))
+}
+
+/// Runs a measuring peer and parses its last JSON line.
+fn peer_once(mut cmd: Command) -> Option<Fig> {
+    let out = cmd.stderr(Stdio::null()).output().ok()?;
+    let text = String::from_utf8_lossy(&out.stdout);
+    let line = text.lines().rev().find(|l| l.starts_with('{'))?;
+    Fig::from_json(&serde_json::from_str(line).ok()?)
+}
+
+fn cmd(program: &Path, args: &[&str]) -> Command {
+    let mut c = Command::new(program);
+    c.args(args);
+    c
+}
+
+fn py(o: &Opts, script: &str, args: &[&str]) -> Command {
+    let mut c = Command::new("python3");
+    c.arg(o.py.join(script)).args(args);
+    c
+}
+
+/// plcsh's driver, in process: `regs` words from VW0 (holding registers 100…), best run.
+fn plcsh_driver(o: &Opts, url: &str, regs: usize) -> Option<Fig> {
+    best(o.rounds, || plcsh_driver_once(o, url, regs))
+}
+
+fn plcsh_driver_once(o: &Opts, url: &str, regs: usize) -> Option<Fig> {
+    let mut dev = match plcsh::session::open_url(url, &Clock::following()) {
+        Ok(d) => d,
+        Err(e) => {
+            eprintln!("plcsh driver: {e}");
+            return None;
+        }
+    };
+    let ops = dev.operands().parse(&format!("VW0[{regs}]")).ok()?;
+    dev.read(&ops).ok()?; // connect and warm up
+    let before = dev.requests();
+    let mut lat = Vec::with_capacity(o.count as usize);
+    let start = Instant::now();
+    while (lat.len() as u64) < o.count && start.elapsed().as_secs_f64() < o.seconds {
+        let t0 = Instant::now();
+        if let Err(e) = dev.read(&ops) {
+            eprintln!("plcsh driver: {e}");
+            return None;
+        }
+        lat.push(t0.elapsed().as_secs_f64());
+    }
+    assert_eq!(dev.requests() - before, lat.len() as u64, "one request per read");
+    Some(Fig::from_latencies(lat, start.elapsed().as_secs_f64()))
+}
+
+/// mbpoll has no count or latency output: poll with its shortest delay for the test time,
+/// stop it, and count the polls it printed.
+fn mbpoll_rate(o: &Opts, args: &[String], regs: usize) -> Option<Fig> {
+    let out = std::env::temp_dir().join(format!("plcsh-bench-mbpoll-{}", std::process::id()));
+    let file = std::fs::File::create(&out).ok()?;
+    let mut child = Command::new("mbpoll")
+        .args(args)
+        .args(["-a", "1", "-r", "101", "-c", &regs.to_string(), "-l", "10"])
+        .stdout(file)
+        .stderr(Stdio::null())
+        .spawn()
+        .ok()?;
+    let start = Instant::now();
+    std::thread::sleep(Duration::from_secs_f64(o.seconds));
+    let secs = start.elapsed().as_secs_f64();
+    let _ = nix::sys::signal::kill(nix::unistd::Pid::from_raw(child.id() as i32), nix::sys::signal::Signal::SIGINT);
+    let _ = child.wait();
+    let mut text = String::new();
+    std::fs::File::open(&out).ok()?.read_to_string(&mut text).ok()?;
+    let _ = std::fs::remove_file(&out);
+    let polls = text.lines().filter(|l| l.starts_with("[101]:")).count();
+    Some(Fig { n: polls as f64, secs, p50: None, p99: None })
+}
+
+/// Wall time of whole processes (start → read 10 registers → exit), `runs` times.
+fn one_shot(o: &Opts, mut make: impl FnMut() -> Command) -> Option<Fig> {
+    let mut lat = Vec::new();
+    let start = Instant::now();
+    for _ in 0..o.runs {
+        let t0 = Instant::now();
+        let st = make().stdout(Stdio::null()).stderr(Stdio::null()).status().ok()?;
+        if !st.success() {
+            return None;
+        }
+        lat.push(t0.elapsed().as_secs_f64());
+    }
+    Some(Fig::from_latencies(lat, start.elapsed().as_secs_f64()))
+}
+
+fn us(v: Option<f64>) -> String {
+    v.map(|v| if v >= 1000.0 { format!("{:.2} ms", v / 1000.0) } else { format!("{v:.1} µs") })
+        .unwrap_or_else(|| "—".into())
+}
+
+/// One table row: name, tx/s, p50, p99, then ratios against the references.
+fn row(name: &str, f: &Option<Fig>, refs: &[(&str, &Option<Fig>)]) -> String {
+    let Some(f) = f else {
+        return format!("| {name} | not measured | | |{}", " |".repeat(refs.len()));
+    };
+    let mut s = format!("| {name} | {:.0} | {} | {} |", f.rate(), us(f.p50), us(f.p99));
+    for (_, r) in refs {
+        match r {
+            Some(r) if r.rate() > 0.0 => s.push_str(&format!(" {:.2}× |", f.rate() / r.rate())),
+            _ => s.push_str(" — |"),
+        }
+    }
+    s
+}
+
+fn header(first: &str, refs: &[(&str, &Option<Fig>)]) -> String {
+    let mut h = format!("| {first} | tx/s | p50 | p99 |");
+    let mut sep = "|---|---:|---:|---:|".to_string();
+    for (n, _) in refs {
+        h.push_str(&format!(" vs {n} |"));
+        sep.push_str("---:|");
+    }
+    format!("{h}\n{sep}")
+}
+
+fn main() {
+    let mut args = std::env::args().skip(1);
+    let exe_dir = std::env::current_exe().ok().and_then(|p| p.parent().map(Path::to_path_buf)).unwrap_or_default();
+    let mut o = Opts {
+        rounds: 3,
+        seconds: 1.5,
+        count: 100_000,
+        runs: 20,
+        peers: PathBuf::from("target/bench"),
+        py: PathBuf::from("bench/py"),
+        plcsh: exe_dir.join("plcsh"),
+    };
+    while let Some(a) = args.next() {
+        let v = args.next().unwrap_or_default();
+        match a.as_str() {
+            "--seconds" => o.seconds = v.parse().expect("--seconds S"),
+            "--count" => o.count = v.parse().expect("--count N"),
+            "--runs" => o.runs = v.parse().expect("--runs R"),
+            "--rounds" => o.rounds = v.parse().expect("--rounds N"),
+            "--peers" => o.peers = v.into(),
+            "--py" => o.py = v.into(),
+            _ => {
+                eprintln!("usage: bench_modbus [--seconds S] [--count N] [--rounds N] [--runs R] [--peers DIR] [--py DIR]");
+                std::process::exit(2);
+            }
+        }
+    }
+    ROUNDS.store(o.rounds, std::sync::atomic::Ordering::Relaxed);
+    let (secs, count) = (o.seconds.to_string(), o.count.to_string());
+    let c_client = o.peers.join("mb_client");
+    let c_server = o.peers.join("mb_server");
+    let echo = o.peers.join("echo_floor");
+
+    println!("# plcsh Modbus benchmark\n");
+    println!(
+        "Each throughput figure: the best of {} runs of {} s (or {} transactions), one request in flight, loopback only; latencies are from that run.\n",
+        o.rounds, o.seconds, o.count
+    );
+
+    // The floor.
+    let floor_tcp = peer(cmd(&echo, &["tcp", &count, &secs]));
+    let floor_pty = peer(cmd(&echo, &["pty", &count, &secs]));
+    println!("## Round-trip floor (12-byte echo)\n");
+    println!("{}", header("link", &[]));
+    println!("{}", row("loopback TCP", &floor_tcp, &[]));
+    println!("{}\n", row("pty pair", &floor_pty, &[]));
+
+    // Servers.
+    let link = std::env::temp_dir().join(format!("plcsh-bench-k2-{}", std::process::id()));
+    let plcsh_srv = Server::start(
+        "plcsh sim serve",
+        cmd(&o.plcsh, &["sim", "serve", "--tcp", "0", "--rtu-pty", &link.to_string_lossy(), "--model", "K205-16DT"]),
+    )
+    .expect("plcsh sim serve starts");
+    let p_tcp = plcsh_srv.field("tcp");
+    let (p_host, p_port) = p_tcp.rsplit_once(':').map(|(h, p)| (h.to_string(), p.to_string())).unwrap();
+    let p_dev = link.to_string_lossy().to_string();
+    let c_tcp_srv = Server::start("libmodbus server (TCP)", cmd(&c_server, &["tcp", "0"]));
+    let c_rtu_srv = Server::start("libmodbus server (RTU)", cmd(&c_server, &["rtu"]));
+    let py_srv = Server::start("pymodbus server", py(&o, "server.py", &["tcp"]));
+
+    for regs in [1usize, 100] {
+        let r = regs.to_string();
+        // Clients on plcsh's server, TCP.
+        let drv = plcsh_driver(&o, &format!("tcp://{p_tcp}?model=K205-16DT"), regs);
+        let lib = peer(cmd(&c_client, &["tcp", &p_host, &p_port, &r, &count, &secs]));
+        let pys = peer(py(&o, "client.py", &["sync", "tcp", &p_tcp, &r, &count, &secs]));
+        let pya = peer(py(&o, "client.py", &["async", "tcp", &p_tcp, &r, &count, &secs]));
+        let mbp = mbpoll_rate(&o, &["-m".into(), "tcp".into(), "-p".into(), p_port.clone(), p_host.clone()], regs);
+        let refs = [("libmodbus client", &lib), ("echo floor", &floor_tcp)];
+        println!("## Clients → plcsh server, TCP, {regs} register(s)\n");
+        println!("{}", header("client", &refs));
+        for (n, f) in [
+            ("plcsh driver", &drv),
+            ("libmodbus client (C)", &lib),
+            ("pymodbus sync", &pys),
+            ("pymodbus async", &pya),
+            ("mbpoll (10 ms poll delay)", &mbp),
+        ] {
+            println!("{}", row(n, f, &refs));
+        }
+        println!();
+
+        // Clients on plcsh's server, RTU on the pty.
+        let drv = plcsh_driver(&o, &format!("rtu:{p_dev}?baud=115200&model=K205-16DT"), regs);
+        let lib = peer(cmd(&c_client, &["rtu", &p_dev, "115200", &r, &count, &secs]));
+        let pys = peer(py(&o, "client.py", &["sync", "rtu", &p_dev, &r, &count, &secs]));
+        let pya = peer(py(&o, "client.py", &["async", "rtu", &p_dev, &r, &count, &secs]));
+        let mbp = mbpoll_rate(
+            &o,
+            &["-m".into(), "rtu".into(), "-b".into(), "115200".into(), "-P".into(), "none".into(), p_dev.clone()],
+            regs,
+        );
+        let refs = [("libmodbus client", &lib), ("echo floor", &floor_pty)];
+        println!("## Clients → plcsh server, RTU on a pty, {regs} register(s)\n");
+        println!("{}", header("client", &refs));
+        for (n, f) in [
+            ("plcsh driver", &drv),
+            ("libmodbus client (C)", &lib),
+            ("pymodbus sync", &pys),
+            ("pymodbus async", &pya),
+            ("mbpoll (10 ms poll delay)", &mbp),
+        ] {
+            println!("{}", row(n, f, &refs));
+        }
+        println!();
+
+        // Servers under the libmodbus client, TCP.
+        let on = |s: &Option<Server>| -> Option<Fig> {
+            let t = s.as_ref()?.field("tcp");
+            let (h, p) = t.rsplit_once(':')?;
+            peer(cmd(&c_client, &["tcp", h, p, &r, &count, &secs]))
+        };
+        let plcsh_s = peer(cmd(&c_client, &["tcp", &p_host, &p_port, &r, &count, &secs]));
+        let lib_s = on(&c_tcp_srv);
+        let py_s = on(&py_srv);
+        let drv_on_lib = c_tcp_srv.as_ref().and_then(|s| {
+            let t = s.field("tcp");
+            plcsh_driver(&o, &format!("tcp://{t}?model=K205-16DT"), regs)
+        });
+        let refs = [("libmodbus server", &lib_s), ("pymodbus server", &py_s), ("echo floor", &floor_tcp)];
+        println!("## Servers under the libmodbus client, TCP, {regs} register(s)\n");
+        println!("{}", header("server", &refs));
+        println!("{}", row("plcsh sim serve", &plcsh_s, &refs));
+        println!("{}", row("libmodbus server (C)", &lib_s, &refs));
+        println!("{}", row("pymodbus server", &py_s, &refs));
+        println!("{}", row("(plcsh driver → libmodbus server)", &drv_on_lib, &refs));
+        println!();
+
+        // Servers under the libmodbus client, RTU on a pty.
+        let plcsh_s = peer(cmd(&c_client, &["rtu", &p_dev, "115200", &r, &count, &secs]));
+        let lib_s = c_rtu_srv.as_ref().and_then(|s| {
+            let d = s.field("path");
+            peer(cmd(&c_client, &["rtu", &d, "115200", &r, &count, &secs]))
+        });
+        let drv_on_lib = c_rtu_srv.as_ref().and_then(|s| {
+            let d = s.field("path");
+            plcsh_driver(&o, &format!("rtu:{d}?baud=115200&model=K205-16DT"), regs)
+        });
+        let refs = [("libmodbus server", &lib_s), ("echo floor", &floor_pty)];
+        println!("## Servers under the libmodbus client, RTU on a pty, {regs} register(s)\n");
+        println!("{}", header("server", &refs));
+        println!("{}", row("plcsh sim serve", &plcsh_s, &refs));
+        println!("{}", row("libmodbus server (C)", &lib_s, &refs));
+        println!("{}", row("(plcsh driver → libmodbus server)", &drv_on_lib, &refs));
+        println!("| pymodbus server | not measured (its serial server opens a device path; a pty master has none) | | | | |");
+        println!();
+    }
+
+    // One-shot: process start → read 10 registers → exit.
+    let url = format!("tcp://{p_tcp}?model=K205-16DT");
+    let plcsh_once = one_shot(&o, || cmd(&o.plcsh, &["-c", "get VW0..VW18", "--device", &url]));
+    let lib_once = one_shot(&o, || cmd(&c_client, &["tcp", &p_host, &p_port, "--once"]));
+    let mbp_once =
+        one_shot(&o, || cmd(Path::new("mbpoll"), &["-m", "tcp", "-p", &p_port, "-a", "1", "-r", "101", "-c", "10", "-1", &p_host]));
+    let py_once = one_shot(&o, || py(&o, "client.py", &["once", "tcp", &p_tcp]));
+    let refs = [("libmodbus one-shot", &lib_once)];
+    println!("## One-shot: process start → read 10 registers (VW0..VW18) → exit, TCP, {} runs\n", o.runs);
+    println!("{}", header("program", &refs).replace("tx/s", "runs/s").replace("p50", "median"));
+    for (n, f) in [
+        ("plcsh -c 'get VW0..VW18' --device tcp://…", &plcsh_once),
+        ("libmodbus client (C)", &lib_once),
+        ("mbpoll -1", &mbp_once),
+        ("pymodbus sync (python3 start included)", &py_once),
+    ] {
+        println!("{}", row(n, f, &refs));
+    }
+    drop(plcsh_srv);
+    let _ = std::fs::remove_file(&link);
+}
