@@ -239,6 +239,11 @@ fn limits_and_bounds_answer_with_the_right_exception_codes() {
             // Function codes the K2 does not list (§3.2.1): 22 and 23.
             assert_eq!(c.masked_write_register(100, 0xFF, 0).await.unwrap(), Err(IllegalFunction));
             assert_eq!(c.read_write_multiple_registers(100, 1, 100, &[1]).await.unwrap(), Err(IllegalFunction));
+            // A user-defined function code (65), which a K2 does not implement.
+            let diag = Request::Custom(0x41, std::borrow::Cow::Borrowed(&[0x00, 0x00, 0xA5, 0x37]));
+            assert_eq!(c.call(diag).await.unwrap(), Err(IllegalFunction));
+            // The connection still serves after all these refusals.
+            assert!(c.read_holding_registers(100, 1).await.unwrap().is_ok());
         }
     });
     // The driver names the exception and the operand: a K209M's V area is larger than the K205's.

@@ -45,18 +45,12 @@ impl Fig {
     fn from_latencies(mut lat: Vec<f64>, secs: f64) -> Fig {
         lat.sort_by(f64::total_cmp);
         let n = lat.len();
-        Fig {
-            n: n as f64,
-            secs,
-            p50: lat.get(n / 2).map(|s| s * 1e6),
-            p99: lat.get(n * 99 / 100).map(|s| s * 1e6),
-        }
+        Fig { n: n as f64, secs, p50: lat.get(n / 2).map(|s| s * 1e6), p99: lat.get(n * 99 / 100).map(|s| s * 1e6) }
     }
 }
 
 struct Opts {
-    /// Each throughput figure is the best of this many runs (other load on the machine only
-    /// ever slows a run down).
+    /// Each throughput figure is the best of this many interleaved runs ([`group`]).
     rounds: usize,
     seconds: f64,
     count: u64,
@@ -101,21 +95,57 @@ impl Drop for Server {
     }
 }
 
-static ROUNDS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(3);
-
-/// A peer's figure: the best of the configured number of runs.
-fn peer(c: Command) -> Option<Fig> {
-    let rounds = ROUNDS.load(std::sync::atomic::Ordering::Relaxed);
-    best(rounds, || {
-        let mut again = Command::new(c.get_program());
-        again.args(c.get_args());
-        peer_once(again)
-    })
+/// One thing to measure: a peer program printing a JSON figure, plcsh's driver in
+/// process, or mbpoll (which only polls, so it is run once and its polls counted).
+#[derive(Clone)]
+enum Job {
+    Peer(PathBuf, Vec<String>),
+    Driver(String, usize),
+    Mbpoll(Vec<String>, usize),
+    Missing,
 }
 
-/// The run with the most transactions per second of `rounds` runs.
-fn best(rounds: usize, mut f: impl FnMut() -> Option<Fig>) -> Option<Fig> {
-    (0..rounds.max(1)).filter_map(|_| f()).max_by(|a, b| a.rate().total_cmp(&b.rate()))
+fn job(program: &Path, args: &[&str]) -> Job {
+    Job::Peer(program.to_path_buf(), args.iter().map(|a| a.to_string()).collect())
+}
+
+fn py_job(o: &Opts, script: &str, args: &[&str]) -> Job {
+    let mut a = vec![o.py.join(script).to_string_lossy().to_string()];
+    a.extend(args.iter().map(|s| s.to_string()));
+    Job::Peer(PathBuf::from("python3"), a)
+}
+
+fn run_once(o: &Opts, j: &Job) -> Option<Fig> {
+    match j {
+        Job::Peer(p, a) => {
+            let mut c = Command::new(p);
+            c.args(a);
+            peer_once(c)
+        }
+        Job::Driver(url, regs) => plcsh_driver_once(o, url, *regs),
+        Job::Mbpoll(a, regs) => mbpoll_rate(o, a, *regs),
+        Job::Missing => None,
+    }
+}
+
+/// Measures a group of contenders round-robin, `rounds` times, keeping each one's best run:
+/// load from elsewhere on the machine only ever slows a run down, and interleaving gives
+/// every contender the same chance at a quiet moment.
+fn group(o: &Opts, jobs: &[Job]) -> Vec<Option<Fig>> {
+    let mut best: Vec<Option<Fig>> = vec![None; jobs.len()];
+    for round in 0..o.rounds.max(1) {
+        for (k, j) in jobs.iter().enumerate() {
+            if round > 0 && matches!(j, Job::Mbpoll(..)) {
+                continue;
+            }
+            if let Some(f) = run_once(o, j) {
+                if best[k].as_ref().is_none_or(|b| f.rate() > b.rate()) {
+                    best[k] = Some(f);
+                }
+            }
+        }
+    }
+    best
 }
 
 /// Runs a measuring peer and parses its last JSON line.
@@ -138,11 +168,15 @@ fn py(o: &Opts, script: &str, args: &[&str]) -> Command {
     c
 }
 
-/// plcsh's driver, in process: `regs` words from VW0 (holding registers 100…), best run.
-fn plcsh_driver(o: &Opts, url: &str, regs: usize) -> Option<Fig> {
-    best(o.rounds, || plcsh_driver_once(o, url, regs))
+fn print_table(first: &str, names: &[&str], figs: &[Option<Fig>], refs: &[(&str, &Option<Fig>)]) {
+    println!("{}", header(first, refs));
+    for (n, f) in names.iter().zip(figs) {
+        println!("{}", row(n, f, refs));
+    }
+    println!();
 }
 
+/// plcsh's driver, in process: `regs` words from VW0 (holding registers 100…).
 fn plcsh_driver_once(o: &Opts, url: &str, regs: usize) -> Option<Fig> {
     let mut dev = match plcsh::session::open_url(url, &Clock::following()) {
         Ok(d) => d,
@@ -259,12 +293,13 @@ fn main() {
             "--peers" => o.peers = v.into(),
             "--py" => o.py = v.into(),
             _ => {
-                eprintln!("usage: bench_modbus [--seconds S] [--count N] [--rounds N] [--runs R] [--peers DIR] [--py DIR]");
+                eprintln!(
+                    "usage: bench_modbus [--seconds S] [--count N] [--rounds N] [--runs R] [--peers DIR] [--py DIR]"
+                );
                 std::process::exit(2);
             }
         }
     }
-    ROUNDS.store(o.rounds, std::sync::atomic::Ordering::Relaxed);
     let (secs, count) = (o.seconds.to_string(), o.count.to_string());
     let c_client = o.peers.join("mb_client");
     let c_server = o.peers.join("mb_server");
@@ -272,17 +307,15 @@ fn main() {
 
     println!("# plcsh Modbus benchmark\n");
     println!(
-        "Each throughput figure: the best of {} runs of {} s (or {} transactions), one request in flight, loopback only; latencies are from that run.\n",
+        "Each throughput figure: the best of {} interleaved runs of {} s (or {} transactions), one request in flight, loopback only; latencies are from that run.\n",
         o.rounds, o.seconds, o.count
     );
 
     // The floor.
-    let floor_tcp = peer(cmd(&echo, &["tcp", &count, &secs]));
-    let floor_pty = peer(cmd(&echo, &["pty", &count, &secs]));
+    let floors = group(&o, &[job(&echo, &["tcp", &count, &secs]), job(&echo, &["pty", &count, &secs])]);
+    let (floor_tcp, floor_pty) = (floors[0].clone(), floors[1].clone());
     println!("## Round-trip floor (12-byte echo)\n");
-    println!("{}", header("link", &[]));
-    println!("{}", row("loopback TCP", &floor_tcp, &[]));
-    println!("{}\n", row("pty pair", &floor_pty, &[]));
+    print_table("link", &["loopback TCP", "pty pair"], &floors, &[]);
 
     // Servers.
     let link = std::env::temp_dir().join(format!("plcsh-bench-k2-{}", std::process::id()));
@@ -297,101 +330,109 @@ fn main() {
     let c_tcp_srv = Server::start("libmodbus server (TCP)", cmd(&c_server, &["tcp", "0"]));
     let c_rtu_srv = Server::start("libmodbus server (RTU)", cmd(&c_server, &["rtu"]));
     let py_srv = Server::start("pymodbus server", py(&o, "server.py", &["tcp"]));
+    let lib_tcp = c_tcp_srv.as_ref().map(|s| s.field("tcp"));
+    let lib_dev = c_rtu_srv.as_ref().map(|s| s.field("path"));
+    let py_tcp = py_srv.as_ref().map(|s| s.field("tcp"));
 
+    let clients =
+        ["plcsh driver", "libmodbus client (C)", "pymodbus sync", "pymodbus async", "mbpoll (10 ms poll delay)"];
     for regs in [1usize, 100] {
         let r = regs.to_string();
+        let tcp_c = |addr: &str| -> Job {
+            let (h, p) = addr.rsplit_once(':').unwrap_or(("127.0.0.1", "0"));
+            job(&c_client, &["tcp", h, p, &r, &count, &secs])
+        };
+        let rtu_c = |dev: &str| job(&c_client, &["rtu", dev, "115200", &r, &count, &secs]);
+
         // Clients on plcsh's server, TCP.
-        let drv = plcsh_driver(&o, &format!("tcp://{p_tcp}?model=K205-16DT"), regs);
-        let lib = peer(cmd(&c_client, &["tcp", &p_host, &p_port, &r, &count, &secs]));
-        let pys = peer(py(&o, "client.py", &["sync", "tcp", &p_tcp, &r, &count, &secs]));
-        let pya = peer(py(&o, "client.py", &["async", "tcp", &p_tcp, &r, &count, &secs]));
-        let mbp = mbpoll_rate(&o, &["-m".into(), "tcp".into(), "-p".into(), p_port.clone(), p_host.clone()], regs);
-        let refs = [("libmodbus client", &lib), ("echo floor", &floor_tcp)];
+        let figs = group(
+            &o,
+            &[
+                Job::Driver(format!("tcp://{p_tcp}?model=K205-16DT"), regs),
+                tcp_c(&p_tcp),
+                py_job(&o, "client.py", &["sync", "tcp", &p_tcp, &r, &count, &secs]),
+                py_job(&o, "client.py", &["async", "tcp", &p_tcp, &r, &count, &secs]),
+                Job::Mbpoll(vec!["-m".into(), "tcp".into(), "-p".into(), p_port.clone(), p_host.clone()], regs),
+            ],
+        );
         println!("## Clients → plcsh server, TCP, {regs} register(s)\n");
-        println!("{}", header("client", &refs));
-        for (n, f) in [
-            ("plcsh driver", &drv),
-            ("libmodbus client (C)", &lib),
-            ("pymodbus sync", &pys),
-            ("pymodbus async", &pya),
-            ("mbpoll (10 ms poll delay)", &mbp),
-        ] {
-            println!("{}", row(n, f, &refs));
-        }
-        println!();
+        print_table("client", &clients, &figs, &[("libmodbus client", &figs[1]), ("echo floor", &floor_tcp)]);
 
         // Clients on plcsh's server, RTU on the pty.
-        let drv = plcsh_driver(&o, &format!("rtu:{p_dev}?baud=115200&model=K205-16DT"), regs);
-        let lib = peer(cmd(&c_client, &["rtu", &p_dev, "115200", &r, &count, &secs]));
-        let pys = peer(py(&o, "client.py", &["sync", "rtu", &p_dev, &r, &count, &secs]));
-        let pya = peer(py(&o, "client.py", &["async", "rtu", &p_dev, &r, &count, &secs]));
-        let mbp = mbpoll_rate(
+        let figs = group(
             &o,
-            &["-m".into(), "rtu".into(), "-b".into(), "115200".into(), "-P".into(), "none".into(), p_dev.clone()],
-            regs,
+            &[
+                Job::Driver(format!("rtu:{p_dev}?baud=115200&model=K205-16DT"), regs),
+                rtu_c(&p_dev),
+                py_job(&o, "client.py", &["sync", "rtu", &p_dev, &r, &count, &secs]),
+                py_job(&o, "client.py", &["async", "rtu", &p_dev, &r, &count, &secs]),
+                Job::Mbpoll(
+                    vec![
+                        "-m".into(),
+                        "rtu".into(),
+                        "-b".into(),
+                        "115200".into(),
+                        "-P".into(),
+                        "none".into(),
+                        p_dev.clone(),
+                    ],
+                    regs,
+                ),
+            ],
         );
-        let refs = [("libmodbus client", &lib), ("echo floor", &floor_pty)];
         println!("## Clients → plcsh server, RTU on a pty, {regs} register(s)\n");
-        println!("{}", header("client", &refs));
-        for (n, f) in [
-            ("plcsh driver", &drv),
-            ("libmodbus client (C)", &lib),
-            ("pymodbus sync", &pys),
-            ("pymodbus async", &pya),
-            ("mbpoll (10 ms poll delay)", &mbp),
-        ] {
-            println!("{}", row(n, f, &refs));
-        }
-        println!();
+        print_table("client", &clients, &figs, &[("libmodbus client", &figs[1]), ("echo floor", &floor_pty)]);
 
         // Servers under the libmodbus client, TCP.
-        let on = |s: &Option<Server>| -> Option<Fig> {
-            let t = s.as_ref()?.field("tcp");
-            let (h, p) = t.rsplit_once(':')?;
-            peer(cmd(&c_client, &["tcp", h, p, &r, &count, &secs]))
-        };
-        let plcsh_s = peer(cmd(&c_client, &["tcp", &p_host, &p_port, &r, &count, &secs]));
-        let lib_s = on(&c_tcp_srv);
-        let py_s = on(&py_srv);
-        let drv_on_lib = c_tcp_srv.as_ref().and_then(|s| {
-            let t = s.field("tcp");
-            plcsh_driver(&o, &format!("tcp://{t}?model=K205-16DT"), regs)
-        });
-        let refs = [("libmodbus server", &lib_s), ("pymodbus server", &py_s), ("echo floor", &floor_tcp)];
+        let figs = group(
+            &o,
+            &[
+                tcp_c(&p_tcp),
+                lib_tcp.as_deref().map(tcp_c).unwrap_or(Job::Missing),
+                py_tcp.as_deref().map(tcp_c).unwrap_or(Job::Missing),
+                lib_tcp
+                    .as_ref()
+                    .map(|t| Job::Driver(format!("tcp://{t}?model=K205-16DT"), regs))
+                    .unwrap_or(Job::Missing),
+            ],
+        );
         println!("## Servers under the libmodbus client, TCP, {regs} register(s)\n");
-        println!("{}", header("server", &refs));
-        println!("{}", row("plcsh sim serve", &plcsh_s, &refs));
-        println!("{}", row("libmodbus server (C)", &lib_s, &refs));
-        println!("{}", row("pymodbus server", &py_s, &refs));
-        println!("{}", row("(plcsh driver → libmodbus server)", &drv_on_lib, &refs));
-        println!();
+        print_table(
+            "server",
+            &["plcsh sim serve", "libmodbus server (C)", "pymodbus server", "(plcsh driver → libmodbus server)"],
+            &figs,
+            &[("libmodbus server", &figs[1]), ("pymodbus server", &figs[2]), ("echo floor", &floor_tcp)],
+        );
 
         // Servers under the libmodbus client, RTU on a pty.
-        let plcsh_s = peer(cmd(&c_client, &["rtu", &p_dev, "115200", &r, &count, &secs]));
-        let lib_s = c_rtu_srv.as_ref().and_then(|s| {
-            let d = s.field("path");
-            peer(cmd(&c_client, &["rtu", &d, "115200", &r, &count, &secs]))
-        });
-        let drv_on_lib = c_rtu_srv.as_ref().and_then(|s| {
-            let d = s.field("path");
-            plcsh_driver(&o, &format!("rtu:{d}?baud=115200&model=K205-16DT"), regs)
-        });
-        let refs = [("libmodbus server", &lib_s), ("echo floor", &floor_pty)];
+        let figs = group(
+            &o,
+            &[
+                rtu_c(&p_dev),
+                lib_dev.as_deref().map(rtu_c).unwrap_or(Job::Missing),
+                lib_dev
+                    .as_ref()
+                    .map(|d| Job::Driver(format!("rtu:{d}?baud=115200&model=K205-16DT"), regs))
+                    .unwrap_or(Job::Missing),
+            ],
+        );
         println!("## Servers under the libmodbus client, RTU on a pty, {regs} register(s)\n");
-        println!("{}", header("server", &refs));
-        println!("{}", row("plcsh sim serve", &plcsh_s, &refs));
-        println!("{}", row("libmodbus server (C)", &lib_s, &refs));
-        println!("{}", row("(plcsh driver → libmodbus server)", &drv_on_lib, &refs));
-        println!("| pymodbus server | not measured (its serial server opens a device path; a pty master has none) | | | | |");
-        println!();
+        print_table(
+            "server",
+            &["plcsh sim serve", "libmodbus server (C)", "(plcsh driver → libmodbus server)"],
+            &figs,
+            &[("libmodbus server", &figs[1]), ("echo floor", &floor_pty)],
+        );
+        println!("(pymodbus's serial server opens a device path, and a pty master has none: not measured on RTU.)\n");
     }
 
     // One-shot: process start → read 10 registers → exit.
     let url = format!("tcp://{p_tcp}?model=K205-16DT");
     let plcsh_once = one_shot(&o, || cmd(&o.plcsh, &["-c", "get VW0..VW18", "--device", &url]));
     let lib_once = one_shot(&o, || cmd(&c_client, &["tcp", &p_host, &p_port, "--once"]));
-    let mbp_once =
-        one_shot(&o, || cmd(Path::new("mbpoll"), &["-m", "tcp", "-p", &p_port, "-a", "1", "-r", "101", "-c", "10", "-1", &p_host]));
+    let mbp_once = one_shot(&o, || {
+        cmd(Path::new("mbpoll"), &["-m", "tcp", "-p", &p_port, "-a", "1", "-r", "101", "-c", "10", "-1", &p_host])
+    });
     let py_once = one_shot(&o, || py(&o, "client.py", &["once", "tcp", &p_tcp]));
     let refs = [("libmodbus one-shot", &lib_once)];
     println!("## One-shot: process start → read 10 registers (VW0..VW18) → exit, TCP, {} runs\n", o.runs);

@@ -28,6 +28,7 @@ use super::coalesce::{self, Costs};
 use super::modbus_map::{self, Data, DataMut, Span, Table, WordOrder};
 use super::operand::K2Operand;
 use super::space::K2Space;
+use crate::core::link::fd_stream::FdStream;
 use crate::core::link::traced::Traced;
 use crate::core::url::DeviceUrl;
 use crate::core::{Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
@@ -42,7 +43,7 @@ pub enum Link {
     /// Modbus TCP to `HOST:PORT`.
     Tcp { addr: String },
     /// Modbus RTU on a serial port.
-    Rtu { path: String, baud: u32, parity: tokio_serial::Parity, stop: tokio_serial::StopBits },
+    Rtu { path: String, baud: u32, parity: serialport::Parity, stop: serialport::StopBits },
     /// Modbus RTU frames over a TCP connection (a transparent serial gateway).
     RtuOverTcp { addr: String },
 }
@@ -134,17 +135,17 @@ impl K2Wire {
                         .hint("e.g. rtu:/dev/ttyUSB0?baud=115200&parity=none&stop=1&unit=1"));
                 }
                 let parity = match url.param("parity").unwrap_or("none").to_ascii_lowercase().as_str() {
-                    "none" | "n" => tokio_serial::Parity::None,
-                    "even" | "e" => tokio_serial::Parity::Even,
-                    "odd" | "o" => tokio_serial::Parity::Odd,
+                    "none" | "n" => serialport::Parity::None,
+                    "even" | "e" => serialport::Parity::Even,
+                    "odd" | "o" => serialport::Parity::Odd,
                     p => {
                         return Err(Error::usage(format!("`parity={p}` in {} is not a parity", url.text))
                             .hint("use parity=none, parity=even or parity=odd"))
                     }
                 };
                 let stop = match url.param("stop").unwrap_or("1") {
-                    "1" => tokio_serial::StopBits::One,
-                    "2" => tokio_serial::StopBits::Two,
+                    "1" => serialport::StopBits::One,
+                    "2" => serialport::StopBits::Two,
                     s => return Err(Error::usage(format!("`stop={s}` in {} is not 1 or 2", url.text))),
                 };
                 let baud = url.param_num::<u32>("baud")?.unwrap_or(9600);
@@ -221,13 +222,17 @@ impl K2Wire {
                     })
                 }
                 Link::Rtu { path, baud, parity, stop } => {
-                    let builder = tokio_serial::new(path.as_str(), *baud)
+                    // serialport configures the line (and holds it exclusively); FdStream
+                    // carries the frames (see core::link::fd_stream for why not SerialStream).
+                    let port = serialport::new(path.as_str(), *baud)
                         .parity(*parity)
                         .stop_bits(*stop)
-                        .data_bits(tokio_serial::DataBits::Eight);
-                    let port = tokio_serial::SerialStream::open(&builder)
+                        .data_bits(serialport::DataBits::Eight)
+                        .open_native()
                         .map_err(|e| Error::link(format!("cannot open the serial port {path}")).cause(e))?;
-                    Ok(tokio_modbus::client::rtu::attach_slave(Traced::new(port, name), slave))
+                    let stream = FdStream::new(port)
+                        .map_err(|e| Error::link(format!("cannot register the serial port {path}")).cause(e))?;
+                    Ok(tokio_modbus::client::rtu::attach_slave(Traced::new(stream, name), slave))
                 }
             }
         });
@@ -535,8 +540,8 @@ mod tests {
         let rtu = Link::Rtu {
             path: "/dev/null".into(),
             baud: 9600,
-            parity: tokio_serial::Parity::None,
-            stop: tokio_serial::StopBits::One,
+            parity: serialport::Parity::None,
+            stop: serialport::StopBits::One,
         };
         assert_eq!(rtu.default_timeout(), Duration::from_millis(200 + 586));
         for (url, needle) in [

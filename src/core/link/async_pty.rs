@@ -1,16 +1,16 @@
 //! The master side of a [`Pty`] as a tokio stream, for servers that answer a serial
 //! protocol on a pseudo-terminal (the K2 simulator's Modbus RTU server, a servo simulator).
 //!
-//! The stream is a `tokio_serial::SerialStream` (an `AsyncFd` over the descriptor,
-//! `AsyncRead + AsyncWrite`), which is also what tokio-modbus's RTU server takes. Each call
-//! to [`AsyncPty::stream`] wraps a fresh duplicate of the master descriptor, so a server
-//! whose stream ended on a protocol error can start again on the same pty without the
-//! clients noticing. The slave stays open for as long as the `AsyncPty` lives, so the
+//! The stream is an [`FdStream`] (`AsyncRead + AsyncWrite`, registered for reading only:
+//! see its module for why). Each call to [`AsyncPty::stream`] wraps a fresh duplicate of the
+//! master descriptor, so a server whose stream ended on an error can start again on the same
+//! pty without the clients noticing. The slave stays open for as long as the `AsyncPty` lives, so the
 //! master never reads EIO between client sessions.
 
+use super::fd_stream::FdStream;
 use super::pty::Pty;
 use crate::core::{Error, Result};
-use std::os::fd::{FromRawFd, IntoRawFd};
+use std::fs::File;
 use std::path::Path;
 
 /// A pseudo-terminal whose master side is served asynchronously.
@@ -39,13 +39,9 @@ impl AsyncPty {
     }
 
     /// A new async stream on the master side. Must be called inside a tokio runtime.
-    pub fn stream(&self) -> Result<tokio_serial::SerialStream> {
+    pub fn stream(&self) -> Result<FdStream<File>> {
         let fd = self.pty.master.try_clone().map_err(|e| Error::io("cannot duplicate the pty master").cause(e))?;
-        // SAFETY: `fd` is a freshly duplicated descriptor that we own; `into_raw_fd` gives
-        // up that ownership to the TTYPort, which closes it on drop.
-        let port = unsafe { serialport::TTYPort::from_raw_fd(fd.into_raw_fd()) };
-        tokio_serial::SerialStream::try_from(port)
-            .map_err(|e| Error::io("cannot register the pty master with tokio").cause(e))
+        FdStream::new(fd).map_err(|e| Error::io("cannot register the pty master with tokio").cause(e))
     }
 }
 

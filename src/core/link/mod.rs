@@ -3,5 +3,6 @@
 //! real port, a pty served by the simulator, or an in-memory pipe in tests.
 
 pub mod async_pty;
+pub mod fd_stream;
 pub mod pty;
 pub mod traced;

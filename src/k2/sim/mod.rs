@@ -7,6 +7,7 @@
 //! pulse outputs and counters. The Modbus server (`plcsh sim serve`) serves this same type.
 
 pub mod modbus_server;
+pub mod rtu_frame;
 
 use crate::core::{Clock, Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
 use crate::k2::catalog::{self, Model};

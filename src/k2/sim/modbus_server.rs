@@ -8,8 +8,8 @@
 //! §3.2.1) answered with *illegal data value*; a request outside one area with *illegal data
 //! address*; any other function with *illegal function*. A request for another unit id gets
 //! no reply at all, as from a real RTU slave (unit 0, broadcast, is executed without a
-//! reply). Transports are tokio-modbus's server skeletons; this module only adds the
-//! K2 behind them.
+//! reply). The TCP transports are tokio-modbus's server skeletons; RTU on a pty uses this
+//! crate's framing ([`super::rtu_frame`]) over a lean pty stream.
 //!
 //! Scans: a K2 serves its Modbus slave ports between program scans. The server therefore
 //! treats every request boundary as the end of a scan: before each request it brings the
@@ -20,6 +20,7 @@
 use crate::core::link::async_pty::AsyncPty;
 use crate::k2::modbus_map::{self, Exception, Table};
 use crate::k2::operand::Area;
+use crate::k2::sim::rtu_frame::{self, Frame};
 use crate::k2::sim::K2Sim;
 use std::future::{ready, Ready};
 use std::io;
@@ -211,16 +212,31 @@ pub async fn serve_rtu_over_tcp(listener: TcpListener, service: K2Service) -> io
     server.serve(&on_connected, |e| eprintln!("plcsh sim serve: RTU-over-TCP connection ended: {e}")).await
 }
 
-/// Serves Modbus RTU on a pseudo-terminal until the future is dropped. When garbage on the
-/// line makes the RTU framing give up, serving starts again on the same pty.
+/// Serves Modbus RTU on a pseudo-terminal until the future is dropped (framing in
+/// [`super::rtu_frame`]).
 pub async fn serve_rtu(pty: &AsyncPty, service: K2Service) -> io::Result<()> {
+    use tokio::io::{AsyncReadExt, AsyncWriteExt};
+    let mut s = pty.stream().map_err(|e| io::Error::other(e.to_string()))?;
+    let mut buf: Vec<u8> = Vec::with_capacity(2 * rtu_frame::MAX_FRAME);
+    let mut chunk = [0u8; 512];
     loop {
-        let stream = pty.stream().map_err(|e| io::Error::other(e.to_string()))?;
-        let server = tokio_modbus::server::rtu::Server::new(stream);
-        if let Err(e) = server.serve_forever(service.clone()).await {
-            eprintln!("plcsh sim serve: RTU on {}: {e}; listening again", pty.path().display());
-            // A failing line must not spin the CPU.
-            tokio::time::sleep(std::time::Duration::from_millis(10)).await;
+        let n = s.read(&mut chunk).await?;
+        if n == 0 {
+            return Err(io::Error::new(io::ErrorKind::UnexpectedEof, "the pty closed"));
+        }
+        buf.extend_from_slice(&chunk[..n]);
+        while let Some(frame) = rtu_frame::next_frame(&mut buf) {
+            let (unit, function, reply) = match frame {
+                Frame::Request { unit, request } => match service.handle(unit, &request) {
+                    Some(reply) => (unit, request.function_code().value(), reply),
+                    None => continue,
+                },
+                Frame::Refuse { unit, function, exception } if unit == service.unit() => {
+                    (unit, function, Err(exception))
+                }
+                Frame::Refuse { .. } => continue,
+            };
+            s.write_all(&rtu_frame::encode(unit, function, &reply)).await?;
         }
     }
 }
