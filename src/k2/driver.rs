@@ -212,7 +212,11 @@ impl K2Wire {
                         .map_err(|_| {
                             Error::link(format!("cannot connect to {addr}: no answer within {}", ms(timeout)))
                         })?
-                        .map_err(|e| Error::link(format!("cannot connect to {addr}")).cause(e))?;
+                        .map_err(|e| {
+                            Error::link(format!("cannot connect to {addr}")).cause(e).hint(
+                                "check that HOST:PORT is the PLC or gateway (a K204ET answers Modbus TCP on port 502), that it is powered and reachable (ping), and that no firewall blocks the port",
+                            )
+                        })?;
                     stream.set_nodelay(true).map_err(|e| Error::link("cannot set TCP_NODELAY").cause(e))?;
                     let t = Traced::new(stream, name);
                     Ok(if matches!(link, Link::Tcp { .. }) {
@@ -229,7 +233,11 @@ impl K2Wire {
                         .stop_bits(*stop)
                         .data_bits(serialport::DataBits::Eight)
                         .open_native()
-                        .map_err(|e| Error::link(format!("cannot open the serial port {path}")).cause(e))?;
+                        .map_err(|e| {
+                            Error::link(format!("cannot open the serial port {path}")).cause(e).hint(
+                                "check the port path (ls /dev/ttyUSB* /dev/serial/by-id), that no other program holds it, and that you may open it (the dialout group)",
+                            )
+                        })?;
                     let stream = FdStream::new(port)
                         .map_err(|e| Error::link(format!("cannot register the serial port {path}")).cause(e))?;
                     Ok(tokio_modbus::client::rtu::attach_slave(Traced::new(stream, name), slave))
@@ -241,6 +249,7 @@ impl K2Wire {
                 self.ctx = Some(c);
                 Ok(())
             }
+            Err(e) if e.hint.is_some() => Err(Failure::Link(e)),
             Err(e) => Err(Failure::Link(e.hint(self.link.hint()))),
         }
     }
@@ -286,7 +295,10 @@ impl K2Wire {
                 if attempts > 1 {
                     e.message.push_str(&format!(" ({attempts} attempts)"));
                 }
-                Failure::Link(e.hint(self.link.hint()))
+                if e.hint.is_none() {
+                    e = e.hint(self.link.hint());
+                }
+                Failure::Link(e)
             }
             f => f,
         })
