@@ -3,7 +3,7 @@
 # `bench_modbus` and prints the tables (Markdown). Not part of `cargo test` or .ci/run:
 # it installs packages and takes a few minutes. Loopback and pseudo-terminals only.
 #
-#   bench/run.sh                      # defaults: best of 3 runs of 1.5 s per figure
+#   bench/run.sh                      # defaults: best of 10 interleaved runs of 0.3 s per figure
 #   bench/run.sh --seconds 3 --rounds 5 --runs 50
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -226,19 +226,32 @@ fn mbpoll_rate(o: &Opts, args: &[String], regs: usize) -> Option<Fig> {
     Some(Fig { n: polls as f64, secs, p50: None, p99: None })
 }
 
-/// Wall time of whole processes (start → read 10 registers → exit), `runs` times.
-fn one_shot(o: &Opts, mut make: impl FnMut() -> Command) -> Option<Fig> {
-    let mut lat = Vec::new();
+/// Wall time of whole processes (start → read 10 registers → exit), `runs` times each,
+/// the programs taking turns so they see the same machine.
+fn one_shots(o: &Opts, makers: &[Box<dyn Fn() -> Command + '_>]) -> Vec<Option<Fig>> {
+    let mut lat: Vec<Option<Vec<f64>>> = vec![Some(Vec::new()); makers.len()];
     let start = Instant::now();
     for _ in 0..o.runs {
-        let t0 = Instant::now();
-        let st = make().stdout(Stdio::null()).stderr(Stdio::null()).status().ok()?;
-        if !st.success() {
-            return None;
+        for (k, make) in makers.iter().enumerate() {
+            let Some(l) = lat[k].as_mut() else { continue };
+            let t0 = Instant::now();
+            match make().stdout(Stdio::null()).stderr(Stdio::null()).status() {
+                Ok(st) if st.success() => l.push(t0.elapsed().as_secs_f64()),
+                _ => lat[k] = None,
+            }
         }
-        lat.push(t0.elapsed().as_secs_f64());
     }
-    Some(Fig::from_latencies(lat, start.elapsed().as_secs_f64()))
+    let secs = start.elapsed().as_secs_f64();
+    lat.into_iter()
+        .map(|l| {
+            l.map(|l| {
+                let total: f64 = l.iter().sum();
+                let mut f = Fig::from_latencies(l, secs);
+                f.secs = total; // runs/s of the program itself
+                f
+            })
+        })
+        .collect()
 }
 
 fn us(v: Option<f64>) -> String {
@@ -275,8 +288,8 @@ fn main() {
     let mut args = std::env::args().skip(1);
     let exe_dir = std::env::current_exe().ok().and_then(|p| p.parent().map(Path::to_path_buf)).unwrap_or_default();
     let mut o = Opts {
-        rounds: 3,
-        seconds: 1.5,
+        rounds: 10,
+        seconds: 0.3,
         count: 100_000,
         runs: 20,
         peers: PathBuf::from("target/bench"),
@@ -306,16 +319,16 @@ fn main() {
     let echo = o.peers.join("echo_floor");
 
     println!("# plcsh Modbus benchmark\n");
+    let load = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
+    println!("Load average when the run started: {}.\n", load.split_whitespace().take(3).collect::<Vec<_>>().join(" "));
     println!(
         "Each throughput figure: the best of {} interleaved runs of {} s (or {} transactions), one request in flight, loopback only; latencies are from that run.\n",
         o.rounds, o.seconds, o.count
     );
 
-    // The floor.
-    let floors = group(&o, &[job(&echo, &["tcp", &count, &secs]), job(&echo, &["pty", &count, &secs])]);
-    let (floor_tcp, floor_pty) = (floors[0].clone(), floors[1].clone());
-    println!("## Round-trip floor (12-byte echo)\n");
-    print_table("link", &["loopback TCP", "pty pair"], &floors, &[]);
+    let echo_tcp = job(&echo, &["tcp", &count, &secs]);
+    let echo_pty = job(&echo, &["pty", &count, &secs]);
+    let floor = "12-byte echo (the floor)";
 
     // Servers.
     let link = std::env::temp_dir().join(format!("plcsh-bench-k2-{}", std::process::id()));
@@ -335,7 +348,7 @@ fn main() {
     let py_tcp = py_srv.as_ref().map(|s| s.field("tcp"));
 
     let clients =
-        ["plcsh driver", "libmodbus client (C)", "pymodbus sync", "pymodbus async", "mbpoll (10 ms poll delay)"];
+        ["plcsh driver", "libmodbus client (C)", "pymodbus sync", "pymodbus async", "mbpoll (10 ms poll delay)", floor];
     for regs in [1usize, 100] {
         let r = regs.to_string();
         let tcp_c = |addr: &str| -> Job {
@@ -353,10 +366,11 @@ fn main() {
                 py_job(&o, "client.py", &["sync", "tcp", &p_tcp, &r, &count, &secs]),
                 py_job(&o, "client.py", &["async", "tcp", &p_tcp, &r, &count, &secs]),
                 Job::Mbpoll(vec!["-m".into(), "tcp".into(), "-p".into(), p_port.clone(), p_host.clone()], regs),
+                echo_tcp.clone(),
             ],
         );
         println!("## Clients → plcsh server, TCP, {regs} register(s)\n");
-        print_table("client", &clients, &figs, &[("libmodbus client", &figs[1]), ("echo floor", &floor_tcp)]);
+        print_table("client", &clients, &figs, &[("libmodbus client", &figs[1]), ("echo floor", &figs[5])]);
 
         // Clients on plcsh's server, RTU on the pty.
         let figs = group(
@@ -378,10 +392,11 @@ fn main() {
                     ],
                     regs,
                 ),
+                echo_pty.clone(),
             ],
         );
         println!("## Clients → plcsh server, RTU on a pty, {regs} register(s)\n");
-        print_table("client", &clients, &figs, &[("libmodbus client", &figs[1]), ("echo floor", &floor_pty)]);
+        print_table("client", &clients, &figs, &[("libmodbus client", &figs[1]), ("echo floor", &figs[5])]);
 
         // Servers under the libmodbus client, TCP.
         let figs = group(
@@ -394,14 +409,15 @@ fn main() {
                     .as_ref()
                     .map(|t| Job::Driver(format!("tcp://{t}?model=K205-16DT"), regs))
                     .unwrap_or(Job::Missing),
+                echo_tcp.clone(),
             ],
         );
         println!("## Servers under the libmodbus client, TCP, {regs} register(s)\n");
         print_table(
             "server",
-            &["plcsh sim serve", "libmodbus server (C)", "pymodbus server", "(plcsh driver → libmodbus server)"],
+            &["plcsh sim serve", "libmodbus server (C)", "pymodbus server", "(plcsh driver → libmodbus server)", floor],
             &figs,
-            &[("libmodbus server", &figs[1]), ("pymodbus server", &figs[2]), ("echo floor", &floor_tcp)],
+            &[("libmodbus server", &figs[1]), ("pymodbus server", &figs[2]), ("echo floor", &figs[4])],
         );
 
         // Servers under the libmodbus client, RTU on a pty.
@@ -414,37 +430,44 @@ fn main() {
                     .as_ref()
                     .map(|d| Job::Driver(format!("rtu:{d}?baud=115200&model=K205-16DT"), regs))
                     .unwrap_or(Job::Missing),
+                echo_pty.clone(),
             ],
         );
         println!("## Servers under the libmodbus client, RTU on a pty, {regs} register(s)\n");
         print_table(
             "server",
-            &["plcsh sim serve", "libmodbus server (C)", "(plcsh driver → libmodbus server)"],
+            &["plcsh sim serve", "libmodbus server (C)", "(plcsh driver → libmodbus server)", floor],
             &figs,
-            &[("libmodbus server", &figs[1]), ("echo floor", &floor_pty)],
+            &[("libmodbus server", &figs[1]), ("echo floor", &figs[3])],
         );
         println!("(pymodbus's serial server opens a device path, and a pty master has none: not measured on RTU.)\n");
     }
 
     // One-shot: process start → read 10 registers → exit.
     let url = format!("tcp://{p_tcp}?model=K205-16DT");
-    let plcsh_once = one_shot(&o, || cmd(&o.plcsh, &["-c", "get VW0..VW18", "--device", &url]));
-    let lib_once = one_shot(&o, || cmd(&c_client, &["tcp", &p_host, &p_port, "--once"]));
-    let mbp_once = one_shot(&o, || {
-        cmd(Path::new("mbpoll"), &["-m", "tcp", "-p", &p_port, "-a", "1", "-r", "101", "-c", "10", "-1", &p_host])
-    });
-    let py_once = one_shot(&o, || py(&o, "client.py", &["once", "tcp", &p_tcp]));
-    let refs = [("libmodbus one-shot", &lib_once)];
-    println!("## One-shot: process start → read 10 registers (VW0..VW18) → exit, TCP, {} runs\n", o.runs);
-    println!("{}", header("program", &refs).replace("tx/s", "runs/s").replace("p50", "median"));
-    for (n, f) in [
-        ("plcsh -c 'get VW0..VW18' --device tcp://…", &plcsh_once),
-        ("libmodbus client (C)", &lib_once),
-        ("mbpoll -1", &mbp_once),
-        ("pymodbus sync (python3 start included)", &py_once),
-    ] {
-        println!("{}", row(n, f, &refs));
-    }
+    let makers: Vec<Box<dyn Fn() -> Command + '_>> = vec![
+        Box::new(|| cmd(&o.plcsh, &["-c", "get VW0..VW18", "--device", &url])),
+        Box::new(|| cmd(&c_client, &["tcp", &p_host, &p_port, "--once"])),
+        Box::new(|| {
+            cmd(Path::new("mbpoll"), &["-m", "tcp", "-p", &p_port, "-a", "1", "-r", "101", "-c", "10", "-1", &p_host])
+        }),
+        Box::new(|| py(&o, "client.py", &["once", "tcp", &p_tcp])),
+        Box::new(|| cmd(Path::new("true"), &[])),
+    ];
+    let figs = one_shots(&o, &makers);
+    println!("## One-shot: process start → read 10 registers (VW0..VW18) → exit, TCP, {} runs each, interleaved\n", o.runs);
+    print_table(
+        "program",
+        &[
+            "plcsh -c 'get VW0..VW18' --device tcp://…",
+            "libmodbus client (C)",
+            "mbpoll -1",
+            "pymodbus sync (python3 start included)",
+            "(`true`: starting any process)",
+        ],
+        &figs,
+        &[("libmodbus one-shot", &figs[1])],
+    );
     drop(plcsh_srv);
     let _ = std::fs::remove_file(&link);
 }
