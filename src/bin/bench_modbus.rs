@@ -64,7 +64,6 @@ struct Opts {
 struct Server {
     child: Child,
     ready: Json,
-    name: &'static str,
 }
 
 impl Server {
@@ -74,9 +73,9 @@ impl Server {
         let mut line = String::new();
         BufReader::new(child.stdout.take()?).read_line(&mut line).ok()?;
         match serde_json::from_str(&line) {
-            Ok(ready) => Some(Server { child, ready, name }),
+            Ok(ready) => Some(Server { child, ready }),
             Err(_) => {
-                eprintln!("{name}: no readiness line (got {line:?})");
+                eprintln!("{name}: no readiness line (got {line:?}); left out of the tables");
                 let _ = child.kill();
                 None
             }
@@ -91,7 +90,6 @@ impl Drop for Server {
     fn drop(&mut self) {
         let _ = self.child.kill();
         let _ = self.child.wait();
-        let _ = self.name;
     }
 }
 
@@ -169,7 +167,9 @@ fn py(o: &Opts, script: &str, args: &[&str]) -> Command {
 }
 
 fn print_table(first: &str, names: &[&str], figs: &[Option<Fig>], refs: &[(&str, &Option<Fig>)]) {
-    println!("{}", header(first, refs));
+    let h = header(first, refs);
+    let h = if first == "program" { h.replace("| tx/s | p50 |", "| runs/s | median |") } else { h };
+    println!("{h}");
     for (n, f) in names.iter().zip(figs) {
         println!("{}", row(n, f, refs));
     }
@@ -455,7 +455,10 @@ fn main() {
         Box::new(|| cmd(Path::new("true"), &[])),
     ];
     let figs = one_shots(&o, &makers);
-    println!("## One-shot: process start → read 10 registers (VW0..VW18) → exit, TCP, {} runs each, interleaved\n", o.runs);
+    println!(
+        "## One-shot: process start → read 10 registers (VW0..VW18) → exit, TCP, {} runs each, interleaved\n",
+        o.runs
+    );
     print_table(
         "program",
         &[
