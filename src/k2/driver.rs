@@ -119,6 +119,29 @@ pub struct K2Wire {
     rt: tokio::runtime::Runtime,
     ctx: Option<Context>,
     requests: u64,
+    /// The plan of the last read batch.
+    last_read: Option<ReadPlan>,
+}
+
+/// A read batch mapped and planned (everything but the wire).
+struct ReadPlan {
+    ops: Vec<Operand>,
+    k2: Vec<K2Operand>,
+    spans: Vec<Span>,
+    requests: Vec<Span>,
+    /// For each operand: the request holding it and its offset there.
+    at: Vec<(usize, usize)>,
+}
+
+impl ReadPlan {
+    /// Maps every operand (refusing SM, T, C before anything is sent) and plans the requests.
+    fn new(space: &K2Space, ops: &[Operand], costs: Costs) -> Result<ReadPlan> {
+        let k2: Vec<K2Operand> = ops.iter().map(|o| K2Operand::from_key(o.key)).collect();
+        let spans: Vec<Span> = k2.iter().map(|o| modbus_map::locate_read(space, o)).collect::<Result<_>>()?;
+        let requests = coalesce::plan_reads(&spans, costs);
+        let at = spans.iter().map(|s| coalesce::find(&requests, s).expect("every span is planned")).collect();
+        Ok(ReadPlan { ops: ops.to_vec(), k2, spans, requests, at })
+    }
 }
 
 impl K2Wire {
@@ -192,6 +215,7 @@ impl K2Wire {
             rt,
             ctx: None,
             requests: 0,
+            last_read: None,
         })
     }
 
@@ -423,20 +447,25 @@ impl Device for K2Wire {
     }
 
     fn read(&mut self, ops: &[Operand]) -> Result<Vec<Value>> {
-        let k2: Vec<K2Operand> = ops.iter().map(|o| K2Operand::from_key(o.key)).collect();
-        let spans: Vec<Span> = k2.iter().map(|o| modbus_map::locate_read(&self.space, o)).collect::<Result<_>>()?;
-        let plan = coalesce::plan_reads(&spans, self.link.costs());
-        let blocks = self.read_plan(&plan, &spans, &k2)?;
+        // Polling loops read the same batch again and again: keep its plan.
+        let plan = match self.last_read.take() {
+            Some(p) if p.ops == ops => p,
+            _ => ReadPlan::new(&self.space, ops, self.link.costs())?,
+        };
+        let blocks = self.read_plan(&plan.requests, &plan.spans, &plan.k2);
         let order = self.settings.word_order;
-        Ok(ops
-            .iter()
-            .zip(&k2)
-            .zip(&spans)
-            .map(|((o, k), s)| {
-                let (r, off) = coalesce::find(&plan, s).expect("every span is planned");
-                o.dtype.decode(modbus_map::decode(k, slice(&blocks[r], off, s.count as usize), order))
-            })
-            .collect())
+        let values = blocks.map(|blocks| {
+            ops.iter()
+                .zip(&plan.k2)
+                .zip(&plan.spans)
+                .zip(&plan.at)
+                .map(|(((o, k), s), &(r, off))| {
+                    o.dtype.decode(modbus_map::decode(k, slice(&blocks[r], off, s.count as usize), order))
+                })
+                .collect()
+        });
+        self.last_read = Some(plan);
+        values
     }
 
     fn write(&mut self, items: &[(Operand, Value)]) -> Result<()> {
