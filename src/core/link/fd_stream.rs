@@ -28,11 +28,12 @@ impl<T: AsRawFd> FdStream<T> {
     pub fn new(owner: T) -> io::Result<FdStream<T>> {
         let raw = owner.as_raw_fd();
         // SAFETY: fcntl on a descriptor `owner` keeps open for as long as it lives.
-        unsafe {
-            let flags = libc_fcntl(raw, nix::libc::F_GETFL, 0);
-            if flags < 0 || libc_fcntl(raw, nix::libc::F_SETFL, flags | nix::libc::O_NONBLOCK) < 0 {
-                return Err(io::Error::last_os_error());
-            }
+        let ok = unsafe {
+            let flags = nix::libc::fcntl(raw, nix::libc::F_GETFL);
+            flags >= 0 && nix::libc::fcntl(raw, nix::libc::F_SETFL, flags | nix::libc::O_NONBLOCK) >= 0
+        };
+        if !ok {
+            return Err(io::Error::last_os_error());
         }
         // SAFETY: `owner` owns a valid descriptor and keeps it open, unreplaced, for as long
         // as the AsyncFd holds it.
@@ -42,10 +43,6 @@ impl<T: AsRawFd> FdStream<T> {
     pub fn get_ref(&self) -> &T {
         self.fd.get_ref()
     }
-}
-
-unsafe fn libc_fcntl(fd: i32, cmd: i32, arg: i32) -> i32 {
-    nix::libc::fcntl(fd, cmd, arg)
 }
 
 impl<T: AsRawFd> std::fmt::Debug for FdStream<T> {
