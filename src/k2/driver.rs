@@ -46,6 +46,9 @@ pub enum Link {
     Rtu { path: String, baud: u32, parity: serialport::Parity, stop: serialport::StopBits },
     /// Modbus RTU frames over a TCP connection (a transparent serial gateway).
     RtuOverTcp { addr: String },
+    /// A byte stream handed over by the caller ([`K2Wire::attach`]): RTU or TCP framing.
+    /// It cannot be reopened after a link failure.
+    Attached { rtu: bool },
 }
 
 impl Link {
@@ -61,7 +64,7 @@ impl Link {
 
     fn costs(&self) -> Costs {
         match self {
-            Link::Tcp { .. } => Costs::TCP,
+            Link::Tcp { .. } | Link::Attached { rtu: false } => Costs::TCP,
             _ => Costs::RTU,
         }
     }
@@ -72,6 +75,7 @@ impl Link {
             Link::Tcp { .. } => "check the unit id (unit=), that HOST:PORT is the PLC (a K204ET answers Modbus TCP on port 502) and that it is powered and reachable (ping)",
             Link::Rtu { .. } => "check the unit id (unit= is the PLC port's station number), the wiring (RS485 A/B, ground), the port settings (baud=, parity=, stop=) against the PLC port's, and the port path",
             Link::RtuOverTcp { .. } => "check the unit id (unit=), the gateway's address and port, and that its serial settings (baud, parity, stop bits) match the PLC port's",
+            Link::Attached { .. } => "check the unit id and what is at the other end of the stream",
         }
     }
 }
@@ -219,6 +223,24 @@ impl K2Wire {
         })
     }
 
+    /// A driver on a byte stream the caller opened (any transport, an in-memory pipe in
+    /// tests), with RTU (`rtu = true`) or Modbus TCP framing. Call it inside the runtime the
+    /// stream belongs to, if any; the driver polls it on its own runtime.
+    pub fn attach<T>(transport: T, rtu: bool, model: &'static Model, settings: Settings, name: String) -> Result<K2Wire>
+    where
+        T: tokio::io::AsyncRead + tokio::io::AsyncWrite + Send + Unpin + 'static,
+    {
+        let mut dev = K2Wire::with_link(Link::Attached { rtu }, model, settings, name.clone())?;
+        let t = Traced::new(transport, name);
+        let slave = Slave(dev.settings.unit);
+        dev.ctx = Some(if rtu {
+            tokio_modbus::client::rtu::attach_slave(t, slave)
+        } else {
+            tokio_modbus::client::tcp::attach_slave(t, slave)
+        });
+        Ok(dev)
+    }
+
     pub fn settings(&self) -> &Settings {
         &self.settings
     }
@@ -248,6 +270,9 @@ impl K2Wire {
                     } else {
                         tokio_modbus::client::rtu::attach_slave(t, slave)
                     })
+                }
+                Link::Attached { .. } => {
+                    Err(Error::link("the attached stream failed and cannot be reopened by plcsh"))
                 }
                 Link::Rtu { path, baud, parity, stop } => {
                     // serialport configures the line (and holds it exclusively); FdStream
@@ -569,6 +594,37 @@ impl super::K2Ops for K2Wire {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The driver against the simulator's RTU server over an in-memory pipe: the same map
+    /// in both directions, no sockets.
+    #[test]
+    fn driver_and_simulator_server_agree_over_a_pipe() {
+        use crate::core::Clock;
+        use crate::k2::sim::modbus_server::{serve_rtu_stream, K2Service};
+        use std::sync::{Arc, Mutex};
+        let (client, server) = tokio::io::duplex(1024);
+        let model = catalog::find("K205-16DT").unwrap();
+        let sim = Arc::new(Mutex::new(crate::k2::sim::K2Sim::new(model, Clock::stepped())));
+        let service = K2Service::new(sim.clone(), 1);
+        let srv = std::thread::spawn(move || {
+            let rt = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
+            let _ = rt.block_on(serve_rtu_stream(server, service));
+        });
+        let settings =
+            Settings { unit: 1, word_order: WordOrder::HighFirst, timeout: Duration::from_secs(2), retries: 0 };
+        let mut dev = K2Wire::attach(client, true, model, settings, "pipe".into()).unwrap();
+        let ops = dev.operands().parse("VW300").unwrap();
+        let more = dev.operands().parse("VB301").unwrap();
+        dev.write(&[(ops[0], Value::Int(0x1234)), (more[0], Value::Int(0xAB))]).unwrap();
+        assert_eq!(dev.read(&ops).unwrap(), vec![Value::Int(0x12AB)]);
+        assert_eq!(&sim.lock().unwrap().mem.v[300..302], &[0x12, 0xAB], "the simulator holds what the driver wrote");
+        assert_eq!(dev.requests(), 3, "one read for VB301's read-modify-write, one write of register 250, one read");
+        let sm = dev.operands().parse("SMB67").unwrap();
+        assert_eq!(dev.read(&sm).unwrap_err().kind, ErrorKind::Unsupported);
+        assert_eq!(dev.requests(), 3, "nothing was sent for SMB67");
+        drop(dev);
+        srv.join().unwrap();
+    }
 
     #[test]
     fn urls_give_links_defaults_and_clear_errors() {

@@ -215,14 +215,23 @@ pub async fn serve_rtu_over_tcp(listener: TcpListener, service: K2Service) -> io
 /// Serves Modbus RTU on a pseudo-terminal until the future is dropped (framing in
 /// [`super::rtu_frame`]).
 pub async fn serve_rtu(pty: &AsyncPty, service: K2Service) -> io::Result<()> {
+    let s = pty.stream().map_err(|e| io::Error::other(e.to_string()))?;
+    serve_rtu_stream(s, service).await
+}
+
+/// Serves Modbus RTU frames on any byte stream (a pty, an in-memory pipe in tests) until the
+/// stream ends.
+pub async fn serve_rtu_stream<S>(mut s: S, service: K2Service) -> io::Result<()>
+where
+    S: tokio::io::AsyncRead + tokio::io::AsyncWrite + Unpin,
+{
     use tokio::io::{AsyncReadExt, AsyncWriteExt};
-    let mut s = pty.stream().map_err(|e| io::Error::other(e.to_string()))?;
     let mut buf: Vec<u8> = Vec::with_capacity(2 * rtu_frame::MAX_FRAME);
     let mut chunk = [0u8; 512];
     loop {
         let n = s.read(&mut chunk).await?;
         if n == 0 {
-            return Err(io::Error::new(io::ErrorKind::UnexpectedEof, "the pty closed"));
+            return Err(io::Error::new(io::ErrorKind::UnexpectedEof, "the stream closed"));
         }
         buf.extend_from_slice(&chunk[..n]);
         while let Some(frame) = rtu_frame::next_frame(&mut buf) {
