@@ -38,7 +38,7 @@ complete -c plcsh -n "__fish_plcsh_needs_command" -s V -l version -d 'Print vers
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "models" -d 'List the K2 model catalogue (areas, I/O, counters, pulse outputs, manual disagreements)'
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "devices" -d 'List open devices and the device profiles (devices.toml), with problems in that file'
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "completions" -d 'Print a shell completion script (bash, zsh, fish, powershell), or write them all'
-complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "sim" -d 'Simulators for other programs (`sim serve`)'
+complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "sim" -d 'Simulators for other programs (`sim serve`). Simulator services: `sim serve` puts the simulated K2 on Modbus TCP / RTU and drives on a pty'
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "agent" -d 'The PLC-side helper program that gives plcsh SM registers and instructions on a real K2'
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "run" -d 'Run a Lua script: plcsh [--time stepped] [--device NAME=URL] run SCRIPT.lua [ARGS…]'
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
@@ -79,8 +79,13 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_sub
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve help" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve help" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve help" -s h -l help -d 'Print help (see more with \'--help\')'
-complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve help" -f -a "serve" -d 'Serve simulators on pseudo-terminals; prints one JSON readiness line'
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve help" -f -a "serve" -d 'Serve the simulator over Modbus TCP, Modbus RTU on a pseudo-terminal, and/or RTU over TCP'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l tcp -d 'Modbus TCP on ADDR (`127.0.0.1:5020`, `5020`, `0` for a free port; loopback unless a host is given)' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l rtu-pty -d 'Modbus RTU on a new pseudo-terminal, with a symlink to its device at LINK' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l rtu-tcp -d 'Modbus RTU frames over TCP on ADDR (as a serial-to-Ethernet gateway carries them)' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l unit -d 'Modbus unit id (slave address) the K2 answers to; requests for other ids get no reply' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l agent -d 'Run the PLC-side helper program (lib/k2_agent.il) with its mailbox at this V address' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l servo-pty -d 'Serve simulated Kinco servo drives on a new pseudo-terminal; LINK becomes a symlink to it' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l servo-id -d 'Drive ids on the servo line (several drives share it)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l model -d 'Model of the default simulated PLC' -r
@@ -93,7 +98,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -s h -l help -d 'Print help (see more with \'--help\')'
-complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from help" -f -a "serve" -d 'Serve simulators on pseudo-terminals; prints one JSON readiness line'
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from help" -f -a "serve" -d 'Serve the simulator over Modbus TCP, Modbus RTU on a pseudo-terminal, and/or RTU over TCP'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
@@ -130,9 +135,9 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand run" -s h -l help -d 'Print 
 complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices completions sim agent run help" -f -a "models" -d 'List the K2 model catalogue (areas, I/O, counters, pulse outputs, manual disagreements)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices completions sim agent run help" -f -a "devices" -d 'List open devices and the device profiles (devices.toml), with problems in that file'
 complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices completions sim agent run help" -f -a "completions" -d 'Print a shell completion script (bash, zsh, fish, powershell), or write them all'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices completions sim agent run help" -f -a "sim" -d 'Simulators for other programs (`sim serve`)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices completions sim agent run help" -f -a "sim" -d 'Simulators for other programs (`sim serve`). Simulator services: `sim serve` puts the simulated K2 on Modbus TCP / RTU and drives on a pty'
 complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices completions sim agent run help" -f -a "agent" -d 'The PLC-side helper program that gives plcsh SM registers and instructions on a real K2'
 complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices completions sim agent run help" -f -a "run" -d 'Run a Lua script: plcsh [--time stepped] [--device NAME=URL] run SCRIPT.lua [ARGS…]'
 complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices completions sim agent run help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and __fish_seen_subcommand_from sim" -f -a "serve" -d 'Serve simulators on pseudo-terminals; prints one JSON readiness line'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and __fish_seen_subcommand_from sim" -f -a "serve" -d 'Serve the simulator over Modbus TCP, Modbus RTU on a pseudo-terminal, and/or RTU over TCP'
 complete -c plcsh -n "__fish_plcsh_using_subcommand help; and __fish_seen_subcommand_from agent" -f -a "il" -d 'Print the helper program (K2 instruction list) for KincoBuilder'

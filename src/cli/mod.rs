@@ -73,20 +73,15 @@ pub enum Sub {
         write: Option<std::path::PathBuf>,
     },
     /// Simulators for other programs (`sim serve`).
+    /// Simulator services: `sim serve` puts the simulated K2 on Modbus TCP / RTU and drives on a pty.
     Sim {
         #[command(subcommand)]
-        cmd: SimCmd,
+        cmd: serve::SimCmd,
     },
     /// The PLC-side helper program that gives plcsh SM registers and instructions on a real K2.
     Agent(agent::AgentArgs),
     /// Run a Lua script: plcsh [--time stepped] [--device NAME=URL] run SCRIPT.lua [ARGS…]
     Run(run::RunArgs),
-}
-
-#[derive(Subcommand, Debug)]
-pub enum SimCmd {
-    /// Serve simulators on pseudo-terminals; prints one JSON readiness line.
-    Serve(serve::ServeArgs),
 }
 
 /// Splits `NAME=URL` (or a bare URL, named `plc`; or a bare profile name, named after itself).
@@ -178,7 +173,7 @@ pub fn main() -> i32 {
             }
             Sub::Completions { shell, write } => completions::run(*shell, write.as_deref(), &mut out),
             Sub::Devices => i32::from(!shell.run_line("devices", &mut out)),
-            Sub::Sim { cmd: SimCmd::Serve(a) } => serve::run(a),
+            Sub::Sim { cmd: serve::SimCmd::Serve(args) } => serve::run(&cli, args, style, &mut out),
             Sub::Agent(a) => agent::run(a, &mut out),
             Sub::Run(args) => run::main(&mut shell, args, style),
         };

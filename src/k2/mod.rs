@@ -3,9 +3,12 @@
 
 pub mod agent;
 pub mod catalog;
+pub mod coalesce;
+pub mod driver;
 pub mod helpers;
 pub mod instr;
 pub mod memory;
+pub mod modbus_map;
 pub mod operand;
 pub mod sim;
 pub mod sm_map;
@@ -92,4 +95,9 @@ fn not_here(what: &str) -> Error {
 /// Opens a K2 device from a URL the session recognised as K2 (`sim:MODEL`).
 pub fn open_sim(model: &str, clock: crate::core::Clock) -> crate::core::Result<Box<dyn Device>> {
     Ok(Box::new(sim::open(model, clock)?))
+}
+
+/// Opens a real K2 (or a served simulator) from `tcp://`, `rtu:` or `rtu+tcp://` URLs.
+pub fn open_wire(url: &crate::core::url::DeviceUrl) -> crate::core::Result<Box<dyn Device>> {
+    Ok(Box::new(driver::K2Wire::open(url)?))
 }

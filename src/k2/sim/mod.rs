@@ -16,6 +16,9 @@ pub mod pto;
 pub mod rtc;
 pub mod state;
 
+pub mod modbus_server;
+pub mod rtu_frame;
+
 use crate::core::{Clock, Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
 use crate::k2::catalog::{self, Model};
 use crate::k2::instr::{self, Event, EventKind, EventMatch, RtcTime};

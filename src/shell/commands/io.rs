@@ -65,12 +65,30 @@ fn read_values(sh: &mut Shell, args: &Args) -> Result<(Option<String>, Vec<crate
     Ok((device, values))
 }
 
+/// Requests sent on the wire so far, over every open device.
+fn requests_total(sh: &Shell) -> u64 {
+    sh.session.entries().iter().map(|e| e.device.requests()).sum()
+}
+
+/// With `--verbose`: how many requests the command sent (stderr, and `requests` in JSON).
+fn count_requests(sh: &Shell, before: u64, o: Outcome) -> Outcome {
+    if !sh.verbose {
+        return o;
+    }
+    let n = requests_total(sh).saturating_sub(before);
+    if !sh.style.json {
+        eprintln!("{}: {n} request(s) on the wire", o.cmd);
+    }
+    o.with("requests", n)
+}
+
 fn get(sh: &mut Shell, args: Args) -> Result<Outcome> {
+    let before = requests_total(sh);
     let (device, values) = read_values(sh, &args)?;
     let mut o = Outcome::new("get");
     o.device = device;
     o.values = values;
-    Ok(o)
+    Ok(count_requests(sh, before, o))
 }
 
 fn set(sh: &mut Shell, args: Args) -> Result<Outcome> {
@@ -94,14 +112,16 @@ fn set(sh: &mut Shell, args: Args) -> Result<Outcome> {
             value_column: column + eq + 1 + vlead,
         });
     }
+    let before = requests_total(sh);
     let writes = sh.session.set(&items)?;
     let mut o = Outcome::new("set");
     o.device = writes.first().map(|(d, _)| sh.session.entries()[*d].name.clone());
     o.writes = writes.into_iter().map(|(_, r)| r).collect();
-    Ok(o.quiet())
+    Ok(count_requests(sh, before, o.quiet()))
 }
 
 fn read(sh: &mut Shell, args: Args) -> Result<Outcome> {
+    let before = requests_total(sh);
     let (device, values) = read_values(sh, &args)?;
     let rows = values
         .iter()
@@ -121,5 +141,5 @@ fn read(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let mut o = Outcome::new("read").table(&["operand", "value", "type", "hex", "binary"], rows);
     o.device = device;
     o.values = values;
-    Ok(o)
+    Ok(count_requests(sh, before, o))
 }

@@ -1,0 +1,657 @@
+//! The K2 wire driver: a real K2 (or `plcsh sim serve`, or any K2-compatible Modbus
+//! server) over Modbus TCP (`tcp://HOST:PORT`), Modbus RTU on a serial port
+//! (`rtu:/dev/ttyUSB0?baud=…`) or RTU through a serial-to-Ethernet gateway
+//! (`rtu+tcp://HOST:PORT`), with the same operand names as the simulator.
+//!
+//! How a batch goes on the wire:
+//! 1. Every operand is mapped first ([`super::modbus_map`]); SM, T and C (not in the K2
+//!    Modbus map) and writes to inputs are refused before anything is sent.
+//! 2. Reads are coalesced ([`super::coalesce`]): the fewest, cheapest requests the limits
+//!    allow, one function code per table.
+//! 3. Writes keep their order. A byte, a bit or an odd-address word in V or AQ is a
+//!    read-modify-write of the enclosing registers: the registers are read (coalesced)
+//!    before the first write, patched, and written back. Between that read and the write
+//!    the PLC program may change the other byte of the register, and that change is then
+//!    overwritten (see README, "Byte and bit writes on a live PLC"). Coils are written bit
+//!    by bit and need no read.
+//!
+//! Failures: a Modbus exception is the PLC refusing (kind `refused`), reported by name with
+//! the operand, never retried. Link failures (no answer within the timeout, a dropped TCP
+//! connection, a garbled reply) are retried with backoff after reconnecting (reopening the
+//! port, which also drops a late reply), and reported as kind `link` naming what to check.
+//!
+//! The `Device` trait is synchronous; the driver owns a current-thread tokio runtime and
+//! blocks on it per request. Every frame is reported to [`crate::core::trace`].
+
+use super::catalog::{self, Model};
+use super::coalesce::{self, Costs};
+use super::modbus_map::{self, Data, DataMut, Span, Table, WordOrder};
+use super::operand::K2Operand;
+use super::space::K2Space;
+use crate::core::link::fd_stream::FdStream;
+use crate::core::link::traced::Traced;
+use crate::core::url::DeviceUrl;
+use crate::core::{Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
+use std::collections::HashMap;
+use std::time::Duration;
+use tokio_modbus::client::{Client, Context};
+use tokio_modbus::{ExceptionCode, Request, Response, Slave};
+
+/// How the PLC is reached.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Link {
+    /// Modbus TCP to `HOST:PORT`.
+    Tcp { addr: String },
+    /// Modbus RTU on a serial port.
+    Rtu { path: String, baud: u32, parity: serialport::Parity, stop: serialport::StopBits },
+    /// Modbus RTU frames over a TCP connection (a transparent serial gateway).
+    RtuOverTcp { addr: String },
+    /// A byte stream handed over by the caller ([`K2Wire::attach`]): RTU or TCP framing.
+    /// It cannot be reopened after a link failure.
+    Attached { rtu: bool },
+}
+
+impl Link {
+    /// The default per-request timeout: a second on TCP (gateways add the serial time);
+    /// on a serial line 200 ms of PLC turnaround plus the time a maximal request and
+    /// reply (2 × 256 characters of 11 bits) take at the baud rate.
+    pub fn default_timeout(&self) -> Duration {
+        match self {
+            Link::Rtu { baud, .. } => Duration::from_millis(200 + 512 * 11 * 1000 / (*baud).max(1) as u64),
+            _ => Duration::from_secs(1),
+        }
+    }
+
+    fn costs(&self) -> Costs {
+        match self {
+            Link::Tcp { .. } | Link::Attached { rtu: false } => Costs::TCP,
+            _ => Costs::RTU,
+        }
+    }
+
+    /// What to check when the PLC does not answer.
+    fn hint(&self) -> &'static str {
+        match self {
+            Link::Tcp { .. } => "check the unit id (unit=), that HOST:PORT is the PLC (a K204ET answers Modbus TCP on port 502) and that it is powered and reachable (ping)",
+            Link::Rtu { .. } => "check the unit id (unit= is the PLC port's station number), the wiring (RS485 A/B, ground), the port settings (baud=, parity=, stop=) against the PLC port's, and the port path",
+            Link::RtuOverTcp { .. } => "check the unit id (unit=), the gateway's address and port, and that its serial settings (baud, parity, stop bits) match the PLC port's",
+            Link::Attached { .. } => "check the unit id and what is at the other end of the stream",
+        }
+    }
+}
+
+/// Per-device settings from the URL.
+#[derive(Clone, Debug)]
+pub struct Settings {
+    pub unit: u8,
+    pub word_order: WordOrder,
+    pub timeout: Duration,
+    /// Further attempts after a link failure (not after a Modbus exception).
+    pub retries: u32,
+}
+
+/// Parses `timeout=`: milliseconds, or a duration with a unit (`500ms`, `2s`).
+fn parse_timeout(text: &str) -> Result<Duration> {
+    let us = match text.trim().parse::<u64>() {
+        Ok(ms) => ms as i64 * 1000,
+        Err(_) => crate::core::literal::parse_duration_us(text).map_err(Error::usage)?,
+    };
+    if us <= 0 {
+        return Err(Error::usage(format!("`timeout={text}` must be more than zero")));
+    }
+    Ok(Duration::from_micros(us as u64))
+}
+
+/// The data of one read request.
+enum Block {
+    Bits(Vec<bool>),
+    Words(Vec<u16>),
+}
+
+/// A failed request, before it is put in the user's terms.
+enum Failure {
+    Exception(ExceptionCode),
+    Link(Error),
+}
+
+/// A K2 over Modbus.
+pub struct K2Wire {
+    info: DeviceInfo,
+    space: K2Space,
+    link: Link,
+    settings: Settings,
+    rt: tokio::runtime::Runtime,
+    ctx: Option<Context>,
+    requests: u64,
+    /// The plan of the last read batch.
+    last_read: Option<ReadPlan>,
+}
+
+/// A read batch mapped and planned (everything but the wire).
+struct ReadPlan {
+    ops: Vec<Operand>,
+    k2: Vec<K2Operand>,
+    spans: Vec<Span>,
+    requests: Vec<Span>,
+    /// For each operand: the request holding it and its offset there.
+    at: Vec<(usize, usize)>,
+}
+
+impl ReadPlan {
+    /// Maps every operand (refusing SM, T, C before anything is sent) and plans the requests.
+    fn new(space: &K2Space, ops: &[Operand], costs: Costs) -> Result<ReadPlan> {
+        let k2: Vec<K2Operand> = ops.iter().map(|o| K2Operand::from_key(o.key)).collect();
+        let spans: Vec<Span> = k2.iter().map(|o| modbus_map::locate_read(space, o)).collect::<Result<_>>()?;
+        let requests = coalesce::plan_reads(&spans, costs);
+        let at = spans.iter().map(|s| coalesce::find(&requests, s).expect("every span is planned")).collect();
+        Ok(ReadPlan { ops: ops.to_vec(), k2, spans, requests, at })
+    }
+}
+
+impl K2Wire {
+    /// Opens `tcp://…`, `rtu:…` or `rtu+tcp://…` and connects.
+    pub fn open(url: &DeviceUrl) -> Result<K2Wire> {
+        let mut known = vec!["unit", "model", "word_order", "timeout", "retries"];
+        let link = match url.scheme.as_str() {
+            "tcp" => Link::Tcp { addr: with_port(&url.target) },
+            "rtu+tcp" => Link::RtuOverTcp { addr: with_port(&url.target) },
+            "rtu" => {
+                known.extend(["baud", "parity", "stop"]);
+                if url.target.is_empty() {
+                    return Err(Error::usage(format!("{} names no serial port", url.text))
+                        .hint("e.g. rtu:/dev/ttyUSB0?baud=115200&parity=none&stop=1&unit=1"));
+                }
+                let parity = match url.param("parity").unwrap_or("none").to_ascii_lowercase().as_str() {
+                    "none" | "n" => serialport::Parity::None,
+                    "even" | "e" => serialport::Parity::Even,
+                    "odd" | "o" => serialport::Parity::Odd,
+                    p => {
+                        return Err(Error::usage(format!("`parity={p}` in {} is not a parity", url.text))
+                            .hint("use parity=none, parity=even or parity=odd"))
+                    }
+                };
+                let stop = match url.param("stop").unwrap_or("1") {
+                    "1" => serialport::StopBits::One,
+                    "2" => serialport::StopBits::Two,
+                    s => return Err(Error::usage(format!("`stop={s}` in {} is not 1 or 2", url.text))),
+                };
+                let baud = url.param_num::<u32>("baud")?.unwrap_or(9600);
+                if baud == 0 {
+                    return Err(Error::usage(format!("`baud=0` in {} is not a baud rate", url.text)));
+                }
+                Link::Rtu { path: url.target.clone(), baud, parity, stop }
+            }
+            s => return Err(Error::usage(format!("`{s}:` is not a K2 wire scheme"))),
+        };
+        url.expect_params(&known)?;
+        let default_model = if matches!(link, Link::Tcp { .. }) { "K204ET-16DT" } else { catalog::DEFAULT_MODEL };
+        let model = catalog::lookup(url.param("model").unwrap_or(default_model))?;
+        let unit = url.param_num::<u8>("unit")?.unwrap_or(1);
+        if unit == 0 || unit > 247 {
+            return Err(Error::usage(format!("`unit={unit}` in {} is not a Modbus unit id", url.text))
+                .hint("unit ids are 1…247 (0 is broadcast, which gets no reply)"));
+        }
+        let settings = Settings {
+            unit,
+            word_order: url.param("word_order").map(WordOrder::parse).transpose()?.unwrap_or_default(),
+            timeout: url.param("timeout").map(parse_timeout).transpose()?.unwrap_or_else(|| link.default_timeout()),
+            retries: url.param_num::<u32>("retries")?.unwrap_or(2),
+        };
+        let mut dev = K2Wire::with_link(link, model, settings, url.text.clone())?;
+        dev.connect().map_err(|e| match e {
+            Failure::Link(e) => e,
+            Failure::Exception(_) => unreachable!("connecting sends no request"),
+        })?;
+        Ok(dev)
+    }
+
+    /// A driver for `link` that connects on first use.
+    pub fn with_link(link: Link, model: &'static Model, settings: Settings, name: String) -> Result<K2Wire> {
+        let rt = tokio::runtime::Builder::new_current_thread()
+            .enable_all()
+            .build()
+            .map_err(|e| Error::io("cannot start the driver's runtime").cause(e))?;
+        Ok(K2Wire {
+            info: DeviceInfo { family: "k2", model: model.name.to_string(), link: name, simulated: false },
+            space: K2Space::new(model),
+            link,
+            settings,
+            rt,
+            ctx: None,
+            requests: 0,
+            last_read: None,
+        })
+    }
+
+    /// A driver on a byte stream the caller opened (any transport, an in-memory pipe in
+    /// tests), with RTU (`rtu = true`) or Modbus TCP framing. Call it inside the runtime the
+    /// stream belongs to, if any; the driver polls it on its own runtime.
+    pub fn attach<T>(transport: T, rtu: bool, model: &'static Model, settings: Settings, name: String) -> Result<K2Wire>
+    where
+        T: tokio::io::AsyncRead + tokio::io::AsyncWrite + Send + Unpin + 'static,
+    {
+        let mut dev = K2Wire::with_link(Link::Attached { rtu }, model, settings, name.clone())?;
+        let t = Traced::new(transport, name);
+        let slave = Slave(dev.settings.unit);
+        dev.ctx = Some(if rtu {
+            tokio_modbus::client::rtu::attach_slave(t, slave)
+        } else {
+            tokio_modbus::client::tcp::attach_slave(t, slave)
+        });
+        Ok(dev)
+    }
+
+    pub fn settings(&self) -> &Settings {
+        &self.settings
+    }
+
+    fn connect(&mut self) -> std::result::Result<(), Failure> {
+        let slave = Slave(self.settings.unit);
+        let name = self.info.link.clone();
+        let timeout = self.settings.timeout;
+        let link = self.link.clone();
+        let ctx: Result<Context> = self.rt.block_on(async move {
+            match &link {
+                Link::Tcp { addr } | Link::RtuOverTcp { addr } => {
+                    let stream = tokio::time::timeout(timeout, tokio::net::TcpStream::connect(addr.as_str()))
+                        .await
+                        .map_err(|_| {
+                            Error::link(format!("cannot connect to {addr}: no answer within {}", ms(timeout)))
+                        })?
+                        .map_err(|e| {
+                            Error::link(format!("cannot connect to {addr}")).cause(e).hint(
+                                "check that HOST:PORT is the PLC or gateway (a K204ET answers Modbus TCP on port 502), that it is powered and reachable (ping), and that no firewall blocks the port",
+                            )
+                        })?;
+                    stream.set_nodelay(true).map_err(|e| Error::link("cannot set TCP_NODELAY").cause(e))?;
+                    let t = Traced::new(stream, name);
+                    Ok(if matches!(link, Link::Tcp { .. }) {
+                        tokio_modbus::client::tcp::attach_slave(t, slave)
+                    } else {
+                        tokio_modbus::client::rtu::attach_slave(t, slave)
+                    })
+                }
+                Link::Attached { .. } => {
+                    Err(Error::link("the attached stream failed and cannot be reopened by plcsh"))
+                }
+                Link::Rtu { path, baud, parity, stop } => {
+                    // serialport configures the line (and holds it exclusively); FdStream
+                    // carries the frames (see core::link::fd_stream for why not SerialStream).
+                    let port = serialport::new(path.as_str(), *baud)
+                        .parity(*parity)
+                        .stop_bits(*stop)
+                        .data_bits(serialport::DataBits::Eight)
+                        .open_native()
+                        .map_err(|e| {
+                            Error::link(format!("cannot open the serial port {path}")).cause(e).hint(
+                                "check the port path (ls /dev/ttyUSB* /dev/serial/by-id), that no other program holds it, and that you may open it (the dialout group)",
+                            )
+                        })?;
+                    let stream = FdStream::new(port)
+                        .map_err(|e| Error::link(format!("cannot register the serial port {path}")).cause(e))?;
+                    Ok(tokio_modbus::client::rtu::attach_slave(Traced::new(stream, name), slave))
+                }
+            }
+        });
+        match ctx {
+            Ok(c) => {
+                self.ctx = Some(c);
+                Ok(())
+            }
+            Err(e) if e.hint.is_some() => Err(Failure::Link(e)),
+            Err(e) => Err(Failure::Link(e.hint(self.link.hint()))),
+        }
+    }
+
+    /// Sends one request, retrying link failures; exceptions come back at once.
+    fn call(&mut self, req: Request<'static>) -> std::result::Result<Response, Failure> {
+        let mut last = None;
+        for attempt in 0..=self.settings.retries {
+            if attempt > 0 {
+                std::thread::sleep(Duration::from_millis(50 << (attempt - 1).min(4)));
+            }
+            if self.ctx.is_none() {
+                if let Err(f) = self.connect() {
+                    last = Some(f);
+                    continue;
+                }
+            }
+            let ctx = self.ctx.as_mut().expect("connected");
+            self.requests += 1;
+            let timeout = self.settings.timeout;
+            let r = self.rt.block_on(async { tokio::time::timeout(timeout, ctx.call(req.clone())).await });
+            match r {
+                Ok(Ok(Ok(resp))) => return Ok(resp),
+                Ok(Ok(Err(code))) => return Err(Failure::Exception(code)),
+                Ok(Err(e)) => {
+                    // Dropped connection, garbled or mismatched reply: start afresh.
+                    self.ctx = None;
+                    last = Some(Failure::Link(Error::link("the link failed").cause(e)));
+                }
+                Err(_) => {
+                    self.ctx = None;
+                    last = Some(Failure::Link(Error::link(format!(
+                        "the device did not answer: no reply from unit {} within {}",
+                        self.settings.unit,
+                        ms(timeout)
+                    ))));
+                }
+            }
+        }
+        let attempts = self.settings.retries + 1;
+        Err(match last.expect("at least one attempt") {
+            Failure::Link(mut e) => {
+                if attempts > 1 {
+                    e.message.push_str(&format!(" ({attempts} attempts)"));
+                }
+                if e.hint.is_none() {
+                    e = e.hint(self.link.hint());
+                }
+                Failure::Link(e)
+            }
+            f => f,
+        })
+    }
+
+    /// Puts a failure in the user's terms: what was asked, for which operand.
+    fn explain(&self, f: Failure, doing: &str, span: &Span, fc: u8, op: &K2Operand, more: usize) -> Error {
+        let what = format!(
+            "{doing} {}{} ({}, FC {fc:02})",
+            op.canonical(),
+            if more > 0 { format!(" and {more} more") } else { String::new() },
+            span.describe()
+        );
+        match f {
+            Failure::Link(e) => {
+                let mut e = e.operand(op.canonical());
+                e.message = format!("{what}: {}", e.message);
+                e
+            }
+            Failure::Exception(code) => {
+                let c = u8::from(code);
+                let hint = match c {
+                    1 => "this PLC does not support that function code over this port".to_string(),
+                    2 => format!(
+                        "the address is outside the PLC's Modbus map; check that model={} matches the PLC",
+                        self.space.model.name
+                    ),
+                    3 => "the PLC refused the request's size or value (limits: 1600 bits or 100 registers read, 800 bits or 100 registers written)".to_string(),
+                    _ => "see the PLC's diagnostics".to_string(),
+                };
+                Error::new(
+                    ErrorKind::Refused,
+                    format!("the PLC refused {what}: {} (Modbus exception {c:02})", modbus_map::exception_name(c)),
+                )
+                .operand(op.canonical())
+                .hint(hint)
+            }
+        }
+    }
+
+    /// Reads one planned request.
+    fn read_request(&mut self, span: &Span) -> std::result::Result<Block, Failure> {
+        let (a, n) = (span.start, span.count);
+        let req = match span.table() {
+            Table::Coils => Request::ReadCoils(a, n),
+            Table::DiscreteInputs => Request::ReadDiscreteInputs(a, n),
+            Table::HoldingRegisters => Request::ReadHoldingRegisters(a, n),
+            Table::InputRegisters => Request::ReadInputRegisters(a, n),
+        };
+        let short = || Failure::Link(Error::link(format!("the reply to a read of {} was too short", span.describe())));
+        match self.call(req)? {
+            Response::ReadCoils(mut b) | Response::ReadDiscreteInputs(mut b) => {
+                if b.len() < n as usize {
+                    return Err(short());
+                }
+                b.truncate(n as usize);
+                Ok(Block::Bits(b))
+            }
+            Response::ReadHoldingRegisters(w) | Response::ReadInputRegisters(w) => {
+                if w.len() != n as usize {
+                    return Err(short());
+                }
+                Ok(Block::Words(w))
+            }
+            other => Err(Failure::Link(Error::link(format!("unexpected reply {other:?}")))),
+        }
+    }
+
+    /// Reads planned requests; errors name the first operand each request was for.
+    fn read_plan(&mut self, plan: &[Span], spans: &[Span], ops: &[K2Operand]) -> Result<Vec<Block>> {
+        let mut blocks = Vec::with_capacity(plan.len());
+        for req in plan {
+            match self.read_request(req) {
+                Ok(b) => blocks.push(b),
+                Err(f) => {
+                    let mine: Vec<usize> = (0..spans.len())
+                        .filter(|&i| coalesce::find(std::slice::from_ref(req), &spans[i]).is_some())
+                        .collect();
+                    let first = mine.first().copied().unwrap_or(0);
+                    return Err(self.explain(
+                        f,
+                        "reading",
+                        req,
+                        req.table().read_fc(),
+                        &ops[first],
+                        mine.len().saturating_sub(1),
+                    ));
+                }
+            }
+        }
+        Ok(blocks)
+    }
+}
+
+fn with_port(target: &str) -> String {
+    let t = target.trim_end_matches('/');
+    if t.rsplit_once(':').is_some_and(|(_, p)| p.parse::<u16>().is_ok()) {
+        t.to_string()
+    } else {
+        format!("{t}:502")
+    }
+}
+
+fn ms(d: Duration) -> String {
+    format!("{} ms", d.as_millis())
+}
+
+fn slice<'a>(block: &'a Block, off: usize, count: usize) -> Data<'a> {
+    match block {
+        Block::Bits(b) => Data::Bits(&b[off..off + count]),
+        Block::Words(w) => Data::Words(&w[off..off + count]),
+    }
+}
+
+impl Device for K2Wire {
+    fn info(&self) -> &DeviceInfo {
+        &self.info
+    }
+
+    fn operands(&self) -> &dyn OperandSpace {
+        &self.space
+    }
+
+    fn read(&mut self, ops: &[Operand]) -> Result<Vec<Value>> {
+        // Polling loops read the same batch again and again: keep its plan.
+        let plan = match self.last_read.take() {
+            Some(p) if p.ops == ops => p,
+            _ => ReadPlan::new(&self.space, ops, self.link.costs())?,
+        };
+        let blocks = self.read_plan(&plan.requests, &plan.spans, &plan.k2);
+        let order = self.settings.word_order;
+        let values = blocks.map(|blocks| {
+            ops.iter()
+                .zip(&plan.k2)
+                .zip(&plan.spans)
+                .zip(&plan.at)
+                .map(|(((o, k), s), &(r, off))| {
+                    o.dtype.decode(modbus_map::decode(k, slice(&blocks[r], off, s.count as usize), order))
+                })
+                .collect()
+        });
+        self.last_read = Some(plan);
+        values
+    }
+
+    fn write(&mut self, items: &[(Operand, Value)]) -> Result<()> {
+        let k2: Vec<K2Operand> = items.iter().map(|(o, _)| K2Operand::from_key(o.key)).collect();
+        let spans: Vec<Span> = k2.iter().map(|o| modbus_map::locate_write(&self.space, o)).collect::<Result<_>>()?;
+        let raws: Vec<u32> = items.iter().map(|(o, v)| o.dtype.encode(v)).collect();
+        let order = self.settings.word_order;
+
+        // Read the registers that byte, bit and odd-address writes only partly cover.
+        let rmw: Vec<usize> = (0..k2.len()).filter(|&i| modbus_map::write_needs_read(&k2[i], &spans[i])).collect();
+        let mut image: HashMap<(u8, u16), u16> = HashMap::new();
+        if !rmw.is_empty() {
+            let rspans: Vec<Span> = rmw.iter().map(|&i| spans[i]).collect();
+            let rops: Vec<K2Operand> = rmw.iter().map(|&i| k2[i]).collect();
+            let plan = coalesce::plan_reads(&rspans, self.link.costs());
+            let blocks = self.read_plan(&plan, &rspans, &rops)?;
+            for (req, block) in plan.iter().zip(&blocks) {
+                if let Block::Words(w) = block {
+                    for (k, v) in w.iter().enumerate() {
+                        image.insert((req.region, req.start + k as u16), *v);
+                    }
+                }
+            }
+        }
+
+        for (n, run) in coalesce::plan_writes(&spans).into_iter().enumerate() {
+            let s = run.span;
+            let req = if s.table().is_bits() {
+                let mut bits = vec![false; s.count as usize];
+                for &i in &run.items {
+                    let off = (spans[i].start - s.start) as usize;
+                    let part = &mut bits[off..off + spans[i].count as usize];
+                    modbus_map::encode(&k2[i], raws[i], DataMut::Bits(part), order);
+                }
+                if bits.len() == 1 {
+                    Request::WriteSingleCoil(s.start, bits[0])
+                } else {
+                    Request::WriteMultipleCoils(s.start, bits.into())
+                }
+            } else {
+                let mut words: Vec<u16> =
+                    (0..s.count).map(|k| image.get(&(s.region, s.start + k)).copied().unwrap_or(0)).collect();
+                for &i in &run.items {
+                    let off = (spans[i].start - s.start) as usize;
+                    let part = &mut words[off..off + spans[i].count as usize];
+                    modbus_map::encode(&k2[i], raws[i], DataMut::Words(part), order);
+                }
+                for (k, w) in words.iter().enumerate() {
+                    image.insert((s.region, s.start + k as u16), *w);
+                }
+                if words.len() == 1 {
+                    Request::WriteSingleRegister(s.start, words[0])
+                } else {
+                    Request::WriteMultipleRegisters(s.start, words.into())
+                }
+            };
+            let fc = req.function_code().value();
+            if let Err(f) = self.call(req) {
+                let first = run.items[0];
+                let mut e = self.explain(f, "writing", &s, fc, &k2[first], run.items.len() - 1);
+                if n > 0 {
+                    e.message.push_str(&format!("; the {n} write request(s) before it were sent"));
+                }
+                return Err(e);
+            }
+        }
+        Ok(())
+    }
+
+    fn requests(&self) -> u64 {
+        self.requests
+    }
+
+    fn as_k2(&mut self) -> Option<&mut dyn super::K2Ops> {
+        Some(self)
+    }
+
+    fn set_option(&mut self, key: &str, value: &str) -> Result<()> {
+        match key {
+            "word_order" => self.settings.word_order = WordOrder::parse(value)?,
+            "timeout" => self.settings.timeout = parse_timeout(value)?,
+            "retries" => {
+                self.settings.retries =
+                    value.parse().map_err(|_| Error::usage(format!("`retries={value}` is not a number")))?
+            }
+            _ => {
+                return Err(Error::usage(format!("K2 wire devices have no option `{key}`"))
+                    .hint("options: word_order, timeout, retries"))
+            }
+        }
+        Ok(())
+    }
+}
+
+impl super::K2Ops for K2Wire {
+    fn model(&self) -> &'static Model {
+        self.space.model
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The driver against the simulator's RTU server over an in-memory pipe: the same map
+    /// in both directions, no sockets.
+    #[test]
+    fn driver_and_simulator_server_agree_over_a_pipe() {
+        use crate::core::Clock;
+        use crate::k2::sim::modbus_server::{serve_rtu_stream, K2Service};
+        use std::sync::{Arc, Mutex};
+        let (client, server) = tokio::io::duplex(1024);
+        let model = catalog::find("K205-16DT").unwrap();
+        let sim = Arc::new(Mutex::new(crate::k2::sim::K2Sim::new(model, Clock::stepped())));
+        let service = K2Service::new(sim.clone(), 1);
+        let srv = std::thread::spawn(move || {
+            let rt = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
+            let _ = rt.block_on(serve_rtu_stream(server, service));
+        });
+        let settings =
+            Settings { unit: 1, word_order: WordOrder::HighFirst, timeout: Duration::from_secs(2), retries: 0 };
+        let mut dev = K2Wire::attach(client, true, model, settings, "pipe".into()).unwrap();
+        let ops = dev.operands().parse("VW300").unwrap();
+        let more = dev.operands().parse("VB301").unwrap();
+        dev.write(&[(ops[0], Value::Int(0x1234)), (more[0], Value::Int(0xAB))]).unwrap();
+        assert_eq!(dev.read(&ops).unwrap(), vec![Value::Int(0x12AB)]);
+        assert_eq!(&sim.lock().unwrap().mem.v[300..302], &[0x12, 0xAB], "the simulator holds what the driver wrote");
+        assert_eq!(dev.requests(), 3, "one read for VB301's read-modify-write, one write of register 250, one read");
+        let sm = dev.operands().parse("SMB67").unwrap();
+        assert_eq!(dev.read(&sm).unwrap_err().kind, ErrorKind::Unsupported);
+        assert_eq!(dev.requests(), 3, "nothing was sent for SMB67");
+        drop(dev);
+        srv.join().unwrap();
+    }
+
+    #[test]
+    fn urls_give_links_defaults_and_clear_errors() {
+        let u = |t: &str| DeviceUrl::parse(t).unwrap();
+        assert_eq!(with_port("10.0.0.5"), "10.0.0.5:502");
+        assert_eq!(with_port("10.0.0.5:1502"), "10.0.0.5:1502");
+        assert_eq!(parse_timeout("250").unwrap(), Duration::from_millis(250));
+        assert_eq!(parse_timeout("2s").unwrap(), Duration::from_secs(2));
+        assert!(parse_timeout("0").is_err());
+        let rtu = Link::Rtu {
+            path: "/dev/null".into(),
+            baud: 9600,
+            parity: serialport::Parity::None,
+            stop: serialport::StopBits::One,
+        };
+        assert_eq!(rtu.default_timeout(), Duration::from_millis(200 + 586));
+        for (url, needle) in [
+            ("tcp://127.0.0.1:1?unit=0", "unit"),
+            ("tcp://127.0.0.1:1?bogus=1", "unknown parameter"),
+            ("tcp://127.0.0.1:1?word_order=middle", "word order"),
+            ("rtu:/dev/null?parity=mark", "parity"),
+            ("rtu:?baud=9600", "no serial port"),
+            ("tcp://127.0.0.1:1?model=K999", "unknown K2 model"),
+        ] {
+            let e = K2Wire::open(&u(url)).err().unwrap_or_else(|| panic!("{url} opened"));
+            assert_eq!(e.kind, ErrorKind::Usage, "{url}: {e}");
+            assert!(e.to_string().contains(needle), "{url}: {e}");
+        }
+    }
+}

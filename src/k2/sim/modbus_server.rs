@@ -1,0 +1,343 @@
+//! The simulated K2 as a real Modbus server (`plcsh sim serve`): any Modbus client — an
+//! HMI, mbpoll, pymodbus, plcsh's own wire driver — can read and write a [`K2Sim`] over
+//! Modbus TCP, Modbus RTU on a pseudo-terminal, or RTU over TCP.
+//!
+//! The request handling ([`K2Service::handle`]) answers through the same map the driver
+//! asks with ([`crate::k2::modbus_map`]): function codes 1, 2, 3, 4, 5, 6, 15, 16; the
+//! manual's per-request limits (read bits ≤ 1600, write bits ≤ 800, read/write words ≤ 100,
+//! §3.2.1) answered with *illegal data value*; a request outside one area with *illegal data
+//! address*; any other function with *illegal function*. A request for another unit id gets
+//! no reply at all, as from a real RTU slave (unit 0, broadcast, is executed without a
+//! reply). The TCP transports are tokio-modbus's server skeletons; RTU on a pty uses this
+//! crate's framing ([`super::rtu_frame`]) over a lean pty stream.
+//!
+//! Scans: a K2 serves its Modbus slave ports between program scans. The server therefore
+//! treats every request boundary as the end of a scan: before each request it brings the
+//! simulation up to the clock ([`K2Sim::advance`]) and runs the [`ScanHook`], if one is
+//! plugged in, once. A PLC-side helper program (the "agent" of a later issue) plugs in
+//! there and sees the same memory the request then reads or writes.
+
+use crate::core::link::async_pty::AsyncPty;
+use crate::k2::modbus_map::{self, Exception, Table};
+use crate::k2::operand::Area;
+use crate::k2::sim::rtu_frame::{self, Frame};
+use crate::k2::sim::K2Sim;
+use std::future::{ready, Ready};
+use std::io;
+use std::sync::{Arc, Mutex, MutexGuard};
+use tokio::net::{TcpListener, TcpStream};
+use tokio_modbus::server::Service;
+use tokio_modbus::{ExceptionCode, Request, Response, SlaveRequest};
+
+/// Code run once per simulated scan, in the PLC, before the next request is served.
+pub trait ScanHook: Send {
+    fn scan(&mut self, sim: &mut K2Sim);
+}
+
+/// A shared scan hook.
+pub type SharedHook = Arc<Mutex<dyn ScanHook>>;
+
+/// The K2 behind a Modbus server: the shared simulator, the unit id it answers to, and an
+/// optional scan hook. Cheap to clone (one per connection).
+#[derive(Clone)]
+pub struct K2Service {
+    sim: Arc<Mutex<K2Sim>>,
+    unit: u8,
+    hook: Option<SharedHook>,
+}
+
+fn lock<T: ?Sized>(m: &Mutex<T>) -> MutexGuard<'_, T> {
+    m.lock().unwrap_or_else(|p| p.into_inner())
+}
+
+impl From<Exception> for ExceptionCode {
+    fn from(e: Exception) -> ExceptionCode {
+        ExceptionCode::new(e as u8)
+    }
+}
+
+impl K2Service {
+    pub fn new(sim: Arc<Mutex<K2Sim>>, unit: u8) -> K2Service {
+        K2Service { sim, unit, hook: None }
+    }
+
+    /// Plugs in the code that runs once per scan.
+    pub fn with_hook(mut self, hook: SharedHook) -> K2Service {
+        self.hook = Some(hook);
+        self
+    }
+
+    pub fn unit(&self) -> u8 {
+        self.unit
+    }
+
+    /// Serves one request addressed to `unit`. `None`: no reply (another unit id, or a
+    /// broadcast).
+    pub fn handle(&self, unit: u8, req: &Request<'_>) -> Option<Result<Response, ExceptionCode>> {
+        if unit != self.unit && unit != 0 {
+            return None;
+        }
+        let mut sim = lock(&self.sim);
+        sim.advance();
+        if let Some(h) = &self.hook {
+            lock(h).scan(&mut sim);
+        }
+        let r = serve(&mut sim, req).map_err(ExceptionCode::from);
+        (unit != 0).then_some(r)
+    }
+}
+
+/// The area bytes a request addresses, after the limit and bound checks.
+fn area_of(sim: &K2Sim, fc: u8, table: Table, addr: u16, count: usize) -> Result<(Area, u32), Exception> {
+    modbus_map::check_quantity(fc, count)?;
+    let (region, off) = modbus_map::resolve(sim.space(), table, addr, count as u16)?;
+    Ok((region.area, off))
+}
+
+fn read_bits(sim: &K2Sim, area: Area, off: u32, count: u16) -> Vec<bool> {
+    let bytes = sim.mem.area(area);
+    (off..off + count as u32).map(|b| (bytes[(b / 8) as usize] >> (b % 8)) & 1 != 0).collect()
+}
+
+fn write_bits(sim: &mut K2Sim, area: Area, off: u32, bits: &[bool]) {
+    let bytes = sim.mem.area_mut(area);
+    for (k, on) in bits.iter().enumerate() {
+        let b = off + k as u32;
+        let byte = &mut bytes[(b / 8) as usize];
+        if *on {
+            *byte |= 1 << (b % 8)
+        } else {
+            *byte &= !(1 << (b % 8))
+        }
+    }
+}
+
+fn read_words(sim: &K2Sim, area: Area, off: u32, count: u16) -> Vec<u16> {
+    let bytes = sim.mem.area(area);
+    let first = 2 * off as usize;
+    bytes[first..first + 2 * count as usize].chunks_exact(2).map(|c| u16::from_be_bytes([c[0], c[1]])).collect()
+}
+
+fn write_words(sim: &mut K2Sim, area: Area, off: u32, words: &[u16]) {
+    let bytes = sim.mem.area_mut(area);
+    for (k, w) in words.iter().enumerate() {
+        let at = 2 * (off as usize + k);
+        bytes[at..at + 2].copy_from_slice(&w.to_be_bytes());
+    }
+}
+
+/// Serves one request on the simulator (the unit id was already checked).
+fn serve(sim: &mut K2Sim, req: &Request<'_>) -> Result<Response, Exception> {
+    use Table::*;
+    Ok(match req {
+        Request::ReadCoils(a, n) => {
+            let (area, off) = area_of(sim, 0x01, Coils, *a, *n as usize)?;
+            Response::ReadCoils(read_bits(sim, area, off, *n))
+        }
+        Request::ReadDiscreteInputs(a, n) => {
+            let (area, off) = area_of(sim, 0x02, DiscreteInputs, *a, *n as usize)?;
+            Response::ReadDiscreteInputs(read_bits(sim, area, off, *n))
+        }
+        Request::ReadHoldingRegisters(a, n) => {
+            let (area, off) = area_of(sim, 0x03, HoldingRegisters, *a, *n as usize)?;
+            Response::ReadHoldingRegisters(read_words(sim, area, off, *n))
+        }
+        Request::ReadInputRegisters(a, n) => {
+            let (area, off) = area_of(sim, 0x04, InputRegisters, *a, *n as usize)?;
+            Response::ReadInputRegisters(read_words(sim, area, off, *n))
+        }
+        Request::WriteSingleCoil(a, v) => {
+            let (area, off) = area_of(sim, 0x05, Coils, *a, 1)?;
+            write_bits(sim, area, off, &[*v]);
+            Response::WriteSingleCoil(*a, *v)
+        }
+        Request::WriteMultipleCoils(a, bits) => {
+            let (area, off) = area_of(sim, 0x0F, Coils, *a, bits.len())?;
+            write_bits(sim, area, off, bits);
+            Response::WriteMultipleCoils(*a, bits.len() as u16)
+        }
+        Request::WriteSingleRegister(a, w) => {
+            let (area, off) = area_of(sim, 0x06, HoldingRegisters, *a, 1)?;
+            write_words(sim, area, off, &[*w]);
+            Response::WriteSingleRegister(*a, *w)
+        }
+        Request::WriteMultipleRegisters(a, words) => {
+            let (area, off) = area_of(sim, 0x10, HoldingRegisters, *a, words.len())?;
+            write_words(sim, area, off, words);
+            Response::WriteMultipleRegisters(*a, words.len() as u16)
+        }
+        _ => return Err(Exception::IllegalFunction),
+    })
+}
+
+impl Service for K2Service {
+    type Request = SlaveRequest<'static>;
+    type Response = Option<Response>;
+    type Exception = ExceptionCode;
+    type Future = Ready<Result<Option<Response>, ExceptionCode>>;
+
+    fn call(&self, req: SlaveRequest<'static>) -> Self::Future {
+        ready(match self.handle(req.slave, &req.request) {
+            None => Ok(None),
+            Some(Ok(r)) => Ok(Some(r)),
+            Some(Err(e)) => Err(e),
+        })
+    }
+}
+
+fn accept(service: &K2Service, stream: TcpStream) -> io::Result<Option<(K2Service, TcpStream)>> {
+    // One request in flight, small frames: send each reply at once.
+    stream.set_nodelay(true)?;
+    Ok(Some((service.clone(), stream)))
+}
+
+/// Serves Modbus TCP on `listener` until the future is dropped.
+pub async fn serve_tcp(listener: TcpListener, service: K2Service) -> io::Result<()> {
+    let server = tokio_modbus::server::tcp::Server::new(listener);
+    let on_connected = |stream, _addr| {
+        let r = accept(&service, stream);
+        async move { r }
+    };
+    server.serve(&on_connected, |e| eprintln!("plcsh sim serve: Modbus TCP connection ended: {e}")).await
+}
+
+/// Serves Modbus RTU frames over TCP (what serial-to-Ethernet gateways in transparent
+/// mode carry) on `listener` until the future is dropped.
+pub async fn serve_rtu_over_tcp(listener: TcpListener, service: K2Service) -> io::Result<()> {
+    let server = tokio_modbus::server::rtu_over_tcp::Server::new(listener);
+    let on_connected = |stream, _addr| {
+        let r = accept(&service, stream);
+        async move { r }
+    };
+    server.serve(&on_connected, |e| eprintln!("plcsh sim serve: RTU-over-TCP connection ended: {e}")).await
+}
+
+/// Serves Modbus RTU on a pseudo-terminal until the future is dropped (framing in
+/// [`super::rtu_frame`]).
+pub async fn serve_rtu(pty: &AsyncPty, service: K2Service) -> io::Result<()> {
+    let s = pty.stream().map_err(|e| io::Error::other(e.to_string()))?;
+    serve_rtu_stream(s, service).await
+}
+
+/// Serves Modbus RTU frames on any byte stream (a pty, an in-memory pipe in tests) until the
+/// stream ends.
+pub async fn serve_rtu_stream<S>(mut s: S, service: K2Service) -> io::Result<()>
+where
+    S: tokio::io::AsyncRead + tokio::io::AsyncWrite + Unpin,
+{
+    use tokio::io::{AsyncReadExt, AsyncWriteExt};
+    let mut buf: Vec<u8> = Vec::with_capacity(2 * rtu_frame::MAX_FRAME);
+    let mut chunk = [0u8; 512];
+    loop {
+        let n = s.read(&mut chunk).await?;
+        if n == 0 {
+            return Err(io::Error::new(io::ErrorKind::UnexpectedEof, "the stream closed"));
+        }
+        buf.extend_from_slice(&chunk[..n]);
+        while let Some(frame) = rtu_frame::next_frame(&mut buf) {
+            let (unit, function, reply) = match frame {
+                Frame::Request { unit, request } => match service.handle(unit, &request) {
+                    Some(reply) => (unit, request.function_code().value(), reply),
+                    None => continue,
+                },
+                Frame::Refuse { unit, function, exception } if unit == service.unit() => {
+                    (unit, function, Err(exception))
+                }
+                Frame::Refuse { .. } => continue,
+            };
+            s.write_all(&rtu_frame::encode(unit, function, &reply)).await?;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::core::Clock;
+    use crate::k2::sim;
+    use std::borrow::Cow;
+
+    fn service(model: &str) -> K2Service {
+        let s = sim::open(model, Clock::stepped()).unwrap();
+        K2Service::new(Arc::new(Mutex::new(s)), 1)
+    }
+
+    fn ok(s: &K2Service, r: Request<'_>) -> Response {
+        s.handle(1, &r).unwrap().unwrap()
+    }
+
+    fn err(s: &K2Service, r: Request<'_>) -> ExceptionCode {
+        s.handle(1, &r).unwrap().unwrap_err()
+    }
+
+    #[test]
+    fn registers_and_coils_reach_the_memory_image() {
+        let s = service("K205-16DT");
+        ok(&s, Request::WriteMultipleRegisters(150, Cow::Owned(vec![0x1234, 0x5678])));
+        {
+            let sim = lock(&s.sim);
+            assert_eq!(&sim.mem.v[100..104], &[0x12, 0x34, 0x56, 0x78], "register 150 = VW100, S7 order");
+        }
+        assert_eq!(ok(&s, Request::ReadHoldingRegisters(151, 1)), Response::ReadHoldingRegisters(vec![0x5678]));
+        assert_eq!(ok(&s, Request::ReadInputRegisters(150, 1)), Response::ReadInputRegisters(vec![0x1234]));
+        ok(&s, Request::WriteSingleCoil(320 + 8 * 10 + 3, true));
+        assert_eq!(lock(&s.sim).mem.m[10], 0b1000, "coil 403 = M10.3");
+        ok(&s, Request::WriteMultipleCoils(1, Cow::Owned(vec![true, false, true])));
+        assert_eq!(lock(&s.sim).mem.q[0], 0b1010);
+        assert_eq!(
+            ok(&s, Request::ReadDiscreteInputs(403, 1)),
+            Response::ReadDiscreteInputs(vec![true]),
+            "M is also discrete inputs 320…"
+        );
+    }
+
+    #[test]
+    fn limits_bounds_and_functions_get_their_exception_codes() {
+        let s = service("K205-16DT");
+        assert_eq!(err(&s, Request::ReadHoldingRegisters(100, 101)), ExceptionCode::IllegalDataValue);
+        assert_eq!(err(&s, Request::ReadCoils(320, 1601)), ExceptionCode::IllegalDataValue);
+        assert!(s.handle(1, &Request::ReadCoils(320, 1600)).unwrap().is_ok());
+        assert_eq!(
+            err(&s, Request::WriteMultipleCoils(320, Cow::Owned(vec![false; 801]))),
+            ExceptionCode::IllegalDataValue
+        );
+        assert_eq!(
+            err(&s, Request::WriteMultipleRegisters(100, Cow::Owned(vec![0; 101]))),
+            ExceptionCode::IllegalDataValue
+        );
+        // V ends at register 2147 on the K205; 90 words of a 2-word area (§3.2.1's example).
+        assert_eq!(err(&s, Request::ReadHoldingRegisters(2140, 10)), ExceptionCode::IllegalDataAddress);
+        assert_eq!(err(&s, Request::ReadHoldingRegisters(50, 1)), ExceptionCode::IllegalDataAddress);
+        assert_eq!(err(&s, Request::ReadInputRegisters(0, 1)), ExceptionCode::IllegalDataAddress, "K205: no AI");
+        let ea = service("K209EA-50DX");
+        assert_eq!(err(&ea, Request::ReadInputRegisters(0, 90)), ExceptionCode::IllegalDataAddress);
+        assert!(ea.handle(1, &Request::ReadInputRegisters(0, 6)).unwrap().is_ok());
+        assert_eq!(err(&s, Request::MaskWriteRegister(100, 0, 0)), ExceptionCode::IllegalFunction);
+        assert_eq!(err(&s, Request::Custom(0x41, Cow::Owned(vec![]))), ExceptionCode::IllegalFunction);
+    }
+
+    #[test]
+    fn other_units_get_no_reply_and_broadcasts_write_silently() {
+        let s = service("K205-16DT");
+        assert!(s.handle(2, &Request::ReadHoldingRegisters(100, 1)).is_none());
+        assert!(s.handle(0, &Request::WriteSingleRegister(100, 7)).is_none());
+        assert_eq!(ok(&s, Request::ReadHoldingRegisters(100, 1)), Response::ReadHoldingRegisters(vec![7]));
+    }
+
+    #[test]
+    fn the_scan_hook_runs_before_each_request() {
+        struct Count(u16);
+        impl ScanHook for Count {
+            fn scan(&mut self, sim: &mut K2Sim) {
+                self.0 += 1;
+                sim.mem.v[0..2].copy_from_slice(&self.0.to_be_bytes());
+            }
+        }
+        let hook: SharedHook = Arc::new(Mutex::new(Count(0)));
+        let s = service("K205-16DT").with_hook(hook);
+        assert_eq!(ok(&s, Request::ReadHoldingRegisters(100, 1)), Response::ReadHoldingRegisters(vec![1]));
+        assert_eq!(ok(&s, Request::ReadHoldingRegisters(100, 1)), Response::ReadHoldingRegisters(vec![2]));
+        assert!(s.handle(9, &Request::ReadHoldingRegisters(100, 1)).is_none());
+        assert_eq!(ok(&s, Request::ReadHoldingRegisters(100, 1)), Response::ReadHoldingRegisters(vec![3]));
+    }
+}

@@ -1,0 +1,247 @@
+//! Modbus RTU framing for the simulator's serial server (Modbus over serial line V1.02 §2.5):
+//! unit id, PDU, CRC-16 (polynomial 0xA001, low byte first). Pure: bytes in, frames out.
+//!
+//! Why not tokio-modbus's RTU server: it only runs on a `tokio_serial::SerialStream`, which
+//! costs a spurious wakeup and a `tcdrain` per frame on a pty (see
+//! `core::link::fd_stream`), and its framing drops requests whose function code it does not
+//! know, where a K2 answers *illegal function*. Here the frame length follows from the
+//! function code for the codes the K2 implements (1–6, 15, 16); any other request ends
+//! where a valid CRC ends it, and is answered with exception 01.
+
+use tokio_modbus::{ExceptionCode, Request, Response};
+
+/// Longest RTU frame (§2.5.1).
+pub const MAX_FRAME: usize = 256;
+
+/// CRC-16/MODBUS.
+pub fn crc16(data: &[u8]) -> u16 {
+    let mut crc = 0xFFFFu16;
+    for b in data {
+        crc ^= *b as u16;
+        for _ in 0..8 {
+            crc = if crc & 1 != 0 { (crc >> 1) ^ 0xA001 } else { crc >> 1 };
+        }
+    }
+    crc
+}
+
+fn crc_ok(frame: &[u8]) -> bool {
+    let n = frame.len();
+    n >= 4 && crc16(&frame[..n - 2]) == u16::from_le_bytes([frame[n - 2], frame[n - 1]])
+}
+
+/// A request taken off the line.
+#[derive(Debug, PartialEq)]
+pub enum Frame {
+    /// A request the K2 implements, decoded.
+    Request { unit: u8, request: Request<'static> },
+    /// A well-formed frame with a function code the K2 does not implement (or a malformed
+    /// body): answered with the exception.
+    Refuse { unit: u8, function: u8, exception: ExceptionCode },
+}
+
+fn be16(b: &[u8], at: usize) -> u16 {
+    u16::from_be_bytes([b[at], b[at + 1]])
+}
+
+/// Takes the next request frame off the front of `buf`. Returns `None` when more bytes are
+/// needed; drops leading bytes that cannot start a valid frame (noise, a bad CRC: a slave
+/// stays silent then).
+pub fn next_frame(buf: &mut Vec<u8>) -> Option<Frame> {
+    loop {
+        if buf.len() < 4 {
+            return None;
+        }
+        let fc = buf[1];
+        let len = match fc {
+            0x01..=0x06 => Some(8),
+            0x0F | 0x10 if buf.len() >= 7 => Some(9 + buf[6] as usize),
+            0x0F | 0x10 => return None,
+            _ => None,
+        };
+        match len {
+            Some(n) if n > MAX_FRAME => {}
+            Some(n) if buf.len() < n => return None,
+            Some(n) => {
+                if crc_ok(&buf[..n]) {
+                    let frame: Vec<u8> = buf.drain(..n).collect();
+                    return Some(decode(&frame));
+                }
+            }
+            None => {
+                // Unknown length: the frame ends where a CRC matches.
+                if let Some(n) = (4..=buf.len().min(MAX_FRAME)).find(|&n| crc_ok(&buf[..n])) {
+                    let frame: Vec<u8> = buf.drain(..n).collect();
+                    return Some(Frame::Refuse {
+                        unit: frame[0],
+                        function: fc,
+                        exception: ExceptionCode::IllegalFunction,
+                    });
+                }
+                if buf.len() < MAX_FRAME {
+                    return None;
+                }
+            }
+        }
+        buf.remove(0); // resynchronise
+    }
+}
+
+/// Decodes a complete, CRC-checked frame of a function code the K2 implements.
+fn decode(f: &[u8]) -> Frame {
+    let (unit, fc) = (f[0], f[1]);
+    let (a, q) = (be16(f, 2), be16(f, 4));
+    let bad = |e| Frame::Refuse { unit, function: fc, exception: e };
+    let request = match fc {
+        0x01 => Request::ReadCoils(a, q),
+        0x02 => Request::ReadDiscreteInputs(a, q),
+        0x03 => Request::ReadHoldingRegisters(a, q),
+        0x04 => Request::ReadInputRegisters(a, q),
+        0x05 => match q {
+            0xFF00 => Request::WriteSingleCoil(a, true),
+            0x0000 => Request::WriteSingleCoil(a, false),
+            _ => return bad(ExceptionCode::IllegalDataValue),
+        },
+        0x06 => Request::WriteSingleRegister(a, q),
+        0x0F => {
+            let data = &f[7..f.len() - 2];
+            if data.len() != (q as usize).div_ceil(8) {
+                return bad(ExceptionCode::IllegalDataValue);
+            }
+            let bits = (0..q as usize).map(|i| data[i / 8] >> (i % 8) & 1 != 0).collect::<Vec<_>>();
+            Request::WriteMultipleCoils(a, bits.into())
+        }
+        0x10 => {
+            let data = &f[7..f.len() - 2];
+            if data.len() != 2 * q as usize {
+                return bad(ExceptionCode::IllegalDataValue);
+            }
+            Request::WriteMultipleRegisters(a, data.chunks_exact(2).map(|c| be16(c, 0)).collect::<Vec<_>>().into())
+        }
+        _ => return bad(ExceptionCode::IllegalFunction),
+    };
+    Frame::Request { unit, request }
+}
+
+/// Encodes a reply frame (with CRC) for `unit`.
+pub fn encode(unit: u8, function: u8, reply: &Result<Response, ExceptionCode>) -> Vec<u8> {
+    let mut f = vec![unit];
+    let bits = |f: &mut Vec<u8>, b: &[bool]| {
+        let mut packed = vec![0u8; b.len().div_ceil(8)];
+        for (i, on) in b.iter().enumerate() {
+            packed[i / 8] |= (*on as u8) << (i % 8);
+        }
+        f.push(packed.len() as u8);
+        f.extend(packed);
+    };
+    let put = |f: &mut Vec<u8>, v: u16| f.extend(v.to_be_bytes());
+    match reply {
+        Err(e) => {
+            f.push(function | 0x80);
+            f.push(u8::from(*e));
+        }
+        Ok(r) => {
+            f.push(function);
+            match r {
+                Response::ReadCoils(b) | Response::ReadDiscreteInputs(b) => bits(&mut f, b),
+                Response::ReadHoldingRegisters(w) | Response::ReadInputRegisters(w) => {
+                    f.push(2 * w.len() as u8);
+                    w.iter().for_each(|v| put(&mut f, *v));
+                }
+                Response::WriteSingleCoil(a, v) => {
+                    put(&mut f, *a);
+                    put(&mut f, if *v { 0xFF00 } else { 0 });
+                }
+                Response::WriteMultipleCoils(a, n) | Response::WriteMultipleRegisters(a, n) => {
+                    put(&mut f, *a);
+                    put(&mut f, *n);
+                }
+                Response::WriteSingleRegister(a, v) => {
+                    put(&mut f, *a);
+                    put(&mut f, *v);
+                }
+                _ => {
+                    f.truncate(1);
+                    f.push(function | 0x80);
+                    f.push(u8::from(ExceptionCode::ServerDeviceFailure));
+                }
+            }
+        }
+    }
+    let crc = crc16(&f);
+    f.extend(crc.to_le_bytes());
+    f
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn golden_frames() {
+        // Read one holding register at 100 (VW0) from unit 1: 01 03 00 64 00 01 C5 D5.
+        let mut buf = vec![0x01, 0x03, 0x00, 0x64, 0x00, 0x01, 0xC5, 0xD5];
+        assert_eq!(
+            next_frame(&mut buf),
+            Some(Frame::Request { unit: 1, request: Request::ReadHoldingRegisters(100, 1) })
+        );
+        assert!(buf.is_empty());
+        // Its reply, value 0: 01 03 02 00 00 B8 44.
+        assert_eq!(encode(1, 3, &Ok(Response::ReadHoldingRegisters(vec![0]))), vec![1, 3, 2, 0, 0, 0xB8, 0x44]);
+        // Exception: 01 83 02 C0 F1 (illegal data address).
+        assert_eq!(encode(1, 3, &Err(ExceptionCode::IllegalDataAddress)), vec![1, 0x83, 2, 0xC0, 0xF1]);
+        // Coils pack LSB first: 3 coils on, off, on → byte count 1, 0b101.
+        let f = encode(1, 1, &Ok(Response::ReadCoils(vec![true, false, true])));
+        assert_eq!(&f[..4], &[1, 1, 1, 0b101]);
+    }
+
+    #[test]
+    fn partial_noise_and_bad_crc() {
+        let frame = [0x01u8, 0x06, 0x00, 0x64, 0x12, 0x34];
+        let crc = crc16(&frame).to_le_bytes();
+        let mut buf = vec![0xFF]; // noise before the frame
+        buf.extend_from_slice(&frame[..4]);
+        assert_eq!(next_frame(&mut buf), None, "needs more bytes");
+        buf.extend_from_slice(&frame[4..]);
+        buf.extend_from_slice(&crc);
+        assert_eq!(
+            next_frame(&mut buf),
+            Some(Frame::Request { unit: 1, request: Request::WriteSingleRegister(100, 0x1234) })
+        );
+        let mut bad = vec![0x01, 0x03, 0x00, 0x64, 0x00, 0x01, 0xC5, 0xD6];
+        assert_eq!(next_frame(&mut bad), None, "a bad CRC gets no reply");
+    }
+
+    #[test]
+    fn multiple_writes_and_unknown_functions() {
+        let mut f = vec![0x01, 0x10, 0x00, 0x64, 0x00, 0x02, 0x04, 0x11, 0x22, 0x33, 0x44];
+        f.extend(crc16(&f).to_le_bytes());
+        assert_eq!(
+            next_frame(&mut f),
+            Some(Frame::Request {
+                unit: 1,
+                request: Request::WriteMultipleRegisters(100, vec![0x1122, 0x3344].into())
+            })
+        );
+        let mut f = vec![0x02, 0x0F, 0x01, 0x40, 0x00, 0x0A, 0x02, 0b1010_0101, 0b10];
+        f.extend(crc16(&f).to_le_bytes());
+        let Some(Frame::Request { request: Request::WriteMultipleCoils(320, bits), .. }) = next_frame(&mut f) else {
+            panic!()
+        };
+        assert_eq!(bits.len(), 10);
+        assert!(bits[0] && !bits[1] && bits[2] && bits[9]);
+        // FC 08 (diagnostics) is not a K2 function: its frame ends at the CRC, exception 01.
+        let mut f = vec![0x01, 0x08, 0x00, 0x00, 0xA5, 0x37];
+        f.extend(crc16(&f).to_le_bytes());
+        assert_eq!(
+            next_frame(&mut f),
+            Some(Frame::Refuse { unit: 1, function: 8, exception: ExceptionCode::IllegalFunction })
+        );
+        let mut f = vec![0x01, 0x05, 0x00, 0x00, 0x12, 0x34];
+        f.extend(crc16(&f).to_le_bytes());
+        assert_eq!(
+            next_frame(&mut f),
+            Some(Frame::Refuse { unit: 1, function: 5, exception: ExceptionCode::IllegalDataValue })
+        );
+    }
+}
