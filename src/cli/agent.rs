@@ -19,27 +19,9 @@ pub enum AgentCmd {
     },
 }
 
-/// Parses `VB3400` (or `3400`).
-pub fn parse_base(text: &str) -> Result<u32, String> {
-    let t = text.trim().to_ascii_uppercase();
-    let n: u32 = t
-        .trim_start_matches('%')
-        .trim_start_matches("VB")
-        .parse()
-        .map_err(|_| format!("`{text}` is not a V byte address (e.g. VB{})", protocol::DEFAULT_BASE))?;
-    if !n.is_multiple_of(2) || n + il::TOTAL_SIZE > crate::k2::catalog::EEPROM_FIRST {
-        return Err(format!(
-            "the mailbox needs an even address with {} bytes free below the E2PROM area VB{} (got VB{n})",
-            il::TOTAL_SIZE,
-            crate::k2::catalog::EEPROM_FIRST
-        ));
-    }
-    Ok(n)
-}
-
 pub fn run(args: &AgentArgs, out: &mut dyn Write) -> i32 {
     match &args.cmd {
-        AgentCmd::Il { base } => match parse_base(base) {
+        AgentCmd::Il { base } => match protocol::parse_base(base) {
             Ok(b) => i32::from(out.write_all(il::program(b).as_bytes()).is_err()),
             Err(m) => {
                 eprintln!("error: {m}");

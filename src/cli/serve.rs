@@ -134,7 +134,7 @@ async fn serve_k2(
     ready.insert("model".into(), json!(sim.model().name));
     ready.insert("unit".into(), json!(args.unit));
     if let Some(base) = &args.agent {
-        let b = super::agent::parse_base(base).map_err(Error::usage)?;
+        let b = crate::k2::agent::protocol::parse_base(base).map_err(Error::usage)?;
         sim.enable_agent(b).map_err(Error::usage)?;
         ready.insert("agent".into(), json!(format!("VB{b}")));
     }

@@ -20,11 +20,18 @@
 //! connection, a garbled reply) are retried with backoff after reconnecting (reopening the
 //! port, which also drops a late reply), and reported as kind `link` naming what to check.
 //!
+//! SM operands and the instructions (PLS, HDEF, HSC, PSTOP, RTC) go through the PLC-side
+//! helper program's mailbox when the device has `agent=VB…` ([`sm`], docs/agent.md).
+//!
 //! The `Device` trait is synchronous; the driver owns a current-thread tokio runtime and
 //! blocks on it per request. Every frame is reported to [`crate::core::trace`].
 
+mod sm;
+
+use super::agent::client::AgentClient;
 use super::catalog::{self, Model};
 use super::coalesce::{self, Costs};
+use super::memory::Memory;
 use super::modbus_map::{self, Data, DataMut, Span, Table, WordOrder};
 use super::operand::K2Operand;
 use super::space::K2Space;
@@ -125,6 +132,10 @@ pub struct K2Wire {
     requests: u64,
     /// The plan of the last read batch.
     last_read: Option<ReadPlan>,
+    /// The PLC-side helper, when configured (`agent=VB3400`).
+    agent: Option<AgentClient>,
+    /// SM bytes as last read or written through the helper.
+    sm_shadow: Memory,
 }
 
 /// A read batch mapped and planned (everything but the wire).
@@ -151,7 +162,7 @@ impl ReadPlan {
 impl K2Wire {
     /// Opens `tcp://…`, `rtu:…` or `rtu+tcp://…` and connects.
     pub fn open(url: &DeviceUrl) -> Result<K2Wire> {
-        let mut known = vec!["unit", "model", "word_order", "timeout", "retries"];
+        let mut known = vec!["unit", "model", "word_order", "timeout", "retries", "agent"];
         let link = match url.scheme.as_str() {
             "tcp" => Link::Tcp { addr: with_port(&url.target) },
             "rtu+tcp" => Link::RtuOverTcp { addr: with_port(&url.target) },
@@ -198,6 +209,9 @@ impl K2Wire {
             retries: url.param_num::<u32>("retries")?.unwrap_or(2),
         };
         let mut dev = K2Wire::with_link(link, model, settings, url.text.clone())?;
+        if let Some(a) = url.param("agent") {
+            dev.agent = Some(sm::client(a, dev.settings.timeout)?);
+        }
         dev.connect().map_err(|e| match e {
             Failure::Link(e) => e,
             Failure::Exception(_) => unreachable!("connecting sends no request"),
@@ -220,6 +234,8 @@ impl K2Wire {
             ctx: None,
             requests: 0,
             last_read: None,
+            agent: None,
+            sm_shadow: sm::shadow(catalog::SM_BYTES),
         })
     }
 
@@ -472,6 +488,77 @@ impl Device for K2Wire {
     }
 
     fn read(&mut self, ops: &[Operand]) -> Result<Vec<Value>> {
+        let via_agent: Vec<bool> = ops.iter().map(|o| self.uses_agent(&K2Operand::from_key(o.key))).collect();
+        if !via_agent.contains(&true) {
+            return self.read_modbus(ops);
+        }
+        // Check the Modbus part first, so a bad operand fails before any helper command.
+        let (sm_ops, bus_ops): (Vec<Operand>, Vec<Operand>) = {
+            let (a, b): (Vec<_>, Vec<_>) = ops.iter().zip(&via_agent).partition(|(_, v)| **v);
+            (a.into_iter().map(|(o, _)| *o).collect(), b.into_iter().map(|(o, _)| *o).collect())
+        };
+        let bus = if bus_ops.is_empty() { Vec::new() } else { self.read_modbus(&bus_ops)? };
+        let sm = self.read_sm(&sm_ops)?;
+        let (mut bi, mut si) = (bus.into_iter(), sm.into_iter());
+        Ok(via_agent.iter().map(|v| if *v { si.next() } else { bi.next() }.expect("one value per operand")).collect())
+    }
+
+    fn write(&mut self, items: &[(Operand, Value)]) -> Result<()> {
+        let via_agent: Vec<bool> = items.iter().map(|(o, _)| self.uses_agent(&K2Operand::from_key(o.key))).collect();
+        if !via_agent.contains(&true) {
+            return self.write_modbus(items);
+        }
+        // Validate the Modbus items before anything is sent; then write runs in the user's order.
+        for ((o, _), v) in items.iter().zip(&via_agent) {
+            if !v {
+                modbus_map::locate_write(&self.space, &K2Operand::from_key(o.key))?;
+            }
+        }
+        let mut i = 0;
+        while i < items.len() {
+            let kind = via_agent[i];
+            let mut j = i;
+            while j < items.len() && via_agent[j] == kind {
+                j += 1;
+            }
+            if kind {
+                self.write_sm(&items[i..j])?;
+            } else {
+                self.write_modbus(&items[i..j])?;
+            }
+            i = j;
+        }
+        Ok(())
+    }
+
+    fn requests(&self) -> u64 {
+        self.requests
+    }
+
+    fn as_k2(&mut self) -> Option<&mut dyn super::K2Ops> {
+        Some(self)
+    }
+
+    fn set_option(&mut self, key: &str, value: &str) -> Result<()> {
+        match key {
+            "word_order" => self.settings.word_order = WordOrder::parse(value)?,
+            "timeout" => self.settings.timeout = parse_timeout(value)?,
+            "retries" => {
+                self.settings.retries =
+                    value.parse().map_err(|_| Error::usage(format!("`retries={value}` is not a number")))?
+            }
+            "agent" => self.agent = Some(sm::client(value, self.settings.timeout)?),
+            _ => {
+                return Err(Error::usage(format!("K2 wire devices have no option `{key}`"))
+                    .hint("options: word_order, timeout, retries, agent"))
+            }
+        }
+        Ok(())
+    }
+}
+
+impl K2Wire {
+    fn read_modbus(&mut self, ops: &[Operand]) -> Result<Vec<Value>> {
         // Polling loops read the same batch again and again: keep its plan.
         let plan = match self.last_read.take() {
             Some(p) if p.ops == ops => p,
@@ -493,7 +580,7 @@ impl Device for K2Wire {
         values
     }
 
-    fn write(&mut self, items: &[(Operand, Value)]) -> Result<()> {
+    fn write_modbus(&mut self, items: &[(Operand, Value)]) -> Result<()> {
         let k2: Vec<K2Operand> = items.iter().map(|(o, _)| K2Operand::from_key(o.key)).collect();
         let spans: Vec<Span> = k2.iter().map(|o| modbus_map::locate_write(&self.space, o)).collect::<Result<_>>()?;
         let raws: Vec<u32> = items.iter().map(|(o, v)| o.dtype.encode(v)).collect();
@@ -559,35 +646,36 @@ impl Device for K2Wire {
         }
         Ok(())
     }
-
-    fn requests(&self) -> u64 {
-        self.requests
-    }
-
-    fn as_k2(&mut self) -> Option<&mut dyn super::K2Ops> {
-        Some(self)
-    }
-
-    fn set_option(&mut self, key: &str, value: &str) -> Result<()> {
-        match key {
-            "word_order" => self.settings.word_order = WordOrder::parse(value)?,
-            "timeout" => self.settings.timeout = parse_timeout(value)?,
-            "retries" => {
-                self.settings.retries =
-                    value.parse().map_err(|_| Error::usage(format!("`retries={value}` is not a number")))?
-            }
-            _ => {
-                return Err(Error::usage(format!("K2 wire devices have no option `{key}`"))
-                    .hint("options: word_order, timeout, retries"))
-            }
-        }
-        Ok(())
-    }
 }
 
+/// The instructions run through the helper program (without one they explain how to get it).
 impl super::K2Ops for K2Wire {
     fn model(&self) -> &'static Model {
         self.space.model
+    }
+    fn pls(&mut self, channel: u8) -> Result<String> {
+        self.instruction(super::agent::protocol::Command::Pls(channel), &format!("PLS {channel}"))
+    }
+    fn hdef(&mut self, counter: u8, mode: u8) -> Result<String> {
+        self.instruction(
+            super::agent::protocol::Command::Hdef { hsc: counter, mode },
+            &format!("HDEF {counter}, {mode}"),
+        )
+    }
+    fn hsc(&mut self, counter: u8) -> Result<String> {
+        self.instruction(super::agent::protocol::Command::Hsc(counter), &format!("HSC {counter}"))
+    }
+    fn pstop(&mut self, channel: u8) -> Result<String> {
+        self.instruction(super::agent::protocol::Command::Pstop(channel), &format!("PSTOP {channel}"))
+    }
+    fn read_rtc(&mut self) -> Result<super::instr::RtcTime> {
+        self.rtc_read()
+    }
+    fn helper_status(&mut self) -> Result<String> {
+        self.agent_status()
+    }
+    fn set_rtc(&mut self, t: super::instr::RtcTime) -> Result<()> {
+        self.agent_run(&super::agent::protocol::Command::SetRtc(t.to_bcd8()), "SET_RTC").map(|_| ())
     }
 }
 

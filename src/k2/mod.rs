@@ -81,6 +81,11 @@ pub trait K2Ops {
     fn backup_area(&self) -> (u32, u32) {
         (catalog::EEPROM_FIRST, catalog::EEPROM_LAST_DEFAULT)
     }
+    /// The state of the PLC-side helper program this connection uses for SM registers and
+    /// instructions (issue 5, docs/agent.md).
+    fn helper_status(&mut self) -> Result<String> {
+        Err(not_here("the helper status"))
+    }
     /// The simulator behind this device, when it is one (simulation controls).
     fn as_sim(&mut self) -> Option<&mut sim::K2Sim> {
         None

@@ -222,7 +222,11 @@ fn not_in_map(op: &K2Operand) -> Error {
         ),
     )
     .operand(op.canonical())
-    .hint("a PLC-side helper program that copies SM, T and C to V is the way to reach them (planned in a later plcsh issue); the simulator (sim:MODEL) has them")
+    .hint(if op.area == Area::SM {
+        "install the plcsh helper program in the PLC (lib/k2_agent.il, docs/agent.md) and connect with …&agent=VB3400; the simulator (sim:MODEL) has SM directly"
+    } else {
+        "copy timers and counters to V in the PLC program and read the V words; the simulator (sim:MODEL) has T and C directly"
+    })
 }
 
 fn span_in(space: &K2Space, table: Table, op: &K2Operand) -> Result<Span> {

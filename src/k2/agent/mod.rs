@@ -1,5 +1,6 @@
 //! The PLC-side helper ("agent") that gives plcsh SM registers and PLC instructions on a
 //! real K2 over Modbus: its mailbox protocol, shared by the simulator and the wire driver.
 
+pub mod client;
 pub mod il;
 pub mod protocol;

@@ -59,6 +59,25 @@ pub const STATUS_WORDS: u16 = (OFF_REQUEST / 2) as u16;
 /// Words a client writes for one request (header and full data block).
 pub const REQUEST_WORDS: u16 = ((SIZE - OFF_REQUEST) / 2) as u16;
 
+/// Parses a mailbox base (`VB3400`, `3400`): even, with the mailbox and the helper's
+/// scratch words below the E2PROM backup area (§2.2.8), so the helper never wears it.
+pub fn parse_base(text: &str) -> Result<u32, String> {
+    let t = text.trim().to_ascii_uppercase();
+    let n: u32 = t
+        .trim_start_matches('%')
+        .trim_start_matches("VB")
+        .parse()
+        .map_err(|_| format!("`{text}` is not a V byte address (e.g. VB{DEFAULT_BASE})"))?;
+    let total = super::il::TOTAL_SIZE;
+    if !n.is_multiple_of(2) || n + total > crate::k2::catalog::EEPROM_FIRST {
+        return Err(format!(
+            "the helper's mailbox needs an even address with {total} bytes free below the E2PROM area VB{} (got VB{n})",
+            crate::k2::catalog::EEPROM_FIRST
+        ));
+    }
+    Ok(n)
+}
+
 /// Command codes.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Command {

@@ -1,6 +1,7 @@
 //! The command registry: every shell command in one list, one file per command family.
 //! Completion, `help` and the README's command table all read this list.
 
+mod agent;
 mod counter;
 mod device;
 mod eeprom;
@@ -59,6 +60,7 @@ pub const COMMANDS: &[CommandSpec] = &[
     rtc::RTC,
     eeprom::EEPROM,
     lua::LUA,
+    agent::AGENT,
     help::HELP,
     help::QUIT,
 ];

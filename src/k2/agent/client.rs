@@ -1,0 +1,323 @@
+//! The plcsh side of the helper mailbox (docs/agent.md): one command at a time, written
+//! whole in one Modbus write, acknowledged by (sequence, token) in one Modbus read. Generic
+//! over [`Registers`] (V words on some link), so the protocol logic is tested without a
+//! network and the wire driver only supplies the register access.
+
+use super::protocol::{self as p, Command, ResultCode, Status};
+use crate::core::{Error, ErrorKind, Result};
+use std::time::{Duration, Instant};
+
+/// V-word access on the device's link (holding registers on a K2).
+pub trait Registers {
+    /// Reads `count` V words starting at V byte `vbyte` (even), in one request.
+    fn read_v(&mut self, vbyte: u32, count: u16) -> Result<Vec<u16>>;
+    /// Writes V words starting at V byte `vbyte` (even), in one request.
+    fn write_v(&mut self, vbyte: u32, words: &[u16]) -> Result<()>;
+}
+
+/// How many times a command is resent after another client's command won a race.
+const RACE_RETRIES: u32 = 5;
+
+/// One plcsh session's end of the mailbox.
+#[derive(Clone, Debug)]
+pub struct AgentClient {
+    pub base: u32,
+    /// Identifies this client's requests (random per session).
+    token: u16,
+    /// How long a command may wait for the helper (busy mailbox, then the acknowledgement).
+    pub timeout: Duration,
+    /// Pause between status reads (about a scan).
+    pub poll: Duration,
+    /// Commands sent (for messages and tests).
+    pub commands: u64,
+}
+
+/// A token that differs between sessions and processes (never 0).
+fn new_token() -> u16 {
+    let nanos =
+        std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map(|d| d.subsec_nanos()).unwrap_or(0);
+    let mix = nanos ^ (std::process::id().rotate_left(16)) ^ (&nanos as *const u32 as usize as u32);
+    let t = (mix ^ (mix >> 16)) as u16;
+    if t == 0 {
+        1
+    } else {
+        t
+    }
+}
+
+fn describe(cmd: &Command) -> String {
+    match cmd {
+        Command::SmWrite { start, data } => format!("writing SMB{start}…SMB{}", *start as usize + data.len() - 1),
+        Command::SmRead { start, len } => format!("reading SMB{start}…SMB{}", start + len - 1),
+        Command::Pls(n) => format!("PLS {n}"),
+        Command::Hdef { hsc, mode } => format!("HDEF {hsc}, {mode}"),
+        Command::Hsc(n) => format!("HSC {n}"),
+        Command::Pstop(n) => format!("PSTOP {n}"),
+        Command::SetRtc(_) => "SET_RTC".into(),
+        Command::ReadRtc => "READ_RTC".into(),
+        Command::Ping => "ping".into(),
+    }
+}
+
+impl AgentClient {
+    pub fn new(base: u32) -> AgentClient {
+        AgentClient {
+            base,
+            token: new_token(),
+            timeout: Duration::from_secs(2),
+            poll: Duration::from_millis(1),
+            commands: 0,
+        }
+    }
+
+    fn status(&self, regs: &mut dyn Registers) -> Result<Status> {
+        let words = regs.read_v(self.base, p::STATUS_WORDS)?;
+        let s = Status::parse(&words);
+        if s.signature != p::SIGNATURE {
+            return Err(Error::new(
+                ErrorKind::Unsupported,
+                format!(
+                    "no plcsh helper answers in VB{}…VB{} (signature 16#{:04X}, expected 16#{:04X})",
+                    self.base,
+                    self.base + p::SIZE - 1,
+                    s.signature,
+                    p::SIGNATURE
+                ),
+            )
+            .hint(format!(
+                "SM registers and instructions need the helper program in the PLC: `plcsh agent il --base VB{}` prints it (also lib/k2_agent.il); docs/agent.md says how to install it; or check agent=VB… matches the program",
+                self.base
+            )));
+        }
+        if s.version != p::VERSION {
+            return Err(Error::new(
+                ErrorKind::Unsupported,
+                format!(
+                    "the helper in the PLC speaks mailbox protocol version {}; this plcsh speaks {}",
+                    s.version,
+                    p::VERSION
+                ),
+            )
+            .hint("download the current helper: `plcsh agent il` (lib/k2_agent.il)"));
+        }
+        Ok(s)
+    }
+
+    /// Checks that the helper is installed and running (signature, version, heartbeat).
+    pub fn check(&mut self, regs: &mut dyn Registers, sleep: &mut dyn FnMut(Duration)) -> Result<Status> {
+        let a = self.status(regs)?;
+        let start = Instant::now();
+        loop {
+            let b = self.status(regs)?;
+            if b.heartbeat != a.heartbeat {
+                return Ok(b);
+            }
+            if start.elapsed() > self.timeout {
+                return Err(stopped(self.timeout));
+            }
+            sleep(self.poll);
+        }
+    }
+
+    /// Runs one command and returns its reply data. `sleep` waits between status reads.
+    pub fn run(&mut self, regs: &mut dyn Registers, cmd: &Command, sleep: &mut dyn FnMut(Duration)) -> Result<Vec<u8>> {
+        let what = describe(cmd);
+        let start = Instant::now();
+        let mut races = 0;
+        loop {
+            // 1. Wait until the mailbox is idle (no other client's request pending).
+            let mut s = self.status(regs)?;
+            let mut pending = self.pending(regs)?;
+            while pending != s.acks[0].seq {
+                if start.elapsed() > self.timeout {
+                    return Err(Error::new(ErrorKind::State, format!("mailbox busy: {what} could not be sent"))
+                        .hint(format!("another client's request (sequence {pending}) has waited {} ms for the helper; is the PLC in RUN? try again", self.timeout.as_millis())));
+                }
+                sleep(self.poll);
+                s = self.status(regs)?;
+                pending = self.pending(regs)?;
+            }
+            // 2. One write: the whole request.
+            let seq = p::next_seq(s.acks[0].seq);
+            regs.write_v(self.base + p::OFF_REQUEST, &p::request_words(seq, self.token, cmd))?;
+            self.commands += 1;
+            // 3. Wait for our (sequence, token) among the acks.
+            let sent = Instant::now();
+            let heartbeat = s.heartbeat;
+            loop {
+                sleep(self.poll);
+                let s = self.status(regs)?;
+                if let Some((i, ack)) = s.find(seq, self.token) {
+                    return match ack.result {
+                        ResultCode::Ok if i == 0 => Ok(s.reply),
+                        ResultCode::Ok if matches!(cmd, Command::SmRead { .. } | Command::ReadRtc) => break, // reply overwritten: read again
+                        ResultCode::Ok => Ok(Vec::new()),
+                        rc => Err(Error::new(
+                            ErrorKind::Refused,
+                            format!("the helper refused {what}: {rc} (result {})", rc.code()),
+                        )),
+                    };
+                }
+                let lost = s.acks.iter().any(|a| a.seq == seq && a.token != self.token);
+                if lost {
+                    break; // another client's request ran under our sequence number: ours did not run.
+                }
+                if sent.elapsed() > self.timeout {
+                    let hint = if s.heartbeat == heartbeat {
+                        "the helper's heartbeat stopped: the PLC is probably in STOP, or the helper is no longer called every scan"
+                    } else {
+                        "the helper runs but did not take the request; another client may be using the mailbox"
+                    };
+                    return Err(Error::new(
+                        ErrorKind::Timeout,
+                        format!("the helper did not acknowledge {what} within {} ms", self.timeout.as_millis()),
+                    )
+                    .hint(hint));
+                }
+            }
+            races += 1;
+            if races > RACE_RETRIES {
+                return Err(Error::new(
+                    ErrorKind::State,
+                    format!("mailbox busy: {what} lost {races} races to other clients"),
+                )
+                .hint(
+                    "another plcsh (or program) is sending helper commands to this PLC at the same time; try again",
+                ));
+            }
+        }
+    }
+
+    /// The request sequence currently in the mailbox.
+    fn pending(&self, regs: &mut dyn Registers) -> Result<u16> {
+        Ok(regs.read_v(self.base + p::OFF_REQUEST, 1)?[0])
+    }
+}
+
+fn stopped(t: Duration) -> Error {
+    Error::new(
+        ErrorKind::State,
+        format!("the plcsh helper is installed but its heartbeat did not move in {} ms", t.as_millis()),
+    )
+    .hint("the PLC is probably in STOP, or PLCSH_AGENT is not called every scan (LD %SM0.0 / CAL PLCSH_AGENT)")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::core::Clock;
+    use crate::k2::operand::{Area, K2Operand};
+    use crate::k2::sim::{self, K2Sim, SCAN_TIME};
+
+    /// V words of a simulator whose clock moves one scan per sleep.
+    struct SimRegs {
+        sim: K2Sim,
+        clock: Clock,
+        writes: u32,
+    }
+
+    impl Registers for SimRegs {
+        fn read_v(&mut self, vbyte: u32, count: u16) -> Result<Vec<u16>> {
+            self.sim.advance();
+            Ok((0..count as u32).map(|i| self.sim.mem.read(&K2Operand::word(Area::V, vbyte + 2 * i)) as u16).collect())
+        }
+        fn write_v(&mut self, vbyte: u32, words: &[u16]) -> Result<()> {
+            self.sim.advance();
+            self.writes += 1;
+            for (i, w) in words.iter().enumerate() {
+                self.sim.mem.write(&K2Operand::word(Area::V, vbyte + 2 * i as u32), *w as u32);
+            }
+            Ok(())
+        }
+    }
+
+    fn regs(agent: bool) -> SimRegs {
+        let clock = Clock::stepped();
+        let mut s = sim::open("K205-16DT", clock.clone()).unwrap();
+        if agent {
+            s.enable_agent(p::DEFAULT_BASE).unwrap();
+        }
+        clock.step(SCAN_TIME);
+        s.advance();
+        SimRegs { sim: s, clock, writes: 0 }
+    }
+
+    #[test]
+    fn commands_run_and_replies_come_back() {
+        let mut r = regs(true);
+        let clock = r.clock.clone();
+        let mut c = AgentClient::new(p::DEFAULT_BASE);
+        let mut tick = |_d: Duration| clock.step(SCAN_TIME);
+        c.check(&mut r, &mut tick).unwrap();
+        c.run(&mut r, &Command::SmWrite { start: 67, data: vec![0x85] }, &mut tick).unwrap();
+        assert_eq!(r.sim.mem.sm_byte(67), 0x85);
+        let reply = c.run(&mut r, &Command::SmRead { start: 66, len: 2 }, &mut tick).unwrap();
+        assert_eq!(reply, vec![r.sim.mem.sm_byte(66), 0x85]);
+        let e = c.run(&mut r, &Command::Hdef { hsc: 0, mode: 5 }, &mut tick).unwrap_err();
+        assert_eq!(e.kind, ErrorKind::Refused);
+        assert!(e.message.contains("HDEF 0, 5") && e.message.contains("mode"), "{e}");
+        assert_eq!(r.writes, 3, "one write per command");
+    }
+
+    #[test]
+    fn a_missing_helper_is_one_clear_error() {
+        let mut r = regs(false);
+        let clock = r.clock.clone();
+        let mut c = AgentClient::new(p::DEFAULT_BASE);
+        let e = c.run(&mut r, &Command::Pls(0), &mut |_| clock.step(SCAN_TIME)).unwrap_err();
+        assert_eq!(e.kind, ErrorKind::Unsupported);
+        assert!(e.hint.clone().unwrap().contains("plcsh agent il"), "{e}");
+        assert_eq!(r.writes, 0, "nothing was written to a mailbox nobody reads");
+    }
+
+    #[test]
+    fn a_stopped_plc_is_told_apart() {
+        let mut r = regs(true);
+        let mut c = AgentClient::new(p::DEFAULT_BASE);
+        c.timeout = Duration::from_millis(5);
+        // The clock never moves: no scan, no heartbeat.
+        let e = c.check(&mut r, &mut |d| std::thread::sleep(d)).unwrap_err();
+        assert!(e.message.contains("heartbeat"), "{e}");
+        let e = c.run(&mut r, &Command::Ping, &mut |d| std::thread::sleep(d)).unwrap_err();
+        assert_eq!(e.kind, ErrorKind::Timeout);
+        assert!(e.hint.clone().unwrap().contains("STOP"), "{e}");
+    }
+
+    #[test]
+    fn a_lost_race_is_retried_and_the_winner_is_untouched() {
+        let mut r = regs(true);
+        let clock = r.clock.clone();
+        let mut a = AgentClient::new(p::DEFAULT_BASE);
+        let mut b = AgentClient::new(p::DEFAULT_BASE);
+        b.token = a.token.wrapping_add(1).max(1);
+        // B's write lands between A's write and the helper's scan, under the same sequence.
+        let b_words = p::request_words(1, b.token, &Command::SmWrite { start: 77, data: vec![0x81] });
+        let mut injected = false;
+        let base = p::DEFAULT_BASE;
+        let mut tick = |_d: Duration| clock.step(SCAN_TIME);
+        struct Racer<'a> {
+            inner: &'a mut SimRegs,
+            inject: Option<Vec<u16>>,
+            done: &'a mut bool,
+            base: u32,
+        }
+        impl Registers for Racer<'_> {
+            fn read_v(&mut self, v: u32, n: u16) -> Result<Vec<u16>> {
+                self.inner.read_v(v, n)
+            }
+            fn write_v(&mut self, v: u32, w: &[u16]) -> Result<()> {
+                self.inner.write_v(v, w)?;
+                if let Some(bw) = self.inject.take() {
+                    *self.done = true;
+                    self.inner.write_v(self.base + p::OFF_REQUEST, &bw)?;
+                }
+                Ok(())
+            }
+        }
+        let mut racer = Racer { inner: &mut r, inject: Some(b_words), done: &mut injected, base };
+        a.run(&mut racer, &Command::SmWrite { start: 67, data: vec![0x85] }, &mut tick).unwrap();
+        assert!(injected);
+        assert_eq!(r.sim.mem.sm_byte(77), 0x81, "B's command ran, intact");
+        assert_eq!(r.sim.mem.sm_byte(67), 0x85, "A's command ran after its retry");
+    }
+}

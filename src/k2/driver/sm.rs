@@ -1,0 +1,192 @@
+//! SM operands and PLC instructions on a wire K2, through the helper mailbox (issue 5,
+//! docs/agent.md) when the device has `agent=VB…`; without it they stay refused by the
+//! Modbus map with a message naming the helper.
+//!
+//! Reads: the SM bytes the batch needs are fetched in runs of at most 64 bytes (one read
+//! command each; small gaps are read through) into a shadow of the SM area, and every
+//! operand is decoded from it. Reading copies SM bytes and disturbs nothing that runs.
+//! Writes keep the user's order: each operand's bytes are encoded in the shadow and sent
+//! as write commands, neighbouring operands merged into one command when they follow each
+//! other in the batch and in memory. A bit (or bit group) is a read-modify-write of its byte,
+//! through the helper, with the same race as bit writes over Modbus (README).
+
+use super::{Failure, K2Wire};
+use crate::core::{Error, ErrorKind, Operand, Result, Value};
+use crate::k2::agent::client::{AgentClient, Registers};
+use crate::k2::agent::protocol::{Command, DATA_MAX};
+use crate::k2::instr::RtcTime;
+use crate::k2::memory::Memory;
+use crate::k2::modbus_map;
+use crate::k2::operand::{Area, K2Operand, Width};
+use std::time::Duration;
+use tokio_modbus::Request;
+
+/// Gaps up to this many bytes are read through rather than split into two commands.
+const READ_THROUGH: u32 = 8;
+
+/// The shadow of the SM area the helper's replies are decoded from.
+pub(super) fn shadow(len: u32) -> Memory {
+    Memory {
+        i: Vec::new(),
+        q: Vec::new(),
+        m: Vec::new(),
+        v: Vec::new(),
+        sm: vec![0; len as usize],
+        ai: Vec::new(),
+        aq: Vec::new(),
+        t: Vec::new(),
+        c: Vec::new(),
+    }
+}
+
+/// The link's V words, for the mailbox client.
+struct VWords<'a>(&'a mut K2Wire);
+
+impl VWords<'_> {
+    fn register(&self, vbyte: u32) -> Result<u16> {
+        Ok(modbus_map::locate_read(&self.0.space, &K2Operand::word(Area::V, vbyte))?.start)
+    }
+    fn failed(&self, f: Failure, doing: &str) -> Error {
+        match f {
+            Failure::Link(e) => e,
+            Failure::Exception(c) => Error::new(
+                ErrorKind::Refused,
+                format!(
+                    "the PLC refused {doing} the helper mailbox: {} (Modbus exception {:02})",
+                    modbus_map::exception_name(c.into()),
+                    u8::from(c)
+                ),
+            )
+            .hint("check that agent=VB… lies inside the V area of this model"),
+        }
+    }
+}
+
+impl Registers for VWords<'_> {
+    fn read_v(&mut self, vbyte: u32, count: u16) -> Result<Vec<u16>> {
+        let start = self.register(vbyte)?;
+        match self.0.call(Request::ReadHoldingRegisters(start, count)) {
+            Ok(tokio_modbus::Response::ReadHoldingRegisters(w)) if w.len() == count as usize => Ok(w),
+            Ok(other) => Err(Error::link(format!("unexpected reply {other:?} reading the helper mailbox"))),
+            Err(f) => Err(self.failed(f, "reading")),
+        }
+    }
+    fn write_v(&mut self, vbyte: u32, words: &[u16]) -> Result<()> {
+        let start = self.register(vbyte)?;
+        self.0
+            .call(Request::WriteMultipleRegisters(start, words.to_vec().into()))
+            .map(|_| ())
+            .map_err(|f| self.failed(f, "writing"))
+    }
+}
+
+impl K2Wire {
+    /// Runs one helper command, or explains that the device has no helper configured.
+    pub(super) fn agent_run(&mut self, cmd: &Command, what: &str) -> Result<Vec<u8>> {
+        let Some(mut client) = self.agent.take() else {
+            return Err(Error::unsupported(format!(
+                "{what} needs the plcsh helper program in the PLC; this device has none configured"
+            ))
+            .hint("install lib/k2_agent.il (docs/agent.md) and connect with …&agent=VB3400"));
+        };
+        let poll = client.poll;
+        let r = client.run(&mut VWords(self), cmd, &mut |_| std::thread::sleep(poll));
+        self.agent = Some(client);
+        r
+    }
+
+    /// Checks the helper (signature, version, running heartbeat) and reports it.
+    pub fn agent_status(&mut self) -> Result<String> {
+        let Some(mut client) = self.agent.take() else {
+            return Err(Error::unsupported("no helper configured on this device").hint("connect with …&agent=VB3400"));
+        };
+        let poll = client.poll;
+        let r = client.check(&mut VWords(self), &mut |_| std::thread::sleep(poll));
+        let base = client.base;
+        self.agent = Some(client);
+        let s = r?;
+        Ok(format!(
+            "helper protocol {} at VB{base}, heartbeat {}, last command {} (result {})",
+            s.version, s.heartbeat, s.acks[0].seq, s.acks[0].result
+        ))
+    }
+
+    /// True when this batch needs the helper (it has SM operands and a helper is set).
+    pub(super) fn uses_agent(&self, op: &K2Operand) -> bool {
+        op.area == Area::SM && self.agent.is_some()
+    }
+
+    /// Reads SM operands through the helper.
+    pub(super) fn read_sm(&mut self, ops: &[Operand]) -> Result<Vec<Value>> {
+        let k2: Vec<K2Operand> = ops.iter().map(|o| K2Operand::from_key(o.key)).collect();
+        let mut ranges: Vec<(u32, u32)> = k2.iter().map(|o| (o.byte, o.byte + o.width.bytes())).collect();
+        ranges.sort();
+        let mut runs: Vec<(u32, u32)> = Vec::new();
+        for (s, e) in ranges {
+            match runs.last_mut() {
+                Some(last) if s <= last.1 + READ_THROUGH && e - last.0 <= DATA_MAX as u32 => last.1 = last.1.max(e),
+                _ => runs.push((s, e)),
+            }
+        }
+        for (s, e) in runs {
+            let mut at = s;
+            while at < e {
+                let len = (e - at).min(DATA_MAX as u32);
+                let what = format!("reading SMB{at}…SMB{}", at + len - 1);
+                let bytes = self.agent_run(&Command::SmRead { start: at as u16, len: len as u16 }, &what)?;
+                self.sm_shadow.sm[at as usize..(at + len) as usize].copy_from_slice(&bytes[..len as usize]);
+                at += len;
+            }
+        }
+        Ok(ops.iter().zip(&k2).map(|(o, k)| o.dtype.decode(self.sm_shadow.read(k))).collect())
+    }
+
+    /// Writes SM operands through the helper, in order.
+    pub(super) fn write_sm(&mut self, items: &[(Operand, Value)]) -> Result<()> {
+        // (start, bytes) commands, in order.
+        let mut cmds: Vec<(u32, Vec<u8>)> = Vec::new();
+        for (o, v) in items {
+            let k = K2Operand::from_key(o.key);
+            let (start, len) = (k.byte, k.width.bytes());
+            if matches!(k.width, Width::Bit(_) | Width::Group { .. }) {
+                // Only part of the byte(s) is written: fetch them first (read-modify-write).
+                self.read_sm(&[K2Operand::new(Area::SM, Width::Byte, start).to_core()])?;
+                if len > 1 {
+                    self.read_sm(&[K2Operand::new(Area::SM, Width::Byte, start + len - 1).to_core()])?;
+                }
+            }
+            self.sm_shadow.write(&k, o.dtype.encode(v));
+            let bytes = self.sm_shadow.sm[start as usize..(start + len) as usize].to_vec();
+            match cmds.last_mut() {
+                Some((s, b)) if *s + b.len() as u32 == start && b.len() + bytes.len() <= DATA_MAX => b.extend(bytes),
+                _ => cmds.push((start, bytes)),
+            }
+        }
+        for (start, data) in cmds {
+            let what = format!("writing SMB{start}…SMB{}", start as usize + data.len() - 1);
+            self.agent_run(&Command::SmWrite { start: start as u16, data }, &what)?;
+        }
+        Ok(())
+    }
+
+    pub(super) fn instruction(&mut self, cmd: Command, what: &str) -> Result<String> {
+        self.agent_run(&cmd, what).map(|_| format!("{what}: done by the helper"))
+    }
+
+    pub(super) fn rtc_read(&mut self) -> Result<RtcTime> {
+        let b = self.agent_run(&Command::ReadRtc, "READ_RTC")?;
+        let buf: [u8; 8] = b
+            .get(..8)
+            .and_then(|s| s.try_into().ok())
+            .ok_or_else(|| Error::link("the helper's READ_RTC reply is shorter than 8 bytes"))?;
+        RtcTime::from_bcd8(&buf).map_err(|m| Error::new(ErrorKind::Refused, format!("the PLC clock reads as {m}")))
+    }
+}
+
+/// The helper client for `agent=VB…` (validated like `plcsh agent il --base`).
+pub(super) fn client(text: &str, timeout: Duration) -> Result<AgentClient> {
+    let base = crate::k2::agent::protocol::parse_base(text).map_err(Error::usage)?;
+    let mut c = AgentClient::new(base);
+    c.timeout = timeout.max(Duration::from_secs(1));
+    Ok(c)
+}

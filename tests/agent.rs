@@ -1,0 +1,180 @@
+//! The PLC-side helper end to end (issue 5): `plcsh sim serve --agent` in one process runs
+//! the helper's mailbox protocol once per simulated scan; plcsh in another process reaches
+//! SM registers and instructions through Modbus TCP → mailbox → SM → PTO, and gets the same
+//! results as the in-process simulator.
+
+mod common;
+use common::*;
+
+use plcsh::core::{Clock, ErrorKind, Value};
+use plcsh::session::{Session, SetItem};
+use serde_json::Value as Json;
+use std::io::{BufRead, BufReader};
+use std::process::{Child, Stdio};
+use std::time::{Duration, Instant};
+
+struct Server {
+    child: Child,
+    tcp: String,
+}
+
+impl Server {
+    fn start(extra: &[&str]) -> Server {
+        let mut child = plcsh()
+            .args(["sim", "serve", "--tcp", "0"])
+            .args(extra)
+            .stdout(Stdio::piped())
+            .stderr(Stdio::inherit())
+            .spawn()
+            .expect("start plcsh sim serve");
+        let mut line = String::new();
+        BufReader::new(child.stdout.take().unwrap()).read_line(&mut line).expect("readiness line");
+        let ready: Json = serde_json::from_str(&line).unwrap_or_else(|e| panic!("not JSON: {line:?}: {e}"));
+        Server { child, tcp: ready["tcp"].as_str().unwrap().to_string() }
+    }
+    fn url(&self) -> String {
+        format!("tcp://{}?model=K205-16DT&agent=VB3400", self.tcp)
+    }
+}
+
+impl Drop for Server {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+/// Runs plcsh `-c LINE --json` on `device` (or the in-process simulator in stepped time).
+fn json(device: Option<&str>, line: &str) -> Vec<Json> {
+    let mut args = vec!["--json", "-c", line];
+    match device {
+        Some(d) => args.extend(["--device", d]),
+        None => args.extend(["--time", "stepped"]),
+    }
+    let o = run(&args, "");
+    let l = json_lines(&o);
+    for v in &l {
+        assert_eq!(v["ok"], true, "{line}: {v}");
+    }
+    l
+}
+
+fn values(v: &Json) -> Vec<Json> {
+    v["values"].as_array().unwrap().iter().map(|x| x["value"].clone()).collect()
+}
+
+fn session(url: &str) -> Session {
+    let mut s = Session::new(Clock::following());
+    s.open("plc", url).unwrap_or_else(|e| panic!("open {url}: {e}"));
+    s
+}
+
+/// Polls `operand` until it reads `want` (bounded; the PTO runs in wall-clock time).
+fn poll_until(s: &mut Session, operand: &str, want: Value) {
+    let start = Instant::now();
+    loop {
+        if s.get(&[operand]).unwrap()[0].1.value == want {
+            return;
+        }
+        assert!(start.elapsed() < Duration::from_secs(10), "{operand} never became {want}");
+        std::thread::sleep(Duration::from_millis(20));
+    }
+}
+
+#[test]
+fn pulse_train_through_the_mailbox_matches_the_simulator() {
+    let srv = Server::start(&["--agent"]);
+    let url = srv.url();
+    let line = "set SMB67=16#85, SMW68=500, SMD72=1000; pls 0";
+    json(Some(&url), line);
+    let mut s = session(&url);
+    poll_until(&mut s, "SM66.7", Value::Bool(true));
+    let wire: Vec<Value> = s
+        .get(&["SM66.7", "SMD212", "SMB66", "SMB67", "SMW68", "SMD72"])
+        .unwrap()
+        .into_iter()
+        .map(|r| r.1.value)
+        .collect();
+    let local = json(None, &format!("{line}; sim step 501ms; get SM66.7 SMD212 SMB66 SMB67 SMW68 SMD72"));
+    let local: Vec<Json> = values(local.last().unwrap());
+    let wire: Vec<Json> = wire.iter().map(|v| serde_json::to_value(v).unwrap()).collect();
+    assert_eq!(wire, local, "SM66.7 SMD212 SMB66 SMB67 SMW68 SMD72 over the wire and in-process");
+    assert_eq!(wire[1], 1000);
+}
+
+#[test]
+fn hsc_setup_with_a_multi_pv_table_matches_the_simulator() {
+    let srv = Server::start(&["--agent"]);
+    let setup = "hsc 0 mode=9 rate=4x pv=[100,200,300] relative cyclic at VB3009";
+    let read = "get SMB37 SMD38 SMB141 SMW142 SMB36 SMB140 VB3009 VD3010 VD3014 VD3018";
+    let wire = json(Some(&srv.url()), &format!("{setup}; {read}"));
+    let local = json(None, &format!("{setup}; {read}"));
+    assert_eq!(values(wire.last().unwrap()), values(local.last().unwrap()));
+    assert_eq!(wire[0]["writes"], local[0]["writes"], "the helper wrote the same registers");
+    assert_eq!(values(wire.last().unwrap())[6], 3, "three PVs in the table");
+}
+
+#[test]
+fn the_clock_is_set_and_read_through_the_helper() {
+    let srv = Server::start(&["--agent"]);
+    let l = json(Some(&srv.url()), "rtc set 2026-11-22T10:00:00; rtc");
+    let t = l[1]["rtc"].as_str().unwrap_or_else(|| panic!("{}", l[1]));
+    assert!(t.starts_with("2026-11-22T10:00:0"), "{t}");
+}
+
+#[test]
+fn a_missing_helper_is_one_clear_message() {
+    let srv = Server::start(&[]);
+    let started = Instant::now();
+    let o = run(&["--json", "--device", &srv.url(), "-c", "set SMB67=16#85, SMW68=500, SMD72=1000; pls 0"], "");
+    let l = json_lines(&o);
+    assert_eq!(l.len(), 1, "one message, not one per register: {l:?}");
+    assert_eq!(l[0]["error"]["kind"], "unsupported");
+    assert!(l[0]["error"]["hint"].as_str().unwrap().contains("k2_agent.il"), "{}", l[0]);
+    assert!(started.elapsed() < Duration::from_secs(2), "no timeout was waited out");
+    // Without agent= the SM area is refused before anything is sent, naming the helper.
+    let o = run(&["--json", "--device", &format!("tcp://{}", srv.tcp), "-c", "get SMB66"], "");
+    let l = json_lines(&o);
+    assert!(l[0]["error"]["hint"].as_str().unwrap().contains("agent=VB3400"), "{}", l[0]);
+}
+
+#[test]
+fn two_clients_using_the_mailbox_do_not_corrupt_each_other() {
+    let srv = Server::start(&["--agent"]);
+    let url = srv.url();
+    let worker = |operand: &'static str, url: String| {
+        std::thread::spawn(move || {
+            let mut s = session(&url);
+            let (mut ok, mut busy) = (0, 0);
+            for i in 1..=25i64 {
+                let item = SetItem { operand: operand.into(), value: (i * 7).to_string(), column: 0, value_column: 0 };
+                match s.set(&[item]) {
+                    Ok(_) => {}
+                    Err(e) if e.kind == ErrorKind::State => {
+                        busy += 1;
+                        continue;
+                    }
+                    Err(e) => panic!("{operand}: {e}"),
+                }
+                match s.get(&[operand]) {
+                    Ok(r) => {
+                        assert_eq!(r[0].1.value, Value::Int(i * 7), "{operand} read back what this client wrote");
+                        ok += 1;
+                    }
+                    Err(e) if e.kind == ErrorKind::State => busy += 1,
+                    Err(e) => panic!("{operand}: {e}"),
+                }
+            }
+            (ok, busy)
+        })
+    };
+    let a = worker("SMW68", url.clone());
+    let b = worker("SMW78", url.clone());
+    let (a, b) = (a.join().unwrap(), b.join().unwrap());
+    eprintln!("client A: {} round trips, {} busy; client B: {} round trips, {} busy", a.0, a.1, b.0, b.1);
+    assert!(a.0 > 0 && b.0 > 0, "both clients got through");
+    let mut s = session(&url);
+    let last: Vec<Value> = s.get(&["SMW68", "SMW78"]).unwrap().into_iter().map(|r| r.1.value).collect();
+    assert!(matches!(last[0], Value::Int(v) if v % 7 == 0 && v > 0), "{last:?}");
+    assert!(matches!(last[1], Value::Int(v) if v % 7 == 0 && v > 0), "{last:?}");
+}
