@@ -18,8 +18,8 @@ use std::time::Duration;
 pub struct Agent {
     /// Mailbox base (V byte offset).
     pub base: u32,
-    /// The last scan the helper ran in.
-    last_scan: u128,
+    /// The last scan the helper ran in (`None` before its first scan).
+    last_scan: Option<u128>,
 }
 
 /// The mailbox bytes, copied out of V for one scan.
@@ -45,7 +45,9 @@ impl K2Sim {
                 self.mem.v.len() - 1
             ));
         }
-        self.agent = Some(Agent { base, last_scan: self.scan_number(self.last) });
+        // A PLC in RUN has been scanning before any client looks: run the first scan now.
+        self.agent = Some(Agent { base, last_scan: None });
+        self.agent_scans(self.last);
         Ok(())
     }
 
@@ -59,14 +61,14 @@ impl K2Sim {
     pub(super) fn agent_scans(&mut self, now: Duration) {
         let Some(a) = self.agent else { return };
         let scan = self.scan_number(now);
-        if scan <= a.last_scan {
+        if a.last_scan.is_some_and(|last| scan <= last) {
             return;
         }
-        self.agent = Some(Agent { last_scan: scan, ..a });
+        self.agent = Some(Agent { last_scan: Some(scan), ..a });
         let (b, n) = (a.base as usize, protocol::SIZE as usize);
         let mut mailbox = Mailbox(self.mem.v[b..b + n].to_vec());
         // The heartbeat counts every scan, as the PLC program's ADD does.
-        let missed = (scan - a.last_scan - 1).min(u16::MAX as u128) as u16;
+        let missed = a.last_scan.map_or(0, |last| (scan - last - 1).min(u16::MAX as u128) as u16);
         let hb = u16::from_be_bytes([mailbox.0[4], mailbox.0[5]]).wrapping_add(missed);
         mailbox.0[4..6].copy_from_slice(&hb.to_be_bytes());
         protocol::execute_scan(&mut mailbox, 0, &mut |cmd| self.agent_command(cmd));
