@@ -178,3 +178,28 @@ fn two_clients_using_the_mailbox_do_not_corrupt_each_other() {
     assert!(matches!(last[0], Value::Int(v) if v % 7 == 0 && v > 0), "{last:?}");
     assert!(matches!(last[1], Value::Int(v) if v % 7 == 0 && v > 0), "{last:?}");
 }
+
+#[test]
+fn lua_reaches_the_helper_on_a_wire_plc() {
+    let srv = Server::start(&["--agent"]);
+    let dir = std::env::temp_dir().join(format!("plcsh-agent-lua-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let script = dir.join("wire_pto.lua");
+    std::fs::write(
+        &script,
+        r#"
+local plc = plcsh.device("plc")
+assert(plc:agent_status().message:find("helper protocol 1"))
+plc:set({"SMB67", 0x85}, {"SMW68", 500}, {"SMD72", 200})
+plc:pls(0)
+plcsh.wait_until(function() return plc["SM66.7"] end, {timeout = 5000, every = 10})
+plcsh.assert_eq(plc.SMD212, 200, "pulses counted by the PLC")
+print("ok")
+"#,
+    )
+    .unwrap();
+    let o = run(&["--device", &srv.url(), "run", script.to_str().unwrap()], "");
+    assert!(o.status.success(), "{}{}", stdout(&o), String::from_utf8_lossy(&o.stderr));
+    assert!(stdout(&o).contains("ok"));
+    let _ = std::fs::remove_dir_all(&dir);
+}

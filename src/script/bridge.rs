@@ -109,6 +109,8 @@ pub const BRIDGE: &[Bridge] = &[
     row("wait_event", "k2", "wait event {} [timeout={ms}]"),
     // K2 real-time clock and E2PROM backup (k2.md §7).
     row("rtc", "k2", "rtc"),
+    // The PLC-side helper program on a wire K2 (docs/agent.md).
+    row("agent_status", "k2", "agent status"),
     row("rtc_set", "k2", "rtc set {}"),
     row("rtc_sync", "k2", "rtc sync"),
     row("eeprom_dump", "k2", "eeprom dump {}"),
