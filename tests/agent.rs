@@ -9,38 +9,23 @@ use common::*;
 use plcsh::core::{Clock, ErrorKind, Value};
 use plcsh::session::{Session, SetItem};
 use serde_json::Value as Json;
-use std::io::{BufRead, BufReader};
-use std::process::{Child, Stdio};
 use std::time::{Duration, Instant};
 
 struct Server {
-    child: Child,
+    _served: Served,
     tcp: String,
 }
 
 impl Server {
     fn start(extra: &[&str]) -> Server {
-        let mut child = plcsh()
-            .args(["sim", "serve", "--tcp", "0"])
-            .args(extra)
-            .stdout(Stdio::piped())
-            .stderr(Stdio::inherit())
-            .spawn()
-            .expect("start plcsh sim serve");
-        let mut line = String::new();
-        BufReader::new(child.stdout.take().unwrap()).read_line(&mut line).expect("readiness line");
-        let ready: Json = serde_json::from_str(&line).unwrap_or_else(|e| panic!("not JSON: {line:?}: {e}"));
-        Server { child, tcp: ready["tcp"].as_str().unwrap().to_string() }
+        let mut args = vec!["--tcp", "0"];
+        args.extend_from_slice(extra);
+        let served = serve(&args);
+        let tcp = served.ready["tcp"].as_str().unwrap().to_string();
+        Server { _served: served, tcp }
     }
     fn url(&self) -> String {
         format!("tcp://{}?model=K205-16DT&agent=VB3400", self.tcp)
-    }
-}
-
-impl Drop for Server {
-    fn drop(&mut self) {
-        let _ = self.child.kill();
-        let _ = self.child.wait();
     }
 }
 

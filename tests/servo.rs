@@ -9,15 +9,13 @@ use plcsh::servo::ds402::{self, Profile, Waiter};
 use plcsh::servo::frame::Frame;
 use plcsh::servo::objects::{self, ObjRef};
 use plcsh::session::open_url;
-use std::io::{BufRead, BufReader};
 use std::path::PathBuf;
-use std::process::{Child, Stdio};
 use std::sync::atomic::AtomicBool;
 use std::time::Duration;
 
-/// A served simulator; SIGTERM on drop (it then removes its symlink).
+/// A served drive simulator on a pty symlinked in a private directory.
 struct Server {
-    child: Child,
+    _served: Served,
     link: PathBuf,
     ready: serde_json::Value,
 }
@@ -27,30 +25,15 @@ impl Server {
         let dir = std::env::temp_dir().join(format!("plcsh-servo-{}-{tag}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         let link = dir.join("ttyKINCO");
-        let mut child = plcsh()
-            .args(["sim", "serve", "--servo-pty", link.to_str().unwrap()])
-            .args(extra)
-            .stdout(Stdio::piped())
-            .stderr(Stdio::inherit())
-            .spawn()
-            .expect("start plcsh sim serve");
-        let mut line = String::new();
-        BufReader::new(child.stdout.take().unwrap()).read_line(&mut line).expect("readiness line");
-        let ready: serde_json::Value = serde_json::from_str(&line).unwrap_or_else(|e| panic!("{line:?}: {e}"));
-        assert_eq!(ready["ready"], true);
-        Server { child, link, ready }
+        let mut args = vec!["--servo-pty", link.to_str().unwrap()];
+        args.extend_from_slice(extra);
+        let served = serve(&args);
+        let ready = served.ready.clone();
+        Server { _served: served, link, ready }
     }
 
     fn url(&self, params: &str) -> String {
         format!("kinco:{}?{params}", self.link.display())
-    }
-}
-
-impl Drop for Server {
-    fn drop(&mut self) {
-        let pid = nix::unistd::Pid::from_raw(self.child.id() as i32);
-        let _ = nix::sys::signal::kill(pid, nix::sys::signal::Signal::SIGTERM);
-        let _ = self.child.wait();
     }
 }
 

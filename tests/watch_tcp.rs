@@ -1,12 +1,10 @@
 //! `watch` and `trace` against the simulator served over TCP (issue 8: "sample at the requested
-//! rate; report the achieved rate in --verbose"). Needs `plcsh sim serve --tcp 127.0.0.1:0`
-//! from the Modbus wire branch: until that is merged the binary has no `sim serve` and this
-//! test says so and returns. The achieved rates are printed (a benchmark figure), not asserted.
+//! rate; report the achieved rate in --verbose"), through `plcsh sim serve --tcp 127.0.0.1:0`.
+//! The achieved rates are printed (a benchmark figure), not asserted.
 
 mod common;
 use common::*;
-use std::io::{BufRead, BufReader};
-use std::process::{Child, Stdio};
+use std::process::Stdio;
 
 /// Finds a `127.0.0.1:PORT` string anywhere in the readiness JSON.
 fn address(v: &serde_json::Value) -> Option<String> {
@@ -19,34 +17,15 @@ fn address(v: &serde_json::Value) -> Option<String> {
     }
 }
 
-struct Server(Child);
-impl Drop for Server {
-    fn drop(&mut self) {
-        let _ = self.0.kill();
-        let _ = self.0.wait();
-    }
-}
-
-fn serve() -> Option<(Server, String)> {
-    let probe = plcsh().args(["sim", "serve", "--help"]).stdin(Stdio::null()).output().unwrap();
-    assert!(probe.status.success() && String::from_utf8_lossy(&probe.stdout).contains("--tcp"));
-    let mut child = plcsh()
-        .args(["sim", "serve", "--tcp", "127.0.0.1:0"])
-        .stdin(Stdio::null())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::inherit())
-        .spawn()
-        .unwrap();
-    let mut line = String::new();
-    BufReader::new(child.stdout.take().unwrap()).read_line(&mut line).unwrap();
-    let ready: serde_json::Value = serde_json::from_str(line.trim()).expect("a JSON readiness line");
-    let addr = address(&ready).unwrap_or_else(|| panic!("no 127.0.0.1:PORT in {line}"));
-    Some((Server(child), addr))
+fn serve_tcp() -> (Served, String) {
+    let served = serve(&["--tcp", "127.0.0.1:0"]);
+    let addr = address(&served.ready).unwrap_or_else(|| panic!("no 127.0.0.1:PORT in {}", served.ready));
+    (served, addr)
 }
 
 #[test]
 fn watch_and_trace_over_tcp_report_the_achieved_rate() {
-    let Some((_server, addr)) = serve() else { return };
+    let (_server, addr) = serve_tcp();
     let url = format!("tcp://{addr}");
     let o = plcsh()
         .args(["--device", &url, "--json", "-v", "-c", "watch VW0 VD4 M0.0 every=20ms count=50"])

@@ -8,14 +8,12 @@ use common::*;
 use plcsh::core::{Clock, ErrorKind, Value};
 use plcsh::session::{Session, SetItem};
 use serde_json::Value as Json;
-use std::io::{BufRead, BufReader};
 use std::path::PathBuf;
-use std::process::{Child, Stdio};
 use tokio_modbus::prelude::*;
 
-/// A running `plcsh sim serve`, stopped on drop.
+/// A running `plcsh sim serve` on every transport, stopped on drop.
 struct Server {
-    child: Child,
+    served: Served,
     ready: Json,
     link: PathBuf,
 }
@@ -28,19 +26,9 @@ impl Server {
     fn start(model: &str, tcp: &str) -> Server {
         let n = NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
         let link = std::env::temp_dir().join(format!("plcsh-wire-{}-{n}", std::process::id()));
-        let mut child = plcsh()
-            .args(["sim", "serve", "--tcp", tcp, "--rtu-tcp", "0", "--rtu-pty"])
-            .arg(&link)
-            .args(["--model", model])
-            .stdout(Stdio::piped())
-            .stderr(Stdio::inherit())
-            .spawn()
-            .expect("start plcsh sim serve");
-        let mut line = String::new();
-        BufReader::new(child.stdout.take().unwrap()).read_line(&mut line).expect("readiness line");
-        let ready: Json = serde_json::from_str(&line).unwrap_or_else(|e| panic!("not JSON: {line:?}: {e}"));
-        assert_eq!(ready["ok"], true, "{line}");
-        Server { child, ready, link }
+        let served = serve(&["--tcp", tcp, "--rtu-tcp", "0", "--rtu-pty", link.to_str().unwrap(), "--model", model]);
+        let ready = served.ready.clone();
+        Server { served, ready, link }
     }
 
     fn tcp(&self) -> String {
@@ -53,14 +41,6 @@ impl Server {
             format!("rtu:{}?baud=115200&{params}", self.link.display()),
             format!("rtu+tcp://{}?{params}", self.ready["rtu_tcp"].as_str().unwrap()),
         ]
-    }
-}
-
-impl Drop for Server {
-    fn drop(&mut self) {
-        let _ = self.child.kill();
-        let _ = self.child.wait();
-        let _ = std::fs::remove_file(&self.link);
     }
 }
 
@@ -326,10 +306,10 @@ fn a_dropped_tcp_connection_is_reopened() {
 #[test]
 fn sigterm_stops_the_server_cleanly_and_removes_the_link() {
     let mut srv = Server::start("K205-16DT", "0");
-    let pid = nix::unistd::Pid::from_raw(srv.child.id() as i32);
+    let pid = nix::unistd::Pid::from_raw(srv.served.child.id() as i32);
     assert!(srv.link.exists());
     nix::sys::signal::kill(pid, nix::sys::signal::Signal::SIGTERM).unwrap();
-    let status = srv.child.wait().unwrap();
+    let status = srv.served.child.wait().unwrap();
     assert!(status.success(), "{status:?}");
     assert!(!srv.link.exists(), "the pty symlink is removed");
 }

@@ -10,6 +10,7 @@
 //! brackets cannot be mistaken for the `device:` prefix. Input is case-insensitive; output
 //! is canonical upper case.
 
+use crate::core::text::edit_distance;
 use crate::core::{DataType, Error, ErrorKind, Result};
 
 /// A K2 memory area.
@@ -507,20 +508,6 @@ fn unknown_area(s: &str) -> Error {
         .hint(format!("areas are I Q M V SM AI AQ T C; did you mean {}?", suggestions.join(", ")))
 }
 
-/// Levenshtein distance, for suggestions.
-pub fn edit_distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut prev: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut cur = vec![i + 1];
-        for (j, cb) in b.iter().enumerate() {
-            cur.push((prev[j] + usize::from(ca != *cb)).min(prev[j + 1] + 1).min(cur[j] + 1));
-        }
-        prev = cur;
-    }
-    prev[b.len()]
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -641,11 +628,5 @@ mod tests {
         assert_eq!(e("  %VW10x").column, Some(7));
         assert!(e("").message.contains("missing"));
         assert!(e("VW0..VW10000").message.contains("longer"));
-    }
-
-    #[test]
-    fn edit_distance_basics() {
-        assert_eq!(edit_distance("VX", "VW"), 1);
-        assert_eq!(edit_distance("", "SM"), 2);
     }
 }

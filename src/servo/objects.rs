@@ -278,7 +278,7 @@ fn suggest(word: &str) -> String {
     let w = word.to_ascii_lowercase();
     let mut hits: Vec<&str> = OBJECTS
         .iter()
-        .filter(|o| (w.len() >= 3 && o.name.contains(w.as_str())) || edit_distance(&w, o.name) <= 2)
+        .filter(|o| (w.len() >= 3 && o.name.contains(w.as_str())) || crate::core::text::edit_distance(&w, o.name) <= 2)
         .map(|o| o.name)
         .collect();
     hits.truncate(6);
@@ -287,19 +287,6 @@ fn suggest(word: &str) -> String {
     } else {
         format!("did you mean {}?", hits.join(", "))
     }
-}
-
-fn edit_distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut prev: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut cur = vec![i + 1];
-        for (j, cb) in b.iter().enumerate() {
-            cur.push((prev[j] + usize::from(ca != *cb)).min(prev[j + 1] + 1).min(cur[j] + 1));
-        }
-        prev = cur;
-    }
-    prev[b.len()]
 }
 
 /// The servo operand space of one device: the table plus the device's encoder resolution

@@ -70,6 +70,11 @@ pub fn words(s: &str) -> Result<Vec<(usize, &str)>> {
     Ok(out)
 }
 
+/// The words of a command's arguments, with columns in the whole line.
+pub fn words_in<'a>(args: &super::Args<'a>) -> Result<Vec<Word<'a>>> {
+    Ok(words(args.text).map_err(|e| e.shift(args.offset))?.into_iter().map(|(c, w)| (c + args.offset, w)).collect())
+}
+
 /// A word with its column.
 pub type Word<'a> = (usize, &'a str);
 /// A `key=value` option with its column.

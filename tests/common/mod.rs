@@ -41,3 +41,36 @@ pub fn stdout(o: &Output) -> String {
 pub fn json_lines(o: &Output) -> Vec<serde_json::Value> {
     stdout(o).lines().map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("not JSON: {l}: {e}"))).collect()
 }
+
+/// A running `plcsh sim serve`: started with `args`, its readiness line parsed; stopped with
+/// SIGTERM on drop (it then removes its symlinks). Never a fixed port or a sleep: callers
+/// pass port 0 and read the bound addresses from `ready`.
+pub struct Served {
+    pub child: std::process::Child,
+    pub ready: serde_json::Value,
+}
+
+pub fn serve(args: &[&str]) -> Served {
+    use std::io::BufRead;
+    let mut child = plcsh()
+        .args(["sim", "serve"])
+        .args(args)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::inherit())
+        .spawn()
+        .expect("start plcsh sim serve");
+    let mut line = String::new();
+    std::io::BufReader::new(child.stdout.take().unwrap()).read_line(&mut line).expect("readiness line");
+    let ready: serde_json::Value = serde_json::from_str(&line).unwrap_or_else(|e| panic!("not JSON: {line:?}: {e}"));
+    assert_eq!(ready["ok"], true, "{line}");
+    assert_eq!(ready["ready"], true, "{line}");
+    Served { child, ready }
+}
+
+impl Drop for Served {
+    fn drop(&mut self) {
+        let pid = nix::unistd::Pid::from_raw(self.child.id() as i32);
+        let _ = nix::sys::signal::kill(pid, nix::sys::signal::Signal::SIGTERM);
+        let _ = self.child.wait();
+    }
+}

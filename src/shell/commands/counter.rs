@@ -27,20 +27,12 @@ pub const HSC: CommandSpec = CommandSpec {
     run: hsc,
 };
 
-fn words<'a>(args: &Args<'a>) -> Result<Vec<Word<'a>>> {
-    Ok(lex::words(args.text)
-        .map_err(|e| e.shift(args.offset))?
-        .into_iter()
-        .map(|(c, w)| (c + args.offset, w))
-        .collect())
-}
-
 fn number<T: std::str::FromStr>(w: Word, what: &str) -> Result<T> {
     w.1.parse().map_err(|_| value_err(w.0, format!("`{}` is not {what}", w.1)))
 }
 
 fn hdef(sh: &mut Shell, args: Args) -> Result<Outcome> {
-    let w = words(&args)?;
+    let w = lex::words_in(&args)?;
     if w.len() != 2 {
         return Err(Error::usage("hdef takes a counter and a mode").column(args.offset).hint(HDEF.usage));
     }
@@ -54,7 +46,7 @@ fn hdef(sh: &mut Shell, args: Args) -> Result<Outcome> {
 }
 
 fn hsc(sh: &mut Shell, args: Args) -> Result<Outcome> {
-    let w = words(&args)?;
+    let w = lex::words_in(&args)?;
     let (pos, opts) = lex::options(&w);
     if pos.first().is_some_and(|p| p.1.eq_ignore_ascii_case("status")) {
         let word = *pos.get(1).ok_or_else(|| Error::usage("hsc status needs a counter number").column(args.offset))?;

@@ -72,7 +72,7 @@ pub fn find(name: &str) -> Option<&'static CommandSpec> {
 /// "did you mean" for an unknown command.
 pub fn suggest(name: &str) -> String {
     let mut best: Vec<(usize, &str)> =
-        COMMANDS.iter().map(|c| (crate::k2::operand::edit_distance(name, c.name), c.name)).collect();
+        COMMANDS.iter().map(|c| (crate::core::text::edit_distance(name, c.name), c.name)).collect();
     best.sort();
     match best.first() {
         Some((d, n)) if *d <= 2 => format!("did you mean `{n}`? `help` lists the commands"),

@@ -55,16 +55,8 @@ pub const PROFILE: CommandSpec = CommandSpec {
     run: profile,
 };
 
-fn words<'a>(args: &Args<'a>) -> Result<Vec<Word<'a>>> {
-    Ok(lex::words(args.text)
-        .map_err(|e| e.shift(args.offset))?
-        .into_iter()
-        .map(|(c, w)| (c + args.offset, w))
-        .collect())
-}
-
 fn instruction(sh: &mut Shell, args: Args, cmd: &str, usage: &str) -> Result<Outcome> {
-    let w = words(&args)?;
+    let w = lex::words_in(&args)?;
     let Some(&word) = w.first() else {
         return Err(Error::usage(format!("a pulse channel number is missing: {usage}")).column(args.offset));
     };
@@ -119,7 +111,7 @@ fn run_plan(sh: &mut Shell, dev: usize, cmd: &str, plan: &helpers::Plan) -> Resu
 }
 
 fn pto(sh: &mut Shell, args: Args) -> Result<Outcome> {
-    let w = words(&args)?;
+    let w = lex::words_in(&args)?;
     let (pos, opts) = lex::options(&w);
     if pos.first().is_some_and(|p| p.1.eq_ignore_ascii_case("status")) {
         let word = *pos.get(1).ok_or_else(|| Error::usage("pto status needs a channel number").column(args.offset))?;
@@ -150,7 +142,7 @@ fn pto(sh: &mut Shell, args: Args) -> Result<Outcome> {
 }
 
 fn pwm(sh: &mut Shell, args: Args) -> Result<Outcome> {
-    let w = words(&args)?;
+    let w = lex::words_in(&args)?;
     let (pos, opts) = lex::options(&w);
     check_options(&opts, &["cycle", "width", "freq"], PWM.usage)?;
     let word = *pos.first().ok_or_else(|| Error::usage(PWM.usage).column(args.offset))?;
@@ -208,7 +200,7 @@ fn segments(text: &str, col: usize) -> Result<Vec<hp::Segment>> {
 }
 
 fn profile(sh: &mut Shell, args: Args) -> Result<Outcome> {
-    let w = words(&args)?;
+    let w = lex::words_in(&args)?;
     let word = *w.first().ok_or_else(|| Error::usage(PROFILE.usage).column(args.offset))?;
     let (dev, ch) = k2cmd::channel(sh, word, "pulse channel", 3)?;
     let (mut at, mut list, mut force, mut plan_only, mut svg_to) = (None, None, false, false, None);
