@@ -120,3 +120,26 @@ impl Highlighter for ShellHelper {
 
 impl Validator for ShellHelper {}
 impl Helper for ShellHelper {}
+
+#[cfg(test)]
+mod session_tests {
+    use super::*;
+    use crate::core::Clock;
+
+    /// The completer on the default session's real devices (the K2 simulator and the
+    /// servo drive with its object dictionary), as the REPL builds it.
+    #[test]
+    fn completes_the_real_servo_objects_and_sm_registers() {
+        let mut s = Session::new(Clock::stepped());
+        s.open("plc", "sim:K205-16DT").unwrap();
+        s.open("servo", "sim-servo:?id=1").unwrap();
+        s.use_device("plc").unwrap();
+        let no_files = |_: &str| Vec::new();
+        let view = view_of(&s, &no_files);
+        let c = crate::shell::complete::complete("get servo:targ", 14, &view);
+        let texts: Vec<&str> = c.items.iter().map(|i| i.text.as_str()).collect();
+        assert!(texts.contains(&"servo:target_position") && texts.contains(&"servo:target_velocity"), "{texts:?}");
+        let c = crate::shell::complete::complete("set SMB6", 8, &view);
+        assert!(c.items.iter().any(|i| i.text == "SMB67" && i.meaning.contains("control byte")));
+    }
+}
