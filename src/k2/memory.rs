@@ -147,16 +147,20 @@ impl Memory {
         }
     }
     pub fn sm_word(&self, byte: u32) -> u16 {
-        self.read(&K2Operand::word(Area::SM, byte)) as u16
+        let b = byte as usize;
+        u16::from_be_bytes([self.sm[b], self.sm[b + 1]])
     }
     pub fn set_sm_word(&mut self, byte: u32, v: u16) {
-        self.write(&K2Operand::word(Area::SM, byte), v as u32)
+        let b = byte as usize;
+        self.sm[b..b + 2].copy_from_slice(&v.to_be_bytes())
     }
     pub fn sm_dword(&self, byte: u32) -> u32 {
-        self.read(&K2Operand::dword(Area::SM, byte))
+        let b = byte as usize;
+        u32::from_be_bytes([self.sm[b], self.sm[b + 1], self.sm[b + 2], self.sm[b + 3]])
     }
     pub fn set_sm_dword(&mut self, byte: u32, v: u32) {
-        self.write(&K2Operand::dword(Area::SM, byte), v)
+        let b = byte as usize;
+        self.sm[b..b + 4].copy_from_slice(&v.to_be_bytes())
     }
 }
 

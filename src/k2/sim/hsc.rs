@@ -26,7 +26,7 @@
 //!   than a second.
 
 use super::events::LOG_CAP;
-use super::inputs::{Inputs, Pin, Wave};
+use super::inputs::{ns, Inputs, Pin, Wave};
 use crate::core::{Error, ErrorKind, Result};
 use crate::k2::catalog::HscSpec;
 use crate::k2::instr::EventKind;
@@ -109,39 +109,47 @@ pub fn read_table(v: &[u8], start: u32, relative: bool, cyclic: bool) -> std::re
 
 /// Up to four edge streams (each the rising edges of a wave; falling edges are the wave
 /// shifted by half a period). Inline, so computing a drive allocates nothing.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug)]
 struct Streams {
-    w: [Option<Wave>; 4],
+    w: [Wave; 4],
+    n: u8,
+}
+
+impl Default for Streams {
+    fn default() -> Streams {
+        Streams { w: [Wave { hz: 1, origin_ns: 0 }; 4], n: 0 }
+    }
 }
 
 impl Streams {
     fn of(ws: &[Wave]) -> Streams {
         let mut s = Streams::default();
-        for (slot, w) in s.w.iter_mut().zip(ws) {
-            *slot = Some(*w);
+        for w in ws {
+            s.push(*w);
         }
         s
     }
     fn push(&mut self, w: Wave) {
-        if let Some(slot) = self.w.iter_mut().find(|s| s.is_none()) {
-            *slot = Some(w);
+        if let Some(slot) = self.w.get_mut(self.n as usize) {
+            *slot = w;
+            self.n += 1;
         }
     }
-    fn iter(&self) -> impl Iterator<Item = &Wave> {
-        self.w.iter().flatten()
+    fn waves(&self) -> &[Wave] {
+        &self.w[..self.n as usize]
     }
-    fn at(&self, t: Duration) -> i64 {
-        self.iter().map(|w| w.rises(t) as i64).sum()
+    /// Rising edges of every stream in (origin, t], `t` in ns.
+    fn at(&self, t: u64) -> i64 {
+        self.waves().iter().map(|w| w.rises_ns(t) as i64).sum()
     }
     fn single(&self) -> Option<&Wave> {
-        let mut it = self.iter();
-        match (it.next(), it.next()) {
-            (Some(w), None) => Some(w),
+        match self.waves() {
+            [w] => Some(w),
             _ => None,
         }
     }
     fn is_empty(&self) -> bool {
-        self.w[0].is_none()
+        self.n == 0
     }
 }
 
@@ -153,33 +161,55 @@ struct Drive {
 }
 
 impl Drive {
-    fn at(&self, t: Duration) -> i64 {
+    /// The net count at `t` ns.
+    fn at(&self, t: u64) -> i64 {
         self.up.at(t) - self.down.at(t)
     }
 
-    /// The earliest time in (a, b] at which the count since `a` reaches `k` in direction
-    /// `sign`.
-    fn time_of(&self, a: Duration, b: Duration, k: u64, sign: i64) -> Duration {
+    /// Times the counts of the interval (a, b] that move in direction `sign`.
+    fn timer(&self, a: Duration, b: Duration, sign: i64) -> Timer<'_> {
         let single = match (sign > 0, self.up.single(), self.down.is_empty(), self.down.single(), self.up.is_empty()) {
-            (true, Some(w), true, _, _) => Some(w),
-            (false, _, _, Some(w), true) => Some(w),
+            (true, Some(w), true, _, _) => Some(*w),
+            (false, _, _, Some(w), true) => Some(*w),
             _ => None,
         };
-        if let Some(w) = single {
-            return w.rise_time(w.rises(a) + k).min(b);
+        let (a, b) = (ns(a), ns(b));
+        match single {
+            Some(w) => Timer { drive: self, a, b, sign, base: 0, single: Some((w, w.rises_ns(a))) },
+            None => Timer { drive: self, a, b, sign, base: self.at(a), single: None },
         }
-        let base = self.at(a);
-        let (mut lo, mut hi) = (a.as_nanos(), b.as_nanos());
+    }
+}
+
+/// Finds the time of the k-th count of an interval; what does not depend on k is worked
+/// out once per interval.
+struct Timer<'a> {
+    drive: &'a Drive,
+    a: u64,
+    b: u64,
+    sign: i64,
+    /// The net count at `a` (search path).
+    base: i64,
+    /// One wave counting alone, with its rising edges up to `a`: the time is one division.
+    single: Option<(Wave, u64)>,
+}
+
+impl Timer<'_> {
+    /// The earliest time in (a, b] at which the count since `a` reaches `k`.
+    fn time_of(&self, k: u64) -> Duration {
+        if let Some((w, before)) = self.single {
+            return w.rise_time(before + k).min(Duration::from_nanos(self.b));
+        }
+        let (mut lo, mut hi) = (self.a, self.b);
         while lo < hi {
             let mid = lo + (hi - lo) / 2;
-            let t = Duration::from_nanos(mid as u64);
-            if (self.at(t) - base) * sign >= k as i64 {
+            if (self.drive.at(mid) - self.base) * self.sign >= k as i64 {
                 hi = mid;
             } else {
                 lo = mid + 1;
             }
         }
-        Duration::from_nanos(hi as u64)
+        Duration::from_nanos(hi)
     }
 }
 
@@ -546,10 +576,12 @@ impl HscChannel {
     ) {
         if now > last {
             if let Some(d) = self.drive(inputs, mem) {
-                let total = d.at(now) - d.at(last);
+                let total = d.at(ns(now)) - d.at(ns(last));
                 if total != 0 {
-                    let sign = total.signum();
-                    self.count(total, &|k| d.time_of(last, now, k, sign), raised, skipped);
+                    // Worked out only if a CV = PV event falls in this interval.
+                    let timer = std::cell::OnceCell::new();
+                    let time_of = |k| timer.get_or_init(|| d.timer(last, now, total.signum())).time_of(k);
+                    self.count(total, &time_of, raised, skipped);
                 }
             }
         }
@@ -651,17 +683,17 @@ impl HscChannel {
         let d = self.drive(inputs, mem)?;
         let target = self.target()?;
         let rate_probe = now + Duration::from_secs(1);
-        let sign = (d.at(rate_probe) - d.at(now)).signum();
+        let sign = (d.at(ns(rate_probe)) - d.at(ns(now))).signum();
         let dist = (target - self.cv) * sign;
         if sign == 0 || dist <= 0 {
             return None;
         }
         // Search far enough ahead: a day of virtual time bounds any wait.
         let horizon = now + Duration::from_secs(86_400);
-        if (d.at(horizon) - d.at(now)) * sign < dist {
+        if (d.at(ns(horizon)) - d.at(ns(now))) * sign < dist {
             return None;
         }
-        Some(d.time_of(now, horizon, dist as u64, sign))
+        Some(d.timer(now, horizon, sign).time_of(dist as u64))
     }
 }
 

@@ -22,36 +22,46 @@ pub fn pin_name(p: Pin) -> String {
 pub struct Wave {
     /// Frequency in Hz (> 0).
     pub hz: u64,
-    /// Time origin in ns of virtual time.
-    pub origin_ns: u128,
+    /// Time origin in ns of virtual time (64 bits: 584 years).
+    pub origin_ns: u64,
+}
+
+/// Nanoseconds of `t`, saturating at 584 years (virtual time never gets there).
+pub(crate) fn ns(t: Duration) -> u64 {
+    u64::try_from(t.as_nanos()).unwrap_or(u64::MAX)
 }
 
 impl Wave {
     pub fn new(hz: u64, origin: Duration) -> Wave {
-        Wave { hz, origin_ns: origin.as_nanos() }
+        Wave { hz, origin_ns: ns(origin) }
     }
 
     /// The same wave shifted later by `ns`.
-    pub fn shifted(self, ns: u128) -> Wave {
-        Wave { hz: self.hz, origin_ns: self.origin_ns + ns }
+    pub fn shifted(self, ns: u64) -> Wave {
+        Wave { hz: self.hz, origin_ns: self.origin_ns.saturating_add(ns) }
     }
 
     /// Half a period, in ns.
-    pub fn half_ns(&self) -> u128 {
-        500_000_000 / self.hz as u128
+    pub fn half_ns(&self) -> u64 {
+        500_000_000 / self.hz
     }
 
     /// Rising edges in (origin, t].
     pub fn rises(&self, t: Duration) -> u64 {
-        let t = t.as_nanos();
+        self.rises_ns(ns(t))
+    }
+
+    /// Rising edges in (origin, t], `t` in ns.
+    #[inline]
+    pub fn rises_ns(&self, t: u64) -> u64 {
         if t <= self.origin_ns {
             return 0;
         }
         let e = t - self.origin_ns;
         // 64-bit arithmetic while it cannot overflow (a day at 200 kHz), 128-bit beyond.
-        match u64::try_from(e).ok().and_then(|e| e.checked_mul(self.hz)) {
+        match e.checked_mul(self.hz) {
             Some(p) => p / 1_000_000_000,
-            None => (e * self.hz as u128 / 1_000_000_000) as u64,
+            None => (e as u128 * self.hz as u128 / 1_000_000_000) as u64,
         }
     }
 
@@ -62,13 +72,22 @@ impl Wave {
 
     /// The level at `t`.
     pub fn level(&self, t: Duration) -> bool {
-        self.rises(t) > self.falls(t)
+        self.level_ns(ns(t))
+    }
+
+    /// The level at `t` ns.
+    #[inline]
+    pub fn level_ns(&self, t: u64) -> bool {
+        self.rises_ns(t) > self.shifted(self.half_ns()).rises_ns(t)
     }
 
     /// The time of the n-th rising edge (n ≥ 1).
     pub fn rise_time(&self, n: u64) -> Duration {
-        let ns = self.origin_ns + (n as u128 * 1_000_000_000).div_ceil(self.hz as u128);
-        Duration::from_nanos(ns.min(u64::MAX as u128) as u64)
+        let after = match n.checked_mul(1_000_000_000) {
+            Some(p) => p.div_ceil(self.hz),
+            None => u64::try_from((n as u128 * 1_000_000_000).div_ceil(self.hz as u128)).unwrap_or(u64::MAX),
+        };
+        Duration::from_nanos(self.origin_ns.saturating_add(after))
     }
 }
 
@@ -81,12 +100,46 @@ pub enum Source {
     Quad { lead: Pin, lag: Pin, wave: Wave },
 }
 
+/// The one or two pins a source drives (inline: listing them allocates nothing).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Pins {
+    pins: [Pin; 2],
+    n: usize,
+}
+
+impl std::ops::Deref for Pins {
+    type Target = [Pin];
+    fn deref(&self) -> &[Pin] {
+        &self.pins[..self.n]
+    }
+}
+
+impl IntoIterator for Pins {
+    type Item = Pin;
+    type IntoIter = std::iter::Take<std::array::IntoIter<Pin, 2>>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.pins.into_iter().take(self.n)
+    }
+}
+
 impl Source {
-    pub fn pins(&self) -> Vec<Pin> {
+    pub fn pins(&self) -> Pins {
         match *self {
-            Source::Freq { pin, .. } => vec![pin],
-            Source::Quad { lead, lag, .. } => vec![lead, lag],
+            Source::Freq { pin, .. } => Pins { pins: [pin, pin], n: 1 },
+            Source::Quad { lead, lag, .. } => Pins { pins: [lead, lag], n: 2 },
         }
+    }
+
+    /// Each driven pin with the wave on it (the lag input of a pair a quarter period late).
+    pub fn waves(&self) -> impl Iterator<Item = (Pin, Wave)> {
+        let (a, b) = match *self {
+            Source::Freq { pin, wave } => ((pin, wave), None),
+            // A pair on one pin (not accepted by `sim quad`) is the leading wave, as `Inputs::wave` says.
+            Source::Quad { lead, lag, wave } => {
+                ((lead, wave), (lag != lead).then(|| (lag, wave.shifted(wave.half_ns() / 2))))
+            }
+        };
+        std::iter::once(a).chain(b)
     }
 
     pub fn hz(&self) -> u64 {

@@ -133,10 +133,11 @@ impl K2Sim {
 
     /// Writes the sources' current levels into the input image.
     fn refresh_input_levels(&mut self, now: Duration) {
+        let t = inputs::ns(now);
         for s in &self.inputs.sources {
-            for p in s.pins() {
-                if let (Some(w), Some(b)) = (self.inputs.wave(p), self.mem.i.get_mut(p.0 as usize)) {
-                    if w.level(now) {
+            for (p, w) in s.waves() {
+                if let Some(b) = self.mem.i.get_mut(p.0 as usize) {
+                    if w.level_ns(t) {
                         *b |= 1 << p.1
                     } else {
                         *b &= !(1 << p.1)
@@ -148,8 +149,10 @@ impl K2Sim {
 
     fn refresh_system_bits(&mut self, now: Duration) {
         let up = now.saturating_sub(self.start);
-        let scans = up.as_micros() / SCAN_TIME.as_micros();
-        let ms = up.as_millis();
+        // 64-bit arithmetic (a u128 division is a library call; 64 bits of µs is 584 000 years).
+        let us = u64::try_from(up.as_micros()).unwrap_or(u64::MAX);
+        let scans = us / SCAN_TIME.as_micros() as u64;
+        let ms = us / 1000;
         let mut b = 0u8;
         b |= 1; // SM0.0 always on (§8)
         if scans == 0 {
@@ -332,10 +335,10 @@ impl K2Sim {
         let now = self.last;
         let s = match s {
             Source::Freq { pin, wave } => {
-                Source::Freq { pin, wave: inputs::Wave { origin_ns: now.as_nanos(), ..wave } }
+                Source::Freq { pin, wave: inputs::Wave { origin_ns: inputs::ns(now), ..wave } }
             }
             Source::Quad { lead, lag, wave } => {
-                Source::Quad { lead, lag, wave: inputs::Wave { origin_ns: now.as_nanos(), ..wave } }
+                Source::Quad { lead, lag, wave: inputs::Wave { origin_ns: inputs::ns(now), ..wave } }
             }
         };
         self.inputs.add(s);

@@ -105,6 +105,20 @@ impl PtoRun {
         &self.segs[i.saturating_sub(1)]
     }
 
+    /// Pulses completed by `t` and the output level at `t`: [`Self::pulses_at`] and
+    /// [`Self::level_at`] with one segment search and one division.
+    pub fn at(&self, t: Duration) -> (u64, bool) {
+        if t >= self.end {
+            return (self.total, false);
+        }
+        let e = t.saturating_sub(self.start).as_nanos();
+        let s = self.seg_at(e);
+        let into = e - s.start_ns;
+        let q = div(into, s.cycle_ns);
+        let phase = into - q as u128 * s.cycle_ns as u128;
+        (s.first + q.min(s.count), t >= self.start && phase < (s.cycle_ns as u128 / 2))
+    }
+
     /// Pulses completed by `t`.
     pub fn pulses_at(&self, t: Duration) -> u64 {
         if t >= self.end {
@@ -255,10 +269,10 @@ impl PtoChannel {
         match &mut self.run {
             Run::Idle => {}
             Run::Pto(train) => {
-                let p = train.pulses_at(now);
+                let (p, level) = train.at(now);
                 let new = p - self.counted;
                 self.counted = p;
-                drive = Some(train.level_at(now));
+                drive = Some(level);
                 if now >= train.end {
                     raised.push((train.end, EventKind::PtoComplete { channel: r.channel }));
                     self.run = Run::Idle;
@@ -555,5 +569,15 @@ mod tests {
         assert_eq!(t.pulses_at(Duration::from_secs(100)), 5000);
         assert!(t.level_at(Duration::from_micros(10_100)));
         assert!(!t.level_at(Duration::from_micros(10_300)));
+    }
+
+    #[test]
+    fn at_is_pulses_and_level_together() {
+        let t = PtoRun::new(Duration::from_millis(10), &[(500_000, 1000), (250_000, 4000), (3, 7)]);
+        let ends = t.end.as_micros() as u64;
+        for us in (0..ends + 20).step_by(37).chain([10_000, 10_250, 10_499, 10_500, 510_000, ends - 1, ends]) {
+            let at = Duration::from_micros(us);
+            assert_eq!(t.at(at), (t.pulses_at(at), t.level_at(at)), "at {us} µs");
+        }
     }
 }
