@@ -93,6 +93,24 @@ impl Memory {
         }
     }
 
+    /// [`Self::read`] of the operand packed in `key` ([`K2Operand::key`]): bits, bytes,
+    /// words and double words of the byte areas straight from the key (the simulator's
+    /// read path); everything else through [`K2Operand::from_key`].
+    pub fn read_key(&self, key: u64) -> u32 {
+        let b = key as u32 as usize;
+        let a: &[u8] = match Area::ALL.get(((key >> 32) & 0xF) as usize) {
+            Some(Area::T | Area::C) | None => return self.read(&K2Operand::from_key(key)),
+            Some(&area) => self.area(area),
+        };
+        match (key >> 36) & 0xF {
+            0 => ((a[b] >> ((key >> 40) & 0xF) as u8) & 1) as u32,
+            1 => a[b] as u32,
+            2 => u16::from_be_bytes([a[b], a[b + 1]]) as u32,
+            3 => u32::from_be_bytes([a[b], a[b + 1], a[b + 2], a[b + 3]]),
+            _ => self.read(&K2Operand::from_key(key)),
+        }
+    }
+
     /// Writes the raw pattern of an operand (bounds already checked).
     pub fn write(&mut self, op: &K2Operand, raw: u32) {
         let b = op.byte as usize;
@@ -184,6 +202,20 @@ mod tests {
         assert_eq!(m.read(&parse_one("VW200").unwrap()), 0xAABB);
         assert_eq!(m.read(&parse_one("VW202").unwrap()), 0xCCDD);
         assert_eq!(m.read(&parse_one("V203.0").unwrap()), 1);
+    }
+
+    #[test]
+    fn read_key_reads_what_read_reads() {
+        let mut m = mem();
+        for (i, b) in m.v.iter_mut().enumerate().take(64) {
+            *b = (i as u8).wrapping_mul(37) ^ 0x5A;
+        }
+        m.sm[30] = 0xA5;
+        m.t[3] = -2;
+        for text in ["VB7", "VW8", "VD9", "V10.3", "V11.7", "VD60", "SMB30", "SM30.0", "SM30.1", "K4V0", "T3", "VD10/REAL"] {
+            let op = parse_one(text).unwrap();
+            assert_eq!(m.read_key(op.key()), m.read(&op), "{text}");
+        }
     }
 
     #[test]

@@ -249,6 +249,38 @@ pub struct HscChannel {
     last_up: bool,
     /// The user wrote SMD38 …: keep it until the next `HSC`.
     pub user_cv: bool,
+    /// The drive of the last interval and what it was computed from.
+    cache: Option<DriveCache>,
+}
+
+/// What a drive depends on besides input levels: when none of it changed and the inputs
+/// it read have the same levels, the drive is the same.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct DriveFrom {
+    sources: u64,
+    mode: Option<u8>,
+    running: bool,
+    dir_up: bool,
+    rate4x: bool,
+    start_low: bool,
+}
+
+/// A drive kept between intervals.
+#[derive(Clone, Copy, Debug)]
+struct DriveCache {
+    from: DriveFrom,
+    /// The input levels the drive was computed from.
+    levels: [(Pin, bool); 3],
+    n: u8,
+    drive: Option<Drive>,
+    /// The drive's net count at a time (ns), from the previous interval.
+    at: Option<(u64, i64)>,
+}
+
+impl DriveCache {
+    fn read(&self) -> &[(Pin, bool)] {
+        &self.levels[..(self.n as usize).min(self.levels.len())]
+    }
 }
 
 impl HscChannel {
@@ -270,6 +302,7 @@ impl HscChannel {
             cmp: Compare::default(),
             last_up: true,
             user_cv: false,
+            cache: None,
         }
     }
 
@@ -432,6 +465,16 @@ impl HscChannel {
         }
     }
 
+    /// Whether `total` counts from the current value reach the current PV (the first
+    /// test of [`Self::count`]).
+    fn hits(&self, total: i64) -> bool {
+        let n = total.unsigned_abs();
+        self.target().is_some_and(|target| {
+            let dist = (target - self.cv) * total.signum();
+            dist > 0 && dist as u64 <= n
+        })
+    }
+
     /// Applies `total` counts along a monotone path, raising CV = PV events timed by
     /// `time_of(k)` (the time of the k-th count).
     fn count(
@@ -490,12 +533,54 @@ impl HscChannel {
 
     /// The edge streams that count during an interval starting now.
     fn drive(&self, inputs: &Inputs, mem: &Memory) -> Option<Drive> {
+        self.drive_with(inputs, &mut |p| level(mem, p))
+    }
+
+    /// What [`Self::drive`] depends on besides input levels.
+    fn drive_from(&self, inputs: &Inputs) -> DriveFrom {
+        DriveFrom {
+            sources: inputs.generation(),
+            mode: self.mode.map(|m| m.mode),
+            running: self.running,
+            dir_up: self.dir_up,
+            rate4x: self.rate4x,
+            start_low: self.start_low,
+        }
+    }
+
+    /// [`Self::drive`], kept from the last interval while nothing it depends on changed
+    /// (the same sources, settings and levels of the inputs it read).
+    fn cached_drive(&mut self, inputs: &Inputs, mem: &Memory) -> &mut DriveCache {
+        let from = self.drive_from(inputs);
+        let fresh = self.cache.as_ref().is_some_and(|c| {
+            c.from == from && c.n as usize <= c.levels.len() && c.read().iter().all(|&(p, l)| level(mem, p) == l)
+        });
+        if !fresh {
+            let mut c = DriveCache { from, levels: [((0, 0), false); 3], n: 0, drive: None, at: None };
+            c.drive = self.drive_with(inputs, &mut |p| {
+                let l = level(mem, p);
+                match c.levels.get_mut(c.n as usize) {
+                    Some(slot) => {
+                        *slot = (p, l);
+                        c.n += 1;
+                    }
+                    None => c.n = u8::MAX, // more than it can keep: never reused
+                }
+                l
+            });
+            self.cache = Some(c);
+        }
+        self.cache.as_mut().expect("just filled")
+    }
+
+    /// [`Self::drive`] with the input levels from `level`.
+    fn drive_with(&self, inputs: &Inputs, level: &mut dyn FnMut(Pin) -> bool) -> Option<Drive> {
         let m = self.mode?;
         if !self.running {
             return None;
         }
         if let Some(s) = m.start {
-            if !Self::active(level(mem, s), self.start_low) {
+            if !Self::active(level(s), self.start_low) {
                 return None;
             }
         }
@@ -505,7 +590,7 @@ impl HscChannel {
                 let w = inputs.wave(m.count)?;
                 let up = match m.kind {
                     HscKind::InternalDir => self.dir_up,
-                    _ => m.dir.is_some_and(|p| level(mem, p)),
+                    _ => m.dir.is_some_and(&mut *level),
                 };
                 if up {
                     d.up.push(w)
@@ -539,7 +624,7 @@ impl HscChannel {
                 } else {
                     match (inputs.wave(a), inputs.wave(b)) {
                         (Some(wa), None) => {
-                            let b_high = level(mem, b);
+                            let b_high = level(b);
                             let fall = wa.shifted(wa.half_ns());
                             match (self.rate4x, b_high) {
                                 (false, false) => d.up.push(wa),
@@ -550,7 +635,7 @@ impl HscChannel {
                         }
                         (None, Some(wb)) if self.rate4x => {
                             let fall = wb.shifted(wb.half_ns());
-                            if level(mem, a) {
+                            if level(a) {
                                 (d.up, d.down) = (Streams::of(&[wb]), Streams::of(&[fall]))
                             } else {
                                 (d.up, d.down) = (Streams::of(&[fall]), Streams::of(&[wb]))
@@ -575,13 +660,27 @@ impl HscChannel {
         skipped: &mut u64,
     ) {
         if now > last {
-            if let Some(d) = self.drive(inputs, mem) {
-                let total = d.at(ns(now)) - d.at(ns(last));
-                if total != 0 {
+            let c = self.cached_drive(inputs, mem);
+            if let Some(d) = &c.drive {
+                let (a, b) = (ns(last), ns(now));
+                // The count at `last` was worked out by the previous interval.
+                let at_a = match c.at {
+                    Some((t, n)) if t == a => n,
+                    _ => d.at(a),
+                };
+                let at_b = d.at(b);
+                c.at = Some((b, at_b));
+                let total = at_b - at_a;
+                if self.hits(total) {
                     // Worked out only if a CV = PV event falls in this interval.
+                    let d = self.cache.and_then(|c| c.drive).expect("counting needs a drive");
                     let timer = std::cell::OnceCell::new();
                     let time_of = |k| timer.get_or_init(|| d.timer(last, now, total.signum())).time_of(k);
                     self.count(total, &time_of, raised, skipped);
+                } else if total != 0 {
+                    // What `count` does when no PV is reached.
+                    self.last_up = total > 0;
+                    self.cv += total;
                 }
             }
         }
@@ -665,15 +764,12 @@ impl HscChannel {
             Some(pv) => (self.cv == pv, self.cv > pv),
             None => (false, false),
         };
-        let mut s = mem.sm_byte(r.status);
-        for (bit, on) in [(st::TABLE_FAULT, self.fault), (st::DIR_UP, up), (st::EQUAL, eq), (st::GREATER, gt)] {
-            if on {
-                s |= 1 << bit
-            } else {
-                s &= !(1 << bit)
-            }
-        }
-        mem.set_sm_byte(r.status, s);
+        const MINE: u8 = 1 << st::TABLE_FAULT | 1 << st::DIR_UP | 1 << st::EQUAL | 1 << st::GREATER;
+        let bits = (self.fault as u8) << st::TABLE_FAULT
+            | (up as u8) << st::DIR_UP
+            | (eq as u8) << st::EQUAL
+            | (gt as u8) << st::GREATER;
+        mem.set_sm_byte(r.status, mem.sm_byte(r.status) & !MINE | bits);
         mem.set_sm_byte(r.segment, if self.multi { self.cmp.seg as u8 } else { 0 });
     }
 

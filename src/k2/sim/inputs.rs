@@ -8,6 +8,7 @@
 //! at 200 kHz costs the same as a millisecond. Waves start low; the k-th rising edge is at
 //! `origin + k / f` (k ≥ 1) and each high phase lasts half a period.
 
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::time::Duration;
 
 /// An input bit in the I area: (byte, bit).
@@ -130,18 +131,6 @@ impl Source {
         }
     }
 
-    /// Each driven pin with the wave on it (the lag input of a pair a quarter period late).
-    pub fn waves(&self) -> impl Iterator<Item = (Pin, Wave)> {
-        let (a, b) = match *self {
-            Source::Freq { pin, wave } => ((pin, wave), None),
-            // A pair on one pin (not accepted by `sim quad`) is the leading wave, as `Inputs::wave` says.
-            Source::Quad { lead, lag, wave } => {
-                ((lead, wave), (lag != lead).then(|| (lag, wave.shifted(wave.half_ns() / 2))))
-            }
-        };
-        std::iter::once(a).chain(b)
-    }
-
     pub fn hz(&self) -> u64 {
         match *self {
             Source::Freq { wave, .. } | Source::Quad { wave, .. } => wave.hz,
@@ -169,10 +158,30 @@ pub fn show_hz(hz: u64) -> String {
 /// Every active source.
 #[derive(Clone, Debug, Default)]
 pub struct Inputs {
-    pub sources: Vec<Source>,
+    sources: Vec<Source>,
+    /// Changes whenever the sources change (unique across all `Inputs`; 0 = none ever
+    /// added), so a counter can keep what it worked out from them until then.
+    generation: u64,
 }
 
+/// The next `Inputs::generation`.
+static GENERATION: AtomicU64 = AtomicU64::new(1);
+
 impl Inputs {
+    /// The active sources, oldest first.
+    pub fn sources(&self) -> &[Source] {
+        &self.sources
+    }
+
+    /// Identifies the current set of sources (see the field).
+    pub fn generation(&self) -> u64 {
+        self.generation
+    }
+
+    fn changed(&mut self) {
+        self.generation = GENERATION.fetch_add(1, Ordering::Relaxed);
+    }
+
     /// The wave on `pin`, if a source drives it.
     pub fn wave(&self, pin: Pin) -> Option<Wave> {
         self.sources.iter().find_map(|s| match *s {
@@ -201,11 +210,13 @@ impl Inputs {
         let pins = s.pins();
         self.sources.retain(|o| !o.pins().iter().any(|p| pins.contains(p)));
         self.sources.push(s);
+        self.changed();
     }
 
     /// Removes the source driving `pin`; returns it.
     pub fn remove(&mut self, pin: Pin) -> Option<Source> {
         let i = self.sources.iter().position(|s| s.pins().contains(&pin))?;
+        self.changed();
         Some(self.sources.remove(i))
     }
 }
@@ -240,6 +251,6 @@ mod tests {
         i.add(Source::Freq { pin: (0, 0), wave: Wave::new(5, Duration::ZERO) });
         assert!(i.quad((0, 1), (0, 0)).is_none(), "a new source on one pin replaces the pair");
         assert!(i.remove((0, 0)).is_some());
-        assert!(i.sources.is_empty());
+        assert!(i.sources().is_empty());
     }
 }

@@ -133,14 +133,24 @@ impl K2Sim {
 
     /// Writes the sources' current levels into the input image.
     fn refresh_input_levels(&mut self, now: Duration) {
+        fn put(i: &mut [u8], p: Pin, on: bool) {
+            if let Some(b) = i.get_mut(p.0 as usize) {
+                if on {
+                    *b |= 1 << p.1
+                } else {
+                    *b &= !(1 << p.1)
+                }
+            }
+        }
         let t = inputs::ns(now);
-        for s in &self.inputs.sources {
-            for (p, w) in s.waves() {
-                if let Some(b) = self.mem.i.get_mut(p.0 as usize) {
-                    if w.level_ns(t) {
-                        *b |= 1 << p.1
-                    } else {
-                        *b &= !(1 << p.1)
+        for s in self.inputs.sources() {
+            match *s {
+                Source::Freq { pin, wave } => put(&mut self.mem.i, pin, wave.level_ns(t)),
+                Source::Quad { lead, lag, wave } => {
+                    put(&mut self.mem.i, lead, wave.level_ns(t));
+                    // A pair on one pin (`sim quad` refuses it) shows the leading wave, as `Inputs::wave` says.
+                    if lag != lead {
+                        put(&mut self.mem.i, lag, wave.shifted(wave.half_ns() / 2).level_ns(t));
                     }
                 }
             }
@@ -215,7 +225,7 @@ impl K2Sim {
             }
         }
         if op.area == Area::I {
-            for s in &self.inputs.sources {
+            for s in self.inputs.sources() {
                 for p in s.pins() {
                     let bit_hit = match op.width {
                         Width::Bit(b) => p == (op.byte, b),
@@ -489,13 +499,7 @@ impl Device for K2Sim {
 
     fn read(&mut self, ops: &[Operand]) -> Result<Vec<Value>> {
         self.advance();
-        Ok(ops
-            .iter()
-            .map(|o| {
-                let k = K2Operand::from_key(o.key);
-                o.dtype.decode(self.mem.read(&k))
-            })
-            .collect())
+        Ok(ops.iter().map(|o| o.dtype.decode(self.mem.read_key(o.key))).collect())
     }
 
     fn write(&mut self, items: &[(Operand, Value)]) -> Result<()> {

@@ -30,6 +30,7 @@ use crate::core::{Error, ErrorKind, Result};
 use crate::k2::catalog::PtoSpec;
 use crate::k2::instr::EventKind;
 use crate::k2::memory::Memory;
+use super::inputs::ns;
 use crate::k2::sm_map::PtoRegs;
 use std::time::Duration;
 
@@ -79,6 +80,8 @@ pub struct Seg {
 #[derive(Clone, Debug)]
 pub struct PtoRun {
     pub start: Duration,
+    /// `start` in ns.
+    start_ns: u64,
     pub segs: Vec<Seg>,
     pub total: u64,
     pub end: Duration,
@@ -93,7 +96,7 @@ impl PtoRun {
             t += cycle_ns as u128 * count as u128;
             first += count;
         }
-        PtoRun { start, segs: out, total: first, end: start + dur(t) }
+        PtoRun { start, start_ns: ns(start), segs: out, total: first, end: start + dur(t) }
     }
 
     pub fn duration(&self) -> Duration {
@@ -111,12 +114,13 @@ impl PtoRun {
         if t >= self.end {
             return (self.total, false);
         }
-        let e = t.saturating_sub(self.start).as_nanos();
+        let t = ns(t);
+        let e = t.saturating_sub(self.start_ns) as u128;
         let s = self.seg_at(e);
         let into = e - s.start_ns;
         let q = div(into, s.cycle_ns);
         let phase = into - q as u128 * s.cycle_ns as u128;
-        (s.first + q.min(s.count), t >= self.start && phase < (s.cycle_ns as u128 / 2))
+        (s.first + q.min(s.count), t >= self.start_ns && phase < (s.cycle_ns as u128 / 2))
     }
 
     /// Pulses completed by `t`.
