@@ -96,18 +96,27 @@ impl Memory {
     /// [`Self::read`] of the operand packed in `key` ([`K2Operand::key`]): bits, bytes,
     /// words and double words of the byte areas straight from the key (the simulator's
     /// read path); everything else through [`K2Operand::from_key`].
+    #[inline]
     pub fn read_key(&self, key: u64) -> u32 {
         let b = key as u32 as usize;
+        // Plain conditional branches (SM first: what pollers read), not jump tables.
         let a: &[u8] = match Area::ALL.get(((key >> 32) & 0xF) as usize) {
+            Some(Area::SM) => &self.sm,
             Some(Area::T | Area::C) | None => return self.read(&K2Operand::from_key(key)),
             Some(&area) => self.area(area),
         };
-        match (key >> 36) & 0xF {
-            0 => ((a[b] >> ((key >> 40) & 0xF) as u8) & 1) as u32,
-            1 => a[b] as u32,
-            2 => u16::from_be_bytes([a[b], a[b + 1]]) as u32,
-            3 => u32::from_be_bytes([a[b], a[b + 1], a[b + 2], a[b + 3]]),
-            _ => self.read(&K2Operand::from_key(key)),
+        let width = (key >> 36) & 0xF;
+        if width == 3 {
+            let w = &a[b..b + 4];
+            u32::from_be_bytes([w[0], w[1], w[2], w[3]])
+        } else if width == 1 {
+            a[b] as u32
+        } else if width == 2 {
+            u16::from_be_bytes([a[b], a[b + 1]]) as u32
+        } else if width == 0 {
+            ((a[b] >> ((key >> 40) & 0xF) as u8) & 1) as u32
+        } else {
+            self.read(&K2Operand::from_key(key))
         }
     }
 

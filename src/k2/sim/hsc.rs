@@ -139,6 +139,7 @@ impl Streams {
         &self.w[..self.n as usize]
     }
     /// Rising edges of every stream in (origin, t], `t` in ns.
+    #[inline]
     fn at(&self, t: u64) -> i64 {
         self.waves().iter().map(|w| w.rises_ns(t) as i64).sum()
     }
@@ -162,6 +163,7 @@ struct Drive {
 
 impl Drive {
     /// The net count at `t` ns.
+    #[inline]
     fn at(&self, t: u64) -> i64 {
         self.up.at(t) - self.down.at(t)
     }
@@ -467,6 +469,7 @@ impl HscChannel {
 
     /// Whether `total` counts from the current value reach the current PV (the first
     /// test of [`Self::count`]).
+    #[inline]
     fn hits(&self, total: i64) -> bool {
         let n = total.unsigned_abs();
         self.target().is_some_and(|target| {
@@ -550,6 +553,7 @@ impl HscChannel {
 
     /// [`Self::drive`], kept from the last interval while nothing it depends on changed
     /// (the same sources, settings and levels of the inputs it read).
+    #[inline]
     fn cached_drive(&mut self, inputs: &Inputs, mem: &Memory) -> &mut DriveCache {
         let from = self.drive_from(inputs);
         let fresh = self.cache.as_ref().is_some_and(|c| {
@@ -659,7 +663,8 @@ impl HscChannel {
         raised: &mut Vec<(Duration, EventKind)>,
         skipped: &mut u64,
     ) {
-        if now > last {
+        // A counter without a mode or not running counts nothing (`drive` is None).
+        if self.running && self.mode.is_some() && now > last {
             let c = self.cached_drive(inputs, mem);
             if let Some(d) = &c.drive {
                 let (a, b) = (ns(last), ns(now));
@@ -750,14 +755,15 @@ impl HscChannel {
     }
 
     /// Writes CV, status and segment into the SM registers.
+    #[inline]
     pub fn publish(&self, mem: &mut Memory) {
         let r = self.regs;
         if !self.user_cv {
             mem.set_sm_dword(r.cv, self.cv as i32 as u32);
         }
-        let up = match self.mode.map(|m| m.kind) {
-            Some(HscKind::InternalDir) => self.dir_up,
-            Some(HscKind::ExternalDir) => self.mode.and_then(|m| m.dir).is_some_and(|p| level(mem, p)),
+        let up = match self.mode {
+            Some(m) if m.kind == HscKind::InternalDir => self.dir_up,
+            Some(m) if m.kind == HscKind::ExternalDir => m.dir.is_some_and(|p| level(mem, p)),
             _ => self.last_up,
         };
         let (eq, gt) = match self.current_pv() {

@@ -159,6 +159,9 @@ pub fn show_hz(hz: u64) -> String {
 #[derive(Clone, Debug, Default)]
 pub struct Inputs {
     sources: Vec<Source>,
+    /// Each driven pin with its rising-edge wave and falling-edge wave (the rising one
+    /// shifted by half a period), worked out when the sources change.
+    edges: Vec<(Pin, Wave, Wave)>,
     /// Changes whenever the sources change (unique across all `Inputs`; 0 = none ever
     /// added), so a counter can keep what it worked out from them until then.
     generation: u64,
@@ -178,8 +181,25 @@ impl Inputs {
         self.generation
     }
 
+    /// Every driven pin with its rising-edge and falling-edge waves: its level at `t` ns
+    /// is `rise.rises_ns(t) > fall.rises_ns(t)` ([`Wave::level_ns`] without the division).
+    pub fn edges(&self) -> &[(Pin, Wave, Wave)] {
+        &self.edges
+    }
+
     fn changed(&mut self) {
         self.generation = GENERATION.fetch_add(1, Ordering::Relaxed);
+        self.edges.clear();
+        for s in &self.sources {
+            for p in s.pins() {
+                // `wave` is what drives the pin (the lead's wave on a pair given one pin twice).
+                if let Some(w) = self.wave(p) {
+                    if !self.edges.iter().any(|e| e.0 == p) {
+                        self.edges.push((p, w, w.shifted(w.half_ns())));
+                    }
+                }
+            }
+        }
     }
 
     /// The wave on `pin`, if a source drives it.
@@ -216,8 +236,9 @@ impl Inputs {
     /// Removes the source driving `pin`; returns it.
     pub fn remove(&mut self, pin: Pin) -> Option<Source> {
         let i = self.sources.iter().position(|s| s.pins().contains(&pin))?;
+        let s = self.sources.remove(i);
         self.changed();
-        Some(self.sources.remove(i))
+        Some(s)
     }
 }
 

@@ -60,6 +60,10 @@ pub struct K2Sim {
     pub backup: Backup,
     /// The PLC-side helper program, when served with `--agent` (issue 5).
     pub agent: Option<agent::Agent>,
+    /// Scratch space of `advance_to` (events raised in a step, where each channel's end),
+    /// kept so a step allocates nothing.
+    raised: Vec<(Duration, EventKind)>,
+    run_ends: Vec<usize>,
 }
 
 impl K2Sim {
@@ -82,6 +86,8 @@ impl K2Sim {
             rtc: Rtc::new(instr::host_local_now(), start),
             backup: Backup { since: start, ..Backup::default() },
             agent: None,
+            raised: Vec::new(),
+            run_ends: Vec::new(),
         };
         sim.refresh_system_bits(start);
         sim
@@ -111,21 +117,28 @@ impl K2Sim {
     pub fn advance_to(&mut self, now: Duration) {
         let last = self.last;
         let now = now.max(last);
-        let mut raised = Vec::new();
+        // Events go to a buffer kept between steps, one run per channel, merged by time.
+        let mut raised = std::mem::take(&mut self.raised);
+        let mut ends = std::mem::take(&mut self.run_ends);
+        raised.clear();
+        ends.clear();
         let mut skipped = 0u64;
         for p in &mut self.pto {
             p.advance(&mut self.mem, now, &mut raised);
+            ends.push(raised.len());
         }
         for h in &mut self.hsc {
             h.advance(&mut self.mem, &self.inputs, last, now, &mut raised, &mut skipped);
+            ends.push(raised.len());
         }
         self.refresh_input_levels(now);
         if skipped > 0 {
             self.events.skip(skipped);
         }
         if !raised.is_empty() {
-            self.events.extend(raised);
+            self.events.extend_runs(&raised, &ends);
         }
+        (self.raised, self.run_ends) = (raised, ends);
         self.last = now;
         self.refresh_system_bits(now);
         self.agent_scans(now);
@@ -143,17 +156,8 @@ impl K2Sim {
             }
         }
         let t = inputs::ns(now);
-        for s in self.inputs.sources() {
-            match *s {
-                Source::Freq { pin, wave } => put(&mut self.mem.i, pin, wave.level_ns(t)),
-                Source::Quad { lead, lag, wave } => {
-                    put(&mut self.mem.i, lead, wave.level_ns(t));
-                    // A pair on one pin (`sim quad` refuses it) shows the leading wave, as `Inputs::wave` says.
-                    if lag != lead {
-                        put(&mut self.mem.i, lag, wave.shifted(wave.half_ns() / 2).level_ns(t));
-                    }
-                }
-            }
+        for &(p, rise, fall) in self.inputs.edges() {
+            put(&mut self.mem.i, p, rise.rises_ns(t) > fall.rises_ns(t));
         }
     }
 

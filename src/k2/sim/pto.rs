@@ -74,6 +74,25 @@ pub struct Seg {
     start_ns: u128,
     /// Pulses of the train before this segment.
     first: u64,
+    /// ⌊(2⁶⁴ − 1) / cycle_ns⌋: divides by the cycle with a multiplication ([`Seg::cycles_in`]).
+    inv: u64,
+}
+
+impl Seg {
+    /// Whole cycles in `ns` (`ns / cycle_ns`). Runs once per channel per step, so the
+    /// division is a multiplication by the reciprocal kept with the segment plus at most
+    /// two corrections (the estimate is low by less than 2 for any 64-bit dividend).
+    #[inline]
+    fn cycles_in(&self, ns: u128) -> u64 {
+        let Ok(x) = u64::try_from(ns) else { return div(ns, self.cycle_ns) };
+        let mut q = ((x as u128 * self.inv as u128) >> 64) as u64;
+        let mut r = x - q * self.cycle_ns;
+        while r >= self.cycle_ns {
+            q += 1;
+            r -= self.cycle_ns;
+        }
+        q
+    }
 }
 
 /// A running PTO train.
@@ -92,7 +111,7 @@ impl PtoRun {
         let mut out = Vec::with_capacity(segs.len());
         let (mut t, mut first) = (0u128, 0u64);
         for &(cycle_ns, count) in segs {
-            out.push(Seg { cycle_ns, count, start_ns: t, first });
+            out.push(Seg { cycle_ns, count, start_ns: t, first, inv: u64::MAX / cycle_ns.max(1) });
             t += cycle_ns as u128 * count as u128;
             first += count;
         }
@@ -103,6 +122,7 @@ impl PtoRun {
         self.end - self.start
     }
 
+    #[inline]
     fn seg_at(&self, elapsed: u128) -> &Seg {
         let i = self.segs.partition_point(|s| s.start_ns <= elapsed);
         &self.segs[i.saturating_sub(1)]
@@ -110,6 +130,7 @@ impl PtoRun {
 
     /// Pulses completed by `t` and the output level at `t`: [`Self::pulses_at`] and
     /// [`Self::level_at`] with one segment search and one division.
+    #[inline]
     pub fn at(&self, t: Duration) -> (u64, bool) {
         if t >= self.end {
             return (self.total, false);
@@ -118,7 +139,7 @@ impl PtoRun {
         let e = t.saturating_sub(self.start_ns) as u128;
         let s = self.seg_at(e);
         let into = e - s.start_ns;
-        let q = div(into, s.cycle_ns);
+        let q = s.cycles_in(into);
         let phase = into - q as u128 * s.cycle_ns as u128;
         (s.first + q.min(s.count), t >= self.start_ns && phase < (s.cycle_ns as u128 / 2))
     }
@@ -300,6 +321,7 @@ impl PtoChannel {
         self.apply_position_bits(mem);
     }
 
+    #[inline]
     fn count_pulses(&self, mem: &mut Memory, n: u64) {
         if n == 0 {
             return;
@@ -313,6 +335,7 @@ impl PtoChannel {
     }
 
     /// SM201.6 clears SMD212; SM201.4 loads SMD208 into it (§3.4.3.1).
+    #[inline]
     pub fn apply_position_bits(&self, mem: &mut Memory) {
         let r = self.regs;
         if mem.sm_bit(r.pos_control, pos::CLEAR) {
@@ -573,6 +596,19 @@ mod tests {
         assert_eq!(t.pulses_at(Duration::from_secs(100)), 5000);
         assert!(t.level_at(Duration::from_micros(10_100)));
         assert!(!t.level_at(Duration::from_micros(10_300)));
+    }
+
+    #[test]
+    fn division_by_the_kept_reciprocal_is_exact() {
+        for cycle in [1u64, 2, 3, 5, 7, 1000, 4_999, 5_000, 65_535_000_000, u32::MAX as u64 + 7, u64::MAX / 3, u64::MAX] {
+            let s = &PtoRun::new(Duration::ZERO, &[(cycle, 1)]).segs[0];
+            let mut xs = vec![0u64, 1, cycle - 1, cycle, cycle.saturating_add(1), u64::MAX, u64::MAX - 1, u64::MAX / 2];
+            xs.extend((1..64u64).map(|k| k.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> (k % 64)));
+            for x in xs {
+                assert_eq!(s.cycles_in(x as u128), x / cycle, "{x} / {cycle}");
+            }
+            assert_eq!(s.cycles_in(u64::MAX as u128 * 3), (u64::MAX as u128 * 3 / cycle as u128) as u64);
+        }
     }
 
     #[test]
