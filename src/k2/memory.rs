@@ -221,7 +221,9 @@ mod tests {
         }
         m.sm[30] = 0xA5;
         m.t[3] = -2;
-        for text in ["VB7", "VW8", "VD9", "V10.3", "V11.7", "VD60", "SMB30", "SM30.0", "SM30.1", "K4V0", "T3", "VD10/REAL"] {
+        for text in
+            ["VB7", "VW8", "VD9", "V10.3", "V11.7", "VD60", "SMB30", "SM30.0", "SM30.1", "K4V0", "T3", "VD10/REAL"]
+        {
             let op = parse_one(text).unwrap();
             assert_eq!(m.read_key(op.key()), m.read(&op), "{text}");
         }

@@ -144,12 +144,16 @@ mod tests {
     #[test]
     fn merging_runs_is_sorting() {
         let ev = |us: u64, channel: u8| (Duration::from_micros(us), EventKind::HscReset { channel });
-        let cases: Vec<(Vec<(Duration, EventKind)>, Vec<usize>)> = vec![
+        type Batch = Vec<(Duration, EventKind)>;
+        let cases: Vec<(Batch, Vec<usize>)> = vec![
             (vec![], vec![0, 0]),
             (vec![ev(5, 0), ev(2, 1), ev(2, 2), ev(9, 2)], vec![1, 1, 4]),
             (vec![ev(3, 0), ev(3, 0), ev(1, 1), ev(3, 1), ev(0, 2)], vec![2, 4, 5]),
             (vec![ev(4, 0), ev(1, 0), ev(2, 1)], vec![2, 3]), // a run out of order: the fallback
-            ((0..2 * LOG_CAP as u64 + 3).map(|i| ev(i / 2, (i % 2) as u8)).collect(), vec![LOG_CAP + 1, 2 * LOG_CAP + 3]),
+            (
+                (0..2 * LOG_CAP as u64 + 3).map(|i| ev(i / 2, (i % 2) as u8)).collect(),
+                vec![LOG_CAP + 1, 2 * LOG_CAP + 3],
+            ),
         ];
         for (raised, ends) in cases {
             let mut a = EventLog::default();

@@ -26,11 +26,11 @@
 //!   clears it. It blocks position instructions (PREL/PABS/PHOME/PJOG, not simulated); PLS
 //!   is not one of them and still runs.
 
+use super::inputs::ns;
 use crate::core::{Error, ErrorKind, Result};
 use crate::k2::catalog::PtoSpec;
 use crate::k2::instr::EventKind;
 use crate::k2::memory::Memory;
-use super::inputs::ns;
 use crate::k2::sm_map::PtoRegs;
 use std::time::Duration;
 
@@ -600,7 +600,8 @@ mod tests {
 
     #[test]
     fn division_by_the_kept_reciprocal_is_exact() {
-        for cycle in [1u64, 2, 3, 5, 7, 1000, 4_999, 5_000, 65_535_000_000, u32::MAX as u64 + 7, u64::MAX / 3, u64::MAX] {
+        for cycle in [1u64, 2, 3, 5, 7, 1000, 4_999, 5_000, 65_535_000_000, u32::MAX as u64 + 7, u64::MAX / 3, u64::MAX]
+        {
             let s = &PtoRun::new(Duration::ZERO, &[(cycle, 1)]).segs[0];
             let mut xs = vec![0u64, 1, cycle - 1, cycle, cycle.saturating_add(1), u64::MAX, u64::MAX - 1, u64::MAX / 2];
             xs.extend((1..64u64).map(|k| k.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> (k % 64)));
