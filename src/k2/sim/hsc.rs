@@ -9,6 +9,9 @@
 //! wave (one division for a single input, a binary search for 4x quadrature). Two-pulse
 //! mode (6/7) with both inputs driven is treated as moving monotonically at the net rate
 //! within one interval — crossings are timed approximately there (stated assumption).
+//! The edge streams a counter counts (its "drive") are kept between intervals while the
+//! sources, its settings and the input levels they were worked out from are unchanged, so
+//! an interval without a crossing costs a few multiplications.
 //!
 //! Behaviour where the manual is silent (stated assumptions):
 //! - SMD38 … shows the live count. A value the user writes there is kept (not overwritten
