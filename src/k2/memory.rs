@@ -93,6 +93,33 @@ impl Memory {
         }
     }
 
+    /// [`Self::read`] of the operand packed in `key` ([`K2Operand::key`]): bits, bytes,
+    /// words and double words of the byte areas straight from the key (the simulator's
+    /// read path); everything else through [`K2Operand::from_key`].
+    #[inline]
+    pub fn read_key(&self, key: u64) -> u32 {
+        let b = key as u32 as usize;
+        // Plain conditional branches (SM first: what pollers read), not jump tables.
+        let a: &[u8] = match Area::ALL.get(((key >> 32) & 0xF) as usize) {
+            Some(Area::SM) => &self.sm,
+            Some(Area::T | Area::C) | None => return self.read(&K2Operand::from_key(key)),
+            Some(&area) => self.area(area),
+        };
+        let width = (key >> 36) & 0xF;
+        if width == 3 {
+            let w = &a[b..b + 4];
+            u32::from_be_bytes([w[0], w[1], w[2], w[3]])
+        } else if width == 1 {
+            a[b] as u32
+        } else if width == 2 {
+            u16::from_be_bytes([a[b], a[b + 1]]) as u32
+        } else if width == 0 {
+            ((a[b] >> ((key >> 40) & 0xF) as u8) & 1) as u32
+        } else {
+            self.read(&K2Operand::from_key(key))
+        }
+    }
+
     /// Writes the raw pattern of an operand (bounds already checked).
     pub fn write(&mut self, op: &K2Operand, raw: u32) {
         let b = op.byte as usize;
@@ -147,16 +174,20 @@ impl Memory {
         }
     }
     pub fn sm_word(&self, byte: u32) -> u16 {
-        self.read(&K2Operand::word(Area::SM, byte)) as u16
+        let b = byte as usize;
+        u16::from_be_bytes([self.sm[b], self.sm[b + 1]])
     }
     pub fn set_sm_word(&mut self, byte: u32, v: u16) {
-        self.write(&K2Operand::word(Area::SM, byte), v as u32)
+        let b = byte as usize;
+        self.sm[b..b + 2].copy_from_slice(&v.to_be_bytes())
     }
     pub fn sm_dword(&self, byte: u32) -> u32 {
-        self.read(&K2Operand::dword(Area::SM, byte))
+        let b = byte as usize;
+        u32::from_be_bytes([self.sm[b], self.sm[b + 1], self.sm[b + 2], self.sm[b + 3]])
     }
     pub fn set_sm_dword(&mut self, byte: u32, v: u32) {
-        self.write(&K2Operand::dword(Area::SM, byte), v)
+        let b = byte as usize;
+        self.sm[b..b + 4].copy_from_slice(&v.to_be_bytes())
     }
 }
 
@@ -180,6 +211,22 @@ mod tests {
         assert_eq!(m.read(&parse_one("VW200").unwrap()), 0xAABB);
         assert_eq!(m.read(&parse_one("VW202").unwrap()), 0xCCDD);
         assert_eq!(m.read(&parse_one("V203.0").unwrap()), 1);
+    }
+
+    #[test]
+    fn read_key_reads_what_read_reads() {
+        let mut m = mem();
+        for (i, b) in m.v.iter_mut().enumerate().take(64) {
+            *b = (i as u8).wrapping_mul(37) ^ 0x5A;
+        }
+        m.sm[30] = 0xA5;
+        m.t[3] = -2;
+        for text in
+            ["VB7", "VW8", "VD9", "V10.3", "V11.7", "VD60", "SMB30", "SM30.0", "SM30.1", "K4V0", "T3", "VD10/REAL"]
+        {
+            let op = parse_one(text).unwrap();
+            assert_eq!(m.read_key(op.key()), m.read(&op), "{text}");
+        }
     }
 
     #[test]

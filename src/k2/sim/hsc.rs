@@ -9,6 +9,9 @@
 //! wave (one division for a single input, a binary search for 4x quadrature). Two-pulse
 //! mode (6/7) with both inputs driven is treated as moving monotonically at the net rate
 //! within one interval — crossings are timed approximately there (stated assumption).
+//! The edge streams a counter counts (its "drive") are kept between intervals while the
+//! sources, its settings and the input levels they were worked out from are unchanged, so
+//! an interval without a crossing costs a few multiplications.
 //!
 //! Behaviour where the manual is silent (stated assumptions):
 //! - SMD38 … shows the live count. A value the user writes there is kept (not overwritten
@@ -26,7 +29,7 @@
 //!   than a second.
 
 use super::events::LOG_CAP;
-use super::inputs::{Inputs, Pin, Wave};
+use super::inputs::{ns, Inputs, Pin, Wave};
 use crate::core::{Error, ErrorKind, Result};
 use crate::k2::catalog::HscSpec;
 use crate::k2::instr::EventKind;
@@ -109,39 +112,48 @@ pub fn read_table(v: &[u8], start: u32, relative: bool, cyclic: bool) -> std::re
 
 /// Up to four edge streams (each the rising edges of a wave; falling edges are the wave
 /// shifted by half a period). Inline, so computing a drive allocates nothing.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug)]
 struct Streams {
-    w: [Option<Wave>; 4],
+    w: [Wave; 4],
+    n: u8,
+}
+
+impl Default for Streams {
+    fn default() -> Streams {
+        Streams { w: [Wave { hz: 1, origin_ns: 0 }; 4], n: 0 }
+    }
 }
 
 impl Streams {
     fn of(ws: &[Wave]) -> Streams {
         let mut s = Streams::default();
-        for (slot, w) in s.w.iter_mut().zip(ws) {
-            *slot = Some(*w);
+        for w in ws {
+            s.push(*w);
         }
         s
     }
     fn push(&mut self, w: Wave) {
-        if let Some(slot) = self.w.iter_mut().find(|s| s.is_none()) {
-            *slot = Some(w);
+        if let Some(slot) = self.w.get_mut(self.n as usize) {
+            *slot = w;
+            self.n += 1;
         }
     }
-    fn iter(&self) -> impl Iterator<Item = &Wave> {
-        self.w.iter().flatten()
+    fn waves(&self) -> &[Wave] {
+        &self.w[..self.n as usize]
     }
-    fn at(&self, t: Duration) -> i64 {
-        self.iter().map(|w| w.rises(t) as i64).sum()
+    /// Rising edges of every stream in (origin, t], `t` in ns.
+    #[inline]
+    fn at(&self, t: u64) -> i64 {
+        self.waves().iter().map(|w| w.rises_ns(t) as i64).sum()
     }
     fn single(&self) -> Option<&Wave> {
-        let mut it = self.iter();
-        match (it.next(), it.next()) {
-            (Some(w), None) => Some(w),
+        match self.waves() {
+            [w] => Some(w),
             _ => None,
         }
     }
     fn is_empty(&self) -> bool {
-        self.w[0].is_none()
+        self.n == 0
     }
 }
 
@@ -153,33 +165,56 @@ struct Drive {
 }
 
 impl Drive {
-    fn at(&self, t: Duration) -> i64 {
+    /// The net count at `t` ns.
+    #[inline]
+    fn at(&self, t: u64) -> i64 {
         self.up.at(t) - self.down.at(t)
     }
 
-    /// The earliest time in (a, b] at which the count since `a` reaches `k` in direction
-    /// `sign`.
-    fn time_of(&self, a: Duration, b: Duration, k: u64, sign: i64) -> Duration {
+    /// Times the counts of the interval (a, b] that move in direction `sign`.
+    fn timer(&self, a: Duration, b: Duration, sign: i64) -> Timer<'_> {
         let single = match (sign > 0, self.up.single(), self.down.is_empty(), self.down.single(), self.up.is_empty()) {
-            (true, Some(w), true, _, _) => Some(w),
-            (false, _, _, Some(w), true) => Some(w),
+            (true, Some(w), true, _, _) => Some(*w),
+            (false, _, _, Some(w), true) => Some(*w),
             _ => None,
         };
-        if let Some(w) = single {
-            return w.rise_time(w.rises(a) + k).min(b);
+        let (a, b) = (ns(a), ns(b));
+        match single {
+            Some(w) => Timer { drive: self, a, b, sign, base: 0, single: Some((w, w.rises_ns(a))) },
+            None => Timer { drive: self, a, b, sign, base: self.at(a), single: None },
         }
-        let base = self.at(a);
-        let (mut lo, mut hi) = (a.as_nanos(), b.as_nanos());
+    }
+}
+
+/// Finds the time of the k-th count of an interval; what does not depend on k is worked
+/// out once per interval.
+struct Timer<'a> {
+    drive: &'a Drive,
+    a: u64,
+    b: u64,
+    sign: i64,
+    /// The net count at `a` (search path).
+    base: i64,
+    /// One wave counting alone, with its rising edges up to `a`: the time is one division.
+    single: Option<(Wave, u64)>,
+}
+
+impl Timer<'_> {
+    /// The earliest time in (a, b] at which the count since `a` reaches `k`.
+    fn time_of(&self, k: u64) -> Duration {
+        if let Some((w, before)) = self.single {
+            return w.rise_time(before + k).min(Duration::from_nanos(self.b));
+        }
+        let (mut lo, mut hi) = (self.a, self.b);
         while lo < hi {
             let mid = lo + (hi - lo) / 2;
-            let t = Duration::from_nanos(mid as u64);
-            if (self.at(t) - base) * sign >= k as i64 {
+            if (self.drive.at(mid) - self.base) * self.sign >= k as i64 {
                 hi = mid;
             } else {
                 lo = mid + 1;
             }
         }
-        Duration::from_nanos(hi as u64)
+        Duration::from_nanos(hi)
     }
 }
 
@@ -219,6 +254,38 @@ pub struct HscChannel {
     last_up: bool,
     /// The user wrote SMD38 …: keep it until the next `HSC`.
     pub user_cv: bool,
+    /// The drive of the last interval and what it was computed from.
+    cache: Option<DriveCache>,
+}
+
+/// What a drive depends on besides input levels: when none of it changed and the inputs
+/// it read have the same levels, the drive is the same.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct DriveFrom {
+    sources: u64,
+    mode: Option<u8>,
+    running: bool,
+    dir_up: bool,
+    rate4x: bool,
+    start_low: bool,
+}
+
+/// A drive kept between intervals.
+#[derive(Clone, Copy, Debug)]
+struct DriveCache {
+    from: DriveFrom,
+    /// The input levels the drive was computed from.
+    levels: [(Pin, bool); 3],
+    n: u8,
+    drive: Option<Drive>,
+    /// The drive's net count at a time (ns), from the previous interval.
+    at: Option<(u64, i64)>,
+}
+
+impl DriveCache {
+    fn read(&self) -> &[(Pin, bool)] {
+        &self.levels[..(self.n as usize).min(self.levels.len())]
+    }
 }
 
 impl HscChannel {
@@ -240,6 +307,7 @@ impl HscChannel {
             cmp: Compare::default(),
             last_up: true,
             user_cv: false,
+            cache: None,
         }
     }
 
@@ -402,6 +470,17 @@ impl HscChannel {
         }
     }
 
+    /// Whether `total` counts from the current value reach the current PV (the first
+    /// test of [`Self::count`]).
+    #[inline]
+    fn hits(&self, total: i64) -> bool {
+        let n = total.unsigned_abs();
+        self.target().is_some_and(|target| {
+            let dist = (target - self.cv) * total.signum();
+            dist > 0 && dist as u64 <= n
+        })
+    }
+
     /// Applies `total` counts along a monotone path, raising CV = PV events timed by
     /// `time_of(k)` (the time of the k-th count).
     fn count(
@@ -460,12 +539,55 @@ impl HscChannel {
 
     /// The edge streams that count during an interval starting now.
     fn drive(&self, inputs: &Inputs, mem: &Memory) -> Option<Drive> {
+        self.drive_with(inputs, &mut |p| level(mem, p))
+    }
+
+    /// What [`Self::drive`] depends on besides input levels.
+    fn drive_from(&self, inputs: &Inputs) -> DriveFrom {
+        DriveFrom {
+            sources: inputs.generation(),
+            mode: self.mode.map(|m| m.mode),
+            running: self.running,
+            dir_up: self.dir_up,
+            rate4x: self.rate4x,
+            start_low: self.start_low,
+        }
+    }
+
+    /// [`Self::drive`], kept from the last interval while nothing it depends on changed
+    /// (the same sources, settings and levels of the inputs it read).
+    #[inline]
+    fn cached_drive(&mut self, inputs: &Inputs, mem: &Memory) -> &mut DriveCache {
+        let from = self.drive_from(inputs);
+        let fresh = self.cache.as_ref().is_some_and(|c| {
+            c.from == from && c.n as usize <= c.levels.len() && c.read().iter().all(|&(p, l)| level(mem, p) == l)
+        });
+        if !fresh {
+            let mut c = DriveCache { from, levels: [((0, 0), false); 3], n: 0, drive: None, at: None };
+            c.drive = self.drive_with(inputs, &mut |p| {
+                let l = level(mem, p);
+                match c.levels.get_mut(c.n as usize) {
+                    Some(slot) => {
+                        *slot = (p, l);
+                        c.n += 1;
+                    }
+                    None => c.n = u8::MAX, // more than it can keep: never reused
+                }
+                l
+            });
+            self.cache = Some(c);
+        }
+        self.cache.as_mut().expect("just filled")
+    }
+
+    /// [`Self::drive`] with the input levels from `level`.
+    fn drive_with(&self, inputs: &Inputs, level: &mut dyn FnMut(Pin) -> bool) -> Option<Drive> {
         let m = self.mode?;
         if !self.running {
             return None;
         }
         if let Some(s) = m.start {
-            if !Self::active(level(mem, s), self.start_low) {
+            if !Self::active(level(s), self.start_low) {
                 return None;
             }
         }
@@ -475,7 +597,7 @@ impl HscChannel {
                 let w = inputs.wave(m.count)?;
                 let up = match m.kind {
                     HscKind::InternalDir => self.dir_up,
-                    _ => m.dir.is_some_and(|p| level(mem, p)),
+                    _ => m.dir.is_some_and(&mut *level),
                 };
                 if up {
                     d.up.push(w)
@@ -509,7 +631,7 @@ impl HscChannel {
                 } else {
                     match (inputs.wave(a), inputs.wave(b)) {
                         (Some(wa), None) => {
-                            let b_high = level(mem, b);
+                            let b_high = level(b);
                             let fall = wa.shifted(wa.half_ns());
                             match (self.rate4x, b_high) {
                                 (false, false) => d.up.push(wa),
@@ -520,7 +642,7 @@ impl HscChannel {
                         }
                         (None, Some(wb)) if self.rate4x => {
                             let fall = wb.shifted(wb.half_ns());
-                            if level(mem, a) {
+                            if level(a) {
                                 (d.up, d.down) = (Streams::of(&[wb]), Streams::of(&[fall]))
                             } else {
                                 (d.up, d.down) = (Streams::of(&[fall]), Streams::of(&[wb]))
@@ -544,12 +666,29 @@ impl HscChannel {
         raised: &mut Vec<(Duration, EventKind)>,
         skipped: &mut u64,
     ) {
-        if now > last {
-            if let Some(d) = self.drive(inputs, mem) {
-                let total = d.at(now) - d.at(last);
-                if total != 0 {
-                    let sign = total.signum();
-                    self.count(total, &|k| d.time_of(last, now, k, sign), raised, skipped);
+        // A counter without a mode or not running counts nothing (`drive` is None).
+        if self.running && self.mode.is_some() && now > last {
+            let c = self.cached_drive(inputs, mem);
+            if let Some(d) = &c.drive {
+                let (a, b) = (ns(last), ns(now));
+                // The count at `last` was worked out by the previous interval.
+                let at_a = match c.at {
+                    Some((t, n)) if t == a => n,
+                    _ => d.at(a),
+                };
+                let at_b = d.at(b);
+                c.at = Some((b, at_b));
+                let total = at_b - at_a;
+                if self.hits(total) {
+                    // Worked out only if a CV = PV event falls in this interval.
+                    let d = self.cache.and_then(|c| c.drive).expect("counting needs a drive");
+                    let timer = std::cell::OnceCell::new();
+                    let time_of = |k| timer.get_or_init(|| d.timer(last, now, total.signum())).time_of(k);
+                    self.count(total, &time_of, raised, skipped);
+                } else if total != 0 {
+                    // What `count` does when no PV is reached.
+                    self.last_up = total > 0;
+                    self.cv += total;
                 }
             }
         }
@@ -619,29 +758,27 @@ impl HscChannel {
     }
 
     /// Writes CV, status and segment into the SM registers.
+    #[inline]
     pub fn publish(&self, mem: &mut Memory) {
         let r = self.regs;
         if !self.user_cv {
             mem.set_sm_dword(r.cv, self.cv as i32 as u32);
         }
-        let up = match self.mode.map(|m| m.kind) {
-            Some(HscKind::InternalDir) => self.dir_up,
-            Some(HscKind::ExternalDir) => self.mode.and_then(|m| m.dir).is_some_and(|p| level(mem, p)),
+        let up = match self.mode {
+            Some(m) if m.kind == HscKind::InternalDir => self.dir_up,
+            Some(m) if m.kind == HscKind::ExternalDir => m.dir.is_some_and(|p| level(mem, p)),
             _ => self.last_up,
         };
         let (eq, gt) = match self.current_pv() {
             Some(pv) => (self.cv == pv, self.cv > pv),
             None => (false, false),
         };
-        let mut s = mem.sm_byte(r.status);
-        for (bit, on) in [(st::TABLE_FAULT, self.fault), (st::DIR_UP, up), (st::EQUAL, eq), (st::GREATER, gt)] {
-            if on {
-                s |= 1 << bit
-            } else {
-                s &= !(1 << bit)
-            }
-        }
-        mem.set_sm_byte(r.status, s);
+        const MINE: u8 = 1 << st::TABLE_FAULT | 1 << st::DIR_UP | 1 << st::EQUAL | 1 << st::GREATER;
+        let bits = (self.fault as u8) << st::TABLE_FAULT
+            | (up as u8) << st::DIR_UP
+            | (eq as u8) << st::EQUAL
+            | (gt as u8) << st::GREATER;
+        mem.set_sm_byte(r.status, mem.sm_byte(r.status) & !MINE | bits);
         mem.set_sm_byte(r.segment, if self.multi { self.cmp.seg as u8 } else { 0 });
     }
 
@@ -651,17 +788,17 @@ impl HscChannel {
         let d = self.drive(inputs, mem)?;
         let target = self.target()?;
         let rate_probe = now + Duration::from_secs(1);
-        let sign = (d.at(rate_probe) - d.at(now)).signum();
+        let sign = (d.at(ns(rate_probe)) - d.at(ns(now))).signum();
         let dist = (target - self.cv) * sign;
         if sign == 0 || dist <= 0 {
             return None;
         }
         // Search far enough ahead: a day of virtual time bounds any wait.
         let horizon = now + Duration::from_secs(86_400);
-        if (d.at(horizon) - d.at(now)) * sign < dist {
+        if (d.at(ns(horizon)) - d.at(ns(now))) * sign < dist {
             return None;
         }
-        Some(d.time_of(now, horizon, dist as u64, sign))
+        Some(d.timer(now, horizon, sign).time_of(dist as u64))
     }
 }
 

@@ -8,6 +8,7 @@
 //! at 200 kHz costs the same as a millisecond. Waves start low; the k-th rising edge is at
 //! `origin + k / f` (k ≥ 1) and each high phase lasts half a period.
 
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::time::Duration;
 
 /// An input bit in the I area: (byte, bit).
@@ -22,36 +23,46 @@ pub fn pin_name(p: Pin) -> String {
 pub struct Wave {
     /// Frequency in Hz (> 0).
     pub hz: u64,
-    /// Time origin in ns of virtual time.
-    pub origin_ns: u128,
+    /// Time origin in ns of virtual time (64 bits: 584 years).
+    pub origin_ns: u64,
+}
+
+/// Nanoseconds of `t`, saturating at 584 years (virtual time never gets there).
+pub(crate) fn ns(t: Duration) -> u64 {
+    u64::try_from(t.as_nanos()).unwrap_or(u64::MAX)
 }
 
 impl Wave {
     pub fn new(hz: u64, origin: Duration) -> Wave {
-        Wave { hz, origin_ns: origin.as_nanos() }
+        Wave { hz, origin_ns: ns(origin) }
     }
 
     /// The same wave shifted later by `ns`.
-    pub fn shifted(self, ns: u128) -> Wave {
-        Wave { hz: self.hz, origin_ns: self.origin_ns + ns }
+    pub fn shifted(self, ns: u64) -> Wave {
+        Wave { hz: self.hz, origin_ns: self.origin_ns.saturating_add(ns) }
     }
 
     /// Half a period, in ns.
-    pub fn half_ns(&self) -> u128 {
-        500_000_000 / self.hz as u128
+    pub fn half_ns(&self) -> u64 {
+        500_000_000 / self.hz
     }
 
     /// Rising edges in (origin, t].
     pub fn rises(&self, t: Duration) -> u64 {
-        let t = t.as_nanos();
+        self.rises_ns(ns(t))
+    }
+
+    /// Rising edges in (origin, t], `t` in ns.
+    #[inline]
+    pub fn rises_ns(&self, t: u64) -> u64 {
         if t <= self.origin_ns {
             return 0;
         }
         let e = t - self.origin_ns;
         // 64-bit arithmetic while it cannot overflow (a day at 200 kHz), 128-bit beyond.
-        match u64::try_from(e).ok().and_then(|e| e.checked_mul(self.hz)) {
+        match e.checked_mul(self.hz) {
             Some(p) => p / 1_000_000_000,
-            None => (e * self.hz as u128 / 1_000_000_000) as u64,
+            None => (e as u128 * self.hz as u128 / 1_000_000_000) as u64,
         }
     }
 
@@ -62,13 +73,22 @@ impl Wave {
 
     /// The level at `t`.
     pub fn level(&self, t: Duration) -> bool {
-        self.rises(t) > self.falls(t)
+        self.level_ns(ns(t))
+    }
+
+    /// The level at `t` ns.
+    #[inline]
+    pub fn level_ns(&self, t: u64) -> bool {
+        self.rises_ns(t) > self.shifted(self.half_ns()).rises_ns(t)
     }
 
     /// The time of the n-th rising edge (n ≥ 1).
     pub fn rise_time(&self, n: u64) -> Duration {
-        let ns = self.origin_ns + (n as u128 * 1_000_000_000).div_ceil(self.hz as u128);
-        Duration::from_nanos(ns.min(u64::MAX as u128) as u64)
+        let after = match n.checked_mul(1_000_000_000) {
+            Some(p) => p.div_ceil(self.hz),
+            None => u64::try_from((n as u128 * 1_000_000_000).div_ceil(self.hz as u128)).unwrap_or(u64::MAX),
+        };
+        Duration::from_nanos(self.origin_ns.saturating_add(after))
     }
 }
 
@@ -81,11 +101,33 @@ pub enum Source {
     Quad { lead: Pin, lag: Pin, wave: Wave },
 }
 
+/// The one or two pins a source drives (inline: listing them allocates nothing).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Pins {
+    pins: [Pin; 2],
+    n: usize,
+}
+
+impl std::ops::Deref for Pins {
+    type Target = [Pin];
+    fn deref(&self) -> &[Pin] {
+        &self.pins[..self.n]
+    }
+}
+
+impl IntoIterator for Pins {
+    type Item = Pin;
+    type IntoIter = std::iter::Take<std::array::IntoIter<Pin, 2>>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.pins.into_iter().take(self.n)
+    }
+}
+
 impl Source {
-    pub fn pins(&self) -> Vec<Pin> {
+    pub fn pins(&self) -> Pins {
         match *self {
-            Source::Freq { pin, .. } => vec![pin],
-            Source::Quad { lead, lag, .. } => vec![lead, lag],
+            Source::Freq { pin, .. } => Pins { pins: [pin, pin], n: 1 },
+            Source::Quad { lead, lag, .. } => Pins { pins: [lead, lag], n: 2 },
         }
     }
 
@@ -116,10 +158,50 @@ pub fn show_hz(hz: u64) -> String {
 /// Every active source.
 #[derive(Clone, Debug, Default)]
 pub struct Inputs {
-    pub sources: Vec<Source>,
+    sources: Vec<Source>,
+    /// Each driven pin with its rising-edge wave and falling-edge wave (the rising one
+    /// shifted by half a period), worked out when the sources change.
+    edges: Vec<(Pin, Wave, Wave)>,
+    /// Changes whenever the sources change (unique across all `Inputs`; 0 = none ever
+    /// added), so a counter can keep what it worked out from them until then.
+    generation: u64,
 }
 
+/// The next `Inputs::generation`.
+static GENERATION: AtomicU64 = AtomicU64::new(1);
+
 impl Inputs {
+    /// The active sources, oldest first.
+    pub fn sources(&self) -> &[Source] {
+        &self.sources
+    }
+
+    /// Identifies the current set of sources (see the field).
+    pub fn generation(&self) -> u64 {
+        self.generation
+    }
+
+    /// Every driven pin with its rising-edge and falling-edge waves: its level at `t` ns
+    /// is `rise.rises_ns(t) > fall.rises_ns(t)` ([`Wave::level_ns`] without the division).
+    pub fn edges(&self) -> &[(Pin, Wave, Wave)] {
+        &self.edges
+    }
+
+    fn changed(&mut self) {
+        self.generation = GENERATION.fetch_add(1, Ordering::Relaxed);
+        self.edges.clear();
+        for s in &self.sources {
+            for p in s.pins() {
+                // `wave` is what drives the pin (the lead's wave on a pair given one pin twice).
+                if let Some(w) = self.wave(p) {
+                    if !self.edges.iter().any(|e| e.0 == p) {
+                        self.edges.push((p, w, w.shifted(w.half_ns())));
+                    }
+                }
+            }
+        }
+    }
+
     /// The wave on `pin`, if a source drives it.
     pub fn wave(&self, pin: Pin) -> Option<Wave> {
         self.sources.iter().find_map(|s| match *s {
@@ -148,12 +230,15 @@ impl Inputs {
         let pins = s.pins();
         self.sources.retain(|o| !o.pins().iter().any(|p| pins.contains(p)));
         self.sources.push(s);
+        self.changed();
     }
 
     /// Removes the source driving `pin`; returns it.
     pub fn remove(&mut self, pin: Pin) -> Option<Source> {
         let i = self.sources.iter().position(|s| s.pins().contains(&pin))?;
-        Some(self.sources.remove(i))
+        let s = self.sources.remove(i);
+        self.changed();
+        Some(s)
     }
 }
 
@@ -187,6 +272,6 @@ mod tests {
         i.add(Source::Freq { pin: (0, 0), wave: Wave::new(5, Duration::ZERO) });
         assert!(i.quad((0, 1), (0, 0)).is_none(), "a new source on one pin replaces the pair");
         assert!(i.remove((0, 0)).is_some());
-        assert!(i.sources.is_empty());
+        assert!(i.sources().is_empty());
     }
 }

@@ -60,6 +60,10 @@ pub struct K2Sim {
     pub backup: Backup,
     /// The PLC-side helper program, when served with `--agent` (issue 5).
     pub agent: Option<agent::Agent>,
+    /// Scratch space of `advance_to` (events raised in a step, where each channel's end),
+    /// kept so a step allocates nothing.
+    raised: Vec<(Duration, EventKind)>,
+    run_ends: Vec<usize>,
 }
 
 impl K2Sim {
@@ -82,6 +86,8 @@ impl K2Sim {
             rtc: Rtc::new(instr::host_local_now(), start),
             backup: Backup { since: start, ..Backup::default() },
             agent: None,
+            raised: Vec::new(),
+            run_ends: Vec::new(),
         };
         sim.refresh_system_bits(start);
         sim
@@ -111,21 +117,28 @@ impl K2Sim {
     pub fn advance_to(&mut self, now: Duration) {
         let last = self.last;
         let now = now.max(last);
-        let mut raised = Vec::new();
+        // Events go to a buffer kept between steps, one run per channel, merged by time.
+        let mut raised = std::mem::take(&mut self.raised);
+        let mut ends = std::mem::take(&mut self.run_ends);
+        raised.clear();
+        ends.clear();
         let mut skipped = 0u64;
         for p in &mut self.pto {
             p.advance(&mut self.mem, now, &mut raised);
+            ends.push(raised.len());
         }
         for h in &mut self.hsc {
             h.advance(&mut self.mem, &self.inputs, last, now, &mut raised, &mut skipped);
+            ends.push(raised.len());
         }
         self.refresh_input_levels(now);
         if skipped > 0 {
             self.events.skip(skipped);
         }
         if !raised.is_empty() {
-            self.events.extend(raised);
+            self.events.extend_runs(&raised, &ends);
         }
+        (self.raised, self.run_ends) = (raised, ends);
         self.last = now;
         self.refresh_system_bits(now);
         self.agent_scans(now);
@@ -133,23 +146,27 @@ impl K2Sim {
 
     /// Writes the sources' current levels into the input image.
     fn refresh_input_levels(&mut self, now: Duration) {
-        for s in &self.inputs.sources {
-            for p in s.pins() {
-                if let (Some(w), Some(b)) = (self.inputs.wave(p), self.mem.i.get_mut(p.0 as usize)) {
-                    if w.level(now) {
-                        *b |= 1 << p.1
-                    } else {
-                        *b &= !(1 << p.1)
-                    }
+        fn put(i: &mut [u8], p: Pin, on: bool) {
+            if let Some(b) = i.get_mut(p.0 as usize) {
+                if on {
+                    *b |= 1 << p.1
+                } else {
+                    *b &= !(1 << p.1)
                 }
             }
+        }
+        let t = inputs::ns(now);
+        for &(p, rise, fall) in self.inputs.edges() {
+            put(&mut self.mem.i, p, rise.rises_ns(t) > fall.rises_ns(t));
         }
     }
 
     fn refresh_system_bits(&mut self, now: Duration) {
         let up = now.saturating_sub(self.start);
-        let scans = up.as_micros() / SCAN_TIME.as_micros();
-        let ms = up.as_millis();
+        // 64-bit arithmetic (a u128 division is a library call; 64 bits of µs is 584 000 years).
+        let us = u64::try_from(up.as_micros()).unwrap_or(u64::MAX);
+        let scans = us / SCAN_TIME.as_micros() as u64;
+        let ms = us / 1000;
         let mut b = 0u8;
         b |= 1; // SM0.0 always on (§8)
         if scans == 0 {
@@ -212,7 +229,7 @@ impl K2Sim {
             }
         }
         if op.area == Area::I {
-            for s in &self.inputs.sources {
+            for s in self.inputs.sources() {
                 for p in s.pins() {
                     let bit_hit = match op.width {
                         Width::Bit(b) => p == (op.byte, b),
@@ -332,10 +349,10 @@ impl K2Sim {
         let now = self.last;
         let s = match s {
             Source::Freq { pin, wave } => {
-                Source::Freq { pin, wave: inputs::Wave { origin_ns: now.as_nanos(), ..wave } }
+                Source::Freq { pin, wave: inputs::Wave { origin_ns: inputs::ns(now), ..wave } }
             }
             Source::Quad { lead, lag, wave } => {
-                Source::Quad { lead, lag, wave: inputs::Wave { origin_ns: now.as_nanos(), ..wave } }
+                Source::Quad { lead, lag, wave: inputs::Wave { origin_ns: inputs::ns(now), ..wave } }
             }
         };
         self.inputs.add(s);
@@ -486,13 +503,7 @@ impl Device for K2Sim {
 
     fn read(&mut self, ops: &[Operand]) -> Result<Vec<Value>> {
         self.advance();
-        Ok(ops
-            .iter()
-            .map(|o| {
-                let k = K2Operand::from_key(o.key);
-                o.dtype.decode(self.mem.read(&k))
-            })
-            .collect())
+        Ok(ops.iter().map(|o| o.dtype.decode(self.mem.read_key(o.key))).collect())
     }
 
     fn write(&mut self, items: &[(Operand, Value)]) -> Result<()> {

@@ -26,6 +26,7 @@
 //!   clears it. It blocks position instructions (PREL/PABS/PHOME/PJOG, not simulated); PLS
 //!   is not one of them and still runs.
 
+use super::inputs::ns;
 use crate::core::{Error, ErrorKind, Result};
 use crate::k2::catalog::PtoSpec;
 use crate::k2::instr::EventKind;
@@ -73,12 +74,33 @@ pub struct Seg {
     start_ns: u128,
     /// Pulses of the train before this segment.
     first: u64,
+    /// ⌊(2⁶⁴ − 1) / cycle_ns⌋: divides by the cycle with a multiplication ([`Seg::cycles_in`]).
+    inv: u64,
+}
+
+impl Seg {
+    /// Whole cycles in `ns` (`ns / cycle_ns`). Runs once per channel per step, so the
+    /// division is a multiplication by the reciprocal kept with the segment plus at most
+    /// two corrections (the estimate is low by less than 2 for any 64-bit dividend).
+    #[inline]
+    fn cycles_in(&self, ns: u128) -> u64 {
+        let Ok(x) = u64::try_from(ns) else { return div(ns, self.cycle_ns) };
+        let mut q = ((x as u128 * self.inv as u128) >> 64) as u64;
+        let mut r = x - q * self.cycle_ns;
+        while r >= self.cycle_ns {
+            q += 1;
+            r -= self.cycle_ns;
+        }
+        q
+    }
 }
 
 /// A running PTO train.
 #[derive(Clone, Debug)]
 pub struct PtoRun {
     pub start: Duration,
+    /// `start` in ns.
+    start_ns: u64,
     pub segs: Vec<Seg>,
     pub total: u64,
     pub end: Duration,
@@ -89,20 +111,37 @@ impl PtoRun {
         let mut out = Vec::with_capacity(segs.len());
         let (mut t, mut first) = (0u128, 0u64);
         for &(cycle_ns, count) in segs {
-            out.push(Seg { cycle_ns, count, start_ns: t, first });
+            out.push(Seg { cycle_ns, count, start_ns: t, first, inv: u64::MAX / cycle_ns.max(1) });
             t += cycle_ns as u128 * count as u128;
             first += count;
         }
-        PtoRun { start, segs: out, total: first, end: start + dur(t) }
+        PtoRun { start, start_ns: ns(start), segs: out, total: first, end: start + dur(t) }
     }
 
     pub fn duration(&self) -> Duration {
         self.end - self.start
     }
 
+    #[inline]
     fn seg_at(&self, elapsed: u128) -> &Seg {
         let i = self.segs.partition_point(|s| s.start_ns <= elapsed);
         &self.segs[i.saturating_sub(1)]
+    }
+
+    /// Pulses completed by `t` and the output level at `t`: [`Self::pulses_at`] and
+    /// [`Self::level_at`] with one segment search and one division.
+    #[inline]
+    pub fn at(&self, t: Duration) -> (u64, bool) {
+        if t >= self.end {
+            return (self.total, false);
+        }
+        let t = ns(t);
+        let e = t.saturating_sub(self.start_ns) as u128;
+        let s = self.seg_at(e);
+        let into = e - s.start_ns;
+        let q = s.cycles_in(into);
+        let phase = into - q as u128 * s.cycle_ns as u128;
+        (s.first + q.min(s.count), t >= self.start_ns && phase < (s.cycle_ns as u128 / 2))
     }
 
     /// Pulses completed by `t`.
@@ -255,10 +294,10 @@ impl PtoChannel {
         match &mut self.run {
             Run::Idle => {}
             Run::Pto(train) => {
-                let p = train.pulses_at(now);
+                let (p, level) = train.at(now);
                 let new = p - self.counted;
                 self.counted = p;
-                drive = Some(train.level_at(now));
+                drive = Some(level);
                 if now >= train.end {
                     raised.push((train.end, EventKind::PtoComplete { channel: r.channel }));
                     self.run = Run::Idle;
@@ -282,6 +321,7 @@ impl PtoChannel {
         self.apply_position_bits(mem);
     }
 
+    #[inline]
     fn count_pulses(&self, mem: &mut Memory, n: u64) {
         if n == 0 {
             return;
@@ -295,6 +335,7 @@ impl PtoChannel {
     }
 
     /// SM201.6 clears SMD212; SM201.4 loads SMD208 into it (§3.4.3.1).
+    #[inline]
     pub fn apply_position_bits(&self, mem: &mut Memory) {
         let r = self.regs;
         if mem.sm_bit(r.pos_control, pos::CLEAR) {
@@ -555,5 +596,29 @@ mod tests {
         assert_eq!(t.pulses_at(Duration::from_secs(100)), 5000);
         assert!(t.level_at(Duration::from_micros(10_100)));
         assert!(!t.level_at(Duration::from_micros(10_300)));
+    }
+
+    #[test]
+    fn division_by_the_kept_reciprocal_is_exact() {
+        for cycle in [1u64, 2, 3, 5, 7, 1000, 4_999, 5_000, 65_535_000_000, u32::MAX as u64 + 7, u64::MAX / 3, u64::MAX]
+        {
+            let s = &PtoRun::new(Duration::ZERO, &[(cycle, 1)]).segs[0];
+            let mut xs = vec![0u64, 1, cycle - 1, cycle, cycle.saturating_add(1), u64::MAX, u64::MAX - 1, u64::MAX / 2];
+            xs.extend((1..64u64).map(|k| k.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> (k % 64)));
+            for x in xs {
+                assert_eq!(s.cycles_in(x as u128), x / cycle, "{x} / {cycle}");
+            }
+            assert_eq!(s.cycles_in(u64::MAX as u128 * 3), (u64::MAX as u128 * 3 / cycle as u128) as u64);
+        }
+    }
+
+    #[test]
+    fn at_is_pulses_and_level_together() {
+        let t = PtoRun::new(Duration::from_millis(10), &[(500_000, 1000), (250_000, 4000), (3, 7)]);
+        let ends = t.end.as_micros() as u64;
+        for us in (0..ends + 20).step_by(37).chain([10_000, 10_250, 10_499, 10_500, 510_000, ends - 1, ends]) {
+            let at = Duration::from_micros(us);
+            assert_eq!(t.at(at), (t.pulses_at(at), t.level_at(at)), "at {us} µs");
+        }
     }
 }

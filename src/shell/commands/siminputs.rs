@@ -40,7 +40,7 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
     let mut o = match sub {
         "inputs" => {
             let s = k2cmd::sim(sh, dev, "sim inputs")?;
-            let list: Vec<String> = s.inputs.sources.iter().map(|s| s.describe()).collect();
+            let list: Vec<String> = s.inputs.sources().iter().map(|s| s.describe()).collect();
             Outcome::new("sim")
                 .text(if list.is_empty() { "no simulated input signals".into() } else { list.join("\n") })
                 .with("sources", &list)
