@@ -488,10 +488,11 @@ impl Device for K2Wire {
     }
 
     fn read(&mut self, ops: &[Operand]) -> Result<Vec<Value>> {
-        let via_agent: Vec<bool> = ops.iter().map(|o| self.uses_agent(&K2Operand::from_key(o.key))).collect();
-        if !via_agent.contains(&true) {
+        // The common case (no SM through the helper) goes straight to Modbus, with no extra pass.
+        if self.agent.is_none() || !ops.iter().any(|o| self.uses_agent(&K2Operand::from_key(o.key))) {
             return self.read_modbus(ops);
         }
+        let via_agent: Vec<bool> = ops.iter().map(|o| self.uses_agent(&K2Operand::from_key(o.key))).collect();
         // Check the Modbus part first, so a bad operand fails before any helper command.
         let (sm_ops, bus_ops): (Vec<Operand>, Vec<Operand>) = {
             let (a, b): (Vec<_>, Vec<_>) = ops.iter().zip(&via_agent).partition(|(_, v)| **v);
@@ -504,10 +505,10 @@ impl Device for K2Wire {
     }
 
     fn write(&mut self, items: &[(Operand, Value)]) -> Result<()> {
-        let via_agent: Vec<bool> = items.iter().map(|(o, _)| self.uses_agent(&K2Operand::from_key(o.key))).collect();
-        if !via_agent.contains(&true) {
+        if self.agent.is_none() || !items.iter().any(|(o, _)| self.uses_agent(&K2Operand::from_key(o.key))) {
             return self.write_modbus(items);
         }
+        let via_agent: Vec<bool> = items.iter().map(|(o, _)| self.uses_agent(&K2Operand::from_key(o.key))).collect();
         // Validate the Modbus items before anything is sent; then write runs in the user's order.
         for ((o, _), v) in items.iter().zip(&via_agent) {
             if !v {
