@@ -111,12 +111,19 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
     if let Some(path) = cli.config.clone().or_else(crate::profile::default_path) {
         s.profiles = crate::profile::Profiles::load(&path);
     }
-    s.open("plc", &format!("sim:{}", cli.model))?;
     let mut current = "plc".to_string();
-    s.open("servo", "sim-servo:?id=1")?;
-    // The simulated PLC keeps its backup area, retained ranges and clock (k2.md §7).
-    if let Some(state) = cli.state.clone().or_else(crate::k2::sim::state::default_path) {
-        s.device("plc")?.set_option("state", &state.to_string_lossy()).map_err(|e| e.device("plc"))?;
+    let named: Vec<(String, String)> = cli.devices.iter().map(|d| split_device_arg(d)).collect();
+    // The default simulators, unless a --device takes their name (a real `plc` then opens
+    // without first loading the simulator's state).
+    if !named.iter().any(|(n, _)| n == "plc") {
+        s.open("plc", &format!("sim:{}", cli.model))?;
+        // The simulated PLC keeps its backup area, retained ranges and clock (k2.md §7).
+        if let Some(state) = cli.state.clone().or_else(crate::k2::sim::state::default_path) {
+            s.device("plc")?.set_option("state", &state.to_string_lossy()).map_err(|e| e.device("plc"))?;
+        }
+    }
+    if !named.iter().any(|(n, _)| n == "servo") {
+        s.open("servo", "sim-servo:?id=1")?;
     }
     for d in &cli.devices {
         let (name, url) = split_device_arg(d);

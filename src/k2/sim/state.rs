@@ -171,6 +171,10 @@ pub fn save(path: &Path, model: &str, state: ModelState) -> Result<()> {
     file.version = 1;
     file.models.insert(model.to_string(), state);
     let text = serde_json::to_string_pretty(&file).map_err(|e| Error::io("cannot encode the state").cause(e))?;
+    // Nothing changed (a read-only session): leave the file alone — no write, no fsync.
+    if std::fs::read(path).is_ok_and(|old| old == text.as_bytes()) {
+        return Ok(());
+    }
     write_atomic(path, text.as_bytes())
 }
 
