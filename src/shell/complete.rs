@@ -394,9 +394,9 @@ mod tests {
     use crate::core::{Candidate, DataType, Error, Operand, Result};
     use crate::k2::{catalog, space::K2Space};
 
-    /// A servo-like operand space with named objects, standing in for the servo family
-    /// (which lives on another branch) so the `device:` prefix path is exercised with a
-    /// family other than the K2.
+    /// A small servo-like operand space with named objects, so the `device:` prefix path is
+    /// exercised with a family other than the K2 without depending on the servo table's
+    /// contents (the real servo is tested in `helper.rs`).
     struct Objects;
     const OBJECTS: &[(&str, &str)] =
         &[("target_velocity", "target velocity (rpm)"), ("target_position", "target position"), ("controlword", "")];

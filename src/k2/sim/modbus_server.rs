@@ -11,11 +11,11 @@
 //! reply). The TCP transports are tokio-modbus's server skeletons; RTU on a pty uses this
 //! crate's framing ([`super::rtu_frame`]) over a lean pty stream.
 //!
-//! Scans: a K2 serves its Modbus slave ports between program scans. The server therefore
-//! treats every request boundary as the end of a scan: before each request it brings the
-//! simulation up to the clock ([`K2Sim::advance`]) and runs the [`ScanHook`], if one is
-//! plugged in, once. A PLC-side helper program (the "agent" of a later issue) plugs in
-//! there and sees the same memory the request then reads or writes.
+//! Scans: a K2 serves its Modbus slave ports between program scans. Before each request the
+//! server brings the simulation up to the clock ([`K2Sim::advance`]), which runs whatever the
+//! scans since the last request did — the pulse outputs, the counters, and, with `--agent`,
+//! the PLC-side helper program once per scan (`k2::sim::agent`). So each request sees memory
+//! as a PLC would between two scans.
 
 use crate::core::link::async_pty::AsyncPty;
 use crate::k2::modbus_map::{self, Exception, Table};
@@ -29,21 +29,12 @@ use tokio::net::{TcpListener, TcpStream};
 use tokio_modbus::server::Service;
 use tokio_modbus::{ExceptionCode, Request, Response, SlaveRequest};
 
-/// Code run once per simulated scan, in the PLC, before the next request is served.
-pub trait ScanHook: Send {
-    fn scan(&mut self, sim: &mut K2Sim);
-}
-
-/// A shared scan hook.
-pub type SharedHook = Arc<Mutex<dyn ScanHook>>;
-
-/// The K2 behind a Modbus server: the shared simulator, the unit id it answers to, and an
-/// optional scan hook. Cheap to clone (one per connection).
+/// The K2 behind a Modbus server: the shared simulator and the unit id it answers to.
+/// Cheap to clone (one per connection).
 #[derive(Clone)]
 pub struct K2Service {
     sim: Arc<Mutex<K2Sim>>,
     unit: u8,
-    hook: Option<SharedHook>,
 }
 
 fn lock<T: ?Sized>(m: &Mutex<T>) -> MutexGuard<'_, T> {
@@ -58,13 +49,7 @@ impl From<Exception> for ExceptionCode {
 
 impl K2Service {
     pub fn new(sim: Arc<Mutex<K2Sim>>, unit: u8) -> K2Service {
-        K2Service { sim, unit, hook: None }
-    }
-
-    /// Plugs in the code that runs once per scan.
-    pub fn with_hook(mut self, hook: SharedHook) -> K2Service {
-        self.hook = Some(hook);
-        self
+        K2Service { sim, unit }
     }
 
     pub fn unit(&self) -> u8 {
@@ -79,9 +64,6 @@ impl K2Service {
         }
         let mut sim = lock(&self.sim);
         sim.advance();
-        if let Some(h) = &self.hook {
-            lock(h).scan(&mut sim);
-        }
         let r = serve(&mut sim, req).map_err(ExceptionCode::from);
         (unit != 0).then_some(r)
     }
@@ -322,22 +304,5 @@ mod tests {
         assert!(s.handle(2, &Request::ReadHoldingRegisters(100, 1)).is_none());
         assert!(s.handle(0, &Request::WriteSingleRegister(100, 7)).is_none());
         assert_eq!(ok(&s, Request::ReadHoldingRegisters(100, 1)), Response::ReadHoldingRegisters(vec![7]));
-    }
-
-    #[test]
-    fn the_scan_hook_runs_before_each_request() {
-        struct Count(u16);
-        impl ScanHook for Count {
-            fn scan(&mut self, sim: &mut K2Sim) {
-                self.0 += 1;
-                sim.mem.v[0..2].copy_from_slice(&self.0.to_be_bytes());
-            }
-        }
-        let hook: SharedHook = Arc::new(Mutex::new(Count(0)));
-        let s = service("K205-16DT").with_hook(hook);
-        assert_eq!(ok(&s, Request::ReadHoldingRegisters(100, 1)), Response::ReadHoldingRegisters(vec![1]));
-        assert_eq!(ok(&s, Request::ReadHoldingRegisters(100, 1)), Response::ReadHoldingRegisters(vec![2]));
-        assert!(s.handle(9, &Request::ReadHoldingRegisters(100, 1)).is_none());
-        assert_eq!(ok(&s, Request::ReadHoldingRegisters(100, 1)), Response::ReadHoldingRegisters(vec![3]));
     }
 }
