@@ -72,8 +72,7 @@ pub enum Sub {
         #[arg(long, value_name = "DIR")]
         write: Option<std::path::PathBuf>,
     },
-    /// Simulators for other programs (`sim serve`).
-    /// Simulator services: `sim serve` puts the simulated K2 on Modbus TCP / RTU and drives on a pty.
+    /// Serve simulators to other programs: `sim serve` puts the simulated K2 on Modbus TCP / RTU and drives on a pty.
     Sim {
         #[command(subcommand)]
         cmd: serve::SimCmd,

@@ -9,7 +9,7 @@ pub const HELP: CommandSpec = CommandSpec {
     name: "help",
     aliases: &["?"],
     usage: "help [COMMAND|OPERAND]",
-    summary: "list commands, or explain one command or operand",
+    summary: "list commands, or explain one command (its full usage) or operand",
     subcommands: &[],
     run: help,
 };
@@ -28,7 +28,25 @@ fn help(sh: &mut Shell, args: Args) -> Result<Outcome> {
     if topic.is_empty() {
         let rows = COMMANDS
             .iter()
-            .map(|c| vec![c.usage.split("   ").next().unwrap_or(c.name).to_string(), c.summary.to_string()])
+            .map(|c| {
+                // The short form; `help COMMAND` gives the whole usage.
+                let mut name = c.name.to_string();
+                let mut subs = String::new();
+                for sub in c.subcommands {
+                    if subs.len() + sub.len() > 32 {
+                        subs.push('…');
+                        break;
+                    }
+                    if !subs.is_empty() {
+                        subs.push('|');
+                    }
+                    subs.push_str(sub);
+                }
+                if !subs.is_empty() {
+                    name.push_str(&format!(" {subs}"));
+                }
+                vec![name, c.summary.to_string()]
+            })
             .collect();
         let names: Vec<&str> = COMMANDS.iter().map(|c| c.name).collect();
         return Ok(Outcome::new("help").table(&["command", "what it does"], rows).with("commands", names));
