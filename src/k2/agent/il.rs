@@ -138,7 +138,11 @@ pub fn program(base: u32) -> String {
 
     let (a1, a2) = (g.w(p::OFF_REQUEST + 6), g.w(p::OFF_REQUEST + 8));
     g.net("SM range check for commands 1 and 2: SMB1..SMB549 writable, SMB0..SMB549 readable, 1..64 bytes at once");
-    g.line("LDW=", &format!("{}, 1", g.w(p::OFF_REQUEST + 4)), "write");
+    let cmd = g.w(p::OFF_REQUEST + 4);
+    g.line("LDW=", &format!("{cmd}, 1"), "");
+    g.line("OW=", &format!("{cmd}, 2"), "");
+    g.line("JMPCN", "NOT_SM", "other commands skip these checks");
+    g.line("LDW=", &format!("{cmd}, 1"), "write");
     g.line("AW=", &format!("{a1}, 0"), "SMB0 holds the system bits");
     g.line("MOVE", &format!("{}, {result}", p::ResultCode::ReadOnly.code()), "");
     g.line("JMPC", "ACK", "");
@@ -153,6 +157,7 @@ pub fn program(base: u32) -> String {
     g.line("LDW>", &format!("{count}, {}", crate::k2::catalog::SM_BYTES), "");
     g.line("MOVE", &format!("{}, {result}", p::ResultCode::BadRange.code()), "");
     g.line("JMPC", "ACK", "");
+    g.label("NOT_SM");
 
     g.net("command 1: copy ARG2 bytes of request data to SMB[ARG1]");
     g.when(Command::SmWrite { start: 0, data: vec![] }.code());
@@ -254,6 +259,11 @@ mod tests {
         assert!(!il.contains("%VW3400"), "no default address left");
         assert!(il.contains("%SM221.7"), "PSTOP of channel 3");
         assert!(!il.contains('…'), "no elisions");
+        // The SM range checks apply to the SM commands only (a PLS has no length).
+        let checks = il.find("Network 3").unwrap();
+        let gate = il[checks..].find("JMPCN   NOT_SM").unwrap();
+        assert!(gate < il[checks..].find("LDW>").unwrap(), "the gate comes before the first check");
+        assert!(il.contains("NOT_SM:"));
     }
 
     #[test]
