@@ -47,6 +47,13 @@ pub trait Device: Send {
     fn as_servo(&mut self) -> Option<&mut dyn crate::servo::ServoOps> {
         None
     }
+    /// Capabilities of families that have no hook of their own (UMPK, FX and later ones):
+    /// their shell commands and Lua methods downcast through this one generic hook instead
+    /// of each family adding an `as_<family>` method here (design guide, "New families").
+    /// A wrapper (the write guard) must decide what it lets through this door.
+    fn family_ops(&mut self) -> Option<&mut dyn std::any::Any> {
+        None
+    }
     /// Sets a device option given in its URL or profile (`word_order`, `encoder` …).
     fn set_option(&mut self, key: &str, _value: &str) -> Result<()> {
         Err(crate::core::Error::usage(format!("{} devices have no option `{key}`", self.info().family)))
