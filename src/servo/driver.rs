@@ -488,7 +488,7 @@ mod tests {
         assert!(e.message.contains("likely cause: wrong id"), "{e}");
         assert!(e.hint.as_deref().unwrap().contains("(2) an object that does not exist"));
         let mut d = sim("sim-servo:?id=1");
-        let e = d.read(&[op(d.as_ref(), "2FF0.09/u16")]).unwrap_err();
+        let e = d.read(&[op(d.as_ref(), "3FFF.01/u16")]).unwrap_err();
         assert!(e.message.contains("likely cause: unknown object"), "{e}");
         let s = d.as_servo().unwrap();
         let mut bad = Frame::read(1, 0x6041, 0).to_bytes();
@@ -556,7 +556,7 @@ mod tests {
         let sw = ObjRef::of(objects::named("statusword"));
         assert_eq!(d.read_obj(sw).unwrap(), 0x4231);
         d.timeout = Duration::from_millis(50);
-        let e = d.read_obj(ObjRef { index: 0x2FF0, sub: 9, dtype: crate::core::DataType::Word }).unwrap_err();
+        let e = d.read_obj(ObjRef { index: 0x3FFF, sub: 1, dtype: crate::core::DataType::Word }).unwrap_err();
         assert!(e.message.contains("unknown object"), "{e}");
         stop.store(true, std::sync::atomic::Ordering::Relaxed);
         drop(d);
