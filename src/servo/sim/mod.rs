@@ -174,7 +174,7 @@ mod tests {
     fn silence_for_wrong_id_unknown_object_and_bad_checksum() {
         let (mut l, _) = line();
         assert_eq!(l.answer(&Frame::read(2, 0x6041, 0).to_bytes()), None, "wrong id");
-        assert_eq!(l.answer(&Frame::read(1, 0x2FF0, 9).to_bytes()), None, "unknown object");
+        assert_eq!(l.answer(&Frame::read(1, 0x3FFF, 1).to_bytes()), None, "unknown object");
         let mut bad = Frame::read(1, 0x6041, 0).to_bytes();
         bad[9] ^= 1;
         assert_eq!(l.answer(&bad), None, "bad checksum");
