@@ -315,7 +315,7 @@ impl Drive {
             }
             Event::FollowingError => {
                 self.following_error = true;
-                self.inject_fault(FOLLOWING_ERROR_FAULT, t);
+                self.fault_now(FOLLOWING_ERROR_FAULT, t);
             }
         }
     }
@@ -324,6 +324,10 @@ impl Drive {
     /// reaction, which the simulator completes at once).
     pub fn inject_fault(&mut self, code: u16, t: f64) {
         self.advance(t);
+        self.fault_now(code, t);
+    }
+
+    fn fault_now(&mut self, code: u16, t: f64) {
         self.stop_dead(t);
         self.fault = Some(code);
         self.state = State::Fault;
