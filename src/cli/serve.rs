@@ -13,8 +13,9 @@
 //! exactly as on a K2 running `lib/k2_agent.il`.
 //!
 //! Simulated Kinco servo drives are served on their own pseudo-terminal (`--servo-pty LINK
-//! --servo-id 1[,2,…] [--servo-loop]`, the logic is `servo::sim::serve`); their fields
-//! (`servo_pty`, `link`, `ids`, `echo`) join the readiness line.
+//! --servo-id 1[,2,…] [--servo-loop] [--servo-baud 38400 --servo-latency 1ms | --servo-instant]
+//! [--servo-strict]`, the logic is `servo::sim::serve`); their fields (`servo_pty`, `link`,
+//! `ids`, `echo`, `servo_control`, timing) join the readiness line.
 //!
 //! Shape: each served family adds its endpoints in its own function ([`serve_k2`],
 //! [`serve_servo`]) — it binds, spawns its tasks and adds its fields to the readiness line.
@@ -67,6 +68,18 @@ pub struct ServeArgs {
     /// RS232 loop mode: echo every request before the reply (connect with echo=1).
     #[arg(long = "servo-loop")]
     pub servo_loop: bool,
+    /// Line timing: replies take the frame time at this baud rate (10 bits a byte).
+    #[arg(long = "servo-baud", value_name = "BAUD", default_value_t = 38_400)]
+    pub servo_baud: u32,
+    /// Line timing: the drive's think-time before it answers (e.g. 1ms, 0).
+    #[arg(long = "servo-latency", value_name = "DURATION", default_value = "1ms")]
+    pub servo_latency: String,
+    /// Answer at once instead of at line speed (benchmarks, CI).
+    #[arg(long = "servo-instant")]
+    pub servo_instant: bool,
+    /// Refuse writes whose size code differs from the object's (abort 0x06070010).
+    #[arg(long = "servo-strict")]
+    pub servo_strict: bool,
 }
 
 impl ServeArgs {
@@ -166,11 +179,25 @@ async fn serve_servo(args: &ServeArgs, stop: &Arc<AtomicBool>, ready: &mut Map<S
     let Some(link) = args.servo_pty.clone() else { return Ok(()) };
     let ids = crate::servo::driver::parse_ids(&args.servo_id)
         .map_err(|m| Error::usage(format!("--servo-id: {m}")).hint("e.g. --servo-id 1,2"))?;
+    let latency = crate::core::literal::parse_duration_us(&args.servo_latency)
+        .ok()
+        .filter(|us| *us >= 0)
+        .ok_or_else(|| Error::usage(format!("--servo-latency {}: not a duration", args.servo_latency)).hint("e.g. 1ms, 500us, 0"))?;
+    if args.servo_baud == 0 {
+        return Err(Error::usage("--servo-baud must be positive (e.g. 38400)"));
+    }
+    let pace = crate::servo::sim::Pace { baud: args.servo_baud, latency: std::time::Duration::from_micros(latency as u64) };
+    let opts = crate::servo::sim::serve::Options {
+        ids,
+        echo: args.servo_loop,
+        pace: (!args.servo_instant).then_some(pace),
+        strict: args.servo_strict,
+    };
     let (tx, rx) = tokio::sync::oneshot::channel::<Result<Json>>();
-    let (echo, stop) = (args.servo_loop, stop.clone());
+    let stop = stop.clone();
     std::thread::spawn(move || {
         let mut tx = Some(tx);
-        let r = crate::servo::sim::serve::serve_pty(Some(&link), &ids, echo, Clock::following(), &stop, |r| {
+        let r = crate::servo::sim::serve::serve_pty(Some(&link), &opts, Clock::following(), &stop, |r| {
             if let Some(tx) = tx.take() {
                 let _ = tx.send(Ok(json!(r)));
             }

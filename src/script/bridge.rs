@@ -138,6 +138,7 @@ pub const BRIDGE: &[Bridge] = &[
     row("encoder", "servo", "servo encoder"),
     row("sim_fault", "servo", "servo sim fault"),
     row("sim_switch", "servo", "servo sim switch {}"),
+    row("sim_pulses", "servo", "servo sim pulses"),
 ];
 
 fn usage(b: &Bridge, msg: String) -> Error {

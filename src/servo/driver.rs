@@ -21,7 +21,10 @@
 //! URL parameters: `id` (default 1), `baud` (38400), `echo` (0), `timeout` (200ms; a
 //! number is milliseconds), `encoder` (10000, or `auto` to read 6410.03 at open);
 //! `sim-servo:` also takes `drives=1,2` (the simulated ids on the line, default the `id`).
-//! `sim-servo:NAME?…` devices with the same NAME share one simulated line.
+//! `sim-servo:NAME?…` devices with the same NAME share one simulated line; `strict=1` makes
+//! the simulated drives refuse loose write sizes, `baud=`/`latency=` pace replies like a line.
+//! `kinco:` takes `control=PATH`, a served simulator's control socket (default `PORT.ctl`
+//! when it exists), for `servo sim …`.
 
 use super::frame::{self, abort_text, decode_reply, Frame, Reply, Size, FRAME_LEN};
 use super::link::{self, SharedLine, Transport};
@@ -66,12 +69,14 @@ pub struct Driver {
     requests: u64,
     /// This id has answered at least once.
     answered: bool,
+    /// A served simulator's control socket (`control=` in the URL, else `PORT.ctl` if present).
+    control: Option<std::path::PathBuf>,
 }
 
 impl Driver {
     /// A driver for drive `id` on `line`.
     pub fn attach(line: SharedLine, id: u8, echo: bool, timeout: Duration, info: DeviceInfo) -> Driver {
-        Driver { info, space: ServoSpace::default(), line, id, echo, timeout, requests: 0, answered: false }
+        Driver { info, space: ServoSpace::default(), line, id, echo, timeout, requests: 0, answered: false, control: None }
     }
 
     pub fn id(&self) -> u8 {
@@ -115,6 +120,17 @@ impl Driver {
             }
             trace::frame(&name, Dir::Received, &echo);
             if echo != bytes {
+                // A reply where the echo should be: the line is not in loop mode.
+                let is_reply = <[u8; FRAME_LEN]>::try_from(echo.as_slice()).ok().and_then(|b| Frame::from_bytes(&b).ok()).is_some_and(|f| {
+                    f.id == bytes[0] && f.index == u16::from_le_bytes([bytes[2], bytes[3]]) && f.sub == bytes[4]
+                });
+                if is_reply {
+                    return Err(Error::link(format!(
+                        "expected the echo of the request on {name} (echo=1), but the drive's reply came first: {}; the line is not in loop mode",
+                        trace::hex_bytes(&echo)
+                    ))
+                    .hint("connect with echo=0 (or set the drive's loop mode, panel d5.15 = 1)"));
+                }
                 return Err(Error::link(format!(
                     "the echo differs from the request on {name}: sent {}, echoed {}; likely cause: bad checksum — the drive ignores a corrupted frame",
                     trace::hex_bytes(bytes),
@@ -136,6 +152,13 @@ impl Driver {
     /// One request: send, check the reply, decode it; diagnose silence.
     pub fn transact(&mut self, req: Frame, size: Size) -> Result<Reply> {
         match self.exchange(&req.to_bytes())? {
+            // Our own request came back: the line is in loop mode and we did not skip it.
+            Exchange::Reply(b) if !self.echo && b == req.to_bytes() => Err(Error::link(format!(
+                "the reply to {} of {} is the request itself: the line echoes requests (RS232 loop mode)",
+                verb(&req),
+                req.object()
+            ))
+            .hint("connect with echo=1 so plcsh skips the echo")),
             Exchange::Reply(b) => match decode_reply(&req, &b, size) {
                 Ok(r) => {
                     self.answered = true;
@@ -152,7 +175,12 @@ impl Driver {
     fn silence(&mut self, req: &Frame, partial: &[u8], bad_checksum: Option<frame::BadChecksum>) -> Error {
         let ms = self.timeout.as_millis();
         let head = format!("no reply from drive id {} to {} of {} within {ms} ms", req.id, verb(req), req.object());
-        let likely = if let Some(b) = bad_checksum {
+        let likely = if !is_request_func(req.func) {
+            format!(
+                "likely cause: unknown function code {:02X} — a drive answers only reads (40) and writes (23, 2B, 2F) and ignores anything else",
+                req.func
+            )
+        } else if let Some(b) = bad_checksum {
             format!(
                 "likely cause: bad checksum — the frame ends in {:02X}, the bytes before it need {:02X}",
                 b.got, b.want
@@ -261,6 +289,11 @@ impl Driver {
     }
 }
 
+/// Function codes a master may send (seed §2).
+fn is_request_func(f: u8) -> bool {
+    matches!(f, frame::func::READ | frame::func::WRITE_1 | frame::func::WRITE_2 | frame::func::WRITE_4)
+}
+
 fn verb(f: &Frame) -> &'static str {
     if f.func == frame::func::READ {
         "read"
@@ -347,6 +380,12 @@ impl ServoOps for Driver {
     fn simulator(&mut self) -> Option<Arc<Mutex<SimLine>>> {
         self.sim()
     }
+    fn sim_control(&self) -> Option<std::path::PathBuf> {
+        self.control.clone().or_else(|| {
+            let p = super::sim::serve::control_path(std::path::Path::new(&self.line.name));
+            p.exists().then_some(p)
+        })
+    }
 }
 
 fn parse_timeout(v: &str) -> Result<Duration> {
@@ -388,7 +427,7 @@ fn finish(mut d: Driver, c: &Common) -> Result<Box<dyn Device>> {
 
 /// Opens `kinco:PORT?baud=38400&id=1&echo=0&timeout=200ms&encoder=10000`.
 pub fn open_serial(u: &DeviceUrl) -> Result<Box<dyn Device>> {
-    u.expect_params(&["id", "baud", "echo", "loop", "timeout", "encoder"])?;
+    u.expect_params(&["id", "baud", "echo", "loop", "timeout", "encoder", "control"])?;
     let c = common(u)?;
     let baud = u.param_num::<u32>("baud")?.unwrap_or(DEFAULT_BAUD);
     if u.target.is_empty() {
@@ -402,13 +441,39 @@ pub fn open_serial(u: &DeviceUrl) -> Result<Box<dyn Device>> {
         link: format!("{} ({settings})", u.target),
         simulated: false,
     };
-    finish(Driver::attach(line, c.id, c.echo, c.timeout, info), &c)
+    let mut d = Driver::attach(line, c.id, c.echo, c.timeout, info);
+    d.control = u.param("control").map(std::path::PathBuf::from);
+    finish(d, &c)
 }
 
 /// Opens `sim-servo:[NAME]?id=1&drives=1,2&echo=0`: the in-process simulator.
 pub fn open_sim(u: &DeviceUrl, clock: &Clock) -> Result<Box<dyn Device>> {
-    u.expect_params(&["id", "drives", "echo", "loop", "timeout", "encoder"])?;
+    u.expect_params(&["id", "drives", "echo", "loop", "timeout", "encoder", "strict", "baud", "latency"])?;
     let c = common(u)?;
+    let strict = match u.param("strict") {
+        None | Some("0") | Some("false") | Some("off") => false,
+        Some("1") | Some("true") | Some("on") | Some("") => true,
+        Some(v) => return Err(Error::usage(format!("`strict={v}` in {} is not 0 or 1", u.text))),
+    };
+    // Line timing in-process: off unless baud= or latency= asks for it.
+    let pace = match (u.param_num::<u32>("baud")?, u.param("latency")) {
+        (None, None) => None,
+        (baud, latency) => {
+            let latency = match latency {
+                None => super::sim::Pace::REALISTIC.latency,
+                Some(l) => Duration::from_micros(
+                    parse_duration_us(l).ok().filter(|us| *us >= 0).ok_or_else(|| {
+                        Error::usage(format!("`latency={l}` in {} is not a duration (e.g. 1ms)", u.text))
+                    })? as u64,
+                ),
+            };
+            let baud = baud.unwrap_or(DEFAULT_BAUD);
+            if baud == 0 {
+                return Err(Error::usage(format!("`baud=0` in {}: the baud rate must be positive", u.text)));
+            }
+            Some(super::sim::Pace { baud, latency })
+        }
+    };
     let ids = match u.param("drives") {
         None => vec![c.id],
         Some(list) => parse_ids(list).map_err(|m| Error::usage(format!("{m} in {}", u.text)))?,
@@ -416,6 +481,8 @@ pub fn open_sim(u: &DeviceUrl, clock: &Clock) -> Result<Box<dyn Device>> {
     let make = || -> Result<Box<dyn Transport>> {
         let mut l = SimLine::new(&ids, clock.clone());
         l.echo = c.echo;
+        l.pace = pace;
+        l.set_strict(strict);
         Ok(Box::new(SimLink::new(Arc::new(Mutex::new(l)))))
     };
     let name = if u.target.is_empty() { "sim-servo".to_string() } else { format!("sim-servo:{}", u.target) };
@@ -550,7 +617,7 @@ mod tests {
         let line = Arc::new(Mutex::new(SimLine::new(&[1], clock)));
         let stop = Arc::new(std::sync::atomic::AtomicBool::new(false));
         let (l2, s2) = (line.clone(), stop.clone());
-        let server = std::thread::spawn(move || serve::serve_line(Box::new(b), &l2, &s2));
+        let server = std::thread::spawn(move || serve::serve_line(Box::new(b), &l2, &s2, "pair"));
         let info = DeviceInfo { family: "servo", model: "test".into(), link: "pair".into(), simulated: false };
         let mut d = Driver::attach(link::private("pair", Box::new(a)), 1, false, Duration::from_secs(5), info);
         let sw = ObjRef::of(objects::named("statusword"));

@@ -138,7 +138,8 @@ pub fn bit_name(bit: u8, mode: Option<i8>) -> &'static str {
         2 => "operation enabled",
         3 => "fault",
         4 => "voltage enabled",
-        5 => "quick stop (active low)",
+        // Set means quick stop is NOT active (CiA 402: the bit is active low).
+        5 => "quick stop: off",
         6 => "switch on disabled",
         7 => "warning",
         9 => "remote",

@@ -245,22 +245,24 @@ pub fn apply(line: &mut SimLine, req: &Request, default_id: Option<u8>) -> Resul
         Control::Switch(which, pos) => {
             let i = drive_id()?;
             let d = line.drive(i).expect("checked id");
-            let name = match which {
+            let (name, key) = match which {
                 Which::Home => {
                     d.switches.home = pos.unwrap_or(d.switches.home);
-                    "home switch"
+                    ("home switch", "home_switch")
                 }
                 Which::NegLimit => {
                     d.switches.neg_limit = *pos;
-                    "negative limit switch"
+                    ("negative limit switch", "neg_limit")
                 }
                 Which::PosLimit => {
                     d.switches.pos_limit = *pos;
-                    "positive limit switch"
+                    ("positive limit switch", "pos_limit")
                 }
             };
             let at = pos.map(|p| format!("at {p} inc")).unwrap_or_else(|| "off".into());
-            (format!("drive id {i}: {name} {at}"), json!({"switch": name, "position": pos, "id": i}))
+            let mut data = json!({"id": i});
+            data[key] = json!(pos.map(|p| p as i64));
+            (format!("drive id {i}: {name} {at}"), data)
         }
         Control::Pulses { freq, count, dir } => {
             let i = drive_id()?;
