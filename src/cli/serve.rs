@@ -179,14 +179,15 @@ async fn serve_servo(args: &ServeArgs, stop: &Arc<AtomicBool>, ready: &mut Map<S
     let Some(link) = args.servo_pty.clone() else { return Ok(()) };
     let ids = crate::servo::driver::parse_ids(&args.servo_id)
         .map_err(|m| Error::usage(format!("--servo-id: {m}")).hint("e.g. --servo-id 1,2"))?;
-    let latency = crate::core::literal::parse_duration_us(&args.servo_latency)
-        .ok()
-        .filter(|us| *us >= 0)
-        .ok_or_else(|| Error::usage(format!("--servo-latency {}: not a duration", args.servo_latency)).hint("e.g. 1ms, 500us, 0"))?;
+    let latency =
+        crate::core::literal::parse_duration_us(&args.servo_latency).ok().filter(|us| *us >= 0).ok_or_else(|| {
+            Error::usage(format!("--servo-latency {}: not a duration", args.servo_latency)).hint("e.g. 1ms, 500us, 0")
+        })?;
     if args.servo_baud == 0 {
         return Err(Error::usage("--servo-baud must be positive (e.g. 38400)"));
     }
-    let pace = crate::servo::sim::Pace { baud: args.servo_baud, latency: std::time::Duration::from_micros(latency as u64) };
+    let pace =
+        crate::servo::sim::Pace { baud: args.servo_baud, latency: std::time::Duration::from_micros(latency as u64) };
     let opts = crate::servo::sim::serve::Options {
         ids,
         echo: args.servo_loop,

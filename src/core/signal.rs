@@ -79,10 +79,7 @@ impl PulseTrain {
 
     /// The frequency at time `t` (signed by direction; 0 between or after segments).
     pub fn rate_at(&self, t: f64) -> f64 {
-        self.segments
-            .iter()
-            .find(|s| t >= s.start && t < s.end())
-            .map_or(0.0, |s| s.dir as f64 * s.freq)
+        self.segments.iter().find(|s| t >= s.start && t < s.end()).map_or(0.0, |s| s.dir as f64 * s.freq)
     }
 
     /// The signal from `t` on as `(duration, signed rate)` pieces, gaps as rate 0 — what a

@@ -76,7 +76,17 @@ pub struct Driver {
 impl Driver {
     /// A driver for drive `id` on `line`.
     pub fn attach(line: SharedLine, id: u8, echo: bool, timeout: Duration, info: DeviceInfo) -> Driver {
-        Driver { info, space: ServoSpace::default(), line, id, echo, timeout, requests: 0, answered: false, control: None }
+        Driver {
+            info,
+            space: ServoSpace::default(),
+            line,
+            id,
+            echo,
+            timeout,
+            requests: 0,
+            answered: false,
+            control: None,
+        }
     }
 
     pub fn id(&self) -> u8 {
@@ -121,9 +131,12 @@ impl Driver {
             trace::frame(&name, Dir::Received, &echo);
             if echo != bytes {
                 // A reply where the echo should be: the line is not in loop mode.
-                let is_reply = <[u8; FRAME_LEN]>::try_from(echo.as_slice()).ok().and_then(|b| Frame::from_bytes(&b).ok()).is_some_and(|f| {
-                    f.id == bytes[0] && f.index == u16::from_le_bytes([bytes[2], bytes[3]]) && f.sub == bytes[4]
-                });
+                let is_reply = <[u8; FRAME_LEN]>::try_from(echo.as_slice())
+                    .ok()
+                    .and_then(|b| Frame::from_bytes(&b).ok())
+                    .is_some_and(|f| {
+                        f.id == bytes[0] && f.index == u16::from_le_bytes([bytes[2], bytes[3]]) && f.sub == bytes[4]
+                    });
                 if is_reply {
                     return Err(Error::link(format!(
                         "expected the echo of the request on {name} (echo=1), but the drive's reply came first: {}; the line is not in loop mode",
@@ -295,10 +308,10 @@ fn is_request_func(f: u8) -> bool {
 }
 
 fn verb(f: &Frame) -> &'static str {
-    if f.func == frame::func::READ {
-        "read"
-    } else {
-        "write"
+    match f.func {
+        frame::func::READ => "read",
+        func if is_request_func(func) => "write",
+        _ => "request",
     }
 }
 
@@ -461,11 +474,11 @@ pub fn open_sim(u: &DeviceUrl, clock: &Clock) -> Result<Box<dyn Device>> {
         (baud, latency) => {
             let latency = match latency {
                 None => super::sim::Pace::REALISTIC.latency,
-                Some(l) => Duration::from_micros(
-                    parse_duration_us(l).ok().filter(|us| *us >= 0).ok_or_else(|| {
+                Some(l) => {
+                    Duration::from_micros(parse_duration_us(l).ok().filter(|us| *us >= 0).ok_or_else(|| {
                         Error::usage(format!("`latency={l}` in {} is not a duration (e.g. 1ms)", u.text))
-                    })? as u64,
-                ),
+                    })? as u64)
+                }
             };
             let baud = baud.unwrap_or(DEFAULT_BAUD);
             if baud == 0 {

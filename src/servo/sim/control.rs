@@ -44,7 +44,11 @@ pub enum Control {
     Line(FaultKind, Option<u32>),
     ClearFaults,
     Switch(Which, Option<f64>),
-    Pulses { freq: f64, count: u64, dir: i8 },
+    Pulses {
+        freq: f64,
+        count: u64,
+        dir: i8,
+    },
     Strict(bool),
 }
 
@@ -97,9 +101,11 @@ pub fn parse(words: &[(usize, &str)]) -> Result<Request> {
         match opt("count") {
             None => Ok(Some(1)),
             Some((_, "all")) => Ok(None),
-            Some((c, v)) => {
-                u32::try_from(number(v, c)?).ok().filter(|n| *n > 0).map(Some).ok_or_else(|| usage("count is 1 or more, or all", c))
-            }
+            Some((c, v)) => u32::try_from(number(v, c)?)
+                .ok()
+                .filter(|n| *n > 0)
+                .map(Some)
+                .ok_or_else(|| usage("count is 1 or more, or all", c)),
         }
     };
     let first = pos.first().copied().unwrap_or((0, ""));
@@ -236,7 +242,10 @@ pub fn apply(line: &mut SimLine, req: &Request, default_id: Option<u8>) -> Resul
                 Some(n) => format!("the next {n} requests"),
                 None => "every request until `servo sim fault clear`".to_string(),
             };
-            (format!("{}: {} for {n}", who(id), kind.describe()), json!({"line_fault": kind.describe(), "count": count, "id": id}))
+            (
+                format!("{}: {} for {n}", who(id), kind.describe()),
+                json!({"line_fault": kind.describe(), "count": count, "id": id}),
+            )
         }
         Control::ClearFaults => {
             line.faults.clear();
@@ -335,7 +344,10 @@ mod tests {
     fn the_grammar() {
         assert_eq!(p("fault").unwrap().control, Control::DriveFault(DEFAULT_FAULT));
         assert_eq!(p("fault 16#2310").unwrap().control, Control::DriveFault(0x2310));
-        assert_eq!(p("fault drive 0x7500 id=2").unwrap(), Request { control: Control::DriveFault(0x7500), id: Some(2) });
+        assert_eq!(
+            p("fault drive 0x7500 id=2").unwrap(),
+            Request { control: Control::DriveFault(0x7500), id: Some(2) }
+        );
         assert_eq!(p("fault no-reply").unwrap().control, Control::Line(FaultKind::NoReply, Some(1)));
         assert_eq!(p("fault bad-checksum count=all").unwrap().control, Control::Line(FaultKind::BadChecksum, None));
         assert_eq!(
@@ -354,7 +366,15 @@ mod tests {
             Control::Pulses { freq: 1000.0, count: 500, dir: -1 }
         );
         assert_eq!(p("strict on").unwrap().control, Control::Strict(true));
-        for bad in ["fault abort target_position", "fault delay", "pulses freq=0 count=1", "juggle", "switch home off", "fault no-reply count=0", "fault no-reply speed=3"] {
+        for bad in [
+            "fault abort target_position",
+            "fault delay",
+            "pulses freq=0 count=1",
+            "juggle",
+            "switch home off",
+            "fault no-reply count=0",
+            "fault no-reply speed=3",
+        ] {
             let e = p(bad).unwrap_err();
             assert_eq!(e.kind, ErrorKind::Usage, "{bad}: {e}");
         }

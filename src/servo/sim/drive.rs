@@ -395,9 +395,7 @@ impl Drive {
             "error_state" => u32::from(self.fault.is_some()),
             "digital_inputs" | "din_real" => inputs,
             "controlword" => self.last_cw as u32,
-            "torque_actual" if self.state == State::OperationEnabled && self.mode() == 4 => {
-                self.values[&(0x6071, 0)]
-            }
+            "torque_actual" if self.state == State::OperationEnabled && self.mode() == 4 => self.values[&(0x6071, 0)],
             "torque_actual" => 0,
             "master_speed" => int(o.dtype, (self.pulses.rate_at(t) / 1000.0).round() as i64),
             _ => self.values[&(o.index, o.sub)],

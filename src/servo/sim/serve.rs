@@ -158,9 +158,8 @@ pub fn serve_pty(
         Some(l) => {
             let p = control_path(l);
             let _ = std::fs::remove_file(&p);
-            let listener = UnixListener::bind(&p).map_err(|e| {
-                Error::io(format!("cannot open the servo control socket {}", p.display())).cause(e)
-            })?;
+            let listener = UnixListener::bind(&p)
+                .map_err(|e| Error::io(format!("cannot open the servo control socket {}", p.display())).cause(e))?;
             let (line, stop) = (line.clone(), stop.clone());
             std::thread::spawn(move || serve_control(listener, line, stop));
             Some(p)

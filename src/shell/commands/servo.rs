@@ -82,8 +82,10 @@ fn servo(sh: &mut Shell, args: Args) -> Result<Outcome> {
         "quickstop" => state_outcome(ds402::quickstop(ops, &w)?),
         "mode" => {
             let Some(&(c, m)) = rest.first() else {
-                return Err(Error::usage("servo mode needs a mode: position, velocity, immediate-velocity, homing, torque or pulse")
-                    .column(at(col)));
+                return Err(Error::usage(
+                    "servo mode needs a mode: position, velocity, immediate-velocity, homing, torque or pulse",
+                )
+                .column(at(col)));
             };
             let n = ds402::mode_number(m).ok_or_else(|| {
                 Error::usage(format!("unknown mode `{m}`"))

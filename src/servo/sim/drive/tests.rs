@@ -251,13 +251,18 @@ fn each_homing_method_homes_where_its_number_says() {
         t.d.switches = Switches { home: 2_000.0, neg_limit: Some(-3_000.0), pos_limit: Some(4_000.0) };
         t.ok(0x6099, 1, Size::B4, 1_365_333); // 500 rpm: faster searches
     };
-    for (method, home_at) in [(17, -3_000.0), (18, 4_000.0), (19, 2_000.0), (20, 2_000.0), (21, 2_000.0), (22, 2_000.0)] {
+    for (method, home_at) in [(17, -3_000.0), (18, 4_000.0), (19, 2_000.0), (20, 2_000.0), (21, 2_000.0), (22, 2_000.0)]
+    {
         let mut t = home(method, switches);
         let sw = t.sw();
         assert_ne!(sw & ACK, 0, "method {method}: homing attained");
         assert_eq!(sw & ERR13, 0, "method {method}: no homing error");
         assert_eq!(t.pos(), 7, "method {method}: the home offset at the home point");
-        assert_eq!(t.d.switches.home - 2_000.0, 7.0 - home_at, "method {method}: the switches moved with the coordinates");
+        assert_eq!(
+            t.d.switches.home - 2_000.0,
+            7.0 - home_at,
+            "method {method}: the switches moved with the coordinates"
+        );
     }
     // Index pulses every 10000 inc: from 2500, 33 homes at 0 and 34 at 10000.
     for (method, travelled) in [(33, -2_500), (34, 7_500)] {
