@@ -81,7 +81,9 @@ fn main() {
     std::fs::create_dir_all(&dir).unwrap();
     // Paced, as served drives answer by default: 38400 baud, 1 ms think-time; and with no
     // think-time (the wire alone).
-    for (tag, extra) in [("paced", &["--servo-baud", "38400", "--servo-latency", "1ms"][..]), ("wire", &["--servo-latency", "0"][..])] {
+    for (tag, extra) in
+        [("paced", &["--servo-baud", "38400", "--servo-latency", "1ms"][..]), ("wire", &["--servo-latency", "0"][..])]
+    {
         let link = dir.join(format!("ttyKINCO-{tag}"));
         let child = serve(&link, extra);
         let mut d = open_url(&format!("kinco:{}?id=1", link.display()), &Clock::following()).unwrap();

@@ -605,6 +605,25 @@ mod tests {
     }
 
     #[test]
+    fn in_process_line_timing_strictness_and_their_url_errors() {
+        let mut d = sim("sim-servo:?id=1&baud=38400&latency=2ms");
+        let sw = op(d.as_ref(), "statusword");
+        let t = Instant::now();
+        d.read(&[sw]).unwrap();
+        // Two frames at 38400 baud (5.2 ms) plus the 2 ms think-time.
+        assert!(t.elapsed() >= Duration::from_micros(7_208), "{:?}", t.elapsed());
+        let mut strict = sim("sim-servo:?id=1&strict=1");
+        let e = strict.as_servo().unwrap().raw_frame(Frame::write(1, 0x607A, 0, Size::B1, 5).to_bytes()).unwrap();
+        assert_eq!(Frame::from_bytes(&e).unwrap().data, frame::abort::LENGTH_MISMATCH);
+        let mut lenient = sim("sim-servo:?id=1");
+        let ok = lenient.as_servo().unwrap().raw_frame(Frame::write(1, 0x607A, 0, Size::B1, 5).to_bytes()).unwrap();
+        assert_eq!(ok[1], frame::func::WRITE_OK);
+        for bad in ["sim-servo:?strict=maybe", "sim-servo:?baud=0", "sim-servo:?latency=soon"] {
+            assert!(open_sim(&DeviceUrl::parse(bad).unwrap(), &Clock::stepped()).is_err(), "{bad}");
+        }
+    }
+
+    #[test]
     fn loop_mode_skips_the_echo() {
         let mut d = sim("sim-servo:?id=1&echo=1");
         assert_eq!(d.read(&[op(d.as_ref(), "statusword")]).unwrap(), vec![Value::Int(0x4231)]);
