@@ -344,6 +344,8 @@ fn faults_injected_through_the_control_socket_and_the_shell() {
     let path = PathBuf::from(srv.served.ready["servo_control"].as_str().unwrap());
     let e = control::send(&path, "id=9 fault drive").unwrap_err();
     assert!(e.message.contains("no simulated drive has id 9"), "{e}");
+    let e = control::send(&path, &"x".repeat(5000)).unwrap_err();
+    assert!(e.message.contains("at most 4096 bytes"), "{e}");
     // A reply delayed beyond the timeout is silence (last: the served drive is busy meanwhile).
     srv.control("fault delay 300ms id=1");
     assert_eq!(d1.read(&[sw]).unwrap_err().kind, ErrorKind::Link);

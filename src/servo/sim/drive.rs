@@ -344,6 +344,16 @@ impl Drive {
         Ok((s.start, s.end()))
     }
 
+    /// Connects a whole pulse signal to the pulse input (wiring: e.g. a K2 PTO output's
+    /// train), replacing what was there, and follows it from `t` when in mode -4.
+    pub fn connect_pulses(&mut self, train: PulseTrain, t: f64) {
+        self.advance(t);
+        self.pulses = train;
+        if self.state == State::OperationEnabled && self.mode() == -4 && self.task != Task::Halt {
+            self.start_pulse(t);
+        }
+    }
+
     /// The statusword at time `t` (DS402 bits, Kinco bits 14-15; public notes).
     pub fn statusword(&self, t: f64) -> u16 {
         let mut s = self.state.pattern();

@@ -26,12 +26,15 @@ use crate::core::trace::{self, Dir};
 use crate::core::{Clock, Error, Result};
 use crate::servo::frame::FrameBuffer;
 use crate::servo::link::{FdPort, Transport};
-use std::io::{BufRead, BufReader, Write};
+use std::io::{BufRead, BufReader, Read, Write};
 use std::os::unix::net::UnixListener;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
+
+/// Longest control-socket line accepted.
+const MAX_LINE: usize = 4096;
 
 /// Silence after which a partial frame is dropped (a frame takes 2.6 ms at 38400 baud).
 pub const GAP: Duration = Duration::from_millis(20);
@@ -120,10 +123,20 @@ fn serve_control(listener: UnixListener, line: Arc<Mutex<SimLine>>, stop: Arc<At
                         Ok(w) => w,
                         Err(_) => return,
                     };
-                    for text in BufReader::new(conn).lines() {
-                        let Ok(text) = text else { break };
-                        let reply = control::answer_line(&mut line.lock().unwrap_or_else(|p| p.into_inner()), &text);
-                        if writeln!(w, "{reply}").is_err() {
+                    let mut r = BufReader::new(conn);
+                    loop {
+                        // One request per line, at most MAX_LINE bytes (outside input).
+                        let mut text = String::new();
+                        match (&mut r).take(MAX_LINE as u64 + 1).read_line(&mut text) {
+                            Ok(0) | Err(_) => break,
+                            Ok(_) => {}
+                        }
+                        let reply = if text.len() > MAX_LINE {
+                            serde_json::json!({"ok": false, "error": format!("a control line is at most {MAX_LINE} bytes")})
+                        } else {
+                            control::answer_line(&mut line.lock().unwrap_or_else(|p| p.into_inner()), text.trim())
+                        };
+                        if writeln!(w, "{reply}").is_err() || text.len() > MAX_LINE {
                             break;
                         }
                     }

@@ -373,3 +373,18 @@ fn pulse_train_mode_follows_the_input_through_the_gear() {
     let r = t.w(0x2508, 2, Size::B2, 0);
     assert_eq!((r.func, r.data), (func::ERROR, abort::VALUE_RANGE));
 }
+
+#[test]
+fn a_connected_pulse_train_is_followed_like_a_wired_output() {
+    let mut t = T::new();
+    t.ok(0x6060, 0, Size::B1, -4);
+    t.enable();
+    let mut train = PulseTrain::new();
+    train.push(0.5, 2_000.0, 1_000, 1).unwrap(); // 0.5 s … 1.0 s
+    train.push(0.0, 500.0, 100, -1).unwrap(); // then 0.2 s back
+    t.d.connect_pulses(train, t.t);
+    t.step(0.75);
+    assert_eq!(t.pos(), 500);
+    t.step(1.0);
+    assert_eq!(t.pos(), 900);
+}
