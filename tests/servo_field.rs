@@ -463,4 +463,8 @@ fn pulses_raw_width_and_status_wording_from_the_shell() {
     assert!(!out.contains("4294"), "{out}");
     assert!(out.contains("quick stop: off"), "{out}");
     assert!(!out.contains("active low"), "{out}");
+    // A homing method the drive does not have ends in a homing error, which the wait reports.
+    let o = run(&["--time", "stepped", "-c", "servo enable; servo home method=1; servo wait target"], "");
+    assert!(!o.status.success());
+    assert!(stdout(&o).contains("homing error") || String::from_utf8_lossy(&o.stderr).contains("homing error"));
 }

@@ -446,6 +446,10 @@ pub fn wait_target(ops: &mut dyn ServoOps, w: &Waiter, timeout: Duration) -> Res
         }
         let st = State::from_statusword(sw);
         if sw & (1 << 10) != 0 && matches!(st, Some(State::OperationEnabled | State::QuickStopActive)) {
+            if sw & (1 << 13) != 0 && read(ops, "operating_mode")? == 6 {
+                return Err(Error::state(format!("homing ended in a homing error (statusword 16#{sw:04X}, bit 13)"))
+                    .hint("check the homing method (6098.00) and the switches; servo status shows the bits"));
+            }
             return Ok(sw);
         }
         if w.clock.now() - start >= timeout {
