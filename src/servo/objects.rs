@@ -159,7 +159,7 @@ pub const OBJECTS: &[Object] = &[
     o("store_parameters", 0x2FF0, 1, U8, RW, Unit::None, "write 1 to store all parameters", "notes, C# client"),
     o("store_motor_data", 0x2FF0, 3, U8, RW, Unit::None, "write 1 to store motor data", "C# client"),
     o("display_select", 0x2FF0, 4, U8, RW, Unit::None, "7-segment display select", "seed §1"),
-    o("target_speed_rpm", 0x2FF0, 9, I32, RW, Unit::None, "target speed in rpm (the FD5P manual's RS232 example writes 600 here; the simulator stores it)", "FD5P §10"),
+    o("target_speed_rpm", 0x2FF0, 9, I16, RW, Unit::None, "target speed in rpm (the FD5P manual's RS232 example writes 600 here with a 4-byte write and reads it back with a 2-byte reply, 4B; the simulator stores it)", "FD5P §10"),
     o("user_password", 0x2FFD, 0, U16, RW, Unit::None, "user password", "seed §1"),
     o("encoder_resolution", 0x6410, 3, U32, RW, Unit::Increments, "encoder (feedback) resolution used by the DEC formulas, increments per revolution", "notes"),
 ];

@@ -13,8 +13,9 @@
 //!
 //! **Write sizes.** Field clients choose the write code from the value's magnitude, not the
 //! object (a public Python client sends `0x2F` for 0…255 and `0x2B` for -32768…32767 on any
-//! object, e.g. mode -3 as `2B … FD FF`), and the issue reports this works on real drives;
-//! the seed never says a drive checks the length. So by default a write whose size differs
+//! object, e.g. mode -3 as `2B … FD FF`), and this works on real drives: the public FD5P
+//! manual's own RS232 example (§10) writes 2FF0.09 with `0x23` and reads it back as a 2-byte
+//! `4B` reply. The seed never says a drive checks the length. So by default a write whose size differs
 //! from the object's is accepted: a shorter one is widened to the object (a 1-byte write
 //! as 0…255, the Python client's rule; a 2-byte write sign-extended into a signed object),
 //! a longer one is read at its size (signed for a signed object) and must fit the object,
