@@ -232,9 +232,8 @@ pub fn apply(line: &mut SimLine, req: &Request, default_id: Option<u8>) -> Resul
             (format!("drive id {i}: fault 16#{code:04X} injected"), json!({"fault": code, "id": i}))
         }
         Control::Line(kind, count) => {
-            if let Some(i) = id {
-                drive_id()?;
-                let _ = i;
+            if id.is_some() {
+                drive_id()?; // an id must name a drive on the line
             }
             line.faults.add(LineFault { kind: *kind, id, remaining: *count });
             let n = match count {
