@@ -547,3 +547,21 @@ fn the_fd5p_manuals_rs232_examples_replay_byte_for_byte() {
     poll_statusword(&mut c, 10); // at speed
     assert_eq!(python_value(c.xfer(read_req(1, 0x606C, 0)).unwrap()), Some(-1_789_570));
 }
+
+#[test]
+fn relative_moves_queue_behind_a_running_move_from_the_shell() {
+    // `servo move rel` uses Kinco's 0x4F → 0x5F (bit 5 low): during a move it queues in the
+    // drive's one-deep set-point buffer; a second one waits for the buffer to drain.
+    let o = run(
+        &[
+            "--time",
+            "stepped",
+            "--json",
+            "-c",
+            "servo enable; servo move abs 100000 speed=100rpm; servo move rel 1000; servo move rel 1000; servo wait target timeout=60s; get servo:position_actual",
+        ],
+        "",
+    );
+    let l = json_lines(&o);
+    assert_eq!(l.last().unwrap()["values"][0]["value"], 102_000, "{l:?}");
+}

@@ -228,6 +228,8 @@ impl Waiter<'_> {
 
 /// Poll period of waits.
 pub const POLL: Duration = Duration::from_millis(10);
+/// How long `move` waits for a full set-point buffer to take a new set-point.
+pub const BUFFER_WAIT: Duration = Duration::from_secs(30);
 /// How long a state change may take before `enable` and friends call it failed.
 pub const STEP_TIMEOUT: Duration = Duration::from_millis(500);
 
@@ -391,6 +393,24 @@ pub fn move_to(ops: &mut dyn ServoOps, w: &Waiter, relative: bool, pos: i64, p: 
     }
     let base = if relative { cw::MOVE_REL } else { cw::MOVE_ABS };
     write(ops, "controlword", base as i64)?;
+    // CiA 402 handshake: a set-point acknowledge still high with bit 4 low means the drive's
+    // set-point buffer is full (a relative move queued behind a running one); a new edge
+    // now would be ignored, so wait for the buffer to drain first.
+    let start = w.clock.now();
+    loop {
+        let sw = statusword(ops)?;
+        if sw & (1 << 12) == 0 || sw & 0x08 != 0 {
+            break;
+        }
+        if w.clock.now() - start >= BUFFER_WAIT {
+            return Err(Error::state(format!(
+                "the drive's set-point buffer stayed full for {} s (statusword 16#{sw:04X}, bit 12 high with bit 4 low)",
+                BUFFER_WAIT.as_secs()
+            ))
+            .hint("wait for the running moves (servo wait target), then move again"));
+        }
+        w.sleep(POLL)?;
+    }
     write(ops, "controlword", (base | cw::NEW_SETPOINT) as i64)?;
     let start = w.clock.now();
     loop {
