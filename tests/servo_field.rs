@@ -565,3 +565,22 @@ fn relative_moves_queue_behind_a_running_move_from_the_shell() {
     let l = json_lines(&o);
     assert_eq!(l.last().unwrap()["values"][0]["value"], 102_000, "{l:?}");
 }
+
+#[test]
+fn halt_from_the_shell_brakes_holds_and_resumes() {
+    let o = run(
+        &[
+            "--time",
+            "stepped",
+            "--json",
+            "-c",
+            "servo enable; servo jog 60rpm; sim step 1s; servo halt; sim step 1s; get servo:velocity_actual; servo halt off; sim step 1s; get servo:velocity_actual",
+        ],
+        "",
+    );
+    let l = json_lines(&o);
+    let v: Vec<&serde_json::Value> = l.iter().filter(|j| j["cmd"] == "get").map(|j| &j["values"][0]["value"]).collect();
+    assert_eq!(v, [&serde_json::json!(0), &serde_json::json!(163_840)], "{l:?}");
+    let halt = l.iter().find(|j| j["halt"] == true).unwrap();
+    assert_eq!(halt["controlword"], 0x10F);
+}

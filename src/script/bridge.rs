@@ -133,6 +133,7 @@ pub const BRIDGE: &[Bridge] = &[
     with("move_rel", "servo", "servo move rel {}", SPEED),
     with("jog", "servo", "servo jog", JOG),
     row("home", "servo", "servo home"),
+    row("halt", "servo", "servo halt"),
     row("wait_target", "servo", "servo wait target [timeout={ms}]"),
     row("save", "servo", "servo save"),
     row("encoder", "servo", "servo encoder"),

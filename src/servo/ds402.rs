@@ -26,6 +26,8 @@ pub mod cw {
     pub const NEW_SETPOINT: u16 = 1 << 4;
     pub const CHANGE_IMMEDIATELY: u16 = 1 << 5;
     pub const RELATIVE: u16 = 1 << 6;
+    /// Halt: brake to a stop and hold; clearing it resumes (CiA 402).
+    pub const HALT: u16 = 1 << 8;
     /// Kinco absolute move: 0x2F, then 0x3F (bit 4 rising).
     pub const MOVE_ABS: u16 = ENABLE_OPERATION | CHANGE_IMMEDIATELY;
     /// Kinco relative move: 0x4F, then 0x5F.
@@ -482,6 +484,17 @@ pub fn wait_target(ops: &mut dyn ServoOps, w: &Waiter, timeout: Duration) -> Res
         }
         w.sleep(POLL)?;
     }
+}
+
+/// `servo halt [off]`: sets (or clears) controlword bit 8, keeping the other bits as the
+/// drive last saw them, so a move or jog brakes to a stop and resumes on release (CiA 402).
+/// Returns the controlword written.
+pub fn halt(ops: &mut dyn ServoOps, on: bool) -> Result<u16> {
+    require_enabled(ops, if on { "halt" } else { "release halt" })?;
+    let cw = read(ops, "controlword")? as u16;
+    let new = if on { cw | cw::HALT } else { cw & !cw::HALT };
+    write(ops, "controlword", new as i64)?;
+    Ok(new)
 }
 
 /// `servo save`: 2FF0.01 = 1 (store all parameters).

@@ -22,7 +22,7 @@ use std::time::Duration;
 pub const SERVO: CommandSpec = CommandSpec {
     name: "servo",
     aliases: &[],
-    usage: "servo [DEVICE] status|enable|disable|fault-reset|quickstop|mode NAME|move abs|rel POS [speed=300rpm acc=100rps/s dec=100rps/s]|jog SPEED|home [method=N]|wait target [timeout=5s]|save|read OBJ…|encoder [N|auto]|raw BYTES…|sim fault [drive CODE|no-reply|bad-checksum|delay D|abort OBJ CODE|drop-echo|clear]|sim switch [home|neg|pos] POS|sim pulses freq=HZ count=N|sim strict on|off",
+    usage: "servo [DEVICE] status|enable|disable|fault-reset|quickstop|mode NAME|move abs|rel POS [speed=300rpm acc=100rps/s dec=100rps/s]|jog SPEED|halt [off]|home [method=N]|wait target [timeout=5s]|save|read OBJ…|encoder [N|auto]|raw BYTES…|sim fault [drive CODE|no-reply|bad-checksum|delay D|abort OBJ CODE|drop-echo|clear]|sim switch [home|neg|pos] POS|sim pulses freq=HZ count=N|sim strict on|off",
     summary: "Kinco servo helpers: DS402 state machine, moves, jog, homing, waits, units, raw frames",
     subcommands: &[
         "status",
@@ -33,6 +33,7 @@ pub const SERVO: CommandSpec = CommandSpec {
         "mode",
         "move",
         "jog",
+        "halt",
         "home",
         "wait",
         "save",
@@ -100,6 +101,19 @@ fn servo(sh: &mut Shell, args: Args) -> Result<Outcome> {
         }
         "move" => move_cmd(ops, &w, &space, rest, args.offset, at(col)),
         "jog" => jog(ops, &space, rest, args.offset, at(col)),
+        "halt" => {
+            let on = match rest {
+                [] | [(_, "on")] => true,
+                [(_, "off")] => false,
+                _ => return Err(Error::usage("usage: servo halt [on|off]").column(at(col))),
+            };
+            let cw = ds402::halt(ops, on)?;
+            let text = if on { "halted: braking to a stop and holding" } else { "halt released: the motion resumes" };
+            Ok(Outcome::new("servo")
+                .text(format!("{text} (controlword 16#{cw:04X})"))
+                .with("halt", on)
+                .with("controlword", cw))
+        }
         "home" => {
             let (_, opts) = lex::options(rest);
             let method = opt_int(&opts, "method", at)?;
