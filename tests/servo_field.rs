@@ -263,7 +263,10 @@ fn line_timing_paces_replies_at_the_baud_rate_on_the_pty() {
     let p = turnarounds(&mut c, 30);
     assert!(p[0] >= wire(38_400.0), "fastest request/reply {:?} beats the wire time {:?}", p[0], wire(38_400.0));
     // The C++ driver's pattern: clear the input buffer right after sending. On a paced line
-    // the reply is still on the wire then, so none is lost.
+    // the reply is still on the wire then, so none is lost. (At 9600 baud: a 20 ms window,
+    // so a test process preempted between its two calls on a loaded machine does not flake.)
+    let slow_line = Server::start("clear", &["--servo-baud", "9600", "--servo-latency", "0"]);
+    let mut c = Client::open(&slow_line);
     let mut lost = 0;
     for _ in 0..50 {
         c.send(&read_req(1, 0x6041, 0));
