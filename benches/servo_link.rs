@@ -76,6 +76,35 @@ fn stop(mut child: std::process::Child) {
     let _ = child.wait();
 }
 
+/// The pattern of a public C++ driver: send, then clear the input buffer at once, then read.
+/// Returns how many of `n` replies were lost to the clear.
+fn clear_after_send_losses(link: &std::path::Path, n: usize) -> usize {
+    use serialport::SerialPort;
+    use std::io::{Read, Write};
+    let mut p =
+        serialport::new(link.to_str().unwrap(), 38_400).timeout(Duration::from_millis(100)).open_native().unwrap();
+    let _ = p.set_exclusive(false);
+    let req = [0x01, 0x40, 0x41, 0x60, 0x00, 0x00, 0x00, 0x00, 0x00, 0x1E];
+    let mut lost = 0;
+    for _ in 0..n {
+        p.write_all(&req).unwrap();
+        p.clear(serialport::ClearBuffer::Input).unwrap();
+        let mut got = [0u8; 10];
+        let mut k = 0;
+        while k < 10 {
+            match p.read(&mut got[k..]) {
+                Ok(m) => k += m,
+                Err(_) => break,
+            }
+        }
+        if k < 10 {
+            lost += 1;
+            let _ = p.clear(serialport::ClearBuffer::Input);
+        }
+    }
+    lost
+}
+
 fn main() {
     let dir = std::env::temp_dir().join(format!("plcsh-servo-bench-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
@@ -94,6 +123,18 @@ fn main() {
     let mut d = open_url("sim-servo:?id=1&baud=38400&latency=0", &Clock::following()).unwrap();
     run_n("in-process sim-servo, paced 38400", d.as_mut(), "statusword", N_PACED);
     drop(d);
+    // Replies lost by a client that clears its input right after sending.
+    for (tag, extra) in [("paced 38400", &["--servo-latency", "0"][..]), ("instant", &["--servo-instant"][..])] {
+        let link = dir.join(format!("ttyKINCO-clear-{}", tag.replace(' ', "-")));
+        let child = serve(&link, extra);
+        let n = 1000;
+        let lost = clear_after_send_losses(&link, n);
+        println!(
+            "clear-after-send client, {tag:<12} lost {lost} of {n} replies ({:.1} %)",
+            lost as f64 * 100.0 / n as f64
+        );
+        stop(child);
+    }
     let link = dir.join("ttyKINCO");
     let mut child = serve(&link, &["--servo-instant"]);
     println!("{N} statusword reads (one 10-byte request + one 10-byte reply each)\n");
