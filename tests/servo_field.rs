@@ -587,3 +587,14 @@ fn halt_from_the_shell_brakes_holds_and_resumes() {
     let halt = l.iter().find(|j| j["halt"] == true).unwrap();
     assert_eq!(halt["controlword"], 0x10F);
 }
+
+#[test]
+fn stopping_the_server_removes_the_link_and_the_control_socket() {
+    let srv = Server::start("cleanup", &["--servo-instant"]);
+    let ctl = PathBuf::from(srv.served.ready["servo_control"].as_str().unwrap());
+    let link = srv.link.clone();
+    assert!(link.exists() && ctl.exists());
+    drop(srv); // SIGTERM, then wait for the process
+    assert!(!link.exists() && std::fs::symlink_metadata(&link).is_err(), "link left behind");
+    assert!(!ctl.exists(), "control socket left behind");
+}

@@ -175,8 +175,16 @@ async fn serve_k2(
 
 /// Serves simulated drives on a pty from a thread of their own (the servo line is a
 /// blocking byte stream); returns once the pty is open, with its fields for `ready`.
-async fn serve_servo(args: &ServeArgs, stop: &Arc<AtomicBool>, ready: &mut Map<String, Json>) -> Result<()> {
+async fn serve_servo(
+    args: &ServeArgs,
+    stop: &Arc<AtomicBool>,
+    ready: &mut Map<String, Json>,
+    cleanup: &mut Cleanup,
+) -> Result<()> {
     let Some(link) = args.servo_pty.clone() else { return Ok(()) };
+    // The process may exit before the line's thread sees the stop flag: once the line is up,
+    // its link and control socket are removed on the way out here too.
+    let made = [link.clone(), crate::servo::sim::serve::control_path(&link)];
     let ids = crate::servo::driver::parse_ids(&args.servo_id)
         .map_err(|m| Error::usage(format!("--servo-id: {m}")).hint("e.g. --servo-id 1,2"))?;
     let latency =
@@ -210,9 +218,13 @@ async fn serve_servo(args: &ServeArgs, stop: &Arc<AtomicBool>, ready: &mut Map<S
     match rx.await {
         Ok(Ok(Json::Object(m))) => {
             ready.extend(m);
+            cleanup.links.extend(made);
             Ok(())
         }
-        Ok(Ok(_)) => Ok(()),
+        Ok(Ok(_)) => {
+            cleanup.links.extend(made);
+            Ok(())
+        }
         Ok(Err(e)) => Err(e),
         Err(_) => Err(Error::io("the servo line stopped before it was ready")),
     }
@@ -256,7 +268,7 @@ async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
     }
     let servo_stop = Arc::new(AtomicBool::new(false));
     let _stop_servo = StopOnDrop(servo_stop.clone());
-    serve_servo(args, &servo_stop, &mut ready).await?;
+    serve_servo(args, &servo_stop, &mut ready, &mut cleanup).await?;
     serde_json::to_writer(&mut *out, &ready).map_err(|e| Error::io("cannot print the readiness line").cause(e))?;
     writeln!(out)?;
     out.flush()?;
