@@ -442,6 +442,64 @@ pub fn serve_pty(
     r
 }
 
+/// What `plcsh sim serve --fx-pty LINK --fx-link-pty LINK2` serves: one simulated PLC of
+/// `model`, its programming port and/or its computer link (station `station`, format 1, sum
+/// check on), each on its own pty served from a thread. Returns once both are open, with
+/// their fields for the readiness line (`fx_model`, `fx_pty`, `fx_link_pty`, `fx_station`).
+pub async fn serve_ptys(
+    port_link: Option<PathBuf>,
+    link_link: Option<PathBuf>,
+    model: &str,
+    station: u8,
+    stop: &Arc<AtomicBool>,
+) -> Result<serde_json::Map<String, serde_json::Value>> {
+    use serde_json::json;
+    let mut ready = serde_json::Map::new();
+    if port_link.is_none() && link_link.is_none() {
+        return Ok(ready);
+    }
+    let m = super::model::Model::find(model).ok_or_else(|| {
+        crate::core::Error::usage(format!("unknown FX model `{model}`"))
+            .hint(format!("models: {}", super::model::Model::names()))
+    })?;
+    if station > 31 {
+        return Err(crate::core::Error::usage("--fx-station is 0–31"));
+    }
+    let plc: Plc = Arc::new(Mutex::new(Memory::new(m)));
+    ready.insert("fx_model".into(), json!(m.name));
+    let servers: [(Option<PathBuf>, &str, Box<dyn Fn() -> Box<dyn Server> + Send>); 2] = [
+        (port_link, "fx_pty", Box::new(|| Box::new(PortServer::default()))),
+        (link_link, "fx_link_pty", Box::new(move || Box::new(LinkServer::new(station, Settings::default())))),
+    ];
+    for (link, key, make) in servers {
+        let Some(link) = link else { continue };
+        let (tx, rx) = tokio::sync::oneshot::channel::<Result<Ready>>();
+        let (plc, stop) = (plc.clone(), stop.clone());
+        std::thread::spawn(move || {
+            let mut tx = Some(tx);
+            let r = serve_pty(Some(&link), make(), plc, &stop, |r| {
+                if let Some(tx) = tx.take() {
+                    let _ = tx.send(Ok(r.clone()));
+                }
+            });
+            if let (Err(e), Some(tx)) = (r, tx.take()) {
+                let _ = tx.send(Err(e));
+            }
+        });
+        match rx.await {
+            Ok(Ok(r)) => {
+                ready.insert(key.into(), json!({"path": r.path, "link": r.link}));
+            }
+            Ok(Err(e)) => return Err(e),
+            Err(_) => return Err(crate::core::Error::io("the FX port stopped before it was ready")),
+        }
+        if key == "fx_link_pty" {
+            ready.insert("fx_station".into(), json!(station));
+        }
+    }
+    Ok(ready)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
