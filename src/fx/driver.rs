@@ -78,7 +78,13 @@ impl Driver {
     }
 
     /// A computer-link driver on `line`.
-    pub fn link(line: SharedLine, model: &'static Model, header: Header, settings: Settings, info: DeviceInfo) -> Driver {
+    pub fn link(
+        line: SharedLine,
+        model: &'static Model,
+        header: Header,
+        settings: Settings,
+        info: DeviceInfo,
+    ) -> Driver {
         Driver::new(line, FxSpace::new(model, Proto::Link), Mode::Link { header, settings }, info)
     }
 
@@ -133,11 +139,10 @@ impl Driver {
                 }
                 Some(_) => continue,
                 None => {
-                    return Err(Error::link(format!(
-                        "no ACK to ENQ on {name} within {} ms",
-                        self.timeout.as_millis()
-                    ))
-                    .hint("check the cable and converter, that this is the PLC's programming port, and 9600 baud 7E1"))
+                    return Err(Error::link(format!("no ACK to ENQ on {name} within {} ms", self.timeout.as_millis()))
+                        .hint(
+                            "check the cable and converter, that this is the PLC's programming port, and 9600 baud 7E1",
+                        ))
                 }
             }
         }
@@ -294,7 +299,10 @@ impl Driver {
         let regions = port::regions();
         let places: Vec<port::Place> = ops
             .iter()
-            .map(|o| port::place(o).ok_or_else(|| Error::new(ErrorKind::Range, "past the address table").operand(o.canonical())))
+            .map(|o| {
+                port::place(o)
+                    .ok_or_else(|| Error::new(ErrorKind::Range, "past the address table").operand(o.canonical()))
+            })
             .collect::<Result<_>>()?;
         let mut order: Vec<usize> = (0..ops.len()).collect();
         order.sort_by_key(|&i| places[i].addr);
@@ -318,7 +326,8 @@ impl Driver {
         for (s, e) in &spans {
             let count = (e - s) as u8;
             let req = Request::Read { addr: *s, count };
-            let bytes = self.transact(&req.encode(), req.reply_len(), &format!("a read of {count} bytes at {s:04X}H"))?;
+            let bytes =
+                self.transact(&req.encode(), req.reply_len(), &format!("a read of {count} bytes at {s:04X}H"))?;
             data.push(bytes);
         }
         Ok(ops
@@ -340,12 +349,15 @@ impl Driver {
         let mut frames: Vec<(Request, String)> = Vec::new();
         for (o, v) in items {
             let raw = o.view.encode(v) as u64;
-            let p = port::place(o).ok_or_else(|| Error::new(ErrorKind::Range, "past the address table").operand(o.canonical()))?;
+            let p = port::place(o)
+                .ok_or_else(|| Error::new(ErrorKind::Range, "past the address table").operand(o.canonical()))?;
             match o.width {
                 Width::Bit => {
-                    let addr = port::force_address(o.area, o.index)
-                        .ok_or_else(|| read_only(o))?;
-                    frames.push((Request::Force { on: raw != 0, addr }, format!("forcing {} {}", o.canonical(), on_off(raw))));
+                    let addr = port::force_address(o.area, o.index).ok_or_else(|| read_only(o))?;
+                    frames.push((
+                        Request::Force { on: raw != 0, addr },
+                        format!("forcing {} {}", o.canonical(), on_off(raw)),
+                    ));
                 }
                 Width::Group(n) if p.bit == 0 && (4 * n) % 8 == 0 => {
                     let data: Vec<u8> = (0..p.len).map(|i| (raw >> (8 * i)) as u8).collect();
@@ -355,7 +367,10 @@ impl Driver {
                     for i in 0..4 * n as u16 {
                         let addr = port::force_address(o.area, o.index + i).ok_or_else(|| read_only(o))?;
                         let bit = raw >> i & 1;
-                        frames.push((Request::Force { on: bit != 0, addr }, format!("forcing {} bit {i}", o.canonical())));
+                        frames.push((
+                            Request::Force { on: bit != 0, addr },
+                            format!("forcing {} bit {i}", o.canonical()),
+                        ));
                     }
                 }
                 Width::Word | Width::Pair => {
@@ -448,12 +463,16 @@ impl Driver {
 
     fn link_write(&mut self, items: &[(FxOperand, Value)]) -> Result<()> {
         let mut cmds: Vec<Cmd> = Vec::new();
-        let singles = items.iter().all(|(o, _)| o.width == Width::Word && !(o.area == Area::CN && o.index >= CN32_FIRST));
-        let runs = items.windows(2).filter(|w| !(w[1].0.area == w[0].0.area && w[1].0.index == w[0].0.index + 1)).count() + 1;
+        let singles =
+            items.iter().all(|(o, _)| o.width == Width::Word && !(o.area == Area::CN && o.index >= CN32_FIRST));
+        let runs =
+            items.windows(2).filter(|w| !(w[1].0.area == w[0].0.area && w[1].0.index == w[0].0.index + 1)).count() + 1;
         if singles && items.len() > 1 && runs > 1 {
             for chunk in items.chunks(fxlink::MAX_WT) {
-                let list =
-                    chunk.iter().map(|(o, v)| (Dev { area: o.area, index: o.index }, o.view.encode(v) & 0xFFFF)).collect();
+                let list = chunk
+                    .iter()
+                    .map(|(o, v)| (Dev { area: o.area, index: o.index }, o.view.encode(v) & 0xFFFF))
+                    .collect();
                 cmds.push(Cmd::Wt { items: list });
             }
         } else {
@@ -510,7 +529,9 @@ fn push_write(frames: &mut Vec<(Request, String)>, addr: u16, data: Vec<u8>, o: 
 fn merge_link(cmds: &mut Vec<Cmd>, next: Cmd) {
     match (cmds.last_mut(), &next) {
         (Some(Cmd::Bw { dev: d0, bits: b0 }), Cmd::Bw { dev, bits })
-            if d0.area == dev.area && d0.index as usize + b0.len() == dev.index as usize && b0.len() + bits.len() <= 160 =>
+            if d0.area == dev.area
+                && d0.index as usize + b0.len() == dev.index as usize
+                && b0.len() + bits.len() <= 160 =>
         {
             b0.extend(bits);
         }
@@ -581,7 +602,9 @@ impl Device for Driver {
                     .filter(|r| *r <= 10)
                     .ok_or_else(|| Error::usage(format!("retries `{value}` must be 0–10")))?
             }
-            _ => return Err(Error::usage(format!("fx devices have no option `{key}`")).hint("options: timeout, retries")),
+            _ => {
+                return Err(Error::usage(format!("fx devices have no option `{key}`")).hint("options: timeout, retries"))
+            }
         }
         Ok(())
     }
@@ -693,7 +716,11 @@ pub fn open_link(u: &DeviceUrl) -> Result<Box<dyn Device>> {
         return Err(Error::usage(format!("{} names no serial port", u.text)).hint("e.g. fxlink:/dev/ttyUSB0?station=0"));
     }
     let model = model_of(u, None)?;
-    let header = Header { station: hex_param(u, "station", 0, 31)?, pc: hex_param(u, "pc", 0xFF, 0xFF)?, wait: hex_param(u, "wait", 0, 15)? };
+    let header = Header {
+        station: hex_param(u, "station", 0, 31)?,
+        pc: hex_param(u, "pc", 0xFF, 0xFF)?,
+        wait: hex_param(u, "wait", 0, 15)?,
+    };
     let settings = link_settings(u)?;
     let baud = u.param_num::<u32>("baud")?.unwrap_or(9600);
     let bits = u.param_num::<u8>("bits")?.unwrap_or(7);
@@ -707,7 +734,12 @@ pub fn open_link(u: &DeviceUrl) -> Result<Box<dyn Device>> {
     let info = DeviceInfo {
         family: "fx",
         model: format!("{} (computer link, station {})", model.name, header.station),
-        link: format!("{} ({line_settings}, format {}, sum {})", u.target, if settings.format4 { 4 } else { 1 }, if settings.sum { "on" } else { "off" }),
+        link: format!(
+            "{} ({line_settings}, format {}, sum {})",
+            u.target,
+            if settings.format4 { 4 } else { 1 },
+            if settings.sum { "on" } else { "off" }
+        ),
         simulated: false,
     };
     finish(Driver::link(line, model, header, settings, info), u)
@@ -752,7 +784,11 @@ pub fn open_sim(u: &DeviceUrl) -> Result<Box<dyn Device>> {
         simulated: true,
     };
     let d = if link {
-        let header = Header { station: hex_param(u, "station", 0, 31)?, pc: hex_param(u, "pc", 0xFF, 0xFF)?, wait: hex_param(u, "wait", 0, 15)? };
+        let header = Header {
+            station: hex_param(u, "station", 0, 31)?,
+            pc: hex_param(u, "pc", 0xFF, 0xFF)?,
+            wait: hex_param(u, "wait", 0, 15)?,
+        };
         let settings = link_settings(u)?;
         let server: Box<dyn Server> = Box::new(LinkServer::new(header.station, settings));
         let line = lines::private(&u.text, Box::new(SimLink::new(plc, server)));
@@ -858,7 +894,8 @@ mod tests {
         d.read(&o).unwrap();
         assert_eq!(d.requests() - before, 4, "WR D0–D63, WR D64, BR X0–X7, BR M0–M16");
         // Scattered single words go in one WT frame.
-        let w: Vec<(Operand, Value)> = ops(d.as_ref(), &["D1", "D50", "D7"]).into_iter().zip([1, 2, 3].map(Value::Int)).collect();
+        let w: Vec<(Operand, Value)> =
+            ops(d.as_ref(), &["D1", "D50", "D7"]).into_iter().zip([1, 2, 3].map(Value::Int)).collect();
         let before = d.requests();
         d.write(&w).unwrap();
         assert_eq!(d.requests() - before, 1);

@@ -96,10 +96,9 @@ impl Dev {
             return None;
         }
         let text = std::str::from_utf8(s).ok()?;
-        let spec = super::operand::AREAS
-            .iter()
-            .filter(|a| !a.link.is_empty())
-            .find(|a| text.starts_with(a.link) && (a.link.len() == 2 || !text[1..2].chars().all(|c| c.is_ascii_alphabetic())))?;
+        let spec = super::operand::AREAS.iter().filter(|a| !a.link.is_empty()).find(|a| {
+            text.starts_with(a.link) && (a.link.len() == 2 || !text[1..2].chars().all(|c| c.is_ascii_alphabetic()))
+        })?;
         let digits = &text[spec.link.len()..];
         if !digits.bytes().all(|b| b.is_ascii_digit()) {
             return None;
@@ -121,12 +120,26 @@ impl Dev {
 /// A request's command and data.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Cmd {
-    Br { dev: Dev, count: usize },
-    Wr { dev: Dev, count: usize },
-    Bw { dev: Dev, bits: Vec<bool> },
+    Br {
+        dev: Dev,
+        count: usize,
+    },
+    Wr {
+        dev: Dev,
+        count: usize,
+    },
+    Bw {
+        dev: Dev,
+        bits: Vec<bool>,
+    },
     /// Values: 16-bit words, or 32-bit for CN200+.
-    Ww { dev: Dev, values: Vec<u32> },
-    Wt { items: Vec<(Dev, u32)> },
+    Ww {
+        dev: Dev,
+        values: Vec<u32>,
+    },
+    Wt {
+        items: Vec<(Dev, u32)>,
+    },
 }
 
 fn push_value(out: &mut Vec<u8>, v: u32, unit: usize) {
@@ -245,7 +258,11 @@ pub enum ReplyError {
 
 /// Decodes a complete reply, checking the station and PC number against `h`.
 pub fn decode_reply(f: &[u8], h: Header, s: Settings) -> Result<Reply, ReplyError> {
-    let f = if s.format4 { f.strip_suffix(&[CR, LF]).ok_or(ReplyError::Malformed("no CR LF after the reply"))? } else { f };
+    let f = if s.format4 {
+        f.strip_suffix(&[CR, LF]).ok_or(ReplyError::Malformed("no CR LF after the reply"))?
+    } else {
+        f
+    };
     if f.len() < 5 {
         return Err(ReplyError::Malformed("too short"));
     }
@@ -280,9 +297,7 @@ pub fn parse_values(d: &[u8], unit: usize) -> Option<Vec<u32>> {
     if d.len() % unit != 0 {
         return None;
     }
-    d.chunks(unit)
-        .map(|c| c.chunks(2).try_fold(0u32, |acc, p| Some(acc << 8 | hex2(p)? as u32)))
-        .collect()
+    d.chunks(unit).map(|c| c.chunks(2).try_fold(0u32, |acc, p| Some(acc << 8 | hex2(p)? as u32))).collect()
 }
 
 /// What the simulator found at the start of its input.

@@ -607,8 +607,30 @@ mod tests {
     #[test]
     fn canonical_round_trip() {
         for s in [
-            "X0", "X177", "Y10", "M500", "M8000", "S20", "TS0", "TC3", "CS10", "CC255", "TN5", "CN10", "CN200", "D100",
-            "D8014", "D100/DINT", "D100/REAL", "D100/WORD", "D0/DWORD", "K4M0", "K8M0", "K2X10", "K1Y0", "K4S0/INT",
+            "X0",
+            "X177",
+            "Y10",
+            "M500",
+            "M8000",
+            "S20",
+            "TS0",
+            "TC3",
+            "CS10",
+            "CC255",
+            "TN5",
+            "CN10",
+            "CN200",
+            "D100",
+            "D8014",
+            "D100/DINT",
+            "D100/REAL",
+            "D100/WORD",
+            "D0/DWORD",
+            "K4M0",
+            "K8M0",
+            "K2X10",
+            "K1Y0",
+            "K4S0/INT",
             "K8M0/DINT",
         ] {
             let o = p(s);

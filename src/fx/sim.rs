@@ -568,7 +568,11 @@ mod tests {
         // The programming port sees the link's write.
         let r = talk(&mut port, &p, &Request::Read { addr: 0x10F6, count: 2 }.encode());
         assert_eq!(port::decode_read_reply(&r, 2).unwrap(), vec![0x34, 0x12]);
-        let bw = link::encode_request(h, &Cmd::Bw { dev: Dev { area: Area::Y, index: 0 }, bits: vec![true, false, true] }, s);
+        let bw = link::encode_request(
+            h,
+            &Cmd::Bw { dev: Dev { area: Area::Y, index: 0 }, bits: vec![true, false, true] },
+            s,
+        );
         assert_eq!(talk(&mut l, &p, &bw), b"\x0600FF".to_vec());
         let br = link::encode_request(h, &Cmd::Br { dev: Dev { area: Area::Y, index: 0 }, count: 4 }, s);
         assert_eq!(link::decode_reply(&talk(&mut l, &p, &br), h, s), Ok(Reply::Data(b"1010".to_vec())));
@@ -583,12 +587,24 @@ mod tests {
         bs[n - 1] = if bs[n - 1] == b'0' { b'1' } else { b'0' };
         assert_eq!(link::decode_reply(&talk(&mut l, &p, &bs), h, s), Ok(Reply::Nak(code::SUM)));
         // Another station: silence. PC number not FF: error 0A.
-        let other = link::encode_request(Header { station: 3, ..h }, &Cmd::Br { dev: Dev { area: Area::Y, index: 0 }, count: 1 }, s);
+        let other = link::encode_request(
+            Header { station: 3, ..h },
+            &Cmd::Br { dev: Dev { area: Area::Y, index: 0 }, count: 1 },
+            s,
+        );
         assert!(talk(&mut l, &p, &other).is_empty());
-        let pc = link::encode_request(Header { pc: 0x01, ..h }, &Cmd::Br { dev: Dev { area: Area::Y, index: 0 }, count: 1 }, s);
+        let pc = link::encode_request(
+            Header { pc: 0x01, ..h },
+            &Cmd::Br { dev: Dev { area: Area::Y, index: 0 }, count: 1 },
+            s,
+        );
         assert_eq!(talk(&mut l, &p, &pc), b"\x1500010A".to_vec());
         // Wait digit: the reply is held back 10 ms per step.
-        let slow = link::encode_request(Header { wait: 0xA, ..h }, &Cmd::Br { dev: Dev { area: Area::Y, index: 0 }, count: 1 }, s);
+        let slow = link::encode_request(
+            Header { wait: 0xA, ..h },
+            &Cmd::Br { dev: Dev { area: Area::Y, index: 0 }, count: 1 },
+            s,
+        );
         assert_eq!(l.feed(&slow, &p)[0].wait, Duration::from_millis(100));
     }
 }

@@ -107,10 +107,7 @@ impl FxSpace {
                     }
                     return Err(range_err(
                         op,
-                        format!(
-                            "{} is past the programming port's address table (it reaches {reach})",
-                            op.canonical()
-                        ),
+                        format!("{} is past the programming port's address table (it reaches {reach})", op.canonical()),
                     )
                     .hint("the computer link (fxlink:) reaches every device of the model"));
                 }
@@ -158,7 +155,9 @@ impl OperandSpace for FxSpace {
         let spec = o.area.spec();
         let mut s = match o.width {
             Width::Group(n) => format!("{} bits {}…, as a {}-bit number", spec.meaning, o.area.name(), 4 * n),
-            Width::Pair if o.area == Area::D => format!("32-bit value in D{} (low) and D{} (high)", o.index, o.index + 1),
+            Width::Pair if o.area == Area::D => {
+                format!("32-bit value in D{} (low) and D{} (high)", o.index, o.index + 1)
+            }
             _ if o.index >= SPECIAL => format!("special {}", spec.meaning),
             _ => spec.meaning.to_string(),
         };
@@ -220,12 +219,16 @@ impl OperandSpace for FxSpace {
                 for n in [2u8, 4, 8] {
                     let t = format!("K{n}{}0", spec.name);
                     if t.starts_with(&p) && p.len() < t.len() {
-                        out.push(Candidate { text: t, meaning: format!("{}-bit group of {} bits", 4 * n, spec.meaning) });
+                        out.push(Candidate {
+                            text: t,
+                            meaning: format!("{}-bit group of {} bits", 4 * n, spec.meaning),
+                        });
                     }
                 }
             }
         }
-        for (t, m) in [("M8000", "RUN monitor (on while running)"), ("M8002", "initial pulse"), ("D8000", "watchdog time, ms")]
+        for (t, m) in
+            [("M8000", "RUN monitor (on while running)"), ("M8002", "initial pulse"), ("D8000", "watchdog time, ms")]
         {
             if t.starts_with(&p) && p.len() >= 2 {
                 out.push(Candidate { text: t.into(), meaning: m.into() });
