@@ -283,3 +283,27 @@ fn batch_gets_coalesce_within_the_frame_limits() {
     l.read(&o).unwrap();
     assert_eq!(l.requests() - before, 3, "WR D0–D63, WR D64, BR X0–X17");
 }
+
+#[test]
+fn write_guards_from_profiles_cover_forces_and_writes() {
+    let dir = std::env::temp_dir().join(format!("plcsh-fx-profile-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let f = dir.join("devices.toml");
+    std::fs::write(&f, "[devices.line]\nurl = \"sim-fx:FX1N\"\nallow = [\"D100..D109\", \"M0\"]\n").unwrap();
+    let o = run(
+        &["--config", f.to_str().unwrap(), "--json"],
+        "connect line\nuse line\nset D100=5, M0=1\nset D100=6, M500=1\nset D200=1\nget D100 M0 M500 D200\n",
+    );
+    let l = json_lines(&o);
+    assert_eq!(l[2]["ok"], true, "{l:?}");
+    assert_eq!(l[3]["ok"], false, "forcing M500 is outside the allow list: {l:?}");
+    assert_eq!(l[3]["error"]["operand"], "M500");
+    assert_eq!(l[4]["ok"], false);
+    let v: Vec<i64> = l[5]["values"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v["value"].as_i64().unwrap_or(v["value"].as_bool().map(i64::from).unwrap_or(-1)))
+        .collect();
+    assert_eq!(v, vec![5, 1, 0, 0], "the refused lines wrote nothing");
+}
