@@ -16,6 +16,9 @@
 //! --servo-id 1[,2,…] [--servo-loop]`, the logic is `servo::sim::serve`); their fields
 //! (`servo_pty`, `link`, `ids`, `echo`) join the readiness line.
 //!
+//! A simulated FX PLC's programming port and computer link go on ptys of their own (`--fx-pty
+//! LINK --fx-link-pty LINK2`, one shared memory; the logic is `fx::sim`).
+//!
 //! Shape: each served family adds its endpoints in its own function ([`serve_k2`],
 //! [`serve_servo`]) — it binds, spawns its tasks and adds its fields to the readiness line.
 
@@ -242,7 +245,10 @@ async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
     let _stop_servo = StopOnDrop(servo_stop.clone());
     serve_servo(args, &servo_stop, &mut ready).await?;
     let fx = (args.fx_pty.clone(), args.fx_link_pty.clone());
-    ready.extend(crate::fx::sim::serve_ptys(fx.0, fx.1, &args.fx_model, args.fx_station, &servo_stop).await?);
+    ready.extend(
+        crate::fx::sim::serve_ptys(fx.0.clone(), fx.1.clone(), &args.fx_model, args.fx_station, &servo_stop).await?,
+    );
+    cleanup.links.extend(fx.0.into_iter().chain(fx.1));
     serde_json::to_writer(&mut *out, &ready).map_err(|e| Error::io("cannot print the readiness line").cause(e))?;
     writeln!(out)?;
     out.flush()?;
