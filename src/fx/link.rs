@@ -294,7 +294,7 @@ pub fn decode_reply(f: &[u8], h: Header, s: Settings) -> Result<Reply, ReplyErro
 
 /// Parses hex values of `unit` characters each.
 pub fn parse_values(d: &[u8], unit: usize) -> Option<Vec<u32>> {
-    if d.len() % unit != 0 {
+    if !d.len().is_multiple_of(unit) {
         return None;
     }
     d.chunks(unit).map(|c| c.chunks(2).try_fold(0u32, |acc, p| Some(acc << 8 | hex2(p)? as u32))).collect()

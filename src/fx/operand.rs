@@ -366,8 +366,8 @@ impl FxOperand {
     /// Whether a group starts where the manual advises (a number ending in 0).
     pub fn group_aligned(&self) -> bool {
         match self.width {
-            Width::Group(_) if self.area.spec().octal => self.index % 8 == 0,
-            Width::Group(_) => self.index % 10 == 0,
+            Width::Group(_) if self.area.spec().octal => self.index.is_multiple_of(8),
+            Width::Group(_) => self.index.is_multiple_of(10),
             _ => true,
         }
     }
@@ -398,7 +398,7 @@ pub fn parse_expr(text: &str) -> Result<Vec<FxOperand>> {
         }
         let step = a.span() as usize;
         let n = (b.index - a.index) as usize;
-        if n % step != 0 {
+        if !n.is_multiple_of(step) {
             return Err(op_err(
                 lead + dots + 2,
                 format!("{} is not a whole number of steps of {step} from {}", b.canonical(), a.canonical()),

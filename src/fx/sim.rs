@@ -467,17 +467,17 @@ pub async fn serve_ptys(
     }
     let plc: Plc = Arc::new(Mutex::new(Memory::new(m)));
     ready.insert("fx_model".into(), json!(m.name));
-    let servers: [(Option<PathBuf>, &str, Box<dyn Fn() -> Box<dyn Server> + Send>); 2] = [
-        (port_link, "fx_pty", Box::new(|| Box::new(PortServer::default()))),
-        (link_link, "fx_link_pty", Box::new(move || Box::new(LinkServer::new(station, Settings::default())))),
+    let servers: [(Option<PathBuf>, &str, Box<dyn Server>); 2] = [
+        (port_link, "fx_pty", Box::new(PortServer::default())),
+        (link_link, "fx_link_pty", Box::new(LinkServer::new(station, Settings::default()))),
     ];
-    for (link, key, make) in servers {
+    for (link, key, server) in servers {
         let Some(link) = link else { continue };
         let (tx, rx) = tokio::sync::oneshot::channel::<Result<Ready>>();
         let (plc, stop) = (plc.clone(), stop.clone());
         std::thread::spawn(move || {
             let mut tx = Some(tx);
-            let r = serve_pty(Some(&link), make(), plc, &stop, |r| {
+            let r = serve_pty(Some(&link), server, plc, &stop, |r| {
                 if let Some(tx) = tx.take() {
                     let _ = tx.send(Ok(r.clone()));
                 }
@@ -606,5 +606,41 @@ mod tests {
             s,
         );
         assert_eq!(l.feed(&slow, &p)[0].wait, Duration::from_millis(100));
+    }
+
+    #[test]
+    fn hostile_bytes_never_panic_and_the_servers_recover() {
+        // Random bytes, biased towards the protocols' own characters so parsing goes deep.
+        let alphabet = b"\x02\x03\x05\x06\x150123456789ABCDEFXYMSDTNCWRBF\xB0";
+        let mut x: u64 = 0x9E37_79B9_7F4A_7C15;
+        let mut next = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x
+        };
+        let p = plc("FX2N");
+        let mut port = PortServer::default();
+        let mut l = LinkServer::new(0, Settings::default());
+        for _ in 0..2000 {
+            let n = (next() % 64) as usize;
+            let chunk: Vec<u8> = (0..n).map(|_| alphabet[(next() % alphabet.len() as u64) as usize]).collect();
+            port.feed(&chunk, &p);
+            l.feed(&chunk, &p);
+            let raw: Vec<u8> = (0..n).map(|_| next() as u8).collect();
+            port.feed(&raw, &p);
+            l.feed(&raw, &p);
+            if next() % 8 == 0 {
+                port.gap();
+                l.gap();
+            }
+        }
+        port.gap();
+        l.gap();
+        assert_eq!(talk(&mut port, &p, &[ENQ]), vec![ACK]);
+        let h = Header { station: 0, pc: 0xFF, wait: 0 };
+        let br =
+            link::encode_request(h, &Cmd::Br { dev: Dev { area: Area::X, index: 0 }, count: 1 }, Settings::default());
+        assert!(matches!(link::decode_reply(&talk(&mut l, &p, &br), h, Settings::default()), Ok(Reply::Data(_))));
     }
 }

@@ -154,7 +154,15 @@ impl OperandSpace for FxSpace {
         let o = FxOperand::from_key(op.key);
         let spec = o.area.spec();
         let mut s = match o.width {
-            Width::Group(n) => format!("{} bits {}…, as a {}-bit number", spec.meaning, o.area.name(), 4 * n),
+            Width::Group(n) => format!(
+                "{}-bit group of {} bits {}{}–{}{}",
+                4 * n,
+                spec.meaning,
+                o.area.name(),
+                FxOperand::number_text(o.area, o.index),
+                o.area.name(),
+                FxOperand::number_text(o.area, o.index + 4 * n as u16 - 1)
+            ),
             Width::Pair if o.area == Area::D => {
                 format!("32-bit value in D{} (low) and D{} (high)", o.index, o.index + 1)
             }
