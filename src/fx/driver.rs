@@ -18,7 +18,8 @@
 //!
 //! URL parameters: `model` (FX2N), `timeout` (500ms), `retries` (3); `fx:` `baud` (9600);
 //! `fxlink:` `station` (0), `pc` (FF), `wait` (0–15, ×10 ms), `baud` (9600), `bits` (7),
-//! `parity` (e/o/n), `stop` (1/2), `sum` (1), `format` (1 or 4). `sim-fx:MODEL` takes
+//! `parity` (e/o/n), `stop` (1/2), `sum` (1), `format` (1 or 4), `xy` (octal, or decimal for
+//! a PLC that numbers X/Y in link frames as the seed literally says). `sim-fx:MODEL` takes
 //! `protocol=port|link`, the link's `station`/`sum`/`format`, and `share=NAME`: devices with
 //! one share name use one simulated PLC (the port and the link of one PLC).
 
@@ -286,6 +287,13 @@ impl Driver {
         }
     }
 
+    fn settings(&self) -> Settings {
+        match &self.mode {
+            Mode::Link { settings, .. } => *settings,
+            Mode::Port { .. } => Settings::default(),
+        }
+    }
+
     fn link_frame(&self, cmd: &Cmd) -> Vec<u8> {
         match &self.mode {
             Mode::Link { header, settings } => fxlink::encode_request(*header, cmd, *settings),
@@ -430,7 +438,8 @@ impl Driver {
             };
             let dev = Dev { area, index: *s };
             let cmd = if bits { Cmd::Br { dev, count } } else { Cmd::Wr { dev, count } };
-            let what = format!("{} of {count} point(s) from {}", if bits { "BR" } else { "WR" }, dev.encode());
+            let what =
+                format!("{} of {count} point(s) from {}", if bits { "BR" } else { "WR" }, dev.text(self.settings()));
             let frame = self.link_frame(&cmd);
             let d = self.transact(&frame, 0, &what)?;
             let values = if bits {
@@ -488,10 +497,11 @@ impl Driver {
                 merge_link(&mut cmds, next);
             }
         }
+        let st = self.settings();
         for c in cmds {
             let what = match &c {
-                Cmd::Bw { dev, bits } => format!("BW of {} point(s) at {}", bits.len(), dev.encode()),
-                Cmd::Ww { dev, values } => format!("WW of {} value(s) at {}", values.len(), dev.encode()),
+                Cmd::Bw { dev, bits } => format!("BW of {} point(s) at {}", bits.len(), dev.text(st)),
+                Cmd::Ww { dev, values } => format!("WW of {} value(s) at {}", values.len(), dev.text(st)),
                 Cmd::Wt { items } => format!("WT of {} value(s)", items.len()),
                 _ => String::new(),
             };
@@ -655,7 +665,12 @@ fn link_settings(u: &DeviceUrl) -> Result<Settings> {
         Some("4") => true,
         Some(v) => return Err(Error::usage(format!("`format={v}` in {}: formats 1 and 4 are supported", u.text))),
     };
-    Ok(Settings { sum, format4 })
+    let decimal_xy = match u.param("xy") {
+        None | Some("octal") => false,
+        Some("decimal") => true,
+        Some(v) => return Err(Error::usage(format!("`xy={v}` in {}: octal or decimal", u.text))),
+    };
+    Ok(Settings { sum, format4, decimal_xy })
 }
 
 fn finish(mut d: Driver, u: &DeviceUrl) -> Result<Box<dyn Device>> {
@@ -710,7 +725,7 @@ pub fn open_port(u: &DeviceUrl) -> Result<Box<dyn Device>> {
 /// Opens `fxlink:PORT?station=0&pc=FF&wait=0&baud=9600&bits=7&parity=e&stop=1&sum=1&format=1`.
 pub fn open_link(u: &DeviceUrl) -> Result<Box<dyn Device>> {
     u.expect_params(&[
-        "station", "pc", "wait", "baud", "bits", "parity", "stop", "sum", "format", "model", "timeout", "retries",
+        "station", "pc", "wait", "baud", "bits", "parity", "stop", "sum", "format", "xy", "model", "timeout", "retries",
     ])?;
     if u.target.is_empty() {
         return Err(Error::usage(format!("{} names no serial port", u.text)).hint("e.g. fxlink:/dev/ttyUSB0?station=0"));
@@ -769,7 +784,9 @@ pub fn sim_plc(model: &'static Model, share: Option<&str>) -> Result<Plc> {
 
 /// Opens `sim-fx:MODEL?protocol=port|link&station=0&sum=1&format=1&share=NAME`.
 pub fn open_sim(u: &DeviceUrl) -> Result<Box<dyn Device>> {
-    u.expect_params(&["model", "protocol", "station", "pc", "wait", "sum", "format", "share", "timeout", "retries"])?;
+    u.expect_params(&[
+        "model", "protocol", "station", "pc", "wait", "sum", "format", "xy", "share", "timeout", "retries",
+    ])?;
     let model = model_of(u, Some(if u.target.is_empty() { "FX2N" } else { &u.target }))?;
     let plc = sim_plc(model, u.param("share"))?;
     let link = match u.param("protocol") {
@@ -900,6 +917,16 @@ mod tests {
         d.write(&w).unwrap();
         assert_eq!(d.requests() - before, 1);
         assert_eq!(get(d.as_mut(), "D50"), 2);
+    }
+
+    #[test]
+    fn decimal_xy_link_frames_reach_the_same_devices() {
+        let mut l = sim("sim-fx:FX2N?protocol=link&xy=decimal&share=unit-test-xy");
+        let mut p = sim("sim-fx:FX2N?share=unit-test-xy");
+        set(l.as_mut(), "Y22", 1); // sent as BW Y0018
+        assert_eq!(get(p.as_mut(), "Y22"), 1);
+        assert_eq!(get(l.as_mut(), "K2Y20"), 4);
+        assert!(open_sim(&DeviceUrl::parse("sim-fx:FX2N?protocol=link&xy=hex").unwrap()).is_err());
     }
 
     #[test]

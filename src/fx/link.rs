@@ -14,6 +14,7 @@
 //!   X and Y are written with their own (octal) digits, `X0040` for X40, as Mitsubishi's
 //!   computer-link manual and the public drivers (HslCommunication `MelsecFxLinksAddress`)
 //!   do — the seed's `X0018` cannot be an octal X number, and real PLCs read `X0020` as X20.
+//!   The seed's literal reading is a setting ([`Settings::decimal_xy`], URL `xy=decimal`).
 //!   CN200–CN255 (32-bit) take 8 hex digits per point in WR/WW/WT.
 //! - Replies: `STX station pc data ETX [sum]` (sum from the station through ETX), `ACK station
 //!   pc` for writes, `NAK station pc code(2 hex)` with the error codes of [`nak_text`].
@@ -58,11 +59,14 @@ pub struct Settings {
     pub sum: bool,
     /// Format 4: CR LF after every message.
     pub format4: bool,
+    /// X and Y numbers written in decimal (`X0018` = X22) instead of their octal digits: the
+    /// seed's literal reading, for a clone that wants it (`xy=decimal`).
+    pub decimal_xy: bool,
 }
 
 impl Default for Settings {
     fn default() -> Settings {
-        Settings { sum: true, format4: false }
+        Settings { sum: true, format4: false, decimal_xy: false }
     }
 }
 
@@ -85,13 +89,24 @@ pub struct Dev {
 impl Dev {
     /// `D0100`, `X0040`, `TN010`.
     pub fn encode(&self) -> String {
+        self.text(Settings::default())
+    }
+
+    /// The device as the link with settings `s` writes it.
+    pub fn text(&self, s: Settings) -> String {
         let code = self.area.spec().link;
-        let digits = if self.area.spec().octal { format!("{:o}", self.index) } else { self.index.to_string() };
+        let octal = self.area.spec().octal && !s.decimal_xy;
+        let digits = if octal { format!("{:o}", self.index) } else { self.index.to_string() };
         format!("{code}{digits:0>width$}", width = 5 - code.len())
     }
 
     /// Parses 5 characters; `None` when the device code or the digits are wrong.
     pub fn decode(s: &[u8]) -> Option<Dev> {
+        Dev::decode_in(s, Settings::default())
+    }
+
+    /// Parses 5 characters as the link with settings `settings` writes them.
+    pub fn decode_in(s: &[u8], settings: Settings) -> Option<Dev> {
         if s.len() != 5 {
             return None;
         }
@@ -103,7 +118,8 @@ impl Dev {
         if !digits.bytes().all(|b| b.is_ascii_digit()) {
             return None;
         }
-        let index = if spec.octal { u16::from_str_radix(digits, 8).ok()? } else { digits.parse().ok()? };
+        let octal = spec.octal && !settings.decimal_xy;
+        let index = if octal { u16::from_str_radix(digits, 8).ok()? } else { digits.parse().ok()? };
         Some(Dev { area: spec.area, index })
     }
 
@@ -159,18 +175,18 @@ pub fn encode_request(h: Header, c: &Cmd, s: Settings) -> Vec<u8> {
     push_hex2(&mut f, h.pc);
     let (name, rest): (&str, Vec<u8>) = match c {
         Cmd::Br { dev, count } | Cmd::Wr { dev, count } => {
-            let mut r = dev.encode().into_bytes();
+            let mut r = dev.text(s).into_bytes();
             push_hex2(&mut r, count_byte(*count));
             (if matches!(c, Cmd::Br { .. }) { "BR" } else { "WR" }, r)
         }
         Cmd::Bw { dev, bits } => {
-            let mut r = dev.encode().into_bytes();
+            let mut r = dev.text(s).into_bytes();
             push_hex2(&mut r, count_byte(bits.len()));
             r.extend(bits.iter().map(|b| if *b { b'1' } else { b'0' }));
             ("BW", r)
         }
         Cmd::Ww { dev, values } => {
-            let mut r = dev.encode().into_bytes();
+            let mut r = dev.text(s).into_bytes();
             push_hex2(&mut r, count_byte(values.len()));
             for v in values {
                 push_value(&mut r, *v, dev.unit());
@@ -181,7 +197,7 @@ pub fn encode_request(h: Header, c: &Cmd, s: Settings) -> Vec<u8> {
             let mut r = Vec::new();
             push_hex2(&mut r, items.len() as u8);
             for (d, v) in items {
-                r.extend(d.encode().into_bytes());
+                r.extend(d.text(s).into_bytes());
                 push_value(&mut r, *v, d.unit());
             }
             ("WT", r)
@@ -331,7 +347,7 @@ pub fn parse_request(buf: &[u8], s: Settings) -> Parsed {
     let mut at = 8;
     let need = |n: usize| buf.len() < n;
     let dev_count = |at: usize| -> Option<(Option<Dev>, usize)> {
-        let d = Dev::decode(&buf[at..at + 5]);
+        let d = Dev::decode_in(&buf[at..at + 5], s);
         let c = hex2(&buf[at + 5..at + 7])? as usize;
         Some((d, if c == 0 { 256 } else { c }))
     };
@@ -382,7 +398,9 @@ pub fn parse_request(buf: &[u8], s: Settings) -> Parsed {
                 if need(at + 5) {
                     return Parsed::Need;
                 }
-                let Some(dev) = Dev::decode(&buf[at..at + 5]) else { return refuse(at + 5, Some(header), code::AREA) };
+                let Some(dev) = Dev::decode_in(&buf[at..at + 5], s) else {
+                    return refuse(at + 5, Some(header), code::AREA);
+                };
                 at += 5;
                 if need(at + dev.unit()) {
                     return Parsed::Need;
@@ -445,6 +463,11 @@ mod tests {
         assert_eq!(Dev::decode(b"CN200"), Some(dev(Area::CN, 200)));
         assert_eq!(Dev::decode(b"Q0000"), None);
         assert_eq!(Dev::decode(b"TC000"), None, "coils are not in the link's table");
+        // The seed's literal reading, as an option: X0018 is X22 (device 18).
+        let dec = Settings { decimal_xy: true, ..Settings::default() };
+        assert_eq!(Dev::decode_in(b"X0018", dec), Some(dev(Area::X, 18)));
+        assert_eq!(dev(Area::X, 18).text(dec), "X0018");
+        assert_eq!(dev(Area::X, 18).encode(), "X0022");
     }
 
     // BR, station 00, PC FF, wait 0, X0040, 5 points. Sum over "00FFBR0X004005":
@@ -509,7 +532,7 @@ mod tests {
         assert_eq!(n, b"\x1500FF02".to_vec());
         assert_eq!(decode_reply(&n, h(), s()), Ok(Reply::Nak(2)));
         assert!(decode_reply(&n, Header { station: 1, ..h() }, s()).is_err(), "another station's reply");
-        let f4 = Settings { format4: true, sum: false };
+        let f4 = Settings { format4: true, sum: false, decimal_xy: false };
         let r4 = encode_reply(h(), &Reply::Data(b"01".to_vec()), f4);
         assert_eq!(r4, b"\x0200FF01\x03\r\n".to_vec());
         assert_eq!(decode_reply(&r4, h(), f4), Ok(Reply::Data(b"01".to_vec())));
