@@ -26,13 +26,13 @@ local items = {}
 for i, v in ipairs(setpoints) do
   items[#items + 1] = { string.format("VW%d/INT", 400 + 2 * (i - 1)), v } -- FX D is signed
 end
-items[#items + 1] = { "VD420", batch }
+items[#items + 1] = { "VD420/DINT", batch } -- the FX pair is a DINT
 items[#items + 1] = { "VW424", options }
 plc:set(table.unpack(items))
 
 -- Verify on the K2 what was read from the FX.
 plcsh.assert_eq({ plc:get("VW400/INT..VW414/INT") }, setpoints, "setpoints copied")
-plcsh.assert_eq(plc.VD420, batch, "batch size copied")
+plcsh.assert_eq(plc["VD420/DINT"], batch, "batch size copied")
 plcsh.assert_eq(plc.VW424, options, "option bits copied")
 if not ok then
   plcsh.assert_eq(setpoints, { 1200, 850, 40, -15, 300, 0, 7, 2500 }, "the rehearsal recipe")

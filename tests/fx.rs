@@ -307,3 +307,22 @@ fn write_guards_from_profiles_cover_forces_and_writes() {
         .collect();
     assert_eq!(v, vec![5, 1, 0, 0], "the refused lines wrote nothing");
 }
+
+#[test]
+fn the_recipe_script_runs_against_a_served_fx_as_at_the_machine() {
+    let srv = Server::start("recipe", &[]);
+    // The "machine's" FX holds a recipe (written over its computer link) …
+    let link = format!("l=fxlink:{}", srv.link.display());
+    let o = run(
+        &["-d", &link, "-c", "use l; set D200=11, D201=-22, D202=33, D203=44, D204=55, D205=66, D206=77, D207=88, D210/DINT=-5, K4M100=16#8001"],
+        "",
+    );
+    assert!(o.status.success(), "{}", stdout(&o));
+    // … and the same script that rehearsed on the simulator copies it over the programming port.
+    let script = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scripts/fx_recipe_to_k2.lua");
+    let fx = format!("fx=fx:{}", srv.port.display());
+    let o = run(&["--time", "stepped", "-d", &fx, "run", script.to_str().unwrap()], "");
+    let out = stdout(&o);
+    assert!(o.status.success(), "{out}{}", String::from_utf8_lossy(&o.stderr));
+    assert!(out.contains("recipe copied: 8 setpoints, batch -5, options 16#8001"), "{out}");
+}
