@@ -217,6 +217,29 @@ pub const AREAS: [AreaSpec; 11] = [
     },
 ];
 
+/// Special devices with their meaning (FX programming manual, special device lists; the ones
+/// every FX and clone has). `help`, hints and completion read this table.
+pub const SPECIALS: &[(Area, u16, &str)] = &[
+    (Area::M, 8000, "RUN monitor (on while the PLC runs)"),
+    (Area::M, 8001, "RUN monitor, inverted (off while the PLC runs)"),
+    (Area::M, 8002, "initial pulse (on for the first scan after RUN)"),
+    (Area::M, 8011, "10 ms clock pulse"),
+    (Area::M, 8012, "100 ms clock pulse"),
+    (Area::M, 8013, "1 s clock pulse"),
+    (Area::M, 8014, "1 min clock pulse"),
+    (Area::D, 8000, "watchdog time, ms"),
+    (Area::D, 8010, "current scan time, 0.1 ms"),
+    (Area::D, 8011, "shortest scan time, 0.1 ms"),
+    (Area::D, 8012, "longest scan time, 0.1 ms"),
+    (Area::D, 8120, "communication format (computer link: baud, parity, sum check …)"),
+    (Area::D, 8121, "computer-link station number"),
+];
+
+/// The meaning of a special device, if the table has it.
+pub fn special_meaning(area: Area, index: u16) -> Option<&'static str> {
+    SPECIALS.iter().find(|(a, i, _)| *a == area && *i == index).map(|(_, _, m)| *m)
+}
+
 /// First 32-bit counter: CN200–CN255 hold 32-bit values (4 bytes each on the programming port).
 pub const CN32_FIRST: u16 = 200;
 /// Byte address of CN200 on the programming port.

@@ -166,6 +166,10 @@ impl OperandSpace for FxSpace {
             Width::Pair if o.area == Area::D => {
                 format!("32-bit value in D{} (low) and D{} (high)", o.index, o.index + 1)
             }
+            Width::Bit | Width::Word if o.index >= SPECIAL => match operand::special_meaning(o.area, o.index) {
+                Some(m) => m.to_string(),
+                None => format!("special {}", spec.meaning),
+            },
             _ if o.index >= SPECIAL => format!("special {}", spec.meaning),
             _ => spec.meaning.to_string(),
         };
@@ -235,11 +239,10 @@ impl OperandSpace for FxSpace {
                 }
             }
         }
-        for (t, m) in
-            [("M8000", "RUN monitor (on while running)"), ("M8002", "initial pulse"), ("D8000", "watchdog time, ms")]
-        {
+        for (area, index, m) in operand::SPECIALS {
+            let t = format!("{}{index}", area.name());
             if t.starts_with(&p) && p.len() >= 2 {
-                out.push(Candidate { text: t.into(), meaning: m.into() });
+                out.push(Candidate { text: t, meaning: m.to_string() });
             }
         }
         out
@@ -294,5 +297,10 @@ mod tests {
         assert!(space("FX2N", Proto::Link).help("D100").unwrap().contains("device D0100"));
         assert!(s.complete("k4").iter().any(|c| c.text == "K4M0"));
         assert!(s.complete("T").iter().any(|c| c.text == "TN"));
+        assert!(s.complete("M80").iter().any(|c| c.text == "M8002" && c.meaning.contains("initial pulse")));
+        let d = s.parse("D8000").unwrap()[0];
+        assert_eq!(s.describe(&d).unwrap(), "watchdog time, ms");
+        let m = s.parse("M8100").unwrap()[0];
+        assert_eq!(s.describe(&m).unwrap(), "special auxiliary relay");
     }
 }
