@@ -95,7 +95,7 @@ fn every_command_over_both_ports() {
             "-c",
             "use fx; set D100=1234, M500=1, K4Y0=16#A5, D10/DINT=-100000; get D100 M500 K4Y0 Y2 D10/DINT; \
              read D100[2]; watch D100 every=10ms count=2; trace D100 every=20ms for=60ms; \
-             use l; get D100 M500 K4Y0 D10/DINT; set D600=7, Y17=1; get D600; \
+             use l; get D100 M500 K4Y0 D10/DINT; set D600=7, Y17=1; get D600; read D600[2]; \
              use fx; get Y17; get D600",
         ],
         "",
@@ -112,6 +112,7 @@ fn every_command_over_both_ports() {
     };
     assert_eq!(vals(&find("get", 0)), vec![1234, 1, 0xA5, 1, -100000], "{lines:?}");
     assert_eq!(find("read", 0)["values"].as_array().unwrap().len(), 2);
+    assert_eq!(find("read", 1)["values"][0]["value"], 7, "read over the computer link");
     assert!(lines.iter().any(|l| l["cmd"] == "watch"), "{lines:?}");
     assert!(lines.iter().any(|l| l["cmd"] == "trace"), "{lines:?}");
     // The computer link sees the programming port's writes: one PLC memory.
