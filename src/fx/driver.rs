@@ -317,12 +317,25 @@ impl Driver {
         // Spans: [start, end) within one region, at most 64 bytes.
         let mut spans: Vec<(u16, u16)> = Vec::new();
         let mut span_of = vec![0usize; ops.len()];
+        // A gap is read along only where the model has devices (an FX1S lacks C32–C234).
+        let space = self.space;
+        let byte_has_device = |addr: u16| {
+            port::region_of(&regions, addr).is_some_and(|r| {
+                let off = addr - r.start;
+                if r.unit == 0 {
+                    (0..8).any(|b| space.exists(r.area, r.first + 8 * off + b))
+                } else {
+                    space.exists(r.area, r.first + off / r.unit)
+                }
+            })
+        };
         for &i in &order {
             let p = places[i];
             let region = port::region_of(&regions, p.addr).map(|r| r.start);
-            let merged = spans.last_mut().filter(|(s, _)| {
+            let merged = spans.last_mut().filter(|(s, e)| {
                 port::region_of(&regions, *s).map(|r| r.start) == region
                     && (p.addr + p.len - *s) as usize <= port::MAX_BYTES
+                    && (*e..p.addr).all(byte_has_device)
             });
             match merged {
                 Some((_, e)) => *e = (*e).max(p.addr + p.len),
@@ -422,7 +435,9 @@ impl Driver {
                 Class::Long => fxlink::MAX_WORDS / 2,
             } as u32;
             let end = o.index + o.span();
-            match spans.last_mut().filter(|(k, s, _)| *k == c && (end - *s) as u32 <= max) {
+            let space = self.space;
+            let gap_ok = |from: u16| (from..o.index).all(|i| space.exists(o.area, i));
+            match spans.last_mut().filter(|(k, s, e)| *k == c && (end - *s) as u32 <= max && gap_ok(*e)) {
                 Some((_, _, e)) => *e = (*e).max(end),
                 None => spans.push((c, o.index, end)),
             }
@@ -901,6 +916,19 @@ mod tests {
         let before = d.requests();
         d.read(&o).unwrap();
         assert_eq!(d.requests() - before, 1, "64 bytes in one frame, out of order");
+    }
+
+    #[test]
+    fn an_fx1s_counter_gap_is_not_read_across() {
+        let mut d = sim("sim-fx:FX1S");
+        let o = ops(d.as_ref(), &["CS0", "CS31", "CS235", "CS255"]);
+        let before = d.requests();
+        assert_eq!(d.read(&o).unwrap().len(), 4, "C32–C234 do not exist: no NAK");
+        assert_eq!(d.requests() - before, 2);
+        let mut l = sim("sim-fx:FX1S?protocol=link");
+        let o = ops(l.as_ref(), &["CS0", "CS31", "CS235", "CS255"]);
+        assert_eq!(l.read(&o).unwrap().len(), 4);
+        assert_eq!(l.requests(), 2);
     }
 
     #[test]

@@ -74,7 +74,7 @@ impl FxSpace {
         s
     }
 
-    fn exists(&self, area: Area, index: u16) -> bool {
+    pub fn exists(&self, area: Area, index: u16) -> bool {
         if area.has_special() && (SPECIAL..SPECIAL + SPECIAL_COUNT).contains(&index) {
             return true;
         }
