@@ -322,10 +322,9 @@ impl Driver {
         let byte_has_device = |addr: u16| {
             port::region_of(&regions, addr).is_some_and(|r| {
                 let off = addr - r.start;
-                if r.unit == 0 {
-                    (0..8).any(|b| space.exists(r.area, r.first + 8 * off + b))
-                } else {
-                    space.exists(r.area, r.first + off / r.unit)
+                match off.checked_div(r.unit) {
+                    Some(k) => space.exists(r.area, r.first + k),
+                    None => (0..8).any(|b| space.exists(r.area, r.first + 8 * off + b)),
                 }
             })
         };
