@@ -1066,4 +1066,35 @@ mod tests {
         assert!(e.message.contains("NAK 06H") && e.message.contains("device number"), "{e}");
         assert_eq!(d.requests(), 1, "an area error is not retried");
     }
+
+    #[test]
+    fn silence_is_reported_with_what_to_check() {
+        // A link request for station 3 on a line where only station 0 answers.
+        let model = Model::find("FX2N").unwrap();
+        let plc = sim_plc(model, None).unwrap();
+        let s = Settings::default();
+        let line = lines::private("one-station", Box::new(SimLink::new(plc, Box::new(LinkServer::new(0, s)))));
+        let info = DeviceInfo { family: "fx", model: "test".into(), link: "x".into(), simulated: true };
+        let mut d = Driver::link(line, model, Header { station: 3, pc: 0xFF, wait: 0 }, s, info.clone());
+        let e = d.read(&ops(&d, &["D0"])).unwrap_err();
+        assert_eq!(e.kind, ErrorKind::Link);
+        assert!(e.message.contains("no reply to WR"), "{e}");
+        assert!(e.hint.as_deref().unwrap().contains("station 3"), "{e:?}");
+        assert_eq!(d.requests(), 1, "silence is not retried");
+        // A programming port that never answers ENQ.
+        struct Dead;
+        impl Transport for Dead {
+            fn send(&mut self, _: &[u8]) -> io::Result<()> {
+                Ok(())
+            }
+            fn recv(&mut self, _: &mut [u8], _: Duration) -> io::Result<usize> {
+                Ok(0)
+            }
+        }
+        let mut p = Driver::port(lines::private("dead", Box::new(Dead)), model, info);
+        let e = p.read(&ops(&p, &["D0"])).unwrap_err();
+        assert!(e.message.contains("no ACK to ENQ"), "{e}");
+        assert!(e.hint.as_deref().unwrap().contains("7E1"), "{e:?}");
+        assert_eq!(p.requests(), 0, "no frame goes out before the handshake");
+    }
 }
