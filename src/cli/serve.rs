@@ -17,6 +17,9 @@
 //! [--servo-strict]`, the logic is `servo::sim::serve`); their fields (`servo_pty`, `link`,
 //! `ids`, `echo`, `servo_control`, timing) join the readiness line.
 //!
+//! A simulated FX PLC's programming port and computer link go on ptys of their own (`--fx-pty
+//! LINK --fx-link-pty LINK2`, one shared memory; the logic is `fx::sim`).
+//!
 //! Shape: each served family adds its endpoints in its own function ([`serve_k2`],
 //! [`serve_servo`]) — it binds, spawns its tasks and adds its fields to the readiness line.
 
@@ -80,6 +83,18 @@ pub struct ServeArgs {
     /// Refuse writes whose size code differs from the object's (abort 0x06070010).
     #[arg(long = "servo-strict")]
     pub servo_strict: bool,
+    /// Serve a simulated FX PLC's programming port on a new pseudo-terminal (symlink at LINK).
+    #[arg(long = "fx-pty", value_name = "LINK")]
+    pub fx_pty: Option<PathBuf>,
+    /// Serve the same FX PLC's computer link (format 1, sum check on) on another pseudo-terminal.
+    #[arg(long = "fx-link-pty", value_name = "LINK")]
+    pub fx_link_pty: Option<PathBuf>,
+    /// The simulated FX PLC's model (FX1S, FX1N, FX2N).
+    #[arg(long = "fx-model", value_name = "MODEL", default_value = "FX2N")]
+    pub fx_model: String,
+    /// The computer link's station number (0–31).
+    #[arg(long = "fx-station", value_name = "N", default_value_t = 0)]
+    pub fx_station: u8,
 }
 
 impl ServeArgs {
@@ -245,7 +260,7 @@ fn until_stopped() -> std::io::Result<impl std::future::Future<Output = ()>> {
 }
 
 async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
-    if !args.serves_k2() && args.servo_pty.is_none() {
+    if !args.serves_k2() && args.servo_pty.is_none() && args.fx_pty.is_none() && args.fx_link_pty.is_none() {
         return Err(Error::usage("sim serve needs at least one transport")
             .hint("e.g. plcsh sim serve --tcp 127.0.0.1:5020 --rtu-pty /tmp/k2 --rtu-tcp 0 --servo-pty /tmp/kinco"));
     }
@@ -269,6 +284,11 @@ async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
     let servo_stop = Arc::new(AtomicBool::new(false));
     let _stop_servo = StopOnDrop(servo_stop.clone());
     serve_servo(args, &servo_stop, &mut ready, &mut cleanup).await?;
+    let fx = (args.fx_pty.clone(), args.fx_link_pty.clone());
+    ready.extend(
+        crate::fx::sim::serve_ptys(fx.0.clone(), fx.1.clone(), &args.fx_model, args.fx_station, &servo_stop).await?,
+    );
+    cleanup.links.extend(fx.0.into_iter().chain(fx.1));
     serde_json::to_writer(&mut *out, &ready).map_err(|e| Error::io("cannot print the readiness line").cause(e))?;
     writeln!(out)?;
     out.flush()?;
