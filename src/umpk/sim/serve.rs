@@ -1,0 +1,120 @@
+//! Serving a simulated UMPK on a pseudo-terminal (`plcsh sim serve --umpk-pty LINK
+//! --umpk-model UMPK16`), so a terminal program (picocom, screen, socat), a lab's own
+//! software or plcsh's `umpk:` driver talks to it exactly as to the real controller's RS-232
+//! port (57600 8N1; a pty has no baud rate, the simulator paces its output at 57600 baud
+//! in virtual time itself).
+//!
+//! The loop wakes when bytes arrive or when the next queued byte or cycle is due, so the
+//! monitor stream leaves once per 10 ms cycle. A line nobody reads loses bytes, as a real
+//! one does: when the pty's buffer is full, what the client has not read is flushed.
+
+use super::Umpk;
+use crate::core::link::pty::Pty;
+use crate::core::{Clock, Error, Result};
+use crate::umpk::model::Model;
+use nix::poll::{poll, PollFd, PollFlags, PollTimeout};
+use std::fs::File;
+use std::io::{self, Read, Write};
+use std::os::fd::AsFd;
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Arc, Mutex};
+use std::time::Duration;
+
+/// Longest sleep of the loop (the stop flag is checked at least this often).
+const MAX_WAIT: Duration = Duration::from_millis(10);
+
+/// What `serve_pty` announces once clients may connect.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct Ready {
+    /// The pty slave device (`/dev/pts/N`).
+    pub umpk_pty: PathBuf,
+    /// The symlink pointing at it.
+    pub umpk_link: Option<PathBuf>,
+    pub umpk_model: &'static str,
+}
+
+fn lock(sim: &Mutex<Umpk>) -> std::sync::MutexGuard<'_, Umpk> {
+    sim.lock().unwrap_or_else(|p| p.into_inner())
+}
+
+/// Serves `sim` on the pty `master` until `stop` is raised; `slave` is the server's own
+/// handle on the other side (flushed when nobody reads).
+pub fn serve_fd(master: &mut File, slave: &File, sim: &Arc<Mutex<Umpk>>, stop: &AtomicBool) -> Result<()> {
+    nix::fcntl::fcntl(master.as_fd(), nix::fcntl::FcntlArg::F_SETFL(nix::fcntl::OFlag::O_NONBLOCK))
+        .map_err(|e| Error::io("cannot make the pty non-blocking").cause(e))?;
+    let mut buf = [0u8; 512];
+    while !stop.load(Ordering::Relaxed) {
+        let wait = {
+            let s = lock(sim);
+            s.next_event().saturating_sub(s.clock.now()).clamp(Duration::from_micros(200), MAX_WAIT)
+        };
+        let ms = PollTimeout::try_from(wait.as_millis().max(1) as i32).unwrap_or(PollTimeout::MAX);
+        let mut fds = [PollFd::new(master.as_fd(), PollFlags::POLLIN)];
+        let n = match poll(&mut fds, ms) {
+            Ok(0) | Err(nix::errno::Errno::EINTR) => 0,
+            Ok(_) => match master.read(&mut buf) {
+                Ok(n) => n,
+                Err(e) if e.kind() == io::ErrorKind::WouldBlock => 0,
+                // EIO: no client has the slave open right now (we hold it, so rarely).
+                Err(e) if e.raw_os_error() == Some(nix::libc::EIO) => 0,
+                Err(e) => return Err(Error::io("reading the pty failed").cause(e)),
+            },
+            Err(e) => return Err(Error::io("poll on the pty failed").cause(e)),
+        };
+        let out = {
+            let mut s = lock(sim);
+            if n > 0 {
+                s.receive(&buf[..n]);
+            }
+            s.take_due()
+        };
+        write_or_drop(master, slave, &out)?;
+    }
+    Ok(())
+}
+
+fn write_or_drop(master: &mut File, slave: &File, mut out: &[u8]) -> Result<()> {
+    while !out.is_empty() {
+        match master.write(out) {
+            Ok(n) => out = &out[n..],
+            Err(e) if e.kind() == io::ErrorKind::WouldBlock => {
+                // Nobody reads: drop what waits on the client's side, as a line would.
+                let _ = nix::sys::termios::tcflush(slave.as_fd(), nix::sys::termios::FlushArg::TCIFLUSH);
+                if master.write(out).is_err() {
+                    return Ok(());
+                }
+            }
+            Err(e) if e.kind() == io::ErrorKind::Interrupted => {}
+            Err(e) => return Err(Error::io("writing the pty failed").cause(e)),
+        }
+    }
+    Ok(())
+}
+
+/// Opens a pty, points `link` at it, calls `ready`, then serves a simulated `model` on it
+/// until `stop` is raised. The symlink is removed on the way out. `setup` adjusts the
+/// simulator first (status layout, injected faults).
+pub fn serve_pty(
+    link: Option<&Path>,
+    model: &'static Model,
+    clock: Clock,
+    setup: impl FnOnce(&mut Umpk),
+    stop: &AtomicBool,
+    ready: impl FnOnce(&Ready),
+) -> Result<()> {
+    let pty = Pty::open()?;
+    if let Some(l) = link {
+        pty.link(l)?;
+    }
+    let Pty { mut master, slave, path } = pty;
+    let mut u = Umpk::new(model, clock);
+    setup(&mut u);
+    let sim = Arc::new(Mutex::new(u));
+    ready(&Ready { umpk_pty: path, umpk_link: link.map(Path::to_path_buf), umpk_model: model.name });
+    let r = serve_fd(&mut master, &slave, &sim, stop);
+    if let Some(l) = link {
+        let _ = std::fs::remove_file(l);
+    }
+    r
+}
