@@ -506,7 +506,7 @@ pub fn parse_exchange(buf: &[u8], sent: &[u8], shape: Shape, crlf: Option<bool>)
                 }
                 if buf.len() == i + 3 && shape == Shape::Ack && crlf != Some(false) {
                     // Either a reset's R or our echo-less reply with CR LF (after `?01FF`).
-                    if sent.first() != Some(&b'?') || sent[..] == Command::EchoOn.encode() {
+                    if sent[..] == Command::EchoOn.encode() || sent[..] == Command::Reset.encode() {
                         return done(Reply::Ok, false, true, reset_seen, monitor, i + 3);
                     }
                     return Progress::NeedMore;

@@ -4,6 +4,7 @@
 //! Manual: `../shared/seeds/003_…` (Russian); digest `../shared/spec/umpk.md`.
 
 pub mod codec;
+pub mod driver;
 pub mod hex;
 pub mod model;
 pub mod sim;

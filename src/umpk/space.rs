@@ -10,7 +10,7 @@ use super::model::Model;
 use crate::core::{Candidate, DataType, Error, ErrorKind, Operand, OperandSpace, Result};
 
 /// One operand area.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug)]
 pub struct Area {
     pub letter: char,
     pub meaning: &'static str,

@@ -220,6 +220,14 @@ impl Umpk {
         self.program_cycles = 0;
     }
 
+    /// Sets input `i` by hand (until changed); the image shows it at once, the program
+    /// sees it from the next cycle.
+    pub fn set_input(&mut self, i: u8, on: bool) {
+        self.waves.retain(|w| w.input != i);
+        self.forced_inputs = self.forced_inputs & !(1 << i) | (on as u32) << i;
+        self.image.inputs = self.image.inputs & !(1 << i) | (on as u32) << i;
+    }
+
     /// Adds `code` to the error history (newest first).
     pub fn push_error(&mut self, code: u8) {
         self.errors.copy_within(0..7, 1);

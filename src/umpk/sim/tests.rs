@@ -113,7 +113,7 @@ fn every_programming_error_letter() {
     talk(&mut u, b"?02FE");
     talk(&mut u, b"?09F7");
     let start = s(&Record::start().encode());
-    let mut fresh = |u: &mut Umpk| assert_eq!(s(&talk(u, start.as_bytes())), "R");
+    let fresh = |u: &mut Umpk| assert_eq!(s(&talk(u, start.as_bytes())), "R");
     fresh(&mut u);
     assert_eq!(s(&talk(&mut u, b":00000001FE")), "E", "checksum");
     assert_eq!(s(&talk(&mut u, &Record::data(0, &[0]).encode())), "X", "aborted: restart from the beginning");
