@@ -16,6 +16,9 @@
 //! --servo-id 1[,2,…] [--servo-loop]`, the logic is `servo::sim::serve`); their fields
 //! (`servo_pty`, `link`, `ids`, `echo`) join the readiness line.
 //!
+//! A simulated UMPK teaching PLC is served on a pseudo-terminal too (`--umpk-pty LINK
+//! --umpk-model UMPK16`; the logic is `umpk::sim::serve`); it shares the servo line's stop flag.
+//!
 //! Shape: each served family adds its endpoints in its own function ([`serve_k2`],
 //! [`serve_servo`]) — it binds, spawns its tasks and adds its fields to the readiness line.
 
@@ -67,6 +70,18 @@ pub struct ServeArgs {
     /// RS232 loop mode: echo every request before the reply (connect with echo=1).
     #[arg(long = "servo-loop")]
     pub servo_loop: bool,
+    /// Serve a simulated UMPK teaching PLC on a new pseudo-terminal; LINK becomes a symlink to it.
+    #[arg(long = "umpk-pty", value_name = "LINK")]
+    pub umpk_pty: Option<PathBuf>,
+    /// The simulated UMPK's model (UMPK8 or UMPK16).
+    #[arg(long = "umpk-model", value_name = "MODEL", default_value = "UMPK16")]
+    pub umpk_model: String,
+    /// Bit numbers of W,H,R,E,P,T in the UMPK's status word.
+    #[arg(long = "umpk-status-bits", value_name = "W,H,R,E,P,T", default_value = "5,4,3,2,1,0")]
+    pub umpk_status_bits: String,
+    /// Make the simulated UMPK's flash write fail on this 64-byte page (programming gets `W`).
+    #[arg(long = "umpk-flash-fail", value_name = "PAGE")]
+    pub umpk_flash_fail: Option<usize>,
 }
 
 impl ServeArgs {
@@ -205,7 +220,7 @@ fn until_stopped() -> std::io::Result<impl std::future::Future<Output = ()>> {
 }
 
 async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
-    if !args.serves_k2() && args.servo_pty.is_none() {
+    if !args.serves_k2() && args.servo_pty.is_none() && args.umpk_pty.is_none() {
         return Err(Error::usage("sim serve needs at least one transport")
             .hint("e.g. plcsh sim serve --tcp 127.0.0.1:5020 --rtu-pty /tmp/k2 --rtu-tcp 0 --servo-pty /tmp/kinco"));
     }
@@ -229,6 +244,15 @@ async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
     let servo_stop = Arc::new(AtomicBool::new(false));
     let _stop_servo = StopOnDrop(servo_stop.clone());
     serve_servo(args, &servo_stop, &mut ready).await?;
+    if let Some(link) = &args.umpk_pty {
+        let u = crate::umpk::sim::serve::Options {
+            link: link.clone(),
+            model: args.umpk_model.clone(),
+            status_bits: args.umpk_status_bits.clone(),
+            flash_fail: args.umpk_flash_fail,
+        };
+        ready.extend(crate::umpk::sim::serve::spawn(u, servo_stop.clone()).await?);
+    }
     serde_json::to_writer(&mut *out, &ready).map_err(|e| Error::io("cannot print the readiness line").cause(e))?;
     writeln!(out)?;
     out.flush()?;

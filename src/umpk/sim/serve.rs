@@ -118,3 +118,45 @@ pub fn serve_pty(
     }
     r
 }
+
+/// What `plcsh sim serve --umpk-pty …` asks for.
+#[derive(Clone, Debug)]
+pub struct Options {
+    pub link: PathBuf,
+    pub model: String,
+    pub status_bits: String,
+    pub flash_fail: Option<usize>,
+}
+
+/// Serves a simulated UMPK from a thread of its own (the pty loop is blocking); returns
+/// once the pty is open, with its fields for the readiness line. `stop` ends it.
+pub async fn spawn(o: Options, stop: Arc<AtomicBool>) -> Result<serde_json::Map<String, serde_json::Value>> {
+    let model = crate::umpk::model::find(&o.model).ok_or_else(|| {
+        Error::usage(format!("--umpk-model {}: not a UMPK model", o.model))
+            .hint(format!("models: {}", crate::umpk::model::names()))
+    })?;
+    let layout = crate::umpk::codec::StatusLayout::parse(&o.status_bits)
+        .map_err(|m| Error::usage(format!("--umpk-status-bits: {m}")))?;
+    let (tx, rx) = tokio::sync::oneshot::channel::<Result<serde_json::Value>>();
+    std::thread::spawn(move || {
+        let mut tx = Some(tx);
+        let setup = |u: &mut Umpk| {
+            u.layout = layout;
+            u.flash_fail = o.flash_fail;
+        };
+        let r = serve_pty(Some(&o.link), model, Clock::following(), setup, &stop, |r| {
+            if let Some(tx) = tx.take() {
+                let _ = tx.send(Ok(serde_json::json!(r)));
+            }
+        });
+        if let (Err(e), Some(tx)) = (r, tx.take()) {
+            let _ = tx.send(Err(e));
+        }
+    });
+    match rx.await {
+        Ok(Ok(serde_json::Value::Object(m))) => Ok(m),
+        Ok(Ok(_)) => Ok(Default::default()),
+        Ok(Err(e)) => Err(e),
+        Err(_) => Err(Error::io("the UMPK line stopped before it was ready")),
+    }
+}
