@@ -1,0 +1,329 @@
+//! UMPK teaching PLCs end to end: the simulator served by the real binary on a REAL
+//! pseudo-terminal (`plcsh sim serve --umpk-pty`, readiness line awaited, never a sleep
+//! before talking), reached by a raw byte client that types what a terminal program would,
+//! by plcsh's `umpk:` driver, by the shell, and by socat as a person's terminal.
+
+mod common;
+use common::*;
+use plcsh::core::{Clock, Device, ErrorKind};
+use plcsh::session::open_url;
+use plcsh::umpk::codec::{Monitor, Reply, MONITOR_LEN};
+use plcsh::umpk::driver::Driver;
+use plcsh::umpk::hex::Record;
+use std::fs::File;
+use std::io::{Read, Write};
+use std::os::fd::AsFd;
+use std::path::PathBuf;
+use std::time::{Duration, Instant};
+
+/// A served UMPK on a pty symlinked in a private directory.
+struct Server {
+    _served: Served,
+    link: PathBuf,
+    dir: PathBuf,
+}
+
+impl Server {
+    fn start(tag: &str, extra: &[&str]) -> Server {
+        let dir = std::env::temp_dir().join(format!("plcsh-umpk-{}-{tag}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let link = dir.join("ttyUMPK");
+        let mut args = vec!["--umpk-pty", link.to_str().unwrap()];
+        args.extend_from_slice(extra);
+        let served = serve(&args);
+        assert!(served.ready["umpk_pty"].as_str().unwrap().starts_with("/dev/pts/"), "{}", served.ready);
+        Server { _served: served, link, dir }
+    }
+}
+
+/// A raw serial client: what a terminal program or a lab's own software does.
+struct Raw(File);
+
+impl Raw {
+    fn open(link: &PathBuf) -> Raw {
+        Raw(std::fs::OpenOptions::new().read(true).write(true).open(link).unwrap())
+    }
+
+    fn send(&mut self, b: &[u8]) {
+        self.0.write_all(b).unwrap();
+    }
+
+    /// Reads until `done(bytes)` or `limit` passes.
+    fn read_until(&mut self, limit: Duration, done: impl Fn(&[u8]) -> bool) -> Vec<u8> {
+        use nix::poll::{poll, PollFd, PollFlags, PollTimeout};
+        let end = Instant::now() + limit;
+        let mut got = Vec::new();
+        let mut buf = [0u8; 4096];
+        while !done(&got) {
+            let left = end.saturating_duration_since(Instant::now());
+            if left.is_zero() {
+                break;
+            }
+            let mut fds = [PollFd::new(self.0.as_fd(), PollFlags::POLLIN)];
+            let ms = PollTimeout::try_from(left.as_millis().min(1000) as i32).unwrap();
+            if poll(&mut fds, ms).unwrap_or(0) > 0 {
+                let n = self.0.read(&mut buf).unwrap();
+                got.extend_from_slice(&buf[..n]);
+            }
+        }
+        got
+    }
+
+    /// Sends a command and reads up to the reply's end (CR LF with echo, else `ends`).
+    fn ask(&mut self, cmd: &str, ends: usize) -> String {
+        self.send(cmd.as_bytes());
+        let got = self.read_until(Duration::from_secs(5), |g| g.ends_with(b"\r\n") || g.len() >= ends);
+        String::from_utf8_lossy(&got).into_owned()
+    }
+
+    /// Waits for `ms` of silence and returns what came meanwhile.
+    fn quiet(&mut self, ms: u64) -> Vec<u8> {
+        let mut all = Vec::new();
+        loop {
+            let got = self.read_until(Duration::from_millis(ms), |g| !g.is_empty());
+            if got.is_empty() {
+                return all;
+            }
+            all.extend(got);
+        }
+    }
+}
+
+fn open(url: &str) -> Box<dyn Device> {
+    open_url(url, &Clock::following()).unwrap_or_else(|e| panic!("{url}: {e}"))
+}
+
+fn drv(d: &mut Box<dyn Device>) -> &mut Driver {
+    d.family_ops().unwrap().downcast_mut::<Driver>().unwrap()
+}
+
+#[test]
+fn echo_on_and_off_and_every_command_in_each_mode() {
+    let srv = Server::start("modes", &["--umpk-model", "UMPK8"]);
+    let mut t = Raw::open(&srv.link);
+    // Echo on: every byte back, the reply, CR LF. UMPK8 in Wait: status 00.
+    assert_eq!(t.ask("?03FD", 99), "?03FD#06082908040001BC\r\n");
+    // Wait mode (Table 6, «Раб»/«Ожид» column): every command answers.
+    assert_eq!(t.ask("?04FC", 99), format!("?04FC#{}\r\n", " ".repeat(22)));
+    assert_eq!(t.ask("?05FB", 99), "?05FB#0400000000FC\r\n");
+    assert_eq!(t.ask("?06FA", 99), "?06FA#0400000000FC\r\n");
+    assert_eq!(t.ask("?07F9", 99), "?07F9#080000000000000000F8\r\n");
+    assert_eq!(t.ask("?08F8", 99), "?08F8R\r\n");
+    assert_eq!(t.ask("?0CF4", 99), "?0CF4#0403E803E826\r\n");
+    assert_eq!(t.ask("?0AF6", 99), "?0AF6R\r\n");
+    t.send(b"?0BF5");
+    let got = t.read_until(Duration::from_secs(5), |g| g.ends_with(b"?0BF5R\r\n"));
+    assert!(got.ends_with(b"?0BF5R\r\n"), "{got:?}");
+    assert_eq!(t.ask("?0DF3", 99), "?0DF3U\r\n");
+    assert_eq!(t.ask("?03FC", 99), "?03FCE\r\n");
+    assert_eq!(t.ask("?0X00", 99), "?0X00C\r\n");
+    // Echo off: neither echo nor CR LF; the E bit shows in the status word.
+    assert_eq!(t.ask("?02FE", 6), "?02FER");
+    assert_eq!(t.ask("?03FD", 17), "#06082908040401B8");
+    assert_eq!(t.ask("?05FB", 13), "#0400000000FC");
+    // Programming mode: reset, echo and info answer; the rest gets U.
+    assert_eq!(t.ask("?09F7", 1), "R");
+    for c in ["?04FC", "?05FB", "?06FA", "?07F9", "?08F8", "?09F7", "?0AF6", "?0BF5", "?0CF4"] {
+        assert_eq!(t.ask(c, 1), "U", "{c} in Programming mode");
+    }
+    assert_eq!(t.ask("?03FD", 17), "#06082908040601B6", "P and E bits");
+    // Reset: silent while restarting, then R CR LF with echo on, back to Wait.
+    t.send(b"?0000");
+    let got = t.read_until(Duration::from_secs(5), |g| g.ends_with(b"R\r\n"));
+    assert_eq!(got, b"R\r\n");
+    assert_eq!(t.ask("?03FD", 99), "?03FD#06082908040001BC\r\n");
+    let _ = std::fs::remove_dir_all(&srv.dir);
+}
+
+#[test]
+fn monitor_stream_rate_and_any_command_stops_it() {
+    let srv = Server::start("monitor", &[]);
+    let mut t = Raw::open(&srv.link);
+    assert_eq!(t.ask("?02FE", 6), "?02FER");
+    assert_eq!(t.ask("?0AF6", 1), "R");
+    // One second of wall time (the served simulator follows it): 100 packets, one per cycle.
+    let start = Instant::now();
+    let got = t.read_until(Duration::from_millis(1000), |_| false);
+    let secs = start.elapsed().as_secs_f64();
+    let packets = got.len() / MONITOR_LEN;
+    let rate = packets as f64 / secs;
+    assert!((85.0..=110.0).contains(&rate), "{packets} packets in {secs:.3} s");
+    let mut decoded = 0;
+    for p in got.chunks_exact(MONITOR_LEN) {
+        let m = Monitor::decode(p).unwrap_or_else(|| panic!("bad packet {p:02X?}"));
+        assert_ne!(m.status & (1 << 3), 0, "R (monitor on) bit");
+        decoded += 1;
+    }
+    assert_eq!(decoded, packets);
+    // Any command stops it: after `?03FD` only whole packets already sent, then the reply.
+    t.send(b"?03FD");
+    let tail = t.quiet(100);
+    let pos = tail.iter().position(|&b| b == b'#').expect("a reply");
+    assert_eq!(pos % MONITOR_LEN, 0, "whole packets before the reply");
+    assert_eq!(&tail[pos..], b"#06102910080401A4", "monitor off again, echo off");
+    assert!(t.quiet(100).is_empty(), "nothing more: the stream stopped");
+    let _ = std::fs::remove_dir_all(&srv.dir);
+}
+
+#[test]
+fn a_command_before_the_reply_is_complete_is_error_255() {
+    let srv = Server::start("overflow", &[]);
+    let mut t = Raw::open(&srv.link);
+    t.quiet(50);
+    // Two commands in one write: the second arrives while the first reply is being sent.
+    t.send(b"?03FD?07F9");
+    let got = t.quiet(100);
+    assert_eq!(String::from_utf8_lossy(&got), "?03FD#06102910080001A8\r\n?07F9", "the second reply was lost");
+    assert_eq!(t.ask("?07F9", 99), "?07F9#08FF00000000000000F9\r\n");
+    // plcsh's driver reads the history and explains 255; it never causes one itself.
+    drop(t);
+    let mut d = open(&format!("umpk:{}", srv.link.display()));
+    let u = drv(&mut d);
+    for _ in 0..20 {
+        u.controller_info().unwrap();
+    }
+    let e = u.errors().unwrap();
+    assert_eq!(e[0], 255, "{e:?}");
+    assert_eq!(e[1], 0, "no new overflow from twenty back-to-back driver commands");
+    assert!(plcsh::umpk::codec::error_code_text(e[0]).contains("before the previous reply was complete"));
+    u.clear_errors().unwrap();
+    assert_eq!(u.errors().unwrap(), [0; 8]);
+    let _ = std::fs::remove_dir_all(&srv.dir);
+}
+
+fn hex_file(dir: &std::path::Path, name: &str, records: &[Record]) -> PathBuf {
+    let mut text = String::new();
+    for r in records {
+        text.push_str(&String::from_utf8(r.encode()).unwrap());
+        text.push_str("\r\n");
+    }
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+#[test]
+fn hex_programming_end_to_end_through_the_shell_and_each_error_letter() {
+    let srv = Server::start("program", &["--umpk-flash-fail", "40"]);
+    // A 200-byte program in 16-byte lines, with program info in the file.
+    let mut recs = vec![Record::info(b"file info")];
+    for a in (0..200u16).step_by(16) {
+        let n = (200 - a).min(16) as usize;
+        recs.push(Record::data(a, &vec![a as u8; n]));
+    }
+    recs.push(Record::end());
+    let file = hex_file(&srv.dir, "lab.hex", &recs);
+    let url = format!("lab=umpk:{}", srv.link.display());
+    let script = format!(
+        "use lab\numpk program {} info=\"LAB 1\" run\numpk program-info\numpk info\n",
+        file.display()
+    );
+    let o = run(&["--json", "--device", &url], &script);
+    let lines = json_lines(&o);
+    assert!(o.status.success(), "{}\n{}", stdout(&o), String::from_utf8_lossy(&o.stderr));
+    assert_eq!(lines[1]["pages"], 4, "{}", lines[1]);
+    assert_eq!(lines[1]["records"], 7, "start, info, 4 pages, end");
+    assert_eq!(lines[1]["bytes"], 200);
+    assert_eq!(lines[2]["program_info"], format!("LAB 1{}", " ".repeat(17)));
+    assert_eq!(lines[3]["mode"], "Work");
+    // A file that does not fit is refused before anything is sent.
+    let big = hex_file(&srv.dir, "big.hex", &[Record::data(0x0C00, &[1]), Record::end()]);
+    let o = run(&["--json", "--device", &url], &format!("use lab\numpk program {}\n", big.display()));
+    let err = &json_lines(&o)[1];
+    assert_eq!(err["ok"], false);
+    assert!(err["error"]["message"].as_str().unwrap().contains("outside the program memory"), "{err}");
+
+    // Each letter, provoked over the pty and reported in words.
+    let mut d = open(&format!("umpk:{}", srv.link.display()));
+    let u = drv(&mut d);
+    let letter = |u: &mut Driver, raw: &str| -> u8 {
+        match u.send_raw(raw).unwrap().reply {
+            Reply::Letter(l) => l,
+            Reply::Ok => b'R',
+            r => panic!("{raw}: {r:?}"),
+        }
+    };
+    assert_eq!(letter(u, ":00000002FE"), b'X', "not in Programming mode");
+    u.send_raw("?09F7").unwrap();
+    assert_eq!(letter(u, ":0100000000FF"), b'X', "no start record yet");
+    for (raw, want) in [
+        (":00000002FD", b'E'),
+        (":020000040000FA", b'U'),
+        (":0100000Z00FF", b'C'),
+    ] {
+        assert_eq!(letter(u, ":00000002FE"), b'R');
+        assert_eq!(letter(u, raw), want, "{raw}");
+    }
+    assert_eq!(letter(u, ":00000002FE"), b'R');
+    assert_eq!(letter(u, &String::from_utf8(Record::data(0, &[0; 65]).encode()).unwrap()), b'L');
+    assert_eq!(letter(u, ":00000002FE"), b'R');
+    assert_eq!(letter(u, &String::from_utf8(Record::data(0x40, &[0; 64]).encode()).unwrap()), b'R');
+    assert_eq!(letter(u, &String::from_utf8(Record::data(0x00, &[0; 64]).encode()).unwrap()), b'A');
+    // W: page 40 is made to fail by the server (--umpk-flash-fail 40): a file reaching it.
+    let p = plcsh::umpk::hex::parse_file(
+        &std::fs::read_to_string(hex_file(&srv.dir, "w.hex", &[Record::data(0x0A00, &[7; 64]), Record::end()])).unwrap(),
+        3072,
+    )
+    .unwrap();
+    let e = u.program(&p, None, &mut |_, _| {}).unwrap_err();
+    assert_eq!(e.kind, ErrorKind::Refused);
+    assert!(e.message.contains("W: the flash (IAP) write failed") && e.message.contains("16#0A00..16#0A3F"), "{e}");
+    assert!(e.hint.as_deref().unwrap().contains("again from the start"), "{e:?}");
+    assert_eq!(letter(u, ":00000001FF"), b'X', "the aborted sequence allows nothing until a new start");
+    // The failed sequence erased the program: reset leaves Programming mode to Wait.
+    u.reset().unwrap();
+    let word = u.controller_info().unwrap().status;
+    let st = u.layout.decode(word);
+    assert!(!st.work && !st.programming, "{st:?}");
+    let _ = std::fs::remove_dir_all(&srv.dir);
+}
+
+#[test]
+fn a_persons_terminal_typing_by_hand() {
+    if std::process::Command::new("socat").arg("-V").output().map(|o| !o.status.success()).unwrap_or(true) {
+        eprintln!("socat is not installed: skipping the terminal test (apt-get install socat)");
+        return;
+    }
+    let srv = Server::start("socat", &[]);
+    // socat joins its stdin/stdout to the serial device like a terminal program does
+    // (raw, no local echo: the PLC echoes); keys arrive one at a time, as typed.
+    let mut child = std::process::Command::new("socat")
+        .args(["-u", "-", &format!("FILE:{},raw,echo=0", srv.link.display())])
+        .stdin(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut reader = std::process::Command::new("socat")
+        .args(["-u", &format!("FILE:{},raw,echo=0", srv.link.display()), "-"])
+        .stdout(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut keys = child.stdin.take().unwrap();
+    let mut out = reader.stdout.take().unwrap();
+    let (tx, rx) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        let mut b = [0u8; 64];
+        while let Ok(n) = out.read(&mut b) {
+            if n == 0 || tx.send(b[..n].to_vec()).is_err() {
+                break;
+            }
+        }
+    });
+    for k in "?03FD".bytes() {
+        keys.write_all(&[k]).unwrap();
+        keys.flush().unwrap();
+        std::thread::sleep(Duration::from_millis(40)); // a person's typing pace
+    }
+    let mut seen = Vec::new();
+    let end = Instant::now() + Duration::from_secs(5);
+    while !seen.ends_with(b"\r\n") && Instant::now() < end {
+        if let Ok(b) = rx.recv_timeout(Duration::from_millis(100)) {
+            seen.extend(b);
+        }
+    }
+    let _ = child.kill();
+    let _ = reader.kill();
+    let _ = child.wait();
+    let _ = reader.wait();
+    assert_eq!(String::from_utf8_lossy(&seen), "?03FD#06102910080001A8\r\n");
+    let _ = std::fs::remove_dir_all(&srv.dir);
+}
