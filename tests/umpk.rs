@@ -288,17 +288,13 @@ fn a_persons_terminal_typing_by_hand() {
     // socat joins its stdin/stdout to the serial device like a terminal program does
     // (raw, no local echo: the PLC echoes); keys arrive one at a time, as typed.
     let mut child = std::process::Command::new("socat")
-        .args(["-u", "-", &format!("FILE:{},raw,echo=0", srv.link.display())])
+        .args(["-", &format!("FILE:{},raw,echo=0", srv.link.display())])
         .stdin(std::process::Stdio::piped())
-        .spawn()
-        .unwrap();
-    let mut reader = std::process::Command::new("socat")
-        .args(["-u", &format!("FILE:{},raw,echo=0", srv.link.display()), "-"])
         .stdout(std::process::Stdio::piped())
         .spawn()
         .unwrap();
     let mut keys = child.stdin.take().unwrap();
-    let mut out = reader.stdout.take().unwrap();
+    let mut out = child.stdout.take().unwrap();
     let (tx, rx) = std::sync::mpsc::channel();
     std::thread::spawn(move || {
         let mut b = [0u8; 64];
@@ -321,9 +317,7 @@ fn a_persons_terminal_typing_by_hand() {
         }
     }
     let _ = child.kill();
-    let _ = reader.kill();
     let _ = child.wait();
-    let _ = reader.wait();
     assert_eq!(String::from_utf8_lossy(&seen), "?03FD#06102910080001A8\r\n");
     let _ = std::fs::remove_dir_all(&srv.dir);
 }
