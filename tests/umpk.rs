@@ -214,10 +214,7 @@ fn hex_programming_end_to_end_through_the_shell_and_each_error_letter() {
     recs.push(Record::end());
     let file = hex_file(&srv.dir, "lab.hex", &recs);
     let url = format!("lab=umpk:{}", srv.link.display());
-    let script = format!(
-        "use lab\numpk program {} info=\"LAB 1\" run\numpk program-info\numpk info\n",
-        file.display()
-    );
+    let script = format!("use lab\numpk program {} info=\"LAB 1\" run\numpk program-info\numpk info\n", file.display());
     let o = run(&["--json", "--device", &url], &script);
     let lines = json_lines(&o);
     assert!(o.status.success(), "{}\n{}", stdout(&o), String::from_utf8_lossy(&o.stderr));
@@ -246,11 +243,7 @@ fn hex_programming_end_to_end_through_the_shell_and_each_error_letter() {
     assert_eq!(letter(u, ":00000002FE"), b'X', "not in Programming mode");
     u.send_raw("?09F7").unwrap();
     assert_eq!(letter(u, ":0100000000FF"), b'X', "no start record yet");
-    for (raw, want) in [
-        (":00000002FD", b'E'),
-        (":020000040000FA", b'U'),
-        (":0100000Z00FF", b'C'),
-    ] {
+    for (raw, want) in [(":00000002FD", b'E'), (":020000040000FA", b'U'), (":0100000Z00FF", b'C')] {
         assert_eq!(letter(u, ":00000002FE"), b'R');
         assert_eq!(letter(u, raw), want, "{raw}");
     }
@@ -261,7 +254,8 @@ fn hex_programming_end_to_end_through_the_shell_and_each_error_letter() {
     assert_eq!(letter(u, &String::from_utf8(Record::data(0x00, &[0; 64]).encode()).unwrap()), b'A');
     // W: page 40 is made to fail by the server (--umpk-flash-fail 40): a file reaching it.
     let p = plcsh::umpk::hex::parse_file(
-        &std::fs::read_to_string(hex_file(&srv.dir, "w.hex", &[Record::data(0x0A00, &[7; 64]), Record::end()])).unwrap(),
+        &std::fs::read_to_string(hex_file(&srv.dir, "w.hex", &[Record::data(0x0A00, &[7; 64]), Record::end()]))
+            .unwrap(),
         3072,
     )
     .unwrap();
@@ -320,4 +314,28 @@ fn a_persons_terminal_typing_by_hand() {
     let _ = child.wait();
     assert_eq!(String::from_utf8_lossy(&seen), "?03FD#06102910080001A8\r\n");
     let _ = std::fs::remove_dir_all(&srv.dir);
+}
+
+#[test]
+fn shell_monitor_as_json_lines_and_as_a_trace_for_plot() {
+    let dir = std::env::temp_dir().join(format!("plcsh-umpk-{}-plot", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let svg = dir.join("i2.svg");
+    let script = format!(
+        "use lab\nsim input I2 freq=25Hz\numpk monitor I2 Q0 count=4\nplot I2 to={}\nsim input I2 off\numpk errors\n",
+        svg.display()
+    );
+    let o = run(&["--json", "--time", "stepped", "--device", "lab=sim-umpk:UMPK16"], &script);
+    assert!(o.status.success(), "{}", stdout(&o));
+    let lines = json_lines(&o);
+    let samples: Vec<&serde_json::Value> = lines.iter().filter(|l| l.get("sample").is_some()).collect();
+    assert_eq!(samples.len(), 4, "{lines:?}");
+    // 25 Hz: 20 ms on, 20 ms off, one packet per 10 ms cycle.
+    let i2: Vec<bool> = samples.iter().map(|s| s["values"][0]["value"].as_bool().unwrap()).collect();
+    assert_eq!(i2, [true, true, false, false]);
+    assert_eq!(samples[3]["t_us"], 30_000);
+    let done = lines.iter().find(|l| l.get("packets").is_some()).unwrap();
+    assert_eq!(done["packets"], 4);
+    assert!(std::fs::read_to_string(&svg).unwrap().contains("<svg"), "plot drew the monitor trace");
+    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -298,7 +298,7 @@ impl StatusLayout {
 pub struct Version(pub u8);
 
 impl Version {
-    pub fn new(major: u8, minor: u8, letter: char) -> Version {
+    pub const fn new(major: u8, minor: u8, letter: char) -> Version {
         Version((major & 7) << 5 | (minor & 7) << 2 | ((letter as u8).wrapping_sub(b'A') & 3))
     }
     pub fn major(self) -> u8 {
@@ -491,7 +491,9 @@ pub fn parse_exchange(buf: &[u8], sent: &[u8], shape: Shape, crlf: Option<bool>)
                 }
                 match Monitor::decode(&buf[i..]) {
                     Some(m) => monitor.push(m),
-                    None => return Progress::Bad(format!("a damaged monitor packet: {}", show(&buf[i..i + MONITOR_LEN]))),
+                    None => {
+                        return Progress::Bad(format!("a damaged monitor packet: {}", show(&buf[i..i + MONITOR_LEN])))
+                    }
                 }
                 i += MONITOR_LEN;
             }
@@ -612,8 +614,8 @@ mod tests {
     fn every_command_of_table_6_byte_for_byte() {
         // Table 6 lists ?0000 ?01FF ?02FE ?03FD ?04FC ?05FB ?06FA ?07F9 ?08F8 ?09F7 ?0AF6 ?0BF5 ?0CF4.
         let listed = [
-            "?0000", "?01FF", "?02FE", "?03FD", "?04FC", "?05FB", "?06FA", "?07F9", "?08F8", "?09F7", "?0AF6",
-            "?0BF5", "?0CF4",
+            "?0000", "?01FF", "?02FE", "?03FD", "?04FC", "?05FB", "?06FA", "?07F9", "?08F8", "?09F7", "?0AF6", "?0BF5",
+            "?0CF4",
         ];
         for (c, text) in Command::ALL.iter().zip(listed) {
             assert_eq!(&c.encode(), text.as_bytes(), "{}", c.name());
@@ -631,16 +633,11 @@ mod tests {
     }
 
     #[test]
+    #[allow(clippy::unusual_byte_groupings)] // grouped as the manual packs it: SSS MMM LL
     fn controller_info_packet_and_firmware_version() {
         // #06 MM=10 VV=2A (001 010 10: 1.2C) II=10 QQ=08 SS=20 (W) PP=03, CC makes the sum 0.
-        let info = Info {
-            model: 0x10,
-            version: Version::new(1, 2, 'C'),
-            inputs: 16,
-            outputs: 8,
-            status: 0x20,
-            microcode: 3,
-        };
+        let info =
+            Info { model: 0x10, version: Version::new(1, 2, 'C'), inputs: 16, outputs: 8, status: 0x20, microcode: 3 };
         assert_eq!(info.version.0, 0b001_010_10);
         let p = packet(&info.data());
         assert_eq!(p, b"#06102A1008200385");
@@ -650,10 +647,13 @@ mod tests {
         assert_eq!(Version(0b011_101_01).to_string(), "3.5B");
         match parse_exchange(&p, b"?03FD", Shape::Packet(6), None) {
             Progress::Done(x) => {
-                assert_eq!(Info::from_data(match &x.reply {
-                    Reply::Packet(d) => d,
-                    r => panic!("{r:?}"),
-                }), Some(info));
+                assert_eq!(
+                    Info::from_data(match &x.reply {
+                        Reply::Packet(d) => d,
+                        r => panic!("{r:?}"),
+                    }),
+                    Some(info)
+                );
                 assert!(!x.echoed && !x.crlf);
             }
             p => panic!("{p:?}"),
@@ -680,7 +680,8 @@ mod tests {
 
     #[test]
     fn reset_r_and_monitor_packets_are_skipped() {
-        let m = Monitor { status: 0x28, inputs: 0x0001, outputs: 0x80, timers: 0x8001, counters: 0x0F, markers: 1 << 63 };
+        let m =
+            Monitor { status: 0x28, inputs: 0x0001, outputs: 0x80, timers: 0x8001, counters: 0x0F, markers: 1 << 63 };
         let mut wire = m.encode().to_vec();
         wire.extend_from_slice(b"R\r\n?05FB#0401000000FB\r\n");
         let Progress::Done(x) = parse_exchange(&wire, b"?05FB", Shape::Packet(4), None) else { panic!() };
@@ -701,8 +702,12 @@ mod tests {
         wire.extend_from_slice(&[b' '; INFO_LEN]);
         let Progress::Done(x) = parse_exchange(&wire, b"?04FC", Shape::Text, None) else { panic!() };
         assert_eq!(x.reply, Reply::Text(vec![b' '; 22]), "Wait mode: 22 spaces (§4.1.5)");
-        assert!(matches!(parse_exchange(b"#0401000000FA", b"?05FB", Shape::Packet(4), None), Progress::Bad(m) if m.contains("checksum")));
-        assert!(matches!(parse_exchange(b"?05FC", b"?05FB", Shape::Packet(4), None), Progress::Bad(m) if m.contains("echo")));
+        assert!(
+            matches!(parse_exchange(b"#0401000000FA", b"?05FB", Shape::Packet(4), None), Progress::Bad(m) if m.contains("checksum"))
+        );
+        assert!(
+            matches!(parse_exchange(b"?05FC", b"?05FB", Shape::Packet(4), None), Progress::Bad(m) if m.contains("echo"))
+        );
         assert!(matches!(parse_exchange(b"Z", b"?05FB", Shape::Packet(4), None), Progress::Bad(_)));
         // A plain-sum checksum is accepted too (the manual does not say which rule).
         assert!(matches!(parse_exchange(b"#040100000001", b"?05FB", Shape::Packet(4), None), Progress::Done(_)));

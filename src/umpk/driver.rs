@@ -23,7 +23,9 @@
 //! The byte transports are [`crate::servo::link`]'s (serial port, fd, socket pair): they are
 //! family-neutral and should move to `core::link` when a third serial family needs them.
 
-use super::codec::{self, parse_exchange, Command, Exchange, Info, Monitor, Progress, Reply, Shape, StatusLayout, Timing};
+use super::codec::{
+    self, parse_exchange, Command, Exchange, Info, Monitor, Progress, Reply, Shape, StatusLayout, Timing,
+};
 use super::hex::{self, Record};
 use super::model::{self, Model};
 use super::sim::{Umpk, RESET_TIME};
@@ -232,8 +234,12 @@ impl Driver {
                 Progress::Bad(m) => {
                     self.settle();
                     self.monitor_on = false;
-                    return Err(Error::link(format!("unexpected reply to {} on {}: {m}", codec::show(sent), self.link))
-                        .hint("another program may be using the port, or the baud rate is not 57600"));
+                    return Err(Error::link(format!(
+                        "unexpected reply to {} on {}: {m}",
+                        codec::show(sent),
+                        self.link
+                    ))
+                    .hint("another program may be using the port, or the baud rate is not 57600"));
                 }
             }
         }
@@ -381,7 +387,11 @@ impl Driver {
             self.monitor_stop()?;
         }
         m?.ok_or_else(|| {
-            Error::link(format!("no real-time monitor packet from the UMPK on {} within {} ms", self.link, self.timeout.as_millis()))
+            Error::link(format!(
+                "no real-time monitor packet from the UMPK on {} within {} ms",
+                self.link,
+                self.timeout.as_millis()
+            ))
         })
     }
 
@@ -553,7 +563,9 @@ impl Device for Driver {
                 self.layout = StatusLayout::parse(value).map_err(Error::usage)?;
                 Ok(())
             }
-            _ => Err(Error::usage(format!("UMPK devices have no option `{key}`")).hint("options: timeout, status_bits")),
+            _ => {
+                Err(Error::usage(format!("UMPK devices have no option `{key}`")).hint("options: timeout, status_bits"))
+            }
         }
     }
 }
@@ -573,7 +585,8 @@ fn model_param(u: &DeviceUrl, text: Option<&str>) -> Result<Option<&'static Mode
     text.filter(|t| !t.is_empty())
         .map(|t| {
             model::find(t).ok_or_else(|| {
-                Error::usage(format!("`{t}` in {} is not a UMPK model", u.text)).hint(format!("models: {}", model::names()))
+                Error::usage(format!("`{t}` in {} is not a UMPK model", u.text))
+                    .hint(format!("models: {}", model::names()))
             })
         })
         .transpose()
@@ -598,8 +611,12 @@ pub fn open_serial(u: &DeviceUrl) -> Result<Box<dyn Device>> {
     let baud = u.param_num::<u32>("baud")?.unwrap_or(codec::BAUD);
     let t = serial::open_serial(&u.target, baud)?;
     let m = want.unwrap_or(&model::MODELS[1]);
-    let info =
-        DeviceInfo { family: "umpk", model: m.name.into(), link: format!("{} ({baud} baud 8N1)", u.target), simulated: false };
+    let info = DeviceInfo {
+        family: "umpk",
+        model: m.name.into(),
+        link: format!("{} ({baud} baud 8N1)", u.target),
+        simulated: false,
+    };
     let mut d = Driver::attach(t, &u.target, m, info);
     options(&mut d, u)?;
     d.identify(want)?;
@@ -658,7 +675,8 @@ mod tests {
     fn operands_read_from_commands_and_the_monitor_and_set_is_refused() {
         let mut d = sim("sim-umpk:UMPK16");
         drv(&mut d).simulator().unwrap().lock().unwrap().set_input(3, true);
-        let ops: Vec<Operand> = ["I3", "I2", "Q0", "M5", "T0", "C3"].iter().map(|t| d.operands().parse(t).unwrap()[0]).collect();
+        let ops: Vec<Operand> =
+            ["I3", "I2", "Q0", "M5", "T0", "C3"].iter().map(|t| d.operands().parse(t).unwrap()[0]).collect();
         let v = d.read(&ops[..3]).unwrap();
         assert_eq!(v, vec![Value::Bool(true), Value::Bool(false), Value::Bool(false)]);
         let v = d.read(&ops).unwrap();

@@ -77,8 +77,11 @@ impl Record {
         if let Some(p) = text[1..].iter().position(|c| !c.is_ascii_hexdigit()) {
             return Err((b'C', format!("character {} of the record is not a hex digit", p + 2)));
         }
-        if text.len() < 11 || text.len() % 2 == 0 {
-            return Err((b'C', format!("a record has an odd number of hex digits, at least 10; this one has {}", text.len() - 1)));
+        if text.len() < 11 || text.len().is_multiple_of(2) {
+            return Err((
+                b'C',
+                format!("a record has an odd number of hex digits, at least 10; this one has {}", text.len() - 1),
+            ));
         }
         let bytes: Vec<u8> = text[1..].chunks(2).filter_map(hex_pair).collect();
         let n = bytes[0] as usize;
@@ -147,11 +150,9 @@ pub fn parse_file(text: &str, memory: usize) -> Result<Program, String> {
                 }
                 p.info = Some(r.data);
             }
-            k => {
-                return Err(format!(
-                    "line {ln}: record type {k:02X} is not one the UMPK takes (00 data, 01 end, 02 start, 03 program info)"
-                ))
-            }
+            k => return Err(format!(
+                "line {ln}: record type {k:02X} is not one the UMPK takes (00 data, 01 end, 02 start, 03 program info)"
+            )),
         }
     }
     if !ended {

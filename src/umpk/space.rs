@@ -45,7 +45,13 @@ pub const AREAS: &[Area] = &[
         source: "the real-time monitor",
         section: "§3.5, Table 5",
     },
-    Area { letter: 'C', meaning: "counter output pulse", size: |m| m.counters, source: "the real-time monitor", section: "§3.5" },
+    Area {
+        letter: 'C',
+        meaning: "counter output pulse",
+        size: |m| m.counters,
+        source: "the real-time monitor",
+        section: "§3.5",
+    },
     Area { letter: 'M', meaning: "marker", size: |m| m.markers, source: "the real-time monitor", section: "§3.4" },
 ];
 
@@ -90,7 +96,8 @@ impl UmpkSpace {
         })?;
         let num = chars.as_str();
         let index: u32 = num.parse().map_err(|_| {
-            Error::new(ErrorKind::Operand, format!("`{text}`: a number must follow {letter} (e.g. {letter}0)")).column(col)
+            Error::new(ErrorKind::Operand, format!("`{text}`: a number must follow {letter} (e.g. {letter}0)"))
+                .column(col)
         })?;
         let size = (AREAS[area].size)(self.model) as u32;
         if index >= size {
@@ -119,7 +126,9 @@ impl OperandSpace for UmpkSpace {
                 return Err(Error::new(ErrorKind::Operand, format!("`{t}` is not a range of one area (e.g. I0..I7)"))
                     .column(lead));
             }
-            return Ok((first.index..=last.index).map(|i| UmpkOperand { area: first.area, index: i }.to_core()).collect());
+            return Ok((first.index..=last.index)
+                .map(|i| UmpkOperand { area: first.area, index: i }.to_core())
+                .collect());
         }
         Ok(vec![self.one(t, lead)?.to_core()])
     }

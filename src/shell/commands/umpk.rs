@@ -24,7 +24,7 @@ use crate::shell::{Args, Shell};
 use crate::umpk::codec::{error_code_text, letter_text, Reply, INFO_LEN};
 use crate::umpk::driver::Driver;
 use crate::umpk::hex;
-use crate::umpk::sim::{describe_status, logic::CYCLE_MS, Wave};
+use crate::umpk::sim::{describe_status, logic::CYCLE_MS};
 use crate::umpk::space::UmpkOperand;
 use std::io::{IsTerminal, Write};
 use std::time::Duration;
@@ -84,7 +84,11 @@ fn umpk(sh: &mut Shell, args: Args) -> Result<Outcome> {
         "program-info" => {
             let t = driver(sh, dev).program_info()?;
             let text = String::from_utf8_lossy(&t).into_owned();
-            let shown = if text.trim().is_empty() { "(22 spaces: no program, Wait mode)".to_string() } else { format!("\"{text}\"") };
+            let shown = if text.trim().is_empty() {
+                "(22 spaces: no program, Wait mode)".to_string()
+            } else {
+                format!("\"{text}\"")
+            };
             Ok(Outcome::new("umpk").text(format!("program info {shown}")).with("program_info", text))
         }
         "errors" => errors(driver(sh, dev), rest),
@@ -131,6 +135,22 @@ fn umpk(sh: &mut Shell, args: Args) -> Result<Outcome> {
     .map_err(|e| e.device(name))
 }
 
+/// True when the current device is a UMPK (`sim input I3=1` then means its input).
+pub fn current_is_umpk(sh: &mut Shell) -> bool {
+    sh.session.current_index().is_ok_and(|i| is_umpk(sh, i))
+}
+
+/// `sim input I3=1 | I3 freq=2Hz | I3 off` on the current UMPK: the same as `umpk sim input …`.
+pub fn sim_input(sh: &mut Shell, args: Args) -> Result<Outcome> {
+    let words = lex::words_in(&args)?;
+    let dev = sh.session.current_index()?;
+    let name = sh.session.entries()[dev].name.clone();
+    let col = words.first().map_or(args.offset, |w| w.0);
+    let mut o = sim(driver(sh, dev), &words, col).map_err(|e| e.device(&name))?;
+    o.device = Some(name);
+    Ok(o)
+}
+
 fn info(d: &mut Driver) -> Result<Outcome> {
     let i = d.controller_info()?;
     let st = d.layout.decode(i.status);
@@ -149,7 +169,10 @@ fn info(d: &mut Driver) -> Result<Outcome> {
         vec!["firmware".into(), format!("{} (VV={:02X})", i.version, i.version.0)],
         vec!["inputs / outputs".into(), format!("{} / {}", i.inputs, i.outputs)],
         vec!["mode".into(), mode.into()],
-        vec!["status word".into(), format!("{:02X}: {}", i.status, if bits.is_empty() { "no flag set".into() } else { bits.join(", ") })],
+        vec![
+            "status word".into(),
+            format!("{:02X}: {}", i.status, if bits.is_empty() { "no flag set".into() } else { bits.join(", ") }),
+        ],
         vec!["microcode".into(), format!("{:02X}", i.microcode)],
         vec!["echo".into(), if echo { "on" } else { "off" }.into()],
     ];
@@ -166,7 +189,7 @@ fn info(d: &mut Driver) -> Result<Outcome> {
         .with("outputs", i.outputs)
         .with("mode", mode)
         .with("status", i.status)
-        .with("status_bits", &st)
+        .with("status_bits", st)
         .with("microcode", i.microcode)
         .with("echo", echo))
 }
@@ -196,7 +219,9 @@ fn send(d: &mut Driver, rest: &[Word], col: usize) -> Result<Outcome> {
     let (shown, meaning) = match &x.reply {
         Reply::Ok => ("R".to_string(), "ok".to_string()),
         Reply::Letter(l) => ((*l as char).to_string(), letter_text(*l).to_string()),
-        Reply::Packet(p) => (format!("#{}", p.iter().map(|b| format!("{b:02X}")).collect::<String>()), "a packet".into()),
+        Reply::Packet(p) => {
+            (format!("#{}", p.iter().map(|b| format!("{b:02X}")).collect::<String>()), "a packet".into())
+        }
         Reply::Text(t) => (format!("#{}", String::from_utf8_lossy(t)), "program info".into()),
     };
     Ok(Outcome::new("umpk")
@@ -208,14 +233,16 @@ fn send(d: &mut Driver, rest: &[Word], col: usize) -> Result<Outcome> {
 
 fn sim(d: &mut Driver, rest: &[Word], col: usize) -> Result<Outcome> {
     let s = d.simulator().ok_or_else(|| {
-        Error::unsupported("umpk sim works on the simulator (sim-umpk:UMPK16); a real UMPK's inputs are wired").column(col)
+        Error::unsupported("umpk sim works on the simulator (sim-umpk:UMPK16); a real UMPK's inputs are wired")
+            .column(col)
     })?;
     let mut u = s.lock().unwrap_or_else(|p| p.into_inner());
     let (pos, opts) = lex::options(rest.get(1..).unwrap_or(&[]));
     match rest.first().map(|w| w.1) {
         Some("input") => {
             check_options(&opts, &["freq"], UMPK.usage)?;
-            let &(c, first) = pos.first().ok_or_else(|| Error::usage("umpk sim input I3=1 | I3 freq=2Hz | I3 off").column(col))?;
+            let &(c, first) =
+                pos.first().ok_or_else(|| Error::usage("umpk sim input I3=1 | I3 freq=2Hz | I3 off").column(col))?;
             let (op_text, value) = match first.split_once('=') {
                 Some((o, v)) => (o, Some(v)),
                 None => (first, pos.get(1).map(|w| w.1)),
@@ -231,8 +258,7 @@ fn sim(d: &mut Driver, rest: &[Word], col: usize) -> Result<Outcome> {
                 if !(2..=1_000_000).contains(&period) {
                     return Err(value_err(fc, format!("freq={f}: the 10 ms cycle sees square waves of 0.0001–50 Hz")));
                 }
-                u.waves.retain(|w| w.input != o.index);
-                u.waves.push(Wave { input: o.index, period });
+                u.set_wave(o.index, period);
                 format!("{}: square wave, period {} ms", o.name(), period * CYCLE_MS)
             } else {
                 let on = match value.map(str::to_ascii_lowercase).as_deref() {
@@ -275,7 +301,9 @@ fn program(sh: &mut Shell, dev: usize, rest: &[Word], col: usize) -> Result<Outc
     let run = match pos.get(1) {
         None => false,
         Some((_, "run")) => true,
-        Some(&(c, w)) => return Err(Error::usage(format!("unexpected `{w}` (only `run` may follow the file)")).column(c)),
+        Some(&(c, w)) => {
+            return Err(Error::usage(format!("unexpected `{w}` (only `run` may follow the file)")).column(c))
+        }
     };
     let info = match opt(&opts, "info") {
         None => None,
@@ -287,8 +315,8 @@ fn program(sh: &mut Shell, dev: usize, rest: &[Word], col: usize) -> Result<Outc
             Some(v.as_bytes().to_vec())
         }
     };
-    let text = std::fs::read_to_string(file)
-        .map_err(|e| Error::io(format!("cannot read {file}")).cause(e).column(fc))?;
+    let text =
+        std::fs::read_to_string(file).map_err(|e| Error::io(format!("cannot read {file}")).cause(e).column(fc))?;
     let d = driver(sh, dev);
     let memory = d.model().program_bytes;
     let prog = hex::parse_file(&text, memory).map_err(|m| {
@@ -314,7 +342,11 @@ fn program(sh: &mut Shell, dev: usize, rest: &[Word], col: usize) -> Result<Outc
     if run {
         d.reset()?;
     }
-    let next = if run { "reset: the program is enabled (Work mode)" } else { "the controller stays in Programming mode; `umpk reset` enables the program" };
+    let next = if run {
+        "reset: the program is enabled (Work mode)"
+    } else {
+        "the controller stays in Programming mode; `umpk reset` enables the program"
+    };
     Ok(Outcome::new("umpk")
         .text(format!(
             "programmed {} bytes in {} page(s), {} records acknowledged{}; {next}",
@@ -423,8 +455,12 @@ fn monitor(sh: &mut Shell, dev: usize, rest: &[Word]) -> Result<Outcome> {
     let stop = d.monitor_stop();
     result?;
     stop?;
-    let columns: serde_json::Map<String, serde_json::Value> =
-        rec.labels.iter().zip(&rec.columns).map(|(l, c)| (l.clone(), serde_json::json!(c.iter().map(|v| *v as u8).collect::<Vec<_>>()))).collect();
+    let columns: serde_json::Map<String, serde_json::Value> = rec
+        .labels
+        .iter()
+        .zip(&rec.columns)
+        .map(|(l, c)| (l.clone(), serde_json::json!(c.iter().map(|v| *v as u8).collect::<Vec<_>>())))
+        .collect();
     let t_ms: Vec<u64> = rec.t.iter().map(|t| (t * 1000.0).round() as u64).collect();
     sh.last_trace = Some(rec);
     let o = Outcome::new("umpk")
@@ -435,4 +471,3 @@ fn monitor(sh: &mut Shell, dev: usize, rest: &[Word]) -> Result<Outcome> {
         .with("columns", columns);
     Ok(if quiet { o.text(format!("{shown} monitor samples from {packets} packets")) } else { o.quiet() })
 }
-

@@ -160,7 +160,10 @@ pub struct Logic {
 
 impl Logic {
     pub fn new(timers: u8, counters: u8) -> Logic {
-        Logic { timers: vec![OnDelay::default(); timers as usize], counters: vec![Divider::default(); counters as usize] }
+        Logic {
+            timers: vec![OnDelay::default(); timers as usize],
+            counters: vec![Divider::default(); counters as usize],
+        }
     }
 
     /// Sets timer `i`'s delay: `steps` (1–255) of `group`.
@@ -260,7 +263,9 @@ mod tests {
 
     #[test]
     fn on_delay_groups_count_cycles() {
-        for (group, steps, cycles) in [(Group::Ms10, 1, 1), (Group::Ms10, 255, 255), (Group::Ms100, 15, 150), (Group::S1, 2, 200)] {
+        for (group, steps, cycles) in
+            [(Group::Ms10, 1, 1), (Group::Ms10, 255, 255), (Group::Ms100, 15, 150), (Group::S1, 2, 200)]
+        {
             let mut t = OnDelay { group, steps, ..OnDelay::default() };
             for k in 1..cycles {
                 assert!(!t.update(true), "{group:?} {steps}: cycle {k}");
@@ -287,7 +292,10 @@ mod tests {
         assert_eq!(c.count, 1, "the 5th pulse counts again");
         assert!(!c.update(true, true) && c.count == 0, "program reset");
         let mut one = Divider::default();
-        assert!(one.update(true, false) && one.update(true, false) && !one.update(false, false), "ratio 1 passes every pulse");
+        assert!(
+            one.update(true, false) && one.update(true, false) && !one.update(false, false),
+            "ratio 1 passes every pulse"
+        );
     }
 
     #[test]

@@ -36,8 +36,8 @@ pub mod logic;
 pub mod serve;
 
 use super::codec::{
-    packet, parse_command, text_packet, Command, Info, Monitor, Parsed, Status, StatusLayout,
-    Timing, Version, BYTE_NS, INFO_LEN,
+    packet, parse_command, text_packet, Command, Info, Monitor, Parsed, Status, StatusLayout, Timing, Version, BYTE_NS,
+    INFO_LEN,
 };
 use super::hex::{kind, Record};
 use super::model::{Model, PAGE};
@@ -54,7 +54,7 @@ pub const FIRMWARE_COUNTS: u16 = 1000;
 /// beyond it are dropped.
 pub const OUTPUT_LIMIT: usize = 4096;
 /// The firmware version the simulator reports.
-pub const VERSION: Version = Version(0b001_010_01); // 1.2B
+pub const VERSION: Version = Version::new(1, 2, 'B');
 pub const MICROCODE: u8 = 0x01;
 
 /// The controller's mode (§3.2).
@@ -102,6 +102,8 @@ pub struct Wave {
     pub input: u8,
     /// Period in cycles (≥ 2).
     pub period: u64,
+    /// The cycle it starts in (on for the first half period).
+    pub start: u64,
 }
 
 /// One simulated UMPK.
@@ -228,6 +230,13 @@ impl Umpk {
         self.image.inputs = self.image.inputs & !(1 << i) | (on as u32) << i;
     }
 
+    /// Puts a square wave of `period` cycles on input `i`, starting with the next cycle.
+    pub fn set_wave(&mut self, i: u8, period: u64) {
+        self.waves.retain(|w| w.input != i);
+        self.forced_inputs &= !(1 << i);
+        self.waves.push(Wave { input: i, period: period.max(2), start: self.cycle + 1 });
+    }
+
     /// Adds `code` to the error history (newest first).
     pub fn push_error(&mut self, code: u8) {
         self.errors.copy_within(0..7, 1);
@@ -318,7 +327,7 @@ impl Umpk {
     fn run_cycle(&mut self, t: Duration) {
         let mut inputs = self.forced_inputs;
         for w in &self.waves {
-            if self.cycle % w.period < w.period / 2 {
+            if self.cycle.saturating_sub(w.start) % w.period < w.period / 2 {
                 inputs |= 1 << w.input;
             }
         }

@@ -62,7 +62,17 @@ fn programming_mode_availability_and_reset() {
     assert_eq!(s(&talk(&mut u, b"?09F7")), "R");
     assert_eq!(u.mode(), Mode::Programming);
     // Only reset, echo on/off and controller info answer in Programming mode (Table 6).
-    for c in [Command::ProgramInfo, Command::Inputs, Command::Outputs, Command::Errors, Command::ClearErrors, Command::Programming, Command::MonitorStart, Command::MonitorStop, Command::Timing] {
+    for c in [
+        Command::ProgramInfo,
+        Command::Inputs,
+        Command::Outputs,
+        Command::Errors,
+        Command::ClearErrors,
+        Command::Programming,
+        Command::MonitorStart,
+        Command::MonitorStop,
+        Command::Timing,
+    ] {
         assert_eq!(s(&talk(&mut u, &c.encode())), "U", "{}", c.name());
     }
     let info = talk(&mut u, b"?03FD");
@@ -127,14 +137,22 @@ fn every_programming_error_letter() {
     fresh(&mut u);
     assert_eq!(s(&talk(&mut u, &Record::info(&[b'x'; 23]).encode())), "L", "info longer than 22");
     fresh(&mut u);
-    assert_eq!(program_records(&mut u, &[Record::data(0x40, &[1; 64]), Record::data(0, &[1; 64])]), "R A", "out of sequence");
+    assert_eq!(
+        program_records(&mut u, &[Record::data(0x40, &[1; 64]), Record::data(0, &[1; 64])]),
+        "R A",
+        "out of sequence"
+    );
     fresh(&mut u);
     assert_eq!(s(&talk(&mut u, &Record::data(0x800, &[1; 64]).encode())), "A", "beyond the UMPK8's 2 KB");
     fresh(&mut u);
     assert_eq!(s(&talk(&mut u, &Record::data(0x30, &[1; 32]).encode())), "A", "crosses a page boundary");
     fresh(&mut u);
     u.flash_fail = Some(1);
-    assert_eq!(program_records(&mut u, &[Record::data(0, &[1; 64]), Record::data(0x40, &[1; 64])]), "R W", "flash write failed");
+    assert_eq!(
+        program_records(&mut u, &[Record::data(0, &[1; 64]), Record::data(0x40, &[1; 64])]),
+        "R W",
+        "flash write failed"
+    );
     // The failed sequence erased the program: after reset the PLC waits.
     talk(&mut u, b"?0000");
     clock.step(RESET_TIME);
@@ -220,12 +238,12 @@ fn a_runner_drives_outputs_timers_and_counters_in_work_mode() {
     assert_eq!(u.image.outputs & 3, 3, "T0 done after 0.5 s");
     assert!(u.image.marker(5));
     // Divide a 10 Hz square wave on I2 by 4: one output pulse of 50 ms per 400 ms.
-    u.waves.push(Wave { input: 2, period: 10 });
+    u.set_wave(2, 10);
     let mut high = 0;
     for _ in 0..40 {
         clock.step(Duration::from_millis(10));
         u.take_all();
-        high += (u.image.outputs >> 2 & 1) as u32;
+        high += u.image.outputs >> 2 & 1;
     }
     assert_eq!(high, 5, "one 5-cycle pulse in 40 cycles");
     // Programming mode forces outputs off.
