@@ -150,9 +150,11 @@ pub fn parse_file(text: &str, memory: usize) -> Result<Program, String> {
                 }
                 p.info = Some(r.data);
             }
-            k => return Err(format!(
+            k => {
+                return Err(format!(
                 "line {ln}: record type {k:02X} is not one the UMPK takes (00 data, 01 end, 02 start, 03 program info)"
-            )),
+            ))
+            }
         }
     }
     if !ended {
