@@ -18,7 +18,7 @@ use std::time::{Duration, Instant};
 
 /// A served UMPK on a pty symlinked in a private directory.
 struct Server {
-    _served: Served,
+    served: Served,
     link: PathBuf,
     dir: PathBuf,
 }
@@ -32,7 +32,7 @@ impl Server {
         args.extend_from_slice(extra);
         let served = serve(&args);
         assert!(served.ready["umpk_pty"].as_str().unwrap().starts_with("/dev/pts/"), "{}", served.ready);
-        Server { _served: served, link, dir }
+        Server { served, link, dir }
     }
 }
 
@@ -337,5 +337,31 @@ fn shell_monitor_as_json_lines_and_as_a_trace_for_plot() {
     let done = lines.iter().find(|l| l.get("packets").is_some()).unwrap();
     assert_eq!(done["packets"], 4);
     assert!(std::fs::read_to_string(&svg).unwrap().contains("<svg"), "plot drew the monitor trace");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn an_acknowledged_program_survives_kill_9() {
+    let dir = std::env::temp_dir().join(format!("plcsh-umpk-{}-durable", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let state = dir.join("umpk16.json");
+    let _ = std::fs::remove_file(&state);
+    let file = hex_file(&dir, "p.hex", &[Record::info(b"kept"), Record::data(0, &[0x42; 64]), Record::end()]);
+    let p = plcsh::umpk::hex::parse_file(&std::fs::read_to_string(&file).unwrap(), 3072).unwrap();
+    let srv = Server::start("durable", &["--umpk-state", state.to_str().unwrap()]);
+    {
+        let mut d = open(&format!("umpk:{}", srv.link.display()));
+        drv(&mut d).program(&p, None, &mut |_, _| {}).unwrap();
+    }
+    // Power loss right after the last acknowledgement: SIGKILL, no chance to save on exit.
+    let pid = nix::unistd::Pid::from_raw(srv.served.child.id() as i32);
+    nix::sys::signal::kill(pid, nix::sys::signal::Signal::SIGKILL).unwrap();
+    drop(srv);
+    let srv = Server::start("durable2", &["--umpk-state", state.to_str().unwrap()]);
+    let mut d = open(&format!("umpk:{}", srv.link.display()));
+    let u = drv(&mut d);
+    let word = u.controller_info().unwrap().status;
+    assert!(u.layout.decode(word).work, "powered up in Work: the program was kept");
+    assert_eq!(&u.program_info().unwrap()[..4], b"kept");
     let _ = std::fs::remove_dir_all(&dir);
 }

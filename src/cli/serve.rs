@@ -82,6 +82,9 @@ pub struct ServeArgs {
     /// Make the simulated UMPK's flash write fail on this 64-byte page (programming gets `W`).
     #[arg(long = "umpk-flash-fail", value_name = "PAGE")]
     pub umpk_flash_fail: Option<usize>,
+    /// Keep the simulated UMPK's flash, program info and error history in FILE (durable).
+    #[arg(long = "umpk-state", value_name = "FILE")]
+    pub umpk_state: Option<PathBuf>,
 }
 
 impl ServeArgs {
@@ -250,6 +253,7 @@ async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
             model: args.umpk_model.clone(),
             status_bits: args.umpk_status_bits.clone(),
             flash_fail: args.umpk_flash_fail,
+            state: args.umpk_state.clone(),
         };
         ready.extend(crate::umpk::sim::serve::spawn(u, servo_stop.clone()).await?);
     }

@@ -623,13 +623,17 @@ pub fn open_serial(u: &DeviceUrl) -> Result<Box<dyn Device>> {
     Ok(Box::new(d))
 }
 
-/// Opens `sim-umpk:UMPK16?status_bits=…`: the in-process simulator on the session's clock.
+/// Opens `sim-umpk:UMPK16?status_bits=…&state=FILE`: the in-process simulator on the
+/// session's clock (`state` keeps its flash, as `--umpk-state` does for the served one).
 pub fn open_sim(u: &DeviceUrl, clock: &Clock) -> Result<Box<dyn Device>> {
-    u.expect_params(&["model", "timeout", "status_bits"])?;
+    u.expect_params(&["model", "timeout", "status_bits", "state"])?;
     let m = model_param(u, u.param("model").or(Some(u.target.as_str())))?.unwrap_or(&model::MODELS[1]);
     let mut sim = Umpk::new(m, clock.clone());
     if let Some(v) = u.param("status_bits") {
         sim.layout = StatusLayout::parse(v).map_err(Error::usage)?;
+    }
+    if let Some(p) = u.param("state") {
+        sim.open_state(std::path::Path::new(p))?;
     }
     let sim = Arc::new(Mutex::new(sim));
     let info = DeviceInfo { family: "umpk", model: m.name.into(), link: u.text.clone(), simulated: true };

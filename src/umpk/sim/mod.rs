@@ -34,6 +34,7 @@
 
 pub mod logic;
 pub mod serve;
+pub mod state;
 
 use super::codec::{
     packet, parse_command, text_packet, Command, Info, Monitor, Parsed, Status, StatusLayout, Timing, Version, BYTE_NS,
@@ -128,6 +129,8 @@ pub struct Umpk {
     pub waves: Vec<Wave>,
     /// Flash page whose write fails (`W`), for tests and labs.
     pub flash_fail: Option<usize>,
+    /// Where the flash, program info and error history are kept ([`state`]).
+    state_path: Option<std::path::PathBuf>,
     rx: Vec<u8>,
     /// Pending output: byte, virtual time its transmission completes, part of a reply.
     out: VecDeque<(u8, Duration, bool)>,
@@ -166,6 +169,7 @@ impl Umpk {
             forced_inputs: 0,
             waves: Vec::new(),
             flash_fail: None,
+            state_path: None,
             rx: Vec::new(),
             out: VecDeque::new(),
             line_free: now,
@@ -241,6 +245,29 @@ impl Umpk {
     pub fn push_error(&mut self, code: u8) {
         self.errors.copy_within(0..7, 1);
         self.errors[0] = code;
+        self.persist();
+    }
+
+    /// Keeps the flash, program info and error history in `path` from now on, starting from
+    /// what it holds (a controller powered up with its program).
+    pub fn open_state(&mut self, path: &std::path::Path) -> crate::core::Result<()> {
+        state::load(self, path)?;
+        self.state_path = Some(path.to_path_buf());
+        Ok(())
+    }
+
+    /// Writes the durable state, if kept; false if that failed (reported on stderr).
+    fn persist(&self) -> bool {
+        match &self.state_path {
+            None => true,
+            Some(p) => match state::save(self, p) {
+                Ok(()) => true,
+                Err(e) => {
+                    eprintln!("simulated UMPK: {e}");
+                    false
+                }
+            },
+        }
     }
 
     fn status(&self, blink: bool) -> u8 {
@@ -460,6 +487,7 @@ impl Umpk {
             Command::Errors => self.reply(&packet(&self.errors), now),
             Command::ClearErrors => {
                 self.errors = [0; 8];
+                self.persist();
                 self.reply(b"R", now)
             }
             Command::Programming => {
@@ -486,6 +514,15 @@ impl Umpk {
         self.reply(&[letter], now);
     }
 
+    /// `R` once the change is kept; `W` (the flash write failed) if it could not be.
+    fn ack_durable(&mut self, now: Duration) {
+        if self.persist() {
+            self.reply(b"R", now)
+        } else {
+            self.refuse_record(b'W', now)
+        }
+    }
+
     fn record(&mut self, text: &[u8], now: Duration) {
         let r = match Record::parse(text) {
             Ok(r) => r,
@@ -509,7 +546,7 @@ impl Umpk {
                 self.info = [b' '; INFO_LEN];
                 self.program = Program::None;
                 self.prog = Programming { enabled: true, next: 0 };
-                self.reply(b"R", now)
+                self.ack_durable(now)
             }
             kind::INFO => {
                 if r.data.is_empty() || r.data.len() > INFO_LEN {
@@ -517,7 +554,7 @@ impl Umpk {
                 }
                 self.info = [b' '; INFO_LEN];
                 self.info[..r.data.len()].copy_from_slice(&r.data);
-                self.reply(b"R", now)
+                self.ack_durable(now)
             }
             kind::DATA => {
                 if r.data.len() > PAGE {
@@ -534,13 +571,13 @@ impl Umpk {
                 }
                 self.flash[start..end].copy_from_slice(&r.data);
                 self.prog.next = end;
-                self.reply(b"R", now)
+                self.ack_durable(now)
             }
             _ => {
                 // End (§4.2.2): programming is no longer allowed; the program may run.
                 self.prog.enabled = false;
                 self.program = Program::Binary;
-                self.reply(b"R", now)
+                self.ack_durable(now)
             }
         }
     }

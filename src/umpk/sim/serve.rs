@@ -99,7 +99,7 @@ pub fn serve_pty(
     link: Option<&Path>,
     model: &'static Model,
     clock: Clock,
-    setup: impl FnOnce(&mut Umpk),
+    setup: impl FnOnce(&mut Umpk) -> Result<()>,
     stop: &AtomicBool,
     ready: impl FnOnce(&Ready),
 ) -> Result<()> {
@@ -109,7 +109,7 @@ pub fn serve_pty(
     }
     let Pty { mut master, slave, path } = pty;
     let mut u = Umpk::new(model, clock);
-    setup(&mut u);
+    setup(&mut u)?;
     let sim = Arc::new(Mutex::new(u));
     ready(&Ready { umpk_pty: path, umpk_link: link.map(Path::to_path_buf), umpk_model: model.name });
     let r = serve_fd(&mut master, &slave, &sim, stop);
@@ -126,6 +126,8 @@ pub struct Options {
     pub model: String,
     pub status_bits: String,
     pub flash_fail: Option<usize>,
+    /// The state file keeping the flash through restarts ([`super::state`]).
+    pub state: Option<PathBuf>,
 }
 
 /// Serves a simulated UMPK from a thread of its own (the pty loop is blocking); returns
@@ -143,6 +145,10 @@ pub async fn spawn(o: Options, stop: Arc<AtomicBool>) -> Result<serde_json::Map<
         let setup = |u: &mut Umpk| {
             u.layout = layout;
             u.flash_fail = o.flash_fail;
+            match &o.state {
+                Some(p) => u.open_state(p),
+                None => Ok(()),
+            }
         };
         let r = serve_pty(Some(&o.link), model, Clock::following(), setup, &stop, |r| {
             if let Some(tx) = tx.take() {
