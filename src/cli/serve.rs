@@ -74,14 +74,14 @@ pub struct ServeArgs {
     #[arg(long = "umpk-pty", value_name = "LINK")]
     pub umpk_pty: Option<PathBuf>,
     /// The simulated UMPK's model (UMPK8 or UMPK16).
-    #[arg(long = "umpk-model", value_name = "MODEL", default_value = "UMPK16")]
-    pub umpk_model: String,
+    #[arg(long = "umpk-model", value_name = "MODEL", default_value = "UMPK16", value_parser = crate::umpk::sim::serve::parse_model)]
+    pub umpk_model: &'static crate::umpk::model::Model,
     /// Bit numbers of W,H,R,E,P,T in the UMPK's status word.
-    #[arg(long = "umpk-status-bits", value_name = "W,H,R,E,P,T", default_value = "5,4,3,2,1,0")]
-    pub umpk_status_bits: String,
+    #[arg(long = "umpk-status-bits", value_name = "W,H,R,E,P,T", default_value = "5,4,3,2,1,0", value_parser = crate::umpk::codec::StatusLayout::parse)]
+    pub umpk_status_bits: crate::umpk::codec::StatusLayout,
     /// Make the simulated UMPK's flash write fail on this 64-byte page (programming gets `W`).
     #[arg(long = "umpk-flash-fail", value_name = "PAGE")]
-    pub umpk_flash_fail: Option<usize>,
+    pub umpk_flash_fail: Option<u16>,
     /// Keep the simulated UMPK's flash, program info and error history in FILE (durable).
     #[arg(long = "umpk-state", value_name = "FILE")]
     pub umpk_state: Option<PathBuf>,
@@ -250,9 +250,9 @@ async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
     if let Some(link) = &args.umpk_pty {
         let u = crate::umpk::sim::serve::Options {
             link: link.clone(),
-            model: args.umpk_model.clone(),
-            status_bits: args.umpk_status_bits.clone(),
-            flash_fail: args.umpk_flash_fail,
+            model: args.umpk_model,
+            layout: args.umpk_status_bits,
+            flash_fail: args.umpk_flash_fail.map(usize::from),
             state: args.umpk_state.clone(),
         };
         ready.extend(crate::umpk::sim::serve::spawn(u, servo_stop.clone()).await?);

@@ -119,12 +119,18 @@ pub fn serve_pty(
     r
 }
 
+/// `--umpk-model`: a model name from the table.
+pub fn parse_model(text: &str) -> std::result::Result<&'static Model, String> {
+    crate::umpk::model::find(text)
+        .ok_or_else(|| format!("`{text}` is not a UMPK model ({})", crate::umpk::model::names()))
+}
+
 /// What `plcsh sim serve --umpk-pty …` asks for.
 #[derive(Clone, Debug)]
 pub struct Options {
     pub link: PathBuf,
-    pub model: String,
-    pub status_bits: String,
+    pub model: &'static Model,
+    pub layout: crate::umpk::codec::StatusLayout,
     pub flash_fail: Option<usize>,
     /// The state file keeping the flash through restarts ([`super::state`]).
     pub state: Option<PathBuf>,
@@ -133,12 +139,7 @@ pub struct Options {
 /// Serves a simulated UMPK from a thread of its own (the pty loop is blocking); returns
 /// once the pty is open, with its fields for the readiness line. `stop` ends it.
 pub async fn spawn(o: Options, stop: Arc<AtomicBool>) -> Result<serde_json::Map<String, serde_json::Value>> {
-    let model = crate::umpk::model::find(&o.model).ok_or_else(|| {
-        Error::usage(format!("--umpk-model {}: not a UMPK model", o.model))
-            .hint(format!("models: {}", crate::umpk::model::names()))
-    })?;
-    let layout = crate::umpk::codec::StatusLayout::parse(&o.status_bits)
-        .map_err(|m| Error::usage(format!("--umpk-status-bits: {m}")))?;
+    let (model, layout) = (o.model, o.layout);
     let (tx, rx) = tokio::sync::oneshot::channel::<Result<serde_json::Value>>();
     std::thread::spawn(move || {
         let mut tx = Some(tx);
