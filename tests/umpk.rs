@@ -110,7 +110,9 @@ fn echo_on_and_off_and_every_command_in_each_mode() {
     assert_eq!(t.ask("?07F9", 99), "?07F9#080000000000000000F8\r\n");
     assert_eq!(t.ask("?08F8", 99), "?08F8R\r\n");
     assert_eq!(t.ask("?0CF4", 99), "?0CF4#0403E803E826\r\n");
-    assert_eq!(t.ask("?0AF6", 99), "?0AF6R\r\n");
+    t.send(b"?0AF6");
+    let got = t.read_until(Duration::from_secs(5), |g| g.len() >= 8);
+    assert!(got.starts_with(b"?0AF6R\r\n"), "{got:?}");
     t.send(b"?0BF5");
     let got = t.read_until(Duration::from_secs(5), |g| g.ends_with(b"?0BF5R\r\n"));
     assert!(got.ends_with(b"?0BF5R\r\n"), "{got:?}");
@@ -132,6 +134,34 @@ fn echo_on_and_off_and_every_command_in_each_mode() {
     let got = t.read_until(Duration::from_secs(5), |g| g.ends_with(b"R\r\n"));
     assert_eq!(got, b"R\r\n");
     assert_eq!(t.ask("?03FD", 99), "?03FD#06082908040001BC\r\n");
+    // Work mode: program a page by hand (as a terminal would), reset, and ask again.
+    assert_eq!(t.ask("?09F7", 99), "?09F7R\r\n");
+    for r in [Record::start(), Record::info(b"BY HAND"), Record::data(0, &[0x55; 64]), Record::end()] {
+        let text = String::from_utf8(r.encode()).unwrap();
+        assert_eq!(t.ask(&text, 999), format!("{text}R\r\n"));
+    }
+    t.send(b"?0000");
+    let got = t.read_until(Duration::from_secs(5), |g| g.ends_with(b"R\r\n"));
+    assert_eq!(got, b"?0000R\r\n", "echoed, then R after the restart");
+    // W (bit 5) set; every command answers in Work mode.
+    assert_eq!(t.ask("?03FD", 99), "?03FD#06082908042001 9C\r\n".replace(' ', ""));
+    assert_eq!(t.ask("?04FC", 99), format!("?04FC#BY HAND{}\r\n", " ".repeat(15)));
+    assert_eq!(t.ask("?05FB", 99), "?05FB#0400000000FC\r\n");
+    assert_eq!(t.ask("?06FA", 99), "?06FA#0400000000FC\r\n", "the stored binary is not executed: outputs off");
+    assert_eq!(t.ask("?07F9", 99), "?07F9#080000000000000000F8\r\n");
+    assert_eq!(t.ask("?08F8", 99), "?08F8R\r\n");
+    assert_eq!(t.ask("?0CF4", 99), "?0CF4#0403E803E826\r\n");
+    t.send(b"?0AF6");
+    let got = t.read_until(Duration::from_secs(5), |g| g.len() >= 8);
+    assert!(got.starts_with(b"?0AF6R\r\n"), "{got:?}");
+    let more = t.read_until(Duration::from_secs(5), |g| g.len() + got.len() >= 8 + MONITOR_LEN);
+    let first = [&got[8..], &more[..]].concat();
+    t.send(b"?0BF5");
+    let got = t.read_until(Duration::from_secs(5), |g| g.ends_with(b"?0BF5R\r\n"));
+    assert!(got.ends_with(b"?0BF5R\r\n"));
+    let packet = Monitor::decode(&first[..MONITOR_LEN]).expect("a monitor packet");
+    assert_ne!(packet.status & (1 << 5), 0, "W in the monitor's status word");
+    assert_eq!(t.ask("?01FF", 99), "?01FFR\r\n");
     let _ = std::fs::remove_dir_all(&srv.dir);
 }
 
@@ -157,10 +187,11 @@ fn monitor_stream_rate_and_any_command_stops_it() {
     assert_eq!(decoded, packets);
     // Any command stops it: after `?03FD` only whole packets already sent, then the reply.
     t.send(b"?03FD");
-    let tail = t.quiet(100);
-    let pos = tail.iter().position(|&b| b == b'#').expect("a reply");
+    let all = [got, t.quiet(100)].concat();
+    let pos = all.len() - 17;
+    assert_eq!(&all[pos..], b"#06102910080401A4", "monitor off again, echo off");
     assert_eq!(pos % MONITOR_LEN, 0, "whole packets before the reply");
-    assert_eq!(&tail[pos..], b"#06102910080401A4", "monitor off again, echo off");
+    assert!(all[..pos].chunks_exact(MONITOR_LEN).all(|p| Monitor::decode(p).is_some()));
     assert!(t.quiet(100).is_empty(), "nothing more: the stream stopped");
     let _ = std::fs::remove_dir_all(&srv.dir);
 }
