@@ -91,6 +91,9 @@ pub struct ProgramReport {
     pub pages: usize,
     pub bytes: usize,
     pub info: String,
+    /// The controller was running a program (Work mode) when programming began: it stopped
+    /// and its outputs went off.
+    pub was_running: bool,
 }
 
 /// A UMPK on some transport.
@@ -458,6 +461,7 @@ impl Driver {
             pages: pages.len(),
             bytes: prog.bytes.len(),
             info: info.map(|i| String::from_utf8_lossy(&i).into_owned()).unwrap_or_default(),
+            was_running: status.work,
         })
     }
 

@@ -342,6 +342,11 @@ fn program(sh: &mut Shell, dev: usize, rest: &[Word], col: usize) -> Result<Outc
     if run {
         d.reset()?;
     }
+    let stopped = if r.was_running {
+        "; the controller was in Work mode: its program stopped and its outputs went off when programming began"
+    } else {
+        ""
+    };
     let next = if run {
         "reset: the program is enabled (Work mode)"
     } else {
@@ -349,7 +354,7 @@ fn program(sh: &mut Shell, dev: usize, rest: &[Word], col: usize) -> Result<Outc
     };
     Ok(Outcome::new("umpk")
         .text(format!(
-            "programmed {} bytes in {} page(s), {} records acknowledged{}; {next}",
+            "programmed {} bytes in {} page(s), {} records acknowledged{}{stopped}; {next}",
             r.bytes,
             r.pages,
             r.records,
@@ -359,7 +364,8 @@ fn program(sh: &mut Shell, dev: usize, rest: &[Word], col: usize) -> Result<Outc
         .with("pages", r.pages)
         .with("records", r.records)
         .with("info", &r.info)
-        .with("run", run))
+        .with("run", run)
+        .with("was_running", r.was_running))
 }
 
 fn monitor(sh: &mut Shell, dev: usize, rest: &[Word]) -> Result<Outcome> {

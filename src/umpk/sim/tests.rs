@@ -252,3 +252,40 @@ fn a_runner_drives_outputs_timers_and_counters_in_work_mode() {
     u.take_all();
     assert_eq!(u.image.outputs, 0);
 }
+
+#[test]
+fn hostile_bytes_never_panic_and_cost_linear_time() {
+    let (mut u, clock) = sim("UMPK16");
+    let mut seed = 0x2545_F491u32;
+    let mut junk = Vec::with_capacity(200_000);
+    for _ in 0..200_000 {
+        seed ^= seed << 13;
+        seed ^= seed >> 17;
+        seed ^= seed << 5;
+        // Mostly protocol characters, so commands and records start and break often.
+        junk.push(b"?:0123456789ABCDEFZ\r\n\xAA"[(seed % 22) as usize]);
+    }
+    let t = std::time::Instant::now();
+    for chunk in junk.chunks(97) {
+        u.receive(chunk);
+        clock.step(Duration::from_millis(3));
+        u.take_all();
+    }
+    assert!(t.elapsed() < Duration::from_secs(20), "{:?}", t.elapsed());
+    // Still a working controller afterwards (after a reset, if the junk asked for one).
+    talk(&mut u, b"\r");
+    clock.step(RESET_TIME);
+    u.take_all();
+    talk(&mut u, b"?01FF");
+    assert!(s(&talk(&mut u, b"?03FD")).starts_with("?03FD#0610"));
+}
+
+#[test]
+fn a_year_of_idle_time_costs_one_cycle() {
+    let (mut u, clock) = sim("UMPK8");
+    u.set_input(1, true);
+    clock.step(Duration::from_secs(365 * 24 * 3600));
+    let t = std::time::Instant::now();
+    assert_eq!(s(&talk(&mut u, b"?05FB")), "?05FB#0402000000FA\r\n");
+    assert!(t.elapsed() < Duration::from_millis(100));
+}
