@@ -207,6 +207,31 @@ pub struct Scan<'a> {
 }
 
 impl Scan<'_> {
+    /// Any operand's bit, by its place in the operand table ([`crate::umpk::space::AREAS`]:
+    /// I, Q, T, C, M) — what an engine that resolved `I3` or `T0` through the UMPK's operand
+    /// space reads.
+    pub fn bit(&self, op: crate::umpk::space::UmpkOperand) -> bool {
+        let i = op.index;
+        match op.area().letter {
+            'I' => self.io.input(i),
+            'Q' => self.io.output(i),
+            'T' => bit(self.io.timers, i),
+            'C' => bit(self.io.counters, i),
+            _ => self.io.marker(i),
+        }
+    }
+
+    /// Sets an output or a marker; inputs, timers and counters are not the program's to set
+    /// (timers and counters change through [`Scan::timer`] and [`Scan::counter`]).
+    pub fn set_bit(&mut self, op: crate::umpk::space::UmpkOperand, on: bool) -> Result<(), String> {
+        match op.area().letter {
+            'Q' => self.io.set_output(op.index, on),
+            'M' => self.io.set_marker(op.index, on),
+            l => return Err(format!("{}: a program cannot assign {l} operands", op.name())),
+        }
+        Ok(())
+    }
+
     /// Runs timer `i` with `input` for this cycle; its output goes to the image (T bit).
     pub fn timer(&mut self, i: u8, input: bool) -> bool {
         let Some(t) = self.logic.timers.get_mut(i as usize) else { return false };
@@ -309,6 +334,11 @@ mod tests {
         assert!(!s.timer(15, true));
         assert!(s.timer(15, true));
         assert!(s.counter(3, true, false));
+        let op = |area, index| crate::umpk::space::UmpkOperand { area, index };
+        assert!(s.bit(op(2, 15)) && s.bit(op(3, 3)), "T15 and C3 through the operand table");
+        s.set_bit(op(4, 63), true).unwrap();
+        assert!(s.bit(op(4, 63)));
+        assert!(s.set_bit(op(0, 1), true).is_err(), "inputs are not assignable");
         assert_eq!((io.timers, io.counters), (0x8000, 0x08));
     }
 }
