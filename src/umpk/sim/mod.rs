@@ -324,10 +324,8 @@ impl Umpk {
         let target = now.as_millis() as u64 / CYCLE_MS;
         // Nothing changes from cycle to cycle (no program running, no wave, no monitor, no
         // restart pending): only the last cycle matters, so a long step costs one cycle.
-        let idle = self.waves.is_empty()
-            && !self.monitor
-            && !matches!(self.mode, Mode::Resetting(_))
-            && !(self.mode == Mode::Work && matches!(self.program, Program::Logic(_)));
+        let running = self.mode == Mode::Work && matches!(self.program, Program::Logic(_));
+        let idle = self.waves.is_empty() && !self.monitor && !matches!(self.mode, Mode::Resetting(_)) && !running;
         if idle && target > self.cycle + 1 {
             self.cycle = target - 1;
         }
