@@ -396,3 +396,22 @@ fn an_acknowledged_program_survives_kill_9() {
     assert_eq!(&u.program_info().unwrap()[..4], b"kept");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn the_driver_opens_a_controller_whose_monitor_someone_else_left_running() {
+    let srv = Server::start("stream", &[]);
+    {
+        let mut t = Raw::open(&srv.link);
+        t.send(b"?0AF6");
+        let got = t.read_until(Duration::from_secs(5), |g| g.len() >= 8 + 3 * MONITOR_LEN);
+        assert!(got.starts_with(b"?0AF6R\r\n"), "{got:?}");
+        // The lab program exits with the stream still running.
+    }
+    std::thread::sleep(Duration::from_millis(30)); // the stream goes on into the port meanwhile
+    let mut d = open(&format!("umpk:{}", srv.link.display()));
+    let u = drv(&mut d);
+    let word = u.controller_info().unwrap().status;
+    assert!(!u.layout.decode(word).monitor, "opening stopped the stream");
+    assert_eq!(u.errors().unwrap(), [0; 8], "without an overflow");
+    let _ = std::fs::remove_dir_all(&srv.dir);
+}

@@ -129,6 +129,11 @@ impl Command {
         matches!(self, Command::Reset | Command::EchoOn | Command::EchoOff | Command::Info)
     }
 
+    /// Asking again changes nothing (the driver may repeat it after a garbled reply).
+    pub fn repeatable(self) -> bool {
+        !matches!(self, Command::Reset | Command::Programming | Command::ClearErrors | Command::MonitorStart)
+    }
+
     /// The five ASCII bytes `?NNCC`.
     pub fn encode(self) -> [u8; 5] {
         command_bytes(self.code())

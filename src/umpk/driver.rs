@@ -115,6 +115,8 @@ pub struct Driver {
     rx: Vec<u8>,
     /// The controller sent a reset's `R` since this was last cleared.
     pub reset_seen: bool,
+    /// The last exchange read bytes that were no reply (and the line was then let settle).
+    garbled: bool,
 }
 
 impl Driver {
@@ -135,6 +137,7 @@ impl Driver {
             monitor_on: false,
             rx: Vec::new(),
             reset_seen: false,
+            garbled: false,
         }
     }
 
@@ -236,6 +239,7 @@ impl Driver {
                 }
                 Progress::Bad(m) => {
                     self.settle();
+                    self.garbled = true;
                     self.monitor_on = false;
                     return Err(Error::link(format!(
                         "unexpected reply to {} on {}: {m}",
@@ -264,7 +268,14 @@ impl Driver {
             _ => None,
         };
         let wait = if c == Command::Reset { RESET_TIME + self.timeout } else { self.timeout };
-        let x = self.exchange(&c.encode(), c.shape(), crlf, wait)?;
+        self.garbled = false;
+        let x = match self.exchange(&c.encode(), c.shape(), crlf, wait) {
+            // A monitor stream someone else started: our command stopped it, but the tail
+            // of a packet cut by the input flush came first. The line is quiet now (the
+            // exchange waited for that); a command that changes nothing is asked again.
+            Err(_) if self.garbled && c.repeatable() => self.exchange(&c.encode(), c.shape(), crlf, wait)?,
+            r => r?,
+        };
         if c == Command::Reset {
             self.reset_seen = false;
         }
