@@ -289,3 +289,30 @@ fn a_year_of_idle_time_costs_one_cycle() {
     assert_eq!(s(&talk(&mut u, b"?05FB")), "?05FB#0402000000FA\r\n");
     assert!(t.elapsed() < Duration::from_millis(100));
 }
+
+#[test]
+fn state_file_keeps_what_was_acknowledged() {
+    let dir = std::env::temp_dir().join(format!("plcsh-umpk-state-{}", std::process::id()));
+    let path = dir.join("u.json");
+    let _ = std::fs::remove_file(&path);
+    let (mut u, _) = sim("UMPK8");
+    u.open_state(&path).unwrap();
+    talk(&mut u, b"?02FE");
+    talk(&mut u, b"?09F7");
+    let recs = [Record::start(), Record::info(b"KEPT"), Record::data(0x40, &[9; 64]), Record::end()];
+    assert_eq!(program_records(&mut u, &recs), "R R R R");
+    u.push_error(7);
+    // A new controller on the same file powers up with the program, its info and history.
+    let (mut v, _) = sim("UMPK8");
+    v.open_state(&path).unwrap();
+    assert_eq!(v.mode(), Mode::Work);
+    assert_eq!(&v.program_info()[..4], b"KEPT");
+    assert_eq!(v.flash[0x40..0x80], [9; 64]);
+    assert_eq!(v.errors()[0], 7);
+    // Another model's file is refused; a damaged one too.
+    let (mut w, _) = sim("UMPK16");
+    assert!(w.open_state(&path).unwrap_err().message.contains("UMPK8"));
+    std::fs::write(&path, "{").unwrap();
+    assert!(v.open_state(&path).is_err());
+    let _ = std::fs::remove_dir_all(&dir);
+}
