@@ -415,3 +415,37 @@ fn the_driver_opens_a_controller_whose_monitor_someone_else_left_running() {
     assert_eq!(u.errors().unwrap(), [0; 8], "without an overflow");
     let _ = std::fs::remove_dir_all(&srv.dir);
 }
+
+#[test]
+fn each_refusal_letter_in_words_through_the_shell() {
+    let srv = Server::start("words", &["--umpk-flash-fail", "0"]);
+    let page = |a: u16, n: usize| String::from_utf8(Record::data(a, &vec![1; n]).encode()).unwrap();
+    let cases: Vec<(String, &str)> = vec![
+        (":00000002FE".into(), "X: programming is not allowed"),
+        ("?09F7".into(), "ok"),
+        (":00000002FD".into(), "E: checksum error"),
+        (":00000002FE".into(), "ok"),
+        (":020000040000FA".into(), "U: unknown command"),
+        (":00000002FE".into(), "ok"),
+        (":0100000Z00FF".into(), "C: the command contains an illegal character"),
+        (":00000002FE".into(), "ok"),
+        (page(0x40, 65), "L: the record's data is longer than allowed"),
+        (":00000002FE".into(), "ok"),
+        (page(0x0C00, 64), "A: address out of sequence or out of range"),
+        (":00000002FE".into(), "ok"),
+        (page(0, 64), "W: the flash (IAP) write failed"),
+        (":00000001FF".into(), "X: programming is not allowed"),
+        ("?05FB".into(), "U"),
+    ];
+    let script: String =
+        std::iter::once("use lab\n".to_string()).chain(cases.iter().map(|(c, _)| format!("umpk send {c}\n"))).collect();
+    let o = run(&["--json", "--device", &format!("lab=umpk:{}", srv.link.display())], &script);
+    let lines = json_lines(&o);
+    for (k, (c, want)) in cases.iter().enumerate().take(cases.len() - 1) {
+        let m = lines[k + 1]["meaning"].as_str().unwrap_or_else(|| panic!("{c}: {}", lines[k + 1]));
+        assert!(m.starts_with(want), "{c}: {m}");
+    }
+    // In Programming mode a terminal command other than the four gets U, in words too.
+    assert!(lines[cases.len()]["meaning"].as_str().unwrap().starts_with("U: unknown command"));
+    let _ = std::fs::remove_dir_all(&srv.dir);
+}
