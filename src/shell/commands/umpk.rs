@@ -247,7 +247,7 @@ fn sim(d: &mut Driver, rest: &[Word], col: usize) -> Result<Outcome> {
                 Some((o, v)) => (o, Some(v)),
                 None => (first, pos.get(1).map(|w| w.1)),
             };
-            let ops = d_space_parse(&u, op_text).map_err(|e| e.column(c))?;
+            let ops = parse_operand(&u, op_text).map_err(|e| e.column(c))?;
             let o = UmpkOperand::from_core(&ops[0]);
             if o.area().letter != 'I' {
                 return Err(value_err(c, format!("{} is not an input: the simulator's inputs are I0…", o.name())));
@@ -287,7 +287,8 @@ fn sim(d: &mut Driver, rest: &[Word], col: usize) -> Result<Outcome> {
     }
 }
 
-fn d_space_parse(u: &crate::umpk::sim::Umpk, text: &str) -> Result<Vec<crate::core::Operand>> {
+/// Parses an operand with the simulated controller's model bounds.
+fn parse_operand(u: &crate::umpk::sim::Umpk, text: &str) -> Result<Vec<crate::core::Operand>> {
     use crate::core::OperandSpace;
     crate::umpk::space::UmpkSpace { model: u.model }.parse(text)
 }
