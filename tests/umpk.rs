@@ -449,3 +449,20 @@ fn each_refusal_letter_in_words_through_the_shell() {
     assert!(lines[cases.len()]["meaning"].as_str().unwrap().starts_with("U: unknown command"));
     let _ = std::fs::remove_dir_all(&srv.dir);
 }
+
+#[test]
+fn the_lab_grading_script_fails_a_program_that_misses_a_criterion() {
+    let src = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scripts/umpk_lab1_grade.lua");
+    let code = std::fs::read_to_string(&src).unwrap();
+    let dir = std::env::temp_dir().join(format!("plcsh-umpk-{}-grade", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    // The same script expecting a 1.5 s delay: the 2.0 s reference must fail that criterion.
+    let changed = dir.join("grade.lua");
+    std::fs::write(&changed, code.replace("delay == 2000", "delay == 1500")).unwrap();
+    let o = run(&["--time", "stepped", "run", changed.to_str().unwrap()], "");
+    let out = stdout(&o);
+    assert_eq!(o.status.code(), Some(1), "{out}");
+    assert!(out.contains("FAIL  Q1 follows Q0 after 2.0 s (T0)  (2000 ms)"), "{out}");
+    assert!(out.contains("lab 1: 11 of 12 criteria"), "{out}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

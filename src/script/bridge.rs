@@ -150,6 +150,7 @@ pub const BRIDGE: &[Bridge] = &[
     row("umpk_program", "umpk", "umpk program {}"),
     row("umpk_send", "umpk", "umpk send {}"),
     row("umpk_sim_input", "umpk", "umpk sim input {}"),
+    row("umpk_sim_reference", "umpk", "umpk sim reference {}"),
 ];
 
 /// `{ms=500, every=100}` → `for=500ms every=100ms` (`for` is a Lua keyword).

@@ -32,7 +32,7 @@ use std::time::Duration;
 pub const UMPK: CommandSpec = CommandSpec {
     name: "umpk",
     aliases: &[],
-    usage: "umpk [DEVICE] info|program-info|errors [clear]|timing|reset|echo on|off|monitor [OPERAND…] [count=N] [for=2s] [every=100ms] [quiet]|program FILE.hex [info=\"…\"] [run]|send TEXT|sim input I3=1|I3 freq=2Hz|I3 off|sim flash-fail PAGE|off",
+    usage: "umpk [DEVICE] info|program-info|errors [clear]|timing|reset|echo on|off|monitor [OPERAND…] [count=N] [for=2s] [every=100ms] [quiet]|program FILE.hex [info=\"…\"] [run]|send TEXT|sim input I3=1|I3 freq=2Hz|I3 off|sim flash-fail PAGE|off|sim reference [NAME]",
     summary: "UMPK8/UMPK16 teaching PLCs: controller and program info, error history, timing, reset, echo, real-time monitor, Intel HEX programming",
     subcommands: &["info", "program-info", "errors", "timing", "reset", "echo", "monitor", "program", "send", "sim"],
     run: umpk,
@@ -271,6 +271,24 @@ fn sim(d: &mut Driver, rest: &[Word], col: usize) -> Result<Outcome> {
             };
             Ok(Outcome::new("umpk").text(msg))
         }
+        Some("reference") => {
+            use crate::umpk::sim::reference;
+            let Some(&(c, name)) = pos.first() else {
+                let list: Vec<String> =
+                    reference::REFERENCES.iter().map(|r| format!("{}: {}", r.name, r.description)).collect();
+                return Ok(Outcome::new("umpk").text(list.join("\n")).with("references", reference::names()));
+            };
+            let r = reference::find(name).ok_or_else(|| {
+                value_err(c, format!("no reference program `{name}`"))
+                    .hint(format!("reference programs: {}", reference::names()))
+            })?;
+            let runner = (r.build)(&mut u.logic);
+            u.load_logic(runner);
+            Ok(Outcome::new("umpk")
+                .text(format!("reference program {} loaded ({}); mode {}", r.name, r.description, u.mode().name()))
+                .with("program", r.name)
+                .with("mode", u.mode().name()))
+        }
         Some("flash-fail") => {
             let page = match pos.first().map(|w| w.1) {
                 Some("off") => None,
@@ -283,7 +301,7 @@ fn sim(d: &mut Driver, rest: &[Word], col: usize) -> Result<Outcome> {
                 None => "flash writes succeed".into(),
             }))
         }
-        _ => Err(Error::usage("umpk sim input …|flash-fail …").column(col).hint(UMPK.usage)),
+        _ => Err(Error::usage("umpk sim input …|flash-fail …|reference …").column(col).hint(UMPK.usage)),
     }
 }
 

@@ -84,14 +84,16 @@ pub struct OnDelay {
     pub group: Group,
     /// 1–255 steps of the group.
     pub steps: u8,
-    /// Cycles the input has been on.
+    /// Cycles since the input turned on (0 in the cycle it turned on).
     pub elapsed: u32,
+    /// The input was on in the previous cycle.
+    pub input: bool,
     pub q: bool,
 }
 
 impl Default for OnDelay {
     fn default() -> Self {
-        OnDelay { group: Group::Ms10, steps: 1, elapsed: 0, q: false }
+        OnDelay { group: Group::Ms10, steps: 1, elapsed: 0, input: false, q: false }
     }
 }
 
@@ -99,13 +101,15 @@ impl OnDelay {
     pub fn preset_cycles(&self) -> u32 {
         self.steps.max(1) as u32 * self.group.cycles()
     }
-    /// One cycle with `input`; returns the output.
+    /// One cycle with `input`; returns the output. The output turns on `preset` after the
+    /// cycle in which the input turned on (a 2.0 s timer: 200 cycles later).
     pub fn update(&mut self, input: bool) -> bool {
-        if input {
+        if input && self.input {
             self.elapsed = (self.elapsed + 1).min(self.preset_cycles());
         } else {
             self.elapsed = 0;
         }
+        self.input = input;
         self.q = input && self.elapsed >= self.preset_cycles();
         self.q
     }
@@ -190,6 +194,7 @@ impl Logic {
     pub fn clear(&mut self) {
         for t in &mut self.timers {
             t.elapsed = 0;
+            t.input = false;
             t.q = false;
         }
         for c in &mut self.counters {
@@ -292,13 +297,14 @@ mod tests {
             [(Group::Ms10, 1, 1), (Group::Ms10, 255, 255), (Group::Ms100, 15, 150), (Group::S1, 2, 200)]
         {
             let mut t = OnDelay { group, steps, ..OnDelay::default() };
+            assert!(!t.update(true), "{group:?} {steps}: the input turns on");
             for k in 1..cycles {
                 assert!(!t.update(true), "{group:?} {steps}: cycle {k}");
             }
-            assert!(t.update(true), "{group:?} {steps}: on after {cycles} cycles");
+            assert!(t.update(true), "{group:?} {steps}: on {cycles} cycles after the input");
             assert!(t.update(true));
             assert!(!t.update(false), "off at once");
-            assert_eq!(t.update(true), cycles == 1, "starts over");
+            assert!(!t.update(true), "starts over");
         }
     }
 
@@ -331,6 +337,7 @@ mod tests {
         assert!(logic.set_timer(16, Group::Ms10, 2).is_err());
         assert!(logic.set_ratio(0, 0).is_err());
         let mut s = Scan { io: &mut io, logic: &mut logic, cycle: 0 };
+        assert!(!s.timer(15, true));
         assert!(!s.timer(15, true));
         assert!(s.timer(15, true));
         assert!(s.counter(3, true, false));
