@@ -10,7 +10,10 @@
 //!   mode, and the `R` CR LF a reset or power-up sends (echo on again) is recognised;
 //! - monitor packets already on their way when a command goes out are skipped (any
 //!   command stops the monitor, §4.1.12);
-//! - every refusal letter becomes a sentence ([`codec::letter_text`]), with what to try.
+//! - every refusal letter becomes a sentence ([`codec::letter_text`]), with what to try;
+//! - bytes that are no reply (the tail of a monitor packet cut by the input flush, when
+//!   someone else left the monitor running) are waited out until the line is quiet, and a
+//!   command that changes nothing is asked once more.
 //!
 //! Reading operands: `I…` and `Q…` come from `?05FB`/`?06FA`; `T…`, `C…` and `M…` only from
 //! the real-time monitor (one packet: start, read, stop). The terminal protocol has no
@@ -746,6 +749,58 @@ mod tests {
             let Reply::Letter(l) = x.reply else { panic!("{raw}: {:?}", x.reply) };
             assert!(codec::letter_text(l).starts_with(letter), "{raw}");
         }
+    }
+
+    /// A transport that puts `junk` in front of the first thing the controller sends after
+    /// the first command (arriving after the driver flushed its input).
+    struct Junk(SimLink, Vec<u8>, bool);
+
+    impl Transport for Junk {
+        fn send(&mut self, bytes: &[u8]) -> io::Result<()> {
+            self.2 = true;
+            self.0.send(bytes)
+        }
+        fn recv(&mut self, buf: &mut [u8], t: Duration) -> io::Result<usize> {
+            if self.2 && !self.1.is_empty() {
+                let n = self.1.len().min(buf.len());
+                buf[..n].copy_from_slice(&self.1[..n]);
+                self.1.drain(..n);
+                return Ok(n);
+            }
+            self.0.recv(buf, t)
+        }
+    }
+
+    #[test]
+    fn a_garbled_reply_is_waited_out_and_a_repeatable_command_asked_again() {
+        let clock = Clock::stepped();
+        let sim = Arc::new(Mutex::new(Umpk::new(&model::MODELS[1], clock.clone())));
+        // The last 12 bytes of a monitor packet: no reply starts like that.
+        let tail = codec::Monitor::default().encode()[18..].to_vec();
+        let info = DeviceInfo { family: "umpk", model: "UMPK16".into(), link: "junk".into(), simulated: true };
+        let mut d = Driver::attach(
+            Box::new(Junk(SimLink::new(sim.clone()), tail.clone(), false)),
+            "junk",
+            &model::MODELS[1],
+            info,
+        );
+        d.clock = clock.clone();
+        d.in_process = true;
+        assert_eq!(d.controller_info().unwrap().inputs, 16);
+        assert_eq!(d.requests, 2, "asked twice");
+        // A command that changes something is not repeated: the error is reported.
+        let mut d = Driver::attach(
+            Box::new(Junk(SimLink::new(sim), tail, false)),
+            "junk",
+            &model::MODELS[1],
+            DeviceInfo { family: "umpk", model: "UMPK16".into(), link: "junk".into(), simulated: true },
+        );
+        d.clock = clock;
+        d.in_process = true;
+        let e = d.clear_errors().unwrap_err();
+        assert_eq!(e.kind, ErrorKind::Link);
+        assert!(e.message.contains("unexpected reply"), "{e}");
+        assert_eq!(d.requests, 1);
     }
 
     #[test]
