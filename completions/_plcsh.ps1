@@ -116,7 +116,7 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             [CompletionResult]::new('--umpk-model', '--umpk-model', [CompletionResultType]::ParameterName, 'The simulated UMPK''s model (UMPK8 or UMPK16)')
             [CompletionResult]::new('--umpk-status-bits', '--umpk-status-bits', [CompletionResultType]::ParameterName, 'Bit numbers of W,H,R,E,P,T in the UMPK''s status word')
             [CompletionResult]::new('--umpk-flash-fail', '--umpk-flash-fail', [CompletionResultType]::ParameterName, 'Make the simulated UMPK''s flash write fail on this 64-byte page (programming gets `W`)')
-            [CompletionResult]::new('--umpk-state', '--umpk-state', [CompletionResultType]::ParameterName, 'Keep the simulated UMPK''s flash, program info and error history in FILE (durable)')
+            [CompletionResult]::new('--umpk-state', '--umpk-state', [CompletionResultType]::ParameterName, 'Where the simulated UMPK keeps its flash, program info and error history (default: one file per model and link in the user''s data directory; `none` keeps nothing)')
             [CompletionResult]::new('--model', '--model', [CompletionResultType]::ParameterName, 'Model of the default simulated PLC')
             [CompletionResult]::new('-d', '-d', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
             [CompletionResult]::new('--device', '--device', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')

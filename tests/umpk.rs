@@ -466,3 +466,24 @@ fn the_lab_grading_script_fails_a_program_that_misses_a_criterion() {
     assert!(out.contains("lab 1: 11 of 12 criteria"), "{out}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn a_served_umpk_keeps_its_program_by_default_unless_told_none() {
+    let p = plcsh::umpk::hex::parse_file(":0100000042BD\n:00000001FF\n", 3072).unwrap();
+    let srv = Server::start("default-state", &[]);
+    let state = std::path::PathBuf::from(srv.served.ready["umpk_state"].as_str().unwrap());
+    assert!(state.starts_with(std::env::temp_dir()), "inside the test's private HOME: {}", state.display());
+    {
+        let mut d = open(&format!("umpk:{}", srv.link.display()));
+        drv(&mut d).program(&p, Some(b"again"), &mut |_, _| {}).unwrap();
+    }
+    drop(srv);
+    let srv = Server::start("default-state", &[]);
+    assert_eq!(srv.served.ready["umpk_mode"], "Work", "the same link powers up with its program");
+    drop(srv);
+    let srv = Server::start("default-state", &["--umpk-state", "none"]);
+    assert_eq!(srv.served.ready["umpk_mode"], "Wait");
+    assert!(srv.served.ready["umpk_state"].is_null());
+    let _ = std::fs::remove_file(&state);
+    let _ = std::fs::remove_dir_all(&srv.dir);
+}

@@ -82,7 +82,8 @@ pub struct ServeArgs {
     /// Make the simulated UMPK's flash write fail on this 64-byte page (programming gets `W`).
     #[arg(long = "umpk-flash-fail", value_name = "PAGE")]
     pub umpk_flash_fail: Option<u16>,
-    /// Keep the simulated UMPK's flash, program info and error history in FILE (durable).
+    /// Where the simulated UMPK keeps its flash, program info and error history (default: one
+    /// file per model and link in the user's data directory; `none` keeps nothing).
     #[arg(long = "umpk-state", value_name = "FILE")]
     pub umpk_state: Option<PathBuf>,
 }

@@ -131,7 +131,7 @@ pub struct Umpk {
     /// Flash page whose write fails (`W`), for tests and labs.
     pub flash_fail: Option<usize>,
     /// Where the flash, program info and error history are kept ([`state`]).
-    state_path: Option<std::path::PathBuf>,
+    pub state_path: Option<std::path::PathBuf>,
     rx: Vec<u8>,
     /// Pending output: byte, virtual time its transmission completes, part of a reply.
     out: VecDeque<(u8, Duration, bool)>,

@@ -32,6 +32,10 @@ pub struct Ready {
     /// The symlink pointing at it.
     pub umpk_link: Option<PathBuf>,
     pub umpk_model: &'static str,
+    /// Work or Wait at start (Work when the state file holds a program).
+    pub umpk_mode: &'static str,
+    /// The state file keeping the flash, if any.
+    pub umpk_state: Option<PathBuf>,
 }
 
 fn lock(sim: &Mutex<Umpk>) -> std::sync::MutexGuard<'_, Umpk> {
@@ -111,12 +115,33 @@ pub fn serve_pty(
     let mut u = Umpk::new(model, clock);
     setup(&mut u)?;
     let sim = Arc::new(Mutex::new(u));
-    ready(&Ready { umpk_pty: path, umpk_link: link.map(Path::to_path_buf), umpk_model: model.name });
+    let (umpk_mode, umpk_state) = {
+        let u = lock(&sim);
+        (u.mode().name(), u.state_path.clone())
+    };
+    ready(&Ready {
+        umpk_pty: path,
+        umpk_link: link.map(Path::to_path_buf),
+        umpk_model: model.name,
+        umpk_mode,
+        umpk_state,
+    });
     let r = serve_fd(&mut master, &slave, &sim, stop);
     if let Some(l) = link {
         let _ = std::fs::remove_file(l);
     }
     r
+}
+
+/// Where a served UMPK keeps its flash unless `--umpk-state` says otherwise: one file per
+/// model and link in the user's data directory, so the controller served at the same link
+/// powers up with the program it was given last time (as a real one does).
+pub fn default_state(link: &Path, model: &Model) -> Option<PathBuf> {
+    let abs = std::path::absolute(link).unwrap_or_else(|_| link.to_path_buf());
+    let key: String =
+        abs.to_string_lossy().chars().map(|c| if c.is_ascii_alphanumeric() || c == '-' { c } else { '_' }).collect();
+    directories::ProjectDirs::from("", "", "plcsh")
+        .map(|d| d.data_dir().join("umpk").join(format!("{}{key}.json", model.name)))
 }
 
 /// `--umpk-model`: a model name from the table.
@@ -140,13 +165,18 @@ pub struct Options {
 /// once the pty is open, with its fields for the readiness line. `stop` ends it.
 pub async fn spawn(o: Options, stop: Arc<AtomicBool>) -> Result<serde_json::Map<String, serde_json::Value>> {
     let (model, layout) = (o.model, o.layout);
+    let state = match o.state {
+        Some(p) if p.as_os_str() == "none" => None,
+        Some(p) => Some(p),
+        None => default_state(&o.link, model),
+    };
     let (tx, rx) = tokio::sync::oneshot::channel::<Result<serde_json::Value>>();
     std::thread::spawn(move || {
         let mut tx = Some(tx);
         let setup = |u: &mut Umpk| {
             u.layout = layout;
             u.flash_fail = o.flash_fail;
-            match &o.state {
+            match &state {
                 Some(p) => u.open_state(p),
                 None => Ok(()),
             }
