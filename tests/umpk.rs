@@ -487,3 +487,42 @@ fn a_served_umpk_keeps_its_program_by_default_unless_told_none() {
     let _ = std::fs::remove_file(&state);
     let _ = std::fs::remove_dir_all(&srv.dir);
 }
+
+#[test]
+fn lua_connects_to_a_served_umpk_and_calls_each_method() {
+    let srv = Server::start("lua", &["--umpk-state", "none"]);
+    let hex = hex_file(&srv.dir, "l.hex", &[Record::data(0, &[1; 40]), Record::end()]);
+    let script = srv.dir.join("t.lua");
+    std::fs::write(
+        &script,
+        format!(
+            r#"
+local lab = plcsh.connect("umpk:{link}", "lab")
+plcsh.assert_eq(lab:umpk_info().mode, "Wait")
+plcsh.assert_eq(lab:umpk_program_info().program_info, string.rep(" ", 22))
+plcsh.assert_eq(lab:umpk_errors().codes, {{}})
+lab:umpk_clear_errors()
+plcsh.assert_near(lab:umpk_timing().firmware_us, 271.0, 1e-6)
+plcsh.assert_eq(lab:umpk_echo("off").echo, false)
+plcsh.assert_eq(lab:umpk_send("?03FD").echoed, false)
+local m = lab:umpk_monitor("I0", "Q0", {{count = 5}})
+plcsh.assert_eq({{m.samples, #m.columns.I0}}, {{5, 5}})
+local p = lab:umpk_program("{hex}", {{info = "FROM LUA", run = true}})
+plcsh.assert_eq({{p.pages, p.bytes, p.run}}, {{1, 40, true}})
+plcsh.assert_eq(lab:umpk_info().mode, "Work")
+plcsh.assert_eq(lab:umpk_program_info().program_info, "FROM LUA" .. string.rep(" ", 14))
+lab:umpk_reset()
+local ok, err = pcall(function() return lab:umpk_sim_input("I3=1") end)
+plcsh.check(not ok and tostring(err):find("works on the simulator"), "a real port has no simulated inputs", tostring(err))
+print("lua ok")
+"#,
+            link = srv.link.display(),
+            hex = hex.display()
+        ),
+    )
+    .unwrap();
+    let o = run(&["run", script.to_str().unwrap()], "");
+    assert!(o.status.success(), "{}\n{}", stdout(&o), String::from_utf8_lossy(&o.stderr));
+    assert!(stdout(&o).contains("lua ok"));
+    let _ = std::fs::remove_dir_all(&srv.dir);
+}
