@@ -481,7 +481,12 @@ impl Driver {
 
     /// Finds the echo mode and the model: the first exchange at open.
     fn identify(&mut self, want: Option<&'static Model>) -> Result<()> {
-        let info = self.controller_info()?;
+        // A controller just powered up or reset is silent for ~0.6 s: wait that out too.
+        let saved = self.timeout;
+        self.timeout += RESET_TIME;
+        let info = self.controller_info();
+        self.timeout = saved;
+        let info = info?;
         let found = model::from_info(info.model, info.inputs).ok_or_else(|| {
             Error::unsupported(format!(
                 "the controller reports model {:02X} with {} inputs and {} outputs, which is none of {}",

@@ -399,10 +399,14 @@ fn monitor(sh: &mut Shell, dev: usize, rest: &[Word]) -> Result<Outcome> {
             })
             .transpose()
     };
-    let count: Option<u64> = opt(&opts, "count")
+    let mut count: Option<u64> = opt(&opts, "count")
         .map(|(c, v)| v.parse().map_err(|_| value_err(c, format!("count={v} is not a number"))))
         .transpose()?;
     let span = dur("for")?;
+    if quiet && count.is_none() && span.is_none() {
+        // Nothing is shown while it runs (Lua): one sample unless told otherwise.
+        count = Some(1);
+    }
     let mode = if sh.style.json {
         Mode::Json
     } else if std::io::stdout().is_terminal() && !quiet {
