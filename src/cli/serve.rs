@@ -20,6 +20,9 @@
 //! A simulated FX PLC's programming port and computer link go on ptys of their own (`--fx-pty
 //! LINK --fx-link-pty LINK2`, one shared memory; the logic is `fx::sim`).
 //!
+//! A simulated UMPK teaching PLC is served on a pseudo-terminal too (`--umpk-pty LINK
+//! --umpk-model UMPK16`; the logic is `umpk::sim::serve`); it shares the servo line's stop flag.
+//!
 //! Shape: each served family adds its endpoints in its own function ([`serve_k2`],
 //! [`serve_servo`]) — it binds, spawns its tasks and adds its fields to the readiness line.
 
@@ -95,6 +98,22 @@ pub struct ServeArgs {
     /// The computer link's station number (0–31).
     #[arg(long = "fx-station", value_name = "N", default_value_t = 0)]
     pub fx_station: u8,
+    /// Serve a simulated UMPK teaching PLC on a new pseudo-terminal; LINK becomes a symlink to it.
+    #[arg(long = "umpk-pty", value_name = "LINK")]
+    pub umpk_pty: Option<PathBuf>,
+    /// The simulated UMPK's model (UMPK8 or UMPK16).
+    #[arg(long = "umpk-model", value_name = "MODEL", default_value = "UMPK16", value_parser = crate::umpk::sim::serve::parse_model)]
+    pub umpk_model: &'static crate::umpk::model::Model,
+    /// Bit numbers of W,H,R,E,P,T in the UMPK's status word.
+    #[arg(long = "umpk-status-bits", value_name = "W,H,R,E,P,T", default_value = "5,4,3,2,1,0", value_parser = crate::umpk::codec::StatusLayout::parse)]
+    pub umpk_status_bits: crate::umpk::codec::StatusLayout,
+    /// Make the simulated UMPK's flash write fail on this 64-byte page (programming gets `W`).
+    #[arg(long = "umpk-flash-fail", value_name = "PAGE")]
+    pub umpk_flash_fail: Option<u16>,
+    /// Where the simulated UMPK keeps its flash, program info and error history (default: one
+    /// file per model and link in the user's data directory; `none` keeps nothing).
+    #[arg(long = "umpk-state", value_name = "FILE")]
+    pub umpk_state: Option<PathBuf>,
 }
 
 impl ServeArgs {
@@ -260,7 +279,12 @@ fn until_stopped() -> std::io::Result<impl std::future::Future<Output = ()>> {
 }
 
 async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
-    if !args.serves_k2() && args.servo_pty.is_none() && args.fx_pty.is_none() && args.fx_link_pty.is_none() {
+    if !args.serves_k2()
+        && args.servo_pty.is_none()
+        && args.fx_pty.is_none()
+        && args.fx_link_pty.is_none()
+        && args.umpk_pty.is_none()
+    {
         return Err(Error::usage("sim serve needs at least one transport")
             .hint("e.g. plcsh sim serve --tcp 127.0.0.1:5020 --rtu-pty /tmp/k2 --rtu-tcp 0 --servo-pty /tmp/kinco"));
     }
@@ -289,6 +313,16 @@ async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
         crate::fx::sim::serve_ptys(fx.0.clone(), fx.1.clone(), &args.fx_model, args.fx_station, &servo_stop).await?,
     );
     cleanup.links.extend(fx.0.into_iter().chain(fx.1));
+    if let Some(link) = &args.umpk_pty {
+        let u = crate::umpk::sim::serve::Options {
+            link: link.clone(),
+            model: args.umpk_model,
+            layout: args.umpk_status_bits,
+            flash_fail: args.umpk_flash_fail.map(usize::from),
+            state: args.umpk_state.clone(),
+        };
+        ready.extend(crate::umpk::sim::serve::spawn(u, servo_stop.clone()).await?);
+    }
     serde_json::to_writer(&mut *out, &ready).map_err(|e| Error::io("cannot print the readiness line").cause(e))?;
     writeln!(out)?;
     out.flush()?;

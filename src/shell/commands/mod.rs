@@ -17,6 +17,7 @@ mod servo;
 mod sim;
 mod siminputs;
 mod trend;
+mod umpk;
 mod watch;
 
 use super::{Args, Shell};
@@ -48,6 +49,7 @@ pub const COMMANDS: &[CommandSpec] = &[
     trend::TRACE,
     trend::PLOT,
     servo::SERVO,
+    umpk::UMPK,
     pulse::PLS,
     pulse::PSTOP,
     pulse::PTO,
