@@ -37,6 +37,7 @@ use super::operand::K2Operand;
 use super::space::K2Space;
 use crate::core::link::fd_stream::FdStream;
 use crate::core::link::traced::Traced;
+use crate::core::trace::Proto;
 use crate::core::url::DeviceUrl;
 use crate::core::{Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
 use std::collections::HashMap;
@@ -247,7 +248,8 @@ impl K2Wire {
         T: tokio::io::AsyncRead + tokio::io::AsyncWrite + Send + Unpin + 'static,
     {
         let mut dev = K2Wire::with_link(Link::Attached { rtu }, model, settings, name.clone())?;
-        let t = Traced::new(transport, name);
+        let proto = if rtu { Proto::ModbusRtu } else { Proto::ModbusTcp };
+        let t = Traced::with_proto(transport, name, proto, "attached stream");
         let slave = Slave(dev.settings.unit);
         dev.ctx = Some(if rtu {
             tokio_modbus::client::rtu::attach_slave(t, slave)
@@ -280,7 +282,8 @@ impl K2Wire {
                             )
                         })?;
                     stream.set_nodelay(true).map_err(|e| Error::link("cannot set TCP_NODELAY").cause(e))?;
-                    let t = Traced::new(stream, name);
+                    let proto = if matches!(link, Link::Tcp { .. }) { Proto::ModbusTcp } else { Proto::RtuOverTcp };
+                    let t = Traced::with_proto(stream, name, proto, addr);
                     Ok(if matches!(link, Link::Tcp { .. }) {
                         tokio_modbus::client::tcp::attach_slave(t, slave)
                     } else {
@@ -305,7 +308,8 @@ impl K2Wire {
                         })?;
                     let stream = FdStream::new(port)
                         .map_err(|e| Error::link(format!("cannot register the serial port {path}")).cause(e))?;
-                    Ok(tokio_modbus::client::rtu::attach_slave(Traced::new(stream, name), slave))
+                    let t = Traced::with_proto(stream, name, Proto::ModbusRtu, path);
+                    Ok(tokio_modbus::client::rtu::attach_slave(t, slave))
                 }
             }
         });
