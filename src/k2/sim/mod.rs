@@ -14,6 +14,7 @@ pub mod hsc;
 pub mod inputs;
 pub mod pto;
 pub mod rtc;
+pub mod snapshot;
 pub mod state;
 
 pub mod modbus_server;

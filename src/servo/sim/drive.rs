@@ -22,7 +22,7 @@ use crate::servo::objects::{self, Access, Object};
 use std::collections::HashMap;
 
 /// What the drive is doing, beyond the profile itself.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 enum Task {
     /// Holding position (nothing commanded).
     Idle,
@@ -352,5 +352,64 @@ impl Drive {
             accel_from_dec(self.stored("homing_acceleration") as f64),
         );
         self.task = Task::Homing;
+    }
+}
+/// A drive's complete state for snapshots (`crate::snapshot`): object values, the DS402
+/// state machine, the motion in progress, faults and homing.
+#[derive(Clone, Debug, serde::Serialize, serde::Deserialize)]
+pub struct DriveState {
+    pub id: u8,
+    /// `(index, sub, raw value)`, sorted.
+    values: Vec<(u16, u8, u32)>,
+    state: State,
+    motion: Motion,
+    task: Task,
+    commanded: f64,
+    last_cw: u16,
+    setpoint_ack: bool,
+    fault: Option<u16>,
+    homed: bool,
+    homing_error: bool,
+    home_switch: f64,
+    saves: u32,
+}
+
+impl Drive {
+    pub fn save(&self) -> DriveState {
+        let mut values: Vec<(u16, u8, u32)> = self.values.iter().map(|(&(i, s), &v)| (i, s, v)).collect();
+        values.sort_unstable();
+        DriveState {
+            id: self.id,
+            values,
+            state: self.state,
+            motion: self.motion.clone(),
+            task: self.task,
+            commanded: self.commanded,
+            last_cw: self.last_cw,
+            setpoint_ack: self.setpoint_ack,
+            fault: self.fault,
+            homed: self.homed,
+            homing_error: self.homing_error,
+            home_switch: self.home_switch,
+            saves: self.saves,
+        }
+    }
+
+    pub fn from_state(s: DriveState) -> Drive {
+        Drive {
+            id: s.id,
+            values: s.values.into_iter().map(|(i, sub, v)| ((i, sub), v)).collect(),
+            state: s.state,
+            motion: s.motion,
+            task: s.task,
+            commanded: s.commanded,
+            last_cw: s.last_cw,
+            setpoint_ack: s.setpoint_ack,
+            fault: s.fault,
+            homed: s.homed,
+            homing_error: s.homing_error,
+            home_switch: s.home_switch,
+            saves: s.saves,
+        }
     }
 }

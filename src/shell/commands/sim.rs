@@ -1,6 +1,7 @@
 //! `sim time`, `sim step DURATION`, `sim run`: the session's virtual clock; `sim input`,
 //! `sim quad`, `sim inputs`: simulated signals on the PLC's inputs for the high-speed
-//! counters; `sim retain`: battery-retained ranges.
+//! counters; `sim retain`: battery-retained ranges; `sim snapshot`, `sim snapshots`: saved
+//! simulator states.
 
 use super::CommandSpec;
 use crate::core::clock::format_time;
@@ -13,9 +14,9 @@ use std::time::Duration;
 pub const SIM: CommandSpec = CommandSpec {
     name: "sim",
     aliases: &[],
-    usage: "sim time | sim step DURATION | sim run | sim input I0.1 freq=1kHz [dir=up|down] | sim input I0.1 off | sim quad A B freq=1kHz | sim inputs | sim retain RANGES|none",
-    summary: "the simulator's clock (show, step and keep stepped, follow the wall clock), input signals for the counters, retained ranges",
-    subcommands: &["time", "step", "run", "input", "quad", "inputs", "retain"],
+    usage: "sim time | sim step DURATION | sim run | sim input I0.1 freq=1kHz [dir=up|down] | sim input I0.1 off | sim quad A B freq=1kHz | sim inputs | sim retain RANGES|none | sim snapshot save|restore NAME | sim snapshots",
+    summary: "the simulator's clock (show, step and keep stepped, follow the wall clock), input signals for the counters, retained ranges, snapshots of the simulated state",
+    subcommands: &["time", "step", "run", "input", "quad", "inputs", "retain", "snapshot", "snapshots"],
     run: sim,
 };
 
@@ -37,6 +38,7 @@ fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
         }
         "run" => clock.run(),
         "input" | "quad" | "inputs" | "retain" => return super::siminputs::run(sh, sub, args),
+        "snapshot" | "snapshots" => return super::snapshot::run(sh, sub, it.collect(), args.offset),
         other => return Err(Error::usage(format!("unknown `sim {other}`")).hint(SIM.usage).column(args.offset)),
     }
     let now = clock.now();
