@@ -53,6 +53,10 @@ fn main() {
     let (a, b) = (n / plain, n / recorded);
     println!("transactions/s without recording: {a:.0}");
     println!("transactions/s while recording:   {b:.0}");
-    println!("recording costs {:.1} % ({} rounds × {count} reads of VW100, interleaved)", (a / b - 1.0) * 100.0, rounds);
+    println!(
+        "recording costs {:.1} % ({} rounds × {count} reads of VW100, interleaved)",
+        (a / b - 1.0) * 100.0,
+        rounds
+    );
     let _ = std::fs::remove_file(&file);
 }
