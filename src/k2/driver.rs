@@ -137,6 +137,8 @@ pub struct K2Wire {
     agent: Option<AgentClient>,
     /// SM bytes as last read or written through the helper.
     sm_shadow: Memory,
+    /// The PLC closed the current connection (set by the traced stream).
+    peer_closed: std::sync::Arc<std::sync::atomic::AtomicBool>,
 }
 
 /// A read batch mapped and planned (everything but the wire).
@@ -237,6 +239,7 @@ impl K2Wire {
             last_read: None,
             agent: None,
             sm_shadow: sm::shadow(catalog::SM_BYTES),
+            peer_closed: Default::default(),
         })
     }
 
@@ -268,6 +271,8 @@ impl K2Wire {
         let name = self.info.link.clone();
         let timeout = self.settings.timeout;
         let link = self.link.clone();
+        self.peer_closed.store(false, std::sync::atomic::Ordering::Relaxed);
+        let closed = self.peer_closed.clone();
         let ctx: Result<Context> = self.rt.block_on(async move {
             match &link {
                 Link::Tcp { addr } | Link::RtuOverTcp { addr } => {
@@ -283,7 +288,7 @@ impl K2Wire {
                         })?;
                     stream.set_nodelay(true).map_err(|e| Error::link("cannot set TCP_NODELAY").cause(e))?;
                     let proto = if matches!(link, Link::Tcp { .. }) { Proto::ModbusTcp } else { Proto::RtuOverTcp };
-                    let t = Traced::with_proto(stream, name, proto, addr);
+                    let t = Traced::with_proto(stream, name, proto, addr).watch_eof(closed);
                     Ok(if matches!(link, Link::Tcp { .. }) {
                         tokio_modbus::client::tcp::attach_slave(t, slave)
                     } else {
@@ -346,7 +351,14 @@ impl K2Wire {
                 Ok(Err(e)) => {
                     // Dropped connection, garbled or mismatched reply: start afresh.
                     self.ctx = None;
-                    last = Some(Failure::Link(Error::link("the link failed").cause(e)));
+                    last = Some(Failure::Link(if self.peer_closed.load(std::sync::atomic::Ordering::Relaxed) {
+                        // tokio-modbus reports end of file with a stale OS error; the stream saw it.
+                        Error::link("the PLC closed the connection instead of replying").hint(
+                            "plcsh reconnects and retries (retries=); if it keeps happening, check the PLC's limit on Modbus TCP connections and whether another client or a gateway takes the connection over",
+                        )
+                    } else {
+                        Error::link("the link failed").cause(e)
+                    }));
                 }
                 Err(_) => {
                     self.ctx = None;

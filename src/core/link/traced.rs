@@ -12,6 +12,7 @@ use crate::core::trace::{self, Dir, Proto};
 use std::fmt;
 use std::io;
 use std::pin::Pin;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 use std::task::{Context, Poll};
 use tokio::io::{AsyncRead, AsyncWrite, ReadBuf};
@@ -21,18 +22,27 @@ pub struct Traced<T> {
     inner: T,
     link: Arc<str>,
     proto: Proto,
+    /// Set when the peer closes the stream (a read returns end of file): protocol stacks
+    /// that report that badly (tokio-modbus's TCP client) can then be diagnosed by the driver.
+    eof: Option<Arc<AtomicBool>>,
 }
 
 impl<T> Traced<T> {
     pub fn new(inner: T, link: impl Into<Arc<str>>) -> Traced<T> {
-        Traced { inner, link: link.into(), proto: Proto::Unknown }
+        Traced { inner, link: link.into(), proto: Proto::Unknown, eof: None }
     }
 
     /// A stream carrying `proto` to `peer`; reports the connection as opened.
     pub fn with_proto(inner: T, link: impl Into<Arc<str>>, proto: Proto, peer: &str) -> Traced<T> {
         let link = link.into();
         trace::opened(&link, proto, peer);
-        Traced { inner, link, proto }
+        Traced { inner, link, proto, eof: None }
+    }
+
+    /// Raises `flag` when the peer closes the stream.
+    pub fn watch_eof(mut self, flag: Arc<AtomicBool>) -> Traced<T> {
+        self.eof = Some(flag);
+        self
     }
 }
 
@@ -53,11 +63,16 @@ impl<T> fmt::Debug for Traced<T> {
 impl<T: AsyncRead + Unpin> AsyncRead for Traced<T> {
     fn poll_read(mut self: Pin<&mut Self>, cx: &mut Context<'_>, buf: &mut ReadBuf<'_>) -> Poll<io::Result<()>> {
         let before = buf.filled().len();
+        let room = buf.remaining() > 0;
         let r = Pin::new(&mut self.inner).poll_read(cx, buf);
         if let Poll::Ready(Ok(())) = r {
             let new = &buf.filled()[before..];
             if !new.is_empty() {
                 trace::frame_proto(&self.link, self.proto, Dir::Received, new);
+            } else if room {
+                if let Some(f) = &self.eof {
+                    f.store(true, Ordering::Relaxed);
+                }
             }
         }
         r

@@ -57,6 +57,9 @@ pub struct K2State {
     pub rtc: Rtc,
     pub backup: BackupState,
     pub agent: Option<Agent>,
+    /// Injected faults and their schedule.
+    #[serde(default)]
+    pub faults: super::fault::Faults,
 }
 
 fn ns(d: Duration) -> u64 {
@@ -99,6 +102,7 @@ impl K2Sim {
                 since_ns: ns(self.backup.since),
             },
             agent: self.agent,
+            faults: self.faults.clone(),
         }
     }
 
@@ -165,6 +169,7 @@ impl K2Sim {
         self.backup.retain = retain;
         self.backup.since = Duration::from_nanos(s.backup.since_ns);
         self.agent = s.agent;
+        self.faults = s.faults.clone();
         self.start = Duration::from_nanos(s.start_ns);
         self.last = Duration::from_nanos(s.last_ns);
         Ok(())

@@ -6,6 +6,7 @@ mod counter;
 mod device;
 mod eeprom;
 mod events;
+mod fault;
 mod help;
 mod io;
 mod k2cmd;
