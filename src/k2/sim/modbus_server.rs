@@ -320,6 +320,7 @@ mod tests {
     use crate::core::Clock;
     use crate::k2::sim;
     use std::borrow::Cow;
+    use std::time::Duration;
 
     fn service(model: &str) -> K2Service {
         let s = sim::open(model, Clock::stepped()).unwrap();
@@ -386,5 +387,26 @@ mod tests {
         assert!(s.handle(2, &Request::ReadHoldingRegisters(100, 1)).is_none());
         assert!(s.handle(0, &Request::WriteSingleRegister(100, 7)).is_none());
         assert_eq!(ok(&s, Request::ReadHoldingRegisters(100, 1)), Response::ReadHoldingRegisters(vec![7]));
+    }
+
+    #[test]
+    fn served_faults_act_on_their_range_and_are_logged() {
+        use crate::k2::sim::fault;
+        let s = service("K205-16DT");
+        {
+            let mut sim = lock(&s.sim);
+            for f in ["no-reply on VW0 times=1", "exception 4 on VW100..VW110", "bad-crc on MB0 times=1"] {
+                sim.faults.add(&fault::parse(f).unwrap(), Duration::ZERO);
+            }
+        }
+        assert!(s.handle(1, &Request::ReadHoldingRegisters(100, 1)).is_none(), "VW0 = register 100: no reply");
+        assert!(s.handle(1, &Request::ReadHoldingRegisters(100, 1)).unwrap().is_ok(), "times=1");
+        assert_eq!(err(&s, Request::ReadHoldingRegisters(152, 4)), ExceptionCode::new(4), "VW104…VW110");
+        assert!(s.handle(1, &Request::ReadHoldingRegisters(140, 1)).unwrap().is_ok(), "VW80: outside");
+        let served = s.handle_with_faults(1, &Request::ReadCoils(320, 8));
+        assert_eq!(served.fault, Some(FaultKind::BadCrc), "M0.0…M0.7");
+        assert!(served.reply.unwrap().is_ok(), "the reply goes out; the RTU framing corrupts it");
+        let names: Vec<String> = lock(&s.sim).events.list().iter().map(|e| e.kind.name()).collect();
+        assert_eq!(names, vec!["fault1", "fault2", "fault3"]);
     }
 }
