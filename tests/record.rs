@@ -150,3 +150,32 @@ fn a_file_that_is_not_a_recording_is_refused_with_a_hint() {
     let o = plcsh().args(["replay", f.to_str().unwrap()]).output().unwrap();
     assert_eq!(o.status.code(), Some(2));
 }
+
+#[test]
+fn a_recorded_servo_session_replays_in_virtual_time_without_difference() {
+    // The in-process servo simulator runs the real driver: its frames are recorded, with
+    // virtual time, and a replay steps a fresh simulated drive through the same motion.
+    let file = tmp("servo.pcapng");
+    let o = plcsh()
+        .args(["--time", "stepped", "--record", file.to_str().unwrap(), "-c"])
+        .arg("servo enable; servo move rel 2rev; sim step 100ms; get servo:position_actual; sim step 2s; get servo:position_actual")
+        .stdin(Stdio::null())
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", stdout(&o));
+    let o = plcsh().args(["replay", file.to_str().unwrap()]).output().unwrap();
+    let text = stdout(&o);
+    assert!(o.status.success(), "{text}");
+    assert!(text.trim_end().ends_with(" 0 difference(s)") && !text.starts_with("0 request"), "{text}");
+    // The timeline shows the move mid-way (virtual time 0.1 s) and done (2.1 s).
+    let o = plcsh().args(["--json", "record", "show", file.to_str().unwrap()]).output().unwrap();
+    let l = json_lines(&o);
+    let pos: Vec<(f64, i64)> = l
+        .iter()
+        .filter(|v| v["dir"] == "received" && v["operands"] == "position_actual")
+        .map(|v| (v["vt"].as_f64().unwrap(), v["values"][0].as_i64().unwrap()))
+        .collect();
+    assert_eq!(pos.len(), 2, "{l:?}");
+    assert!((pos[0].0 - 0.1).abs() < 1e-9 && pos[0].1 > 0 && pos[0].1 < 20_000, "{pos:?}");
+    assert_eq!(pos[1], (2.1, 20_000), "2 rev at 10000 inc/rev");
+}

@@ -8,6 +8,8 @@ use crate::output::Outcome;
 use crate::shell::Shell;
 
 pub fn run(sh: &mut Shell, sub: &str, rest: &str) -> Result<Outcome> {
+    // Lua passes the spec as one quoted string.
+    let rest = rest.strip_prefix('"').and_then(|r| r.strip_suffix('"')).unwrap_or(rest).trim();
     let dev = sh.session.current_index()?;
     let name = k2cmd::name(sh, dev);
     let sim = k2cmd::sim(sh, dev, "sim fault")?;
