@@ -32,7 +32,6 @@ use pcap_file::pcapng::blocks::interface_description::{InterfaceDescriptionBlock
 use pcap_file::pcapng::PcapNgWriter;
 use pcap_file::DataLink;
 use std::borrow::Cow;
-use std::collections::HashMap;
 use std::fs::File;
 use std::io::{BufWriter, Write};
 use std::path::Path;
@@ -63,7 +62,8 @@ struct LinkState {
 
 struct Inner {
     w: PcapNgWriter<BufWriter<File>>,
-    links: HashMap<String, LinkState>,
+    /// Links in the order first seen (a handful: a linear search beats hashing the URLs).
+    links: Vec<(String, LinkState)>,
     /// Device URL → device name, from the session.
     names: Vec<(String, String)>,
     last_flush: Instant,
@@ -103,7 +103,7 @@ impl FileRecorder {
             clock,
             inner: Mutex::new(Inner {
                 w,
-                links: HashMap::new(),
+                links: Vec::new(),
                 names: Vec::new(),
                 last_flush: Instant::now(),
                 error: None,
@@ -129,7 +129,7 @@ impl FileRecorder {
     pub fn finish(&self) -> Result<()> {
         trace::set_recorder(None);
         let mut i = self.lock();
-        let links: Vec<String> = i.links.keys().cloned().collect();
+        let links: Vec<String> = i.links.iter().map(|(k, _)| k.clone()).collect();
         for l in links {
             i.flush_pending(&l, 0, self.vt());
             i.flush_pending(&l, 1, self.vt());
@@ -153,6 +153,10 @@ impl FileRecorder {
 }
 
 impl Inner {
+    fn get(&mut self, link: &str) -> Option<&mut LinkState> {
+        self.links.iter_mut().find(|(k, _)| k == link).map(|(_, l)| l)
+    }
+
     fn write(&mut self, if_id: u32, dir: Option<Dir>, data: Vec<u8>, vt: Duration) {
         if self.error.is_some() {
             return;
@@ -187,7 +191,10 @@ impl Inner {
 
     /// The link's state, declaring its interface on first sight.
     fn link(&mut self, link: &str, proto: Proto) -> &mut LinkState {
-        if !self.links.contains_key(link) {
+        if let Some(i) = self.links.iter().position(|(k, _)| k == link) {
+            return &mut self.links[i].1;
+        }
+        {
             let if_id = self.links.len() as u32;
             let names: Vec<&str> =
                 self.names.iter().filter(|(u, _)| url_on_link(u, link)).map(|(_, n)| n.as_str()).collect();
@@ -209,12 +216,12 @@ impl Inner {
             if let Err(e) = self.w.write_pcapng_block(idb) {
                 self.error.get_or_insert(e.to_string());
             }
-            self.links.insert(
+            self.links.push((
                 link.to_string(),
                 LinkState { if_id, proto, connections: 0, tcp: None, pending: [Vec::new(), Vec::new()] },
-            );
+            ));
         }
-        self.links.get_mut(link).expect("just inserted")
+        &mut self.links.last_mut().expect("just pushed").1
     }
 
     /// A TCP segment on a Modbus TCP link, numbers advanced.
@@ -247,7 +254,7 @@ impl Inner {
     /// Writes one frame in its link's encapsulation.
     fn emit(&mut self, link: &str, proto: Proto, dir: Dir, frame: &[u8], vt: Duration) {
         if proto == Proto::ModbusTcp {
-            if self.links.get(link).is_none_or(|l| l.tcp.is_none()) {
+            if self.get(link).is_none_or(|l| l.tcp.is_none()) {
                 self.handshake(link, vt);
             }
             self.segment(link, dir, packet::TCP_PSH | packet::TCP_ACK, frame, vt);
@@ -265,7 +272,7 @@ impl Inner {
 
     /// Writes out whatever is pending in one direction as one frame.
     fn flush_pending(&mut self, link: &str, side: usize, vt: Duration) {
-        let Some(l) = self.links.get_mut(link) else { return };
+        let Some(l) = self.get(link) else { return };
         if l.pending[side].is_empty() {
             return;
         }
@@ -283,7 +290,7 @@ impl Inner {
         }
         let l = self.link(link, proto);
         l.pending[side].extend_from_slice(bytes);
-        while let Some(l) = self.links.get_mut(link) {
+        while let Some(l) = self.get(link) {
             let Some(end) = framing::frame_end(proto, dir == Dir::Sent, &l.pending[side]) else { break };
             if end == 0 {
                 break;
@@ -314,13 +321,13 @@ impl trace::Recorder for FileRecorder {
         let mut i = self.lock();
         i.flush_pending(link, 0, vt);
         i.flush_pending(link, 1, vt);
-        let is_tcp = i.links.get(link).is_some_and(|l| l.tcp.is_some());
+        let is_tcp = i.get(link).is_some_and(|l| l.tcp.is_some());
         if is_tcp {
             let fin = packet::TCP_FIN | packet::TCP_ACK;
             i.segment(link, Dir::Sent, fin, &[], vt);
             i.segment(link, Dir::Received, fin, &[], vt);
             i.segment(link, Dir::Sent, packet::TCP_ACK, &[], vt);
-            if let Some(l) = i.links.get_mut(link) {
+            if let Some(l) = i.get(link) {
                 l.tcp = None;
             }
         }

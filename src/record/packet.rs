@@ -152,11 +152,8 @@ pub fn tcp_packet(s: &Segment, payload: &[u8]) -> Vec<u8> {
     pseudo.extend_from_slice(&((20 + payload.len()) as u16).to_be_bytes());
     let mut acc = sum16(&pseudo, 0);
     acc = sum16(&tcp, acc);
-    let mut body = payload.to_vec();
-    if body.len() % 2 == 1 {
-        body.push(0);
-    }
-    acc = sum16(&body, acc);
+    // An odd last byte is summed as if padded with a zero (RFC 793), as `sum16` does.
+    acc = sum16(payload, acc);
     tcp[16..18].copy_from_slice(&fold(acc).to_be_bytes());
     p.extend_from_slice(&tcp);
     p.extend_from_slice(payload);
