@@ -113,20 +113,37 @@ impl Snapshot {
                 .hint("open the same simulators under the same names (e.g. --device plc=sim:MODEL)"));
             }
         }
-        s.clock.set(Duration::from_micros(self.clock_us));
+        // Decode every section and check the models before anything changes.
+        let mut k2 = Vec::new();
+        let mut servo = Vec::new();
         for (name, d) in &self.devices {
             let i = s.index(name)?;
-            let dev = &mut s.entry(i).device;
             if let Some(v) = d.sections.get("k2") {
                 let st: crate::k2::sim::snapshot::K2State = dec(v, "k2")?;
-                let sim = dev.as_k2().and_then(|k| k.as_sim()).expect("checked above");
-                sim.restore_snapshot(&st).map_err(|m| Error::usage(format!("cannot restore `{name}`: {m}")))?;
+                let sim = s.entry(i).device.as_k2().and_then(|k| k.as_sim()).expect("checked above");
+                if st.model != sim.model().name {
+                    return Err(Error::usage(format!(
+                        "cannot restore `{name}`: the snapshot is of a {}, this simulator is a {}",
+                        st.model,
+                        sim.model().name
+                    ))
+                    .hint(format!("open it as {name}=sim:{}", st.model)));
+                }
+                k2.push((i, name, st));
             }
             if let Some(v) = d.sections.get("servo") {
-                let drives = dec(v, "servo")?;
-                let line = dev.as_servo().and_then(|sv| sv.simulator()).expect("checked above");
-                line.lock().unwrap_or_else(|p| p.into_inner()).restore_drives(drives);
+                let drives: Vec<crate::servo::sim::drive::DriveState> = dec(v, "servo")?;
+                servo.push((i, drives));
             }
+        }
+        s.clock.set(Duration::from_micros(self.clock_us));
+        for (i, name, st) in k2 {
+            let sim = s.entry(i).device.as_k2().and_then(|k| k.as_sim()).expect("checked above");
+            sim.restore_snapshot(&st).map_err(|m| Error::usage(format!("cannot restore `{name}`: {m}")))?;
+        }
+        for (i, drives) in servo {
+            let line = s.entry(i).device.as_servo().and_then(|sv| sv.simulator()).expect("checked above");
+            line.lock().unwrap_or_else(|p| p.into_inner()).restore_drives(drives);
         }
         Ok(())
     }

@@ -52,6 +52,7 @@ fn a_snapshot_from_a_newer_plcsh_or_of_another_model_is_refused() {
     let o = run(&["--time", "stepped", "--model", "K209M-56DT"], "sim snapshot restore a");
     assert!(!o.status.success());
     assert!(stdout(&o).contains("the snapshot is of a K205-16DT, this simulator is a K209M-56DT"), "{}", stdout(&o));
+    assert!(stdout(&o).contains("plc=sim:K205-16DT"), "the hint says how to open it: {}", stdout(&o));
     let file = dir.join("a.json");
     let text = std::fs::read_to_string(&file).unwrap();
     let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();

@@ -292,7 +292,7 @@ pub fn servo(bytes: &[u8]) -> Decoded {
 }
 
 /// Decodes every frame of a recording in order, pairing Modbus replies with their requests
-/// per link. `space_of` gives the K2 operand space a link's names come from.
+/// per link; K2 names come from the model each link's URL names ([`model_of`]).
 pub fn all(links: &[LinkInfo], frames: &[Frame]) -> Vec<Decoded> {
     let spaces: Vec<K2Space> = links.iter().map(|l| K2Space::new(model_of(l))).collect();
     let mut asked: Vec<Option<Asked>> = vec![None; links.len()];

@@ -96,14 +96,11 @@ pub fn run(rec: &Recording, target: &Target) -> Result<Report> {
     Ok(report)
 }
 
-/// Steps `clock` to the request's virtual time relative to the first request's.
-fn step_to(clock: &Clock, vt0: Option<Duration>, vt: Option<Duration>) {
-    if let (Some(t0), Some(t)) = (vt0, vt) {
-        let want = t.saturating_sub(t0);
-        let now = clock.now();
-        if want > now {
-            clock.step(want - now);
-        }
+/// Steps `clock` forward to `want` (never back).
+fn step_to(clock: &Clock, want: Duration) {
+    let now = clock.now();
+    if want > now {
+        clock.step(want - now);
     }
 }
 
@@ -130,8 +127,7 @@ fn modbus_link(rec: &Recording, li: usize, link: &LinkInfo, target: &Target, rep
         let Ok((unit, pdu)) = decode::modbus_pdu(link.proto, &req.bytes) else { continue };
         let service = service.get_or_insert_with(|| K2Service::new(sim.clone(), unit));
         if let (Some(t0), Some(t)) = (vt0, req.vt) {
-            let want = base + t.saturating_sub(t0);
-            step_to(&clock, Some(Duration::ZERO), Some(want));
+            step_to(&clock, base + t.saturating_sub(t0));
         }
         // The simulator's RTU framing decodes the request, whatever transport carried it.
         let mut adu = Vec::with_capacity(pdu.len() + 3);
@@ -212,7 +208,9 @@ fn servo_link(rec: &Recording, li: usize, link: &LinkInfo, report: &mut Report) 
     for (q, r) in ex {
         let req = &rec.frames[q];
         report.requests += 1;
-        step_to(&clock, vt0, req.vt);
+        if let (Some(t0), Some(t)) = (vt0, req.vt) {
+            step_to(&clock, t.saturating_sub(t0));
+        }
         let Ok(bytes) = <[u8; FRAME_LEN]>::try_from(req.bytes.as_slice()) else { continue };
         let replayed = line.answer(&bytes).map(|b| b.to_vec());
         let recorded = r.map(|r| rec.frames[r].bytes.clone());
