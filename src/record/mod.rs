@@ -67,6 +67,14 @@ struct Inner {
     /// Device URL → device name, from the session.
     names: Vec<(String, String)>,
     last_flush: Instant,
+    /// Wall time is `wall0` plus the monotonic time since `instant0`: one clock read per frame.
+    wall0: Duration,
+    instant0: Instant,
+    /// The current frame's monotonic time.
+    now: Instant,
+    /// Reused buffers: the packet being written, its comment.
+    packet: Vec<u8>,
+    comment: String,
     /// The first write error (recording stops writing then; [`FileRecorder::finish`] reports it).
     error: Option<String>,
 }
@@ -96,7 +104,7 @@ impl FileRecorder {
                 .cause(e)
                 .hint("check that the directory exists and is writable")
         })?;
-        let w = PcapNgWriter::new(BufWriter::new(f))
+        let w = PcapNgWriter::new(BufWriter::with_capacity(64 * 1024, f))
             .map_err(|e| Error::io(format!("cannot write the recording {}", path.display())).cause(e))?;
         Ok(FileRecorder {
             path: path.display().to_string(),
@@ -106,6 +114,11 @@ impl FileRecorder {
                 links: Vec::new(),
                 names: Vec::new(),
                 last_flush: Instant::now(),
+                wall0: SystemTime::now().duration_since(UNIX_EPOCH).unwrap_or_default(),
+                instant0: Instant::now(),
+                now: Instant::now(),
+                packet: Vec::with_capacity(512),
+                comment: String::with_capacity(32),
                 error: None,
             }),
         })
@@ -129,6 +142,7 @@ impl FileRecorder {
     pub fn finish(&self) -> Result<()> {
         trace::set_recorder(None);
         let mut i = self.lock();
+        i.now = Instant::now();
         let links: Vec<String> = i.links.iter().map(|(k, _)| k.clone()).collect();
         for l in links {
             i.flush_pending(&l, 0, self.vt());
@@ -157,12 +171,17 @@ impl Inner {
         self.links.iter_mut().find(|(k, _)| k == link).map(|(_, l)| l)
     }
 
-    fn write(&mut self, if_id: u32, dir: Option<Dir>, data: Vec<u8>, vt: Duration) {
+    /// Writes the packet in `self.packet`.
+    fn write(&mut self, if_id: u32, dir: Option<Dir>, vt: Duration) {
         if self.error.is_some() {
             return;
         }
-        let wall = SystemTime::now().duration_since(UNIX_EPOCH).unwrap_or_default();
-        let mut options = vec![EnhancedPacketOption::Comment(Cow::Owned(format!("{VT_PREFIX}{}", vt.as_micros())))];
+        let wall = self.wall0 + self.now.saturating_duration_since(self.instant0);
+        self.comment.clear();
+        use std::fmt::Write as _;
+        let _ = write!(self.comment, "{VT_PREFIX}{}", vt.as_micros());
+        let mut options = Vec::with_capacity(2);
+        options.push(EnhancedPacketOption::Comment(Cow::Borrowed(self.comment.as_str())));
         if let Some(d) = dir {
             // epb_flags bits 0-1: 01 inbound, 10 outbound.
             options.push(EnhancedPacketOption::Flags(if d == Dir::Received { 1 } else { 2 }));
@@ -170,20 +189,20 @@ impl Inner {
         let epb = EnhancedPacketBlock {
             interface_id: if_id,
             timestamp: wall,
-            original_len: data.len() as u32,
-            data: Cow::Owned(data),
+            original_len: self.packet.len() as u32,
+            data: Cow::Borrowed(&self.packet),
             options,
         };
         if let Err(e) = self.w.write_pcapng_block(epb) {
             self.error = Some(e.to_string());
         }
-        if self.last_flush.elapsed() >= FLUSH_EVERY {
+        if self.now.saturating_duration_since(self.last_flush) >= FLUSH_EVERY {
             self.flush();
         }
     }
 
     fn flush(&mut self) {
-        self.last_flush = Instant::now();
+        self.last_flush = self.now;
         if let Err(e) = self.w.get_mut().flush() {
             self.error.get_or_insert(e.to_string());
         }
@@ -248,7 +267,8 @@ impl Inner {
         }
         let ack = if flags & packet::TCP_ACK != 0 { ack } else { 0 };
         let s = Segment { src, dst, sport, dport, seq, ack, flags };
-        self.write(if_id, Some(dir), packet::tcp_packet(&s, payload), vt);
+        packet::tcp_packet_into(&mut self.packet, &s, payload);
+        self.write(if_id, Some(dir), vt);
     }
 
     /// Writes one frame in its link's encapsulation.
@@ -260,7 +280,8 @@ impl Inner {
             self.segment(link, dir, packet::TCP_PSH | packet::TCP_ACK, frame, vt);
         } else {
             let if_id = self.link(link, proto).if_id;
-            self.write(if_id, Some(dir), packet::user_packet(dir, proto, frame), vt);
+            packet::user_packet_into(&mut self.packet, dir, proto, frame);
+            self.write(if_id, Some(dir), vt);
         }
     }
 
@@ -289,6 +310,12 @@ impl Inner {
             self.flush_pending(link, 1, vt);
         }
         let l = self.link(link, proto);
+        if l.pending[side].is_empty() && framing::frame_end(proto, dir == Dir::Sent, bytes) == Some(bytes.len()) {
+            // The usual case: one whole frame.
+            self.emit(link, proto, dir, bytes, vt);
+            return;
+        }
+        let l = self.link(link, proto);
         l.pending[side].extend_from_slice(bytes);
         while let Some(l) = self.get(link) {
             let Some(end) = framing::frame_end(proto, dir == Dir::Sent, &l.pending[side]) else { break };
@@ -305,6 +332,7 @@ impl trace::Recorder for FileRecorder {
     fn opened(&self, link: &str, proto: Proto, _peer: &str) {
         let vt = self.vt();
         let mut i = self.lock();
+        i.now = Instant::now();
         let l = i.link(link, proto);
         if proto == Proto::ModbusTcp && l.tcp.is_none() {
             i.handshake(link, vt);
@@ -313,12 +341,15 @@ impl trace::Recorder for FileRecorder {
 
     fn frame(&self, link: &str, proto: Proto, dir: Dir, bytes: &[u8]) {
         let vt = self.vt();
-        self.lock().frame(link, proto, dir, bytes, vt);
+        let mut i = self.lock();
+        i.now = Instant::now();
+        i.frame(link, proto, dir, bytes, vt);
     }
 
     fn closed(&self, link: &str) {
         let vt = self.vt();
         let mut i = self.lock();
+        i.now = Instant::now();
         i.flush_pending(link, 0, vt);
         i.flush_pending(link, 1, vt);
         let is_tcp = i.get(link).is_some_and(|l| l.tcp.is_some());

@@ -76,9 +76,15 @@ pub fn proto_of_name(s: &str) -> Proto {
 /// A USER0 packet: the header, then the frame.
 pub fn user_packet(dir: Dir, proto: Proto, frame: &[u8]) -> Vec<u8> {
     let mut p = Vec::with_capacity(USER_HEADER + frame.len());
+    user_packet_into(&mut p, dir, proto, frame);
+    p
+}
+
+/// [`user_packet`] into a reused buffer.
+pub fn user_packet_into(p: &mut Vec<u8>, dir: Dir, proto: Proto, frame: &[u8]) {
+    p.clear();
     p.extend_from_slice(&[u8::from(dir == Dir::Received), proto_code(proto), 0, 0]);
     p.extend_from_slice(frame);
-    p
 }
 
 /// Splits a USER0 packet; `None` when it is too short to hold the header.
@@ -118,8 +124,15 @@ fn fold(mut acc: u32) -> u16 {
 
 /// An Ethernet II / IPv4 / TCP packet carrying `payload`, checksums filled in.
 pub fn tcp_packet(s: &Segment, payload: &[u8]) -> Vec<u8> {
-    let mac = |ip: [u8; 4]| [0x02, 0x00, ip[0], ip[1], ip[2], ip[3]];
     let mut p = Vec::with_capacity(54 + payload.len());
+    tcp_packet_into(&mut p, s, payload);
+    p
+}
+
+/// [`tcp_packet`] into a reused buffer.
+pub fn tcp_packet_into(p: &mut Vec<u8>, s: &Segment, payload: &[u8]) {
+    let mac = |ip: [u8; 4]| [0x02, 0x00, ip[0], ip[1], ip[2], ip[3]];
+    p.clear();
     p.extend_from_slice(&mac(s.dst));
     p.extend_from_slice(&mac(s.src));
     p.extend_from_slice(&[0x08, 0x00]);
@@ -145,11 +158,11 @@ pub fn tcp_packet(s: &Segment, payload: &[u8]) -> Vec<u8> {
     tcp[12] = 5 << 4;
     tcp[13] = s.flags;
     tcp[14..16].copy_from_slice(&0xFFFFu16.to_be_bytes());
-    let mut pseudo = Vec::with_capacity(12);
-    pseudo.extend_from_slice(&s.src);
-    pseudo.extend_from_slice(&s.dst);
-    pseudo.extend_from_slice(&[0, 6]);
-    pseudo.extend_from_slice(&((20 + payload.len()) as u16).to_be_bytes());
+    let mut pseudo = [0u8; 12];
+    pseudo[0..4].copy_from_slice(&s.src);
+    pseudo[4..8].copy_from_slice(&s.dst);
+    pseudo[9] = 6;
+    pseudo[10..12].copy_from_slice(&((20 + payload.len()) as u16).to_be_bytes());
     let mut acc = sum16(&pseudo, 0);
     acc = sum16(&tcp, acc);
     // An odd last byte is summed as if padded with a zero (RFC 793), as `sum16` does.
@@ -157,7 +170,6 @@ pub fn tcp_packet(s: &Segment, payload: &[u8]) -> Vec<u8> {
     tcp[16..18].copy_from_slice(&fold(acc).to_be_bytes());
     p.extend_from_slice(&tcp);
     p.extend_from_slice(payload);
-    p
 }
 
 /// Takes an Ethernet/IPv4/TCP packet apart: the segment and its payload. `None` for
