@@ -119,6 +119,7 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             [CompletionResult]::new('--agent', '--agent', [CompletionResultType]::ParameterName, 'Run the PLC-side helper program (lib/k2_agent.il) with its mailbox at this V address')
             [CompletionResult]::new('--servo-pty', '--servo-pty', [CompletionResultType]::ParameterName, 'Serve simulated Kinco servo drives on a new pseudo-terminal; LINK becomes a symlink to it')
             [CompletionResult]::new('--servo-id', '--servo-id', [CompletionResultType]::ParameterName, 'Drive ids on the servo line (several drives share it)')
+            [CompletionResult]::new('--fault', '--fault', [CompletionResultType]::ParameterName, 'Inject a fault into the served K2, e.g. `--fault "no-reply on VW100 after=2s times=1"` (repeatable; see `help sim`)')
             [CompletionResult]::new('--model', '--model', [CompletionResultType]::ParameterName, 'Model of the default simulated PLC')
             [CompletionResult]::new('-d', '-d', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
             [CompletionResult]::new('--device', '--device', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')

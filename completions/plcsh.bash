@@ -916,7 +916,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__sim__subcmd__serve)
-            opts="-v -d -h --tcp --rtu-pty --rtu-tcp --unit --agent --servo-pty --servo-id --servo-loop --json --verbose --model --device --time --config --state --record --help"
+            opts="-v -d -h --tcp --rtu-pty --rtu-tcp --unit --agent --servo-pty --servo-id --servo-loop --fault --json --verbose --model --device --time --config --state --record --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -947,6 +947,10 @@ _plcsh() {
                     return 0
                     ;;
                 --servo-id)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --fault)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
