@@ -179,3 +179,26 @@ fn a_recorded_servo_session_replays_in_virtual_time_without_difference() {
     assert!((pos[0].0 - 0.1).abs() < 1e-9 && pos[0].1 > 0 && pos[0].1 < 20_000, "{pos:?}");
     assert_eq!(pos[1], (2.1, 20_000), "2 rev at 10000 inc/rev");
 }
+
+#[test]
+fn replay_from_a_snapshot_reports_the_register_the_snapshot_changed() {
+    let served = serve(&["--tcp", "127.0.0.1:0"]);
+    let url = format!("plc=tcp://{}?model=K205-16DT", tcp_addr(&served));
+    let file = tmp("for-snapshot.pcapng");
+    record(&file, &url, "set VW100=5; get VW100 VW200 VW300");
+    // A desk simulator state where VW200 differs from the machine's.
+    let snap = tmp("desk.json");
+    let o = plcsh()
+        .args(["--time", "stepped", "-c", &format!("set VW200=9; sim snapshot save {}", snap.display())])
+        .stdin(Stdio::null())
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", stdout(&o));
+    let o = plcsh().args(["--json", "replay", file.to_str().unwrap(), "--snapshot"]).arg(&snap).output().unwrap();
+    assert_eq!(o.status.code(), Some(1), "{}", stdout(&o));
+    let l = json_lines(&o);
+    let diffs: Vec<&serde_json::Value> = l.iter().filter_map(|v| v.get("difference")).collect();
+    assert_eq!(diffs.len(), 1, "{}", stdout(&o));
+    let detail = diffs[0]["detail"].as_str().unwrap();
+    assert_eq!(detail, "VW200 (address 200) recorded 0, replayed 9", "{detail}");
+}
