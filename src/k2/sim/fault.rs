@@ -23,7 +23,7 @@
 //! signal sources (`sim input … off` stops those).
 //!
 //! A `late` reply holds the server for its delay (it serves one request at a time, as a PLC's
-//! Modbus port does), so other clients of the same served simulator wait too.
+//! Modbus port does), so everything the same `sim serve` process serves waits too.
 //!
 //! Every time a fault acts it is logged as an event (`fault{ID}`) with its virtual time, so a
 //! test can correlate what plcsh reported with what was injected.
