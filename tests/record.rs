@@ -149,6 +149,10 @@ fn a_file_that_is_not_a_recording_is_refused_with_a_hint() {
     assert!(stdout(&o).contains("not a readable pcapng recording"), "{}", stdout(&o));
     let o = plcsh().args(["replay", f.to_str().unwrap()]).output().unwrap();
     assert_eq!(o.status.code(), Some(2));
+    // Replayed writes never go to a device: refused before anything connects.
+    let o = plcsh().args(["replay", f.to_str().unwrap(), "--device", "plc=tcp://127.0.0.1:1"]).output().unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stdout(&o).contains("never to --device"), "{}", stdout(&o));
 }
 
 #[test]

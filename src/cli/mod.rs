@@ -174,6 +174,12 @@ fn run_cli() -> i32 {
     let stdout_tty = std::io::stdout().is_terminal();
     let style = Style::detect(cli.json, stdout_tty);
     let mut out = std::io::stdout().lock();
+    if let Some(Sub::Replay(args)) = &cli.sub {
+        if !cli.devices.is_empty() {
+            // Refused before any device is opened.
+            return record::replay(args, true, style, &mut out);
+        }
+    }
     let session = match build_session(&cli) {
         Ok(s) => s,
         Err(e) => {
@@ -210,7 +216,7 @@ fn run_cli() -> i32 {
             Sub::Agent(a) => agent::run(a, &mut out),
             Sub::Run(args) => run::main(&mut shell, args, style),
             Sub::Record { cmd } => record::show(cmd, style, &mut out),
-            Sub::Replay(args) => record::replay(args, style, &mut out),
+            Sub::Replay(args) => record::replay(args, false, style, &mut out),
         };
     }
     if let Some(cmds) = &cli.command {

@@ -53,8 +53,15 @@ pub fn show(cmd: &RecordCmd, style: Style, out: &mut dyn Write) -> i32 {
 }
 
 /// Exit status: 0 when every reply matches, 1 when any differs (or on error).
-pub fn replay(args: &ReplayArgs, style: Style, out: &mut dyn Write) -> i32 {
+pub fn replay(args: &ReplayArgs, devices_given: bool, style: Style, out: &mut dyn Write) -> i32 {
     let run = || -> crate::core::Result<replay::Report> {
+        if devices_given {
+            // Replaying recorded writes at a machine could move it: only simulators built here.
+            return Err(crate::core::Error::usage(
+                "replay sends the recorded requests to simulators it builds itself, never to --device",
+            )
+            .hint("choose the simulated model with --sim-model and its starting state with --snapshot"));
+        }
         let rec = file::read(&args.file)?;
         replay::check_not_empty(&rec, &args.file)?;
         let snapshot = args.snapshot.as_deref().map(crate::snapshot::locate).transpose()?;
