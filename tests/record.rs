@@ -206,3 +206,37 @@ fn replay_from_a_snapshot_reports_the_register_the_snapshot_changed() {
     let detail = diffs[0]["detail"].as_str().unwrap();
     assert_eq!(detail, "VW200 (address 200) recorded 0, replayed 9", "{detail}");
 }
+
+#[test]
+fn an_idle_session_s_frames_reach_the_file_before_it_is_killed() {
+    use std::io::Write;
+    let served = serve(&["--tcp", "127.0.0.1:0"]);
+    let url = format!("plc=tcp://{}?model=K205-16DT", tcp_addr(&served));
+    let file = tmp("killed.pcapng");
+    let mut child = plcsh()
+        .args(["--record", file.to_str().unwrap(), "--device", &url])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let mut stdin = child.stdin.take().unwrap();
+    stdin.write_all(b"get VW100\n").unwrap();
+    stdin.flush().unwrap();
+    // The session stays open and idle (stdin not closed): the frames must still reach the file.
+    let deadline = std::time::Instant::now() + std::time::Duration::from_secs(10);
+    let shown = loop {
+        let o = plcsh().args(["record", "show", file.to_str().unwrap()]).output().unwrap();
+        let text = stdout(&o);
+        if text.contains("FC3 reply") || std::time::Instant::now() > deadline {
+            break text;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(50));
+    };
+    let _ = nix::sys::signal::kill(nix::unistd::Pid::from_raw(child.id() as i32), nix::sys::signal::Signal::SIGKILL);
+    let _ = child.wait();
+    drop(stdin);
+    assert!(shown.contains("FC3 read holding registers 150") && shown.contains("FC3 reply"), "{shown}");
+    let o = plcsh().args(["record", "show", file.to_str().unwrap()]).output().unwrap();
+    assert!(o.status.success(), "the file is readable after kill -9: {}", stdout(&o));
+}

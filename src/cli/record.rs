@@ -43,6 +43,13 @@ pub fn show(cmd: &RecordCmd, style: Style, out: &mut dyn Write) -> i32 {
         Ok(r) => r,
         Err(e) => return fail(out, style, "record show", &e),
     };
+    if let Some(why) = &rec.truncated {
+        eprintln!(
+            "plcsh: warning: {} ends early ({why}); showing the {} frames before",
+            path.display(),
+            rec.frames.len()
+        );
+    }
     match show::write(&rec, style.json, out) {
         Ok(()) => 0,
         Err(e) => {
@@ -63,6 +70,9 @@ pub fn replay(args: &ReplayArgs, devices_given: bool, style: Style, out: &mut dy
             .hint("choose the simulated model with --sim-model and its starting state with --snapshot"));
         }
         let rec = file::read(&args.file)?;
+        if let Some(why) = &rec.truncated {
+            eprintln!("plcsh: warning: {} ends early ({why}); replaying the frames before", args.file.display());
+        }
         replay::check_not_empty(&rec, &args.file)?;
         let snapshot = args.snapshot.as_deref().map(crate::snapshot::locate).transpose()?;
         replay::run(&rec, &replay::Target { model: args.sim_model.clone(), snapshot })

@@ -42,6 +42,9 @@ pub struct Frame {
 pub struct Recording {
     pub links: Vec<LinkInfo>,
     pub frames: Vec<Frame>,
+    /// Why reading stopped before the end (a file cut short by a killed process): the
+    /// frames before that point are kept.
+    pub truncated: Option<String>,
 }
 
 /// Reads a recording.
@@ -64,7 +67,14 @@ pub fn parse(bytes: &[u8]) -> std::result::Result<Recording, String> {
     // Interface ids restart with every section; map them to links.
     let mut ifaces: Vec<(usize, DataLink)> = Vec::new();
     while let Some(block) = r.next_block() {
-        match block.map_err(|e| e.to_string())? {
+        let block = match block {
+            Ok(b) => b,
+            Err(e) => {
+                rec.truncated = Some(e.to_string());
+                break;
+            }
+        };
+        match block {
             Block::SectionHeader(_) => ifaces.clear(),
             Block::InterfaceDescription(idb) => {
                 let mut name = String::new();
@@ -130,4 +140,32 @@ pub fn parse(bytes: &[u8]) -> std::result::Result<Recording, String> {
         }
     }
     Ok(rec)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::core::trace::Recorder;
+    use crate::core::Clock;
+
+    #[test]
+    fn a_file_cut_short_keeps_the_frames_before_the_cut() {
+        let path = std::env::temp_dir().join(format!("plcsh-cut-{}.pcapng", std::process::id()));
+        let r = super::super::FileRecorder::create(&path, Clock::stepped()).unwrap();
+        r.name_device("rtu:/dev/x", "plc");
+        for k in 0..3u8 {
+            r.frame("/dev/x", Proto::ModbusRtu, Dir::Sent, &[1, 3, 0, k, 0, 1, 0, 0]);
+        }
+        r.finish().unwrap();
+        let bytes = std::fs::read(&path).unwrap();
+        let whole = parse(&bytes).unwrap();
+        assert_eq!((whole.frames.len(), whole.truncated.clone()), (3, None));
+        assert_eq!(whole.links[0].name, "plc");
+        assert_eq!(whole.links[0].proto, Proto::ModbusRtu);
+        let cut = parse(&bytes[..bytes.len() - 10]).unwrap();
+        assert_eq!(cut.frames.len(), 2);
+        assert!(cut.truncated.is_some());
+        assert_eq!(cut.frames[1].bytes, vec![1, 3, 0, 1, 0, 1, 0, 0]);
+        let _ = std::fs::remove_file(&path);
+    }
 }

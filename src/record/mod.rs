@@ -75,6 +75,10 @@ struct Inner {
     /// Reused buffers: the packet being written, its comment.
     packet: Vec<u8>,
     comment: String,
+    /// Packets written since the last flush.
+    dirty: bool,
+    /// [`FileRecorder::finish`] ran.
+    finished: bool,
     /// The first write error (recording stops writing then; [`FileRecorder::finish`] reports it).
     error: Option<String>,
 }
@@ -119,15 +123,32 @@ impl FileRecorder {
                 now: Instant::now(),
                 packet: Vec::with_capacity(512),
                 comment: String::with_capacity(32),
+                dirty: false,
+                finished: false,
                 error: None,
             }),
         })
     }
 
-    /// Starts recording every frame of this process to `path`.
+    /// Starts recording every frame of this process to `path`. A background thread writes
+    /// buffered packets out every 200 ms, so an idle session's last frames reach the file
+    /// even if the process is then killed.
     pub fn start(path: &Path, clock: Clock) -> Result<Arc<FileRecorder>> {
         let r = Arc::new(FileRecorder::create(path, clock)?);
         trace::set_recorder(Some(r.clone()));
+        let weak = Arc::downgrade(&r);
+        let _ = std::thread::Builder::new().name("plcsh-record-flush".into()).spawn(move || loop {
+            std::thread::sleep(FLUSH_EVERY);
+            let Some(r) = weak.upgrade() else { return };
+            let mut i = r.lock();
+            if i.finished {
+                return;
+            }
+            if i.dirty {
+                i.now = Instant::now();
+                i.flush();
+            }
+        });
         Ok(r)
     }
 
@@ -151,6 +172,7 @@ impl FileRecorder {
         if let Err(e) = i.w.get_mut().flush() {
             i.error.get_or_insert(e.to_string());
         }
+        i.finished = true;
         match &i.error {
             Some(e) => Err(Error::io(format!("the recording {} is incomplete: {e}", self.path))),
             None => Ok(()),
@@ -196,6 +218,7 @@ impl Inner {
         if let Err(e) = self.w.write_pcapng_block(epb) {
             self.error = Some(e.to_string());
         }
+        self.dirty = true;
         if self.now.saturating_duration_since(self.last_flush) >= FLUSH_EVERY {
             self.flush();
         }
@@ -203,6 +226,7 @@ impl Inner {
 
     fn flush(&mut self) {
         self.last_flush = self.now;
+        self.dirty = false;
         if let Err(e) = self.w.get_mut().flush() {
             self.error.get_or_insert(e.to_string());
         }
