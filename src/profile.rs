@@ -247,6 +247,7 @@ fn profile(
 pub fn open(s: &mut crate::session::Session, name: &str, profile: &str) -> Result<()> {
     let p = s.profiles.get(profile).cloned().ok_or_else(|| s.profiles.unknown(profile).device(name))?;
     let from = format!("from profile `{}` ({})", p.name, p.origin);
+    crate::record::name_device(&p.url, name);
     let mut device = crate::session::open_url(&p.url, &s.clock).map_err(|e| e.device(name).cause(&from))?;
     for (k, v) in &p.options {
         device.set_option(k, v).map_err(|e| e.device(name).cause(&from))?;

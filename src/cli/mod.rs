@@ -6,6 +6,7 @@
 mod agent;
 pub mod completions;
 mod models;
+mod record;
 mod run;
 mod serve;
 
@@ -53,6 +54,9 @@ pub struct Cli {
     /// Simulator state file (backup area, retained ranges, clock); default in the user's data directory.
     #[arg(long, value_name = "FILE", global = true)]
     pub state: Option<std::path::PathBuf>,
+    /// Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`).
+    #[arg(long, value_name = "FILE", global = true)]
+    pub record: Option<std::path::PathBuf>,
     #[command(subcommand)]
     pub sub: Option<Sub>,
 }
@@ -81,6 +85,13 @@ pub enum Sub {
     Agent(agent::AgentArgs),
     /// Run a Lua script: plcsh [--time stepped] [--device NAME=URL] run SCRIPT.lua [ARGS…]
     Run(run::RunArgs),
+    /// Recordings made with --record: `record show FILE` prints the decoded timeline.
+    Record {
+        #[command(subcommand)]
+        cmd: record::RecordCmd,
+    },
+    /// Replay a recording's requests against a simulator and report every reply that differs.
+    Replay(record::ReplayArgs),
 }
 
 /// Splits `NAME=URL` (or a bare URL, named `plc`; or a bare profile name, named after itself).
@@ -107,6 +118,10 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
         TimeMode::Stepped => Clock::stepped(),
     };
     let mut s = Session::new(clock);
+    if let Some(path) = &cli.record {
+        // Before any device opens, so connections are recorded from their first frame.
+        crate::record::start(path, s.clock.clone())?;
+    }
     if let Some(path) = cli.config.clone().or_else(crate::profile::default_path) {
         s.profiles = crate::profile::Profiles::load(&path);
     }
@@ -137,6 +152,18 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
 
 /// Entry point; returns the process exit status.
 pub fn main() -> i32 {
+    let code = run_cli();
+    // A recording is complete only once written out (the REPL and one-shot paths both end here).
+    match crate::record::stop() {
+        Ok(()) => code,
+        Err(e) => {
+            eprintln!("plcsh: {e}");
+            code.max(1)
+        }
+    }
+}
+
+fn run_cli() -> i32 {
     let cli = match Cli::try_parse() {
         Ok(c) => c,
         Err(e) => {
@@ -147,6 +174,12 @@ pub fn main() -> i32 {
     let stdout_tty = std::io::stdout().is_terminal();
     let style = Style::detect(cli.json, stdout_tty);
     let mut out = std::io::stdout().lock();
+    if let Some(Sub::Replay(args)) = &cli.sub {
+        if !cli.devices.is_empty() {
+            // Refused before any device is opened.
+            return record::replay(args, true, style, &mut out);
+        }
+    }
     let session = match build_session(&cli) {
         Ok(s) => s,
         Err(e) => {
@@ -182,6 +215,8 @@ pub fn main() -> i32 {
             Sub::Sim { cmd: serve::SimCmd::Serve(args) } => serve::run(&cli, args, style, &mut out),
             Sub::Agent(a) => agent::run(a, &mut out),
             Sub::Run(args) => run::main(&mut shell, args, style),
+            Sub::Record { cmd } => record::show(cmd, style, &mut out),
+            Sub::Replay(args) => record::replay(args, false, style, &mut out),
         };
     }
     if let Some(cmds) = &cli.command {

@@ -114,6 +114,9 @@ pub struct ServeArgs {
     /// file per model and link in the user's data directory; `none` keeps nothing).
     #[arg(long = "umpk-state", value_name = "FILE")]
     pub umpk_state: Option<PathBuf>,
+    /// Inject a fault into the served K2, e.g. `--fault "no-reply on VW100 after=2s times=1"` (repeatable; see `help sim`).
+    #[arg(long = "fault", value_name = "SPEC")]
+    pub faults: Vec<String>,
 }
 
 impl ServeArgs {
@@ -184,6 +187,11 @@ async fn serve_k2(
         let b = crate::k2::agent::protocol::parse_base(base).map_err(Error::usage)?;
         sim.enable_agent(b).map_err(Error::usage)?;
         ready.insert("agent".into(), json!(format!("VB{b}")));
+    }
+    for f in &args.faults {
+        let spec = crate::k2::sim::fault::parse(f).map_err(|m| Error::usage(format!("--fault \"{f}\": {m}")))?;
+        let now = sim.last;
+        sim.faults.add(&spec, now);
     }
     let service = K2Service::new(Arc::new(Mutex::new(sim)), args.unit);
     if let Some(a) = &args.tcp {

@@ -70,6 +70,13 @@ impl Clock {
         s.stepped = true;
     }
 
+    /// Sets the virtual time to `t` (a snapshot being restored), keeping the mode.
+    pub fn set(&self, t: Duration) {
+        let mut s = self.lock();
+        s.base = t;
+        s.anchor = Instant::now();
+    }
+
     /// Makes the clock follow the wall clock again, from the current virtual time.
     pub fn run(&self) {
         let mut s = self.lock();

@@ -10,7 +10,7 @@
 //! comes from the segment formulas, so an hour at 200 kHz costs what a millisecond does.
 
 /// One stretch of constant frequency.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct PulseSegment {
     /// Virtual time of the first pulse's rising edge, seconds.
     pub start: f64,
@@ -39,7 +39,7 @@ impl PulseSegment {
 }
 
 /// A pulse signal: segments in time order, never overlapping.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct PulseTrain {
     segments: Vec<PulseSegment>,
 }

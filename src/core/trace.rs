@@ -1,6 +1,11 @@
-//! Frame tracing for `-v`/`-vv`: every driver reports each frame it sends and receives here,
-//! and the front end decides where it goes (stderr in the shell, a buffer in tests). Off by
-//! default; when off, a report costs one atomic load.
+//! Frame tracing for `-v`/`-vv` and recording for `--record`: every driver reports each
+//! frame it sends and receives here, and the front end decides where it goes (stderr in the
+//! shell, a buffer in tests, a pcapng file through [`crate::record`]). Off by default; when
+//! off, a report costs one atomic load.
+//!
+//! Two independent outlets: the display sink ([`set_sink`]) sees frames as they cross; the
+//! recorder ([`set_recorder`]) also learns each link's protocol and when a connection opens
+//! and closes, which it needs to write standard captures.
 
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex, OnceLock};
@@ -13,6 +18,31 @@ pub enum Dir {
     Received,
 }
 
+/// The protocol a link carries, so a recording can encapsulate and decode its frames.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Proto {
+    /// Not declared by the driver: recorded as raw bytes.
+    Unknown,
+    /// Modbus TCP (MBAP header + PDU).
+    ModbusTcp,
+    /// Modbus RTU on a serial line (unit, PDU, CRC).
+    ModbusRtu,
+    /// Modbus RTU frames carried over a TCP connection (a transparent gateway).
+    RtuOverTcp,
+    /// The Kinco servo drives' 10-byte RS232 frames.
+    KincoServo,
+}
+
+/// Receives every frame with its link's protocol, and connection boundaries.
+pub trait Recorder: Send + Sync {
+    /// A connection on `link` opened (`peer`: where it goes, e.g. `127.0.0.1:502`).
+    fn opened(&self, link: &str, proto: Proto, peer: &str);
+    /// A frame (or, for stream transports, a piece of one) crossed `link`.
+    fn frame(&self, link: &str, proto: Proto, dir: Dir, bytes: &[u8]);
+    /// The connection on `link` closed.
+    fn closed(&self, link: &str);
+}
+
 /// Where traced frames go.
 pub trait FrameSink: Send + Sync {
     /// `link` names the device or port; `since_last` is the time since the previous frame.
@@ -20,6 +50,39 @@ pub trait FrameSink: Send + Sync {
 }
 
 static ENABLED: AtomicBool = AtomicBool::new(false);
+static RECORDING: AtomicBool = AtomicBool::new(false);
+
+fn recorder() -> &'static Mutex<Option<Arc<dyn Recorder>>> {
+    static R: OnceLock<Mutex<Option<Arc<dyn Recorder>>>> = OnceLock::new();
+    R.get_or_init(|| Mutex::new(None))
+}
+
+/// Sends every frame and connection event to `rec` from now on (`None` stops recording).
+pub fn set_recorder(rec: Option<Arc<dyn Recorder>>) {
+    let mut r = recorder().lock().unwrap_or_else(|p| p.into_inner());
+    RECORDING.store(rec.is_some(), Ordering::Relaxed);
+    *r = rec;
+}
+
+fn with_recorder(f: impl FnOnce(&dyn Recorder)) {
+    if !RECORDING.load(Ordering::Relaxed) {
+        return;
+    }
+    let r = recorder().lock().unwrap_or_else(|p| p.into_inner()).clone();
+    if let Some(r) = r {
+        f(r.as_ref());
+    }
+}
+
+/// Reports that a connection on `link` opened.
+pub fn opened(link: &str, proto: Proto, peer: &str) {
+    with_recorder(|r| r.opened(link, proto, peer));
+}
+
+/// Reports that the connection on `link` closed.
+pub fn closed(link: &str) {
+    with_recorder(|r| r.closed(link));
+}
 
 struct State {
     sink: Arc<dyn FrameSink>,
@@ -42,8 +105,14 @@ pub fn enabled() -> bool {
     ENABLED.load(Ordering::Relaxed)
 }
 
-/// Reports one frame (drivers call this for every frame on the wire).
+/// Reports one frame of an undeclared protocol.
 pub fn frame(link: &str, dir: Dir, bytes: &[u8]) {
+    frame_proto(link, Proto::Unknown, dir, bytes)
+}
+
+/// Reports one frame (drivers call this for every frame on the wire).
+pub fn frame_proto(link: &str, proto: Proto, dir: Dir, bytes: &[u8]) {
+    with_recorder(|r| r.frame(link, proto, dir, bytes));
     if !enabled() {
         return;
     }

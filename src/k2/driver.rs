@@ -37,6 +37,7 @@ use super::operand::K2Operand;
 use super::space::K2Space;
 use crate::core::link::fd_stream::FdStream;
 use crate::core::link::traced::Traced;
+use crate::core::trace::Proto;
 use crate::core::url::DeviceUrl;
 use crate::core::{Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
 use std::collections::HashMap;
@@ -136,6 +137,8 @@ pub struct K2Wire {
     agent: Option<AgentClient>,
     /// SM bytes as last read or written through the helper.
     sm_shadow: Memory,
+    /// The PLC closed the current connection (set by the traced stream).
+    peer_closed: std::sync::Arc<std::sync::atomic::AtomicBool>,
 }
 
 /// A read batch mapped and planned (everything but the wire).
@@ -236,6 +239,7 @@ impl K2Wire {
             last_read: None,
             agent: None,
             sm_shadow: sm::shadow(catalog::SM_BYTES),
+            peer_closed: Default::default(),
         })
     }
 
@@ -247,7 +251,8 @@ impl K2Wire {
         T: tokio::io::AsyncRead + tokio::io::AsyncWrite + Send + Unpin + 'static,
     {
         let mut dev = K2Wire::with_link(Link::Attached { rtu }, model, settings, name.clone())?;
-        let t = Traced::new(transport, name);
+        let proto = if rtu { Proto::ModbusRtu } else { Proto::ModbusTcp };
+        let t = Traced::with_proto(transport, name, proto, "attached stream");
         let slave = Slave(dev.settings.unit);
         dev.ctx = Some(if rtu {
             tokio_modbus::client::rtu::attach_slave(t, slave)
@@ -266,6 +271,8 @@ impl K2Wire {
         let name = self.info.link.clone();
         let timeout = self.settings.timeout;
         let link = self.link.clone();
+        self.peer_closed.store(false, std::sync::atomic::Ordering::Relaxed);
+        let closed = self.peer_closed.clone();
         let ctx: Result<Context> = self.rt.block_on(async move {
             match &link {
                 Link::Tcp { addr } | Link::RtuOverTcp { addr } => {
@@ -280,7 +287,8 @@ impl K2Wire {
                             )
                         })?;
                     stream.set_nodelay(true).map_err(|e| Error::link("cannot set TCP_NODELAY").cause(e))?;
-                    let t = Traced::new(stream, name);
+                    let proto = if matches!(link, Link::Tcp { .. }) { Proto::ModbusTcp } else { Proto::RtuOverTcp };
+                    let t = Traced::with_proto(stream, name, proto, addr).watch_eof(closed);
                     Ok(if matches!(link, Link::Tcp { .. }) {
                         tokio_modbus::client::tcp::attach_slave(t, slave)
                     } else {
@@ -305,7 +313,8 @@ impl K2Wire {
                         })?;
                     let stream = FdStream::new(port)
                         .map_err(|e| Error::link(format!("cannot register the serial port {path}")).cause(e))?;
-                    Ok(tokio_modbus::client::rtu::attach_slave(Traced::new(stream, name), slave))
+                    let t = Traced::with_proto(stream, name, Proto::ModbusRtu, path);
+                    Ok(tokio_modbus::client::rtu::attach_slave(t, slave))
                 }
             }
         });
@@ -342,7 +351,14 @@ impl K2Wire {
                 Ok(Err(e)) => {
                     // Dropped connection, garbled or mismatched reply: start afresh.
                     self.ctx = None;
-                    last = Some(Failure::Link(Error::link("the link failed").cause(e)));
+                    last = Some(Failure::Link(if self.peer_closed.load(std::sync::atomic::Ordering::Relaxed) {
+                        // tokio-modbus reports end of file with a stale OS error; the stream saw it.
+                        Error::link("the PLC closed the connection instead of replying").hint(
+                            "plcsh reconnects and retries (retries=); if it keeps happening, check the PLC's limit on Modbus TCP connections and whether another client or a gateway takes the connection over",
+                        )
+                    } else {
+                        Error::link("the link failed").cause(e)
+                    }));
                 }
                 Err(_) => {
                     self.ctx = None;

@@ -19,7 +19,7 @@ use std::fmt;
 use std::time::Duration;
 
 /// What happened.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, serde::Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum EventKind {
     /// A PTO finished its pulses (single or multi-segment).
@@ -31,6 +31,8 @@ pub enum EventKind {
     HscReset { channel: u8 },
     /// An E2PROM backup byte crossed a wear threshold (`writes` so far, manual §2.2.8).
     EepromWear { byte: u32, writes: u64 },
+    /// An injected fault acted (`fault` is its kind's code, `crate::k2::sim::fault`).
+    Fault { id: u32, fault: u8 },
 }
 
 /// PTO0's completion event (manual §3.4.2.3).
@@ -57,6 +59,7 @@ impl EventKind {
             EventKind::HscCvEqPv { channel, pv: None } => format!("hsc{channel}-cv=pv"),
             EventKind::HscReset { channel } => format!("hsc{channel}-reset"),
             EventKind::EepromWear { .. } => "eeprom-wear".to_string(),
+            EventKind::Fault { id, .. } => format!("fault{id}"),
         }
     }
 
@@ -69,6 +72,9 @@ impl EventKind {
             EventKind::HscReset { channel } => format!("HSC{channel} external reset"),
             EventKind::EepromWear { byte, writes } => {
                 format!("E2PROM byte VB{byte} has been written {writes} times (endurance ~1 000 000, §2.2.8)")
+            }
+            EventKind::Fault { id, fault } => {
+                format!("injected fault {id} ({}) acted", crate::k2::sim::fault::FaultKind::name_of_code(fault))
             }
         }
     }

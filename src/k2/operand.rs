@@ -14,7 +14,7 @@ use crate::core::text::edit_distance;
 use crate::core::{DataType, Error, ErrorKind, Result};
 
 /// A K2 memory area.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize, serde::Deserialize)]
 pub enum Area {
     I,
     Q,

@@ -122,6 +122,8 @@ pub const BRIDGE: &[Bridge] = &[
     row("sim_quad", "k2", "sim quad {} {}"),
     row("sim_off", "k2", "sim input {} off"),
     row("sim_inputs", "k2", "sim inputs"),
+    row("inject_fault", "k2", "sim fault {}"),
+    row("injected_faults", "k2", "sim faults"),
     // Kinco servo drive (kinco-servo.md).
     row("status", "servo", "servo status"),
     row("enable", "servo", "servo enable"),

@@ -33,7 +33,7 @@ use super::sim::{SimLine, SimLink};
 use super::units::{self, Resolution};
 use super::ServoOps;
 use crate::core::literal::parse_duration_us;
-use crate::core::trace::{self, Dir};
+use crate::core::trace::{self, Dir, Proto};
 use crate::core::url::DeviceUrl;
 use crate::core::{Clock, Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
 use std::sync::{Arc, Mutex};
@@ -119,7 +119,7 @@ impl Driver {
         let mut t = self.line.transport.lock().unwrap_or_else(|p| p.into_inner());
         let io_err = |e: std::io::Error| Error::link(format!("serial I/O on {name} failed")).cause(e);
         t.discard_input().map_err(io_err)?;
-        trace::frame(&name, Dir::Sent, bytes);
+        trace::frame_proto(&name, Proto::KincoServo, Dir::Sent, bytes);
         t.send(bytes).map_err(io_err)?;
         let deadline = Instant::now() + self.timeout;
         if self.echo {
@@ -128,7 +128,7 @@ impl Driver {
                 return Err(Error::link(format!("no echo of the request on {name} (loop mode is on)"))
                     .hint("the loop is open (cable) or the line is not in loop mode: drop echo=1 from the URL"));
             }
-            trace::frame(&name, Dir::Received, &echo);
+            trace::frame_proto(&name, Proto::KincoServo, Dir::Received, &echo);
             if echo != bytes {
                 // A reply where the echo should be: the line is not in loop mode.
                 let is_reply = <[u8; FRAME_LEN]>::try_from(echo.as_slice())
@@ -154,7 +154,7 @@ impl Driver {
         }
         let got = Self::read_exact(t.as_mut(), FRAME_LEN, deadline).map_err(io_err)?;
         if !got.is_empty() {
-            trace::frame(&name, Dir::Received, &got);
+            trace::frame_proto(&name, Proto::KincoServo, Dir::Received, &got);
         }
         Ok(match <[u8; FRAME_LEN]>::try_from(got.as_slice()) {
             Ok(b) => Exchange::Reply(b),

@@ -35,7 +35,7 @@ pub mod cw {
 }
 
 /// DS402 states.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum State {
     NotReadyToSwitchOn,
     SwitchOnDisabled,

@@ -14,7 +14,7 @@ use crate::k2::K2Ops;
 use std::time::Duration;
 
 /// The helper's state in the simulator.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, serde::Serialize, serde::Deserialize)]
 pub struct Agent {
     /// Mailbox base (V byte offset).
     pub base: u32,

@@ -116,6 +116,32 @@ impl EventLog {
     }
 }
 
+/// The log's state for snapshots (`crate::snapshot`).
+#[derive(Clone, Debug, serde::Serialize, serde::Deserialize)]
+pub struct EventLogState {
+    /// `(sequence number, virtual time in ns, what)`, oldest first.
+    events: Vec<(u64, u64, EventKind)>,
+    next_seq: u64,
+    dropped: u64,
+}
+
+impl EventLog {
+    pub fn save(&self) -> EventLogState {
+        EventLogState {
+            events: self.events.iter().map(|e| (e.seq, e.time.as_nanos() as u64, e.kind)).collect(),
+            next_seq: self.next_seq,
+            dropped: self.dropped,
+        }
+    }
+
+    pub fn load(&mut self, s: EventLogState) {
+        self.events =
+            s.events.into_iter().map(|(seq, ns, kind)| Event { seq, time: Duration::from_nanos(ns), kind }).collect();
+        self.next_seq = s.next_seq;
+        self.dropped = s.dropped;
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

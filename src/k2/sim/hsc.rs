@@ -35,6 +35,7 @@ use crate::k2::catalog::HscSpec;
 use crate::k2::instr::EventKind;
 use crate::k2::memory::Memory;
 use crate::k2::sm_map::{self, HscKind, HscModeInputs, HscRegs};
+use serde::{Deserialize, Serialize};
 use std::time::Duration;
 
 /// Control byte bits (§3.3.2).
@@ -70,7 +71,7 @@ pub mod st {
 pub const MAX_PVS: u8 = 32;
 
 /// A loaded PV table.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub struct PvTable {
     pub pvs: Vec<i64>,
     pub relative: bool,
@@ -227,7 +228,7 @@ fn level_in(i: &[u8], p: Pin) -> bool {
 }
 
 /// Compare state in multi-PV mode.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug, Default, Serialize, Deserialize)]
 struct Compare {
     seg: usize,
     target: i64,
@@ -799,6 +800,74 @@ impl HscChannel {
             return None;
         }
         Some(d.timer(now, horizon, sign).time_of(dist as u64))
+    }
+}
+
+/// A counter's state for snapshots (`crate::snapshot`): everything but the registers, the
+/// model's limits and the cache (worked out again on the next step).
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct HscState {
+    /// The `HDEF` mode number.
+    mode: Option<u8>,
+    running: bool,
+    cv: i64,
+    dir_up: bool,
+    rate4x: bool,
+    reset_low: bool,
+    start_low: bool,
+    pv: i64,
+    multi: bool,
+    table: Option<PvTable>,
+    fault: bool,
+    cmp: Compare,
+    last_up: bool,
+    user_cv: bool,
+}
+
+impl HscChannel {
+    pub fn save(&self) -> HscState {
+        HscState {
+            mode: self.mode.map(|m| m.mode),
+            running: self.running,
+            cv: self.cv,
+            dir_up: self.dir_up,
+            rate4x: self.rate4x,
+            reset_low: self.reset_low,
+            start_low: self.start_low,
+            pv: self.pv,
+            multi: self.multi,
+            table: self.table.clone(),
+            fault: self.fault,
+            cmp: self.cmp,
+            last_up: self.last_up,
+            user_cv: self.user_cv,
+        }
+    }
+
+    /// Restores a saved state; refuses a mode this channel does not have.
+    pub fn load(&mut self, s: HscState) -> std::result::Result<(), String> {
+        self.mode = match s.mode {
+            Some(m) => Some(
+                sm_map::hsc_mode(self.regs.channel, m)
+                    .ok_or_else(|| format!("HSC{} has no mode {m}", self.regs.channel))?,
+            ),
+            None => None,
+        };
+        self.running = s.running;
+        self.cv = s.cv;
+        self.dir_up = s.dir_up;
+        self.rate4x = s.rate4x;
+        self.reset_low = s.reset_low;
+        self.start_low = s.start_low;
+        self.pv = s.pv;
+        self.multi = s.multi;
+        self.table = s.table;
+        self.fault = s.fault;
+        self.cmp = s.cmp;
+        self.last_up = s.last_up;
+        self.user_cv = s.user_cv;
+        self.cache = None;
+        Ok(())
     }
 }
 

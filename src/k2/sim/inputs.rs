@@ -19,7 +19,7 @@ pub fn pin_name(p: Pin) -> String {
 }
 
 /// A square wave, 50 % duty.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct Wave {
     /// Frequency in Hz (> 0).
     pub hz: u64,
@@ -93,7 +93,7 @@ impl Wave {
 }
 
 /// One signal source.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum Source {
     /// A square wave on one input.
     Freq { pin: Pin, wave: Wave },

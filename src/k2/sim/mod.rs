@@ -10,10 +10,12 @@
 
 pub mod agent;
 pub mod events;
+pub mod fault;
 pub mod hsc;
 pub mod inputs;
 pub mod pto;
 pub mod rtc;
+pub mod snapshot;
 pub mod state;
 
 pub mod modbus_server;
@@ -60,6 +62,8 @@ pub struct K2Sim {
     pub backup: Backup,
     /// The PLC-side helper program, when served with `--agent` (issue 5).
     pub agent: Option<agent::Agent>,
+    /// Injected faults ([`fault`]).
+    pub faults: fault::Faults,
     /// Scratch space of `advance_to` (events raised in a step, where each channel's end),
     /// kept so a step allocates nothing.
     raised: Vec<(Duration, EventKind)>,
@@ -86,6 +90,7 @@ impl K2Sim {
             rtc: Rtc::new(instr::host_local_now(), start),
             backup: Backup { since: start, ..Backup::default() },
             agent: None,
+            faults: fault::Faults::default(),
             raised: Vec::new(),
             run_ends: Vec::new(),
         };
@@ -132,6 +137,12 @@ impl K2Sim {
             ends.push(raised.len());
         }
         self.refresh_input_levels(now);
+        if !self.faults.is_empty() {
+            for (at, id, kind) in self.faults.apply_inputs(&mut self.mem.i, now) {
+                raised.push((at.max(last), EventKind::Fault { id, fault: kind.code() }));
+                ends.push(raised.len());
+            }
+        }
         if skipped > 0 {
             self.events.skip(skipped);
         }
@@ -492,6 +503,36 @@ impl Drop for K2Sim {
     }
 }
 
+impl K2Sim {
+    /// An in-process request fault acting on these operands ([`fault`]): a `no-reply` is the
+    /// link error the wire driver reports, an `exception` the PLC refusing. Logged as an event.
+    fn injected_fault(&mut self, keys: impl Iterator<Item = u64>) -> Result<()> {
+        if self.faults.is_empty() {
+            return Ok(());
+        }
+        let touched: Vec<(Area, u32, u32)> = keys
+            .map(|k| {
+                let o = K2Operand::from_key(k);
+                (o.area, o.byte, o.byte + o.width.bytes().max(1) - 1)
+            })
+            .collect();
+        let now = self.last;
+        let Some((id, kind)) = self.faults.on_request(now, &touched, false) else { return Ok(()) };
+        self.events.extend(vec![(now, EventKind::Fault { id, fault: kind.code() })]);
+        Err(match kind {
+            fault::FaultKind::Exception { code } => Error::new(
+                ErrorKind::Refused,
+                format!(
+                    "the PLC refused the request: Modbus exception {code:02X} {} (injected fault {id})",
+                    crate::k2::modbus_map::exception_name(code)
+                ),
+            ),
+            _ => Error::link(format!("no reply from the PLC (injected fault {id}: {})", kind.name()))
+                .hint("sim faults lists the injected faults; sim fault clear removes them"),
+        })
+    }
+}
+
 impl Device for K2Sim {
     fn info(&self) -> &DeviceInfo {
         &self.info
@@ -503,6 +544,7 @@ impl Device for K2Sim {
 
     fn read(&mut self, ops: &[Operand]) -> Result<Vec<Value>> {
         self.advance();
+        self.injected_fault(ops.iter().map(|o| o.key))?;
         Ok(ops.iter().map(|o| o.dtype.decode(self.mem.read_key(o.key))).collect())
     }
 
@@ -511,6 +553,7 @@ impl Device for K2Sim {
             self.check_writable(&K2Operand::from_key(o.key))?;
         }
         self.advance();
+        self.injected_fault(items.iter().map(|(o, _)| o.key))?;
         let old_i = self.mem.i.clone();
         let mut raised = Vec::new();
         for (o, v) in items {

@@ -16,10 +16,15 @@
 //! scans since the last request did — the pulse outputs, the counters, and, with `--agent`,
 //! the PLC-side helper program once per scan (`k2::sim::agent`). So each request sees memory
 //! as a PLC would between two scans.
+//!
+//! Injected faults ([`crate::k2::sim::fault`]) act here, on every transport: no reply, an
+//! exception, a late reply; a corrupted CRC on RTU; a dropped connection on TCP.
 
 use crate::core::link::async_pty::AsyncPty;
+use crate::k2::instr::EventKind;
 use crate::k2::modbus_map::{self, Exception, Table};
 use crate::k2::operand::Area;
+use crate::k2::sim::fault::FaultKind;
 use crate::k2::sim::rtu_frame::{self, Frame};
 use crate::k2::sim::K2Sim;
 use std::future::{ready, Ready};
@@ -35,6 +40,15 @@ use tokio_modbus::{ExceptionCode, Request, Response, SlaveRequest};
 pub struct K2Service {
     sim: Arc<Mutex<K2Sim>>,
     unit: u8,
+    /// This connection's socket (a duplicate handle), for the `drop` fault.
+    conn: Option<Arc<std::net::TcpStream>>,
+}
+
+/// A request served, with the injected fault that acted on it (if any), for the transport
+/// to finish (corrupt the CRC, drop the connection).
+pub struct Served {
+    pub reply: Option<Result<Response, ExceptionCode>>,
+    pub fault: Option<FaultKind>,
 }
 
 fn lock<T: ?Sized>(m: &Mutex<T>) -> MutexGuard<'_, T> {
@@ -49,7 +63,7 @@ impl From<Exception> for ExceptionCode {
 
 impl K2Service {
     pub fn new(sim: Arc<Mutex<K2Sim>>, unit: u8) -> K2Service {
-        K2Service { sim, unit }
+        K2Service { sim, unit, conn: None }
     }
 
     pub fn unit(&self) -> u8 {
@@ -59,14 +73,62 @@ impl K2Service {
     /// Serves one request addressed to `unit`. `None`: no reply (another unit id, or a
     /// broadcast).
     pub fn handle(&self, unit: u8, req: &Request<'_>) -> Option<Result<Response, ExceptionCode>> {
+        self.handle_with_faults(unit, req).reply
+    }
+
+    /// Serves one request, letting injected faults act on it (logged as events).
+    pub fn handle_with_faults(&self, unit: u8, req: &Request<'_>) -> Served {
         if unit != self.unit && unit != 0 {
-            return None;
+            return Served { reply: None, fault: None };
         }
         let mut sim = lock(&self.sim);
         sim.advance();
+        let mut fault = None;
+        if !sim.faults.is_empty() {
+            let touched = touched(&sim, req);
+            let now = sim.last;
+            if let Some((id, kind)) = sim.faults.on_request(now, &touched, true) {
+                sim.events.extend(vec![(now, EventKind::Fault { id, fault: kind.code() })]);
+                fault = Some(kind);
+                match kind {
+                    FaultKind::NoReply | FaultKind::Drop => return Served { reply: None, fault },
+                    FaultKind::Exception { code } => {
+                        return Served { reply: (unit != 0).then_some(Err(ExceptionCode::new(code))), fault }
+                    }
+                    FaultKind::Late { ms } => {
+                        // Wall time: the client's timeout runs on it. The simulator is unlocked meanwhile.
+                        drop(sim);
+                        std::thread::sleep(std::time::Duration::from_millis(ms));
+                        sim = lock(&self.sim);
+                        sim.advance();
+                    }
+                    _ => {}
+                }
+            }
+        }
         let r = serve(&mut sim, req).map_err(ExceptionCode::from);
-        (unit != 0).then_some(r)
+        Served { reply: (unit != 0).then_some(r), fault }
     }
+}
+
+/// The area bytes a request touches (none when it is outside the map), for fault ranges.
+fn touched(sim: &K2Sim, req: &Request<'_>) -> Vec<(Area, u32, u32)> {
+    let (table, addr, count) = match req {
+        Request::ReadCoils(a, n) | Request::ReadDiscreteInputs(a, n) => {
+            (if matches!(req, Request::ReadCoils(..)) { Table::Coils } else { Table::DiscreteInputs }, *a, *n)
+        }
+        Request::ReadHoldingRegisters(a, n) => (Table::HoldingRegisters, *a, *n),
+        Request::ReadInputRegisters(a, n) => (Table::InputRegisters, *a, *n),
+        Request::WriteSingleCoil(a, _) => (Table::Coils, *a, 1),
+        Request::WriteMultipleCoils(a, b) => (Table::Coils, *a, b.len() as u16),
+        Request::WriteSingleRegister(a, _) => (Table::HoldingRegisters, *a, 1),
+        Request::WriteMultipleRegisters(a, w) => (Table::HoldingRegisters, *a, w.len() as u16),
+        _ => return Vec::new(),
+    };
+    let Ok((region, off)) = modbus_map::resolve(sim.space(), table, addr, count.max(1)) else { return Vec::new() };
+    let n = u32::from(count.max(1));
+    let (first, last) = if table.is_bits() { (off / 8, (off + n - 1) / 8) } else { (2 * off, 2 * (off + n) - 1) };
+    vec![(region.area, first, last)]
 }
 
 /// The area bytes a request addresses, after the limit and bound checks.
@@ -159,7 +221,14 @@ impl Service for K2Service {
     type Future = Ready<Result<Option<Response>, ExceptionCode>>;
 
     fn call(&self, req: SlaveRequest<'static>) -> Self::Future {
-        ready(match self.handle(req.slave, &req.request) {
+        let served = self.handle_with_faults(req.slave, &req.request);
+        if served.fault == Some(FaultKind::Drop) {
+            if let Some(c) = &self.conn {
+                // The client sees the connection closed instead of a reply.
+                let _ = c.shutdown(std::net::Shutdown::Both);
+            }
+        }
+        ready(match served.reply {
             None => Ok(None),
             Some(Ok(r)) => Ok(Some(r)),
             Some(Err(e)) => Err(e),
@@ -170,7 +239,11 @@ impl Service for K2Service {
 fn accept(service: &K2Service, stream: TcpStream) -> io::Result<Option<(K2Service, TcpStream)>> {
     // One request in flight, small frames: send each reply at once.
     stream.set_nodelay(true)?;
-    Ok(Some((service.clone(), stream)))
+    use std::os::fd::AsFd;
+    let dup = std::net::TcpStream::from(stream.as_fd().try_clone_to_owned()?);
+    let mut service = service.clone();
+    service.conn = Some(Arc::new(dup));
+    Ok(Some((service, stream)))
 }
 
 /// Serves Modbus TCP on `listener` until the future is dropped.
@@ -217,17 +290,26 @@ where
         }
         buf.extend_from_slice(&chunk[..n]);
         while let Some(frame) = rtu_frame::next_frame(&mut buf) {
-            let (unit, function, reply) = match frame {
-                Frame::Request { unit, request } => match service.handle(unit, &request) {
-                    Some(reply) => (unit, request.function_code().value(), reply),
-                    None => continue,
-                },
+            let (unit, function, reply, fault) = match frame {
+                Frame::Request { unit, request } => {
+                    let served = service.handle_with_faults(unit, &request);
+                    match served.reply {
+                        Some(reply) => (unit, request.function_code().value(), reply, served.fault),
+                        None => continue,
+                    }
+                }
                 Frame::Refuse { unit, function, exception } if unit == service.unit() => {
-                    (unit, function, Err(exception))
+                    (unit, function, Err(exception), None)
                 }
                 Frame::Refuse { .. } => continue,
             };
-            s.write_all(&rtu_frame::encode(unit, function, &reply)).await?;
+            let mut bytes = rtu_frame::encode(unit, function, &reply);
+            if fault == Some(FaultKind::BadCrc) {
+                if let Some(last) = bytes.last_mut() {
+                    *last ^= 0xFF;
+                }
+            }
+            s.write_all(&bytes).await?;
         }
     }
 }
@@ -238,6 +320,7 @@ mod tests {
     use crate::core::Clock;
     use crate::k2::sim;
     use std::borrow::Cow;
+    use std::time::Duration;
 
     fn service(model: &str) -> K2Service {
         let s = sim::open(model, Clock::stepped()).unwrap();
@@ -304,5 +387,26 @@ mod tests {
         assert!(s.handle(2, &Request::ReadHoldingRegisters(100, 1)).is_none());
         assert!(s.handle(0, &Request::WriteSingleRegister(100, 7)).is_none());
         assert_eq!(ok(&s, Request::ReadHoldingRegisters(100, 1)), Response::ReadHoldingRegisters(vec![7]));
+    }
+
+    #[test]
+    fn served_faults_act_on_their_range_and_are_logged() {
+        use crate::k2::sim::fault;
+        let s = service("K205-16DT");
+        {
+            let mut sim = lock(&s.sim);
+            for f in ["no-reply on VW0 times=1", "exception 4 on VW100..VW110", "bad-crc on MB0 times=1"] {
+                sim.faults.add(&fault::parse(f).unwrap(), Duration::ZERO);
+            }
+        }
+        assert!(s.handle(1, &Request::ReadHoldingRegisters(100, 1)).is_none(), "VW0 = register 100: no reply");
+        assert!(s.handle(1, &Request::ReadHoldingRegisters(100, 1)).unwrap().is_ok(), "times=1");
+        assert_eq!(err(&s, Request::ReadHoldingRegisters(152, 4)), ExceptionCode::new(4), "VW104…VW110");
+        assert!(s.handle(1, &Request::ReadHoldingRegisters(140, 1)).unwrap().is_ok(), "VW80: outside");
+        let served = s.handle_with_faults(1, &Request::ReadCoils(320, 8));
+        assert_eq!(served.fault, Some(FaultKind::BadCrc), "M0.0…M0.7");
+        assert!(served.reply.unwrap().is_ok(), "the reply goes out; the RTU framing corrupts it");
+        let names: Vec<String> = lock(&s.sim).events.list().iter().map(|e| e.kind.name()).collect();
+        assert_eq!(names, vec!["fault1", "fault2", "fault3"]);
     }
 }

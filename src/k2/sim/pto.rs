@@ -32,6 +32,7 @@ use crate::k2::catalog::PtoSpec;
 use crate::k2::instr::EventKind;
 use crate::k2::memory::Memory;
 use crate::k2::sm_map::PtoRegs;
+use serde::{Deserialize, Serialize};
 use std::time::Duration;
 
 /// Control byte bits (§3.4.2.2).
@@ -66,7 +67,7 @@ pub mod pos {
 pub const MAX_SEGMENTS: u8 = 64;
 
 /// One segment of a running train.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Seg {
     pub cycle_ns: u64,
     pub count: u64,
@@ -96,7 +97,7 @@ impl Seg {
 }
 
 /// A running PTO train.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct PtoRun {
     pub start: Duration,
     /// `start` in ns.
@@ -180,7 +181,7 @@ fn dur(ns: u128) -> Duration {
 }
 
 /// A running PWM.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, Serialize, Deserialize)]
 struct PwmRun {
     start: Duration,
     cycle_ns: u64,
@@ -200,7 +201,7 @@ impl PwmRun {
     }
 }
 
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 enum Run {
     Idle,
     Pto(PtoRun),
@@ -576,6 +577,33 @@ impl PtoChannel {
             segs.push((cycle_ns, count as u64));
         }
         Ok(segs)
+    }
+}
+
+/// A channel's state for snapshots (`crate::snapshot`); the registers and the model's
+/// limits come from the model the snapshot is restored on.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct PtoState {
+    cycle: u16,
+    width: u16,
+    count: u32,
+    run: Run,
+    counted: u64,
+}
+
+impl PtoChannel {
+    pub fn save(&self) -> PtoState {
+        PtoState {
+            cycle: self.cycle,
+            width: self.width,
+            count: self.count,
+            run: self.run.clone(),
+            counted: self.counted,
+        }
+    }
+
+    pub fn load(&mut self, s: PtoState) {
+        (self.cycle, self.width, self.count, self.run, self.counted) = (s.cycle, s.width, s.count, s.run, s.counted);
     }
 }
 

@@ -6,7 +6,7 @@
 use crate::k2::instr::RtcTime;
 use std::time::Duration;
 
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, serde::Serialize, serde::Deserialize)]
 pub struct Rtc {
     /// Civil seconds (see [`RtcTime::to_secs`]) at `at`.
     base: i64,

@@ -8,7 +8,7 @@
 //! the switch speed to the same end point, so homing takes slightly less time than on a drive.
 
 /// The simulated switches, in position coordinates (increments).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Switches {
     /// The home switch's edge: the switch is active at and above it.
     pub home: f64,
@@ -41,7 +41,7 @@ impl Switches {
 }
 
 /// Which limit switch a method homes onto (so reaching it is the goal, not an error).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum Onto {
     Nothing,
     NegLimit,

@@ -186,6 +186,18 @@ impl SimLine {
     }
 }
 
+impl SimLine {
+    /// Every drive's state, for snapshots (`crate::snapshot`).
+    pub fn save_drives(&self) -> Vec<drive::DriveState> {
+        self.drives.iter().map(|d| d.save()).collect()
+    }
+
+    /// Replaces the drives with saved ones.
+    pub fn restore_drives(&mut self, drives: Vec<drive::DriveState>) {
+        self.drives = drives.into_iter().map(Drive::from_state).collect();
+    }
+}
+
 /// The in-process transport: frames go straight to a [`SimLine`]. With line timing the
 /// bytes become readable only when a real line would have delivered them (wall clock).
 pub struct SimLink {

@@ -23,7 +23,7 @@ pub fn accel_from_dec(dec: f64) -> f64 {
     dec * 4_000_000.0 / 65536.0
 }
 
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 struct Seg {
     t0: f64,
     dur: f64,
@@ -44,7 +44,7 @@ impl Seg {
 }
 
 /// A planned motion: segments, then constant velocity `v_end` from `(t_end, p_end)` on.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Motion {
     segs: Vec<Seg>,
     t_end: f64,

@@ -1,6 +1,7 @@
 //! `sim time`, `sim step DURATION`, `sim run`: the session's virtual clock; `sim input`,
 //! `sim quad`, `sim inputs`: simulated signals on the PLC's inputs for the high-speed
-//! counters; `sim retain`: battery-retained ranges.
+//! counters; `sim retain`: battery-retained ranges; `sim snapshot`, `sim snapshots`: saved
+//! simulator states.
 
 use super::CommandSpec;
 use crate::core::clock::format_time;
@@ -13,9 +14,9 @@ use std::time::Duration;
 pub const SIM: CommandSpec = CommandSpec {
     name: "sim",
     aliases: &[],
-    usage: "sim time | sim step DURATION | sim run | sim input I0.1 freq=1kHz [dir=up|down] | sim input I0.1 off | sim quad A B freq=1kHz | sim inputs | sim retain RANGES|none",
-    summary: "the simulator's clock (show, step and keep stepped, follow the wall clock), input signals for the counters, retained ranges",
-    subcommands: &["time", "step", "run", "input", "quad", "inputs", "retain"],
+    usage: "sim time | sim step DURATION | sim run | sim input I0.1 freq=1kHz [dir=up|down] | sim input I0.1 off | sim quad A B freq=1kHz | sim inputs | sim retain RANGES|none | sim snapshot save|restore NAME | sim snapshots | sim fault KIND … | sim faults",
+    summary: "the simulator's clock (show, step and keep stepped, follow the wall clock), input signals for the counters, retained ranges, snapshots of the simulated state, injected faults",
+    subcommands: &["time", "step", "run", "input", "quad", "inputs", "retain", "snapshot", "snapshots", "fault", "faults"],
     run: sim,
 };
 
@@ -38,6 +39,11 @@ fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
         "run" => clock.run(),
         "input" if super::umpk::current_is_umpk(sh) => return super::umpk::sim_input(sh, args),
         "input" | "quad" | "inputs" | "retain" => return super::siminputs::run(sh, sub, args),
+        "snapshot" | "snapshots" => return super::snapshot::run(sh, sub, it.collect(), args.offset),
+        "fault" | "faults" => {
+            let rest = args.text.trim_start().get(sub.len()..).unwrap_or("").trim();
+            return super::fault::run(sh, sub, rest);
+        }
         other => return Err(Error::usage(format!("unknown `sim {other}`")).hint(SIM.usage).column(args.offset)),
     }
     let now = clock.now();

@@ -1,0 +1,117 @@
+//! `plcsh record show FILE` and `plcsh replay FILE`: thin calls into [`crate::record`].
+
+use crate::output::{self, Style};
+use crate::record::{file, replay, show};
+use clap::{Args, Subcommand};
+use std::io::Write;
+use std::path::PathBuf;
+
+#[derive(Subcommand, Debug)]
+pub enum RecordCmd {
+    /// Print a recording as a decoded timeline (K2 operand names, servo object names);
+    /// with --json one object per frame.
+    Show {
+        /// The file written by --record.
+        file: PathBuf,
+    },
+}
+
+#[derive(Args, Debug)]
+pub struct ReplayArgs {
+    /// The file written by --record.
+    pub file: PathBuf,
+    /// Simulate this K2 model instead of the one each recorded link names.
+    #[arg(long, value_name = "MODEL")]
+    pub sim_model: Option<String>,
+    /// Start the simulated K2 from this snapshot (a file, or a name saved with `sim snapshot save`).
+    #[arg(long, value_name = "NAME|FILE")]
+    pub snapshot: Option<String>,
+}
+
+fn fail(out: &mut dyn Write, style: Style, cmd: &str, e: &crate::core::Error) -> i32 {
+    let _ = output::write_error(out, style, cmd, e, None);
+    if e.kind == crate::core::ErrorKind::Usage {
+        2
+    } else {
+        1
+    }
+}
+
+pub fn show(cmd: &RecordCmd, style: Style, out: &mut dyn Write) -> i32 {
+    let RecordCmd::Show { file: path } = cmd;
+    let rec = match file::read(path) {
+        Ok(r) => r,
+        Err(e) => return fail(out, style, "record show", &e),
+    };
+    if let Some(why) = &rec.truncated {
+        eprintln!(
+            "plcsh: warning: {} ends early ({why}); showing the {} frames before",
+            path.display(),
+            rec.frames.len()
+        );
+    }
+    match show::write(&rec, style.json, out) {
+        Ok(()) => 0,
+        Err(e) => {
+            eprintln!("plcsh: {e}");
+            1
+        }
+    }
+}
+
+/// Exit status: 0 when every reply matches, 1 when any differs (or on error).
+pub fn replay(args: &ReplayArgs, devices_given: bool, style: Style, out: &mut dyn Write) -> i32 {
+    let run = || -> crate::core::Result<replay::Report> {
+        if devices_given {
+            // Replaying recorded writes at a machine could move it: only simulators built here.
+            return Err(crate::core::Error::usage(
+                "replay sends the recorded requests to simulators it builds itself, never to --device",
+            )
+            .hint("choose the simulated model with --sim-model and its starting state with --snapshot"));
+        }
+        let rec = file::read(&args.file)?;
+        if let Some(why) = &rec.truncated {
+            eprintln!("plcsh: warning: {} ends early ({why}); replaying the frames before", args.file.display());
+        }
+        replay::check_not_empty(&rec, &args.file)?;
+        let snapshot = args.snapshot.as_deref().map(crate::snapshot::locate).transpose()?;
+        replay::run(&rec, &replay::Target { model: args.sim_model.clone(), snapshot })
+    };
+    let report = match run() {
+        Ok(r) => r,
+        Err(e) => return fail(out, style, "replay", &e),
+    };
+    let r = if style.json {
+        report
+            .differences
+            .iter()
+            .try_for_each(|d| writeln!(out, "{}", serde_json::json!({ "difference": d })))
+            .and_then(|_| {
+                writeln!(
+                    out,
+                    "{}",
+                    serde_json::json!({ "ok": report.differences.is_empty(), "requests": report.requests,
+                    "differences": report.differences.len(), "skipped": report.skipped })
+                )
+            })
+    } else {
+        (|| {
+            for d in &report.differences {
+                let vt = d.vt.map(|v| format!(" at {v:.6} s")).unwrap_or_default();
+                writeln!(out, "frame {} ({}{vt}): {}", d.frame, d.device, d.request)?;
+                writeln!(out, "  {}", d.detail)?;
+                writeln!(out, "  recorded: {}", if d.recorded.is_empty() { "(no reply)" } else { &d.recorded })?;
+                writeln!(out, "  replayed: {}", if d.replayed.is_empty() { "(no reply)" } else { &d.replayed })?;
+            }
+            for s in &report.skipped {
+                writeln!(out, "not replayed: {s}")?;
+            }
+            writeln!(out, "{} request(s) replayed, {} difference(s)", report.requests, report.differences.len())
+        })()
+    };
+    if let Err(e) = r {
+        eprintln!("plcsh: {e}");
+        return 1;
+    }
+    i32::from(!report.differences.is_empty())
+}

@@ -1,0 +1,177 @@
+//! The K2 simulator's section of a snapshot ([`crate::snapshot`]): its complete state —
+//! every memory area, the pulse outputs and counters mid-run, the input signals, the event
+//! log, the real-time clock, the backup-area bookkeeping, the helper program — as plain data
+//! (serde). Restoring onto a simulator of the same model makes it continue exactly as the
+//! saved one would have.
+//!
+//! Not captured: the registers and limits (they come from the model) and caches that are
+//! worked out again from the state. A program engine adds its own section beside this one.
+
+use super::agent::Agent;
+use super::events::EventLogState;
+use super::hsc::HscState;
+use super::inputs::{Inputs, Source};
+use super::pto::PtoState;
+use super::rtc::Rtc;
+use super::state::{hex, unhex, Retain};
+use super::K2Sim;
+use crate::k2::operand::Area;
+use serde::{Deserialize, Serialize};
+use std::time::Duration;
+
+/// Memory areas as hex strings (compact, diffable).
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct MemImage {
+    pub i: String,
+    pub q: String,
+    pub m: String,
+    pub v: String,
+    pub sm: String,
+    pub ai: String,
+    pub aq: String,
+    pub t: Vec<i16>,
+    pub c: Vec<i16>,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct BackupState {
+    pub last: u32,
+    pub writes: Vec<u64>,
+    pub session: Vec<u64>,
+    /// `(area, first byte, length)`.
+    pub retain: Vec<(String, u32, u32)>,
+    pub since_ns: u64,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct K2State {
+    pub model: String,
+    /// Virtual times (ns) of power-up and of the last step.
+    pub start_ns: u64,
+    pub last_ns: u64,
+    pub mem: MemImage,
+    pub pto: Vec<PtoState>,
+    pub hsc: Vec<HscState>,
+    pub inputs: Vec<Source>,
+    pub events: EventLogState,
+    pub rtc: Rtc,
+    pub backup: BackupState,
+    pub agent: Option<Agent>,
+    /// Injected faults and their schedule.
+    #[serde(default)]
+    pub faults: super::fault::Faults,
+}
+
+fn ns(d: Duration) -> u64 {
+    u64::try_from(d.as_nanos()).unwrap_or(u64::MAX)
+}
+
+fn area_named(name: &str) -> Option<Area> {
+    [Area::V, Area::M, Area::I, Area::Q, Area::AI, Area::AQ, Area::SM].into_iter().find(|a| a.name() == name)
+}
+
+impl K2Sim {
+    /// The simulator's complete state.
+    pub fn snapshot_state(&self) -> K2State {
+        let m = &self.mem;
+        K2State {
+            model: self.model().name.to_string(),
+            start_ns: ns(self.start),
+            last_ns: ns(self.last),
+            mem: MemImage {
+                i: hex(&m.i),
+                q: hex(&m.q),
+                m: hex(&m.m),
+                v: hex(&m.v),
+                sm: hex(&m.sm),
+                ai: hex(&m.ai),
+                aq: hex(&m.aq),
+                t: m.t.clone(),
+                c: m.c.clone(),
+            },
+            pto: self.pto.iter().map(|p| p.save()).collect(),
+            hsc: self.hsc.iter().map(|h| h.save()).collect(),
+            inputs: self.inputs.sources().to_vec(),
+            events: self.events.save(),
+            rtc: self.rtc,
+            backup: BackupState {
+                last: self.backup.last,
+                writes: self.backup.writes.clone(),
+                session: self.backup.session.clone(),
+                retain: self.backup.retain.iter().map(|r| (r.area.name().to_string(), r.first, r.len)).collect(),
+                since_ns: ns(self.backup.since),
+            },
+            agent: self.agent,
+            faults: self.faults.clone(),
+        }
+    }
+
+    /// Restores a saved state. Refuses (changing nothing) a state of another model or one
+    /// whose sizes do not fit this model.
+    pub fn restore_snapshot(&mut self, s: &K2State) -> Result<(), String> {
+        if s.model != self.model().name {
+            return Err(format!("the snapshot is of a {}, this simulator is a {}", s.model, self.model().name));
+        }
+        let area = |name: &str, text: &str, want: usize| -> Result<Vec<u8>, String> {
+            let b = unhex(text).ok_or_else(|| format!("area {name} is not hex"))?;
+            if b.len() != want {
+                return Err(format!("area {name} has {} bytes, the {} has {want}", b.len(), s.model));
+            }
+            Ok(b)
+        };
+        let m = &self.mem;
+        let mem = (
+            area("I", &s.mem.i, m.i.len())?,
+            area("Q", &s.mem.q, m.q.len())?,
+            area("M", &s.mem.m, m.m.len())?,
+            area("V", &s.mem.v, m.v.len())?,
+            area("SM", &s.mem.sm, m.sm.len())?,
+            area("AI", &s.mem.ai, m.ai.len())?,
+            area("AQ", &s.mem.aq, m.aq.len())?,
+        );
+        if s.mem.t.len() != m.t.len() || s.mem.c.len() != m.c.len() {
+            return Err("timer or counter counts differ from the model's".into());
+        }
+        if s.pto.len() != self.pto.len() || s.hsc.len() != self.hsc.len() {
+            return Err("pulse output or counter counts differ from the model's".into());
+        }
+        let retain = s
+            .backup
+            .retain
+            .iter()
+            .map(|(a, first, len)| {
+                area_named(a).map(|area| Retain { area, first: *first, len: *len }).ok_or(format!("no area {a}"))
+            })
+            .collect::<Result<Vec<_>, String>>()?;
+        // Everything checked that can be: now apply. A counter mode is checked as it loads;
+        // on that (corrupt file) error the counters are reset first.
+        let mut hsc = self.hsc.clone();
+        for (h, st) in hsc.iter_mut().zip(&s.hsc) {
+            h.load(st.clone())?;
+        }
+        self.hsc = hsc;
+        (self.mem.i, self.mem.q, self.mem.m, self.mem.v, self.mem.sm, self.mem.ai, self.mem.aq) = mem;
+        self.mem.t = s.mem.t.clone();
+        self.mem.c = s.mem.c.clone();
+        for (p, st) in self.pto.iter_mut().zip(&s.pto) {
+            p.load(st.clone());
+        }
+        let mut inputs = Inputs::default();
+        for src in &s.inputs {
+            inputs.add(*src);
+        }
+        self.inputs = inputs;
+        self.events.load(s.events.clone());
+        self.rtc = s.rtc;
+        self.backup.last = s.backup.last;
+        self.backup.writes = s.backup.writes.clone();
+        self.backup.session = s.backup.session.clone();
+        self.backup.retain = retain;
+        self.backup.since = Duration::from_nanos(s.backup.since_ns);
+        self.agent = s.agent;
+        self.faults = s.faults.clone();
+        self.start = Duration::from_nanos(s.start_ns);
+        self.last = Duration::from_nanos(s.last_ns);
+        Ok(())
+    }
+}

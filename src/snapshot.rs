@@ -1,0 +1,244 @@
+//! Snapshots: the complete simulated state of a session's simulators in one file
+//! (`sim snapshot save NAME`, `sim snapshot restore NAME`, `sim snapshots`), so a lab can
+//! ship a starting state and the same script from the same snapshot gives the same results.
+//!
+//! The file is JSON, versioned and made of sections, so new kinds of state (a program and
+//! its timers, wiring) are new sections, not a new format:
+//!
+//! ```json
+//! { "format": "plcsh-snapshot", "version": 1, "clock_us": 1500000, "stepped": true,
+//!   "devices": { "plc":   { "family": "k2",    "sections": { "k2": { … } } },
+//!                "servo": { "family": "servo", "sections": { "servo": { … } } } } }
+//! ```
+//!
+//! A reader refuses a newer `version` and a section it does not know (a snapshot holding
+//! state this plcsh cannot restore would otherwise restore silently incomplete). Restoring
+//! needs the same devices, by name, with the same models; it checks everything before
+//! changing anything it can check, then sets the clock and each device.
+//!
+//! Named snapshots live in the user's data directory (`…/plcsh/snapshots/NAME.json`);
+//! a NAME with a `/` or ending in `.json` is a file path.
+
+use crate::core::{Error, Result};
+use crate::session::Session;
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::time::Duration;
+
+pub const FORMAT: &str = "plcsh-snapshot";
+pub const VERSION: u32 = 1;
+
+/// One device's state, by section.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct DeviceSnap {
+    pub family: String,
+    pub sections: BTreeMap<String, serde_json::Value>,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct Snapshot {
+    pub format: String,
+    pub version: u32,
+    /// The session's virtual time, microseconds.
+    pub clock_us: u64,
+    pub stepped: bool,
+    pub devices: BTreeMap<String, DeviceSnap>,
+}
+
+fn enc(v: impl Serialize) -> Result<serde_json::Value> {
+    serde_json::to_value(v).map_err(|e| Error::io("cannot encode the snapshot").cause(e))
+}
+
+fn dec<T: serde::de::DeserializeOwned>(v: &serde_json::Value, what: &str) -> Result<T> {
+    serde_json::from_value(v.clone()).map_err(|e| {
+        Error::usage(format!("the snapshot's {what} section is not valid")).cause(e).hint("the file may be damaged")
+    })
+}
+
+/// The sections this plcsh knows, per family.
+const KNOWN: &[(&str, &str)] = &[("k2", "k2"), ("servo", "servo")];
+
+impl Snapshot {
+    /// Captures every simulator in the session (real devices have no simulated state).
+    pub fn capture(s: &mut Session) -> Result<Snapshot> {
+        let clock = s.clock.clone();
+        let mut devices = BTreeMap::new();
+        for i in 0..s.entries().len() {
+            let e = s.entry(i);
+            let name = e.name.clone();
+            let dev = &mut e.device;
+            if let Some(sim) = dev.as_k2().and_then(|k| k.as_sim()) {
+                sim.advance();
+                let mut sections = BTreeMap::new();
+                sections.insert("k2".to_string(), enc(sim.snapshot_state())?);
+                devices.insert(name, DeviceSnap { family: "k2".into(), sections });
+            } else if let Some(line) = dev.as_servo().and_then(|sv| sv.simulator()) {
+                let line = line.lock().unwrap_or_else(|p| p.into_inner());
+                let mut sections = BTreeMap::new();
+                sections.insert("servo".to_string(), enc(line.save_drives())?);
+                devices.insert(name, DeviceSnap { family: "servo".into(), sections });
+            }
+        }
+        if devices.is_empty() {
+            return Err(Error::usage("no simulated device is open: nothing to snapshot")
+                .hint("snapshots hold simulator state (sim:MODEL, sim-servo:); a real device's state is its own"));
+        }
+        Ok(Snapshot {
+            format: FORMAT.into(),
+            version: VERSION,
+            clock_us: clock.now().as_micros() as u64,
+            stepped: clock.is_stepped(),
+            devices,
+        })
+    }
+
+    /// Restores onto the session's devices of the same names.
+    pub fn restore(&self, s: &mut Session) -> Result<()> {
+        self.check()?;
+        // Check that every device is there and of its family first.
+        for (name, d) in &self.devices {
+            let i = s.index(name).map_err(|e| e.cause("the snapshot has this device"))?;
+            let dev = &mut s.entry(i).device;
+            let ok = match d.family.as_str() {
+                "k2" => dev.as_k2().and_then(|k| k.as_sim()).is_some(),
+                "servo" => dev.as_servo().and_then(|sv| sv.simulator()).is_some(),
+                _ => false,
+            };
+            if !ok {
+                return Err(Error::usage(format!(
+                    "`{name}` is not a simulated {} device, as it was when the snapshot was saved",
+                    d.family
+                ))
+                .hint("open the same simulators under the same names (e.g. --device plc=sim:MODEL)"));
+            }
+        }
+        // Decode every section and check the models before anything changes.
+        let mut k2 = Vec::new();
+        let mut servo = Vec::new();
+        for (name, d) in &self.devices {
+            let i = s.index(name)?;
+            if let Some(v) = d.sections.get("k2") {
+                let st: crate::k2::sim::snapshot::K2State = dec(v, "k2")?;
+                let sim = s.entry(i).device.as_k2().and_then(|k| k.as_sim()).expect("checked above");
+                if st.model != sim.model().name {
+                    return Err(Error::usage(format!(
+                        "cannot restore `{name}`: the snapshot is of a {}, this simulator is a {}",
+                        st.model,
+                        sim.model().name
+                    ))
+                    .hint(format!("open it as {name}=sim:{}", st.model)));
+                }
+                k2.push((i, name, st));
+            }
+            if let Some(v) = d.sections.get("servo") {
+                let drives: Vec<crate::servo::sim::drive::DriveState> = dec(v, "servo")?;
+                servo.push((i, drives));
+            }
+        }
+        s.clock.set(Duration::from_micros(self.clock_us));
+        for (i, name, st) in k2 {
+            let sim = s.entry(i).device.as_k2().and_then(|k| k.as_sim()).expect("checked above");
+            sim.restore_snapshot(&st).map_err(|m| Error::usage(format!("cannot restore `{name}`: {m}")))?;
+        }
+        for (i, drives) in servo {
+            let line = s.entry(i).device.as_servo().and_then(|sv| sv.simulator()).expect("checked above");
+            line.lock().unwrap_or_else(|p| p.into_inner()).restore_drives(drives);
+        }
+        Ok(())
+    }
+
+    /// The format, version and sections are ones this plcsh can restore.
+    fn check(&self) -> Result<()> {
+        if self.format != FORMAT {
+            return Err(Error::usage(format!("not a plcsh snapshot (format `{}`)", self.format)));
+        }
+        if self.version > VERSION {
+            return Err(Error::usage(format!(
+                "the snapshot is version {}, this plcsh reads up to version {VERSION}",
+                self.version
+            ))
+            .hint("restore it with the newer plcsh that saved it"));
+        }
+        for (name, d) in &self.devices {
+            for section in d.sections.keys() {
+                if !KNOWN.iter().any(|(f, s)| *f == d.family && s == section) {
+                    return Err(Error::usage(format!(
+                        "the snapshot's `{name}` has a `{section}` section this plcsh cannot restore"
+                    ))
+                    .hint("it was saved by a newer plcsh; restoring without it would not give the same state"));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Writes the snapshot to `path` (atomically: a crash leaves the old file or the new).
+    pub fn save(&self, path: &Path) -> Result<()> {
+        let text = serde_json::to_string(self).map_err(|e| Error::io("cannot encode the snapshot").cause(e))?;
+        crate::k2::sim::state::write_atomic(path, text.as_bytes())
+    }
+
+    pub fn load(path: &Path) -> Result<Snapshot> {
+        let text = std::fs::read_to_string(path).map_err(|e| {
+            Error::io(format!("cannot read the snapshot {}", path.display()))
+                .cause(e)
+                .hint("list saved snapshots with `sim snapshots`")
+        })?;
+        let s: Snapshot = serde_json::from_str(&text)
+            .map_err(|e| Error::usage(format!("{} is not a plcsh snapshot", path.display())).cause(e))?;
+        s.check()?;
+        Ok(s)
+    }
+
+    /// Restores the K2 section of the only (or first) K2 device onto `sim` (replay).
+    pub fn restore_k2(&self, sim: &mut crate::k2::sim::K2Sim) -> Result<()> {
+        let v = self
+            .devices
+            .values()
+            .find_map(|d| d.sections.get("k2"))
+            .ok_or_else(|| Error::usage("the snapshot holds no simulated K2"))?;
+        let st: crate::k2::sim::snapshot::K2State = dec(v, "k2")?;
+        sim.clock.set(Duration::from_micros(self.clock_us));
+        sim.restore_snapshot(&st).map_err(Error::usage)
+    }
+}
+
+/// The directory named snapshots live in (`PLCSH_SNAPSHOTS` overrides).
+pub fn dir() -> Option<PathBuf> {
+    if let Some(d) = std::env::var_os("PLCSH_SNAPSHOTS") {
+        return Some(PathBuf::from(d));
+    }
+    directories::ProjectDirs::from("", "", "plcsh").map(|d| d.data_dir().join("snapshots"))
+}
+
+/// The file of snapshot `name` (a path when it has a `/` or ends in `.json`).
+pub fn locate(name: &str) -> Result<PathBuf> {
+    if name.contains('/') || name.ends_with(".json") {
+        return Ok(PathBuf::from(name));
+    }
+    if name.is_empty() || !name.chars().all(|c| c.is_ascii_alphanumeric() || "_-.".contains(c)) {
+        return Err(Error::usage(format!("`{name}` is not a snapshot name (letters, digits, _ - .)"))
+            .hint("or give a file path ending in .json"));
+    }
+    let d =
+        dir().ok_or_else(|| Error::io("no data directory for snapshots").hint("give a file path ending in .json"))?;
+    Ok(d.join(format!("{name}.json")))
+}
+
+/// Named snapshots: `(name, file)`, sorted.
+pub fn list() -> Vec<(String, PathBuf)> {
+    let Some(d) = dir() else { return Vec::new() };
+    let mut out: Vec<(String, PathBuf)> = std::fs::read_dir(&d)
+        .into_iter()
+        .flatten()
+        .flatten()
+        .filter_map(|e| {
+            let p = e.path();
+            let name = p.file_name()?.to_str()?.strip_suffix(".json")?.to_string();
+            (!name.starts_with('.')).then_some((name, p))
+        })
+        .collect();
+    out.sort();
+    out
+}
