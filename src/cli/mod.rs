@@ -5,7 +5,6 @@
 
 mod agent;
 pub mod completions;
-mod models;
 mod run;
 mod serve;
 
@@ -59,8 +58,12 @@ pub struct Cli {
 
 #[derive(Subcommand, Debug)]
 pub enum Sub {
-    /// List the K2 model catalogue (areas, I/O, counters, pulse outputs, manual disagreements).
-    Models,
+    /// List the K2 model catalogue; `models MODEL` shows one in full (areas, counters, manual notes).
+    Models {
+        /// One model (a unique prefix is enough: K209EA).
+        #[arg(value_name = "MODEL")]
+        name: Option<String>,
+    },
     /// List open devices and the device profiles (devices.toml), with problems in that file.
     Devices,
     /// Print a shell completion script (bash, zsh, fish, powershell), or write them all.
@@ -172,11 +175,13 @@ pub fn main() -> i32 {
 
     if let Some(sub) = &cli.sub {
         return match sub {
-            Sub::Models => {
-                let o = models::outcome();
-                let _ = output::write_outcome(&mut out, style, &o);
-                0
-            }
+            Sub::Models { name } => match crate::shell::commands::models::outcome(name.as_deref()) {
+                Ok(o) => i32::from(output::write_outcome(&mut out, style, &o).is_err()),
+                Err(e) => {
+                    let _ = output::write_error(&mut out, style, "models", &e, None);
+                    2
+                }
+            },
             Sub::Completions { shell, write } => completions::run(*shell, write.as_deref(), &mut out),
             Sub::Devices => i32::from(!shell.run_line("devices", &mut out)),
             Sub::Sim { cmd: serve::SimCmd::Serve(args) } => serve::run(&cli, args, style, &mut out),

@@ -1,5 +1,5 @@
 //! Small text helpers for messages: the "did you mean" suggestions every family's errors
-//! and the shell's unknown-command message make.
+//! and the shell's unknown-command message make, and word wrapping for help text.
 
 /// Levenshtein distance between two strings (by characters).
 pub fn edit_distance(a: &str, b: &str) -> usize {
@@ -15,9 +15,34 @@ pub fn edit_distance(a: &str, b: &str) -> usize {
     prev[b.len()]
 }
 
+/// Breaks `text` into lines of at most `width` characters at spaces (a word longer than the
+/// width gets a line of its own). Used to keep help and hints inside an 80-column terminal.
+pub fn wrap(text: &str, width: usize) -> Vec<String> {
+    let mut lines = vec![String::new()];
+    for word in text.split_whitespace() {
+        let cur = lines.last_mut().expect("one line");
+        let len = cur.chars().count();
+        if len > 0 && len + 1 + word.chars().count() > width {
+            lines.push(word.to_string());
+        } else {
+            if len > 0 {
+                cur.push(' ');
+            }
+            cur.push_str(word);
+        }
+    }
+    lines
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn wrapping_keeps_words_whole() {
+        assert_eq!(wrap("read a range as a table", 10), vec!["read a", "range as a", "table"]);
+        assert_eq!(wrap("", 10), vec![""]);
+    }
 
     #[test]
     fn distances() {

@@ -10,6 +10,7 @@ mod help;
 mod io;
 mod k2cmd;
 pub mod lua;
+pub mod models;
 pub mod profiles;
 mod pulse;
 mod rtc;
@@ -61,6 +62,7 @@ pub const COMMANDS: &[CommandSpec] = &[
     eeprom::EEPROM,
     lua::LUA,
     agent::AGENT,
+    models::MODELS,
     help::HELP,
     help::QUIT,
 ];
