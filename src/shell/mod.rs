@@ -13,6 +13,7 @@ pub mod lex;
 pub mod progress;
 pub mod repl;
 pub mod sample;
+pub mod term;
 
 use crate::core::{Error, ErrorKind, Result};
 use crate::output::{self, Outcome, Style};

@@ -41,6 +41,7 @@ pub fn interactive(shell: &mut Shell) -> i32 {
         // Lend the session to the completer while the line is read (see helper.rs).
         let placeholder = Session::new(shell.session.clock.clone());
         if let Some(h) = ed.helper_mut() {
+            h.prompt_width = prompt.chars().count();
             h.session = Some(std::mem::replace(&mut shell.session, placeholder));
         }
         let read = ed.readline(&prompt);
