@@ -38,6 +38,10 @@ pub struct Outcome {
     pub writes: Vec<Reading>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub message: Option<String>,
+    /// Things the user should know about how the command was read or what it did (a warning,
+    /// a spelling accepted); printed as `note: …` before the result, `notes` in JSON.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub notes: Vec<String>,
     /// Command-specific fields (flattened into the JSON object).
     #[serde(flatten)]
     pub data: serde_json::Map<String, serde_json::Value>,
@@ -48,6 +52,10 @@ pub struct Outcome {
 impl Outcome {
     pub fn new(cmd: &str) -> Outcome {
         Outcome { cmd: cmd.to_string(), ..Default::default() }
+    }
+    pub fn note(mut self, n: impl Into<String>) -> Outcome {
+        self.notes.push(n.into());
+        self
     }
     pub fn quiet(mut self) -> Outcome {
         self.view = View::Quiet;
@@ -112,6 +120,9 @@ pub fn write_outcome(w: &mut dyn Write, style: Style, o: &Outcome) -> io::Result
     if style.json {
         serde_json::to_writer(&mut *w, &JsonOk { ok: true, outcome: o })?;
         return writeln!(w);
+    }
+    for n in &o.notes {
+        writeln!(w, "note: {n}")?;
     }
     match &o.view {
         View::Quiet => Ok(()),

@@ -30,7 +30,19 @@ impl Tmux {
             h = home.display(),
             bin = common::bin()
         );
-        let ok = t.tmux(&["-f", "/dev/null", "new-session", "-d", "-x", &width.to_string(), "-y", &height.to_string(), "-s", "t", &cmd]);
+        let ok = t.tmux(&[
+            "-f",
+            "/dev/null",
+            "new-session",
+            "-d",
+            "-x",
+            &width.to_string(),
+            "-y",
+            &height.to_string(),
+            "-s",
+            "t",
+            &cmd,
+        ]);
         assert!(ok, "tmux new-session failed");
         Some(t)
     }

@@ -51,7 +51,11 @@ pub fn parse_literal(text: &str) -> Result<Literal, LiteralError> {
         "FALSE" | "OFF" => {
             Literal { value: Value::Bool(false), declared: Some(DataType::Bool), pattern: false, text: String::new() }
         }
-        _ => parse_typed(&upper)?,
+        _ => parse_typed(&upper).map_err(|mut e| {
+            // Messages quote the value as typed, not upper-cased.
+            e.message = e.message.replace(&format!("`{upper}`"), &format!("`{compact}`"));
+            e
+        })?,
     };
     lit.text = trimmed.to_string();
     Ok(lit)
@@ -147,6 +151,20 @@ fn parse_number(s: &str) -> Result<Literal, LiteralError> {
     };
     if body.is_empty() {
         return Err(err(off, "a number is missing"));
+    }
+    // C-style radix prefixes, as mbpoll and most languages write them: say the IEC form.
+    for (c, radix) in [("0X", "16#"), ("0B", "2#"), ("0O", "8#")] {
+        if let Some(digits) = body.strip_prefix(c).filter(|d| !d.is_empty()) {
+            let sign = if neg { "-" } else { "" };
+            return Err(err(
+                off,
+                format!(
+                    "`{sign}{}{}` is C notation; write {sign}{radix}{digits} (IEC 61131-3, as KincoBuilder does)",
+                    c.to_ascii_lowercase(),
+                    digits
+                ),
+            ));
+        }
     }
     if let Some(hash) = body.find('#') {
         let radix: u32 = match &body[..hash] {
@@ -286,7 +304,12 @@ impl Literal {
             _ if self.pattern || !target.is_signed() => {
                 if v < 0 || v as u64 > mask(bits) {
                     let hint = if v < 0 && !target.is_signed() {
-                        format!("; write it as a signed type (INT#{v}, DI#{v}) to store its two's complement")
+                        let signed = match bits {
+                            8 => "SINT",
+                            16 => "INT",
+                            _ => "DI",
+                        };
+                        format!("; write it as {signed}#{v} to store its two's complement")
                     } else {
                         String::new()
                     };

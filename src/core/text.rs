@@ -34,9 +34,102 @@ pub fn wrap(text: &str, width: usize) -> Vec<String> {
     lines
 }
 
+/// Cyrillic letters that look like the Latin ones operands and literals use. The K2 manual's
+/// machine-extracted Russian text prints `В#16#85` and `ВW0` with a Cyrillic В (and `% VW2`
+/// with a space), and a technician copying from it, or typing on a Russian layout, gets them.
+const LOOK_ALIKES: &[(char, char)] = &[
+    ('А', 'A'),
+    ('а', 'a'),
+    ('С', 'C'),
+    ('с', 'c'),
+    ('Е', 'E'),
+    ('е', 'e'),
+    ('К', 'K'),
+    ('к', 'k'),
+    ('М', 'M'),
+    ('м', 'm'),
+    ('О', 'O'),
+    ('о', 'o'),
+    ('Р', 'P'),
+    ('р', 'p'),
+    ('Т', 'T'),
+    ('т', 't'),
+    ('Х', 'X'),
+    ('х', 'x'),
+    ('І', 'I'),
+    ('і', 'i'),
+    ('Н', 'H'),
+];
+
+/// Reads a line as the K2 manual spells it: Cyrillic look-alikes become Latin letters (`В` is
+/// `B` before `#` or after a letter — `В#16#85`, `VВ0` — and `V` where an area starts, as the
+/// Russian text transliterates V), and `% VW2` becomes `%VW2`. Quoted text is left alone.
+/// Returns the new line and the words that changed (`ВW0` → `VW0`), or `None` when nothing did.
+pub fn fold_manual_spelling(line: &str) -> Option<(String, Vec<(String, String)>)> {
+    if line.is_ascii() && !line.contains('%') {
+        return None;
+    }
+    let chars: Vec<char> = line.chars().collect();
+    let mut out = String::with_capacity(line.len());
+    let mut quoted = false;
+    let mut i = 0;
+    while i < chars.len() {
+        let c = chars[i];
+        if c == '"' {
+            quoted = !quoted;
+        }
+        if quoted {
+            out.push(c);
+            i += 1;
+            continue;
+        }
+        match c {
+            '%' if chars.get(i + 1).is_some_and(|n| n.is_whitespace()) => {
+                out.push('%');
+                while chars.get(i + 1).is_some_and(|n| n.is_whitespace()) {
+                    i += 1;
+                }
+            }
+            'В' | 'в' => {
+                let next_hash =
+                    chars.get(i + 1).is_some_and(|n| *n == '#' || n.is_whitespace() && chars.get(i + 2) == Some(&'#'));
+                let after_letter = i > 0 && chars[i - 1].is_ascii_alphabetic();
+                let latin = if next_hash || after_letter { 'B' } else { 'V' };
+                out.push(if c == 'в' { latin.to_ascii_lowercase() } else { latin });
+            }
+            _ => out.push(LOOK_ALIKES.iter().find(|(k, _)| *k == c).map_or(c, |(_, l)| *l)),
+        }
+        i += 1;
+    }
+    if out == line {
+        return None;
+    }
+    let before: Vec<&str> = line.split_whitespace().collect();
+    let after: Vec<&str> = out.split_whitespace().collect();
+    let changed = if before.len() == after.len() {
+        before.iter().zip(&after).filter(|(a, b)| a != b).map(|(a, b)| (a.to_string(), b.to_string())).collect()
+    } else {
+        vec![(line.trim().to_string(), out.trim().to_string())]
+    };
+    Some((out, changed))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_manuals_cyrillic_spelling_reads_as_latin() {
+        // The K2 manual (Russian text) prints `В#16#85` with a Cyrillic В, and `% VW2` with a space.
+        let (line, changed) = fold_manual_spelling("set SMB67=В#16#85").unwrap();
+        assert_eq!(line, "set SMB67=B#16#85");
+        assert_eq!(changed, vec![("SMB67=В#16#85".to_string(), "SMB67=B#16#85".to_string())]);
+        assert_eq!(fold_manual_spelling("get ВW0").unwrap().0, "get VW0");
+        assert_eq!(fold_manual_spelling("get VВ0 СD0 МW0 Т5").unwrap().0, "get VB0 CD0 MW0 T5");
+        assert_eq!(fold_manual_spelling("get % VW2").unwrap().0, "get %VW2");
+        assert!(fold_manual_spelling("get VW0").is_none());
+        assert_eq!(fold_manual_spelling("connect \"ВW0\"").as_ref().map(|f| f.0.as_str()), None);
+    }
 
     #[test]
     fn wrapping_keeps_words_whole() {

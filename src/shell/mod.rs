@@ -15,6 +15,9 @@ pub mod repl;
 pub mod sample;
 pub mod term;
 
+#[cfg(test)]
+mod messages_tests;
+
 use crate::core::{Error, ErrorKind, Result};
 use crate::output::{self, Outcome, Style};
 use crate::session::Session;
@@ -48,6 +51,47 @@ pub trait ScriptHook: Send {
     fn incomplete(&mut self, code: &str) -> bool;
 }
 
+/// The line without a trailing comment: `#` at the start or after a space, followed by a space
+/// or the end (`get VW0   # speed`, as a checklist writes it). `16#85` and `T#5s` are values.
+fn strip_comment(line: &str) -> &str {
+    let b = line.as_bytes();
+    let mut quoted = false;
+    for (i, &c) in b.iter().enumerate() {
+        match c {
+            b'"' => quoted = !quoted,
+            b'#' if !quoted
+                && (i == 0 || b[i - 1].is_ascii_whitespace())
+                && b.get(i + 1).is_none_or(|n| n.is_ascii_whitespace()) =>
+            {
+                return &line[..i];
+            }
+            _ => {}
+        }
+    }
+    line
+}
+
+/// A usage error from a command with sub-commands whose first word is none of them: the
+/// hint names the nearest sub-command (`servo stauts` → `servo status`).
+fn suggest_subcommand(spec: &commands::CommandSpec, args: Args, e: Error) -> Error {
+    let word = args.text.split_whitespace().next().unwrap_or("").to_ascii_lowercase();
+    if e.kind != ErrorKind::Usage
+        || spec.subcommands.is_empty()
+        || word.is_empty()
+        || spec.subcommands.contains(&word.as_str())
+    {
+        return e;
+    }
+    let Some((d, near)) = spec.subcommands.iter().map(|s| (crate::core::text::edit_distance(&word, s), *s)).min()
+    else {
+        return e;
+    };
+    if d > 2 || d >= word.len() {
+        return e;
+    }
+    e.hint(format!("did you mean `{} {near}`? `help {}` shows its usage", spec.name, spec.name))
+}
+
 /// One command's result, with the command name for error reporting.
 pub type CmdResult = std::result::Result<Outcome, (String, Error)>;
 
@@ -65,6 +109,10 @@ impl Shell {
             let args = Args { text: &code, offset };
             return vec![(commands::lua::LUA.run)(self, args).map_err(|e| ("lua".to_string(), e))];
         }
+        // The K2 manual's own spelling (`В#16#85` with a Cyrillic В, `% VW2`) reads as meant.
+        let folded = crate::core::text::fold_manual_spelling(line);
+        let line = folded.as_ref().map_or(line, |(l, _)| l.as_str());
+        let line = strip_comment(line);
         let mut results = Vec::new();
         let parts = match lex::split_commands(line) {
             Ok(p) => p,
@@ -76,7 +124,14 @@ impl Shell {
             if cmd_text.is_empty() {
                 continue;
             }
-            let r = self.exec_one(cmd_text, offset + lead);
+            let mut r = self.exec_one(cmd_text, offset + lead);
+            if let (Some((_, changed)), Ok(o)) = (folded.as_ref().filter(|_| results.is_empty()), r.as_mut()) {
+                let words: Vec<String> = changed.iter().map(|(a, b)| format!("`{a}` as `{b}`")).collect();
+                o.notes.push(format!(
+                    "read {} (the K2 manual's spelling: Cyrillic look-alike letters, `% VW2`)",
+                    words.join(", ")
+                ));
+            }
             let failed = r.is_err();
             results.push(r);
             if failed || self.quit {
@@ -99,7 +154,7 @@ impl Shell {
             return Err((name, e));
         };
         self.session.clear_interrupt();
-        (spec.run)(self, args).map_err(|e| (spec.name.to_string(), e))
+        (spec.run)(self, args).map_err(|e| (spec.name.to_string(), suggest_subcommand(spec, args, e)))
     }
 
     /// Runs a line and writes each result; returns true when every command succeeded.

@@ -42,7 +42,16 @@ fn help(sh: &mut Shell, args: Args) -> Result<Outcome> {
         }
         return Ok(Outcome::new("help").text(text).with("command", c.name));
     }
-    let target = sh.session.resolve(topic)?;
+    let target = sh.session.resolve(topic).map_err(|e| {
+        // A word that is neither a command nor an operand: most likely a mistyped command.
+        if topic.chars().all(|c| c.is_ascii_alphabetic() || c == '-') {
+            crate::core::Error::usage(format!("no command or operand `{topic}`"))
+                .hint(super::suggest(&topic.to_ascii_lowercase()))
+                .column(args.offset)
+        } else {
+            e
+        }
+    })?;
     let entry = &sh.session.entries()[target.device];
     let body = topic.rsplit(':').next().unwrap_or(topic);
     let text = entry.device.operands().help(body)?;

@@ -33,7 +33,11 @@ pub fn outcome(model: Option<&str>) -> Result<Outcome> {
                     format!("{}/{}/{}", m.di, m.dout, m.dio),
                     format!("{}/{}", m.ai, m.ao),
                     m.hsc.len().to_string(),
-                    if m.pto.is_empty() { "none (relay)".into() } else { m.pto.iter().map(|p| p.output).collect::<Vec<_>>().join(" ") },
+                    if m.pto.is_empty() {
+                        "none (relay)".into()
+                    } else {
+                        m.pto.iter().map(|p| p.output).collect::<Vec<_>>().join(" ")
+                    },
                     if m.discrepancies.is_empty() { String::new() } else { m.discrepancies.len().to_string() },
                 ]
             })

@@ -1,0 +1,78 @@
+//! The shell's messages as a new user meets them: every "did you mean" names something, the
+//! input is quoted as typed, and the K2 manual's own spelling is accepted with a note.
+
+use super::Shell;
+use crate::core::{Clock, Error};
+use crate::output::Style;
+use crate::session::Session;
+
+fn shell() -> Shell {
+    let mut s = Session::new(Clock::stepped());
+    s.open("plc", "sim:K205-16DT").unwrap();
+    s.open("servo", "sim-servo:?id=1").unwrap();
+    Shell::new(s, Style { json: true, color: false })
+}
+
+fn error(sh: &mut Shell, line: &str) -> Error {
+    let r = sh.exec(line);
+    r.into_iter().find_map(|r| r.err()).unwrap_or_else(|| panic!("`{line}` should fail")).1
+}
+
+#[test]
+fn suggestions_are_never_empty() {
+    let mut sh = shell();
+    for line in ["get DB1.DBW0", "get -v VW0", "get xw0", "get 5", "help gte", "servo stauts"] {
+        let e = error(&mut sh, line);
+        let hint = e.hint.clone().unwrap_or_default();
+        assert!(!hint.is_empty(), "{line}: no hint in {e}");
+        assert!(!hint.contains("mean ?") && !hint.contains("``") && !e.message.contains("``"), "{line}: {e} / {hint}");
+    }
+}
+
+#[test]
+fn errors_quote_the_input_as_typed() {
+    let mut sh = shell();
+    let e = error(&mut sh, "get -v VW0");
+    assert!(e.message.contains("`-v`"), "{e}");
+    let e = error(&mut sh, "get xw0");
+    assert!(e.message.contains("`xw0`") && e.message.contains("`xw`"), "{e}");
+    let e = error(&mut sh, "set VW0=0x10");
+    assert!(e.message.contains("`0x10`"), "{e}");
+}
+
+#[test]
+fn sub_command_typos_name_the_nearest_sub_command() {
+    let mut sh = shell();
+    let e = error(&mut sh, "servo stauts");
+    assert!(e.hint.as_deref().unwrap_or("").contains("`servo status`"), "{e:?}");
+    let e = error(&mut sh, "help gte");
+    assert!(e.hint.as_deref().unwrap_or("").contains("`get`"), "{e:?}");
+}
+
+#[test]
+fn the_manuals_cyrillic_spelling_is_accepted_with_a_note() {
+    let mut sh = shell();
+    // The K2 manual prints `В#16#85` with a Cyrillic В and `% VW2` with a space.
+    let r = sh.exec("set SMB67=В#16#85; get SMB67");
+    let o = r[0].as_ref().unwrap();
+    assert!(o.notes.iter().any(|n| n.contains("`SMB67=B#16#85;`")), "{:?}", o.notes);
+    assert_eq!(r[1].as_ref().unwrap().values[0].value, crate::core::Value::Int(0x85));
+    let r = sh.exec("get % VW2 ВW0");
+    let o = r[0].as_ref().unwrap();
+    assert_eq!(o.values.iter().map(|v| v.operand.as_str()).collect::<Vec<_>>(), ["VW2", "VW0"]);
+    assert!(!o.notes.is_empty());
+    // A trailing comment, as a checklist writes one, is not an operand.
+    assert!(sh.exec("get VW0   # speed set-point")[0].is_ok());
+}
+
+#[test]
+fn c_hex_and_negative_words_suggest_the_iec_form() {
+    let mut sh = shell();
+    let e = error(&mut sh, "set VW0=0x10");
+    assert!(e.message.contains("16#10"), "{e}");
+    let e = error(&mut sh, "set VW0=-5");
+    assert!(e.message.contains("INT#-5") && !e.message.contains("DI#"), "{e}");
+    let e = error(&mut sh, "set VB0=-5");
+    assert!(e.message.contains("SINT#-5"), "{e}");
+    assert!(sh.exec("set VW0=INT#-5")[0].is_ok());
+}
