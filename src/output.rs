@@ -179,6 +179,19 @@ pub fn binary(raw: u64, bits: u32) -> String {
     format!("2#{}", chunks.join("_"))
 }
 
+/// Reports one error where its reader looks: with `--json` as an error object on `out` (the
+/// stream a pipeline parses), otherwise as text on standard error, as mbpoll and most
+/// command-line tools do (`out` is flushed first so the two streams stay in order).
+pub fn report_error(out: &mut dyn Write, style: Style, cmd: &str, e: &Error, line: Option<&str>) -> io::Result<()> {
+    if style.json {
+        return write_error(out, style, cmd, e, line);
+    }
+    out.flush()?;
+    let mut err = io::stderr().lock();
+    write_error(&mut err, style, cmd, e, line)?;
+    err.flush()
+}
+
 /// Writes one error, with a caret under the column when the error came from `line`.
 pub fn write_error(w: &mut dyn Write, style: Style, cmd: &str, e: &Error, line: Option<&str>) -> io::Result<()> {
     if style.json {

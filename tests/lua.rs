@@ -24,12 +24,25 @@ fn run_passes_arguments_and_exits_zero() {
     assert_eq!(stdout(&o), "true\tone\t--two\t2\n");
 }
 
+/// Everything after the script is the script's, even words that are plcsh flags; plcsh's
+/// flags go before the script (`--time stepped` there sets the clock).
+#[test]
+fn run_gives_every_argument_after_the_script_to_the_script() {
+    let p = script("args2.lua", "print(plcsh.stepped() and 'stepped' or 'wall', table.concat({...}, ' '))\n");
+    let o = run(&["run", p.to_str().unwrap(), "--time", "stepped", "-v", "--json", "x"], "");
+    assert!(o.status.success(), "{}", both(&o));
+    assert_eq!(stdout(&o), "wall\t--time stepped -v --json x\n");
+    let o = run(&["--time", "stepped", "run", p.to_str().unwrap(), "--model", "K209M"], "");
+    assert!(o.status.success(), "{}", both(&o));
+    assert_eq!(stdout(&o), "stepped\t--model K209M\n");
+}
+
 #[test]
 fn a_runtime_error_reports_file_and_line_and_exits_1() {
     let p = script("boom.lua", "local plc = plcsh.device('plc')\nplc.VW0 = 1\nlocal t = nil\nprint(t.x)\n");
     let o = run(&["run", p.to_str().unwrap()], "");
     assert_eq!(o.status.code(), Some(1));
-    let s = stdout(&o);
+    let s = common::stderr(&o);
     let loc = format!("{}:4:", p.display());
     assert!(s.contains(&format!("error[script]: {loc} attempt to index a nil value")), "{s}");
     assert!(s.contains("stack traceback:") && s.contains("in main chunk"), "{s}");
@@ -55,7 +68,7 @@ fn a_syntax_error_names_the_line() {
     let p = script("syntax.lua", "x = 1\ny = = 2\n");
     let o = run(&["run", p.to_str().unwrap()], "");
     assert_eq!(o.status.code(), Some(1));
-    assert!(stdout(&o).contains(&format!("error[syntax]: {}:2:", p.display())), "{}", stdout(&o));
+    assert!(common::stderr(&o).contains(&format!("error[syntax]: {}:2:", p.display())), "{}", common::stderr(&o));
 }
 
 #[test]
@@ -92,7 +105,10 @@ fn ctrl_c_during_wait_until_runs_the_abort_handlers_and_exits_non_zero() {
     let first = lines.next().unwrap().unwrap();
     assert_eq!(first, "READY");
     nix::sys::signal::kill(nix::unistd::Pid::from_raw(child.id() as i32), nix::sys::signal::Signal::SIGINT).unwrap();
-    let rest: Vec<String> = lines.map(|l| l.unwrap()).collect();
+    let mut rest: Vec<String> = lines.map(|l| l.unwrap()).collect();
+    let mut err = String::new();
+    std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut err).unwrap();
+    rest.push(err);
     let status = child.wait().unwrap();
     assert_eq!(status.code(), Some(130), "{rest:?}");
     let text = rest.join("\n");
@@ -149,7 +165,7 @@ fn a_failed_checklist_step_fails_the_script() {
     );
     let o = run(&["run", p.to_str().unwrap()], "");
     assert_eq!(o.status.code(), Some(1));
-    let s = stdout(&o);
+    let s = common::both(&o);
     assert!(s.contains("[x] 1. ok"), "{s}");
     assert!(s.contains("[ ] 2. bad — FAILED") && s.contains("actual:   0"), "{s}");
     assert!(s.contains("[-] 3. later (skipped)"), "{s}");

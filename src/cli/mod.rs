@@ -138,10 +138,67 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
     Ok(s)
 }
 
+/// Options of plcsh that take a value (`--time stepped`): their value is not a positional.
+const VALUE_OPTIONS: &[&str] = &["-c", "--command", "--model", "-d", "--device", "--time", "--config", "--state"];
+
+/// `plcsh [FLAGS] run [RUN FLAGS] SCRIPT ARGS…`: everything after the script belongs to the
+/// script, even words that look like plcsh's own flags (`run a.lua --time stepped` gives
+/// `--time` to the script). Returns the arguments for clap (up to the script) and the
+/// script's arguments, or `None` when the command line is not `run`.
+pub fn split_script_args(argv: Vec<std::ffi::OsString>) -> (Vec<std::ffi::OsString>, Option<Vec<String>>) {
+    let mut positionals = 0;
+    let mut i = 1;
+    let mut in_run = false;
+    while i < argv.len() {
+        let a = argv[i].to_string_lossy();
+        if a == "--" {
+            i += 1;
+            if in_run && i < argv.len() {
+                break;
+            }
+            continue;
+        }
+        if a.starts_with('-') && a.len() > 1 {
+            if VALUE_OPTIONS.contains(&a.as_ref()) {
+                i += 1;
+            }
+            i += 1;
+            continue;
+        }
+        positionals += 1;
+        if positionals == 1 {
+            if a != "run" {
+                return (argv, None);
+            }
+            in_run = true;
+        } else if in_run {
+            // The script: what follows is its own.
+            let rest = argv[i + 1..].iter().map(|s| s.to_string_lossy().into_owned()).collect();
+            let mut head = argv;
+            head.truncate(i + 1);
+            return (head, Some(rest));
+        }
+        i += 1;
+    }
+    if in_run && i < argv.len() {
+        let rest = argv[i + 1..].iter().map(|s| s.to_string_lossy().into_owned()).collect();
+        let mut head = argv;
+        head.truncate(i + 1);
+        return (head, Some(rest));
+    }
+    (argv, None)
+}
+
 /// Entry point; returns the process exit status.
 pub fn main() -> i32 {
-    let cli = match Cli::try_parse() {
-        Ok(c) => c,
+    let (argv, script_args) = split_script_args(std::env::args_os().collect());
+    let cli = match Cli::try_parse_from(argv) {
+        Ok(mut c) => {
+            if let (Some(Sub::Run(r)), Some(rest)) = (c.sub.as_mut(), script_args) {
+                r.args = rest;
+            }
+            c
+        }
         Err(e) => {
             let _ = e.print();
             return if e.use_stderr() { 2 } else { 0 };
@@ -153,7 +210,7 @@ pub fn main() -> i32 {
     let session = match build_session(&cli) {
         Ok(s) => s,
         Err(e) => {
-            let _ = output::write_error(&mut out, style, "open", &e, None);
+            let _ = output::report_error(&mut out, style, "open", &e, None);
             return if e.kind == ErrorKind::Usage { 2 } else { 1 };
         }
     };
@@ -178,7 +235,7 @@ pub fn main() -> i32 {
             Sub::Models { name } => match crate::shell::commands::models::outcome(name.as_deref()) {
                 Ok(o) => i32::from(output::write_outcome(&mut out, style, &o).is_err()),
                 Err(e) => {
-                    let _ = output::write_error(&mut out, style, "models", &e, None);
+                    let _ = output::report_error(&mut out, style, "models", &e, None);
                     2
                 }
             },

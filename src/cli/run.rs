@@ -14,7 +14,8 @@ use std::path::PathBuf;
 pub struct RunArgs {
     /// The Lua script.
     pub script: PathBuf,
-    /// Arguments for the script (`arg[1]`…, and `...`). Flags for plcsh go before `run`.
+    /// Arguments for the script (`arg[1]`…, and `...`): everything after the script, even words
+    /// that look like plcsh flags (see `split_script_args`). Flags for plcsh go before the script.
     #[arg(trailing_var_arg = true, allow_hyphen_values = true)]
     pub args: Vec<String>,
 }
@@ -31,9 +32,13 @@ pub fn main(shell: &mut Shell, args: &RunArgs, style: Style) -> i32 {
     match engine.run_file(shell, &args.script, &args.args) {
         Ok(()) => 0,
         Err(f) => {
-            let mut out = std::io::stdout().lock();
-            let _ = if style.json { writeln!(out, "{}", f.json("run")) } else { write!(out, "{}", f.human()) };
-            let _ = out.flush();
+            // The failure report: a JSON object on stdout with --json, text on stderr otherwise.
+            let _ = std::io::stdout().flush();
+            let _ = if style.json {
+                writeln!(std::io::stdout().lock(), "{}", f.json("run"))
+            } else {
+                write!(std::io::stderr().lock(), "{}", f.human())
+            };
             if f.interrupted() {
                 130
             } else {

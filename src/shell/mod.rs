@@ -157,7 +157,8 @@ impl Shell {
         (spec.run)(self, args).map_err(|e| (spec.name.to_string(), suggest_subcommand(spec, args, e)))
     }
 
-    /// Runs a line and writes each result; returns true when every command succeeded.
+    /// Runs a line and writes each result (human-readable errors to stderr, JSON ones to `out`);
+    /// returns true when every command succeeded.
     pub fn run_line(&mut self, line: &str, out: &mut dyn Write) -> bool {
         let mut ok = true;
         let before = self.verbose.then(|| self.requests());
@@ -166,7 +167,7 @@ impl Shell {
                 Ok(o) => output::write_outcome(out, self.style, o),
                 Err((cmd, e)) => {
                     ok = false;
-                    output::write_error(out, self.style, cmd, e, Some(line))
+                    output::report_error(out, self.style, cmd, e, Some(line))
                 }
             };
             if w.is_err() {
