@@ -120,7 +120,7 @@ pub struct K2Operand {
 
 impl K2Operand {
     pub fn new(area: Area, width: Width, byte: u32) -> K2Operand {
-        K2Operand { area, width, byte, view: default_view(area, width) }
+        K2Operand { area, width, byte, view: default_view_at(area, width, byte) }
     }
     pub fn bit(area: Area, byte: u32, bit: u8) -> K2Operand {
         K2Operand::new(area, Width::Bit(bit), byte)
@@ -181,7 +181,7 @@ impl K2Operand {
             Width::Group { n, bit } => format!("K{n}{a}{}.{bit}", self.byte),
             Width::Element => format!("{a}{}", self.byte),
         };
-        if self.view != default_view(self.area, self.width) {
+        if self.view != default_view_at(self.area, self.width, self.byte) {
             s.push('/');
             s.push_str(self.view.name());
         }
@@ -230,6 +230,15 @@ pub fn default_view(area: Area, width: Width) -> DataType {
         (_, Width::Group { .. }) => DataType::DWord,
         (_, Width::Element) => DataType::Int,
     }
+}
+
+/// The natural type of the operand at `byte`: [`default_view`], except the SM double words
+/// the manual gives as DINT (position and counter values, `sm_map::is_signed_dword`).
+pub fn default_view_at(area: Area, width: Width, byte: u32) -> DataType {
+    if area == Area::SM && width == Width::DWord && super::sm_map::is_signed_dword(byte) {
+        return DataType::DInt;
+    }
+    default_view(area, width)
 }
 
 /// Most operands a single range may expand to.

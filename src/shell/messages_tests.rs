@@ -76,3 +76,33 @@ fn c_hex_and_negative_words_suggest_the_iec_form() {
     assert!(e.message.contains("SINT#-5"), "{e}");
     assert!(sh.exec("set VW0=INT#-5")[0].is_ok());
 }
+
+fn value_of(sh: &mut Shell, line: &str) -> crate::core::Value {
+    let r = sh.exec(line);
+    r.last().unwrap().as_ref().unwrap_or_else(|e| panic!("{line}: {}", e.1)).values[0].value
+}
+
+#[test]
+fn position_and_counter_values_read_signed() {
+    use crate::core::Value;
+    let mut sh = shell();
+    // §3.4.3.1: the position current value SMD212 is a DINT (+forward / −reverse); load a
+    // negative new current value (SMD208, control bit 4 of SMB201) and read it back.
+    assert_eq!(value_of(&mut sh, "set SMD208=-50, SMB201=16#10; sim step 10ms; get SMD212"), Value::Int(-50));
+    // §3.3.2: a counter counting down goes below zero, as `hsc status` says.
+    let v = value_of(&mut sh, "hsc 0 mode=0 dir=down; sim input I0.1 freq=1kHz; sim step 100ms; get SMD38");
+    assert_eq!(v, Value::Int(-100));
+    // A pulse count stays unsigned.
+    assert_eq!(crate::k2::operand::parse_one("SMD72").unwrap().view, crate::core::DataType::DWord);
+}
+
+#[test]
+fn reals_show_the_shortest_text_that_reads_back() {
+    let mut sh = shell();
+    let v = value_of(&mut sh, "set VD8/REAL=3.14; get VD8/REAL");
+    assert_eq!(v.to_string(), "3.14");
+    assert_eq!(crate::output::show_value(&v, crate::core::DataType::Real), "3.14");
+    // Writing the value shown stores the same bits.
+    let raw = value_of(&mut sh, "get VD8");
+    assert_eq!(raw, crate::core::Value::Int(3.14f32.to_bits() as i64));
+}
