@@ -179,3 +179,50 @@ fn stdin_closes_cleanly_after_an_unfinished_block() {
     let o = child.wait_with_output().unwrap();
     assert_eq!(String::from_utf8_lossy(&o.stdout), "1\n");
 }
+
+/// Errors point at the script: a bad operand read names the script's line (not mlua's glue),
+/// in text and in `--json`'s `where`; an error caught with pcall carries file:line.
+#[test]
+fn read_errors_and_pcalled_errors_name_the_script_line() {
+    let p = script("badread.lua", "local a = 1\nlocal x = plc['Q0.8']\n");
+    let o = run(&["run", p.to_str().unwrap()], "");
+    assert_eq!(o.status.code(), Some(1));
+    let e = common::stderr(&o);
+    assert!(e.contains(&format!("{}:2: plc: bit 8", p.display())) && !e.contains("error[operand]: __mlua"), "{e}");
+    let o = run(&["--json", "run", p.to_str().unwrap()], "");
+    assert_eq!(json_lines(&o)[0]["error"]["where"], format!("{}:2", p.display()));
+
+    let p = script(
+        "pcalled.lua",
+        "local ok, e = pcall(function()\n  return plc.XYZ\nend)\nprint(ok, tostring(e):match('^[^\\n]*'))\n",
+    );
+    let o = run(&["run", p.to_str().unwrap()], "");
+    assert!(o.status.success(), "{}", both(&o));
+    assert!(stdout(&o).starts_with(&format!("false\t{}:2: error[operand]:", p.display())), "{}", stdout(&o));
+}
+
+/// A method typo says there is no such method and names the near ones; a dot instead of a
+/// colon says so.
+#[test]
+fn method_typos_and_dots_for_colons_are_explained() {
+    let p = script("typo.lua", "servo:stauts()\n");
+    let e = common::stderr(&run(&["run", p.to_str().unwrap()], ""));
+    assert!(e.contains("has no method or operand `stauts`") && e.contains("servo:status()"), "{e}");
+    assert!(!e.contains("needs a number"), "{e}");
+    let p = script("dot.lua", "local v = plc.get('VW0')\n");
+    let e = common::stderr(&run(&["run", p.to_str().unwrap()], ""));
+    assert!(e.contains(&format!("{}:1:", p.display())) && e.contains("call it with a colon, `dev:get(…)`"), "{e}");
+}
+
+/// Unknown keys in an options table are errors (a misspelt timeout would wait for ever).
+#[test]
+fn unknown_option_keys_are_refused() {
+    let p = script("opts.lua", "plcsh.wait_until(function() return false end, {timout=50})\n");
+    let o = run(&["--time", "stepped", "run", p.to_str().unwrap()], "");
+    assert_eq!(o.status.code(), Some(1));
+    let e = common::stderr(&o);
+    assert!(e.contains("unknown option `timout`") && e.contains("did you mean `timeout`?"), "{e}");
+    let p = script("opts2.lua", "print(plcsh.json.encode({1}, {prety=true}))\n");
+    let e = common::stderr(&run(&["run", p.to_str().unwrap()], ""));
+    assert!(e.contains("unknown option `prety`"), "{e}");
+}

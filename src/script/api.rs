@@ -28,7 +28,9 @@ pub fn with_shell<R>(lua: &Lua, f: impl FnOnce(&mut Shell) -> crate::core::Resul
         .try_app_data_mut::<Shell>()
         .map_err(|e| raise(Error::state(format!("the session is busy: {e}"))))?
         .ok_or_else(|| raise(Error::state("no session: Lua runs only inside plcsh")))?;
-    f(&mut sh).map_err(raise)
+    let r = f(&mut sh);
+    drop(sh);
+    r.map_err(|e| super::error::raise_at(lua, e))
 }
 
 /// The interrupt flag (Ctrl-C) of the session.
@@ -111,6 +113,28 @@ fn truthy(v: &Value) -> bool {
     !matches!(v, Value::Nil | Value::Boolean(false))
 }
 
+/// Refuses keys of an options table that `what` does not know (`{timout=50}` would otherwise
+/// be ignored and wait for ever), naming the nearest known key — as shell commands do.
+pub fn check_keys(lua: &Lua, t: &Table, known: &[&str], what: &str) -> mlua::Result<()> {
+    for pair in t.clone().pairs::<Value, Value>() {
+        let (k, _) = pair?;
+        let key = match &k {
+            Value::String(s) => s.to_string_lossy(),
+            other => format!("[{}]", other.type_name()),
+        };
+        if known.contains(&key.as_str()) {
+            continue;
+        }
+        let near = known.iter().map(|c| (crate::core::text::edit_distance(&key, c), *c)).min();
+        let hint = match near {
+            Some((d, c)) if d <= 2 => format!("did you mean `{c}`? {what} takes {}", known.join(", ")),
+            _ => format!("{what} takes {}", known.join(", ")),
+        };
+        return Err(super::error::raise_at(lua, Error::usage(format!("{what}: unknown option `{key}`")).hint(hint)));
+    }
+    Ok(())
+}
+
 /// `plcsh.wait_until(fn, {timeout=ms, every=ms, what="…"})` (or a number: the timeout).
 fn wait_until(lua: &Lua, (f, opts): (Function, Value)) -> mlua::Result<Value> {
     let (mut timeout, mut every, mut what) = (None, Duration::from_millis(10), None::<String>);
@@ -118,6 +142,7 @@ fn wait_until(lua: &Lua, (f, opts): (Function, Value)) -> mlua::Result<Value> {
         Value::Nil => {}
         Value::Integer(_) | Value::Number(_) => timeout = Some(millis(lua.unpack(opts.clone())?, "timeout")?),
         Value::Table(t) => {
+            check_keys(lua, t, &["timeout", "every", "what"], "wait_until")?;
             if let Some(ms) = t.get::<Option<f64>>("timeout")? {
                 timeout = Some(millis(ms, "timeout")?);
             }
@@ -252,6 +277,9 @@ pub fn register(lua: &Lua) -> mlua::Result<()> {
         "encode",
         lua.create_function(|lua, (v, opts): (Value, Option<Table>)| {
             let j: serde_json::Value = lua.from_value(v)?;
+            if let Some(o) = &opts {
+                check_keys(lua, o, &["pretty"], "plcsh.json.encode")?;
+            }
             let pretty = opts.map(|o| o.get::<Option<bool>>("pretty")).transpose()?.flatten().unwrap_or(false);
             let s = if pretty { serde_json::to_string_pretty(&j) } else { serde_json::to_string(&j) };
             s.map_err(mlua::Error::external)
