@@ -111,10 +111,10 @@ impl Handle {
     fn read(&mut self, lua: &Lua, key: &[u8]) -> mlua::Result<Value> {
         let v = with_shell(lua, |sh| {
             let i = self.resolve(sh)?;
-            if let Some(e) = self.not_a_method(key, sh.session.entries()[i].device.info().family) {
-                return Err(e);
-            }
-            let op = self.operand(sh, i, key)?;
+            // Not an operand (servo objects are lower-case words): maybe a mistyped method.
+            let op = self.operand(sh, i, key).map_err(|e| {
+                self.not_a_method(key, sh.session.entries()[i].device.info().family).unwrap_or(e)
+            })?;
             sh.session.read_values(i, &[op])
         })?;
         Ok(from_value(v[0]))
