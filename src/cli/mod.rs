@@ -110,8 +110,16 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
         TimeMode::Stepped => Clock::stepped(),
     };
     let mut s = Session::new(clock);
+    if let Some(path) = &cli.config {
+        // A file named on the command line must exist (a typo would silently load nothing).
+        if !path.exists() {
+            return Err(crate::core::Error::usage(format!("--config {}: no such file", path.display()))
+                .hint("give an existing devices.toml, or leave --config out to use the default"));
+        }
+    }
     if let Some(path) = cli.config.clone().or_else(crate::profile::default_path) {
         s.profiles = crate::profile::Profiles::load(&path);
+        s.profiles.validate(&s.clock);
     }
     let mut current = "plc".to_string();
     let named: Vec<(String, String)> = cli.devices.iter().map(|d| split_device_arg(d)).collect();

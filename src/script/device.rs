@@ -112,9 +112,9 @@ impl Handle {
         let v = with_shell(lua, |sh| {
             let i = self.resolve(sh)?;
             // Not an operand (servo objects are lower-case words): maybe a mistyped method.
-            let op = self.operand(sh, i, key).map_err(|e| {
-                self.not_a_method(key, sh.session.entries()[i].device.info().family).unwrap_or(e)
-            })?;
+            let op = self
+                .operand(sh, i, key)
+                .map_err(|e| self.not_a_method(key, sh.session.entries()[i].device.info().family).unwrap_or(e))?;
             sh.session.read_values(i, &[op])
         })?;
         Ok(from_value(v[0]))
