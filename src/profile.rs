@@ -156,7 +156,12 @@ impl Profiles {
                 Ok(()) => kept.push(p),
                 Err(e) => {
                     let (file, line) = p.origin.rsplit_once(':').unwrap_or((&p.origin, "0"));
-                    let mut message = format!("profile `{}` skipped: {}", p.name, e.message);
+                    let what = format!("profile `{}` ({}): ", p.name, p.origin);
+                    let mut message = format!(
+                        "profile `{}` skipped: {}",
+                        p.name,
+                        e.message.strip_prefix(&what).unwrap_or(&e.message)
+                    );
                     if let Some(h) = &e.hint {
                         message.push_str(&format!(" ({h})"));
                     }
