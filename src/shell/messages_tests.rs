@@ -106,3 +106,30 @@ fn reals_show_the_shortest_text_that_reads_back() {
     let raw = value_of(&mut sh, "get VD8");
     assert_eq!(raw, crate::core::Value::Int(3.14f32.to_bits() as i64));
 }
+
+/// A second PLS (or `pto`, `profile`) on a channel still sending warns (SM66.7 PTO idle = 0,
+/// §3.4.1); with `strict` it is refused and nothing is written. An idle channel is quiet.
+#[test]
+fn pls_on_a_busy_channel_warns_and_strict_refuses() {
+    let mut sh = shell();
+    let r = sh.exec("pto 0 freq=1kHz count=1000; sim step 100ms; pls 0");
+    let o = r[2].as_ref().unwrap();
+    assert!(o.notes.iter().any(|n| n.contains("PTO0 is still sending") && n.contains("SM66.7")), "{:?}", o.notes);
+    let e = error(&mut sh, "pto 0 freq=2kHz count=10 strict");
+    assert!(e.message.contains("would replace it; nothing was written"), "{e}");
+    let count = value_of(&mut sh, "get SMD72");
+    assert_eq!(count, crate::core::Value::Int(1000), "strict wrote nothing");
+    assert!(error(&mut sh, "pls 0 strict").message.contains("still sending"));
+    // Once the train is done the channel is idle: no warning.
+    let r = sh.exec("sim step 2s; pls 0 strict");
+    assert!(r[1].as_ref().unwrap().notes.is_empty());
+}
+
+/// One line per fact: a profile run states its pulses and duration once.
+#[test]
+fn a_profile_run_reports_each_fact_once() {
+    let mut sh = shell();
+    let r = sh.exec("profile 0 at VB3001 [(freq=1kHz, count=1000), (freq=2kHz, count=4000)]");
+    let text = r[0].as_ref().unwrap().message.clone().unwrap();
+    assert_eq!(text.matches("5000 pulses").count(), 1, "{text}");
+}
