@@ -158,7 +158,6 @@ pub fn run(
     mut on: impl FnMut(&Sample) -> Result<()>,
 ) -> Result<Stats> {
     let clock = session.clock.clone();
-    let interrupt = session.interrupt.clone();
     let start = clock.now();
     let wall = Instant::now();
     let req0 = requests(session);
@@ -178,7 +177,7 @@ pub fn run(
             break;
         }
         let now = clock.now().saturating_sub(start);
-        let ok = if due > now { clock.sleep(due - now, &interrupt) } else { !session.interrupted() };
+        let ok = if due > now { session.sleep(due - now) } else { !session.interrupted() };
         if !ok {
             stats.interrupted = true;
             break;
