@@ -49,7 +49,7 @@ pub const PWM: CommandSpec = CommandSpec {
 pub const PROFILE: CommandSpec = CommandSpec {
     name: "profile",
     aliases: &[],
-    usage: "profile N at VB3001 [(cycle=500us, count=1000), (freq=4kHz, count=4000), …] [force] [strict] [plan [to=FILE.svg|.png]]",
+    usage: "profile N at VB3001 [(cycle=500us, count=1000), (freq=4kHz, count=4000), …] [force] [strict] [plan [to=FILE.png|FILE.svg] [size=900x340]]",
     summary: "multi-segment PTO from a profile table (writes the table, SMW168, SMB67=16#A0, then PLS); `plan` only draws the frequency over time",
     subcommands: &[],
     run: profile,
@@ -229,7 +229,7 @@ fn profile(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let word = *w.first().ok_or_else(|| Error::usage(PROFILE.usage).column(args.offset))?;
     let (dev, ch) = k2cmd::channel(sh, word, "pulse channel", 3)?;
     let (mut at, mut list, mut force, mut plan_only, mut svg_to) = (None, None, false, false, None);
-    let mut strict = false;
+    let (mut strict, mut size) = (false, None);
     let mut i = 1;
     while i < w.len() {
         let (c, t) = w[i];
@@ -250,6 +250,9 @@ fn profile(sh: &mut Shell, args: Args) -> Result<Outcome> {
             "strict" => strict = true,
             "plan" => plan_only = true,
             _ if t.to_ascii_lowercase().starts_with("to=") => svg_to = Some(t[3..].to_string()),
+            _ if t.to_ascii_lowercase().starts_with("size=") => {
+                size = Some(crate::plot::parse_size(&t[5..]).map_err(|m| Error::usage(m).column(c))?)
+            }
             _ if t.starts_with('[') => list = Some(segments(t, c)?),
             _ => return Err(Error::usage(format!("unexpected `{t}`")).column(c).hint(PROFILE.usage)),
         }
@@ -269,8 +272,9 @@ fn profile(sh: &mut Shell, args: Args) -> Result<Outcome> {
         }
         let series = crate::plot::Series::new(format!("PTO{ch} frequency"), "Hz", points).stepped();
         if let Some(path) = &svg_to {
-            std::fs::write(path, crate::plot::svg(std::slice::from_ref(&series), 800, 220))
-                .map_err(|e| Error::io(format!("cannot write {path}")).cause(e))?;
+            let one = std::slice::from_ref(&series);
+            let title = format!("PTO{ch} profile plan: {} pulses, {} segments", tl.total_pulses, tl.points.len());
+            crate::plot::write_picture(path, one, &title, size.unwrap_or_else(|| crate::plot::default_size(one)))?;
         }
         let mut text = crate::plot::terminal(std::slice::from_ref(&series), 64, 8);
         for (k, p) in tl.points.iter().enumerate() {
@@ -291,7 +295,7 @@ fn profile(sh: &mut Shell, args: Args) -> Result<Outcome> {
         let mut o =
             Outcome::new("profile").text(text).with("timeline", &tl).with("planned_writes", pr.plan.writes.len());
         if let Some(path) = svg_to {
-            o = o.with("svg", path);
+            o = o.with("file", path);
         }
         o.device = Some(name);
         return Ok(o);
