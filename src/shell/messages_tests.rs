@@ -97,6 +97,8 @@ fn position_and_counter_values_read_signed() {
 }
 
 #[test]
+// 3.14 is the value a user types (`VD8/REAL=3.14`), not an approximation of π.
+#[allow(clippy::approx_constant)]
 fn reals_show_the_shortest_text_that_reads_back() {
     let mut sh = shell();
     let v = value_of(&mut sh, "set VD8/REAL=3.14; get VD8/REAL");
