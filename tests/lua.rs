@@ -226,3 +226,52 @@ fn unknown_option_keys_are_refused() {
     let e = common::stderr(&run(&["run", p.to_str().unwrap()], ""));
     assert!(e.contains("unknown option `prety`"), "{e}");
 }
+
+/// A lab grades a folder of submissions: `--json run --sandbox` refuses os.execute with a
+/// clear error naming the line, and the run ends with one summary object.
+#[test]
+fn a_sandboxed_run_refuses_os_execute_and_ends_with_a_summary() {
+    let marker = std::env::temp_dir().join(format!("plcsh-sandbox-marker-{}", std::process::id()));
+    let _ = std::fs::remove_file(&marker);
+    let p = script(
+        "student.lua",
+        &format!(
+            "plcsh.check(plc.VW0 == 0, 'VW0 starts at 0')\nplcsh.assert_eq(1 + 1, 2)\nos.execute('touch {}')\n",
+            marker.display()
+        ),
+    );
+    let o = run(&["--json", "run", "--sandbox", p.to_str().unwrap()], "");
+    assert_eq!(o.status.code(), Some(1));
+    assert!(!marker.exists(), "os.execute did not run");
+    let l = json_lines(&o);
+    assert_eq!(l.len(), 1, "one summary object: {l:?}");
+    let s = &l[0];
+    assert_eq!(s["ok"], false);
+    assert_eq!(s["error"]["where"], format!("{}:3", p.display()));
+    assert!(s["error"]["message"].as_str().unwrap().contains("os.execute is not available in a sandboxed run"));
+    assert_eq!(s["checks"], serde_json::json!({"passed": 2, "failed": 0}));
+    assert!(s["duration_ms"].as_f64().unwrap() >= 0.0);
+
+    // A passing run ends with the summary too; a failed check is counted.
+    let p = script("graded.lua", "print('hello')\nplcsh.check(true)\nlocal ok = pcall(plcsh.check, false, 'wrong')\n");
+    let l = json_lines(&run(&["--json", "run", "--sandbox", p.to_str().unwrap()], ""));
+    let s = l.last().unwrap();
+    assert_eq!(s["ok"], true, "{l:?}");
+    assert_eq!(s["checks"], serde_json::json!({"passed": 1, "failed": 1}));
+
+    // Writing: refused without --write-dir, allowed under it, refused outside it.
+    let dir = std::env::temp_dir().join(format!("plcsh-sandbox-dir-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let inside = dir.join("out.txt");
+    let w = script(
+        "writer.lua",
+        &format!("local f = assert(io.open({:?}, 'w'))\nf:write('x')\nf:close()\n", inside.to_str().unwrap()),
+    );
+    let o = run(&["run", "--sandbox", w.to_str().unwrap()], "");
+    assert!(common::stderr(&o).contains("not allowed in a sandboxed run"), "{}", common::stderr(&o));
+    let o = run(&["run", "--sandbox", "--write-dir", dir.to_str().unwrap(), w.to_str().unwrap()], "");
+    assert!(o.status.success(), "{}", both(&o));
+    assert_eq!(std::fs::read_to_string(&inside).unwrap(), "x");
+    let o = run(&["run", "--sandbox", "--write-dir", dir.join("sub").to_str().unwrap(), w.to_str().unwrap()], "");
+    assert!(common::stderr(&o).contains("is outside"), "{}", common::stderr(&o));
+}

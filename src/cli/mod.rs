@@ -147,7 +147,8 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
 }
 
 /// Options of plcsh that take a value (`--time stepped`): their value is not a positional.
-const VALUE_OPTIONS: &[&str] = &["-c", "--command", "--model", "-d", "--device", "--time", "--config", "--state"];
+const VALUE_OPTIONS: &[&str] =
+    &["-c", "--command", "--model", "-d", "--device", "--time", "--config", "--state", "--write-dir"];
 
 /// `plcsh [FLAGS] run [RUN FLAGS] SCRIPT ARGS…`: everything after the script belongs to the
 /// script, even words that look like plcsh's own flags (`run a.lua --time stepped` gives

@@ -58,8 +58,10 @@ local function equal(a, b)
 end
 
 plcsh.checks = 0
+plcsh.checks_failed = 0
 
 local function fail(what, msg, detail)
+  plcsh.checks_failed = plcsh.checks_failed + 1
   local text = what .. " failed" .. (msg and (": " .. tostring(msg)) or "")
   if detail then text = text .. "\n" .. detail end
   error(text, 3)
