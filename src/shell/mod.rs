@@ -105,19 +105,28 @@ impl Shell {
     /// write: after a failed command the rest of the line is skipped (the line is treated
     /// like a script: later commands usually depend on earlier ones).
     pub fn exec(&mut self, line: &str) -> Vec<CmdResult> {
+        let mut results = Vec::new();
+        self.exec_each(line, |_, r| results.push(r));
+        results
+    }
+
+    /// [`exec`](Self::exec), handing each result to `on` as soon as its command finished, so
+    /// output appears in order with what later commands print themselves (Lua's `print`).
+    pub fn exec_each(&mut self, line: &str, mut on: impl FnMut(&mut Shell, CmdResult)) {
         if let Some((offset, code)) = commands::lua::whole_line(line) {
             let args = Args { text: &code, offset };
-            return vec![(commands::lua::LUA.run)(self, args).map_err(|e| ("lua".to_string(), e))];
+            let r = (commands::lua::LUA.run)(self, args).map_err(|e| ("lua".to_string(), e));
+            return on(self, r);
         }
         // The K2 manual's own spelling (`В#16#85` with a Cyrillic В, `% VW2`) reads as meant.
         let folded = crate::core::text::fold_manual_spelling(line);
         let line = folded.as_ref().map_or(line, |(l, _)| l.as_str());
         let line = strip_comment(line);
-        let mut results = Vec::new();
         let parts = match lex::split_commands(line) {
             Ok(p) => p,
-            Err(e) => return vec![Err(("line".into(), e))],
+            Err(e) => return on(self, Err(("line".into(), e))),
         };
+        let mut first = true;
         for (offset, part) in parts {
             let lead = part.len() - part.trim_start().len();
             let cmd_text = part.trim();
@@ -125,20 +134,20 @@ impl Shell {
                 continue;
             }
             let mut r = self.exec_one(cmd_text, offset + lead);
-            if let (Some((_, changed)), Ok(o)) = (folded.as_ref().filter(|_| results.is_empty()), r.as_mut()) {
+            if let (Some((_, changed)), Ok(o)) = (folded.as_ref().filter(|_| first), r.as_mut()) {
                 let words: Vec<String> = changed.iter().map(|(a, b)| format!("`{a}` as `{b}`")).collect();
                 o.notes.push(format!(
                     "read {} (the K2 manual's spelling: Cyrillic look-alike letters, `% VW2`)",
                     words.join(", ")
                 ));
             }
+            first = false;
             let failed = r.is_err();
-            results.push(r);
+            on(self, r);
             if failed || self.quit {
                 break;
             }
         }
-        results
     }
 
     fn exec_one(&mut self, text: &str, offset: usize) -> CmdResult {
@@ -162,18 +171,19 @@ impl Shell {
     pub fn run_line(&mut self, line: &str, out: &mut dyn Write) -> bool {
         let mut ok = true;
         let before = self.verbose.then(|| self.requests());
-        for r in self.exec(line) {
+        self.exec_each(line, |sh, r| {
             let w = match &r {
-                Ok(o) => output::write_outcome(out, self.style, o),
+                Ok(o) => output::write_outcome(out, sh.style, o),
                 Err((cmd, e)) => {
                     ok = false;
-                    output::report_error(out, self.style, cmd, e, Some(line))
+                    output::report_error(out, sh.style, cmd, e, Some(line))
                 }
             };
-            if w.is_err() {
-                return false;
+            // Flushed per command: a Lua `print` in a later command goes to stdout directly.
+            if w.and_then(|_| out.flush()).is_err() {
+                ok = false;
             }
-        }
+        });
         let _ = out.flush();
         if let Some(before) = before {
             self.report_requests(&before);
