@@ -275,3 +275,32 @@ fn a_sandboxed_run_refuses_os_execute_and_ends_with_a_summary() {
     let o = run(&["run", "--sandbox", "--write-dir", dir.join("sub").to_str().unwrap(), w.to_str().unwrap()], "");
     assert!(common::stderr(&o).contains("is outside"), "{}", common::stderr(&o));
 }
+
+/// `require` searches in the README's order: PLCSH_LIB, the user's lib, the project's lib/,
+/// then the script's own directory — and `plcsh.lib_dirs` lists every directory searched.
+#[test]
+fn require_searches_in_the_documented_order() {
+    let base = std::env::temp_dir().join(format!("plcsh-require-{}", std::process::id()));
+    let (libdir, scriptdir) = (base.join("lib"), base.join("scripts"));
+    std::fs::create_dir_all(&libdir).unwrap();
+    std::fs::create_dir_all(&scriptdir).unwrap();
+    std::fs::write(libdir.join("shadow.lua"), "return 'from PLCSH_LIB'\n").unwrap();
+    std::fs::write(scriptdir.join("shadow.lua"), "return 'from the script directory'\n").unwrap();
+    std::fs::write(scriptdir.join("own.lua"), "return 'own'\n").unwrap();
+    let s = scriptdir.join("main.lua");
+    std::fs::write(
+        &s,
+        "print((require('shadow')), (require('own')))\nprint(plcsh.lib_dirs[1], plcsh.lib_dirs[#plcsh.lib_dirs])\n",
+    )
+    .unwrap();
+    let o = plcsh().env("PLCSH_LIB", &libdir).args(["run", s.to_str().unwrap()]).output().unwrap();
+    assert!(o.status.success(), "{}", both(&o));
+    assert_eq!(stdout(&o), format!("from PLCSH_LIB\town\n{}\t{}\n", libdir.display(), scriptdir.display()),);
+}
+
+/// `-c`: a Lua `print` appears in order with the output of the commands around it.
+#[test]
+fn print_output_stays_in_order_under_dash_c() {
+    let o = run(&["-c", "set VW0=5; get VW0; lua print('between'); get VW0"], "");
+    assert_eq!(stdout(&o), "VW0  5\nbetween\nVW0  5\n");
+}

@@ -49,6 +49,7 @@ pub fn json_to_lua(lua: &Lua, v: &serde_json::Value) -> mlua::Result<Value> {
 
 /// Runs shell `line` (on device `device`, made current for the call) and returns one table
 /// per command; a failed command raises its error.
+/// Text of several lines runs line by line, in order, as a pasted block does in the REPL.
 pub fn exec_on(lua: &Lua, device: Option<&str>, line: &str) -> mlua::Result<MultiValue> {
     let stop = interrupt_flag(lua)?;
     if stop.load(Ordering::Relaxed) {
@@ -60,7 +61,13 @@ pub fn exec_on(lua: &Lua, device: Option<&str>, line: &str) -> mlua::Result<Mult
             super::device::index(sh, d)?;
             sh.session.use_device(d)?;
         }
-        let r = sh.exec(line);
+        let mut r = Vec::new();
+        for l in line.lines().filter(|l| !l.trim().is_empty() && !l.trim_start().starts_with('#')) {
+            r.extend(sh.exec(l));
+            if r.last().is_some_and(|x| x.is_err()) {
+                break;
+            }
+        }
         if let (Some(_), Some(b)) = (device, back) {
             let _ = sh.session.use_device(&b);
         }
@@ -112,6 +119,48 @@ fn now(lua: &Lua) -> mlua::Result<Duration> {
 
 fn truthy(v: &Value) -> bool {
     !matches!(v, Value::Nil | Value::Boolean(false))
+}
+
+/// Refuses a table JSON cannot hold without losing data: a sparse list (`{1, nil, 3}`) or one
+/// mixing list items and keys (`{1, 2, x=3}`) — serde would drop or reorder them silently.
+fn json_shape(lua: &Lua, v: &Value, path: &mut String) -> mlua::Result<()> {
+    let Value::Table(t) = v else { return Ok(()) };
+    let (mut ints, mut max, mut others) = (0usize, 0i64, 0usize);
+    for pair in t.clone().pairs::<Value, Value>() {
+        let (k, _) = pair?;
+        match k {
+            Value::Integer(i) if i >= 1 => {
+                ints += 1;
+                max = max.max(i);
+            }
+            _ => others += 1,
+        }
+    }
+    let refuse = |msg: String| {
+        Err(super::error::raise_at(
+            lua,
+            Error::new(ErrorKind::Value, msg)
+                .hint("JSON arrays are lists 1…n without holes; objects have string keys — split the table"),
+        ))
+    };
+    if ints > 0 && others > 0 {
+        return refuse(format!("plcsh.json.encode: {path} mixes list items and keys"));
+    }
+    if ints > 0 && max as usize != ints {
+        return refuse(format!("plcsh.json.encode: {path} is a sparse list ({ints} items, highest index {max})"));
+    }
+    for pair in t.clone().pairs::<Value, Value>() {
+        let (k, item) = pair?;
+        let len = path.len();
+        match &k {
+            Value::Integer(i) => path.push_str(&format!("[{i}]")),
+            Value::String(s) => path.push_str(&format!(".{}", s.to_string_lossy())),
+            _ => path.push_str("[?]"),
+        }
+        json_shape(lua, &item, path)?;
+        path.truncate(len);
+    }
+    Ok(())
 }
 
 /// Refuses keys of an options table that `what` does not know (`{timout=50}` would otherwise
@@ -277,6 +326,7 @@ pub fn register(lua: &Lua) -> mlua::Result<()> {
     json.set(
         "encode",
         lua.create_function(|lua, (v, opts): (Value, Option<Table>)| {
+            json_shape(lua, &v, &mut String::from("value"))?;
             let j: serde_json::Value = lua.from_value(v)?;
             if let Some(o) = &opts {
                 check_keys(lua, o, &["pretty"], "plcsh.json.encode")?;

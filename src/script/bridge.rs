@@ -77,6 +77,9 @@ const fn with(method: &'static str, family: &'static str, template: &'static str
 /// `freq` needs no unit (a number is Hz).
 const PULSE: &[Opt] = &[unit("cycle", "us"), unit("width", "us")];
 
+/// Sampling: numbers are milliseconds (the Lua unit for times).
+const TRACE: &[Opt] = &[unit("every", "ms"), unit("for", "ms")];
+
 /// `at VB3009` (the PV table address, k2.md §4).
 const HSC: &[Opt] = &[spaced("at")];
 
@@ -93,6 +96,8 @@ pub const BRIDGE: &[Bridge] = &[
     row("read", "", "read"),
     row("help", "", "help"),
     row("cmd", "", ""), // plc:cmd("pls 0; pls 1"): any command line, on this device
+    // plc:trace("VW0", "Q0.0", {every=10, ["for"]=1000, to="t.csv"}): the samples (t_s, series).
+    with("trace", "", "trace", TRACE),
     // K2 pulse outputs (k2.md §5, §6).
     row("pls", "k2", "pls {}"),
     row("pstop", "k2", "pstop {}"),
