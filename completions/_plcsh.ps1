@@ -180,12 +180,14 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             break
         }
         'plcsh;run' {
+            [CompletionResult]::new('--write-dir', '--write-dir', [CompletionResultType]::ParameterName, 'With --sandbox: the directory the script may write files in (none without it)')
             [CompletionResult]::new('--model', '--model', [CompletionResultType]::ParameterName, 'Model of the default simulated PLC')
             [CompletionResult]::new('-d', '-d', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
             [CompletionResult]::new('--device', '--device', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
             [CompletionResult]::new('--time', '--time', [CompletionResultType]::ParameterName, 'Simulator time: follow the wall clock, or move only when stepped')
             [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)')
             [CompletionResult]::new('--state', '--state', [CompletionResultType]::ParameterName, 'Simulator state file (backup area, retained ranges, clock); default in the user''s data directory')
+            [CompletionResult]::new('--sandbox', '--sandbox', [CompletionResultType]::ParameterName, 'Run a script someone else wrote: no os.execute, io.popen, os.remove/rename/exit, C libraries or debug library; files written only under --write-dir')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'Print one JSON object per command result')
             [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
             [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')

@@ -123,12 +123,14 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subco
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from help" -f -a "il" -d 'Print the helper program (K2 instruction list) for KincoBuilder'
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l write-dir -d 'With --sandbox: the directory the script may write files in (none without it)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l state -d 'Simulator state file (backup area, retained ranges, clock); default in the user\'s data directory' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l sandbox -d 'Run a script someone else wrote: no os.execute, io.popen, os.remove/rename/exit, C libraries or debug library; files written only under --write-dir'
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -s h -l help -d 'Print help (see more with \'--help\')'

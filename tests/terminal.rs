@@ -160,7 +160,7 @@ fn pasted_blocks_run_every_line_in_order() {
             t.wait_for("the pasted block", |s| s.contains("get VW4 VW6"));
             t.keys(&["Enter"]);
         }
-        let s = t.wait_for("the last pasted line's output", |s| s.contains("VW6") && s.contains("33"));
+        let s = t.wait_for("the last pasted line's output", |s| s.contains("VW6  33"));
         assert!(s.contains("11"), "set VW0=11 then get VW0 ran:\n{s}");
         assert!(s.contains("Q0.9"), "the bad operand is reported:\n{s}");
         // `set VW4=99` came after the failing command on its line, so VW4 still reads 0.

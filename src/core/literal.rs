@@ -215,6 +215,17 @@ pub fn parse_duration_ms(s: &str) -> Result<i64, String> {
     Ok(us / 1000)
 }
 
+/// A duration given to a command or a Lua call (`every=`, `for=`, `timeout=`, `sim step`):
+/// a bare number is milliseconds — the one unit rule for times (README "Units") — and a
+/// number with a unit is that (`500ms`, `2s`, `250us`). In microseconds.
+pub fn parse_option_duration_us(s: &str) -> Result<i64, String> {
+    let t = s.trim().replace('_', "");
+    match t.parse::<f64>() {
+        Ok(ms) if ms.is_finite() && !t.is_empty() => Ok((ms * 1000.0).round() as i64),
+        _ => parse_duration_us(s),
+    }
+}
+
 /// A duration in microseconds from text like `500ms`, `1s200ms`, `2.5s`, `250us`, `1h`.
 pub fn parse_duration_us(s: &str) -> Result<i64, String> {
     let s = s.trim().to_ascii_lowercase();

@@ -83,7 +83,8 @@ const TRACE: &[Opt] = &[unit("every", "ms"), unit("for", "ms")];
 /// `at VB3009` (the PV table address, k2.md §4).
 const HSC: &[Opt] = &[spaced("at")];
 
-/// Servo speeds: `{rpm=300}` → `speed=300rpm` (a bare `speed` number is the drive's DEC).
+/// Servo speeds: `{rpm=300}` → `speed=300rpm`; a bare `speed`/`acc`/`dec` number is in rpm /
+/// rps/s too (the unit rule, `servo::units::command_value`); `'2731dec'` is the raw value.
 const SPEED: &[Opt] = &[rename("rpm", "speed", "rpm")];
 
 /// `servo:jog{rpm=100}` → `servo jog 100rpm`.

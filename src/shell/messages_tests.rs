@@ -135,3 +135,25 @@ fn a_profile_run_reports_each_fact_once() {
     let text = r[0].as_ref().unwrap().message.clone().unwrap();
     assert_eq!(text.matches("5000 pulses").count(), 1, "{text}");
 }
+
+/// One unit rule (README "Units"): a bare number in a command is the quantity's engineering
+/// unit — ms for times, rpm and rps/s for servo speeds and accelerations; raw drive values
+/// carry their suffix (`dec`).
+#[test]
+fn bare_numbers_follow_one_unit_rule() {
+    let mut sh = shell();
+    // every=100 is 100 ms: one second gives 11 samples.
+    let r = sh.exec("trace VW0 every=100 for=1000");
+    assert_eq!(r[0].as_ref().unwrap().data["samples"], 11);
+    // speed=300 is 300 rpm and acc=100 is 100 rps/s, not the drive's raw DEC.
+    let r = sh.exec("servo enable; servo mode position; servo move abs 10000 speed=300 acc=100");
+    let o = r[2].as_ref().unwrap_or_else(|e| panic!("{}", e.1));
+    assert!(o.message.as_deref().unwrap_or("").contains("300 rpm"), "{o:?}");
+    let acc = value_of(&mut sh, "get servo:profile_acceleration");
+    let r = crate::servo::units::DEFAULT_RESOLUTION;
+    let want = crate::servo::units::rps2_to_dec(crate::servo::units::parse_decimal("100").unwrap(), r);
+    assert_eq!(acc.as_i64() as i128, want);
+    // The raw value is still reachable, with its suffix.
+    let r = sh.exec("servo move abs 0 speed=2731dec");
+    assert!(r[0].as_ref().unwrap().message.as_deref().unwrap_or("").contains("(2731 DEC)"));
+}

@@ -6,7 +6,7 @@
 
 use super::lex;
 use super::Args;
-use crate::core::literal::parse_duration_us;
+use crate::core::literal::parse_option_duration_us;
 use crate::core::{Error, Result};
 use crate::session::{Reading, Session};
 use std::time::{Duration, Instant};
@@ -85,7 +85,7 @@ pub struct Request<'a> {
 }
 
 fn duration(col: usize, key: &str, v: &str) -> Result<Duration> {
-    let us = parse_duration_us(v).map_err(|m| Error::usage(format!("{key}={v}: {m}")).column(col))?;
+    let us = parse_option_duration_us(v).map_err(|m| Error::usage(format!("{key}={v}: {m}")).column(col))?;
     if us <= 0 {
         return Err(Error::usage(format!("{key} must be more than zero")).column(col));
     }

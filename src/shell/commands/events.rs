@@ -82,7 +82,7 @@ fn wait(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let m = EventMatch::parse(pos[1].1);
     let timeout = match opt(&opts, "timeout") {
         Some((c, t)) => {
-            let us = crate::core::literal::parse_duration_us(t).map_err(|e| value_err(c, e))?;
+            let us = crate::core::literal::parse_option_duration_us(t).map_err(|e| value_err(c, e))?;
             Duration::from_micros(us.max(0) as u64)
         }
         None => Duration::from_secs(10),
