@@ -248,10 +248,12 @@ fn panel_range(group: &[&Series]) -> ((f64, f64), (f64, f64)) {
     ((t0, t1), (lo, v1 + pad))
 }
 
-/// The drawn points: steps become horizontal-then-vertical pairs.
+/// The drawn points: steps become horizontal-then-vertical pairs. A series of only 0 and 1 (a
+/// bit) is drawn as steps too: a bit holds its level until the next sample.
 fn polyline(s: &Series) -> Vec<(f64, f64)> {
     let pts: Vec<(f64, f64)> = s.points.iter().copied().filter(|(t, v)| t.is_finite() && v.is_finite()).collect();
-    if !s.steps {
+    let bit = pts.iter().all(|p| p.1 == 0.0 || p.1 == 1.0);
+    if !s.steps && !bit {
         return pts;
     }
     let mut out = Vec::with_capacity(pts.len() * 2);
