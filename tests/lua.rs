@@ -274,6 +274,15 @@ fn a_sandboxed_run_refuses_os_execute_and_ends_with_a_summary() {
     assert_eq!(std::fs::read_to_string(&inside).unwrap(), "x");
     let o = run(&["run", "--sandbox", "--write-dir", dir.join("sub").to_str().unwrap(), w.to_str().unwrap()], "");
     assert!(common::stderr(&o).contains("is outside"), "{}", common::stderr(&o));
+    // Commands that write files follow the same rule.
+    let outside = std::env::temp_dir().join(format!("plcsh-sandbox-trace-{}.csv", std::process::id()));
+    let t = script(
+        "tracer.lua",
+        &format!("plc:trace('VW0', {{every=10, ['for']=50, to={:?}}})\n", outside.to_str().unwrap()),
+    );
+    let o =
+        run(&["--time", "stepped", "run", "--sandbox", "--write-dir", dir.to_str().unwrap(), t.to_str().unwrap()], "");
+    assert!(common::stderr(&o).contains("is outside") && !outside.exists(), "{}", both(&o));
 }
 
 /// `require` searches in the README's order: PLCSH_LIB, the user's lib, the project's lib/,

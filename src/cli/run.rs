@@ -39,6 +39,8 @@ pub fn main(shell: &mut Shell, args: &RunArgs, style: Style) -> i32 {
         }
     };
     if args.sandbox {
+        // Commands the script runs (`trace … to=`, `eeprom dump` …) write under the same rule.
+        shell.write_rule = Some(args.write_dir.clone());
         if let Err(e) = crate::script::sandbox::apply(engine.lua(), args.write_dir.as_deref()) {
             eprintln!("cannot set up the sandbox: {e}");
             return 1;

@@ -2,12 +2,13 @@
 //! submission) without the parts of Lua that reach outside plcsh: no processes (`os.execute`,
 //! `io.popen`), no deleting or renaming files, no exit, no C libraries, no `debug` library, no
 //! precompiled chunks; files open for writing only under the given directory (none without
-//! `--write-dir`). Reading files stays allowed (a lab may read its own data).
+//! `--write-dir`; commands that write files follow the same rule, `shell::files`). Reading
+//! files stays allowed (a lab may read its own data).
 
 use super::error::raise_at;
 use crate::core::Error;
 use mlua::{Lua, MultiValue, Table, Value};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 /// What a sandboxed run refuses, with the reason shown to the student.
 const REFUSED: &[(&str, &str, &str)] = &[
@@ -88,25 +89,7 @@ pub fn apply(lua: &Lua, write_dir: Option<&Path>) -> mlua::Result<()> {
     Ok(())
 }
 
-/// A file may be written when it lies under the write directory (after resolving `..` and
-/// symbolic links in its directory).
+/// The session's rule (`shell::files`), raised at the script's line.
 fn check_write(lua: &Lua, path: &str, dir: Option<&Path>) -> mlua::Result<()> {
-    let Some(dir) = dir else {
-        return Err(raise_at(
-            lua,
-            Error::unsupported(format!("writing {path} is not allowed in a sandboxed run"))
-                .hint("give the run a directory for its files: plcsh run --sandbox --write-dir DIR"),
-        ));
-    };
-    let p = Path::new(path);
-    let parent = p.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
-    let resolved: Option<PathBuf> = parent.canonicalize().ok().map(|d| d.join(p.file_name().unwrap_or_default()));
-    match resolved {
-        Some(r) if r.starts_with(dir) => Ok(()),
-        _ => Err(raise_at(
-            lua,
-            Error::unsupported(format!("writing {path} is outside {}", dir.display()))
-                .hint("a sandboxed run writes only under its --write-dir"),
-        )),
-    }
+    crate::shell::files::check_write(&Some(dir.map(Path::to_path_buf)), path).map_err(|e| raise_at(lua, e))
 }

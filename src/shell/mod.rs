@@ -8,6 +8,7 @@
 
 pub mod commands;
 pub mod complete;
+pub mod files;
 pub mod helper;
 pub mod lex;
 pub mod progress;
@@ -41,6 +42,8 @@ pub struct Shell {
     pub last_trace: Option<sample::Recording>,
     /// Runs Lua (`lua …`, `:…`); `None` while a chunk runs (no nesting) or when not installed.
     pub script: Option<Box<dyn ScriptHook>>,
+    /// Where commands may write files (`files::check_write`); confined in a sandboxed run.
+    pub write_rule: files::WriteRule,
 }
 
 /// An embedded language the shell hands whole lines to (Lua, `src/script/`).
@@ -97,7 +100,7 @@ pub type CmdResult = std::result::Result<Outcome, (String, Error)>;
 
 impl Shell {
     pub fn new(session: Session, style: Style) -> Shell {
-        Shell { session, style, verbose: false, quit: false, last_trace: None, script: None }
+        Shell { session, style, verbose: false, quit: false, last_trace: None, script: None, write_rule: None }
     }
 
     /// Runs every command on the line in order and returns their results. A failing

@@ -272,6 +272,7 @@ fn profile(sh: &mut Shell, args: Args) -> Result<Outcome> {
         }
         let series = crate::plot::Series::new(format!("PTO{ch} frequency"), "Hz", points).stepped();
         if let Some(path) = &svg_to {
+            crate::shell::files::check_write(&sh.write_rule, path)?;
             let one = std::slice::from_ref(&series);
             let title = format!("PTO{ch} profile plan: {} pulses, {} segments", tl.total_pulses, tl.points.len());
             crate::plot::write_picture(path, one, &title, size.unwrap_or_else(|| crate::plot::default_size(one)))?;

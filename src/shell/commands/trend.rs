@@ -31,7 +31,8 @@ pub const PLOT: CommandSpec = CommandSpec {
     run: plot,
 };
 
-fn write_file(path: &str, text: &str, col: usize) -> Result<()> {
+fn write_file(sh: &Shell, path: &str, text: &str, col: usize) -> Result<()> {
+    crate::shell::files::check_write(&sh.write_rule, path).map_err(|e| e.column(col))?;
     std::fs::write(path, text).map_err(|e| Error::io(format!("cannot write {path}: {e}")).column(col))
 }
 
@@ -75,7 +76,7 @@ fn trace(sh: &mut Shell, args: Args) -> Result<Outcome> {
     }
     let mut o = Outcome::new("trace");
     if let Some(&(col, _, path)) = req.options.iter().find(|(_, k, _)| *k == "to") {
-        write_file(path, &rec.csv(), col)?;
+        write_file(sh, path, &rec.csv(), col)?;
         o = o.with("file", path);
     }
     let rows = rec
@@ -158,6 +159,7 @@ fn plot(sh: &mut Shell, args: Args) -> Result<Outcome> {
     if let Some((col, path)) = to {
         let size = size.unwrap_or_else(|| crate::plot::default_size(&series));
         let title = format!("trace, every {}", crate::plot::time(rec.every.as_secs_f64()));
+        crate::shell::files::check_write(&sh.write_rule, path).map_err(|e| e.column(col))?;
         crate::plot::write_picture(path, &series, &title, size).map_err(|e| e.column(col))?;
         text.push_str(&format!("wrote {path}\n"));
         o = o.with("file", path);
