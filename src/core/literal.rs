@@ -52,13 +52,31 @@ pub fn parse_literal(text: &str) -> Result<Literal, LiteralError> {
             Literal { value: Value::Bool(false), declared: Some(DataType::Bool), pattern: false, text: String::new() }
         }
         _ => parse_typed(&upper).map_err(|mut e| {
-            // Messages quote the value as typed, not upper-cased.
-            e.message = e.message.replace(&format!("`{upper}`"), &format!("`{compact}`"));
+            e.message = as_typed(&e.message, &upper, &compact);
             e
         })?,
     };
     lit.text = trimmed.to_string();
     Ok(lit)
+}
+
+/// Messages quote the value as typed, not upper-cased: every `quoted` piece of `msg` found in
+/// `upper` is replaced by the same bytes of `typed` (ASCII upper-casing keeps byte offsets).
+fn as_typed(msg: &str, upper: &str, typed: &str) -> String {
+    let mut out = String::with_capacity(msg.len());
+    let mut parts = msg.split('`');
+    out.push_str(parts.next().unwrap_or(""));
+    for (k, part) in parts.enumerate() {
+        out.push('`');
+        let quoted = k % 2 == 0;
+        match upper.find(part).filter(|_| quoted && !part.is_empty()) {
+            Some(at) if typed.is_char_boundary(at) && typed.is_char_boundary(at + part.len()) => {
+                out.push_str(&typed[at..at + part.len()])
+            }
+            _ => out.push_str(part),
+        }
+    }
+    out
 }
 
 fn squeeze_hash_spaces(s: &str) -> String {

@@ -38,6 +38,10 @@ fn errors_quote_the_input_as_typed() {
     assert!(e.message.contains("`xw0`") && e.message.contains("`xw`"), "{e}");
     let e = error(&mut sh, "set VW0=0x10");
     assert!(e.message.contains("`0x10`"), "{e}");
+    let e = error(&mut sh, "set VW0=x#5");
+    assert!(e.message.contains("`x#`"), "{e}");
+    let e = error(&mut sh, "set VW0=16#fg");
+    assert!(e.message.contains("`g`"), "{e}");
 }
 
 #[test]
