@@ -34,9 +34,10 @@ pub fn wrap(text: &str, width: usize) -> Vec<String> {
     lines
 }
 
-/// Cyrillic letters that look like the Latin ones operands and literals use. The K2 manual's
-/// machine-extracted Russian text prints `В#16#85` and `ВW0` with a Cyrillic В (and `% VW2`
-/// with a space), and a technician copying from it, or typing on a Russian layout, gets them.
+/// Cyrillic letters that look like the Latin ones operands and literals use. Text copied from
+/// the K2 manual's machine-extracted Russian edition, or typed on a Russian layout, carries them
+/// (`В#16#85`, `ВW0` with a Cyrillic В); the same edition writes operands with a space after
+/// `%` (§3.4.3's PHOME example: `PHOME 0, % M0.0, … % VW2, % VW4, % VD6`).
 const LOOK_ALIKES: &[(char, char)] = &[
     ('А', 'A'),
     ('а', 'a'),
