@@ -197,6 +197,14 @@ fn help_and_models_fit_80_columns() {
         let full: Vec<&str> = s.lines().filter(|l| l.chars().count() >= 80).collect();
         assert!(full.is_empty(), "`{cmd}` wraps at 80 columns:\n{s}");
     }
+    // A long inline hint (the servo usage) is cut at the edge instead of wrapping under the prompt.
+    t.keys(&["C-l"]);
+    t.literal("servo ");
+    let s = t.wait_for("the servo hint", |s| s.lines().any(|l| l.starts_with("plc> servo ") && l.contains('…')));
+    let prompt: Vec<&str> = s.lines().skip_while(|l| !l.starts_with("plc> servo ")).collect();
+    assert!(prompt[0].chars().count() < 80, "{s}");
+    assert!(prompt.get(1).is_none_or(|l| l.trim().is_empty()), "nothing wrapped below the prompt:\n{s}");
+    t.keys(&["C-u"]);
     t.literal("quit");
     t.keys(&["Enter"]);
     drop(t);
