@@ -225,6 +225,9 @@ fn unknown_option_keys_are_refused() {
     let p = script("opts2.lua", "print(plcsh.json.encode({1}, {prety=true}))\n");
     let e = common::stderr(&run(&["run", p.to_str().unwrap()], ""));
     assert!(e.contains("unknown option `prety`"), "{e}");
+    let p = script("opts3.lua", "local c = require('commission').new('x', {keep_goin=true})\n");
+    let e = common::stderr(&run(&["run", p.to_str().unwrap()], ""));
+    assert!(e.contains(&format!("{}:1: commission.new: unknown option `keep_goin`", p.display())), "{e}");
 }
 
 /// A lab grades a folder of submissions: `--json run --sandbox` refuses os.execute with a
