@@ -116,6 +116,14 @@ const TYPE_PREFIXES: &[(&str, DataType)] = &[
     ("USINT", DataType::Byte),
 ];
 
+/// True when `word` can stand before `#` in a literal (`B`, `INT`, `T`, a radix `16`), so a
+/// `#` after it — even spaced, `B # 16 # 85` as the manual's scanned text writes it — is part
+/// of a value, not a comment.
+pub fn is_literal_head(word: &str) -> bool {
+    let w = word.trim().to_ascii_uppercase();
+    TYPE_PREFIXES.iter().any(|(p, _)| *p == w) || ["T", "TIME", "2", "8", "10", "16"].contains(&w.as_str())
+}
+
 fn parse_typed(s: &str) -> Result<Literal, LiteralError> {
     // T#500ms / TIME#1s200ms
     if let Some(rest) = s.strip_prefix("T#").or_else(|| s.strip_prefix("TIME#")) {

@@ -67,6 +67,8 @@ fn the_manuals_cyrillic_spelling_is_accepted_with_a_note() {
     assert!(!o.notes.is_empty());
     // A trailing comment, as a checklist writes one, is not an operand.
     assert!(sh.exec("get VW0   # speed set-point")[0].is_ok());
+    // … but the manual's spaced literal is a value, not a comment.
+    assert_eq!(value_of(&mut sh, "set SMB67=B # 16 # 86; get SMB67"), crate::core::Value::Int(0x86));
 }
 
 #[test]

@@ -55,7 +55,8 @@ pub trait ScriptHook: Send {
 }
 
 /// The line without a trailing comment: `#` at the start or after a space, followed by a space
-/// or the end (`get VW0   # speed`, as a checklist writes it). `16#85` and `T#5s` are values.
+/// or the end (`get VW0   # speed`, as a checklist writes it). `16#85`, `T#5s` and the manual's
+/// spaced `B # 16 # 85` are values.
 fn strip_comment(line: &str) -> &str {
     let b = line.as_bytes();
     let mut quoted = false;
@@ -64,7 +65,8 @@ fn strip_comment(line: &str) -> &str {
             b'"' => quoted = !quoted,
             b'#' if !quoted
                 && (i == 0 || b[i - 1].is_ascii_whitespace())
-                && b.get(i + 1).is_none_or(|n| n.is_ascii_whitespace()) =>
+                && b.get(i + 1).is_none_or(|n| n.is_ascii_whitespace())
+                && !crate::core::literal::is_literal_head(word_before(&line[..i])) =>
             {
                 return &line[..i];
             }
@@ -93,6 +95,13 @@ fn suggest_subcommand(spec: &commands::CommandSpec, args: Args, e: Error) -> Err
         return e;
     }
     e.hint(format!("did you mean `{} {near}`? `help {}` shows its usage", spec.name, spec.name))
+}
+
+/// The word just before a position: back to a space, `=` or `,` (`SMB67=B ` → `B`).
+fn word_before(text: &str) -> &str {
+    let t = text.trim_end();
+    let start = t.rfind(|c: char| c.is_whitespace() || c == '=' || c == ',').map_or(0, |i| i + 1);
+    &t[start..]
 }
 
 /// One command's result, with the command name for error reporting.
