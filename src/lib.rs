@@ -5,6 +5,7 @@
 
 pub mod cli;
 pub mod core;
+pub mod fx;
 pub mod k2;
 pub mod output;
 pub mod plot;
@@ -13,3 +14,4 @@ pub mod script;
 pub mod servo;
 pub mod session;
 pub mod shell;
+pub mod umpk;

@@ -271,13 +271,23 @@ fn profile(
 }
 
 /// The simulator that stands for a profile's device when it is checked at load: the same
-/// family and model, without touching the wire. `None` for a scheme no family knows.
+/// family and model, without touching the wire. `None` for a scheme no family knows. A new
+/// family adds its schemes here beside its line in `session::open_url`.
 pub fn offline_twin(u: &DeviceUrl) -> Option<String> {
     let k2_model = || u.param("model").unwrap_or(crate::k2::catalog::DEFAULT_MODEL).to_string();
     match u.scheme.as_str() {
         "sim" => Some(format!("sim:{}", u.param("model").unwrap_or(&u.target))),
         "tcp" | "rtu" | "rtu+tcp" => Some(format!("sim:{}", k2_model())),
         "kinco" | "sim-servo" => Some("sim-servo:?id=1".to_string()),
+        "fx" | "fxlink" => Some(format!("sim-fx:{}", u.param("model").unwrap_or("FX2N"))),
+        "sim-fx" => {
+            Some(format!("sim-fx:{}", u.param("model").unwrap_or(if u.target.is_empty() { "FX2N" } else { &u.target })))
+        }
+        "umpk" => Some(u.param("model").map_or("sim-umpk:".to_string(), |m| format!("sim-umpk:?model={m}"))),
+        "sim-umpk" => Some(match u.param("model") {
+            Some(m) => format!("sim-umpk:?model={m}"),
+            None => format!("sim-umpk:{}", u.target),
+        }),
         _ => None,
     }
 }
@@ -287,7 +297,7 @@ fn check(p: &Profile, clock: &crate::core::Clock) -> Result<()> {
     let u = DeviceUrl::parse(&p.url)?;
     let Some(twin) = offline_twin(&u) else {
         return Err(Error::usage(format!("unknown device scheme `{}:` in {}", u.scheme, p.url))
-            .hint("known schemes: sim:MODEL, tcp://HOST:PORT, rtu:/dev/PORT, rtu+tcp://HOST:PORT, kinco:/dev/PORT, sim-servo:"));
+            .hint("known schemes: sim:MODEL, tcp://HOST:PORT, rtu:/dev/PORT, rtu+tcp://HOST:PORT, kinco:/dev/PORT, sim-servo:, fx:/dev/PORT, fxlink:/dev/PORT, sim-fx:FX2N, umpk:/dev/PORT, sim-umpk:UMPK16"));
     };
     let device = crate::session::open_url(&twin, clock)?;
     Guard::build(p, device.operands())?;

@@ -63,9 +63,14 @@ pub const SCHEMES: &[(&str, &str)] = &[
     ("sim:", "in-process K2 simulator: sim:MODEL"),
     ("kinco:", "Kinco servo drive on a serial port: kinco:/dev/ttyUSB0?id=1&baud=38400"),
     ("sim-servo:", "in-process Kinco servo simulator: sim-servo:?id=1"),
+    ("umpk:", "UMPK8/UMPK16 teaching PLC on a serial port: umpk:/dev/ttyUSB0?baud=57600"),
+    ("sim-umpk:", "in-process UMPK simulator: sim-umpk:UMPK16"),
     ("tcp://", "K2 over Modbus TCP: tcp://HOST:502?unit=1&model=K204ET-16DT"),
     ("rtu:", "K2 over Modbus RTU: rtu:/dev/ttyUSB0?baud=115200&unit=1&model=K205-16DT"),
     ("rtu+tcp://", "K2 through an RTU-over-TCP gateway: rtu+tcp://HOST:PORT?unit=1"),
+    ("fx:", "FX PLC on its programming port: fx:/dev/ttyUSB0?model=FX2N"),
+    ("fxlink:", "FX PLC over the computer link: fxlink:/dev/ttyUSB0?station=0&pc=FF&wait=0"),
+    ("sim-fx:", "in-process FX simulator: sim-fx:FX2N[?protocol=link]"),
 ];
 
 /// Opens a device from its URL. Every scheme plcsh knows is listed here.
@@ -80,8 +85,13 @@ pub fn open_url(url: &str, clock: &Clock) -> Result<Box<dyn Device>> {
         "kinco" => crate::servo::driver::open_serial(&u),
         "sim-servo" => crate::servo::driver::open_sim(&u, clock),
         "tcp" | "rtu" | "rtu+tcp" => crate::k2::open_wire(&u),
+        "fx" => crate::fx::driver::open_port(&u),
+        "fxlink" => crate::fx::driver::open_link(&u),
+        "sim-fx" => crate::fx::driver::open_sim(&u),
+        "umpk" => crate::umpk::driver::open_serial(&u),
+        "sim-umpk" => crate::umpk::driver::open_sim(&u, clock),
         other => Err(Error::usage(format!("unknown device scheme `{other}:` in {url}")).hint(
-            "known schemes: sim:MODEL, tcp://HOST:PORT, rtu:/dev/PORT, rtu+tcp://HOST:PORT, kinco:/dev/PORT?id=1, sim-servo:?id=1",
+            "known schemes: sim:MODEL, tcp://HOST:PORT, rtu:/dev/PORT, rtu+tcp://HOST:PORT, kinco:/dev/PORT?id=1, sim-servo:?id=1, fx:/dev/PORT, fxlink:/dev/PORT, sim-fx:FX2N, umpk:/dev/PORT, sim-umpk:UMPK16",
         )),
     }
 }

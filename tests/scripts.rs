@@ -79,5 +79,12 @@ fn a_wrong_expectation_fails_the_script_with_exit_status_1() {
         "\"2026-11-22T10:01:31\"",
         "",
         "actual:   \"2026-11-22T10:01:30\"",
+    ); // One script, two families: the K2 readback checks what was read from the FX.
+    fails_when_changed(
+        "fx_recipe_to_k2.lua",
+        "400 + 2 * (i - 1)",
+        "402 + 2 * (i - 1)",
+        "\"setpoints copied\"",
+        "expected: {1200, 850, 40, -15, 300, 0, 7, 2500}",
     );
 }

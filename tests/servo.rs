@@ -85,7 +85,7 @@ fn silence_over_a_pty_is_diagnosed_and_the_link_recovers() {
     assert_eq!(e.kind, ErrorKind::Link);
     assert!(e.message.contains("likely cause: bad checksum"), "{e}");
     // Unknown object: the id answers its statusword, so the object is the likely cause.
-    let unknown = d.operands().parse("2FF0.09/u16").unwrap()[0];
+    let unknown = d.operands().parse("3FFF.01/u16").unwrap()[0];
     let e = d.read(&[unknown]).unwrap_err();
     assert!(e.message.contains("likely cause: unknown object"), "{e}");
     // The link is still in step: the same frame with its right checksum is answered.

@@ -13,8 +13,15 @@
 //! exactly as on a K2 running `lib/k2_agent.il`.
 //!
 //! Simulated Kinco servo drives are served on their own pseudo-terminal (`--servo-pty LINK
-//! --servo-id 1[,2,…] [--servo-loop]`, the logic is `servo::sim::serve`); their fields
-//! (`servo_pty`, `link`, `ids`, `echo`) join the readiness line.
+//! --servo-id 1[,2,…] [--servo-loop] [--servo-baud 38400 --servo-latency 1ms | --servo-instant]
+//! [--servo-strict]`, the logic is `servo::sim::serve`); their fields (`servo_pty`, `link`,
+//! `ids`, `echo`, `servo_control`, timing) join the readiness line.
+//!
+//! A simulated FX PLC's programming port and computer link go on ptys of their own (`--fx-pty
+//! LINK --fx-link-pty LINK2`, one shared memory; the logic is `fx::sim`).
+//!
+//! A simulated UMPK teaching PLC is served on a pseudo-terminal too (`--umpk-pty LINK
+//! --umpk-model UMPK16`; the logic is `umpk::sim::serve`); it shares the servo line's stop flag.
 //!
 //! Shape: each served family adds its endpoints in its own function ([`serve_k2`],
 //! [`serve_servo`]) — it binds, spawns its tasks and adds its fields to the readiness line.
@@ -67,6 +74,46 @@ pub struct ServeArgs {
     /// RS232 loop mode: echo every request before the reply (connect with echo=1).
     #[arg(long = "servo-loop")]
     pub servo_loop: bool,
+    /// Line timing: replies take the frame time at this baud rate (10 bits a byte).
+    #[arg(long = "servo-baud", value_name = "BAUD", default_value_t = 38_400)]
+    pub servo_baud: u32,
+    /// Line timing: the drive's think-time before it answers (e.g. 1ms, 0).
+    #[arg(long = "servo-latency", value_name = "DURATION", default_value = "1ms")]
+    pub servo_latency: String,
+    /// Answer at once instead of at line speed (benchmarks, CI).
+    #[arg(long = "servo-instant")]
+    pub servo_instant: bool,
+    /// Refuse writes whose size code differs from the object's (abort 0x06070010).
+    #[arg(long = "servo-strict")]
+    pub servo_strict: bool,
+    /// Serve a simulated FX PLC's programming port on a new pseudo-terminal (symlink at LINK).
+    #[arg(long = "fx-pty", value_name = "LINK")]
+    pub fx_pty: Option<PathBuf>,
+    /// Serve the same FX PLC's computer link (format 1, sum check on) on another pseudo-terminal.
+    #[arg(long = "fx-link-pty", value_name = "LINK")]
+    pub fx_link_pty: Option<PathBuf>,
+    /// The simulated FX PLC's model (FX1S, FX1N, FX2N).
+    #[arg(long = "fx-model", value_name = "MODEL", default_value = "FX2N")]
+    pub fx_model: String,
+    /// The computer link's station number (0–31).
+    #[arg(long = "fx-station", value_name = "N", default_value_t = 0)]
+    pub fx_station: u8,
+    /// Serve a simulated UMPK teaching PLC on a new pseudo-terminal; LINK becomes a symlink to it.
+    #[arg(long = "umpk-pty", value_name = "LINK")]
+    pub umpk_pty: Option<PathBuf>,
+    /// The simulated UMPK's model (UMPK8 or UMPK16).
+    #[arg(long = "umpk-model", value_name = "MODEL", default_value = "UMPK16", value_parser = crate::umpk::sim::serve::parse_model)]
+    pub umpk_model: &'static crate::umpk::model::Model,
+    /// Bit numbers of W,H,R,E,P,T in the UMPK's status word.
+    #[arg(long = "umpk-status-bits", value_name = "W,H,R,E,P,T", default_value = "5,4,3,2,1,0", value_parser = crate::umpk::codec::StatusLayout::parse)]
+    pub umpk_status_bits: crate::umpk::codec::StatusLayout,
+    /// Make the simulated UMPK's flash write fail on this 64-byte page (programming gets `W`).
+    #[arg(long = "umpk-flash-fail", value_name = "PAGE")]
+    pub umpk_flash_fail: Option<u16>,
+    /// Where the simulated UMPK keeps its flash, program info and error history (default: one
+    /// file per model and link in the user's data directory; `none` keeps nothing).
+    #[arg(long = "umpk-state", value_name = "FILE")]
+    pub umpk_state: Option<PathBuf>,
 }
 
 impl ServeArgs {
@@ -162,15 +209,38 @@ async fn serve_k2(
 
 /// Serves simulated drives on a pty from a thread of their own (the servo line is a
 /// blocking byte stream); returns once the pty is open, with its fields for `ready`.
-async fn serve_servo(args: &ServeArgs, stop: &Arc<AtomicBool>, ready: &mut Map<String, Json>) -> Result<()> {
+async fn serve_servo(
+    args: &ServeArgs,
+    stop: &Arc<AtomicBool>,
+    ready: &mut Map<String, Json>,
+    cleanup: &mut Cleanup,
+) -> Result<()> {
     let Some(link) = args.servo_pty.clone() else { return Ok(()) };
+    // The process may exit before the line's thread sees the stop flag: once the line is up,
+    // its link and control socket are removed on the way out here too.
+    let made = [link.clone(), crate::servo::sim::serve::control_path(&link)];
     let ids = crate::servo::driver::parse_ids(&args.servo_id)
         .map_err(|m| Error::usage(format!("--servo-id: {m}")).hint("e.g. --servo-id 1,2"))?;
+    let latency =
+        crate::core::literal::parse_duration_us(&args.servo_latency).ok().filter(|us| *us >= 0).ok_or_else(|| {
+            Error::usage(format!("--servo-latency {}: not a duration", args.servo_latency)).hint("e.g. 1ms, 500us, 0")
+        })?;
+    if args.servo_baud == 0 {
+        return Err(Error::usage("--servo-baud must be positive (e.g. 38400)"));
+    }
+    let pace =
+        crate::servo::sim::Pace { baud: args.servo_baud, latency: std::time::Duration::from_micros(latency as u64) };
+    let opts = crate::servo::sim::serve::Options {
+        ids,
+        echo: args.servo_loop,
+        pace: (!args.servo_instant).then_some(pace),
+        strict: args.servo_strict,
+    };
     let (tx, rx) = tokio::sync::oneshot::channel::<Result<Json>>();
-    let (echo, stop) = (args.servo_loop, stop.clone());
+    let stop = stop.clone();
     std::thread::spawn(move || {
         let mut tx = Some(tx);
-        let r = crate::servo::sim::serve::serve_pty(Some(&link), &ids, echo, Clock::following(), &stop, |r| {
+        let r = crate::servo::sim::serve::serve_pty(Some(&link), &opts, Clock::following(), &stop, |r| {
             if let Some(tx) = tx.take() {
                 let _ = tx.send(Ok(json!(r)));
             }
@@ -182,9 +252,13 @@ async fn serve_servo(args: &ServeArgs, stop: &Arc<AtomicBool>, ready: &mut Map<S
     match rx.await {
         Ok(Ok(Json::Object(m))) => {
             ready.extend(m);
+            cleanup.links.extend(made);
             Ok(())
         }
-        Ok(Ok(_)) => Ok(()),
+        Ok(Ok(_)) => {
+            cleanup.links.extend(made);
+            Ok(())
+        }
         Ok(Err(e)) => Err(e),
         Err(_) => Err(Error::io("the servo line stopped before it was ready")),
     }
@@ -205,7 +279,12 @@ fn until_stopped() -> std::io::Result<impl std::future::Future<Output = ()>> {
 }
 
 async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
-    if !args.serves_k2() && args.servo_pty.is_none() {
+    if !args.serves_k2()
+        && args.servo_pty.is_none()
+        && args.fx_pty.is_none()
+        && args.fx_link_pty.is_none()
+        && args.umpk_pty.is_none()
+    {
         return Err(Error::usage("sim serve needs at least one transport")
             .hint("e.g. plcsh sim serve --tcp 127.0.0.1:5020 --rtu-pty /tmp/k2 --rtu-tcp 0 --servo-pty /tmp/kinco"));
     }
@@ -228,7 +307,22 @@ async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
     }
     let servo_stop = Arc::new(AtomicBool::new(false));
     let _stop_servo = StopOnDrop(servo_stop.clone());
-    serve_servo(args, &servo_stop, &mut ready).await?;
+    serve_servo(args, &servo_stop, &mut ready, &mut cleanup).await?;
+    let fx = (args.fx_pty.clone(), args.fx_link_pty.clone());
+    ready.extend(
+        crate::fx::sim::serve_ptys(fx.0.clone(), fx.1.clone(), &args.fx_model, args.fx_station, &servo_stop).await?,
+    );
+    cleanup.links.extend(fx.0.into_iter().chain(fx.1));
+    if let Some(link) = &args.umpk_pty {
+        let u = crate::umpk::sim::serve::Options {
+            link: link.clone(),
+            model: args.umpk_model,
+            layout: args.umpk_status_bits,
+            flash_fail: args.umpk_flash_fail.map(usize::from),
+            state: args.umpk_state.clone(),
+        };
+        ready.extend(crate::umpk::sim::serve::spawn(u, servo_stop.clone()).await?);
+    }
     serde_json::to_writer(&mut *out, &ready).map_err(|e| Error::io("cannot print the readiness line").cause(e))?;
     writeln!(out)?;
     out.flush()?;

@@ -139,12 +139,30 @@ pub const BRIDGE: &[Bridge] = &[
     with("move_rel", "servo", "servo move rel {}", SPEED),
     with("jog", "servo", "servo jog", JOG),
     row("home", "servo", "servo home"),
+    row("halt", "servo", "servo halt"),
     row("wait_target", "servo", "servo wait target [timeout={ms}]"),
     row("save", "servo", "servo save"),
     row("encoder", "servo", "servo encoder"),
     row("sim_fault", "servo", "servo sim fault"),
     row("sim_switch", "servo", "servo sim switch {}"),
+    row("sim_pulses", "servo", "servo sim pulses"),
+    // UMPK8/UMPK16 teaching PLCs (umpk.md): lab:umpk_monitor{count=50, every=100}.
+    row("umpk_info", "umpk", "umpk info"),
+    row("umpk_program_info", "umpk", "umpk program-info"),
+    row("umpk_errors", "umpk", "umpk errors"),
+    row("umpk_clear_errors", "umpk", "umpk errors clear"),
+    row("umpk_timing", "umpk", "umpk timing"),
+    row("umpk_reset", "umpk", "umpk reset"),
+    row("umpk_echo", "umpk", "umpk echo {}"),
+    with("umpk_monitor", "umpk", "umpk monitor quiet", UMPK_MONITOR),
+    row("umpk_program", "umpk", "umpk program {}"),
+    row("umpk_send", "umpk", "umpk send {}"),
+    row("umpk_sim_input", "umpk", "umpk sim input {}"),
+    row("umpk_sim_reference", "umpk", "umpk sim reference {}"),
 ];
+
+/// `{ms=500, every=100}` → `for=500ms every=100ms` (`for` is a Lua keyword).
+const UMPK_MONITOR: &[Opt] = &[rename("ms", "for", "ms"), unit("every", "ms")];
 
 fn usage(b: &Bridge, msg: String) -> Error {
     let shown = if b.template.is_empty() { "a command line".to_string() } else { format!("`{}`", b.template) };

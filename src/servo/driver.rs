@@ -21,7 +21,10 @@
 //! URL parameters: `id` (default 1), `baud` (38400), `echo` (0), `timeout` (200ms; a
 //! number is milliseconds), `encoder` (10000, or `auto` to read 6410.03 at open);
 //! `sim-servo:` also takes `drives=1,2` (the simulated ids on the line, default the `id`).
-//! `sim-servo:NAME?…` devices with the same NAME share one simulated line.
+//! `sim-servo:NAME?…` devices with the same NAME share one simulated line; `strict=1` makes
+//! the simulated drives refuse loose write sizes, `baud=`/`latency=` pace replies like a line.
+//! `kinco:` takes `control=PATH`, a served simulator's control socket (default `PORT.ctl`
+//! when it exists), for `servo sim …`.
 
 use super::frame::{self, abort_text, decode_reply, Frame, Reply, Size, FRAME_LEN};
 use super::link::{self, SharedLine, Transport};
@@ -66,12 +69,24 @@ pub struct Driver {
     requests: u64,
     /// This id has answered at least once.
     answered: bool,
+    /// A served simulator's control socket (`control=` in the URL, else `PORT.ctl` if present).
+    control: Option<std::path::PathBuf>,
 }
 
 impl Driver {
     /// A driver for drive `id` on `line`.
     pub fn attach(line: SharedLine, id: u8, echo: bool, timeout: Duration, info: DeviceInfo) -> Driver {
-        Driver { info, space: ServoSpace::default(), line, id, echo, timeout, requests: 0, answered: false }
+        Driver {
+            info,
+            space: ServoSpace::default(),
+            line,
+            id,
+            echo,
+            timeout,
+            requests: 0,
+            answered: false,
+            control: None,
+        }
     }
 
     pub fn id(&self) -> u8 {
@@ -115,6 +130,20 @@ impl Driver {
             }
             trace::frame(&name, Dir::Received, &echo);
             if echo != bytes {
+                // A reply where the echo should be: the line is not in loop mode.
+                let is_reply = <[u8; FRAME_LEN]>::try_from(echo.as_slice())
+                    .ok()
+                    .and_then(|b| Frame::from_bytes(&b).ok())
+                    .is_some_and(|f| {
+                        f.id == bytes[0] && f.index == u16::from_le_bytes([bytes[2], bytes[3]]) && f.sub == bytes[4]
+                    });
+                if is_reply {
+                    return Err(Error::link(format!(
+                        "expected the echo of the request on {name} (echo=1), but the drive's reply came first: {}; the line is not in loop mode",
+                        trace::hex_bytes(&echo)
+                    ))
+                    .hint("connect with echo=0 (or set the drive's loop mode, panel d5.15 = 1)"));
+                }
                 return Err(Error::link(format!(
                     "the echo differs from the request on {name}: sent {}, echoed {}; likely cause: bad checksum — the drive ignores a corrupted frame",
                     trace::hex_bytes(bytes),
@@ -136,6 +165,13 @@ impl Driver {
     /// One request: send, check the reply, decode it; diagnose silence.
     pub fn transact(&mut self, req: Frame, size: Size) -> Result<Reply> {
         match self.exchange(&req.to_bytes())? {
+            // Our own request came back: the line is in loop mode and we did not skip it.
+            Exchange::Reply(b) if !self.echo && b == req.to_bytes() => Err(Error::link(format!(
+                "the reply to {} of {} is the request itself: the line echoes requests (RS232 loop mode)",
+                verb(&req),
+                req.object()
+            ))
+            .hint("connect with echo=1 so plcsh skips the echo")),
             Exchange::Reply(b) => match decode_reply(&req, &b, size) {
                 Ok(r) => {
                     self.answered = true;
@@ -152,7 +188,12 @@ impl Driver {
     fn silence(&mut self, req: &Frame, partial: &[u8], bad_checksum: Option<frame::BadChecksum>) -> Error {
         let ms = self.timeout.as_millis();
         let head = format!("no reply from drive id {} to {} of {} within {ms} ms", req.id, verb(req), req.object());
-        let likely = if let Some(b) = bad_checksum {
+        let likely = if !is_request_func(req.func) {
+            format!(
+                "likely cause: unknown function code {:02X} — a drive answers only reads (40) and writes (23, 2B, 2F) and ignores anything else",
+                req.func
+            )
+        } else if let Some(b) = bad_checksum {
             format!(
                 "likely cause: bad checksum — the frame ends in {:02X}, the bytes before it need {:02X}",
                 b.got, b.want
@@ -261,11 +302,16 @@ impl Driver {
     }
 }
 
+/// Function codes a master may send (seed §2).
+fn is_request_func(f: u8) -> bool {
+    matches!(f, frame::func::READ | frame::func::WRITE_1 | frame::func::WRITE_2 | frame::func::WRITE_4)
+}
+
 fn verb(f: &Frame) -> &'static str {
-    if f.func == frame::func::READ {
-        "read"
-    } else {
-        "write"
+    match f.func {
+        frame::func::READ => "read",
+        func if is_request_func(func) => "write",
+        _ => "request",
     }
 }
 
@@ -347,6 +393,12 @@ impl ServoOps for Driver {
     fn simulator(&mut self) -> Option<Arc<Mutex<SimLine>>> {
         self.sim()
     }
+    fn sim_control(&self) -> Option<std::path::PathBuf> {
+        self.control.clone().or_else(|| {
+            let p = super::sim::serve::control_path(std::path::Path::new(&self.line.name));
+            p.exists().then_some(p)
+        })
+    }
 }
 
 fn parse_timeout(v: &str) -> Result<Duration> {
@@ -388,7 +440,7 @@ fn finish(mut d: Driver, c: &Common) -> Result<Box<dyn Device>> {
 
 /// Opens `kinco:PORT?baud=38400&id=1&echo=0&timeout=200ms&encoder=10000`.
 pub fn open_serial(u: &DeviceUrl) -> Result<Box<dyn Device>> {
-    u.expect_params(&["id", "baud", "echo", "loop", "timeout", "encoder"])?;
+    u.expect_params(&["id", "baud", "echo", "loop", "timeout", "encoder", "control"])?;
     let c = common(u)?;
     let baud = u.param_num::<u32>("baud")?.unwrap_or(DEFAULT_BAUD);
     if u.target.is_empty() {
@@ -402,13 +454,39 @@ pub fn open_serial(u: &DeviceUrl) -> Result<Box<dyn Device>> {
         link: format!("{} ({settings})", u.target),
         simulated: false,
     };
-    finish(Driver::attach(line, c.id, c.echo, c.timeout, info), &c)
+    let mut d = Driver::attach(line, c.id, c.echo, c.timeout, info);
+    d.control = u.param("control").map(std::path::PathBuf::from);
+    finish(d, &c)
 }
 
 /// Opens `sim-servo:[NAME]?id=1&drives=1,2&echo=0`: the in-process simulator.
 pub fn open_sim(u: &DeviceUrl, clock: &Clock) -> Result<Box<dyn Device>> {
-    u.expect_params(&["id", "drives", "echo", "loop", "timeout", "encoder"])?;
+    u.expect_params(&["id", "drives", "echo", "loop", "timeout", "encoder", "strict", "baud", "latency"])?;
     let c = common(u)?;
+    let strict = match u.param("strict") {
+        None | Some("0") | Some("false") | Some("off") => false,
+        Some("1") | Some("true") | Some("on") | Some("") => true,
+        Some(v) => return Err(Error::usage(format!("`strict={v}` in {} is not 0 or 1", u.text))),
+    };
+    // Line timing in-process: off unless baud= or latency= asks for it.
+    let pace = match (u.param_num::<u32>("baud")?, u.param("latency")) {
+        (None, None) => None,
+        (baud, latency) => {
+            let latency = match latency {
+                None => super::sim::Pace::REALISTIC.latency,
+                Some(l) => {
+                    Duration::from_micros(parse_duration_us(l).ok().filter(|us| *us >= 0).ok_or_else(|| {
+                        Error::usage(format!("`latency={l}` in {} is not a duration (e.g. 1ms)", u.text))
+                    })? as u64)
+                }
+            };
+            let baud = baud.unwrap_or(DEFAULT_BAUD);
+            if baud == 0 {
+                return Err(Error::usage(format!("`baud=0` in {}: the baud rate must be positive", u.text)));
+            }
+            Some(super::sim::Pace { baud, latency })
+        }
+    };
     let ids = match u.param("drives") {
         None => vec![c.id],
         Some(list) => parse_ids(list).map_err(|m| Error::usage(format!("{m} in {}", u.text)))?,
@@ -416,6 +494,8 @@ pub fn open_sim(u: &DeviceUrl, clock: &Clock) -> Result<Box<dyn Device>> {
     let make = || -> Result<Box<dyn Transport>> {
         let mut l = SimLine::new(&ids, clock.clone());
         l.echo = c.echo;
+        l.pace = pace;
+        l.set_strict(strict);
         Ok(Box::new(SimLink::new(Arc::new(Mutex::new(l)))))
     };
     let name = if u.target.is_empty() { "sim-servo".to_string() } else { format!("sim-servo:{}", u.target) };
@@ -488,7 +568,7 @@ mod tests {
         assert!(e.message.contains("likely cause: wrong id"), "{e}");
         assert!(e.hint.as_deref().unwrap().contains("(2) an object that does not exist"));
         let mut d = sim("sim-servo:?id=1");
-        let e = d.read(&[op(d.as_ref(), "2FF0.09/u16")]).unwrap_err();
+        let e = d.read(&[op(d.as_ref(), "3FFF.01/u16")]).unwrap_err();
         assert!(e.message.contains("likely cause: unknown object"), "{e}");
         let s = d.as_servo().unwrap();
         let mut bad = Frame::read(1, 0x6041, 0).to_bytes();
@@ -525,6 +605,25 @@ mod tests {
     }
 
     #[test]
+    fn in_process_line_timing_strictness_and_their_url_errors() {
+        let mut d = sim("sim-servo:?id=1&baud=38400&latency=2ms");
+        let sw = op(d.as_ref(), "statusword");
+        let t = Instant::now();
+        d.read(&[sw]).unwrap();
+        // Two frames at 38400 baud (5.2 ms) plus the 2 ms think-time.
+        assert!(t.elapsed() >= Duration::from_micros(7_208), "{:?}", t.elapsed());
+        let mut strict = sim("sim-servo:?id=1&strict=1");
+        let e = strict.as_servo().unwrap().raw_frame(Frame::write(1, 0x607A, 0, Size::B1, 5).to_bytes()).unwrap();
+        assert_eq!(Frame::from_bytes(&e).unwrap().data, frame::abort::LENGTH_MISMATCH);
+        let mut lenient = sim("sim-servo:?id=1");
+        let ok = lenient.as_servo().unwrap().raw_frame(Frame::write(1, 0x607A, 0, Size::B1, 5).to_bytes()).unwrap();
+        assert_eq!(ok[1], frame::func::WRITE_OK);
+        for bad in ["sim-servo:?strict=maybe", "sim-servo:?baud=0", "sim-servo:?latency=soon"] {
+            assert!(open_sim(&DeviceUrl::parse(bad).unwrap(), &Clock::stepped()).is_err(), "{bad}");
+        }
+    }
+
+    #[test]
     fn loop_mode_skips_the_echo() {
         let mut d = sim("sim-servo:?id=1&echo=1");
         assert_eq!(d.read(&[op(d.as_ref(), "statusword")]).unwrap(), vec![Value::Int(0x4231)]);
@@ -550,13 +649,13 @@ mod tests {
         let line = Arc::new(Mutex::new(SimLine::new(&[1], clock)));
         let stop = Arc::new(std::sync::atomic::AtomicBool::new(false));
         let (l2, s2) = (line.clone(), stop.clone());
-        let server = std::thread::spawn(move || serve::serve_line(Box::new(b), &l2, &s2));
+        let server = std::thread::spawn(move || serve::serve_line(Box::new(b), &l2, &s2, "pair"));
         let info = DeviceInfo { family: "servo", model: "test".into(), link: "pair".into(), simulated: false };
         let mut d = Driver::attach(link::private("pair", Box::new(a)), 1, false, Duration::from_secs(5), info);
         let sw = ObjRef::of(objects::named("statusword"));
         assert_eq!(d.read_obj(sw).unwrap(), 0x4231);
         d.timeout = Duration::from_millis(50);
-        let e = d.read_obj(ObjRef { index: 0x2FF0, sub: 9, dtype: crate::core::DataType::Word }).unwrap_err();
+        let e = d.read_obj(ObjRef { index: 0x3FFF, sub: 1, dtype: crate::core::DataType::Word }).unwrap_err();
         assert!(e.message.contains("unknown object"), "{e}");
         stop.store(true, std::sync::atomic::Ordering::Relaxed);
         drop(d);

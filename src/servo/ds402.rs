@@ -26,6 +26,8 @@ pub mod cw {
     pub const NEW_SETPOINT: u16 = 1 << 4;
     pub const CHANGE_IMMEDIATELY: u16 = 1 << 5;
     pub const RELATIVE: u16 = 1 << 6;
+    /// Halt: brake to a stop and hold; clearing it resumes (CiA 402).
+    pub const HALT: u16 = 1 << 8;
     /// Kinco absolute move: 0x2F, then 0x3F (bit 4 rising).
     pub const MOVE_ABS: u16 = ENABLE_OPERATION | CHANGE_IMMEDIATELY;
     /// Kinco relative move: 0x4F, then 0x5F.
@@ -138,7 +140,8 @@ pub fn bit_name(bit: u8, mode: Option<i8>) -> &'static str {
         2 => "operation enabled",
         3 => "fault",
         4 => "voltage enabled",
-        5 => "quick stop (active low)",
+        // Set means quick stop is NOT active (CiA 402: the bit is active low).
+        5 => "quick stop: off",
         6 => "switch on disabled",
         7 => "warning",
         9 => "remote",
@@ -227,6 +230,8 @@ impl Waiter<'_> {
 
 /// Poll period of waits.
 pub const POLL: Duration = Duration::from_millis(10);
+/// How long `move` waits for a full set-point buffer to take a new set-point.
+pub const BUFFER_WAIT: Duration = Duration::from_secs(30);
 /// How long a state change may take before `enable` and friends call it failed.
 pub const STEP_TIMEOUT: Duration = Duration::from_millis(500);
 
@@ -390,6 +395,24 @@ pub fn move_to(ops: &mut dyn ServoOps, w: &Waiter, relative: bool, pos: i64, p: 
     }
     let base = if relative { cw::MOVE_REL } else { cw::MOVE_ABS };
     write(ops, "controlword", base as i64)?;
+    // CiA 402 handshake: a set-point acknowledge still high with bit 4 low means the drive's
+    // set-point buffer is full (a relative move queued behind a running one); a new edge
+    // now would be ignored, so wait for the buffer to drain first.
+    let start = w.clock.now();
+    loop {
+        let sw = statusword(ops)?;
+        if sw & (1 << 12) == 0 || sw & 0x08 != 0 {
+            break;
+        }
+        if w.clock.now() - start >= BUFFER_WAIT {
+            return Err(Error::state(format!(
+                "the drive's set-point buffer stayed full for {} s (statusword 16#{sw:04X}, bit 12 high with bit 4 low)",
+                BUFFER_WAIT.as_secs()
+            ))
+            .hint("wait for the running moves (servo wait target), then move again"));
+        }
+        w.sleep(POLL)?;
+    }
     write(ops, "controlword", (base | cw::NEW_SETPOINT) as i64)?;
     let start = w.clock.now();
     loop {
@@ -445,6 +468,10 @@ pub fn wait_target(ops: &mut dyn ServoOps, w: &Waiter, timeout: Duration) -> Res
         }
         let st = State::from_statusword(sw);
         if sw & (1 << 10) != 0 && matches!(st, Some(State::OperationEnabled | State::QuickStopActive)) {
+            if sw & (1 << 13) != 0 && read(ops, "operating_mode")? == 6 {
+                return Err(Error::state(format!("homing ended in a homing error (statusword 16#{sw:04X}, bit 13)"))
+                    .hint("check the homing method (6098.00) and the switches; servo status shows the bits"));
+            }
             return Ok(sw);
         }
         if w.clock.now() - start >= timeout {
@@ -457,6 +484,17 @@ pub fn wait_target(ops: &mut dyn ServoOps, w: &Waiter, timeout: Duration) -> Res
         }
         w.sleep(POLL)?;
     }
+}
+
+/// `servo halt [off]`: sets (or clears) controlword bit 8, keeping the other bits as the
+/// drive last saw them, so a move or jog brakes to a stop and resumes on release (CiA 402).
+/// Returns the controlword written.
+pub fn halt(ops: &mut dyn ServoOps, on: bool) -> Result<u16> {
+    require_enabled(ops, if on { "halt" } else { "release halt" })?;
+    let cw = read(ops, "controlword")? as u16;
+    let new = if on { cw | cw::HALT } else { cw & !cw::HALT };
+    write(ops, "controlword", new as i64)?;
+    Ok(new)
 }
 
 /// `servo save`: 2FF0.01 = 1 (store all parameters).

@@ -37,4 +37,9 @@ pub trait ServoOps {
     fn simulator(&mut self) -> Option<Arc<Mutex<sim::SimLine>>> {
         None
     }
+    /// The control socket of a simulator served on this drive's port (`plcsh sim serve
+    /// --servo-pty LINK` opens `LINK.ctl`), for `servo sim …` on a served drive.
+    fn sim_control(&self) -> Option<std::path::PathBuf> {
+        None
+    }
 }

@@ -8,7 +8,7 @@
 //!
 //! Operand syntax: a table name (`controlword`, `target_velocity`, `position_actual`), or a
 //! raw `index.sub` (`6040.00`, hex). An object outside the table needs a type suffix that
-//! gives its size and signedness (`2FF0.09/u16`, `/i32`, `/u8`); a known object may take a
+//! gives its size and signedness (`3FFF.01/u16`, `/i32`, `/u8`); a known object may take a
 //! suffix of the same size to view it signed or unsigned. Values may be written in
 //! engineering units (`300rpm`, `100rps/s`, `2.5rev`, see [`super::units`]).
 
@@ -82,48 +82,84 @@ const fn o(
     Object { name, index, sub, dtype, access, unit, description, source }
 }
 
-/// The object dictionary: every object in both spec files, plus DS402's error code.
+/// The object dictionary: every object in both spec files, every object the studied public
+/// clients read or write, and DS402's standard objects a Kinco drive answers.
+///
+/// Source column: "seed §n" the manual digest; "notes" the public Kinco notes; "C# client" a
+/// public C# RS232 library for Kinco FD drives, whose register constants encode index, sub,
+/// bit length and read/write flags (its sizes and access are taken from there); "Python
+/// client" a public Python RS232 driver; "FD5P §10" the public FD5P manual's RS232 chapter;
+/// "DS402" the CiA 402 profile. "uncertain" marks a meaning no primary source confirms.
 #[rustfmt::skip]
 pub const OBJECTS: &[Object] = &[
-    o("controlword", 0x6040, 0, U16, RW, Unit::Bits, "DS402 controlword: 0x06 shutdown, 0x07 switch on, 0x0F enable operation, bit 4 new set-point, bit 6 relative, bit 7 fault reset", "seed §3, notes"),
-    o("statusword", 0x6041, 0, U16, RO, Unit::Bits, "DS402 statusword: state bits 0-6, bit 10 target reached, bit 12 set-point ack/homing attained, bit 15 Kinco home found", "seed §2-3, notes"),
+    o("controlword", 0x6040, 0, U16, RW, Unit::Bits, "DS402 controlword: 0x06 shutdown, 0x07 switch on, 0x0F enable operation, bit 4 new set-point, bit 5 change set immediately, bit 6 relative, bit 7 fault reset, bit 8 halt, bit 12 Kinco start on target write (0x103F)", "seed §3, notes, C# client, DS402"),
+    o("statusword", 0x6041, 0, U16, RO, Unit::Bits, "DS402 statusword: state bits 0-6, bit 10 target reached, bit 11 internal limit, bit 12 set-point ack/homing attained, bit 13 following/homing error, bit 15 Kinco home found", "seed §2-3, notes, DS402"),
     o("error_code", 0x603F, 0, U16, RO, Unit::None, "last error code (DS402; 0 = no fault)", "DS402"),
+    o("quickstop_option", 0x605A, 0, I16, RW, Unit::None, "quick stop option code: 0 coast, 1/2 stop on profile/quick-stop deceleration then switch on disabled, 5/6 the same and stay in quick stop active", "C# client, DS402"),
+    o("shutdown_option", 0x605B, 0, I16, RW, Unit::None, "shutdown option code (stored; the simulator stops at once)", "C# client, DS402"),
+    o("disable_option", 0x605C, 0, I16, RW, Unit::None, "disable operation option code (stored; the simulator stops at once)", "C# client, DS402"),
+    o("halt_option", 0x605D, 0, I16, RW, Unit::None, "halt option code: 1 stop on profile deceleration, 2 on quick-stop deceleration", "C# client, DS402"),
+    o("fault_reaction_option", 0x605E, 0, I16, RW, Unit::None, "fault reaction option code (stored; the simulator stops at once)", "C# client, DS402"),
     o("operating_mode", 0x6060, 0, I8, RW, Unit::Mode, "operating mode: 1 profile position, 3 profile velocity, -3 immediate velocity, 4 torque, 6 homing, -4 pulse train", "seed §3, notes"),
     o("mode_display", 0x6061, 0, I8, RO, Unit::Mode, "operating mode in effect (DS402; uncertain on Kinco)", "notes"),
-    o("position_actual", 0x6063, 0, I32, RO, Unit::Increments, "actual position (Kinco drivers use 6063, not 6064)", "notes"),
-    o("velocity_actual", 0x606C, 0, I32, RO, Unit::Speed, "actual velocity", "notes"),
-    o("target_torque", 0x6071, 0, I16, RW, Unit::None, "target torque (unit uncertain)", "notes"),
-    o("current_actual", 0x6078, 0, I16, RO, Unit::None, "actual current (unit uncertain)", "notes"),
+    o("position_actual", 0x6063, 0, I32, RO, Unit::Increments, "actual position (Kinco drivers use 6063, not 6064)", "notes, C# client"),
+    o("position_actual_value", 0x6064, 0, I32, RO, Unit::Increments, "actual position as DS402 numbers it (the same value as 6063 in the simulator; uncertain on Kinco)", "DS402"),
+    o("max_following_error", 0x6065, 0, U32, RW, Unit::Increments, "following error window: a larger following error for longer than 6066.00 faults the drive (0x8611)", "notes, C# client, DS402"),
+    o("following_error_timeout", 0x6066, 0, U16, RW, Unit::None, "following error time-out, ms", "DS402"),
+    o("position_window", 0x6067, 0, U32, RW, Unit::Increments, "position window for target reached", "notes, C# client"),
+    o("velocity_actual", 0x606C, 0, I32, RO, Unit::Speed, "actual velocity", "notes, C# client"),
+    o("target_torque", 0x6071, 0, I16, RW, Unit::None, "target torque (unit uncertain)", "notes, C# client"),
+    o("max_current", 0x6073, 0, U16, RW, Unit::None, "maximal current command (unit uncertain)", "C# client"),
+    o("torque_actual", 0x6077, 0, I16, RO, Unit::None, "actual torque (unit uncertain)", "DS402"),
+    o("current_actual", 0x6078, 0, I16, RO, Unit::None, "actual current (unit uncertain)", "notes, C# client"),
     o("target_position", 0x607A, 0, I32, RW, Unit::Increments, "target position for profile position mode", "seed §3, notes"),
-    o("home_offset", 0x607C, 0, I32, RW, Unit::Increments, "home offset: the position assigned at the home switch after homing", "notes"),
-    o("soft_limit_pos", 0x607D, 1, I32, RW, Unit::Increments, "software position limit + (notes; CiA 402 calls sub 1 the minimum limit - check your drive)", "notes"),
-    o("soft_limit_neg", 0x607D, 2, I32, RW, Unit::Increments, "software position limit - (notes; CiA 402 calls sub 2 the maximum limit - check your drive)", "notes"),
-    o("polarity", 0x607E, 0, U8, RW, Unit::None, "direction: 0 CCW positive, 1 CW positive", "notes"),
-    o("max_speed", 0x6080, 0, U16, RW, Unit::None, "maximum speed (unit uncertain)", "notes"),
+    o("home_offset", 0x607C, 0, I32, RW, Unit::Increments, "home offset: the position assigned at the home point after homing", "notes, C# client"),
+    o("soft_limit_pos", 0x607D, 1, I32, RW, Unit::Increments, "software position limit + (notes and C# client; CiA 402 calls sub 1 the minimum limit - check your drive); limits are off while + <= -", "notes, C# client"),
+    o("soft_limit_neg", 0x607D, 2, I32, RW, Unit::Increments, "software position limit - (notes and C# client; CiA 402 calls sub 2 the maximum limit - check your drive)", "notes, C# client"),
+    o("polarity", 0x607E, 0, U8, RW, Unit::None, "direction: 0 CCW positive, 1 CW positive", "notes, C# client"),
+    o("max_speed", 0x6080, 0, U16, RW, Unit::None, "maximum speed (unit uncertain)", "notes, C# client"),
     o("profile_velocity", 0x6081, 0, U32, RW, Unit::Speed, "profile (trapezoid) speed for position moves", "seed §3, notes"),
     o("profile_acceleration", 0x6083, 0, U32, RW, Unit::Accel, "profile (trapezoid) acceleration", "seed §3, notes"),
     o("profile_deceleration", 0x6084, 0, U32, RW, Unit::Accel, "profile (trapezoid) deceleration", "seed §3, notes"),
-    o("quickstop_deceleration", 0x6085, 0, U32, RW, Unit::Accel, "deceleration used by quick stop", "notes"),
-    o("max_following_error", 0x6065, 0, U32, RW, Unit::Increments, "maximum following error", "notes"),
-    o("position_window", 0x6067, 0, U32, RW, Unit::Increments, "position window for target reached", "notes"),
-    o("homing_method", 0x6098, 0, I8, RW, Unit::None, "homing method (examples 33, 19)", "notes"),
-    o("homing_speed_switch", 0x6099, 1, U32, RW, Unit::Speed, "homing speed while searching the switch", "notes"),
-    o("homing_speed_zero", 0x6099, 2, U32, RW, Unit::Speed, "homing speed while searching zero", "notes"),
-    o("homing_acceleration", 0x609A, 0, U32, RW, Unit::Accel, "homing acceleration", "notes"),
-    o("digital_inputs", 0x60FD, 0, U32, RO, Unit::Bits, "digital inputs: bit 0 negative limit, bit 1 positive limit, bit 2 home, bit 3 hardware lock", "notes"),
+    o("quickstop_deceleration", 0x6085, 0, U32, RW, Unit::Accel, "deceleration used by quick stop", "notes, C# client"),
+        o("homing_method", 0x6098, 0, I8, RW, Unit::None, "homing method: 17/18 negative/positive limit switch, 19-22 home switch, 33/34 index pulse, 35/37 current position (CiA 402 numbering)", "notes, C# client, DS402"),
+    o("homing_speed_switch", 0x6099, 1, U32, RW, Unit::Speed, "homing speed while searching the switch", "notes, C# client"),
+    o("homing_speed_zero", 0x6099, 2, U32, RW, Unit::Speed, "homing speed while searching zero", "notes, C# client"),
+    o("homing_offset_mode", 0x6099, 5, U8, RW, Unit::None, "Kinco homing offset mode: 0 home is position 0, 1 home is the offset (stored; uncertain)", "C# client"),
+    o("homing_acceleration", 0x609A, 0, U32, RW, Unit::Accel, "homing acceleration", "notes, C# client"),
+    o("following_error_actual", 0x60F4, 0, I32, RO, Unit::Increments, "actual following error (simulated as velocity x 2 ms)", "DS402"),
+    o("digital_inputs", 0x60FD, 0, U32, RO, Unit::Bits, "digital inputs: bit 0 negative limit, bit 1 positive limit, bit 2 home, bit 3 hardware lock", "notes, C# client"),
+    o("digital_outputs", 0x60FE, 1, U32, RW, Unit::Bits, "digital outputs (DS402 physical outputs; stored)", "DS402"),
     o("target_velocity", 0x60FF, 0, I32, RW, Unit::Speed, "target speed for velocity modes 3 and -3", "seed §3, notes"),
     o("brake_resistor", 0x60F7, 1, U16, RW, Unit::Ohm, "braking resistor resistance", "seed §1"),
     o("brake_resistor_power", 0x60F7, 2, U16, RW, Unit::Watt, "braking resistor power", "seed §1"),
     o("brake_resistor_time", 0x60F7, 3, U16, RW, Unit::Second, "braking resistor time constant", "seed §1"),
+    o("velocity_kp", 0x60F9, 1, U16, RW, Unit::None, "velocity loop proportional gain (stored)", "C# client"),
+    o("velocity_ki", 0x60F9, 2, U16, RW, Unit::None, "velocity loop integral gain (stored)", "C# client"),
+    o("position_kp", 0x60FB, 1, U16, RW, Unit::None, "position loop proportional gain (stored)", "C# client"),
     o("drive_id", 0x100B, 0, U8, RW, Unit::None, "RS232 drive id (1 default; takes effect after a restart)", "seed §1"),
-    o("gear_factor", 0x2508, 1, U16, RW, Unit::None, "electronic gear factor (pulse train mode)", "notes"),
-    o("gear_divider", 0x2508, 2, U16, RW, Unit::None, "electronic gear divider (pulse train mode)", "notes"),
-    o("pulse_mode", 0x2508, 3, U16, RW, Unit::None, "pulse input mode: 0 CW/CCW, 1 pulse+direction, 2 A/B", "notes"),
+    o("din_polarity", 0x2010, 1, U16, RW, Unit::Bits, "digital input polarity (stored)", "C# client"),
+    o("din_simulate", 0x2010, 2, U16, RW, Unit::Bits, "simulated digital inputs (stored)", "C# client"),
+    o("din1_function", 0x2010, 3, U16, RW, Unit::None, "DIN1 function (stored; 0x10 positive limit, 0x20 negative limit per a public C++ client - uncertain)", "C# client"),
+    o("din2_function", 0x2010, 4, U16, RW, Unit::None, "DIN2 function (stored)", "C# client"),
+    o("din3_function", 0x2010, 5, U16, RW, Unit::None, "DIN3 function (stored)", "C# client"),
+    o("din4_function", 0x2010, 6, U16, RW, Unit::None, "DIN4 function (stored)", "C# client"),
+    o("din_real", 0x2010, 0x0A, U16, RO, Unit::Bits, "digital inputs as wired (the simulator mirrors 60FD.00 bits 0-2)", "C# client"),
+    o("dout1_function", 0x2010, 0x0F, U16, RW, Unit::None, "DOUT1 function (stored)", "C# client"),
+    o("dout2_function", 0x2010, 0x10, U16, RW, Unit::None, "DOUT2 function (stored)", "C# client"),
+    o("dout_real", 0x2010, 0x14, U16, RO, Unit::Bits, "digital outputs as driven", "C# client"),
+    o("gear_factor", 0x2508, 1, U16, RW, Unit::None, "electronic gear factor (pulse train mode -4)", "notes, C# client"),
+    o("gear_divider", 0x2508, 2, U16, RW, Unit::None, "electronic gear divider (pulse train mode -4; 0 is refused)", "notes, C# client"),
+    o("pulse_mode", 0x2508, 3, U16, RW, Unit::None, "pulse input mode: 0 CW/CCW, 1 pulse+direction, 2 A/B (x4, uncertain)", "notes, C# client"),
+    o("pulse_filter", 0x2508, 6, U16, RW, Unit::None, "pulse input filter (stored)", "C# client"),
     o("pulse_frequency_control", 0x2508, 8, U16, RW, Unit::None, "pulse frequency control", "seed §1"),
-    o("error_state", 0x2601, 0, U16, RO, Unit::Bits, "Kinco error state (bit meanings uncertain)", "notes"),
+    o("master_speed", 0x2508, 0x0C, U16, RO, Unit::None, "pulse input frequency (unit uncertain; the simulator: pulses/ms)", "C# client"),
+    o("error_state", 0x2601, 0, U16, RO, Unit::Bits, "Kinco error state (bit meanings uncertain; the simulator sets bit 0 while faulted)", "notes, C# client"),
     o("baud_code", 0x2FE0, 0, U16, RW, Unit::None, "RS232 baud code: 1080 = 9600, 540 = 19200, 270 = 38400 (default), 90 = 115200; after a restart", "seed §1, notes"),
-    o("store_parameters", 0x2FF0, 1, U8, RW, Unit::None, "write 1 to store all parameters", "notes"),
+    o("store_parameters", 0x2FF0, 1, U8, RW, Unit::None, "write 1 to store all parameters", "notes, C# client"),
+    o("store_motor_data", 0x2FF0, 3, U8, RW, Unit::None, "write 1 to store motor data", "C# client"),
     o("display_select", 0x2FF0, 4, U8, RW, Unit::None, "7-segment display select", "seed §1"),
+    o("target_speed_rpm", 0x2FF0, 9, I16, RW, Unit::None, "target speed in rpm (the FD5P manual's RS232 example writes 600 here with a 4-byte write and reads it back with a 2-byte reply, 4B; the simulator stores it)", "FD5P §10"),
     o("user_password", 0x2FFD, 0, U16, RW, Unit::None, "user password", "seed §1"),
     o("encoder_resolution", 0x6410, 3, U32, RW, Unit::Increments, "encoder (feedback) resolution used by the DEC formulas, increments per revolution", "notes"),
 ];
@@ -171,7 +207,7 @@ impl ObjRef {
     pub fn address(&self) -> String {
         format!("{:04X}.{:02X}", self.index, self.sub)
     }
-    /// `controlword`, or `2FF0.09/u16` for objects outside the table (or viewed as
+    /// `controlword`, or `3FFF.01/u16` for objects outside the table (or viewed as
     /// another type).
     pub fn name(&self) -> String {
         match self.object() {
@@ -411,7 +447,8 @@ mod tests {
     fn the_table_is_consistent() {
         for (i, a) in OBJECTS.iter().enumerate() {
             assert!(Size::from_bits(a.dtype.bits()).is_some(), "{}", a.name);
-            assert!(a.name.chars().all(|c| c.is_ascii_lowercase() || c == '_'), "{}", a.name);
+            assert!(a.name.chars().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_'), "{}", a.name);
+            assert!(a.name.starts_with(|c: char| c.is_ascii_lowercase()), "{}", a.name);
             for b in &OBJECTS[i + 1..] {
                 assert_ne!(a.name, b.name);
                 assert!((a.index, a.sub) != (b.index, b.sub), "{} and {} share an address", a.name, b.name);
@@ -424,6 +461,11 @@ mod tests {
             "6099.01", "6099.02", "609A.00", "6065.00", "6067.00", "607D.01", "607D.02", "60FD.00", "2508.01",
             "2508.02", "2508.03", "2601.00", "2FF0.01", "6410.03", "100B.00", "2FE0.00", "2FFD.00", "60F7.01",
             "60F7.02", "60F7.03", "2FF0.04", "2508.08",
+            // Objects the public clients use (C# client, Python client, FD5P manual example).
+            "605A.00", "605B.00", "605C.00", "605D.00", "605E.00", "6064.00", "6073.00", "6099.05", "60F9.01",
+            "60F9.02", "60FB.01", "2010.01", "2010.02", "2010.03", "2010.04", "2010.05", "2010.06", "2010.0A",
+            "2010.0F", "2010.10", "2010.14", "2508.06", "2508.0C", "2FF0.03", "2FF0.09", "6077.00", "60F4.00",
+            "6066.00",
         ] {
             let r = parse(addr).unwrap_or_else(|e| panic!("{addr}: {e}"));
             assert!(r.object().is_some(), "{addr} missing from the table");
@@ -436,13 +478,13 @@ mod tests {
         assert_eq!(parse("6040.00").unwrap(), parse("controlword").unwrap());
         assert_eq!(parse("position_actual").unwrap().index, 0x6063);
         assert_eq!(parse("60ff.0").unwrap().name(), "target_velocity");
-        assert_eq!(parse("2FF0.09/u16").unwrap(), ObjRef { index: 0x2FF0, sub: 9, dtype: DataType::Word });
-        assert_eq!(parse("2FF0.09/u16").unwrap().name(), "2FF0.09/u16");
+        assert_eq!(parse("3FFF.01/u16").unwrap(), ObjRef { index: 0x3FFF, sub: 1, dtype: DataType::Word });
+        assert_eq!(parse("3FFF.01/u16").unwrap().name(), "3FFF.01/u16");
         assert_eq!(parse("statusword/i16").unwrap().name(), "6041.00/i16");
-        let e = parse("2FF0.09").unwrap_err();
-        assert!(e.hint.clone().unwrap().contains("2FF0.09/u16"), "{e}");
+        let e = parse("3FFF.01").unwrap_err();
+        assert!(e.hint.clone().unwrap().contains("3FFF.01/u16"), "{e}");
         assert!(parse("controlword/u32").is_err(), "size differs from the table");
-        assert!(parse("2FF0.09/real").is_err());
+        assert!(parse("3FFF.01/real").is_err());
         let e = parse("velocity").unwrap_err();
         assert!(e.hint.clone().unwrap().contains("target_velocity"), "{e:?}");
         assert!(parse("controlwrd").unwrap_err().hint.clone().unwrap().contains("controlword"));

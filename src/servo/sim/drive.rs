@@ -1,27 +1,44 @@
 //! One simulated drive: its object dictionary (the same table the driver uses), the DS402
 //! state machine, the operating modes 1 (profile position), 3 (profile velocity), -3
-//! (immediate velocity) and 6 (homing to a simulated switch), quick stop, and an
-//! injectable fault.
+//! (immediate velocity), 6 (homing, methods by number: [`super::homing`]), -4 (pulse train
+//! through the electronic gear) and 4 (torque: accepted and stored; no load model, so the
+//! motor does not move), halt, quick stop by option code, limit switches, software limits,
+//! the following-error window and injectable faults.
 //!
-//! It answers requests exactly as `../shared/spec/kinco-servo.md` §2 says a drive does:
-//! nothing at all for an object it does not have (or a function code it does not know),
-//! `0x80` with a CiA-301 abort code for a write to a read-only object or of the wrong
-//! length (public notes), `0x60` echoing the data for an accepted write, `0x4F/0x4B/0x43`
-//! for reads. Like the FD5P the notes quote, 16-bit values are sent sign-extended (bit 15
-//! set → `FF FF` in D2..D3), so drivers must mask to the object's size.
+//! It answers requests as `../shared/spec/kinco-servo.md` §2 says a drive does: nothing at
+//! all for an object it does not have or a function code it does not know, `0x80` with a
+//! CiA-301 abort code for a write to a read-only object (public notes), `0x60` echoing the
+//! data for an accepted write, `0x4F/0x4B/0x43` for reads. Like the FD5P the notes quote,
+//! 16-bit values are sent sign-extended (bit 15 set → `FF FF` in D2..D3).
+//!
+//! **Write sizes.** Field clients choose the write code from the value's magnitude, not the
+//! object (a public Python client sends `0x2F` for 0…255 and `0x2B` for -32768…32767 on any
+//! object, e.g. mode -3 as `2B … FD FF`), and this works on real drives: the public FD5P
+//! manual's own RS232 example (§10) writes 2FF0.09 with `0x23` and reads it back as a 2-byte
+//! `4B` reply. The seed never says a drive checks the length. So by default a write whose size differs
+//! from the object's is accepted: a shorter one is widened to the object (a 1-byte write
+//! as 0…255, the Python client's rule; a 2-byte write sign-extended into a signed object),
+//! a longer one is read at its size (signed for a signed object) and must fit the object,
+//! else abort 0x06070012 "length too high". What a drive does with a short write is not
+//! documented anywhere we found — uncertain. `strict` restores refusal with 0x06070010
+//! (public notes' abort table) for users who want to catch masters that send loose sizes.
 //!
 //! State at power-up is "ready to switch on" with bits 9 (remote) and 14 set: statusword
-//! 0x4231, the value in the manual's worked read example. Time is the virtual clock's, in
-//! seconds; motion is [`super::motion`]'s analytic profiles.
+//! 0x4231, the manual's worked read example. Time is the virtual clock's, in seconds; motion
+//! is [`super::motion`]'s analytic profiles, and everything that happens *during* a motion
+//! (a limit switch reached, a buffered set-point taking over, homing done, a following error
+//! timing out) is found by solving the profile for the moment it happens ([`Drive::advance`]).
 
+use super::homing::{self, Onto, Switches};
 use super::motion::{accel_from_dec, speed_from_dec, speed_to_dec, Motion};
-use crate::core::DataType;
+use crate::core::signal::PulseTrain;
+use crate::core::{DataType, Value};
 use crate::servo::ds402::{self, State};
 use crate::servo::frame::{abort, func, Frame, Size};
 use crate::servo::objects::{self, Access, Object};
 use std::collections::HashMap;
 
-/// What the drive is doing, beyond the profile itself.
+/// What the drive is doing.
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Task {
     /// Holding position (nothing commanded).
@@ -30,10 +47,16 @@ enum Task {
     Move,
     /// Following the target velocity (modes 3, -3).
     Velocity,
-    /// Homing to the switch (mode 6).
+    /// Homing (mode 6).
     Homing,
-    /// Quick stop deceleration.
-    QuickStop,
+    /// Following the pulse input through the gear (mode -4).
+    Pulse,
+    /// Quick stop deceleration; `disable` ends it in "switch on disabled" (605A 0-4).
+    QuickStop { disable: bool },
+    /// Braking at a limit (switch or software limit); the drive holds there.
+    LimitStop,
+    /// Braking for halt (bit 8) or holding halted; resumes `resume` on release.
+    Halt,
 }
 
 /// Default values at power-up, by object name (everything else starts at 0).
@@ -49,15 +72,42 @@ const DEFAULTS: &[(&str, i64)] = &[
     ("homing_method", 19),
     ("position_window", 10),
     ("max_following_error", 10_000),
+    ("following_error_timeout", 10),
+    // Quick stop ends in "quick stop active" (6; Kinco's factory value is uncertain,
+    // CiA 402's default is 2). Halt brakes on the profile deceleration (1).
+    ("quickstop_option", 6),
+    ("halt_option", 1),
     ("max_speed", 3000),
     ("gear_factor", 1),
     ("gear_divider", 1),
+    ("pulse_mode", 1), // pulse + direction (factory value uncertain)
     ("baud_code", 270),
     ("encoder_resolution", 10_000),
 ];
 
 /// Fault code injected when none is given (DS402 0x5000 "device hardware").
 pub const DEFAULT_FAULT: u16 = 0x5000;
+/// DS402 error code of a following error.
+pub const FOLLOWING_ERROR_FAULT: u16 = 0x8611;
+/// The simulated position loop lags the demand by this much: following error = v × LAG.
+pub const LAG: f64 = 0.002;
+/// "length of service parameter too high" (public notes' abort table).
+const LENGTH_TOO_HIGH: u32 = 0x0607_0012;
+
+/// Something that happens during a motion, at a solved time.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Event {
+    /// The move ended and a buffered set-point takes over.
+    NextSetpoint,
+    /// Homing reached its home point.
+    Homed,
+    /// A quick stop with option 0-4 came to rest: switch on disabled.
+    QuickStopDone,
+    /// A limit switch or software limit was reached moving into it.
+    Limit,
+    /// The following error stayed outside its window for the time-out.
+    FollowingError,
+}
 
 /// A simulated Kinco drive.
 #[derive(Clone, Debug)]
@@ -67,15 +117,30 @@ pub struct Drive {
     state: State,
     motion: Motion,
     task: Task,
-    /// Position commanded by the last move (relative moves add to it).
+    /// Position commanded by the last set-point (relative set-points add to it).
     commanded: f64,
+    /// A set-point waiting for the current move to end (bit 5 low: set of set-points).
+    pending: Option<f64>,
     last_cw: u16,
     setpoint_ack: bool,
     fault: Option<u16>,
     homed: bool,
     homing_error: bool,
-    /// Where the simulated home switch is, in the current position coordinates.
-    pub home_switch: f64,
+    following_error: bool,
+    /// Bit 11: a limit stopped the drive or clamped a target.
+    limit_active: bool,
+    /// The homing plan's limit switch (reaching it is the goal).
+    homing_onto: Onto,
+    /// What halt interrupted, resumed when bit 8 drops.
+    resume: Option<Task>,
+    /// The last time events were brought up to.
+    seen: f64,
+    /// Limit switches and the home switch.
+    pub switches: Switches,
+    /// The pulse input (mode -4), described analytically.
+    pub pulses: PulseTrain,
+    /// Refuse writes whose size code differs from the object's (0x06070010).
+    pub strict: bool,
     /// How many times parameters were stored (2FF0.01 = 1).
     pub saves: u32,
 }
@@ -88,7 +153,7 @@ impl Drive {
         }
         for (name, v) in DEFAULTS {
             let o = objects::named(name);
-            values.insert((o.index, o.sub), o.dtype.encode(&crate::core::Value::Int(*v)));
+            values.insert((o.index, o.sub), o.dtype.encode(&Value::Int(*v)));
         }
         values.insert((0x100B, 0), id as u32);
         Drive {
@@ -98,12 +163,20 @@ impl Drive {
             motion: Motion::still(t, 0.0),
             task: Task::Idle,
             commanded: 0.0,
+            pending: None,
             last_cw: 0,
             setpoint_ack: false,
             fault: None,
             homed: false,
             homing_error: false,
-            home_switch: 5_000.0,
+            following_error: false,
+            limit_active: false,
+            homing_onto: Onto::Nothing,
+            resume: None,
+            seen: t,
+            switches: Switches::default(),
+            pulses: PulseTrain::new(),
+            strict: false,
             saves: 0,
         }
     }
@@ -126,16 +199,125 @@ impl Drive {
         self.motion.at(t)
     }
 
-    /// Brings lazy transitions up to time `t`: homing completion and the position it defines.
+    fn accel(&self, name: &str) -> f64 {
+        accel_from_dec(self.stored(name) as f64)
+    }
+
+    fn moving(&self) -> bool {
+        matches!(self.task, Task::Move | Task::Velocity | Task::Homing | Task::Pulse)
+    }
+
+    /// Software limits (607D.02 ≤ position ≤ 607D.01), when set (+ above -).
+    fn soft_limits(&self) -> Option<(f64, f64)> {
+        let (lo, hi) = (self.stored("soft_limit_neg"), self.stored("soft_limit_pos"));
+        (hi > lo).then_some((lo as f64, hi as f64))
+    }
+
+    /// The next thing that happens in the current motion after `self.seen`, if any.
+    fn next_event(&self) -> Option<(f64, Event)> {
+        let from = self.seen;
+        let end = self.motion.end_time();
+        let mut best: Option<(f64, Event)> = None;
+        let mut consider = |t: Option<f64>, e: Event| {
+            if let Some(t) = t.filter(|t| t.is_finite()) {
+                if best.is_none_or(|(b, _)| t < b) {
+                    best = Some((t.max(from), e));
+                }
+            }
+        };
+        match self.task {
+            Task::Move if self.pending.is_some() => consider(Some(end), Event::NextSetpoint),
+            Task::Homing => consider(Some(end), Event::Homed),
+            Task::QuickStop { disable: true } => consider(Some(end), Event::QuickStopDone),
+            _ => {}
+        }
+        if self.moving() {
+            let m = &self.motion;
+            // Reaching a limit while moving into it (moving out of one is allowed).
+            let into = |x: f64, dir: f64| {
+                m.first_reach(x, from).filter(|&t| {
+                    let v = m.at(t + 1e-9).1;
+                    v * dir > 0.0
+                })
+            };
+            if let Some(l) = self.switches.neg_limit.filter(|_| self.homing_onto != Onto::NegLimit) {
+                consider(into(l, -1.0), Event::Limit);
+            }
+            if let Some(l) = self.switches.pos_limit.filter(|_| self.homing_onto != Onto::PosLimit) {
+                consider(into(l, 1.0), Event::Limit);
+            }
+            if let (Some((lo, hi)), Task::Velocity | Task::Pulse) = (self.soft_limits(), self.task) {
+                consider(into(lo, -1.0), Event::Limit);
+                consider(into(hi, 1.0), Event::Limit);
+            }
+            let window = self.stored("max_following_error") as f64;
+            if window > 0.0 {
+                let timeout = self.stored("following_error_timeout") as f64 / 1000.0;
+                let limit = window / LAG;
+                // From the plan's start: the time-out runs from when the error first exceeded.
+                if let Some(tc) = m.first_speed(limit, f64::NEG_INFINITY) {
+                    let te = tc + timeout;
+                    if m.at(te).1.abs() >= limit {
+                        consider(Some(te), Event::FollowingError);
+                    }
+                }
+            }
+        }
+        best
+    }
+
+    /// Brings the drive up to time `t`: every event of the current motion up to then is
+    /// handled at the moment it happens (solved from the profile, never stepped).
     pub fn advance(&mut self, t: f64) {
-        if self.task == Task::Homing && self.motion.settled(t) {
-            let end = self.motion.end_time();
-            let offset = self.stored("home_offset") as f64;
-            self.motion = Motion::still(end, offset);
-            self.commanded = offset;
-            self.home_switch = offset;
-            self.homed = true;
-            self.task = Task::Idle;
+        for _ in 0..64 {
+            match self.next_event() {
+                Some((te, e)) if te <= t => {
+                    self.seen = te;
+                    self.handle(e, te);
+                }
+                _ => break,
+            }
+        }
+        self.seen = self.seen.max(t);
+    }
+
+    fn handle(&mut self, e: Event, t: f64) {
+        match e {
+            Event::NextSetpoint => {
+                let goal = self.pending.take().expect("pending set-point");
+                self.plan_move(goal, t);
+                if self.last_cw & (1 << 4) == 0 {
+                    self.setpoint_ack = false;
+                }
+            }
+            Event::Homed => {
+                let (p, _) = self.motion.at(t);
+                let offset = self.stored("home_offset") as f64;
+                self.switches.shift(offset - p);
+                self.motion = Motion::still(t, offset);
+                self.commanded = offset;
+                self.homed = true;
+                self.homing_onto = Onto::Nothing;
+                self.task = Task::Idle;
+            }
+            Event::QuickStopDone => {
+                self.state = State::SwitchOnDisabled;
+                self.stop_dead(t);
+            }
+            Event::Limit => {
+                self.limit_active = true;
+                if self.task == Task::Homing {
+                    self.homing_error = true;
+                    self.homing_onto = Onto::Nothing;
+                }
+                self.brake("quickstop_deceleration", t);
+                self.task = Task::LimitStop;
+                self.pending = None;
+            }
+            Event::FollowingError => {
+                self.following_error = true;
+                self.fault_now(FOLLOWING_ERROR_FAULT, t);
+            }
         }
     }
 
@@ -143,9 +325,34 @@ impl Drive {
     /// reaction, which the simulator completes at once).
     pub fn inject_fault(&mut self, code: u16, t: f64) {
         self.advance(t);
-        self.halt(t);
+        self.fault_now(code, t);
+    }
+
+    fn fault_now(&mut self, code: u16, t: f64) {
+        self.stop_dead(t);
         self.fault = Some(code);
         self.state = State::Fault;
+    }
+
+    /// Adds pulses at the pulse input from `t` on (queued after pulses still arriving).
+    pub fn add_pulses(&mut self, t: f64, freq: f64, count: u64, dir: i8) -> Result<(f64, f64), String> {
+        self.advance(t);
+        self.pulses.forget_before(t);
+        let s = self.pulses.push(t, freq, count, dir)?;
+        if self.state == State::OperationEnabled && self.mode() == -4 && self.task != Task::Halt {
+            self.start_pulse(t);
+        }
+        Ok((s.start, s.end()))
+    }
+
+    /// Connects a whole pulse signal to the pulse input (wiring: e.g. a K2 PTO output's
+    /// train), replacing what was there, and follows it from `t` when in mode -4.
+    pub fn connect_pulses(&mut self, train: PulseTrain, t: f64) {
+        self.advance(t);
+        self.pulses = train;
+        if self.state == State::OperationEnabled && self.mode() == -4 && self.task != Task::Halt {
+            self.start_pulse(t);
+        }
     }
 
     /// The statusword at time `t` (DS402 bits, Kinco bits 14-15; public notes).
@@ -161,14 +368,16 @@ impl Drive {
         let active = matches!(self.state, State::OperationEnabled | State::QuickStopActive);
         let settled = self.motion.settled(t);
         let reached = match (self.task, self.mode()) {
-            (Task::QuickStop, _) => settled,
             (Task::Homing, _) => false,
-            (Task::Velocity, _) => settled,
-            (_, 6) => self.homed && settled,
+            (Task::Move, _) => settled && self.pending.is_none(),
+            (Task::Idle, 6) => self.homed || self.homing_error,
             _ => settled,
         };
         if active && reached {
             s |= 1 << 10;
+        }
+        if self.limit_active {
+            s |= 1 << 11;
         }
         match self.mode() {
             1 if self.setpoint_ack => s |= 1 << 12,
@@ -176,7 +385,7 @@ impl Drive {
             6 if self.homed && self.task != Task::Homing => s |= 1 << 12,
             _ => {}
         }
-        if self.homing_error {
+        if self.homing_error || self.following_error {
             s |= 1 << 13;
         }
         s
@@ -185,18 +394,46 @@ impl Drive {
     /// The raw value of an object at time `t`.
     fn read(&mut self, o: &Object, t: f64) -> u32 {
         let (p, v) = self.motion.at(t);
-        let int = |dt: DataType, i: i64| dt.encode(&crate::core::Value::Int(i));
+        let int = |dt: DataType, i: i64| dt.encode(&Value::Int(i));
+        let inputs = self.switches.inputs(p);
         match o.name {
             "statusword" => self.statusword(t) as u32,
-            "position_actual" => int(o.dtype, p.round() as i64),
+            "position_actual" | "position_actual_value" => int(o.dtype, p.round() as i64),
             "velocity_actual" => int(o.dtype, speed_to_dec(v)),
+            "following_error_actual" => int(o.dtype, (v * LAG).round() as i64),
             "mode_display" => self.values[&(0x6060, 0)],
             "error_code" => self.fault.unwrap_or(0) as u32,
             "error_state" => u32::from(self.fault.is_some()),
-            "digital_inputs" => u32::from(p >= self.home_switch) << 2,
+            "digital_inputs" | "din_real" => inputs,
             "controlword" => self.last_cw as u32,
+            "torque_actual" if self.state == State::OperationEnabled && self.mode() == 4 => self.values[&(0x6071, 0)],
+            "torque_actual" => 0,
+            "master_speed" => int(o.dtype, (self.pulses.rate_at(t) / 1000.0).round() as i64),
             _ => self.values[&(o.index, o.sub)],
         }
+    }
+
+    /// A write's data at the object's width, under the size rule (see the module doc):
+    /// `Err` is the abort code.
+    fn widen(&self, o: &Object, size: Size, data: u32) -> Result<u32, u32> {
+        let raw = data & size.mask();
+        if size == o.size() {
+            return Ok(raw);
+        }
+        if self.strict {
+            return Err(abort::LENGTH_MISMATCH);
+        }
+        let signed = o.dtype.is_signed() && size != Size::B1;
+        let v = match (signed, size) {
+            (true, Size::B2) => raw as u16 as i16 as i64,
+            (true, _) => raw as i32 as i64,
+            (false, _) => raw as i64,
+        };
+        let (lo, hi) = o.dtype.int_range();
+        if v < lo || v > hi {
+            return Err(LENGTH_TOO_HIGH);
+        }
+        Ok(o.dtype.encode(&Value::Int(v)))
     }
 
     /// Answers one request addressed to this drive; `None` means the drive stays silent.
@@ -217,10 +454,10 @@ impl Drive {
         if o.access == Access::ReadOnly {
             return reply(func::ERROR, abort::READ_ONLY);
         }
-        if size != o.size() {
-            return reply(func::ERROR, abort::LENGTH_MISMATCH);
-        }
-        let raw = f.data & size.mask();
+        let raw = match self.widen(o, size, f.data) {
+            Ok(raw) => raw,
+            Err(code) => return reply(func::ERROR, code),
+        };
         match self.write(o, raw, t) {
             Ok(()) => reply(func::WRITE_OK, f.data),
             Err(code) => reply(func::ERROR, code),
@@ -238,32 +475,70 @@ impl Drive {
                 if ![1, 3, -3, 4, 6, -4].contains(&value) {
                     return Err(abort::VALUE_RANGE);
                 }
-                if value != self.mode() as i64 && self.task != Task::Idle {
-                    self.stop_with("profile_deceleration", t);
+                if value != self.mode() as i64 && self.moving() {
+                    self.brake("profile_deceleration", t);
+                    self.task = Task::QuickStop { disable: false };
                 }
             }
+            "quickstop_option" if !(0..=8).contains(&value) => return Err(abort::VALUE_RANGE),
+            "halt_option" if !(1..=4).contains(&value) => return Err(abort::VALUE_RANGE),
+            "gear_divider" if value == 0 => return Err(abort::VALUE_RANGE),
+            "pulse_mode" if !matches!(value, 0..=2 | 10..=12) => return Err(abort::VALUE_RANGE),
             "store_parameters" if value == 1 => self.saves += 1,
             _ => {}
         }
         self.values.insert((o.index, o.sub), raw);
-        if o.name == "target_velocity" && self.state == State::OperationEnabled && matches!(self.mode(), 3 | -3) {
-            self.start_velocity(t);
+        let enabled = self.state == State::OperationEnabled && self.task != Task::Halt;
+        match (o.name, self.mode()) {
+            ("target_velocity", 3 | -3) if enabled => self.start_velocity(t),
+            // Kinco's immediate start (public C# client: controlword 0x103F "absolute
+            // positioning with target position"): with controlword bit 12 set, writing the
+            // target position alone starts the move (relative with bit 6: 0x105F).
+            ("target_position", 1) if self.state == State::OperationEnabled && self.last_cw & (1 << 12) != 0 => {
+                self.setpoint(t, self.last_cw & (1 << 6) != 0, true)
+            }
+            ("operating_mode", -4) if enabled => self.start_pulse(t),
+            ("operating_mode", 3 | -3) if enabled => self.start_velocity(t),
+            _ => {}
         }
         Ok(())
     }
 
     /// Stops dead (drive disabled or faulted): the motor holds where it is.
-    fn halt(&mut self, t: f64) {
+    fn stop_dead(&mut self, t: f64) {
         let (p, _) = self.motion.at(t);
         self.motion = Motion::still(t, p);
         self.commanded = p;
         self.task = Task::Idle;
+        self.pending = None;
+        self.resume = None;
+        self.homing_onto = Onto::Nothing;
     }
 
-    fn stop_with(&mut self, decel: &str, t: f64) {
+    /// Decelerates to rest with the deceleration object `decel` (the task is the caller's).
+    fn brake(&mut self, decel: &str, t: f64) {
         let (p, v) = self.motion.at(t);
-        self.motion = Motion::stop(t, p, v, accel_from_dec(self.stored(decel) as f64));
-        self.task = Task::QuickStop;
+        self.motion = Motion::stop(t, p, v, self.accel(decel));
+    }
+
+    /// Quick stop from "operation enabled", as 605A.00 says (CiA 402 option codes).
+    fn quick_stop(&mut self, t: f64) {
+        let option = self.stored("quickstop_option");
+        self.pending = None;
+        self.resume = None;
+        match option {
+            // 0: disable the drive function — the power stage is off at once (the motor
+            // would coast; the simulator has no load model, so it stops where it is).
+            0 => {
+                self.state = State::SwitchOnDisabled;
+                self.stop_dead(t);
+                return;
+            }
+            1 | 5 => self.brake("profile_deceleration", t),
+            // 2, 6; 3/4/7/8 (current/voltage limit) are braked on the quick-stop ramp too.
+            _ => self.brake("quickstop_deceleration", t),
+        }
+        self.task = Task::QuickStop { disable: option <= 4 };
     }
 
     fn controlword(&mut self, cw: u16, t: f64) {
@@ -273,39 +548,103 @@ impl Drive {
         self.state = ds402::next_state(self.state, prev, cw);
         if self.state == State::SwitchOnDisabled && was == State::Fault {
             self.fault = None;
+            self.following_error = false;
         }
         if was == State::OperationEnabled && self.state == State::QuickStopActive {
-            self.stop_with("quickstop_deceleration", t);
+            self.quick_stop(t);
         } else if self.state != State::OperationEnabled && self.state != State::QuickStopActive {
-            self.halt(t);
+            self.stop_dead(t);
         }
         if self.state != State::OperationEnabled {
             self.setpoint_ack = false;
             return;
         }
         let rising = |bit: u16| cw & bit != 0 && prev & bit == 0;
-        if was != State::OperationEnabled && matches!(self.mode(), 3 | -3) {
-            self.start_velocity(t);
+        let halt = cw & (1 << 8) != 0;
+        if was != State::OperationEnabled {
+            if matches!(self.task, Task::QuickStop { .. }) {
+                self.task = Task::Idle;
+            }
+            if !halt {
+                match self.mode() {
+                    3 | -3 => self.start_velocity(t),
+                    -4 => self.start_pulse(t),
+                    _ => {}
+                }
+            }
+        }
+        // Halt (bit 8) in position, velocity, homing and pulse modes: brake, hold, resume.
+        if halt && self.task != Task::Halt && self.mode() != 4 {
+            self.resume = self.moving().then_some(self.task);
+            let decel = if self.stored("halt_option") == 2 { "quickstop_deceleration" } else { "profile_deceleration" };
+            self.brake(decel, t);
+            self.task = Task::Halt;
+        } else if !halt && self.task == Task::Halt {
+            self.task = Task::Idle;
+            match self.resume.take() {
+                Some(Task::Move) => self.plan_move(self.commanded, t),
+                Some(Task::Velocity) => self.start_velocity(t),
+                Some(Task::Homing) => self.start_homing(t),
+                Some(Task::Pulse) => self.start_pulse(t),
+                _ => {}
+            }
         }
         match self.mode() {
             1 => {
                 if rising(1 << 4) {
-                    self.start_move(cw & (1 << 6) != 0, t);
-                    self.setpoint_ack = true;
-                } else if cw & (1 << 4) == 0 {
+                    self.setpoint(t, cw & (1 << 6) != 0, cw & (1 << 5) != 0);
+                } else if cw & (1 << 4) == 0 && self.pending.is_none() {
                     self.setpoint_ack = false;
                 }
             }
-            6 if rising(1 << 4) => self.start_homing(t),
+            6 if rising(1 << 4) && !halt => self.start_homing(t),
             _ => {}
         }
     }
 
-    fn start_move(&mut self, relative: bool, t: f64) {
-        let (p, v) = self.motion.at(t);
+    /// A new set-point (bit 4 rising, or a target write under 0x103F): with bit 5 high (or
+    /// no move running) it applies at once; with bit 5 low during a move it waits in the
+    /// one-deep buffer until the move ends (CiA 402 "set of set-points"). A full buffer
+    /// does not acknowledge; the master waits for bit 12 to drop first.
+    fn setpoint(&mut self, t: f64, relative: bool, immediate: bool) {
         let target = self.stored("target_position") as f64;
-        let base = if self.task == Task::Move { self.commanded } else { p.round() };
-        let goal = if relative { base + target } else { target };
+        let goal_from = |base: f64| if relative { base + target } else { target };
+        self.limit_active = false;
+        if self.task == Task::Halt {
+            self.commanded = self.clamp(goal_from(self.commanded));
+            self.resume = Some(Task::Move);
+            self.setpoint_ack = true;
+            return;
+        }
+        let running = self.task == Task::Move && !self.motion.settled(t);
+        if running && !immediate {
+            if self.pending.is_none() {
+                let base = self.commanded;
+                self.pending = Some(self.clamp(goal_from(base)));
+                self.setpoint_ack = true;
+            }
+            return;
+        }
+        let base = if self.task == Task::Move { self.commanded } else { self.motion.at(t).0.round() };
+        let goal = self.clamp(goal_from(base));
+        self.pending = None;
+        self.plan_move(goal, t);
+        self.setpoint_ack = true;
+    }
+
+    /// Limits a target to the software limits (bit 11 when it had to).
+    fn clamp(&mut self, goal: f64) -> f64 {
+        match self.soft_limits() {
+            Some((lo, hi)) if goal < lo || goal > hi => {
+                self.limit_active = true;
+                goal.clamp(lo, hi)
+            }
+            _ => goal,
+        }
+    }
+
+    fn plan_move(&mut self, goal: f64, t: f64) {
+        let (p, v) = self.motion.at(t);
         self.commanded = goal;
         self.motion = Motion::position(
             t,
@@ -313,27 +652,21 @@ impl Drive {
             v,
             goal,
             speed_from_dec(self.stored("profile_velocity") as f64),
-            accel_from_dec(self.stored("profile_acceleration") as f64),
-            accel_from_dec(self.stored("profile_deceleration") as f64),
+            self.accel("profile_acceleration"),
+            self.accel("profile_deceleration"),
         );
         self.task = Task::Move;
     }
 
     fn start_velocity(&mut self, t: f64) {
         let (p, v) = self.motion.at(t);
+        self.limit_active = false;
         let target = speed_from_dec(self.stored("target_velocity") as f64);
         self.motion = if self.mode() == -3 {
             // Immediate velocity: no ramp.
             Motion::velocity(t, p, target, target, 1.0, 1.0)
         } else {
-            Motion::velocity(
-                t,
-                p,
-                v,
-                target,
-                accel_from_dec(self.stored("profile_acceleration") as f64),
-                accel_from_dec(self.stored("profile_deceleration") as f64),
-            )
+            Motion::velocity(t, p, v, target, self.accel("profile_acceleration"), self.accel("profile_deceleration"))
         };
         self.task = Task::Velocity;
     }
@@ -342,15 +675,39 @@ impl Drive {
         let (p, v) = self.motion.at(t);
         self.homed = false;
         self.homing_error = false;
-        self.motion = Motion::position(
-            t,
-            p,
-            v,
-            self.home_switch,
-            speed_from_dec(self.stored("homing_speed_switch") as f64),
-            accel_from_dec(self.stored("homing_acceleration") as f64),
-            accel_from_dec(self.stored("homing_acceleration") as f64),
-        );
-        self.task = Task::Homing;
+        self.limit_active = false;
+        let method = self.stored("homing_method") as i8;
+        let r = self.stored("encoder_resolution") as f64;
+        match homing::plan(method, p, &self.switches, r) {
+            Ok(plan) => {
+                let acc = self.accel("homing_acceleration");
+                let speed = speed_from_dec(self.stored("homing_speed_switch") as f64);
+                self.motion = Motion::position(t, p, v, plan.target, speed, acc, acc);
+                self.homing_onto = plan.onto;
+                self.task = Task::Homing;
+            }
+            Err(_) => {
+                self.homing_error = true;
+                self.brake("quickstop_deceleration", t);
+                self.task = Task::Idle;
+            }
+        }
+    }
+
+    /// Pulse-train mode (-4): the position follows the pulse input through the gear,
+    /// `increments = counts × 2508.01 / 2508.02`, where one pulse is one count in CW/CCW and
+    /// pulse+direction modes and four in A/B mode (quadrature ×4 — uncertain for Kinco).
+    fn start_pulse(&mut self, t: f64) {
+        let (p, _) = self.motion.at(t);
+        let counts = if matches!(self.stored("pulse_mode"), 2 | 12) { 4.0 } else { 1.0 };
+        let gear = self.stored("gear_factor") as f64 / (self.stored("gear_divider").max(1)) as f64;
+        let pieces: Vec<(f64, f64)> =
+            self.pulses.pieces_from(t).into_iter().map(|(d, rate)| (d, rate * counts * gear)).collect();
+        self.motion = Motion::cruise(t, p, &pieces);
+        self.limit_active = false;
+        self.task = Task::Pulse;
     }
 }
+
+#[cfg(test)]
+mod tests;

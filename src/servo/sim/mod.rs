@@ -5,25 +5,61 @@
 //! A [`SimLine`] receives whole request frames and answers as the drives on the line
 //! would: a frame with a bad checksum, or for an id no drive has, gets NO reply, and so
 //! does an object the drive does not have (§2: "it does not answer at all"). In loop mode
-//! (public notes, "RS232 loop") every request is echoed before the reply.
+//! (public notes, "RS232 loop") every request is echoed before the reply. Armed faults
+//! ([`faults`]) and line timing ([`Pace`]) belong to the line too, so both ways of using it
+//! show them alike; [`control`] is the one language that arms them.
 //!
 //! It is used two ways: in-process, where [`SimLink`] is a transport that hands frames to
-//! the line synchronously (so `sim-servo:?id=1` runs the real driver code, and a missing
-//! reply is known at once instead of after a timeout), and served on a pseudo-terminal by
-//! [`serve`] (`plcsh sim serve --servo-pty`). Time is the virtual clock's.
+//! the line synchronously (so `sim-servo:?id=1` runs the real driver code), and served on a
+//! pseudo-terminal by [`serve`] (`plcsh sim serve --servo-pty`). Time is the virtual clock's.
 
+pub mod control;
 pub mod drive;
+pub mod faults;
+pub mod homing;
 pub mod motion;
 pub mod serve;
 
-use super::frame::{Frame, FrameBuffer, FRAME_LEN};
+use super::frame::{func, Frame, FrameBuffer, FRAME_LEN};
 use super::link::Transport;
 use crate::core::Clock;
 use drive::Drive;
+use faults::LineFaults;
 use std::collections::VecDeque;
 use std::io;
 use std::sync::{Arc, Mutex};
-use std::time::Duration;
+use std::time::{Duration, Instant};
+
+/// Line timing: a real RS232 line carries each 10-byte frame at `baud` (10 bits a byte:
+/// start, 8 data, stop; seed §1's 8N1), and the drive thinks `latency` before answering.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Pace {
+    pub baud: u32,
+    pub latency: Duration,
+}
+
+impl Pace {
+    /// The served simulator's default: the factory 38400 baud and 1 ms think-time (a
+    /// drive's real think-time is not documented; 1 ms is a guess, configurable).
+    pub const REALISTIC: Pace = Pace { baud: 38_400, latency: Duration::from_millis(1) };
+
+    /// One frame's time on the wire.
+    pub fn frame_time(&self) -> Duration {
+        Duration::from_secs_f64(FRAME_LEN as f64 * 10.0 / self.baud.max(1) as f64)
+    }
+}
+
+/// What the line sends back for one request, and when (relative to the request's end as
+/// the line sees it).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Answer {
+    pub echo: Option<[u8; FRAME_LEN]>,
+    pub reply: Option<[u8; FRAME_LEN]>,
+    /// When the echo is complete (its frame time, if paced).
+    pub echo_after: Duration,
+    /// When the reply is complete.
+    pub reply_after: Duration,
+}
 
 /// Drives sharing one simulated line.
 #[derive(Debug)]
@@ -34,12 +70,23 @@ pub struct SimLine {
     pub echo: bool,
     /// Requests received (including ones nobody answered).
     pub received: u64,
+    /// Line timing; `None` answers at once.
+    pub pace: Option<Pace>,
+    /// Armed faults.
+    pub faults: LineFaults,
 }
 
 impl SimLine {
     pub fn new(ids: &[u8], clock: Clock) -> SimLine {
         let t = clock.now().as_secs_f64();
-        SimLine { drives: ids.iter().map(|&id| Drive::new(id, t)).collect(), clock, echo: false, received: 0 }
+        SimLine {
+            drives: ids.iter().map(|&id| Drive::new(id, t)).collect(),
+            clock,
+            echo: false,
+            received: 0,
+            pace: None,
+            faults: LineFaults::default(),
+        }
     }
 
     fn now(&self) -> f64 {
@@ -54,7 +101,10 @@ impl SimLine {
     pub fn add_drive(&mut self, id: u8) {
         if self.drive(id).is_none() {
             let t = self.now();
-            self.drives.push(Drive::new(id, t));
+            let strict = self.drives.first().is_some_and(|d| d.strict);
+            let mut d = Drive::new(id, t);
+            d.strict = strict;
+            self.drives.push(d);
         }
     }
 
@@ -62,13 +112,47 @@ impl SimLine {
         self.drives.iter_mut().find(|d| d.id == id)
     }
 
-    /// Answers one request frame as the drives would; `None` is silence.
-    pub fn answer(&mut self, bytes: &[u8; FRAME_LEN]) -> Option<[u8; FRAME_LEN]> {
+    /// Every drive on the line refuses (or accepts) writes of the wrong size.
+    pub fn set_strict(&mut self, on: bool) {
+        for d in &mut self.drives {
+            d.strict = on;
+        }
+    }
+
+    /// Answers one request frame as the drives would, with the armed faults and timing.
+    pub fn exchange(&mut self, bytes: &[u8; FRAME_LEN]) -> Answer {
         self.received += 1;
-        let f = Frame::from_bytes(bytes).ok()?;
+        let frame = self.pace.map(|p| p.frame_time()).unwrap_or_default();
+        let latency = self.pace.map(|p| p.latency).unwrap_or_default();
+        let mut a = Answer { echo: self.echo.then_some(*bytes), reply: None, echo_after: frame, reply_after: frame };
+        let Ok(f) = Frame::from_bytes(bytes) else { return a };
+        let fx = self.faults.take(f.id, f.index, f.sub);
+        if fx.drop_echo {
+            a.echo = None;
+        }
         let t = self.now();
-        let d = self.drives.iter_mut().find(|d| d.id == f.id)?;
-        d.request(&f, t).map(|r| r.to_bytes())
+        let Some(d) = self.drives.iter_mut().find(|d| d.id == f.id) else { return a };
+        if fx.no_reply {
+            return a;
+        }
+        let reply = match fx.abort {
+            Some(code) => Some(Frame { func: func::ERROR, data: code, ..f }),
+            None => d.request(&f, t),
+        };
+        a.reply = reply.map(|r| {
+            let mut b = r.to_bytes();
+            if fx.bad_checksum {
+                b[9] ^= 0x5A;
+            }
+            b
+        });
+        a.reply_after = frame + latency + frame + fx.delay;
+        a
+    }
+
+    /// Answers one request frame; `None` is silence (no timing, no echo).
+    pub fn answer(&mut self, bytes: &[u8; FRAME_LEN]) -> Option<[u8; FRAME_LEN]> {
+        self.exchange(bytes).reply
     }
 
     /// Puts drive `id` into Fault with `code` (603F.00). False if no such drive.
@@ -87,24 +171,34 @@ impl SimLine {
     pub fn set_home_switch(&mut self, id: u8, pos: f64) -> bool {
         match self.drive(id) {
             Some(d) => {
-                d.home_switch = pos;
+                d.switches.home = pos;
                 true
             }
             None => false,
         }
     }
+
+    /// Feeds `count` pulses at `freq` Hz to drive `id`'s pulse input from now on (queued
+    /// after pulses still arriving); returns when they start and end (virtual seconds).
+    pub fn add_pulses(&mut self, id: u8, freq: f64, count: u64, dir: i8) -> Result<(f64, f64), String> {
+        let t = self.now();
+        self.drive(id).ok_or_else(|| format!("no drive id {id}"))?.add_pulses(t, freq, count, dir)
+    }
 }
 
-/// The in-process transport: frames go straight to a [`SimLine`].
+/// The in-process transport: frames go straight to a [`SimLine`]. With line timing the
+/// bytes become readable only when a real line would have delivered them (wall clock).
 pub struct SimLink {
     line: Arc<Mutex<SimLine>>,
     buf: FrameBuffer,
     rx: VecDeque<u8>,
+    /// When what is in `rx` has arrived.
+    ready_at: Option<Instant>,
 }
 
 impl SimLink {
     pub fn new(line: Arc<Mutex<SimLine>>) -> SimLink {
-        SimLink { line, buf: FrameBuffer::new(), rx: VecDeque::new() }
+        SimLink { line, buf: FrameBuffer::new(), rx: VecDeque::new(), ready_at: None }
     }
 }
 
@@ -112,20 +206,34 @@ impl Transport for SimLink {
     fn send(&mut self, bytes: &[u8]) -> io::Result<()> {
         self.buf.push(bytes);
         let mut line = self.line.lock().unwrap_or_else(|p| p.into_inner());
+        let now = Instant::now();
         while let Some(req) = self.buf.next_raw() {
-            if line.echo {
-                self.rx.extend(req);
+            let a = line.exchange(&req);
+            if let Some(e) = a.echo {
+                self.rx.extend(e);
             }
-            if let Some(reply) = line.answer(&req) {
-                self.rx.extend(reply);
+            if let Some(r) = a.reply {
+                self.rx.extend(r);
             }
+            let paced = line.pace.is_some() || a.reply_after > a.echo_after;
+            self.ready_at = paced.then(|| now + a.reply_after.max(a.echo_after));
         }
         Ok(())
     }
 
-    /// The simulator answers synchronously: what is not here now will never come, so an
-    /// empty queue returns at once (no waiting out the timeout in-process).
-    fn recv(&mut self, buf: &mut [u8], _timeout: Duration) -> io::Result<usize> {
+    /// Without timing the simulator answers synchronously: what is not here now will never
+    /// come, so an empty queue returns at once (no waiting out the timeout in-process).
+    fn recv(&mut self, buf: &mut [u8], timeout: Duration) -> io::Result<usize> {
+        if let Some(at) = self.ready_at {
+            let now = Instant::now();
+            if at > now {
+                if at - now > timeout {
+                    return Ok(0);
+                }
+                std::thread::sleep(at - now);
+            }
+            self.ready_at = None;
+        }
         let n = buf.len().min(self.rx.len());
         for (slot, b) in buf.iter_mut().zip(self.rx.drain(..n)) {
             *slot = b;
@@ -136,6 +244,7 @@ impl Transport for SimLink {
     fn discard_input(&mut self) -> io::Result<()> {
         self.rx.clear();
         self.buf.clear();
+        self.ready_at = None;
         Ok(())
     }
 
@@ -174,7 +283,7 @@ mod tests {
     fn silence_for_wrong_id_unknown_object_and_bad_checksum() {
         let (mut l, _) = line();
         assert_eq!(l.answer(&Frame::read(2, 0x6041, 0).to_bytes()), None, "wrong id");
-        assert_eq!(l.answer(&Frame::read(1, 0x2FF0, 9).to_bytes()), None, "unknown object");
+        assert_eq!(l.answer(&Frame::read(1, 0x3FFF, 1).to_bytes()), None, "unknown object");
         let mut bad = Frame::read(1, 0x6041, 0).to_bytes();
         bad[9] ^= 1;
         assert_eq!(l.answer(&bad), None, "bad checksum");
@@ -189,8 +298,13 @@ mod tests {
         let r = l.answer(&Frame::write(1, 0x6041, 0, Size::B2, 1).to_bytes()).unwrap();
         let f = Frame::from_bytes(&r).unwrap();
         assert_eq!((f.func, f.data), (func::ERROR, abort::READ_ONLY));
+        // A 4-byte write to the 16-bit controlword: lenient by default, refused when strict.
+        let r = l.answer(&Frame::write(1, 0x6040, 0, Size::B4, 6).to_bytes()).unwrap();
+        assert_eq!(Frame::from_bytes(&r).unwrap().func, func::WRITE_OK);
+        l.set_strict(true);
         let r = l.answer(&Frame::write(1, 0x6040, 0, Size::B4, 6).to_bytes()).unwrap();
         assert_eq!(Frame::from_bytes(&r).unwrap().data, abort::LENGTH_MISMATCH);
+        l.set_strict(false);
         let r = l.answer(&Frame::write(1, 0x6060, 0, Size::B1, 2).to_bytes()).unwrap();
         assert_eq!(Frame::from_bytes(&r).unwrap().data, abort::VALUE_RANGE, "mode 2 is not a Kinco mode");
     }

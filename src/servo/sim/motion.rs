@@ -106,6 +106,85 @@ impl Motion {
         m
     }
 
+    /// From `(t, p)`, constant-velocity pieces `(duration, velocity)` back to back (a pulse
+    /// train followed through a gear), then rest.
+    pub fn cruise(t: f64, p: f64, pieces: &[(f64, f64)]) -> Motion {
+        let mut m = Motion::still(t, p);
+        for &(dur, v) in pieces {
+            if dur > 0.0 {
+                m.v_end = v;
+                m.push(dur, 0.0);
+            }
+        }
+        m.v_end = 0.0;
+        m
+    }
+
+    /// The pieces of the plan from `t` on: `(t0, dur, p0, v0, a)`, the last one open-ended
+    /// (`dur` infinite) at the final velocity.
+    fn pieces_from(&self, t: f64) -> Vec<(f64, f64, f64, f64, f64)> {
+        let mut out = Vec::new();
+        for s in &self.segs {
+            let end = s.t0 + s.dur;
+            if end <= t {
+                continue;
+            }
+            let t0 = s.t0.max(t);
+            let (p0, v0) = s.at(t0);
+            out.push((t0, end - t0, p0, v0, s.a));
+        }
+        let t0 = self.t_end.max(t);
+        let (p0, v0) = self.at(t0);
+        out.push((t0, f64::INFINITY, p0, v0, 0.0));
+        out
+    }
+
+    /// The first time at or after `t` the position reaches `x` (`None` if it never does).
+    pub fn first_reach(&self, x: f64, t: f64) -> Option<f64> {
+        for (t0, dur, p0, v0, a) in self.pieces_from(t) {
+            // p0 + v0·τ + a·τ²/2 = x, smallest τ in [0, dur].
+            let c = p0 - x;
+            if c == 0.0 {
+                return Some(t0);
+            }
+            let roots: Vec<f64> = if a == 0.0 {
+                if v0 == 0.0 {
+                    vec![]
+                } else {
+                    vec![-c / v0]
+                }
+            } else {
+                let disc = v0 * v0 - 2.0 * a * c;
+                if disc < 0.0 {
+                    vec![]
+                } else {
+                    let r = disc.sqrt();
+                    vec![(-v0 - r) / a, (-v0 + r) / a]
+                }
+            };
+            if let Some(tau) = roots.into_iter().filter(|&r| r >= 0.0 && r <= dur).reduce(f64::min) {
+                return Some(t0 + tau);
+            }
+        }
+        None
+    }
+
+    /// The first time at or after `t` the speed `|v|` reaches `limit` (> 0).
+    pub fn first_speed(&self, limit: f64, t: f64) -> Option<f64> {
+        for (t0, dur, _, v0, a) in self.pieces_from(t) {
+            if v0.abs() >= limit {
+                return Some(t0);
+            }
+            if a != 0.0 {
+                let tau = (limit * a.signum() - v0) / a;
+                if tau >= 0.0 && tau <= dur {
+                    return Some(t0 + tau);
+                }
+            }
+        }
+        None
+    }
+
     /// From `(t, p, v)`, decelerate with `dec` to rest.
     pub fn stop(t: f64, p: f64, v: f64, dec: f64) -> Motion {
         Motion::velocity(t, p, v, 0.0, dec, dec)
@@ -206,6 +285,24 @@ mod tests {
         assert!(close(back.end_time(), 1.25));
         let s = Motion::stop(0.0, 0.0, -1000.0, 1e4);
         assert!(close(s.at(1.0).0, -50.0) && s.at(1.0).1 == 0.0);
+    }
+
+    #[test]
+    fn crossings_and_cruises_are_solved_not_stepped() {
+        let m = Motion::position(0.0, 0.0, 0.0, 10_000.0, 50_000.0, 1e6, 1e6);
+        assert!(close(m.first_reach(1250.0, 0.0).unwrap(), 0.05));
+        assert!(close(m.first_reach(5000.0, 0.0).unwrap(), 0.125));
+        assert_eq!(m.first_reach(10_001.0, 0.0), None, "never passes the target");
+        assert_eq!(m.first_reach(-1.0, 0.0), None);
+        assert!(close(m.first_speed(25_000.0, 0.0).unwrap(), 0.025));
+        assert_eq!(m.first_speed(60_000.0, 0.0), None);
+        let v = Motion::velocity(0.0, 0.0, 0.0, -1000.0, 1e4, 1e4);
+        // 0.1 s ramp covers -50; then -1000 inc/s: -1050 at 1.1 s.
+        assert!(close(v.first_reach(-1050.0, 0.0).unwrap(), 1.1));
+        let c = Motion::cruise(1.0, 10.0, &[(0.5, 100.0), (0.25, -40.0)]);
+        assert!(close(c.at(1.4).0, 50.0) && c.at(1.4).1 == 100.0);
+        assert!(close(c.at(10.0).0, 50.0) && c.at(10.0).1 == 0.0);
+        assert!(close(c.end_time(), 1.75));
     }
 
     #[test]

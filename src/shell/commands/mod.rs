@@ -18,6 +18,7 @@ mod servo;
 mod sim;
 mod siminputs;
 mod trend;
+mod umpk;
 mod watch;
 
 use super::{Args, Shell};
@@ -49,6 +50,7 @@ pub const COMMANDS: &[CommandSpec] = &[
     trend::TRACE,
     trend::PLOT,
     servo::SERVO,
+    umpk::UMPK,
     pulse::PLS,
     pulse::PSTOP,
     pulse::PTO,

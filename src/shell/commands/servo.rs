@@ -9,7 +9,7 @@
 
 use super::CommandSpec;
 use crate::core::literal::parse_option_duration_us;
-use crate::core::{Clock, Error, ErrorKind, Result, Value};
+use crate::core::{Clock, Error, Result};
 use crate::output::Outcome;
 use crate::servo::ds402::{self, Profile, Waiter};
 use crate::servo::frame::{abort_text, func, Frame, FRAME_LEN};
@@ -22,7 +22,7 @@ use std::time::Duration;
 pub const SERVO: CommandSpec = CommandSpec {
     name: "servo",
     aliases: &[],
-    usage: "servo [DEVICE] status|enable|disable|fault-reset|quickstop|mode NAME|move abs|rel POS [speed=300rpm acc=100rps/s dec=100rps/s]|jog SPEED|home [method=N]|wait target [timeout=5s]|save|read OBJ…|encoder [N|auto]|raw BYTES…|sim fault [CODE]|sim switch POS",
+    usage: "servo [DEVICE] status|enable|disable|fault-reset|quickstop|mode NAME|move abs|rel POS [speed=300rpm acc=100rps/s dec=100rps/s]|jog SPEED|halt [off]|home [method=N]|wait target [timeout=5s]|save|read OBJ…|encoder [N|auto]|raw BYTES…|sim fault [drive CODE|no-reply|bad-checksum|delay D|abort OBJ CODE|drop-echo|clear]|sim switch [home|neg|pos] POS|sim pulses freq=HZ count=N|sim strict on|off",
     summary: "Kinco servo helpers: DS402 state machine, moves, jog, homing, waits, units, raw frames",
     subcommands: &[
         "status",
@@ -33,6 +33,7 @@ pub const SERVO: CommandSpec = CommandSpec {
         "mode",
         "move",
         "jog",
+        "halt",
         "home",
         "wait",
         "save",
@@ -82,13 +83,15 @@ fn servo(sh: &mut Shell, args: Args) -> Result<Outcome> {
         "quickstop" => state_outcome(ds402::quickstop(ops, &w)?),
         "mode" => {
             let Some(&(c, m)) = rest.first() else {
-                return Err(Error::usage("servo mode needs a mode: position, velocity, immediate-velocity or homing")
-                    .column(at(col)));
+                return Err(Error::usage(
+                    "servo mode needs a mode: position, velocity, immediate-velocity, homing, torque or pulse",
+                )
+                .column(at(col)));
             };
             let n = ds402::mode_number(m).ok_or_else(|| {
                 Error::usage(format!("unknown mode `{m}`"))
                     .column(at(c))
-                    .hint("position (1), velocity (3), immediate-velocity (-3), homing (6)")
+                    .hint("position (1), velocity (3), immediate-velocity (-3), homing (6), torque (4), pulse (-4)")
             })?;
             ds402::set_mode(ops, n)?;
             Ok(Outcome::new("servo")
@@ -98,6 +101,19 @@ fn servo(sh: &mut Shell, args: Args) -> Result<Outcome> {
         }
         "move" => move_cmd(ops, &w, &space, rest, args.offset, at(col)),
         "jog" => jog(ops, &space, rest, args.offset, at(col)),
+        "halt" => {
+            let on = match rest {
+                [] | [(_, "on")] => true,
+                [(_, "off")] => false,
+                _ => return Err(Error::usage("usage: servo halt [on|off]").column(at(col))),
+            };
+            let cw = ds402::halt(ops, on)?;
+            let text = if on { "halted: braking to a stop and holding" } else { "halt released: the motion resumes" };
+            Ok(Outcome::new("servo")
+                .text(format!("{text} (controlword 16#{cw:04X})"))
+                .with("halt", on)
+                .with("controlword", cw))
+        }
         "home" => {
             let (_, opts) = lex::options(rest);
             let method = opt_int(&opts, "method", at)?;
@@ -397,7 +413,7 @@ fn raw(ops: &mut dyn ServoOps, rest: &[lex::Word], base: usize, col: usize) -> R
             format!("0x80 error: abort code 16#{:08X} — {}", f.data, abort_text(f.data))
         }
         Ok(f) if f.func == func::WRITE_OK => format!("write to {} acknowledged", f.object()),
-        Ok(f) => format!("{} = {} (16#{:X})", f.object(), f.data, f.data),
+        Ok(f) => raw_value(&f),
     };
     let mut o = Outcome::new("servo")
         .text(format!("→ {}\n← {}  {meaning}", hex(&frame), hex(&reply)))
@@ -412,35 +428,59 @@ fn raw(ops: &mut dyn ServoOps, rest: &[lex::Word], base: usize, col: usize) -> R
     Ok(o)
 }
 
-/// Simulator controls: `servo sim fault [CODE]`, `servo sim switch POS`.
+/// A read reply's value at the object's width and signedness (the reply's length code for
+/// objects outside the table): a sign-extended statusword shows as 16 bits, not 32.
+fn raw_value(f: &Frame) -> String {
+    use crate::core::DataType;
+    let unsized_type = match f.func {
+        func::READ_1 => DataType::Byte,
+        func::READ_2 => DataType::Word,
+        func::READ_4 => DataType::DWord,
+        other => return format!("{} answered with function code {other:02X}, data 16#{:08X}", f.object(), f.data),
+    };
+    let (dtype, name) = match objects::lookup(f.index, f.sub) {
+        Some(o) => (o.dtype, format!("{} {}", f.object(), o.name)),
+        None => (unsized_type, f.object()),
+    };
+    let bits = dtype.bits().min(unsized_type.bits());
+    let raw = f.data & (u32::MAX >> (32 - bits));
+    format!("{name} = {} (16#{raw:0w$X}, {})", dtype.decode(raw), objects::short_type(dtype), w = bits as usize / 4)
+}
+
+/// Simulator controls (`servo::sim::control`'s language): on an in-process drive
+/// (`sim-servo:`) they apply directly; on a `kinco:` port served by `plcsh sim serve` they go
+/// to its control socket (`LINK.ctl`, or `control=` in the URL).
 fn sim(ops: &mut dyn ServoOps, rest: &[lex::Word], base: usize, col: usize) -> Result<Outcome> {
+    use crate::servo::sim::control;
     let id = ops.drive_id();
-    let Some(line) = ops.simulator() else {
-        return Err(Error::unsupported("servo sim works on in-process simulated drives (sim-servo:)").column(col));
-    };
-    let mut l = line.lock().unwrap_or_else(|p| p.into_inner());
-    let num = |c: usize, s: &str| -> Result<i64> {
-        let lit = crate::core::literal::parse_literal(s).map_err(|e| Error::usage(e.message).column(base + c))?;
-        match lit.value {
-            Value::Int(i) => Ok(i),
-            _ => Err(Error::usage(format!("`{s}` is not a whole number")).column(base + c)),
-        }
-    };
-    match rest {
-        [(_, "fault")] | [(_, "fault"), _] => {
-            let code = match rest.get(1) {
-                Some(&(c, s)) => u16::try_from(num(c, s)?)
-                    .map_err(|_| Error::new(ErrorKind::Value, "a fault code is 16 bits").column(base + c))?,
-                None => crate::servo::sim::drive::DEFAULT_FAULT,
-            };
-            l.inject_fault(id, code);
-            Ok(Outcome::new("servo").text(format!("drive id {id}: fault 16#{code:04X} injected")).with("fault", code))
-        }
-        [(_, "switch"), (c, p)] => {
-            let pos = num(*c, p)?;
-            l.set_home_switch(id, pos as f64);
-            Ok(Outcome::new("servo").text(format!("drive id {id}: home switch at {pos} inc")).with("home_switch", pos))
-        }
-        _ => Err(Error::usage("usage: servo sim fault [CODE] | servo sim switch POS").column(col)),
+    let words: Vec<(usize, &str)> = rest.iter().map(|&(c, w)| (base + c, w)).collect();
+    if words.is_empty() {
+        return Err(Error::usage("servo sim needs a control").column(col).hint(control::USAGE));
     }
+    let req = control::parse(&words)?;
+    let (text, data) = if let Some(line) = ops.simulator() {
+        let mut l = line.lock().unwrap_or_else(|p| p.into_inner());
+        control::apply(&mut l, &req, Some(id))?
+    } else if let Some(path) = ops.sim_control() {
+        let mut line = rest.iter().map(|w| w.1).collect::<Vec<_>>().join(" ");
+        if req.id.is_none() {
+            line = format!("id={id} {line}");
+        }
+        control::send(&path, &line)?
+    } else {
+        return Err(Error::unsupported(
+            "servo sim works on simulated drives: in-process (sim-servo:) or served by plcsh sim serve --servo-pty LINK",
+        )
+        .column(col)
+        .hint("a served drive's control socket is LINK.ctl; give it as control=PATH in the kinco: URL if it is elsewhere"));
+    };
+    let mut o = Outcome::new("servo").text(text);
+    if let serde_json::Value::Object(m) = data {
+        for (k, v) in m {
+            if k != "ok" && k != "text" {
+                o = o.with(&k, v);
+            }
+        }
+    }
+    Ok(o)
 }

@@ -36,6 +36,7 @@ fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
             clock.step(Duration::from_micros(us as u64));
         }
         "run" => clock.run(),
+        "input" if super::umpk::current_is_umpk(sh) => return super::umpk::sim_input(sh, args),
         "input" | "quad" | "inputs" | "retain" => return super::siminputs::run(sh, sub, args),
         other => return Err(Error::usage(format!("unknown `sim {other}`")).hint(SIM.usage).column(args.offset)),
     }

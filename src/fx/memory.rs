@@ -1,0 +1,213 @@
+//! The simulated FX PLC's device memory: one image that both simulated ports (programming
+//! port and computer link) read and write, sized from the model table. Devices the model
+//! does not have are refused here, so each port answers NAK for them as a real PLC does.
+//!
+//! Special devices start as a PLC in RUN shows them: M8000 (RUN monitor, on) and M8001 (off),
+//! D8000 watchdog 200 ms.
+
+use super::model::{fx1s_counter, Model};
+use super::operand::{Area, CN32_FIRST, SPECIAL, SPECIAL_COUNT};
+use super::port::{self, Region};
+
+/// The device memory of one simulated PLC.
+#[derive(Clone, Debug)]
+pub struct Memory {
+    pub model: &'static Model,
+    bits: [Vec<bool>; 8],
+    tn: Vec<u16>,
+    cn: Vec<u32>,
+    d: Vec<u16>,
+    regions: Vec<Region>,
+    /// Device writes made through either port (for tests and `devices`).
+    pub writes: u64,
+}
+
+fn bit_slot(area: Area) -> Option<usize> {
+    Some(match area {
+        Area::X => 0,
+        Area::Y => 1,
+        Area::M => 2,
+        Area::S => 3,
+        Area::TS => 4,
+        Area::TC => 5,
+        Area::CS => 6,
+        Area::CC => 7,
+        _ => return None,
+    })
+}
+
+impl Memory {
+    pub fn new(model: &'static Model) -> Memory {
+        let special = (SPECIAL + SPECIAL_COUNT) as usize;
+        let bits = [
+            vec![false; model.x as usize],
+            vec![false; model.y as usize],
+            vec![false; special],
+            vec![false; model.s as usize],
+            vec![false; model.t as usize],
+            vec![false; model.t as usize],
+            vec![false; model.c as usize],
+            vec![false; model.c as usize],
+        ];
+        let mut m = Memory {
+            model,
+            bits,
+            tn: vec![0; model.t as usize],
+            cn: vec![0; model.c as usize],
+            d: vec![0; special],
+            regions: port::regions(),
+            writes: 0,
+        };
+        m.bits[2][SPECIAL as usize] = true; // M8000 RUN monitor
+        m.d[SPECIAL as usize] = 200; // D8000 watchdog, ms
+        m
+    }
+
+    /// Whether the model has device `index` of `area`.
+    pub fn exists(&self, area: Area, index: u16) -> bool {
+        let m = self.model;
+        let special = area.has_special() && (SPECIAL..SPECIAL + SPECIAL_COUNT).contains(&index);
+        let n = match area {
+            Area::X => m.x,
+            Area::Y => m.y,
+            Area::M => m.m,
+            Area::S => m.s,
+            Area::TS | Area::TC | Area::TN => m.t,
+            Area::CS | Area::CC | Area::CN => {
+                if m.name == "FX1S" && !fx1s_counter(index) {
+                    return false;
+                }
+                m.c
+            }
+            Area::D => m.d,
+        };
+        special || index < n
+    }
+
+    pub fn bit(&self, area: Area, index: u16) -> Option<bool> {
+        if !self.exists(area, index) {
+            return None;
+        }
+        self.bits[bit_slot(area)?].get(index as usize).copied()
+    }
+
+    pub fn set_bit(&mut self, area: Area, index: u16, v: bool) -> Option<()> {
+        if !self.exists(area, index) {
+            return None;
+        }
+        *self.bits[bit_slot(area)?].get_mut(index as usize)? = v;
+        self.writes += 1;
+        Some(())
+    }
+
+    /// A word device's value (CN200+ are 32-bit).
+    pub fn word(&self, area: Area, index: u16) -> Option<u32> {
+        if !self.exists(area, index) {
+            return None;
+        }
+        match area {
+            Area::D => self.d.get(index as usize).map(|v| *v as u32),
+            Area::TN => self.tn.get(index as usize).map(|v| *v as u32),
+            Area::CN if index >= CN32_FIRST => self.cn.get(index as usize).copied(),
+            Area::CN => self.cn.get(index as usize).map(|v| *v & 0xFFFF),
+            _ => None,
+        }
+    }
+
+    pub fn set_word(&mut self, area: Area, index: u16, v: u32) -> Option<()> {
+        if !self.exists(area, index) {
+            return None;
+        }
+        let i = index as usize;
+        match area {
+            Area::D => *self.d.get_mut(i)? = v as u16,
+            Area::TN => *self.tn.get_mut(i)? = v as u16,
+            Area::CN if index >= CN32_FIRST => *self.cn.get_mut(i)? = v,
+            Area::CN => *self.cn.get_mut(i)? = v & 0xFFFF,
+            _ => return None,
+        }
+        self.writes += 1;
+        Some(())
+    }
+
+    /// One byte of the programming port's address space, or `None` (NAK).
+    pub fn port_byte(&self, addr: u16) -> Option<u8> {
+        let r = *port::region_of(&self.regions, addr)?;
+        let off = addr - r.start;
+        if r.unit == 0 {
+            let first = r.first + 8 * off;
+            let mut b = 0u8;
+            for i in 0..8 {
+                // Bits past the model's end read as 0 within a byte that has some.
+                if self.bit(r.area, first + i).unwrap_or(false) {
+                    b |= 1 << i;
+                }
+            }
+            return (0..8).any(|i| self.exists(r.area, first + i)).then_some(b);
+        }
+        let index = r.first + off / r.unit;
+        let v = self.word(r.area, index)?;
+        Some((v >> (8 * (off % r.unit))) as u8)
+    }
+
+    /// Writes one byte of the programming port's address space; `None` (NAK) when no device is there.
+    pub fn set_port_byte(&mut self, addr: u16, b: u8) -> Option<()> {
+        let r = *port::region_of(&self.regions, addr)?;
+        let off = addr - r.start;
+        if r.unit == 0 {
+            let first = r.first + 8 * off;
+            if !(0..8).any(|i| self.exists(r.area, first + i)) {
+                return None;
+            }
+            for i in 0..8 {
+                if self.exists(r.area, first + i) {
+                    self.set_bit(r.area, first + i, b >> i & 1 != 0)?;
+                }
+            }
+            return Some(());
+        }
+        let index = r.first + off / r.unit;
+        let shift = 8 * (off % r.unit) as u32;
+        let old = self.word(r.area, index)?;
+        let v = (old & !(0xFF << shift)) | (b as u32) << shift;
+        self.set_word(r.area, index, v)
+    }
+
+    /// Whether every byte in `addr … addr+len` is there (a read or write of them is answered).
+    pub fn port_range_ok(&self, addr: u16, len: usize) -> bool {
+        (0..len).all(|i| addr.checked_add(i as u16).is_some_and(|a| self.port_byte(a).is_some()))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn port_bytes_follow_the_device_table() {
+        let mut m = Memory::new(Model::find("FX2N").unwrap());
+        m.set_word(Area::D, 123, 0x1234).unwrap();
+        assert_eq!(m.port_byte(0x10F6), Some(0x34));
+        assert_eq!(m.port_byte(0x10F7), Some(0x12));
+        m.set_port_byte(0x10F8, 0xCD).unwrap();
+        m.set_port_byte(0x10F9, 0xAB).unwrap();
+        assert_eq!(m.word(Area::D, 124), Some(0xABCD));
+        m.set_bit(Area::Y, 0o21, true).unwrap();
+        assert_eq!(m.port_byte(0x00A2), Some(0b10));
+        assert_eq!(m.port_byte(0x01E0), Some(1), "M8000 is on in RUN");
+        assert_eq!(m.port_byte(0x0E00), Some(200), "D8000 watchdog");
+        assert_eq!(m.port_byte(0x0090), None, "no device there");
+        m.set_word(Area::CN, 200, 0x0102_0304).unwrap();
+        assert_eq!(m.port_byte(0x0C03), Some(0x01));
+    }
+
+    #[test]
+    fn model_ranges_decide_what_exists() {
+        let m = Memory::new(Model::find("FX1S").unwrap());
+        assert!(m.exists(Area::D, 255) && !m.exists(Area::D, 256));
+        assert!(m.exists(Area::D, 8000));
+        assert!(m.exists(Area::X, 0o17) && !m.exists(Area::X, 0o20));
+        assert!(m.exists(Area::CN, 31) && !m.exists(Area::CN, 32) && m.exists(Area::CN, 235));
+        assert_eq!(m.port_byte(0x1200), None, "D256 is past an FX1S");
+    }
+}

@@ -1,0 +1,306 @@
+//! FX operands bound to one model and one protocol: the grammar of [`super::operand`], the
+//! model's device ranges ([`super::model`]) and what the protocol can address. An operand
+//! the model lacks, or the protocol cannot reach, is refused here, before anything is sent,
+//! with the range that does exist and what to try.
+//!
+//! The programming port's classic table reaches D0–D511, M0–M1023, X0–X177, Y0–Y177, S0–S999,
+//! T/C 0–255, M8000–M8255 and D8000–D8255 (see [`super::operand::AREAS`]); the computer
+//! link reaches every device of the model except the timer and counter coils.
+
+use super::model::{fx1s_counter, Model, MODELS};
+use super::operand::{self, Area, FxOperand, Width, AREAS, SPECIAL, SPECIAL_COUNT};
+use super::port;
+use crate::core::{Candidate, Error, ErrorKind, Operand, OperandSpace, Result};
+
+/// The protocol a device is reached through.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Proto {
+    /// Programming port (`fx:`, `sim-fx:`).
+    Port,
+    /// Computer link (`fxlink:`, `sim-fx:…?protocol=link`).
+    Link,
+}
+
+impl Proto {
+    pub fn name(self) -> &'static str {
+        match self {
+            Proto::Port => "programming port",
+            Proto::Link => "computer link",
+        }
+    }
+}
+
+/// FX operands for one model over one protocol.
+#[derive(Clone, Copy, Debug)]
+pub struct FxSpace {
+    pub model: &'static Model,
+    pub proto: Proto,
+}
+
+fn range_err(op: &FxOperand, msg: String) -> Error {
+    Error::new(ErrorKind::Range, msg).operand(op.canonical())
+}
+
+impl FxSpace {
+    pub fn new(model: &'static Model, proto: Proto) -> FxSpace {
+        FxSpace { model, proto }
+    }
+
+    /// Ordinary devices of `area` on this model.
+    pub fn count(&self, area: Area) -> u16 {
+        let m = self.model;
+        match area {
+            Area::X => m.x,
+            Area::Y => m.y,
+            Area::M => m.m,
+            Area::S => m.s,
+            Area::TS | Area::TC | Area::TN => m.t,
+            Area::CS | Area::CC | Area::CN => m.c,
+            Area::D => m.d,
+        }
+    }
+
+    /// The model's range of an area, as text (`D0–D7999, D8000–D8255`).
+    pub fn range_text(&self, area: Area) -> String {
+        let n = self.count(area);
+        let name = area.name();
+        let mut s = format!("{name}0–{name}{}", FxOperand::number_text(area, n - 1));
+        if self.model.name == "FX1S" && matches!(area, Area::CS | Area::CC | Area::CN) {
+            s = format!("{name}0–{name}31, {name}235–{name}255");
+        }
+        if area.has_special() {
+            s.push_str(&format!(", {name}8000–{name}{}", SPECIAL + SPECIAL_COUNT - 1));
+        }
+        s
+    }
+
+    pub fn exists(&self, area: Area, index: u16) -> bool {
+        if area.has_special() && (SPECIAL..SPECIAL + SPECIAL_COUNT).contains(&index) {
+            return true;
+        }
+        if self.model.name == "FX1S" && matches!(area, Area::CS | Area::CC | Area::CN) && !fx1s_counter(index) {
+            return false;
+        }
+        index < self.count(area)
+    }
+
+    /// Checks an operand against the model and the protocol.
+    pub fn check(&self, op: &FxOperand) -> Result<()> {
+        let last = op.index as u32 + op.span() as u32 - 1;
+        if last > u16::MAX as u32 || !self.exists(op.area, op.index) || !self.exists(op.area, last as u16) {
+            return Err(range_err(
+                op,
+                format!("{} is not on an {} ({})", op.canonical(), self.model.name, self.range_text(op.area)),
+            ));
+        }
+        if (op.index >= SPECIAL) != (last as u16 >= SPECIAL) {
+            return Err(range_err(op, format!("{} runs from ordinary into special devices", op.canonical())));
+        }
+        match self.proto {
+            Proto::Port => {
+                if port::place(op).is_none() {
+                    let p = op.area.spec().port;
+                    let name = op.area.name();
+                    let mut reach = format!("{name}0–{name}{}", FxOperand::number_text(op.area, p.count - 1));
+                    if p.special.is_some() {
+                        reach.push_str(&format!(", {name}8000–{name}8255"));
+                    }
+                    return Err(range_err(
+                        op,
+                        format!("{} is past the programming port's address table (it reaches {reach})", op.canonical()),
+                    )
+                    .hint("the computer link (fxlink:) reaches every device of the model"));
+                }
+            }
+            Proto::Link => {
+                if op.area.spec().link.is_empty() {
+                    return Err(Error::unsupported(format!(
+                        "{} (a {}) is not reachable over the computer link",
+                        op.canonical(),
+                        op.area.spec().meaning
+                    ))
+                    .operand(op.canonical())
+                    .hint("read the contact (TS/CS) instead, or use the programming port (fx:)"));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Parses and checks, returning FX operands.
+    pub fn parse_fx(&self, text: &str) -> Result<Vec<FxOperand>> {
+        let ops = operand::parse_expr(text)?;
+        for o in &ops {
+            self.check(o)?;
+        }
+        Ok(ops)
+    }
+}
+
+impl OperandSpace for FxSpace {
+    fn family(&self) -> &'static str {
+        "fx"
+    }
+
+    fn parse(&self, text: &str) -> Result<Vec<Operand>> {
+        Ok(self.parse_fx(text)?.iter().map(|o| o.to_core()).collect())
+    }
+
+    fn name(&self, op: &Operand) -> String {
+        FxOperand::from_key(op.key).canonical()
+    }
+
+    fn describe(&self, op: &Operand) -> Option<String> {
+        let o = FxOperand::from_key(op.key);
+        let spec = o.area.spec();
+        let mut s = match o.width {
+            Width::Group(n) => format!(
+                "{}-bit group of {} bits {}{}–{}{}",
+                4 * n,
+                spec.meaning,
+                o.area.name(),
+                FxOperand::number_text(o.area, o.index),
+                o.area.name(),
+                FxOperand::number_text(o.area, o.index + 4 * n as u16 - 1)
+            ),
+            Width::Pair if o.area == Area::D => {
+                format!("32-bit value in D{} (low) and D{} (high)", o.index, o.index + 1)
+            }
+            Width::Bit | Width::Word if o.index >= SPECIAL => match operand::special_meaning(o.area, o.index) {
+                Some(m) => m.to_string(),
+                None => format!("special {}", spec.meaning),
+            },
+            _ if o.index >= SPECIAL => format!("special {}", spec.meaning),
+            _ => spec.meaning.to_string(),
+        };
+        if !o.group_aligned() {
+            s.push_str(&format!(
+                " — warning: group starts at {}{}; the manual advises a number ending in 0 ({}0, {}10 …)",
+                o.area.name(),
+                FxOperand::number_text(o.area, o.index),
+                o.area.name(),
+                o.area.name()
+            ));
+        }
+        Some(s)
+    }
+
+    fn help(&self, text: &str) -> Result<String> {
+        let ops = self.parse_fx(text)?;
+        let o = ops[0];
+        let core = o.to_core();
+        let mut s = format!("{} — {}\n", o.canonical(), self.describe(&core).unwrap_or_default());
+        let (lo, hi) = o.view.int_range();
+        let range = match o.width {
+            Width::Group(n) => format!("0…{} (missing high bits are zero)", (1u64 << (4 * n)) - 1),
+            _ if o.view == crate::core::DataType::Real => "IEEE 754 single".into(),
+            _ => format!("{lo}…{hi}"),
+        };
+        s.push_str(&format!("type {} ({} bits), range {range}\n", o.view.name(), o.bits()));
+        s.push_str(&format!("on {}: {}\n", self.model.name, self.range_text(o.area)));
+        match self.proto {
+            Proto::Port => {
+                if let Some(p) = port::place(&o) {
+                    s.push_str(&format!("programming port: byte address {:04X}H, {} byte(s)", p.addr, p.len));
+                    if let Some(f) = port::force_address(o.area, o.index).filter(|_| o.width == Width::Bit) {
+                        s.push_str(&format!(", force address {f:04X}H"));
+                    }
+                    s.push('\n');
+                }
+            }
+            Proto::Link => {
+                let d = super::link::Dev { area: o.area, index: o.index };
+                s.push_str(&format!("computer link: device {}\n", d.encode()));
+            }
+        }
+        s.push_str("manual: seed 004 (FX device groups KnX, programming-port protocol; fx-and-masterk.md A, B)\n");
+        Ok(s)
+    }
+
+    fn complete(&self, prefix: &str) -> Vec<Candidate> {
+        let p = prefix.trim_start_matches('%').to_ascii_uppercase();
+        let mut out = Vec::new();
+        for spec in AREAS.iter() {
+            if self.proto == Proto::Link && spec.link.is_empty() {
+                continue;
+            }
+            if spec.name.starts_with(&p) && p.len() < spec.name.len() + 1 {
+                out.push(Candidate { text: spec.name.to_string(), meaning: spec.meaning.to_string() });
+            }
+            if spec.groups {
+                for n in [2u8, 4, 8] {
+                    let t = format!("K{n}{}0", spec.name);
+                    if t.starts_with(&p) && p.len() < t.len() {
+                        out.push(Candidate {
+                            text: t,
+                            meaning: format!("{}-bit group of {} bits", 4 * n, spec.meaning),
+                        });
+                    }
+                }
+            }
+        }
+        for (area, index, m) in operand::SPECIALS {
+            let t = format!("{}{index}", area.name());
+            if t.starts_with(&p) && p.len() >= 2 {
+                out.push(Candidate { text: t, meaning: m.to_string() });
+            }
+        }
+        out
+    }
+}
+
+/// Model names for hints.
+pub fn model_names() -> String {
+    MODELS.iter().map(|m| m.name).collect::<Vec<_>>().join(", ")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn space(m: &str, p: Proto) -> FxSpace {
+        FxSpace::new(Model::find(m).unwrap(), p)
+    }
+
+    #[test]
+    fn bounds_follow_model_and_protocol() {
+        let s = space("FX1S", Proto::Port);
+        assert!(s.parse_fx("D255").is_ok());
+        let e = s.parse_fx("D256").unwrap_err();
+        assert_eq!(e.kind, ErrorKind::Range);
+        assert!(e.message.contains("FX1S") && e.message.contains("D0–D255"), "{e}");
+        assert!(s.parse_fx("X17").is_ok());
+        assert!(s.parse_fx("X20").unwrap_err().message.contains("X0–X17"));
+        assert!(s.parse_fx("CN235").is_ok() && s.parse_fx("CN40").is_err());
+        assert!(s.parse_fx("D8000").is_ok());
+        let p = space("FX2N", Proto::Port);
+        let e = p.parse_fx("D600").unwrap_err();
+        assert!(e.message.contains("programming port") && e.message.contains("D0–D511"), "{e}");
+        assert!(e.hint.as_deref().unwrap().contains("fxlink"));
+        assert!(p.parse_fx("M1024").is_err());
+        let l = space("FX2N", Proto::Link);
+        assert!(l.parse_fx("D600").is_ok() && l.parse_fx("D7999").is_ok() && l.parse_fx("D8000").is_ok());
+        assert_eq!(l.parse_fx("TC0").unwrap_err().kind, ErrorKind::Unsupported);
+        assert!(l.parse_fx("K8M3040").is_ok() && l.parse_fx("K8M3041").is_err());
+        assert!(l.parse_fx("D7999/DINT").is_err(), "the pair needs D8000, which is special");
+    }
+
+    #[test]
+    fn describe_warns_on_unaligned_groups_and_help_shows_addresses() {
+        let s = space("FX2N", Proto::Port);
+        let op = s.parse("K4M3").unwrap()[0];
+        assert!(s.describe(&op).unwrap().contains("warning"), "{:?}", s.describe(&op));
+        let op = s.parse("K4M10").unwrap()[0];
+        assert!(!s.describe(&op).unwrap().contains("warning"));
+        let h = s.help("M500").unwrap();
+        assert!(h.contains("byte address 013EH") && h.contains("force address 09F4H"), "{h}");
+        assert!(space("FX2N", Proto::Link).help("D100").unwrap().contains("device D0100"));
+        assert!(s.complete("k4").iter().any(|c| c.text == "K4M0"));
+        assert!(s.complete("T").iter().any(|c| c.text == "TN"));
+        assert!(s.complete("M80").iter().any(|c| c.text == "M8002" && c.meaning.contains("initial pulse")));
+        let d = s.parse("D8000").unwrap()[0];
+        assert_eq!(s.describe(&d).unwrap(), "watchdog time, ms");
+        let m = s.parse("M8100").unwrap()[0];
+        assert_eq!(s.describe(&m).unwrap(), "special auxiliary relay");
+    }
+}

@@ -1,0 +1,382 @@
+//! The simulator's control language — faults, switches, pulses, strictness — as ONE
+//! grammar with two ways in: `servo sim …` in the shell (and Lua's `servo:sim_fault(…)`)
+//! applies it to an in-process line directly, and a served line (`plcsh sim serve
+//! --servo-pty LINK`) takes the same text on its control socket `LINK.ctl`, one request
+//! per line, one JSON reply per line:
+//!
+//! ```text
+//! → id=1 fault no-reply count=2
+//! ← {"ok":true,"text":"drive id 1: no reply for the next 2 requests", …}
+//! ```
+//!
+//! Words (`id=N` may appear anywhere; without it the drive is the one the shell's device
+//! talks to, or every drive for line faults sent to the socket):
+//! `fault [drive] [CODE]` · `fault no-reply|bad-checksum|drop-echo [count=N|all]` ·
+//! `fault delay DURATION [count=…]` · `fault abort OBJECT CODE [count=…]` · `fault clear` ·
+//! `switch [home|neg|pos] POS|off` · `pulses freq=HZ count=N [dir=fwd|rev]` ·
+//! `strict on|off`.
+
+use super::drive::DEFAULT_FAULT;
+use super::faults::{FaultKind, LineFault};
+use super::SimLine;
+use crate::core::literal::parse_duration_us;
+use crate::core::{Error, ErrorKind, Result};
+use crate::servo::objects;
+use serde_json::{json, Value as Json};
+use std::io::{BufRead, BufReader, Write};
+use std::path::Path;
+use std::time::Duration;
+
+/// Which switch `switch` moves.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Which {
+    Home,
+    NegLimit,
+    PosLimit,
+}
+
+/// One control request.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Control {
+    /// Drive fault: Fault state, the code in 603F.00, 2601.00 bit 0.
+    DriveFault(u16),
+    /// A line fault; `count` `None` = until cleared.
+    Line(FaultKind, Option<u32>),
+    ClearFaults,
+    Switch(Which, Option<f64>),
+    Pulses {
+        freq: f64,
+        count: u64,
+        dir: i8,
+    },
+    Strict(bool),
+}
+
+/// A parsed request: what, and for which drive id (`None`: not given).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Request {
+    pub control: Control,
+    pub id: Option<u8>,
+}
+
+pub const USAGE: &str = "servo sim fault [drive] [CODE] | fault no-reply|bad-checksum|drop-echo [count=N|all] | fault delay 50ms | fault abort OBJECT CODE | fault clear | switch [home|neg|pos] POS|off | pulses freq=HZ count=N [dir=fwd|rev] | strict on|off";
+
+fn usage(msg: impl Into<String>, col: usize) -> Error {
+    Error::usage(msg).column(col).hint(USAGE)
+}
+
+/// A number: decimal, `16#…` or `0x…`.
+fn number(text: &str, col: usize) -> Result<i64> {
+    let t = text.replace('_', "");
+    let r = if let Some(h) = t.strip_prefix("16#").or_else(|| t.strip_prefix("0x")).or_else(|| t.strip_prefix("0X")) {
+        i64::from_str_radix(h, 16).ok()
+    } else {
+        t.parse::<i64>().ok().or_else(|| t.parse::<f64>().ok().filter(|f| f.fract() == 0.0).map(|f| f as i64))
+    };
+    r.ok_or_else(|| usage(format!("`{text}` is not a number"), col))
+}
+
+/// Parses the words after `servo sim` (each with its column).
+pub fn parse(words: &[(usize, &str)]) -> Result<Request> {
+    let mut id = None;
+    let mut opts: Vec<(usize, &str, &str)> = Vec::new();
+    let mut pos: Vec<(usize, &str)> = Vec::new();
+    for &(c, w) in words {
+        match w.split_once('=') {
+            Some(("id", v)) => {
+                id = Some(u8::try_from(number(v, c + 3)?).map_err(|_| usage("a drive id is 0-255", c + 3))?)
+            }
+            Some((k, v)) => opts.push((c, k, v)),
+            None => pos.push((c, w)),
+        }
+    }
+    let opt = |k: &str| opts.iter().find(|o| o.1 == k).map(|o| (o.0 + k.len() + 1, o.2));
+    let known = |allowed: &[&str]| -> Result<()> {
+        match opts.iter().find(|o| !allowed.contains(&o.1)) {
+            Some(&(c, k, _)) => Err(usage(format!("unknown option `{k}`"), c)),
+            None => Ok(()),
+        }
+    };
+    let count = || -> Result<Option<u32>> {
+        match opt("count") {
+            None => Ok(Some(1)),
+            Some((_, "all")) => Ok(None),
+            Some((c, v)) => u32::try_from(number(v, c)?)
+                .ok()
+                .filter(|n| *n > 0)
+                .map(Some)
+                .ok_or_else(|| usage("count is 1 or more, or all", c)),
+        }
+    };
+    let first = pos.first().copied().unwrap_or((0, ""));
+    let control = match (first.1, &pos[1.min(pos.len())..]) {
+        ("fault", rest) => {
+            let kind = rest.first().map(|w| w.1).unwrap_or("drive");
+            let args = if rest.is_empty() { rest } else { &rest[1..] };
+            match kind {
+                "no-reply" | "bad-checksum" | "drop-echo" => {
+                    known(&["count"])?;
+                    let k = match kind {
+                        "no-reply" => FaultKind::NoReply,
+                        "bad-checksum" => FaultKind::BadChecksum,
+                        _ => FaultKind::DropEcho,
+                    };
+                    Control::Line(k, count()?)
+                }
+                "delay" => {
+                    known(&["count"])?;
+                    let &[(c, d)] = args else { return Err(usage("fault delay needs a duration, e.g. 50ms", first.0)) };
+                    let us = parse_duration_us(d).map_err(|m| usage(m, c))?;
+                    Control::Line(FaultKind::Delay(Duration::from_micros(us.max(0) as u64)), count()?)
+                }
+                "abort" => {
+                    known(&["count"])?;
+                    let &[(oc, o), (cc, code)] = args else {
+                        return Err(usage("fault abort needs an object and an abort code, e.g. fault abort target_position 16#06090030", first.0));
+                    };
+                    let r = objects::parse(o).map_err(|e| e.column(oc))?;
+                    let code = u32::try_from(number(code, cc)?).map_err(|_| usage("an abort code is 32 bits", cc))?;
+                    Control::Line(FaultKind::Abort { index: r.index, sub: r.sub, code }, count()?)
+                }
+                "clear" => Control::ClearFaults,
+                "drive" => {
+                    known(&[])?;
+                    drive_fault(args.first().copied())?
+                }
+                _ => {
+                    known(&[])?;
+                    drive_fault(rest.first().copied())?
+                }
+            }
+        }
+        ("switch", rest) => {
+            known(&[])?;
+            let (which, at) = match rest {
+                [(_, "home"), p] => (Which::Home, *p),
+                [(_, "neg"), p] => (Which::NegLimit, *p),
+                [(_, "pos"), p] => (Which::PosLimit, *p),
+                [p] => (Which::Home, *p),
+                _ => return Err(usage("usage: servo sim switch [home|neg|pos] POS|off", first.0)),
+            };
+            let pos = match at.1 {
+                "off" if which != Which::Home => None,
+                p => Some(number(p, at.0)? as f64),
+            };
+            Control::Switch(which, pos)
+        }
+        ("pulses", []) => {
+            known(&["freq", "count", "dir"])?;
+            let (fc, f) = opt("freq").ok_or_else(|| usage("pulses needs freq=HZ", first.0))?;
+            let (cc, n) = opt("count").ok_or_else(|| usage("pulses needs count=N", first.0))?;
+            let freq = f.trim_end_matches("Hz").trim_end_matches("hz").parse::<f64>().ok().filter(|f| *f > 0.0);
+            let freq = freq.ok_or_else(|| usage(format!("`{f}` is not a frequency in Hz"), fc))?;
+            let count = u64::try_from(number(n, cc)?).map_err(|_| usage("count is 0 or more", cc))?;
+            let dir = match opt("dir") {
+                None | Some((_, "fwd" | "+" | "cw" | "1")) => 1,
+                Some((_, "rev" | "-" | "ccw" | "-1")) => -1,
+                Some((c, d)) => return Err(usage(format!("`dir={d}` is not fwd or rev"), c)),
+            };
+            Control::Pulses { freq, count, dir }
+        }
+        ("strict", [(_, "on")]) => Control::Strict(true),
+        ("strict", [(_, "off")]) => Control::Strict(false),
+        (w, _) => return Err(usage(format!("unknown `servo sim {w}`"), first.0)),
+    };
+    Ok(Request { control, id })
+}
+
+fn drive_fault(code: Option<(usize, &str)>) -> Result<Control> {
+    Ok(Control::DriveFault(match code {
+        None => DEFAULT_FAULT,
+        Some((c, s)) => u16::try_from(number(s, c)?)
+            .map_err(|_| Error::new(ErrorKind::Value, "a fault code is 16 bits").column(c))?,
+    }))
+}
+
+/// Splits a control line into words with their columns.
+pub fn words(line: &str) -> Vec<(usize, &str)> {
+    let mut out = Vec::new();
+    let mut start = None;
+    for (i, ch) in line.char_indices().chain(std::iter::once((line.len(), ' '))) {
+        match (ch.is_whitespace(), start) {
+            (false, None) => start = Some(i),
+            (true, Some(s)) => {
+                out.push((s, &line[s..i]));
+                start = None;
+            }
+            _ => {}
+        }
+    }
+    out
+}
+
+/// Applies a request to `line`; `default_id` is the drive when the request names none
+/// (`None`: line faults apply to every id, drive controls need an id or a single drive).
+pub fn apply(line: &mut SimLine, req: &Request, default_id: Option<u8>) -> Result<(String, Json)> {
+    let id = req.id.or(default_id);
+    let drive_id = || -> Result<u8> {
+        match id {
+            Some(i) if line.ids().contains(&i) => Ok(i),
+            Some(i) => Err(Error::usage(format!("no simulated drive has id {i} (ids {:?})", line.ids()))),
+            None => match line.ids().as_slice() {
+                [one] => Ok(*one),
+                ids => Err(Error::usage(format!("several drives ({ids:?}) on the line: say which with id=N"))),
+            },
+        }
+    };
+    let who = |i: Option<u8>| i.map(|i| format!("drive id {i}")).unwrap_or_else(|| "every drive".into());
+    Ok(match &req.control {
+        Control::DriveFault(code) => {
+            let i = drive_id()?;
+            line.inject_fault(i, *code);
+            (format!("drive id {i}: fault 16#{code:04X} injected"), json!({"fault": code, "id": i}))
+        }
+        Control::Line(kind, count) => {
+            if id.is_some() {
+                drive_id()?; // an id must name a drive on the line
+            }
+            line.faults.add(LineFault { kind: *kind, id, remaining: *count });
+            let n = match count {
+                Some(1) => "the next request".to_string(),
+                Some(n) => format!("the next {n} requests"),
+                None => "every request until `servo sim fault clear`".to_string(),
+            };
+            (
+                format!("{}: {} for {n}", who(id), kind.describe()),
+                json!({"line_fault": kind.describe(), "count": count, "id": id}),
+            )
+        }
+        Control::ClearFaults => {
+            line.faults.clear();
+            ("line faults cleared".into(), json!({"cleared": true}))
+        }
+        Control::Switch(which, pos) => {
+            let i = drive_id()?;
+            let d = line.drive(i).expect("checked id");
+            let (name, key) = match which {
+                Which::Home => {
+                    d.switches.home = pos.unwrap_or(d.switches.home);
+                    ("home switch", "home_switch")
+                }
+                Which::NegLimit => {
+                    d.switches.neg_limit = *pos;
+                    ("negative limit switch", "neg_limit")
+                }
+                Which::PosLimit => {
+                    d.switches.pos_limit = *pos;
+                    ("positive limit switch", "pos_limit")
+                }
+            };
+            let at = pos.map(|p| format!("at {p} inc")).unwrap_or_else(|| "off".into());
+            let mut data = json!({"id": i});
+            data[key] = json!(pos.map(|p| p as i64));
+            (format!("drive id {i}: {name} {at}"), data)
+        }
+        Control::Pulses { freq, count, dir } => {
+            let i = drive_id()?;
+            let (start, end) = line.add_pulses(i, *freq, *count, *dir).map_err(Error::usage)?;
+            (
+                format!(
+                    "drive id {i}: {count} pulses at {freq} Hz {} from t={start:.6} s to t={end:.6} s",
+                    if *dir < 0 { "reverse" } else { "forward" }
+                ),
+                json!({"pulses": count, "freq": freq, "dir": dir, "start_s": start, "end_s": end, "id": i}),
+            )
+        }
+        Control::Strict(on) => {
+            line.set_strict(*on);
+            let rule = if *on { "sizes must match the object (0x06070010 otherwise)" } else { "lenient sizes" };
+            (format!("write sizes: {rule}"), json!({"strict": on}))
+        }
+    })
+}
+
+/// Answers one control-socket line (the served simulator's side).
+pub fn answer_line(line: &mut SimLine, text: &str) -> Json {
+    let ws = words(text);
+    match parse(&ws).and_then(|r| apply(line, &r, None)) {
+        Ok((text, mut data)) => {
+            if let Json::Object(m) = &mut data {
+                m.insert("ok".into(), json!(true));
+                m.insert("text".into(), json!(text));
+            }
+            data
+        }
+        Err(e) => json!({"ok": false, "error": e.message, "hint": e.hint}),
+    }
+}
+
+/// Sends one control line to a served simulator's socket and returns its reply.
+pub fn send(path: &Path, text: &str) -> Result<(String, Json)> {
+    let io = |e: std::io::Error| {
+        Error::link(format!("cannot reach the simulator's control socket {}", path.display()))
+            .cause(e)
+            .hint("is `plcsh sim serve --servo-pty …` still running?")
+    };
+    let mut s = std::os::unix::net::UnixStream::connect(path).map_err(io)?;
+    s.set_read_timeout(Some(Duration::from_secs(5))).map_err(io)?;
+    writeln!(s, "{}", text.replace('\n', " ")).map_err(io)?;
+    let mut reply = String::new();
+    BufReader::new(&s).read_line(&mut reply).map_err(io)?;
+    let j: Json = serde_json::from_str(&reply)
+        .map_err(|e| Error::link(format!("the control socket answered `{}`", reply.trim())).cause(e))?;
+    if j["ok"] == json!(true) {
+        Ok((j["text"].as_str().unwrap_or_default().to_string(), j))
+    } else {
+        let mut e = Error::usage(j["error"].as_str().unwrap_or("the simulator refused").to_string());
+        if let Some(h) = j["hint"].as_str() {
+            e = e.hint(h.to_string());
+        }
+        Err(e)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn p(s: &str) -> Result<Request> {
+        parse(&words(s))
+    }
+
+    #[test]
+    fn the_grammar() {
+        assert_eq!(p("fault").unwrap().control, Control::DriveFault(DEFAULT_FAULT));
+        assert_eq!(p("fault 16#2310").unwrap().control, Control::DriveFault(0x2310));
+        assert_eq!(
+            p("fault drive 0x7500 id=2").unwrap(),
+            Request { control: Control::DriveFault(0x7500), id: Some(2) }
+        );
+        assert_eq!(p("fault no-reply").unwrap().control, Control::Line(FaultKind::NoReply, Some(1)));
+        assert_eq!(p("fault bad-checksum count=all").unwrap().control, Control::Line(FaultKind::BadChecksum, None));
+        assert_eq!(
+            p("fault delay 50ms count=3").unwrap().control,
+            Control::Line(FaultKind::Delay(Duration::from_millis(50)), Some(3))
+        );
+        assert_eq!(
+            p("fault abort target_position 16#06090030").unwrap().control,
+            Control::Line(FaultKind::Abort { index: 0x607A, sub: 0, code: 0x0609_0030 }, Some(1))
+        );
+        assert_eq!(p("switch neg -3000").unwrap().control, Control::Switch(Which::NegLimit, Some(-3000.0)));
+        assert_eq!(p("switch pos off").unwrap().control, Control::Switch(Which::PosLimit, None));
+        assert_eq!(p("switch 250").unwrap().control, Control::Switch(Which::Home, Some(250.0)));
+        assert_eq!(
+            p("pulses freq=1000 count=500 dir=rev").unwrap().control,
+            Control::Pulses { freq: 1000.0, count: 500, dir: -1 }
+        );
+        assert_eq!(p("strict on").unwrap().control, Control::Strict(true));
+        for bad in [
+            "fault abort target_position",
+            "fault delay",
+            "pulses freq=0 count=1",
+            "juggle",
+            "switch home off",
+            "fault no-reply count=0",
+            "fault no-reply speed=3",
+        ] {
+            let e = p(bad).unwrap_err();
+            assert_eq!(e.kind, ErrorKind::Usage, "{bad}: {e}");
+        }
+        assert_eq!(p("fault abort nosuch 1").unwrap_err().column, Some(12));
+    }
+}

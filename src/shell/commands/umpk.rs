@@ -1,0 +1,502 @@
+//! `umpk …`: the UMPK8/UMPK16 terminal commands (manual §4.1), the real-time monitor,
+//! Intel HEX programming (§4.2) and the simulator's inputs, through `Device::family_ops()`
+//! downcast to [`crate::umpk::driver::Driver`] (the serial driver and the in-process
+//! simulator alike).
+//!
+//! Which controller: `umpk [DEVICE] SUBCOMMAND …` — a first word naming an open device picks
+//! it; otherwise the current device if it is a UMPK, otherwise the only UMPK open.
+//!
+//! `umpk monitor [OPERAND…] [count=N] [for=DURATION] [every=DURATION]` shows the monitor
+//! stream like `watch` (a live table on a terminal, lines on a pipe, JSON lines with
+//! `--json`); sample times are cycles × 10 ms, since every packet is one cycle (§4.1.11). The
+//! samples become the last trace, so `plot` draws them.
+
+use super::k2cmd::{check_options, opt, value_err};
+use super::watch::{Mode, Render};
+use super::CommandSpec;
+use crate::core::literal::parse_duration_us;
+use crate::core::{DataType, Error, Result, Value};
+use crate::output::Outcome;
+use crate::session::Reading;
+use crate::shell::lex::{self, Word};
+use crate::shell::sample::{Recording, Sample};
+use crate::shell::{Args, Shell};
+use crate::umpk::codec::{error_code_text, letter_text, Reply, INFO_LEN};
+use crate::umpk::driver::Driver;
+use crate::umpk::hex;
+use crate::umpk::sim::{describe_status, logic::CYCLE_MS};
+use crate::umpk::space::UmpkOperand;
+use std::io::{IsTerminal, Write};
+use std::time::Duration;
+
+pub const UMPK: CommandSpec = CommandSpec {
+    name: "umpk",
+    aliases: &[],
+    usage: "umpk [DEVICE] info|program-info|errors [clear]|timing|reset|echo on|off|monitor [OPERAND…] [count=N] [for=2s] [every=100ms] [quiet]|program FILE.hex [info=\"…\"] [run]|send TEXT|sim input I3=1|I3 freq=2Hz|I3 off|sim flash-fail PAGE|off|sim reference [NAME]",
+    summary: "UMPK8/UMPK16 teaching PLCs: controller and program info, error history, timing, reset, echo, real-time monitor, Intel HEX programming",
+    subcommands: &["info", "program-info", "errors", "timing", "reset", "echo", "monitor", "program", "send", "sim"],
+    run: umpk,
+};
+
+fn is_umpk(sh: &mut Shell, i: usize) -> bool {
+    sh.session.entry(i).device.family_ops().is_some_and(|a| a.is::<Driver>())
+}
+
+fn pick<'a>(sh: &mut Shell, words: &'a [Word<'a>]) -> Result<(usize, &'a [Word<'a>])> {
+    if let Some(&(col, first)) = words.first() {
+        if !UMPK.subcommands.contains(&first) {
+            if let Ok(i) = sh.session.index(first) {
+                if !is_umpk(sh, i) {
+                    return Err(Error::usage(format!("`{first}` is not a UMPK")).column(col));
+                }
+                return Ok((i, &words[1..]));
+            }
+        }
+    }
+    if let Ok(i) = sh.session.current_index() {
+        if is_umpk(sh, i) {
+            return Ok((i, words));
+        }
+    }
+    let all: Vec<usize> = (0..sh.session.entries().len()).filter(|&i| is_umpk(sh, i)).collect();
+    match all.as_slice() {
+        [i] => Ok((*i, words)),
+        [] => Err(Error::usage("no UMPK is open")
+            .hint("open one with --device lab=umpk:/dev/ttyUSB0 or connect lab sim-umpk:UMPK16")),
+        _ => Err(Error::usage("several UMPKs are open; name one (umpk NAME info)")),
+    }
+}
+
+fn driver(sh: &mut Shell, dev: usize) -> &mut Driver {
+    sh.session.entry(dev).device.family_ops().and_then(|a| a.downcast_mut::<Driver>()).expect("picked a UMPK")
+}
+
+fn umpk(sh: &mut Shell, args: Args) -> Result<Outcome> {
+    let words = lex::words_in(&args)?;
+    let (dev, rest) = pick(sh, &words)?;
+    let Some(&(col, sub)) = rest.first() else {
+        return Err(Error::usage("umpk needs a subcommand").hint(UMPK.usage).column(args.offset));
+    };
+    let rest = &rest[1..];
+    let name = sh.session.entries()[dev].name.clone();
+    let r = match sub {
+        "info" => info(driver(sh, dev)),
+        "program-info" => {
+            let t = driver(sh, dev).program_info()?;
+            let text = String::from_utf8_lossy(&t).into_owned();
+            let shown = if text.trim().is_empty() {
+                "(22 spaces: no program, Wait mode)".to_string()
+            } else {
+                format!("\"{text}\"")
+            };
+            Ok(Outcome::new("umpk").text(format!("program info {shown}")).with("program_info", text))
+        }
+        "errors" => errors(driver(sh, dev), rest),
+        "timing" => {
+            let t = driver(sh, dev).timing()?;
+            Ok(Outcome::new("umpk")
+                .text(format!(
+                    "longest cycle {:.1} µs, firmware {:.1} µs, program {:.1} µs (T = (LLMM − HHKK) × 0.271 µs; HHKK={:04X} LLMM={:04X})",
+                    t.total_us(),
+                    t.firmware_us(),
+                    t.program_us(),
+                    t.firmware,
+                    t.total
+                ))
+                .with("firmware_counts", t.firmware)
+                .with("total_counts", t.total)
+                .with("program_us", t.program_us())
+                .with("firmware_us", t.firmware_us())
+                .with("total_us", t.total_us()))
+        }
+        "reset" => {
+            driver(sh, dev).reset()?;
+            Ok(Outcome::new("umpk").text("reset: the controller restarted (R received; echo is on)"))
+        }
+        "echo" => {
+            let on = match rest.first().map(|w| w.1) {
+                Some("on") => true,
+                Some("off") => false,
+                _ => return Err(Error::usage("umpk echo on|off").column(col)),
+            };
+            driver(sh, dev).set_echo(on)?;
+            Ok(Outcome::new("umpk").text(format!("echo {}", if on { "on" } else { "off" })).with("echo", on))
+        }
+        "monitor" => monitor(sh, dev, rest),
+        "program" => program(sh, dev, rest, col),
+        "send" => send(driver(sh, dev), rest, col),
+        "sim" => sim(driver(sh, dev), rest, col),
+        other => Err(Error::usage(format!("unknown `umpk {other}`")).column(col).hint(UMPK.usage)),
+    };
+    r.map(|mut o| {
+        o.device = Some(name.clone());
+        o
+    })
+    .map_err(|e| e.device(name))
+}
+
+/// True when the current device is a UMPK (`sim input I3=1` then means its input).
+pub fn current_is_umpk(sh: &mut Shell) -> bool {
+    sh.session.current_index().is_ok_and(|i| is_umpk(sh, i))
+}
+
+/// `sim input I3=1 | I3 freq=2Hz | I3 off` on the current UMPK: the same as `umpk sim input …`.
+pub fn sim_input(sh: &mut Shell, args: Args) -> Result<Outcome> {
+    let words = lex::words_in(&args)?;
+    let dev = sh.session.current_index()?;
+    let name = sh.session.entries()[dev].name.clone();
+    let col = words.first().map_or(args.offset, |w| w.0);
+    let mut o = sim(driver(sh, dev), &words, col).map_err(|e| e.device(&name))?;
+    o.device = Some(name);
+    Ok(o)
+}
+
+fn info(d: &mut Driver) -> Result<Outcome> {
+    let i = d.controller_info()?;
+    let st = d.layout.decode(i.status);
+    let mode = if st.programming {
+        "Programming"
+    } else if st.work {
+        "Work"
+    } else {
+        "Wait"
+    };
+    let bits = describe_status(&st);
+    let model = d.model().name;
+    let echo = d.echo.unwrap_or(true);
+    let mut rows = vec![
+        vec!["model".into(), format!("{model} (MM={:02X})", i.model)],
+        vec!["firmware".into(), format!("{} (VV={:02X})", i.version, i.version.0)],
+        vec!["inputs / outputs".into(), format!("{} / {}", i.inputs, i.outputs)],
+        vec!["mode".into(), mode.into()],
+        vec![
+            "status word".into(),
+            format!("{:02X}: {}", i.status, if bits.is_empty() { "no flag set".into() } else { bits.join(", ") }),
+        ],
+        vec!["microcode".into(), format!("{:02X}", i.microcode)],
+        vec!["echo".into(), if echo { "on" } else { "off" }.into()],
+    ];
+    let sim = d.simulator();
+    if let Some(s) = &sim {
+        rows.push(vec!["program (simulator)".into(), s.lock().unwrap_or_else(|p| p.into_inner()).program_kind()]);
+    }
+    Ok(Outcome::new("umpk")
+        .table(&["field", "value"], rows)
+        .with("model", model)
+        .with("model_code", i.model)
+        .with("firmware", i.version.to_string())
+        .with("inputs", i.inputs)
+        .with("outputs", i.outputs)
+        .with("mode", mode)
+        .with("status", i.status)
+        .with("status_bits", st)
+        .with("microcode", i.microcode)
+        .with("echo", echo))
+}
+
+fn errors(d: &mut Driver, rest: &[Word]) -> Result<Outcome> {
+    if rest.first().is_some_and(|w| w.1 == "clear") {
+        d.clear_errors()?;
+        return Ok(Outcome::new("umpk").text("error history cleared"));
+    }
+    let e = d.errors()?;
+    let codes: Vec<u8> = e.iter().copied().filter(|&c| c != 0).collect();
+    let rows: Vec<Vec<String>> =
+        e.iter().enumerate().map(|(k, &c)| vec![(k + 1).to_string(), c.to_string(), error_code_text(c)]).collect();
+    let o = Outcome::new("umpk").with("errors", e.to_vec()).with("codes", &codes);
+    Ok(if codes.is_empty() {
+        o.text("the error history is empty")
+    } else {
+        o.table(&["#", "code", "meaning (newest first; 1–127 user, 128–255 system)"], rows)
+    })
+}
+
+fn send(d: &mut Driver, rest: &[Word], col: usize) -> Result<Outcome> {
+    let Some(&(_, text)) = rest.first() else {
+        return Err(Error::usage("umpk send needs a command or record, e.g. umpk send ?03FD").column(col));
+    };
+    let x = d.send_raw(text)?;
+    let (shown, meaning) = match &x.reply {
+        Reply::Ok => ("R".to_string(), "ok".to_string()),
+        Reply::Letter(l) => ((*l as char).to_string(), letter_text(*l).to_string()),
+        Reply::Packet(p) => {
+            (format!("#{}", p.iter().map(|b| format!("{b:02X}")).collect::<String>()), "a packet".into())
+        }
+        Reply::Text(t) => (format!("#{}", String::from_utf8_lossy(t)), "program info".into()),
+    };
+    Ok(Outcome::new("umpk")
+        .text(format!("{text} → {shown} ({meaning}; echo {})", if x.echoed { "on" } else { "off" }))
+        .with("reply", shown)
+        .with("meaning", meaning)
+        .with("echoed", x.echoed))
+}
+
+fn sim(d: &mut Driver, rest: &[Word], col: usize) -> Result<Outcome> {
+    let s = d.simulator().ok_or_else(|| {
+        Error::unsupported("umpk sim works on the simulator (sim-umpk:UMPK16); a real UMPK's inputs are wired")
+            .column(col)
+    })?;
+    let mut u = s.lock().unwrap_or_else(|p| p.into_inner());
+    let (pos, opts) = lex::options(rest.get(1..).unwrap_or(&[]));
+    match rest.first().map(|w| w.1) {
+        Some("input") => {
+            check_options(&opts, &["freq"], UMPK.usage)?;
+            let &(c, first) =
+                pos.first().ok_or_else(|| Error::usage("umpk sim input I3=1 | I3 freq=2Hz | I3 off").column(col))?;
+            let (op_text, value) = match first.split_once('=') {
+                Some((o, v)) => (o, Some(v)),
+                None => (first, pos.get(1).map(|w| w.1)),
+            };
+            let ops = parse_operand(&u, op_text).map_err(|e| e.column(c))?;
+            let o = UmpkOperand::from_core(&ops[0]);
+            if o.area().letter != 'I' {
+                return Err(value_err(c, format!("{} is not an input: the simulator's inputs are I0…", o.name())));
+            }
+            let msg = if let Some((fc, f)) = opt(&opts, "freq") {
+                let hz = crate::k2::helpers::parse_freq_hz(f).map_err(|m| value_err(fc, m))?;
+                let period = (1000.0 / hz / CYCLE_MS as f64).round() as u64;
+                if !(2..=1_000_000).contains(&period) {
+                    return Err(value_err(fc, format!("freq={f}: the 10 ms cycle sees square waves of 0.0001–50 Hz")));
+                }
+                u.set_wave(o.index, period);
+                format!("{}: square wave, period {} ms", o.name(), period * CYCLE_MS)
+            } else {
+                let on = match value.map(str::to_ascii_lowercase).as_deref() {
+                    Some("1") | Some("on") | Some("true") => true,
+                    Some("0") | Some("off") | Some("false") => false,
+                    _ => return Err(value_err(c, format!("{}: give =1, =0, off or freq=…", o.name()))),
+                };
+                u.set_input(o.index, on);
+                format!("{} = {}", o.name(), on as u8)
+            };
+            Ok(Outcome::new("umpk").text(msg))
+        }
+        Some("reference") => {
+            use crate::umpk::sim::reference;
+            let Some(&(c, name)) = pos.first() else {
+                let list: Vec<String> =
+                    reference::REFERENCES.iter().map(|r| format!("{}: {}", r.name, r.description)).collect();
+                return Ok(Outcome::new("umpk").text(list.join("\n")).with("references", reference::names()));
+            };
+            let r = reference::find(name).ok_or_else(|| {
+                value_err(c, format!("no reference program `{name}`"))
+                    .hint(format!("reference programs: {}", reference::names()))
+            })?;
+            let runner = (r.build)(&mut u.logic);
+            u.load_logic(runner);
+            Ok(Outcome::new("umpk")
+                .text(format!("reference program {} loaded ({}); mode {}", r.name, r.description, u.mode().name()))
+                .with("program", r.name)
+                .with("mode", u.mode().name()))
+        }
+        Some("flash-fail") => {
+            let page = match pos.first().map(|w| w.1) {
+                Some("off") => None,
+                Some(p) => Some(p.parse::<usize>().map_err(|_| value_err(col, format!("`{p}` is not a page number")))?),
+                None => return Err(Error::usage("umpk sim flash-fail PAGE|off").column(col)),
+            };
+            u.flash_fail = page;
+            Ok(Outcome::new("umpk").text(match page {
+                Some(p) => format!("flash writes to page {p} (16#{:04X}) will fail with W", p * 64),
+                None => "flash writes succeed".into(),
+            }))
+        }
+        _ => Err(Error::usage("umpk sim input …|flash-fail …|reference …").column(col).hint(UMPK.usage)),
+    }
+}
+
+/// Parses an operand with the simulated controller's model bounds.
+fn parse_operand(u: &crate::umpk::sim::Umpk, text: &str) -> Result<Vec<crate::core::Operand>> {
+    use crate::core::OperandSpace;
+    crate::umpk::space::UmpkSpace { model: u.model }.parse(text)
+}
+
+fn program(sh: &mut Shell, dev: usize, rest: &[Word], col: usize) -> Result<Outcome> {
+    let (pos, opts) = lex::options(rest);
+    check_options(&opts, &["info"], UMPK.usage)?;
+    let Some(&(fc, file)) = pos.first() else {
+        return Err(Error::usage("umpk program needs a HEX file").column(col).hint(UMPK.usage));
+    };
+    let run = match pos.get(1) {
+        None => false,
+        Some((_, "run")) => true,
+        Some(&(c, w)) => {
+            return Err(Error::usage(format!("unexpected `{w}` (only `run` may follow the file)")).column(c))
+        }
+    };
+    let info = match opt(&opts, "info") {
+        None => None,
+        Some((c, v)) => {
+            let v = v.trim_matches('"');
+            if v.is_empty() || v.len() > INFO_LEN || !v.bytes().all(|b| (0x20..0x7F).contains(&b)) {
+                return Err(value_err(c, format!("info=\"{v}\": 1–22 printable ASCII characters (manual §4.2.4)")));
+            }
+            Some(v.as_bytes().to_vec())
+        }
+    };
+    let text =
+        std::fs::read_to_string(file).map_err(|e| Error::io(format!("cannot read {file}")).cause(e).column(fc))?;
+    let d = driver(sh, dev);
+    let memory = d.model().program_bytes;
+    let prog = hex::parse_file(&text, memory).map_err(|m| {
+        Error::new(crate::core::ErrorKind::Value, format!("{file}: {m}")).hint(format!(
+            "nothing was sent; the {} takes records 00/01/02/03 inside 16#0000..16#{:04X}",
+            d.model().name,
+            memory - 1
+        ))
+    })?;
+    let show = std::io::stderr().is_terminal() && !sh.style.json;
+    let mut progress = |k: usize, n: usize| {
+        if show {
+            eprint!("\r\x1b[2Kprogramming {} record {k}/{n}", crate::shell::progress::bar(k as f64 / n as f64, 20));
+            let _ = std::io::stderr().flush();
+        }
+    };
+    let d = driver(sh, dev);
+    let r = d.program(&prog, info.as_deref(), &mut progress);
+    if show {
+        eprint!("\r\x1b[2K");
+    }
+    let r = r?;
+    if run {
+        d.reset()?;
+    }
+    let stopped = if r.was_running {
+        "; the controller was in Work mode: its program stopped and its outputs went off when programming began"
+    } else {
+        ""
+    };
+    let next = if run {
+        "reset: the program is enabled (Work mode)"
+    } else {
+        "the controller stays in Programming mode; `umpk reset` enables the program"
+    };
+    Ok(Outcome::new("umpk")
+        .text(format!(
+            "programmed {} bytes in {} page(s), {} records acknowledged{}{stopped}; {next}",
+            r.bytes,
+            r.pages,
+            r.records,
+            if r.info.is_empty() { String::new() } else { format!(", program info \"{}\"", r.info) }
+        ))
+        .with("bytes", r.bytes)
+        .with("pages", r.pages)
+        .with("records", r.records)
+        .with("info", &r.info)
+        .with("run", run)
+        .with("was_running", r.was_running))
+}
+
+fn monitor(sh: &mut Shell, dev: usize, rest: &[Word]) -> Result<Outcome> {
+    let (mut pos, opts) = lex::options(rest);
+    check_options(&opts, &["count", "for", "every"], UMPK.usage)?;
+    let quiet = pos.iter().any(|w| w.1 == "quiet");
+    pos.retain(|w| w.1 != "quiet");
+    let dur = |key: &str| -> Result<Option<Duration>> {
+        opt(&opts, key)
+            .map(|(c, v)| {
+                parse_duration_us(v).map(|us| Duration::from_micros(us.max(0) as u64)).map_err(|m| value_err(c, m))
+            })
+            .transpose()
+    };
+    let mut count: Option<u64> = opt(&opts, "count")
+        .map(|(c, v)| v.parse().map_err(|_| value_err(c, format!("count={v} is not a number"))))
+        .transpose()?;
+    let span = dur("for")?;
+    if quiet && count.is_none() && span.is_none() {
+        // Nothing is shown while it runs (Lua): one sample unless told otherwise.
+        count = Some(1);
+    }
+    let mode = if sh.style.json {
+        Mode::Json
+    } else if std::io::stdout().is_terminal() && !quiet {
+        Mode::Live { color: sh.style.color }
+    } else {
+        Mode::Lines
+    };
+    let every_cycles = match dur("every")? {
+        Some(d) => (d.as_millis() as u64 / CYCLE_MS).max(1),
+        None if matches!(mode, Mode::Live { .. }) => 10,
+        None => 1,
+    };
+    let model = driver(sh, dev).model();
+    let texts: Vec<String> = if pos.is_empty() {
+        vec![format!("I0..I{}", model.inputs - 1), format!("Q0..Q{}", model.outputs - 1)]
+    } else {
+        pos.iter().map(|w| w.1.to_string()).collect()
+    };
+    let mut ops = Vec::new();
+    {
+        let space = sh.session.entry(dev).device.operands();
+        for (k, t) in texts.iter().enumerate() {
+            let col = pos.get(k).map_or(0, |w| w.0);
+            ops.extend(space.parse(t).map_err(|e| e.shift(col))?);
+        }
+    }
+    let parsed: Vec<UmpkOperand> = ops.iter().map(UmpkOperand::from_core).collect();
+    let labels: Vec<String> = parsed.iter().map(UmpkOperand::name).collect();
+    let every = Duration::from_millis(every_cycles * CYCLE_MS);
+    let mut render = Render::new(mode, labels.clone(), every);
+    let mut rec = Recording::new(labels.clone(), every);
+    let interrupt = sh.session.interrupt.clone();
+    let d = driver(sh, dev);
+    d.monitor_start()?;
+    let (mut packets, mut shown) = (0u64, 0u64);
+    let mut out = std::io::stdout();
+    let result: Result<()> = (|| loop {
+        if interrupt.load(std::sync::atomic::Ordering::Relaxed) {
+            return Ok(());
+        }
+        let Some(m) = d.monitor_next(d.timeout)? else {
+            return Err(Error::link("the real-time monitor stream stopped (no packet within the timeout)"));
+        };
+        let t = Duration::from_millis(packets * CYCLE_MS);
+        if span.is_some_and(|s| t > s) {
+            return Ok(());
+        }
+        packets += 1;
+        if (packets - 1) % every_cycles != 0 {
+            continue;
+        }
+        let readings = parsed
+            .iter()
+            .map(|o| {
+                let on = match o.area().letter {
+                    'I' => m.inputs >> o.index & 1 != 0,
+                    'Q' => m.outputs >> o.index & 1 != 0,
+                    'T' => m.timers >> o.index & 1 != 0,
+                    'C' => m.counters >> o.index & 1 != 0,
+                    _ => m.markers >> o.index & 1 != 0,
+                };
+                Reading { operand: o.name(), value: Value::Bool(on), dtype: DataType::Bool, device: None }
+            })
+            .collect();
+        let s = Sample { index: shown, t, readings };
+        if !quiet {
+            render.sample(&s, &mut out).map_err(|e| Error::io(format!("cannot write the monitor output: {e}")))?;
+        }
+        rec.push(&s);
+        shown += 1;
+        if count.is_some_and(|c| shown >= c) {
+            return Ok(());
+        }
+    })();
+    let stop = d.monitor_stop();
+    result?;
+    stop?;
+    let columns: serde_json::Map<String, serde_json::Value> = rec
+        .labels
+        .iter()
+        .zip(&rec.columns)
+        .map(|(l, c)| (l.clone(), serde_json::json!(c.iter().map(|v| *v as u8).collect::<Vec<_>>())))
+        .collect();
+    let t_ms: Vec<u64> = rec.t.iter().map(|t| (t * 1000.0).round() as u64).collect();
+    sh.last_trace = Some(rec);
+    let o = Outcome::new("umpk")
+        .with("packets", packets)
+        .with("samples", shown)
+        .with("span_ms", packets * CYCLE_MS)
+        .with("t_ms", t_ms)
+        .with("columns", columns);
+    Ok(if quiet { o.text(format!("{shown} monitor samples from {packets} packets")) } else { o.quiet() })
+}
