@@ -57,6 +57,8 @@ pub struct Cli {
 }
 
 #[derive(Subcommand, Debug)]
+// Parsed once per process: the size of the largest variant (`sim serve`'s flags) costs nothing.
+#[allow(clippy::large_enum_variant)]
 pub enum Sub {
     /// List the K2 model catalogue; `models MODEL` shows one in full (areas, counters, manual notes).
     Models {
