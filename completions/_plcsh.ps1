@@ -37,7 +37,7 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
             [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
-            [CompletionResult]::new('models', 'models', [CompletionResultType]::ParameterValue, 'List the K2 model catalogue (areas, I/O, counters, pulse outputs, manual disagreements)')
+            [CompletionResult]::new('models', 'models', [CompletionResultType]::ParameterValue, 'List the K2 model catalogue; `models MODEL` shows one in full (areas, counters, manual notes)')
             [CompletionResult]::new('devices', 'devices', [CompletionResultType]::ParameterValue, 'List open devices and the device profiles (devices.toml), with problems in that file')
             [CompletionResult]::new('completions', 'completions', [CompletionResultType]::ParameterValue, 'Print a shell completion script (bash, zsh, fish, powershell), or write them all')
             [CompletionResult]::new('sim', 'sim', [CompletionResultType]::ParameterValue, 'Serve simulators to other programs: `sim serve` puts the simulated K2 on Modbus TCP / RTU and drives on a pty')
@@ -204,6 +204,7 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             break
         }
         'plcsh;run' {
+            [CompletionResult]::new('--write-dir', '--write-dir', [CompletionResultType]::ParameterName, 'With --sandbox: the directory the script may write files in (none without it)')
             [CompletionResult]::new('--model', '--model', [CompletionResultType]::ParameterName, 'Model of the default simulated PLC')
             [CompletionResult]::new('-d', '-d', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
             [CompletionResult]::new('--device', '--device', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
@@ -211,6 +212,7 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)')
             [CompletionResult]::new('--state', '--state', [CompletionResultType]::ParameterName, 'Simulator state file (backup area, retained ranges, clock); default in the user''s data directory')
             [CompletionResult]::new('--record', '--record', [CompletionResultType]::ParameterName, 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)')
+            [CompletionResult]::new('--sandbox', '--sandbox', [CompletionResultType]::ParameterName, 'Run a script someone else wrote: no os.execute, io.popen, os.remove/rename/exit, C libraries or debug library; files written only under --write-dir')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'Print one JSON object per command result')
             [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
             [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
@@ -279,7 +281,7 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             break
         }
         'plcsh;help' {
-            [CompletionResult]::new('models', 'models', [CompletionResultType]::ParameterValue, 'List the K2 model catalogue (areas, I/O, counters, pulse outputs, manual disagreements)')
+            [CompletionResult]::new('models', 'models', [CompletionResultType]::ParameterValue, 'List the K2 model catalogue; `models MODEL` shows one in full (areas, counters, manual notes)')
             [CompletionResult]::new('devices', 'devices', [CompletionResultType]::ParameterValue, 'List open devices and the device profiles (devices.toml), with problems in that file')
             [CompletionResult]::new('completions', 'completions', [CompletionResultType]::ParameterValue, 'Print a shell completion script (bash, zsh, fish, powershell), or write them all')
             [CompletionResult]::new('sim', 'sim', [CompletionResultType]::ParameterValue, 'Serve simulators to other programs: `sim serve` puts the simulated K2 on Modbus TCP / RTU and drives on a pty')

@@ -790,12 +790,16 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__run)
-            opts="-v -d -h --json --verbose --model --device --time --config --state --record --help"
+            opts="-v -d -h --sandbox --write-dir --json --verbose --model --device --time --config --state --record --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
             fi
             case "${prev}" in
+                --write-dir)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 --model)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0

@@ -36,7 +36,7 @@ complete -c plcsh -n "__fish_plcsh_needs_command" -l json -d 'Print one JSON obj
 complete -c plcsh -n "__fish_plcsh_needs_command" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_needs_command" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c plcsh -n "__fish_plcsh_needs_command" -s V -l version -d 'Print version'
-complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "models" -d 'List the K2 model catalogue (areas, I/O, counters, pulse outputs, manual disagreements)'
+complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "models" -d 'List the K2 model catalogue; `models MODEL` shows one in full (areas, counters, manual notes)'
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "devices" -d 'List open devices and the device profiles (devices.toml), with problems in that file'
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "completions" -d 'Print a shell completion script (bash, zsh, fish, powershell), or write them all'
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "sim" -d 'Serve simulators to other programs: `sim serve` puts the simulated K2 on Modbus TCP / RTU and drives on a pty'
@@ -147,6 +147,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subco
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from help" -f -a "il" -d 'Print the helper program (K2 instruction list) for KincoBuilder'
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l write-dir -d 'With --sandbox: the directory the script may write files in (none without it)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
@@ -154,6 +155,7 @@ stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l state -d 'Simulator state file (backup area, retained ranges, clock); default in the user\'s data directory' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l sandbox -d 'Run a script someone else wrote: no os.execute, io.popen, os.remove/rename/exit, C libraries or debug library; files written only under --write-dir'
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -s h -l help -d 'Print help (see more with \'--help\')'
@@ -193,7 +195,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l record -d 'Record
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -s h -l help -d 'Print help (see more with \'--help\')'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices completions sim agent run record replay help" -f -a "models" -d 'List the K2 model catalogue (areas, I/O, counters, pulse outputs, manual disagreements)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices completions sim agent run record replay help" -f -a "models" -d 'List the K2 model catalogue; `models MODEL` shows one in full (areas, counters, manual notes)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices completions sim agent run record replay help" -f -a "devices" -d 'List open devices and the device profiles (devices.toml), with problems in that file'
 complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices completions sim agent run record replay help" -f -a "completions" -d 'Print a shell completion script (bash, zsh, fish, powershell), or write them all'
 complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices completions sim agent run record replay help" -f -a "sim" -d 'Serve simulators to other programs: `sim serve` puts the simulated K2 on Modbus TCP / RTU and drives on a pty'

@@ -18,8 +18,21 @@
 local M = {}
 M.__index = M
 
+-- An unknown option key is an error (a misspelt `optional` would otherwise be ignored).
+local function check_opts(opts, known, what)
+  for k in pairs(opts or {}) do
+    if not known[k] then
+      local names = {}
+      for n in pairs(known) do names[#names + 1] = n end
+      table.sort(names)
+      error(string.format("%s: unknown option `%s` (options: %s)", what, tostring(k), table.concat(names, ", ")), 3)
+    end
+  end
+end
+
 --- A new checklist. opts: keep_going (run every step even after a failure).
 function M.new(title, opts)
+  check_opts(opts, { keep_going = true }, "commission.new")
   return setmetatable({ title = title or "commissioning", steps = {}, opts = opts or {} }, M)
 end
 
@@ -28,6 +41,7 @@ end
 function M:step(name, fn, opts)
   assert(type(name) == "string", "step name must be a string")
   assert(type(fn) == "function", "step '" .. name .. "' needs a function")
+  check_opts(opts, { optional = true }, "step '" .. name .. "'")
   self.steps[#self.steps + 1] = { name = name, fn = fn, opts = opts or {} }
   return self
 end

@@ -38,6 +38,10 @@ pub struct Outcome {
     pub writes: Vec<Reading>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub message: Option<String>,
+    /// Things the user should know about how the command was read or what it did (a warning,
+    /// a spelling accepted); printed as `note: …` before the result, `notes` in JSON.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub notes: Vec<String>,
     /// Command-specific fields (flattened into the JSON object).
     #[serde(flatten)]
     pub data: serde_json::Map<String, serde_json::Value>,
@@ -48,6 +52,10 @@ pub struct Outcome {
 impl Outcome {
     pub fn new(cmd: &str) -> Outcome {
         Outcome { cmd: cmd.to_string(), ..Default::default() }
+    }
+    pub fn note(mut self, n: impl Into<String>) -> Outcome {
+        self.notes.push(n.into());
+        self
     }
     pub fn quiet(mut self) -> Outcome {
         self.view = View::Quiet;
@@ -113,6 +121,9 @@ pub fn write_outcome(w: &mut dyn Write, style: Style, o: &Outcome) -> io::Result
         serde_json::to_writer(&mut *w, &JsonOk { ok: true, outcome: o })?;
         return writeln!(w);
     }
+    for n in &o.notes {
+        writeln!(w, "note: {n}")?;
+    }
     match &o.view {
         View::Quiet => Ok(()),
         View::Text(t) => writeln!(w, "{t}"),
@@ -166,6 +177,19 @@ pub fn binary(raw: u64, bits: u32) -> String {
     let s = format!("{:0w$b}", raw & crate::core::value::mask(bits.clamp(1, 32)), w = bits as usize);
     let chunks: Vec<String> = s.as_bytes().rchunks(4).rev().map(|c| String::from_utf8_lossy(c).into_owned()).collect();
     format!("2#{}", chunks.join("_"))
+}
+
+/// Reports one error where its reader looks: with `--json` as an error object on `out` (the
+/// stream a pipeline parses), otherwise as text on standard error, as mbpoll and most
+/// command-line tools do (`out` is flushed first so the two streams stay in order).
+pub fn report_error(out: &mut dyn Write, style: Style, cmd: &str, e: &Error, line: Option<&str>) -> io::Result<()> {
+    if style.json {
+        return write_error(out, style, cmd, e, line);
+    }
+    out.flush()?;
+    let mut err = io::stderr().lock();
+    write_error(&mut err, style, cmd, e, line)?;
+    err.flush()
 }
 
 /// Writes one error, with a caret under the column when the error came from `line`.

@@ -1,5 +1,6 @@
 //! Line charts of named series (time, value): in the terminal with Unicode braille (2×4 dots
-//! per character) and as an SVG picture. Pure: series in, text out, no I/O.
+//! per character), and as SVG or PNG pictures drawn with `plotters` (axes, ticks, grid, axis
+//! names with units, a title and a legend) for reports.
 //!
 //! Used by `plot` (the last `trace`) and meant for anything else with a value over time — a
 //! PTO profile plan (frequency over time, drawn before it is sent) is a [`Series`] with
@@ -9,12 +10,13 @@
 //! use plcsh::plot::{terminal, svg, Series};
 //! let plan = Series::new("PTO0 frequency", "Hz", vec![(0.0, 0.0), (0.5, 1000.0), (1.5, 1000.0), (2.0, 0.0)]);
 //! let text = terminal(&[plan.clone()], 60, 8);   // print it
-//! let picture = svg(&[plan], 800, 200);          // write it to a file
+//! let picture = svg(&[plan], "PTO0 plan", 800, 300).unwrap();   // or png(…, path)
 //! assert!(text.contains("PTO0 frequency") && picture.starts_with("<svg"));
 //! ```
 //!
-//! Hand-written rather than a crate: the charts are ~200 lines, the same series model feeds
-//! both the terminal and the SVG, and the output is plain text we can test exactly.
+//! The terminal chart is hand-written (plain text we can test exactly); pictures use plotters,
+//! a maintained plotting library, with its pure-Rust bitmap and SVG backends and a built-in
+//! font, so no system library is needed.
 
 use std::fmt::Write;
 
@@ -38,6 +40,18 @@ impl Series {
     pub fn stepped(mut self) -> Series {
         self.steps = true;
         self
+    }
+
+    /// The data's extent, without adjustments (`(inf, -inf)` when empty).
+    fn range_raw(&self) -> ((f64, f64), (f64, f64)) {
+        let (mut t0, mut t1, mut v0, mut v1) = (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
+        for &(t, v) in self.points.iter().filter(|(t, v)| t.is_finite() && v.is_finite()) {
+            t0 = t0.min(t);
+            t1 = t1.max(t);
+            v0 = v0.min(v);
+            v1 = v1.max(v);
+        }
+        ((t0, t1), (v0, v1))
     }
 
     fn range(&self) -> ((f64, f64), (f64, f64)) {
@@ -173,70 +187,197 @@ pub fn terminal(series: &[Series], width: usize, height: usize) -> String {
     out
 }
 
-fn xml(s: &str) -> String {
-    s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
+/// DejaVu Sans (Bitstream Vera license, `assets/fonts/DejaVuSans-LICENSE.txt`), built in so
+/// pictures render the same everywhere without fontconfig or a system font.
+static FONT: &[u8] = include_bytes!("../assets/fonts/DejaVuSans.ttf");
+const FAMILY: &str = "sans-serif";
+/// Line colours (matplotlib's first four, legible on white and in greyscale print).
+const COLORS: [plotters::style::RGBColor; 4] = [
+    plotters::style::RGBColor(31, 119, 180),
+    plotters::style::RGBColor(214, 39, 40),
+    plotters::style::RGBColor(44, 160, 44),
+    plotters::style::RGBColor(255, 127, 14),
+];
+
+fn register_font() {
+    static ONCE: std::sync::Once = std::sync::Once::new();
+    ONCE.call_once(|| {
+        let _ = plotters::style::register_font(FAMILY, plotters::style::FontStyle::Normal, FONT);
+    });
 }
 
-/// An SVG picture: one panel per series, stacked, each `panel_height` pixels high.
-pub fn svg(series: &[Series], width: u32, panel_height: u32) -> String {
-    let (w, ph) = (width.max(200) as f64, panel_height.max(80) as f64);
-    let (left, right, top, bottom) = (70.0, 20.0, 24.0, 28.0);
-    let total = ph * series.len().max(1) as f64;
-    let mut out = String::new();
-    let _ = writeln!(
-        out,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{total}" viewBox="0 0 {w} {total}" font-family="sans-serif" font-size="12">"#
-    );
-    let _ = writeln!(out, r#"<rect width="{w}" height="{total}" fill="white"/>"#);
-    for (i, s) in series.iter().enumerate() {
-        let y0 = i as f64 * ph;
-        let ((t0, t1), (v0, v1)) = s.range();
-        let (pw, plot_h) = (w - left - right, ph - top - bottom);
-        let x = |t: f64| left + (t - t0) / (t1 - t0) * pw;
-        let y = |v: f64| y0 + top + (v1 - v) / (v1 - v0) * plot_h;
-        let unit = if s.unit.is_empty() { String::new() } else { format!(" ({})", s.unit) };
-        let _ = writeln!(
-            out,
-            r#"<text x="{left}" y="{}" font-weight="bold">{}{}</text>"#,
-            y0 + 16.0,
-            xml(&s.name),
-            xml(&unit)
-        );
-        let _ = writeln!(
-            out,
-            r##"<path d="M{left} {} V{} H{}" fill="none" stroke="#888"/>"##,
-            y0 + top,
-            y0 + top + plot_h,
-            left + pw
-        );
-        for (v, anchor_y) in [(v1, y0 + top + 4.0), (v0, y0 + top + plot_h)] {
-            let _ = writeln!(out, r#"<text x="{}" y="{anchor_y}" text-anchor="end">{}</text>"#, left - 6.0, number(v));
+/// Series with the same unit share a panel (the legend tells them apart); each unit gets its own.
+fn panels(series: &[Series]) -> Vec<Vec<&Series>> {
+    let mut out: Vec<Vec<&Series>> = Vec::new();
+    for s in series {
+        match out.iter_mut().find(|g| g[0].unit == s.unit && !s.unit.is_empty()) {
+            Some(g) => g.push(s),
+            None => out.push(vec![s]),
         }
-        for (t, anchor) in [(t0, "start"), (t1, "end")] {
-            let _ =
-                writeln!(out, r#"<text x="{}" y="{}" text-anchor="{anchor}">{}</text>"#, x(t), y0 + ph - 8.0, time(t));
-        }
-        let mut d = String::new();
-        let mut prev: Option<(f64, f64)> = None;
-        for &(t, v) in s.points.iter().filter(|(t, v)| t.is_finite() && v.is_finite()) {
-            let (px, py) = (x(t), y(v));
-            match prev {
-                None => {
-                    let _ = write!(d, "M{px:.1} {py:.1}");
-                }
-                Some((_, last_y)) if s.steps => {
-                    let _ = write!(d, " L{px:.1} {last_y:.1} L{px:.1} {py:.1}");
-                }
-                Some(_) => {
-                    let _ = write!(d, " L{px:.1} {py:.1}");
-                }
-            }
-            prev = Some((px, py));
-        }
-        let _ = writeln!(out, r##"<path d="{d}" fill="none" stroke="#1f77b4" stroke-width="1.5"/>"##);
     }
-    out.push_str("</svg>\n");
     out
+}
+
+/// The axis range of a panel: a little headroom, a BOOL as 0…1, a flat line in the middle.
+fn panel_range(group: &[&Series]) -> ((f64, f64), (f64, f64)) {
+    let (mut t0, mut t1, mut v0, mut v1) = (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
+    for s in group {
+        let ((a, b), (c, d)) = s.range_raw();
+        t0 = t0.min(a);
+        t1 = t1.max(b);
+        v0 = v0.min(c);
+        v1 = v1.max(d);
+    }
+    if t0 > t1 {
+        return ((0.0, 1.0), (0.0, 1.0));
+    }
+    if t1 == t0 {
+        t1 = t0 + 1.0;
+    }
+    if v0 >= 0.0 && v1 <= 1.0 && group.iter().all(|s| s.points.iter().all(|p| p.1 == 0.0 || p.1 == 1.0)) {
+        return ((t0, t1), (-0.1, 1.1));
+    }
+    if v1 == v0 {
+        let pad = if v0 == 0.0 { 1.0 } else { v0.abs() * 0.1 };
+        return ((t0, t1), (v0 - pad, v1 + pad));
+    }
+    let pad = (v1 - v0) * 0.06;
+    // Frequencies are read against zero; other non-negative data keeps its axis above zero.
+    let from_zero = v0 >= 0.0 && group.iter().all(|s| s.unit == "Hz");
+    let lo = if from_zero || (v0 >= 0.0 && v0 - pad < 0.0) { 0.0 } else { v0 - pad };
+    ((t0, t1), (lo, v1 + pad))
+}
+
+/// The drawn points: steps become horizontal-then-vertical pairs. A series of only 0 and 1 (a
+/// bit) is drawn as steps too: a bit holds its level until the next sample.
+fn polyline(s: &Series) -> Vec<(f64, f64)> {
+    let pts: Vec<(f64, f64)> = s.points.iter().copied().filter(|(t, v)| t.is_finite() && v.is_finite()).collect();
+    let bit = pts.iter().all(|p| p.1 == 0.0 || p.1 == 1.0);
+    if !s.steps && !bit {
+        return pts;
+    }
+    let mut out = Vec::with_capacity(pts.len() * 2);
+    for (k, p) in pts.iter().enumerate() {
+        if k > 0 {
+            out.push((p.0, pts[k - 1].1));
+        }
+        out.push(*p);
+    }
+    out
+}
+
+/// Draws the chart on any plotters backend: a title, then one panel per unit with axes,
+/// ticks, a grid, axis names with units and a legend.
+fn draw<DB: plotters::prelude::DrawingBackend>(
+    root: plotters::drawing::DrawingArea<DB, plotters::coord::Shift>,
+    series: &[Series],
+    title: &str,
+) -> Result<(), String> {
+    use plotters::prelude::*;
+    register_font();
+    let e = |e: plotters::drawing::DrawingAreaErrorKind<DB::ErrorType>| format!("cannot draw the plot: {e}");
+    root.fill(&WHITE).map_err(e)?;
+    let root = root.titled(title, (FAMILY, 22)).map_err(e)?;
+    let groups = panels(series);
+    let areas = root.split_evenly((groups.len().max(1), 1));
+    for (area, group) in areas.iter().zip(&groups) {
+        let ((t0, t1), (v0, v1)) = panel_range(group);
+        let unit = &group[0].unit;
+        let caption = group.iter().map(|s| s.name.as_str()).collect::<Vec<_>>().join(", ");
+        let mut chart = ChartBuilder::on(area)
+            .caption(caption, (FAMILY, 16))
+            .margin(12)
+            .x_label_area_size(40)
+            .y_label_area_size(70)
+            .build_cartesian_2d(t0..t1, v0..v1)
+            .map_err(e)?;
+        let y_desc = if unit.is_empty() { "value".to_string() } else { unit.clone() };
+        let is_bool = v0 == -0.1 && v1 == 1.1;
+        chart
+            .configure_mesh()
+            .x_desc("time (s)")
+            .y_desc(y_desc)
+            .x_label_formatter(&|x| number(*x))
+            .y_label_formatter(&|y| number(*y))
+            .y_labels(if is_bool { 3 } else { 8 })
+            .light_line_style(RGBColor(235, 235, 235))
+            .bold_line_style(RGBColor(200, 200, 200))
+            .label_style((FAMILY, 13))
+            .axis_desc_style((FAMILY, 14))
+            .draw()
+            .map_err(e)?;
+        for (i, s) in group.iter().enumerate() {
+            let color = COLORS[i % COLORS.len()];
+            let label = if s.unit.is_empty() { s.name.clone() } else { format!("{} ({})", s.name, s.unit) };
+            chart
+                .draw_series(LineSeries::new(polyline(s), color.stroke_width(2)))
+                .map_err(e)?
+                .label(label)
+                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2)));
+        }
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::UpperRight)
+            .background_style(WHITE.mix(0.85))
+            .border_style(RGBColor(160, 160, 160))
+            .label_font((FAMILY, 13))
+            .draw()
+            .map_err(e)?;
+    }
+    root.present().map_err(e)
+}
+
+/// An SVG picture of the series, `width` × `height` pixels.
+pub fn svg(series: &[Series], title: &str, width: u32, height: u32) -> Result<String, String> {
+    let mut buf = String::new();
+    {
+        use plotters::prelude::IntoDrawingArea;
+        let root = plotters::prelude::SVGBackend::with_string(&mut buf, (width, height)).into_drawing_area();
+        draw(root, series, title)?;
+    }
+    Ok(buf)
+}
+
+/// A PNG picture of the series, `width` × `height` pixels, written to `path`.
+pub fn png(series: &[Series], title: &str, width: u32, height: u32, path: &std::path::Path) -> Result<(), String> {
+    use plotters::prelude::IntoDrawingArea;
+    let root = plotters::prelude::BitMapBackend::new(path, (width, height)).into_drawing_area();
+    draw(root, series, title)
+}
+
+/// Smallest and largest picture side, in pixels.
+pub const PICTURE_SIDES: std::ops::RangeInclusive<u32> = 100..=8000;
+
+/// Writes the picture `path` names: `.png` or `.svg`, anything else is refused.
+pub fn write_picture(path: &str, series: &[Series], title: &str, (w, h): (u32, u32)) -> crate::core::Result<()> {
+    use crate::core::Error;
+    let lower = path.to_ascii_lowercase();
+    let r = if lower.ends_with(".png") {
+        png(series, title, w, h, std::path::Path::new(path))
+    } else if lower.ends_with(".svg") {
+        svg(series, title, w, h).and_then(|text| std::fs::write(path, text).map_err(|e| e.to_string()))
+    } else {
+        return Err(
+            Error::usage(format!("to={path}: pictures are .png or .svg")).hint("e.g. to=ramp.png or to=ramp.svg")
+        );
+    };
+    r.map_err(|m| Error::io(format!("cannot write {path}: {m}")))
+}
+
+/// The default picture size: 900 wide, 300 per panel.
+pub fn default_size(series: &[Series]) -> (u32, u32) {
+    (900, 60 + 280 * panels(series).len().max(1) as u32)
+}
+
+/// `size=900x400` → (900, 400).
+pub fn parse_size(text: &str) -> std::result::Result<(u32, u32), String> {
+    let (w, h) =
+        text.split_once(['x', 'X']).ok_or_else(|| format!("size={text} is not WIDTHxHEIGHT (e.g. 900x400)"))?;
+    let n = |s: &str| s.trim().parse::<u32>().ok().filter(|n| PICTURE_SIDES.contains(n));
+    match (n(w), n(h)) {
+        (Some(w), Some(h)) => Ok((w, h)),
+        _ => Err(format!("size={text}: each side is {}…{} pixels", PICTURE_SIDES.start(), PICTURE_SIDES.end())),
+    }
 }
 
 #[cfg(test)]
@@ -281,16 +422,39 @@ mod tests {
     }
 
     #[test]
-    fn svg_has_a_panel_per_series_and_escapes_names() {
-        let a = Series::new("VW0", "", vec![(0.0, 1.0), (0.5, 3.0)]);
+    fn svg_has_axes_a_title_a_legend_and_a_panel_per_unit() {
+        let a = Series::new("VW0", "rpm", vec![(0.0, 1.0), (0.5, 3.0)]);
         let b = Series::new("a<b", "", vec![(0.0, 0.0), (0.5, 1.0)]).stepped();
-        let s = svg(&[a, b], 400, 150);
+        let s = svg(&[a, b], "trace", 600, 500).unwrap();
         assert!(s.starts_with("<svg") && s.trim_end().ends_with("</svg>"));
-        assert!(s.contains(r#"height="300""#));
-        assert!(s.contains("a&lt;b") && !s.contains("a<b"));
-        assert_eq!(s.matches("stroke=\"#1f77b4\"").count(), 2);
-        // 400 wide: plot x 70…380; 150 high: plot y 24…122 (margins 24 top, 28 bottom).
-        assert!(s.contains("M70.0 122.0 L380.0 24.0"), "{s}");
+        assert!(s.contains(r#"width="600""#) && s.contains(r#"height="500""#));
+        assert!(s.contains("a&lt;b") && !s.contains("\na<b\n"), "names are escaped");
+        assert_eq!(s.matches("\ntime (s)\n").count(), 2, "an x axis name per panel");
+        assert!(s.contains("\nrpm\n") && s.contains("\nVW0 (rpm)\n") && s.contains("\ntrace\n"), "{s}");
+    }
+
+    #[test]
+    fn pngs_have_the_requested_size() {
+        let dir = std::env::temp_dir().join(format!("plcsh-plot-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("p.png");
+        let s = Series::new("PTO0 frequency", "Hz", vec![(0.0, 0.0), (1.0, 1000.0), (2.0, 1000.0)]).stepped();
+        png(&[s], "plan", 640, 360, &path).unwrap();
+        let bytes = std::fs::read(&path).unwrap();
+        assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
+        assert_eq!(u32::from_be_bytes(bytes[16..20].try_into().unwrap()), 640);
+        assert_eq!(u32::from_be_bytes(bytes[20..24].try_into().unwrap()), 360);
+        assert!(write_picture(dir.join("p.jpg").to_str().unwrap(), &[], "x", (200, 200)).is_err());
+        assert_eq!(parse_size("900x400"), Ok((900, 400)));
+        assert!(parse_size("9x4").is_err());
+    }
+
+    #[test]
+    fn a_bool_gets_a_0_to_1_axis_and_a_flat_line_a_centred_one() {
+        let b = Series::new("Q0.0", "", vec![(0.0, 1.0), (1.0, 1.0)]);
+        assert_eq!(panel_range(&[&b]).1, (-0.1, 1.1));
+        let f = Series::new("VW0", "", vec![(0.0, 50.0), (1.0, 50.0)]);
+        assert_eq!(panel_range(&[&f]).1, (45.0, 55.0));
     }
 
     #[test]

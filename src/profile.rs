@@ -145,6 +145,34 @@ impl Profiles {
         out
     }
 
+    /// Checks every profile against the device it names, at load (not only at `connect`):
+    /// the URL scheme, the model and the allow items. Each profile is checked on its offline
+    /// twin — the simulator of its family and model ([`offline_twin`]), so nothing is sent
+    /// to a real device at start-up. A profile that fails is skipped with its file:line.
+    pub fn validate(&mut self, clock: &crate::core::Clock) {
+        let mut kept = Vec::new();
+        for p in std::mem::take(&mut self.list) {
+            match check(&p, clock) {
+                Ok(()) => kept.push(p),
+                Err(e) => {
+                    let (file, line) = p.origin.rsplit_once(':').unwrap_or((&p.origin, "0"));
+                    let what = format!("profile `{}` ({}): ", p.name, p.origin);
+                    let mut message = format!(
+                        "profile `{}` skipped: {}",
+                        p.name,
+                        e.message.strip_prefix(&what).unwrap_or(&e.message)
+                    );
+                    if let Some(h) = &e.hint {
+                        message.push_str(&format!(" ({h})"));
+                    }
+                    self.problems.push(Problem { file: file.to_string(), line: line.parse().unwrap_or(0), message });
+                }
+            }
+        }
+        self.list = kept;
+        self.problems.sort_by_key(|p| p.line);
+    }
+
     pub fn list(&self) -> &[Profile] {
         &self.list
     }
@@ -240,6 +268,40 @@ fn profile(
         p.url = format!("{url}{sep}{}", extra.join("&"));
     }
     Ok(p)
+}
+
+/// The simulator that stands for a profile's device when it is checked at load: the same
+/// family and model, without touching the wire. `None` for a scheme no family knows. A new
+/// family adds its schemes here beside its line in `session::open_url`.
+pub fn offline_twin(u: &DeviceUrl) -> Option<String> {
+    let k2_model = || u.param("model").unwrap_or(crate::k2::catalog::DEFAULT_MODEL).to_string();
+    match u.scheme.as_str() {
+        "sim" => Some(format!("sim:{}", u.param("model").unwrap_or(&u.target))),
+        "tcp" | "rtu" | "rtu+tcp" => Some(format!("sim:{}", k2_model())),
+        "kinco" | "sim-servo" => Some("sim-servo:?id=1".to_string()),
+        "fx" | "fxlink" => Some(format!("sim-fx:{}", u.param("model").unwrap_or("FX2N"))),
+        "sim-fx" => {
+            Some(format!("sim-fx:{}", u.param("model").unwrap_or(if u.target.is_empty() { "FX2N" } else { &u.target })))
+        }
+        "umpk" => Some(u.param("model").map_or("sim-umpk:".to_string(), |m| format!("sim-umpk:?model={m}"))),
+        "sim-umpk" => Some(match u.param("model") {
+            Some(m) => format!("sim-umpk:?model={m}"),
+            None => format!("sim-umpk:{}", u.target),
+        }),
+        _ => None,
+    }
+}
+
+/// One profile against its offline twin: scheme, model, allow items.
+fn check(p: &Profile, clock: &crate::core::Clock) -> Result<()> {
+    let u = DeviceUrl::parse(&p.url)?;
+    let Some(twin) = offline_twin(&u) else {
+        return Err(Error::usage(format!("unknown device scheme `{}:` in {}", u.scheme, p.url))
+            .hint("known schemes: sim:MODEL, tcp://HOST:PORT, rtu:/dev/PORT, rtu+tcp://HOST:PORT, kinco:/dev/PORT, sim-servo:, fx:/dev/PORT, fxlink:/dev/PORT, sim-fx:FX2N, umpk:/dev/PORT, sim-umpk:UMPK16"));
+    };
+    let device = crate::session::open_url(&twin, clock)?;
+    Guard::build(p, device.operands())?;
+    Ok(())
 }
 
 /// Opens profile `profile` under device name `name`: its URL, then its options, then its

@@ -108,6 +108,24 @@ impl Session {
         }
     }
 
+    /// True when a device on a wire (not a simulator) is open: its time is the machine's.
+    pub fn has_wire_device(&self) -> bool {
+        self.devices.iter().any(|e| !e.device.info().simulated)
+    }
+
+    /// Waits `d` for a script or command. In stepped time with only simulators open, the
+    /// virtual clock jumps; with a device on a wire open, the wait is real (a timeout on a
+    /// real machine must not expire in no time) and the virtual clock then moves by the same
+    /// amount, so simulators stay in step. False when interrupted (Ctrl-C).
+    pub fn sleep(&self, d: std::time::Duration) -> bool {
+        if self.clock.is_stepped() && self.has_wire_device() {
+            let ok = Clock::sleep_real(d, &self.interrupt);
+            self.clock.step(d);
+            return ok;
+        }
+        self.clock.sleep(d, &self.interrupt)
+    }
+
     /// Opens `url` under `name` (replacing a device of that name) and makes it current if
     /// it is the first. A `url` without a scheme is a profile name (`crate::profile`).
     pub fn open(&mut self, name: &str, url: &str) -> Result<()> {

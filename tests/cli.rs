@@ -42,9 +42,12 @@ fn a_bad_item_writes_nothing_and_the_repl_continues() {
 
 #[test]
 fn human_errors_point_at_the_column() {
-    let o = run(&["-c", "set VW0=1, VB2=300"], "");
-    let s = stdout(&o);
-    assert!(s.contains("  set VW0=1, VB2=300\n                 ^\n"), "{s}");
+    // Human-readable errors go to stderr (as mbpoll's do); stdout keeps only results.
+    let o = run(&["-c", "get VW0; set VW0=1, VB2=300"], "");
+    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(stdout(&o), "VW0  0\n", "no error text on stdout");
+    let s = String::from_utf8_lossy(&o.stderr).into_owned();
+    assert!(s.contains("  get VW0; set VW0=1, VB2=300\n                          ^\n"), "{s}");
     assert!(s.contains("out of range for BYTE"), "{s}");
 }
 

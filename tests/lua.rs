@@ -24,12 +24,25 @@ fn run_passes_arguments_and_exits_zero() {
     assert_eq!(stdout(&o), "true\tone\t--two\t2\n");
 }
 
+/// Everything after the script is the script's, even words that are plcsh flags; plcsh's
+/// flags go before the script (`--time stepped` there sets the clock).
+#[test]
+fn run_gives_every_argument_after_the_script_to_the_script() {
+    let p = script("args2.lua", "print(plcsh.stepped() and 'stepped' or 'wall', table.concat({...}, ' '))\n");
+    let o = run(&["run", p.to_str().unwrap(), "--time", "stepped", "-v", "--json", "x"], "");
+    assert!(o.status.success(), "{}", both(&o));
+    assert_eq!(stdout(&o), "wall\t--time stepped -v --json x\n");
+    let o = run(&["--time", "stepped", "run", p.to_str().unwrap(), "--model", "K209M"], "");
+    assert!(o.status.success(), "{}", both(&o));
+    assert_eq!(stdout(&o), "stepped\t--model K209M\n");
+}
+
 #[test]
 fn a_runtime_error_reports_file_and_line_and_exits_1() {
     let p = script("boom.lua", "local plc = plcsh.device('plc')\nplc.VW0 = 1\nlocal t = nil\nprint(t.x)\n");
     let o = run(&["run", p.to_str().unwrap()], "");
     assert_eq!(o.status.code(), Some(1));
-    let s = stdout(&o);
+    let s = common::stderr(&o);
     let loc = format!("{}:4:", p.display());
     assert!(s.contains(&format!("error[script]: {loc} attempt to index a nil value")), "{s}");
     assert!(s.contains("stack traceback:") && s.contains("in main chunk"), "{s}");
@@ -55,7 +68,7 @@ fn a_syntax_error_names_the_line() {
     let p = script("syntax.lua", "x = 1\ny = = 2\n");
     let o = run(&["run", p.to_str().unwrap()], "");
     assert_eq!(o.status.code(), Some(1));
-    assert!(stdout(&o).contains(&format!("error[syntax]: {}:2:", p.display())), "{}", stdout(&o));
+    assert!(common::stderr(&o).contains(&format!("error[syntax]: {}:2:", p.display())), "{}", common::stderr(&o));
 }
 
 #[test]
@@ -92,7 +105,10 @@ fn ctrl_c_during_wait_until_runs_the_abort_handlers_and_exits_non_zero() {
     let first = lines.next().unwrap().unwrap();
     assert_eq!(first, "READY");
     nix::sys::signal::kill(nix::unistd::Pid::from_raw(child.id() as i32), nix::sys::signal::Signal::SIGINT).unwrap();
-    let rest: Vec<String> = lines.map(|l| l.unwrap()).collect();
+    let mut rest: Vec<String> = lines.map(|l| l.unwrap()).collect();
+    let mut err = String::new();
+    std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut err).unwrap();
+    rest.push(err);
     let status = child.wait().unwrap();
     assert_eq!(status.code(), Some(130), "{rest:?}");
     let text = rest.join("\n");
@@ -149,7 +165,7 @@ fn a_failed_checklist_step_fails_the_script() {
     );
     let o = run(&["run", p.to_str().unwrap()], "");
     assert_eq!(o.status.code(), Some(1));
-    let s = stdout(&o);
+    let s = common::both(&o);
     assert!(s.contains("[x] 1. ok"), "{s}");
     assert!(s.contains("[ ] 2. bad — FAILED") && s.contains("actual:   0"), "{s}");
     assert!(s.contains("[-] 3. later (skipped)"), "{s}");
@@ -162,4 +178,141 @@ fn stdin_closes_cleanly_after_an_unfinished_block() {
     child.stdin.take().unwrap().write_all(b"lua\nprint(1)\n").unwrap();
     let o = child.wait_with_output().unwrap();
     assert_eq!(String::from_utf8_lossy(&o.stdout), "1\n");
+}
+
+/// Errors point at the script: a bad operand read names the script's line (not mlua's glue),
+/// in text and in `--json`'s `where`; an error caught with pcall carries file:line.
+#[test]
+fn read_errors_and_pcalled_errors_name_the_script_line() {
+    let p = script("badread.lua", "local a = 1\nlocal x = plc['Q0.8']\n");
+    let o = run(&["run", p.to_str().unwrap()], "");
+    assert_eq!(o.status.code(), Some(1));
+    let e = common::stderr(&o);
+    assert!(e.contains(&format!("{}:2: plc: bit 8", p.display())) && !e.contains("error[operand]: __mlua"), "{e}");
+    let o = run(&["--json", "run", p.to_str().unwrap()], "");
+    assert_eq!(json_lines(&o)[0]["error"]["where"], format!("{}:2", p.display()));
+
+    let p = script(
+        "pcalled.lua",
+        "local ok, e = pcall(function()\n  return plc.XYZ\nend)\nprint(ok, tostring(e):match('^[^\\n]*'))\n",
+    );
+    let o = run(&["run", p.to_str().unwrap()], "");
+    assert!(o.status.success(), "{}", both(&o));
+    assert!(stdout(&o).starts_with(&format!("false\t{}:2: error[operand]:", p.display())), "{}", stdout(&o));
+}
+
+/// A method typo says there is no such method and names the near ones; a dot instead of a
+/// colon says so.
+#[test]
+fn method_typos_and_dots_for_colons_are_explained() {
+    let p = script("typo.lua", "servo:stauts()\n");
+    let e = common::stderr(&run(&["run", p.to_str().unwrap()], ""));
+    assert!(e.contains("has no method or operand `stauts`") && e.contains("servo:status()"), "{e}");
+    assert!(!e.contains("needs a number"), "{e}");
+    let p = script("dot.lua", "local v = plc.get('VW0')\n");
+    let e = common::stderr(&run(&["run", p.to_str().unwrap()], ""));
+    assert!(e.contains(&format!("{}:1:", p.display())) && e.contains("call it with a colon, `dev:get(…)`"), "{e}");
+}
+
+/// Unknown keys in an options table are errors (a misspelt timeout would wait for ever).
+#[test]
+fn unknown_option_keys_are_refused() {
+    let p = script("opts.lua", "plcsh.wait_until(function() return false end, {timout=50})\n");
+    let o = run(&["--time", "stepped", "run", p.to_str().unwrap()], "");
+    assert_eq!(o.status.code(), Some(1));
+    let e = common::stderr(&o);
+    assert!(e.contains("unknown option `timout`") && e.contains("did you mean `timeout`?"), "{e}");
+    let p = script("opts2.lua", "print(plcsh.json.encode({1}, {prety=true}))\n");
+    let e = common::stderr(&run(&["run", p.to_str().unwrap()], ""));
+    assert!(e.contains("unknown option `prety`"), "{e}");
+    let p = script("opts3.lua", "local c = require('commission').new('x', {keep_goin=true})\n");
+    let e = common::stderr(&run(&["run", p.to_str().unwrap()], ""));
+    assert!(e.contains(&format!("{}:1: commission.new: unknown option `keep_goin`", p.display())), "{e}");
+}
+
+/// A lab grades a folder of submissions: `--json run --sandbox` refuses os.execute with a
+/// clear error naming the line, and the run ends with one summary object.
+#[test]
+fn a_sandboxed_run_refuses_os_execute_and_ends_with_a_summary() {
+    let marker = std::env::temp_dir().join(format!("plcsh-sandbox-marker-{}", std::process::id()));
+    let _ = std::fs::remove_file(&marker);
+    let p = script(
+        "student.lua",
+        &format!(
+            "plcsh.check(plc.VW0 == 0, 'VW0 starts at 0')\nplcsh.assert_eq(1 + 1, 2)\nos.execute('touch {}')\n",
+            marker.display()
+        ),
+    );
+    let o = run(&["--json", "run", "--sandbox", p.to_str().unwrap()], "");
+    assert_eq!(o.status.code(), Some(1));
+    assert!(!marker.exists(), "os.execute did not run");
+    let l = json_lines(&o);
+    assert_eq!(l.len(), 1, "one summary object: {l:?}");
+    let s = &l[0];
+    assert_eq!(s["ok"], false);
+    assert_eq!(s["error"]["where"], format!("{}:3", p.display()));
+    assert!(s["error"]["message"].as_str().unwrap().contains("os.execute is not available in a sandboxed run"));
+    assert_eq!(s["checks"], serde_json::json!({"passed": 2, "failed": 0}));
+    assert!(s["duration_ms"].as_f64().unwrap() >= 0.0);
+
+    // A passing run ends with the summary too; a failed check is counted.
+    let p = script("graded.lua", "print('hello')\nplcsh.check(true)\nlocal ok = pcall(plcsh.check, false, 'wrong')\n");
+    let l = json_lines(&run(&["--json", "run", "--sandbox", p.to_str().unwrap()], ""));
+    let s = l.last().unwrap();
+    assert_eq!(s["ok"], true, "{l:?}");
+    assert_eq!(s["checks"], serde_json::json!({"passed": 1, "failed": 1}));
+
+    // Writing: refused without --write-dir, allowed under it, refused outside it.
+    let dir = std::env::temp_dir().join(format!("plcsh-sandbox-dir-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let inside = dir.join("out.txt");
+    let w = script(
+        "writer.lua",
+        &format!("local f = assert(io.open({:?}, 'w'))\nf:write('x')\nf:close()\n", inside.to_str().unwrap()),
+    );
+    let o = run(&["run", "--sandbox", w.to_str().unwrap()], "");
+    assert!(common::stderr(&o).contains("not allowed in a sandboxed run"), "{}", common::stderr(&o));
+    let o = run(&["run", "--sandbox", "--write-dir", dir.to_str().unwrap(), w.to_str().unwrap()], "");
+    assert!(o.status.success(), "{}", both(&o));
+    assert_eq!(std::fs::read_to_string(&inside).unwrap(), "x");
+    let o = run(&["run", "--sandbox", "--write-dir", dir.join("sub").to_str().unwrap(), w.to_str().unwrap()], "");
+    assert!(common::stderr(&o).contains("is outside"), "{}", common::stderr(&o));
+    // Commands that write files follow the same rule.
+    let outside = std::env::temp_dir().join(format!("plcsh-sandbox-trace-{}.csv", std::process::id()));
+    let t = script(
+        "tracer.lua",
+        &format!("plc:trace('VW0', {{every=10, ['for']=50, to={:?}}})\n", outside.to_str().unwrap()),
+    );
+    let o =
+        run(&["--time", "stepped", "run", "--sandbox", "--write-dir", dir.to_str().unwrap(), t.to_str().unwrap()], "");
+    assert!(common::stderr(&o).contains("is outside") && !outside.exists(), "{}", both(&o));
+}
+
+/// `require` searches in the README's order: PLCSH_LIB, the user's lib, the project's lib/,
+/// then the script's own directory — and `plcsh.lib_dirs` lists every directory searched.
+#[test]
+fn require_searches_in_the_documented_order() {
+    let base = std::env::temp_dir().join(format!("plcsh-require-{}", std::process::id()));
+    let (libdir, scriptdir) = (base.join("lib"), base.join("scripts"));
+    std::fs::create_dir_all(&libdir).unwrap();
+    std::fs::create_dir_all(&scriptdir).unwrap();
+    std::fs::write(libdir.join("shadow.lua"), "return 'from PLCSH_LIB'\n").unwrap();
+    std::fs::write(scriptdir.join("shadow.lua"), "return 'from the script directory'\n").unwrap();
+    std::fs::write(scriptdir.join("own.lua"), "return 'own'\n").unwrap();
+    let s = scriptdir.join("main.lua");
+    std::fs::write(
+        &s,
+        "print((require('shadow')), (require('own')))\nprint(plcsh.lib_dirs[1], plcsh.lib_dirs[#plcsh.lib_dirs])\n",
+    )
+    .unwrap();
+    let o = plcsh().env("PLCSH_LIB", &libdir).args(["run", s.to_str().unwrap()]).output().unwrap();
+    assert!(o.status.success(), "{}", both(&o));
+    assert_eq!(stdout(&o), format!("from PLCSH_LIB\town\n{}\t{}\n", libdir.display(), scriptdir.display()),);
+}
+
+/// `-c`: a Lua `print` appears in order with the output of the commands around it.
+#[test]
+fn print_output_stays_in_order_under_dash_c() {
+    let o = run(&["-c", "set VW0=5; get VW0; lua print('between'); get VW0"], "");
+    assert_eq!(stdout(&o), "VW0  5\nbetween\nVW0  5\n");
 }

@@ -74,7 +74,7 @@ fn wait_times_out_in_virtual_time_and_errors_name_what_to_try() {
     let l = json_lines(&o);
     assert_eq!(l[0]["error"]["kind"], "unsupported");
     let o = run(&["-c", "profile 0 at VB3000 [(cycle=500us, count=1000)]"], "");
-    assert!(stdout(&o).contains("even"), "{}", stdout(&o));
+    assert!(common::stderr(&o).contains("even"), "{}", both(&o));
 }
 
 #[test]

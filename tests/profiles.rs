@@ -114,3 +114,30 @@ fn the_default_file_is_in_the_users_config_directory() {
     assert_eq!(l[0]["ok"], true, "{l:?}");
     assert!(l[1]["profile_file"].as_str().unwrap().ends_with("config/plcsh/devices.toml"));
 }
+
+/// Profiles are checked when loaded, against the simulator of their family and model (no
+/// wire traffic): a bad allow item, an unknown scheme and an unknown model are reported at
+/// start-up and in `devices` with file:line; the good profile still loads.
+#[test]
+fn profiles_are_checked_at_load_with_file_and_line() {
+    let f = config(
+        "validate",
+        "[devices.good]\nurl = \"sim:K205-16DT\"\n\n[devices.badallow]\nurl = \"tcp://127.0.0.1:1\"\nallow = [\"VW100\", \"Q0.9\"]\n\n[devices.badscheme]\nurl = \"modbus://127.0.0.1:502\"\n\n[devices.badmodel]\nurl = \"rtu:/dev/null\"\nmodel = \"K999\"\n",
+    );
+    let o = run(&["--config", f.to_str().unwrap(), "devices"], "");
+    let err = common::stderr(&o);
+    let file = f.display().to_string();
+    assert!(err.contains(&format!("{file}:4: profile `badallow` skipped")) && err.contains("Q0.9"), "{err}");
+    assert!(err.contains(&format!("{file}:8: profile `badscheme` skipped")) && err.contains("modbus"), "{err}");
+    assert!(err.contains(&format!("{file}:11: profile `badmodel` skipped")) && err.contains("K999"), "{err}");
+    let out = stdout(&o);
+    assert!(out.contains("good") && out.contains(&format!("{file}:4")), "devices lists the problems too:\n{out}");
+}
+
+#[test]
+fn a_missing_config_file_is_an_error() {
+    let o = run(&["--config", "/nonexistent/devices.toml", "-c", "get VW0"], "");
+    assert_eq!(o.status.code(), Some(2));
+    assert!(common::stderr(&o).contains("/nonexistent/devices.toml: no such file"), "{}", common::stderr(&o));
+    assert!(stdout(&o).is_empty());
+}

@@ -50,7 +50,7 @@ fn fails_when_changed(name: &str, from: &str, to: &str, at: &str, expect: &str) 
     std::fs::write(&p, code.replacen(from, to, 1)).unwrap();
     // `require` finds lib/ through the project path, not the script's directory.
     let o = run_script(&p);
-    let out = stdout(&o);
+    let out = common::both(&o);
     assert_eq!(o.status.code(), Some(1), "{name} with `{to}` must fail:\n{out}");
     assert!(out.contains(&format!("{}:{line}:", p.display())), "{name}: the failing line {line} is named:\n{out}");
     assert!(out.contains(expect), "{name}: `{expect}` in:\n{out}");

@@ -13,17 +13,36 @@ struct Tmux {
 
 impl Tmux {
     fn start(home: &std::path::Path) -> Option<Tmux> {
+        Tmux::start_sized(home, 110, 45)
+    }
+
+    fn start_sized(home: &std::path::Path, width: u16, height: u16) -> Option<Tmux> {
         if Command::new("tmux").arg("-V").output().map(|o| !o.status.success()).unwrap_or(true) {
             eprintln!("tmux is not installed: skipping the terminal test (apt-get install tmux)");
             return None;
         }
-        let t = Tmux { socket: format!("plcsh-test-{}", std::process::id()) };
+        // One tmux server per test (tests run in parallel threads of one process).
+        static NEXT: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+        let n = NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        let t = Tmux { socket: format!("plcsh-test-{}-{n}", std::process::id()) };
         let cmd = format!(
             "env HOME={h} XDG_DATA_HOME={h}/data XDG_CONFIG_HOME={h}/config LANG=C.UTF-8 TERM=xterm-256color {bin}",
             h = home.display(),
             bin = common::bin()
         );
-        let ok = t.tmux(&["-f", "/dev/null", "new-session", "-d", "-x", "110", "-y", "45", "-s", "t", &cmd]);
+        let ok = t.tmux(&[
+            "-f",
+            "/dev/null",
+            "new-session",
+            "-d",
+            "-x",
+            &width.to_string(),
+            "-y",
+            &height.to_string(),
+            "-s",
+            "t",
+            &cmd,
+        ]);
         assert!(ok, "tmux new-session failed");
         Some(t)
     }
@@ -115,5 +134,79 @@ fn completion_hints_watch_and_plot_in_a_real_terminal() {
     assert!(s.chars().any(|c| ('\u{2801}'..='\u{28FF}').contains(&c)), "braille dots drawn:\n{s}");
     t.literal("quit");
     t.keys(&["Enter"]);
+    let _ = std::fs::remove_dir_all(&home);
+}
+
+/// A commissioning checklist pasted into the REPL: every line runs in order, as if typed, with
+/// the usual rule inside one line (after a failing command the rest of that line is skipped).
+/// Once with bracketed paste (tmux `paste-buffer -p` marks the block: it arrives as one input),
+/// once without (the lines arrive as keystrokes typed ahead of the prompt).
+#[test]
+fn pasted_blocks_run_every_line_in_order() {
+    for bracketed in [true, false] {
+        let home = std::env::temp_dir().join(format!("plcsh-tmux-paste-{}-{bracketed}", std::process::id()));
+        std::fs::create_dir_all(&home).unwrap();
+        let Some(t) = Tmux::start(&home) else { return };
+        t.wait_for("the prompt", |s| s.contains("plc>"));
+        let block = "set VW0=11\nget VW0\nget VW2; get Q0.9; set VW4=99\nset VW6=33\nget VW4 VW6\n";
+        assert!(t.tmux(&["set-buffer", "-b", "p", block]));
+        let mut paste = vec!["paste-buffer", "-d", "-b", "p", "-t", "t"];
+        if bracketed {
+            paste.push("-p");
+            // With bracketed paste the block waits in the editor until Enter, as in bash.
+        }
+        assert!(t.tmux(&paste));
+        if bracketed {
+            t.wait_for("the pasted block", |s| s.contains("get VW4 VW6"));
+            t.keys(&["Enter"]);
+        }
+        let s = t.wait_for("the last pasted line's output", |s| s.contains("VW6  33"));
+        assert!(s.contains("11"), "set VW0=11 then get VW0 ran:\n{s}");
+        assert!(s.contains("Q0.9"), "the bad operand is reported:\n{s}");
+        // `set VW4=99` came after the failing command on its line, so VW4 still reads 0.
+        // The output after the last line ran (the echo `plc> get VW4 VW6`).
+        let lines: Vec<&str> = s.lines().collect();
+        let at = lines.iter().rposition(|l| l.starts_with("plc> get VW4 VW6")).expect("the last line echoed");
+        let after = &lines[at + 1..];
+        assert!(after.iter().any(|l| l.starts_with("VW6") && l.contains("33")), "{s}");
+        assert!(after.iter().any(|l| l.trim_end() == "VW4  0"), "VW4 was not set:\n{s}");
+        // In order: VW0's value shows before the error, the error before VW6's.
+        let pos = |p: &str| s.find(p).unwrap_or_else(|| panic!("{p} missing:\n{s}"));
+        assert!(pos("VW0  11") < pos("error[operand]") && pos("error[operand]") < pos("VW6  33"), "{s}");
+        t.literal("quit");
+        t.keys(&["Enter"]);
+        drop(t);
+        let _ = std::fs::remove_dir_all(&home);
+    }
+}
+
+/// The first screens a user sees fit an 80-column terminal: `help` and `models` lines are at
+/// most 80 columns wide (details behind `help COMMAND` / `models MODEL`).
+#[test]
+fn help_and_models_fit_80_columns() {
+    let home = std::env::temp_dir().join(format!("plcsh-tmux-80-{}", std::process::id()));
+    std::fs::create_dir_all(&home).unwrap();
+    let Some(t) = Tmux::start_sized(&home, 80, 60) else { return };
+    t.wait_for("the prompt", |s| s.contains("plc>"));
+    for (cmd, expect) in [("help", "help COMMAND"), ("models", "models MODEL")] {
+        t.keys(&["C-l"]);
+        t.literal(cmd);
+        t.keys(&["Enter"]);
+        let s = t.wait_for(cmd, |s| s.contains(expect) && s.matches("plc>").count() >= 2);
+        // A line wrapped by the terminal fills all 80 columns and continues below: none may.
+        let full: Vec<&str> = s.lines().filter(|l| l.chars().count() >= 80).collect();
+        assert!(full.is_empty(), "`{cmd}` wraps at 80 columns:\n{s}");
+    }
+    // A long inline hint (the servo usage) is cut at the edge instead of wrapping under the prompt.
+    t.keys(&["C-l"]);
+    t.literal("servo ");
+    let s = t.wait_for("the servo hint", |s| s.lines().any(|l| l.starts_with("plc> servo ") && l.contains('…')));
+    let prompt: Vec<&str> = s.lines().skip_while(|l| !l.starts_with("plc> servo ")).collect();
+    assert!(prompt[0].chars().count() < 80, "{s}");
+    assert!(prompt.get(1).is_none_or(|l| l.trim().is_empty()), "nothing wrapped below the prompt:\n{s}");
+    t.keys(&["C-u"]);
+    t.literal("quit");
+    t.keys(&["Enter"]);
+    drop(t);
     let _ = std::fs::remove_dir_all(&home);
 }

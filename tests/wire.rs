@@ -313,3 +313,26 @@ fn sigterm_stops_the_server_cleanly_and_removes_the_link() {
     assert!(status.success(), "{status:?}");
     assert!(!srv.link.exists(), "the pty symlink is removed");
 }
+
+/// With `--time stepped` and a device on a wire, `plcsh.sleep` and `wait_until`'s timeout
+/// wait in real time (a timeout at a real machine must not expire in no time); the virtual
+/// clock moves by the same amount. Checked as a lower bound on the wall time taken.
+#[test]
+fn stepped_waits_with_a_wire_device_wait_in_real_time() {
+    let srv = Server::start("K205-16DT", "0");
+    let dir = std::env::temp_dir().join(format!("plcsh-wire-wait-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let script = dir.join("wait.lua");
+    std::fs::write(
+        &script,
+        "local t0 = plcsh.now()\nplcsh.sleep(400)\nlocal ok, e = pcall(plcsh.wait_until, function() return plc.VW0 == 12345 end, {timeout=400})\nassert(not ok and tostring(e):match('still false'), tostring(e))\nprint(plcsh.now() - t0 >= 800)\n",
+    )
+    .unwrap();
+    let url = format!("plc=tcp://{}", srv.tcp());
+    let start = std::time::Instant::now();
+    let o = run(&["--time", "stepped", "--device", &url, "run", script.to_str().unwrap()], "");
+    let took = start.elapsed();
+    assert!(o.status.success(), "{}", both(&o));
+    assert_eq!(stdout(&o), "true\n", "the virtual clock moved with the waits");
+    assert!(took >= std::time::Duration::from_millis(800), "the waits took {took:?} of real time");
+}

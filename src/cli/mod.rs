@@ -5,7 +5,6 @@
 
 mod agent;
 pub mod completions;
-mod models;
 mod record;
 mod run;
 mod serve;
@@ -62,9 +61,15 @@ pub struct Cli {
 }
 
 #[derive(Subcommand, Debug)]
+// Parsed once per process: the size of the largest variant (`sim serve`'s flags) costs nothing.
+#[allow(clippy::large_enum_variant)]
 pub enum Sub {
-    /// List the K2 model catalogue (areas, I/O, counters, pulse outputs, manual disagreements).
-    Models,
+    /// List the K2 model catalogue; `models MODEL` shows one in full (areas, counters, manual notes).
+    Models {
+        /// One model (a unique prefix is enough: K209EA).
+        #[arg(value_name = "MODEL")]
+        name: Option<String>,
+    },
     /// List open devices and the device profiles (devices.toml), with problems in that file.
     Devices,
     /// Print a shell completion script (bash, zsh, fish, powershell), or write them all.
@@ -118,12 +123,20 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
         TimeMode::Stepped => Clock::stepped(),
     };
     let mut s = Session::new(clock);
+    if let Some(path) = &cli.config {
+        // A file named on the command line must exist (a typo would silently load nothing).
+        if !path.exists() {
+            return Err(crate::core::Error::usage(format!("--config {}: no such file", path.display()))
+                .hint("give an existing devices.toml, or leave --config out to use the default"));
+        }
+    }
     if let Some(path) = &cli.record {
         // Before any device opens, so connections are recorded from their first frame.
         crate::record::start(path, s.clock.clone())?;
     }
     if let Some(path) = cli.config.clone().or_else(crate::profile::default_path) {
         s.profiles = crate::profile::Profiles::load(&path);
+        s.profiles.validate(&s.clock);
     }
     let mut current = "plc".to_string();
     let named: Vec<(String, String)> = cli.devices.iter().map(|d| split_device_arg(d)).collect();
@@ -150,6 +163,58 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
     Ok(s)
 }
 
+/// Options of plcsh that take a value (`--time stepped`): their value is not a positional.
+const VALUE_OPTIONS: &[&str] =
+    &["-c", "--command", "--model", "-d", "--device", "--time", "--config", "--state", "--write-dir"];
+
+/// `plcsh [FLAGS] run [RUN FLAGS] SCRIPT ARGS…`: everything after the script belongs to the
+/// script, even words that look like plcsh's own flags (`run a.lua --time stepped` gives
+/// `--time` to the script). Returns the arguments for clap (up to the script) and the
+/// script's arguments, or `None` when the command line is not `run`.
+pub fn split_script_args(argv: Vec<std::ffi::OsString>) -> (Vec<std::ffi::OsString>, Option<Vec<String>>) {
+    let mut positionals = 0;
+    let mut i = 1;
+    let mut in_run = false;
+    while i < argv.len() {
+        let a = argv[i].to_string_lossy();
+        if a == "--" {
+            i += 1;
+            if in_run && i < argv.len() {
+                break;
+            }
+            continue;
+        }
+        if a.starts_with('-') && a.len() > 1 {
+            if VALUE_OPTIONS.contains(&a.as_ref()) {
+                i += 1;
+            }
+            i += 1;
+            continue;
+        }
+        positionals += 1;
+        if positionals == 1 {
+            if a != "run" {
+                return (argv, None);
+            }
+            in_run = true;
+        } else if in_run {
+            // The script: what follows is its own.
+            let rest = argv[i + 1..].iter().map(|s| s.to_string_lossy().into_owned()).collect();
+            let mut head = argv;
+            head.truncate(i + 1);
+            return (head, Some(rest));
+        }
+        i += 1;
+    }
+    if in_run && i < argv.len() {
+        let rest = argv[i + 1..].iter().map(|s| s.to_string_lossy().into_owned()).collect();
+        let mut head = argv;
+        head.truncate(i + 1);
+        return (head, Some(rest));
+    }
+    (argv, None)
+}
+
 /// Entry point; returns the process exit status.
 pub fn main() -> i32 {
     let code = run_cli();
@@ -164,8 +229,14 @@ pub fn main() -> i32 {
 }
 
 fn run_cli() -> i32 {
-    let cli = match Cli::try_parse() {
-        Ok(c) => c,
+    let (argv, script_args) = split_script_args(std::env::args_os().collect());
+    let cli = match Cli::try_parse_from(argv) {
+        Ok(mut c) => {
+            if let (Some(Sub::Run(r)), Some(rest)) = (c.sub.as_mut(), script_args) {
+                r.args = rest;
+            }
+            c
+        }
         Err(e) => {
             let _ = e.print();
             return if e.use_stderr() { 2 } else { 0 };
@@ -183,7 +254,7 @@ fn run_cli() -> i32 {
     let session = match build_session(&cli) {
         Ok(s) => s,
         Err(e) => {
-            let _ = output::write_error(&mut out, style, "open", &e, None);
+            let _ = output::report_error(&mut out, style, "open", &e, None);
             return if e.kind == ErrorKind::Usage { 2 } else { 1 };
         }
     };
@@ -205,11 +276,13 @@ fn run_cli() -> i32 {
 
     if let Some(sub) = &cli.sub {
         return match sub {
-            Sub::Models => {
-                let o = models::outcome();
-                let _ = output::write_outcome(&mut out, style, &o);
-                0
-            }
+            Sub::Models { name } => match crate::shell::commands::models::outcome(name.as_deref()) {
+                Ok(o) => i32::from(output::write_outcome(&mut out, style, &o).is_err()),
+                Err(e) => {
+                    let _ = output::report_error(&mut out, style, "models", &e, None);
+                    2
+                }
+            },
             Sub::Completions { shell, write } => completions::run(*shell, write.as_deref(), &mut out),
             Sub::Devices => i32::from(!shell.run_line("devices", &mut out)),
             Sub::Sim { cmd: serve::SimCmd::Serve(args) } => serve::run(&cli, args, style, &mut out),

@@ -12,14 +12,24 @@ use std::path::PathBuf;
 
 #[derive(Args, Debug)]
 pub struct RunArgs {
+    /// Run a script someone else wrote: no os.execute, io.popen, os.remove/rename/exit, C
+    /// libraries or debug library; files written only under --write-dir.
+    #[arg(long)]
+    pub sandbox: bool,
+    /// With --sandbox: the directory the script may write files in (none without it).
+    #[arg(long, value_name = "DIR", requires = "sandbox")]
+    pub write_dir: Option<PathBuf>,
     /// The Lua script.
     pub script: PathBuf,
-    /// Arguments for the script (`arg[1]`…, and `...`). Flags for plcsh go before `run`.
+    /// Arguments for the script (`arg[1]`…, and `...`): everything after the script, even words
+    /// that look like plcsh flags (see `split_script_args`). Flags for plcsh go before the script.
     #[arg(trailing_var_arg = true, allow_hyphen_values = true)]
     pub args: Vec<String>,
 }
 
-/// Runs the script; returns the exit status.
+/// Runs the script; returns the exit status. With `--json` the run ends with one summary
+/// object: ok, the script, checks passed and failed, the duration, and the error (kind,
+/// message, `where` file:line, traceback) when it failed — one line a grader can read.
 pub fn main(shell: &mut Shell, args: &RunArgs, style: Style) -> i32 {
     let engine = match Engine::for_shell(shell) {
         Ok(e) => e,
@@ -28,12 +38,36 @@ pub fn main(shell: &mut Shell, args: &RunArgs, style: Style) -> i32 {
             return 1;
         }
     };
-    match engine.run_file(shell, &args.script, &args.args) {
+    if args.sandbox {
+        // Commands the script runs (`trace … to=`, `eeprom dump` …) write under the same rule.
+        shell.write_rule = Some(args.write_dir.clone());
+        if let Err(e) = crate::script::sandbox::apply(engine.lua(), args.write_dir.as_deref()) {
+            eprintln!("cannot set up the sandbox: {e}");
+            return 1;
+        }
+    }
+    let start = std::time::Instant::now();
+    let result = engine.run_file(shell, &args.script, &args.args);
+    let duration = start.elapsed();
+    let _ = std::io::stdout().flush();
+    if style.json {
+        let mut summary = match &result {
+            Ok(()) => serde_json::json!({"ok": true, "cmd": "run"}),
+            Err(f) => f.json("run"),
+        };
+        let (checks, failed) = checks(&engine);
+        summary["script"] = args.script.display().to_string().into();
+        summary["checks"] = serde_json::json!({"passed": checks.saturating_sub(failed), "failed": failed});
+        summary["duration_ms"] = ((duration.as_secs_f64() * 1e6).round() / 1e3).into();
+        summary["sandbox"] = args.sandbox.into();
+        let _ = writeln!(std::io::stdout().lock(), "{summary}");
+    }
+    match result {
         Ok(()) => 0,
         Err(f) => {
-            let mut out = std::io::stdout().lock();
-            let _ = if style.json { writeln!(out, "{}", f.json("run")) } else { write!(out, "{}", f.human()) };
-            let _ = out.flush();
+            if !style.json {
+                let _ = write!(std::io::stderr().lock(), "{}", f.human());
+            }
             if f.interrupted() {
                 130
             } else {
@@ -41,4 +75,13 @@ pub fn main(shell: &mut Shell, args: &RunArgs, style: Style) -> i32 {
             }
         }
     }
+}
+
+/// The checks the script ran and how many failed (`plcsh.checks`, `plcsh.checks_failed`).
+fn checks(engine: &Engine) -> (u64, u64) {
+    let get = |k: &str| -> Option<u64> {
+        let t: mlua::Table = engine.lua().globals().get("plcsh").ok()?;
+        t.get::<Option<u64>>(k).ok().flatten()
+    };
+    (get("checks").unwrap_or(0), get("checks_failed").unwrap_or(0))
 }

@@ -352,14 +352,14 @@ pub fn run(cli: &Cli, args: &ServeArgs, style: Style, out: &mut dyn Write) -> i3
     let rt = match tokio::runtime::Builder::new_current_thread().enable_all().build() {
         Ok(rt) => rt,
         Err(e) => {
-            let _ = output::write_error(out, style, "sim serve", &Error::io("cannot start a runtime").cause(e), None);
+            let _ = output::report_error(out, style, "sim serve", &Error::io("cannot start a runtime").cause(e), None);
             return 1;
         }
     };
     match rt.block_on(serve(cli, args, out)) {
         Ok(()) => 0,
         Err(e) => {
-            let _ = output::write_error(out, style, "sim serve", &e, None);
+            let _ = output::report_error(out, style, "sim serve", &e, None);
             if e.kind == crate::core::ErrorKind::Usage {
                 2
             } else {

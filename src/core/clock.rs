@@ -93,6 +93,12 @@ impl Clock {
             self.step(d);
             return !interrupt.load(Ordering::Relaxed);
         }
+        Clock::sleep_real(d, interrupt)
+    }
+
+    /// Waits `d` of wall time whatever the mode, in slices that notice `interrupt`; false
+    /// when interrupted.
+    pub fn sleep_real(d: Duration, interrupt: &AtomicBool) -> bool {
         let end = Instant::now() + d;
         loop {
             if interrupt.load(Ordering::Relaxed) {

@@ -51,10 +51,32 @@ pub fn parse_literal(text: &str) -> Result<Literal, LiteralError> {
         "FALSE" | "OFF" => {
             Literal { value: Value::Bool(false), declared: Some(DataType::Bool), pattern: false, text: String::new() }
         }
-        _ => parse_typed(&upper)?,
+        _ => parse_typed(&upper).map_err(|mut e| {
+            e.message = as_typed(&e.message, &upper, &compact);
+            e
+        })?,
     };
     lit.text = trimmed.to_string();
     Ok(lit)
+}
+
+/// Messages quote the value as typed, not upper-cased: every `quoted` piece of `msg` found in
+/// `upper` is replaced by the same bytes of `typed` (ASCII upper-casing keeps byte offsets).
+fn as_typed(msg: &str, upper: &str, typed: &str) -> String {
+    let mut out = String::with_capacity(msg.len());
+    let mut parts = msg.split('`');
+    out.push_str(parts.next().unwrap_or(""));
+    for (k, part) in parts.enumerate() {
+        out.push('`');
+        let quoted = k % 2 == 0;
+        match upper.find(part).filter(|_| quoted && !part.is_empty()) {
+            Some(at) if typed.is_char_boundary(at) && typed.is_char_boundary(at + part.len()) => {
+                out.push_str(&typed[at..at + part.len()])
+            }
+            _ => out.push_str(part),
+        }
+    }
+    out
 }
 
 fn squeeze_hash_spaces(s: &str) -> String {
@@ -93,6 +115,14 @@ const TYPE_PREFIXES: &[(&str, DataType)] = &[
     ("UDINT", DataType::DWord),
     ("USINT", DataType::Byte),
 ];
+
+/// True when `word` can stand before `#` in a literal (`B`, `INT`, `T`, a radix `16`), so a
+/// `#` after it — even spaced, `B # 16 # 85` as the manual's scanned text writes it — is part
+/// of a value, not a comment.
+pub fn is_literal_head(word: &str) -> bool {
+    let w = word.trim().to_ascii_uppercase();
+    TYPE_PREFIXES.iter().any(|(p, _)| *p == w) || ["T", "TIME", "2", "8", "10", "16"].contains(&w.as_str())
+}
 
 fn parse_typed(s: &str) -> Result<Literal, LiteralError> {
     // T#500ms / TIME#1s200ms
@@ -148,6 +178,20 @@ fn parse_number(s: &str) -> Result<Literal, LiteralError> {
     if body.is_empty() {
         return Err(err(off, "a number is missing"));
     }
+    // C-style radix prefixes, as mbpoll and most languages write them: say the IEC form.
+    for (c, radix) in [("0X", "16#"), ("0B", "2#"), ("0O", "8#")] {
+        if let Some(digits) = body.strip_prefix(c).filter(|d| !d.is_empty()) {
+            let sign = if neg { "-" } else { "" };
+            return Err(err(
+                off,
+                format!(
+                    "`{sign}{}{}` is C notation; write {sign}{radix}{digits} (IEC 61131-3, as KincoBuilder does)",
+                    c.to_ascii_lowercase(),
+                    digits
+                ),
+            ));
+        }
+    }
     if let Some(hash) = body.find('#') {
         let radix: u32 = match &body[..hash] {
             "16" => 16,
@@ -195,6 +239,17 @@ pub fn parse_duration_ms(s: &str) -> Result<i64, String> {
         return Err(format!("T#{s} is not a whole number of milliseconds"));
     }
     Ok(us / 1000)
+}
+
+/// A duration given to a command or a Lua call (`every=`, `for=`, `timeout=`, `sim step`):
+/// a bare number is milliseconds — the one unit rule for times (README "Units") — and a
+/// number with a unit is that (`500ms`, `2s`, `250us`). In microseconds.
+pub fn parse_option_duration_us(s: &str) -> Result<i64, String> {
+    let t = s.trim().replace('_', "");
+    match t.parse::<f64>() {
+        Ok(ms) if ms.is_finite() && !t.is_empty() => Ok((ms * 1000.0).round() as i64),
+        _ => parse_duration_us(s),
+    }
 }
 
 /// A duration in microseconds from text like `500ms`, `1s200ms`, `2.5s`, `250us`, `1h`.
@@ -286,7 +341,12 @@ impl Literal {
             _ if self.pattern || !target.is_signed() => {
                 if v < 0 || v as u64 > mask(bits) {
                     let hint = if v < 0 && !target.is_signed() {
-                        format!("; write it as a signed type (INT#{v}, DI#{v}) to store its two's complement")
+                        let signed = match bits {
+                            8 => "SINT",
+                            16 => "INT",
+                            _ => "DI",
+                        };
+                        format!("; write it as {signed}#{v} to store its two's complement")
                     } else {
                         String::new()
                     };

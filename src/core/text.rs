@@ -1,5 +1,5 @@
 //! Small text helpers for messages: the "did you mean" suggestions every family's errors
-//! and the shell's unknown-command message make.
+//! and the shell's unknown-command message make, and word wrapping for help text.
 
 /// Levenshtein distance between two strings (by characters).
 pub fn edit_distance(a: &str, b: &str) -> usize {
@@ -15,9 +15,128 @@ pub fn edit_distance(a: &str, b: &str) -> usize {
     prev[b.len()]
 }
 
+/// Breaks `text` into lines of at most `width` characters at spaces (a word longer than the
+/// width gets a line of its own). Used to keep help and hints inside an 80-column terminal.
+pub fn wrap(text: &str, width: usize) -> Vec<String> {
+    let mut lines = vec![String::new()];
+    for word in text.split_whitespace() {
+        let cur = lines.last_mut().expect("one line");
+        let len = cur.chars().count();
+        if len > 0 && len + 1 + word.chars().count() > width {
+            lines.push(word.to_string());
+        } else {
+            if len > 0 {
+                cur.push(' ');
+            }
+            cur.push_str(word);
+        }
+    }
+    lines
+}
+
+/// Cyrillic letters that look like the Latin ones operands and literals use. Text copied from
+/// the K2 manual's machine-extracted Russian edition, or typed on a Russian layout, carries them
+/// (`В#16#85`, `ВW0` with a Cyrillic В); the same edition writes operands with a space after
+/// `%` (§3.4.3's PHOME example: `PHOME 0, % M0.0, … % VW2, % VW4, % VD6`).
+const LOOK_ALIKES: &[(char, char)] = &[
+    ('А', 'A'),
+    ('а', 'a'),
+    ('С', 'C'),
+    ('с', 'c'),
+    ('Е', 'E'),
+    ('е', 'e'),
+    ('К', 'K'),
+    ('к', 'k'),
+    ('М', 'M'),
+    ('м', 'm'),
+    ('О', 'O'),
+    ('о', 'o'),
+    ('Р', 'P'),
+    ('р', 'p'),
+    ('Т', 'T'),
+    ('т', 't'),
+    ('Х', 'X'),
+    ('х', 'x'),
+    ('І', 'I'),
+    ('і', 'i'),
+    ('Н', 'H'),
+];
+
+/// Reads a line as the K2 manual spells it: Cyrillic look-alikes become Latin letters (`В` is
+/// `B` before `#` or after a letter — `В#16#85`, `VВ0` — and `V` where an area starts, as the
+/// Russian text transliterates V), and `% VW2` becomes `%VW2`. Quoted text is left alone.
+/// Returns the new line and the words that changed (`ВW0` → `VW0`), or `None` when nothing did.
+pub fn fold_manual_spelling(line: &str) -> Option<(String, Vec<(String, String)>)> {
+    if line.is_ascii() && !line.contains('%') {
+        return None;
+    }
+    let chars: Vec<char> = line.chars().collect();
+    let mut out = String::with_capacity(line.len());
+    let mut quoted = false;
+    let mut i = 0;
+    while i < chars.len() {
+        let c = chars[i];
+        if c == '"' {
+            quoted = !quoted;
+        }
+        if quoted {
+            out.push(c);
+            i += 1;
+            continue;
+        }
+        match c {
+            '%' if chars.get(i + 1).is_some_and(|n| n.is_whitespace()) => {
+                out.push('%');
+                while chars.get(i + 1).is_some_and(|n| n.is_whitespace()) {
+                    i += 1;
+                }
+            }
+            'В' | 'в' => {
+                let next_hash =
+                    chars.get(i + 1).is_some_and(|n| *n == '#' || n.is_whitespace() && chars.get(i + 2) == Some(&'#'));
+                let after_letter = i > 0 && chars[i - 1].is_ascii_alphabetic();
+                let latin = if next_hash || after_letter { 'B' } else { 'V' };
+                out.push(if c == 'в' { latin.to_ascii_lowercase() } else { latin });
+            }
+            _ => out.push(LOOK_ALIKES.iter().find(|(k, _)| *k == c).map_or(c, |(_, l)| *l)),
+        }
+        i += 1;
+    }
+    if out == line {
+        return None;
+    }
+    let before: Vec<&str> = line.split_whitespace().collect();
+    let after: Vec<&str> = out.split_whitespace().collect();
+    let changed = if before.len() == after.len() {
+        before.iter().zip(&after).filter(|(a, b)| a != b).map(|(a, b)| (a.to_string(), b.to_string())).collect()
+    } else {
+        vec![(line.trim().to_string(), out.trim().to_string())]
+    };
+    Some((out, changed))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_manuals_cyrillic_spelling_reads_as_latin() {
+        // The K2 manual (Russian text) prints `В#16#85` with a Cyrillic В, and `% VW2` with a space.
+        let (line, changed) = fold_manual_spelling("set SMB67=В#16#85").unwrap();
+        assert_eq!(line, "set SMB67=B#16#85");
+        assert_eq!(changed, vec![("SMB67=В#16#85".to_string(), "SMB67=B#16#85".to_string())]);
+        assert_eq!(fold_manual_spelling("get ВW0").unwrap().0, "get VW0");
+        assert_eq!(fold_manual_spelling("get VВ0 СD0 МW0 Т5").unwrap().0, "get VB0 CD0 MW0 T5");
+        assert_eq!(fold_manual_spelling("get % VW2").unwrap().0, "get %VW2");
+        assert!(fold_manual_spelling("get VW0").is_none());
+        assert_eq!(fold_manual_spelling("connect \"ВW0\"").as_ref().map(|f| f.0.as_str()), None);
+    }
+
+    #[test]
+    fn wrapping_keeps_words_whole() {
+        assert_eq!(wrap("read a range as a table", 10), vec!["read a", "range as a", "table"]);
+        assert_eq!(wrap("", 10), vec![""]);
+    }
 
     #[test]
     fn distances() {

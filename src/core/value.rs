@@ -100,7 +100,7 @@ impl DataType {
             DataType::Int => Value::Int(raw as u16 as i16 as i64),
             DataType::DWord => Value::Int(raw as i64),
             DataType::DInt => Value::Int(raw as i32 as i64),
-            DataType::Real => Value::Real(f32::from_bits(raw) as f64),
+            DataType::Real => Value::Real(real_as_read(f32::from_bits(raw))),
         }
     }
 
@@ -160,6 +160,17 @@ impl Value {
     }
 }
 
+/// A REAL as people read it: the f64 nearest the shortest decimal that reads back to the same
+/// f32 (`3.14`, not `3.140000104904175`), so the shell, JSON and Lua all show `3.14` and
+/// writing it back stores the same bits. Falls back to the exact widening where the two
+/// roundings would disagree.
+pub fn real_as_read(f: f32) -> f64 {
+    match f.to_string().parse::<f64>() {
+        Ok(d) if (d as f32).to_bits() == f.to_bits() => d,
+        _ => f as f64,
+    }
+}
+
 impl fmt::Display for Value {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
@@ -173,6 +184,19 @@ impl fmt::Display for Value {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    // 3.14 is the value a user types (`VD8/REAL=3.14`), not an approximation of π.
+    #[allow(clippy::approx_constant)]
+    fn reals_read_as_their_shortest_text_and_round_trip() {
+        for f in [3.14f32, 0.1, -2.5e-7, 1.0e30, 123456.79, f32::MAX, f32::MIN_POSITIVE, 0.0] {
+            let v = DataType::Real.decode(f.to_bits());
+            assert_eq!(v.to_string(), f.to_string());
+            assert_eq!(DataType::Real.encode(&v), f.to_bits(), "{f} round-trips");
+        }
+        assert_eq!(DataType::Real.decode(3.14f32.to_bits()).to_string(), "3.14");
+        assert_eq!(serde_json::to_string(&DataType::Real.decode(3.14f32.to_bits())).unwrap(), "3.14");
+    }
 
     #[test]
     fn decode_sign_extends_only_signed_types() {

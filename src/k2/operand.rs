@@ -120,7 +120,7 @@ pub struct K2Operand {
 
 impl K2Operand {
     pub fn new(area: Area, width: Width, byte: u32) -> K2Operand {
-        K2Operand { area, width, byte, view: default_view(area, width) }
+        K2Operand { area, width, byte, view: default_view_at(area, width, byte) }
     }
     pub fn bit(area: Area, byte: u32, bit: u8) -> K2Operand {
         K2Operand::new(area, Width::Bit(bit), byte)
@@ -181,7 +181,7 @@ impl K2Operand {
             Width::Group { n, bit } => format!("K{n}{a}{}.{bit}", self.byte),
             Width::Element => format!("{a}{}", self.byte),
         };
-        if self.view != default_view(self.area, self.width) {
+        if self.view != default_view_at(self.area, self.width, self.byte) {
             s.push('/');
             s.push_str(self.view.name());
         }
@@ -230,6 +230,15 @@ pub fn default_view(area: Area, width: Width) -> DataType {
         (_, Width::Group { .. }) => DataType::DWord,
         (_, Width::Element) => DataType::Int,
     }
+}
+
+/// The natural type of the operand at `byte`: [`default_view`], except the SM double words
+/// the manual gives as DINT (position and counter values, `sm_map::is_signed_dword`).
+pub fn default_view_at(area: Area, width: Width, byte: u32) -> DataType {
+    if area == Area::SM && width == Width::DWord && super::sm_map::is_signed_dword(byte) {
+        return DataType::DInt;
+    }
+    default_view(area, width)
 }
 
 /// Most operands a single range may expand to.
@@ -377,7 +386,7 @@ fn parse_body(s: &str, original: &str) -> Result<K2Operand> {
             Some('V') => (Area::V, 1),
             Some('T') => (Area::T, 1),
             Some('C') => (Area::C, 1),
-            _ => return Err(unknown_area(s)),
+            _ => return Err(unknown_area(s, original)),
         }
     };
     let rest = &s[alen..];
@@ -491,7 +500,7 @@ fn parse_group(rest: &str, original: &str) -> Result<K2Operand> {
     Ok(K2Operand::new(op.area, Width::Group { n, bit }, op.byte))
 }
 
-fn unknown_area(s: &str) -> Error {
+fn unknown_area(s: &str, original: &str) -> Error {
     let head: String = s.chars().take_while(|c| c.is_ascii_alphabetic()).collect();
     let mut near: Vec<(usize, &str)> = [
         "I", "Q", "M", "V", "SM", "AI", "AQ", "T", "C", "VB", "VW", "VD", "MB", "MW", "MD", "SMB", "SMW", "SMD", "AIW",
@@ -502,10 +511,28 @@ fn unknown_area(s: &str) -> Error {
     .collect();
     near.sort();
     let tail = &s[head.len()..];
-    let suggestions: Vec<String> =
-        near.iter().map(|(_, c)| format!("{c}{tail}")).filter(|s| parse_body(s, s).is_ok()).take(3).collect();
-    op_err(0, format!("`{s}` is not a K2 operand: unknown area `{head}`"))
-        .hint(format!("areas are I Q M V SM AI AQ T C; did you mean {}?", suggestions.join(", ")))
+    let suggestions: Vec<String> = if head.is_empty() {
+        Vec::new()
+    } else {
+        near.iter().map(|(_, c)| format!("{c}{tail}")).filter(|s| parse_body(s, s).is_ok()).take(3).collect()
+    };
+    // The message quotes the operand as typed; the hint always names something to try.
+    let typed_head: String = original.chars().take_while(|c| c.is_alphabetic()).collect();
+    let what = if typed_head.is_empty() {
+        format!("`{original}` is not a K2 operand: operands start with an area letter")
+    } else {
+        format!("`{original}` is not a K2 operand: unknown area `{typed_head}`")
+    };
+    let hint = if !suggestions.is_empty() {
+        format!("did you mean {}? areas are I Q M V SM AI AQ T C", suggestions.join(", "))
+    } else if head.starts_with("DB") {
+        "the K2 has no data blocks: its data memory is V (VB0, VW0, VD0 …); areas are I Q M V SM AI AQ T C".to_string()
+    } else if original.starts_with('-') {
+        "commands take no -options here; name operands such as VW0, I0.0, SMB67".to_string()
+    } else {
+        "areas are I Q M V SM AI AQ T C, e.g. VW0, I0.0, Q0.1, SMB67, T5".to_string()
+    };
+    op_err(0, what).hint(hint)
 }
 
 #[cfg(test)]

@@ -152,6 +152,14 @@ pub const HSC_REGS: [HscRegs; 4] = [
     },
 ];
 
+/// SM double words that hold signed counts (DINT): the position channels' current and new
+/// current values (§3.4.3.1: "DINT … +forward / −reverse") and the counters' current and
+/// preset values (§3.3.2: a counter counting down goes below zero). Read as DINT by default.
+pub fn is_signed_dword(byte: u32) -> bool {
+    PTO_REGS.iter().any(|r| r.pos_cv == byte || r.pos_new_cv == byte)
+        || HSC_REGS.iter().any(|r| r.cv == byte || r.pv == byte)
+}
+
 /// Size of a named SM register.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SmSize {

@@ -28,7 +28,9 @@ pub fn with_shell<R>(lua: &Lua, f: impl FnOnce(&mut Shell) -> crate::core::Resul
         .try_app_data_mut::<Shell>()
         .map_err(|e| raise(Error::state(format!("the session is busy: {e}"))))?
         .ok_or_else(|| raise(Error::state("no session: Lua runs only inside plcsh")))?;
-    f(&mut sh).map_err(raise)
+    let r = f(&mut sh);
+    drop(sh);
+    r.map_err(|e| super::error::raise_at(lua, e))
 }
 
 /// The interrupt flag (Ctrl-C) of the session.
@@ -47,6 +49,7 @@ pub fn json_to_lua(lua: &Lua, v: &serde_json::Value) -> mlua::Result<Value> {
 
 /// Runs shell `line` (on device `device`, made current for the call) and returns one table
 /// per command; a failed command raises its error.
+/// Text of several lines runs line by line, in order, as a pasted block does in the REPL.
 pub fn exec_on(lua: &Lua, device: Option<&str>, line: &str) -> mlua::Result<MultiValue> {
     let stop = interrupt_flag(lua)?;
     if stop.load(Ordering::Relaxed) {
@@ -58,7 +61,13 @@ pub fn exec_on(lua: &Lua, device: Option<&str>, line: &str) -> mlua::Result<Mult
             super::device::index(sh, d)?;
             sh.session.use_device(d)?;
         }
-        let r = sh.exec(line);
+        let mut r = Vec::new();
+        for l in line.lines().filter(|l| !l.trim().is_empty() && !l.trim_start().starts_with('#')) {
+            r.extend(sh.exec(l));
+            if r.last().is_some_and(|x| x.is_err()) {
+                break;
+            }
+        }
         if let (Some(_), Some(b)) = (device, back) {
             let _ = sh.session.use_device(&b);
         }
@@ -96,8 +105,9 @@ fn millis(ms: f64, what: &str) -> mlua::Result<Duration> {
 
 /// Waits `d` of virtual time (instantly when the clock is stepped); raises on Ctrl-C.
 fn sleep(lua: &Lua, d: Duration) -> mlua::Result<()> {
-    let (clock, stop) = with_shell(lua, |sh| Ok((sh.session.clock.clone(), sh.session.interrupt.clone())))?;
-    if stop.load(Ordering::Relaxed) || !clock.sleep(d, &stop) {
+    // Session::sleep: real time when a device on a wire is open, even in stepped time.
+    let ok = with_shell(lua, |sh| Ok(!sh.session.interrupted() && sh.session.sleep(d)))?;
+    if !ok {
         return Err(raise(interrupted_error()));
     }
     Ok(())
@@ -111,6 +121,70 @@ fn truthy(v: &Value) -> bool {
     !matches!(v, Value::Nil | Value::Boolean(false))
 }
 
+/// Refuses a table JSON cannot hold without losing data: a sparse list (`{1, nil, 3}`) or one
+/// mixing list items and keys (`{1, 2, x=3}`) — serde would drop or reorder them silently.
+fn json_shape(lua: &Lua, v: &Value, path: &mut String) -> mlua::Result<()> {
+    let Value::Table(t) = v else { return Ok(()) };
+    let (mut ints, mut max, mut others) = (0usize, 0i64, 0usize);
+    for pair in t.clone().pairs::<Value, Value>() {
+        let (k, _) = pair?;
+        match k {
+            Value::Integer(i) if i >= 1 => {
+                ints += 1;
+                max = max.max(i);
+            }
+            _ => others += 1,
+        }
+    }
+    let refuse = |msg: String| {
+        Err(super::error::raise_at(
+            lua,
+            Error::new(ErrorKind::Value, msg)
+                .hint("JSON arrays are lists 1…n without holes; objects have string keys — split the table"),
+        ))
+    };
+    if ints > 0 && others > 0 {
+        return refuse(format!("plcsh.json.encode: {path} mixes list items and keys"));
+    }
+    if ints > 0 && max as usize != ints {
+        return refuse(format!("plcsh.json.encode: {path} is a sparse list ({ints} items, highest index {max})"));
+    }
+    for pair in t.clone().pairs::<Value, Value>() {
+        let (k, item) = pair?;
+        let len = path.len();
+        match &k {
+            Value::Integer(i) => path.push_str(&format!("[{i}]")),
+            Value::String(s) => path.push_str(&format!(".{}", s.to_string_lossy())),
+            _ => path.push_str("[?]"),
+        }
+        json_shape(lua, &item, path)?;
+        path.truncate(len);
+    }
+    Ok(())
+}
+
+/// Refuses keys of an options table that `what` does not know (`{timout=50}` would otherwise
+/// be ignored and wait for ever), naming the nearest known key — as shell commands do.
+pub fn check_keys(lua: &Lua, t: &Table, known: &[&str], what: &str) -> mlua::Result<()> {
+    for pair in t.clone().pairs::<Value, Value>() {
+        let (k, _) = pair?;
+        let key = match &k {
+            Value::String(s) => s.to_string_lossy(),
+            other => format!("[{}]", other.type_name()),
+        };
+        if known.contains(&key.as_str()) {
+            continue;
+        }
+        let near = known.iter().map(|c| (crate::core::text::edit_distance(&key, c), *c)).min();
+        let hint = match near {
+            Some((d, c)) if d <= 2 => format!("did you mean `{c}`? {what} takes {}", known.join(", ")),
+            _ => format!("{what} takes {}", known.join(", ")),
+        };
+        return Err(super::error::raise_at(lua, Error::usage(format!("{what}: unknown option `{key}`")).hint(hint)));
+    }
+    Ok(())
+}
+
 /// `plcsh.wait_until(fn, {timeout=ms, every=ms, what="…"})` (or a number: the timeout).
 fn wait_until(lua: &Lua, (f, opts): (Function, Value)) -> mlua::Result<Value> {
     let (mut timeout, mut every, mut what) = (None, Duration::from_millis(10), None::<String>);
@@ -118,6 +192,7 @@ fn wait_until(lua: &Lua, (f, opts): (Function, Value)) -> mlua::Result<Value> {
         Value::Nil => {}
         Value::Integer(_) | Value::Number(_) => timeout = Some(millis(lua.unpack(opts.clone())?, "timeout")?),
         Value::Table(t) => {
+            check_keys(lua, t, &["timeout", "every", "what"], "wait_until")?;
             if let Some(ms) = t.get::<Option<f64>>("timeout")? {
                 timeout = Some(millis(ms, "timeout")?);
             }
@@ -251,7 +326,11 @@ pub fn register(lua: &Lua) -> mlua::Result<()> {
     json.set(
         "encode",
         lua.create_function(|lua, (v, opts): (Value, Option<Table>)| {
+            json_shape(lua, &v, &mut String::from("value"))?;
             let j: serde_json::Value = lua.from_value(v)?;
+            if let Some(o) = &opts {
+                check_keys(lua, o, &["pretty"], "plcsh.json.encode")?;
+            }
             let pretty = opts.map(|o| o.get::<Option<bool>>("pretty")).transpose()?.flatten().unwrap_or(false);
             let s = if pretty { serde_json::to_string_pretty(&j) } else { serde_json::to_string(&j) };
             s.map_err(mlua::Error::external)

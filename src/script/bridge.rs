@@ -77,10 +77,14 @@ const fn with(method: &'static str, family: &'static str, template: &'static str
 /// `freq` needs no unit (a number is Hz).
 const PULSE: &[Opt] = &[unit("cycle", "us"), unit("width", "us")];
 
+/// Sampling: numbers are milliseconds (the Lua unit for times).
+const TRACE: &[Opt] = &[unit("every", "ms"), unit("for", "ms")];
+
 /// `at VB3009` (the PV table address, k2.md §4).
 const HSC: &[Opt] = &[spaced("at")];
 
-/// Servo speeds: `{rpm=300}` → `speed=300rpm` (a bare `speed` number is the drive's DEC).
+/// Servo speeds: `{rpm=300}` → `speed=300rpm`; a bare `speed`/`acc`/`dec` number is in rpm /
+/// rps/s too (the unit rule, `servo::units::command_value`); `'2731dec'` is the raw value.
 const SPEED: &[Opt] = &[rename("rpm", "speed", "rpm")];
 
 /// `servo:jog{rpm=100}` → `servo jog 100rpm`.
@@ -93,6 +97,8 @@ pub const BRIDGE: &[Bridge] = &[
     row("read", "", "read"),
     row("help", "", "help"),
     row("cmd", "", ""), // plc:cmd("pls 0; pls 1"): any command line, on this device
+    // plc:trace("VW0", "Q0.0", {every=10, ["for"]=1000, to="t.csv"}): the samples (t_s, series).
+    with("trace", "", "trace", TRACE),
     // K2 pulse outputs (k2.md §5, §6).
     row("pls", "k2", "pls {}"),
     row("pstop", "k2", "pstop {}"),

@@ -66,6 +66,37 @@ impl Handle {
         Ok(op)
     }
 
+    /// `plc:close()`, `plc.staus`: a lower-case word is a method name, never an operand (operands
+    /// have digits: `VW0`, `vw0`). Says there is no such method and names the nearest ones.
+    fn not_a_method(&self, key: &[u8], family: &str) -> Option<Error> {
+        let word = std::str::from_utf8(key).ok()?;
+        let looks_like_method = word.chars().any(|c| c.is_ascii_lowercase())
+            && word.chars().all(|c| c.is_ascii_alphabetic() || c == '_')
+            && !word.is_empty();
+        if !looks_like_method {
+            return None;
+        }
+        let mut all: Vec<&str> = METHODS.to_vec();
+        all.extend(BRIDGE.iter().filter(|b| b.family.is_empty() || b.family == family).map(|b| b.method));
+        let mut near: Vec<(usize, &str)> = all
+            .iter()
+            .map(|m| (crate::core::text::edit_distance(word, m), *m))
+            .filter(|(d, _)| *d <= (word.len() / 3).max(1))
+            .collect();
+        near.sort();
+        let hint = if near.is_empty() {
+            format!("methods: {}; operands are fields: {}.VW0", all.join(", "), self.name)
+        } else {
+            let names: Vec<String> = near.iter().take(3).map(|(_, m)| format!("{}:{m}()", self.name)).collect();
+            format!("did you mean {}?", names.join(" or "))
+        };
+        Some(
+            Error::usage(format!("device `{}` has no method or operand `{word}`", self.name))
+                .device(&self.name)
+                .hint(hint),
+        )
+    }
+
     /// Field write: `plc.VW100 = 5`.
     fn write(&mut self, lua: &Lua, key: &[u8], v: &Value) -> mlua::Result<()> {
         with_shell(lua, |sh| {
@@ -80,7 +111,10 @@ impl Handle {
     fn read(&mut self, lua: &Lua, key: &[u8]) -> mlua::Result<Value> {
         let v = with_shell(lua, |sh| {
             let i = self.resolve(sh)?;
-            let op = self.operand(sh, i, key)?;
+            // Not an operand (servo objects are lower-case words): maybe a mistyped method.
+            let op = self
+                .operand(sh, i, key)
+                .map_err(|e| self.not_a_method(key, sh.session.entries()[i].device.info().family).unwrap_or(e))?;
             sh.session.read_values(i, &[op])
         })?;
         Ok(from_value(v[0]))
@@ -205,6 +239,9 @@ fn from_value(v: V) -> Value {
         V::Bool(b) => Value::Boolean(b),
     }
 }
+
+/// The methods every device handle has besides the bridge's (see `add_methods`).
+const METHODS: &[&str] = &["get", "set", "name", "info"];
 
 impl UserData for Handle {
     fn add_methods<M: UserDataMethods<Self>>(m: &mut M) {

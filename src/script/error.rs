@@ -15,10 +15,15 @@ use std::fmt;
 pub struct LuaFacing {
     pub cmd: Option<String>,
     pub error: Error,
+    /// The script's `file:line` that called into Rust (so a `pcall`ed error names it too).
+    pub location: Option<String>,
 }
 
 impl fmt::Display for LuaFacing {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if let Some(l) = &self.location {
+            write!(f, "{l}: ")?;
+        }
         write!(f, "error[{}]: ", self.error.kind.name())?;
         if let Some(c) = &self.cmd {
             write!(f, "`{c}`: ")?;
@@ -35,12 +40,37 @@ impl std::error::Error for LuaFacing {}
 
 /// Raises a shell error into Lua.
 pub fn raise(error: Error) -> mlua::Error {
-    mlua::Error::external(LuaFacing { cmd: None, error })
+    mlua::Error::external(LuaFacing { cmd: None, error, location: None })
+}
+
+/// Raises a shell error into Lua naming the script line that called into Rust: the first
+/// stack frame that is the user's source (not Rust, not mlua's glue, not the prelude).
+pub fn raise_at(lua: &mlua::Lua, error: Error) -> mlua::Error {
+    let location = (0..32).find_map(|level| {
+        lua.inspect_stack(level, |d| {
+            let src = d.source();
+            let file = src.short_src.as_deref().unwrap_or("");
+            let line = d.current_line()?;
+            user_source(file).then(|| format!("{file}:{line}"))
+        })?
+    });
+    mlua::Error::external(LuaFacing { cmd: None, error, location })
+}
+
+/// True for a chunk the user wrote (a script, a `lua` line, a `lib/` module), false for
+/// Rust frames (`[C]`), mlua's generated glue (`__mlua_index`) and the prelude (`plcsh`).
+fn user_source(file: &str) -> bool {
+    !(file.is_empty()
+        || file.starts_with("[C]")
+        || file.starts_with("__mlua")
+        || file.starts_with("[string")
+        || file == "plcsh"
+        || file.starts_with("(..."))
 }
 
 /// Raises a failed command's error into Lua.
 pub fn raise_cmd(cmd: &str, error: Error) -> mlua::Error {
-    mlua::Error::external(LuaFacing { cmd: Some(cmd.to_string()), error })
+    mlua::Error::external(LuaFacing { cmd: Some(cmd.to_string()), error, location: None })
 }
 
 /// `Result<T, core::Error>` → `mlua::Result<T>`.
@@ -147,11 +177,11 @@ fn split_traceback(s: &str) -> (String, Option<String>) {
 /// frames and the prelude.
 fn first_frame(tb: &str) -> Option<String> {
     tb.lines().map(str::trim).find_map(|l| {
-        if l.starts_with("[C]") || l.starts_with("[string") || l.starts_with("plcsh:") || l.starts_with("(...") {
-            return None;
-        }
         let mut parts = l.splitn(3, ':');
         let file = parts.next()?;
+        if !user_source(file) {
+            return None;
+        }
         let line = parts.next()?;
         (!file.is_empty() && line.chars().all(|c| c.is_ascii_digit()) && !line.is_empty())
             .then(|| format!("{file}:{line}"))
@@ -186,11 +216,19 @@ pub fn failure(e: &mlua::Error) -> Failure {
         }
     }
     if let Some(f) = facing(e) {
-        let location = traceback.as_deref().and_then(first_frame);
+        let location = f.location.clone().or_else(|| traceback.as_deref().and_then(first_frame));
         return Failure { error: f.error.clone(), location, traceback };
     }
     let (message, tb) = match cur {
         mlua::Error::RuntimeError(m) => split_traceback(m),
+        // `plc.read("VW0")`: a method called with a dot gets a string where `self` goes.
+        mlua::Error::BadArgument { to: Some(to), name: Some(name), .. } if name == "self" => {
+            let method = to.rsplit('.').next().unwrap_or(to);
+            (
+                format!("`{method}` is a method: call it with a colon, `dev:{method}(…)`, not a dot `dev.{method}(…)`"),
+                None,
+            )
+        }
         mlua::Error::SyntaxError { message, .. } => (message.clone(), None),
         other => split_traceback(&other.to_string()),
     };

@@ -16,6 +16,7 @@ mod bridge;
 mod device;
 pub mod error;
 mod paths;
+pub mod sandbox;
 
 pub use bridge::{Bridge, BRIDGE};
 pub use error::Failure;

@@ -4,7 +4,9 @@
 //! 3. the project's `lib/` — next to the executable (`target/release/plcsh` → `lib/` two
 //!    levels up, or `../lib` of an installed tree), else the source tree it was built from;
 //!
-//! then Lua's defaults. `plcsh run` also adds the script's own directory.
+//! 4. for `plcsh run`, the script's own directory;
+//!
+//! then Lua's defaults.
 //! The list is visible to scripts as `plcsh.lib_dirs`.
 
 use mlua::{Lua, Table};
@@ -61,11 +63,19 @@ pub fn register(lua: &Lua) -> mlua::Result<()> {
     Ok(())
 }
 
-/// `plcsh run` finds modules next to the script too.
+/// `plcsh run` finds modules next to the script too — after the directories above, as the
+/// README gives the order — and lists it last in `plcsh.lib_dirs`.
 pub fn add_script_dir(lua: &Lua, script: &Path) -> mlua::Result<()> {
     let dir = match script.parent() {
         Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
         _ => PathBuf::from("."),
     };
-    prepend(lua, &[dir])
+    let package: Table = lua.globals().get("package")?;
+    let old: String = package.get("path")?;
+    let libs: String = lib_dirs().iter().map(|d| patterns(d)).collect();
+    let rest = old.strip_prefix(libs.as_str()).unwrap_or(&old);
+    package.set("path", format!("{libs}{}{rest}", patterns(&dir)))?;
+    let p: Table = lua.globals().get("plcsh")?;
+    let listed: Table = p.get("lib_dirs")?;
+    listed.push(dir.display().to_string())
 }

@@ -16,29 +16,72 @@ function pcall(f, ...) return pass(rawpcall(f, ...)) end
 function xpcall(f, handler, ...) return pass(rawxpcall(f, handler, ...)) end
 function coroutine.resume(co, ...) return pass(rawresume(co, ...)) end
 
+local show
+
+-- A table without its own __tostring prints its contents ({1, 2, a=3}), not table: 0x….
+local function text(v)
+  if type(v) == "table" and not (getmetatable(v) and getmetatable(v).__tostring) then
+    return show(v)
+  end
+  return tostring(v)
+end
+
 -- print goes through the shell's output (a JSON line under --json).
 function print(...)
   local n = select("#", ...)
   local parts = {}
   for i = 1, n do
-    parts[i] = tostring((select(i, ...)))
+    parts[i] = text((select(i, ...)))
   end
   write(table.concat(parts, "\t"))
 end
 
-local function show(v, depth)
+-- plcsh.log(...): printed like print, with the wall time and the session time in front, and
+-- appended to the file plcsh.log_to(path) chose (the run's record for the commissioning file).
+local log_file
+function plcsh.log_to(path)
+  if log_file then log_file:close() end
+  log_file = assert(io.open(path, "a"))
+  return path
+end
+function plcsh.log(...)
+  local parts = {}
+  for i = 1, select("#", ...) do
+    parts[i] = text((select(i, ...)))
+  end
+  local line = string.format("%s t=%.3fs %s", os.date("%Y-%m-%d %H:%M:%S"), plcsh.now() / 1000,
+    table.concat(parts, "\t"))
+  if log_file then
+    log_file:write(line, "\n")
+    log_file:flush()
+  end
+  write(line)
+end
+
+show = function(v, depth)
   depth = depth or 0
   if type(v) == "string" then
     return string.format("%q", v)
   elseif type(v) ~= "table" or depth > 3 then
     return tostring(v)
   end
+  -- The sequence 1..n first, in order; then the other keys sorted, numbers as [k]=.
+  local parts, n = {}, 0
+  while rawget(v, n + 1) ~= nil do
+    n = n + 1
+    parts[n] = show(v[n], depth + 1)
+  end
   local keys = {}
-  for k in pairs(v) do keys[#keys + 1] = k end
-  table.sort(keys, function(a, b) return tostring(a) < tostring(b) end)
-  local parts = {}
+  for k in pairs(v) do
+    if not (math.type(k) == "integer" and k >= 1 and k <= n) then keys[#keys + 1] = k end
+  end
+  table.sort(keys, function(a, b)
+    if type(a) == type(b) and type(a) ~= "table" and type(a) ~= "boolean" then return a < b end
+    return type(a) < type(b)
+  end)
   for _, k in ipairs(keys) do
-    parts[#parts + 1] = (type(k) == "number" and "" or (tostring(k) .. "=")) .. show(v[k], depth + 1)
+    local name = (type(k) == "string" and k:match("^[%a_][%w_]*$")) and k or ("[" .. show(k, depth + 1) .. "]")
+    parts[#parts + 1] = name .. "=" .. show(v[k], depth + 1)
   end
   return "{" .. table.concat(parts, ", ") .. "}"
 end
@@ -58,8 +101,10 @@ local function equal(a, b)
 end
 
 plcsh.checks = 0
+plcsh.checks_failed = 0
 
 local function fail(what, msg, detail)
+  plcsh.checks_failed = plcsh.checks_failed + 1
   local text = what .. " failed" .. (msg and (": " .. tostring(msg)) or "")
   if detail then text = text .. "\n" .. detail end
   error(text, 3)

@@ -294,3 +294,43 @@ fn incomplete_chunks_are_detected() {
 
 #[path = "bridge_tests.rs"]
 mod bridge_tests;
+
+/// What a script author needs in the first hour: tables print their contents, JSON refuses
+/// tables it would mangle, exec takes several lines, trace returns its samples (and writes
+/// CSV), log writes timestamped lines to a file and to the output.
+#[test]
+fn first_hour_conveniences() {
+    let (mut sh, e, buf) = setup();
+    run(&mut sh, &e, "print({1, 2, a=3, [10]=4, {x=1}})").unwrap();
+    assert_eq!(buf.text(), "{1, 2, {x=1}, [10]=4, a=3}\n");
+    for bad in ["{1, nil, 3}", "{a={1, 2, x=3}}"] {
+        let f = run(&mut sh, &e, &format!("return plcsh.json.encode({bad})")).unwrap_err();
+        assert!(
+            f.error.message.contains("sparse list") || f.error.message.contains("mixes list items"),
+            "{bad}: {f:?}"
+        );
+    }
+    let o = run(&mut sh, &e, "return plcsh.json.encode({1, 2, {x=3}})").unwrap();
+    assert_eq!(o.message.as_deref(), Some("[1,2,{\"x\":3}]"));
+    run(&mut sh, &e, "plcsh.exec('set VW0=7\\nset VW2=8\\n# a comment\\n')").unwrap();
+    assert_eq!((get(&mut sh, "VW0"), get(&mut sh, "VW2")), (7, 8));
+    let dir = std::env::temp_dir().join(format!("plcsh-lua-first-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let csv = dir.join("t.csv");
+    let o = run(
+        &mut sh,
+        &e,
+        &format!(
+            "local tr = plc:trace('SM0.5', 'VW0', {{every=100, ['for']=1000, to={:?}}}) return #tr.t_s, tr.series[2].values[1]",
+            csv.display().to_string()
+        ),
+    )
+    .unwrap();
+    assert_eq!(o.message.as_deref(), Some("11\t7.0"));
+    assert!(std::fs::read_to_string(&csv).unwrap().starts_with("t_s,SM0.5,VW0\n0.000000,"));
+    let log = dir.join("run.log");
+    run(&mut sh, &e, &format!("plcsh.log_to({:?}); plcsh.log('homed', {{pos=0}})", log.display().to_string())).unwrap();
+    let line = std::fs::read_to_string(&log).unwrap();
+    assert!(line.ends_with(" t=1.000s homed\t{pos=0}\n"), "{line}");
+    assert!(buf.text().contains(" t=1.000s homed"));
+}

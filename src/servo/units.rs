@@ -205,6 +205,21 @@ pub fn parse_engineering(text: &str, unit: Unit, r: u32) -> Option<Result<i128, 
     })
 }
 
+/// The unit rule for servo *commands* and Lua methods (`servo move … speed=300 acc=100`,
+/// `servo jog 300`, `servo:move_abs(p, {rpm=300, acc=100})`): a bare number is in engineering
+/// units — rpm for speeds, rps/s for accelerations — and the drive's raw value is written
+/// with its suffix (`speed=2731dec`). Register writes (`set servo:profile_velocity=…`) keep
+/// the object's raw unit, as every register does. Positions stay in increments (`rev` for
+/// revolutions). Returns the text with the engineering suffix added where it was bare.
+pub fn command_value(text: &str, unit: Unit) -> std::borrow::Cow<'_, str> {
+    let bare = parse_decimal(text.trim()).is_some();
+    match (bare, unit) {
+        (true, Unit::Speed) => format!("{}rpm", text.trim()).into(),
+        (true, Unit::Accel) => format!("{}rps/s", text.trim()).into(),
+        _ => text.into(),
+    }
+}
+
 /// A raw value in engineering units, for display: `(300.0, "rpm")`.
 pub fn engineering(unit: Unit, raw: i64, r: u32) -> Option<(f64, &'static str)> {
     match unit {
@@ -223,6 +238,20 @@ pub fn show(v: f64) -> String {
         "0".into()
     } else {
         s.to_string()
+    }
+}
+
+#[cfg(test)]
+mod command_value_tests {
+    use super::*;
+
+    #[test]
+    fn bare_command_numbers_are_engineering_units_and_raw_needs_its_suffix() {
+        assert_eq!(command_value("300", Unit::Speed), "300rpm");
+        assert_eq!(command_value("100", Unit::Accel), "100rps/s");
+        assert_eq!(command_value("2731dec", Unit::Speed), "2731dec");
+        assert_eq!(command_value("16#10", Unit::Speed), "16#10");
+        assert_eq!(command_value("10000", Unit::Increments), "10000");
     }
 }
 

@@ -42,11 +42,13 @@ pub struct ShellHelper {
     history: HistoryHinter,
     /// Dim hints (a terminal without NO_COLOR).
     pub color: bool,
+    /// Width of the prompt the line is read after (hints are cut to fit the terminal).
+    pub prompt_width: usize,
 }
 
 impl ShellHelper {
     pub fn new(color: bool) -> ShellHelper {
-        ShellHelper { session: None, history: HistoryHinter::new(), color }
+        ShellHelper { session: None, history: HistoryHinter::new(), color, prompt_width: 6 }
     }
 }
 
@@ -94,7 +96,7 @@ impl Hinter for ShellHelper {
     fn hint(&self, line: &str, pos: usize, ctx: &Context<'_>) -> Option<ShellHint> {
         let pure = self.session.as_ref().and_then(|s| complete::hint(line, pos, &view_of(s, &complete::list_paths)));
         let history = self.history.hint(line, pos, ctx).filter(|h| !h.is_empty());
-        match (history, pure) {
+        let hint = match (history, pure) {
             (Some(h), p) => {
                 let note = p.map(|p| p.note).unwrap_or_default();
                 Some(ShellHint { display: format!("{h}{note}"), insert: Some(h) })
@@ -104,7 +106,11 @@ impl Hinter for ShellHelper {
                 insert: p.insert,
             }),
             (None, None) => None,
-        }
+        }?;
+        // A hint longer than the rest of the terminal line would wrap under the prompt: cut it.
+        let Some((cols, _)) = super::term::size() else { return Some(hint) };
+        let room = cols.saturating_sub(self.prompt_width + line.chars().count() + 1);
+        Some(ShellHint { display: super::term::fit(&hint.display, room), insert: hint.insert })
     }
 }
 

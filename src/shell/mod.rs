@@ -8,11 +8,16 @@
 
 pub mod commands;
 pub mod complete;
+pub mod files;
 pub mod helper;
 pub mod lex;
 pub mod progress;
 pub mod repl;
 pub mod sample;
+pub mod term;
+
+#[cfg(test)]
+mod messages_tests;
 
 use crate::core::{Error, ErrorKind, Result};
 use crate::output::{self, Outcome, Style};
@@ -37,6 +42,8 @@ pub struct Shell {
     pub last_trace: Option<sample::Recording>,
     /// Runs Lua (`lua …`, `:…`); `None` while a chunk runs (no nesting) or when not installed.
     pub script: Option<Box<dyn ScriptHook>>,
+    /// Where commands may write files (`files::check_write`); confined in a sandboxed run.
+    pub write_rule: files::WriteRule,
 }
 
 /// An embedded language the shell hands whole lines to (Lua, `src/script/`).
@@ -47,12 +54,62 @@ pub trait ScriptHook: Send {
     fn incomplete(&mut self, code: &str) -> bool;
 }
 
+/// The line without a trailing comment: `#` at the start or after a space, followed by a space
+/// or the end (`get VW0   # speed`, as a checklist writes it). `16#85`, `T#5s` and the manual's
+/// spaced `B # 16 # 85` are values.
+fn strip_comment(line: &str) -> &str {
+    let b = line.as_bytes();
+    let mut quoted = false;
+    for (i, &c) in b.iter().enumerate() {
+        match c {
+            b'"' => quoted = !quoted,
+            b'#' if !quoted
+                && (i == 0 || b[i - 1].is_ascii_whitespace())
+                && b.get(i + 1).is_none_or(|n| n.is_ascii_whitespace())
+                && !crate::core::literal::is_literal_head(word_before(&line[..i])) =>
+            {
+                return &line[..i];
+            }
+            _ => {}
+        }
+    }
+    line
+}
+
+/// A usage error from a command with sub-commands whose first word is none of them: the
+/// hint names the nearest sub-command (`servo stauts` → `servo status`).
+fn suggest_subcommand(spec: &commands::CommandSpec, args: Args, e: Error) -> Error {
+    let word = args.text.split_whitespace().next().unwrap_or("").to_ascii_lowercase();
+    if e.kind != ErrorKind::Usage
+        || spec.subcommands.is_empty()
+        || word.is_empty()
+        || spec.subcommands.contains(&word.as_str())
+    {
+        return e;
+    }
+    let Some((d, near)) = spec.subcommands.iter().map(|s| (crate::core::text::edit_distance(&word, s), *s)).min()
+    else {
+        return e;
+    };
+    if d > 2 || d >= word.len() {
+        return e;
+    }
+    e.hint(format!("did you mean `{} {near}`? `help {}` shows its usage", spec.name, spec.name))
+}
+
+/// The word just before a position: back to a space, `=` or `,` (`SMB67=B ` → `B`).
+fn word_before(text: &str) -> &str {
+    let t = text.trim_end();
+    let start = t.rfind(|c: char| c.is_whitespace() || c == '=' || c == ',').map_or(0, |i| i + 1);
+    &t[start..]
+}
+
 /// One command's result, with the command name for error reporting.
 pub type CmdResult = std::result::Result<Outcome, (String, Error)>;
 
 impl Shell {
     pub fn new(session: Session, style: Style) -> Shell {
-        Shell { session, style, verbose: false, quit: false, last_trace: None, script: None }
+        Shell { session, style, verbose: false, quit: false, last_trace: None, script: None, write_rule: None }
     }
 
     /// Runs every command on the line in order and returns their results. A failing
@@ -60,29 +117,49 @@ impl Shell {
     /// write: after a failed command the rest of the line is skipped (the line is treated
     /// like a script: later commands usually depend on earlier ones).
     pub fn exec(&mut self, line: &str) -> Vec<CmdResult> {
+        let mut results = Vec::new();
+        self.exec_each(line, |_, r| results.push(r));
+        results
+    }
+
+    /// [`exec`](Self::exec), handing each result to `on` as soon as its command finished, so
+    /// output appears in order with what later commands print themselves (Lua's `print`).
+    pub fn exec_each(&mut self, line: &str, mut on: impl FnMut(&mut Shell, CmdResult)) {
         if let Some((offset, code)) = commands::lua::whole_line(line) {
             let args = Args { text: &code, offset };
-            return vec![(commands::lua::LUA.run)(self, args).map_err(|e| ("lua".to_string(), e))];
+            let r = (commands::lua::LUA.run)(self, args).map_err(|e| ("lua".to_string(), e));
+            return on(self, r);
         }
-        let mut results = Vec::new();
+        // The K2 manual's own spelling (`В#16#85` with a Cyrillic В, `% VW2`) reads as meant.
+        let folded = crate::core::text::fold_manual_spelling(line);
+        let line = folded.as_ref().map_or(line, |(l, _)| l.as_str());
+        let line = strip_comment(line);
         let parts = match lex::split_commands(line) {
             Ok(p) => p,
-            Err(e) => return vec![Err(("line".into(), e))],
+            Err(e) => return on(self, Err(("line".into(), e))),
         };
+        let mut first = true;
         for (offset, part) in parts {
             let lead = part.len() - part.trim_start().len();
             let cmd_text = part.trim();
             if cmd_text.is_empty() {
                 continue;
             }
-            let r = self.exec_one(cmd_text, offset + lead);
+            let mut r = self.exec_one(cmd_text, offset + lead);
+            if let (Some((_, changed)), Ok(o)) = (folded.as_ref().filter(|_| first), r.as_mut()) {
+                let words: Vec<String> = changed.iter().map(|(a, b)| format!("`{a}` as `{b}`")).collect();
+                o.notes.push(format!(
+                    "read {} (the K2 manual's spelling: Cyrillic look-alike letters, `% VW2`)",
+                    words.join(", ")
+                ));
+            }
+            first = false;
             let failed = r.is_err();
-            results.push(r);
+            on(self, r);
             if failed || self.quit {
                 break;
             }
         }
-        results
     }
 
     fn exec_one(&mut self, text: &str, offset: usize) -> CmdResult {
@@ -98,25 +175,27 @@ impl Shell {
             return Err((name, e));
         };
         self.session.clear_interrupt();
-        (spec.run)(self, args).map_err(|e| (spec.name.to_string(), e))
+        (spec.run)(self, args).map_err(|e| (spec.name.to_string(), suggest_subcommand(spec, args, e)))
     }
 
-    /// Runs a line and writes each result; returns true when every command succeeded.
+    /// Runs a line and writes each result (human-readable errors to stderr, JSON ones to `out`);
+    /// returns true when every command succeeded.
     pub fn run_line(&mut self, line: &str, out: &mut dyn Write) -> bool {
         let mut ok = true;
         let before = self.verbose.then(|| self.requests());
-        for r in self.exec(line) {
+        self.exec_each(line, |sh, r| {
             let w = match &r {
-                Ok(o) => output::write_outcome(out, self.style, o),
+                Ok(o) => output::write_outcome(out, sh.style, o),
                 Err((cmd, e)) => {
                     ok = false;
-                    output::write_error(out, self.style, cmd, e, Some(line))
+                    output::report_error(out, sh.style, cmd, e, Some(line))
                 }
             };
-            if w.is_err() {
-                return false;
+            // Flushed per command: a Lua `print` in a later command goes to stdout directly.
+            if w.and_then(|_| out.flush()).is_err() {
+                ok = false;
             }
-        }
+        });
         let _ = out.flush();
         if let Some(before) = before {
             self.report_requests(&before);

@@ -41,6 +41,7 @@ pub fn interactive(shell: &mut Shell) -> i32 {
         // Lend the session to the completer while the line is read (see helper.rs).
         let placeholder = Session::new(shell.session.clock.clone());
         if let Some(h) = ed.helper_mut() {
+            h.prompt_width = prompt.chars().count();
             h.session = Some(std::mem::replace(&mut shell.session, placeholder));
         }
         let read = ed.readline(&prompt);
@@ -48,22 +49,37 @@ pub fn interactive(shell: &mut Shell) -> i32 {
             shell.session = s;
         }
         match read {
-            Ok(mut line) => {
-                if line.trim().is_empty() {
-                    continue;
-                }
-                // An unfinished Lua chunk continues on the next line.
-                while shell.needs_more(&line) {
-                    match ed.readline(".. ") {
-                        Ok(more) => {
-                            line.push('\n');
-                            line.push_str(&more);
-                        }
-                        Err(_) => break,
+            Ok(text) => {
+                // A pasted block arrives as one input with bracketed paste (the terminal marks
+                // it), or as keystrokes read ahead without it (kept by rustyline's buffer):
+                // either way every line runs in order, as if typed one after another.
+                let mut lines: std::collections::VecDeque<String> = text.split('\n').map(str::to_string).collect();
+                while let Some(mut line) = lines.pop_front() {
+                    if line.trim().is_empty() {
+                        continue;
+                    }
+                    // An unfinished Lua chunk continues on the next line.
+                    while shell.needs_more(&line) {
+                        let more = match lines.pop_front() {
+                            Some(l) => l,
+                            None => match ed.readline(".. ") {
+                                Ok(more) => more,
+                                Err(_) => break,
+                            },
+                        };
+                        line.push('\n');
+                        line.push_str(&more);
+                    }
+                    if text.contains('\n') {
+                        // Each pasted line is echoed before its output, as a typed one would be.
+                        let _ = writeln!(out, "{prompt}{line}");
+                    }
+                    let _ = ed.add_history_entry(line.as_str());
+                    shell.run_line(&line, &mut out);
+                    if shell.quit {
+                        break;
                     }
                 }
-                let _ = ed.add_history_entry(line.as_str());
-                shell.run_line(&line, &mut out);
                 if shell.quit {
                     break;
                 }

@@ -6,7 +6,7 @@
 
 use super::lex;
 use super::Args;
-use crate::core::literal::parse_duration_us;
+use crate::core::literal::parse_option_duration_us;
 use crate::core::{Error, Result};
 use crate::session::{Reading, Session};
 use std::time::{Duration, Instant};
@@ -85,7 +85,7 @@ pub struct Request<'a> {
 }
 
 fn duration(col: usize, key: &str, v: &str) -> Result<Duration> {
-    let us = parse_duration_us(v).map_err(|m| Error::usage(format!("{key}={v}: {m}")).column(col))?;
+    let us = parse_option_duration_us(v).map_err(|m| Error::usage(format!("{key}={v}: {m}")).column(col))?;
     if us <= 0 {
         return Err(Error::usage(format!("{key} must be more than zero")).column(col));
     }
@@ -158,7 +158,6 @@ pub fn run(
     mut on: impl FnMut(&Sample) -> Result<()>,
 ) -> Result<Stats> {
     let clock = session.clock.clone();
-    let interrupt = session.interrupt.clone();
     let start = clock.now();
     let wall = Instant::now();
     let req0 = requests(session);
@@ -178,7 +177,7 @@ pub fn run(
             break;
         }
         let now = clock.now().saturating_sub(start);
-        let ok = if due > now { clock.sleep(due - now, &interrupt) } else { !session.interrupted() };
+        let ok = if due > now { session.sleep(due - now) } else { !session.interrupted() };
         if !ok {
             stats.interrupted = true;
             break;
@@ -198,12 +197,14 @@ pub struct Recording {
     /// `columns[i][k]` is operand i at sample k (bits as 0/1).
     pub columns: Vec<Vec<f64>>,
     pub every: Duration,
+    /// Pulse outputs drawn as frequency: (output bit column, pulse count column).
+    pub rates: Vec<(usize, usize)>,
 }
 
 impl Recording {
     pub fn new(labels: Vec<String>, every: Duration) -> Recording {
         let columns = vec![Vec::new(); labels.len()];
-        Recording { labels, t: Vec::new(), columns, every }
+        Recording { labels, t: Vec::new(), columns, every, rates: Vec::new() }
     }
 
     pub fn push(&mut self, s: &Sample) {
@@ -244,11 +245,30 @@ impl Recording {
         };
         Ok(pick
             .into_iter()
-            .map(|i| {
-                let pts = self.t.iter().copied().zip(self.columns[i].iter().copied()).collect();
-                crate::plot::Series::new(self.labels[i].clone(), "", pts)
+            .map(|i| match self.rates.iter().find(|(b, _)| *b == i) {
+                Some(&(_, c)) => self.frequency(i, c),
+                None => {
+                    let pts = self.t.iter().copied().zip(self.columns[i].iter().copied()).collect();
+                    crate::plot::Series::new(self.labels[i].clone(), "", pts)
+                }
             })
             .collect())
+    }
+
+    /// Output `bit` as its frequency: the pulse count's change over each sample interval
+    /// (pulses in either direction count), held over the interval.
+    fn frequency(&self, bit: usize, count: usize) -> crate::plot::Series {
+        let c = &self.columns[count];
+        let mut pts = Vec::with_capacity(self.t.len());
+        for k in 1..self.t.len() {
+            let dt = self.t[k] - self.t[k - 1];
+            let f = if dt > 0.0 { (c[k] - c[k - 1]).abs() / dt } else { 0.0 };
+            pts.push((self.t[k - 1], f));
+        }
+        if let (Some(&t), Some(&(_, f))) = (self.t.last(), pts.last()) {
+            pts.push((t, f));
+        }
+        crate::plot::Series::new(format!("{} frequency", self.labels[bit]), "Hz", pts).stepped()
     }
 }
 

@@ -254,8 +254,8 @@ mod tests {
         let q = HscRequest { counter: 1, mode: 0, up: Some(false), cv: Some(-5), pv: vec![-100], ..Default::default() };
         let p = plan(find("K205-16DT").unwrap(), &q, (3648, 3902)).unwrap();
         assert_eq!(p.value_of("SMB47"), Some(0xF0), "enable, write CV, write PV, write dir, down");
-        assert_eq!(p.value_of("SMD52/DINT"), Some(-100));
-        assert_eq!(p.value_of("SMD48/DINT"), Some(-5));
+        assert_eq!(p.value_of("SMD52"), Some(-100));
+        assert_eq!(p.value_of("SMD48"), Some(-5));
         assert_eq!(p.value_of("SMB151"), Some(0));
     }
 

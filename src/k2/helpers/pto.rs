@@ -349,6 +349,23 @@ pub fn status(dev: &mut dyn Device, model: &Model, ch: u8) -> Result<(Vec<Writte
     Ok((vals, words))
 }
 
+/// What channel `ch` is doing now, when it is busy: the status byte's idle bits (§3.4.1:
+/// SM66.7 PTO idle, SM66.3 PWM idle, both 1 when nothing runs). A second PLS on a busy
+/// channel replaces the running train, so the shell warns (or refuses with `strict`).
+pub fn busy(dev: &mut dyn Device, model: &Model, ch: u8) -> Result<Option<String>> {
+    let (_, r) = channel(model, ch)?;
+    let ops = [K2Operand::byte(Area::SM, r.status), K2Operand::dword(Area::SM, r.count)];
+    let vals = read_ops(dev, &ops)?;
+    let st = vals[0].value.as_i64() as u8;
+    Ok(if st & 0x80 == 0 {
+        Some(format!("PTO{ch} is still sending a pulse train (SM{}.7 PTO idle = 0)", r.status))
+    } else if st & 0x08 == 0 {
+        Some(format!("PWM{ch} is running (SM{}.3 PWM idle = 0)", r.status))
+    } else {
+        None
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

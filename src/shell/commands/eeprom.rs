@@ -35,6 +35,7 @@ fn eeprom(sh: &mut Shell, args: Args) -> Result<Outcome> {
                 ["all"] => EEPROM_LAST_MAX,
                 _ => return Err(Error::usage("eeprom dump FILE [all]").column(args.offset)),
             };
+            crate::shell::files::check_write(&sh.write_rule, file)?;
             let core: Vec<_> = ops(end).iter().map(|o| o.to_core()).collect();
             let vals = sh.session.read_values(dev, &core)?;
             let bytes: Vec<u8> = vals.iter().map(|v| v.as_i64() as u8).collect();

@@ -82,7 +82,7 @@ fn wait(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let m = EventMatch::parse(pos[1].1);
     let timeout = match opt(&opts, "timeout") {
         Some((c, t)) => {
-            let us = crate::core::literal::parse_duration_us(t).map_err(|e| value_err(c, e))?;
+            let us = crate::core::literal::parse_option_duration_us(t).map_err(|e| value_err(c, e))?;
             Duration::from_micros(us.max(0) as u64)
         }
         None => Duration::from_secs(10),
@@ -117,7 +117,9 @@ fn wait(sh: &mut Shell, args: Args) -> Result<Outcome> {
                 .device(name)
                 .hint("`events keep` lists what arrived; `pto status N` / `hsc status N` show whether anything runs"));
         }
-        if clock.is_stepped() {
+        // Jumping the clock to the next event is for simulators; with a device on a wire
+        // open the wait is real (Session::sleep), never a timeout that expires in no time.
+        if clock.is_stepped() && !sh.session.has_wire_device() {
             let due = k2cmd::sim(sh, dev, "").ok().map(|s| s.next_event_due());
             let target = match due {
                 // The simulator knows when its next event is due; nothing due → jump to the end.
@@ -127,7 +129,7 @@ fn wait(sh: &mut Shell, args: Args) -> Result<Outcome> {
             };
             clock.step(target.saturating_sub(now).max(Duration::from_nanos(1)).min(deadline - now));
         } else {
-            clock.sleep((deadline - now).min(Duration::from_millis(5)), &sh.session.interrupt);
+            sh.session.sleep((deadline - now).min(Duration::from_millis(5)));
         }
     }
 }

@@ -26,35 +26,32 @@ pub const QUIT: CommandSpec = CommandSpec {
 fn help(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let topic = args.text.trim();
     if topic.is_empty() {
-        let rows = COMMANDS
-            .iter()
-            .map(|c| {
-                // The short form; `help COMMAND` gives the whole usage.
-                let mut name = c.name.to_string();
-                let mut subs = String::new();
-                for sub in c.subcommands {
-                    if subs.len() + sub.len() > 32 {
-                        subs.push('…');
-                        break;
-                    }
-                    if !subs.is_empty() {
-                        subs.push('|');
-                    }
-                    subs.push_str(sub);
-                }
-                if !subs.is_empty() {
-                    name.push_str(&format!(" {subs}"));
-                }
-                vec![name, c.summary.to_string()]
-            })
-            .collect();
+        // Name and summary, wrapped to 80 columns; `help COMMAND` gives the whole usage.
         let names: Vec<&str> = COMMANDS.iter().map(|c| c.name).collect();
-        return Ok(Outcome::new("help").table(&["command", "what it does"], rows).with("commands", names));
+        return Ok(Outcome::new("help").text(command_list()).with("commands", names));
     }
     if let Some(c) = super::find(&topic.to_ascii_lowercase()) {
-        return Ok(Outcome::new("help").text(format!("{}\n  {}", c.usage, c.summary)).with("command", c.name));
+        let mut text = crate::core::text::wrap(c.usage, 78).join("\n    ");
+        for line in crate::core::text::wrap(c.summary, 76) {
+            text.push_str(&format!("\n  {line}"));
+        }
+        if !c.subcommands.is_empty() {
+            for line in crate::core::text::wrap(&format!("sub-commands: {}", c.subcommands.join(", ")), 76) {
+                text.push_str(&format!("\n  {line}"));
+            }
+        }
+        return Ok(Outcome::new("help").text(text).with("command", c.name));
     }
-    let target = sh.session.resolve(topic)?;
+    let target = sh.session.resolve(topic).map_err(|e| {
+        // A word that is neither a command nor an operand: most likely a mistyped command.
+        if topic.chars().all(|c| c.is_ascii_alphabetic() || c == '-') {
+            crate::core::Error::usage(format!("no command or operand `{topic}`"))
+                .hint(super::suggest(&topic.to_ascii_lowercase()))
+                .column(args.offset)
+        } else {
+            e
+        }
+    })?;
     let entry = &sh.session.entries()[target.device];
     let body = topic.rsplit(':').next().unwrap_or(topic);
     let text = entry.device.operands().help(body)?;
@@ -66,4 +63,20 @@ fn help(sh: &mut Shell, args: Args) -> Result<Outcome> {
 fn quit(sh: &mut Shell, _args: Args) -> Result<Outcome> {
     sh.quit = true;
     Ok(Outcome::new("quit").quiet())
+}
+
+/// The command list as `help` prints it: one command a line, summaries wrapped to fit 80
+/// columns under their own column.
+pub fn command_list() -> String {
+    const WIDTH: usize = 80;
+    let name_w = COMMANDS.iter().map(|c| c.name.len()).max().unwrap_or(4) + 2;
+    let mut text = String::from("commands (`help COMMAND` shows its full usage and sub-commands):\n");
+    for c in COMMANDS {
+        for (i, line) in crate::core::text::wrap(c.summary, WIDTH - 2 - name_w - 1).iter().enumerate() {
+            let name = if i == 0 { c.name } else { "" };
+            text.push_str(&format!("  {name:<name_w$}{line}\n"));
+        }
+    }
+    text.push_str("operands: `help VW100`, `help SMB67` explain one; Tab completes them");
+    text
 }

@@ -86,9 +86,14 @@ pub fn done_outcome(cmd: &str, device: String, d: Done) -> Outcome {
 pub fn check_options(opts: &[Opt], known: &[&str], usage: &str) -> Result<()> {
     for &(col, k, _) in opts {
         if !known.contains(&k) {
+            let near = known.iter().map(|c| (crate::core::text::edit_distance(k, c), *c)).min();
+            let mean = match near {
+                Some((d, c)) if d <= 2 => format!("did you mean `{c}=`? "),
+                _ => String::new(),
+            };
             return Err(Error::usage(format!("unknown option `{k}=`"))
                 .column(col)
-                .hint(format!("options: {}; usage: {usage}", known.join(", "))));
+                .hint(format!("{mean}options: {}; usage: {usage}", known.join(", "))));
         }
     }
     Ok(())

@@ -11,6 +11,7 @@ mod help;
 mod io;
 mod k2cmd;
 pub mod lua;
+pub mod models;
 pub mod profiles;
 mod pulse;
 mod rtc;
@@ -65,6 +66,7 @@ pub const COMMANDS: &[CommandSpec] = &[
     eeprom::EEPROM,
     lua::LUA,
     agent::AGENT,
+    models::MODELS,
     help::HELP,
     help::QUIT,
 ];

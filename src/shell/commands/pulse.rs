@@ -13,7 +13,7 @@ use crate::shell::{Args, Shell};
 pub const PLS: CommandSpec = CommandSpec {
     name: "pls",
     aliases: &[],
-    usage: "pls N   e.g. set SMB67=16#85, SMW68=500, SMD72=1000; pls 0",
+    usage: "pls N [strict]   e.g. set SMB67=16#85, SMW68=500, SMD72=1000; pls 0",
     summary: "run the PLS instruction on pulse channel N (0 = Q0.0, 1 = Q0.1, 2 = Q0.4, 3 = Q0.5 on K209M)",
     subcommands: &[],
     run: pls,
@@ -31,7 +31,7 @@ pub const PSTOP: CommandSpec = CommandSpec {
 pub const PTO: CommandSpec = CommandSpec {
     name: "pto",
     aliases: &[],
-    usage: "pto N freq=2kHz count=1000 | pto N cycle=500us count=1000 | pto status N",
+    usage: "pto N freq=2kHz count=1000 [strict] | pto N cycle=500us count=1000 | pto status N",
     summary: "start a single-segment pulse train (writes SMB67, SMW68, SMD72, then PLS), or decode its status",
     subcommands: &["status"],
     run: pto,
@@ -49,14 +49,16 @@ pub const PWM: CommandSpec = CommandSpec {
 pub const PROFILE: CommandSpec = CommandSpec {
     name: "profile",
     aliases: &[],
-    usage: "profile N at VB3001 [(cycle=500us, count=1000), (freq=4kHz, count=4000), …] [force] [plan [to=FILE.svg]]",
+    usage: "profile N at VB3001 [(cycle=500us, count=1000), (freq=4kHz, count=4000), …] [force] [strict] [plan [to=FILE.png|FILE.svg] [size=900x340]]",
     summary: "multi-segment PTO from a profile table (writes the table, SMW168, SMB67=16#A0, then PLS); `plan` only draws the frequency over time",
     subcommands: &[],
     run: profile,
 };
 
 fn instruction(sh: &mut Shell, args: Args, cmd: &str, usage: &str) -> Result<Outcome> {
-    let w = lex::words_in(&args)?;
+    let mut w = lex::words_in(&args)?;
+    let strict = cmd == "pls" && w.iter().any(|(_, t)| t.eq_ignore_ascii_case("strict"));
+    w.retain(|(_, t)| cmd != "pls" || !t.eq_ignore_ascii_case("strict"));
     let Some(&word) = w.first() else {
         return Err(Error::usage(format!("a pulse channel number is missing: {usage}")).column(args.offset));
     };
@@ -65,11 +67,29 @@ fn instruction(sh: &mut Shell, args: Args, cmd: &str, usage: &str) -> Result<Out
     }
     let (dev, ch) = k2cmd::channel(sh, word, "pulse channel", 3)?;
     let name = k2cmd::name(sh, dev);
+    let warning = if cmd == "pls" { busy_check(sh, dev, ch, strict)? } else { None };
     let k2 = k2cmd::k2(sh, dev)?;
     let report = if cmd == "pls" { k2.pls(ch) } else { k2.pstop(ch) }.map_err(|e| e.device(&name))?;
     let mut o = Outcome::new(cmd).text(report.clone()).with("report", report).with("channel", ch);
+    o.notes.extend(warning);
     o.device = Some(name);
     Ok(o)
+}
+
+/// Before a PLS (or `pto`/`profile`, which end in one): a channel still busy would have its
+/// running train replaced. A warning by default; an error with `strict`.
+fn busy_check(sh: &mut Shell, dev: usize, ch: u8, strict: bool) -> Result<Option<String>> {
+    let (model, _) = model_of(sh, dev)?;
+    let name = k2cmd::name(sh, dev);
+    let Some(what) = hp::busy(sh.session.entry(dev).device.as_mut(), model, ch).map_err(|e| e.device(&name))? else {
+        return Ok(None);
+    };
+    if strict {
+        return Err(Error::state(format!("{what}: PLS {ch} would replace it; nothing was written"))
+            .device(&name)
+            .hint(format!("wait for it (pto status {ch}), stop it (pstop {ch}), or drop `strict` to replace it")));
+    }
+    Ok(Some(format!("{what}; PLS {ch} replaced it (add `strict` to refuse instead)")))
 }
 
 fn pls(sh: &mut Shell, args: Args) -> Result<Outcome> {
@@ -126,6 +146,8 @@ fn pto(sh: &mut Shell, args: Args) -> Result<Outcome> {
         return Ok(o);
     }
     check_options(&opts, &["freq", "cycle", "count"], PTO.usage)?;
+    let strict = pos.iter().any(|(_, t)| t.eq_ignore_ascii_case("strict"));
+    let pos: Vec<_> = pos.into_iter().filter(|(_, t)| !t.eq_ignore_ascii_case("strict")).collect();
     let word = *pos.first().ok_or_else(|| Error::usage(PTO.usage).column(args.offset))?;
     if let Some(extra) = pos.get(1) {
         return Err(Error::usage(format!("unexpected `{}`", extra.1)).column(extra.0).hint(PTO.usage));
@@ -138,7 +160,10 @@ fn pto(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let (model, _) = model_of(sh, dev)?;
     let name = k2cmd::name(sh, dev);
     let plan = hp::plan_pto(model, ch, rate, n).map_err(|e| e.device(&name))?;
-    run_plan(sh, dev, "pto", &plan)
+    let warning = busy_check(sh, dev, ch, strict)?;
+    let mut o = run_plan(sh, dev, "pto", &plan)?;
+    o.notes.extend(warning);
+    Ok(o)
 }
 
 fn pwm(sh: &mut Shell, args: Args) -> Result<Outcome> {
@@ -204,6 +229,7 @@ fn profile(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let word = *w.first().ok_or_else(|| Error::usage(PROFILE.usage).column(args.offset))?;
     let (dev, ch) = k2cmd::channel(sh, word, "pulse channel", 3)?;
     let (mut at, mut list, mut force, mut plan_only, mut svg_to) = (None, None, false, false, None);
+    let (mut strict, mut size) = (false, None);
     let mut i = 1;
     while i < w.len() {
         let (c, t) = w[i];
@@ -221,8 +247,12 @@ fn profile(sh: &mut Shell, args: Args) -> Result<Outcome> {
                 i += 1;
             }
             "force" => force = true,
+            "strict" => strict = true,
             "plan" => plan_only = true,
             _ if t.to_ascii_lowercase().starts_with("to=") => svg_to = Some(t[3..].to_string()),
+            _ if t.to_ascii_lowercase().starts_with("size=") => {
+                size = Some(crate::plot::parse_size(&t[5..]).map_err(|m| Error::usage(m).column(c))?)
+            }
             _ if t.starts_with('[') => list = Some(segments(t, c)?),
             _ => return Err(Error::usage(format!("unexpected `{t}`")).column(c).hint(PROFILE.usage)),
         }
@@ -242,8 +272,10 @@ fn profile(sh: &mut Shell, args: Args) -> Result<Outcome> {
         }
         let series = crate::plot::Series::new(format!("PTO{ch} frequency"), "Hz", points).stepped();
         if let Some(path) = &svg_to {
-            std::fs::write(path, crate::plot::svg(std::slice::from_ref(&series), 800, 220))
-                .map_err(|e| Error::io(format!("cannot write {path}")).cause(e))?;
+            crate::shell::files::check_write(&sh.write_rule, path)?;
+            let one = std::slice::from_ref(&series);
+            let title = format!("PTO{ch} profile plan: {} pulses, {} segments", tl.total_pulses, tl.points.len());
+            crate::plot::write_picture(path, one, &title, size.unwrap_or_else(|| crate::plot::default_size(one)))?;
         }
         let mut text = crate::plot::terminal(std::slice::from_ref(&series), 64, 8);
         for (k, p) in tl.points.iter().enumerate() {
@@ -264,16 +296,14 @@ fn profile(sh: &mut Shell, args: Args) -> Result<Outcome> {
         let mut o =
             Outcome::new("profile").text(text).with("timeline", &tl).with("planned_writes", pr.plan.writes.len());
         if let Some(path) = svg_to {
-            o = o.with("svg", path);
+            o = o.with("file", path);
         }
         o.device = Some(name);
         return Ok(o);
     }
+    // The run's report already says "PTO0 (Q0.0): N pulses in K segments, T s": one line per fact.
+    let warning = busy_check(sh, dev, ch, strict)?;
     let mut o = run_plan(sh, dev, "profile", &pr.plan)?;
-    o = o.with("timeline", &tl);
-    if let Some(m) = o.message.as_mut() {
-        m.push_str(&format!("\nprofile: {} pulses in {:.6} s", tl.total_pulses, tl.duration_us as f64 / 1e6));
-        o.view = crate::output::View::Text(m.clone());
-    }
-    Ok(o)
+    o.notes.extend(warning);
+    Ok(o.with("timeline", &tl))
 }

@@ -8,7 +8,7 @@
 //! instantly) and on the wall clock for real ones; Ctrl-C interrupts them.
 
 use super::CommandSpec;
-use crate::core::literal::parse_duration_us;
+use crate::core::literal::parse_option_duration_us;
 use crate::core::{Clock, Error, Result};
 use crate::output::Outcome;
 use crate::servo::ds402::{self, Profile, Waiter};
@@ -212,7 +212,9 @@ fn status(ops: &mut dyn ServoOps) -> Result<Outcome> {
 /// Parses a value for a table object with the device's units (`300rpm`, `2.5rev`, DEC).
 fn value_for(space: &ServoSpace, name: &str, text: &str, col: usize) -> Result<i64> {
     let r = ObjRef::of(objects::named(name));
-    space.parse_value(&r, text).map(|v| v.as_i64()).map_err(|e| {
+    // Command arguments follow the unit rule: bare speeds are rpm, bare accelerations rps/s.
+    let text = units::command_value(text, objects::named(name).unit);
+    space.parse_value(&r, &text).map(|v| v.as_i64()).map_err(|e| {
         let c = e.column.unwrap_or(0);
         let mut e = e.operand(name);
         e.column = Some(col + c);
@@ -310,7 +312,7 @@ fn wait(ops: &mut dyn ServoOps, w: &Waiter, rest: &[lex::Word], base: usize, col
                 .column(base + c)
                 .hint("servo wait target timeout=5s"));
         }
-        let us = parse_duration_us(v).map_err(|m| Error::usage(m).column(base + c + k.len() + 1))?;
+        let us = parse_option_duration_us(v).map_err(|m| Error::usage(m).column(base + c + k.len() + 1))?;
         timeout = Duration::from_micros(us.max(0) as u64);
     }
     let start = w.clock.now();

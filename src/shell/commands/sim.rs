@@ -5,7 +5,7 @@
 
 use super::CommandSpec;
 use crate::core::clock::format_time;
-use crate::core::literal::parse_duration_us;
+use crate::core::literal::parse_option_duration_us;
 use crate::core::{Error, Result};
 use crate::output::Outcome;
 use crate::shell::{Args, Shell};
@@ -30,7 +30,7 @@ fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
             let d = it
                 .next()
                 .ok_or_else(|| Error::usage("sim step needs a duration, e.g. sim step 500ms").column(args.offset))?;
-            let us = parse_duration_us(d).map_err(|m| Error::usage(m).column(args.offset + 5))?;
+            let us = parse_option_duration_us(d).map_err(|m| Error::usage(m).column(args.offset + 5))?;
             if us < 0 {
                 return Err(Error::usage("time only moves forward"));
             }

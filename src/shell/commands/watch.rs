@@ -43,11 +43,15 @@ pub struct Render {
     every: Duration,
     prev: Option<Vec<Value>>,
     drawn: usize,
+    /// The terminal's (columns, rows): a table that would not fit is laid out in columns,
+    /// then shown a page at a time, so the redraw stays on the screen.
+    pub size: Option<(usize, usize)>,
+    page: usize,
 }
 
 impl Render {
     pub fn new(mode: Mode, labels: Vec<String>, every: Duration) -> Render {
-        Render { mode, labels, every, prev: None, drawn: 0 }
+        Render { mode, labels, every, prev: None, drawn: 0, size: None, page: 0 }
     }
 
     /// Writes one sample.
@@ -81,21 +85,35 @@ impl Render {
                     write!(w, "\x1b[{}A", self.drawn)?;
                 }
                 let width = self.labels.iter().map(|l| l.chars().count()).max().unwrap_or(0);
-                let mut lines = vec![format!(
+                let mut header = format!(
                     "every {} · t={} · sample {} · Ctrl-C stops",
                     crate::plot::time(self.every.as_secs_f64()),
                     format_time(s.t),
                     s.index + 1
-                )];
-                for ((l, r), c) in self.labels.iter().zip(&s.readings).zip(&changed) {
-                    let v = show_value(&r.value, r.dtype);
-                    let v = match (c, color) {
-                        (true, true) => format!("\x1b[1;33m{v}\x1b[0m"),
-                        (true, false) => format!("{v} *"),
-                        (false, _) => v,
-                    };
-                    lines.push(format!("  {l:<width$}  {v}"));
+                );
+                // Cells: the text, and its width on screen (without colour codes).
+                let cells: Vec<(String, usize)> = self
+                    .labels
+                    .iter()
+                    .zip(&s.readings)
+                    .zip(&changed)
+                    .map(|((l, r), c)| {
+                        let v = show_value(&r.value, r.dtype);
+                        let shown = format!("{l:<width$}  {v}{}", if *c && !color { " *" } else { "" });
+                        let n = shown.chars().count();
+                        let text = match (c, color) {
+                            (true, true) => format!("{l:<width$}  \x1b[1;33m{v}\x1b[0m"),
+                            _ => shown,
+                        };
+                        (text, n)
+                    })
+                    .collect();
+                let (body, paged) = self.layout(&cells);
+                if let Some(p) = paged {
+                    header.push_str(&format!(" · page {p}"));
                 }
+                let mut lines = vec![header];
+                lines.extend(body);
                 for l in &lines {
                     write!(w, "\r\x1b[2K{l}\n")?;
                 }
@@ -104,6 +122,39 @@ impl Render {
         }
         self.prev = Some(values);
         w.flush()
+    }
+}
+
+impl Render {
+    /// The operand lines for one frame: one a line when they fit the terminal; else in
+    /// columns (down, then across); else a page at a time, the page turning every two seconds
+    /// of samples. Returns the lines and, when paged, "N/M".
+    fn layout(&mut self, cells: &[(String, usize)]) -> (Vec<String>, Option<String>) {
+        let indent = |c: &(String, usize)| format!("  {}", c.0);
+        let Some((cols, rows)) = self.size else { return (cells.iter().map(indent).collect(), None) };
+        // The header and the line the cursor rests on take two rows.
+        let room = rows.saturating_sub(2).max(1);
+        if cells.len() <= room {
+            return (cells.iter().map(indent).collect(), None);
+        }
+        let cell_w = cells.iter().map(|c| c.1).max().unwrap_or(1) + 4;
+        let per_row = (cols.saturating_sub(2) / cell_w).max(1);
+        let per_page = per_row * room;
+        let pages = cells.len().div_ceil(per_page);
+        let turn = (Duration::from_secs(2).as_micros() / self.every.as_micros().max(1)).max(1) as usize;
+        let page = if pages > 1 { (self.page / turn) % pages } else { 0 };
+        self.page += 1;
+        let shown = &cells[page * per_page..cells.len().min((page + 1) * per_page)];
+        let height = shown.len().div_ceil(per_row);
+        let mut lines = vec![String::from(" "); height];
+        for (k, c) in shown.iter().enumerate() {
+            let line = &mut lines[k % height];
+            line.push(' ');
+            line.push_str(&c.0);
+            line.push_str(&" ".repeat(cell_w - 1 - c.1));
+        }
+        let lines = lines.into_iter().map(|l| l.trim_end().to_string()).collect();
+        (lines, (pages > 1).then(|| format!("{}/{pages}", page + 1)))
     }
 }
 
@@ -132,6 +183,7 @@ fn watch(sh: &mut Shell, args: Args) -> Result<Outcome> {
         Mode::Lines
     };
     let mut render = Render::new(mode, labels, req.plan.every);
+    render.size = crate::shell::term::size();
     let mut out = std::io::stdout();
     let stats = watch_into(&mut sh.session, &texts, &req.plan, &mut render, &mut out)?;
     if sh.verbose {
@@ -177,6 +229,33 @@ mod tests {
         assert!(frames[2].contains("t=0.600000s"));
         let plain = run(Mode::Live { color: false }, 3);
         assert!(!plain.contains("\x1b[1;33m") && plain.contains(" *"), "NO_COLOR marks changes with *");
+    }
+
+    /// A table taller than the terminal stays on the screen: columns, then pages; every frame
+    /// moves the cursor up by no more than the rows the terminal has.
+    #[test]
+    fn a_table_taller_than_the_terminal_stays_in_place() {
+        let mut s = session();
+        let texts: Vec<String> = (0..60).map(|k| format!("VW{}", 2 * k)).collect();
+        let texts: Vec<&str> = texts.iter().map(String::as_str).collect();
+        let labels: Vec<String> = texts.iter().map(|t| t.to_string()).collect();
+        for (size, paged) in [((80, 12), false), ((30, 8), true)] {
+            let mut r = Render::new(Mode::Live { color: false }, labels.clone(), Duration::from_millis(500));
+            r.size = Some(size);
+            let plan = Plan { every: Duration::from_millis(500), count: Some(20), span: None };
+            let mut out = Vec::new();
+            watch_into(&mut s, &texts, &plan, &mut r, &mut out).unwrap();
+            let out = String::from_utf8(out).unwrap();
+            for frame in
+                out.split("\x1b[").filter_map(|f| f.split_once('A')).filter_map(|(n, _)| n.parse::<usize>().ok())
+            {
+                assert!(frame < size.1, "a frame of {frame} lines in a {}-row terminal", size.1);
+            }
+            assert!(out.lines().all(|l| l.replace("\r\x1b[2K", "").chars().count() <= size.0 || l.contains("Ctrl-C")));
+            assert_eq!(out.contains("page 1/"), paged, "{out}");
+            // Paged: every operand is shown at some point (the page turns every 2 s of samples).
+            assert!(out.contains("VW118"), "{out}");
+        }
     }
 
     #[test]

@@ -1,0 +1,165 @@
+//! The shell's messages as a new user meets them: every "did you mean" names something, the
+//! input is quoted as typed, and the K2 manual's own spelling is accepted with a note.
+
+use super::Shell;
+use crate::core::{Clock, Error};
+use crate::output::Style;
+use crate::session::Session;
+
+fn shell() -> Shell {
+    let mut s = Session::new(Clock::stepped());
+    s.open("plc", "sim:K205-16DT").unwrap();
+    s.open("servo", "sim-servo:?id=1").unwrap();
+    Shell::new(s, Style { json: true, color: false })
+}
+
+fn error(sh: &mut Shell, line: &str) -> Error {
+    let r = sh.exec(line);
+    r.into_iter().find_map(|r| r.err()).unwrap_or_else(|| panic!("`{line}` should fail")).1
+}
+
+#[test]
+fn suggestions_are_never_empty() {
+    let mut sh = shell();
+    for line in ["get DB1.DBW0", "get -v VW0", "get xw0", "get 5", "help gte", "servo stauts"] {
+        let e = error(&mut sh, line);
+        let hint = e.hint.clone().unwrap_or_default();
+        assert!(!hint.is_empty(), "{line}: no hint in {e}");
+        assert!(!hint.contains("mean ?") && !hint.contains("``") && !e.message.contains("``"), "{line}: {e} / {hint}");
+    }
+}
+
+#[test]
+fn errors_quote_the_input_as_typed() {
+    let mut sh = shell();
+    let e = error(&mut sh, "get -v VW0");
+    assert!(e.message.contains("`-v`"), "{e}");
+    let e = error(&mut sh, "get xw0");
+    assert!(e.message.contains("`xw0`") && e.message.contains("`xw`"), "{e}");
+    let e = error(&mut sh, "set VW0=0x10");
+    assert!(e.message.contains("`0x10`"), "{e}");
+    let e = error(&mut sh, "set VW0=x#5");
+    assert!(e.message.contains("`x#`"), "{e}");
+    let e = error(&mut sh, "set VW0=16#fg");
+    assert!(e.message.contains("`g`"), "{e}");
+}
+
+#[test]
+fn sub_command_typos_name_the_nearest_sub_command() {
+    let mut sh = shell();
+    let e = error(&mut sh, "servo stauts");
+    assert!(e.hint.as_deref().unwrap_or("").contains("`servo status`"), "{e:?}");
+    let e = error(&mut sh, "help gte");
+    assert!(e.hint.as_deref().unwrap_or("").contains("`get`"), "{e:?}");
+}
+
+#[test]
+fn the_manuals_cyrillic_spelling_is_accepted_with_a_note() {
+    let mut sh = shell();
+    // The K2 manual prints `В#16#85` with a Cyrillic В and `% VW2` with a space.
+    let r = sh.exec("set SMB67=В#16#85; get SMB67");
+    let o = r[0].as_ref().unwrap();
+    assert!(o.notes.iter().any(|n| n.contains("`SMB67=B#16#85;`")), "{:?}", o.notes);
+    assert_eq!(r[1].as_ref().unwrap().values[0].value, crate::core::Value::Int(0x85));
+    let r = sh.exec("get % VW2 ВW0");
+    let o = r[0].as_ref().unwrap();
+    assert_eq!(o.values.iter().map(|v| v.operand.as_str()).collect::<Vec<_>>(), ["VW2", "VW0"]);
+    assert!(!o.notes.is_empty());
+    // A trailing comment, as a checklist writes one, is not an operand.
+    assert!(sh.exec("get VW0   # speed set-point")[0].is_ok());
+    // … but the manual's spaced literal is a value, not a comment.
+    assert_eq!(value_of(&mut sh, "set SMB67=B # 16 # 86; get SMB67"), crate::core::Value::Int(0x86));
+}
+
+#[test]
+fn c_hex_and_negative_words_suggest_the_iec_form() {
+    let mut sh = shell();
+    let e = error(&mut sh, "set VW0=0x10");
+    assert!(e.message.contains("16#10"), "{e}");
+    let e = error(&mut sh, "set VW0=-5");
+    assert!(e.message.contains("INT#-5") && !e.message.contains("DI#"), "{e}");
+    let e = error(&mut sh, "set VB0=-5");
+    assert!(e.message.contains("SINT#-5"), "{e}");
+    assert!(sh.exec("set VW0=INT#-5")[0].is_ok());
+}
+
+fn value_of(sh: &mut Shell, line: &str) -> crate::core::Value {
+    let r = sh.exec(line);
+    r.last().unwrap().as_ref().unwrap_or_else(|e| panic!("{line}: {}", e.1)).values[0].value
+}
+
+#[test]
+fn position_and_counter_values_read_signed() {
+    use crate::core::Value;
+    let mut sh = shell();
+    // §3.4.3.1: the position current value SMD212 is a DINT (+forward / −reverse); load a
+    // negative new current value (SMD208, control bit 4 of SMB201) and read it back.
+    assert_eq!(value_of(&mut sh, "set SMD208=-50, SMB201=16#10; sim step 10ms; get SMD212"), Value::Int(-50));
+    // §3.3.2: a counter counting down goes below zero, as `hsc status` says.
+    let v = value_of(&mut sh, "hsc 0 mode=0 dir=down; sim input I0.1 freq=1kHz; sim step 100ms; get SMD38");
+    assert_eq!(v, Value::Int(-100));
+    // A pulse count stays unsigned.
+    assert_eq!(crate::k2::operand::parse_one("SMD72").unwrap().view, crate::core::DataType::DWord);
+}
+
+#[test]
+// 3.14 is the value a user types (`VD8/REAL=3.14`), not an approximation of π.
+#[allow(clippy::approx_constant)]
+fn reals_show_the_shortest_text_that_reads_back() {
+    let mut sh = shell();
+    let v = value_of(&mut sh, "set VD8/REAL=3.14; get VD8/REAL");
+    assert_eq!(v.to_string(), "3.14");
+    assert_eq!(crate::output::show_value(&v, crate::core::DataType::Real), "3.14");
+    // Writing the value shown stores the same bits.
+    let raw = value_of(&mut sh, "get VD8");
+    assert_eq!(raw, crate::core::Value::Int(3.14f32.to_bits() as i64));
+}
+
+/// A second PLS (or `pto`, `profile`) on a channel still sending warns (SM66.7 PTO idle = 0,
+/// §3.4.1); with `strict` it is refused and nothing is written. An idle channel is quiet.
+#[test]
+fn pls_on_a_busy_channel_warns_and_strict_refuses() {
+    let mut sh = shell();
+    let r = sh.exec("pto 0 freq=1kHz count=1000; sim step 100ms; pls 0");
+    let o = r[2].as_ref().unwrap();
+    assert!(o.notes.iter().any(|n| n.contains("PTO0 is still sending") && n.contains("SM66.7")), "{:?}", o.notes);
+    let e = error(&mut sh, "pto 0 freq=2kHz count=10 strict");
+    assert!(e.message.contains("would replace it; nothing was written"), "{e}");
+    let count = value_of(&mut sh, "get SMD72");
+    assert_eq!(count, crate::core::Value::Int(1000), "strict wrote nothing");
+    assert!(error(&mut sh, "pls 0 strict").message.contains("still sending"));
+    // Once the train is done the channel is idle: no warning.
+    let r = sh.exec("sim step 2s; pls 0 strict");
+    assert!(r[1].as_ref().unwrap().notes.is_empty());
+}
+
+/// One line per fact: a profile run states its pulses and duration once.
+#[test]
+fn a_profile_run_reports_each_fact_once() {
+    let mut sh = shell();
+    let r = sh.exec("profile 0 at VB3001 [(freq=1kHz, count=1000), (freq=2kHz, count=4000)]");
+    let text = r[0].as_ref().unwrap().message.clone().unwrap();
+    assert_eq!(text.matches("5000 pulses").count(), 1, "{text}");
+}
+
+/// One unit rule (README "Units"): a bare number in a command is the quantity's engineering
+/// unit — ms for times, rpm and rps/s for servo speeds and accelerations; raw drive values
+/// carry their suffix (`dec`).
+#[test]
+fn bare_numbers_follow_one_unit_rule() {
+    let mut sh = shell();
+    // every=100 is 100 ms: one second gives 11 samples.
+    let r = sh.exec("trace VW0 every=100 for=1000");
+    assert_eq!(r[0].as_ref().unwrap().data["samples"], 11);
+    // speed=300 is 300 rpm and acc=100 is 100 rps/s, not the drive's raw DEC.
+    let r = sh.exec("servo enable; servo mode position; servo move abs 10000 speed=300 acc=100");
+    let o = r[2].as_ref().unwrap_or_else(|e| panic!("{}", e.1));
+    assert!(o.message.as_deref().unwrap_or("").contains("300 rpm"), "{o:?}");
+    let acc = value_of(&mut sh, "get servo:profile_acceleration");
+    let r = crate::servo::units::DEFAULT_RESOLUTION;
+    let want = crate::servo::units::rps2_to_dec(crate::servo::units::parse_decimal("100").unwrap(), r);
+    assert_eq!(acc.as_i64() as i128, want);
+    // The raw value is still reachable, with its suffix.
+    let r = sh.exec("servo move abs 0 speed=2731dec");
+    assert!(r[0].as_ref().unwrap().message.as_deref().unwrap_or("").contains("(2731 DEC)"));
+}
