@@ -106,5 +106,7 @@ fn in_process_faults_act_on_schedule_and_are_logged_with_their_time() {
     );
     let o = plcsh().args(["-c", "sim fault melt"]).stdin(Stdio::null()).output().unwrap();
     assert!(!o.status.success());
-    assert!(stdout(&o).contains("`melt` is not a fault kind"), "{}", stdout(&o));
+    // Human-readable errors go to stderr.
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("`melt` is not a fault kind"), "{err}");
 }

@@ -146,13 +146,13 @@ fn a_file_that_is_not_a_recording_is_refused_with_a_hint() {
     std::fs::write(&f, b"not a capture at all").unwrap();
     let o = plcsh().args(["record", "show", f.to_str().unwrap()]).output().unwrap();
     assert_eq!(o.status.code(), Some(2));
-    assert!(stdout(&o).contains("not a readable pcapng recording"), "{}", stdout(&o));
+    assert!(stderr(&o).contains("not a readable pcapng recording"), "{}", stderr(&o));
     let o = plcsh().args(["replay", f.to_str().unwrap()]).output().unwrap();
     assert_eq!(o.status.code(), Some(2));
     // Replayed writes never go to a device: refused before anything connects.
     let o = plcsh().args(["replay", f.to_str().unwrap(), "--device", "plc=tcp://127.0.0.1:1"]).output().unwrap();
     assert_eq!(o.status.code(), Some(2));
-    assert!(stdout(&o).contains("never to --device"), "{}", stdout(&o));
+    assert!(stderr(&o).contains("never to --device"), "{}", stderr(&o));
 }
 
 #[test]
@@ -239,4 +239,9 @@ fn an_idle_session_s_frames_reach_the_file_before_it_is_killed() {
     assert!(shown.contains("FC3 read holding registers 150") && shown.contains("FC3 reply"), "{shown}");
     let o = plcsh().args(["record", "show", file.to_str().unwrap()]).output().unwrap();
     assert!(o.status.success(), "the file is readable after kill -9: {}", stdout(&o));
+}
+
+/// Human-readable errors go to stderr.
+fn stderr(o: &std::process::Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
 }

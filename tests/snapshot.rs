@@ -51,14 +51,19 @@ fn a_snapshot_from_a_newer_plcsh_or_of_another_model_is_refused() {
     assert!(o.status.success(), "{}", stdout(&o));
     let o = run(&["--time", "stepped", "--model", "K209M-56DT"], "sim snapshot restore a");
     assert!(!o.status.success());
-    assert!(stdout(&o).contains("the snapshot is of a K205-16DT, this simulator is a K209M-56DT"), "{}", stdout(&o));
-    assert!(stdout(&o).contains("plc=sim:K205-16DT"), "the hint says how to open it: {}", stdout(&o));
+    assert!(stderr(&o).contains("the snapshot is of a K205-16DT, this simulator is a K209M-56DT"), "{}", stderr(&o));
+    assert!(stderr(&o).contains("plc=sim:K205-16DT"), "the hint says how to open it: {}", stderr(&o));
     let file = dir.join("a.json");
     let text = std::fs::read_to_string(&file).unwrap();
     let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
     v["devices"]["plc"]["sections"]["program"] = serde_json::json!({});
     std::fs::write(dir.join("b.json"), v.to_string()).unwrap();
     let o = run(&["--time", "stepped"], "sim snapshot restore b");
-    assert!(stdout(&o).contains("has a `program` section this plcsh cannot restore"), "{}", stdout(&o));
+    assert!(stderr(&o).contains("has a `program` section this plcsh cannot restore"), "{}", stderr(&o));
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Human-readable errors go to stderr.
+fn stderr(o: &std::process::Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
 }

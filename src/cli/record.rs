@@ -29,7 +29,7 @@ pub struct ReplayArgs {
 }
 
 fn fail(out: &mut dyn Write, style: Style, cmd: &str, e: &crate::core::Error) -> i32 {
-    let _ = output::write_error(out, style, cmd, e, None);
+    let _ = output::report_error(out, style, cmd, e, None);
     if e.kind == crate::core::ErrorKind::Usage {
         2
     } else {
