@@ -15,6 +15,7 @@ pub mod inputs;
 pub mod pto;
 pub mod rtc;
 pub mod state;
+pub mod wired;
 
 pub mod modbus_server;
 pub mod rtu_frame;
@@ -60,6 +61,8 @@ pub struct K2Sim {
     pub backup: Backup,
     /// The PLC-side helper program, when served with `--agent` (issue 5).
     pub agent: Option<agent::Agent>,
+    /// Wires to other simulated devices (`sim wire`); this simulator hosts them ([`wired`]).
+    pub wiring: Option<Box<crate::wiring::Harness>>,
     /// Scratch space of `advance_to` (events raised in a step, where each channel's end),
     /// kept so a step allocates nothing.
     raised: Vec<(Duration, EventKind)>,
@@ -86,6 +89,7 @@ impl K2Sim {
             rtc: Rtc::new(instr::host_local_now(), start),
             backup: Backup { since: start, ..Backup::default() },
             agent: None,
+            wiring: None,
             raised: Vec::new(),
             run_ends: Vec::new(),
         };
@@ -115,6 +119,14 @@ impl K2Sim {
     /// Brings the simulation up to virtual time `now`: pulses, counts, events, input
     /// levels and system bits, all computed from the elapsed time in one step.
     pub fn advance_to(&mut self, now: Duration) {
+        if self.wiring.is_some() {
+            return self.advance_wired(now);
+        }
+        self.advance_plain(now);
+    }
+
+    /// [`Self::advance_to`] without the wiring: one formula per signal over the interval.
+    pub(crate) fn advance_plain(&mut self, now: Duration) {
         let last = self.last;
         let now = now.max(last);
         // Events go to a buffer kept between steps, one run per channel, merged by time.
@@ -528,6 +540,7 @@ impl Device for K2Sim {
         if !raised.is_empty() {
             self.events.extend(raised);
         }
+        self.wired_outputs();
         Ok(())
     }
 
@@ -563,6 +576,7 @@ impl crate::k2::K2Ops for K2Sim {
         self.advance();
         let now = self.last;
         let r = self.pto[i].pls(&mut self.mem, now);
+        self.wired_outputs();
         match r {
             Err(e) if e.kind == ErrorKind::State => {
                 let others = self.other_enabled(channel);
@@ -598,6 +612,7 @@ impl crate::k2::K2Ops for K2Sim {
         let p = &mut self.pto[i];
         let what = p.pstop(&mut self.mem);
         let r = p.regs;
+        self.wired_outputs();
         Ok(format!(
             "PSTOP {channel}: {}; emergency-stop latch SM{}.7 = 1 (clear it with set SM{}.7=0)",
             if what.is_empty() { "nothing was running".to_string() } else { format!("{what} stopped") },
