@@ -26,6 +26,7 @@
 //! [`max_piece`] seconds). A counter in 1× mode counts A's rising edges of the same wave.
 
 pub mod bench;
+pub mod setup;
 
 use crate::core::signal::PulseTrain;
 use crate::core::{Error, Result};
@@ -405,8 +406,10 @@ pub fn quad_wave(t0_ns: u64, x0: f64, rate: f64, given: i64) -> Option<(u64, u64
     // Time until the next edge, from the true rate; never before the piece starts.
     let wait_ns = (due.max(0.0) / rate.abs() * 1e9).ceil().max(1.0) as u64;
     let period = 1_000_000_000u64.div_ceil(hz);
-    let first = t0_ns + wait_ns;
-    Some((hz, first.saturating_sub(period), up))
+    // Within the first period of virtual time the origin would be before zero: the first
+    // edge then comes up to a period late (the next piece catches the count up).
+    let first = (t0_ns + wait_ns).max(period);
+    Some((hz, first - period, up))
 }
 
 /// How long a piece at `rate` (4× counts/s) may last before the whole-Hz wave drifts by a

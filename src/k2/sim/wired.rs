@@ -14,6 +14,9 @@ use crate::k2::operand::{Area, K2Operand};
 use crate::wiring::{self, Decl, Harness, Kind, Peer, Role, Wire, WireState};
 use std::time::Duration;
 
+/// Most counts one piece catches up at its start (a longer gap is a lost plan, not noise).
+const MAX_CATCH_UP: u64 = 100_000;
+
 fn secs(t_ns: u64) -> f64 {
     t_ns as f64 / 1e9
 }
@@ -230,6 +233,18 @@ impl K2Sim {
         }
     }
 
+    /// One 4× quadrature step on A/B (A leads counting up), as a decoder sees it.
+    fn quad_step(&mut self, a: Pin, b: Pin, up: bool) {
+        let level = |s: &K2Sim, p: Pin| s.mem.i.get(p.0 as usize).is_some_and(|x| x >> p.1 & 1 != 0);
+        let (la, lb) = (level(self, a), level(self, b));
+        let toggle_a = (la == lb) == up;
+        if toggle_a {
+            self.drive_input(a, !la);
+        } else {
+            self.drive_input(b, !lb);
+        }
+    }
+
     /// The pulse train a channel puts out now, as the signal model describes it.
     fn pto_train(&self, channel: u8, dir: Pin) -> Option<(u64, u64, PulseTrain)> {
         let c = self.pto.iter().find(|c| c.regs.channel == channel)?;
@@ -337,6 +352,17 @@ impl K2Sim {
                     st.given = x0.floor() as i64;
                     st.anchored = true;
                 }
+                // Counts owed from the last piece (a plan replaced between polls, a start
+                // within the first period) are given now, as A/B steps.
+                let owed = x0.floor() as i64 - st.given;
+                if owed != 0 {
+                    self.inputs.remove(a);
+                    self.inputs.remove(b);
+                    for _ in 0..owed.unsigned_abs().min(MAX_CATCH_UP) {
+                        self.quad_step(a, b, owed > 0);
+                    }
+                    st.given = x0.floor() as i64;
+                }
                 let piece_end = piece.t0 + piece.dur;
                 let (te, rate) = if piece.a == 0.0 {
                     (piece_end, piece.v0 * scale)
@@ -353,6 +379,13 @@ impl K2Sim {
                 st.plan = plan;
                 st.until_ns = ns_at(until).max(t_ns + 1);
                 st.wave = wiring::quad_wave(t_ns, x0, rate, st.given);
+                if let Some((hz, o, _)) = st.wave {
+                    // A late first edge (see `quad_wave`): resynchronise soon.
+                    let period = 1_000_000_000u64.div_ceil(hz);
+                    if o == 0 && t_ns < period {
+                        st.until_ns = st.until_ns.min(2 * period);
+                    }
+                }
                 match st.wave {
                     Some((hz, origin_ns, up)) => {
                         let (lead, lag) = if up { (a, b) } else { (b, a) };

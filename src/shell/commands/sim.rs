@@ -13,9 +13,9 @@ use std::time::Duration;
 pub const SIM: CommandSpec = CommandSpec {
     name: "sim",
     aliases: &[],
-    usage: "sim time | sim step DURATION | sim run | sim input I0.1 freq=1kHz [dir=up|down] | sim input I0.1 off | sim quad A B freq=1kHz | sim inputs | sim retain RANGES|none",
-    summary: "the simulator's clock (show, step and keep stepped, follow the wall clock), input signals for the counters, retained ranges",
-    subcommands: &["time", "step", "run", "input", "quad", "inputs", "retain"],
+    usage: "sim time | sim step DURATION | sim run | sim input I0.1 freq=1kHz [dir=up|down] | sim input I0.1 off | sim quad A B freq=1kHz | sim inputs | sim retain RANGES|none | sim wire FROM -> TO [lines=N] [delay=D] | sim wires | sim unwire TERMINAL|all",
+    summary: "the simulator's clock (show, step and keep stepped, follow the wall clock), input signals for the counters, retained ranges, wiring between simulated devices",
+    subcommands: &["time", "step", "run", "input", "quad", "inputs", "retain", "wire", "wires", "unwire"],
     run: sim,
 };
 
@@ -37,6 +37,7 @@ fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
         }
         "run" => clock.run(),
         "input" | "quad" | "inputs" | "retain" => return super::siminputs::run(sh, sub, args),
+        "wire" | "wires" | "unwire" => return super::simwire::run(sh, sub, args),
         other => return Err(Error::usage(format!("unknown `sim {other}`")).hint(SIM.usage).column(args.offset)),
     }
     let now = clock.now();
