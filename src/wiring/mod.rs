@@ -371,8 +371,9 @@ impl Harness {
             Kind::Switch { switch, .. } => {
                 format!("{} switch at {} increments (also the drive's own input)", switch.name(), switch.position())
             }
-            Kind::Loop { delay_ns, .. } | Kind::PulseLoop { delay_ns, .. } => {
-                format!("output to input, delay {} µs", delay_ns / 1000)
+            Kind::Loop { delay_ns, .. } => format!("output to input, delay {} µs", delay_ns / 1000),
+            Kind::PulseLoop { channel, delay_ns, .. } => {
+                format!("PTO{channel} output (pulses and level) to input, delay {} µs", delay_ns / 1000)
             }
         };
         format!("{}  ({what})", w.decl)

@@ -300,7 +300,22 @@ impl K2Sim {
                         }
                     }
                 }
-                Kind::PulseLoop { .. } => w.state.until_ns = 0,
+                Kind::PulseLoop { channel, to, delay_ns } => {
+                    w.state.until_ns = 0;
+                    // Between trains the output is a plain output: its level goes through too.
+                    let from = self.pto.iter().find(|c| c.regs.channel == channel).map(|c| c.pins().0);
+                    if let Some(from) = from {
+                        let on = self.mem.q.get(from.0 as usize).is_some_and(|b| b >> from.1 & 1 != 0);
+                        if w.state.last_level != Some(on) {
+                            w.state.last_level = Some(on);
+                            if delay_ns == 0 && self.inputs.drives(to).is_none() {
+                                self.drive_input(to, on);
+                            } else {
+                                w.state.pending.push_back((ns(now) + delay_ns, on));
+                            }
+                        }
+                    }
+                }
                 _ => {}
             }
         }
@@ -312,19 +327,22 @@ impl K2Sim {
         let Some(mut h) = self.wiring.take() else { return self.advance_plain(now) };
         let now_ns = ns(now.max(self.last));
         loop {
+            // Each piece starts by setting every wire's signal (and delivering what is due
+            // then), the last one at `now` itself.
             let t_ns = ns(self.last);
             let mut end = now_ns;
             for w in &mut h.wires {
                 let peer = w.peer.map(|i| &mut h.peers[i].1);
                 end = end.min(self.prepare(w, peer, t_ns));
             }
-            let end = end.max(t_ns.saturating_add(1)).min(now_ns.max(t_ns));
+            if t_ns >= now_ns {
+                self.advance_plain(self.last);
+                break;
+            }
+            let end = end.max(t_ns + 1).min(now_ns);
             self.advance_plain(Duration::from_nanos(end));
             for w in &mut h.wires {
                 finish(w, t_ns, end);
-            }
-            if end >= now_ns {
-                break;
             }
         }
         self.wiring = Some(h);
@@ -451,9 +469,10 @@ impl K2Sim {
                             break;
                         }
                         if t_ns < s0 + len {
-                            // Rising edges at the start of each cycle: the k-th at s0 + (k-1)·cycle.
+                            // One edge per pulse, counted as the pulse completes (the k-th at
+                            // s0 + k·cycle), as the channel's own position counter counts it.
                             let hz = (1e9 / s.cycle_ns as f64).round().max(1.0) as u64;
-                            wave = Some((hz, s0.saturating_sub(s.cycle_ns), true));
+                            wave = Some((hz, s0, true));
                             next = s0 + len;
                             break;
                         }
@@ -467,6 +486,13 @@ impl K2Sim {
                     None => {
                         if self.inputs.drives(to).is_some() {
                             self.inputs.remove(to);
+                        }
+                        while st.pending.front().is_some_and(|(at, _)| *at <= t_ns) {
+                            let (_, on) = st.pending.pop_front().unwrap();
+                            self.drive_input(to, on);
+                        }
+                        if let Some((at, _)) = st.pending.front() {
+                            next = next.min(*at);
                         }
                     }
                 }
