@@ -266,6 +266,7 @@ pub fn register(lua: &Lua) -> mlua::Result<()> {
         })?,
     )?;
     p.set("json", json)?;
+    super::wire::register(lua, &p)?;
     lua.globals().set("plcsh", p)?;
     Ok(())
 }

@@ -16,6 +16,7 @@ mod bridge;
 mod device;
 pub mod error;
 mod paths;
+mod wire;
 
 pub use bridge::{Bridge, BRIDGE};
 pub use error::Failure;

@@ -405,7 +405,8 @@ impl K2Sim {
     pub fn next_event_due(&self) -> Option<Duration> {
         let p = self.pto.iter().filter_map(|p| p.next_due());
         let h = self.hsc.iter().filter_map(|h| h.next_due(&self.inputs, &self.mem, self.last));
-        p.chain(h).min()
+        // A wired input changes its formula at the end of its piece: look again then.
+        p.chain(h).chain(self.wiring_due()).min()
     }
 
     /// Battery-retained ranges (`VB0..VB99`, `MB0[10]`): V or M byte ranges.

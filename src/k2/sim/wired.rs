@@ -210,6 +210,19 @@ impl K2Sim {
         self.wiring.as_ref().map(|h| h.wires.iter().map(Harness::describe).collect()).unwrap_or_default()
     }
 
+    /// When the next wired piece begins (a wired input may then change how it moves).
+    pub(crate) fn wiring_due(&self) -> Option<Duration> {
+        let h = self.wiring.as_ref()?;
+        let last = ns(self.last);
+        h.wires
+            .iter()
+            .flat_map(|w| [Some(w.state.until_ns), w.state.pending.front().map(|p| p.0)])
+            .flatten()
+            .filter(|t| *t > last && *t != u64::MAX)
+            .min()
+            .map(Duration::from_nanos)
+    }
+
     /// Sets an input bit from a wire, counting its edge as a written input would be.
     fn drive_input(&mut self, p: Pin, on: bool) {
         let Some(b) = self.mem.i.get(p.0 as usize).copied() else { return };
