@@ -53,6 +53,9 @@ pub struct Cli {
     /// Simulator state file (backup area, retained ranges, clock); default in the user's data directory.
     #[arg(long, value_name = "FILE", global = true)]
     pub state: Option<std::path::PathBuf>,
+    /// Open a simulated machine described by a bench file (devices, wiring, initial values).
+    #[arg(long, value_name = "FILE", global = true)]
+    pub bench: Option<std::path::PathBuf>,
     #[command(subcommand)]
     pub sub: Option<Sub>,
 }
@@ -132,6 +135,12 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
         }
     }
     s.use_device(&current)?;
+    if let Some(path) = &cli.bench {
+        let bench = crate::wiring::bench::Bench::load(path)?;
+        for note in crate::wiring::bench::open(&mut s, &bench)? {
+            eprintln!("plcsh: {note}");
+        }
+    }
     Ok(s)
 }
 

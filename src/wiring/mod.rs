@@ -517,13 +517,15 @@ mod tests {
     #[test]
     fn the_first_edge_comes_when_the_next_count_is_due() {
         // 1000 counts/s (250 Hz), at x0 = 10.5 with 10 given: the 11th count is due in 0.5 ms.
-        let (hz, o, up) = quad_wave(1_000_000, 10.5, 1000.0, 10).unwrap();
+        let (hz, o, up) = quad_wave(10_000_000, 10.5, 1000.0, 10).unwrap();
         assert_eq!((hz, up), (250, true));
-        assert_eq!(o + 4_000_000, 1_000_000 + 500_000);
+        assert_eq!(o + 4_000_000, 10_000_000 + 500_000);
         // Going down from 10.5 with 10 given: the count drops to 9 when x falls below 10.
-        let (_, o, up) = quad_wave(0, 10.5, -1000.0, 10).unwrap();
+        let (_, o, up) = quad_wave(10_000_000, 10.5, -1000.0, 10).unwrap();
         assert!(!up);
-        assert_eq!(o + 4_000_000, 500_000);
+        assert_eq!(o + 4_000_000, 10_500_000);
+        // Within the first period of virtual time the origin cannot go before zero.
+        assert_eq!(quad_wave(1_000_000, 10.5, 1000.0, 10).unwrap().1, 0);
         assert!(quad_wave(0, 0.0, 1.0, 0).is_none(), "a quarter Hz rounds to nothing");
         assert_eq!(max_piece(4000.0), f64::INFINITY);
         assert!((max_piece(4002.0) - 0.5).abs() < 1e-9);

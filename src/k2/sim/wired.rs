@@ -451,12 +451,12 @@ impl K2Sim {
                 let motion = peer.motion(t);
                 let p = motion.first().map_or(0.0, |m| m.at(t));
                 self.drive_input(pin, switch.active(wiring::snap(p)));
-                // The level flips just after the position reaches the switch.
+                // The level flips where the position reaches the switch (to the nearest ns).
                 let reach = wiring::first_reach(&motion, switch.position(), t + 1e-9);
                 let ev = peer.next_event(t).filter(|e| *e > t);
-                let until = [reach.map(|r| r + 1e-9), ev].into_iter().flatten().fold(f64::INFINITY, f64::min);
+                let reach_ns = reach.map_or(u64::MAX, |r| (r * 1e9).round() as u64);
                 st.plan = plan;
-                st.until_ns = ns_at(until).max(t_ns + 1);
+                st.until_ns = reach_ns.min(ev.map_or(u64::MAX, ns_at)).max(t_ns + 1);
                 st.until_ns
             }
             (Kind::Loop { to, .. }, _) => {
