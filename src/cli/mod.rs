@@ -135,7 +135,8 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
         }
     }
     s.use_device(&current)?;
-    if let Some(path) = &cli.bench {
+    // `sim serve --bench` opens the bench in the served simulators instead.
+    if let (Some(path), false) = (&cli.bench, matches!(cli.sub, Some(Sub::Sim { .. }))) {
         let bench = crate::wiring::bench::Bench::load(path)?;
         for note in crate::wiring::bench::open(&mut s, &bench)? {
             eprintln!("plcsh: {note}");

@@ -97,6 +97,11 @@ pub fn open(s: &mut Session, bench: &Bench) -> Result<Vec<String>> {
     let file = bench.path.display().to_string();
     let mut notes = Vec::new();
     for (name, url) in &bench.devices {
+        // Refused before anything is opened: a bench never reaches for a real port or address.
+        if !url.trim_start().starts_with("sim") {
+            return Err(Error::usage(format!("bench {file}: device {name} = {url} is not a simulator"))
+                .hint("a bench file describes a simulated machine: use sim:MODEL and sim-servo:?id=N"));
+        }
         s.open(name, url).map_err(|e| within(e, format!("bench {file}, device {name}")))?;
         if !s.device(name)?.info().simulated {
             s.close(name)?;
@@ -138,6 +143,47 @@ pub fn open(s: &mut Session, bench: &Bench) -> Result<Vec<String>> {
         format!("bench {name}: {} device(s), {} wire(s), {} value(s)", bench.devices.len(), bench.wires.len(), bench.init.len()),
     );
     Ok(notes)
+}
+
+/// What `sim serve --bench` serves.
+pub type ServeParts =
+    (Option<crate::k2::sim::K2Sim>, Option<std::sync::Arc<std::sync::Mutex<crate::servo::sim::SimLine>>>, Vec<String>);
+
+/// For `plcsh sim serve --bench FILE`: opens the bench in a session on `clock` (the same path
+/// as `--bench`), then takes out the simulated PLC, to be served on Modbus, and the drives'
+/// line, to be served on a pty — still wired to each other. A served bench has one PLC and
+/// one drive line.
+pub fn serve_parts(path: &Path, clock: &crate::core::Clock) -> Result<ServeParts> {
+    let bench = Bench::load(path)?;
+    let mut s = Session::new(clock.clone());
+    let notes = open(&mut s, &bench)?;
+    let (mut k2, mut line) = (None, None);
+    for i in 0..s.entries().len() {
+        let name = s.entries()[i].name.clone();
+        let dev = &mut s.entry(i).device;
+        if let Some(sim) = dev.as_k2().and_then(|k| k.as_sim()) {
+            if k2.is_some() {
+                return Err(Error::unsupported(format!(
+                    "bench {}: {name} is a second PLC; sim serve serves one PLC",
+                    path.display()
+                )));
+            }
+            let fresh = crate::k2::sim::K2Sim::new(sim.model(), clock.clone());
+            k2 = Some(std::mem::replace(sim, fresh));
+        } else if let Some(l) = dev.as_servo().and_then(|d| d.simulator()) {
+            match &line {
+                Some(prev) if !std::sync::Arc::ptr_eq(prev, &l) => {
+                    return Err(Error::unsupported(format!(
+                        "bench {}: {name} is on a second drive line; sim serve serves one line",
+                        path.display()
+                    ))
+                    .hint("put the drives on one line: sim-servo:axis?id=1 and sim-servo:axis?id=2"))
+                }
+                _ => line = Some(l),
+            }
+        }
+    }
+    Ok((k2, line, notes))
 }
 
 #[cfg(test)]
