@@ -68,7 +68,7 @@ pub fn add(s: &mut Session, decl: Decl) -> Result<String> {
     let sim = s.entry(host).device.as_k2().and_then(|k| k.as_sim()).expect("resolved as a simulator");
     let peer = peer.map(|(name, line, id)| {
         let make: Box<dyn FnOnce() -> Box<dyn Peer>> =
-            Box::new(move || Box::new(crate::servo::sim::wired::DrivePeer { line, id }));
+            Box::new(move || Box::new(crate::servo::sim::wired::DrivePeer::new(line, id)));
         (name, make)
     });
     match peer {

@@ -12,9 +12,44 @@ use std::sync::{Arc, Mutex};
 pub struct DrivePeer {
     pub line: Arc<Mutex<SimLine>>,
     pub id: u8,
+    /// What the drive's next own event was, worked out for a state key (its plan, the
+    /// requests the line has answered, its switches): while the key holds and time is
+    /// before that event, bringing the drive forward changes nothing and is skipped.
+    quiet: Option<(u64, f64)>,
 }
 
 impl DrivePeer {
+    pub fn new(line: Arc<Mutex<SimLine>>, id: u8) -> DrivePeer {
+        DrivePeer { line, id, quiet: None }
+    }
+
+    /// Brings the drive to `t` unless nothing can happen before then; returns the plan's id.
+    fn bring(&mut self, t: f64) -> u64 {
+        let quiet = self.quiet;
+        let id = self.id;
+        let mut l = self.line.lock().unwrap_or_else(|p| p.into_inner());
+        let received = l.received;
+        let Some(d) = l.drive(id) else { return 0 };
+        let key = |d: &super::drive::Drive| {
+            let s = &d.switches;
+            let mut h = d.plan().fingerprint() ^ received.wrapping_mul(0x9E37_79B9_7F4A_7C15);
+            for x in [s.home, s.neg_limit.unwrap_or(f64::NAN), s.pos_limit.unwrap_or(f64::NAN)] {
+                h = (h ^ x.to_bits()).wrapping_mul(0x1000_0000_01B3);
+            }
+            h
+        };
+        if let Some((k, next)) = quiet {
+            if k == key(d) && t < next {
+                return d.plan().fingerprint();
+            }
+        }
+        d.advance(t);
+        let next = d.next_event_time().unwrap_or(f64::INFINITY);
+        let fp = d.plan().fingerprint();
+        self.quiet = Some((key(d), next));
+        fp
+    }
+
     fn with<R>(&mut self, f: impl FnOnce(&mut super::drive::Drive) -> R) -> Option<R> {
         let mut l = self.line.lock().unwrap_or_else(|p| p.into_inner());
         l.drive(self.id).map(f)
@@ -27,8 +62,8 @@ impl Peer for DrivePeer {
     }
 
     fn motion(&mut self, t: f64) -> Vec<Piece> {
+        self.bring(t);
         self.with(|d| {
-            d.advance(t);
             d.plan()
                 .pieces_from(t)
                 .into_iter()
@@ -39,19 +74,12 @@ impl Peer for DrivePeer {
     }
 
     fn plan_id(&mut self, t: f64) -> u64 {
-        self.with(|d| {
-            d.advance(t);
-            d.plan().fingerprint()
-        })
-        .unwrap_or(0)
+        self.bring(t)
     }
 
     fn next_event(&mut self, t: f64) -> Option<f64> {
-        self.with(|d| {
-            d.advance(t);
-            d.next_event_time()
-        })
-        .flatten()
+        self.bring(t);
+        self.quiet.map(|q| q.1).filter(|n| n.is_finite())
     }
 
     fn output(&mut self, what: DriveOut, t: f64) -> bool {
