@@ -11,6 +11,6 @@ pub mod plot;
 pub mod profile;
 pub mod script;
 pub mod servo;
-pub mod wiring;
 pub mod session;
 pub mod shell;
+pub mod wiring;

@@ -7,7 +7,8 @@ mod common;
 use common::*;
 use serde_json::Value;
 
-const PROFILE: &str = "profile 0 at VB3001 [(cycle=100us, count=1000), (cycle=50us, count=6000), (cycle=100us, count=1000)]";
+const PROFILE: &str =
+    "profile 0 at VB3001 [(cycle=100us, count=1000), (cycle=50us, count=6000), (cycle=100us, count=1000)]";
 
 fn bench_file() -> String {
     format!("{}/machines/pto_servo_encoder.toml", env!("CARGO_MANIFEST_DIR"))
@@ -170,7 +171,8 @@ fn a_bench_with_a_real_device_or_a_bad_line_is_refused() {
 fn a_served_bench_is_driven_by_a_second_plcsh() {
     let link = std::env::temp_dir().join(format!("plcsh-wired-kinco-{}", std::process::id()));
     let bench = bench_file();
-    let s = serve(&["--bench", &bench, "--tcp", "0", "--agent", "--servo-pty", link.to_str().unwrap(), "--servo-instant"]);
+    let s =
+        serve(&["--bench", &bench, "--tcp", "0", "--agent", "--servo-pty", link.to_str().unwrap(), "--servo-instant"]);
     assert_eq!(s.ready["bench"][0], "bench PTO axis with encoder feedback: 2 device(s), 4 wire(s), 6 value(s)");
     let plc = format!("plc=tcp://{}?model=K205-16DT&agent=VB3400", s.ready["tcp"].as_str().unwrap());
     let servo = format!("servo=kinco:{}?id=1", link.display());

@@ -24,7 +24,13 @@ fn machine() -> (Session, Clock, u64) {
     let mut s = Session::new(clock.clone());
     s.open("plc", "sim:K205-16DT").unwrap();
     s.open("servo", "sim-servo:?id=1").unwrap();
-    for it in ["servo:gear_factor=4", "servo:operating_mode=-4", "servo:controlword=6", "servo:controlword=7", "servo:controlword=15"] {
+    for it in [
+        "servo:gear_factor=4",
+        "servo:operating_mode=-4",
+        "servo:controlword=6",
+        "servo:controlword=7",
+        "servo:controlword=15",
+    ] {
         set(&mut s, it);
     }
     plcsh::wiring::setup::wire(&mut s, "plc:Q0.0 -> servo:pulse").unwrap();

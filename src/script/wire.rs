@@ -11,7 +11,10 @@ pub fn register(lua: &Lua, p: &Table) -> mlua::Result<()> {
             with_shell(lua, |sh| crate::wiring::setup::wire(&mut sh.session, &text))
         })?,
     )?;
-    p.set("wires", lua.create_function(|lua, ()| with_shell(lua, |sh| Ok(crate::wiring::setup::list(&mut sh.session))))?)?;
+    p.set(
+        "wires",
+        lua.create_function(|lua, ()| with_shell(lua, |sh| Ok(crate::wiring::setup::list(&mut sh.session))))?,
+    )?;
     p.set(
         "unwire",
         lua.create_function(|lua, text: String| {

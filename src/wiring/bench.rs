@@ -117,7 +117,8 @@ pub fn open(s: &mut Session, bench: &Bench) -> Result<Vec<String>> {
             Error::usage(format!("bench {file}, init {}: `{item}` is not DEVICE:OPERAND=VALUE", i + 1))
                 .hint("e.g. init = [\"servo:gear_factor=4\", \"plc:VW0=100\"]")
         })?;
-        let it = SetItem { operand: op.trim().to_string(), value: value.trim().to_string(), column: 0, value_column: 0 };
+        let it =
+            SetItem { operand: op.trim().to_string(), value: value.trim().to_string(), column: 0, value_column: 0 };
         s.set(&[it]).map_err(|e| within(e, format!("bench {file}, init {} `{item}`", i + 1)))?;
     }
     for (dev, prog) in &bench.programs {
@@ -140,7 +141,12 @@ pub fn open(s: &mut Session, bench: &Bench) -> Result<Vec<String>> {
     let name = bench.name.clone().unwrap_or_else(|| file.clone());
     notes.insert(
         0,
-        format!("bench {name}: {} device(s), {} wire(s), {} value(s)", bench.devices.len(), bench.wires.len(), bench.init.len()),
+        format!(
+            "bench {name}: {} device(s), {} wire(s), {} value(s)",
+            bench.devices.len(),
+            bench.wires.len(),
+            bench.init.len()
+        ),
     );
     Ok(notes)
 }
@@ -225,7 +231,8 @@ wires = ["plc:Q0.0 -> servo:pulse"]
         let v = s.get(&["plc:VW0", "servo:gear_factor"]).unwrap();
         assert_eq!((v[0].1.value.as_i64(), v[1].1.value.as_i64()), (7, 4));
         let bad = "init = [\"plc:VW0\"]\n[devices]\nplc = \"sim:K205-16DT\"\n";
-        let e = open(&mut Session::new(Clock::stepped()), &Bench::parse(bad, Path::new("m.toml")).unwrap()).unwrap_err();
+        let e =
+            open(&mut Session::new(Clock::stepped()), &Bench::parse(bad, Path::new("m.toml")).unwrap()).unwrap_err();
         assert!(e.to_string().contains("init 1"), "{e}");
         let real = "[devices]\nplc = \"tcp://127.0.0.1:1?model=K205-16DT\"\n";
         let e = open(&mut Session::new(Clock::stepped()), &Bench::parse(real, Path::new("m.toml")).unwrap());

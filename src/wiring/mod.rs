@@ -182,7 +182,8 @@ pub fn parse(text: &str) -> Result<Decl> {
     let mut d = Decl { from: endpoint(from)?, to: endpoint(to)?, lines: None, delay_ns: 0 };
     for w in words {
         let (k, v) = w.split_once('=').ok_or_else(|| {
-            Error::usage(format!("`{w}`: wire options are key=value")).hint("options: lines=N (encoder), delay=D (loopback)")
+            Error::usage(format!("`{w}`: wire options are key=value"))
+                .hint("options: lines=N (encoder), delay=D (loopback)")
         })?;
         match k {
             "lines" => {
@@ -228,6 +229,9 @@ pub trait Peer: Send {
         Ok(())
     }
 }
+
+/// Makes the peer of a new wire when the host does not know it yet.
+pub type MakePeer = Box<dyn FnOnce() -> Box<dyn Peer>>;
 
 /// What a wire joins, resolved.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -286,18 +290,18 @@ pub fn drive_terminal(ep: &Endpoint) -> Result<Role> {
         Some(("limit+" | "pos", p)) => Role::Switch(Switch::PosLimit(sw(p)?)),
         Some(("limit-" | "neg", p)) => Role::Switch(Switch::NegLimit(sw(p)?)),
         Some(_) => return Err(Error::usage(format!("{ep}: only home, limit+ and limit- switches take @POS"))),
-        None => match t.as_str() {
-            "pulse" | "pulses" => Role::PulseIn,
-            "encoder" => Role::Encoder,
-            "target_reached" | "target" => Role::DriveOut(DriveOut::TargetReached),
-            "fault" => Role::DriveOut(DriveOut::Fault),
-            "enabled" => Role::DriveOut(DriveOut::Enabled),
-            _ => {
-                return Err(Error::usage(format!("drive terminal `{}` is unknown ({ep})", ep.terminal)).hint(
+        None => {
+            match t.as_str() {
+                "pulse" | "pulses" => Role::PulseIn,
+                "encoder" => Role::Encoder,
+                "target_reached" | "target" => Role::DriveOut(DriveOut::TargetReached),
+                "fault" => Role::DriveOut(DriveOut::Fault),
+                "enabled" => Role::DriveOut(DriveOut::Enabled),
+                _ => return Err(Error::usage(format!("drive terminal `{}` is unknown ({ep})", ep.terminal)).hint(
                     "drive terminals: pulse, encoder, target_reached, fault, enabled, home@POS, limit+@POS, limit-@POS",
-                ))
+                )),
             }
-        },
+        }
     })
 }
 
@@ -362,7 +366,9 @@ impl Harness {
     /// Describes a wire for `sim wires`.
     pub fn describe(w: &Wire) -> String {
         let what = match w.kind {
-            Kind::Pulses { channel, .. } => format!("PTO{channel} pulses (with its direction output) to the pulse input"),
+            Kind::Pulses { channel, .. } => {
+                format!("PTO{channel} pulses (with its direction output) to the pulse input")
+            }
             Kind::Encoder { lines, .. } => match lines {
                 Some(l) => format!("encoder A/B, {l} lines per revolution, counted 4x"),
                 None => "encoder A/B, one 4x count per increment".to_string(),
@@ -462,8 +468,7 @@ pub fn first_reach(pieces: &[Piece], x: f64, t: f64) -> Option<f64> {
                 vec![(-b - r) / (2.0 * a), (-b + r) / (2.0 * a)]
             }
         };
-        if let Some(tau) =
-            roots.into_iter().filter(|tau| *tau >= 0.0 && t0 + *tau <= end).min_by(|a, b| a.total_cmp(b))
+        if let Some(tau) = roots.into_iter().filter(|tau| *tau >= 0.0 && t0 + *tau <= end).min_by(|a, b| a.total_cmp(b))
         {
             return Some(t0 + tau);
         }

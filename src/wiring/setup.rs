@@ -2,7 +2,7 @@
 //! (`plcsh.wire`) and bench files take: resolve each end's device and terminal, pick the
 //! PLC simulator that hosts the wire, and hand it the drive as a [`Peer`].
 
-use super::{Decl, Peer, Role};
+use super::{Decl, Role};
 use crate::core::{Error, Result};
 use crate::session::Session;
 
@@ -67,8 +67,7 @@ pub fn add(s: &mut Session, decl: Decl) -> Result<String> {
     let host_name = s.entries()[host].name.clone();
     let sim = s.entry(host).device.as_k2().and_then(|k| k.as_sim()).expect("resolved as a simulator");
     let peer = peer.map(|(name, line, id)| {
-        let make: Box<dyn FnOnce() -> Box<dyn Peer>> =
-            Box::new(move || Box::new(crate::servo::sim::wired::DrivePeer::new(line, id)));
+        let make: super::MakePeer = Box::new(move || Box::new(crate::servo::sim::wired::DrivePeer::new(line, id)));
         (name, make)
     });
     match peer {
@@ -106,7 +105,8 @@ pub fn unwire(s: &mut Session, which: &str) -> Result<Vec<String>> {
     }
     if gone.is_empty() {
         return Err(last_err.unwrap_or_else(|| {
-            Error::usage("nothing is wired").hint("sim wire FROM -> TO adds a wire, e.g. sim wire plc:Q0.0 -> servo:pulse")
+            Error::usage("nothing is wired")
+                .hint("sim wire FROM -> TO adds a wire, e.g. sim wire plc:Q0.0 -> servo:pulse")
         }));
     }
     Ok(gone)

@@ -11,7 +11,7 @@ use super::K2Sim;
 use crate::core::signal::PulseTrain;
 use crate::core::{Error, Result};
 use crate::k2::operand::{Area, K2Operand};
-use crate::wiring::{self, Decl, Harness, Kind, Peer, Role, Wire, WireState};
+use crate::wiring::{self, Decl, Harness, Kind, MakePeer, Peer, Role, Wire, WireState};
 use std::time::Duration;
 
 /// Most counts one piece catches up at its start (a longer gap is a lost plan, not noise).
@@ -91,13 +91,7 @@ impl K2Sim {
 
     /// Adds a wire this simulator hosts. `peer` is the other device (name and how to reach
     /// it) when the wire leaves the PLC. Returns a description.
-    pub fn add_wire(
-        &mut self,
-        decl: Decl,
-        from: Role,
-        to: Role,
-        peer: Option<(&str, Box<dyn FnOnce() -> Box<dyn Peer>>)>,
-    ) -> Result<String> {
+    pub fn add_wire(&mut self, decl: Decl, from: Role, to: Role, peer: Option<(&str, MakePeer)>) -> Result<String> {
         let kind = wiring::connect(&decl, from, to)?;
         let needs_peer = !matches!(kind, Kind::Loop { .. } | Kind::PulseLoop { .. });
         if needs_peer != peer.is_some() {

@@ -64,11 +64,7 @@ impl Peer for DrivePeer {
     fn motion(&mut self, t: f64) -> Vec<Piece> {
         self.bring(t);
         self.with(|d| {
-            d.plan()
-                .pieces_from(t)
-                .into_iter()
-                .map(|(t0, dur, p0, v0, a)| Piece { t0, dur, p0, v0, a })
-                .collect()
+            d.plan().pieces_from(t).into_iter().map(|(t0, dur, p0, v0, a)| Piece { t0, dur, p0, v0, a }).collect()
         })
         .unwrap_or_default()
     }
