@@ -95,7 +95,7 @@ _plcsh() {
 
     case "${cmd}" in
         plcsh)
-            opts="-c -v -d -h -V --command --json --verbose --model --device --time --config --state --help --version models devices completions sim agent run help"
+            opts="-c -v -d -h -V --command --json --verbose --model --device --time --config --state --bench --help --version models devices completions sim agent run help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -133,6 +133,10 @@ _plcsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --bench)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -141,7 +145,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__agent)
-            opts="-v -d -h --json --verbose --model --device --time --config --state --help il help"
+            opts="-v -d -h --json --verbose --model --device --time --config --state --bench --help il help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -168,6 +172,10 @@ _plcsh() {
                     return 0
                     ;;
                 --state)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --bench)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -221,7 +229,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__agent__subcmd__il)
-            opts="-v -d -h --base --json --verbose --model --device --time --config --state --help"
+            opts="-v -d -h --base --json --verbose --model --device --time --config --state --bench --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -255,6 +263,10 @@ _plcsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --bench)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -263,7 +275,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__completions)
-            opts="-v -d -h --write --json --verbose --model --device --time --config --state --help bash elvish fish powershell zsh"
+            opts="-v -d -h --write --json --verbose --model --device --time --config --state --bench --help bash elvish fish powershell zsh"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -297,6 +309,10 @@ _plcsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --bench)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -305,7 +321,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__devices)
-            opts="-v -d -h --json --verbose --model --device --time --config --state --help"
+            opts="-v -d -h --json --verbose --model --device --time --config --state --bench --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -332,6 +348,10 @@ _plcsh() {
                     return 0
                     ;;
                 --state)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --bench)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -483,7 +503,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__models)
-            opts="-v -d -h --json --verbose --model --device --time --config --state --help"
+            opts="-v -d -h --json --verbose --model --device --time --config --state --bench --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -510,6 +530,10 @@ _plcsh() {
                     return 0
                     ;;
                 --state)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --bench)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -521,7 +545,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__run)
-            opts="-v -d -h --json --verbose --model --device --time --config --state --help"
+            opts="-v -d -h --json --verbose --model --device --time --config --state --bench --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -548,6 +572,10 @@ _plcsh() {
                     return 0
                     ;;
                 --state)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --bench)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -559,7 +587,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__sim)
-            opts="-v -d -h --json --verbose --model --device --time --config --state --help serve help"
+            opts="-v -d -h --json --verbose --model --device --time --config --state --bench --help serve help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -586,6 +614,10 @@ _plcsh() {
                     return 0
                     ;;
                 --state)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --bench)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -639,7 +671,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__sim__subcmd__serve)
-            opts="-v -d -h --tcp --rtu-pty --rtu-tcp --unit --agent --servo-pty --servo-id --servo-loop --servo-baud --servo-latency --servo-instant --servo-strict --json --verbose --model --device --time --config --state --help"
+            opts="-v -d -h --tcp --rtu-pty --rtu-tcp --unit --agent --servo-pty --servo-id --servo-loop --servo-baud --servo-latency --servo-instant --servo-strict --json --verbose --model --device --time --config --state --bench --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -702,6 +734,10 @@ _plcsh() {
                     return 0
                     ;;
                 --state)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --bench)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;

@@ -1,6 +1,6 @@
 # Print an optspec for argparse to handle cmd's options that are independent of any subcommand.
 function __fish_plcsh_global_optspecs
-    string join \n c/command= json v/verbose model= d/device= time= config= state= h/help V/version
+    string join \n c/command= json v/verbose model= d/device= time= config= state= bench= h/help V/version
 end
 
 function __fish_plcsh_needs_command
@@ -31,6 +31,7 @@ complete -c plcsh -n "__fish_plcsh_needs_command" -l time -d 'Simulator time: fo
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_needs_command" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
 complete -c plcsh -n "__fish_plcsh_needs_command" -l state -d 'Simulator state file (backup area, retained ranges, clock); default in the user\'s data directory' -r -F
+complete -c plcsh -n "__fish_plcsh_needs_command" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_needs_command" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_needs_command" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_needs_command" -s h -l help -d 'Print help (see more with \'--help\')'
@@ -48,6 +49,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l time -d 'Simulato
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l state -d 'Simulator state file (backup area, retained ranges, clock); default in the user\'s data directory' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -s h -l help -d 'Print help (see more with \'--help\')'
@@ -57,6 +59,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l time -d 'Simulat
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l state -d 'Simulator state file (backup area, retained ranges, clock); default in the user\'s data directory' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -s h -l help -d 'Print help (see more with \'--help\')'
@@ -67,6 +70,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l time -d 'Sim
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l state -d 'Simulator state file (backup area, retained ranges, clock); default in the user\'s data directory' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -s h -l help -d 'Print help (see more with \'--help\')'
@@ -76,6 +80,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_sub
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve help" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve help" -l state -d 'Simulator state file (backup area, retained ranges, clock); default in the user\'s data directory' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve help" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve help" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve help" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve help" -s h -l help -d 'Print help (see more with \'--help\')'
@@ -96,6 +101,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcomm
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l state -d 'Simulator state file (backup area, retained ranges, clock); default in the user\'s data directory' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l servo-loop -d 'RS232 loop mode: echo every request before the reply (connect with echo=1)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l servo-instant -d 'Answer at once instead of at line speed (benchmarks, CI)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l servo-strict -d 'Refuse writes whose size code differs from the object\'s (abort 0x06070010)'
@@ -110,6 +116,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_s
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -l state -d 'Simulator state file (backup area, retained ranges, clock); default in the user\'s data directory' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -s h -l help -d 'Print help (see more with \'--help\')'
@@ -122,6 +129,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subco
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l state -d 'Simulator state file (backup area, retained ranges, clock); default in the user\'s data directory' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -s h -l help -d 'Print help (see more with \'--help\')'
@@ -133,6 +141,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l time -d 'Simulator t
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l state -d 'Simulator state file (backup area, retained ranges, clock); default in the user\'s data directory' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -s h -l help -d 'Print help (see more with \'--help\')'

@@ -335,23 +335,16 @@ impl K2Sim {
         let now_ns = ns(now.max(self.last));
         loop {
             // Each piece starts by setting every wire's signal (and delivering what is due
-            // then), the last one at `now` itself.
+            // then), the last one at `now` itself: so what comes next is known (waits ask).
             let t_ns = ns(self.last);
-            if t_ns >= now_ns {
-                // At `now` itself only what a wire delivers on its own time is due (a
-                // delayed level); the drives' signals are set up when the next piece starts.
-                for w in &mut h.wires {
-                    if matches!(w.kind, Kind::Loop { .. } | Kind::PulseLoop { .. }) {
-                        self.prepare(w, None, t_ns);
-                    }
-                }
-                self.advance_plain(self.last);
-                break;
-            }
             let mut end = now_ns;
             for w in &mut h.wires {
                 let peer = w.peer.map(|i| &mut h.peers[i].1);
                 end = end.min(self.prepare(w, peer, t_ns));
+            }
+            if t_ns >= now_ns {
+                self.advance_plain(self.last);
+                break;
             }
             let end = end.max(t_ns + 1).min(now_ns);
             self.advance_plain(Duration::from_nanos(end));
