@@ -111,3 +111,60 @@ pub fn unwire(s: &mut Session, which: &str) -> Result<Vec<String>> {
     }
     Ok(gone)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::core::Clock;
+    use crate::session::SetItem;
+    use std::time::Duration;
+
+    fn set(s: &mut Session, item: &str) {
+        let (op, v) = item.split_once('=').unwrap();
+        s.set(&[SetItem { operand: op.into(), value: v.into(), column: 0, value_column: 0 }]).unwrap();
+    }
+
+    fn get(s: &mut Session, op: &str) -> i64 {
+        s.get(&[op]).unwrap()[0].1.value.as_i64()
+    }
+
+    /// Profile-position moves (ramps, a reversal): at every poll HSC0 holds exactly
+    /// ⌊position × 4 · lines / resolution⌋ (of the position the drive reports rounded to whole
+    /// increments, so within its half increment) — the counts never drift.
+    #[test]
+    fn ramps_and_reversals_count_exactly_at_every_poll() {
+        let clock = Clock::stepped();
+        let mut s = Session::new(clock.clone());
+        s.open("plc", "sim:K205-16DT").unwrap();
+        s.open("servo", "sim-servo:?id=1").unwrap();
+        wire(&mut s, "servo:encoder -> plc:I0.1,I0.0 lines=1000").unwrap(); // 0.4 counts per increment
+        for it in ["plc:SMB37=16#A4", "plc:SMD42/DINT=100000000"] {
+            set(&mut s, it);
+        }
+        s.device("plc").unwrap().as_k2().unwrap().hdef(0, 9).unwrap();
+        s.device("plc").unwrap().as_k2().unwrap().hsc(0).unwrap();
+        for it in ["servo:operating_mode=1", "servo:controlword=6", "servo:controlword=7", "servo:controlword=15"] {
+            set(&mut s, it);
+        }
+        let mut checked = 0;
+        for (target, polls) in [(12_345, 40), (-7_777, 70), (3, 30)] {
+            set(&mut s, &format!("servo:target_position={target}"));
+            set(&mut s, "servo:controlword=15");
+            set(&mut s, "servo:controlword=31"); // new set-point, absolute, immediately
+            for _ in 0..polls {
+                clock.step(Duration::from_micros(7_300));
+                let cv = get(&mut s, "plc:SMD38") as i32 as i64;
+                // The drive reports its position rounded to whole increments (6064.00).
+                let p = get(&mut s, "servo:position_actual") as f64;
+                let (lo, hi) = (((p - 0.5) * 0.4).floor() as i64, ((p + 0.5) * 0.4).floor() as i64);
+                assert!((lo..=hi).contains(&cv), "position {p}: count {cv}, want {lo}..={hi}");
+                checked += 1;
+            }
+            clock.step(Duration::from_secs(2));
+            let p = get(&mut s, "servo:position_actual");
+            assert_eq!(p, target, "the move ended at its target");
+            assert_eq!(get(&mut s, "plc:SMD38") as i32 as i64, (target as f64 * 0.4).floor() as i64);
+        }
+        assert_eq!(checked, 140);
+    }
+}

@@ -395,13 +395,17 @@ impl K2Sim {
                     let te = (t + wiring::RAMP_PIECE).min(piece_end);
                     (te, (piece.at(te) - piece.at(t)) * scale / (te - t))
                 };
+                let exact = piece.a == 0.0 && wiring::max_piece(rate).is_infinite();
                 let mut until = te.min(t + wiring::max_piece(rate));
                 if let Some(e) = peer.next_event(t) {
                     if e > t {
                         until = until.min(e);
                     }
                 }
-                st.plan = plan;
+                // A piece whose wave only approximates the motion (a ramp's mean rate, a rate
+                // that is not a whole Hz) is worked out again whenever the PLC is brought
+                // forward, so the count is exact at every poll (owed counts are given then).
+                st.plan = if exact { plan } else { plan.wrapping_add(1) };
                 st.until_ns = ns_at(until).max(t_ns + 1);
                 st.wave = wiring::quad_wave(t_ns, x0, rate, st.given);
                 if let Some((hz, o, _)) = st.wave {
