@@ -373,7 +373,14 @@ impl Harness {
                 Some(l) => format!("encoder A/B, {l} lines per revolution, counted 4x"),
                 None => "encoder A/B, one 4x count per increment".to_string(),
             },
-            Kind::Output { what, .. } => format!("drive output {what:?}"),
+            Kind::Output { what, .. } => format!(
+                "drive output {}",
+                match what {
+                    DriveOut::TargetReached => "target reached (statusword bit 10)",
+                    DriveOut::Fault => "fault",
+                    DriveOut::Enabled => "operation enabled",
+                }
+            ),
             Kind::Switch { switch, .. } => {
                 format!("{} switch at {} increments (also the drive's own input)", switch.name(), switch.position())
             }

@@ -479,15 +479,15 @@ impl K2Sim {
                             next = s0;
                             break;
                         }
-                        if t_ns < s0 + len {
+                        if t_ns < s0.saturating_add(len) {
                             // One edge per pulse, counted as the pulse completes (the k-th at
                             // s0 + k·cycle), as the channel's own position counter counts it.
                             let hz = (1e9 / s.cycle_ns as f64).round().max(1.0) as u64;
                             wave = Some((hz, s0, true));
-                            next = s0 + len;
+                            next = s0.saturating_add(len);
                             break;
                         }
-                        s0 += len;
+                        s0 = s0.saturating_add(len);
                     }
                 }
                 match wave {
