@@ -122,7 +122,7 @@ _plcsh() {
 
     case "${cmd}" in
         plcsh)
-            opts="-c -v -d -h -V --command --json --verbose --model --device --time --config --state --record --help --version models devices completions sim agent run record replay help"
+            opts="-c -v -d -h -V --command --json --verbose --model --device --time --config --state --record --bench --help --version models devices completions sim agent run record replay help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -164,6 +164,10 @@ _plcsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --bench)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -172,7 +176,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__agent)
-            opts="-v -d -h --json --verbose --model --device --time --config --state --record --help il help"
+            opts="-v -d -h --json --verbose --model --device --time --config --state --record --bench --help il help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -203,6 +207,10 @@ _plcsh() {
                     return 0
                     ;;
                 --record)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --bench)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -256,7 +264,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__agent__subcmd__il)
-            opts="-v -d -h --base --json --verbose --model --device --time --config --state --record --help"
+            opts="-v -d -h --base --json --verbose --model --device --time --config --state --record --bench --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -294,6 +302,10 @@ _plcsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --bench)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -302,7 +314,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__completions)
-            opts="-v -d -h --write --json --verbose --model --device --time --config --state --record --help bash elvish fish powershell zsh"
+            opts="-v -d -h --write --json --verbose --model --device --time --config --state --record --bench --help bash elvish fish powershell zsh"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -340,6 +352,10 @@ _plcsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --bench)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -348,7 +364,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__devices)
-            opts="-v -d -h --json --verbose --model --device --time --config --state --record --help"
+            opts="-v -d -h --json --verbose --model --device --time --config --state --record --bench --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -379,6 +395,10 @@ _plcsh() {
                     return 0
                     ;;
                 --record)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --bench)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -572,7 +592,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__models)
-            opts="-v -d -h --json --verbose --model --device --time --config --state --record --help"
+            opts="-v -d -h --json --verbose --model --device --time --config --state --record --bench --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -603,6 +623,10 @@ _plcsh() {
                     return 0
                     ;;
                 --record)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --bench)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -614,7 +638,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__record)
-            opts="-v -d -h --json --verbose --model --device --time --config --state --record --help show help"
+            opts="-v -d -h --json --verbose --model --device --time --config --state --record --bench --help show help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -645,6 +669,10 @@ _plcsh() {
                     return 0
                     ;;
                 --record)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --bench)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -698,7 +726,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__record__subcmd__show)
-            opts="-v -d -h --json --verbose --model --device --time --config --state --record --help"
+            opts="-v -d -h --json --verbose --model --device --time --config --state --record --bench --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -732,6 +760,10 @@ _plcsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --bench)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -740,7 +772,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__replay)
-            opts="-v -d -h --sim-model --snapshot --json --verbose --model --device --time --config --state --record --help"
+            opts="-v -d -h --sim-model --snapshot --json --verbose --model --device --time --config --state --record --bench --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -782,6 +814,10 @@ _plcsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --bench)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -790,7 +826,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__run)
-            opts="-v -d -h --sandbox --write-dir --json --verbose --model --device --time --config --state --record --help"
+            opts="-v -d -h --sandbox --write-dir --json --verbose --model --device --time --config --state --record --bench --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -828,6 +864,10 @@ _plcsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --bench)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -836,7 +876,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__sim)
-            opts="-v -d -h --json --verbose --model --device --time --config --state --record --help serve help"
+            opts="-v -d -h --json --verbose --model --device --time --config --state --record --bench --help serve help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -867,6 +907,10 @@ _plcsh() {
                     return 0
                     ;;
                 --record)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --bench)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -920,7 +964,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__sim__subcmd__serve)
-            opts="-v -d -h --tcp --rtu-pty --rtu-tcp --unit --agent --servo-pty --servo-id --servo-loop --servo-baud --servo-latency --servo-instant --servo-strict --fx-pty --fx-link-pty --fx-model --fx-station --umpk-pty --umpk-model --umpk-status-bits --umpk-flash-fail --umpk-state --fault --json --verbose --model --device --time --config --state --record --help"
+            opts="-v -d -h --tcp --rtu-pty --rtu-tcp --unit --agent --servo-pty --servo-id --servo-loop --servo-baud --servo-latency --servo-instant --servo-strict --fx-pty --fx-link-pty --fx-model --fx-station --umpk-pty --umpk-model --umpk-status-bits --umpk-flash-fail --umpk-state --fault --json --verbose --model --device --time --config --state --record --bench --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1027,6 +1071,10 @@ _plcsh() {
                     return 0
                     ;;
                 --record)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --bench)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;

@@ -1,6 +1,6 @@
 # Print an optspec for argparse to handle cmd's options that are independent of any subcommand.
 function __fish_plcsh_global_optspecs
-    string join \n c/command= json v/verbose model= d/device= time= config= state= record= h/help V/version
+    string join \n c/command= json v/verbose model= d/device= time= config= state= record= bench= h/help V/version
 end
 
 function __fish_plcsh_needs_command
@@ -32,6 +32,7 @@ stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'
 complete -c plcsh -n "__fish_plcsh_needs_command" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
 complete -c plcsh -n "__fish_plcsh_needs_command" -l state -d 'Simulator state file (backup area, retained ranges, clock); default in the user\'s data directory' -r -F
 complete -c plcsh -n "__fish_plcsh_needs_command" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
+complete -c plcsh -n "__fish_plcsh_needs_command" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_needs_command" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_needs_command" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_needs_command" -s h -l help -d 'Print help (see more with \'--help\')'
@@ -52,6 +53,7 @@ stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l state -d 'Simulator state file (backup area, retained ranges, clock); default in the user\'s data directory' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -s h -l help -d 'Print help (see more with \'--help\')'
@@ -62,6 +64,7 @@ stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l state -d 'Simulator state file (backup area, retained ranges, clock); default in the user\'s data directory' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -s h -l help -d 'Print help (see more with \'--help\')'
@@ -73,6 +76,7 @@ stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l state -d 'Simulator state file (backup area, retained ranges, clock); default in the user\'s data directory' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -s h -l help -d 'Print help (see more with \'--help\')'
@@ -83,6 +87,7 @@ stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve help" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve help" -l state -d 'Simulator state file (backup area, retained ranges, clock); default in the user\'s data directory' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve help" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve help" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve help" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve help" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve help" -s h -l help -d 'Print help (see more with \'--help\')'
@@ -114,6 +119,7 @@ stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l state -d 'Simulator state file (backup area, retained ranges, clock); default in the user\'s data directory' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l servo-loop -d 'RS232 loop mode: echo every request before the reply (connect with echo=1)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l servo-instant -d 'Answer at once instead of at line speed (benchmarks, CI)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l servo-strict -d 'Refuse writes whose size code differs from the object\'s (abort 0x06070010)'
@@ -129,6 +135,7 @@ stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -l state -d 'Simulator state file (backup area, retained ranges, clock); default in the user\'s data directory' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -s h -l help -d 'Print help (see more with \'--help\')'
@@ -142,6 +149,7 @@ stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l state -d 'Simulator state file (backup area, retained ranges, clock); default in the user\'s data directory' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -s h -l help -d 'Print help (see more with \'--help\')'
@@ -155,6 +163,7 @@ stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l state -d 'Simulator state file (backup area, retained ranges, clock); default in the user\'s data directory' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l sandbox -d 'Run a script someone else wrote: no os.execute, io.popen, os.remove/rename/exit, C libraries or debug library; files written only under --write-dir'
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
@@ -166,6 +175,7 @@ stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -l state -d 'Simulator state file (backup area, retained ranges, clock); default in the user\'s data directory' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -s h -l help -d 'Print help (see more with \'--help\')'
@@ -178,6 +188,7 @@ stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -l state -d 'Simulator state file (backup area, retained ranges, clock); default in the user\'s data directory' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -s h -l help -d 'Print help (see more with \'--help\')'
@@ -192,6 +203,7 @@ stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l state -d 'Simulator state file (backup area, retained ranges, clock); default in the user\'s data directory' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -s h -l help -d 'Print help (see more with \'--help\')'

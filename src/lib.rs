@@ -17,3 +17,4 @@ pub mod session;
 pub mod shell;
 pub mod umpk;
 pub mod snapshot;
+pub mod wiring;

@@ -56,6 +56,9 @@ pub struct Cli {
     /// Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`).
     #[arg(long, value_name = "FILE", global = true)]
     pub record: Option<std::path::PathBuf>,
+    /// Open a simulated machine described by a bench file (devices, wiring, initial values).
+    #[arg(long, value_name = "FILE", global = true)]
+    pub bench: Option<std::path::PathBuf>,
     #[command(subcommand)]
     pub sub: Option<Sub>,
 }
@@ -160,6 +163,13 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
         }
     }
     s.use_device(&current)?;
+    // `sim serve --bench` opens the bench in the served simulators instead.
+    if let (Some(path), false) = (&cli.bench, matches!(cli.sub, Some(Sub::Sim { .. }))) {
+        let bench = crate::wiring::bench::Bench::load(path)?;
+        for note in crate::wiring::bench::open(&mut s, &bench)? {
+            eprintln!("plcsh: {note}");
+        }
+    }
     Ok(s)
 }
 

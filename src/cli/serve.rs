@@ -179,8 +179,12 @@ async fn serve_k2(
     tasks: &mut JoinSet<std::io::Result<()>>,
     ready: &mut Map<String, Json>,
     cleanup: &mut Cleanup,
+    bench: Option<crate::k2::sim::K2Sim>,
 ) -> Result<()> {
-    let mut sim = crate::k2::sim::open(&cli.model, clock.clone())?;
+    let mut sim = match bench {
+        Some(sim) => sim,
+        None => crate::k2::sim::open(&cli.model, clock.clone())?,
+    };
     ready.insert("model".into(), json!(sim.model().name));
     ready.insert("unit".into(), json!(args.unit));
     if let Some(base) = &args.agent {
@@ -222,6 +226,7 @@ async fn serve_servo(
     stop: &Arc<AtomicBool>,
     ready: &mut Map<String, Json>,
     cleanup: &mut Cleanup,
+    bench: Option<Arc<Mutex<crate::servo::sim::SimLine>>>,
 ) -> Result<()> {
     let Some(link) = args.servo_pty.clone() else { return Ok(()) };
     // The process may exit before the line's thread sees the stop flag: once the line is up,
@@ -248,11 +253,15 @@ async fn serve_servo(
     let stop = stop.clone();
     std::thread::spawn(move || {
         let mut tx = Some(tx);
-        let r = crate::servo::sim::serve::serve_pty(Some(&link), &opts, Clock::following(), &stop, |r| {
+        let on_ready = |r: &crate::servo::sim::serve::Ready| {
             if let Some(tx) = tx.take() {
                 let _ = tx.send(Ok(json!(r)));
             }
-        });
+        };
+        let r = match bench {
+            Some(line) => crate::servo::sim::serve::serve_pty_line(Some(&link), &opts, line, &stop, on_ready),
+            None => crate::servo::sim::serve::serve_pty(Some(&link), &opts, Clock::following(), &stop, on_ready),
+        };
         if let (Err(e), Some(tx)) = (r, tx.take()) {
             let _ = tx.send(Err(e));
         }
@@ -310,12 +319,20 @@ async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
     ready.insert("cmd".into(), json!("sim serve"));
     ready.insert("ready".into(), json!(true));
     let mut cleanup = Cleanup::default();
+    let (k2, line) = match &cli.bench {
+        Some(path) => {
+            let (k2, line, notes) = crate::wiring::bench::serve_parts(path, &clock)?;
+            ready.insert("bench".into(), json!(notes));
+            (k2, line)
+        }
+        None => (None, None),
+    };
     if args.serves_k2() {
-        serve_k2(cli, args, &clock, &mut tasks, &mut ready, &mut cleanup).await?;
+        serve_k2(cli, args, &clock, &mut tasks, &mut ready, &mut cleanup, k2).await?;
     }
     let servo_stop = Arc::new(AtomicBool::new(false));
     let _stop_servo = StopOnDrop(servo_stop.clone());
-    serve_servo(args, &servo_stop, &mut ready, &mut cleanup).await?;
+    serve_servo(args, &servo_stop, &mut ready, &mut cleanup, line).await?;
     let fx = (args.fx_pty.clone(), args.fx_link_pty.clone());
     ready.extend(
         crate::fx::sim::serve_ptys(fx.0.clone(), fx.1.clone(), &args.fx_model, args.fx_station, &servo_stop).await?,

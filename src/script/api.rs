@@ -345,6 +345,7 @@ pub fn register(lua: &Lua) -> mlua::Result<()> {
         })?,
     )?;
     p.set("json", json)?;
+    super::wire::register(lua, &p)?;
     lua.globals().set("plcsh", p)?;
     Ok(())
 }

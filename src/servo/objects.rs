@@ -177,7 +177,13 @@ pub fn by_name(name: &str) -> Option<&'static Object> {
 /// A table object by name, for code that names objects it relies on (panics on a typo,
 /// which the tests catch).
 pub fn named(name: &str) -> &'static Object {
-    by_name(name).unwrap_or_else(|| panic!("object `{name}` is not in servo::objects::OBJECTS"))
+    // Code names objects exactly: an exact comparison (length first) before the
+    // case-insensitive scan keeps the simulated drive's own lookups cheap.
+    OBJECTS
+        .iter()
+        .find(|o| o.name == name)
+        .or_else(|| by_name(name))
+        .unwrap_or_else(|| panic!("object `{name}` is not in servo::objects::OBJECTS"))
 }
 
 /// What an operand addresses: index, sub-index and type (table or suffix).

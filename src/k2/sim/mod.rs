@@ -17,6 +17,7 @@ pub mod pto;
 pub mod rtc;
 pub mod snapshot;
 pub mod state;
+pub mod wired;
 
 pub mod modbus_server;
 pub mod rtu_frame;
@@ -64,6 +65,8 @@ pub struct K2Sim {
     pub agent: Option<agent::Agent>,
     /// Injected faults ([`fault`]).
     pub faults: fault::Faults,
+    /// Wires to other simulated devices (`sim wire`); this simulator hosts them ([`wired`]).
+    pub wiring: Option<Box<crate::wiring::Harness>>,
     /// Scratch space of `advance_to` (events raised in a step, where each channel's end),
     /// kept so a step allocates nothing.
     raised: Vec<(Duration, EventKind)>,
@@ -91,6 +94,7 @@ impl K2Sim {
             backup: Backup { since: start, ..Backup::default() },
             agent: None,
             faults: fault::Faults::default(),
+            wiring: None,
             raised: Vec::new(),
             run_ends: Vec::new(),
         };
@@ -120,6 +124,14 @@ impl K2Sim {
     /// Brings the simulation up to virtual time `now`: pulses, counts, events, input
     /// levels and system bits, all computed from the elapsed time in one step.
     pub fn advance_to(&mut self, now: Duration) {
+        if self.wiring.is_some() {
+            return self.advance_wired(now);
+        }
+        self.advance_plain(now);
+    }
+
+    /// [`Self::advance_to`] without the wiring: one formula per signal over the interval.
+    pub(crate) fn advance_plain(&mut self, now: Duration) {
         let last = self.last;
         let now = now.max(last);
         // Events go to a buffer kept between steps, one run per channel, merged by time.
@@ -404,7 +416,8 @@ impl K2Sim {
     pub fn next_event_due(&self) -> Option<Duration> {
         let p = self.pto.iter().filter_map(|p| p.next_due());
         let h = self.hsc.iter().filter_map(|h| h.next_due(&self.inputs, &self.mem, self.last));
-        p.chain(h).min()
+        // A wired input changes its formula at the end of its piece: look again then.
+        p.chain(h).chain(self.wiring_due()).min()
     }
 
     /// Battery-retained ranges (`VB0..VB99`, `MB0[10]`): V or M byte ranges.
@@ -571,6 +584,7 @@ impl Device for K2Sim {
         if !raised.is_empty() {
             self.events.extend(raised);
         }
+        self.wired_outputs();
         Ok(())
     }
 
@@ -606,6 +620,7 @@ impl crate::k2::K2Ops for K2Sim {
         self.advance();
         let now = self.last;
         let r = self.pto[i].pls(&mut self.mem, now);
+        self.wired_outputs();
         match r {
             Err(e) if e.kind == ErrorKind::State => {
                 let others = self.other_enabled(channel);
@@ -641,6 +656,7 @@ impl crate::k2::K2Ops for K2Sim {
         let p = &mut self.pto[i];
         let what = p.pstop(&mut self.mem);
         let r = p.regs;
+        self.wired_outputs();
         Ok(format!(
             "PSTOP {channel}: {}; emergency-stop latch SM{}.7 = 1 (clear it with set SM{}.7=0)",
             if what.is_empty() { "nothing was running".to_string() } else { format!("{what} stopped") },

@@ -277,6 +277,11 @@ impl PtoChannel {
         }
     }
 
+    /// The pulse output and the direction output (`Q0.0`, `Q0.2` for PTO0).
+    pub fn pins(&self) -> ((u32, u8), (u32, u8)) {
+        (self.out, self.dir)
+    }
+
     /// When this channel next raises an event (PTO completion), if it will.
     pub fn next_due(&self) -> Option<Duration> {
         self.train().map(|r| r.end)

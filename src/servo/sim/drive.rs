@@ -199,6 +199,26 @@ impl Drive {
         self.motion.at(t)
     }
 
+    /// The planned motion (what wiring reads the encoder output from).
+    pub fn plan(&self) -> &Motion {
+        &self.motion
+    }
+
+    /// When the drive next handles an event of its own (a limit, a following error …).
+    pub fn next_event_time(&self) -> Option<f64> {
+        self.next_event().map(|(t, _)| t)
+    }
+
+    /// Increments per revolution (6410.03).
+    pub fn resolution(&self) -> f64 {
+        self.stored("encoder_resolution").max(1) as f64
+    }
+
+    /// The pulse input's mode (2508.03): 2 and 12 are A/B quadrature.
+    pub fn pulse_mode(&self) -> i64 {
+        self.stored("pulse_mode")
+    }
+
     fn accel(&self, name: &str) -> f64 {
         accel_from_dec(self.stored(name) as f64)
     }

@@ -19,6 +19,7 @@ pub mod faults;
 pub mod homing;
 pub mod motion;
 pub mod serve;
+pub mod wired;
 
 use super::frame::{func, Frame, FrameBuffer, FRAME_LEN};
 use super::link::Transport;

@@ -78,6 +78,18 @@ impl Motion {
         self.t_end
     }
 
+    /// Identifies the plan (changes whenever it is replaced by a different one).
+    pub fn fingerprint(&self) -> u64 {
+        let mut h = (self.segs.len() as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15);
+        for x in [self.t_end, self.p_end, self.v_end] {
+            h = (h ^ x.to_bits()).wrapping_mul(0x1000_0000_01B3);
+        }
+        if let Some(s) = self.segs.first() {
+            h = (h ^ s.t0.to_bits()).wrapping_mul(0x1000_0000_01B3);
+        }
+        h
+    }
+
     fn push(&mut self, dur: f64, a: f64) {
         if dur <= 0.0 {
             return;
@@ -122,7 +134,7 @@ impl Motion {
 
     /// The pieces of the plan from `t` on: `(t0, dur, p0, v0, a)`, the last one open-ended
     /// (`dur` infinite) at the final velocity.
-    fn pieces_from(&self, t: f64) -> Vec<(f64, f64, f64, f64, f64)> {
+    pub fn pieces_from(&self, t: f64) -> Vec<(f64, f64, f64, f64, f64)> {
         let mut out = Vec::new();
         for s in &self.segs {
             let end = s.t0 + s.dur;

@@ -157,16 +157,30 @@ pub fn serve_pty(
     stop: &Arc<AtomicBool>,
     ready: impl FnOnce(&Ready),
 ) -> Result<()> {
+    serve_pty_line(link, opts, Arc::new(Mutex::new(SimLine::new(&opts.ids, clock))), stop, ready)
+}
+
+/// [`serve_pty`] for a line that already exists (a bench's drives, wired to its PLC); the
+/// line takes `opts`' echo, timing and strictness, and its own drive ids.
+pub fn serve_pty_line(
+    link: Option<&Path>,
+    opts: &Options,
+    line: Arc<Mutex<SimLine>>,
+    stop: &Arc<AtomicBool>,
+    ready: impl FnOnce(&Ready),
+) -> Result<()> {
     let pty = Pty::open()?;
     if let Some(l) = link {
         pty.link(l)?;
     }
     let Pty { master, slave, path } = pty;
-    let mut sim = SimLine::new(&opts.ids, clock);
-    sim.echo = opts.echo;
-    sim.pace = opts.pace;
-    sim.set_strict(opts.strict);
-    let line = Arc::new(Mutex::new(sim));
+    let ids = {
+        let mut sim = line.lock().unwrap_or_else(|p| p.into_inner());
+        sim.echo = opts.echo;
+        sim.pace = opts.pace;
+        sim.set_strict(opts.strict);
+        sim.ids()
+    };
     let ctl = match link {
         Some(l) => {
             let p = control_path(l);
@@ -182,7 +196,7 @@ pub fn serve_pty(
     ready(&Ready {
         servo_pty: path.clone(),
         link: link.map(Path::to_path_buf),
-        ids: opts.ids.clone(),
+        ids,
         echo: opts.echo,
         servo_control: ctl.clone(),
         servo_baud: opts.pace.map(|p| p.baud),

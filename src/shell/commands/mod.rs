@@ -19,6 +19,7 @@ mod servo;
 mod sim;
 mod siminputs;
 mod snapshot;
+mod simwire;
 mod trend;
 mod umpk;
 mod watch;

@@ -14,9 +14,9 @@ use std::time::Duration;
 pub const SIM: CommandSpec = CommandSpec {
     name: "sim",
     aliases: &[],
-    usage: "sim time | sim step DURATION | sim run | sim input I0.1 freq=1kHz [dir=up|down] | sim input I0.1 off | sim quad A B freq=1kHz | sim inputs | sim retain RANGES|none | sim snapshot save|restore NAME | sim snapshots | sim fault KIND … | sim faults",
-    summary: "the simulator's clock (show, step and keep stepped, follow the wall clock), input signals for the counters, retained ranges, snapshots of the simulated state, injected faults",
-    subcommands: &["time", "step", "run", "input", "quad", "inputs", "retain", "snapshot", "snapshots", "fault", "faults"],
+    usage: "sim time | sim step DURATION | sim run | sim input I0.1 freq=1kHz [dir=up|down] | sim input I0.1 off | sim quad A B freq=1kHz | sim inputs | sim retain RANGES|none | sim wire FROM -> TO [lines=N] [delay=D] | sim wires | sim unwire TERMINAL|all | sim snapshot save|restore NAME | sim snapshots | sim fault KIND … | sim faults",
+    summary: "the simulator's clock (show, step and keep stepped, follow the wall clock), input signals for the counters, retained ranges, wiring between simulated devices, snapshots of the simulated state, injected faults",
+    subcommands: &["time", "step", "run", "input", "quad", "inputs", "retain", "wire", "wires", "unwire", "snapshot", "snapshots", "fault", "faults"],
     run: sim,
 };
 
@@ -44,6 +44,7 @@ fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
             let rest = args.text.trim_start().get(sub.len()..).unwrap_or("").trim();
             return super::fault::run(sh, sub, rest);
         }
+        "wire" | "wires" | "unwire" => return super::simwire::run(sh, sub, args),
         other => return Err(Error::usage(format!("unknown `sim {other}`")).hint(SIM.usage).column(args.offset)),
     }
     let now = clock.now();

@@ -1,0 +1,241 @@
+//! Bench files: a simulated machine in one TOML file — its devices (simulators and their
+//! models), the wiring between them, initial values, and program files — opened with
+//! `plcsh --bench FILE` and served whole with `plcsh sim serve --bench FILE`.
+//!
+//! ```toml
+//! name = "PTO axis with encoder feedback"
+//! current = "plc"                       # the device commands act on (default: plc)
+//!
+//! [devices]                             # NAME = URL; simulators only
+//! plc = "sim:K205-16DT"
+//! servo = "sim-servo:?id=1"
+//!
+//! wires = [                             # as `sim wire`
+//!   "plc:Q0.0 -> servo:pulse",
+//!   "servo:encoder -> plc:I0.1,I0.0 lines=1250",
+//! ]
+//! init = [                              # DEVICE:OPERAND=VALUE, written in order, as `set`
+//!   "servo:gear_factor=4",
+//!   "servo:operating_mode=-4",
+//! ]
+//! [programs]                            # DEVICE = FILE (relative to the bench file)
+//! plc = "machine.il"
+//! ```
+//!
+//! One path opens a bench for every front end ([`open`]): devices through the session's
+//! URL list, wires through [`super::setup`], values through `Session::set` — so a bench
+//! behaves exactly like typing its lines. A bench is a simulated machine: a device URL
+//! that opens a real device is refused (a bench never writes to a machine). Program files
+//! are checked to exist and reported as not run: this build has no PLC program (IL) engine.
+
+use crate::core::{Error, Result};
+use crate::session::{Session, SetItem};
+use serde::Deserialize;
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+/// A parsed bench file.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Bench {
+    #[serde(default)]
+    pub name: Option<String>,
+    #[serde(default)]
+    pub current: Option<String>,
+    pub devices: BTreeMap<String, String>,
+    #[serde(default)]
+    pub wires: Vec<String>,
+    #[serde(default)]
+    pub init: Vec<String>,
+    #[serde(default)]
+    pub programs: BTreeMap<String, String>,
+    /// The file's directory (program paths are relative to it).
+    #[serde(skip)]
+    pub dir: PathBuf,
+    #[serde(skip)]
+    pub path: PathBuf,
+}
+
+/// Prefixes an error's message with where in the bench it arose.
+fn within(mut e: Error, at: String) -> Error {
+    e.message = format!("{at}: {}", e.message);
+    e
+}
+
+fn line_of(text: &str, at: usize) -> usize {
+    text[..at.min(text.len())].matches('\n').count() + 1
+}
+
+impl Bench {
+    /// Parses bench text; `path` names it in messages.
+    pub fn parse(text: &str, path: &Path) -> Result<Bench> {
+        let mut b: Bench = toml::from_str(text).map_err(|e| {
+            let line = e.span().map(|s| format!(":{}", line_of(text, s.start))).unwrap_or_default();
+            Error::usage(format!("bench {}{line}: {}", path.display(), e.message())).hint(
+                "a bench has [devices] NAME = \"URL\", and optional wires = [\"A -> B\"], init = [\"DEV:OP=VALUE\"], [programs]",
+            )
+        })?;
+        if b.devices.is_empty() {
+            return Err(Error::usage(format!("bench {}: [devices] is empty", path.display()))
+                .hint("e.g. [devices] plc = \"sim:K205-16DT\""));
+        }
+        b.path = path.to_path_buf();
+        b.dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+        Ok(b)
+    }
+
+    /// Reads and parses a bench file.
+    pub fn load(path: &Path) -> Result<Bench> {
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| Error::io(format!("cannot read the bench file {}", path.display())).cause(e))?;
+        Bench::parse(&text, path)
+    }
+}
+
+/// Opens `bench` in the session: devices, wires, values, programs. Returns notes for the user.
+pub fn open(s: &mut Session, bench: &Bench) -> Result<Vec<String>> {
+    let file = bench.path.display().to_string();
+    let mut notes = Vec::new();
+    for (name, url) in &bench.devices {
+        // Refused before anything is opened: a bench never reaches for a real port or address.
+        if !url.trim_start().starts_with("sim") {
+            return Err(Error::usage(format!("bench {file}: device {name} = {url} is not a simulator"))
+                .hint("a bench file describes a simulated machine: use sim:MODEL and sim-servo:?id=N"));
+        }
+        s.open(name, url).map_err(|e| within(e, format!("bench {file}, device {name}")))?;
+        if !s.device(name)?.info().simulated {
+            s.close(name)?;
+            return Err(Error::usage(format!("bench {file}: device {name} = {url} is not a simulator"))
+                .hint("a bench file describes a simulated machine: use sim:MODEL and sim-servo:?id=N"));
+        }
+    }
+    for (i, w) in bench.wires.iter().enumerate() {
+        super::setup::wire(s, w).map_err(|e| within(e, format!("bench {file}, wire {} `{w}`", i + 1)))?;
+    }
+    for (i, item) in bench.init.iter().enumerate() {
+        let (op, value) = item.split_once('=').ok_or_else(|| {
+            Error::usage(format!("bench {file}, init {}: `{item}` is not DEVICE:OPERAND=VALUE", i + 1))
+                .hint("e.g. init = [\"servo:gear_factor=4\", \"plc:VW0=100\"]")
+        })?;
+        let it =
+            SetItem { operand: op.trim().to_string(), value: value.trim().to_string(), column: 0, value_column: 0 };
+        s.set(&[it]).map_err(|e| within(e, format!("bench {file}, init {} `{item}`", i + 1)))?;
+    }
+    for (dev, prog) in &bench.programs {
+        s.index(dev).map_err(|e| within(e, format!("bench {file}, program for {dev}")))?;
+        let p = bench.dir.join(prog);
+        if !p.is_file() {
+            return Err(Error::usage(format!("bench {file}: the program {} for {dev} does not exist", p.display())));
+        }
+        notes.push(format!(
+            "program {} for {dev} is not run: this build has no PLC program (IL) engine; the bench runs without it",
+            p.display()
+        ));
+    }
+    let current = bench.current.clone().unwrap_or_else(|| "plc".to_string());
+    if s.index(&current).is_ok() {
+        s.use_device(&current)?;
+    } else if let Some(first) = bench.devices.keys().next() {
+        s.use_device(first)?;
+    }
+    let name = bench.name.clone().unwrap_or_else(|| file.clone());
+    notes.insert(
+        0,
+        format!(
+            "bench {name}: {} device(s), {} wire(s), {} value(s)",
+            bench.devices.len(),
+            bench.wires.len(),
+            bench.init.len()
+        ),
+    );
+    Ok(notes)
+}
+
+/// What `sim serve --bench` serves.
+pub type ServeParts =
+    (Option<crate::k2::sim::K2Sim>, Option<std::sync::Arc<std::sync::Mutex<crate::servo::sim::SimLine>>>, Vec<String>);
+
+/// For `plcsh sim serve --bench FILE`: opens the bench in a session on `clock` (the same path
+/// as `--bench`), then takes out the simulated PLC, to be served on Modbus, and the drives'
+/// line, to be served on a pty — still wired to each other. A served bench has one PLC and
+/// one drive line.
+pub fn serve_parts(path: &Path, clock: &crate::core::Clock) -> Result<ServeParts> {
+    let bench = Bench::load(path)?;
+    let mut s = Session::new(clock.clone());
+    let notes = open(&mut s, &bench)?;
+    let (mut k2, mut line) = (None, None);
+    for i in 0..s.entries().len() {
+        let name = s.entries()[i].name.clone();
+        let dev = &mut s.entry(i).device;
+        if let Some(sim) = dev.as_k2().and_then(|k| k.as_sim()) {
+            if k2.is_some() {
+                return Err(Error::unsupported(format!(
+                    "bench {}: {name} is a second PLC; sim serve serves one PLC",
+                    path.display()
+                )));
+            }
+            let fresh = crate::k2::sim::K2Sim::new(sim.model(), clock.clone());
+            k2 = Some(std::mem::replace(sim, fresh));
+        } else if let Some(l) = dev.as_servo().and_then(|d| d.simulator()) {
+            match &line {
+                Some(prev) if !std::sync::Arc::ptr_eq(prev, &l) => {
+                    return Err(Error::unsupported(format!(
+                        "bench {}: {name} is on a second drive line; sim serve serves one line",
+                        path.display()
+                    ))
+                    .hint("put the drives on one line: sim-servo:axis?id=1 and sim-servo:axis?id=2"))
+                }
+                _ => line = Some(l),
+            }
+        }
+    }
+    Ok((k2, line, notes))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::core::Clock;
+
+    const BENCH: &str = r#"
+name = "axis"
+[devices]
+plc = "sim:K205-16DT"
+servo = "sim-servo:?id=1"
+wires = ["plc:Q0.0 -> servo:pulse"]
+"#;
+
+    #[test]
+    fn a_bench_parses_and_bad_ones_name_file_and_line() {
+        // `wires` after [devices] belongs to that table: a device named wires with a list.
+        let e = Bench::parse(BENCH, Path::new("m.toml")).unwrap_err();
+        assert!(e.to_string().contains("m.toml"), "{e}");
+        let good = "wires = [\"plc:Q0.0 -> servo:pulse\"]\ninit = [\"servo:gear_factor=4\"]\n[devices]\nplc = \"sim:K205-16DT\"\nservo = \"sim-servo:?id=1\"\n";
+        let b = Bench::parse(good, Path::new("m.toml")).unwrap();
+        assert_eq!(b.devices.len(), 2);
+        assert_eq!(b.wires.len(), 1);
+        let e = Bench::parse("[devices]\nplc = 5\n", Path::new("x.toml")).unwrap_err();
+        assert!(e.to_string().contains("x.toml:2"), "{e}");
+        assert!(Bench::parse("wire = []\n[devices]\nplc=\"sim:\"\n", Path::new("x")).is_err(), "unknown key");
+        assert!(Bench::parse("[devices]\n", Path::new("x")).is_err(), "no devices");
+    }
+
+    #[test]
+    fn opening_a_bench_wires_and_sets() {
+        let text = "wires = [\"plc:Q0.0 -> servo:pulse\"]\ninit = [\"servo:gear_factor=4\", \"plc:VW0=7\"]\n[devices]\nplc = \"sim:K205-16DT\"\nservo = \"sim-servo:?id=1\"\n";
+        let b = Bench::parse(text, Path::new("m.toml")).unwrap();
+        let mut s = Session::new(Clock::stepped());
+        let notes = open(&mut s, &b).unwrap();
+        assert!(notes[0].contains("2 device(s), 1 wire(s), 2 value(s)"), "{notes:?}");
+        assert_eq!(super::super::setup::list(&mut s).len(), 1);
+        let v = s.get(&["plc:VW0", "servo:gear_factor"]).unwrap();
+        assert_eq!((v[0].1.value.as_i64(), v[1].1.value.as_i64()), (7, 4));
+        let bad = "init = [\"plc:VW0\"]\n[devices]\nplc = \"sim:K205-16DT\"\n";
+        let e =
+            open(&mut Session::new(Clock::stepped()), &Bench::parse(bad, Path::new("m.toml")).unwrap()).unwrap_err();
+        assert!(e.to_string().contains("init 1"), "{e}");
+        let real = "[devices]\nplc = \"tcp://127.0.0.1:1?model=K205-16DT\"\n";
+        let e = open(&mut Session::new(Clock::stepped()), &Bench::parse(real, Path::new("m.toml")).unwrap());
+        assert!(e.is_err());
+    }
+}

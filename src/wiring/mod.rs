@@ -1,0 +1,545 @@
+//! Virtual wiring between simulated devices: a K2's pulse output to a drive's pulse input,
+//! the drive's encoder output to the K2's counter inputs, outputs to inputs (loopback), a
+//! drive's digital outputs and the switches on its axis to PLC inputs.
+//!
+//! Wiring is data, not special cases (design guide, "Simulated devices can be wired"): each
+//! family names its terminals and says what *signal* each one speaks ([`Role`]): a pulse
+//! output and a pulse input speak [`PulseTrain`]s, an encoder output speaks a position
+//! plan ([`Piece`]s of constant acceleration) that a quadrature counter input turns into
+//! A/B edges, a digital output and input speak levels. A [`Wire`] joins two roles that
+//! speak the same signal; [`connect`] checks that and refuses the rest with the pairs that
+//! work.
+//!
+//! Coupling is analytic in virtual time. The device that counts (the K2) is the *host*: when
+//! it advances, it asks its peers (the drives, through [`Peer`]) for their signals over the
+//! interval and advances piecewise, one piece per stretch where every wired signal is
+//! described by one formula (a constant-rate quadrature wave, a steady level). A cruise at
+//! 200 kHz for an hour is one piece; only the ends of segments, ramps (cut into pieces of at
+//! most [`RAMP_PIECE`]) and level changes cost a step. Pulse outputs are pushed to the
+//! drive the moment they start or stop (`PLS`, `PSTOP`), so the drive follows them from
+//! their first pulse.
+//!
+//! Exactness: the quadrature edges the counter sees are placed where the encoder position
+//! `x(t)` (in 4× counts, `x = p · 4 · lines / resolution`) crosses whole counts, and each
+//! piece starts from the count the counter has actually been given, so counts never drift
+//! (a rate that is not a whole number of Hz is re-synchronised at least every
+//! [`max_piece`] seconds). A counter in 1× mode counts A's rising edges of the same wave.
+
+pub mod bench;
+pub mod setup;
+
+use crate::core::signal::PulseTrain;
+use crate::core::{Error, Result};
+
+/// Longest piece a ramp (accelerating motion) is cut into: the encoder rate is the mean
+/// over the piece, and the count is re-synchronised to the true position at its end.
+pub const RAMP_PIECE: f64 = 0.001;
+
+/// One stretch of a planned motion: from `t0` for `dur` seconds (infinite for the last),
+/// starting at position `p0` (increments) with velocity `v0` and constant acceleration `a`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Piece {
+    pub t0: f64,
+    pub dur: f64,
+    pub p0: f64,
+    pub v0: f64,
+    pub a: f64,
+}
+
+impl Piece {
+    pub fn at(&self, t: f64) -> f64 {
+        let dt = (t - self.t0).clamp(0.0, self.dur);
+        self.p0 + self.v0 * dt + 0.5 * self.a * dt * dt
+    }
+}
+
+/// A drive's digital output, wired to a PLC input.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DriveOut {
+    /// Statusword bit 10 (target reached / at rest).
+    TargetReached,
+    /// In Fault (statusword bit 3).
+    Fault,
+    /// Operation enabled (power stage on).
+    Enabled,
+}
+
+/// A switch on a drive's axis, actuated by the drive's position.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Switch {
+    /// Active at and above the position (the drive's home input too).
+    Home(f64),
+    /// Active at and above the position (the drive's positive limit input too).
+    PosLimit(f64),
+    /// Active at and below the position (the drive's negative limit input too).
+    NegLimit(f64),
+}
+
+impl Switch {
+    pub fn active(&self, p: f64) -> bool {
+        match *self {
+            Switch::Home(x) | Switch::PosLimit(x) => p >= x,
+            Switch::NegLimit(x) => p <= x,
+        }
+    }
+    pub fn position(&self) -> f64 {
+        match *self {
+            Switch::Home(x) | Switch::PosLimit(x) | Switch::NegLimit(x) => x,
+        }
+    }
+    fn name(&self) -> &'static str {
+        match self {
+            Switch::Home(_) => "home",
+            Switch::PosLimit(_) => "limit+",
+            Switch::NegLimit(_) => "limit-",
+        }
+    }
+}
+
+/// An input or output bit of a PLC: (byte, bit).
+pub type Bit = (u32, u8);
+
+/// What a terminal speaks, as its family resolved it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Role {
+    /// A pulse output (a PTO channel) with its direction output.
+    PulseOut { channel: u8, out: Bit, dir: Bit },
+    /// A plain digital output.
+    DigitalOut(Bit),
+    /// A digital input.
+    DigitalIn(Bit),
+    /// Two inputs a counter reads as A/B.
+    QuadIn { a: Bit, b: Bit },
+    /// A drive's pulse input (mode -4).
+    PulseIn,
+    /// A drive's encoder output (A/B).
+    Encoder,
+    /// A drive's digital output.
+    DriveOut(DriveOut),
+    /// A switch on a drive's axis.
+    Switch(Switch),
+}
+
+/// One end of a wire as written: `DEVICE:TERMINAL[,TERMINAL]`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Endpoint {
+    pub device: String,
+    pub terminal: String,
+}
+
+impl std::fmt::Display for Endpoint {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}:{}", self.device, self.terminal)
+    }
+}
+
+/// Parses `plc:Q0.0`, `servo:encoder`, `plc:I0.0,I0.1`, `servo:home@20000`.
+pub fn endpoint(text: &str) -> Result<Endpoint> {
+    let t = text.trim();
+    let (d, term) = t.split_once(':').ok_or_else(|| {
+        Error::usage(format!("`{t}` is not a terminal: write DEVICE:TERMINAL"))
+            .hint("e.g. plc:Q0.0, servo:pulse, servo:encoder, plc:I0.0,I0.1, servo:home@20000")
+    })?;
+    if d.is_empty() || term.is_empty() {
+        return Err(Error::usage(format!("`{t}` names no device or no terminal")).hint("e.g. plc:Q0.0"));
+    }
+    Ok(Endpoint { device: d.to_string(), terminal: term.to_string() })
+}
+
+/// A wire declaration: `FROM -> TO [lines=N] [delay=D]`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Decl {
+    pub from: Endpoint,
+    pub to: Endpoint,
+    /// Encoder output lines per revolution (A/B periods per turn), `None`: resolution / 4.
+    pub lines: Option<u32>,
+    /// Loopback delay, ns.
+    pub delay_ns: u64,
+}
+
+impl std::fmt::Display for Decl {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{} -> {}", self.from, self.to)?;
+        if let Some(l) = self.lines {
+            write!(f, " lines={l}")?;
+        }
+        if self.delay_ns > 0 {
+            write!(f, " delay={}us", self.delay_ns / 1000)?;
+        }
+        Ok(())
+    }
+}
+
+/// Parses `plc:Q0.0 -> servo:pulse`, `servo:encoder -> plc:I0.1,I0.0 lines=1250`,
+/// `plc:Q0.1 -> plc:I0.3 delay=2ms`.
+pub fn parse(text: &str) -> Result<Decl> {
+    let (from, rest) = text.split_once("->").ok_or_else(|| {
+        Error::usage(format!("`{}` is not a wire: write FROM -> TO", text.trim()))
+            .hint("e.g. sim wire plc:Q0.0 -> servo:pulse")
+    })?;
+    let mut words = rest.split_whitespace();
+    let to = words.next().ok_or_else(|| Error::usage("the wire has no destination after `->`"))?;
+    let mut d = Decl { from: endpoint(from)?, to: endpoint(to)?, lines: None, delay_ns: 0 };
+    for w in words {
+        let (k, v) = w.split_once('=').ok_or_else(|| {
+            Error::usage(format!("`{w}`: wire options are key=value"))
+                .hint("options: lines=N (encoder), delay=D (loopback)")
+        })?;
+        match k {
+            "lines" => {
+                let n: u32 = v.parse().ok().filter(|n| *n > 0).ok_or_else(|| {
+                    Error::usage(format!("lines={v}: lines per revolution must be a positive whole number"))
+                })?;
+                d.lines = Some(n);
+            }
+            "delay" => {
+                let us = crate::core::literal::parse_duration_us(v)
+                    .ok()
+                    .filter(|us| *us >= 0)
+                    .ok_or_else(|| Error::usage(format!("delay={v} is not a duration")).hint("e.g. delay=2ms"))?;
+                d.delay_ns = us as u64 * 1000;
+            }
+            _ => {
+                return Err(Error::usage(format!("wires have no option `{k}`"))
+                    .hint("options: lines=N (encoder output), delay=D (output to input)"))
+            }
+        }
+    }
+    Ok(d)
+}
+
+/// A drive (or any device the host counts from), reached while the host advances.
+pub trait Peer: Send {
+    /// Connects a pulse signal to the pulse input, replacing what was there, from `t`.
+    fn pulses(&mut self, train: PulseTrain, t: f64);
+    /// Brings the peer to `t` and returns its position plan from `t` on (the last piece open).
+    fn motion(&mut self, t: f64) -> Vec<Piece>;
+    /// Identifies the current plan: it changes whenever the plan is replaced.
+    fn plan_id(&mut self, t: f64) -> u64;
+    /// The time of the peer's next own event after `t` (a limit, a fault), if any.
+    fn next_event(&mut self, t: f64) -> Option<f64>;
+    /// A digital output's level at `t` (the peer is brought to `t`).
+    fn output(&mut self, what: DriveOut, t: f64) -> bool;
+    /// Increments per revolution (the encoder resolution).
+    fn resolution(&mut self) -> f64;
+    /// Puts a switch on the peer's own inputs (`None` takes it away).
+    fn set_switch(&mut self, s: Switch, on: bool);
+    /// Checks that a pulse train can reach the pulse input as a step/direction signal.
+    fn check_pulse_input(&mut self) -> std::result::Result<(), String> {
+        Ok(())
+    }
+}
+
+/// Makes the peer of a new wire when the host does not know it yet.
+pub type MakePeer = Box<dyn FnOnce() -> Box<dyn Peer>>;
+
+/// What a wire joins, resolved.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Kind {
+    /// Host pulse output → peer pulse input.
+    Pulses { channel: u8, dir: Bit },
+    /// Peer encoder → host counter inputs.
+    Encoder { a: Bit, b: Bit, lines: Option<u32> },
+    /// Peer digital output → host input.
+    Output { what: DriveOut, pin: Bit },
+    /// Peer axis switch → host input (and the peer's own input).
+    Switch { switch: Switch, pin: Bit },
+    /// Host digital output → host input, `delay_ns` later.
+    Loop { from: Bit, to: Bit, delay_ns: u64 },
+    /// Host pulse output → host input (the pulses, `delay_ns` later).
+    PulseLoop { channel: u8, to: Bit, delay_ns: u64 },
+}
+
+/// Joins two resolved terminals, or says which pairs work.
+pub fn connect(d: &Decl, from: Role, to: Role) -> Result<Kind> {
+    let k = match (from, to) {
+        (Role::PulseOut { channel, dir, .. }, Role::PulseIn) => Kind::Pulses { channel, dir },
+        (Role::Encoder, Role::QuadIn { a, b }) => Kind::Encoder { a, b, lines: d.lines },
+        (Role::DriveOut(what), Role::DigitalIn(pin)) => Kind::Output { what, pin },
+        (Role::Switch(switch), Role::DigitalIn(pin)) => Kind::Switch { switch, pin },
+        (Role::DigitalOut(from), Role::DigitalIn(to)) => Kind::Loop { from, to, delay_ns: d.delay_ns },
+        (Role::PulseOut { channel, .. }, Role::DigitalIn(to)) => Kind::PulseLoop { channel, to, delay_ns: d.delay_ns },
+        _ => {
+            return Err(Error::usage(format!("{} cannot be wired to {}", d.from, d.to)).hint(
+                "wires that work: PLC pulse output -> servo:pulse; servo:encoder -> two PLC inputs (A,B); \
+                 servo:target_reached|fault|enabled -> PLC input; servo:home@POS|limit+@POS|limit-@POS -> PLC input; \
+                 PLC output -> PLC input [delay=D]",
+            ))
+        }
+    };
+    if d.lines.is_some() && !matches!(k, Kind::Encoder { .. }) {
+        return Err(Error::usage("lines= applies to an encoder output (servo:encoder -> …)"));
+    }
+    if d.delay_ns > 0 && !matches!(k, Kind::Loop { .. } | Kind::PulseLoop { .. }) {
+        return Err(Error::usage("delay= applies to a PLC output wired back to a PLC input"));
+    }
+    Ok(k)
+}
+
+/// Resolves a drive's terminal: `pulse`, `encoder`, `target_reached`, `fault`, `enabled`,
+/// `home@POS`, `limit+@POS`, `limit-@POS` (positions in increments).
+pub fn drive_terminal(ep: &Endpoint) -> Result<Role> {
+    let t = ep.terminal.to_ascii_lowercase();
+    let sw = |text: &str| -> Result<f64> {
+        text.trim().parse::<f64>().ok().filter(|x| x.is_finite()).ok_or_else(|| {
+            Error::usage(format!("{ep}: `{text}` is not a position in increments")).hint("e.g. servo:home@20000")
+        })
+    };
+    Ok(match t.split_once('@') {
+        Some(("home", p)) => Role::Switch(Switch::Home(sw(p)?)),
+        Some(("limit+" | "pos", p)) => Role::Switch(Switch::PosLimit(sw(p)?)),
+        Some(("limit-" | "neg", p)) => Role::Switch(Switch::NegLimit(sw(p)?)),
+        Some(_) => return Err(Error::usage(format!("{ep}: only home, limit+ and limit- switches take @POS"))),
+        None => {
+            match t.as_str() {
+                "pulse" | "pulses" => Role::PulseIn,
+                "encoder" => Role::Encoder,
+                "target_reached" | "target" => Role::DriveOut(DriveOut::TargetReached),
+                "fault" => Role::DriveOut(DriveOut::Fault),
+                "enabled" => Role::DriveOut(DriveOut::Enabled),
+                _ => return Err(Error::usage(format!("drive terminal `{}` is unknown ({ep})", ep.terminal)).hint(
+                    "drive terminals: pulse, encoder, target_reached, fault, enabled, home@POS, limit+@POS, limit-@POS",
+                )),
+            }
+        }
+    })
+}
+
+/// One wire, resolved, with what it keeps between pieces.
+#[derive(Clone, Debug)]
+pub struct Wire {
+    pub decl: Decl,
+    pub kind: Kind,
+    /// Index of the peer in [`Harness::peers`] (wires between host terminals have none).
+    pub peer: Option<usize>,
+    pub state: WireState,
+}
+
+/// What a wire carries over between pieces.
+#[derive(Clone, Debug, Default)]
+pub struct WireState {
+    /// Encoder: 4× counts given to the counter so far (absolute encoder count).
+    pub given: i64,
+    /// Encoder: counts are anchored (`given` set from the position when wired).
+    pub anchored: bool,
+    /// The current piece is valid until this time (ns) while the peer's plan is `plan`.
+    pub until_ns: u64,
+    pub plan: u64,
+    /// Pulses: the train last pushed (start ns, total), so a change is pushed once.
+    pub pushed: Option<(u64, u64)>,
+    pub train: PulseTrain,
+    /// Loopback: level changes waiting for their delay (time ns, level).
+    pub pending: std::collections::VecDeque<(u64, bool)>,
+    pub last_level: Option<bool>,
+    /// The wave the wire drives now: (Hz, origin ns, up) (encoder) or (Hz, origin, _) (pulses).
+    pub wave: Option<(u64, u64, bool)>,
+}
+
+/// The wiring a host holds: its peers (by device name) and its wires.
+pub struct Harness {
+    pub peers: Vec<(String, Box<dyn Peer>)>,
+    pub wires: Vec<Wire>,
+}
+
+impl std::fmt::Debug for Harness {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Harness").field("wires", &self.wires).finish()
+    }
+}
+
+impl Harness {
+    pub fn new() -> Harness {
+        Harness { peers: Vec::new(), wires: Vec::new() }
+    }
+
+    /// The peer named `name`, adding it with `make` when new.
+    pub fn peer_index(&mut self, name: &str, make: impl FnOnce() -> Box<dyn Peer>) -> usize {
+        match self.peers.iter().position(|(n, _)| n == name) {
+            Some(i) => i,
+            None => {
+                self.peers.push((name.to_string(), make()));
+                self.peers.len() - 1
+            }
+        }
+    }
+
+    /// Describes a wire for `sim wires`.
+    pub fn describe(w: &Wire) -> String {
+        let what = match w.kind {
+            Kind::Pulses { channel, .. } => {
+                format!("PTO{channel} pulses (with its direction output) to the pulse input")
+            }
+            Kind::Encoder { lines, .. } => match lines {
+                Some(l) => format!("encoder A/B, {l} lines per revolution, counted 4x"),
+                None => "encoder A/B, one 4x count per increment".to_string(),
+            },
+            Kind::Output { what, .. } => format!(
+                "drive output {}",
+                match what {
+                    DriveOut::TargetReached => "target reached (statusword bit 10)",
+                    DriveOut::Fault => "fault",
+                    DriveOut::Enabled => "operation enabled",
+                }
+            ),
+            Kind::Switch { switch, .. } => {
+                format!("{} switch at {} increments (also the drive's own input)", switch.name(), switch.position())
+            }
+            Kind::Loop { delay_ns, .. } => format!("output to input, delay {} µs", delay_ns / 1000),
+            Kind::PulseLoop { channel, delay_ns, .. } => {
+                format!("PTO{channel} output (pulses and level) to input, delay {} µs", delay_ns / 1000)
+            }
+        };
+        format!("{}  ({what})", w.decl)
+    }
+}
+
+impl Default for Harness {
+    fn default() -> Self {
+        Harness::new()
+    }
+}
+
+/// The quadrature wave for one piece of an encoder signal: the A/B period frequency in Hz
+/// (whole), the ns origin of a wave whose first edge comes when the position reaches the
+/// next count after `given`, and the direction. `x0` is the position at `t0` in 4× counts
+/// and `rate` its rate (4× counts/s, signed). `None` when the rate rounds to zero.
+///
+/// A wave of frequency `f` from origin `o` (low at `o`) makes its 4× edges at
+/// `o + m / (4f)` for m ≥ 4 (k2::sim::inputs: A rises at `o + k/f`, B a quarter later), so
+/// the first edge is `o + 1/f`: the origin is put one period before the time the next
+/// count is due.
+pub fn quad_wave(t0_ns: u64, x0: f64, rate: f64, given: i64) -> Option<(u64, u64, bool)> {
+    let f = (rate.abs() / 4.0).round();
+    if f < 1.0 {
+        return None;
+    }
+    let hz = f as u64;
+    let up = rate > 0.0;
+    // Counts still owed (positive) or already given ahead (negative), seen from the direction.
+    let due = if up { (given + 1) as f64 - x0 } else { x0 - (given - 1) as f64 - 1.0 };
+    // Time until the next edge, from the true rate; never before the piece starts.
+    let wait_ns = (due.max(0.0) / rate.abs() * 1e9).ceil().max(1.0) as u64;
+    let period = 1_000_000_000u64.div_ceil(hz);
+    // Within the first period of virtual time the origin would be before zero: the first
+    // edge then comes up to a period late (the next piece catches the count up).
+    let first = (t0_ns + wait_ns).max(period);
+    Some((hz, first - period, up))
+}
+
+/// How long a piece at `rate` (4× counts/s) may last before the whole-Hz wave drifts by a
+/// quarter count from the true rate.
+pub fn max_piece(rate: f64) -> f64 {
+    let f = rate.abs() / 4.0;
+    let err = (f - f.round()).abs();
+    if err < 1e-9 {
+        f64::INFINITY
+    } else {
+        (0.25 / err).max(RAMP_PIECE)
+    }
+}
+
+/// Rounds a count position that is within float noise of a whole count onto it.
+pub fn snap(x: f64) -> f64 {
+    let r = x.round();
+    if (x - r).abs() < 1e-6 {
+        r
+    } else {
+        x
+    }
+}
+
+/// The first time at or after `t` a position plan reaches `x` (`None` if it never does).
+pub fn first_reach(pieces: &[Piece], x: f64, t: f64) -> Option<f64> {
+    for p in pieces {
+        let (t0, dur) = (p.t0.max(t), p.dur);
+        let end = p.t0 + dur;
+        if end < t0 {
+            continue;
+        }
+        let (c, b, a) = (p.at(t0) - x, p.v0 + p.a * (t0 - p.t0), 0.5 * p.a);
+        if c == 0.0 {
+            return Some(t0);
+        }
+        let roots: Vec<f64> = if a == 0.0 {
+            if b == 0.0 {
+                vec![]
+            } else {
+                vec![-c / b]
+            }
+        } else {
+            let disc = b * b - 4.0 * a * c;
+            if disc < 0.0 {
+                vec![]
+            } else {
+                let r = disc.sqrt();
+                vec![(-b - r) / (2.0 * a), (-b + r) / (2.0 * a)]
+            }
+        };
+        if let Some(tau) = roots.into_iter().filter(|tau| *tau >= 0.0 && t0 + *tau <= end).min_by(|a, b| a.total_cmp(b))
+        {
+            return Some(t0 + tau);
+        }
+    }
+    None
+}
+
+/// The pulses of `train` that are out by `t`: the train cut there (a stopped output).
+pub fn cut(train: &PulseTrain, t: f64) -> PulseTrain {
+    let mut out = PulseTrain::new();
+    for s in train.segments() {
+        let n = s.pulses_at(t);
+        if n > 0 {
+            let _ = out.push(s.start, s.freq, n, s.dir);
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn wire_declarations_parse_and_refuse() {
+        let d = parse("servo:encoder -> plc:I0.1,I0.0 lines=1250").unwrap();
+        assert_eq!(d.from.device, "servo");
+        assert_eq!(d.to.terminal, "I0.1,I0.0");
+        assert_eq!(d.lines, Some(1250));
+        assert_eq!(d.to_string(), "servo:encoder -> plc:I0.1,I0.0 lines=1250");
+        let d = parse("plc:Q0.1 -> plc:I0.3 delay=2ms").unwrap();
+        assert_eq!(d.delay_ns, 2_000_000);
+        assert!(parse("plc:Q0.0 servo:pulse").unwrap_err().to_string().contains("FROM -> TO"));
+        assert!(parse("plc:Q0.0 -> servo:pulse gain=2").is_err());
+        assert!(parse("Q0.0 -> servo:pulse").is_err());
+        assert!(parse("servo:encoder -> plc:I0.0 lines=0").is_err());
+        let e = connect(&parse("servo:encoder -> servo:pulse").unwrap(), Role::Encoder, Role::PulseIn).unwrap_err();
+        assert!(e.to_string().contains("cannot be wired"), "{e}");
+    }
+
+    #[test]
+    fn drive_terminals() {
+        let r = |t: &str| drive_terminal(&endpoint(&format!("servo:{t}")).unwrap());
+        assert_eq!(r("pulse").unwrap(), Role::PulseIn);
+        assert_eq!(r("home@20000").unwrap(), Role::Switch(Switch::Home(20000.0)));
+        assert_eq!(r("limit-@-5").unwrap(), Role::Switch(Switch::NegLimit(-5.0)));
+        assert!(r("home@x").is_err());
+        assert!(r("brake").unwrap_err().to_string().contains("unknown"));
+    }
+
+    #[test]
+    fn the_first_edge_comes_when_the_next_count_is_due() {
+        // 1000 counts/s (250 Hz), at x0 = 10.5 with 10 given: the 11th count is due in 0.5 ms.
+        let (hz, o, up) = quad_wave(10_000_000, 10.5, 1000.0, 10).unwrap();
+        assert_eq!((hz, up), (250, true));
+        assert_eq!(o + 4_000_000, 10_000_000 + 500_000);
+        // Going down from 10.5 with 10 given: the count drops to 9 when x falls below 10.
+        let (_, o, up) = quad_wave(10_000_000, 10.5, -1000.0, 10).unwrap();
+        assert!(!up);
+        assert_eq!(o + 4_000_000, 10_500_000);
+        // Within the first period of virtual time the origin cannot go before zero.
+        assert_eq!(quad_wave(1_000_000, 10.5, 1000.0, 10).unwrap().1, 0);
+        assert!(quad_wave(0, 0.0, 1.0, 0).is_none(), "a quarter Hz rounds to nothing");
+        assert_eq!(max_piece(4000.0), f64::INFINITY);
+        assert!((max_piece(4002.0) - 0.5).abs() < 1e-9);
+    }
+}
