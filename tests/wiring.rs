@@ -110,13 +110,13 @@ fn bad_wires_are_refused_with_what_works() {
     ] {
         let o = run(&["-c", cmd], "");
         assert!(!o.status.success(), "{cmd} succeeded");
-        let out = stdout(&o);
+        let out = stderr(&o);
         assert!(out.contains(want), "{cmd}: {out}");
     }
     // A drive whose pulse input is A/B cannot follow pulse + direction.
     let o = run(&["-c", "set servo:pulse_mode=2; sim wire plc:Q0.0 -> servo:pulse"], "");
     assert!(!o.status.success());
-    assert!(stdout(&o).contains("2508.03"), "{}", stdout(&o));
+    assert!(stderr(&o).contains("2508.03"), "{}", stderr(&o));
 }
 
 #[test]
@@ -152,12 +152,12 @@ fn a_bench_with_a_real_device_or_a_bad_line_is_refused() {
     std::fs::write(&real, "[devices]\nservo = \"kinco:/dev/null?id=1\"\n").unwrap();
     let o = run(&["--bench", real.to_str().unwrap(), "-c", "sim wires"], "");
     assert!(!o.status.success());
-    assert!(stdout(&o).contains("device servo = kinco:/dev/null?id=1 is not a simulator"), "{}", stdout(&o));
+    assert!(stderr(&o).contains("device servo = kinco:/dev/null?id=1 is not a simulator"), "{}", stderr(&o));
     let bad = dir.join("bad.toml");
     std::fs::write(&bad, "[devices]\nplc = \"sim:K205-16DT\"\nwires = 3\n").unwrap();
     let o = run(&["--bench", bad.to_str().unwrap(), "-c", "sim wires"], "");
     assert!(!o.status.success());
-    assert!(stdout(&o).contains("bad.toml:3"), "{}", stdout(&o));
+    assert!(stderr(&o).contains("bad.toml:3"), "{}", stderr(&o));
     let prog = dir.join("prog.toml");
     std::fs::write(&prog, "[devices]\nplc = \"sim:K205-16DT\"\n[programs]\nplc = \"prog.toml\"\n").unwrap();
     let o = run(&["--bench", prog.to_str().unwrap(), "-c", "sim wires"], "");
@@ -197,4 +197,9 @@ fn a_served_bench_is_driven_by_a_second_plcsh() {
     let v = vals(&g[0]);
     // The drive's encoder really came back: counts = increments × 5000 / 10000, exactly.
     assert_eq!(v, vec![8000, 16_000, 32_000, 1, 1], "pulses, counts, increments, home switch, target reached");
+}
+
+/// Human-readable errors go to stderr.
+fn stderr(o: &std::process::Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
 }
