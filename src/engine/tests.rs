@@ -363,7 +363,7 @@ fn block_moves_fill_and_pointers() {
 fn arithmetic_with_flags() {
     // S7-200: OUT := OUT op IN; overflow wraps and sets SM1.1; ÷0 sets SM1.3, ENO = 0.
     let mut r = load(
-        "LD %I0.0\nADD 1, %VW0\nSUB %VW0, 3, %VW2\nMUL 1000, %VD20\nDIV 0, %VW6\nST %Q0.0\nLD %I0.0\nMOD 3, %VW8\nINC %VB10\nDEC %VW12\nADD 1, %VW14\n+R 0.25, %VD16/REAL",
+        "LD %I0.0\nADD 1, %VW0\nSUB %VW0, 3, %VW2\nMUL 1000, %VD20\nDIV 0, %VW6\nST %Q0.0\nLD %I0.0\nMOD 3, %VW8\nINC %VB10\nDEC %VW12\nADD 1, %VW14\nLD %I0.0\n+R 0.25, %VD16/REAL",
     );
     r.set_bit("I0.0", true);
     r.set_val("VD20", 5);
