@@ -381,7 +381,12 @@ fn arithmetic_with_flags() {
     assert_eq!(r.val("VB10"), 1);
     assert_eq!(r.val("VW12"), -1);
     assert_eq!(r.val("VW14"), -32768, "INT overflow wraps");
-    assert!(r.mem.flags.overflow && r.mem.flags.negative, "…and is flagged");
+    let mut o = load("LD %I0.0\nADD 1, %VW14\nST %Q0.1");
+    o.set_bit("I0.0", true);
+    o.set_val("VW14", 32767);
+    o.scan();
+    assert!(o.mem.flags.overflow && o.mem.flags.negative, "…and is flagged (S7-200 SM1.1, SM1.2)");
+    assert!(!o.bit("Q0.1"), "overflow: ENO = 0");
     assert_eq!(f32::from_bits(r.mem.get(Toy.operand("VD16").unwrap().loc)), 1.25);
 }
 
