@@ -317,7 +317,7 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
         {
             return Ok(Raw::Lit(t.to_string()));
         }
-        let r = self.fam.operand(t).map_err(fail)?;
+        let r = self.fam.value_operand(t).map_err(fail)?;
         Ok(Raw::Loc(r.loc, r.ty, r.canonical))
     }
 
@@ -369,7 +369,20 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
     }
 
     fn bit(&self, o: &OperandText) -> Result<Loc> {
-        match self.raw(o)? {
+        let first = o.text.chars().next().unwrap_or(' ');
+        let raw = if matches!(first, '*' | '&') || first.is_ascii_digit() || o.text.contains('#') {
+            self.raw(o)?
+        } else {
+            let r = self.fam.operand(&o.text).map_err(|e| {
+                let mut x = self.e(o.pos, format!("{}: {}", o.text, e.message)).operand(o.text.clone());
+                if let Some(h) = e.hint {
+                    x = x.hint(h);
+                }
+                x
+            })?;
+            Raw::Loc(r.loc, r.ty, r.canonical)
+        };
+        match raw {
             Raw::Loc(l, DataType::Bool, _) => Ok(l),
             Raw::Loc(_, t, name) => Err(self
                 .e(o.pos, format!("{name} is a {}, not a bit", t.name()))
@@ -564,7 +577,7 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
                 let ins: Vec<Raw> = ops[..ops.len() - 1].iter().map(|o| self.raw(o)).collect::<Result<_>>()?;
                 let mut all: Vec<(&OperandText, &Raw)> = vec![(out_o, &out)];
                 all.extend(ops.iter().zip(ins.iter()));
-                let t = self.value_ty(m, ty, &all)?;
+                let t = signed(self.value_ty(m, ty, &all)?);
                 if t == DataType::Bool {
                     return Err(self.e(pos, format!("{m} works on numbers, not bits")));
                 }
@@ -579,7 +592,7 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
             Kind::IncDec { inc, ty } => {
                 let out = self.raw(&ops[0])?;
                 self.out_loc(&ops[0], &out)?;
-                let t = self.value_ty(m, ty, &[(&ops[0], &out)])?;
+                let t = signed(self.value_ty(m, ty, &[(&ops[0], &out)])?);
                 Ins::IncDec { inc, ty: t, out: self.typed(&ops[0], &out, t)? }
             }
             Kind::Shift { op } => {
@@ -713,6 +726,16 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
         }
         let _ = m;
         Ok(DataType::Int)
+    }
+}
+
+/// Arithmetic on a WORD or DWORD operand is INT or DINT arithmetic (S7-200 `+I`, `+D`:
+/// VW and VD hold signed numbers for the arithmetic instructions).
+fn signed(t: DataType) -> DataType {
+    match t {
+        DataType::Word => DataType::Int,
+        DataType::DWord => DataType::DInt,
+        t => t,
     }
 }
 

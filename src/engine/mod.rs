@@ -187,8 +187,13 @@ pub enum Opd {
 
 /// The family's side of loading a program.
 pub trait Family {
-    /// Resolves a plain operand (no literal, `&` or `*`: the engine handles those).
+    /// Resolves a plain operand (no literal, `&` or `*`: the engine handles those) where
+    /// a bit is expected (`LD`, `ST`, …): a timer or counter name means its bit.
     fn operand(&self, text: &str) -> Result<Resolved, OperandError>;
+    /// The same where a value is expected (`MOVE T5, …`: a timer's current value).
+    fn value_operand(&self, text: &str) -> Result<Resolved, OperandError> {
+        self.operand(text)
+    }
     /// Resolves a timer (`want_timer`) or counter operand (`T37`, `C5`).
     fn element(&self, text: &str, want_timer: bool) -> Result<Element, OperandError>;
     /// The pointer value `&operand` stores, or `None` if the family has no pointer to it.

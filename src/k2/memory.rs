@@ -21,6 +21,9 @@ pub struct Memory {
     /// Timer and counter current values (INT).
     pub t: Vec<i16>,
     pub c: Vec<i16>,
+    /// Timer and counter bits (0/1), set by the program's timer and counter instructions.
+    pub tq: Vec<u8>,
+    pub cq: Vec<u8>,
 }
 
 impl Memory {
@@ -37,6 +40,8 @@ impl Memory {
             aq: z(Area::AQ),
             t: vec![0; s.area_len(Area::T) as usize],
             c: vec![0; s.area_len(Area::C) as usize],
+            tq: vec![0; s.area_len(Area::T) as usize],
+            cq: vec![0; s.area_len(Area::C) as usize],
         }
     }
 

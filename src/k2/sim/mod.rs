@@ -12,6 +12,7 @@ pub mod agent;
 pub mod events;
 pub mod hsc;
 pub mod inputs;
+pub mod program;
 pub mod pto;
 pub mod rtc;
 pub mod state;
@@ -58,8 +59,8 @@ pub struct K2Sim {
     pub events: EventLog,
     pub rtc: Rtc,
     pub backup: Backup,
-    /// The PLC-side helper program, when served with `--agent` (issue 5).
-    pub agent: Option<agent::Agent>,
+    /// The CPU running programs (user program, helper), once one was loaded.
+    pub plc: Option<Box<program::Plc>>,
     /// Scratch space of `advance_to` (events raised in a step, where each channel's end),
     /// kept so a step allocates nothing.
     raised: Vec<(Duration, EventKind)>,
@@ -85,7 +86,7 @@ impl K2Sim {
             events: EventLog::default(),
             rtc: Rtc::new(instr::host_local_now(), start),
             backup: Backup { since: start, ..Backup::default() },
-            agent: None,
+            plc: None,
             raised: Vec::new(),
             run_ends: Vec::new(),
         };
@@ -113,8 +114,17 @@ impl K2Sim {
     }
 
     /// Brings the simulation up to virtual time `now`: pulses, counts, events, input
-    /// levels and system bits, all computed from the elapsed time in one step.
+    /// levels and system bits, all computed from the elapsed time in one step — and, when
+    /// a program runs, every scan due before `now` at its own start time ([`program`]).
     pub fn advance_to(&mut self, now: Duration) {
+        if self.plc.is_some() {
+            self.run_scans(now);
+        }
+        self.advance_hw(now);
+    }
+
+    /// The hardware part of [`Self::advance_to`]: no program runs.
+    fn advance_hw(&mut self, now: Duration) {
         let last = self.last;
         let now = now.max(last);
         // Events go to a buffer kept between steps, one run per channel, merged by time.
@@ -141,7 +151,6 @@ impl K2Sim {
         (self.raised, self.run_ends) = (raised, ends);
         self.last = now;
         self.refresh_system_bits(now);
-        self.agent_scans(now);
     }
 
     /// Writes the sources' current levels into the input image.
@@ -169,7 +178,11 @@ impl K2Sim {
         let ms = us / 1000;
         let mut b = 0u8;
         b |= 1; // SM0.0 always on (§8)
-        if scans == 0 {
+        let program = self.plc.as_ref().is_some_and(|p| p.has_program());
+        if program {
+            // The scan cycle sets SM0.1 and SM0.6 (program::one_scan).
+            b |= self.mem.sm[0] & (1 << 1 | 1 << 6);
+        } else if scans == 0 {
             b |= 1 << 1; // SM0.1 first scan (§8)
         }
         if (ms / 30_000).is_multiple_of(2) {
@@ -178,7 +191,7 @@ impl K2Sim {
         if (ms / 500).is_multiple_of(2) {
             b |= 1 << 5; // SM0.5 1-second clock: 0.5 s on, 0.5 s off
         }
-        if scans % 2 == 1 {
+        if !program && scans % 2 == 1 {
             b |= 1 << 6; // SM0.6 toggles every scan
         }
         self.mem.sm[0] = b;

@@ -1,0 +1,334 @@
+//! The simulated K2's CPU: programs loaded into the scan engine ([`crate::engine`]), the
+//! scan cycle in virtual time, CPU modes and faults.
+//!
+//! **Scan cycle.** While in RUN, scan k starts at virtual time t_k: the hardware (pulse
+//! outputs, counters, input signals) is brought up to t_k and the input image refreshed;
+//! SM0.1 (first scan) and SM0.6 (scan toggle) are set; the user program runs, then the
+//! helper program (if installed, as a subroutine called at the end of the main program
+//! would); the scan time is the fixed overhead plus the cost-table time of the
+//! instructions executed, at least the minimum scan (K80S: scan = program + interrupts +
+//! internal processing). t_{k+1} = t_k + scan time. Communication is served between
+//! scans: a Modbus request arriving at time t sees the image after every scan that
+//! started before t. Outputs are the Q image itself (written as the program runs, read by
+//! the pulse hardware at the next step) — a simplification of "written at the end of the
+//! scan" that no client can observe, because clients are served only between scans.
+//!
+//! **Scan-time registers.** SMW22 last, SMW24 minimum, SMW26 maximum scan time in ms
+//! (S7-200 convention; the K80S keeps the same three figures in F52/F51/F50).
+//!
+//! **Modes** (K2 §2.2.1; K80S modes). RUN scans; STOP does not scan, sets the outputs to
+//! their STOP values (all off unless configured) and still serves Modbus; PAUSE freezes
+//! without touching data or outputs and RUN continues where it stopped. The real K2's
+//! mode is the switch × command table of §2.2.1 (switch STOP wins); the simulator's
+//! switch is a setting (`sim switch run|stop`). A serious error (watchdog, bad indirect
+//! address, call depth) stops the CPU with a fault record.
+
+pub mod family;
+
+use super::K2Sim;
+use crate::core::{Error, Result};
+use crate::engine::exec::Exit;
+use crate::engine::{self, CostTable, Cpu, Fault, Program};
+use family::{K2Family, K2Machine};
+use serde::Serialize;
+use std::time::Duration;
+
+/// CPU modes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Mode {
+    Run,
+    Stop,
+    Pause,
+}
+
+impl Mode {
+    pub fn name(self) -> &'static str {
+        match self {
+            Mode::Run => "RUN",
+            Mode::Stop => "STOP",
+            Mode::Pause => "PAUSE",
+        }
+    }
+}
+
+/// A program in the CPU with its state.
+pub struct Loaded {
+    pub prog: Program,
+    pub cpu: Cpu,
+    /// Where it came from (file name, or "helper").
+    pub source: String,
+    exec_prev: Vec<bool>,
+}
+
+impl Loaded {
+    fn new(prog: Program, source: String) -> Loaded {
+        Loaded { cpu: Cpu::new(&prog), prog, source, exec_prev: Vec::new() }
+    }
+    fn reset(&mut self) {
+        self.cpu = Cpu::new(&self.prog);
+        self.exec_prev.clear();
+    }
+}
+
+/// Scan statistics.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+pub struct ScanStats {
+    pub scans: u64,
+    pub last_ns: u64,
+    pub min_ns: u64,
+    pub max_ns: u64,
+    /// Instructions executed in the last scan.
+    pub last_instructions: u64,
+    pub total_instructions: u64,
+}
+
+/// The CPU of a simulated K2.
+pub struct Plc {
+    pub user: Option<Loaded>,
+    pub helper: Option<Loaded>,
+    pub mode: Mode,
+    /// The RUN/STOP switch (a setting in the simulator; STOP wins over a RUN command).
+    pub switch_run: bool,
+    pub faults: Vec<Fault>,
+    pub stats: ScanStats,
+    /// Scans since the last STOP→RUN (SM0.1 is on in scan 0).
+    pub run_scans: u64,
+    /// Start time of the next scan.
+    pub next_scan: Duration,
+    pub costs: CostTable,
+    /// Q bytes in STOP (K2 §2.2.1: values from the hardware configuration; all off here).
+    pub stop_outputs: Vec<u8>,
+}
+
+impl Plc {
+    pub fn new(now: Duration, q_bytes: usize) -> Plc {
+        Plc {
+            user: None,
+            helper: None,
+            mode: Mode::Run,
+            switch_run: true,
+            faults: Vec::new(),
+            stats: ScanStats::default(),
+            run_scans: 0,
+            next_scan: now,
+            costs: family::default_costs(),
+            stop_outputs: vec![0; q_bytes],
+        }
+    }
+
+    pub fn has_program(&self) -> bool {
+        self.user.is_some() || self.helper.is_some()
+    }
+}
+
+/// Scan times in ms for the SM registers (saturating).
+fn ms16(ns: u64) -> u16 {
+    (ns / 1_000_000).min(u16::MAX as u64) as u16
+}
+
+impl K2Sim {
+    fn family(&self) -> K2Family {
+        K2Family { space: *self.space() }
+    }
+
+    /// Compiles IL text for this model (load errors name `file:line:column`).
+    pub fn compile(&self, text: &str, file: &str) -> Result<Program> {
+        engine::compile(text, file, &self.family()).map_err(|e| e.device(self.model().name))
+    }
+
+    fn plc_mut(&mut self) -> &mut Plc {
+        let (now, q) = (self.last, self.mem.q.len());
+        self.plc.get_or_insert_with(|| Box::new(Plc::new(now, q)))
+    }
+
+    /// Loads a user program (replacing any); the CPU restarts it from its first scan.
+    /// Loading is allowed in any mode (the real K2 wants STOP for a download; the
+    /// simulator loads as if it switched to STOP, downloaded and returned).
+    pub fn load_program(&mut self, text: &str, file: &str) -> Result<String> {
+        let prog = self.compile(text, file)?;
+        self.advance();
+        let now = self.last;
+        let n = prog.source_instructions;
+        let p = self.plc_mut();
+        p.user = Some(Loaded::new(prog, file.to_string()));
+        if let Some(h) = &mut p.helper {
+            h.reset();
+        }
+        p.run_scans = 0;
+        p.next_scan = now;
+        p.faults.clear();
+        if p.mode == Mode::Run {
+            self.advance_to(now);
+        }
+        Ok(format!("{file}: {n} instructions loaded; CPU {}", self.plc.as_ref().map_or("RUN", |p| p.mode.name())))
+    }
+
+    /// Installs the helper program (`lib/k2_agent.il` for this mailbox base) as text.
+    pub fn load_helper(&mut self, text: &str, source: &str) -> Result<()> {
+        let prog = self.compile(text, source)?;
+        let now = self.last;
+        let p = self.plc_mut();
+        p.helper = Some(Loaded::new(prog, source.to_string()));
+        if p.user.is_none() {
+            p.run_scans = 0;
+            p.next_scan = now;
+        }
+        // A PLC in RUN has been scanning before any client looks: run the first scan now.
+        self.advance_to(now);
+        Ok(())
+    }
+
+    /// Removes the user program.
+    pub fn unload_program(&mut self) {
+        self.advance();
+        if let Some(p) = &mut self.plc {
+            p.user = None;
+        }
+    }
+
+    /// The CPU, when a program is loaded.
+    pub fn plc(&self) -> Option<&Plc> {
+        self.plc.as_deref()
+    }
+
+    /// Sets the mode by command (`sim run|stop|pause`). RUN with the switch at STOP stays
+    /// in STOP (K2 §2.2.1).
+    pub fn set_mode(&mut self, want: Mode) -> Result<Mode> {
+        self.advance();
+        let now = self.last;
+        let p = self.plc_mut();
+        let old = p.mode;
+        let new = if want == Mode::Run && !p.switch_run { Mode::Stop } else { want };
+        if new == old {
+            return Ok(new);
+        }
+        match new {
+            Mode::Stop => {}
+            Mode::Pause => {}
+            Mode::Run => {
+                if old == Mode::Stop {
+                    // STOP → RUN: a fresh start (first-scan bit, timers and edges reset);
+                    // memory keeps its values.
+                    p.run_scans = 0;
+                    for l in [&mut p.user, &mut p.helper].into_iter().flatten() {
+                        l.reset();
+                    }
+                }
+                p.next_scan = now;
+            }
+        }
+        p.mode = new;
+        if new == Mode::Stop {
+            self.apply_stop_outputs();
+        }
+        if new == Mode::Run {
+            self.advance_to(now);
+        }
+        if want == Mode::Run && new == Mode::Stop {
+            return Err(Error::state("the RUN/STOP switch is at STOP: the CPU stays in STOP (manual §2.2.1)")
+                .hint("sim switch run"));
+        }
+        Ok(new)
+    }
+
+    /// The simulated mode switch.
+    pub fn set_switch(&mut self, run: bool) -> Result<Mode> {
+        self.plc_mut().switch_run = run;
+        if run {
+            Ok(self.plc.as_ref().map_or(Mode::Run, |p| p.mode))
+        } else {
+            self.set_mode(Mode::Stop)
+        }
+    }
+
+    fn apply_stop_outputs(&mut self) {
+        let Some(p) = &self.plc else { return };
+        let n = self.mem.q.len().min(p.stop_outputs.len());
+        self.mem.q[..n].copy_from_slice(&p.stop_outputs[..n]);
+        for a in self.mem.aq.iter_mut() {
+            *a = 0;
+        }
+    }
+
+    /// True when scans are due before `now` (the scan loop runs them).
+    pub(super) fn scan_due(&self, now: Duration) -> bool {
+        self.plc.as_ref().is_some_and(|p| p.mode == Mode::Run && p.has_program() && p.next_scan <= now)
+    }
+
+    /// Runs every scan that starts at or before `now`, bringing the hardware to each
+    /// scan's start first. Called from `advance_to`.
+    pub(super) fn run_scans(&mut self, now: Duration) {
+        while self.scan_due(now) {
+            let t = self.plc.as_ref().map_or(now, |p| p.next_scan);
+            self.advance_hw(t);
+            self.one_scan(t);
+        }
+    }
+
+    /// Runs `n` scans now in stepped time (`sim scan N`): each at its modelled start.
+    pub fn scan_n(&mut self, n: u64) -> Result<ScanStats> {
+        self.advance();
+        for _ in 0..n {
+            let Some(p) = &self.plc else { break };
+            if p.mode != Mode::Run || !p.has_program() {
+                return Err(Error::state(format!("the CPU is in {}: no scan runs", p.mode.name())).hint("sim run"));
+            }
+            let t = p.next_scan.max(self.last);
+            self.advance_hw(t);
+            self.one_scan(t);
+        }
+        Ok(self.plc.as_ref().map(|p| p.stats).unwrap_or_default())
+    }
+
+    fn one_scan(&mut self, t: Duration) {
+        let Some(mut p) = self.plc.take() else { return };
+        // System bits from the program's point of view.
+        let first = p.run_scans == 0;
+        let b = &mut self.mem.sm[0];
+        *b = (*b & !(1 << 1 | 1 << 6)) | (first as u8) << 1 | ((p.run_scans % 2 == 1) as u8) << 6;
+        let now_ns = u64::try_from(t.as_nanos()).unwrap_or(u64::MAX);
+        let mut cost = 0u64;
+        let mut instrs = 0u64;
+        let mut fault = None;
+        let mut raised = Vec::new();
+        for l in [&mut p.user, &mut p.helper].into_iter().flatten() {
+            let mut m = K2Machine { sim: self, now: t, exec_prev: &mut l.exec_prev, raised: Vec::new() };
+            let o = l.cpu.scan(&l.prog, &mut m, now_ns, u64::MAX, None);
+            raised.append(&mut m.raised);
+            cost += o.cost_ns;
+            instrs += o.instructions;
+            if let Exit::Fault(f) = o.exit {
+                fault = Some(f);
+                break;
+            }
+            if let Exit::Paused(_) = o.exit {
+                // Not reached without breakpoints; finish the scan next time.
+            }
+        }
+        if !raised.is_empty() {
+            self.events.extend(raised);
+        }
+        let scan_ns = (p.costs.overhead_ns + cost).max(p.costs.min_scan_ns).max(1);
+        let s = &mut p.stats;
+        s.scans += 1;
+        s.last_ns = scan_ns;
+        s.min_ns = if s.scans == 1 { scan_ns } else { s.min_ns.min(scan_ns) };
+        s.max_ns = s.max_ns.max(scan_ns);
+        s.last_instructions = instrs;
+        s.total_instructions += instrs;
+        self.mem.set_sm_word(22, ms16(s.last_ns));
+        self.mem.set_sm_word(24, ms16(s.min_ns));
+        self.mem.set_sm_word(26, ms16(s.max_ns));
+        p.run_scans += 1;
+        p.next_scan = t + Duration::from_nanos(scan_ns);
+        if let Some(f) = fault {
+            p.faults.push(f);
+            p.mode = Mode::Stop;
+            self.plc = Some(p);
+            self.apply_stop_outputs();
+            return;
+        }
+        self.plc = Some(p);
+    }
+}
