@@ -58,6 +58,9 @@ pub struct ServeArgs {
     /// Run the PLC-side helper program (lib/k2_agent.il) with its mailbox at this V address.
     #[arg(long, value_name = "VB_ADDR", num_args = 0..=1, default_missing_value = "VB3400")]
     pub agent: Option<String>,
+    /// Run this IL program in the served K2 (docs/il.md); load errors stop the server.
+    #[arg(long, value_name = "FILE.il")]
+    pub program: Option<PathBuf>,
     /// Serve simulated Kinco servo drives on a new pseudo-terminal; LINK becomes a symlink to it.
     #[arg(long = "servo-pty", value_name = "LINK")]
     pub servo_pty: Option<PathBuf>,
@@ -137,6 +140,11 @@ async fn serve_k2(
         let b = crate::k2::agent::protocol::parse_base(base).map_err(Error::usage)?;
         sim.enable_agent(b).map_err(Error::usage)?;
         ready.insert("agent".into(), json!(format!("VB{b}")));
+    }
+    if let Some(p) = &args.program {
+        let text = std::fs::read_to_string(p).map_err(|e| Error::io(format!("cannot read {}: {e}", p.display())))?;
+        sim.load_program(&text, &p.display().to_string())?;
+        ready.insert("program".into(), json!(p.display().to_string()));
     }
     let service = K2Service::new(Arc::new(Mutex::new(sim)), args.unit);
     if let Some(a) = &args.tcp {

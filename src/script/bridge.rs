@@ -122,6 +122,11 @@ pub const BRIDGE: &[Bridge] = &[
     row("sim_quad", "k2", "sim quad {} {}"),
     row("sim_off", "k2", "sim input {} off"),
     row("sim_inputs", "k2", "sim inputs"),
+    // The simulated K2's CPU and its IL program (k2::sim::program).
+    row("program_load", "k2", "sim program load {}"),
+    row("program", "k2", "sim program"),
+    row("cpu", "k2", "sim cpu {}"),
+    row("scan", "k2", "sim scan [{}]"),
     // Kinco servo drive (kinco-servo.md).
     row("status", "servo", "servo status"),
     row("enable", "servo", "servo enable"),

@@ -560,8 +560,13 @@ impl Device for K2Sim {
                 self.backup.set_last(n)
             }
             "retain" => self.set_retain(value),
+            "program" => {
+                let text = std::fs::read_to_string(value)
+                    .map_err(|e| Error::io(format!("cannot read the program {value}: {e}")))?;
+                self.load_program(&text, value).map(|_| ())
+            }
             _ => Err(Error::usage(format!("K2 simulators have no option `{key}`"))
-                .hint("options: state=FILE, backup_last=3902…4095, retain=RANGES")),
+                .hint("options: state=FILE, backup_last=3902…4095, retain=RANGES, program=FILE.il")),
         }
     }
 }

@@ -16,6 +16,7 @@ mod rtc;
 mod servo;
 mod sim;
 mod siminputs;
+mod simprogram;
 mod trend;
 mod watch;
 

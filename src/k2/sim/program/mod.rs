@@ -25,6 +25,9 @@
 
 pub mod family;
 
+#[cfg(test)]
+mod tests;
+
 use super::K2Sim;
 use crate::core::{Error, Result};
 use crate::engine::exec::Exit;
@@ -97,6 +100,8 @@ pub struct Plc {
     /// Start time of the next scan.
     pub next_scan: Duration,
     pub costs: CostTable,
+    /// When the CPU entered PAUSE (timers resume from where they froze).
+    pub paused_at: Option<Duration>,
     /// Q bytes in STOP (K2 §2.2.1: values from the hardware configuration; all off here).
     pub stop_outputs: Vec<u8>,
 }
@@ -114,6 +119,7 @@ impl Plc {
             next_scan: now,
             costs: family::default_costs(),
             stop_outputs: vec![0; q_bytes],
+            paused_at: None,
         }
     }
 
@@ -200,13 +206,23 @@ impl K2Sim {
         let p = self.plc_mut();
         let old = p.mode;
         let new = if want == Mode::Run && !p.switch_run { Mode::Stop } else { want };
-        if new == old {
+        let refused = want == Mode::Run && new == Mode::Stop;
+        if new == old && !refused {
             return Ok(new);
         }
         match new {
-            Mode::Stop => {}
-            Mode::Pause => {}
+            Mode::Stop => p.paused_at = None,
+            Mode::Pause => p.paused_at = Some(now),
             Mode::Run => {
+                if let Some(at) = p.paused_at.take() {
+                    // PAUSE froze the program: running timers do not count the pause.
+                    let dt = u64::try_from((now - at).as_nanos()).unwrap_or(0);
+                    for l in [&mut p.user, &mut p.helper].into_iter().flatten() {
+                        for t in l.cpu.timers.iter_mut().filter(|t| t.running) {
+                            t.mark_ns += dt;
+                        }
+                    }
+                }
                 if old == Mode::Stop {
                     // STOP → RUN: a fresh start (first-scan bit, timers and edges reset);
                     // memory keeps its values.
@@ -225,7 +241,7 @@ impl K2Sim {
         if new == Mode::Run {
             self.advance_to(now);
         }
-        if want == Mode::Run && new == Mode::Stop {
+        if refused {
             return Err(Error::state("the RUN/STOP switch is at STOP: the CPU stays in STOP (manual §2.2.1)")
                 .hint("sim switch run"));
         }

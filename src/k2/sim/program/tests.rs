@@ -1,0 +1,196 @@
+//! The simulated K2 running programs: scan cycle, system bits, scan-time registers,
+//! modes, watchdog, the manual's IL snippets, and K2 instructions from a program.
+
+use super::Mode;
+use crate::core::{Clock, Device, OperandSpace, Value};
+use crate::engine::FaultKind;
+use crate::k2::sim::{self, K2Sim};
+use std::time::Duration;
+
+fn sim() -> (K2Sim, Clock) {
+    let clock = Clock::stepped();
+    (sim::open("K205-16DT", clock.clone()).unwrap(), clock)
+}
+
+fn get(s: &mut K2Sim, text: &str) -> Value {
+    let op = s.space().parse(text).unwrap()[0];
+    s.read(&[op]).unwrap()[0]
+}
+
+fn set(s: &mut K2Sim, text: &str, v: Value) {
+    let op = s.space().parse(text).unwrap()[0];
+    s.write(&[(op, v)]).unwrap();
+}
+
+fn on(s: &mut K2Sim, t: &str) -> bool {
+    get(s, t) == Value::Bool(true)
+}
+
+#[test]
+fn sm0_1_is_on_in_the_first_scan_only_and_scans_follow_the_cost_table() {
+    let (mut s, clock) = sim();
+    // Q0.0 := SM0.1 latched; count scans in VW0.
+    s.load_program("LD %SM0.1\nS %Q0.0, 1\nLD %SM0.0\nINC %VW0\nLD %SM0.6\nST %Q0.1", "t.il").unwrap();
+    assert!(on(&mut s, "Q0.0"), "SM0.1 was on in the first scan");
+    assert_eq!(get(&mut s, "VW0"), Value::Int(1));
+    clock.step(Duration::from_millis(10));
+    // 10 ms of 1 ms scans (the program costs far less than the 1 ms minimum) → 11 scans.
+    assert_eq!(get(&mut s, "VW0"), Value::Int(11));
+    assert_eq!(get(&mut s, "SMW22"), Value::Int(1), "last scan time 1 ms (SMW22)");
+    let p = s.plc().unwrap();
+    assert_eq!(p.stats.scans, 11);
+    assert_eq!(p.stats.last_instructions, 7, "six and the implicit end");
+}
+
+#[test]
+fn a_long_program_has_a_long_scan() {
+    let (mut s, clock) = sim();
+    // 2000 word moves at 2 µs each + 0.3 ms overhead = 4.3 ms scans.
+    let text = "LD %SM0.0\n".to_string() + &"MOVE %VW2, %VW4\n".repeat(2000) + "INC %VW0\n";
+    s.load_program(&text, "long.il").unwrap();
+    clock.step(Duration::from_millis(43));
+    assert_eq!(get(&mut s, "VW0"), Value::Int(10), "scans at 0, 4.3042, … 38.74 ms");
+    let st = s.plc().unwrap().stats;
+    assert_eq!(st.last_ns, 300_000 + 200 + 2000 * 2_000 + 3_000 + 1_000, "overhead + LD + moves + INC + end");
+    assert_eq!(get(&mut s, "SMW26"), Value::Int(4), "max scan time in ms (SMW26)");
+}
+
+#[test]
+fn a_ton_times_in_virtual_time() {
+    // T37 is a 100 ms timer (T20–T255), T2 a 1 ms timer (T0–T3).
+    let (mut s, clock) = sim();
+    s.load_program("LD %I0.0\nTON T37, 30\nST %Q0.0\nLD %I0.0\nTON T2, 5\nST %Q0.1", "ton.il").unwrap();
+    set(&mut s, "I0.0", Value::Bool(true));
+    // The next scan (1 ms later) sees the input and starts the timers.
+    clock.step(Duration::from_millis(5));
+    assert!(!on(&mut s, "Q0.1"));
+    clock.step(Duration::from_millis(1));
+    assert!(on(&mut s, "Q0.1"), "T2: 5 × 1 ms");
+    clock.step(Duration::from_millis(2994));
+    assert!(!on(&mut s, "Q0.0"));
+    assert_eq!(get(&mut s, "T37"), Value::Int(29), "T37's value readable as T37");
+    clock.step(Duration::from_millis(2));
+    assert!(on(&mut s, "Q0.0"), "T37: 30 × 100 ms");
+    assert_eq!(s.mem.tq[37], 1, "the timer bit (T37 in a bit context)");
+}
+
+#[test]
+fn the_manuals_snippet_moves_a_new_current_value() {
+    // K2 §3.4.3.1 method 2: LD %M0.4 / R_TRIG / MOVE DI#100, %SMD208 / ST %SM201.4 — on
+    // DONE's rising edge SMD208 = 100 and SM201.4 = 1 load the current value SMD212 = 100.
+    let (mut s, clock) = sim();
+    s.load_program("(* Network 1 *)\nLD %M0.4\nR_TRIG\nMOVE DI # 100, %SMD208\nST %SM201.4", "manual.il").unwrap();
+    assert_eq!(get(&mut s, "SMD212"), Value::Int(0));
+    set(&mut s, "M0.4", Value::Bool(true));
+    clock.step(Duration::from_millis(1));
+    assert_eq!(get(&mut s, "SMD208"), Value::Int(100));
+    assert_eq!(get(&mut s, "SMD212"), Value::Int(100), "SM201.4 loaded SMD208 into SMD212");
+    clock.step(Duration::from_millis(1));
+    assert!(!on(&mut s, "SM201.4"), "R_TRIG: one scan");
+}
+
+#[test]
+fn a_program_starts_a_pulse_train_with_pls() {
+    // K2 §3.4.2: SMB67 = 16#85, SMW68 = cycle, SMD72 = count, then PLS 0 on a rising edge.
+    let (mut s, clock) = sim();
+    s.load_program(
+        "LD %SM0.1\nMOVE B#16#85, %SMB67\nMOVE 500, %SMW68\nMOVE DI#1000, %SMD72\nLD %I0.0\nPLS 0\nST %M0.0",
+        "pto.il",
+    )
+    .unwrap();
+    set(&mut s, "I0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(1));
+    assert!(on(&mut s, "M0.0"), "ENO of PLS");
+    assert!(!on(&mut s, "SM66.7"), "PTO0 busy");
+    clock.step(Duration::from_millis(501));
+    assert!(on(&mut s, "SM66.7"), "idle after 1000 × 500 µs");
+    assert_eq!(get(&mut s, "SMD212"), Value::Int(1000));
+}
+
+#[test]
+fn an_endless_loop_trips_the_watchdog_and_stops_the_cpu() {
+    // K80S: a scan past the watchdog stops the CPU and turns outputs off; a fault is recorded.
+    let (mut s, clock) = sim();
+    s.load_program("LD %SM0.0\nS %Q0.0, 2\nLD %I0.0\nJMPC LOOP\nJMP END\nLOOP: LD %SM0.0\nJMP LOOP\nEND:", "wd.il").unwrap();
+    clock.step(Duration::from_millis(5));
+    assert!(on(&mut s, "Q0.0") && on(&mut s, "Q0.1"));
+    set(&mut s, "I0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(2));
+    s.advance();
+    let p = s.plc().unwrap();
+    assert_eq!(p.mode, Mode::Stop);
+    let f = &p.faults[0];
+    assert_eq!(f.kind, FaultKind::Watchdog);
+    assert!(f.line == 6 || f.line == 7, "where the loop was: {f}");
+    assert!(!on(&mut s, "Q0.0") && !on(&mut s, "Q0.1"), "outputs at their STOP values");
+    let scans = s.plc().unwrap().stats.scans;
+    clock.step(Duration::from_millis(100));
+    s.advance();
+    assert_eq!(s.plc().unwrap().stats.scans, scans, "no scans in STOP");
+    // Modbus is still served in STOP: memory reads and writes work.
+    set(&mut s, "VW0", Value::Int(5));
+    assert_eq!(get(&mut s, "VW0"), Value::Int(5));
+    // STOP → RUN restarts (first scan again) — the input still loops, so clear it first.
+    set(&mut s, "I0.0", Value::Bool(false));
+    s.set_mode(Mode::Run).unwrap();
+    assert!(on(&mut s, "Q0.0"));
+}
+
+#[test]
+fn pause_freezes_and_run_resumes_without_reinitialising() {
+    let (mut s, clock) = sim();
+    s.load_program("LD %SM0.1\nMOVE 100, %VW0\nLD %SM0.0\nINC %VW2\nLD %I0.0\nTON T37, 10\nST %Q0.0", "p.il").unwrap();
+    set(&mut s, "I0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(500));
+    let t = get(&mut s, "T37");
+    s.set_mode(Mode::Pause).unwrap();
+    set(&mut s, "VW0", Value::Int(7));
+    clock.step(Duration::from_millis(700));
+    assert_eq!(get(&mut s, "T37"), t, "frozen");
+    let n = get(&mut s, "VW2");
+    s.set_mode(Mode::Run).unwrap();
+    clock.step(Duration::from_millis(3));
+    assert_eq!(get(&mut s, "VW0"), Value::Int(7), "no first scan again: SM0.1 stayed off");
+    assert!(get(&mut s, "VW2").as_i64() > n.as_i64(), "scanning again");
+    assert_eq!((t, get(&mut s, "T37")), (Value::Int(4), Value::Int(5)), "499 ms before the pause + 3 ms after");
+    assert!(!on(&mut s, "Q0.0"));
+    clock.step(Duration::from_millis(500));
+    assert!(on(&mut s, "Q0.0"), "1 s of RUN in all");
+}
+
+#[test]
+fn the_switch_at_stop_wins_over_a_run_command() {
+    // K2 §2.2.1 table: switch STOP + command RUN = STOP.
+    let (mut s, _) = sim();
+    s.load_program("LD %SM0.0\nS %Q0.0, 1", "s.il").unwrap();
+    assert!(on(&mut s, "Q0.0"));
+    s.set_switch(false).unwrap();
+    assert_eq!(s.plc().unwrap().mode, Mode::Stop);
+    assert!(!on(&mut s, "Q0.0"));
+    assert!(s.set_mode(Mode::Run).is_err());
+    assert_eq!(s.plc().unwrap().mode, Mode::Stop);
+    s.set_switch(true).unwrap();
+    s.set_mode(Mode::Run).unwrap();
+    assert!(on(&mut s, "Q0.0"));
+}
+
+#[test]
+fn load_errors_name_the_file_line_and_a_suggestion() {
+    let (mut s, _) = sim();
+    let e = s.load_program("LD %SM0.0\nMOVE 1, %VX0", "bad.il").unwrap_err();
+    assert!(e.message.starts_with("bad.il:2:9:"), "{}", e.message);
+    let e = s.load_program("LD %SM0.0\nPLSS 0", "bad.il").unwrap_err();
+    assert!(e.hint.as_deref().unwrap_or("").contains("PLS"), "{:?}", e.hint);
+    let e = s.load_program("LD %I7.0", "bad.il").unwrap_err();
+    assert!(e.message.contains("I7.0") && e.message.contains("K205-16DT"), "{}", e.message);
+    assert!(s.plc().is_none(), "nothing was loaded");
+}
+
+#[test]
+fn a_bad_indirect_address_stops_the_cpu() {
+    let (mut s, _) = sim();
+    s.load_program("LD %SM0.0\nMOVE 16#7F000000, %VD0\nMOVE 1, *%VD0", "ind.il").unwrap();
+    let p = s.plc().unwrap();
+    assert_eq!(p.mode, Mode::Stop);
+    assert_eq!(p.faults[0].kind, FaultKind::BadAddress);
+}
