@@ -65,6 +65,8 @@ pub struct K2Sim {
     /// kept so a step allocates nothing.
     raised: Vec<(Duration, EventKind)>,
     run_ends: Vec<usize>,
+    /// Numbered events waiting for their interrupt routines (program::irq).
+    irq_queue: Vec<(Duration, u32)>,
 }
 
 impl K2Sim {
@@ -89,6 +91,7 @@ impl K2Sim {
             plc: None,
             raised: Vec::new(),
             run_ends: Vec::new(),
+            irq_queue: Vec::new(),
         };
         sim.refresh_system_bits(start);
         sim
@@ -119,8 +122,10 @@ impl K2Sim {
     pub fn advance_to(&mut self, now: Duration) {
         if self.plc.is_some() {
             self.run_scans(now);
+            self.advance_with_interrupts(now);
+        } else {
+            self.advance_hw(now);
         }
-        self.advance_hw(now);
     }
 
     /// The hardware part of [`Self::advance_to`]: no program runs.
@@ -147,6 +152,9 @@ impl K2Sim {
         }
         if !raised.is_empty() {
             self.events.extend_runs(&raised, &ends);
+            if self.plc.is_some() {
+                self.queue_hw_events(&raised);
+            }
         }
         (self.raised, self.run_ends) = (raised, ends);
         self.last = now;
@@ -540,6 +548,9 @@ impl Device for K2Sim {
         }
         if !raised.is_empty() {
             self.events.extend(raised);
+        }
+        if self.plc.is_some() && self.mem.i != old_i {
+            self.input_edge_interrupts(&old_i);
         }
         Ok(())
     }

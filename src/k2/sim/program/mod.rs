@@ -24,6 +24,7 @@
 //! address, call depth) stops the CPU with a fault record.
 
 pub mod family;
+pub mod irq;
 
 #[cfg(test)]
 mod tests;
@@ -84,6 +85,8 @@ pub struct ScanStats {
     /// Instructions executed in the last scan.
     pub last_instructions: u64,
     pub total_instructions: u64,
+    /// Interrupt routines run.
+    pub interrupts: u64,
 }
 
 /// The CPU of a simulated K2.
@@ -102,6 +105,10 @@ pub struct Plc {
     pub costs: CostTable,
     /// When the CPU entered PAUSE (timers resume from where they froze).
     pub paused_at: Option<Duration>,
+    /// Next firing of timed interrupts 0 and 1 (irq).
+    pub timed_next: [Option<Duration>; 2],
+    /// Interrupt-routine time to add to the next scan.
+    pub irq_ns: u64,
     /// Q bytes in STOP (K2 §2.2.1: values from the hardware configuration; all off here).
     pub stop_outputs: Vec<u8>,
 }
@@ -120,6 +127,8 @@ impl Plc {
             costs: family::default_costs(),
             stop_outputs: vec![0; q_bytes],
             paused_at: None,
+            timed_next: [None; 2],
+            irq_ns: 0,
         }
     }
 
@@ -258,7 +267,7 @@ impl K2Sim {
         }
     }
 
-    fn apply_stop_outputs(&mut self) {
+    pub(super) fn apply_stop_outputs(&mut self) {
         let Some(p) = &self.plc else { return };
         let n = self.mem.q.len().min(p.stop_outputs.len());
         self.mem.q[..n].copy_from_slice(&p.stop_outputs[..n]);
@@ -277,7 +286,7 @@ impl K2Sim {
     pub(super) fn run_scans(&mut self, now: Duration) {
         while self.scan_due(now) {
             let t = self.plc.as_ref().map_or(now, |p| p.next_scan);
-            self.advance_hw(t);
+            self.advance_with_interrupts(t);
             self.one_scan(t);
         }
     }
@@ -291,7 +300,7 @@ impl K2Sim {
                 return Err(Error::state(format!("the CPU is in {}: no scan runs", p.mode.name())).hint("sim run"));
             }
             let t = p.next_scan.max(self.last);
-            self.advance_hw(t);
+            self.advance_with_interrupts(t);
             self.one_scan(t);
         }
         Ok(self.plc.as_ref().map(|p| p.stats).unwrap_or_default())
@@ -325,7 +334,7 @@ impl K2Sim {
         if !raised.is_empty() {
             self.events.extend(raised);
         }
-        let scan_ns = (p.costs.overhead_ns + cost).max(p.costs.min_scan_ns).max(1);
+        let scan_ns = (p.costs.overhead_ns + cost + std::mem::take(&mut p.irq_ns)).max(p.costs.min_scan_ns).max(1);
         let s = &mut p.stats;
         s.scans += 1;
         s.last_ns = scan_ns;

@@ -194,3 +194,66 @@ fn a_bad_indirect_address_stops_the_cpu() {
     assert_eq!(p.mode, Mode::Stop);
     assert_eq!(p.faults[0].kind, FaultKind::BadAddress);
 }
+
+// ---- interrupts (K2 §2.2.7 edge inputs, §2.1.2 timed interrupts, §3.4.2.3 event 28) ----
+
+#[test]
+fn an_edge_on_i0_0_runs_its_routine_at_the_edge_before_the_next_scan() {
+    let (mut s, clock) = sim();
+    s.load_program(
+        "PROGRAM MAIN\nLD %SM0.1\nATCH ON_EDGE, 0\nENI\nLD %SM0.0\nMOVE %VW10, %VW12\nEND_PROGRAM\n\
+         INTERRUPT ON_EDGE\nLD %SM0.0\nINC %VW10\nMOVE %SMW22, %VW14\nEND_INTERRUPT",
+        "edge.il",
+    )
+    .unwrap();
+    clock.step(Duration::from_micros(2500));
+    s.advance();
+    // Between the scans at 2 ms and 3 ms: the edge at 2.5 ms.
+    set(&mut s, "I0.0", Value::Bool(true));
+    assert_eq!(s.mem.v[11], 1, "the routine ran at the edge's time, at once");
+    assert_eq!(s.mem.v[13], 0, "the next scan's program has not run yet");
+    assert_eq!(s.plc().unwrap().stats.interrupts, 1);
+    clock.step(Duration::from_micros(500));
+    assert_eq!(get(&mut s, "VW12"), Value::Int(1), "the 3 ms scan saw the routine's result");
+    set(&mut s, "I0.0", Value::Bool(false));
+    assert_eq!(s.plc().unwrap().stats.interrupts, 1, "falling edge (event 1) not attached");
+    set(&mut s, "I0.1", Value::Bool(true));
+    assert_eq!(s.plc().unwrap().stats.interrupts, 1, "I0.1 (event 2) not attached");
+}
+
+#[test]
+fn a_timed_interrupt_fires_at_its_0_1_ms_interval() {
+    // SMB34 = 5 → every 0.5 ms: 2000 times in a simulated second.
+    let (mut s, clock) = sim();
+    s.load_program(
+        "PROGRAM MAIN\nLD %SM0.1\nMOVE B#5, %SMB34\nATCH TICK, 10\nENI\nEND_PROGRAM\n\
+         INTERRUPT TICK\nLD %SM0.0\nINC %VW20\nEND_INTERRUPT",
+        "tick.il",
+    )
+    .unwrap();
+    clock.step(Duration::from_secs(1));
+    assert_eq!(get(&mut s, "VW20"), Value::Int(2000));
+    s.load_program(
+        "PROGRAM MAIN\nLD %SM0.1\nMOVE B#3, %SMB34\nATCH TICK, 10\nEND_PROGRAM\nINTERRUPT TICK\nLD %SM0.0\nINC %VW22",
+        "off.il",
+    )
+    .unwrap();
+    clock.step(Duration::from_millis(10));
+    assert_eq!(get(&mut s, "VW22"), Value::Int(0), "attached but never enabled with ENI");
+}
+
+#[test]
+fn pto_complete_event_28_runs_its_routine() {
+    let (mut s, clock) = sim();
+    s.load_program(
+        "PROGRAM MAIN\nLD %SM0.1\nATCH PTO_DONE, 28\nENI\nMOVE B#16#85, %SMB67\nMOVE 500, %SMW68\nMOVE DI#100, %SMD72\nPLS 0\nEND_PROGRAM\n\
+         INTERRUPT PTO_DONE\nLD %SM0.0\nS %Q0.2, 1\nMOVE %SMD212, %VD30\nEND_INTERRUPT",
+        "pto.il",
+    )
+    .unwrap();
+    clock.step(Duration::from_millis(49));
+    assert!(!on(&mut s, "Q0.2"));
+    clock.step(Duration::from_millis(2));
+    assert!(on(&mut s, "Q0.2"), "100 × 500 µs = 50 ms");
+    assert_eq!(get(&mut s, "VD30"), Value::Int(100), "the routine saw all pulses counted");
+}
