@@ -383,3 +383,24 @@ pub fn compare(m: &str) -> Option<Def> {
 pub fn lookup(m: &str) -> Option<Def> {
     CORE.iter().find(|d| d.name == m).copied().or_else(|| compare(m))
 }
+
+/// The instruction table as Markdown rows (`docs/il.md` is checked against it).
+pub fn markdown(specials: &[super::SpecialDef], family: &str) -> String {
+    let mut s = String::from("| instruction | operands | does | source |\n|---|---|---|---|\n");
+    for d in CORE {
+        let ops = if d.operands.0 == d.operands.1 {
+            d.operands.0.to_string()
+        } else {
+            format!("{}–{}", d.operands.0, d.operands.1)
+        };
+        let name = d.name.replace('|', "\\|");
+        s.push_str(&format!("| `{name}` | {ops} | {} | {} |\n", d.doc, d.source));
+    }
+    s.push_str("| `LDB=` … `LDR>=`, `AB=` … `OR<>` | 2 | compare: `LD`/`A`/`O` × `B`(BYTE) `W`(INT) `D`(DINT) `R`(REAL) × `=` `<>` `<` `>` `<=` `>=` | S7-200 (KincoBuilder IL) |\n");
+    for sp in specials {
+        let n = sp.args.len();
+        let ops = if sp.optional > 0 { format!("{}–{n}", n - sp.optional as usize) } else { n.to_string() };
+        s.push_str(&format!("| `{}` ({family}) | {ops} | {} | {} |\n", sp.name, sp.doc, sp.source));
+    }
+    s
+}

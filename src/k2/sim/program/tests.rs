@@ -257,3 +257,23 @@ fn pto_complete_event_28_runs_its_routine() {
     assert!(on(&mut s, "Q0.2"), "100 × 500 µs = 50 ms");
     assert_eq!(get(&mut s, "VD30"), Value::Int(100), "the routine saw all pulses counted");
 }
+
+#[test]
+fn the_instruction_table_in_docs_is_current() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/il.md");
+    let table = crate::engine::isa::markdown(super::family::SPECIALS, "K2");
+    let doc = std::fs::read_to_string(path).unwrap_or_default();
+    let (begin, end) = ("<!-- instruction table: generated -->\n", "<!-- end of table -->");
+    let (a, b) = (doc.find(begin).map(|i| i + begin.len()), doc.find(end));
+    if std::env::var_os("PLCSH_BLESS").is_some() {
+        if let (Some(a), Some(b)) = (a, b) {
+            std::fs::write(path, format!("{}{table}{}", &doc[..a], &doc[b..])).unwrap();
+            return;
+        }
+    }
+    let have = match (a, b) {
+        (Some(a), Some(b)) => &doc[a..b],
+        _ => "",
+    };
+    assert!(have == table, "docs/il.md's instruction table is stale: PLCSH_BLESS=1 cargo test the_instruction_table");
+}
