@@ -46,12 +46,12 @@ fn raw_speed() {
     let mut s = sim::open("K205-16DT", clock).unwrap();
     let prog = s.compile(&user_program(), "bench.il").unwrap();
     let mut cpu = Cpu::new(&prog);
-    let mut exec_prev = Vec::new();
+    let mut inst = Vec::new();
     let scans = 200_000u64;
     let t = Instant::now();
     let mut n = 0u64;
     for k in 0..scans {
-        let mut m = K2Machine { sim: &mut s, now: Duration::ZERO, exec_prev: &mut exec_prev, raised: Vec::new() };
+        let mut m = K2Machine { sim: &mut s, now: Duration::ZERO, inst: &mut inst, raised: Vec::new() };
         n += cpu.scan(&prog, &mut m, k * 1_000_000, u64::MAX, None).instructions;
     }
     let wall = t.elapsed();

@@ -45,7 +45,13 @@ pub mod id {
     pub const SET_RTC: u16 = 6;
 }
 
+use super::motion::id as motion;
 use ArgKind as A;
+
+const W: ArgKind = A::Value(Some(DataType::Word));
+const D: ArgKind = A::Value(Some(DataType::DWord));
+const DI: ArgKind = A::Value(Some(DataType::DInt));
+const B: ArgKind = A::Out(Some(DataType::Byte));
 
 /// The K2's own instructions (K2 manual §3.3, §3.4; PSTOP parameters from the KincoBuilder
 /// help as quoted in `../shared/spec/kinco-public-notes.md`).
@@ -85,6 +91,51 @@ pub static SPECIALS: &[SpecialDef] = &[
         edge: false,
         doc: "PSTOP AXIS[, EXEC, DONE, ERRID]: emergency stop on the rising edge of EXEC (or of EN without EXEC); latches SM201.7",
         source: "K2 §3.4.3; KincoBuilder help (kinco-public-notes)",
+    },
+    SpecialDef {
+        name: "PREL",
+        id: motion::PREL,
+        args: &[A::Const, A::Bit, W, D, W, DI, A::Bit, A::Bit, B],
+        optional: 0,
+        edge: false,
+        doc: "PREL AXIS, EXEC, MINF, MAXF, TIME, DIST, DONE, ERR, ERRID: relative move with a MINF→MAXF ramp over TIME ms, on EXEC's rising edge",
+        source: "K2 §3.4.3; KincoBuilder help (kinco-public-notes)",
+    },
+    SpecialDef {
+        name: "PABS",
+        id: motion::PABS,
+        args: &[A::Const, A::Bit, W, D, W, DI, A::Bit, A::Bit, B],
+        optional: 0,
+        edge: false,
+        doc: "PABS AXIS, EXEC, MINF, MAXF, TIME, POS, DONE, ERR, ERRID: absolute move to POS (SMD212 …)",
+        source: "K2 §3.4.3; KincoBuilder help (kinco-public-notes)",
+    },
+    SpecialDef {
+        name: "PHOME",
+        id: motion::PHOME,
+        args: &[A::Const, A::Bit, A::Bit, A::Bit, W, W, W, D, W, A::Bit, A::Bit, B],
+        optional: 0,
+        edge: false,
+        doc: "PHOME AXIS, EXEC, HOME, NHOME, MODE, DIRC, MINF, MAXF, TIME, DONE, ERR, ERRID: run in DIRC until HOME (MODE 0: creep at MINF after NHOME)",
+        source: "K2 §3.4.3.1; KincoBuilder help (kinco-public-notes)",
+    },
+    SpecialDef {
+        name: "PJOG",
+        id: motion::PJOG,
+        args: &[A::Const, A::Bit, D, W, A::Bit, A::Bit, B],
+        optional: 0,
+        edge: false,
+        doc: "PJOG AXIS, EXEC, MAXF, DIRC, DONE, ERR, ERRID: run at MAXF (re-read every scan) while EXEC is on",
+        source: "K2 §3.4.3.2; KincoBuilder help (kinco-public-notes)",
+    },
+    SpecialDef {
+        name: "PFLO_F",
+        id: motion::PFLO_F,
+        args: &[A::Const, A::Bit, D, W, W, DI, A::Bit, A::Bit, B],
+        optional: 0,
+        edge: false,
+        doc: "PFLO_F AXIS, EXEC, F, NUM, DENOM, COUNT, DONE, ERR, ERRID: follow F × NUM / DENOM Hz for COUNT pulses (≥ 30 Hz)",
+        source: "K2 §3.4.3 (parameters named there; order ours)",
     },
     SpecialDef {
         name: "READ_RTC",
@@ -220,8 +271,8 @@ impl Family for K2Family {
 pub struct K2Machine<'a> {
     pub sim: &'a mut K2Sim,
     pub now: Duration,
-    /// Per-instance EXEC memory of PSTOP (by instruction instance).
-    pub exec_prev: &'a mut Vec<bool>,
+    /// Per-occurrence state of the K2 instructions (EXEC edges, running moves).
+    pub inst: &'a mut Vec<super::motion::Inst>,
     pub raised: Vec<(Duration, crate::k2::instr::EventKind)>,
 }
 
@@ -392,11 +443,11 @@ impl Machine for K2Machine<'_> {
                 // EXEC's rising edge (or EN's, when EXEC is left out).
                 let exec = if args.len() > 1 { c(1)? != 0 } else { true };
                 let i = inst as usize;
-                if self.exec_prev.len() <= i {
-                    self.exec_prev.resize(i + 1, false);
+                if self.inst.len() <= i {
+                    self.inst.resize(i + 1, Default::default());
                 }
-                let rising = exec && !self.exec_prev[i];
-                self.exec_prev[i] = exec;
+                let rising = exec && !self.inst[i].exec_prev;
+                self.inst[i].exec_prev = exec;
                 let sim = &mut *self.sim;
                 let ok = match sim.pto_index(ch) {
                     Ok(i) => {
@@ -437,6 +488,7 @@ impl Machine for K2Machine<'_> {
                     _ => false,
                 }
             }
+            super::motion::id::PREL..=super::motion::id::PFLO_F => return self.position(sid, inst, args, &vals),
             _ => return Err(Fault::new(FaultKind::Instruction, format!("unknown family instruction {sid}"))),
         })
     }

@@ -50,7 +50,7 @@ impl K2Sim {
             if let Some(l) = p.user.as_mut() {
                 if let Some(pou) = l.cpu.handler(event) {
                     let at_ns = u64::try_from(at.as_nanos()).unwrap_or(u64::MAX);
-                    let mut m = K2Machine { sim: self, now: at, exec_prev: &mut l.exec_prev, raised: Vec::new() };
+                    let mut m = K2Machine { sim: self, now: at, inst: &mut l.inst, raised: Vec::new() };
                     let o = l.cpu.interrupt(&l.prog, &mut m, pou, at_ns);
                     let raised = std::mem::take(&mut m.raised);
                     p.irq_ns += o.cost_ns;

@@ -25,6 +25,7 @@
 
 pub mod family;
 pub mod irq;
+pub mod motion;
 
 #[cfg(test)]
 mod tests;
@@ -62,16 +63,17 @@ pub struct Loaded {
     pub cpu: Cpu,
     /// Where it came from (file name, or "helper").
     pub source: String,
-    exec_prev: Vec<bool>,
+    /// Per-occurrence state of the K2 instructions.
+    pub inst: Vec<motion::Inst>,
 }
 
 impl Loaded {
     fn new(prog: Program, source: String) -> Loaded {
-        Loaded { cpu: Cpu::new(&prog), prog, source, exec_prev: Vec::new() }
+        Loaded { cpu: Cpu::new(&prog), prog, source, inst: Vec::new() }
     }
     fn reset(&mut self) {
         self.cpu = Cpu::new(&self.prog);
-        self.exec_prev.clear();
+        self.inst.clear();
     }
 }
 
@@ -318,7 +320,7 @@ impl K2Sim {
         let mut fault = None;
         let mut raised = Vec::new();
         for l in [&mut p.user, &mut p.helper].into_iter().flatten() {
-            let mut m = K2Machine { sim: self, now: t, exec_prev: &mut l.exec_prev, raised: Vec::new() };
+            let mut m = K2Machine { sim: self, now: t, inst: &mut l.inst, raised: Vec::new() };
             let o = l.cpu.scan(&l.prog, &mut m, now_ns, u64::MAX, None);
             raised.append(&mut m.raised);
             cost += o.cost_ns;

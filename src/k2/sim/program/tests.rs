@@ -80,11 +80,11 @@ fn the_manuals_snippet_moves_a_new_current_value() {
     // DONE's rising edge SMD208 = 100 and SM201.4 = 1 load the current value SMD212 = 100.
     let (mut s, clock) = sim();
     s.load_program("(* Network 1 *)\nLD %M0.4\nR_TRIG\nMOVE DI # 100, %SMD208\nST %SM201.4", "manual.il").unwrap();
-    assert_eq!(get(&mut s, "SMD212"), Value::Int(0));
+    assert_eq!(get(&mut s, "SMD212/DINT"), Value::Int(0));
     set(&mut s, "M0.4", Value::Bool(true));
     clock.step(Duration::from_millis(1));
     assert_eq!(get(&mut s, "SMD208"), Value::Int(100));
-    assert_eq!(get(&mut s, "SMD212"), Value::Int(100), "SM201.4 loaded SMD208 into SMD212");
+    assert_eq!(get(&mut s, "SMD212/DINT"), Value::Int(100), "SM201.4 loaded SMD208 into SMD212");
     clock.step(Duration::from_millis(1));
     assert!(!on(&mut s, "SM201.4"), "R_TRIG: one scan");
 }
@@ -104,7 +104,7 @@ fn a_program_starts_a_pulse_train_with_pls() {
     assert!(!on(&mut s, "SM66.7"), "PTO0 busy");
     clock.step(Duration::from_millis(501));
     assert!(on(&mut s, "SM66.7"), "idle after 1000 × 500 µs");
-    assert_eq!(get(&mut s, "SMD212"), Value::Int(1000));
+    assert_eq!(get(&mut s, "SMD212/DINT"), Value::Int(1000));
 }
 
 #[test]
@@ -276,4 +276,141 @@ fn the_instruction_table_in_docs_is_current() {
         _ => "",
     };
     assert!(have == table, "docs/il.md's instruction table is stale: PLCSH_BLESS=1 cargo test the_instruction_table");
+}
+
+// ---- position control (K2 §3.4.3) --------------------------------------------------
+
+const PHOME: &str = "(* Network 0 *)\nLD %SM0.0\nPHOME 0, %M0.0, %M0.1, %M0.2, %VW0, %VW2, %VW4, %VD6, %VW10, %M0.4, %M0.5, %MB1\n";
+
+fn home_setup(s: &mut K2Sim) {
+    // MODE 1 (HOME only), DIRC 1 (backward), MINF 200 Hz, MAXF 5 kHz, TIME 100 ms.
+    for (op, v) in [("VW0", 1), ("VW2", 1), ("VW4", 200), ("VD6", 5000), ("VW10", 100)] {
+        set(s, op, Value::Int(v));
+    }
+}
+
+#[test]
+fn the_manuals_phome_snippet_clears_the_current_value_on_done() {
+    // K2 §3.4.3.1 method 1: after PHOME, DONE's rising edge sets SM201.6 for one scan.
+    let (mut s, clock) = sim();
+    s.load_program(&format!("{PHOME}(* Network 1 *)\nLD %M0.4\nR_TRIG\nST %SM201.6"), "home.il").unwrap();
+    home_setup(&mut s);
+    set(&mut s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(1000));
+    let pos = get(&mut s, "SMD212/DINT").as_i64();
+    // 0.1 s ramp (≈ 260 pulses) then 5 kHz backward: about −(260 + 4500).
+    assert!((-4900..=-4600).contains(&pos), "moving backward toward home: {pos}");
+    assert!(on(&mut s, "Q0.2"), "direction output Q0.2 = reverse");
+    assert!(!on(&mut s, "M0.4"));
+    set(&mut s, "M0.1", Value::Bool(true));
+    clock.step(Duration::from_millis(2));
+    assert!(on(&mut s, "M0.4"), "DONE");
+    assert_eq!(get(&mut s, "SMD212/DINT"), Value::Int(0), "SM201.6 cleared the current value");
+    clock.step(Duration::from_millis(2));
+    assert!(!on(&mut s, "SM201.6"), "one scan only");
+    assert!(on(&mut s, "SM66.7"), "PTO0 idle");
+}
+
+#[test]
+fn the_manuals_phome_snippet_loads_a_new_current_value_on_done() {
+    // K2 §3.4.3.1 method 2: MOVE DI#100, %SMD208 / ST %SM201.4 → SMD212 = 100.
+    let (mut s, clock) = sim();
+    s.load_program(&format!("{PHOME}(* Network 1 *)\nLD %M0.4\nR_TRIG\nMOVE DI # 100, %SMD208\nST %SM201.4"), "home2.il")
+        .unwrap();
+    home_setup(&mut s);
+    set(&mut s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(300));
+    set(&mut s, "M0.1", Value::Bool(true));
+    clock.step(Duration::from_millis(3));
+    assert_eq!(get(&mut s, "SMD212/DINT"), Value::Int(100));
+}
+
+#[test]
+fn pabs_ramps_and_latches_its_parameters() {
+    // PABS 0 to 10 000 pulses: 125 Hz → 10 kHz over 100 ms; MAXF changed mid-move is ignored (§3.4.3.2).
+    let (mut s, clock) = sim();
+    s.load_program("LD %SM0.0\nPABS 0, %M0.0, %VW0, %VD2, %VW6, %VD8, %M0.1, %M0.2, %MB1", "abs.il").unwrap();
+    for (op, v) in [("VW0", 125), ("VD2", 10_000), ("VW6", 100), ("VD8", 10_000)] {
+        set(&mut s, op, Value::Int(v));
+    }
+    set(&mut s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(50));
+    let early = get(&mut s, "SMD212/DINT").as_i64();
+    set(&mut s, "VD2", Value::Int(1000));
+    clock.step(Duration::from_millis(50));
+    let ramp_end = get(&mut s, "SMD212/DINT").as_i64();
+    clock.step(Duration::from_millis(100));
+    let cruise = get(&mut s, "SMD212/DINT").as_i64() - ramp_end;
+    assert!(early < ramp_end - early, "accelerating: {early} in the first 50 ms, {} in the next", ramp_end - early);
+    assert!((990..=1010).contains(&cruise), "10 kHz cruise despite MAXF = 1000 written: {cruise} in 100 ms");
+    clock.step(Duration::from_millis(900));
+    assert!(on(&mut s, "M0.1"), "DONE");
+    assert_eq!(get(&mut s, "SMD212/DINT"), Value::Int(10_000));
+    assert!(!on(&mut s, "Q0.2"), "forward");
+}
+
+#[test]
+fn position_instructions_check_frequencies_and_the_emergency_stop_bit() {
+    let (mut s, clock) = sim();
+    s.load_program("LD %SM0.0\nPREL 0, %M0.0, %VW0, %VD2, %VW6, %VD8, %M0.1, %M0.2, %MB1", "rel.il").unwrap();
+    for (op, v) in [("VW0", 100), ("VD2", 1000), ("VW6", 0), ("VD8", -50)] {
+        set(&mut s, op, Value::Int(v));
+    }
+    set(&mut s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(2));
+    assert!(on(&mut s, "M0.2"), "ERR: MINF 100 Hz is below 125 Hz");
+    assert_eq!(get(&mut s, "MB1"), Value::Int(2));
+    set(&mut s, "VW0", Value::Int(125));
+    set(&mut s, "SM201.7", Value::Bool(true));
+    set(&mut s, "M0.0", Value::Bool(false));
+    clock.step(Duration::from_millis(2));
+    set(&mut s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(2));
+    assert_eq!(get(&mut s, "MB1"), Value::Int(1), "SM201.7 blocks position instructions");
+    set(&mut s, "SM201.7", Value::Bool(false));
+    set(&mut s, "M0.0", Value::Bool(false));
+    clock.step(Duration::from_millis(2));
+    set(&mut s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(100));
+    assert!(on(&mut s, "M0.1"), "DONE: 50 pulses back at 1 kHz");
+    assert_eq!(get(&mut s, "SMD212/DINT"), Value::Int(-50));
+    assert!(on(&mut s, "Q0.2"), "reverse");
+}
+
+#[test]
+fn pjog_follows_maxf_and_pflo_f_counts() {
+    let (mut s, clock) = sim();
+    s.load_program(
+        "LD %SM0.0\nPJOG 0, %M0.0, %VD0, %VW4, %M0.1, %M0.2, %MB1\nLD %SM0.0\nPFLO_F 1, %M2.0, %VD10, %VW14, %VW16, %VD18, %M2.1, %M2.2, %MB3",
+        "jog.il",
+    )
+    .unwrap();
+    set(&mut s, "VD0", Value::Int(1000));
+    set(&mut s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(1000));
+    let a = get(&mut s, "SMD212/DINT").as_i64();
+    set(&mut s, "VD0", Value::Int(2000));
+    clock.step(Duration::from_millis(1000));
+    let b = get(&mut s, "SMD212/DINT").as_i64() - a;
+    assert!((990..=1010).contains(&a) && (1990..=2010).contains(&b), "1 kHz then 2 kHz: {a}, {b}");
+    set(&mut s, "M0.0", Value::Bool(false));
+    clock.step(Duration::from_millis(5));
+    assert!(on(&mut s, "M0.1") && on(&mut s, "SM66.7"), "stopped, DONE");
+    // PFLO_F on channel 1: F = 1000 Hz × 3 / 2 = 1500 Hz for 300 pulses.
+    for (op, v) in [("VD10", 1000), ("VW14", 3), ("VW16", 2), ("VD18", 300)] {
+        set(&mut s, op, Value::Int(v));
+    }
+    set(&mut s, "M2.0", Value::Bool(true));
+    clock.step(Duration::from_millis(150));
+    assert!(!on(&mut s, "M2.1"));
+    clock.step(Duration::from_millis(60));
+    assert!(on(&mut s, "M2.1"), "300 pulses at 1500 Hz = 200 ms");
+    assert_eq!(get(&mut s, "SMD242/DINT"), Value::Int(300));
+    // Below 30 Hz: refused.
+    set(&mut s, "VD10", Value::Int(10));
+    set(&mut s, "M2.0", Value::Bool(false));
+    clock.step(Duration::from_millis(2));
+    set(&mut s, "M2.0", Value::Bool(true));
+    clock.step(Duration::from_millis(2));
+    assert_eq!(get(&mut s, "MB3"), Value::Int(2), "15 Hz is below PFLO_F's 30 Hz");
 }
