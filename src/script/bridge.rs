@@ -127,6 +127,9 @@ pub const BRIDGE: &[Bridge] = &[
     row("program", "k2", "sim program"),
     row("cpu", "k2", "sim cpu {}"),
     row("scan", "k2", "sim scan [{}]"),
+    row("breakpoint", "k2", "sim break {}"),
+    row("step_instruction", "k2", "sim stepi [{}]"),
+    row("step_network", "k2", "sim stepn"),
     // Kinco servo drive (kinco-servo.md).
     row("status", "servo", "servo status"),
     row("enable", "servo", "servo enable"),

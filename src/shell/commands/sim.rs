@@ -13,9 +13,9 @@ use std::time::Duration;
 pub const SIM: CommandSpec = CommandSpec {
     name: "sim",
     aliases: &[],
-    usage: "sim time | sim step DURATION | sim run | sim input I0.1 freq=1kHz [dir=up|down] | sim input I0.1 off | sim quad A B freq=1kHz | sim inputs | sim retain RANGES|none | sim program load FILE.il | sim program | sim cpu run|stop|pause | sim scan [N]",
+    usage: "sim time | sim step DURATION | sim run | sim input I0.1 freq=1kHz [dir=up|down] | sim input I0.1 off | sim quad A B freq=1kHz | sim inputs | sim retain RANGES|none | sim program load FILE.il | sim program | sim cpu run|stop|pause | sim scan [N] | sim break LINE | sim stepi [N] | sim stepn",
     summary: "the simulator's clock (show, step and keep stepped, follow the wall clock), input signals for the counters, retained ranges, the CPU running an IL program",
-    subcommands: &["time", "step", "run", "input", "quad", "inputs", "retain", "program", "cpu", "stop", "pause", "switch", "scan"],
+    subcommands: &["time", "step", "run", "input", "quad", "inputs", "retain", "program", "cpu", "stop", "pause", "switch", "scan", "break", "stepi", "stepn"],
     run: sim,
 };
 
@@ -37,7 +37,7 @@ fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
         }
         "run" => clock.run(),
         "input" | "quad" | "inputs" | "retain" => return super::siminputs::run(sh, sub, args),
-        "program" | "cpu" | "stop" | "pause" | "switch" | "scan" => {
+        "program" | "cpu" | "stop" | "pause" | "switch" | "scan" | "break" | "stepi" | "stepn" => {
             let o = super::simprogram::run(sh, sub, args)?;
             if sub == "scan" {
                 // Scans run at their modelled times: the clock follows to the last one.

@@ -10,7 +10,7 @@ use crate::k2::sim::K2Sim;
 use crate::output::Outcome;
 use crate::shell::{Args, Shell};
 
-pub const USAGE: &str = "sim program load FILE.il | sim program unload | sim program | sim cpu run|stop|pause | sim stop | sim pause | sim switch run|stop | sim scan [N]";
+pub const USAGE: &str = "sim program load FILE.il | sim program unload | sim program | sim cpu run|stop|pause | sim stop | sim pause | sim switch run|stop | sim scan [N] | sim break LINE|FILE:LINE|network N|clear | sim stepi [N] | sim stepn";
 
 fn ms(ns: u64) -> f64 {
     (ns as f64 / 1e6 * 1000.0).round() / 1000.0
@@ -72,6 +72,7 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
     let dev = sh.session.current_index()?;
     let name = k2cmd::name(sh, dev);
     let s = k2cmd::sim(sh, dev, &format!("sim {sub}"))?;
+    s.advance();
     let mode = |w: Option<&&str>| -> Result<Mode> {
         match w.map(|w| w.to_ascii_lowercase()).as_deref() {
             Some("run") => Ok(Mode::Run),
@@ -123,6 +124,52 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
             let done = s.plc().map_or(0, |p| p.stats.scans) - before;
             let o = status(s, &name);
             Ok(o.with("ran", done))
+        }
+        "break" => {
+            let spec = words[1..].join(" ");
+            let msg = match spec.as_str() {
+                "" => {
+                    let b = s.breakpoints();
+                    if b.is_empty() {
+                        "no breakpoints".to_string()
+                    } else {
+                        format!("breakpoints at lines {}", b.iter().map(|l| l.to_string()).collect::<Vec<_>>().join(", "))
+                    }
+                }
+                "clear" => {
+                    s.clear_breakpoints();
+                    "breakpoints cleared".to_string()
+                }
+                spec => s.set_breakpoint(spec).map_err(|e| e.device(name.clone()))?,
+            };
+            let lines = s.breakpoints();
+            Ok(Outcome::new("sim").text(msg).with("breakpoints", lines))
+        }
+        "stepi" | "stepn" => {
+            let n: u64 = match words.get(1) {
+                Some(w) if sub == "stepi" => w
+                    .parse()
+                    .ok()
+                    .filter(|n| (1..=100_000).contains(n))
+                    .ok_or_else(|| Error::usage(format!("sim stepi N: N is 1…100000, not `{w}`")))?,
+                _ => 1,
+            };
+            let steps = s.debug_step(n, sub == "stepn").map_err(|e| e.device(name.clone()))?;
+            let text: Vec<String> = steps
+                .iter()
+                .map(|st| {
+                    format!(
+                        "line {:>4} (network {}): {:<36} CR={} {}",
+                        st.line,
+                        st.network,
+                        st.instruction,
+                        st.cr as u8,
+                        st.operands.join(" ")
+                    )
+                })
+                .collect();
+            let mode = s.plc().map_or("RUN", |p| p.mode.name());
+            Ok(Outcome::new("sim").text(text.join("\n")).with("steps", steps).with("mode", mode))
         }
         _ => Err(Error::usage(format!("unknown `sim {sub}`")).hint(USAGE)),
     }

@@ -26,6 +26,7 @@
 pub mod family;
 pub mod irq;
 pub mod motion;
+pub mod debug;
 
 #[cfg(test)]
 mod tests;
@@ -45,6 +46,8 @@ pub enum Mode {
     Run,
     Stop,
     Pause,
+    /// Halted at a breakpoint or stepping (K80S DEBUG).
+    Debug,
 }
 
 impl Mode {
@@ -53,6 +56,7 @@ impl Mode {
             Mode::Run => "RUN",
             Mode::Stop => "STOP",
             Mode::Pause => "PAUSE",
+            Mode::Debug => "DEBUG",
         }
     }
 }
@@ -111,6 +115,10 @@ pub struct Plc {
     pub timed_next: [Option<Duration>; 2],
     /// Interrupt-routine time to add to the next scan.
     pub irq_ns: u64,
+    /// Breakpoints: one flag per instruction of the user program.
+    pub breaks: Vec<bool>,
+    /// Where a DEBUG halt stopped (the next instruction).
+    pub halted: Option<u32>,
     /// Q bytes in STOP (K2 §2.2.1: values from the hardware configuration; all off here).
     pub stop_outputs: Vec<u8>,
 }
@@ -130,6 +138,8 @@ impl Plc {
             stop_outputs: vec![0; q_bytes],
             paused_at: None,
             timed_next: [None; 2],
+            breaks: Vec::new(),
+            halted: None,
             irq_ns: 0,
         }
     }
@@ -168,6 +178,11 @@ impl K2Sim {
         let now = self.last;
         let n = prog.source_instructions;
         let p = self.plc_mut();
+        p.breaks = vec![false; prog.code.len()];
+        p.halted = None;
+        if p.mode == Mode::Debug {
+            p.mode = Mode::Run;
+        }
         p.user = Some(Loaded::new(prog, file.to_string()));
         if let Some(h) = &mut p.helper {
             h.reset();
@@ -223,8 +238,9 @@ impl K2Sim {
         }
         match new {
             Mode::Stop => p.paused_at = None,
-            Mode::Pause => p.paused_at = Some(now),
+            Mode::Pause | Mode::Debug => p.paused_at = p.paused_at.or(Some(now)),
             Mode::Run => {
+                p.halted = None;
                 if let Some(at) = p.paused_at.take() {
                     // PAUSE froze the program: running timers do not count the pause.
                     let dt = u64::try_from((now - at).as_nanos()).unwrap_or(0);
@@ -309,32 +325,65 @@ impl K2Sim {
     }
 
     fn one_scan(&mut self, t: Duration) {
-        let Some(mut p) = self.plc.take() else { return };
-        // System bits from the program's point of view.
-        let first = p.run_scans == 0;
-        let b = &mut self.mem.sm[0];
-        *b = (*b & !(1 << 1 | 1 << 6)) | (first as u8) << 1 | ((p.run_scans % 2 == 1) as u8) << 6;
+        if let Some(pc) = self.scan_part(t, u64::MAX, true) {
+            // A breakpoint: the CPU halts in DEBUG before instruction `pc`.
+            if let Some(p) = self.plc.as_mut() {
+                p.mode = Mode::Debug;
+                p.halted = Some(pc);
+            }
+        }
+    }
+
+    /// Runs the scan starting at `t`, or continues the user program's halted scan, for at
+    /// most `limit` user-program instructions, stopping at breakpoints when `brk`.
+    /// Returns the instruction it halted before, or `None` when the scan completed.
+    pub(super) fn scan_part(&mut self, t: Duration, limit: u64, brk: bool) -> Option<u32> {
+        let mut p = self.plc.take()?;
+        let resuming = p.user.as_ref().is_some_and(|l| l.cpu.pc.is_some());
+        let t = if resuming { Duration::from_nanos(p.user.as_ref().map_or(0, |l| l.cpu.now_ns)) } else { t };
+        if !resuming {
+            // System bits from the program's point of view.
+            let first = p.run_scans == 0;
+            let b = &mut self.mem.sm[0];
+            *b = (*b & !(1 << 1 | 1 << 6)) | (first as u8) << 1 | ((p.run_scans % 2 == 1) as u8) << 6;
+        }
         let now_ns = u64::try_from(t.as_nanos()).unwrap_or(u64::MAX);
-        let mut cost = 0u64;
-        let mut instrs = 0u64;
         let mut fault = None;
         let mut raised = Vec::new();
-        for l in [&mut p.user, &mut p.helper].into_iter().flatten() {
+        let mask = if brk && p.breaks.iter().any(|b| *b) { Some(&p.breaks[..]) } else { None };
+        if let Some(l) = p.user.as_mut() {
             let mut m = K2Machine { sim: self, now: t, inst: &mut l.inst, raised: Vec::new() };
-            let o = l.cpu.scan(&l.prog, &mut m, now_ns, u64::MAX, None);
+            let o = l.cpu.scan(&l.prog, &mut m, now_ns, limit, mask);
             raised.append(&mut m.raised);
-            cost += o.cost_ns;
-            instrs += o.instructions;
-            if let Exit::Fault(f) = o.exit {
-                fault = Some(f);
-                break;
+            match o.exit {
+                Exit::Fault(f) => fault = Some(f),
+                Exit::Paused(pc) => {
+                    if !raised.is_empty() {
+                        self.events.extend(raised);
+                    }
+                    self.plc = Some(p);
+                    return Some(pc);
+                }
+                Exit::Done => {}
             }
-            if let Exit::Paused(_) = o.exit {
-                // Not reached without breakpoints; finish the scan next time.
+        }
+        if fault.is_none() {
+            if let Some(l) = p.helper.as_mut() {
+                let mut m = K2Machine { sim: self, now: t, inst: &mut l.inst, raised: Vec::new() };
+                let o = l.cpu.scan(&l.prog, &mut m, now_ns, u64::MAX, None);
+                raised.append(&mut m.raised);
+                if let Exit::Fault(f) = o.exit {
+                    fault = Some(f);
+                }
             }
         }
         if !raised.is_empty() {
             self.events.extend(raised);
+        }
+        let (mut cost, mut instrs) = (0, 0);
+        for l in [&p.user, &p.helper].into_iter().flatten() {
+            cost += l.cpu.spent_ns;
+            instrs += l.cpu.executed;
         }
         let scan_ns = (p.costs.overhead_ns + cost + std::mem::take(&mut p.irq_ns)).max(p.costs.min_scan_ns).max(1);
         let s = &mut p.stats;
@@ -348,14 +397,16 @@ impl K2Sim {
         self.mem.set_sm_word(24, ms16(s.min_ns));
         self.mem.set_sm_word(26, ms16(s.max_ns));
         p.run_scans += 1;
-        p.next_scan = t + Duration::from_nanos(scan_ns);
+        // After a halt the scan ends later than it started: never schedule into the past.
+        p.next_scan = (t + Duration::from_nanos(scan_ns)).max(self.last);
         if let Some(f) = fault {
             p.faults.push(f);
             p.mode = Mode::Stop;
             self.plc = Some(p);
             self.apply_stop_outputs();
-            return;
+            return None;
         }
         self.plc = Some(p);
+        None
     }
 }

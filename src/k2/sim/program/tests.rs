@@ -414,3 +414,37 @@ fn pjog_follows_maxf_and_pflo_f_counts() {
     clock.step(Duration::from_millis(2));
     assert_eq!(get(&mut s, "MB3"), Value::Int(2), "15 Hz is below PFLO_F's 30 Hz");
 }
+
+// ---- DEBUG mode (K80S: breakpoints, step execution) -----------------------------------
+
+#[test]
+fn a_breakpoint_halts_and_steps_show_the_current_result_and_operands() {
+    let (mut s, clock) = sim();
+    s.load_program("(* Network 1 *)\nLD %I0.0\nAND %M0.1\nST %Q0.0\n(* Network 2 *)\nLD %SM0.0\nINC %VW0", "dbg.il")
+        .unwrap();
+    set(&mut s, "M0.1", Value::Bool(true));
+    assert!(s.set_breakpoint("dbg.il:7").unwrap().contains("INC %VW0"));
+    clock.step(Duration::from_millis(5));
+    s.advance();
+    let p = s.plc().unwrap();
+    assert_eq!(p.mode, Mode::Debug, "halted at the breakpoint");
+    let vw0 = s.mem.v[1];
+    clock.step(Duration::from_millis(50));
+    s.advance();
+    assert_eq!(s.mem.v[1], vw0, "no scans while halted");
+    let st = s.debug_step(1, false).unwrap();
+    assert_eq!((st[0].line, st[0].cr), (7, true));
+    assert_eq!(st[0].operands, vec![format!("VW0={}", vw0 + 1)], "the operand after the step");
+    // Step a whole network of the next scan: to the end of network 1 … then network 2.
+    s.debug_step(1, false).unwrap(); // the implicit end: the scan completes
+    let net = s.debug_step(0, true).unwrap();
+    assert_eq!(net.iter().map(|x| x.line).collect::<Vec<_>>(), vec![2, 3, 4], "network 1");
+    assert_eq!(net[1].operands, vec!["M0.1=1".to_string()]);
+    assert!(!net[2].cr, "I0.0 is off");
+    s.clear_breakpoints();
+    s.set_mode(Mode::Run).unwrap();
+    clock.step(Duration::from_millis(10));
+    s.advance();
+    assert_eq!(s.plc().unwrap().mode, Mode::Run);
+    assert!(s.mem.v[1] > vw0 + 5, "running again");
+}
