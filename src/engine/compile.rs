@@ -15,42 +15,146 @@ use std::collections::HashMap;
 /// One compiled instruction: resolved locations, no names.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Ins {
-    Ld { loc: Loc, neg: bool },
-    Logic { op: Logic, loc: Loc, neg: bool },
-    ParOpen { op: Logic, neg: bool, load: Option<Loc> },
+    Ld {
+        loc: Loc,
+        neg: bool,
+    },
+    Logic {
+        op: Logic,
+        loc: Loc,
+        neg: bool,
+    },
+    ParOpen {
+        op: Logic,
+        neg: bool,
+        load: Option<Loc>,
+    },
     ParClose,
     Not,
-    St { loc: Loc, neg: bool },
-    Set { loc: Loc, n: u32, on: bool },
-    ResetElem { timer: bool, slot: u32, cv: Loc, q: Loc },
+    St {
+        loc: Loc,
+        neg: bool,
+    },
+    Set {
+        loc: Loc,
+        n: u32,
+        on: bool,
+    },
+    ResetElem {
+        timer: bool,
+        slot: u32,
+        cv: Loc,
+        q: Loc,
+    },
     Ald,
     Old,
     Lps,
     Lrd,
     Lpp,
-    Edge { slot: u32, rising: bool },
-    Compare { comb: Comb, op: Cmp, ty: DataType, a: Opd, b: Opd },
-    Move { ty: DataType, a: Opd, out: Opd },
-    Block { ty: DataType, a: Opd, out: Opd, n: Opd, fill: bool },
-    Arith { op: Arith, ty: DataType, a: Opd, b: Opd, out: Opd },
-    IncDec { inc: bool, ty: DataType, out: Opd },
-    Shift { op: Shift, ty: DataType, out: Opd, n: Opd },
-    WordLogic { op: Logic, ty: DataType, a: Opd, b: Opd, out: Opd },
-    Inv { ty: DataType, out: Opd },
-    Conv { c: Conv, a: Opd, out: Opd },
-    Jmp { to: u32 },
-    Jmpc { to: u32, neg: bool },
-    Cal { pou: u32, cond: Option<bool> },
-    Ret { cond: Option<bool> },
-    Timer { kind: TimerKind, slot: u32, el: Element, pt: Opd, reset: Option<Loc> },
-    Counter { kind: CounterKind, slot: u32, el: Element, pv: Opd, second: Option<Loc>, reset: Option<Loc> },
-    Atch { pou: u32, event: Opd },
-    Dtch { event: Opd },
+    Edge {
+        slot: u32,
+        rising: bool,
+    },
+    Compare {
+        comb: Comb,
+        op: Cmp,
+        ty: DataType,
+        a: Opd,
+        b: Opd,
+    },
+    Move {
+        ty: DataType,
+        a: Opd,
+        out: Opd,
+    },
+    Block {
+        ty: DataType,
+        a: Opd,
+        out: Opd,
+        n: Opd,
+        fill: bool,
+    },
+    Arith {
+        op: Arith,
+        ty: DataType,
+        a: Opd,
+        b: Opd,
+        out: Opd,
+    },
+    IncDec {
+        inc: bool,
+        ty: DataType,
+        out: Opd,
+    },
+    Shift {
+        op: Shift,
+        ty: DataType,
+        out: Opd,
+        n: Opd,
+    },
+    WordLogic {
+        op: Logic,
+        ty: DataType,
+        a: Opd,
+        b: Opd,
+        out: Opd,
+    },
+    Inv {
+        ty: DataType,
+        out: Opd,
+    },
+    Conv {
+        c: Conv,
+        a: Opd,
+        out: Opd,
+    },
+    Jmp {
+        to: u32,
+    },
+    Jmpc {
+        to: u32,
+        neg: bool,
+    },
+    Cal {
+        pou: u32,
+        cond: Option<bool>,
+    },
+    Ret {
+        cond: Option<bool>,
+    },
+    Timer {
+        kind: TimerKind,
+        slot: u32,
+        el: Element,
+        pt: Opd,
+        reset: Option<Loc>,
+    },
+    Counter {
+        kind: CounterKind,
+        slot: u32,
+        el: Element,
+        pv: Opd,
+        second: Option<Loc>,
+        reset: Option<Loc>,
+    },
+    Atch {
+        pou: u32,
+        event: Opd,
+    },
+    Dtch {
+        event: Opd,
+    },
     Eni,
     Disi,
     Wdt,
     Nop,
-    Special { id: u16, inst: u32, edge: bool, args: Box<[Opd]>, types: Box<[DataType]> },
+    Special {
+        id: u16,
+        inst: u32,
+        edge: bool,
+        args: Box<[Opd]>,
+        types: Box<[DataType]>,
+    },
     /// End of a POU (implicit return).
     End,
 }
@@ -183,10 +287,8 @@ pub fn compile<F: Family + ?Sized>(text: &str, file: &str, fam: &F) -> Result<Pr
         for s in stmts {
             match s {
                 Stmt::Network { n, .. } => network = *n,
-                Stmt::Label { name, pos } => {
-                    if labels.insert(name.clone(), cx.prog.code.len() as u32).is_some() {
-                        return Err(err(file, *pos, format!("label {name} is defined twice in {}", cx.prog.pous[pi].name)));
-                    }
+                Stmt::Label { name, pos } if labels.insert(name.clone(), cx.prog.code.len() as u32).is_some() => {
+                    return Err(err(file, *pos, format!("label {name} is defined twice in {}", cx.prog.pous[pi].name)));
                 }
                 Stmt::Instr { mnemonic, operands, pos } => {
                     let ins = cx.instr(mnemonic, operands, *pos, &mut jumps, &mut calls)?;
@@ -303,7 +405,8 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
         if let Some(rest) = t.strip_prefix('&') {
             let r = self.fam.operand(rest).map_err(fail)?;
             let p = self.fam.pointer(r.loc).ok_or_else(|| {
-                self.e(o.pos, format!("{t}: {} cannot be pointed to", r.canonical)).hint("point to V, M, I, Q or SM bytes")
+                self.e(o.pos, format!("{t}: {} cannot be pointed to", r.canonical))
+                    .hint("point to V, M, I, Q or SM bytes")
             })?;
             return Ok(Raw::Ptr(p));
         }
@@ -451,9 +554,11 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
             return Ok((ins, self.prog.costs.ns(CostClass::Special)));
         }
         // Unknown: suggest from the core table, the comparisons and the family's own.
-        let names = isa::CORE.iter().map(|d| d.name).chain(self.specials.iter().map(|s| s.name)).chain(
-            ["LDW=", "LDW<>", "LDW>", "LDW<", "LDD=", "LDR>", "AW=", "OW="].iter().copied(),
-        );
+        let names = isa::CORE
+            .iter()
+            .map(|d| d.name)
+            .chain(self.specials.iter().map(|s| s.name))
+            .chain(["LDW=", "LDW<>", "LDW>", "LDW<", "LDD=", "LDR>", "AW=", "OW="].iter().copied());
         let mut e = self.e(pos, format!("unknown instruction {m}"));
         e = e.hint(match suggest(m, names) {
             Some(n) => format!("did you mean {n}? (docs/il.md lists the instructions)"),
@@ -518,8 +623,7 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
                 let on = def.kind == Kind::Set;
                 // A timer or counter operand: R clears it (S7-200 `R T37, 1`).
                 let up = ops[0].text.trim_start_matches('%').to_ascii_uppercase();
-                if !on && (up.starts_with('T') || up.starts_with('C')) && up[1..].chars().all(|c| c.is_ascii_digit())
-                {
+                if !on && (up.starts_with('T') || up.starts_with('C')) && up[1..].chars().all(|c| c.is_ascii_digit()) {
                     let timer = up.starts_with('T');
                     let (el, slot) = self.element(&ops[0], timer)?;
                     return Ok(Ins::ResetElem { timer, slot, cv: el.cv, q: el.q });
@@ -600,7 +704,12 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
                 self.out_loc(&ops[0], &out)?;
                 let t = self.value_ty(m, TyHint::Auto, &[(&ops[0], &out)])?;
                 let n = self.raw(&ops[1])?;
-                Ins::Shift { op, ty: t, out: self.typed(&ops[0], &out, t)?, n: self.typed(&ops[1], &n, DataType::Byte)? }
+                Ins::Shift {
+                    op,
+                    ty: t,
+                    out: self.typed(&ops[0], &out, t)?,
+                    n: self.typed(&ops[1], &n, DataType::Byte)?,
+                }
             }
             Kind::WordLogic { op } => {
                 let out_o = ops.last().unwrap();
@@ -698,7 +807,9 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
                 let ms = lit.value.as_i64();
                 let units = (ms as i128 * 1_000_000 / base.max(1) as i128) as i64;
                 if !(0..=32767).contains(&units) {
-                    return Err(self.e(o.pos, format!("{t} is {units} units of this timer; the preset must be 0…32767")));
+                    return Err(
+                        self.e(o.pos, format!("{t} is {units} units of this timer; the preset must be 0…32767"))
+                    );
                 }
                 return Ok(Opd::Imm(units as u16 as u32));
             }

@@ -421,11 +421,14 @@ impl Cpu {
                     if self.cr {
                         let r = read(m, a, *ty).and_then(|x| {
                             let y = read(m, b, *ty)?;
-                            let v = mask(*ty, match op {
-                                Logic::And => x & y,
-                                Logic::Or => x | y,
-                                Logic::Xor => x ^ y,
-                            } as i64);
+                            let v = mask(
+                                *ty,
+                                match op {
+                                    Logic::And => x & y,
+                                    Logic::Or => x | y,
+                                    Logic::Xor => x ^ y,
+                                } as i64,
+                            );
                             m.flags(Flags { zero: v == 0, ..Flags::default() });
                             write(m, out, *ty, v)
                         });
@@ -459,7 +462,10 @@ impl Cpu {
                 Ins::Cal { pou, cond } => {
                     if cond.is_none_or(|c| self.cr == c) {
                         if self.calls.len() >= MAX_CALL_DEPTH {
-                            let f = Fault::new(FaultKind::CallDepth, format!("subroutines nested deeper than {MAX_CALL_DEPTH}"));
+                            let f = Fault::new(
+                                FaultKind::CallDepth,
+                                format!("subroutines nested deeper than {MAX_CALL_DEPTH}"),
+                            );
                             return self.fault(prog, (pc - 1) as u32, f);
                         }
                         self.calls.push(pc as u32);
@@ -700,7 +706,7 @@ fn convert<M: Machine>(m: &mut M, c: Conv, a: &Opd, out: &Opd) -> Result<bool, F
         Conv::IDi => Some((T::DInt, as_i64(T::Int, read(m, a, T::Int)?) as i32 as u32)),
         Conv::DiI => {
             let v = as_i64(T::DInt, read(m, a, T::DInt)?);
-            fits(T::Int, v).then(|| (T::Int, v as u16 as u32))
+            fits(T::Int, v).then_some((T::Int, v as u16 as u32))
         }
         Conv::BI => Some((T::Int, read(m, a, T::Byte)? & 0xFF)),
         Conv::IB => {
@@ -711,7 +717,7 @@ fn convert<M: Machine>(m: &mut M, c: Conv, a: &Opd, out: &Opd) -> Result<bool, F
         Conv::Round | Conv::Trunc => {
             let f = f32::from_bits(read(m, a, T::Real)?) as f64;
             let v = if c == Conv::Round { f.round() } else { f.trunc() };
-            (v.is_finite() && v >= i32::MIN as f64 && v <= i32::MAX as f64).then(|| (T::DInt, v as i32 as u32))
+            (v.is_finite() && v >= i32::MIN as f64 && v <= i32::MAX as f64).then_some((T::DInt, v as i32 as u32))
         }
         Conv::IBcd => {
             let v = as_i64(T::Int, read(m, a, T::Int)?);
@@ -723,7 +729,10 @@ fn convert<M: Machine>(m: &mut M, c: Conv, a: &Opd, out: &Opd) -> Result<bool, F
         Conv::BcdI => {
             let v = read(m, a, T::Int)? & 0xFFFF;
             let digits = [v & 0xF, v >> 4 & 0xF, v >> 8 & 0xF, v >> 12 & 0xF];
-            digits.iter().all(|d| *d <= 9).then(|| (T::Int, digits[0] + digits[1] * 10 + digits[2] * 100 + digits[3] * 1000))
+            digits
+                .iter()
+                .all(|d| *d <= 9)
+                .then(|| (T::Int, digits[0] + digits[1] * 10 + digits[2] * 100 + digits[3] * 1000))
         }
     };
     match r {

@@ -27,13 +27,29 @@ pub struct OperandText {
 #[derive(Clone, Debug, PartialEq)]
 pub enum Stmt {
     /// A POU header: kind (`PROGRAM`, `SUBROUTINE`, `INTERRUPT`) and name.
-    Pou { kind: PouKind, name: String, pos: Pos },
+    Pou {
+        kind: PouKind,
+        name: String,
+        pos: Pos,
+    },
     /// `END_PROGRAM`, `END_SUBROUTINE` …
-    EndPou { pos: Pos },
-    Label { name: String, pos: Pos },
+    EndPou {
+        pos: Pos,
+    },
+    Label {
+        name: String,
+        pos: Pos,
+    },
     /// The start of network `n` (for breakpoints and stepping by network).
-    Network { n: u32, pos: Pos },
-    Instr { mnemonic: String, operands: Vec<OperandText>, pos: Pos },
+    Network {
+        n: u32,
+        pos: Pos,
+    },
+    Instr {
+        mnemonic: String,
+        operands: Vec<OperandText>,
+        pos: Pos,
+    },
 }
 
 /// Program organisation units.
@@ -127,7 +143,10 @@ pub fn parse(text: &str) -> Result<Vec<Stmt>, LexError> {
             net_iter.next();
         }
         if l.trim().chars().count() > MAX_LINE {
-            return Err(LexError { pos: Pos { line, col: 1 }, message: format!("line longer than {MAX_LINE} characters") });
+            return Err(LexError {
+                pos: Pos { line, col: 1 },
+                message: format!("line longer than {MAX_LINE} characters"),
+            });
         }
         statement(l, line, &mut out)?;
     }
@@ -206,10 +225,7 @@ fn instruction(l: &str, from: usize, line: u32, out: &mut Vec<Stmt>) -> Result<(
         let name = args.trim();
         let name = name.split([':', ' ']).next().unwrap_or("");
         if !is_ident(name) {
-            return Err(LexError {
-                pos,
-                message: format!("{head} needs a name, e.g. `{head} MAIN`"),
-            });
+            return Err(LexError { pos, message: format!("{head} needs a name, e.g. `{head} MAIN`") });
         }
         out.push(Stmt::Pou { kind, name: name.to_ascii_uppercase(), pos });
         return Ok(());
@@ -219,7 +235,7 @@ fn instruction(l: &str, from: usize, line: u32, out: &mut Vec<Stmt>) -> Result<(
         return Ok(());
     }
     if head == "NETWORK" {
-        let n = args.trim().split_whitespace().next().and_then(|t| t.parse().ok()).unwrap_or(0);
+        let n = args.split_whitespace().next().and_then(|t| t.parse().ok()).unwrap_or(0);
         out.push(Stmt::Network { n, pos });
         return Ok(());
     }
@@ -269,7 +285,9 @@ mod tests {
         let src = "(* Network 1: start *)\nLD %SM0.0 // always\nLOOP: MOVE DI # 100, %SMD208\n  (* a\n  two-line comment *) ST %Q0.0\nJMPC LOOP\n";
         let s = parse(src).unwrap();
         assert_eq!(s[0], Stmt::Network { n: 1, pos: Pos { line: 1, col: 1 } });
-        assert!(matches!(&s[1], Stmt::Instr { mnemonic, operands, .. } if mnemonic == "LD" && operands[0].text == "%SM0.0"));
+        assert!(
+            matches!(&s[1], Stmt::Instr { mnemonic, operands, .. } if mnemonic == "LD" && operands[0].text == "%SM0.0")
+        );
         assert!(matches!(&s[2], Stmt::Label { name, .. } if name == "LOOP"));
         match &s[3] {
             Stmt::Instr { mnemonic, operands, pos } => {
@@ -287,7 +305,9 @@ mod tests {
     fn headers_and_glued_operands() {
         let s = parse("SUBROUTINE AGENT\nREAD_RTC%VB0\nEND_SUBROUTINE\nINTERRUPT INT_0\nRET").unwrap();
         assert!(matches!(&s[0], Stmt::Pou { kind: PouKind::Subroutine, name, .. } if name == "AGENT"));
-        assert!(matches!(&s[1], Stmt::Instr { mnemonic, operands, .. } if mnemonic == "READ_RTC" && operands[0].text == "%VB0"));
+        assert!(
+            matches!(&s[1], Stmt::Instr { mnemonic, operands, .. } if mnemonic == "READ_RTC" && operands[0].text == "%VB0")
+        );
         assert!(matches!(s[2], Stmt::EndPou { .. }));
         assert!(matches!(&s[3], Stmt::Pou { kind: PouKind::Interrupt, .. }));
     }

@@ -26,11 +26,19 @@ impl Family for Toy {
         let t = text.trim_start_matches('%').to_ascii_uppercase();
         if let Some(rest) = t.strip_prefix('T').filter(|r| parse_num(r).is_some()) {
             let n = parse_num(rest).unwrap();
-            return Ok(Resolved { loc: Loc { area: T_Q, width: Width::Bit(0), index: n }, ty: DataType::Bool, canonical: t });
+            return Ok(Resolved {
+                loc: Loc { area: T_Q, width: Width::Bit(0), index: n },
+                ty: DataType::Bool,
+                canonical: t,
+            });
         }
         if let Some(rest) = t.strip_prefix('C').filter(|r| parse_num(r).is_some()) {
             let n = parse_num(rest).unwrap();
-            return Ok(Resolved { loc: Loc { area: C_Q, width: Width::Bit(0), index: n }, ty: DataType::Bool, canonical: t });
+            return Ok(Resolved {
+                loc: Loc { area: C_Q, width: Width::Bit(0), index: n },
+                ty: DataType::Bool,
+                canonical: t,
+            });
         }
         for (name, area, len) in AREAS {
             let Some(rest) = t.strip_prefix(name) else { continue };
@@ -62,7 +70,11 @@ impl Family for Toy {
     fn element(&self, text: &str, timer: bool) -> Result<Element, OperandError> {
         let t = text.trim_start_matches('%').to_ascii_uppercase();
         let (p, cv, q) = if timer { ('T', T_CV, T_Q) } else { ('C', C_CV, C_Q) };
-        let n = t.strip_prefix(p).and_then(parse_num).filter(|n| *n < 16).ok_or_else(|| OperandError::new("T0…T15 / C0…C15"))?;
+        let n = t
+            .strip_prefix(p)
+            .and_then(parse_num)
+            .filter(|n| *n < 16)
+            .ok_or_else(|| OperandError::new("T0…T15 / C0…C15"))?;
         // Classes like the K2's: 1 ms, 10 ms, 100 ms.
         let base_ns = if !timer {
             0
@@ -461,7 +473,16 @@ fn trace(src: &str, scan_ms: u64, until: u64, input: impl Fn(u64) -> bool) -> Ve
     while t <= until {
         r.set_bit("I0.0", input(t));
         r.scan_at_ms(t);
-        out.push((t, r.bit("Q0.0"), r.mem.t[r.prog.code.iter().find_map(|i| if let compile::Ins::Timer { el, .. } = i { Some(el.number as usize) } else { None }).unwrap()] as i64));
+        out.push((
+            t,
+            r.bit("Q0.0"),
+            r.mem.t[r
+                .prog
+                .code
+                .iter()
+                .find_map(|i| if let compile::Ins::Timer { el, .. } = i { Some(el.number as usize) } else { None })
+                .unwrap()] as i64,
+        ));
         t += scan_ms;
     }
     out
@@ -671,7 +692,11 @@ fn load_errors_name_file_line_column_and_a_suggestion() {
     assert!(e.message.contains("no label LOPP"), "{}", e.message);
     assert_eq!(e.hint.as_deref(), Some("did you mean LOOP?"));
     let e = load_err("ADD %VW0, %VD4");
-    assert!(e.message.contains("is a INT") || e.message.contains("is an INT") || e.message.contains("INT but"), "{}", e.message);
+    assert!(
+        e.message.contains("is a INT") || e.message.contains("is an INT") || e.message.contains("INT but"),
+        "{}",
+        e.message
+    );
     assert!(e.hint.as_deref().unwrap().contains("I_DI"), "{:?}", e.hint);
     let e = load_err("MOVE 300, %VB0");
     assert!(e.message.starts_with("t.il:1:6:"), "{}", e.message);
@@ -687,10 +712,33 @@ fn load_errors_name_file_line_column_and_a_suggestion() {
 #[test]
 fn hostile_text_never_panics() {
     let samples = [
-        "", "\n\n", "LD", "LD %", "LD %I", "LD %I9.9", "MOVE *%VW0, %VB0", "MOVE &T0, %VD0", "TON", "S %M0.0, 0",
-        "S %M0.0, 999", "BLKMOVE %VB0, %VB1, 0", "ATCH X, 99999", "LDW= 1", ")", "AND(", "X:\nX:", "PROGRAM\n",
-        "SUBROUTINE A\nSUBROUTINE A", "MOVE T#5s, %VW0", "MOVE 1e99, %VD0/REAL", "MOVE REAL#nan, %VW0",
-        "LD %I0.0 %I0.1", "ADD 1, 2, 3, 4", "\u{feff}LD %I0.0", "LD %Ι0.0", "CTUD C1, 2",
+        "",
+        "\n\n",
+        "LD",
+        "LD %",
+        "LD %I",
+        "LD %I9.9",
+        "MOVE *%VW0, %VB0",
+        "MOVE &T0, %VD0",
+        "TON",
+        "S %M0.0, 0",
+        "S %M0.0, 999",
+        "BLKMOVE %VB0, %VB1, 0",
+        "ATCH X, 99999",
+        "LDW= 1",
+        ")",
+        "AND(",
+        "X:\nX:",
+        "PROGRAM\n",
+        "SUBROUTINE A\nSUBROUTINE A",
+        "MOVE T#5s, %VW0",
+        "MOVE 1e99, %VD0/REAL",
+        "MOVE REAL#nan, %VW0",
+        "LD %I0.0 %I0.1",
+        "ADD 1, 2, 3, 4",
+        "\u{feff}LD %I0.0",
+        "LD %Ι0.0",
+        "CTUD C1, 2",
     ];
     for s in samples {
         let _ = compile(s, "x.il", &Toy);

@@ -50,7 +50,17 @@ fn credit(st: &mut TimerState, cv: i32, now: u64, base: u64) -> i32 {
 
 /// One execution of a timer: input `inp`, current value `cv`, preset `pt` (units of
 /// `base` ns), optional reset. Returns the new value and output bit.
-pub fn timer(kind: TimerKind, st: &mut TimerState, inp: bool, cv: i32, pt: i32, reset: bool, now: u64, base: u64) -> (i32, bool) {
+#[allow(clippy::too_many_arguments)]
+pub fn timer(
+    kind: TimerKind,
+    st: &mut TimerState,
+    inp: bool,
+    cv: i32,
+    pt: i32,
+    reset: bool,
+    now: u64,
+    base: u64,
+) -> (i32, bool) {
     let rising = inp && !st.prev;
     let falling = !inp && st.prev;
     st.prev = inp;
@@ -67,7 +77,9 @@ pub fn timer(kind: TimerKind, st: &mut TimerState, inp: bool, cv: i32, pt: i32, 
                 st.running = false;
                 return (0, false);
             }
-            let cv = if st.running { credit(st, cv, now, base) } else {
+            let cv = if st.running {
+                credit(st, cv, now, base)
+            } else {
                 start(st, now);
                 0
             };
@@ -151,7 +163,15 @@ pub fn timer(kind: TimerKind, st: &mut TimerState, inp: bool, cv: i32, pt: i32, 
 
 /// One execution of a counter: up input `up` (the CR; for CTD the down input), second
 /// input `down` (CTUD), reset (CTD: load the preset). Counts rising edges (K80S).
-pub fn counter(kind: CounterKind, st: &mut CounterState, up: bool, down: bool, cv: i32, pv: i32, reset: bool) -> (i32, bool) {
+pub fn counter(
+    kind: CounterKind,
+    st: &mut CounterState,
+    up: bool,
+    down: bool,
+    cv: i32,
+    pv: i32,
+    reset: bool,
+) -> (i32, bool) {
     let up_edge = up && !st.prev_up;
     let down_edge = down && !st.prev_down;
     st.prev_up = up;
@@ -159,12 +179,24 @@ pub fn counter(kind: CounterKind, st: &mut CounterState, up: bool, down: bool, c
     match kind {
         // Up: Q when the count reaches the preset; reset clears (K80S CTU).
         CounterKind::Ctu => {
-            let cv = if reset { 0 } else if up_edge { (cv + 1).min(MAX) } else { cv };
+            let cv = if reset {
+                0
+            } else if up_edge {
+                (cv + 1).min(MAX)
+            } else {
+                cv
+            };
             (cv, cv >= pv)
         }
         // Down: Q when the count reaches 0; "reset" loads the preset (K80S CTD).
         CounterKind::Ctd => {
-            let cv = if reset { pv } else if up_edge && cv > 0 { cv - 1 } else { cv };
+            let cv = if reset {
+                pv
+            } else if up_edge && cv > 0 {
+                cv - 1
+            } else {
+                cv
+            };
             (cv, cv <= 0)
         }
         // Up/down: two inputs; Q while count ≥ preset (K80S CTUD).

@@ -41,7 +41,13 @@ fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
             let o = super::simprogram::run(sh, sub, args)?;
             if sub == "scan" {
                 // Scans run at their modelled times: the clock follows to the last one.
-                if let Some(t) = sh.session.current_index().ok().and_then(|d| super::k2cmd::sim(sh, d, "sim scan").ok()).map(|s| s.last) {
+                if let Some(t) = sh
+                    .session
+                    .current_index()
+                    .ok()
+                    .and_then(|d| super::k2cmd::sim(sh, d, "sim scan").ok())
+                    .map(|s| s.last)
+                {
                     let now = clock.now();
                     if t > now {
                         clock.step(t - now);

@@ -19,10 +19,13 @@ fn ms(ns: u64) -> f64 {
 /// The status outcome (`sim program`).
 pub fn status(s: &K2Sim, name: &str) -> Outcome {
     let Some(p) = s.plc() else {
-        return Outcome::new("sim").text(format!("{name}: no program loaded (sim program load FILE.il)")).with("mode", "RUN");
+        return Outcome::new("sim")
+            .text(format!("{name}: no program loaded (sim program load FILE.il)"))
+            .with("mode", "RUN");
     };
     let st = p.stats;
-    let mut lines = vec![format!("{name}: CPU {}{}", p.mode.name(), if p.switch_run { "" } else { " (switch at STOP)" })];
+    let mut lines =
+        vec![format!("{name}: CPU {}{}", p.mode.name(), if p.switch_run { "" } else { " (switch at STOP)" })];
     for (what, l) in [("program", &p.user), ("helper", &p.helper)] {
         if let Some(l) = l {
             lines.push(format!("{what}: {} ({} instructions)", l.source, l.prog.source_instructions));
@@ -112,12 +115,13 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
             Ok(status(s, &name))
         }
         "scan" => {
-            let n: u64 = match words.get(1) {
-                Some(w) => w.parse().ok().filter(|n| (1..=10_000_000).contains(n)).ok_or_else(|| {
-                    Error::usage(format!("sim scan N: N is a number of scans 1…10000000, not `{w}`"))
-                })?,
-                None => 1,
-            };
+            let n: u64 =
+                match words.get(1) {
+                    Some(w) => w.parse().ok().filter(|n| (1..=10_000_000).contains(n)).ok_or_else(|| {
+                        Error::usage(format!("sim scan N: N is a number of scans 1…10000000, not `{w}`"))
+                    })?,
+                    None => 1,
+                };
             let before = s.plc().map_or(0, |p| p.stats.scans);
             s.scan_n(n).map_err(|e| e.device(name.clone()))?;
             // The clock stays where it is; the scans ran at their modelled times.
@@ -133,7 +137,10 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
                     if b.is_empty() {
                         "no breakpoints".to_string()
                     } else {
-                        format!("breakpoints at lines {}", b.iter().map(|l| l.to_string()).collect::<Vec<_>>().join(", "))
+                        format!(
+                            "breakpoints at lines {}",
+                            b.iter().map(|l| l.to_string()).collect::<Vec<_>>().join(", ")
+                        )
                     }
                 }
                 "clear" => {

@@ -28,9 +28,11 @@ impl K2Sim {
     /// Sets a breakpoint: `42`, `prog.il:42` (the first instruction on or after line 42)
     /// or `network 3` / `n3` (the network's first instruction). Returns where it is.
     pub fn set_breakpoint(&mut self, spec: &str) -> Result<String> {
-        let p = self.plc.as_deref_mut().filter(|p| p.user.is_some()).ok_or_else(|| {
-            Error::state("no program is loaded").hint("sim program load FILE.il")
-        })?;
+        let p = self
+            .plc
+            .as_deref_mut()
+            .filter(|p| p.user.is_some())
+            .ok_or_else(|| Error::state("no program is loaded").hint("sim program load FILE.il"))?;
         let l = p.user.as_ref().unwrap();
         let spec = spec.trim();
         let net = spec.strip_prefix("network").or_else(|| spec.strip_prefix('n')).map(str::trim);
@@ -44,9 +46,10 @@ impl K2Sim {
                 Error::usage(format!("`{spec}` is not a breakpoint")).hint("sim break LINE | FILE:LINE | network N")
             })?;
             let last = l.prog.code.len().saturating_sub(1);
-            l.prog.pos[..last].iter().position(|pos| pos.line >= line).ok_or_else(|| {
-                Error::usage(format!("{} has no instruction on or after line {line}", l.source))
-            })?
+            l.prog.pos[..last]
+                .iter()
+                .position(|pos| pos.line >= line)
+                .ok_or_else(|| Error::usage(format!("{} has no instruction on or after line {line}", l.source)))?
         };
         p.breaks[idx] = true;
         Ok(format!("breakpoint at {}:{}: {}", l.source, l.prog.pos[idx].line, l.prog.text[idx]))
@@ -70,9 +73,11 @@ impl K2Sim {
     pub fn debug_step(&mut self, n: u64, by_network: bool) -> Result<Vec<Step>> {
         self.advance();
         {
-            let p = self.plc.as_deref_mut().filter(|p| p.user.is_some()).ok_or_else(|| {
-                Error::state("no program is loaded").hint("sim program load FILE.il")
-            })?;
+            let p = self
+                .plc
+                .as_deref_mut()
+                .filter(|p| p.user.is_some())
+                .ok_or_else(|| Error::state("no program is loaded").hint("sim program load FILE.il"))?;
             if p.mode == Mode::Stop && !p.faults.is_empty() && p.user.as_ref().is_some_and(|l| l.cpu.pc.is_none()) {
                 // Stepping after a fault starts afresh, as STOP → RUN does.
                 p.run_scans = 0;

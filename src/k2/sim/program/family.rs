@@ -237,8 +237,11 @@ impl Family for K2Family {
         let o = self.one(text)?;
         let (area, q, what) = if want_timer { (Area::T, AREA_TQ, "timer") } else { (Area::C, AREA_CQ, "counter") };
         if o.area != area || o.width != KW::Element {
-            return Err(OperandError::new(format!("{} is not a {what}", o.canonical()))
-                .hint(if want_timer { "timers are T0…T255" } else { "counters are C0…C255" }));
+            return Err(OperandError::new(format!("{} is not a {what}", o.canonical())).hint(if want_timer {
+                "timers are T0…T255"
+            } else {
+                "counters are C0…C255"
+            }));
         }
         Ok(Element {
             number: o.byte,

@@ -23,10 +23,10 @@
 //! switch is a setting (`sim switch run|stop`). A serious error (watchdog, bad indirect
 //! address, call depth) stops the CPU with a fault record.
 
+pub mod debug;
 pub mod family;
 pub mod irq;
 pub mod motion;
-pub mod debug;
 
 #[cfg(test)]
 mod tests;

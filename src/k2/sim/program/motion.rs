@@ -131,15 +131,17 @@ impl K2Machine<'_> {
                 st.err = 4;
             } else {
                 let cur = self.sim.mem.sm_dword(regs.pos_cv) as i32 as i64;
-                let plan: Result<(Vec<(u64, u64)>, bool, u64), u8> = match sid {
+                let plan: Result<Plan, u8> = match sid {
                     id::PREL | id::PABS => {
                         let (minf, maxf, time) = (vals[2] as u16 as u64, vals[3] as u64, vals[4] as u16 as u64);
                         let target = vals[5] as i32 as i64;
                         let dist = if sid == id::PREL { target } else { target - cur };
-                        check(minf, maxf, max_hz, MIN_HZ).map(|_| (ramp(minf, maxf, time, dist.unsigned_abs()), dist < 0, 0))
+                        check(minf, maxf, max_hz, MIN_HZ)
+                            .map(|_| (ramp(minf, maxf, time, dist.unsigned_abs()), dist < 0, 0))
                     }
                     id::PHOME => {
-                        let (dirc, minf, maxf, time) = (vals[5], vals[6] as u16 as u64, vals[7] as u64, vals[8] as u16 as u64);
+                        let (dirc, minf, maxf, time) =
+                            (vals[5], vals[6] as u16 as u64, vals[7] as u64, vals[8] as u16 as u64);
                         check(minf, maxf, max_hz, MIN_HZ).map(|_| {
                             let mut segs = ramp(minf, maxf, time, ENDLESS);
                             // Up to speed, then run until the home signal.
@@ -150,7 +152,8 @@ impl K2Machine<'_> {
                     }
                     id::PJOG => {
                         let (maxf, dirc) = (vals[2] as u64, vals[3]);
-                        check(MIN_HZ, maxf, max_hz, MIN_HZ).map(|_| (vec![(cycle_ns(maxf), ENDLESS)], dirc & 1 != 0, maxf))
+                        check(MIN_HZ, maxf, max_hz, MIN_HZ)
+                            .map(|_| (vec![(cycle_ns(maxf), ENDLESS)], dirc & 1 != 0, maxf))
                     }
                     _ => {
                         let f = follow_hz(vals);
@@ -233,6 +236,9 @@ impl K2Machine<'_> {
         Ok(true)
     }
 }
+
+/// A move to start: segments, reverse, constant frequency (0 for ramps).
+type Plan = (Vec<(u64, u64)>, bool, u64);
 
 /// PFLO_F's output frequency F × NUM / DENOM.
 fn follow_hz(vals: &[u32]) -> u64 {

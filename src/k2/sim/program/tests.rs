@@ -111,7 +111,8 @@ fn a_program_starts_a_pulse_train_with_pls() {
 fn an_endless_loop_trips_the_watchdog_and_stops_the_cpu() {
     // K80S: a scan past the watchdog stops the CPU and turns outputs off; a fault is recorded.
     let (mut s, clock) = sim();
-    s.load_program("LD %SM0.0\nS %Q0.0, 2\nLD %I0.0\nJMPC LOOP\nJMP END\nLOOP: LD %SM0.0\nJMP LOOP\nEND:", "wd.il").unwrap();
+    s.load_program("LD %SM0.0\nS %Q0.0, 2\nLD %I0.0\nJMPC LOOP\nJMP END\nLOOP: LD %SM0.0\nJMP LOOP\nEND:", "wd.il")
+        .unwrap();
     clock.step(Duration::from_millis(5));
     assert!(on(&mut s, "Q0.0") && on(&mut s, "Q0.1"));
     set(&mut s, "I0.0", Value::Bool(true));
@@ -280,7 +281,8 @@ fn the_instruction_table_in_docs_is_current() {
 
 // ---- position control (K2 §3.4.3) --------------------------------------------------
 
-const PHOME: &str = "(* Network 0 *)\nLD %SM0.0\nPHOME 0, %M0.0, %M0.1, %M0.2, %VW0, %VW2, %VW4, %VD6, %VW10, %M0.4, %M0.5, %MB1\n";
+const PHOME: &str =
+    "(* Network 0 *)\nLD %SM0.0\nPHOME 0, %M0.0, %M0.1, %M0.2, %VW0, %VW2, %VW4, %VD6, %VW10, %M0.4, %M0.5, %MB1\n";
 
 fn home_setup(s: &mut K2Sim) {
     // MODE 1 (HOME only), DIRC 1 (backward), MINF 200 Hz, MAXF 5 kHz, TIME 100 ms.
@@ -315,8 +317,11 @@ fn the_manuals_phome_snippet_clears_the_current_value_on_done() {
 fn the_manuals_phome_snippet_loads_a_new_current_value_on_done() {
     // K2 §3.4.3.1 method 2: MOVE DI#100, %SMD208 / ST %SM201.4 → SMD212 = 100.
     let (mut s, clock) = sim();
-    s.load_program(&format!("{PHOME}(* Network 1 *)\nLD %M0.4\nR_TRIG\nMOVE DI # 100, %SMD208\nST %SM201.4"), "home2.il")
-        .unwrap();
+    s.load_program(
+        &format!("{PHOME}(* Network 1 *)\nLD %M0.4\nR_TRIG\nMOVE DI # 100, %SMD208\nST %SM201.4"),
+        "home2.il",
+    )
+    .unwrap();
     home_setup(&mut s);
     set(&mut s, "M0.0", Value::Bool(true));
     clock.step(Duration::from_millis(300));
