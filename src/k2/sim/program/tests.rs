@@ -453,3 +453,29 @@ fn a_breakpoint_halts_and_steps_show_the_current_result_and_operands() {
     assert_eq!(s.plc().unwrap().mode, Mode::Run);
     assert!(s.mem.v[1] > vw0 + 5, "running again");
 }
+
+#[test]
+fn random_il_never_panics_the_loader() {
+    // Hostile input: token soup from the dialect's own pieces, 3000 programs.
+    let pieces = [
+        "LD", "ST", "MOVE", "ADD", "JMP", "L:", "(*", "*)", "%", "VW", "VD", "V", "M0.", "SM", "T", "C", "#", "16#",
+        "DI#", "*%VD", "&VB", ",", " ", "\n", "-", "9", "0", "4095", "65536", "(", ")", "PHOME", "ATCH", "PROGRAM",
+        "INTERRUPT", "END_PROGRAM", "TON", "CTUD", ".", "/REAL", "T#", "ms", "ä", "\t", "R_TRIG", "LDW>", "BLKMOVE",
+    ];
+    let (mut s, _) = sim();
+    let mut seed = 0x2545_F491_4F6C_DD1Du64;
+    for _ in 0..3000 {
+        let mut text = String::new();
+        for _ in 0..40 {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            text.push_str(pieces[(seed % pieces.len() as u64) as usize]);
+        }
+        if s.compile(&text, "fuzz.il").is_ok() {
+            // Whatever loads must also run without panicking.
+            let _ = s.load_program(&text, "fuzz.il");
+            let _ = s.scan_n(3);
+        }
+    }
+}
