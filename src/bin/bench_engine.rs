@@ -47,7 +47,7 @@ fn raw_speed() {
     let prog = s.compile(&user_program(), "bench.il").unwrap();
     let mut cpu = Cpu::new(&prog);
     let mut inst = Vec::new();
-    let scans = 200_000u64;
+    let scans = std::env::var("BENCH_SCANS").ok().and_then(|v| v.parse().ok()).unwrap_or(200_000u64);
     let t = Instant::now();
     let mut n = 0u64;
     for k in 0..scans {
@@ -68,7 +68,9 @@ fn hour() {
     s.enable_agent(DEFAULT_BASE).unwrap();
     s.load_program(&user_program(), "user.il").unwrap();
     let polls = s.space().parse("SMB66").unwrap();
-    let hour = Duration::from_secs(3600);
+    // BENCH_SECONDS shortens the run (for callgrind).
+    let secs = std::env::var("BENCH_SECONDS").ok().and_then(|v| v.parse().ok()).unwrap_or(3600);
+    let hour = Duration::from_secs(secs);
     let step = Duration::from_millis(10);
     let t = Instant::now();
     for _ in 0..(hour.as_millis() / step.as_millis()) {
@@ -78,7 +80,7 @@ fn hour() {
     let wall = t.elapsed();
     let p = s.plc().unwrap();
     println!(
-        "one simulated hour, helper + 1000-instruction program: wall {wall:.2?} ({:.0}× real time); {} scans of {:.3} ms; {} instructions ({:.1} M/s)",
+        "{secs} simulated s, helper + 1000-instruction program: wall {wall:.2?} ({:.0}× real time); {} scans of {:.3} ms; {} instructions ({:.1} M/s)",
         hour.as_secs_f64() / wall.as_secs_f64(),
         p.stats.scans,
         p.stats.last_ns as f64 / 1e6,

@@ -210,7 +210,11 @@ impl Cpu {
         };
         let before = self.executed;
         let cost_before = self.spent_ns;
-        let exit = self.exec(prog, m, start, limit, brk);
+        let exit = if limit == u64::MAX && brk.is_none() {
+            self.exec::<M, false>(prog, m, start, limit, None)
+        } else {
+            self.exec::<M, true>(prog, m, start, limit, brk)
+        };
         ScanOutcome { instructions: self.executed - before, cost_ns: self.spent_ns - cost_before, exit }
     }
 
@@ -235,7 +239,7 @@ impl Cpu {
         self.stack = 0;
         let (before, cost_before) = (self.executed, self.spent_ns);
         let entry = prog.pous.get(pou as usize).map_or(0, |p| p.entry);
-        let exit = self.exec(prog, m, entry, u64::MAX, None);
+        let exit = self.exec::<M, false>(prog, m, entry, u64::MAX, None);
         (self.cr, self.stack, self.parens, self.calls, self.pc) = saved;
         self.now_ns = saved_now;
         ScanOutcome { instructions: self.executed - before, cost_ns: self.spent_ns - cost_before, exit }
@@ -258,7 +262,15 @@ impl Cpu {
         Exit::Fault(f)
     }
 
-    fn exec<M: Machine>(&mut self, prog: &Program, m: &mut M, start: u32, limit: u64, brk: Option<&[bool]>) -> Exit {
+    /// The interpreter loop; `STEP` compiles in the step limit and breakpoint checks.
+    fn exec<M: Machine, const STEP: bool>(
+        &mut self,
+        prog: &Program,
+        m: &mut M,
+        start: u32,
+        limit: u64,
+        brk: Option<&[bool]>,
+    ) -> Exit {
         let code = &prog.code[..];
         let cost = &prog.cost[..];
         let wd = prog.costs.watchdog_ns;
@@ -267,24 +279,30 @@ impl Cpu {
         let mut first = true;
         let base_depth = self.calls.len();
         loop {
-            if left == 0 {
-                self.pc = Some(pc as u32);
-                return Exit::Paused(pc as u32);
-            }
-            if let Some(b) = brk {
-                if !first && b.get(pc).copied().unwrap_or(false) {
+            if STEP {
+                if left == 0 {
                     self.pc = Some(pc as u32);
                     return Exit::Paused(pc as u32);
                 }
+                if let Some(b) = brk {
+                    if !first && b.get(pc).copied().unwrap_or(false) {
+                        self.pc = Some(pc as u32);
+                        return Exit::Paused(pc as u32);
+                    }
+                }
+                first = false;
+                left -= 1;
             }
-            first = false;
-            left -= 1;
             let Some(ins) = code.get(pc) else {
                 return self.fault(prog, pc as u32, Fault::new(FaultKind::Instruction, "ran off the program"));
             };
-            self.spent_ns += cost[pc] as u64;
+            self.spent_ns += cost.get(pc).copied().unwrap_or(0) as u64;
             self.executed += 1;
-            if self.spent_ns - self.wdt_mark_ns > wd {
+            // Only a jump or call can make a scan run long (straight-line code ends), so
+            // the watchdog is checked there and at the end of a POU.
+            if matches!(ins, Ins::Jmp { .. } | Ins::Jmpc { .. } | Ins::Cal { .. } | Ins::End | Ins::Ret { .. })
+                && self.spent_ns - self.wdt_mark_ns > wd
+            {
                 let f = Fault::new(
                     FaultKind::Watchdog,
                     format!("the scan ran past the watchdog limit of {} ms (an endless loop?)", wd as f64 / 1e6),
@@ -357,9 +375,9 @@ impl Cpu {
                     self.cr = if *rising { self.cr && !prev } else { !self.cr && prev };
                 }
                 Ins::Compare { comb, op, ty, a, b } => {
-                    let (x, y) = match (read(m, a, *ty), read(m, b, *ty)) {
-                        (Ok(x), Ok(y)) => (x, y),
-                        (Err(f), _) | (_, Err(f)) => return self.fault(prog, (pc - 1) as u32, f),
+                    let (x, y) = match (val(m, a, *ty), val(m, b, *ty)) {
+                        (Some(x), Some(y)) => (x, y),
+                        _ => return self.fault(prog, (pc - 1) as u32, bad(m, &[a, b], *ty)),
                     };
                     let r = compare(*ty, *op, x, y);
                     match comb {
@@ -373,9 +391,12 @@ impl Cpu {
                 }
                 Ins::Move { ty, a, out } => {
                     if self.cr {
-                        let r = read(m, a, *ty).and_then(|v| write(m, out, *ty, v));
-                        if let Err(f) = r {
-                            return self.fault(prog, (pc - 1) as u32, f);
+                        let ok = match val(m, a, *ty) {
+                            Some(v) => put(m, out, *ty, v),
+                            None => false,
+                        };
+                        if !ok {
+                            return self.fault(prog, (pc - 1) as u32, bad(m, &[a, out], *ty));
                         }
                     }
                 }
@@ -624,8 +645,48 @@ fn compare(ty: DataType, op: Cmp, x: u32, y: u32) -> bool {
 
 /// Arithmetic with S7-200 status: result wraps to the type's width, overflow is flagged;
 /// division by zero leaves the output unchanged and returns ENO = 0 (SM1.3 on the K2).
+/// An operand's raw value without building a fault (the hot path); `None` only for a
+/// pointer outside memory.
+#[inline(always)]
+fn val<M: Machine>(m: &M, o: &Opd, ty: DataType) -> Option<u32> {
+    match *o {
+        Opd::Imm(v) => Some(v),
+        Opd::Loc(l) => Some(m.get(l)),
+        Opd::Ind(p) => m.deref(m.get(p), super::width_of(ty)).map(|l| m.get(l)),
+    }
+}
+
+/// Writes an operand; `false` for a pointer outside memory.
+#[inline(always)]
+fn put<M: Machine>(m: &mut M, o: &Opd, ty: DataType, v: u32) -> bool {
+    match *o {
+        Opd::Imm(_) => true,
+        Opd::Loc(l) => {
+            m.set(l, v);
+            true
+        }
+        Opd::Ind(p) => match m.deref(m.get(p), super::width_of(ty)) {
+            Some(l) => {
+                m.set(l, v);
+                true
+            }
+            None => false,
+        },
+    }
+}
+
+/// The fault for the first of `ops` whose pointer is bad (cold path).
+#[cold]
+fn bad<M: Machine>(m: &M, ops: &[&Opd], ty: DataType) -> Fault {
+    ops.iter()
+        .find_map(|o| read(m, o, ty).err())
+        .unwrap_or_else(|| Fault::new(FaultKind::BadAddress, "bad indirect address"))
+}
+
 fn arith<M: Machine>(m: &mut M, op: Arith, ty: DataType, a: &Opd, b: &Opd, out: &Opd) -> Result<bool, Fault> {
-    let (x, y) = (read(m, a, ty)?, read(m, b, ty)?);
+    let (Some(x), Some(y)) = (val(m, a, ty), val(m, b, ty)) else {
+        return Err(bad(m, &[a, b], ty));
+    };
     if ty == DataType::Real {
         let (x, y) = (f32::from_bits(x), f32::from_bits(y));
         if matches!(op, Arith::Div | Arith::Mod) && y == 0.0 {
@@ -659,7 +720,9 @@ fn arith<M: Machine>(m: &mut M, op: Arith, ty: DataType, a: &Opd, b: &Opd, out: 
     let raw = mask(ty, r);
     let shown = as_i64(ty, raw);
     m.flags(Flags { zero: raw == 0, overflow, negative: shown < 0, div_zero: false });
-    write(m, out, ty, raw)?;
+    if !put(m, out, ty, raw) {
+        return Err(bad(m, &[out], ty));
+    }
     Ok(!overflow)
 }
 

@@ -235,6 +235,7 @@ pub trait Machine {
 }
 
 /// Reads an operand as a raw pattern of width `ty` (helper for family instructions).
+#[inline]
 pub fn read<M: Machine + ?Sized>(m: &M, o: &Opd, ty: DataType) -> Result<u32, Fault> {
     Ok(match *o {
         Opd::Imm(v) => v,
@@ -244,6 +245,7 @@ pub fn read<M: Machine + ?Sized>(m: &M, o: &Opd, ty: DataType) -> Result<u32, Fa
 }
 
 /// Writes an operand (helper for family instructions).
+#[inline]
 pub fn write<M: Machine + ?Sized>(m: &mut M, o: &Opd, ty: DataType, v: u32) -> Result<(), Fault> {
     match *o {
         Opd::Imm(_) => {}

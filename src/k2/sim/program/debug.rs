@@ -52,12 +52,14 @@ impl K2Sim {
                 .ok_or_else(|| Error::usage(format!("{} has no instruction on or after line {line}", l.source)))?
         };
         p.breaks[idx] = true;
+        p.has_breaks = true;
         Ok(format!("breakpoint at {}:{}: {}", l.source, l.prog.pos[idx].line, l.prog.text[idx]))
     }
 
     pub fn clear_breakpoints(&mut self) {
         if let Some(p) = self.plc.as_deref_mut() {
             p.breaks.iter_mut().for_each(|b| *b = false);
+            p.has_breaks = false;
         }
     }
 

@@ -279,7 +279,51 @@ pub struct K2Machine<'a> {
     pub raised: Vec<(Duration, crate::k2::instr::EventKind)>,
 }
 
+/// Writes a raw pattern into a byte area (S7 byte order), ignoring out-of-range locations.
+#[inline(always)]
+fn put(b: &mut [u8], w: Width, i: usize, v: u32) {
+    match w {
+        Width::Bit(k) => {
+            if let Some(x) = b.get_mut(i) {
+                *x = (*x & !(1 << k)) | (((v & 1) as u8) << k);
+            }
+        }
+        Width::Byte => {
+            if let Some(x) = b.get_mut(i) {
+                *x = v as u8
+            }
+        }
+        Width::Word => {
+            if let Some(x) = b.get_mut(i..i + 2) {
+                x.copy_from_slice(&(v as u16).to_be_bytes())
+            }
+        }
+        Width::DWord => {
+            if let Some(x) = b.get_mut(i..i + 4) {
+                x.copy_from_slice(&v.to_be_bytes())
+            }
+        }
+        Width::Element => {}
+    }
+}
+
 impl K2Machine<'_> {
+    /// The same bookkeeping as a client's write: HSC CV holds, position bits, E2PROM wear.
+    #[cold]
+    #[inline(never)]
+    fn hook(&mut self, area: Area, l: Loc) {
+        let kw = match l.width {
+            Width::Bit(k) => KW::Bit(k),
+            Width::Byte => KW::Byte,
+            Width::Word => KW::Word,
+            _ => KW::DWord,
+        };
+        let op = K2Operand::new(area, kw, l.index);
+        let mut raised = std::mem::take(&mut self.raised);
+        self.sim.after_write(&op, &mut raised);
+        self.raised = raised;
+    }
+
     fn area(&self, a: u8) -> &[u8] {
         match a {
             0 => &self.sim.mem.i,
@@ -294,6 +338,7 @@ impl K2Machine<'_> {
     }
 
     /// Registers the CPU owns: SMB0 (system bits) and the position current values.
+    #[inline(never)]
     fn read_only(&self, l: Loc) -> bool {
         if l.area != 4 {
             return false;
@@ -335,71 +380,50 @@ impl Machine for K2Machine<'_> {
     #[inline]
     fn set(&mut self, l: Loc, v: u32) {
         let i = l.index as usize;
+        let m = &mut self.sim.mem;
         match l.area {
+            // I, Q, M, AI, AQ: plain memory.
+            0 => put(&mut m.i, l.width, i, v),
+            1 => put(&mut m.q, l.width, i, v),
+            2 => put(&mut m.m, l.width, i, v),
+            5 => put(&mut m.ai, l.width, i, v),
+            6 => put(&mut m.aq, l.width, i, v),
+            // V: E2PROM wear is counted for the backup area.
+            3 => {
+                put(&mut m.v, l.width, i, v);
+                if l.index + l.width.bytes() > catalog::EEPROM_FIRST {
+                    self.hook(Area::V, l);
+                }
+            }
+            // SM: the CPU owns SMB0 and the position values; writes act like a client's.
+            4 => {
+                if self.read_only(l) {
+                    return;
+                }
+                put(&mut self.sim.mem.sm, l.width, i, v);
+                self.hook(Area::SM, l);
+            }
             7 => {
-                if let Some(x) = self.sim.mem.t.get_mut(i) {
+                if let Some(x) = m.t.get_mut(i) {
                     *x = v as u16 as i16
                 }
             }
             8 => {
-                if let Some(x) = self.sim.mem.c.get_mut(i) {
+                if let Some(x) = m.c.get_mut(i) {
                     *x = v as u16 as i16
                 }
             }
             AREA_TQ => {
-                if let Some(x) = self.sim.mem.tq.get_mut(i) {
+                if let Some(x) = m.tq.get_mut(i) {
                     *x = (v & 1) as u8
                 }
             }
             AREA_CQ => {
-                if let Some(x) = self.sim.mem.cq.get_mut(i) {
+                if let Some(x) = m.cq.get_mut(i) {
                     *x = (v & 1) as u8
                 }
             }
-            a => {
-                if a == 4 && self.read_only(l) {
-                    return;
-                }
-                let Some(area) = Area::ALL.get(a as usize).copied() else { return };
-                let b = self.sim.mem.area_mut(area);
-                match l.width {
-                    Width::Bit(k) => {
-                        if let Some(x) = b.get_mut(i) {
-                            *x = (*x & !(1 << k)) | (((v & 1) as u8) << k);
-                        }
-                    }
-                    Width::Byte => {
-                        if let Some(x) = b.get_mut(i) {
-                            *x = v as u8
-                        }
-                    }
-                    Width::Word => {
-                        if let Some(x) = b.get_mut(i..i + 2) {
-                            x.copy_from_slice(&(v as u16).to_be_bytes())
-                        }
-                    }
-                    Width::DWord => {
-                        if let Some(x) = b.get_mut(i..i + 4) {
-                            x.copy_from_slice(&v.to_be_bytes())
-                        }
-                    }
-                    Width::Element => {}
-                }
-                // The same bookkeeping as a client's write: HSC CV holds, position bits,
-                // E2PROM wear.
-                if a == 4 || (a == 3 && l.index + l.width.bytes() > catalog::EEPROM_FIRST) {
-                    let kw = match l.width {
-                        Width::Bit(k) => KW::Bit(k),
-                        Width::Byte => KW::Byte,
-                        Width::Word => KW::Word,
-                        _ => KW::DWord,
-                    };
-                    let op = K2Operand::new(area, kw, l.index);
-                    let mut raised = std::mem::take(&mut self.raised);
-                    self.sim.after_write(&op, &mut raised);
-                    self.raised = raised;
-                }
-            }
+            _ => {}
         }
     }
 

@@ -117,6 +117,8 @@ pub struct Plc {
     pub irq_ns: u64,
     /// Breakpoints: one flag per instruction of the user program.
     pub breaks: Vec<bool>,
+    /// Whether any of `breaks` is set (the scan checks this, not the vector).
+    pub has_breaks: bool,
     /// Where a DEBUG halt stopped (the next instruction).
     pub halted: Option<u32>,
     /// Q bytes in STOP (K2 §2.2.1: values from the hardware configuration; all off here).
@@ -139,6 +141,7 @@ impl Plc {
             paused_at: None,
             timed_next: [None; 2],
             breaks: Vec::new(),
+            has_breaks: false,
             halted: None,
             irq_ns: 0,
         }
@@ -179,6 +182,7 @@ impl K2Sim {
         let n = prog.source_instructions;
         let p = self.plc_mut();
         p.breaks = vec![false; prog.code.len()];
+        p.has_breaks = false;
         p.halted = None;
         if p.mode == Mode::Debug {
             p.mode = Mode::Run;
@@ -350,7 +354,7 @@ impl K2Sim {
         let now_ns = u64::try_from(t.as_nanos()).unwrap_or(u64::MAX);
         let mut fault = None;
         let mut raised = Vec::new();
-        let mask = if brk && p.breaks.iter().any(|b| *b) { Some(&p.breaks[..]) } else { None };
+        let mask = if brk && p.has_breaks { Some(&p.breaks[..]) } else { None };
         if let Some(l) = p.user.as_mut() {
             let mut m = K2Machine { sim: self, now: t, inst: &mut l.inst, raised: Vec::new() };
             let o = l.cpu.scan(&l.prog, &mut m, now_ns, limit, mask);
