@@ -647,7 +647,7 @@ fn an_endless_loop_trips_the_watchdog() {
     match o.exit {
         exec::Exit::Fault(f) => {
             assert_eq!(f.kind, FaultKind::Watchdog);
-            assert_eq!(f.line, 1);
+            assert_eq!((f.line, f.instruction.as_str()), (2, "JMP L"), "checked at the jump");
         }
         e => panic!("{e:?}"),
     }
