@@ -298,18 +298,16 @@ impl Cpu {
             };
             self.spent_ns += cost.get(pc).copied().unwrap_or(0) as u64;
             self.executed += 1;
+            pc += 1;
             // Only a jump or call can make a scan run long (straight-line code ends), so
             // the watchdog is checked there and at the end of a POU.
-            if matches!(ins, Ins::Jmp { .. } | Ins::Jmpc { .. } | Ins::Cal { .. } | Ins::End | Ins::Ret { .. })
-                && self.spent_ns - self.wdt_mark_ns > wd
-            {
-                let f = Fault::new(
-                    FaultKind::Watchdog,
-                    format!("the scan ran past the watchdog limit of {} ms (an endless loop?)", wd as f64 / 1e6),
-                );
-                return self.fault(prog, pc as u32, f);
+            macro_rules! watchdog {
+                () => {
+                    if self.spent_ns - self.wdt_mark_ns > wd {
+                        return self.fault(prog, (pc - 1) as u32, watchdog_fault(wd));
+                    }
+                };
             }
-            pc += 1;
             match ins {
                 Ins::Ld { loc, neg } => {
                     self.stack = (self.stack << 1) | self.cr as u32;
@@ -474,13 +472,18 @@ impl Cpu {
                         }
                     }
                 }
-                Ins::Jmp { to } => pc = *to as usize,
+                Ins::Jmp { to } => {
+                    watchdog!();
+                    pc = *to as usize
+                }
                 Ins::Jmpc { to, neg } => {
+                    watchdog!();
                     if self.cr ^ neg {
                         pc = *to as usize;
                     }
                 }
                 Ins::Cal { pou, cond } => {
+                    watchdog!();
                     if cond.is_none_or(|c| self.cr == c) {
                         if self.calls.len() >= MAX_CALL_DEPTH {
                             let f = Fault::new(
@@ -494,6 +497,7 @@ impl Cpu {
                     }
                 }
                 Ins::Ret { cond } => {
+                    watchdog!();
                     if cond.is_none_or(|c| self.cr == c) {
                         if self.calls.len() <= base_depth {
                             self.pc = None;
@@ -503,6 +507,7 @@ impl Cpu {
                     }
                 }
                 Ins::End => {
+                    watchdog!();
                     if self.calls.len() <= base_depth {
                         self.pc = None;
                         return Exit::Done;
@@ -645,6 +650,14 @@ fn compare(ty: DataType, op: Cmp, x: u32, y: u32) -> bool {
 
 /// Arithmetic with S7-200 status: result wraps to the type's width, overflow is flagged;
 /// division by zero leaves the output unchanged and returns ENO = 0 (SM1.3 on the K2).
+#[cold]
+fn watchdog_fault(wd: u64) -> Fault {
+    Fault::new(
+        FaultKind::Watchdog,
+        format!("the scan ran past the watchdog limit of {} ms (an endless loop?)", wd as f64 / 1e6),
+    )
+}
+
 /// An operand's raw value without building a fault (the hot path); `None` only for a
 /// pointer outside memory.
 #[inline(always)]

@@ -355,7 +355,7 @@ impl K2Machine<'_> {
 }
 
 impl Machine for K2Machine<'_> {
-    #[inline]
+    #[inline(always)]
     fn get(&self, l: Loc) -> u32 {
         let i = l.index as usize;
         let m = &self.sim.mem;
@@ -377,7 +377,7 @@ impl Machine for K2Machine<'_> {
         }
     }
 
-    #[inline]
+    #[inline(always)]
     fn set(&mut self, l: Loc, v: u32) {
         let i = l.index as usize;
         let m = &mut self.sim.mem;
