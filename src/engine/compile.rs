@@ -175,6 +175,8 @@ pub struct Program {
     pub code: Vec<Ins>,
     /// Cost of each instruction in ns (parallel to `code`).
     pub cost: Vec<u32>,
+    /// Cost class of each instruction (to re-cost it with another table).
+    pub class: Vec<CostClass>,
     /// Source position of each instruction (parallel to `code`).
     pub pos: Vec<Pos>,
     /// Network number of each instruction (0 before the first marker).
@@ -196,6 +198,12 @@ impl Program {
     pub fn main(&self) -> &Pou {
         &self.pous[0]
     }
+    /// Re-costs the program with another table (`sim program costs`).
+    pub fn set_costs(&mut self, t: CostTable) {
+        self.cost = self.class.iter().map(|c| t.ns(*c)).collect();
+        self.costs = t;
+    }
+
     pub fn pou(&self, name: &str) -> Option<u32> {
         self.pous.iter().position(|p| p.name.eq_ignore_ascii_case(name)).map(|i| i as u32)
     }
@@ -226,6 +234,7 @@ pub fn compile<F: Family + ?Sized>(text: &str, file: &str, fam: &F) -> Result<Pr
             file: file.to_string(),
             code: Vec::new(),
             cost: Vec::new(),
+            class: Vec::new(),
             pos: Vec::new(),
             network: Vec::new(),
             text: Vec::new(),
@@ -291,15 +300,14 @@ pub fn compile<F: Family + ?Sized>(text: &str, file: &str, fam: &F) -> Result<Pr
                     return Err(err(file, *pos, format!("label {name} is defined twice in {}", cx.prog.pous[pi].name)));
                 }
                 Stmt::Instr { mnemonic, operands, pos } => {
-                    let ins = cx.instr(mnemonic, operands, *pos, &mut jumps, &mut calls)?;
-                    let (ins, cost) = ins;
-                    cx.push(ins, cost, *pos, network, mnemonic, operands);
+                    let (ins, class) = cx.instr(mnemonic, operands, *pos, &mut jumps, &mut calls)?;
+                    cx.push(ins, class, *pos, network, mnemonic, operands);
                     cx.prog.source_instructions += 1;
                 }
                 _ => {}
             }
         }
-        cx.push(Ins::End, cx.prog.costs.ns(CostClass::Jump), Pos::default(), network, "(end)", &[]);
+        cx.push(Ins::End, CostClass::Jump, Pos::default(), network, "(end)", &[]);
         for (at, name, pos) in jumps {
             let Some(&to) = labels.get(&name) else {
                 let near = suggest(&name, labels.keys().map(|s| s.as_str()));
@@ -371,9 +379,10 @@ enum Raw {
 }
 
 impl<F: Family + ?Sized> Ctx<'_, F> {
-    fn push(&mut self, ins: Ins, cost: u32, pos: Pos, network: u32, m: &str, ops: &[OperandText]) {
+    fn push(&mut self, ins: Ins, class: CostClass, pos: Pos, network: u32, m: &str, ops: &[OperandText]) {
         self.prog.code.push(ins);
-        self.prog.cost.push(cost);
+        self.prog.cost.push(self.prog.costs.ns(class));
+        self.prog.class.push(class);
         self.prog.pos.push(pos);
         self.prog.network.push(network);
         let ops: Vec<&str> = ops.iter().map(|o| o.text.as_str()).collect();
@@ -515,12 +524,11 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
         pos: Pos,
         jumps: &mut Vec<(usize, String, Pos)>,
         calls: &mut Vec<(usize, String, Pos)>,
-    ) -> Result<(Ins, u32)> {
+    ) -> Result<(Ins, CostClass)> {
         let here = self.prog.code.len();
         if let Some(def) = isa::lookup(m) {
             self.arity(m, def.operands, ops, pos)?;
-            let cost = self.prog.costs.ns(def.cost);
-            return Ok((self.core(def, ops, pos, here, jumps, calls)?, cost));
+            return Ok((self.core(def, ops, pos, here, jumps, calls)?, def.cost));
         }
         if let Some(sp) = self.specials.iter().find(|s| s.name == m) {
             let n = sp.args.len() as u8;
@@ -551,7 +559,7 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
             let inst = self.special_inst;
             self.special_inst += 1;
             let ins = Ins::Special { id: sp.id, inst, edge: sp.edge, args: args.into(), types: types.into() };
-            return Ok((ins, self.prog.costs.ns(CostClass::Special)));
+            return Ok((ins, CostClass::Special));
         }
         // Unknown: suggest from the core table, the comparisons and the family's own.
         let names = isa::CORE

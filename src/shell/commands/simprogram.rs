@@ -10,7 +10,7 @@ use crate::k2::sim::K2Sim;
 use crate::output::Outcome;
 use crate::shell::{Args, Shell};
 
-pub const USAGE: &str = "sim program load FILE.il | sim program unload | sim program | sim cpu run|stop|pause | sim stop | sim pause | sim switch run|stop | sim scan [N] | sim break LINE|FILE:LINE|network N|clear | sim stepi [N] | sim stepn";
+pub const USAGE: &str = "sim program load FILE.il | sim program unload | sim program | sim program costs [bit=200ns … overhead=0.3ms min_scan=1ms watchdog=300ms] | sim cpu run|stop|pause | sim stop | sim pause | sim switch run|stop | sim scan [N] | sim break LINE|FILE:LINE|network N|clear | sim stepi [N] | sim stepn";
 
 fn ms(ns: u64) -> f64 {
     (ns as f64 / 1e6 * 1000.0).round() / 1000.0
@@ -93,6 +93,20 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
                     .map_err(|e| Error::io(format!("cannot read {path}: {e}")).device(name.clone()))?;
                 let msg = s.load_program(&text, path).map_err(|e| e.device(name.clone()))?;
                 Ok(status(s, &name).text(msg))
+            }
+            Some("costs") => {
+                let t = s.set_costs(&words[2..].join(" ")).map_err(|e| e.device(name.clone()))?;
+                let classes: Vec<String> =
+                    crate::engine::CostClass::ALL.iter().map(|c| format!("{}={}ns", c.name(), t.ns(*c))).collect();
+                let text = format!(
+                    "{}; element={}ns overhead={} ms min_scan={} ms watchdog={} ms",
+                    classes.join(" "),
+                    t.per_element_ns,
+                    ms(t.overhead_ns),
+                    ms(t.min_scan_ns),
+                    ms(t.watchdog_ns)
+                );
+                Ok(Outcome::new("sim").text(text).with("costs", t))
             }
             Some("unload") => {
                 s.unload_program();

@@ -174,6 +174,8 @@ pub fn default_costs() -> CostTable {
 /// The K2 operand space as the engine sees it.
 pub struct K2Family {
     pub space: K2Space,
+    /// A cost table set by the user (`sim program costs`), else the defaults.
+    pub costs: Option<CostTable>,
 }
 
 fn op_err(e: crate::core::Error) -> OperandError {
@@ -261,7 +263,7 @@ impl Family for K2Family {
     }
 
     fn costs(&self) -> CostTable {
-        default_costs()
+        self.costs.clone().unwrap_or_else(default_costs)
     }
 
     fn events(&self) -> u32 {

@@ -152,6 +152,25 @@ impl Plc {
     }
 }
 
+const COST_KEYS: &str = "keys: bit compare move arith real timer jump call special element overhead min_scan watchdog";
+
+/// `200ns`, `1.5us`, `2µs`, `0.3ms`, `1s` → ns.
+fn parse_ns(v: &str) -> Option<u64> {
+    let v = v.trim();
+    let split = v.find(|c: char| !(c.is_ascii_digit() || c == '.'))?;
+    let (num, unit) = v.split_at(split);
+    let n: f64 = num.parse().ok()?;
+    let f = match unit {
+        "ns" => 1.0,
+        "us" | "µs" => 1e3,
+        "ms" => 1e6,
+        "s" => 1e9,
+        _ => return None,
+    };
+    let ns = n * f;
+    (ns.is_finite() && (0.0..=3.6e12).contains(&ns)).then_some(ns.round() as u64)
+}
+
 /// Scan times in ms for the SM registers (saturating).
 fn ms16(ns: u64) -> u16 {
     (ns / 1_000_000).min(u16::MAX as u64) as u16
@@ -159,7 +178,42 @@ fn ms16(ns: u64) -> u16 {
 
 impl K2Sim {
     fn family(&self) -> K2Family {
-        K2Family { space: *self.space() }
+        K2Family { space: *self.space(), costs: self.plc.as_ref().map(|p| p.costs.clone()) }
+    }
+
+    /// Changes the cost table (`sim program costs bit=150ns overhead=0.5ms min_scan=2ms
+    /// watchdog=500ms …`); loaded programs are re-costed. Returns the table.
+    pub fn set_costs(&mut self, spec: &str) -> Result<CostTable> {
+        self.advance();
+        let mut t = self.plc.as_ref().map_or_else(family::default_costs, |p| p.costs.clone());
+        for item in spec.split_whitespace() {
+            let (k, v) = item
+                .split_once('=')
+                .ok_or_else(|| Error::usage(format!("`{item}` is not KEY=DURATION")).hint(COST_KEYS))?;
+            let ns = parse_ns(v).ok_or_else(|| {
+                Error::usage(format!("{k}={v}: a duration with a unit, e.g. 200ns, 1.5us, 0.3ms")).hint(COST_KEYS)
+            })?;
+            let k = k.to_ascii_lowercase();
+            match k.as_str() {
+                "overhead" => t.overhead_ns = ns,
+                "min_scan" => t.min_scan_ns = ns,
+                "watchdog" if ns > 0 => t.watchdog_ns = ns,
+                "element" => t.per_element_ns = ns.min(u32::MAX as u64) as u32,
+                _ => {
+                    let c = crate::engine::CostClass::ALL
+                        .iter()
+                        .find(|c| c.name() == k)
+                        .ok_or_else(|| Error::usage(format!("no cost `{k}`")).hint(COST_KEYS))?;
+                    t.class_ns[*c as usize] = ns.min(u32::MAX as u64) as u32;
+                }
+            }
+        }
+        let p = self.plc_mut();
+        p.costs = t.clone();
+        for l in [&mut p.user, &mut p.helper].into_iter().flatten() {
+            l.prog.set_costs(t.clone());
+        }
+        Ok(t)
     }
 
     /// Compiles IL text for this model (load errors name `file:line:column`).

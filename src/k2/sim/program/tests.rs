@@ -523,3 +523,21 @@ fn random_il_never_panics_the_loader() {
         }
     }
 }
+
+#[test]
+fn the_cost_table_is_configurable() {
+    let (mut s, clock) = sim();
+    s.load_program("LD %SM0.0\nINC %VW0", "c.il").unwrap();
+    let t = s.set_costs("min_scan=5ms arith=1ms").unwrap();
+    assert_eq!((t.min_scan_ns, t.class_ns[crate::engine::CostClass::Arith as usize]), (5_000_000, 1_000_000));
+    let before = get(&mut s, "VW0").as_i64();
+    clock.step(Duration::from_millis(50));
+    assert_eq!(get(&mut s, "VW0").as_i64() - before, 10, "a 5 ms minimum scan: 10 scans in 50 ms");
+    s.set_costs("min_scan=0ms").unwrap();
+    clock.step(Duration::from_millis(10));
+    s.advance();
+    // 1 ms INC + 0.2 µs LD + 1 µs end + 0.3 ms overhead.
+    assert_eq!(s.plc().unwrap().stats.last_ns, 1_000_000 + 200 + 1_000 + 300_000);
+    assert!(s.set_costs("bogus=1ms").unwrap_err().hint.as_deref().unwrap().contains("watchdog"));
+    assert!(s.set_costs("bit=fast").is_err());
+}
