@@ -15,15 +15,20 @@
 //! When: a routine runs at its event's virtual time. Events between two scans (an input
 //! written by a client, a timed interrupt, a PTO finishing) run after the earlier scan's
 //! program and before the next scan's program, in time order; the routine's cost-table
-//! time is added to the next scan. Edges on I0.0–I0.3 are seen when the input image
-//! changes by a write (shell, Lua, Modbus); signals from `sim input` sources are not
-//! edge-interrupt sources (they drive the high-speed counters).
+//! time is added to the next scan. Edges on I0.0–I0.3 come from writes to the input image
+//! (shell, Lua, Modbus: at the write's time) and from `sim input` signals (at each edge's
+//! time, computed from the wave; a routine between two hardware steps sees the memory as of
+//! the step's end).
 
 use super::super::K2Sim;
 use super::family::K2Machine;
 use super::Mode;
 use crate::engine::exec::Exit;
 use std::time::Duration;
+
+/// Most edge interrupts a signal source raises in one step (a 200 kHz signal on an
+/// attached input would otherwise run 400 000 routines per simulated second).
+pub const MAX_SOURCE_EDGES: u64 = 100_000;
 
 /// Timed interrupt events and their interval registers (SMB34, SMB35).
 pub const TIMED: [(u32, u32); 2] = [(10, 34), (11, 35)];
@@ -133,9 +138,37 @@ impl K2Sim {
         best
     }
 
+    /// Edges of `sim input` signals on I0.0–I0.3 in (from, to] whose events have routines
+    /// attached, queued at their times (at most [`MAX_SOURCE_EDGES`] per step).
+    fn queue_source_edges(&mut self, from: Duration, to: Duration) {
+        if to <= from || self.inputs.edges().is_empty() || !self.interrupts_live() {
+            return;
+        }
+        let Some(cpu) = self.plc.as_ref().and_then(|p| p.user.as_ref()).map(|u| &u.cpu) else { return };
+        let mut q = Vec::new();
+        for &(pin, rise, fall) in self.inputs.edges() {
+            if pin.0 != 0 || pin.1 > 3 {
+                continue;
+            }
+            for (wave, rising) in [(rise, true), (fall, false)] {
+                let ev = edge_event(pin.1, rising);
+                if cpu.handler(ev).is_none() {
+                    continue;
+                }
+                let (a, b) = (wave.rises(from), wave.rises(to));
+                for k in a + 1..=b.min(a + MAX_SOURCE_EDGES) {
+                    q.push((wave.rise_time(k), ev));
+                }
+            }
+        }
+        self.irq_queue.extend(q);
+    }
+
     /// Brings the hardware to `until`, running timed and hardware-event routines at their
     /// times on the way.
     pub(crate) fn advance_with_interrupts(&mut self, until: Duration) {
+        let from = self.last;
+        self.queue_source_edges(from, until);
         while let Some((t, i)) = self.next_timed(until) {
             self.advance_hw(t);
             self.dispatch_queued();

@@ -541,3 +541,24 @@ fn the_cost_table_is_configurable() {
     assert!(s.set_costs("bogus=1ms").unwrap_err().hint.as_deref().unwrap().contains("watchdog"));
     assert!(s.set_costs("bit=fast").is_err());
 }
+
+#[test]
+fn a_signal_on_i0_1_runs_its_edge_routine_at_every_edge() {
+    // 100 Hz on I0.1 from t = 0: rising edges (event 2) at 10, 20 … 1000 ms, falling edges
+    // (event 3) half a period later, at 15 … 995 ms.
+    let (mut s, clock) = sim();
+    s.load_program(
+        "PROGRAM MAIN\nLD %SM0.1\nATCH UP, 2\nATCH DOWN, 3\nENI\nEND_PROGRAM\n\
+         INTERRUPT UP\nLD %SM0.0\nINC %VW0\nEND_INTERRUPT\nINTERRUPT DOWN\nLD %SM0.0\nINC %VW2\nEND_INTERRUPT",
+        "sig.il",
+    )
+    .unwrap();
+    let pin = (0, 1);
+    s.add_source(crate::k2::sim::inputs::Source::Freq {
+        pin,
+        wave: crate::k2::sim::inputs::Wave::new(100, Duration::ZERO),
+    })
+    .unwrap();
+    clock.step(Duration::from_secs(1));
+    assert_eq!((get(&mut s, "VW0"), get(&mut s, "VW2")), (Value::Int(100), Value::Int(99)));
+}
