@@ -67,13 +67,16 @@ pub struct Loaded {
     pub cpu: Cpu,
     /// Where it came from (file name, or "helper").
     pub source: String,
+    /// The IL text it was compiled from (a snapshot stores this and the CPU state; the
+    /// compiled program is rebuilt from it).
+    pub text: String,
     /// Per-occurrence state of the K2 instructions.
     pub inst: Vec<motion::Inst>,
 }
 
 impl Loaded {
-    fn new(prog: Program, source: String) -> Loaded {
-        Loaded { cpu: Cpu::new(&prog), prog, source, inst: Vec::new() }
+    fn new(prog: Program, source: String, text: &str) -> Loaded {
+        Loaded { cpu: Cpu::new(&prog), prog, source, text: text.to_string(), inst: Vec::new() }
     }
     fn reset(&mut self) {
         self.cpu = Cpu::new(&self.prog);
@@ -241,7 +244,7 @@ impl K2Sim {
         if p.mode == Mode::Debug {
             p.mode = Mode::Run;
         }
-        p.user = Some(Loaded::new(prog, file.to_string()));
+        p.user = Some(Loaded::new(prog, file.to_string(), text));
         if let Some(h) = &mut p.helper {
             h.reset();
         }
@@ -259,7 +262,7 @@ impl K2Sim {
         let prog = self.compile(text, source)?;
         let now = self.last;
         let p = self.plc_mut();
-        p.helper = Some(Loaded::new(prog, source.to_string()));
+        p.helper = Some(Loaded::new(prog, source.to_string(), text));
         if p.user.is_none() {
             p.run_scans = 0;
             p.next_scan = now;

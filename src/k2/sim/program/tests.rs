@@ -234,6 +234,15 @@ fn a_timed_interrupt_fires_at_its_0_1_ms_interval() {
     .unwrap();
     clock.step(Duration::from_secs(1));
     assert_eq!(get(&mut s, "VW20"), Value::Int(2000));
+    // Timed interrupt 1 at the 0.1 ms base itself: 10 000 a second.
+    s.load_program(
+        "PROGRAM MAIN\nLD %SM0.1\nMOVE B#1, %SMB35\nATCH FAST, 11\nENI\nEND_PROGRAM\n\
+         INTERRUPT FAST\nLD %SM0.0\nINC %VW24\nEND_INTERRUPT",
+        "fast.il",
+    )
+    .unwrap();
+    clock.step(Duration::from_secs(1));
+    assert_eq!(get(&mut s, "VW24"), Value::Int(10_000));
     s.load_program(
         "PROGRAM MAIN\nLD %SM0.1\nMOVE B#3, %SMB34\nATCH TICK, 10\nEND_PROGRAM\nINTERRUPT TICK\nLD %SM0.0\nINC %VW22",
         "off.il",
