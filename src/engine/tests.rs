@@ -744,3 +744,35 @@ fn hostile_text_never_panics() {
         let _ = compile(s, "x.il", &Toy);
     }
 }
+
+#[test]
+fn every_timer_kind_at_every_resolution_class() {
+    // K80S kinds (TON, TOFF, TMR, TMON, TRTG) and K2/IEC TON, TOF, TP, each on a 1 ms, a
+    // 10 ms and a 100 ms timer (the toy family's classes mirror the K2's), preset 5 units.
+    for (timer, base) in [("T0", 1u64), ("T2", 10), ("T6", 100)] {
+        let d = 5 * base;
+        for kind in ["TON", "TOF", "TOFF", "TP", "TMR", "TMON", "TRTG"] {
+            let src = format!("LD %I0.0\n{kind} {timer}, 5\nST %Q0.0");
+            let off_delay = kind == "TOF" || kind == "TOFF";
+            // Input on for 3·d from t = 10 (off-delay timers: on for d, then off).
+            let on_until = if off_delay { 10 + d } else { 10 + 3 * d };
+            let tr = trace(&src, 1, 10 + 6 * d, |t| (10..=on_until).contains(&t));
+            let what = format!("{kind} {timer} ({base} ms)");
+            match kind {
+                "TON" | "TMR" => {
+                    assert!(!q_at(&tr, 10 + d - 1) && q_at(&tr, 10 + d), "{what}: on after {d} ms");
+                    assert!(q_at(&tr, on_until), "{what}");
+                }
+                "TOF" | "TOFF" => {
+                    assert!(q_at(&tr, 10) && q_at(&tr, on_until), "{what}: on with the input");
+                    let fall = on_until + 1;
+                    assert!(q_at(&tr, fall + d - 1) && !q_at(&tr, fall + d), "{what}: off {d} ms after the input");
+                }
+                _ => {
+                    assert!(q_at(&tr, 10) && q_at(&tr, 10 + d - 1), "{what}: on at the edge for {d} ms");
+                    assert!(!q_at(&tr, 10 + d), "{what}: off after {d} ms although the input stays on");
+                }
+            }
+        }
+    }
+}
