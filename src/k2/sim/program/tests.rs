@@ -72,6 +72,7 @@ fn a_ton_times_in_virtual_time() {
     clock.step(Duration::from_millis(2));
     assert!(on(&mut s, "Q0.0"), "T37: 30 × 100 ms");
     assert_eq!(s.mem.tq[37], 1, "the timer bit (T37 in a bit context)");
+    assert!(on(&mut s, "T37/BOOL"), "…read from outside as T37/BOOL");
 }
 
 #[test]
