@@ -8,9 +8,9 @@
 //! bound (real ports, pty device, link) so scripts wait for it instead of sleeping. Ctrl-C
 //! or SIGTERM stop it; the pty symlink is removed.
 //!
-//! `--agent [VB3400]` runs the PLC-side helper program's semantics once per simulated scan
-//! (issue 5, `k2::sim::agent`), so SM registers and instructions are reachable over Modbus
-//! exactly as on a K2 running `lib/k2_agent.il`.
+//! `--agent [VB3400]` runs the PLC-side helper program `lib/k2_agent.il` (as IL text, in the
+//! simulator's scan engine, `k2::sim::agent`), so SM registers and instructions are reachable
+//! over Modbus exactly as on a K2 running it; `--program FILE.il` runs a user program too.
 //!
 //! Simulated Kinco servo drives are served on their own pseudo-terminal (`--servo-pty LINK
 //! --servo-id 1[,2,…] [--servo-loop]`, the logic is `servo::sim::serve`); their fields
