@@ -32,12 +32,13 @@ pub fn status(s: &K2Sim, name: &str) -> Outcome {
         }
     }
     lines.push(format!(
-        "scans {}; scan time last {} ms, min {} ms, max {} ms (SMW22/24/26); {} instructions in the last scan",
+        "scans {}; scan time last {} ms, min {} ms, max {} ms (SMW22/24/26); {} instructions in the last scan; {} interrupt routines run",
         st.scans,
         ms(st.last_ns),
         ms(st.min_ns),
         ms(st.max_ns),
-        st.last_instructions
+        st.last_instructions,
+        st.interrupts
     ));
     lines.push(format!(
         "watchdog {} ms, minimum scan {} ms, overhead {} ms",
@@ -66,6 +67,7 @@ pub fn status(s: &K2Sim, name: &str) -> Outcome {
         .with("scan_min_ms", ms(st.min_ns))
         .with("scan_max_ms", ms(st.max_ns))
         .with("instructions", st.last_instructions)
+        .with("interrupts", st.interrupts)
         .with("watchdog_ms", ms(p.costs.watchdog_ns))
         .with("faults", faults)
 }
