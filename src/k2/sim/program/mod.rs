@@ -277,6 +277,13 @@ impl K2Sim {
         self.advance();
         if let Some(p) = &mut self.plc {
             p.user = None;
+            p.breaks.clear();
+            p.has_breaks = false;
+            p.halted = None;
+            if p.mode == Mode::Debug {
+                p.mode = Mode::Run;
+                p.next_scan = self.last;
+            }
         }
     }
 
@@ -373,6 +380,9 @@ impl K2Sim {
     /// Runs `n` scans now in stepped time (`sim scan N`): each at its modelled start.
     pub fn scan_n(&mut self, n: u64) -> Result<ScanStats> {
         self.advance();
+        if !self.plc.as_ref().is_some_and(|p| p.has_program()) {
+            return Err(Error::state("no program is loaded: no scan runs").hint("sim program load FILE.il"));
+        }
         for _ in 0..n {
             let Some(p) = &self.plc else { break };
             if p.mode != Mode::Run || !p.has_program() {
