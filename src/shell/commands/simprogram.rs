@@ -10,7 +10,7 @@ use crate::k2::sim::K2Sim;
 use crate::output::Outcome;
 use crate::shell::{Args, Shell};
 
-pub const USAGE: &str = "sim program load FILE.il | sim program unload | sim program | sim program costs [bit=200ns … overhead=0.3ms min_scan=1ms watchdog=300ms] | sim cpu run|stop|pause | sim stop | sim pause | sim switch run|stop | sim scan [N] | sim break LINE|FILE:LINE|network N|clear | sim stepi [N] | sim stepn";
+pub const USAGE: &str = "sim program load FILE.il | sim program unload | sim program | sim program costs [bit=200ns … overhead=0.3ms min_scan=1ms watchdog=300ms] | sim program stop-outputs QB0=16#05 … | sim cpu run|stop|pause | sim stop | sim pause | sim switch run|stop | sim scan [N] | sim break LINE|FILE:LINE|network N|clear | sim stepi [N] | sim stepn";
 
 fn ms(ns: u64) -> f64 {
     (ns as f64 / 1e6 * 1000.0).round() / 1000.0
@@ -109,6 +109,11 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
                     ms(t.watchdog_ns)
                 );
                 Ok(Outcome::new("sim").text(text).with("costs", t))
+            }
+            Some("stop-outputs") => {
+                let b = s.set_stop_outputs(&words[2..].join(" ")).map_err(|e| e.device(name.clone()))?;
+                let text: Vec<String> = b.iter().enumerate().map(|(i, v)| format!("QB{i}=16#{v:02X}")).collect();
+                Ok(Outcome::new("sim").text(format!("STOP values: {}", text.join(" "))).with("stop_outputs", b))
             }
             Some("unload") => {
                 s.unload_program();

@@ -343,6 +343,33 @@ impl K2Sim {
         Ok(new)
     }
 
+    /// The outputs' STOP values (K2 §2.2.1: set in KincoBuilder's hardware configuration):
+    /// `QB0=16#05 QB1=0` (bytes not named stay off). Returns the Q bytes.
+    pub fn set_stop_outputs(&mut self, spec: &str) -> Result<Vec<u8>> {
+        let n = self.mem.q.len();
+        let mut bytes = vec![0u8; n];
+        for item in spec.split_whitespace() {
+            let (k, v) = item
+                .split_once('=')
+                .ok_or_else(|| Error::usage(format!("`{item}` is not QBn=VALUE")).hint("e.g. QB0=16#05"))?;
+            let ops = self.space().parse_k2(k)?;
+            let op = ops[0];
+            if op.area != crate::k2::operand::Area::Q || op.width != crate::k2::operand::Width::Byte || ops.len() != 1 {
+                return Err(Error::usage(format!("{k}: STOP values are set per output byte (QB0, QB1 …)")));
+            }
+            let lit =
+                crate::core::literal::parse_literal(v).map_err(|e| Error::usage(format!("{v}: {}", e.message)))?;
+            let val = lit.fit(crate::core::DataType::Byte, 8).map_err(Error::usage)?;
+            bytes[op.byte as usize] = val.as_i64() as u8;
+        }
+        let p = self.plc_mut();
+        p.stop_outputs = bytes.clone();
+        if p.mode == Mode::Stop {
+            self.apply_stop_outputs();
+        }
+        Ok(bytes)
+    }
+
     /// The simulated mode switch.
     pub fn set_switch(&mut self, run: bool) -> Result<Mode> {
         self.plc_mut().switch_run = run;

@@ -572,3 +572,16 @@ fn a_signal_on_i0_1_runs_its_edge_routine_at_every_edge() {
     clock.step(Duration::from_secs(1));
     assert_eq!((get(&mut s, "VW0"), get(&mut s, "VW2")), (Value::Int(100), Value::Int(99)));
 }
+
+#[test]
+fn stop_values_of_the_outputs_are_a_setting() {
+    // K2 §2.2.1: in STOP the outputs take the values of the hardware configuration.
+    let (mut s, _) = sim();
+    s.load_program("LD %SM0.0\nS %Q0.0, 3", "q.il").unwrap();
+    assert_eq!(get(&mut s, "QB0"), Value::Int(7));
+    s.set_stop_outputs("QB0=16#04").unwrap();
+    s.set_mode(Mode::Stop).unwrap();
+    assert_eq!(get(&mut s, "QB0"), Value::Int(4), "Q0.2 stays on in STOP, the others go off");
+    assert!(s.set_stop_outputs("VB0=1").is_err());
+    assert!(s.set_stop_outputs("QB0=300").is_err());
+}
