@@ -122,6 +122,7 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             [CompletionResult]::new('--rtu-tcp', '--rtu-tcp', [CompletionResultType]::ParameterName, 'Modbus RTU frames over TCP on ADDR (as a serial-to-Ethernet gateway carries them)')
             [CompletionResult]::new('--unit', '--unit', [CompletionResultType]::ParameterName, 'Modbus unit id (slave address) the K2 answers to; requests for other ids get no reply')
             [CompletionResult]::new('--agent', '--agent', [CompletionResultType]::ParameterName, 'Run the PLC-side helper program (lib/k2_agent.il) with its mailbox at this V address')
+            [CompletionResult]::new('--program', '--program', [CompletionResultType]::ParameterName, 'Run this IL program in the served K2 (docs/il.md); load errors stop the server')
             [CompletionResult]::new('--servo-pty', '--servo-pty', [CompletionResultType]::ParameterName, 'Serve simulated Kinco servo drives on a new pseudo-terminal; LINK becomes a symlink to it')
             [CompletionResult]::new('--servo-id', '--servo-id', [CompletionResultType]::ParameterName, 'Drive ids on the servo line (several drives share it)')
             [CompletionResult]::new('--servo-baud', '--servo-baud', [CompletionResultType]::ParameterName, 'Line timing: replies take the frame time at this baud rate (10 bits a byte)')

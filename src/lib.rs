@@ -5,6 +5,7 @@
 
 pub mod cli;
 pub mod core;
+pub mod engine;
 pub mod fx;
 pub mod k2;
 pub mod output;
@@ -15,6 +16,6 @@ pub mod script;
 pub mod servo;
 pub mod session;
 pub mod shell;
-pub mod umpk;
 pub mod snapshot;
+pub mod umpk;
 pub mod wiring;

@@ -78,9 +78,13 @@ pub fn open_url(url: &str, clock: &Clock) -> Result<Box<dyn Device>> {
     let u = DeviceUrl::parse(url)?;
     match u.scheme.as_str() {
         "sim" => {
-            u.expect_params(&["model"])?;
+            u.expect_params(&["model", "program"])?;
             let model = u.param("model").unwrap_or(&u.target);
-            crate::k2::open_sim(model, clock.clone())
+            let mut d = crate::k2::open_sim(model, clock.clone())?;
+            if let Some(p) = u.param("program") {
+                d.set_option("program", p)?; // an IL program running in the simulated CPU
+            }
+            Ok(d)
         }
         "kinco" => crate::servo::driver::open_serial(&u),
         "sim-servo" => crate::servo::driver::open_sim(&u, clock),

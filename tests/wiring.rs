@@ -158,11 +158,20 @@ fn a_bench_with_a_real_device_or_a_bad_line_is_refused() {
     let o = run(&["--bench", bad.to_str().unwrap(), "-c", "sim wires"], "");
     assert!(!o.status.success());
     assert!(stderr(&o).contains("bad.toml:3"), "{}", stderr(&o));
+    // A bench's program runs in the simulated K2's scan engine.
+    std::fs::write(dir.join("prog.il"), "LD %SM0.0\nST %Q0.1\n").unwrap();
     let prog = dir.join("prog.toml");
-    std::fs::write(&prog, "[devices]\nplc = \"sim:K205-16DT\"\n[programs]\nplc = \"prog.toml\"\n").unwrap();
-    let o = run(&["--bench", prog.to_str().unwrap(), "-c", "sim wires"], "");
-    assert!(o.status.success(), "{}", stdout(&o));
-    assert!(String::from_utf8_lossy(&o.stderr).contains("is not run"), "programs are reported, not silently dropped");
+    std::fs::write(&prog, "[devices]\nplc = \"sim:K205-16DT\"\n[programs]\nplc = \"prog.il\"\n").unwrap();
+    let o = run(&["--time", "stepped", "--bench", prog.to_str().unwrap(), "-c", "sim step 10ms; get Q0.1"], "");
+    assert!(o.status.success(), "{}{}", stdout(&o), stderr(&o));
+    assert!(stdout(&o).contains("Q0.1") && stdout(&o).contains("1"), "the program set Q0.1: {}", stdout(&o));
+    // A program that does not load names its file and line.
+    std::fs::write(dir.join("bad.il"), "LD %SM0.0\nSTT %Q0.1\n").unwrap();
+    let badp = dir.join("badp.toml");
+    std::fs::write(&badp, "[devices]\nplc = \"sim:K205-16DT\"\n[programs]\nplc = \"bad.il\"\n").unwrap();
+    let o = run(&["--bench", badp.to_str().unwrap(), "-c", "sim wires"], "");
+    assert!(!o.status.success());
+    assert!(stderr(&o).contains("bad.il:2"), "{}", stderr(&o));
 }
 
 /// The bench served (K2 on Modbus TCP with the helper program, the drive on a pty, wired in

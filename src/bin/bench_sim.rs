@@ -90,6 +90,11 @@ fn run(model: &str, pv: i32, step: Duration) {
 }
 
 fn main() {
+    // BENCH_ONLY=K204ET-16DT,10 runs one scenario (model, step in ms) — for callgrind.
+    if let Some((m, ms)) = std::env::var("BENCH_ONLY").ok().as_deref().and_then(|v| v.split_once(',')) {
+        run(m, 1_000_000, Duration::from_millis(ms.parse().unwrap_or(10)));
+        return;
+    }
     println!(
         "one simulated hour, every pulse channel at maximum frequency, every counter counting at maximum frequency"
     );

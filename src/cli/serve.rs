@@ -8,9 +8,9 @@
 //! bound (real ports, pty device, link) so scripts wait for it instead of sleeping. Ctrl-C
 //! or SIGTERM stop it; the pty symlink is removed.
 //!
-//! `--agent [VB3400]` runs the PLC-side helper program's semantics once per simulated scan
-//! (issue 5, `k2::sim::agent`), so SM registers and instructions are reachable over Modbus
-//! exactly as on a K2 running `lib/k2_agent.il`.
+//! `--agent [VB3400]` runs the PLC-side helper program `lib/k2_agent.il` (as IL text, in the
+//! simulator's scan engine, `k2::sim::agent`), so SM registers and instructions are reachable
+//! over Modbus exactly as on a K2 running it; `--program FILE.il` runs a user program too.
 //!
 //! Simulated Kinco servo drives are served on their own pseudo-terminal (`--servo-pty LINK
 //! --servo-id 1[,2,…] [--servo-loop] [--servo-baud 38400 --servo-latency 1ms | --servo-instant]
@@ -65,6 +65,9 @@ pub struct ServeArgs {
     /// Run the PLC-side helper program (lib/k2_agent.il) with its mailbox at this V address.
     #[arg(long, value_name = "VB_ADDR", num_args = 0..=1, default_missing_value = "VB3400")]
     pub agent: Option<String>,
+    /// Run this IL program in the served K2 (docs/il.md); load errors stop the server.
+    #[arg(long, value_name = "FILE.il")]
+    pub program: Option<PathBuf>,
     /// Serve simulated Kinco servo drives on a new pseudo-terminal; LINK becomes a symlink to it.
     #[arg(long = "servo-pty", value_name = "LINK")]
     pub servo_pty: Option<PathBuf>,
@@ -196,6 +199,11 @@ async fn serve_k2(
         let spec = crate::k2::sim::fault::parse(f).map_err(|m| Error::usage(format!("--fault \"{f}\": {m}")))?;
         let now = sim.last;
         sim.faults.add(&spec, now);
+    }
+    if let Some(p) = &args.program {
+        let text = std::fs::read_to_string(p).map_err(|e| Error::io(format!("cannot read {}: {e}", p.display())))?;
+        sim.load_program(&text, &p.display().to_string())?;
+        ready.insert("program".into(), json!(p.display().to_string()));
     }
     let service = K2Service::new(Arc::new(Mutex::new(sim)), args.unit);
     if let Some(a) = &args.tcp {

@@ -7,6 +7,7 @@
 use super::catalog::Model;
 use super::operand::{Area, K2Operand, Width};
 use super::space::K2Space;
+use crate::core::DataType;
 
 /// One K2's memory.
 #[derive(Clone, Debug)]
@@ -21,6 +22,9 @@ pub struct Memory {
     /// Timer and counter current values (INT).
     pub t: Vec<i16>,
     pub c: Vec<i16>,
+    /// Timer and counter bits (0/1), set by the program's timer and counter instructions.
+    pub tq: Vec<u8>,
+    pub cq: Vec<u8>,
 }
 
 impl Memory {
@@ -37,6 +41,8 @@ impl Memory {
             aq: z(Area::AQ),
             t: vec![0; s.area_len(Area::T) as usize],
             c: vec![0; s.area_len(Area::C) as usize],
+            tq: vec![0; s.area_len(Area::T) as usize],
+            cq: vec![0; s.area_len(Area::C) as usize],
         }
     }
 
@@ -71,6 +77,9 @@ impl Memory {
     pub fn read(&self, op: &K2Operand) -> u32 {
         let b = op.byte as usize;
         match op.width {
+            Width::Element if op.view == DataType::Bool => {
+                (if op.area == Area::T { self.tq[b] } else { self.cq[b] }) as u32
+            }
             Width::Element => (if op.area == Area::T { self.t[b] } else { self.c[b] }) as u16 as u32,
             Width::Bit(bit) => ((self.area(op.area)[b] >> bit) & 1) as u32,
             Width::Byte => self.area(op.area)[b] as u32,
@@ -124,6 +133,10 @@ impl Memory {
     pub fn write(&mut self, op: &K2Operand, raw: u32) {
         let b = op.byte as usize;
         match op.width {
+            Width::Element if op.view == DataType::Bool => {
+                let slot = if op.area == Area::T { &mut self.tq[b] } else { &mut self.cq[b] };
+                *slot = (raw & 1) as u8;
+            }
             Width::Element => {
                 let slot = if op.area == Area::T { &mut self.t[b] } else { &mut self.c[b] };
                 *slot = raw as u16 as i16;
@@ -249,6 +262,17 @@ mod tests {
         assert_eq!(m.read(&parse_one("K1M0.4").unwrap()), 0xE);
         m.write(&parse_one("K1M0.2").unwrap(), 0);
         assert_eq!(m.read(&parse_one("MB0").unwrap()), 0xC3);
+    }
+
+    #[test]
+    fn timer_and_counter_bits_are_the_bool_view() {
+        let mut m = mem();
+        m.tq[37] = 1;
+        assert_eq!(m.read(&parse_one("T37/BOOL").unwrap()), 1);
+        assert_eq!(parse_one("T37/BOOL").unwrap().canonical(), "T37/BOOL");
+        m.write(&parse_one("C5/BOOL").unwrap(), 1);
+        assert_eq!((m.cq[5], m.c[5]), (1, 0), "the bit, not the value");
+        assert!(parse_one("VW0/BOOL").is_err());
     }
 
     #[test]

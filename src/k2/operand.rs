@@ -5,6 +5,7 @@
 //! Forms: bit `M10.3`; byte `VB301`; word `VW100`, `AIW0`; double word `VD3010`; timers and
 //! counters `T5`, `C10`; bit groups `K1M0`…`K8M0` (4·n bits from any bit area, `K4M10.4`
 //! starts mid-byte); an optional `%` prefix; a view suffix `/INT`, `/DINT`, `/REAL`, `/SINT`
+//! (and `/BOOL` on a timer or counter: its bit, `T37/BOOL`, where `T37` is its value)
 //! that reads the same bytes as another type of the same width. Ranges: `VW0..VW20`
 //! (inclusive, step = operand size) and the count form `VW0[10]` (ten words from VW0) —
 //! brackets cannot be mistaken for the `device:` prefix. Input is case-insensitive; output
@@ -343,7 +344,9 @@ pub fn parse_one(text: &str) -> Result<K2Operand> {
     let base = lead + pct;
     let mut op = parse_body(&s, body).map_err(|e| e.shift(base))?;
     if let Some((v, col)) = view {
-        if v.bits() != op.view.bits() || matches!(op.width, Width::Group { .. }) {
+        // `T37/BOOL`, `C5/BOOL`: the timer's or counter's bit (the value is `T37`).
+        let element_bit = v == DataType::Bool && op.width == Width::Element;
+        if !element_bit && (v.bits() != op.view.bits() || matches!(op.width, Width::Group { .. })) {
             return Err(op_err(lead + col, format!(
                 "{} is {} bits wide; /{} needs {} bits (views keep the width: /SINT on bytes, /INT on words, /DINT or /REAL on double words)",
                 op.canonical(),

@@ -130,6 +130,14 @@ pub const BRIDGE: &[Bridge] = &[
     row("sim_inputs", "k2", "sim inputs"),
     row("inject_fault", "k2", "sim fault {}"),
     row("injected_faults", "k2", "sim faults"),
+    // The simulated K2's CPU and its IL program (k2::sim::program).
+    row("program_load", "k2", "sim program load {}"),
+    row("program", "k2", "sim program"),
+    row("cpu", "k2", "sim cpu {}"),
+    row("scan", "k2", "sim scan [{}]"),
+    row("breakpoint", "k2", "sim break {}"),
+    row("step_instruction", "k2", "sim stepi [{}]"),
+    row("step_network", "k2", "sim stepn"),
     // Kinco servo drive (kinco-servo.md).
     row("status", "servo", "servo status"),
     row("enable", "servo", "servo enable"),

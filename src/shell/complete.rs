@@ -465,8 +465,8 @@ mod tests {
         assert_eq!(texts("ge"), (0, vec!["get".to_string()]));
         let (_, all) = texts("");
         assert_eq!(all.len(), COMMANDS.len(), "every command is offered on an empty line");
-        assert_eq!(texts("sim st"), (4, vec!["step".to_string()]));
-        assert_eq!(texts("sim s").1, vec!["snapshot", "snapshots", "step"]);
+        assert_eq!(texts("sim ti"), (4, vec!["time".to_string()]));
+        assert_eq!(texts("sim sn").1, vec!["snapshot", "snapshots"]);
         let after = texts("get VW0; se").1;
         assert!(
             after.contains(&"set".to_string()) && after.iter().all(|c| c.starts_with("se")),

@@ -26,7 +26,8 @@
 //! URL list, wires through [`super::setup`], values through `Session::set` — so a bench
 //! behaves exactly like typing its lines. A bench is a simulated machine: a device URL
 //! that opens a real device is refused (a bench never writes to a machine). Program files
-//! are checked to exist and reported as not run: this build has no PLC program (IL) engine.
+//! (IL) are loaded into the simulated K2's scan engine (`k2::sim::program`), as with
+//! `sim program load`.
 
 use crate::core::{Error, Result};
 use crate::session::{Session, SetItem};
@@ -127,10 +128,17 @@ pub fn open(s: &mut Session, bench: &Bench) -> Result<Vec<String>> {
         if !p.is_file() {
             return Err(Error::usage(format!("bench {file}: the program {} for {dev} does not exist", p.display())));
         }
-        notes.push(format!(
-            "program {} for {dev} is not run: this build has no PLC program (IL) engine; the bench runs without it",
-            p.display()
-        ));
+        let text = std::fs::read_to_string(&p)
+            .map_err(|e| Error::io(format!("bench {file}: cannot read the program {}: {e}", p.display())))?;
+        let i = s.index(dev)?;
+        let sim = s.entry(i).device.as_k2().and_then(|k| k.as_sim()).ok_or_else(|| {
+            Error::usage(format!("bench {file}: a program runs in a simulated K2, and {dev} is not one"))
+                .hint("give programs for sim:MODEL devices only")
+        })?;
+        let msg = sim
+            .load_program(&text, &p.display().to_string())
+            .map_err(|e| within(e, format!("bench {file}, program for {dev}")))?;
+        notes.push(format!("{dev}: {msg}"));
     }
     let current = bench.current.clone().unwrap_or_else(|| "plc".to_string());
     if s.index(&current).is_ok() {

@@ -32,6 +32,22 @@ impl Gen {
     fn flag(&self) -> String {
         format!("%V{}.0", self.base + OFF_SCRATCH + 12)
     }
+    /// Set when the command's instruction reported success (its ENO).
+    fn ok(&self) -> String {
+        format!("%V{}.1", self.base + OFF_SCRATCH + 12)
+    }
+    /// PSTOP's EXEC input, computed per channel.
+    fn exec(&self) -> String {
+        format!("%V{}.2", self.base + OFF_SCRATCH + 12)
+    }
+    /// PSTOP's DONE output.
+    fn done(&self) -> String {
+        format!("%V{}.3", self.base + OFF_SCRATCH + 12)
+    }
+    /// PSTOP's ERRID output.
+    fn errid(&self) -> String {
+        self.w(OFF_SCRATCH + 14)
+    }
     fn result(&self) -> String {
         self.w(OFF_SCRATCH)
     }
@@ -49,7 +65,7 @@ impl Gen {
         let _ = writeln!(self.out, "\n(* Network {}: {comment} *)", self.network);
     }
     fn line(&mut self, op: &str, args: &str, comment: &str) {
-        let code = if args.is_empty() { op.to_string() } else { format!("{op:<8}{args}") };
+        let code = if args.is_empty() { op.to_string() } else { format!("{op:<7} {args}") };
         if comment.is_empty() {
             let _ = writeln!(self.out, "{code}");
         } else {
@@ -104,8 +120,8 @@ pub fn program(base: u32) -> String {
    That gives plcsh the SM registers and instructions the K2 Modbus map does not reach
    (manual section 3.2). The protocol is described in docs/agent.md.
 
-   Status: exercised only against plcsh's simulator, which runs the same protocol
-   (`plcsh sim serve --agent`); not yet run on a real K2. Mnemonics the K2 manual shows
+   Status: exercised only against plcsh's simulator, which executes this text in its IL
+   engine (`plcsh sim serve --agent`); not yet run on a real K2. Mnemonics the K2 manual shows
    (LD, ST, R_TRIG, MOVE with typed operands, PLS) are used as shown there; comparisons
    (AW=, LDW>), ADD/SUB, jumps and the &/* indirect addressing are written as in
    KincoBuilder's S7-200-style IL. If KincoBuilder rejects a line, enter that network in
@@ -157,6 +173,13 @@ pub fn program(base: u32) -> String {
     g.line("LDW>", &format!("{count}, {}", crate::k2::catalog::SM_BYTES), "");
     g.line("MOVE", &format!("{}, {result}", p::ResultCode::BadRange.code()), "");
     g.line("JMPC", "ACK", "");
+    for r in PTO_REGS {
+        g.line("LDW=", &format!("{cmd}, 1"), &format!("SMD{} is read-only (section 3.4.3.1)", r.pos_cv));
+        g.line("AW<", &format!("{a1}, {}", r.pos_cv + 4), "");
+        g.line("AW>", &format!("{count}, {}", r.pos_cv), "");
+        g.line("MOVE", &format!("{}, {result}", p::ResultCode::ReadOnly.code()), "");
+        g.line("JMPC", "ACK", "");
+    }
     g.label("NOT_SM");
 
     g.net("command 1: copy ARG2 bytes of request data to SMB[ARG1]");
@@ -164,7 +187,9 @@ pub fn program(base: u32) -> String {
     g.line("JMPCN", "NOT_WRITE", "");
     g.line("MOVE", &format!("&VB{}, {}", base + p::OFF_REQ_DATA, g.src()), "source: request data");
     g.line("MOVE", &format!("&SMB0, {}", g.dst()), "target: SMB0 + ARG1");
-    g.line("ADD", &format!("{a1}, {}", g.dst()), "");
+    g.line("I_DI", &format!("{a1}, {}", g.src()), "ARG1 as a double word");
+    g.line("ADD", &format!("{}, {}", g.src(), g.dst()), "");
+    g.line("MOVE", &format!("&VB{}, {}", base + p::OFF_REQ_DATA, g.src()), "source: request data");
     g.line("MOVE", &format!("{a2}, {}", g.count()), "");
     g.copy_loop("WRITE_LOOP");
     g.line("JMP", "ACK", "");
@@ -174,7 +199,8 @@ pub fn program(base: u32) -> String {
     g.when(Command::SmRead { start: 0, len: 0 }.code());
     g.line("JMPCN", "NOT_READ", "");
     g.line("MOVE", &format!("&SMB0, {}", g.src()), "source: SMB0 + ARG1");
-    g.line("ADD", &format!("{a1}, {}", g.src()), "");
+    g.line("I_DI", &format!("{a1}, {}", g.dst()), "ARG1 as a double word");
+    g.line("ADD", &format!("{}, {}", g.dst(), g.src()), "");
     g.line("MOVE", &format!("&VB{}, {}", base + p::OFF_REPLY, g.dst()), "target: reply data");
     g.line("MOVE", &format!("{a2}, {}", g.count()), "");
     g.line("MOVE", &format!("{a2}, {}", g.w(p::OFF_REPLY_LEN)), "");
@@ -182,33 +208,64 @@ pub fn program(base: u32) -> String {
     g.line("JMP", "ACK", "");
     g.label("NOT_READ");
 
+    let ok = g.ok();
+    let code = |r: p::ResultCode| r.code();
+
+    g.net("commands 3 to 6 name a channel 0..3: others get result 4");
+    g.line("LDW>=", &format!("{cmd}, {}", Command::Pls(0).code()), "");
+    g.line("AW<=", &format!("{cmd}, {}", Command::Pstop(0).code()), "");
+    g.line("AW>=", &format!("{a1}, 4"), "");
+    g.line("MOVE", &format!("{}, {result}", code(p::ResultCode::BadChannel)), "");
+    g.line("JMPC", "ACK", "");
+    g.line("LD", &flag, "");
+    g.line("R", &format!("{ok}, 1"), "set below by the instruction's ENO");
+
     g.net("command 3: PLS ARG1 (the one-scan execute flag is the rising edge PLS needs, section 3.4.2)");
-    for r in PTO_REGS.iter().take(3) {
+    for r in PTO_REGS {
         g.when_arg(Command::Pls(0).code(), r.channel as u32, None);
         g.line("PLS", &r.channel.to_string(), "");
+        g.line("S", &format!("{ok}, 1"), "ENO = 1: started");
     }
+    g.when(Command::Pls(0).code());
+    g.line("AN", &ok, "");
+    g.line("MOVE", &format!("{}, {result}", code(p::ResultCode::InstructionFailed)), "PLS refused (status byte bit 4)");
 
     g.net("command 4: HDEF ARG1, ARG2 - one line per counter and mode of section 3.3.1");
     for &(hsc, mode, what) in HSC_MODES {
         g.when_arg(Command::Hdef { hsc: 0, mode: 0 }.code(), hsc as u32, Some(mode as u32));
         g.line("HDEF", &format!("{hsc}, {mode}"), what);
+        g.line("S", &format!("{ok}, 1"), "");
     }
+    g.when(Command::Hdef { hsc: 0, mode: 0 }.code());
+    g.line("AN", &ok, "no line matched: not a mode of this counter");
+    g.line("MOVE", &format!("{}, {result}", code(p::ResultCode::BadMode)), "");
 
     g.net("command 5: HSC ARG1");
     for n in 0..4u32 {
         g.when_arg(Command::Hsc(0).code(), n, None);
         g.line("HSC", &n.to_string(), "");
+        g.line("S", &format!("{ok}, 1"), "");
     }
+    g.when(Command::Hsc(0).code());
+    g.line("AN", &ok, "");
+    g.line("MOVE", &format!("{}, {result}", code(p::ResultCode::InstructionFailed)), "");
 
-    g.net("command 6: PSTOP ARG1 - latch the channel's emergency-stop bit (section 3.4.3.1)");
+    g.net("command 6: PSTOP ARG1 - stop the channel and latch its emergency-stop bit (section 3.4.3.1)");
+    let (exec, done, errid) = (g.exec(), g.done(), g.errid());
     for r in PTO_REGS {
         g.when_arg(Command::Pstop(0).code(), r.channel as u32, None);
-        g.line("S", &format!("%SM{}.7, 1", r.pos_control), "");
+        g.line("=", &exec, "EXEC: on in this request's scan only");
+        g.line("LD", "%SM0.0", "");
+        g.line("PSTOP", &format!("{}, {exec}, {done}, {errid}", r.channel), "AXIS, EXEC, DONE, ERRID");
     }
 
     g.net("commands 7 and 8: SET_RTC from the request data, READ_RTC into the reply");
     g.when(Command::SetRtc([0; 8]).code());
     g.line("SET_RTC", &g.b(p::OFF_REQ_DATA), "8 bytes BCD: yy mm dd hh mm ss 00 weekday");
+    g.line("S", &format!("{ok}, 1"), "");
+    g.when(Command::SetRtc([0; 8]).code());
+    g.line("AN", &ok, "");
+    g.line("MOVE", &format!("{}, {result}", code(p::ResultCode::BadClock)), "not a valid date and time");
     g.when(Command::ReadRtc.code());
     g.line("READ_RTC", &g.b(p::OFF_REPLY), "");
     g.line("MOVE", &format!("8, {}", g.w(p::OFF_REPLY_LEN)), "");
@@ -221,7 +278,7 @@ pub fn program(base: u32) -> String {
     g.net("acknowledge: shift acks 0-2 to 1-3, then ack 0 = (sequence, token, result), sequence last");
     g.label("ACK");
     g.line("LD", &flag, "");
-    g.line("BLKMOVE", &format!("{}, {}, 18", g.b(p::OFF_ACKS + 12), g.b(p::OFF_ACKS + 18)), "ack 2 -> ack 3");
+    g.line("BLKMOVE", &format!("{}, {}, 6", g.b(p::OFF_ACKS + 12), g.b(p::OFF_ACKS + 18)), "ack 2 -> ack 3");
     g.line("BLKMOVE", &format!("{}, {}, 6", g.b(p::OFF_ACKS + 6), g.b(p::OFF_ACKS + 12)), "ack 1 -> ack 2");
     g.line("BLKMOVE", &format!("{}, {}, 6", g.b(p::OFF_ACKS), g.b(p::OFF_ACKS + 6)), "ack 0 -> ack 1");
     g.line("MOVE", &format!("{}, {}", g.w(p::OFF_REQUEST + 2), g.w(p::OFF_ACKS + 2)), "token");
@@ -257,7 +314,7 @@ mod tests {
         }
         assert!(il.contains("%VW2000"), "signature at the base");
         assert!(!il.contains("%VW3400"), "no default address left");
-        assert!(il.contains("%SM221.7"), "PSTOP of channel 3");
+        assert!(il.contains("PSTOP   3, "), "PSTOP of channel 3");
         assert!(!il.contains('…'), "no elisions");
         // The SM range checks apply to the SM commands only (a PLS has no length).
         let checks = il.find("Network 3").unwrap();

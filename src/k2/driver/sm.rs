@@ -36,6 +36,8 @@ pub(super) fn shadow(len: u32) -> Memory {
         aq: Vec::new(),
         t: Vec::new(),
         c: Vec::new(),
+        tq: Vec::new(),
+        cq: Vec::new(),
     }
 }
 

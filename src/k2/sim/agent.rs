@@ -1,38 +1,13 @@
-//! The simulator's copy of the PLC-side helper program (issue 5): with `--agent`, once per
-//! simulated scan the simulator runs exactly what `lib/k2_agent.il` runs on a real K2 —
-//! [`protocol::execute_scan`] over the mailbox in V memory — with the commands carried out
-//! by the simulator's own instructions (PLS, HDEF, HSC, PSTOP, SET_RTC, READ_RTC) and SM
-//! writes going through the same checks as any other write. So the whole path plcsh →
-//! Modbus → mailbox → SM → PTO is exercised end to end without hardware.
+//! The PLC-side helper program in the simulator: with `--agent`, the simulated K2 runs
+//! `lib/k2_agent.il` — the very text users load into KincoBuilder, generated for the
+//! mailbox base by [`crate::k2::agent::il::program`] — in its scan engine, after the user
+//! program every scan. Its PLS, HDEF, HSC, PSTOP, SET_RTC and READ_RTC are the
+//! simulator's instructions, and its SM writes go through the same image as any program's.
+//! So the whole path plcsh → Modbus → mailbox → IL → SM → PTO is exercised end to end
+//! without hardware, and a mistake in the IL file shows up in the simulator.
 
-use super::{K2Sim, SCAN_TIME};
-use crate::core::{Device, Value};
-use crate::k2::agent::protocol::{self, Command, ResultCode, VMemory};
-use crate::k2::instr::RtcTime;
+use super::K2Sim;
 use crate::k2::operand::{Area, K2Operand};
-use crate::k2::K2Ops;
-use std::time::Duration;
-
-/// The helper's state in the simulator.
-#[derive(Clone, Copy, Debug, serde::Serialize, serde::Deserialize)]
-pub struct Agent {
-    /// Mailbox base (V byte offset).
-    pub base: u32,
-    /// The last scan the helper ran in (`None` before its first scan).
-    last_scan: Option<u128>,
-}
-
-/// The mailbox bytes, copied out of V for one scan.
-struct Mailbox(Vec<u8>);
-
-impl VMemory for Mailbox {
-    fn v(&self) -> &[u8] {
-        &self.0
-    }
-    fn v_mut(&mut self) -> &mut [u8] {
-        &mut self.0
-    }
-}
 
 impl K2Sim {
     /// Installs the helper with its mailbox at VB`base` (even, inside V).
@@ -45,77 +20,10 @@ impl K2Sim {
                 self.mem.v.len() - 1
             ));
         }
-        // A PLC in RUN has been scanning before any client looks: run the first scan now.
-        self.agent = Some(Agent { base, last_scan: None });
-        self.agent_scans(self.last);
+        let text = crate::k2::agent::il::program(base);
+        self.load_helper(&text, "k2_agent.il").map_err(|e| e.to_string())?;
+        self.agent_base = Some(base);
         Ok(())
-    }
-
-    fn scan_number(&self, t: Duration) -> u128 {
-        t.saturating_sub(self.start).as_micros() / SCAN_TIME.as_micros()
-    }
-
-    /// Runs the helper if a scan boundary has passed since it last ran (called as the
-    /// simulation advances). One execution per call is enough: the helper acts on at most
-    /// one request per scan and a client writes one request at a time.
-    pub(super) fn agent_scans(&mut self, now: Duration) {
-        let Some(a) = self.agent else { return };
-        let scan = self.scan_number(now);
-        if a.last_scan.is_some_and(|last| scan <= last) {
-            return;
-        }
-        self.agent = Some(Agent { last_scan: Some(scan), ..a });
-        let (b, n) = (a.base as usize, protocol::SIZE as usize);
-        let mut mailbox = Mailbox(self.mem.v[b..b + n].to_vec());
-        // The heartbeat counts every scan, as the PLC program's ADD does.
-        let missed = a.last_scan.map_or(0, |last| (scan - last - 1).min(u16::MAX as u128) as u16);
-        let hb = u16::from_be_bytes([mailbox.0[4], mailbox.0[5]]).wrapping_add(missed);
-        mailbox.0[4..6].copy_from_slice(&hb.to_be_bytes());
-        protocol::execute_scan(&mut mailbox, 0, &mut |cmd| self.agent_command(cmd));
-        self.mem.v[b..b + n].copy_from_slice(&mailbox.0);
-    }
-
-    fn agent_command(&mut self, cmd: Command) -> Result<Vec<u8>, ResultCode> {
-        let failed = |_| ResultCode::InstructionFailed;
-        match cmd {
-            Command::SmWrite { start, data } => {
-                let items: Vec<_> = data
-                    .iter()
-                    .enumerate()
-                    .map(|(i, b)| (K2Operand::byte(Area::SM, start as u32 + i as u32).to_core(), Value::Int(*b as i64)))
-                    .collect();
-                self.write(&items).map(|_| Vec::new()).map_err(|_| ResultCode::ReadOnly)
-            }
-            Command::SmRead { start, len } => {
-                let (s, e) = (start as usize, start as usize + len as usize);
-                Ok(self.mem.sm[s..e].to_vec())
-            }
-            Command::Pls(n) => self.pls(n).map(|_| Vec::new()).map_err(failed),
-            Command::Hdef { hsc, mode } => {
-                if self.model().hsc(hsc).is_none() {
-                    return Err(ResultCode::BadChannel);
-                }
-                self.hdef(hsc, mode).map(|_| Vec::new()).map_err(|_| ResultCode::BadMode)
-            }
-            Command::Hsc(n) => {
-                if self.model().hsc(n).is_none() {
-                    return Err(ResultCode::BadChannel);
-                }
-                self.hsc(n).map(|_| Vec::new()).map_err(failed)
-            }
-            Command::Pstop(n) => {
-                if self.model().pto(n).is_none() {
-                    return Err(ResultCode::BadChannel);
-                }
-                self.pstop(n).map(|_| Vec::new()).map_err(failed)
-            }
-            Command::SetRtc(b) => {
-                let t = RtcTime::from_bcd8(&b).map_err(|_| ResultCode::BadClock)?;
-                self.set_rtc(t).map(|_| Vec::new()).map_err(|_| ResultCode::BadClock)
-            }
-            Command::ReadRtc => self.read_rtc().map(|t| t.to_bcd8().to_vec()).map_err(failed),
-            Command::Ping => Ok(Vec::new()),
-        }
     }
 }
 
@@ -128,7 +36,12 @@ pub fn v_word(sim: &K2Sim, byte: u32) -> u16 {
 mod tests {
     use super::*;
     use crate::core::Clock;
-    use crate::k2::agent::protocol::{request_words, Status, DEFAULT_BASE, OFF_REQUEST, STATUS_WORDS};
+    use crate::k2::agent::protocol::{
+        self, request_words, Command, ResultCode, Status, DEFAULT_BASE, OFF_REQUEST, STATUS_WORDS,
+    };
+    use crate::k2::instr::RtcTime;
+    use crate::k2::sim::SCAN_TIME;
+    use std::time::Duration;
 
     fn sim() -> (K2Sim, Clock) {
         let clock = Clock::stepped();
@@ -149,9 +62,18 @@ mod tests {
         Status::parse(&w)
     }
 
+    /// Steps until the CPU has run one more scan (a scan with a request takes longer
+    /// than the 1 ms minimum: its cost-table time).
     fn scan(s: &mut K2Sim, clock: &Clock) {
-        clock.step(SCAN_TIME);
-        s.advance();
+        let before = s.plc().unwrap().stats.scans;
+        for _ in 0..100 {
+            clock.step(SCAN_TIME);
+            s.advance();
+            if s.plc().unwrap().stats.scans > before {
+                return;
+            }
+        }
+        panic!("no scan ran");
     }
 
     #[test]
@@ -215,7 +137,8 @@ mod tests {
         let clock = Clock::stepped();
         let mut s = crate::k2::sim::open("K205-16DT", clock.clone()).unwrap();
         request(&mut s, 1, &Command::Ping);
-        scan(&mut s, &clock);
+        clock.step(SCAN_TIME * 5);
+        s.advance();
         assert_eq!(status(&s).signature, 0);
         assert!(s.enable_agent(4095).is_err());
     }

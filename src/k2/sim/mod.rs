@@ -13,6 +13,7 @@ pub mod events;
 pub mod fault;
 pub mod hsc;
 pub mod inputs;
+pub mod program;
 pub mod pto;
 pub mod rtc;
 pub mod snapshot;
@@ -61,16 +62,20 @@ pub struct K2Sim {
     pub events: EventLog,
     pub rtc: Rtc,
     pub backup: Backup,
-    /// The PLC-side helper program, when served with `--agent` (issue 5).
-    pub agent: Option<agent::Agent>,
     /// Injected faults ([`fault`]).
     pub faults: fault::Faults,
     /// Wires to other simulated devices (`sim wire`); this simulator hosts them ([`wired`]).
     pub wiring: Option<Box<crate::wiring::Harness>>,
+    /// The CPU running programs (user program, helper), once one was loaded.
+    pub plc: Option<Box<program::Plc>>,
+    /// The helper program's mailbox base when it runs (`--agent`), for snapshots.
+    pub agent_base: Option<u32>,
     /// Scratch space of `advance_to` (events raised in a step, where each channel's end),
     /// kept so a step allocates nothing.
     raised: Vec<(Duration, EventKind)>,
     run_ends: Vec<usize>,
+    /// Numbered events waiting for their interrupt routines (program::irq).
+    irq_queue: Vec<(Duration, u32)>,
 }
 
 impl K2Sim {
@@ -92,11 +97,13 @@ impl K2Sim {
             events: EventLog::default(),
             rtc: Rtc::new(instr::host_local_now(), start),
             backup: Backup { since: start, ..Backup::default() },
-            agent: None,
             faults: fault::Faults::default(),
             wiring: None,
+            plc: None,
+            agent_base: None,
             raised: Vec::new(),
             run_ends: Vec::new(),
+            irq_queue: Vec::new(),
         };
         sim.refresh_system_bits(start);
         sim
@@ -122,7 +129,8 @@ impl K2Sim {
     }
 
     /// Brings the simulation up to virtual time `now`: pulses, counts, events, input
-    /// levels and system bits, all computed from the elapsed time in one step.
+    /// levels and system bits, all computed from the elapsed time in one step — and, when
+    /// a program runs, every scan due before `now` at its own start time ([`program`]).
     pub fn advance_to(&mut self, now: Duration) {
         if self.wiring.is_some() {
             return self.advance_wired(now);
@@ -130,8 +138,19 @@ impl K2Sim {
         self.advance_plain(now);
     }
 
-    /// [`Self::advance_to`] without the wiring: one formula per signal over the interval.
+    /// [`Self::advance_to`] without the wiring: the scans due (when a program runs) and the
+    /// hardware, one formula per signal over the interval.
     pub(crate) fn advance_plain(&mut self, now: Duration) {
+        if self.plc.is_some() {
+            self.run_scans(now);
+            self.advance_with_interrupts(now);
+        } else {
+            self.advance_hw(now);
+        }
+    }
+
+    /// The hardware part of [`Self::advance_to`]: no program runs.
+    fn advance_hw(&mut self, now: Duration) {
         let last = self.last;
         let now = now.max(last);
         // Events go to a buffer kept between steps, one run per channel, merged by time.
@@ -160,11 +179,13 @@ impl K2Sim {
         }
         if !raised.is_empty() {
             self.events.extend_runs(&raised, &ends);
+            if self.plc.is_some() {
+                self.queue_hw_events(&raised);
+            }
         }
         (self.raised, self.run_ends) = (raised, ends);
         self.last = now;
         self.refresh_system_bits(now);
-        self.agent_scans(now);
     }
 
     /// Writes the sources' current levels into the input image.
@@ -192,7 +213,11 @@ impl K2Sim {
         let ms = us / 1000;
         let mut b = 0u8;
         b |= 1; // SM0.0 always on (§8)
-        if scans == 0 {
+        let program = self.plc.as_ref().is_some_and(|p| p.has_program());
+        if program {
+            // The scan cycle sets SM0.1 and SM0.6 (program::one_scan).
+            b |= self.mem.sm[0] & (1 << 1 | 1 << 6);
+        } else if scans == 0 {
             b |= 1 << 1; // SM0.1 first scan (§8)
         }
         if (ms / 30_000).is_multiple_of(2) {
@@ -201,7 +226,7 @@ impl K2Sim {
         if (ms / 500).is_multiple_of(2) {
             b |= 1 << 5; // SM0.5 1-second clock: 0.5 s on, 0.5 s off
         }
-        if scans % 2 == 1 {
+        if !program && scans % 2 == 1 {
             b |= 1 << 6; // SM0.6 toggles every scan
         }
         self.mem.sm[0] = b;
@@ -584,6 +609,9 @@ impl Device for K2Sim {
         if !raised.is_empty() {
             self.events.extend(raised);
         }
+        if self.plc.is_some() && self.mem.i != old_i {
+            self.input_edge_interrupts(&old_i);
+        }
         self.wired_outputs();
         Ok(())
     }
@@ -604,8 +632,13 @@ impl Device for K2Sim {
                 self.backup.set_last(n)
             }
             "retain" => self.set_retain(value),
+            "program" => {
+                let text = std::fs::read_to_string(value)
+                    .map_err(|e| Error::io(format!("cannot read the program {value}: {e}")))?;
+                self.load_program(&text, value).map(|_| ())
+            }
             _ => Err(Error::usage(format!("K2 simulators have no option `{key}`"))
-                .hint("options: state=FILE, backup_last=3902…4095, retain=RANGES")),
+                .hint("options: state=FILE, backup_last=3902…4095, retain=RANGES, program=FILE.il")),
         }
     }
 }

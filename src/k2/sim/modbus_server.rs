@@ -13,9 +13,9 @@
 //!
 //! Scans: a K2 serves its Modbus slave ports between program scans. Before each request the
 //! server brings the simulation up to the clock ([`K2Sim::advance`]), which runs whatever the
-//! scans since the last request did — the pulse outputs, the counters, and, with `--agent`,
-//! the PLC-side helper program once per scan (`k2::sim::agent`). So each request sees memory
-//! as a PLC would between two scans.
+//! scans since the last request did — the pulse outputs, the counters, and the programs in
+//! the simulated CPU (`k2::sim::program`: a user program, the helper with `--agent`), scan by
+//! scan. So each request sees memory as a PLC would between two scans.
 //!
 //! Injected faults ([`crate::k2::sim::fault`]) act here, on every transport: no reply, an
 //! exception, a late reply; a corrupted CRC on RTU; a dropped connection on TCP.

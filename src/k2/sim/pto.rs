@@ -372,6 +372,27 @@ impl PtoChannel {
         what
     }
 
+    /// Starts a pulse train from `segs` ((cycle ns, pulses) each) at `now`, with the
+    /// direction output set for `reverse` (unless SM201.3 frees it): the position-control
+    /// instructions' way into the channel (program::motion).
+    pub fn start_train(&mut self, mem: &mut Memory, now: Duration, segs: &[(u64, u64)], reverse: bool) {
+        if !mem.sm_bit(self.regs.pos_control, pos::DIR_DISABLE) {
+            set_q(mem, self.dir, reverse);
+        }
+        self.run = Run::Pto(PtoRun::new(now, segs));
+        self.counted = 0;
+        let r = self.regs;
+        for (b, v) in [(st::PTO_IDLE, false), (st::PWM_IDLE, true), (st::INVALID, false), (st::ABORTED, false)] {
+            mem.set_sm_bit(r.status, b, v);
+        }
+    }
+
+    /// Stops the channel's output now (a position instruction ending a jog or homing run).
+    pub fn halt(&mut self, mem: &mut Memory) {
+        self.stop(mem);
+        mem.set_sm_bit(self.regs.status, st::ABORTED, false);
+    }
+
     /// PSTOP: stops the output and latches SM201.7 (§3.4.3.1).
     pub fn pstop(&mut self, mem: &mut Memory) -> &'static str {
         let what = self.stop(mem);

@@ -7,7 +7,6 @@
 //! Not captured: the registers and limits (they come from the model) and caches that are
 //! worked out again from the state. A program engine adds its own section beside this one.
 
-use super::agent::Agent;
 use super::events::EventLogState;
 use super::hsc::HscState;
 use super::inputs::{Inputs, Source};
@@ -56,7 +55,12 @@ pub struct K2State {
     pub events: EventLogState,
     pub rtc: Rtc,
     pub backup: BackupState,
-    pub agent: Option<Agent>,
+    /// The helper program's mailbox base when it runs (`--agent`).
+    #[serde(default)]
+    pub agent_base: Option<u32>,
+    /// The CPU and its programs (text and execution state), when one was loaded.
+    #[serde(default)]
+    pub program: Option<ProgramState>,
     /// Injected faults and their schedule.
     #[serde(default)]
     pub faults: super::fault::Faults,
@@ -101,7 +105,8 @@ impl K2Sim {
                 retain: self.backup.retain.iter().map(|r| (r.area.name().to_string(), r.first, r.len)).collect(),
                 since_ns: ns(self.backup.since),
             },
-            agent: self.agent,
+            agent_base: self.agent_base,
+            program: self.plc.as_ref().map(|p| ProgramState::save(p)),
             faults: self.faults.clone(),
         }
     }
@@ -112,6 +117,11 @@ impl K2Sim {
         if s.model != self.model().name {
             return Err(format!("the snapshot is of a {}, this simulator is a {}", s.model, self.model().name));
         }
+        // Programs are recompiled from their text before anything changes.
+        let plc = match &s.program {
+            Some(ps) => Some(Box::new(ps.build(self, s.agent_base)?)),
+            None => None,
+        };
         let area = |name: &str, text: &str, want: usize| -> Result<Vec<u8>, String> {
             let b = unhex(text).ok_or_else(|| format!("area {name} is not hex"))?;
             if b.len() != want {
@@ -168,10 +178,85 @@ impl K2Sim {
         self.backup.session = s.backup.session.clone();
         self.backup.retain = retain;
         self.backup.since = Duration::from_nanos(s.backup.since_ns);
-        self.agent = s.agent;
         self.faults = s.faults.clone();
         self.start = Duration::from_nanos(s.start_ns);
         self.last = Duration::from_nanos(s.last_ns);
+        self.plc = plc;
+        self.agent_base = s.agent_base;
         Ok(())
+    }
+}
+
+/// A loaded program in a snapshot: its text (recompiled on restore) and its execution state.
+#[derive(Clone, Debug, serde::Serialize, serde::Deserialize)]
+pub struct LoadedState {
+    pub source: String,
+    pub text: String,
+    pub cpu: crate::engine::Cpu,
+    pub inst: Vec<super::program::motion::Inst>,
+}
+
+/// The simulated CPU in a snapshot: mode, switch, scan count and schedule, and its programs.
+#[derive(Clone, Debug, serde::Serialize, serde::Deserialize)]
+pub struct ProgramState {
+    pub mode: super::program::Mode,
+    pub switch_run: bool,
+    pub run_scans: u64,
+    pub next_scan_ns: u64,
+    pub timed_next_ns: [Option<u64>; 2],
+    pub stop_outputs: Vec<u8>,
+    pub user: Option<LoadedState>,
+    /// The helper's execution state (its text is regenerated from `agent_base`).
+    pub helper_cpu: Option<crate::engine::Cpu>,
+}
+
+impl ProgramState {
+    fn save(p: &super::program::Plc) -> ProgramState {
+        ProgramState {
+            mode: p.mode,
+            switch_run: p.switch_run,
+            run_scans: p.run_scans,
+            next_scan_ns: ns(p.next_scan),
+            timed_next_ns: p.timed_next.map(|t| t.map(ns)),
+            stop_outputs: p.stop_outputs.clone(),
+            user: p.user.as_ref().map(|l| LoadedState {
+                source: l.source.clone(),
+                text: l.text.clone(),
+                cpu: l.cpu.clone(),
+                inst: l.inst.clone(),
+            }),
+            helper_cpu: p.helper.as_ref().map(|l| l.cpu.clone()),
+        }
+    }
+
+    /// Rebuilds the CPU: programs recompiled from their text (the helper's regenerated for
+    /// its mailbox base), execution state put back. Changes nothing in `sim`.
+    fn build(&self, sim: &K2Sim, agent_base: Option<u32>) -> Result<super::program::Plc, String> {
+        use super::program::{Loaded, Plc};
+        let mut p = Plc::new(Duration::from_nanos(self.next_scan_ns), sim.mem.q.len());
+        if let Some(base) = agent_base {
+            let text = crate::k2::agent::il::program(base);
+            let prog = sim.compile(&text, "k2_agent.il").map_err(|e| format!("the helper program: {e}"))?;
+            let mut l = Loaded::new(prog, "k2_agent.il".to_string(), &text);
+            if let Some(cpu) = &self.helper_cpu {
+                l.cpu = cpu.clone();
+            }
+            p.helper = Some(l);
+        }
+        if let Some(u) = &self.user {
+            let prog =
+                sim.compile(&u.text, &u.source).map_err(|e| format!("the snapshot's program {}: {e}", u.source))?;
+            p.breaks = vec![false; prog.code.len()];
+            let mut l = Loaded::new(prog, u.source.clone(), &u.text);
+            l.cpu = u.cpu.clone();
+            l.inst = u.inst.clone();
+            p.user = Some(l);
+        }
+        p.mode = self.mode;
+        p.switch_run = self.switch_run;
+        p.run_scans = self.run_scans;
+        p.timed_next = self.timed_next_ns.map(|t| t.map(Duration::from_nanos));
+        p.stop_outputs = self.stop_outputs.clone();
+        Ok(p)
     }
 }

@@ -346,10 +346,22 @@ impl K2Sim {
                 self.advance_plain(self.last);
                 break;
             }
-            let end = end.max(t_ns + 1).min(now_ns);
+            let mut end = end.max(t_ns + 1).min(now_ns);
+            // With a program running, a piece also ends at the next scan's start: a pulse
+            // output that scan starts (PLS in the program or the helper) reaches the wire at
+            // the scan's own time, not at the end of the step.
+            let scanning = self.plc.as_ref().is_some_and(|p| p.has_program());
+            if let Some(p) = self.plc.as_ref().filter(|_| scanning) {
+                end = end.min(ns(p.next_scan).max(t_ns + 1));
+            }
             self.advance_plain(Duration::from_nanos(end));
             for w in &mut h.wires {
                 finish(w, t_ns, end);
+            }
+            if scanning {
+                self.wiring = Some(h);
+                self.wired_outputs();
+                h = self.wiring.take().expect("put back just above");
             }
         }
         self.wiring = Some(h);

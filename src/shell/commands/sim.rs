@@ -14,9 +14,12 @@ use std::time::Duration;
 pub const SIM: CommandSpec = CommandSpec {
     name: "sim",
     aliases: &[],
-    usage: "sim time | sim step DURATION | sim run | sim input I0.1 freq=1kHz [dir=up|down] | sim input I0.1 off | sim quad A B freq=1kHz | sim inputs | sim retain RANGES|none | sim wire FROM -> TO [lines=N] [delay=D] | sim wires | sim unwire TERMINAL|all | sim snapshot save|restore NAME | sim snapshots | sim fault KIND … | sim faults",
-    summary: "the simulator's clock (show, step and keep stepped, follow the wall clock), input signals for the counters, retained ranges, wiring between simulated devices, snapshots of the simulated state, injected faults",
-    subcommands: &["time", "step", "run", "input", "quad", "inputs", "retain", "wire", "wires", "unwire", "snapshot", "snapshots", "fault", "faults"],
+    usage: "sim time | sim step DURATION | sim run | sim input I0.1 freq=1kHz [dir=up|down] | sim input I0.1 off | sim quad A B freq=1kHz | sim inputs | sim retain RANGES|none | sim program load FILE.il | sim program | sim cpu run|stop|pause | sim scan [N] | sim break LINE | sim stepi [N] | sim stepn | sim wire FROM -> TO [lines=N] [delay=D] | sim wires | sim unwire TERMINAL|all | sim snapshot save|restore NAME | sim snapshots | sim fault KIND … | sim faults",
+    summary: "the simulator's clock (show, step and keep stepped, follow the wall clock), input signals for the counters, retained ranges, the CPU running an IL program, wiring between simulated devices, snapshots of the simulated state, injected faults",
+    subcommands: &[
+        "time", "step", "run", "input", "quad", "inputs", "retain", "program", "cpu", "stop", "pause", "switch", "scan", "break", "stepi",
+        "stepn", "wire", "wires", "unwire", "snapshot", "snapshots", "fault", "faults",
+    ],
     run: sim,
 };
 
@@ -45,6 +48,25 @@ fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
             return super::fault::run(sh, sub, rest);
         }
         "wire" | "wires" | "unwire" => return super::simwire::run(sh, sub, args),
+        "program" | "cpu" | "stop" | "pause" | "switch" | "scan" | "break" | "stepi" | "stepn" => {
+            let o = super::simprogram::run(sh, sub, args)?;
+            if sub == "scan" {
+                // Scans run at their modelled times: the clock follows to the last one.
+                if let Some(t) = sh
+                    .session
+                    .current_index()
+                    .ok()
+                    .and_then(|d| super::k2cmd::sim(sh, d, "sim scan").ok())
+                    .map(|s| s.last)
+                {
+                    let now = clock.now();
+                    if t > now {
+                        clock.step(t - now);
+                    }
+                }
+            }
+            return Ok(o);
+        }
         other => return Err(Error::usage(format!("unknown `sim {other}`")).hint(SIM.usage).column(args.offset)),
     }
     let now = clock.now();

@@ -1,0 +1,489 @@
+//! The instruction table: every mnemonic the engine accepts, what it does, its cost class
+//! and the source it follows — one data table, from which the compiler, the "did you mean"
+//! suggestions and `docs/il.md` are derived.
+//!
+//! Sources: the K2 manual (`../shared/seeds/000_…`, "K2"), the MASTER-K/K80S CPU chapter
+//! (`../shared/seeds/001_…`, "K80S"), and where neither defines an instruction IEC
+//! 61131-3 IL ("IEC") or the S7-200 convention the K2 follows for its memory map and
+//! KincoBuilder for its IL ("S7-200").
+
+/// Bit-logic operations on the current result (CR).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Logic {
+    And,
+    Or,
+    Xor,
+}
+
+/// Comparison operators.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub enum Cmp {
+    Eq,
+    Ne,
+    Lt,
+    Gt,
+    Le,
+    Ge,
+}
+
+/// How a comparison's result combines with the CR: load (push), AND, OR.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Comb {
+    Ld,
+    And,
+    Or,
+}
+
+/// The type a typed mnemonic fixes (`LDW=` INT, `LDD=` DINT, `LDR=` REAL, `LDB=` BYTE).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TyHint {
+    Byte,
+    Int,
+    DInt,
+    Real,
+    /// From the operands (IEC overloading).
+    Auto,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub enum Arith {
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Mod,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub enum Shift {
+    Shl,
+    Shr,
+    Rol,
+    Ror,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub enum Conv {
+    /// INT → DINT (sign-extends).
+    IDi,
+    /// DINT → INT (fault-free: ENO = 0 when out of range, destination unchanged).
+    DiI,
+    /// BYTE → INT.
+    BI,
+    /// INT → BYTE (ENO = 0 when out of range).
+    IB,
+    /// DINT → REAL.
+    DiR,
+    /// REAL → DINT, rounded to nearest.
+    Round,
+    /// REAL → DINT, truncated.
+    Trunc,
+    /// INT → BCD (0…9999).
+    IBcd,
+    /// BCD → INT.
+    BcdI,
+}
+
+/// Timer kinds: K2/IEC TON, TOF, TP; MASTER-K TON, TOFF, TMR, TMON, TRTG (K80S).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub enum TimerKind {
+    /// On-delay (K2, IEC; K80S TON).
+    Ton,
+    /// Off-delay (K2 TOF, IEC; K80S TOFF).
+    Tof,
+    /// Pulse (IEC TP).
+    Tp,
+    /// Accumulating on-delay (K80S TMR; S7-200 TONR).
+    Tmr,
+    /// Monostable (K80S TMON).
+    Tmon,
+    /// Retriggerable monostable (K80S TRTG).
+    Trtg,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub enum CounterKind {
+    Ctu,
+    Ctd,
+    Ctud,
+    Ctr,
+}
+
+/// What a mnemonic does.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    /// LD/LDN: push the CR and load a bit.
+    Ld {
+        neg: bool,
+    },
+    /// AND/ANDN, OR/ORN, XOR/XORN with a bit operand; with a trailing `(` a parenthesis.
+    Logic {
+        op: Logic,
+        neg: bool,
+    },
+    ParOpen {
+        op: Logic,
+        neg: bool,
+    },
+    ParClose,
+    Not,
+    St {
+        neg: bool,
+    },
+    Set,
+    Reset,
+    /// S7-200 logic-stack operations.
+    Ald,
+    Old,
+    Lps,
+    Lrd,
+    Lpp,
+    RTrig,
+    FTrig,
+    Compare {
+        comb: Comb,
+        ty: TyHint,
+        op: Cmp,
+    },
+    Move {
+        ty: TyHint,
+    },
+    BlkMove {
+        ty: TyHint,
+    },
+    Fill,
+    Arith {
+        op: Arith,
+        ty: TyHint,
+    },
+    IncDec {
+        inc: bool,
+        ty: TyHint,
+    },
+    Shift {
+        op: Shift,
+    },
+    WordLogic {
+        op: Logic,
+    },
+    Inv,
+    Conv(Conv),
+    Jmp,
+    Jmpc {
+        neg: bool,
+    },
+    Cal,
+    Calc {
+        neg: bool,
+    },
+    Ret,
+    Retc {
+        neg: bool,
+    },
+    Timer(TimerKind),
+    Counter(CounterKind),
+    Atch,
+    Dtch,
+    Eni,
+    Disi,
+    Wdt,
+    Nop,
+}
+
+/// Cost classes: each compiled instruction costs its class's time in the family's table.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub enum CostClass {
+    Bit,
+    Compare,
+    Move,
+    Arith,
+    Real,
+    Timer,
+    Jump,
+    Call,
+    Special,
+}
+
+impl CostClass {
+    pub const ALL: [CostClass; 9] = [
+        CostClass::Bit,
+        CostClass::Compare,
+        CostClass::Move,
+        CostClass::Arith,
+        CostClass::Real,
+        CostClass::Timer,
+        CostClass::Jump,
+        CostClass::Call,
+        CostClass::Special,
+    ];
+    pub fn name(self) -> &'static str {
+        match self {
+            CostClass::Bit => "bit",
+            CostClass::Compare => "compare",
+            CostClass::Move => "move",
+            CostClass::Arith => "arith",
+            CostClass::Real => "real",
+            CostClass::Timer => "timer",
+            CostClass::Jump => "jump",
+            CostClass::Call => "call",
+            CostClass::Special => "special",
+        }
+    }
+}
+
+/// One table row.
+#[derive(Clone, Copy, Debug)]
+pub struct Def {
+    pub name: &'static str,
+    pub kind: Kind,
+    /// Operand count accepted (min, max).
+    pub operands: (u8, u8),
+    pub cost: CostClass,
+    /// What it does, for `docs/il.md` and help.
+    pub doc: &'static str,
+    pub source: &'static str,
+}
+
+const fn d(
+    name: &'static str,
+    kind: Kind,
+    operands: (u8, u8),
+    cost: CostClass,
+    doc: &'static str,
+    source: &'static str,
+) -> Def {
+    Def { name, kind, operands, cost, doc, source }
+}
+
+use CostClass as C;
+use Kind as K;
+
+/// The core instruction set (family instructions come from the family's own table).
+pub static CORE: &[Def] = &[
+    d("LD", K::Ld { neg: false }, (1, 1), C::Bit, "CR := bit (the old CR is pushed)", "K2 §3.4.3.1; IEC"),
+    d("LDN", K::Ld { neg: true }, (1, 1), C::Bit, "CR := NOT bit", "IEC"),
+    d("AND", K::Logic { op: Logic::And, neg: false }, (1, 1), C::Bit, "CR := CR AND bit", "IEC"),
+    d("A", K::Logic { op: Logic::And, neg: false }, (1, 1), C::Bit, "CR := CR AND bit", "S7-200"),
+    d("ANDN", K::Logic { op: Logic::And, neg: true }, (1, 1), C::Bit, "CR := CR AND NOT bit", "IEC"),
+    d("AN", K::Logic { op: Logic::And, neg: true }, (1, 1), C::Bit, "CR := CR AND NOT bit", "S7-200"),
+    d("OR", K::Logic { op: Logic::Or, neg: false }, (1, 1), C::Bit, "CR := CR OR bit", "IEC"),
+    d("O", K::Logic { op: Logic::Or, neg: false }, (1, 1), C::Bit, "CR := CR OR bit", "S7-200"),
+    d("ORN", K::Logic { op: Logic::Or, neg: true }, (1, 1), C::Bit, "CR := CR OR NOT bit", "IEC"),
+    d("ON", K::Logic { op: Logic::Or, neg: true }, (1, 1), C::Bit, "CR := CR OR NOT bit", "S7-200"),
+    d("XOR", K::Logic { op: Logic::Xor, neg: false }, (1, 1), C::Bit, "CR := CR XOR bit", "IEC"),
+    d("XORN", K::Logic { op: Logic::Xor, neg: true }, (1, 1), C::Bit, "CR := CR XOR NOT bit", "IEC"),
+    d("AND(", K::ParOpen { op: Logic::And, neg: false }, (0, 1), C::Bit, "open: CR := CR AND ( … )", "IEC"),
+    d("ANDN(", K::ParOpen { op: Logic::And, neg: true }, (0, 1), C::Bit, "open: CR := CR AND NOT ( … )", "IEC"),
+    d("OR(", K::ParOpen { op: Logic::Or, neg: false }, (0, 1), C::Bit, "open: CR := CR OR ( … )", "IEC"),
+    d("ORN(", K::ParOpen { op: Logic::Or, neg: true }, (0, 1), C::Bit, "open: CR := CR OR NOT ( … )", "IEC"),
+    d("XOR(", K::ParOpen { op: Logic::Xor, neg: false }, (0, 1), C::Bit, "open: CR := CR XOR ( … )", "IEC"),
+    d("XORN(", K::ParOpen { op: Logic::Xor, neg: true }, (0, 1), C::Bit, "open: CR := CR XOR NOT ( … )", "IEC"),
+    d(")", K::ParClose, (0, 0), C::Bit, "close the innermost parenthesis", "IEC"),
+    d("NOT", K::Not, (0, 0), C::Bit, "CR := NOT CR", "IEC"),
+    d("ST", K::St { neg: false }, (1, 1), C::Bit, "bit := CR", "K2 §3.4.3.1; IEC"),
+    d("=", K::St { neg: false }, (1, 1), C::Bit, "bit := CR", "S7-200"),
+    d("STN", K::St { neg: true }, (1, 1), C::Bit, "bit := NOT CR", "IEC"),
+    d("S", K::Set, (1, 2), C::Bit, "if CR: set bit (N bits with `S bit, N`; a T/C is set on)", "IEC; S7-200"),
+    d(
+        "R",
+        K::Reset,
+        (1, 2),
+        C::Bit,
+        "if CR: reset bit (N bits); a timer or counter: value and bit cleared",
+        "IEC; S7-200",
+    ),
+    d("ALD", K::Ald, (0, 0), C::Bit, "AND the top two logic-stack levels", "S7-200"),
+    d("OLD", K::Old, (0, 0), C::Bit, "OR the top two logic-stack levels", "S7-200"),
+    d("LPS", K::Lps, (0, 0), C::Bit, "push a copy of the CR", "S7-200"),
+    d("LRD", K::Lrd, (0, 0), C::Bit, "CR := the second stack level", "S7-200"),
+    d("LPP", K::Lpp, (0, 0), C::Bit, "pop the stack into the CR", "S7-200"),
+    d("R_TRIG", K::RTrig, (0, 0), C::Bit, "CR := CR rose since this instruction last ran", "K2 §3.4.3.1; IEC"),
+    d("EU", K::RTrig, (0, 0), C::Bit, "rising edge (S7-200 name of R_TRIG)", "S7-200"),
+    d("F_TRIG", K::FTrig, (0, 0), C::Bit, "CR := CR fell since this instruction last ran", "IEC"),
+    d("ED", K::FTrig, (0, 0), C::Bit, "falling edge (S7-200 name of F_TRIG)", "S7-200"),
+    d("MOVE", K::Move { ty: TyHint::Auto }, (2, 2), C::Move, "if CR: OUT := IN (type of OUT)", "K2 §3.4.3.1"),
+    d("MOVB", K::Move { ty: TyHint::Byte }, (2, 2), C::Move, "byte move", "S7-200"),
+    d("MOVW", K::Move { ty: TyHint::Int }, (2, 2), C::Move, "word move", "S7-200"),
+    d("MOVD", K::Move { ty: TyHint::DInt }, (2, 2), C::Move, "double-word move", "S7-200"),
+    d("MOVR", K::Move { ty: TyHint::Real }, (2, 2), C::Move, "REAL move", "S7-200"),
+    d(
+        "BLKMOVE",
+        K::BlkMove { ty: TyHint::Auto },
+        (3, 3),
+        C::Move,
+        "if CR: copy N elements IN… → OUT…",
+        "IEC (KincoBuilder name)",
+    ),
+    d("BMB", K::BlkMove { ty: TyHint::Byte }, (3, 3), C::Move, "block move of N bytes", "S7-200"),
+    d("BMW", K::BlkMove { ty: TyHint::Int }, (3, 3), C::Move, "block move of N words", "S7-200"),
+    d("BMD", K::BlkMove { ty: TyHint::DInt }, (3, 3), C::Move, "block move of N double words", "S7-200"),
+    d("FILL", K::Fill, (3, 3), C::Move, "if CR: N words from OUT := IN", "S7-200"),
+    d(
+        "ADD",
+        K::Arith { op: Arith::Add, ty: TyHint::Auto },
+        (2, 3),
+        C::Arith,
+        "OUT := OUT + IN, or OUT := IN1 + IN2",
+        "IEC; S7-200",
+    ),
+    d(
+        "SUB",
+        K::Arith { op: Arith::Sub, ty: TyHint::Auto },
+        (2, 3),
+        C::Arith,
+        "OUT := OUT − IN, or IN1 − IN2",
+        "IEC; S7-200",
+    ),
+    d(
+        "MUL",
+        K::Arith { op: Arith::Mul, ty: TyHint::Auto },
+        (2, 3),
+        C::Arith,
+        "OUT := OUT × IN, or IN1 × IN2",
+        "IEC; S7-200",
+    ),
+    d(
+        "DIV",
+        K::Arith { op: Arith::Div, ty: TyHint::Auto },
+        (2, 3),
+        C::Arith,
+        "OUT := OUT ÷ IN, or IN1 ÷ IN2 (÷0: ENO = 0)",
+        "IEC; S7-200",
+    ),
+    d("MOD", K::Arith { op: Arith::Mod, ty: TyHint::Auto }, (2, 3), C::Arith, "remainder", "IEC"),
+    d("+I", K::Arith { op: Arith::Add, ty: TyHint::Int }, (2, 2), C::Arith, "INT add", "S7-200"),
+    d("-I", K::Arith { op: Arith::Sub, ty: TyHint::Int }, (2, 2), C::Arith, "INT subtract", "S7-200"),
+    d("*I", K::Arith { op: Arith::Mul, ty: TyHint::Int }, (2, 2), C::Arith, "INT multiply", "S7-200"),
+    d("/I", K::Arith { op: Arith::Div, ty: TyHint::Int }, (2, 2), C::Arith, "INT divide", "S7-200"),
+    d("+D", K::Arith { op: Arith::Add, ty: TyHint::DInt }, (2, 2), C::Arith, "DINT add", "S7-200"),
+    d("-D", K::Arith { op: Arith::Sub, ty: TyHint::DInt }, (2, 2), C::Arith, "DINT subtract", "S7-200"),
+    d("*D", K::Arith { op: Arith::Mul, ty: TyHint::DInt }, (2, 2), C::Arith, "DINT multiply", "S7-200"),
+    d("/D", K::Arith { op: Arith::Div, ty: TyHint::DInt }, (2, 2), C::Arith, "DINT divide", "S7-200"),
+    d("+R", K::Arith { op: Arith::Add, ty: TyHint::Real }, (2, 2), C::Real, "REAL add", "S7-200"),
+    d("-R", K::Arith { op: Arith::Sub, ty: TyHint::Real }, (2, 2), C::Real, "REAL subtract", "S7-200"),
+    d("*R", K::Arith { op: Arith::Mul, ty: TyHint::Real }, (2, 2), C::Real, "REAL multiply", "S7-200"),
+    d("/R", K::Arith { op: Arith::Div, ty: TyHint::Real }, (2, 2), C::Real, "REAL divide", "S7-200"),
+    d("INC", K::IncDec { inc: true, ty: TyHint::Auto }, (1, 1), C::Arith, "if CR: OUT := OUT + 1", "IEC; S7-200"),
+    d("DEC", K::IncDec { inc: false, ty: TyHint::Auto }, (1, 1), C::Arith, "if CR: OUT := OUT − 1", "IEC; S7-200"),
+    d("SHL", K::Shift { op: Shift::Shl }, (2, 2), C::Arith, "OUT := OUT shifted left N bits", "IEC"),
+    d("SHR", K::Shift { op: Shift::Shr }, (2, 2), C::Arith, "OUT := OUT shifted right N bits (logical)", "IEC"),
+    d("ROL", K::Shift { op: Shift::Rol }, (2, 2), C::Arith, "OUT := OUT rotated left N bits", "IEC"),
+    d("ROR", K::Shift { op: Shift::Ror }, (2, 2), C::Arith, "OUT := OUT rotated right N bits", "IEC"),
+    d("WAND", K::WordLogic { op: Logic::And }, (2, 3), C::Arith, "OUT := OUT AND IN (bitwise)", "S7-200 (ANDW)"),
+    d("ANDW", K::WordLogic { op: Logic::And }, (2, 3), C::Arith, "bitwise AND", "S7-200"),
+    d("WOR", K::WordLogic { op: Logic::Or }, (2, 3), C::Arith, "OUT := OUT OR IN (bitwise)", "S7-200 (ORW)"),
+    d("ORW", K::WordLogic { op: Logic::Or }, (2, 3), C::Arith, "bitwise OR", "S7-200"),
+    d("WXOR", K::WordLogic { op: Logic::Xor }, (2, 3), C::Arith, "OUT := OUT XOR IN (bitwise)", "S7-200 (XORW)"),
+    d("XORW", K::WordLogic { op: Logic::Xor }, (2, 3), C::Arith, "bitwise XOR", "S7-200"),
+    d("INV", K::Inv, (1, 1), C::Arith, "OUT := NOT OUT (bitwise)", "S7-200 (INVW)"),
+    d("I_DI", K::Conv(Conv::IDi), (2, 2), C::Move, "INT → DINT", "S7-200"),
+    d("INT_TO_DINT", K::Conv(Conv::IDi), (2, 2), C::Move, "INT → DINT", "IEC"),
+    d("DI_I", K::Conv(Conv::DiI), (2, 2), C::Move, "DINT → INT (out of range: ENO = 0)", "S7-200"),
+    d("DINT_TO_INT", K::Conv(Conv::DiI), (2, 2), C::Move, "DINT → INT", "IEC"),
+    d("B_I", K::Conv(Conv::BI), (2, 2), C::Move, "BYTE → INT", "S7-200"),
+    d("I_B", K::Conv(Conv::IB), (2, 2), C::Move, "INT → BYTE (out of range: ENO = 0)", "S7-200"),
+    d("DI_R", K::Conv(Conv::DiR), (2, 2), C::Real, "DINT → REAL", "S7-200"),
+    d("ROUND", K::Conv(Conv::Round), (2, 2), C::Real, "REAL → DINT, rounded", "S7-200"),
+    d("TRUNC", K::Conv(Conv::Trunc), (2, 2), C::Real, "REAL → DINT, truncated", "S7-200; IEC"),
+    d("I_BCD", K::Conv(Conv::IBcd), (2, 2), C::Move, "INT 0…9999 → BCD (else ENO = 0)", "S7-200"),
+    d("BCD_I", K::Conv(Conv::BcdI), (2, 2), C::Move, "BCD → INT (bad digit: ENO = 0)", "S7-200"),
+    d("JMP", K::Jmp, (1, 1), C::Jump, "jump to LABEL", "IEC"),
+    d("JMPC", K::Jmpc { neg: false }, (1, 1), C::Jump, "jump to LABEL if CR", "IEC"),
+    d("JMPCN", K::Jmpc { neg: true }, (1, 1), C::Jump, "jump to LABEL if NOT CR", "IEC"),
+    d("CAL", K::Cal, (1, 1), C::Call, "call subroutine NAME (if CR, in the K2's EN convention)", "IEC; K2 helper"),
+    d("CALC", K::Calc { neg: false }, (1, 1), C::Call, "call subroutine NAME if CR", "IEC"),
+    d("CALCN", K::Calc { neg: true }, (1, 1), C::Call, "call subroutine NAME if NOT CR", "IEC"),
+    d("RET", K::Ret, (0, 0), C::Jump, "return from this POU", "IEC"),
+    d("RETC", K::Retc { neg: false }, (0, 0), C::Jump, "return if CR", "IEC"),
+    d("RETCN", K::Retc { neg: true }, (0, 0), C::Jump, "return if NOT CR", "IEC"),
+    d("CRET", K::Retc { neg: false }, (0, 0), C::Jump, "conditional return (S7-200 name)", "S7-200"),
+    d("TON", K::Timer(TimerKind::Ton), (2, 2), C::Timer, "on-delay timer Tn, PT (IN = CR; CR := Q)", "K2 §2.1.2; K80S"),
+    d("TOF", K::Timer(TimerKind::Tof), (2, 2), C::Timer, "off-delay timer Tn, PT", "K2; IEC"),
+    d("TOFF", K::Timer(TimerKind::Tof), (2, 2), C::Timer, "off-delay timer (MASTER-K name)", "K80S"),
+    d("TP", K::Timer(TimerKind::Tp), (2, 2), C::Timer, "pulse timer Tn, PT", "IEC"),
+    d("TMR", K::Timer(TimerKind::Tmr), (2, 3), C::Timer, "accumulating timer Tn, PT [, reset bit]", "K80S"),
+    d("TONR", K::Timer(TimerKind::Tmr), (2, 3), C::Timer, "accumulating timer (S7-200 name)", "S7-200"),
+    d("TMON", K::Timer(TimerKind::Tmon), (2, 2), C::Timer, "monostable timer Tn, PT", "K80S"),
+    d("TRTG", K::Timer(TimerKind::Trtg), (2, 2), C::Timer, "retriggerable monostable Tn, PT", "K80S"),
+    d("CTU", K::Counter(CounterKind::Ctu), (2, 3), C::Timer, "up counter Cn, PV [, reset bit] (CU = CR)", "K80S; IEC"),
+    d("CTD", K::Counter(CounterKind::Ctd), (2, 3), C::Timer, "down counter Cn, PV [, load bit] (CD = CR)", "K80S; IEC"),
+    d(
+        "CTUD",
+        K::Counter(CounterKind::Ctud),
+        (3, 4),
+        C::Timer,
+        "up/down counter Cn, PV, CD bit [, reset bit]",
+        "K80S; IEC",
+    ),
+    d("CTR", K::Counter(CounterKind::Ctr), (2, 3), C::Timer, "ring counter Cn, PV [, reset bit]", "K80S"),
+    d("ATCH", K::Atch, (2, 2), C::Special, "attach interrupt routine INT_NAME to EVENT", "K2 §3.3, §3.4"),
+    d("DTCH", K::Dtch, (1, 1), C::Special, "detach EVENT", "K2; S7-200"),
+    d("ENI", K::Eni, (0, 0), C::Special, "enable interrupts", "K2; S7-200"),
+    d("DISI", K::Disi, (0, 0), C::Special, "disable interrupts (events wait)", "K2; S7-200"),
+    d("WDT", K::Wdt, (0, 0), C::Special, "restart the watchdog count", "K80S"),
+    d("WDR", K::Wdt, (0, 0), C::Special, "restart the watchdog count (S7-200 name)", "S7-200"),
+    d("NOP", K::Nop, (0, 1), C::Bit, "nothing", "IEC"),
+];
+
+/// Comparison mnemonics, S7-200 style: `LD`/`A`/`O` + `B`/`W`/`D`/`R` + operator.
+pub fn compare(m: &str) -> Option<Def> {
+    let (comb, rest) = if let Some(r) = m.strip_prefix("LD") {
+        (Comb::Ld, r)
+    } else if let Some(r) = m.strip_prefix('A') {
+        (Comb::And, r)
+    } else if let Some(r) = m.strip_prefix('O') {
+        (Comb::Or, r)
+    } else {
+        return None;
+    };
+    let (ty, op) = match rest.get(..1)? {
+        "B" => (TyHint::Byte, &rest[1..]),
+        "W" => (TyHint::Int, &rest[1..]),
+        "D" => (TyHint::DInt, &rest[1..]),
+        "R" => (TyHint::Real, &rest[1..]),
+        _ => return None,
+    };
+    let op = match op {
+        "=" | "==" => Cmp::Eq,
+        "<>" => Cmp::Ne,
+        "<" => Cmp::Lt,
+        ">" => Cmp::Gt,
+        "<=" => Cmp::Le,
+        ">=" => Cmp::Ge,
+        _ => return None,
+    };
+    Some(Def {
+        name: "compare",
+        kind: Kind::Compare { comb, ty, op },
+        operands: (2, 2),
+        cost: CostClass::Compare,
+        doc: "compare IN1 with IN2 and load / AND / OR the result into the CR",
+        source: "S7-200 (KincoBuilder IL)",
+    })
+}
+
+/// Looks a core mnemonic up.
+pub fn lookup(m: &str) -> Option<Def> {
+    CORE.iter().find(|d| d.name == m).copied().or_else(|| compare(m))
+}
+
+/// The instruction table as Markdown rows (`docs/il.md` is checked against it).
+pub fn markdown(specials: &[super::SpecialDef], family: &str) -> String {
+    let mut s = String::from("| instruction | operands | does | source |\n|---|---|---|---|\n");
+    for d in CORE {
+        let ops = if d.operands.0 == d.operands.1 {
+            d.operands.0.to_string()
+        } else {
+            format!("{}–{}", d.operands.0, d.operands.1)
+        };
+        let name = d.name.replace('|', "\\|");
+        s.push_str(&format!("| `{name}` | {ops} | {} | {} |\n", d.doc, d.source));
+    }
+    s.push_str("| `LDB=` … `LDR>=`, `AB=` … `OR<>` | 2 | compare: `LD`/`A`/`O` × `B`(BYTE) `W`(INT) `D`(DINT) `R`(REAL) × `=` `<>` `<` `>` `<=` `>=` | S7-200 (KincoBuilder IL) |\n");
+    for sp in specials {
+        let n = sp.args.len();
+        let ops = if sp.optional > 0 { format!("{}–{n}", n - sp.optional as usize) } else { n.to_string() };
+        s.push_str(&format!("| `{}` ({family}) | {ops} | {} | {} |\n", sp.name, sp.doc, sp.source));
+    }
+    s
+}

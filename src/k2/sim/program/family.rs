@@ -1,0 +1,531 @@
+//! The K2's side of the scan engine: its operand space, timer classes, pointers, cost
+//! table and special instructions ([`K2Family`]), and its memory image at run time
+//! ([`K2Machine`], a view of the simulator during one scan).
+//!
+//! Timer resolution classes (K2 manual §2.1.2: 256 timers, 4 with a 1 ms base, 16 with
+//! 10 ms, 236 with 100 ms; the manual does not say which numbers, so we choose contiguous
+//! blocks): **T0–T3 1 ms, T4–T19 10 ms, T20–T255 100 ms**.
+//!
+//! Locations: areas are numbered as [`Area::ALL`] (I, Q, M, V, SM, AI, AQ, T values, C
+//! values), plus 9 = timer bits and 10 = counter bits. Pointers (`&VB100`) are
+//! `(area + 1) << 24 | byte`, so a pointer cannot be mistaken for a plain number below
+//! 16#01000000 and `*VDn` of a bad pointer is a fault rather than a stray write.
+
+use super::super::K2Sim;
+use crate::core::DataType;
+use crate::engine::{
+    self, ArgKind, CostTable, Element, Family, Fault, FaultKind, Flags, Loc, Machine, Opd, OperandError, Resolved,
+    SpecialDef, Width,
+};
+use crate::k2::catalog;
+use crate::k2::instr::RtcTime;
+use crate::k2::operand::{Area, K2Operand, Width as KW};
+use crate::k2::space::K2Space;
+use std::time::Duration;
+
+pub const AREA_TQ: u8 = 9;
+pub const AREA_CQ: u8 = 10;
+
+/// Time base of timer `n` (K2 §2.1.2 classes, numbering chosen here).
+pub fn timer_base_ns(n: u32) -> u64 {
+    match n {
+        0..=3 => 1_000_000,
+        4..=19 => 10_000_000,
+        _ => 100_000_000,
+    }
+}
+
+/// Special instruction ids.
+pub mod id {
+    pub const PLS: u16 = 1;
+    pub const HDEF: u16 = 2;
+    pub const HSC: u16 = 3;
+    pub const PSTOP: u16 = 4;
+    pub const READ_RTC: u16 = 5;
+    pub const SET_RTC: u16 = 6;
+}
+
+use super::motion::id as motion;
+use ArgKind as A;
+
+const W: ArgKind = A::Value(Some(DataType::Word));
+const D: ArgKind = A::Value(Some(DataType::DWord));
+const DI: ArgKind = A::Value(Some(DataType::DInt));
+const B: ArgKind = A::Out(Some(DataType::Byte));
+
+/// The K2's own instructions (K2 manual §3.3, §3.4; PSTOP parameters from the KincoBuilder
+/// help as quoted in `../shared/spec/kinco-public-notes.md`).
+pub static SPECIALS: &[SpecialDef] = &[
+    SpecialDef {
+        name: "PLS",
+        id: id::PLS,
+        args: &[A::Const],
+        optional: 0,
+        edge: true,
+        doc: "PLS q: load the channel's SM settings and start PTO/PWM (on the rising edge of EN)",
+        source: "K2 §3.4.2",
+    },
+    SpecialDef {
+        name: "HDEF",
+        id: id::HDEF,
+        args: &[A::Const, A::Const],
+        optional: 0,
+        edge: false,
+        doc: "HDEF hsc, mode: assign a counting mode",
+        source: "K2 §3.3.1, §3.3.5",
+    },
+    SpecialDef {
+        name: "HSC",
+        id: id::HSC,
+        args: &[A::Const],
+        optional: 0,
+        edge: false,
+        doc: "HSC n: apply the control byte and start or stop the counter",
+        source: "K2 §3.3.5",
+    },
+    SpecialDef {
+        name: "PSTOP",
+        id: id::PSTOP,
+        args: &[A::Const, A::Bit, A::Bit, A::Out(Some(DataType::Word))],
+        optional: 3,
+        edge: false,
+        doc: "PSTOP AXIS[, EXEC, DONE, ERRID]: emergency stop on the rising edge of EXEC (or of EN without EXEC); latches SM201.7",
+        source: "K2 §3.4.3; KincoBuilder help (kinco-public-notes)",
+    },
+    SpecialDef {
+        name: "PREL",
+        id: motion::PREL,
+        args: &[A::Const, A::Bit, W, D, W, DI, A::Bit, A::Bit, B],
+        optional: 0,
+        edge: false,
+        doc: "PREL AXIS, EXEC, MINF, MAXF, TIME, DIST, DONE, ERR, ERRID: relative move with a MINF→MAXF ramp over TIME ms, on EXEC's rising edge",
+        source: "K2 §3.4.3; KincoBuilder help (kinco-public-notes)",
+    },
+    SpecialDef {
+        name: "PABS",
+        id: motion::PABS,
+        args: &[A::Const, A::Bit, W, D, W, DI, A::Bit, A::Bit, B],
+        optional: 0,
+        edge: false,
+        doc: "PABS AXIS, EXEC, MINF, MAXF, TIME, POS, DONE, ERR, ERRID: absolute move to POS (SMD212 …)",
+        source: "K2 §3.4.3; KincoBuilder help (kinco-public-notes)",
+    },
+    SpecialDef {
+        name: "PHOME",
+        id: motion::PHOME,
+        args: &[A::Const, A::Bit, A::Bit, A::Bit, W, W, W, D, W, A::Bit, A::Bit, B],
+        optional: 0,
+        edge: false,
+        doc: "PHOME AXIS, EXEC, HOME, NHOME, MODE, DIRC, MINF, MAXF, TIME, DONE, ERR, ERRID: run in DIRC until HOME (MODE 0: creep at MINF after NHOME)",
+        source: "K2 §3.4.3.1; KincoBuilder help (kinco-public-notes)",
+    },
+    SpecialDef {
+        name: "PJOG",
+        id: motion::PJOG,
+        args: &[A::Const, A::Bit, D, W, A::Bit, A::Bit, B],
+        optional: 0,
+        edge: false,
+        doc: "PJOG AXIS, EXEC, MAXF, DIRC, DONE, ERR, ERRID: run at MAXF (re-read every scan) while EXEC is on",
+        source: "K2 §3.4.3.2; KincoBuilder help (kinco-public-notes)",
+    },
+    SpecialDef {
+        name: "PFLO_F",
+        id: motion::PFLO_F,
+        args: &[A::Const, A::Bit, D, W, W, DI, A::Bit, A::Bit, B],
+        optional: 0,
+        edge: false,
+        doc: "PFLO_F AXIS, EXEC, F, NUM, DENOM, COUNT, DONE, ERR, ERRID: follow F × NUM / DENOM Hz for COUNT pulses (≥ 30 Hz)",
+        source: "K2 §3.4.3 (parameters named there; order ours)",
+    },
+    SpecialDef {
+        name: "READ_RTC",
+        id: id::READ_RTC,
+        args: &[A::Out(Some(DataType::Byte))],
+        optional: 0,
+        edge: false,
+        doc: "READ_RTC buf: 8 BCD bytes yy mm dd hh mm ss 00 weekday",
+        source: "K2 §2.2.10; S7-200 buffer layout",
+    },
+    SpecialDef {
+        name: "SET_RTC",
+        id: id::SET_RTC,
+        args: &[A::Out(Some(DataType::Byte))],
+        optional: 0,
+        edge: false,
+        doc: "SET_RTC buf: set the clock from 8 BCD bytes (invalid: ENO = 0)",
+        source: "K2 §2.2.10; S7-200 buffer layout",
+    },
+];
+
+/// Default cost table: estimates (the K2 manual gives no execution times), configurable
+/// with `sim program costs`. Minimum scan 1 ms (the simulator's scan time without a
+/// program), watchdog 300 ms.
+pub fn default_costs() -> CostTable {
+    CostTable {
+        // bit, compare, move, arith, real, timer, jump, call, special (ns)
+        class_ns: [200, 1_500, 2_000, 3_000, 10_000, 5_000, 1_000, 5_000, 20_000],
+        per_element_ns: 200,
+        overhead_ns: 300_000,
+        min_scan_ns: 1_000_000,
+        watchdog_ns: 300_000_000,
+    }
+}
+
+/// The K2 operand space as the engine sees it.
+pub struct K2Family {
+    pub space: K2Space,
+    /// A cost table set by the user (`sim program costs`), else the defaults.
+    pub costs: Option<CostTable>,
+}
+
+fn op_err(e: crate::core::Error) -> OperandError {
+    let mut o = OperandError::new(e.message.clone());
+    o.hint = e.hint.clone();
+    o
+}
+
+fn to_loc(o: &K2Operand) -> Option<Loc> {
+    let area = Area::ALL.iter().position(|a| *a == o.area)? as u8;
+    let width = match o.width {
+        KW::Bit(b) => Width::Bit(b),
+        KW::Byte => Width::Byte,
+        KW::Word => Width::Word,
+        KW::DWord => Width::DWord,
+        KW::Element => Width::Element,
+        KW::Group { .. } => return None,
+    };
+    Some(Loc { area, width, index: o.byte })
+}
+
+impl K2Family {
+    fn one(&self, text: &str) -> Result<K2Operand, OperandError> {
+        let ops = self.space.parse_k2(text).map_err(op_err)?;
+        if ops.len() != 1 {
+            return Err(OperandError::new("a program operand is one location, not a range"));
+        }
+        Ok(ops[0])
+    }
+}
+
+impl Family for K2Family {
+    fn operand(&self, text: &str) -> Result<Resolved, OperandError> {
+        let o = self.one(text)?;
+        if let KW::Element = o.width {
+            // T5 / C5 in a bit context is the timer's or counter's bit (S7-200 convention);
+            // as a value it is the current value.
+            let area = if o.area == Area::T { AREA_TQ } else { AREA_CQ };
+            return Ok(Resolved {
+                loc: Loc { area, width: Width::Bit(0), index: o.byte },
+                ty: DataType::Bool,
+                canonical: o.canonical(),
+            });
+        }
+        let loc = to_loc(&o).ok_or_else(|| {
+            OperandError::new(format!("{} is a bit group; programs address bytes, words and bits", o.canonical()))
+                .hint("use MW/VW words or M/V bits in programs")
+        })?;
+        Ok(Resolved { loc, ty: o.view, canonical: o.canonical() })
+    }
+
+    fn value_operand(&self, text: &str) -> Result<Resolved, OperandError> {
+        let o = self.one(text)?;
+        if let KW::Element = o.width {
+            return Ok(Resolved { loc: to_loc(&o).unwrap(), ty: DataType::Int, canonical: o.canonical() });
+        }
+        self.operand(text)
+    }
+
+    fn element(&self, text: &str, want_timer: bool) -> Result<Element, OperandError> {
+        let o = self.one(text)?;
+        let (area, q, what) = if want_timer { (Area::T, AREA_TQ, "timer") } else { (Area::C, AREA_CQ, "counter") };
+        if o.area != area || o.width != KW::Element {
+            return Err(OperandError::new(format!("{} is not a {what}", o.canonical())).hint(if want_timer {
+                "timers are T0…T255"
+            } else {
+                "counters are C0…C255"
+            }));
+        }
+        Ok(Element {
+            number: o.byte,
+            cv: to_loc(&o).unwrap(),
+            q: Loc { area: q, width: Width::Bit(0), index: o.byte },
+            base_ns: if want_timer { timer_base_ns(o.byte) } else { 0 },
+        })
+    }
+
+    fn pointer(&self, loc: Loc) -> Option<u32> {
+        let a = Area::ALL.get(loc.area as usize)?;
+        a.is_bit_area().then_some(((loc.area as u32 + 1) << 24) | loc.index)
+    }
+
+    fn specials(&self) -> &'static [SpecialDef] {
+        SPECIALS
+    }
+
+    fn costs(&self) -> CostTable {
+        self.costs.clone().unwrap_or_else(default_costs)
+    }
+
+    fn events(&self) -> u32 {
+        // K2 event numbers go up to 191 (HSC3 PV 32, §3.3.3).
+        192
+    }
+}
+
+/// The simulator during one scan, as the engine's memory image.
+pub struct K2Machine<'a> {
+    pub sim: &'a mut K2Sim,
+    pub now: Duration,
+    /// Per-occurrence state of the K2 instructions (EXEC edges, running moves).
+    pub inst: &'a mut Vec<super::motion::Inst>,
+    pub raised: Vec<(Duration, crate::k2::instr::EventKind)>,
+}
+
+/// Writes a raw pattern into a byte area (S7 byte order), ignoring out-of-range locations.
+#[inline(always)]
+fn put(b: &mut [u8], w: Width, i: usize, v: u32) {
+    match w {
+        Width::Bit(k) => {
+            if let Some(x) = b.get_mut(i) {
+                *x = (*x & !(1 << k)) | (((v & 1) as u8) << k);
+            }
+        }
+        Width::Byte => {
+            if let Some(x) = b.get_mut(i) {
+                *x = v as u8
+            }
+        }
+        Width::Word => {
+            if let Some(x) = b.get_mut(i..i + 2) {
+                x.copy_from_slice(&(v as u16).to_be_bytes())
+            }
+        }
+        Width::DWord => {
+            if let Some(x) = b.get_mut(i..i + 4) {
+                x.copy_from_slice(&v.to_be_bytes())
+            }
+        }
+        Width::Element => {}
+    }
+}
+
+impl K2Machine<'_> {
+    /// The same bookkeeping as a client's write: HSC CV holds, position bits, E2PROM wear.
+    #[cold]
+    #[inline(never)]
+    fn hook(&mut self, area: Area, l: Loc) {
+        let kw = match l.width {
+            Width::Bit(k) => KW::Bit(k),
+            Width::Byte => KW::Byte,
+            Width::Word => KW::Word,
+            _ => KW::DWord,
+        };
+        let op = K2Operand::new(area, kw, l.index);
+        let mut raised = std::mem::take(&mut self.raised);
+        self.sim.after_write(&op, &mut raised);
+        self.raised = raised;
+    }
+
+    fn area(&self, a: u8) -> &[u8] {
+        match a {
+            0 => &self.sim.mem.i,
+            1 => &self.sim.mem.q,
+            2 => &self.sim.mem.m,
+            3 => &self.sim.mem.v,
+            4 => &self.sim.mem.sm,
+            5 => &self.sim.mem.ai,
+            6 => &self.sim.mem.aq,
+            _ => &[],
+        }
+    }
+
+    /// Registers the CPU owns: SMB0 (system bits) and the position current values.
+    #[inline(never)]
+    fn read_only(&self, l: Loc) -> bool {
+        if l.area != 4 {
+            return false;
+        }
+        let (lo, hi) = (l.index, l.index + l.width.bytes());
+        lo == 0 || self.sim.pto.iter().any(|p| lo < p.regs.pos_cv + 4 && p.regs.pos_cv < hi)
+    }
+
+    fn buf(&self, o: &Opd) -> Result<Loc, Fault> {
+        engine::loc_of(self, o, DataType::Byte)?
+            .filter(|l| matches!(l.width, Width::Byte) && (l.index as usize + 8) <= self.area(l.area).len())
+            .ok_or_else(|| Fault::new(FaultKind::BadAddress, "an 8-byte clock buffer does not fit there"))
+    }
+}
+
+impl Machine for K2Machine<'_> {
+    #[inline(always)]
+    fn get(&self, l: Loc) -> u32 {
+        let i = l.index as usize;
+        let m = &self.sim.mem;
+        match l.area {
+            7 => m.t.get(i).map_or(0, |v| *v as u16 as u32),
+            8 => m.c.get(i).map_or(0, |v| *v as u16 as u32),
+            AREA_TQ => m.tq.get(i).map_or(0, |v| *v as u32),
+            AREA_CQ => m.cq.get(i).map_or(0, |v| *v as u32),
+            a => {
+                let b = self.area(a);
+                match l.width {
+                    Width::Bit(k) => b.get(i).map_or(0, |v| (v >> k & 1) as u32),
+                    Width::Byte => b.get(i).map_or(0, |v| *v as u32),
+                    Width::Word => b.get(i..i + 2).map_or(0, |w| u16::from_be_bytes([w[0], w[1]]) as u32),
+                    Width::DWord => b.get(i..i + 4).map_or(0, |w| u32::from_be_bytes([w[0], w[1], w[2], w[3]])),
+                    Width::Element => 0,
+                }
+            }
+        }
+    }
+
+    #[inline(always)]
+    fn set(&mut self, l: Loc, v: u32) {
+        let i = l.index as usize;
+        let m = &mut self.sim.mem;
+        match l.area {
+            // I, Q, M, AI, AQ: plain memory.
+            0 => put(&mut m.i, l.width, i, v),
+            1 => put(&mut m.q, l.width, i, v),
+            2 => put(&mut m.m, l.width, i, v),
+            5 => put(&mut m.ai, l.width, i, v),
+            6 => put(&mut m.aq, l.width, i, v),
+            // V: E2PROM wear is counted for the backup area.
+            3 => {
+                put(&mut m.v, l.width, i, v);
+                if l.index + l.width.bytes() > catalog::EEPROM_FIRST {
+                    self.hook(Area::V, l);
+                }
+            }
+            // SM: the CPU owns SMB0 and the position values; writes act like a client's.
+            4 => {
+                if self.read_only(l) {
+                    return;
+                }
+                put(&mut self.sim.mem.sm, l.width, i, v);
+                self.hook(Area::SM, l);
+            }
+            7 => {
+                if let Some(x) = m.t.get_mut(i) {
+                    *x = v as u16 as i16
+                }
+            }
+            8 => {
+                if let Some(x) = m.c.get_mut(i) {
+                    *x = v as u16 as i16
+                }
+            }
+            AREA_TQ => {
+                if let Some(x) = m.tq.get_mut(i) {
+                    *x = (v & 1) as u8
+                }
+            }
+            AREA_CQ => {
+                if let Some(x) = m.cq.get_mut(i) {
+                    *x = (v & 1) as u8
+                }
+            }
+            _ => {}
+        }
+    }
+
+    fn deref(&self, ptr: u32, w: Width) -> Option<Loc> {
+        let area = (ptr >> 24).checked_sub(1)? as u8;
+        if area > 4 {
+            return None;
+        }
+        let index = ptr & 0x00FF_FFFF;
+        let len = self.area(area).len();
+        (index as usize + w.bytes() as usize <= len).then_some(Loc { area, width: w, index })
+    }
+
+    fn special(&mut self, sid: u16, inst: u32, args: &[Opd], types: &[DataType]) -> Result<bool, Fault> {
+        let vals: Vec<u32> =
+            args.iter().zip(types).map(|(a, t)| engine::read(&*self, a, *t)).collect::<Result<_, _>>()?;
+        let c = |k: usize| -> Result<u32, Fault> { Ok(vals[k]) };
+        let now = self.now;
+        let sim = &mut *self.sim;
+        Ok(match sid {
+            id::PLS => {
+                let ch = c(0)? as u8;
+                match sim.pto_index(ch) {
+                    Ok(i) => sim.pto[i].pls(&mut sim.mem, now).is_ok(),
+                    Err(_) => false,
+                }
+            }
+            id::HDEF => {
+                let (h, mode) = (c(0)? as u8, c(1)? as u8);
+                match sim.hsc_index(h) {
+                    Ok(i) => sim.hsc[i].hdef(mode).is_ok(),
+                    Err(_) => false,
+                }
+            }
+            id::HSC => {
+                let h = c(0)? as u8;
+                match sim.hsc_index(h) {
+                    Ok(i) => sim.hsc[i].hsc(&mut sim.mem).is_ok(),
+                    Err(_) => false,
+                }
+            }
+            id::PSTOP => {
+                let ch = c(0)? as u8;
+                // EXEC's rising edge (or EN's, when EXEC is left out).
+                let exec = if args.len() > 1 { c(1)? != 0 } else { true };
+                let i = inst as usize;
+                if self.inst.len() <= i {
+                    self.inst.resize(i + 1, Default::default());
+                }
+                let rising = exec && !self.inst[i].exec_prev;
+                self.inst[i].exec_prev = exec;
+                let sim = &mut *self.sim;
+                let ok = match sim.pto_index(ch) {
+                    Ok(i) => {
+                        if rising {
+                            sim.pto[i].pstop(&mut sim.mem);
+                        }
+                        true
+                    }
+                    Err(_) => false,
+                };
+                if args.len() > 2 {
+                    engine::write(self, &args[2], DataType::Bool, (rising && ok) as u32)?;
+                }
+                if args.len() > 3 {
+                    engine::write(self, &args[3], DataType::Word, if ok { 0 } else { 1 })?;
+                }
+                ok
+            }
+            id::READ_RTC => {
+                let l = self.buf(&args[0])?;
+                let b = self.sim.rtc.read(now).to_bcd8();
+                for (k, v) in b.iter().enumerate() {
+                    self.set(l.nth(k as u32), *v as u32);
+                }
+                true
+            }
+            id::SET_RTC => {
+                let l = self.buf(&args[0])?;
+                let mut b = [0u8; 8];
+                for (k, v) in b.iter_mut().enumerate() {
+                    *v = self.get(l.nth(k as u32)) as u8;
+                }
+                match RtcTime::from_bcd8(&b) {
+                    Ok(t) if t.validate().is_ok() => {
+                        self.sim.rtc.set(t, now);
+                        true
+                    }
+                    _ => false,
+                }
+            }
+            super::motion::id::PREL..=super::motion::id::PFLO_F => return self.position(sid, inst, args, &vals),
+            _ => return Err(Fault::new(FaultKind::Instruction, format!("unknown family instruction {sid}"))),
+        })
+    }
+
+    /// S7-200 arithmetic status bits SM1.0 zero, SM1.1 overflow, SM1.2 negative, SM1.3
+    /// division by zero (the S7-200 convention the K2 SM map follows; not in the K2 manual).
+    fn flags(&mut self, f: Flags) {
+        let b = &mut self.sim.mem.sm[1];
+        *b = (*b & 0xF0) | f.zero as u8 | (f.overflow as u8) << 1 | (f.negative as u8) << 2 | (f.div_zero as u8) << 3;
+    }
+}

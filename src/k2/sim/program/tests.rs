@@ -1,0 +1,587 @@
+//! The simulated K2 running programs: scan cycle, system bits, scan-time registers,
+//! modes, watchdog, the manual's IL snippets, and K2 instructions from a program.
+
+use super::Mode;
+use crate::core::{Clock, Device, OperandSpace, Value};
+use crate::engine::FaultKind;
+use crate::k2::sim::{self, K2Sim};
+use std::time::Duration;
+
+fn sim() -> (K2Sim, Clock) {
+    let clock = Clock::stepped();
+    (sim::open("K205-16DT", clock.clone()).unwrap(), clock)
+}
+
+fn get(s: &mut K2Sim, text: &str) -> Value {
+    let op = s.space().parse(text).unwrap()[0];
+    s.read(&[op]).unwrap()[0]
+}
+
+fn set(s: &mut K2Sim, text: &str, v: Value) {
+    let op = s.space().parse(text).unwrap()[0];
+    s.write(&[(op, v)]).unwrap();
+}
+
+fn on(s: &mut K2Sim, t: &str) -> bool {
+    get(s, t) == Value::Bool(true)
+}
+
+#[test]
+fn sm0_1_is_on_in_the_first_scan_only_and_scans_follow_the_cost_table() {
+    let (mut s, clock) = sim();
+    // Q0.0 := SM0.1 latched; count scans in VW0.
+    s.load_program("LD %SM0.1\nS %Q0.0, 1\nLD %SM0.0\nINC %VW0\nLD %SM0.6\nST %Q0.1", "t.il").unwrap();
+    assert!(on(&mut s, "Q0.0"), "SM0.1 was on in the first scan");
+    assert_eq!(get(&mut s, "VW0"), Value::Int(1));
+    clock.step(Duration::from_millis(10));
+    // 10 ms of 1 ms scans (the program costs far less than the 1 ms minimum) → 11 scans.
+    assert_eq!(get(&mut s, "VW0"), Value::Int(11));
+    assert_eq!(get(&mut s, "SMW22"), Value::Int(1), "last scan time 1 ms (SMW22)");
+    let p = s.plc().unwrap();
+    assert_eq!(p.stats.scans, 11);
+    assert_eq!(p.stats.last_instructions, 7, "six and the implicit end");
+}
+
+#[test]
+fn a_long_program_has_a_long_scan() {
+    let (mut s, clock) = sim();
+    // 2000 word moves at 2 µs each + 0.3 ms overhead = 4.3 ms scans.
+    let text = "LD %SM0.0\n".to_string() + &"MOVE %VW2, %VW4\n".repeat(2000) + "INC %VW0\n";
+    s.load_program(&text, "long.il").unwrap();
+    clock.step(Duration::from_millis(43));
+    assert_eq!(get(&mut s, "VW0"), Value::Int(10), "scans at 0, 4.3042, … 38.74 ms");
+    let st = s.plc().unwrap().stats;
+    assert_eq!(st.last_ns, 300_000 + 200 + 2000 * 2_000 + 3_000 + 1_000, "overhead + LD + moves + INC + end");
+    assert_eq!(get(&mut s, "SMW26"), Value::Int(4), "max scan time in ms (SMW26)");
+}
+
+#[test]
+fn a_ton_times_in_virtual_time() {
+    // T37 is a 100 ms timer (T20–T255), T2 a 1 ms timer (T0–T3).
+    let (mut s, clock) = sim();
+    s.load_program("LD %I0.0\nTON T37, 30\nST %Q0.0\nLD %I0.0\nTON T2, 5\nST %Q0.1", "ton.il").unwrap();
+    set(&mut s, "I0.0", Value::Bool(true));
+    // The next scan (1 ms later) sees the input and starts the timers.
+    clock.step(Duration::from_millis(5));
+    assert!(!on(&mut s, "Q0.1"));
+    clock.step(Duration::from_millis(1));
+    assert!(on(&mut s, "Q0.1"), "T2: 5 × 1 ms");
+    clock.step(Duration::from_millis(2994));
+    assert!(!on(&mut s, "Q0.0"));
+    assert_eq!(get(&mut s, "T37"), Value::Int(29), "T37's value readable as T37");
+    clock.step(Duration::from_millis(2));
+    assert!(on(&mut s, "Q0.0"), "T37: 30 × 100 ms");
+    assert_eq!(s.mem.tq[37], 1, "the timer bit (T37 in a bit context)");
+    assert!(on(&mut s, "T37/BOOL"), "…read from outside as T37/BOOL");
+}
+
+#[test]
+fn the_manuals_snippet_moves_a_new_current_value() {
+    // K2 §3.4.3.1 method 2: LD %M0.4 / R_TRIG / MOVE DI#100, %SMD208 / ST %SM201.4 — on
+    // DONE's rising edge SMD208 = 100 and SM201.4 = 1 load the current value SMD212 = 100.
+    let (mut s, clock) = sim();
+    s.load_program("(* Network 1 *)\nLD %M0.4\nR_TRIG\nMOVE DI # 100, %SMD208\nST %SM201.4", "manual.il").unwrap();
+    assert_eq!(get(&mut s, "SMD212/DINT"), Value::Int(0));
+    set(&mut s, "M0.4", Value::Bool(true));
+    clock.step(Duration::from_millis(1));
+    assert_eq!(get(&mut s, "SMD208"), Value::Int(100));
+    assert_eq!(get(&mut s, "SMD212/DINT"), Value::Int(100), "SM201.4 loaded SMD208 into SMD212");
+    clock.step(Duration::from_millis(1));
+    assert!(!on(&mut s, "SM201.4"), "R_TRIG: one scan");
+}
+
+#[test]
+fn a_program_starts_a_pulse_train_with_pls() {
+    // K2 §3.4.2: SMB67 = 16#85, SMW68 = cycle, SMD72 = count, then PLS 0 on a rising edge.
+    let (mut s, clock) = sim();
+    s.load_program(
+        "LD %SM0.1\nMOVE B#16#85, %SMB67\nMOVE 500, %SMW68\nMOVE DI#1000, %SMD72\nLD %I0.0\nPLS 0\nST %M0.0",
+        "pto.il",
+    )
+    .unwrap();
+    set(&mut s, "I0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(1));
+    assert!(on(&mut s, "M0.0"), "ENO of PLS");
+    assert!(!on(&mut s, "SM66.7"), "PTO0 busy");
+    clock.step(Duration::from_millis(501));
+    assert!(on(&mut s, "SM66.7"), "idle after 1000 × 500 µs");
+    assert_eq!(get(&mut s, "SMD212/DINT"), Value::Int(1000));
+}
+
+#[test]
+fn an_endless_loop_trips_the_watchdog_and_stops_the_cpu() {
+    // K80S: a scan past the watchdog stops the CPU and turns outputs off; a fault is recorded.
+    let (mut s, clock) = sim();
+    s.load_program("LD %SM0.0\nS %Q0.0, 2\nLD %I0.0\nJMPC LOOP\nJMP END\nLOOP: LD %SM0.0\nJMP LOOP\nEND:", "wd.il")
+        .unwrap();
+    clock.step(Duration::from_millis(5));
+    assert!(on(&mut s, "Q0.0") && on(&mut s, "Q0.1"));
+    set(&mut s, "I0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(2));
+    s.advance();
+    let p = s.plc().unwrap();
+    assert_eq!(p.mode, Mode::Stop);
+    let f = &p.faults[0];
+    assert_eq!(f.kind, FaultKind::Watchdog);
+    assert!(f.line == 6 || f.line == 7, "where the loop was: {f}");
+    assert!(!on(&mut s, "Q0.0") && !on(&mut s, "Q0.1"), "outputs at their STOP values");
+    let scans = s.plc().unwrap().stats.scans;
+    clock.step(Duration::from_millis(100));
+    s.advance();
+    assert_eq!(s.plc().unwrap().stats.scans, scans, "no scans in STOP");
+    // Modbus is still served in STOP: memory reads and writes work.
+    set(&mut s, "VW0", Value::Int(5));
+    assert_eq!(get(&mut s, "VW0"), Value::Int(5));
+    // STOP → RUN restarts (first scan again) — the input still loops, so clear it first.
+    set(&mut s, "I0.0", Value::Bool(false));
+    s.set_mode(Mode::Run).unwrap();
+    assert!(on(&mut s, "Q0.0"));
+}
+
+#[test]
+fn pause_freezes_and_run_resumes_without_reinitialising() {
+    let (mut s, clock) = sim();
+    s.load_program("LD %SM0.1\nMOVE 100, %VW0\nLD %SM0.0\nINC %VW2\nLD %I0.0\nTON T37, 10\nST %Q0.0", "p.il").unwrap();
+    set(&mut s, "I0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(500));
+    let t = get(&mut s, "T37");
+    s.set_mode(Mode::Pause).unwrap();
+    set(&mut s, "VW0", Value::Int(7));
+    clock.step(Duration::from_millis(700));
+    assert_eq!(get(&mut s, "T37"), t, "frozen");
+    let n = get(&mut s, "VW2");
+    s.set_mode(Mode::Run).unwrap();
+    clock.step(Duration::from_millis(3));
+    assert_eq!(get(&mut s, "VW0"), Value::Int(7), "no first scan again: SM0.1 stayed off");
+    assert!(get(&mut s, "VW2").as_i64() > n.as_i64(), "scanning again");
+    assert_eq!((t, get(&mut s, "T37")), (Value::Int(4), Value::Int(5)), "499 ms before the pause + 3 ms after");
+    assert!(!on(&mut s, "Q0.0"));
+    clock.step(Duration::from_millis(500));
+    assert!(on(&mut s, "Q0.0"), "1 s of RUN in all");
+}
+
+#[test]
+fn the_switch_at_stop_wins_over_a_run_command() {
+    // K2 §2.2.1 table: switch STOP + command RUN = STOP.
+    let (mut s, _) = sim();
+    s.load_program("LD %SM0.0\nS %Q0.0, 1", "s.il").unwrap();
+    assert!(on(&mut s, "Q0.0"));
+    s.set_switch(false).unwrap();
+    assert_eq!(s.plc().unwrap().mode, Mode::Stop);
+    assert!(!on(&mut s, "Q0.0"));
+    assert!(s.set_mode(Mode::Run).is_err());
+    assert_eq!(s.plc().unwrap().mode, Mode::Stop);
+    s.set_switch(true).unwrap();
+    s.set_mode(Mode::Run).unwrap();
+    assert!(on(&mut s, "Q0.0"));
+}
+
+#[test]
+fn load_errors_name_the_file_line_and_a_suggestion() {
+    let (mut s, _) = sim();
+    let e = s.load_program("LD %SM0.0\nMOVE 1, %VX0", "bad.il").unwrap_err();
+    assert!(e.message.starts_with("bad.il:2:9:"), "{}", e.message);
+    let e = s.load_program("LD %SM0.0\nPLSS 0", "bad.il").unwrap_err();
+    assert!(e.hint.as_deref().unwrap_or("").contains("PLS"), "{:?}", e.hint);
+    let e = s.load_program("LD %I7.0", "bad.il").unwrap_err();
+    assert!(e.message.contains("I7.0") && e.message.contains("K205-16DT"), "{}", e.message);
+    assert!(s.plc().is_none(), "nothing was loaded");
+}
+
+#[test]
+fn a_bad_indirect_address_stops_the_cpu() {
+    let (mut s, _) = sim();
+    s.load_program("LD %SM0.0\nMOVE 16#7F000000, %VD0\nMOVE 1, *%VD0", "ind.il").unwrap();
+    let p = s.plc().unwrap();
+    assert_eq!(p.mode, Mode::Stop);
+    assert_eq!(p.faults[0].kind, FaultKind::BadAddress);
+}
+
+// ---- interrupts (K2 §2.2.7 edge inputs, §2.1.2 timed interrupts, §3.4.2.3 event 28) ----
+
+#[test]
+fn an_edge_on_i0_0_runs_its_routine_at_the_edge_before_the_next_scan() {
+    let (mut s, clock) = sim();
+    s.load_program(
+        "PROGRAM MAIN\nLD %SM0.1\nATCH ON_EDGE, 0\nENI\nLD %SM0.0\nMOVE %VW10, %VW12\nEND_PROGRAM\n\
+         INTERRUPT ON_EDGE\nLD %SM0.0\nINC %VW10\nMOVE %SMW22, %VW14\nEND_INTERRUPT",
+        "edge.il",
+    )
+    .unwrap();
+    clock.step(Duration::from_micros(2500));
+    s.advance();
+    // Between the scans at 2 ms and 3 ms: the edge at 2.5 ms.
+    set(&mut s, "I0.0", Value::Bool(true));
+    assert_eq!(s.mem.v[11], 1, "the routine ran at the edge's time, at once");
+    assert_eq!(s.mem.v[13], 0, "the next scan's program has not run yet");
+    assert_eq!(s.plc().unwrap().stats.interrupts, 1);
+    clock.step(Duration::from_micros(500));
+    assert_eq!(get(&mut s, "VW12"), Value::Int(1), "the 3 ms scan saw the routine's result");
+    set(&mut s, "I0.0", Value::Bool(false));
+    assert_eq!(s.plc().unwrap().stats.interrupts, 1, "falling edge (event 1) not attached");
+    set(&mut s, "I0.1", Value::Bool(true));
+    assert_eq!(s.plc().unwrap().stats.interrupts, 1, "I0.1 (event 2) not attached");
+}
+
+#[test]
+fn a_timed_interrupt_fires_at_its_0_1_ms_interval() {
+    // SMB34 = 5 → every 0.5 ms: 2000 times in a simulated second.
+    let (mut s, clock) = sim();
+    s.load_program(
+        "PROGRAM MAIN\nLD %SM0.1\nMOVE B#5, %SMB34\nATCH TICK, 10\nENI\nEND_PROGRAM\n\
+         INTERRUPT TICK\nLD %SM0.0\nINC %VW20\nEND_INTERRUPT",
+        "tick.il",
+    )
+    .unwrap();
+    clock.step(Duration::from_secs(1));
+    assert_eq!(get(&mut s, "VW20"), Value::Int(2000));
+    // Timed interrupt 1 at the 0.1 ms base itself: 10 000 a second.
+    s.load_program(
+        "PROGRAM MAIN\nLD %SM0.1\nMOVE B#1, %SMB35\nATCH FAST, 11\nENI\nEND_PROGRAM\n\
+         INTERRUPT FAST\nLD %SM0.0\nINC %VW24\nEND_INTERRUPT",
+        "fast.il",
+    )
+    .unwrap();
+    clock.step(Duration::from_secs(1));
+    assert_eq!(get(&mut s, "VW24"), Value::Int(10_000));
+    s.load_program(
+        "PROGRAM MAIN\nLD %SM0.1\nMOVE B#3, %SMB34\nATCH TICK, 10\nEND_PROGRAM\nINTERRUPT TICK\nLD %SM0.0\nINC %VW22",
+        "off.il",
+    )
+    .unwrap();
+    clock.step(Duration::from_millis(10));
+    assert_eq!(get(&mut s, "VW22"), Value::Int(0), "attached but never enabled with ENI");
+}
+
+#[test]
+fn pto_complete_event_28_runs_its_routine() {
+    let (mut s, clock) = sim();
+    s.load_program(
+        "PROGRAM MAIN\nLD %SM0.1\nATCH PTO_DONE, 28\nENI\nMOVE B#16#85, %SMB67\nMOVE 500, %SMW68\nMOVE DI#100, %SMD72\nPLS 0\nEND_PROGRAM\n\
+         INTERRUPT PTO_DONE\nLD %SM0.0\nS %Q0.2, 1\nMOVE %SMD212, %VD30\nEND_INTERRUPT",
+        "pto.il",
+    )
+    .unwrap();
+    clock.step(Duration::from_millis(49));
+    assert!(!on(&mut s, "Q0.2"));
+    clock.step(Duration::from_millis(2));
+    assert!(on(&mut s, "Q0.2"), "100 × 500 µs = 50 ms");
+    assert_eq!(get(&mut s, "VD30"), Value::Int(100), "the routine saw all pulses counted");
+}
+
+#[test]
+fn the_instruction_table_in_docs_is_current() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/il.md");
+    let table = crate::engine::isa::markdown(super::family::SPECIALS, "K2");
+    let doc = std::fs::read_to_string(path).unwrap_or_default();
+    let (begin, end) = ("<!-- instruction table: generated -->\n", "<!-- end of table -->");
+    let (a, b) = (doc.find(begin).map(|i| i + begin.len()), doc.find(end));
+    if std::env::var_os("PLCSH_BLESS").is_some() {
+        if let (Some(a), Some(b)) = (a, b) {
+            std::fs::write(path, format!("{}{table}{}", &doc[..a], &doc[b..])).unwrap();
+            return;
+        }
+    }
+    let have = match (a, b) {
+        (Some(a), Some(b)) => &doc[a..b],
+        _ => "",
+    };
+    assert!(have == table, "docs/il.md's instruction table is stale: PLCSH_BLESS=1 cargo test the_instruction_table");
+}
+
+// ---- position control (K2 §3.4.3) --------------------------------------------------
+
+const PHOME: &str =
+    "(* Network 0 *)\nLD %SM0.0\nPHOME 0, %M0.0, %M0.1, %M0.2, %VW0, %VW2, %VW4, %VD6, %VW10, %M0.4, %M0.5, %MB1\n";
+
+fn home_setup(s: &mut K2Sim) {
+    // MODE 1 (HOME only), DIRC 1 (backward), MINF 200 Hz, MAXF 5 kHz, TIME 100 ms.
+    for (op, v) in [("VW0", 1), ("VW2", 1), ("VW4", 200), ("VD6", 5000), ("VW10", 100)] {
+        set(s, op, Value::Int(v));
+    }
+}
+
+#[test]
+fn the_manuals_phome_snippet_clears_the_current_value_on_done() {
+    // K2 §3.4.3.1 method 1: after PHOME, DONE's rising edge sets SM201.6 for one scan.
+    let (mut s, clock) = sim();
+    s.load_program(&format!("{PHOME}(* Network 1 *)\nLD %M0.4\nR_TRIG\nST %SM201.6"), "home.il").unwrap();
+    home_setup(&mut s);
+    set(&mut s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(1000));
+    let pos = get(&mut s, "SMD212/DINT").as_i64();
+    // 0.1 s ramp (≈ 260 pulses) then 5 kHz backward: about −(260 + 4500).
+    assert!((-4900..=-4600).contains(&pos), "moving backward toward home: {pos}");
+    assert!(on(&mut s, "Q0.2"), "direction output Q0.2 = reverse");
+    assert!(!on(&mut s, "M0.4"));
+    set(&mut s, "M0.1", Value::Bool(true));
+    clock.step(Duration::from_millis(2));
+    assert!(on(&mut s, "M0.4"), "DONE");
+    assert_eq!(get(&mut s, "SMD212/DINT"), Value::Int(0), "SM201.6 cleared the current value");
+    clock.step(Duration::from_millis(2));
+    assert!(!on(&mut s, "SM201.6"), "one scan only");
+    assert!(on(&mut s, "SM66.7"), "PTO0 idle");
+}
+
+#[test]
+fn the_manuals_phome_snippet_loads_a_new_current_value_on_done() {
+    // K2 §3.4.3.1 method 2: MOVE DI#100, %SMD208 / ST %SM201.4 → SMD212 = 100.
+    let (mut s, clock) = sim();
+    s.load_program(
+        &format!("{PHOME}(* Network 1 *)\nLD %M0.4\nR_TRIG\nMOVE DI # 100, %SMD208\nST %SM201.4"),
+        "home2.il",
+    )
+    .unwrap();
+    home_setup(&mut s);
+    set(&mut s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(300));
+    set(&mut s, "M0.1", Value::Bool(true));
+    clock.step(Duration::from_millis(3));
+    assert_eq!(get(&mut s, "SMD212/DINT"), Value::Int(100));
+}
+
+#[test]
+fn pabs_ramps_and_latches_its_parameters() {
+    // PABS 0 to 10 000 pulses: 125 Hz → 10 kHz over 100 ms; MAXF changed mid-move is ignored (§3.4.3.2).
+    let (mut s, clock) = sim();
+    s.load_program("LD %SM0.0\nPABS 0, %M0.0, %VW0, %VD2, %VW6, %VD8, %M0.1, %M0.2, %MB1", "abs.il").unwrap();
+    for (op, v) in [("VW0", 125), ("VD2", 10_000), ("VW6", 100), ("VD8", 10_000)] {
+        set(&mut s, op, Value::Int(v));
+    }
+    set(&mut s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(50));
+    let early = get(&mut s, "SMD212/DINT").as_i64();
+    set(&mut s, "VD2", Value::Int(1000));
+    clock.step(Duration::from_millis(50));
+    let ramp_end = get(&mut s, "SMD212/DINT").as_i64();
+    clock.step(Duration::from_millis(100));
+    let cruise = get(&mut s, "SMD212/DINT").as_i64() - ramp_end;
+    assert!(early < ramp_end - early, "accelerating: {early} in the first 50 ms, {} in the next", ramp_end - early);
+    assert!((990..=1010).contains(&cruise), "10 kHz cruise despite MAXF = 1000 written: {cruise} in 100 ms");
+    clock.step(Duration::from_millis(900));
+    assert!(on(&mut s, "M0.1"), "DONE");
+    assert_eq!(get(&mut s, "SMD212/DINT"), Value::Int(10_000));
+    assert!(!on(&mut s, "Q0.2"), "forward");
+}
+
+#[test]
+fn position_instructions_check_frequencies_and_the_emergency_stop_bit() {
+    let (mut s, clock) = sim();
+    s.load_program("LD %SM0.0\nPREL 0, %M0.0, %VW0, %VD2, %VW6, %VD8, %M0.1, %M0.2, %MB1", "rel.il").unwrap();
+    for (op, v) in [("VW0", 100), ("VD2", 1000), ("VW6", 0), ("VD8", -50)] {
+        set(&mut s, op, Value::Int(v));
+    }
+    set(&mut s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(2));
+    assert!(on(&mut s, "M0.2"), "ERR: MINF 100 Hz is below 125 Hz");
+    assert_eq!(get(&mut s, "MB1"), Value::Int(2));
+    set(&mut s, "VW0", Value::Int(125));
+    set(&mut s, "SM201.7", Value::Bool(true));
+    set(&mut s, "M0.0", Value::Bool(false));
+    clock.step(Duration::from_millis(2));
+    set(&mut s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(2));
+    assert_eq!(get(&mut s, "MB1"), Value::Int(1), "SM201.7 blocks position instructions");
+    set(&mut s, "SM201.7", Value::Bool(false));
+    set(&mut s, "M0.0", Value::Bool(false));
+    clock.step(Duration::from_millis(2));
+    set(&mut s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(100));
+    assert!(on(&mut s, "M0.1"), "DONE: 50 pulses back at 1 kHz");
+    assert_eq!(get(&mut s, "SMD212/DINT"), Value::Int(-50));
+    assert!(on(&mut s, "Q0.2"), "reverse");
+}
+
+#[test]
+fn pjog_follows_maxf_and_pflo_f_counts() {
+    let (mut s, clock) = sim();
+    s.load_program(
+        "LD %SM0.0\nPJOG 0, %M0.0, %VD0, %VW4, %M0.1, %M0.2, %MB1\nLD %SM0.0\nPFLO_F 1, %M2.0, %VD10, %VW14, %VW16, %VD18, %M2.1, %M2.2, %MB3",
+        "jog.il",
+    )
+    .unwrap();
+    set(&mut s, "VD0", Value::Int(1000));
+    set(&mut s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(1000));
+    let a = get(&mut s, "SMD212/DINT").as_i64();
+    set(&mut s, "VD0", Value::Int(2000));
+    clock.step(Duration::from_millis(1000));
+    let b = get(&mut s, "SMD212/DINT").as_i64() - a;
+    assert!((990..=1010).contains(&a) && (1990..=2010).contains(&b), "1 kHz then 2 kHz: {a}, {b}");
+    set(&mut s, "M0.0", Value::Bool(false));
+    clock.step(Duration::from_millis(5));
+    assert!(on(&mut s, "M0.1") && on(&mut s, "SM66.7"), "stopped, DONE");
+    // PFLO_F on channel 1: F = 1000 Hz × 3 / 2 = 1500 Hz for 300 pulses.
+    for (op, v) in [("VD10", 1000), ("VW14", 3), ("VW16", 2), ("VD18", 300)] {
+        set(&mut s, op, Value::Int(v));
+    }
+    set(&mut s, "M2.0", Value::Bool(true));
+    clock.step(Duration::from_millis(150));
+    assert!(!on(&mut s, "M2.1"));
+    clock.step(Duration::from_millis(60));
+    assert!(on(&mut s, "M2.1"), "300 pulses at 1500 Hz = 200 ms");
+    assert_eq!(get(&mut s, "SMD242/DINT"), Value::Int(300));
+    // Below 30 Hz: refused.
+    set(&mut s, "VD10", Value::Int(10));
+    set(&mut s, "M2.0", Value::Bool(false));
+    clock.step(Duration::from_millis(2));
+    set(&mut s, "M2.0", Value::Bool(true));
+    clock.step(Duration::from_millis(2));
+    assert_eq!(get(&mut s, "MB3"), Value::Int(2), "15 Hz is below PFLO_F's 30 Hz");
+}
+
+// ---- DEBUG mode (K80S: breakpoints, step execution) -----------------------------------
+
+#[test]
+fn a_breakpoint_halts_and_steps_show_the_current_result_and_operands() {
+    let (mut s, clock) = sim();
+    s.load_program("(* Network 1 *)\nLD %I0.0\nAND %M0.1\nST %Q0.0\n(* Network 2 *)\nLD %SM0.0\nINC %VW0", "dbg.il")
+        .unwrap();
+    set(&mut s, "M0.1", Value::Bool(true));
+    assert!(s.set_breakpoint("dbg.il:7").unwrap().contains("INC %VW0"));
+    clock.step(Duration::from_millis(5));
+    s.advance();
+    let p = s.plc().unwrap();
+    assert_eq!(p.mode, Mode::Debug, "halted at the breakpoint");
+    let vw0 = s.mem.v[1];
+    clock.step(Duration::from_millis(50));
+    s.advance();
+    assert_eq!(s.mem.v[1], vw0, "no scans while halted");
+    let st = s.debug_step(1, false).unwrap();
+    assert_eq!((st[0].line, st[0].cr), (7, true));
+    assert_eq!(st[0].operands, vec![format!("VW0={}", vw0 + 1)], "the operand after the step");
+    // Step a whole network of the next scan: to the end of network 1 … then network 2.
+    s.debug_step(1, false).unwrap(); // the implicit end: the scan completes
+    let net = s.debug_step(0, true).unwrap();
+    assert_eq!(net.iter().map(|x| x.line).collect::<Vec<_>>(), vec![2, 3, 4], "network 1");
+    assert_eq!(net[1].operands, vec!["M0.1=1".to_string()]);
+    assert!(!net[2].cr, "I0.0 is off");
+    s.clear_breakpoints();
+    s.set_mode(Mode::Run).unwrap();
+    clock.step(Duration::from_millis(10));
+    s.advance();
+    assert_eq!(s.plc().unwrap().mode, Mode::Run);
+    assert!(s.mem.v[1] > vw0 + 5, "running again");
+}
+
+#[test]
+fn random_il_never_panics_the_loader() {
+    // Hostile input: token soup from the dialect's own pieces, 3000 programs.
+    let pieces = [
+        "LD",
+        "ST",
+        "MOVE",
+        "ADD",
+        "JMP",
+        "L:",
+        "(*",
+        "*)",
+        "%",
+        "VW",
+        "VD",
+        "V",
+        "M0.",
+        "SM",
+        "T",
+        "C",
+        "#",
+        "16#",
+        "DI#",
+        "*%VD",
+        "&VB",
+        ",",
+        " ",
+        "\n",
+        "-",
+        "9",
+        "0",
+        "4095",
+        "65536",
+        "(",
+        ")",
+        "PHOME",
+        "ATCH",
+        "PROGRAM",
+        "INTERRUPT",
+        "END_PROGRAM",
+        "TON",
+        "CTUD",
+        ".",
+        "/REAL",
+        "T#",
+        "ms",
+        "ä",
+        "\t",
+        "R_TRIG",
+        "LDW>",
+        "BLKMOVE",
+    ];
+    let (mut s, _) = sim();
+    let mut seed = 0x2545_F491_4F6C_DD1Du64;
+    for _ in 0..3000 {
+        let mut text = String::new();
+        for _ in 0..40 {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            text.push_str(pieces[(seed % pieces.len() as u64) as usize]);
+        }
+        if s.compile(&text, "fuzz.il").is_ok() {
+            // Whatever loads must also run without panicking.
+            let _ = s.load_program(&text, "fuzz.il");
+            let _ = s.scan_n(3);
+        }
+    }
+}
+
+#[test]
+fn the_cost_table_is_configurable() {
+    let (mut s, clock) = sim();
+    s.load_program("LD %SM0.0\nINC %VW0", "c.il").unwrap();
+    let t = s.set_costs("min_scan=5ms arith=1ms").unwrap();
+    assert_eq!((t.min_scan_ns, t.class_ns[crate::engine::CostClass::Arith as usize]), (5_000_000, 1_000_000));
+    let before = get(&mut s, "VW0").as_i64();
+    clock.step(Duration::from_millis(50));
+    assert_eq!(get(&mut s, "VW0").as_i64() - before, 10, "a 5 ms minimum scan: 10 scans in 50 ms");
+    s.set_costs("min_scan=0ms").unwrap();
+    clock.step(Duration::from_millis(10));
+    s.advance();
+    // 1 ms INC + 0.2 µs LD + 1 µs end + 0.3 ms overhead.
+    assert_eq!(s.plc().unwrap().stats.last_ns, 1_000_000 + 200 + 1_000 + 300_000);
+    assert!(s.set_costs("bogus=1ms").unwrap_err().hint.as_deref().unwrap().contains("watchdog"));
+    assert!(s.set_costs("bit=fast").is_err());
+}
+
+#[test]
+fn a_signal_on_i0_1_runs_its_edge_routine_at_every_edge() {
+    // 100 Hz on I0.1 from t = 0: rising edges (event 2) at 10, 20 … 1000 ms, falling edges
+    // (event 3) half a period later, at 15 … 995 ms.
+    let (mut s, clock) = sim();
+    s.load_program(
+        "PROGRAM MAIN\nLD %SM0.1\nATCH UP, 2\nATCH DOWN, 3\nENI\nEND_PROGRAM\n\
+         INTERRUPT UP\nLD %SM0.0\nINC %VW0\nEND_INTERRUPT\nINTERRUPT DOWN\nLD %SM0.0\nINC %VW2\nEND_INTERRUPT",
+        "sig.il",
+    )
+    .unwrap();
+    let pin = (0, 1);
+    s.add_source(crate::k2::sim::inputs::Source::Freq {
+        pin,
+        wave: crate::k2::sim::inputs::Wave::new(100, Duration::ZERO),
+    })
+    .unwrap();
+    clock.step(Duration::from_secs(1));
+    assert_eq!((get(&mut s, "VW0"), get(&mut s, "VW2")), (Value::Int(100), Value::Int(99)));
+}
+
+#[test]
+fn stop_values_of_the_outputs_are_a_setting() {
+    // K2 §2.2.1: in STOP the outputs take the values of the hardware configuration.
+    let (mut s, _) = sim();
+    s.load_program("LD %SM0.0\nS %Q0.0, 3", "q.il").unwrap();
+    assert_eq!(get(&mut s, "QB0"), Value::Int(7));
+    s.set_stop_outputs("QB0=16#04").unwrap();
+    s.set_mode(Mode::Stop).unwrap();
+    assert_eq!(get(&mut s, "QB0"), Value::Int(4), "Q0.2 stays on in STOP, the others go off");
+    assert!(s.set_stop_outputs("VB0=1").is_err());
+    assert!(s.set_stop_outputs("QB0=300").is_err());
+}

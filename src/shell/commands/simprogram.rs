@@ -1,0 +1,204 @@
+//! `sim program load FILE.il | unload`, `sim program` (status), `sim cpu run|stop|pause`
+//! (`sim stop`, `sim pause` for short), `sim switch run|stop`, `sim scan [N]`: the
+//! simulated K2's CPU running an IL program (k2::sim::program). `sim run` keeps its
+//! meaning (the clock follows the wall clock); the CPU's RUN is `sim cpu run`.
+
+use super::k2cmd;
+use crate::core::{Error, Result};
+use crate::k2::sim::program::Mode;
+use crate::k2::sim::K2Sim;
+use crate::output::Outcome;
+use crate::shell::{Args, Shell};
+
+pub const USAGE: &str = "sim program load FILE.il | sim program unload | sim program | sim program costs [bit=200ns … overhead=0.3ms min_scan=1ms watchdog=300ms] | sim program stop-outputs QB0=16#05 … | sim cpu run|stop|pause | sim stop | sim pause | sim switch run|stop | sim scan [N] | sim break LINE|FILE:LINE|network N|clear | sim stepi [N] | sim stepn";
+
+fn ms(ns: u64) -> f64 {
+    (ns as f64 / 1e6 * 1000.0).round() / 1000.0
+}
+
+/// The status outcome (`sim program`).
+pub fn status(s: &K2Sim, name: &str) -> Outcome {
+    let Some(p) = s.plc() else {
+        return Outcome::new("sim")
+            .text(format!("{name}: no program loaded (sim program load FILE.il)"))
+            .with("mode", "RUN");
+    };
+    let st = p.stats;
+    let mut lines =
+        vec![format!("{name}: CPU {}{}", p.mode.name(), if p.switch_run { "" } else { " (switch at STOP)" })];
+    for (what, l) in [("program", &p.user), ("helper", &p.helper)] {
+        if let Some(l) = l {
+            lines.push(format!("{what}: {} ({} instructions)", l.source, l.prog.source_instructions));
+        }
+    }
+    lines.push(format!(
+        "scans {}; scan time last {} ms, min {} ms, max {} ms (SMW22/24/26); {} instructions in the last scan; {} interrupt routines run",
+        st.scans,
+        ms(st.last_ns),
+        ms(st.min_ns),
+        ms(st.max_ns),
+        st.last_instructions,
+        st.interrupts
+    ));
+    lines.push(format!(
+        "watchdog {} ms, minimum scan {} ms, overhead {} ms",
+        ms(p.costs.watchdog_ns),
+        ms(p.costs.min_scan_ns),
+        ms(p.costs.overhead_ns)
+    ));
+    for f in &p.faults {
+        lines.push(format!("fault at {:.3} s: {f}", f.at_ns as f64 / 1e9));
+    }
+    let faults: Vec<serde_json::Value> = p
+        .faults
+        .iter()
+        .map(|f| {
+            serde_json::json!({"code": f.kind.code(), "kind": f.kind.name(), "message": f.message,
+            "line": f.line, "instruction": f.instruction, "at_s": f.at_ns as f64 / 1e9})
+        })
+        .collect();
+    Outcome::new("sim")
+        .text(lines.join("\n"))
+        .with("mode", p.mode.name())
+        .with("program", p.user.as_ref().map(|l| l.source.clone()))
+        .with("helper", p.helper.is_some())
+        .with("scans", st.scans)
+        .with("scan_ms", ms(st.last_ns))
+        .with("scan_min_ms", ms(st.min_ns))
+        .with("scan_max_ms", ms(st.max_ns))
+        .with("instructions", st.last_instructions)
+        .with("interrupts", st.interrupts)
+        .with("watchdog_ms", ms(p.costs.watchdog_ns))
+        .with("faults", faults)
+}
+
+pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
+    let words: Vec<&str> = args.text.split_whitespace().collect();
+    let dev = sh.session.current_index()?;
+    let name = k2cmd::name(sh, dev);
+    let s = k2cmd::sim(sh, dev, &format!("sim {sub}"))?;
+    s.advance();
+    let mode = |w: Option<&&str>| -> Result<Mode> {
+        match w.map(|w| w.to_ascii_lowercase()).as_deref() {
+            Some("run") => Ok(Mode::Run),
+            Some("stop") => Ok(Mode::Stop),
+            Some("pause") => Ok(Mode::Pause),
+            _ => Err(Error::usage("sim cpu needs run, stop or pause").hint(USAGE)),
+        }
+    };
+    match sub {
+        "program" => match words.get(1).copied() {
+            None | Some("status") => Ok(status(s, &name)),
+            Some("load") => {
+                let path = words.get(2).ok_or_else(|| Error::usage("sim program load needs a file, e.g. prog.il"))?;
+                let text = std::fs::read_to_string(path)
+                    .map_err(|e| Error::io(format!("cannot read {path}: {e}")).device(name.clone()))?;
+                let msg = s.load_program(&text, path).map_err(|e| e.device(name.clone()))?;
+                Ok(status(s, &name).text(msg))
+            }
+            Some("costs") => {
+                let t = s.set_costs(&words[2..].join(" ")).map_err(|e| e.device(name.clone()))?;
+                let classes: Vec<String> =
+                    crate::engine::CostClass::ALL.iter().map(|c| format!("{}={}ns", c.name(), t.ns(*c))).collect();
+                let text = format!(
+                    "{}; element={}ns overhead={} ms min_scan={} ms watchdog={} ms",
+                    classes.join(" "),
+                    t.per_element_ns,
+                    ms(t.overhead_ns),
+                    ms(t.min_scan_ns),
+                    ms(t.watchdog_ns)
+                );
+                Ok(Outcome::new("sim").text(text).with("costs", t))
+            }
+            Some("stop-outputs") => {
+                let b = s.set_stop_outputs(&words[2..].join(" ")).map_err(|e| e.device(name.clone()))?;
+                let text: Vec<String> = b.iter().enumerate().map(|(i, v)| format!("QB{i}=16#{v:02X}")).collect();
+                Ok(Outcome::new("sim").text(format!("STOP values: {}", text.join(" "))).with("stop_outputs", b))
+            }
+            Some("unload") => {
+                s.unload_program();
+                Ok(status(s, &name))
+            }
+            Some(o) => Err(Error::usage(format!("unknown `sim program {o}`")).hint(USAGE)),
+        },
+        "cpu" | "stop" | "pause" => {
+            let m = if sub == "cpu" { mode(words.get(1))? } else { mode(Some(&sub))? };
+            s.set_mode(m).map_err(|e| e.device(name.clone()))?;
+            Ok(status(s, &name))
+        }
+        "switch" => {
+            let run = match words.get(1).map(|w| w.to_ascii_lowercase()).as_deref() {
+                Some("run") => true,
+                Some("stop") => false,
+                _ => return Err(Error::usage("sim switch run|stop (the simulated RUN/STOP switch)")),
+            };
+            s.set_switch(run).map_err(|e| e.device(name.clone()))?;
+            Ok(status(s, &name))
+        }
+        "scan" => {
+            let n: u64 =
+                match words.get(1) {
+                    Some(w) => w.parse().ok().filter(|n| (1..=10_000_000).contains(n)).ok_or_else(|| {
+                        Error::usage(format!("sim scan N: N is a number of scans 1…10000000, not `{w}`"))
+                    })?,
+                    None => 1,
+                };
+            let before = s.plc().map_or(0, |p| p.stats.scans);
+            s.scan_n(n).map_err(|e| e.device(name.clone()))?;
+            // The clock stays where it is; the scans ran at their modelled times.
+            let done = s.plc().map_or(0, |p| p.stats.scans) - before;
+            let o = status(s, &name);
+            Ok(o.with("ran", done))
+        }
+        "break" => {
+            let spec = words[1..].join(" ");
+            let msg = match spec.as_str() {
+                "" => {
+                    let b = s.breakpoints();
+                    if b.is_empty() {
+                        "no breakpoints".to_string()
+                    } else {
+                        format!(
+                            "breakpoints at lines {}",
+                            b.iter().map(|l| l.to_string()).collect::<Vec<_>>().join(", ")
+                        )
+                    }
+                }
+                "clear" => {
+                    s.clear_breakpoints();
+                    "breakpoints cleared".to_string()
+                }
+                spec => s.set_breakpoint(spec).map_err(|e| e.device(name.clone()))?,
+            };
+            let lines = s.breakpoints();
+            Ok(Outcome::new("sim").text(msg).with("breakpoints", lines))
+        }
+        "stepi" | "stepn" => {
+            let n: u64 = match words.get(1) {
+                Some(w) if sub == "stepi" => w
+                    .parse()
+                    .ok()
+                    .filter(|n| (1..=100_000).contains(n))
+                    .ok_or_else(|| Error::usage(format!("sim stepi N: N is 1…100000, not `{w}`")))?,
+                _ => 1,
+            };
+            let steps = s.debug_step(n, sub == "stepn").map_err(|e| e.device(name.clone()))?;
+            let text: Vec<String> = steps
+                .iter()
+                .map(|st| {
+                    format!(
+                        "line {:>4} (network {}): {:<36} CR={} {}",
+                        st.line,
+                        st.network,
+                        st.instruction,
+                        st.cr as u8,
+                        st.operands.join(" ")
+                    )
+                })
+                .collect();
+            let mode = s.plc().map_or("RUN", |p| p.mode.name());
+            Ok(Outcome::new("sim").text(text.join("\n")).with("steps", steps).with("mode", mode))
+        }
+        _ => Err(Error::usage(format!("unknown `sim {sub}`")).hint(USAGE)),
+    }
+}
