@@ -248,7 +248,8 @@ fn bad_sums_are_retried_three_times_over_a_real_pty() {
     // Three spoiled replies: the fourth frame is answered and used.
     let (path, frames, bad) = proxy(&srv.port);
     bad.store(3, Ordering::SeqCst);
-    let mut d = open(&format!("fx:{}?model=FX2N", path.display()));
+    // A generous timeout: the proxy threads add scheduling delay on a loaded machine.
+    let mut d = open(&format!("fx:{}?model=FX2N&timeout=3000ms", path.display()));
     let o = ops(d.as_ref(), &["D8000"]);
     assert_eq!(d.read(&o).unwrap(), vec![Value::Int(200)], "watchdog 200 ms");
     assert_eq!(d.requests(), 4);
