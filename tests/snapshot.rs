@@ -67,3 +67,31 @@ fn a_snapshot_from_a_newer_plcsh_or_of_another_model_is_refused() {
 fn stderr(o: &std::process::Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
 }
+
+/// A snapshot holds the simulated CPU: its program (recompiled from the saved text), the
+/// program's timers and mode, so a lab started from it runs on from where it was saved.
+#[test]
+fn a_snapshot_carries_the_running_program_and_its_timers() {
+    let dir = std::env::temp_dir().join(format!("plcsh-snapshots-prog-{}", std::process::id()));
+    let il = concat!(env!("CARGO_MANIFEST_DIR"), "/scripts/traffic_light.il");
+    let script = "sim step 3s; get Q0.0 Q0.1 Q0.2 T37 T38; sim step 4s; get Q0.0 Q0.1 Q0.2 T37 T38 T39";
+    let cmds = format!(
+        "sim program load {il}; set I0.0=1; sim step 2s; sim snapshot save prog; {script}; \
+         sim program unload; sim step 1s; sim snapshot restore prog; {script}"
+    );
+    let o = plcsh()
+        .env("PLCSH_SNAPSHOTS", &dir)
+        .args(["--time", "stepped", "--json", "-c", &cmds])
+        .stdin(Stdio::null())
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}{}", stdout(&o), String::from_utf8_lossy(&o.stderr));
+    let l = json_lines(&o);
+    let r = results(&l);
+    assert_eq!(r.len(), 4, "{}", stdout(&o));
+    let (first, second) = r.split_at(2);
+    assert_eq!(first, second, "the restored program runs on exactly as it did");
+    // Not trivial: the light changed between the two reads (red for 5 s, then green).
+    assert_ne!(first[0]["values"][0], first[1]["values"][0], "{}", stdout(&o));
+    let _ = std::fs::remove_dir_all(&dir);
+}
