@@ -214,7 +214,9 @@ fn check(p: &Program) -> Result<()> {
         if let Some(op) = written.and_then(operand_of) {
             if !matches!(op.area().letter, 'Q' | 'M') {
                 return Err(here(format!("{text}: a program cannot assign {} ({})", op.name(), op.area().meaning))
-                    .hint("a program assigns outputs Q and markers M; timers and counters change through TIMER and DIVIDE"));
+                    .hint(
+                    "a program assigns outputs Q and markers M; timers and counters change through TIMER and DIVIDE",
+                ));
             }
         }
         let Ins::Special { id, args, .. } = ins else { continue };
