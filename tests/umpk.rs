@@ -543,6 +543,38 @@ fn sim_program_load_runs_il_on_a_simulated_umpk_and_refuses_bad_programs() {
 }
 
 #[test]
+fn a_served_umpk_runs_an_il_program_given_at_start_and_refuses_a_bad_one() {
+    let lab1 = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scripts/umpk_lab1.il");
+    let srv = Server::start("il", &["--umpk-state", "none", "--umpk-program", lab1.to_str().unwrap()]);
+    assert_eq!(srv.served.ready["umpk_mode"], "Work", "{}", srv.served.ready);
+    {
+        let mut d = open(&format!("umpk:{}", srv.link.display()));
+        let info = drv(&mut d).program_info().unwrap();
+        assert!(String::from_utf8_lossy(&info).starts_with("IL umpk_lab1.il"), "{:?}", String::from_utf8_lossy(&info));
+    }
+    let bad = srv.dir.join("bad.il");
+    std::fs::write(&bad, "LD I0\nDIVIDE C0, 0\nST Q2\n").unwrap();
+    let link = srv.dir.join("ttyBad");
+    let o = run(
+        &[
+            "sim",
+            "serve",
+            "--umpk-pty",
+            link.to_str().unwrap(),
+            "--umpk-state",
+            "none",
+            "--umpk-program",
+            bad.to_str().unwrap(),
+        ],
+        "",
+    );
+    assert!(!o.status.success());
+    let out = common::both(&o);
+    assert!(out.contains("bad.il:2:1") && out.contains("the division ratio is 1–255"), "{out}");
+    let _ = std::fs::remove_dir_all(&srv.dir);
+}
+
+#[test]
 fn a_served_umpk_keeps_its_program_by_default_unless_told_none() {
     let p = plcsh::umpk::hex::parse_file(":0100000042BD\n:00000001FF\n", 3072).unwrap();
     let srv = Server::start("default-state", &[]);
