@@ -13,9 +13,9 @@ local lab = plcsh.connect("sim-umpk:UMPK16", "lab")
 if program == "reference" then
   lab:umpk_sim_reference("lab1")
 else
-  lab:cmd("sim program load " .. program)
+  lab:program_load(program)
 end
-print("grading " .. lab:cmd("sim program").program)
+print("grading " .. lab:program().program)
 local grade = {}
 local function criterion(name, ok, detail)
   grade[#grade + 1] = { name = name, ok = ok, detail = detail }
