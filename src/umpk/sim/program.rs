@@ -416,6 +416,15 @@ mod tests {
     }
 
     #[test]
+    fn docs_list_every_umpk_instruction_with_its_source() {
+        let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/il.md")).unwrap();
+        for sp in SPECIALS {
+            let row = doc.lines().find(|l| l.starts_with(&format!("| `{}` (UMPK) |", sp.name)));
+            assert!(row.is_some_and(|r| r.ends_with(&format!("| {} |", sp.source))), "docs/il.md: {}", sp.name);
+        }
+    }
+
+    #[test]
     fn an_endless_loop_stops_the_program_with_its_outputs_off() {
         let mut il = IlRunner::load("LD I0\nST Q0\nTOP:\nJMP TOP\n", "loop.il", umpk16()).unwrap();
         let mut logic = Logic::new(16, 4);
