@@ -136,6 +136,7 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             [CompletionResult]::new('--umpk-status-bits', '--umpk-status-bits', [CompletionResultType]::ParameterName, 'Bit numbers of W,H,R,E,P,T in the UMPK''s status word')
             [CompletionResult]::new('--umpk-flash-fail', '--umpk-flash-fail', [CompletionResultType]::ParameterName, 'Make the simulated UMPK''s flash write fail on this 64-byte page (programming gets `W`)')
             [CompletionResult]::new('--umpk-state', '--umpk-state', [CompletionResultType]::ParameterName, 'Where the simulated UMPK keeps its flash, program info and error history (default: one file per model and link in the user''s data directory; `none` keeps nothing)')
+            [CompletionResult]::new('--umpk-program', '--umpk-program', [CompletionResultType]::ParameterName, 'An IL lab program the simulated UMPK runs each 10 ms cycle (docs/il.md, "The UMPK family")')
             [CompletionResult]::new('--fault', '--fault', [CompletionResultType]::ParameterName, 'Inject a fault into the served K2, e.g. `--fault "no-reply on VW100 after=2s times=1"` (repeatable; see `help sim`)')
             [CompletionResult]::new('--model', '--model', [CompletionResultType]::ParameterName, 'Model of the default simulated PLC')
             [CompletionResult]::new('-d', '-d', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')

@@ -964,7 +964,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__sim__subcmd__serve)
-            opts="-v -d -h --tcp --rtu-pty --rtu-tcp --unit --agent --program --servo-pty --servo-id --servo-loop --servo-baud --servo-latency --servo-instant --servo-strict --fx-pty --fx-link-pty --fx-model --fx-station --umpk-pty --umpk-model --umpk-status-bits --umpk-flash-fail --umpk-state --fault --json --verbose --model --device --time --config --state --record --bench --help"
+            opts="-v -d -h --tcp --rtu-pty --rtu-tcp --unit --agent --program --servo-pty --servo-id --servo-loop --servo-baud --servo-latency --servo-instant --servo-strict --fx-pty --fx-link-pty --fx-model --fx-station --umpk-pty --umpk-model --umpk-status-bits --umpk-flash-fail --umpk-state --umpk-program --fault --json --verbose --model --device --time --config --state --record --bench --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1043,6 +1043,10 @@ _plcsh() {
                     return 0
                     ;;
                 --umpk-state)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --umpk-program)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;

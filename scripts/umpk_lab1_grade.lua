@@ -3,12 +3,19 @@
 --   on-delay: Q1 follows Q0 after 2.0 s (timer T0, group 1, 20 × 0.1 s)
 --   divide-by-4: every 4th pulse on I2 passes to Q2, exactly as long as the input pulse;
 --   the stop button resets the counter
--- It runs against the simulator's reference solution (`umpk sim reference lab1`); a student's
--- program is graded the same way once it runs in the simulator.
--- Run: plcsh --time stepped run scripts/umpk_lab1_grade.lua
+-- The program graded is an IL file run by the simulated UMPK16 on the scan engine
+-- (default scripts/umpk_lab1.il, a student's file as the first argument), or the
+-- simulator's built-in reference solution with the argument `reference`.
+-- Run: plcsh --time stepped run scripts/umpk_lab1_grade.lua [FILE.il|reference]
 
+local program = arg[1] or "scripts/umpk_lab1.il"
 local lab = plcsh.connect("sim-umpk:UMPK16", "lab")
-lab:umpk_sim_reference("lab1")
+if program == "reference" then
+  lab:umpk_sim_reference("lab1")
+else
+  lab:program_load(program)
+end
+print("grading " .. lab:program().program)
 local grade = {}
 local function criterion(name, ok, detail)
   grade[#grade + 1] = { name = name, ok = ok, detail = detail }
@@ -61,7 +68,13 @@ lab:umpk_sim_input("I2", { freq = "10Hz" })
 local div = watch({ "I2", "Q2" }, 800)
 lab:umpk_sim_input("I2=0")
 criterion("I2 saw eight pulses", rising_edges(div.I2) == 8, rising_edges(div.I2))
-criterion("Q2 pulses on every 4th input pulse", rising_edges(div.Q2) == 2, rising_edges(div.Q2))
+-- Which input pulses (numbered from 1) Q2 is on during.
+local passed, pulse = {}, 0
+for k, i in ipairs(div.I2) do
+  if i == 1 and (k == 1 or div.I2[k - 1] == 0) then pulse = pulse + 1 end
+  if div.Q2[k] == 1 and passed[#passed] ~= pulse then passed[#passed + 1] = pulse end
+end
+criterion("Q2 passes the 4th and the 8th input pulse", table.concat(passed, ", ") == "4, 8", table.concat(passed, ", "))
 local same = true
 for k, q in ipairs(div.Q2) do
   if q == 1 and div.I2[k] ~= 1 then same = false end

@@ -467,6 +467,113 @@ fn the_lab_grading_script_fails_a_program_that_misses_a_criterion() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// A student's IL program with one mistake each: the grading script fails exactly the
+/// criterion the mistake breaks; the built-in reference passes it.
+#[test]
+fn the_lab_grading_script_grades_il_programs_and_fails_a_wrong_one() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let good = std::fs::read_to_string(root.join("scripts/umpk_lab1.il")).unwrap();
+    let dir = std::env::temp_dir().join(format!("plcsh-umpk-{}-grade-il", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let grade = |arg: &str| run(&["--time", "stepped", "run", "scripts/umpk_lab1_grade.lua", arg], "");
+    for (name, from, to, fails) in [
+        ("noreset.il", "DIVIDE  C0, 4, I1", "DIVIDE  C0, 4", "FAIL  stop reset the counter  (5)"),
+        ("short.il", "TIMER   T0, 1, 20", "TIMER   T0, 1, 15", "FAIL  Q1 follows Q0 after 2.0 s (T0)  (1500 ms)"),
+        (
+            "ratio3.il",
+            "DIVIDE  C0, 4, I1",
+            "DIVIDE  C0, 3, I1",
+            "FAIL  Q2 passes the 4th and the 8th input pulse  (3, 6)",
+        ),
+        ("nolatch.il", "OR      Q0\n", "", "FAIL  Q0 latches after the button is released"),
+    ] {
+        assert!(good.contains(from), "{from}");
+        let f = dir.join(name);
+        std::fs::write(&f, good.replacen(from, to, 1)).unwrap();
+        let o = grade(f.to_str().unwrap());
+        let out = stdout(&o);
+        assert_eq!(o.status.code(), Some(1), "{name}:\n{out}");
+        assert!(out.contains(fails), "{name}:\n{out}");
+        assert!(out.contains(&format!("grading IL {name}")), "{out}");
+    }
+    // The same delay in group 0 (200 × 10 ms) is a correct solution.
+    let f = dir.join("group0.il");
+    std::fs::write(&f, good.replacen("TIMER   T0, 1, 20", "TIMER   T0, 0, 200", 1)).unwrap();
+    let o = grade(f.to_str().unwrap());
+    assert!(o.status.success() && stdout(&o).contains("lab 1: 12 of 12 criteria"), "{}", stdout(&o));
+    let o = grade("reference");
+    assert!(o.status.success() && stdout(&o).contains("grading lab1 (reference)"), "{}", stdout(&o));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn sim_program_load_runs_il_on_a_simulated_umpk_and_refuses_bad_programs() {
+    let dir = std::env::temp_dir().join(format!("plcsh-umpk-{}-simprog", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let bad = dir.join("bad.il");
+    std::fs::write(&bad, "LD I0\nTIMER T0, 3, 20\nST Q1\n").unwrap();
+    let script = format!(
+        "use lab\nsim program\nsim program load {}\nsim program load scripts/umpk_lab1.il\nsim input I0=1\nsim step 1990ms\nget Q1\nsim step 10ms\nget Q0 Q1 M0\numpk timing\n",
+        bad.display()
+    );
+    let o = run(&["--json", "--time", "stepped", "--device", "lab=sim-umpk:UMPK16"], &script);
+    let l = json_lines(&o);
+    assert_eq!(l[1]["program"], "none", "{}", l[1]);
+    assert_eq!(l[1]["mode"], "Wait");
+    let err = l[2]["error"]["message"].as_str().unwrap_or_else(|| panic!("{}", l[2]));
+    assert!(err.contains("bad.il:2:1") && err.contains("delay group is 0 (10 ms), 1 (0.1 s) or 2 (1 s)"), "{err}");
+    assert_eq!(l[2]["error"]["device"], "lab");
+    let loaded = l.iter().find(|v| v["program"].as_str().is_some_and(|p| p.starts_with("IL umpk_lab1.il"))).unwrap();
+    assert_eq!(loaded["mode"], "Work");
+    let gets: Vec<&serde_json::Value> = l.iter().filter(|v| v["cmd"] == "get").collect();
+    assert_eq!(gets[0]["values"][0]["value"], false, "T0 is still running at 1.99 s: {}", gets[0]);
+    let vals: Vec<bool> = gets[1]["values"].as_array().unwrap().iter().map(|v| v["value"] == true).collect();
+    assert_eq!(vals, vec![true, true, true], "at 2.0 s: {}", gets[1]);
+    // The program's time (from the cost table) is in the timing figures: 10 bit
+    // instructions × 2 µs + 2 UMPK instructions × 10 µs = 40 µs = 147 counts of 0.271 µs.
+    let t = l.iter().find(|v| v["cmd"] == "umpk" && v.get("program_us").is_some()).expect("timing");
+    assert_eq!(t["total_counts"].as_u64().unwrap() - t["firmware_counts"].as_u64().unwrap(), 147, "{t}");
+    // The URL form loads the same program at open.
+    let o = run(
+        &["--json", "--time", "stepped", "--device", "lab=sim-umpk:UMPK16?program=scripts/umpk_lab1.il"],
+        "use lab\nsim program\n",
+    );
+    assert!(json_lines(&o)[1]["program"].as_str().unwrap().starts_with("IL umpk_lab1.il"), "{}", stdout(&o));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_served_umpk_runs_an_il_program_given_at_start_and_refuses_a_bad_one() {
+    let lab1 = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scripts/umpk_lab1.il");
+    let srv = Server::start("il", &["--umpk-state", "none", "--umpk-program", lab1.to_str().unwrap()]);
+    assert_eq!(srv.served.ready["umpk_mode"], "Work", "{}", srv.served.ready);
+    {
+        let mut d = open(&format!("umpk:{}", srv.link.display()));
+        let info = drv(&mut d).program_info().unwrap();
+        assert!(String::from_utf8_lossy(&info).starts_with("IL umpk_lab1.il"), "{:?}", String::from_utf8_lossy(&info));
+    }
+    let bad = srv.dir.join("bad.il");
+    std::fs::write(&bad, "LD I0\nDIVIDE C0, 0\nST Q2\n").unwrap();
+    let link = srv.dir.join("ttyBad");
+    let o = run(
+        &[
+            "sim",
+            "serve",
+            "--umpk-pty",
+            link.to_str().unwrap(),
+            "--umpk-state",
+            "none",
+            "--umpk-program",
+            bad.to_str().unwrap(),
+        ],
+        "",
+    );
+    assert!(!o.status.success());
+    let out = common::both(&o);
+    assert!(out.contains("bad.il:2:1") && out.contains("the division ratio is 1–255"), "{out}");
+    let _ = std::fs::remove_dir_all(&srv.dir);
+}
+
 #[test]
 fn a_served_umpk_keeps_its_program_by_default_unless_told_none() {
     let p = plcsh::umpk::hex::parse_file(":0100000042BD\n:00000001FF\n", 3072).unwrap();

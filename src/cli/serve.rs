@@ -117,6 +117,9 @@ pub struct ServeArgs {
     /// file per model and link in the user's data directory; `none` keeps nothing).
     #[arg(long = "umpk-state", value_name = "FILE")]
     pub umpk_state: Option<PathBuf>,
+    /// An IL lab program the simulated UMPK runs each 10 ms cycle (docs/il.md, "The UMPK family").
+    #[arg(long = "umpk-program", value_name = "FILE.il")]
+    pub umpk_program: Option<PathBuf>,
     /// Inject a fault into the served K2, e.g. `--fault "no-reply on VW100 after=2s times=1"` (repeatable; see `help sim`).
     #[arg(long = "fault", value_name = "SPEC")]
     pub faults: Vec<String>,
@@ -353,6 +356,7 @@ async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
             layout: args.umpk_status_bits,
             flash_fail: args.umpk_flash_fail.map(usize::from),
             state: args.umpk_state.clone(),
+            program: args.umpk_program.clone(),
         };
         ready.extend(crate::umpk::sim::serve::spawn(u, servo_stop.clone()).await?);
     }

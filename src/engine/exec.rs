@@ -584,11 +584,17 @@ impl Cpu {
                     } else {
                         en
                     };
-                    if run {
-                        match m.special(*id, *inst, args, types) {
-                            Ok(eno) => self.cr = eno,
-                            Err(f) => return self.fault(prog, (pc - 1) as u32, f),
-                        }
+                    let done = if run {
+                        Some(m.special(*id, *inst, args, types))
+                    } else if !en {
+                        Some(m.special_off(*id, *inst, args, types))
+                    } else {
+                        None
+                    };
+                    match done {
+                        Some(Ok(eno)) => self.cr = eno,
+                        Some(Err(f)) => return self.fault(prog, (pc - 1) as u32, f),
+                        None => {}
                     }
                 }
             }

@@ -12,12 +12,11 @@
 //! * [`Machine`] — used while **running**: reads and writes raw bit patterns at a `Loc`,
 //!   dereferences pointers, and executes the family's own instructions.
 //!
-//! A second family plugs in by implementing both over its memory image: the UMPK (10 ms
-//! cycle, on-delay timers in three delay groups, divide-by-N counters, markers) would
-//! resolve its operand names to `Loc`s in its areas, give each timer number its delay
-//! group's time base through [`Element::base_ns`], map its divide-by-N counter to
-//! [`CounterKind::Ctr`]-like semantics or a special instruction, and set a 10 ms minimum
-//! scan in its [`CostTable`]. Nothing here names a K2 register.
+//! Two families plug in by implementing both over their memory images: the K2
+//! (`k2::sim::program::family`) and the UMPK teaching PLC (`umpk::sim::program`: its 10 ms
+//! cycle as the minimum scan, its bit operands as `Loc`s, its on-delay timers and
+//! divide-by-N counters as family instructions whose input is the CR, hence
+//! [`Machine::special_off`]). Nothing here names a K2 or UMPK register.
 //!
 //! Pipeline: [`source::parse`] (linear, never panics) → [`compile::compile`] (operands
 //! resolved, labels and calls bound, errors with `file:line:column` and a suggestion) →
@@ -230,6 +229,12 @@ pub trait Machine {
     /// this occurrence in the program (for per-instance state such as an EXEC edge).
     /// Returns ENO.
     fn special(&mut self, id: u16, inst: u32, args: &[Opd], types: &[DataType]) -> Result<bool, Fault>;
+    /// Family instruction `id` reached with its enable (the CR) off. Most do nothing then
+    /// and leave ENO off (the default); an instruction whose input is the CR — the UMPK's
+    /// on-delay timers and divide-by-N counters — updates with the input off. Returns ENO.
+    fn special_off(&mut self, _id: u16, _inst: u32, _args: &[Opd], _types: &[DataType]) -> Result<bool, Fault> {
+        Ok(false)
+    }
     /// Arithmetic status after an operation.
     fn flags(&mut self, _f: Flags) {}
 }

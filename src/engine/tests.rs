@@ -130,6 +130,8 @@ struct Mem {
     cq: Vec<bool>,
     flags: Flags,
     beeps: u32,
+    /// Family instructions reached with the enable off.
+    offs: u32,
 }
 
 impl Mem {
@@ -196,6 +198,11 @@ impl Machine for Mem {
         let v = read(self, &args[0], types[0])?;
         write(self, &args[1], types[1], v)?;
         Ok(true)
+    }
+    fn special_off(&mut self, id: u16, _inst: u32, _args: &[Opd], _types: &[DataType]) -> Result<bool, Fault> {
+        assert_eq!(id, 7);
+        self.offs += 1;
+        Ok(false)
     }
     fn flags(&mut self, f: Flags) {
         self.flags = f;
@@ -461,6 +468,21 @@ fn a_family_instruction_runs_on_its_enable_edge() {
     r.scan();
     r.scan();
     assert_eq!((r.mem.beeps, r.val("VW0")), (1, 42), "edge-triggered: once while the enable stays on");
+}
+
+#[test]
+fn a_family_instruction_hears_of_its_enable_off() {
+    // An instruction whose input is the CR (the UMPK's timers) must see the input go off.
+    let mut r = load("LD %I0.0\nBEEP 42, %VW0\nST %Q0.0");
+    r.scan();
+    assert_eq!((r.mem.beeps, r.mem.offs, r.bit("Q0.0")), (0, 1, false), "enable off: special_off, ENO off");
+    r.set_bit("I0.0", true);
+    r.scan();
+    r.scan();
+    assert_eq!((r.mem.beeps, r.mem.offs), (1, 1), "enable on: special on its edge, special_off not called");
+    r.set_bit("I0.0", false);
+    r.scan();
+    assert_eq!(r.mem.offs, 2);
 }
 
 // ---- timers (K80S; K2 §2.1.2 classes) ------------------------------------------------

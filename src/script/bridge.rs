@@ -56,13 +56,20 @@ const fn spaced(key: &'static str) -> Opt {
 pub struct Bridge {
     /// The Lua method name (`plc:move_abs(…)`).
     pub method: &'static str,
-    /// The device family it applies to (`k2`, `servo`), or `""` for every family.
+    /// The device family it applies to (`k2`, `servo`; `k2/umpk` for either), or `""` for every family.
     pub family: &'static str,
     /// The command text; `{}`/`{UNIT}` take arguments in order, `[…]` is optional, the rest
     /// are appended.
     pub template: &'static str,
     /// How option keys are written (renames, units, `key value` forms).
     pub options: &'static [Opt],
+}
+
+impl Bridge {
+    /// Whether the method applies to devices of `family`.
+    pub fn applies_to(&self, family: &str) -> bool {
+        self.family.is_empty() || self.family.split('/').any(|f| f == family)
+    }
 }
 
 const fn row(method: &'static str, family: &'static str, template: &'static str) -> Bridge {
@@ -131,8 +138,9 @@ pub const BRIDGE: &[Bridge] = &[
     row("inject_fault", "k2", "sim fault {}"),
     row("injected_faults", "k2", "sim faults"),
     // The simulated K2's CPU and its IL program (k2::sim::program).
-    row("program_load", "k2", "sim program load {}"),
-    row("program", "k2", "sim program"),
+    // … and the simulated UMPK's IL lab program (umpk::sim::program).
+    row("program_load", "k2/umpk", "sim program load {}"),
+    row("program", "k2/umpk", "sim program"),
     row("cpu", "k2", "sim cpu {}"),
     row("scan", "k2", "sim scan [{}]"),
     row("breakpoint", "k2", "sim break {}"),
@@ -354,7 +362,7 @@ pub fn call(lua: &Lua, name: &str, b: &Bridge, args: &[Value]) -> mlua::Result<m
             let i = super::device::index(sh, name)?;
             Ok(sh.session.entries()[i].device.info().family)
         })?;
-        if family != b.family {
+        if !b.applies_to(family) {
             return Err(super::error::raise(
                 Error::unsupported(format!("`{}` is a {} method; `{name}` is a {family} device", b.method, b.family))
                     .device(name),

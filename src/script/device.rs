@@ -77,7 +77,7 @@ impl Handle {
             return None;
         }
         let mut all: Vec<&str> = METHODS.to_vec();
-        all.extend(BRIDGE.iter().filter(|b| b.family.is_empty() || b.family == family).map(|b| b.method));
+        all.extend(BRIDGE.iter().filter(|b| b.applies_to(family)).map(|b| b.method));
         let mut near: Vec<(usize, &str)> = all
             .iter()
             .map(|m| (crate::core::text::edit_distance(word, m), *m))

@@ -646,10 +646,11 @@ pub fn open_serial(u: &DeviceUrl) -> Result<Box<dyn Device>> {
     Ok(Box::new(d))
 }
 
-/// Opens `sim-umpk:UMPK16?status_bits=…&state=FILE`: the in-process simulator on the
-/// session's clock (`state` keeps its flash, as `--umpk-state` does for the served one).
+/// Opens `sim-umpk:UMPK16?status_bits=…&state=FILE&program=FILE.il`: the in-process
+/// simulator on the session's clock (`state` keeps its flash, as `--umpk-state` does for
+/// the served one; `program` loads an IL lab program, as `sim program load` does).
 pub fn open_sim(u: &DeviceUrl, clock: &Clock) -> Result<Box<dyn Device>> {
-    u.expect_params(&["model", "timeout", "status_bits", "state"])?;
+    u.expect_params(&["model", "timeout", "status_bits", "state", "program"])?;
     let m = model_param(u, u.param("model").or(Some(u.target.as_str())))?.unwrap_or(&model::MODELS[1]);
     let mut sim = Umpk::new(m, clock.clone());
     if let Some(v) = u.param("status_bits") {
@@ -657,6 +658,10 @@ pub fn open_sim(u: &DeviceUrl, clock: &Clock) -> Result<Box<dyn Device>> {
     }
     if let Some(p) = u.param("state") {
         sim.open_state(std::path::Path::new(p))?;
+    }
+    if let Some(p) = u.param("program") {
+        let text = std::fs::read_to_string(p).map_err(|e| Error::io(format!("{}: cannot read {p}: {e}", u.text)))?;
+        sim.load_logic(Box::new(super::sim::program::IlRunner::load(&text, p, m)?));
     }
     let sim = Arc::new(Mutex::new(sim));
     let info = DeviceInfo { family: "umpk", model: m.name.into(), link: u.text.clone(), simulated: true };

@@ -41,6 +41,7 @@ fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
         }
         "run" => clock.run(),
         "input" if super::umpk::current_is_umpk(sh) => return super::umpk::sim_input(sh, args),
+        "program" if super::umpk::current_is_umpk(sh) => return super::umpk::sim_program(sh, args),
         "input" | "quad" | "inputs" | "retain" => return super::siminputs::run(sh, sub, args),
         "snapshot" | "snapshots" => return super::snapshot::run(sh, sub, it.collect(), args.offset),
         "fault" | "faults" => {

@@ -151,6 +151,55 @@ pub fn sim_input(sh: &mut Shell, args: Args) -> Result<Outcome> {
     Ok(o)
 }
 
+/// `sim program load FILE.il` / `sim program` on the current UMPK: an IL lab program run by
+/// the simulator on the scan engine ([`crate::umpk::sim::program`]).
+pub fn sim_program(sh: &mut Shell, args: Args) -> Result<Outcome> {
+    let words = lex::words_in(&args)?;
+    let dev = sh.session.current_index()?;
+    let name = sh.session.entries()[dev].name.clone();
+    let col = words.first().map_or(args.offset, |w| w.0);
+    let s = driver(sh, dev).simulator().ok_or_else(|| {
+        Error::unsupported(
+            "a real UMPK runs only what is programmed into it (umpk program FILE.hex); IL programs run in the simulator",
+        )
+        .device(&name)
+        .column(col)
+    })?;
+    let mut u = s.lock().unwrap_or_else(|p| p.into_inner());
+    let now = u.clock.now();
+    u.advance(now);
+    let msg = match words.get(1).map(|w| (w.0, w.1)) {
+        None | Some((_, "status")) => None,
+        Some((_, "load")) => {
+            let &(c, path) = words.get(2).ok_or_else(|| {
+                Error::usage("sim program load needs a file, e.g. sim program load scripts/umpk_lab1.il").column(col)
+            })?;
+            let text = std::fs::read_to_string(path)
+                .map_err(|e| Error::io(format!("cannot read {path}: {e}")).device(&name).column(c))?;
+            let r = crate::umpk::sim::program::IlRunner::load(&text, path, u.model).map_err(|e| e.device(&name))?;
+            let n = r.instructions();
+            u.load_logic(Box::new(r));
+            Some(format!("{path}: {n} instructions loaded; runs every {CYCLE_MS} ms cycle in Work mode"))
+        }
+        Some((c, other)) => {
+            return Err(Error::usage(format!("unknown `sim program {other}` on a UMPK"))
+                .hint("sim program load FILE.il | sim program")
+                .device(&name)
+                .column(c))
+        }
+    };
+    let kind = u.program_kind();
+    let mode = u.mode().name();
+    let text = format!("program: {kind}; mode {mode}");
+    let mut o = Outcome::new("sim")
+        .text(msg.map_or(text.clone(), |m| format!("{m}\n{text}")))
+        .with("program", kind)
+        .with("mode", mode)
+        .with("timing_counts", u.timing().total);
+    o.device = Some(name);
+    Ok(o)
+}
+
 fn info(d: &mut Driver) -> Result<Outcome> {
     let i = d.controller_info()?;
     let st = d.layout.decode(i.status);

@@ -33,6 +33,7 @@
 //! `?` or `:` inside an unfinished command abandons it with `C`.
 
 pub mod logic;
+pub mod program;
 pub mod reference;
 pub mod serve;
 pub mod state;

@@ -159,6 +159,8 @@ pub struct Options {
     pub flash_fail: Option<usize>,
     /// The state file keeping the flash through restarts ([`super::state`]).
     pub state: Option<PathBuf>,
+    /// An IL lab program the served controller runs ([`super::program`]).
+    pub program: Option<PathBuf>,
 }
 
 /// Serves a simulated UMPK from a thread of its own (the pty loop is blocking); returns
@@ -170,16 +172,28 @@ pub async fn spawn(o: Options, stop: Arc<AtomicBool>) -> Result<serde_json::Map<
         Some(p) => Some(p),
         None => default_state(&o.link, model),
     };
+    // A program that does not load stops the server before it is ready.
+    let runner = match &o.program {
+        Some(p) => {
+            let text = std::fs::read_to_string(p)
+                .map_err(|e| Error::io(format!("cannot read the UMPK program {}: {e}", p.display())))?;
+            Some(super::program::IlRunner::load(&text, &p.to_string_lossy(), model)?)
+        }
+        None => None,
+    };
     let (tx, rx) = tokio::sync::oneshot::channel::<Result<serde_json::Value>>();
     std::thread::spawn(move || {
         let mut tx = Some(tx);
         let setup = |u: &mut Umpk| {
             u.layout = layout;
             u.flash_fail = o.flash_fail;
-            match &state {
-                Some(p) => u.open_state(p),
-                None => Ok(()),
+            if let Some(p) = &state {
+                u.open_state(p)?;
             }
+            if let Some(r) = runner {
+                u.load_logic(Box::new(r));
+            }
+            Ok(())
         };
         let r = serve_pty(Some(&o.link), model, Clock::following(), setup, &stop, |r| {
             if let Some(tx) = tx.take() {
