@@ -15,6 +15,6 @@ pub mod script;
 pub mod servo;
 pub mod session;
 pub mod shell;
-pub mod umpk;
 pub mod snapshot;
+pub mod umpk;
 pub mod wiring;
