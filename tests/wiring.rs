@@ -96,6 +96,11 @@ fn wires_are_listed_replaced_and_removed() {
     assert_eq!(l[7]["wires"].as_array().unwrap().len(), 0);
 }
 
+/// What a command printed: its output and its errors (errors go to stderr).
+fn said(o: &std::process::Output) -> String {
+    format!("{}{}", stdout(o), String::from_utf8_lossy(&o.stderr))
+}
+
 #[test]
 fn bad_wires_are_refused_with_what_works() {
     for (cmd, want) in [
@@ -110,13 +115,13 @@ fn bad_wires_are_refused_with_what_works() {
     ] {
         let o = run(&["-c", cmd], "");
         assert!(!o.status.success(), "{cmd} succeeded");
-        let out = stdout(&o);
+        let out = said(&o);
         assert!(out.contains(want), "{cmd}: {out}");
     }
     // A drive whose pulse input is A/B cannot follow pulse + direction.
     let o = run(&["-c", "set servo:pulse_mode=2; sim wire plc:Q0.0 -> servo:pulse"], "");
     assert!(!o.status.success());
-    assert!(stdout(&o).contains("2508.03"), "{}", stdout(&o));
+    assert!(said(&o).contains("2508.03"), "{}", said(&o));
 }
 
 #[test]
@@ -152,12 +157,12 @@ fn a_bench_with_a_real_device_or_a_bad_line_is_refused() {
     std::fs::write(&real, "[devices]\nservo = \"kinco:/dev/null?id=1\"\n").unwrap();
     let o = run(&["--bench", real.to_str().unwrap(), "-c", "sim wires"], "");
     assert!(!o.status.success());
-    assert!(stdout(&o).contains("device servo = kinco:/dev/null?id=1 is not a simulator"), "{}", stdout(&o));
+    assert!(said(&o).contains("device servo = kinco:/dev/null?id=1 is not a simulator"), "{}", said(&o));
     let bad = dir.join("bad.toml");
     std::fs::write(&bad, "[devices]\nplc = \"sim:K205-16DT\"\nwires = 3\n").unwrap();
     let o = run(&["--bench", bad.to_str().unwrap(), "-c", "sim wires"], "");
     assert!(!o.status.success());
-    assert!(stdout(&o).contains("bad.toml:3"), "{}", stdout(&o));
+    assert!(said(&o).contains("bad.toml:3"), "{}", said(&o));
     let prog = dir.join("prog.toml");
     std::fs::write(&prog, "[devices]\nplc = \"sim:K205-16DT\"\n[programs]\nplc = \"prog.toml\"\n").unwrap();
     let o = run(&["--bench", prog.to_str().unwrap(), "-c", "sim wires"], "");
