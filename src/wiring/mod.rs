@@ -315,8 +315,8 @@ pub struct Wire {
     pub state: WireState,
 }
 
-/// What a wire carries over between pieces.
-#[derive(Clone, Debug, Default)]
+/// What a wire carries over between pieces (saved whole in snapshots).
+#[derive(Clone, Debug, Default, serde::Serialize, serde::Deserialize)]
 pub struct WireState {
     /// Encoder: 4× counts given to the counter so far (absolute encoder count).
     pub given: i64,
