@@ -203,3 +203,47 @@ fn a_served_bench_is_driven_by_a_second_plcsh() {
     // The drive's encoder really came back: counts = increments × 5000 / 10000, exactly.
     assert_eq!(v, vec![8000, 16_000, 32_000, 1, 1], "pulses, counts, increments, home switch, target reached");
 }
+
+/// `[[faults]]` in a bench: a drive fault armed at 20000 increments acts where the drive,
+/// following PTO0's pulses through gear 4, crosses it (5000 pulses at 20 kHz: 0.25 s), and
+/// is logged with that virtual time; the encoder counts stop there. A PLC fault entry takes
+/// the SPEC of `sim fault` and acts on its schedule.
+#[test]
+fn bench_faults_and_a_drive_fault_at_a_position() {
+    let dir = std::env::temp_dir().join(format!("plcsh-bench-faults-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("faulty.toml");
+    let base = std::fs::read_to_string(bench_file()).unwrap();
+    std::fs::write(
+        &file,
+        format!(
+            "{base}\n[[faults]]\ndevice = \"servo\"\nspec = \"drive 16#7500 at=20000\"\n\n\
+             [[faults]]\ndevice = \"plc\"\nspec = \"exception 4 on VW100 after=1s times=1\"\n"
+        ),
+    )
+    .unwrap();
+    let f = file.to_str().unwrap();
+    let o = run(
+        &["--time", "stepped", "--bench", f, "-c",
+          "hsc 0 mode=9 rate=4x; pto 0 freq=20kHz count=8000; sim step 1s; get SMD38 servo:position_actual SMD212; servo sim events; sim faults"],
+        "",
+    );
+    let out = said(&o);
+    assert!(o.status.success(), "{out}");
+    assert!(out.contains("plc:SMD38              10000"), "{out}");
+    assert!(out.contains("servo:position_actual  20000"), "{out}");
+    assert!(out.contains("plc:SMD212             8000"), "PTO0 sent every pulse: {out}");
+    assert!(out.contains("0.250000s  drive id 1: fault 16#7500 at position 20000 inc"), "{out}");
+    assert!(out.contains("fault 1: exception 04 (server device failure) on VB100..VB101 from 1.000000s"), "{out}");
+    // The PLC fault acts once, at its time, and is logged as an event.
+    let o = run(&["--time", "stepped", "--bench", f], "sim step 1s\nget VW100\nget VW100\nevents\n");
+    let out = said(&o);
+    assert!(out.contains("injected fault 1"), "{out}");
+    assert!(out.contains("fault1"), "{out}");
+    // A bad entry names the file and the entry.
+    let bad = dir.join("bad-fault.toml");
+    std::fs::write(&bad, format!("{base}\n[[faults]]\ndevice = \"servo\"\nspec = \"drive 16#7500 at=x\"\n")).unwrap();
+    let o = run(&["--bench", bad.to_str().unwrap(), "-c", "sim wires"], "");
+    assert!(!o.status.success());
+    assert!(said(&o).contains("fault 1 `drive 16#7500 at=x`"), "{}", said(&o));
+}
