@@ -410,7 +410,12 @@ mod tests {
             Control::Pulses { freq: 1000.0, count: 500, dir: -1 }
         );
         assert_eq!(p("strict on").unwrap().control, Control::Strict(true));
+        assert_eq!(p("fault drive 16#7500 at=-1200").unwrap().control, Control::DriveFaultAt(0x7500, -1200.0));
+        assert_eq!(p("fault at=300").unwrap().control, Control::DriveFaultAt(DEFAULT_FAULT, 300.0));
+        assert_eq!(p("events").unwrap().control, Control::Events);
         for bad in [
+            "fault no-reply at=3",
+            "fault drive 1 at=x",
             "fault abort target_position",
             "fault delay",
             "pulses freq=0 count=1",

@@ -279,8 +279,18 @@ impl Drive {
                 consider(into(hi, 1.0), Event::Limit);
             }
             for (k, &(x, _)) in self.faults_at.iter().enumerate() {
-                // Crossing it: standing on the position when armed does not count.
-                consider(m.first_reach(x, from).filter(|&t| t > from || m.at(from).0 != x), Event::PositionFault(k));
+                // Crossing it: standing on the position (within half an increment) does not
+                // count; from there, it is reached again after leaving it.
+                let reach = if (m.at(from).0 - x).abs() < 0.5 {
+                    let leave = [m.first_reach(x + 0.5, from), m.first_reach(x - 0.5, from)]
+                        .into_iter()
+                        .flatten()
+                        .fold(f64::INFINITY, f64::min);
+                    leave.is_finite().then(|| m.first_reach(x, leave)).flatten()
+                } else {
+                    m.first_reach(x, from)
+                };
+                consider(reach, Event::PositionFault(k));
             }
             let window = self.stored("max_following_error") as f64;
             if window > 0.0 {
