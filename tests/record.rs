@@ -189,6 +189,57 @@ fn replay_against_a_bench_reports_exactly_the_changed_initial_value() {
     assert_eq!(o.status.code(), Some(2));
 }
 
+/// A session on both links of a served bench — the PLC over Modbus TCP, the drive on its
+/// pty — replays against the bench in recorded order, without difference; with one initial
+/// value changed, exactly that value differs.
+#[test]
+fn a_two_link_session_replays_against_its_bench_in_recorded_order() {
+    let bench = |vw2: u16, name: &str| {
+        let p = tmp(name);
+        std::fs::write(
+            &p,
+            format!(
+                "wires = [\"servo:target_reached -> plc:I0.5\"]\n\
+                 init = [\"plc:VW2={vw2}\", \"servo:controlword=6\", \"servo:controlword=7\", \"servo:controlword=15\"]\n\
+                 [devices]\nplc = \"sim:K205-16DT\"\nservo = \"sim-servo:?id=1\"\n"
+            ),
+        )
+        .unwrap();
+        p
+    };
+    let (same, changed) = (bench(3, "two-same.toml"), bench(4, "two-changed.toml"));
+    let pty = tmp("two-kinco");
+    let served = serve(&[
+        "--bench",
+        same.to_str().unwrap(),
+        "--tcp",
+        "127.0.0.1:0",
+        "--servo-pty",
+        pty.to_str().unwrap(),
+        "--servo-instant",
+    ]);
+    let file = tmp("two-links.pcapng");
+    let o = plcsh()
+        .args(["--record", file.to_str().unwrap()])
+        .args(["-d", &format!("plc=tcp://{}?model=K205-16DT", tcp_addr(&served))])
+        .args(["-d", &format!("servo=kinco:{}?id=1", pty.display())])
+        .args(["-c", "use plc; get VW2 I0.5 servo:gear_factor; set servo:gear_factor=3; get servo:gear_factor VW2"])
+        .stdin(Stdio::null())
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}{}", stdout(&o), stderr(&o));
+    assert!(stdout(&o).contains("servo:gear_factor  3"), "{}", stdout(&o));
+    drop(served);
+    let o = plcsh().args(["replay", file.to_str().unwrap(), "--bench"]).arg(&same).output().unwrap();
+    let text = stdout(&o);
+    assert!(o.status.success() && text.trim_end().ends_with(" 0 difference(s)"), "{text}{}", stderr(&o));
+    let o = plcsh().args(["--json", "replay", file.to_str().unwrap(), "--bench"]).arg(&changed).output().unwrap();
+    let l = json_lines(&o);
+    let diffs: Vec<&serde_json::Value> = l.iter().filter_map(|v| v.get("difference")).collect();
+    assert_eq!(diffs.len(), 2, "both reads of VW2: {}", stdout(&o));
+    assert!(diffs.iter().all(|d| d["detail"] == "VW2 (address 101) recorded 3, replayed 4"), "{diffs:?}");
+}
+
 #[test]
 fn a_file_that_is_not_a_recording_is_refused_with_a_hint() {
     let f = tmp("junk.pcapng");

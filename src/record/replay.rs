@@ -13,7 +13,8 @@
 //!
 //! With a bench (`--bench FILE`, [`crate::wiring::bench`]) the recorded requests go to the
 //! machine the bench describes instead — its PLC for the Modbus links, its drive line for
-//! the servo links, wired to each other, on one clock stepped to each request's virtual time
+//! the servo links, wired to each other, in the recorded order of all links, on one clock
+//! stepped to each request's virtual time
 //! relative to the recording's first request — so a session recorded at a served bench
 //! replays without difference against the same bench, and against a bench with one
 //! initial value changed reports exactly that value.
@@ -96,6 +97,9 @@ pub struct Report {
     pub skipped: Vec<String>,
 }
 
+/// A request and its reply: indices into the recording's frames.
+type Exchange = (usize, Option<usize>);
+
 /// Pairs each request with the reply that followed it on its link (if any before the next
 /// request): `(request index, reply index)` into `frames`.
 fn exchanges(frames: &[Frame], link: usize) -> Vec<(usize, Option<usize>)> {
@@ -118,40 +122,78 @@ fn exchanges(frames: &[Frame], link: usize) -> Vec<(usize, Option<usize>)> {
 /// Replays every link of `rec`.
 pub fn run(rec: &Recording, target: &Target) -> Result<Report> {
     let mut report = Report::default();
-    let bench = target.bench.as_deref().map(|p| bench_sims(rec, p)).transpose()?;
-    for (li, link) in rec.links.iter().enumerate() {
-        match link.proto {
-            Proto::ModbusTcp | Proto::ModbusRtu | Proto::RtuOverTcp => {
-                let sims = match &bench {
-                    Some(b) => {
-                        let Some(k2) = b.k2.clone() else {
-                            report.skipped.push(format!("{}: the bench has no simulated PLC", link.name));
-                            continue;
-                        };
-                        Sims { clock: b.clock.clone(), base: b.base, vt0: b.vt0, k2: Some(k2), line: None }
-                    }
-                    None => fresh_k2(link, target)?,
-                };
-                modbus_link(rec, li, link, &sims, &mut report)
+    match &target.bench {
+        Some(path) => {
+            // One machine on one clock: every link's exchanges in recorded order.
+            let bench = bench_sims(rec, path)?;
+            let mut all: Vec<(usize, Exchange)> = (0..rec.links.len())
+                .flat_map(|li| exchanges(&rec.frames, li).into_iter().map(move |e| (li, e)))
+                .collect();
+            all.sort_by_key(|(_, (q, _))| *q);
+            let mut warned = vec![false; rec.links.len()];
+            for run in all.chunk_by(|a, b| a.0 == b.0) {
+                let li = run[0].0;
+                let ex: Vec<Exchange> = run.iter().map(|(_, e)| *e).collect();
+                replay_link(rec, li, &ex, Some(&bench), target, &mut report, &mut warned[li])?;
             }
-            Proto::KincoServo => {
-                let sims = match &bench {
-                    Some(b) => {
-                        let Some(line) = b.line.clone() else {
-                            report.skipped.push(format!("{}: the bench has no simulated drive", link.name));
-                            continue;
-                        };
-                        Sims { clock: b.clock.clone(), base: b.base, vt0: b.vt0, k2: None, line: Some(line) }
-                    }
-                    None => fresh_line(rec, li),
-                };
-                servo_link(rec, li, link, &sims, &mut report)
+        }
+        None => {
+            for li in 0..rec.links.len() {
+                let ex = exchanges(&rec.frames, li);
+                replay_link(rec, li, &ex, None, target, &mut report, &mut false)?;
             }
-            Proto::Unknown => report.skipped.push(format!("{}: frames of an undeclared protocol", link.name)),
         }
     }
     report.differences.sort_by_key(|d| d.frame);
     Ok(report)
+}
+
+/// Replays exchanges `ex` of link `li`, against the bench's machine or fresh simulators.
+fn replay_link(
+    rec: &Recording,
+    li: usize,
+    ex: &[Exchange],
+    bench: Option<&Sims>,
+    target: &Target,
+    report: &mut Report,
+    skipped: &mut bool,
+) -> Result<()> {
+    let link = &rec.links[li];
+    let mut skip = |report: &mut Report, why: String| {
+        if !std::mem::replace(skipped, true) {
+            report.skipped.push(why);
+        }
+    };
+    match link.proto {
+        Proto::ModbusTcp | Proto::ModbusRtu | Proto::RtuOverTcp => {
+            let sims = match bench {
+                Some(b) => match b.k2.clone() {
+                    Some(k2) => Sims { clock: b.clock.clone(), base: b.base, vt0: b.vt0, k2: Some(k2), line: None },
+                    None => {
+                        skip(report, format!("{}: the bench has no simulated PLC", link.name));
+                        return Ok(());
+                    }
+                },
+                None => fresh_k2(link, target)?,
+            };
+            modbus_link(rec, ex, link, &sims, report);
+        }
+        Proto::KincoServo => {
+            let sims = match bench {
+                Some(b) => match b.line.clone() {
+                    Some(line) => Sims { clock: b.clock.clone(), base: b.base, vt0: b.vt0, k2: None, line: Some(line) },
+                    None => {
+                        skip(report, format!("{}: the bench has no simulated drive", link.name));
+                        return Ok(());
+                    }
+                },
+                None => fresh_line(rec, li),
+            };
+            servo_link(rec, ex, link, &sims, report);
+        }
+        Proto::Unknown => skip(report, format!("{}: frames of an undeclared protocol", link.name)),
+    }
+    Ok(())
 }
 
 /// Steps `clock` forward to `want` (never back).
@@ -188,15 +230,14 @@ fn fresh_line(rec: &Recording, li: usize) -> Sims {
     Sims { base: clock.now(), vt0: None, clock, k2: None, line: Some(Arc::new(Mutex::new(line))) }
 }
 
-fn modbus_link(rec: &Recording, li: usize, link: &LinkInfo, sims: &Sims, report: &mut Report) {
+fn modbus_link(rec: &Recording, ex: &[Exchange], link: &LinkInfo, sims: &Sims, report: &mut Report) {
     let sim = sims.k2.clone().expect("a K2 for a Modbus link");
     let model = sim.lock().unwrap_or_else(|p| p.into_inner()).model();
     let (clock, base) = (&sims.clock, sims.base);
     let space = K2Space::new(model);
-    let ex = exchanges(&rec.frames, li);
     let vt0 = sims.vt0.or_else(|| ex.first().and_then(|(q, _)| rec.frames[*q].vt));
     let mut service: Option<K2Service> = None;
-    for (q, r) in ex {
+    for &(q, r) in ex {
         let req = &rec.frames[q];
         report.requests += 1;
         let Ok((unit, pdu)) = decode::modbus_pdu(link.proto, &req.bytes) else { continue };
@@ -270,12 +311,11 @@ fn modbus_detail(space: &K2Space, asked: Option<Asked>, recorded: Option<&[u8]>,
     }
 }
 
-fn servo_link(rec: &Recording, li: usize, link: &LinkInfo, sims: &Sims, report: &mut Report) {
+fn servo_link(rec: &Recording, ex: &[Exchange], link: &LinkInfo, sims: &Sims, report: &mut Report) {
     use crate::servo::frame::FRAME_LEN;
     let line = sims.line.clone().expect("a drive line for a servo link");
-    let ex = exchanges(&rec.frames, li);
     let vt0 = sims.vt0.or_else(|| ex.first().and_then(|(q, _)| rec.frames[*q].vt));
-    for (q, r) in ex {
+    for &(q, r) in ex {
         let req = &rec.frames[q];
         report.requests += 1;
         if let (Some(t0), Some(t)) = (vt0, req.vt) {
