@@ -11,6 +11,13 @@
 //!                "servo": { "family": "servo", "sections": { "servo": { … } } } } }
 //! ```
 //!
+//! A simulated PLC's wires are its `wiring` section: each wire's declaration (as `sim wire`
+//! takes it) and what it carries between pieces (counts given, pulses pushed, levels in
+//! flight). Restoring one re-declares the wires (replacing the PLC's current ones), then
+//! sets the PLC, the drives and each wire's state, so a wired machine continues exactly.
+//! From version 2 a PLC without a `wiring` section had no wires, and restoring removes
+//! its wires; a version-1 snapshot (older than wiring in snapshots) leaves them as they are.
+//!
 //! A reader refuses a newer `version` and a section it does not know (a snapshot holding
 //! state this plcsh cannot restore would otherwise restore silently incomplete). Restoring
 //! needs the same devices, by name, with the same models; it checks everything before
@@ -27,7 +34,7 @@ use std::path::{Path, PathBuf};
 use std::time::Duration;
 
 pub const FORMAT: &str = "plcsh-snapshot";
-pub const VERSION: u32 = 1;
+pub const VERSION: u32 = 2;
 
 /// One device's state, by section.
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -57,7 +64,23 @@ fn dec<T: serde::de::DeserializeOwned>(v: &serde_json::Value, what: &str) -> Res
 }
 
 /// The sections this plcsh knows, per family.
-const KNOWN: &[(&str, &str)] = &[("k2", "k2"), ("servo", "servo")];
+const KNOWN: &[(&str, &str)] = &[("k2", "k2"), ("k2", "wiring"), ("servo", "servo")];
+
+/// One wire in a snapshot's `wiring` section.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct WireSnap {
+    /// The declaration, as `sim wire` takes it.
+    pub decl: String,
+    pub state: crate::wiring::WireState,
+}
+
+/// The wires a simulated PLC hosts, with their state.
+fn capture_wiring(sim: &crate::k2::sim::K2Sim) -> Vec<WireSnap> {
+    sim.wiring
+        .as_ref()
+        .map(|h| h.wires.iter().map(|w| WireSnap { decl: w.decl.to_string(), state: w.state.clone() }).collect())
+        .unwrap_or_default()
+}
 
 impl Snapshot {
     /// Captures every simulator in the session (real devices have no simulated state).
@@ -72,6 +95,10 @@ impl Snapshot {
                 sim.advance();
                 let mut sections = BTreeMap::new();
                 sections.insert("k2".to_string(), enc(sim.snapshot_state())?);
+                let wires = capture_wiring(sim);
+                if !wires.is_empty() {
+                    sections.insert("wiring".to_string(), enc(wires)?);
+                }
                 devices.insert(name, DeviceSnap { family: "k2".into(), sections });
             } else if let Some(line) = dev.as_servo().and_then(|sv| sv.simulator()) {
                 let line = line.lock().unwrap_or_else(|p| p.into_inner());
@@ -116,6 +143,7 @@ impl Snapshot {
         // Decode every section and check the models before anything changes.
         let mut k2 = Vec::new();
         let mut servo = Vec::new();
+        let mut wiring: Vec<(usize, String, Vec<WireSnap>)> = Vec::new();
         for (name, d) in &self.devices {
             let i = s.index(name)?;
             if let Some(v) = d.sections.get("k2") {
@@ -130,10 +158,32 @@ impl Snapshot {
                     .hint(format!("open it as {name}=sim:{}", st.model)));
                 }
                 k2.push((i, name, st));
+                let wires: Vec<WireSnap> = match d.sections.get("wiring") {
+                    Some(v) => dec(v, "wiring")?,
+                    None => Vec::new(),
+                };
+                for w in &wires {
+                    crate::wiring::parse(&w.decl).map_err(|e| e.cause("a wire in the snapshot"))?;
+                }
+                // Version 1 did not save wires: its PLCs keep theirs.
+                if self.version >= 2 {
+                    wiring.push((i, name.clone(), wires));
+                }
             }
             if let Some(v) = d.sections.get("servo") {
                 let drives: Vec<crate::servo::sim::drive::DriveState> = dec(v, "servo")?;
                 servo.push((i, drives));
+            }
+        }
+        // Wires first: declaring one touches the PLC and the drive, whose saved states follow.
+        for (i, name, wires) in &wiring {
+            let sim = s.entry(*i).device.as_k2().and_then(|k| k.as_sim()).expect("checked above");
+            if sim.wiring.as_ref().is_some_and(|h| !h.wires.is_empty()) {
+                sim.unwire("all")?;
+            }
+            for w in wires {
+                crate::wiring::setup::wire(s, &w.decl)
+                    .map_err(|e| e.cause(format!("restoring `{name}`'s wire `{}`", w.decl)))?;
             }
         }
         s.clock.set(Duration::from_micros(self.clock_us));
@@ -144,6 +194,16 @@ impl Snapshot {
         for (i, drives) in servo {
             let line = s.entry(i).device.as_servo().and_then(|sv| sv.simulator()).expect("checked above");
             line.lock().unwrap_or_else(|p| p.into_inner()).restore_drives(drives);
+        }
+        for (i, name, wires) in wiring {
+            let sim = s.entry(i).device.as_k2().and_then(|k| k.as_sim()).expect("checked above");
+            let h = sim.wiring.get_or_insert_with(Default::default);
+            if h.wires.len() != wires.len() {
+                return Err(Error::state(format!("restoring `{name}`: its wires did not come back as saved")));
+            }
+            for (w, saved) in h.wires.iter_mut().zip(wires) {
+                w.state = saved.state;
+            }
         }
         Ok(())
     }

@@ -140,6 +140,106 @@ fn replay_reports_no_difference_then_exactly_the_changed_register() {
     assert_eq!(l.last().unwrap()["differences"], 1);
 }
 
+/// A session recorded at a served bench replays against the same bench without difference —
+/// including an input the bench wires to the drive's "target reached" output — and against
+/// a bench with one initial value changed reports exactly that value.
+#[test]
+fn replay_against_a_bench_reports_exactly_the_changed_initial_value() {
+    let bench = |vw2: u16, name: &str| {
+        let p = tmp(name);
+        std::fs::write(
+            &p,
+            format!(
+                "wires = [\"servo:target_reached -> plc:I0.5\", \"plc:Q0.0 -> servo:pulse\"]\n\
+                 init = [\"plc:VW0=7\", \"plc:VW2={vw2}\", \"servo:operating_mode=-4\", \"servo:controlword=6\", \"servo:controlword=7\", \"servo:controlword=15\"]\n\
+                 [devices]\nplc = \"sim:K205-16DT\"\nservo = \"sim-servo:?id=1\"\n"
+            ),
+        )
+        .unwrap();
+        p
+    };
+    let (same, changed) = (bench(3, "bench-same.toml"), bench(4, "bench-changed.toml"));
+    let served = serve(&["--bench", same.to_str().unwrap(), "--tcp", "127.0.0.1:0"]);
+    let url = format!("plc=tcp://{}?model=K205-16DT", tcp_addr(&served));
+    let file = tmp("at-bench.pcapng");
+    let o = record(&file, &url, "get VW0 VW2 VW4 I0.5 I0.4; set VW10=5; get VW10");
+    assert!(stdout(&o).contains("I0.5  1"), "the served bench's wire: {}", stdout(&o));
+    drop(served);
+    let o = plcsh().args(["replay", file.to_str().unwrap(), "--bench"]).arg(&same).output().unwrap();
+    assert_eq!(stdout(&o).trim_end(), "4 request(s) replayed, 0 difference(s)", "{}", stderr(&o));
+    assert!(o.status.success());
+    let o = plcsh().args(["--json", "replay", file.to_str().unwrap(), "--bench"]).arg(&changed).output().unwrap();
+    assert_eq!(o.status.code(), Some(1), "{}", stdout(&o));
+    let l = json_lines(&o);
+    let diffs: Vec<&serde_json::Value> = l.iter().filter_map(|v| v.get("difference")).collect();
+    assert_eq!(diffs.len(), 1, "{}", stdout(&o));
+    assert_eq!(diffs[0]["detail"], "VW2 (address 101) recorded 3, replayed 4");
+    // Without the bench (a fresh simulator) the initial values and the wired input all differ.
+    let o = plcsh().args(["--json", "replay", file.to_str().unwrap()]).output().unwrap();
+    let l = json_lines(&o);
+    let detail: Vec<String> =
+        l.iter().filter_map(|v| v.get("difference")).map(|d| d["detail"].as_str().unwrap().to_string()).collect();
+    assert!(detail.iter().any(|d| d.contains("I0.5")) && detail.iter().any(|d| d.contains("VW0")), "{detail:?}");
+    // The bench is the starting state: --snapshot with it is refused.
+    let o = plcsh()
+        .args(["replay", file.to_str().unwrap(), "--snapshot", "x.json", "--bench"])
+        .arg(&same)
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(2));
+}
+
+/// A session on both links of a served bench — the PLC over Modbus TCP, the drive on its
+/// pty — replays against the bench in recorded order, without difference; with one initial
+/// value changed, exactly that value differs.
+#[test]
+fn a_two_link_session_replays_against_its_bench_in_recorded_order() {
+    let bench = |vw2: u16, name: &str| {
+        let p = tmp(name);
+        std::fs::write(
+            &p,
+            format!(
+                "wires = [\"servo:target_reached -> plc:I0.5\"]\n\
+                 init = [\"plc:VW2={vw2}\", \"servo:controlword=6\", \"servo:controlword=7\", \"servo:controlword=15\"]\n\
+                 [devices]\nplc = \"sim:K205-16DT\"\nservo = \"sim-servo:?id=1\"\n"
+            ),
+        )
+        .unwrap();
+        p
+    };
+    let (same, changed) = (bench(3, "two-same.toml"), bench(4, "two-changed.toml"));
+    let pty = tmp("two-kinco");
+    let served = serve(&[
+        "--bench",
+        same.to_str().unwrap(),
+        "--tcp",
+        "127.0.0.1:0",
+        "--servo-pty",
+        pty.to_str().unwrap(),
+        "--servo-instant",
+    ]);
+    let file = tmp("two-links.pcapng");
+    let o = plcsh()
+        .args(["--record", file.to_str().unwrap()])
+        .args(["-d", &format!("plc=tcp://{}?model=K205-16DT", tcp_addr(&served))])
+        .args(["-d", &format!("servo=kinco:{}?id=1", pty.display())])
+        .args(["-c", "use plc; get VW2 I0.5 servo:gear_factor; set servo:gear_factor=3; get servo:gear_factor VW2"])
+        .stdin(Stdio::null())
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}{}", stdout(&o), stderr(&o));
+    assert!(stdout(&o).contains("servo:gear_factor  3"), "{}", stdout(&o));
+    drop(served);
+    let o = plcsh().args(["replay", file.to_str().unwrap(), "--bench"]).arg(&same).output().unwrap();
+    let text = stdout(&o);
+    assert!(o.status.success() && text.trim_end().ends_with(" 0 difference(s)"), "{text}{}", stderr(&o));
+    let o = plcsh().args(["--json", "replay", file.to_str().unwrap(), "--bench"]).arg(&changed).output().unwrap();
+    let l = json_lines(&o);
+    let diffs: Vec<&serde_json::Value> = l.iter().filter_map(|v| v.get("difference")).collect();
+    assert_eq!(diffs.len(), 2, "both reads of VW2: {}", stdout(&o));
+    assert!(diffs.iter().all(|d| d["detail"] == "VW2 (address 101) recorded 3, replayed 4"), "{diffs:?}");
+}
+
 #[test]
 fn a_file_that_is_not_a_recording_is_refused_with_a_hint() {
     let f = tmp("junk.pcapng");

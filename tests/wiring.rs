@@ -96,6 +96,11 @@ fn wires_are_listed_replaced_and_removed() {
     assert_eq!(l[7]["wires"].as_array().unwrap().len(), 0);
 }
 
+/// What a command printed: its output and its errors (errors go to stderr).
+fn said(o: &std::process::Output) -> String {
+    format!("{}{}", stdout(o), String::from_utf8_lossy(&o.stderr))
+}
+
 #[test]
 fn bad_wires_are_refused_with_what_works() {
     for (cmd, want) in [
@@ -110,13 +115,13 @@ fn bad_wires_are_refused_with_what_works() {
     ] {
         let o = run(&["-c", cmd], "");
         assert!(!o.status.success(), "{cmd} succeeded");
-        let out = stderr(&o);
+        let out = said(&o);
         assert!(out.contains(want), "{cmd}: {out}");
     }
     // A drive whose pulse input is A/B cannot follow pulse + direction.
     let o = run(&["-c", "set servo:pulse_mode=2; sim wire plc:Q0.0 -> servo:pulse"], "");
     assert!(!o.status.success());
-    assert!(stderr(&o).contains("2508.03"), "{}", stderr(&o));
+    assert!(said(&o).contains("2508.03"), "{}", said(&o));
 }
 
 #[test]
@@ -152,12 +157,12 @@ fn a_bench_with_a_real_device_or_a_bad_line_is_refused() {
     std::fs::write(&real, "[devices]\nservo = \"kinco:/dev/null?id=1\"\n").unwrap();
     let o = run(&["--bench", real.to_str().unwrap(), "-c", "sim wires"], "");
     assert!(!o.status.success());
-    assert!(stderr(&o).contains("device servo = kinco:/dev/null?id=1 is not a simulator"), "{}", stderr(&o));
+    assert!(said(&o).contains("device servo = kinco:/dev/null?id=1 is not a simulator"), "{}", said(&o));
     let bad = dir.join("bad.toml");
     std::fs::write(&bad, "[devices]\nplc = \"sim:K205-16DT\"\nwires = 3\n").unwrap();
     let o = run(&["--bench", bad.to_str().unwrap(), "-c", "sim wires"], "");
     assert!(!o.status.success());
-    assert!(stderr(&o).contains("bad.toml:3"), "{}", stderr(&o));
+    assert!(said(&o).contains("bad.toml:3"), "{}", said(&o));
     // A bench's program runs in the simulated K2's scan engine.
     std::fs::write(dir.join("prog.il"), "LD %SM0.0\nST %Q0.1\n").unwrap();
     let prog = dir.join("prog.toml");
@@ -211,4 +216,48 @@ fn a_served_bench_is_driven_by_a_second_plcsh() {
 /// Human-readable errors go to stderr.
 fn stderr(o: &std::process::Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+/// `[[faults]]` in a bench: a drive fault armed at 20000 increments acts where the drive,
+/// following PTO0's pulses through gear 4, crosses it (5000 pulses at 20 kHz: 0.25 s), and
+/// is logged with that virtual time; the encoder counts stop there. A PLC fault entry takes
+/// the SPEC of `sim fault` and acts on its schedule.
+#[test]
+fn bench_faults_and_a_drive_fault_at_a_position() {
+    let dir = std::env::temp_dir().join(format!("plcsh-bench-faults-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("faulty.toml");
+    let base = std::fs::read_to_string(bench_file()).unwrap();
+    std::fs::write(
+        &file,
+        format!(
+            "{base}\n[[faults]]\ndevice = \"servo\"\nspec = \"drive 16#7500 at=20000\"\n\n\
+             [[faults]]\ndevice = \"plc\"\nspec = \"exception 4 on VW100 after=1s times=1\"\n"
+        ),
+    )
+    .unwrap();
+    let f = file.to_str().unwrap();
+    let o = run(
+        &["--time", "stepped", "--bench", f, "-c",
+          "hsc 0 mode=9 rate=4x; pto 0 freq=20kHz count=8000; sim step 1s; get SMD38 servo:position_actual SMD212; servo sim events; sim faults"],
+        "",
+    );
+    let out = said(&o);
+    assert!(o.status.success(), "{out}");
+    assert!(out.contains("plc:SMD38              10000"), "{out}");
+    assert!(out.contains("servo:position_actual  20000"), "{out}");
+    assert!(out.contains("plc:SMD212             8000"), "PTO0 sent every pulse: {out}");
+    assert!(out.contains("0.250000s  drive id 1: fault 16#7500 at position 20000 inc"), "{out}");
+    assert!(out.contains("fault 1: exception 04 (server device failure) on VB100..VB101 from 1.000000s"), "{out}");
+    // The PLC fault acts once, at its time, and is logged as an event.
+    let o = run(&["--time", "stepped", "--bench", f], "sim step 1s\nget VW100\nget VW100\nevents\n");
+    let out = said(&o);
+    assert!(out.contains("injected fault 1"), "{out}");
+    assert!(out.contains("fault1"), "{out}");
+    // A bad entry names the file and the entry.
+    let bad = dir.join("bad-fault.toml");
+    std::fs::write(&bad, format!("{base}\n[[faults]]\ndevice = \"servo\"\nspec = \"drive 16#7500 at=x\"\n")).unwrap();
+    let o = run(&["--bench", bad.to_str().unwrap(), "-c", "sim wires"], "");
+    assert!(!o.status.success());
+    assert!(said(&o).contains("fault 1 `drive 16#7500 at=x`"), "{}", said(&o));
 }

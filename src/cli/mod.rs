@@ -256,10 +256,8 @@ fn run_cli() -> i32 {
     let style = Style::detect(cli.json, stdout_tty);
     let mut out = std::io::stdout().lock();
     if let Some(Sub::Replay(args)) = &cli.sub {
-        if !cli.devices.is_empty() {
-            // Refused before any device is opened.
-            return record::replay(args, true, style, &mut out);
-        }
+        // Before any device is opened: replay builds its own simulators (and refuses --device).
+        return record::replay(args, cli.bench.as_deref(), !cli.devices.is_empty(), style, &mut out);
     }
     let session = match build_session(&cli) {
         Ok(s) => s,
@@ -299,7 +297,7 @@ fn run_cli() -> i32 {
             Sub::Agent(a) => agent::run(a, &mut out),
             Sub::Run(args) => run::main(&mut shell, args, style),
             Sub::Record { cmd } => record::show(cmd, style, &mut out),
-            Sub::Replay(args) => record::replay(args, false, style, &mut out),
+            Sub::Replay(args) => record::replay(args, cli.bench.as_deref(), false, style, &mut out),
         };
     }
     if let Some(cmds) = &cli.command {

@@ -59,9 +59,23 @@ pub fn show(cmd: &RecordCmd, style: Style, out: &mut dyn Write) -> i32 {
     }
 }
 
-/// Exit status: 0 when every reply matches, 1 when any differs (or on error).
-pub fn replay(args: &ReplayArgs, devices_given: bool, style: Style, out: &mut dyn Write) -> i32 {
+/// Exit status: 0 when every reply matches, 1 when any differs (or on error). `bench`
+/// (the global `--bench FILE`): replay against the machine it describes — its PLC answers
+/// the Modbus links, its drive line the servo links, wired as the bench wires them.
+pub fn replay(
+    args: &ReplayArgs,
+    bench: Option<&std::path::Path>,
+    devices_given: bool,
+    style: Style,
+    out: &mut dyn Write,
+) -> i32 {
     let run = || -> crate::core::Result<replay::Report> {
+        if bench.is_some() && (args.sim_model.is_some() || args.snapshot.is_some()) {
+            return Err(crate::core::Error::usage(
+                "replay --bench runs the bench's own simulators: --sim-model and --snapshot do not apply",
+            )
+            .hint("change the model or the starting values in the bench file"));
+        }
         if devices_given {
             // Replaying recorded writes at a machine could move it: only simulators built here.
             return Err(crate::core::Error::usage(
@@ -75,7 +89,7 @@ pub fn replay(args: &ReplayArgs, devices_given: bool, style: Style, out: &mut dy
         }
         replay::check_not_empty(&rec, &args.file)?;
         let snapshot = args.snapshot.as_deref().map(crate::snapshot::locate).transpose()?;
-        replay::run(&rec, &replay::Target { model: args.sim_model.clone(), snapshot })
+        replay::run(&rec, &replay::Target { model: args.sim_model.clone(), snapshot, bench: bench.map(Into::into) })
     };
     let report = match run() {
         Ok(r) => r,

@@ -11,6 +11,14 @@
 //! simulator's own server code (the same request handling `plcsh sim serve` answers with),
 //! so a replay answers exactly as a served simulator would.
 //!
+//! With a bench (`--bench FILE`, [`crate::wiring::bench`]) the recorded requests go to the
+//! machine the bench describes instead — its PLC for the Modbus links, its drive line for
+//! the servo links, wired to each other, in the recorded order of all links, on one clock
+//! stepped to each request's virtual time
+//! relative to the recording's first request — so a session recorded at a served bench
+//! replays without difference against the same bench, and against a bench with one
+//! initial value changed reports exactly that value.
+//!
 //! A difference is a reply whose bytes differ (values, exception, or a reply where none was
 //! recorded and back); for reads it names every differing operand.
 
@@ -34,6 +42,32 @@ pub struct Target {
     pub model: Option<String>,
     /// A K2 simulator state to start from (see [`crate::snapshot`]).
     pub snapshot: Option<std::path::PathBuf>,
+    /// A bench file whose machine answers instead of fresh simulators.
+    pub bench: Option<std::path::PathBuf>,
+}
+
+/// The simulators a link is replayed against, and the clock they run on.
+struct Sims {
+    clock: Clock,
+    /// The clock's reading that the link's first request time maps to.
+    base: Duration,
+    /// The recorded virtual time that `base` stands for (`None`: the link's first request).
+    vt0: Option<Duration>,
+    k2: Option<Arc<Mutex<K2Sim>>>,
+    line: Option<Arc<Mutex<crate::servo::sim::SimLine>>>,
+}
+
+/// A bench's machine: its PLC and drive line, wired, on one stepped clock.
+fn bench_sims(rec: &Recording, path: &std::path::Path) -> Result<Sims> {
+    let clock = Clock::stepped();
+    let (k2, line, _notes) = crate::wiring::bench::serve_parts(path, &clock)?;
+    Ok(Sims {
+        base: clock.now(),
+        vt0: rec.frames.iter().filter(|f| f.dir == Dir::Sent).find_map(|f| f.vt),
+        clock,
+        k2: k2.map(|k| Arc::new(Mutex::new(k))),
+        line,
+    })
 }
 
 /// One reply that differs.
@@ -63,6 +97,9 @@ pub struct Report {
     pub skipped: Vec<String>,
 }
 
+/// A request and its reply: indices into the recording's frames.
+type Exchange = (usize, Option<usize>);
+
 /// Pairs each request with the reply that followed it on its link (if any before the next
 /// request): `(request index, reply index)` into `frames`.
 fn exchanges(frames: &[Frame], link: usize) -> Vec<(usize, Option<usize>)> {
@@ -85,15 +122,78 @@ fn exchanges(frames: &[Frame], link: usize) -> Vec<(usize, Option<usize>)> {
 /// Replays every link of `rec`.
 pub fn run(rec: &Recording, target: &Target) -> Result<Report> {
     let mut report = Report::default();
-    for (li, link) in rec.links.iter().enumerate() {
-        match link.proto {
-            Proto::ModbusTcp | Proto::ModbusRtu | Proto::RtuOverTcp => modbus_link(rec, li, link, target, &mut report)?,
-            Proto::KincoServo => servo_link(rec, li, link, &mut report),
-            Proto::Unknown => report.skipped.push(format!("{}: frames of an undeclared protocol", link.name)),
+    match &target.bench {
+        Some(path) => {
+            // One machine on one clock: every link's exchanges in recorded order.
+            let bench = bench_sims(rec, path)?;
+            let mut all: Vec<(usize, Exchange)> = (0..rec.links.len())
+                .flat_map(|li| exchanges(&rec.frames, li).into_iter().map(move |e| (li, e)))
+                .collect();
+            all.sort_by_key(|(_, (q, _))| *q);
+            let mut warned = vec![false; rec.links.len()];
+            for run in all.chunk_by(|a, b| a.0 == b.0) {
+                let li = run[0].0;
+                let ex: Vec<Exchange> = run.iter().map(|(_, e)| *e).collect();
+                replay_link(rec, li, &ex, Some(&bench), target, &mut report, &mut warned[li])?;
+            }
+        }
+        None => {
+            for li in 0..rec.links.len() {
+                let ex = exchanges(&rec.frames, li);
+                replay_link(rec, li, &ex, None, target, &mut report, &mut false)?;
+            }
         }
     }
     report.differences.sort_by_key(|d| d.frame);
     Ok(report)
+}
+
+/// Replays exchanges `ex` of link `li`, against the bench's machine or fresh simulators.
+fn replay_link(
+    rec: &Recording,
+    li: usize,
+    ex: &[Exchange],
+    bench: Option<&Sims>,
+    target: &Target,
+    report: &mut Report,
+    skipped: &mut bool,
+) -> Result<()> {
+    let link = &rec.links[li];
+    let mut skip = |report: &mut Report, why: String| {
+        if !std::mem::replace(skipped, true) {
+            report.skipped.push(why);
+        }
+    };
+    match link.proto {
+        Proto::ModbusTcp | Proto::ModbusRtu | Proto::RtuOverTcp => {
+            let sims = match bench {
+                Some(b) => match b.k2.clone() {
+                    Some(k2) => Sims { clock: b.clock.clone(), base: b.base, vt0: b.vt0, k2: Some(k2), line: None },
+                    None => {
+                        skip(report, format!("{}: the bench has no simulated PLC", link.name));
+                        return Ok(());
+                    }
+                },
+                None => fresh_k2(link, target)?,
+            };
+            modbus_link(rec, ex, link, &sims, report);
+        }
+        Proto::KincoServo => {
+            let sims = match bench {
+                Some(b) => match b.line.clone() {
+                    Some(line) => Sims { clock: b.clock.clone(), base: b.base, vt0: b.vt0, k2: None, line: Some(line) },
+                    None => {
+                        skip(report, format!("{}: the bench has no simulated drive", link.name));
+                        return Ok(());
+                    }
+                },
+                None => fresh_line(rec, li),
+            };
+            servo_link(rec, ex, link, &sims, report);
+        }
+        Proto::Unknown => skip(report, format!("{}: frames of an undeclared protocol", link.name)),
+    }
+    Ok(())
 }
 
 /// Steps `clock` forward to `want` (never back).
@@ -104,7 +204,8 @@ fn step_to(clock: &Clock, want: Duration) {
     }
 }
 
-fn modbus_link(rec: &Recording, li: usize, link: &LinkInfo, target: &Target, report: &mut Report) -> Result<()> {
+/// A fresh K2 simulator for one Modbus link.
+fn fresh_k2(link: &LinkInfo, target: &Target) -> Result<Sims> {
     let model = match &target.model {
         Some(m) => crate::k2::catalog::lookup(m)?,
         None => decode::model_of(link),
@@ -115,19 +216,34 @@ fn modbus_link(rec: &Recording, li: usize, link: &LinkInfo, target: &Target, rep
         crate::snapshot::Snapshot::load(path)?.restore_k2(&mut sim)?;
     }
     // The snapshot may have set the clock; replay times are relative to it.
-    let base = clock.now();
-    let sim = Arc::new(Mutex::new(sim));
+    Ok(Sims { base: clock.now(), vt0: None, clock, k2: Some(Arc::new(Mutex::new(sim))), line: None })
+}
+
+/// A fresh servo line with the drive ids a servo link addressed.
+fn fresh_line(rec: &Recording, li: usize) -> Sims {
+    let mut ids: Vec<u8> =
+        exchanges(&rec.frames, li).iter().filter_map(|(q, _)| rec.frames[*q].bytes.first().copied()).collect();
+    ids.sort_unstable();
+    ids.dedup();
+    let clock = Clock::stepped();
+    let line = crate::servo::sim::SimLine::new(&ids, clock.clone());
+    Sims { base: clock.now(), vt0: None, clock, k2: None, line: Some(Arc::new(Mutex::new(line))) }
+}
+
+fn modbus_link(rec: &Recording, ex: &[Exchange], link: &LinkInfo, sims: &Sims, report: &mut Report) {
+    let sim = sims.k2.clone().expect("a K2 for a Modbus link");
+    let model = sim.lock().unwrap_or_else(|p| p.into_inner()).model();
+    let (clock, base) = (&sims.clock, sims.base);
     let space = K2Space::new(model);
-    let ex = exchanges(&rec.frames, li);
-    let vt0 = ex.first().and_then(|(q, _)| rec.frames[*q].vt);
+    let vt0 = sims.vt0.or_else(|| ex.first().and_then(|(q, _)| rec.frames[*q].vt));
     let mut service: Option<K2Service> = None;
-    for (q, r) in ex {
+    for &(q, r) in ex {
         let req = &rec.frames[q];
         report.requests += 1;
         let Ok((unit, pdu)) = decode::modbus_pdu(link.proto, &req.bytes) else { continue };
         let service = service.get_or_insert_with(|| K2Service::new(sim.clone(), unit));
         if let (Some(t0), Some(t)) = (vt0, req.vt) {
-            step_to(&clock, base + t.saturating_sub(t0));
+            step_to(clock, base + t.saturating_sub(t0));
         }
         // The simulator's RTU framing decodes the request, whatever transport carried it.
         let mut adu = Vec::with_capacity(pdu.len() + 3);
@@ -162,7 +278,6 @@ fn modbus_link(rec: &Recording, li: usize, link: &LinkInfo, target: &Target, rep
             detail,
         });
     }
-    Ok(())
 }
 
 /// What differs between two reply PDUs, by operand for reads.
@@ -196,23 +311,18 @@ fn modbus_detail(space: &K2Space, asked: Option<Asked>, recorded: Option<&[u8]>,
     }
 }
 
-fn servo_link(rec: &Recording, li: usize, link: &LinkInfo, report: &mut Report) {
+fn servo_link(rec: &Recording, ex: &[Exchange], link: &LinkInfo, sims: &Sims, report: &mut Report) {
     use crate::servo::frame::FRAME_LEN;
-    let ex = exchanges(&rec.frames, li);
-    let mut ids: Vec<u8> = ex.iter().filter_map(|(q, _)| rec.frames[*q].bytes.first().copied()).collect();
-    ids.sort_unstable();
-    ids.dedup();
-    let clock = Clock::stepped();
-    let mut line = crate::servo::sim::SimLine::new(&ids, clock.clone());
-    let vt0 = ex.first().and_then(|(q, _)| rec.frames[*q].vt);
-    for (q, r) in ex {
+    let line = sims.line.clone().expect("a drive line for a servo link");
+    let vt0 = sims.vt0.or_else(|| ex.first().and_then(|(q, _)| rec.frames[*q].vt));
+    for &(q, r) in ex {
         let req = &rec.frames[q];
         report.requests += 1;
         if let (Some(t0), Some(t)) = (vt0, req.vt) {
-            step_to(&clock, t.saturating_sub(t0));
+            step_to(&sims.clock, sims.base + t.saturating_sub(t0));
         }
         let Ok(bytes) = <[u8; FRAME_LEN]>::try_from(req.bytes.as_slice()) else { continue };
-        let replayed = line.answer(&bytes).map(|b| b.to_vec());
+        let replayed = line.lock().unwrap_or_else(|p| p.into_inner()).answer(&bytes).map(|b| b.to_vec());
         let recorded = r.map(|r| rec.frames[r].bytes.clone());
         if replayed == recorded {
             continue;

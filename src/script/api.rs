@@ -346,6 +346,7 @@ pub fn register(lua: &Lua) -> mlua::Result<()> {
     )?;
     p.set("json", json)?;
     super::wire::register(lua, &p)?;
+    super::snapshot::register(lua, &p)?;
     lua.globals().set("plcsh", p)?;
     Ok(())
 }

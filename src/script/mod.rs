@@ -17,6 +17,7 @@ mod device;
 pub mod error;
 mod paths;
 pub mod sandbox;
+mod snapshot;
 mod wire;
 
 pub use bridge::{Bridge, BRIDGE};

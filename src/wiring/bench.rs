@@ -20,6 +20,13 @@
 //! ]
 //! [programs]                            # DEVICE = FILE (relative to the bench file)
 //! plc = "machine.il"
+//!
+//! [[faults]]                            # injected when the bench opens, in order
+//! device = "plc"                        # a PLC: the SPEC of `sim fault` / `sim serve --fault`
+//! spec = "no-reply on VW100 after=1s times=1"
+//! [[faults]]
+//! device = "servo"                      # a drive: the words after `servo sim fault`
+//! spec = "drive 16#7500 at=20000"       # a drive fault when its position crosses 20000
 //! ```
 //!
 //! One path opens a bench for every front end ([`open`]): devices through the session's
@@ -50,11 +57,47 @@ pub struct Bench {
     pub init: Vec<String>,
     #[serde(default)]
     pub programs: BTreeMap<String, String>,
+    #[serde(default)]
+    pub faults: Vec<BenchFault>,
     /// The file's directory (program paths are relative to it).
     #[serde(skip)]
     pub dir: PathBuf,
     #[serde(skip)]
     pub path: PathBuf,
+}
+
+/// One `[[faults]]` entry: a fault injected into a device when the bench opens.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BenchFault {
+    pub device: String,
+    pub spec: String,
+}
+
+/// Injects `f` into its device: a simulated PLC takes a `sim fault` SPEC, a simulated drive
+/// the words after `servo sim fault`. Returns the description.
+fn inject(s: &mut Session, f: &BenchFault) -> Result<String> {
+    let i = s.index(&f.device)?;
+    let dev = &mut s.entry(i).device;
+    if let Some(sim) = dev.as_k2().and_then(|k| k.as_sim()) {
+        let spec =
+            crate::k2::sim::fault::parse(&f.spec).map_err(|m| Error::usage(m).hint(crate::k2::sim::fault::USAGE))?;
+        sim.advance();
+        let now = sim.last;
+        sim.faults.add(&spec, now);
+        return Ok(sim.faults.list.last().map(|x| x.describe()).unwrap_or_default());
+    }
+    if let Some(servo) = dev.as_servo() {
+        let id = servo.drive_id();
+        if let Some(line) = servo.simulator() {
+            use crate::servo::sim::control;
+            let text = format!("fault {}", f.spec);
+            let req = control::parse(&control::words(&text))?;
+            let mut l = line.lock().unwrap_or_else(|p| p.into_inner());
+            return Ok(control::apply(&mut l, &req, Some(id))?.0);
+        }
+    }
+    Err(Error::unsupported(format!("{} takes no injected faults (only simulated K2 PLCs and drives do)", f.device)))
 }
 
 /// Prefixes an error's message with where in the bench it arose.
@@ -73,7 +116,7 @@ impl Bench {
         let mut b: Bench = toml::from_str(text).map_err(|e| {
             let line = e.span().map(|s| format!(":{}", line_of(text, s.start))).unwrap_or_default();
             Error::usage(format!("bench {}{line}: {}", path.display(), e.message())).hint(
-                "a bench has [devices] NAME = \"URL\", and optional wires = [\"A -> B\"], init = [\"DEV:OP=VALUE\"], [programs]",
+                "a bench has [devices] NAME = \"URL\", and optional wires = [\"A -> B\"], init = [\"DEV:OP=VALUE\"], [programs], [[faults]]",
             )
         })?;
         if b.devices.is_empty() {
@@ -121,6 +164,10 @@ pub fn open(s: &mut Session, bench: &Bench) -> Result<Vec<String>> {
         let it =
             SetItem { operand: op.trim().to_string(), value: value.trim().to_string(), column: 0, value_column: 0 };
         s.set(&[it]).map_err(|e| within(e, format!("bench {file}, init {} `{item}`", i + 1)))?;
+    }
+    for (i, f) in bench.faults.iter().enumerate() {
+        let what = inject(s, f).map_err(|e| within(e, format!("bench {file}, fault {} `{}`", i + 1, f.spec)))?;
+        notes.push(format!("fault on {}: {what}", f.device));
     }
     for (dev, prog) in &bench.programs {
         s.index(dev).map_err(|e| within(e, format!("bench {file}, program for {dev}")))?;

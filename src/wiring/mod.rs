@@ -315,8 +315,8 @@ pub struct Wire {
     pub state: WireState,
 }
 
-/// What a wire carries over between pieces.
-#[derive(Clone, Debug, Default)]
+/// What a wire carries over between pieces (saved whole in snapshots).
+#[derive(Clone, Debug, Default, serde::Serialize, serde::Deserialize)]
 pub struct WireState {
     /// Encoder: 4× counts given to the counter so far (absolute encoder count).
     pub given: i64,
@@ -448,7 +448,8 @@ pub fn snap(x: f64) -> f64 {
     }
 }
 
-/// The first time at or after `t` a position plan reaches `x` (`None` if it never does).
+/// The first time at or after `t` a position plan reaches `x` (`None` if it never does;
+/// a piece at rest on `x` does not reach it again).
 pub fn first_reach(pieces: &[Piece], x: f64, t: f64) -> Option<f64> {
     for p in pieces {
         let (t0, dur) = (p.t0.max(t), p.dur);
@@ -458,6 +459,10 @@ pub fn first_reach(pieces: &[Piece], x: f64, t: f64) -> Option<f64> {
         }
         let (c, b, a) = (p.at(t0) - x, p.v0 + p.a * (t0 - p.t0), 0.5 * p.a);
         if c == 0.0 {
+            if b == 0.0 && a == 0.0 {
+                // At rest on `x`: it stays there, nothing is crossed.
+                continue;
+            }
             return Some(t0);
         }
         let roots: Vec<f64> = if a == 0.0 {

@@ -440,12 +440,14 @@ impl K2Sim {
                 st.until_ns
             }
             (Kind::Output { what, pin }, Some(peer)) => {
+                // The level is read at every piece: a drive's state machine (enabled, fault)
+                // changes without its motion plan changing.
+                let on = peer.output(what, t);
+                self.drive_input(pin, on);
                 let plan = peer.plan_id(t);
                 if plan == st.plan && t_ns < st.until_ns {
                     return st.until_ns;
                 }
-                let on = peer.output(what, t);
-                self.drive_input(pin, on);
                 let settle = peer.motion(t).last().map(|p| p.t0).filter(|e| *e > t);
                 let ev = peer.next_event(t).filter(|e| *e > t);
                 let until = [settle, ev].into_iter().flatten().fold(f64::INFINITY, f64::min);

@@ -11,10 +11,14 @@
 //!
 //! Words (`id=N` may appear anywhere; without it the drive is the one the shell's device
 //! talks to, or every drive for line faults sent to the socket):
-//! `fault [drive] [CODE]` · `fault no-reply|bad-checksum|drop-echo [count=N|all]` ·
+//! `fault [drive] [CODE] [at=POS]` · `fault no-reply|bad-checksum|drop-echo [count=N|all]` ·
 //! `fault delay DURATION [count=…]` · `fault abort OBJECT CODE [count=…]` · `fault clear` ·
 //! `switch [home|neg|pos] POS|off` · `pulses freq=HZ count=N [dir=fwd|rev]` ·
-//! `strict on|off`.
+//! `strict on|off` · `events`.
+//!
+//! `fault drive CODE at=POS` arms a drive fault at a position: it acts when the drive's
+//! motion crosses POS (increments), at that moment of virtual time, and is logged with it
+//! (`events` lists the armed faults that acted).
 
 use super::drive::DEFAULT_FAULT;
 use super::faults::{FaultKind, LineFault};
@@ -40,6 +44,10 @@ pub enum Which {
 pub enum Control {
     /// Drive fault: Fault state, the code in 603F.00, 2601.00 bit 0.
     DriveFault(u16),
+    /// A drive fault armed at a position (increments): acts when the motion crosses it.
+    DriveFaultAt(u16, f64),
+    /// The armed faults that acted, with their virtual times.
+    Events,
     /// A line fault; `count` `None` = until cleared.
     Line(FaultKind, Option<u32>),
     ClearFaults,
@@ -140,12 +148,12 @@ pub fn parse(words: &[(usize, &str)]) -> Result<Request> {
                 }
                 "clear" => Control::ClearFaults,
                 "drive" => {
-                    known(&[])?;
-                    drive_fault(args.first().copied())?
+                    known(&["at"])?;
+                    at_position(drive_fault(args.first().copied())?, opt("at"))?
                 }
                 _ => {
-                    known(&[])?;
-                    drive_fault(rest.first().copied())?
+                    known(&["at"])?;
+                    at_position(drive_fault(rest.first().copied())?, opt("at"))?
                 }
             }
         }
@@ -178,11 +186,20 @@ pub fn parse(words: &[(usize, &str)]) -> Result<Request> {
             };
             Control::Pulses { freq, count, dir }
         }
+        ("events", []) => Control::Events,
         ("strict", [(_, "on")]) => Control::Strict(true),
         ("strict", [(_, "off")]) => Control::Strict(false),
         (w, _) => return Err(usage(format!("unknown `servo sim {w}`"), first.0)),
     };
     Ok(Request { control, id })
+}
+
+/// `at=POS` makes a drive fault one armed at a position.
+fn at_position(c: Control, at: Option<(usize, &str)>) -> Result<Control> {
+    match (c, at) {
+        (Control::DriveFault(code), Some((col, p))) => Ok(Control::DriveFaultAt(code, number(p, col)? as f64)),
+        (c, _) => Ok(c),
+    }
 }
 
 fn drive_fault(code: Option<(usize, &str)>) -> Result<Control> {
@@ -230,6 +247,34 @@ pub fn apply(line: &mut SimLine, req: &Request, default_id: Option<u8>) -> Resul
             let i = drive_id()?;
             line.inject_fault(i, *code);
             (format!("drive id {i}: fault 16#{code:04X} injected"), json!({"fault": code, "id": i}))
+        }
+        Control::DriveFaultAt(code, pos) => {
+            let i = drive_id()?;
+            let t = line.now();
+            let d = line.drive(i).expect("checked id");
+            d.advance(t);
+            d.faults_at.push((*pos, *code));
+            (
+                format!("drive id {i}: fault 16#{code:04X} armed at position {pos} inc"),
+                json!({"fault": code, "at": *pos as i64, "id": i}),
+            )
+        }
+        Control::Events => {
+            let t = line.now();
+            let mut rows = Vec::new();
+            let mut list = Vec::new();
+            for i in line.ids() {
+                let d = line.drive(i).expect("listed id");
+                d.advance(t);
+                for &(te, x, code) in &d.fault_events {
+                    rows.push(format!(
+                        "{te:.6}s  drive id {i}: fault 16#{code:04X} at position {x} inc (armed fault acted)"
+                    ));
+                    list.push(json!({"time_s": te, "id": i, "fault": code, "at": x as i64}));
+                }
+            }
+            let text = if rows.is_empty() { "no armed fault has acted".to_string() } else { rows.join("\n") };
+            (text, json!({"events": list}))
         }
         Control::Line(kind, count) => {
             if id.is_some() {
@@ -365,7 +410,12 @@ mod tests {
             Control::Pulses { freq: 1000.0, count: 500, dir: -1 }
         );
         assert_eq!(p("strict on").unwrap().control, Control::Strict(true));
+        assert_eq!(p("fault drive 16#7500 at=-1200").unwrap().control, Control::DriveFaultAt(0x7500, -1200.0));
+        assert_eq!(p("fault at=300").unwrap().control, Control::DriveFaultAt(DEFAULT_FAULT, 300.0));
+        assert_eq!(p("events").unwrap().control, Control::Events);
         for bad in [
+            "fault no-reply at=3",
+            "fault drive 1 at=x",
             "fault abort target_position",
             "fault delay",
             "pulses freq=0 count=1",

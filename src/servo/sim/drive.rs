@@ -107,6 +107,8 @@ enum Event {
     Limit,
     /// The following error stayed outside its window for the time-out.
     FollowingError,
+    /// The motion crossed an armed fault position (index into `faults_at`).
+    PositionFault(usize),
 }
 
 /// A simulated Kinco drive.
@@ -143,6 +145,10 @@ pub struct Drive {
     pub strict: bool,
     /// How many times parameters were stored (2FF0.01 = 1).
     pub saves: u32,
+    /// Faults armed at a position: `(position, code)`, injected when the motion crosses it.
+    pub faults_at: Vec<(f64, u16)>,
+    /// Armed faults that acted: `(virtual time s, position, code)`.
+    pub fault_events: Vec<(f64, f64, u16)>,
 }
 
 impl Drive {
@@ -178,6 +184,8 @@ impl Drive {
             pulses: PulseTrain::new(),
             strict: false,
             saves: 0,
+            faults_at: Vec::new(),
+            fault_events: Vec::new(),
         }
     }
 
@@ -270,6 +278,20 @@ impl Drive {
                 consider(into(lo, -1.0), Event::Limit);
                 consider(into(hi, 1.0), Event::Limit);
             }
+            for (k, &(x, _)) in self.faults_at.iter().enumerate() {
+                // Crossing it: standing on the position (within half an increment) does not
+                // count; from there, it is reached again after leaving it.
+                let reach = if (m.at(from).0 - x).abs() < 0.5 {
+                    let leave = [m.first_reach(x + 0.5, from), m.first_reach(x - 0.5, from)]
+                        .into_iter()
+                        .flatten()
+                        .fold(f64::INFINITY, f64::min);
+                    leave.is_finite().then(|| m.first_reach(x, leave)).flatten()
+                } else {
+                    m.first_reach(x, from)
+                };
+                consider(reach, Event::PositionFault(k));
+            }
             let window = self.stored("max_following_error") as f64;
             if window > 0.0 {
                 let timeout = self.stored("following_error_timeout") as f64 / 1000.0;
@@ -337,6 +359,11 @@ impl Drive {
             Event::FollowingError => {
                 self.following_error = true;
                 self.fault_now(FOLLOWING_ERROR_FAULT, t);
+            }
+            Event::PositionFault(k) => {
+                let (x, code) = self.faults_at.remove(k);
+                self.fault_events.push((t, x, code));
+                self.fault_now(code, t);
             }
         }
     }
@@ -756,6 +783,10 @@ pub struct DriveState {
     pulses: PulseTrain,
     strict: bool,
     saves: u32,
+    #[serde(default)]
+    faults_at: Vec<(f64, u16)>,
+    #[serde(default)]
+    fault_events: Vec<(f64, f64, u16)>,
 }
 
 impl Drive {
@@ -784,6 +815,8 @@ impl Drive {
             pulses: self.pulses.clone(),
             strict: self.strict,
             saves: self.saves,
+            faults_at: self.faults_at.clone(),
+            fault_events: self.fault_events.clone(),
         }
     }
 
@@ -810,6 +843,8 @@ impl Drive {
             pulses: s.pulses,
             strict: s.strict,
             saves: s.saves,
+            faults_at: s.faults_at,
+            fault_events: s.fault_events,
         }
     }
 }

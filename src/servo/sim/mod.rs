@@ -90,7 +90,8 @@ impl SimLine {
         }
     }
 
-    fn now(&self) -> f64 {
+    /// The line's virtual time, seconds.
+    pub fn now(&self) -> f64 {
         self.clock.now().as_secs_f64()
     }
 

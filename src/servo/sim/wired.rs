@@ -33,6 +33,8 @@ impl DrivePeer {
         let key = |d: &super::drive::Drive| {
             let s = &d.switches;
             let mut h = d.plan().fingerprint() ^ received.wrapping_mul(0x9E37_79B9_7F4A_7C15);
+            // A fault armed at a position is an event to come.
+            h = (h ^ d.faults_at.len() as u64).wrapping_mul(0x1000_0000_01B3);
             for x in [s.home, s.neg_limit.unwrap_or(f64::NAN), s.pos_limit.unwrap_or(f64::NAN)] {
                 h = (h ^ x.to_bits()).wrapping_mul(0x1000_0000_01B3);
             }

@@ -388,3 +388,35 @@ fn a_connected_pulse_train_is_followed_like_a_wired_output() {
     t.step(1.0);
     assert_eq!(t.pos(), 900);
 }
+
+/// A fault armed at a position acts where the motion crosses it (either way), at that
+/// moment, and not merely for standing on it when armed.
+#[test]
+fn a_fault_armed_at_a_position_acts_where_the_motion_crosses_it() {
+    let mut t = T::new();
+    t.enable();
+    t.cw(0x2F);
+    t.cw(0x103F);
+    t.d.faults_at.push((2_000.0, 0x7500));
+    t.ok(0x607A, 0, Size::B4, 4_000);
+    t.step(5.0);
+    assert_ne!(t.sw() & 0x08, 0, "in Fault");
+    assert_eq!(t.pos(), 2_000, "stopped dead where it crossed");
+    assert_eq!(t.r(0x603F, 0), 0x7500);
+    let (te, x, code) = t.d.fault_events[0];
+    assert!(te > 0.0 && te < 5.0 && x == 2_000.0 && code == 0x7500, "{:?}", t.d.fault_events);
+    assert!(t.d.faults_at.is_empty(), "an armed fault acts once");
+    // Reset, arm at the position it stands on: moving away does not trip it, coming back does.
+    t.cw(0x80);
+    t.enable();
+    t.cw(0x2F);
+    t.cw(0x103F);
+    t.d.faults_at.push((2_000.0, 0x7501));
+    t.ok(0x607A, 0, Size::B4, 3_000);
+    t.step(5.0);
+    assert_eq!((t.pos(), t.sw() & 0x08), (3_000, 0), "moved away from it without a fault");
+    t.ok(0x607A, 0, Size::B4, 0);
+    t.step(5.0);
+    assert_eq!((t.pos(), t.r(0x603F, 0)), (2_000, 0x7501), "crossing it backwards");
+    assert_eq!(t.d.fault_events.len(), 2);
+}
