@@ -93,7 +93,9 @@ fn completion_hints_watch_and_plot_in_a_real_terminal() {
     assert!(s.lines().any(|l| l.contains("SMB67") && l.contains("PTO0/PWM0 (Q0.0) control byte")), "{s}");
     // Completing further: SMB67 is now unique with "7"; Tab leaves "get SMB67" and the hint shows its meaning.
     t.literal("7");
-    t.wait_for("the inline hint", |s| s.lines().any(|l| l.contains("plc> get SMB67") && l.contains("— PTO0/PWM0")));
+    t.wait_for("the inline hint", |s| {
+        s.lines().any(|l| l.contains("plc(sim)> get SMB67") && l.contains("— PTO0/PWM0"))
+    });
     t.keys(&["C-u"]);
 
     // watch redraws in place: after 6 samples the screen holds exactly one table.

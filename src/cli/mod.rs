@@ -50,9 +50,13 @@ pub struct Cli {
     /// Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).
     #[arg(long, value_name = "FILE", global = true)]
     pub config: Option<std::path::PathBuf>,
-    /// Simulator state file (backup area, retained ranges, clock); default in the user's data directory.
-    #[arg(long, value_name = "FILE", global = true)]
+    /// Simulator state file (backup area, retained ranges, clock); default in the user's data
+    /// directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE.
+    #[arg(long, value_name = "FILE|none", global = true)]
     pub state: Option<std::path::PathBuf>,
+    /// Refuse every change to every device (writes, instructions, servo commands): inspect a live machine.
+    #[arg(long = "read-only", global = true)]
+    pub read_only: bool,
     #[command(subcommand)]
     pub sub: Option<Sub>,
 }
@@ -110,18 +114,23 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
     if let Some(path) = cli.config.clone().or_else(crate::profile::default_path) {
         s.profiles = crate::profile::Profiles::load(&path);
     }
+    s.set_read_only(cli.read_only);
     let mut current = "plc".to_string();
     let named: Vec<(String, String)> = cli.devices.iter().map(|d| split_device_arg(d)).collect();
+    let real = |family: &str| named.iter().any(|(_, url)| real_family(&s, url) == Some(family));
+    let (real_k2, real_servo) = (real("k2"), real("servo"));
     // The default simulators, unless a --device takes their name (a real `plc` then opens
-    // without first loading the simulator's state).
-    if !named.iter().any(|(n, _)| n == "plc") {
+    // without first loading the simulator's state) or names a real device of their family
+    // (a real K2 or drive is never shadowed by a simulated one the user did not ask for).
+    if !named.iter().any(|(n, _)| n == "plc") && !real_k2 {
         s.open("plc", &format!("sim:{}", cli.model))?;
-        // The simulated PLC keeps its backup area, retained ranges and clock (k2.md §7).
-        if let Some(state) = cli.state.clone().or_else(crate::k2::sim::state::default_path) {
+        // The simulated PLC keeps its backup area, retained ranges and clock (k2.md §7);
+        // `sim serve` keeps its own (`--state`), so the shell's default file stays untouched.
+        if let Some(state) = state_file(cli).filter(|_| !matches!(cli.sub, Some(Sub::Sim { .. }))) {
             s.device("plc")?.set_option("state", &state.to_string_lossy()).map_err(|e| e.device("plc"))?;
         }
     }
-    if !named.iter().any(|(n, _)| n == "servo") {
+    if !named.iter().any(|(n, _)| n == "servo") && !real_servo {
         s.open("servo", "sim-servo:?id=1")?;
     }
     for d in &cli.devices {
@@ -131,8 +140,34 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
             current = name;
         }
     }
+    if s.index(&current).is_err() {
+        // No `plc`: the first device named on the command line is current.
+        current = named.first().map(|(n, _)| n.clone()).unwrap_or_default();
+    }
     s.use_device(&current)?;
     Ok(s)
+}
+
+/// The simulator state file the flags name: `--state FILE`, none for `--state none`, else
+/// the user's default file.
+pub fn state_file(cli: &Cli) -> Option<std::path::PathBuf> {
+    match &cli.state {
+        Some(p) if p.as_os_str() == "none" => None,
+        Some(p) => Some(p.clone()),
+        None => crate::k2::sim::state::default_path(),
+    }
+}
+
+/// The family of a device URL (or profile) when it is a real device: `k2` for Modbus
+/// URLs, `servo` for `kinco:`; `None` for simulators and unknown schemes.
+fn real_family(s: &Session, url: &str) -> Option<&'static str> {
+    let url = if url.contains(':') { url } else { s.profiles.get(url).map(|p| p.url.as_str())? };
+    let scheme = url.split(':').next().unwrap_or("");
+    match scheme {
+        "tcp" | "rtu" | "rtu+tcp" => Some("k2"),
+        "kinco" => Some("servo"),
+        _ => None,
+    }
 }
 
 /// Entry point; returns the process exit status.

@@ -12,7 +12,7 @@
 //! first) before the error is reported.
 
 mod api;
-mod bridge;
+pub mod bridge;
 mod device;
 pub mod error;
 mod paths;

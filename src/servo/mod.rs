@@ -37,4 +37,10 @@ pub trait ServoOps {
     fn simulator(&mut self) -> Option<Arc<Mutex<sim::SimLine>>> {
         None
     }
+    /// Asks the write guard (`crate::guard`) whether `changes` may be made, before a
+    /// helper makes any of them; unguarded drives permit everything.
+    fn permits(&self, changes: &[crate::core::device::Change]) -> Result<()> {
+        let _ = changes;
+        Ok(())
+    }
 }

@@ -37,7 +37,7 @@ pub fn interactive(shell: &mut Shell) -> i32 {
         device_list(shell)
     );
     loop {
-        let prompt = format!("{}> ", shell.session.current_name().unwrap_or("plcsh"));
+        let prompt = prompt(&shell.session);
         // Lend the session to the completer while the line is read (see helper.rs).
         let placeholder = Session::new(shell.session.clock.clone());
         if let Some(h) = ed.helper_mut() {
@@ -139,4 +139,28 @@ pub fn batch(shell: &mut Shell, input: &mut dyn BufRead, out: &mut dyn Write) ->
         }
     }
     i32::from(!ok)
+}
+
+/// The prompt: the current device's name, `(sim)` when it is simulated (`plc(sim)>`
+/// against `press1>`), and `read-only` while the session-wide switch is on.
+pub fn prompt(s: &Session) -> String {
+    let mut marks = Vec::new();
+    let name = match s.current_index() {
+        Ok(i) => {
+            let e = &s.entries()[i];
+            if e.device.info().simulated {
+                marks.push("sim");
+            }
+            e.name.clone()
+        }
+        Err(_) => "plcsh".to_string(),
+    };
+    if s.read_only() {
+        marks.push("read-only");
+    }
+    if marks.is_empty() {
+        format!("{name}> ")
+    } else {
+        format!("{name}({})> ", marks.join(", "))
+    }
 }
