@@ -95,7 +95,7 @@ _plcsh() {
 
     case "${cmd}" in
         plcsh)
-            opts="-c -v -d -h -V --command --json --verbose --model --device --time --config --state --help --version models devices completions sim agent run help"
+            opts="-c -v -d -h -V --command --json --verbose --model --device --time --config --state --read-only --help --version models devices completions sim agent run help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -141,7 +141,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__agent)
-            opts="-v -d -h --json --verbose --model --device --time --config --state --help il help"
+            opts="-v -d -h --json --verbose --model --device --time --config --state --read-only --help il help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -221,7 +221,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__agent__subcmd__il)
-            opts="-v -d -h --base --json --verbose --model --device --time --config --state --help"
+            opts="-v -d -h --base --json --verbose --model --device --time --config --state --read-only --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -263,7 +263,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__completions)
-            opts="-v -d -h --write --json --verbose --model --device --time --config --state --help bash elvish fish powershell zsh"
+            opts="-v -d -h --write --json --verbose --model --device --time --config --state --read-only --help bash elvish fish powershell zsh"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -305,7 +305,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__devices)
-            opts="-v -d -h --json --verbose --model --device --time --config --state --help"
+            opts="-v -d -h --json --verbose --model --device --time --config --state --read-only --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -483,7 +483,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__models)
-            opts="-v -d -h --json --verbose --model --device --time --config --state --help"
+            opts="-v -d -h --json --verbose --model --device --time --config --state --read-only --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -521,7 +521,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__run)
-            opts="-v -d -h --json --verbose --model --device --time --config --state --help"
+            opts="-v -d -h --json --verbose --model --device --time --config --state --read-only --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -559,7 +559,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__sim)
-            opts="-v -d -h --json --verbose --model --device --time --config --state --help serve help"
+            opts="-v -d -h --json --verbose --model --device --time --config --state --read-only --help serve help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -639,7 +639,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__sim__subcmd__serve)
-            opts="-v -d -h --tcp --rtu-pty --rtu-tcp --unit --agent --servo-pty --servo-id --servo-loop --json --verbose --model --device --time --config --state --help"
+            opts="-v -d -h --tcp --rtu-pty --rtu-tcp --unit --agent --servo-pty --servo-id --servo-loop --json --verbose --model --device --time --config --state --read-only --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
