@@ -221,6 +221,11 @@ impl Session {
         e.device.permits(&[crate::core::device::Change::Write(*op)]).map_err(|err| err.device(&e.name))
     }
 
+    /// Is device `i` a simulator?
+    pub fn simulated(&self, i: usize) -> bool {
+        self.devices[i].device.info().simulated
+    }
+
     pub fn name_of(&self, device: usize, op: &Operand) -> String {
         self.devices[device].device.operands().name(op)
     }

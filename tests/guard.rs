@@ -296,3 +296,27 @@ fn the_session_wide_read_only_switch_refuses_every_change_and_shows_in_the_promp
     let text = stdout(&o) + &String::from_utf8_lossy(&o.stderr);
     assert!(text.contains("read-only"), "{text}");
 }
+
+/// Simulated and real are never confused: a real K2 named on the command line opens no
+/// simulated `plc` beside it, and every line that moves something says which it was.
+#[test]
+fn a_real_device_opens_no_default_simulator_and_moving_lines_say_sim_or_real() {
+    let served = serve(&["--tcp", "0", "--agent", "--state", "none"]);
+    let url = format!("tcp://{}?model=K205-16DT&agent=VB3400", served.ready["tcp"].as_str().unwrap());
+    let press = format!("press={url}");
+    let o = run(&["--json", "--state", "none", "--device", &press, "-c", "devices"], "");
+    let l = json_lines(&o);
+    let names: Vec<&str> = l[0]["devices"].as_array().unwrap().iter().map(|d| d["name"].as_str().unwrap()).collect();
+    assert!(!names.contains(&"plc"), "no simulated plc beside the real K2: {names:?}");
+    assert!(names.contains(&"press") && names.contains(&"servo"), "{names:?}");
+    let o = run(&["--state", "none", "--device", &press, "-c", "set SMB67=16#85, SMW68=500, SMD72=10; pls 0"], "");
+    let text = stdout(&o);
+    assert!(o.status.success() && text.contains("press(real): "), "{text}");
+    let o = run(&["--state", "none", "--time", "stepped", "-c", "set SMB67=16#85, SMW68=500, SMD72=10; pls 0"], "");
+    assert!(stdout(&o).contains("plc(sim): PTO0"), "{}", stdout(&o));
+    let o = run(&["--json", "--state", "none", "--time", "stepped", "-c", "servo enable; servo move abs 100"], "");
+    for v in json_lines(&o) {
+        assert_eq!(v["simulated"], true, "{v}");
+        assert!(v["message"].as_str().unwrap().starts_with("servo(sim): "), "{v}");
+    }
+}

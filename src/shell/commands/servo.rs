@@ -118,6 +118,9 @@ fn servo(sh: &mut Shell, args: Args) -> Result<Outcome> {
         }
     };
     r.map(|mut o| {
+        if matches!(sub, "enable" | "move" | "jog" | "home") {
+            o = o.acted_on(&name, simulated);
+        }
         o.device = Some(name.clone());
         o
     })
