@@ -14,3 +14,4 @@ pub mod script;
 pub mod servo;
 pub mod session;
 pub mod shell;
+pub mod signals;

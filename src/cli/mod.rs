@@ -189,9 +189,7 @@ pub fn main() -> i32 {
             return if e.kind == ErrorKind::Usage { 2 } else { 1 };
         }
     };
-    let _ =
-        signal_hook::flag::register_conditional_shutdown(signal_hook::consts::SIGINT, 130, session.interrupt.clone());
-    let _ = signal_hook::flag::register(signal_hook::consts::SIGINT, session.interrupt.clone());
+    crate::signals::install(&session.interrupt);
     for p in &session.profiles.problems {
         eprintln!("plcsh: warning: {p}");
     }
@@ -205,6 +203,13 @@ pub fn main() -> i32 {
         crate::script::install(&mut shell);
     }
 
+    let code = run(&cli, shell, style, out);
+    // A SIGTERM or SIGHUP that stopped the work decides the status (143, 129).
+    crate::signals::exit_status().unwrap_or(code)
+}
+
+/// Runs what the flags ask for with the built shell; returns the exit status.
+fn run(cli: &Cli, mut shell: Shell, style: Style, mut out: std::io::StdoutLock<'static>) -> i32 {
     if let Some(sub) = &cli.sub {
         return match sub {
             Sub::Models => {
@@ -214,7 +219,7 @@ pub fn main() -> i32 {
             }
             Sub::Completions { shell, write } => completions::run(*shell, write.as_deref(), &mut out),
             Sub::Devices => i32::from(!shell.run_line("devices", &mut out)),
-            Sub::Sim { cmd: serve::SimCmd::Serve(args) } => serve::run(&cli, args, style, &mut out),
+            Sub::Sim { cmd: serve::SimCmd::Serve(args) } => serve::run(cli, args, style, &mut out),
             Sub::Agent(a) => agent::run(a, &mut out),
             Sub::Run(args) => run::main(&mut shell, args, style),
         };

@@ -246,10 +246,9 @@ impl Literal {
             DataType::Real => {
                 return match self.value {
                     Value::Bool(_) => Err(format!("{shown} is a bit, not a REAL")),
-                    v if !fits_f32(v.as_f64()) => Err(format!(
-                        "{shown} does not fit a REAL (32-bit IEEE float: ±{:e} at most)",
-                        f32::MAX
-                    )),
+                    v if !fits_f32(v.as_f64()) => {
+                        Err(format!("{shown} does not fit a REAL (32-bit IEEE float: ±{:e} at most)", f32::MAX))
+                    }
                     v => Ok(Value::Real(v.as_f64())),
                 };
             }
@@ -261,7 +260,10 @@ impl Literal {
             Value::Real(r) => {
                 if self.declared == Some(DataType::Real) && bits == 32 {
                     if !fits_f32(r) {
-                        return Err(format!("{shown} does not fit a REAL (32-bit IEEE float: ±{:e} at most)", f32::MAX));
+                        return Err(format!(
+                            "{shown} does not fit a REAL (32-bit IEEE float: ±{:e} at most)",
+                            f32::MAX
+                        ));
                     }
                     // REAL#1.5 into a 32-bit integer operand stores the IEEE pattern.
                     return Ok(target.decode((r as f32).to_bits()));

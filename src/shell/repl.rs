@@ -43,7 +43,9 @@ pub fn interactive(shell: &mut Shell) -> i32 {
         if let Some(h) = ed.helper_mut() {
             h.session = Some(std::mem::replace(&mut shell.session, placeholder));
         }
+        crate::signals::set_idle(true);
         let read = ed.readline(&prompt);
+        crate::signals::set_idle(false);
         if let Some(s) = ed.helper_mut().and_then(|h| h.session.take()) {
             shell.session = s;
         }
@@ -109,7 +111,10 @@ pub fn batch(shell: &mut Shell, input: &mut dyn BufRead, out: &mut dyn Write) ->
     let mut line = String::new();
     loop {
         line.clear();
-        match input.read_line(&mut line) {
+        crate::signals::set_idle(true);
+        let read = input.read_line(&mut line);
+        crate::signals::set_idle(false);
+        match read {
             Ok(0) => break,
             Ok(_) => {}
             Err(e) => {
