@@ -203,9 +203,14 @@ pub fn main() -> i32 {
         crate::script::install(&mut shell);
     }
 
+    let serving = matches!(cli.sub, Some(Sub::Sim { .. }));
     let code = run(&cli, shell, style, out);
-    // A SIGTERM or SIGHUP that stopped the work decides the status (143, 129).
-    crate::signals::exit_status().unwrap_or(code)
+    // A SIGTERM or SIGHUP that stopped the work decides the status (143, 129); for
+    // `sim serve` they are the normal way to stop it (status 0 after a clean stop).
+    match crate::signals::exit_status() {
+        Some(s) if !serving => s,
+        _ => code,
+    }
 }
 
 /// Runs what the flags ask for with the built shell; returns the exit status.
