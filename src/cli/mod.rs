@@ -50,8 +50,8 @@ pub struct Cli {
     /// Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).
     #[arg(long, value_name = "FILE", global = true)]
     pub config: Option<std::path::PathBuf>,
-    /// Simulator state file (backup area, retained ranges, clock); default in the user's data
-    /// directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE.
+    /// Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the
+    /// user's data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE.
     #[arg(long, value_name = "FILE|none", global = true)]
     pub state: Option<std::path::PathBuf>,
     /// Refuse every change to every device (writes, instructions, servo commands): inspect a live machine.
@@ -148,12 +148,13 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
     Ok(s)
 }
 
-/// The simulator state file the flags name: `--state FILE`, none for `--state none`, else
-/// the user's default file.
+/// The simulator state file the flags name: `--state FILE` (or `PLCSH_STATE`), none for
+/// `none`, else the user's default file.
 pub fn state_file(cli: &Cli) -> Option<std::path::PathBuf> {
-    match &cli.state {
+    let given = cli.state.clone().or_else(|| std::env::var_os("PLCSH_STATE").filter(|s| !s.is_empty()).map(Into::into));
+    match given {
         Some(p) if p.as_os_str() == "none" => None,
-        Some(p) => Some(p.clone()),
+        Some(p) => Some(p),
         None => crate::k2::sim::state::default_path(),
     }
 }

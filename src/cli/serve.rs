@@ -131,6 +131,12 @@ async fn serve_k2(
     cleanup: &mut Cleanup,
 ) -> Result<()> {
     let mut sim = crate::k2::sim::open(&cli.model, clock.clone())?;
+    // The served K2 keeps its backup area and retained ranges only in a file named for it
+    // (`--state FILE`): a lab's server never touches the shell's default state file.
+    if let Some(path) = cli.state.as_ref().filter(|p| p.as_os_str() != "none") {
+        sim.attach_state(path.clone())?;
+        ready.insert("state".into(), json!(path));
+    }
     ready.insert("model".into(), json!(sim.model().name));
     ready.insert("unit".into(), json!(args.unit));
     if let Some(base) = &args.agent {

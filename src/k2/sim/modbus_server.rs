@@ -108,6 +108,15 @@ fn write_words(sim: &mut K2Sim, area: Area, off: u32, words: &[u16]) {
     }
 }
 
+/// Makes a store durable before its reply goes out (`K2Sim::commit_store`); a state file
+/// that cannot be written is the device failing (exception 04), never a silent success.
+fn durable(sim: &mut K2Sim, area: Area, lo: u32, hi: u32) -> Result<(), Exception> {
+    sim.commit_store(area, lo, hi).map_err(|e| {
+        eprintln!("plcsh: {e}");
+        Exception::ServerDeviceFailure
+    })
+}
+
 /// Serves one request on the simulator (the unit id was already checked).
 fn serve(sim: &mut K2Sim, req: &Request<'_>) -> Result<Response, Exception> {
     use Table::*;
@@ -131,21 +140,25 @@ fn serve(sim: &mut K2Sim, req: &Request<'_>) -> Result<Response, Exception> {
         Request::WriteSingleCoil(a, v) => {
             let (area, off) = area_of(sim, 0x05, Coils, *a, 1)?;
             write_bits(sim, area, off, &[*v]);
+            durable(sim, area, off / 8, off / 8 + 1)?;
             Response::WriteSingleCoil(*a, *v)
         }
         Request::WriteMultipleCoils(a, bits) => {
             let (area, off) = area_of(sim, 0x0F, Coils, *a, bits.len())?;
             write_bits(sim, area, off, bits);
+            durable(sim, area, off / 8, (off + bits.len() as u32).div_ceil(8))?;
             Response::WriteMultipleCoils(*a, bits.len() as u16)
         }
         Request::WriteSingleRegister(a, w) => {
             let (area, off) = area_of(sim, 0x06, HoldingRegisters, *a, 1)?;
             write_words(sim, area, off, &[*w]);
+            durable(sim, area, 2 * off, 2 * off + 2)?;
             Response::WriteSingleRegister(*a, *w)
         }
         Request::WriteMultipleRegisters(a, words) => {
             let (area, off) = area_of(sim, 0x10, HoldingRegisters, *a, words.len())?;
             write_words(sim, area, off, words);
+            durable(sim, area, 2 * off, 2 * (off + words.len() as u32))?;
             Response::WriteMultipleRegisters(*a, words.len() as u16)
         }
         _ => return Err(Exception::IllegalFunction),
