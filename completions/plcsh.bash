@@ -639,7 +639,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__sim__subcmd__serve)
-            opts="-v -d -h --tcp --rtu-pty --rtu-tcp --unit --agent --servo-pty --servo-id --servo-loop --json --verbose --model --device --time --config --state --read-only --help"
+            opts="-v -d -h --tcp --rtu-pty --rtu-tcp --unit --agent --servo-pty --servo-id --servo-loop --max-connections --idle-timeout --strict-unit --json --verbose --model --device --time --config --state --read-only --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -670,6 +670,14 @@ _plcsh() {
                     return 0
                     ;;
                 --servo-id)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --max-connections)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --idle-timeout)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;

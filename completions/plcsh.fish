@@ -93,6 +93,8 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l agent -d 'Run the PLC-side helper program (lib/k2_agent.il) with its mailbox at this V address' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l servo-pty -d 'Serve simulated Kinco servo drives on a new pseudo-terminal; LINK becomes a symlink to it' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l servo-id -d 'Drive ids on the servo line (several drives share it)' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l max-connections -d 'Network connections served at once (per transport); more are closed on accept' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l idle-timeout -d 'Close a network connection that sends nothing for this long (`300s`, `2m`, `500ms`)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
@@ -100,6 +102,7 @@ stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l servo-loop -d 'RS232 loop mode: echo every request before the reply (connect with echo=1)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l strict-unit -d 'On Modbus TCP, answer only the --unit id (by default unit 0xFF is this device too, as libmodbus does)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'

@@ -67,6 +67,15 @@ pub struct ServeArgs {
     /// RS232 loop mode: echo every request before the reply (connect with echo=1).
     #[arg(long = "servo-loop")]
     pub servo_loop: bool,
+    /// Network connections served at once (per transport); more are closed on accept.
+    #[arg(long = "max-connections", value_name = "N", default_value_t = 64)]
+    pub max_connections: usize,
+    /// Close a network connection that sends nothing for this long (`300s`, `2m`, `500ms`).
+    #[arg(long = "idle-timeout", value_name = "DURATION", default_value = "300s")]
+    pub idle_timeout: String,
+    /// On Modbus TCP, answer only the --unit id (by default unit 0xFF is this device too, as libmodbus does).
+    #[arg(long = "strict-unit")]
+    pub strict_unit: bool,
 }
 
 impl ServeArgs {
@@ -145,15 +154,24 @@ async fn serve_k2(
         ready.insert("agent".into(), json!(format!("VB{b}")));
     }
     let service = K2Service::new(Arc::new(Mutex::new(sim)), args.unit);
+    let idle =
+        crate::core::literal::parse_duration_us(&args.idle_timeout).ok().filter(|us| *us > 0).ok_or_else(|| {
+            Error::usage(format!("--idle-timeout {} is not a duration", args.idle_timeout)).hint("e.g. 300s, 2m")
+        })?;
+    let limits = modbus_server::Limits {
+        max_connections: args.max_connections,
+        idle: std::time::Duration::from_micros(idle as u64),
+        unit_ff: !args.strict_unit,
+    };
     if let Some(a) = &args.tcp {
         let l = bind(a).await?;
         ready.insert("tcp".into(), json!(l.local_addr()?.to_string()));
-        tasks.spawn(modbus_server::serve_tcp(l, service.clone()));
+        tasks.spawn(modbus_server::serve_tcp(l, service.clone(), limits));
     }
     if let Some(a) = &args.rtu_tcp {
         let l = bind(a).await?;
         ready.insert("rtu_tcp".into(), json!(l.local_addr()?.to_string()));
-        tasks.spawn(modbus_server::serve_rtu_over_tcp(l, service.clone()));
+        tasks.spawn(modbus_server::serve_rtu_over_tcp(l, service.clone(), limits));
     }
     if let Some(link) = &args.rtu_pty {
         let pty = AsyncPty::open()?;

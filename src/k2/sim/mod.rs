@@ -16,6 +16,7 @@ pub mod pto;
 pub mod rtc;
 pub mod state;
 
+pub mod modbus_net;
 pub mod modbus_server;
 pub mod rtu_frame;
 

@@ -8,8 +8,8 @@
 //! §3.2.1) answered with *illegal data value*; a request outside one area with *illegal data
 //! address*; any other function with *illegal function*. A request for another unit id gets
 //! no reply at all, as from a real RTU slave (unit 0, broadcast, is executed without a
-//! reply). The TCP transports are tokio-modbus's server skeletons; RTU on a pty uses this
-//! crate's framing ([`super::rtu_frame`]) over a lean pty stream.
+//! reply). The transports' loops (connection limit, idle timeout, one decoder for every
+//! transport, silence-based RTU framing) are in [`super::modbus_net`].
 //!
 //! Scans: a K2 serves its Modbus slave ports between program scans. Before each request the
 //! server brings the simulation up to the clock ([`K2Sim::advance`]), which runs whatever the
@@ -17,15 +17,15 @@
 //! the PLC-side helper program once per scan (`k2::sim::agent`). So each request sees memory
 //! as a PLC would between two scans.
 
+pub use super::modbus_net::Limits;
 use crate::core::link::async_pty::AsyncPty;
 use crate::k2::modbus_map::{self, Exception, Table};
 use crate::k2::operand::Area;
-use crate::k2::sim::rtu_frame::{self, Frame};
 use crate::k2::sim::K2Sim;
 use std::future::{ready, Ready};
 use std::io;
 use std::sync::{Arc, Mutex, MutexGuard};
-use tokio::net::{TcpListener, TcpStream};
+use tokio::net::TcpListener;
 use tokio_modbus::server::Service;
 use tokio_modbus::{ExceptionCode, Request, Response, SlaveRequest};
 
@@ -180,31 +180,15 @@ impl Service for K2Service {
     }
 }
 
-fn accept(service: &K2Service, stream: TcpStream) -> io::Result<Option<(K2Service, TcpStream)>> {
-    // One request in flight, small frames: send each reply at once.
-    stream.set_nodelay(true)?;
-    Ok(Some((service.clone(), stream)))
-}
-
-/// Serves Modbus TCP on `listener` until the future is dropped.
-pub async fn serve_tcp(listener: TcpListener, service: K2Service) -> io::Result<()> {
-    let server = tokio_modbus::server::tcp::Server::new(listener);
-    let on_connected = |stream, _addr| {
-        let r = accept(&service, stream);
-        async move { r }
-    };
-    server.serve(&on_connected, |e| eprintln!("plcsh sim serve: Modbus TCP connection ended: {e}")).await
+/// Serves Modbus TCP on `listener` until the future is dropped (`super::modbus_net`).
+pub async fn serve_tcp(listener: TcpListener, service: K2Service, limits: Limits) -> io::Result<()> {
+    super::modbus_net::serve_tcp(listener, service, limits).await
 }
 
 /// Serves Modbus RTU frames over TCP (what serial-to-Ethernet gateways in transparent
 /// mode carry) on `listener` until the future is dropped.
-pub async fn serve_rtu_over_tcp(listener: TcpListener, service: K2Service) -> io::Result<()> {
-    let server = tokio_modbus::server::rtu_over_tcp::Server::new(listener);
-    let on_connected = |stream, _addr| {
-        let r = accept(&service, stream);
-        async move { r }
-    };
-    server.serve(&on_connected, |e| eprintln!("plcsh sim serve: RTU-over-TCP connection ended: {e}")).await
+pub async fn serve_rtu_over_tcp(listener: TcpListener, service: K2Service, limits: Limits) -> io::Result<()> {
+    super::modbus_net::serve_rtu_over_tcp(listener, service, limits).await
 }
 
 /// Serves Modbus RTU on a pseudo-terminal until the future is dropped (framing in
@@ -216,33 +200,11 @@ pub async fn serve_rtu(pty: &AsyncPty, service: K2Service) -> io::Result<()> {
 
 /// Serves Modbus RTU frames on any byte stream (a pty, an in-memory pipe in tests) until the
 /// stream ends.
-pub async fn serve_rtu_stream<S>(mut s: S, service: K2Service) -> io::Result<()>
+pub async fn serve_rtu_stream<S>(s: S, service: K2Service) -> io::Result<()>
 where
     S: tokio::io::AsyncRead + tokio::io::AsyncWrite + Unpin,
 {
-    use tokio::io::{AsyncReadExt, AsyncWriteExt};
-    let mut buf: Vec<u8> = Vec::with_capacity(2 * rtu_frame::MAX_FRAME);
-    let mut chunk = [0u8; 512];
-    loop {
-        let n = s.read(&mut chunk).await?;
-        if n == 0 {
-            return Err(io::Error::new(io::ErrorKind::UnexpectedEof, "the stream closed"));
-        }
-        buf.extend_from_slice(&chunk[..n]);
-        while let Some(frame) = rtu_frame::next_frame(&mut buf) {
-            let (unit, function, reply) = match frame {
-                Frame::Request { unit, request } => match service.handle(unit, &request) {
-                    Some(reply) => (unit, request.function_code().value(), reply),
-                    None => continue,
-                },
-                Frame::Refuse { unit, function, exception } if unit == service.unit() => {
-                    (unit, function, Err(exception))
-                }
-                Frame::Refuse { .. } => continue,
-            };
-            s.write_all(&rtu_frame::encode(unit, function, &reply)).await?;
-        }
-    }
+    super::modbus_net::rtu_stream(s, service, None).await
 }
 
 #[cfg(test)]

@@ -7,6 +7,17 @@
 //! know, where a K2 answers *illegal function*. Here the frame length follows from the
 //! function code for the codes the K2 implements (1–6, 15, 16); any other request ends
 //! where a valid CRC ends it, and is answered with exception 01.
+//!
+//! Resynchronisation is silence-based, as the serial line specification frames RTU
+//! (§2.5.1.1: a frame ends with 3.5 character times of silence): the server hands the
+//! buffer to [`end_of_frame`] when the line falls silent, which drops whatever could not be
+//! taken as a frame, so a bad CRC or a truncated request costs that request only. Finding
+//! where an unknown function's frame ends runs one CRC pass over the buffer (linear), so
+//! noise cannot stall the server.
+//!
+//! The PDU decoder ([`decode_pdu`]) and encoder ([`encode_pdu`]) are shared with the TCP
+//! transports (`super::modbus_net`), so every transport answers the same malformed request
+//! with the same exception.
 
 use tokio_modbus::{ExceptionCode, Request, Response};
 
@@ -69,8 +80,8 @@ pub fn next_frame(buf: &mut Vec<u8>) -> Option<Frame> {
                 }
             }
             None => {
-                // Unknown length: the frame ends where a CRC matches.
-                if let Some(n) = (4..=buf.len().min(MAX_FRAME)).find(|&n| crc_ok(&buf[..n])) {
+                // Unknown length: the frame ends where a CRC matches (one running CRC pass).
+                if let Some(n) = first_crc_end(&buf[..buf.len().min(MAX_FRAME)]) {
                     let frame: Vec<u8> = buf.drain(..n).collect();
                     return Some(Frame::Refuse {
                         unit: frame[0],
@@ -87,11 +98,58 @@ pub fn next_frame(buf: &mut Vec<u8>) -> Option<Frame> {
     }
 }
 
+/// The shortest prefix length ≥ 4 whose last two bytes are the CRC of the rest, found in
+/// one pass (the CRC of each prefix extends the previous one).
+fn first_crc_end(b: &[u8]) -> Option<usize> {
+    let mut crc = 0xFFFFu16;
+    for n in 0..b.len() {
+        // `crc` covers b[..n]; a frame of length n + 2 ends with that CRC.
+        if n >= 2 && n + 2 <= b.len() && crc == u16::from_le_bytes([b[n], b[n + 1]]) {
+            return Some(n + 2);
+        }
+        crc ^= b[n] as u16;
+        for _ in 0..8 {
+            crc = if crc & 1 != 0 { (crc >> 1) ^ 0xA001 } else { crc >> 1 };
+        }
+    }
+    None
+}
+
+/// The line fell silent: takes the frames still in `buf`, then drops what is left (a
+/// damaged or truncated request, noise), so the next request starts clean.
+pub fn end_of_frame(buf: &mut Vec<u8>) -> Vec<Frame> {
+    let mut out = Vec::new();
+    while let Some(f) = next_frame(buf) {
+        out.push(f);
+    }
+    buf.clear();
+    out
+}
+
 /// Decodes a complete, CRC-checked frame of a function code the K2 implements.
 fn decode(f: &[u8]) -> Frame {
-    let (unit, fc) = (f[0], f[1]);
-    let (a, q) = (be16(f, 2), be16(f, 4));
+    decode_pdu(f[0], &f[1..f.len() - 2])
+}
+
+/// Decodes a request PDU (function code and data) for `unit`: a request the K2 implements,
+/// or the exception a malformed one gets — 01 for a function it does not implement, 03 for
+/// a length, byte count or value that does not match the function (Modbus application
+/// protocol §6, §7).
+pub fn decode_pdu(unit: u8, pdu: &[u8]) -> Frame {
+    let fc = pdu.first().copied().unwrap_or(0);
     let bad = |e| Frame::Refuse { unit, function: fc, exception: e };
+    if !matches!(fc, 0x01..=0x06 | 0x0F | 0x10) {
+        return bad(ExceptionCode::IllegalFunction);
+    }
+    let fixed = matches!(fc, 0x01..=0x06);
+    if pdu.len() < 5 || (fixed && pdu.len() != 5) || (!fixed && pdu.len() < 6) {
+        return bad(ExceptionCode::IllegalDataValue);
+    }
+    let (a, q) = (be16(pdu, 1), be16(pdu, 3));
+    let data = if fixed { &[][..] } else { &pdu[6..] };
+    if !fixed && data.len() != pdu[5] as usize {
+        return bad(ExceptionCode::IllegalDataValue);
+    }
     let request = match fc {
         0x01 => Request::ReadCoils(a, q),
         0x02 => Request::ReadDiscreteInputs(a, q),
@@ -104,7 +162,6 @@ fn decode(f: &[u8]) -> Frame {
         },
         0x06 => Request::WriteSingleRegister(a, q),
         0x0F => {
-            let data = &f[7..f.len() - 2];
             if data.len() != (q as usize).div_ceil(8) {
                 return bad(ExceptionCode::IllegalDataValue);
             }
@@ -112,7 +169,6 @@ fn decode(f: &[u8]) -> Frame {
             Request::WriteMultipleCoils(a, bits.into())
         }
         0x10 => {
-            let data = &f[7..f.len() - 2];
             if data.len() != 2 * q as usize {
                 return bad(ExceptionCode::IllegalDataValue);
             }
@@ -126,6 +182,16 @@ fn decode(f: &[u8]) -> Frame {
 /// Encodes a reply frame (with CRC) for `unit`.
 pub fn encode(unit: u8, function: u8, reply: &Result<Response, ExceptionCode>) -> Vec<u8> {
     let mut f = vec![unit];
+    f.extend(encode_pdu(function, reply));
+    let crc = crc16(&f);
+    f.extend(crc.to_le_bytes());
+    f
+}
+
+/// Encodes a reply PDU: the function code and data, or the function code | 0x80 and the
+/// exception code.
+pub fn encode_pdu(function: u8, reply: &Result<Response, ExceptionCode>) -> Vec<u8> {
+    let mut f = Vec::new();
     let bits = |f: &mut Vec<u8>, b: &[bool]| {
         let mut packed = vec![0u8; b.len().div_ceil(8)];
         for (i, on) in b.iter().enumerate() {
@@ -161,15 +227,13 @@ pub fn encode(unit: u8, function: u8, reply: &Result<Response, ExceptionCode>) -
                     put(&mut f, *v);
                 }
                 _ => {
-                    f.truncate(1);
+                    f.clear();
                     f.push(function | 0x80);
                     f.push(u8::from(ExceptionCode::ServerDeviceFailure));
                 }
             }
         }
     }
-    let crc = crc16(&f);
-    f.extend(crc.to_le_bytes());
     f
 }
 
@@ -210,6 +274,45 @@ mod tests {
         );
         let mut bad = vec![0x01, 0x03, 0x00, 0x64, 0x00, 0x01, 0xC5, 0xD6];
         assert_eq!(next_frame(&mut bad), None, "a bad CRC gets no reply");
+        // Silence ends the damaged frame: the next request is taken whole.
+        assert!(end_of_frame(&mut bad).is_empty() && bad.is_empty());
+        let mut good = vec![0x01, 0x03, 0x00, 0x64, 0x00, 0x01, 0xC5, 0xD5];
+        assert_eq!(end_of_frame(&mut good).len(), 1);
+        // A truncated FC 16 (byte count promising more than comes) is dropped at silence too.
+        let mut cut = vec![0x01, 0x10, 0x00, 0x64, 0x00, 0x7B, 0xF6, 0x11];
+        assert!(end_of_frame(&mut cut).is_empty() && cut.is_empty());
+    }
+
+    #[test]
+    fn noise_is_scanned_in_linear_time() {
+        // 16 KB of bytes that never end a frame: one pass per offset of at most 256 bytes.
+        let mut buf: Vec<u8> = (0..16_384u32).map(|i| (i * 7 + 3) as u8 | 0x80).collect();
+        let start = std::time::Instant::now();
+        let frames = end_of_frame(&mut buf);
+        assert!(buf.is_empty());
+        assert!(
+            start.elapsed() < std::time::Duration::from_secs(2),
+            "{:?} for {} frames",
+            start.elapsed(),
+            frames.len()
+        );
+    }
+
+    #[test]
+    fn malformed_pdus_get_the_exception_the_specification_requires() {
+        let refuse = |pdu: &[u8]| match decode_pdu(1, pdu) {
+            Frame::Refuse { exception, .. } => Some(u8::from(exception)),
+            Frame::Request { .. } => None,
+        };
+        assert_eq!(refuse(&[0x2B, 0x0E, 0x01, 0x00]), Some(1), "MEI: not a K2 function");
+        assert_eq!(refuse(&[0x05, 0x00, 0x00, 0x12, 0x34]), Some(3), "FC 05 with an illegal coil value");
+        // FC 15 whose quantity (16 coils) needs 2 bytes but carries 1: exception 03, no panic.
+        assert_eq!(refuse(&[0x0F, 0x00, 0x00, 0x00, 0x10, 0x01, 0xFF]), Some(3));
+        assert_eq!(refuse(&[0x0F, 0x00, 0x00, 0x00, 0x10, 0x02, 0xFF]), Some(3), "byte count beyond the data");
+        assert_eq!(refuse(&[0x10, 0x00, 0x00, 0x00, 0x02, 0x02, 0, 0]), Some(3));
+        assert_eq!(refuse(&[0x03, 0x00, 0x00]), Some(3), "too short");
+        assert_eq!(refuse(&[]), Some(1));
+        assert_eq!(refuse(&[0x03, 0x00, 0x64, 0x00, 0x01]), None);
     }
 
     #[test]
