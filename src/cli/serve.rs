@@ -253,6 +253,9 @@ async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
     let servo_stop = Arc::new(AtomicBool::new(false));
     let _stop_servo = StopOnDrop(servo_stop.clone());
     serve_servo(args, &servo_stop, &mut ready).await?;
+    // Removed here too, not only by the servo line's thread: on SIGINT/SIGTERM the process
+    // may end before that thread notices its stop flag.
+    cleanup.links.extend(args.servo_pty.clone());
     serde_json::to_writer(&mut *out, &ready).map_err(|e| Error::io("cannot print the readiness line").cause(e))?;
     writeln!(out)?;
     out.flush()?;

@@ -119,10 +119,16 @@ fn first_crc_end(b: &[u8]) -> Option<usize> {
 /// damaged or truncated request, noise), so the next request starts clean.
 pub fn end_of_frame(buf: &mut Vec<u8>) -> Vec<Frame> {
     let mut out = Vec::new();
-    while let Some(f) = next_frame(buf) {
-        out.push(f);
+    while !buf.is_empty() {
+        match next_frame(buf) {
+            Some(f) => out.push(f),
+            // What waits for bytes that will not come is not a frame: skip its first byte
+            // (a whole request may still follow a damaged one in the same burst).
+            None => {
+                buf.remove(0);
+            }
+        }
     }
-    buf.clear();
     out
 }
 
@@ -278,9 +284,16 @@ mod tests {
         assert!(end_of_frame(&mut bad).is_empty() && bad.is_empty());
         let mut good = vec![0x01, 0x03, 0x00, 0x64, 0x00, 0x01, 0xC5, 0xD5];
         assert_eq!(end_of_frame(&mut good).len(), 1);
-        // A truncated FC 16 (byte count promising more than comes) is dropped at silence too.
+        // A truncated FC 16 (byte count promising more than comes) is dropped at silence too,
+        // and a whole request in the same burst after it is still taken.
         let mut cut = vec![0x01, 0x10, 0x00, 0x64, 0x00, 0x7B, 0xF6, 0x11];
         assert!(end_of_frame(&mut cut).is_empty() && cut.is_empty());
+        cut = vec![0x01, 0x10, 0x00, 0x64, 0x00, 0x7B, 0xF6, 0x11];
+        cut.extend([0x01, 0x03, 0x00, 0x64, 0x00, 0x01, 0xC5, 0xD5]);
+        assert_eq!(
+            end_of_frame(&mut cut),
+            vec![Frame::Request { unit: 1, request: Request::ReadHoldingRegisters(100, 1) }]
+        );
     }
 
     #[test]
