@@ -89,7 +89,7 @@ impl Guarded {
             };
             return Err(Error::usage(format!("{doing}: the session is read-only (--read-only)"))
                 .operand(name.to_string())
-                .hint("reading works; start plcsh without --read-only (or `readonly off`) to write"));
+                .hint("reading works; start plcsh without --read-only to write"));
         }
         match &self.rules {
             Some(g) => g.check_name(name, what),
@@ -157,9 +157,10 @@ pub fn k2_instruction(model: &Model, name: &str, channel: u8) -> Change {
     Change::Action { what, touches }
 }
 
-/// The change a servo object write makes.
+/// The change a servo object write makes: a write of the object (named as the drive's
+/// operands name it: `controlword`, `2FF0.09/u32`).
 pub fn servo_write(obj: ObjRef) -> Change {
-    Change::Action { what: format!("write to {}", obj.label()), touches: vec![obj.name()] }
+    Change::Write(obj.to_operand())
 }
 
 impl Device for Guarded {
