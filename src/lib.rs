@@ -5,6 +5,7 @@
 
 pub mod cli;
 pub mod core;
+pub mod fuzzing;
 pub mod guard;
 pub mod k2;
 pub mod output;
