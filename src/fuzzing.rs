@@ -15,9 +15,12 @@ use crate::k2::space::K2Space;
 use crate::k2::Event;
 use std::path::Path;
 
+/// A target's entry point.
+pub type Target = fn(&[u8]);
+
 /// Every target: name (the directory under `fuzz/corpus/` and `fuzz/regressions/`, and the
 /// cargo-fuzz target) and entry point.
-pub const TARGETS: &[(&str, fn(&[u8]))] = &[
+pub const TARGETS: &[(&str, Target)] = &[
     ("operand", operand),
     ("literal", literal),
     ("lexer", lexer),
