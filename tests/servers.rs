@@ -258,3 +258,28 @@ fn the_servo_pty_link_is_removed_on_sigint_and_sigterm() {
         assert!(!l.exists(), "{sig}: the link is removed");
     }
 }
+
+#[test]
+fn noise_on_the_pty_does_not_hold_up_tcp() {
+    let pty = link("noise");
+    let served = serve(&["--tcp", "0", "--rtu-pty", pty.to_str().unwrap(), "--state", "none"]);
+    let mut p = open_pty(&pty);
+    let mut t = connect(served.ready["tcp"].as_str().unwrap());
+    t.write_all(&mbap(1, 1, READ_VW0)).unwrap();
+    let before = Instant::now();
+    tcp_reply(&mut t);
+    let quiet = before.elapsed();
+    // 16 KB of bytes that never form a frame, then a TCP request while the server chews on them.
+    let noise: Vec<u8> = (0..16_384u32).map(|i| (i.wrapping_mul(2_654_435_761) >> 13) as u8 | 0x80).collect();
+    p.write_all(&noise).unwrap();
+    let start = Instant::now();
+    t.write_all(&mbap(2, 1, READ_VW0)).unwrap();
+    assert_eq!(tcp_reply(&mut t).0, 2);
+    let took = start.elapsed();
+    eprintln!("TCP request during pty noise: {took:?} ({quiet:?} without)");
+    assert!(took < Duration::from_millis(300), "a TCP request took {took:?} during pty noise ({quiet:?} without)");
+    // And the pty serves again after its silence.
+    std::thread::sleep(Duration::from_millis(60));
+    p.write_all(&rtu(1, READ_VW0)).unwrap();
+    assert_eq!(&rtu_reply(&mut p, 7)[..5], &[1, 3, 2, 0, 0]);
+}

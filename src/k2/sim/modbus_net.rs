@@ -38,6 +38,9 @@ use tokio_modbus::ExceptionCode;
 /// a frame in one piece, so a margin for a loaded host).
 pub const SILENCE: Duration = Duration::from_millis(15);
 
+/// How long a reply may wait for a client that does not read before it is dropped.
+pub const WRITE_STALL: Duration = Duration::from_secs(2);
+
 /// What a served transport tolerates.
 #[derive(Clone, Copy, Debug)]
 pub struct Limits {
@@ -148,7 +151,11 @@ async fn tcp_conn(mut s: TcpStream, service: K2Service, limits: Limits) -> io::R
             out.extend_from_slice(&(reply.len() as u16 + 1).to_be_bytes());
             out.push(unit);
             out.extend(reply);
-            s.write_all(&out).await?;
+            // A client that stops reading is closed once a reply has waited too long.
+            match tokio::time::timeout(WRITE_STALL, s.write_all(&out)).await {
+                Ok(r) => r?,
+                Err(_) => return Ok(()),
+            }
         }
     }
 }
@@ -161,26 +168,36 @@ where
 {
     let mut buf: Vec<u8> = Vec::with_capacity(2 * rtu_frame::MAX_FRAME);
     let mut chunk = [0u8; 512];
+    // After bytes that are no frame, everything up to the next silence is dropped.
+    let mut discarding = false;
     loop {
-        // Quiet line with bytes pending: the frame has ended.
-        let wait = if buf.is_empty() { idle } else { Some(SILENCE) };
+        // Quiet line with bytes pending (or being discarded): the frame has ended.
+        let wait = if buf.is_empty() && !discarding { idle } else { Some(SILENCE) };
         let read = match wait {
             Some(w) => tokio::time::timeout(w, s.read(&mut chunk)).await,
             None => Ok(s.read(&mut chunk).await),
         };
         let frames = match read {
-            Err(_) if buf.is_empty() => return Ok(()),
-            Err(_) => rtu_frame::end_of_frame(&mut buf),
+            Err(_) if buf.is_empty() && !discarding => return Ok(()),
+            Err(_) => {
+                discarding = false;
+                rtu_frame::end_of_frame(&mut buf)
+            }
             Ok(Ok(0)) => return Err(io::Error::new(io::ErrorKind::UnexpectedEof, "the stream closed")),
+            Ok(Ok(_)) if discarding => Vec::new(),
             Ok(Ok(n)) => {
                 buf.extend_from_slice(&chunk[..n]);
                 let mut out = Vec::new();
-                while let Some(f) = rtu_frame::next_frame(&mut buf) {
-                    out.push(f);
-                }
-                if buf.len() > 4 * rtu_frame::MAX_FRAME {
-                    // A flood without silence: keep the newest bytes only.
-                    buf.drain(..buf.len() - rtu_frame::MAX_FRAME);
+                loop {
+                    match rtu_frame::take_frame(&mut buf) {
+                        rtu_frame::Take::Frame(f) => out.push(f),
+                        rtu_frame::Take::More => break,
+                        rtu_frame::Take::Garbage => {
+                            buf.clear();
+                            discarding = true;
+                            break;
+                        }
+                    }
                 }
                 out
             }
@@ -194,7 +211,11 @@ where
                 let mut out = vec![unit];
                 out.extend(pdu);
                 out.extend(rtu_frame::crc16(&out).to_le_bytes());
-                s.write_all(&out).await?;
+                // A client that stops reading fills the line; its replies are dropped after
+                // a while rather than holding this transport (or spinning on it).
+                if tokio::time::timeout(WRITE_STALL, s.write_all(&out)).await.is_err() {
+                    buf.clear();
+                }
             }
         }
     }

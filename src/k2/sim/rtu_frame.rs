@@ -115,6 +115,50 @@ fn first_crc_end(b: &[u8]) -> Option<usize> {
     None
 }
 
+/// What the bytes at the front of a buffer are, for a receiver framing by silence.
+#[derive(Debug, PartialEq)]
+pub enum Take {
+    /// A whole frame (taken off the buffer).
+    Frame(Frame),
+    /// The start of a frame: more bytes are needed.
+    More,
+    /// Not a frame (a bad CRC, no CRC within the longest frame): discard until silence.
+    Garbage,
+}
+
+/// Takes the frame at the very front of `buf`, without sliding through it: with
+/// silence-based framing a frame starts where the line fell quiet, so the work per byte
+/// received is bounded and noise costs no more than its length.
+pub fn take_frame(buf: &mut Vec<u8>) -> Take {
+    if buf.len() < 4 {
+        return Take::More;
+    }
+    let fc = buf[1];
+    let len = match fc {
+        0x01..=0x06 => Some(8),
+        0x0F | 0x10 if buf.len() >= 7 => Some(9 + buf[6] as usize),
+        0x0F | 0x10 => return Take::More,
+        _ => None,
+    };
+    match len {
+        Some(n) if n > MAX_FRAME => Take::Garbage,
+        Some(n) if buf.len() < n => Take::More,
+        Some(n) if crc_ok(&buf[..n]) => {
+            let frame: Vec<u8> = buf.drain(..n).collect();
+            Take::Frame(decode(&frame))
+        }
+        Some(_) => Take::Garbage,
+        None => match first_crc_end(&buf[..buf.len().min(MAX_FRAME)]) {
+            Some(n) => {
+                let frame: Vec<u8> = buf.drain(..n).collect();
+                Take::Frame(Frame::Refuse { unit: frame[0], function: fc, exception: ExceptionCode::IllegalFunction })
+            }
+            None if buf.len() >= MAX_FRAME => Take::Garbage,
+            None => Take::More,
+        },
+    }
+}
+
 /// The line fell silent: takes the frames still in `buf`, then drops what is left (a
 /// damaged or truncated request, noise), so the next request starts clean.
 pub fn end_of_frame(buf: &mut Vec<u8>) -> Vec<Frame> {
