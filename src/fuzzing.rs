@@ -169,15 +169,16 @@ fn service() -> crate::k2::sim::modbus_server::K2Service {
 pub fn modbus_rtu(data: &[u8]) {
     use crate::k2::sim::rtu_frame::{self, Frame};
     let svc = service();
-    let mut buf = Vec::new();
+    // The server's receiver, with the line falling silent after every fourth chunk.
+    let mut rx = rtu_frame::Receiver::default();
     let mut frames = Vec::new();
-    for chunk in data.chunks(37) {
-        buf.extend_from_slice(chunk);
-        while let Some(f) = rtu_frame::next_frame(&mut buf) {
-            frames.push(f);
+    for (i, chunk) in data.chunks(37).enumerate() {
+        frames.extend(rx.bytes(chunk));
+        if i % 4 == 3 {
+            frames.extend(rx.silence());
         }
     }
-    frames.extend(rtu_frame::end_of_frame(&mut buf));
+    frames.extend(rx.silence());
     for f in frames {
         if let Frame::Request { unit, request } = f {
             if let Some(r) = svc.handle(unit, &request) {

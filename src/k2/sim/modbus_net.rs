@@ -166,41 +166,20 @@ pub async fn rtu_stream<S>(mut s: S, service: K2Service, idle: Option<Duration>)
 where
     S: AsyncRead + AsyncWrite + Unpin,
 {
-    let mut buf: Vec<u8> = Vec::with_capacity(2 * rtu_frame::MAX_FRAME);
+    let mut rx = rtu_frame::Receiver::default();
     let mut chunk = [0u8; 512];
-    // After bytes that are no frame, everything up to the next silence is dropped.
-    let mut discarding = false;
     loop {
         // Quiet line with bytes pending (or being discarded): the frame has ended.
-        let wait = if buf.is_empty() && !discarding { idle } else { Some(SILENCE) };
+        let wait = if rx.pending() { Some(SILENCE) } else { idle };
         let read = match wait {
             Some(w) => tokio::time::timeout(w, s.read(&mut chunk)).await,
             None => Ok(s.read(&mut chunk).await),
         };
         let frames = match read {
-            Err(_) if buf.is_empty() && !discarding => return Ok(()),
-            Err(_) => {
-                discarding = false;
-                rtu_frame::end_of_frame(&mut buf)
-            }
+            Err(_) if !rx.pending() => return Ok(()),
+            Err(_) => rx.silence(),
             Ok(Ok(0)) => return Err(io::Error::new(io::ErrorKind::UnexpectedEof, "the stream closed")),
-            Ok(Ok(_)) if discarding => Vec::new(),
-            Ok(Ok(n)) => {
-                buf.extend_from_slice(&chunk[..n]);
-                let mut out = Vec::new();
-                loop {
-                    match rtu_frame::take_frame(&mut buf) {
-                        rtu_frame::Take::Frame(f) => out.push(f),
-                        rtu_frame::Take::More => break,
-                        rtu_frame::Take::Garbage => {
-                            buf.clear();
-                            discarding = true;
-                            break;
-                        }
-                    }
-                }
-                out
-            }
+            Ok(Ok(n)) => rx.bytes(&chunk[..n]),
             Ok(Err(e)) => return Err(e),
         };
         for f in frames {
@@ -213,9 +192,7 @@ where
                 out.extend(rtu_frame::crc16(&out).to_le_bytes());
                 // A client that stops reading fills the line; its replies are dropped after
                 // a while rather than holding this transport (or spinning on it).
-                if tokio::time::timeout(WRITE_STALL, s.write_all(&out)).await.is_err() {
-                    buf.clear();
-                }
+                let _ = tokio::time::timeout(WRITE_STALL, s.write_all(&out)).await;
             }
         }
     }

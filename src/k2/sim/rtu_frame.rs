@@ -159,8 +159,53 @@ pub fn take_frame(buf: &mut Vec<u8>) -> Take {
     }
 }
 
+/// A receiver framing by silence (module doc): bytes go in as they arrive, frames come out;
+/// after bytes that are no frame, everything up to the next silence is dropped.
+#[derive(Default)]
+pub struct Receiver {
+    buf: Vec<u8>,
+    discarding: bool,
+}
+
+impl Receiver {
+    /// True while bytes wait for the rest of their frame (or are being discarded), i.e.
+    /// while silence on the line means something.
+    pub fn pending(&self) -> bool {
+        !self.buf.is_empty() || self.discarding
+    }
+
+    /// Bytes arrived; returns the frames they complete.
+    pub fn bytes(&mut self, data: &[u8]) -> Vec<Frame> {
+        let mut out = Vec::new();
+        if self.discarding {
+            return out;
+        }
+        self.buf.extend_from_slice(data);
+        loop {
+            match take_frame(&mut self.buf) {
+                Take::Frame(f) => out.push(f),
+                Take::More => break,
+                Take::Garbage => {
+                    self.buf.clear();
+                    self.discarding = true;
+                    break;
+                }
+            }
+        }
+        out
+    }
+
+    /// The line fell silent: the frames still buffered, and a clean start.
+    pub fn silence(&mut self) -> Vec<Frame> {
+        self.discarding = false;
+        end_of_frame(&mut self.buf)
+    }
+}
+
 /// The line fell silent: takes the frames still in `buf`, then drops what is left (a
-/// damaged or truncated request, noise), so the next request starts clean.
+/// damaged or truncated request, noise), so the next request starts clean. It slides
+/// through `buf` byte by byte, so it is meant for what [`Receiver`] holds at a silence (at
+/// most one frame's worth, under 270 bytes), not for arbitrary streams.
 pub fn end_of_frame(buf: &mut Vec<u8>) -> Vec<Frame> {
     let mut out = Vec::new();
     while !buf.is_empty() {
