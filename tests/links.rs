@@ -33,7 +33,10 @@ fn an_rtu_port_that_disappears_is_reported_and_reopened_when_back() {
     drop(served);
     let e = get(&mut s, "VW0").unwrap_err();
     let text = format!("{} {}", e.message, e.hint.clone().unwrap_or_default());
-    assert!(text.contains(&l.display().to_string()), "the message names the port: {text}");
+    assert!(
+        text.contains(&l.display().to_string()) && text.contains("opens it again"),
+        "the message names the port: {text}"
+    );
     let _back = serve(&["--rtu-pty", l.to_str().unwrap(), "--state", "none"]);
     assert_eq!(get(&mut s, "VW0").unwrap(), 0, "the port is reopened: a fresh simulator answers");
 }
