@@ -7,7 +7,7 @@
 //! url = "rtu:/dev/ttyUSB0?baud=115200&unit=3"
 //! model = "K209EA-50DX"          # any other key becomes a URL parameter
 //! read_only = true               # refuse every write
-//! allow = ["VW100..VW120", "M0.0"]   # or: refuse writes outside these operands
+//! allow = ["VW100..VW120", "M0.0"]   # or: refuse writes outside these operands ("clock": rtc set)
 //! [devices.press1.options]        # passed to Device::set_option after opening
 //! word_order = "swapped"
 //! ```
@@ -283,6 +283,11 @@ impl Guard {
             Some(items) => {
                 let mut set = HashSet::new();
                 for item in items {
+                    // `clock`: the real-time clock (`rtc set|sync`), which is no operand.
+                    if item.trim() == crate::guard::CLOCK {
+                        set.insert(crate::guard::CLOCK.to_string());
+                        continue;
+                    }
                     let ops = space.parse(item).map_err(|e| {
                         Error::usage(format!("profile `{}` ({}): allow item `{item}`: {}", p.name, p.origin, e.message))
                             .hint("allow items are operands or ranges of this device, e.g. \"VW100..VW120\"")

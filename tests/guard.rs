@@ -250,6 +250,14 @@ fn walk(url: &str, family: &str, clock: impl Fn() -> Clock) {
             assert_ne!(state(&mut sh), before, "the one allowed operand is written");
         }
     }
+    if family == "k2" {
+        // The clock is allowed by name.
+        let text = format!("[devices.clock]\nurl = \"{url}\"\nallow = [\"clock\"]\n");
+        let p = Profiles::parse(&text, &dir.join("clock.toml"));
+        let mut sh = shell(clock(), &p, name, "clock");
+        ok(&mut sh, "rtc set 2001-01-01T00:00:00");
+        assert!(refusal(&mut sh, "set VW0=1").unwrap().contains("allow list"));
+    }
 }
 
 #[test]
