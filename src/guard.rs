@@ -311,3 +311,42 @@ impl ServoOps for Guarded {
         self.check_changes(changes)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::k2::catalog;
+
+    fn touches(c: Change) -> Vec<String> {
+        match c {
+            Change::Action { touches, .. } => touches,
+            Change::Write(_) => Vec::new(),
+        }
+    }
+
+    #[test]
+    fn instructions_change_their_channels_registers_and_outputs() {
+        let m = catalog::find("K205-16DT").unwrap();
+        assert_eq!(touches(k2_instruction(m, "PLS", 0)), ["Q0.0", "SMB66"]);
+        assert_eq!(touches(k2_instruction(m, "PSTOP", 1)), ["Q0.1", "SMB76", "SMB231"]);
+        assert_eq!(touches(k2_instruction(m, "HDEF", 0)), ["SMB37"]);
+        assert_eq!(touches(k2_instruction(m, "HSC", 0)), ["SMD38", "SMB36"]);
+        assert_eq!(touches(k2_instruction(m, "SET_RTC", 0)), [CLOCK]);
+    }
+
+    #[test]
+    fn an_unrestricted_guard_passes_everything_and_the_session_switch_stops_it() {
+        let flag = Arc::new(AtomicBool::new(false));
+        let sim = crate::k2::sim::open("K205-16DT", crate::core::Clock::stepped()).unwrap();
+        let mut g = Guarded::new(Box::new(sim), None, flag.clone());
+        let op = g.operands().parse("VW0").unwrap()[0];
+        g.write(&[(op, Value::Int(5))]).unwrap();
+        assert!(g.family_ops().is_none(), "a K2 has no generic family hook");
+        flag.store(true, Ordering::Relaxed);
+        let e = g.write(&[(op, Value::Int(6))]).unwrap_err();
+        assert!(e.message.contains("--read-only"), "{e}");
+        assert!(g.family_ops_for(&[]).unwrap().is_none(), "a read-only use is let through");
+        assert!(g.as_k2().unwrap().pls(0).unwrap_err().message.contains("PLS 0"));
+        assert_eq!(g.read(&[op]).unwrap(), vec![Value::Int(5)]);
+    }
+}
