@@ -122,7 +122,7 @@ _plcsh() {
 
     case "${cmd}" in
         plcsh)
-            opts="-c -v -d -h -V --command --json --verbose --model --device --time --config --state --record --bench --help --version models devices completions sim agent run record replay help"
+            opts="-c -v -d -h -V --command --json --verbose --model --device --time --config --state --record --bench --read-only --help --version models devices completions sim agent run record replay help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -176,7 +176,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__agent)
-            opts="-v -d -h --json --verbose --model --device --time --config --state --record --bench --help il help"
+            opts="-v -d -h --json --verbose --model --device --time --config --state --record --bench --read-only --help il help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -264,7 +264,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__agent__subcmd__il)
-            opts="-v -d -h --base --json --verbose --model --device --time --config --state --record --bench --help"
+            opts="-v -d -h --base --json --verbose --model --device --time --config --state --record --bench --read-only --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -314,7 +314,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__completions)
-            opts="-v -d -h --write --json --verbose --model --device --time --config --state --record --bench --help bash elvish fish powershell zsh"
+            opts="-v -d -h --write --json --verbose --model --device --time --config --state --record --bench --read-only --help bash elvish fish powershell zsh"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -364,7 +364,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__devices)
-            opts="-v -d -h --json --verbose --model --device --time --config --state --record --bench --help"
+            opts="-v -d -h --json --verbose --model --device --time --config --state --record --bench --read-only --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -592,7 +592,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__models)
-            opts="-v -d -h --json --verbose --model --device --time --config --state --record --bench --help"
+            opts="-v -d -h --json --verbose --model --device --time --config --state --record --bench --read-only --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -638,7 +638,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__record)
-            opts="-v -d -h --json --verbose --model --device --time --config --state --record --bench --help show help"
+            opts="-v -d -h --json --verbose --model --device --time --config --state --record --bench --read-only --help show help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -726,7 +726,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__record__subcmd__show)
-            opts="-v -d -h --json --verbose --model --device --time --config --state --record --bench --help"
+            opts="-v -d -h --json --verbose --model --device --time --config --state --record --bench --read-only --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -772,7 +772,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__replay)
-            opts="-v -d -h --sim-model --snapshot --json --verbose --model --device --time --config --state --record --bench --help"
+            opts="-v -d -h --sim-model --snapshot --json --verbose --model --device --time --config --state --record --bench --read-only --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -826,7 +826,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__run)
-            opts="-v -d -h --sandbox --write-dir --json --verbose --model --device --time --config --state --record --bench --help"
+            opts="-v -d -h --sandbox --write-dir --json --verbose --model --device --time --config --state --record --bench --read-only --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -876,7 +876,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__sim)
-            opts="-v -d -h --json --verbose --model --device --time --config --state --record --bench --help serve help"
+            opts="-v -d -h --json --verbose --model --device --time --config --state --record --bench --read-only --help serve help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -964,7 +964,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__sim__subcmd__serve)
-            opts="-v -d -h --tcp --rtu-pty --rtu-tcp --unit --agent --program --servo-pty --servo-id --servo-loop --servo-baud --servo-latency --servo-instant --servo-strict --fx-pty --fx-link-pty --fx-model --fx-station --umpk-pty --umpk-model --umpk-status-bits --umpk-flash-fail --umpk-state --umpk-program --fault --json --verbose --model --device --time --config --state --record --bench --help"
+            opts="-v -d -h --tcp --rtu-pty --rtu-tcp --unit --agent --program --servo-pty --servo-id --servo-loop --servo-baud --servo-latency --servo-instant --servo-strict --fx-pty --fx-link-pty --fx-model --fx-station --umpk-pty --umpk-model --umpk-status-bits --umpk-flash-fail --umpk-state --umpk-program --fault --max-connections --idle-timeout --strict-unit --json --verbose --model --device --time --config --state --record --bench --read-only --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1051,6 +1051,14 @@ _plcsh() {
                     return 0
                     ;;
                 --fault)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --max-connections)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --idle-timeout)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;

@@ -1,7 +1,8 @@
 -- Save and restore the E2PROM backup area (VB3648–VB3902 by default, k2.md §7): write a
 -- pattern, dump the area to a file, check the file, scribble over the area, restore it,
 -- compare.
--- Run: plcsh --time stepped run scripts/eeprom_backup.lua [FILE]
+-- Run: plcsh --state none --time stepped run scripts/eeprom_backup.lua [FILE]   (--state none: your own
+-- state file, with its backup area and clock, stays untouched)
 
 local plc = plcsh.device("plc")
 local file = arg[1] or os.tmpname()

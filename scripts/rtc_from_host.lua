@@ -1,7 +1,8 @@
 -- Set the PLC's real-time clock from the host (`rtc sync`), check it, then set it to a
 -- fixed time and watch it advance with machine time (k2.md §7). The `rtc` outcome carries
 -- the time as text (`rtc`), the weekday (1 = Sunday) and the 8 BCD bytes READ_RTC returns.
--- Run: plcsh --time stepped run scripts/rtc_from_host.lua
+-- Run: plcsh --state none --time stepped run scripts/rtc_from_host.lua   (--state none: your own state
+-- file, with its clock, stays untouched)
 
 local plc = plcsh.device("plc")
 

@@ -6,7 +6,9 @@
 pub mod cli;
 pub mod core;
 pub mod engine;
+pub mod fuzzing;
 pub mod fx;
+pub mod guard;
 pub mod k2;
 pub mod output;
 pub mod plot;
@@ -16,6 +18,7 @@ pub mod script;
 pub mod servo;
 pub mod session;
 pub mod shell;
+pub mod signals;
 pub mod snapshot;
 pub mod umpk;
 pub mod wiring;

@@ -61,6 +61,21 @@ impl Outcome {
         self.view = View::Quiet;
         self
     }
+    /// Marks an outcome that moved or changed something on device `name` with whether
+    /// the device is simulated: the text starts `plc(sim): ` or `press1(real): ` and the
+    /// JSON carries `simulated`, so a line never leaves doubt about where it acted.
+    pub fn acted_on(mut self, name: &str, simulated: bool) -> Outcome {
+        let mark = format!("{name}({}): ", if simulated { "sim" } else { "real" });
+        if let View::Text(t) = &mut self.view {
+            t.insert_str(0, &mark);
+        }
+        if let Some(m) = &mut self.message {
+            m.insert_str(0, &mark);
+        }
+        self.device = Some(name.to_string());
+        self.data.insert("simulated".into(), serde_json::json!(simulated));
+        self
+    }
     pub fn text(mut self, t: impl Into<String>) -> Outcome {
         let t = t.into();
         self.message = Some(t.clone());

@@ -7,7 +7,7 @@
 //! url = "rtu:/dev/ttyUSB0?baud=115200&unit=3"
 //! model = "K209EA-50DX"          # any other key becomes a URL parameter
 //! read_only = true               # refuse every write
-//! allow = ["VW100..VW120", "M0.0"]   # or: refuse writes outside these operands
+//! allow = ["VW100..VW120", "M0.0"]   # or: refuse writes outside these operands ("clock": rtc set)
 //! [devices.press1.options]        # passed to Device::set_option after opening
 //! word_order = "swapped"
 //! ```
@@ -315,9 +315,7 @@ pub fn open(s: &mut crate::session::Session, name: &str, profile: &str) -> Resul
         device.set_option(k, v).map_err(|e| e.device(name).cause(&from))?;
     }
     let guard = Guard::build(&p, device.operands()).map_err(|e| e.device(name))?;
-    s.add(name, &p.url, device);
-    let i = s.index(name)?;
-    s.entry(i).guard = guard;
+    s.add_guarded(name, &p.url, device, guard);
     Ok(())
 }
 
@@ -348,6 +346,11 @@ impl Guard {
             Some(items) => {
                 let mut set = HashSet::new();
                 for item in items {
+                    // `clock`: the real-time clock (`rtc set|sync`), which is no operand.
+                    if item.trim() == crate::guard::CLOCK {
+                        set.insert(crate::guard::CLOCK.to_string());
+                        continue;
+                    }
                     let ops = space.parse(item).map_err(|e| {
                         Error::usage(format!("profile `{}` ({}): allow item `{item}`: {}", p.name, p.origin, e.message))
                             .hint("allow items are operands or ranges of this device, e.g. \"VW100..VW120\"")
@@ -362,24 +365,31 @@ impl Guard {
 
     /// Refuses a write the profile does not allow, naming the profile and the rule.
     pub fn check(&self, space: &dyn OperandSpace, op: &Operand) -> Result<()> {
-        let name = space.name(op);
+        self.check_name(&space.name(op), None)
+    }
+
+    /// Refuses a change of the operand named `name` (a canonical name such as `VW100`,
+    /// `Q0.0`, `controlword`, or `clock`) that the profile does not allow; `what` names
+    /// the instruction or action when the change is not a plain write (`PLS 0`).
+    pub fn check_name(&self, name: &str, what: Option<&str>) -> Result<()> {
+        let doing = match what {
+            Some(w) => format!("{w} refused (it changes {name})"),
+            None => "write refused".to_string(),
+        };
         if self.read_only {
-            return Err(Error::usage(format!(
-                "write refused: profile `{}` is read_only ({})",
-                self.profile, self.origin
-            ))
-            .operand(name)
-            .hint("reading works; to write, remove `read_only = true` from the profile"));
+            return Err(Error::usage(format!("{doing}: profile `{}` is read_only ({})", self.profile, self.origin))
+                .operand(name.to_string())
+                .hint("reading works; to write, remove `read_only = true` from the profile"));
         }
         if let Some((set, items)) = &self.allow {
-            if !set.contains(bare(&name)) {
+            if !set.contains(bare(name)) {
                 return Err(Error::usage(format!(
-                    "write refused: {name} is not in profile `{}`'s allow list [{}] ({})",
+                    "{doing}: {name} is not in profile `{}`'s allow list [{}] ({})",
                     self.profile,
                     items.join(", "),
                     self.origin
                 ))
-                .operand(name)
+                .operand(name.to_string())
                 .hint("writes are allowed only to the operands listed, with the same size"));
             }
         }

@@ -28,7 +28,8 @@ pub struct Entry {
     pub name: String,
     pub url: String,
     pub device: Box<dyn Device>,
-    /// Write rules from the device's profile (`read_only`, `allow`), checked before every write.
+    /// Write rules from the device's profile (`read_only`, `allow`), for `devices`; the
+    /// device itself sits in a [`crate::guard::Guarded`] that enforces them.
     pub guard: Option<crate::profile::Guard>,
 }
 
@@ -55,6 +56,8 @@ pub struct Session {
     pub interrupt: Arc<AtomicBool>,
     /// Device profiles (`connect press1`), from the profile file.
     pub profiles: crate::profile::Profiles,
+    /// The session-wide read-only switch (`--read-only`), shared by every device's guard.
+    read_only: Arc<AtomicBool>,
 }
 
 /// URL schemes with what they open, for completion and hints. Keep in step with [`open_url`]
@@ -109,6 +112,7 @@ impl Session {
             clock,
             interrupt: Arc::new(AtomicBool::new(false)),
             profiles: Default::default(),
+            read_only: Arc::new(AtomicBool::new(false)),
         }
     }
 
@@ -130,6 +134,16 @@ impl Session {
         self.clock.sleep(d, &self.interrupt)
     }
 
+    /// Turns the session-wide read-only switch on or off: every device refuses every
+    /// change (writes, instructions, servo commands) while it is on.
+    pub fn set_read_only(&self, on: bool) {
+        self.read_only.store(on, Ordering::Relaxed);
+    }
+
+    pub fn read_only(&self) -> bool {
+        self.read_only.load(Ordering::Relaxed)
+    }
+
     /// Opens `url` under `name` (replacing a device of that name) and makes it current if
     /// it is the first. A `url` without a scheme is a profile name (`crate::profile`).
     pub fn open(&mut self, name: &str, url: &str) -> Result<()> {
@@ -145,9 +159,23 @@ impl Session {
         Ok(())
     }
 
-    /// Adds an already-open device.
+    /// Adds an already-open device (behind the session's write guard).
     pub fn add(&mut self, name: &str, url: &str, device: Box<dyn Device>) {
-        let entry = Entry { name: name.to_string(), url: url.to_string(), device, guard: None };
+        self.add_guarded(name, url, device, None);
+    }
+
+    /// Adds an already-open device with a profile's write rules. Every device is wrapped
+    /// in a [`crate::guard::Guarded`], so the session-wide read-only switch holds for it
+    /// too, whether or not it has rules of its own.
+    pub fn add_guarded(
+        &mut self,
+        name: &str,
+        url: &str,
+        device: Box<dyn Device>,
+        rules: Option<crate::profile::Guard>,
+    ) {
+        let device = Box::new(crate::guard::Guarded::new(device, rules.clone(), self.read_only.clone()));
+        let entry = Entry { name: name.to_string(), url: url.to_string(), device, guard: rules };
         match self.devices.iter().position(|e| e.name == name) {
             Some(i) => self.devices[i] = entry,
             None => self.devices.push(entry),
@@ -220,13 +248,15 @@ impl Session {
         Ok(Target { device, ops })
     }
 
-    /// Refuses a write the device's profile does not allow (before anything is sent).
+    /// Refuses a write the device's rules do not allow (before anything is sent).
     pub fn check_write(&self, device: usize, op: &Operand) -> Result<()> {
         let e = &self.devices[device];
-        match &e.guard {
-            Some(g) => g.check(e.device.operands(), op).map_err(|err| err.device(&e.name)),
-            None => Ok(()),
-        }
+        e.device.permits(&[crate::core::device::Change::Write(*op)]).map_err(|err| err.device(&e.name))
+    }
+
+    /// Is device `i` a simulator?
+    pub fn simulated(&self, i: usize) -> bool {
+        self.devices[i].device.info().simulated
     }
 
     pub fn name_of(&self, device: usize, op: &Operand) -> String {

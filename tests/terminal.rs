@@ -102,7 +102,7 @@ fn completion_hints_watch_and_plot_in_a_real_terminal() {
     let home = std::env::temp_dir().join(format!("plcsh-tmux-home-{}", std::process::id()));
     std::fs::create_dir_all(&home).unwrap();
     let Some(t) = Tmux::start(&home) else { return };
-    t.wait_for("the prompt", |s| s.contains("plc>"));
+    t.wait_for("the prompt", |s| s.contains("plc(sim)>"));
 
     // Tab completion of an SM register: SMB6<Tab><Tab> lists the candidates with their meaning.
     t.literal("get SMB6");
@@ -112,13 +112,15 @@ fn completion_hints_watch_and_plot_in_a_real_terminal() {
     assert!(s.lines().any(|l| l.contains("SMB67") && l.contains("PTO0/PWM0 (Q0.0) control byte")), "{s}");
     // Completing further: SMB67 is now unique with "7"; Tab leaves "get SMB67" and the hint shows its meaning.
     t.literal("7");
-    t.wait_for("the inline hint", |s| s.lines().any(|l| l.contains("plc> get SMB67") && l.contains("— PTO0/PWM0")));
+    t.wait_for("the inline hint", |s| {
+        s.lines().any(|l| l.contains("plc(sim)> get SMB67") && l.contains("— PTO0/PWM0"))
+    });
     t.keys(&["C-u"]);
 
     // watch redraws in place: after 6 samples the screen holds exactly one table.
     t.literal("watch SM0.5 VW0 every=200ms count=6");
     t.keys(&["Enter"]);
-    let s = t.wait_for("the sixth sample", |s| s.contains("sample 6 ") && s.matches("plc>").count() >= 2);
+    let s = t.wait_for("the sixth sample", |s| s.contains("sample 6 ") && s.matches("plc(sim)>").count() >= 2);
     assert_eq!(s.matches("Ctrl-C stops").count(), 1, "one table, redrawn in place:\n{s}");
     assert_eq!(s.matches("  SM0.5").count(), 1, "{s}");
 

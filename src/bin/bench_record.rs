@@ -28,7 +28,7 @@ fn main() {
         rt.block_on(async move {
             let l = tokio::net::TcpListener::bind("127.0.0.1:0").await.unwrap();
             tx.send(l.local_addr().unwrap()).unwrap();
-            serve_tcp(l, service).await.unwrap();
+            serve_tcp(l, service, Default::default()).await.unwrap();
         })
     });
     let addr = rx.recv().unwrap();

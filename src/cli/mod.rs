@@ -50,8 +50,9 @@ pub struct Cli {
     /// Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).
     #[arg(long, value_name = "FILE", global = true)]
     pub config: Option<std::path::PathBuf>,
-    /// Simulator state file (backup area, retained ranges, clock); default in the user's data directory.
-    #[arg(long, value_name = "FILE", global = true)]
+    /// Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the
+    /// user's data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE.
+    #[arg(long, value_name = "FILE|none", global = true)]
     pub state: Option<std::path::PathBuf>,
     /// Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`).
     #[arg(long, value_name = "FILE", global = true)]
@@ -59,6 +60,9 @@ pub struct Cli {
     /// Open a simulated machine described by a bench file (devices, wiring, initial values).
     #[arg(long, value_name = "FILE", global = true)]
     pub bench: Option<std::path::PathBuf>,
+    /// Refuse every change to every device (writes, instructions, servo commands): inspect a live machine.
+    #[arg(long = "read-only", global = true)]
+    pub read_only: bool,
     #[command(subcommand)]
     pub sub: Option<Sub>,
 }
@@ -141,18 +145,23 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
         s.profiles = crate::profile::Profiles::load(&path);
         s.profiles.validate(&s.clock);
     }
+    s.set_read_only(cli.read_only);
     let mut current = "plc".to_string();
     let named: Vec<(String, String)> = cli.devices.iter().map(|d| split_device_arg(d)).collect();
+    let real = |family: &str| named.iter().any(|(_, url)| real_family(&s, url) == Some(family));
+    let (real_k2, real_servo) = (real("k2"), real("servo"));
     // The default simulators, unless a --device takes their name (a real `plc` then opens
-    // without first loading the simulator's state).
-    if !named.iter().any(|(n, _)| n == "plc") {
+    // without first loading the simulator's state) or names a real device of their family
+    // (a real K2 or drive is never shadowed by a simulated one the user did not ask for).
+    if !named.iter().any(|(n, _)| n == "plc") && !real_k2 {
         s.open("plc", &format!("sim:{}", cli.model))?;
-        // The simulated PLC keeps its backup area, retained ranges and clock (k2.md §7).
-        if let Some(state) = cli.state.clone().or_else(crate::k2::sim::state::default_path) {
+        // The simulated PLC keeps its backup area, retained ranges and clock (k2.md §7);
+        // `sim serve` keeps its own (`--state`), so the shell's default file stays untouched.
+        if let Some(state) = state_file(cli).filter(|_| !matches!(cli.sub, Some(Sub::Sim { .. }))) {
             s.device("plc")?.set_option("state", &state.to_string_lossy()).map_err(|e| e.device("plc"))?;
         }
     }
-    if !named.iter().any(|(n, _)| n == "servo") {
+    if !named.iter().any(|(n, _)| n == "servo") && !real_servo {
         s.open("servo", "sim-servo:?id=1")?;
     }
     for d in &cli.devices {
@@ -161,6 +170,10 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
         if name == url {
             current = name;
         }
+    }
+    if s.index(&current).is_err() {
+        // No `plc`: the first device named on the command line is current.
+        current = named.first().map(|(n, _)| n.clone()).unwrap_or_default();
     }
     s.use_device(&current)?;
     // `sim serve --bench` opens the bench in the served simulators instead.
@@ -174,8 +187,19 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
 }
 
 /// Options of plcsh that take a value (`--time stepped`): their value is not a positional.
-const VALUE_OPTIONS: &[&str] =
-    &["-c", "--command", "--model", "-d", "--device", "--time", "--config", "--state", "--write-dir"];
+const VALUE_OPTIONS: &[&str] = &[
+    "-c",
+    "--command",
+    "--model",
+    "-d",
+    "--device",
+    "--time",
+    "--config",
+    "--state",
+    "--write-dir",
+    "--record",
+    "--bench",
+];
 
 /// `plcsh [FLAGS] run [RUN FLAGS] SCRIPT ARGS…`: everything after the script belongs to the
 /// script, even words that look like plcsh's own flags (`run a.lua --time stepped` gives
@@ -225,6 +249,29 @@ pub fn split_script_args(argv: Vec<std::ffi::OsString>) -> (Vec<std::ffi::OsStri
     (argv, None)
 }
 
+/// The simulator state file the flags name: `--state FILE` (or `PLCSH_STATE`), none for
+/// `none`, else the user's default file.
+pub fn state_file(cli: &Cli) -> Option<std::path::PathBuf> {
+    let given = cli.state.clone().or_else(|| std::env::var_os("PLCSH_STATE").filter(|s| !s.is_empty()).map(Into::into));
+    match given {
+        Some(p) if p.as_os_str() == "none" => None,
+        Some(p) => Some(p),
+        None => crate::k2::sim::state::default_path(),
+    }
+}
+
+/// The family of a device URL (or profile) when it is a real device: `k2` for Modbus
+/// URLs, `servo` for `kinco:`; `None` for simulators and unknown schemes.
+fn real_family(s: &Session, url: &str) -> Option<&'static str> {
+    let url = if url.contains(':') { url } else { s.profiles.get(url).map(|p| p.url.as_str())? };
+    let scheme = url.split(':').next().unwrap_or("");
+    match scheme {
+        "tcp" | "rtu" | "rtu+tcp" => Some("k2"),
+        "kinco" => Some("servo"),
+        _ => None,
+    }
+}
+
 /// Entry point; returns the process exit status.
 pub fn main() -> i32 {
     let code = run_cli();
@@ -266,9 +313,7 @@ fn run_cli() -> i32 {
             return if e.kind == ErrorKind::Usage { 2 } else { 1 };
         }
     };
-    let _ =
-        signal_hook::flag::register_conditional_shutdown(signal_hook::consts::SIGINT, 130, session.interrupt.clone());
-    let _ = signal_hook::flag::register(signal_hook::consts::SIGINT, session.interrupt.clone());
+    crate::signals::install(&session.interrupt);
     for p in &session.profiles.problems {
         eprintln!("plcsh: warning: {p}");
     }
@@ -282,6 +327,18 @@ fn run_cli() -> i32 {
         crate::script::install(&mut shell);
     }
 
+    let serving = matches!(cli.sub, Some(Sub::Sim { .. }));
+    let code = run(&cli, shell, style, out);
+    // A SIGTERM or SIGHUP that stopped the work decides the status (143, 129); for
+    // `sim serve` they are the normal way to stop it (status 0 after a clean stop).
+    match crate::signals::exit_status() {
+        Some(s) if !serving => s,
+        _ => code,
+    }
+}
+
+/// Runs what the flags ask for with the built shell; returns the exit status.
+fn run(cli: &Cli, mut shell: Shell, style: Style, mut out: std::io::StdoutLock<'static>) -> i32 {
     if let Some(sub) = &cli.sub {
         return match sub {
             Sub::Models { name } => match crate::shell::commands::models::outcome(name.as_deref()) {
@@ -293,7 +350,7 @@ fn run_cli() -> i32 {
             },
             Sub::Completions { shell, write } => completions::run(*shell, write.as_deref(), &mut out),
             Sub::Devices => i32::from(!shell.run_line("devices", &mut out)),
-            Sub::Sim { cmd: serve::SimCmd::Serve(args) } => serve::run(&cli, args, style, &mut out),
+            Sub::Sim { cmd: serve::SimCmd::Serve(args) } => serve::run(cli, args, style, &mut out),
             Sub::Agent(a) => agent::run(a, &mut out),
             Sub::Run(args) => run::main(&mut shell, args, style),
             Sub::Record { cmd } => record::show(cmd, style, &mut out),

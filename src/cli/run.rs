@@ -1,7 +1,8 @@
 //! `plcsh run SCRIPT.lua [ARGS…]`: runs a Lua script against the session the flags describe
 //! (`--device`, `--time stepped`, `--model`). Exit status: 0 when the script finished, 1 when
 //! it failed (the report names file:line, with a traceback), 130 when Ctrl-C stopped it
-//! (after its `plcsh.on_abort` handlers ran).
+//! (after its `plcsh.on_abort` handlers ran), 143/129 for SIGTERM/SIGHUP (the same), and
+//! the status `os.exit(code)` asked for (also after the handlers).
 
 use crate::output::Style;
 use crate::script::Engine;
@@ -64,6 +65,8 @@ pub fn main(shell: &mut Shell, args: &RunArgs, style: Style) -> i32 {
     }
     match result {
         Ok(()) => 0,
+        // `os.exit(code)`: the handlers have run; exit with the status asked for.
+        Err(_) if engine.exit_code().is_some() => engine.exit_code().unwrap_or(0),
         Err(f) => {
             if !style.json {
                 let _ = write!(std::io::stderr().lock(), "{}", f.human());

@@ -123,6 +123,15 @@ pub struct ServeArgs {
     /// Inject a fault into the served K2, e.g. `--fault "no-reply on VW100 after=2s times=1"` (repeatable; see `help sim`).
     #[arg(long = "fault", value_name = "SPEC")]
     pub faults: Vec<String>,
+    /// Network connections served at once (per transport); more are closed on accept.
+    #[arg(long = "max-connections", value_name = "N", default_value_t = 64)]
+    pub max_connections: usize,
+    /// Close a network connection that sends nothing for this long (`300s`, `2m`, `500ms`).
+    #[arg(long = "idle-timeout", value_name = "DURATION", default_value = "300s")]
+    pub idle_timeout: String,
+    /// On Modbus TCP, answer only the --unit id (by default unit 0xFF is this device too, as libmodbus does).
+    #[arg(long = "strict-unit")]
+    pub strict_unit: bool,
 }
 
 impl ServeArgs {
@@ -191,6 +200,12 @@ async fn serve_k2(
         Some(sim) => sim,
         None => crate::k2::sim::open(&cli.model, clock.clone())?,
     };
+    // The served K2 keeps its backup area and retained ranges only in a file named for it
+    // (`--state FILE`): a lab's server never touches the shell's default state file.
+    if let Some(path) = cli.state.as_ref().filter(|p| p.as_os_str() != "none") {
+        sim.attach_state(path.clone())?;
+        ready.insert("state".into(), json!(path));
+    }
     ready.insert("model".into(), json!(sim.model().name));
     ready.insert("unit".into(), json!(args.unit));
     if let Some(base) = &args.agent {
@@ -209,15 +224,24 @@ async fn serve_k2(
         ready.insert("program".into(), json!(p.display().to_string()));
     }
     let service = K2Service::new(Arc::new(Mutex::new(sim)), args.unit);
+    let idle =
+        crate::core::literal::parse_duration_us(&args.idle_timeout).ok().filter(|us| *us > 0).ok_or_else(|| {
+            Error::usage(format!("--idle-timeout {} is not a duration", args.idle_timeout)).hint("e.g. 300s, 2m")
+        })?;
+    let limits = modbus_server::Limits {
+        max_connections: args.max_connections,
+        idle: std::time::Duration::from_micros(idle as u64),
+        unit_ff: !args.strict_unit,
+    };
     if let Some(a) = &args.tcp {
         let l = bind(a).await?;
         ready.insert("tcp".into(), json!(l.local_addr()?.to_string()));
-        tasks.spawn(modbus_server::serve_tcp(l, service.clone()));
+        tasks.spawn(modbus_server::serve_tcp(l, service.clone(), limits));
     }
     if let Some(a) = &args.rtu_tcp {
         let l = bind(a).await?;
         ready.insert("rtu_tcp".into(), json!(l.local_addr()?.to_string()));
-        tasks.spawn(modbus_server::serve_rtu_over_tcp(l, service.clone()));
+        tasks.spawn(modbus_server::serve_rtu_over_tcp(l, service.clone(), limits));
     }
     if let Some(link) = &args.rtu_pty {
         let pty = AsyncPty::open()?;

@@ -29,6 +29,16 @@ pub struct DeviceInfo {
     pub simulated: bool,
 }
 
+/// A change a command is about to make to a device, as the write guard sees it.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Change {
+    /// A write of one operand.
+    Write(Operand),
+    /// An instruction or action (`PLS 0`, `SET_RTC`, a servo object write) and the
+    /// operand names it changes (`Q0.0`, `SMB66`; `clock` for the real-time clock).
+    Action { what: String, touches: Vec<String> },
+}
+
 /// A device the session can talk to.
 pub trait Device: Send {
     fn info(&self) -> &DeviceInfo;
@@ -50,9 +60,28 @@ pub trait Device: Send {
     /// Capabilities of families that have no hook of their own (UMPK, FX and later ones):
     /// their shell commands and Lua methods downcast through this one generic hook instead
     /// of each family adding an `as_<family>` method here (design guide, "New families").
-    /// A wrapper (the write guard) must decide what it lets through this door.
+    ///
+    /// The write guard (`crate::guard`) cannot see what a command does with the object
+    /// it hands out, so while a write rule is in force (a profile's `read_only`/`allow`,
+    /// the session's `--read-only`) a guarded device answers `None` here. Family commands
+    /// therefore take the hook through [`Device::family_ops_for`], stating first what they
+    /// will change.
     fn family_ops(&mut self) -> Option<&mut dyn std::any::Any> {
         None
+    }
+    /// The family hook for a command that will make `changes` (`&[]` for one that only
+    /// reads): the guard checks the changes first and refuses the whole command, naming
+    /// the rule, before the hook is handed out. An unguarded device just answers.
+    fn family_ops_for(&mut self, changes: &[Change]) -> Result<Option<&mut dyn std::any::Any>> {
+        self.permits(changes)?;
+        Ok(self.family_ops())
+    }
+    /// Asks whether `changes` may be made, before a command makes any of them, so a
+    /// command is refused whole (nothing sent) rather than half-way. Unguarded devices
+    /// permit everything; the write guard checks its rules.
+    fn permits(&self, changes: &[Change]) -> Result<()> {
+        let _ = changes;
+        Ok(())
     }
     /// Sets a device option given in its URL or profile (`word_order`, `encoder` …).
     fn set_option(&mut self, key: &str, _value: &str) -> Result<()> {

@@ -301,6 +301,9 @@ impl Literal {
             DataType::Real => {
                 return match self.value {
                     Value::Bool(_) => Err(format!("{shown} is a bit, not a REAL")),
+                    v if !fits_f32(v.as_f64()) => {
+                        Err(format!("{shown} does not fit a REAL (32-bit IEEE float: ±{:e} at most)", f32::MAX))
+                    }
                     v => Ok(Value::Real(v.as_f64())),
                 };
             }
@@ -311,6 +314,12 @@ impl Literal {
             Value::Int(i) => i,
             Value::Real(r) => {
                 if self.declared == Some(DataType::Real) && bits == 32 {
+                    if !fits_f32(r) {
+                        return Err(format!(
+                            "{shown} does not fit a REAL (32-bit IEEE float: ±{:e} at most)",
+                            f32::MAX
+                        ));
+                    }
                     // REAL#1.5 into a 32-bit integer operand stores the IEEE pattern.
                     return Ok(target.decode((r as f32).to_bits()));
                 }
@@ -368,6 +377,11 @@ impl Literal {
     }
 }
 
+/// A finite number within a 32-bit float's range (it may lose precision, never overflow).
+fn fits_f32(v: f64) -> bool {
+    v.is_finite() && v.abs() <= f32::MAX as f64
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -416,6 +430,9 @@ mod tests {
         assert!(fit("1.5", DataType::DWord).unwrap_err().contains("REAL"));
         assert_eq!(fit("REAL#1.5", DataType::DWord), Ok(Value::Int(0x3FC0_0000)));
         assert_eq!(fit("2", DataType::Real), Ok(Value::Real(2.0)));
+        assert!(fit("5e53", DataType::Real).unwrap_err().contains("does not fit a REAL"));
+        assert!(fit("-3.5e38", DataType::Real).is_err());
+        assert!(fit("3.4e38", DataType::Real).is_ok());
         assert!(fit("2", DataType::Bool).is_err());
         assert_eq!(fit("1", DataType::Bool), Ok(Value::Bool(true)));
         assert_eq!(

@@ -308,7 +308,7 @@ impl K2Wire {
                         .open_native()
                         .map_err(|e| {
                             Error::link(format!("cannot open the serial port {path}")).cause(e).hint(
-                                "check the port path (ls /dev/ttyUSB* /dev/serial/by-id), that no other program holds it, and that you may open it (the dialout group)",
+                                "check the port path (ls /dev/ttyUSB* /dev/serial/by-id; a USB adapter may be unplugged), that no other program holds it, and that you may open it (the dialout group); the next command opens it again once it is back",
                             )
                         })?;
                     let stream = FdStream::new(port)

@@ -448,6 +448,9 @@ pub enum Exception {
     IllegalFunction = 1,
     IllegalDataAddress = 2,
     IllegalDataValue = 3,
+    /// The device could not do what the request asked (the simulator: its state file
+    /// could not be written, so the store cannot be acknowledged as kept).
+    ServerDeviceFailure = 4,
 }
 
 /// The standard name of a Modbus exception code.

@@ -49,17 +49,22 @@ impl K2Space {
         }
         let end = op.byte as u64 + op.width.bytes() as u64;
         if end > len as u64 {
-            let last = last_of(op, len);
-            return Err(Error::new(
-                ErrorKind::Range,
-                format!(
+            let message = match last_of(op, len) {
+                Some(last) => format!(
                     "{name} is past the end of the {} area on {} (last {} is {last})",
                     op.area.name(),
                     self.model.name,
                     kind_word(op.width)
                 ),
-            )
-            .operand(name));
+                None => format!(
+                    "{name} does not fit the {} area on {}: it has {} bits, fewer than one {} needs",
+                    op.area.name(),
+                    self.model.name,
+                    len * 8,
+                    kind_word(op.width)
+                ),
+            };
+            return Err(Error::new(ErrorKind::Range, message).operand(name));
         }
         Ok(())
     }
@@ -91,8 +96,9 @@ fn kind_word(w: Width) -> &'static str {
     }
 }
 
-/// The last operand of the same size that fits an area of `len`.
-fn last_of(op: &K2Operand, len: u32) -> String {
+/// The last operand of the same size that fits an area of `len` (> 0) bytes; `None`
+/// when not even one fits (a K3 group in an 8-bit input area).
+fn last_of(op: &K2Operand, len: u32) -> Option<String> {
     let mut o = *op;
     match op.width {
         Width::Bit(_) => {
@@ -101,16 +107,16 @@ fn last_of(op: &K2Operand, len: u32) -> String {
         }
         Width::Element => o.byte = len - 1,
         Width::Group { n, .. } => {
-            let bits = len * 8 - 4 * n as u32;
+            let bits = (len * 8).checked_sub(4 * n as u32)?;
             o.byte = bits / 8;
             o.width = Width::Group { n, bit: (bits % 8) as u8 };
         }
-        w => o.byte = len.saturating_sub(w.bytes()),
+        w => o.byte = len.checked_sub(w.bytes())?,
     }
     if matches!(op.area, Area::AI | Area::AQ) && o.byte % 2 == 1 {
         o.byte -= 1;
     }
-    o.canonical()
+    Some(o.canonical())
 }
 
 /// The SM register name of an operand, when the table has one.
@@ -270,6 +276,10 @@ mod tests {
         assert!(big.parse_k2("VW16382").is_ok());
         assert!(space("K209EA-50DX").parse_k2("AIW10").is_ok());
         assert!(space("K209EA-50DX").parse_k2("AIW12").unwrap_err().message.contains("AIW10"));
+        // A group wider than the whole area: no "last valid" one to suggest, and no underflow.
+        let e = space("K204ET-16DT").parse_k2("K3I0.0").unwrap_err();
+        assert_eq!(e.kind, ErrorKind::Range);
+        assert!(e.message.contains("does not fit the I area") && !e.message.contains("K3I5"), "{}", e.message);
     }
 
     #[test]

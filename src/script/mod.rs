@@ -12,7 +12,7 @@
 //! first) before the error is reported.
 
 mod api;
-mod bridge;
+pub mod bridge;
 mod device;
 pub mod error;
 mod paths;
@@ -52,6 +52,7 @@ impl Engine {
             register(&lua)?;
         }
         lua.load(include_str!("prelude.lua")).set_name("=plcsh").exec()?;
+        replace_os_exit(&lua)?;
         lua.set_app_data(api::Sink(out));
         lua.set_hook(HookTriggers::new().every_nth_instruction(HOOK_EVERY), move |_, _| {
             if interrupt.load(Ordering::Relaxed) {
@@ -70,6 +71,11 @@ impl Engine {
 
     pub fn lua(&self) -> &Lua {
         &self.lua
+    }
+
+    /// The status a script asked for with `os.exit`, once it has called it.
+    pub fn exit_code(&self) -> Option<i32> {
+        self.lua.named_registry_value::<Option<i32>>(EXIT_KEY).ok().flatten()
     }
 
     /// Runs `f` with `shell` moved into the Lua state (see the module doc).
@@ -113,7 +119,13 @@ impl Engine {
         if list.is_empty() {
             return;
         }
-        let reason = if why.interrupted() { "interrupted" } else { "failed" };
+        let reason = if why.interrupted() {
+            "interrupted"
+        } else if self.exit_code().is_some() {
+            "exit"
+        } else {
+            "failed"
+        };
         let _ = api::show(
             &self.lua,
             &Outcome::new("abort")
@@ -189,6 +201,27 @@ impl Engine {
         }
         matches!(self.lua.load(code).into_function(), Err(mlua::Error::SyntaxError { incomplete_input: true, .. }))
     }
+}
+
+/// Registry key of the status `os.exit` asked for.
+const EXIT_KEY: &str = "plcsh.exit";
+
+/// `os.exit([code])` ends the script the way an error does — its `plcsh.on_abort`
+/// handlers run (PSTOP, servo disable …) and plcsh saves its state — and plcsh then exits
+/// with `code` (true → 0, false → 1, default 0), instead of killing the process on the spot.
+fn replace_os_exit(lua: &Lua) -> mlua::Result<()> {
+    let exit = lua.create_function(|lua, code: Value| {
+        let n = match code {
+            Value::Nil | Value::Boolean(true) => 0,
+            Value::Boolean(false) => 1,
+            Value::Integer(i) => i as i32,
+            Value::Number(f) => f as i32,
+            _ => 1,
+        };
+        lua.set_named_registry_value(EXIT_KEY, n)?;
+        Err::<(), _>(error::raise(Error::new(ErrorKind::Script, format!("the script called os.exit({n})"))))
+    })?;
+    lua.globals().get::<Table>("os")?.set("exit", exit)
 }
 
 /// The shell's `lua` hook: one Lua state, created on first use, persisting across lines.

@@ -117,7 +117,27 @@ impl Driver {
         self.requests += 1;
         let name = self.line.name.clone();
         let mut t = self.line.transport.lock().unwrap_or_else(|p| p.into_inner());
-        let io_err = |e: std::io::Error| Error::link(format!("serial I/O on {name} failed")).cause(e);
+        let gone = &self.line.gone;
+        if gone.load(std::sync::atomic::Ordering::SeqCst) {
+            if let Some(reopen) = &self.line.reopen {
+                *t = reopen().map_err(|e| {
+                    Error::link(format!("the serial port {name} is still gone"))
+                        .cause(e.message.clone())
+                        .hint(PORT_GONE)
+                })?;
+                gone.store(false, std::sync::atomic::Ordering::SeqCst);
+            }
+        }
+        let reopens = self.line.reopen.is_some();
+        let io_err = |e: std::io::Error| {
+            // Any I/O failure of the port itself: the next request opens it again.
+            gone.store(reopens, std::sync::atomic::Ordering::SeqCst);
+            if port_gone(&e) {
+                Error::link(format!("the serial port {name} is gone")).cause(e).hint(PORT_GONE)
+            } else {
+                Error::link(format!("serial I/O on {name} failed")).cause(e).hint(PORT_GONE)
+            }
+        };
         t.discard_input().map_err(io_err)?;
         trace::frame_proto(&name, Proto::KincoServo, Dir::Sent, bytes);
         t.send(bytes).map_err(io_err)?;
@@ -439,6 +459,17 @@ fn finish(mut d: Driver, c: &Common) -> Result<Box<dyn Device>> {
 }
 
 /// Opens `kinco:PORT?baud=38400&id=1&echo=0&timeout=200ms&encoder=10000`.
+/// What to check when a port disappears, and what plcsh does about it.
+const PORT_GONE: &str = "the USB adapter may be unplugged or the port's server restarted: check the cable and the adapter (ls /dev/ttyUSB* /dev/serial/by-id); the next command reopens the port once it is back";
+
+/// Errors that mean the port itself is gone (not a slow or silent drive). The serialport
+/// crate passes EIO (what a hung-up tty or an unplugged adapter gives) on as its text only.
+fn port_gone(e: &std::io::Error) -> bool {
+    matches!(e.raw_os_error(), Some(libc::EIO | libc::ENXIO | libc::ENODEV | libc::EBADF | libc::EPIPE))
+        || matches!(e.kind(), std::io::ErrorKind::BrokenPipe | std::io::ErrorKind::UnexpectedEof)
+        || ["I/O error", "Input/output error", "No such device"].iter().any(|t| e.to_string().contains(t))
+}
+
 pub fn open_serial(u: &DeviceUrl) -> Result<Box<dyn Device>> {
     u.expect_params(&["id", "baud", "echo", "loop", "timeout", "encoder", "control"])?;
     let c = common(u)?;
@@ -447,7 +478,7 @@ pub fn open_serial(u: &DeviceUrl) -> Result<Box<dyn Device>> {
         return Err(Error::usage(format!("{} names no serial port", u.text)).hint("e.g. kinco:/dev/ttyUSB0?id=1"));
     }
     let settings = format!("{baud} baud 8N1{}", if c.echo { ", loop" } else { "" });
-    let line = link::shared(&u.target, &settings, || link::open_serial(&u.target, baud))?;
+    let line = link::shared_serial(&u.target, baud, &settings)?;
     let info = DeviceInfo {
         family: "servo",
         model: format!("Kinco servo, id {}", c.id),

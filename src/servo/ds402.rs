@@ -239,6 +239,29 @@ fn obj(name: &str) -> ObjRef {
     ObjRef::of(objects::named(name))
 }
 
+/// Asks the write guard for every object a helper will write, before it writes any, so
+/// a refused helper sends nothing.
+fn declare(ops: &dyn ServoOps, names: &[&str]) -> Result<()> {
+    let changes: Vec<_> = names.iter().map(|n| crate::guard::servo_write(obj(n))).collect();
+    ops.permits(&changes)
+}
+
+/// The objects a move or jog writes: the mode, the target, the profile given, the controlword.
+fn motion_objects(target: &'static str, p: &Profile, speed: bool) -> Vec<&'static str> {
+    let mut v = vec!["operating_mode", target];
+    for (given, name) in [
+        (speed && p.speed.is_some(), "profile_velocity"),
+        (p.acc.is_some(), "profile_acceleration"),
+        (p.dec.is_some(), "profile_deceleration"),
+    ] {
+        if given {
+            v.push(name);
+        }
+    }
+    v.push("controlword");
+    v
+}
+
 /// Reads a table object as a number.
 pub fn read(ops: &mut dyn ServoOps, name: &str) -> Result<i64> {
     let r = obj(name);
@@ -296,6 +319,7 @@ fn step(ops: &mut dyn ServoOps, w: &Waiter, what: &str, cw: u16, want: &[State])
 /// `servo enable`: shutdown → switch on → enable operation, verifying each step.
 /// Returns the steps taken (empty when the drive was already enabled).
 pub fn enable(ops: &mut dyn ServoOps, w: &Waiter) -> Result<Vec<&'static str>> {
+    declare(ops, &["controlword"])?;
     let sw = statusword(ops)?;
     match State::from_statusword(sw) {
         Some(State::OperationEnabled) => return Ok(Vec::new()),
@@ -319,6 +343,7 @@ pub fn enable(ops: &mut dyn ServoOps, w: &Waiter) -> Result<Vec<&'static str>> {
 /// `servo disable`: shutdown (0x06), so the motor is no longer powered; from "quick stop
 /// active", where CiA 402 has no shutdown transition, disable voltage (0x00).
 pub fn disable(ops: &mut dyn ServoOps, w: &Waiter) -> Result<State> {
+    declare(ops, &["controlword"])?;
     if State::from_statusword(statusword(ops)?) == Some(State::QuickStopActive) {
         return step(ops, w, "disable voltage", cw::DISABLE_VOLTAGE, &[State::SwitchOnDisabled]);
     }
@@ -328,6 +353,7 @@ pub fn disable(ops: &mut dyn ServoOps, w: &Waiter) -> Result<State> {
 /// `servo fault-reset`: a rising edge on bit 7 (0x06, then 0x86 as Kinco's examples do).
 /// A drive that is not in fault is left alone (0x06 would disable it).
 pub fn fault_reset(ops: &mut dyn ServoOps, w: &Waiter) -> Result<State> {
+    declare(ops, &["controlword"])?;
     let sw = statusword(ops)?;
     match State::from_statusword(sw) {
         Some(State::Fault | State::FaultReactionActive) | None => {}
@@ -346,11 +372,13 @@ pub fn fault_reset(ops: &mut dyn ServoOps, w: &Waiter) -> Result<State> {
 /// `servo quickstop`: controlword 0x0B; an enabled drive brakes with 6085.00 and stays in
 /// "quick stop active".
 pub fn quickstop(ops: &mut dyn ServoOps, w: &Waiter) -> Result<State> {
+    declare(ops, &["controlword"])?;
     step(ops, w, "quick stop", cw::QUICK_STOP, &[State::QuickStopActive, State::SwitchOnDisabled])
 }
 
 /// `servo mode NAME`: writes 6060.00 and reads it back.
 pub fn set_mode(ops: &mut dyn ServoOps, mode: i8) -> Result<()> {
+    declare(ops, &["operating_mode"])?;
     write(ops, "operating_mode", mode as i64)?;
     let got = read(ops, "operating_mode")? as i8;
     if got != mode {
@@ -381,6 +409,7 @@ pub struct Profile {
 /// controlword (0x2F/0x4F) and the set-point edge (0x3F/0x5F), verified by the set-point
 /// acknowledge bit; bit 4 is dropped again afterwards so the next move has its edge.
 pub fn move_to(ops: &mut dyn ServoOps, w: &Waiter, relative: bool, pos: i64, p: Profile) -> Result<()> {
+    declare(ops, &motion_objects("target_position", &p, true))?;
     require_enabled(ops, "move")?;
     write(ops, "operating_mode", 1)?;
     write(ops, "target_position", pos)?;
@@ -433,6 +462,7 @@ pub fn move_to(ops: &mut dyn ServoOps, w: &Waiter, relative: bool, pos: i64, p: 
 
 /// `servo jog SPEED`: mode 3, target velocity, acc/dec, then controlword 0x0F.
 pub fn jog(ops: &mut dyn ServoOps, speed: i64, p: Profile) -> Result<()> {
+    declare(ops, &motion_objects("target_velocity", &p, false))?;
     require_enabled(ops, "jog")?;
     write(ops, "operating_mode", 3)?;
     write(ops, "target_velocity", speed)?;
@@ -447,6 +477,14 @@ pub fn jog(ops: &mut dyn ServoOps, speed: i64, p: Profile) -> Result<()> {
 
 /// `servo home`: mode 6 (optionally a method), then 0x0F and the 0x1F edge.
 pub fn home(ops: &mut dyn ServoOps, method: Option<i64>) -> Result<()> {
+    declare(
+        ops,
+        if method.is_some() {
+            &["operating_mode", "homing_method", "controlword"]
+        } else {
+            &["operating_mode", "controlword"]
+        },
+    )?;
     require_enabled(ops, "home")?;
     write(ops, "operating_mode", 6)?;
     if let Some(m) = method {
@@ -499,6 +537,7 @@ pub fn halt(ops: &mut dyn ServoOps, on: bool) -> Result<u16> {
 
 /// `servo save`: 2FF0.01 = 1 (store all parameters).
 pub fn save(ops: &mut dyn ServoOps) -> Result<()> {
+    declare(ops, &["store_parameters"])?;
     write(ops, "store_parameters", 1)
 }
 

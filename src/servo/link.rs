@@ -34,6 +34,9 @@ pub trait Transport: Send {
     }
 }
 
+/// Opens a line's transport again after its port disappeared.
+pub type Reopen = Box<dyn Fn() -> Result<Box<dyn Transport>> + Send + Sync>;
+
 /// One shared line: the transport, plus what it was opened with (to refuse a second open
 /// with other settings).
 pub struct Line {
@@ -41,6 +44,11 @@ pub struct Line {
     pub settings: String,
     /// Name for traces and messages (`/dev/ttyUSB0`).
     pub name: String,
+    /// How to open the port again (serial ports), and whether it is gone: a port that
+    /// disappears (USB adapter unplugged, a served pty restarted) is reopened by the next
+    /// request once it is back.
+    pub reopen: Option<Reopen>,
+    pub gone: std::sync::atomic::AtomicBool,
 }
 
 pub type SharedLine = Arc<Line>;
@@ -53,6 +61,21 @@ fn registry() -> &'static Mutex<HashMap<String, Weak<Line>>> {
 /// The line at `key`, opened by `open` if no device holds it yet. `settings` must match
 /// those of a line already open.
 pub fn shared(key: &str, settings: &str, open: impl FnOnce() -> Result<Box<dyn Transport>>) -> Result<SharedLine> {
+    shared_with(key, settings, open, None)
+}
+
+/// A shared serial port, reopened after it disappears ([`Line::reopen`]).
+pub fn shared_serial(path: &str, baud: u32, settings: &str) -> Result<SharedLine> {
+    let p = path.to_string();
+    shared_with(path, settings, || open_serial(path, baud), Some(Box::new(move || open_serial(&p, baud))))
+}
+
+fn shared_with(
+    key: &str,
+    settings: &str,
+    open: impl FnOnce() -> Result<Box<dyn Transport>>,
+    reopen: Option<Reopen>,
+) -> Result<SharedLine> {
     let mut reg = registry().lock().unwrap_or_else(|p| p.into_inner());
     reg.retain(|_, w| w.strong_count() > 0);
     if let Some(line) = reg.get(key).and_then(Weak::upgrade) {
@@ -62,14 +85,26 @@ pub fn shared(key: &str, settings: &str, open: impl FnOnce() -> Result<Box<dyn T
         }
         return Ok(line);
     }
-    let line = Arc::new(Line { transport: Mutex::new(open()?), settings: settings.to_string(), name: key.to_string() });
+    let line = Arc::new(Line {
+        transport: Mutex::new(open()?),
+        settings: settings.to_string(),
+        name: key.to_string(),
+        reopen,
+        gone: Default::default(),
+    });
     reg.insert(key.to_string(), Arc::downgrade(&line));
     Ok(line)
 }
 
 /// A private (unshared) line.
 pub fn private(name: &str, t: Box<dyn Transport>) -> SharedLine {
-    Arc::new(Line { transport: Mutex::new(t), settings: String::new(), name: name.to_string() })
+    Arc::new(Line {
+        transport: Mutex::new(t),
+        settings: String::new(),
+        name: name.to_string(),
+        reopen: None,
+        gone: Default::default(),
+    })
 }
 
 /// Opens a serial port 8N1 at `baud` (the drive's factory framing, seed §1).

@@ -42,4 +42,11 @@ pub trait ServoOps {
     fn sim_control(&self) -> Option<std::path::PathBuf> {
         None
     }
+
+    /// Asks the write guard (`crate::guard`) whether `changes` may be made, before a
+    /// helper makes any of them; unguarded drives permit everything.
+    fn permits(&self, changes: &[crate::core::device::Change]) -> Result<()> {
+        let _ = changes;
+        Ok(())
+    }
 }

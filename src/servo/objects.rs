@@ -370,11 +370,14 @@ impl ServoSpace {
     fn fit(&self, r: &ObjRef, raw: i128, text: &str) -> Result<Value> {
         let (lo, hi) = r.dtype.int_range();
         if raw < lo as i128 || raw > hi as i128 {
-            return Err(Error::new(
-                ErrorKind::Value,
-                format!("{} = {raw} does not fit {} ({lo}…{hi})", text.trim(), r.dtype.name()),
-            )
-            .hint(format!("encoder resolution is {} inc/rev", self.resolution.get())));
+            // A conversion that saturated (30 typed digits) has no value worth showing.
+            let what = if raw.unsigned_abs() > u64::MAX as u128 {
+                format!("{} is far too large for", text.trim())
+            } else {
+                format!("{} = {raw} does not fit", text.trim())
+            };
+            return Err(Error::new(ErrorKind::Value, format!("{what} {} ({lo}…{hi})", r.dtype.name()))
+                .hint(format!("encoder resolution is {} inc/rev", self.resolution.get())));
         }
         Ok(Value::Int(raw as i64))
     }

@@ -130,9 +130,13 @@ fn div_round(n: i128, d: i128) -> i128 {
     }
 }
 
-/// `value × num / den`, exact until one final rounding.
+/// `value × num / den`, exact until one final rounding. A product past i128 (30 typed
+/// digits times a large resolution) saturates, so the object's range check refuses it.
 fn scale(v: Decimal, num: i128, den: i128) -> i128 {
-    div_round(v.mantissa * num, den * 10i128.pow(v.scale))
+    match v.mantissa.checked_mul(num) {
+        Some(n) => div_round(n, den * 10i128.pow(v.scale)),
+        None => i128::MAX * v.mantissa.signum() * num.signum(),
+    }
 }
 
 /// Speed DEC from rpm: `DEC = rpm × 512 × R / 1875`, rounded once.
@@ -280,6 +284,10 @@ mod tests {
         assert_eq!(rpm_to_dec(d("-1"), 10_000), -2731);
         assert_eq!(rpm_to_dec(d("0.5"), 10_000), 1365); // 1365.33
         assert_eq!(rev_to_inc(d("2.5"), 10_000), 25_000);
+        // 30 digits times a large resolution saturates instead of overflowing.
+        let big = d("999999999999999999999999999999");
+        assert!(rps2_to_dec(big, u32::MAX) > i64::MAX as i128);
+        assert!(rpm_to_dec(Decimal { mantissa: -big.mantissa, scale: 0 }, u32::MAX) < i64::MIN as i128);
     }
 
     #[test]

@@ -37,14 +37,16 @@ pub fn interactive(shell: &mut Shell) -> i32 {
         device_list(shell)
     );
     loop {
-        let prompt = format!("{}> ", shell.session.current_name().unwrap_or("plcsh"));
+        let prompt = prompt(&shell.session);
         // Lend the session to the completer while the line is read (see helper.rs).
         let placeholder = Session::new(shell.session.clock.clone());
         if let Some(h) = ed.helper_mut() {
             h.prompt_width = prompt.chars().count();
             h.session = Some(std::mem::replace(&mut shell.session, placeholder));
         }
+        crate::signals::set_idle(true);
         let read = ed.readline(&prompt);
+        crate::signals::set_idle(false);
         if let Some(s) = ed.helper_mut().and_then(|h| h.session.take()) {
             shell.session = s;
         }
@@ -125,7 +127,10 @@ pub fn batch(shell: &mut Shell, input: &mut dyn BufRead, out: &mut dyn Write) ->
     let mut line = String::new();
     loop {
         line.clear();
-        match input.read_line(&mut line) {
+        crate::signals::set_idle(true);
+        let read = input.read_line(&mut line);
+        crate::signals::set_idle(false);
+        match read {
             Ok(0) => break,
             Ok(_) => {}
             Err(e) => {
@@ -155,4 +160,28 @@ pub fn batch(shell: &mut Shell, input: &mut dyn BufRead, out: &mut dyn Write) ->
         }
     }
     i32::from(!ok)
+}
+
+/// The prompt: the current device's name, `(sim)` when it is simulated (`plc(sim)>`
+/// against `press1>`), and `read-only` while the session-wide switch is on.
+pub fn prompt(s: &Session) -> String {
+    let mut marks = Vec::new();
+    let name = match s.current_index() {
+        Ok(i) => {
+            let e = &s.entries()[i];
+            if e.device.info().simulated {
+                marks.push("sim");
+            }
+            e.name.clone()
+        }
+        Err(_) => "plcsh".to_string(),
+    };
+    if s.read_only() {
+        marks.push("read-only");
+    }
+    if marks.is_empty() {
+        format!("{name}> ")
+    } else {
+        format!("{name}({})> ", marks.join(", "))
+    }
 }

@@ -17,6 +17,8 @@ pub fn plcsh() -> Command {
     let _ = std::fs::create_dir_all(&home);
     c.env("HOME", &home).env("XDG_DATA_HOME", home.join("data")).env("XDG_CONFIG_HOME", home.join("config"));
     c.env_remove("NO_COLOR").env_remove("PLCSH_CONFIG");
+    // No test touches a default state file; tests about state name theirs with --state.
+    c.env("PLCSH_STATE", "none");
     c
 }
 

@@ -69,7 +69,8 @@ pub fn parse_base(text: &str) -> Result<u32, String> {
         .parse()
         .map_err(|_| format!("`{text}` is not a V byte address (e.g. VB{DEFAULT_BASE})"))?;
     let total = super::il::TOTAL_SIZE;
-    if !n.is_multiple_of(2) || n + total > crate::k2::catalog::EEPROM_FIRST {
+    // `n + total` in u64: a base near u32::MAX must be refused, not wrap past the check.
+    if !n.is_multiple_of(2) || n as u64 + total as u64 > crate::k2::catalog::EEPROM_FIRST as u64 {
         return Err(format!(
             "the helper's mailbox needs an even address with {total} bytes free below the E2PROM area VB{} (got VB{n})",
             crate::k2::catalog::EEPROM_FIRST
@@ -360,6 +361,13 @@ pub fn execute_scan(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_base_near_the_top_of_u32_is_refused_not_wrapped() {
+        assert!(parse_base("VB4294967110").is_err());
+        assert!(parse_base("VB4294967294").is_err());
+        assert_eq!(parse_base("VB3400"), Ok(3400));
+    }
 
     struct Buf(Vec<u8>);
     impl VMemory for Buf {

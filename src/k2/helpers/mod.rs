@@ -16,6 +16,7 @@ pub mod pto;
 
 use super::operand::{Area, K2Operand};
 use super::K2Ops;
+use crate::core::device::Change;
 use crate::core::{DataType, Device, Error, ErrorKind, Result, Value};
 
 /// An instruction a plan runs after its writes.
@@ -24,6 +25,17 @@ pub enum Instr {
     Pls(u8),
     Hdef(u8, u8),
     Hsc(u8),
+}
+
+impl Instr {
+    /// What the instruction changes, for the write guard (`crate::guard`).
+    pub fn change(&self, model: &super::catalog::Model) -> Change {
+        match *self {
+            Instr::Pls(q) => crate::guard::k2_instruction(model, "PLS", q),
+            Instr::Hdef(n, _) => crate::guard::k2_instruction(model, "HDEF", n),
+            Instr::Hsc(n) => crate::guard::k2_instruction(model, "HSC", n),
+        }
+    }
 }
 
 impl std::fmt::Display for Instr {
@@ -97,6 +109,12 @@ pub fn execute(dev: &mut dyn Device, plan: &Plan) -> Result<Done> {
     if !plan.then.is_empty() && dev.as_k2().is_none() {
         return Err(Error::unsupported("this device is not a K2 PLC"));
     }
+    // The whole plan goes past the write guard first: refused whole, nothing sent.
+    let mut changes: Vec<Change> = items.iter().map(|(op, _)| Change::Write(*op)).collect();
+    if let Some(model) = dev.as_k2().map(|k| k.model()) {
+        changes.extend(plan.then.iter().map(|i| i.change(model)));
+    }
+    dev.permits(&changes)?;
     dev.write(&items)?;
     let mut done = Done { notes: plan.notes.clone(), ..Default::default() };
     for ((op, v), (core, _)) in plan.writes.iter().zip(&items) {

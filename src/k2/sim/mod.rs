@@ -20,6 +20,7 @@ pub mod snapshot;
 pub mod state;
 pub mod wired;
 
+pub mod modbus_net;
 pub mod modbus_server;
 pub mod rtu_frame;
 
@@ -445,30 +446,45 @@ impl K2Sim {
         p.chain(h).chain(self.wiring_due()).min()
     }
 
-    /// Battery-retained ranges (`VB0..VB99`, `MB0[10]`): V or M byte ranges.
+    /// Battery-retained ranges (`VB0..VB99`, `MB0[10]`, `C0..C15`): V or M byte ranges
+    /// and counters, as the hardware configuration offers them ("V, C", manual §2.2.8),
+    /// at most the model's retention size in all (§2.1.2 "retention range"; a counter's
+    /// current value takes 2 bytes).
     pub fn set_retain(&mut self, text: &str) -> Result<()> {
         let mut ranges = Vec::new();
         if !text.trim().eq_ignore_ascii_case("none") {
             for part in text.split([',', ' ']).filter(|p| !p.is_empty()) {
                 let ops = self.space.parse_k2(part)?;
                 let area = ops[0].area;
-                if !matches!(area, Area::V | Area::M) {
-                    return Err(Error::usage(format!("{part}: only V and M ranges can be retained"))
-                        .hint("e.g. sim retain VB0..VB99 MB0[16]"));
+                if !matches!(area, Area::V | Area::M | Area::C) {
+                    return Err(Error::usage(format!("{part}: only V, M and C ranges can be retained"))
+                        .hint("e.g. sim retain VB0..VB99 MB0[16] C0..C15"));
                 }
                 let first = ops.iter().map(|o| o.byte).min().unwrap_or(0);
-                let end = ops.iter().map(|o| o.byte + o.width.bytes()).max().unwrap_or(0);
+                let end =
+                    ops.iter().map(|o| o.byte + if area == Area::C { 1 } else { o.width.bytes() }).max().unwrap_or(0);
                 ranges.push(Retain { area, first, len: end - first });
             }
         }
+        let bytes: u32 = ranges.iter().map(|r| if r.area == Area::C { 2 * r.len } else { r.len }).sum();
+        let room = self.model().retentive_bytes;
+        if bytes > room {
+            return Err(Error::usage(format!(
+                "{bytes} retained bytes asked for; {} retains at most {room} (manual §2.1.2)",
+                self.model().name
+            ))
+            .hint("retain fewer or shorter ranges (a counter takes 2 bytes)"));
+        }
         self.backup.retain = ranges;
-        Ok(())
+        // The configuration is kept like the data it protects.
+        self.save_state()
     }
 
     /// Reads the state file (if it has an entry for this model) and restores the backup
     /// area, retained ranges, E2PROM counts and the clock; from then on the simulator
     /// saves there.
     pub fn attach_state(&mut self, path: PathBuf) -> Result<()> {
+        let lock = state::lock(&path)?;
         if let Some(st) = state::load(&path, self.model().name)? {
             self.backup.set_last(st.backup_last.clamp(catalog::EEPROM_LAST_DEFAULT, catalog::EEPROM_LAST_MAX))?;
             if let Some(bytes) = state::unhex(&st.backup) {
@@ -481,8 +497,18 @@ impl K2Sim {
             }
             self.backup.retain.clear();
             for r in &st.retain {
-                let area = if r.area == "M" { Area::M } else { Area::V };
                 let Some(bytes) = state::unhex(&r.data) else { continue };
+                if r.area == "C" {
+                    let lo = r.first as usize;
+                    let values: Vec<i16> = bytes.chunks_exact(2).map(|c| i16::from_be_bytes([c[0], c[1]])).collect();
+                    if lo + values.len() <= self.mem.c.len() {
+                        self.mem.c[lo..lo + values.len()].copy_from_slice(&values);
+                        let len = values.len() as u32;
+                        self.backup.retain.push(Retain { area: Area::C, first: r.first, len });
+                    }
+                    continue;
+                }
+                let area = if r.area == "M" { Area::M } else { Area::V };
                 let buf = self.mem.area_mut(area);
                 let lo = r.first as usize;
                 if lo + bytes.len() <= buf.len() {
@@ -496,7 +522,24 @@ impl K2Sim {
             }
         }
         self.backup.path = Some(path);
+        self.backup.lock = Some(lock);
         Ok(())
+    }
+
+    /// Makes a store to `area` bytes `lo..hi` durable before it is acknowledged: one that
+    /// touches the E2PROM backup area or a retained range rewrites the state file (fsync'd,
+    /// `state`'s module doc). Other stores cost nothing.
+    pub fn commit_store(&mut self, area: Area, lo: u32, hi: u32) -> Result<()> {
+        if self.backup.path.is_none() || !self.keeps(area, lo, hi) {
+            return Ok(());
+        }
+        self.save_state()
+    }
+
+    /// Does a power cut keep bytes `lo..hi` of `area` (backup area or a retained range)?
+    fn keeps(&self, area: Area, lo: u32, hi: u32) -> bool {
+        let backup = area == Area::V && lo <= self.backup.last && catalog::EEPROM_FIRST < hi;
+        backup || self.backup.retain.iter().any(|r| r.area == area && lo < r.first + r.len && r.first < hi)
     }
 
     /// Writes the state file now (also done when the simulator is dropped).
@@ -510,12 +553,14 @@ impl K2Sim {
             .retain
             .iter()
             .map(|r| {
-                let a = self.mem.area(r.area);
-                state::RetainSaved {
-                    area: r.area.name().to_string(),
-                    first: r.first,
-                    data: state::hex(&a[r.first as usize..(r.first + r.len) as usize]),
-                }
+                let range = r.first as usize..(r.first + r.len) as usize;
+                let data = if r.area == Area::C {
+                    let bytes: Vec<u8> = self.mem.c[range].iter().flat_map(|v| v.to_be_bytes()).collect();
+                    state::hex(&bytes)
+                } else {
+                    state::hex(&self.mem.area(r.area)[range])
+                };
+                state::RetainSaved { area: r.area.name().to_string(), first: r.first, data }
             })
             .collect();
         let st = state::ModelState {
@@ -594,11 +639,17 @@ impl Device for K2Sim {
         self.injected_fault(items.iter().map(|(o, _)| o.key))?;
         let old_i = self.mem.i.clone();
         let mut raised = Vec::new();
+        let mut durable = false;
         for (o, v) in items {
             let k = K2Operand::from_key(o.key);
             let raw = o.dtype.encode(v);
             self.mem.write(&k, raw);
             self.after_write(&k, &mut raised);
+            durable |= self.backup.path.is_some() && self.keeps(k.area, k.byte, k.byte + k.width.bytes().max(1));
+        }
+        if durable {
+            // Acknowledged means kept: the state file holds the store before write returns.
+            self.save_state()?;
         }
         if self.mem.i != old_i {
             let now = self.last;

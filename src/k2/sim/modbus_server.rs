@@ -8,8 +8,8 @@
 //! §3.2.1) answered with *illegal data value*; a request outside one area with *illegal data
 //! address*; any other function with *illegal function*. A request for another unit id gets
 //! no reply at all, as from a real RTU slave (unit 0, broadcast, is executed without a
-//! reply). The TCP transports are tokio-modbus's server skeletons; RTU on a pty uses this
-//! crate's framing ([`super::rtu_frame`]) over a lean pty stream.
+//! reply). The transports' loops (connection limit, idle timeout, one decoder for every
+//! transport, silence-based RTU framing) are in [`super::modbus_net`].
 //!
 //! Scans: a K2 serves its Modbus slave ports between program scans. Before each request the
 //! server brings the simulation up to the clock ([`K2Sim::advance`]), which runs whatever the
@@ -20,17 +20,17 @@
 //! Injected faults ([`crate::k2::sim::fault`]) act here, on every transport: no reply, an
 //! exception, a late reply; a corrupted CRC on RTU; a dropped connection on TCP.
 
+pub use super::modbus_net::Limits;
 use crate::core::link::async_pty::AsyncPty;
 use crate::k2::instr::EventKind;
 use crate::k2::modbus_map::{self, Exception, Table};
 use crate::k2::operand::Area;
 use crate::k2::sim::fault::FaultKind;
-use crate::k2::sim::rtu_frame::{self, Frame};
 use crate::k2::sim::K2Sim;
 use std::future::{ready, Ready};
 use std::io;
 use std::sync::{Arc, Mutex, MutexGuard};
-use tokio::net::{TcpListener, TcpStream};
+use tokio::net::TcpListener;
 use tokio_modbus::server::Service;
 use tokio_modbus::{ExceptionCode, Request, Response, SlaveRequest};
 
@@ -40,8 +40,6 @@ use tokio_modbus::{ExceptionCode, Request, Response, SlaveRequest};
 pub struct K2Service {
     sim: Arc<Mutex<K2Sim>>,
     unit: u8,
-    /// This connection's socket (a duplicate handle), for the `drop` fault.
-    conn: Option<Arc<std::net::TcpStream>>,
 }
 
 /// A request served, with the injected fault that acted on it (if any), for the transport
@@ -63,7 +61,7 @@ impl From<Exception> for ExceptionCode {
 
 impl K2Service {
     pub fn new(sim: Arc<Mutex<K2Sim>>, unit: u8) -> K2Service {
-        K2Service { sim, unit, conn: None }
+        K2Service { sim, unit }
     }
 
     pub fn unit(&self) -> u8 {
@@ -170,6 +168,15 @@ fn write_words(sim: &mut K2Sim, area: Area, off: u32, words: &[u16]) {
     }
 }
 
+/// Makes a store durable before its reply goes out (`K2Sim::commit_store`); a state file
+/// that cannot be written is the device failing (exception 04), never a silent success.
+fn durable(sim: &mut K2Sim, area: Area, lo: u32, hi: u32) -> Result<(), Exception> {
+    sim.commit_store(area, lo, hi).map_err(|e| {
+        eprintln!("plcsh: {e}");
+        Exception::ServerDeviceFailure
+    })
+}
+
 /// Serves one request on the simulator (the unit id was already checked).
 fn serve(sim: &mut K2Sim, req: &Request<'_>) -> Result<Response, Exception> {
     use Table::*;
@@ -193,21 +200,25 @@ fn serve(sim: &mut K2Sim, req: &Request<'_>) -> Result<Response, Exception> {
         Request::WriteSingleCoil(a, v) => {
             let (area, off) = area_of(sim, 0x05, Coils, *a, 1)?;
             write_bits(sim, area, off, &[*v]);
+            durable(sim, area, off / 8, off / 8 + 1)?;
             Response::WriteSingleCoil(*a, *v)
         }
         Request::WriteMultipleCoils(a, bits) => {
             let (area, off) = area_of(sim, 0x0F, Coils, *a, bits.len())?;
             write_bits(sim, area, off, bits);
+            durable(sim, area, off / 8, (off + bits.len() as u32).div_ceil(8))?;
             Response::WriteMultipleCoils(*a, bits.len() as u16)
         }
         Request::WriteSingleRegister(a, w) => {
             let (area, off) = area_of(sim, 0x06, HoldingRegisters, *a, 1)?;
             write_words(sim, area, off, &[*w]);
+            durable(sim, area, 2 * off, 2 * off + 2)?;
             Response::WriteSingleRegister(*a, *w)
         }
         Request::WriteMultipleRegisters(a, words) => {
             let (area, off) = area_of(sim, 0x10, HoldingRegisters, *a, words.len())?;
             write_words(sim, area, off, words);
+            durable(sim, area, 2 * off, 2 * (off + words.len() as u32))?;
             Response::WriteMultipleRegisters(*a, words.len() as u16)
         }
         _ => return Err(Exception::IllegalFunction),
@@ -221,13 +232,9 @@ impl Service for K2Service {
     type Future = Ready<Result<Option<Response>, ExceptionCode>>;
 
     fn call(&self, req: SlaveRequest<'static>) -> Self::Future {
+        // A `drop` fault closes the connection in the served loops (`modbus_net`); through
+        // this interface it is no reply.
         let served = self.handle_with_faults(req.slave, &req.request);
-        if served.fault == Some(FaultKind::Drop) {
-            if let Some(c) = &self.conn {
-                // The client sees the connection closed instead of a reply.
-                let _ = c.shutdown(std::net::Shutdown::Both);
-            }
-        }
         ready(match served.reply {
             None => Ok(None),
             Some(Ok(r)) => Ok(Some(r)),
@@ -236,35 +243,15 @@ impl Service for K2Service {
     }
 }
 
-fn accept(service: &K2Service, stream: TcpStream) -> io::Result<Option<(K2Service, TcpStream)>> {
-    // One request in flight, small frames: send each reply at once.
-    stream.set_nodelay(true)?;
-    use std::os::fd::AsFd;
-    let dup = std::net::TcpStream::from(stream.as_fd().try_clone_to_owned()?);
-    let mut service = service.clone();
-    service.conn = Some(Arc::new(dup));
-    Ok(Some((service, stream)))
-}
-
-/// Serves Modbus TCP on `listener` until the future is dropped.
-pub async fn serve_tcp(listener: TcpListener, service: K2Service) -> io::Result<()> {
-    let server = tokio_modbus::server::tcp::Server::new(listener);
-    let on_connected = |stream, _addr| {
-        let r = accept(&service, stream);
-        async move { r }
-    };
-    server.serve(&on_connected, |e| eprintln!("plcsh sim serve: Modbus TCP connection ended: {e}")).await
+/// Serves Modbus TCP on `listener` until the future is dropped (`super::modbus_net`).
+pub async fn serve_tcp(listener: TcpListener, service: K2Service, limits: Limits) -> io::Result<()> {
+    super::modbus_net::serve_tcp(listener, service, limits).await
 }
 
 /// Serves Modbus RTU frames over TCP (what serial-to-Ethernet gateways in transparent
 /// mode carry) on `listener` until the future is dropped.
-pub async fn serve_rtu_over_tcp(listener: TcpListener, service: K2Service) -> io::Result<()> {
-    let server = tokio_modbus::server::rtu_over_tcp::Server::new(listener);
-    let on_connected = |stream, _addr| {
-        let r = accept(&service, stream);
-        async move { r }
-    };
-    server.serve(&on_connected, |e| eprintln!("plcsh sim serve: RTU-over-TCP connection ended: {e}")).await
+pub async fn serve_rtu_over_tcp(listener: TcpListener, service: K2Service, limits: Limits) -> io::Result<()> {
+    super::modbus_net::serve_rtu_over_tcp(listener, service, limits).await
 }
 
 /// Serves Modbus RTU on a pseudo-terminal until the future is dropped (framing in
@@ -276,42 +263,11 @@ pub async fn serve_rtu(pty: &AsyncPty, service: K2Service) -> io::Result<()> {
 
 /// Serves Modbus RTU frames on any byte stream (a pty, an in-memory pipe in tests) until the
 /// stream ends.
-pub async fn serve_rtu_stream<S>(mut s: S, service: K2Service) -> io::Result<()>
+pub async fn serve_rtu_stream<S>(s: S, service: K2Service) -> io::Result<()>
 where
     S: tokio::io::AsyncRead + tokio::io::AsyncWrite + Unpin,
 {
-    use tokio::io::{AsyncReadExt, AsyncWriteExt};
-    let mut buf: Vec<u8> = Vec::with_capacity(2 * rtu_frame::MAX_FRAME);
-    let mut chunk = [0u8; 512];
-    loop {
-        let n = s.read(&mut chunk).await?;
-        if n == 0 {
-            return Err(io::Error::new(io::ErrorKind::UnexpectedEof, "the stream closed"));
-        }
-        buf.extend_from_slice(&chunk[..n]);
-        while let Some(frame) = rtu_frame::next_frame(&mut buf) {
-            let (unit, function, reply, fault) = match frame {
-                Frame::Request { unit, request } => {
-                    let served = service.handle_with_faults(unit, &request);
-                    match served.reply {
-                        Some(reply) => (unit, request.function_code().value(), reply, served.fault),
-                        None => continue,
-                    }
-                }
-                Frame::Refuse { unit, function, exception } if unit == service.unit() => {
-                    (unit, function, Err(exception), None)
-                }
-                Frame::Refuse { .. } => continue,
-            };
-            let mut bytes = rtu_frame::encode(unit, function, &reply);
-            if fault == Some(FaultKind::BadCrc) {
-                if let Some(last) = bytes.last_mut() {
-                    *last ^= 0xFF;
-                }
-            }
-            s.write_all(&bytes).await?;
-        }
-    }
+    super::modbus_net::rtu_stream(s, service, None).await
 }
 
 #[cfg(test)]

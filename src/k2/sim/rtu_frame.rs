@@ -7,6 +7,17 @@
 //! know, where a K2 answers *illegal function*. Here the frame length follows from the
 //! function code for the codes the K2 implements (1–6, 15, 16); any other request ends
 //! where a valid CRC ends it, and is answered with exception 01.
+//!
+//! Resynchronisation is silence-based, as the serial line specification frames RTU
+//! (§2.5.1.1: a frame ends with 3.5 character times of silence): the server hands the
+//! buffer to [`end_of_frame`] when the line falls silent, which drops whatever could not be
+//! taken as a frame, so a bad CRC or a truncated request costs that request only. Finding
+//! where an unknown function's frame ends runs one CRC pass over the buffer (linear), so
+//! noise cannot stall the server.
+//!
+//! The PDU decoder ([`decode_pdu`]) and encoder ([`encode_pdu`]) are shared with the TCP
+//! transports (`super::modbus_net`), so every transport answers the same malformed request
+//! with the same exception.
 
 use tokio_modbus::{ExceptionCode, Request, Response};
 
@@ -69,8 +80,8 @@ pub fn next_frame(buf: &mut Vec<u8>) -> Option<Frame> {
                 }
             }
             None => {
-                // Unknown length: the frame ends where a CRC matches.
-                if let Some(n) = (4..=buf.len().min(MAX_FRAME)).find(|&n| crc_ok(&buf[..n])) {
+                // Unknown length: the frame ends where a CRC matches (one running CRC pass).
+                if let Some(n) = first_crc_end(&buf[..buf.len().min(MAX_FRAME)]) {
                     let frame: Vec<u8> = buf.drain(..n).collect();
                     return Some(Frame::Refuse {
                         unit: frame[0],
@@ -87,11 +98,153 @@ pub fn next_frame(buf: &mut Vec<u8>) -> Option<Frame> {
     }
 }
 
+/// The shortest prefix length ≥ 4 whose last two bytes are the CRC of the rest, found in
+/// one pass (the CRC of each prefix extends the previous one).
+fn first_crc_end(b: &[u8]) -> Option<usize> {
+    let mut crc = 0xFFFFu16;
+    for n in 0..b.len() {
+        // `crc` covers b[..n]; a frame of length n + 2 ends with that CRC.
+        if n >= 2 && n + 2 <= b.len() && crc == u16::from_le_bytes([b[n], b[n + 1]]) {
+            return Some(n + 2);
+        }
+        crc ^= b[n] as u16;
+        for _ in 0..8 {
+            crc = if crc & 1 != 0 { (crc >> 1) ^ 0xA001 } else { crc >> 1 };
+        }
+    }
+    None
+}
+
+/// What the bytes at the front of a buffer are, for a receiver framing by silence.
+#[derive(Debug, PartialEq)]
+pub enum Take {
+    /// A whole frame (taken off the buffer).
+    Frame(Frame),
+    /// The start of a frame: more bytes are needed.
+    More,
+    /// Not a frame (a bad CRC, no CRC within the longest frame): discard until silence.
+    Garbage,
+}
+
+/// Takes the frame at the very front of `buf`, without sliding through it: with
+/// silence-based framing a frame starts where the line fell quiet, so the work per byte
+/// received is bounded and noise costs no more than its length.
+pub fn take_frame(buf: &mut Vec<u8>) -> Take {
+    if buf.len() < 4 {
+        return Take::More;
+    }
+    let fc = buf[1];
+    let len = match fc {
+        0x01..=0x06 => Some(8),
+        0x0F | 0x10 if buf.len() >= 7 => Some(9 + buf[6] as usize),
+        0x0F | 0x10 => return Take::More,
+        _ => None,
+    };
+    match len {
+        Some(n) if n > MAX_FRAME => Take::Garbage,
+        Some(n) if buf.len() < n => Take::More,
+        Some(n) if crc_ok(&buf[..n]) => {
+            let frame: Vec<u8> = buf.drain(..n).collect();
+            Take::Frame(decode(&frame))
+        }
+        Some(_) => Take::Garbage,
+        None => match first_crc_end(&buf[..buf.len().min(MAX_FRAME)]) {
+            Some(n) => {
+                let frame: Vec<u8> = buf.drain(..n).collect();
+                Take::Frame(Frame::Refuse { unit: frame[0], function: fc, exception: ExceptionCode::IllegalFunction })
+            }
+            None if buf.len() >= MAX_FRAME => Take::Garbage,
+            None => Take::More,
+        },
+    }
+}
+
+/// A receiver framing by silence (module doc): bytes go in as they arrive, frames come out;
+/// after bytes that are no frame, everything up to the next silence is dropped.
+#[derive(Default)]
+pub struct Receiver {
+    buf: Vec<u8>,
+    discarding: bool,
+}
+
+impl Receiver {
+    /// True while bytes wait for the rest of their frame (or are being discarded), i.e.
+    /// while silence on the line means something.
+    pub fn pending(&self) -> bool {
+        !self.buf.is_empty() || self.discarding
+    }
+
+    /// Bytes arrived; returns the frames they complete.
+    pub fn bytes(&mut self, data: &[u8]) -> Vec<Frame> {
+        let mut out = Vec::new();
+        if self.discarding {
+            return out;
+        }
+        self.buf.extend_from_slice(data);
+        loop {
+            match take_frame(&mut self.buf) {
+                Take::Frame(f) => out.push(f),
+                Take::More => break,
+                Take::Garbage => {
+                    self.buf.clear();
+                    self.discarding = true;
+                    break;
+                }
+            }
+        }
+        out
+    }
+
+    /// The line fell silent: the frames still buffered, and a clean start.
+    pub fn silence(&mut self) -> Vec<Frame> {
+        self.discarding = false;
+        end_of_frame(&mut self.buf)
+    }
+}
+
+/// The line fell silent: takes the frames still in `buf`, then drops what is left (a
+/// damaged or truncated request, noise), so the next request starts clean. It slides
+/// through `buf` byte by byte, so it is meant for what [`Receiver`] holds at a silence (at
+/// most one frame's worth, under 270 bytes), not for arbitrary streams.
+pub fn end_of_frame(buf: &mut Vec<u8>) -> Vec<Frame> {
+    let mut out = Vec::new();
+    while !buf.is_empty() {
+        match next_frame(buf) {
+            Some(f) => out.push(f),
+            // What waits for bytes that will not come is not a frame: skip its first byte
+            // (a whole request may still follow a damaged one in the same burst).
+            None => {
+                buf.remove(0);
+            }
+        }
+    }
+    out
+}
+
 /// Decodes a complete, CRC-checked frame of a function code the K2 implements.
 fn decode(f: &[u8]) -> Frame {
-    let (unit, fc) = (f[0], f[1]);
-    let (a, q) = (be16(f, 2), be16(f, 4));
+    decode_pdu(f[0], &f[1..f.len() - 2])
+}
+
+/// Decodes a request PDU (function code and data) for `unit`: a request the K2 implements,
+/// or the exception a malformed one gets — 01 for a function it does not implement, 03 for
+/// a length, byte count or value that does not match the function (Modbus application
+/// protocol §6, §7).
+pub fn decode_pdu(unit: u8, pdu: &[u8]) -> Frame {
+    let fc = pdu.first().copied().unwrap_or(0);
     let bad = |e| Frame::Refuse { unit, function: fc, exception: e };
+    if !matches!(fc, 0x01..=0x06 | 0x0F | 0x10) {
+        return bad(ExceptionCode::IllegalFunction);
+    }
+    let fixed = matches!(fc, 0x01..=0x06);
+    if pdu.len() < 5 || (fixed && pdu.len() != 5) || (!fixed && pdu.len() < 6) {
+        return bad(ExceptionCode::IllegalDataValue);
+    }
+    let (a, q) = (be16(pdu, 1), be16(pdu, 3));
+    let data = if fixed { &[][..] } else { &pdu[6..] };
+    if !fixed && data.len() != pdu[5] as usize {
+        return bad(ExceptionCode::IllegalDataValue);
+    }
     let request = match fc {
         0x01 => Request::ReadCoils(a, q),
         0x02 => Request::ReadDiscreteInputs(a, q),
@@ -104,7 +257,6 @@ fn decode(f: &[u8]) -> Frame {
         },
         0x06 => Request::WriteSingleRegister(a, q),
         0x0F => {
-            let data = &f[7..f.len() - 2];
             if data.len() != (q as usize).div_ceil(8) {
                 return bad(ExceptionCode::IllegalDataValue);
             }
@@ -112,7 +264,6 @@ fn decode(f: &[u8]) -> Frame {
             Request::WriteMultipleCoils(a, bits.into())
         }
         0x10 => {
-            let data = &f[7..f.len() - 2];
             if data.len() != 2 * q as usize {
                 return bad(ExceptionCode::IllegalDataValue);
             }
@@ -126,6 +277,16 @@ fn decode(f: &[u8]) -> Frame {
 /// Encodes a reply frame (with CRC) for `unit`.
 pub fn encode(unit: u8, function: u8, reply: &Result<Response, ExceptionCode>) -> Vec<u8> {
     let mut f = vec![unit];
+    f.extend(encode_pdu(function, reply));
+    let crc = crc16(&f);
+    f.extend(crc.to_le_bytes());
+    f
+}
+
+/// Encodes a reply PDU: the function code and data, or the function code | 0x80 and the
+/// exception code.
+pub fn encode_pdu(function: u8, reply: &Result<Response, ExceptionCode>) -> Vec<u8> {
+    let mut f = Vec::new();
     let bits = |f: &mut Vec<u8>, b: &[bool]| {
         let mut packed = vec![0u8; b.len().div_ceil(8)];
         for (i, on) in b.iter().enumerate() {
@@ -161,15 +322,13 @@ pub fn encode(unit: u8, function: u8, reply: &Result<Response, ExceptionCode>) -
                     put(&mut f, *v);
                 }
                 _ => {
-                    f.truncate(1);
+                    f.clear();
                     f.push(function | 0x80);
                     f.push(u8::from(ExceptionCode::ServerDeviceFailure));
                 }
             }
         }
     }
-    let crc = crc16(&f);
-    f.extend(crc.to_le_bytes());
     f
 }
 
@@ -210,6 +369,55 @@ mod tests {
         );
         let mut bad = vec![0x01, 0x03, 0x00, 0x64, 0x00, 0x01, 0xC5, 0xD6];
         assert_eq!(next_frame(&mut bad), None, "a bad CRC gets no reply");
+        // Silence ends the damaged frame: the next request is taken whole.
+        assert!(end_of_frame(&mut bad).is_empty() && bad.is_empty());
+        let mut good = vec![0x01, 0x03, 0x00, 0x64, 0x00, 0x01, 0xC5, 0xD5];
+        assert_eq!(end_of_frame(&mut good).len(), 1);
+        // A truncated FC 16 (byte count promising more than comes) is dropped at silence too,
+        // and a whole request in the same burst after it is still taken.
+        let mut cut = vec![0x01, 0x10, 0x00, 0x64, 0x00, 0x7B, 0xF6, 0x11];
+        assert!(end_of_frame(&mut cut).is_empty() && cut.is_empty());
+        cut = vec![0x01, 0x10, 0x00, 0x64, 0x00, 0x7B, 0xF6, 0x11];
+        cut.extend([0x01, 0x03, 0x00, 0x64, 0x00, 0x01, 0xC5, 0xD5]);
+        assert_eq!(
+            end_of_frame(&mut cut),
+            vec![Frame::Request { unit: 1, request: Request::ReadHoldingRegisters(100, 1) }]
+        );
+    }
+
+    #[test]
+    fn noise_is_scanned_in_linear_time() {
+        // 16 KB of bytes that never end a frame, as the server's receiver gets them; then a
+        // request after the silence is taken whole.
+        let noise: Vec<u8> = (0..16_384u32).map(|i| (i * 7 + 3) as u8 | 0x80).collect();
+        let mut rx = Receiver::default();
+        let start = std::time::Instant::now();
+        let mut frames = Vec::new();
+        for chunk in noise.chunks(512) {
+            frames.extend(rx.bytes(chunk));
+        }
+        frames.extend(rx.silence());
+        assert!(start.elapsed() < std::time::Duration::from_secs(2), "{:?}", start.elapsed());
+        assert!(frames.is_empty() && !rx.pending());
+        let good = rx.bytes(&[0x01, 0x03, 0x00, 0x64, 0x00, 0x01, 0xC5, 0xD5]);
+        assert_eq!(good, vec![Frame::Request { unit: 1, request: Request::ReadHoldingRegisters(100, 1) }]);
+    }
+
+    #[test]
+    fn malformed_pdus_get_the_exception_the_specification_requires() {
+        let refuse = |pdu: &[u8]| match decode_pdu(1, pdu) {
+            Frame::Refuse { exception, .. } => Some(u8::from(exception)),
+            Frame::Request { .. } => None,
+        };
+        assert_eq!(refuse(&[0x2B, 0x0E, 0x01, 0x00]), Some(1), "MEI: not a K2 function");
+        assert_eq!(refuse(&[0x05, 0x00, 0x00, 0x12, 0x34]), Some(3), "FC 05 with an illegal coil value");
+        // FC 15 whose quantity (16 coils) needs 2 bytes but carries 1: exception 03, no panic.
+        assert_eq!(refuse(&[0x0F, 0x00, 0x00, 0x00, 0x10, 0x01, 0xFF]), Some(3));
+        assert_eq!(refuse(&[0x0F, 0x00, 0x00, 0x00, 0x10, 0x02, 0xFF]), Some(3), "byte count beyond the data");
+        assert_eq!(refuse(&[0x10, 0x00, 0x00, 0x00, 0x02, 0x02, 0, 0]), Some(3));
+        assert_eq!(refuse(&[0x03, 0x00, 0x00]), Some(3), "too short");
+        assert_eq!(refuse(&[]), Some(1));
+        assert_eq!(refuse(&[0x03, 0x00, 0x64, 0x00, 0x01]), None);
     }
 
     #[test]

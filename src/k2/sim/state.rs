@@ -4,8 +4,22 @@
 //! per-byte write counts (the manual: about 1 000 000 writes).
 //!
 //! Everything lives in one JSON state file — `~/.local/share/plcsh/state.json` by default,
-//! or `--state FILE` — holding one entry per model, written atomically (temporary file +
-//! rename) and restored when the simulator starts.
+//! or `--state FILE` — holding one entry per model, restored when the simulator starts.
+//!
+//! Durability (what a real K2 keeps through a power cut, the simulator keeps through
+//! `kill -9`): a store that touches the backup area or a retained range rewrites the file
+//! before it is acknowledged — a temporary file `.NAME.tmp` beside it, written and
+//! fsync'd, renamed over the file, and the directory fsync'd — so a crash at any moment
+//! leaves the old or the new file, never half of one, and every acknowledged store is in
+//! it. Chosen over a write-through journal for simplicity: the file stays one readable
+//! JSON document; the cost is measured in BENCHMARKS.md ("Durable retained writes").
+//! Stores elsewhere cost nothing extra.
+//!
+//! One process per state file: the simulator holds an advisory lock (`flock`) on
+//! `.NAME.lock` beside the file while it uses it, with its process id inside, so a second
+//! plcsh on the same file is refused naming the first instead of silently overwriting its
+//! state. The lock dies with its process (also on `kill -9`); the lock file itself stays,
+//! empty of meaning, and a stale `.NAME.tmp` from a crash is removed by the next owner.
 //!
 //! Write counting (stated assumption): every store that touches a backup byte counts as
 //! one E2PROM write of that byte, even when the value does not change — the manual does
@@ -44,6 +58,8 @@ pub struct Backup {
     pub retain: Vec<Retain>,
     /// The state file, when the simulator persists.
     pub path: Option<PathBuf>,
+    /// The lock held on the state file while this simulator uses it.
+    pub lock: Option<std::sync::Arc<std::fs::File>>,
     /// Virtual time this session's counting started.
     pub since: Duration,
 }
@@ -57,6 +73,7 @@ impl Default for Backup {
             session: vec![0; n],
             retain: Vec::new(),
             path: None,
+            lock: None,
             since: Duration::ZERO,
         }
     }
@@ -178,14 +195,21 @@ pub fn save(path: &Path, model: &str, state: ModelState) -> Result<()> {
     write_atomic(path, text.as_bytes())
 }
 
+/// The directory of `path` and a sibling name `.NAME.suffix` in it.
+fn sibling(path: &Path, suffix: &str) -> (PathBuf, PathBuf) {
+    let dir = path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new(".")).to_path_buf();
+    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_else(|| "state".into());
+    let s = dir.join(format!(".{name}.{suffix}"));
+    (dir, s)
+}
+
 /// Writes `bytes` to `path` through a temporary file in the same directory and a rename,
-/// so a crash leaves either the old or the new file, never half of one.
+/// both fsync'd (the file, then the directory), so a crash leaves either the old or the
+/// new file, never half of one, and a returned `Ok` means the new file is on disk.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
     use std::io::Write;
-    let dir = path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
-    std::fs::create_dir_all(dir).map_err(|e| Error::io(format!("cannot create {}", dir.display())).cause(e))?;
-    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_else(|| "state".into());
-    let tmp = dir.join(format!(".{name}.tmp-{}", std::process::id()));
+    let (dir, tmp) = sibling(path, "tmp");
+    std::fs::create_dir_all(&dir).map_err(|e| Error::io(format!("cannot create {}", dir.display())).cause(e))?;
     let fail = |e: std::io::Error| Error::io(format!("cannot write {}", path.display())).cause(e);
     let mut f = std::fs::File::create(&tmp).map_err(fail)?;
     f.write_all(bytes).map_err(fail)?;
@@ -194,7 +218,39 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
     std::fs::rename(&tmp, path).map_err(|e| {
         let _ = std::fs::remove_file(&tmp);
         fail(e)
-    })
+    })?;
+    std::fs::File::open(&dir).and_then(|d| d.sync_all()).map_err(fail)
+}
+
+/// Takes the state file's lock (module doc) or says who holds it; removes a temporary
+/// file a crashed owner left.
+pub fn lock(path: &Path) -> Result<std::sync::Arc<std::fs::File>> {
+    use std::io::{Read, Seek, Write};
+    use std::os::fd::AsRawFd;
+    let (dir, lock) = sibling(path, "lock");
+    std::fs::create_dir_all(&dir).map_err(|e| Error::io(format!("cannot create {}", dir.display())).cause(e))?;
+    let mut f = std::fs::OpenOptions::new()
+        .read(true)
+        .write(true)
+        .create(true)
+        .truncate(false)
+        .open(&lock)
+        .map_err(|e| Error::io(format!("cannot open {}", lock.display())).cause(e))?;
+    // SAFETY: flock on a file descriptor we own; no memory is involved.
+    if unsafe { libc::flock(f.as_raw_fd(), libc::LOCK_EX | libc::LOCK_NB) } != 0 {
+        let mut holder = String::new();
+        let _ = f.read_to_string(&mut holder);
+        let holder = holder.trim();
+        let who = if holder.is_empty() { "another process".to_string() } else { format!("process {holder}") };
+        return Err(Error::usage(format!("the state file {} is in use by {who}", path.display())).hint(
+            "one plcsh per state file: give this one its own (--state FILE) or none (--state none), or stop the other",
+        ));
+    }
+    let _ = f.set_len(0);
+    let _ = f.rewind();
+    let _ = write!(f, "{}", std::process::id());
+    let _ = std::fs::remove_file(sibling(path, "tmp").1);
+    Ok(std::sync::Arc::new(f))
 }
 
 #[cfg(test)]
@@ -236,6 +292,13 @@ mod tests {
         let leftovers =
             std::fs::read_dir(&dir).unwrap().filter(|e| e.as_ref().unwrap().file_name() != "s.json").count();
         assert_eq!(leftovers, 0, "no temporary file left behind");
+        let held = lock(&path).unwrap();
+        let e = lock(&path).unwrap_err();
+        assert!(e.message.contains(&format!("in use by process {}", std::process::id())), "{}", e.message);
+        drop(held);
+        let again = lock(&path).expect("free again once the holder is gone");
+        drop(again);
+        let _ = std::fs::remove_file(dir.join(".s.json.lock"));
         std::fs::write(&path, "{not json").unwrap();
         assert!(load(&path, "K205-16DT").is_err());
         let _ = std::fs::remove_dir_all(&dir);

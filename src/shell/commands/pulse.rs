@@ -70,9 +70,9 @@ fn instruction(sh: &mut Shell, args: Args, cmd: &str, usage: &str) -> Result<Out
     let warning = if cmd == "pls" { busy_check(sh, dev, ch, strict)? } else { None };
     let k2 = k2cmd::k2(sh, dev)?;
     let report = if cmd == "pls" { k2.pls(ch) } else { k2.pstop(ch) }.map_err(|e| e.device(&name))?;
-    let mut o = Outcome::new(cmd).text(report.clone()).with("report", report).with("channel", ch);
+    let sim = sh.session.simulated(dev);
+    let mut o = Outcome::new(cmd).text(report.clone()).with("report", report).with("channel", ch).acted_on(&name, sim);
     o.notes.extend(warning);
-    o.device = Some(name);
     Ok(o)
 }
 
@@ -127,7 +127,8 @@ fn model_of(sh: &mut Shell, dev: usize) -> Result<(&'static crate::k2::catalog::
 fn run_plan(sh: &mut Shell, dev: usize, cmd: &str, plan: &helpers::Plan) -> Result<Outcome> {
     let name = k2cmd::name(sh, dev);
     let d = helpers::execute(sh.session.entry(dev).device.as_mut(), plan).map_err(|e| e.device(&name))?;
-    Ok(done_outcome(cmd, name, d))
+    let sim = sh.session.simulated(dev);
+    Ok(done_outcome(cmd, name.clone(), d).acted_on(&name, sim))
 }
 
 fn pto(sh: &mut Shell, args: Args) -> Result<Outcome> {

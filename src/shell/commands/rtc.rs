@@ -34,6 +34,7 @@ fn rtc(sh: &mut Shell, args: Args) -> Result<Outcome> {
         "sync" => Some(host_local_now()),
         other => return Err(Error::usage(format!("unknown `rtc {other}`")).column(args.offset).hint(RTC.usage)),
     };
+    let changed = set.is_some();
     if let Some(t) = set {
         k2.set_rtc(t).map_err(|e| e.device(&name))?;
     }
@@ -44,6 +45,10 @@ fn rtc(sh: &mut Shell, args: Args) -> Result<Outcome> {
         .with("rtc", t.to_string())
         .with("weekday", t.weekday())
         .with("bcd", t.to_bcd8());
+    if changed {
+        let sim = sh.session.simulated(dev);
+        o = o.acted_on(&name, sim);
+    }
     o.device = Some(name);
     Ok(o)
 }

@@ -67,7 +67,8 @@ fn servo(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let ops: &mut dyn ServoOps = entry.device.as_servo().expect("picked a servo");
     let w = Waiter { clock, interrupt: &interrupt };
     let at = |c: usize| args.offset + c;
-    let r = match sub {
+    // Every error of a subcommand names the drive (a refusal by the write guard included).
+    let r = (|| match sub {
         "status" => status(ops),
         "enable" => {
             let steps = ds402::enable(ops, &w)?;
@@ -129,11 +130,12 @@ fn servo(sh: &mut Shell, args: Args) -> Result<Outcome> {
         "encoder" => encoder(ops, rest, args.offset, at(col)),
         "raw" => raw(ops, rest, args.offset, at(col)),
         "sim" => sim(ops, rest, args.offset, at(col)),
-        other => {
-            return Err(Error::usage(format!("unknown `servo {other}`")).column(at(col)).hint(SERVO.usage));
-        }
-    };
+        other => Err(Error::usage(format!("unknown `servo {other}`")).column(at(col)).hint(SERVO.usage)),
+    })();
     r.map(|mut o| {
+        if matches!(sub, "enable" | "move" | "jog" | "home") {
+            o = o.acted_on(&name, simulated);
+        }
         o.device = Some(name.clone());
         o
     })

@@ -39,7 +39,7 @@ pub const UMPK: CommandSpec = CommandSpec {
 };
 
 fn is_umpk(sh: &mut Shell, i: usize) -> bool {
-    sh.session.entry(i).device.family_ops().is_some_and(|a| a.is::<Driver>())
+    sh.session.entry(i).device.family_ops_for(&[]).ok().flatten().is_some_and(|a| a.is::<Driver>())
 }
 
 fn pick<'a>(sh: &mut Shell, words: &'a [Word<'a>]) -> Result<(usize, &'a [Word<'a>])> {
@@ -67,8 +67,21 @@ fn pick<'a>(sh: &mut Shell, words: &'a [Word<'a>]) -> Result<(usize, &'a [Word<'
     }
 }
 
+/// The UMPK behind device `dev` for a command that only reads it (or drives the simulator's
+/// own inputs, which a simulator control is, as on the K2).
 fn driver(sh: &mut Shell, dev: usize) -> &mut Driver {
-    sh.session.entry(dev).device.family_ops().and_then(|a| a.downcast_mut::<Driver>()).expect("picked a UMPK")
+    changing(sh, dev, "").expect("reads are always permitted")
+}
+
+/// The UMPK behind device `dev` for a command that changes the controller (`what`: reset,
+/// echo, program, errors clear, send): the write guard checks it first and refuses the whole
+/// command, naming the rule (`Device::family_ops_for`). An allow list names it as `umpk:WHAT`.
+fn changing<'a>(sh: &'a mut Shell, dev: usize, what: &str) -> Result<&'a mut Driver> {
+    let change =
+        crate::core::device::Change::Action { what: format!("umpk {what}"), touches: vec![format!("umpk:{what}")] };
+    let changes: &[crate::core::device::Change] = if what.is_empty() { &[] } else { std::slice::from_ref(&change) };
+    let ops = sh.session.entry(dev).device.family_ops_for(changes)?;
+    Ok(ops.and_then(|a| a.downcast_mut::<Driver>()).expect("picked a UMPK"))
 }
 
 fn umpk(sh: &mut Shell, args: Args) -> Result<Outcome> {
@@ -91,6 +104,7 @@ fn umpk(sh: &mut Shell, args: Args) -> Result<Outcome> {
             };
             Ok(Outcome::new("umpk").text(format!("program info {shown}")).with("program_info", text))
         }
+        "errors" if rest.first().is_some_and(|w| w.1 == "clear") => errors(changing(sh, dev, "errors-clear")?, rest),
         "errors" => errors(driver(sh, dev), rest),
         "timing" => {
             let t = driver(sh, dev).timing()?;
@@ -110,7 +124,7 @@ fn umpk(sh: &mut Shell, args: Args) -> Result<Outcome> {
                 .with("total_us", t.total_us()))
         }
         "reset" => {
-            driver(sh, dev).reset()?;
+            changing(sh, dev, "reset")?.reset()?;
             Ok(Outcome::new("umpk").text("reset: the controller restarted (R received; echo is on)"))
         }
         "echo" => {
@@ -119,12 +133,12 @@ fn umpk(sh: &mut Shell, args: Args) -> Result<Outcome> {
                 Some("off") => false,
                 _ => return Err(Error::usage("umpk echo on|off").column(col)),
             };
-            driver(sh, dev).set_echo(on)?;
+            changing(sh, dev, "echo")?.set_echo(on)?;
             Ok(Outcome::new("umpk").text(format!("echo {}", if on { "on" } else { "off" })).with("echo", on))
         }
         "monitor" => monitor(sh, dev, rest),
         "program" => program(sh, dev, rest, col),
-        "send" => send(driver(sh, dev), rest, col),
+        "send" => send(changing(sh, dev, "send")?, rest, col),
         "sim" => sim(driver(sh, dev), rest, col),
         other => Err(Error::usage(format!("unknown `umpk {other}`")).column(col).hint(UMPK.usage)),
     };
@@ -401,7 +415,7 @@ fn program(sh: &mut Shell, dev: usize, rest: &[Word], col: usize) -> Result<Outc
             let _ = std::io::stderr().flush();
         }
     };
-    let d = driver(sh, dev);
+    let d = changing(sh, dev, "program")?;
     let r = d.program(&prog, info.as_deref(), &mut progress);
     if show {
         eprint!("\r\x1b[2K");

@@ -1,0 +1,237 @@
+//! Entry points for the fuzz targets in `fuzz/`: one function per parser or decoder that
+//! takes outside input, each taking arbitrary bytes. The rule they check is the project's:
+//! outside input never panics and is handled in time linear in its length. The cargo-fuzz
+//! targets (`fuzz/fuzz_targets/*.rs`, nightly) call these; `tests/fuzz_corpus.rs` (stable,
+//! `cargo test`) replays every corpus input and every input that ever crashed through the
+//! same functions, so a fixed bug stays fixed.
+//!
+//! A new parser adds one function here and one row in [`TARGETS`] (and a one-line target
+//! file in `fuzz/fuzz_targets/`, plus seed inputs in `fuzz/corpus/NAME/`).
+
+use crate::core::url::DeviceUrl;
+use crate::core::{Clock, DataType, OperandSpace};
+use crate::k2::catalog::MODELS;
+use crate::k2::space::K2Space;
+use crate::k2::Event;
+use std::path::Path;
+
+/// A target's entry point.
+pub type Target = fn(&[u8]);
+
+/// Every target: name (the directory under `fuzz/corpus/` and `fuzz/regressions/`, and the
+/// cargo-fuzz target) and entry point.
+pub const TARGETS: &[(&str, Target)] = &[
+    ("operand", operand),
+    ("literal", literal),
+    ("lexer", lexer),
+    ("url", url),
+    ("profile", profile),
+    ("completion", completion),
+    ("servo_frame", servo_frame),
+    ("servo_units", servo_units),
+    ("modbus_rtu", modbus_rtu),
+    ("modbus_tcp", modbus_tcp),
+    ("agent_mailbox", agent_mailbox),
+    ("agent_base", agent_base),
+];
+
+fn text(data: &[u8]) -> String {
+    String::from_utf8_lossy(data).into_owned()
+}
+
+/// The K2 operand grammar, bound to every model (bounds, hints' "last valid" operand).
+pub fn operand(data: &[u8]) {
+    let t = text(data);
+    let _ = crate::k2::operand::parse_expr(&t);
+    for m in MODELS {
+        let space = K2Space::new(m);
+        if let Ok(ops) = space.parse(&t) {
+            for op in ops.iter().take(64) {
+                let _ = space.name(op);
+                let _ = space.describe(op);
+            }
+        }
+        let _ = space.complete(&t);
+    }
+}
+
+/// IEC literals and durations, fitted into every type.
+pub fn literal(data: &[u8]) {
+    let t = text(data);
+    if let Ok(lit) = crate::core::literal::parse_literal(&t) {
+        for d in DataType::ALL {
+            let _ = lit.fit(d, d.bits());
+        }
+    }
+    let _ = crate::core::literal::parse_duration_us(&t);
+    let _ = crate::k2::helpers::parse_freq_hz(&t);
+}
+
+/// The command-line lexer: commands, words, options.
+pub fn lexer(data: &[u8]) {
+    let t = text(data);
+    if let Ok(parts) = crate::shell::lex::split_commands(&t) {
+        for (_, p) in parts {
+            if let Ok(w) = crate::shell::lex::words(p) {
+                let _ = crate::shell::lex::options(&w);
+            }
+        }
+    }
+}
+
+/// Device URLs.
+pub fn url(data: &[u8]) {
+    if let Ok(u) = DeviceUrl::parse(&text(data)) {
+        let _ = u.param_num::<u32>("baud");
+        let _ = u.expect_params(&["unit", "model"]);
+    }
+}
+
+/// The device profile file, and the write rules built from it.
+pub fn profile(data: &[u8]) {
+    let p = crate::profile::Profiles::parse(&text(data), Path::new("fuzz/devices.toml"));
+    let space = K2Space::new(&MODELS[0]);
+    for prof in p.list() {
+        let _ = crate::profile::Guard::build(prof, &space);
+    }
+}
+
+/// Completion and the inline hint (run on every keystroke), at every cursor position.
+pub fn completion(data: &[u8]) {
+    use crate::shell::complete::{complete, hint, DeviceView, View};
+    let t = text(data);
+    let k205 = K2Space::new(&MODELS[0]);
+    let servo = crate::servo::objects::ServoSpace::new(Default::default());
+    let files = |_: &str| Vec::new();
+    let view = View {
+        devices: vec![
+            DeviceView { name: "plc", family: "k2", model: MODELS[0].name, space: &k205 },
+            DeviceView { name: "servo", family: "servo", model: "FD", space: &servo },
+        ],
+        current: Some(0),
+        profiles: Vec::new(),
+        files: &files,
+    };
+    let ends: Vec<usize> = t.char_indices().map(|(i, _)| i).chain([t.len()]).collect();
+    // Every 8th position keeps a long input linear overall (each call is linear itself).
+    for &pos in ends.iter().step_by(8.max(ends.len() / 64)) {
+        let _ = complete(&t, pos, &view);
+        let _ = hint(&t, pos, &view);
+    }
+}
+
+/// The servo's 10-byte frames as a stream, and replies checked against requests.
+pub fn servo_frame(data: &[u8]) {
+    use crate::servo::frame::{decode_reply, Decoded, FrameBuffer, Size};
+    let mut buf = FrameBuffer::new();
+    buf.push(data);
+    let mut frames = Vec::new();
+    loop {
+        match buf.next_frame() {
+            Decoded::NeedMore => break,
+            Decoded::Frame(f) => frames.push(f),
+            Decoded::Bad(..) => {}
+        }
+    }
+    for pair in frames.windows(2) {
+        for size in [Size::B1, Size::B2, Size::B4] {
+            let _ = decode_reply(&pair[0], &pair[1].to_bytes(), size);
+        }
+    }
+}
+
+/// Servo object names and values with units (`300rpm`, `100rps/s`, `2.5rev`).
+pub fn servo_units(data: &[u8]) {
+    use crate::servo::objects::{self, ObjRef, ServoSpace};
+    use crate::servo::units::{self, Resolution, Unit};
+    let t = text(data);
+    let _ = units::parse_resolution(&t);
+    let _ = objects::parse(&t);
+    let r = data.first().map(|b| 1u32 << (b % 32)).unwrap_or(10_000);
+    for unit in [Unit::None, Unit::Bits, Unit::Increments, Unit::Speed, Unit::Accel, Unit::Mode] {
+        let _ = units::parse_engineering(&t, unit, r);
+    }
+    let space = ServoSpace::new(Resolution::new(r));
+    let _ = space.parse(&t);
+    for name in ["target_position", "profile_velocity", "profile_acceleration", "controlword"] {
+        let _ = space.parse_value(&ObjRef::of(objects::named(name)), &t);
+    }
+}
+
+/// A fresh simulated K2 behind a Modbus service (unit 1).
+fn service() -> crate::k2::sim::modbus_server::K2Service {
+    let sim = crate::k2::sim::open("K205-16DT", Clock::stepped()).expect("the default model");
+    crate::k2::sim::modbus_server::K2Service::new(std::sync::Arc::new(std::sync::Mutex::new(sim)), 1)
+}
+
+/// Modbus RTU framing on a serial line, in the chunks the bytes arrive in, and the
+/// requests served.
+pub fn modbus_rtu(data: &[u8]) {
+    use crate::k2::sim::rtu_frame::{self, Frame};
+    let svc = service();
+    // The server's receiver, with the line falling silent after every fourth chunk.
+    let mut rx = rtu_frame::Receiver::default();
+    let mut frames = Vec::new();
+    for (i, chunk) in data.chunks(37).enumerate() {
+        frames.extend(rx.bytes(chunk));
+        if i % 4 == 3 {
+            frames.extend(rx.silence());
+        }
+    }
+    frames.extend(rx.silence());
+    for f in frames {
+        if let Frame::Request { unit, request } = f {
+            if let Some(r) = svc.handle(unit, &request) {
+                let _ = rtu_frame::encode(unit, request.function_code().value(), &r);
+            }
+        }
+    }
+}
+
+/// Modbus TCP (MBAP header + PDU) as the server frames it, and the requests served.
+pub fn modbus_tcp(data: &[u8]) {
+    use crate::k2::sim::rtu_frame::{self, Frame};
+    let svc = service();
+    let mut rest = data;
+    while rest.len() >= 7 {
+        let len = u16::from_be_bytes([rest[4], rest[5]]) as usize;
+        if !(2..=254).contains(&len) || rest.len() < 6 + len {
+            break;
+        }
+        let (unit, pdu) = (rest[6], &rest[7..6 + len]);
+        if let Frame::Request { request, .. } = rtu_frame::decode_pdu(unit, pdu) {
+            if let Some(r) = svc.handle(unit, &request) {
+                let _ = rtu_frame::encode_pdu(request.function_code().value(), &r);
+            }
+        }
+        rest = &rest[6 + len..];
+    }
+}
+
+/// The PLC-side helper's mailbox as the simulated helper reads it: arbitrary bytes in the
+/// mailbox, one scan, and the status a client would parse.
+pub fn agent_mailbox(data: &[u8]) {
+    use crate::core::Device;
+    use crate::k2::agent::protocol::{self, Status};
+    let clock = Clock::stepped();
+    let mut sim = crate::k2::sim::open("K205-16DT", clock.clone()).expect("the default model");
+    let base = protocol::DEFAULT_BASE;
+    sim.enable_agent(base).expect("the default base");
+    clock.step(std::time::Duration::from_millis(5));
+    sim.advance();
+    let b = base as usize;
+    let n = data.len().min(protocol::SIZE as usize);
+    sim.mem.v[b..b + n].copy_from_slice(&data[..n]);
+    clock.step(std::time::Duration::from_millis(5));
+    sim.advance();
+    let words: Vec<u16> =
+        sim.mem.v[b..b + protocol::SIZE as usize].chunks_exact(2).map(|c| u16::from_be_bytes([c[0], c[1]])).collect();
+    let _ = Status::parse(&words);
+    let _: Vec<Event> = crate::k2::K2Ops::events(&mut sim, true).unwrap_or_default();
+    let _ = sim.read(&[]);
+}
+
+/// The helper's mailbox address (`--agent VB3400`, `agent il`).
+pub fn agent_base(data: &[u8]) {
+    let _ = crate::k2::agent::protocol::parse_base(&text(data));
+}
