@@ -57,6 +57,9 @@ pub struct Guarded {
     k2_model: Option<&'static Model>,
     backup: (u32, u32),
     servo: Option<(u8, units::Resolution)>,
+    /// A served simulated drive's control socket (`servo sim …`: simulation control, which
+    /// the guard passes as it passes the in-process simulator's).
+    servo_control: Option<std::path::PathBuf>,
 }
 
 impl Guarded {
@@ -66,7 +69,8 @@ impl Guarded {
             None => (None, (0, 0)),
         };
         let servo = inner.as_servo().map(|s| (s.drive_id(), s.resolution()));
-        Guarded { inner, rules, session_read_only, k2_model, backup, servo }
+        let servo_control = inner.as_servo().and_then(|s| s.sim_control());
+        Guarded { inner, rules, session_read_only, k2_model, backup, servo, servo_control }
     }
 
     /// The profile rules, for `devices`.
@@ -306,6 +310,9 @@ impl ServoOps for Guarded {
     }
     fn simulator(&mut self) -> Option<Arc<Mutex<crate::servo::sim::SimLine>>> {
         self.servo_ops().simulator()
+    }
+    fn sim_control(&self) -> Option<std::path::PathBuf> {
+        self.servo_control.clone()
     }
     fn permits(&self, changes: &[Change]) -> Result<()> {
         self.check_changes(changes)

@@ -183,7 +183,7 @@ fn a_second_process_on_a_state_file_is_refused_naming_the_first() {
     assert_eq!(served.ready["state"].as_str(), Some(s));
     let o = run(&["--state", s, "-c", "get VB3648"], "");
     assert!(!o.status.success());
-    let text = stdout(&o);
+    let text = String::from_utf8_lossy(&o.stderr).into_owned(); // errors go to stderr
     assert!(text.contains("in use by process") && text.contains(&served.child.id().to_string()), "{text}");
     // A served K2 keeps its state in its own file.
     let url = format!("plc=tcp://{}?model=K205-16DT", served.ready["tcp"].as_str().unwrap());
@@ -200,7 +200,8 @@ fn retention_is_limited_to_the_models_size_and_counters_can_be_retained() {
     let state = dir.join("state.json");
     let s = state.to_str().unwrap();
     let o = run(&["--model", "K204ET-16DT", "--state", s, "-c", "sim retain VB0..VB3000"], "");
-    assert!(stdout(&o).contains("retains at most"), "{}", stdout(&o));
+    let err = String::from_utf8_lossy(&o.stderr).into_owned(); // errors go to stderr
+    assert!(err.contains("retains at most"), "{err}");
     let o = run(&["--state", s, "-c", "sim retain VB0..VB9 C0..C3; set C2=77, VB1=5"], "");
     assert!(o.status.success(), "{}", stdout(&o));
     let o = run(&["--json", "--state", s, "-c", "get C2 VB1"], "");

@@ -51,6 +51,7 @@ const SERVO_WRITES: &[(&str, &[&str])] = &[
             "servo move rel 10 speed=100rpm",
             "servo jog 100rpm",
             "servo home method=35",
+            "servo halt",
             "servo save",
             "servo raw 01 2B 40 60 00 0F 00 00 00",
             "servo raw 01 2F 60 60 00 03 00 00 00",
@@ -76,6 +77,8 @@ const NOT_WRITES: &[(&str, &str)] = &[
     ("agent", "reads the helper's status"),
     ("help", "text"),
     ("quit", "session"),
+    ("models", "text: the model catalogue"),
+    ("umpk", "a UMPK command: its changes (reset, echo, program, errors clear, send) are walked in umpk_commands_that_change_the_controller_are_refused"),
 ];
 
 /// Lua methods that change a device, with a call that makes them.
@@ -101,6 +104,12 @@ const BRIDGE_WRITES: &[(&str, &str)] = &[
     ("jog", "servo:jog{rpm=100}"),
     ("home", "servo:home()"),
     ("save", "servo:save()"),
+    ("halt", "servo:halt()"),
+    ("umpk_reset", "lab:umpk_reset()"),
+    ("umpk_echo", "lab:umpk_echo(\"off\")"),
+    ("umpk_clear_errors", "lab:umpk_clear_errors()"),
+    ("umpk_program", "lab:umpk_program(\"{hex}\")"),
+    ("umpk_send", "lab:umpk_send(\"?03FD\")"),
 ];
 
 /// Lua methods that change no device, and why.
@@ -125,6 +134,24 @@ const BRIDGE_NOT_WRITES: &[(&str, &str)] = &[
     ("encoder", "client-side unit conversion"),
     ("sim_fault", "simulation control"),
     ("sim_switch", "simulation control"),
+    ("sim_pulses", "simulation control"),
+    ("inject_fault", "simulation control"),
+    ("injected_faults", "simulation control"),
+    ("program_load", "simulation control: the simulated CPU"),
+    ("program", "simulation control: the simulated CPU"),
+    ("cpu", "simulation control: the simulated CPU"),
+    ("scan", "simulation control: the simulated CPU"),
+    ("breakpoint", "simulation control: the simulated CPU"),
+    ("step_instruction", "simulation control: the simulated CPU"),
+    ("step_network", "simulation control: the simulated CPU"),
+    ("trace", "reads (samples returned to the script)"),
+    ("umpk_info", "reads"),
+    ("umpk_program_info", "reads"),
+    ("umpk_errors", "reads"),
+    ("umpk_timing", "reads"),
+    ("umpk_monitor", "reads"),
+    ("umpk_sim_input", "simulation control"),
+    ("umpk_sim_reference", "simulation control"),
 ];
 
 #[test]
@@ -187,12 +214,13 @@ fn ok(sh: &mut Shell, line: &str) {
 }
 
 /// Everything a K2 command could change, read through the guarded device: V (without
-/// the helper's mailbox VB3400…VB3571, which every helper request writes), SM (without
+/// the helper's mailbox and scratch bytes VB3400…VB3587, which the helper program itself
+/// writes as it runs), SM (without
 /// SMB0's clock bits), Q, M, the
 /// clock's year.
 fn k2_state(sh: &mut Shell) -> Vec<String> {
     let mut lines = Vec::new();
-    for r in ["VB0..VB3399", "VB3572..VB4095", "SMB1..SMB549", "QB0..QB1", "MB0..MB31"] {
+    for r in ["VB0..VB3399", "VB3588..VB4095", "SMB1..SMB549", "QB0..QB1", "MB0..MB31"] {
         let got = sh.session.get(&[r]).unwrap_or_else(|e| panic!("get {r}: {e}"));
         lines.extend(got.iter().map(|(_, r)| format!("{}={}", r.operand, r.value)));
     }
@@ -326,5 +354,42 @@ fn a_real_device_opens_no_default_simulator_and_moving_lines_say_sim_or_real() {
     for v in json_lines(&o) {
         assert_eq!(v["simulated"], true, "{v}");
         assert!(v["message"].as_str().unwrap().starts_with("servo(sim): "), "{v}");
+    }
+}
+
+/// The UMPK's commands that change the controller (reset, echo, programming, clearing the
+/// error history, a hand-typed command) are refused whole under `read_only` and under an
+/// allow list (which names operands: none of these is one), naming the rule.
+#[test]
+fn umpk_commands_that_change_the_controller_are_refused() {
+    let dir = scratch("umpk");
+    let hex = dir.join("p.hex");
+    std::fs::write(&hex, ":0400000001020304F2\n:00000001FF\n").unwrap();
+    let (file, p) = profiles(&dir, "sim-umpk:UMPK16", "M0");
+    let hexs = hex.to_str().unwrap();
+    let lines: Vec<String> = ["umpk reset", "umpk echo off", "umpk errors clear", "umpk send ?03FD"]
+        .iter()
+        .map(|l| l.to_string())
+        .chain([format!("umpk program {hexs}")])
+        .chain(
+            BRIDGE_WRITES
+                .iter()
+                .filter(|(_, c)| c.starts_with("lab:"))
+                .map(|(_, c)| format!("lua {}", c.replace("{hex}", hexs))),
+        )
+        .collect();
+    for (profile, rule) in [("ro", "read_only"), ("one", "allow list")] {
+        let mut sh = shell(Clock::stepped(), &p, "lab", profile);
+        let before = refusal(&mut sh, "umpk info");
+        assert!(before.is_none(), "reads pass: {before:?}");
+        for line in &lines {
+            let e = refusal(&mut sh, line).unwrap_or_else(|| panic!("umpk {profile}: `{line}` was not refused"));
+            assert!(
+                e.contains(rule) && e.contains(&format!("{}:", file.display())),
+                "umpk {profile}: `{line}`: the refusal names the rule and the file: {e}"
+            );
+        }
+        let info = sh.exec("umpk program-info").remove(0).expect("reads pass");
+        assert_eq!(info.data["program_info"].as_str().map(str::trim), Some(""), "nothing was programmed");
     }
 }

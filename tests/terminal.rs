@@ -149,7 +149,7 @@ fn pasted_blocks_run_every_line_in_order() {
         let home = std::env::temp_dir().join(format!("plcsh-tmux-paste-{}-{bracketed}", std::process::id()));
         std::fs::create_dir_all(&home).unwrap();
         let Some(t) = Tmux::start(&home) else { return };
-        t.wait_for("the prompt", |s| s.contains("plc>"));
+        t.wait_for("the prompt", |s| s.contains("plc(sim)>"));
         let block = "set VW0=11\nget VW0\nget VW2; get Q0.9; set VW4=99\nset VW6=33\nget VW4 VW6\n";
         assert!(t.tmux(&["set-buffer", "-b", "p", block]));
         let mut paste = vec!["paste-buffer", "-d", "-b", "p", "-t", "t"];
@@ -166,9 +166,9 @@ fn pasted_blocks_run_every_line_in_order() {
         assert!(s.contains("11"), "set VW0=11 then get VW0 ran:\n{s}");
         assert!(s.contains("Q0.9"), "the bad operand is reported:\n{s}");
         // `set VW4=99` came after the failing command on its line, so VW4 still reads 0.
-        // The output after the last line ran (the echo `plc> get VW4 VW6`).
+        // The output after the last line ran (the echo `plc(sim)> get VW4 VW6`).
         let lines: Vec<&str> = s.lines().collect();
-        let at = lines.iter().rposition(|l| l.starts_with("plc> get VW4 VW6")).expect("the last line echoed");
+        let at = lines.iter().rposition(|l| l.starts_with("plc(sim)> get VW4 VW6")).expect("the last line echoed");
         let after = &lines[at + 1..];
         assert!(after.iter().any(|l| l.starts_with("VW6") && l.contains("33")), "{s}");
         assert!(after.iter().any(|l| l.trim_end() == "VW4  0"), "VW4 was not set:\n{s}");
@@ -189,12 +189,12 @@ fn help_and_models_fit_80_columns() {
     let home = std::env::temp_dir().join(format!("plcsh-tmux-80-{}", std::process::id()));
     std::fs::create_dir_all(&home).unwrap();
     let Some(t) = Tmux::start_sized(&home, 80, 60) else { return };
-    t.wait_for("the prompt", |s| s.contains("plc>"));
+    t.wait_for("the prompt", |s| s.contains("plc(sim)>"));
     for (cmd, expect) in [("help", "help COMMAND"), ("models", "models MODEL")] {
         t.keys(&["C-l"]);
         t.literal(cmd);
         t.keys(&["Enter"]);
-        let s = t.wait_for(cmd, |s| s.contains(expect) && s.matches("plc>").count() >= 2);
+        let s = t.wait_for(cmd, |s| s.contains(expect) && s.matches("plc(sim)>").count() >= 2);
         // A line wrapped by the terminal fills all 80 columns and continues below: none may.
         let full: Vec<&str> = s.lines().filter(|l| l.chars().count() >= 80).collect();
         assert!(full.is_empty(), "`{cmd}` wraps at 80 columns:\n{s}");
@@ -202,8 +202,8 @@ fn help_and_models_fit_80_columns() {
     // A long inline hint (the servo usage) is cut at the edge instead of wrapping under the prompt.
     t.keys(&["C-l"]);
     t.literal("servo ");
-    let s = t.wait_for("the servo hint", |s| s.lines().any(|l| l.starts_with("plc> servo ") && l.contains('…')));
-    let prompt: Vec<&str> = s.lines().skip_while(|l| !l.starts_with("plc> servo ")).collect();
+    let s = t.wait_for("the servo hint", |s| s.lines().any(|l| l.starts_with("plc(sim)> servo ") && l.contains('…')));
+    let prompt: Vec<&str> = s.lines().skip_while(|l| !l.starts_with("plc(sim)> servo ")).collect();
     assert!(prompt[0].chars().count() < 80, "{s}");
     assert!(prompt.get(1).is_none_or(|l| l.trim().is_empty()), "nothing wrapped below the prompt:\n{s}");
     t.keys(&["C-u"]);

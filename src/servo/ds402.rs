@@ -528,6 +528,7 @@ pub fn wait_target(ops: &mut dyn ServoOps, w: &Waiter, timeout: Duration) -> Res
 /// drive last saw them, so a move or jog brakes to a stop and resumes on release (CiA 402).
 /// Returns the controlword written.
 pub fn halt(ops: &mut dyn ServoOps, on: bool) -> Result<u16> {
+    declare(ops, &["controlword"])?;
     require_enabled(ops, if on { "halt" } else { "release halt" })?;
     let cw = read(ops, "controlword")? as u16;
     let new = if on { cw | cw::HALT } else { cw & !cw::HALT };
