@@ -200,6 +200,9 @@ fn proxy(sim: &PathBuf) -> (PathBuf, Arc<AtomicU32>, Arc<AtomicU32>) {
     let bad = Arc::new(AtomicU32::new(0));
     let spoil = bad.clone();
     std::thread::spawn(move || {
+        // Our slave handle stays open while the proxy runs: with no slave open, a read on
+        // the master fails (EIO) and would end the proxy before the driver opened the path.
+        let _slave = slave;
         let mut buf = [0u8; 256];
         while let Ok(n) = from_drv.read(&mut buf) {
             if n == 0 {
@@ -237,8 +240,6 @@ fn proxy(sim: &PathBuf) -> (PathBuf, Arc<AtomicU32>, Arc<AtomicU32>) {
             }
         }
     });
-    // The driver opens the slave path; our handle can go.
-    drop(slave);
     (path, frames, bad)
 }
 
@@ -248,8 +249,7 @@ fn bad_sums_are_retried_three_times_over_a_real_pty() {
     // Three spoiled replies: the fourth frame is answered and used.
     let (path, frames, bad) = proxy(&srv.port);
     bad.store(3, Ordering::SeqCst);
-    // A generous timeout: the proxy threads add scheduling delay on a loaded machine.
-    let mut d = open(&format!("fx:{}?model=FX2N&timeout=3000ms", path.display()));
+    let mut d = open(&format!("fx:{}?model=FX2N", path.display()));
     let o = ops(d.as_ref(), &["D8000"]);
     assert_eq!(d.read(&o).unwrap(), vec![Value::Int(200)], "watchdog 200 ms");
     assert_eq!(d.requests(), 4);
