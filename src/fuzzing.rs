@@ -33,6 +33,14 @@ pub const TARGETS: &[(&str, Target)] = &[
     ("modbus_tcp", modbus_tcp),
     ("agent_mailbox", agent_mailbox),
     ("agent_base", agent_base),
+    ("il", il),
+    ("fx_port", fx_port),
+    ("fx_link", fx_link),
+    ("fx_operand", fx_operand),
+    ("umpk_reply", umpk_reply),
+    ("umpk_hex", umpk_hex),
+    ("pcapng", pcapng),
+    ("bench", bench),
 ];
 
 fn text(data: &[u8]) -> String {
@@ -234,4 +242,110 @@ pub fn agent_mailbox(data: &[u8]) {
 /// The helper's mailbox address (`--agent VB3400`, `agent il`).
 pub fn agent_base(data: &[u8]) {
     let _ = crate::k2::agent::protocol::parse_base(&text(data));
+}
+
+/// IL program text, compiled (parse + compile) for a simulated K2 and for a UMPK8.
+pub fn il(data: &[u8]) {
+    let t = text(data);
+    let sim = crate::k2::sim::open("K205-16DT", Clock::stepped()).expect("the default model");
+    let _ = sim.compile(&t, "fuzz.il");
+    let _ = crate::umpk::sim::program::IlRunner::load(&t, "fuzz.il", &crate::umpk::model::MODELS[0]);
+}
+
+/// FX programming port: the simulator's request side (bytes in 23-byte chunks, with a gap
+/// after every fourth) and the driver's reply decoder.
+pub fn fx_port(data: &[u8]) {
+    use crate::fx::sim::{PortServer, Server};
+    let plc = std::sync::Mutex::new(crate::fx::memory::Memory::new(&crate::fx::model::MODELS[0]));
+    let mut server = PortServer::default();
+    for (i, chunk) in data.chunks(23).enumerate() {
+        let _ = server.feed(chunk, &plc);
+        if i % 4 == 3 {
+            server.gap();
+        }
+    }
+    let _ = crate::fx::port::decode_request(data);
+    let count = data.first().map_or(0, |b| *b as usize);
+    let _ = crate::fx::port::decode_read_reply(data, count);
+}
+
+/// FX computer link under every settings combination: the simulator's request side, and
+/// the driver's reply framing and decoding with the values read out of data replies.
+pub fn fx_link(data: &[u8]) {
+    use crate::fx::link::{decode_reply, parse_values, reply_len, Header, Reply, Settings};
+    use crate::fx::sim::{LinkServer, Server};
+    let plc = std::sync::Mutex::new(crate::fx::memory::Memory::new(&crate::fx::model::MODELS[0]));
+    for bits in 0..4u8 {
+        let s = Settings { sum: bits & 1 != 0, format4: bits & 2 != 0, decimal_xy: bits == 3 };
+        let mut server = LinkServer::new(0, s);
+        for (i, chunk) in data.chunks(29).enumerate() {
+            let _ = server.feed(chunk, &plc);
+            if i % 4 == 3 {
+                server.gap();
+            }
+        }
+        let h = Header { station: 0, pc: 0xFF, wait: 0 };
+        let mut rest = data;
+        while let Some(n) = reply_len(rest, s) {
+            if let Ok(Reply::Data(d)) = decode_reply(&rest[..n], h, s) {
+                let _ = parse_values(&d, 4);
+                let _ = parse_values(&d, 8);
+            }
+            rest = &rest[n..];
+        }
+    }
+}
+
+/// FX operand names, on every model over both protocols.
+pub fn fx_operand(data: &[u8]) {
+    use crate::fx::space::{FxSpace, Proto};
+    let t = text(data);
+    for m in crate::fx::model::MODELS {
+        for proto in [Proto::Port, Proto::Link] {
+            let _ = FxSpace::new(m, proto).parse_fx(&t);
+        }
+    }
+}
+
+/// UMPK: the simulator's command reader (every byte received, replies taken), and the
+/// driver's reply reader for every command's shape, with and without echo.
+pub fn umpk_reply(data: &[u8]) {
+    use crate::umpk::codec::{parse_exchange, Command, Monitor};
+    let mut sim = crate::umpk::sim::Umpk::new(&crate::umpk::model::MODELS[0], Clock::stepped());
+    for chunk in data.chunks(17) {
+        sim.receive(chunk);
+        let _ = sim.take_all();
+    }
+    for c in Command::ALL {
+        let sent = c.encode();
+        for crlf in [None, Some(true), Some(false)] {
+            let _ = parse_exchange(data, &sent, c.shape(), crlf);
+        }
+    }
+    let _ = Monitor::decode(data);
+}
+
+/// UMPK Intel HEX program files: single records and whole-file validation.
+pub fn umpk_hex(data: &[u8]) {
+    use crate::umpk::hex::{pages, parse_file, Record};
+    for line in data.split(|b| *b == b'\n') {
+        let _ = Record::parse(line.strip_suffix(b"\r").unwrap_or(line));
+    }
+    for m in crate::umpk::model::MODELS {
+        if let Ok(p) = parse_file(&text(data), m.program_bytes) {
+            let _ = pages(&p);
+        }
+    }
+}
+
+/// A pcapng recording as `plcsh record show` reads it: parsed, then every frame decoded.
+pub fn pcapng(data: &[u8]) {
+    if let Ok(rec) = crate::record::file::parse(data) {
+        let _ = crate::record::decode::all(&rec.links, &rec.frames);
+    }
+}
+
+/// The bench file (parse only: no device is opened).
+pub fn bench(data: &[u8]) {
+    let _ = crate::wiring::bench::Bench::parse(&text(data), Path::new("fuzz/bench.toml"));
 }

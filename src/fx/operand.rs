@@ -562,7 +562,8 @@ pub fn parse_one(text: &str) -> Result<FxOperand> {
 /// The error for `T5`/`C5`: three devices share the number.
 pub fn bare_t_or_c(text: &str) -> Option<Error> {
     let up = text.trim().trim_start_matches('%').to_ascii_uppercase();
-    let (first, rest) = up.split_at(up.len().min(1));
+    // The first character, which may be longer than one byte in hostile input.
+    let (first, rest) = up.split_at(up.chars().next().map_or(0, char::len_utf8));
     if (first == "T" || first == "C") && !rest.is_empty() && rest.bytes().all(|b| b.is_ascii_digit()) {
         let (c, t) = if first == "T" { ("contact", "timer") } else { ("contact", "counter") };
         return Some(
@@ -693,6 +694,10 @@ mod tests {
         assert!(e.hint.as_deref().unwrap().contains("TN5 (current value)"), "{e:?}");
         assert!(bare_t_or_c("C10").unwrap().hint.clone().unwrap().contains("CS10"));
         assert!(bare_t_or_c("TN5").is_none());
+        assert!(
+            bare_t_or_c("\u{e9}5").is_none() && bare_t_or_c("\u{3a7}").is_none(),
+            "a first character longer than a byte"
+        );
     }
 
     #[test]
