@@ -171,7 +171,7 @@ impl Snapshot {
                 }
             }
             if let Some(v) = d.sections.get("servo") {
-                let drives: Vec<crate::servo::sim::drive::DriveState> = dec(v, "servo")?;
+                let drives: Vec<crate::servo::sim::drive::Drive> = dec(v, "servo")?;
                 servo.push((i, drives));
             }
         }

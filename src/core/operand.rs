@@ -21,6 +21,40 @@ pub struct Operand {
     pub bits: u8,
 }
 
+/// The longest range or count form a family accepts in one operand expression.
+pub const MAX_RANGE: usize = 4096;
+
+/// The count form `A[n]` every family's operand grammar shares: `t` holds it (its `[` at
+/// `open`), `lead` is the column of `t` in the line, `example` a count form of the family
+/// (`VW0[10]`) for messages. `parse_one` parses the first operand, `next` steps to the
+/// following one. Linear in `n`, which is bounded by [`MAX_RANGE`].
+pub fn count_form<T: Copy>(
+    t: &str,
+    open: usize,
+    lead: usize,
+    example: &str,
+    parse_one: impl Fn(&str) -> Result<T>,
+    next: impl Fn(&T) -> T,
+) -> Result<Vec<T>> {
+    let err = |col: usize, msg: String| Error::new(ErrorKind::Operand, msg).column(col);
+    let a = parse_one(&t[..open]).map_err(|e| e.shift(lead))?;
+    let inner = t[open + 1..]
+        .strip_suffix(']')
+        .ok_or_else(|| err(lead + t.len(), format!("missing `]` in count form (e.g. {example})")))?;
+    let n: usize =
+        inner.trim().parse().map_err(|_| err(lead + open + 1, format!("`{inner}` is not a count (e.g. {example})")))?;
+    if n == 0 || n > MAX_RANGE {
+        return Err(err(lead + open + 1, format!("count must be 1…{MAX_RANGE}")));
+    }
+    let mut out = Vec::with_capacity(n);
+    let mut cur = a;
+    for _ in 0..n {
+        out.push(cur);
+        cur = next(&cur);
+    }
+    Ok(out)
+}
+
 /// One completion candidate with its meaning (for hints and `help`).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Candidate {

@@ -22,7 +22,7 @@
 use crate::core::{DataType, Error, ErrorKind, Operand, Result};
 
 /// Longest range one expression may name.
-pub const MAX_RANGE: usize = 4096;
+pub use crate::core::operand::MAX_RANGE;
 /// First special device number (M8000, D8000).
 pub const SPECIAL: u16 = 8000;
 /// Special devices the address tables cover: M8000–M8255, D8000–D8255.
@@ -439,24 +439,7 @@ pub fn parse_expr(text: &str) -> Result<Vec<FxOperand>> {
         return Ok(out);
     }
     if let Some(open) = t.find('[') {
-        let a = parse_one(&t[..open]).map_err(|e| e.shift(lead))?;
-        let inner = t[open + 1..]
-            .strip_suffix(']')
-            .ok_or_else(|| op_err(lead + t.len(), "missing `]` in count form (e.g. D0[10])"))?;
-        let n: usize = inner
-            .trim()
-            .parse()
-            .map_err(|_| op_err(lead + open + 1, format!("`{inner}` is not a count (e.g. D0[10])")))?;
-        if n == 0 || n > MAX_RANGE {
-            return Err(op_err(lead + open + 1, format!("count must be 1…{MAX_RANGE}")));
-        }
-        let mut out = Vec::with_capacity(n);
-        let mut cur = a;
-        for _ in 0..n {
-            out.push(cur);
-            cur = cur.next();
-        }
-        return Ok(out);
+        return crate::core::operand::count_form(t, open, lead, "D0[10]", parse_one, FxOperand::next);
     }
     Ok(vec![parse_one(t).map_err(|e| e.shift(lead))?])
 }

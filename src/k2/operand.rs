@@ -243,7 +243,7 @@ pub fn default_view_at(area: Area, width: Width, byte: u32) -> DataType {
 }
 
 /// Most operands a single range may expand to.
-pub const MAX_RANGE: usize = 4096;
+pub use crate::core::operand::MAX_RANGE;
 
 fn op_err(col: usize, msg: impl Into<String>) -> Error {
     Error::new(ErrorKind::Operand, msg).column(col)
@@ -297,24 +297,7 @@ pub fn parse_expr(text: &str) -> Result<Vec<K2Operand>> {
         return Ok(out);
     }
     if let Some(open) = t.find('[') {
-        let a = parse_one(&t[..open]).map_err(|e| e.shift(lead))?;
-        let inner = t[open + 1..]
-            .strip_suffix(']')
-            .ok_or_else(|| op_err(lead + t.len(), "missing `]` in count form (e.g. VW0[10])"))?;
-        let n: usize = inner
-            .trim()
-            .parse()
-            .map_err(|_| op_err(lead + open + 1, format!("`{inner}` is not a count (e.g. VW0[10])")))?;
-        if n == 0 || n > MAX_RANGE {
-            return Err(op_err(lead + open + 1, format!("count must be 1…{MAX_RANGE}")));
-        }
-        let mut out = Vec::with_capacity(n);
-        let mut cur = a;
-        for _ in 0..n {
-            out.push(cur);
-            cur = cur.next();
-        }
-        return Ok(out);
+        return crate::core::operand::count_form(t, open, lead, "VW0[10]", parse_one, K2Operand::next);
     }
     Ok(vec![parse_one(t).map_err(|e| e.shift(lead))?])
 }

@@ -111,10 +111,13 @@ enum Event {
     PositionFault(usize),
 }
 
-/// A simulated Kinco drive.
-#[derive(Clone, Debug)]
+/// A simulated Kinco drive. Its whole state is data, so a snapshot (`crate::snapshot`)
+/// saves the drive itself: object values, the DS402 state machine, motion and set-point
+/// buffer, halt, limits, faults, homing, switches and the pulse input.
+#[derive(Clone, Debug, serde::Serialize, serde::Deserialize)]
 pub struct Drive {
     pub id: u8,
+    #[serde(with = "values_sorted")]
     values: HashMap<(u16, u8), u32>,
     state: State,
     motion: Motion,
@@ -756,96 +759,21 @@ impl Drive {
     }
 }
 
-/// A drive's complete state for snapshots (`crate::snapshot`): object values, the DS402
-/// state machine, the motion in progress and the set-point buffer, halt, limits, faults,
-/// homing, switches and the pulse input.
-#[derive(Clone, Debug, serde::Serialize, serde::Deserialize)]
-pub struct DriveState {
-    pub id: u8,
-    /// `(index, sub, raw value)`, sorted.
-    values: Vec<(u16, u8, u32)>,
-    state: State,
-    motion: Motion,
-    task: Task,
-    commanded: f64,
-    pending: Option<f64>,
-    last_cw: u16,
-    setpoint_ack: bool,
-    fault: Option<u16>,
-    homed: bool,
-    homing_error: bool,
-    following_error: bool,
-    limit_active: bool,
-    homing_onto: Onto,
-    resume: Option<Task>,
-    seen: f64,
-    switches: Switches,
-    pulses: PulseTrain,
-    strict: bool,
-    saves: u32,
-    #[serde(default)]
-    faults_at: Vec<(f64, u16)>,
-    #[serde(default)]
-    fault_events: Vec<(f64, f64, u16)>,
-}
+/// Object values in a snapshot: `(index, sub, raw value)` sorted, since JSON maps take
+/// text keys only and a sorted list keeps snapshot files stable.
+mod values_sorted {
+    use serde::{Deserialize, Deserializer, Serialize, Serializer};
+    use std::collections::HashMap;
 
-impl Drive {
-    pub fn save(&self) -> DriveState {
-        let mut values: Vec<(u16, u8, u32)> = self.values.iter().map(|(&(i, s), &v)| (i, s, v)).collect();
-        values.sort_unstable();
-        DriveState {
-            id: self.id,
-            values,
-            state: self.state,
-            motion: self.motion.clone(),
-            task: self.task,
-            commanded: self.commanded,
-            pending: self.pending,
-            last_cw: self.last_cw,
-            setpoint_ack: self.setpoint_ack,
-            fault: self.fault,
-            homed: self.homed,
-            homing_error: self.homing_error,
-            following_error: self.following_error,
-            limit_active: self.limit_active,
-            homing_onto: self.homing_onto,
-            resume: self.resume,
-            seen: self.seen,
-            switches: self.switches,
-            pulses: self.pulses.clone(),
-            strict: self.strict,
-            saves: self.saves,
-            faults_at: self.faults_at.clone(),
-            fault_events: self.fault_events.clone(),
-        }
+    pub fn serialize<S: Serializer>(v: &HashMap<(u16, u8), u32>, s: S) -> Result<S::Ok, S::Error> {
+        let mut list: Vec<(u16, u8, u32)> = v.iter().map(|(&(i, sub), &raw)| (i, sub, raw)).collect();
+        list.sort_unstable();
+        list.serialize(s)
     }
 
-    pub fn from_state(s: DriveState) -> Drive {
-        Drive {
-            id: s.id,
-            values: s.values.into_iter().map(|(i, sub, v)| ((i, sub), v)).collect(),
-            state: s.state,
-            motion: s.motion,
-            task: s.task,
-            commanded: s.commanded,
-            pending: s.pending,
-            last_cw: s.last_cw,
-            setpoint_ack: s.setpoint_ack,
-            fault: s.fault,
-            homed: s.homed,
-            homing_error: s.homing_error,
-            following_error: s.following_error,
-            limit_active: s.limit_active,
-            homing_onto: s.homing_onto,
-            resume: s.resume,
-            seen: s.seen,
-            switches: s.switches,
-            pulses: s.pulses,
-            strict: s.strict,
-            saves: s.saves,
-            faults_at: s.faults_at,
-            fault_events: s.fault_events,
-        }
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<HashMap<(u16, u8), u32>, D::Error> {
+        let list = Vec::<(u16, u8, u32)>::deserialize(d)?;
+        Ok(list.into_iter().map(|(i, sub, raw)| ((i, sub), raw)).collect())
     }
 }
 

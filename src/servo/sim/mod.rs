@@ -190,13 +190,13 @@ impl SimLine {
 
 impl SimLine {
     /// Every drive's state, for snapshots (`crate::snapshot`).
-    pub fn save_drives(&self) -> Vec<drive::DriveState> {
-        self.drives.iter().map(|d| d.save()).collect()
+    pub fn save_drives(&self) -> Vec<Drive> {
+        self.drives.clone()
     }
 
     /// Replaces the drives with saved ones.
-    pub fn restore_drives(&mut self, drives: Vec<drive::DriveState>) {
-        self.drives = drives.into_iter().map(Drive::from_state).collect();
+    pub fn restore_drives(&mut self, drives: Vec<Drive>) {
+        self.drives = drives;
     }
 }
 
