@@ -662,17 +662,16 @@ impl HscChannel {
         &mut self,
         mem: &mut Memory,
         inputs: &Inputs,
-        last: Duration,
-        now: Duration,
+        (last, a): (Duration, u64),
+        (now, b): (Duration, u64),
         raised: &mut Vec<(Duration, EventKind)>,
         skipped: &mut u64,
     ) {
         // A counter without a mode or not running counts nothing (`drive` is None).
-        if self.running && self.mode.is_some() && now > last {
+        if self.running && self.mode.is_some() && b > a {
             let c = self.cached_drive(inputs, mem);
             if let Some(d) = &c.drive {
-                let (a, b) = (ns(last), ns(now));
-                // The count at `last` was worked out by the previous interval.
+                // The count at `a` ns was worked out by the previous interval.
                 let at_a = match c.at {
                     Some((t, n)) if t == a => n,
                     _ => d.at(a),
@@ -680,20 +679,36 @@ impl HscChannel {
                 let at_b = d.at(b);
                 c.at = Some((b, at_b));
                 let total = at_b - at_a;
-                if self.hits(total) {
-                    // Worked out only if a CV = PV event falls in this interval.
-                    let d = self.cache.and_then(|c| c.drive).expect("counting needs a drive");
-                    let timer = std::cell::OnceCell::new();
-                    let time_of = |k| timer.get_or_init(|| d.timer(last, now, total.signum())).time_of(k);
-                    self.count(total, &time_of, raised, skipped);
-                } else if total != 0 {
-                    // What `count` does when no PV is reached.
-                    self.last_up = total > 0;
-                    self.cv += total;
+                if total != 0 {
+                    if self.hits(total) {
+                        self.count_timed(last, now, total, raised, skipped);
+                    } else {
+                        // What `count` does when no PV is reached.
+                        self.last_up = total > 0;
+                        self.cv += total;
+                    }
                 }
             }
         }
         self.publish(mem);
+    }
+
+    /// [`Self::count`] for an interval in which a CV = PV event falls: the events are timed
+    /// from the drive (kept out of line: most steps reach no PV).
+    #[cold]
+    #[inline(never)]
+    fn count_timed(
+        &mut self,
+        last: Duration,
+        now: Duration,
+        total: i64,
+        raised: &mut Vec<(Duration, EventKind)>,
+        skipped: &mut u64,
+    ) {
+        let d = self.cache.as_ref().and_then(|c| c.drive).expect("counting needs a drive");
+        let timer = std::cell::OnceCell::new();
+        let time_of = |k| timer.get_or_init(|| d.timer(last, now, total.signum())).time_of(k);
+        self.count(total, &time_of, raised, skipped);
     }
 
     /// Counts edges the user wrote to the inputs (`set I0.1=1`), at `now`.

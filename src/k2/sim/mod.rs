@@ -160,15 +160,23 @@ impl K2Sim {
         raised.clear();
         ends.clear();
         let mut skipped = 0u64;
+        // Both ends of the interval in ns, worked out once for every channel.
+        let (from, to) = ((last, inputs::ns(last)), (now, inputs::ns(now)));
+        // A run ends where a channel raised something (channels raising nothing add none).
+        let run_end = |raised: &Vec<_>, ends: &mut Vec<usize>| {
+            if ends.last().copied().unwrap_or(0) < raised.len() {
+                ends.push(raised.len());
+            }
+        };
         for p in &mut self.pto {
-            p.advance(&mut self.mem, now, &mut raised);
-            ends.push(raised.len());
+            p.advance(&mut self.mem, to, &mut raised);
+            run_end(&raised, &mut ends);
         }
         for h in &mut self.hsc {
-            h.advance(&mut self.mem, &self.inputs, last, now, &mut raised, &mut skipped);
-            ends.push(raised.len());
+            h.advance(&mut self.mem, &self.inputs, from, to, &mut raised, &mut skipped);
+            run_end(&raised, &mut ends);
         }
-        self.refresh_input_levels(now);
+        self.refresh_input_levels(to.1);
         if !self.faults.is_empty() {
             for (at, id, kind) in self.faults.apply_inputs(&mut self.mem.i, now) {
                 raised.push((at.max(last), EventKind::Fault { id, fault: kind.code() }));
@@ -190,7 +198,7 @@ impl K2Sim {
     }
 
     /// Writes the sources' current levels into the input image.
-    fn refresh_input_levels(&mut self, now: Duration) {
+    fn refresh_input_levels(&mut self, t: u64) {
         fn put(i: &mut [u8], p: Pin, on: bool) {
             if let Some(b) = i.get_mut(p.0 as usize) {
                 if on {
@@ -200,7 +208,6 @@ impl K2Sim {
                 }
             }
         }
-        let t = inputs::ns(now);
         for &(p, rise, fall) in self.inputs.edges() {
             put(&mut self.mem.i, p, rise.rises_ns(t) > fall.rises_ns(t));
         }
@@ -405,7 +412,7 @@ impl K2Sim {
             }
         };
         self.inputs.add(s);
-        self.refresh_input_levels(now);
+        self.refresh_input_levels(inputs::ns(now));
         let mut msg = s.describe();
         for h in &self.hsc {
             let Some(m) = h.mode else { continue };

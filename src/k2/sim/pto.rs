@@ -133,16 +133,37 @@ impl PtoRun {
     /// [`Self::level_at`] with one segment search and one division.
     #[inline]
     pub fn at(&self, t: Duration) -> (u64, bool) {
+        self.at_ns(t, ns(t))
+    }
+
+    /// [`Self::at`] with `t` also in ns (the simulator's step works it out once).
+    #[inline]
+    pub fn at_ns(&self, t: Duration, t_ns: u64) -> (u64, bool) {
         if t >= self.end {
             return (self.total, false);
         }
-        let t = ns(t);
-        let e = t.saturating_sub(self.start_ns) as u128;
-        let s = self.seg_at(e);
+        let e = t_ns.saturating_sub(self.start_ns);
+        // One segment (every PLS train without a profile table) needs no search.
+        let s = match self.segs.as_slice() {
+            [one] => one,
+            _ => self.seg_at(e as u128),
+        };
+        // Inside a train shorter than 584 years every offset fits 64 bits.
+        let Ok(start) = u64::try_from(s.start_ns) else { return self.at_wide(s, t_ns) };
+        let into = e - start;
+        let q = s.cycles_in(into as u128);
+        let phase = into - q * s.cycle_ns;
+        (s.first + q.min(s.count), t_ns >= self.start_ns && phase < s.cycle_ns / 2)
+    }
+
+    /// [`Self::at_ns`] in 128-bit arithmetic.
+    #[cold]
+    fn at_wide(&self, s: &Seg, t_ns: u64) -> (u64, bool) {
+        let e = t_ns.saturating_sub(self.start_ns) as u128;
         let into = e - s.start_ns;
         let q = s.cycles_in(into);
         let phase = into - q as u128 * s.cycle_ns as u128;
-        (s.first + q.min(s.count), t >= self.start_ns && phase < (s.cycle_ns as u128 / 2))
+        (s.first + q.min(s.count), t_ns >= self.start_ns && phase < (s.cycle_ns as u128 / 2))
     }
 
     /// Pulses completed by `t`.
@@ -294,13 +315,18 @@ impl PtoChannel {
     /// Brings the channel to `now`: counts pulses into the position counter, finishes
     /// trains (raising their completion events), drives the output pin, and applies the
     /// position control bits.
-    pub fn advance(&mut self, mem: &mut Memory, now: Duration, raised: &mut Vec<(Duration, EventKind)>) {
+    pub fn advance(
+        &mut self,
+        mem: &mut Memory,
+        (now, now_ns): (Duration, u64),
+        raised: &mut Vec<(Duration, EventKind)>,
+    ) {
         let r = self.regs;
         let mut drive = None;
         match &mut self.run {
             Run::Idle => {}
             Run::Pto(train) => {
-                let (p, level) = train.at(now);
+                let (p, level) = train.at_ns(now, now_ns);
                 let new = p - self.counted;
                 self.counted = p;
                 drive = Some(level);
