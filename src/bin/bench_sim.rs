@@ -5,6 +5,12 @@
 //! client would) and the process's memory use. Run with
 //! `cargo run --release --bin bench_sim`.
 
+/// The process allocator: every poll allocates small values for a moment (the values read, a
+/// request's frame), and mimalloc's allocate/free path is several times shorter than glibc's
+/// (BENCHMARKS.md, "Simulator"); the benchmark uses the shell's allocator.
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 use plcsh::core::{Clock, Device, OperandSpace};
 use plcsh::k2::helpers::{self, hsc as hh, pto as hp};
 use plcsh::k2::sim::inputs::{Source, Wave};

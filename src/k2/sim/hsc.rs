@@ -67,6 +67,9 @@ pub mod st {
     pub const GREATER: u8 = 7;
 }
 
+/// The status byte's bits a counter owns; the others keep what was written to them.
+const STATUS_BITS: u8 = 1 << st::TABLE_FAULT | 1 << st::DIR_UP | 1 << st::EQUAL | 1 << st::GREATER;
+
 /// Most PVs in a table (§3.3.3).
 pub const MAX_PVS: u8 = 32;
 
@@ -172,6 +175,15 @@ impl Drive {
         self.up.at(t) - self.down.at(t)
     }
 
+    /// The one edge stream of a drive counting in one direction only, with its sign.
+    fn single(&self) -> Option<(Wave, i64)> {
+        match (self.up.single(), self.down.single()) {
+            (Some(w), None) if self.down.is_empty() => Some((*w, 1)),
+            (None, Some(w)) if self.up.is_empty() => Some((*w, -1)),
+            _ => None,
+        }
+    }
+
     /// Times the counts of the interval (a, b] that move in direction `sign`.
     fn timer(&self, a: Duration, b: Duration, sign: i64) -> Timer<'_> {
         let single = match (sign > 0, self.up.single(), self.down.is_empty(), self.down.single(), self.up.is_empty()) {
@@ -257,6 +269,33 @@ pub struct HscChannel {
     pub user_cv: bool,
     /// The drive of the last interval and what it was computed from.
     cache: Option<DriveCache>,
+    /// The count as one formula while only time passes ([`Quiet`]).
+    quiet: Option<Quiet>,
+    /// Tests turn the quiet path off to compare it with the general one.
+    #[cfg(test)]
+    pub(crate) general_only: bool,
+}
+
+/// The count as one formula while only time passes: one edge stream counting in one
+/// direction, from a drive that is still the same. A step then costs one edge count instead
+/// of the drive's general sum; whether it reaches the PV is still tested every step, and any
+/// change to the CV by other means (HSC, a written input, a snapshot) ends it.
+#[derive(Clone, Copy, Debug)]
+struct Quiet {
+    from: DriveFrom,
+    wave: Wave,
+    /// +1 counting up, −1 down.
+    sign: i64,
+    /// The interval's start (ns), the wave's rising edges and the CV then:
+    /// CV(t) = cv0 + sign · (rises(t) − rises0) for t ≥ t0.
+    t0: u64,
+    rises0: u64,
+    cv0: i64,
+    /// The CV the formula last produced.
+    cv: i64,
+    /// The counter's status bits and segment number, which only a CV = PV step changes.
+    status: u8,
+    segment: u8,
 }
 
 /// What a drive depends on besides input levels: when none of it changed and the inputs
@@ -309,6 +348,9 @@ impl HscChannel {
             last_up: true,
             user_cv: false,
             cache: None,
+            quiet: None,
+            #[cfg(test)]
+            general_only: false,
         }
     }
 
@@ -667,6 +709,9 @@ impl HscChannel {
         raised: &mut Vec<(Duration, EventKind)>,
         skipped: &mut u64,
     ) {
+        if self.quiet_step(mem, inputs, b) {
+            return;
+        }
         // A counter without a mode or not running counts nothing (`drive` is None).
         if self.running && self.mode.is_some() && b > a {
             let c = self.cached_drive(inputs, mem);
@@ -689,8 +734,65 @@ impl HscChannel {
                     }
                 }
             }
+            self.quiet = self.cache.as_ref().filter(|c| c.n == 0).and_then(|c| {
+                let (wave, sign) = c.drive?.single()?;
+                Some(Quiet {
+                    from: c.from,
+                    wave,
+                    sign,
+                    t0: b,
+                    rises0: wave.rises_ns(b),
+                    cv0: self.cv,
+                    cv: self.cv,
+                    status: 0,
+                    segment: 0,
+                })
+            });
         }
         self.publish(mem);
+    }
+
+    /// A step by the [`Quiet`] formula, when it holds and no PV is reached; false leaves
+    /// the step to the general path.
+    #[inline]
+    fn quiet_step(&mut self, mem: &mut Memory, inputs: &Inputs, b: u64) -> bool {
+        #[cfg(test)]
+        if self.general_only {
+            return false;
+        }
+        let Some(q) = &self.quiet else { return false };
+        if b < q.t0 || q.cv != self.cv || q.from != self.drive_from(inputs) {
+            return false;
+        }
+        let cv = q.cv0 + q.sign * (q.wave.rises_ns(b) - q.rises0) as i64;
+        let total = cv - self.cv;
+        // A step reaching the PV, or turning the direction bit, goes the general way; in the
+        // others only CV = PV and CV > PV can change (moving off a PV, or past the last PV
+        // of a finished table), and the segment cannot.
+        if self.hits(total) || (total != 0 && self.last_up != (total > 0)) {
+            return false;
+        }
+        let (eq, gt) = match self.current_pv() {
+            Some(pv) => (cv == pv, cv > pv),
+            None => (false, false),
+        };
+        const CMP: u8 = 1 << st::EQUAL | 1 << st::GREATER;
+        let status = q.status & !CMP | (eq as u8) << st::EQUAL | (gt as u8) << st::GREATER;
+        let segment = q.segment;
+        if total != 0 {
+            self.last_up = total > 0;
+            self.cv = cv;
+        }
+        if let Some(q) = &mut self.quiet {
+            (q.cv, q.status) = (cv, status);
+        }
+        let r = self.regs;
+        if !self.user_cv {
+            mem.set_sm_dword(r.cv, cv as i32 as u32);
+        }
+        mem.set_sm_byte(r.status, mem.sm_byte(r.status) & !STATUS_BITS | status);
+        mem.set_sm_byte(r.segment, segment);
+        true
     }
 
     /// [`Self::count`] for an interval in which a CV = PV event falls: the events are timed
@@ -775,11 +877,21 @@ impl HscChannel {
 
     /// Writes CV, status and segment into the SM registers.
     #[inline]
-    pub fn publish(&self, mem: &mut Memory) {
+    pub fn publish(&mut self, mem: &mut Memory) {
         let r = self.regs;
         if !self.user_cv {
             mem.set_sm_dword(r.cv, self.cv as i32 as u32);
         }
+        let (status, segment) = self.status_bits(mem);
+        mem.set_sm_byte(r.status, mem.sm_byte(r.status) & !STATUS_BITS | status);
+        mem.set_sm_byte(r.segment, segment);
+        if let Some(q) = &mut self.quiet {
+            (q.status, q.segment) = (status, segment);
+        }
+    }
+
+    /// The status byte's bits this counter owns ([`STATUS_BITS`]) and the segment number.
+    fn status_bits(&self, mem: &Memory) -> (u8, u8) {
         let up = match self.mode {
             Some(m) if m.kind == HscKind::InternalDir => self.dir_up,
             Some(m) if m.kind == HscKind::ExternalDir => m.dir.is_some_and(|p| level(mem, p)),
@@ -789,13 +901,11 @@ impl HscChannel {
             Some(pv) => (self.cv == pv, self.cv > pv),
             None => (false, false),
         };
-        const MINE: u8 = 1 << st::TABLE_FAULT | 1 << st::DIR_UP | 1 << st::EQUAL | 1 << st::GREATER;
         let bits = (self.fault as u8) << st::TABLE_FAULT
             | (up as u8) << st::DIR_UP
             | (eq as u8) << st::EQUAL
             | (gt as u8) << st::GREATER;
-        mem.set_sm_byte(r.status, mem.sm_byte(r.status) & !MINE | bits);
-        mem.set_sm_byte(r.segment, if self.multi { self.cmp.seg as u8 } else { 0 });
+        (bits, if self.multi { self.cmp.seg as u8 } else { 0 })
     }
 
     /// When the next CV = PV crossing will happen from the current sources, if it will
@@ -882,6 +992,7 @@ impl HscChannel {
         self.last_up = s.last_up;
         self.user_cv = s.user_cv;
         self.cache = None;
+        self.quiet = None;
         Ok(())
     }
 }
