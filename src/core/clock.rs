@@ -7,22 +7,34 @@
 //! The clock is shared (cheap `Clone`) by every simulated device in a session, so wired
 //! devices see one time.
 
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
+/// `stepped_ns` while the clock follows the wall clock.
+const FOLLOWING: u64 = u64::MAX;
+
+/// The wall-clock anchor of a following clock.
 #[derive(Debug)]
-struct State {
-    stepped: bool,
+struct Follow {
     /// Virtual time at `anchor`.
     base: Duration,
     anchor: Instant,
 }
 
+#[derive(Debug)]
+struct Shared {
+    /// The virtual time in ns while stepped ([`FOLLOWING`] otherwise). Stepped time is read
+    /// on every simulator access, so it is one atomic load, not a lock.
+    stepped_ns: AtomicU64,
+    /// The anchor while following; mode changes happen under this lock.
+    follow: Mutex<Follow>,
+}
+
 /// A shared virtual clock. Time starts at zero when the clock is created.
 #[derive(Clone, Debug)]
 pub struct Clock {
-    state: Arc<Mutex<State>>,
+    shared: Arc<Shared>,
 }
 
 impl Default for Clock {
@@ -31,58 +43,90 @@ impl Default for Clock {
     }
 }
 
+fn ns(d: Duration) -> u64 {
+    u64::try_from(d.as_nanos()).unwrap_or(FOLLOWING - 1).min(FOLLOWING - 1)
+}
+
 impl Clock {
     /// A clock that follows the wall clock.
     pub fn following() -> Clock {
-        Clock { state: Arc::new(Mutex::new(State { stepped: false, base: Duration::ZERO, anchor: Instant::now() })) }
+        Clock {
+            shared: Arc::new(Shared {
+                stepped_ns: AtomicU64::new(FOLLOWING),
+                follow: Mutex::new(Follow { base: Duration::ZERO, anchor: Instant::now() }),
+            }),
+        }
     }
 
     /// A clock that moves only when stepped.
     pub fn stepped() -> Clock {
         let c = Clock::following();
-        c.state.lock().unwrap().stepped = true;
+        c.shared.stepped_ns.store(0, Ordering::Release);
         c
     }
 
-    fn lock(&self) -> std::sync::MutexGuard<'_, State> {
-        self.state.lock().unwrap_or_else(|p| p.into_inner())
+    fn lock(&self) -> std::sync::MutexGuard<'_, Follow> {
+        self.shared.follow.lock().unwrap_or_else(|p| p.into_inner())
     }
 
     /// Virtual time since the clock started.
     pub fn now(&self) -> Duration {
-        let s = self.lock();
-        if s.stepped {
-            s.base
-        } else {
-            s.base + s.anchor.elapsed()
+        match self.shared.stepped_ns.load(Ordering::Acquire) {
+            FOLLOWING => {
+                let f = self.lock();
+                // Re-read under the lock: a step may have switched the mode meanwhile.
+                match self.shared.stepped_ns.load(Ordering::Acquire) {
+                    FOLLOWING => f.base + f.anchor.elapsed(),
+                    t => Duration::from_nanos(t),
+                }
+            }
+            t => Duration::from_nanos(t),
         }
     }
 
     pub fn is_stepped(&self) -> bool {
-        self.lock().stepped
+        self.shared.stepped_ns.load(Ordering::Acquire) != FOLLOWING
     }
 
     /// Advances by exactly `d` and leaves the clock stepped from then on.
     pub fn step(&self, d: Duration) {
-        let mut s = self.lock();
-        let now = if s.stepped { s.base } else { s.base + s.anchor.elapsed() };
-        s.base = now + d;
-        s.stepped = true;
+        let s = &self.shared.stepped_ns;
+        let mut t = s.load(Ordering::Acquire);
+        while t != FOLLOWING {
+            let next = ns(Duration::from_nanos(t) + d);
+            match s.compare_exchange_weak(t, next, Ordering::AcqRel, Ordering::Acquire) {
+                Ok(_) => return,
+                Err(now) => t = now,
+            }
+        }
+        // Following: switch to stepped from the current wall-clock-based time, under the
+        // lock so a concurrent `run` or `set` sees one mode.
+        let f = self.lock();
+        match s.load(Ordering::Acquire) {
+            FOLLOWING => s.store(ns(f.base + f.anchor.elapsed() + d), Ordering::Release),
+            t => s.store(ns(Duration::from_nanos(t) + d), Ordering::Release),
+        }
     }
 
     /// Sets the virtual time to `t` (a snapshot being restored), keeping the mode.
     pub fn set(&self, t: Duration) {
-        let mut s = self.lock();
-        s.base = t;
-        s.anchor = Instant::now();
+        let mut f = self.lock();
+        f.base = t;
+        f.anchor = Instant::now();
+        let s = &self.shared.stepped_ns;
+        if s.load(Ordering::Acquire) != FOLLOWING {
+            s.store(ns(t), Ordering::Release);
+        }
     }
 
     /// Makes the clock follow the wall clock again, from the current virtual time.
     pub fn run(&self) {
-        let mut s = self.lock();
-        if s.stepped {
-            s.anchor = Instant::now();
-            s.stepped = false;
+        let mut f = self.lock();
+        let t = self.shared.stepped_ns.load(Ordering::Acquire);
+        if t != FOLLOWING {
+            f.base = Duration::from_nanos(t);
+            f.anchor = Instant::now();
+            self.shared.stepped_ns.store(FOLLOWING, Ordering::Release);
         }
     }
 

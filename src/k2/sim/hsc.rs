@@ -271,6 +271,9 @@ pub struct HscChannel {
     cache: Option<DriveCache>,
     /// The count as one formula while only time passes ([`Quiet`]).
     quiet: Option<Quiet>,
+    /// Changes whenever a setting the drive depends on may have changed (HDEF, HSC, a
+    /// snapshot): the quiet formula's cheap validity test, with the sources' generation.
+    settings: u64,
     /// Tests turn the quiet path off to compare it with the general one.
     #[cfg(test)]
     pub(crate) general_only: bool,
@@ -282,7 +285,9 @@ pub struct HscChannel {
 /// change to the CV by other means (HSC, a written input, a snapshot) ends it.
 #[derive(Clone, Copy, Debug)]
 struct Quiet {
-    from: DriveFrom,
+    /// The counter's settings and the input sources the formula was made from.
+    settings: u64,
+    sources: u64,
     wave: Wave,
     /// +1 counting up, −1 down.
     sign: i64,
@@ -349,6 +354,7 @@ impl HscChannel {
             user_cv: false,
             cache: None,
             quiet: None,
+            settings: 0,
             #[cfg(test)]
             general_only: false,
         }
@@ -381,6 +387,7 @@ impl HscChannel {
         };
         self.mode = Some(m);
         self.running = false;
+        self.settings += 1;
         let text = sm_map::HSC_MODES.iter().find(|t| t.0 == ch && t.1 == mode).map(|t| t.2).unwrap_or("");
         Ok(format!("HSC{ch} mode {mode}: {text}"))
     }
@@ -397,6 +404,7 @@ impl HscChannel {
         };
         let c = mem.sm_byte(r.control);
         self.user_cv = false;
+        self.settings += 1;
         if c & ctl::ENABLE == 0 {
             self.running = false;
             return Ok(format!("HSC{ch} stopped (enable bit SM{}.7 is 0); CV {}", r.control, self.cv));
@@ -700,7 +708,24 @@ impl HscChannel {
     }
 
     /// Counts the interval (last, now] from the input sources.
+    #[inline]
     pub fn advance(
+        &mut self,
+        mem: &mut Memory,
+        inputs: &Inputs,
+        from: (Duration, u64),
+        to: (Duration, u64),
+        raised: &mut Vec<(Duration, EventKind)>,
+        skipped: &mut u64,
+    ) {
+        if !self.quiet_step(mem, inputs, to.1) {
+            self.advance_general(mem, inputs, from, to, raised, skipped);
+        }
+    }
+
+    /// [`Self::advance`] when the quiet formula does not apply.
+    #[inline(never)]
+    fn advance_general(
         &mut self,
         mem: &mut Memory,
         inputs: &Inputs,
@@ -709,9 +734,6 @@ impl HscChannel {
         raised: &mut Vec<(Duration, EventKind)>,
         skipped: &mut u64,
     ) {
-        if self.quiet_step(mem, inputs, b) {
-            return;
-        }
         // A counter without a mode or not running counts nothing (`drive` is None).
         if self.running && self.mode.is_some() && b > a {
             let c = self.cached_drive(inputs, mem);
@@ -737,7 +759,8 @@ impl HscChannel {
             self.quiet = self.cache.as_ref().filter(|c| c.n == 0).and_then(|c| {
                 let (wave, sign) = c.drive?.single()?;
                 Some(Quiet {
-                    from: c.from,
+                    settings: self.settings,
+                    sources: c.from.sources,
                     wave,
                     sign,
                     t0: b,
@@ -761,7 +784,7 @@ impl HscChannel {
             return false;
         }
         let Some(q) = &self.quiet else { return false };
-        if b < q.t0 || q.cv != self.cv || q.from != self.drive_from(inputs) {
+        if b < q.t0 || q.cv != self.cv || q.settings != self.settings || q.sources != inputs.generation() {
             return false;
         }
         let cv = q.cv0 + q.sign * (q.wave.rises_ns(b) - q.rises0) as i64;
@@ -993,6 +1016,7 @@ impl HscChannel {
         self.user_cv = s.user_cv;
         self.cache = None;
         self.quiet = None;
+        self.settings += 1;
         Ok(())
     }
 }

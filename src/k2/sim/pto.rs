@@ -85,7 +85,15 @@ impl Seg {
     /// two corrections (the estimate is low by less than 2 for any 64-bit dividend).
     #[inline]
     fn cycles_in(&self, ns: u128) -> u64 {
-        let Ok(x) = u64::try_from(ns) else { return div(ns, self.cycle_ns) };
+        match u64::try_from(ns) {
+            Ok(x) => self.cycles_in64(x),
+            Err(_) => div(ns, self.cycle_ns),
+        }
+    }
+
+    /// [`Self::cycles_in`] of a 64-bit interval.
+    #[inline]
+    fn cycles_in64(&self, x: u64) -> u64 {
         let mut q = ((x as u128 * self.inv as u128) >> 64) as u64;
         let mut r = x - q * self.cycle_ns;
         while r >= self.cycle_ns {
@@ -315,7 +323,33 @@ impl PtoChannel {
     /// Brings the channel to `now`: counts pulses into the position counter, finishes
     /// trains (raising their completion events), drives the output pin, and applies the
     /// position control bits.
-    pub fn advance(
+    #[inline]
+    pub fn advance(&mut self, mem: &mut Memory, to: (Duration, u64), raised: &mut Vec<(Duration, EventKind)>) {
+        let (now, now_ns) = to;
+        // Inside a one-segment train that has not ended (every PLS without a profile
+        // table): [`PtoRun::at_ns`] reduced to that case, without the general path's call.
+        if let Run::Pto(train) = &self.run {
+            if let [s] = train.segs.as_slice() {
+                if now < train.end && now_ns >= train.start_ns {
+                    let into = now_ns - train.start_ns;
+                    let q = s.cycles_in64(into);
+                    let level = into - q * s.cycle_ns < s.cycle_ns / 2;
+                    let p = q.min(s.count);
+                    let new = p - self.counted;
+                    self.counted = p;
+                    set_q(mem, self.out, level);
+                    self.count_pulses(mem, new);
+                    self.apply_position_bits(mem);
+                    return;
+                }
+            }
+        }
+        self.advance_general(mem, to, raised);
+    }
+
+    /// [`Self::advance`] for everything but the inside of a one-segment train.
+    #[inline(never)]
+    fn advance_general(
         &mut self,
         mem: &mut Memory,
         (now, now_ns): (Duration, u64),
