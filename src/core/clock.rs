@@ -43,8 +43,9 @@ impl Default for Clock {
     }
 }
 
+/// `d` in ns, saturating below [`FOLLOWING`] (584 years of virtual time).
 fn ns(d: Duration) -> u64 {
-    u64::try_from(d.as_nanos()).unwrap_or(FOLLOWING - 1).min(FOLLOWING - 1)
+    d.as_secs().saturating_mul(1_000_000_000).saturating_add(d.subsec_nanos() as u64).min(FOLLOWING - 1)
 }
 
 impl Clock {
@@ -91,9 +92,10 @@ impl Clock {
     /// Advances by exactly `d` and leaves the clock stepped from then on.
     pub fn step(&self, d: Duration) {
         let s = &self.shared.stepped_ns;
+        let dn = ns(d);
         let mut t = s.load(Ordering::Acquire);
         while t != FOLLOWING {
-            let next = ns(Duration::from_nanos(t) + d);
+            let next = t.saturating_add(dn).min(FOLLOWING - 1);
             match s.compare_exchange_weak(t, next, Ordering::AcqRel, Ordering::Acquire) {
                 Ok(_) => return,
                 Err(now) => t = now,

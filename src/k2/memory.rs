@@ -107,12 +107,19 @@ impl Memory {
     /// read path); everything else through [`K2Operand::from_key`].
     #[inline]
     pub fn read_key(&self, key: u64) -> u32 {
+        // Where SM sits in `Area::ALL` (the key's area field), tested first.
+        const SM_INDEX: usize = 4;
+        const _: () = assert!(matches!(Area::ALL[SM_INDEX], Area::SM));
         let b = key as u32 as usize;
         // Plain conditional branches (SM first: what pollers read), not jump tables.
-        let a: &[u8] = match Area::ALL.get(((key >> 32) & 0xF) as usize) {
-            Some(Area::SM) => &self.sm,
-            Some(Area::T | Area::C) | None => return self.read(&K2Operand::from_key(key)),
-            Some(&area) => self.area(area),
+        let area = ((key >> 32) & 0xF) as usize;
+        let a: &[u8] = if area == SM_INDEX {
+            &self.sm
+        } else {
+            match Area::ALL.get(area) {
+                Some(Area::T | Area::C) | None => return self.read(&K2Operand::from_key(key)),
+                Some(&area) => self.area(area),
+            }
         };
         let width = (key >> 36) & 0xF;
         if width == 3 {
