@@ -203,7 +203,8 @@ impl Memory {
     }
     pub fn sm_dword(&self, byte: u32) -> u32 {
         let b = byte as usize;
-        u32::from_be_bytes([self.sm[b], self.sm[b + 1], self.sm[b + 2], self.sm[b + 3]])
+        let w: [u8; 4] = self.sm[b..b + 4].try_into().expect("four bytes");
+        u32::from_be_bytes(w)
     }
     pub fn set_sm_dword(&mut self, byte: u32, v: u32) {
         let b = byte as usize;

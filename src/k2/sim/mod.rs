@@ -214,11 +214,12 @@ impl K2Sim {
     }
 
     fn refresh_system_bits(&mut self, now: Duration) {
-        let up = now.saturating_sub(self.start);
-        // 64-bit arithmetic (a u128 division is a library call; 64 bits of µs is 584 000 years).
-        let us = u64::try_from(up.as_micros()).unwrap_or(u64::MAX);
-        let scans = us / SCAN_TIME.as_micros() as u64;
-        let ms = us / 1000;
+        // 64-bit arithmetic in ns (a u128 division is a library call; 64 bits of ns is 584
+        // years of uptime); the scan time is a whole number of ms, so scans follow from ms.
+        const SCAN_MS: u64 = SCAN_TIME.as_millis() as u64;
+        const _: () = assert!(SCAN_TIME.as_nanos() == SCAN_MS as u128 * 1_000_000);
+        let ms = inputs::ns(now).saturating_sub(inputs::ns(self.start)) / 1_000_000;
+        let scans = ms / SCAN_MS;
         let mut b = 0u8;
         b |= 1; // SM0.0 always on (§8)
         let program = self.plc.as_ref().is_some_and(|p| p.has_program());
@@ -635,7 +636,11 @@ impl Device for K2Sim {
     fn read(&mut self, ops: &[Operand]) -> Result<Vec<Value>> {
         self.advance();
         self.injected_fault(ops.iter().map(|o| o.key))?;
-        Ok(ops.iter().map(|o| o.dtype.decode(self.mem.read_key(o.key))).collect())
+        let mut out = Vec::with_capacity(ops.len());
+        for o in ops {
+            out.push(o.dtype.decode(self.mem.read_key(o.key)));
+        }
+        Ok(out)
     }
 
     fn write(&mut self, items: &[(Operand, Value)]) -> Result<()> {

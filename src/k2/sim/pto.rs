@@ -401,7 +401,7 @@ impl PtoChannel {
     }
 
     /// SM201.6 clears SMD212; SM201.4 loads SMD208 into it (§3.4.3.1).
-    #[inline]
+    #[inline(always)]
     pub fn apply_position_bits(&self, mem: &mut Memory) {
         let r = self.regs;
         if mem.sm_bit(r.pos_control, pos::CLEAR) {
