@@ -44,6 +44,9 @@ use std::time::Duration;
 /// small K2 program). SM0.1 is on for the first scan, SM0.6 toggles every scan.
 pub const SCAN_TIME: Duration = Duration::from_millis(1);
 
+/// Most pulse and counter channels a model has (4 PTO + 4 HSC).
+const MAX_CHANNELS: usize = 8;
+
 /// A simulated K2.
 pub struct K2Sim {
     info: DeviceInfo,
@@ -155,46 +158,62 @@ impl K2Sim {
         let last = self.last;
         let now = now.max(last);
         // Events go to a buffer kept between steps, one run per channel, merged by time.
-        let mut raised = std::mem::take(&mut self.raised);
-        let mut ends = std::mem::take(&mut self.run_ends);
-        raised.clear();
-        ends.clear();
+        self.raised.clear();
         let mut skipped = 0u64;
         // Both ends of the interval in ns, worked out once for every channel.
         let (from, to) = ((last, inputs::ns(last)), (now, inputs::ns(now)));
-        // A run ends where a channel raised something (channels raising nothing add none).
-        let run_end = |raised: &Vec<_>, ends: &mut Vec<usize>| {
-            if ends.last().copied().unwrap_or(0) < raised.len() {
-                ends.push(raised.len());
-            }
-        };
+        // Where each channel's events end in `raised`, kept on the stack: the run list is
+        // built only in the rare step that raised something.
+        let mut lens = [0usize; MAX_CHANNELS];
+        let mut k = 0;
         for p in &mut self.pto {
-            p.advance(&mut self.mem, to, &mut raised);
-            run_end(&raised, &mut ends);
+            p.advance(&mut self.mem, to, &mut self.raised);
+            lens[k] = self.raised.len();
+            k += 1;
         }
         for h in &mut self.hsc {
-            h.advance(&mut self.mem, &self.inputs, from, to, &mut raised, &mut skipped);
-            run_end(&raised, &mut ends);
+            h.advance(&mut self.mem, &self.inputs, from, to, &mut self.raised, &mut skipped);
+            lens[k] = self.raised.len();
+            k += 1;
         }
         self.refresh_input_levels(to.1);
+        let mut faults = 0;
         if !self.faults.is_empty() {
             for (at, id, kind) in self.faults.apply_inputs(&mut self.mem.i, now) {
-                raised.push((at.max(last), EventKind::Fault { id, fault: kind.code() }));
-                ends.push(raised.len());
+                self.raised.push((at.max(last), EventKind::Fault { id, fault: kind.code() }));
+                faults += 1;
             }
         }
         if skipped > 0 {
             self.events.skip(skipped);
         }
-        if !raised.is_empty() {
-            self.events.extend_runs(&raised, &ends);
-            if self.plc.is_some() {
-                self.queue_hw_events(&raised);
-            }
+        if !self.raised.is_empty() {
+            self.run_events(&lens[..k], faults);
         }
-        (self.raised, self.run_ends) = (raised, ends);
         self.last = now;
         self.refresh_system_bits(now);
+    }
+
+    /// Logs the events a step raised (one time-ordered run per channel, then one per fault)
+    /// and queues their interrupt routines.
+    #[cold]
+    fn run_events(&mut self, lens: &[usize], faults: usize) {
+        let raised = std::mem::take(&mut self.raised);
+        let mut ends = std::mem::take(&mut self.run_ends);
+        ends.clear();
+        // Channels that raised nothing add no run.
+        for &n in lens {
+            if ends.last().copied().unwrap_or(0) < n {
+                ends.push(n);
+            }
+        }
+        let channels_end = ends.last().copied().unwrap_or(0);
+        ends.extend((1..=faults).map(|f| channels_end + f));
+        self.events.extend_runs(&raised, &ends);
+        if self.plc.is_some() {
+            self.queue_hw_events(&raised);
+        }
+        (self.raised, self.run_ends) = (raised, ends);
     }
 
     /// Writes the sources' current levels into the input image.
@@ -818,6 +837,13 @@ mod tests {
     fn get(s: &mut K2Sim, text: &str) -> Value {
         let op = s.space().parse(text).unwrap()[0];
         s.read(&[op]).unwrap()[0]
+    }
+
+    #[test]
+    fn every_model_fits_the_step_buffer() {
+        for m in catalog::MODELS {
+            assert!(m.pto.len() + m.hsc.len() <= MAX_CHANNELS, "{}", m.name);
+        }
     }
 
     #[test]
