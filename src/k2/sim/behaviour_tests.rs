@@ -647,7 +647,8 @@ fn backup_area_and_retained_ranges_persist_and_wear_is_counted() {
 /// general path does: two simulators given the same operations, one with the quiet path
 /// off, compared byte for byte (SM, events) after every step of irregular size — through
 /// CV = PV hits, moving off a PV, a direction change, a CV written by HSC, a user
-/// overwriting a status byte, and a multi-PV table finishing and being passed.
+/// overwriting a status byte, a multi-PV table finishing and being passed, and inputs
+/// written by the user.
 #[test]
 fn quiet_counting_matches_the_general_path() {
     let (mut a, ca) = sim("K204ET-16DT");
@@ -688,6 +689,8 @@ fn quiet_counting_matches_the_general_path() {
                 s.hsc(2).unwrap();
             }),
             1200 => both(&mut a, &mut b, &|s| set(s, "SMB36=16#0F")),
+            1600 => both(&mut a, &mut b, &|s| set(s, "I0.0=1")),
+            1601 => both(&mut a, &mut b, &|s| set(s, "I0.0=0")),
             1400 => both(&mut a, &mut b, &|s| {
                 let r = HSC_REGS[3];
                 set(s, "VB3009=3, VD3010=100, VD3014=200, VD3018=300");

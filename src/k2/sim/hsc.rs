@@ -301,6 +301,11 @@ struct Quiet {
     /// The counter's status bits and segment number, which only a CV = PV step changes.
     status: u8,
     segment: u8,
+    /// The PV a count would reach next ([`HscChannel::target`]) and the PV the status bits
+    /// compare with ([`HscChannel::current_pv`]): both change only with the settings or at
+    /// a CV = PV, and neither happens while the formula holds.
+    target: Option<i64>,
+    pv: Option<i64>,
 }
 
 /// What a drive depends on besides input levels: when none of it changed and the inputs
@@ -769,6 +774,8 @@ impl HscChannel {
                     cv: self.cv,
                     status: 0,
                     segment: 0,
+                    target: self.target(),
+                    pv: self.current_pv(),
                 })
             });
         }
@@ -792,10 +799,14 @@ impl HscChannel {
         // A step reaching the PV, or turning the direction bit, goes the general way; in the
         // others only CV = PV and CV > PV can change (moving off a PV, or past the last PV
         // of a finished table), and the segment cannot.
-        if self.hits(total) || (total != 0 && self.last_up != (total > 0)) {
+        let reaches = q.target.is_some_and(|target| {
+            let dist = (target - self.cv) * total.signum();
+            dist > 0 && dist as u64 <= total.unsigned_abs()
+        });
+        if reaches || (total != 0 && self.last_up != (total > 0)) {
             return false;
         }
-        let (eq, gt) = match self.current_pv() {
+        let (eq, gt) = match q.pv {
             Some(pv) => (cv == pv, cv > pv),
             None => (false, false),
         };
@@ -848,6 +859,8 @@ impl HscChannel {
         if !self.running {
             return;
         }
+        // Written edges may move the CV and the PV compared next: no quiet formula across.
+        self.settings += 1;
         let new = mem.i.clone();
         let (o, n) = (|p: Pin| level_in(old, p), |p: Pin| level_in(&new, p));
         if let Some(p) = m.reset {
