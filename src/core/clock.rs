@@ -71,6 +71,7 @@ impl Clock {
     }
 
     /// Virtual time since the clock started.
+    #[inline]
     pub fn now(&self) -> Duration {
         match self.shared.stepped_ns.load(Ordering::Acquire) {
             FOLLOWING => {
@@ -90,6 +91,7 @@ impl Clock {
     }
 
     /// Advances by exactly `d` and leaves the clock stepped from then on.
+    #[inline]
     pub fn step(&self, d: Duration) {
         let s = &self.shared.stepped_ns;
         let dn = ns(d);

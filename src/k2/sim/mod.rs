@@ -53,8 +53,9 @@ pub struct K2Sim {
     space: K2Space,
     pub mem: Memory,
     pub clock: Clock,
-    /// Virtual time the simulator was powered up.
+    /// Virtual time the simulator was powered up, and in ns.
     start: Duration,
+    start_ns: u64,
     /// Virtual time of the last `advance`.
     pub last: Duration,
     /// Pulse output channels the model has (none on relay models).
@@ -94,6 +95,7 @@ impl K2Sim {
             mem,
             clock,
             start,
+            start_ns: inputs::ns(start),
             last: start,
             pto,
             hsc,
@@ -127,6 +129,7 @@ impl K2Sim {
     }
 
     /// Brings the simulation up to the clock's current time.
+    #[inline]
     pub fn advance(&mut self) {
         let now = self.clock.now().max(self.last);
         self.advance_to(now);
@@ -135,6 +138,7 @@ impl K2Sim {
     /// Brings the simulation up to virtual time `now`: pulses, counts, events, input
     /// levels and system bits, all computed from the elapsed time in one step — and, when
     /// a program runs, every scan due before `now` at its own start time ([`program`]).
+    #[inline]
     pub fn advance_to(&mut self, now: Duration) {
         if self.wiring.is_some() {
             return self.advance_wired(now);
@@ -144,6 +148,7 @@ impl K2Sim {
 
     /// [`Self::advance_to`] without the wiring: the scans due (when a program runs) and the
     /// hardware, one formula per signal over the interval.
+    #[inline]
     pub(crate) fn advance_plain(&mut self, now: Duration) {
         if self.plc.is_some() {
             self.run_scans(now);
@@ -191,7 +196,7 @@ impl K2Sim {
             self.run_events(&lens[..k], faults);
         }
         self.last = now;
-        self.refresh_system_bits(now);
+        self.refresh_system_bits_ns(to.1);
     }
 
     /// Logs the events a step raised (one time-ordered run per channel, then one per fault)
@@ -233,11 +238,16 @@ impl K2Sim {
     }
 
     fn refresh_system_bits(&mut self, now: Duration) {
+        self.refresh_system_bits_ns(inputs::ns(now));
+    }
+
+    /// [`Self::refresh_system_bits`] at `now_ns`.
+    fn refresh_system_bits_ns(&mut self, now_ns: u64) {
         // 64-bit arithmetic in ns (a u128 division is a library call; 64 bits of ns is 584
         // years of uptime); the scan time is a whole number of ms, so scans follow from ms.
         const SCAN_MS: u64 = SCAN_TIME.as_millis() as u64;
         const _: () = assert!(SCAN_TIME.as_nanos() == SCAN_MS as u128 * 1_000_000);
-        let ms = inputs::ns(now).saturating_sub(inputs::ns(self.start)) / 1_000_000;
+        let ms = now_ns.saturating_sub(self.start_ns) / 1_000_000;
         let scans = ms / SCAN_MS;
         let mut b = 0u8;
         b |= 1; // SM0.0 always on (§8)

@@ -180,6 +180,7 @@ impl K2Sim {
         self.backup.since = Duration::from_nanos(s.backup.since_ns);
         self.faults = s.faults.clone();
         self.start = Duration::from_nanos(s.start_ns);
+        self.start_ns = s.start_ns;
         self.last = Duration::from_nanos(s.last_ns);
         self.plc = plc;
         self.agent_base = s.agent_base;
