@@ -9,6 +9,10 @@
 //!
 //! Usage: `bench_modbus [--seconds S] [--count N] [--runs R] [--peers DIR] [--py DIR]`
 //! (`--peers`: the built C programs, default `target/bench`; `--py`: `bench/py`).
+//!
+//! `bench_modbus transactions URL REGS N` reads REGS words from VW0 N times after one warm-up
+//! read, with no timing: `bench/callgrind.sh` runs it under callgrind to count the driver's
+//! instructions per transaction.
 
 use plcsh::core::Clock;
 use serde_json::Value as Json;
@@ -284,8 +288,27 @@ fn header(first: &str, refs: &[(&str, &Option<Fig>)]) -> String {
     format!("{h}\n{sep}")
 }
 
+/// `transactions URL REGS N`: N reads of REGS words from VW0 after one warm-up read.
+fn transactions(mut args: impl Iterator<Item = String>) {
+    let usage = "usage: bench_modbus transactions URL REGS N";
+    let url = args.next().expect(usage);
+    let regs: usize = args.next().and_then(|v| v.parse().ok()).expect(usage);
+    let n: u64 = args.next().and_then(|v| v.parse().ok()).expect(usage);
+    let mut dev = plcsh::session::open_url(&url, &Clock::following()).unwrap_or_else(|e| panic!("{url}: {e}"));
+    let ops = dev.operands().parse(&format!("VW0[{regs}]")).expect("VW0[n] parses");
+    dev.read(&ops).expect("warm-up read");
+    for _ in 0..n {
+        std::hint::black_box(dev.read(&ops).expect("read"));
+    }
+    println!("{{\"n\":{n},\"requests\":{}}}", dev.requests());
+}
+
 fn main() {
-    let mut args = std::env::args().skip(1);
+    let mut args = std::env::args().skip(1).peekable();
+    if args.peek().map(String::as_str) == Some("transactions") {
+        args.next();
+        return transactions(args);
+    }
     let exe_dir = std::env::current_exe().ok().and_then(|p| p.parent().map(Path::to_path_buf)).unwrap_or_default();
     let mut o = Opts {
         rounds: 10,
