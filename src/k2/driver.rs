@@ -37,7 +37,7 @@ use super::catalog::{self, Model};
 use super::coalesce::{self, Costs};
 use super::memory::Memory;
 use super::modbus_map::{self, DataMut, Span, WordOrder};
-use super::operand::K2Operand;
+use super::operand::{K2Operand, Width};
 use super::space::K2Space;
 use crate::core::link::fd_stream::FdStream;
 use crate::core::link::traced::Traced;
@@ -155,8 +155,50 @@ struct ReadPlan {
     k2: Vec<K2Operand>,
     spans: Vec<Span>,
     requests: Vec<Span>,
-    /// For each operand: the request holding it and its offset there.
-    at: Vec<(usize, usize)>,
+    /// For each operand: where its bits are in the replies.
+    takes: Vec<Take>,
+}
+
+/// Where one operand's value is in the replies of a planned read, worked out once per plan
+/// so that decoding a polled batch is a byte load per operand.
+#[derive(Clone, Copy, Debug)]
+struct Take {
+    /// The request (reply block) holding it.
+    block: usize,
+    how: How,
+}
+
+#[derive(Clone, Copy, Debug)]
+enum How {
+    /// A word in a register reply: its high byte's index.
+    Word(usize),
+    /// A byte in a register reply: its index.
+    Byte(usize),
+    /// Anything else, through [`modbus_map::decode_reply`]: the span's offset and length in
+    /// units of the reply, and whether the reply is packed bits.
+    Span { off: usize, count: usize, bits: bool },
+}
+
+impl Take {
+    fn new(op: &K2Operand, span: &Span, request: &Span, block: usize, off: usize) -> Take {
+        let bits = request.table().is_bits();
+        let at = 2 * off + (op.byte % 2) as usize;
+        let how = match op.width {
+            Width::Word if !bits => How::Word(at),
+            Width::Byte if !bits => How::Byte(at),
+            _ => How::Span { off, count: span.count as usize, bits },
+        };
+        Take { block, how }
+    }
+
+    fn raw(&self, op: &K2Operand, blocks: &[Vec<u8>], order: WordOrder) -> u32 {
+        let b = &blocks[self.block];
+        match self.how {
+            How::Word(at) => u16::from_be_bytes([b[at], b[at + 1]]) as u32,
+            How::Byte(at) => b[at] as u32,
+            How::Span { off, count, bits } => modbus_map::decode_reply(op, bits, b, off, count, order),
+        }
+    }
 }
 
 impl ReadPlan {
@@ -165,8 +207,15 @@ impl ReadPlan {
         let k2: Vec<K2Operand> = ops.iter().map(|o| K2Operand::from_key(o.key)).collect();
         let spans: Vec<Span> = k2.iter().map(|o| modbus_map::locate_read(space, o)).collect::<Result<_>>()?;
         let requests = coalesce::plan_reads(&spans, costs);
-        let at = spans.iter().map(|s| coalesce::find(&requests, s).expect("every span is planned")).collect();
-        Ok(ReadPlan { ops: ops.to_vec(), k2, spans, requests, at })
+        let takes = k2
+            .iter()
+            .zip(&spans)
+            .map(|(k, s)| {
+                let (r, off) = coalesce::find(&requests, s).expect("every span is planned");
+                Take::new(k, s, &requests[r], r, off)
+            })
+            .collect();
+        Ok(ReadPlan { ops: ops.to_vec(), k2, spans, requests, takes })
     }
 }
 
@@ -587,12 +636,8 @@ impl K2Wire {
         let values = read.map(|()| {
             ops.iter()
                 .zip(&plan.k2)
-                .zip(&plan.spans)
-                .zip(&plan.at)
-                .map(|(((o, k), s), &(r, off))| {
-                    let bits = plan.requests[r].table().is_bits();
-                    o.dtype.decode(modbus_map::decode_reply(k, bits, &blocks[r], off, s.count as usize, order))
-                })
+                .zip(&plan.takes)
+                .map(|((o, k), t)| o.dtype.decode(t.raw(k, &blocks, order)))
                 .collect()
         });
         self.blocks = blocks;
@@ -731,6 +776,42 @@ mod tests {
         let sm = dev.operands().parse("SMB67").unwrap();
         assert_eq!(dev.read(&sm).unwrap_err().kind, ErrorKind::Unsupported);
         assert_eq!(dev.requests(), 3, "nothing was sent for SMB67");
+        drop(dev);
+        srv.join().unwrap();
+    }
+
+    /// Every operand shape read over the wire equals the simulator's own read of it, polled
+    /// twice (the second read reuses the plan and the reply buffers).
+    #[test]
+    fn a_mixed_batch_reads_as_the_simulator_reads_it() {
+        use crate::core::Clock;
+        use crate::k2::sim::modbus_server::{serve_rtu_stream, K2Service};
+        use std::sync::{Arc, Mutex};
+        let (client, server) = tokio::io::duplex(1024);
+        let model = catalog::find("K205-16DT").unwrap();
+        let mut sim = crate::k2::sim::K2Sim::new(model, Clock::stepped());
+        for (k, b) in sim.mem.v.iter_mut().enumerate().take(400) {
+            *b = (k * 37 + 11) as u8;
+        }
+        for (k, b) in sim.mem.m.iter_mut().enumerate().take(16) {
+            *b = (k * 53 + 7) as u8;
+        }
+        let sim = Arc::new(Mutex::new(sim));
+        let service = K2Service::new(sim.clone(), 1);
+        let srv = std::thread::spawn(move || {
+            let rt = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
+            let _ = rt.block_on(serve_rtu_stream(server, service));
+        });
+        let settings =
+            Settings { unit: 1, word_order: WordOrder::HighFirst, timeout: Duration::from_secs(2), retries: 0 };
+        let mut dev = K2Wire::attach(client, true, model, settings, "pipe".into()).unwrap();
+        let text = "VB0 VB1 VW0 VW1 VW2/INT VD4 VD5 VD8/REAL V3.5 K4V10.2 M1.2 MB1 MW2 MD3 K3M0.5 VW100[5] VB300";
+        let ops: Vec<Operand> =
+            text.split(' ').flat_map(|t| dev.operands().parse(t).unwrap_or_else(|e| panic!("{t}: {e}"))).collect();
+        let want = sim.lock().unwrap().read(&ops).unwrap();
+        for _ in 0..2 {
+            assert_eq!(dev.read(&ops).unwrap(), want, "{text}");
+        }
         drop(dev);
         srv.join().unwrap();
     }
