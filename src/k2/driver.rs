@@ -23,13 +23,16 @@
 //! SM operands and the instructions (PLS, HDEF, HSC, PSTOP, RTC) go through the PLC-side
 //! helper program's mailbox when the device has `agent=VB…` ([`sm`], docs/agent.md).
 //!
-//! The `Device` trait is synchronous; the driver owns a current-thread tokio runtime and
-//! blocks on it per request. Every frame is reported to [`crate::core::trace`]. The Modbus
-//! framing is the driver's own ([`client`]): a read's reply stays in the receive buffer and
-//! each operand is decoded straight from its bytes, so a polling loop's read of 100 registers
-//! costs one slice copy and a plan it already has, not a conversion per register.
+//! The `Device` trait is synchronous, and so is the driver: a request is a `write` on the
+//! socket or serial port and the reply a `poll` and a `read` ([`port`]; a stream handed over
+//! with [`K2Wire::attach`] runs on a runtime of its own). Every frame is reported to
+//! [`crate::core::trace`]. The Modbus framing is the driver's own ([`client`]): a read's reply
+//! stays in the receive buffer and each operand is decoded straight from its bytes, so a
+//! polling loop's read of 100 registers costs one slice copy and a plan it already has, not
+//! a conversion per register.
 
 mod client;
+mod port;
 mod sm;
 
 use super::agent::client::AgentClient;
@@ -39,12 +42,11 @@ use super::memory::Memory;
 use super::modbus_map::{self, DataMut, Span, WordOrder};
 use super::operand::{K2Operand, Width};
 use super::space::K2Space;
-use crate::core::link::fd_stream::FdStream;
-use crate::core::link::traced::Traced;
 use crate::core::trace::Proto;
 use crate::core::url::DeviceUrl;
 use crate::core::{Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
 use client::ModbusClient;
+use port::{AsyncPort, FdPort};
 use std::collections::HashMap;
 use std::time::Duration;
 use tokio_modbus::{ExceptionCode, Request};
@@ -133,7 +135,6 @@ pub struct K2Wire {
     space: K2Space,
     link: Link,
     settings: Settings,
-    rt: tokio::runtime::Runtime,
     ctx: Option<ModbusClient>,
     requests: u64,
     /// The data of each request of the last read (registers as big-endian bytes, coils
@@ -281,16 +282,11 @@ impl K2Wire {
 
     /// A driver for `link` that connects on first use.
     pub fn with_link(link: Link, model: &'static Model, settings: Settings, name: String) -> Result<K2Wire> {
-        let rt = tokio::runtime::Builder::new_current_thread()
-            .enable_all()
-            .build()
-            .map_err(|e| Error::io("cannot start the driver's runtime").cause(e))?;
         Ok(K2Wire {
             info: DeviceInfo { family: "k2", model: model.name.to_string(), link: name, simulated: false },
             space: K2Space::new(model),
             link,
             settings,
-            rt,
             ctx: None,
             requests: 0,
             blocks: Vec::new(),
@@ -302,16 +298,17 @@ impl K2Wire {
     }
 
     /// A driver on a byte stream the caller opened (any transport, an in-memory pipe in
-    /// tests), with RTU (`rtu = true`) or Modbus TCP framing. Call it inside the runtime the
-    /// stream belongs to, if any; the driver polls it on its own runtime.
+    /// tests), with RTU (`rtu = true`) or Modbus TCP framing. The driver polls it on a
+    /// runtime of its own.
     pub fn attach<T>(transport: T, rtu: bool, model: &'static Model, settings: Settings, name: String) -> Result<K2Wire>
     where
         T: tokio::io::AsyncRead + tokio::io::AsyncWrite + Send + Unpin + 'static,
     {
         let mut dev = K2Wire::with_link(Link::Attached { rtu }, model, settings, name.clone())?;
         let proto = if rtu { Proto::ModbusRtu } else { Proto::ModbusTcp };
-        let t = Traced::with_proto(transport, name, proto, "attached stream");
-        dev.ctx = Some(ModbusClient::new(Box::new(t), rtu, dev.settings.unit));
+        let port = AsyncPort::new(Box::new(transport), &name, proto, "attached stream")
+            .map_err(|e| Error::io("cannot start a runtime for the attached stream").cause(e))?;
+        dev.ctx = Some(ModbusClient::new(Box::new(port), rtu, dev.settings.unit));
         Ok(dev)
     }
 
@@ -323,50 +320,40 @@ impl K2Wire {
         let unit = self.settings.unit;
         let name = self.info.link.clone();
         let timeout = self.settings.timeout;
-        let link = self.link.clone();
         self.peer_closed.store(false, std::sync::atomic::Ordering::Relaxed);
         let closed = self.peer_closed.clone();
-        let ctx: Result<ModbusClient> = self.rt.block_on(async move {
-            match &link {
+        let link = &self.link;
+        let ctx = (|| -> Result<ModbusClient> {
+            match link {
                 Link::Tcp { addr } | Link::RtuOverTcp { addr } => {
-                    let stream = tokio::time::timeout(timeout, tokio::net::TcpStream::connect(addr.as_str()))
-                        .await
-                        .map_err(|_| {
-                            Error::link(format!("cannot connect to {addr}: no answer within {}", ms(timeout)))
-                        })?
-                        .map_err(|e| {
-                            Error::link(format!("cannot connect to {addr}")).cause(e).hint(
-                                "check that HOST:PORT is the PLC or gateway (a K204ET answers Modbus TCP on port 502), that it is powered and reachable (ping), and that no firewall blocks the port",
-                            )
-                        })?;
+                    let stream = tcp_connect(addr, timeout)?;
                     stream.set_nodelay(true).map_err(|e| Error::link("cannot set TCP_NODELAY").cause(e))?;
-                    let proto = if matches!(link, Link::Tcp { .. }) { Proto::ModbusTcp } else { Proto::RtuOverTcp };
-                    let t = Traced::with_proto(stream, name, proto, addr).watch_eof(closed);
-                    Ok(ModbusClient::new(Box::new(t), !matches!(link, Link::Tcp { .. }), unit))
+                    let tcp = matches!(link, Link::Tcp { .. });
+                    let proto = if tcp { Proto::ModbusTcp } else { Proto::RtuOverTcp };
+                    FdPort::new(stream, &name, proto, addr)
+                        .map(|p| ModbusClient::new(Box::new(p.watch_eof(closed)), !tcp, unit))
+                        .map_err(|e| Error::link(format!("cannot use the connection to {addr}")).cause(e))
                 }
-                Link::Attached { .. } => {
-                    Err(Error::link("the attached stream failed and cannot be reopened by plcsh"))
-                }
+                Link::Attached { .. } => Err(Error::link("the attached stream failed and cannot be reopened by plcsh")),
                 Link::Rtu { path, baud, parity, stop } => {
-                    // serialport configures the line (and holds it exclusively); FdStream
-                    // carries the frames (see core::link::fd_stream for why not SerialStream).
+                    // serialport configures the line (and holds it exclusively); the port carries
+                    // the frames with plain reads and writes on its descriptor.
                     let port = serialport::new(path.as_str(), *baud)
-                        .parity(*parity)
-                        .stop_bits(*stop)
-                        .data_bits(serialport::DataBits::Eight)
-                        .open_native()
-                        .map_err(|e| {
-                            Error::link(format!("cannot open the serial port {path}")).cause(e).hint(
-                                "check the port path (ls /dev/ttyUSB* /dev/serial/by-id; a USB adapter may be unplugged), that no other program holds it, and that you may open it (the dialout group); the next command opens it again once it is back",
-                            )
-                        })?;
-                    let stream = FdStream::new(port)
-                        .map_err(|e| Error::link(format!("cannot register the serial port {path}")).cause(e))?;
-                    let t = Traced::with_proto(stream, name, Proto::ModbusRtu, path);
-                    Ok(ModbusClient::new(Box::new(t), true, unit))
+                    .parity(*parity)
+                    .stop_bits(*stop)
+                    .data_bits(serialport::DataBits::Eight)
+                    .open_native()
+                    .map_err(|e| {
+                        Error::link(format!("cannot open the serial port {path}")).cause(e).hint(
+                            "check the port path (ls /dev/ttyUSB* /dev/serial/by-id; a USB adapter may be unplugged), that no other program holds it, and that you may open it (the dialout group); the next command opens it again once it is back",
+                        )
+                    })?;
+                    FdPort::new(port, &name, Proto::ModbusRtu, path)
+                        .map(|p| ModbusClient::new(Box::new(p), true, unit))
+                        .map_err(|e| Error::link(format!("cannot use the serial port {path}")).cause(e))
                 }
             }
-        });
+        })();
         match ctx {
             Ok(c) => {
                 self.ctx = Some(c);
@@ -419,19 +406,23 @@ impl K2Wire {
             let ctx = self.ctx.as_mut().expect("connected");
             self.requests += 1;
             let timeout = self.settings.timeout;
-            let r = self.rt.block_on(async {
-                tokio::time::timeout(timeout, async {
-                    match op {
-                        Op::Read(fc, start, n) => ctx.read(fc, start, n).await.map(|r| r.map(|()| None)),
-                        Op::Call(req) => ctx.call(req).await.map(|r| r.map(Some)),
-                    }
-                })
-                .await
-            });
+            let deadline = std::time::Instant::now() + timeout;
+            let r = match op {
+                Op::Read(fc, start, n) => ctx.read(fc, start, n, deadline).map(|r| r.map(|()| None)),
+                Op::Call(req) => ctx.call(req, deadline).map(|r| r.map(Some)),
+            };
             match r {
-                Ok(Ok(Ok(resp))) => return Ok(resp),
-                Ok(Ok(Err(code))) => return Err(Failure::Exception(code)),
-                Ok(Err(e)) => {
+                Ok(Ok(resp)) => return Ok(resp),
+                Ok(Err(code)) => return Err(Failure::Exception(code)),
+                Err(e) if e.kind() == std::io::ErrorKind::TimedOut => {
+                    self.ctx = None;
+                    last = Some(Failure::Link(Error::link(format!(
+                        "the device did not answer: no reply from unit {} within {}",
+                        self.settings.unit,
+                        ms(timeout)
+                    ))));
+                }
+                Err(e) => {
                     // Dropped connection, garbled or mismatched reply: start afresh.
                     self.ctx = None;
                     last = Some(Failure::Link(if self.peer_closed.load(std::sync::atomic::Ordering::Relaxed) {
@@ -442,14 +433,6 @@ impl K2Wire {
                     } else {
                         Error::link("the link failed").cause(e)
                     }));
-                }
-                Err(_) => {
-                    self.ctx = None;
-                    last = Some(Failure::Link(Error::link(format!(
-                        "the device did not answer: no reply from unit {} within {}",
-                        self.settings.unit,
-                        ms(timeout)
-                    ))));
                 }
             }
         }
@@ -528,6 +511,30 @@ impl K2Wire {
         }
         Ok(())
     }
+}
+
+/// Connects to `addr` (`HOST:PORT`; every address it resolves to is tried) within `timeout`.
+fn tcp_connect(addr: &str, timeout: Duration) -> Result<std::net::TcpStream> {
+    use std::net::ToSocketAddrs;
+    let refused = |e: std::io::Error| {
+        Error::link(format!("cannot connect to {addr}")).cause(e).hint(
+            "check that HOST:PORT is the PLC or gateway (a K204ET answers Modbus TCP on port 502), that it is powered and reachable (ping), and that no firewall blocks the port",
+        )
+    };
+    let mut last = None;
+    for a in addr.to_socket_addrs().map_err(refused)? {
+        match std::net::TcpStream::connect_timeout(&a, timeout) {
+            Ok(s) => return Ok(s),
+            Err(e) => last = Some(e),
+        }
+    }
+    Err(match last {
+        Some(e) if e.kind() == std::io::ErrorKind::TimedOut => {
+            Error::link(format!("cannot connect to {addr}: no answer within {}", ms(timeout)))
+        }
+        Some(e) => refused(e),
+        None => refused(std::io::Error::new(std::io::ErrorKind::NotFound, "the name resolves to no address")),
+    })
 }
 
 fn with_port(target: &str) -> String {

@@ -1,4 +1,4 @@
-//! The driver's Modbus client framing: one request in flight on a byte stream, Modbus TCP
+//! The driver's Modbus client framing: one request in flight on a [`Port`], Modbus TCP
 //! (MBAP header, Modbus messaging on TCP/IP V1.0b §3.1.3) or RTU (unit id, PDU, CRC-16;
 //! Modbus over serial line V1.02 §2.5.1), with the frame and reply buffers kept from one
 //! request to the next.
@@ -18,21 +18,23 @@
 //! Anything else fails the request as a link error (the driver reconnects and retries).
 //! Bytes left from an earlier exchange are dropped before each request.
 
+use super::port::Port;
 use crate::k2::sim::rtu_frame::crc16;
 use std::io;
-use tokio::io::{AsyncRead, AsyncReadExt, AsyncWrite, AsyncWriteExt};
+use std::time::Instant;
+use tokio::io::{AsyncRead, AsyncWrite};
 use tokio_modbus::{ExceptionCode, Request, Response};
 
 /// Longest RTU frame, and the most bytes dropped while looking for one.
 const MAX_FRAME: usize = 256;
 
-/// A byte stream the client can run on.
+/// An async byte stream a port can carry ([`super::port::AsyncPort`]).
 pub trait Stream: AsyncRead + AsyncWrite + Send + Unpin {}
 impl<T: AsyncRead + AsyncWrite + Send + Unpin> Stream for T {}
 
 /// A Modbus client on one connection.
 pub struct ModbusClient {
-    stream: Box<dyn Stream>,
+    port: Box<dyn Port>,
     rtu: bool,
     unit: u8,
     tid: u16,
@@ -57,9 +59,9 @@ enum Found {
 }
 
 impl ModbusClient {
-    pub fn new(stream: Box<dyn Stream>, rtu: bool, unit: u8) -> ModbusClient {
+    pub fn new(port: Box<dyn Port>, rtu: bool, unit: u8) -> ModbusClient {
         ModbusClient {
-            stream,
+            port,
             rtu,
             unit,
             tid: 0,
@@ -102,12 +104,12 @@ impl ModbusClient {
 
     /// Reads `count` units from `start` with function `fc` (1–4). On success the reply's
     /// data (after the byte count) is [`Self::data`]; its length is checked by the caller.
-    pub async fn read(&mut self, fc: u8, start: u16, count: u16) -> io::Result<Result<(), ExceptionCode>> {
+    pub fn read(&mut self, fc: u8, start: u16, count: u16, deadline: Instant) -> io::Result<Result<(), ExceptionCode>> {
         self.begin(fc);
         self.put(start);
         self.put(count);
         self.finish();
-        self.exchange().await
+        self.exchange(deadline)
     }
 
     /// The last reply's PDU after its function code.
@@ -116,7 +118,7 @@ impl ModbusClient {
     }
 
     /// Sends any request the K2 implements (function codes 1–6, 15, 16) and decodes the reply.
-    pub async fn call(&mut self, req: &Request<'_>) -> io::Result<Result<Response, ExceptionCode>> {
+    pub fn call(&mut self, req: &Request<'_>, deadline: Instant) -> io::Result<Result<Response, ExceptionCode>> {
         let fc = req.function_code().value();
         self.begin(fc);
         match req {
@@ -154,17 +156,16 @@ impl ModbusClient {
             other => return Err(io::Error::new(io::ErrorKind::Unsupported, format!("{other:?} is not a K2 request"))),
         }
         self.finish();
-        if let Err(code) = self.exchange().await? {
+        if let Err(code) = self.exchange(deadline)? {
             return Ok(Err(code));
         }
         response(req, self.data()).map(Ok)
     }
 
     /// Sends the frame and waits for the reply frame; `Err(code)` inside is an exception.
-    async fn exchange(&mut self) -> io::Result<Result<(), ExceptionCode>> {
+    fn exchange(&mut self, deadline: Instant) -> io::Result<Result<(), ExceptionCode>> {
         self.rx.clear();
-        self.stream.write_all(&self.frame).await?;
-        self.stream.flush().await?;
+        self.port.send(&self.frame, deadline)?;
         let mut dropped = 0;
         let (lo, hi) = loop {
             match self.found()? {
@@ -177,10 +178,7 @@ impl ModbusClient {
                 Found::Skip => return Err(invalid(format!("no valid reply frame in {MAX_FRAME} bytes"))),
                 Found::More => {}
             }
-            self.rx.reserve(MAX_FRAME + 8);
-            if self.stream.read_buf(&mut self.rx).await? == 0 {
-                return Err(io::Error::new(io::ErrorKind::UnexpectedEof, "the connection closed"));
-            }
+            self.port.recv(&mut self.rx, deadline)?;
         };
         self.pdu = (lo, hi);
         let fc = self.fc();
@@ -254,7 +252,7 @@ fn response(req: &Request<'_>, d: &[u8]) -> io::Result<Response> {
             }
         }
         Request::ReadHoldingRegisters(..) | Request::ReadInputRegisters(..) => {
-            if d.is_empty() || d.len() != 1 + d[0] as usize || d[0] % 2 != 0 {
+            if d.is_empty() || d.len() != 1 + d[0] as usize || !d[0].is_multiple_of(2) {
                 return Err(bad());
             }
             let words = d[1..].chunks_exact(2).map(|c| u16::from_be_bytes([c[0], c[1]])).collect();
@@ -276,24 +274,36 @@ fn response(req: &Request<'_>, d: &[u8]) -> io::Result<Response> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::core::trace::Proto;
+    use crate::k2::driver::port::AsyncPort;
+    use std::time::Duration;
     use tokio::io::{AsyncReadExt, AsyncWriteExt};
 
-    fn rt() -> tokio::runtime::Runtime {
-        tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap()
+    /// A client on one end of a pipe and, on a thread of its own, a peer that answers each
+    /// request it reads (of `req_len` bytes) with the next reply; the peer returns what it read.
+    fn pair(rtu: bool, req_len: usize, replies: Vec<Vec<u8>>) -> (ModbusClient, std::thread::JoinHandle<Vec<Vec<u8>>>) {
+        let (a, mut b) = tokio::io::duplex(1024);
+        let peer = std::thread::spawn(move || {
+            let rt = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
+            rt.block_on(async move {
+                let mut seen = Vec::new();
+                for reply in replies {
+                    let mut req = vec![0u8; req_len];
+                    if b.read_exact(&mut req).await.is_err() {
+                        break;
+                    }
+                    seen.push(req);
+                    b.write_all(&reply).await.unwrap();
+                }
+                seen
+            })
+        });
+        let port = AsyncPort::new(Box::new(a), "pipe", Proto::Unknown, "peer").unwrap();
+        (ModbusClient::new(Box::new(port), rtu, 1), peer)
     }
 
-    /// A peer that answers each request it reads (of `req_len` bytes) with the next reply.
-    async fn peer(mut s: tokio::io::DuplexStream, req_len: usize, replies: Vec<Vec<u8>>) -> Vec<Vec<u8>> {
-        let mut seen = Vec::new();
-        for reply in replies {
-            let mut req = vec![0u8; req_len];
-            if s.read_exact(&mut req).await.is_err() {
-                break;
-            }
-            seen.push(req);
-            s.write_all(&reply).await.unwrap();
-        }
-        seen
+    fn soon() -> Instant {
+        Instant::now() + Duration::from_secs(5)
     }
 
     fn rtu(mut f: Vec<u8>) -> Vec<u8> {
@@ -303,59 +313,54 @@ mod tests {
 
     #[test]
     fn tcp_frames_checked_and_data_left_in_place() {
-        rt().block_on(async {
-            let (a, b) = tokio::io::duplex(1024);
-            let mut c = ModbusClient::new(Box::new(a), false, 1);
-            let replies = vec![
-                // Transaction 1: FC 03, two registers, delivered whole.
-                vec![0, 1, 0, 0, 0, 7, 1, 3, 4, 0x12, 0x34, 0x56, 0x78],
-                // Transaction 2: exception 02.
-                vec![0, 2, 0, 0, 0, 3, 1, 0x83, 2],
-                // Transaction 3: answered with the wrong transaction id.
-                vec![0, 9, 0, 0, 0, 5, 1, 3, 2, 0, 0],
-            ];
-            let srv = tokio::spawn(peer(b, 12, replies));
-            assert!(c.read(3, 100, 2).await.unwrap().is_ok());
-            assert_eq!(c.data(), &[4, 0x12, 0x34, 0x56, 0x78]);
-            assert_eq!(c.read(3, 5000, 1).await.unwrap(), Err(ExceptionCode::IllegalDataAddress));
-            let e = c.read(3, 100, 1).await.unwrap_err();
-            assert!(e.to_string().contains("transaction 9"), "{e}");
-            let seen = srv.await.unwrap();
-            assert_eq!(seen[0], vec![0, 1, 0, 0, 0, 6, 1, 3, 0, 100, 0, 2], "MBAP header, FC 03, address, count");
-        });
+        let replies = vec![
+            // Transaction 1: FC 03, two registers.
+            vec![0, 1, 0, 0, 0, 7, 1, 3, 4, 0x12, 0x34, 0x56, 0x78],
+            // Transaction 2: exception 02.
+            vec![0, 2, 0, 0, 0, 3, 1, 0x83, 2],
+            // Transaction 3: answered with the wrong transaction id.
+            vec![0, 9, 0, 0, 0, 5, 1, 3, 2, 0, 0],
+        ];
+        let (mut c, peer) = pair(false, 12, replies);
+        assert!(c.read(3, 100, 2, soon()).unwrap().is_ok());
+        assert_eq!(c.data(), &[4, 0x12, 0x34, 0x56, 0x78]);
+        assert_eq!(c.read(3, 5000, 1, soon()).unwrap(), Err(ExceptionCode::IllegalDataAddress));
+        let e = c.read(3, 100, 1, soon()).unwrap_err();
+        assert!(e.to_string().contains("transaction 9"), "{e}");
+        let seen = peer.join().unwrap();
+        assert_eq!(seen[0], vec![0, 1, 0, 0, 0, 6, 1, 3, 0, 100, 0, 2], "MBAP header, FC 03, address, count");
     }
 
     #[test]
     fn rtu_resynchronises_after_noise_and_decodes_writes() {
-        rt().block_on(async {
-            let (a, b) = tokio::io::duplex(1024);
-            let mut c = ModbusClient::new(Box::new(a), true, 1);
-            let mut noisy = vec![0xFF, 0x00];
-            noisy.extend(rtu(vec![1, 3, 2, 0xAB, 0xCD]));
-            let replies = vec![noisy, rtu(vec![1, 6, 0, 100, 0x12, 0x34]), rtu(vec![2, 3, 2, 0, 0])];
-            let srv = tokio::spawn(peer(b, 8, replies));
-            assert!(c.read(3, 100, 1).await.unwrap().is_ok());
-            assert_eq!(c.data(), &[2, 0xAB, 0xCD]);
-            let r = c.call(&Request::WriteSingleRegister(100, 0x1234)).await.unwrap();
-            assert_eq!(r, Ok(Response::WriteSingleRegister(100, 0x1234)));
-            let e = c.read(3, 100, 1).await.unwrap_err();
-            assert!(e.to_string().contains("unit 2"), "{e}");
-            let seen = srv.await.unwrap();
-            assert_eq!(seen[0], rtu(vec![1, 3, 0, 100, 0, 1]));
-        });
+        let mut noisy = vec![0xFF, 0x00];
+        noisy.extend(rtu(vec![1, 3, 2, 0xAB, 0xCD]));
+        let replies = vec![noisy, rtu(vec![1, 6, 0, 100, 0x12, 0x34]), rtu(vec![2, 3, 2, 0, 0])];
+        let (mut c, peer) = pair(true, 8, replies);
+        assert!(c.read(3, 100, 1, soon()).unwrap().is_ok());
+        assert_eq!(c.data(), &[2, 0xAB, 0xCD]);
+        let r = c.call(&Request::WriteSingleRegister(100, 0x1234), soon()).unwrap();
+        assert_eq!(r, Ok(Response::WriteSingleRegister(100, 0x1234)));
+        let e = c.read(3, 100, 1, soon()).unwrap_err();
+        assert!(e.to_string().contains("unit 2"), "{e}");
+        let seen = peer.join().unwrap();
+        assert_eq!(seen[0], rtu(vec![1, 3, 0, 100, 0, 1]));
     }
 
     #[test]
-    fn a_closed_connection_and_a_wrong_function_are_errors() {
-        rt().block_on(async {
-            let (a, b) = tokio::io::duplex(1024);
-            let mut c = ModbusClient::new(Box::new(a), false, 1);
-            let srv = tokio::spawn(peer(b, 12, vec![vec![0, 1, 0, 0, 0, 3, 1, 4, 0]]));
-            let e = c.read(3, 100, 1).await.unwrap_err();
-            assert!(e.to_string().contains("function code 0x04"), "{e}");
-            srv.await.unwrap();
-            let e = c.read(3, 100, 1).await.unwrap_err();
-            assert!(matches!(e.kind(), io::ErrorKind::UnexpectedEof | io::ErrorKind::BrokenPipe), "{e}");
-        });
+    fn a_closed_connection_a_wrong_function_and_silence_are_errors() {
+        let (mut c, peer) = pair(false, 12, vec![vec![0, 1, 0, 0, 0, 3, 1, 4, 0]]);
+        let e = c.read(3, 100, 1, soon()).unwrap_err();
+        assert!(e.to_string().contains("function code 0x04"), "{e}");
+        peer.join().unwrap();
+        let e = c.read(3, 100, 1, soon()).unwrap_err();
+        assert!(matches!(e.kind(), io::ErrorKind::UnexpectedEof | io::ErrorKind::BrokenPipe), "{e}");
+        // A peer that reads and never answers: the deadline ends the wait.
+        let (mut c, peer) = pair(false, 12, vec![]);
+        let (a, _keep) = tokio::io::duplex(64);
+        drop(peer.join());
+        c.port = Box::new(AsyncPort::new(Box::new(a), "pipe", Proto::Unknown, "peer").unwrap());
+        let e = c.read(3, 100, 1, Instant::now() + Duration::from_millis(20)).unwrap_err();
+        assert_eq!(e.kind(), io::ErrorKind::TimedOut, "{e}");
     }
 }
