@@ -167,6 +167,8 @@ struct Take {
     /// The request (reply block) holding it.
     block: usize,
     how: How,
+    /// The type the value is read as.
+    dtype: crate::core::DataType,
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -175,30 +177,31 @@ enum How {
     Word(usize),
     /// A byte in a register reply: its index.
     Byte(usize),
-    /// Anything else, through [`modbus_map::decode_reply`]: the span's offset and length in
-    /// units of the reply, and whether the reply is packed bits.
-    Span { off: usize, count: usize, bits: bool },
+    /// Anything else, through [`modbus_map::decode_reply`]: the operand, its span's offset
+    /// and length in units of the reply, and whether the reply is packed bits.
+    Span { op: K2Operand, off: usize, count: usize, bits: bool },
 }
 
 impl Take {
-    fn new(op: &K2Operand, span: &Span, request: &Span, block: usize, off: usize) -> Take {
+    fn new(o: &Operand, op: &K2Operand, span: &Span, request: &Span, block: usize, off: usize) -> Take {
         let bits = request.table().is_bits();
         let at = 2 * off + (op.byte % 2) as usize;
         let how = match op.width {
             Width::Word if !bits => How::Word(at),
             Width::Byte if !bits => How::Byte(at),
-            _ => How::Span { off, count: span.count as usize, bits },
+            _ => How::Span { op: *op, off, count: span.count as usize, bits },
         };
-        Take { block, how }
+        Take { block, how, dtype: o.dtype }
     }
 
-    fn raw(&self, op: &K2Operand, blocks: &[Vec<u8>], order: WordOrder) -> u32 {
+    fn value(&self, blocks: &[Vec<u8>], order: WordOrder) -> Value {
         let b = &blocks[self.block];
-        match self.how {
+        let raw = match self.how {
             How::Word(at) => u16::from_be_bytes([b[at], b[at + 1]]) as u32,
             How::Byte(at) => b[at] as u32,
-            How::Span { off, count, bits } => modbus_map::decode_reply(op, bits, b, off, count, order),
-        }
+            How::Span { op, off, count, bits } => modbus_map::decode_reply(&op, bits, b, off, count, order),
+        };
+        self.dtype.decode(raw)
     }
 }
 
@@ -208,12 +211,13 @@ impl ReadPlan {
         let k2: Vec<K2Operand> = ops.iter().map(|o| K2Operand::from_key(o.key)).collect();
         let spans: Vec<Span> = k2.iter().map(|o| modbus_map::locate_read(space, o)).collect::<Result<_>>()?;
         let requests = coalesce::plan_reads(&spans, costs);
-        let takes = k2
+        let takes = ops
             .iter()
+            .zip(&k2)
             .zip(&spans)
-            .map(|(k, s)| {
+            .map(|((o, k), s)| {
                 let (r, off) = coalesce::find(&requests, s).expect("every span is planned");
-                Take::new(k, s, &requests[r], r, off)
+                Take::new(o, k, s, &requests[r], r, off)
             })
             .collect();
         Ok(ReadPlan { ops: ops.to_vec(), k2, spans, requests, takes })
@@ -513,6 +517,16 @@ impl K2Wire {
     }
 }
 
+/// `a == b`, without a branch per field (a polling loop asks this of every read).
+fn same_batch(a: &[Operand], b: &[Operand]) -> bool {
+    a.len() == b.len()
+        && a.iter().zip(b).fold(0u64, |d, (x, y)| {
+            // Every field (a new one fails to compile here until it is compared).
+            let Operand { key, dtype, bits } = *x;
+            d | (key ^ y.key) | (dtype as u64 ^ y.dtype as u64) | (bits ^ y.bits) as u64
+        }) == 0
+}
+
 /// Connects to `addr` (`HOST:PORT`; every address it resolves to is tried) within `timeout`.
 fn tcp_connect(addr: &str, timeout: Duration) -> Result<std::net::TcpStream> {
     use std::net::ToSocketAddrs;
@@ -634,19 +648,13 @@ impl K2Wire {
     fn read_modbus(&mut self, ops: &[Operand]) -> Result<Vec<Value>> {
         // Polling loops read the same batch again and again: keep its plan.
         let plan = match self.last_read.take() {
-            Some(p) if p.ops == ops => p,
+            Some(p) if same_batch(&p.ops, ops) => p,
             _ => ReadPlan::new(&self.space, ops, self.link.costs())?,
         };
         let mut blocks = std::mem::take(&mut self.blocks);
         let read = self.read_plan(&plan.requests, &plan.spans, &plan.k2, &mut blocks);
         let order = self.settings.word_order;
-        let values = read.map(|()| {
-            ops.iter()
-                .zip(&plan.k2)
-                .zip(&plan.takes)
-                .map(|((o, k), t)| o.dtype.decode(t.raw(k, &blocks, order)))
-                .collect()
-        });
+        let values = read.map(|()| plan.takes.iter().map(|t| t.value(&blocks, order)).collect());
         self.blocks = blocks;
         self.last_read = Some(plan);
         values
@@ -821,6 +829,16 @@ mod tests {
         }
         drop(dev);
         srv.join().unwrap();
+    }
+
+    #[test]
+    fn a_kept_plan_is_reused_only_for_the_same_batch() {
+        let space = K2Space::new(catalog::find("K205-16DT").unwrap());
+        let p = |t: &str| -> Vec<Operand> { t.split(' ').flat_map(|o| space.parse(o).unwrap()).collect() };
+        assert!(same_batch(&p("VW0 VW2"), &p("VW0 VW2")));
+        assert!(!same_batch(&p("VW0 VW2"), &p("VW0 VW4")));
+        assert!(!same_batch(&p("VW0"), &p("VW0/INT")), "another type");
+        assert!(!same_batch(&p("VW0"), &p("VW0 VW2")));
     }
 
     #[test]
