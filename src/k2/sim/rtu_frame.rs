@@ -298,7 +298,7 @@ pub fn encode(unit: u8, function: u8, reply: &Result<Response, ExceptionCode>) -
 /// Encodes a reply PDU: the function code and data, or the function code | 0x80 and the
 /// exception code.
 pub fn encode_pdu(function: u8, reply: &Result<Response, ExceptionCode>) -> Vec<u8> {
-    let mut f = Vec::new();
+    let mut f = Vec::with_capacity(MAX_FRAME);
     let bits = |f: &mut Vec<u8>, b: &[bool]| {
         let mut packed = vec![0u8; b.len().div_ceil(8)];
         for (i, on) in b.iter().enumerate() {
