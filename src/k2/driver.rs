@@ -194,6 +194,7 @@ impl Take {
         Take { block, how, dtype: o.dtype }
     }
 
+    #[inline(always)]
     fn value(&self, blocks: &[Vec<u8>], order: WordOrder) -> Value {
         let b = &blocks[self.block];
         let raw = match self.how {

@@ -90,8 +90,9 @@ pub fn next_frame(buf: &mut Vec<u8>) -> Option<Frame> {
             Some(n) if buf.len() < n => return None,
             Some(n) => {
                 if crc_ok(&buf[..n]) {
-                    let frame: Vec<u8> = buf.drain(..n).collect();
-                    return Some(decode(&frame));
+                    let frame = decode(&buf[..n]);
+                    buf.drain(..n);
+                    return Some(frame);
                 }
             }
             None => {
@@ -156,8 +157,9 @@ pub fn take_frame(buf: &mut Vec<u8>) -> Take {
         Some(n) if n > MAX_FRAME => Take::Garbage,
         Some(n) if buf.len() < n => Take::More,
         Some(n) if crc_ok(&buf[..n]) => {
-            let frame: Vec<u8> = buf.drain(..n).collect();
-            Take::Frame(decode(&frame))
+            let frame = decode(&buf[..n]);
+            buf.drain(..n);
+            Take::Frame(frame)
         }
         Some(_) => Take::Garbage,
         None => match first_crc_end(&buf[..buf.len().min(MAX_FRAME)]) {
