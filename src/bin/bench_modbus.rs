@@ -344,6 +344,12 @@ fn main() {
     println!("# plcsh Modbus benchmark\n");
     let load = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
     println!("Load average when the run started: {}.\n", load.split_whitespace().take(3).collect::<Vec<_>>().join(" "));
+    // bench/run.sh names the machine, the commit and the phase (what else the machine was doing).
+    for (key, what) in [("PLCSH_BENCH_MACHINE", "Machine"), ("PLCSH_BENCH_COMMIT", "Commit"), ("PLCSH_BENCH_PHASE", "Phase")] {
+        if let Ok(v) = std::env::var(key) {
+            println!("{what}: {v}.\n");
+        }
+    }
     println!(
         "Each throughput figure: the best of {} interleaved runs of {} s (or {} transactions), one request in flight, loopback only; latencies are from that run.\n",
         o.rounds, o.seconds, o.count
@@ -370,6 +376,8 @@ fn main() {
     let lib_dev = c_rtu_srv.as_ref().map(|s| s.field("path"));
     let py_tcp = py_srv.as_ref().map(|s| s.field("tcp"));
 
+    let mut targets: Vec<Target> = Vec::new();
+    let mut floors: Vec<(String, Option<Fig>)> = Vec::new();
     let clients =
         ["plcsh driver", "libmodbus client (C)", "pymodbus sync", "pymodbus async", "mbpoll (10 ms poll delay)", floor];
     for regs in [1usize, 100] {
@@ -394,6 +402,8 @@ fn main() {
         );
         println!("## Clients → plcsh server, TCP, {regs} register(s)\n");
         print_table("client", &clients, &figs, &[("libmodbus client", &figs[1]), ("echo floor", &figs[5])]);
+        targets.push(Target::rate(format!("driver, TCP, {regs} register(s), vs libmodbus client"), &figs[0], &figs[1], 1.0));
+        floors.push((format!("TCP, {regs} register(s)"), figs[5].clone()));
 
         // Clients on plcsh's server, RTU on the pty.
         let figs = group(
@@ -420,6 +430,12 @@ fn main() {
         );
         println!("## Clients → plcsh server, RTU on a pty, {regs} register(s)\n");
         print_table("client", &clients, &figs, &[("libmodbus client", &figs[1]), ("echo floor", &figs[5])]);
+        targets.push(Target::rate(
+            format!("driver, RTU on a pty, {regs} register(s), vs libmodbus client"),
+            &figs[0],
+            &figs[1],
+            1.0,
+        ));
 
         // Servers under the libmodbus client, TCP.
         let figs = group(
@@ -435,6 +451,7 @@ fn main() {
                 echo_tcp.clone(),
             ],
         );
+        targets.push(Target::rate(format!("sim serve, TCP, {regs} register(s), vs libmodbus server"), &figs[0], &figs[1], 0.9));
         println!("## Servers under the libmodbus client, TCP, {regs} register(s)\n");
         print_table(
             "server",
@@ -456,6 +473,12 @@ fn main() {
                 echo_pty.clone(),
             ],
         );
+        targets.push(Target::rate(
+            format!("sim serve, RTU on a pty, {regs} register(s), vs libmodbus server"),
+            &figs[0],
+            &figs[1],
+            0.9,
+        ));
         println!("## Servers under the libmodbus client, RTU on a pty, {regs} register(s)\n");
         print_table(
             "server",
@@ -494,6 +517,47 @@ fn main() {
         &figs,
         &[("libmodbus one-shot", &figs[1])],
     );
+    if let (Some(p), Some(c), Some(t)) = (&figs[0], &figs[1], &figs[4]) {
+        let (p, c, t) = (p.p50.unwrap_or(0.0), c.p50.unwrap_or(0.0), t.p50.unwrap_or(0.0));
+        targets.push(Target { what: "one-shot median vs libmodbus one-shot (≤)".into(), got: p / c, want: 1.5, more: false });
+        targets.push(Target {
+            what: "one-shot start-up beyond `true`, ms (≤)".into(),
+            got: (p - t) / 1000.0,
+            want: 0.5,
+            more: false,
+        });
+    }
+    println!("## Targets\n");
+    println!("| target | measured | wanted | |\n|---|---:|---:|---|");
+    for t in &targets {
+        let met = if t.more { t.got >= t.want } else { t.got <= t.want };
+        println!("| {} | {:.2} | {:.2} | {} |", t.what, t.got, t.want, if met { "met" } else { "missed" });
+    }
+    let floor: Vec<String> =
+        floors.iter().map(|(k, f)| format!("{k}: {}", f.as_ref().map(|f| us(f.p50)).unwrap_or("—".into()))).collect();
+    println!("\nThe 12-byte echo floor (p50) in this run: {}.", floor.join("; "));
+    let load = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
+    println!("Load average when the run ended: {}.", load.split_whitespace().take(3).collect::<Vec<_>>().join(" "));
     drop(plcsh_srv);
     let _ = std::fs::remove_file(&link);
+}
+
+/// One target of the benchmark: a ratio (or a time) measured in this run against what is wanted.
+struct Target {
+    what: String,
+    got: f64,
+    want: f64,
+    /// Met when `got ≥ want` (throughput ratios); otherwise when `got ≤ want`.
+    more: bool,
+}
+
+impl Target {
+    /// `ours / reference` throughput, met at `want` or more (0 when either is missing).
+    fn rate(what: String, ours: &Option<Fig>, reference: &Option<Fig>, want: f64) -> Target {
+        let got = match (ours, reference) {
+            (Some(a), Some(b)) if b.rate() > 0.0 => a.rate() / b.rate(),
+            _ => 0.0,
+        };
+        Target { what: format!("{what} (≥)"), got, want, more: true }
+    }
 }
