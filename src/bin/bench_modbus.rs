@@ -345,7 +345,9 @@ fn main() {
     let load = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
     println!("Load average when the run started: {}.\n", load.split_whitespace().take(3).collect::<Vec<_>>().join(" "));
     // bench/run.sh names the machine, the commit and the phase (what else the machine was doing).
-    for (key, what) in [("PLCSH_BENCH_MACHINE", "Machine"), ("PLCSH_BENCH_COMMIT", "Commit"), ("PLCSH_BENCH_PHASE", "Phase")] {
+    for (key, what) in
+        [("PLCSH_BENCH_MACHINE", "Machine"), ("PLCSH_BENCH_COMMIT", "Commit"), ("PLCSH_BENCH_PHASE", "Phase")]
+    {
         if let Ok(v) = std::env::var(key) {
             println!("{what}: {v}.\n");
         }
@@ -402,7 +404,12 @@ fn main() {
         );
         println!("## Clients → plcsh server, TCP, {regs} register(s)\n");
         print_table("client", &clients, &figs, &[("libmodbus client", &figs[1]), ("echo floor", &figs[5])]);
-        targets.push(Target::rate(format!("driver, TCP, {regs} register(s), vs libmodbus client"), &figs[0], &figs[1], 1.0));
+        targets.push(Target::rate(
+            format!("driver, TCP, {regs} register(s), vs libmodbus client"),
+            &figs[0],
+            &figs[1],
+            1.0,
+        ));
         floors.push((format!("TCP, {regs} register(s)"), figs[5].clone()));
 
         // Clients on plcsh's server, RTU on the pty.
@@ -451,7 +458,12 @@ fn main() {
                 echo_tcp.clone(),
             ],
         );
-        targets.push(Target::rate(format!("sim serve, TCP, {regs} register(s), vs libmodbus server"), &figs[0], &figs[1], 0.9));
+        targets.push(Target::rate(
+            format!("sim serve, TCP, {regs} register(s), vs libmodbus server"),
+            &figs[0],
+            &figs[1],
+            0.9,
+        ));
         println!("## Servers under the libmodbus client, TCP, {regs} register(s)\n");
         print_table(
             "server",
@@ -519,7 +531,12 @@ fn main() {
     );
     if let (Some(p), Some(c), Some(t)) = (&figs[0], &figs[1], &figs[4]) {
         let (p, c, t) = (p.p50.unwrap_or(0.0), c.p50.unwrap_or(0.0), t.p50.unwrap_or(0.0));
-        targets.push(Target { what: "one-shot median vs libmodbus one-shot (≤)".into(), got: p / c, want: 1.5, more: false });
+        targets.push(Target {
+            what: "one-shot median vs libmodbus one-shot (≤)".into(),
+            got: p / c,
+            want: 1.5,
+            more: false,
+        });
         targets.push(Target {
             what: "one-shot start-up beyond `true`, ms (≤)".into(),
             got: (p - t) / 1000.0,

@@ -26,6 +26,7 @@
 use super::fault::FaultKind;
 use super::modbus_server::K2Service;
 use super::rtu_frame::{self, Frame};
+use std::future::Future;
 use std::io;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Arc;
@@ -131,6 +132,11 @@ pub async fn serve_rtu_over_tcp(listener: TcpListener, service: K2Service, limit
 async fn tcp_conn(mut s: TcpStream, service: K2Service, limits: Limits) -> io::Result<()> {
     let mut rx: Vec<u8> = Vec::with_capacity(2 * MBAP_MAX);
     let mut out: Vec<u8> = Vec::with_capacity(MBAP_MAX);
+    // The idle timer is armed once and moved on only when it fires early (a request came
+    // meanwhile), so a request costs a clock read, not a timer in the runtime's wheel.
+    let mut heard = tokio::time::Instant::now();
+    let idle = tokio::time::sleep_until(heard + limits.idle);
+    tokio::pin!(idle);
     loop {
         // Frame what has arrived: a whole request, or read more.
         let total = match rx.get(..7) {
@@ -146,10 +152,20 @@ async fn tcp_conn(mut s: TcpStream, service: K2Service, limits: Limits) -> io::R
         };
         let Some(total) = total else {
             rx.reserve(MBAP_MAX);
-            match tokio::time::timeout(limits.idle, s.read_buf(&mut rx)).await {
-                Err(_) | Ok(Ok(0)) => return Ok(()), // idle, or closed: done
-                Ok(r) => r?,
-            };
+            tokio::select! {
+                r = s.read_buf(&mut rx) => {
+                    if r? == 0 {
+                        return Ok(()); // closed
+                    }
+                    heard = tokio::time::Instant::now();
+                }
+                () = &mut idle => {
+                    if heard.elapsed() >= limits.idle {
+                        return Ok(()); // idle: close
+                    }
+                    idle.as_mut().reset(heard + limits.idle);
+                }
+            }
             continue;
         };
         let unit = rx[6];
@@ -166,11 +182,25 @@ async fn tcp_conn(mut s: TcpStream, service: K2Service, limits: Limits) -> io::R
             let len = (out.len() - 6) as u16;
             out[4..6].copy_from_slice(&len.to_be_bytes());
             // A client that stops reading is closed once a reply has waited too long.
-            match tokio::time::timeout(WRITE_STALL, s.write_all(&out)).await {
-                Ok(r) => r?,
-                Err(_) => return Ok(()),
+            if !write_stalling(&mut s, &out).await? {
+                return Ok(());
             }
         }
+    }
+}
+
+/// Writes `out`, giving up after [`WRITE_STALL`]: `Ok(false)` when it stalled. The write is
+/// tried once before a timer is set, so the usual reply (the socket takes it at once) costs
+/// no timer.
+async fn write_stalling<S: AsyncWrite + Unpin>(s: &mut S, out: &[u8]) -> io::Result<bool> {
+    let mut write = std::pin::pin!(s.write_all(out));
+    if let std::task::Poll::Ready(r) = std::future::poll_fn(|cx| std::task::Poll::Ready(write.as_mut().poll(cx))).await
+    {
+        return r.map(|()| true);
+    }
+    match tokio::time::timeout(WRITE_STALL, write).await {
+        Ok(r) => r.map(|()| true),
+        Err(_) => Ok(false),
     }
 }
 
@@ -217,7 +247,7 @@ where
                 }
                 // A client that stops reading fills the line; its replies are dropped after
                 // a while rather than holding this transport (or spinning on it).
-                let _ = tokio::time::timeout(WRITE_STALL, s.write_all(&out)).await;
+                let _ = write_stalling(&mut s, &out).await;
             }
         }
     }
