@@ -5,12 +5,13 @@
 #
 #   bench/run.sh                      # defaults: best of 10 interleaved runs of 0.3 s per figure
 #   bench/run.sh --seconds 3 --rounds 5 --runs 50
-#   bench/run.sh --phase "fuzzing at nice 10, one build"   # what else the machine is doing
+#   bench/run.sh --conditions "fuzzing at nice 10, one build"   # what else the machine is doing
 #   bench/run.sh callgrind [ARGS]     # instructions per transaction (bench/callgrind.sh)
 #   bench/run.sh oneshot [RUNS]       # one-shot start-up medians only (bench/oneshot.sh)
 #
-# The output starts with the machine (CPU model, cores, kernel), the commit, the phase and the
-# load average, and ends with each target met or missed, the echo floor and the load again.
+# The output starts with the machine (CPU model, cores, kernel), the commit, the conditions and
+# the load average, and ends with each target met or missed, the echo floor, the phase it shows
+# (fast or slow: this VM switches between them whatever its load) and the load again.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -18,11 +19,11 @@ mode=full
 case "${1:-}" in
     callgrind | oneshot) mode=$1; shift ;;
 esac
-phase=${PLCSH_BENCH_PHASE:-}
+conditions=${PLCSH_BENCH_CONDITIONS:-}
 args=()
 while [ $# -gt 0 ]; do
     case "$1" in
-        --phase) phase=$2; shift 2 ;;
+        --conditions) conditions=$2; shift 2 ;;
         *) args+=("$1"); shift ;;
     esac
 done
@@ -51,9 +52,9 @@ case $mode in
 esac
 PLCSH_BENCH_MACHINE="$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(nproc) cores, $(uname -sr)"
 PLCSH_BENCH_COMMIT="$(git rev-parse --short HEAD 2>/dev/null || echo unknown)$(git diff --quiet 2>/dev/null || echo ' (with uncommitted changes)'), $(date -u '+%Y-%m-%d %H:%M UTC')"
-# The phase: what the machine was doing besides this run (given, or what is busiest now).
-if [ -z "$phase" ]; then
-    phase="not given; busiest processes at the start: $(ps -eo pcpu=,ni=,comm= --sort=-pcpu | head -3 | awk '{printf "%s%s (%s%% CPU, nice %s)", (NR>1?", ":""), $3, $1, $2}')"
+# What the machine was doing besides this run (given, or what is busiest now).
+if [ -z "$conditions" ]; then
+    conditions="not given; busiest processes at the start: $(ps -eo pcpu=,ni=,comm= --sort=-pcpu | head -3 | awk '{printf "%s%s (%s%% CPU, nice %s)", (NR>1?", ":""), $3, $1, $2}')"
 fi
-export PLCSH_BENCH_MACHINE PLCSH_BENCH_COMMIT PLCSH_BENCH_PHASE="$phase"
+export PLCSH_BENCH_MACHINE PLCSH_BENCH_COMMIT PLCSH_BENCH_CONDITIONS="$conditions"
 exec target/release/bench_modbus --peers target/bench --py bench/py ${args[@]+"${args[@]}"}

@@ -344,9 +344,9 @@ fn main() {
     println!("# plcsh Modbus benchmark\n");
     let load = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
     println!("Load average when the run started: {}.\n", load.split_whitespace().take(3).collect::<Vec<_>>().join(" "));
-    // bench/run.sh names the machine, the commit and the phase (what else the machine was doing).
+    // bench/run.sh names the machine, the commit and what else the machine was doing.
     for (key, what) in
-        [("PLCSH_BENCH_MACHINE", "Machine"), ("PLCSH_BENCH_COMMIT", "Commit"), ("PLCSH_BENCH_PHASE", "Phase")]
+        [("PLCSH_BENCH_MACHINE", "Machine"), ("PLCSH_BENCH_COMMIT", "Commit"), ("PLCSH_BENCH_CONDITIONS", "Conditions")]
     {
         if let Ok(v) = std::env::var(key) {
             println!("{what}: {v}.\n");
@@ -553,11 +553,20 @@ fn main() {
     let floor: Vec<String> =
         floors.iter().map(|(k, f)| format!("{k}: {}", f.as_ref().map(|f| us(f.p50)).unwrap_or("—".into()))).collect();
     println!("\nThe 12-byte echo floor (p50) in this run: {}.", floor.join("; "));
+    // The phase: VMs like the development machine switch between a fast and a slow phase
+    // whatever their load; the TCP echo floor tells which one a run saw.
+    if let Some(us) = floors.first().and_then(|(_, f)| f.as_ref()).and_then(|f| f.p50) {
+        let phase = if us < FAST_PHASE_US { "fast" } else { "slow" };
+        println!("Phase: {phase} (the TCP echo floor's p50 is {us:.1} µs; fast means under {FAST_PHASE_US} µs).");
+    }
     let load = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
     println!("Load average when the run ended: {}.", load.split_whitespace().take(3).collect::<Vec<_>>().join(" "));
     drop(plcsh_srv);
     let _ = std::fs::remove_file(&link);
 }
+
+/// A TCP echo floor (p50) under this many microseconds marks the machine's fast phase.
+const FAST_PHASE_US: f64 = 25.0;
 
 /// One target of the benchmark: a ratio (or a time) measured in this run against what is wanted.
 struct Target {
