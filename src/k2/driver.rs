@@ -341,18 +341,7 @@ impl K2Wire {
                 }
                 Link::Attached { .. } => Err(Error::link("the attached stream failed and cannot be reopened by plcsh")),
                 Link::Rtu { path, baud, parity, stop } => {
-                    // serialport configures the line (and holds it exclusively); the port carries
-                    // the frames with plain reads and writes on its descriptor.
-                    let port = serialport::new(path.as_str(), *baud)
-                    .parity(*parity)
-                    .stop_bits(*stop)
-                    .data_bits(serialport::DataBits::Eight)
-                    .open_native()
-                    .map_err(|e| {
-                        Error::link(format!("cannot open the serial port {path}")).cause(e).hint(
-                            "check the port path (ls /dev/ttyUSB* /dev/serial/by-id; a USB adapter may be unplugged), that no other program holds it, and that you may open it (the dialout group); the next command opens it again once it is back",
-                        )
-                    })?;
+                    let port = open_serial(path, *baud, *parity, *stop)?;
                     FdPort::new(port, &name, Proto::ModbusRtu, path)
                         .map(|p| ModbusClient::new(Box::new(p), true, unit))
                         .map_err(|e| Error::link(format!("cannot use the serial port {path}")).cause(e))
@@ -516,6 +505,23 @@ impl K2Wire {
         }
         Ok(())
     }
+}
+
+/// Opens and configures a serial port (serialport holds it exclusively; the driver's port then
+/// carries the frames with plain reads and writes on its descriptor).
+fn open_serial(
+    path: &str,
+    baud: u32,
+    parity: serialport::Parity,
+    stop: serialport::StopBits,
+) -> Result<serialport::TTYPort> {
+    serialport::new(path, baud).parity(parity).stop_bits(stop).data_bits(serialport::DataBits::Eight).open_native().map_err(
+        |e| {
+            Error::link(format!("cannot open the serial port {path}")).cause(e).hint(
+                "check the port path (ls /dev/ttyUSB* /dev/serial/by-id; a USB adapter may be unplugged), that no other program holds it, and that you may open it (the dialout group); the next command opens it again once it is back",
+            )
+        },
+    )
 }
 
 /// `a == b`, without a branch per field (a polling loop asks this of every read).
