@@ -5,8 +5,28 @@
 #
 #   bench/run.sh                      # defaults: best of 10 interleaved runs of 0.3 s per figure
 #   bench/run.sh --seconds 3 --rounds 5 --runs 50
+#   bench/run.sh --conditions "fuzzing at nice 10, one build"   # what else the machine is doing
+#   bench/run.sh callgrind [ARGS]     # instructions per transaction (bench/callgrind.sh)
+#   bench/run.sh oneshot [RUNS]       # one-shot start-up medians only (bench/oneshot.sh)
+#
+# The output starts with the machine (CPU model, cores, kernel), the commit, the conditions and
+# the load average, and ends with each target met or missed, the echo floor, the phase it shows
+# (fast or slow: this VM switches between them whatever its load) and the load again.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+
+mode=full
+case "${1:-}" in
+    callgrind | oneshot) mode=$1; shift ;;
+esac
+conditions=${PLCSH_BENCH_CONDITIONS:-}
+args=()
+while [ $# -gt 0 ]; do
+    case "$1" in
+        --conditions) conditions=$2; shift 2 ;;
+        *) args+=("$1"); shift ;;
+    esac
+done
 
 need_apt=()
 pkg-config --exists libmodbus 2>/dev/null || need_apt+=(libmodbus-dev)
@@ -26,6 +46,15 @@ for p in mb_client mb_server echo_floor; do
 done
 
 cargo build --release --bin plcsh --bin bench_modbus
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(uname -sr)" >&2
-echo "load before the run: $(cut -d' ' -f1-3 /proc/loadavg)" >&2
-exec target/release/bench_modbus --peers target/bench --py bench/py "$@"
+case $mode in
+    callgrind) exec bench/callgrind.sh --no-build ${args[@]+"${args[@]}"} ;;
+    oneshot) exec bench/oneshot.sh ${args[@]+"${args[@]}"} ;;
+esac
+PLCSH_BENCH_MACHINE="$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(nproc) cores, $(uname -sr)"
+PLCSH_BENCH_COMMIT="$(git rev-parse --short HEAD 2>/dev/null || echo unknown)$(git diff --quiet 2>/dev/null || echo ' (with uncommitted changes)'), $(date -u '+%Y-%m-%d %H:%M UTC')"
+# What the machine was doing besides this run (given, or what is busiest now).
+if [ -z "$conditions" ]; then
+    conditions="not given; busiest processes at the start: $(ps -eo pcpu=,ni=,comm= --sort=-pcpu | head -3 | awk '{printf "%s%s (%s%% CPU, nice %s)", (NR>1?", ":""), $3, $1, $2}')"
+fi
+export PLCSH_BENCH_MACHINE PLCSH_BENCH_COMMIT PLCSH_BENCH_CONDITIONS="$conditions"
+exec target/release/bench_modbus --peers target/bench --py bench/py ${args[@]+"${args[@]}"}

@@ -32,16 +32,24 @@ pub fn install(interrupt: &Arc<AtomicBool>) {
             let _ = unsafe { signal_hook::low_level::register(sig, move || RECEIVED.store(sig, Ordering::SeqCst)) };
         }
     }
-    std::thread::Builder::new()
-        .name("signals".into())
-        .spawn(|| loop {
-            std::thread::sleep(Duration::from_millis(50));
-            let sig = RECEIVED.load(Ordering::SeqCst);
-            if sig != 0 && IDLE.load(Ordering::SeqCst) {
-                std::process::exit(128 + sig);
-            }
-        })
-        .ok();
+}
+
+/// Starts the watcher that ends the process on a signal received at an idle prompt. Only a
+/// prompt is ever idle, so a one-shot command (`-c`) never starts it.
+fn start_watcher() {
+    static STARTED: std::sync::Once = std::sync::Once::new();
+    STARTED.call_once(|| {
+        std::thread::Builder::new()
+            .name("signals".into())
+            .spawn(|| loop {
+                std::thread::sleep(Duration::from_millis(50));
+                let sig = RECEIVED.load(Ordering::SeqCst);
+                if sig != 0 && IDLE.load(Ordering::SeqCst) {
+                    std::process::exit(128 + sig);
+                }
+            })
+            .ok();
+    });
 }
 
 /// The exit status a received SIGTERM or SIGHUP asks for (143, 129), if one arrived.
@@ -54,5 +62,8 @@ pub fn exit_status() -> Option<i32> {
 
 /// Marks the prompt as waiting for input (true) or running a line (false).
 pub fn set_idle(idle: bool) {
+    if idle {
+        start_watcher();
+    }
     IDLE.store(idle, Ordering::SeqCst);
 }

@@ -9,6 +9,10 @@
 //!
 //! Usage: `bench_modbus [--seconds S] [--count N] [--runs R] [--peers DIR] [--py DIR]`
 //! (`--peers`: the built C programs, default `target/bench`; `--py`: `bench/py`).
+//!
+//! `bench_modbus transactions URL REGS N` reads REGS words from VW0 N times after one warm-up
+//! read, with no timing: `bench/callgrind.sh` runs it under callgrind to count the driver's
+//! instructions per transaction.
 
 use plcsh::core::Clock;
 use serde_json::Value as Json;
@@ -284,8 +288,27 @@ fn header(first: &str, refs: &[(&str, &Option<Fig>)]) -> String {
     format!("{h}\n{sep}")
 }
 
+/// `transactions URL REGS N`: N reads of REGS words from VW0 after one warm-up read.
+fn transactions(mut args: impl Iterator<Item = String>) {
+    let usage = "usage: bench_modbus transactions URL REGS N";
+    let url = args.next().expect(usage);
+    let regs: usize = args.next().and_then(|v| v.parse().ok()).expect(usage);
+    let n: u64 = args.next().and_then(|v| v.parse().ok()).expect(usage);
+    let mut dev = plcsh::session::open_url(&url, &Clock::following()).unwrap_or_else(|e| panic!("{url}: {e}"));
+    let ops = dev.operands().parse(&format!("VW0[{regs}]")).expect("VW0[n] parses");
+    dev.read(&ops).expect("warm-up read");
+    for _ in 0..n {
+        std::hint::black_box(dev.read(&ops).expect("read"));
+    }
+    println!("{{\"n\":{n},\"requests\":{}}}", dev.requests());
+}
+
 fn main() {
-    let mut args = std::env::args().skip(1);
+    let mut args = std::env::args().skip(1).peekable();
+    if args.peek().map(String::as_str) == Some("transactions") {
+        args.next();
+        return transactions(args);
+    }
     let exe_dir = std::env::current_exe().ok().and_then(|p| p.parent().map(Path::to_path_buf)).unwrap_or_default();
     let mut o = Opts {
         rounds: 10,
@@ -321,6 +344,14 @@ fn main() {
     println!("# plcsh Modbus benchmark\n");
     let load = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
     println!("Load average when the run started: {}.\n", load.split_whitespace().take(3).collect::<Vec<_>>().join(" "));
+    // bench/run.sh names the machine, the commit and what else the machine was doing.
+    for (key, what) in
+        [("PLCSH_BENCH_MACHINE", "Machine"), ("PLCSH_BENCH_COMMIT", "Commit"), ("PLCSH_BENCH_CONDITIONS", "Conditions")]
+    {
+        if let Ok(v) = std::env::var(key) {
+            println!("{what}: {v}.\n");
+        }
+    }
     println!(
         "Each throughput figure: the best of {} interleaved runs of {} s (or {} transactions), one request in flight, loopback only; latencies are from that run.\n",
         o.rounds, o.seconds, o.count
@@ -347,6 +378,8 @@ fn main() {
     let lib_dev = c_rtu_srv.as_ref().map(|s| s.field("path"));
     let py_tcp = py_srv.as_ref().map(|s| s.field("tcp"));
 
+    let mut targets: Vec<Target> = Vec::new();
+    let mut floors: Vec<(String, Option<Fig>)> = Vec::new();
     let clients =
         ["plcsh driver", "libmodbus client (C)", "pymodbus sync", "pymodbus async", "mbpoll (10 ms poll delay)", floor];
     for regs in [1usize, 100] {
@@ -371,6 +404,13 @@ fn main() {
         );
         println!("## Clients → plcsh server, TCP, {regs} register(s)\n");
         print_table("client", &clients, &figs, &[("libmodbus client", &figs[1]), ("echo floor", &figs[5])]);
+        targets.push(Target::rate(
+            format!("driver, TCP, {regs} register(s), vs libmodbus client"),
+            &figs[0],
+            &figs[1],
+            1.0,
+        ));
+        floors.push((format!("TCP, {regs} register(s)"), figs[5].clone()));
 
         // Clients on plcsh's server, RTU on the pty.
         let figs = group(
@@ -397,6 +437,12 @@ fn main() {
         );
         println!("## Clients → plcsh server, RTU on a pty, {regs} register(s)\n");
         print_table("client", &clients, &figs, &[("libmodbus client", &figs[1]), ("echo floor", &figs[5])]);
+        targets.push(Target::rate(
+            format!("driver, RTU on a pty, {regs} register(s), vs libmodbus client"),
+            &figs[0],
+            &figs[1],
+            1.0,
+        ));
 
         // Servers under the libmodbus client, TCP.
         let figs = group(
@@ -412,6 +458,12 @@ fn main() {
                 echo_tcp.clone(),
             ],
         );
+        targets.push(Target::rate(
+            format!("sim serve, TCP, {regs} register(s), vs libmodbus server"),
+            &figs[0],
+            &figs[1],
+            0.9,
+        ));
         println!("## Servers under the libmodbus client, TCP, {regs} register(s)\n");
         print_table(
             "server",
@@ -433,6 +485,12 @@ fn main() {
                 echo_pty.clone(),
             ],
         );
+        targets.push(Target::rate(
+            format!("sim serve, RTU on a pty, {regs} register(s), vs libmodbus server"),
+            &figs[0],
+            &figs[1],
+            0.9,
+        ));
         println!("## Servers under the libmodbus client, RTU on a pty, {regs} register(s)\n");
         print_table(
             "server",
@@ -471,6 +529,61 @@ fn main() {
         &figs,
         &[("libmodbus one-shot", &figs[1])],
     );
+    if let (Some(p), Some(c), Some(t)) = (&figs[0], &figs[1], &figs[4]) {
+        let (p, c, t) = (p.p50.unwrap_or(0.0), c.p50.unwrap_or(0.0), t.p50.unwrap_or(0.0));
+        targets.push(Target {
+            what: "one-shot median vs libmodbus one-shot (≤)".into(),
+            got: p / c,
+            want: 1.5,
+            more: false,
+        });
+        targets.push(Target {
+            what: "one-shot start-up beyond `true`, ms (≤)".into(),
+            got: (p - t) / 1000.0,
+            want: 0.5,
+            more: false,
+        });
+    }
+    println!("## Targets\n");
+    println!("| target | measured | wanted | |\n|---|---:|---:|---|");
+    for t in &targets {
+        let met = if t.more { t.got >= t.want } else { t.got <= t.want };
+        println!("| {} | {:.2} | {:.2} | {} |", t.what, t.got, t.want, if met { "met" } else { "missed" });
+    }
+    let floor: Vec<String> =
+        floors.iter().map(|(k, f)| format!("{k}: {}", f.as_ref().map(|f| us(f.p50)).unwrap_or("—".into()))).collect();
+    println!("\nThe 12-byte echo floor (p50) in this run: {}.", floor.join("; "));
+    // The phase: VMs like the development machine switch between a fast and a slow phase
+    // whatever their load; the TCP echo floor tells which one a run saw.
+    if let Some(us) = floors.first().and_then(|(_, f)| f.as_ref()).and_then(|f| f.p50) {
+        let phase = if us < FAST_PHASE_US { "fast" } else { "slow" };
+        println!("Phase: {phase} (the TCP echo floor's p50 is {us:.1} µs; fast means under {FAST_PHASE_US} µs).");
+    }
+    let load = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
+    println!("Load average when the run ended: {}.", load.split_whitespace().take(3).collect::<Vec<_>>().join(" "));
     drop(plcsh_srv);
     let _ = std::fs::remove_file(&link);
+}
+
+/// A TCP echo floor (p50) under this many microseconds marks the machine's fast phase.
+const FAST_PHASE_US: f64 = 25.0;
+
+/// One target of the benchmark: a ratio (or a time) measured in this run against what is wanted.
+struct Target {
+    what: String,
+    got: f64,
+    want: f64,
+    /// Met when `got ≥ want` (throughput ratios); otherwise when `got ≤ want`.
+    more: bool,
+}
+
+impl Target {
+    /// `ours / reference` throughput, met at `want` or more (0 when either is missing).
+    fn rate(what: String, ours: &Option<Fig>, reference: &Option<Fig>, want: f64) -> Target {
+        let got = match (ours, reference) {
+            (Some(a), Some(b)) if b.rate() > 0.0 => a.rate() / b.rate(),
+            _ => 0.0,
+        };
+        Target { what: format!("{what} (≥)"), got, want, more: true }
+    }
 }

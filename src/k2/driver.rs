@@ -23,27 +23,33 @@
 //! SM operands and the instructions (PLS, HDEF, HSC, PSTOP, RTC) go through the PLC-side
 //! helper program's mailbox when the device has `agent=VB…` ([`sm`], docs/agent.md).
 //!
-//! The `Device` trait is synchronous; the driver owns a current-thread tokio runtime and
-//! blocks on it per request. Every frame is reported to [`crate::core::trace`].
+//! The `Device` trait is synchronous, and so is the driver: a request is a `write` on the
+//! socket or serial port and the reply a `poll` and a `read` ([`port`]; a stream handed over
+//! with [`K2Wire::attach`] runs on a runtime of its own). Every frame is reported to
+//! [`crate::core::trace`]. The Modbus framing is the driver's own ([`client`]): a read's reply
+//! stays in the receive buffer and each operand is decoded straight from its bytes, so a
+//! polling loop's read of 100 registers costs one slice copy and a plan it already has, not
+//! a conversion per register.
 
+mod client;
+mod port;
 mod sm;
 
 use super::agent::client::AgentClient;
 use super::catalog::{self, Model};
 use super::coalesce::{self, Costs};
 use super::memory::Memory;
-use super::modbus_map::{self, Data, DataMut, Span, Table, WordOrder};
-use super::operand::K2Operand;
+use super::modbus_map::{self, DataMut, Span, WordOrder};
+use super::operand::{K2Operand, Width};
 use super::space::K2Space;
-use crate::core::link::fd_stream::FdStream;
-use crate::core::link::traced::Traced;
 use crate::core::trace::Proto;
 use crate::core::url::DeviceUrl;
 use crate::core::{Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
+use client::ModbusClient;
+use port::{AsyncPort, FdPort};
 use std::collections::HashMap;
 use std::time::Duration;
-use tokio_modbus::client::{Client, Context};
-use tokio_modbus::{ExceptionCode, Request, Response, Slave};
+use tokio_modbus::{ExceptionCode, Request};
 
 /// How the PLC is reached.
 #[derive(Clone, Debug, PartialEq)]
@@ -110,10 +116,11 @@ fn parse_timeout(text: &str) -> Result<Duration> {
     Ok(Duration::from_micros(us as u64))
 }
 
-/// The data of one read request.
-enum Block {
-    Bits(Vec<bool>),
-    Words(Vec<u16>),
+/// One exchange: a read whose reply stays in the client's buffer, or any request decoded.
+#[derive(Clone, Copy)]
+enum Op<'a> {
+    Read(u8, u16, u16),
+    Call(&'a Request<'static>),
 }
 
 /// A failed request, before it is put in the user's terms.
@@ -128,9 +135,11 @@ pub struct K2Wire {
     space: K2Space,
     link: Link,
     settings: Settings,
-    rt: tokio::runtime::Runtime,
-    ctx: Option<Context>,
+    ctx: Option<ModbusClient>,
     requests: u64,
+    /// The data of each request of the last read (registers as big-endian bytes, coils
+    /// packed LSB first, as they travel), kept to be refilled by the next read.
+    blocks: Vec<Vec<u8>>,
     /// The plan of the last read batch.
     last_read: Option<ReadPlan>,
     /// The PLC-side helper, when configured (`agent=VB3400`).
@@ -147,8 +156,54 @@ struct ReadPlan {
     k2: Vec<K2Operand>,
     spans: Vec<Span>,
     requests: Vec<Span>,
-    /// For each operand: the request holding it and its offset there.
-    at: Vec<(usize, usize)>,
+    /// For each operand: where its bits are in the replies.
+    takes: Vec<Take>,
+}
+
+/// Where one operand's value is in the replies of a planned read, worked out once per plan
+/// so that decoding a polled batch is a byte load per operand.
+#[derive(Clone, Copy, Debug)]
+struct Take {
+    /// The request (reply block) holding it.
+    block: usize,
+    how: How,
+    /// The type the value is read as.
+    dtype: crate::core::DataType,
+}
+
+#[derive(Clone, Copy, Debug)]
+enum How {
+    /// A word in a register reply: its high byte's index.
+    Word(usize),
+    /// A byte in a register reply: its index.
+    Byte(usize),
+    /// Anything else, through [`modbus_map::decode_reply`]: the operand, its span's offset
+    /// and length in units of the reply, and whether the reply is packed bits.
+    Span { op: K2Operand, off: usize, count: usize, bits: bool },
+}
+
+impl Take {
+    fn new(o: &Operand, op: &K2Operand, span: &Span, request: &Span, block: usize, off: usize) -> Take {
+        let bits = request.table().is_bits();
+        let at = 2 * off + (op.byte % 2) as usize;
+        let how = match op.width {
+            Width::Word if !bits => How::Word(at),
+            Width::Byte if !bits => How::Byte(at),
+            _ => How::Span { op: *op, off, count: span.count as usize, bits },
+        };
+        Take { block, how, dtype: o.dtype }
+    }
+
+    #[inline(always)]
+    fn value(&self, blocks: &[Vec<u8>], order: WordOrder) -> Value {
+        let b = &blocks[self.block];
+        let raw = match self.how {
+            How::Word(at) => u16::from_be_bytes([b[at], b[at + 1]]) as u32,
+            How::Byte(at) => b[at] as u32,
+            How::Span { op, off, count, bits } => modbus_map::decode_reply(&op, bits, b, off, count, order),
+        };
+        self.dtype.decode(raw)
+    }
 }
 
 impl ReadPlan {
@@ -157,8 +212,16 @@ impl ReadPlan {
         let k2: Vec<K2Operand> = ops.iter().map(|o| K2Operand::from_key(o.key)).collect();
         let spans: Vec<Span> = k2.iter().map(|o| modbus_map::locate_read(space, o)).collect::<Result<_>>()?;
         let requests = coalesce::plan_reads(&spans, costs);
-        let at = spans.iter().map(|s| coalesce::find(&requests, s).expect("every span is planned")).collect();
-        Ok(ReadPlan { ops: ops.to_vec(), k2, spans, requests, at })
+        let takes = ops
+            .iter()
+            .zip(&k2)
+            .zip(&spans)
+            .map(|((o, k), s)| {
+                let (r, off) = coalesce::find(&requests, s).expect("every span is planned");
+                Take::new(o, k, s, &requests[r], r, off)
+            })
+            .collect();
+        Ok(ReadPlan { ops: ops.to_vec(), k2, spans, requests, takes })
     }
 }
 
@@ -224,18 +287,14 @@ impl K2Wire {
 
     /// A driver for `link` that connects on first use.
     pub fn with_link(link: Link, model: &'static Model, settings: Settings, name: String) -> Result<K2Wire> {
-        let rt = tokio::runtime::Builder::new_current_thread()
-            .enable_all()
-            .build()
-            .map_err(|e| Error::io("cannot start the driver's runtime").cause(e))?;
         Ok(K2Wire {
             info: DeviceInfo { family: "k2", model: model.name.to_string(), link: name, simulated: false },
             space: K2Space::new(model),
             link,
             settings,
-            rt,
             ctx: None,
             requests: 0,
+            blocks: Vec::new(),
             last_read: None,
             agent: None,
             sm_shadow: sm::shadow(catalog::SM_BYTES),
@@ -244,21 +303,17 @@ impl K2Wire {
     }
 
     /// A driver on a byte stream the caller opened (any transport, an in-memory pipe in
-    /// tests), with RTU (`rtu = true`) or Modbus TCP framing. Call it inside the runtime the
-    /// stream belongs to, if any; the driver polls it on its own runtime.
+    /// tests), with RTU (`rtu = true`) or Modbus TCP framing. The driver polls it on a
+    /// runtime of its own.
     pub fn attach<T>(transport: T, rtu: bool, model: &'static Model, settings: Settings, name: String) -> Result<K2Wire>
     where
         T: tokio::io::AsyncRead + tokio::io::AsyncWrite + Send + Unpin + 'static,
     {
         let mut dev = K2Wire::with_link(Link::Attached { rtu }, model, settings, name.clone())?;
         let proto = if rtu { Proto::ModbusRtu } else { Proto::ModbusTcp };
-        let t = Traced::with_proto(transport, name, proto, "attached stream");
-        let slave = Slave(dev.settings.unit);
-        dev.ctx = Some(if rtu {
-            tokio_modbus::client::rtu::attach_slave(t, slave)
-        } else {
-            tokio_modbus::client::tcp::attach_slave(t, slave)
-        });
+        let port = AsyncPort::new(Box::new(transport), &name, proto, "attached stream")
+            .map_err(|e| Error::io("cannot start a runtime for the attached stream").cause(e))?;
+        dev.ctx = Some(ModbusClient::new(Box::new(port), rtu, dev.settings.unit));
         Ok(dev)
     }
 
@@ -267,57 +322,32 @@ impl K2Wire {
     }
 
     fn connect(&mut self) -> std::result::Result<(), Failure> {
-        let slave = Slave(self.settings.unit);
+        let unit = self.settings.unit;
         let name = self.info.link.clone();
         let timeout = self.settings.timeout;
-        let link = self.link.clone();
         self.peer_closed.store(false, std::sync::atomic::Ordering::Relaxed);
         let closed = self.peer_closed.clone();
-        let ctx: Result<Context> = self.rt.block_on(async move {
-            match &link {
+        let link = &self.link;
+        let ctx = (|| -> Result<ModbusClient> {
+            match link {
                 Link::Tcp { addr } | Link::RtuOverTcp { addr } => {
-                    let stream = tokio::time::timeout(timeout, tokio::net::TcpStream::connect(addr.as_str()))
-                        .await
-                        .map_err(|_| {
-                            Error::link(format!("cannot connect to {addr}: no answer within {}", ms(timeout)))
-                        })?
-                        .map_err(|e| {
-                            Error::link(format!("cannot connect to {addr}")).cause(e).hint(
-                                "check that HOST:PORT is the PLC or gateway (a K204ET answers Modbus TCP on port 502), that it is powered and reachable (ping), and that no firewall blocks the port",
-                            )
-                        })?;
+                    let stream = tcp_connect(addr, timeout)?;
                     stream.set_nodelay(true).map_err(|e| Error::link("cannot set TCP_NODELAY").cause(e))?;
-                    let proto = if matches!(link, Link::Tcp { .. }) { Proto::ModbusTcp } else { Proto::RtuOverTcp };
-                    let t = Traced::with_proto(stream, name, proto, addr).watch_eof(closed);
-                    Ok(if matches!(link, Link::Tcp { .. }) {
-                        tokio_modbus::client::tcp::attach_slave(t, slave)
-                    } else {
-                        tokio_modbus::client::rtu::attach_slave(t, slave)
-                    })
+                    let tcp = matches!(link, Link::Tcp { .. });
+                    let proto = if tcp { Proto::ModbusTcp } else { Proto::RtuOverTcp };
+                    FdPort::new(stream, &name, proto, addr)
+                        .map(|p| ModbusClient::new(Box::new(p.watch_eof(closed)), !tcp, unit))
+                        .map_err(|e| Error::link(format!("cannot use the connection to {addr}")).cause(e))
                 }
-                Link::Attached { .. } => {
-                    Err(Error::link("the attached stream failed and cannot be reopened by plcsh"))
-                }
+                Link::Attached { .. } => Err(Error::link("the attached stream failed and cannot be reopened by plcsh")),
                 Link::Rtu { path, baud, parity, stop } => {
-                    // serialport configures the line (and holds it exclusively); FdStream
-                    // carries the frames (see core::link::fd_stream for why not SerialStream).
-                    let port = serialport::new(path.as_str(), *baud)
-                        .parity(*parity)
-                        .stop_bits(*stop)
-                        .data_bits(serialport::DataBits::Eight)
-                        .open_native()
-                        .map_err(|e| {
-                            Error::link(format!("cannot open the serial port {path}")).cause(e).hint(
-                                "check the port path (ls /dev/ttyUSB* /dev/serial/by-id; a USB adapter may be unplugged), that no other program holds it, and that you may open it (the dialout group); the next command opens it again once it is back",
-                            )
-                        })?;
-                    let stream = FdStream::new(port)
-                        .map_err(|e| Error::link(format!("cannot register the serial port {path}")).cause(e))?;
-                    let t = Traced::with_proto(stream, name, Proto::ModbusRtu, path);
-                    Ok(tokio_modbus::client::rtu::attach_slave(t, slave))
+                    let port = open_serial(path, *baud, *parity, *stop)?;
+                    FdPort::new(port, &name, Proto::ModbusRtu, path)
+                        .map(|p| ModbusClient::new(Box::new(p), true, unit))
+                        .map_err(|e| Error::link(format!("cannot use the serial port {path}")).cause(e))
                 }
             }
-        });
+        })();
         match ctx {
             Ok(c) => {
                 self.ctx = Some(c);
@@ -329,7 +359,33 @@ impl K2Wire {
     }
 
     /// Sends one request, retrying link failures; exceptions come back at once.
-    fn call(&mut self, req: Request<'static>) -> std::result::Result<Response, Failure> {
+    fn call(&mut self, req: Request<'static>) -> std::result::Result<tokio_modbus::Response, Failure> {
+        Ok(self.exchange(Op::Call(&req))?.expect("a call decodes its reply"))
+    }
+
+    /// Reads `span` (one planned request) into `out`: the reply's data as it travelled.
+    fn read_request(&mut self, span: &Span, out: &mut Vec<u8>) -> std::result::Result<(), Failure> {
+        let (table, start, n) = (span.table(), span.start, span.count);
+        self.exchange(Op::Read(table.read_fc(), start, n))?;
+        let data = self.ctx.as_ref().expect("a reply was taken").data();
+        // Registers: exactly 2 bytes each; coils: at least one bit each, packed.
+        let want = if table.is_bits() { (n as usize).div_ceil(8) } else { 2 * n as usize };
+        let fits = data.len() == 1 + data[0] as usize
+            && if table.is_bits() { data.len() > want } else { data.len() == want + 1 };
+        if !fits {
+            return Err(Failure::Link(Error::link(format!(
+                "the reply to a read of {} was too short",
+                span.describe()
+            ))));
+        }
+        out.clear();
+        out.extend_from_slice(&data[1..]);
+        Ok(())
+    }
+
+    /// Runs one exchange on the connection (connecting first when needed), retrying link
+    /// failures with backoff; exceptions come back at once.
+    fn exchange(&mut self, op: Op<'_>) -> std::result::Result<Option<tokio_modbus::Response>, Failure> {
         let mut last = None;
         for attempt in 0..=self.settings.retries {
             if attempt > 0 {
@@ -344,29 +400,33 @@ impl K2Wire {
             let ctx = self.ctx.as_mut().expect("connected");
             self.requests += 1;
             let timeout = self.settings.timeout;
-            let r = self.rt.block_on(async { tokio::time::timeout(timeout, ctx.call(req.clone())).await });
+            let deadline = std::time::Instant::now() + timeout;
+            let r = match op {
+                Op::Read(fc, start, n) => ctx.read(fc, start, n, deadline).map(|r| r.map(|()| None)),
+                Op::Call(req) => ctx.call(req, deadline).map(|r| r.map(Some)),
+            };
             match r {
-                Ok(Ok(Ok(resp))) => return Ok(resp),
-                Ok(Ok(Err(code))) => return Err(Failure::Exception(code)),
-                Ok(Err(e)) => {
-                    // Dropped connection, garbled or mismatched reply: start afresh.
-                    self.ctx = None;
-                    last = Some(Failure::Link(if self.peer_closed.load(std::sync::atomic::Ordering::Relaxed) {
-                        // tokio-modbus reports end of file with a stale OS error; the stream saw it.
-                        Error::link("the PLC closed the connection instead of replying").hint(
-                            "plcsh reconnects and retries (retries=); if it keeps happening, check the PLC's limit on Modbus TCP connections and whether another client or a gateway takes the connection over",
-                        )
-                    } else {
-                        Error::link("the link failed").cause(e)
-                    }));
-                }
-                Err(_) => {
+                Ok(Ok(resp)) => return Ok(resp),
+                Ok(Err(code)) => return Err(Failure::Exception(code)),
+                Err(e) if e.kind() == std::io::ErrorKind::TimedOut => {
                     self.ctx = None;
                     last = Some(Failure::Link(Error::link(format!(
                         "the device did not answer: no reply from unit {} within {}",
                         self.settings.unit,
                         ms(timeout)
                     ))));
+                }
+                Err(e) => {
+                    // Dropped connection, garbled or mismatched reply: start afresh.
+                    self.ctx = None;
+                    last = Some(Failure::Link(if self.peer_closed.load(std::sync::atomic::Ordering::Relaxed) {
+                        // The stream saw the end of file (a read or a write may report it).
+                        Error::link("the PLC closed the connection instead of replying").hint(
+                            "plcsh reconnects and retries (retries=); if it keeps happening, check the PLC's limit on Modbus TCP connections and whether another client or a gateway takes the connection over",
+                        )
+                    } else {
+                        Error::link("the link failed").cause(e)
+                    }));
                 }
             }
         }
@@ -420,40 +480,13 @@ impl K2Wire {
         }
     }
 
-    /// Reads one planned request.
-    fn read_request(&mut self, span: &Span) -> std::result::Result<Block, Failure> {
-        let (a, n) = (span.start, span.count);
-        let req = match span.table() {
-            Table::Coils => Request::ReadCoils(a, n),
-            Table::DiscreteInputs => Request::ReadDiscreteInputs(a, n),
-            Table::HoldingRegisters => Request::ReadHoldingRegisters(a, n),
-            Table::InputRegisters => Request::ReadInputRegisters(a, n),
-        };
-        let short = || Failure::Link(Error::link(format!("the reply to a read of {} was too short", span.describe())));
-        match self.call(req)? {
-            Response::ReadCoils(mut b) | Response::ReadDiscreteInputs(mut b) => {
-                if b.len() < n as usize {
-                    return Err(short());
-                }
-                b.truncate(n as usize);
-                Ok(Block::Bits(b))
-            }
-            Response::ReadHoldingRegisters(w) | Response::ReadInputRegisters(w) => {
-                if w.len() != n as usize {
-                    return Err(short());
-                }
-                Ok(Block::Words(w))
-            }
-            other => Err(Failure::Link(Error::link(format!("unexpected reply {other:?}")))),
-        }
-    }
-
     /// Reads planned requests; errors name the first operand each request was for.
-    fn read_plan(&mut self, plan: &[Span], spans: &[Span], ops: &[K2Operand]) -> Result<Vec<Block>> {
-        let mut blocks = Vec::with_capacity(plan.len());
-        for req in plan {
-            match self.read_request(req) {
-                Ok(b) => blocks.push(b),
+    /// `blocks` gets one buffer per request (kept buffers are refilled).
+    fn read_plan(&mut self, plan: &[Span], spans: &[Span], ops: &[K2Operand], blocks: &mut Vec<Vec<u8>>) -> Result<()> {
+        blocks.resize_with(plan.len().max(blocks.len()), Vec::new);
+        for (req, block) in plan.iter().zip(blocks.iter_mut()) {
+            match self.read_request(req, block) {
+                Ok(()) => {}
                 Err(f) => {
                     let mine: Vec<usize> = (0..spans.len())
                         .filter(|&i| coalesce::find(std::slice::from_ref(req), &spans[i]).is_some())
@@ -470,8 +503,59 @@ impl K2Wire {
                 }
             }
         }
-        Ok(blocks)
+        Ok(())
     }
+}
+
+/// Opens and configures a serial port (serialport holds it exclusively; the driver's port then
+/// carries the frames with plain reads and writes on its descriptor).
+fn open_serial(
+    path: &str,
+    baud: u32,
+    parity: serialport::Parity,
+    stop: serialport::StopBits,
+) -> Result<serialport::TTYPort> {
+    serialport::new(path, baud).parity(parity).stop_bits(stop).data_bits(serialport::DataBits::Eight).open_native().map_err(
+        |e| {
+            Error::link(format!("cannot open the serial port {path}")).cause(e).hint(
+                "check the port path (ls /dev/ttyUSB* /dev/serial/by-id; a USB adapter may be unplugged), that no other program holds it, and that you may open it (the dialout group); the next command opens it again once it is back",
+            )
+        },
+    )
+}
+
+/// `a == b`, without a branch per field (a polling loop asks this of every read).
+fn same_batch(a: &[Operand], b: &[Operand]) -> bool {
+    a.len() == b.len()
+        && a.iter().zip(b).fold(0u64, |d, (x, y)| {
+            // Every field (a new one fails to compile here until it is compared).
+            let Operand { key, dtype, bits } = *x;
+            d | (key ^ y.key) | (dtype as u64 ^ y.dtype as u64) | (bits ^ y.bits) as u64
+        }) == 0
+}
+
+/// Connects to `addr` (`HOST:PORT`; every address it resolves to is tried) within `timeout`.
+fn tcp_connect(addr: &str, timeout: Duration) -> Result<std::net::TcpStream> {
+    use std::net::ToSocketAddrs;
+    let refused = |e: std::io::Error| {
+        Error::link(format!("cannot connect to {addr}")).cause(e).hint(
+            "check that HOST:PORT is the PLC or gateway (a K204ET answers Modbus TCP on port 502), that it is powered and reachable (ping), and that no firewall blocks the port",
+        )
+    };
+    let mut last = None;
+    for a in addr.to_socket_addrs().map_err(refused)? {
+        match std::net::TcpStream::connect_timeout(&a, timeout) {
+            Ok(s) => return Ok(s),
+            Err(e) => last = Some(e),
+        }
+    }
+    Err(match last {
+        Some(e) if e.kind() == std::io::ErrorKind::TimedOut => {
+            Error::link(format!("cannot connect to {addr}: no answer within {}", ms(timeout)))
+        }
+        Some(e) => refused(e),
+        None => refused(std::io::Error::new(std::io::ErrorKind::NotFound, "the name resolves to no address")),
+    })
 }
 
 fn with_port(target: &str) -> String {
@@ -485,13 +569,6 @@ fn with_port(target: &str) -> String {
 
 fn ms(d: Duration) -> String {
     format!("{} ms", d.as_millis())
-}
-
-fn slice<'a>(block: &'a Block, off: usize, count: usize) -> Data<'a> {
-    match block {
-        Block::Bits(b) => Data::Bits(&b[off..off + count]),
-        Block::Words(w) => Data::Words(&w[off..off + count]),
-    }
 }
 
 impl Device for K2Wire {
@@ -578,21 +655,14 @@ impl K2Wire {
     fn read_modbus(&mut self, ops: &[Operand]) -> Result<Vec<Value>> {
         // Polling loops read the same batch again and again: keep its plan.
         let plan = match self.last_read.take() {
-            Some(p) if p.ops == ops => p,
+            Some(p) if same_batch(&p.ops, ops) => p,
             _ => ReadPlan::new(&self.space, ops, self.link.costs())?,
         };
-        let blocks = self.read_plan(&plan.requests, &plan.spans, &plan.k2);
+        let mut blocks = std::mem::take(&mut self.blocks);
+        let read = self.read_plan(&plan.requests, &plan.spans, &plan.k2, &mut blocks);
         let order = self.settings.word_order;
-        let values = blocks.map(|blocks| {
-            ops.iter()
-                .zip(&plan.k2)
-                .zip(&plan.spans)
-                .zip(&plan.at)
-                .map(|(((o, k), s), &(r, off))| {
-                    o.dtype.decode(modbus_map::decode(k, slice(&blocks[r], off, s.count as usize), order))
-                })
-                .collect()
-        });
+        let values = read.map(|()| plan.takes.iter().map(|t| t.value(&blocks, order)).collect());
+        self.blocks = blocks;
         self.last_read = Some(plan);
         values
     }
@@ -610,11 +680,12 @@ impl K2Wire {
             let rspans: Vec<Span> = rmw.iter().map(|&i| spans[i]).collect();
             let rops: Vec<K2Operand> = rmw.iter().map(|&i| k2[i]).collect();
             let plan = coalesce::plan_reads(&rspans, self.link.costs());
-            let blocks = self.read_plan(&plan, &rspans, &rops)?;
+            let mut blocks = Vec::new();
+            self.read_plan(&plan, &rspans, &rops, &mut blocks)?;
             for (req, block) in plan.iter().zip(&blocks) {
-                if let Block::Words(w) = block {
-                    for (k, v) in w.iter().enumerate() {
-                        image.insert((req.region, req.start + k as u16), *v);
+                if !req.table().is_bits() {
+                    for (k, v) in block.chunks_exact(2).enumerate() {
+                        image.insert((req.region, req.start + k as u16), u16::from_be_bytes([v[0], v[1]]));
                     }
                 }
             }
@@ -729,6 +800,52 @@ mod tests {
         assert_eq!(dev.requests(), 3, "nothing was sent for SMB67");
         drop(dev);
         srv.join().unwrap();
+    }
+
+    /// Every operand shape read over the wire equals the simulator's own read of it, polled
+    /// twice (the second read reuses the plan and the reply buffers).
+    #[test]
+    fn a_mixed_batch_reads_as_the_simulator_reads_it() {
+        use crate::core::Clock;
+        use crate::k2::sim::modbus_server::{serve_rtu_stream, K2Service};
+        use std::sync::{Arc, Mutex};
+        let (client, server) = tokio::io::duplex(1024);
+        let model = catalog::find("K205-16DT").unwrap();
+        let mut sim = crate::k2::sim::K2Sim::new(model, Clock::stepped());
+        for (k, b) in sim.mem.v.iter_mut().enumerate().take(400) {
+            *b = (k * 37 + 11) as u8;
+        }
+        for (k, b) in sim.mem.m.iter_mut().enumerate().take(16) {
+            *b = (k * 53 + 7) as u8;
+        }
+        let sim = Arc::new(Mutex::new(sim));
+        let service = K2Service::new(sim.clone(), 1);
+        let srv = std::thread::spawn(move || {
+            let rt = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
+            let _ = rt.block_on(serve_rtu_stream(server, service));
+        });
+        let settings =
+            Settings { unit: 1, word_order: WordOrder::HighFirst, timeout: Duration::from_secs(2), retries: 0 };
+        let mut dev = K2Wire::attach(client, true, model, settings, "pipe".into()).unwrap();
+        let text = "VB0 VB1 VW0 VW1 VW2/INT VD4 VD5 VD8/REAL V3.5 K4V10.2 M1.2 MB1 MW2 MD3 K3M0.5 VW100[5] VB300";
+        let ops: Vec<Operand> =
+            text.split(' ').flat_map(|t| dev.operands().parse(t).unwrap_or_else(|e| panic!("{t}: {e}"))).collect();
+        let want = sim.lock().unwrap().read(&ops).unwrap();
+        for _ in 0..2 {
+            assert_eq!(dev.read(&ops).unwrap(), want, "{text}");
+        }
+        drop(dev);
+        srv.join().unwrap();
+    }
+
+    #[test]
+    fn a_kept_plan_is_reused_only_for_the_same_batch() {
+        let space = K2Space::new(catalog::find("K205-16DT").unwrap());
+        let p = |t: &str| -> Vec<Operand> { t.split(' ').flat_map(|o| space.parse(o).unwrap()).collect() };
+        assert!(same_batch(&p("VW0 VW2"), &p("VW0 VW2")));
+        assert!(!same_batch(&p("VW0 VW2"), &p("VW0 VW4")));
+        assert!(!same_batch(&p("VW0"), &p("VW0/INT")), "another type");
+        assert!(!same_batch(&p("VW0"), &p("VW0 VW2")));
     }
 
     #[test]

@@ -414,6 +414,26 @@ pub fn decode(op: &K2Operand, data: Data<'_>, order: WordOrder) -> u32 {
     }
 }
 
+/// Decodes an operand's raw pattern straight from a read reply's data as it travelled:
+/// registers as big-endian bytes (which are the S7 memory image, so an operand's bytes are a
+/// slice of the reply) or coils and inputs packed LSB first (`bits`); the operand's span
+/// starts `off` units into the reply and is `count` units long. Equal to [`decode`] of the
+/// span's words or bits; this is the driver's bulk path, with no copy per operand.
+pub fn decode_reply(op: &K2Operand, bits: bool, data: &[u8], off: usize, count: usize, order: WordOrder) -> u32 {
+    if !bits {
+        return raw_from_bytes(op, &data[2 * off + (op.byte % 2) as usize..2 * (off + count)], order);
+    }
+    let mut v = 0u32;
+    for k in 0..count.min(32) {
+        let b = off + k;
+        v |= (((data[b / 8] >> (b % 8)) & 1) as u32) << k;
+    }
+    match op.width {
+        Width::Bit(_) | Width::Group { .. } => v,
+        _ => raw_from_bytes(op, &v.to_le_bytes(), WordOrder::HighFirst),
+    }
+}
+
 /// Encodes an operand's raw pattern into the data of exactly its span. For a register
 /// span the bytes outside the operand keep their current value (the caller fills the span
 /// with what it read first when [`write_needs_read`] says so).
@@ -632,6 +652,55 @@ mod tests {
         assert_eq!(decode(&o("VD300"), Data::Words(&[0x1122, 0x3344]), WordOrder::HighFirst), 0x11223344);
         assert_eq!(decode(&o("VD300"), Data::Words(&[0x3344, 0x1122]), WordOrder::LowFirst), 0x11223344);
         assert_eq!(decode(&o("VD301"), Data::Words(&[0xAA11, 0x2233, 0x44BB]), WordOrder::HighFirst), 0x11223344);
+    }
+
+    #[test]
+    fn decoding_from_a_reply_equals_decoding_the_span() {
+        let s = space("K205-16DT");
+        let texts = [
+            "VB300",
+            "VB301",
+            "V300.1",
+            "V301.7",
+            "VW300",
+            "VW301",
+            "VD300",
+            "VD301",
+            "VD300/REAL",
+            "K4V300.4",
+            "M1.2",
+            "MB1",
+            "MW1",
+            "MD3",
+            "K3M0.5",
+            "K8M1",
+            "Q0.5",
+            "QB1",
+        ];
+        for text in texts {
+            let op = parse_one(text).unwrap();
+            let span = locate_read(&s, &op).unwrap();
+            let bits = span.table().is_bits();
+            for off in [0usize, 1, 5, 9] {
+                // A reply holding the span `off` units in, with data before and after it.
+                let units = off + span.count as usize + 3;
+                let pattern = |k: usize| (k * 0x9E37 + 0x5A) as u16;
+                let (bytes, value) = if bits {
+                    let all: Vec<bool> = (0..units).map(|k| pattern(k) & 0x40 != 0).collect();
+                    let mut packed = vec![0u8; units.div_ceil(8)];
+                    for (k, on) in all.iter().enumerate() {
+                        packed[k / 8] |= (*on as u8) << (k % 8);
+                    }
+                    (packed, decode(&op, Data::Bits(&all[off..off + span.count as usize]), WordOrder::LowFirst))
+                } else {
+                    let all: Vec<u16> = (0..units).map(pattern).collect();
+                    let bytes = all.iter().flat_map(|w| w.to_be_bytes()).collect();
+                    (bytes, decode(&op, Data::Words(&all[off..off + span.count as usize]), WordOrder::LowFirst))
+                };
+                let from_reply = decode_reply(&op, bits, &bytes, off, span.count as usize, WordOrder::LowFirst);
+                assert_eq!(from_reply, value, "{text} at {off}");
+            }
+        }
     }
 
     #[test]

@@ -26,18 +26,21 @@
 use super::fault::FaultKind;
 use super::modbus_server::K2Service;
 use super::rtu_frame::{self, Frame};
+use std::future::Future;
 use std::io;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Arc;
 use std::time::Duration;
 use tokio::io::{AsyncRead, AsyncReadExt, AsyncWrite, AsyncWriteExt};
 use tokio::net::{TcpListener, TcpStream};
-use tokio_modbus::ExceptionCode;
 
 /// How long a serial line must be quiet for the bytes received to count as ended
 /// (3.5 character times at 9600 baud are 4 ms; a pty has no baud rate, and a client writes
 /// a frame in one piece, so a margin for a loaded host).
 pub const SILENCE: Duration = Duration::from_millis(15);
+
+/// Longest Modbus TCP frame: the 7-byte MBAP header and a PDU of at most 253 bytes.
+const MBAP_MAX: usize = 260;
 
 /// How long a reply may wait for a client that does not read before it is dropped.
 pub const WRITE_STALL: Duration = Duration::from_secs(2);
@@ -59,20 +62,18 @@ impl Default for Limits {
     }
 }
 
-/// The reply to a decoded frame, or `None` (another unit, a broadcast, an injected
-/// no-reply), with the injected fault that acted on it (`k2::sim::fault`) for the transport
-/// to finish: a `drop` closes the connection, a `bad-crc` corrupts an RTU reply's CRC.
-fn answer(service: &K2Service, unit: u8, frame: Frame) -> (Option<Vec<u8>>, Option<FaultKind>) {
+/// Appends the reply PDU to a decoded frame to `out`; false when there is none (another
+/// unit, a broadcast, an injected no-reply). With it, the injected fault that acted on it
+/// (`k2::sim::fault`) for the transport to finish: a `drop` closes the connection, a
+/// `bad-crc` corrupts an RTU reply's CRC.
+fn answer(service: &K2Service, unit: u8, frame: &Frame, out: &mut Vec<u8>) -> (bool, Option<FaultKind>) {
     match frame {
-        Frame::Request { request, .. } => {
-            let function = request.function_code().value();
-            let served = service.handle_with_faults(unit, &request);
-            (served.reply.map(|r| rtu_frame::encode_pdu(function, &r)), served.fault)
-        }
+        Frame::Request { request, .. } => service.handle_into(unit, request, out),
         Frame::Refuse { function, exception, .. } if unit == service.unit() => {
-            (Some(rtu_frame::encode_pdu(function, &Err::<tokio_modbus::Response, ExceptionCode>(exception))), None)
+            out.extend_from_slice(&[function | 0x80, u8::from(*exception)]);
+            (true, None)
         }
-        Frame::Refuse { .. } => (None, None),
+        Frame::Refuse { .. } => (false, None),
     }
 }
 
@@ -126,45 +127,80 @@ pub async fn serve_rtu_over_tcp(listener: TcpListener, service: K2Service, limit
 }
 
 /// One Modbus TCP connection: MBAP header (transaction, protocol 0, length, unit), PDU.
+/// Received bytes and the reply are kept in buffers the connection reuses; a request that
+/// arrives in one piece is one read.
 async fn tcp_conn(mut s: TcpStream, service: K2Service, limits: Limits) -> io::Result<()> {
+    let mut rx: Vec<u8> = Vec::with_capacity(2 * MBAP_MAX);
+    let mut out: Vec<u8> = Vec::with_capacity(MBAP_MAX);
+    // The idle timer is armed once and moved on only when it fires early (a request came
+    // meanwhile), so a request costs a clock read, not a timer in the runtime's wheel.
+    let mut heard = tokio::time::Instant::now();
+    let idle = tokio::time::sleep_until(heard + limits.idle);
+    tokio::pin!(idle);
     loop {
-        let mut head = [0u8; 7];
-        match tokio::time::timeout(limits.idle, s.read_exact(&mut head)).await {
-            Err(_) => return Ok(()), // idle: close
-            Ok(r) => {
-                r?;
+        // Frame what has arrived: a whole request, or read more.
+        let total = match rx.get(..7) {
+            Some(head) => {
+                let len = u16::from_be_bytes([head[4], head[5]]) as usize;
+                // A length the PDU cannot have, or another protocol: the stream cannot be framed.
+                if head[2..4] != [0, 0] || !(2..=254).contains(&len) {
+                    return Ok(());
+                }
+                Some(6 + len).filter(|t| rx.len() >= *t)
             }
-        }
-        let len = u16::from_be_bytes([head[4], head[5]]) as usize;
-        // A length the PDU cannot have, or another protocol: the stream cannot be framed.
-        if head[2..4] != [0, 0] || !(2..=254).contains(&len) {
-            return Ok(());
-        }
-        let mut pdu = vec![0u8; len - 1];
-        match tokio::time::timeout(limits.idle, s.read_exact(&mut pdu)).await {
-            Err(_) => return Ok(()),
-            Ok(r) => {
-                r?;
+            None => None,
+        };
+        let Some(total) = total else {
+            rx.reserve(MBAP_MAX);
+            tokio::select! {
+                r = s.read_buf(&mut rx) => {
+                    if r? == 0 {
+                        return Ok(()); // closed
+                    }
+                    heard = tokio::time::Instant::now();
+                }
+                () = &mut idle => {
+                    if heard.elapsed() >= limits.idle {
+                        return Ok(()); // idle: close
+                    }
+                    idle.as_mut().reset(heard + limits.idle);
+                }
             }
-        }
-        let unit = head[6];
+            continue;
+        };
+        let unit = rx[6];
         let as_unit = if unit == 0xFF && limits.unit_ff { service.unit() } else { unit };
-        let (reply, fault) = answer(&service, as_unit, rtu_frame::decode_pdu(as_unit, &pdu));
+        let frame = rtu_frame::decode_pdu(as_unit, &rx[7..total]);
+        out.clear();
+        out.extend_from_slice(&rx[..7]); // the length is set below
+        let (replied, fault) = answer(&service, as_unit, &frame, &mut out);
+        rx.drain(..total);
         if fault == Some(FaultKind::Drop) {
             return Ok(()); // the client sees the connection closed instead of a reply
         }
-        if let Some(reply) = reply {
-            let mut out = Vec::with_capacity(7 + reply.len());
-            out.extend_from_slice(&head[..4]);
-            out.extend_from_slice(&(reply.len() as u16 + 1).to_be_bytes());
-            out.push(unit);
-            out.extend(reply);
+        if replied {
+            let len = (out.len() - 6) as u16;
+            out[4..6].copy_from_slice(&len.to_be_bytes());
             // A client that stops reading is closed once a reply has waited too long.
-            match tokio::time::timeout(WRITE_STALL, s.write_all(&out)).await {
-                Ok(r) => r?,
-                Err(_) => return Ok(()),
+            if !write_stalling(&mut s, &out).await? {
+                return Ok(());
             }
         }
+    }
+}
+
+/// Writes `out`, giving up after [`WRITE_STALL`]: `Ok(false)` when it stalled. The write is
+/// tried once before a timer is set, so the usual reply (the socket takes it at once) costs
+/// no timer.
+async fn write_stalling<S: AsyncWrite + Unpin>(s: &mut S, out: &[u8]) -> io::Result<bool> {
+    let mut write = std::pin::pin!(s.write_all(out));
+    if let std::task::Poll::Ready(r) = std::future::poll_fn(|cx| std::task::Poll::Ready(write.as_mut().poll(cx))).await
+    {
+        return r.map(|()| true);
+    }
+    match tokio::time::timeout(WRITE_STALL, write).await {
+        Ok(r) => r.map(|()| true),
+        Err(_) => Ok(false),
     }
 }
 
@@ -176,6 +212,7 @@ where
 {
     let mut rx = rtu_frame::Receiver::default();
     let mut chunk = [0u8; 512];
+    let mut out: Vec<u8> = Vec::with_capacity(rtu_frame::MAX_FRAME);
     loop {
         // Quiet line with bytes pending (or being discarded): the frame has ended.
         let wait = if rx.pending() { Some(SILENCE) } else { idle };
@@ -194,14 +231,15 @@ where
             let unit = match &f {
                 Frame::Request { unit, .. } | Frame::Refuse { unit, .. } => *unit,
             };
-            let (reply, fault) = answer(&service, unit, f);
+            out.clear();
+            out.push(unit);
+            let (replied, fault) = answer(&service, unit, &f, &mut out);
             if fault == Some(FaultKind::Drop) && idle.is_some() {
                 return Ok(()); // RTU over TCP: the connection closes instead of a reply
             }
-            if let Some(pdu) = reply {
-                let mut out = vec![unit];
-                out.extend(pdu);
-                out.extend(rtu_frame::crc16(&out).to_le_bytes());
+            if replied {
+                let crc = rtu_frame::crc16(&out);
+                out.extend_from_slice(&crc.to_le_bytes());
                 if fault == Some(FaultKind::BadCrc) {
                     if let Some(last) = out.last_mut() {
                         *last ^= 0xFF;
@@ -209,7 +247,7 @@ where
                 }
                 // A client that stops reading fills the line; its replies are dropped after
                 // a while rather than holding this transport (or spinning on it).
-                let _ = tokio::time::timeout(WRITE_STALL, s.write_all(&out)).await;
+                let _ = write_stalling(&mut s, &out).await;
             }
         }
     }

@@ -76,8 +76,36 @@ impl K2Service {
 
     /// Serves one request, letting injected faults act on it (logged as events).
     pub fn handle_with_faults(&self, unit: u8, req: &Request<'_>) -> Served {
+        let (reply, fault) = self.with_faults(unit, req, |sim| serve(sim, req));
+        Served { reply, fault }
+    }
+
+    /// Serves one request as [`Self::handle_with_faults`] does, appending the reply PDU
+    /// (function code and data, or the exception) to `out`: a read of registers is one slice
+    /// copy of the memory image, which holds them in the byte order they travel in.
+    /// Returns whether a reply was written, and the injected fault that acted.
+    pub fn handle_into(&self, unit: u8, req: &Request<'_>, out: &mut Vec<u8>) -> (bool, Option<FaultKind>) {
+        let fc = req.function_code().value();
+        let (reply, fault) = self.with_faults(unit, req, |sim| serve_into(sim, req, out));
+        match reply {
+            None => (false, fault),
+            Some(Ok(())) => (true, fault),
+            Some(Err(e)) => {
+                out.extend_from_slice(&[fc | 0x80, u8::from(e)]);
+                (true, fault)
+            }
+        }
+    }
+
+    /// The unit check, the clock, and the injected faults around serving `req` with `serve`.
+    fn with_faults<R>(
+        &self,
+        unit: u8,
+        req: &Request<'_>,
+        serve: impl FnOnce(&mut K2Sim) -> Result<R, Exception>,
+    ) -> (Option<Result<R, ExceptionCode>>, Option<FaultKind>) {
         if unit != self.unit && unit != 0 {
-            return Served { reply: None, fault: None };
+            return (None, None);
         }
         let mut sim = lock(&self.sim);
         sim.advance();
@@ -89,9 +117,9 @@ impl K2Service {
                 sim.events.extend(vec![(now, EventKind::Fault { id, fault: kind.code() })]);
                 fault = Some(kind);
                 match kind {
-                    FaultKind::NoReply | FaultKind::Drop => return Served { reply: None, fault },
+                    FaultKind::NoReply | FaultKind::Drop => return (None, fault),
                     FaultKind::Exception { code } => {
-                        return Served { reply: (unit != 0).then_some(Err(ExceptionCode::new(code))), fault }
+                        return ((unit != 0).then_some(Err(ExceptionCode::new(code))), fault)
                     }
                     FaultKind::Late { ms } => {
                         // Wall time: the client's timeout runs on it. The simulator is unlocked meanwhile.
@@ -104,8 +132,8 @@ impl K2Service {
                 }
             }
         }
-        let r = serve(&mut sim, req).map_err(ExceptionCode::from);
-        Served { reply: (unit != 0).then_some(r), fault }
+        let r = serve(&mut sim).map_err(ExceptionCode::from);
+        ((unit != 0).then_some(r), fault)
     }
 }
 
@@ -175,6 +203,25 @@ fn durable(sim: &mut K2Sim, area: Area, lo: u32, hi: u32) -> Result<(), Exceptio
         eprintln!("plcsh: {e}");
         Exception::ServerDeviceFailure
     })
+}
+
+/// [`serve`] with the reply PDU appended to `out`; reads of registers copy the memory bytes
+/// straight into it.
+fn serve_into(sim: &mut K2Sim, req: &Request<'_>, out: &mut Vec<u8>) -> Result<(), Exception> {
+    let (fc, table, a, n) = match req {
+        Request::ReadHoldingRegisters(a, n) => (0x03, Table::HoldingRegisters, *a, *n),
+        Request::ReadInputRegisters(a, n) => (0x04, Table::InputRegisters, *a, *n),
+        _ => {
+            let fc = req.function_code().value();
+            out.extend_from_slice(&super::rtu_frame::encode_pdu(fc, &Ok(serve(sim, req)?)));
+            return Ok(());
+        }
+    };
+    let (area, off) = area_of(sim, fc, table, a, n as usize)?;
+    let first = 2 * off as usize;
+    out.extend_from_slice(&[fc, 2 * n as u8]);
+    out.extend_from_slice(&sim.mem.area(area)[first..first + 2 * n as usize]);
+    Ok(())
 }
 
 /// Serves one request on the simulator (the unit id was already checked).
@@ -335,6 +382,38 @@ mod tests {
         assert!(ea.handle(1, &Request::ReadInputRegisters(0, 6)).unwrap().is_ok());
         assert_eq!(err(&s, Request::MaskWriteRegister(100, 0, 0)), ExceptionCode::IllegalFunction);
         assert_eq!(err(&s, Request::Custom(0x41, Cow::Owned(vec![]))), ExceptionCode::IllegalFunction);
+    }
+
+    #[test]
+    fn replies_written_in_place_equal_the_encoded_responses() {
+        let s = service("K205-16DT");
+        {
+            let mut sim = lock(&s.sim);
+            for (k, b) in sim.mem.v.iter_mut().enumerate().take(300) {
+                *b = (k * 29 + 3) as u8;
+            }
+        }
+        let requests = [
+            Request::ReadHoldingRegisters(100, 100),
+            Request::ReadHoldingRegisters(151, 1),
+            Request::ReadInputRegisters(150, 7),
+            Request::ReadHoldingRegisters(100, 101),
+            Request::ReadHoldingRegisters(2140, 10),
+            Request::ReadCoils(320, 19),
+            Request::WriteSingleRegister(100, 7),
+            Request::MaskWriteRegister(100, 0, 0),
+        ];
+        for unit in [1, 2] {
+            for r in &requests {
+                let fc = r.function_code().value();
+                let want = s.handle(unit, r).map(|reply| crate::k2::sim::rtu_frame::encode_pdu(fc, &reply));
+                let mut out = vec![0xAA]; // what the transport put before the PDU stays
+                let (replied, fault) = s.handle_into(unit, r, &mut out);
+                assert_eq!(fault, None);
+                assert_eq!(replied.then(|| out[1..].to_vec()), want, "unit {unit}: {r:?}");
+                assert_eq!(out[0], 0xAA);
+            }
+        }
     }
 
     #[test]

@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# One-shot start-up: wall time of whole processes that connect, read 10 registers (VW0..VW18,
+# holding registers 100…109) and exit, against one `plcsh sim serve --tcp`, next to libmodbus's
+# one-shot client and `true` (starting any process). The programs take turns, RUNS rounds;
+# each figure is the median, with the load average before and after.
+#
+#   bench/oneshot.sh [RUNS] [PLCSH...]    # default 20 runs, target/release/plcsh
+#
+# Several plcsh binaries may be given (e.g. builds with different release settings): each is
+# measured in the same rounds. Needs target/bench/mb_client (bench/run.sh or bench/callgrind.sh).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+runs=${1:-20}
+shift || true
+bins=("$@")
+[ ${#bins[@]} -gt 0 ] || bins=(target/release/plcsh)
+work=$(mktemp -d /tmp/plcsh-oneshot.XXXXXX)
+target/release/plcsh --state none sim serve --tcp 0 --model K205-16DT >"$work/ready" 2>/dev/null &
+server=$!
+trap 'kill $server 2>/dev/null; wait $server 2>/dev/null; rm -rf "$work"' EXIT
+for _ in $(seq 1 100); do [ -s "$work/ready" ] && break; sleep 0.05; done
+addr=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["tcp"])' "$work/ready")
+python3 - "$runs" "$addr" "${bins[@]}" <<'EOF'
+import os, statistics, subprocess, sys, time
+runs, addr, bins = int(sys.argv[1]), sys.argv[2], sys.argv[3:]
+host, port = addr.rsplit(":", 1)
+url = f"tcp://{addr}?model=K205-16DT"
+progs = [(b, [b, "-c", "get VW0..VW18", "-d", url]) for b in bins]
+progs += [("libmodbus client (C)", ["target/bench/mb_client", "tcp", host, port, "--once"]), ("true", ["true"])]
+load = lambda: " ".join(open("/proc/loadavg").read().split()[:3])
+print(f"machine: {os.cpu_count()} cores, load before: {load()}; {runs} interleaved runs each")
+times = {name: [] for name, _ in progs}
+for _ in range(runs):
+    for name, argv in progs:
+        t0 = time.perf_counter()
+        subprocess.run(argv, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True)
+        times[name].append(time.perf_counter() - t0)
+med = {k: statistics.median(v) * 1e3 for k, v in times.items()}
+lib, true = med["libmodbus client (C)"], med["true"]
+print(f"load after: {load()}\n")
+print("| program | median | beyond `true` | vs libmodbus one-shot |")
+print("|---|---:|---:|---:|")
+for name, _ in progs:
+    print(f"| {name} | {med[name]:.2f} ms | {med[name] - true:.2f} ms | {med[name] / lib:.2f}× |")
+EOF
