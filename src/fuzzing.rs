@@ -32,6 +32,7 @@ pub const TARGETS: &[(&str, Target)] = &[
     ("servo_units", servo_units),
     ("modbus_rtu", modbus_rtu),
     ("modbus_tcp", modbus_tcp),
+    ("modbus_client", modbus_client),
     ("agent_mailbox", agent_mailbox),
     ("agent_base", agent_base),
     ("il", il),
@@ -231,6 +232,12 @@ pub fn modbus_tcp(data: &[u8]) {
         }
         rest = &rest[6 + len..];
     }
+}
+
+/// Modbus replies as the K2 driver's client reads them (TCP and RTU framing, every request
+/// kind, bytes arriving in several chunk sizes).
+pub fn modbus_client(data: &[u8]) {
+    crate::k2::driver::fuzz_replies(data);
 }
 
 /// The PLC-side helper's mailbox as the simulated helper reads it: arbitrary bytes in the

@@ -33,6 +33,8 @@
 
 mod client;
 mod port;
+
+pub use client::fuzz_replies;
 mod sm;
 
 use super::agent::client::AgentClient;
