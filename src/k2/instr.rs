@@ -12,7 +12,7 @@
 //!   numbers but does not list them, and the K5 numbering is not S7-200's (S7-200's event 28
 //!   is "HSC0 external reset", the K2's is "PTO0 complete", kinco-public-notes). Guessing
 //!   would make a user ATCH the wrong event, so these events carry only a name
-//!   (`pto1-done`, `hsc0-cv=pv`, `hsc1-reset`, `eeprom-wear`) and `wait event` accepts names.
+//!   (`pto1-done`, `hsc0-cv=pv`, `hsc1-reset`, `hsc1-dir`, `eeprom-wear`) and `wait event` accepts names.
 
 use serde::Serialize;
 use std::fmt;
@@ -29,6 +29,10 @@ pub enum EventKind {
     HscCvEqPv { channel: u8, pv: Option<u8> },
     /// A counter's external reset input became active.
     HscReset { channel: u8 },
+    /// A counter's counting direction changed (the status bit SM36.5 …: `up` is the new
+    /// direction) while it runs: the HSC instruction's direction bit, the external direction
+    /// input, or the signals counted (two-pulse and A/B modes).
+    HscDirection { channel: u8, up: bool },
     /// An E2PROM backup byte crossed a wear threshold (`writes` so far, manual §2.2.8).
     EepromWear { byte: u32, writes: u64 },
     /// An injected fault acted (`fault` is its kind's code, `crate::k2::sim::fault`).
@@ -58,6 +62,7 @@ impl EventKind {
             EventKind::HscCvEqPv { channel, pv: Some(k) } => format!("hsc{channel}-pv{k}"),
             EventKind::HscCvEqPv { channel, pv: None } => format!("hsc{channel}-cv=pv"),
             EventKind::HscReset { channel } => format!("hsc{channel}-reset"),
+            EventKind::HscDirection { channel, .. } => format!("hsc{channel}-dir"),
             EventKind::EepromWear { .. } => "eeprom-wear".to_string(),
             EventKind::Fault { id, .. } => format!("fault{id}"),
         }
@@ -70,6 +75,9 @@ impl EventKind {
             EventKind::HscCvEqPv { channel, pv: Some(k) } => format!("HSC{channel} CV = PV{k} (multi-PV)"),
             EventKind::HscCvEqPv { channel, pv: None } => format!("HSC{channel} CV = PV (single PV)"),
             EventKind::HscReset { channel } => format!("HSC{channel} external reset"),
+            EventKind::HscDirection { channel, up } => {
+                format!("HSC{channel} counting direction changed to {}", if up { "up" } else { "down" })
+            }
             EventKind::EepromWear { byte, writes } => {
                 format!("E2PROM byte VB{byte} has been written {writes} times (endurance ~1 000 000, §2.2.8)")
             }

@@ -708,3 +708,64 @@ fn quiet_counting_matches_the_general_path() {
     let cvs: Vec<i64> = a.hsc.iter().map(|h| h.cv()).collect();
     assert!(cvs.iter().all(|&c| c != 0), "every counter counted: {cvs:?}");
 }
+
+/// A running counter's direction change is an event (`hsc0-dir`) at the time it shows in
+/// the status bit (SM36.5 …): by the HSC instruction's direction bits (SMB37 bits 3 and 4,
+/// k2.md §4), by the external direction input (mode 3: I0.5 for HSC0), and by the signals
+/// counted (mode 9, A/B: B leading counts down). Starting a counter raises none, nor does an
+/// HSC that leaves the direction as it was. The manual gives no event number for it, so it
+/// has only its name (see `instr`).
+#[test]
+fn direction_changes_are_events_when_they_show() {
+    let dir = |s: &mut K2Sim| -> Vec<(Duration, EventKind)> {
+        s.events(true)
+            .unwrap()
+            .into_iter()
+            .filter(|e| matches!(e.kind, EventKind::HscDirection { .. }))
+            .map(|e| (e.time, e.kind))
+            .collect()
+    };
+    let (mut s, clock) = sim("K204ET-16DT");
+    // Mode 0, counting up, then down by the direction bits, then HSC again unchanged.
+    start_counter(&mut s, 0, 0, 0xF8);
+    freq(&mut s, "I0.1", 1000);
+    ms(&clock, 10);
+    assert_eq!(dir(&mut s), vec![], "starting raises nothing");
+    set(&mut s, "SMB37=16#90");
+    s.hsc(0).unwrap();
+    let at = clock.now();
+    ms(&clock, 10);
+    assert_eq!(dir(&mut s), vec![(at, EventKind::HscDirection { channel: 0, up: false })]);
+    assert_eq!(EventKind::HscDirection { channel: 0, up: false }.name(), "hsc0-dir");
+    assert_eq!(EventKind::HscDirection { channel: 0, up: false }.number(), None);
+    s.hsc(0).unwrap();
+    ms(&clock, 10);
+    assert_eq!(dir(&mut s), vec![], "the same direction again");
+    s.remove_source((0, 1)).unwrap();
+    start_counter(&mut s, 0, 0, 0x00);
+
+    // Mode 3: the direction input I0.5 (1 = up).
+    set(&mut s, "I0.5=1");
+    start_counter(&mut s, 0, 3, 0x80);
+    freq(&mut s, "I0.1", 1000);
+    ms(&clock, 10);
+    assert_eq!(dir(&mut s), vec![]);
+    set(&mut s, "I0.5=0");
+    let at = clock.now();
+    ms(&clock, 10);
+    assert_eq!(dir(&mut s), vec![(at, EventKind::HscDirection { channel: 0, up: false })]);
+    s.remove_source((0, 1)).unwrap();
+    start_counter(&mut s, 0, 3, 0x00);
+
+    // Mode 9 on HSC1: A leads (up), then B leads (down) from the new signal's start.
+    let m = crate::k2::sm_map::hsc_mode(1, 9).unwrap();
+    let (a, b) = (m.count, m.second.unwrap());
+    start_counter(&mut s, 1, 9, 0x80);
+    quad(&mut s, a, b, 1000);
+    ms(&clock, 10);
+    assert_eq!(dir(&mut s), vec![]);
+    quad(&mut s, b, a, 1000);
+    let at = clock.now();
+    ms(&clock, 10);
+    assert_eq!(dir(&mut s), vec![(at, EventKind::HscDirection { channel: 1, up: false })]);
+}

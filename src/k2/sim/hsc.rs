@@ -274,6 +274,10 @@ pub struct HscChannel {
     /// Changes whenever a setting the drive depends on may have changed (HDEF, HSC, a
     /// snapshot): the quiet formula's cheap validity test, with the sources' generation.
     settings: u64,
+    /// The direction the status bit last showed while running, and a change of it not yet
+    /// raised as an event (the simulator raises it at its next step).
+    shown_up: Option<bool>,
+    pub(crate) dir_event: Option<bool>,
     /// Tests turn the quiet path off to compare it with the general one.
     #[cfg(test)]
     pub(crate) general_only: bool,
@@ -360,6 +364,8 @@ impl HscChannel {
             cache: None,
             quiet: None,
             settings: 0,
+            shown_up: None,
+            dir_event: None,
             #[cfg(test)]
             general_only: false,
         }
@@ -919,6 +925,12 @@ impl HscChannel {
             mem.set_sm_dword(r.cv, self.cv as i32 as u32);
         }
         let (status, segment) = self.status_bits(mem);
+        let up = status & 1 << st::DIR_UP != 0;
+        if !self.running {
+            self.shown_up = None;
+        } else if self.shown_up.replace(up).is_some_and(|was| was != up) {
+            self.dir_event = Some(up);
+        }
         mem.set_sm_byte(r.status, mem.sm_byte(r.status) & !STATUS_BITS | status);
         mem.set_sm_byte(r.segment, segment);
         if let Some(q) = &mut self.quiet {
@@ -1030,6 +1042,7 @@ impl HscChannel {
         self.cache = None;
         self.quiet = None;
         self.settings += 1;
+        (self.shown_up, self.dir_event) = (None, None);
         Ok(())
     }
 }
