@@ -788,8 +788,11 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
                 let r = self.raw(&ops[1])?;
                 let event = self.typed(&ops[1], &r, DataType::Int)?;
                 if let Opd::Imm(v) = event {
-                    if v as i16 as i64 >= self.fam.events() as i64 || (v as i16) < 0 {
-                        return Err(self.e(ops[1].pos, format!("ATCH: no interrupt event {}", v as i16)));
+                    if (v as i16) < 0 || !self.fam.event_exists(v as i16 as u32) {
+                        return Err(self.e(
+                            ops[1].pos,
+                            format!("ATCH: no interrupt event {} (events: {})", v as i16, self.fam.event_list()),
+                        ));
                     }
                 }
                 Ins::Atch { pou: 0, event }

@@ -205,6 +205,14 @@ pub trait Family {
     fn events(&self) -> u32 {
         256
     }
+    /// Whether interrupt event `n` exists (an `ATCH` to any other is a load error), and
+    /// the list to name in that error.
+    fn event_exists(&self, n: u32) -> bool {
+        n < self.events()
+    }
+    fn event_list(&self) -> String {
+        format!("0–{}", self.events() - 1)
+    }
 }
 
 /// Arithmetic status after an operation (S7-200's SM1.0–SM1.3 on the K2).

@@ -270,6 +270,16 @@ impl Family for K2Family {
         // K2 event numbers go up to 191 (HSC3 PV 32, §3.3.3).
         192
     }
+    /// The numbers docs/il.md lists ([`super::irq`]): a number the manual does not give
+    /// would attach a routine to nothing here and to something else on a real K2.
+    fn event_exists(&self, n: u32) -> bool {
+        matches!(n, 0..=7 | 10 | 11 | 64..=191) || n == crate::k2::instr::PTO0_COMPLETE as u32
+    }
+    fn event_list(&self) -> String {
+        "0–7 input edges, 10–11 timed, 28 PTO0 complete, 64–191 multi-PV CV = PV; the other \
+         counter and PTO events have no number in the manual (docs/il.md, \"Interrupts\")"
+            .to_string()
+    }
 }
 
 /// The simulator during one scan, as the engine's memory image.

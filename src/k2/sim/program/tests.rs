@@ -188,6 +188,27 @@ fn load_errors_name_the_file_line_and_a_suggestion() {
     assert!(s.plc().is_none(), "nothing was loaded");
 }
 
+/// `ATCH` takes only the event numbers the manual gives (docs/il.md "Interrupts"): 12 is
+/// S7-200's HSC0 CV = PV, which the K2 manual does not number, so it is a load error that
+/// lists the numbers there are.
+#[test]
+fn atch_refuses_event_numbers_the_manual_does_not_give() {
+    let (mut s, _) = sim();
+    let prog =
+        |ev: u32| format!("PROGRAM MAIN\nLD %SM0.1\nATCH R, {ev}\nEND_PROGRAM\nINTERRUPT R\nLD %SM0.0\nEND_INTERRUPT");
+    for ev in [8, 9, 12, 27, 29, 63, 192] {
+        let e = s.load_program(&prog(ev), "x.il").unwrap_err();
+        assert!(
+            e.message.contains(&format!("no interrupt event {ev}")) && e.message.contains("28 PTO0 complete"),
+            "{}",
+            e.message
+        );
+    }
+    for ev in [0, 7, 10, 11, 28, 64, 191] {
+        s.load_program(&prog(ev), "x.il").unwrap_or_else(|e| panic!("{ev}: {e}"));
+    }
+}
+
 #[test]
 fn a_bad_indirect_address_stops_the_cpu() {
     let (mut s, _) = sim();
