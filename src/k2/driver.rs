@@ -544,9 +544,33 @@ fn tcp_connect(addr: &str, timeout: Duration) -> Result<std::net::TcpStream> {
             "check that HOST:PORT is the PLC or gateway (a K204ET answers Modbus TCP on port 502), that it is powered and reachable (ping), and that no firewall blocks the port",
         )
     };
+    let start = std::time::Instant::now();
+    // An address given as numbers needs no lookup; a host name is looked up on a thread of its
+    // own, so a name server that does not answer costs the timeout, not a hang.
+    let addrs: Vec<std::net::SocketAddr> = match addr.parse::<std::net::SocketAddr>() {
+        Ok(a) => vec![a],
+        Err(_) => {
+            let (tx, rx) = std::sync::mpsc::channel();
+            let name = addr.to_string();
+            std::thread::spawn(move || {
+                let _ = tx.send(name.to_socket_addrs().map(|a| a.collect::<Vec<_>>()));
+            });
+            match rx.recv_timeout(timeout) {
+                Ok(r) => r.map_err(refused)?,
+                Err(_) => {
+                    return Err(Error::link(format!(
+                        "cannot connect to {addr}: the name was not looked up within {}",
+                        ms(timeout)
+                    ))
+                    .hint("use the PLC's IP address, or check the name server (/etc/resolv.conf)"))
+                }
+            }
+        }
+    };
     let mut last = None;
-    for a in addr.to_socket_addrs().map_err(refused)? {
-        match std::net::TcpStream::connect_timeout(&a, timeout) {
+    for a in addrs {
+        let left = timeout.saturating_sub(start.elapsed()).max(Duration::from_millis(1));
+        match std::net::TcpStream::connect_timeout(&a, left) {
             Ok(s) => return Ok(s),
             Err(e) => last = Some(e),
         }
@@ -772,6 +796,22 @@ impl super::K2Ops for K2Wire {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A numeric address connects without a lookup; a name (`localhost`, from the hosts
+    /// file) is looked up off the caller's thread and connects too; a closed port is a link
+    /// error that says what to check.
+    #[test]
+    fn tcp_connect_by_address_and_by_name() {
+        let l = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
+        let port = l.local_addr().unwrap().port();
+        let t = Duration::from_secs(5);
+        tcp_connect(&format!("127.0.0.1:{port}"), t).unwrap();
+        tcp_connect(&format!("localhost:{port}"), t).unwrap();
+        drop(l);
+        let e = tcp_connect(&format!("127.0.0.1:{port}"), t).unwrap_err();
+        assert!(e.message.contains(&format!("127.0.0.1:{port}")), "{}", e.message);
+        assert!(e.hint.as_deref().unwrap_or("").contains("firewall"), "{:?}", e.hint);
+    }
 
     /// The driver against the simulator's RTU server over an in-memory pipe: the same map
     /// in both directions, no sockets.
