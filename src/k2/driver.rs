@@ -796,6 +796,24 @@ impl super::K2Ops for K2Wire {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::sync::{Arc, Mutex};
+
+    /// The driver attached over an in-memory pipe to the simulator's RTU server (on a thread
+    /// of its own), with the simulator shared for checks.
+    fn served(sim: crate::k2::sim::K2Sim) -> (K2Wire, Arc<Mutex<crate::k2::sim::K2Sim>>, std::thread::JoinHandle<()>) {
+        use crate::k2::sim::modbus_server::{serve_rtu_stream, K2Service};
+        let (client, server) = tokio::io::duplex(1024);
+        let model = sim.model();
+        let sim = Arc::new(Mutex::new(sim));
+        let service = K2Service::new(sim.clone(), 1);
+        let srv = std::thread::spawn(move || {
+            let rt = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
+            let _ = rt.block_on(serve_rtu_stream(server, service));
+        });
+        let settings =
+            Settings { unit: 1, word_order: WordOrder::HighFirst, timeout: Duration::from_secs(2), retries: 0 };
+        (K2Wire::attach(client, true, model, settings, "pipe".into()).unwrap(), sim, srv)
+    }
 
     /// A numeric address connects without a lookup; a name (`localhost`, from the hosts
     /// file) is looked up off the caller's thread and connects too; a closed port is a link
@@ -817,20 +835,8 @@ mod tests {
     /// in both directions, no sockets.
     #[test]
     fn driver_and_simulator_server_agree_over_a_pipe() {
-        use crate::core::Clock;
-        use crate::k2::sim::modbus_server::{serve_rtu_stream, K2Service};
-        use std::sync::{Arc, Mutex};
-        let (client, server) = tokio::io::duplex(1024);
         let model = catalog::find("K205-16DT").unwrap();
-        let sim = Arc::new(Mutex::new(crate::k2::sim::K2Sim::new(model, Clock::stepped())));
-        let service = K2Service::new(sim.clone(), 1);
-        let srv = std::thread::spawn(move || {
-            let rt = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
-            let _ = rt.block_on(serve_rtu_stream(server, service));
-        });
-        let settings =
-            Settings { unit: 1, word_order: WordOrder::HighFirst, timeout: Duration::from_secs(2), retries: 0 };
-        let mut dev = K2Wire::attach(client, true, model, settings, "pipe".into()).unwrap();
+        let (mut dev, sim, srv) = served(crate::k2::sim::K2Sim::new(model, crate::core::Clock::stepped()));
         let ops = dev.operands().parse("VW300").unwrap();
         let more = dev.operands().parse("VB301").unwrap();
         dev.write(&[(ops[0], Value::Int(0x1234)), (more[0], Value::Int(0xAB))]).unwrap();
@@ -848,27 +854,15 @@ mod tests {
     /// twice (the second read reuses the plan and the reply buffers).
     #[test]
     fn a_mixed_batch_reads_as_the_simulator_reads_it() {
-        use crate::core::Clock;
-        use crate::k2::sim::modbus_server::{serve_rtu_stream, K2Service};
-        use std::sync::{Arc, Mutex};
-        let (client, server) = tokio::io::duplex(1024);
         let model = catalog::find("K205-16DT").unwrap();
-        let mut sim = crate::k2::sim::K2Sim::new(model, Clock::stepped());
+        let mut sim = crate::k2::sim::K2Sim::new(model, crate::core::Clock::stepped());
         for (k, b) in sim.mem.v.iter_mut().enumerate().take(400) {
             *b = (k * 37 + 11) as u8;
         }
         for (k, b) in sim.mem.m.iter_mut().enumerate().take(16) {
             *b = (k * 53 + 7) as u8;
         }
-        let sim = Arc::new(Mutex::new(sim));
-        let service = K2Service::new(sim.clone(), 1);
-        let srv = std::thread::spawn(move || {
-            let rt = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
-            let _ = rt.block_on(serve_rtu_stream(server, service));
-        });
-        let settings =
-            Settings { unit: 1, word_order: WordOrder::HighFirst, timeout: Duration::from_secs(2), retries: 0 };
-        let mut dev = K2Wire::attach(client, true, model, settings, "pipe".into()).unwrap();
+        let (mut dev, sim, srv) = served(sim);
         let text = "VB0 VB1 VW0 VW1 VW2/INT VD4 VD5 VD8/REAL V3.5 K4V10.2 M1.2 MB1 MW2 MD3 K3M0.5 VW100[5] VB300";
         let ops: Vec<Operand> =
             text.split(' ').flat_map(|t| dev.operands().parse(t).unwrap_or_else(|e| panic!("{t}: {e}"))).collect();

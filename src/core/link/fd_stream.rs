@@ -17,6 +17,21 @@ use std::task::{Context, Poll};
 use tokio::io::unix::AsyncFd;
 use tokio::io::{AsyncRead, AsyncWrite, Interest, ReadBuf};
 
+/// Puts the descriptor `owner` holds in non-blocking mode.
+pub(crate) fn set_nonblocking<T: AsRawFd>(owner: &T) -> io::Result<()> {
+    let raw = owner.as_raw_fd();
+    // SAFETY: fcntl on a descriptor `owner` keeps open for as long as it lives.
+    let ok = unsafe {
+        let flags = nix::libc::fcntl(raw, nix::libc::F_GETFL);
+        flags >= 0 && nix::libc::fcntl(raw, nix::libc::F_SETFL, flags | nix::libc::O_NONBLOCK) >= 0
+    };
+    if ok {
+        Ok(())
+    } else {
+        Err(io::Error::last_os_error())
+    }
+}
+
 /// An async stream over the descriptor of `T`.
 pub struct FdStream<T: AsRawFd> {
     fd: AsyncFd<T>,
@@ -26,15 +41,7 @@ impl<T: AsRawFd> FdStream<T> {
     /// Puts the descriptor in non-blocking mode and registers it with the current tokio
     /// runtime (call inside one).
     pub fn new(owner: T) -> io::Result<FdStream<T>> {
-        let raw = owner.as_raw_fd();
-        // SAFETY: fcntl on a descriptor `owner` keeps open for as long as it lives.
-        let ok = unsafe {
-            let flags = nix::libc::fcntl(raw, nix::libc::F_GETFL);
-            flags >= 0 && nix::libc::fcntl(raw, nix::libc::F_SETFL, flags | nix::libc::O_NONBLOCK) >= 0
-        };
-        if !ok {
-            return Err(io::Error::last_os_error());
-        }
+        set_nonblocking(&owner)?;
         // SAFETY: `owner` owns a valid descriptor and keeps it open, unreplaced, for as long
         // as the AsyncFd holds it.
         Ok(FdStream { fd: unsafe { AsyncFd::register_with_interest(owner, Interest::READABLE)? } })

@@ -49,15 +49,7 @@ pub struct FdPort<T: AsRawFd + Send> {
 impl<T: AsRawFd + Send> FdPort<T> {
     /// Takes the descriptor over and reports the connection to `peer` as opened.
     pub fn new(owner: T, link: &str, proto: Proto, peer: &str) -> io::Result<FdPort<T>> {
-        let raw = owner.as_raw_fd();
-        // SAFETY: fcntl on a descriptor `owner` keeps open for as long as it lives.
-        let ok = unsafe {
-            let flags = nix::libc::fcntl(raw, nix::libc::F_GETFL);
-            flags >= 0 && nix::libc::fcntl(raw, nix::libc::F_SETFL, flags | nix::libc::O_NONBLOCK) >= 0
-        };
-        if !ok {
-            return Err(io::Error::last_os_error());
-        }
+        crate::core::link::fd_stream::set_nonblocking(&owner)?;
         trace::opened(link, proto, peer);
         Ok(FdPort { owner, link: link.into(), proto, eof: None })
     }
