@@ -14,7 +14,6 @@ use crate::k2::catalog::MODELS;
 use crate::k2::space::K2Space;
 use crate::k2::Event;
 use std::path::Path;
-use std::sync::OnceLock;
 
 /// A target's entry point.
 pub type Target = fn(&[u8]);
@@ -45,22 +44,6 @@ pub const TARGETS: &[(&str, Target)] = &[
     ("bench", bench),
 ];
 
-/// Every model's operand space, built once per process: building one is not what the
-/// targets test, and it dominated their time per input.
-fn k2_spaces() -> &'static [K2Space] {
-    static SPACES: OnceLock<Vec<K2Space>> = OnceLock::new();
-    SPACES.get_or_init(|| MODELS.iter().map(K2Space::new).collect())
-}
-
-/// The servo's object space at each power-of-two encoder resolution `servo_units` picks.
-fn servo_space(r: u32) -> &'static crate::servo::objects::ServoSpace {
-    use crate::servo::objects::ServoSpace;
-    use crate::servo::units::Resolution;
-    static SPACES: OnceLock<Vec<ServoSpace>> = OnceLock::new();
-    let all = SPACES.get_or_init(|| (0..32).map(|k| ServoSpace::new(Resolution::new(1u32 << k))).collect());
-    &all[r.trailing_zeros() as usize % 32]
-}
-
 fn text(data: &[u8]) -> String {
     String::from_utf8_lossy(data).into_owned()
 }
@@ -69,7 +52,8 @@ fn text(data: &[u8]) -> String {
 pub fn operand(data: &[u8]) {
     let t = text(data);
     let _ = crate::k2::operand::parse_expr(&t);
-    for space in k2_spaces() {
+    for m in MODELS {
+        let space = K2Space::new(m);
         if let Ok(ops) = space.parse(&t) {
             for op in ops.iter().take(64) {
                 let _ = space.name(op);
@@ -115,9 +99,9 @@ pub fn url(data: &[u8]) {
 /// The device profile file, and the write rules built from it.
 pub fn profile(data: &[u8]) {
     let p = crate::profile::Profiles::parse(&text(data), Path::new("fuzz/devices.toml"));
-    let space = &k2_spaces()[0];
+    let space = K2Space::new(&MODELS[0]);
     for prof in p.list() {
-        let _ = crate::profile::Guard::build(prof, space);
+        let _ = crate::profile::Guard::build(prof, &space);
     }
 }
 
@@ -125,14 +109,13 @@ pub fn profile(data: &[u8]) {
 pub fn completion(data: &[u8]) {
     use crate::shell::complete::{complete, hint, DeviceView, View};
     let t = text(data);
-    let k205 = &k2_spaces()[0];
-    static SERVO: OnceLock<crate::servo::objects::ServoSpace> = OnceLock::new();
-    let servo = SERVO.get_or_init(|| crate::servo::objects::ServoSpace::new(Default::default()));
+    let k205 = K2Space::new(&MODELS[0]);
+    let servo = crate::servo::objects::ServoSpace::new(Default::default());
     let files = |_: &str| Vec::new();
     let view = View {
         devices: vec![
-            DeviceView { name: "plc", family: "k2", model: MODELS[0].name, space: k205 },
-            DeviceView { name: "servo", family: "servo", model: "FD", space: servo },
+            DeviceView { name: "plc", family: "k2", model: MODELS[0].name, space: &k205 },
+            DeviceView { name: "servo", family: "servo", model: "FD", space: &servo },
         ],
         current: Some(0),
         profiles: Vec::new(),
@@ -168,16 +151,16 @@ pub fn servo_frame(data: &[u8]) {
 
 /// Servo object names and values with units (`300rpm`, `100rps/s`, `2.5rev`).
 pub fn servo_units(data: &[u8]) {
-    use crate::servo::objects::{self, ObjRef};
-    use crate::servo::units::{self, Unit};
+    use crate::servo::objects::{self, ObjRef, ServoSpace};
+    use crate::servo::units::{self, Resolution, Unit};
     let t = text(data);
     let _ = units::parse_resolution(&t);
     let _ = objects::parse(&t);
-    let r = data.first().map(|b| 1u32 << (b % 32)).unwrap_or(1 << 16);
+    let r = data.first().map(|b| 1u32 << (b % 32)).unwrap_or(10_000);
     for unit in [Unit::None, Unit::Bits, Unit::Increments, Unit::Speed, Unit::Accel, Unit::Mode] {
         let _ = units::parse_engineering(&t, unit, r);
     }
-    let space = servo_space(r);
+    let space = ServoSpace::new(Resolution::new(r));
     let _ = space.parse(&t);
     for name in ["target_position", "profile_velocity", "profile_acceleration", "controlword"] {
         let _ = space.parse_value(&ObjRef::of(objects::named(name)), &t);
