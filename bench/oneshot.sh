@@ -4,7 +4,7 @@
 # one-shot client and `true` (starting any process). The programs take turns, RUNS rounds;
 # each figure is the median, with the load average before and after.
 #
-#   bench/oneshot.sh [RUNS] [PLCSH...]    # default 20 runs, target/release/plcsh
+#   bench/oneshot.sh [RUNS] [PLCSH...]    # default 20 runs, the static and the default build
 #
 # Several plcsh binaries may be given (e.g. builds with different release settings): each is
 # measured in the same rounds. Needs target/bench/mb_client (bench/run.sh or bench/callgrind.sh).
@@ -13,7 +13,10 @@ cd "$(dirname "$0")/.."
 runs=${1:-20}
 shift || true
 bins=("$@")
-[ ${#bins[@]} -gt 0 ] || bins=(target/release/plcsh)
+if [ ${#bins[@]} -eq 0 ]; then
+    [ -x target/x86_64-unknown-linux-gnu/release/plcsh ] && bins+=(target/x86_64-unknown-linux-gnu/release/plcsh)
+    bins+=(target/release/plcsh)
+fi
 work=$(mktemp -d /tmp/plcsh-oneshot.XXXXXX)
 target/release/plcsh --state none sim serve --tcp 0 --model K205-16DT >"$work/ready" 2>/dev/null &
 server=$!

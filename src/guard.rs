@@ -177,6 +177,9 @@ impl Device for Guarded {
     fn read(&mut self, ops: &[Operand]) -> Result<Vec<Value>> {
         self.inner.read(ops)
     }
+    fn read_into(&mut self, ops: &[Operand], out: &mut Vec<Value>) -> Result<()> {
+        self.inner.read_into(ops, out)
+    }
     fn write(&mut self, items: &[(Operand, Value)]) -> Result<()> {
         // Unrestricted (the usual case) costs one flag load: no allocation per write.
         if self.restricted() {

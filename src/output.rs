@@ -132,6 +132,15 @@ pub fn error_json(cmd: &str, e: &Error) -> serde_json::Value {
 
 /// Writes one successful result.
 pub fn write_outcome(w: &mut dyn Write, style: Style, o: &Outcome) -> io::Result<()> {
+    // One write per result: standard output flushes at every line, and a result of ten lines
+    // would otherwise be ten system calls (a pipeline still gets each result as it comes).
+    let mut text = Vec::new();
+    render_outcome(&mut text, style, o)?;
+    w.write_all(&text)
+}
+
+/// The text (or JSON line) of one result.
+fn render_outcome(w: &mut dyn Write, style: Style, o: &Outcome) -> io::Result<()> {
     if style.json {
         serde_json::to_writer(&mut *w, &JsonOk { ok: true, outcome: o })?;
         return writeln!(w);

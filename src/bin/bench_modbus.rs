@@ -7,8 +7,11 @@
 //! Every loop is bounded (a count and a time), one request is in flight, and every address is
 //! on 127.0.0.1 or a pseudo-terminal. Servers are waited for through their readiness lines.
 //!
-//! Usage: `bench_modbus [--seconds S] [--count N] [--runs R] [--peers DIR] [--py DIR]`
-//! (`--peers`: the built C programs, default `target/bench`; `--py`: `bench/py`).
+//! Usage: `bench_modbus [--seconds S] [--count N] [--runs R] [--peers DIR] [--py DIR] [--plcsh EXE]`
+//! (`--peers`: the built C programs, default `target/bench`; `--py`: `bench/py`; `--plcsh`: the
+//! plcsh measured as a server and one-shot, default the one beside this program —
+//! `bench/run.sh` gives the static build, `cargo build-static`, and the one-shot table shows
+//! the default dynamically linked build beside it).
 //!
 //! `bench_modbus transactions URL REGS N` reads REGS words from VW0 N times after one warm-up
 //! read, with no timing: `bench/callgrind.sh` runs it under callgrind to count the driver's
@@ -62,6 +65,8 @@ struct Opts {
     peers: PathBuf,
     py: PathBuf,
     plcsh: PathBuf,
+    /// The plcsh built with this program (the default, dynamically linked build).
+    plcsh_beside: PathBuf,
 }
 
 /// A server process, killed on drop.
@@ -318,6 +323,7 @@ fn main() {
         peers: PathBuf::from("target/bench"),
         py: PathBuf::from("bench/py"),
         plcsh: exe_dir.join("plcsh"),
+        plcsh_beside: exe_dir.join("plcsh"),
     };
     while let Some(a) = args.next() {
         let v = args.next().unwrap_or_default();
@@ -328,9 +334,10 @@ fn main() {
             "--rounds" => o.rounds = v.parse().expect("--rounds N"),
             "--peers" => o.peers = v.into(),
             "--py" => o.py = v.into(),
+            "--plcsh" => o.plcsh = v.into(),
             _ => {
                 eprintln!(
-                    "usage: bench_modbus [--seconds S] [--count N] [--rounds N] [--runs R] [--peers DIR] [--py DIR]"
+                    "usage: bench_modbus [--seconds S] [--count N] [--rounds N] [--runs R] [--peers DIR] [--py DIR] [--plcsh EXE]"
                 );
                 std::process::exit(2);
             }
@@ -511,12 +518,14 @@ fn main() {
         }),
         Box::new(|| py(&o, "client.py", &["once", "tcp", &p_tcp])),
         Box::new(|| cmd(Path::new("true"), &[])),
+        Box::new(|| cmd(&o.plcsh_beside, &["-c", "get VW0..VW18", "--device", &url])),
     ];
     let figs = one_shots(&o, &makers);
     println!(
         "## One-shot: process start → read 10 registers (VW0..VW18) → exit, TCP, {} runs each, interleaved\n",
         o.runs
     );
+    println!("plcsh: {}; the dynamically linked build: {}\n", o.plcsh.display(), o.plcsh_beside.display());
     print_table(
         "program",
         &[
@@ -525,6 +534,7 @@ fn main() {
             "mbpoll -1",
             "pymodbus sync (python3 start included)",
             "(`true`: starting any process)",
+            "(the same plcsh, default dynamically linked build)",
         ],
         &figs,
         &[("libmodbus one-shot", &figs[1])],

@@ -28,6 +28,16 @@ pub enum TimeMode {
 #[derive(Parser, Debug)]
 #[command(name = "plcsh", version, about = "A shell for commissioning and debugging Kinco K2 PLCs and servo drives", long_about = None)]
 pub struct Cli {
+    #[command(flatten)]
+    pub options: Options,
+    #[command(subcommand)]
+    pub sub: Option<Sub>,
+}
+
+/// The top-level options (`cli.json`, `cli.devices` … read through `Deref`): one table for
+/// the full parser and for [`parse_one_shot`]'s light one.
+#[derive(clap::Args, Debug)]
+pub struct Options {
     /// Run these commands (separated by `;`) and exit.
     #[arg(short = 'c', long = "command", value_name = "COMMANDS")]
     pub command: Option<String>,
@@ -63,8 +73,13 @@ pub struct Cli {
     /// Refuse every change to every device (writes, instructions, servo commands): inspect a live machine.
     #[arg(long = "read-only", global = true)]
     pub read_only: bool,
-    #[command(subcommand)]
-    pub sub: Option<Sub>,
+}
+
+impl std::ops::Deref for Cli {
+    type Target = Options;
+    fn deref(&self) -> &Options {
+        &self.options
+    }
 }
 
 #[derive(Subcommand, Debug)]
@@ -249,6 +264,29 @@ pub fn split_script_args(argv: Vec<std::ffi::OsString>) -> (Vec<std::ffi::OsStri
     (argv, None)
 }
 
+/// The parse of a command line without a subcommand (`plcsh -c '…' -d URL`, `plcsh --json`):
+/// the top-level options alone, without building the subcommands' parsers (most of clap's
+/// start-up: their arguments, the global options copied into each, and their stack frames;
+/// BENCHMARKS.md, "One-shot start-up"). `None` sends the line to the full parser: a word that
+/// may be a subcommand, help or version, or anything this parser refuses, so that help and
+/// every error message come from one place.
+fn parse_one_shot(argv: &[std::ffi::OsString]) -> Option<Cli> {
+    use clap::{Args, FromArgMatches};
+    let mut words = argv.iter().skip(1).map(|a| a.to_string_lossy());
+    while let Some(a) = words.next() {
+        let is_flag = a.starts_with('-') && a.len() > 1 && a != "--";
+        if !is_flag || ["-h", "--help", "-V", "--version"].contains(&a.as_ref()) {
+            return None;
+        }
+        if VALUE_OPTIONS.contains(&a.as_ref()) {
+            words.next();
+        }
+    }
+    let matches = Options::augment_args(clap::Command::new("plcsh")).try_get_matches_from(argv).ok()?;
+    let options = Options::from_arg_matches(&matches).ok()?;
+    Some(Cli { options, sub: None })
+}
+
 /// The simulator state file the flags name: `--state FILE` (or `PLCSH_STATE`), none for
 /// `none`, else the user's default file.
 pub fn state_file(cli: &Cli) -> Option<std::path::PathBuf> {
@@ -287,7 +325,11 @@ pub fn main() -> i32 {
 
 fn run_cli() -> i32 {
     let (argv, script_args) = split_script_args(std::env::args_os().collect());
-    let cli = match Cli::try_parse_from(argv) {
+    let parsed = match parse_one_shot(&argv) {
+        Some(cli) => Ok(cli),
+        None => Cli::try_parse_from(argv),
+    };
+    let cli = match parsed {
         Ok(mut c) => {
             if let (Some(Sub::Run(r)), Some(rest)) = (c.sub.as_mut(), script_args) {
                 r.args = rest;
@@ -376,6 +418,45 @@ fn run(cli: &Cli, mut shell: Shell, style: Style, mut out: std::io::StdoutLock<'
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn argv(line: &[&str]) -> Vec<std::ffi::OsString> {
+        std::iter::once("plcsh").chain(line.iter().copied()).map(Into::into).collect()
+    }
+
+    #[test]
+    fn the_light_parse_equals_the_full_parse() {
+        let lines: &[&[&str]] = &[
+            &[],
+            &["-c", "get VW0..VW18", "-d", "tcp://127.0.0.1:502?model=K205-16DT"],
+            &["--json", "-vv", "--command=get VW0", "--time", "stepped", "--state", "none"],
+            &["-d", "press=sim:K209EA-50DX", "--device", "servo=sim-servo:?id=2", "--read-only"],
+            &["--model", "K204ET-16DT", "--config", "x.toml", "--record", "r.pcapng", "--bench", "b.toml"],
+        ];
+        for line in lines {
+            let light = parse_one_shot(&argv(line)).unwrap_or_else(|| panic!("{line:?}: not taken"));
+            let full = Cli::try_parse_from(argv(line)).unwrap();
+            assert_eq!(format!("{light:?}"), format!("{full:?}"), "{line:?}");
+        }
+    }
+
+    #[test]
+    fn the_full_parser_takes_subcommands_help_and_errors() {
+        let lines: &[&[&str]] = &[
+            &["models"],
+            &["--json", "sim", "serve", "--tcp", "0"],
+            &["-vc", "get VW0"],
+            &["--help"],
+            &["-V"],
+            &["--time", "sometimes"],
+            &["--no-such-flag"],
+            &["-c"],
+            &["-c", "--json"],
+            &["--", "-c"],
+        ];
+        for line in lines {
+            assert!(parse_one_shot(&argv(line)).is_none(), "{line:?}");
+        }
+    }
 
     #[test]
     fn device_args_with_and_without_names() {

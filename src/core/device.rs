@@ -45,6 +45,13 @@ pub trait Device: Send {
     fn operands(&self) -> &dyn OperandSpace;
     /// Reads a batch; values come back in the order asked.
     fn read(&mut self, ops: &[Operand]) -> Result<Vec<Value>>;
+    /// Reads a batch into `out` (cleared first), reusing its allocation: for a loop that
+    /// polls the same operands again and again. Devices whose reads are in memory read
+    /// straight into it; the others go through [`Device::read`].
+    fn read_into(&mut self, ops: &[Operand], out: &mut Vec<Value>) -> Result<()> {
+        *out = self.read(ops)?;
+        Ok(())
+    }
     /// Writes a batch in the given order. Values were already checked against the operands.
     fn write(&mut self, items: &[(Operand, Value)]) -> Result<()>;
     /// Number of requests sent on the wire since the device was opened (0 in-process).

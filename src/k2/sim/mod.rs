@@ -668,13 +668,17 @@ impl Device for K2Sim {
     }
 
     fn read(&mut self, ops: &[Operand]) -> Result<Vec<Value>> {
+        let mut out = Vec::with_capacity(ops.len());
+        self.read_into(ops, &mut out)?;
+        Ok(out)
+    }
+
+    fn read_into(&mut self, ops: &[Operand], out: &mut Vec<Value>) -> Result<()> {
         self.advance();
         self.injected_fault(ops.iter().map(|o| o.key))?;
-        let mut out = Vec::with_capacity(ops.len());
-        for o in ops {
-            out.push(o.dtype.decode(self.mem.read_key(o.key)));
-        }
-        Ok(out)
+        out.clear();
+        out.extend(ops.iter().map(|o| o.dtype.decode(self.mem.read_key(o.key))));
+        Ok(())
     }
 
     fn write(&mut self, items: &[(Operand, Value)]) -> Result<()> {
@@ -852,6 +856,27 @@ mod tests {
     fn get(s: &mut K2Sim, text: &str) -> Value {
         let op = s.space().parse(text).unwrap()[0];
         s.read(&[op]).unwrap()[0]
+    }
+
+    #[test]
+    fn read_into_reads_what_read_reads_into_the_same_buffer() {
+        let (mut s, clock) = sim();
+        let ops: Vec<Operand> = ["VW100", "SMB0", "SMD4", "Q0.0", "VD200"]
+            .iter()
+            .map(|t| s.space().parse(t).unwrap()[0])
+            .collect();
+        let v100 = s.space().parse("VW100").unwrap()[0];
+        s.write(&[(v100, Value::Int(1234))]).unwrap();
+        let mut buf = vec![Value::Int(99); 20];
+        let capacity = buf.capacity();
+        for _ in 0..3 {
+            clock.step(std::time::Duration::from_millis(1500));
+            s.read_into(&ops, &mut buf).unwrap();
+            let want = s.read(&ops).unwrap();
+            assert_eq!(buf, want, "the same values, and only them");
+            assert_eq!(buf.capacity(), capacity, "the buffer is reused");
+        }
+        assert_eq!(buf[0], Value::Int(1234));
     }
 
     #[test]

@@ -156,7 +156,7 @@ pub struct Drive {
 
 impl Drive {
     pub fn new(id: u8, t: f64) -> Drive {
-        let mut values = HashMap::new();
+        let mut values = HashMap::with_capacity(objects::OBJECTS.len() + 1);
         for o in objects::OBJECTS {
             values.insert((o.index, o.sub), 0);
         }
