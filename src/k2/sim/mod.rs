@@ -861,10 +861,8 @@ mod tests {
     #[test]
     fn read_into_reads_what_read_reads_into_the_same_buffer() {
         let (mut s, clock) = sim();
-        let ops: Vec<Operand> = ["VW100", "SMB0", "SMD4", "Q0.0", "VD200"]
-            .iter()
-            .map(|t| s.space().parse(t).unwrap()[0])
-            .collect();
+        let ops: Vec<Operand> =
+            ["VW100", "SMB0", "SMD4", "Q0.0", "VD200"].iter().map(|t| s.space().parse(t).unwrap()[0]).collect();
         let v100 = s.space().parse("VW100").unwrap()[0];
         s.write(&[(v100, Value::Int(1234))]).unwrap();
         let mut buf = vec![Value::Int(99); 20];
