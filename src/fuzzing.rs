@@ -20,7 +20,7 @@ pub type Target = fn(&[u8]);
 
 /// Every target: name (the directory under `fuzz/corpus/` and `fuzz/regressions/`, and the
 /// cargo-fuzz target) and entry point.
-pub const TARGETS: &[(&str, Target)] = &[
+pub static TARGETS: &[(&str, Target)] = &[
     ("operand", operand),
     ("literal", literal),
     ("lexer", lexer),

@@ -62,7 +62,7 @@ pub struct Session {
 
 /// URL schemes with what they open, for completion and hints. Keep in step with [`open_url`]
 /// (a test checks that every scheme listed here is one `open_url` knows).
-pub const SCHEMES: &[(&str, &str)] = &[
+pub static SCHEMES: &[(&str, &str)] = &[
     ("sim:", "in-process K2 simulator: sim:MODEL"),
     ("kinco:", "Kinco servo drive on a serial port: kinco:/dev/ttyUSB0?id=1&baud=38400"),
     ("sim-servo:", "in-process Kinco servo simulator: sim-servo:?id=1"),

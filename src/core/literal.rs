@@ -96,7 +96,7 @@ fn squeeze_hash_spaces(s: &str) -> String {
 }
 
 /// Type prefixes: `B#`, `W#`, `DW#` are bit patterns; the others are typed numbers.
-const TYPE_PREFIXES: &[(&str, DataType)] = &[
+static TYPE_PREFIXES: &[(&str, DataType)] = &[
     ("DW", DataType::DWord),
     ("DWORD", DataType::DWord),
     ("W", DataType::Word),

@@ -28,7 +28,7 @@ pub struct Model {
 }
 
 /// Every model family plcsh knows.
-pub const MODELS: &[Model] = &[
+pub static MODELS: &[Model] = &[
     Model {
         name: "FX1S",
         aliases: &[],

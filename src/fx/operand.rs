@@ -93,7 +93,7 @@ const fn pm(byte: u16, force: Option<u16>, count: u16, special: Option<(u16, Opt
 /// 0x0A00 (C200+ 32-bit at 0x0C00, 4 bytes each), D8000 0x0E00, D 0x1000 (seed: 0x1000 + 2·n).
 /// Ordinary ranges of this classic table (HslCommunication `MelsecFxSerial` remarks): D0–D511,
 /// M0–M1023, X0–X177, Y0–Y177, S0–S999, T/C 0–255, plus M8000–M8255 and D8000–D8255.
-pub const AREAS: [AreaSpec; 11] = [
+pub static AREAS: [AreaSpec; 11] = [
     AreaSpec {
         area: Area::X,
         name: "X",
@@ -219,7 +219,7 @@ pub const AREAS: [AreaSpec; 11] = [
 
 /// Special devices with their meaning (FX programming manual, special device lists; the ones
 /// every FX and clone has). `help`, hints and completion read this table.
-pub const SPECIALS: &[(Area, u16, &str)] = &[
+pub static SPECIALS: &[(Area, u16, &str)] = &[
     (Area::M, 8000, "RUN monitor (on while the PLC runs)"),
     (Area::M, 8001, "RUN monitor, inverted (off while the PLC runs)"),
     (Area::M, 8002, "initial pulse (on for the first scan after RUN)"),

@@ -142,7 +142,7 @@ const D_K205EA: &[Discrepancy] = &[Discrepancy {
 }];
 
 /// Every catalogued model (§1.2).
-pub const MODELS: &[Model] = &[
+pub static MODELS: &[Model] = &[
     Model {
         name: "K205-16DT",
         cpu: "CPU205",

@@ -109,7 +109,7 @@ pub struct Region {
 }
 
 /// The K2 Modbus map (manual §3.2.1, k2.md §3). Index into this table = region id.
-pub const REGIONS: &[Region] = &[
+pub static REGIONS: &[Region] = &[
     Region { table: Table::Coils, area: Area::Q, base: 0 },
     Region { table: Table::Coils, area: Area::M, base: 320 },
     Region { table: Table::DiscreteInputs, area: Area::I, base: 0 },

@@ -30,7 +30,7 @@ pub struct PtoRegs {
 /// PTO0 (Q0.0), PTO1 (Q0.1), PTO2 (Q0.4), PTO3 (Q0.5, K209M only).
 /// The manual's text also names SMW268 for PTO2's profile start; its table says SMW218,
 /// which we use (SMW268 would collide with nothing else, but the table is authoritative).
-pub const PTO_REGS: [PtoRegs; 4] = [
+pub static PTO_REGS: [PtoRegs; 4] = [
     PtoRegs {
         channel: 0,
         control: 67,
@@ -105,7 +105,7 @@ pub struct HscRegs {
 
 /// HSC0–HSC3. The manual prints SM57.3 for HSC3's direction bit; by the control-byte
 /// table it is SM127.3, which we use.
-pub const HSC_REGS: [HscRegs; 4] = [
+pub static HSC_REGS: [HscRegs; 4] = [
     HscRegs {
         channel: 0,
         control: 37,
@@ -201,7 +201,7 @@ impl SmName {
 }
 
 /// The HSC operating modes per channel and their inputs (§3.3.1).
-pub const HSC_MODES: &[(u8, u8, &str)] = &[
+pub static HSC_MODES: &[(u8, u8, &str)] = &[
     (0, 0, "count I0.1, direction by SM37.3"),
     (0, 1, "count I0.1, reset I0.0, direction by SM37.3"),
     (0, 2, "count I0.1, reset I0.0, start I0.5, direction by SM37.3"),
@@ -277,7 +277,7 @@ const fn mi(channel: u8, mode: u8, kind: HscKind, count: u8, pins: [Option<u8>; 
 /// The same modes as [`HSC_MODES`], structured for the simulator (§3.3.1 tables; the
 /// unit test below keeps the two in step). HSC0 mode 6: up I0.0, down I0.1; HSC1 mode 6:
 /// up I0.2, down I0.3 (the manual's columns "Счёт вверх"/"Счёт вниз").
-pub const HSC_MODE_INPUTS: &[HscModeInputs] = {
+pub static HSC_MODE_INPUTS: &[HscModeInputs] = {
     use HscKind::*;
     &[
         mi(0, 0, InternalDir, 1, [None, None, None, None]),

@@ -99,7 +99,7 @@ const JOG: &[Opt] = &[Opt { key: "rpm", to: "", unit: "rpm", spaced: true }];
 
 /// Every device method that runs a shell command: the K2 helpers of issue 4, the servo
 /// helpers of issue 6, the simulator's input signals.
-pub const BRIDGE: &[Bridge] = &[
+pub static BRIDGE: &[Bridge] = &[
     // Any device.
     row("read", "", "read"),
     row("help", "", "help"),

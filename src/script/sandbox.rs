@@ -11,7 +11,7 @@ use mlua::{Lua, MultiValue, Table, Value};
 use std::path::Path;
 
 /// What a sandboxed run refuses, with the reason shown to the student.
-const REFUSED: &[(&str, &str, &str)] = &[
+static REFUSED: &[(&str, &str, &str)] = &[
     ("os", "execute", "runs a program"),
     ("os", "remove", "deletes a file"),
     ("os", "rename", "renames a file"),

@@ -91,7 +91,7 @@ const fn o(
 /// client" a public Python RS232 driver; "FD5P §10" the public FD5P manual's RS232 chapter;
 /// "DS402" the CiA 402 profile. "uncertain" marks a meaning no primary source confirms.
 #[rustfmt::skip]
-pub const OBJECTS: &[Object] = &[
+pub static OBJECTS: &[Object] = &[
     o("controlword", 0x6040, 0, U16, RW, Unit::Bits, "DS402 controlword: 0x06 shutdown, 0x07 switch on, 0x0F enable operation, bit 4 new set-point, bit 5 change set immediately, bit 6 relative, bit 7 fault reset, bit 8 halt, bit 12 Kinco start on target write (0x103F)", "seed §3, notes, C# client, DS402"),
     o("statusword", 0x6041, 0, U16, RO, Unit::Bits, "DS402 statusword: state bits 0-6, bit 10 target reached, bit 11 internal limit, bit 12 set-point ack/homing attained, bit 13 following/homing error, bit 15 Kinco home found", "seed §2-3, notes, DS402"),
     o("error_code", 0x603F, 0, U16, RO, Unit::None, "last error code (DS402; 0 = no fault)", "DS402"),

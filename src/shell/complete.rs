@@ -58,11 +58,11 @@ pub struct Hint {
 
 /// Commands whose argument is a file (`run FILE`, `eeprom dump FILE`): (command, sub-command or "").
 /// Options named `to=`/`file=` complete paths for every command.
-pub const FILE_ARGS: &[(&str, &str)] =
+pub static FILE_ARGS: &[(&str, &str)] =
     &[("run", ""), ("source", ""), ("eeprom", "dump"), ("eeprom", "restore"), ("eeprom", "load"), ("eeprom", "save")];
 
 /// Option keys commands accept, completed as `key=`.
-pub const OPTION_KEYS: &[(&str, &[&str])] =
+pub static OPTION_KEYS: &[(&str, &[&str])] =
     &[("watch", &["every=", "count="]), ("trace", &["every=", "for=", "to="]), ("plot", &["to=", "width=", "height="])];
 
 /// Option keys whose value is a path.

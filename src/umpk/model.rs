@@ -30,7 +30,7 @@ pub struct Model {
 }
 
 /// Both models (Table 1; §3.3 for the UMPK8's inputs).
-pub const MODELS: &[Model] = &[
+pub static MODELS: &[Model] = &[
     Model {
         name: "UMPK8",
         code: 0x08,

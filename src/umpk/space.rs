@@ -23,7 +23,7 @@ pub struct Area {
 }
 
 /// Every area, in the order the monitor packet carries them (Table 7).
-pub const AREAS: &[Area] = &[
+pub static AREAS: &[Area] = &[
     Area {
         letter: 'I',
         meaning: "digital input",

@@ -60,7 +60,7 @@ enum Task {
 }
 
 /// Default values at power-up, by object name (everything else starts at 0).
-const DEFAULTS: &[(&str, i64)] = &[
+static DEFAULTS: &[(&str, i64)] = &[
     ("operating_mode", 1),
     ("profile_velocity", 273_067),       // 100 rpm at R = 10000
     ("profile_acceleration", 16_384),    // 100 rps/s

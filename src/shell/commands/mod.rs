@@ -41,7 +41,7 @@ pub struct CommandSpec {
 }
 
 /// Every command, in the order `help` lists them.
-pub const COMMANDS: &[CommandSpec] = &[
+pub static COMMANDS: &[CommandSpec] = &[
     io::GET,
     io::SET,
     io::READ,

@@ -15,7 +15,7 @@ pub struct Reference {
 }
 
 /// Every reference program.
-pub const REFERENCES: &[Reference] = &[Reference {
+pub static REFERENCES: &[Reference] = &[Reference {
     name: "lab1",
     description: "start/stop latch I0/I1 → Q0 (marker M0); on-delay T0 2.0 s (group 1, 20 × 0.1 s) after Q0 → Q1; \
                   counter C0 divides I2 by 4 → Q2 (pulse as long as the input pulse), reset by stop I1",
