@@ -16,13 +16,8 @@ command -v valgrind >/dev/null || { echo "bench/link-order.sh needs valgrind (ap
 cargo build --release --bin plcsh
 cargo build-static
 exe=target/x86_64-unknown-linux-gnu/release/plcsh
-work=$(mktemp -d /tmp/plcsh-order.XXXXXX)
-target/release/plcsh --state none sim serve --tcp 0 --model K205-16DT >"$work/ready" 2>/dev/null &
-server=$!
-trap 'kill $server 2>/dev/null; wait $server 2>/dev/null; rm -rf "$work"' EXIT
-for _ in $(seq 1 200); do [ -s "$work/ready" ] && break; sleep 0.05; done
-addr=$(sed -n 's/.*"tcp":"\([0-9.]*:[0-9]*\)".*/\1/p' "$work/ready")
-[ -n "$addr" ] || { echo "sim serve did not get ready" >&2; exit 1; }
+. bench/serve-sim.sh
+serve_sim target/release/plcsh
 run() {
     local out=$1
     shift

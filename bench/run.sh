@@ -48,10 +48,13 @@ done
 cargo build --release --bin plcsh --bin bench_modbus
 # plcsh as installed (`cargo install-static`, README "Install"): the server and one-shot figures
 # are of this build; the one-shot table shows the default dynamically linked one beside it.
-static_plcsh=()
+# Both run from copies, as `cargo install` puts them on the PATH (bench/oneshot.sh says why).
+cp target/release/plcsh target/bench/plcsh-dynamic
+plcsh_builds=(--plcsh-dynamic target/bench/plcsh-dynamic)
 if [ "$(uname -m)" = x86_64 ]; then
     cargo build-static
-    static_plcsh=(--plcsh target/x86_64-unknown-linux-gnu/release/plcsh)
+    cp target/x86_64-unknown-linux-gnu/release/plcsh target/bench/plcsh-static
+    plcsh_builds+=(--plcsh target/bench/plcsh-static)
 fi
 case $mode in
     callgrind) exec bench/callgrind.sh --no-build ${args[@]+"${args[@]}"} ;;
@@ -64,4 +67,4 @@ if [ -z "$conditions" ]; then
     conditions="not given; busiest processes at the start: $(ps -eo pcpu=,ni=,comm= --sort=-pcpu | head -3 | awk '{printf "%s%s (%s%% CPU, nice %s)", (NR>1?", ":""), $3, $1, $2}')"
 fi
 export PLCSH_BENCH_MACHINE PLCSH_BENCH_COMMIT PLCSH_BENCH_CONDITIONS="$conditions"
-exec target/release/bench_modbus --peers target/bench --py bench/py ${static_plcsh[@]+"${static_plcsh[@]}"} ${args[@]+"${args[@]}"}
+exec target/release/bench_modbus --peers target/bench --py bench/py ${plcsh_builds[@]+"${plcsh_builds[@]}"} ${args[@]+"${args[@]}"}

@@ -7,11 +7,12 @@
 //! Every loop is bounded (a count and a time), one request is in flight, and every address is
 //! on 127.0.0.1 or a pseudo-terminal. Servers are waited for through their readiness lines.
 //!
-//! Usage: `bench_modbus [--seconds S] [--count N] [--runs R] [--peers DIR] [--py DIR] [--plcsh EXE]`
-//! (`--peers`: the built C programs, default `target/bench`; `--py`: `bench/py`; `--plcsh`: the
-//! plcsh measured as a server and one-shot, default the one beside this program —
-//! `bench/run.sh` gives the static build, `cargo build-static`, and the one-shot table shows
-//! the default dynamically linked build beside it).
+//! Usage: `bench_modbus [--seconds S] [--count N] [--runs R] [--peers DIR] [--py DIR] [--plcsh EXE]
+//! [--plcsh-dynamic EXE]` (`--peers`: the built C programs, default `target/bench`; `--py`:
+//! `bench/py`; `--plcsh`: the plcsh measured as a server and one-shot, default the one beside
+//! this program; `--plcsh-dynamic`: the default dynamically linked build, shown beside it in the
+//! one-shot table, default also the one beside this program. `bench/run.sh` gives copies of the
+//! static build, `cargo build-static`, and of the default build).
 //!
 //! `bench_modbus transactions URL REGS N` reads REGS words from VW0 N times after one warm-up
 //! read, with no timing: `bench/callgrind.sh` runs it under callgrind to count the driver's
@@ -335,9 +336,10 @@ fn main() {
             "--peers" => o.peers = v.into(),
             "--py" => o.py = v.into(),
             "--plcsh" => o.plcsh = v.into(),
+            "--plcsh-dynamic" => o.plcsh_beside = v.into(),
             _ => {
                 eprintln!(
-                    "usage: bench_modbus [--seconds S] [--count N] [--rounds N] [--runs R] [--peers DIR] [--py DIR] [--plcsh EXE]"
+                    "usage: bench_modbus [--seconds S] [--count N] [--rounds N] [--runs R] [--peers DIR] [--py DIR] [--plcsh EXE] [--plcsh-dynamic EXE]"
                 );
                 std::process::exit(2);
             }
