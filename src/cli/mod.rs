@@ -267,9 +267,9 @@ pub fn split_script_args(argv: Vec<std::ffi::OsString>) -> (Vec<std::ffi::OsStri
 /// The parse of a command line without a subcommand (`plcsh -c '…' -d URL`, `plcsh --json`):
 /// the top-level options alone, without building the subcommands' parsers (most of clap's
 /// start-up: their arguments, the global options copied into each, and their stack frames;
-/// BENCHMARKS.md, "One-shot start-up"). `None` sends the line to the full parser: a word that
-/// may be a subcommand, help or version, or anything this parser refuses, so that help and
-/// every error message come from one place.
+/// BENCHMARKS.md, "One-shot start-up, second round"). `None` sends the line to the full
+/// parser: a word that may be a subcommand, help or version, or anything this parser refuses,
+/// so that help and every error message come from one place.
 fn parse_one_shot(argv: &[std::ffi::OsString]) -> Option<Cli> {
     use clap::{Args, FromArgMatches};
     let mut words = argv.iter().skip(1).map(|a| a.to_string_lossy());
