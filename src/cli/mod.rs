@@ -459,6 +459,20 @@ mod tests {
     }
 
     #[test]
+    fn every_top_level_option_with_a_value_is_known_to_the_scans() {
+        // `split_script_args` and `parse_one_shot` skip an option's value by this list; an
+        // option missing from it would make its value look like a subcommand or a script.
+        use clap::CommandFactory;
+        for arg in Cli::command().get_arguments().filter(|a| a.get_action().takes_values()) {
+            let names =
+                arg.get_long().map(|l| format!("--{l}")).into_iter().chain(arg.get_short().map(|s| format!("-{s}")));
+            for name in names {
+                assert!(VALUE_OPTIONS.contains(&name.as_str()), "{name} takes a value: add it to VALUE_OPTIONS");
+            }
+        }
+    }
+
+    #[test]
     fn device_args_with_and_without_names() {
         assert_eq!(split_device_arg("press=sim:K209EA-50DX"), ("press".into(), "sim:K209EA-50DX".into()));
         assert_eq!(split_device_arg("tcp://127.0.0.1:502?unit=1"), ("plc".into(), "tcp://127.0.0.1:502?unit=1".into()));
