@@ -66,8 +66,8 @@ struct Opts {
     peers: PathBuf,
     py: PathBuf,
     plcsh: PathBuf,
-    /// The plcsh built with this program (the default, dynamically linked build).
-    plcsh_beside: PathBuf,
+    /// The default, dynamically linked build, shown beside `plcsh` in the one-shot table.
+    plcsh_dynamic: PathBuf,
 }
 
 /// A server process, killed on drop.
@@ -324,7 +324,7 @@ fn main() {
         peers: PathBuf::from("target/bench"),
         py: PathBuf::from("bench/py"),
         plcsh: exe_dir.join("plcsh"),
-        plcsh_beside: exe_dir.join("plcsh"),
+        plcsh_dynamic: exe_dir.join("plcsh"),
     };
     while let Some(a) = args.next() {
         let v = args.next().unwrap_or_default();
@@ -336,7 +336,7 @@ fn main() {
             "--peers" => o.peers = v.into(),
             "--py" => o.py = v.into(),
             "--plcsh" => o.plcsh = v.into(),
-            "--plcsh-dynamic" => o.plcsh_beside = v.into(),
+            "--plcsh-dynamic" => o.plcsh_dynamic = v.into(),
             _ => {
                 eprintln!(
                     "usage: bench_modbus [--seconds S] [--count N] [--rounds N] [--runs R] [--peers DIR] [--py DIR] [--plcsh EXE] [--plcsh-dynamic EXE]"
@@ -520,14 +520,14 @@ fn main() {
         }),
         Box::new(|| py(&o, "client.py", &["once", "tcp", &p_tcp])),
         Box::new(|| cmd(Path::new("true"), &[])),
-        Box::new(|| cmd(&o.plcsh_beside, &["-c", "get VW0..VW18", "--device", &url])),
+        Box::new(|| cmd(&o.plcsh_dynamic, &["-c", "get VW0..VW18", "--device", &url])),
     ];
     let figs = one_shots(&o, &makers);
     println!(
         "## One-shot: process start → read 10 registers (VW0..VW18) → exit, TCP, {} runs each, interleaved\n",
         o.runs
     );
-    println!("plcsh: {}; the dynamically linked build: {}\n", o.plcsh.display(), o.plcsh_beside.display());
+    println!("plcsh: {}; the dynamically linked build: {}\n", o.plcsh.display(), o.plcsh_dynamic.display());
     print_table(
         "program",
         &[

@@ -216,49 +216,61 @@ const VALUE_OPTIONS: &[&str] = &[
     "--bench",
 ];
 
+/// What a word of the command line is, before clap sees it.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+enum Word {
+    /// An option (`-v`, `--json`, `--time`; the value of one in [`VALUE_OPTIONS`] is skipped).
+    Flag,
+    /// `--`.
+    Separator,
+    /// Anything else: a subcommand, a script, an argument.
+    Positional,
+}
+
+/// The words of `argv` after the program name, each with its index.
+fn words(argv: &[std::ffi::OsString]) -> Vec<(usize, Word)> {
+    let mut out = Vec::new();
+    let mut i = 1;
+    while i < argv.len() {
+        let a = argv[i].to_string_lossy();
+        let word = match a.as_ref() {
+            "--" => Word::Separator,
+            _ if a.starts_with('-') && a.len() > 1 => Word::Flag,
+            _ => Word::Positional,
+        };
+        out.push((i, word));
+        i += if word == Word::Flag && VALUE_OPTIONS.contains(&a.as_ref()) { 2 } else { 1 };
+    }
+    out
+}
+
 /// `plcsh [FLAGS] run [RUN FLAGS] SCRIPT ARGS…`: everything after the script belongs to the
 /// script, even words that look like plcsh's own flags (`run a.lua --time stepped` gives
 /// `--time` to the script). Returns the arguments for clap (up to the script) and the
 /// script's arguments, or `None` when the command line is not `run`.
 pub fn split_script_args(argv: Vec<std::ffi::OsString>) -> (Vec<std::ffi::OsString>, Option<Vec<String>>) {
-    let mut positionals = 0;
-    let mut i = 1;
     let mut in_run = false;
-    while i < argv.len() {
-        let a = argv[i].to_string_lossy();
-        if a == "--" {
-            i += 1;
-            if in_run && i < argv.len() {
-                break;
+    for (i, word) in words(&argv) {
+        let script = match word {
+            Word::Flag => continue,
+            Word::Separator if in_run => i + 1,
+            Word::Separator => continue,
+            Word::Positional if !in_run => {
+                if argv[i] != "run" {
+                    break;
+                }
+                in_run = true;
+                continue;
             }
-            continue;
+            Word::Positional => i,
+        };
+        if script >= argv.len() {
+            break;
         }
-        if a.starts_with('-') && a.len() > 1 {
-            if VALUE_OPTIONS.contains(&a.as_ref()) {
-                i += 1;
-            }
-            i += 1;
-            continue;
-        }
-        positionals += 1;
-        if positionals == 1 {
-            if a != "run" {
-                return (argv, None);
-            }
-            in_run = true;
-        } else if in_run {
-            // The script: what follows is its own.
-            let rest = argv[i + 1..].iter().map(|s| s.to_string_lossy().into_owned()).collect();
-            let mut head = argv;
-            head.truncate(i + 1);
-            return (head, Some(rest));
-        }
-        i += 1;
-    }
-    if in_run && i < argv.len() {
-        let rest = argv[i + 1..].iter().map(|s| s.to_string_lossy().into_owned()).collect();
+        // The script: what follows is its own.
+        let rest = argv[script + 1..].iter().map(|s| s.to_string_lossy().into_owned()).collect();
         let mut head = argv;
-        head.truncate(i + 1);
+        head.truncate(script + 1);
         return (head, Some(rest));
     }
     (argv, None)
@@ -272,15 +284,9 @@ pub fn split_script_args(argv: Vec<std::ffi::OsString>) -> (Vec<std::ffi::OsStri
 /// so that help and every error message come from one place.
 fn parse_one_shot(argv: &[std::ffi::OsString]) -> Option<Cli> {
     use clap::{Args, FromArgMatches};
-    let mut words = argv.iter().skip(1).map(|a| a.to_string_lossy());
-    while let Some(a) = words.next() {
-        let is_flag = a.starts_with('-') && a.len() > 1 && a != "--";
-        if !is_flag || ["-h", "--help", "-V", "--version"].contains(&a.as_ref()) {
-            return None;
-        }
-        if VALUE_OPTIONS.contains(&a.as_ref()) {
-            words.next();
-        }
+    let help = ["-h", "--help", "-V", "--version"];
+    if words(argv).iter().any(|&(i, w)| w != Word::Flag || help.iter().any(|h| argv[i] == *h)) {
+        return None;
     }
     let matches = Options::augment_args(clap::Command::new("plcsh")).try_get_matches_from(argv).ok()?;
     let options = Options::from_arg_matches(&matches).ok()?;
@@ -456,6 +462,23 @@ mod tests {
         for line in lines {
             assert!(parse_one_shot(&argv(line)).is_none(), "{line:?}");
         }
+    }
+
+    #[test]
+    fn a_scripts_own_arguments_start_after_the_script() {
+        let split = |line: &[&str]| {
+            let (head, rest) = split_script_args(argv(line));
+            (head.len() - 1, rest)
+        };
+        let some = |v: &[&str]| Some(v.iter().map(|s| s.to_string()).collect::<Vec<_>>());
+        assert_eq!(split(&["run", "a.lua", "--time", "stepped"]), (2, some(&["--time", "stepped"])));
+        assert_eq!(split(&["--time", "stepped", "run", "--sandbox", "a.lua", "x"]), (5, some(&["x"])));
+        assert_eq!(split(&["run", "--time", "stepped", "a.lua"]), (4, some(&[])));
+        assert_eq!(split(&["run", "--", "-odd.lua", "y"]), (3, some(&["y"])));
+        assert_eq!(split(&["--", "run", "a.lua"]), (3, some(&[])));
+        assert_eq!(split(&["run", "--"]), (2, None));
+        assert_eq!(split(&["models", "run"]), (2, None));
+        assert_eq!(split(&["-c", "run", "x"]), (3, None), "`run` is -c's value here");
     }
 
     #[test]

@@ -46,8 +46,8 @@ pub trait Device: Send {
     /// Reads a batch; values come back in the order asked.
     fn read(&mut self, ops: &[Operand]) -> Result<Vec<Value>>;
     /// Reads a batch into `out` (cleared first), reusing its allocation: for a loop that
-    /// polls the same operands again and again. Devices whose reads are in memory read
-    /// straight into it; the others go through [`Device::read`].
+    /// polls the same operands again and again. The K2 simulator reads straight into it;
+    /// other devices go through [`Device::read`].
     fn read_into(&mut self, ops: &[Operand], out: &mut Vec<Value>) -> Result<()> {
         *out = self.read(ops)?;
         Ok(())
