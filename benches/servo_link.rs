@@ -71,19 +71,15 @@ fn serve(link: &std::path::Path, extra: &[&str]) -> std::process::Child {
 }
 
 fn stop(mut child: std::process::Child) {
-    let pid = nix::unistd::Pid::from_raw(child.id() as i32);
-    let _ = nix::sys::signal::kill(pid, nix::sys::signal::Signal::SIGTERM);
+    plcsh::core::platform::terminate_child(&child);
     let _ = child.wait();
 }
 
 /// The pattern of a public C++ driver: send, then clear the input buffer at once, then read.
 /// Returns how many of `n` replies were lost to the clear.
 fn clear_after_send_losses(link: &std::path::Path, n: usize) -> usize {
-    use serialport::SerialPort;
     use std::io::{Read, Write};
-    let mut p =
-        serialport::new(link.to_str().unwrap(), 38_400).timeout(Duration::from_millis(100)).open_native().unwrap();
-    let _ = p.set_exclusive(false);
+    let mut p = serialport::new(link.to_str().unwrap(), 38_400).timeout(Duration::from_millis(100)).open().unwrap();
     let req = [0x01, 0x40, 0x41, 0x60, 0x00, 0x00, 0x00, 0x00, 0x00, 0x1E];
     let mut lost = 0;
     for _ in 0..n {

@@ -4,6 +4,9 @@
 //! servo disable …). The process then exits with 128 + the signal (130, 143, 129), as
 //! shells report a process a signal ended.
 //!
+//! On Windows, Ctrl-C, Ctrl-Break and closing the console window play the parts of SIGINT,
+//! SIGTERM and SIGHUP (`core::platform::windows`), with the same exit statuses.
+//!
 //! A second signal of the same kind while the first is being handled ends the process at
 //! once (the user means it). At an idle prompt nothing is running that could notice the
 //! flag, so a watcher thread ends the process there itself; the simulator's retained
@@ -18,20 +21,10 @@ static RECEIVED: AtomicI32 = AtomicI32::new(0);
 /// True while the shell waits for a line at the prompt (nothing to interrupt).
 static IDLE: AtomicBool = AtomicBool::new(false);
 
-const STOPPING: [i32; 3] = [signal_hook::consts::SIGINT, signal_hook::consts::SIGTERM, signal_hook::consts::SIGHUP];
-
-/// Installs the handlers for the session's interrupt flag.
+/// Installs the handlers for the session's interrupt flag (the platform's stop signals:
+/// [`crate::core::platform::install_stop_handlers`]).
 pub fn install(interrupt: &Arc<AtomicBool>) {
-    for sig in STOPPING {
-        // Order matters (signal-hook's documented pattern): the conditional shutdown sees
-        // the flag as the previous signal left it, then the flag is raised.
-        let _ = signal_hook::flag::register_conditional_shutdown(sig, 128 + sig, interrupt.clone());
-        let _ = signal_hook::flag::register(sig, interrupt.clone());
-        if sig != signal_hook::consts::SIGINT {
-            // SAFETY: the action only stores to an atomic, which is async-signal-safe.
-            let _ = unsafe { signal_hook::low_level::register(sig, move || RECEIVED.store(sig, Ordering::SeqCst)) };
-        }
-    }
+    crate::core::platform::install_stop_handlers(interrupt, &RECEIVED);
 }
 
 /// Starts the watcher that ends the process on a signal received at an idle prompt. Only a

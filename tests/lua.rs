@@ -104,7 +104,7 @@ fn ctrl_c_during_wait_until_runs_the_abort_handlers_and_exits_non_zero() {
     // Readiness: the script is about to wait.
     let first = lines.next().unwrap().unwrap();
     assert_eq!(first, "READY");
-    nix::sys::signal::kill(nix::unistd::Pid::from_raw(child.id() as i32), nix::sys::signal::Signal::SIGINT).unwrap();
+    plcsh::core::platform::interrupt_child(&child);
     let mut rest: Vec<String> = lines.map(|l| l.unwrap()).collect();
     let mut err = String::new();
     std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut err).unwrap();

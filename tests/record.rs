@@ -1,6 +1,9 @@
 //! Recording, `record show` and `replay` end to end: a second plcsh records its session with
 //! `plcsh sim serve` (Modbus TCP, RTU on a pty) and the in-process servo simulator; tshark
 //! (a decoder we did not write) reads the Modbus TCP capture.
+// Unix only: real pseudo-terminals (Windows has none; its COM ports are tested under Wine
+// in tests/windows_serial.rs).
+#![cfg(unix)]
 
 mod common;
 use common::*;

@@ -3,6 +3,9 @@
 //! specification requires on every transport, unit 0xFF is answered on TCP, a damaged RTU
 //! frame costs only itself, idle and surplus connections are closed, running out of file
 //! descriptors does not end the server, and the servo pty's link is removed on a signal.
+// Unix only: real pseudo-terminals (Windows has none; its COM ports are tested under Wine
+// in tests/windows_serial.rs).
+#![cfg(unix)]
 
 mod common;
 use common::*;

@@ -5,6 +5,9 @@
 //! controlword 0x103F, a C++ driver that clears its input buffer right after sending — plus
 //! line timing measured on the pty, faults injected through the control socket, and the
 //! diagnosis a user sees.
+// Unix only: real pseudo-terminals (Windows has none; its COM ports are tested under Wine
+// in tests/windows_serial.rs).
+#![cfg(unix)]
 
 mod common;
 use common::*;

@@ -2,6 +2,9 @@
 //! pseudo-terminal, `send-keys` types, `capture-pane` reads the screen. Shows tab completion of
 //! an SM register with its meaning, the inline hint, a `watch` that redraws in place and `plot`.
 //! Skipped (with a message) when tmux is not installed; `.ci/run` installs it.
+// Unix only: real pseudo-terminals (Windows has none; its COM ports are tested under Wine
+// in tests/windows_serial.rs).
+#![cfg(unix)]
 
 mod common;
 use std::process::Command;

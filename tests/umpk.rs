@@ -2,6 +2,9 @@
 //! pseudo-terminal (`plcsh sim serve --umpk-pty`, readiness line awaited, never a sleep
 //! before talking), reached by a raw byte client that types what a terminal program would,
 //! by plcsh's `umpk:` driver, by the shell, and by socat as a person's terminal.
+// Unix only: real pseudo-terminals (Windows has none; its COM ports are tested under Wine
+// in tests/windows_serial.rs).
+#![cfg(unix)]
 
 mod common;
 use common::*;

@@ -227,7 +227,7 @@ fn mbpoll_rate(o: &Opts, args: &[String], regs: usize) -> Option<Fig> {
     let start = Instant::now();
     std::thread::sleep(Duration::from_secs_f64(o.seconds));
     let secs = start.elapsed().as_secs_f64();
-    let _ = nix::sys::signal::kill(nix::unistd::Pid::from_raw(child.id() as i32), nix::sys::signal::Signal::SIGINT);
+    plcsh::core::platform::interrupt_child(&child);
     let _ = child.wait();
     let mut text = String::new();
     std::fs::File::open(&out).ok()?.read_to_string(&mut text).ok()?;

@@ -84,10 +84,7 @@ fn run(with_drive: bool) {
 /// CPU time this thread has used (the machine may be loaded by other work: CPU time is what
 /// the simulation itself cost).
 fn cpu_time() -> Duration {
-    let mut ts = libc::timespec { tv_sec: 0, tv_nsec: 0 };
-    // SAFETY: clock_gettime writes one timespec through a valid pointer.
-    unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut ts) };
-    Duration::new(ts.tv_sec as u64, ts.tv_nsec as u32)
+    plcsh::core::platform::thread_cpu_time()
 }
 
 fn main() {

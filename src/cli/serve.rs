@@ -28,6 +28,7 @@
 
 use super::Cli;
 use crate::core::link::async_pty::AsyncPty;
+use crate::core::link::served::ServeOn;
 use crate::core::{Clock, Error, Result};
 use crate::k2::sim::modbus_server::{self, K2Service};
 use crate::output::{self, Style};
@@ -69,8 +70,11 @@ pub struct ServeArgs {
     #[arg(long, value_name = "FILE.il")]
     pub program: Option<PathBuf>,
     /// Serve simulated Kinco servo drives on a new pseudo-terminal; LINK becomes a symlink to it.
-    #[arg(long = "servo-pty", value_name = "LINK")]
+    #[arg(long = "servo-pty", value_name = "LINK", conflicts_with = "servo_tcp")]
     pub servo_pty: Option<PathBuf>,
+    /// Serve simulated Kinco servo drives on a TCP port, as a serial device server would (kinco+tcp://ADDR).
+    #[arg(long = "servo-tcp", value_name = "ADDR")]
+    pub servo_tcp: Option<String>,
     /// Drive ids on the servo line (several drives share it).
     #[arg(long = "servo-id", value_name = "ID[,ID…]", default_value = "1")]
     pub servo_id: String,
@@ -90,11 +94,17 @@ pub struct ServeArgs {
     #[arg(long = "servo-strict")]
     pub servo_strict: bool,
     /// Serve a simulated FX PLC's programming port on a new pseudo-terminal (symlink at LINK).
-    #[arg(long = "fx-pty", value_name = "LINK")]
+    #[arg(long = "fx-pty", value_name = "LINK", conflicts_with = "fx_tcp")]
     pub fx_pty: Option<PathBuf>,
+    /// Serve the simulated FX PLC's programming port on a TCP port (fx+tcp://ADDR).
+    #[arg(long = "fx-tcp", value_name = "ADDR")]
+    pub fx_tcp: Option<String>,
     /// Serve the same FX PLC's computer link (format 1, sum check on) on another pseudo-terminal.
-    #[arg(long = "fx-link-pty", value_name = "LINK")]
+    #[arg(long = "fx-link-pty", value_name = "LINK", conflicts_with = "fx_link_tcp")]
     pub fx_link_pty: Option<PathBuf>,
+    /// Serve the same FX PLC's computer link on a TCP port (fxlink+tcp://ADDR).
+    #[arg(long = "fx-link-tcp", value_name = "ADDR")]
+    pub fx_link_tcp: Option<String>,
     /// The simulated FX PLC's model (FX1S, FX1N, FX2N).
     #[arg(long = "fx-model", value_name = "MODEL", default_value = "FX2N")]
     pub fx_model: String,
@@ -102,8 +112,11 @@ pub struct ServeArgs {
     #[arg(long = "fx-station", value_name = "N", default_value_t = 0)]
     pub fx_station: u8,
     /// Serve a simulated UMPK teaching PLC on a new pseudo-terminal; LINK becomes a symlink to it.
-    #[arg(long = "umpk-pty", value_name = "LINK")]
+    #[arg(long = "umpk-pty", value_name = "LINK", conflicts_with = "umpk_tcp")]
     pub umpk_pty: Option<PathBuf>,
+    /// Serve a simulated UMPK teaching PLC on a TCP port (umpk+tcp://ADDR).
+    #[arg(long = "umpk-tcp", value_name = "ADDR")]
+    pub umpk_tcp: Option<String>,
     /// The simulated UMPK's model (UMPK8 or UMPK16).
     #[arg(long = "umpk-model", value_name = "MODEL", default_value = "UMPK16", value_parser = crate::umpk::sim::serve::parse_model)]
     pub umpk_model: &'static crate::umpk::model::Model,
@@ -138,6 +151,15 @@ impl ServeArgs {
     fn serves_k2(&self) -> bool {
         self.tcp.is_some() || self.rtu_pty.is_some() || self.rtu_tcp.is_some()
     }
+}
+
+/// Where a serial family is served: `--X-pty LINK` or `--X-tcp ADDR`.
+fn serve_on(pty: &Option<PathBuf>, tcp: &Option<String>) -> Result<Option<ServeOn>> {
+    Ok(match (pty, tcp) {
+        (Some(l), _) => Some(ServeOn::Pty(Some(l.clone()))),
+        (None, Some(a)) => Some(ServeOn::Tcp(listen_addr(a)?)),
+        (None, None) => None,
+    })
 }
 
 /// `HOST:PORT`, or a bare port on 127.0.0.1.
@@ -263,10 +285,13 @@ async fn serve_servo(
     cleanup: &mut Cleanup,
     bench: Option<Arc<Mutex<crate::servo::sim::SimLine>>>,
 ) -> Result<()> {
-    let Some(link) = args.servo_pty.clone() else { return Ok(()) };
+    let Some(on) = serve_on(&args.servo_pty, &args.servo_tcp)? else { return Ok(()) };
     // The process may exit before the line's thread sees the stop flag: once the line is up,
     // its link and control socket are removed on the way out here too.
-    let made = [link.clone(), crate::servo::sim::serve::control_path(&link)];
+    let made: Vec<PathBuf> = match &on {
+        ServeOn::Pty(Some(link)) => vec![link.clone(), crate::servo::sim::serve::control_path(link)],
+        _ => Vec::new(),
+    };
     let ids = crate::servo::driver::parse_ids(&args.servo_id)
         .map_err(|m| Error::usage(format!("--servo-id: {m}")).hint("e.g. --servo-id 1,2"))?;
     let latency =
@@ -294,8 +319,8 @@ async fn serve_servo(
             }
         };
         let r = match bench {
-            Some(line) => crate::servo::sim::serve::serve_pty_line(Some(&link), &opts, line, &stop, on_ready),
-            None => crate::servo::sim::serve::serve_pty(Some(&link), &opts, Clock::following(), &stop, on_ready),
+            Some(line) => crate::servo::sim::serve::serve_on_line(&on, &opts, line, &stop, on_ready),
+            None => crate::servo::sim::serve::serve(&on, &opts, Clock::following(), &stop, on_ready),
         };
         if let (Err(e), Some(tx)) = (r, tx.take()) {
             let _ = tx.send(Err(e));
@@ -316,34 +341,19 @@ async fn serve_servo(
     }
 }
 
-/// Waits for Ctrl-C or SIGTERM. Both handlers are installed when this is called, before
-/// the readiness line goes out, so a signal sent right after it is not lost.
-fn until_stopped() -> std::io::Result<impl std::future::Future<Output = ()>> {
-    use tokio::signal::unix::{signal, SignalKind};
-    let mut int = signal(SignalKind::interrupt())?;
-    let mut term = signal(SignalKind::terminate())?;
-    Ok(async move {
-        tokio::select! {
-            _ = int.recv() => {},
-            _ = term.recv() => {},
-        }
-    })
-}
-
 async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
-    if !args.serves_k2()
-        && args.servo_pty.is_none()
-        && args.fx_pty.is_none()
-        && args.fx_link_pty.is_none()
-        && args.umpk_pty.is_none()
-    {
+    let servo = serve_on(&args.servo_pty, &args.servo_tcp)?;
+    let fx = (serve_on(&args.fx_pty, &args.fx_tcp)?, serve_on(&args.fx_link_pty, &args.fx_link_tcp)?);
+    let umpk = serve_on(&args.umpk_pty, &args.umpk_tcp)?;
+    if !args.serves_k2() && servo.is_none() && fx.0.is_none() && fx.1.is_none() && umpk.is_none() {
         return Err(Error::usage("sim serve needs at least one transport")
-            .hint("e.g. plcsh sim serve --tcp 127.0.0.1:5020 --rtu-pty /tmp/k2 --rtu-tcp 0 --servo-pty /tmp/kinco"));
+            .hint("e.g. plcsh sim serve --tcp 127.0.0.1:5020 --rtu-tcp 0 --servo-tcp 0 (on Unix also --rtu-pty /tmp/k2 --servo-pty /tmp/kinco)"));
     }
     if args.agent.is_some() && !args.serves_k2() {
         return Err(Error::usage("--agent runs in the served K2: give --tcp, --rtu-pty or --rtu-tcp too"));
     }
-    let stopped = until_stopped().map_err(|e| Error::io("cannot install signal handlers").cause(e))?;
+    let stopped =
+        crate::core::platform::stop_signal().map_err(|e| Error::io("cannot install signal handlers").cause(e))?;
     let clock = match cli.time {
         super::TimeMode::Wall => Clock::following(),
         super::TimeMode::Stepped => Clock::stepped(),
@@ -368,14 +378,12 @@ async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
     let servo_stop = Arc::new(AtomicBool::new(false));
     let _stop_servo = StopOnDrop(servo_stop.clone());
     serve_servo(args, &servo_stop, &mut ready, &mut cleanup, line).await?;
-    let fx = (args.fx_pty.clone(), args.fx_link_pty.clone());
-    ready.extend(
-        crate::fx::sim::serve_ptys(fx.0.clone(), fx.1.clone(), &args.fx_model, args.fx_station, &servo_stop).await?,
-    );
-    cleanup.links.extend(fx.0.into_iter().chain(fx.1));
-    if let Some(link) = &args.umpk_pty {
+    ready.extend(crate::fx::sim::serve_ports(fx.0, fx.1, &args.fx_model, args.fx_station, &servo_stop).await?);
+    cleanup.links.extend(args.fx_pty.iter().chain(&args.fx_link_pty).cloned());
+    if let Some(on) = umpk {
+        cleanup.links.extend(args.umpk_pty.iter().cloned());
         let u = crate::umpk::sim::serve::Options {
-            link: link.clone(),
+            on,
             model: args.umpk_model,
             layout: args.umpk_status_bits,
             flash_fail: args.umpk_flash_fail.map(usize::from),

@@ -7,6 +7,7 @@ pub mod error;
 pub mod link;
 pub mod literal;
 pub mod operand;
+pub mod platform;
 pub mod signal;
 pub mod text;
 pub mod trace;

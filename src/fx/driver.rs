@@ -30,11 +30,12 @@ use super::operand::{Area, FxOperand, Width, CN32_FIRST};
 use super::port::{self, Request, ACK, ENQ, NAK};
 use super::sim::{LinkServer, Plc, PortServer, Server, SimLink};
 use super::space::{FxSpace, Proto};
+use crate::core::link::line::{self as lines, SharedLine, Transport};
+use crate::core::link::serial::{Carrier, LineSettings, Parity};
 use crate::core::literal::parse_duration_us;
 use crate::core::trace::{self, Dir};
 use crate::core::url::DeviceUrl;
 use crate::core::{Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
-use crate::servo::link::{self as lines, SharedLine, Transport};
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex, OnceLock, Weak};
 use std::time::{Duration, Instant};
@@ -696,41 +697,21 @@ fn finish(mut d: Driver, u: &DeviceUrl) -> Result<Box<dyn Device>> {
     Ok(Box::new(d))
 }
 
-/// Opens a serial port with the given character format.
-fn open_serial(path: &str, baud: u32, bits: u8, parity: char, stop: u8) -> Result<Box<dyn Transport>> {
-    let port = serialport::new(path, baud)
-        .data_bits(if bits == 8 { serialport::DataBits::Eight } else { serialport::DataBits::Seven })
-        .parity(match parity {
-            'o' => serialport::Parity::Odd,
-            'n' => serialport::Parity::None,
-            _ => serialport::Parity::Even,
-        })
-        .stop_bits(if stop == 2 { serialport::StopBits::Two } else { serialport::StopBits::One })
-        .flow_control(serialport::FlowControl::None)
-        .timeout(Duration::from_millis(100))
-        .open_native()
-        .map_err(|e| {
-            Error::link(format!("cannot open serial port {path}"))
-                .cause(e)
-                .hint("check the path (ls /dev/ttyUSB* /dev/ttyS*), that your user may open it (group dialout) and that no other program holds it")
-        })?;
-    Ok(Box::new(lines::Serial(port)))
-}
-
 /// Opens `fx:PORT?baud=9600&model=FX2N&timeout=500ms&retries=3`: the programming port, 7E1.
 pub fn open_port(u: &DeviceUrl) -> Result<Box<dyn Device>> {
     u.expect_params(&["baud", "model", "timeout", "retries"])?;
-    if u.target.is_empty() {
-        return Err(Error::usage(format!("{} names no serial port", u.text)).hint("e.g. fx:/dev/ttyUSB0"));
-    }
+    let carrier = Carrier::from_url(u, "fx:COM6 or fx:/dev/ttyUSB0")?;
     let model = model_of(u, None)?;
     let baud = u.param_num::<u32>("baud")?.unwrap_or(9600);
-    let settings = format!("{baud} 7E1");
-    let line = lines::shared(&u.target, &settings, || open_serial(&u.target, baud, 7, 'e', 1))?;
+    if baud == 0 {
+        return Err(Error::usage(format!("`baud=0` in {}: the baud rate must be positive", u.text)));
+    }
+    let settings = LineSettings { baud, data_bits: 7, parity: Parity::Even, stop_bits: 1 };
+    let line = lines::shared_serial(&carrier, settings)?;
     let info = DeviceInfo {
         family: "fx",
         model: format!("{} (programming port)", model.name),
-        link: format!("{} ({settings})", u.target),
+        link: format!("{} ({settings})", carrier.key()),
         simulated: false,
     };
     finish(Driver::port(line, model, info), u)
@@ -741,9 +722,7 @@ pub fn open_link(u: &DeviceUrl) -> Result<Box<dyn Device>> {
     u.expect_params(&[
         "station", "pc", "wait", "baud", "bits", "parity", "stop", "sum", "format", "xy", "model", "timeout", "retries",
     ])?;
-    if u.target.is_empty() {
-        return Err(Error::usage(format!("{} names no serial port", u.text)).hint("e.g. fxlink:/dev/ttyUSB0?station=0"));
-    }
+    let carrier = Carrier::from_url(u, "fxlink:COM7?station=0 or fxlink:/dev/ttyUSB0?station=0")?;
     let model = model_of(u, None)?;
     let header = Header {
         station: hex_param(u, "station", 0, 31)?,
@@ -753,19 +732,19 @@ pub fn open_link(u: &DeviceUrl) -> Result<Box<dyn Device>> {
     let settings = link_settings(u)?;
     let baud = u.param_num::<u32>("baud")?.unwrap_or(9600);
     let bits = u.param_num::<u8>("bits")?.unwrap_or(7);
-    let parity = u.param("parity").unwrap_or("e").to_ascii_lowercase().chars().next().unwrap_or('e');
+    let parity = Parity::parse(u.param("parity").unwrap_or("e"));
     let stop = u.param_num::<u8>("stop")?.unwrap_or(1);
-    if !matches!(bits, 7 | 8) || !matches!(parity, 'e' | 'o' | 'n') || !matches!(stop, 1 | 2) {
-        return Err(Error::usage(format!("{}: bits=7|8, parity=e|o|n, stop=1|2", u.text)));
-    }
-    let line_settings = format!("{baud} {bits}{}{stop}", parity.to_ascii_uppercase());
-    let line = lines::shared(&u.target, &line_settings, || open_serial(&u.target, baud, bits, parity, stop))?;
+    let (Some(parity), true, true, true) = (parity, matches!(bits, 7 | 8), matches!(stop, 1 | 2), baud > 0) else {
+        return Err(Error::usage(format!("{}: bits=7|8, parity=e|o|n, stop=1|2, baud above 0", u.text)));
+    };
+    let line_settings = LineSettings { baud, data_bits: bits, parity, stop_bits: stop };
+    let line = lines::shared_serial(&carrier, line_settings)?;
     let info = DeviceInfo {
         family: "fx",
         model: format!("{} (computer link, station {})", model.name, header.station),
         link: format!(
             "{} ({line_settings}, format {}, sum {})",
-            u.target,
+            carrier.key(),
             if settings.format4 { 4 } else { 1 },
             if settings.sum { "on" } else { "off" }
         ),

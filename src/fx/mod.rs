@@ -4,10 +4,8 @@
 //! driver for both (`driver`), and the simulator whose two ports share one memory (`memory`,
 //! `sim`). Spec: `../shared/spec/fx-and-masterk.md` (seed 004).
 //!
-//! The byte transports (serial port, pty master, the shared-line registry) are the servo
-//! family's `servo::link` ones: they are family-neutral in substance (send bytes, receive
-//! with a timeout), so FX reuses them rather than keeping a second copy; they could move to
-//! `core::link` as they are.
+//! The byte lines (serial port, device servers, served ptys and TCP ports, the shared-line
+//! registry) are the family-neutral transport layer's, [`crate::core::link`].
 //!
 //! No family-specific shell commands or Lua methods: everything an FX user does goes through
 //! the generic `get`/`set`/`read`/`watch`/`trace` and Lua field access, so FX needs no

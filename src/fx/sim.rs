@@ -15,18 +15,18 @@
 //! [`GAP`] is dropped (`serve` calls [`Server::gap`]).
 //!
 //! They are used in-process through [`SimLink`] (`sim-fx:FX2N` runs the real driver code) and
-//! served on a pty by [`serve_pty`] (`plcsh sim serve --fx-pty LINK --fx-link-pty LINK2`).
+//! served on a pty or a TCP port by [`serve`] (`plcsh sim serve --fx-pty LINK --fx-link-pty
+//! LINK2`, or `--fx-tcp ADDR --fx-link-tcp ADDR`).
 
 use super::link::{self, code, Cmd, Dev, Header, Parsed, Reply, Settings};
 use super::memory::Memory;
 use super::operand::{Area, CN32_FIRST};
 use super::port::{self, Request, ACK, ENQ, ETX, NAK, STX};
-use crate::core::link::pty::Pty;
+use crate::core::link::line::Transport;
+use crate::core::link::served::{ServeOn, Served};
 use crate::core::Result;
-use crate::servo::link::{FdPort, Transport};
 use std::collections::VecDeque;
 use std::io;
-use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
@@ -394,7 +394,7 @@ impl Transport for SimLink {
 }
 
 /// Answers on `t` until `stop` is raised (checked at least every [`GAP`]).
-pub fn serve_line(mut t: Box<dyn Transport>, server: &mut dyn Server, plc: &Plc, stop: &AtomicBool) -> Result<()> {
+pub fn serve_line(t: &mut dyn Transport, server: &mut dyn Server, plc: &Plc, stop: &AtomicBool) -> Result<()> {
     let mut buf = [0u8; 512];
     while !stop.load(Ordering::Relaxed) {
         let n = t.recv(&mut buf, GAP)?;
@@ -412,50 +412,38 @@ pub fn serve_line(mut t: Box<dyn Transport>, server: &mut dyn Server, plc: &Plc,
     Ok(())
 }
 
-/// What a served port announces once clients may connect.
-#[derive(Clone, Debug, serde::Serialize)]
-pub struct Ready {
-    /// The pty slave device (`/dev/pts/N`).
-    pub path: PathBuf,
-    pub link: Option<PathBuf>,
-}
-
-/// Opens a pty, points `link` at it, calls `ready`, then serves `server` on it until `stop`.
-pub fn serve_pty(
-    link: Option<&Path>,
+/// Opens the endpoint, calls `ready` with its fields for the readiness line, then serves
+/// `server` on it until `stop`.
+pub fn serve(
+    on: &ServeOn,
     mut server: Box<dyn Server>,
     plc: Plc,
     stop: &AtomicBool,
-    ready: impl FnOnce(&Ready),
+    ready: impl FnOnce(serde_json::Value),
 ) -> Result<()> {
-    let pty = Pty::open()?;
-    if let Some(l) = link {
-        pty.link(l)?;
-    }
-    let Pty { master, slave, path } = pty;
-    ready(&Ready { path, link: link.map(Path::to_path_buf) });
-    let r = serve_line(Box::new(FdPort(master)), server.as_mut(), &plc, stop);
-    drop(slave);
-    if let Some(l) = link {
-        let _ = std::fs::remove_file(l);
-    }
-    r
+    let mut served = Served::open(on)?;
+    ready(match served.tcp {
+        Some(a) => serde_json::json!(a.to_string()),
+        None => serde_json::json!({"path": served.pty, "link": served.link}),
+    });
+    serve_line(served.line.as_mut(), server.as_mut(), &plc, stop)
 }
 
-/// What `plcsh sim serve --fx-pty LINK --fx-link-pty LINK2` serves: one simulated PLC of
-/// `model`, its programming port and/or its computer link (station `station`, format 1, sum
-/// check on), each on its own pty served from a thread. Returns once both are open, with
-/// their fields for the readiness line (`fx_model`, `fx_pty`, `fx_link_pty`, `fx_station`).
-pub async fn serve_ptys(
-    port_link: Option<PathBuf>,
-    link_link: Option<PathBuf>,
+/// What `plcsh sim serve --fx-pty LINK --fx-link-pty LINK2` (or `--fx-tcp ADDR
+/// --fx-link-tcp ADDR`) serves: one simulated PLC of `model`, its programming port and/or
+/// its computer link (station `station`, format 1, sum check on), each on its own endpoint
+/// served from a thread. Returns once both are open, with their fields for the readiness
+/// line (`fx_model`, `fx_pty` or `fx_tcp`, `fx_link_pty` or `fx_link_tcp`, `fx_station`).
+pub async fn serve_ports(
+    port_on: Option<ServeOn>,
+    link_on: Option<ServeOn>,
     model: &str,
     station: u8,
     stop: &Arc<AtomicBool>,
 ) -> Result<serde_json::Map<String, serde_json::Value>> {
     use serde_json::json;
     let mut ready = serde_json::Map::new();
-    if port_link.is_none() && link_link.is_none() {
+    if port_on.is_none() && link_on.is_none() {
         return Ok(ready);
     }
     let m = super::model::Model::find(model).ok_or_else(|| {
@@ -467,19 +455,20 @@ pub async fn serve_ptys(
     }
     let plc: Plc = Arc::new(Mutex::new(Memory::new(m)));
     ready.insert("fx_model".into(), json!(m.name));
-    let servers: [(Option<PathBuf>, &str, Box<dyn Server>); 2] = [
-        (port_link, "fx_pty", Box::new(PortServer::default())),
-        (link_link, "fx_link_pty", Box::new(LinkServer::new(station, Settings::default()))),
+    let servers: [(Option<ServeOn>, &str, Box<dyn Server>); 2] = [
+        (port_on, "fx", Box::new(PortServer::default())),
+        (link_on, "fx_link", Box::new(LinkServer::new(station, Settings::default()))),
     ];
-    for (link, key, server) in servers {
-        let Some(link) = link else { continue };
-        let (tx, rx) = tokio::sync::oneshot::channel::<Result<Ready>>();
+    for (on, key, server) in servers {
+        let Some(on) = on else { continue };
+        let key = format!("{key}_{}", if matches!(on, ServeOn::Tcp(_)) { "tcp" } else { "pty" });
+        let (tx, rx) = tokio::sync::oneshot::channel::<Result<serde_json::Value>>();
         let (plc, stop) = (plc.clone(), stop.clone());
         std::thread::spawn(move || {
             let mut tx = Some(tx);
-            let r = serve_pty(Some(&link), server, plc, &stop, |r| {
+            let r = serve(&on, server, plc, &stop, |r| {
                 if let Some(tx) = tx.take() {
-                    let _ = tx.send(Ok(r.clone()));
+                    let _ = tx.send(Ok(r));
                 }
             });
             if let (Err(e), Some(tx)) = (r, tx.take()) {
@@ -488,12 +477,12 @@ pub async fn serve_ptys(
         });
         match rx.await {
             Ok(Ok(r)) => {
-                ready.insert(key.into(), json!({"path": r.path, "link": r.link}));
+                ready.insert(key.clone(), r);
             }
             Ok(Err(e)) => return Err(e),
             Err(_) => return Err(crate::core::Error::io("the FX port stopped before it was ready")),
         }
-        if key == "fx_link_pty" {
+        if key.starts_with("fx_link") {
             ready.insert("fx_station".into(), json!(station));
         }
     }

@@ -32,7 +32,6 @@
 //! a conversion per register.
 
 mod client;
-mod port;
 
 pub use client::fuzz_replies;
 mod sm;
@@ -44,11 +43,12 @@ use super::memory::Memory;
 use super::modbus_map::{self, DataMut, Span, WordOrder};
 use super::operand::{K2Operand, Width};
 use super::space::K2Space;
+use crate::core::link::port::{self as port, AsyncPort, Port};
+use crate::core::link::serial::{Carrier, LineSettings, Parity};
 use crate::core::trace::Proto;
 use crate::core::url::DeviceUrl;
 use crate::core::{Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
 use client::ModbusClient;
-use port::{AsyncPort, FdPort};
 use std::collections::HashMap;
 use std::time::Duration;
 use tokio_modbus::{ExceptionCode, Request};
@@ -59,9 +59,11 @@ pub enum Link {
     /// Modbus TCP to `HOST:PORT`.
     Tcp { addr: String },
     /// Modbus RTU on a serial port.
-    Rtu { path: String, baud: u32, parity: serialport::Parity, stop: serialport::StopBits },
+    Rtu { path: String, line: LineSettings },
     /// Modbus RTU frames over a TCP connection (a transparent serial gateway).
     RtuOverTcp { addr: String },
+    /// Modbus RTU frames through an RFC 2217 device server, which sets the line.
+    RtuRfc2217 { addr: String, line: LineSettings },
     /// A byte stream handed over by the caller ([`K2Wire::attach`]): RTU or TCP framing.
     /// It cannot be reopened after a link failure.
     Attached { rtu: bool },
@@ -73,7 +75,8 @@ impl Link {
     /// reply (2 × 256 characters of 11 bits) take at the baud rate.
     pub fn default_timeout(&self) -> Duration {
         match self {
-            Link::Rtu { baud, .. } => Duration::from_millis(200 + 512 * 11 * 1000 / (*baud).max(1) as u64),
+            Link::Rtu { line, .. } => Duration::from_millis(200) + line.time_of(512),
+            Link::RtuRfc2217 { line, .. } => Duration::from_secs(1) + line.time_of(512),
             _ => Duration::from_secs(1),
         }
     }
@@ -91,6 +94,7 @@ impl Link {
             Link::Tcp { .. } => "check the unit id (unit=), that HOST:PORT is the PLC (a K204ET answers Modbus TCP on port 502) and that it is powered and reachable (ping)",
             Link::Rtu { .. } => "check the unit id (unit= is the PLC port's station number), the wiring (RS485 A/B, ground), the port settings (baud=, parity=, stop=) against the PLC port's, and the port path",
             Link::RtuOverTcp { .. } => "check the unit id (unit=), the gateway's address and port, and that its serial settings (baud, parity, stop bits) match the PLC port's",
+            Link::RtuRfc2217 { .. } => "check the unit id (unit=), the device server's address and port, and the line settings (baud=, parity=, stop=) against the PLC port's",
             Link::Attached { .. } => "check the unit id and what is at the other end of the stream",
         }
     }
@@ -234,31 +238,29 @@ impl K2Wire {
         let link = match url.scheme.as_str() {
             "tcp" => Link::Tcp { addr: with_port(&url.target) },
             "rtu+tcp" => Link::RtuOverTcp { addr: with_port(&url.target) },
-            "rtu" => {
+            "rtu" | "rtu+rfc2217" => {
                 known.extend(["baud", "parity", "stop"]);
-                if url.target.is_empty() {
-                    return Err(Error::usage(format!("{} names no serial port", url.text))
-                        .hint("e.g. rtu:/dev/ttyUSB0?baud=115200&parity=none&stop=1&unit=1"));
-                }
-                let parity = match url.param("parity").unwrap_or("none").to_ascii_lowercase().as_str() {
-                    "none" | "n" => serialport::Parity::None,
-                    "even" | "e" => serialport::Parity::Even,
-                    "odd" | "o" => serialport::Parity::Odd,
-                    p => {
-                        return Err(Error::usage(format!("`parity={p}` in {} is not a parity", url.text))
-                            .hint("use parity=none, parity=even or parity=odd"))
-                    }
-                };
+                let carrier =
+                    Carrier::from_url(url, "rtu:COM3?baud=19200&unit=1 or rtu:/dev/ttyUSB0?baud=19200&unit=1")?;
+                let parity = url.param("parity").unwrap_or("none");
+                let parity = Parity::parse(parity).ok_or_else(|| {
+                    Error::usage(format!("`parity={parity}` in {} is not a parity", url.text))
+                        .hint("use parity=none, parity=even or parity=odd")
+                })?;
                 let stop = match url.param("stop").unwrap_or("1") {
-                    "1" => serialport::StopBits::One,
-                    "2" => serialport::StopBits::Two,
+                    "1" => 1,
+                    "2" => 2,
                     s => return Err(Error::usage(format!("`stop={s}` in {} is not 1 or 2", url.text))),
                 };
                 let baud = url.param_num::<u32>("baud")?.unwrap_or(9600);
                 if baud == 0 {
                     return Err(Error::usage(format!("`baud=0` in {} is not a baud rate", url.text)));
                 }
-                Link::Rtu { path: url.target.clone(), baud, parity, stop }
+                let line = LineSettings { baud, data_bits: 8, parity, stop_bits: stop };
+                match carrier {
+                    Carrier::Rfc2217(addr) => Link::RtuRfc2217 { addr, line },
+                    c => Link::Rtu { path: c.key(), line },
+                }
             }
             s => return Err(Error::usage(format!("`{s}:` is not a K2 wire scheme"))),
         };
@@ -334,19 +336,25 @@ impl K2Wire {
             match link {
                 Link::Tcp { addr } | Link::RtuOverTcp { addr } => {
                     let stream = tcp_connect(addr, timeout)?;
-                    stream.set_nodelay(true).map_err(|e| Error::link("cannot set TCP_NODELAY").cause(e))?;
                     let tcp = matches!(link, Link::Tcp { .. });
                     let proto = if tcp { Proto::ModbusTcp } else { Proto::RtuOverTcp };
-                    FdPort::new(stream, &name, proto, addr)
-                        .map(|p| ModbusClient::new(Box::new(p.watch_eof(closed)), !tcp, unit))
+                    port::tcp_port(stream, &name, proto, addr)
+                        .map(|mut p| {
+                            p.watch_eof(closed);
+                            ModbusClient::new(p, !tcp, unit)
+                        })
                         .map_err(|e| Error::link(format!("cannot use the connection to {addr}")).cause(e))
                 }
                 Link::Attached { .. } => Err(Error::link("the attached stream failed and cannot be reopened by plcsh")),
-                Link::Rtu { path, baud, parity, stop } => {
-                    let port = open_serial(path, *baud, *parity, *stop)?;
-                    FdPort::new(port, &name, Proto::ModbusRtu, path)
-                        .map(|p| ModbusClient::new(Box::new(p), true, unit))
-                        .map_err(|e| Error::link(format!("cannot use the serial port {path}")).cause(e))
+                Link::Rtu { path, line } => {
+                    let p = port::serial_port(path, *line, &name, Proto::ModbusRtu)?;
+                    Ok(ModbusClient::new(p, true, unit))
+                }
+                Link::RtuRfc2217 { addr, line } => {
+                    let t = crate::core::link::rfc2217::Rfc2217::connect(addr, *line, timeout)?;
+                    let mut p = port::TransportPort::new(Box::new(t), &name, Proto::ModbusRtu, addr);
+                    p.watch_eof(closed);
+                    Ok(ModbusClient::new(Box::new(p), true, unit))
                 }
             }
         })();
@@ -509,23 +517,6 @@ impl K2Wire {
     }
 }
 
-/// Opens and configures a serial port (serialport holds it exclusively; the driver's port then
-/// carries the frames with plain reads and writes on its descriptor).
-fn open_serial(
-    path: &str,
-    baud: u32,
-    parity: serialport::Parity,
-    stop: serialport::StopBits,
-) -> Result<serialport::TTYPort> {
-    serialport::new(path, baud).parity(parity).stop_bits(stop).data_bits(serialport::DataBits::Eight).open_native().map_err(
-        |e| {
-            Error::link(format!("cannot open the serial port {path}")).cause(e).hint(
-                "check the port path (ls /dev/ttyUSB* /dev/serial/by-id; a USB adapter may be unplugged), that no other program holds it, and that you may open it (the dialout group); the next command opens it again once it is back",
-            )
-        },
-    )
-}
-
 /// `a == b`, without a branch per field (a polling loop asks this of every read).
 fn same_batch(a: &[Operand], b: &[Operand]) -> bool {
     a.len() == b.len()
@@ -536,52 +527,13 @@ fn same_batch(a: &[Operand], b: &[Operand]) -> bool {
         }) == 0
 }
 
-/// Connects to `addr` (`HOST:PORT`; every address it resolves to is tried) within `timeout`.
+/// Connects to `addr` (`HOST:PORT`) within `timeout` ([`crate::core::link::tcp::connect`]).
 fn tcp_connect(addr: &str, timeout: Duration) -> Result<std::net::TcpStream> {
-    use std::net::ToSocketAddrs;
-    let refused = |e: std::io::Error| {
-        Error::link(format!("cannot connect to {addr}")).cause(e).hint(
-            "check that HOST:PORT is the PLC or gateway (a K204ET answers Modbus TCP on port 502), that it is powered and reachable (ping), and that no firewall blocks the port",
-        )
-    };
-    let start = std::time::Instant::now();
-    // An address given as numbers needs no lookup; a host name is looked up on a thread of its
-    // own, so a name server that does not answer costs the timeout, not a hang.
-    let addrs: Vec<std::net::SocketAddr> = match addr.parse::<std::net::SocketAddr>() {
-        Ok(a) => vec![a],
-        Err(_) => {
-            let (tx, rx) = std::sync::mpsc::channel();
-            let name = addr.to_string();
-            std::thread::spawn(move || {
-                let _ = tx.send(name.to_socket_addrs().map(|a| a.collect::<Vec<_>>()));
-            });
-            match rx.recv_timeout(timeout) {
-                Ok(r) => r.map_err(refused)?,
-                Err(_) => {
-                    return Err(Error::link(format!(
-                        "cannot connect to {addr}: the name was not looked up within {}",
-                        ms(timeout)
-                    ))
-                    .hint("use the PLC's IP address, or check the name server (/etc/resolv.conf)"))
-                }
-            }
-        }
-    };
-    let mut last = None;
-    for a in addrs {
-        let left = timeout.saturating_sub(start.elapsed()).max(Duration::from_millis(1));
-        match std::net::TcpStream::connect_timeout(&a, left) {
-            Ok(s) => return Ok(s),
-            Err(e) => last = Some(e),
-        }
-    }
-    Err(match last {
-        Some(e) if e.kind() == std::io::ErrorKind::TimedOut => {
-            Error::link(format!("cannot connect to {addr}: no answer within {}", ms(timeout)))
-        }
-        Some(e) => refused(e),
-        None => refused(std::io::Error::new(std::io::ErrorKind::NotFound, "the name resolves to no address")),
-    })
+    crate::core::link::tcp::connect(
+        addr,
+        timeout,
+        "check that HOST:PORT is the PLC or gateway (a K204ET answers Modbus TCP on port 502), that it is powered and reachable (ping), and that no firewall blocks the port",
+    )
 }
 
 fn with_port(target: &str) -> String {
@@ -892,13 +844,12 @@ mod tests {
         assert_eq!(parse_timeout("250").unwrap(), Duration::from_millis(250));
         assert_eq!(parse_timeout("2s").unwrap(), Duration::from_secs(2));
         assert!(parse_timeout("0").is_err());
-        let rtu = Link::Rtu {
-            path: "/dev/null".into(),
-            baud: 9600,
-            parity: serialport::Parity::None,
-            stop: serialport::StopBits::One,
-        };
-        assert_eq!(rtu.default_timeout(), Duration::from_millis(200 + 586));
+        let rtu = Link::Rtu { path: "/dev/null".into(), line: LineSettings::n81(9600) };
+        assert_eq!(
+            rtu.default_timeout(),
+            Duration::from_millis(200) + Duration::from_micros(533_334),
+            "512 characters of 10 bits at 9600 baud"
+        );
         for (url, needle) in [
             ("tcp://127.0.0.1:1?unit=0", "unit"),
             ("tcp://127.0.0.1:1?bogus=1", "unknown parameter"),

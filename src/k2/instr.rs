@@ -313,15 +313,7 @@ pub fn host_local_now() -> RtcTime {
 
 /// Seconds east of UTC of the host's zone at Unix time `t` (0 if unknown).
 pub fn host_utc_offset(t: i64) -> i64 {
-    // SAFETY: localtime_r writes only into `tm`, which we own; `t` is a valid time_t.
-    unsafe {
-        let tt: libc::time_t = t as libc::time_t;
-        let mut tm: libc::tm = std::mem::zeroed();
-        if libc::localtime_r(&tt, &mut tm).is_null() {
-            return 0;
-        }
-        tm.tm_gmtoff as i64
-    }
+    crate::core::platform::utc_offset(t)
 }
 
 #[cfg(test)]

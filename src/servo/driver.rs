@@ -27,11 +27,12 @@
 //! when it exists), for `servo sim …`.
 
 use super::frame::{self, abort_text, decode_reply, Frame, Reply, Size, FRAME_LEN};
-use super::link::{self, SharedLine, Transport};
 use super::objects::{ObjRef, ServoSpace};
 use super::sim::{SimLine, SimLink};
 use super::units::{self, Resolution};
 use super::ServoOps;
+use crate::core::link::line::{self as link, SharedLine, Transport};
+use crate::core::link::serial::{Carrier, LineSettings};
 use crate::core::literal::parse_duration_us;
 use crate::core::trace::{self, Dir, Proto};
 use crate::core::url::DeviceUrl;
@@ -308,7 +309,7 @@ impl Driver {
     }
 
     fn sim(&self) -> Option<Arc<Mutex<SimLine>>> {
-        self.line.transport.lock().unwrap_or_else(|p| p.into_inner()).sim_line()
+        super::sim::sim_line_of(self.line.transport.lock().unwrap_or_else(|p| p.into_inner()).as_ref())
     }
 
     /// Reads the encoder resolution from 6410.03 and uses it for unit conversion.
@@ -460,29 +461,30 @@ fn finish(mut d: Driver, c: &Common) -> Result<Box<dyn Device>> {
 
 /// Opens `kinco:PORT?baud=38400&id=1&echo=0&timeout=200ms&encoder=10000`.
 /// What to check when a port disappears, and what plcsh does about it.
-const PORT_GONE: &str = "the USB adapter may be unplugged or the port's server restarted: check the cable and the adapter (ls /dev/ttyUSB* /dev/serial/by-id); the next command reopens the port once it is back";
+const PORT_GONE: &str = "the USB adapter may be unplugged or the port's server restarted: check the cable and the adapter (`plcsh ports` lists the ports present); the next command reopens the port once it is back";
 
-/// Errors that mean the port itself is gone (not a slow or silent drive). The serialport
-/// crate passes EIO (what a hung-up tty or an unplugged adapter gives) on as its text only.
+/// Errors that mean the port itself is gone (not a slow or silent drive).
 fn port_gone(e: &std::io::Error) -> bool {
-    matches!(e.raw_os_error(), Some(libc::EIO | libc::ENXIO | libc::ENODEV | libc::EBADF | libc::EPIPE))
-        || matches!(e.kind(), std::io::ErrorKind::BrokenPipe | std::io::ErrorKind::UnexpectedEof)
-        || ["I/O error", "Input/output error", "No such device"].iter().any(|t| e.to_string().contains(t))
+    crate::core::link::port_gone(e)
 }
 
+///
+/// The line may be a port (`kinco:COM4`, `kinco:/dev/ttyUSB0`), a serial device server's
+/// raw TCP port (`kinco+tcp://HOST:PORT`) or its RFC 2217 port (`kinco+rfc2217://HOST:PORT`).
 pub fn open_serial(u: &DeviceUrl) -> Result<Box<dyn Device>> {
     u.expect_params(&["id", "baud", "echo", "loop", "timeout", "encoder", "control"])?;
     let c = common(u)?;
     let baud = u.param_num::<u32>("baud")?.unwrap_or(DEFAULT_BAUD);
-    if u.target.is_empty() {
-        return Err(Error::usage(format!("{} names no serial port", u.text)).hint("e.g. kinco:/dev/ttyUSB0?id=1"));
+    if baud == 0 {
+        return Err(Error::usage(format!("`baud=0` in {}: the baud rate must be positive", u.text)));
     }
-    let settings = format!("{baud} baud 8N1{}", if c.echo { ", loop" } else { "" });
-    let line = link::shared_serial(&u.target, baud, &settings)?;
+    let carrier = Carrier::from_url(u, "kinco:COM4?id=1 or kinco:/dev/ttyUSB0?id=1")?;
+    let line = link::shared_serial(&carrier, LineSettings::n81(baud))?;
+    let settings = format!("{}{}", line.settings, if c.echo { ", loop" } else { "" });
     let info = DeviceInfo {
         family: "servo",
         model: format!("Kinco servo, id {}", c.id),
-        link: format!("{} ({settings})", u.target),
+        link: format!("{} ({settings})", carrier.key()),
         simulated: false,
     };
     let mut d = Driver::attach(line, c.id, c.echo, c.timeout, info);
@@ -535,7 +537,7 @@ pub fn open_sim(u: &DeviceUrl, clock: &Clock) -> Result<Box<dyn Device>> {
     } else {
         let settings = if c.echo { "loop" } else { "" };
         let line = link::shared(&name, settings, make)?;
-        if let Some(sim) = line.transport.lock().unwrap_or_else(|p| p.into_inner()).sim_line() {
+        if let Some(sim) = super::sim::sim_line_of(line.transport.lock().unwrap_or_else(|p| p.into_inner()).as_ref()) {
             let mut s = sim.lock().unwrap_or_else(|p| p.into_inner());
             for id in &ids {
                 s.add_drive(*id);
@@ -566,7 +568,6 @@ mod tests {
     use super::*;
     use crate::servo::objects;
     use crate::servo::sim::serve;
-    use std::os::unix::net::UnixStream;
 
     fn sim(url: &str) -> Box<dyn Device> {
         open_sim(&DeviceUrl::parse(url).unwrap(), &Clock::stepped()).unwrap()
@@ -672,15 +673,18 @@ mod tests {
     }
 
     #[test]
-    fn over_a_socket_pair_with_the_served_simulator() {
-        // The transport-generic path: the driver on one end of a socket pair, the
+    fn over_a_pipe_with_the_served_simulator() {
+        // The transport-generic path: the driver on one end of an in-process pipe, the
         // simulator's serve loop on the other.
-        let (a, b) = UnixStream::pair().unwrap();
+        let (a, b) = crate::core::link::pipe::pair();
         let clock = Clock::stepped();
         let line = Arc::new(Mutex::new(SimLine::new(&[1], clock)));
         let stop = Arc::new(std::sync::atomic::AtomicBool::new(false));
         let (l2, s2) = (line.clone(), stop.clone());
-        let server = std::thread::spawn(move || serve::serve_line(Box::new(b), &l2, &s2, "pair"));
+        let server = std::thread::spawn(move || {
+            let mut b = b;
+            serve::serve_line(&mut b, &l2, &s2, "pair")
+        });
         let info = DeviceInfo { family: "servo", model: "test".into(), link: "pair".into(), simulated: false };
         let mut d = Driver::attach(link::private("pair", Box::new(a)), 1, false, Duration::from_secs(5), info);
         let sw = ObjRef::of(objects::named("statusword"));

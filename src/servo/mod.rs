@@ -1,13 +1,12 @@
 //! Kinco servo drives, everything in one room: the 10-byte RS232 frame codec
 //! (`frame`), the object dictionary table and operand space (`objects`), engineering
-//! units (`units`), transports (`link`), the driver (`driver`), the DS402 state machine
+//! units (`units`), the driver (`driver`), the DS402 state machine
 //! and helpers (`ds402`) and the drive simulator (`sim`).
 //! Specs: `../shared/spec/kinco-servo.md`, `../shared/spec/kinco-public-notes.md`.
 
 pub mod driver;
 pub mod ds402;
 pub mod frame;
-pub mod link;
 pub mod objects;
 pub mod sim;
 pub mod units;

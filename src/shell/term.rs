@@ -4,10 +4,7 @@
 
 /// (columns, rows) of the terminal on standard output, or `None` when it is not a terminal.
 pub fn size() -> Option<(usize, usize)> {
-    // SAFETY: TIOCGWINSZ fills a `winsize` we own; a failing call leaves it zeroed.
-    let mut ws: libc::winsize = unsafe { std::mem::zeroed() };
-    let r = unsafe { libc::ioctl(libc::STDOUT_FILENO, libc::TIOCGWINSZ, &mut ws) };
-    (r == 0 && ws.ws_col > 0 && ws.ws_row > 0).then_some((usize::from(ws.ws_col), usize::from(ws.ws_row)))
+    crate::core::platform::terminal_size()
 }
 
 /// `text` cut to at most `width` characters, with `…` when something was cut.

@@ -23,8 +23,8 @@
 //! controller's own report), `status_bits=W,H,R,E,P,T` (bit numbers of the status word,
 //! default 5,4,3,2,1,0; [`codec::StatusLayout`]).
 //!
-//! The byte transports are [`crate::servo::link`]'s (serial port, fd, socket pair): they are
-//! family-neutral and should move to `core::link` when a third serial family needs them.
+//! The byte line is the transport layer's ([`crate::core::link`]): a port, a device server
+//! (`umpk+tcp://`, `umpk+rfc2217://`) or an in-process pipe.
 
 use super::codec::{
     self, parse_exchange, Command, Exchange, Info, Monitor, Progress, Reply, Shape, StatusLayout, Timing,
@@ -33,11 +33,12 @@ use super::hex::{self, Record};
 use super::model::{self, Model};
 use super::sim::{Umpk, RESET_TIME};
 use super::space::{UmpkOperand, UmpkSpace};
+use crate::core::link::line::Transport;
+use crate::core::link::serial::{Carrier, LineSettings};
 use crate::core::literal::parse_duration_us;
 use crate::core::trace::{self, Dir};
 use crate::core::url::DeviceUrl;
 use crate::core::{Clock, Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
-use crate::servo::link::{self as serial, Transport};
 use std::collections::VecDeque;
 use std::io;
 use std::sync::{Arc, Mutex};
@@ -624,23 +625,26 @@ fn options(d: &mut Driver, u: &DeviceUrl) -> Result<()> {
     Ok(())
 }
 
-/// Opens `umpk:/dev/ttyUSB0?baud=57600&timeout=500ms&model=UMPK16&status_bits=5,4,3,2,1,0`.
+/// Opens `umpk:/dev/ttyUSB0?baud=57600&timeout=500ms&model=UMPK16&status_bits=5,4,3,2,1,0`
+/// (or `umpk:COM5`, `umpk+tcp://HOST:PORT`, `umpk+rfc2217://HOST:PORT`).
 pub fn open_serial(u: &DeviceUrl) -> Result<Box<dyn Device>> {
     u.expect_params(&["baud", "timeout", "model", "status_bits"])?;
-    if u.target.is_empty() {
-        return Err(Error::usage(format!("{} names no serial port", u.text)).hint("e.g. umpk:/dev/ttyUSB0"));
-    }
+    let carrier = Carrier::from_url(u, "umpk:COM5 or umpk:/dev/ttyUSB0")?;
     let want = model_param(u, u.param("model"))?;
     let baud = u.param_num::<u32>("baud")?.unwrap_or(codec::BAUD);
-    let t = serial::open_serial(&u.target, baud)?;
+    if baud == 0 {
+        return Err(Error::usage(format!("`baud=0` in {}: the baud rate must be positive", u.text)));
+    }
+    let line = LineSettings::n81(baud);
+    let t = crate::core::link::serial::open(&carrier, line)?;
     let m = want.unwrap_or(&model::MODELS[1]);
     let info = DeviceInfo {
         family: "umpk",
         model: m.name.into(),
-        link: format!("{} ({baud} baud 8N1)", u.target),
+        link: format!("{} ({line})", carrier.key()),
         simulated: false,
     };
-    let mut d = Driver::attach(t, &u.target, m, info);
+    let mut d = Driver::attach(t, &carrier.key(), m, info);
     options(&mut d, u)?;
     d.identify(want)?;
     Ok(Box::new(d))

@@ -80,8 +80,7 @@ pub fn serve(args: &[&str]) -> Served {
 
 impl Drop for Served {
     fn drop(&mut self) {
-        let pid = nix::unistd::Pid::from_raw(self.child.id() as i32);
-        let _ = nix::sys::signal::kill(pid, nix::sys::signal::Signal::SIGTERM);
+        plcsh::core::platform::terminate_child(&self.child);
         let _ = self.child.wait();
     }
 }

@@ -1,8 +1,36 @@
-//! Transports, apart from codecs: pseudo-terminals (the simulators serve serial protocols on
-//! them), serial ports, TCP. Drivers take any byte stream, so the same driver code runs on a
-//! real port, a pty served by the simulator, or an in-memory pipe in tests.
+//! The transport layer, family-neutral: every byte that reaches a device or leaves a served
+//! simulator goes through here, apart from the codecs that give it meaning.
+//!
+//! - [`line`]: the byte line of the serial families (servo, UMPK, FX) and the registry that
+//!   shares one line among the devices on it;
+//! - [`serial`]: what carries a serial line — a port on this computer (a tty, a COM port),
+//!   a device server's raw TCP port ([`tcp`]) or its RFC 2217 port ([`rfc2217`]) — and the
+//!   list of ports present (`plcsh ports`);
+//! - [`port`]: deadline ports under the K2's Modbus client;
+//! - [`tcp`]: TCP as a line, client and served; [`pipe`]: an in-process line for tests;
+//! - [`traced`]: async streams that report their frames;
+//! - [`pty`], [`async_pty`]: pseudo-terminals simulators are served on (Unix; on Windows
+//!   they refuse and name the TCP option).
+//!
+//! Platform code lives in two folders only, [`unix`] and `windows`, which offer the same
+//! items; this file picks one. No device family contains a `cfg` for the operating system.
 
-pub mod async_pty;
-pub mod fd_stream;
-pub mod pty;
+pub mod line;
+pub mod pipe;
+pub mod port;
+pub mod rfc2217;
+pub mod serial;
+pub mod served;
+pub mod tcp;
 pub mod traced;
+
+#[cfg(unix)]
+pub mod unix;
+#[cfg(unix)]
+use unix as sys;
+#[cfg(windows)]
+pub mod windows;
+#[cfg(windows)]
+use windows as sys;
+
+pub use sys::{async_pty, local_connect, port_gone, pty, LocalListener, LocalStream};

@@ -18,19 +18,14 @@
 //! Anything else fails the request as a link error (the driver reconnects and retries).
 //! Bytes left from an earlier exchange are dropped before each request.
 
-use super::port::Port;
+use crate::core::link::port::Port;
 use crate::k2::sim::rtu_frame::crc16;
 use std::io;
 use std::time::Instant;
-use tokio::io::{AsyncRead, AsyncWrite};
 use tokio_modbus::{ExceptionCode, Request, Response};
 
 /// Longest RTU frame, and the most bytes dropped while looking for one.
 const MAX_FRAME: usize = 256;
-
-/// An async byte stream a port can carry ([`super::port::AsyncPort`]).
-pub trait Stream: AsyncRead + AsyncWrite + Send + Unpin {}
-impl<T: AsyncRead + AsyncWrite + Send + Unpin> Stream for T {}
 
 /// A Modbus client on one connection.
 pub struct ModbusClient {
@@ -331,8 +326,8 @@ fn response(req: &Request<'_>, d: &[u8]) -> io::Result<Response> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::core::link::port::AsyncPort;
     use crate::core::trace::Proto;
-    use crate::k2::driver::port::AsyncPort;
     use std::time::Duration;
     use tokio::io::{AsyncReadExt, AsyncWriteExt};
 

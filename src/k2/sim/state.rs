@@ -226,7 +226,6 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
 /// file a crashed owner left.
 pub fn lock(path: &Path) -> Result<std::sync::Arc<std::fs::File>> {
     use std::io::{Read, Seek, Write};
-    use std::os::fd::AsRawFd;
     let (dir, lock) = sibling(path, "lock");
     std::fs::create_dir_all(&dir).map_err(|e| Error::io(format!("cannot create {}", dir.display())).cause(e))?;
     let mut f = std::fs::OpenOptions::new()
@@ -236,8 +235,9 @@ pub fn lock(path: &Path) -> Result<std::sync::Arc<std::fs::File>> {
         .truncate(false)
         .open(&lock)
         .map_err(|e| Error::io(format!("cannot open {}", lock.display())).cause(e))?;
-    // SAFETY: flock on a file descriptor we own; no memory is involved.
-    if unsafe { libc::flock(f.as_raw_fd(), libc::LOCK_EX | libc::LOCK_NB) } != 0 {
+    // An advisory lock on Unix (flock), a mandatory one on Windows (LockFileEx): either way
+    // one plcsh per state file. Released when the file closes, also on kill -9.
+    if f.try_lock().is_err() {
         let mut holder = String::new();
         let _ = f.read_to_string(&mut holder);
         let holder = holder.trim();

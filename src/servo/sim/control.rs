@@ -358,7 +358,7 @@ pub fn send(path: &Path, text: &str) -> Result<(String, Json)> {
             .cause(e)
             .hint("is `plcsh sim serve --servo-pty …` still running?")
     };
-    let mut s = std::os::unix::net::UnixStream::connect(path).map_err(io)?;
+    let mut s = crate::core::link::local_connect(path).map_err(io)?;
     s.set_read_timeout(Some(Duration::from_secs(5))).map_err(io)?;
     writeln!(s, "{}", text.replace('\n', " ")).map_err(io)?;
     let mut reply = String::new();

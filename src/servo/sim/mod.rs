@@ -22,7 +22,7 @@ pub mod serve;
 pub mod wired;
 
 use super::frame::{func, Frame, FrameBuffer, FRAME_LEN};
-use super::link::Transport;
+use crate::core::link::line::Transport;
 use crate::core::Clock;
 use drive::Drive;
 use faults::LineFaults;
@@ -262,7 +262,7 @@ impl Transport for SimLink {
         Ok(())
     }
 
-    fn sim_line(&self) -> Option<Arc<Mutex<SimLine>>> {
+    fn sim_line(&self) -> Option<Arc<dyn std::any::Any + Send + Sync>> {
         Some(self.line.clone())
     }
 }
@@ -421,4 +421,9 @@ mod tests {
         link.send(&Frame::read(3, 0x6041, 0).to_bytes()).unwrap();
         assert_eq!(link.recv(&mut got, Duration::ZERO).unwrap(), 10, "echo only: no drive 3");
     }
+}
+
+/// The simulated line behind a transport, when it is one ([`Transport::sim_line`]).
+pub fn sim_line_of(t: &dyn Transport) -> Option<Arc<Mutex<SimLine>>> {
+    t.sim_line()?.downcast::<Mutex<SimLine>>().ok()
 }

@@ -1,6 +1,8 @@
-//! Serving simulated drives on a byte stream — in practice a pseudo-terminal, so any serial
-//! client (plcsh's `kinco:` driver, a terminal program, a PLC emulator) can open the slave
-//! device like a real RS232 port (`plcsh sim serve --servo-pty LINK --servo-id 1,2`).
+//! Serving simulated drives on a byte stream — a pseudo-terminal, so any serial client
+//! (plcsh's `kinco:` driver, a terminal program, a PLC emulator) can open the slave device
+//! like a real RS232 port (`plcsh sim serve --servo-pty LINK --servo-id 1,2`), or a TCP port
+//! reached as a serial device server's (`--servo-tcp ADDR`, `kinco+tcp://ADDR`; also how
+//! drives are served on Windows).
 //!
 //! Frames carry no delimiter; like a drive, the server aligns on gaps: bytes that sit
 //! incomplete for [`GAP`] are dropped (a real drive's inter-frame timeout), so one garbled
@@ -21,13 +23,13 @@
 //! as the Modbus servers' frames are.
 
 use super::{control, Pace, SimLine};
-use crate::core::link::pty::Pty;
+use crate::core::link::line::Transport;
+use crate::core::link::served::{ServeOn, Served};
+use crate::core::link::{LocalListener, LocalStream};
 use crate::core::trace::{self, Dir};
 use crate::core::{Clock, Error, Result};
 use crate::servo::frame::FrameBuffer;
-use crate::servo::link::{FdPort, Transport};
 use std::io::{BufRead, BufReader, Read, Write};
-use std::os::unix::net::UnixListener;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex};
@@ -48,7 +50,7 @@ fn sleep_until(at: Instant) {
 
 /// Answers requests on `t` until `stop` is raised (checked at least every [`GAP`]).
 /// `name` names the line in traces.
-pub fn serve_line(mut t: Box<dyn Transport>, line: &Arc<Mutex<SimLine>>, stop: &AtomicBool, name: &str) -> Result<()> {
+pub fn serve_line(t: &mut dyn Transport, line: &Arc<Mutex<SimLine>>, stop: &AtomicBool, name: &str) -> Result<()> {
     let mut fb = FrameBuffer::new();
     let mut buf = [0u8; 256];
     while !stop.load(Ordering::Relaxed) {
@@ -77,13 +79,17 @@ pub fn serve_line(mut t: Box<dyn Transport>, line: &Arc<Mutex<SimLine>>, stop: &
     Ok(())
 }
 
-/// What `serve_pty` announces once clients may connect.
+/// What `serve` announces once clients may connect.
 #[derive(Clone, Debug, serde::Serialize)]
 pub struct Ready {
-    /// The pty slave device (`/dev/pts/N`).
-    pub servo_pty: PathBuf,
+    /// The pty slave device (`/dev/pts/N`), when served on a pty.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub servo_pty: Option<PathBuf>,
     /// The symlink pointing at it, if one was asked for.
     pub link: Option<PathBuf>,
+    /// The TCP address, when served on TCP (`kinco+tcp://ADDR`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub servo_tcp: Option<String>,
     pub ids: Vec<u8>,
     pub echo: bool,
     /// The control socket (`LINK.ctl`), when there is a link.
@@ -111,15 +117,13 @@ pub fn control_path(link: &Path) -> PathBuf {
 }
 
 /// Answers control requests on `listener` until `stop` (one thread per connection).
-fn serve_control(listener: UnixListener, line: Arc<Mutex<SimLine>>, stop: Arc<AtomicBool>) {
-    let _ = listener.set_nonblocking(true);
+fn serve_control(listener: LocalListener, line: Arc<Mutex<SimLine>>, stop: Arc<AtomicBool>) {
     while !stop.load(Ordering::Relaxed) {
         match listener.accept() {
-            Ok((conn, _)) => {
+            Ok(conn) => {
                 let line = line.clone();
                 std::thread::spawn(move || {
-                    let _ = conn.set_nonblocking(false);
-                    let mut w = match conn.try_clone() {
+                    let mut w: LocalStream = match conn.try_clone() {
                         Ok(w) => w,
                         Err(_) => return,
                     };
@@ -148,32 +152,29 @@ fn serve_control(listener: UnixListener, line: Arc<Mutex<SimLine>>, stop: Arc<At
     }
 }
 
-/// Opens a pty, points `link` at it (and opens `LINK.ctl`), calls `ready`, then serves the
-/// drives on it until `stop` is raised. The symlink and the socket are removed on the way out.
-pub fn serve_pty(
-    link: Option<&Path>,
+/// Opens the endpoint (a pty with `LINK` and its control socket `LINK.ctl`, or a TCP port),
+/// calls `ready`, then serves the drives on it until `stop` is raised. The symlink and the
+/// socket are removed on the way out.
+pub fn serve(
+    on: &ServeOn,
     opts: &Options,
     clock: Clock,
     stop: &Arc<AtomicBool>,
     ready: impl FnOnce(&Ready),
 ) -> Result<()> {
-    serve_pty_line(link, opts, Arc::new(Mutex::new(SimLine::new(&opts.ids, clock))), stop, ready)
+    serve_on_line(on, opts, Arc::new(Mutex::new(SimLine::new(&opts.ids, clock))), stop, ready)
 }
 
-/// [`serve_pty`] for a line that already exists (a bench's drives, wired to its PLC); the
+/// [`serve`] for a line that already exists (a bench's drives, wired to its PLC); the
 /// line takes `opts`' echo, timing and strictness, and its own drive ids.
-pub fn serve_pty_line(
-    link: Option<&Path>,
+pub fn serve_on_line(
+    on: &ServeOn,
     opts: &Options,
     line: Arc<Mutex<SimLine>>,
     stop: &Arc<AtomicBool>,
     ready: impl FnOnce(&Ready),
 ) -> Result<()> {
-    let pty = Pty::open()?;
-    if let Some(l) = link {
-        pty.link(l)?;
-    }
-    let Pty { master, slave, path } = pty;
+    let served = Served::open(on)?;
     let ids = {
         let mut sim = line.lock().unwrap_or_else(|p| p.into_inner());
         sim.echo = opts.echo;
@@ -181,11 +182,10 @@ pub fn serve_pty_line(
         sim.set_strict(opts.strict);
         sim.ids()
     };
-    let ctl = match link {
+    let ctl = match served.link_path() {
         Some(l) => {
             let p = control_path(l);
-            let _ = std::fs::remove_file(&p);
-            let listener = UnixListener::bind(&p)
+            let listener = LocalListener::bind(&p)
                 .map_err(|e| Error::io(format!("cannot open the servo control socket {}", p.display())).cause(e))?;
             let (line, stop) = (line.clone(), stop.clone());
             std::thread::spawn(move || serve_control(listener, line, stop));
@@ -194,8 +194,9 @@ pub fn serve_pty_line(
         None => None,
     };
     ready(&Ready {
-        servo_pty: path.clone(),
-        link: link.map(Path::to_path_buf),
+        servo_pty: served.pty.clone(),
+        link: served.link.clone(),
+        servo_tcp: served.tcp.map(|a| a.to_string()),
         ids,
         echo: opts.echo,
         servo_control: ctl.clone(),
@@ -203,12 +204,9 @@ pub fn serve_pty_line(
         servo_latency_us: opts.pace.map(|p| p.latency.as_micros() as u64),
         strict: opts.strict,
     });
-    let name = link.map(|l| l.display().to_string()).unwrap_or_else(|| path.display().to_string());
-    let r = serve_line(Box::new(FdPort(master)), &line, stop, &name);
-    drop(slave);
-    if let Some(l) = link {
-        let _ = std::fs::remove_file(l);
-    }
+    let name = served.name();
+    let mut served = served;
+    let r = serve_line(served.line.as_mut(), &line, stop, &name);
     if let Some(c) = ctl {
         let _ = std::fs::remove_file(c);
     }

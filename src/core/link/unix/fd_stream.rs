@@ -6,10 +6,16 @@
 //! more for nothing (an EPOLLOUT edge), and its `flush` is `tcdrain`, one more system call
 //! per frame. Here the descriptor is registered for reading only, a write goes straight to
 //! the descriptor, and `flush` is a no-op (the reply is what tells a master its request went
-//! out). A write that finds the tty's output buffer full (kilobytes; a Modbus frame is at
-//! most 256 bytes) yields and tries again. The owner value (e.g. a `serialport::TTYPort`)
-//! is kept inside, so its `Drop` (release of exclusive access) still runs.
+//! out). The owner value is kept inside, so its `Drop` still runs.
+//!
+//! A write that finds the output buffer full means nobody reads the other side (a pty client
+//! that stopped reading, or closed the port while the server holds the slave): a line would
+//! carry the bytes away regardless, so the stream drops what the client has not read (a
+//! flush of the slave's input, [`FdStream::dropping_unread`]) and writes again; if it is
+//! still full, the frame is lost, as on a line. It never waits for the client and never
+//! spins. A stream without a slave to flush waits for room by timer (1 ms steps).
 
+use std::future::Future;
 use std::io;
 use std::os::fd::AsRawFd;
 use std::pin::Pin;
@@ -35,6 +41,10 @@ pub(crate) fn set_nonblocking<T: AsRawFd>(owner: &T) -> io::Result<()> {
 /// An async stream over the descriptor of `T`.
 pub struct FdStream<T: AsRawFd> {
     fd: AsyncFd<T>,
+    /// The pty's slave, flushed when the client does not read.
+    unread: Option<std::fs::File>,
+    /// The timer a full buffer waits on when there is no slave to flush.
+    retry: Option<std::pin::Pin<Box<tokio::time::Sleep>>>,
 }
 
 impl<T: AsRawFd> FdStream<T> {
@@ -44,7 +54,18 @@ impl<T: AsRawFd> FdStream<T> {
         set_nonblocking(&owner)?;
         // SAFETY: `owner` owns a valid descriptor and keeps it open, unreplaced, for as long
         // as the AsyncFd holds it.
-        Ok(FdStream { fd: unsafe { AsyncFd::register_with_interest(owner, Interest::READABLE)? } })
+        Ok(FdStream {
+            fd: unsafe { AsyncFd::register_with_interest(owner, Interest::READABLE)? },
+            unread: None,
+            retry: None,
+        })
+    }
+
+    /// On a full output buffer, flushes what the client has not read from `slave` (the
+    /// pty's other side) instead of waiting for it.
+    pub fn dropping_unread(mut self, slave: std::fs::File) -> FdStream<T> {
+        self.unread = Some(slave);
+        self
     }
 
     pub fn get_ref(&self) -> &T {
@@ -87,19 +108,35 @@ impl<T: AsRawFd + Unpin> AsyncRead for FdStream<T> {
 }
 
 impl<T: AsRawFd + Unpin> AsyncWrite for FdStream<T> {
-    fn poll_write(self: Pin<&mut Self>, cx: &mut Context<'_>, buf: &[u8]) -> Poll<io::Result<usize>> {
-        // SAFETY: writing from a valid buffer of the given length.
-        let n = unsafe { nix::libc::write(self.fd.get_ref().as_raw_fd(), buf.as_ptr().cast(), buf.len()) };
-        if n >= 0 {
-            return Poll::Ready(Ok(n as usize));
+    fn poll_write(mut self: Pin<&mut Self>, cx: &mut Context<'_>, buf: &[u8]) -> Poll<io::Result<usize>> {
+        let mut flushed = false;
+        loop {
+            // SAFETY: writing from a valid buffer of the given length.
+            let n = unsafe { nix::libc::write(self.fd.get_ref().as_raw_fd(), buf.as_ptr().cast(), buf.len()) };
+            if n >= 0 {
+                self.retry = None;
+                return Poll::Ready(Ok(n as usize));
+            }
+            let e = io::Error::last_os_error();
+            match e.kind() {
+                io::ErrorKind::Interrupted => continue,
+                io::ErrorKind::WouldBlock => {}
+                _ => return Poll::Ready(Err(e)),
+            }
+            if let Some(slave) = &self.unread {
+                if flushed {
+                    // Still full right after a flush: nobody reads; the frame is lost.
+                    return Poll::Ready(Ok(buf.len()));
+                }
+                let _ = nix::sys::termios::tcflush(slave, nix::sys::termios::FlushArg::TCIFLUSH);
+                flushed = true;
+                continue;
+            }
+            let retry =
+                self.retry.get_or_insert_with(|| Box::pin(tokio::time::sleep(std::time::Duration::from_millis(1))));
+            std::task::ready!(retry.as_mut().poll(cx));
+            self.retry = None;
         }
-        let e = io::Error::last_os_error();
-        if e.kind() == io::ErrorKind::WouldBlock || e.kind() == io::ErrorKind::Interrupted {
-            // Output buffer full: rare with one small frame in flight; try again shortly.
-            cx.waker().wake_by_ref();
-            return Poll::Pending;
-        }
-        Poll::Ready(Err(e))
     }
     fn poll_flush(self: Pin<&mut Self>, _cx: &mut Context<'_>) -> Poll<io::Result<()>> {
         Poll::Ready(Ok(()))
@@ -111,8 +148,8 @@ impl<T: AsRawFd + Unpin> AsyncWrite for FdStream<T> {
 
 #[cfg(test)]
 mod tests {
+    use super::super::pty::Pty;
     use super::*;
-    use crate::core::link::pty::Pty;
     use std::io::{Read, Write};
     use tokio::io::{AsyncReadExt, AsyncWriteExt};
 

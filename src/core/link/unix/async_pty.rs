@@ -5,13 +5,17 @@
 //! see its module for why). Each call to [`AsyncPty::stream`] wraps a fresh duplicate of the
 //! master descriptor, so a server whose stream ended on an error can start again on the same
 //! pty without the clients noticing. The slave stays open for as long as the `AsyncPty` lives, so the
-//! master never reads EIO between client sessions.
+//! master never reads EIO between client sessions. A client that stops reading loses replies
+//! instead of making the server wait or spin ([`FdStream::dropping_unread`]).
 
 use super::fd_stream::FdStream;
 use super::pty::Pty;
 use crate::core::{Error, Result};
 use std::fs::File;
 use std::path::Path;
+
+/// The master side as an async stream.
+pub type PtyStream = FdStream<File>;
 
 /// A pseudo-terminal whose master side is served asynchronously.
 pub struct AsyncPty {
@@ -30,7 +34,7 @@ impl AsyncPty {
 
     /// The slave device clients open (`/dev/pts/N`).
     pub fn path(&self) -> &Path {
-        &self.pty.path
+        self.pty.path()
     }
 
     /// Points a symlink at the slave device (see [`Pty::link`]).
@@ -39,9 +43,12 @@ impl AsyncPty {
     }
 
     /// A new async stream on the master side. Must be called inside a tokio runtime.
-    pub fn stream(&self) -> Result<FdStream<File>> {
+    pub fn stream(&self) -> Result<PtyStream> {
         let fd = self.pty.master.try_clone().map_err(|e| Error::io("cannot duplicate the pty master").cause(e))?;
-        FdStream::new(fd).map_err(|e| Error::io("cannot register the pty master with tokio").cause(e))
+        let slave = self.pty.slave.try_clone().map_err(|e| Error::io("cannot duplicate the pty slave").cause(e))?;
+        FdStream::new(fd)
+            .map(|s| s.dropping_unread(slave))
+            .map_err(|e| Error::io("cannot register the pty master with tokio").cause(e))
     }
 }
 

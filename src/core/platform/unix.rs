@@ -1,0 +1,83 @@
+//! The Unix side of [`super`]: POSIX signals through signal-hook and tokio, `TIOCGWINSZ`,
+//! `localtime_r`, `CLOCK_THREAD_CPUTIME_ID`, SIGINT to a child.
+
+use std::sync::atomic::{AtomicBool, AtomicI32, Ordering};
+use std::sync::Arc;
+use std::time::Duration;
+
+/// SIGINT (Ctrl-C), SIGTERM (`timeout`, CI, systemd) and SIGHUP (a dropped SSH session)
+/// raise `interrupt`; SIGTERM and SIGHUP are also stored in `received` (a Ctrl-C is told
+/// apart by the shell itself). A second signal of the same kind while the flag is up ends
+/// the process at once with 128 + the signal.
+pub fn install_stop_handlers(interrupt: &Arc<AtomicBool>, received: &'static AtomicI32) {
+    use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+    for sig in [SIGINT, SIGTERM, SIGHUP] {
+        // Order matters (signal-hook's documented pattern): the conditional shutdown sees
+        // the flag as the previous signal left it, then the flag is raised.
+        let _ = signal_hook::flag::register_conditional_shutdown(sig, 128 + sig, interrupt.clone());
+        let _ = signal_hook::flag::register(sig, interrupt.clone());
+        if sig != SIGINT {
+            // SAFETY: the action only stores to an atomic, which is async-signal-safe.
+            let _ = unsafe { signal_hook::low_level::register(sig, move || received.store(sig, Ordering::SeqCst)) };
+        }
+    }
+}
+
+/// A future that completes on Ctrl-C or SIGTERM (a server's stop). The handlers are
+/// installed when this is called, so a signal sent right after is not lost.
+pub fn stop_signal() -> std::io::Result<impl std::future::Future<Output = ()>> {
+    use tokio::signal::unix::{signal, SignalKind};
+    let mut int = signal(SignalKind::interrupt())?;
+    let mut term = signal(SignalKind::terminate())?;
+    Ok(async move {
+        tokio::select! {
+            _ = int.recv() => {},
+            _ = term.recv() => {},
+        }
+    })
+}
+
+/// (columns, rows) of the terminal on standard output, or `None` when it is not a terminal.
+pub fn terminal_size() -> Option<(usize, usize)> {
+    // SAFETY: TIOCGWINSZ fills a `winsize` we own; a failing call leaves it zeroed.
+    let mut ws: libc::winsize = unsafe { std::mem::zeroed() };
+    let r = unsafe { libc::ioctl(libc::STDOUT_FILENO, libc::TIOCGWINSZ, &mut ws) };
+    (r == 0 && ws.ws_col > 0 && ws.ws_row > 0).then_some((usize::from(ws.ws_col), usize::from(ws.ws_row)))
+}
+
+/// Seconds east of UTC of the host's zone at Unix time `t` (0 if unknown).
+pub fn utc_offset(t: i64) -> i64 {
+    // SAFETY: localtime_r writes only into `tm`, which we own; `t` is a valid time_t.
+    unsafe {
+        let tt: libc::time_t = t as libc::time_t;
+        let mut tm: libc::tm = std::mem::zeroed();
+        if libc::localtime_r(&tt, &mut tm).is_null() {
+            return 0;
+        }
+        tm.tm_gmtoff as i64
+    }
+}
+
+/// CPU time the calling thread has used.
+pub fn thread_cpu_time() -> Duration {
+    let mut ts = libc::timespec { tv_sec: 0, tv_nsec: 0 };
+    // SAFETY: clock_gettime writes one timespec through a valid pointer.
+    unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut ts) };
+    Duration::new(ts.tv_sec as u64, ts.tv_nsec as u32)
+}
+
+/// Asks a child to stop as `kill` or a service manager would (SIGTERM).
+pub fn terminate_child(child: &std::process::Child) {
+    // SAFETY: kill(2) on a process id; no memory is involved.
+    unsafe {
+        libc::kill(child.id() as libc::pid_t, libc::SIGTERM);
+    }
+}
+
+/// Asks a child to stop as Ctrl-C would (SIGINT), so it can print its summary.
+pub fn interrupt_child(child: &std::process::Child) {
+    // SAFETY: kill(2) on a process id; no memory is involved.
+    unsafe {
+        libc::kill(child.id() as libc::pid_t, libc::SIGINT);
+    }
+}

@@ -1,0 +1,159 @@
+//! The Windows side of [`super`]: console control events, the console's size, the time zone
+//! through the C runtime, thread CPU time.
+//!
+//! Console events map onto the Unix signals' exit statuses: Ctrl-C is SIGINT (130),
+//! Ctrl-Break — what console tools and process managers send to stop a program politely —
+//! is SIGTERM (143), and closing the console window, logging off or shutting down is SIGHUP
+//! (129). For a close, Windows ends the process once the handler returns (or after about
+//! five seconds): the handler waits there, up to [`CLOSE_GRACE`], so the abort handlers run
+//! and the state is saved before the window goes.
+
+use super::code;
+use std::sync::atomic::{AtomicBool, AtomicI32, Ordering};
+use std::sync::{Arc, OnceLock};
+use std::time::Duration;
+use windows_sys::core::BOOL;
+use windows_sys::Win32::Foundation::{FALSE, TRUE};
+use windows_sys::Win32::System::Console::{
+    GetConsoleScreenBufferInfo, GetStdHandle, SetConsoleCtrlHandler, CONSOLE_SCREEN_BUFFER_INFO, CTRL_BREAK_EVENT,
+    CTRL_CLOSE_EVENT, CTRL_C_EVENT, CTRL_LOGOFF_EVENT, CTRL_SHUTDOWN_EVENT, STD_OUTPUT_HANDLE,
+};
+
+/// How long a closing console waits for the abort handlers (Windows allows about 5 s).
+pub const CLOSE_GRACE: Duration = Duration::from_millis(4500);
+
+struct Handlers {
+    interrupt: Arc<AtomicBool>,
+    received: &'static AtomicI32,
+}
+
+static HANDLERS: OnceLock<Handlers> = OnceLock::new();
+
+unsafe extern "system" fn on_console_event(event: u32) -> BOOL {
+    let Some(h) = HANDLERS.get() else { return FALSE };
+    let sig = match event {
+        CTRL_C_EVENT => code::INT,
+        CTRL_BREAK_EVENT => code::TERM,
+        CTRL_CLOSE_EVENT | CTRL_LOGOFF_EVENT | CTRL_SHUTDOWN_EVENT => code::HUP,
+        _ => return FALSE,
+    };
+    // A second event while the first is handled ends the process at once (as on Unix).
+    if h.interrupt.swap(true, Ordering::SeqCst) && sig != code::HUP {
+        std::process::exit(128 + sig);
+    }
+    if sig != code::INT {
+        h.received.store(sig, Ordering::SeqCst);
+    }
+    if sig == code::HUP {
+        // The process ends when this returns: give the main thread time to stop cleanly
+        // (it exits the process itself when done).
+        std::thread::sleep(CLOSE_GRACE);
+    }
+    TRUE
+}
+
+/// Console events raise `interrupt`; Ctrl-Break and closing are stored in `received`.
+pub fn install_stop_handlers(interrupt: &Arc<AtomicBool>, received: &'static AtomicI32) {
+    let _ = HANDLERS.set(Handlers { interrupt: interrupt.clone(), received });
+    // SAFETY: registers a handler function with the signature Windows calls.
+    unsafe {
+        SetConsoleCtrlHandler(Some(on_console_event), TRUE);
+    }
+}
+
+/// A future that completes on Ctrl-C, Ctrl-Break or a closing console (a server's stop).
+pub fn stop_signal() -> std::io::Result<impl std::future::Future<Output = ()>> {
+    let mut c = tokio::signal::windows::ctrl_c()?;
+    let mut b = tokio::signal::windows::ctrl_break()?;
+    let mut close = tokio::signal::windows::ctrl_close()?;
+    Ok(async move {
+        tokio::select! {
+            _ = c.recv() => {},
+            _ = b.recv() => {},
+            _ = close.recv() => {},
+        }
+    })
+}
+
+/// (columns, rows) of the console window on standard output, or `None` when it is not one.
+pub fn terminal_size() -> Option<(usize, usize)> {
+    // SAFETY: the handle is the process's standard output; the info struct is ours.
+    unsafe {
+        let h = GetStdHandle(STD_OUTPUT_HANDLE);
+        let mut info: CONSOLE_SCREEN_BUFFER_INFO = std::mem::zeroed();
+        if GetConsoleScreenBufferInfo(h, &mut info) == 0 {
+            return None;
+        }
+        let cols = i32::from(info.srWindow.Right) - i32::from(info.srWindow.Left) + 1;
+        let rows = i32::from(info.srWindow.Bottom) - i32::from(info.srWindow.Top) + 1;
+        (cols > 0 && rows > 0).then_some((cols as usize, rows as usize))
+    }
+}
+
+extern "C" {
+    fn _localtime64_s(tm: *mut Tm, time: *const i64) -> i32;
+    fn _mkgmtime64(tm: *mut Tm) -> i64;
+}
+
+/// The C runtime's `struct tm`.
+#[repr(C)]
+#[derive(Default)]
+struct Tm {
+    tm_sec: i32,
+    tm_min: i32,
+    tm_hour: i32,
+    tm_mday: i32,
+    tm_mon: i32,
+    tm_year: i32,
+    tm_wday: i32,
+    tm_yday: i32,
+    tm_isdst: i32,
+}
+
+/// Seconds east of UTC of the host's zone at Unix time `t` (0 if unknown): the local civil
+/// time read back as if it were UTC, minus `t`.
+pub fn utc_offset(t: i64) -> i64 {
+    let mut tm = Tm::default();
+    // SAFETY: both calls read and write only the `tm` we own.
+    unsafe {
+        if _localtime64_s(&mut tm, &t) != 0 {
+            return 0;
+        }
+        let local = _mkgmtime64(&mut tm);
+        if local == -1 {
+            0
+        } else {
+            local - t
+        }
+    }
+}
+
+/// CPU time the calling thread has used.
+pub fn thread_cpu_time() -> Duration {
+    use windows_sys::Win32::Foundation::FILETIME;
+    use windows_sys::Win32::System::Threading::{GetCurrentThread, GetThreadTimes};
+    let zero = FILETIME { dwLowDateTime: 0, dwHighDateTime: 0 };
+    let (mut c, mut e, mut k, mut u) = (zero, zero, zero, zero);
+    // SAFETY: the pseudo-handle of this thread and four FILETIMEs we own.
+    unsafe { GetThreadTimes(GetCurrentThread(), &mut c, &mut e, &mut k, &mut u) };
+    let ticks = |f: FILETIME| (u64::from(f.dwHighDateTime) << 32) | u64::from(f.dwLowDateTime);
+    Duration::from_nanos((ticks(k) + ticks(u)).saturating_mul(100))
+}
+
+/// Stops a child (Windows has no SIGTERM to send to another process).
+pub fn terminate_child(child: &std::process::Child) {
+    interrupt_child(child);
+}
+
+/// Stops a child (Windows has no SIGINT to send to another console's process).
+pub fn interrupt_child(child: &std::process::Child) {
+    use windows_sys::Win32::System::Threading::{OpenProcess, TerminateProcess, PROCESS_TERMINATE};
+    // SAFETY: opens and terminates the process by id; the handle is closed by the OS at exit.
+    unsafe {
+        let h = OpenProcess(PROCESS_TERMINATE, FALSE, child.id());
+        if !h.is_null() {
+            TerminateProcess(h, 1);
+            windows_sys::Win32::Foundation::CloseHandle(h);
+        }
+    }
+}
