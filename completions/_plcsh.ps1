@@ -41,6 +41,7 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             [CompletionResult]::new('models', 'models', [CompletionResultType]::ParameterValue, 'List the K2 model catalogue; `models MODEL` shows one in full (areas, counters, manual notes)')
             [CompletionResult]::new('devices', 'devices', [CompletionResultType]::ParameterValue, 'List open devices and the device profiles (devices.toml), with problems in that file')
+            [CompletionResult]::new('ports', 'ports', [CompletionResultType]::ParameterValue, 'List the serial ports present, with USB adapter (VID:PID, product, serial number)')
             [CompletionResult]::new('completions', 'completions', [CompletionResultType]::ParameterValue, 'Print a shell completion script (bash, zsh, fish, powershell), or write them all')
             [CompletionResult]::new('sim', 'sim', [CompletionResultType]::ParameterValue, 'Serve simulators to other programs: `sim serve` puts the simulated K2 on Modbus TCP / RTU and drives on a pty')
             [CompletionResult]::new('agent', 'agent', [CompletionResultType]::ParameterValue, 'The PLC-side helper program that gives plcsh SM registers and instructions on a real K2')
@@ -68,6 +69,23 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             break
         }
         'plcsh;devices' {
+            [CompletionResult]::new('--model', '--model', [CompletionResultType]::ParameterName, 'Model of the default simulated PLC')
+            [CompletionResult]::new('-d', '-d', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
+            [CompletionResult]::new('--device', '--device', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
+            [CompletionResult]::new('--time', '--time', [CompletionResultType]::ParameterName, 'Simulator time: follow the wall clock, or move only when stepped')
+            [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)')
+            [CompletionResult]::new('--state', '--state', [CompletionResultType]::ParameterName, 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user''s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE')
+            [CompletionResult]::new('--record', '--record', [CompletionResultType]::ParameterName, 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)')
+            [CompletionResult]::new('--bench', '--bench', [CompletionResultType]::ParameterName, 'Open a simulated machine described by a bench file (devices, wiring, initial values)')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'Print one JSON object per command result')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
+            [CompletionResult]::new('--read-only', '--read-only', [CompletionResultType]::ParameterName, 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            break
+        }
+        'plcsh;ports' {
             [CompletionResult]::new('--model', '--model', [CompletionResultType]::ParameterName, 'Model of the default simulated PLC')
             [CompletionResult]::new('-d', '-d', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
             [CompletionResult]::new('--device', '--device', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
@@ -129,14 +147,18 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             [CompletionResult]::new('--agent', '--agent', [CompletionResultType]::ParameterName, 'Run the PLC-side helper program (lib/k2_agent.il) with its mailbox at this V address')
             [CompletionResult]::new('--program', '--program', [CompletionResultType]::ParameterName, 'Run this IL program in the served K2 (docs/il.md); load errors stop the server')
             [CompletionResult]::new('--servo-pty', '--servo-pty', [CompletionResultType]::ParameterName, 'Serve simulated Kinco servo drives on a new pseudo-terminal; LINK becomes a symlink to it')
+            [CompletionResult]::new('--servo-tcp', '--servo-tcp', [CompletionResultType]::ParameterName, 'Serve simulated Kinco servo drives on a TCP port, as a serial device server would (kinco+tcp://ADDR)')
             [CompletionResult]::new('--servo-id', '--servo-id', [CompletionResultType]::ParameterName, 'Drive ids on the servo line (several drives share it)')
             [CompletionResult]::new('--servo-baud', '--servo-baud', [CompletionResultType]::ParameterName, 'Line timing: replies take the frame time at this baud rate (10 bits a byte)')
             [CompletionResult]::new('--servo-latency', '--servo-latency', [CompletionResultType]::ParameterName, 'Line timing: the drive''s think-time before it answers (e.g. 1ms, 0)')
             [CompletionResult]::new('--fx-pty', '--fx-pty', [CompletionResultType]::ParameterName, 'Serve a simulated FX PLC''s programming port on a new pseudo-terminal (symlink at LINK)')
+            [CompletionResult]::new('--fx-tcp', '--fx-tcp', [CompletionResultType]::ParameterName, 'Serve the simulated FX PLC''s programming port on a TCP port (fx+tcp://ADDR)')
             [CompletionResult]::new('--fx-link-pty', '--fx-link-pty', [CompletionResultType]::ParameterName, 'Serve the same FX PLC''s computer link (format 1, sum check on) on another pseudo-terminal')
+            [CompletionResult]::new('--fx-link-tcp', '--fx-link-tcp', [CompletionResultType]::ParameterName, 'Serve the same FX PLC''s computer link on a TCP port (fxlink+tcp://ADDR)')
             [CompletionResult]::new('--fx-model', '--fx-model', [CompletionResultType]::ParameterName, 'The simulated FX PLC''s model (FX1S, FX1N, FX2N)')
             [CompletionResult]::new('--fx-station', '--fx-station', [CompletionResultType]::ParameterName, 'The computer link''s station number (0–31)')
             [CompletionResult]::new('--umpk-pty', '--umpk-pty', [CompletionResultType]::ParameterName, 'Serve a simulated UMPK teaching PLC on a new pseudo-terminal; LINK becomes a symlink to it')
+            [CompletionResult]::new('--umpk-tcp', '--umpk-tcp', [CompletionResultType]::ParameterName, 'Serve a simulated UMPK teaching PLC on a TCP port (umpk+tcp://ADDR)')
             [CompletionResult]::new('--umpk-model', '--umpk-model', [CompletionResultType]::ParameterName, 'The simulated UMPK''s model (UMPK8 or UMPK16)')
             [CompletionResult]::new('--umpk-status-bits', '--umpk-status-bits', [CompletionResultType]::ParameterName, 'Bit numbers of W,H,R,E,P,T in the UMPK''s status word')
             [CompletionResult]::new('--umpk-flash-fail', '--umpk-flash-fail', [CompletionResultType]::ParameterName, 'Make the simulated UMPK''s flash write fail on this 64-byte page (programming gets `W`)')
@@ -312,6 +334,7 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
         'plcsh;help' {
             [CompletionResult]::new('models', 'models', [CompletionResultType]::ParameterValue, 'List the K2 model catalogue; `models MODEL` shows one in full (areas, counters, manual notes)')
             [CompletionResult]::new('devices', 'devices', [CompletionResultType]::ParameterValue, 'List open devices and the device profiles (devices.toml), with problems in that file')
+            [CompletionResult]::new('ports', 'ports', [CompletionResultType]::ParameterValue, 'List the serial ports present, with USB adapter (VID:PID, product, serial number)')
             [CompletionResult]::new('completions', 'completions', [CompletionResultType]::ParameterValue, 'Print a shell completion script (bash, zsh, fish, powershell), or write them all')
             [CompletionResult]::new('sim', 'sim', [CompletionResultType]::ParameterValue, 'Serve simulators to other programs: `sim serve` puts the simulated K2 on Modbus TCP / RTU and drives on a pty')
             [CompletionResult]::new('agent', 'agent', [CompletionResultType]::ParameterValue, 'The PLC-side helper program that gives plcsh SM registers and instructions on a real K2')
@@ -325,6 +348,9 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             break
         }
         'plcsh;help;devices' {
+            break
+        }
+        'plcsh;help;ports' {
             break
         }
         'plcsh;help;completions' {

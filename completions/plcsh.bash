@@ -31,6 +31,9 @@ _plcsh() {
             plcsh,models)
                 cmd="plcsh__subcmd__models"
                 ;;
+            plcsh,ports)
+                cmd="plcsh__subcmd__ports"
+                ;;
             plcsh,record)
                 cmd="plcsh__subcmd__record"
                 ;;
@@ -69,6 +72,9 @@ _plcsh() {
                 ;;
             plcsh__subcmd__help,models)
                 cmd="plcsh__subcmd__help__subcmd__models"
+                ;;
+            plcsh__subcmd__help,ports)
+                cmd="plcsh__subcmd__help__subcmd__ports"
                 ;;
             plcsh__subcmd__help,record)
                 cmd="plcsh__subcmd__help__subcmd__record"
@@ -122,7 +128,7 @@ _plcsh() {
 
     case "${cmd}" in
         plcsh)
-            opts="-c -v -d -h -V --command --json --verbose --model --device --time --config --state --record --bench --read-only --help --version models devices completions sim agent run record replay help"
+            opts="-c -v -d -h -V --command --json --verbose --model --device --time --config --state --record --bench --read-only --help --version models devices ports completions sim agent run record replay help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -410,7 +416,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__help)
-            opts="models devices completions sim agent run record replay help"
+            opts="models devices ports completions sim agent run record replay help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -494,6 +500,20 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__help__subcmd__models)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        plcsh__subcmd__help__subcmd__ports)
             opts=""
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
@@ -592,6 +612,52 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__models)
+            opts="-v -d -h --json --verbose --model --device --time --config --state --record --bench --read-only --help"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --model)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --device)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --time)
+                    COMPREPLY=($(compgen -W "wall stepped" -- "${cur}"))
+                    return 0
+                    ;;
+                --config)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --state)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --record)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --bench)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        plcsh__subcmd__ports)
             opts="-v -d -h --json --verbose --model --device --time --config --state --record --bench --read-only --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
@@ -964,7 +1030,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__sim__subcmd__serve)
-            opts="-v -d -h --tcp --rtu-pty --rtu-tcp --unit --agent --program --servo-pty --servo-id --servo-loop --servo-baud --servo-latency --servo-instant --servo-strict --fx-pty --fx-link-pty --fx-model --fx-station --umpk-pty --umpk-model --umpk-status-bits --umpk-flash-fail --umpk-state --umpk-program --fault --max-connections --idle-timeout --strict-unit --json --verbose --model --device --time --config --state --record --bench --read-only --help"
+            opts="-v -d -h --tcp --rtu-pty --rtu-tcp --unit --agent --program --servo-pty --servo-tcp --servo-id --servo-loop --servo-baud --servo-latency --servo-instant --servo-strict --fx-pty --fx-tcp --fx-link-pty --fx-link-tcp --fx-model --fx-station --umpk-pty --umpk-tcp --umpk-model --umpk-status-bits --umpk-flash-fail --umpk-state --umpk-program --fault --max-connections --idle-timeout --strict-unit --json --verbose --model --device --time --config --state --record --bench --read-only --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -998,6 +1064,10 @@ _plcsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --servo-tcp)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 --servo-id)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
@@ -1014,7 +1084,15 @@ _plcsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --fx-tcp)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 --fx-link-pty)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --fx-link-tcp)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1027,6 +1105,10 @@ _plcsh() {
                     return 0
                     ;;
                 --umpk-pty)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --umpk-tcp)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;

@@ -40,6 +40,7 @@ complete -c plcsh -n "__fish_plcsh_needs_command" -s h -l help -d 'Print help (s
 complete -c plcsh -n "__fish_plcsh_needs_command" -s V -l version -d 'Print version'
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "models" -d 'List the K2 model catalogue; `models MODEL` shows one in full (areas, counters, manual notes)'
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "devices" -d 'List open devices and the device profiles (devices.toml), with problems in that file'
+complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "ports" -d 'List the serial ports present, with USB adapter (VID:PID, product, serial number)'
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "completions" -d 'Print a shell completion script (bash, zsh, fish, powershell), or write them all'
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "sim" -d 'Serve simulators to other programs: `sim serve` puts the simulated K2 on Modbus TCP / RTU and drives on a pty'
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "agent" -d 'The PLC-side helper program that gives plcsh SM registers and instructions on a real K2'
@@ -71,6 +72,18 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l json -d 'Print o
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l model -d 'Model of the default simulated PLC' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
+stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
+complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l json -d 'Print one JSON object per command result'
+complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
+complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'
+complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l write -d 'Write every script into DIR (plcsh.bash, _plcsh, plcsh.fish, _plcsh.ps1)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
@@ -105,14 +118,18 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l agent -d 'Run the PLC-side helper program (lib/k2_agent.il) with its mailbox at this V address' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l program -d 'Run this IL program in the served K2 (docs/il.md); load errors stop the server' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l servo-pty -d 'Serve simulated Kinco servo drives on a new pseudo-terminal; LINK becomes a symlink to it' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l servo-tcp -d 'Serve simulated Kinco servo drives on a TCP port, as a serial device server would (kinco+tcp://ADDR)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l servo-id -d 'Drive ids on the servo line (several drives share it)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l servo-baud -d 'Line timing: replies take the frame time at this baud rate (10 bits a byte)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l servo-latency -d 'Line timing: the drive\'s think-time before it answers (e.g. 1ms, 0)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l fx-pty -d 'Serve a simulated FX PLC\'s programming port on a new pseudo-terminal (symlink at LINK)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l fx-tcp -d 'Serve the simulated FX PLC\'s programming port on a TCP port (fx+tcp://ADDR)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l fx-link-pty -d 'Serve the same FX PLC\'s computer link (format 1, sum check on) on another pseudo-terminal' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l fx-link-tcp -d 'Serve the same FX PLC\'s computer link on a TCP port (fxlink+tcp://ADDR)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l fx-model -d 'The simulated FX PLC\'s model (FX1S, FX1N, FX2N)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l fx-station -d 'The computer link\'s station number (0–31)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l umpk-pty -d 'Serve a simulated UMPK teaching PLC on a new pseudo-terminal; LINK becomes a symlink to it' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l umpk-tcp -d 'Serve a simulated UMPK teaching PLC on a TCP port (umpk+tcp://ADDR)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l umpk-model -d 'The simulated UMPK\'s model (UMPK8 or UMPK16)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l umpk-status-bits -d 'Bit numbers of W,H,R,E,P,T in the UMPK\'s status word' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l umpk-flash-fail -d 'Make the simulated UMPK\'s flash write fail on this 64-byte page (programming gets `W`)' -r
@@ -224,15 +241,16 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l json -d 'Print on
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -s h -l help -d 'Print help (see more with \'--help\')'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices completions sim agent run record replay help" -f -a "models" -d 'List the K2 model catalogue; `models MODEL` shows one in full (areas, counters, manual notes)'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices completions sim agent run record replay help" -f -a "devices" -d 'List open devices and the device profiles (devices.toml), with problems in that file'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices completions sim agent run record replay help" -f -a "completions" -d 'Print a shell completion script (bash, zsh, fish, powershell), or write them all'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices completions sim agent run record replay help" -f -a "sim" -d 'Serve simulators to other programs: `sim serve` puts the simulated K2 on Modbus TCP / RTU and drives on a pty'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices completions sim agent run record replay help" -f -a "agent" -d 'The PLC-side helper program that gives plcsh SM registers and instructions on a real K2'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices completions sim agent run record replay help" -f -a "run" -d 'Run a Lua script: plcsh [--time stepped] [--device NAME=URL] run SCRIPT.lua [ARGS…]'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices completions sim agent run record replay help" -f -a "record" -d 'Recordings made with --record: `record show FILE` prints the decoded timeline'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices completions sim agent run record replay help" -f -a "replay" -d 'Replay a recording\'s requests against a simulator and report every reply that differs'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices completions sim agent run record replay help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports completions sim agent run record replay help" -f -a "models" -d 'List the K2 model catalogue; `models MODEL` shows one in full (areas, counters, manual notes)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports completions sim agent run record replay help" -f -a "devices" -d 'List open devices and the device profiles (devices.toml), with problems in that file'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports completions sim agent run record replay help" -f -a "ports" -d 'List the serial ports present, with USB adapter (VID:PID, product, serial number)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports completions sim agent run record replay help" -f -a "completions" -d 'Print a shell completion script (bash, zsh, fish, powershell), or write them all'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports completions sim agent run record replay help" -f -a "sim" -d 'Serve simulators to other programs: `sim serve` puts the simulated K2 on Modbus TCP / RTU and drives on a pty'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports completions sim agent run record replay help" -f -a "agent" -d 'The PLC-side helper program that gives plcsh SM registers and instructions on a real K2'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports completions sim agent run record replay help" -f -a "run" -d 'Run a Lua script: plcsh [--time stepped] [--device NAME=URL] run SCRIPT.lua [ARGS…]'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports completions sim agent run record replay help" -f -a "record" -d 'Recordings made with --record: `record show FILE` prints the decoded timeline'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports completions sim agent run record replay help" -f -a "replay" -d 'Replay a recording\'s requests against a simulator and report every reply that differs'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports completions sim agent run record replay help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand help; and __fish_seen_subcommand_from sim" -f -a "serve" -d 'Serve the simulator over Modbus TCP, Modbus RTU on a pseudo-terminal, and/or RTU over TCP'
 complete -c plcsh -n "__fish_plcsh_using_subcommand help; and __fish_seen_subcommand_from agent" -f -a "il" -d 'Print the helper program (K2 instruction list) for KincoBuilder'
 complete -c plcsh -n "__fish_plcsh_using_subcommand help; and __fish_seen_subcommand_from record" -f -a "show" -d 'Print a recording as a decoded timeline (K2 operand names, servo object names); with --json one object per frame'

@@ -275,9 +275,9 @@ fn profile(
 /// family adds its schemes here beside its line in `session::open_url`.
 pub fn offline_twin(u: &DeviceUrl) -> Option<String> {
     let k2_model = || u.param("model").unwrap_or(crate::k2::catalog::DEFAULT_MODEL).to_string();
-    match u.scheme.as_str() {
+    match u.base_scheme() {
         "sim" => Some(format!("sim:{}", u.param("model").unwrap_or(&u.target))),
-        "tcp" | "rtu" | "rtu+tcp" => Some(format!("sim:{}", k2_model())),
+        "tcp" | "rtu" => Some(format!("sim:{}", k2_model())),
         "kinco" | "sim-servo" => Some("sim-servo:?id=1".to_string()),
         "fx" | "fxlink" => Some(format!("sim-fx:{}", u.param("model").unwrap_or("FX2N"))),
         "sim-fx" => {

@@ -79,7 +79,7 @@ pub static SCHEMES: &[(&str, &str)] = &[
 /// Opens a device from its URL. Every scheme plcsh knows is listed here.
 pub fn open_url(url: &str, clock: &Clock) -> Result<Box<dyn Device>> {
     let u = DeviceUrl::parse(url)?;
-    match u.scheme.as_str() {
+    match u.base_scheme() {
         "sim" => {
             u.expect_params(&["model", "program"])?;
             let model = u.param("model").unwrap_or(&u.target);
@@ -91,14 +91,14 @@ pub fn open_url(url: &str, clock: &Clock) -> Result<Box<dyn Device>> {
         }
         "kinco" => crate::servo::driver::open_serial(&u),
         "sim-servo" => crate::servo::driver::open_sim(&u, clock),
-        "tcp" | "rtu" | "rtu+tcp" => crate::k2::open_wire(&u),
+        "tcp" | "rtu" => crate::k2::open_wire(&u),
         "fx" => crate::fx::driver::open_port(&u),
         "fxlink" => crate::fx::driver::open_link(&u),
         "sim-fx" => crate::fx::driver::open_sim(&u),
         "umpk" => crate::umpk::driver::open_serial(&u),
         "sim-umpk" => crate::umpk::driver::open_sim(&u, clock),
         other => Err(Error::usage(format!("unknown device scheme `{other}:` in {url}")).hint(
-            "known schemes: sim:MODEL, tcp://HOST:PORT, rtu:/dev/PORT, rtu+tcp://HOST:PORT, kinco:/dev/PORT?id=1, sim-servo:?id=1, fx:/dev/PORT, fxlink:/dev/PORT, sim-fx:FX2N, umpk:/dev/PORT, sim-umpk:UMPK16",
+            "known schemes: sim:MODEL, tcp://HOST:PORT, rtu:PORT, kinco:PORT?id=1, sim-servo:?id=1, fx:PORT, fxlink:PORT, sim-fx:FX2N, umpk:PORT, sim-umpk:UMPK16 (PORT: COM3, /dev/ttyUSB0; a serial device server: rtu+tcp://HOST:PORT, kinco+rfc2217://HOST:PORT, …)",
         )),
     }
 }

@@ -66,6 +66,7 @@ const NOT_WRITES: &[(&str, &str)] = &[
     ("read", "reads"),
     ("use", "session: picks the current device"),
     ("devices", "session: lists devices"),
+    ("ports", "lists this computer's serial ports; touches no device"),
     ("connect", "session: opens a device"),
     ("close", "session: closes a device"),
     ("sim", "simulation controls: the simulated world around a device (clock, input signals, retention)"),

@@ -94,6 +94,8 @@ pub enum Sub {
     },
     /// List open devices and the device profiles (devices.toml), with problems in that file.
     Devices,
+    /// List the serial ports present, with USB adapter (VID:PID, product, serial number).
+    Ports,
     /// Print a shell completion script (bash, zsh, fish, powershell), or write them all.
     Completions {
         /// The shell to print the script for.
@@ -308,9 +310,9 @@ pub fn state_file(cli: &Cli) -> Option<std::path::PathBuf> {
 /// URLs, `servo` for `kinco:`; `None` for simulators and unknown schemes.
 fn real_family(s: &Session, url: &str) -> Option<&'static str> {
     let url = if url.contains(':') { url } else { s.profiles.get(url).map(|p| p.url.as_str())? };
-    let scheme = url.split(':').next().unwrap_or("");
+    let scheme = url.split([':', '+']).next().unwrap_or("");
     match scheme {
-        "tcp" | "rtu" | "rtu+tcp" => Some("k2"),
+        "tcp" | "rtu" => Some("k2"),
         "kinco" => Some("servo"),
         _ => None,
     }
@@ -398,6 +400,7 @@ fn run(cli: &Cli, mut shell: Shell, style: Style, mut out: std::io::StdoutLock<'
             },
             Sub::Completions { shell, write } => completions::run(*shell, write.as_deref(), &mut out),
             Sub::Devices => i32::from(!shell.run_line("devices", &mut out)),
+            Sub::Ports => i32::from(!shell.run_line("ports", &mut out)),
             Sub::Sim { cmd: serve::SimCmd::Serve(args) } => serve::run(cli, args, style, &mut out),
             Sub::Agent(a) => agent::run(a, &mut out),
             Sub::Run(args) => run::main(&mut shell, args, style),

@@ -39,6 +39,12 @@ impl DeviceUrl {
         Ok(DeviceUrl { scheme, target: target.to_string(), params, text: t.to_string() })
     }
 
+    /// The scheme without its carrier: `kinco` for `kinco+rfc2217`, `rtu` for `rtu+tcp`.
+    /// The family is chosen by it; the carrier is the transport layer's business.
+    pub fn base_scheme(&self) -> &str {
+        self.scheme.split('+').next().unwrap_or("")
+    }
+
     pub fn param(&self, key: &str) -> Option<&str> {
         self.params.iter().rev().find(|(k, _)| k == key).map(|(_, v)| v.as_str())
     }

@@ -347,7 +347,10 @@ impl K2Wire {
                 }
                 Link::Attached { .. } => Err(Error::link("the attached stream failed and cannot be reopened by plcsh")),
                 Link::Rtu { path, line } => {
-                    let p = port::serial_port(path, *line, &name, Proto::ModbusRtu)?;
+                    let p = port::serial_port(path, *line, &name, Proto::ModbusRtu).map_err(|e| {
+                        let h = e.hint.clone().unwrap_or_default();
+                        e.hint(format!("{h}; the next command opens it again once it is back"))
+                    })?;
                     Ok(ModbusClient::new(p, true, unit))
                 }
                 Link::RtuRfc2217 { addr, line } => {

@@ -693,7 +693,7 @@ mod tests {
         let e = d.read_obj(ObjRef { index: 0x3FFF, sub: 1, dtype: crate::core::DataType::Word }).unwrap_err();
         assert!(e.message.contains("unknown object"), "{e}");
         stop.store(true, std::sync::atomic::Ordering::Relaxed);
-        drop(d);
         server.join().unwrap().unwrap();
+        drop(d);
     }
 }

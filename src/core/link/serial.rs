@@ -246,7 +246,7 @@ pub fn ports() -> Result<Vec<PortInfo>> {
             info
         })
         .collect();
-    list.sort_by(|a, b| natural_key(&a.name).cmp(&natural_key(&b.name)));
+    list.sort_by_key(|p| natural_key(&p.name));
     list.dedup_by(|a, b| a.name == b.name);
     Ok(list)
 }
@@ -272,7 +272,7 @@ mod tests {
         assert_eq!(fx.to_string(), "4800 7E1");
         let rtu = LineSettings { baud: 19200, data_bits: 8, parity: Parity::Even, stop_bits: 1 };
         assert_eq!(rtu.char_bits(), 11);
-        assert_eq!(rtu.time_of(usize::MAX), Duration::from_micros(u64::MAX / 19200), "saturates, never wraps");
+        assert_eq!(rtu.time_of(usize::MAX), Duration::from_micros(u64::MAX.div_ceil(19200)), "saturates, never wraps");
     }
 
     #[test]

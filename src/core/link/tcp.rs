@@ -98,6 +98,20 @@ fn recv_within(s: &mut TcpStream, buf: &mut [u8], timeout: Duration) -> io::Resu
     }
 }
 
+/// Whether a peer is still connected (it has not closed its end), without reading data.
+fn still_open(s: &TcpStream) -> bool {
+    if s.set_nonblocking(true).is_err() {
+        return false;
+    }
+    let r = s.peek(&mut [0u8; 1]);
+    let _ = s.set_nonblocking(false);
+    match r {
+        Ok(0) => false,
+        Ok(_) => true,
+        Err(e) => e.kind() == io::ErrorKind::WouldBlock,
+    }
+}
+
 /// The client side of a raw TCP serial channel.
 pub struct TcpLine {
     stream: TcpStream,
@@ -161,10 +175,16 @@ impl ServedTcp {
     /// Closes connections that arrive while a client holds the line; takes the next one
     /// (waiting up to `wait`) when none does.
     fn admit(&mut self, wait: Duration) {
-        if self.client.is_some() {
-            while let Ok(extra) = self.incoming.try_recv() {
-                let _ = extra.shutdown(std::net::Shutdown::Both);
+        while let Ok(next) = self.incoming.try_recv() {
+            if self.client.as_ref().is_some_and(still_open) {
+                let _ = next.shutdown(std::net::Shutdown::Both);
+            } else {
+                let _ = next.set_nodelay(true);
+                let _ = next.set_write_timeout(Some(SEND_STALL));
+                self.client = Some(next);
             }
+        }
+        if self.client.is_some() {
             return;
         }
         if let Ok(c) = self.incoming.recv_timeout(wait) {

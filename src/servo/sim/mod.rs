@@ -267,6 +267,11 @@ impl Transport for SimLink {
     }
 }
 
+/// The simulated line behind a transport, when it is one ([`Transport::sim_line`]).
+pub fn sim_line_of(t: &dyn Transport) -> Option<Arc<Mutex<SimLine>>> {
+    t.sim_line()?.downcast::<Mutex<SimLine>>().ok()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -421,9 +426,4 @@ mod tests {
         link.send(&Frame::read(3, 0x6041, 0).to_bytes()).unwrap();
         assert_eq!(link.recv(&mut got, Duration::ZERO).unwrap(), 10, "echo only: no drive 3");
     }
-}
-
-/// The simulated line behind a transport, when it is one ([`Transport::sim_line`]).
-pub fn sim_line_of(t: &dyn Transport) -> Option<Arc<Mutex<SimLine>>> {
-    t.sim_line()?.downcast::<Mutex<SimLine>>().ok()
 }

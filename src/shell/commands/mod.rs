@@ -12,6 +12,7 @@ mod io;
 mod k2cmd;
 pub mod lua;
 pub mod models;
+pub mod ports;
 pub mod profiles;
 mod pulse;
 mod rtc;
@@ -69,6 +70,7 @@ pub static COMMANDS: &[CommandSpec] = &[
     lua::LUA,
     agent::AGENT,
     models::MODELS,
+    ports::PORTS,
     help::HELP,
     help::QUIT,
 ];
