@@ -110,3 +110,45 @@ fn models_lists_the_catalogue() {
     let names: Vec<&str> = l[0]["models"].as_array().unwrap().iter().map(|m| m["name"].as_str().unwrap()).collect();
     assert!(names.contains(&"K205-16DR") && names.contains(&"K209M-56DT"));
 }
+
+/// `plcsh ports` (README "Windows: a first session"): the serial ports present, as a table or
+/// as JSON with the fields a script needs; extra words are refused.
+#[test]
+fn ports_lists_serial_ports_as_table_or_json() {
+    let o = run(&["--json", "ports"], "");
+    assert!(o.status.success(), "{}", both(&o));
+    let j = &json_lines(&o)[0];
+    assert_eq!((j["ok"].as_bool(), j["cmd"].as_str()), (Some(true), Some("ports")), "{j}");
+    for p in j["ports"].as_array().unwrap() {
+        assert!(p["name"].as_str().is_some_and(|n| !n.is_empty()), "{p}");
+        assert!(["usb", "pci", "bluetooth", "other"].contains(&p["kind"].as_str().unwrap()), "{p}");
+    }
+    let o = run(&["ports"], "");
+    assert!(o.status.success());
+    let text = stdout(&o);
+    assert!(text.contains("port") || text.contains("no serial ports found"), "{text}");
+    let o = run(&["-c", "ports now"], "");
+    assert!(!o.status.success());
+    assert!(both(&o).contains("takes no arguments"), "{}", both(&o));
+}
+
+/// The device-server URLs the README shows name the carrier plcsh uses (parsed, not
+/// connected: those addresses are not on this machine).
+#[test]
+fn readme_device_server_urls_parse() {
+    use plcsh::core::link::serial::Carrier;
+    use plcsh::core::url::DeviceUrl;
+    for (url, want) in [
+        (
+            "rtu+rfc2217://192.168.127.254:4001?baud=19200&parity=even&unit=1",
+            Carrier::Rfc2217("192.168.127.254:4001".into()),
+        ),
+        ("kinco+tcp://192.168.127.254:4002?id=1", Carrier::Tcp("192.168.127.254:4002".into())),
+        ("fxlink+rfc2217://moxa:4003?station=0", Carrier::Rfc2217("moxa:4003".into())),
+        ("rtu:COM3?baud=19200&unit=1", Carrier::Port("COM3".into())),
+        ("kinco:COM10?id=1", Carrier::Port("COM10".into())),
+    ] {
+        let u = DeviceUrl::parse(url).unwrap();
+        assert_eq!(Carrier::from_url(&u, "x").unwrap(), want, "{url}");
+    }
+}

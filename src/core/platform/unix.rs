@@ -58,6 +58,13 @@ pub fn utc_offset(t: i64) -> i64 {
     }
 }
 
+/// Renames `from` over `to` (both in `dir`) and makes the rename durable: an fsync of the
+/// directory, so a returned `Ok` survives a power cut.
+pub fn durable_rename(from: &std::path::Path, to: &std::path::Path, dir: &std::path::Path) -> std::io::Result<()> {
+    std::fs::rename(from, to)?;
+    std::fs::File::open(dir).and_then(|d| d.sync_all())
+}
+
 /// CPU time the calling thread has used.
 pub fn thread_cpu_time() -> Duration {
     let mut ts = libc::timespec { tv_sec: 0, tv_nsec: 0 };

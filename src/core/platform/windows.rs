@@ -128,6 +128,20 @@ pub fn utc_offset(t: i64) -> i64 {
     }
 }
 
+/// Renames `from` over `to` durably: MoveFileExW with MOVEFILE_WRITE_THROUGH returns only once
+/// the rename is on disk (a directory cannot be fsync'd on Windows).
+pub fn durable_rename(from: &std::path::Path, to: &std::path::Path, _dir: &std::path::Path) -> std::io::Result<()> {
+    use std::os::windows::ffi::OsStrExt;
+    use windows_sys::Win32::Storage::FileSystem::{MoveFileExW, MOVEFILE_REPLACE_EXISTING, MOVEFILE_WRITE_THROUGH};
+    let wide = |p: &std::path::Path| p.as_os_str().encode_wide().chain(Some(0)).collect::<Vec<u16>>();
+    let (f, t) = (wide(from), wide(to));
+    // SAFETY: two NUL-terminated wide strings that live across the call.
+    if unsafe { MoveFileExW(f.as_ptr(), t.as_ptr(), MOVEFILE_REPLACE_EXISTING | MOVEFILE_WRITE_THROUGH) } == 0 {
+        return Err(std::io::Error::last_os_error());
+    }
+    Ok(())
+}
+
 /// CPU time the calling thread has used.
 pub fn thread_cpu_time() -> Duration {
     use windows_sys::Win32::Foundation::FILETIME;

@@ -215,11 +215,10 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
     f.write_all(bytes).map_err(fail)?;
     f.sync_all().map_err(fail)?;
     drop(f);
-    std::fs::rename(&tmp, path).map_err(|e| {
+    crate::core::platform::durable_rename(&tmp, path, &dir).map_err(|e| {
         let _ = std::fs::remove_file(&tmp);
         fail(e)
-    })?;
-    std::fs::File::open(&dir).and_then(|d| d.sync_all()).map_err(fail)
+    })
 }
 
 /// Takes the state file's lock (module doc) or says who holds it; removes a temporary
