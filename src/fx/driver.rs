@@ -1593,4 +1593,33 @@ mod tests {
         // Resends wait at least the frame time.
         assert!(d.resend_gap(wr64.0, wr64.1) >= Duration::from_millis(550));
     }
+
+    /// A line that never falls quiet: a character every millisecond.
+    struct Chatter(Arc<std::sync::atomic::AtomicUsize>);
+    impl Transport for Chatter {
+        fn send(&mut self, _: &[u8]) -> io::Result<()> {
+            self.0.fetch_add(1, std::sync::atomic::Ordering::SeqCst);
+            Ok(())
+        }
+        fn recv(&mut self, buf: &mut [u8], t: Duration) -> io::Result<usize> {
+            std::thread::sleep(t.min(Duration::from_millis(1)));
+            buf[0] = b'7';
+            Ok(1)
+        }
+    }
+
+    #[test]
+    fn a_line_that_never_falls_quiet_gets_no_frame() {
+        let sent = Arc::new(std::sync::atomic::AtomicUsize::new(0));
+        let model = Model::find("FX2N").unwrap();
+        let info = DeviceInfo { family: "fx", model: "test".into(), link: "x".into(), simulated: true };
+        let line = lines::private("chatter", Box::new(Chatter(sent.clone())));
+        let mut d = Driver::link(line, model, Header { station: 0, pc: 0xFF, wait: 0 }, Settings::default(), info)
+            .on_line(LineSettings { baud: 19200, data_bits: 7, parity: Parity::Even, stop_bits: 1 }, false);
+        let e = d.read(&ops(&d, &["D0"])).unwrap_err();
+        assert_eq!(e.kind, ErrorKind::Link);
+        assert!(e.message.contains("did not go quiet before WR of 1 point(s) from D0000"), "{e}");
+        assert!(e.hint.as_deref().unwrap().contains("only master"), "{e:?}");
+        assert_eq!(sent.load(std::sync::atomic::Ordering::SeqCst), 0, "nothing is sent into a busy line");
+    }
 }
