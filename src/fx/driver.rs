@@ -505,7 +505,7 @@ impl Driver {
                 (Got::Silent { late }, _) => {
                     self.desync();
                     let from = match &self.mode {
-                        Mode::Link { header, .. } => format!(" from station {}", header.station),
+                        Mode::Link { header, .. } => format!(" (station {})", header.station),
                         Mode::Port { .. } => String::new(),
                     };
                     return Err(Error::link(format!(
@@ -623,7 +623,9 @@ impl Driver {
 
     fn silence_hint(&self) -> String {
         match &self.mode {
-            Mode::Port { .. } => "check the cable, 9600 baud 7E1, and that this is the programming port".into(),
+            Mode::Port { .. } => {
+                format!("check the cable, that this is the programming port, and that it runs {}", self.serial)
+            }
             Mode::Link { header, .. } => format!(
                 "check station {} (the PLC's D8121), PC number FF, the baud rate and format (D8120), and the sum check setting",
                 header.station
