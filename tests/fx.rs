@@ -4,6 +4,9 @@
 //! public protocol descriptions (seed 004; the computer-link format as public drivers write
 //! it), including a bad sum check, an address out of range and a parity-damaged byte; retries
 //! through a proxy pty that spoils replies; batch reads coalesced within the frame limits.
+//! Transaction integrity against an independent responder (test code with its own reading of
+//! the frames, on a pty of its own) that answers late, as another station, with NAK, behind
+//! 00H noise, or at 4800/9600/19200 baud pace (issue #28).
 // Unix only: real pseudo-terminals (Windows has none; its COM ports are tested under Wine
 // in tests/windows_serial.rs).
 #![cfg(unix)]
@@ -17,8 +20,8 @@ use std::fs::File;
 use std::io::{Read, Write};
 use std::os::fd::AsFd;
 use std::path::PathBuf;
-use std::sync::atomic::{AtomicU32, Ordering};
-use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, AtomicU32, Ordering};
+use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 /// A served FX simulator with both ports on ptys symlinked in a private directory.
@@ -330,4 +333,567 @@ fn the_recipe_script_runs_against_a_served_fx_as_at_the_machine() {
     let out = stdout(&o);
     assert!(o.status.success(), "{out}{}", String::from_utf8_lossy(&o.stderr));
     assert!(out.contains("recipe copied: 8 setpoints, batch -5, options 16#8001"), "{out}");
+}
+
+// ---------------------------------------------------------------------------------------------
+// An independent responder: test code that plays the PLC on a pty of its own, reading the
+// requests with its own reading of seed 004's frames (not plcsh's codecs, not its simulator)
+// and answering late, as another station, with NAK, behind noise, or at a baud rate's pace.
+// A reader thread stamps each request as it arrives; a writer thread answers them in order.
+
+const STX: u8 = 0x02;
+const ETX: u8 = 0x03;
+const ENQ: u8 = 0x05;
+const ACK: u8 = 0x06;
+const NAK: u8 = 0x15;
+
+/// One request as the responder read it.
+#[derive(Clone, Debug)]
+struct Req {
+    /// When its last character arrived.
+    at: Instant,
+    /// Link: the station number; the port: 0.
+    station: u8,
+    /// Link: `WR`, `WW`, `BR`, `BW`; the port: `ENQ`, `0` read, `1` write, `7`/`8` force.
+    cmd: String,
+    /// Link: the device number (`D0100` → 100); the port: the byte address.
+    dev: u32,
+    count: usize,
+    /// Link: the message wait digit (×10 ms).
+    wait: u8,
+    /// The request's sum check is right.
+    sum_ok: bool,
+}
+
+/// What the responder does for one request, in order.
+enum Act {
+    Sleep(Duration),
+    /// Bytes at once.
+    Send(Vec<u8>),
+    /// Bytes one character at a time at the pace of `baud` (10-bit characters: 7E1).
+    Paced(Vec<u8>, u32),
+    /// 00H characters back to back at `baud` for this long: what a serial port delivers for
+    /// characters with parity or framing errors.
+    Noise(Duration, u32),
+}
+
+fn char_time(baud: u32) -> Duration {
+    Duration::from_nanos(10_000_000_000 / baud as u64)
+}
+
+/// The sum check: the low byte of the sum of the characters, two upper-case hex digits.
+fn sum2(bytes: &[u8]) -> Vec<u8> {
+    format!("{:02X}", bytes.iter().fold(0u8, |a, b| a.wrapping_add(*b))).into_bytes()
+}
+
+fn hexnum(s: &[u8]) -> Option<u32> {
+    u32::from_str_radix(std::str::from_utf8(s).ok()?, 16).ok()
+}
+
+/// A computer-link request at the start of `buf` (which starts with ENQ): `ENQ station(2) pc(2)
+/// cmd(2) wait(1) device(5) count(2) [data] sum(2)`; its length and what it asks, `Some((n,
+/// None))` for bytes that are not a request.
+fn parse_link(buf: &[u8]) -> Option<(usize, Option<Req>)> {
+    if buf.len() < 15 {
+        return None;
+    }
+    let junk = Some((1, None));
+    let (Some(station), Some(count)) = (hexnum(&buf[1..3]), hexnum(&buf[13..15])) else { return junk };
+    let Some(dev) = std::str::from_utf8(&buf[9..13]).ok().and_then(|d| d.parse::<u32>().ok()) else { return junk };
+    let count = if count == 0 { 256 } else { count as usize };
+    let cmd = String::from_utf8_lossy(&buf[5..7]).to_string();
+    let data = match cmd.as_str() {
+        "WR" | "BR" => 0,
+        "WW" => 4 * count,
+        "BW" => count,
+        _ => return junk,
+    };
+    let len = 15 + data + 2;
+    if buf.len() < len {
+        return None;
+    }
+    let wait = (buf[7] as char).to_digit(16).unwrap_or(0) as u8;
+    let sum_ok = sum2(&buf[1..len - 2]) == buf[len - 2..len];
+    let at = Instant::now();
+    Some((len, Some(Req { at, station: station as u8, cmd, dev, count, wait, sum_ok })))
+}
+
+/// A programming-port request at the start of `buf`: ENQ, or `STX cmd addr(4) [count(2) data]
+/// ETX sum(2)`.
+fn parse_port(buf: &[u8]) -> Option<(usize, Option<Req>)> {
+    let at = Instant::now();
+    let req = |cmd: &str, dev, count, sum_ok| Req { at, station: 0, cmd: cmd.into(), dev, count, wait: 0, sum_ok };
+    if buf[0] == ENQ {
+        return Some((1, Some(req("ENQ", 0, 0, true))));
+    }
+    let etx = buf.iter().position(|b| *b == ETX)?;
+    if buf.len() < etx + 3 {
+        return None;
+    }
+    let sum_ok = sum2(&buf[1..=etx]) == buf[etx + 1..etx + 3];
+    let cmd = (buf[1] as char).to_string();
+    let dev = buf.get(2..6).and_then(hexnum).unwrap_or(0);
+    let count = buf.get(6..8).and_then(hexnum).unwrap_or(0) as usize;
+    Some((etx + 3, Some(req(&cmd, dev, count, sum_ok))))
+}
+
+struct Responder {
+    path: PathBuf,
+    seen: Arc<Mutex<Vec<Req>>>,
+    /// When the answer to each request was complete.
+    ends: Arc<Mutex<Vec<Instant>>>,
+    stop: Arc<AtomicBool>,
+}
+
+impl Responder {
+    fn seen(&self) -> Vec<Req> {
+        self.seen.lock().unwrap().clone()
+    }
+    fn ends(&self) -> Vec<Instant> {
+        self.ends.lock().unwrap().clone()
+    }
+    fn url(&self, scheme: &str, params: &str) -> String {
+        format!("{scheme}:{}{params}", self.path.display())
+    }
+}
+
+impl Drop for Responder {
+    fn drop(&mut self) {
+        self.stop.store(true, Ordering::SeqCst);
+    }
+}
+
+/// Starts a responder on a new pty: `answer(request, k)` (k counts the requests from 0) says
+/// what to do for each. `port`: programming-port requests, else computer-link ones.
+fn responder(port: bool, mut answer: impl FnMut(&Req, usize) -> Vec<Act> + Send + 'static) -> Responder {
+    let (master, slave, path) = Pty::open().unwrap().into_parts();
+    let seen = Arc::new(Mutex::new(Vec::new()));
+    let ends = Arc::new(Mutex::new(Vec::new()));
+    let stop = Arc::new(AtomicBool::new(false));
+    let (tx, rx) = std::sync::mpsc::channel::<Req>();
+    let mut reader = master.try_clone().unwrap();
+    let (seen2, stop2) = (seen.clone(), stop.clone());
+    std::thread::spawn(move || {
+        // Our slave handle stays open: with no slave open, the master reads EIO.
+        let _slave = slave;
+        let mut buf: Vec<u8> = Vec::new();
+        while !stop2.load(Ordering::SeqCst) {
+            let mut fds = [nix::poll::PollFd::new(reader.as_fd(), nix::poll::PollFlags::POLLIN)];
+            if nix::poll::poll(&mut fds, nix::poll::PollTimeout::from(10u16)).unwrap_or(0) == 0 {
+                continue;
+            }
+            let mut b = [0u8; 512];
+            match reader.read(&mut b) {
+                Ok(n) if n > 0 => buf.extend_from_slice(&b[..n]),
+                _ => {
+                    std::thread::sleep(Duration::from_millis(5));
+                    continue;
+                }
+            }
+            loop {
+                // What cannot start a request is ignored, as a PLC ignores it.
+                let start = buf.iter().position(|b| *b == ENQ || (port && *b == STX)).unwrap_or(buf.len());
+                buf.drain(..start);
+                if buf.is_empty() {
+                    break;
+                }
+                let Some((len, req)) = (if port { parse_port(&buf) } else { parse_link(&buf) }) else { break };
+                buf.drain(..len);
+                if let Some(req) = req {
+                    seen2.lock().unwrap().push(req.clone());
+                    let _ = tx.send(req);
+                }
+            }
+        }
+    });
+    let (ends2, stop3) = (ends.clone(), stop.clone());
+    std::thread::spawn(move || {
+        let mut w = master;
+        let mut k = 0;
+        while !stop3.load(Ordering::SeqCst) {
+            let req = match rx.recv_timeout(Duration::from_millis(10)) {
+                Ok(r) => r,
+                Err(std::sync::mpsc::RecvTimeoutError::Timeout) => continue,
+                Err(_) => break,
+            };
+            for act in answer(&req, k) {
+                let paced = |w: &mut File, bytes: &[u8], baud: u32| {
+                    let start = Instant::now();
+                    for (i, b) in bytes.iter().enumerate() {
+                        let due = start + char_time(baud) * i as u32;
+                        std::thread::sleep(due.saturating_duration_since(Instant::now()));
+                        let _ = w.write_all(&[*b]);
+                    }
+                    let done = start + char_time(baud) * bytes.len() as u32;
+                    std::thread::sleep(done.saturating_duration_since(Instant::now()));
+                };
+                match act {
+                    Act::Sleep(d) => std::thread::sleep(d),
+                    Act::Send(b) => {
+                        let _ = w.write_all(&b);
+                    }
+                    Act::Paced(b, baud) => paced(&mut w, &b, baud),
+                    Act::Noise(d, baud) => {
+                        let n = (d.as_nanos() / char_time(baud).as_nanos()) as usize;
+                        paced(&mut w, &vec![0u8; n], baud)
+                    }
+                }
+            }
+            ends2.lock().unwrap().push(Instant::now());
+            k += 1;
+        }
+    });
+    Responder { path, seen, ends, stop }
+}
+
+/// Link replies, built by hand: `STX station "FF" data ETX sum`, `ACK station "FF"`, `NAK
+/// station "FF" code` (seed 004, "FX系列PLC专用协议通信指令格式详解").
+fn link_data(station: u8, data: &str) -> Vec<u8> {
+    let body = format!("{station:02X}FF{data}\x03").into_bytes();
+    [vec![STX], body.clone(), sum2(&body)].concat()
+}
+fn link_ack(station: u8) -> Vec<u8> {
+    format!("\x06{station:02X}FF").into_bytes()
+}
+fn link_nak(station: u8, code: u8) -> Vec<u8> {
+    format!("\x15{station:02X}FF{code:02X}").into_bytes()
+}
+
+/// The responder's PLC: every D register holds its own number, so a value read shows which
+/// register it came from.
+fn words(from: u32, count: usize) -> String {
+    (0..count as u32).map(|i| format!("{:04X}", from + i)).collect()
+}
+
+/// A programming-port read reply (`STX data ETX sum`, the sum over data and ETX) from the
+/// same PLC: D n at 1000H + 2n, low byte first (seed 004's D123 example).
+fn port_data(addr: u32, count: usize) -> Vec<u8> {
+    let hex: String = (addr..addr + count as u32)
+        .map(|a| {
+            let n = (a - 0x1000) / 2;
+            format!("{:02X}", if a % 2 == 0 { n & 0xFF } else { n >> 8 })
+        })
+        .collect();
+    let body = [hex.into_bytes(), vec![ETX]].concat();
+    [vec![STX], body.clone(), sum2(&body)].concat()
+}
+
+fn read_one(d: &mut dyn Device, name: &str) -> plcsh::core::Result<i64> {
+    let o = ops(d, &[name]);
+    d.read(&o).map(|v| v[0].as_i64())
+}
+
+/// The `N` of "within N ms" in a message.
+fn within_ms(msg: &str) -> u64 {
+    let at = msg.find("within ").unwrap_or_else(|| panic!("{msg}")) + 7;
+    msg[at..].split(' ').next().unwrap().parse().unwrap_or_else(|_| panic!("{msg}"))
+}
+
+// Seed 004, computer link ("FX系列PLC专用协议通信指令格式详解"): a reply carries the station and
+// PC number but no device address, so only time tells a late reply from the next one. The
+// driver waits for quiet before every request and, after a timeout, for one more timeout.
+#[test]
+fn a_late_reply_is_never_taken_for_the_next_read() {
+    const T: u64 = 200; // timeout=200ms
+                        // Per read of D100, D101, …: the responder's delay in units of T/10, and whether the read
+                        // is answered in time. The late ones come inside the one more timeout the driver waits;
+                        // the one at 3T comes after it, while the driver is idle.
+    let plan: [(u64, bool); 10] = [
+        (15, false),
+        (0, true),
+        (13, false),
+        (3, true),
+        (17, false),
+        (0, true),
+        (12, false),
+        (2, true),
+        (30, false),
+        (0, true),
+    ];
+    let r = responder(false, move |q, k| {
+        let mut acts = vec![Act::Sleep(Duration::from_millis(plan.get(k).map_or(0, |p| p.0) * T / 10))];
+        if q.cmd == "WR" && q.sum_ok {
+            acts.push(Act::Send(link_data(q.station, &words(q.dev, q.count))));
+        }
+        acts
+    });
+    let mut d = open(&r.url("fxlink", &format!("?timeout={T}ms")));
+    for (k, (delay, in_time)) in plan.iter().enumerate() {
+        let name = format!("D{}", 100 + k);
+        match read_one(d.as_mut(), &name) {
+            Ok(v) => {
+                assert_eq!(v, 100 + k as i64, "{name} read as another register's value");
+                assert!(in_time, "{name}: answered after {delay}/10 T, yet taken");
+            }
+            Err(e) => {
+                assert!(!in_time, "{name}: {e}");
+                assert_eq!(e.kind, ErrorKind::Link, "{e}");
+                assert!(e.message.contains(&format!("no reply to WR of 1 point(s) from D0{}", 100 + k)), "{e}");
+                if *delay < 20 {
+                    assert!(e.message.contains("came later and were dropped"), "{e}");
+                    assert!(e.hint.as_deref().unwrap().contains("timeout=400ms"), "{e:?}");
+                } else {
+                    // The reply arrives while the driver is idle; it waits for the next read.
+                    std::thread::sleep(Duration::from_millis(3 * T));
+                }
+            }
+        }
+    }
+    let seen = r.seen();
+    assert_eq!(seen.len(), plan.len(), "a timeout is not resent: {seen:?}");
+    assert!(seen.iter().all(|q| q.sum_ok && q.cmd == "WR" && q.count == 1));
+}
+
+// Seed 004, computer link: the reply repeats the request's station number ("站号"); a reply
+// from another station is not this station's answer.
+#[test]
+fn a_reply_from_another_station_is_never_taken() {
+    // Station 5 is asked; station 3 answers the first request of each read (with its own D100,
+    // 9999), station 5 the resend. Then station 3 answers everything.
+    let only_3 = Arc::new(AtomicBool::new(false));
+    let flag = only_3.clone();
+    let r = responder(false, move |q, k| {
+        let from = if flag.load(Ordering::SeqCst) || k % 2 == 0 { 3 } else { q.station };
+        let reply = match q.cmd.as_str() {
+            "WR" if from == 3 => link_data(3, &"270F".repeat(q.count)),
+            "WR" => link_data(from, &words(q.dev, q.count)),
+            _ => link_ack(from),
+        };
+        vec![Act::Send(reply)]
+    });
+    let mut d = open(&r.url("fxlink", "?station=5"));
+    for k in 0..3 {
+        assert_eq!(read_one(d.as_mut(), &format!("D{}", 100 + k)).unwrap(), 100 + k as i64);
+    }
+    assert_eq!(r.seen().len(), 6, "each read resent once");
+    assert!(r.seen().iter().all(|q| q.station == 5 && q.sum_ok));
+    only_3.store(true, Ordering::SeqCst);
+    let e = read_one(d.as_mut(), "D100").unwrap_err();
+    assert_eq!(e.kind, ErrorKind::Link, "{e}");
+    assert!(e.message.contains("a reply from station 3") && e.message.contains("station 5"), "{e}");
+    assert!(e.message.contains("WR of 1 point(s) from D0100") && e.message.contains("4 attempts"), "{e}");
+    assert!(e.hint.as_deref().unwrap().contains("D8121"), "{e:?}");
+    // Station 3's ACK does not confirm station 5's write.
+    let o = ops(d.as_ref(), &["D100"]);
+    let e = d.write(&[(o[0], Value::Int(1))]).unwrap_err();
+    assert_eq!(e.kind, ErrorKind::Link, "{e}");
+    assert!(e.message.contains("WW of 1 value(s) at D0100"), "{e}");
+    assert_eq!(r.seen().len(), 6 + 4 + 4);
+}
+
+// Seed 004, computer link: a write is acknowledged with ACK; an error is answered NAK with its
+// code ("若发送码有误，则有以下回应"). A write is done only on ACK from the addressed station.
+#[test]
+fn a_refused_or_unconfirmed_write_never_reports_success() {
+    // By request: NAK 06, then a stale read reply to every write, then NAK 02 (sum) to all.
+    let r = responder(false, |q, k| {
+        let reply = match k {
+            0 => link_nak(q.station, 0x06),
+            1..=4 => link_data(q.station, &words(100, 1)),
+            _ => link_nak(q.station, 0x02),
+        };
+        vec![Act::Send(reply)]
+    });
+    let mut d = open(&r.url("fxlink", ""));
+    let o = ops(d.as_ref(), &["D100", "M500"]);
+    let e = d.write(&[(o[0], Value::Int(5))]).unwrap_err();
+    assert_eq!(e.kind, ErrorKind::Refused, "{e}");
+    assert!(e.message.contains("NAK 06H to WW of 1 value(s) at D0100"), "{e}");
+    assert_eq!(r.seen().len(), 1, "a device-number error is not resent");
+    let e = d.write(&[(o[1], Value::Bool(true))]).unwrap_err();
+    assert_eq!(e.kind, ErrorKind::Link, "{e}");
+    assert!(e.message.contains("BW of 1 point(s) at M0500") && e.message.contains("where ACK should be"), "{e}");
+    assert_eq!(r.seen().len(), 5);
+    let e = d.write(&[(o[0], Value::Int(5))]).unwrap_err();
+    assert_eq!(e.kind, ErrorKind::Refused, "{e}");
+    assert!(e.message.contains("NAK 02H") && e.message.contains("sum check"), "{e}");
+    assert_eq!(r.seen().len(), 9, "a sum-check NAK is resent three times");
+    assert!(r.seen().iter().all(|q| q.sum_ok), "the frames were right: the refusals are the responder's");
+    drop(d);
+    // The shell says so too: no `ok` for a refused or unconfirmed write.
+    let r = responder(false, |q, k| {
+        vec![Act::Send(if k == 0 { link_nak(q.station, 6) } else { link_data(q.station, "0064") })]
+    });
+    for kind in ["refused", "link"] {
+        let out = run(&["--json", "-d", &format!("l={}", r.url("fxlink", "")), "-c", "use l; set D100=5"], "");
+        let lines = json_lines(&out);
+        let set = lines.iter().find(|l| l["cmd"] == "set").unwrap_or_else(|| panic!("{lines:?}"));
+        assert_eq!(set["ok"], false, "{lines:?}");
+        assert_eq!(set["error"]["kind"], kind, "{lines:?}");
+        assert!(!out.status.success());
+    }
+}
+
+// Seed 004: the programming port answers ENQ with ACK when ready and NAK on error ("通过ENQ、
+// ACK和NAK上位机协调与PLC的通信应答"), at 9600 baud 7E1 ("传输速率固定为9600bps，奇偶校验位采用
+// 偶校验 … 七位有效数据"). 00H is what a serial port delivers for a character with a parity
+// error: noise, not NAK.
+#[test]
+fn noise_is_never_called_a_nak() {
+    let burst = Duration::from_millis(31);
+    // A 31 ms burst of 00H before the ACK: the handshake and the read go through, nothing resent.
+    let r = responder(true, move |q, _| match q.cmd.as_str() {
+        "ENQ" => vec![Act::Noise(burst, 9600), Act::Send(vec![ACK])],
+        "0" => vec![Act::Send(port_data(q.dev, q.count))],
+        _ => vec![Act::Send(vec![NAK])],
+    });
+    let mut d = open(&r.url("fx", ""));
+    assert_eq!(read_one(d.as_mut(), "D123").unwrap(), 123);
+    let cmds: Vec<String> = r.seen().iter().map(|q| q.cmd.clone()).collect();
+    assert_eq!(cmds, ["ENQ", "0"]);
+    drop(d);
+    // Nothing but the burst: reported as noise after four paced ENQs, never as NAK.
+    let r = responder(true, move |_, _| vec![Act::Noise(burst, 9600)]);
+    let mut d = open(&r.url("fx", ""));
+    let e = read_one(d.as_mut(), "D123").unwrap_err();
+    assert_eq!(e.kind, ErrorKind::Link, "{e}");
+    assert!(e.message.contains("noise on the line") && e.message.contains("× 00H") && e.message.contains("ENQ"), "{e}");
+    assert!(!e.message.contains("NAK"), "{e}");
+    let seen = r.seen();
+    assert_eq!(seen.len(), 4, "{seen:?}");
+    for w in seen.windows(2) {
+        let pause = w[1].at - w[0].at;
+        assert!(pause > burst + Duration::from_millis(20), "ENQ resent {pause:?} after the last into the noise");
+    }
+    drop(d);
+    // A real NAK stays a NAK.
+    let r = responder(true, |_, _| vec![Act::Send(vec![NAK])]);
+    let mut d = open(&r.url("fx", ""));
+    let e = read_one(d.as_mut(), "D123").unwrap_err();
+    assert!(e.message.contains("answered ENQ with NAK 4 times"), "{e}");
+    drop(d);
+    // The computer link: noise before a reply is set aside; noise alone is noise.
+    let noise_only = Arc::new(AtomicBool::new(false));
+    let flag = noise_only.clone();
+    let r = responder(false, move |q, _| {
+        let mut acts = vec![Act::Noise(burst, 9600)];
+        if !flag.load(Ordering::SeqCst) {
+            acts.push(Act::Send(link_data(q.station, &words(q.dev, q.count))));
+        }
+        acts
+    });
+    let mut d = open(&r.url("fxlink", ""));
+    assert_eq!(read_one(d.as_mut(), "D7").unwrap(), 7);
+    assert_eq!(r.seen().len(), 1);
+    noise_only.store(true, Ordering::SeqCst);
+    let e = read_one(d.as_mut(), "D7").unwrap_err();
+    assert!(e.message.contains("noise on the line") && !e.message.contains("NAK"), "{e}");
+    assert_eq!(r.seen().len(), 5);
+}
+
+/// Characters of a computer-link WR of `count` words: the request (`ENQ`, station 2, PC 2,
+/// `WR`, wait 1, device 5, count 2, sum 2) and the reply (`STX`, station 2, PC 2, 4 per word,
+/// `ETX`, sum 2).
+fn wr_chars(count: usize) -> (usize, usize) {
+    (17, 8 + 4 * count)
+}
+
+// Seed 004, computer link: the message wait is 0–150 ms as one hex digit ("等待延时为0-150毫秒，
+// 以十六进制0H-FH表示"); a WR reads up to 64 words. The timeout follows the baud rate, the
+// frames' sizes and the wait: a 64-word WR at 4800 baud is ~550 ms of reply alone.
+#[test]
+fn timeouts_scale_with_the_baud_rate_and_the_frame_size() {
+    // A responder that honours the wait digit and sends its reply at the line's pace.
+    for baud in [4800u32, 9600, 19200] {
+        let r = responder(false, move |q, _| {
+            vec![
+                Act::Sleep(Duration::from_millis(10 * q.wait as u64)),
+                Act::Paced(link_data(q.station, &words(q.dev, q.count)), baud),
+            ]
+        });
+        let mut d = open(&r.url("fxlink", &format!("?baud={baud}&wait=2")));
+        let o = ops(d.as_ref(), &["D0..D63"]);
+        let start = Instant::now();
+        let v = d.read(&o).unwrap_or_else(|e| panic!("{baud} baud: {e}"));
+        let took = start.elapsed();
+        assert_eq!(v, (0..64).map(Value::Int).collect::<Vec<_>>(), "{baud} baud");
+        let reply = Duration::from_secs_f64(wr_chars(64).1 as f64 * 10.0 / baud as f64);
+        assert!(took >= reply, "{baud} baud: the reply was paced ({took:?} < {reply:?})");
+        assert_eq!(r.seen().len(), 1, "{baud} baud: answered in time, not resent");
+    }
+    // A responder that never answers: the timeout each read waited, from the messages.
+    let cases: Vec<(u32, usize, u8, &str)> = vec![
+        (4800, 64, 0, ""),
+        (9600, 64, 0, ""),
+        (19200, 64, 0, ""),
+        (9600, 1, 0, ""),
+        (9600, 1, 5, ""),
+        (4800, 64, 0, "&timeout=150ms"),
+    ];
+    let handles: Vec<_> = cases
+        .iter()
+        .map(|&(baud, count, wait, extra)| {
+            let extra = extra.to_string();
+            std::thread::spawn(move || {
+                let r = responder(false, |_, _| Vec::new());
+                let mut d = open(&r.url("fxlink", &format!("?baud={baud}&wait={wait}{extra}")));
+                let o = ops(d.as_ref(), &[&format!("D0..D{}", count - 1)]);
+                let start = Instant::now();
+                let e = d.read(&o).unwrap_err();
+                let took = start.elapsed();
+                assert_eq!(e.kind, ErrorKind::Link, "{e}");
+                let ms = within_ms(&e.message);
+                assert!(took >= Duration::from_millis(ms), "waited {took:?}, said {ms} ms");
+                (ms, e.message.clone())
+            })
+        })
+        .collect();
+    let got: Vec<(u64, String)> = handles.into_iter().map(|h| h.join().unwrap()).collect();
+    let ms = |i: usize| got[i].0 as f64;
+    let wire = |chars: usize, baud: u32| chars as f64 * 10_000.0 / baud as f64;
+    let (q64, r64) = wr_chars(64);
+    let (q1, r1) = wr_chars(1);
+    let near = |a: f64, b: f64, what: &str| assert!((a - b).abs() <= 2.0, "{what}: {a} vs {b} ms ({got:?})");
+    assert!(ms(0) > ms(1) && ms(1) > ms(2), "{got:?}");
+    assert!(ms(0) >= wire(q64 + r64, 4800), "a 64-word WR at 4800 baud has time to arrive: {got:?}");
+    near(ms(1) - ms(2), wire(q64 + r64, 9600) - wire(q64 + r64, 19200), "9600 → 19200 baud");
+    near(ms(0) - ms(1), wire(q64 + r64, 4800) - wire(q64 + r64, 9600), "4800 → 9600 baud");
+    near(ms(1) - ms(3), wire(r64 - r1, 9600), "64 words → 1 word");
+    let _ = q1;
+    near(ms(4) - ms(3), 50.0, "wait digit 5");
+    assert_eq!(got[5].0, 150, "timeout= overrides: {}", got[5].1);
+    assert!(got[0].1.contains("281 characters at 4800 7E1"), "{}", got[0].1);
+}
+
+// Seed 004: a resend after a bad exchange ("如接收的信息有误，则重新读取"). A reply still coming
+// in when the timeout runs out is not a reply, nor is its tail: the resend waits until the line
+// has been quiet for at least the frame time.
+#[test]
+fn resends_wait_for_a_quiet_line() {
+    // The first reply stalls half way, past the timeout (a 64-word WR at 9600 baud: 543 ms),
+    // and its tail comes later; the resend waits until the tail is over and the line has been
+    // quiet for the frame time, and its reply is used.
+    let baud = 9600;
+    let r = responder(false, move |q, k| {
+        let reply = link_data(q.station, &words(q.dev, q.count));
+        if k > 0 {
+            return vec![Act::Paced(reply, baud)];
+        }
+        let (head, tail) = reply.split_at(reply.len() / 2);
+        vec![Act::Paced(head.to_vec(), baud), Act::Sleep(Duration::from_millis(600)), Act::Paced(tail.to_vec(), baud)]
+    });
+    let mut d = open(&r.url("fxlink", ""));
+    let o = ops(d.as_ref(), &["D0..D63"]);
+    assert_eq!(d.read(&o).unwrap(), (0..64).map(Value::Int).collect::<Vec<_>>());
+    let (seen, ends) = (r.seen(), r.ends());
+    assert_eq!(seen.len(), 2, "{seen:?}");
+    let quiet = seen[1].at.saturating_duration_since(ends[0]);
+    assert!(quiet >= Duration::from_millis(200), "the resend went out {quiet:?} after the tail ended");
+    drop(d);
+    // A timeout shorter than the reply's wire time cuts every reply short: reported as an
+    // incomplete reply, each resend after the line fell quiet.
+    let baud = 19200;
+    let r = responder(false, move |q, _| vec![Act::Paced(link_data(q.station, &words(q.dev, q.count)), baud)]);
+    // 264 characters at 19200 baud take 137 ms; a 60 ms timeout cuts every reply short.
+    let mut d = open(&r.url("fxlink", &format!("?baud={baud}&timeout=60ms")));
+    let o = ops(d.as_ref(), &["D0..D63"]);
+    let e = d.read(&o).unwrap_err();
+    assert_eq!(e.kind, ErrorKind::Link, "{e}");
+    assert!(e.message.contains("incomplete reply") && e.message.contains("4 attempts"), "{e}");
+    let (seen, ends) = (r.seen(), r.ends());
+    assert_eq!(seen.len(), 4, "{seen:?}");
+    for k in 1..4 {
+        let quiet = seen[k].at.saturating_duration_since(ends[k - 1]);
+        assert!(quiet >= Duration::from_millis(100), "resend {k} went out {quiet:?} after the line fell quiet");
+    }
 }

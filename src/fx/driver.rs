@@ -10,13 +10,27 @@
 //!   as bytes and any other group bit by bit — never a read-modify-write of the PLC's bytes.
 //! - Computer link: bits read with BR (≤ 256 points a frame), words with WR (≤ 64); writes
 //!   with BW and WW, and WT when single words at scattered devices are written together.
-//! - A NAK or a reply with a bad sum check is retried up to three times (the seed's host
-//!   program: "如重复3次仍不行则显示错误信息"), then reported: NAK as the PLC refusing
-//!   (kind `refused`, the link's error code in words), a bad sum as a link error. On the
-//!   link only NAKs that a resend can cure (sum check 02, protocol 03) are retried.
-//!   Silence is reported at once with what to check.
+//! - Transactions sit on the line's timing ([`LineSettings`]): before every request the line
+//!   must be quiet for a few character times (a late reply or a tail of noise is dropped,
+//!   never read as this request's reply); each request's timeout is both frames' time on the
+//!   wire plus the link's message wait plus the PLC's turnaround ([`TURNAROUND`]; a device
+//!   server adds [`NETWORK_ALLOWANCE`]), unless the URL's `timeout=` says otherwise; after
+//!   silence the line must stay quiet for one more timeout, so a late reply is dropped there.
+//! - A reply must fit its request: the station and PC number of the request, a data frame
+//!   of the asked length for a read, ACK for a write (a write is done only on ACK from the
+//!   addressed station). Anything else is "something else" — named, resent, reported as a
+//!   link error, never success. Bytes in front of a reply that cannot start one (00H from
+//!   parity errors, bytes with bit 7, stray characters) are noise: set aside, and reported as
+//!   noise when nothing else comes; a NAK is only a NAK character where the reply starts.
+//! - A NAK, a bad sum check, noise or a reply that does not fit is resent up to three times
+//!   (the seed's host program: "如重复3次仍不行则显示错误信息"), each resend after the line has
+//!   been quiet for at least the frame time; then reported: NAK as the PLC refusing (kind
+//!   `refused`, the link's error code in words), the rest as link errors listing what each
+//!   attempt got. On the link only NAKs that a resend can cure (sum check 02, protocol 03)
+//!   are retried. Silence is reported at once with what to check.
 //!
-//! URL parameters: `model` (FX2N), `timeout` (500ms), `retries` (3); `fx:` `baud` (9600);
+//! URL parameters: `model` (FX2N), `timeout` (computed from the line; a number is ms;
+//! `auto`), `retries` (3); `fx:` `baud` (9600);
 //! `fxlink:` `station` (0), `pc` (FF), `wait` (0–15, ×10 ms), `baud` (9600), `bits` (7),
 //! `parity` (e/o/n), `stop` (1/2), `sum` (1), `format` (1 or 4), `xy` (octal, or decimal for
 //! a PLC that numbers X/Y in link frames as the seed literally says). `sim-fx:MODEL` takes
@@ -40,18 +54,175 @@ use std::collections::HashMap;
 use std::sync::{Arc, Mutex, OnceLock, Weak};
 use std::time::{Duration, Instant};
 
-/// Default reply timeout: a 64-byte read reply is 132 characters, 138 ms at 9600 baud.
-pub const DEFAULT_TIMEOUT: Duration = Duration::from_millis(500);
+/// What the PLC may take to turn a request round, on top of both frames' time on the wire
+/// and the message wait: it answers in the END processing of a scan (a scan longer than the
+/// watchdog, D8000 = 200 ms by default, stops the PLC), plus a USB adapter's and the
+/// operating system's latency.
+pub const TURNAROUND: Duration = Duration::from_millis(250);
+/// What a serial device server (raw TCP, RFC 2217) adds to every exchange.
+pub const NETWORK_ALLOWANCE: Duration = Duration::from_millis(300);
 /// Resends after a NAK or a bad sum check (seed 004: three).
 pub const DEFAULT_RETRIES: u32 = 3;
+/// The line when nothing says otherwise (the in-process simulator): the programming port's
+/// 9600 baud 7E1 (seed 004, FX2 article: "传输速率固定为9600bps，奇偶校验位采用偶校验 … 七位有效数据").
+pub const DEFAULT_LINE: LineSettings = LineSettings { baud: 9600, data_bits: 7, parity: Parity::Even, stop_bits: 1 };
+/// The longest reply of either protocol, in characters: a link BR of 256 points or WR of 64
+/// words, with sum check and CR LF (the programming port's 64-byte read reply is 132).
+const LONGEST_REPLY: usize = 1 + 4 + 256 + 1 + 2 + 2;
+/// A frame that grows past this without ending is garbage, not a reply.
+const FRAME_CAP: usize = 2 * LONGEST_REPLY;
+/// Bounds of the quiet awaited before a request: a few character times.
+const GAP_MIN: Duration = Duration::from_millis(5);
+const GAP_MAX: Duration = Duration::from_millis(50);
+/// Least quiet awaited before a resend (at least the frame time, and never less than this).
+const RESEND_MIN: Duration = Duration::from_millis(20);
+/// Longest quiet awaited after silence, for a late reply to be dropped.
+const LATE_MAX: Duration = Duration::from_secs(2);
 
-/// What came back for one frame.
+/// What the request must be answered with.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Expect {
+    /// A data frame of `chars` characters in all, `data` of them the data (port: bytes).
+    Data { chars: usize, data: usize },
+    /// ACK (`chars`: 1 on the port, `ACK station pc` on the link).
+    Ack { chars: usize },
+}
+
+impl Expect {
+    fn chars(self) -> usize {
+        match self {
+            Expect::Data { chars, .. } | Expect::Ack { chars } => chars,
+        }
+    }
+}
+
+/// What came back for one frame, judged against the request.
+#[derive(Clone, Debug, PartialEq)]
 enum Got {
+    /// The data asked for.
     Data(Vec<u8>),
+    /// ACK from the addressed station, to a write.
     Ack,
+    /// NAK from the addressed station (the link's error code).
     Nak(Option<u8>),
+    /// A reply whose sum check fails.
     BadSum(String),
-    Silent(Vec<u8>),
+    /// A reply that does not answer this request: another station's, the wrong kind (a data
+    /// frame to a write, ACK to a read), another length, garbled. In words.
+    Other(String),
+    /// Nothing but noise within the timeout.
+    Noise(Vec<u8>),
+    /// A reply that began but was not complete when the timeout ran out.
+    Partial(Vec<u8>),
+    /// Nothing; `late` characters arrived in the quiet awaited afterwards (and were dropped).
+    Silent { late: usize },
+}
+
+impl Got {
+    /// A few words for the list of attempts in a message.
+    fn label(&self) -> String {
+        match self {
+            Got::Data(_) => "data".into(),
+            Got::Ack => "ACK".into(),
+            Got::Nak(None) => "NAK".into(),
+            Got::Nak(Some(c)) => format!("NAK {c:02X}H"),
+            Got::BadSum(_) => "bad sum check".into(),
+            Got::Other(_) => "another reply".into(),
+            Got::Noise(_) => "noise".into(),
+            Got::Partial(_) => "an incomplete reply".into(),
+            Got::Silent { .. } => "silence".into(),
+        }
+    }
+}
+
+/// What arrived for one request: noise in front of the reply, set aside, and the reply from
+/// its first character.
+#[derive(Default)]
+struct Heard {
+    noise: Vec<u8>,
+    frame: Vec<u8>,
+    complete: bool,
+}
+
+/// `; 12 characters came later …` when a late reply was dropped.
+fn late_text(late: usize) -> String {
+    if late == 0 {
+        return String::new();
+    }
+    format!("; {late} characters came later and were dropped (a late reply is never taken for the next request's)")
+}
+
+/// Bytes for a message: `31 × 00H` for a run of one byte, else hex (the first 12 and the count).
+fn show(bytes: &[u8]) -> String {
+    match bytes {
+        [first, rest @ ..] if bytes.len() >= 4 && rest.iter().all(|b| b == first) => {
+            format!("{} × {first:02X}H", bytes.len())
+        }
+        _ if bytes.len() <= 12 => trace::hex_bytes(bytes),
+        _ => format!("{} … ({} characters)", trace::hex_bytes(&bytes[..12]), bytes.len()),
+    }
+}
+
+/// How long the programming-port reply at the start of `f` is (`f` starts with STX, ACK or
+/// NAK): ACK and NAK are one character, a data frame ends two characters after ETX.
+fn port_len(f: &[u8]) -> Option<usize> {
+    match f.first()? {
+        &port::STX => f
+            .iter()
+            .position(|b| *b == port::ETX)
+            .map(|p| p + 3)
+            .filter(|n| f.len() >= *n)
+            .or((f.len() >= FRAME_CAP).then_some(f.len())),
+        _ => Some(1),
+    }
+}
+
+/// Judges a complete programming-port reply (seed 004: a read is answered `STX data ETX sum`,
+/// a write or force ACK, a refused frame NAK — "如传送的命令有错误，PLC返回NAK信号").
+fn classify_port(f: &[u8], expect: Expect) -> Got {
+    match (f[0], expect) {
+        (NAK, _) => Got::Nak(None),
+        (ACK, Expect::Ack { .. }) => Got::Ack,
+        (ACK, Expect::Data { .. }) => Got::Other("ACK where the data should be".into()),
+        (_, Expect::Ack { .. }) => Got::Other(format!("a data frame ({}) where ACK should be", show(f))),
+        (_, Expect::Data { data, .. }) => match port::decode_read_reply(f, data) {
+            Ok(d) => Got::Data(d),
+            Err(port::FrameError::BadSum { got, want }) => {
+                Got::BadSum(format!("sum check {got:02X}, the characters add up to {want:02X}"))
+            }
+            Err(port::FrameError::Malformed(m)) => Got::Other(format!("a garbled frame ({}): {m}", show(f))),
+        },
+    }
+}
+
+/// Judges a complete computer-link reply (seed 004, "FX系列PLC专用协议通信指令格式详解": the
+/// reply repeats the station and PC number; data comes as `STX … ETX sum`, a write is
+/// acknowledged with ACK, an error is NAK with its code — "若发送码有误，则有以下回应"). A link
+/// reply carries no device address, so the station, the kind and the length are all there is
+/// to tell this request's reply from another's.
+fn classify_link(f: &[u8], h: Header, s: Settings, expect: Expect) -> Got {
+    match (fxlink::decode_reply(f, h, s), expect) {
+        (Ok(Reply::Data(d)), Expect::Data { data, .. }) if d.len() == data => Got::Data(d),
+        (Ok(Reply::Data(d)), Expect::Data { data, .. }) => Got::Other(format!(
+            "a data frame with {} characters of data where {data} were asked for (the reply to another request)",
+            d.len()
+        )),
+        (Ok(Reply::Data(_)), Expect::Ack { .. }) => Got::Other(format!(
+            "a data frame ({}) where ACK should be: a write is done only when the station answers ACK",
+            show(f)
+        )),
+        (Ok(Reply::Ack), Expect::Ack { .. }) => Got::Ack,
+        (Ok(Reply::Ack), Expect::Data { .. }) => Got::Other("ACK where the data should be".into()),
+        (Ok(Reply::Nak(c)), _) => Got::Nak(Some(c)),
+        (Err(fxlink::ReplyError::BadSum { got, want }), _) => {
+            Got::BadSum(format!("sum check {got:02X}, the characters add up to {want:02X}"))
+        }
+        (Err(fxlink::ReplyError::Station { station, pc }), _) => Got::Other(format!(
+            "a reply from station {station} (PC number {pc:02X}) where station {} (PC number {:02X}) should answer",
+            h.station, h.pc
+        )),
+        (Err(fxlink::ReplyError::Malformed(m)), _) => Got::Other(format!("a garbled frame ({}): {m}", show(f))),
+    }
 }
 
 /// Protocol state.
@@ -66,11 +237,18 @@ pub struct Driver {
     space: FxSpace,
     line: SharedLine,
     mode: Mode,
-    timeout: Duration,
+    /// The line's speed and character format, which the timeouts and pauses follow.
+    serial: LineSettings,
+    /// Added to every timeout: a device server's network.
+    allowance: Duration,
+    /// The URL's `timeout=`, when given: it replaces the computed timeout.
+    timeout: Option<Duration>,
     retries: u32,
     requests: u64,
-    /// Frames resent after a NAK or a bad sum.
+    /// Frames resent after a NAK, a bad sum, noise or a reply that did not fit.
     pub resent: u64,
+    /// Characters dropped while waiting for the line to be quiet (late replies, noise).
+    pub dropped: u64,
 }
 
 impl Driver {
@@ -91,28 +269,138 @@ impl Driver {
     }
 
     fn new(line: SharedLine, space: FxSpace, mode: Mode, info: DeviceInfo) -> Driver {
-        Driver { info, space, line, mode, timeout: DEFAULT_TIMEOUT, retries: DEFAULT_RETRIES, requests: 0, resent: 0 }
+        Driver {
+            info,
+            space,
+            line,
+            mode,
+            serial: DEFAULT_LINE,
+            allowance: Duration::ZERO,
+            timeout: None,
+            retries: DEFAULT_RETRIES,
+            requests: 0,
+            resent: 0,
+            dropped: 0,
+        }
     }
 
-    /// Collects bytes until `complete` says how long the reply is, or the deadline passes.
+    /// Times the driver by its line: `serial` is the line's speed and character format;
+    /// `networked`, a line through a device server (its delay is added to every timeout).
+    pub fn on_line(mut self, serial: LineSettings, networked: bool) -> Driver {
+        self.serial = serial;
+        self.allowance = if networked { NETWORK_ALLOWANCE } else { Duration::ZERO };
+        self
+    }
+
+    /// The message wait (link only): the wait digit 0H–FH in 10 ms steps (seed 004:
+    /// "等待延时为0-150毫秒，以十六进制0H-FH表示").
+    fn wait(&self) -> Duration {
+        match &self.mode {
+            Mode::Link { header, .. } => Duration::from_millis(10 * u64::from(header.wait)),
+            Mode::Port { .. } => Duration::ZERO,
+        }
+    }
+
+    /// The reply timeout of a request of `req` characters answered by `reply`: both frames'
+    /// time on the wire at the line's speed, the message wait and the PLC's turnaround
+    /// ([`TURNAROUND`], and a device server's delay) — or the URL's `timeout=`.
+    fn timeout_for(&self, req: usize, reply: usize) -> Duration {
+        self.timeout.unwrap_or_else(|| self.serial.time_of(req + reply) + self.wait() + TURNAROUND + self.allowance)
+    }
+
+    /// `543 ms (281 characters at 9600 7E1: 293 ms on the wire, …)`: the timeout and where it
+    /// comes from, for messages.
+    fn timeout_text(&self, req: usize, reply: usize) -> String {
+        let t = self.timeout_for(req, reply).as_millis();
+        if self.timeout.is_some() {
+            return format!("{t} ms (timeout=)");
+        }
+        let mut parts = vec![format!(
+            "{} characters at {}: {} ms on the wire",
+            req + reply,
+            self.serial,
+            self.serial.time_of(req + reply).as_millis()
+        )];
+        if !self.wait().is_zero() {
+            parts.push(format!("message wait {} ms", self.wait().as_millis()));
+        }
+        parts.push(format!("{} ms for the PLC to answer", TURNAROUND.as_millis()));
+        if !self.allowance.is_zero() {
+            parts.push(format!("{} ms for the device server", self.allowance.as_millis()));
+        }
+        format!("{t} ms ({})", parts.join(", "))
+    }
+
+    /// The quiet awaited before a request: a few character times.
+    fn gap(&self) -> Duration {
+        self.serial.time_of(4).clamp(GAP_MIN, GAP_MAX)
+    }
+
+    /// The quiet awaited before a resend: at least the longer frame's time on the wire.
+    fn resend_gap(&self, req: usize, reply: usize) -> Duration {
+        self.serial.time_of(req.max(reply)).max(RESEND_MIN).max(self.gap())
+    }
+
+    /// How long a line may keep sending before it counts as busy: the longest reply, and the
+    /// PLC's turnaround.
+    fn busy_limit(&self) -> Duration {
+        self.serial.time_of(LONGEST_REPLY) + TURNAROUND + self.allowance
+    }
+
+    /// Waits until the line has been quiet for `gap`, dropping what arrives; a line still
+    /// sending after `limit` is reported (another master, or a device sending on its own).
+    fn quiet(&mut self, t: &mut dyn Transport, gap: Duration, limit: Duration, what: &str) -> Result<usize> {
+        let start = Instant::now();
+        let n = t.settle(gap, limit).map_err(|e| self.io_err(e))?;
+        self.dropped += n as u64;
+        if n > 0 && start.elapsed() >= limit {
+            return Err(Error::link(format!(
+                "the line {} did not go quiet before {what}: {n} characters arrived in {} ms",
+                self.line.name,
+                limit.as_millis()
+            ))
+            .hint(match &self.mode {
+                Mode::Port { .. } => "only one program may talk to the programming port: close GX Developer, an HMI or a terminal on it; check the cable for noise",
+                Mode::Link { .. } => "plcsh must be the only master on the computer link: stop other programs polling it; check the cable for noise and the RS-485 termination",
+            }));
+        }
+        Ok(n)
+    }
+
+    /// Reads what arrives until `len` says the reply is complete, or the deadline passes.
+    /// Bytes before the first character that can start a reply (STX, ACK, NAK) are noise, set
+    /// aside: a burst of 00H (a character with a parity or framing error) or the tail of an
+    /// earlier frame is neither a reply nor a NAK.
     fn collect(
         t: &mut dyn Transport,
         deadline: Instant,
-        complete: &dyn Fn(&[u8]) -> Option<usize>,
-    ) -> std::io::Result<Vec<u8>> {
-        let mut got = Vec::new();
+        len: &dyn Fn(&[u8]) -> Option<usize>,
+    ) -> std::io::Result<Heard> {
+        let mut heard = Heard::default();
         let mut buf = [0u8; 256];
         loop {
-            if let Some(n) = complete(&got) {
-                got.truncate(n);
-                return Ok(got);
+            if !heard.frame.is_empty() {
+                if let Some(n) = len(&heard.frame) {
+                    heard.frame.truncate(n);
+                    heard.complete = true;
+                    return Ok(heard);
+                }
             }
             let left = deadline.saturating_duration_since(Instant::now());
+            if left.is_zero() {
+                return Ok(heard);
+            }
             let k = t.recv(&mut buf, left)?;
             if k == 0 {
-                return Ok(got);
+                return Ok(heard);
             }
-            got.extend_from_slice(&buf[..k]);
+            for &b in &buf[..k] {
+                if heard.frame.is_empty() && !fxlink::reply_start(b) {
+                    heard.noise.push(b);
+                } else {
+                    heard.frame.push(b);
+                }
+            }
         }
     }
 
@@ -120,167 +408,224 @@ impl Driver {
         Error::link(format!("serial I/O on {} failed", self.line.name)).cause(e)
     }
 
-    /// The ENQ/ACK handshake (programming port).
-    fn enq(&mut self) -> Result<()> {
-        let name = self.line.name.clone();
-        for _ in 0..=self.retries {
-            let mut t = self.line.transport.lock().unwrap_or_else(|p| p.into_inner());
-            t.discard_input().map_err(|e| self.io_err(e))?;
-            trace::frame(&name, Dir::Sent, &[ENQ]);
-            t.send(&[ENQ]).map_err(|e| self.io_err(e))?;
-            let got = Self::collect(t.as_mut(), Instant::now() + self.timeout, &|b| (!b.is_empty()).then_some(1))
-                .map_err(|e| self.io_err(e))?;
-            drop(t);
-            if !got.is_empty() {
-                trace::frame(&name, Dir::Received, &got);
-            }
-            match got.first() {
-                Some(&ACK) => {
-                    self.mode = Mode::Port { synced: true };
-                    return Ok(());
-                }
-                Some(_) => continue,
-                None => {
-                    return Err(Error::link(format!("no ACK to ENQ on {name} within {} ms", self.timeout.as_millis()))
-                        .hint(
-                            "check the cable and converter, that this is the PLC's programming port, and 9600 baud 7E1",
-                        ))
-                }
-            }
-        }
-        Err(Error::link(format!("the PLC answered ENQ with NAK {} times on {name}", self.retries + 1))
-            .hint("another program may be talking to the programming port"))
-    }
-
-    /// Sends one frame and reads its reply (one attempt).
-    fn attempt(&mut self, frame: &[u8], expect: usize) -> Result<Got> {
-        self.requests += 1;
-        let name = self.line.name.clone();
-        let mut t = self.line.transport.lock().unwrap_or_else(|p| p.into_inner());
-        t.discard_input().map_err(|e| self.io_err(e))?;
-        trace::frame(&name, Dir::Sent, frame);
+    /// One frame on the line and its reply (one attempt). First the line must be quiet — a
+    /// few character times before a first attempt, at least the frame time before a resend —
+    /// so that nothing left on it (a late reply, a tail of noise) is read as this request's
+    /// reply; then the frame goes out and the reply is read within the request's timeout,
+    /// noise in front of it set aside. After silence the line must stay quiet for one more
+    /// timeout: a late reply is dropped there, never taken for the next request's.
+    fn exchange(&mut self, frame: &[u8], expect: Expect, resend: bool, what: &str) -> Result<Got> {
+        let line = self.line.clone();
+        let mut guard = line.transport.lock().unwrap_or_else(|p| p.into_inner());
+        let t = guard.as_mut();
+        let gap = if resend { self.resend_gap(frame.len(), expect.chars()) } else { self.gap() };
+        self.quiet(t, gap, gap + self.busy_limit(), what)?;
+        trace::frame(&line.name, Dir::Sent, frame);
         t.send(frame).map_err(|e| self.io_err(e))?;
-        let deadline = Instant::now() + self.timeout;
-        let got = match &self.mode {
-            Mode::Port { .. } => Self::collect(t.as_mut(), deadline, &|b: &[u8]| match b.first() {
-                None => None,
-                Some(&NAK) | Some(&ACK) => Some(1),
-                Some(_) => (b.len() >= expect).then_some(expect),
-            }),
+        let timeout = self.timeout_for(frame.len(), expect.chars());
+        let deadline = Instant::now() + timeout;
+        let heard = match &self.mode {
+            Mode::Port { .. } => Self::collect(t, deadline, &port_len),
             Mode::Link { settings, .. } => {
                 let s = *settings;
-                Self::collect(t.as_mut(), deadline, &move |b: &[u8]| fxlink::reply_len(b, s))
+                Self::collect(t, deadline, &move |f: &[u8]| {
+                    fxlink::reply_len(f, s).or((f.len() >= FRAME_CAP).then_some(f.len()))
+                })
             }
         }
         .map_err(|e| self.io_err(e))?;
-        drop(t);
-        if !got.is_empty() {
-            trace::frame(&name, Dir::Received, &got);
+        if !heard.noise.is_empty() || !heard.frame.is_empty() {
+            trace::frame(&line.name, Dir::Received, &[heard.noise.as_slice(), heard.frame.as_slice()].concat());
+        }
+        if heard.frame.is_empty() && heard.noise.is_empty() {
+            let late = timeout.min(LATE_MAX);
+            let late = self.quiet(t, late, 2 * late + self.serial.time_of(LONGEST_REPLY), what)?;
+            return Ok(Got::Silent { late });
         }
         Ok(match &self.mode {
-            Mode::Port { .. } => match got.first() {
-                None => Got::Silent(got),
-                Some(&NAK) => Got::Nak(None),
-                Some(&ACK) if expect == 1 => Got::Ack,
-                Some(_) if expect == 1 => Got::BadSum(format!("unexpected reply {}", trace::hex_bytes(&got))),
-                Some(_) => match port::decode_read_reply(&got, (expect - 4) / 2) {
-                    Ok(d) => Got::Data(d),
-                    Err(port::FrameError::BadSum { got: g, want }) => {
-                        Got::BadSum(format!("sum check {g:02X}, the characters add up to {want:02X}"))
-                    }
-                    Err(port::FrameError::Malformed(_)) if got.len() < expect => Got::Silent(got),
-                    Err(port::FrameError::Malformed(m)) => Got::BadSum(m.to_string()),
-                },
-            },
-            Mode::Link { header, settings } => {
-                if got.is_empty() || fxlink::reply_len(&got, *settings).is_none() {
-                    Got::Silent(got)
-                } else {
-                    match fxlink::decode_reply(&got, *header, *settings) {
-                        Ok(Reply::Data(d)) => Got::Data(d),
-                        Ok(Reply::Ack) => Got::Ack,
-                        Ok(Reply::Nak(c)) => Got::Nak(Some(c)),
-                        Err(fxlink::ReplyError::BadSum { got: g, want }) => {
-                            Got::BadSum(format!("sum check {g:02X}, the characters add up to {want:02X}"))
-                        }
-                        Err(fxlink::ReplyError::Malformed(m)) => Got::BadSum(m.to_string()),
-                    }
-                }
-            }
+            _ if heard.frame.is_empty() => Got::Noise(heard.noise),
+            _ if !heard.complete => Got::Partial(heard.frame),
+            Mode::Port { .. } => classify_port(&heard.frame, expect),
+            Mode::Link { header, settings } => classify_link(&heard.frame, *header, *settings, expect),
         })
     }
 
-    /// One exchange with retries: returns data (reads) or nothing (writes).
-    fn transact(&mut self, frame: &[u8], expect: usize, what: &str) -> Result<Vec<u8>> {
-        let mut last = String::new();
-        let mut nak = None;
+    /// The ENQ/ACK handshake (programming port; seed 004: "通过ENQ、ACK和NAK上位机协调与PLC的通信
+    /// 应答"). Only ACK opens the conversation; a NAK is a NAK character in reply, noise is
+    /// reported as noise. `after_failure`: the line just carried a failed exchange, so the
+    /// first ENQ waits as a resend does.
+    fn enq(&mut self, after_failure: bool) -> Result<()> {
+        let mut seen = Vec::new();
+        let ack = Expect::Ack { chars: 1 };
+        for attempt in 0..=self.retries {
+            match self.exchange(&[ENQ], ack, after_failure || attempt > 0, "ENQ")? {
+                Got::Ack => {
+                    self.mode = Mode::Port { synced: true };
+                    return Ok(());
+                }
+                Got::Silent { late } => {
+                    let name = &self.line.name;
+                    return Err(Error::link(format!(
+                        "no ACK to ENQ on {name} within {}{}",
+                        self.timeout_text(1, 1),
+                        late_text(late)
+                    ))
+                    .hint(if late > 0 { self.late_hint(1, 1) } else { self.silence_hint() }));
+                }
+                got => seen.push(got),
+            }
+        }
+        if seen.iter().all(|g| *g == Got::Nak(None)) {
+            return Err(Error::link(format!(
+                "the PLC answered ENQ with NAK {} times on {}",
+                seen.len(),
+                self.line.name
+            ))
+            .hint("another program may be talking to the programming port"));
+        }
+        Err(self.failure("ENQ", &seen, (1, 1)))
+    }
+
+    /// One exchange with retries: returns data (reads) or nothing (writes). A read succeeds
+    /// only on a data frame that fits it, a write only on ACK from the addressed station.
+    fn transact(&mut self, frame: &[u8], expect: Expect, what: &str) -> Result<Vec<u8>> {
+        let mut seen: Vec<Got> = Vec::new();
         for attempt in 0..=self.retries {
             if attempt > 0 {
                 self.resent += 1;
             }
             if let Mode::Port { synced: false } = self.mode {
-                self.enq()?;
+                self.enq(attempt > 0)?;
             }
-            match self.attempt(frame, expect)? {
-                Got::Data(d) => return Ok(d),
-                Got::Ack => return Ok(Vec::new()),
-                Got::Nak(code) => {
-                    nak = Some(code);
-                    last = "NAK".into();
-                    if let Some(c) = code {
-                        if c != fxlink::code::SUM && c != fxlink::code::PROTOCOL {
-                            break; // a resend cannot cure it
-                        }
-                    }
-                }
-                Got::BadSum(m) => {
-                    nak = None;
-                    last = m;
-                    if let Mode::Port { .. } = self.mode {
-                        self.mode = Mode::Port { synced: false };
-                    }
-                }
-                Got::Silent(partial) => {
-                    if let Mode::Port { .. } = self.mode {
-                        self.mode = Mode::Port { synced: false };
-                    }
-                    let tail = if partial.is_empty() {
-                        String::new()
-                    } else {
-                        format!(" (only {} came back)", trace::hex_bytes(&partial))
+            self.requests += 1;
+            let got = self.exchange(frame, expect, attempt > 0, what)?;
+            match (got, expect) {
+                (Got::Data(d), Expect::Data { .. }) => return Ok(d),
+                (Got::Ack, Expect::Ack { .. }) => return Ok(Vec::new()),
+                (Got::Silent { late }, _) => {
+                    self.desync();
+                    let from = match &self.mode {
+                        Mode::Link { header, .. } => format!(" (station {})", header.station),
+                        Mode::Port { .. } => String::new(),
                     };
                     return Err(Error::link(format!(
-                        "no reply to {what} within {} ms on {}{tail}",
-                        self.timeout.as_millis(),
-                        self.line.name
+                        "no reply to {what}{from} on {} within {}{}",
+                        self.line.name,
+                        self.timeout_text(frame.len(), expect.chars()),
+                        late_text(late)
                     ))
-                    .hint(self.silence_hint()));
+                    .hint(if late > 0 {
+                        self.late_hint(frame.len(), expect.chars())
+                    } else {
+                        self.silence_hint()
+                    }));
+                }
+                (Got::Nak(code), _) => {
+                    seen.push(Got::Nak(code));
+                    // On the link only a NAK that a resend can cure is retried.
+                    if matches!(code, Some(c) if c != fxlink::code::SUM && c != fxlink::code::PROTOCOL) {
+                        break;
+                    }
+                }
+                (got, _) => {
+                    self.desync();
+                    seen.push(got);
                 }
             }
         }
-        let tries = self.requests_for_message();
-        match nak {
-            Some(None) => Err(Error::new(
-                ErrorKind::Refused,
-                format!("the PLC answered NAK to {what} ({tries}): it refuses a frame with a wrong sum check or an address where it has no device"),
-            )
-            .hint("check the operand against the model (`help OPERAND`) and the line's noise")),
-            Some(Some(c)) => Err(Error::new(
-                ErrorKind::Refused,
-                format!("the PLC answered NAK {c:02X}H to {what}: {}", fxlink::nak_text(c)),
-            )),
-            None => Err(Error::link(format!("bad reply to {what} ({tries}): {last}"))
-                .hint("noise on the line or a wrong baud rate/parity (the port runs 7E1)")),
+        Err(self.failure(what, &seen, (frame.len(), expect.chars())))
+    }
+
+    /// The programming port opens the conversation again with ENQ after a failed exchange.
+    fn desync(&mut self) {
+        if let Mode::Port { .. } = self.mode {
+            self.mode = Mode::Port { synced: false };
         }
     }
 
-    fn requests_for_message(&self) -> String {
-        format!("{} attempts", self.retries + 1)
+    /// The error after every attempt failed, from the last one, listing what each got;
+    /// `sizes`: the request's and the reply's characters.
+    fn failure(&self, what: &str, seen: &[Got], sizes: (usize, usize)) -> Error {
+        let name = &self.line.name;
+        let mut labels: Vec<(String, usize)> = Vec::new();
+        for g in seen {
+            match labels.iter_mut().find(|(l, _)| *l == g.label()) {
+                Some((_, n)) => *n += 1,
+                None => labels.push((g.label(), 1)),
+            }
+        }
+        let tries = match (seen.len(), labels.len()) {
+            (1, _) => "1 attempt".to_string(),
+            (n, 1) => format!("{n} attempts"),
+            (n, _) => format!(
+                "{n} attempts: {}",
+                labels.iter().map(|(l, k)| format!("{l} ×{k}")).collect::<Vec<_>>().join(", ")
+            ),
+        };
+        let who = match &self.mode {
+            Mode::Link { header, .. } => format!("station {}", header.station),
+            Mode::Port { .. } => "the PLC".to_string(),
+        };
+        match seen.last() {
+            Some(Got::Nak(Some(c))) => Error::new(
+                ErrorKind::Refused,
+                format!("{who} answered NAK {c:02X}H to {what} on {name}: {}", fxlink::nak_text(*c)),
+            )
+            .hint(match *c {
+                fxlink::code::AREA => "check the operand against the model (`help OPERAND`)",
+                fxlink::code::PC_NUMBER => "the PC number of an FX is FF (pc=FF)",
+                fxlink::code::SUM | fxlink::code::PROTOCOL => "check the sum check setting (sum=, D8120) and the line's noise",
+                _ => "check the PLC's computer-link settings (D8120, D8121)",
+            }),
+            Some(Got::Nak(None)) => Error::new(
+                ErrorKind::Refused,
+                format!("the PLC answered NAK to {what} on {name} ({tries}): it refuses a frame with a wrong sum check or an address where it has no device"),
+            )
+            .hint("check the operand against the model (`help OPERAND`) and the line's noise"),
+            Some(Got::BadSum(m)) => Error::link(format!("bad reply to {what} on {name} ({tries}): {m}"))
+                .hint(match &self.mode {
+                    Mode::Port { .. } => "noise on the line or a wrong baud rate/parity (the port runs 7E1)",
+                    Mode::Link { .. } => "noise on the line, or a baud rate or character format that differs from the PLC's (D8120)",
+                }),
+            Some(Got::Noise(b)) => Error::link(format!(
+                "noise on the line {name} instead of a reply to {what} ({tries}): {} — characters that cannot start a reply (00H is what a serial port delivers for a character with a parity or framing error)",
+                show(b)
+            ))
+            .hint(format!(
+                "check the cable's shield and ground, the converter's power and the RS-422/485 termination, and that the PLC runs {} (a different baud rate or format also reads as noise)",
+                self.serial
+            )),
+            Some(Got::Partial(p)) => Error::link(format!(
+                "incomplete reply to {what} on {name} within {} ({tries}): only {} came",
+                self.timeout_text(sizes.0, sizes.1),
+                show(p)
+            ))
+            .hint(format!("check the baud rate ({}), or raise the timeout (timeout= in the URL)", self.serial)),
+            Some(Got::Other(m)) => Error::link(format!("{who} answered {what} on {name} with something else ({tries}): {m}"))
+                .hint(match &self.mode {
+                    Mode::Port { .. } => "only one program may talk to the programming port: close GX Developer, an HMI or a terminal on it".to_string(),
+                    Mode::Link { header, .. } => format!(
+                        "check that no other station is set to station {} (D8121) and that no other program polls this line; a reply that comes after the timeout belongs to an earlier request (raise timeout=)",
+                        header.station
+                    ),
+                }),
+            _ => Error::link(format!("no usable reply to {what} on {name} ({tries})")),
+        }
+    }
+
+    fn late_hint(&self, req: usize, reply: usize) -> String {
+        format!(
+            "the PLC answers later than {} ms: raise the timeout (timeout={}ms in the URL), or check its scan time (D8012)",
+            self.timeout_for(req, reply).as_millis(),
+            2 * self.timeout_for(req, reply).as_millis()
+        )
     }
 
     fn silence_hint(&self) -> String {
         match &self.mode {
-            Mode::Port { .. } => "check the cable, 9600 baud 7E1, and that this is the programming port".into(),
+            Mode::Port { .. } => {
+                format!("check the cable, that this is the programming port, and that it runs {}", self.serial)
+            }
             Mode::Link { header, .. } => format!(
                 "check station {} (the PLC's D8121), PC number FF, the baud rate and format (D8120), and the sum check setting",
                 header.station
@@ -347,8 +692,8 @@ impl Driver {
         for (s, e) in &spans {
             let count = (e - s) as u8;
             let req = Request::Read { addr: *s, count };
-            let bytes =
-                self.transact(&req.encode(), req.reply_len(), &format!("a read of {count} bytes at {s:04X}H"))?;
+            let expect = Expect::Data { chars: req.reply_len(), data: count as usize };
+            let bytes = self.transact(&req.encode(), expect, &format!("a read of {count} bytes at {s:04X}H"))?;
             data.push(bytes);
         }
         Ok(ops
@@ -401,7 +746,7 @@ impl Driver {
             }
         }
         for (req, what) in frames {
-            self.transact(&req.encode(), 1, &what)?;
+            self.transact(&req.encode(), Expect::Ack { chars: 1 }, &what)?;
         }
         Ok(())
     }
@@ -456,7 +801,9 @@ impl Driver {
             let what =
                 format!("{} of {count} point(s) from {}", if bits { "BR" } else { "WR" }, dev.text(self.settings()));
             let frame = self.link_frame(&cmd);
-            let d = self.transact(&frame, 0, &what)?;
+            let chars = if bits { count } else { count * dev.unit() };
+            let expect = Expect::Data { chars: fxlink::data_reply_chars(chars, self.settings()), data: chars };
+            let d = self.transact(&frame, expect, &what)?;
             let values = if bits {
                 if d.len() != count || !d.iter().all(|c| *c == b'0' || *c == b'1') {
                     return Err(Error::link(format!("bad reply to {what}: {} characters of 0/1 expected", count)));
@@ -521,7 +868,7 @@ impl Driver {
                 _ => String::new(),
             };
             let frame = self.link_frame(&c);
-            self.transact(&frame, 0, &what)?;
+            self.transact(&frame, Expect::Ack { chars: fxlink::ack_chars(st) }, &what)?;
         }
         Ok(())
     }
@@ -619,7 +966,8 @@ impl Device for Driver {
 
     fn set_option(&mut self, key: &str, value: &str) -> Result<()> {
         match key {
-            "timeout" => self.timeout = parse_timeout(value)?,
+            "timeout" if value == "auto" => self.timeout = None,
+            "timeout" => self.timeout = Some(parse_timeout(value)?),
             "retries" => {
                 self.retries = value
                     .parse()
@@ -714,7 +1062,7 @@ pub fn open_port(u: &DeviceUrl) -> Result<Box<dyn Device>> {
         link: format!("{} ({settings})", carrier.key()),
         simulated: false,
     };
-    finish(Driver::port(line, model, info), u)
+    finish(Driver::port(line, model, info).on_line(settings, carrier.networked()), u)
 }
 
 /// Opens `fxlink:PORT?station=0&pc=FF&wait=0&baud=9600&bits=7&parity=e&stop=1&sum=1&format=1`.
@@ -750,7 +1098,7 @@ pub fn open_link(u: &DeviceUrl) -> Result<Box<dyn Device>> {
         ),
         simulated: false,
     };
-    finish(Driver::link(line, model, header, settings, info), u)
+    finish(Driver::link(line, model, header, settings, info).on_line(line_settings, carrier.networked()), u)
 }
 
 fn shared_plcs() -> &'static Mutex<HashMap<String, Weak<Mutex<Memory>>>> {
@@ -1075,5 +1423,205 @@ mod tests {
         assert!(e.message.contains("no ACK to ENQ"), "{e}");
         assert!(e.hint.as_deref().unwrap().contains("7E1"), "{e:?}");
         assert_eq!(p.requests(), 0, "no frame goes out before the handshake");
+    }
+
+    /// A line that answers each frame sent with the next scripted bytes (nothing once the
+    /// script runs out), keeping what was sent.
+    struct Scripted {
+        replies: std::collections::VecDeque<Vec<u8>>,
+        rx: std::collections::VecDeque<u8>,
+        sent: Arc<Mutex<Vec<Vec<u8>>>>,
+    }
+    impl Transport for Scripted {
+        fn send(&mut self, bytes: &[u8]) -> io::Result<()> {
+            self.sent.lock().unwrap().push(bytes.to_vec());
+            self.rx.extend(self.replies.pop_front().unwrap_or_default());
+            Ok(())
+        }
+        fn recv(&mut self, buf: &mut [u8], _t: Duration) -> io::Result<usize> {
+            let n = buf.len().min(self.rx.len());
+            for (slot, b) in buf.iter_mut().zip(self.rx.drain(..n)) {
+                *slot = b;
+            }
+            Ok(n)
+        }
+    }
+
+    /// A driver (computer link for `station`, or the programming port) on a scripted line.
+    fn scripted(station: Option<u8>, replies: Vec<Vec<u8>>) -> (Driver, Arc<Mutex<Vec<Vec<u8>>>>) {
+        let sent = Arc::new(Mutex::new(Vec::new()));
+        let t = Scripted { replies: replies.into(), rx: Default::default(), sent: sent.clone() };
+        let line = lines::private("scripted", Box::new(t));
+        let model = Model::find("FX2N").unwrap();
+        let info = DeviceInfo { family: "fx", model: "test".into(), link: "scripted".into(), simulated: true };
+        let d = match station {
+            Some(st) => Driver::link(line, model, Header { station: st, pc: 0xFF, wait: 0 }, Settings::default(), info),
+            None => Driver::port(line, model, info),
+        };
+        (d, sent)
+    }
+
+    fn reply(station: u8, r: Reply) -> Vec<u8> {
+        fxlink::encode_reply(Header { station, pc: 0xFF, wait: 0 }, &r, Settings::default())
+    }
+
+    // Seed 004, "FX系列PLC专用协议通信指令格式详解": the reply repeats the station number, data
+    // comes in STX … ETX, a write is acknowledged with ACK, an error is NAK and a code
+    // ("若发送码有误，则有以下回应"). A reply carries no device address: a reply from another
+    // station, or of the wrong kind or length, is never taken for this request's.
+    #[test]
+    fn link_replies_must_fit_the_request() {
+        let data = |st, v: &str| reply(st, Reply::Data(v.as_bytes().to_vec()));
+        // Station 3's data (9999 = 270FH) to station 5's read of D100: resent, and D100's own value used.
+        let (mut d, sent) = scripted(Some(5), vec![data(3, "270F"), data(5, "0064")]);
+        assert_eq!(get(&mut d, "D100"), 100);
+        assert_eq!((sent.lock().unwrap().len(), d.resent), (2, 1));
+        // Two words where one was asked for (the reply to another request), then ACK: never a value.
+        let (mut d, _) = scripted(Some(5), vec![data(5, "00640065"), reply(5, Reply::Ack), data(5, "0064")]);
+        assert_eq!(get(&mut d, "D100"), 100, "the third reply fits");
+        let (mut d, _) = scripted(Some(5), vec![data(5, "00640065"); 4]);
+        let e = d.read(&ops(&d, &["D100"])).unwrap_err();
+        assert_eq!(e.kind, ErrorKind::Link, "{e}");
+        assert!(e.message.contains("another request") && e.message.contains("4 attempts"), "{e}");
+        // A write answered by a data frame, by another station's ACK: not done, and said so.
+        let o = ops(&d, &["D100"])[0];
+        for wrong in [data(5, "0064"), reply(3, Reply::Ack)] {
+            let (mut d, sent) = scripted(Some(5), vec![wrong.clone(); 4]);
+            let e = d.write(&[(o, Value::Int(1))]).unwrap_err();
+            assert_eq!(e.kind, ErrorKind::Link, "{e}");
+            assert!(e.message.contains("WW of 1 value(s) at D0100") && e.message.contains("4 attempts"), "{e}");
+            assert_eq!(sent.lock().unwrap().len(), 4);
+        }
+        // ... and ACK from the addressed station after one of them: done.
+        let (mut d, _) = scripted(Some(5), vec![data(5, "0064"), reply(5, Reply::Ack)]);
+        d.write(&[(o, Value::Int(1))]).unwrap();
+        // NAK 06 to a write: refused at once, never success.
+        let (mut d, sent) = scripted(Some(5), vec![reply(5, Reply::Nak(6))]);
+        let e = d.write(&[(o, Value::Int(1))]).unwrap_err();
+        assert_eq!(e.kind, ErrorKind::Refused, "{e}");
+        assert!(e.message.contains("station 5 answered NAK 06H to WW"), "{e}");
+        assert_eq!(sent.lock().unwrap().len(), 1, "a resend cannot cure an area error");
+        // Another station's NAK is not this station's refusal.
+        let (mut d, _) = scripted(Some(5), vec![reply(3, Reply::Nak(6)), reply(5, Reply::Ack)]);
+        d.write(&[(o, Value::Int(1))]).unwrap();
+    }
+
+    // Seed 004: the PLC answers ENQ with ACK when ready and NAK on error ("通过ENQ、ACK和NAK上位机
+    // 协调与PLC的通信应答"). A burst of 00H — what a serial port delivers for characters with
+    // parity errors — is neither; it is set aside, and reported as noise when nothing else comes.
+    #[test]
+    fn noise_is_set_aside_and_never_called_a_nak() {
+        let burst = vec![0u8; 31];
+        let with = |mut a: Vec<u8>, b: &[u8]| {
+            a.extend_from_slice(b);
+            a
+        };
+        // Noise in front of the ACK and of the data: the exchange succeeds at once.
+        let read = port::encode_read_reply(&[0x34, 0x12]);
+        let (mut d, sent) = scripted(None, vec![with(burst.clone(), &[ACK]), with(burst.clone(), &read)]);
+        assert_eq!(get(&mut d, "D123"), 0x1234);
+        assert_eq!(sent.lock().unwrap().len(), 2, "ENQ and one read");
+        // Nothing but noise to every ENQ: noise, not NAK.
+        let (mut d, sent) = scripted(None, vec![burst.clone(); 4]);
+        let e = d.read(&ops(&d, &["D123"])).unwrap_err();
+        assert_eq!(e.kind, ErrorKind::Link, "{e}");
+        assert!(e.message.contains("noise") && e.message.contains("31 × 00H"), "{e}");
+        assert!(!e.message.contains("NAK"), "{e}");
+        assert_eq!(sent.lock().unwrap().as_slice(), vec![vec![ENQ]; 4].as_slice());
+        // Real NAKs are still NAKs.
+        let (mut d, _) = scripted(None, vec![vec![NAK]; 4]);
+        let e = d.read(&ops(&d, &["D123"])).unwrap_err();
+        assert!(e.message.contains("answered ENQ with NAK 4 times"), "{e}");
+        // Bytes with the parity bit and a stray tail in front of a link reply: set aside.
+        let mut noisy = vec![0x80, 0xFF, b'3', b'B'];
+        noisy.extend(reply(0, Reply::Data(b"0007".to_vec())));
+        let (mut d, _) = scripted(Some(0), vec![noisy]);
+        assert_eq!(get(&mut d, "D5"), 7);
+        assert_eq!(d.resent, 0);
+        // Only noise on the link, four times: reported as noise.
+        let (mut d, _) = scripted(Some(0), vec![vec![0x00, 0x80, 0x00]; 4]);
+        let e = d.read(&ops(&d, &["D5"])).unwrap_err();
+        assert!(e.message.contains("noise on the line") && !e.message.contains("NAK"), "{e}");
+        // A mix is listed attempt by attempt.
+        let (mut d, _) = scripted(Some(0), vec![vec![0x00], vec![0x00], reply(0, Reply::Nak(2)), vec![0x00]]);
+        let e = d.read(&ops(&d, &["D5"])).unwrap_err();
+        assert!(e.message.contains("4 attempts: noise ×3, NAK 02H ×1"), "{e}");
+    }
+
+    #[test]
+    fn timeouts_follow_the_line_the_frames_and_the_wait() {
+        let model = Model::find("FX2N").unwrap();
+        let info = DeviceInfo { family: "fx", model: "test".into(), link: "x".into(), simulated: true };
+        let link = |baud: u32, wait: u8, networked: bool| {
+            let line = lines::private(
+                "t",
+                Box::new(SimLink::new(sim_plc(model, None).unwrap(), Box::new(PortServer::default()))),
+            );
+            let serial = LineSettings { baud, data_bits: 7, parity: Parity::Even, stop_bits: 1 };
+            Driver::link(line, model, Header { station: 0, pc: 0xFF, wait }, Settings::default(), info.clone())
+                .on_line(serial, networked)
+        };
+        // A WR of 64 words: a 17-character request, a 264-character reply (seed 004's frame:
+        // STX, station, PC number, 4 hex per word, ETX, sum).
+        let wr64 = (17, fxlink::data_reply_chars(256, Settings::default()));
+        assert_eq!(wr64.1, 264);
+        // 281 characters of 10 bits at 4800 baud: 585.4 ms on the wire, then the turnaround.
+        let t4800 = link(4800, 0, false).timeout_for(wr64.0, wr64.1);
+        assert_eq!(t4800, Duration::from_micros(585_417) + TURNAROUND);
+        assert!(t4800 > Duration::from_millis(550), "a 64-word WR at 4800 baud fits");
+        let t9600 = link(9600, 0, false).timeout_for(wr64.0, wr64.1);
+        let t19200 = link(19200, 0, false).timeout_for(wr64.0, wr64.1);
+        assert!(t4800 > t9600 && t9600 > t19200, "{t4800:?} {t9600:?} {t19200:?}");
+        // 2810 bits: 292 709 µs at 9600 baud, 146 355 µs at 19200 (each rounded up).
+        assert_eq!(t9600 - t19200, Duration::from_micros(292_709 - 146_355), "the wire time halves");
+        // A smaller frame, the wait digit (×10 ms) and a device server each change it.
+        assert!(link(9600, 0, false).timeout_for(17, 12) < t9600);
+        assert_eq!(
+            link(9600, 5, false).timeout_for(17, 12) - link(9600, 0, false).timeout_for(17, 12),
+            Duration::from_millis(50)
+        );
+        assert_eq!(
+            link(9600, 0, true).timeout_for(17, 12) - link(9600, 0, false).timeout_for(17, 12),
+            NETWORK_ALLOWANCE
+        );
+        // The URL's timeout= replaces it; `auto` brings the computed one back.
+        let mut d = link(4800, 0, false);
+        d.set_option("timeout", "200ms").unwrap();
+        assert_eq!(d.timeout_for(wr64.0, wr64.1), Duration::from_millis(200));
+        assert!(d.timeout_text(17, 12).contains("timeout="));
+        d.set_option("timeout", "auto").unwrap();
+        assert_eq!(d.timeout_for(wr64.0, wr64.1), t4800);
+        assert!(d.timeout_text(wr64.0, wr64.1).starts_with("835 ms (281 characters at 4800 7E1: 585 ms on the wire"));
+        // Resends wait at least the frame time.
+        assert!(d.resend_gap(wr64.0, wr64.1) >= Duration::from_millis(550));
+    }
+
+    /// A line that never falls quiet: a character every millisecond.
+    struct Chatter(Arc<std::sync::atomic::AtomicUsize>);
+    impl Transport for Chatter {
+        fn send(&mut self, _: &[u8]) -> io::Result<()> {
+            self.0.fetch_add(1, std::sync::atomic::Ordering::SeqCst);
+            Ok(())
+        }
+        fn recv(&mut self, buf: &mut [u8], t: Duration) -> io::Result<usize> {
+            std::thread::sleep(t.min(Duration::from_millis(1)));
+            buf[0] = b'7';
+            Ok(1)
+        }
+    }
+
+    #[test]
+    fn a_line_that_never_falls_quiet_gets_no_frame() {
+        let sent = Arc::new(std::sync::atomic::AtomicUsize::new(0));
+        let model = Model::find("FX2N").unwrap();
+        let info = DeviceInfo { family: "fx", model: "test".into(), link: "x".into(), simulated: true };
+        let line = lines::private("chatter", Box::new(Chatter(sent.clone())));
+        let mut d = Driver::link(line, model, Header { station: 0, pc: 0xFF, wait: 0 }, Settings::default(), info)
+            .on_line(LineSettings { baud: 19200, data_bits: 7, parity: Parity::Even, stop_bits: 1 }, false);
+        let e = d.read(&ops(&d, &["D0"])).unwrap_err();
+        assert_eq!(e.kind, ErrorKind::Link);
+        assert!(e.message.contains("did not go quiet before WR of 1 point(s) from D0000"), "{e}");
+        assert!(e.hint.as_deref().unwrap().contains("only master"), "{e:?}");
+        assert_eq!(sent.load(std::sync::atomic::Ordering::SeqCst), 0, "nothing is sent into a busy line");
     }
 }

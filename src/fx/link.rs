@@ -253,14 +253,34 @@ pub fn encode_reply(h: Header, r: &Reply, s: Settings) -> Vec<u8> {
     f
 }
 
-/// Length of the complete reply at the start of `buf`, if it is all there.
+/// True for a character a reply can start with (STX, ACK, NAK). Anything else in front of a
+/// reply is noise: 00H is what a serial port delivers for a character with a parity or
+/// framing error, and a stray character is the tail of an earlier frame.
+pub fn reply_start(b: u8) -> bool {
+    matches!(b, STX | ACK | NAK)
+}
+
+/// Characters of a data reply carrying `data` characters: `STX station pc data ETX [sum]
+/// [CR LF]`.
+pub fn data_reply_chars(data: usize, s: Settings) -> usize {
+    1 + 4 + data + 1 + if s.sum { 2 } else { 0 } + if s.format4 { 2 } else { 0 }
+}
+
+/// Characters of an ACK reply: `ACK station pc [CR LF]`.
+pub fn ack_chars(s: Settings) -> usize {
+    5 + if s.format4 { 2 } else { 0 }
+}
+
+/// Length of the complete reply at the start of `buf`, if it is all there. A byte that
+/// cannot start a reply ([`reply_start`]) counts as one byte on its own (the driver sets
+/// such bytes aside as noise before it asks).
 pub fn reply_len(buf: &[u8], s: Settings) -> Option<usize> {
     let tail = if s.format4 { 2 } else { 0 };
     let n = match *buf.first()? {
         ACK => 5,
         NAK => 7,
         STX => buf.iter().position(|b| *b == ETX)? + 1 + if s.sum { 2 } else { 0 },
-        _ => 1, // a stray byte: one at a time
+        _ => return Some(1),
     } + tail;
     (buf.len() >= n).then_some(n)
 }
@@ -268,7 +288,16 @@ pub fn reply_len(buf: &[u8], s: Settings) -> Option<usize> {
 /// Why a reply could not be used.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum ReplyError {
-    BadSum { got: u8, want: u8 },
+    BadSum {
+        got: u8,
+        want: u8,
+    },
+    /// A well-formed header with another station or PC number: another station's reply, or
+    /// one from a station set to the same number as another.
+    Station {
+        station: u8,
+        pc: u8,
+    },
     Malformed(&'static str),
 }
 
@@ -282,8 +311,11 @@ pub fn decode_reply(f: &[u8], h: Header, s: Settings) -> Result<Reply, ReplyErro
     if f.len() < 5 {
         return Err(ReplyError::Malformed("too short"));
     }
-    if hex2(&f[1..3]) != Some(h.station) || hex2(&f[3..5]) != Some(h.pc) {
-        return Err(ReplyError::Malformed("station or PC number differs from the request's"));
+    let (Some(station), Some(pc)) = (hex2(&f[1..3]), hex2(&f[3..5])) else {
+        return Err(ReplyError::Malformed("the station or PC number is not hex"));
+    };
+    if station != h.station || pc != h.pc {
+        return Err(ReplyError::Station { station, pc });
     }
     match f[0] {
         ACK if f.len() == 5 => Ok(Reply::Ack),
@@ -531,11 +563,22 @@ mod tests {
         let n = encode_reply(h(), &Reply::Nak(2), s());
         assert_eq!(n, b"\x1500FF02".to_vec());
         assert_eq!(decode_reply(&n, h(), s()), Ok(Reply::Nak(2)));
-        assert!(decode_reply(&n, Header { station: 1, ..h() }, s()).is_err(), "another station's reply");
+        assert_eq!(
+            decode_reply(&n, Header { station: 1, ..h() }, s()),
+            Err(ReplyError::Station { station: 0, pc: 0xFF }),
+            "another station's reply"
+        );
+        assert_eq!(data_reply_chars(4, s()), r.len());
+        assert_eq!(ack_chars(s()), 5);
+        assert!(reply_start(STX) && reply_start(ACK) && reply_start(NAK));
+        assert!(!reply_start(0x00) && !reply_start(b'3') && !reply_start(0x86), "noise and stray characters");
+        assert_eq!(reply_len(&[0x00, 0x02], s()), Some(1), "one stray byte at a time");
         let f4 = Settings { format4: true, sum: false, decimal_xy: false };
         let r4 = encode_reply(h(), &Reply::Data(b"01".to_vec()), f4);
         assert_eq!(r4, b"\x0200FF01\x03\r\n".to_vec());
         assert_eq!(decode_reply(&r4, h(), f4), Ok(Reply::Data(b"01".to_vec())));
+        assert_eq!(data_reply_chars(2, f4), r4.len());
+        assert_eq!(ack_chars(f4), encode_reply(h(), &Reply::Ack, f4).len());
         assert!(nak_text(6).contains("device number"));
     }
 
