@@ -56,3 +56,41 @@ fn servo_move_on_a_com_port() {
     plcsh::servo::ds402::move_to(ops, &w, false, 10_000, speed).unwrap();
     assert_eq!(plcsh::servo::ds402::status(ops).unwrap().state, "operation enabled");
 }
+
+/// Asks `.ci/windows`'s watcher for `what` (`stop` or `start`) and waits for it to be done.
+fn ask_serve(dir: &str, what: &str, done: &str) {
+    let dir = std::path::Path::new(dir);
+    let _ = std::fs::remove_file(dir.join(done));
+    std::fs::write(dir.join(format!("{what}.request")), b"").unwrap();
+    let until = std::time::Instant::now() + std::time::Duration::from_secs(30);
+    while !dir.join(done).exists() {
+        assert!(std::time::Instant::now() < until, "the CI watcher did not {what} the served simulators");
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+}
+
+/// The link disappears (the served simulators stop, their ptys vanish: what an unplugged
+/// USB adapter is to COM5) and comes back on new ptys: the failure names the port and says the
+/// next command reopens it; once back, the same device works without being opened again.
+#[test]
+fn a_com_link_that_disappears_is_reported_and_reopened_when_back() {
+    let (Some(k2), Some(servo)) = (com("PLCSH_WINE_COM_K2"), com("PLCSH_WINE_COM_SERVO")) else { return };
+    let Ok(dir) = std::env::var("PLCSH_WINE_SERVE_DIR") else { return };
+    let mut plc = open(&format!("rtu:{k2}?baud=19200&unit=1&timeout=500ms&retries=1"));
+    let mut drive = open(&format!("kinco:{servo}?id=1&baud=38400&timeout=500ms"));
+    let o = ops(plc.as_ref(), &["VW300"]);
+    let sw = ops(drive.as_ref(), &["statusword"]);
+    plc.write(&[(o[0], Value::Int(77))]).unwrap();
+    assert_eq!(drive.read(&sw).unwrap(), vec![Value::Int(0x4231)]);
+    ask_serve(&dir, "stop", "stopped");
+    let e = plc.read(&o).unwrap_err();
+    let text = format!("{} {}", e.message, e.hint.clone().unwrap_or_default());
+    assert!(text.contains(&k2) && text.contains("opens it again"), "{text}");
+    let e = drive.read(&sw).unwrap_err();
+    assert_eq!(e.kind, plcsh::core::ErrorKind::Link, "{e}");
+    ask_serve(&dir, "start", "started");
+    // A new simulator: its memory starts empty; writing and reading back proves the link.
+    plc.write(&[(o[0], Value::Int(78))]).unwrap();
+    assert_eq!(plc.read(&o).unwrap(), vec![Value::Int(78)]);
+    assert_eq!(drive.read(&sw).unwrap(), vec![Value::Int(0x4231)]);
+}

@@ -100,7 +100,51 @@ pub struct Failure {
     pub traceback: Option<String>,
 }
 
+/// Lua shortens a long chunk name (a script's path) to `...` and its last 56 bytes in every
+/// location it writes (`luaO_chunkid`, LUA_IDSIZE 60): on Windows, where the temporary and
+/// user folders are long, `C:\Users\…\press1\check.lua:12` would lose its start. Each
+/// shortened form of `full` in `text` is put back whole.
+pub fn restore_chunk_name(text: &str, full: &str) -> String {
+    /// Shorter tails than this are not taken for the path (a message's own `...`).
+    const MIN_TAIL: usize = 12;
+    if full.len() < MIN_TAIL || !text.contains("...") {
+        return text.to_string();
+    }
+    let mut out = String::with_capacity(text.len() + full.len());
+    let mut rest = text;
+    while let Some(i) = rest.find("...") {
+        out.push_str(&rest[..i]);
+        let after = &rest[i + 3..];
+        // The longest tail of `full` that `after` starts with (at most 60 bytes are tried).
+        let tail = (MIN_TAIL..=full.len().min(60))
+            .rev()
+            .filter(|k| full.is_char_boundary(full.len() - k))
+            .map(|k| &full[full.len() - k..])
+            .find(|t| after.starts_with(t));
+        match tail {
+            Some(t) => {
+                out.push_str(full);
+                rest = &after[t.len()..];
+            }
+            None => {
+                out.push_str("...");
+                rest = after;
+            }
+        }
+    }
+    out.push_str(rest);
+    out
+}
+
 impl Failure {
+    /// The failure with every location in `path` written out whole ([`restore_chunk_name`]).
+    pub fn with_full_chunk_name(mut self, path: &str) -> Failure {
+        self.location = self.location.map(|l| restore_chunk_name(&l, path));
+        self.traceback = self.traceback.map(|t| restore_chunk_name(&t, path));
+        self.error.message = restore_chunk_name(&self.error.message, path);
+        self
+    }
+
     pub fn interrupted(&self) -> bool {
         self.error.kind == ErrorKind::Interrupted
     }
@@ -245,6 +289,19 @@ pub fn failure(e: &mlua::Error) -> Failure {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn long_script_paths_are_written_out_whole() {
+        let full = r"C:\users\technician\Temp\plcsh-scripts-test-1184\pto_single_segment.lua";
+        let cut = format!("...{}", &full[full.len() - 56..]);
+        let msg = format!("{cut}:28: assert_eq failed; in {cut}:30 too ... and more");
+        assert_eq!(
+            restore_chunk_name(&msg, full),
+            format!("{full}:28: assert_eq failed; in {full}:30 too ... and more")
+        );
+        assert_eq!(restore_chunk_name("short.lua:2: x", full), "short.lua:2: x");
+        assert_eq!(restore_chunk_name("...", full), "...");
+    }
 
     #[test]
     fn frames_and_locations() {

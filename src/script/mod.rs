@@ -53,6 +53,7 @@ impl Engine {
         }
         lua.load(include_str!("prelude.lua")).set_name("=plcsh").exec()?;
         replace_os_exit(&lua)?;
+        replace_os_tmpname(&lua)?;
         lua.set_app_data(api::Sink(out));
         lua.set_hook(HookTriggers::new().every_nth_instruction(HOOK_EVERY), move |_, _| {
             if interrupt.load(Ordering::Relaxed) {
@@ -165,8 +166,8 @@ impl Engine {
                 let va = args.iter().map(|a| lua.create_string(a).map(Value::String)).collect::<mlua::Result<_>>()?;
                 Ok((f, va))
             };
-            let (f, va) = setup().map_err(|e| error::failure(&e))?;
-            self.protected(f, va).map(|_| ())
+            let (f, va) = setup().map_err(|e| error::failure(&e).with_full_chunk_name(&path.display().to_string()))?;
+            self.protected(f, va).map(|_| ()).map_err(|f| f.with_full_chunk_name(&path.display().to_string()))
         })
     }
 
@@ -222,6 +223,33 @@ fn replace_os_exit(lua: &Lua) -> mlua::Result<()> {
         Err::<(), _>(error::raise(Error::new(ErrorKind::Script, format!("the script called os.exit({n})"))))
     })?;
     lua.globals().get::<Table>("os")?.set("exit", exit)
+}
+
+/// `os.tmpname` that works on every system: a new empty file in the system's temporary folder,
+/// as POSIX Lua's `mkstemp` gives. The C library's `tmpnam` that Lua uses on Windows returns
+/// names like `\s164.` in the drive's root, where a user may not write.
+fn replace_os_tmpname(lua: &Lua) -> mlua::Result<()> {
+    let tmpname = lua.create_function(|_, ()| {
+        use std::sync::atomic::AtomicU64;
+        static NEXT: AtomicU64 = AtomicU64::new(0);
+        let dir = std::env::temp_dir();
+        for _ in 0..100 {
+            let n = NEXT.fetch_add(1, Ordering::Relaxed);
+            let path = dir.join(format!("lua_{}_{n}", std::process::id()));
+            match std::fs::OpenOptions::new().write(true).create_new(true).open(&path) {
+                Ok(_) => return Ok(path.display().to_string()),
+                Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
+                Err(e) => {
+                    return Err(mlua::Error::runtime(format!(
+                        "os.tmpname: cannot create a file in {}: {e}",
+                        dir.display()
+                    )))
+                }
+            }
+        }
+        Err(mlua::Error::runtime(format!("os.tmpname: no free name in {}", dir.display())))
+    })?;
+    lua.globals().get::<Table>("os")?.set("tmpname", tmpname)
 }
 
 /// The shell's `lua` hook: one Lua state, created on first use, persisting across lines.

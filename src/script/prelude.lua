@@ -41,7 +41,8 @@ end
 local log_file
 function plcsh.log_to(path)
   if log_file then log_file:close() end
-  log_file = assert(io.open(path, "a"))
+  -- Binary: the same bytes (LF line ends) on every system, for the tools that read the file.
+  log_file = assert(io.open(path, "ab"))
   return path
 end
 function plcsh.log(...)
