@@ -239,8 +239,8 @@ fn a_sandboxed_run_refuses_os_execute_and_ends_with_a_summary() {
     let p = script(
         "student.lua",
         &format!(
-            "plcsh.check(plc.VW0 == 0, 'VW0 starts at 0')\nplcsh.assert_eq(1 + 1, 2)\nos.execute('touch {}')\n",
-            marker.display()
+            "plcsh.check(plc.VW0 == 0, 'VW0 starts at 0')\nplcsh.assert_eq(1 + 1, 2)\nos.execute({:?})\n",
+            format!("touch {}", marker.display())
         ),
     );
     let o = run(&["--json", "run", "--sandbox", p.to_str().unwrap()], "");

@@ -10,6 +10,13 @@
 use plcsh::core::{Clock, Device, Value};
 use plcsh::session::open_url;
 
+/// The tests share COM5/COM6 and one served pair of simulators (and one stops them): one at a time.
+static ONE_AT_A_TIME: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
+fn serial_guard() -> std::sync::MutexGuard<'static, ()> {
+    ONE_AT_A_TIME.lock().unwrap_or_else(|p| p.into_inner())
+}
+
 fn com(var: &str) -> Option<String> {
     let v = std::env::var(var).ok().filter(|v| !v.is_empty());
     if v.is_none() {
@@ -32,16 +39,18 @@ fn ops(d: &dyn Device, names: &[&str]) -> Vec<plcsh::core::Operand> {
 
 #[test]
 fn k2_over_modbus_rtu_on_a_com_port() {
+    let _one = serial_guard();
     let Some(port) = com("PLCSH_WINE_COM_K2") else { return };
     let mut d = open(&format!("rtu:{port}?baud=19200&unit=1&timeout=2s"));
     assert!(d.info().link.contains(&port), "{}", d.info().link);
     let o = ops(d.as_ref(), &["VW200", "VD204", "Q0.0"]);
-    d.write(&[(o[0], Value::Int(1234)), (o[1], Value::Int(-70000)), (o[2], Value::Bool(true))]).unwrap();
-    assert_eq!(d.read(&o).unwrap(), vec![Value::Int(1234), Value::Int(-70000), Value::Bool(true)]);
+    d.write(&[(o[0], Value::Int(1234)), (o[1], Value::Int(4_000_000_000)), (o[2], Value::Bool(true))]).unwrap();
+    assert_eq!(d.read(&o).unwrap(), vec![Value::Int(1234), Value::Int(4_000_000_000), Value::Bool(true)]);
 }
 
 #[test]
 fn servo_move_on_a_com_port() {
+    let _one = serial_guard();
     let Some(port) = com("PLCSH_WINE_COM_SERVO") else { return };
     let mut d = open(&format!("kinco:{port}?id=1&baud=38400&timeout=2s"));
     let o = ops(d.as_ref(), &["statusword", "target_velocity"]);
@@ -74,6 +83,7 @@ fn ask_serve(dir: &str, what: &str, done: &str) {
 /// next command reopens it; once back, the same device works without being opened again.
 #[test]
 fn a_com_link_that_disappears_is_reported_and_reopened_when_back() {
+    let _one = serial_guard();
     let (Some(k2), Some(servo)) = (com("PLCSH_WINE_COM_K2"), com("PLCSH_WINE_COM_SERVO")) else { return };
     let Ok(dir) = std::env::var("PLCSH_WINE_SERVE_DIR") else { return };
     let mut plc = open(&format!("rtu:{k2}?baud=19200&unit=1&timeout=500ms&retries=1"));

@@ -49,7 +49,11 @@ pub fn raise_at(lua: &mlua::Lua, error: Error) -> mlua::Error {
     let location = (0..32).find_map(|level| {
         lua.inspect_stack(level, |d| {
             let src = d.source();
-            let file = src.short_src.as_deref().unwrap_or("");
+            // A script's whole path (`@path`): Lua's short form cuts a long one to `...tail`.
+            let file = match src.source.as_deref() {
+                Some(s) if s.starts_with('@') => &s[1..],
+                _ => src.short_src.as_deref().unwrap_or(""),
+            };
             let line = d.current_line()?;
             user_source(file).then(|| format!("{file}:{line}"))
         })?
