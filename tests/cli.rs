@@ -152,3 +152,16 @@ fn readme_device_server_urls_parse() {
         assert_eq!(Carrier::from_url(&u, "x").unwrap(), want, "{url}");
     }
 }
+
+/// Cyrillic in a script's file name, its folder and its output: the K2 manual's spelling and
+/// Russian file names on a Windows lab PC (this test also runs under Wine).
+#[test]
+fn cyrillic_file_names_and_output() {
+    let dir = std::env::temp_dir().join(format!("plcsh-кириллица-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = dir.join("проверка.lua");
+    std::fs::write(&p, "-- пуск насоса\nprint('Привет, ПЛК: ' .. plc.VW0)\nlocal x = plc['Q0.9']\n").unwrap();
+    let o = run(&["run", p.to_str().unwrap()], "");
+    assert_eq!(stdout(&o), "Привет, ПЛК: 0\n", "{}", both(&o));
+    assert!(stderr(&o).contains(&format!("{}:3:", p.display())), "the location names the file: {}", stderr(&o));
+}

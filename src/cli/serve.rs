@@ -75,6 +75,10 @@ pub struct ServeArgs {
     /// Serve simulated Kinco servo drives on a TCP port, as a serial device server would (kinco+tcp://ADDR).
     #[arg(long = "servo-tcp", value_name = "ADDR")]
     pub servo_tcp: Option<String>,
+    /// The served drive line's control channel at PATH (default: LINK.ctl beside --servo-pty's
+    /// link); clients name it with `control=PATH` (e.g. `kinco+tcp://ADDR?control=PATH`).
+    #[arg(long = "servo-control", value_name = "PATH")]
+    pub servo_control: Option<PathBuf>,
     /// Drive ids on the servo line (several drives share it).
     #[arg(long = "servo-id", value_name = "ID[,ID…]", default_value = "1")]
     pub servo_id: String,
@@ -288,10 +292,11 @@ async fn serve_servo(
     let Some(on) = serve_on(&args.servo_pty, &args.servo_tcp)? else { return Ok(()) };
     // The process may exit before the line's thread sees the stop flag: once the line is up,
     // its link and control socket are removed on the way out here too.
-    let made: Vec<PathBuf> = match &on {
+    let mut made: Vec<PathBuf> = match &on {
         ServeOn::Pty(Some(link)) => vec![link.clone(), crate::servo::sim::serve::control_path(link)],
         _ => Vec::new(),
     };
+    made.extend(args.servo_control.iter().cloned());
     let ids = crate::servo::driver::parse_ids(&args.servo_id)
         .map_err(|m| Error::usage(format!("--servo-id: {m}")).hint("e.g. --servo-id 1,2"))?;
     let latency =
@@ -304,6 +309,7 @@ async fn serve_servo(
     let pace =
         crate::servo::sim::Pace { baud: args.servo_baud, latency: std::time::Duration::from_micros(latency as u64) };
     let opts = crate::servo::sim::serve::Options {
+        control: args.servo_control.clone(),
         ids,
         echo: args.servo_loop,
         pace: (!args.servo_instant).then_some(pace),

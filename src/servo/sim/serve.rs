@@ -103,6 +103,9 @@ pub struct Ready {
 /// How to serve a line.
 #[derive(Clone, Debug)]
 pub struct Options {
+    /// Where the control channel listens; by default `LINK.ctl` beside a pty's link (a line
+    /// served on TCP has none unless one is given).
+    pub control: Option<PathBuf>,
     pub ids: Vec<u8>,
     pub echo: bool,
     pub pace: Option<Pace>,
@@ -182,9 +185,8 @@ pub fn serve_on_line(
         sim.set_strict(opts.strict);
         sim.ids()
     };
-    let ctl = match served.link_path() {
-        Some(l) => {
-            let p = control_path(l);
+    let ctl = match opts.control.clone().or_else(|| served.link_path().map(control_path)) {
+        Some(p) => {
             let listener = LocalListener::bind(&p)
                 .map_err(|e| Error::io(format!("cannot open the servo control socket {}", p.display())).cause(e))?;
             let (line, stop) = (line.clone(), stop.clone());

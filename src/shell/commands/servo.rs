@@ -471,7 +471,7 @@ fn sim(ops: &mut dyn ServoOps, rest: &[lex::Word], base: usize, col: usize) -> R
         control::send(&path, &line)?
     } else {
         return Err(Error::unsupported(
-            "servo sim works on simulated drives: in-process (sim-servo:) or served by plcsh sim serve --servo-pty LINK",
+            "servo sim works on simulated drives: in-process (sim-servo:), served by plcsh sim serve --servo-pty LINK, or served with --servo-tcp ADDR --servo-control PATH and opened with control=PATH",
         )
         .column(col)
         .hint("a served drive's control socket is LINK.ctl; give it as control=PATH in the kinco: URL if it is elsewhere"));
