@@ -148,6 +148,7 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             [CompletionResult]::new('--program', '--program', [CompletionResultType]::ParameterName, 'Run this IL program in the served K2 (docs/il.md); load errors stop the server')
             [CompletionResult]::new('--servo-pty', '--servo-pty', [CompletionResultType]::ParameterName, 'Serve simulated Kinco servo drives on a new pseudo-terminal; LINK becomes a symlink to it')
             [CompletionResult]::new('--servo-tcp', '--servo-tcp', [CompletionResultType]::ParameterName, 'Serve simulated Kinco servo drives on a TCP port, as a serial device server would (kinco+tcp://ADDR)')
+            [CompletionResult]::new('--servo-control', '--servo-control', [CompletionResultType]::ParameterName, 'The served drive line''s control channel at PATH (default: LINK.ctl beside --servo-pty''s link); clients name it with `control=PATH` (e.g. `kinco+tcp://ADDR?control=PATH`)')
             [CompletionResult]::new('--servo-id', '--servo-id', [CompletionResultType]::ParameterName, 'Drive ids on the servo line (several drives share it)')
             [CompletionResult]::new('--servo-baud', '--servo-baud', [CompletionResultType]::ParameterName, 'Line timing: replies take the frame time at this baud rate (10 bits a byte)')
             [CompletionResult]::new('--servo-latency', '--servo-latency', [CompletionResultType]::ParameterName, 'Line timing: the drive''s think-time before it answers (e.g. 1ms, 0)')

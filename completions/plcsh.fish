@@ -119,6 +119,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l program -d 'Run this IL program in the served K2 (docs/il.md); load errors stop the server' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l servo-pty -d 'Serve simulated Kinco servo drives on a new pseudo-terminal; LINK becomes a symlink to it' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l servo-tcp -d 'Serve simulated Kinco servo drives on a TCP port, as a serial device server would (kinco+tcp://ADDR)' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l servo-control -d 'The served drive line\'s control channel at PATH (default: LINK.ctl beside --servo-pty\'s link); clients name it with `control=PATH` (e.g. `kinco+tcp://ADDR?control=PATH`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l servo-id -d 'Drive ids on the servo line (several drives share it)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l servo-baud -d 'Line timing: replies take the frame time at this baud rate (10 bits a byte)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l servo-latency -d 'Line timing: the drive\'s think-time before it answers (e.g. 1ms, 0)' -r

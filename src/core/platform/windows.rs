@@ -10,7 +10,7 @@
 
 use super::code;
 use std::sync::atomic::{AtomicBool, AtomicI32, Ordering};
-use std::sync::{Arc, OnceLock};
+use std::sync::{Arc, Mutex};
 use std::time::Duration;
 use windows_sys::core::BOOL;
 use windows_sys::Win32::Foundation::{FALSE, TRUE};
@@ -27,10 +27,13 @@ struct Handlers {
     received: &'static AtomicI32,
 }
 
-static HANDLERS: OnceLock<Handlers> = OnceLock::new();
+/// The flag and the record the handler raises (the last install wins). Windows runs a console
+/// handler on a thread of its own, so a lock is fine here (it is no signal handler).
+static HANDLERS: Mutex<Option<Handlers>> = Mutex::new(None);
 
 unsafe extern "system" fn on_console_event(event: u32) -> BOOL {
-    let Some(h) = HANDLERS.get() else { return FALSE };
+    let guard = HANDLERS.lock().unwrap_or_else(|p| p.into_inner());
+    let Some(h) = guard.as_ref() else { return FALSE };
     let sig = match event {
         CTRL_C_EVENT => code::INT,
         CTRL_BREAK_EVENT => code::TERM,
@@ -44,6 +47,7 @@ unsafe extern "system" fn on_console_event(event: u32) -> BOOL {
     if sig != code::INT {
         h.received.store(sig, Ordering::SeqCst);
     }
+    drop(guard);
     if sig == code::HUP {
         // The process ends when this returns: give the main thread time to stop cleanly
         // (it exits the process itself when done).
@@ -54,7 +58,7 @@ unsafe extern "system" fn on_console_event(event: u32) -> BOOL {
 
 /// Console events raise `interrupt`; Ctrl-Break and closing are stored in `received`.
 pub fn install_stop_handlers(interrupt: &Arc<AtomicBool>, received: &'static AtomicI32) {
-    let _ = HANDLERS.set(Handlers { interrupt: interrupt.clone(), received });
+    *HANDLERS.lock().unwrap_or_else(|p| p.into_inner()) = Some(Handlers { interrupt: interrupt.clone(), received });
     // SAFETY: registers a handler function with the signature Windows calls.
     unsafe {
         SetConsoleCtrlHandler(Some(on_console_event), TRUE);
@@ -169,5 +173,36 @@ pub fn interrupt_child(child: &std::process::Child) {
             TerminateProcess(h, 1);
             windows_sys::Win32::Foundation::CloseHandle(h);
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The console events map onto the Unix signals' statuses: Ctrl-C raises the interrupt
+    /// flag only (the shell tells it apart itself), Ctrl-Break is stored as SIGTERM. (Closing
+    /// the window, SIGHUP, waits for the grace period before returning, so it is not run here.)
+    #[test]
+    fn console_events_raise_the_flag_and_record_the_signal() {
+        static RECEIVED: AtomicI32 = AtomicI32::new(0);
+        let flag = Arc::new(AtomicBool::new(false));
+        install_stop_handlers(&flag, &RECEIVED);
+        // SAFETY: calls the handler as Windows would, on this thread.
+        assert_eq!(unsafe { on_console_event(CTRL_C_EVENT) }, TRUE);
+        assert!(flag.load(Ordering::SeqCst));
+        assert_eq!(RECEIVED.load(Ordering::SeqCst), 0);
+        flag.store(false, Ordering::SeqCst);
+        assert_eq!(unsafe { on_console_event(CTRL_BREAK_EVENT) }, TRUE);
+        assert!(flag.load(Ordering::SeqCst));
+        assert_eq!(RECEIVED.load(Ordering::SeqCst), code::TERM);
+        // An event that is not a stop is left to the next handler.
+        assert_eq!(unsafe { on_console_event(99) }, FALSE);
+    }
+
+    #[test]
+    fn the_time_zone_offset_is_whole_minutes_within_a_day() {
+        let off = utc_offset(1_800_000_000);
+        assert!(off.abs() <= 14 * 3600 && off % 60 == 0, "{off}");
     }
 }
