@@ -223,27 +223,24 @@ pub fn modbus_client(data: &[u8]) {
     crate::k2::driver::fuzz_replies(data);
 }
 
-/// The PLC-side helper's mailbox as the simulated helper reads it: arbitrary bytes in the
-/// mailbox, one scan, and the status a client would parse.
+/// The PLC-side helper's mailbox: the input, in frames of the mailbox's size, written over
+/// the mailbox as a client may (any byte of it), each frame followed by two scans of
+/// `lib/k2_agent.il` in the simulator's scan engine, stepped scan by scan. Every scan is
+/// checked ([`crate::k2::sim::agent_probe`]): the CPU stays in RUN, the heartbeat moves, a
+/// waiting request gets [`crate::k2::agent::protocol::Command::decode`]'s verdict, and no
+/// memory outside the mailbox and the request's SM bytes changes; a broken promise panics.
 pub fn agent_mailbox(data: &[u8]) {
     use crate::core::Device;
-    use crate::k2::agent::protocol::{self, Status};
-    let clock = Clock::stepped();
-    let mut sim = crate::k2::sim::open("K205-16DT", clock.clone()).expect("the default model");
-    let base = protocol::DEFAULT_BASE;
-    sim.enable_agent(base).expect("the default base");
-    clock.step(std::time::Duration::from_millis(5));
-    sim.advance();
-    let b = base as usize;
-    let n = data.len().min(protocol::SIZE as usize);
-    sim.mem.v[b..b + n].copy_from_slice(&data[..n]);
-    clock.step(std::time::Duration::from_millis(5));
-    sim.advance();
-    let words: Vec<u16> =
-        sim.mem.v[b..b + protocol::SIZE as usize].chunks_exact(2).map(|c| u16::from_be_bytes([c[0], c[1]])).collect();
-    let _ = Status::parse(&words);
-    let _: Vec<Event> = crate::k2::K2Ops::events(&mut sim, true).unwrap_or_default();
-    let _ = sim.read(&[]);
+    use crate::k2::agent::protocol;
+    let mut probe = crate::k2::sim::agent_probe::AgentProbe::new();
+    for frame in data.chunks(protocol::SIZE as usize).take(16) {
+        if let Err(e) = probe.write_and_scan(frame).and_then(|_| probe.checked_scan()) {
+            panic!("the helper broke the protocol: {e}");
+        }
+    }
+    let _ = probe.status();
+    let _: Vec<Event> = crate::k2::K2Ops::events(&mut probe.sim, true).unwrap_or_default();
+    let _ = probe.sim.read(&[]);
 }
 
 /// The helper's mailbox address (`--agent VB3400`, `agent il`).
