@@ -30,7 +30,6 @@ use super::operand::{Area, FxOperand, Width, CN32_FIRST};
 use super::port::{self, Request, ACK, ENQ, NAK};
 use super::sim::{LinkServer, Plc, PortServer, Server, SimLink};
 use super::space::{FxSpace, Proto};
-use crate::core::literal::parse_duration_us;
 use crate::core::trace::{self, Dir};
 use crate::core::url::DeviceUrl;
 use crate::core::{Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
@@ -635,14 +634,7 @@ impl Device for Driver {
 }
 
 fn parse_timeout(v: &str) -> Result<Duration> {
-    let us = match v.parse::<u64>() {
-        Ok(ms) => ms as i64 * 1000,
-        Err(_) => parse_duration_us(v).map_err(Error::usage)?,
-    };
-    if us <= 0 {
-        return Err(Error::usage(format!("timeout `{v}` must be positive (e.g. 500ms)")));
-    }
-    Ok(Duration::from_micros(us as u64))
+    crate::core::literal::parse_timeout(v).map_err(Error::usage)
 }
 
 fn model_of(u: &DeviceUrl, default: Option<&str>) -> Result<&'static Model> {
