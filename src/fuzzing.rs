@@ -29,6 +29,7 @@ pub static TARGETS: &[(&str, Target)] = &[
     ("completion", completion),
     ("servo_frame", servo_frame),
     ("servo_units", servo_units),
+    ("pulse", pulse),
     ("modbus_rtu", modbus_rtu),
     ("modbus_tcp", modbus_tcp),
     ("modbus_client", modbus_client),
@@ -88,10 +89,17 @@ pub fn lexer(data: &[u8]) {
     }
 }
 
-/// Device URLs.
+/// Device URLs, and the numbers the drivers read from them (`baud=`, `unit=`, `id=`,
+/// `retries=`, `timeout=`).
 pub fn url(data: &[u8]) {
     if let Ok(u) = DeviceUrl::parse(&text(data)) {
         let _ = u.param_num::<u32>("baud");
+        let _ = u.param_num::<u32>("retries");
+        let _ = u.param_num::<u8>("unit");
+        let _ = u.param_num::<u8>("id");
+        if let Some(t) = u.param("timeout") {
+            let _ = crate::core::literal::parse_timeout(t);
+        }
         let _ = u.expect_params(&["unit", "model"]);
     }
 }
@@ -165,6 +173,13 @@ pub fn servo_units(data: &[u8]) {
     for name in ["target_position", "profile_velocity", "profile_acceleration", "controlword"] {
         let _ = space.parse_value(&ObjRef::of(objects::named(name)), &t);
     }
+}
+
+/// The options of the pulse helpers `pto`, `pwm` and `profile` (`cycle=1ms width=250us`,
+/// `freq=2kHz count=1000`, `at=VB3001 [(cycle=500us, count=10)]`), read as the commands
+/// read them and planned for every model with pulse outputs.
+pub fn pulse(data: &[u8]) {
+    crate::shell::commands::pulse::fuzz_options(&text(data));
 }
 
 /// A fresh simulated K2 behind a Modbus service (unit 1).

@@ -13,7 +13,7 @@ mod k2cmd;
 pub mod lua;
 pub mod models;
 pub mod profiles;
-mod pulse;
+pub(crate) mod pulse;
 mod rtc;
 mod servo;
 mod sim;
