@@ -29,6 +29,7 @@ pub static TARGETS: &[(&str, Target)] = &[
     ("completion", completion),
     ("servo_frame", servo_frame),
     ("servo_units", servo_units),
+    ("pulse", pulse),
     ("modbus_rtu", modbus_rtu),
     ("modbus_tcp", modbus_tcp),
     ("modbus_client", modbus_client),
@@ -88,10 +89,17 @@ pub fn lexer(data: &[u8]) {
     }
 }
 
-/// Device URLs.
+/// Device URLs, and the numbers the drivers read from them (`baud=`, `unit=`, `id=`,
+/// `retries=`, `timeout=`).
 pub fn url(data: &[u8]) {
     if let Ok(u) = DeviceUrl::parse(&text(data)) {
         let _ = u.param_num::<u32>("baud");
+        let _ = u.param_num::<u32>("retries");
+        let _ = u.param_num::<u8>("unit");
+        let _ = u.param_num::<u8>("id");
+        if let Some(t) = u.param("timeout") {
+            let _ = crate::core::literal::parse_timeout(t);
+        }
         let _ = u.expect_params(&["unit", "model"]);
     }
 }
@@ -167,6 +175,13 @@ pub fn servo_units(data: &[u8]) {
     }
 }
 
+/// The options of the pulse helpers `pto`, `pwm` and `profile` (`cycle=1ms width=250us`,
+/// `freq=2kHz count=1000`, `at=VB3001 [(cycle=500us, count=10)]`), read as the commands
+/// read them and planned for every model with pulse outputs.
+pub fn pulse(data: &[u8]) {
+    crate::shell::commands::pulse::fuzz_options(&text(data));
+}
+
 /// A fresh simulated K2 behind a Modbus service (unit 1).
 fn service() -> crate::k2::sim::modbus_server::K2Service {
     let sim = crate::k2::sim::open("K205-16DT", Clock::stepped()).expect("the default model");
@@ -223,27 +238,24 @@ pub fn modbus_client(data: &[u8]) {
     crate::k2::driver::fuzz_replies(data);
 }
 
-/// The PLC-side helper's mailbox as the simulated helper reads it: arbitrary bytes in the
-/// mailbox, one scan, and the status a client would parse.
+/// The PLC-side helper's mailbox: the input, in frames of the mailbox's size, written over
+/// the mailbox as a client may (any byte of it), each frame followed by two scans of
+/// `lib/k2_agent.il` in the simulator's scan engine, stepped scan by scan. Every scan is
+/// checked ([`crate::k2::sim::agent_probe`]): the CPU stays in RUN, the heartbeat moves, a
+/// waiting request gets [`crate::k2::agent::protocol::Command::decode`]'s verdict, and no
+/// memory outside the mailbox and the request's SM bytes changes; a broken promise panics.
 pub fn agent_mailbox(data: &[u8]) {
     use crate::core::Device;
-    use crate::k2::agent::protocol::{self, Status};
-    let clock = Clock::stepped();
-    let mut sim = crate::k2::sim::open("K205-16DT", clock.clone()).expect("the default model");
-    let base = protocol::DEFAULT_BASE;
-    sim.enable_agent(base).expect("the default base");
-    clock.step(std::time::Duration::from_millis(5));
-    sim.advance();
-    let b = base as usize;
-    let n = data.len().min(protocol::SIZE as usize);
-    sim.mem.v[b..b + n].copy_from_slice(&data[..n]);
-    clock.step(std::time::Duration::from_millis(5));
-    sim.advance();
-    let words: Vec<u16> =
-        sim.mem.v[b..b + protocol::SIZE as usize].chunks_exact(2).map(|c| u16::from_be_bytes([c[0], c[1]])).collect();
-    let _ = Status::parse(&words);
-    let _: Vec<Event> = crate::k2::K2Ops::events(&mut sim, true).unwrap_or_default();
-    let _ = sim.read(&[]);
+    use crate::k2::agent::protocol;
+    let mut probe = crate::k2::sim::agent_probe::AgentProbe::new();
+    for frame in data.chunks(protocol::SIZE as usize).take(16) {
+        if let Err(e) = probe.write_and_scan(frame).and_then(|_| probe.checked_scan()) {
+            panic!("the helper broke the protocol: {e}");
+        }
+    }
+    let _ = probe.status();
+    let _: Vec<Event> = crate::k2::K2Ops::events(&mut probe.sim, true).unwrap_or_default();
+    let _ = probe.sim.read(&[]);
 }
 
 /// The helper's mailbox address (`--agent VB3400`, `agent il`).

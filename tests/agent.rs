@@ -123,6 +123,32 @@ fn a_missing_helper_is_one_clear_message() {
     assert!(l[0]["error"]["hint"].as_str().unwrap().contains("agent=VB3400"), "{}", l[0]);
 }
 
+/// Issue 30, as reported: a plain Modbus client leaves an SM write with start 40000 in the
+/// mailbox. The helper refuses it (result 2, bad range) and keeps running: the heartbeat
+/// moves and the next helper command is served, not "mailbox busy … is the PLC in RUN?".
+#[test]
+fn a_request_with_a_huge_start_is_refused_and_the_helper_keeps_running() {
+    let srv = Server::start(&["--agent", "VB3400"]);
+    let plain = format!("tcp://{}?model=K205-16DT", srv.tcp);
+    json(Some(&plain), "set VW3502=40000, VW3504=1, VW3500=1; set VW3496=1");
+    let mut s = session(&plain);
+    let read = |s: &mut Session, op: &str| match s.get(&[op]).unwrap()[0].1.value {
+        Value::Int(v) => v,
+        ref v => panic!("{op}: {v:?}"),
+    };
+    let start = Instant::now();
+    while read(&mut s, "VW3408") != 1 {
+        assert!(start.elapsed() < Duration::from_secs(5), "the request was never acknowledged");
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    assert_eq!(read(&mut s, "VW3412"), 2, "result 2: bad range");
+    let beat = read(&mut s, "VW3404");
+    std::thread::sleep(Duration::from_millis(20));
+    assert_ne!(read(&mut s, "VW3404"), beat, "the heartbeat moves: the PLC still scans");
+    let l = json(Some(&srv.url()), "get SMB66");
+    assert_eq!(values(&l[0]).len(), 1, "the helper still answers: {l:?}");
+}
+
 #[test]
 fn two_clients_using_the_mailbox_do_not_corrupt_each_other() {
     let srv = Server::start(&["--agent"]);

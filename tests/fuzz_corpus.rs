@@ -48,3 +48,49 @@ fn every_corpus_and_regression_input_passes_its_target() {
     }
     assert!(seen > TARGETS.len());
 }
+
+/// Issue 30's reproductions, with the refusal each must get: the helper refuses a mailbox
+/// request it cannot serve and keeps scanning; a number too large to hold is refused naming
+/// the limit, never wrapped. `cargo test --release --test fuzz_corpus` shows a release
+/// build (no overflow checks) refusing them the same way.
+#[test]
+fn the_issue_30_reproductions_are_refused_naming_the_limit() {
+    use plcsh::core::Clock;
+    use plcsh::k2::agent::protocol::ResultCode;
+    use plcsh::k2::sim::agent_probe::AgentProbe;
+    use plcsh::output::Style;
+    use plcsh::session::Session;
+    use plcsh::shell::Shell;
+
+    // The mailbox: `set k2:VW3502=40000, k2:VW3504=1, k2:VW3500=1; set k2:VW3496=1`, and
+    // start 100 with length 16#AAAA (acked done after copying one byte).
+    let mut probe = AgentProbe::new();
+    assert_eq!(probe.request(1, [40000, 1, 0], &[0; 64]), Ok(ResultCode::BadRange));
+    assert_eq!(probe.request(2, [100, 0xAAAA, 0], &[0; 64]), Ok(ResultCode::BadRange));
+    assert_eq!(probe.request(2, [66, 1, 0], &[0; 64]), Ok(ResultCode::Ok), "still serving");
+
+    let mut session = Session::new(Clock::stepped());
+    session.open("plc", "sim:K205-16DT").unwrap();
+    let mut sh = Shell::new(session, Style { json: true, color: false });
+    let mut refusal = |line: &str| -> String {
+        let r = sh.exec(line);
+        let e = r.into_iter().find_map(|r| r.err()).unwrap_or_else(|| panic!("`{line}` was accepted"));
+        e.1.message.clone()
+    };
+    // The cycle × frequency product wrapped ("0 Hz is above Q0.0's limit") or panicked.
+    for line in ["pwm 0 cycle=368934881474192us width=250us", "pwm 0 cycle=122222h width=2"] {
+        let m = refusal(line);
+        assert!(m.contains("up to 65 535 µs, or whole milliseconds up to 65 535 ms"), "{line}: {m}");
+    }
+    // The operand range iterator and group arithmetic overflowed.
+    for line in ["get VD4294967292[2]", "get K8M536870912.0[2]", "get AIW4294967295"] {
+        let m = refusal(line);
+        assert!(m.contains("addresses go up to 65535"), "{line}: {m}");
+    }
+
+    // A device URL's timeout in ms × 1000 wrapped to 384 µs.
+    for url in ["sim-servo:?id=1&timeout=18446744073709552", "tcp://127.0.0.1:9?timeout=18446744073709552"] {
+        let e = Session::new(Clock::stepped()).open("d", url).map(|_| ()).unwrap_err();
+        assert!(e.message.contains("longer than a day (86400000 ms)"), "{url}: {e}");
+    }
+}

@@ -517,15 +517,16 @@ fn responder(port: bool, mut answer: impl FnMut(&Req, usize) -> Vec<Act> + Send 
                 Err(_) => break,
             };
             for act in answer(&req, k) {
+                // One character per character time, never faster: a thread woken late (a loaded
+                // machine) does not catch up with a burst, as a line cannot.
                 let paced = |w: &mut File, bytes: &[u8], baud: u32| {
-                    let start = Instant::now();
-                    for (i, b) in bytes.iter().enumerate() {
-                        let due = start + char_time(baud) * i as u32;
+                    let mut due = Instant::now();
+                    for b in bytes {
                         std::thread::sleep(due.saturating_duration_since(Instant::now()));
                         let _ = w.write_all(&[*b]);
+                        due = due.max(Instant::now()) + char_time(baud);
                     }
-                    let done = start + char_time(baud) * bytes.len() as u32;
-                    std::thread::sleep(done.saturating_duration_since(Instant::now()));
+                    std::thread::sleep(due.saturating_duration_since(Instant::now()));
                 };
                 match act {
                     Act::Sleep(d) => std::thread::sleep(d),

@@ -207,9 +207,10 @@ fn parse_number(s: &str) -> Result<Literal, LiteralError> {
         if let Some((i, c)) = body[hash + 1..].char_indices().find(|&(_, c)| c != '_' && !c.is_digit(radix)) {
             return Err(err(off + hash + 1 + i, format!("`{c}` is not a base-{radix} digit")));
         }
-        let v = u64::from_str_radix(&digits, radix).map_err(|_| err(off, "number too large"))?;
+        let v = u64::from_str_radix(&digits, radix)
+            .map_err(|_| err(off, format!("{s} is wider than 32 bits (16#FFFF_FFFF at most)")))?;
         if v > u32::MAX as u64 {
-            return Err(err(off, format!("{s} is wider than 32 bits")));
+            return Err(err(off, format!("{s} is wider than 32 bits (16#FFFF_FFFF at most)")));
         }
         let v = if neg { -(v as i64) } else { v as i64 };
         return Ok(Literal { value: Value::Int(v), declared: None, pattern: radix != 10 && !neg, text: String::new() });
@@ -227,7 +228,7 @@ fn parse_number(s: &str) -> Result<Literal, LiteralError> {
     if let Some((i, c)) = body.char_indices().find(|&(_, c)| !c.is_ascii_digit() && c != '_') {
         return Err(err(off + i, format!("`{c}` is not a digit in `{s}`")));
     }
-    let v: i64 = digits.parse().map_err(|_| err(off, format!("{s} is too large")))?;
+    let v: i64 = digits.parse().map_err(|_| err(off, format!("{s} is too large: integers go up to {}", i64::MAX)))?;
     Ok(Literal { value: Value::Int(if neg { -v } else { v }), declared: None, pattern: false, text: String::new() })
 }
 
@@ -243,17 +244,38 @@ pub fn parse_duration_ms(s: &str) -> Result<i64, String> {
 
 /// A duration given to a command or a Lua call (`every=`, `for=`, `timeout=`, `sim step`):
 /// a bare number is milliseconds — the one unit rule for times (README "Units") — and a
-/// number with a unit is that (`500ms`, `2s`, `250us`). In microseconds.
+/// number with a unit is that (`500ms`, `2s`, `250us`). In microseconds; refused past
+/// [`i64::MAX`] µs, not saturated.
 pub fn parse_option_duration_us(s: &str) -> Result<i64, String> {
+    whole_us(option_duration_us(s)?, s)
+}
+
+/// [`parse_option_duration_us`] before the limit: µs as a float (syntax errors only).
+fn option_duration_us(s: &str) -> Result<f64, String> {
     let t = s.trim().replace('_', "");
     match t.parse::<f64>() {
-        Ok(ms) if ms.is_finite() && !t.is_empty() => Ok((ms * 1000.0).round() as i64),
-        _ => parse_duration_us(s),
+        Ok(ms) if ms.is_finite() && !t.is_empty() => Ok(ms * 1000.0),
+        _ => duration_us(s),
     }
 }
 
 /// A duration in microseconds from text like `500ms`, `1s200ms`, `2.5s`, `250us`, `1h`.
+/// Refused past [`i64::MAX`] µs (about 292 000 years), not saturated.
 pub fn parse_duration_us(s: &str) -> Result<i64, String> {
+    whole_us(duration_us(s)?, s)
+}
+
+/// Rounds to whole µs, refusing what an i64 cannot hold.
+fn whole_us(us: f64, text: &str) -> Result<i64, String> {
+    // `i64::MAX as f64` is 2^63: everything below it rounds to at most i64::MAX.
+    if us.is_finite() && us.abs() < i64::MAX as f64 {
+        Ok(us.round() as i64)
+    } else {
+        Err(format!("`{}` is longer than the longest duration, {} µs (about 292 000 years)", text.trim(), i64::MAX))
+    }
+}
+
+fn duration_us(s: &str) -> Result<f64, String> {
     let s = s.trim().to_ascii_lowercase();
     if s.is_empty() {
         return Err("a duration is missing (e.g. 500ms, 2s, 250us)".into());
@@ -280,7 +302,28 @@ pub fn parse_duration_us(s: &str) -> Result<i64, String> {
         total += n * factor;
         rest = &rest[unit_len..];
     }
-    Ok(total.round() as i64)
+    Ok(total)
+}
+
+/// The longest link timeout (`timeout=` of a device URL or `device set`): a day. A link
+/// that has not answered in a day is down; and a wait this long still fits every
+/// platform's clock arithmetic (`Instant + timeout`), where a century would not.
+pub const MAX_TIMEOUT: std::time::Duration = std::time::Duration::from_secs(86_400);
+
+/// A link's `timeout=`: a bare number is milliseconds (README "Units"), or a duration with
+/// a unit (`500ms`, `2s`); more than zero and at most [`MAX_TIMEOUT`].
+pub fn parse_timeout(text: &str) -> Result<std::time::Duration, String> {
+    let us = option_duration_us(text)?;
+    if us.is_nan() || us <= 0.0 {
+        return Err(format!("`timeout={text}` must be more than zero (e.g. 200ms)"));
+    }
+    if us > MAX_TIMEOUT.as_micros() as f64 {
+        return Err(format!(
+            "`timeout={text}` is longer than a day ({} ms), the longest a link waits for a reply",
+            MAX_TIMEOUT.as_millis()
+        ));
+    }
+    Ok(std::time::Duration::from_micros(us.round() as u64))
 }
 
 impl Literal {
@@ -459,5 +502,34 @@ mod tests {
         assert_eq!(parse_duration_us("2.5s"), Ok(2_500_000));
         assert_eq!(parse_duration_us("1m30s"), Ok(90_000_000));
         assert!(parse_duration_us("fast").is_err());
+    }
+
+    /// Issue 30: durations past what an i64 of µs holds saturated (or wrapped, for a
+    /// timeout in ms times 1000) instead of being refused.
+    #[test]
+    fn a_duration_too_long_to_hold_is_refused_naming_the_limit() {
+        for text in ["9999999999999999999999h", "3000000000000000000000000000000000000000000s", "106751992d"] {
+            let e = parse_duration_us(text).unwrap_err();
+            assert!(e.contains("9223372036854775807 µs"), "{text}: {e}");
+        }
+        assert_eq!(parse_duration_us("106751991d"), Ok(106_751_991 * 86_400_000_000));
+        let e = parse_option_duration_us("1e30").unwrap_err();
+        assert!(e.contains("9223372036854775807 µs"), "{e}");
+        assert_eq!(parse_option_duration_us("2.5"), Ok(2_500));
+    }
+
+    #[test]
+    fn a_timeout_is_positive_and_at_most_a_day() {
+        use std::time::Duration;
+        assert_eq!(parse_timeout("200"), Ok(Duration::from_millis(200)));
+        assert_eq!(parse_timeout("2s"), Ok(Duration::from_secs(2)));
+        assert_eq!(parse_timeout("86400000"), Ok(MAX_TIMEOUT));
+        // 18446744073709552 ms × 1000 wrapped to 384 µs.
+        for text in ["18446744073709552", "86400001", "25h", "1e30"] {
+            let e = parse_timeout(text).unwrap_err();
+            assert!(e.contains("86400000 ms"), "{text}: {e}");
+        }
+        assert!(parse_timeout("0").unwrap_err().contains("more than zero"));
+        assert!(parse_timeout("-5").is_err());
     }
 }

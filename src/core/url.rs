@@ -49,14 +49,19 @@ impl DeviceUrl {
         self.params.iter().rev().find(|(k, _)| k == key).map(|(_, v)| v.as_str())
     }
 
-    /// A numeric parameter, with a clear error when it is not a number.
-    pub fn param_num<T: std::str::FromStr>(&self, key: &str) -> Result<Option<T>> {
-        match self.param(key) {
-            None => Ok(None),
-            Some(v) => {
-                v.parse().map(Some).map_err(|_| Error::usage(format!("`{key}={v}` in {} is not a number", self.text)))
-            }
+    /// A numeric parameter, with a clear error when it is not a whole number or is past
+    /// the largest value the setting holds.
+    pub fn param_num<T: UrlNumber>(&self, key: &str) -> Result<Option<T>> {
+        let Some(v) = self.param(key) else { return Ok(None) };
+        if let Ok(n) = v.parse() {
+            return Ok(Some(n));
         }
+        let digits = !v.is_empty() && v.bytes().all(|b| b.is_ascii_digit());
+        Err(Error::usage(if digits {
+            format!("`{key}={v}` in {} is too large: at most {}", self.text, T::MAX)
+        } else {
+            format!("`{key}={v}` in {} is not a whole number", self.text)
+        }))
     }
 
     /// Errors on parameters outside `known`, so typos do not pass silently.
@@ -69,6 +74,24 @@ impl DeviceUrl {
         }
         Ok(())
     }
+}
+
+/// The unsigned types a URL parameter is read into, with their largest value for messages.
+pub trait UrlNumber: std::str::FromStr {
+    const MAX: u64;
+}
+
+impl UrlNumber for u8 {
+    const MAX: u64 = u8::MAX as u64;
+}
+impl UrlNumber for u16 {
+    const MAX: u64 = u16::MAX as u64;
+}
+impl UrlNumber for u32 {
+    const MAX: u64 = u32::MAX as u64;
+}
+impl UrlNumber for u64 {
+    const MAX: u64 = u64::MAX;
 }
 
 #[cfg(test)]
@@ -89,5 +112,16 @@ mod tests {
         assert!(DeviceUrl::parse("nothing").is_err());
         assert!(u.expect_params(&["unit"]).is_err());
         assert!(DeviceUrl::parse("x:?unit=a").unwrap().param_num::<u8>("unit").is_err());
+    }
+
+    #[test]
+    fn a_number_too_large_names_the_limit() {
+        let u = DeviceUrl::parse("x:?unit=300&baud=99999999999&retries=-1").unwrap();
+        let e = u.param_num::<u8>("unit").unwrap_err();
+        assert!(e.message.contains("`unit=300`") && e.message.contains("255"), "{e}");
+        let e = u.param_num::<u32>("baud").unwrap_err();
+        assert!(e.message.contains("4294967295"), "{e}");
+        let e = u.param_num::<u32>("retries").unwrap_err();
+        assert!(e.message.contains("not a whole number"), "{e}");
     }
 }

@@ -816,7 +816,9 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
             if t.to_ascii_uppercase().starts_with("T#") {
                 let lit = parse_literal(t).map_err(|e| self.e(o.pos, format!("{t}: {}", e.message)))?;
                 let ms = lit.value.as_i64();
-                let units = (ms as i128 * 1_000_000 / base.max(1) as i128) as i64;
+                // In i128 to the end: a long T# on a fine time base must be refused, not
+                // truncated back into 0…32767.
+                let units = ms as i128 * 1_000_000 / base.max(1) as i128;
                 if !(0..=32767).contains(&units) {
                     return Err(
                         self.e(o.pos, format!("{t} is {units} units of this timer; the preset must be 0…32767"))

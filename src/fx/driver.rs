@@ -46,7 +46,6 @@ use super::sim::{LinkServer, Plc, PortServer, Server, SimLink};
 use super::space::{FxSpace, Proto};
 use crate::core::link::line::{self as lines, SharedLine, Transport};
 use crate::core::link::serial::{Carrier, LineSettings, Parity};
-use crate::core::literal::parse_duration_us;
 use crate::core::trace::{self, Dir};
 use crate::core::url::DeviceUrl;
 use crate::core::{Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
@@ -984,14 +983,7 @@ impl Device for Driver {
 }
 
 fn parse_timeout(v: &str) -> Result<Duration> {
-    let us = match v.parse::<u64>() {
-        Ok(ms) => ms as i64 * 1000,
-        Err(_) => parse_duration_us(v).map_err(Error::usage)?,
-    };
-    if us <= 0 {
-        return Err(Error::usage(format!("timeout `{v}` must be positive (e.g. 500ms)")));
-    }
-    Ok(Duration::from_micros(us as u64))
+    crate::core::literal::parse_timeout(v).map_err(Error::usage)
 }
 
 fn model_of(u: &DeviceUrl, default: Option<&str>) -> Result<&'static Model> {

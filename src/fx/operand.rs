@@ -478,9 +478,10 @@ fn parse_number(area: Area, digits: &str, col: usize, whole: &str) -> Result<u16
                 ),
             ));
         }
-        return u16::from_str_radix(digits, 8).map_err(|_| op_err(col, format!("`{digits}` is too large")));
+        return u16::from_str_radix(digits, 8)
+            .map_err(|_| op_err(col, format!("`{digits}` is too large: device numbers go up to 177777 (octal)")));
     }
-    digits.parse().map_err(|_| op_err(col, format!("`{digits}` is too large")))
+    digits.parse().map_err(|_| op_err(col, format!("`{digits}` is too large: device numbers go up to {}", u16::MAX)))
 }
 
 /// Parses exactly one operand.
@@ -592,6 +593,11 @@ mod tests {
 
     fn p(s: &str) -> FxOperand {
         parse_one(s).unwrap_or_else(|e| panic!("{s}: {e}"))
+    }
+
+    #[test]
+    fn device_numbers_past_u16_name_the_limit() {
+        assert!(parse_one("D70000").unwrap_err().message.contains("up to 65535"));
     }
 
     #[test]

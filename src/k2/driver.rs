@@ -111,15 +111,8 @@ pub struct Settings {
 }
 
 /// Parses `timeout=`: milliseconds, or a duration with a unit (`500ms`, `2s`).
-fn parse_timeout(text: &str) -> Result<Duration> {
-    let us = match text.trim().parse::<u64>() {
-        Ok(ms) => ms as i64 * 1000,
-        Err(_) => crate::core::literal::parse_duration_us(text).map_err(Error::usage)?,
-    };
-    if us <= 0 {
-        return Err(Error::usage(format!("`timeout={text}` must be more than zero")));
-    }
-    Ok(Duration::from_micros(us as u64))
+fn parse_timeout(v: &str) -> Result<Duration> {
+    crate::core::literal::parse_timeout(v).map_err(Error::usage)
 }
 
 /// One exchange: a read whose reply stays in the client's buffer, or any request decoded.
@@ -847,6 +840,9 @@ mod tests {
         assert_eq!(parse_timeout("250").unwrap(), Duration::from_millis(250));
         assert_eq!(parse_timeout("2s").unwrap(), Duration::from_secs(2));
         assert!(parse_timeout("0").is_err());
+        // Issue 30: 18446744073709552 ms × 1000 wrapped to 384 µs in a release build.
+        let e = parse_timeout("18446744073709552").unwrap_err();
+        assert!(e.message.contains("longer than a day (86400000 ms)"), "{e}");
         let rtu = Link::Rtu { path: "/dev/null".into(), line: LineSettings::n81(9600) };
         assert_eq!(
             rtu.default_timeout(),

@@ -343,13 +343,35 @@ pub fn parse_one(text: &str) -> Result<K2Operand> {
     Ok(op)
 }
 
-/// Reads a decimal number at the start of `s`; returns it and its length.
+/// Reads a decimal number at the start of `s`; returns it and its length. Digits past
+/// u32 read as u32::MAX: every caller refuses that ([`MAX_ADDRESS`], bits 0…7).
 fn number(s: &str) -> Option<(u32, usize)> {
     let len = s.find(|c: char| !c.is_ascii_digit()).unwrap_or(s.len());
     if len == 0 {
         return None;
     }
-    s[..len].parse().ok().map(|n| (n, len))
+    Some((s[..len].parse().unwrap_or(u32::MAX), len))
+}
+
+/// The largest byte (or element) address the grammar reads. Far above every area of every
+/// model (the model's own limit is checked next, `K2Space::check`), and small enough that
+/// stepping through a range or count (`VD65532[4096]`) and bit arithmetic (`× 8`) never
+/// overflow.
+pub const MAX_ADDRESS: u32 = 65_535;
+
+/// Refuses an address past [`MAX_ADDRESS`], quoting the operand as typed.
+fn address(n: u32, col: usize, original: &str) -> Result<u32> {
+    if n <= MAX_ADDRESS {
+        return Ok(n);
+    }
+    let largest = crate::k2::catalog::MODELS.iter().map(|m| m.v_bytes).max().unwrap_or(1);
+    Err(op_err(
+        col,
+        format!(
+            "`{original}` is past every K2 area: addresses go up to {MAX_ADDRESS} at most (the largest area, V, ends at VB{})",
+            largest - 1
+        ),
+    ))
 }
 
 fn parse_body(s: &str, original: &str) -> Result<K2Operand> {
@@ -392,6 +414,7 @@ fn parse_body(s: &str, original: &str) -> Result<K2Operand> {
                 op_err(alen, format!("{} needs a number ({}0…{}255)", area.name(), area.name(), area.name()))
             })?;
             trailing(len)?;
+            let n = address(n, alen, original)?;
             Ok(K2Operand::new(area, Width::Element, n))
         }
         Area::AI | Area::AQ => {
@@ -402,11 +425,12 @@ fn parse_body(s: &str, original: &str) -> Result<K2Operand> {
                 op_err(alen + 1, format!("{}W needs a byte address (e.g. {}W0)", area.name(), area.name()))
             })?;
             trailing(len + 1)?;
+            let n = address(n, alen + 1, original)?;
             if n % 2 != 0 {
-                return Err(op_err(
-                    alen + 1,
-                    format!("analog words are at even addresses: {a}W{} or {a}W{}", n - 1, n + 1, a = area.name()),
-                ));
+                let a = area.name();
+                let near =
+                    if n < MAX_ADDRESS { format!("{a}W{} or {a}W{}", n - 1, n + 1) } else { format!("{a}W{}", n - 1) };
+                return Err(op_err(alen + 1, format!("analog words are at even addresses: {near}")));
             }
             Ok(K2Operand::word(area, n))
         }
@@ -432,6 +456,7 @@ fn parse_body(s: &str, original: &str) -> Result<K2Operand> {
                     ));
                 }
                 trailing(len + 1)?;
+                let n = address(n, alen + 1, original)?;
                 return Ok(K2Operand::new(area, w, n));
             }
             let (n, len) = number(rest).ok_or_else(|| {
@@ -458,6 +483,7 @@ fn parse_body(s: &str, original: &str) -> Result<K2Operand> {
                 ));
             }
             trailing(len + 1 + blen)?;
+            let n = address(n, alen, original)?;
             Ok(K2Operand::bit(area, n, bit as u8))
         }
     }
@@ -474,9 +500,14 @@ fn parse_group(rest: &str, original: &str) -> Result<K2Operand> {
     if inner.starts_with('K') {
         return Err(op_err(2, format!("K{n} groups bits of I, Q, M, V or SM; groups do not nest")));
     }
-    let body = parse_body(inner, &original[original.len() - inner.len()..]).or_else(|_| {
+    let typed = &original[original.len() - inner.len()..];
+    let body = parse_body(inner, typed).or_else(|e| {
+        if inner.contains('.') {
+            // A bit was given: the first error is the one to report.
+            return Err(e);
+        }
         // `K4M0` names a byte without a bit: read it as bit 0.
-        parse_body(&format!("{inner}.0"), &format!("{}.0", &original[original.len() - inner.len()..]))
+        parse_body(&format!("{inner}.0"), &format!("{typed}.0"))
     });
     let op = body.map_err(|e| e.shift(2))?;
     let Width::Bit(bit) = op.width else {
@@ -538,6 +569,28 @@ mod tests {
         assert!(e.message.contains("do not nest"), "{}", e.message);
         assert!(parse_expr("K1K1M0").is_err());
         assert_eq!(canon("K1M0"), "K1M0");
+    }
+
+    /// Issue 30: addresses near the top of u32 overflowed the range iterator (`byte +=
+    /// 4`), the group arithmetic (`byte * 8`) and the odd-analog hint (`n + 1`).
+    #[test]
+    fn addresses_past_every_area_are_refused_naming_the_limit() {
+        for text in [
+            "VD4294967292[2]",
+            "VD4294967292..VD4294967295",
+            "AIW4294967295",
+            "K8M536870912.0[2]",
+            "T4294967295[2]",
+            "VB65536",
+            "M70000.0",
+        ] {
+            let e = parse_expr(text).unwrap_err();
+            assert!(e.message.contains("65535"), "{text}: {e}");
+        }
+        assert_eq!(canon("VB65535"), "VB65535", "the grammar's limit; the model's comes later");
+        let e = parse_expr("AIW65535").unwrap_err();
+        assert!(e.message.contains("AIW65534") && !e.message.contains("65536"), "{e}");
+        assert!(parse_expr("AIW7").unwrap_err().message.contains("AIW6 or AIW8"));
     }
 
     fn canon(s: &str) -> String {

@@ -423,14 +423,7 @@ impl ServoOps for Driver {
 }
 
 fn parse_timeout(v: &str) -> Result<Duration> {
-    let us = match v.parse::<u64>() {
-        Ok(ms) => ms as i64 * 1000,
-        Err(_) => parse_duration_us(v).map_err(Error::usage)?,
-    };
-    if us <= 0 {
-        return Err(Error::usage(format!("timeout `{v}` must be positive (e.g. 200ms)")));
-    }
-    Ok(Duration::from_micros(us as u64))
+    crate::core::literal::parse_timeout(v).map_err(Error::usage)
 }
 
 /// Shared URL settings of both schemes.

@@ -44,7 +44,7 @@ impl Resolution {
 pub fn parse_resolution(text: &str) -> Result<u32, String> {
     match text.trim().replace('_', "").parse::<u32>() {
         Ok(r) if r > 0 => Ok(r),
-        _ => Err(format!("encoder resolution `{text}` is not a positive whole number of increments per revolution (e.g. 10000 or 65536)")),
+        _ => Err(format!("encoder resolution `{text}` is not a whole number of increments per revolution in 1…{} (e.g. 10000 or 65536)", u32::MAX)),
     }
 }
 

@@ -35,7 +35,6 @@ use super::sim::{Umpk, RESET_TIME};
 use super::space::{UmpkOperand, UmpkSpace};
 use crate::core::link::line::Transport;
 use crate::core::link::serial::{Carrier, LineSettings};
-use crate::core::literal::parse_duration_us;
 use crate::core::trace::{self, Dir};
 use crate::core::url::DeviceUrl;
 use crate::core::{Clock, Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
@@ -595,14 +594,7 @@ impl Device for Driver {
 }
 
 fn parse_timeout(v: &str) -> Result<Duration> {
-    let us = match v.parse::<u64>() {
-        Ok(ms) => ms as i64 * 1000,
-        Err(_) => parse_duration_us(v).map_err(Error::usage)?,
-    };
-    if us <= 0 {
-        return Err(Error::usage(format!("timeout `{v}` must be positive (e.g. 500ms)")));
-    }
-    Ok(Duration::from_micros(us as u64))
+    crate::core::literal::parse_timeout(v).map_err(Error::usage)
 }
 
 fn model_param(u: &DeviceUrl, text: Option<&str>) -> Result<Option<&'static Model>> {

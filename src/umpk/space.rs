@@ -95,7 +95,9 @@ impl UmpkSpace {
                 .hint("UMPK operands: I0…, Q0…, M0…, T0…, C0…C3 (help I0 tells more)")
         })?;
         let num = chars.as_str();
-        let index: u32 = num.parse().map_err(|_| {
+        let digits = !num.is_empty() && num.bytes().all(|b| b.is_ascii_digit());
+        // Digits past u32 read as u32::MAX: past the end of every area, refused below.
+        let index: u32 = num.parse().or_else(|e| if digits { Ok(u32::MAX) } else { Err(e) }).map_err(|_| {
             Error::new(ErrorKind::Operand, format!("`{text}`: a number must follow {letter} (e.g. {letter}0)"))
                 .column(col)
         })?;
@@ -103,7 +105,7 @@ impl UmpkSpace {
         if index >= size {
             return Err(Error::new(
                 ErrorKind::Range,
-                format!("{letter}{index} is past the end: the {} has {letter}0…{letter}{}", self.model.name, size - 1),
+                format!("{} is past the end: the {} has {letter}0…{letter}{}", t, self.model.name, size - 1),
             )
             .column(col));
         }
@@ -185,6 +187,8 @@ mod tests {
         let s16 = UmpkSpace { model: model::find("UMPK16").unwrap() };
         assert_eq!(s8.parse("I7").unwrap().len(), 1);
         assert_eq!(s8.parse("I8").unwrap_err().kind, ErrorKind::Range);
+        let e = s8.parse("I99999999999").unwrap_err();
+        assert!(e.message.contains("I99999999999 is past the end") && e.message.contains("I0…I7"), "{e}");
         assert!(s16.parse("I15").is_ok() && s16.parse("Q7").is_ok() && s16.parse("M63").is_ok());
         assert!(s16.parse("T15").is_ok() && s16.parse("C3").is_ok());
         assert!(s8.parse("Q4").is_err() && s8.parse("M32").is_err() && s8.parse("T8").is_err());

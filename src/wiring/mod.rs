@@ -194,10 +194,17 @@ pub fn parse(text: &str) -> Result<Decl> {
             }
             "delay" => {
                 let us = crate::core::literal::parse_duration_us(v)
-                    .ok()
-                    .filter(|us| *us >= 0)
-                    .ok_or_else(|| Error::usage(format!("delay={v} is not a duration")).hint("e.g. delay=2ms"))?;
-                d.delay_ns = us as u64 * 1000;
+                    .map_err(|m| Error::usage(format!("delay={v}: {m}")).hint("e.g. delay=2ms"))?;
+                if us < 0 {
+                    return Err(Error::usage(format!("delay={v} is negative")).hint("e.g. delay=2ms"));
+                }
+                // A wire's delay is held in ns: refused past u64, not wrapped.
+                d.delay_ns = (us as u64).checked_mul(1000).ok_or_else(|| {
+                    Error::usage(format!(
+                        "delay={v} is longer than a wire holds: at most {} µs (about 584 years)",
+                        u64::MAX / 1000
+                    ))
+                })?;
             }
             _ => {
                 return Err(Error::usage(format!("wires have no option `{k}`"))
@@ -513,6 +520,8 @@ mod tests {
         assert_eq!(d.to_string(), "servo:encoder -> plc:I0.1,I0.0 lines=1250");
         let d = parse("plc:Q0.1 -> plc:I0.3 delay=2ms").unwrap();
         assert_eq!(d.delay_ns, 2_000_000);
+        let e = parse("plc:Q0.1 -> plc:I0.3 delay=18446744073709552us").unwrap_err();
+        assert!(e.to_string().contains("at most 18446744073709551 µs"), "{e}");
         assert!(parse("plc:Q0.0 servo:pulse").unwrap_err().to_string().contains("FROM -> TO"));
         assert!(parse("plc:Q0.0 -> servo:pulse gain=2").is_err());
         assert!(parse("Q0.0 -> servo:pulse").is_err());

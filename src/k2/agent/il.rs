@@ -1,7 +1,10 @@
 //! Generates the PLC-side helper program (`lib/k2_agent.il`) from the protocol constants and
 //! the counter-mode table, for any mailbox base address: `plcsh agent il --base VB3400`.
-//! Generating it keeps the program and the protocol (and [`super::protocol::execute_scan`],
-//! which the simulator runs) from drifting apart, and spares users hand-editing addresses.
+//! Generating it keeps the program and the protocol from drifting apart — its refusals
+//! are emitted from the same table as [`super::protocol::Command::decode`]'s
+//! ([`super::protocol::checks`]) — and spares users hand-editing addresses. The simulator
+//! runs this very text (`plcsh sim serve --agent`), and `crate::k2::sim::agent_probe`
+//! checks it against the protocol scan by scan.
 
 use super::protocol::{self as p, Command};
 use crate::k2::sm_map::{HSC_MODES, PTO_REGS};
@@ -91,6 +94,93 @@ impl Gen {
             self.line("AW=", &format!("{a}, {a2}"), "");
         }
     }
+    /// `LD` of "the request's command is one of `commands`" (signed compares are exact here:
+    /// the codes are small, and a code of 32768 or more, negative as an INT, is in no range).
+    fn gate(&mut self, commands: (u16, u16), comment: &str) {
+        let cmd = self.w(p::Field::Command.offset());
+        match commands {
+            (a, b) if a == b => self.line("LDW=", &format!("{cmd}, {a}"), comment),
+            (a, b) => {
+                self.line("LDW>=", &format!("{cmd}, {a}"), comment);
+                self.line("AW<=", &format!("{cmd}, {b}"), "");
+            }
+        }
+    }
+
+    /// The refusals of [`p::checks`], in order: each sets the result and jumps to the ack.
+    /// The PLC compares words only as signed INTs (S7-200 convention; no unsigned compare),
+    /// so "word < lo" with lo ≥ 0 also catches words of 32768 or more, and ARG1 + ARG2 is
+    /// computed only after earlier rows bounded both, so the sum cannot overflow an INT.
+    fn checks(&mut self) {
+        let (result, count) = (self.result(), self.count());
+        let rows = p::checks();
+        let mut summed: Option<(u16, u16)> = None;
+        for (i, c) in rows.iter().enumerate() {
+            let why = format!("{} -> result {}", c.why, c.result.code());
+            if matches!(c.test, p::Test::EndAbove(_) | p::Test::Overlaps(..)) {
+                let cmds = c.commands.expect("a sum check names its commands");
+                match summed {
+                    Some((a, b)) => assert!(a <= cmds.0 && cmds.1 <= b, "check {i}: the sum was computed for {a}…{b}"),
+                    None => {
+                        let bound = |f: p::Field| {
+                            rows[..i]
+                                .iter()
+                                .filter(|r| r.commands.is_none_or(|(a, b)| a <= cmds.0 && cmds.1 <= b))
+                                .filter_map(|r| match r.test {
+                                    p::Test::Outside(g, _, hi) if g == f => Some(hi as u32),
+                                    _ => None,
+                                })
+                                .min()
+                                .unwrap_or_else(|| panic!("check {i}: {} is not bounded before the sum", f.name()))
+                        };
+                        let max = bound(p::Field::Arg1) + bound(p::Field::Arg2);
+                        assert!(max <= p::INT_MAX as u32, "check {i}: ARG1 + ARG2 can reach {max}, past an INT");
+                        let (a1, a2) = (self.w(p::Field::Arg1.offset()), self.w(p::Field::Arg2.offset()));
+                        self.gate(cmds, &format!("both bounded: ARG1 + ARG2 <= {max}, no INT overflow"));
+                        self.line("MOVE", &format!("{a1}, {count}"), "");
+                        self.line("ADD", &format!("{a2}, {count}"), "");
+                        summed = Some(cmds);
+                    }
+                }
+            }
+            let w = |g: &Self, f: p::Field| g.w(f.offset());
+            match c.test {
+                p::Test::Is(f, v) => {
+                    assert!(v <= p::INT_MAX, "check {i}: {v} is not an INT literal");
+                    match c.commands {
+                        Some(cmds) => self.gate(cmds, &why),
+                        None => self.line("LD", "%SM0.0", &why),
+                    }
+                    self.line("AW=", &format!("{}, {v}", w(self, f)), "");
+                }
+                p::Test::Outside(f, lo, hi) => {
+                    assert!(lo <= hi && hi <= p::INT_MAX, "check {i}: {lo}..{hi} is not within 0..32767");
+                    let x = w(self, f);
+                    if let Some(cmds) = c.commands {
+                        self.gate(cmds, &why);
+                        self.line("LDW<", &format!("{x}, {lo}"), "also 32768..65535: negative as an INT");
+                        self.line("OW>", &format!("{x}, {hi}"), "");
+                        self.line("ALD", "", "");
+                    } else {
+                        self.line("LDW<", &format!("{x}, {lo}"), &why);
+                        self.line("OW>", &format!("{x}, {hi}"), "32768..65535 are negative: caught above");
+                    }
+                }
+                p::Test::EndAbove(l) => {
+                    self.gate(c.commands.expect("checked above"), &why);
+                    self.line("AW>", &format!("{count}, {l}"), "");
+                }
+                p::Test::Overlaps(lo, hi) => {
+                    self.gate(c.commands.expect("checked above"), &why);
+                    self.line("AW<", &format!("{}, {hi}", w(self, p::Field::Arg1)), "");
+                    self.line("AW>", &format!("{count}, {lo}"), "");
+                }
+            }
+            self.line("MOVE", &format!("{}, {result}", c.result.code()), "");
+            self.line("JMPC", "ACK", "");
+        }
+    }
+
     /// A byte-copy loop through two pointers (S7-200-style `&`/`*` indirect addressing).
     fn copy_loop(&mut self, label: &str) {
         let (src, dst, count) = (self.src(), self.dst(), self.count());
@@ -123,9 +213,14 @@ pub fn program(base: u32) -> String {
    Status: exercised only against plcsh's simulator, which executes this text in its IL
    engine (`plcsh sim serve --agent`); not yet run on a real K2. Mnemonics the K2 manual shows
    (LD, ST, R_TRIG, MOVE with typed operands, PLS) are used as shown there; comparisons
-   (AW=, LDW>), ADD/SUB, jumps and the &/* indirect addressing are written as in
+   (AW=, LDW<), ALD, ADD/SUB, jumps and the &/* indirect addressing are written as in
    KincoBuilder's S7-200-style IL. If KincoBuilder rejects a line, enter that network in
    LD with the logic its comment gives.
+
+   Network 3 refuses malformed requests before anything runs (docs/agent.md, section Checks).
+   Word compares are signed INT compares, so each `word < bound` test also catches the
+   words 32768..65535, and ARG1 + ARG2 is added only after both are bounded: no request
+   makes this program address memory outside SMB0..SMB549 or stop the CPU.
 
    Install in KincoBuilder:
      1. Add a subroutine PLCSH_AGENT, language IL; paste this file into it.
@@ -153,34 +248,8 @@ pub fn program(base: u32) -> String {
     g.line("JMPC", "DONE", "nothing to do");
 
     let (a1, a2) = (g.w(p::OFF_REQUEST + 6), g.w(p::OFF_REQUEST + 8));
-    g.net("SM range check for commands 1 and 2: SMB1..SMB549 writable, SMB0..SMB549 readable, 1..64 bytes at once");
-    let cmd = g.w(p::OFF_REQUEST + 4);
-    g.line("LDW=", &format!("{cmd}, 1"), "");
-    g.line("OW=", &format!("{cmd}, 2"), "");
-    g.line("JMPCN", "NOT_SM", "other commands skip these checks");
-    g.line("LDW=", &format!("{cmd}, 1"), "write");
-    g.line("AW=", &format!("{a1}, 0"), "SMB0 holds the system bits");
-    g.line("MOVE", &format!("{}, {result}", p::ResultCode::ReadOnly.code()), "");
-    g.line("JMPC", "ACK", "");
-    g.line("LDW>", &format!("{a2}, {}", p::DATA_MAX), "");
-    g.line("OW=", &format!("{a2}, 0"), "");
-    g.line("MOVE", &format!("{}, {result}", p::ResultCode::BadRange.code()), "");
-    g.line("JMPC", "ACK", "");
-    let count = g.count();
-    g.line("LD", "%SM0.0", "ARG1 + ARG2 must not pass SMB549");
-    g.line("MOVE", &format!("{a1}, {count}"), "");
-    g.line("ADD", &format!("{a2}, {count}"), "");
-    g.line("LDW>", &format!("{count}, {}", crate::k2::catalog::SM_BYTES), "");
-    g.line("MOVE", &format!("{}, {result}", p::ResultCode::BadRange.code()), "");
-    g.line("JMPC", "ACK", "");
-    for r in PTO_REGS {
-        g.line("LDW=", &format!("{cmd}, 1"), &format!("SMD{} is read-only (section 3.4.3.1)", r.pos_cv));
-        g.line("AW<", &format!("{a1}, {}", r.pos_cv + 4), "");
-        g.line("AW>", &format!("{count}, {}", r.pos_cv), "");
-        g.line("MOVE", &format!("{}, {result}", p::ResultCode::ReadOnly.code()), "");
-        g.line("JMPC", "ACK", "");
-    }
-    g.label("NOT_SM");
+    g.net("refuse malformed requests: the checks of docs/agent.md, in order, over unsigned words");
+    g.checks();
 
     g.net("command 1: copy ARG2 bytes of request data to SMB[ARG1]");
     g.when(Command::SmWrite { start: 0, data: vec![] }.code());
@@ -211,12 +280,7 @@ pub fn program(base: u32) -> String {
     let ok = g.ok();
     let code = |r: p::ResultCode| r.code();
 
-    g.net("commands 3 to 6 name a channel 0..3: others get result 4");
-    g.line("LDW>=", &format!("{cmd}, {}", Command::Pls(0).code()), "");
-    g.line("AW<=", &format!("{cmd}, {}", Command::Pstop(0).code()), "");
-    g.line("AW>=", &format!("{a1}, 4"), "");
-    g.line("MOVE", &format!("{}, {result}", code(p::ResultCode::BadChannel)), "");
-    g.line("JMPC", "ACK", "");
+    g.net("the instruction's ENO, set by the network that runs it");
     g.line("LD", &flag, "");
     g.line("R", &format!("{ok}, 1"), "set below by the instruction's ENO");
 
@@ -270,11 +334,6 @@ pub fn program(base: u32) -> String {
     g.line("READ_RTC", &g.b(p::OFF_REPLY), "");
     g.line("MOVE", &format!("8, {}", g.w(p::OFF_REPLY_LEN)), "");
 
-    g.net("unknown command codes get result 1");
-    g.line("LDW>", &format!("{}, {}", g.w(p::OFF_REQUEST + 4), Command::Ping.code()), "");
-    g.line("OW=", &format!("{}, 0", g.w(p::OFF_REQUEST + 4)), "");
-    g.line("MOVE", &format!("{}, {result}", p::ResultCode::UnknownCommand.code()), "");
-
     g.net("acknowledge: shift acks 0-2 to 1-3, then ack 0 = (sequence, token, result), sequence last");
     g.label("ACK");
     g.line("LD", &flag, "");
@@ -316,11 +375,25 @@ mod tests {
         assert!(!il.contains("%VW3400"), "no default address left");
         assert!(il.contains("PSTOP   3, "), "PSTOP of channel 3");
         assert!(!il.contains('…'), "no elisions");
-        // The SM range checks apply to the SM commands only (a PLS has no length).
-        let checks = il.find("Network 3").unwrap();
-        let gate = il[checks..].find("JMPCN   NOT_SM").unwrap();
-        assert!(gate < il[checks..].find("LDW>").unwrap(), "the gate comes before the first check");
-        assert!(il.contains("NOT_SM:"));
+    }
+
+    #[test]
+    fn every_check_refuses_before_any_command_runs() {
+        let il = program(p::DEFAULT_BASE);
+        let (checks, first_command) = (il.find("Network 3").unwrap(), il.find("Network 4").unwrap());
+        let net = &il[checks..first_command];
+        let rows = p::checks();
+        assert_eq!(net.matches("JMPC    ACK").count(), rows.len(), "one refusal per row of the table");
+        for c in &rows {
+            assert!(net.contains(&format!("{} -> result {}", c.why, c.result.code())), "{}", c.why);
+        }
+        // Only INT literals: the PLC's word compares are signed.
+        for line in il.lines().filter(|l| l.starts_with("LDW") || l.starts_with("AW") || l.starts_with("OW")) {
+            let lit = line.rsplit(", ").next().unwrap().split_whitespace().next().unwrap();
+            if let Ok(n) = lit.parse::<i64>() {
+                assert!((0..=32767).contains(&n), "{line}");
+            }
+        }
     }
 
     #[test]

@@ -33,6 +33,7 @@
 //! client's command ran right after it.
 
 use crate::k2::catalog::SM_BYTES;
+use crate::k2::sm_map::PTO_REGS;
 use std::fmt;
 
 /// Mailbox base when the device does not say (`agent=VB3400`).
@@ -129,25 +130,21 @@ impl Command {
         }
     }
 
-    /// Decodes a request block (the helper's side).
-    pub fn decode(code: u16, args: [u16; 3], data: &[u8]) -> Result<Command, ResultCode> {
+    /// Decodes a request block (the helper's side): the request words are refused by the
+    /// first row of [`checks`] that matches — the very rows the helper program is generated
+    /// from ([`super::il`]), so the two give the same verdict on every request.
+    pub fn decode(code: u16, args: [u16; 3], data: &[u8; DATA_MAX]) -> Result<Command, ResultCode> {
+        if let Some(c) = checks().iter().find(|c| c.refuses(code, args)) {
+            return Err(c.result);
+        }
         let len = args[1] as usize;
-        // The same checks, in the same order, as the helper program (il.rs, network 3).
-        if code == 1 && args[0] == 0 {
-            return Err(ResultCode::ReadOnly);
-        }
-        if matches!(code, 1 | 2) && (len == 0 || len > DATA_MAX || args[0] as u32 + len as u32 > SM_BYTES) {
-            return Err(ResultCode::BadRange);
-        }
         Ok(match code {
             1 => Command::SmWrite { start: args[0], data: data[..len].to_vec() },
             2 => Command::SmRead { start: args[0], len: args[1] },
-            3 => Command::Pls(channel(args[0])?),
-            4 => {
-                Command::Hdef { hsc: channel(args[0])?, mode: u8::try_from(args[1]).map_err(|_| ResultCode::BadMode)? }
-            }
-            5 => Command::Hsc(channel(args[0])?),
-            6 => Command::Pstop(channel(args[0])?),
+            3 => Command::Pls(args[0] as u8),
+            4 => Command::Hdef { hsc: args[0] as u8, mode: u8::try_from(args[1]).map_err(|_| ResultCode::BadMode)? },
+            5 => Command::Hsc(args[0] as u8),
+            6 => Command::Pstop(args[0] as u8),
             7 => {
                 let mut b = [0u8; 8];
                 b.copy_from_slice(&data[..8]);
@@ -160,12 +157,166 @@ impl Command {
     }
 }
 
-fn channel(v: u16) -> Result<u8, ResultCode> {
-    if v < 4 {
-        Ok(v as u8)
-    } else {
-        Err(ResultCode::BadChannel)
+/// A request word a check reads.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Field {
+    Command,
+    Arg1,
+    Arg2,
+}
+
+impl Field {
+    fn of(self, code: u16, args: [u16; 3]) -> u16 {
+        match self {
+            Field::Command => code,
+            Field::Arg1 => args[0],
+            Field::Arg2 => args[1],
+        }
     }
+
+    /// Byte offset of the word in the mailbox.
+    pub fn offset(self) -> u32 {
+        match self {
+            Field::Command => OFF_REQUEST + 4,
+            Field::Arg1 => OFF_REQUEST + 6,
+            Field::Arg2 => OFF_REQUEST + 8,
+        }
+    }
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Field::Command => "command",
+            Field::Arg1 => "argument 1",
+            Field::Arg2 => "argument 2",
+        }
+    }
+}
+
+/// What a check tests. Request words are unsigned (0…65535), and every bound is at most
+/// [`INT_MAX`]: the helper has only the S7-200-style INT word compares (`LDW<` …), which
+/// read a word of 32768 or more as a negative number, so it tests "below `lo`" with a signed
+/// compare that also catches those, and adds words only once both are known to be small.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Test {
+    /// The word equals the value.
+    Is(Field, u16),
+    /// The word is below `lo` or above `hi`.
+    Outside(Field, u16, u16),
+    /// ARG1 + ARG2 is above the value (both bounded by earlier rows: no overflow).
+    EndAbove(u16),
+    /// ARG1 … ARG1 + ARG2 − 1 overlaps `lo` … `hi` − 1.
+    Overlaps(u16, u16),
+}
+
+/// The largest INT: every bound in [`checks`] stays at or below it.
+pub const INT_MAX: u16 = i16::MAX as u16;
+
+/// One refusal rule of the helper.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Check {
+    /// The command codes it applies to (first, last), or every command.
+    pub commands: Option<(u16, u16)>,
+    pub test: Test,
+    pub result: ResultCode,
+    /// Why, for the program's comments and docs/agent.md (ASCII: the program is pasted
+    /// into KincoBuilder).
+    pub why: String,
+}
+
+impl Check {
+    /// Does this row refuse the request? Unsigned, in u32: nothing wraps.
+    pub fn refuses(&self, code: u16, args: [u16; 3]) -> bool {
+        if let Some((lo, hi)) = self.commands {
+            if !(lo..=hi).contains(&code) {
+                return false;
+            }
+        }
+        let (a1, a2) = (args[0] as u32, args[1] as u32);
+        match self.test {
+            Test::Is(f, v) => f.of(code, args) == v,
+            Test::Outside(f, lo, hi) => !(lo..=hi).contains(&f.of(code, args)),
+            Test::EndAbove(limit) => a1 + a2 > limit as u32,
+            Test::Overlaps(lo, hi) => a1 < hi as u32 && a1 + a2 > lo as u32,
+        }
+    }
+}
+
+/// The helper's refusals, in the order it makes them; the first that matches gives the
+/// result. [`Command::decode`] and the helper program (il.rs) are both made from this table,
+/// and docs/agent.md shows it ([`checks_markdown`]).
+pub fn checks() -> Vec<Check> {
+    let sm_last = (SM_BYTES - 1) as u16;
+    let sm = Some((1, 2));
+    let mut v = vec![
+        Check {
+            commands: None,
+            test: Test::Outside(Field::Command, 1, 9),
+            result: ResultCode::UnknownCommand,
+            why: "the helper knows commands 1..9".into(),
+        },
+        Check {
+            commands: Some((1, 1)),
+            test: Test::Is(Field::Arg1, 0),
+            result: ResultCode::ReadOnly,
+            why: "SMB0 holds the system bits".into(),
+        },
+        Check {
+            commands: sm,
+            test: Test::Outside(Field::Arg2, 1, DATA_MAX as u16),
+            result: ResultCode::BadRange,
+            why: format!("1..{DATA_MAX} bytes at once"),
+        },
+        Check {
+            commands: sm,
+            test: Test::Outside(Field::Arg1, 0, sm_last),
+            result: ResultCode::BadRange,
+            why: format!("the start is SMB0..SMB{sm_last}"),
+        },
+        Check {
+            commands: sm,
+            test: Test::EndAbove(SM_BYTES as u16),
+            result: ResultCode::BadRange,
+            why: format!("the last byte is SMB{sm_last} at most"),
+        },
+    ];
+    for r in PTO_REGS {
+        let at = r.pos_cv as u16;
+        v.push(Check {
+            commands: Some((1, 1)),
+            test: Test::Overlaps(at, at + 4),
+            result: ResultCode::ReadOnly,
+            why: format!("SMD{at} is read-only (section 3.4.3.1)"),
+        });
+    }
+    v.push(Check {
+        commands: Some((3, 6)),
+        test: Test::Outside(Field::Arg1, 0, 3),
+        result: ResultCode::BadChannel,
+        why: "channels and counters are 0..3".into(),
+    });
+    v
+}
+
+/// The checks as a Markdown table (docs/agent.md holds it; a test keeps the two equal).
+pub fn checks_markdown() -> String {
+    let mut s =
+        String::from("| # | commands | refused when (words unsigned) | result | why |\n|---|---|---|---|---|\n");
+    for (i, c) in checks().iter().enumerate() {
+        let cmds = match c.commands {
+            None => "all".to_string(),
+            Some((a, b)) if a == b => a.to_string(),
+            Some((a, b)) if b == a + 1 => format!("{a}, {b}"),
+            Some((a, b)) => format!("{a}…{b}"),
+        };
+        let test = match c.test {
+            Test::Is(f, v) => format!("{} = {v}", f.name()),
+            Test::Outside(f, lo, hi) => format!("{} not in {lo}…{hi}", f.name()),
+            Test::EndAbove(l) => format!("argument 1 + argument 2 > {l}"),
+            Test::Overlaps(lo, hi) => format!("bytes argument 1 … argument 1 + argument 2 − 1 meet {lo}…{}", hi - 1),
+        };
+        s.push_str(&format!("| {} | {cmds} | {test} | {} {} | {} |\n", i + 1, c.result.code(), c.result.name(), c.why));
+    }
+    s
 }
 
 /// The helper's result codes.
@@ -194,6 +345,21 @@ impl ResultCode {
             ResultCode::InstructionFailed => 6,
             ResultCode::BadClock => 7,
             ResultCode::Other(c) => c,
+        }
+    }
+
+    /// A short name (docs/agent.md's table of checks).
+    pub fn name(self) -> &'static str {
+        match self {
+            ResultCode::Ok => "done",
+            ResultCode::UnknownCommand => "unknown command",
+            ResultCode::BadRange => "bad range",
+            ResultCode::ReadOnly => "read-only",
+            ResultCode::BadChannel => "no such channel",
+            ResultCode::BadMode => "no such mode",
+            ResultCode::InstructionFailed => "instruction failed",
+            ResultCode::BadClock => "bad date or time",
+            ResultCode::Other(_) => "other",
         }
     }
 
@@ -334,7 +500,8 @@ pub fn execute_scan(
     let token = word(v, req + 2);
     let code = word(v, req + 4);
     let args = [word(v, req + 6), word(v, req + 8), word(v, req + 10)];
-    let data: Vec<u8> = v[b + OFF_REQ_DATA as usize..b + SIZE as usize].to_vec();
+    let mut data = [0u8; DATA_MAX];
+    data.copy_from_slice(&v[b + OFF_REQ_DATA as usize..b + SIZE as usize]);
     let (result, reply) = match Command::decode(code, args, &data) {
         Ok(cmd) => match exec(cmd) {
             Ok(r) => (ResultCode::Ok, r),
@@ -463,6 +630,13 @@ mod tests {
         assert_eq!(execute_scan(&mut m, DEFAULT_BASE, &mut |_| panic!("SMB0")).unwrap().result, ResultCode::ReadOnly);
         write_request(&mut m, 4, 1, &Command::SmRead { start: 540, len: 20 });
         assert_eq!(execute_scan(&mut m, DEFAULT_BASE, &mut |_| panic!("past")).unwrap().result, ResultCode::BadRange);
+    }
+
+    #[test]
+    fn the_protocol_document_shows_the_checks_the_helper_makes() {
+        let doc = include_str!("../../../docs/agent.md");
+        let table = checks_markdown();
+        assert!(doc.contains(&table), "docs/agent.md lacks the current table of checks:\n{table}");
     }
 
     #[test]

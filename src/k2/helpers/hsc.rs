@@ -118,10 +118,19 @@ pub fn plan(model: &Model, q: &HscRequest, backup: (u32, u32)) -> Result<Plan> {
             if k > MAX_PVS as usize {
                 return Err(bad("pv", format!("{k} PVs: a counter has at most {MAX_PVS} (§3.3.3)")));
             }
-            let last = at + 4 * k as u32;
-            if last >= model.v_bytes {
-                return Err(bad("at", format!("the PV table VB{at}…VB{last} runs past the V area")));
+            // In u64: an address near the top of u32 must be refused, not wrap past the check.
+            let last = at as u64 + 4 * k as u64;
+            if last >= model.v_bytes as u64 {
+                return Err(bad(
+                    "at",
+                    format!(
+                        "the PV table VB{at}…VB{last} runs past the V area of {} (VB{})",
+                        model.name,
+                        model.v_bytes - 1
+                    ),
+                ));
             }
+            let last = last as u32;
             if overlaps_backup(at, last, backup) && !q.force {
                 return Err(bad(
                     "at",
@@ -247,6 +256,17 @@ mod tests {
         assert_eq!(p.value_of("SMB141"), Some(0x17));
         assert_eq!(p.then, vec![Instr::Hdef(0, 9), Instr::Hsc(0)]);
         assert!(p.notes[0].contains("64…66"));
+    }
+
+    /// A PV table address near the top of u32 is refused, not wrapped past the V check.
+    #[test]
+    fn a_table_address_past_v_is_refused_not_wrapped() {
+        for at in [4_294_967_295, 4_294_967_291, 4095] {
+            let q =
+                HscRequest { counter: 0, mode: 9, pv: vec![100, 200], at: Some(at), force: true, ..Default::default() };
+            let e = plan(find("K205-16DT").unwrap(), &q, (3648, 3902)).unwrap_err();
+            assert!(e.message.contains("runs past the V area") && e.message.contains("VB4095"), "{at}: {e}");
+        }
     }
 
     #[test]

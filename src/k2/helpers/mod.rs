@@ -159,6 +159,9 @@ pub fn parse_freq_hz(text: &str) -> std::result::Result<f64, String> {
     if hz <= 0.0 {
         return Err(format!("`{text}` is not a positive frequency"));
     }
+    if !hz.is_finite() {
+        return Err(format!("`{text}` is too large a frequency to hold (at most {:e} Hz)", f64::MAX));
+    }
     Ok(hz)
 }
 
@@ -237,6 +240,7 @@ mod tests {
         assert!(parse_freq_hz("fast").is_err());
         assert!(parse_freq_hz("2kV").is_err());
         assert!(parse_freq_hz("0Hz").is_err());
+        assert!(parse_freq_hz(&format!("1{}kHz", "0".repeat(400))).unwrap_err().contains("too large"));
         assert_eq!(parse_us("500us").unwrap(), 500);
         assert_eq!(parse_us("1ms").unwrap(), 1000);
         assert!(parse_us("0ms").is_err());

@@ -66,7 +66,9 @@ fn check_freq(spec: &PtoSpec, us: u64, what: &str) -> Result<()> {
     if us < 2 {
         return Err(bad(what, format!("a cycle of {us} µs is below the minimum of 2 (§3.4.2.2)")));
     }
-    if us * (spec.max_hz as u64) < 1_000_000 {
+    // Saturating: a product past u64 is far above 1 000 000, and a cycle that long is
+    // refused by the register's limit (to_base), not wrapped into "too fast".
+    if us.saturating_mul(spec.max_hz as u64) < 1_000_000 {
         return Err(bad(
             what,
             format!("{} Hz is above {}'s limit of {} Hz (manual §3.4)", 1_000_000 / us, spec.output, spec.max_hz),
@@ -177,15 +179,17 @@ pub fn timeline(segments: &[TableSegment], base_ms: bool) -> Timeline {
     let mut t = 0u64;
     let mut points = Vec::with_capacity(segments.len());
     for s in segments {
+        // Saturating: a planned table (64 segments at most) cannot reach u64::MAX µs, but
+        // this takes any table.
         let cycle_us = s.cycle as u64 * unit;
-        let d = cycle_us * s.count as u64;
+        let d = cycle_us.saturating_mul(s.count as u64);
         points.push(TimelinePoint {
             start_us: t,
-            end_us: t + d,
+            end_us: t.saturating_add(d),
             freq_hz: 1e6 / cycle_us as f64,
             pulses: s.count as u64,
         });
-        t += d;
+        t = t.saturating_add(d);
     }
     Timeline { total_pulses: points.iter().map(|p| p.pulses).sum(), duration_us: t, points }
 }
@@ -219,14 +223,16 @@ pub fn plan_profile(
     if segments.is_empty() || segments.len() > MAX_SEGMENTS as usize {
         return Err(bad("segments", format!("{} segments: a profile has 1 … {MAX_SEGMENTS}", segments.len())));
     }
-    let last = at + 8 * segments.len() as u32;
-    if last >= model.v_bytes {
+    // In u64: an address near the top of u32 must be refused, not wrap past the check.
+    let last = at as u64 + 8 * segments.len() as u64;
+    if last >= model.v_bytes as u64 {
         return Err(Error::new(
             crate::core::ErrorKind::Range,
             format!("the table VB{at}…VB{last} runs past the V area of {} (VB{})", model.name, model.v_bytes - 1),
         )
         .operand(format!("VB{at}")));
     }
+    let last = last as u32;
     if overlaps_backup(at, last, backup) && !force {
         return Err(bad(
             "at",
@@ -415,6 +421,31 @@ mod tests {
         assert_eq!((p.value_of("SMB67"), p.value_of("SMW68"), p.value_of("SMW70")), (Some(0xDB), Some(100), Some(25)));
         assert!(plan_pwm(k205(), 0, 100_000, 250, true).is_err(), "width not whole ms in the ms base");
         assert!(plan_pwm(k205(), 0, 1000, 2000, true).unwrap().notes[0].contains("100 %"));
+    }
+
+    /// Issue 30: cycle × the channel's frequency limit wrapped in a release build
+    /// (368 934 881 474 192 µs read as "0 Hz is above Q0.0's limit") and panicked with
+    /// overflow checks (`cycle=122222h`); a cycle that long is refused by the register.
+    #[test]
+    fn a_huge_cycle_is_refused_by_the_register_not_wrapped() {
+        for us in [368_934_881_474_192, 122_222 * 3_600_000_000, u64::MAX] {
+            let e = plan_pwm(k205(), 0, us, 250, true).unwrap_err();
+            assert!(e.message.contains("up to 65 535 µs, or whole milliseconds up to 65 535 ms"), "{us}: {e}");
+            let e = plan_pto(k205(), 0, Rate::CycleUs(us), 10).unwrap_err();
+            assert!(e.message.contains("65 535 ms"), "{us}: {e}");
+            let slow = [Segment { rate: Rate::CycleUs(us), count: 1 }];
+            let e = plan_profile(k205(), 0, 3001, &slow, false, (3648, 3902)).unwrap_err();
+            assert!(e.message.contains("65 535"), "{us}: {e}");
+        }
+    }
+
+    /// A table address near the top of u32 is refused, not wrapped past the V check.
+    #[test]
+    fn a_table_address_past_v_is_refused_not_wrapped() {
+        for at in [4_294_967_295, 4_294_967_291, 4095] {
+            let e = plan_profile(k205(), 0, at, &segs(), true, (3648, 3902)).unwrap_err();
+            assert!(e.message.contains("runs past the V area") && e.message.contains("VB4095"), "{at}: {e}");
+        }
     }
 
     fn segs() -> Vec<Segment> {

@@ -120,6 +120,55 @@ mod tests {
         assert_eq!(status(&s).acks[0].result, ResultCode::BadClock, "month 13");
     }
 
+    /// What a client that ignores the protocol can write: any command and arguments.
+    fn raw_request(s: &mut K2Sim, seq: u16, code: u16, args: [u16; 3]) {
+        let words = [seq, 0x1234, code, args[0], args[1], args[2]];
+        for (i, w) in words.iter().enumerate() {
+            s.mem.write(&K2Operand::word(Area::V, DEFAULT_BASE + OFF_REQUEST + 2 * i as u32), *w as u32);
+        }
+    }
+
+    /// Issue 30: the helper compared words as signed INTs, so a start of 32768 or more (or a
+    /// start + length that went negative) passed every check and the copy loop stopped the
+    /// CPU with "bad indirect address"; start 100 with length 16#AAAA was acked done.
+    #[test]
+    fn out_of_range_words_are_refused_and_the_cpu_keeps_scanning() {
+        use ResultCode::*;
+        let cases: &[(u16, [u16; 3], ResultCode)] = &[
+            (2, [40000, 1, 0], BadRange),
+            (1, [40000, 1, 0], BadRange),
+            (2, [32768, 1, 0], BadRange),
+            (2, [65535, 64, 0], BadRange),
+            (2, [32767, 64, 0], BadRange),
+            (1, [100, 0xAAAA, 0], BadRange),
+            (2, [100, 0xAAAA, 0], BadRange),
+            (2, [500, 0xFFFF, 0], BadRange),
+            (2, [549, 32768, 0], BadRange),
+            (1, [0, 40000, 0], ReadOnly),
+            (2, [549, 1, 0], Ok),
+            (2, [486, 64, 0], Ok),
+            (3, [40000, 0, 0], BadChannel),
+            (5, [65535, 0, 0], BadChannel),
+            (4, [32768, 0, 0], BadChannel),
+            (40000, [0, 0, 0], UnknownCommand),
+            (65535, [1, 1, 0], UnknownCommand),
+        ];
+        let (mut s, clock) = sim();
+        for (i, &(code, args, want)) in cases.iter().enumerate() {
+            let seq = i as u16 + 1;
+            raw_request(&mut s, seq, code, args);
+            let beat = status(&s).heartbeat;
+            scan(&mut s, &clock);
+            let plc = s.plc().unwrap();
+            assert!(plc.faults.is_empty(), "command {code} {args:?}: the CPU faulted: {:?}", plc.faults);
+            assert_eq!(plc.mode, crate::k2::sim::program::Mode::Run, "command {code} {args:?}");
+            let st = status(&s);
+            assert_ne!(st.heartbeat, beat, "command {code} {args:?}: the heartbeat stopped");
+            assert_eq!(st.acks[0].seq, seq, "command {code} {args:?} was not acknowledged");
+            assert_eq!(st.acks[0].result, want, "command {code} {args:?}");
+        }
+    }
+
     #[test]
     fn the_clock_round_trips_through_the_mailbox() {
         let (mut s, clock) = sim();

@@ -9,6 +9,7 @@
 //! persist through [`state`]. The Modbus server (`plcsh sim serve`) serves this same type.
 
 pub mod agent;
+pub mod agent_probe;
 pub mod events;
 pub mod fault;
 pub mod hsc;

@@ -14,7 +14,7 @@ pub mod lua;
 pub mod models;
 pub mod ports;
 pub mod profiles;
-mod pulse;
+pub(crate) mod pulse;
 mod rtc;
 mod servo;
 mod sim;

@@ -110,10 +110,19 @@ fn rate(opts: &[lex::Opt]) -> Result<Option<hp::Rate>> {
     }
 }
 
+/// A pulse count: a whole number; past u32 it is refused naming the limit (a PTO counts
+/// to 4 294 967 295, §3.4.2.1).
 fn count(opts: &[lex::Opt], key: &str) -> Result<Option<u64>> {
     opt(opts, key)
         .map(|(c, v)| {
-            v.replace('_', "").parse::<u64>().map_err(|_| value_err(c, format!("{key}={v} is not a whole number")))
+            let t = v.replace('_', "");
+            t.parse::<u64>().map_err(|_| {
+                if !t.is_empty() && t.bytes().all(|b| b.is_ascii_digit()) {
+                    value_err(c, format!("{key}={v} is too many pulses: a PTO counts up to 4 294 967 295 (§3.4.2.1)"))
+                } else {
+                    value_err(c, format!("{key}={v} is not a whole number"))
+                }
+            })
         })
         .transpose()
 }
@@ -181,20 +190,53 @@ fn pwm(sh: &mut Shell, args: Args) -> Result<Outcome> {
         }
     }
     let (dev, ch) = k2cmd::channel(sh, word, "pulse channel", 3)?;
-    let cycle = match rate(&opts)? {
+    let (model, _) = model_of(sh, dev)?;
+    let name = k2cmd::name(sh, dev);
+    let plan = pwm_plan(model, ch, &opts, sync, args.offset).map_err(|e| e.device(&name))?;
+    run_plan(sh, dev, "pwm", &plan)
+}
+
+/// `pwm`'s options, from the typed text to the plan (the fuzz target `pulse` runs this too).
+fn pwm_plan(
+    model: &crate::k2::catalog::Model,
+    ch: u8,
+    opts: &[lex::Opt],
+    sync: bool,
+    col: usize,
+) -> Result<helpers::Plan> {
+    let cycle = match rate(opts)? {
         Some(hp::Rate::CycleUs(us)) => us,
+        // A float past u64 saturates; the cycle register's limit refuses it in plan_pwm.
         Some(hp::Rate::Hz(f)) => (1e6 / f).round() as u64,
-        None => return Err(Error::usage("pwm needs cycle= (or freq=)").column(args.offset).hint(PWM.usage)),
+        None => return Err(Error::usage("pwm needs cycle= (or freq=)").column(col).hint(PWM.usage)),
     };
-    let (wc, wt) = opt(&opts, "width").ok_or_else(|| Error::usage("pwm needs width=").hint(PWM.usage))?;
+    let (wc, wt) = opt(opts, "width").ok_or_else(|| Error::usage("pwm needs width=").hint(PWM.usage))?;
     let width = crate::core::literal::parse_duration_us(wt).map_err(|m| value_err(wc, m))?;
     if width < 0 {
         return Err(value_err(wc, "the width cannot be negative"));
     }
-    let (model, _) = model_of(sh, dev)?;
-    let name = k2cmd::name(sh, dev);
-    let plan = hp::plan_pwm(model, ch, cycle, width as u64, sync).map_err(|e| e.device(&name))?;
-    run_plan(sh, dev, "pwm", &plan)
+    hp::plan_pwm(model, ch, cycle, width as u64, sync)
+}
+
+/// The fuzz target `pulse`: `text` as the options of `pto`, `pwm` and `profile` (a segment
+/// list in brackets, `at=VB…`), read as those commands read them and planned on channel 0
+/// of every model with pulse outputs. Outside input never panics or wraps on this path.
+pub fn fuzz_options(text: &str) {
+    let Ok(w) = lex::words(text) else { return };
+    let (pos, opts) = lex::options(&w);
+    let list = pos.iter().find(|(_, t)| t.starts_with('[')).and_then(|&(c, t)| segments(t, c).ok());
+    let at = opt(&opts, "at").and_then(|(_, v)| v.trim_start_matches("VB").parse::<u32>().ok());
+    for model in crate::k2::catalog::MODELS.iter().filter(|m| !m.relay) {
+        let _ = pwm_plan(model, 0, &opts, true, 0);
+        if let (Ok(Some(rate)), Ok(Some(n))) = (rate(&opts), count(&opts, "count")) {
+            let _ = hp::plan_pto(model, 0, rate, n);
+        }
+        if let (Some(list), Some(at)) = (&list, at) {
+            if let Ok(p) = hp::plan_profile(model, 0, at, list, true, (3648, 3902)) {
+                let _ = hp::timeline(&p.table, p.base_ms);
+            }
+        }
+    }
 }
 
 /// `[(cycle=500us, count=1000), …]` → segments.
