@@ -2,7 +2,9 @@
 //! a target (`fuzz/regressions/TARGET/`) through the same entry points the cargo-fuzz targets
 //! use (`plcsh::fuzzing`), on stable: none may panic, and each must finish quickly (the
 //! parsers run in time linear in their input; a regression to exponential time shows here as
-//! a slow input long before it hangs a user's keystroke).
+//! a slow input long before it hangs a user's keystroke). The test profile has overflow
+//! checks, so an input whose arithmetic overflows panics here as it does under `cargo fuzz -a`;
+//! the reproductions of issue 30 also run with the refusal each must get.
 
 use plcsh::fuzzing::TARGETS;
 use std::path::Path;

@@ -49,6 +49,10 @@ fn ns(d: Duration) -> u64 {
 }
 
 impl Clock {
+    /// The latest virtual time a stepped clock reaches (its ns count is 64 bits: about 584
+    /// years); a step past it stops there. Commands refuse such a step instead.
+    pub const LATEST: Duration = Duration::from_nanos(FOLLOWING - 1);
+
     /// A clock that follows the wall clock.
     pub fn following() -> Clock {
         Clock {

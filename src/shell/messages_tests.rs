@@ -133,6 +133,17 @@ fn pls_on_a_busy_channel_warns_and_strict_refuses() {
     assert!(r[1].as_ref().unwrap().notes.is_empty());
 }
 
+/// A step past what the simulated clock counts is refused naming the limit, not saturated.
+#[test]
+fn a_step_past_the_clocks_range_is_refused() {
+    let mut sh = shell();
+    for step in ["106751991d", "365000d"] {
+        let e = error(&mut sh, &format!("sim step {step}"));
+        assert!(e.message.contains("about 584 years"), "{step}: {e}");
+    }
+    assert!(sh.exec("sim step 36500d").into_iter().all(|r| r.is_ok()), "a century is fine");
+}
+
 /// One line per fact: a profile run states its pulses and duration once.
 #[test]
 fn a_profile_run_reports_each_fact_once() {

@@ -364,6 +364,7 @@ mod tests {
     /// crossing sum, for the others every first argument with a few second ones.
     #[test]
     fn every_boundary_request_gets_the_protocols_verdict() {
+        let start = Instant::now();
         let mut probe = AgentProbe::new();
         let mut rng = Rng(0x30);
         let edges = edges();
@@ -384,6 +385,7 @@ mod tests {
             }
         }
         assert!(n > 5_000, "{n} requests");
+        eprintln!("{n} boundary requests in {:?}", start.elapsed());
     }
 
     /// Random and boundary requests in equal measure; returns the results seen.

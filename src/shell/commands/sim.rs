@@ -6,7 +6,7 @@
 use super::CommandSpec;
 use crate::core::clock::format_time;
 use crate::core::literal::parse_option_duration_us;
-use crate::core::{Error, Result};
+use crate::core::{Clock, Error, Result};
 use crate::output::Outcome;
 use crate::shell::{Args, Shell};
 use std::time::Duration;
@@ -37,7 +37,15 @@ fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
             if us < 0 {
                 return Err(Error::usage("time only moves forward"));
             }
-            clock.step(Duration::from_micros(us as u64));
+            let step = Duration::from_micros(us as u64);
+            if clock.now().checked_add(step).is_none_or(|t| t > Clock::LATEST) {
+                return Err(Error::usage(format!(
+                    "sim step {d} would take the simulated clock past {:.0} s (about 584 years), the latest time it counts",
+                    Clock::LATEST.as_secs_f64()
+                ))
+                .column(args.offset + 5));
+            }
+            clock.step(step);
         }
         "run" => clock.run(),
         "input" if super::umpk::current_is_umpk(sh) => return super::umpk::sim_input(sh, args),
