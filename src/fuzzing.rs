@@ -42,6 +42,7 @@ pub static TARGETS: &[(&str, Target)] = &[
     ("umpk_reply", umpk_reply),
     ("umpk_hex", umpk_hex),
     ("pcapng", pcapng),
+    ("rfc2217", rfc2217),
     ("bench", bench),
 ];
 
@@ -362,6 +363,20 @@ pub fn pcapng(data: &[u8]) {
     if let Ok(rec) = crate::record::file::parse(data) {
         let _ = crate::record::decode::all(&rec.links, &rec.frames);
     }
+}
+
+/// A device server's Telnet stream (RFC 854/2217): fed whole and in two pieces, the decoder
+/// must give the same data and events, and never more data bytes than came in.
+pub fn rfc2217(data: &[u8]) {
+    use crate::core::link::rfc2217::Decoder;
+    let (mut whole, mut d1, mut e1) = (Decoder::default(), Vec::new(), Vec::new());
+    whole.feed(data, &mut d1, &mut e1);
+    assert!(d1.len() <= data.len());
+    let cut = data.first().map_or(0, |b| usize::from(*b) % (data.len() + 1));
+    let (mut parts, mut d2, mut e2) = (Decoder::default(), Vec::new(), Vec::new());
+    parts.feed(&data[..cut], &mut d2, &mut e2);
+    parts.feed(&data[cut..], &mut d2, &mut e2);
+    assert_eq!((d1, e1), (d2, e2), "the same stream cut in two decodes the same");
 }
 
 /// The bench file (parse only: no device is opened).
