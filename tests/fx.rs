@@ -84,6 +84,13 @@ fn hex(s: &str) -> Vec<u8> {
     s.split_whitespace().map(|b| u8::from_str_radix(b, 16).unwrap()).collect()
 }
 
+/// The tests whose responder paces replies at line speed run one at a time: each measures
+/// times a thread keeps, and the others' threads on two cores would stretch them.
+fn line_timing() -> std::sync::MutexGuard<'static, ()> {
+    static ALONE: std::sync::Mutex<()> = std::sync::Mutex::new(());
+    ALONE.lock().unwrap_or_else(|p| p.into_inner())
+}
+
 #[test]
 fn every_command_over_both_ports() {
     let srv = Server::start("cmds", &[]);
@@ -595,6 +602,7 @@ fn within_ms(msg: &str) -> u64 {
 // driver waits for quiet before every request and, after a timeout, for one more timeout.
 #[test]
 fn a_late_reply_is_never_taken_for_the_next_read() {
+    let _alone = line_timing();
     const T: u64 = 200; // timeout=200ms
                         // Per read of D100, D101, …: the responder's delay in units of T/10, and whether the read
                         // is answered in time. The late ones come inside the one more timeout the driver waits;
@@ -649,6 +657,7 @@ fn a_late_reply_is_never_taken_for_the_next_read() {
 // from another station is not this station's answer.
 #[test]
 fn a_reply_from_another_station_is_never_taken() {
+    let _alone = line_timing();
     // Station 5 is asked; station 3 answers the first request of each read (with its own D100,
     // 9999), station 5 the resend. Then station 3 answers everything.
     let only_3 = Arc::new(AtomicBool::new(false));
@@ -686,6 +695,7 @@ fn a_reply_from_another_station_is_never_taken() {
 // code ("若发送码有误，则有以下回应"). A write is done only on ACK from the addressed station.
 #[test]
 fn a_refused_or_unconfirmed_write_never_reports_success() {
+    let _alone = line_timing();
     // By request: NAK 06, then a stale read reply to every write, then NAK 02 (sum) to all.
     let r = responder(false, |q, k| {
         let reply = match k {
@@ -731,6 +741,7 @@ fn a_refused_or_unconfirmed_write_never_reports_success() {
 // error: noise, not NAK.
 #[test]
 fn noise_is_never_called_a_nak() {
+    let _alone = line_timing();
     let burst = Duration::from_millis(31);
     // A 31 ms burst of 00H before the ACK: the handshake and the read go through, nothing resent.
     let r = responder(true, move |q, _| match q.cmd.as_str() {
@@ -794,6 +805,7 @@ fn wr_chars(count: usize) -> (usize, usize) {
 // frames' sizes and the wait: a 64-word WR at 4800 baud is ~550 ms of reply alone.
 #[test]
 fn timeouts_scale_with_the_baud_rate_and_the_frame_size() {
+    let _alone = line_timing();
     // A responder that honours the wait digit and sends its reply at the line's pace.
     for baud in [4800u32, 9600, 19200] {
         let r = responder(false, move |q, _| {
@@ -861,6 +873,7 @@ fn timeouts_scale_with_the_baud_rate_and_the_frame_size() {
 // has been quiet for at least the frame time.
 #[test]
 fn resends_wait_for_a_quiet_line() {
+    let _alone = line_timing();
     // The first reply stalls half way, past the timeout (a 64-word WR at 9600 baud: 543 ms),
     // and its tail comes later; the resend waits until the tail is over and the line has been
     // quiet for the frame time, and its reply is used.

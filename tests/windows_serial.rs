@@ -104,3 +104,48 @@ fn a_com_link_that_disappears_is_reported_and_reopened_when_back() {
     assert_eq!(plc.read(&o).unwrap(), vec![Value::Int(78)]);
     assert_eq!(drive.read(&sw).unwrap(), vec![Value::Int(0x4231)]);
 }
+
+/// The README's Windows first session, run as written with this machine's ports in place of
+/// the README's (COM3 → the served K2, COM10 → the served drive line): every `PS> plcsh …`
+/// line of that section succeeds with the Windows build.
+#[test]
+fn the_readme_windows_session_runs() {
+    let _one = serial_guard();
+    let (Some(k2), Some(servo)) = (com("PLCSH_WINE_COM_K2"), com("PLCSH_WINE_COM_SERVO")) else { return };
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+    let section = readme.split("### Windows: a first session at the machine").nth(1).unwrap();
+    let section = section.split("\n### ").next().unwrap();
+    let lines: Vec<&str> = section.lines().filter_map(|l| l.strip_prefix("PS> plcsh ")).collect();
+    assert!(lines.len() >= 3, "the section shows a session: {lines:?}");
+    for line in lines {
+        let line = line.replace("COM10", &servo).replace("COM3", &k2);
+        let args = split_quoted(&line);
+        let o = std::process::Command::new(env!("CARGO_BIN_EXE_plcsh"))
+            .args(&args)
+            .env("PLCSH_STATE", "none")
+            .output()
+            .unwrap();
+        let text = format!("{}{}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr));
+        assert!(o.status.success(), "plcsh {line}: {text}");
+    }
+}
+
+/// PowerShell's word splitting as the README's lines need it: spaces, and double quotes.
+fn split_quoted(line: &str) -> Vec<String> {
+    let (mut words, mut cur, mut quoted) = (Vec::new(), String::new(), false);
+    for c in line.chars() {
+        match c {
+            '"' => quoted = !quoted,
+            ' ' if !quoted => {
+                if !cur.is_empty() {
+                    words.push(std::mem::take(&mut cur));
+                }
+            }
+            c => cur.push(c),
+        }
+    }
+    if !cur.is_empty() {
+        words.push(cur);
+    }
+    words
+}
