@@ -12,7 +12,7 @@
 
 mod common;
 use common::*;
-use plcsh::core::{Clock, Device, Value};
+use plcsh::core::{Clock, Value};
 use plcsh::session::open_url;
 use std::io::{BufRead, BufReader};
 use std::process::{Child, Command, Stdio};
@@ -59,13 +59,7 @@ fn device_server(mode: &str, serial: &str) -> Option<DeviceServer> {
     Some(DeviceServer { child, lines, port })
 }
 
-fn open(url: &str) -> Box<dyn Device> {
-    open_url(url, &Clock::following()).unwrap_or_else(|e| panic!("{url}: {e}"))
-}
-
-fn ops(d: &dyn Device, names: &[&str]) -> Vec<plcsh::core::Operand> {
-    names.iter().flat_map(|n| d.operands().parse(n).unwrap()).collect()
-}
+use common::{open_device as open, operands as ops};
 
 #[test]
 fn k2_over_rfc2217_sets_the_line_and_reads_and_writes() {

@@ -6,16 +6,9 @@
 
 mod common;
 use common::*;
-use plcsh::core::{Clock, Device, Value};
-use plcsh::session::open_url;
+use plcsh::core::Value;
 
-fn open(url: &str) -> Box<dyn Device> {
-    open_url(url, &Clock::following()).unwrap_or_else(|e| panic!("{url}: {e}"))
-}
-
-fn ops(d: &dyn Device, names: &[&str]) -> Vec<plcsh::core::Operand> {
-    names.iter().flat_map(|n| d.operands().parse(n).unwrap()).collect()
-}
+use common::{open_device as open, operands as ops};
 
 #[test]
 fn every_serial_family_is_served_on_tcp_and_reached_with_plus_tcp() {

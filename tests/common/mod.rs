@@ -84,3 +84,13 @@ impl Drop for Served {
         let _ = self.child.wait();
     }
 }
+
+/// Opens a device URL on the wall clock, or fails the test naming the URL.
+pub fn open_device(url: &str) -> Box<dyn plcsh::core::Device> {
+    plcsh::session::open_url(url, &plcsh::core::Clock::following()).unwrap_or_else(|e| panic!("{url}: {e}"))
+}
+
+/// The operands `names` name on device `d`.
+pub fn operands(d: &dyn plcsh::core::Device, names: &[&str]) -> Vec<plcsh::core::Operand> {
+    names.iter().flat_map(|n| d.operands().parse(n).unwrap()).collect()
+}

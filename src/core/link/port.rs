@@ -86,6 +86,21 @@ impl Port for AsyncPort {
     }
 }
 
+/// Ends a port's `recv`: `buf` keeps what the read `r` put after `old` (nothing on an error),
+/// and what came is traced.
+pub(crate) fn received(
+    buf: &mut Vec<u8>,
+    old: usize,
+    r: io::Result<usize>,
+    link: &str,
+    proto: Proto,
+) -> io::Result<()> {
+    buf.truncate(old + *r.as_ref().unwrap_or(&0));
+    let n = r?;
+    trace::frame_proto(link, proto, Dir::Received, &buf[old..old + n]);
+    Ok(())
+}
+
 /// Any [`Transport`] as a deadline port, traced and watched for the peer closing.
 pub struct TransportPort {
     t: Box<dyn Transport>,
@@ -135,10 +150,7 @@ impl Port for TransportPort {
                 Err(e) => break Err(e),
             }
         };
-        buf.truncate(old + *r.as_ref().unwrap_or(&0));
-        let n = r?;
-        trace::frame_proto(&self.link, self.proto, Dir::Received, &buf[old..old + n]);
-        Ok(())
+        received(buf, old, r, &self.link, self.proto)
     }
 
     fn watch_eof(&mut self, flag: Arc<AtomicBool>) {

@@ -1,7 +1,7 @@
 //! The Unix deadline port: a descriptor in non-blocking mode, each wait a `poll` with the
 //! time left (see [`crate::core::link::port`] for why not an async runtime).
 
-use crate::core::link::port::{timed_out, Port, CHUNK};
+use crate::core::link::port::{received, timed_out, Port, CHUNK};
 use crate::core::link::serial::LineSettings;
 use crate::core::trace::{self, Dir, Proto};
 use crate::core::{Error, Result};
@@ -108,10 +108,7 @@ impl<T: AsRawFd + Send> Port for PollPort<T> {
                 Err(e) => break Err(e.into()),
             }
         };
-        buf.truncate(old + *r.as_ref().unwrap_or(&0));
-        let n = r?;
-        trace::frame_proto(&self.link, self.proto, Dir::Received, &buf[old..old + n]);
-        Ok(())
+        received(buf, old, r, &self.link, self.proto)
     }
 
     fn watch_eof(&mut self, flag: Arc<AtomicBool>) {
