@@ -9,6 +9,8 @@ pub mod literal;
 pub mod operand;
 pub mod platform;
 pub mod signal;
+#[cfg(test)]
+pub mod test_rng;
 pub mod text;
 pub mod trace;
 pub mod url;

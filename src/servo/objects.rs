@@ -538,19 +538,7 @@ mod tests {
         assert!(h.contains("6081.00") && h.contains("rpm") && h.contains("RW"), "{h}");
     }
 
-    /// xorshift64* — a small seeded PRNG, so the property test is reproducible.
-    struct Rng(u64);
-    impl Rng {
-        fn next(&mut self) -> u64 {
-            self.0 ^= self.0 >> 12;
-            self.0 ^= self.0 << 25;
-            self.0 ^= self.0 >> 27;
-            self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
-        }
-        fn in_range(&mut self, lo: i64, hi: i64) -> i64 {
-            lo + (self.next() % ((hi - lo) as u64 + 1)) as i64
-        }
-    }
+    use crate::core::test_rng::Rng;
 
     #[test]
     fn property_every_object_round_trips_through_the_codec() {

@@ -295,22 +295,7 @@ mod tests {
     use crate::k2::catalog::SM_BYTES;
     use std::time::Instant;
 
-    /// xorshift64*: a small seeded generator, so a failure names a reproducible seed.
-    struct Rng(u64);
-    impl Rng {
-        fn next(&mut self) -> u64 {
-            self.0 ^= self.0 >> 12;
-            self.0 ^= self.0 << 25;
-            self.0 ^= self.0 >> 27;
-            self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
-        }
-        fn below(&mut self, n: u64) -> u64 {
-            self.next() % n
-        }
-        fn pick<T: Copy>(&mut self, v: &[T]) -> T {
-            v[self.below(v.len() as u64) as usize]
-        }
-    }
+    use crate::core::test_rng::Rng;
 
     /// Every field at 0, 1, max − 1, max, max + 1 of every limit the table names, and at
     /// 32767, 32768, 65534, 65535.
@@ -341,7 +326,7 @@ mod tests {
     fn data(rng: &mut Rng, code: u16) -> [u8; DATA_MAX] {
         let mut d = [0u8; DATA_MAX];
         for b in d.iter_mut() {
-            *b = rng.next() as u8;
+            *b = rng.next_u64() as u8;
         }
         if code == 7 && rng.below(2) == 0 {
             let bcd = |n: u64| (((n / 10) << 4) | (n % 10)) as u8;
@@ -379,7 +364,7 @@ mod tests {
                 }
                 for a1 in firsts {
                     let d = data(&mut rng, code);
-                    run(&mut probe, code, [a1, a2, rng.next() as u16], &d);
+                    run(&mut probe, code, [a1, a2, rng.next_u64() as u16], &d);
                     n += 1;
                 }
             }
@@ -398,12 +383,12 @@ mod tests {
             let code = match rng.below(4) {
                 0 | 1 => 1 + rng.below(9) as u16,
                 2 => rng.pick(&edges),
-                _ => rng.next() as u16,
+                _ => rng.next_u64() as u16,
             };
             let field = |rng: &mut Rng| match rng.below(3) {
                 0 => rng.pick(&edges),
                 1 => rng.below(600) as u16,
-                _ => rng.next() as u16,
+                _ => rng.next_u64() as u16,
             };
             let a2 = field(&mut rng);
             let a1 = if rng.below(4) == 0 {
@@ -413,7 +398,7 @@ mod tests {
                 field(&mut rng)
             };
             let d = data(&mut rng, code);
-            let r = probe.request(code, [a1, a2, rng.next() as u16], &d).unwrap_or_else(|e| panic!("seed {seed}: {e}"));
+            let r = probe.request(code, [a1, a2, rng.next_u64() as u16], &d).unwrap_or_else(|e| panic!("seed {seed}: {e}"));
             seen[r.code().min(7) as usize] += 1;
         }
         seen
