@@ -398,7 +398,8 @@ mod tests {
                 field(&mut rng)
             };
             let d = data(&mut rng, code);
-            let r = probe.request(code, [a1, a2, rng.next_u64() as u16], &d).unwrap_or_else(|e| panic!("seed {seed}: {e}"));
+            let r =
+                probe.request(code, [a1, a2, rng.next_u64() as u16], &d).unwrap_or_else(|e| panic!("seed {seed}: {e}"));
             seen[r.code().min(7) as usize] += 1;
         }
         seen
