@@ -31,6 +31,9 @@ pub struct Entry {
     /// Write rules from the device's profile (`read_only`, `allow`), for `devices`; the
     /// device itself sits in a [`crate::guard::Guarded`] that enforces them.
     pub guard: Option<crate::profile::Guard>,
+    /// A served simulator's control channel (`control=PATH` in the URL), where `sim fault …`
+    /// and the other simulator controls go ([`crate::core::link::control`]).
+    pub control: Option<std::path::PathBuf>,
 }
 
 /// How `set` items arrive: operand text and value text, with their columns in the line.
@@ -77,8 +80,18 @@ pub static SCHEMES: &[(&str, &str)] = &[
 ];
 
 /// Opens a device from its URL. Every scheme plcsh knows is listed here.
+/// The `control=PATH` of a wire URL: a served simulator's control channel. The drive line
+/// (`kinco:`) takes it itself; for the other families the session keeps it.
+fn control_param(url: &str) -> Option<std::path::PathBuf> {
+    let u = DeviceUrl::parse(url).ok()?;
+    matches!(u.base_scheme(), "tcp" | "rtu" | "fx" | "fxlink" | "umpk").then(|| u.param("control").map(Into::into))?
+}
+
 pub fn open_url(url: &str, clock: &Clock) -> Result<Box<dyn Device>> {
-    let u = DeviceUrl::parse(url)?;
+    let mut u = DeviceUrl::parse(url)?;
+    if matches!(u.base_scheme(), "tcp" | "rtu" | "fx" | "fxlink" | "umpk") {
+        u = u.without("control");
+    }
     match u.base_scheme() {
         "sim" => {
             u.expect_params(&["model", "program"])?;
@@ -175,7 +188,8 @@ impl Session {
         rules: Option<crate::profile::Guard>,
     ) {
         let device = Box::new(crate::guard::Guarded::new(device, rules.clone(), self.read_only.clone()));
-        let entry = Entry { name: name.to_string(), url: url.to_string(), device, guard: rules };
+        let control = control_param(url);
+        let entry = Entry { name: name.to_string(), url: url.to_string(), device, guard: rules, control };
         match self.devices.iter().position(|e| e.name == name) {
             Some(i) => self.devices[i] = entry,
             None => self.devices.push(entry),

@@ -402,6 +402,7 @@ fn run(cli: &Cli, mut shell: Shell, style: Style, mut out: std::io::StdoutLock<'
             Sub::Devices => i32::from(!shell.run_line("devices", &mut out)),
             Sub::Ports => i32::from(!shell.run_line("ports", &mut out)),
             Sub::Sim { cmd: serve::SimCmd::Serve(args) } => serve::run(cli, args, style, &mut out),
+            Sub::Sim { cmd: serve::SimCmd::Control(args) } => serve::control_run(args, style, &mut out),
             Sub::Agent(a) => agent::run(a, &mut out),
             Sub::Run(args) => run::main(&mut shell, args, style),
             Sub::Record { cmd } => record::show(cmd, style, &mut out),

@@ -28,6 +28,7 @@
 
 use super::Cli;
 use crate::core::link::async_pty::AsyncPty;
+use crate::core::link::control;
 use crate::core::link::served::ServeOn;
 use crate::core::{Clock, Error, Result};
 use crate::k2::sim::modbus_server::{self, K2Service};
@@ -47,6 +48,19 @@ use tokio::task::JoinSet;
 pub enum SimCmd {
     /// Serve the simulator over Modbus TCP, Modbus RTU on a pseudo-terminal, and/or RTU over TCP.
     Serve(ServeArgs),
+    /// Send one line to a served simulator's control channel (faults, events) and print the reply.
+    Control(ControlArgs),
+}
+
+/// `plcsh sim control PATH WORDS…`
+#[derive(Args, Debug)]
+pub struct ControlArgs {
+    /// The control channel (the `k2_control`, `umpk_control` or `servo_control` of the server's readiness line).
+    #[arg(value_name = "PATH")]
+    pub path: PathBuf,
+    /// The control line, e.g. `fault no-reply times=2`, `faults`, `events`, `fault clear`.
+    #[arg(value_name = "WORDS", required = true, num_args = 1.., trailing_var_arg = true, allow_hyphen_values = true)]
+    pub words: Vec<String>,
 }
 
 #[derive(Args, Debug)]
@@ -137,6 +151,11 @@ pub struct ServeArgs {
     /// An IL lab program the simulated UMPK runs each 10 ms cycle (docs/il.md, "The UMPK family").
     #[arg(long = "umpk-program", value_name = "FILE.il")]
     pub umpk_program: Option<PathBuf>,
+    /// The served K2's control channel at PATH (default: LINK.ctl beside --rtu-pty's link):
+    /// faults added, listed and cleared and the fault event log read while clients poll
+    /// (`plcsh sim control PATH …`, or `control=PATH` in the client's URL).
+    #[arg(long = "k2-control", value_name = "PATH")]
+    pub k2_control: Option<PathBuf>,
     /// Inject a fault into the served K2, e.g. `--fault "no-reply on VW100 after=2s times=1"` (repeatable; see `help sim`).
     #[arg(long = "fault", value_name = "SPEC")]
     pub faults: Vec<String>,
@@ -198,10 +217,34 @@ impl Drop for StopOnDrop {
     }
 }
 
-/// Files to remove when the server stops.
+/// Files to remove when the server stops (control channels remove their own).
 #[derive(Default)]
 struct Cleanup {
     links: Vec<PathBuf>,
+    channels: Vec<control::Channel>,
+}
+
+/// With `-v`: one line on stderr each time an injected fault acts on the served K2, with its
+/// virtual time (read from the simulator's event log; reading it changes nothing).
+fn report_faults(sim: Arc<Mutex<crate::k2::sim::K2Sim>>, stop: Arc<AtomicBool>) {
+    std::thread::spawn(move || {
+        let mut seen = 0u64;
+        while !stop.load(std::sync::atomic::Ordering::Relaxed) {
+            let lines: Vec<String> = {
+                let s = sim.lock().unwrap_or_else(|p| p.into_inner());
+                let new: Vec<_> = s.events.list().into_iter().filter(|e| e.seq >= seen).collect();
+                seen = new.last().map_or(seen, |e| e.seq + 1);
+                new.iter()
+                    .filter(|e| matches!(e.kind, crate::k2::instr::EventKind::Fault { .. }))
+                    .map(|e| format!("{:.6} s: {}", e.time.as_secs_f64(), e.kind.describe()))
+                    .collect()
+            };
+            for l in lines {
+                eprintln!("plcsh sim serve: {l}");
+            }
+            std::thread::sleep(std::time::Duration::from_millis(50));
+        }
+    });
 }
 
 impl Drop for Cleanup {
@@ -221,6 +264,7 @@ async fn serve_k2(
     ready: &mut Map<String, Json>,
     cleanup: &mut Cleanup,
     bench: Option<crate::k2::sim::K2Sim>,
+    stop: &Arc<AtomicBool>,
 ) -> Result<()> {
     let mut sim = match bench {
         Some(sim) => sim,
@@ -249,7 +293,21 @@ async fn serve_k2(
         sim.load_program(&text, &p.display().to_string())?;
         ready.insert("program".into(), json!(p.display().to_string()));
     }
-    let service = K2Service::new(Arc::new(Mutex::new(sim)), args.unit);
+    let sim = Arc::new(Mutex::new(sim));
+    let service = K2Service::new(sim.clone(), args.unit);
+    let control = args.k2_control.clone().or_else(|| args.rtu_pty.as_deref().map(control::default_path));
+    if let Some(path) = control {
+        let (s, stop) = (sim.clone(), stop.clone());
+        let answer: control::Answer = Arc::new(move |text: &str| {
+            control::reply(crate::k2::sim::control::answer(&mut s.lock().unwrap_or_else(|p| p.into_inner()), text, true))
+        });
+        let ch = control::Channel::open(&path, "the served K2's control channel", answer, stop)?;
+        ready.insert("k2_control".into(), json!(ch.path()));
+        cleanup.channels.push(ch);
+    }
+    if cli.verbose > 0 {
+        report_faults(sim.clone(), stop.clone());
+    }
     let idle =
         crate::core::literal::parse_duration_us(&args.idle_timeout).ok().filter(|us| *us > 0).ok_or_else(|| {
             Error::usage(format!("--idle-timeout {} is not a duration", args.idle_timeout)).hint("e.g. 300s, 2m")
@@ -378,11 +436,11 @@ async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
         }
         None => (None, None),
     };
-    if args.serves_k2() {
-        serve_k2(cli, args, &clock, &mut tasks, &mut ready, &mut cleanup, k2).await?;
-    }
     let servo_stop = Arc::new(AtomicBool::new(false));
     let _stop_servo = StopOnDrop(servo_stop.clone());
+    if args.serves_k2() {
+        serve_k2(cli, args, &clock, &mut tasks, &mut ready, &mut cleanup, k2, &servo_stop).await?;
+    }
     serve_servo(args, &servo_stop, &mut ready, &mut cleanup, line).await?;
     ready.extend(crate::fx::sim::serve_ports(fx.0, fx.1, &args.fx_model, args.fx_station, &servo_stop).await?);
     cleanup.links.extend(args.fx_pty.iter().chain(&args.fx_link_pty).cloned());
@@ -410,6 +468,37 @@ async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
                 Err(e) => e.to_string(),
             };
             Err(Error::io("serving failed").cause(e))
+        }
+    }
+}
+
+/// Runs `plcsh sim control PATH WORDS…`: one line to a served simulator's control channel;
+/// the reply as text (or the JSON object with `--json`). Exit 0 on `ok`, 2 when the
+/// simulator refused the line, 1 when the channel cannot be reached.
+pub fn control_run(args: &ControlArgs, style: Style, out: &mut dyn Write) -> i32 {
+    let line = args.words.join(" ");
+    match control::send(&args.path, &line) {
+        Ok((text, data)) => {
+            let mut o = output::Outcome::new("sim control").text(text);
+            if let Json::Object(m) = data {
+                for (k, v) in m {
+                    if k != "ok" && k != "text" {
+                        o = o.with(&k, v);
+                    }
+                }
+            }
+            match output::write_outcome(out, style, &o) {
+                Ok(()) => 0,
+                Err(_) => 1,
+            }
+        }
+        Err(e) => {
+            let _ = output::report_error(out, style, "sim control", &e, None);
+            if e.kind == crate::core::ErrorKind::Usage {
+                2
+            } else {
+                1
+            }
         }
     }
 }

@@ -64,6 +64,23 @@ impl DeviceUrl {
         }))
     }
 
+    /// This URL without parameter `key` (the text too): a parameter the session takes for
+    /// itself before a family's driver sees the rest.
+    pub fn without(mut self, key: &str) -> DeviceUrl {
+        if !self.params.iter().any(|(k, _)| k == key) {
+            return self;
+        }
+        self.params.retain(|(k, _)| k != key);
+        if let Some((head, query)) = self.text.split_once('?') {
+            let kept: Vec<&str> = query
+                .split('&')
+                .filter(|p| !p.is_empty() && !p.split('=').next().unwrap_or("").eq_ignore_ascii_case(key))
+                .collect();
+            self.text = if kept.is_empty() { head.to_string() } else { format!("{head}?{}", kept.join("&")) };
+        }
+        self
+    }
+
     /// Errors on parameters outside `known`, so typos do not pass silently.
     pub fn expect_params(&self, known: &[&str]) -> Result<()> {
         for (k, _) in &self.params {
@@ -97,6 +114,14 @@ impl UrlNumber for u64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_parameter_can_be_taken_out() {
+        let u = DeviceUrl::parse("tcp://127.0.0.1:5020?unit=2&control=/tmp/k2.ctl").unwrap().without("control");
+        assert_eq!((u.text.as_str(), u.params.len()), ("tcp://127.0.0.1:5020?unit=2", 1));
+        let u = DeviceUrl::parse("fx:/dev/ttyUSB0?CONTROL=/x").unwrap().without("control");
+        assert_eq!((u.text.as_str(), u.params.is_empty()), ("fx:/dev/ttyUSB0", true));
+    }
 
     #[test]
     fn splits_scheme_target_and_params() {

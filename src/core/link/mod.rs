@@ -9,12 +9,14 @@
 //! - [`port`]: deadline ports under the K2's Modbus client;
 //! - [`tcp`]: TCP as a line, client and served; [`pipe`]: an in-process line for tests;
 //! - [`traced`]: async streams that report their frames;
+//! - [`control`]: the control channel beside a served simulator (faults, inputs, events);
 //! - [`pty`], [`async_pty`]: pseudo-terminals simulators are served on (Unix; on Windows
 //!   they refuse and name the TCP option).
 //!
 //! Platform code lives in two folders only, [`unix`] and `windows`, which offer the same
 //! items; this file picks one. No device family contains a `cfg` for the operating system.
 
+pub mod control;
 pub mod line;
 pub mod pipe;
 pub mod port;

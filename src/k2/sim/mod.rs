@@ -10,6 +10,7 @@
 
 pub mod agent;
 pub mod agent_probe;
+pub mod control;
 pub mod events;
 pub mod fault;
 pub mod hsc;
@@ -469,6 +470,11 @@ impl K2Sim {
             }
         }
         Ok(msg)
+    }
+
+    /// Removes injected fault `id` (or every one); returns how many went.
+    pub fn clear_faults(&mut self, id: Option<u32>) -> usize {
+        self.faults.clear(id)
     }
 
     /// Stops the source driving `pin`; the input keeps its last level.

@@ -27,7 +27,6 @@ use crate::core::literal::parse_duration_us;
 use crate::core::{Error, ErrorKind, Result};
 use crate::servo::objects;
 use serde_json::{json, Value as Json};
-use std::io::{BufRead, BufReader, Write};
 use std::path::Path;
 use std::time::Duration;
 
@@ -339,41 +338,12 @@ pub fn apply(line: &mut SimLine, req: &Request, default_id: Option<u8>) -> Resul
 /// Answers one control-socket line (the served simulator's side).
 pub fn answer_line(line: &mut SimLine, text: &str) -> Json {
     let ws = words(text);
-    match parse(&ws).and_then(|r| apply(line, &r, None)) {
-        Ok((text, mut data)) => {
-            if let Json::Object(m) = &mut data {
-                m.insert("ok".into(), json!(true));
-                m.insert("text".into(), json!(text));
-            }
-            data
-        }
-        Err(e) => json!({"ok": false, "error": e.message, "hint": e.hint}),
-    }
+    crate::core::link::control::reply(parse(&ws).and_then(|r| apply(line, &r, None)))
 }
 
-/// Sends one control line to a served simulator's socket and returns its reply.
+/// Sends one control line to a served line's control channel and returns its reply.
 pub fn send(path: &Path, text: &str) -> Result<(String, Json)> {
-    let io = |e: std::io::Error| {
-        Error::link(format!("cannot reach the simulator's control socket {}", path.display()))
-            .cause(e)
-            .hint("is `plcsh sim serve --servo-pty …` still running?")
-    };
-    let mut s = crate::core::link::local_connect(path).map_err(io)?;
-    s.set_read_timeout(Some(Duration::from_secs(5))).map_err(io)?;
-    writeln!(s, "{}", text.replace('\n', " ")).map_err(io)?;
-    let mut reply = String::new();
-    BufReader::new(&s).read_line(&mut reply).map_err(io)?;
-    let j: Json = serde_json::from_str(&reply)
-        .map_err(|e| Error::link(format!("the control socket answered `{}`", reply.trim())).cause(e))?;
-    if j["ok"] == json!(true) {
-        Ok((j["text"].as_str().unwrap_or_default().to_string(), j))
-    } else {
-        let mut e = Error::usage(j["error"].as_str().unwrap_or("the simulator refused").to_string());
-        if let Some(h) = j["hint"].as_str() {
-            e = e.hint(h.to_string());
-        }
-        Err(e)
-    }
+    crate::core::link::control::send(path, text)
 }
 
 #[cfg(test)]

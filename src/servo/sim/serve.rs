@@ -25,18 +25,14 @@
 use super::{control, Pace, SimLine};
 use crate::core::link::line::Transport;
 use crate::core::link::served::{ServeOn, Served};
-use crate::core::link::{LocalListener, LocalStream};
+use crate::core::link::control as control_channel;
 use crate::core::trace::{self, Dir};
-use crate::core::{Clock, Error, Result};
+use crate::core::{Clock, Result};
 use crate::servo::frame::FrameBuffer;
-use std::io::{BufRead, BufReader, Read, Write};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
-
-/// Longest control-socket line accepted.
-const MAX_LINE: usize = 4096;
 
 /// Silence after which a partial frame is dropped (a frame takes 2.6 ms at 38400 baud).
 pub const GAP: Duration = Duration::from_millis(20);
@@ -114,45 +110,7 @@ pub struct Options {
 
 /// The control socket's path for a pty link: `LINK.ctl`.
 pub fn control_path(link: &Path) -> PathBuf {
-    let mut s = link.as_os_str().to_os_string();
-    s.push(".ctl");
-    PathBuf::from(s)
-}
-
-/// Answers control requests on `listener` until `stop` (one thread per connection).
-fn serve_control(listener: LocalListener, line: Arc<Mutex<SimLine>>, stop: Arc<AtomicBool>) {
-    while !stop.load(Ordering::Relaxed) {
-        match listener.accept() {
-            Ok(conn) => {
-                let line = line.clone();
-                std::thread::spawn(move || {
-                    let mut w: LocalStream = match conn.try_clone() {
-                        Ok(w) => w,
-                        Err(_) => return,
-                    };
-                    let mut r = BufReader::new(conn);
-                    loop {
-                        // One request per line, at most MAX_LINE bytes (outside input).
-                        let mut text = String::new();
-                        match (&mut r).take(MAX_LINE as u64 + 1).read_line(&mut text) {
-                            Ok(0) | Err(_) => break,
-                            Ok(_) => {}
-                        }
-                        let reply = if text.len() > MAX_LINE {
-                            serde_json::json!({"ok": false, "error": format!("a control line is at most {MAX_LINE} bytes")})
-                        } else {
-                            control::answer_line(&mut line.lock().unwrap_or_else(|p| p.into_inner()), text.trim())
-                        };
-                        if writeln!(w, "{reply}").is_err() || text.len() > MAX_LINE {
-                            break;
-                        }
-                    }
-                });
-            }
-            Err(e) if e.kind() == std::io::ErrorKind::WouldBlock => std::thread::sleep(GAP),
-            Err(_) => std::thread::sleep(GAP),
-        }
-    }
+    crate::core::link::control::default_path(link)
 }
 
 /// Opens the endpoint (a pty with `LINK` and its control socket `LINK.ctl`, or a TCP port),
@@ -187,11 +145,11 @@ pub fn serve_on_line(
     };
     let ctl = match opts.control.clone().or_else(|| served.link_path().map(control_path)) {
         Some(p) => {
-            let listener = LocalListener::bind(&p)
-                .map_err(|e| Error::io(format!("cannot open the servo control socket {}", p.display())).cause(e))?;
-            let (line, stop) = (line.clone(), stop.clone());
-            std::thread::spawn(move || serve_control(listener, line, stop));
-            Some(p)
+            let line = line.clone();
+            let answer: control_channel::Answer = Arc::new(move |text: &str| {
+                control::answer_line(&mut line.lock().unwrap_or_else(|p| p.into_inner()), text)
+            });
+            Some(control_channel::Channel::open(&p, "the servo control socket", answer, stop.clone())?)
         }
         None => None,
     };
@@ -201,7 +159,7 @@ pub fn serve_on_line(
         servo_tcp: served.tcp.map(|a| a.to_string()),
         ids,
         echo: opts.echo,
-        servo_control: ctl.clone(),
+        servo_control: ctl.as_ref().map(|c| c.path().to_path_buf()),
         servo_baud: opts.pace.map(|p| p.baud),
         servo_latency_us: opts.pace.map(|p| p.latency.as_micros() as u64),
         strict: opts.strict,
@@ -209,8 +167,6 @@ pub fn serve_on_line(
     let name = served.name();
     let mut served = served;
     let r = serve_line(served.line.as_mut(), &line, stop, &name);
-    if let Some(c) = ctl {
-        let _ = std::fs::remove_file(c);
-    }
+    drop(ctl);
     r
 }

@@ -1,46 +1,36 @@
 //! `sim fault KIND … [on OPERANDS] [at=|after=] [for=] [times=]`, `sim fault clear [ID]`,
-//! `sim faults`: injected faults on the simulated K2 ([`crate::k2::sim::fault`]).
+//! `sim faults`: injected faults on the simulated K2 ([`crate::k2::sim::fault`]), in the
+//! control language of [`crate::k2::sim::control`]: applied to an in-process simulator, or
+//! sent to a served one's control channel when the device was opened with `control=PATH`.
 
 use super::k2cmd;
-use crate::core::{Error, Result};
-use crate::k2::sim::fault::{self, USAGE};
+use crate::core::link::control as channel;
+use crate::core::Result;
 use crate::output::Outcome;
 use crate::shell::Shell;
 
 pub fn run(sh: &mut Shell, sub: &str, rest: &str) -> Result<Outcome> {
     // Lua passes the spec as one quoted string.
     let rest = rest.strip_prefix('"').and_then(|r| r.strip_suffix('"')).unwrap_or(rest).trim();
+    let line = if sub == "faults" { format!("faults {rest}") } else { format!("fault {rest}") };
     let dev = sh.session.current_index()?;
     let name = k2cmd::name(sh, dev);
-    let sim = k2cmd::sim(sh, dev, "sim fault")?;
-    sim.advance();
-    if sub == "faults" {
-        let list: Vec<String> = sim.faults.list.iter().map(|f| f.describe()).collect();
-        return Ok(Outcome::new("sim faults")
-            .text(if list.is_empty() { "no injected faults".into() } else { list.join("\n") })
-            .with("faults", &sim.faults.list));
-    }
-    if let Some(arg) = rest.strip_prefix("clear") {
-        let id = match arg.trim() {
-            "" | "all" => None,
-            n => Some(n.parse::<u32>().map_err(|_| Error::usage(format!("`{n}` is not a fault id")).hint(USAGE))?),
-        };
-        let n = sim.faults.clear(id);
-        if id.is_some() && n == 0 {
-            return Err(Error::usage(format!("{name} has no fault {}", id.unwrap_or(0)))
-                .hint("sim faults lists them")
-                .device(&name));
-        }
-        return Ok(Outcome::new("sim fault").text(format!("cleared {n} fault(s)")).with("cleared", n));
-    }
-    let spec = fault::parse(rest).map_err(|m| Error::usage(m).hint(USAGE).device(&name))?;
-    let now = sim.last;
-    let id = sim.faults.add(&spec, now);
-    let f = sim.faults.list.last().expect("just added");
-    let note = if f.kind.in_process() {
-        String::new()
+    let (text, data) = if let Some(path) = sh.session.entries()[dev].control.clone() {
+        channel::send(&path, &line).map_err(|e| e.device(&name))?
     } else {
-        " (acts when the simulator is served: sim serve --fault …)".to_string()
+        let sim = k2cmd::sim(sh, dev, "sim fault").map_err(|e| {
+            e.hint("a served K2 takes faults on its control channel: open it with control=PATH (the server's readiness line names it)")
+        })?;
+        crate::k2::sim::control::answer(sim, &line, false).map_err(|e| e.device(&name))?
     };
-    Ok(Outcome::new("sim fault").text(format!("{}{note}", f.describe())).with("id", id).with("fault", f))
+    let mut o = Outcome::new(if sub == "faults" { "sim faults" } else { "sim fault" }).text(text);
+    if let serde_json::Value::Object(m) = data {
+        for (k, v) in m {
+            if !matches!(k.as_str(), "ok" | "text" | "time_us") {
+                o = o.with(&k, v);
+            }
+        }
+    }
+    o.device = Some(name);
+    Ok(o)
 }
