@@ -180,7 +180,15 @@ fn a_served_k2_on_a_pty_has_its_channel_beside_the_link_and_a_url_forwards_sim_f
 #[test]
 fn in_process_sim_fault_speaks_the_same_words() {
     let o = run(
-        &["--time", "stepped", "--json", "-d", "plc=sim:K205-16DT", "-c", "sim fault stuck I0.2=1 after=1s; sim step 2s; get I0.2; sim faults"],
+        &[
+            "--time",
+            "stepped",
+            "--json",
+            "-d",
+            "plc=sim:K205-16DT",
+            "-c",
+            "sim fault stuck I0.2=1 after=1s; sim step 2s; get I0.2; sim faults",
+        ],
         "",
     );
     assert!(o.status.success(), "{}", common::both(&o));

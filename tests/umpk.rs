@@ -626,7 +626,7 @@ plcsh.assert_eq(lab:umpk_info().mode, "Work")
 plcsh.assert_eq(lab:umpk_program_info().program_info, "FROM LUA" .. string.rep(" ", 14))
 lab:umpk_reset()
 local ok, err = pcall(function() return lab:umpk_sim_input("I3=1") end)
-plcsh.check(not ok and tostring(err):find("works on the simulator"), "a real port has no simulated inputs", tostring(err))
+plcsh.check(not ok and tostring(err):find("works on a simulated UMPK"), "a real port has no simulated inputs", tostring(err))
 print("lua ok")
 "#,
             link = srv.link.display(),
@@ -637,5 +637,42 @@ print("lua ok")
     let o = run(&["run", script.to_str().unwrap()], "");
     assert!(o.status.success(), "{}\n{}", stdout(&o), String::from_utf8_lossy(&o.stderr));
     assert!(stdout(&o).contains("lua ok"));
+    let _ = std::fs::remove_dir_all(&srv.dir);
+}
+
+/// The lab's own PC software on the served line sees what the control channel switches:
+/// inputs, a stuck input, a silent line (`LINK.ctl`, the same words as `umpk sim …`).
+#[test]
+fn the_control_channel_switches_what_the_lab_software_reads_on_the_served_line() {
+    let srv = Server::start("control", &["--umpk-state", "none"]);
+    let ctl = format!("{}.ctl", srv.link.display());
+    assert_eq!(srv.served.ready["umpk_control"], ctl.as_str());
+    let control = |words: &str| {
+        let mut args = vec!["--json", "sim", "control", ctl.as_str()];
+        args.extend(words.split_whitespace());
+        let o = run(&args, "");
+        assert!(o.status.success(), "{words}: {}", both(&o));
+        json_lines(&o).remove(0)
+    };
+    let mut t = Raw::open(&srv.link);
+    assert_eq!(t.ask("?05FB", 99), "?05FB#0400000000FC\r\n");
+    control("input I3=1");
+    control("input I9=1");
+    // Terminal command ?05FB (spec/umpk.md §3): `#04` + 4 bytes of inputs, I0–I7 first, + CC.
+    assert_eq!(t.ask("?05FB", 99), "?05FB#0408020000F2\r\n");
+    let f = control("fault stuck I3=0");
+    assert_eq!(f["id"], 1);
+    assert_eq!(t.ask("?05FB", 99), "?05FB#0400020000FA\r\n");
+    control("fault no-reply for=300ms");
+    t.send(b"?05FB");
+    assert!(t.read_until(Duration::from_millis(150), |g| !g.is_empty()).is_empty(), "a silent line answers nothing");
+    let ev = control("events");
+    assert_eq!(ev["events"].as_array().unwrap().len(), 2, "{ev}");
+    assert_eq!(control("fault clear")["cleared"], 2);
+    t.quiet(400);
+    assert_eq!(t.ask("?05FB", 99), "?05FB#0408020000F2\r\n", "cleared: I3 follows its switch again");
+    let o = run(&["sim", "control", ctl.as_str(), "input", "I16=1"], "");
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("I16 is not an input of the UMPK16 (I0…I15)"), "{}", stderr(&o));
     let _ = std::fs::remove_dir_all(&srv.dir);
 }

@@ -47,7 +47,7 @@ use tokio::task::JoinSet;
 #[derive(Subcommand, Debug)]
 pub enum SimCmd {
     /// Serve the simulator over Modbus TCP, Modbus RTU on a pseudo-terminal, and/or RTU over TCP.
-    Serve(ServeArgs),
+    Serve(Box<ServeArgs>),
     /// Send one line to a served simulator's control channel (faults, events) and print the reply.
     Control(ControlArgs),
 }
@@ -151,6 +151,10 @@ pub struct ServeArgs {
     /// An IL lab program the simulated UMPK runs each 10 ms cycle (docs/il.md, "The UMPK family").
     #[arg(long = "umpk-program", value_name = "FILE.il")]
     pub umpk_program: Option<PathBuf>,
+    /// The served UMPK's control channel at PATH (default: LINK.ctl beside --umpk-pty's link):
+    /// inputs, square waves and faults while the lab's software uses the line.
+    #[arg(long = "umpk-control", value_name = "PATH")]
+    pub umpk_control: Option<PathBuf>,
     /// The served K2's control channel at PATH (default: LINK.ctl beside --rtu-pty's link):
     /// faults added, listed and cleared and the fault event log read while clients poll
     /// (`plcsh sim control PATH …`, or `control=PATH` in the client's URL).
@@ -217,11 +221,13 @@ impl Drop for StopOnDrop {
     }
 }
 
-/// Files to remove when the server stops (control channels remove their own).
+/// What ends with the server: files to remove, control channels (they remove their own
+/// files), and the stop flag the threads serving lines and channels watch.
 #[derive(Default)]
 struct Cleanup {
     links: Vec<PathBuf>,
     channels: Vec<control::Channel>,
+    stop: Arc<AtomicBool>,
 }
 
 /// With `-v`: one line on stderr each time an injected fault acts on the served K2, with its
@@ -249,6 +255,7 @@ fn report_faults(sim: Arc<Mutex<crate::k2::sim::K2Sim>>, stop: Arc<AtomicBool>) 
 
 impl Drop for Cleanup {
     fn drop(&mut self) {
+        self.stop.store(true, std::sync::atomic::Ordering::Relaxed);
         for l in &self.links {
             let _ = std::fs::remove_file(l);
         }
@@ -264,8 +271,8 @@ async fn serve_k2(
     ready: &mut Map<String, Json>,
     cleanup: &mut Cleanup,
     bench: Option<crate::k2::sim::K2Sim>,
-    stop: &Arc<AtomicBool>,
 ) -> Result<()> {
+    let stop = cleanup.stop.clone();
     let mut sim = match bench {
         Some(sim) => sim,
         None => crate::k2::sim::open(&cli.model, clock.clone())?,
@@ -297,16 +304,20 @@ async fn serve_k2(
     let service = K2Service::new(sim.clone(), args.unit);
     let control = args.k2_control.clone().or_else(|| args.rtu_pty.as_deref().map(control::default_path));
     if let Some(path) = control {
-        let (s, stop) = (sim.clone(), stop.clone());
+        let s = sim.clone();
         let answer: control::Answer = Arc::new(move |text: &str| {
-            control::reply(crate::k2::sim::control::answer(&mut s.lock().unwrap_or_else(|p| p.into_inner()), text, true))
+            control::reply(crate::k2::sim::control::answer(
+                &mut s.lock().unwrap_or_else(|p| p.into_inner()),
+                text,
+                true,
+            ))
         });
-        let ch = control::Channel::open(&path, "the served K2's control channel", answer, stop)?;
+        let ch = control::Channel::open(&path, "the served K2's control channel", answer, stop.clone())?;
         ready.insert("k2_control".into(), json!(ch.path()));
         cleanup.channels.push(ch);
     }
     if cli.verbose > 0 {
-        report_faults(sim.clone(), stop.clone());
+        report_faults(sim.clone(), stop);
     }
     let idle =
         crate::core::literal::parse_duration_us(&args.idle_timeout).ok().filter(|us| *us > 0).ok_or_else(|| {
@@ -439,13 +450,16 @@ async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
     let servo_stop = Arc::new(AtomicBool::new(false));
     let _stop_servo = StopOnDrop(servo_stop.clone());
     if args.serves_k2() {
-        serve_k2(cli, args, &clock, &mut tasks, &mut ready, &mut cleanup, k2, &servo_stop).await?;
+        serve_k2(cli, args, &clock, &mut tasks, &mut ready, &mut cleanup, k2).await?;
     }
     serve_servo(args, &servo_stop, &mut ready, &mut cleanup, line).await?;
     ready.extend(crate::fx::sim::serve_ports(fx.0, fx.1, &args.fx_model, args.fx_station, &servo_stop).await?);
     cleanup.links.extend(args.fx_pty.iter().chain(&args.fx_link_pty).cloned());
     if let Some(on) = umpk {
         cleanup.links.extend(args.umpk_pty.iter().cloned());
+        // The control channel goes with the server, even when the process exits before the
+        // UMPK's thread sees the stop flag.
+        cleanup.links.extend(args.umpk_control.clone().or_else(|| args.umpk_pty.as_deref().map(control::default_path)));
         let u = crate::umpk::sim::serve::Options {
             on,
             model: args.umpk_model,
@@ -453,6 +467,7 @@ async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
             flash_fail: args.umpk_flash_fail.map(usize::from),
             state: args.umpk_state.clone(),
             program: args.umpk_program.clone(),
+            control: args.umpk_control.clone(),
         };
         ready.extend(crate::umpk::sim::serve::spawn(u, servo_stop.clone()).await?);
     }

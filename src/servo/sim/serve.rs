@@ -23,9 +23,9 @@
 //! as the Modbus servers' frames are.
 
 use super::{control, Pace, SimLine};
+use crate::core::link::control as control_channel;
 use crate::core::link::line::Transport;
 use crate::core::link::served::{ServeOn, Served};
-use crate::core::link::control as control_channel;
 use crate::core::trace::{self, Dir};
 use crate::core::{Clock, Result};
 use crate::servo::frame::FrameBuffer;

@@ -139,7 +139,7 @@ fn umpk(sh: &mut Shell, args: Args) -> Result<Outcome> {
         "monitor" => monitor(sh, dev, rest),
         "program" => program(sh, dev, rest, col),
         "send" => send(changing(sh, dev, "send")?, rest, col),
-        "sim" => sim(driver(sh, dev), rest, col),
+        "sim" => sim(sh, dev, rest, col),
         other => Err(Error::usage(format!("unknown `umpk {other}`")).column(col).hint(UMPK.usage)),
     };
     r.map(|mut o| {
@@ -160,7 +160,7 @@ pub fn sim_input(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let dev = sh.session.current_index()?;
     let name = sh.session.entries()[dev].name.clone();
     let col = words.first().map_or(args.offset, |w| w.0);
-    let mut o = sim(driver(sh, dev), &words, col).map_err(|e| e.device(&name))?;
+    let mut o = sim(sh, dev, &words, col).map_err(|e| e.device(&name))?;
     o.device = Some(name);
     Ok(o)
 }
@@ -294,46 +294,43 @@ fn send(d: &mut Driver, rest: &[Word], col: usize) -> Result<Outcome> {
         .with("echoed", x.echoed))
 }
 
-fn sim(d: &mut Driver, rest: &[Word], col: usize) -> Result<Outcome> {
+/// `umpk sim …` / `sim input …`: the control language of [`crate::umpk::sim::control`], applied
+/// to an in-process simulator or sent to a served one's control channel (`control=PATH`);
+/// `reference NAME` loads one of the simulator's reference programs.
+fn sim(sh: &mut Shell, dev: usize, rest: &[Word], col: usize) -> Result<Outcome> {
+    let line = rest.iter().map(|w| w.1).collect::<Vec<_>>().join(" ");
+    if rest.first().map(|w| w.1) != Some("reference") {
+        let control = sh.session.entries()[dev].control.clone();
+        let (text, data) = match (driver(sh, dev).simulator(), control) {
+            (Some(s), _) => {
+                let mut u = s.lock().unwrap_or_else(|p| p.into_inner());
+                crate::umpk::sim::control::answer(&mut u, &line).map_err(|e| e.column(col))?
+            }
+            (None, Some(path)) => crate::core::link::control::send(&path, &line).map_err(|e| e.column(col))?,
+            (None, None) => {
+                return Err(Error::unsupported(
+                    "umpk sim works on a simulated UMPK: in-process (sim-umpk:UMPK16), or served by plcsh sim serve --umpk-pty LINK and opened with control=LINK.ctl; a real UMPK's inputs are wired",
+                )
+                .column(col))
+            }
+        };
+        let mut o = Outcome::new("umpk").text(text);
+        if let serde_json::Value::Object(m) = data {
+            for (k, v) in m {
+                if !matches!(k.as_str(), "ok" | "text" | "time_us") {
+                    o = o.with(&k, v);
+                }
+            }
+        }
+        return Ok(o);
+    }
+    let d = driver(sh, dev);
     let s = d.simulator().ok_or_else(|| {
-        Error::unsupported("umpk sim works on the simulator (sim-umpk:UMPK16); a real UMPK's inputs are wired")
-            .column(col)
+        Error::unsupported("reference programs load into the in-process simulator (sim-umpk:UMPK16)").column(col)
     })?;
     let mut u = s.lock().unwrap_or_else(|p| p.into_inner());
-    let (pos, opts) = lex::options(rest.get(1..).unwrap_or(&[]));
+    let (pos, _) = lex::options(rest.get(1..).unwrap_or(&[]));
     match rest.first().map(|w| w.1) {
-        Some("input") => {
-            check_options(&opts, &["freq"], UMPK.usage)?;
-            let &(c, first) =
-                pos.first().ok_or_else(|| Error::usage("umpk sim input I3=1 | I3 freq=2Hz | I3 off").column(col))?;
-            let (op_text, value) = match first.split_once('=') {
-                Some((o, v)) => (o, Some(v)),
-                None => (first, pos.get(1).map(|w| w.1)),
-            };
-            let ops = parse_operand(&u, op_text).map_err(|e| e.column(c))?;
-            let o = UmpkOperand::from_core(&ops[0]);
-            if o.area().letter != 'I' {
-                return Err(value_err(c, format!("{} is not an input: the simulator's inputs are I0…", o.name())));
-            }
-            let msg = if let Some((fc, f)) = opt(&opts, "freq") {
-                let hz = crate::k2::helpers::parse_freq_hz(f).map_err(|m| value_err(fc, m))?;
-                let period = (1000.0 / hz / CYCLE_MS as f64).round() as u64;
-                if !(2..=1_000_000).contains(&period) {
-                    return Err(value_err(fc, format!("freq={f}: the 10 ms cycle sees square waves of 0.0001–50 Hz")));
-                }
-                u.set_wave(o.index, period);
-                format!("{}: square wave, period {} ms", o.name(), period * CYCLE_MS)
-            } else {
-                let on = match value.map(str::to_ascii_lowercase).as_deref() {
-                    Some("1") | Some("on") | Some("true") => true,
-                    Some("0") | Some("off") | Some("false") => false,
-                    _ => return Err(value_err(c, format!("{}: give =1, =0, off or freq=…", o.name()))),
-                };
-                u.set_input(o.index, on);
-                format!("{} = {}", o.name(), on as u8)
-            };
-            Ok(Outcome::new("umpk").text(msg))
-        }
         Some("reference") => {
             use crate::umpk::sim::reference;
             let Some(&(c, name)) = pos.first() else {
@@ -352,26 +349,8 @@ fn sim(d: &mut Driver, rest: &[Word], col: usize) -> Result<Outcome> {
                 .with("program", r.name)
                 .with("mode", u.mode().name()))
         }
-        Some("flash-fail") => {
-            let page = match pos.first().map(|w| w.1) {
-                Some("off") => None,
-                Some(p) => Some(p.parse::<usize>().map_err(|_| value_err(col, format!("`{p}` is not a page number")))?),
-                None => return Err(Error::usage("umpk sim flash-fail PAGE|off").column(col)),
-            };
-            u.flash_fail = page;
-            Ok(Outcome::new("umpk").text(match page {
-                Some(p) => format!("flash writes to page {p} (16#{:04X}) will fail with W", p * 64),
-                None => "flash writes succeed".into(),
-            }))
-        }
-        _ => Err(Error::usage("umpk sim input …|flash-fail …|reference …").column(col).hint(UMPK.usage)),
+        _ => unreachable!("only reference reaches here"),
     }
-}
-
-/// Parses an operand with the simulated controller's model bounds.
-fn parse_operand(u: &crate::umpk::sim::Umpk, text: &str) -> Result<Vec<crate::core::Operand>> {
-    use crate::core::OperandSpace;
-    crate::umpk::space::UmpkSpace { model: u.model }.parse(text)
 }
 
 fn program(sh: &mut Shell, dev: usize, rest: &[Word], col: usize) -> Result<Outcome> {

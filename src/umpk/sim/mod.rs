@@ -32,6 +32,7 @@
 //! characters outside a command get `C`, CR/LF/space between commands are ignored, and a
 //! `?` or `:` inside an unfinished command abandons it with `C`.
 
+pub mod control;
 pub mod logic;
 pub mod program;
 pub mod reference;
@@ -131,6 +132,8 @@ pub struct Umpk {
     pub waves: Vec<Wave>,
     /// Flash page whose write fails (`W`), for tests and labs.
     pub flash_fail: Option<usize>,
+    /// Injected faults: a silent line, stuck inputs ([`control`]).
+    pub faults: control::Faults,
     /// Where the flash, program info and error history are kept ([`state`]).
     pub state_path: Option<std::path::PathBuf>,
     rx: Vec<u8>,
@@ -171,6 +174,7 @@ impl Umpk {
             forced_inputs: 0,
             waves: Vec::new(),
             flash_fail: None,
+            faults: control::Faults::default(),
             state_path: None,
             rx: Vec::new(),
             out: VecDeque::new(),
@@ -233,7 +237,25 @@ impl Umpk {
     pub fn set_input(&mut self, i: u8, on: bool) {
         self.waves.retain(|w| w.input != i);
         self.forced_inputs = self.forced_inputs & !(1 << i) | (on as u32) << i;
-        self.image.inputs = self.image.inputs & !(1 << i) | (on as u32) << i;
+        self.refresh_inputs();
+    }
+
+    /// The input word of the current cycle: switches, square waves, then stuck inputs.
+    fn input_word(&self, at: Duration) -> u32 {
+        let mut inputs = self.forced_inputs;
+        for w in &self.waves {
+            if self.cycle.saturating_sub(w.start) % w.period < w.period / 2 {
+                inputs |= 1 << w.input;
+            }
+        }
+        self.faults.inputs(inputs, at) & ((1u64 << self.model.inputs) - 1) as u32
+    }
+
+    /// Shows a change of switches or stuck inputs in the image at once (the program sees it
+    /// from the next cycle).
+    pub fn refresh_inputs(&mut self) {
+        let now = self.clock.now();
+        self.image.inputs = self.input_word(now);
     }
 
     /// Puts a square wave of `period` cycles on input `i`, starting with the next cycle.
@@ -361,13 +383,7 @@ impl Umpk {
     }
 
     fn run_cycle(&mut self, t: Duration) {
-        let mut inputs = self.forced_inputs;
-        for w in &self.waves {
-            if self.cycle.saturating_sub(w.start) % w.period < w.period / 2 {
-                inputs |= 1 << w.input;
-            }
-        }
-        self.image.inputs = inputs & ((1u64 << self.model.inputs) - 1) as u32;
+        self.image.inputs = self.input_word(t);
         let mut ran = false;
         if self.mode == Mode::Work {
             if let Program::Logic(r) = &mut self.program {
@@ -406,7 +422,7 @@ impl Umpk {
 
     fn byte(&mut self, b: u8, now: Duration) {
         self.received += 1;
-        if matches!(self.mode, Mode::Resetting(_)) {
+        if matches!(self.mode, Mode::Resetting(_)) || self.faults.mute(now) {
             return;
         }
         let starts = b == b'?' || b == b':';

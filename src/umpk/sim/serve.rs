@@ -10,6 +10,7 @@
 //! one does: when the pty's buffer is full, what the client has not read is flushed.
 
 use super::Umpk;
+use crate::core::link::control as channel;
 use crate::core::link::line::Transport;
 use crate::core::link::served::{ServeOn, Served};
 use crate::core::{Clock, Error, Result};
@@ -38,6 +39,9 @@ pub struct Ready {
     pub umpk_mode: &'static str,
     /// The state file keeping the flash, if any.
     pub umpk_state: Option<PathBuf>,
+    /// The control channel (inputs, square waves, faults; [`super::control`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub umpk_control: Option<PathBuf>,
 }
 
 fn lock(sim: &Mutex<Umpk>) -> std::sync::MutexGuard<'_, Umpk> {
@@ -76,13 +80,23 @@ pub fn serve(
     model: &'static Model,
     clock: Clock,
     setup: impl FnOnce(&mut Umpk) -> Result<()>,
-    stop: &AtomicBool,
+    stop: &Arc<AtomicBool>,
+    control: Option<PathBuf>,
     ready: impl FnOnce(&Ready),
 ) -> Result<()> {
     let mut served = Served::open(on)?;
     let mut u = Umpk::new(model, clock);
     setup(&mut u)?;
     let sim = Arc::new(Mutex::new(u));
+    let control = match control.or_else(|| served.link_path().map(channel::default_path)) {
+        Some(path) => {
+            let s = sim.clone();
+            let answer: channel::Answer =
+                Arc::new(move |text: &str| channel::reply(super::control::answer(&mut lock(&s), text)));
+            Some(channel::Channel::open(&path, "the served UMPK's control channel", answer, stop.clone())?)
+        }
+        None => None,
+    };
     let (umpk_mode, umpk_state) = {
         let u = lock(&sim);
         (u.mode().name(), u.state_path.clone())
@@ -94,6 +108,7 @@ pub fn serve(
         umpk_model: model.name,
         umpk_mode,
         umpk_state,
+        umpk_control: control.as_ref().map(|c| c.path().to_path_buf()),
     });
     serve_line(served.line.as_mut(), &sim, stop)
 }
@@ -126,6 +141,8 @@ pub struct Options {
     pub state: Option<PathBuf>,
     /// An IL lab program the served controller runs ([`super::program`]).
     pub program: Option<PathBuf>,
+    /// The control channel's path (default: `LINK.ctl` beside a pty's link).
+    pub control: Option<PathBuf>,
 }
 
 /// Serves a simulated UMPK from a thread of its own (the pty loop is blocking); returns
@@ -160,7 +177,7 @@ pub async fn spawn(o: Options, stop: Arc<AtomicBool>) -> Result<serde_json::Map<
             }
             Ok(())
         };
-        let r = serve(&o.on, model, Clock::following(), setup, &stop, |r| {
+        let r = serve(&o.on, model, Clock::following(), setup, &stop, o.control.clone(), |r| {
             if let Some(tx) = tx.take() {
                 let _ = tx.send(Ok(serde_json::json!(r)));
             }
