@@ -138,6 +138,13 @@ fn a_fault_is_added_observed_and_cleared_while_pymodbus_polls() {
     assert_eq!(cleared["cleared"], 2, "{cleared}");
     poller.until("answers after fault clear", 3, |v| v["result"] == "ok" && v["values"][0] == 1234);
     assert_eq!(control(&ctl, "faults")["faults"], serde_json::json!([]));
+
+    // A power cut: silence for its window, then the PLC is back without VW0 (not retained).
+    control(&ctl, "fault power-loss for=1s");
+    poller.until("no power", 1, |v| v["result"] == "timeout");
+    poller.until("power back, VW0 lost", 3, |v| v["result"] == "ok" && v["values"][0] == 0);
+    let ev = control(&ctl, "events");
+    assert!(ev["events"].as_array().unwrap().iter().any(|e| e["fault"] == "power-loss"), "{ev}");
 }
 
 #[test]

@@ -14,6 +14,7 @@
 //! | `drop` | the TCP connection closed before the reply | served, Modbus TCP |
 //! | `stuck I0.1=1` | the input image bit held at a level | in-process and served |
 //! | `noisy I0.1 freq=5kHz` | the input image bit flipping at random, freq= slots per second | in-process and served |
+//! | `power-loss for=5s` | nothing for the window (no reply, no scan, outputs off), then a restart with only what a power cut keeps: the E2PROM backup area, the retained ranges and the running clock | in-process and served |
 //!
 //! Request faults apply to requests that touch the range (any request without a range). In
 //! the process (`sim:MODEL`) there is no transport, so `late`, `bad-crc` and `drop` act only
@@ -37,12 +38,27 @@ use std::time::Duration;
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum FaultKind {
     NoReply,
-    Exception { code: u8 },
-    Late { ms: u64 },
+    Exception {
+        code: u8,
+    },
+    Late {
+        ms: u64,
+    },
     BadCrc,
     Drop,
-    Stuck { byte: u32, bit: u8, on: bool },
-    Noisy { byte: u32, bit: u8, hz: u64 },
+    Stuck {
+        byte: u32,
+        bit: u8,
+        on: bool,
+    },
+    Noisy {
+        byte: u32,
+        bit: u8,
+        hz: u64,
+    },
+    /// The PLC without power for the fault's window: no reply, no scan, outputs off; back
+    /// with only what a power cut keeps ([`super::power`]).
+    PowerLoss,
 }
 
 impl FaultKind {
@@ -56,6 +72,7 @@ impl FaultKind {
             FaultKind::Drop => "drop",
             FaultKind::Stuck { .. } => "stuck",
             FaultKind::Noisy { .. } => "noisy",
+            FaultKind::PowerLoss => "power-loss",
         }
     }
 
@@ -69,6 +86,7 @@ impl FaultKind {
             FaultKind::Drop => 5,
             FaultKind::Stuck { .. } => 6,
             FaultKind::Noisy { .. } => 7,
+            FaultKind::PowerLoss => 8,
         }
     }
 
@@ -81,6 +99,7 @@ impl FaultKind {
             FaultKind::Drop,
             FaultKind::Stuck { byte: 0, bit: 0, on: false },
             FaultKind::Noisy { byte: 0, bit: 0, hz: 0 },
+            FaultKind::PowerLoss,
         ]
         .into_iter()
         .find(|k| k.code() == code)
@@ -191,7 +210,7 @@ fn input_pin(text: &str) -> Result<Pin, String> {
 }
 
 /// The grammar, for messages.
-pub const USAGE: &str = "sim fault no-reply|exception CODE|late DURATION|bad-crc|drop [on OPERANDS] | sim fault stuck I0.1=1|noisy I0.1 freq=5kHz — then [at=TIME|after=DURATION] [for=DURATION] [times=N]; sim faults; sim fault clear [ID]";
+pub const USAGE: &str = "sim fault no-reply|exception CODE|late DURATION|bad-crc|drop [on OPERANDS] | sim fault stuck I0.1=1|noisy I0.1 freq=5kHz | sim fault power-loss for=5s — then [at=TIME|after=DURATION] [for=DURATION] [times=N]; sim faults; sim fault clear [ID]";
 
 /// Parses `no-reply on VW100..VW110 after=2s times=1` and the like. Linear in its input;
 /// refuses with a message.
@@ -209,6 +228,7 @@ pub fn parse(text: &str) -> Result<Spec, String> {
         "no-reply" => FaultKind::NoReply,
         "bad-crc" => FaultKind::BadCrc,
         "drop" => FaultKind::Drop,
+        "power-loss" => FaultKind::PowerLoss,
         "exception" => {
             let c = take("a code (1…255, e.g. 2 for illegal data address)")?;
             let code = c
@@ -282,6 +302,14 @@ pub fn parse(text: &str) -> Result<Spec, String> {
     if spec.at.is_some() && spec.after.is_some() {
         return Err("give at= or after=, not both".into());
     }
+    if spec.kind == FaultKind::PowerLoss {
+        if spec.duration.is_none() {
+            return Err("a power loss needs its length: power-loss for=5s (the PLC is back after it)".into());
+        }
+        if spec.range.is_some() || spec.times.is_some() {
+            return Err("a power loss takes at=, after= and for= (it acts on the whole PLC)".into());
+        }
+    }
     if spec.range.is_some() && !spec.kind.is_request() {
         return Err(format!("`on` is for request faults; {} names its input", spec.kind.name()));
     }
@@ -313,6 +341,20 @@ impl Faults {
             held: None,
         });
         self.next
+    }
+
+    /// The power-loss windows `(off, on)` set, in virtual time.
+    pub fn power_windows(&self) -> impl Iterator<Item = (u32, Duration, Duration)> + '_ {
+        self.list
+            .iter()
+            .filter(|f| f.kind == FaultKind::PowerLoss)
+            .filter_map(|f| Some((f.id, Duration::from_nanos(f.from_ns), Duration::from_nanos(f.until_ns?))))
+    }
+
+    /// True when a power loss is set (checked before every step; usually an empty list).
+    #[inline]
+    pub fn has_power_loss(&self) -> bool {
+        !self.list.is_empty() && self.list.iter().any(|f| f.kind == FaultKind::PowerLoss)
     }
 
     /// Removes fault `id`, or all; returns how many went.

@@ -24,6 +24,7 @@ pub mod wired;
 
 pub mod modbus_net;
 pub mod modbus_server;
+pub mod power;
 pub mod rtu_frame;
 
 use crate::core::{Clock, Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
@@ -142,6 +143,15 @@ impl K2Sim {
     /// a program runs, every scan due before `now` at its own start time ([`program`]).
     #[inline]
     pub fn advance_to(&mut self, now: Duration) {
+        if self.faults.has_power_loss() {
+            return self.advance_through_power_loss(now);
+        }
+        self.advance_powered(now);
+    }
+
+    /// [`Self::advance_to`] while the PLC has power.
+    #[inline]
+    pub(crate) fn advance_powered(&mut self, now: Duration) {
         if self.wiring.is_some() {
             return self.advance_wired(now);
         }
@@ -659,6 +669,10 @@ impl K2Sim {
                     crate::k2::modbus_map::exception_name(code)
                 ),
             ),
+            fault::FaultKind::PowerLoss => {
+                Error::link(format!("no reply from the PLC: it has no power (injected fault {id})"))
+                    .hint("sim faults shows when power returns; sim fault clear restores it now")
+            }
             _ => Error::link(format!("no reply from the PLC (injected fault {id}: {})", kind.name()))
                 .hint("sim faults lists the injected faults; sim fault clear removes them"),
         })

@@ -117,7 +117,7 @@ impl K2Service {
                 sim.events.extend(vec![(now, EventKind::Fault { id, fault: kind.code() })]);
                 fault = Some(kind);
                 match kind {
-                    FaultKind::NoReply | FaultKind::Drop => return (None, fault),
+                    FaultKind::NoReply | FaultKind::Drop | FaultKind::PowerLoss => return (None, fault),
                     FaultKind::Exception { code } => {
                         return ((unit != 0).then_some(Err(ExceptionCode::new(code))), fault)
                     }

@@ -153,6 +153,23 @@ impl Plc {
     pub fn has_program(&self) -> bool {
         self.user.is_some() || self.helper.is_some()
     }
+
+    /// Power-up at `now` after a power cut: the programs stay in the CPU and start afresh
+    /// (first-scan bit, timers and edges reset, no pending interrupt), in RUN if the switch
+    /// says RUN, else in STOP; statistics, breakpoints and the stop values stay.
+    pub fn restart(&mut self, now: Duration) {
+        for l in [&mut self.user, &mut self.helper].into_iter().flatten() {
+            l.reset();
+        }
+        self.mode = if self.switch_run { Mode::Run } else { Mode::Stop };
+        self.run_scans = 0;
+        self.next_scan = now;
+        self.paused_at = None;
+        self.timed_next = [None; 2];
+        self.irq_ns = 0;
+        self.halted = None;
+        self.faults.clear();
+    }
 }
 
 const COST_KEYS: &str = "keys: bit compare move arith real timer jump call special element overhead min_scan watchdog";
