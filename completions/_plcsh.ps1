@@ -136,6 +136,7 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('serve', 'serve', [CompletionResultType]::ParameterValue, 'Serve the simulator over Modbus TCP, Modbus RTU on a pseudo-terminal, and/or RTU over TCP')
+            [CompletionResult]::new('control', 'control', [CompletionResultType]::ParameterValue, 'Send one line to a served simulator''s control channel (faults, events) and print the reply')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
         }
@@ -165,6 +166,8 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             [CompletionResult]::new('--umpk-flash-fail', '--umpk-flash-fail', [CompletionResultType]::ParameterName, 'Make the simulated UMPK''s flash write fail on this 64-byte page (programming gets `W`)')
             [CompletionResult]::new('--umpk-state', '--umpk-state', [CompletionResultType]::ParameterName, 'Where the simulated UMPK keeps its flash, program info and error history (default: one file per model and link in the user''s data directory; `none` keeps nothing)')
             [CompletionResult]::new('--umpk-program', '--umpk-program', [CompletionResultType]::ParameterName, 'An IL lab program the simulated UMPK runs each 10 ms cycle (docs/il.md, "The UMPK family")')
+            [CompletionResult]::new('--umpk-control', '--umpk-control', [CompletionResultType]::ParameterName, 'The served UMPK''s control channel at PATH (default: LINK.ctl beside --umpk-pty''s link): inputs, square waves and faults while the lab''s software uses the line')
+            [CompletionResult]::new('--k2-control', '--k2-control', [CompletionResultType]::ParameterName, 'The served K2''s control channel at PATH (default: LINK.ctl beside --rtu-pty''s link): faults added, listed and cleared and the fault event log read while clients poll (`plcsh sim control PATH …`, or `control=PATH` in the client''s URL)')
             [CompletionResult]::new('--fault', '--fault', [CompletionResultType]::ParameterName, 'Inject a fault into the served K2, e.g. `--fault "no-reply on VW100 after=2s times=1"` (repeatable; see `help sim`)')
             [CompletionResult]::new('--max-connections', '--max-connections', [CompletionResultType]::ParameterName, 'Network connections served at once (per transport); more are closed on accept')
             [CompletionResult]::new('--idle-timeout', '--idle-timeout', [CompletionResultType]::ParameterName, 'Close a network connection that sends nothing for this long (`300s`, `2m`, `500ms`)')
@@ -188,12 +191,33 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             break
         }
+        'plcsh;sim;control' {
+            [CompletionResult]::new('--model', '--model', [CompletionResultType]::ParameterName, 'Model of the default simulated PLC')
+            [CompletionResult]::new('-d', '-d', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
+            [CompletionResult]::new('--device', '--device', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
+            [CompletionResult]::new('--time', '--time', [CompletionResultType]::ParameterName, 'Simulator time: follow the wall clock, or move only when stepped')
+            [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)')
+            [CompletionResult]::new('--state', '--state', [CompletionResultType]::ParameterName, 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user''s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE')
+            [CompletionResult]::new('--record', '--record', [CompletionResultType]::ParameterName, 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)')
+            [CompletionResult]::new('--bench', '--bench', [CompletionResultType]::ParameterName, 'Open a simulated machine described by a bench file (devices, wiring, initial values)')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'Print one JSON object per command result')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
+            [CompletionResult]::new('--read-only', '--read-only', [CompletionResultType]::ParameterName, 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            break
+        }
         'plcsh;sim;help' {
             [CompletionResult]::new('serve', 'serve', [CompletionResultType]::ParameterValue, 'Serve the simulator over Modbus TCP, Modbus RTU on a pseudo-terminal, and/or RTU over TCP')
+            [CompletionResult]::new('control', 'control', [CompletionResultType]::ParameterValue, 'Send one line to a served simulator''s control channel (faults, events) and print the reply')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
         }
         'plcsh;sim;help;serve' {
+            break
+        }
+        'plcsh;sim;help;control' {
             break
         }
         'plcsh;sim;help;help' {
@@ -359,9 +383,13 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
         }
         'plcsh;help;sim' {
             [CompletionResult]::new('serve', 'serve', [CompletionResultType]::ParameterValue, 'Serve the simulator over Modbus TCP, Modbus RTU on a pseudo-terminal, and/or RTU over TCP')
+            [CompletionResult]::new('control', 'control', [CompletionResultType]::ParameterValue, 'Send one line to a served simulator''s control channel (faults, events) and print the reply')
             break
         }
         'plcsh;help;sim;serve' {
+            break
+        }
+        'plcsh;help;sim;control' {
             break
         }
         'plcsh;help;agent' {

@@ -94,6 +94,9 @@ _plcsh() {
             plcsh__subcmd__help__subcmd__record,show)
                 cmd="plcsh__subcmd__help__subcmd__record__subcmd__show"
                 ;;
+            plcsh__subcmd__help__subcmd__sim,control)
+                cmd="plcsh__subcmd__help__subcmd__sim__subcmd__control"
+                ;;
             plcsh__subcmd__help__subcmd__sim,serve)
                 cmd="plcsh__subcmd__help__subcmd__sim__subcmd__serve"
                 ;;
@@ -109,11 +112,17 @@ _plcsh() {
             plcsh__subcmd__record__subcmd__help,show)
                 cmd="plcsh__subcmd__record__subcmd__help__subcmd__show"
                 ;;
+            plcsh__subcmd__sim,control)
+                cmd="plcsh__subcmd__sim__subcmd__control"
+                ;;
             plcsh__subcmd__sim,help)
                 cmd="plcsh__subcmd__sim__subcmd__help"
                 ;;
             plcsh__subcmd__sim,serve)
                 cmd="plcsh__subcmd__sim__subcmd__serve"
+                ;;
+            plcsh__subcmd__sim__subcmd__help,control)
+                cmd="plcsh__subcmd__sim__subcmd__help__subcmd__control"
                 ;;
             plcsh__subcmd__sim__subcmd__help,help)
                 cmd="plcsh__subcmd__sim__subcmd__help__subcmd__help"
@@ -584,8 +593,22 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__help__subcmd__sim)
-            opts="serve"
+            opts="serve control"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        plcsh__subcmd__help__subcmd__sim__subcmd__control)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
             fi
@@ -942,7 +965,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__sim)
-            opts="-v -d -h --json --verbose --model --device --time --config --state --record --bench --read-only --help serve help"
+            opts="-v -d -h --json --verbose --model --device --time --config --state --record --bench --read-only --help serve control help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -987,9 +1010,69 @@ _plcsh() {
             COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
             return 0
             ;;
-        plcsh__subcmd__sim__subcmd__help)
-            opts="serve help"
+        plcsh__subcmd__sim__subcmd__control)
+            opts="-v -d -h --json --verbose --model --device --time --config --state --record --bench --read-only --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --model)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --device)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --time)
+                    COMPREPLY=($(compgen -W "wall stepped" -- "${cur}"))
+                    return 0
+                    ;;
+                --config)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --state)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --record)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --bench)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        plcsh__subcmd__sim__subcmd__help)
+            opts="serve control help"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        plcsh__subcmd__sim__subcmd__help__subcmd__control)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
             fi
@@ -1030,7 +1113,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__sim__subcmd__serve)
-            opts="-v -d -h --tcp --rtu-pty --rtu-tcp --unit --agent --program --servo-pty --servo-tcp --servo-control --servo-id --servo-loop --servo-baud --servo-latency --servo-instant --servo-strict --fx-pty --fx-tcp --fx-link-pty --fx-link-tcp --fx-model --fx-station --umpk-pty --umpk-tcp --umpk-model --umpk-status-bits --umpk-flash-fail --umpk-state --umpk-program --fault --max-connections --idle-timeout --strict-unit --json --verbose --model --device --time --config --state --record --bench --read-only --help"
+            opts="-v -d -h --tcp --rtu-pty --rtu-tcp --unit --agent --program --servo-pty --servo-tcp --servo-control --servo-id --servo-loop --servo-baud --servo-latency --servo-instant --servo-strict --fx-pty --fx-tcp --fx-link-pty --fx-link-tcp --fx-model --fx-station --umpk-pty --umpk-tcp --umpk-model --umpk-status-bits --umpk-flash-fail --umpk-state --umpk-program --umpk-control --k2-control --fault --max-connections --idle-timeout --strict-unit --json --verbose --model --device --time --config --state --record --bench --read-only --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1133,6 +1216,14 @@ _plcsh() {
                     return 0
                     ;;
                 --umpk-program)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --umpk-control)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --k2-control)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;

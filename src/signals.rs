@@ -1,56 +1,107 @@
 //! Stopping signals: SIGINT (Ctrl-C), SIGTERM (`timeout`, CI, systemd) and SIGHUP (a
-//! dropped SSH session) all raise the session's interrupt flag, so a running command or Lua
+//! dropped SSH session) raise the session's interrupt flag, so a running command or Lua
 //! script stops where it checks the flag and its `plcsh.on_abort` handlers run (PSTOP,
-//! servo disable …). The process then exits with 128 + the signal (130, 143, 129), as
-//! shells report a process a signal ended.
+//! servo disable …). The rest of the command line and any queued input are dropped; the
+//! process then exits with 128 + the signal — 130 for Ctrl-C, 143 for SIGTERM, 129 for
+//! SIGHUP — whichever command was running. In the interactive REPL a Ctrl-C instead returns
+//! to the prompt (the rest of the line and what was typed or pasted ahead are dropped).
 //!
 //! On Windows, Ctrl-C, Ctrl-Break and closing the console window play the parts of SIGINT,
 //! SIGTERM and SIGHUP (`core::platform::windows`), with the same exit statuses.
 //!
-//! A second signal of the same kind while the first is being handled ends the process at
-//! once (the user means it). At an idle prompt nothing is running that could notice the
-//! flag, so a watcher thread ends the process there itself; the simulator's retained
-//! state does not depend on a clean exit (it is made durable as it is written).
+//! **A second signal does not cut the handlers short.** The first signal is the stop; more
+//! signals while it is handled are ignored (GNU `timeout` sends SIGTERM to the child and
+//! then to its whole process group, so two arrive together). The handlers are bounded by
+//! [`ABORT_GRACE`]: if the process has not finished its stop by then, a watcher ends it with
+//! the first signal's status. SIGKILL ends it at once, as always. At an idle prompt (or
+//! while a piped session waits for input) nothing is running that could notice the flag,
+//! so the watcher ends the process there at once; the simulator's retained state does not
+//! depend on a clean exit (it is made durable as it is written).
 
 use std::sync::atomic::{AtomicBool, AtomicI32, Ordering};
 use std::sync::Arc;
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
-/// The last stopping signal received (0: none).
+/// How long the abort handlers of a stopped command or script may run before the process is
+/// ended anyway (documented in the README, "A stop stops").
+pub const ABORT_GRACE: Duration = Duration::from_secs(5);
+
+/// The pending stopping signal (0: none): the first one received since the last was handled.
 static RECEIVED: AtomicI32 = AtomicI32::new(0);
 /// True while the shell waits for a line at the prompt (nothing to interrupt).
 static IDLE: AtomicBool = AtomicBool::new(false);
 
 /// Installs the handlers for the session's interrupt flag (the platform's stop signals:
-/// [`crate::core::platform::install_stop_handlers`]).
+/// [`crate::core::platform::install_stop_handlers`]) and the watcher that keeps the grace
+/// period.
 pub fn install(interrupt: &Arc<AtomicBool>) {
     crate::core::platform::install_stop_handlers(interrupt, &RECEIVED);
+    start_watcher();
 }
 
-/// Starts the watcher that ends the process on a signal received at an idle prompt. Only a
-/// prompt is ever idle, so a one-shot command (`-c`) never starts it.
+/// Ends the process on a signal received at an idle prompt, and on one whose stop has taken
+/// longer than [`ABORT_GRACE`].
 fn start_watcher() {
     static STARTED: std::sync::Once = std::sync::Once::new();
     STARTED.call_once(|| {
         std::thread::Builder::new()
             .name("signals".into())
-            .spawn(|| loop {
-                std::thread::sleep(Duration::from_millis(50));
-                let sig = RECEIVED.load(Ordering::SeqCst);
-                if sig != 0 && IDLE.load(Ordering::SeqCst) {
-                    std::process::exit(128 + sig);
+            .spawn(|| {
+                let mut since: Option<(i32, Instant)> = None;
+                loop {
+                    std::thread::sleep(Duration::from_millis(20));
+                    let sig = RECEIVED.load(Ordering::SeqCst);
+                    if sig == 0 {
+                        since = None;
+                        continue;
+                    }
+                    if IDLE.load(Ordering::SeqCst) {
+                        std::process::exit(128 + sig);
+                    }
+                    let (s, t) = *since.get_or_insert((sig, Instant::now()));
+                    if s != sig {
+                        since = Some((sig, Instant::now()));
+                    } else if t.elapsed() > ABORT_GRACE {
+                        eprintln!(
+                            "plcsh: stopped: the stop did not finish within {} s (abort handlers still running?)",
+                            ABORT_GRACE.as_secs()
+                        );
+                        std::process::exit(128 + sig);
+                    }
                 }
             })
             .ok();
     });
 }
 
-/// The exit status a received SIGTERM or SIGHUP asks for (143, 129), if one arrived.
+/// The exit status the pending stop asks for (130, 143, 129), if a signal arrived.
 pub fn exit_status() -> Option<i32> {
     match RECEIVED.load(Ordering::SeqCst) {
         0 => None,
         sig => Some(128 + sig),
     }
+}
+
+/// What stopped the work, for messages: `Ctrl-C`, `SIGTERM`, `SIGHUP` (Ctrl-C when no
+/// signal is pending: the flag was raised in the process).
+pub fn cause() -> &'static str {
+    use crate::core::platform::code;
+    match RECEIVED.load(Ordering::SeqCst) {
+        code::TERM => "SIGTERM",
+        code::HUP => "SIGHUP",
+        _ => "Ctrl-C",
+    }
+}
+
+/// True when the pending stop is a Ctrl-C (the REPL returns to its prompt on one).
+pub fn is_ctrl_c() -> bool {
+    RECEIVED.load(Ordering::SeqCst) == crate::core::platform::code::INT
+}
+
+/// The stop was handled and the session goes on (a Ctrl-C in the REPL): the next signal
+/// counts again.
+pub fn handled() {
+    RECEIVED.store(0, Ordering::SeqCst);
 }
 
 /// Marks the prompt as waiting for input (true) or running a line (false).

@@ -3,6 +3,10 @@
 //! handlers — here they write to a K2 served over Modbus TCP, an effect seen from another
 //! process — and plcsh exits with 128 + the signal. `os.exit` runs the handlers too.
 
+// Unix only: POSIX signals and process groups (Windows' console events are tested in
+// core::platform::windows).
+#![cfg(unix)]
+
 mod common;
 use common::*;
 
@@ -92,4 +96,126 @@ fn sigterm_at_an_idle_prompt_ends_plcsh_with_143() {
     let status = child.wait().unwrap();
     drop(stdin);
     assert_eq!(status.code(), Some(143));
+}
+
+/// Starts plcsh on `device` with `args`, in a process group of its own (as `timeout` and
+/// systemd run it), and returns it with its stdout lines once the first line arrived.
+fn start_in_group(args: &[&str]) -> (std::process::Child, std::io::Lines<BufReader<std::process::ChildStdout>>) {
+    use std::os::unix::process::CommandExt;
+    let mut child = plcsh().args(args).stdout(Stdio::piped()).stderr(Stdio::null()).process_group(0).spawn().unwrap();
+    let mut lines = BufReader::new(child.stdout.take().unwrap()).lines();
+    let first = lines.next().expect("a first line").unwrap();
+    assert!(!first.is_empty());
+    (child, lines)
+}
+
+fn kill(sig: &str, target: &str) {
+    assert!(std::process::Command::new("kill").args([sig, "--", target]).status().unwrap().success());
+}
+
+/// A stop ends the whole command line: the command after the interrupted `watch` never
+/// runs (it would write VW10 on a PLC another process serves), and the status is the
+/// signal's: 143 for SIGTERM, 129 for SIGHUP, 130 for Ctrl-C (SIGINT).
+#[test]
+fn a_stop_ends_the_rest_of_the_command_line_with_the_signals_status() {
+    let served = serve(&["--tcp", "0", "--state", "none"]);
+    let device = format!("plc=tcp://{}?model=K205-16DT", served.ready["tcp"].as_str().unwrap());
+    for (sig, status) in [("-TERM", 143), ("-HUP", 129), ("-INT", 130)] {
+        let (mut child, _) = start_in_group(&[
+            "--json",
+            "--state",
+            "none",
+            "--device",
+            &device,
+            "-c",
+            "watch VW0 every=20ms; set VW10=7; set VW12=7",
+        ]);
+        kill(sig, &child.id().to_string());
+        assert_eq!(child.wait().unwrap().code(), Some(status), "{sig}");
+        assert_eq!(read_back(&device, "VW10"), 0, "{sig}: the rest of the line did not run");
+    }
+    // Input piped ahead is dropped too.
+    let mut child = plcsh()
+        .args(["--json", "--state", "none", "--device", &device])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    {
+        use std::io::Write;
+        let mut stdin = child.stdin.take().unwrap();
+        writeln!(stdin, "watch VW0 every=20ms\nset VW10=9\nset VW12=9").unwrap();
+        let mut lines = BufReader::new(child.stdout.take().unwrap()).lines();
+        assert!(lines.next().unwrap().unwrap().contains("watch"));
+        kill("-TERM", &child.id().to_string());
+        assert_eq!(child.wait().unwrap().code(), Some(143));
+    }
+    assert_eq!(read_back(&device, "VW10"), 0, "queued input did not run");
+}
+
+const SLOW_HANDLERS: &str = r#"
+local plc = plcsh.device("plc")
+local mark = tonumber(arg[1])
+plcsh.on_abort(function(why) plc.VW20 = mark end)
+plcsh.on_abort(function(why) plcsh.sleep(tonumber(arg[2])); plc.VW22 = mark end)
+print("ready")
+plcsh.wait_until(function() return false end, {timeout = 60000, every = 20})
+"#;
+
+/// GNU `timeout` sends SIGTERM to plcsh and then to its process group: the second signal
+/// must not cut the abort handlers short — every handler runs and the `--json` summary is
+/// printed, 20 times out of 20.
+#[test]
+fn sigterm_to_the_process_and_then_its_group_runs_every_handler_20_of_20() {
+    let served = serve(&["--tcp", "0", "--state", "none"]);
+    let device = format!("plc=tcp://{}?model=K205-16DT", served.ready["tcp"].as_str().unwrap());
+    let dir = std::env::temp_dir().join(format!("plcsh-signals-slow-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let script = dir.join("slow.lua");
+    std::fs::write(&script, SLOW_HANDLERS).unwrap();
+    for i in 1..=20 {
+        let mark = (1000 + i).to_string();
+        let (mut child, lines) = start_in_group(&[
+            "--json",
+            "--state",
+            "none",
+            "--device",
+            &device,
+            "run",
+            script.to_str().unwrap(),
+            &mark,
+            "100",
+        ]);
+        let pid = child.id().to_string();
+        kill("-TERM", &pid);
+        kill("-TERM", &format!("-{pid}"));
+        let rest: Vec<String> = lines.map_while(Result::ok).collect();
+        assert_eq!(child.wait().unwrap().code(), Some(143), "run {i}: {rest:?}");
+        let summary: serde_json::Value = serde_json::from_str(rest.last().expect("a summary")).unwrap();
+        assert_eq!((summary["cmd"].as_str(), summary["error"]["kind"].as_str()), (Some("run"), Some("interrupted")));
+        assert!(summary["error"]["message"].as_str().unwrap().contains("SIGTERM"), "{summary}");
+        assert_eq!(read_back(&device, "VW20"), 1000 + i as i64, "run {i}: the first handler ran");
+        assert_eq!(read_back(&device, "VW22"), 1000 + i as i64, "run {i}: the slow handler ran to its end");
+    }
+}
+
+/// The handlers have a grace period (5 s): a handler that never ends does not keep the
+/// process alive; it ends with the first signal's status.
+#[test]
+fn a_handler_that_never_ends_is_cut_after_the_grace_period() {
+    let dir = std::env::temp_dir().join(format!("plcsh-signals-grace-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let script = dir.join("stuck.lua");
+    std::fs::write(
+        &script,
+        "plcsh.on_abort(function() while true do end end)\nprint('ready')\nplcsh.wait_until(function() return false end, {timeout = 60000})\n",
+    )
+    .unwrap();
+    let (mut child, _) = start_in_group(&["--state", "none", "run", script.to_str().unwrap()]);
+    let t = std::time::Instant::now();
+    kill("-TERM", &child.id().to_string());
+    assert_eq!(child.wait().unwrap().code(), Some(143));
+    let took = t.elapsed();
+    assert!(took >= std::time::Duration::from_secs(5) && took < std::time::Duration::from_secs(20), "{took:?}");
 }

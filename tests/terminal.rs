@@ -1,4 +1,4 @@
-//! The REPL driven in a real terminal (issue 8 "what it must show"): tmux runs plcsh in a
+//! The REPL driven in a real terminal: tmux runs plcsh in a
 //! pseudo-terminal, `send-keys` types, `capture-pane` reads the screen. Shows tab completion of
 //! an SM register with its meaning, the inline hint, a `watch` that redraws in place and `plot`.
 //! Skipped (with a message) when tmux is not installed; `.ci/run` installs it.
@@ -214,4 +214,36 @@ fn help_and_models_fit_80_columns() {
     t.keys(&["Enter"]);
     drop(t);
     let _ = std::fs::remove_dir_all(&home);
+}
+
+/// Ctrl-C during a command in the REPL stops it and returns to the prompt; the rest of the
+/// line and the rest of a pasted block do not run (they would write VW10 and VW12).
+#[test]
+fn ctrl_c_in_the_repl_returns_to_the_prompt_without_running_the_rest() {
+    let home = std::env::temp_dir().join(format!("plcsh-tmux-ctrlc-{}", std::process::id()));
+    std::fs::create_dir_all(&home).unwrap();
+    let Some(t) = Tmux::start(&home) else { return };
+    t.wait_for("the prompt", |s| s.contains("plc(sim)>"));
+    t.literal("watch VW0 every=100ms; set VW10=5");
+    t.keys(&["Enter"]);
+    t.wait_for("a sample", |s| s.contains("sample 2 "));
+    t.keys(&["C-c"]);
+    t.wait_for("the prompt again", |s| s.trim_end().ends_with("plc(sim)>"));
+    // A pasted block: the watch, then a write that must not run after the Ctrl-C.
+    t.keys(&["C-l"]);
+    t.wait_for("a clear screen", |s| !s.contains("sample"));
+    assert!(t.tmux(&["set-buffer", "-b", "q", "watch VW0 every=100ms\nset VW12=5\n"]));
+    assert!(t.tmux(&["paste-buffer", "-d", "-b", "q", "-p", "-t", "t"]));
+    // With bracketed paste the block waits in the editor until Enter, as in bash.
+    t.wait_for("the pasted block", |s| s.contains("set VW12=5"));
+    t.keys(&["Enter"]);
+    t.wait_for("a sample of the pasted watch", |s| s.contains("sample 2 "));
+    t.keys(&["C-c"]);
+    t.wait_for("the prompt again", |s| s.trim_end().ends_with("plc(sim)>"));
+    t.keys(&["C-l"]);
+    t.literal("get VW10 VW12");
+    t.keys(&["Enter"]);
+    let s = t.wait_for("the values", |s| s.contains("VW12"));
+    assert!(s.lines().any(|l| l.trim_start().starts_with("VW10") && l.trim_end().ends_with(" 0")), "{s}");
+    assert!(s.lines().any(|l| l.trim_start().starts_with("VW12") && l.trim_end().ends_with(" 0")), "{s}");
 }

@@ -39,7 +39,7 @@ pub fn interrupt_flag(lua: &Lua) -> mlua::Result<Arc<AtomicBool>> {
 }
 
 pub fn interrupted_error() -> Error {
-    Error::new(ErrorKind::Interrupted, "interrupted (Ctrl-C)")
+    Error::new(ErrorKind::Interrupted, format!("interrupted ({})", crate::signals::cause()))
 }
 
 /// JSON → Lua (tables for objects and arrays; JSON null becomes nil).

@@ -156,7 +156,8 @@ impl Shell {
             first = false;
             let failed = r.is_err();
             on(self, r);
-            if failed || self.quit {
+            // A stop (Ctrl-C, SIGTERM, SIGHUP) ends the whole line, whichever command saw it.
+            if failed || self.quit || self.session.interrupted() {
                 break;
             }
         }
@@ -174,7 +175,6 @@ impl Shell {
                 .hint(commands::suggest(&name));
             return Err((name, e));
         };
-        self.session.clear_interrupt();
         (spec.run)(self, args).map_err(|e| (spec.name.to_string(), suggest_subcommand(spec, args, e)))
     }
 

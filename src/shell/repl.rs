@@ -52,6 +52,9 @@ pub fn interactive(shell: &mut Shell) -> i32 {
         }
         match read {
             Ok(text) => {
+                // New input after a Ctrl-C that was handled: the next stop counts again.
+                shell.session.clear_interrupt();
+                crate::signals::handled();
                 // A pasted block arrives as one input with bracketed paste (the terminal marks
                 // it), or as keystrokes read ahead without it (kept by rustyline's buffer):
                 // either way every line runs in order, as if typed one after another.
@@ -79,6 +82,19 @@ pub fn interactive(shell: &mut Shell) -> i32 {
                     let _ = ed.add_history_entry(line.as_str());
                     shell.run_line(&line, &mut out);
                     if shell.quit {
+                        break;
+                    }
+                    if shell.session.interrupted() {
+                        if !crate::signals::is_ctrl_c() && crate::signals::exit_status().is_some() {
+                            // SIGTERM or SIGHUP: the session ends (its status is the signal's).
+                            shell.quit = true;
+                            break;
+                        }
+                        // Ctrl-C: back to the prompt; the rest of a pasted block and what was
+                        // typed ahead are dropped, not run.
+                        crate::core::platform::discard_typed_ahead();
+                        shell.session.clear_interrupt();
+                        crate::signals::handled();
                         break;
                     }
                 }
@@ -156,7 +172,8 @@ pub fn batch(shell: &mut Shell, input: &mut dyn BufRead, out: &mut dyn Write) ->
             break;
         }
         if shell.session.interrupted() {
-            return 130;
+            // A stop ends the session: the rest of the input is not run.
+            return crate::signals::exit_status().unwrap_or(130);
         }
     }
     i32::from(!ok)

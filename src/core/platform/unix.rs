@@ -5,21 +5,24 @@ use std::sync::atomic::{AtomicBool, AtomicI32, Ordering};
 use std::sync::Arc;
 use std::time::Duration;
 
-/// SIGINT (Ctrl-C), SIGTERM (`timeout`, CI, systemd) and SIGHUP (a dropped SSH session)
-/// raise `interrupt`; SIGTERM and SIGHUP are also stored in `received` (a Ctrl-C is told
-/// apart by the shell itself). A second signal of the same kind while the flag is up ends
-/// the process at once with 128 + the signal.
+/// SIGINT (Ctrl-C), SIGTERM (`timeout`, CI, systemd) and SIGHUP (a dropped SSH session):
+/// the first one while none is pending is stored in `received` and raises `interrupt`;
+/// later ones are ignored until the stop was handled (`received` back at 0), so a second
+/// signal — GNU `timeout` sends SIGTERM to the child and then to its process group — cannot
+/// interrupt the abort handlers the first one started. The grace period that bounds them is
+/// kept by `crate::signals`.
 pub fn install_stop_handlers(interrupt: &Arc<AtomicBool>, received: &'static AtomicI32) {
     use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
     for sig in [SIGINT, SIGTERM, SIGHUP] {
-        // Order matters (signal-hook's documented pattern): the conditional shutdown sees
-        // the flag as the previous signal left it, then the flag is raised.
-        let _ = signal_hook::flag::register_conditional_shutdown(sig, 128 + sig, interrupt.clone());
-        let _ = signal_hook::flag::register(sig, interrupt.clone());
-        if sig != SIGINT {
-            // SAFETY: the action only stores to an atomic, which is async-signal-safe.
-            let _ = unsafe { signal_hook::low_level::register(sig, move || received.store(sig, Ordering::SeqCst)) };
-        }
+        let flag = interrupt.clone();
+        // SAFETY: the action only does atomic operations, which are async-signal-safe.
+        let _ = unsafe {
+            signal_hook::low_level::register(sig, move || {
+                if received.compare_exchange(0, sig, Ordering::SeqCst, Ordering::SeqCst).is_ok() {
+                    flag.store(true, Ordering::SeqCst);
+                }
+            })
+        };
     }
 }
 
@@ -35,6 +38,17 @@ pub fn stop_signal() -> std::io::Result<impl std::future::Future<Output = ()>> {
             _ = term.recv() => {},
         }
     })
+}
+
+/// Drops what was typed or pasted ahead on a terminal's standard input and not read yet
+/// (after a Ctrl-C, queued input must not run); nothing when input is not a terminal.
+pub fn discard_typed_ahead() {
+    // SAFETY: tcflush on file descriptor 0; it fails harmlessly when 0 is not a terminal.
+    unsafe {
+        if libc::isatty(libc::STDIN_FILENO) == 1 {
+            libc::tcflush(libc::STDIN_FILENO, libc::TCIFLUSH);
+        }
+    }
 }
 
 /// (columns, rows) of the terminal on standard output, or `None` when it is not a terminal.

@@ -15,8 +15,9 @@ use std::time::Duration;
 use windows_sys::core::BOOL;
 use windows_sys::Win32::Foundation::{FALSE, TRUE};
 use windows_sys::Win32::System::Console::{
-    GetConsoleScreenBufferInfo, GetStdHandle, SetConsoleCtrlHandler, CONSOLE_SCREEN_BUFFER_INFO, CTRL_BREAK_EVENT,
-    CTRL_CLOSE_EVENT, CTRL_C_EVENT, CTRL_LOGOFF_EVENT, CTRL_SHUTDOWN_EVENT, STD_OUTPUT_HANDLE,
+    FlushConsoleInputBuffer, GetConsoleScreenBufferInfo, GetStdHandle, SetConsoleCtrlHandler,
+    CONSOLE_SCREEN_BUFFER_INFO, CTRL_BREAK_EVENT, CTRL_CLOSE_EVENT, CTRL_C_EVENT, CTRL_LOGOFF_EVENT,
+    CTRL_SHUTDOWN_EVENT, STD_INPUT_HANDLE, STD_OUTPUT_HANDLE,
 };
 
 /// How long a closing console waits for the abort handlers (Windows allows about 5 s).
@@ -40,12 +41,10 @@ unsafe extern "system" fn on_console_event(event: u32) -> BOOL {
         CTRL_CLOSE_EVENT | CTRL_LOGOFF_EVENT | CTRL_SHUTDOWN_EVENT => code::HUP,
         _ => return FALSE,
     };
-    // A second event while the first is handled ends the process at once (as on Unix).
-    if h.interrupt.swap(true, Ordering::SeqCst) && sig != code::HUP {
-        std::process::exit(128 + sig);
-    }
-    if sig != code::INT {
-        h.received.store(sig, Ordering::SeqCst);
+    // The first event while none is pending raises the flag; later ones wait until the
+    // stop was handled (as on Unix: the abort handlers it started are not cut short).
+    if h.received.compare_exchange(0, sig, Ordering::SeqCst, Ordering::SeqCst).is_ok() {
+        h.interrupt.store(true, Ordering::SeqCst);
     }
     drop(guard);
     if sig == code::HUP {
@@ -56,7 +55,8 @@ unsafe extern "system" fn on_console_event(event: u32) -> BOOL {
     TRUE
 }
 
-/// Console events raise `interrupt`; Ctrl-Break and closing are stored in `received`.
+/// Console events: the first one while none is pending is stored in `received` (Ctrl-C as
+/// SIGINT, Ctrl-Break as SIGTERM, closing as SIGHUP) and raises `interrupt`.
 pub fn install_stop_handlers(interrupt: &Arc<AtomicBool>, received: &'static AtomicI32) {
     *HANDLERS.lock().unwrap_or_else(|p| p.into_inner()) = Some(Handlers { interrupt: interrupt.clone(), received });
     // SAFETY: registers a handler function with the signature Windows calls.
@@ -77,6 +77,16 @@ pub fn stop_signal() -> std::io::Result<impl std::future::Future<Output = ()>> {
             _ = close.recv() => {},
         }
     })
+}
+
+/// Drops what was typed or pasted ahead in the console and not read yet (after a Ctrl-C,
+/// queued input must not run); nothing when input is not a console.
+pub fn discard_typed_ahead() {
+    // SAFETY: the handle is the process's standard input; the call fails harmlessly when it
+    // is not a console.
+    unsafe {
+        FlushConsoleInputBuffer(GetStdHandle(STD_INPUT_HANDLE));
+    }
 }
 
 /// (columns, rows) of the console window on standard output, or `None` when it is not one.
@@ -191,8 +201,14 @@ mod tests {
         // SAFETY: calls the handler as Windows would, on this thread.
         assert_eq!(unsafe { on_console_event(CTRL_C_EVENT) }, TRUE);
         assert!(flag.load(Ordering::SeqCst));
-        assert_eq!(RECEIVED.load(Ordering::SeqCst), 0);
+        assert_eq!(RECEIVED.load(Ordering::SeqCst), code::INT);
+        // A second event while the first is pending changes nothing.
         flag.store(false, Ordering::SeqCst);
+        assert_eq!(unsafe { on_console_event(CTRL_BREAK_EVENT) }, TRUE);
+        assert!(!flag.load(Ordering::SeqCst));
+        assert_eq!(RECEIVED.load(Ordering::SeqCst), code::INT);
+        // Once handled, the next one counts.
+        RECEIVED.store(0, Ordering::SeqCst);
         assert_eq!(unsafe { on_console_event(CTRL_BREAK_EVENT) }, TRUE);
         assert!(flag.load(Ordering::SeqCst));
         assert_eq!(RECEIVED.load(Ordering::SeqCst), code::TERM);
