@@ -1021,7 +1021,10 @@ fn node_fxplc() -> Option<PathBuf> {
         return Some(dir);
     }
     assert!(std::env::var_os("CI").is_none(), "CI must install node-fxplc (npm) into {}", dir.display());
-    eprintln!("skipped: node-fxplc is not installed in {} (npm install --prefix target/node-fxplc node-fxplc)", dir.display());
+    eprintln!(
+        "skipped: node-fxplc is not installed in {} (npm install --prefix target/node-fxplc node-fxplc)",
+        dir.display()
+    );
     None
 }
 
@@ -1090,11 +1093,8 @@ fn fx_responder(extended: bool, enq: EnqMode) -> Responder {
             return if q.sum_ok { vec![] } else { vec![Act::Send(vec![NAK])] };
         }
         // The word table and the bit table of the model's command set.
-        let (read, write, force_on, force_off, d_base, m_base) = if extended {
-            ("E00", "E10", "E7", "E8", 0x4000, 0x8800)
-        } else {
-            ("0", "1", "7", "8", 0x1000, 0x0100)
-        };
+        let (read, write, force_on, force_off, d_base, m_base) =
+            if extended { ("E00", "E10", "E7", "E8", 0x4000, 0x8800) } else { ("0", "1", "7", "8", 0x1000, 0x0100) };
         let cmd = q.cmd.as_str();
         if cmd == read && (d_base..d_base + 16000).contains(&q.dev) {
             let bytes = (q.dev..q.dev + q.count as u32).map(|a| {
@@ -1189,4 +1189,56 @@ fn enq_is_probed_and_followed_where_the_plc_requires_it() {
     }
     let cmds: Vec<String> = r.seen().iter().map(|q| q.cmd.clone()).collect();
     assert_eq!(cmds, ["ENQ", "0", "0", "0"]);
+}
+
+/// Words of a README command line, as a POSIX shell splits these: spaces, and double quotes.
+fn shell_words(line: &str) -> Vec<String> {
+    let (mut words, mut cur, mut quoted) = (Vec::new(), String::new(), false);
+    for c in line.chars() {
+        match c {
+            '"' => quoted = !quoted,
+            ' ' if !quoted => {
+                if !cur.is_empty() {
+                    words.push(std::mem::take(&mut cur));
+                }
+            }
+            _ => cur.push(c),
+        }
+    }
+    if !cur.is_empty() {
+        words.push(cur);
+    }
+    words
+}
+
+/// The README's FX examples, run as written (the served one against this test's own ptys in
+/// place of /tmp/fx and /tmp/fxlink): every command succeeds.
+#[test]
+fn the_readme_fx_examples_run() {
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+    let section = readme.split("\n## FX-protocol PLCs").nth(1).unwrap().split("\n## ").next().unwrap();
+    let lines: Vec<String> = section
+        .split("```sh")
+        .skip(1)
+        .flat_map(|b| b.split("```").next().unwrap().lines().map(str::to_string).collect::<Vec<_>>())
+        .filter(|l| l.starts_with("plcsh -d"))
+        .collect();
+    assert!(lines.len() >= 4, "{lines:?}");
+    let srv = Server::start("readme", &[]);
+    let mut outputs = String::new();
+    for line in &lines {
+        let line =
+            line.replace("/tmp/fxlink", srv.link.to_str().unwrap()).replace("/tmp/fx", srv.port.to_str().unwrap());
+        let words = shell_words(&line);
+        let mut args: Vec<&str> = vec!["--json"];
+        args.extend(words[1..].iter().map(String::as_str));
+        let out = run(&args, "");
+        assert!(out.status.success(), "{line}: {}", String::from_utf8_lossy(&out.stderr));
+        for l in json_lines(&out) {
+            assert_eq!(l["ok"], true, "{line}: {l}");
+        }
+        outputs.push_str(&String::from_utf8_lossy(&out.stdout));
+    }
+    // The FX3U example reaches its own ranges, and `help` shows the E-command address.
+    assert!(outputs.contains("47D0H") && outputs.contains("E00/E10/E7/E8"), "{outputs}");
 }

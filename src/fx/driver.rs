@@ -230,8 +230,14 @@ fn classify_link(f: &[u8], h: Header, s: Settings, expect: Expect) -> Got {
 /// Protocol state.
 enum Mode {
     /// `synced`: the conversation is open (ENQ answered, or not wanted).
-    Port { synced: bool, handshake: Handshake },
-    Link { header: Header, settings: Settings },
+    Port {
+        synced: bool,
+        handshake: Handshake,
+    },
+    Link {
+        header: Header,
+        settings: Settings,
+    },
 }
 
 /// Whether the programming port wants ENQ before a frame. The seed's host program opens with
@@ -271,7 +277,12 @@ pub struct Driver {
 impl Driver {
     /// A programming-port driver on `line`.
     pub fn port(line: SharedLine, model: &'static Model, info: DeviceInfo) -> Driver {
-        Driver::new(line, FxSpace::new(model, Proto::Port), Mode::Port { synced: false, handshake: Handshake::Probe }, info)
+        Driver::new(
+            line,
+            FxSpace::new(model, Proto::Port),
+            Mode::Port { synced: false, handshake: Handshake::Probe },
+            info,
+        )
     }
 
     /// A computer-link driver on `line`.

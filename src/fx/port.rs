@@ -125,27 +125,44 @@ const fn pm(byte: u16, force: Option<u16>, count: u16, special: Option<(u16, Opt
 /// fx-fiddle `ref/doc/FX2N-HT32-COMMENTS/protocol/bit-addressing.md` shows them. Ordinary
 /// ranges: the FX3U's (X0–X377, Y0–Y377, M0–M7679, S0–S4095, T0–T511, C0–C255, D0–D7999).
 pub static EXTENDED: [PortMap; 11] = [
-    pm(0x8CA0, Some(0x6500), 256, None),                        // X
-    pm(0x8BC0, Some(0x5E00), 256, None),                        // Y
+    pm(0x8CA0, Some(0x6500), 256, None),                          // X
+    pm(0x8BC0, Some(0x5E00), 256, None),                          // Y
     pm(0x8800, Some(0x4000), 7680, Some((0x8C00, Some(0x6000)))), // M
-    pm(0x8CE0, Some(0x6700), 4096, None),                       // S
-    pm(0x9360, Some(0x9B00), 512, None),                        // TS
-    pm(0x9300, None, 512, None),                                // TC
-    pm(0x9340, Some(0x9A00), 256, None),                        // CS
-    pm(0x92E0, None, 256, None),                                // CC
-    pm(0x1000, None, 512, None),                                // TN
-    pm(0x0A00, None, 256, None),                                // CN
-    pm(0x4000, None, 8000, Some((0x8000, None))),               // D
+    pm(0x8CE0, Some(0x6700), 4096, None),                         // S
+    pm(0x9360, Some(0x9B00), 512, None),                          // TS
+    pm(0x9300, None, 512, None),                                  // TC
+    pm(0x9340, Some(0x9A00), 256, None),                          // CS
+    pm(0x92E0, None, 256, None),                                  // CC
+    pm(0x1000, None, 512, None),                                  // TN
+    pm(0x0A00, None, 256, None),                                  // CN
+    pm(0x4000, None, 8000, Some((0x8000, None))),                 // D
 ];
 
 /// A request frame.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Request {
-    Read { table: Table, addr: u16, count: u8 },
-    Write { table: Table, addr: u16, data: Vec<u8> },
-    Force { table: Table, on: bool, addr: u16 },
+    Read {
+        table: Table,
+        addr: u16,
+        count: u8,
+    },
+    Write {
+        table: Table,
+        addr: u16,
+        data: Vec<u8>,
+    },
+    Force {
+        table: Table,
+        on: bool,
+        addr: u16,
+    },
     /// `E01` (read `count` bytes) or `E11` (write `data`) of program memory.
-    Program { write: bool, addr: u16, count: u8, data: Vec<u8> },
+    Program {
+        write: bool,
+        addr: u16,
+        count: u8,
+        data: Vec<u8>,
+    },
 }
 
 fn push_addr(f: &mut Vec<u8>, addr: u16) {
@@ -472,7 +489,10 @@ mod tests {
     #[test]
     fn golden_force_off_y10() {
         assert_eq!(force_address(Table::Classic, Area::Y, 8), Some(0x0508));
-        assert_eq!(Request::Force { table: Table::Classic, on: false, addr: 0x0508 }.encode(), hex("02 38 30 38 30 35 03 30 38"));
+        assert_eq!(
+            Request::Force { table: Table::Classic, on: false, addr: 0x0508 }.encode(),
+            hex("02 38 30 38 30 35 03 30 38")
+        );
     }
 
     // Seed 004, "对定时器T0线圈置位": the timer force address 0x0600 (T0), "0006"; sum
@@ -480,7 +500,10 @@ mod tests {
     #[test]
     fn golden_force_on_t0() {
         assert_eq!(force_address(Table::Classic, Area::TS, 0), Some(0x0600));
-        assert_eq!(Request::Force { table: Table::Classic, on: true, addr: 0x0600 }.encode(), hex("02 37 30 30 30 36 03 30 30"));
+        assert_eq!(
+            Request::Force { table: Table::Classic, on: true, addr: 0x0600 }.encode(),
+            hex("02 37 30 30 30 36 03 30 30")
+        );
     }
 
     // Seed 004, FX2 article fig. 6: Y20–Y37 "查装置地址表为00A2，读取2字节数据".
@@ -490,7 +513,10 @@ mod tests {
         assert_eq!(addr("Y20"), 0x00A2);
         let k = place(Table::Classic, &parse_one("K4Y20").unwrap()).unwrap();
         assert_eq!((k.addr, k.len, k.bit), (0x00A2, 2, 0));
-        assert_eq!(Request::Read { table: Table::Classic, addr: 0x00A2, count: 2 }.encode(), hex("02 30 30 30 41 32 30 32 03 36 38"));
+        assert_eq!(
+            Request::Read { table: Table::Classic, addr: 0x00A2, count: 2 }.encode(),
+            hex("02 30 30 30 41 32 30 32 03 36 38")
+        );
     }
 
     // Seed 004's worked list: "将常数10写入数据单元D20" (0x1028) and "将常数0写入数据单元D8014",
@@ -621,7 +647,10 @@ mod tests {
         // E10: write 1234H to D7999 (7E7EH), low byte first: "E10" "7E7E" "02" "3412".
         let f = Request::Write { table: Table::Extended, addr: 0x7E7E, data: vec![0x34, 0x12] }.encode();
         assert_eq!(&f[..14], b"\x02E107E7E023412");
-        assert_eq!(decode_request(&f).unwrap(), Request::Write { table: Table::Extended, addr: 0x7E7E, data: vec![0x34, 0x12] });
+        assert_eq!(
+            decode_request(&f).unwrap(),
+            Request::Write { table: Table::Extended, addr: 0x7E7E, data: vec![0x34, 0x12] }
+        );
         // fx-fiddle `set_bit`: "E7" and the address low byte first: M0 = 4000H → "E70040".
         // Sum 0x45+0x37+0x30+0x30+0x34+0x30+0x03 = 0x143 → "43".
         let f = Request::Force { table: Table::Extended, on: true, addr: 0x4000 }.encode();

@@ -545,12 +545,27 @@ mod tests {
         // D300 is past an FX1S (D0–D255): 0x1000 + 600 = 0x1258.
         let d300 = Request::Read { table: Table::Classic, addr: 0x1258, count: 2 }.encode();
         assert_eq!(talk(&mut s, &p, &d300), vec![NAK]);
-        assert_eq!(talk(&mut s, &p, &Request::Read { table: Table::Classic, addr: 0x0700, count: 1 }.encode()), vec![NAK], "no device");
-        assert_eq!(talk(&mut s, &p, &Request::Read { table: Table::Classic, addr: 0x1000, count: 65 }.encode()), vec![NAK], "> 64 bytes");
-        assert_eq!(talk(&mut s, &p, &Request::Force { table: Table::Classic, on: true, addr: 0x0700 }.encode()), vec![NAK]);
+        assert_eq!(
+            talk(&mut s, &p, &Request::Read { table: Table::Classic, addr: 0x0700, count: 1 }.encode()),
+            vec![NAK],
+            "no device"
+        );
+        assert_eq!(
+            talk(&mut s, &p, &Request::Read { table: Table::Classic, addr: 0x1000, count: 65 }.encode()),
+            vec![NAK],
+            "> 64 bytes"
+        );
+        assert_eq!(
+            talk(&mut s, &p, &Request::Force { table: Table::Classic, on: true, addr: 0x0700 }.encode()),
+            vec![NAK]
+        );
         // A byte with bit 7 set (a parity error on a real line) drops the frame: NAK.
         assert_eq!(talk(&mut s, &p, &[STX, b'0', 0xB1]), vec![NAK]);
-        assert_eq!(talk(&mut s, &p, &Request::Read { table: Table::Classic, addr: 0x1000, count: 2 }.encode()).len(), 8, "then recovers");
+        assert_eq!(
+            talk(&mut s, &p, &Request::Read { table: Table::Classic, addr: 0x1000, count: 2 }.encode()).len(),
+            8,
+            "then recovers"
+        );
         assert_eq!(s.naks, 6);
     }
 

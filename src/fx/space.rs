@@ -327,7 +327,10 @@ mod tests {
         let h = s.help("M500").unwrap();
         assert!(h.contains("byte address 013EH") && h.contains("force address 09F4H"), "{h}");
         let h = space("FX3U", Proto::Port).help("M500").unwrap();
-        assert!(h.contains("E00/E10/E7/E8") && h.contains("byte address 883EH") && h.contains("force address 41F4H"), "{h}");
+        assert!(
+            h.contains("E00/E10/E7/E8") && h.contains("byte address 883EH") && h.contains("force address 41F4H"),
+            "{h}"
+        );
         assert!(space("FX2N", Proto::Link).help("D100").unwrap().contains("device D0100"));
         assert!(s.complete("k4").iter().any(|c| c.text == "K4M0"));
         assert!(s.complete("T").iter().any(|c| c.text == "TN"));
