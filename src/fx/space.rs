@@ -110,10 +110,10 @@ impl FxSpace {
                     }
                     let hint = match table {
                         Table::Classic => format!(
-                            "an FX3U reaches it through the E-commands (model=FX3U); an {} through its computer link (fxlink:, an FX-485 board and D8120)",
+                            "on an FX3U the E-commands reach it (open it with model=FX3U); on an {} only the computer link does (fxlink:, with an FX-485 board and D8120 set)",
                             self.model.name
                         ),
-                        Table::Extended => "the computer link (fxlink:) reaches the same devices".to_string(),
+                        Table::Extended => "check the operand against the model (`help OPERAND`)".to_string(),
                     };
                     return Err(range_err(
                         op,
