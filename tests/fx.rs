@@ -1159,6 +1159,13 @@ fn the_driver_reaches_d1000_d7999_m1535_per_model() {
             assert_eq!(r.seen().len(), before);
         }
     }
+    // A PLC without the E-commands opened as an FX3U: NAK, and the hint says what to open it as.
+    let r = fx_responder(false, EnqMode::Never);
+    let mut d = open(&r.url("fx", "?model=FX3U"));
+    let e = read_one(d.as_mut(), "D1000").unwrap_err();
+    assert_eq!(e.kind, ErrorKind::Refused, "{e}");
+    assert!(e.message.contains("an E00 read of 2 bytes at 47D0H"), "{e}");
+    assert!(e.hint.as_deref().unwrap().contains("model=FX2N"), "{e:?}");
 }
 
 // ENQ is optional: a PLC that never answers it is probed once and then talked to without it

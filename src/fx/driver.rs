@@ -624,7 +624,11 @@ impl Driver {
                 ErrorKind::Refused,
                 format!("the PLC answered NAK to {what} on {name} ({tries}): it refuses a frame with a wrong sum check or an address where it has no device"),
             )
-            .hint("check the operand against the model (`help OPERAND`) and the line's noise"),
+            .hint(if self.space.model.extended {
+                "check the operand against the model (`help OPERAND`) and the line's noise; a PLC without the E-commands (E00/E10/E7/E8) answers them NAK: open it as model=FX2N"
+            } else {
+                "check the operand against the model (`help OPERAND`) and the line's noise"
+            }),
             Some(Got::BadSum(m)) => Error::link(format!("bad reply to {what} on {name} ({tries}): {m}"))
                 .hint(match &self.mode {
                     Mode::Port { .. } => "noise on the line or a wrong baud rate/parity (the port runs 7E1)",
@@ -737,8 +741,8 @@ impl Driver {
             let count = (e - s) as u8;
             let req = Request::Read { table, addr: *s, count };
             let expect = Expect::Data { chars: req.reply_len(), data: count as usize };
-            let e = if table == Table::Extended { "E00 " } else { "" };
-            let bytes = self.transact(&req.encode(), expect, &format!("{e}a read of {count} bytes at {s:04X}H"))?;
+            let kind = if table == Table::Extended { "an E00 read" } else { "a read" };
+            let bytes = self.transact(&req.encode(), expect, &format!("{kind} of {count} bytes at {s:04X}H"))?;
             data.push(bytes);
         }
         Ok(ops
@@ -936,11 +940,18 @@ fn push_write(frames: &mut Vec<(Request, String)>, table: Table, addr: u16, data
     if let Some((Request::Write { addr: a, data: d, .. }, what)) = frames.last_mut() {
         if *a as usize + d.len() == addr as usize && d.len() + data.len() <= port::MAX_BYTES {
             d.extend(data);
-            *what = format!("a write of {} bytes at {a:04X}H", d.len());
+            *what = format!("{} of {} bytes at {a:04X}H", write_kind(table), d.len());
             return;
         }
     }
-    frames.push((Request::Write { table, addr, data }, format!("a write of {}", o.canonical())));
+    frames.push((Request::Write { table, addr, data }, format!("{} of {}", write_kind(table), o.canonical())));
+}
+
+fn write_kind(table: Table) -> &'static str {
+    match table {
+        Table::Classic => "a write",
+        Table::Extended => "an E10 write",
+    }
 }
 
 /// Appends `next` to the last command when it continues it on the next devices.
