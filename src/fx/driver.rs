@@ -7,8 +7,9 @@
 //!   handshake before the conversation (and again after a failure), one that leaves ENQ
 //!   unanswered gets its frames without it (what public drivers send); NAK to ENQ is a real
 //!   answer. Each operand goes through the model's address table ([`Table::of`]): the classic
-//!   commands 0/1/7/8 on an FX1S/FX1N/FX2N, the E-commands E00/E10/E7/E8 on an FX3U. Reads coalesce into the fewest frames of at most 64 bytes within one region
-//!   of the address table; words are written with command 1 (adjacent words in one frame),
+//!   commands 0/1/7/8 on an FX1S/FX1N/FX2N, the E-commands E00/E10/E7/E8 on an FX3U. Reads
+//!   coalesce into the fewest frames of at most 64 bytes within one region of the address
+//!   table; words are written with command 1 (adjacent words in one frame),
 //!   bits are forced ON/OFF (commands 7/8), a `Kn` group that covers whole bytes is written
 //!   as bytes and any other group bit by bit — never a read-modify-write of the PLC's bytes.
 //! - Computer link: bits read with BR (≤ 256 points a frame), words with WR (≤ 64); writes
