@@ -157,7 +157,7 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             [CompletionResult]::new('--fx-tcp', '--fx-tcp', [CompletionResultType]::ParameterName, 'Serve the simulated FX PLC''s programming port on a TCP port (fx+tcp://ADDR)')
             [CompletionResult]::new('--fx-link-pty', '--fx-link-pty', [CompletionResultType]::ParameterName, 'Serve the same FX PLC''s computer link (format 1, sum check on) on another pseudo-terminal')
             [CompletionResult]::new('--fx-link-tcp', '--fx-link-tcp', [CompletionResultType]::ParameterName, 'Serve the same FX PLC''s computer link on a TCP port (fxlink+tcp://ADDR)')
-            [CompletionResult]::new('--fx-model', '--fx-model', [CompletionResultType]::ParameterName, 'The simulated FX PLC''s model (FX1S, FX1N, FX2N)')
+            [CompletionResult]::new('--fx-model', '--fx-model', [CompletionResultType]::ParameterName, 'The simulated FX PLC''s model (FX1S, FX1N, FX2N, FX3U; FX2NC and FX3UC name the FX2N and FX3U)')
             [CompletionResult]::new('--fx-station', '--fx-station', [CompletionResultType]::ParameterName, 'The computer link''s station number (0–31)')
             [CompletionResult]::new('--umpk-pty', '--umpk-pty', [CompletionResultType]::ParameterName, 'Serve a simulated UMPK teaching PLC on a new pseudo-terminal; LINK becomes a symlink to it')
             [CompletionResult]::new('--umpk-tcp', '--umpk-tcp', [CompletionResultType]::ParameterName, 'Serve a simulated UMPK teaching PLC on a TCP port (umpk+tcp://ADDR)')

@@ -272,16 +272,20 @@ pub fn il(data: &[u8]) {
     let _ = crate::umpk::sim::program::IlRunner::load(&t, "fuzz.il", &crate::umpk::model::MODELS[0]);
 }
 
-/// FX programming port: the simulator's request side (bytes in 23-byte chunks, with a gap
-/// after every fourth) and the driver's reply decoder.
+/// FX programming port: the simulator's request side for the smallest model and the FX3U
+/// (classic and E-command tables; bytes in 23-byte chunks, with a gap after every fourth) and
+/// the driver's reply decoder.
 pub fn fx_port(data: &[u8]) {
     use crate::fx::sim::{PortServer, Server};
-    let plc = std::sync::Mutex::new(crate::fx::memory::Memory::new(&crate::fx::model::MODELS[0]));
-    let mut server = PortServer::default();
-    for (i, chunk) in data.chunks(23).enumerate() {
-        let _ = server.feed(chunk, &plc);
-        if i % 4 == 3 {
-            server.gap();
+    for model in ["FX1S", "FX3U"] {
+        let model = crate::fx::model::Model::find(model).expect("a known model");
+        let plc = std::sync::Mutex::new(crate::fx::memory::Memory::new(model));
+        let mut server = PortServer::default();
+        for (i, chunk) in data.chunks(23).enumerate() {
+            let _ = server.feed(chunk, &plc);
+            if i % 4 == 3 {
+                server.gap();
+            }
         }
     }
     let _ = crate::fx::port::decode_request(data);

@@ -6,7 +6,10 @@
 //! through a proxy pty that spoils replies; batch reads coalesced within the frame limits.
 //! Transaction integrity against an independent responder (test code with its own reading of
 //! the frames, on a pty of its own) that answers late, as another station, with NAK, behind
-//! 00H noise, or at 4800/9600/19200 baud pace (issue #28).
+//! 00H noise, or at 4800/9600/19200 baud pace (issue #28). The programming port's reach per
+//! model: a served FX2N and FX3U fed the public drivers' frames (D1000, D7999, M1535, the
+//! E-commands), the npm package node-fxplc run against them, and the driver against an
+//! independent responder per model, with and without ENQ.
 // Unix only: real pseudo-terminals (Windows has none; its COM ports are tested under Wine
 // in tests/windows_serial.rs).
 #![cfg(unix)]
@@ -109,7 +112,7 @@ fn every_command_over_both_ports() {
             "use fx; set D100=1234, M500=1, K4Y0=16#A5, D10/DINT=-100000; get D100 M500 K4Y0 Y2 D10/DINT; \
              read D100[2]; watch D100 every=10ms count=2; trace D100 every=20ms for=60ms; \
              use l; get D100 M500 K4Y0 D10/DINT; set D600=7, Y17=1; get D600; read D600[2]; \
-             use fx; get Y17; get D600",
+             use fx; get Y17; get D600; get M1536",
         ],
         "",
     );
@@ -132,11 +135,14 @@ fn every_command_over_both_ports() {
     assert_eq!(vals(&find("get", 1)), vec![1234, 1, 0xA5, -100000]);
     assert_eq!(vals(&find("get", 2)), vec![7], "the link reaches D600");
     assert_eq!(vals(&find("get", 3)), vec![1], "Y17 written over the link, read on the port");
-    // D600 is past the programming port's table: refused before sending, saying why.
+    assert_eq!(vals(&find("get", 4)), vec![7], "the programming port reaches D600 too (1000H + 2n)");
+    // M1536 is past an FX2N's programming-port table: refused before sending, saying why and
+    // what reaches it.
     let errs: Vec<_> = lines.iter().filter(|l| l["ok"] == false).collect();
     assert_eq!(errs.len(), 1, "{lines:?}");
     assert_eq!(errs[0]["error"]["kind"], "range");
-    assert!(errs[0]["error"]["message"].as_str().unwrap().contains("D0–D511"), "{:?}", errs[0]);
+    assert!(errs[0]["error"]["message"].as_str().unwrap().contains("M0–M1535"), "{:?}", errs[0]);
+    assert!(errs[0]["error"]["hint"].as_str().unwrap().contains("model=FX3U"), "{:?}", errs[0]);
     let out = run(&["--json", "-d", &port, "-c", "use fx; set TC0=1"], "");
     let e = json_lines(&out).into_iter().find(|l| l["ok"] == false).unwrap();
     assert_eq!(e["error"]["kind"], "unsupported", "a coil follows the program: {e}");
@@ -160,8 +166,9 @@ fn the_programming_port_answers_hand_made_frames() {
     assert_eq!(c.ask(&hex("02 30 30 31 33 45 30 31 03 36 44"), 6), hex("02 31 30 03 36 34"));
     // A bad sum check: NAK.
     assert_eq!(c.ask(&hex("02 30 31 30 46 36 30 34 03 37 35"), 1), vec![0x15]);
-    // An address with no device: 0x1400 (D512, past the table): '0' '1400' '02' ETX = 0x15A.
-    assert_eq!(c.ask(&hex("02 30 31 34 30 30 30 32 03 35 41"), 1), vec![0x15]);
+    // An address with no device: 0x4E80 (D8000 by 1000H + 2n, past D7999): '0' '4E80' '02' ETX
+    // = 0x176.
+    assert_eq!(c.ask(&hex("02 30 34 45 38 30 30 32 03 37 36"), 1), vec![0x15]);
     // A byte with bit 7 set (a parity error on a real 7E1 line): NAK, and the next frame works.
     assert_eq!(c.ask(&[0x02, 0x30, 0xB1], 1), vec![0x15]);
     assert_eq!(c.ask(&hex("02 30 31 30 46 36 30 34 03 37 34"), 12).len(), 12);
@@ -426,7 +433,8 @@ fn parse_link(buf: &[u8]) -> Option<(usize, Option<Req>)> {
 }
 
 /// A programming-port request at the start of `buf`: ENQ, or `STX cmd addr(4) [count(2) data]
-/// ETX sum(2)`.
+/// ETX sum(2)`; `cmd` is `0`, `1`, `7`, `8` or, for the extended commands, `E00`, `E10`, `E7`,
+/// `E8` (`dev`: the byte address; for a force, the force address, sent low byte first).
 fn parse_port(buf: &[u8]) -> Option<(usize, Option<Req>)> {
     let at = Instant::now();
     let req = |cmd: &str, dev, count, sum_ok| Req { at, station: 0, cmd: cmd.into(), dev, count, wait: 0, sum_ok };
@@ -438,9 +446,18 @@ fn parse_port(buf: &[u8]) -> Option<(usize, Option<Req>)> {
         return None;
     }
     let sum_ok = sum2(&buf[1..=etx]) == buf[etx + 1..etx + 3];
-    let cmd = (buf[1] as char).to_string();
-    let dev = buf.get(2..6).and_then(hexnum).unwrap_or(0);
-    let count = buf.get(6..8).and_then(hexnum).unwrap_or(0) as usize;
+    let code_len = match (buf.get(1), buf.get(2)) {
+        (Some(b'E'), Some(b'7' | b'8')) => 2,
+        (Some(b'E'), _) => 3,
+        _ => 1,
+    };
+    let cmd = String::from_utf8_lossy(&buf[1..(1 + code_len).min(etx)]).to_string();
+    let at_addr = 1 + code_len;
+    let mut dev = buf.get(at_addr..at_addr + 4).and_then(hexnum).unwrap_or(0);
+    if cmd.ends_with('7') || cmd.ends_with('8') {
+        dev = (dev >> 8) | (dev & 0xFF) << 8;
+    }
+    let count = buf.get(at_addr + 4..at_addr + 6).and_then(hexnum).unwrap_or(0) as usize;
     Some((etx + 3, Some(req(&cmd, dev, count, sum_ok))))
 }
 
@@ -910,4 +927,328 @@ fn resends_wait_for_a_quiet_line() {
         let quiet = seen[k].at.saturating_duration_since(ends[k - 1]);
         assert!(quiet >= Duration::from_millis(100), "resend {k} went out {quiet:?} after the line fell quiet");
     }
+}
+
+// ----- the programming port's reach per model, the E-commands, ENQ optional -----
+
+/// A programming-port frame built by hand: STX, the body's characters, ETX, then the sum check
+/// over the body and ETX (seed 004; the E-commands as the public write-up and drivers send
+/// them: `E00`/`E10` with address, count and data, `E7`/`E8` with the force address low byte
+/// first).
+fn port_frame(body: &str) -> Vec<u8> {
+    let b = [body.as_bytes(), &[ETX]].concat();
+    [vec![STX], b.clone(), sum2(&b)].concat()
+}
+
+/// The data bytes of a read reply `STX hex ETX sum`, its sum check verified.
+fn reply_bytes(r: &[u8]) -> Vec<u8> {
+    let n = r.len();
+    assert!(n >= 4 && r[0] == STX && r[n - 3] == ETX, "not a data frame: {r:02X?}");
+    assert_eq!(sum2(&r[1..n - 2]), r[n - 2..].to_vec(), "sum check of {r:02X?}");
+    r[1..n - 3].chunks(2).map(|c| hexnum(c).unwrap() as u8).collect()
+}
+
+// node-fxplc (`lib/FXPLCClient.js`, `lib/registers.js`) and KrystianD/fxplc (`FXPLCClient.py`)
+// send no ENQ and compute D n at 1000H + 2n, M n's byte at 0100H + n/8 and its force address
+// at 0800H + n (low byte first); HslCommunication's FX3U-era client (`MelsecFxSerial`,
+// `isNewVersion`) reads D n with E00 at 4000H + 2n and writes it with E10; fx-fiddle
+// (`cli/fx-fiddle/lib/protocol.py`) forces with E7/E8. Their frames, re-created here, go to a
+// served FX2N and a served FX3U: each answers what the model answers, NAK to the rest.
+#[test]
+fn served_fx2n_and_fx3u_answer_the_public_drivers_frames() {
+    // The frame builder against a literal: STX "E00" "47D0" "02" ETX "E9" (D1000 by E00).
+    assert_eq!(port_frame("E0047D002"), hex("02 45 30 30 34 37 44 30 30 32 03 45 39"));
+    for model in ["FX2N", "FX3U"] {
+        let srv = Server::start(&format!("public-{model}"), &["--fx-model", model]);
+        assert_eq!(srv.ready["fx_model"], model);
+        let mut c = Raw::open(&srv.port);
+        // No ENQ first: writeNumber('D1000', -1234) = "1" "17D0" "02" "2EFB" (FB2EH, low byte first).
+        assert_eq!(c.ask(&port_frame("117D0022EFB"), 1), vec![ACK], "{model}");
+        assert_eq!(reply_bytes(&c.ask(&port_frame("017D002"), 8)), vec![0x2E, 0xFB], "{model} D1000");
+        // D7999: 1000H + 2·7999 = 4E7EH; 7999 = 1F3FH.
+        assert_eq!(c.ask(&port_frame("14E7E023F1F"), 1), vec![ACK], "{model}");
+        assert_eq!(reply_bytes(&c.ask(&port_frame("04E7E02"), 8)), vec![0x3F, 0x1F], "{model} D7999");
+        // writeBit('M1535', true): "7" and 0800H + 1535 = 0DFFH as "FF0D"; readBit: byte 01BFH, bit 7.
+        assert_eq!(c.ask(&port_frame("7FF0D"), 1), vec![ACK], "{model}");
+        assert_eq!(reply_bytes(&c.ask(&port_frame("001BF01"), 6)), vec![0x80], "{model} M1535");
+        // And with ENQ first, as the seed's host program does: the same answers.
+        assert_eq!(c.ask(&[ENQ], 1), vec![ACK]);
+        assert_eq!(reply_bytes(&c.ask(&port_frame("017D002"), 8)), vec![0x2E, 0xFB]);
+        let e00_d1000 = c.ask(&port_frame("E0047D002"), 8);
+        if model == "FX2N" {
+            assert_eq!(e00_d1000, vec![NAK], "an FX2N answers no E-commands");
+            assert_eq!(c.ask(&port_frame("E70040"), 1), vec![NAK]);
+            continue;
+        }
+        // FX3U: E00 sees what the classic write wrote (one memory behind both tables).
+        assert_eq!(reply_bytes(&e00_d1000), vec![0x2E, 0xFB], "E00 D1000 at 47D0H");
+        // E10 D7999 (7E7EH) = 1234H, read back by both commands.
+        assert_eq!(c.ask(&port_frame("E107E7E023412"), 1), vec![ACK]);
+        assert_eq!(reply_bytes(&c.ask(&port_frame("E007E7E02"), 8)), vec![0x34, 0x12]);
+        assert_eq!(reply_bytes(&c.ask(&port_frame("04E7E02"), 8)), vec![0x34, 0x12]);
+        // M1535 in the E00 table: 8800H + 191 = 88BFH, bit 7 (forced on above); E8 at
+        // 4000H + 1535 = 45FFH ("FF45") turns it off for both tables.
+        assert_eq!(reply_bytes(&c.ask(&port_frame("E0088BF01"), 6)), vec![0x80]);
+        assert_eq!(c.ask(&port_frame("E8FF45"), 1), vec![ACK]);
+        assert_eq!(reply_bytes(&c.ask(&port_frame("001BF01"), 6)), vec![0x00]);
+        // Past the classic table, the FX3U's own ranges: M7679 (E7 5DFFH, byte 8BBFH bit 7),
+        // S4095 (E7 6700H + 4095 = 76FFH, byte 8EDFH bit 7), TN511 (1000H + 2·511 = 13FEH),
+        // D8000 (8000H: the watchdog, 200 ms = C8H).
+        assert_eq!(c.ask(&port_frame("E7FF5D"), 1), vec![ACK]);
+        assert_eq!(reply_bytes(&c.ask(&port_frame("E008BBF01"), 6)), vec![0x80]);
+        assert_eq!(c.ask(&port_frame("E7FF76"), 1), vec![ACK]);
+        assert_eq!(reply_bytes(&c.ask(&port_frame("E008EDF01"), 6)), vec![0x80]);
+        assert_eq!(c.ask(&port_frame("E1013FE020700"), 1), vec![ACK]);
+        assert_eq!(reply_bytes(&c.ask(&port_frame("E0013FE02"), 8)), vec![0x07, 0x00]);
+        assert_eq!(reply_bytes(&c.ask(&port_frame("E00800002"), 8)), vec![0xC8, 0x00]);
+        // Refused: past D7999 by 4000H + 2n (7E80H), program memory (E01, not simulated), a
+        // bad sum check; then the line still works.
+        assert_eq!(c.ask(&port_frame("E007E8002"), 1), vec![NAK]);
+        assert_eq!(c.ask(&port_frame("E01805C06"), 1), vec![NAK]);
+        let mut bad = port_frame("E0047D002");
+        let n = bad.len();
+        bad[n - 1] ^= 1;
+        assert_eq!(c.ask(&bad, 1), vec![NAK]);
+        assert_eq!(reply_bytes(&c.ask(&port_frame("E0047D002"), 8)), vec![0x2E, 0xFB]);
+    }
+}
+
+/// node-fxplc as installed from npm (.ci/run puts it in target/node-fxplc), or `None` with a
+/// note outside CI; in CI it must be there.
+fn node_fxplc() -> Option<PathBuf> {
+    let dir = std::env::var_os("PLCSH_NODE_FXPLC").map(PathBuf::from).unwrap_or_else(|| {
+        PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/target/node-fxplc/node_modules/node-fxplc"))
+    });
+    let node = std::process::Command::new("node").arg("--version").output().is_ok_and(|o| o.status.success());
+    if node && dir.join("dist/esm/index.js").exists() {
+        return Some(dir);
+    }
+    assert!(std::env::var_os("CI").is_none(), "CI must install node-fxplc (npm) into {}", dir.display());
+    eprintln!(
+        "skipped: node-fxplc is not installed in {} (npm install --prefix target/node-fxplc node-fxplc)",
+        dir.display()
+    );
+    None
+}
+
+// The real node-fxplc client (npm `node-fxplc`, n-car/node-fxplc) over its TCP transport:
+// D1000, D7999 and M1535 of a served FX2N and FX3U, and D8000 by its formula (1000H + 2n =
+// 4E80H, where there is no device) refused with NAK, which it reports as NotSupportedCommandError.
+#[test]
+fn node_fxplc_reads_and_writes_a_served_fx2n_and_fx3u() {
+    let Some(pkg) = node_fxplc() else { return };
+    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/support/node_fxplc.mjs");
+    for model in ["FX2N", "FX3U"] {
+        let served = serve(&["--fx-tcp", "127.0.0.1:0", "--fx-model", model]);
+        let addr = served.ready["fx_tcp"].as_str().unwrap().to_string();
+        let (host, port) = addr.rsplit_once(':').unwrap();
+        let ops = serde_json::json!([
+            {"op": "writeNumber", "reg": "D1000", "value": -1234},
+            {"op": "readNumber", "reg": "D1000"},
+            {"op": "writeNumber", "reg": "D7999", "value": 7999},
+            {"op": "readNumber", "reg": "D7999"},
+            {"op": "writeBit", "reg": "M1535", "value": true},
+            {"op": "readBit", "reg": "M1535"},
+            {"op": "readNumber", "reg": "D8000"},
+        ]);
+        let out = std::process::Command::new("node")
+            .args([script, pkg.to_str().unwrap(), host, port, &ops.to_string()])
+            .output()
+            .expect("run node");
+        let text = String::from_utf8_lossy(&out.stdout);
+        assert!(out.status.success(), "{model}: {text} {}", String::from_utf8_lossy(&out.stderr));
+        let got: serde_json::Value = serde_json::from_str(text.trim()).unwrap_or_else(|e| panic!("{text}: {e}"));
+        let values: Vec<&serde_json::Value> = got.as_array().unwrap().iter().map(|r| &r["value"]).collect();
+        assert_eq!(values[1], -1234, "{model}: {got}");
+        assert_eq!(values[3], 7999, "{model}: {got}");
+        assert_eq!(values[5], true, "{model}: {got}");
+        assert_eq!(got[6]["error"], "NotSupportedCommandError", "{model}: {got}");
+        // plcsh's own driver sees what node-fxplc wrote.
+        let mut d = open(&format!("fx+tcp://{addr}?model={model}"));
+        assert_eq!(read_one(d.as_mut(), "D1000").unwrap(), -1234);
+        assert_eq!(read_one(d.as_mut(), "D7999").unwrap(), 7999);
+        assert_eq!(read_one(d.as_mut(), "M1535").unwrap(), 1);
+    }
+}
+
+/// An independent FX PLC for the driver: `model`'s tables read by the test's own arithmetic
+/// (D n holds n; M n is on for odd n), answering ENQ as `enq` says.
+#[derive(Clone, Copy, PartialEq)]
+enum EnqMode {
+    /// Never answers ENQ; answers frames (clones, as the public drivers use them).
+    Never,
+    /// Answers ENQ with ACK and no frame until it has had one.
+    Required,
+}
+
+fn fx_responder(extended: bool, enq: EnqMode) -> Responder {
+    let mut opened = false;
+    responder(true, move |q, _| {
+        let data = |bytes: Vec<u8>| {
+            let body = [bytes.iter().map(|b| format!("{b:02X}")).collect::<String>().into_bytes(), vec![ETX]].concat();
+            vec![Act::Send([vec![STX], body.clone(), sum2(&body)].concat())]
+        };
+        if q.cmd == "ENQ" {
+            opened = true;
+            return if enq == EnqMode::Never { vec![] } else { vec![Act::Send(vec![ACK])] };
+        }
+        if enq == EnqMode::Required && !opened || !q.sum_ok {
+            return if q.sum_ok { vec![] } else { vec![Act::Send(vec![NAK])] };
+        }
+        // The word table and the bit table of the model's command set.
+        let (read, write, force_on, force_off, d_base, m_base) =
+            if extended { ("E00", "E10", "E7", "E8", 0x4000, 0x8800) } else { ("0", "1", "7", "8", 0x1000, 0x0100) };
+        let cmd = q.cmd.as_str();
+        if cmd == read && (d_base..d_base + 16000).contains(&q.dev) {
+            let bytes = (q.dev..q.dev + q.count as u32).map(|a| {
+                let n = (a - d_base) / 2;
+                if a % 2 == 0 {
+                    n as u8
+                } else {
+                    (n >> 8) as u8
+                }
+            });
+            return data(bytes.collect());
+        }
+        if cmd == read && (m_base..m_base + 960).contains(&q.dev) {
+            return data(vec![0xAA; q.count]);
+        }
+        if cmd == write || cmd == force_on || cmd == force_off {
+            return vec![Act::Send(vec![ACK])];
+        }
+        vec![Act::Send(vec![NAK])]
+    })
+}
+
+// The driver against the independent responder, per model: an FX2N's D1000, D7999 and M1535
+// through the classic commands (0 at 17D0H and 4E7EH, 0 at 01BFH, force 7 at 0DFFH), an
+// FX3U's through the E-commands (E00 at 47D0H and 7E7EH, E00 at 88BFH, E7 at 45FFH, E10 at
+// 7E7EH), and its M7679 and S4095, which no classic table reaches. The responder never answers
+// ENQ: the driver probes once, then talks without it.
+#[test]
+fn the_driver_reaches_d1000_d7999_m1535_per_model() {
+    let _alone = line_timing();
+    for (model, extended) in [("FX2N", false), ("FX1N", false), ("FX3U", true)] {
+        let r = fx_responder(extended, EnqMode::Never);
+        let mut d = open(&r.url("fx", &format!("?model={model}")));
+        assert_eq!(read_one(d.as_mut(), "D1000").unwrap(), 1000, "{model}");
+        assert_eq!(read_one(d.as_mut(), "D7999").unwrap(), 7999, "{model}");
+        assert_eq!(read_one(d.as_mut(), "M1535").unwrap(), 1, "{model}");
+        let o = ops(d.as_ref(), &["M1535", "D7999"]);
+        d.write(&[(o[0], Value::Bool(true)), (o[1], Value::Int(-1))]).unwrap();
+        let seen: Vec<(String, u32)> = r.seen().iter().map(|q| (q.cmd.clone(), q.dev)).collect();
+        let want: Vec<(&str, u32)> = if extended {
+            vec![("ENQ", 0), ("E00", 0x47D0), ("E00", 0x7E7E), ("E00", 0x88BF), ("E7", 0x45FF), ("E10", 0x7E7E)]
+        } else {
+            vec![("ENQ", 0), ("0", 0x17D0), ("0", 0x4E7E), ("0", 0x01BF), ("7", 0x0DFF), ("1", 0x4E7E)]
+        };
+        let want: Vec<(String, u32)> = want.into_iter().map(|(c, a)| (c.to_string(), a)).collect();
+        assert_eq!(seen, want, "{model}: one ENQ probe, then the model's commands");
+        assert!(r.seen().iter().all(|q| q.sum_ok));
+        if extended {
+            // The FX3U's own ranges: M7679 (byte 8BBFH), forced as 5DFFH; S4095 forced as 76FFH.
+            assert_eq!(read_one(d.as_mut(), "M7679").unwrap(), 1);
+            let o = ops(d.as_ref(), &["S4095"]);
+            d.write(&[(o[0], Value::Bool(false))]).unwrap();
+            let tail: Vec<(String, u32)> = r.seen()[6..].iter().map(|q| (q.cmd.clone(), q.dev)).collect();
+            assert_eq!(tail, vec![("E00".to_string(), 0x8BBF), ("E8".to_string(), 0x76FF)]);
+        } else {
+            // Past the classic table: refused before anything is sent, pointing to what reaches it.
+            let before = r.seen().len();
+            let e = d.operands().parse("M1536").map(|_| ()).unwrap_err();
+            if model == "FX2N" {
+                assert!(e.message.contains("M0–M1535") && e.hint.as_deref().unwrap().contains("model=FX3U"), "{e:?}");
+            }
+            assert_eq!(r.seen().len(), before);
+        }
+    }
+    // A PLC without the E-commands opened as an FX3U: NAK, and the hint says what to open it as.
+    let r = fx_responder(false, EnqMode::Never);
+    let mut d = open(&r.url("fx", "?model=FX3U"));
+    let e = read_one(d.as_mut(), "D1000").unwrap_err();
+    assert_eq!(e.kind, ErrorKind::Refused, "{e}");
+    assert!(e.message.contains("an E00 read of 2 bytes at 47D0H"), "{e}");
+    assert!(e.hint.as_deref().unwrap().contains("model=FX2N"), "{e:?}");
+}
+
+// ENQ is optional: a PLC that never answers it is probed once and then talked to without it
+// (above); one that requires it gets ENQ before the first frame and again after a failure; one
+// that answers NAK to ENQ has answered (noise_is_never_called_a_nak: "answered ENQ with NAK").
+#[test]
+fn enq_is_probed_and_followed_where_the_plc_requires_it() {
+    let _alone = line_timing();
+    let r = fx_responder(false, EnqMode::Required);
+    let mut d = open(&r.url("fx", "?model=FX2N"));
+    assert_eq!(read_one(d.as_mut(), "D1000").unwrap(), 1000);
+    assert_eq!(read_one(d.as_mut(), "D7999").unwrap(), 7999);
+    let cmds: Vec<String> = r.seen().iter().map(|q| q.cmd.clone()).collect();
+    assert_eq!(cmds, ["ENQ", "0", "0"], "ENQ once, then frames in the open conversation");
+    // A NAK to a frame (this responder has no D8000 table) is resent in the open
+    // conversation, then reported as the PLC refusing; a bad sum check in a reply reopens the
+    // conversation with ENQ before the resend.
+    let e = read_one(d.as_mut(), "D8255").unwrap_err();
+    assert_eq!(e.kind, ErrorKind::Refused, "{e}");
+    let cmds: Vec<String> = r.seen().iter().map(|q| q.cmd.clone()).collect();
+    assert_eq!(cmds[3..], ["0", "0", "0", "0"], "NAK: resent without a new ENQ");
+    drop(d);
+    // The never-answering responder: exactly one ENQ however many requests follow.
+    let r = fx_responder(false, EnqMode::Never);
+    let mut d = open(&r.url("fx", "?model=FX2N"));
+    for _ in 0..3 {
+        assert_eq!(read_one(d.as_mut(), "D1000").unwrap(), 1000);
+    }
+    let cmds: Vec<String> = r.seen().iter().map(|q| q.cmd.clone()).collect();
+    assert_eq!(cmds, ["ENQ", "0", "0", "0"]);
+}
+
+/// Words of a README command line, as a POSIX shell splits these: spaces, and double quotes.
+fn shell_words(line: &str) -> Vec<String> {
+    let (mut words, mut cur, mut quoted) = (Vec::new(), String::new(), false);
+    for c in line.chars() {
+        match c {
+            '"' => quoted = !quoted,
+            ' ' if !quoted => {
+                if !cur.is_empty() {
+                    words.push(std::mem::take(&mut cur));
+                }
+            }
+            _ => cur.push(c),
+        }
+    }
+    if !cur.is_empty() {
+        words.push(cur);
+    }
+    words
+}
+
+/// The README's FX examples, run as written (the served one against this test's own ptys in
+/// place of /tmp/fx and /tmp/fxlink): every command succeeds.
+#[test]
+fn the_readme_fx_examples_run() {
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+    let section = readme.split("\n## FX-protocol PLCs").nth(1).unwrap().split("\n## ").next().unwrap();
+    let lines: Vec<String> = section
+        .split("```sh")
+        .skip(1)
+        .flat_map(|b| b.split("```").next().unwrap().lines().map(str::to_string).collect::<Vec<_>>())
+        .filter(|l| l.starts_with("plcsh -d"))
+        .collect();
+    assert!(lines.len() >= 4, "{lines:?}");
+    let srv = Server::start("readme", &[]);
+    let mut outputs = String::new();
+    for line in &lines {
+        let line =
+            line.replace("/tmp/fxlink", srv.link.to_str().unwrap()).replace("/tmp/fx", srv.port.to_str().unwrap());
+        let words = shell_words(&line);
+        let mut args: Vec<&str> = vec!["--json"];
+        args.extend(words[1..].iter().map(String::as_str));
+        let out = run(&args, "");
+        assert!(out.status.success(), "{line}: {}", String::from_utf8_lossy(&out.stderr));
+        for l in json_lines(&out) {
+            assert_eq!(l["ok"], true, "{line}: {l}");
+        }
+        outputs.push_str(&String::from_utf8_lossy(&out.stdout));
+    }
+    // The FX3U example reaches its own ranges, and `help` shows the E-command address.
+    assert!(outputs.contains("47D0H") && outputs.contains("E00/E10/E7/E8"), "{outputs}");
 }

@@ -123,7 +123,7 @@ pub struct ServeArgs {
     /// Serve the same FX PLC's computer link on a TCP port (fxlink+tcp://ADDR).
     #[arg(long = "fx-link-tcp", value_name = "ADDR")]
     pub fx_link_tcp: Option<String>,
-    /// The simulated FX PLC's model (FX1S, FX1N, FX2N).
+    /// The simulated FX PLC's model (FX1S, FX1N, FX2N, FX3U; FX2NC and FX3UC name the FX2N and FX3U).
     #[arg(long = "fx-model", value_name = "MODEL", default_value = "FX2N")]
     pub fx_model: String,
     /// The computer link's station number (0–31).

@@ -3,9 +3,13 @@
 //! over any [`Transport`] — a serial port, a pty served by `plcsh sim serve`, or the
 //! in-process simulator (`sim-fx:FX2N`, which therefore runs this same code).
 //!
-//! - Programming port: the ENQ/ACK handshake opens the conversation (and reopens it after a
-//!   failure); reads coalesce into the fewest frames of at most 64 bytes within one region
-//!   of the address table; words are written with command 1 (adjacent words in one frame),
+//! - Programming port: the first request probes ENQ; a PLC that answers ACK gets the ENQ/ACK
+//!   handshake before the conversation (and again after a failure), one that leaves ENQ
+//!   unanswered gets its frames without it (what public drivers send); NAK to ENQ is a real
+//!   answer. Each operand goes through the model's address table ([`Table::of`]): the classic
+//!   commands 0/1/7/8 on an FX1S/FX1N/FX2N, the E-commands E00/E10/E7/E8 on an FX3U. Reads
+//!   coalesce into the fewest frames of at most 64 bytes within one region of the address
+//!   table; words are written with command 1 (adjacent words in one frame),
 //!   bits are forced ON/OFF (commands 7/8), a `Kn` group that covers whole bytes is written
 //!   as bytes and any other group bit by bit — never a read-modify-write of the PLC's bytes.
 //! - Computer link: bits read with BR (≤ 256 points a frame), words with WR (≤ 64); writes
@@ -41,7 +45,7 @@ use super::link::{self as fxlink, Cmd, Dev, Header, Reply, Settings};
 use super::memory::Memory;
 use super::model::Model;
 use super::operand::{Area, FxOperand, Width, CN32_FIRST};
-use super::port::{self, Request, ACK, ENQ, NAK};
+use super::port::{self, Request, Table, ACK, ENQ, NAK};
 use super::sim::{LinkServer, Plc, PortServer, Server, SimLink};
 use super::space::{FxSpace, Proto};
 use crate::core::link::line::{self as lines, SharedLine, Transport};
@@ -226,8 +230,29 @@ fn classify_link(f: &[u8], h: Header, s: Settings, expect: Expect) -> Got {
 
 /// Protocol state.
 enum Mode {
-    Port { synced: bool },
-    Link { header: Header, settings: Settings },
+    /// `synced`: the conversation is open (ENQ answered, or not wanted).
+    Port {
+        synced: bool,
+        handshake: Handshake,
+    },
+    Link {
+        header: Header,
+        settings: Settings,
+    },
+}
+
+/// Whether the programming port wants ENQ before a frame. The seed's host program opens with
+/// ENQ and waits for ACK; public drivers (node-fxplc, KrystianD/fxplc, HslCommunication) send
+/// their frames without it, and clones answer frames either way.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Handshake {
+    /// Not known yet: the next ENQ is a probe, and silence to it is an answer too.
+    Probe,
+    /// The PLC answers ENQ: ENQ opens the conversation, and opens it again after a failure.
+    Enq,
+    /// The PLC left the probe unanswered: frames go without ENQ. Silence to a frame makes the
+    /// next request probe again.
+    Skip,
 }
 
 /// An FX PLC on some transport.
@@ -253,7 +278,12 @@ pub struct Driver {
 impl Driver {
     /// A programming-port driver on `line`.
     pub fn port(line: SharedLine, model: &'static Model, info: DeviceInfo) -> Driver {
-        Driver::new(line, FxSpace::new(model, Proto::Port), Mode::Port { synced: false }, info)
+        Driver::new(
+            line,
+            FxSpace::new(model, Proto::Port),
+            Mode::Port { synced: false, handshake: Handshake::Probe },
+            info,
+        )
     }
 
     /// A computer-link driver on `line`.
@@ -451,15 +481,21 @@ impl Driver {
 
     /// The ENQ/ACK handshake (programming port; seed 004: "通过ENQ、ACK和NAK上位机协调与PLC的通信
     /// 应答"). Only ACK opens the conversation; a NAK is a NAK character in reply, noise is
-    /// reported as noise. `after_failure`: the line just carried a failed exchange, so the
-    /// first ENQ waits as a resend does.
+    /// reported as noise. The first ENQ is a probe: a PLC that leaves it unanswered (and
+    /// nothing comes late either) is talked to without ENQ from then on. `after_failure`: the
+    /// line just carried a failed exchange, so the first ENQ waits as a resend does.
     fn enq(&mut self, after_failure: bool) -> Result<()> {
         let mut seen = Vec::new();
         let ack = Expect::Ack { chars: 1 };
+        let probing = matches!(self.mode, Mode::Port { handshake: Handshake::Probe, .. });
         for attempt in 0..=self.retries {
             match self.exchange(&[ENQ], ack, after_failure || attempt > 0, "ENQ")? {
                 Got::Ack => {
-                    self.mode = Mode::Port { synced: true };
+                    self.mode = Mode::Port { synced: true, handshake: Handshake::Enq };
+                    return Ok(());
+                }
+                Got::Silent { late: 0 } if probing && attempt == 0 => {
+                    self.mode = Mode::Port { synced: true, handshake: Handshake::Skip };
                     return Ok(());
                 }
                 Got::Silent { late } => {
@@ -493,8 +529,12 @@ impl Driver {
             if attempt > 0 {
                 self.resent += 1;
             }
-            if let Mode::Port { synced: false } = self.mode {
-                self.enq(attempt > 0)?;
+            if let Mode::Port { synced: false, handshake } = self.mode {
+                if handshake == Handshake::Skip {
+                    self.mode = Mode::Port { synced: true, handshake };
+                } else {
+                    self.enq(attempt > 0)?;
+                }
             }
             self.requests += 1;
             let got = self.exchange(frame, expect, attempt > 0, what)?;
@@ -505,6 +545,11 @@ impl Driver {
                     self.desync();
                     let from = match &self.mode {
                         Mode::Link { header, .. } => format!(" (station {})", header.station),
+                        Mode::Port { handshake: Handshake::Skip, .. } => {
+                            // Probe again next time: the PLC may want ENQ after all.
+                            self.mode = Mode::Port { synced: false, handshake: Handshake::Probe };
+                            " (sent without ENQ: it answered no ENQ either)".to_string()
+                        }
                         Mode::Port { .. } => String::new(),
                     };
                     return Err(Error::link(format!(
@@ -537,8 +582,8 @@ impl Driver {
 
     /// The programming port opens the conversation again with ENQ after a failed exchange.
     fn desync(&mut self) {
-        if let Mode::Port { .. } = self.mode {
-            self.mode = Mode::Port { synced: false };
+        if let Mode::Port { handshake, .. } = self.mode {
+            self.mode = Mode::Port { synced: false, handshake };
         }
     }
 
@@ -580,7 +625,11 @@ impl Driver {
                 ErrorKind::Refused,
                 format!("the PLC answered NAK to {what} on {name} ({tries}): it refuses a frame with a wrong sum check or an address where it has no device"),
             )
-            .hint("check the operand against the model (`help OPERAND`) and the line's noise"),
+            .hint(if self.space.model.extended {
+                "check the operand against the model (`help OPERAND`) and the line's noise; a PLC without the E-commands (E00/E10/E7/E8) answers them NAK: open it as model=FX2N"
+            } else {
+                "check the operand against the model (`help OPERAND`) and the line's noise"
+            }),
             Some(Got::BadSum(m)) => Error::link(format!("bad reply to {what} on {name} ({tries}): {m}"))
                 .hint(match &self.mode {
                     Mode::Port { .. } => "noise on the line or a wrong baud rate/parity (the port runs 7E1)",
@@ -649,11 +698,12 @@ impl Driver {
     // ----- programming port -----
 
     fn port_read(&mut self, ops: &[FxOperand]) -> Result<Vec<Value>> {
-        let regions = port::regions();
+        let table = Table::of(self.space.model);
+        let regions = port::regions(table);
         let places: Vec<port::Place> = ops
             .iter()
             .map(|o| {
-                port::place(o)
+                port::place(table, o)
                     .ok_or_else(|| Error::new(ErrorKind::Range, "past the address table").operand(o.canonical()))
             })
             .collect::<Result<_>>()?;
@@ -690,9 +740,10 @@ impl Driver {
         let mut data = Vec::with_capacity(spans.len());
         for (s, e) in &spans {
             let count = (e - s) as u8;
-            let req = Request::Read { addr: *s, count };
+            let req = Request::Read { table, addr: *s, count };
             let expect = Expect::Data { chars: req.reply_len(), data: count as usize };
-            let bytes = self.transact(&req.encode(), expect, &format!("a read of {count} bytes at {s:04X}H"))?;
+            let kind = if table == Table::Extended { "an E00 read" } else { "a read" };
+            let bytes = self.transact(&req.encode(), expect, &format!("{kind} of {count} bytes at {s:04X}H"))?;
             data.push(bytes);
         }
         Ok(ops
@@ -711,36 +762,37 @@ impl Driver {
 
     fn port_write(&mut self, items: &[(FxOperand, Value)]) -> Result<()> {
         // Frames in order; adjacent byte writes merge.
+        let table = Table::of(self.space.model);
         let mut frames: Vec<(Request, String)> = Vec::new();
         for (o, v) in items {
             let raw = o.view.encode(v) as u64;
-            let p = port::place(o)
+            let p = port::place(table, o)
                 .ok_or_else(|| Error::new(ErrorKind::Range, "past the address table").operand(o.canonical()))?;
             match o.width {
                 Width::Bit => {
-                    let addr = port::force_address(o.area, o.index).ok_or_else(|| read_only(o))?;
+                    let addr = port::force_address(table, o.area, o.index).ok_or_else(|| read_only(o))?;
                     frames.push((
-                        Request::Force { on: raw != 0, addr },
+                        Request::Force { table, on: raw != 0, addr },
                         format!("forcing {} {}", o.canonical(), on_off(raw)),
                     ));
                 }
                 Width::Group(n) if p.bit == 0 && (4 * n) % 8 == 0 => {
                     let data: Vec<u8> = (0..p.len).map(|i| (raw >> (8 * i)) as u8).collect();
-                    push_write(&mut frames, p.addr, data, o);
+                    push_write(&mut frames, table, p.addr, data, o);
                 }
                 Width::Group(n) => {
                     for i in 0..4 * n as u16 {
-                        let addr = port::force_address(o.area, o.index + i).ok_or_else(|| read_only(o))?;
+                        let addr = port::force_address(table, o.area, o.index + i).ok_or_else(|| read_only(o))?;
                         let bit = raw >> i & 1;
                         frames.push((
-                            Request::Force { on: bit != 0, addr },
+                            Request::Force { table, on: bit != 0, addr },
                             format!("forcing {} bit {i}", o.canonical()),
                         ));
                     }
                 }
                 Width::Word | Width::Pair => {
                     let data: Vec<u8> = (0..p.len).map(|i| (raw >> (8 * i)) as u8).collect();
-                    push_write(&mut frames, p.addr, data, o);
+                    push_write(&mut frames, table, p.addr, data, o);
                 }
             }
         }
@@ -885,15 +937,22 @@ fn read_only(o: &FxOperand) -> Error {
     Error::unsupported(format!("{} ({}) cannot be set", o.canonical(), o.area.spec().meaning)).operand(o.canonical())
 }
 
-fn push_write(frames: &mut Vec<(Request, String)>, addr: u16, data: Vec<u8>, o: &FxOperand) {
-    if let Some((Request::Write { addr: a, data: d }, what)) = frames.last_mut() {
+fn push_write(frames: &mut Vec<(Request, String)>, table: Table, addr: u16, data: Vec<u8>, o: &FxOperand) {
+    if let Some((Request::Write { addr: a, data: d, .. }, what)) = frames.last_mut() {
         if *a as usize + d.len() == addr as usize && d.len() + data.len() <= port::MAX_BYTES {
             d.extend(data);
-            *what = format!("a write of {} bytes at {a:04X}H", d.len());
+            *what = format!("{} of {} bytes at {a:04X}H", write_kind(table), d.len());
             return;
         }
     }
-    frames.push((Request::Write { addr, data }, format!("a write of {}", o.canonical())));
+    frames.push((Request::Write { table, addr, data }, format!("{} of {}", write_kind(table), o.canonical())));
+}
+
+fn write_kind(table: Table) -> &'static str {
+    match table {
+        Table::Classic => "a write",
+        Table::Extended => "an E10 write",
+    }
 }
 
 /// Appends `next` to the last command when it continues it on the next devices.
@@ -1176,7 +1235,7 @@ mod tests {
 
     #[test]
     fn port_and_link_read_and_write_every_kind() {
-        for url in ["sim-fx:FX2N", "sim-fx:FX2N?protocol=link"] {
+        for url in ["sim-fx:FX2N", "sim-fx:FX2N?protocol=link", "sim-fx:FX3U"] {
             let mut d = sim(url);
             let d = d.as_mut();
             set(d, "D100", -5);
@@ -1281,8 +1340,8 @@ mod tests {
         let mut b = sim("sim-fx:FX1N?protocol=link&share=unit-test-a");
         set(a.as_mut(), "D5", 77);
         assert_eq!(get(b.as_mut(), "D5"), 77);
-        set(b.as_mut(), "D1000", 9); // only the link reaches it
-        assert!(a.operands().parse("D1000").is_err());
+        set(b.as_mut(), "D1000", 9); // written over the link, read on the port
+        assert_eq!(get(a.as_mut(), "D1000"), 9);
         assert!(open_sim(&DeviceUrl::parse("sim-fx:FX2N?share=unit-test-a").unwrap()).is_err(), "model differs");
     }
 
@@ -1400,21 +1459,38 @@ mod tests {
         assert!(e.message.contains("no reply to WR"), "{e}");
         assert!(e.hint.as_deref().unwrap().contains("station 3"), "{e:?}");
         assert_eq!(d.requests(), 1, "silence is not retried");
-        // A programming port that never answers ENQ.
-        struct Dead;
-        impl Transport for Dead {
-            fn send(&mut self, _: &[u8]) -> io::Result<()> {
-                Ok(())
-            }
-            fn recv(&mut self, _: &mut [u8], _: Duration) -> io::Result<usize> {
-                Ok(0)
-            }
-        }
-        let mut p = Driver::port(lines::private("dead", Box::new(Dead)), model, info);
+        // A programming port that answers nothing: the ENQ probe goes unanswered, the frame
+        // goes without it, and the silence is reported naming both; the next request probes again.
+        let (mut p, sent) = scripted(None, vec![]);
         let e = p.read(&ops(&p, &["D0"])).unwrap_err();
-        assert!(e.message.contains("no ACK to ENQ"), "{e}");
+        assert!(e.message.contains("no reply to a read of 2 bytes at 1000H"), "{e}");
+        assert!(e.message.contains("it answered no ENQ either"), "{e}");
         assert!(e.hint.as_deref().unwrap().contains("7E1"), "{e:?}");
-        assert_eq!(p.requests(), 0, "no frame goes out before the handshake");
+        assert_eq!(p.requests(), 1);
+        p.read(&ops(&p, &["D0"])).unwrap_err();
+        let sent = sent.lock().unwrap().clone();
+        assert_eq!(sent.iter().map(|f| f[0]).collect::<Vec<_>>(), vec![ENQ, port::STX, ENQ, port::STX], "{sent:?}");
+    }
+
+    // Public drivers (node-fxplc `FXPLCClient._sendCommand`, KrystianD/fxplc `_send_command`)
+    // send their frames without ENQ, and clones answer them: a PLC that leaves the ENQ probe
+    // unanswered is talked to without ENQ from then on.
+    #[test]
+    fn enq_is_probed_once_and_skipped_when_unanswered() {
+        let read = port::encode_read_reply(&[0x34, 0x12]);
+        let (mut d, sent) = scripted(None, vec![vec![], read.clone(), read.clone(), read.clone()]);
+        assert_eq!(get(&mut d, "D123"), 0x1234);
+        assert_eq!(get(&mut d, "D123"), 0x1234);
+        assert_eq!(get(&mut d, "D123"), 0x1234);
+        let firsts: Vec<u8> = sent.lock().unwrap().iter().map(|f| f[0]).collect();
+        assert_eq!(firsts, vec![ENQ, port::STX, port::STX, port::STX], "one probe, then frames alone");
+        // A PLC that answers ENQ keeps getting it after a failure (here a bad sum check).
+        let mut bad = read.clone();
+        bad[7] ^= 1;
+        let (mut d, sent) = scripted(None, vec![vec![ACK], bad, vec![ACK], read.clone()]);
+        assert_eq!(get(&mut d, "D123"), 0x1234);
+        let firsts: Vec<u8> = sent.lock().unwrap().iter().map(|f| f[0]).collect();
+        assert_eq!(firsts, vec![ENQ, port::STX, ENQ, port::STX]);
     }
 
     /// A line that answers each frame sent with the next scripted bytes (nothing once the

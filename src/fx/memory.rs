@@ -7,7 +7,7 @@
 
 use super::model::{fx1s_counter, Model};
 use super::operand::{Area, CN32_FIRST, SPECIAL, SPECIAL_COUNT};
-use super::port::{self, Region};
+use super::port::{self, Region, Table};
 
 /// The device memory of one simulated PLC.
 #[derive(Clone, Debug)]
@@ -18,6 +18,8 @@ pub struct Memory {
     cn: Vec<u32>,
     d: Vec<u16>,
     regions: Vec<Region>,
+    /// The extended (E-command) table's regions.
+    ext_regions: Vec<Region>,
     /// Device writes made through either port (for tests and `devices`).
     pub writes: u64,
 }
@@ -55,7 +57,8 @@ impl Memory {
             tn: vec![0; model.t as usize],
             cn: vec![0; model.c as usize],
             d: vec![0; special],
-            regions: port::regions(),
+            regions: port::regions(Table::Classic),
+            ext_regions: port::regions(Table::Extended),
             writes: 0,
         };
         m.bits[2][SPECIAL as usize] = true; // M8000 RUN monitor
@@ -130,9 +133,21 @@ impl Memory {
         Some(())
     }
 
-    /// One byte of the programming port's address space, or `None` (NAK).
+    fn regions_of(&self, table: Table) -> &[Region] {
+        match table {
+            Table::Classic => &self.regions,
+            Table::Extended => &self.ext_regions,
+        }
+    }
+
+    /// One byte of the programming port's classic address space, or `None` (NAK).
     pub fn port_byte(&self, addr: u16) -> Option<u8> {
-        let r = *port::region_of(&self.regions, addr)?;
+        self.port_byte_in(Table::Classic, addr)
+    }
+
+    /// One byte of `table`'s address space, or `None` (NAK).
+    pub fn port_byte_in(&self, table: Table, addr: u16) -> Option<u8> {
+        let r = *port::region_of(self.regions_of(table), addr)?;
         let off = addr - r.start;
         if r.unit == 0 {
             let first = r.first + 8 * off;
@@ -150,9 +165,15 @@ impl Memory {
         Some((v >> (8 * (off % r.unit))) as u8)
     }
 
-    /// Writes one byte of the programming port's address space; `None` (NAK) when no device is there.
+    /// Writes one byte of the programming port's classic address space; `None` (NAK) when no
+    /// device is there.
     pub fn set_port_byte(&mut self, addr: u16, b: u8) -> Option<()> {
-        let r = *port::region_of(&self.regions, addr)?;
+        self.set_port_byte_in(Table::Classic, addr, b)
+    }
+
+    /// Writes one byte of `table`'s address space; `None` (NAK) when no device is there.
+    pub fn set_port_byte_in(&mut self, table: Table, addr: u16, b: u8) -> Option<()> {
+        let r = *port::region_of(self.regions_of(table), addr)?;
         let off = addr - r.start;
         if r.unit == 0 {
             let first = r.first + 8 * off;
@@ -175,7 +196,12 @@ impl Memory {
 
     /// Whether every byte in `addr … addr+len` is there (a read or write of them is answered).
     pub fn port_range_ok(&self, addr: u16, len: usize) -> bool {
-        (0..len).all(|i| addr.checked_add(i as u16).is_some_and(|a| self.port_byte(a).is_some()))
+        self.port_range_ok_in(Table::Classic, addr, len)
+    }
+
+    /// Whether every byte in `addr … addr+len` of `table` is there.
+    pub fn port_range_ok_in(&self, table: Table, addr: u16, len: usize) -> bool {
+        (0..len).all(|i| addr.checked_add(i as u16).is_some_and(|a| self.port_byte_in(table, a).is_some()))
     }
 }
 

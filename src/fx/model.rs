@@ -5,9 +5,10 @@
 //! columns: auxiliary relays M0–M511 / M0–M1535 / M0–M3071, states S0–S127 / S0–S999,
 //! timers T0–T63 / T0–T255, counters C0–C31 + C235–C255 / C0–C255, data registers D0–D255 /
 //! D0–D7999, special M8000–M8255 and D8000–D8255) and the FX3U MELSEC-F computer-link device
-//! list (X0–X377, Y0–Y377, D0–D7999, C200–C255 32-bit). The FX2N row stands for the
-//! FX2N/FX3U-compatible family (clones included): an FX3U has more M, S and T than this row
-//! allows; plcsh stays inside what both answer.
+//! list (X0–X377, Y0–Y377, D0–D7999, C200–C255 32-bit). The FX3U row has the FX3U's own ranges
+//! (M0–M7679, S0–S4095, T0–T511, C0–C255, D0–D7999: the FX3U programming manual's device list,
+//! the same ranges the E-command address table covers, [`super::port::EXTENDED`]) and the
+//! E-commands; FX1S, FX1N and FX2N speak the classic commands 0/1/7/8.
 
 /// One model family's device ranges (counts of the ordinary devices, numbers 0 … n−1).
 #[derive(Clone, Copy, Debug)]
@@ -24,6 +25,9 @@ pub struct Model {
     /// Counters C0 … c−1 (C200 and up are 32-bit).
     pub c: u16,
     pub d: u16,
+    /// Answers the extended programming-port commands (E00/E10, E7/E8) and is read through
+    /// their address table ([`super::port::Table::Extended`]).
+    pub extended: bool,
     pub summary: &'static str,
 }
 
@@ -39,6 +43,7 @@ pub static MODELS: &[Model] = &[
         t: 64,
         c: 256,
         d: 256,
+        extended: false,
         summary: "X0–X17, Y0–Y15, M0–M511, S0–S127, T0–T63, C0–C31 and C235–C255, D0–D255",
     },
     Model {
@@ -51,11 +56,12 @@ pub static MODELS: &[Model] = &[
         t: 256,
         c: 256,
         d: 8000,
+        extended: false,
         summary: "X0–X177, Y0–Y177, M0–M1535, S0–S999, T0–T255, C0–C255, D0–D7999",
     },
     Model {
         name: "FX2N",
-        aliases: &["FX3U", "FX2NC", "FX3UC"],
+        aliases: &["FX2NC"],
         x: 256,
         y: 256,
         m: 3072,
@@ -63,7 +69,21 @@ pub static MODELS: &[Model] = &[
         t: 256,
         c: 256,
         d: 8000,
-        summary: "FX2N/FX3U-compatible: X0–X377, Y0–Y377, M0–M3071, S0–S999, T0–T255, C0–C255, D0–D7999",
+        extended: false,
+        summary: "X0–X377, Y0–Y377, M0–M3071, S0–S999, T0–T255, C0–C255, D0–D7999",
+    },
+    Model {
+        name: "FX3U",
+        aliases: &["FX3UC"],
+        x: 256,
+        y: 256,
+        m: 7680,
+        s: 4096,
+        t: 512,
+        c: 256,
+        d: 8000,
+        extended: true,
+        summary: "X0–X377, Y0–Y377, M0–M7679, S0–S4095, T0–T511, C0–C255, D0–D7999; E-commands",
     },
 ];
 

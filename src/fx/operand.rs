@@ -91,8 +91,12 @@ const fn pm(byte: u16, force: Option<u16>, count: u16, special: Option<(u16, Opt
 /// Y 0x00A0 (0x0500), T contacts 0x00C0 (0x0600), M 0x0100 (0x0800), C contacts 0x01C0
 /// (0x0E00), M8000 0x01E0 (0x0F00), T coils 0x02C0, C coils 0x03C0, T values 0x0800, C values
 /// 0x0A00 (C200+ 32-bit at 0x0C00, 4 bytes each), D8000 0x0E00, D 0x1000 (seed: 0x1000 + 2·n).
-/// Ordinary ranges of this classic table (HslCommunication `MelsecFxSerial` remarks): D0–D511,
-/// M0–M1023, X0–X177, Y0–Y177, S0–S999, T/C 0–255, plus M8000–M8255 and D8000–D8255.
+/// Ordinary ranges of this classic table: X0–X177, Y0–Y177, S0–S999, T/C 0–255 (HslCommunication
+/// `MelsecFxSerial` remarks), M0–M1535 (0100H–01BFH, up to the C contacts at 01C0H; force
+/// 0800H–0DFFH, up to 0E00H) and D0–D7999 (1000H + 2n, the seed's formula, 1000H–4E7FH with
+/// nothing else above 1000H) — the reach public drivers compute with these bases for any
+/// number (node-fxplc `lib/registers.js`, KrystianD/fxplc `FXPLCClient.py`), cut where the next
+/// area begins; plus M8000–M8255 and D8000–D8255. The model decides what of it exists.
 pub static AREAS: [AreaSpec; 11] = [
     AreaSpec {
         area: Area::X,
@@ -124,7 +128,7 @@ pub static AREAS: [AreaSpec; 11] = [
         octal: false,
         writable: true,
         groups: true,
-        port: pm(0x0100, Some(0x0800), 1024, Some((0x01E0, Some(0x0F00)))),
+        port: pm(0x0100, Some(0x0800), 1536, Some((0x01E0, Some(0x0F00)))),
         link: "M",
     },
     AreaSpec {
@@ -212,7 +216,7 @@ pub static AREAS: [AreaSpec; 11] = [
         octal: false,
         writable: true,
         groups: false,
-        port: pm(0x1000, None, 512, Some((0x0E00, None))),
+        port: pm(0x1000, None, 8000, Some((0x0E00, None))),
         link: "D",
     },
 ];

@@ -1,9 +1,11 @@
 //! The simulated FX PLC's two ports, answering the same codecs the drivers use
 //! ([`super::port`], [`super::link`]) from one shared [`Memory`]:
 //!
-//! - [`PortServer`]: ENQ → ACK; a read/write/force frame → data, ACK or NAK. NAK for a bad
-//!   sum check, a malformed frame, and any byte address or force address where the model
-//!   has no device (seed 004: "如传送的命令有错误PLC返回NAK信号").
+//! - [`PortServer`]: ENQ → ACK; a read/write/force frame → data, ACK or NAK, with or without
+//!   an ENQ before it (public drivers send none). NAK for a bad sum check, a malformed frame,
+//!   any byte address or force address where the model has no device (seed 004:
+//!   "如传送的命令有错误PLC返回NAK信号"), the E-commands on a model without them, and program
+//!   memory (E01/E11, not simulated).
 //! - [`LinkServer`]: requests for its station get data, ACK or NAK with an error code;
 //!   requests for other stations get no reply (a multi-drop line); a PC number other than
 //!   FF is error 0A.
@@ -21,7 +23,7 @@
 use super::link::{self, code, Cmd, Dev, Header, Parsed, Reply, Settings};
 use super::memory::Memory;
 use super::operand::{Area, CN32_FIRST};
-use super::port::{self, Request, ACK, ENQ, ETX, NAK, STX};
+use super::port::{self, Request, Table, ACK, ENQ, ETX, NAK, STX};
 use crate::core::link::line::Transport;
 use crate::core::link::served::{ServeOn, Served};
 use crate::core::Result;
@@ -78,17 +80,18 @@ impl PortServer {
         let Ok(req) = port::decode_request(frame) else { return NAK };
         let mut m = lock(plc);
         match req {
-            Request::Read { .. } => NAK, // handled by the caller (it has data)
-            Request::Write { addr, data } => {
-                if data.is_empty() || data.len() > port::MAX_BYTES || !m.port_range_ok(addr, data.len()) {
+            Request::Read { .. } | Request::Program { .. } => NAK, // reads: the caller; program memory: not simulated
+            Request::Write { table, .. } | Request::Force { table, .. } if !answers(&m, table) => NAK,
+            Request::Write { table, addr, data } => {
+                if data.is_empty() || data.len() > port::MAX_BYTES || !m.port_range_ok_in(table, addr, data.len()) {
                     return NAK;
                 }
                 for (i, b) in data.iter().enumerate() {
-                    m.set_port_byte(addr + i as u16, *b);
+                    m.set_port_byte_in(table, addr + i as u16, *b);
                 }
                 ACK
             }
-            Request::Force { on, addr } => match port::force_target(addr) {
+            Request::Force { table, on, addr } => match port::force_target(table, addr) {
                 Some((area, index)) if m.set_bit(area, index, on).is_some() => ACK,
                 _ => NAK,
             },
@@ -98,13 +101,13 @@ impl PortServer {
     fn frame(&mut self, plc: &Mutex<Memory>) -> Vec<u8> {
         let frame = std::mem::take(&mut self.buf);
         let reply = match port::decode_request(&frame) {
-            Ok(Request::Read { addr, count }) => {
+            Ok(Request::Read { table, addr, count }) => {
                 let m = lock(plc);
                 let n = count as usize;
-                if n == 0 || n > port::MAX_BYTES || !m.port_range_ok(addr, n) {
+                if !answers(&m, table) || n == 0 || n > port::MAX_BYTES || !m.port_range_ok_in(table, addr, n) {
                     vec![NAK]
                 } else {
-                    let data: Vec<u8> = (0..n).filter_map(|i| m.port_byte(addr + i as u16)).collect();
+                    let data: Vec<u8> = (0..n).filter_map(|i| m.port_byte_in(table, addr + i as u16)).collect();
                     port::encode_read_reply(&data)
                 }
             }
@@ -115,6 +118,12 @@ impl PortServer {
         }
         reply
     }
+}
+
+/// Whether the simulated model answers frames of `table`: the classic commands every model,
+/// the E-commands a model that has them (an FX2N answers them NAK).
+fn answers(m: &Memory, table: Table) -> bool {
+    table == Table::Classic || m.model.extended
 }
 
 impl Server for PortServer {
@@ -534,14 +543,29 @@ mod tests {
         bad[10] = b'5';
         assert_eq!(talk(&mut s, &p, &bad), vec![NAK], "bad sum");
         // D300 is past an FX1S (D0–D255): 0x1000 + 600 = 0x1258.
-        let d300 = Request::Read { addr: 0x1258, count: 2 }.encode();
+        let d300 = Request::Read { table: Table::Classic, addr: 0x1258, count: 2 }.encode();
         assert_eq!(talk(&mut s, &p, &d300), vec![NAK]);
-        assert_eq!(talk(&mut s, &p, &Request::Read { addr: 0x0700, count: 1 }.encode()), vec![NAK], "no device");
-        assert_eq!(talk(&mut s, &p, &Request::Read { addr: 0x1000, count: 65 }.encode()), vec![NAK], "> 64 bytes");
-        assert_eq!(talk(&mut s, &p, &Request::Force { on: true, addr: 0x0700 }.encode()), vec![NAK]);
+        assert_eq!(
+            talk(&mut s, &p, &Request::Read { table: Table::Classic, addr: 0x0700, count: 1 }.encode()),
+            vec![NAK],
+            "no device"
+        );
+        assert_eq!(
+            talk(&mut s, &p, &Request::Read { table: Table::Classic, addr: 0x1000, count: 65 }.encode()),
+            vec![NAK],
+            "> 64 bytes"
+        );
+        assert_eq!(
+            talk(&mut s, &p, &Request::Force { table: Table::Classic, on: true, addr: 0x0700 }.encode()),
+            vec![NAK]
+        );
         // A byte with bit 7 set (a parity error on a real line) drops the frame: NAK.
         assert_eq!(talk(&mut s, &p, &[STX, b'0', 0xB1]), vec![NAK]);
-        assert_eq!(talk(&mut s, &p, &Request::Read { addr: 0x1000, count: 2 }.encode()).len(), 8, "then recovers");
+        assert_eq!(
+            talk(&mut s, &p, &Request::Read { table: Table::Classic, addr: 0x1000, count: 2 }.encode()).len(),
+            8,
+            "then recovers"
+        );
         assert_eq!(s.naks, 6);
     }
 
@@ -555,7 +579,7 @@ mod tests {
         let ww = link::encode_request(h, &Cmd::Ww { dev: Dev { area: Area::D, index: 123 }, values: vec![0x1234] }, s);
         assert_eq!(talk(&mut l, &p, &ww), b"\x0600FF".to_vec());
         // The programming port sees the link's write.
-        let r = talk(&mut port, &p, &Request::Read { addr: 0x10F6, count: 2 }.encode());
+        let r = talk(&mut port, &p, &Request::Read { table: Table::Classic, addr: 0x10F6, count: 2 }.encode());
         assert_eq!(port::decode_read_reply(&r, 2).unwrap(), vec![0x34, 0x12]);
         let bw = link::encode_request(
             h,

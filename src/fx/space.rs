@@ -3,13 +3,15 @@
 //! the model lacks, or the protocol cannot reach, is refused here, before anything is sent,
 //! with the range that does exist and what to try.
 //!
-//! The programming port's classic table reaches D0–D511, M0–M1023, X0–X177, Y0–Y177, S0–S999,
-//! T/C 0–255, M8000–M8255 and D8000–D8255 (see [`super::operand::AREAS`]); the computer
+//! The programming port reaches what the model's address table covers ([`port::Table::of`]):
+//! the classic table (FX1S, FX1N, FX2N) D0–D7999, M0–M1535, X0–X177, Y0–Y177, S0–S999, T/C
+//! 0–255, M8000–M8255 and D8000–D8255 (see [`super::operand::AREAS`]); the extended table of
+//! the E-commands (FX3U) every ordinary device of the FX3U ([`port::EXTENDED`]). The computer
 //! link reaches every device of the model except the timer and counter coils.
 
 use super::model::{fx1s_counter, Model, MODELS};
 use super::operand::{self, Area, FxOperand, Width, AREAS, SPECIAL, SPECIAL_COUNT};
-use super::port;
+use super::port::{self, Table};
 use crate::core::{Candidate, Error, ErrorKind, Operand, OperandSpace, Result};
 
 /// The protocol a device is reached through.
@@ -98,18 +100,31 @@ impl FxSpace {
         }
         match self.proto {
             Proto::Port => {
-                if port::place(op).is_none() {
-                    let p = op.area.spec().port;
+                let table = Table::of(self.model);
+                if port::place(table, op).is_none() {
+                    let p = table.map(op.area);
                     let name = op.area.name();
                     let mut reach = format!("{name}0–{name}{}", FxOperand::number_text(op.area, p.count - 1));
                     if p.special.is_some() {
                         reach.push_str(&format!(", {name}8000–{name}8255"));
                     }
+                    let hint = match table {
+                        Table::Classic => format!(
+                            "on an FX3U the E-commands reach it (open it with model=FX3U); on an {} only the computer link does (fxlink:, with an FX-485 board and D8120 set)",
+                            self.model.name
+                        ),
+                        Table::Extended => "check the operand against the model (`help OPERAND`)".to_string(),
+                    };
                     return Err(range_err(
                         op,
-                        format!("{} is past the programming port's address table (it reaches {reach})", op.canonical()),
+                        format!(
+                            "{} is past the {}'s programming-port address table ({}; it reaches {reach})",
+                            op.canonical(),
+                            self.model.name,
+                            table.commands()
+                        ),
                     )
-                    .hint("the computer link (fxlink:) reaches every device of the model"));
+                    .hint(hint));
                 }
             }
             Proto::Link => {
@@ -200,9 +215,15 @@ impl OperandSpace for FxSpace {
         s.push_str(&format!("on {}: {}\n", self.model.name, self.range_text(o.area)));
         match self.proto {
             Proto::Port => {
-                if let Some(p) = port::place(&o) {
-                    s.push_str(&format!("programming port: byte address {:04X}H, {} byte(s)", p.addr, p.len));
-                    if let Some(f) = port::force_address(o.area, o.index).filter(|_| o.width == Width::Bit) {
+                let table = Table::of(self.model);
+                if let Some(p) = port::place(table, &o) {
+                    s.push_str(&format!(
+                        "programming port ({}): byte address {:04X}H, {} byte(s)",
+                        table.commands(),
+                        p.addr,
+                        p.len
+                    ));
+                    if let Some(f) = port::force_address(table, o.area, o.index).filter(|_| o.width == Width::Bit) {
                         s.push_str(&format!(", force address {f:04X}H"));
                     }
                     s.push('\n');
@@ -273,11 +294,22 @@ mod tests {
         assert!(s.parse_fx("X20").unwrap_err().message.contains("X0–X17"));
         assert!(s.parse_fx("CN235").is_ok() && s.parse_fx("CN40").is_err());
         assert!(s.parse_fx("D8000").is_ok());
+        // The classic table reaches D0–D7999 and M0–M1535 of an FX2N; M1536 and up only the
+        // E-commands of an FX3U or the computer link.
         let p = space("FX2N", Proto::Port);
-        let e = p.parse_fx("D600").unwrap_err();
-        assert!(e.message.contains("programming port") && e.message.contains("D0–D511"), "{e}");
-        assert!(e.hint.as_deref().unwrap().contains("fxlink"));
-        assert!(p.parse_fx("M1024").is_err());
+        assert!(p.parse_fx("D600").is_ok() && p.parse_fx("D7999").is_ok() && p.parse_fx("M1535").is_ok());
+        let e = p.parse_fx("M1536").unwrap_err();
+        assert!(e.message.contains("programming-port address table") && e.message.contains("M0–M1535"), "{e}");
+        assert!(e.hint.as_deref().unwrap().contains("model=FX3U"), "{e:?}");
+        assert!(space("FX1N", Proto::Port).parse_fx("M1535").is_ok());
+        assert!(space("FX1N", Proto::Port).parse_fx("D7999").is_ok());
+        let u = space("FX3U", Proto::Port);
+        for op in ["M7679", "S4095", "TN511", "TS511", "D7999", "D8255", "K8M7648"] {
+            assert!(u.parse_fx(op).is_ok(), "{op}");
+        }
+        assert!(u.parse_fx("M7680").unwrap_err().message.contains("M0–M7679"));
+        assert!(space("FX3UC", Proto::Port).parse_fx("S4095").is_ok(), "FX3UC names the FX3U row");
+        assert!(space("FX2NC", Proto::Port).parse_fx("S4095").is_err(), "FX2NC names the FX2N row");
         let l = space("FX2N", Proto::Link);
         assert!(l.parse_fx("D600").is_ok() && l.parse_fx("D7999").is_ok() && l.parse_fx("D8000").is_ok());
         assert_eq!(l.parse_fx("TC0").unwrap_err().kind, ErrorKind::Unsupported);
@@ -294,6 +326,11 @@ mod tests {
         assert!(!s.describe(&op).unwrap().contains("warning"));
         let h = s.help("M500").unwrap();
         assert!(h.contains("byte address 013EH") && h.contains("force address 09F4H"), "{h}");
+        let h = space("FX3U", Proto::Port).help("M500").unwrap();
+        assert!(
+            h.contains("E00/E10/E7/E8") && h.contains("byte address 883EH") && h.contains("force address 41F4H"),
+            "{h}"
+        );
         assert!(space("FX2N", Proto::Link).help("D100").unwrap().contains("device D0100"));
         assert!(s.complete("k4").iter().any(|c| c.text == "K4M0"));
         assert!(s.complete("T").iter().any(|c| c.text == "TN"));
