@@ -320,9 +320,9 @@ async fn serve_k2(
         report_faults(sim.clone(), stop);
     }
     let idle =
-        crate::core::literal::parse_duration_us(&args.idle_timeout).ok().filter(|us| *us > 0).ok_or_else(|| {
-            Error::usage(format!("--idle-timeout {} is not a duration", args.idle_timeout)).hint("e.g. 300s, 2m")
-        })?;
+        crate::core::literal::parse_option_duration_us(&args.idle_timeout).ok().filter(|us| *us > 0).ok_or_else(
+            || Error::usage(format!("--idle-timeout {} is not a duration", args.idle_timeout)).hint("e.g. 300s, 2m"),
+        )?;
     let limits = modbus_server::Limits {
         max_connections: args.max_connections,
         idle: std::time::Duration::from_micros(idle as u64),
@@ -368,8 +368,10 @@ async fn serve_servo(
     made.extend(args.servo_control.iter().cloned());
     let ids = crate::servo::driver::parse_ids(&args.servo_id)
         .map_err(|m| Error::usage(format!("--servo-id: {m}")).hint("e.g. --servo-id 1,2"))?;
-    let latency =
-        crate::core::literal::parse_duration_us(&args.servo_latency).ok().filter(|us| *us >= 0).ok_or_else(|| {
+    let latency = crate::core::literal::parse_option_duration_us(&args.servo_latency)
+        .ok()
+        .filter(|us| *us >= 0)
+        .ok_or_else(|| {
             Error::usage(format!("--servo-latency {}: not a duration", args.servo_latency)).hint("e.g. 1ms, 500us, 0")
         })?;
     if args.servo_baud == 0 {

@@ -259,10 +259,24 @@ fn option_duration_us(s: &str) -> Result<f64, String> {
     }
 }
 
-/// A duration in microseconds from text like `500ms`, `1s200ms`, `2.5s`, `250us`, `1h`.
+/// A duration in microseconds from text with a unit on every number: `500ms`, `1s200ms`,
+/// `2.5s`, `250us`, `1h`. A bare number is refused (`T#5`, a unit-less option where no
+/// rule says its unit): callers whose quantity has a unit for bare numbers use
+/// [`parse_option_duration_us`] (milliseconds) or [`parse_pulse_time_us`] (microseconds).
 /// Refused past [`i64::MAX`] µs (about 292 000 years), not saturated.
 pub fn parse_duration_us(s: &str) -> Result<i64, String> {
     whole_us(duration_us(s)?, s)
+}
+
+/// A pulse cycle or width (`pto`/`pwm`/`profile` `cycle=`, `width=`): a bare number is
+/// microseconds — the K2's default time base and the units table's rule — and a number with
+/// a unit is that (`1ms`, `500us`, `0.5ms`). In microseconds.
+pub fn parse_pulse_time_us(s: &str) -> Result<i64, String> {
+    let t = s.trim().replace('_', "");
+    match t.parse::<f64>() {
+        Ok(us) if us.is_finite() && !t.is_empty() => whole_us(us, s),
+        _ => parse_duration_us(s),
+    }
 }
 
 /// Rounds to whole µs, refusing what an i64 cannot hold.
@@ -291,10 +305,11 @@ fn duration_us(s: &str) -> Result<f64, String> {
         rest = &rest[num_len..];
         let unit_len = rest.find(|c: char| c.is_ascii_digit()).unwrap_or(rest.len());
         let factor = match &rest[..unit_len] {
+            "" => return Err(format!("`{s}` needs a unit on every number (h, m, s, ms, us), e.g. {}ms or {}s", n, n)),
             "d" => 86_400e6,
             "h" => 3_600e6,
             "m" | "min" => 60e6,
-            "s" | "" => 1e6,
+            "s" => 1e6,
             "ms" => 1e3,
             "us" | "µs" => 1.0,
             u => return Err(format!("unknown time unit `{u}` in `{s}` (use h, m, s, ms, us)")),

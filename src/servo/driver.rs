@@ -33,7 +33,7 @@ use super::units::{self, Resolution};
 use super::ServoOps;
 use crate::core::link::line::{self as link, SharedLine, Transport};
 use crate::core::link::serial::{Carrier, LineSettings};
-use crate::core::literal::parse_duration_us;
+use crate::core::literal::parse_option_duration_us;
 use crate::core::trace::{self, Dir, Proto};
 use crate::core::url::DeviceUrl;
 use crate::core::{Clock, Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
@@ -501,7 +501,7 @@ pub fn open_sim(u: &DeviceUrl, clock: &Clock) -> Result<Box<dyn Device>> {
             let latency = match latency {
                 None => super::sim::Pace::REALISTIC.latency,
                 Some(l) => {
-                    Duration::from_micros(parse_duration_us(l).ok().filter(|us| *us >= 0).ok_or_else(|| {
+                    Duration::from_micros(parse_option_duration_us(l).ok().filter(|us| *us >= 0).ok_or_else(|| {
                         Error::usage(format!("`latency={l}` in {} is not a duration (e.g. 1ms)", u.text))
                     })? as u64)
                 }

@@ -193,7 +193,7 @@ pub fn parse(text: &str) -> Result<Decl> {
                 d.lines = Some(n);
             }
             "delay" => {
-                let us = crate::core::literal::parse_duration_us(v)
+                let us = crate::core::literal::parse_option_duration_us(v)
                     .map_err(|m| Error::usage(format!("delay={v}: {m}")).hint("e.g. delay=2ms"))?;
                 if us < 0 {
                     return Err(Error::usage(format!("delay={v} is negative")).hint("e.g. delay=2ms"));

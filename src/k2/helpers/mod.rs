@@ -165,9 +165,9 @@ pub fn parse_freq_hz(text: &str) -> std::result::Result<f64, String> {
     Ok(hz)
 }
 
-/// A duration like `500us`, `1ms`, `2s` → µs (via the core literal grammar).
+/// A pulse cycle or width: a bare number is µs (the units table), else `500us`, `1ms`, `2s`.
 pub fn parse_us(text: &str) -> std::result::Result<u64, String> {
-    let us = crate::core::literal::parse_duration_us(text)?;
+    let us = crate::core::literal::parse_pulse_time_us(text)?;
     if us <= 0 {
         return Err(format!("`{text}` is not a positive duration"));
     }

@@ -30,7 +30,7 @@
 //! test can correlate what plcsh reported with what was injected.
 
 use super::inputs::{pin_name, Pin};
-use crate::core::literal::parse_duration_us;
+use crate::core::literal::parse_option_duration_us;
 use crate::k2::operand::{parse_expr, Area};
 use std::time::Duration;
 
@@ -197,7 +197,7 @@ pub struct Spec {
 }
 
 fn dur(v: &str, key: &str) -> Result<Duration, String> {
-    let us = parse_duration_us(v).map_err(|m| format!("{key}={v}: {m}"))?;
+    let us = parse_option_duration_us(v).map_err(|m| format!("{key}={v}: {m}"))?;
     u64::try_from(us).map(Duration::from_micros).map_err(|_| format!("{key}={v}: must not be negative"))
 }
 

@@ -23,7 +23,7 @@
 use super::drive::DEFAULT_FAULT;
 use super::faults::{FaultKind, LineFault};
 use super::SimLine;
-use crate::core::literal::parse_duration_us;
+use crate::core::literal::parse_option_duration_us;
 use crate::core::{Error, ErrorKind, Result};
 use crate::servo::objects;
 use serde_json::{json, Value as Json};
@@ -133,7 +133,7 @@ pub fn parse(words: &[(usize, &str)]) -> Result<Request> {
                 "delay" => {
                     known(&["count"])?;
                     let &[(c, d)] = args else { return Err(usage("fault delay needs a duration, e.g. 50ms", first.0)) };
-                    let us = parse_duration_us(d).map_err(|m| usage(m, c))?;
+                    let us = parse_option_duration_us(d).map_err(|m| usage(m, c))?;
                     Control::Line(FaultKind::Delay(Duration::from_micros(us.max(0) as u64)), count()?)
                 }
                 "abort" => {

@@ -57,7 +57,8 @@ fn use_cmd(sh: &mut Shell, args: Args) -> Result<Outcome> {
     Ok(o.quiet())
 }
 
-fn devices(sh: &mut Shell, _args: Args) -> Result<Outcome> {
+fn devices(sh: &mut Shell, args: Args) -> Result<Outcome> {
+    super::no_arguments("devices", args)?;
     let (rows, o) = super::profiles::devices_and_profiles(&sh.session);
     Ok(o.table(&["name", "family", "model", "url", "writes"], rows))
 }

@@ -30,6 +30,11 @@ fn help(sh: &mut Shell, args: Args) -> Result<Outcome> {
         let names: Vec<&str> = COMMANDS.iter().map(|c| c.name).collect();
         return Ok(Outcome::new("help").text(command_list()).with("commands", names));
     }
+    let mut words = topic.split_whitespace();
+    let first = words.next().unwrap_or("").to_ascii_lowercase();
+    if let (Some(c), Some(sub)) = (super::find(&first), words.next()) {
+        return sub_help(c, sub, words.next(), args);
+    }
     if let Some(c) = super::find(&topic.to_ascii_lowercase()) {
         let mut text = crate::core::text::wrap(c.usage, 78).join("\n    ");
         for line in crate::core::text::wrap(c.summary, 76) {
@@ -60,7 +65,69 @@ fn help(sh: &mut Shell, args: Args) -> Result<Outcome> {
     Ok(o)
 }
 
-fn quit(sh: &mut Shell, _args: Args) -> Result<Outcome> {
+/// The forms of a command's sub-commands, read from its usage line: the line split at `|`,
+/// a piece that starts with a sub-command's name (after the command and `[DEVICE]`) starting
+/// a new form, any other piece (`rel POS` of `move abs|rel POS`) continuing the last one.
+pub fn sub_forms(c: &CommandSpec) -> Vec<(&'static str, String)> {
+    let mut forms: Vec<(&'static str, String)> = Vec::new();
+    for piece in c.usage.split('|') {
+        let words: Vec<&str> = piece.split_whitespace().collect();
+        let lead = words.iter().take_while(|w| **w == c.name || **w == "[DEVICE]").count();
+        let starts = words.get(lead).and_then(|w| c.subcommands.iter().find(|s| *s == w));
+        match (starts, forms.last_mut()) {
+            (Some(sub), _) => forms.push((sub, format!("{} {}", c.name, words[lead..].join(" ")))),
+            (None, Some(last)) => {
+                last.1.push('|');
+                last.1.push_str(piece.trim_end());
+            }
+            (None, None) => {}
+        }
+    }
+    for f in &mut forms {
+        f.1 = f.1.trim().to_string();
+    }
+    forms
+}
+
+/// `help COMMAND SUB`: the forms of one sub-command, with the details of those that have
+/// a grammar of their own, or an error naming the sub-commands there are.
+fn sub_help(c: &CommandSpec, sub: &str, extra: Option<&str>, args: Args) -> Result<Outcome> {
+    let sub_l = sub.to_ascii_lowercase();
+    if let Some(w) = extra {
+        return Err(crate::core::Error::usage(format!(
+            "help takes a command and one sub-command (got `{w}` after them)"
+        ))
+        .hint(format!("help {} {sub_l}", c.name))
+        .column(args.offset));
+    }
+    let forms: Vec<String> = sub_forms(c).into_iter().filter(|(s, _)| *s == sub_l).map(|(_, f)| f).collect();
+    if forms.is_empty() {
+        return Err(crate::core::Error::usage(format!("`{}` has no sub-command `{sub}`", c.name))
+            .hint(if c.subcommands.is_empty() {
+                format!("help {}", c.name)
+            } else {
+                format!("sub-commands: {}", c.subcommands.join(", "))
+            })
+            .column(args.offset));
+    }
+    let mut lines: Vec<String> = forms.iter().flat_map(|f| crate::core::text::wrap(f, 78)).collect();
+    if let Some(detail) = SUB_DETAILS.iter().find(|d| d.0 == c.name && d.1 == sub_l).map(|d| d.2) {
+        lines.extend(crate::core::text::wrap(detail, 76).into_iter().map(|l| format!("  {l}")));
+    }
+    Ok(Outcome::new("help").text(lines.join("\n")).with("command", c.name).with("subcommand", sub_l))
+}
+
+/// Sub-commands with a grammar of their own, shown by `help COMMAND SUB` (each from the
+/// one place that grammar is defined).
+const SUB_DETAILS: &[(&str, &str, &str)] = &[
+    ("sim", "fault", crate::k2::sim::fault::USAGE),
+    ("sim", "faults", crate::k2::sim::fault::USAGE),
+    ("servo", "sim", crate::servo::sim::control::USAGE),
+    ("umpk", "sim", crate::umpk::sim::control::WORDS),
+];
+
+fn quit(sh: &mut Shell, args: Args) -> Result<Outcome> {
+    super::no_arguments("quit", args)?;
     sh.quit = true;
     Ok(Outcome::new("quit").quiet())
 }

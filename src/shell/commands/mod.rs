@@ -27,7 +27,7 @@ mod umpk;
 mod watch;
 
 use super::{Args, Shell};
-use crate::core::Result;
+use crate::core::{Error, Result};
 use crate::output::Outcome;
 
 /// One shell command.
@@ -80,6 +80,17 @@ pub fn find(name: &str) -> Option<&'static CommandSpec> {
 }
 
 /// "did you mean" for an unknown command.
+/// Refuses words after a command that takes none (`devices x`, `quit now`): extra words are
+/// never ignored.
+pub fn no_arguments(name: &str, args: Args) -> Result<()> {
+    match args.text.split_whitespace().next() {
+        None => Ok(()),
+        Some(w) => Err(Error::usage(format!("{name} takes nothing after it (got `{w}`)"))
+            .hint(name.to_string())
+            .column(args.offset)),
+    }
+}
+
 pub fn suggest(name: &str) -> String {
     let mut best: Vec<(usize, &str)> =
         COMMANDS.iter().map(|c| (crate::core::text::edit_distance(name, c.name), c.name)).collect();

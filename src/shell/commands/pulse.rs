@@ -211,7 +211,7 @@ fn pwm_plan(
         None => return Err(Error::usage("pwm needs cycle= (or freq=)").column(col).hint(PWM.usage)),
     };
     let (wc, wt) = opt(opts, "width").ok_or_else(|| Error::usage("pwm needs width=").hint(PWM.usage))?;
-    let width = crate::core::literal::parse_duration_us(wt).map_err(|m| value_err(wc, m))?;
+    let width = crate::core::literal::parse_pulse_time_us(wt).map_err(|m| value_err(wc, m))?;
     if width < 0 {
         return Err(value_err(wc, "the width cannot be negative"));
     }

@@ -67,6 +67,14 @@ fn servo(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let ops: &mut dyn ServoOps = entry.device.as_servo().expect("picked a servo");
     let w = Waiter { clock, interrupt: &interrupt };
     let at = |c: usize| args.offset + c;
+    if let (true, Some(&(c, w))) =
+        (matches!(sub, "status" | "enable" | "disable" | "fault-reset" | "quickstop"), rest.first())
+    {
+        return Err(Error::usage(format!("servo {sub} takes nothing after it (got `{w}`)"))
+            .hint(format!("servo {sub}"))
+            .column(at(c))
+            .device(&name));
+    }
     // Every error of a subcommand names the drive (a refusal by the write guard included).
     let r = (|| match sub {
         "status" => status(ops),

@@ -27,6 +27,19 @@ fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let mut it = args.text.split_whitespace();
     let sub = it.next().unwrap_or("time");
     let clock = sh.session.clock.clone();
+    // `sim time`, `sim step D`, `sim run` take nothing more: a trailing word (`sim step 1 s`,
+    // `sim time now`) is refused, never ignored.
+    let takes = match sub {
+        "time" | "run" => 0,
+        "step" => 1,
+        _ => usize::MAX,
+    };
+    if let Some(w) = args.text.split_whitespace().nth(1 + takes.min(8)).filter(|_| takes != usize::MAX) {
+        let form = if sub == "step" { "sim step DURATION (e.g. sim step 1s, sim step 500ms)" } else { SIM.usage };
+        return Err(Error::usage(format!("unexpected `{w}` after `sim {sub}`"))
+            .hint(form.to_string())
+            .column(args.offset + args.text.find(w).unwrap_or(0)));
+    }
     match sub {
         "time" => {}
         "step" => {

@@ -39,6 +39,9 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
     let name = k2cmd::name(sh, dev);
     let mut o = match sub {
         "inputs" => {
+            if let Some(w) = args.text.split_whitespace().nth(1) {
+                return Err(Error::usage(format!("sim inputs takes nothing after it (got `{w}`)")).hint(USAGE));
+            }
             let s = k2cmd::sim(sh, dev, "sim inputs")?;
             let list: Vec<String> = s.inputs.sources().iter().map(|s| s.describe()).collect();
             Outcome::new("sim")

@@ -14,7 +14,7 @@
 use super::k2cmd::{check_options, opt, value_err};
 use super::watch::{Mode, Render};
 use super::CommandSpec;
-use crate::core::literal::parse_duration_us;
+use crate::core::literal::parse_option_duration_us;
 use crate::core::{DataType, Error, Result, Value};
 use crate::output::Outcome;
 use crate::session::Reading;
@@ -437,7 +437,9 @@ fn monitor(sh: &mut Shell, dev: usize, rest: &[Word]) -> Result<Outcome> {
     let dur = |key: &str| -> Result<Option<Duration>> {
         opt(&opts, key)
             .map(|(c, v)| {
-                parse_duration_us(v).map(|us| Duration::from_micros(us.max(0) as u64)).map_err(|m| value_err(c, m))
+                parse_option_duration_us(v)
+                    .map(|us| Duration::from_micros(us.max(0) as u64))
+                    .map_err(|m| value_err(c, m))
             })
             .transpose()
     };

@@ -18,7 +18,7 @@
 //! without it), logged with its virtual time when it starts acting.
 
 use super::{Umpk, CYCLE_MS};
-use crate::core::literal::parse_duration_us;
+use crate::core::literal::parse_option_duration_us;
 use crate::core::{Error, Result};
 use serde_json::{json, Value as Json};
 use std::time::Duration;
@@ -117,7 +117,7 @@ fn for_window(words: &[&str]) -> Result<Option<Duration>> {
     for w in words {
         match w.split_once('=') {
             Some(("for", v)) => {
-                let us = parse_duration_us(v).map_err(|m| usage(format!("for={v}: {m}")))?;
+                let us = parse_option_duration_us(v).map_err(|m| usage(format!("for={v}: {m}")))?;
                 let us = u64::try_from(us).map_err(|_| usage(format!("for={v}: must not be negative")))?;
                 d = Some(Duration::from_micros(us));
             }

@@ -1,0 +1,207 @@
+//! Units that cannot surprise (README "Scripting reference: units"): for every command that
+//! takes a quantity, each spelling of the same amount — the bare number in the table's unit,
+//! and the number with each unit — gives the same result, the value the table says; and a
+//! trailing extra word is refused, never ignored. One table, one test.
+
+mod common;
+use common::*;
+use serde_json::Value;
+
+/// One quantity: a command template (`{}` is the quantity), the spellings that all mean the
+/// same amount, what the result must show for it, and how to read that from the JSON lines.
+struct Case {
+    what: &'static str,
+    template: &'static str,
+    spellings: &'static [&'static str],
+    expect: Value,
+    read: fn(&[Value]) -> Value,
+}
+
+fn last_with(lines: &[Value], cmd: &str) -> Value {
+    lines.iter().rev().find(|l| l["cmd"] == cmd).cloned().unwrap_or(Value::Null)
+}
+
+fn write_of(lines: &[Value], operand: &str) -> Value {
+    lines
+        .iter()
+        .flat_map(|l| l["writes"].as_array().cloned().unwrap_or_default())
+        .chain(lines.iter().flat_map(|l| {
+            l["results"]
+                .as_array()
+                .cloned()
+                .unwrap_or_default()
+                .into_iter()
+                .flat_map(|r| r["writes"].as_array().cloned().unwrap_or_default())
+        }))
+        .find(|w| w["operand"] == operand)
+        .map(|w| w["value"].clone())
+        .unwrap_or(Value::Null)
+}
+
+fn cases() -> Vec<Case> {
+    vec![
+        Case {
+            what: "pulse cycle (bare: µs)",
+            template: "pto 0 cycle={} count=10",
+            spellings: &["500", "500us", "500µs", "0.5ms"],
+            expect: 500.into(),
+            read: |l| write_of(l, "SMW68"),
+        },
+        Case {
+            what: "a 2 µs cycle is 2 µs, never 2 s",
+            template: "pto 0 cycle={} count=10",
+            spellings: &["2", "2us"],
+            expect: "value".into(),
+            read: |l| last_with(l, "pto")["error"]["kind"].clone(),
+        },
+        Case {
+            what: "PWM cycle (bare: µs)",
+            template: "pwm 0 cycle={} width=50us",
+            spellings: &["100", "100us", "0.1ms"],
+            expect: 100.into(),
+            read: |l| write_of(l, "SMW68"),
+        },
+        Case {
+            what: "PWM width (bare: µs)",
+            template: "pwm 0 cycle=100us width={}",
+            spellings: &["50", "50us", "0.05ms"],
+            expect: 50.into(),
+            read: |l| write_of(l, "SMW70"),
+        },
+        Case {
+            what: "Lua pulse cycle (bare: µs)",
+            template: "lua plc:pto(0, {cycle={}, count=10})",
+            spellings: &["500", "'500us'", "'0.5ms'"],
+            expect: 500.into(),
+            read: |l| write_of(l, "SMW68"),
+        },
+        Case {
+            what: "frequency (bare: Hz)",
+            template: "pto 0 freq={} count=10",
+            spellings: &["2000", "2kHz", "2khz", "2k"],
+            expect: 500.into(),
+            read: |l| write_of(l, "SMW68"),
+        },
+        Case {
+            what: "sim step (bare: ms)",
+            template: "sim step {}",
+            spellings: &["1500", "1500ms", "1.5s", "1s500ms", "1500000us"],
+            expect: 1_500_000.into(),
+            read: |l| last_with(l, "sim")["time_us"].clone(),
+        },
+        Case {
+            what: "watch every= (bare: ms)",
+            template: "watch VW0 every={} count=2",
+            spellings: &["500", "500ms", "0.5s"],
+            expect: 500_000.into(),
+            read: |l| l.iter().find(|x| x["sample"] == 1).map(|x| x["t_us"].clone()).unwrap_or(Value::Null),
+        },
+        Case {
+            what: "trace every= (bare: ms)",
+            template: "trace VW0 every={} for=40ms",
+            spellings: &["10", "10ms", "10000us", "0.01s"],
+            expect: 10_000.into(),
+            read: |l| last_with(l, "trace")["every_us"].clone(),
+        },
+        Case {
+            what: "trace for= (bare: ms)",
+            template: "trace VW0 every=10ms for={}",
+            spellings: &["40", "40ms", "0.04s"],
+            expect: 5.into(),
+            read: |l| last_with(l, "trace")["samples"].clone(),
+        },
+        Case {
+            what: "wait timeout= (bare: ms)",
+            template: "wait event 28 timeout={}",
+            spellings: &["1500", "1500ms", "1.5s"],
+            expect: "no event 28 within 1.500000s".into(),
+            read: |l| last_with(l, "wait")["error"]["message"].clone(),
+        },
+        Case {
+            what: "fault windows after=/for= (bare: ms)",
+            template: "sim fault no-reply after={} for=1s",
+            spellings: &["500", "500ms", "0.5s"],
+            expect: 500_000_000u64.into(),
+            read: |l| last_with(l, "sim fault")["fault"]["from_ns"].clone(),
+        },
+        Case {
+            what: "wire delay= (bare: ms)",
+            template: "sim wire plc:Q0.0 -> plc:I0.3 delay={}",
+            spellings: &["2", "2ms", "2000us"],
+            expect: true.into(),
+            read: |l| Value::from(last_with(l, "sim")["message"].as_str().unwrap_or("").contains("delay 2000 µs")),
+        },
+        Case {
+            what: "servo speed (bare: rpm)",
+            template: "servo enable; servo move rel 10000 speed={} acc=100",
+            spellings: &["300", "300rpm"],
+            expect: 819_200.into(),
+            read: |l| last_with(l, "servo")["profile_velocity"].clone(),
+        },
+        Case {
+            what: "servo acceleration (bare: rps/s)",
+            template: "servo enable; servo move rel 10000 speed=300 acc={}",
+            spellings: &["100", "100rps/s"],
+            expect: 16_384.into(),
+            read: |l| last_with(l, "servo")["profile_acceleration"].clone(),
+        },
+        Case {
+            what: "servo position (bare: increments)",
+            template: "servo enable; servo move rel {} speed=300 acc=100",
+            spellings: &["10000", "10000inc", "1rev"],
+            expect: 10_000.into(),
+            read: |l| last_with(l, "servo")["target_position"].clone(),
+        },
+    ]
+}
+
+fn run_json(line: &str) -> (std::process::Output, Vec<Value>) {
+    let o = run(&["--json", "--time", "stepped", "--state", "none", "-c", line], "");
+    let lines = stdout(&o).lines().filter_map(|l| serde_json::from_str(l).ok()).collect();
+    (o, lines)
+}
+
+#[test]
+fn every_spelling_of_a_quantity_means_what_the_units_table_says() {
+    let mut checked = 0;
+    for c in cases() {
+        for s in c.spellings {
+            let line = c.template.replace("{}", s);
+            let (o, lines) = run_json(&line);
+            assert_eq!((c.read)(&lines), c.expect, "{}: `{line}`\n{}", c.what, both(&o));
+            checked += 1;
+        }
+    }
+    assert!(checked >= 50, "{checked}");
+}
+
+#[test]
+fn a_trailing_extra_word_is_refused_never_ignored() {
+    let mut lines: Vec<String> = cases()
+        .iter()
+        .filter(|c| c.expect != "value" && !c.template.starts_with("lua"))
+        .map(|c| format!("{} extra", c.template.replace("{}", c.spellings[0])))
+        .collect();
+    lines.extend(
+        [
+            "sim step 1 s",
+            "sim step 500ms extra",
+            "sim time now",
+            "sim run x",
+            "servo status foo",
+            "devices x",
+            "quit now",
+            "sim inputs x",
+        ]
+        .map(String::from),
+    );
+    for line in lines {
+        let (o, json) = run_json(&line);
+        assert!(!o.status.success(), "`{line}` was accepted:\n{}", both(&o));
+        let err =
+            json.iter().find(|l| l["ok"] == false).unwrap_or_else(|| panic!("`{line}`: no error line\n{}", both(&o)));
+        assert!(matches!(err["error"]["kind"].as_str(), Some("usage" | "operand" | "value")), "`{line}`: {err}");
+        // Nothing of the refused command ran: no write, no step of the clock.
+        assert!(json.iter().all(|l| l["writes"].is_null() || l["cmd"] != err["cmd"]), "`{line}`: {json:?}");
+    }
+}
