@@ -130,8 +130,14 @@ pub fn error_json(cmd: &str, e: &Error) -> serde_json::Value {
     serde_json::to_value(JsonErr { ok: false, cmd, error: e }).unwrap_or_default()
 }
 
-/// Writes one successful result.
+/// Writes one successful result. Its notes (`note: …`) go to standard error, so a pipeline
+/// reading the results gets only results; in JSON they are the line's `notes`.
 pub fn write_outcome(w: &mut dyn Write, style: Style, o: &Outcome) -> io::Result<()> {
+    if !style.json {
+        for n in &o.notes {
+            eprintln!("note: {n}");
+        }
+    }
     // One write per result: standard output flushes at every line, and a result of ten lines
     // would otherwise be ten system calls (a pipeline still gets each result as it comes).
     let mut text = Vec::new();
@@ -144,9 +150,6 @@ fn render_outcome(w: &mut dyn Write, style: Style, o: &Outcome) -> io::Result<()
     if style.json {
         serde_json::to_writer(&mut *w, &JsonOk { ok: true, outcome: o })?;
         return writeln!(w);
-    }
-    for n in &o.notes {
-        writeln!(w, "note: {n}")?;
     }
     match &o.view {
         View::Quiet => Ok(()),

@@ -205,3 +205,15 @@ fn a_trailing_extra_word_is_refused_never_ignored() {
         assert!(json.iter().all(|l| l["writes"].is_null() || l["cmd"] != err["cmd"]), "`{line}`: {json:?}");
     }
 }
+
+/// Notes and warnings are for the person, not the pipeline: on stderr in text mode, in the
+/// line's `notes` in JSON, never among the results on stdout.
+#[test]
+fn notes_go_to_stderr_and_into_json_never_to_stdout_text() {
+    let o = run(&["--time", "stepped", "--state", "none", "-c", "pto 0 cycle=70ms count=3"], "");
+    assert!(o.status.success(), "{}", both(&o));
+    assert!(!stdout(&o).contains("note:"), "{}", stdout(&o));
+    assert!(stderr(&o).contains("note: cycle 70000 µs uses the 1 ms time base"), "{}", stderr(&o));
+    let (_, lines) = run_json("pto 0 cycle=70ms count=3");
+    assert!(lines[0]["notes"][0].as_str().unwrap_or("").contains("1 ms time base"), "{lines:?}");
+}

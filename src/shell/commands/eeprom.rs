@@ -73,6 +73,7 @@ fn eeprom(sh: &mut Shell, args: Args) -> Result<Outcome> {
             let s = k2cmd::sim(sh, dev, "eeprom status")?;
             s.advance();
             let mut lines = vec![format!("backup area VB{first}…VB{last} ({} bytes)", last - first + 1)];
+            let mut warn = None;
             let elapsed = s.last.saturating_sub(s.backup.since).as_secs_f64();
             let mut data = serde_json::Map::new();
             if let Some((byte, total, session)) = s.backup.hottest() {
@@ -89,7 +90,7 @@ fn eeprom(sh: &mut Shell, args: Args) -> Result<Outcome> {
                         human(left)
                     ));
                     if left < 10.0 * 365.0 * 86_400.0 {
-                        lines.push("warning: this would wear the E2PROM within 10 years; keep frequently changing data out of the backup area (§2.2.8)".into());
+                        warn = Some("this would wear the E2PROM within 10 years; keep frequently changing data out of the backup area (§2.2.8)");
                     }
                     data.insert("wear_out_s".into(), serde_json::json!(left));
                 }
@@ -97,6 +98,9 @@ fn eeprom(sh: &mut Shell, args: Args) -> Result<Outcome> {
                 lines.push("no writes counted".into());
             }
             let mut o = Outcome::new("eeprom").text(lines.join("\n")).with("first", first).with("last", last);
+            if let Some(w) = warn {
+                o = o.note(format!("warning: {w}"));
+            }
             o.data.extend(data);
             o
         }

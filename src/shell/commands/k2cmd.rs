@@ -73,10 +73,9 @@ pub fn done_outcome(cmd: &str, device: String, d: Done) -> Outcome {
     for r in &d.reports {
         lines.push(r.clone());
     }
-    for n in &d.notes {
-        lines.push(format!("note: {n}"));
-    }
-    let mut o = Outcome::new(cmd).text(lines.join("\n")).with("reports", &d.reports).with("notes", &d.notes);
+    // Notes go to stderr with the other notes (`output`), and to `notes` in JSON.
+    let mut o = Outcome::new(cmd).text(lines.join("\n")).with("reports", &d.reports);
+    o.notes = d.notes.clone();
     o.device = Some(device);
     o.writes = readings(&d.writes);
     o
