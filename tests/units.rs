@@ -217,3 +217,32 @@ fn notes_go_to_stderr_and_into_json_never_to_stdout_text() {
     let (_, lines) = run_json("pto 0 cycle=70ms count=3");
     assert!(lines[0]["notes"][0].as_str().unwrap_or("").contains("1 ms time base"), "{lines:?}");
 }
+
+/// One vocabulary: the clock has its own word (`sim clock real|stepped`), `sim run` is
+/// refused as ambiguous (the clock, or the CPU's `sim cpu run`).
+#[test]
+fn the_clock_has_its_own_word_and_sim_run_is_refused() {
+    let (o, lines) = run_json("sim step 1s; sim clock real; sim clock stepped; sim step 1s; sim clock");
+    assert!(o.status.success(), "{}", both(&o));
+    let last = lines.last().unwrap();
+    assert_eq!(last["stepped"], true);
+    assert!(last["time_us"].as_u64().unwrap() >= 2_000_000, "{last}");
+    let (o, lines) = run_json("sim run");
+    assert!(!o.status.success());
+    assert!(lines[0]["error"]["hint"].as_str().unwrap().contains("sim clock real"), "{lines:?}");
+}
+
+/// Habits from other tools get messages that name the mistake; `pwm` takes `strict` like
+/// `pls`, `pto` and `profile`.
+#[test]
+fn habits_from_other_tools_are_named_and_pwm_takes_strict() {
+    let (_, l) = run_json("set VW100:=5");
+    assert!(l[0]["error"]["message"].as_str().unwrap().contains("`:=` is the ST assignment"), "{l:?}");
+    let (_, l) = run_json("get VW0..VW20..");
+    assert!(l[0]["error"]["message"].as_str().unwrap().contains("a range has one `..`"), "{l:?}");
+    let (o, l) = run_json("pto 0 freq=10Hz count=100; pwm 0 cycle=100 width=50 strict");
+    assert!(!o.status.success());
+    assert_eq!(l.last().unwrap()["error"]["kind"], "state", "{l:?}");
+    let (o, _) = run_json("pwm 0 cycle=100 width=50; pwm 0 cycle=100 width=20 strict");
+    assert!(o.status.success(), "changing a running PWM's duty is no conflict: {}", both(&o));
+}

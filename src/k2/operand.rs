@@ -254,6 +254,12 @@ pub fn parse_expr(text: &str) -> Result<Vec<K2Operand>> {
     let lead = text.len() - text.trim_start().len();
     let t = text.trim();
     if let Some(dots) = t.find("..") {
+        if let Some(more) = t[dots + 2..].find("..") {
+            return Err(op_err(
+                lead + dots + 2 + more,
+                format!("a range has one `..`: FIRST..LAST, e.g. {}", &t[..dots + 2 + more]),
+            ));
+        }
         let a = parse_one(&t[..dots]).map_err(|e| e.shift(lead))?;
         let b = parse_one(&t[dots + 2..]).map_err(|e| e.shift(lead + dots + 2))?;
         if a.area != b.area || std::mem::discriminant(&a.width) != std::mem::discriminant(&b.width) || a.view != b.view

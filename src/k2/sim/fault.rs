@@ -239,7 +239,8 @@ pub fn parse(text: &str) -> Result<Spec, String> {
                 .ok_or_else(|| format!("`{c}` is not a Modbus exception code (1…255)"))?;
             FaultKind::Exception { code }
         }
-        "late" => {
+        // `delay` is the drive line's word for it: one vocabulary for faults.
+        "late" | "delay" => {
             let d = dur(take("a delay (e.g. late 300ms)")?, "late")?;
             FaultKind::Late { ms: d.as_millis() as u64 }
         }
@@ -280,7 +281,8 @@ pub fn parse(text: &str) -> Result<Spec, String> {
             "at" => spec.at = Some(dur(v, k)?),
             "after" => spec.after = Some(dur(v, k)?),
             "for" => spec.duration = Some(dur(v, k)?),
-            "times" => {
+            // `count=` is the drive line's word for it.
+            "times" | "count" => {
                 spec.times = Some(v.parse().ok().filter(|n| *n > 0).ok_or(format!("times={v}: a count from 1"))?)
             }
             "freq" => match &mut spec.kind {
@@ -431,6 +433,11 @@ mod tests {
 
     fn ms(n: u64) -> Duration {
         Duration::from_millis(n)
+    }
+
+    #[test]
+    fn the_drive_lines_words_mean_the_same() {
+        assert_eq!(parse("delay 300ms count=2").unwrap(), parse("late 300ms times=2").unwrap());
     }
 
     #[test]

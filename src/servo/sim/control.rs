@@ -104,8 +104,9 @@ pub fn parse(words: &[(usize, &str)]) -> Result<Request> {
             None => Ok(()),
         }
     };
+    // `times=` (the K2's word) is `count=`; `late` is `delay`: one vocabulary for faults.
     let count = || -> Result<Option<u32>> {
-        match opt("count") {
+        match opt("count").or_else(|| opt("times")) {
             None => Ok(Some(1)),
             Some((_, "all")) => Ok(None),
             Some((c, v)) => u32::try_from(number(v, c)?)
@@ -122,7 +123,7 @@ pub fn parse(words: &[(usize, &str)]) -> Result<Request> {
             let args = if rest.is_empty() { rest } else { &rest[1..] };
             match kind {
                 "no-reply" | "bad-checksum" | "drop-echo" => {
-                    known(&["count"])?;
+                    known(&["count", "times"])?;
                     let k = match kind {
                         "no-reply" => FaultKind::NoReply,
                         "bad-checksum" => FaultKind::BadChecksum,
@@ -130,14 +131,14 @@ pub fn parse(words: &[(usize, &str)]) -> Result<Request> {
                     };
                     Control::Line(k, count()?)
                 }
-                "delay" => {
-                    known(&["count"])?;
+                "delay" | "late" => {
+                    known(&["count", "times"])?;
                     let &[(c, d)] = args else { return Err(usage("fault delay needs a duration, e.g. 50ms", first.0)) };
                     let us = parse_option_duration_us(d).map_err(|m| usage(m, c))?;
                     Control::Line(FaultKind::Delay(Duration::from_micros(us.max(0) as u64)), count()?)
                 }
                 "abort" => {
-                    known(&["count"])?;
+                    known(&["count", "times"])?;
                     let &[(oc, o), (cc, code)] = args else {
                         return Err(usage("fault abort needs an object and an abort code, e.g. fault abort target_position 16#06090030", first.0));
                     };
@@ -356,6 +357,9 @@ mod tests {
 
     #[test]
     fn the_grammar() {
+        // One vocabulary with the K2's faults: `late` is `delay`, `times=` is `count=`.
+        assert_eq!(p("fault late 50ms times=2").unwrap().control, p("fault delay 50ms count=2").unwrap().control);
+        assert_eq!(p("fault no-reply times=3").unwrap().control, Control::Line(FaultKind::NoReply, Some(3)));
         assert_eq!(p("fault").unwrap().control, Control::DriveFault(DEFAULT_FAULT));
         assert_eq!(p("fault 16#2310").unwrap().control, Control::DriveFault(0x2310));
         assert_eq!(

@@ -103,6 +103,15 @@ fn set(sh: &mut Shell, args: Args) -> Result<Outcome> {
         let Some(eq) = p.find('=') else {
             return Err(Error::syntax(format!("`{p}` is not OPERAND=VALUE")).column(column).hint(SET.usage));
         };
+        if p[..eq].ends_with(':') {
+            return Err(Error::syntax(format!(
+                "`:=` is the ST assignment; plcsh writes `{}={}`",
+                p[..eq - 1].trim(),
+                p[eq + 1..].trim()
+            ))
+            .column(column + eq - 1)
+            .hint(SET.usage));
+        }
         let vtext = &p[eq + 1..];
         let vlead = vtext.len() - vtext.trim_start().len();
         items.push(SetItem {

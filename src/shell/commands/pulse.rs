@@ -40,7 +40,7 @@ pub const PTO: CommandSpec = CommandSpec {
 pub const PWM: CommandSpec = CommandSpec {
     name: "pwm",
     aliases: &[],
-    usage: "pwm N cycle=1ms width=250us [async]",
+    usage: "pwm N cycle=1ms width=250us [async] [strict]",
     summary: "start PWM on channel N (writes SMB67=16#D3, SMW68, SMW70, then PLS)",
     subcommands: &[],
     run: pwm,
@@ -67,7 +67,7 @@ fn instruction(sh: &mut Shell, args: Args, cmd: &str, usage: &str) -> Result<Out
     }
     let (dev, ch) = k2cmd::channel(sh, word, "pulse channel", 3)?;
     let name = k2cmd::name(sh, dev);
-    let warning = if cmd == "pls" { busy_check(sh, dev, ch, strict)? } else { None };
+    let warning = if cmd == "pls" { busy_check(sh, dev, ch, strict, "PLS")? } else { None };
     let k2 = k2cmd::k2(sh, dev)?;
     let report = if cmd == "pls" { k2.pls(ch) } else { k2.pstop(ch) }.map_err(|e| e.device(&name))?;
     let sim = sh.session.simulated(dev);
@@ -78,18 +78,22 @@ fn instruction(sh: &mut Shell, args: Args, cmd: &str, usage: &str) -> Result<Out
 
 /// Before a PLS (or `pto`/`profile`, which end in one): a channel still busy would have its
 /// running train replaced. A warning by default; an error with `strict`.
-fn busy_check(sh: &mut Shell, dev: usize, ch: u8, strict: bool) -> Result<Option<String>> {
+fn busy_check(sh: &mut Shell, dev: usize, ch: u8, strict: bool, by: &str) -> Result<Option<String>> {
     let (model, _) = model_of(sh, dev)?;
     let name = k2cmd::name(sh, dev);
     let Some(what) = hp::busy(sh.session.entry(dev).device.as_mut(), model, ch).map_err(|e| e.device(&name))? else {
         return Ok(None);
     };
+    // A new cycle/width for a running PWM is how its duty is changed, not a conflict.
+    if by == "PWM" && what.starts_with("PWM") {
+        return Ok(None);
+    }
     if strict {
-        return Err(Error::state(format!("{what}: PLS {ch} would replace it; nothing was written"))
+        return Err(Error::state(format!("{what}: {by} {ch} would replace it; nothing was written"))
             .device(&name)
             .hint(format!("wait for it (pto status {ch}), stop it (pstop {ch}), or drop `strict` to replace it")));
     }
-    Ok(Some(format!("{what}; PLS {ch} replaced it (add `strict` to refuse instead)")))
+    Ok(Some(format!("{what}; {by} {ch} replaced it (add `strict` to refuse instead)")))
 }
 
 fn pls(sh: &mut Shell, args: Args) -> Result<Outcome> {
@@ -170,7 +174,7 @@ fn pto(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let (model, _) = model_of(sh, dev)?;
     let name = k2cmd::name(sh, dev);
     let plan = hp::plan_pto(model, ch, rate, n).map_err(|e| e.device(&name))?;
-    let warning = busy_check(sh, dev, ch, strict)?;
+    let warning = busy_check(sh, dev, ch, strict, "PLS")?;
     let mut o = run_plan(sh, dev, "pto", &plan)?;
     o.notes.extend(warning);
     Ok(o)
@@ -181,11 +185,12 @@ fn pwm(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let (pos, opts) = lex::options(&w);
     check_options(&opts, &["cycle", "width", "freq"], PWM.usage)?;
     let word = *pos.first().ok_or_else(|| Error::usage(PWM.usage).column(args.offset))?;
-    let mut sync = true;
+    let (mut sync, mut strict) = (true, false);
     for p in &pos[1..] {
         match p.1.to_ascii_lowercase().as_str() {
             "async" => sync = false,
             "sync" => sync = true,
+            "strict" => strict = true,
             _ => return Err(Error::usage(format!("unexpected `{}`", p.1)).column(p.0).hint(PWM.usage)),
         }
     }
@@ -193,7 +198,12 @@ fn pwm(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let (model, _) = model_of(sh, dev)?;
     let name = k2cmd::name(sh, dev);
     let plan = pwm_plan(model, ch, &opts, sync, args.offset).map_err(|e| e.device(&name))?;
-    run_plan(sh, dev, "pwm", &plan)
+    // As pls/pto/profile: a running train on the channel is replaced with a note, or
+    // refused with `strict`.
+    let warning = busy_check(sh, dev, ch, strict, "PWM")?;
+    let mut o = run_plan(sh, dev, "pwm", &plan)?;
+    o.notes.extend(warning);
+    Ok(o)
 }
 
 /// `pwm`'s options, from the typed text to the plan (the fuzz target `pulse` runs this too).
@@ -345,7 +355,7 @@ fn profile(sh: &mut Shell, args: Args) -> Result<Outcome> {
         return Ok(o);
     }
     // The run's report already says "PTO0 (Q0.0): N pulses in K segments, T s": one line per fact.
-    let warning = busy_check(sh, dev, ch, strict)?;
+    let warning = busy_check(sh, dev, ch, strict, "PLS")?;
     let mut o = run_plan(sh, dev, "profile", &pr.plan)?;
     o.notes.extend(warning);
     Ok(o.with("timeline", &tl))

@@ -1,4 +1,5 @@
-//! `sim time`, `sim step DURATION`, `sim run`: the session's virtual clock; `sim input`,
+//! `sim time`, `sim step DURATION`, `sim clock [real|stepped]`: the session's virtual clock
+//! (`sim run` is refused: the clock's word is `sim clock real`, the CPU's `sim cpu run`); `sim input`,
 //! `sim quad`, `sim inputs`: simulated signals on the PLC's inputs for the high-speed
 //! counters; `sim retain`: battery-retained ranges; `sim snapshot`, `sim snapshots`: saved
 //! simulator states.
@@ -14,10 +15,10 @@ use std::time::Duration;
 pub const SIM: CommandSpec = CommandSpec {
     name: "sim",
     aliases: &[],
-    usage: "sim time | sim step DURATION | sim run | sim input I0.1 freq=1kHz [dir=up|down] | sim input I0.1 off | sim quad A B freq=1kHz | sim inputs | sim retain RANGES|none | sim program load FILE.il | sim program | sim cpu run|stop|pause | sim scan [N] | sim break LINE | sim stepi [N] | sim stepn | sim wire FROM -> TO [lines=N] [delay=D] | sim wires | sim unwire TERMINAL|all | sim snapshot save|restore NAME | sim snapshots | sim fault KIND … | sim faults",
+    usage: "sim time | sim step DURATION | sim clock [real|stepped] | sim input I0.1 freq=1kHz [dir=up|down] | sim input I0.1 off | sim quad A B freq=1kHz | sim inputs | sim retain RANGES|none | sim program load FILE.il | sim program | sim cpu run|stop|pause | sim scan [N] | sim break LINE | sim stepi [N] | sim stepn | sim wire FROM -> TO [lines=N] [delay=D] | sim wires | sim unwire TERMINAL|all | sim snapshot save|restore NAME | sim snapshots | sim fault KIND … | sim faults",
     summary: "the simulator's clock (show, step and keep stepped, follow the wall clock), input signals for the counters, retained ranges, the CPU running an IL program, wiring between simulated devices, snapshots of the simulated state, injected faults",
     subcommands: &[
-        "time", "step", "run", "input", "quad", "inputs", "retain", "program", "cpu", "stop", "pause", "switch", "scan", "break", "stepi",
+        "time", "step", "clock", "input", "quad", "inputs", "retain", "program", "cpu", "stop", "pause", "switch", "scan", "break", "stepi",
         "stepn", "wire", "wires", "unwire", "snapshot", "snapshots", "fault", "faults",
     ],
     run: sim,
@@ -31,7 +32,7 @@ fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
     // `sim time now`) is refused, never ignored.
     let takes = match sub {
         "time" | "run" => 0,
-        "step" => 1,
+        "step" | "clock" => 1,
         _ => usize::MAX,
     };
     if let Some(w) = args.text.split_whitespace().nth(1 + takes.min(8)).filter(|_| takes != usize::MAX) {
@@ -60,7 +61,23 @@ fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
             }
             clock.step(step);
         }
-        "run" => clock.run(),
+        "clock" => match args.text.split_whitespace().nth(1).map(str::to_ascii_lowercase).as_deref() {
+            None => {}
+            Some("real") => clock.run(),
+            Some("stepped") => clock.step(Duration::ZERO),
+            Some(w) => {
+                return Err(Error::usage(format!("`{w}` is not a clock mode"))
+                    .hint("sim clock real (follow the wall clock) | sim clock stepped (move only with sim step)")
+                    .column(args.offset + args.text.find(w).unwrap_or(0)))
+            }
+        },
+        "run" => {
+            return Err(Error::usage("`sim run` is ambiguous: say which runs")
+                .hint(
+                    "the clock follows the wall clock: sim clock real; the simulated CPU runs its program: sim cpu run",
+                )
+                .column(args.offset))
+        }
         "input" if super::umpk::current_is_umpk(sh) => return super::umpk::sim_input(sh, args),
         "program" if super::umpk::current_is_umpk(sh) => return super::umpk::sim_program(sh, args),
         "input" | "quad" | "inputs" | "retain" => return super::siminputs::run(sh, sub, args),

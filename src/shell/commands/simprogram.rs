@@ -1,7 +1,8 @@
 //! `sim program load FILE.il | unload`, `sim program` (status), `sim cpu run|stop|pause`
 //! (`sim stop`, `sim pause` for short), `sim switch run|stop`, `sim scan [N]`: the
-//! simulated K2's CPU running an IL program (k2::sim::program). `sim run` keeps its
-//! meaning (the clock follows the wall clock); the CPU's RUN is `sim cpu run`.
+//! simulated K2's CPU running an IL program (k2::sim::program). The CPU's RUN is
+//! `sim cpu run`; the clock's mode is `sim clock real|stepped` (`sim run` is refused as
+//! ambiguous).
 
 use super::k2cmd;
 use crate::core::{Error, Result};

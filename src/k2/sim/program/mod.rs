@@ -309,7 +309,7 @@ impl K2Sim {
         self.plc.as_deref()
     }
 
-    /// Sets the mode by command (`sim run|stop|pause`). RUN with the switch at STOP stays
+    /// Sets the mode by command (`sim cpu run|stop|pause`). RUN with the switch at STOP stays
     /// in STOP (K2 §2.2.1).
     pub fn set_mode(&mut self, want: Mode) -> Result<Mode> {
         self.advance();
@@ -430,7 +430,7 @@ impl K2Sim {
         for _ in 0..n {
             let Some(p) = &self.plc else { break };
             if p.mode != Mode::Run || !p.has_program() {
-                return Err(Error::state(format!("the CPU is in {}: no scan runs", p.mode.name())).hint("sim run"));
+                return Err(Error::state(format!("the CPU is in {}: no scan runs", p.mode.name())).hint("sim cpu run"));
             }
             let t = p.next_scan.max(self.last);
             self.advance_with_interrupts(t);
