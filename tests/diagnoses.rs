@@ -203,3 +203,94 @@ fn rtu_noise_without_a_frame_is_shown_and_silence_is_still_silence() {
     let text = s.get(&["VW10"]).unwrap_err().to_string();
     assert!(text.contains("did not answer"), "{text}");
 }
+
+// ---------------------------------------------------------------------------------------------
+// The Kinco servo protocol as the FD5P manual's RS232 chapter describes it (§2): 10 bytes — id,
+// function (40 read; 4F/4B/43 read replies with 1/2/4 bytes), index low byte first, sub-index,
+// 4 data bytes low byte first, and a check byte that makes the sum of all 10 bytes 0 (mod 256).
+
+fn servo_request_len(b: &[u8]) -> Option<usize> {
+    (b.len() >= 10).then_some(10)
+}
+
+/// What the responder's drive holds: the statusword (6041.00) and the actual position (6063.00).
+fn servo_value(index: u16) -> u32 {
+    match index {
+        0x6041 => 0x0237,
+        0x6063 => 123_456,
+        _ => 0,
+    }
+}
+
+/// The reply to a read: 43 with four data bytes, as the manual's examples show.
+fn servo_reply(req: &[u8]) -> Vec<u8> {
+    let index = u16::from_le_bytes([req[2], req[3]]);
+    let mut f = vec![req[0], 0x43, req[2], req[3], req[4]];
+    f.extend(servo_value(index).to_le_bytes());
+    let sum = f.iter().fold(0u8, |s, b| s.wrapping_add(*b));
+    f.push(sum.wrapping_neg());
+    f
+}
+
+fn servo_session(r: &Responder) -> Session {
+    let mut s = Session::new(Clock::following());
+    s.open("axis", &format!("kinco:{}?id=1&timeout=200ms", r.path.display())).unwrap();
+    s
+}
+
+fn value(s: &mut Session, op: &str) -> plcsh::core::Result<i64> {
+    Ok(s.get(&[op])?[0].1.value.as_i64())
+}
+
+#[test]
+fn a_servo_reply_later_than_the_timeout_is_dropped_and_named_late() {
+    // The first request is answered 350 ms after it arrived (timeout 200 ms); the rest at once.
+    let r = responder(servo_request_len, |req, k| {
+        let mut acts = Vec::new();
+        if k == 0 {
+            acts.push(Act::Sleep(Duration::from_millis(350)));
+        }
+        acts.push(Act::Send(servo_reply(req)));
+        acts
+    });
+    let mut s = servo_session(&r);
+    let e = value(&mut s, "statusword").unwrap_err();
+    assert_eq!(e.kind, ErrorKind::Link, "{e}");
+    let text = e.to_string();
+    assert!(text.contains("likely cause: late replies") && text.contains("timeout="), "{text}");
+    assert!(!text.contains("wrong id") && !text.contains("does not exist"), "{text}");
+    // The next request gets its own answer, sent after the late reply was over.
+    assert_eq!(value(&mut s, "position_actual").unwrap(), 123_456);
+    let (seen, ends) = (r.seen(), r.ends());
+    assert_eq!(seen.len(), 2, "no probe after a late reply: {seen:?}");
+    assert!(seen[1].at >= ends[0], "the next request waited for the line to be quiet");
+}
+
+#[test]
+fn a_stale_servo_reply_is_skipped_and_never_blames_the_object() {
+    // The first request (the statusword) is answered 500 ms late with a 200 ms timeout: later
+    // than the quiet awaited after it, so the late frame arrives while the next request (the
+    // actual position, 6063.00) waits. It must be skipped, not taken as a reply to 6063.00,
+    // and 6063.00 must not be reported as missing on the drive.
+    let r = responder(servo_request_len, |req, k| {
+        let mut acts = Vec::new();
+        if k == 0 {
+            acts.push(Act::Sleep(Duration::from_millis(500)));
+        }
+        acts.push(Act::Send(servo_reply(req)));
+        acts
+    });
+    let mut s = servo_session(&r);
+    assert_eq!(value(&mut s, "statusword").unwrap_err().kind, ErrorKind::Link);
+    match value(&mut s, "position_actual") {
+        Ok(v) => assert_eq!(v, 123_456, "its own answer"),
+        Err(e) => {
+            let text = e.to_string();
+            assert!(!text.contains("does not exist"), "a stale frame blamed on the object: {text}");
+            assert!(text.contains("late replies"), "{text}");
+        }
+    }
+    // Whatever the timing, the line is in step afterwards.
+    assert_eq!(value(&mut s, "position_actual").unwrap(), 123_456);
+    assert_eq!(value(&mut s, "statusword").unwrap(), 0x0237);
+}
