@@ -639,3 +639,32 @@ print("lua ok")
     assert!(stdout(&o).contains("lua ok"));
     let _ = std::fs::remove_dir_all(&srv.dir);
 }
+
+#[test]
+fn a_command_of_the_wrong_form_is_refused_before_it_is_sent_naming_the_right_one() {
+    let srv = Server::start("form", &[]);
+    let script = "use lab\numpk send ?3FD\numpk send hello\numpk send :0000002FE\numpk send ?03FD\n";
+    let o = run(&["--json", "-v", "--device", &format!("lab=umpk:{}", srv.link.display())], script);
+    let lines = json_lines(&o);
+    let err = |k: usize| {
+        let e = &lines[k]["error"];
+        assert_eq!(e["kind"], "usage", "{}", lines[k]);
+        let m = e["message"].as_str().unwrap().to_string();
+        assert!(!m.contains("cable") && !m.contains("57600"), "not blamed on the line: {m}");
+        m
+    };
+    let m = err(1);
+    assert!(m.contains("`?3FD`") && m.contains("for controller info send ?03FD"), "{m}");
+    let m = err(2);
+    assert!(m.contains("`hello` is neither") && m.contains("?03FD"), "{m}");
+    let m = err(3);
+    assert!(m.contains("RECLEN 00 is 11") && m.contains(":00000002FE"), "{m}");
+    assert_eq!(lines[4]["ok"], true, "the right form is answered: {}", lines[4]);
+    // Nothing of the refused forms went on the line (the trace shows every frame sent).
+    let trace = stderr(&o);
+    assert!(trace.contains("3F 30 33 46 44"), "the trace shows ?03FD as sent:\n{trace}");
+    for sent in ["3F 33 46 44", "68 65 6C 6C 6F", "3A 30 30 30 30 30 30 32 46 45"] {
+        assert!(!trace.contains(sent), "{sent} was sent:\n{trace}");
+    }
+    let _ = std::fs::remove_dir_all(&srv.dir);
+}
