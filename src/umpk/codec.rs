@@ -428,12 +428,25 @@ impl Timing {
     }
 }
 
+/// System error codes (128–255) in the error history (§4.1.8). The manual names only 255;
+/// the others are codes plcsh's simulator records for what the manual leaves unnamed.
+pub mod syserr {
+    /// Output buffer overflow: a command sent before the previous reply was complete (§4.1).
+    pub const OUTPUT_OVERFLOW: u8 = 255;
+    /// Simulator: the program did not finish within the 10 ms cycle and was stopped.
+    pub const CYCLE_OVERRUN: u8 = 254;
+    /// Simulator: the program stopped on another fault.
+    pub const PROGRAM_FAULT: u8 = 253;
+}
+
 /// The meaning of an error-history code (§4.1.8).
 pub fn error_code_text(code: u8) -> String {
     match code {
         0 => "no error".into(),
         1..=127 => format!("user error {code} (set by the program)"),
-        255 => "system error 255: output buffer overflow — a command was sent before the previous reply was complete (§4.1)".into(),
+        syserr::OUTPUT_OVERFLOW => "system error 255: output buffer overflow — a command was sent before the previous reply was complete (§4.1)".into(),
+        syserr::CYCLE_OVERRUN => "system error 254 (plcsh's simulator: the program overran the 10 ms cycle and was stopped; Wait mode until reset)".into(),
+        syserr::PROGRAM_FAULT => "system error 253 (plcsh's simulator: the program stopped on a fault; Wait mode until reset)".into(),
         _ => format!("system error {code}"),
     }
 }
