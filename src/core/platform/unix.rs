@@ -122,3 +122,28 @@ pub fn interrupt_child(child: &std::process::Child) {
         libc::kill(child.id() as libc::pid_t, libc::SIGINT);
     }
 }
+
+#[cfg(test)]
+mod tests {
+    /// On Linux the content of a durable write exists without a name until it is named: a
+    /// process killed meanwhile leaves no file behind.
+    #[cfg(target_os = "linux")]
+    #[test]
+    fn an_unnamed_file_has_no_name_until_it_is_given_one() {
+        use std::io::Write;
+        let d = std::env::temp_dir().join(format!("plcsh-unnamed-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&d);
+        std::fs::create_dir_all(&d).unwrap();
+        let Some(mut f) = super::unnamed_file(&d) else {
+            eprintln!("no O_TMPFILE on this file system; the named temporary file is used");
+            return;
+        };
+        f.write_all(b"content").unwrap();
+        f.sync_all().unwrap();
+        assert_eq!(std::fs::read_dir(&d).unwrap().count(), 0, "nothing in the directory yet");
+        super::name_file(&f, &d.join(".x.tmp")).unwrap();
+        assert_eq!(std::fs::read(d.join(".x.tmp")).unwrap(), b"content");
+        assert!(super::name_file(&f, &d.join(".x.tmp")).is_err(), "an existing name is not replaced");
+        let _ = std::fs::remove_dir_all(&d);
+    }
+}
