@@ -294,3 +294,28 @@ fn a_stale_servo_reply_is_skipped_and_never_blames_the_object() {
     assert_eq!(value(&mut s, "position_actual").unwrap(), 123_456);
     assert_eq!(value(&mut s, "statusword").unwrap(), 0x0237);
 }
+
+#[test]
+fn rtu_over_tcp_a_corrupted_crc_points_at_the_gateway_settings() {
+    // A transparent gateway played by the test: one connection, each 8-byte request answered
+    // with a reply whose CRC's high byte is flipped.
+    let listener = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
+    let addr = listener.local_addr().unwrap();
+    std::thread::spawn(move || {
+        let Ok((mut s, _)) = listener.accept() else { return };
+        let mut req = [0u8; 8];
+        while s.read_exact(&mut req).is_ok() {
+            let mut reply = read_reply(&req);
+            let last = reply.len() - 1;
+            reply[last] ^= 0xFF;
+            let _ = s.write_all(&reply);
+        }
+    });
+    let mut s = Session::new(Clock::following());
+    s.open("gw", &format!("rtu+tcp://{addr}?model=K205-16DT&retries=0&timeout=300ms")).unwrap();
+    let e = s.get(&["VW10"]).unwrap_err();
+    let text = e.to_string();
+    assert_eq!(e.kind, ErrorKind::Link, "{text}");
+    assert!(text.starts_with("gw: ") && text.contains("invalid CRC") && !text.contains("did not answer"), "{text}");
+    assert!(e.hint.as_deref().is_some_and(|h| h.contains("gateway's serial settings")), "{text}");
+}
