@@ -331,10 +331,14 @@ pub fn fx_operand(data: &[u8]) {
     }
 }
 
-/// UMPK: the simulator's command reader (every byte received, replies taken), and the
-/// driver's reply reader for every command's shape, with and without echo.
+/// UMPK: the simulator's command reader (every byte received, replies taken), the driver's
+/// reply reader for every command's shape, with and without echo, and the form check of
+/// what `umpk send` is given (each line).
 pub fn umpk_reply(data: &[u8]) {
-    use crate::umpk::codec::{parse_exchange, Command, Monitor};
+    use crate::umpk::codec::{check_form, parse_exchange, Command, Monitor};
+    for line in data.split(|b| *b == b'\n') {
+        let _ = check_form(line);
+    }
     let mut sim = crate::umpk::sim::Umpk::new(&crate::umpk::model::MODELS[0], Clock::stepped());
     for chunk in data.chunks(17) {
         sim.receive(chunk);

@@ -236,7 +236,7 @@ impl Snapshot {
     /// Writes the snapshot to `path` (atomically: a crash leaves the old file or the new).
     pub fn save(&self, path: &Path) -> Result<()> {
         let text = serde_json::to_string(self).map_err(|e| Error::io("cannot encode the snapshot").cause(e))?;
-        crate::k2::sim::state::write_atomic(path, text.as_bytes())
+        crate::core::durable::write_atomic(path, text.as_bytes())
     }
 
     pub fn load(path: &Path) -> Result<Snapshot> {

@@ -209,3 +209,36 @@ fn retention_is_limited_to_the_models_size_and_counters_can_be_retained() {
         json_lines(&o)[0]["values"].as_array().unwrap().iter().map(|x| x["value"].as_i64().unwrap()).collect();
     assert_eq!(v, vec![77, 5]);
 }
+
+#[test]
+fn a_temporary_file_left_by_a_killed_writer_is_never_read_and_is_removed_at_start() {
+    let dir = scratch("stale");
+    let state = dir.join("state.json");
+    let s = state.to_str().unwrap();
+    let o = run(&["--state", s, "-c", "set VW3648=11"], "");
+    assert!(o.status.success(), "{}", stdout(&o));
+    // What a writer killed between writing and renaming leaves: a whole, valid state file
+    // under the temporary name, holding a value that was never acknowledged.
+    let other = dir.join("other.json");
+    let o = run(&["--state", other.to_str().unwrap(), "-c", "set VW3648=22"], "");
+    assert!(o.status.success(), "{}", stdout(&o));
+    let tmp = dir.join(".state.json.tmp");
+    std::fs::rename(&other, &tmp).unwrap();
+    let _ = std::fs::remove_file(dir.join(".other.json.lock"));
+    // The served K2 starts from the state file, and the leftover is gone once it is ready.
+    let served = serve(&["--tcp", "0", "--state", s]);
+    assert!(!tmp.exists(), "the leftover was removed at start");
+    let mut dev = open(&format!("tcp://{}?model=K205-16DT", served.ready["tcp"].as_str().unwrap()));
+    let op = dev.operands().parse("VW3648").unwrap()[0];
+    assert_eq!(dev.read(&[op]).unwrap(), vec![Value::Int(11)], "the leftover was not read as state");
+    drop(dev);
+    drop(served);
+    valid_and_alone(&dir, &state);
+    // A simulated UMPK's state file: the same.
+    let umpk = dir.join("umpk.json");
+    let tmp = dir.join(".umpk.json.tmp");
+    std::fs::write(&tmp, "{ half a file").unwrap();
+    let d = open(&format!("sim-umpk:UMPK16?state={}", umpk.display()));
+    assert!(!tmp.exists(), "the UMPK's leftover was removed when it opened");
+    drop(d);
+}

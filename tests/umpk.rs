@@ -679,3 +679,127 @@ fn the_control_channel_switches_what_the_lab_software_reads_on_the_served_line()
     assert!(stderr(&o).contains("I16 is not an input of the UMPK16 (I0…I15)"), "{}", stderr(&o));
     let _ = std::fs::remove_dir_all(&srv.dir);
 }
+
+#[test]
+fn a_command_of_the_wrong_form_is_refused_before_it_is_sent_naming_the_right_one() {
+    let srv = Server::start("form", &[]);
+    let script = "use lab\numpk send ?3FD\numpk send hello\numpk send :0000002FE\numpk send ?03FD\n";
+    let o = run(&["--json", "-v", "--device", &format!("lab=umpk:{}", srv.link.display())], script);
+    let lines = json_lines(&o);
+    let err = |k: usize| {
+        let e = &lines[k]["error"];
+        assert_eq!(e["kind"], "usage", "{}", lines[k]);
+        let m = e["message"].as_str().unwrap().to_string();
+        assert!(!m.contains("cable") && !m.contains("57600"), "not blamed on the line: {m}");
+        m
+    };
+    let m = err(1);
+    assert!(m.contains("`?3FD`") && m.contains("for controller info send ?03FD"), "{m}");
+    let m = err(2);
+    assert!(m.contains("`hello` is neither") && m.contains("?03FD"), "{m}");
+    let m = err(3);
+    assert!(m.contains("RECLEN 00 is 11") && m.contains(":00000002FE"), "{m}");
+    assert_eq!(lines[4]["ok"], true, "the right form is answered: {}", lines[4]);
+    // Nothing of the refused forms went on the line (the trace shows every frame sent).
+    let trace = stderr(&o);
+    assert!(trace.contains("3F 30 33 46 44"), "the trace shows ?03FD as sent:\n{trace}");
+    for sent in ["3F 33 46 44", "68 65 6C 6C 6F", "3A 30 30 30 30 30 30 32 46 45"] {
+        assert!(!trace.contains(sent), "{sent} was sent:\n{trace}");
+    }
+    let _ = std::fs::remove_dir_all(&srv.dir);
+}
+
+#[test]
+fn a_served_program_that_overruns_the_cycle_shows_in_the_error_history_and_the_status() {
+    let dir = std::env::temp_dir().join(format!("plcsh-umpk-{}-overrun-il", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let il = dir.join("loop.il");
+    std::fs::write(&il, "LD I0\nST Q0\nTOP:\nJMP TOP\n").unwrap();
+    let srv = Server::start("overrun", &["--umpk-state", "none", "--umpk-program", il.to_str().unwrap()]);
+    let url = format!("lab=umpk:{}", srv.link.display());
+    // What a terminal sees: the history holds 254 and the status word says Wait with errors.
+    let mut d = open(&format!("umpk:{}", srv.link.display()));
+    let u = drv(&mut d);
+    let deadline = Instant::now() + Duration::from_secs(5);
+    while u.errors().unwrap()[0] != 254 {
+        assert!(Instant::now() < deadline, "no error 254 in the history: {:?}", u.errors().unwrap());
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    let word = u.controller_info().unwrap().status;
+    let st = u.layout.decode(word);
+    assert!(!st.work && st.errors, "{st:?}");
+    drop(d);
+    let o = run(&["--device", &url], "use lab\numpk errors\numpk info\n");
+    let out = stdout(&o);
+    assert!(out.contains("254") && out.contains("overran the 10 ms cycle"), "{out}");
+    assert!(out.contains("Wait"), "{out}");
+    let _ = std::fs::remove_dir_all(&srv.dir);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn an_il_program_raises_user_codes_that_umpk_errors_shows() {
+    let dir = std::env::temp_dir().join(format!("plcsh-umpk-{}-user-error", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let il = dir.join("err.il");
+    std::fs::write(&il, "LD I7\nERROR 12\nLD I0\nST Q0\n").unwrap();
+    let url = format!("lab=sim-umpk:UMPK16?program={}", il.display());
+    let script = "use lab\nsim step 50ms\numpk errors\numpk sim input I7=1\nsim step 50ms\numpk errors\numpk info\n";
+    let o = run(&["--json", "--time", "stepped", "--device", &url], script);
+    let l = json_lines(&o);
+    assert_eq!(l[2]["errors"], serde_json::json!([0, 0, 0, 0, 0, 0, 0, 0]), "{}", l[2]);
+    assert_eq!(l[5]["errors"], serde_json::json!([12, 0, 0, 0, 0, 0, 0, 0]), "once, on the rising edge: {}", l[5]);
+    assert_eq!(l[6]["mode"], "Work", "the program keeps running: {}", l[6]);
+    assert_eq!(l[6]["status_bits"]["errors"], true);
+    let o = run(&["--time", "stepped", "--device", &url], "use lab\numpk sim input I7=1\nsim step 50ms\numpk errors\n");
+    assert!(stdout(&o).contains("user error 12"), "{}", stdout(&o));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn programming_a_binary_into_the_simulator_says_it_is_stored_not_executed() {
+    let dir = std::env::temp_dir().join(format!("plcsh-umpk-{}-binary-note", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = hex_file(&dir, "p.hex", &[Record::data(0, &[0x42; 64]), Record::end()]);
+    // In-process: the shell says so, in text and JSON, and names what the status shows.
+    let script = format!("use lab\numpk program {} run\numpk info\n", file.display());
+    let o = run(&["--json", "--device", "lab=sim-umpk:UMPK16"], &script);
+    let l = json_lines(&o);
+    assert_eq!(l[1]["executed"], false, "{}", l[1]);
+    let note = l[1]["note"].as_str().unwrap();
+    assert!(
+        note.contains("does not execute") && note.contains("Work mode") && note.contains("outputs stay off"),
+        "{note}"
+    );
+    assert_eq!(l[2]["mode"], "Work");
+    let o = run(&["--device", "lab=sim-umpk:UMPK16"], &script);
+    assert!(stdout(&o).contains("note: the simulator stores and verifies a programmed binary"), "{}", stdout(&o));
+    // Served: the server says so on its standard error when the end record is accepted.
+    let link = dir.join("ttyNote");
+    let mut child = plcsh()
+        .args(["sim", "serve", "--umpk-pty", link.to_str().unwrap(), "--umpk-state", "none"])
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut ready = String::new();
+    std::io::BufRead::read_line(&mut std::io::BufReader::new(child.stdout.take().unwrap()), &mut ready).unwrap();
+    assert!(ready.contains("\"ready\":true"), "{ready}");
+    let p = plcsh::umpk::hex::parse_file(&std::fs::read_to_string(&file).unwrap(), 3072).unwrap();
+    {
+        let mut d = open(&format!("umpk:{}", link.display()));
+        drv(&mut d).program(&p, None, &mut |_, _| {}).unwrap();
+    }
+    let (tx, rx) = std::sync::mpsc::channel();
+    let err = child.stderr.take().unwrap();
+    std::thread::spawn(move || {
+        for line in std::io::BufRead::lines(std::io::BufReader::new(err)).map_while(Result::ok) {
+            let _ = tx.send(line);
+        }
+    });
+    let line = rx.recv_timeout(Duration::from_secs(5)).expect("a note on the server's standard error");
+    assert!(line.contains("a binary was programmed") && line.contains("does not execute"), "{line}");
+    plcsh::core::platform::terminate_child(&child);
+    let _ = child.wait();
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -3,6 +3,7 @@
 
 pub mod clock;
 pub mod device;
+pub mod durable;
 pub mod error;
 pub mod link;
 pub mod literal;

@@ -100,6 +100,26 @@ impl Link {
     }
 }
 
+impl Link {
+    /// What to check when bytes arrive but do not make a valid reply: with a bad CRC the
+    /// frame was damaged on its way (Modbus over serial line V1.02 §2.5.1.2: the CRC covers
+    /// the whole frame), otherwise the line carries something that is not this PLC's reply.
+    fn garbled_hint(&self, bad_crc: bool) -> String {
+        let line = match self {
+            Link::Rtu { .. } => "the port settings (baud=, parity=, stop=) against the PLC port's, the wiring (RS485 A/B, ground, termination at both ends of a long line), and that no other master or device talks on the line",
+            Link::RtuOverTcp { .. } => "the gateway's serial settings (baud, parity, stop bits) against the PLC port's, the wiring from the gateway to the PLC, and that the gateway is in transparent (RTU) mode, not Modbus TCP",
+            Link::RtuRfc2217 { .. } => "the line settings (baud=, parity=, stop=) against the PLC port's and the wiring from the device server to the PLC",
+            Link::Tcp { .. } => "that HOST:PORT speaks Modbus TCP (an RTU gateway needs rtu+tcp://)",
+            Link::Attached { .. } => "what is at the other end of the stream",
+        };
+        if bad_crc {
+            format!("the bytes were damaged on the way; check {line}; plcsh retries (retries=)")
+        } else {
+            format!("check {line}")
+        }
+    }
+}
+
 /// Per-device settings from the URL.
 #[derive(Clone, Debug)]
 pub struct Settings {
@@ -421,6 +441,15 @@ impl K2Wire {
                         self.settings.unit,
                         ms(timeout)
                     ))));
+                }
+                Err(e) if client::garbled(&e).is_some() => {
+                    // Something arrived, but not a reply: say what, never "did not answer".
+                    self.ctx = None;
+                    let g = client::garbled(&e).expect("checked");
+                    let head = format!("unit {} sent no valid reply within {}", self.settings.unit, ms(timeout));
+                    last = Some(Failure::Link(
+                        Error::link(format!("{head}: {g}")).hint(self.link.garbled_hint(g.bad_crc.is_some())),
+                    ));
                 }
                 Err(e) => {
                     // Dropped connection, garbled or mismatched reply: start afresh.

@@ -9,8 +9,12 @@
 //! each drive a named device with its own operands, units and `servo` helpers, instead of
 //! an id inside every operand.
 //!
-//! One request, one reply (§2). Replies are checked against the request (id, object,
-//! function, echoed data); a mismatch or a bad checksum is a link error. No reply within
+//! One request, one reply (§2). Before each request the line must be quiet for a few
+//! character times, and after a request went unanswered for one more timeout, so a late reply
+//! is dropped rather than read as the next request's; a whole frame that answers another id
+//! or object while a request waits is stale and skipped. Replies are checked against the
+//! request (id, object, function, echoed data); a mismatch or a bad checksum is a link error.
+//! A request that got only late or stale replies is diagnosed as such. No reply within
 //! the timeout is a link error that lists the manual's three causes (wrong id, unknown
 //! object, bad checksum; seed §2.4) and says which is likely, found by asking the same id
 //! for its statusword: if that answers, the object is probably unknown; if not, the id is
@@ -50,13 +54,29 @@ pub const DEFAULT_TIMEOUT: Duration = Duration::from_millis(200);
 pub const SILENCE_CAUSES: &str =
     "a Kinco drive does not answer (1) a wrong drive id, (2) an object that does not exist, (3) a bad checksum (manual §2.4)";
 
+/// Bounds of the quiet awaited before every request: a few character times.
+const GAP_MIN: Duration = Duration::from_millis(2);
+const GAP_MAX: Duration = Duration::from_millis(50);
+/// Longest quiet awaited after silence, for a late reply to be dropped there.
+const LATE_MAX: Duration = Duration::from_secs(2);
+
 /// What came back for one request.
 enum Exchange {
     Reply([u8; FRAME_LEN]),
-    /// Nothing whole arrived; `partial` holds any stray bytes.
+    /// Nothing whole arrived for this request; `partial` holds any stray bytes, `stale` the
+    /// whole frames that answered something else (an earlier request's late reply, another
+    /// drive's), `late` how many bytes came in the quiet awaited after the timeout.
     Silent {
         partial: Vec<u8>,
+        stale: Vec<[u8; FRAME_LEN]>,
+        late: usize,
     },
+}
+
+/// A frame with a good checksum that is not the reply to `req` (another id or object): a
+/// late reply to an earlier request, or another drive's. Never taken as `req`'s reply.
+fn is_stale(req: &[u8; FRAME_LEN], got: &[u8; FRAME_LEN]) -> bool {
+    Frame::from_bytes(got).is_ok() && (got[0], got[2], got[3], got[4]) != (req[0], req[2], req[3], req[4])
 }
 
 /// A Kinco servo drive on some transport.
@@ -70,6 +90,8 @@ pub struct Driver {
     requests: u64,
     /// This id has answered at least once.
     answered: bool,
+    /// The quiet awaited before each request (a few character times at the line's baud).
+    gap: Duration,
     /// A served simulator's control socket (`control=` in the URL, else `PORT.ctl` if present).
     control: Option<std::path::PathBuf>,
 }
@@ -86,12 +108,18 @@ impl Driver {
             timeout,
             requests: 0,
             answered: false,
+            gap: Self::gap_at(DEFAULT_BAUD),
             control: None,
         }
     }
 
     pub fn id(&self) -> u8 {
         self.id
+    }
+
+    /// Four character times at `baud` (8N1), within [`GAP_MIN`]…[`GAP_MAX`].
+    fn gap_at(baud: u32) -> Duration {
+        LineSettings::n81(baud).time_of(4).clamp(GAP_MIN, GAP_MAX)
     }
 
     pub fn resolution(&self) -> &Resolution {
@@ -113,7 +141,11 @@ impl Driver {
         Ok(got)
     }
 
-    /// Sends one frame and collects the reply (skipping the echo in loop mode).
+    /// Sends one frame and collects the reply (skipping the echo in loop mode). Before the
+    /// frame goes out the line must be quiet for a few character times, and after silence it
+    /// must stay quiet for one more timeout: what arrives there (a late reply, a tail of
+    /// noise) is dropped, never read as this request's or the next one's reply. A whole frame
+    /// that answers another id or object is stale and skipped while the timeout runs.
     fn exchange(&mut self, bytes: &[u8; FRAME_LEN]) -> Result<Exchange> {
         self.requests += 1;
         let name = self.line.name.clone();
@@ -140,6 +172,7 @@ impl Driver {
             }
         };
         t.discard_input().map_err(io_err)?;
+        t.settle(self.gap, self.gap + self.timeout).map_err(io_err)?;
         trace::frame_proto(&name, Proto::KincoServo, Dir::Sent, bytes);
         t.send(bytes).map_err(io_err)?;
         let deadline = Instant::now() + self.timeout;
@@ -173,14 +206,22 @@ impl Driver {
                 .hint("check the baud rate (drive default 38400, panel d5.02) and the wiring"));
             }
         }
-        let got = Self::read_exact(t.as_mut(), FRAME_LEN, deadline).map_err(io_err)?;
-        if !got.is_empty() {
-            trace::frame_proto(&name, Proto::KincoServo, Dir::Received, &got);
+        let mut stale = Vec::new();
+        loop {
+            let got = Self::read_exact(t.as_mut(), FRAME_LEN, deadline).map_err(io_err)?;
+            if !got.is_empty() {
+                trace::frame_proto(&name, Proto::KincoServo, Dir::Received, &got);
+            }
+            match <[u8; FRAME_LEN]>::try_from(got.as_slice()) {
+                Ok(b) if is_stale(bytes, &b) && stale.len() < 8 => stale.push(b),
+                Ok(b) => return Ok(Exchange::Reply(b)),
+                Err(_) => {
+                    let quiet = self.timeout.min(LATE_MAX);
+                    let late = t.settle(quiet, 2 * quiet + self.gap).map_err(io_err)?;
+                    return Ok(Exchange::Silent { partial: got, stale, late });
+                }
+            }
         }
-        Ok(match <[u8; FRAME_LEN]>::try_from(got.as_slice()) {
-            Ok(b) => Exchange::Reply(b),
-            Err(_) => Exchange::Silent { partial: got },
-        })
     }
 
     /// One request: send, check the reply, decode it; diagnose silence.
@@ -201,12 +242,19 @@ impl Driver {
                 Err(m) => Err(Error::link(format!("bad reply to {} of {}: {m}", verb(&req), req.object()))
                     .hint("another master or drive may be talking on the line, or the baud rate is wrong")),
             },
-            Exchange::Silent { partial } => Err(self.silence(&req, &partial, None)),
+            Exchange::Silent { partial, stale, late } => Err(self.silence(&req, &partial, &stale, late, None)),
         }
     }
 
     /// The link error for a request nobody answered, with the likely cause.
-    fn silence(&mut self, req: &Frame, partial: &[u8], bad_checksum: Option<frame::BadChecksum>) -> Error {
+    fn silence(
+        &mut self,
+        req: &Frame,
+        partial: &[u8],
+        stale: &[[u8; FRAME_LEN]],
+        late: usize,
+        bad_checksum: Option<frame::BadChecksum>,
+    ) -> Error {
         let ms = self.timeout.as_millis();
         let head = format!("no reply from drive id {} to {} of {} within {ms} ms", req.id, verb(req), req.object());
         let likely = if !is_request_func(req.func) {
@@ -219,6 +267,20 @@ impl Driver {
                 "likely cause: bad checksum — the frame ends in {:02X}, the bytes before it need {:02X}",
                 b.got, b.want
             )
+        } else if !stale.is_empty() || late > 0 {
+            // A reply came, but too late or to something else: neither the id nor the object
+            // is to blame, and no probe is sent.
+            let mut what = Vec::new();
+            if !stale.is_empty() {
+                let frames: Vec<String> = stale.iter().map(|f| trace::hex_bytes(f)).collect();
+                what.push(format!("a reply to another request came instead ({})", frames.join("; ")));
+            }
+            if late > 0 {
+                what.push(format!("{late} byte(s) came after the timeout and were dropped"));
+            }
+            return Error::link(format!("{head}; likely cause: late replies — {}", what.join(", "))).hint(format!(
+                "the drive answers later than the timeout: raise it (timeout= in the URL, now {ms}ms), and check that no other master talks on the line; a late reply is never taken for the next request's"
+            ));
         } else if !partial.is_empty() {
             format!(
                 "likely cause: bad checksum — only {} stray byte(s) came back ({}), so frames are being corrupted on the line (baud rate or wiring)",
@@ -295,7 +357,7 @@ impl Driver {
         let bad = Frame::from_bytes(&bytes).err();
         match self.exchange(&bytes)? {
             Exchange::Reply(b) => Ok(b),
-            Exchange::Silent { partial } => {
+            Exchange::Silent { partial, stale, late } => {
                 let req = Frame {
                     id: bytes[0],
                     func: bytes[1],
@@ -303,7 +365,7 @@ impl Driver {
                     sub: bytes[4],
                     data: 0,
                 };
-                Err(self.silence(&req, &partial, bad))
+                Err(self.silence(&req, &partial, &stale, late, bad))
             }
         }
     }
@@ -481,6 +543,7 @@ pub fn open_serial(u: &DeviceUrl) -> Result<Box<dyn Device>> {
         simulated: false,
     };
     let mut d = Driver::attach(line, c.id, c.echo, c.timeout, info);
+    d.gap = Driver::gap_at(baud);
     d.control = u.param("control").map(std::path::PathBuf::from);
     finish(d, &c)
 }

@@ -185,6 +185,60 @@ pub fn hex_pair(p: &[u8]) -> Option<u8> {
     Some(hex_digit(*p.first()?)? << 4 | hex_digit(*p.get(1)?)?)
 }
 
+/// Checks that `text` has the form the UMPK reads before it answers (manual §4.1, §4.2;
+/// spec §3, §5), so that a typing slip is refused here instead of being sent and met with
+/// silence: a terminal command is `?` and exactly four characters (code and checksum), a
+/// HEX record `:` and exactly 10 + 2 × RECLEN characters after it. What the controller
+/// itself checks and answers — a checksum (`E`), an unknown code or record type (`U`), a
+/// character that is not a hex digit (`C`) — is left to it. `Err` says what is wrong and
+/// the right form.
+pub fn check_form(text: &[u8]) -> Result<(), String> {
+    let shown = String::from_utf8_lossy(text);
+    const FORMS: &str =
+        "a terminal command is ? and four hex digits, the code and a checksum that makes them sum to 100 hex (e.g. ?03FD, controller info); a HEX record is : RECLEN OFFSET TYPE DATA CHECKSUM in hex (e.g. :00000002FE, start programming)";
+    match text.first() {
+        Some(b'?') => {
+            let body = &text[1..];
+            if body.len() == 4 {
+                return Ok(());
+            }
+            // A likely meaning: the code a short form names (`?3FD`: code 3, checksum FD).
+            let digits: Option<Vec<u8>> = body.iter().map(|c| hex_digit(*c)).collect();
+            let code = match digits.as_deref() {
+                Some([c]) | Some([c, _, _]) => Some(*c),
+                Some([h, l]) => Some(h << 4 | l),
+                _ => None,
+            };
+            let like = match code.map(|c| (c, Command::from_code(c))) {
+                Some((c, Some(cmd))) => {
+                    format!("; for {} send {}", cmd.name(), String::from_utf8_lossy(&command_bytes(c)))
+                }
+                _ => String::new(),
+            };
+            Err(format!(
+                "`{shown}` has {} character(s) after ?, and the UMPK waits for four: a terminal command is ? and four hex digits, the code and a checksum that makes them sum to 100 hex{like}",
+                body.len()
+            ))
+        }
+        Some(b':') => {
+            let Some(n) = text.get(1..3).and_then(hex_pair) else {
+                return Err(format!("`{shown}` does not start with a record length (two hex digits after :): {FORMS}"));
+            };
+            let want = 11 + 2 * n as usize;
+            if text.len() == want {
+                Ok(())
+            } else {
+                Err(format!(
+                    "`{shown}` is {} characters, and a HEX record with RECLEN {n:02X} is {want}: : RECLEN(2) OFFSET(4) TYPE(2) DATA({}) CHECKSUM(2), e.g. :00000002FE (start programming)",
+                    text.len(),
+                    2 * n as usize
+                ))
+            }
+        }
+        _ => Err(format!("`{shown}` is neither a UMPK terminal command nor a HEX record: {FORMS}")),
+    }
+}
+
 /// What the PLC made of one received command (the simulator's side).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Parsed {
@@ -374,12 +428,25 @@ impl Timing {
     }
 }
 
+/// System error codes (128–255) in the error history (§4.1.8). The manual names only 255;
+/// the others are codes plcsh's simulator records for what the manual leaves unnamed.
+pub mod syserr {
+    /// Output buffer overflow: a command sent before the previous reply was complete (§4.1).
+    pub const OUTPUT_OVERFLOW: u8 = 255;
+    /// Simulator: the program did not finish within the 10 ms cycle and was stopped.
+    pub const CYCLE_OVERRUN: u8 = 254;
+    /// Simulator: the program stopped on another fault.
+    pub const PROGRAM_FAULT: u8 = 253;
+}
+
 /// The meaning of an error-history code (§4.1.8).
 pub fn error_code_text(code: u8) -> String {
     match code {
         0 => "no error".into(),
         1..=127 => format!("user error {code} (set by the program)"),
-        255 => "system error 255: output buffer overflow — a command was sent before the previous reply was complete (§4.1)".into(),
+        syserr::OUTPUT_OVERFLOW => "system error 255: output buffer overflow — a command was sent before the previous reply was complete (§4.1)".into(),
+        syserr::CYCLE_OVERRUN => "system error 254 (plcsh's simulator: the program overran the 10 ms cycle and was stopped; Wait mode until reset)".into(),
+        syserr::PROGRAM_FAULT => "system error 253 (plcsh's simulator: the program stopped on a fault; Wait mode until reset)".into(),
         _ => format!("system error {code}"),
     }
 }
@@ -613,6 +680,29 @@ pub fn show(bytes: &[u8]) -> String {
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn a_command_or_record_of_the_wrong_form_is_refused_with_the_right_one() {
+        // What the controller answers itself (E, U, C) passes: ?03FE bad checksum, ?0DF3
+        // unknown code, ?0G00 an illegal character, a record with a bad checksum.
+        for ok in ["?03FD", "?03FE", "?0DF3", "?0G00", ":00000002FE", ":00000002FD", ":0100000Z00FF", ":020000040000FA"]
+        {
+            assert_eq!(check_form(ok.as_bytes()), Ok(()), "{ok}");
+        }
+        let e = check_form(b"?3FD").unwrap_err();
+        assert!(e.contains("3 character(s) after ?") && e.contains("for controller info send ?03FD"), "{e}");
+        let e = check_form(b"?3").unwrap_err();
+        assert!(e.contains("send ?03FD"), "{e}");
+        let e = check_form(b"?03FD0").unwrap_err();
+        assert!(e.contains("5 character(s)") && !e.contains("send"), "{e}");
+        let e = check_form(b"hello").unwrap_err();
+        assert!(e.starts_with("`hello` is neither") && e.contains("?03FD") && e.contains(":00000002FE"), "{e}");
+        let e = check_form(b":0000002FE").unwrap_err();
+        assert!(e.contains("is 10 characters") && e.contains("RECLEN 00 is 11"), "{e}");
+        let e = check_form(b":XY").unwrap_err();
+        assert!(e.contains("record length"), "{e}");
+        assert!(check_form(b"").is_err());
+    }
+
     use super::*;
 
     #[test]

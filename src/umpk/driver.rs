@@ -418,6 +418,9 @@ impl Driver {
         if bytes.is_empty() || bytes.len() > 600 {
             return Err(Error::usage("umpk send needs a command (?03FD) or a record (:00000002FE)"));
         }
+        // A form the controller would wait on in silence is refused before it is sent: the
+        // silence would be blamed on the cable.
+        codec::check_form(&bytes).map_err(|m| Error::usage(format!("not sent to the UMPK on {}: {m}", self.link)))?;
         let shape = match bytes.get(1..3).and_then(codec::hex_pair).and_then(Command::from_code) {
             Some(c) if bytes[0] == b'?' => c.shape(),
             _ => Shape::Ack,

@@ -144,6 +144,14 @@ pub fn parse_file(text: &str, memory: usize) -> Result<Program, String> {
             }
             kind::END => ended = true,
             kind::START if r.data.is_empty() => {}
+            kind::START => {
+                // Standard Intel HEX calls type 02 an extended segment address (2 data bytes);
+                // to the UMPK 02 is the start record, which carries no data.
+                return Err(format!(
+                    "line {ln}: a type-02 record with {} data byte(s): the UMPK takes type 02 only as the start record without data (:00000002FE, sent by plcsh itself); in standard Intel HEX it is an extended segment address, which a program of at most 3 KB never needs — remove the line",
+                    r.data.len()
+                ));
+            }
             kind::INFO => {
                 if r.data.is_empty() || r.data.len() > INFO_LEN {
                     return Err(format!("line {ln}: program info holds 1–22 bytes, not {}", r.data.len()));
@@ -235,6 +243,10 @@ mod tests {
         let twice = ":0100000000FF\n:0100000000FF\n:00000001FF\n";
         assert!(parse_file(twice, 2048).unwrap_err().contains("line 2"));
         assert!(parse_file(":020000040000FA\n:00000001FF\n", 2048).unwrap_err().contains("type 04"));
+        // Type 02 with data (an Intel HEX extended segment address) is not the UMPK's start.
+        let e = parse_file(":020000021000EC\n:0100000012ED\n:00000001FF\n", 2048).unwrap_err();
+        assert!(e.starts_with("line 1: a type-02 record with 2 data byte(s)") && e.contains("remove the line"), "{e}");
+        assert!(!e.contains("not one the UMPK takes"), "{e}");
         assert!(parse_file(":0100000000FE\n:00000001FF\n", 2048).unwrap_err().contains("checksum"));
     }
 }

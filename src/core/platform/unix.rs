@@ -79,6 +79,40 @@ pub fn durable_rename(from: &std::path::Path, to: &std::path::Path, dir: &std::p
     std::fs::File::open(dir).and_then(|d| d.sync_all())
 }
 
+/// A file in `dir` without a name (Linux `O_TMPFILE`), for [`crate::core::durable`]: its
+/// content can be written and fsync'd before it is named, so a crash meanwhile leaves
+/// nothing behind. `None` where the system or the file system has none (then a named
+/// temporary file is used).
+pub fn unnamed_file(dir: &std::path::Path) -> Option<std::fs::File> {
+    #[cfg(target_os = "linux")]
+    {
+        use std::os::unix::fs::OpenOptionsExt;
+        std::fs::OpenOptions::new().write(true).mode(0o666).custom_flags(libc::O_TMPFILE).open(dir).ok()
+    }
+    #[cfg(not(target_os = "linux"))]
+    {
+        let _ = dir;
+        None
+    }
+}
+
+/// Gives a file from [`unnamed_file`] the name `to` (which must not exist): `linkat` of its
+/// `/proc/self/fd` entry, following the link.
+pub fn name_file(f: &std::fs::File, to: &std::path::Path) -> std::io::Result<()> {
+    use std::os::fd::AsRawFd;
+    use std::os::unix::ffi::OsStrExt;
+    let from = std::ffi::CString::new(format!("/proc/self/fd/{}", f.as_raw_fd())).map_err(std::io::Error::other)?;
+    let to = std::ffi::CString::new(to.as_os_str().as_bytes()).map_err(std::io::Error::other)?;
+    // SAFETY: two NUL-terminated paths that live across the call; no other memory is involved.
+    let r =
+        unsafe { libc::linkat(libc::AT_FDCWD, from.as_ptr(), libc::AT_FDCWD, to.as_ptr(), libc::AT_SYMLINK_FOLLOW) };
+    if r == 0 {
+        Ok(())
+    } else {
+        Err(std::io::Error::last_os_error())
+    }
+}
+
 /// CPU time the calling thread has used.
 pub fn thread_cpu_time() -> Duration {
     let mut ts = libc::timespec { tv_sec: 0, tv_nsec: 0 };
@@ -100,5 +134,30 @@ pub fn interrupt_child(child: &std::process::Child) {
     // SAFETY: kill(2) on a process id; no memory is involved.
     unsafe {
         libc::kill(child.id() as libc::pid_t, libc::SIGINT);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    /// On Linux the content of a durable write exists without a name until it is named: a
+    /// process killed meanwhile leaves no file behind.
+    #[cfg(target_os = "linux")]
+    #[test]
+    fn an_unnamed_file_has_no_name_until_it_is_given_one() {
+        use std::io::Write;
+        let d = std::env::temp_dir().join(format!("plcsh-unnamed-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&d);
+        std::fs::create_dir_all(&d).unwrap();
+        let Some(mut f) = super::unnamed_file(&d) else {
+            eprintln!("no O_TMPFILE on this file system; the named temporary file is used");
+            return;
+        };
+        f.write_all(b"content").unwrap();
+        f.sync_all().unwrap();
+        assert_eq!(std::fs::read_dir(&d).unwrap().count(), 0, "nothing in the directory yet");
+        super::name_file(&f, &d.join(".x.tmp")).unwrap();
+        assert_eq!(std::fs::read(d.join(".x.tmp")).unwrap(), b"content");
+        assert!(super::name_file(&f, &d.join(".x.tmp")).is_err(), "an existing name is not replaced");
+        let _ = std::fs::remove_dir_all(&d);
     }
 }

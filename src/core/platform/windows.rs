@@ -156,6 +156,17 @@ pub fn durable_rename(from: &std::path::Path, to: &std::path::Path, _dir: &std::
     Ok(())
 }
 
+/// Windows has no files without a name: [`crate::core::durable`] writes a named
+/// temporary file.
+pub fn unnamed_file(_dir: &std::path::Path) -> Option<std::fs::File> {
+    None
+}
+
+/// Never called: [`unnamed_file`] gives no file to name.
+pub fn name_file(_f: &std::fs::File, _to: &std::path::Path) -> std::io::Result<()> {
+    Err(std::io::Error::from(std::io::ErrorKind::Unsupported))
+}
+
 /// CPU time the calling thread has used.
 pub fn thread_cpu_time() -> Duration {
     use windows_sys::Win32::Foundation::FILETIME;

@@ -17,6 +17,11 @@
 //! the function code must be the request's, or the request's with 0x80 set (an exception).
 //! Anything else fails the request as a link error (the driver reconnects and retries).
 //! Bytes left from an earlier exchange are dropped before each request.
+//!
+//! Bytes that arrived but never made a valid frame are not silence: when the deadline
+//! passes, the request fails with [`Garbled`] (what arrived, and the first RTU frame whose
+//! CRC was wrong with the CRC it carried and the one its bytes need), as mbpoll reports
+//! "Invalid CRC", so the driver can say the reply was damaged rather than missing.
 
 use crate::core::link::port::Port;
 use crate::k2::sim::rtu_frame::crc16;
@@ -38,6 +43,49 @@ pub struct ModbusClient {
     /// Bytes received; the last reply's PDU is `rx[pdu.0..pdu.1]`.
     rx: Vec<u8>,
     pdu: (usize, usize),
+}
+
+/// What arrived for a request that got no valid reply frame before its deadline: the
+/// payload of the `InvalidData` error [`ModbusClient`] returns then.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Garbled {
+    /// The first bytes that arrived (at most [`MAX_FRAME`]).
+    pub arrived: Vec<u8>,
+    /// How many bytes arrived in all.
+    pub total: usize,
+    /// The first RTU frame whose CRC was wrong: its bytes, the CRC it carried and the CRC
+    /// its bytes need (printed low byte first, as on the wire).
+    pub bad_crc: Option<(Vec<u8>, u16, u16)>,
+}
+
+impl std::fmt::Display for Garbled {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let hex = crate::core::trace::hex_bytes;
+        let more = if self.total > self.arrived.len() { " …" } else { "" };
+        match &self.bad_crc {
+            Some((frame, got, want)) => {
+                write!(
+                    f,
+                    "a reply with an invalid CRC arrived: {} (CRC {}, its bytes need {})",
+                    hex(frame),
+                    hex(&got.to_le_bytes()),
+                    hex(&want.to_le_bytes())
+                )?;
+                if *frame == self.arrived && self.total == frame.len() {
+                    return Ok(());
+                }
+            }
+            None => write!(f, "{} byte(s) arrived but no valid reply frame", self.total)?,
+        }
+        write!(f, "; received: {}{more}", hex(&self.arrived))
+    }
+}
+
+impl std::error::Error for Garbled {}
+
+/// The [`Garbled`] inside an error from [`ModbusClient`], if that is what it is.
+pub fn garbled(e: &io::Error) -> Option<&Garbled> {
+    e.get_ref().and_then(|inner| inner.downcast_ref::<Garbled>())
 }
 
 fn invalid(msg: String) -> io::Error {
@@ -162,18 +210,35 @@ impl ModbusClient {
         self.rx.clear();
         self.port.send(&self.frame, deadline)?;
         let mut dropped = 0;
+        // What arrived, for the diagnosis when no valid frame does.
+        let mut seen = Garbled { arrived: Vec::new(), total: 0, bad_crc: None };
         let (lo, hi) = loop {
             match self.found()? {
                 Found::Pdu(lo, hi) => break (lo, hi),
                 Found::Skip if dropped < MAX_FRAME => {
+                    if seen.bad_crc.is_none() {
+                        seen.bad_crc = self.bad_crc();
+                    }
                     self.rx.remove(0);
                     dropped += 1;
                     continue;
                 }
-                Found::Skip => return Err(invalid(format!("no valid reply frame in {MAX_FRAME} bytes"))),
+                Found::Skip => return Err(io::Error::new(io::ErrorKind::InvalidData, seen)),
                 Found::More => {}
             }
-            self.port.recv(&mut self.rx, deadline)?;
+            let before = self.rx.len();
+            match self.port.recv(&mut self.rx, deadline) {
+                Ok(()) => {
+                    let new = &self.rx[before..];
+                    seen.total += new.len();
+                    let room = MAX_FRAME.saturating_sub(seen.arrived.len()).min(new.len());
+                    seen.arrived.extend_from_slice(&new[..room]);
+                }
+                Err(e) if e.kind() == io::ErrorKind::TimedOut && seen.total > 0 => {
+                    return Err(io::Error::new(io::ErrorKind::InvalidData, seen));
+                }
+                Err(e) => return Err(e),
+            }
         };
         self.pdu = (lo, hi);
         let fc = self.fc();
@@ -184,6 +249,16 @@ impl ModbusClient {
         }
     }
 
+    /// The RTU frame at the front of the received bytes when its CRC is what is wrong with
+    /// it: its bytes, the CRC carried and the CRC needed.
+    fn bad_crc(&self) -> Option<(Vec<u8>, u16, u16)> {
+        let b = &self.rx;
+        let len = rtu_len(b)?;
+        let frame = b.get(..len)?;
+        let (got, want) = (u16::from_le_bytes([frame[len - 2], frame[len - 1]]), crc16(&frame[..len - 2]));
+        (got != want).then(|| (frame.to_vec(), got, want))
+    }
+
     /// Frames the bytes received so far.
     fn found(&self) -> io::Result<Found> {
         let b = &self.rx;
@@ -191,12 +266,7 @@ impl ModbusClient {
             if b.len() < 3 {
                 return Ok(Found::More);
             }
-            let len = match b[1] {
-                0x01..=0x04 => 5 + b[2] as usize,
-                0x05 | 0x06 | 0x0F | 0x10 => 8,
-                f if f & 0x80 != 0 => 5,
-                _ => return Ok(Found::Skip),
-            };
+            let Some(len) = rtu_len(b) else { return Ok(Found::Skip) };
             if b.len() < len {
                 return Ok(Found::More);
             }
@@ -228,6 +298,18 @@ impl ModbusClient {
             Ok(Found::Pdu(7, 6 + len))
         }
     }
+}
+
+/// The length of the RTU reply frame starting `b` (at least 3 bytes), from its function
+/// code and byte count; `None` when the function code is none a K2 answers with.
+fn rtu_len(b: &[u8]) -> Option<usize> {
+    let (&fc, &count) = (b.get(1)?, b.get(2)?);
+    Some(match fc {
+        0x01..=0x04 => 5 + count as usize,
+        0x05 | 0x06 | 0x0F | 0x10 => 8,
+        f if f & 0x80 != 0 => 5,
+        _ => return None,
+    })
 }
 
 /// A port replaying fixed bytes as the replies, in chunks of a given size

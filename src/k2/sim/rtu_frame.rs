@@ -11,7 +11,10 @@
 //! Resynchronisation is silence-based, as the serial line specification frames RTU
 //! (§2.5.1.1: a frame ends with 3.5 character times of silence): the server hands the
 //! buffer to [`end_of_frame`] when the line falls silent, which drops whatever could not be
-//! taken as a frame, so a bad CRC or a truncated request costs that request only. Finding
+//! taken as a frame, so a bad CRC or a truncated request costs that request only. What
+//! arrived between two silences with a valid CRC over its whole length is one frame even
+//! when its byte count says otherwise (quantity 0 and byte count 0 followed by data): it is
+//! decoded and refused with 03, as Modbus TCP refuses the same PDU. Finding
 //! where an unknown function's frame ends runs one CRC pass over the buffer (linear), so
 //! noise cannot stall the server.
 //!
@@ -173,8 +176,12 @@ pub fn take_frame(buf: &mut Vec<u8>) -> Take {
     }
 }
 
-/// A receiver framing by silence (module doc): bytes go in as they arrive, frames come out;
-/// after bytes that are no frame, everything up to the next silence is dropped.
+/// A receiver framing by silence (module doc): bytes go in as they arrive, frames come out.
+/// Bytes whose length fields do not make a frame (a bad CRC where the byte count says the
+/// frame ends, a byte count that promises more than comes) are held until the line falls
+/// silent: if what arrived up to the silence is one frame with a valid CRC over its whole
+/// length, it is a request whose length fields disagree with its length and gets the
+/// exception Modbus TCP gives it (03, through [`decode_pdu`]); anything else is dropped.
 #[derive(Default)]
 pub struct Receiver {
     buf: Vec<u8>,
@@ -192,6 +199,9 @@ impl Receiver {
     pub fn bytes(&mut self, data: &[u8]) -> Vec<Frame> {
         let mut out = Vec::new();
         if self.discarding {
+            // Held up to one byte past the longest frame, for the check at silence.
+            let room = (MAX_FRAME + 1).saturating_sub(self.buf.len()).min(data.len());
+            self.buf.extend_from_slice(&data[..room]);
             return out;
         }
         self.buf.extend_from_slice(data);
@@ -200,7 +210,7 @@ impl Receiver {
                 Take::Frame(f) => out.push(f),
                 Take::More => break,
                 Take::Garbage => {
-                    self.buf.clear();
+                    self.buf.truncate(MAX_FRAME + 1);
                     self.discarding = true;
                     break;
                 }
@@ -211,9 +221,23 @@ impl Receiver {
 
     /// The line fell silent: the frames still buffered, and a clean start.
     pub fn silence(&mut self) -> Vec<Frame> {
-        self.discarding = false;
+        let discarding = std::mem::take(&mut self.discarding);
+        if let Some(f) = whole_frame(&self.buf) {
+            self.buf.clear();
+            return vec![f];
+        }
+        if discarding {
+            self.buf.clear();
+            return Vec::new();
+        }
         end_of_frame(&mut self.buf)
     }
+}
+
+/// What arrived between two silences as one frame, when its CRC is valid over its whole
+/// length (at most [`MAX_FRAME`]): the request decoded, or the exception it gets.
+fn whole_frame(buf: &[u8]) -> Option<Frame> {
+    (buf.len() <= MAX_FRAME && crc_ok(buf)).then(|| decode(buf))
 }
 
 /// The line fell silent: takes the frames still in `buf`, then drops what is left (a
@@ -257,6 +281,19 @@ pub fn decode_pdu(unit: u8, pdu: &[u8]) -> Frame {
     let (a, q) = (be16(pdu, 1), be16(pdu, 3));
     let data = if fixed { &[][..] } else { &pdu[6..] };
     if !fixed && data.len() != pdu[5] as usize {
+        return bad(ExceptionCode::IllegalDataValue);
+    }
+    // The quantities the application protocol allows (V1.1b3 §6.1–§6.4, §6.11, §6.12: read
+    // coils/inputs 1…0x7D0, read registers 1…0x7D, write coils 1…0x7B0, write registers
+    // 1…0x7B); anything else is exception 03 before the address is looked at.
+    let most = match fc {
+        0x01 | 0x02 => 0x7D0,
+        0x03 | 0x04 => 0x7D,
+        0x0F => 0x7B0,
+        0x10 => 0x7B,
+        _ => u16::MAX,
+    };
+    if (!fixed || fc <= 0x04) && !(1..=most).contains(&q) {
         return bad(ExceptionCode::IllegalDataValue);
     }
     let request = match fc {
@@ -397,6 +434,51 @@ mod tests {
             end_of_frame(&mut cut),
             vec![Frame::Request { unit: 1, request: Request::ReadHoldingRegisters(100, 1) }]
         );
+    }
+
+    /// The receiver's frames for `bytes` arriving in one burst and then silence.
+    fn burst(bytes: &[u8]) -> Vec<Frame> {
+        let mut rx = Receiver::default();
+        let mut frames = rx.bytes(bytes);
+        frames.extend(rx.silence());
+        assert!(!rx.pending());
+        frames
+    }
+
+    fn with_crc(mut f: Vec<u8>) -> Vec<u8> {
+        let c = crc16(&f);
+        f.extend(c.to_le_bytes());
+        f
+    }
+
+    #[test]
+    fn a_frame_whose_length_fields_disagree_with_its_length_is_framed_by_silence() {
+        let refused =
+            |unit, function| vec![Frame::Refuse { unit, function, exception: ExceptionCode::IllegalDataValue }];
+        // Quantity 0, byte count 0 (pymodbus `write_registers(100, [])`, libmodbus
+        // `modbus_write_bits(ctx, 1, 0, …)`): framed by the byte count, refused with 03.
+        assert_eq!(burst(&with_crc(vec![1, 0x10, 0, 0x64, 0, 0, 0])), refused(1, 0x10));
+        assert_eq!(burst(&with_crc(vec![1, 0x0F, 0, 0x01, 0, 0, 0])), refused(1, 0x0F));
+        // Quantity 0 and byte count 0 with data after them, the CRC valid over the whole
+        // frame: the byte count ends the frame too early, the silence ends it right.
+        assert_eq!(burst(&with_crc(vec![1, 0x10, 0, 0x64, 0, 0, 0, 0x12, 0x34])), refused(1, 0x10));
+        assert_eq!(burst(&with_crc(vec![1, 0x0F, 0, 0x01, 0, 0, 0, 0xFF])), refused(1, 0x0F));
+        // A byte count promising more than comes; an FC 03 two bytes too long.
+        assert_eq!(burst(&with_crc(vec![1, 0x10, 0, 0x64, 0, 1, 4, 0x12, 0x34])), refused(1, 0x10));
+        assert_eq!(burst(&with_crc(vec![1, 0x03, 0, 0x64, 0, 1, 0, 0])), refused(1, 0x03));
+        // Quantities past the specification's: 0x7B1 coils (247 bytes), 124 registers.
+        let mut coils = vec![1, 0x0F, 0, 0, 0x07, 0xB1, 247];
+        coils.extend([0u8; 247]);
+        assert_eq!(burst(&with_crc(coils)), refused(1, 0x0F));
+        assert_eq!(decode_pdu(1, &[0x03, 0, 0, 0, 0x7E]), refused(1, 0x03).remove(0));
+        // A damaged frame is still dropped whole, and the next one served.
+        let mut bad = with_crc(vec![1, 0x06, 0, 0x64, 0, 7]);
+        bad[7] ^= 0x55;
+        assert!(burst(&bad).is_empty());
+        let mut rx = Receiver::default();
+        assert!(rx.bytes(&bad).is_empty());
+        assert!(rx.silence().is_empty());
+        assert_eq!(rx.bytes(&with_crc(vec![1, 0x06, 0, 0x64, 0, 7])).len(), 1);
     }
 
     #[test]

@@ -8,10 +8,10 @@
 //!
 //! Durability (what a real K2 keeps through a power cut, the simulator keeps through
 //! `kill -9`): a store that touches the backup area or a retained range rewrites the file
-//! before it is acknowledged — a temporary file `.NAME.tmp` beside it, written and
-//! fsync'd, renamed over the file, and the directory fsync'd — so a crash at any moment
-//! leaves the old or the new file, never half of one, and every acknowledged store is in
-//! it. Chosen over a write-through journal for simplicity: the file stays one readable
+//! before it is acknowledged — through [`crate::core::durable`]: written and fsync'd without
+//! a name where the system allows, named `.NAME.tmp`, renamed over the file, and the
+//! directory fsync'd — so a crash at any moment leaves the old or the new file, never half
+//! of one, and every acknowledged store is in it. Chosen over a write-through journal for simplicity: the file stays one readable
 //! JSON document; the cost is measured in BENCHMARKS.md ("Durable retained writes").
 //! Stores elsewhere cost nothing extra.
 //!
@@ -27,6 +27,7 @@
 //! the side of warning early. Crossing 10 000, 100 000, 500 000 and 1 000 000 writes on a
 //! byte raises an `eeprom-wear` event.
 
+use crate::core::durable::{self, sibling};
 use crate::core::{Error, Result};
 use crate::k2::catalog::{EEPROM_ENDURANCE, EEPROM_FIRST, EEPROM_LAST_DEFAULT, EEPROM_LAST_MAX};
 use crate::k2::operand::Area;
@@ -192,33 +193,7 @@ pub fn save(path: &Path, model: &str, state: ModelState) -> Result<()> {
     if std::fs::read(path).is_ok_and(|old| old == text.as_bytes()) {
         return Ok(());
     }
-    write_atomic(path, text.as_bytes())
-}
-
-/// The directory of `path` and a sibling name `.NAME.suffix` in it.
-fn sibling(path: &Path, suffix: &str) -> (PathBuf, PathBuf) {
-    let dir = path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new(".")).to_path_buf();
-    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_else(|| "state".into());
-    let s = dir.join(format!(".{name}.{suffix}"));
-    (dir, s)
-}
-
-/// Writes `bytes` to `path` through a temporary file in the same directory and a rename,
-/// both fsync'd (the file, then the directory), so a crash leaves either the old or the
-/// new file, never half of one, and a returned `Ok` means the new file is on disk.
-pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
-    use std::io::Write;
-    let (dir, tmp) = sibling(path, "tmp");
-    std::fs::create_dir_all(&dir).map_err(|e| Error::io(format!("cannot create {}", dir.display())).cause(e))?;
-    let fail = |e: std::io::Error| Error::io(format!("cannot write {}", path.display())).cause(e);
-    let mut f = std::fs::File::create(&tmp).map_err(fail)?;
-    f.write_all(bytes).map_err(fail)?;
-    f.sync_all().map_err(fail)?;
-    drop(f);
-    crate::core::platform::durable_rename(&tmp, path, &dir).map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        fail(e)
-    })
+    durable::write_atomic(path, text.as_bytes())
 }
 
 /// Takes the state file's lock (module doc) or says who holds it; removes a temporary
@@ -248,7 +223,7 @@ pub fn lock(path: &Path) -> Result<std::sync::Arc<std::fs::File>> {
     let _ = f.set_len(0);
     let _ = f.rewind();
     let _ = write!(f, "{}", std::process::id());
-    let _ = std::fs::remove_file(sibling(path, "tmp").1);
+    durable::remove_stale(path);
     Ok(std::sync::Arc::new(f))
 }
 

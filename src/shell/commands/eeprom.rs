@@ -8,7 +8,6 @@ use super::CommandSpec;
 use crate::core::{Error, Result, Value};
 use crate::k2::catalog::{EEPROM_ENDURANCE, EEPROM_FIRST, EEPROM_LAST_MAX};
 use crate::k2::operand::{Area, K2Operand};
-use crate::k2::sim::state;
 use crate::output::Outcome;
 use crate::shell::{Args, Shell};
 
@@ -39,7 +38,7 @@ fn eeprom(sh: &mut Shell, args: Args) -> Result<Outcome> {
             let core: Vec<_> = ops(end).iter().map(|o| o.to_core()).collect();
             let vals = sh.session.read_values(dev, &core)?;
             let bytes: Vec<u8> = vals.iter().map(|v| v.as_i64() as u8).collect();
-            state::write_atomic(std::path::Path::new(file), &bytes)?;
+            crate::core::durable::write_atomic(std::path::Path::new(file), &bytes)?;
             Outcome::new("eeprom")
                 .text(format!("saved VB{first}…VB{end} ({} bytes) to {file}", bytes.len()))
                 .with("bytes", bytes.len())

@@ -413,9 +413,12 @@ fn program(sh: &mut Shell, dev: usize, rest: &[Word], col: usize) -> Result<Outc
     } else {
         "the controller stays in Programming mode; `umpk reset` enables the program"
     };
-    Ok(Outcome::new("umpk")
+    // The simulator keeps a binary but cannot run it: said here, not discovered from dead outputs.
+    let simulated = d.simulator().is_some();
+    let note = if simulated { format!("\nnote: {}", crate::umpk::sim::BINARY_NOT_EXECUTED) } else { String::new() };
+    let mut out = Outcome::new("umpk")
         .text(format!(
-            "programmed {} bytes in {} page(s), {} records acknowledged{}{stopped}; {next}",
+            "programmed {} bytes in {} page(s), {} records acknowledged{}{stopped}; {next}{note}",
             r.bytes,
             r.pages,
             r.records,
@@ -426,7 +429,11 @@ fn program(sh: &mut Shell, dev: usize, rest: &[Word], col: usize) -> Result<Outc
         .with("records", r.records)
         .with("info", &r.info)
         .with("run", run)
-        .with("was_running", r.was_running))
+        .with("was_running", r.was_running);
+    if simulated {
+        out = out.with("executed", false).with("note", crate::umpk::sim::BINARY_NOT_EXECUTED);
+    }
+    Ok(out)
 }
 
 fn monitor(sh: &mut Shell, dev: usize, rest: &[Word]) -> Result<Outcome> {

@@ -155,11 +155,18 @@ impl Divider {
     }
 }
 
-/// The timers and counters of one controller, updated by the program each cycle.
+/// The timers and counters of one controller, updated by the program each cycle, and what
+/// the cycle reports to the controller: error codes for the history and whether the program
+/// stopped.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Logic {
     pub timers: Vec<OnDelay>,
     pub counters: Vec<Divider>,
+    /// Error codes raised in this cycle, in order ([`Scan::raise`]); the controller moves
+    /// them into its error history (§4.1.8) after the cycle.
+    pub raised: Vec<u8>,
+    /// The program stopped in this cycle ([`Scan::stop`]).
+    pub stopped: bool,
 }
 
 impl Logic {
@@ -167,6 +174,8 @@ impl Logic {
         Logic {
             timers: vec![OnDelay::default(); timers as usize],
             counters: vec![Divider::default(); counters as usize],
+            raised: Vec::new(),
+            stopped: false,
         }
     }
 
@@ -244,6 +253,22 @@ impl Scan<'_> {
         self.io.timers = self.io.timers & !(1 << i) | (q as u16) << i;
         q
     }
+    /// Puts `code` into the controller's error history after this cycle (§4.1.8: 1–127 are
+    /// the program's own codes, 128–255 the system's).
+    pub fn raise(&mut self, code: u8) {
+        if self.logic.raised.len() < 8 {
+            self.logic.raised.push(code);
+        }
+    }
+
+    /// The program stopped with system error `code`: the code goes into the history and the
+    /// controller leaves Work mode (outputs off) until it is reset.
+    pub fn stop(&mut self, code: u8) {
+        self.raise(code);
+        self.logic.stopped = true;
+        self.io.outputs = 0;
+    }
+
     /// Runs counter `i` with `input` and `reset` for this cycle; its output goes to the image.
     pub fn counter(&mut self, i: u8, input: bool, reset: bool) -> bool {
         let Some(c) = self.logic.counters.get_mut(i as usize) else { return false };
@@ -264,6 +289,8 @@ pub trait Runner: Send {
     fn cost_counts(&self) -> u16 {
         0
     }
+    /// Starts the program afresh (a reset or power-up after it stopped).
+    fn restart(&mut self) {}
 }
 
 /// A program given as a closure (tests, built-in demonstrations).

@@ -61,6 +61,10 @@ pub const OUTPUT_LIMIT: usize = 4096;
 pub const VERSION: Version = Version::new(1, 2, 'B');
 pub const MICROCODE: u8 = 0x01;
 
+/// What the simulator says when a binary is programmed into it (the shell after `umpk
+/// program`, `sim serve` on its standard error): it is kept, not run, and what that looks like.
+pub const BINARY_NOT_EXECUTED: &str = "the simulator stores and verifies a programmed binary but does not execute it (the UMPK's machine code is not published): after a reset the status shows Work mode (a program is loaded) while the outputs stay off; to run logic in the simulator, load an IL program (`sim program load FILE.il`, `sim serve --umpk-program FILE.il`; docs/il.md)";
+
 /// The controller's mode (§3.2).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Mode {
@@ -150,6 +154,8 @@ pub struct Umpk {
     /// Bytes received, commands completed (for tests).
     pub received: u64,
     pub commands: u64,
+    /// Binaries programmed to the end (an end record accepted), for the note a server prints.
+    pub binaries: u64,
 }
 
 impl Umpk {
@@ -185,6 +191,7 @@ impl Umpk {
             max_program_counts: 0,
             received: 0,
             commands: 0,
+            binaries: 0,
             clock,
         };
         u.line_free = now;
@@ -379,6 +386,9 @@ impl Umpk {
         self.logic.clear();
         self.image.markers = 0;
         self.program_cycles = 0;
+        if let Program::Logic(r) = &mut self.program {
+            r.restart();
+        }
         self.enqueue(b"R\r\n", at, true);
     }
 
@@ -392,6 +402,14 @@ impl Umpk {
                 self.max_program_counts = self.max_program_counts.max(r.cost_counts());
                 self.program_cycles += 1;
                 ran = true;
+            }
+            // What the cycle reported: codes for the history, a program that stopped (it
+            // stays loaded; Wait mode, outputs off, until a reset starts it again).
+            for code in std::mem::take(&mut self.logic.raised) {
+                self.push_error(code);
+            }
+            if std::mem::take(&mut self.logic.stopped) {
+                self.mode = Mode::Wait;
             }
         }
         if !ran || self.mode != Mode::Work {
@@ -602,6 +620,7 @@ impl Umpk {
                 // End (§4.2.2): programming is no longer allowed; the program may run.
                 self.prog.enabled = false;
                 self.program = Program::Binary;
+                self.binaries += 1;
                 self.ack_durable(now)
             }
         }

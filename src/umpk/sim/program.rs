@@ -26,6 +26,7 @@ use crate::engine::{
     self, ArgKind, CostTable, Cpu, Element, Family, Fault, Loc, Machine, Opd, OperandError, Program, Resolved,
     SpecialDef, Width,
 };
+use crate::umpk::codec::syserr;
 use crate::umpk::model::Model;
 use crate::umpk::space::{UmpkOperand, UmpkSpace, AREAS};
 
@@ -33,6 +34,7 @@ use crate::umpk::space::{UmpkOperand, UmpkSpace, AREAS};
 pub mod id {
     pub const TIMER: u16 = 1;
     pub const DIVIDE: u16 = 2;
+    pub const ERROR: u16 = 3;
 }
 
 /// The UMPK's own instructions (manual §3.5, Table 5).
@@ -54,6 +56,15 @@ pub static SPECIALS: &[SpecialDef] = &[
         edge: false,
         doc: "DIVIDE Cn, RATIO[, RESET]: divide-by-N counter of the CR's pulses (RATIO 1–255); the output pulse lasts as long as the input pulse; RESET on clears it; CR := Cn",
         source: "UMPK §3.5",
+    },
+    SpecialDef {
+        name: "ERROR",
+        id: id::ERROR,
+        args: &[ArgKind::Const],
+        optional: 0,
+        edge: true,
+        doc: "ERROR CODE: on the CR's rising edge, puts user error CODE (1–127) into the error history (?07F9); the program keeps running",
+        source: "UMPK §4.1.8 (codes 1–127 are the user's); the instruction is plcsh's",
     },
 ];
 
@@ -178,6 +189,12 @@ impl UmpkMachine<'_, '_> {
             _ => 0,
         };
         Ok(match id {
+            id::ERROR => {
+                if input {
+                    self.scan.raise(konst(0) as u8);
+                }
+                input
+            }
             id::TIMER => {
                 let group = Group::from_number(konst(1) as u8).unwrap_or(Group::Ms10);
                 if let Some(t) = self.scan.logic.timers.get_mut(n as usize) {
@@ -220,6 +237,15 @@ fn check(p: &Program) -> Result<()> {
             }
         }
         let Ins::Special { id, args, .. } = ins else { continue };
+        if *id == id::ERROR {
+            match args.first() {
+                Some(Opd::Imm(v)) if (1..=127).contains(v) => continue,
+                _ => {
+                    return Err(here(format!("{text}: a user error code is 1–127 (128–255 are the system's)"))
+                        .hint("e.g. LD I7 / ERROR 12: error 12 in the history when I7 turns on"))
+                }
+            }
+        }
         let el = match args.first() {
             Some(Opd::Loc(l)) => operand_of(*l),
             _ => None,
@@ -283,10 +309,21 @@ impl Runner for IlRunner {
         let out = self.cpu.scan(&self.prog, &mut UmpkMachine { scan }, now, u64::MAX, None);
         self.last_ns = out.cost_ns;
         if let engine::exec::Exit::Fault(f) = out.exit {
-            // The program stops; its outputs go off, as outside Work mode (§3.4).
-            scan.io.outputs = 0;
+            // The program stops with a system error in the history; the controller leaves
+            // Work mode and its outputs go off, as outside Work mode (§3.4).
+            let code = match f.kind {
+                engine::exec::FaultKind::Watchdog => syserr::CYCLE_OVERRUN,
+                _ => syserr::PROGRAM_FAULT,
+            };
+            scan.stop(code);
             self.fault = Some(format!("line {}: {} ({})", f.line, f.message, f.instruction));
         }
+    }
+
+    fn restart(&mut self) {
+        self.cpu = Cpu::new(&self.prog);
+        self.fault = None;
+        self.last_ns = 0;
     }
 
     fn name(&self) -> String {

@@ -52,6 +52,7 @@ fn lock(sim: &Mutex<Umpk>) -> std::sync::MutexGuard<'_, Umpk> {
 /// read, as a real one does ([`crate::core::link::served`]).
 pub fn serve_line(line: &mut dyn Transport, sim: &Arc<Mutex<Umpk>>, stop: &AtomicBool) -> Result<()> {
     let mut buf = [0u8; 512];
+    let mut binaries = lock(sim).binaries;
     while !stop.load(Ordering::Relaxed) {
         let wait = {
             let s = lock(sim);
@@ -62,6 +63,10 @@ pub fn serve_line(line: &mut dyn Transport, sim: &Arc<Mutex<Umpk>>, stop: &Atomi
             let mut s = lock(sim);
             if n > 0 {
                 s.receive(&buf[..n]);
+            }
+            if s.binaries != binaries {
+                binaries = s.binaries;
+                eprintln!("simulated UMPK: a binary was programmed; {}", super::BINARY_NOT_EXECUTED);
             }
             s.take_due()
         };

@@ -33,11 +33,13 @@ pub fn save(u: &Umpk, path: &Path) -> Result<()> {
         flash: u.flash.iter().map(|b| format!("{b:02X}")).collect(),
     };
     let text = serde_json::to_string_pretty(&s).map_err(|e| Error::io("cannot encode the UMPK state").cause(e))?;
-    crate::k2::sim::state::write_atomic(path, text.as_bytes())
+    crate::core::durable::write_atomic(path, text.as_bytes())
 }
 
-/// Restores `u` from `path` if it exists (a controller powered up with its flash).
+/// Restores `u` from `path` if it exists (a controller powered up with its flash). A
+/// temporary file a killed writer left beside it is removed, never read.
 pub fn load(u: &mut Umpk, path: &Path) -> Result<()> {
+    crate::core::durable::remove_stale(path);
     let text = match std::fs::read_to_string(path) {
         Ok(t) => t,
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(()),

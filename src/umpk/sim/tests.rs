@@ -3,7 +3,7 @@
 
 use super::logic::{FnRunner, Group};
 use super::*;
-use crate::umpk::codec::{Monitor, MONITOR_LEN};
+use crate::umpk::codec::{syserr, Monitor, MONITOR_LEN};
 use crate::umpk::hex::Record;
 use crate::umpk::model;
 
@@ -315,4 +315,89 @@ fn state_file_keeps_what_was_acknowledged() {
     std::fs::write(&path, "{").unwrap();
     assert!(v.open_state(&path).is_err());
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Loads IL `text` as the program (Work mode).
+fn load_il(u: &mut Umpk, text: &str) {
+    let r = super::program::IlRunner::load(text, "p.il", u.model).unwrap();
+    u.load_logic(Box::new(r));
+}
+
+fn status(u: &Umpk) -> Status {
+    u.layout.decode(u.controller_info().status)
+}
+
+#[test]
+fn a_program_that_overruns_the_cycle_shows_through_the_protocol() {
+    let (mut u, clock) = sim("UMPK16");
+    load_il(&mut u, "LD I0\nST Q0\nTOP:\nJMP TOP\n");
+    assert_eq!(u.mode(), Mode::Work);
+    u.set_input(0, true);
+    clock.step(Duration::from_millis(30));
+    u.take_all();
+    // System error 254 in the history, Wait mode (W off, H on), outputs off.
+    let mut want = b"?07F9".to_vec();
+    want.extend(packet(&[syserr::CYCLE_OVERRUN, 0, 0, 0, 0, 0, 0, 0]));
+    want.extend(b"\r\n");
+    assert_eq!(s(&talk(&mut u, b"?07F9")), s(&want));
+    assert_eq!(u.mode(), Mode::Wait);
+    let st = status(&u);
+    assert!(!st.work && st.errors, "{st:?}");
+    assert_eq!(u.image.outputs, 0);
+    assert!(u.program_kind().contains("stopped"), "{}", u.program_kind());
+    // The same after more cycles: stopped once, recorded once.
+    clock.step(Duration::from_millis(100));
+    u.take_all();
+    assert_eq!(&u.errors()[..2], &[syserr::CYCLE_OVERRUN, 0]);
+    // A reset starts the program again (in Work mode, in its first cycle), and it overruns
+    // again.
+    talk(&mut u, b"?0000");
+    clock.step(RESET_TIME + Duration::from_millis(20));
+    u.take_all();
+    assert_eq!(&u.errors()[..3], &[syserr::CYCLE_OVERRUN, syserr::CYCLE_OVERRUN, 0]);
+    assert_eq!(u.mode(), Mode::Wait);
+    // A program that fits runs after a reset as before.
+    load_il(&mut u, "LD I0\nST Q0\n");
+    clock.step(Duration::from_millis(20));
+    u.take_all();
+    assert_eq!((u.mode(), u.image.outputs & 1), (Mode::Work, 1));
+}
+
+#[test]
+fn an_il_program_raises_user_error_codes_into_the_history() {
+    let (mut u, clock) = sim("UMPK16");
+    load_il(&mut u, "LD I7\nERROR 12\nLD I6\nERROR 127\nLD I0\nST Q0\n");
+    let step = |u: &mut Umpk| {
+        clock.step(Duration::from_millis(10));
+        u.take_all();
+    };
+    step(&mut u);
+    assert_eq!(u.errors(), [0; 8]);
+    u.set_input(7, true);
+    u.set_input(0, true);
+    for _ in 0..5 {
+        step(&mut u);
+    }
+    assert_eq!(&u.errors()[..2], &[12, 0], "once, on the rising edge");
+    u.set_input(7, false);
+    step(&mut u);
+    u.set_input(7, true);
+    u.set_input(6, true);
+    step(&mut u);
+    assert_eq!(&u.errors()[..4], &[127, 12, 12, 0], "newest first");
+    // The program keeps running; the history is what ?07F9 sends, H is set.
+    assert_eq!(u.mode(), Mode::Work);
+    assert_eq!(u.image.outputs & 1, 1);
+    let mut want = b"?07F9".to_vec();
+    want.extend(packet(&[127, 12, 12, 0, 0, 0, 0, 0]));
+    want.extend(b"\r\n");
+    assert_eq!(s(&talk(&mut u, b"?07F9")), s(&want));
+    assert!(status(&u).errors && status(&u).work);
+    // Codes outside 1–127 are refused at load time.
+    for bad in ["LD I0\nERROR 0\n", "LD I0\nERROR 128\n"] {
+        let e = super::program::IlRunner::load(bad, "p.il", u.model).err().expect(bad).to_string();
+        assert!(e.contains("p.il:2:1") && e.contains("1–127"), "{bad}: {e}");
+    }
+    let e = super::program::IlRunner::load("LD I0\nERROR Q0\n", "p.il", u.model).err().unwrap().to_string();
+    assert!(e.contains("constant"), "{e}");
 }
