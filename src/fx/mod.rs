@@ -16,6 +16,8 @@ pub mod link;
 pub mod memory;
 pub mod model;
 pub mod operand;
+pub mod plc;
 pub mod port;
+pub mod program;
 pub mod sim;
 pub mod space;
