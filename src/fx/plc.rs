@@ -315,6 +315,8 @@ impl Memory {
         if let Some(p) = &mut self.cpu.program {
             p.reset();
         }
+        // The first scan starts at once.
+        self.advance_to(now);
     }
 
     /// Loads a program (replacing any) and restarts RUN with it.
@@ -409,3 +411,7 @@ impl Memory {
         }
     }
 }
+
+#[cfg(test)]
+#[path = "plc_tests.rs"]
+mod tests;
