@@ -899,7 +899,7 @@ fn driven_by_plc(o: &FxOperand, index: u16) -> Error {
     } else {
         "the PLC sets it every scan; read it, or use an ordinary M or D for your own flags"
     };
-    Error::unsupported(format!("{name} ({what}) is driven by the PLC: a write would be ignored"))
+    Error::unsupported(format!("{name} — {what} — is driven by the PLC: a write would be ignored"))
         .operand(o.canonical())
         .hint(hint)
 }
