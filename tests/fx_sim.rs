@@ -109,7 +109,8 @@ fn both_served_ports_read_the_running_timer() {
     std::fs::create_dir_all(&dir).unwrap();
     let p = dir.join("count.il");
     std::fs::write(&p, "LD M8000\nOUT T0 K32000\nLD M8002\nMOV K77 D0\n").unwrap();
-    let served = serve(&["--fx-tcp", "127.0.0.1:0", "--fx-link-tcp", "127.0.0.1:0", "--fx-program", p.to_str().unwrap()]);
+    let served =
+        serve(&["--fx-tcp", "127.0.0.1:0", "--fx-link-tcp", "127.0.0.1:0", "--fx-program", p.to_str().unwrap()]);
     let addr = |k: &str| served.ready[k].as_str().unwrap_or_else(|| panic!("{k} in {}", served.ready)).to_string();
     assert!(served.ready["fx_program"].as_str().is_some_and(|s| s.ends_with("count.il")));
     let mut port = open_device(&format!("fx+tcp://{}?model=FX2N", addr("fx_tcp")));

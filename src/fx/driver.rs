@@ -1325,7 +1325,10 @@ mod tests {
         assert_eq!(get(b.as_mut(), "D5"), 77);
         set(b.as_mut(), "D1000", 9); // only the link reaches it
         assert!(a.operands().parse("D1000").is_err());
-        assert!(open_sim(&DeviceUrl::parse("sim-fx:FX2N?share=unit-test-a").unwrap(), &Clock::stepped()).is_err(), "model differs");
+        assert!(
+            open_sim(&DeviceUrl::parse("sim-fx:FX2N?share=unit-test-a").unwrap(), &Clock::stepped()).is_err(),
+            "model differs"
+        );
     }
 
     /// A transport in front of the in-process simulator that spoils the replies to the first
@@ -1589,7 +1592,10 @@ mod tests {
         let link = |baud: u32, wait: u8, networked: bool| {
             let line = lines::private(
                 "t",
-                Box::new(SimLink::new(sim_plc(model, None, &Clock::stepped()).unwrap(), Box::new(PortServer::default()))),
+                Box::new(SimLink::new(
+                    sim_plc(model, None, &Clock::stepped()).unwrap(),
+                    Box::new(PortServer::default()),
+                )),
             );
             let serial = LineSettings { baud, data_bits: 7, parity: Parity::Even, stop_bits: 1 };
             Driver::link(line, model, Header { station: 0, pc: 0xFF, wait }, Settings::default(), info.clone())

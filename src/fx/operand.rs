@@ -243,8 +243,7 @@ pub static SPECIALS: &[(Area, u16, &str)] = &[
 /// Special devices the CPU drives every scan (FX PM, special device list): the RUN monitors
 /// and initial pulses M8000–M8003, the clocks M8011–M8014, the scan times D8010–D8012. A
 /// write to them changes nothing on a PLC; the driver refuses it with a message.
-pub static SYSTEM_DRIVEN: &[(Area, u16, u16)] =
-    &[(Area::M, 8000, 8003), (Area::M, 8011, 8014), (Area::D, 8010, 8012)];
+pub static SYSTEM_DRIVEN: &[(Area, u16, u16)] = &[(Area::M, 8000, 8003), (Area::M, 8011, 8014), (Area::D, 8010, 8012)];
 
 /// Whether device `index` of `area` is one the CPU drives ([`SYSTEM_DRIVEN`]).
 pub fn system_driven(area: Area, index: u16) -> bool {

@@ -36,7 +36,10 @@ pub enum FxKind {
     /// A contact instruction with one bit operand: the engine mnemonic.
     Contact(&'static str),
     /// `LDP`/`ANDF` …: load the bit, take its edge, combine (`None`: a new block).
-    EdgeContact { rising: bool, combine: Option<&'static str> },
+    EdgeContact {
+        rising: bool,
+        combine: Option<&'static str>,
+    },
     /// No operand: the engine mnemonic (`ANB` → `ALD`).
     Plain(&'static str),
     /// `OUT`: a bit, or a timer/counter with its preset.
@@ -44,11 +47,20 @@ pub enum FxKind {
     Set,
     Rst,
     /// `PLS`/`PLF`: a one-scan pulse on the CR's edge.
-    Pulse { rising: bool },
+    Pulse {
+        rising: bool,
+    },
     /// An applied instruction: engine mnemonic, 32-bit (`D…`), pulse-executed (`…P`).
-    Applied { engine: &'static str, wide: bool, pulse: bool },
+    Applied {
+        engine: &'static str,
+        wide: bool,
+        pulse: bool,
+    },
     /// A contact comparison: engine mnemonic, 32-bit.
-    Compare { engine: &'static str, wide: bool },
+    Compare {
+        engine: &'static str,
+        wide: bool,
+    },
     /// `END`: the rest of the file is not scanned.
     End,
 }
@@ -142,8 +154,20 @@ pub static INSTRUCTIONS: &[FxDef] = &[
         "if the result is on: reset Y/M/S, clear D, clear a timer or counter (value 0, contact off)",
         "FX PM 2, Set and Reset; Timer, Counter (Out & Reset)",
     ),
-    fx("PLS", (1, 1), K::Pulse { rising: true }, "Y/M on for one scan after the result rises", "FX PM 2, Pulse (PLS, PLF)"),
-    fx("PLF", (1, 1), K::Pulse { rising: false }, "Y/M on for one scan after the result falls", "FX PM 2, Pulse (PLS, PLF)"),
+    fx(
+        "PLS",
+        (1, 1),
+        K::Pulse { rising: true },
+        "Y/M on for one scan after the result rises",
+        "FX PM 2, Pulse (PLS, PLF)",
+    ),
+    fx(
+        "PLF",
+        (1, 1),
+        K::Pulse { rising: false },
+        "Y/M on for one scan after the result falls",
+        "FX PM 2, Pulse (PLS, PLF)",
+    ),
     fx(
         "MOV",
         (2, 2),
@@ -186,13 +210,7 @@ pub static INSTRUCTIONS: &[FxDef] = &[
         "ADD on the rising edge",
         "FX PM 5, FNC 20 ADD",
     ),
-    fx(
-        "DADD",
-        (3, 3),
-        K::Applied { engine: "ADD", wide: true, pulse: false },
-        "32-bit ADD",
-        "FX PM 5, FNC 20 ADD",
-    ),
+    fx("DADD", (3, 3), K::Applied { engine: "ADD", wide: true, pulse: false }, "32-bit ADD", "FX PM 5, FNC 20 ADD"),
     fx(
         "SUB",
         (3, 3),
@@ -207,13 +225,7 @@ pub static INSTRUCTIONS: &[FxDef] = &[
         "SUB on the rising edge",
         "FX PM 5, FNC 21 SUB",
     ),
-    fx(
-        "DSUB",
-        (3, 3),
-        K::Applied { engine: "SUB", wide: true, pulse: false },
-        "32-bit SUB",
-        "FX PM 5, FNC 21 SUB",
-    ),
+    fx("DSUB", (3, 3), K::Applied { engine: "SUB", wide: true, pulse: false }, "32-bit SUB", "FX PM 5, FNC 21 SUB"),
     fx(
         "INC",
         (1, 1),
@@ -242,29 +254,155 @@ pub static INSTRUCTIONS: &[FxDef] = &[
         "D := D − 1 on the rising edge",
         "FX PM 5, FNC 25 DEC",
     ),
-    fx("LD=", (2, 2), K::Compare { engine: "LDW=", wide: false }, "start a block: S1 = S2 (16-bit)", "FX PM 5, FNC 224–230 LD□"),
+    fx(
+        "LD=",
+        (2, 2),
+        K::Compare { engine: "LDW=", wide: false },
+        "start a block: S1 = S2 (16-bit)",
+        "FX PM 5, FNC 224–230 LD□",
+    ),
     fx("LD>", (2, 2), K::Compare { engine: "LDW>", wide: false }, "start a block: S1 > S2", "FX PM 5, FNC 224–230 LD□"),
     fx("LD<", (2, 2), K::Compare { engine: "LDW<", wide: false }, "start a block: S1 < S2", "FX PM 5, FNC 224–230 LD□"),
-    fx("LD<>", (2, 2), K::Compare { engine: "LDW<>", wide: false }, "start a block: S1 ≠ S2", "FX PM 5, FNC 224–230 LD□"),
-    fx("LD<=", (2, 2), K::Compare { engine: "LDW<=", wide: false }, "start a block: S1 ≤ S2", "FX PM 5, FNC 224–230 LD□"),
-    fx("LD>=", (2, 2), K::Compare { engine: "LDW>=", wide: false }, "start a block: S1 ≥ S2", "FX PM 5, FNC 224–230 LD□"),
-    fx("AND=", (2, 2), K::Compare { engine: "AW=", wide: false }, "series contact: S1 = S2", "FX PM 5, FNC 232–238 AND□"),
-    fx("AND>", (2, 2), K::Compare { engine: "AW>", wide: false }, "series contact: S1 > S2", "FX PM 5, FNC 232–238 AND□"),
-    fx("AND<", (2, 2), K::Compare { engine: "AW<", wide: false }, "series contact: S1 < S2", "FX PM 5, FNC 232–238 AND□"),
-    fx("AND<>", (2, 2), K::Compare { engine: "AW<>", wide: false }, "series contact: S1 ≠ S2", "FX PM 5, FNC 232–238 AND□"),
-    fx("AND<=", (2, 2), K::Compare { engine: "AW<=", wide: false }, "series contact: S1 ≤ S2", "FX PM 5, FNC 232–238 AND□"),
-    fx("AND>=", (2, 2), K::Compare { engine: "AW>=", wide: false }, "series contact: S1 ≥ S2", "FX PM 5, FNC 232–238 AND□"),
-    fx("OR=", (2, 2), K::Compare { engine: "OW=", wide: false }, "parallel contact: S1 = S2", "FX PM 5, FNC 240–246 OR□"),
-    fx("OR>", (2, 2), K::Compare { engine: "OW>", wide: false }, "parallel contact: S1 > S2", "FX PM 5, FNC 240–246 OR□"),
-    fx("OR<", (2, 2), K::Compare { engine: "OW<", wide: false }, "parallel contact: S1 < S2", "FX PM 5, FNC 240–246 OR□"),
-    fx("OR<>", (2, 2), K::Compare { engine: "OW<>", wide: false }, "parallel contact: S1 ≠ S2", "FX PM 5, FNC 240–246 OR□"),
-    fx("OR<=", (2, 2), K::Compare { engine: "OW<=", wide: false }, "parallel contact: S1 ≤ S2", "FX PM 5, FNC 240–246 OR□"),
-    fx("OR>=", (2, 2), K::Compare { engine: "OW>=", wide: false }, "parallel contact: S1 ≥ S2", "FX PM 5, FNC 240–246 OR□"),
-    fx("LDD=", (2, 2), K::Compare { engine: "LDD=", wide: true }, "32-bit: start a block: S1 = S2", "FX PM 5, FNC 224 LD="),
-    fx("LDD>", (2, 2), K::Compare { engine: "LDD>", wide: true }, "32-bit: start a block: S1 > S2", "FX PM 5, FNC 225 LD>"),
-    fx("LDD<", (2, 2), K::Compare { engine: "LDD<", wide: true }, "32-bit: start a block: S1 < S2", "FX PM 5, FNC 226 LD<"),
-    fx("ANDD=", (2, 2), K::Compare { engine: "AD=", wide: true }, "32-bit series contact: S1 = S2", "FX PM 5, FNC 232 AND="),
-    fx("ORD=", (2, 2), K::Compare { engine: "OD=", wide: true }, "32-bit parallel contact: S1 = S2", "FX PM 5, FNC 240 OR="),
+    fx(
+        "LD<>",
+        (2, 2),
+        K::Compare { engine: "LDW<>", wide: false },
+        "start a block: S1 ≠ S2",
+        "FX PM 5, FNC 224–230 LD□",
+    ),
+    fx(
+        "LD<=",
+        (2, 2),
+        K::Compare { engine: "LDW<=", wide: false },
+        "start a block: S1 ≤ S2",
+        "FX PM 5, FNC 224–230 LD□",
+    ),
+    fx(
+        "LD>=",
+        (2, 2),
+        K::Compare { engine: "LDW>=", wide: false },
+        "start a block: S1 ≥ S2",
+        "FX PM 5, FNC 224–230 LD□",
+    ),
+    fx(
+        "AND=",
+        (2, 2),
+        K::Compare { engine: "AW=", wide: false },
+        "series contact: S1 = S2",
+        "FX PM 5, FNC 232–238 AND□",
+    ),
+    fx(
+        "AND>",
+        (2, 2),
+        K::Compare { engine: "AW>", wide: false },
+        "series contact: S1 > S2",
+        "FX PM 5, FNC 232–238 AND□",
+    ),
+    fx(
+        "AND<",
+        (2, 2),
+        K::Compare { engine: "AW<", wide: false },
+        "series contact: S1 < S2",
+        "FX PM 5, FNC 232–238 AND□",
+    ),
+    fx(
+        "AND<>",
+        (2, 2),
+        K::Compare { engine: "AW<>", wide: false },
+        "series contact: S1 ≠ S2",
+        "FX PM 5, FNC 232–238 AND□",
+    ),
+    fx(
+        "AND<=",
+        (2, 2),
+        K::Compare { engine: "AW<=", wide: false },
+        "series contact: S1 ≤ S2",
+        "FX PM 5, FNC 232–238 AND□",
+    ),
+    fx(
+        "AND>=",
+        (2, 2),
+        K::Compare { engine: "AW>=", wide: false },
+        "series contact: S1 ≥ S2",
+        "FX PM 5, FNC 232–238 AND□",
+    ),
+    fx(
+        "OR=",
+        (2, 2),
+        K::Compare { engine: "OW=", wide: false },
+        "parallel contact: S1 = S2",
+        "FX PM 5, FNC 240–246 OR□",
+    ),
+    fx(
+        "OR>",
+        (2, 2),
+        K::Compare { engine: "OW>", wide: false },
+        "parallel contact: S1 > S2",
+        "FX PM 5, FNC 240–246 OR□",
+    ),
+    fx(
+        "OR<",
+        (2, 2),
+        K::Compare { engine: "OW<", wide: false },
+        "parallel contact: S1 < S2",
+        "FX PM 5, FNC 240–246 OR□",
+    ),
+    fx(
+        "OR<>",
+        (2, 2),
+        K::Compare { engine: "OW<>", wide: false },
+        "parallel contact: S1 ≠ S2",
+        "FX PM 5, FNC 240–246 OR□",
+    ),
+    fx(
+        "OR<=",
+        (2, 2),
+        K::Compare { engine: "OW<=", wide: false },
+        "parallel contact: S1 ≤ S2",
+        "FX PM 5, FNC 240–246 OR□",
+    ),
+    fx(
+        "OR>=",
+        (2, 2),
+        K::Compare { engine: "OW>=", wide: false },
+        "parallel contact: S1 ≥ S2",
+        "FX PM 5, FNC 240–246 OR□",
+    ),
+    fx(
+        "LDD=",
+        (2, 2),
+        K::Compare { engine: "LDD=", wide: true },
+        "32-bit: start a block: S1 = S2",
+        "FX PM 5, FNC 224 LD=",
+    ),
+    fx(
+        "LDD>",
+        (2, 2),
+        K::Compare { engine: "LDD>", wide: true },
+        "32-bit: start a block: S1 > S2",
+        "FX PM 5, FNC 225 LD>",
+    ),
+    fx(
+        "LDD<",
+        (2, 2),
+        K::Compare { engine: "LDD<", wide: true },
+        "32-bit: start a block: S1 < S2",
+        "FX PM 5, FNC 226 LD<",
+    ),
+    fx(
+        "ANDD=",
+        (2, 2),
+        K::Compare { engine: "AD=", wide: true },
+        "32-bit series contact: S1 = S2",
+        "FX PM 5, FNC 232 AND=",
+    ),
+    fx(
+        "ORD=",
+        (2, 2),
+        K::Compare { engine: "OD=", wide: true },
+        "32-bit parallel contact: S1 = S2",
+        "FX PM 5, FNC 240 OR=",
+    ),
     fx("NOP", (0, 0), K::Plain("NOP"), "nothing", "FX PM 2, No Operation"),
     fx("END", (0, 0), K::End, "end of the program: what follows is not scanned", "FX PM 2, End"),
 ];
@@ -501,10 +639,18 @@ impl Builder<'_> {
                     Area::TS | Area::CS => {
                         let timer = o.area == Area::TS;
                         let Some((k, kp)) = ops.get(1) else {
-                            return Err(load_err(self.file, at, format!("OUT {t} needs a preset: OUT {t} K10 (a constant) or OUT {t} D10 (a register)")));
+                            return Err(load_err(
+                                self.file,
+                                at,
+                                format!("OUT {t} needs a preset: OUT {t} K10 (a constant) or OUT {t} D10 (a register)"),
+                            ));
                         };
                         if constant(k).is_none() && !k.to_ascii_uppercase().starts_with('D') {
-                            return Err(load_err(self.file, *kp, format!("{k}: a preset is a constant K… or a data register D…")));
+                            return Err(load_err(
+                                self.file,
+                                *kp,
+                                format!("{k}: a preset is a constant K… or a data register D…"),
+                            ));
                         }
                         let n = o.index;
                         let special = if timer {
@@ -526,7 +672,11 @@ impl Builder<'_> {
                     }
                     _ => {
                         if ops.len() > 1 {
-                            return Err(load_err(self.file, ops[1].1, format!("OUT {t} takes one operand (a preset is for timers and counters)")));
+                            return Err(load_err(
+                                self.file,
+                                ops[1].1,
+                                format!("OUT {t} takes one operand (a preset is for timers and counters)"),
+                            ));
                         }
                         self.coil_target(&o, t, *p, m)?;
                         self.emit(at, "ST", &ops[..1]);
@@ -551,7 +701,11 @@ impl Builder<'_> {
                         self.emit(at, "FXRST", &one(o.canonical(), *p));
                     }
                     _ => {
-                        return Err(load_err(self.file, *p, format!("RST {t}: resets Y, M, S, D, a timer T or a counter C")))
+                        return Err(load_err(
+                            self.file,
+                            *p,
+                            format!("RST {t}: resets Y, M, S, D, a timer T or a counter C"),
+                        ))
                     }
                 }
             }
