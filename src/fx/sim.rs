@@ -404,6 +404,9 @@ pub fn serve_line(t: &mut dyn Transport, server: &mut dyn Server, plc: &Plc, sto
         let n = t.recv(&mut buf, GAP)?;
         if n == 0 {
             server.gap();
+            // Keep the PLC near the present while the line is quiet, so a request after a
+            // long silence does not wait for its scans (the outcome is the same either way).
+            drop(lock(plc));
             continue;
         }
         for o in server.feed(&buf[..n], plc) {
