@@ -1030,7 +1030,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__sim__subcmd__serve)
-            opts="-v -d -h --tcp --rtu-pty --rtu-tcp --unit --agent --program --servo-pty --servo-tcp --servo-control --servo-id --servo-loop --servo-baud --servo-latency --servo-instant --servo-strict --fx-pty --fx-tcp --fx-link-pty --fx-link-tcp --fx-model --fx-station --umpk-pty --umpk-tcp --umpk-model --umpk-status-bits --umpk-flash-fail --umpk-state --umpk-program --fault --max-connections --idle-timeout --strict-unit --json --verbose --model --device --time --config --state --record --bench --read-only --help"
+            opts="-v -d -h --tcp --rtu-pty --rtu-tcp --unit --agent --program --servo-pty --servo-tcp --servo-control --servo-id --servo-loop --servo-baud --servo-latency --servo-instant --servo-strict --fx-pty --fx-tcp --fx-link-pty --fx-link-tcp --fx-model --fx-station --fx-program --umpk-pty --umpk-tcp --umpk-model --umpk-status-bits --umpk-flash-fail --umpk-state --umpk-program --fault --max-connections --idle-timeout --strict-unit --json --verbose --model --device --time --config --state --record --bench --read-only --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1105,6 +1105,10 @@ _plcsh() {
                     return 0
                     ;;
                 --fx-station)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --fx-program)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
