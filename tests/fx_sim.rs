@@ -76,6 +76,7 @@ fn run_stop_refused_writes_and_fx_names() {
         ("use fx; set D8012=0", "is driven by the PLC"),
         ("use fx; set Y8=1", "Y numbers are octal (Y0–Y7, Y10–Y17"),
         ("use fx; sim cpu pause", "no PAUSE"),
+        ("use fx; sim scan 3", "`sim scan` is not available on an FX PLC"),
         ("use fx; set K4Y0/DINT=70000", "out of range"),
         ("use fx; help T250", "100 ms timer, retentive"),
     ] {
