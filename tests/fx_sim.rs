@@ -133,3 +133,33 @@ fn both_served_ports_read_the_running_timer() {
     let c = tn(&mut port).0;
     assert!(c >= b, "the port reads the same timer the link read: {b} then {c}");
 }
+
+/// A snapshot holds the FX PLC's image, CPU and program: the same script after a restore
+/// (the program unloaded and the inputs changed in between) gives the same results.
+#[test]
+fn a_snapshot_carries_the_fx_program_its_timers_and_counters() {
+    let dir = std::env::temp_dir().join(format!("plcsh-fxsim-snap-{}", std::process::id()));
+    let script = "sim step 2s; get Y0 Y1 TN0 CN0 D8010; sim step 1.7s; get Y0 Y1 TN0 CN0 Y2";
+    let cmds = format!(
+        "use fx; sim program load scripts/fx_blink.il; sim step 1.3s; set X0=1; sim snapshot save fxs; {script}; \
+         sim program unload; set X0=0, TN0=0; sim step 1s; sim snapshot restore fxs; {script}; sim program"
+    );
+    let o = plcsh()
+        .env("PLCSH_SNAPSHOTS", &dir)
+        .args(["--time", "stepped", "--json", "-d", "fx=sim-fx:FX2N", "-c", &cmds])
+        .stdin(std::process::Stdio::null())
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", both(&o));
+    let l = json_lines(&o);
+    let gets: Vec<&serde_json::Value> = l.iter().filter(|v| v["cmd"] == "get").collect();
+    assert_eq!(gets.len(), 4, "{}", stdout(&o));
+    assert_eq!(gets[0]["values"], gets[2]["values"], "{}", stdout(&o));
+    assert_eq!(gets[1]["values"], gets[3]["values"], "{}", stdout(&o));
+    // Not trivial: T0 reached its preset (Y1) and C0 counted between the reads.
+    assert_eq!(gets[0]["values"][1]["value"], false);
+    assert_eq!(gets[1]["values"][1]["value"], true, "{}", stdout(&o));
+    assert_ne!(gets[0]["values"][3], gets[1]["values"][3]);
+    assert_eq!(l.last().unwrap()["program"], "fx_blink.il", "the program came back");
+    let _ = std::fs::remove_dir_all(&dir);
+}

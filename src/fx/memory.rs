@@ -19,10 +19,10 @@ use std::time::Duration;
 #[derive(Clone, Debug)]
 pub struct Memory {
     pub model: &'static Model,
-    bits: [Vec<bool>; 8],
-    tn: Vec<u16>,
-    cn: Vec<u32>,
-    d: Vec<u16>,
+    pub(super) bits: [Vec<bool>; 8],
+    pub(super) tn: Vec<u16>,
+    pub(super) cn: Vec<u32>,
+    pub(super) d: Vec<u16>,
     regions: Vec<Region>,
     /// Device writes made through either port (for tests and `devices`).
     pub writes: u64,

@@ -23,4 +23,5 @@ pub mod plc;
 pub mod port;
 pub mod program;
 pub mod sim;
+pub mod snapshot;
 pub mod space;

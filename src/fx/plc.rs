@@ -120,7 +120,7 @@ pub fn costs() -> CostTable {
 }
 
 /// RUN or STOP.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum Mode {
     Run,
     Stop,
@@ -137,7 +137,7 @@ impl Mode {
 
 /// Per-timer state the image does not hold: the coil at the last execution and the time
 /// credited so far.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct TimerRun {
     pub on: bool,
     pub mark_ns: u64,
@@ -145,7 +145,7 @@ pub struct TimerRun {
 }
 
 /// Scan-time statistics (D8010–D8012).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct Stats {
     /// Scans since the last STOP → RUN.
     pub scans: u64,

@@ -1018,6 +1018,8 @@ pub struct Loaded {
     /// The file it came from, and the FX instructions it has.
     pub source: String,
     pub instructions: usize,
+    /// The FX list as loaded (a snapshot stores it and compiles it again).
+    pub text: String,
 }
 
 impl Loaded {
@@ -1039,7 +1041,7 @@ impl Loaded {
         };
         let cpu = Cpu::new(&prog);
         let name = std::path::Path::new(file).file_name().map_or(file.into(), |n| n.to_string_lossy().into_owned());
-        Ok(Loaded { prog, cpu, source: name, instructions })
+        Ok(Loaded { prog, cpu, source: name, instructions, text: text.to_string() })
     }
 
     /// STOP → RUN: edge memories and the engine's state start afresh.
