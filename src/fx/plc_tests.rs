@@ -312,6 +312,8 @@ fn load_errors_name_the_fx_line_and_what_to_do() {
     assert!(e("LD Y8\n").contains("Y numbers are octal"));
     assert!(e("LD X0\nOUT Y0 K5\n").contains("one operand"));
     assert!(e("LD X0\nMOV K1\n").contains("MOV takes 2 operand(s)"));
+    assert!(e("LD X0\nMOV K5 K4X0\n").contains("p.il:2:8: MOV K4X0: inputs X cannot be written"));
+    assert!(e("LD X0\nINC X0\n").contains("inputs X"));
     // After END nothing is read; a step-number column is accepted.
     assert!(Loaded::load("0 LD X000\n1 OUT Y000\nEND\nthis is not FX\n", "p.il", fx2n()).is_ok());
 }

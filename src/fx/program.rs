@@ -719,6 +719,19 @@ impl Builder<'_> {
                 self.emit(at, "LPP", &[]);
             }
             K::Applied { engine, wide, pulse } => {
+                // The destination (the last operand) is written: never an input.
+                let (t, p) = &ops[ops.len() - 1];
+                if constant(t).is_none() {
+                    let o = self.parse(&value_text(t, false), *p)?;
+                    if o.area == Area::X {
+                        return Err(load_err(
+                            self.file,
+                            *p,
+                            format!("{m} {t}: inputs X cannot be written by a program"),
+                        )
+                        .hint("write Y, M, S (as KnY0 …), D, or a timer's or counter's value"));
+                    }
+                }
                 let vals: Vec<(String, Pos)> = ops.iter().map(|(t, p)| (value_text(t, wide), *p)).collect();
                 self.emit(at, "LPS", &[]);
                 if pulse {
