@@ -159,6 +159,7 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             [CompletionResult]::new('--fx-link-tcp', '--fx-link-tcp', [CompletionResultType]::ParameterName, 'Serve the same FX PLC''s computer link on a TCP port (fxlink+tcp://ADDR)')
             [CompletionResult]::new('--fx-model', '--fx-model', [CompletionResultType]::ParameterName, 'The simulated FX PLC''s model (FX1S, FX1N, FX2N, FX3U; FX2NC and FX3UC name the FX2N and FX3U)')
             [CompletionResult]::new('--fx-station', '--fx-station', [CompletionResultType]::ParameterName, 'The computer link''s station number (0–31)')
+            [CompletionResult]::new('--fx-program', '--fx-program', [CompletionResultType]::ParameterName, 'An FX instruction list the simulated FX PLC runs (docs/il.md, "The FX family")')
             [CompletionResult]::new('--umpk-pty', '--umpk-pty', [CompletionResultType]::ParameterName, 'Serve a simulated UMPK teaching PLC on a new pseudo-terminal; LINK becomes a symlink to it')
             [CompletionResult]::new('--umpk-tcp', '--umpk-tcp', [CompletionResultType]::ParameterName, 'Serve a simulated UMPK teaching PLC on a TCP port (umpk+tcp://ADDR)')
             [CompletionResult]::new('--umpk-model', '--umpk-model', [CompletionResultType]::ParameterName, 'The simulated UMPK''s model (UMPK8 or UMPK16)')

@@ -130,6 +130,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l fx-link-tcp -d 'Serve the same FX PLC\'s computer link on a TCP port (fxlink+tcp://ADDR)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l fx-model -d 'The simulated FX PLC\'s model (FX1S, FX1N, FX2N, FX3U; FX2NC and FX3UC name the FX2N and FX3U)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l fx-station -d 'The computer link\'s station number (0–31)' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l fx-program -d 'An FX instruction list the simulated FX PLC runs (docs/il.md, "The FX family")' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l umpk-pty -d 'Serve a simulated UMPK teaching PLC on a new pseudo-terminal; LINK becomes a symlink to it' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l umpk-tcp -d 'Serve a simulated UMPK teaching PLC on a TCP port (umpk+tcp://ADDR)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l umpk-model -d 'The simulated UMPK\'s model (UMPK8 or UMPK16)' -r

@@ -18,7 +18,7 @@ end
 -- Read the whole recipe: one batch (the driver coalesces it into few frames).
 local setpoints = { fx:get("D200..D207") }
 local batch = fx["D210/DINT"]
-local options = fx.K4M100
+local options = fx["K4M100/WORD"] -- option bits: unsigned (a plain K4 group reads as a signed INT)
 plcsh.assert_eq(#setpoints, 8, "eight setpoints")
 
 -- Write it to the K2 in one batch, checked before anything is written.

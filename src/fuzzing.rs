@@ -39,6 +39,7 @@ pub static TARGETS: &[(&str, Target)] = &[
     ("fx_port", fx_port),
     ("fx_link", fx_link),
     ("fx_operand", fx_operand),
+    ("fx_il", fx_il),
     ("umpk_reply", umpk_reply),
     ("umpk_hex", umpk_hex),
     ("pcapng", pcapng),
@@ -327,6 +328,23 @@ pub fn fx_operand(data: &[u8]) {
     for m in crate::fx::model::MODELS {
         for proto in [Proto::Port, Proto::Link] {
             let _ = FxSpace::new(m, proto).parse_fx(&t);
+        }
+    }
+}
+
+/// FX instruction lists: translated and compiled for each model; a program that loads runs
+/// a few scans on a simulated PLC (stepped clock moved 1 s between them).
+pub fn fx_il(data: &[u8]) {
+    let t = text(data);
+    for m in crate::fx::model::MODELS {
+        if let Ok(p) = crate::fx::program::Loaded::load(&t, "fuzz.il", m) {
+            let clock = Clock::stepped();
+            let mut plc = crate::fx::memory::Memory::with_clock(m, clock.clone());
+            plc.load_program(p);
+            for _ in 0..3 {
+                clock.step(std::time::Duration::from_millis(2));
+                plc.advance();
+            }
         }
     }
 }

@@ -107,7 +107,7 @@ pub fn open_url(url: &str, clock: &Clock) -> Result<Box<dyn Device>> {
         "tcp" | "rtu" => crate::k2::open_wire(&u),
         "fx" => crate::fx::driver::open_port(&u),
         "fxlink" => crate::fx::driver::open_link(&u),
-        "sim-fx" => crate::fx::driver::open_sim(&u),
+        "sim-fx" => crate::fx::driver::open_sim(&u, clock),
         "umpk" => crate::umpk::driver::open_serial(&u),
         "sim-umpk" => crate::umpk::driver::open_sim(&u, clock),
         other => Err(Error::usage(format!("unknown device scheme `{other}:` in {url}")).hint(

@@ -11,6 +11,9 @@
 //!                "servo": { "family": "servo", "sections": { "servo": { … } } } } }
 //! ```
 //!
+//! A simulated FX PLC is one `fx` section ([`crate::fx::snapshot`]): its image, its CPU and its
+//! program's text (compiled again on restore) with the engine's state.
+//!
 //! A simulated PLC's wires are its `wiring` section: each wire's declaration (as `sim wire`
 //! takes it) and what it carries between pieces (counts given, pulses pushed, levels in
 //! flight). Restoring one re-declares the wires (replacing the PLC's current ones), then
@@ -64,7 +67,13 @@ fn dec<T: serde::de::DeserializeOwned>(v: &serde_json::Value, what: &str) -> Res
 }
 
 /// The sections this plcsh knows, per family.
-const KNOWN: &[(&str, &str)] = &[("k2", "k2"), ("k2", "wiring"), ("servo", "servo")];
+const KNOWN: &[(&str, &str)] = &[("k2", "k2"), ("k2", "wiring"), ("servo", "servo"), ("fx", "fx")];
+
+/// The simulated FX PLC behind a device, if it is one (`sim-fx:`).
+fn fx_sim(dev: &mut Box<dyn crate::core::Device>) -> Option<crate::fx::sim::Plc> {
+    let ops = dev.family_ops_for(&[]).ok().flatten()?;
+    ops.downcast_mut::<crate::fx::driver::Driver>()?.sim.clone()
+}
 
 /// One wire in a snapshot's `wiring` section.
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -105,11 +114,17 @@ impl Snapshot {
                 let mut sections = BTreeMap::new();
                 sections.insert("servo".to_string(), enc(line.save_drives())?);
                 devices.insert(name, DeviceSnap { family: "servo".into(), sections });
+            } else if let Some(plc) = fx_sim(dev) {
+                let st = plc.lock().unwrap_or_else(|p| p.into_inner()).snapshot_state();
+                let mut sections = BTreeMap::new();
+                sections.insert("fx".to_string(), enc(st)?);
+                devices.insert(name, DeviceSnap { family: "fx".into(), sections });
             }
         }
         if devices.is_empty() {
-            return Err(Error::usage("no simulated device is open: nothing to snapshot")
-                .hint("snapshots hold simulator state (sim:MODEL, sim-servo:); a real device's state is its own"));
+            return Err(Error::usage("no simulated device is open: nothing to snapshot").hint(
+                "snapshots hold simulator state (sim:MODEL, sim-servo:, sim-fx:); a real device's state is its own",
+            ));
         }
         Ok(Snapshot {
             format: FORMAT.into(),
@@ -130,6 +145,7 @@ impl Snapshot {
             let ok = match d.family.as_str() {
                 "k2" => dev.as_k2().and_then(|k| k.as_sim()).is_some(),
                 "servo" => dev.as_servo().and_then(|sv| sv.simulator()).is_some(),
+                "fx" => fx_sim(dev).is_some(),
                 _ => false,
             };
             if !ok {
@@ -143,6 +159,7 @@ impl Snapshot {
         // Decode every section and check the models before anything changes.
         let mut k2 = Vec::new();
         let mut servo = Vec::new();
+        let mut fx = Vec::new();
         let mut wiring: Vec<(usize, String, Vec<WireSnap>)> = Vec::new();
         for (name, d) in &self.devices {
             let i = s.index(name)?;
@@ -174,6 +191,19 @@ impl Snapshot {
                 let drives: Vec<crate::servo::sim::drive::Drive> = dec(v, "servo")?;
                 servo.push((i, drives));
             }
+            if let Some(v) = d.sections.get("fx") {
+                let st: crate::fx::snapshot::FxState = dec(v, "fx")?;
+                let plc = fx_sim(&mut s.entry(i).device).expect("checked above");
+                let model = plc.lock().unwrap_or_else(|p| p.into_inner()).model.name;
+                if st.model != model {
+                    return Err(Error::usage(format!(
+                        "cannot restore `{name}`: the snapshot is of an {}, this simulator is an {model}",
+                        st.model
+                    ))
+                    .hint(format!("open it as {name}=sim-fx:{}", st.model)));
+                }
+                fx.push((i, name, st));
+            }
         }
         // Wires first: declaring one touches the PLC and the drive, whose saved states follow.
         for (i, name, wires) in &wiring {
@@ -194,6 +224,11 @@ impl Snapshot {
         for (i, drives) in servo {
             let line = s.entry(i).device.as_servo().and_then(|sv| sv.simulator()).expect("checked above");
             line.lock().unwrap_or_else(|p| p.into_inner()).restore_drives(drives);
+        }
+        for (i, name, st) in fx {
+            let plc = fx_sim(&mut s.entry(i).device).expect("checked above");
+            let mut m = plc.lock().unwrap_or_else(|p| p.into_inner());
+            m.restore_state(&st).map_err(|e| Error::usage(format!("cannot restore `{name}`: {e}")))?;
         }
         for (i, name, wires) in wiring {
             let sim = s.entry(i).device.as_k2().and_then(|k| k.as_sim()).expect("checked above");

@@ -67,6 +67,13 @@ fn a_wrong_expectation_fails_the_script_with_exit_status_1() {
     );
     fails_when_changed("pto_profile_ramp.lua", "plc.SMD212, pulses,", "plc.SMD212, pulses + 1,", "", "expected: 14201");
     fails_when_changed(
+        "fx_blink.lua",
+        "plcsh.assert_eq(fx.TN0, 30,",
+        "plcsh.assert_eq(fx.TN0, 31,",
+        "",
+        "actual:   30",
+    );
+    fails_when_changed(
         "hsc_quadrature_multi_pv.lua",
         "{ number = 66, pv = 3, cv = 2110 }",
         "{ number = 66, pv = 3, cv = 2111 }",

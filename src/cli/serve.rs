@@ -129,6 +129,9 @@ pub struct ServeArgs {
     /// The computer link's station number (0–31).
     #[arg(long = "fx-station", value_name = "N", default_value_t = 0)]
     pub fx_station: u8,
+    /// An FX instruction list the simulated FX PLC runs (docs/il.md, "The FX family").
+    #[arg(long = "fx-program", value_name = "FILE.il")]
+    pub fx_program: Option<PathBuf>,
     /// Serve a simulated UMPK teaching PLC on a new pseudo-terminal; LINK becomes a symlink to it.
     #[arg(long = "umpk-pty", value_name = "LINK", conflicts_with = "umpk_tcp")]
     pub umpk_pty: Option<PathBuf>,
@@ -455,7 +458,13 @@ async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
         serve_k2(cli, args, &clock, &mut tasks, &mut ready, &mut cleanup, k2).await?;
     }
     serve_servo(args, &servo_stop, &mut ready, &mut cleanup, line).await?;
-    ready.extend(crate::fx::sim::serve_ports(fx.0, fx.1, &args.fx_model, args.fx_station, &servo_stop).await?);
+    let fx_plc = crate::fx::sim::PlcOptions {
+        model: &args.fx_model,
+        station: args.fx_station,
+        program: args.fx_program.as_deref(),
+        clock: &clock,
+    };
+    ready.extend(crate::fx::sim::serve_ports(fx.0, fx.1, fx_plc, &servo_stop).await?);
     cleanup.links.extend(args.fx_pty.iter().chain(&args.fx_link_pty).cloned());
     if let Some(on) = umpk {
         cleanup.links.extend(args.umpk_pty.iter().cloned());

@@ -405,7 +405,9 @@ impl Literal {
                     t.bits()
                 ));
             }
-            _ if self.pattern || !target.is_signed() => {
+            // A bit group narrower than its type (an FX K4Y0 viewed as DINT) is zero-extended:
+            // it is never negative.
+            _ if self.pattern || !target.is_signed() || bits < target.bits() => {
                 if v < 0 || v as u64 > mask(bits) {
                     let hint = if v < 0 && !target.is_signed() {
                         let signed = match bits {

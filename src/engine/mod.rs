@@ -16,7 +16,9 @@
 //! (`k2::sim::program::family`) and the UMPK teaching PLC (`umpk::sim::program`: its 10 ms
 //! cycle as the minimum scan, its bit operands as `Loc`s, its on-delay timers and
 //! divide-by-N counters as family instructions whose input is the CR, hence
-//! [`Machine::special_off`]). Nothing here names a K2 or UMPK register.
+//! [`Machine::special_off`]). The FX PLC (`fx::program`) is a third: its instruction lists
+//! are translated to this dialect first, its timers and counters are family instructions.
+//! Nothing here names a K2, UMPK or FX device.
 //!
 //! Pipeline: [`source::parse`] (linear, never panics) → [`compile::compile`] (operands
 //! resolved, labels and calls bound, errors with `file:line:column` and a suggestion) →

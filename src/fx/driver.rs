@@ -44,7 +44,7 @@
 use super::link::{self as fxlink, Cmd, Dev, Header, Reply, Settings};
 use super::memory::Memory;
 use super::model::Model;
-use super::operand::{Area, FxOperand, Width, CN32_FIRST};
+use super::operand::{system_driven, Area, FxOperand, Width, CN32_FIRST};
 use super::port::{self, Request, Table, ACK, ENQ, NAK};
 use super::sim::{LinkServer, Plc, PortServer, Server, SimLink};
 use super::space::{FxSpace, Proto};
@@ -52,7 +52,7 @@ use crate::core::link::line::{self as lines, SharedLine, Transport};
 use crate::core::link::serial::{Carrier, LineSettings, Parity};
 use crate::core::trace::{self, Dir};
 use crate::core::url::DeviceUrl;
-use crate::core::{Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
+use crate::core::{Clock, Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex, OnceLock, Weak};
 use std::time::{Duration, Instant};
@@ -273,6 +273,9 @@ pub struct Driver {
     pub resent: u64,
     /// Characters dropped while waiting for the line to be quiet (late replies, noise).
     pub dropped: u64,
+    /// The simulated PLC behind an in-process `sim-fx:` device (its CPU: `sim program`,
+    /// `sim cpu`), reached by the shell through [`Device::family_ops`].
+    pub sim: Option<Plc>,
 }
 
 impl Driver {
@@ -310,6 +313,7 @@ impl Driver {
             requests: 0,
             resent: 0,
             dropped: 0,
+            sim: None,
         }
     }
 
@@ -937,6 +941,21 @@ fn read_only(o: &FxOperand) -> Error {
     Error::unsupported(format!("{} ({}) cannot be set", o.canonical(), o.area.spec().meaning)).operand(o.canonical())
 }
 
+/// A write to a special device the CPU rewrites every scan: a real PLC ignores it, so it is
+/// refused here with what to do instead.
+fn driven_by_plc(o: &FxOperand, index: u16) -> Error {
+    let name = format!("{}{index}", o.area.name());
+    let what = super::operand::special_meaning(o.area, index).unwrap_or("a special device");
+    let hint = if o.area == Area::M && index <= 8003 {
+        "RUN/STOP is the PLC's switch: on the simulator `sim cpu stop` / `sim cpu run`"
+    } else {
+        "the PLC sets it every scan; read it, or use an ordinary M or D for your own flags"
+    };
+    Error::unsupported(format!("{name} — {what} — is driven by the PLC: a write would be ignored"))
+        .operand(o.canonical())
+        .hint(hint)
+}
+
 fn push_write(frames: &mut Vec<(Request, String)>, table: Table, addr: u16, data: Vec<u8>, o: &FxOperand) {
     if let Some((Request::Write { addr: a, data: d, .. }, what)) = frames.last_mut() {
         if *a as usize + d.len() == addr as usize && d.len() + data.len() <= port::MAX_BYTES {
@@ -1008,6 +1027,9 @@ impl Device for Driver {
             if !o.area.spec().writable {
                 return Err(read_only(o));
             }
+            if let Some(i) = (o.index..o.index.saturating_add(o.span())).find(|i| system_driven(o.area, *i)) {
+                return Err(driven_by_plc(o, i));
+            }
         }
         if fx.is_empty() {
             return Ok(());
@@ -1020,6 +1042,11 @@ impl Device for Driver {
 
     fn requests(&self) -> u64 {
         self.requests
+    }
+
+    fn family_ops(&mut self) -> Option<&mut dyn std::any::Any> {
+        // Only a simulator has operations of its own (its CPU); a real FX has none here.
+        self.sim.is_some().then_some(self as &mut dyn std::any::Any)
     }
 
     fn set_option(&mut self, key: &str, value: &str) -> Result<()> {
@@ -1157,9 +1184,10 @@ fn shared_plcs() -> &'static Mutex<HashMap<String, Weak<Mutex<Memory>>>> {
     R.get_or_init(|| Mutex::new(HashMap::new()))
 }
 
-/// A simulated PLC's memory, shared under `share` when given.
-pub fn sim_plc(model: &'static Model, share: Option<&str>) -> Result<Plc> {
-    let Some(name) = share else { return Ok(Arc::new(Mutex::new(Memory::new(model)))) };
+/// A simulated PLC's memory on `clock`, shared under `share` when given.
+pub fn sim_plc(model: &'static Model, share: Option<&str>, clock: &Clock) -> Result<Plc> {
+    let fresh = || Arc::new(Mutex::new(Memory::with_clock(model, clock.clone())));
+    let Some(name) = share else { return Ok(fresh()) };
     let mut reg = shared_plcs().lock().unwrap_or_else(|p| p.into_inner());
     reg.retain(|_, w| w.strong_count() > 0);
     if let Some(p) = reg.get(name).and_then(Weak::upgrade) {
@@ -1169,18 +1197,25 @@ pub fn sim_plc(model: &'static Model, share: Option<&str>) -> Result<Plc> {
         }
         return Ok(p);
     }
-    let p = Arc::new(Mutex::new(Memory::new(model)));
+    let p = fresh();
     reg.insert(name.to_string(), Arc::downgrade(&p));
     Ok(p)
 }
 
-/// Opens `sim-fx:MODEL?protocol=port|link&station=0&sum=1&format=1&share=NAME`.
-pub fn open_sim(u: &DeviceUrl) -> Result<Box<dyn Device>> {
+/// Opens `sim-fx:MODEL?protocol=port|link&station=0&sum=1&format=1&share=NAME&program=FILE.il`
+/// on the session's clock; `program` loads an FX list into the PLC ([`super::program`]).
+pub fn open_sim(u: &DeviceUrl, clock: &Clock) -> Result<Box<dyn Device>> {
     u.expect_params(&[
-        "model", "protocol", "station", "pc", "wait", "sum", "format", "xy", "share", "timeout", "retries",
+        "model", "protocol", "station", "pc", "wait", "sum", "format", "xy", "share", "timeout", "retries", "program",
     ])?;
     let model = model_of(u, Some(if u.target.is_empty() { "FX2N" } else { &u.target }))?;
-    let plc = sim_plc(model, u.param("share"))?;
+    let plc = sim_plc(model, u.param("share"), clock)?;
+    if let Some(p) = u.param("program") {
+        let text = std::fs::read_to_string(p).map_err(|e| Error::io(format!("{}: cannot read {p}: {e}", u.text)))?;
+        let loaded = super::program::Loaded::load(&text, p, model)?;
+        plc.lock().unwrap_or_else(|e| e.into_inner()).load_program(loaded);
+    }
+    let sim = plc.clone();
     let link = match u.param("protocol") {
         None | Some("port") => false,
         Some("link") => true,
@@ -1206,6 +1241,8 @@ pub fn open_sim(u: &DeviceUrl) -> Result<Box<dyn Device>> {
         let line = lines::private(&u.text, Box::new(SimLink::new(plc, Box::new(PortServer::default()))));
         Driver::port(line, model, info("programming port"))
     };
+    let mut d = d;
+    d.sim = Some(sim);
     finish(d, u)
 }
 
@@ -1215,7 +1252,7 @@ mod tests {
     use std::io;
 
     fn sim(url: &str) -> Box<dyn Device> {
-        open_sim(&DeviceUrl::parse(url).unwrap()).unwrap_or_else(|e| panic!("{url}: {e}"))
+        open_sim(&DeviceUrl::parse(url).unwrap(), &Clock::stepped()).unwrap_or_else(|e| panic!("{url}: {e}"))
     }
 
     fn ops(d: &dyn Device, names: &[&str]) -> Vec<Operand> {
@@ -1249,16 +1286,21 @@ mod tests {
             set(d, "Y10", 1);
             assert_eq!(get(d, "Y10"), 1);
             assert_eq!(get(d, "K2Y10"), 1);
-            set(d, "K4M0", 0xA5F0);
+            set(d, "K4M0/WORD", 0xA5F0);
             assert_eq!(get(d, "M4"), 1);
             assert_eq!(get(d, "M0"), 0);
-            assert_eq!(get(d, "K4M0"), 0xA5F0);
+            assert_eq!(get(d, "K4M0/WORD"), 0xA5F0);
             assert_eq!(get(d, "K1M4"), 0xF, "K1 is 4 bits");
             assert_eq!(get(d, "K3M0"), 0x5F0, "M12–M15 are on, but a K3 group's high bits are zero");
-            assert_eq!(get(d, "K4M0/INT"), 0xA5F0 - 0x10000, "a full K4 group may be negative");
+            assert_eq!(get(d, "K4M0"), 0xA5F0 - 0x10000, "a full K4 group is a signed 16-bit value");
+            assert_eq!(get(d, "K4M0/DINT"), 0xA5F0, "K4 in a 32-bit operation: high 16 bits zero");
             assert_eq!(get(d, "K8M0"), 0xA5F0, "K8 in 32 bits: M16–M31 are off");
+            set(d, "K4M0", -1);
+            assert_eq!(get(d, "K4M0/WORD"), 0xFFFF);
+            set(d, "K4M0/DINT", 0xA5F0);
+            assert_eq!(get(d, "K8M0"), 0xA5F0, "a 32-bit write to K4 writes 16 bits");
             set(d, "K2M3", 0xFF);
-            assert_eq!(get(d, "K4M0"), 0xA5F0 | 0x7F8, "an unaligned group writes exactly its bits");
+            assert_eq!(get(d, "K4M0/WORD"), 0xA5F0 | 0x7F8, "an unaligned group writes exactly its bits");
             set(d, "CN200", -7);
             assert_eq!(get(d, "CN200"), -7);
             set(d, "TN3", 42);
@@ -1331,7 +1373,7 @@ mod tests {
         set(l.as_mut(), "Y22", 1); // sent as BW Y0018
         assert_eq!(get(p.as_mut(), "Y22"), 1);
         assert_eq!(get(l.as_mut(), "K2Y20"), 4);
-        assert!(open_sim(&DeviceUrl::parse("sim-fx:FX2N?protocol=link&xy=hex").unwrap()).is_err());
+        assert!(open_sim(&DeviceUrl::parse("sim-fx:FX2N?protocol=link&xy=hex").unwrap(), &Clock::stepped()).is_err());
     }
 
     #[test]
@@ -1342,7 +1384,10 @@ mod tests {
         assert_eq!(get(b.as_mut(), "D5"), 77);
         set(b.as_mut(), "D1000", 9); // written over the link, read on the port
         assert_eq!(get(a.as_mut(), "D1000"), 9);
-        assert!(open_sim(&DeviceUrl::parse("sim-fx:FX2N?share=unit-test-a").unwrap()).is_err(), "model differs");
+        assert!(
+            open_sim(&DeviceUrl::parse("sim-fx:FX2N?share=unit-test-a").unwrap(), &Clock::stepped()).is_err(),
+            "model differs"
+        );
     }
 
     /// A transport in front of the in-process simulator that spoils the replies to the first
@@ -1386,7 +1431,7 @@ mod tests {
 
     fn faulty(bad: u32, nak: bool, link: bool) -> (Driver, Arc<Mutex<Memory>>) {
         let model = Model::find("FX2N").unwrap();
-        let plc = sim_plc(model, None).unwrap();
+        let plc = sim_plc(model, None, &Clock::stepped()).unwrap();
         let s = Settings::default();
         let h = Header { station: 0, pc: 0xFF, wait: 0 };
         let server: Box<dyn Server> =
@@ -1434,7 +1479,7 @@ mod tests {
         // space refuses it before sending — so build a link driver whose model is larger than
         // the simulated PLC to see the PLC's own NAK.
         let big = Model::find("FX2N").unwrap();
-        let plc = sim_plc(Model::find("FX1S").unwrap(), None).unwrap();
+        let plc = sim_plc(Model::find("FX1S").unwrap(), None, &Clock::stepped()).unwrap();
         let s = Settings::default();
         let line = lines::private("mismatch", Box::new(SimLink::new(plc, Box::new(LinkServer::new(0, s)))));
         let info = DeviceInfo { family: "fx", model: "test".into(), link: "x".into(), simulated: true };
@@ -1449,7 +1494,7 @@ mod tests {
     fn silence_is_reported_with_what_to_check() {
         // A link request for station 3 on a line where only station 0 answers.
         let model = Model::find("FX2N").unwrap();
-        let plc = sim_plc(model, None).unwrap();
+        let plc = sim_plc(model, None, &Clock::stepped()).unwrap();
         let s = Settings::default();
         let line = lines::private("one-station", Box::new(SimLink::new(plc, Box::new(LinkServer::new(0, s)))));
         let info = DeviceInfo { family: "fx", model: "test".into(), link: "x".into(), simulated: true };
@@ -1623,7 +1668,10 @@ mod tests {
         let link = |baud: u32, wait: u8, networked: bool| {
             let line = lines::private(
                 "t",
-                Box::new(SimLink::new(sim_plc(model, None).unwrap(), Box::new(PortServer::default()))),
+                Box::new(SimLink::new(
+                    sim_plc(model, None, &Clock::stepped()).unwrap(),
+                    Box::new(PortServer::default()),
+                )),
             );
             let serial = LineSettings { baud, data_bits: 7, parity: Parity::Even, stop_bits: 1 };
             Driver::link(line, model, Header { station: 0, pc: 0xFF, wait }, Settings::default(), info.clone())

@@ -2,26 +2,36 @@
 //! port and computer link) read and write, sized from the model table. Devices the model
 //! does not have are refused here, so each port answers NAK for them as a real PLC does.
 //!
-//! Special devices start as a PLC in RUN shows them: M8000 (RUN monitor, on) and M8001 (off),
-//! D8000 watchdog 200 ms.
+//! The image belongs to a CPU ([`super::plc`]): the special devices it drives (M8000–M8003,
+//! the clock relays M8011–M8014, the scan times D8010–D8012) are computed from its state and
+//! the image's time, not stored, so a write cannot change them; D8000 (watchdog) starts at
+//! 200 ms. Every port locks the image and brings it to the present ([`Memory::advance`])
+//! before answering.
 
 use super::model::{fx1s_counter, Model};
 use super::operand::{Area, CN32_FIRST, SPECIAL, SPECIAL_COUNT};
+use super::plc::Cpu;
 use super::port::{self, Region, Table};
+use crate::core::Clock;
+use std::time::Duration;
 
 /// The device memory of one simulated PLC.
 #[derive(Clone, Debug)]
 pub struct Memory {
     pub model: &'static Model,
-    bits: [Vec<bool>; 8],
-    tn: Vec<u16>,
-    cn: Vec<u32>,
-    d: Vec<u16>,
+    pub(super) bits: [Vec<bool>; 8],
+    pub(super) tn: Vec<u16>,
+    pub(super) cn: Vec<u32>,
+    pub(super) d: Vec<u16>,
     regions: Vec<Region>,
     /// The extended (E-command) table's regions.
     ext_regions: Vec<Region>,
     /// Device writes made through either port (for tests and `devices`).
     pub writes: u64,
+    /// The CPU that scans this image.
+    pub cpu: Cpu,
+    /// The virtual time the image shows (a scan's start while it runs).
+    pub(super) at: Duration,
 }
 
 fn bit_slot(area: Area) -> Option<usize> {
@@ -39,7 +49,13 @@ fn bit_slot(area: Area) -> Option<usize> {
 }
 
 impl Memory {
+    /// A PLC in RUN on a stepped clock that nothing steps (tests of the image alone).
     pub fn new(model: &'static Model) -> Memory {
+        Memory::with_clock(model, Clock::stepped())
+    }
+
+    /// A PLC in RUN from `clock`'s present time.
+    pub fn with_clock(model: &'static Model, clock: Clock) -> Memory {
         let special = (SPECIAL + SPECIAL_COUNT) as usize;
         let bits = [
             vec![false; model.x as usize],
@@ -60,10 +76,16 @@ impl Memory {
             regions: port::regions(Table::Classic),
             ext_regions: port::regions(Table::Extended),
             writes: 0,
+            at: clock.now(),
+            cpu: Cpu::new(clock, model),
         };
-        m.bits[2][SPECIAL as usize] = true; // M8000 RUN monitor
         m.d[SPECIAL as usize] = 200; // D8000 watchdog, ms
         m
+    }
+
+    /// The virtual time the image shows.
+    pub fn time(&self) -> Duration {
+        self.at
     }
 
     /// Whether the model has device `index` of `area`.
@@ -91,15 +113,30 @@ impl Memory {
         if !self.exists(area, index) {
             return None;
         }
+        if area == Area::M {
+            if let Some(b) = self.cpu.system_bit(index, self.at) {
+                return Some(b);
+            }
+        }
         self.bits[bit_slot(area)?].get(index as usize).copied()
     }
 
+    /// A client's (or program's) write of a bit; one the CPU drives is accepted and ignored,
+    /// as the PLC rewrites it every scan.
     pub fn set_bit(&mut self, area: Area, index: u16, v: bool) -> Option<()> {
         if !self.exists(area, index) {
             return None;
         }
-        *self.bits[bit_slot(area)?].get_mut(index as usize)? = v;
         self.writes += 1;
+        if area == Area::M && self.cpu.system_bit(index, self.at).is_some() {
+            return Some(());
+        }
+        self.set_plain_bit(area, index, v)
+    }
+
+    /// Stores a bit (the CPU's own writes: coils, contacts, outputs off in STOP).
+    pub(super) fn set_plain_bit(&mut self, area: Area, index: u16, v: bool) -> Option<()> {
+        *self.bits[bit_slot(area)?].get_mut(index as usize)? = v;
         Some(())
     }
 
@@ -107,6 +144,11 @@ impl Memory {
     pub fn word(&self, area: Area, index: u16) -> Option<u32> {
         if !self.exists(area, index) {
             return None;
+        }
+        if area == Area::D {
+            if let Some(v) = self.cpu.system_word(index) {
+                return Some(v as u32);
+            }
         }
         match area {
             Area::D => self.d.get(index as usize).map(|v| *v as u32),
@@ -117,10 +159,20 @@ impl Memory {
         }
     }
 
+    /// A client's (or program's) write of a word; D8010–D8012 are accepted and ignored.
     pub fn set_word(&mut self, area: Area, index: u16, v: u32) -> Option<()> {
         if !self.exists(area, index) {
             return None;
         }
+        self.writes += 1;
+        if area == Area::D && self.cpu.system_word(index).is_some() {
+            return Some(());
+        }
+        self.set_plain_word(area, index, v)
+    }
+
+    /// Stores a word (the CPU's own writes: timer and counter values).
+    pub(super) fn set_plain_word(&mut self, area: Area, index: u16, v: u32) -> Option<()> {
         let i = index as usize;
         match area {
             Area::D => *self.d.get_mut(i)? = v as u16,
@@ -129,7 +181,6 @@ impl Memory {
             Area::CN => *self.cn.get_mut(i)? = v & 0xFFFF,
             _ => return None,
         }
-        self.writes += 1;
         Some(())
     }
 

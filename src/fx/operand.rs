@@ -5,16 +5,20 @@
 //! Names (`../shared/spec/fx-and-masterk.md` A and B, seed 004):
 //! - bits `X0` `Y17` (octal numbers: X0–X7, X10 …; a digit 8 or 9 is an error that says so),
 //!   `M500`, `M8000`, `S20`, timer and counter contacts `TS0` `CS10` and coils `TC0` `CC10`
-//!   (the names public FX drivers use; a bare `T0` is refused with these three choices);
+//!   (the names public FX drivers use). A bare `T0` / `C10` is what FX programmers write
+//!   (`LD T0`): it names the **contact**, `TS0` / `CS10`; the current value is `TN0` / `CN10`;
 //! - words `D100` (INT; `/WORD` reads it unsigned), `D8000`+ special registers, current values
 //!   `TN0` and `CN0`; `CN200`–`CN255` are the 32-bit counters;
 //! - D pairs as 32-bit values: `D100/DINT` (also `/DWORD`, `/REAL`) is D100 (low word) with
 //!   D101 (high word), as FX 32-bit instructions use them;
 //! - bit groups `KnX0` `KnY0` `KnM0` `KnS0`, n = 1–8: 4·n consecutive bits as a number, the
-//!   lowest-numbered bit least significant; K1–K4 are 16-bit (WORD), K5–K8 32-bit (DWORD);
-//!   missing high bits are zero, so a K1–K3 (K5–K7) group is never negative (`/INT` is
-//!   allowed on K4 and `/DINT` on K8 only). A group should start at a number ending in 0
-//!   (X0, X10, M0, M10 …): others are accepted and `describe` warns.
+//!   lowest-numbered bit least significant (spec A, seed 004). K1–K4 are 16-bit operands and
+//!   read as INT, K5–K8 32-bit and read as DINT, as FX operations are signed; missing high bits
+//!   are zero, so a K1–K3 (K5–K7) group is never negative. `/WORD` (`/DWORD`) reads a full
+//!   group unsigned. A K1–K4 group also has a 32-bit view (`K4Y0/DINT`): its high 16 bits are
+//!   zero, as when K4Y0 is used in a 32-bit operation — use `K8Y0` for 32 bits. A group should
+//!   start at a number ending in 0 (X0, X10, M0, M10 …): others are accepted and `describe`
+//!   warns.
 //!
 //! Ranges `D0..D9` and counts `D0[10]` step by the operand's size. Input is case-insensitive
 //! and may start with `%`; output is canonical upper case.
@@ -227,10 +231,11 @@ pub static SPECIALS: &[(Area, u16, &str)] = &[
     (Area::M, 8000, "RUN monitor (on while the PLC runs)"),
     (Area::M, 8001, "RUN monitor, inverted (off while the PLC runs)"),
     (Area::M, 8002, "initial pulse (on for the first scan after RUN)"),
-    (Area::M, 8011, "10 ms clock pulse"),
-    (Area::M, 8012, "100 ms clock pulse"),
-    (Area::M, 8013, "1 s clock pulse"),
-    (Area::M, 8014, "1 min clock pulse"),
+    (Area::M, 8003, "initial pulse, inverted (off for the first scan after RUN)"),
+    (Area::M, 8011, "10 ms clock pulse (5 ms on, 5 ms off)"),
+    (Area::M, 8012, "100 ms clock pulse (50 ms on, 50 ms off)"),
+    (Area::M, 8013, "1 s clock pulse (0.5 s on, 0.5 s off)"),
+    (Area::M, 8014, "1 min clock pulse (30 s on, 30 s off)"),
     (Area::D, 8000, "watchdog time, ms"),
     (Area::D, 8010, "current scan time, 0.1 ms"),
     (Area::D, 8011, "shortest scan time, 0.1 ms"),
@@ -238,6 +243,16 @@ pub static SPECIALS: &[(Area, u16, &str)] = &[
     (Area::D, 8120, "communication format (computer link: baud, parity, sum check …)"),
     (Area::D, 8121, "computer-link station number"),
 ];
+
+/// Special devices the CPU drives every scan (FX PM, special device list): the RUN monitors
+/// and initial pulses M8000–M8003, the clocks M8011–M8014, the scan times D8010–D8012. A
+/// write to them changes nothing on a PLC; the driver refuses it with a message.
+pub static SYSTEM_DRIVEN: &[(Area, u16, u16)] = &[(Area::M, 8000, 8003), (Area::M, 8011, 8014), (Area::D, 8010, 8012)];
+
+/// Whether device `index` of `area` is one the CPU drives ([`SYSTEM_DRIVEN`]).
+pub fn system_driven(area: Area, index: u16) -> bool {
+    SYSTEM_DRIVEN.iter().any(|(a, lo, hi)| *a == area && (*lo..=*hi).contains(&index))
+}
 
 /// The meaning of a special device, if the table has it.
 pub fn special_meaning(area: Area, index: u16) -> Option<&'static str> {
@@ -301,8 +316,8 @@ impl FxOperand {
     pub fn natural(width: Width) -> DataType {
         match width {
             Width::Bit => DataType::Bool,
-            Width::Group(n) if n <= 4 => DataType::Word,
-            Width::Group(_) => DataType::DWord,
+            Width::Group(n) if n <= 4 => DataType::Int,
+            Width::Group(_) => DataType::DInt,
             Width::Word => DataType::Int,
             Width::Pair => DataType::DInt,
         }
@@ -477,8 +492,8 @@ fn parse_number(area: Area, digits: &str, col: usize, whole: &str) -> Result<u16
             return Err(op_err(
                 col + i,
                 format!(
-                    "{} numbers are octal (X0–X7, X10–X17 …): `{c}` is not an octal digit in `{whole}`",
-                    area.name()
+                    "{a} numbers are octal ({a}0–{a}7, {a}10–{a}17 …): `{c}` is not an octal digit in `{whole}`",
+                    a = area.name()
                 ),
             ));
         }
@@ -520,12 +535,9 @@ pub fn parse_one(text: &str) -> Result<FxOperand> {
     } else {
         (None, &upper[..], lead)
     };
-    let Some((area, len)) = area_prefix(rest) else {
-        if let Some(e) = bare_t_or_c(rest) {
-            return Err(e.column(col));
-        }
+    let Some((area, len)) = area_prefix(rest).or_else(|| bare_t_or_c(rest)) else {
         return Err(op_err(col, format!("unknown FX device `{body}`"))
-            .hint("devices: X Y M S (bits), TS TC CS CC (timer/counter contacts and coils), TN CN D (words), KnX KnY KnM KnS (groups)"));
+            .hint("devices: X Y M S (bits), T C or TS CS (timer/counter contacts), TC CC (coils), TN CN D (words), KnX KnY KnM KnS (groups)"));
     };
     let digits = &rest[len..];
     let index = parse_number(area, digits, col + len, body)?;
@@ -547,26 +559,36 @@ pub fn parse_one(text: &str) -> Result<FxOperand> {
     Ok(op)
 }
 
-/// The error for `T5`/`C5`: three devices share the number.
-pub fn bare_t_or_c(text: &str) -> Option<Error> {
-    let up = text.trim().trim_start_matches('%').to_ascii_uppercase();
-    // The first character, which may be longer than one byte in hostile input.
-    let (first, rest) = up.split_at(up.chars().next().map_or(0, char::len_utf8));
-    if (first == "T" || first == "C") && !rest.is_empty() && rest.bytes().all(|b| b.is_ascii_digit()) {
-        let (c, t) = if first == "T" { ("contact", "timer") } else { ("contact", "counter") };
-        return Some(
-            op_err(0, format!("`{up}` names a {t}: say which part"))
-                .hint(format!("{first}S{rest} ({t} {c}), {first}C{rest} ({t} coil) or {first}N{rest} (current value)")),
-        );
+/// `T5` / `C5` as FX programmers write them (`LD T5`): the timer's or counter's contact,
+/// [`Area::TS`] / [`Area::CS`] (FX Series Programming Manual, "Timers" and "Counters": the
+/// contact of T5 is written T5). The current value is `TN5` / `CN5`.
+fn bare_t_or_c(rest: &str) -> Option<(Area, usize)> {
+    let b = rest.as_bytes();
+    let area = match b.first()? {
+        b'T' => Area::TS,
+        b'C' => Area::CS,
+        _ => return None,
+    };
+    b.get(1).is_some_and(u8::is_ascii_digit).then_some((area, 1))
+}
+
+/// Whether `/TYPE` may view a group of `n` digits: a 16-bit type for K1–K4 (the group
+/// zero-extended to 16 bits), a 32-bit integer for any group (zero-extended: `K4Y0/DINT` has
+/// its high 16 bits zero, spec A), REAL only for a full K8.
+fn group_view_ok(n: u8, v: DataType) -> bool {
+    match v.bits() {
+        16 => n <= 4 && v != DataType::Bool,
+        32 if v == DataType::Real => n == 8,
+        32 => true,
+        _ => false,
     }
-    None
 }
 
 fn apply_view(op: FxOperand, v: DataType, col: usize) -> Result<FxOperand> {
     let mut o = op;
     let bad = || {
         op_err(col, format!("{} cannot be read as {}", op.canonical(), v.name()))
-            .hint("D takes /WORD, /INT, /DWORD, /DINT, /REAL (32-bit: D and the next D); K4 groups /INT; K8 groups /DINT, /REAL")
+            .hint("D takes /WORD, /INT, /DWORD, /DINT, /REAL (32-bit: D and the next D); K1–K4 groups /INT, /WORD, /DINT, /DWORD; K5–K8 groups /DINT, /DWORD (K8 also /REAL)")
     };
     match op.width {
         Width::Bit => {
@@ -581,7 +603,12 @@ fn apply_view(op: FxOperand, v: DataType, col: usize) -> Result<FxOperand> {
                 return Err(bad());
             }
         }
-        Width::Word | Width::Pair | Width::Group(_) => {
+        Width::Group(n) => {
+            if !group_view_ok(n, v) {
+                return Err(bad());
+            }
+        }
+        Width::Word | Width::Pair => {
             if v.bits() != op.bits() || v == DataType::Bool {
                 return Err(bad());
             }
@@ -647,8 +674,11 @@ mod tests {
             "K8M0",
             "K2X10",
             "K1Y0",
-            "K4S0/INT",
-            "K8M0/DINT",
+            "K4S0/WORD",
+            "K8M0/DWORD",
+            "K4Y0/DINT",
+            "K2X0/DWORD",
+            "K8M0/REAL",
         ] {
             let o = p(s);
             assert_eq!(o.canonical(), s);
@@ -657,6 +687,9 @@ mod tests {
         assert_eq!(p("%d100").canonical(), "D100");
         assert_eq!(p("k4m0").canonical(), "K4M0");
         assert_eq!(p("D100/INT").canonical(), "D100");
+        assert_eq!(p("K4M0/INT").canonical(), "K4M0");
+        assert_eq!(p("t7").canonical(), "TS7");
+        assert_eq!(p("C200").canonical(), "CS200");
     }
 
     #[test]
@@ -667,11 +700,20 @@ mod tests {
         assert_eq!(p("CN200").width, Width::Pair);
         assert_eq!(p("CN200").view, DataType::DInt);
         assert_eq!(p("CN199").width, Width::Word);
-        assert_eq!(p("K3M0").view, DataType::Word);
+        // FX 16-bit operations are signed: K4 reads as INT, K8 as DINT (spec A).
+        assert_eq!(p("K4M0").view, DataType::Int);
+        assert_eq!(p("K3M0").view, DataType::Int);
         assert_eq!(p("K3M0").bits(), 12);
-        assert_eq!(p("K5M0").view, DataType::DWord);
+        assert_eq!(p("K5M0").view, DataType::DInt);
+        assert_eq!(p("K8M0").view, DataType::DInt);
         assert_eq!(p("K8M0").bits(), 32);
-        assert!(parse_one("K3M0/INT").is_err(), "only a full 16-bit group may be signed");
+        assert_eq!(p("K4M0/WORD").view, DataType::Word);
+        // A 16-bit group in a 32-bit operation: high 16 bits zero (K4Y0/DINT), 16 bits wide.
+        let k = p("K4Y0/DINT");
+        assert_eq!((k.view, k.bits(), k.span()), (DataType::DInt, 16, 16));
+        assert!(parse_one("K5M0/INT").is_err(), "20 bits do not fit 16");
+        assert!(parse_one("K4M0/REAL").is_err() && parse_one("K7M0/REAL").is_err());
+        assert!(parse_one("K4M0/BOOL").is_err());
         assert!(parse_one("K9M0").is_err());
         assert!(parse_one("K0M0").is_err());
         assert!(parse_one("K4D0").is_err());
@@ -681,16 +723,23 @@ mod tests {
     }
 
     #[test]
-    fn bare_timer_and_counter_say_which_parts_exist() {
-        assert!(parse_one("T0").is_err());
-        let e = bare_t_or_c("T5").unwrap();
-        assert!(e.hint.as_deref().unwrap().contains("TN5 (current value)"), "{e:?}");
-        assert!(bare_t_or_c("C10").unwrap().hint.clone().unwrap().contains("CS10"));
-        assert!(bare_t_or_c("TN5").is_none());
-        assert!(
-            bare_t_or_c("\u{e9}5").is_none() && bare_t_or_c("\u{3a7}").is_none(),
-            "a first character longer than a byte"
-        );
+    fn bare_timer_and_counter_names_are_their_contacts() {
+        // FX programmers write `LD T0`: the contact. The value is TN0 / CN0.
+        assert_eq!(p("T0"), p("TS0"));
+        assert_eq!(p("%c10"), p("CS10"));
+        assert_eq!(p("T0").width, Width::Bit);
+        assert!(parse_one("T0/INT").is_err(), "a contact is a bit; the value is TN0");
+        assert!(parse_one("T").unwrap_err().message.contains("unknown FX device"));
+        assert!(parse_one("TX5").is_err() && parse_one("\u{e9}5").is_err() && parse_one("\u{3a7}").is_err());
+        assert!(parse_one("K4T0").unwrap_err().message.contains("groups are made of"));
+    }
+
+    #[test]
+    fn octal_errors_name_the_area_they_are_about() {
+        let e = parse_one("Y8").unwrap_err();
+        assert!(e.message.contains("Y numbers are octal (Y0–Y7, Y10–Y17"), "{e}");
+        let e = parse_one("X19").unwrap_err();
+        assert!(e.message.contains("X numbers are octal (X0–X7, X10–X17"), "{e}");
     }
 
     #[test]

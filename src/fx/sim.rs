@@ -63,8 +63,12 @@ fn now(bytes: Vec<u8>) -> Out {
     Out { bytes, wait: Duration::ZERO }
 }
 
+/// Locks the PLC and brings it to the present: every request is answered from the image as
+/// it is at the moment it arrives ([`Memory::advance`]).
 fn lock(plc: &Mutex<Memory>) -> std::sync::MutexGuard<'_, Memory> {
-    plc.lock().unwrap_or_else(|p| p.into_inner())
+    let mut m = plc.lock().unwrap_or_else(|p| p.into_inner());
+    m.advance();
+    m
 }
 
 /// The programming port.
@@ -409,6 +413,9 @@ pub fn serve_line(t: &mut dyn Transport, server: &mut dyn Server, plc: &Plc, sto
         let n = t.recv(&mut buf, GAP)?;
         if n == 0 {
             server.gap();
+            // Keep the PLC near the present while the line is quiet, so a request after a
+            // long silence does not wait for its scans (the outcome is the same either way).
+            drop(lock(plc));
             continue;
         }
         for o in server.feed(&buf[..n], plc) {
@@ -438,19 +445,28 @@ pub fn serve(
     serve_line(served.line.as_mut(), server.as_mut(), &plc, stop)
 }
 
+/// The simulated FX PLC `sim serve` runs: model, computer-link station, a program, the clock.
+pub struct PlcOptions<'a> {
+    pub model: &'a str,
+    pub station: u8,
+    pub program: Option<&'a std::path::Path>,
+    pub clock: &'a crate::core::Clock,
+}
+
 /// What `plcsh sim serve --fx-pty LINK --fx-link-pty LINK2` (or `--fx-tcp ADDR
-/// --fx-link-tcp ADDR`) serves: one simulated PLC of `model`, its programming port and/or
-/// its computer link (station `station`, format 1, sum check on), each on its own endpoint
-/// served from a thread. Returns once both are open, with their fields for the readiness
-/// line (`fx_model`, `fx_pty` or `fx_tcp`, `fx_link_pty` or `fx_link_tcp`, `fx_station`).
+/// --fx-link-tcp ADDR`) serves: one simulated PLC of `model` on the session's clock (running
+/// `--fx-program FILE.il` if given), its programming port and/or its computer link (station
+/// `station`, format 1, sum check on), each on its own endpoint served from a thread. Returns
+/// once both are open, with their fields for the readiness line (`fx_model`, `fx_pty` or
+/// `fx_tcp`, `fx_link_pty` or `fx_link_tcp`, `fx_station`, `fx_program`).
 pub async fn serve_ports(
     port_on: Option<ServeOn>,
     link_on: Option<ServeOn>,
-    model: &str,
-    station: u8,
+    opts: PlcOptions<'_>,
     stop: &Arc<AtomicBool>,
 ) -> Result<serde_json::Map<String, serde_json::Value>> {
     use serde_json::json;
+    let (model, station) = (opts.model, opts.station);
     let mut ready = serde_json::Map::new();
     if port_on.is_none() && link_on.is_none() {
         return Ok(ready);
@@ -462,7 +478,14 @@ pub async fn serve_ports(
     if station > 31 {
         return Err(crate::core::Error::usage("--fx-station is 0–31"));
     }
-    let plc: Plc = Arc::new(Mutex::new(Memory::new(m)));
+    let mut mem = Memory::with_clock(m, opts.clock.clone());
+    if let Some(p) = opts.program {
+        let text = std::fs::read_to_string(p)
+            .map_err(|e| crate::core::Error::io(format!("cannot read {}: {e}", p.display())))?;
+        mem.load_program(super::program::Loaded::load(&text, &p.display().to_string(), m)?);
+        ready.insert("fx_program".into(), json!(p.display().to_string()));
+    }
+    let plc: Plc = Arc::new(Mutex::new(mem));
     ready.insert("fx_model".into(), json!(m.name));
     let servers: [(Option<ServeOn>, &str, Box<dyn Server>); 2] = [
         (port_on, "fx", Box::new(PortServer::default())),

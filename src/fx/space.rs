@@ -207,12 +207,21 @@ impl OperandSpace for FxSpace {
         let mut s = format!("{} — {}\n", o.canonical(), self.describe(&core).unwrap_or_default());
         let (lo, hi) = o.view.int_range();
         let range = match o.width {
+            Width::Group(n) if 4 * n as u32 == o.view.bits() => format!("{lo}…{hi}"),
             Width::Group(n) => format!("0…{} (missing high bits are zero)", (1u64 << (4 * n)) - 1),
             _ if o.view == crate::core::DataType::Real => "IEEE 754 single".into(),
             _ => format!("{lo}…{hi}"),
         };
         s.push_str(&format!("type {} ({} bits), range {range}\n", o.view.name(), o.bits()));
         s.push_str(&format!("on {}: {}\n", self.model.name, self.range_text(o.area)));
+        if let Some(timer) = match o.area {
+            Area::TS | Area::TC | Area::TN => Some(true),
+            Area::CS | Area::CC | Area::CN => Some(false),
+            _ => None,
+        } {
+            s.push_str(&super::plc::element_note(timer, o.index));
+            s.push('\n');
+        }
         match self.proto {
             Proto::Port => {
                 let table = Table::of(self.model);

@@ -138,10 +138,11 @@ pub static BRIDGE: &[Bridge] = &[
     row("inject_fault", "k2", "sim fault {}"),
     row("injected_faults", "k2", "sim faults"),
     // The simulated K2's CPU and its IL program (k2::sim::program).
-    // … and the simulated UMPK's IL lab program (umpk::sim::program).
-    row("program_load", "k2/umpk", "sim program load {}"),
-    row("program", "k2/umpk", "sim program"),
-    row("cpu", "k2", "sim cpu {}"),
+    // … the simulated UMPK's IL lab program (umpk::sim::program), the simulated FX PLC's
+    // instruction list (fx::program).
+    row("program_load", "k2/umpk/fx", "sim program load {}"),
+    row("program", "k2/umpk/fx", "sim program"),
+    row("cpu", "k2/fx", "sim cpu {}"),
     row("scan", "k2", "sim scan [{}]"),
     row("breakpoint", "k2", "sim break {}"),
     row("step_instruction", "k2", "sim stepi [{}]"),

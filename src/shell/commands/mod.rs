@@ -7,6 +7,7 @@ mod device;
 mod eeprom;
 mod events;
 mod fault;
+mod fxsim;
 mod help;
 mod io;
 mod k2cmd;

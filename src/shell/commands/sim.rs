@@ -80,6 +80,11 @@ fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
         }
         "input" if super::umpk::current_is_umpk(sh) => return super::umpk::sim_input(sh, args),
         "program" if super::umpk::current_is_umpk(sh) => return super::umpk::sim_program(sh, args),
+        "program" | "cpu" | "stop" | "pause" | "switch" | "scan" | "break" | "stepi" | "stepn"
+            if super::fxsim::current_is_fx_sim(sh) =>
+        {
+            return super::fxsim::run(sh, sub, args)
+        }
         "input" | "quad" | "inputs" | "retain" => return super::siminputs::run(sh, sub, args),
         "snapshot" | "snapshots" => return super::snapshot::run(sh, sub, it.collect(), args.offset),
         "fault" | "faults" => {
