@@ -204,3 +204,31 @@ fn in_process_sim_fault_speaks_the_same_words() {
     assert_eq!(j[2]["values"][0]["value"], true, "{}", stdout(&o));
     assert_eq!(j.last().unwrap()["faults"][0]["kind"]["kind"], "stuck", "{j:?}");
 }
+
+/// A served FX PLC's control channel: X inputs switched, stuck and a silent line, seen by a
+/// client on its programming port (`fx+tcp://`), in the same words as the other families.
+#[test]
+fn a_served_fx_plc_takes_inputs_and_faults_on_its_control_channel() {
+    let dir = tmp("fx");
+    let ctl = dir.join("fx.ctl");
+    let s = serve(&["--fx-tcp", "0", "--fx-control", ctl.to_str().unwrap()]);
+    assert_eq!(s.ready["fx_control"], ctl.to_str().unwrap());
+    let url = format!("fx=fx+tcp://{}?timeout=300ms", s.ready["fx_tcp"].as_str().unwrap());
+    let get = |op: &str| {
+        let o = run(&["--json", "-d", &url, "-c", &format!("use fx; get {op}")], "");
+        (o.status.success(), json_lines(&o).last().cloned().unwrap_or_default())
+    };
+    assert_eq!(get("X17").1["values"][0]["value"], false);
+    assert_eq!(control(&ctl, "input X17=1")["input"], "X17");
+    assert_eq!(get("X17").1["values"][0]["value"], true);
+    control(&ctl, "fault stuck X17=0");
+    assert_eq!(get("X17").1["values"][0]["value"], false, "a stuck input reads its level");
+    control(&ctl, "fault no-reply for=1s");
+    let (ok, line) = get("X17");
+    assert!(!ok, "a silent line: {line}");
+    assert_eq!(control(&ctl, "fault clear")["cleared"], 2);
+    assert_eq!(get("X17").1["values"][0]["value"], true, "cleared: the switch's level again");
+    assert_eq!(control(&ctl, "events")["events"].as_array().unwrap().len(), 2);
+    let o = run(&["sim", "control", ctl.to_str().unwrap(), "input", "X18=1"], "");
+    assert_eq!(o.status.code(), Some(2), "X18 is not octal: {}", common::both(&o));
+}

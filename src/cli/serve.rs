@@ -154,6 +154,10 @@ pub struct ServeArgs {
     /// An IL lab program the simulated UMPK runs each 10 ms cycle (docs/il.md, "The UMPK family").
     #[arg(long = "umpk-program", value_name = "FILE.il")]
     pub umpk_program: Option<PathBuf>,
+    /// The served FX PLC's control channel at PATH (default: LINK.ctl beside --fx-pty's link):
+    /// X inputs switched, a silent line, stuck inputs while clients use its ports.
+    #[arg(long = "fx-control", value_name = "PATH")]
+    pub fx_control: Option<PathBuf>,
     /// The served UMPK's control channel at PATH (default: LINK.ctl beside --umpk-pty's link):
     /// inputs, square waves and faults while the lab's software uses the line.
     #[arg(long = "umpk-control", value_name = "PATH")]
@@ -463,8 +467,11 @@ async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
         station: args.fx_station,
         program: args.fx_program.as_deref(),
         clock: &clock,
+        control: args.fx_control.clone(),
     };
-    ready.extend(crate::fx::sim::serve_ports(fx.0, fx.1, fx_plc, &servo_stop).await?);
+    let (fx_ready, fx_control) = crate::fx::sim::serve_ports(fx.0, fx.1, fx_plc, &servo_stop).await?;
+    ready.extend(fx_ready);
+    cleanup.channels.extend(fx_control);
     cleanup.links.extend(args.fx_pty.iter().chain(&args.fx_link_pty).cloned());
     if let Some(on) = umpk {
         cleanup.links.extend(args.umpk_pty.iter().cloned());

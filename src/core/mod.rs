@@ -10,6 +10,7 @@ pub mod literal;
 pub mod operand;
 pub mod platform;
 pub mod signal;
+pub mod sim_faults;
 #[cfg(test)]
 pub mod test_rng;
 pub mod text;

@@ -32,6 +32,9 @@ pub struct Memory {
     pub cpu: Cpu,
     /// The virtual time the image shows (a scan's start while it runs).
     pub(super) at: Duration,
+    /// Faults injected through the control channel: a silent line, stuck X inputs
+    /// ([`super::control`]).
+    pub faults: crate::core::sim_faults::Faults,
 }
 
 fn bit_slot(area: Area) -> Option<usize> {
@@ -76,6 +79,7 @@ impl Memory {
             regions: port::regions(Table::Classic),
             ext_regions: port::regions(Table::Extended),
             writes: 0,
+            faults: Default::default(),
             at: clock.now(),
             cpu: Cpu::new(clock, model),
         };
@@ -109,9 +113,22 @@ impl Memory {
         special || index < n
     }
 
+    /// The outside world switches input X`index` (the control channel's `input`): stored as
+    /// a client's write is, without counting as one.
+    pub fn set_input(&mut self, index: u16, on: bool) {
+        if let Some(b) = self.bits[0].get_mut(index as usize) {
+            *b = on;
+        }
+    }
+
     pub fn bit(&self, area: Area, index: u16) -> Option<bool> {
         if !self.exists(area, index) {
             return None;
+        }
+        if area == Area::X {
+            if let Some((_, on)) = self.faults.stuck(self.at).find(|(i, _)| *i == index) {
+                return Some(on);
+            }
         }
         if area == Area::M {
             if let Some(b) = self.cpu.system_bit(index, self.at) {

@@ -14,6 +14,7 @@
 //! load`, `sim cpu run|stop`), reached through `Device::family_ops`; a real FX answers `None`
 //! there, so there is nothing for the write guard to police beyond device writes.
 
+pub mod control;
 pub mod driver;
 pub mod link;
 pub mod memory;

@@ -261,6 +261,13 @@ impl Memory {
     fn scan_once(&mut self) {
         let start = self.cpu.next_scan;
         self.at = start;
+        // Input refresh: a stuck input (control channel fault) reads its level.
+        let stuck: Vec<(u16, bool)> = self.faults.stuck(start).collect();
+        for (i, on) in stuck {
+            if let Some(b) = self.bits[0].get_mut(i as usize) {
+                *b = on;
+            }
+        }
         // The special relays of this scan: M8002 is on while `scans` is 1.
         self.cpu.stats.scans += 1;
         let Some(mut loaded) = self.cpu.program.take() else { return };

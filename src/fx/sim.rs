@@ -418,6 +418,16 @@ pub fn serve_line(t: &mut dyn Transport, server: &mut dyn Server, plc: &Plc, sto
             drop(lock(plc));
             continue;
         }
+        // A silent line (control channel fault): what arrives is not answered.
+        if {
+            let mut p = lock(plc);
+            p.advance();
+            let now = p.cpu.clock.now();
+            p.faults.mute(now)
+        } {
+            server.gap();
+            continue;
+        }
         for o in server.feed(&buf[..n], plc) {
             if !o.wait.is_zero() {
                 std::thread::sleep(o.wait);
@@ -451,6 +461,9 @@ pub struct PlcOptions<'a> {
     pub station: u8,
     pub program: Option<&'a std::path::Path>,
     pub clock: &'a crate::core::Clock,
+    /// The control channel's path ([`super::control`]); by default `LINK.ctl` beside the
+    /// programming port's pty link (else the computer link's).
+    pub control: Option<std::path::PathBuf>,
 }
 
 /// What `plcsh sim serve --fx-pty LINK --fx-link-pty LINK2` (or `--fx-tcp ADDR
@@ -464,13 +477,19 @@ pub async fn serve_ports(
     link_on: Option<ServeOn>,
     opts: PlcOptions<'_>,
     stop: &Arc<AtomicBool>,
-) -> Result<serde_json::Map<String, serde_json::Value>> {
+) -> Result<(serde_json::Map<String, serde_json::Value>, Option<crate::core::link::control::Channel>)> {
+    use crate::core::link::control as channel;
     use serde_json::json;
     let (model, station) = (opts.model, opts.station);
     let mut ready = serde_json::Map::new();
     if port_on.is_none() && link_on.is_none() {
-        return Ok(ready);
+        return Ok((ready, None));
     }
+    let pty_link = |on: &Option<ServeOn>| match on {
+        Some(ServeOn::Pty(Some(l))) => Some(channel::default_path(l)),
+        _ => None,
+    };
+    let control = opts.control.clone().or_else(|| pty_link(&port_on)).or_else(|| pty_link(&link_on));
     let m = super::model::Model::find(model).ok_or_else(|| {
         crate::core::Error::usage(format!("unknown FX model `{model}`"))
             .hint(format!("models: {}", super::model::Model::names()))
@@ -487,6 +506,17 @@ pub async fn serve_ports(
     }
     let plc: Plc = Arc::new(Mutex::new(mem));
     ready.insert("fx_model".into(), json!(m.name));
+    let control = match control {
+        Some(path) => {
+            let p = plc.clone();
+            let answer: channel::Answer =
+                Arc::new(move |text: &str| channel::reply(super::control::answer(&mut lock(&p), text)));
+            let ch = channel::Channel::open(&path, "the served FX PLC's control channel", answer, stop.clone())?;
+            ready.insert("fx_control".into(), json!(ch.path()));
+            Some(ch)
+        }
+        None => None,
+    };
     let servers: [(Option<ServeOn>, &str, Box<dyn Server>); 2] = [
         (port_on, "fx", Box::new(PortServer::default())),
         (link_on, "fx_link", Box::new(LinkServer::new(station, Settings::default()))),
@@ -518,7 +548,7 @@ pub async fn serve_ports(
             ready.insert("fx_station".into(), json!(station));
         }
     }
-    Ok(ready)
+    Ok((ready, control))
 }
 
 #[cfg(test)]

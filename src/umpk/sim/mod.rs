@@ -137,7 +137,7 @@ pub struct Umpk {
     /// Flash page whose write fails (`W`), for tests and labs.
     pub flash_fail: Option<usize>,
     /// Injected faults: a silent line, stuck inputs ([`control`]).
-    pub faults: control::Faults,
+    pub faults: crate::core::sim_faults::Faults,
     /// Where the flash, program info and error history are kept ([`state`]).
     pub state_path: Option<std::path::PathBuf>,
     rx: Vec<u8>,
@@ -180,7 +180,7 @@ impl Umpk {
             forced_inputs: 0,
             waves: Vec::new(),
             flash_fail: None,
-            faults: control::Faults::default(),
+            faults: crate::core::sim_faults::Faults::default(),
             state_path: None,
             rx: Vec::new(),
             out: VecDeque::new(),
@@ -255,7 +255,8 @@ impl Umpk {
                 inputs |= 1 << w.input;
             }
         }
-        self.faults.inputs(inputs, at) & ((1u64 << self.model.inputs) - 1) as u32
+        let inputs = self.faults.stuck(at).fold(inputs, |w, (i, on)| w & !(1 << i) | (on as u32) << i);
+        inputs & ((1u64 << self.model.inputs) - 1) as u32
     }
 
     /// Shows a change of switches or stuck inputs in the image at once (the program sees it
