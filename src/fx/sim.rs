@@ -419,12 +419,13 @@ pub fn serve_line(t: &mut dyn Transport, server: &mut dyn Server, plc: &Plc, sto
             continue;
         }
         // A silent line (control channel fault): what arrives is not answered.
-        if {
+        let muted = {
             let mut p = lock(plc);
             p.advance();
             let now = p.cpu.clock.now();
             p.faults.mute(now)
-        } {
+        };
+        if muted {
             server.gap();
             continue;
         }
