@@ -29,7 +29,7 @@
 //!   than a second.
 
 use super::events::LOG_CAP;
-use super::inputs::{ns, Inputs, Pin, Wave};
+use super::inputs::{ns, Inputs, Pin, PinEdges, Track, Wave};
 use crate::core::{Error, ErrorKind, Result};
 use crate::k2::catalog::HscSpec;
 use crate::k2::instr::EventKind;
@@ -161,22 +161,59 @@ impl Streams {
     }
 }
 
-/// Edge streams counting up and down during one interval.
+/// A count that is not a square wave's edges: a wired pulse train's or encoder's.
+#[derive(Clone, Copy, Debug)]
+enum Term {
+    /// Rising edges of one pin.
+    Pin(PinEdges),
+    /// An A/B decoder on an encoder's outputs (`Track::quad`).
+    Quad { track: Track, swapped: bool, x4: bool },
+}
+
+impl Term {
+    #[inline]
+    fn at(&self, t: u64) -> i64 {
+        match *self {
+            Term::Pin(e) => e.rises_ns(t),
+            Term::Quad { track, swapped, x4 } => track.quad(t, swapped, x4),
+        }
+    }
+}
+
+/// Edge streams counting up and down during one interval, and up to two other counts
+/// with their signs.
 #[derive(Clone, Copy, Debug, Default)]
 struct Drive {
     up: Streams,
     down: Streams,
+    terms: [Option<(Term, i64)>; 2],
 }
 
 impl Drive {
     /// The net count at `t` ns.
     #[inline]
     fn at(&self, t: u64) -> i64 {
-        self.up.at(t) - self.down.at(t)
+        let mut n = self.up.at(t) - self.down.at(t);
+        for (term, sign) in self.terms.iter().flatten() {
+            n += sign * term.at(t);
+        }
+        n
+    }
+
+    fn has_terms(&self) -> bool {
+        self.terms[0].is_some()
+    }
+
+    fn add_term(&mut self, term: Term, sign: i64) {
+        let slot = if self.terms[0].is_none() { 0 } else { 1 };
+        self.terms[slot] = Some((term, sign));
     }
 
     /// The one edge stream of a drive counting in one direction only, with its sign.
     fn single(&self) -> Option<(Wave, i64)> {
+        if self.has_terms() {
+            return None;
+        }
         match (self.up.single(), self.down.single()) {
             (Some(w), None) if self.down.is_empty() => Some((*w, 1)),
             (None, Some(w)) if self.up.is_empty() => Some((*w, -1)),
@@ -187,6 +224,7 @@ impl Drive {
     /// Times the counts of the interval (a, b] that move in direction `sign`.
     fn timer(&self, a: Duration, b: Duration, sign: i64) -> Timer<'_> {
         let single = match (sign > 0, self.up.single(), self.down.is_empty(), self.down.single(), self.up.is_empty()) {
+            _ if self.has_terms() => None,
             (true, Some(w), true, _, _) => Some(*w),
             (false, _, _, Some(w), true) => Some(*w),
             _ => None,
@@ -656,34 +694,49 @@ impl HscChannel {
         let mut d = Drive::default();
         match m.kind {
             HscKind::InternalDir | HscKind::ExternalDir => {
-                let w = inputs.wave(m.count)?;
+                let w = inputs.wave(m.count);
+                let e = inputs.pin_edges(m.count);
+                if w.is_none() && e.is_none() {
+                    return None;
+                }
                 let up = match m.kind {
                     HscKind::InternalDir => self.dir_up,
                     _ => m.dir.is_some_and(&mut *level),
                 };
-                if up {
-                    d.up.push(w)
-                } else {
-                    d.down.push(w)
+                match (w, e, up) {
+                    (Some(w), _, true) => d.up.push(w),
+                    (Some(w), _, false) => d.down.push(w),
+                    (None, Some(e), up) => d.add_term(Term::Pin(e), if up { 1 } else { -1 }),
+                    (None, None, _) => {}
                 }
             }
             HscKind::TwoPulse => {
                 if let Some(w) = inputs.wave(m.count) {
                     d.up.push(w);
+                } else if let Some(e) = inputs.pin_edges(m.count) {
+                    d.add_term(Term::Pin(e), 1);
                 }
                 if let Some(w) = m.second.and_then(|p| inputs.wave(p)) {
                     d.down.push(w);
+                } else if let Some(e) = m.second.and_then(|p| inputs.pin_edges(p)) {
+                    d.add_term(Term::Pin(e), -1);
                 }
             }
             HscKind::Quadrature => {
                 let (a, b) = (m.count, m.second?);
-                if let Some((w, a_leads)) = inputs.quad(a, b) {
+                if let Some((track, swapped)) = inputs.track(a, b) {
+                    d.add_term(Term::Quad { track, swapped, x4: self.rate4x }, 1);
+                } else if let Some((w, a_leads)) = inputs.quad(a, b) {
                     let half = w.half_ns();
                     let (wa, wb) = if a_leads { (w, w.shifted(half / 2)) } else { (w.shifted(half / 2), w) };
+                    // 1×: A's edge while B is low — rising when A leads (up), falling when
+                    // B leads (down), as `Track::quad` and written edges count.
                     let edges = if self.rate4x {
                         Streams::of(&[wa, wa.shifted(half), wb, wb.shifted(half)])
-                    } else {
+                    } else if a_leads {
                         Streams::of(&[wa])
+                    } else {
+                        Streams::of(&[wa.shifted(half)])
                     };
                     if a_leads {
                         d.up = edges
@@ -905,7 +958,14 @@ impl HscChannel {
                 let (da, db) = (o(a) != n(a), o(b) != n(b));
                 let s = |up: bool| if up { 1 } else { -1 };
                 match (da, db) {
-                    (true, false) if !self.rate4x && n(a) => s(!n(b)),
+                    // 1×: A's edge while B is low, up when A rises, down when it falls.
+                    (true, false) if !self.rate4x => {
+                        if n(b) {
+                            0
+                        } else {
+                            s(n(a))
+                        }
+                    }
                     (true, false) => s(n(a) != n(b)),
                     (false, true) if self.rate4x => s(n(a) == n(b)),
                     _ => 0,

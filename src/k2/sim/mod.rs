@@ -241,6 +241,13 @@ impl K2Sim {
         for &(p, rise, fall) in self.inputs.edges() {
             put(&mut self.mem.i, p, rise.rises_ns(t) > fall.rises_ns(t));
         }
+        if self.inputs.has_shaped() {
+            for s in self.inputs.sources() {
+                for (p, on) in s.shaped_levels(t).into_iter().flatten() {
+                    put(&mut self.mem.i, p, on);
+                }
+            }
+        }
     }
 
     fn refresh_system_bits(&mut self, now: Duration) {
@@ -446,6 +453,7 @@ impl K2Sim {
             Source::Quad { lead, lag, wave } => {
                 Source::Quad { lead, lag, wave: inputs::Wave { origin_ns: inputs::ns(now), ..wave } }
             }
+            other => other,
         };
         self.inputs.add(s);
         self.refresh_input_levels(inputs::ns(now));
