@@ -334,6 +334,10 @@ pub type LoopSeg = crate::k2::sim::inputs::Train;
 pub struct WireState {
     /// Encoder: the signal of the current piece (its A/B state follows from it).
     pub track: Option<crate::k2::sim::inputs::Track>,
+    /// Encoder: added to the drive's position (4× counts) so the output stays where it was
+    /// when the drive re-references its position (homing): an incremental encoder's
+    /// outputs change only when the shaft turns.
+    pub offset: f64,
     /// The current piece is valid until this time (ns) while the peer's plan is `plan`.
     pub until_ns: u64,
     pub plan: u64,

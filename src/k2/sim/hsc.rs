@@ -316,6 +316,9 @@ pub struct HscChannel {
     /// raised as an event (the simulator raises it at its next step).
     shown_up: Option<bool>,
     pub(crate) dir_event: Option<bool>,
+    /// When the counted signals turned the direction (the first count the other way), for
+    /// the direction event; `None`: at the step's start (a written input, a setting).
+    pub(crate) dir_at: Option<Duration>,
     /// Tests turn the quiet path off to compare it with the general one.
     #[cfg(test)]
     pub(crate) general_only: bool,
@@ -404,6 +407,7 @@ impl HscChannel {
             settings: 0,
             shown_up: None,
             dir_event: None,
+            dir_at: None,
             #[cfg(test)]
             general_only: false,
         }
@@ -800,6 +804,8 @@ impl HscChannel {
     ) {
         // A counter without a mode or not running counts nothing (`drive` is None).
         if self.running && self.mode.is_some() && b > a {
+            let was_up = self.last_up;
+            let mut dir_at = None;
             let c = self.cached_drive(inputs, mem);
             if let Some(d) = &c.drive {
                 // The count at `a` ns was worked out by the previous interval.
@@ -810,6 +816,14 @@ impl HscChannel {
                 let at_b = d.at(b);
                 c.at = Some((b, at_b));
                 let total = at_b - at_a;
+                if total != 0 && (total > 0) != was_up {
+                    // The direction turns with the first count of the interval: that is when
+                    // the status bit changes, however long the interval.
+                    dir_at = Some(d.timer(last, now, total.signum()).time_of(1));
+                }
+                if dir_at.is_some() {
+                    self.dir_at = dir_at;
+                }
                 if total != 0 {
                     if self.hits(total) {
                         self.count_timed(last, now, total, raised, skipped);
@@ -1102,7 +1116,7 @@ impl HscChannel {
         self.cache = None;
         self.quiet = None;
         self.settings += 1;
-        (self.shown_up, self.dir_event) = (None, None);
+        (self.shown_up, self.dir_event, self.dir_at) = (None, None, None);
         Ok(())
     }
 }

@@ -168,6 +168,13 @@ impl Track {
         self.x0 + self.v * tau + 0.5 * self.a * tau * tau
     }
 
+    /// The position its formula gives at `t` ns, also past `dur` (where the next stretch of
+    /// the same motion starts).
+    pub fn x_unheld(&self, t: u64) -> f64 {
+        let tau = t.saturating_sub(self.t0_ns) as f64 / 1e9;
+        self.x0 + self.v * tau + 0.5 * self.a * tau * tau
+    }
+
     /// The 4× state count `⌊x⌋` at `t` ns (a position within float noise of a whole count
     /// is on it).
     #[inline]

@@ -181,8 +181,9 @@ impl K2Sim {
             h.advance(&mut self.mem, &self.inputs, from, to, &mut self.raised, &mut skipped);
             // A direction change shown since the last step (by HSC, a written input, or the
             // signals counted in this one), raised at the step's start.
+            let at = h.dir_at.take();
             if let Some(up) = h.dir_event.take() {
-                self.raised.push((last, EventKind::HscDirection { channel: h.regs.channel, up }));
+                self.raised.push((at.unwrap_or(last), EventKind::HscDirection { channel: h.regs.channel, up }));
             }
             lens[k] = self.raised.len();
             k += 1;

@@ -14,6 +14,10 @@ use crate::k2::operand::{Area, K2Operand};
 use crate::wiring::{self, Decl, Harness, Kind, MakePeer, Peer, Role, Wire, WireState};
 use std::time::Duration;
 
+/// A change of an encoder's position between two pieces larger than this (4× counts) is a
+/// re-referenced position, not motion (the pieces of one motion meet to within float noise).
+const JUMP: f64 = 1e-3;
+
 fn secs(t_ns: u64) -> f64 {
     t_ns as f64 / 1e9
 }
@@ -401,8 +405,16 @@ impl K2Sim {
                         until = until.min(e);
                     }
                 }
-                let track =
-                    Track { t0_ns: t_ns, dur: (until - t).max(0.0), x0: piece.at(t) * scale, v: v * scale, a: piece.a * scale };
+                let x = piece.at(t) * scale;
+                if let Some(prev) = st.track {
+                    // The position jumped (re-referenced): the shaft did not move.
+                    let was = prev.x_unheld(t_ns);
+                    if (x + st.offset - was).abs() > JUMP {
+                        st.offset = was - x;
+                    }
+                }
+                let x0 = x + st.offset;
+                let track = Track { t0_ns: t_ns, dur: (until - t).max(0.0), x0, v: v * scale, a: piece.a * scale };
                 st.plan = plan;
                 st.until_ns = ns_at(until).max(t_ns + 1);
                 st.track = Some(track);
@@ -456,16 +468,27 @@ impl K2Sim {
                 if st.playing.is_some_and(|p| t_ns >= p.low_from_ns()) {
                     st.playing = None;
                 }
-                if st.playing.is_none() {
-                    if let Some(next) = st.segs.pop_front() {
-                        // Put on the input before its first pulse rises (at the previous
-                        // stretch's end, or when the train starts); a pulse rising right now
-                        // (a train put out now, without delay) is an edge the counters see now.
-                        if next.rises_ns(t_ns) > 0 {
-                            self.drive_input(to, true);
-                        }
-                        st.playing = Some(next);
+                // Level changes of the output between trains, due now (while a stretch plays
+                // the pulses own the input).
+                while st.pending.front().is_some_and(|(at, _)| *at <= t_ns) {
+                    let (_, on) = st.pending.pop_front().unwrap();
+                    if st.playing.is_none() {
+                        self.drive_input(to, on);
                     }
+                }
+                // The next stretch goes on the input once the level changes before it are in.
+                let before = |s: &wiring::LoopSeg, p: &std::collections::VecDeque<(u64, bool)>| {
+                    p.front().is_none_or(|(at, _)| *at >= s.first_ns)
+                };
+                if st.playing.is_none() && st.segs.front().is_some_and(|s| before(s, &st.pending)) {
+                    let next = st.segs.pop_front().expect("just seen");
+                    // Put on the input before its first pulse rises (at the previous stretch's
+                    // end, or when the train starts); a pulse rising right now (a train put
+                    // out now, without delay) is an edge the counters see now.
+                    if next.rises_ns(t_ns) > 0 {
+                        self.drive_input(to, true);
+                    }
+                    st.playing = Some(next);
                 }
                 // The input carries the stretch playing (a stopped train's, cut short).
                 let on = match self.inputs.drives(to) {
@@ -478,12 +501,6 @@ impl K2Sim {
                         self.inputs.remove(to);
                     }
                     _ => {}
-                }
-                if st.playing.is_none() {
-                    while st.pending.front().is_some_and(|(at, _)| *at <= t_ns) {
-                        let (_, on) = st.pending.pop_front().unwrap();
-                        self.drive_input(to, on);
-                    }
                 }
                 let mut next = st.pending.front().map_or(u64::MAX, |p| p.0);
                 if let Some(p) = st.playing {

@@ -20,6 +20,9 @@ pub struct DrivePeer {
 
 impl DrivePeer {
     pub fn new(line: Arc<Mutex<SimLine>>, id: u8) -> DrivePeer {
+        if let Some(d) = line.lock().unwrap_or_else(|p| p.into_inner()).drive(id) {
+            d.keep_history = true;
+        }
         DrivePeer { line, id, quiet: None }
     }
 
@@ -66,7 +69,9 @@ impl Peer for DrivePeer {
     fn motion(&mut self, t: f64) -> Vec<Piece> {
         self.bring(t);
         self.with(|d| {
-            d.plan().pieces_from(t).into_iter().map(|(t0, dur, p0, v0, a)| Piece { t0, dur, p0, v0, a }).collect()
+            let pieces = d.pieces_from(t).into_iter().map(|(t0, dur, p0, v0, a)| Piece { t0, dur, p0, v0, a }).collect();
+            d.forget_before(t);
+            pieces
         })
         .unwrap_or_default()
     }
