@@ -46,6 +46,14 @@ pub enum FaultKind {
 }
 
 impl FaultKind {
+    /// The input a stuck or noisy fault acts on.
+    pub fn pin(&self) -> Option<Pin> {
+        match *self {
+            FaultKind::Stuck { byte, bit, .. } | FaultKind::Noisy { byte, bit, .. } => Some((byte, bit)),
+            _ => None,
+        }
+    }
+
     /// The short name (`no-reply`), also the event's.
     pub fn name(&self) -> &'static str {
         match self {
@@ -315,11 +323,29 @@ impl Faults {
         self.next
     }
 
-    /// Removes fault `id`, or all; returns how many went.
-    pub fn clear(&mut self, id: Option<u32>) -> usize {
+    /// Removes fault `id`, or all; returns how many went, and the inputs the removed
+    /// faults were holding with their levels from before (to be given back, as the end of
+    /// a fault's window gives them back).
+    pub fn clear(&mut self, id: Option<u32>) -> (usize, Vec<(Pin, bool)>) {
         let before = self.list.len();
-        self.list.retain(|f| id.is_some_and(|i| f.id != i));
-        before - self.list.len()
+        let mut held = Vec::new();
+        self.list.retain(|f| {
+            let keep = id.is_some_and(|i| f.id != i);
+            if !keep {
+                if let (Some(p), Some(level)) = (f.kind.pin(), f.held.filter(|_| f.logged)) {
+                    held.push((p, level));
+                }
+            }
+            keep
+        });
+        (before - self.list.len(), held)
+    }
+
+    /// The input faults (stuck, noisy) acting on `pin` at some time in `(a, b]` ns.
+    pub fn on_pin(&self, pin: Pin, a: u64, b: u64) -> impl Iterator<Item = &Fault> {
+        self.list.iter().filter(move |f| {
+            f.kind.pin() == Some(pin) && f.from_ns < b && f.until_ns.is_none_or(|u| u > a) && f.times != Some(0)
+        })
     }
 
     pub fn is_empty(&self) -> bool {
@@ -345,7 +371,14 @@ impl Faults {
     /// Applies stuck and noisy inputs to the input image at `now` (and gives an input back
     /// its level from before when its fault's window ends); returns the faults that took
     /// effect, with the time they did (to be logged once).
-    pub fn apply_inputs(&mut self, i: &mut [u8], now: Duration) -> Vec<(Duration, u32, FaultKind)> {
+    /// An input a simulated signal drives (`driven`) is not given a level back: the signal's
+    /// own level is already there.
+    pub fn apply_inputs(
+        &mut self,
+        i: &mut [u8],
+        now: Duration,
+        driven: &dyn Fn(Pin) -> bool,
+    ) -> Vec<(Duration, u32, FaultKind)> {
         fn put(i: &mut [u8], byte: u32, bit: u8, on: bool) {
             if let Some(b) = i.get_mut(byte as usize) {
                 if on {
@@ -367,7 +400,9 @@ impl Faults {
             };
             if !f.active(now) {
                 if let Some(before) = f.held.take().filter(|_| f.logged) {
-                    put(i, byte, bit, before);
+                    if !driven((byte, bit)) {
+                        put(i, byte, bit, before);
+                    }
                 }
                 continue;
             }
@@ -441,26 +476,26 @@ mod tests {
         f.add(&parse("stuck I0.1=1 for=1s").unwrap(), ms(0));
         f.add(&parse("noisy I0.2 freq=1kHz").unwrap(), ms(0));
         let mut i = [0u8; 2];
-        let started = f.apply_inputs(&mut i, ms(10));
+        let started = f.apply_inputs(&mut i, ms(10), &|_| false);
         assert_eq!(started.len(), 2);
         assert_eq!(i[0] & 2, 2, "stuck on");
-        assert!(f.apply_inputs(&mut i, ms(20)).is_empty(), "logged once");
+        assert!(f.apply_inputs(&mut i, ms(20), &|_| false).is_empty(), "logged once");
         // Noise: both levels appear over 100 slots, and the same time gives the same level.
         let levels: Vec<bool> = (0..100)
             .map(|k| {
                 let mut i = [0u8; 2];
-                f.apply_inputs(&mut i, ms(100 + k));
+                f.apply_inputs(&mut i, ms(100 + k), &|_| false);
                 i[0] & 4 != 0
             })
             .collect();
         assert!(levels.iter().any(|l| *l) && levels.iter().any(|l| !*l));
         let mut a = [0u8; 2];
         let mut b = [0u8; 2];
-        f.apply_inputs(&mut a, ms(123));
-        f.apply_inputs(&mut b, ms(123));
+        f.apply_inputs(&mut a, ms(123), &|_| false);
+        f.apply_inputs(&mut b, ms(123), &|_| false);
         assert_eq!(a, b);
         let mut i = [0u8; 2];
-        f.apply_inputs(&mut i, ms(1500));
+        f.apply_inputs(&mut i, ms(1500), &|_| false);
         assert_eq!(i[0] & 2, 0, "the stuck window ended: the level from before is back");
         assert_eq!(started[0].0, ms(0), "stamped when it took effect");
     }

@@ -191,7 +191,9 @@ impl K2Sim {
         self.refresh_input_levels(to.1);
         let mut faults = 0;
         if !self.faults.is_empty() {
-            for (at, id, kind) in self.faults.apply_inputs(&mut self.mem.i, now) {
+            let inputs = &self.inputs;
+            let driven = |p: Pin| inputs.drives(p).is_some();
+            for (at, id, kind) in self.faults.apply_inputs(&mut self.mem.i, now, &driven) {
                 self.raised.push((at.max(last), EventKind::Fault { id, fault: kind.code() }));
                 faults += 1;
             }
@@ -665,6 +667,28 @@ impl K2Sim {
             _ => Error::link(format!("no reply from the PLC (injected fault {id}: {})", kind.name()))
                 .hint("sim faults lists the injected faults; sim fault clear removes them"),
         })
+    }
+}
+
+impl K2Sim {
+    /// Removes injected fault `id`, or all, at the current time; returns how many went. An
+    /// input a removed fault was holding gets its own level back, as when the fault's
+    /// window ends: the level a signal drives it to, or the one it had before.
+    pub fn clear_faults(&mut self, id: Option<u32>) -> usize {
+        self.advance();
+        let (n, held) = self.faults.clear(id);
+        let t = inputs::ns(self.last);
+        for (p, before) in held {
+            let level = match self.inputs.drives(p) {
+                Some(_) => {
+                    self.refresh_input_levels(t);
+                    continue;
+                }
+                None => before,
+            };
+            self.drive_input(p, level);
+        }
+        n
     }
 }
 

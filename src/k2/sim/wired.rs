@@ -219,7 +219,7 @@ impl K2Sim {
     }
 
     /// Sets an input bit from a wire, counting its edge as a written input would be.
-    fn drive_input(&mut self, p: Pin, on: bool) {
+    pub(crate) fn drive_input(&mut self, p: Pin, on: bool) {
         let Some(b) = self.mem.i.get(p.0 as usize).copied() else { return };
         let now_on = b >> p.1 & 1 != 0;
         if now_on == on {

@@ -25,7 +25,7 @@ pub fn run(sh: &mut Shell, sub: &str, rest: &str) -> Result<Outcome> {
             "" | "all" => None,
             n => Some(n.parse::<u32>().map_err(|_| Error::usage(format!("`{n}` is not a fault id")).hint(USAGE))?),
         };
-        let n = sim.faults.clear(id);
+        let n = sim.clear_faults(id);
         if id.is_some() && n == 0 {
             return Err(Error::usage(format!("{name} has no fault {}", id.unwrap_or(0)))
                 .hint("sim faults lists them")
