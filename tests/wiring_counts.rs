@@ -152,7 +152,12 @@ fn what_a_wired_machine_counts_does_not_depend_on_who_reads_it() {
                      servo enable";
     let cruise = format!("{PULSE_AXIS}; hsc 0 mode=9 rate=1x pv=[100,200] relative cyclic at VB3009");
     let looped = "sim wire plc:Q0.1 -> plc:I0.3 delay=7ms; hsc 1 mode=0 pv=60";
-    type Scenario<'a> = (String, Vec<(u64, &'a str)>, i64);
+    // Noise on A and B stuck for a while: miscounts, the same ones whoever reads.
+    let noisy = format!(
+        "{PULSE_AXIS}; hsc 0 mode=9 rate=1x pv=150; sim fault noisy I0.1 freq=20kHz at=20ms for=30ms; \
+         sim fault stuck I0.0=1 at=70ms for=9ms"
+    );
+    type Scenario<'a> = (String, Vec<(u64, &'a str)>, Option<i64>);
     let cases: Vec<Scenario> = vec![
         // 8000 increments out (800 periods), back to 4000 (400) while still moving.
         (
@@ -162,23 +167,28 @@ fn what_a_wired_machine_counts_does_not_depend_on_who_reads_it() {
                 (170_000, "servo move abs 4000 speed=150rpm acc=50rps/s"),
                 (600_000, ""),
             ],
-            400,
+            Some(400),
         ),
         // 1234 pulses at 2.5 kHz, then 321 more at 700 Hz, each one encoder period.
-        (cruise, vec![(900, "pto 0 freq=2.5kHz count=1234"), (600_000, "pto 0 freq=700Hz count=321"), (600_000, "")], 1555),
+        (cruise, vec![(900, "pto 0 freq=2.5kHz count=1234"), (600_000, "pto 0 freq=700Hz count=321"), (600_000, "")], Some(1555)),
         // 100 pulses at 10 kHz and 50 at 1 kHz, looped back 7 ms later.
         (
             looped.to_string(),
             vec![(500, "pto 1 freq=10kHz count=100"), (30_000, "pto 1 freq=1kHz count=50"), (80_000, "")],
-            150,
+            Some(150),
         ),
+        (noisy, vec![(0, "pto 0 freq=3kHz count=300"), (200_000, "")], None),
     ];
     let mut rng = Rng(0x5EED_0F_F1CE);
     for (setup, steps, want) in &cases {
         let quiet = scenario(setup, steps, None);
         let counted = if setup.contains("I0.3") { quiet.0[2] } else { quiet.0[0] };
-        assert_eq!(counted, *want, "{setup}: the exact count");
+        match want {
+            Some(n) => assert_eq!(counted, *n, "{setup}: the exact count"),
+            None => assert_ne!(counted, 300, "{setup}: the noise miscounts"),
+        }
         assert!(!quiet.1.is_empty(), "{setup}: some events");
+        assert_eq!(scenario(setup, steps, None), quiet, "{setup}: the same again");
         for i in 0..100 {
             let seed = rng.next_u64() | 1;
             let polled = scenario(setup, steps, Some(&mut Rng(seed)));
@@ -212,4 +222,29 @@ fn a_looped_train_ends_low_and_arrives_whole_after_its_delay() {
     run(&mut sh, "sim wire plc:Q0.1 -> plc:I0.3 delay=5ms; hsc 1 mode=0; pto 1 freq=1kHz count=100; sim step 20500us");
     run(&mut sh, "pstop 1; sim step 50ms");
     assert_eq!(get(&mut sh, "SMD48"), 21, "pulses 1..21 rose before PSTOP at 20.5 ms");
+}
+
+#[test]
+fn a_counter_sees_injected_noise_and_a_stuck_input() {
+    // HSC0 in mode 0 counts I0.1: 1000 rising edges of a 1 kHz wave in a second.
+    let base = "hsc 0 mode=0; sim input I0.1 freq=1kHz";
+    let count = |extra: &str| {
+        let mut sh = shell();
+        run(&mut sh, &format!("{base}; {extra}; sim step 1s"));
+        get(&mut sh, "SMD38")
+    };
+    assert_eq!(count("get SMD38"), 1000);
+    // Stuck low for 200 ms: the 200 edges in that window are not seen.
+    assert_eq!(count("sim fault stuck I0.1=0 at=300ms for=200ms"), 800);
+    // Noise at 20 kHz for 100 ms: random levels in 2000 slots instead of 100 clean edges.
+    let noisy = count("sim fault noisy I0.1 freq=20kHz at=100ms for=100ms");
+    assert!(noisy > 1000 + 300, "noise adds edges: {noisy}");
+    assert_eq!(count("sim fault noisy I0.1 freq=20kHz at=100ms for=100ms"), noisy, "seeded: the same noise");
+    // Read at every millisecond: the same.
+    let mut sh = shell();
+    run(&mut sh, &format!("{base}; sim fault noisy I0.1 freq=20kHz at=100ms for=100ms"));
+    for _ in 0..1000 {
+        run(&mut sh, "sim step 1ms; get I0.1");
+    }
+    assert_eq!(get(&mut sh, "SMD38"), noisy, "polled every millisecond");
 }

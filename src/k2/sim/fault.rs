@@ -136,6 +136,45 @@ pub struct Fault {
 }
 
 impl Fault {
+    /// The level a stuck or noisy fault gives its input at `t` ns, when its window holds
+    /// `t` (the window only: how the input looks does not depend on who read it).
+    pub fn level_at(&self, t: u64) -> Option<bool> {
+        if t < self.from_ns || self.until_ns.is_some_and(|u| t >= u) || self.times == Some(0) {
+            return None;
+        }
+        match self.kind {
+            FaultKind::Stuck { on, .. } => Some(on),
+            FaultKind::Noisy { hz, .. } => Some(noise(self.id, self.slot(t, hz))),
+            _ => None,
+        }
+    }
+
+    /// The noise slot `t` ns falls in (`hz` slots a second from the window's start).
+    fn slot(&self, t: u64, hz: u64) -> u64 {
+        ((t.saturating_sub(self.from_ns)) as u128 * hz as u128 / 1_000_000_000) as u64
+    }
+
+    /// The instants in `(a, b]` ns where the level this fault gives may change: its
+    /// window's ends and, for noise, each slot's start.
+    pub fn changes(&self, a: u64, b: u64) -> Vec<u64> {
+        let mut out: Vec<u64> = [Some(self.from_ns), self.until_ns].into_iter().flatten().filter(|t| *t > a && *t <= b).collect();
+        if let FaultKind::Noisy { hz, .. } = self.kind {
+            let lo = a.max(self.from_ns);
+            let hi = self.until_ns.map_or(b, |u| u.min(b));
+            if hz > 0 && lo < hi {
+                let first = self.slot(lo, hz) + 1;
+                let last = self.slot(hi, hz);
+                for k in first..=last {
+                    let t = self.from_ns + (k as u128 * 1_000_000_000).div_ceil(hz as u128) as u64;
+                    if t > a && t <= b {
+                        out.push(t);
+                    }
+                }
+            }
+        }
+        out
+    }
+
     fn active(&self, now: Duration) -> bool {
         let t = now.as_nanos() as u64;
         t >= self.from_ns && self.until_ns.is_none_or(|u| t < u) && self.times.is_none_or(|n| self.hits < n)
@@ -393,12 +432,19 @@ impl Faults {
             let (byte, bit, level) = match f.kind {
                 FaultKind::Stuck { byte, bit, on } => (byte, bit, on),
                 FaultKind::Noisy { byte, bit, hz } => {
-                    let slot = (now.as_nanos() as u64).saturating_sub(f.from_ns) as u128 * hz as u128 / 1_000_000_000;
-                    (byte, bit, noise(f.id, slot as u64))
+                            (byte, bit, noise(f.id, f.slot(now.as_nanos() as u64, hz)))
                 }
                 _ => continue,
             };
             if !f.active(now) {
+                if !f.logged && f.from_ns <= now.as_nanos() as u64 && f.times != Some(0) {
+                    // Its whole window passed between two steps: it acted (the counters saw
+                    // it, `super::edges`) and is logged at its start, whoever read when.
+                    f.logged = true;
+                    f.hits = 1;
+                    started.push((Duration::from_nanos(f.from_ns), f.id, f.kind));
+                    continue;
+                }
                 if let Some(before) = f.held.take().filter(|_| f.logged) {
                     if !driven((byte, bit)) {
                         put(i, byte, bit, before);

@@ -273,6 +273,16 @@ fn level(mem: &Memory, p: Pin) -> bool {
     mem.i.get(p.0 as usize).is_some_and(|b| b >> p.1 & 1 != 0)
 }
 
+fn put_level(i: &mut [u8], p: Pin, on: bool) {
+    if let Some(b) = i.get_mut(p.0 as usize) {
+        if on {
+            *b |= 1 << p.1;
+        } else {
+            *b &= !(1 << p.1);
+        }
+    }
+}
+
 fn level_in(i: &[u8], p: Pin) -> bool {
     i.get(p.0 as usize).is_some_and(|b| b >> p.1 & 1 != 0)
 }
@@ -918,6 +928,59 @@ impl HscChannel {
         let timer = std::cell::OnceCell::new();
         let time_of = |k| timer.get_or_init(|| d.timer(last, now, total.signum())).time_of(k);
         self.count(total, &time_of, raised, skipped);
+    }
+
+    /// The inputs the current mode reads.
+    pub fn pins(&self) -> Vec<Pin> {
+        let Some(m) = self.mode else { return Vec::new() };
+        let mut v: Vec<Pin> = [Some(m.count), m.second, m.dir, m.reset, m.start].into_iter().flatten().collect();
+        v.dedup();
+        v
+    }
+
+    /// Counts the interval `(a, b]` ns edge by edge ([`super::edges`]): a stuck or noisy
+    /// fault acts on one of the counter's inputs then. Each edge is counted as a written
+    /// input's is, at its own time (CV = PV and direction events at that time).
+    pub fn advance_edges(
+        &mut self,
+        mem: &mut Memory,
+        inputs: &Inputs,
+        faults: &super::fault::Faults,
+        (a, b): (u64, u64),
+        raised: &mut Vec<(Duration, EventKind)>,
+    ) {
+        let pins = self.pins();
+        if !self.running || pins.is_empty() || b <= a {
+            return;
+        }
+        // The level each input had (as written) before a fault took it.
+        let written = |p: Pin| {
+            faults.list.iter().filter(|f| f.kind.pin() == Some(p)).find_map(|f| f.held).unwrap_or(level(mem, p))
+        };
+        let mut img = mem.i.clone();
+        let mut all: Vec<(u64, Pin, bool)> = Vec::new();
+        for &p in &pins {
+            let (start, ch) = super::edges::changes(inputs, faults, p, a, b, written(p));
+            put_level(&mut img, p, start);
+            all.extend(ch.into_iter().map(|(t, l)| (t, p, l)));
+        }
+        all.sort_by_key(|e| e.0);
+        // The counter works on the levels it sees; the image is the simulator's to set.
+        let shown = std::mem::replace(&mut mem.i, img);
+        for (t, p, l) in all {
+            let old = mem.i.clone();
+            put_level(&mut mem.i, p, l);
+            let at = Duration::from_nanos(t);
+            self.input_edges(mem, &old, at, raised);
+            if let Some(up) = self.dir_event.take() {
+                raised.push((at, EventKind::HscDirection { channel: self.regs.channel, up }));
+            }
+        }
+        mem.i = shown;
+        // The drive is worked out again from the sources after the interval.
+        self.cache = None;
+        self.quiet = None;
+        self.publish(mem);
     }
 
     /// Counts edges the user wrote to the inputs (`set I0.1=1`), at `now`.

@@ -10,6 +10,7 @@
 
 pub mod agent;
 pub mod agent_probe;
+pub mod edges;
 pub mod events;
 pub mod fault;
 pub mod hsc;
@@ -178,7 +179,11 @@ impl K2Sim {
             k += 1;
         }
         for h in &mut self.hsc {
-            h.advance(&mut self.mem, &self.inputs, from, to, &mut self.raised, &mut skipped);
+            if !self.faults.is_empty() && edges::faulted(&self.faults, &h.pins(), from.1, to.1) {
+                h.advance_edges(&mut self.mem, &self.inputs, &self.faults, (from.1, to.1), &mut self.raised);
+            } else {
+                h.advance(&mut self.mem, &self.inputs, from, to, &mut self.raised, &mut skipped);
+            }
             // A direction change shown since the last step (by HSC, a written input, or the
             // signals counted in this one), raised at the step's start.
             let at = h.dir_at.take();
