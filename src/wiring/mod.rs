@@ -388,8 +388,8 @@ impl Harness {
                 format!("PTO{channel} pulses (with its direction output) to the pulse input")
             }
             Kind::Encoder { lines, .. } => match lines {
-                Some(l) => format!("encoder A/B, {l} lines per revolution, counted 4x"),
-                None => "encoder A/B, one 4x count per increment".to_string(),
+                Some(l) => format!("encoder A/B, {l} lines (A/B periods) per revolution"),
+                None => "encoder A/B, a quarter period per increment".to_string(),
             },
             Kind::Output { what, .. } => format!(
                 "drive output {}",

@@ -19,8 +19,11 @@
 //! the process (`sim:MODEL`) there is no transport, so `late`, `bad-crc` and `drop` act only
 //! when the simulator is served; in-process a `no-reply` is a link error and an `exception`
 //! the device refusing, as the wire driver reports them. `stuck` and `noisy` act on the input
-//! image that clients and programs read; high-speed counters keep counting their simulated
-//! signal sources (`sim input … off` stops those).
+//! image that clients and programs read, and on what the high-speed counters count: inside
+//! the window the input's edges are the fault's (`super::edges`). Noise is one level per slot
+//! (`freq=` slots a second from the window's start), pseudo-random from the fault's id and
+//! the slot number (splitmix64): the same on every run, whoever reads when. A fault's window
+//! ending, or `sim fault clear`, gives the input its own level back.
 //!
 //! A `late` reply holds the server for its delay (it serves one request at a time, as a PLC's
 //! Modbus port does), so everything the same `sim serve` process serves waits too.
@@ -512,8 +515,8 @@ mod tests {
         assert_eq!(f.on_request(ms(1600), &[(Area::V, 90, 120)], false), Some((1, FaultKind::NoReply)));
         assert_eq!(f.on_request(ms(1700), &vw100, false), None, "times=2 used up");
         assert_eq!(f.on_request(ms(1700), &vw100, true), Some((2, FaultKind::Drop)), "served: drop acts");
-        assert_eq!(f.clear(Some(2)), 1);
-        assert_eq!(f.clear(None), 1);
+        assert_eq!(f.clear(Some(2)).0, 1);
+        assert_eq!(f.clear(None).0, 1);
     }
 
     #[test]

@@ -23,6 +23,11 @@
 //! - External direction input (modes 3, 4): level 1 counts up.
 //! - A/B mode with two independent square waves (not a `sim quad` pair) counts nothing: a
 //!   real decoder would count noise.
+//! - A/B rate (SM37.2, §3.3.2: "0 = 1x; 1 = 4x"; the manual says no more): 4x counts every
+//!   change of A or B; 1x counts one edge per A/B period, A's edge while B is low — A rising
+//!   (A leads B) counts up, A falling (B leads A) counts down (the usual X1 decoding). So 1x is
+//!   always a quarter of 4x rounded down, and a reversal inside a period neither adds nor
+//!   loses a count. A wired encoder's phase at power-up and its edges: `inputs::Track`.
 //! - CV is a DINT in SMD38 (wraps); the simulator keeps a 64-bit value internally.
 //! - In relative cyclic mode a step that would raise more events than the log keeps skips
 //!   whole cycles arithmetically (they are counted as dropped), so an hour costs no more
@@ -815,6 +820,7 @@ impl HscChannel {
         // A counter without a mode or not running counts nothing (`drive` is None).
         if self.running && self.mode.is_some() && b > a {
             let was_up = self.last_up;
+            let counted_dir = self.mode.is_some_and(|m| matches!(m.kind, HscKind::Quadrature | HscKind::TwoPulse));
             let mut dir_at = None;
             let c = self.cached_drive(inputs, mem);
             if let Some(d) = &c.drive {
@@ -826,9 +832,9 @@ impl HscChannel {
                 let at_b = d.at(b);
                 c.at = Some((b, at_b));
                 let total = at_b - at_a;
-                if total != 0 && (total > 0) != was_up {
-                    // The direction turns with the first count of the interval: that is when
-                    // the status bit changes, however long the interval.
+                if total != 0 && (total > 0) != was_up && counted_dir {
+                    // The counted direction (A/B, two-pulse) turns with the first count of the
+                    // interval: that is when the status bit changes, however long the interval.
                     dir_at = Some(d.timer(last, now, total.signum()).time_of(1));
                 }
                 if dir_at.is_some() {
