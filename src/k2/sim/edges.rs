@@ -95,9 +95,12 @@ fn own_changes(inputs: &Inputs, p: Pin, a: u64, b: u64, out: &mut Vec<u64>) {
 /// level at `a`. `fallback`: the level written to the input (when no signal drives it).
 pub fn changes(inputs: &Inputs, faults: &Faults, p: Pin, a: u64, b: u64, fallback: bool) -> (bool, Vec<(u64, bool)>) {
     let level = |t: u64| {
-        faults.list.iter().filter(|f| f.kind.pin() == Some(p)).find_map(|f| f.level_at(t)).unwrap_or_else(|| {
-            own_level(inputs, p, t, fallback)
-        })
+        faults
+            .list
+            .iter()
+            .filter(|f| f.kind.pin() == Some(p))
+            .find_map(|f| f.level_at(t))
+            .unwrap_or_else(|| own_level(inputs, p, t, fallback))
     };
     let mut at = Vec::new();
     own_changes(inputs, p, a, b, &mut at);

@@ -160,7 +160,8 @@ impl Fault {
     /// The instants in `(a, b]` ns where the level this fault gives may change: its
     /// window's ends and, for noise, each slot's start.
     pub fn changes(&self, a: u64, b: u64) -> Vec<u64> {
-        let mut out: Vec<u64> = [Some(self.from_ns), self.until_ns].into_iter().flatten().filter(|t| *t > a && *t <= b).collect();
+        let mut out: Vec<u64> =
+            [Some(self.from_ns), self.until_ns].into_iter().flatten().filter(|t| *t > a && *t <= b).collect();
         if let FaultKind::Noisy { hz, .. } = self.kind {
             let lo = a.max(self.from_ns);
             let hi = self.until_ns.map_or(b, |u| u.min(b));
@@ -434,9 +435,7 @@ impl Faults {
         for f in &mut self.list {
             let (byte, bit, level) = match f.kind {
                 FaultKind::Stuck { byte, bit, on } => (byte, bit, on),
-                FaultKind::Noisy { byte, bit, hz } => {
-                            (byte, bit, noise(f.id, f.slot(now.as_nanos() as u64, hz)))
-                }
+                FaultKind::Noisy { byte, bit, hz } => (byte, bit, noise(f.id, f.slot(now.as_nanos() as u64, hz))),
                 _ => continue,
             };
             if !f.active(now) {

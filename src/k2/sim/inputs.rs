@@ -241,7 +241,10 @@ impl Track {
 pub enum PinEdges {
     Train(Train),
     /// An encoder output: A (`of_b` false) or B.
-    Track { track: Track, of_b: bool },
+    Track {
+        track: Track,
+        of_b: bool,
+    },
 }
 
 impl PinEdges {

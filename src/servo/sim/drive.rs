@@ -747,15 +747,18 @@ impl Drive {
     fn plan_move(&mut self, goal: f64, t: f64) {
         let (p, v) = self.motion.at(t);
         self.commanded = goal;
-        self.set_motion(Motion::position(
+        self.set_motion(
+            Motion::position(
+                t,
+                p,
+                v,
+                goal,
+                speed_from_dec(self.stored("profile_velocity") as f64),
+                self.accel("profile_acceleration"),
+                self.accel("profile_deceleration"),
+            ),
             t,
-            p,
-            v,
-            goal,
-            speed_from_dec(self.stored("profile_velocity") as f64),
-            self.accel("profile_acceleration"),
-            self.accel("profile_deceleration"),
-        ), t);
+        );
         self.task = Task::Move;
     }
 
@@ -763,12 +766,22 @@ impl Drive {
         let (p, v) = self.motion.at(t);
         self.limit_active = false;
         let target = speed_from_dec(self.stored("target_velocity") as f64);
-        self.set_motion(if self.mode() == -3 {
-            // Immediate velocity: no ramp.
-            Motion::velocity(t, p, target, target, 1.0, 1.0)
-        } else {
-            Motion::velocity(t, p, v, target, self.accel("profile_acceleration"), self.accel("profile_deceleration"))
-        }, t);
+        self.set_motion(
+            if self.mode() == -3 {
+                // Immediate velocity: no ramp.
+                Motion::velocity(t, p, target, target, 1.0, 1.0)
+            } else {
+                Motion::velocity(
+                    t,
+                    p,
+                    v,
+                    target,
+                    self.accel("profile_acceleration"),
+                    self.accel("profile_deceleration"),
+                )
+            },
+            t,
+        );
         self.task = Task::Velocity;
     }
 

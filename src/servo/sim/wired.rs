@@ -69,7 +69,8 @@ impl Peer for DrivePeer {
     fn motion(&mut self, t: f64) -> Vec<Piece> {
         self.bring(t);
         self.with(|d| {
-            let pieces = d.pieces_from(t).into_iter().map(|(t0, dur, p0, v0, a)| Piece { t0, dur, p0, v0, a }).collect();
+            let pieces =
+                d.pieces_from(t).into_iter().map(|(t0, dur, p0, v0, a)| Piece { t0, dur, p0, v0, a }).collect();
             d.forget_before(t);
             pieces
         })
