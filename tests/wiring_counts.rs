@@ -254,3 +254,21 @@ fn a_counter_sees_injected_noise_and_a_stuck_input() {
     }
     assert_eq!(get(&mut sh, "SMD38"), noisy, "polled every millisecond");
 }
+
+#[test]
+fn a_looped_train_runs_the_edge_interrupt_of_each_pulse() {
+    // Event 6: I0.3 rising (K2 §2.2.7); the routine counts the pulses it sees.
+    let dir = std::env::temp_dir().join(format!("plcsh-wiring-counts-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let il = dir.join("edges.il");
+    std::fs::write(
+        &il,
+        "PROGRAM MAIN\nLD %SM0.1\nATCH ON_EDGE, 6\nENI\nEND_PROGRAM\nINTERRUPT ON_EDGE\nLD %SM0.0\nINC %VW10\nEND_INTERRUPT\n",
+    )
+    .unwrap();
+    let mut sh = shell();
+    run(&mut sh, &format!("sim program load {}; sim wire plc:Q0.1 -> plc:I0.3 delay=2ms", il.display()));
+    run(&mut sh, "sim step 5ms; pto 1 freq=1kHz count=50; sim step 100ms");
+    assert_eq!(get(&mut sh, "VW10"), 50, "one routine per looped pulse");
+    let _ = std::fs::remove_dir_all(&dir);
+}
