@@ -253,6 +253,25 @@ fn a_counter_sees_injected_noise_and_a_stuck_input() {
         run(&mut sh, "sim step 1ms; get I0.1");
     }
     assert_eq!(get(&mut sh, "SMD38"), noisy, "polled every millisecond");
+    // A stepped wait stops at an event the noise brings forward, at its time.
+    let at = |line: &str| {
+        let mut sh = shell();
+        let l = run(
+            &mut sh,
+            &format!("{base}; hsc 0 mode=0 pv=300; sim fault noisy I0.1 freq=20kHz at=100ms for=100ms; {line}"),
+        );
+        // The event as the wait took it, or as the log has it.
+        let waited = l.iter().find(|r| r["cmd"] == "wait").map(|r| r["event"].clone());
+        let ev = run(&mut sh, "events keep");
+        let logged = ev[0]["events"].as_array().and_then(|a| a.iter().find(|e| e["name"] == "hsc0-cv=pv").cloned());
+        let hit = waited.or(logged);
+        (hit.map(|e| e["time_us"].as_i64().unwrap()), l.last().unwrap()["time_us"].as_i64())
+    };
+    let (quiet, _) = at("sim step 2s");
+    let quiet = quiet.expect("the PV is reached");
+    assert!(quiet < 300_000, "the noise brought it forward: {quiet}");
+    let (waited, clock) = at("wait event hsc0-cv=pv timeout=2s; sim time");
+    assert_eq!((waited, clock), (Some(quiet), Some(quiet)), "the wait stops at the event");
 }
 
 #[test]

@@ -353,7 +353,12 @@ impl K2Sim {
                             format!("{} is driven by a simulated signal ({})", inputs::pin_name(p), s.describe()),
                         )
                         .operand(op.canonical())
-                        .hint(format!("stop it first: sim input {} off", inputs::pin_name(p))));
+                        .hint(match s {
+                            Source::Train { .. } | Source::Encoder { .. } => {
+                                format!("a wire drives it: sim unwire plc:{}", inputs::pin_name(p))
+                            }
+                            _ => format!("stop it first: sim input {} off", inputs::pin_name(p)),
+                        }));
                     }
                 }
             }
@@ -502,7 +507,31 @@ impl K2Sim {
         let p = self.pto.iter().filter_map(|p| p.next_due());
         let h = self.hsc.iter().filter_map(|h| h.next_due(&self.inputs, &self.mem, self.last));
         // A wired input changes its formula at the end of its piece: look again then.
-        p.chain(h).chain(self.wiring_due()).min()
+        p.chain(h).chain(self.wiring_due()).chain(self.fault_due()).min()
+    }
+
+    /// Where stuck and noisy inputs change what a running counter counts: their windows'
+    /// ends, and inside a window on a counted input every millisecond (the counter then
+    /// counts edge by edge, which the formulas above do not foresee).
+    fn fault_due(&self) -> Option<Duration> {
+        if self.faults.is_empty() {
+            return None;
+        }
+        let last = inputs::ns(self.last);
+        let counted = |p: Pin| self.hsc.iter().any(|h| h.running && h.pins().contains(&p));
+        let mut due = None::<u64>;
+        for f in &self.faults.list {
+            if !f.kind.pin().is_some_and(counted) {
+                continue;
+            }
+            let next = if f.level_at(last).is_some() {
+                Some(last + 1_000_000)
+            } else {
+                [Some(f.from_ns), f.until_ns].into_iter().flatten().filter(|t| *t > last).min()
+            };
+            due = [due, next].into_iter().flatten().min();
+        }
+        due.map(Duration::from_nanos)
     }
 
     /// Battery-retained ranges (`VB0..VB99`, `MB0[10]`, `C0..C15`): V or M byte ranges
