@@ -157,9 +157,9 @@ pub struct Drive {
     /// it counts does not depend on when it reads.
     #[serde(default)]
     pub history: Vec<(f64, Motion)>,
-    /// A wire follows the drive: keep [`Self::history`].
+    /// How many wire hosts follow the drive: while any does, [`Self::history`] is kept.
     #[serde(default)]
-    pub keep_history: bool,
+    pub followers: u32,
 }
 
 /// Most replaced plans a drive keeps for its wires (they are dropped once read).
@@ -201,14 +201,14 @@ impl Drive {
             faults_at: Vec::new(),
             fault_events: Vec::new(),
             history: Vec::new(),
-            keep_history: false,
+            followers: 0,
         }
     }
 
     /// Replaces the plan at `t` (kept in the history while a wire follows the drive).
     fn set_motion(&mut self, m: Motion, t: f64) {
         let old = std::mem::replace(&mut self.motion, m);
-        if self.keep_history {
+        if self.followers > 0 {
             if self.history.len() >= HISTORY {
                 self.history.remove(0);
             }

@@ -21,7 +21,7 @@ pub struct DrivePeer {
 impl DrivePeer {
     pub fn new(line: Arc<Mutex<SimLine>>, id: u8) -> DrivePeer {
         if let Some(d) = line.lock().unwrap_or_else(|p| p.into_inner()).drive(id) {
-            d.keep_history = true;
+            d.followers += 1;
         }
         DrivePeer { line, id, quiet: None }
     }
@@ -58,6 +58,19 @@ impl DrivePeer {
     fn with<R>(&mut self, f: impl FnOnce(&mut super::drive::Drive) -> R) -> Option<R> {
         let mut l = self.line.lock().unwrap_or_else(|p| p.into_inner());
         l.drive(self.id).map(f)
+    }
+}
+
+impl Drop for DrivePeer {
+    /// One wire host fewer follows the drive; with none, it keeps no history.
+    fn drop(&mut self) {
+        let mut l = self.line.lock().unwrap_or_else(|p| p.into_inner());
+        if let Some(d) = l.drive(self.id) {
+            d.followers = d.followers.saturating_sub(1);
+            if d.followers == 0 {
+                d.history.clear();
+            }
+        }
     }
 }
 
