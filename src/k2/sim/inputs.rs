@@ -482,6 +482,39 @@ mod tests {
         assert_eq!(w.falls(Duration::from_micros(11_500)), 1);
     }
 
+    /// The encoder's A/B state and what a decoder counts: at power-up (position 0) A is
+    /// high and B low; walking the states one by one, up and down at random, an X1 decoder
+    /// (A's edge while B is low: rising up, falling down) and an X4 decoder counting edge by
+    /// edge agree with `Track::quad` at every state, with A and B either way round.
+    #[test]
+    fn the_encoder_state_is_a_function_of_position_and_decoders_agree() {
+        assert_eq!(Track::levels(0), (true, false), "power-up phase");
+        let track = |n: i64| Track { t0_ns: 0, dur: 0.0, x0: n as f64, v: 0.0, a: 0.0 };
+        let mut rng = crate::core::test_rng::Rng(0xA5B_0001);
+        for swapped in [false, true] {
+            let (mut n, mut x1, mut x4) = (0i64, 0i64, 0i64);
+            let (base1, base4) = (track(0).quad(0, swapped, false), track(0).quad(0, swapped, true));
+            for _ in 0..5000 {
+                let (oa, ob) = Track::levels(n);
+                n += if rng.below(2) == 0 { 1 } else { -1 };
+                let (na, nb) = Track::levels(n);
+                // What the decoder's A and B are.
+                let ((da0, db0), (da1, db1)) = if swapped { ((ob, oa), (nb, na)) } else { ((oa, ob), (na, nb)) };
+                if da0 != da1 {
+                    x4 += if da1 != db1 { 1 } else { -1 };
+                    if !db1 {
+                        x1 += if da1 { 1 } else { -1 };
+                    }
+                } else if db0 != db1 {
+                    x4 += if da1 == db1 { 1 } else { -1 };
+                }
+                let t = track(n);
+                assert_eq!(t.quad(0, swapped, true) - base4, x4, "4x at {n} (swapped {swapped})");
+                assert_eq!(t.quad(0, swapped, false) - base1, x1, "1x at {n} (swapped {swapped})");
+            }
+        }
+    }
+
     #[test]
     fn quadrature_lag_is_a_quarter_period_late() {
         let mut i = Inputs::default();
