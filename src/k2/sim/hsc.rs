@@ -768,8 +768,10 @@ impl HscChannel {
                             let b_high = level(b);
                             let fall = wa.shifted(wa.half_ns());
                             match (self.rate4x, b_high) {
-                                (false, false) => d.up.push(wa),
-                                (false, true) => d.down.push(wa),
+                                // 1×: A's edges while B is low, rising up and falling down
+                                // (a square wave on A alone comes and goes); none while B is high.
+                                (false, false) => (d.up, d.down) = (Streams::of(&[wa]), Streams::of(&[fall])),
+                                (false, true) => {}
                                 (true, false) => (d.up, d.down) = (Streams::of(&[wa]), Streams::of(&[fall])),
                                 (true, true) => (d.up, d.down) = (Streams::of(&[fall]), Streams::of(&[wa])),
                             }
