@@ -110,3 +110,22 @@ fn in_process_faults_act_on_schedule_and_are_logged_with_their_time() {
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(err.contains("`melt` is not a fault kind"), "{err}");
 }
+
+#[test]
+fn clearing_a_fault_gives_the_input_its_own_level_back() {
+    let lines = "set I0.2=1\n\
+        sim fault stuck I0.2=0\n\
+        sim fault stuck I0.4=1\n\
+        sim step 1ms\n\
+        get I0.2 I0.4\n\
+        sim fault clear\n\
+        get I0.2 I0.4\n\
+        sim step 1ms\n\
+        get I0.2 I0.4\n";
+    let l = batch(&["--time", "stepped"], lines);
+    let gets: Vec<&serde_json::Value> = l.iter().filter(|v| v["cmd"] == "get").collect();
+    let levels = |g: &serde_json::Value| (g["values"][0]["value"].clone(), g["values"][1]["value"].clone());
+    assert_eq!(levels(gets[0]), (false.into(), true.into()), "held by the faults");
+    assert_eq!(levels(gets[1]), (true.into(), false.into()), "cleared: the levels from before");
+    assert_eq!(levels(gets[2]), (true.into(), false.into()), "and they stay");
+}

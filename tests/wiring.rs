@@ -144,8 +144,9 @@ fn loopback_with_a_delay_and_pulses_into_a_counter() {
     assert_eq!(vals(&g[0]), vec![0], "not yet: the wire delays 2 ms");
     assert_eq!(vals(&g[1]), vec![1], "after 2 ms");
     let wait = l.iter().find(|l| l["cmd"] == "wait").unwrap();
-    // PLS at 2 ms; each pulse counted as it completes (as SMD212 counts): the 500th at 502 ms.
-    assert_eq!(wait["event"]["time_us"], 502_000);
+    // PLS at 2 ms; each pulse rises at the start of its cycle (the PTO output is high in the
+    // first half of each cycle): the 500th rises 499 cycles after the first, at 501 ms.
+    assert_eq!(wait["event"]["time_us"], 501_000);
     assert_eq!(vals(&g[2]), vec![1000]);
 }
 

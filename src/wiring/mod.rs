@@ -13,27 +13,29 @@
 //! Coupling is analytic in virtual time. The device that counts (the K2) is the *host*: when
 //! it advances, it asks its peers (the drives, through [`Peer`]) for their signals over the
 //! interval and advances piecewise, one piece per stretch where every wired signal is
-//! described by one formula (a constant-rate quadrature wave, a steady level). A cruise at
-//! 200 kHz for an hour is one piece; only the ends of segments, ramps (cut into pieces of at
-//! most [`RAMP_PIECE`]) and level changes cost a step. Pulse outputs are pushed to the
+//! described by one formula (an encoder following a constant-acceleration stretch of the
+//! motion, a pulse train's stretch, a steady level). A cruise at 200 kHz for an hour is one
+//! piece, and so is a whole ramp; only the ends of motion segments and level changes cost a
+//! step. Pulse outputs are pushed to the
 //! drive the moment they start or stop (`PLS`, `PSTOP`), so the drive follows them from
 //! their first pulse.
 //!
-//! Exactness: the quadrature edges the counter sees are placed where the encoder position
-//! `x(t)` (in 4× counts, `x = p · 4 · lines / resolution`) crosses whole counts, and each
-//! piece starts from the count the counter has actually been given, so counts never drift
-//! (a rate that is not a whole number of Hz is re-synchronised at least every
-//! [`max_piece`] seconds). A counter in 1× mode counts A's rising edges of the same wave.
+//! Exactness: an encoder output is its position, not a wave at some rate. Each piece hands
+//! the counter the motion itself (`x(t)` in 4× counts, `x = p · 4 · lines / resolution`,
+//! constant acceleration within the piece, moving one way: a piece ends where the motion
+//! stops or reverses), and the A/B state is a function of `x` (`k2::sim::inputs::Track`):
+//! the edges between any two instants follow from the position at those instants, so
+//! counts never drift, ramps included, and do not depend on where pieces or polls fall.
+//! At 1× a decoder counts one edge per period (A's edge while B is low: A rising up, A
+//! falling down), `⌊x / 4⌋`; at 4× every state change, `⌊x⌋`. A pulse output wired to an
+//! input carries the train's pulses exactly (whole-ns cycles, the count put out), delayed
+//! by the wire's delay whether or not the output still runs then.
 
 pub mod bench;
 pub mod setup;
 
 use crate::core::signal::PulseTrain;
 use crate::core::{Error, Result};
-
-/// Longest piece a ramp (accelerating motion) is cut into: the encoder rate is the mean
-/// over the piece, and the count is re-synchronised to the true position at its end.
-pub const RAMP_PIECE: f64 = 0.001;
 
 /// One stretch of a planned motion: from `t0` for `dur` seconds (infinite for the last),
 /// starting at position `p0` (increments) with velocity `v0` and constant acceleration `a`.
@@ -322,13 +324,20 @@ pub struct Wire {
     pub state: WireState,
 }
 
+/// One stretch of pulses a pulse output put out, as a wire carries them to an input
+/// (delayed): `count` cycles of `cycle_ns`, the first rising at `first_ns`.
+pub type LoopSeg = crate::k2::sim::inputs::Train;
+
 /// What a wire carries over between pieces (saved whole in snapshots).
 #[derive(Clone, Debug, Default, serde::Serialize, serde::Deserialize)]
+#[serde(default)]
 pub struct WireState {
-    /// Encoder: 4× counts given to the counter so far (absolute encoder count).
-    pub given: i64,
-    /// Encoder: counts are anchored (`given` set from the position when wired).
-    pub anchored: bool,
+    /// Encoder: the signal of the current piece (its A/B state follows from it).
+    pub track: Option<crate::k2::sim::inputs::Track>,
+    /// Encoder: added to the drive's position (4× counts) so the output stays where it was
+    /// when the drive re-references its position (homing): an incremental encoder's
+    /// outputs change only when the shaft turns.
+    pub offset: f64,
     /// The current piece is valid until this time (ns) while the peer's plan is `plan`.
     pub until_ns: u64,
     pub plan: u64,
@@ -338,8 +347,10 @@ pub struct WireState {
     /// Loopback: level changes waiting for their delay (time ns, level).
     pub pending: std::collections::VecDeque<(u64, bool)>,
     pub last_level: Option<bool>,
-    /// The wave the wire drives now: (Hz, origin ns, up) (encoder) or (Hz, origin, _) (pulses).
-    pub wave: Option<(u64, u64, bool)>,
+    /// Pulse loop: the pulses put out and still to arrive, oldest first, and the one on
+    /// the input now.
+    pub segs: std::collections::VecDeque<LoopSeg>,
+    pub playing: Option<LoopSeg>,
 }
 
 /// The wiring a host holds: its peers (by device name) and its wires.
@@ -377,8 +388,8 @@ impl Harness {
                 format!("PTO{channel} pulses (with its direction output) to the pulse input")
             }
             Kind::Encoder { lines, .. } => match lines {
-                Some(l) => format!("encoder A/B, {l} lines per revolution, counted 4x"),
-                None => "encoder A/B, one 4x count per increment".to_string(),
+                Some(l) => format!("encoder A/B, {l} lines (A/B periods) per revolution"),
+                None => "encoder A/B, a quarter period per increment".to_string(),
             },
             Kind::Output { what, .. } => format!(
                 "drive output {}",
@@ -403,45 +414,6 @@ impl Harness {
 impl Default for Harness {
     fn default() -> Self {
         Harness::new()
-    }
-}
-
-/// The quadrature wave for one piece of an encoder signal: the A/B period frequency in Hz
-/// (whole), the ns origin of a wave whose first edge comes when the position reaches the
-/// next count after `given`, and the direction. `x0` is the position at `t0` in 4× counts
-/// and `rate` its rate (4× counts/s, signed). `None` when the rate rounds to zero.
-///
-/// A wave of frequency `f` from origin `o` (low at `o`) makes its 4× edges at
-/// `o + m / (4f)` for m ≥ 4 (k2::sim::inputs: A rises at `o + k/f`, B a quarter later), so
-/// the first edge is `o + 1/f`: the origin is put one period before the time the next
-/// count is due.
-pub fn quad_wave(t0_ns: u64, x0: f64, rate: f64, given: i64) -> Option<(u64, u64, bool)> {
-    let f = (rate.abs() / 4.0).round();
-    if f < 1.0 {
-        return None;
-    }
-    let hz = f as u64;
-    let up = rate > 0.0;
-    // Counts still owed (positive) or already given ahead (negative), seen from the direction.
-    let due = if up { (given + 1) as f64 - x0 } else { x0 - (given - 1) as f64 - 1.0 };
-    // Time until the next edge, from the true rate; never before the piece starts.
-    let wait_ns = (due.max(0.0) / rate.abs() * 1e9).ceil().max(1.0) as u64;
-    let period = 1_000_000_000u64.div_ceil(hz);
-    // Within the first period of virtual time the origin would be before zero: the first
-    // edge then comes up to a period late (the next piece catches the count up).
-    let first = (t0_ns + wait_ns).max(period);
-    Some((hz, first - period, up))
-}
-
-/// How long a piece at `rate` (4× counts/s) may last before the whole-Hz wave drifts by a
-/// quarter count from the true rate.
-pub fn max_piece(rate: f64) -> f64 {
-    let f = rate.abs() / 4.0;
-    let err = (f - f.round()).abs();
-    if err < 1e-9 {
-        f64::INFINITY
-    } else {
-        (0.25 / err).max(RAMP_PIECE)
     }
 }
 
@@ -538,22 +510,5 @@ mod tests {
         assert_eq!(r("limit-@-5").unwrap(), Role::Switch(Switch::NegLimit(-5.0)));
         assert!(r("home@x").is_err());
         assert!(r("brake").unwrap_err().to_string().contains("unknown"));
-    }
-
-    #[test]
-    fn the_first_edge_comes_when_the_next_count_is_due() {
-        // 1000 counts/s (250 Hz), at x0 = 10.5 with 10 given: the 11th count is due in 0.5 ms.
-        let (hz, o, up) = quad_wave(10_000_000, 10.5, 1000.0, 10).unwrap();
-        assert_eq!((hz, up), (250, true));
-        assert_eq!(o + 4_000_000, 10_000_000 + 500_000);
-        // Going down from 10.5 with 10 given: the count drops to 9 when x falls below 10.
-        let (_, o, up) = quad_wave(10_000_000, 10.5, -1000.0, 10).unwrap();
-        assert!(!up);
-        assert_eq!(o + 4_000_000, 10_500_000);
-        // Within the first period of virtual time the origin cannot go before zero.
-        assert_eq!(quad_wave(1_000_000, 10.5, 1000.0, 10).unwrap().1, 0);
-        assert!(quad_wave(0, 0.0, 1.0, 0).is_none(), "a quarter Hz rounds to nothing");
-        assert_eq!(max_piece(4000.0), f64::INFINITY);
-        assert!((max_piece(4002.0) - 0.5).abs() < 1e-9);
     }
 }

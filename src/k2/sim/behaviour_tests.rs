@@ -712,7 +712,7 @@ fn quiet_counting_matches_the_general_path() {
 /// A running counter's direction change is an event (`hsc0-dir`) at the time it shows in
 /// the status bit (SM36.5 …): by the HSC instruction's direction bits (SMB37 bits 3 and 4,
 /// k2.md §4), by the external direction input (mode 3: I0.5 for HSC0), and by the signals
-/// counted (mode 9, A/B: B leading counts down). Starting a counter raises none, nor does an
+/// counted (mode 9, A/B: B leading counts down, from its first count). Starting a counter raises none, nor does an
 /// HSC that leaves the direction as it was. The manual gives no event number for it, so it
 /// has only its name (see `instr`).
 #[test]
@@ -765,7 +765,10 @@ fn direction_changes_are_events_when_they_show() {
     ms(&clock, 10);
     assert_eq!(dir(&mut s), vec![]);
     quad(&mut s, b, a, 1000);
-    let at = clock.now();
+    // At 1x the first count down is A falling while B is low, 1.75 periods into the new
+    // signal (B rises at 1 ms, A at 1.25, B falls at 1.5, A at 1.75): the direction bit turns
+    // then, however the time is stepped.
+    let at = clock.now() + Duration::from_micros(1750);
     ms(&clock, 10);
     assert_eq!(dir(&mut s), vec![(at, EventKind::HscDirection { channel: 1, up: false })]);
 }

@@ -20,8 +20,11 @@
 //! the process (`sim:MODEL`) there is no transport, so `late`, `bad-crc` and `drop` act only
 //! when the simulator is served; in-process a `no-reply` is a link error and an `exception`
 //! the device refusing, as the wire driver reports them. `stuck` and `noisy` act on the input
-//! image that clients and programs read; high-speed counters keep counting their simulated
-//! signal sources (`sim input … off` stops those).
+//! image that clients and programs read, and on what the high-speed counters count: inside
+//! the window the input's edges are the fault's (`super::edges`). Noise is one level per slot
+//! (`freq=` slots a second from the window's start), pseudo-random from the fault's id and
+//! the slot number (splitmix64): the same on every run, whoever reads when. A fault's window
+//! ending, or `sim fault clear`, gives the input its own level back.
 //!
 //! A `late` reply holds the server for its delay (it serves one request at a time, as a PLC's
 //! Modbus port does), so everything the same `sim serve` process serves waits too.
@@ -62,6 +65,14 @@ pub enum FaultKind {
 }
 
 impl FaultKind {
+    /// The input a stuck or noisy fault acts on.
+    pub fn pin(&self) -> Option<Pin> {
+        match *self {
+            FaultKind::Stuck { byte, bit, .. } | FaultKind::Noisy { byte, bit, .. } => Some((byte, bit)),
+            _ => None,
+        }
+    }
+
     /// The short name (`no-reply`), also the event's.
     pub fn name(&self) -> &'static str {
         match self {
@@ -147,6 +158,46 @@ pub struct Fault {
 }
 
 impl Fault {
+    /// The level a stuck or noisy fault gives its input at `t` ns, when its window holds
+    /// `t` (the window only: how the input looks does not depend on who read it).
+    pub fn level_at(&self, t: u64) -> Option<bool> {
+        if t < self.from_ns || self.until_ns.is_some_and(|u| t >= u) || self.times == Some(0) {
+            return None;
+        }
+        match self.kind {
+            FaultKind::Stuck { on, .. } => Some(on),
+            FaultKind::Noisy { hz, .. } => Some(noise(self.id, self.slot(t, hz))),
+            _ => None,
+        }
+    }
+
+    /// The noise slot `t` ns falls in (`hz` slots a second from the window's start).
+    fn slot(&self, t: u64, hz: u64) -> u64 {
+        ((t.saturating_sub(self.from_ns)) as u128 * hz as u128 / 1_000_000_000) as u64
+    }
+
+    /// The instants in `(a, b]` ns where the level this fault gives may change: its
+    /// window's ends and, for noise, each slot's start.
+    pub fn changes(&self, a: u64, b: u64) -> Vec<u64> {
+        let mut out: Vec<u64> =
+            [Some(self.from_ns), self.until_ns].into_iter().flatten().filter(|t| *t > a && *t <= b).collect();
+        if let FaultKind::Noisy { hz, .. } = self.kind {
+            let lo = a.max(self.from_ns);
+            let hi = self.until_ns.map_or(b, |u| u.min(b));
+            if hz > 0 && lo < hi {
+                let first = self.slot(lo, hz) + 1;
+                let last = self.slot(hi, hz);
+                for k in first..=last {
+                    let t = self.from_ns + (k as u128 * 1_000_000_000).div_ceil(hz as u128) as u64;
+                    if t > a && t <= b {
+                        out.push(t);
+                    }
+                }
+            }
+        }
+        out
+    }
+
     fn active(&self, now: Duration) -> bool {
         let t = now.as_nanos() as u64;
         t >= self.from_ns && self.until_ns.is_none_or(|u| t < u) && self.times.is_none_or(|n| self.hits < n)
@@ -359,11 +410,29 @@ impl Faults {
         !self.list.is_empty() && self.list.iter().any(|f| f.kind == FaultKind::PowerLoss)
     }
 
-    /// Removes fault `id`, or all; returns how many went.
-    pub fn clear(&mut self, id: Option<u32>) -> usize {
+    /// Removes fault `id`, or all; returns how many went, and the inputs the removed
+    /// faults were holding with their levels from before (to be given back, as the end of
+    /// a fault's window gives them back).
+    pub fn clear(&mut self, id: Option<u32>) -> (usize, Vec<(Pin, bool)>) {
         let before = self.list.len();
-        self.list.retain(|f| id.is_some_and(|i| f.id != i));
-        before - self.list.len()
+        let mut held = Vec::new();
+        self.list.retain(|f| {
+            let keep = id.is_some_and(|i| f.id != i);
+            if !keep {
+                if let (Some(p), Some(level)) = (f.kind.pin(), f.held.filter(|_| f.logged)) {
+                    held.push((p, level));
+                }
+            }
+            keep
+        });
+        (before - self.list.len(), held)
+    }
+
+    /// The input faults (stuck, noisy) acting on `pin` at some time in `(a, b]` ns.
+    pub fn on_pin(&self, pin: Pin, a: u64, b: u64) -> impl Iterator<Item = &Fault> {
+        self.list.iter().filter(move |f| {
+            f.kind.pin() == Some(pin) && f.from_ns < b && f.until_ns.is_none_or(|u| u > a) && f.times != Some(0)
+        })
     }
 
     pub fn is_empty(&self) -> bool {
@@ -389,7 +458,14 @@ impl Faults {
     /// Applies stuck and noisy inputs to the input image at `now` (and gives an input back
     /// its level from before when its fault's window ends); returns the faults that took
     /// effect, with the time they did (to be logged once).
-    pub fn apply_inputs(&mut self, i: &mut [u8], now: Duration) -> Vec<(Duration, u32, FaultKind)> {
+    /// An input a simulated signal drives (`driven`) is not given a level back: the signal's
+    /// own level is already there.
+    pub fn apply_inputs(
+        &mut self,
+        i: &mut [u8],
+        now: Duration,
+        driven: &dyn Fn(Pin) -> bool,
+    ) -> Vec<(Duration, u32, FaultKind)> {
         fn put(i: &mut [u8], byte: u32, bit: u8, on: bool) {
             if let Some(b) = i.get_mut(byte as usize) {
                 if on {
@@ -403,15 +479,22 @@ impl Faults {
         for f in &mut self.list {
             let (byte, bit, level) = match f.kind {
                 FaultKind::Stuck { byte, bit, on } => (byte, bit, on),
-                FaultKind::Noisy { byte, bit, hz } => {
-                    let slot = (now.as_nanos() as u64).saturating_sub(f.from_ns) as u128 * hz as u128 / 1_000_000_000;
-                    (byte, bit, noise(f.id, slot as u64))
-                }
+                FaultKind::Noisy { byte, bit, hz } => (byte, bit, noise(f.id, f.slot(now.as_nanos() as u64, hz))),
                 _ => continue,
             };
             if !f.active(now) {
+                if !f.logged && f.from_ns <= now.as_nanos() as u64 && f.times != Some(0) {
+                    // Its whole window passed between two steps: it acted (the counters saw
+                    // it, `super::edges`) and is logged at its start, whoever read when.
+                    f.logged = true;
+                    f.hits = 1;
+                    started.push((Duration::from_nanos(f.from_ns), f.id, f.kind));
+                    continue;
+                }
                 if let Some(before) = f.held.take().filter(|_| f.logged) {
-                    put(i, byte, bit, before);
+                    if !driven((byte, bit)) {
+                        put(i, byte, bit, before);
+                    }
                 }
                 continue;
             }
@@ -480,8 +563,8 @@ mod tests {
         assert_eq!(f.on_request(ms(1600), &[(Area::V, 90, 120)], false), Some((1, FaultKind::NoReply)));
         assert_eq!(f.on_request(ms(1700), &vw100, false), None, "times=2 used up");
         assert_eq!(f.on_request(ms(1700), &vw100, true), Some((2, FaultKind::Drop)), "served: drop acts");
-        assert_eq!(f.clear(Some(2)), 1);
-        assert_eq!(f.clear(None), 1);
+        assert_eq!(f.clear(Some(2)).0, 1);
+        assert_eq!(f.clear(None).0, 1);
     }
 
     #[test]
@@ -490,26 +573,26 @@ mod tests {
         f.add(&parse("stuck I0.1=1 for=1s").unwrap(), ms(0));
         f.add(&parse("noisy I0.2 freq=1kHz").unwrap(), ms(0));
         let mut i = [0u8; 2];
-        let started = f.apply_inputs(&mut i, ms(10));
+        let started = f.apply_inputs(&mut i, ms(10), &|_| false);
         assert_eq!(started.len(), 2);
         assert_eq!(i[0] & 2, 2, "stuck on");
-        assert!(f.apply_inputs(&mut i, ms(20)).is_empty(), "logged once");
+        assert!(f.apply_inputs(&mut i, ms(20), &|_| false).is_empty(), "logged once");
         // Noise: both levels appear over 100 slots, and the same time gives the same level.
         let levels: Vec<bool> = (0..100)
             .map(|k| {
                 let mut i = [0u8; 2];
-                f.apply_inputs(&mut i, ms(100 + k));
+                f.apply_inputs(&mut i, ms(100 + k), &|_| false);
                 i[0] & 4 != 0
             })
             .collect();
         assert!(levels.iter().any(|l| *l) && levels.iter().any(|l| !*l));
         let mut a = [0u8; 2];
         let mut b = [0u8; 2];
-        f.apply_inputs(&mut a, ms(123));
-        f.apply_inputs(&mut b, ms(123));
+        f.apply_inputs(&mut a, ms(123), &|_| false);
+        f.apply_inputs(&mut b, ms(123), &|_| false);
         assert_eq!(a, b);
         let mut i = [0u8; 2];
-        f.apply_inputs(&mut i, ms(1500));
+        f.apply_inputs(&mut i, ms(1500), &|_| false);
         assert_eq!(i[0] & 2, 0, "the stuck window ended: the level from before is back");
         assert_eq!(started[0].0, ms(0), "stamped when it took effect");
     }

@@ -23,13 +23,18 @@
 //! - External direction input (modes 3, 4): level 1 counts up.
 //! - A/B mode with two independent square waves (not a `sim quad` pair) counts nothing: a
 //!   real decoder would count noise.
+//! - A/B rate (SM37.2, §3.3.2: "0 = 1x; 1 = 4x"; the manual says no more): 4x counts every
+//!   change of A or B; 1x counts one edge per A/B period, A's edge while B is low — A rising
+//!   (A leads B) counts up, A falling (B leads A) counts down (the usual X1 decoding). So 1x is
+//!   always a quarter of 4x rounded down, and a reversal inside a period neither adds nor
+//!   loses a count. A wired encoder's phase at power-up and its edges: `inputs::Track`.
 //! - CV is a DINT in SMD38 (wraps); the simulator keeps a 64-bit value internally.
 //! - In relative cyclic mode a step that would raise more events than the log keeps skips
 //!   whole cycles arithmetically (they are counted as dropped), so an hour costs no more
 //!   than a second.
 
 use super::events::LOG_CAP;
-use super::inputs::{ns, Inputs, Pin, Wave};
+use super::inputs::{ns, Inputs, Pin, PinEdges, Track, Wave};
 use crate::core::{Error, ErrorKind, Result};
 use crate::k2::catalog::HscSpec;
 use crate::k2::instr::EventKind;
@@ -161,22 +166,59 @@ impl Streams {
     }
 }
 
-/// Edge streams counting up and down during one interval.
+/// A count that is not a square wave's edges: a wired pulse train's or encoder's.
+#[derive(Clone, Copy, Debug)]
+enum Term {
+    /// Rising edges of one pin.
+    Pin(PinEdges),
+    /// An A/B decoder on an encoder's outputs (`Track::quad`).
+    Quad { track: Track, swapped: bool, x4: bool },
+}
+
+impl Term {
+    #[inline]
+    fn at(&self, t: u64) -> i64 {
+        match *self {
+            Term::Pin(e) => e.rises_ns(t),
+            Term::Quad { track, swapped, x4 } => track.quad(t, swapped, x4),
+        }
+    }
+}
+
+/// Edge streams counting up and down during one interval, and up to two other counts
+/// with their signs.
 #[derive(Clone, Copy, Debug, Default)]
 struct Drive {
     up: Streams,
     down: Streams,
+    terms: [Option<(Term, i64)>; 2],
 }
 
 impl Drive {
     /// The net count at `t` ns.
     #[inline]
     fn at(&self, t: u64) -> i64 {
-        self.up.at(t) - self.down.at(t)
+        let mut n = self.up.at(t) - self.down.at(t);
+        for (term, sign) in self.terms.iter().flatten() {
+            n += sign * term.at(t);
+        }
+        n
+    }
+
+    fn has_terms(&self) -> bool {
+        self.terms[0].is_some()
+    }
+
+    fn add_term(&mut self, term: Term, sign: i64) {
+        let slot = if self.terms[0].is_none() { 0 } else { 1 };
+        self.terms[slot] = Some((term, sign));
     }
 
     /// The one edge stream of a drive counting in one direction only, with its sign.
     fn single(&self) -> Option<(Wave, i64)> {
+        if self.has_terms() {
+            return None;
+        }
         match (self.up.single(), self.down.single()) {
             (Some(w), None) if self.down.is_empty() => Some((*w, 1)),
             (None, Some(w)) if self.up.is_empty() => Some((*w, -1)),
@@ -187,6 +229,7 @@ impl Drive {
     /// Times the counts of the interval (a, b] that move in direction `sign`.
     fn timer(&self, a: Duration, b: Duration, sign: i64) -> Timer<'_> {
         let single = match (sign > 0, self.up.single(), self.down.is_empty(), self.down.single(), self.up.is_empty()) {
+            _ if self.has_terms() => None,
             (true, Some(w), true, _, _) => Some(*w),
             (false, _, _, Some(w), true) => Some(*w),
             _ => None,
@@ -235,6 +278,16 @@ fn level(mem: &Memory, p: Pin) -> bool {
     mem.i.get(p.0 as usize).is_some_and(|b| b >> p.1 & 1 != 0)
 }
 
+fn put_level(i: &mut [u8], p: Pin, on: bool) {
+    if let Some(b) = i.get_mut(p.0 as usize) {
+        if on {
+            *b |= 1 << p.1;
+        } else {
+            *b &= !(1 << p.1);
+        }
+    }
+}
+
 fn level_in(i: &[u8], p: Pin) -> bool {
     i.get(p.0 as usize).is_some_and(|b| b >> p.1 & 1 != 0)
 }
@@ -278,6 +331,9 @@ pub struct HscChannel {
     /// raised as an event (the simulator raises it at its next step).
     shown_up: Option<bool>,
     pub(crate) dir_event: Option<bool>,
+    /// When the counted signals turned the direction (the first count the other way), for
+    /// the direction event; `None`: at the step's start (a written input, a setting).
+    pub(crate) dir_at: Option<Duration>,
     /// Tests turn the quiet path off to compare it with the general one.
     #[cfg(test)]
     pub(crate) general_only: bool,
@@ -366,6 +422,7 @@ impl HscChannel {
             settings: 0,
             shown_up: None,
             dir_event: None,
+            dir_at: None,
             #[cfg(test)]
             general_only: false,
         }
@@ -656,34 +713,49 @@ impl HscChannel {
         let mut d = Drive::default();
         match m.kind {
             HscKind::InternalDir | HscKind::ExternalDir => {
-                let w = inputs.wave(m.count)?;
+                let w = inputs.wave(m.count);
+                let e = inputs.pin_edges(m.count);
+                if w.is_none() && e.is_none() {
+                    return None;
+                }
                 let up = match m.kind {
                     HscKind::InternalDir => self.dir_up,
                     _ => m.dir.is_some_and(&mut *level),
                 };
-                if up {
-                    d.up.push(w)
-                } else {
-                    d.down.push(w)
+                match (w, e, up) {
+                    (Some(w), _, true) => d.up.push(w),
+                    (Some(w), _, false) => d.down.push(w),
+                    (None, Some(e), up) => d.add_term(Term::Pin(e), if up { 1 } else { -1 }),
+                    (None, None, _) => {}
                 }
             }
             HscKind::TwoPulse => {
                 if let Some(w) = inputs.wave(m.count) {
                     d.up.push(w);
+                } else if let Some(e) = inputs.pin_edges(m.count) {
+                    d.add_term(Term::Pin(e), 1);
                 }
                 if let Some(w) = m.second.and_then(|p| inputs.wave(p)) {
                     d.down.push(w);
+                } else if let Some(e) = m.second.and_then(|p| inputs.pin_edges(p)) {
+                    d.add_term(Term::Pin(e), -1);
                 }
             }
             HscKind::Quadrature => {
                 let (a, b) = (m.count, m.second?);
-                if let Some((w, a_leads)) = inputs.quad(a, b) {
+                if let Some((track, swapped)) = inputs.track(a, b) {
+                    d.add_term(Term::Quad { track, swapped, x4: self.rate4x }, 1);
+                } else if let Some((w, a_leads)) = inputs.quad(a, b) {
                     let half = w.half_ns();
                     let (wa, wb) = if a_leads { (w, w.shifted(half / 2)) } else { (w.shifted(half / 2), w) };
+                    // 1×: A's edge while B is low — rising when A leads (up), falling when
+                    // B leads (down), as `Track::quad` and written edges count.
                     let edges = if self.rate4x {
                         Streams::of(&[wa, wa.shifted(half), wb, wb.shifted(half)])
-                    } else {
+                    } else if a_leads {
                         Streams::of(&[wa])
+                    } else {
+                        Streams::of(&[wa.shifted(half)])
                     };
                     if a_leads {
                         d.up = edges
@@ -696,8 +768,10 @@ impl HscChannel {
                             let b_high = level(b);
                             let fall = wa.shifted(wa.half_ns());
                             match (self.rate4x, b_high) {
-                                (false, false) => d.up.push(wa),
-                                (false, true) => d.down.push(wa),
+                                // 1×: A's edges while B is low, rising up and falling down
+                                // (a square wave on A alone comes and goes); none while B is high.
+                                (false, false) => (d.up, d.down) = (Streams::of(&[wa]), Streams::of(&[fall])),
+                                (false, true) => {}
                                 (true, false) => (d.up, d.down) = (Streams::of(&[wa]), Streams::of(&[fall])),
                                 (true, true) => (d.up, d.down) = (Streams::of(&[fall]), Streams::of(&[wa])),
                             }
@@ -747,6 +821,9 @@ impl HscChannel {
     ) {
         // A counter without a mode or not running counts nothing (`drive` is None).
         if self.running && self.mode.is_some() && b > a {
+            let was_up = self.last_up;
+            let counted_dir = self.mode.is_some_and(|m| matches!(m.kind, HscKind::Quadrature | HscKind::TwoPulse));
+            let mut dir_at = None;
             let c = self.cached_drive(inputs, mem);
             if let Some(d) = &c.drive {
                 // The count at `a` ns was worked out by the previous interval.
@@ -757,6 +834,14 @@ impl HscChannel {
                 let at_b = d.at(b);
                 c.at = Some((b, at_b));
                 let total = at_b - at_a;
+                if total != 0 && (total > 0) != was_up && counted_dir {
+                    // The counted direction (A/B, two-pulse) turns with the first count of the
+                    // interval: that is when the status bit changes, however long the interval.
+                    dir_at = Some(d.timer(last, now, total.signum()).time_of(1));
+                }
+                if dir_at.is_some() {
+                    self.dir_at = dir_at;
+                }
                 if total != 0 {
                     if self.hits(total) {
                         self.count_timed(last, now, total, raised, skipped);
@@ -853,6 +938,59 @@ impl HscChannel {
         self.count(total, &time_of, raised, skipped);
     }
 
+    /// The inputs the current mode reads.
+    pub fn pins(&self) -> Vec<Pin> {
+        let Some(m) = self.mode else { return Vec::new() };
+        let mut v: Vec<Pin> = [Some(m.count), m.second, m.dir, m.reset, m.start].into_iter().flatten().collect();
+        v.dedup();
+        v
+    }
+
+    /// Counts the interval `(a, b]` ns edge by edge ([`super::edges`]): a stuck or noisy
+    /// fault acts on one of the counter's inputs then. Each edge is counted as a written
+    /// input's is, at its own time (CV = PV and direction events at that time).
+    pub fn advance_edges(
+        &mut self,
+        mem: &mut Memory,
+        inputs: &Inputs,
+        faults: &super::fault::Faults,
+        (a, b): (u64, u64),
+        raised: &mut Vec<(Duration, EventKind)>,
+    ) {
+        let pins = self.pins();
+        if !self.running || pins.is_empty() || b <= a {
+            return;
+        }
+        // The level each input had (as written) before a fault took it.
+        let written = |p: Pin| {
+            faults.list.iter().filter(|f| f.kind.pin() == Some(p)).find_map(|f| f.held).unwrap_or(level(mem, p))
+        };
+        let mut img = mem.i.clone();
+        let mut all: Vec<(u64, Pin, bool)> = Vec::new();
+        for &p in &pins {
+            let (start, ch) = super::edges::changes(inputs, faults, p, a, b, written(p));
+            put_level(&mut img, p, start);
+            all.extend(ch.into_iter().map(|(t, l)| (t, p, l)));
+        }
+        all.sort_by_key(|e| e.0);
+        // The counter works on the levels it sees; the image is the simulator's to set.
+        let shown = std::mem::replace(&mut mem.i, img);
+        for (t, p, l) in all {
+            let old = mem.i.clone();
+            put_level(&mut mem.i, p, l);
+            let at = Duration::from_nanos(t);
+            self.input_edges(mem, &old, at, raised);
+            if let Some(up) = self.dir_event.take() {
+                raised.push((at, EventKind::HscDirection { channel: self.regs.channel, up }));
+            }
+        }
+        mem.i = shown;
+        // The drive is worked out again from the sources after the interval.
+        self.cache = None;
+        self.quiet = None;
+        self.publish(mem);
+    }
+
     /// Counts edges the user wrote to the inputs (`set I0.1=1`), at `now`.
     pub fn input_edges(
         &mut self,
@@ -905,7 +1043,14 @@ impl HscChannel {
                 let (da, db) = (o(a) != n(a), o(b) != n(b));
                 let s = |up: bool| if up { 1 } else { -1 };
                 match (da, db) {
-                    (true, false) if !self.rate4x && n(a) => s(!n(b)),
+                    // 1×: A's edge while B is low, up when A rises, down when it falls.
+                    (true, false) if !self.rate4x => {
+                        if n(b) {
+                            0
+                        } else {
+                            s(n(a))
+                        }
+                    }
                     (true, false) => s(n(a) != n(b)),
                     (false, true) if self.rate4x => s(n(a) == n(b)),
                     _ => 0,
@@ -1042,7 +1187,7 @@ impl HscChannel {
         self.cache = None;
         self.quiet = None;
         self.settings += 1;
-        (self.shown_up, self.dir_event) = (None, None);
+        (self.shown_up, self.dir_event, self.dir_at) = (None, None, None);
         Ok(())
     }
 }

@@ -11,6 +11,7 @@
 pub mod agent;
 pub mod agent_probe;
 pub mod control;
+pub mod edges;
 pub mod events;
 pub mod fault;
 pub mod hsc;
@@ -189,11 +190,16 @@ impl K2Sim {
             k += 1;
         }
         for h in &mut self.hsc {
-            h.advance(&mut self.mem, &self.inputs, from, to, &mut self.raised, &mut skipped);
+            if !self.faults.is_empty() && edges::faulted(&self.faults, &h.pins(), from.1, to.1) {
+                h.advance_edges(&mut self.mem, &self.inputs, &self.faults, (from.1, to.1), &mut self.raised);
+            } else {
+                h.advance(&mut self.mem, &self.inputs, from, to, &mut self.raised, &mut skipped);
+            }
             // A direction change shown since the last step (by HSC, a written input, or the
             // signals counted in this one), raised at the step's start.
+            let at = h.dir_at.take();
             if let Some(up) = h.dir_event.take() {
-                self.raised.push((last, EventKind::HscDirection { channel: h.regs.channel, up }));
+                self.raised.push((at.unwrap_or(last), EventKind::HscDirection { channel: h.regs.channel, up }));
             }
             lens[k] = self.raised.len();
             k += 1;
@@ -201,7 +207,9 @@ impl K2Sim {
         self.refresh_input_levels(to.1);
         let mut faults = 0;
         if !self.faults.is_empty() {
-            for (at, id, kind) in self.faults.apply_inputs(&mut self.mem.i, now) {
+            let inputs = &self.inputs;
+            let driven = |p: Pin| inputs.drives(p).is_some();
+            for (at, id, kind) in self.faults.apply_inputs(&mut self.mem.i, now, &driven) {
                 self.raised.push((at.max(last), EventKind::Fault { id, fault: kind.code() }));
                 faults += 1;
             }
@@ -251,6 +259,13 @@ impl K2Sim {
         }
         for &(p, rise, fall) in self.inputs.edges() {
             put(&mut self.mem.i, p, rise.rises_ns(t) > fall.rises_ns(t));
+        }
+        if self.inputs.has_shaped() {
+            for s in self.inputs.sources() {
+                for (p, on) in s.shaped_levels(t).into_iter().flatten() {
+                    put(&mut self.mem.i, p, on);
+                }
+            }
         }
     }
 
@@ -349,7 +364,12 @@ impl K2Sim {
                             format!("{} is driven by a simulated signal ({})", inputs::pin_name(p), s.describe()),
                         )
                         .operand(op.canonical())
-                        .hint(format!("stop it first: sim input {} off", inputs::pin_name(p))));
+                        .hint(match s {
+                            Source::Train { .. } | Source::Encoder { .. } => {
+                                format!("a wire drives it: sim unwire plc:{}", inputs::pin_name(p))
+                            }
+                            _ => format!("stop it first: sim input {} off", inputs::pin_name(p)),
+                        }));
                     }
                 }
             }
@@ -457,6 +477,7 @@ impl K2Sim {
             Source::Quad { lead, lag, wave } => {
                 Source::Quad { lead, lag, wave: inputs::Wave { origin_ns: inputs::ns(now), ..wave } }
             }
+            other => other,
         };
         self.inputs.add(s);
         self.refresh_input_levels(inputs::ns(now));
@@ -482,11 +503,6 @@ impl K2Sim {
         Ok(msg)
     }
 
-    /// Removes injected fault `id` (or every one); returns how many went.
-    pub fn clear_faults(&mut self, id: Option<u32>) -> usize {
-        self.faults.clear(id)
-    }
-
     /// Stops the source driving `pin`; the input keeps its last level.
     pub fn remove_source(&mut self, pin: Pin) -> Result<Source> {
         self.check_input(pin)?;
@@ -502,7 +518,31 @@ impl K2Sim {
         let p = self.pto.iter().filter_map(|p| p.next_due());
         let h = self.hsc.iter().filter_map(|h| h.next_due(&self.inputs, &self.mem, self.last));
         // A wired input changes its formula at the end of its piece: look again then.
-        p.chain(h).chain(self.wiring_due()).min()
+        p.chain(h).chain(self.wiring_due()).chain(self.fault_due()).min()
+    }
+
+    /// Where stuck and noisy inputs change what a running counter counts: their windows'
+    /// ends, and inside a window on a counted input every millisecond (the counter then
+    /// counts edge by edge, which the formulas above do not foresee).
+    fn fault_due(&self) -> Option<Duration> {
+        if self.faults.is_empty() {
+            return None;
+        }
+        let last = inputs::ns(self.last);
+        let counted = |p: Pin| self.hsc.iter().any(|h| h.running && h.pins().contains(&p));
+        let mut due = None::<u64>;
+        for f in &self.faults.list {
+            if !f.kind.pin().is_some_and(counted) {
+                continue;
+            }
+            let next = if f.level_at(last).is_some() {
+                Some(last + 1_000_000)
+            } else {
+                [Some(f.from_ns), f.until_ns].into_iter().flatten().filter(|t| *t > last).min()
+            };
+            due = [due, next].into_iter().flatten().min();
+        }
+        due.map(Duration::from_nanos)
     }
 
     /// Battery-retained ranges (`VB0..VB99`, `MB0[10]`, `C0..C15`): V or M byte ranges
@@ -676,6 +716,28 @@ impl K2Sim {
             _ => Error::link(format!("no reply from the PLC (injected fault {id}: {})", kind.name()))
                 .hint("sim faults lists the injected faults; sim fault clear removes them"),
         })
+    }
+}
+
+impl K2Sim {
+    /// Removes injected fault `id`, or all, at the current time; returns how many went. An
+    /// input a removed fault was holding gets its own level back, as when the fault's
+    /// window ends: the level a signal drives it to, or the one it had before.
+    pub fn clear_faults(&mut self, id: Option<u32>) -> usize {
+        self.advance();
+        let (n, held) = self.faults.clear(id);
+        let t = inputs::ns(self.last);
+        for (p, before) in held {
+            let level = match self.inputs.drives(p) {
+                Some(_) => {
+                    self.refresh_input_levels(t);
+                    continue;
+                }
+                None => before,
+            };
+            self.drive_input(p, level);
+        }
+        n
     }
 }
 

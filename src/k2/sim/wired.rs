@@ -1,11 +1,11 @@
 //! The K2 simulator as the host of virtual wiring ([`crate::wiring`]): it resolves its own
 //! terminals (`Q0.0` a pulse output or a plain output, `I0.3` an input, `I0.1,I0.0` an A/B
 //! pair), pushes its pulse outputs to the drives they are wired to the moment they start or
-//! stop, and advances piecewise so each wired input is one formula per piece: a quadrature
-//! wave at a whole frequency from the drive's encoder, a steady level from a drive output
-//! or an axis switch, its own outputs after a delay.
+//! stop, and advances piecewise so each wired input is one formula per piece: the drive's
+//! encoder following one constant-acceleration stretch of its motion, a steady level from a
+//! drive output or an axis switch, its own outputs (pulse trains and levels) after a delay.
 
-use super::inputs::{ns, Pin, Source, Wave};
+use super::inputs::{ns, Pin, Source, Track};
 use super::pto::pos;
 use super::K2Sim;
 use crate::core::signal::PulseTrain;
@@ -14,8 +14,9 @@ use crate::k2::operand::{Area, K2Operand};
 use crate::wiring::{self, Decl, Harness, Kind, MakePeer, Peer, Role, Wire, WireState};
 use std::time::Duration;
 
-/// Most counts one piece catches up at its start (a longer gap is a lost plan, not noise).
-const MAX_CATCH_UP: u64 = 100_000;
+/// A change of an encoder's position between two pieces larger than this (4× counts) is a
+/// re-referenced position, not motion (the pieces of one motion meet to within float noise).
+const JUMP: f64 = 1e-3;
 
 fn secs(t_ns: u64) -> f64 {
     t_ns as f64 / 1e9
@@ -218,7 +219,7 @@ impl K2Sim {
     }
 
     /// Sets an input bit from a wire, counting its edge as a written input would be.
-    fn drive_input(&mut self, p: Pin, on: bool) {
+    pub(crate) fn drive_input(&mut self, p: Pin, on: bool) {
         let Some(b) = self.mem.i.get(p.0 as usize).copied() else { return };
         let now_on = b >> p.1 & 1 != 0;
         if now_on == on {
@@ -237,18 +238,6 @@ impl K2Sim {
         }
         if !raised.is_empty() {
             self.events.extend(raised);
-        }
-    }
-
-    /// One 4× quadrature step on A/B (A leads counting up), as a decoder sees it.
-    fn quad_step(&mut self, a: Pin, b: Pin, up: bool) {
-        let level = |s: &K2Sim, p: Pin| s.mem.i.get(p.0 as usize).is_some_and(|x| x >> p.1 & 1 != 0);
-        let (la, lb) = (level(self, a), level(self, b));
-        let toggle_a = (la == lb) == up;
-        if toggle_a {
-            self.drive_input(a, !la);
-        } else {
-            self.drive_input(b, !lb);
         }
     }
 
@@ -308,9 +297,27 @@ impl K2Sim {
                     }
                 }
                 Kind::PulseLoop { channel, to, delay_ns } => {
-                    w.state.until_ns = 0;
-                    // Between trains the output is a plain output: its level goes through too.
-                    let from = self.pto.iter().find(|c| c.regs.channel == channel).map(|c| c.pins().0);
+                    let c = self.pto.iter().find(|c| c.regs.channel == channel);
+                    let run = c.and_then(|c| c.train());
+                    let sig = run.map(|r| (ns(r.start), r.total));
+                    if sig != w.state.pushed {
+                        // What the output put out by now arrives whatever happens next; the
+                        // rest of a train that stopped or was replaced never goes out.
+                        cut_loop(&mut w.state, ns(now).saturating_add(delay_ns));
+                        if let Some(r) = run {
+                            let mut first = ns(r.start).saturating_add(delay_ns);
+                            for s in &r.segs {
+                                let seg = wiring::LoopSeg { first_ns: first, cycle_ns: s.cycle_ns, count: s.count };
+                                w.state.segs.push_back(seg);
+                                first = first.saturating_add(s.cycle_ns.saturating_mul(s.count));
+                            }
+                        }
+                        w.state.pushed = sig;
+                        w.state.until_ns = 0;
+                    }
+                    // Between trains the output is a plain output: its level goes through too
+                    // (during a train the output's image follows the pulses, carried above).
+                    let from = c.map(|c| c.pins().0).filter(|_| run.is_none());
                     if let Some(from) = from {
                         let on = self.mem.q.get(from.0 as usize).is_some_and(|b| b >> from.1 & 1 != 0);
                         if w.state.last_level != Some(on) {
@@ -319,6 +326,7 @@ impl K2Sim {
                                 self.drive_input(to, on);
                             } else {
                                 w.state.pending.push_back((ns(now) + delay_ns, on));
+                                w.state.until_ns = 0;
                             }
                         }
                     }
@@ -355,9 +363,6 @@ impl K2Sim {
                 end = end.min(ns(p.next_scan).max(t_ns + 1));
             }
             self.advance_plain(Duration::from_nanos(end));
-            for w in &mut h.wires {
-                finish(w, t_ns, end);
-            }
             if scanning {
                 self.wiring = Some(h);
                 self.wired_outputs();
@@ -377,66 +382,43 @@ impl K2Sim {
         match (w.kind, peer) {
             (Kind::Encoder { a, b, lines }, Some(peer)) => {
                 let plan = peer.plan_id(t);
-                if plan == st.plan && t_ns < st.until_ns {
+                if plan == st.plan && t_ns < st.until_ns && st.track.is_some() {
                     return st.until_ns;
                 }
                 let res = peer.resolution();
                 let scale = lines.map_or(1.0, |l| 4.0 * l as f64 / res);
                 let motion = peer.motion(t);
                 let Some(piece) = motion.first().copied() else { return u64::MAX };
-                let x0 = wiring::snap(piece.at(t) * scale);
-                if !st.anchored {
-                    st.given = x0.floor() as i64;
-                    st.anchored = true;
-                }
-                // Counts owed from the last piece (a plan replaced between polls, a start
-                // within the first period) are given now, as A/B steps.
-                let owed = x0.floor() as i64 - st.given;
-                if owed != 0 {
-                    self.inputs.remove(a);
-                    self.inputs.remove(b);
-                    for _ in 0..owed.unsigned_abs().min(MAX_CATCH_UP) {
-                        self.quad_step(a, b, owed > 0);
+                // The stretch of motion from now: one constant acceleration, one way. It ends
+                // with the motion's piece, where the velocity reaches zero inside it, and at
+                // the drive's next own event (which may replace the plan).
+                let v = piece.v0 + piece.a * (t - piece.t0).max(0.0);
+                let mut until = piece.t0 + piece.dur;
+                if piece.a != 0.0 && v != 0.0 {
+                    let rest = t - v / piece.a;
+                    if rest > t && rest < until {
+                        until = rest;
                     }
-                    st.given = x0.floor() as i64;
                 }
-                let piece_end = piece.t0 + piece.dur;
-                let (te, rate) = if piece.a == 0.0 {
-                    (piece_end, piece.v0 * scale)
-                } else {
-                    let te = (t + wiring::RAMP_PIECE).min(piece_end);
-                    (te, (piece.at(te) - piece.at(t)) * scale / (te - t))
-                };
-                let exact = piece.a == 0.0 && wiring::max_piece(rate).is_infinite();
-                let mut until = te.min(t + wiring::max_piece(rate));
                 if let Some(e) = peer.next_event(t) {
                     if e > t {
                         until = until.min(e);
                     }
                 }
-                // A piece whose wave only approximates the motion (a ramp's mean rate, a rate
-                // that is not a whole Hz) is worked out again whenever the PLC is brought
-                // forward, so the count is exact at every poll (owed counts are given then).
-                st.plan = if exact { plan } else { plan.wrapping_add(1) };
+                let x = piece.at(t) * scale;
+                if let Some(prev) = st.track {
+                    // The position jumped (re-referenced): the shaft did not move.
+                    let was = prev.x_unheld(t_ns);
+                    if (x + st.offset - was).abs() > JUMP {
+                        st.offset = was - x;
+                    }
+                }
+                let x0 = x + st.offset;
+                let track = Track { t0_ns: t_ns, dur: (until - t).max(0.0), x0, v: v * scale, a: piece.a * scale };
+                st.plan = plan;
                 st.until_ns = ns_at(until).max(t_ns + 1);
-                st.wave = wiring::quad_wave(t_ns, x0, rate, st.given);
-                if let Some((hz, o, _)) = st.wave {
-                    // A late first edge (see `quad_wave`): resynchronise soon.
-                    let period = 1_000_000_000u64.div_ceil(hz);
-                    if o == 0 && t_ns < period {
-                        st.until_ns = st.until_ns.min(2 * period);
-                    }
-                }
-                match st.wave {
-                    Some((hz, origin_ns, up)) => {
-                        let (lead, lag) = if up { (a, b) } else { (b, a) };
-                        self.inputs.add(Source::Quad { lead, lag, wave: Wave { hz, origin_ns } });
-                    }
-                    None => {
-                        self.inputs.remove(a);
-                        self.inputs.remove(b);
-                    }
-                }
+                st.track = Some(track);
+                self.inputs.add(Source::Encoder { a, b, track });
                 st.until_ns
             }
             (Kind::Output { what, pin }, Some(peer)) => {
@@ -478,50 +460,52 @@ impl K2Sim {
                 }
                 st.pending.front().map_or(u64::MAX, |(at, _)| *at)
             }
-            (Kind::PulseLoop { channel, to, delay_ns }, _) => {
+            (Kind::PulseLoop { to, .. }, _) => {
                 if t_ns < st.until_ns {
                     return st.until_ns;
                 }
-                let run = self.pto.iter().find(|c| c.regs.channel == channel).and_then(|c| c.train()).cloned();
-                let mut next = u64::MAX;
-                let mut wave = None;
-                if let Some(run) = run {
-                    let mut s0 = ns(run.start) + delay_ns;
-                    for s in &run.segs {
-                        let len = s.cycle_ns.saturating_mul(s.count);
-                        if t_ns < s0 {
-                            next = s0;
-                            break;
-                        }
-                        if t_ns < s0.saturating_add(len) {
-                            // One edge per pulse, counted as the pulse completes (the k-th at
-                            // s0 + k·cycle), as the channel's own position counter counts it.
-                            let hz = (1e9 / s.cycle_ns as f64).round().max(1.0) as u64;
-                            wave = Some((hz, s0, true));
-                            next = s0.saturating_add(len);
-                            break;
-                        }
-                        s0 = s0.saturating_add(len);
+                // The stretch on the input is over once its last pulse has fallen.
+                if st.playing.is_some_and(|p| t_ns >= p.low_from_ns()) {
+                    st.playing = None;
+                }
+                // Level changes of the output between trains, due now (while a stretch plays
+                // the pulses own the input).
+                while st.pending.front().is_some_and(|(at, _)| *at <= t_ns) {
+                    let (_, on) = st.pending.pop_front().unwrap();
+                    if st.playing.is_none() {
+                        self.drive_input(to, on);
                     }
                 }
-                match wave {
-                    Some((hz, origin_ns, _)) => {
-                        self.inputs.add(Source::Freq { pin: to, wave: Wave { hz, origin_ns } });
+                // The next stretch goes on the input once the level changes before it are in.
+                let before = |s: &wiring::LoopSeg, p: &std::collections::VecDeque<(u64, bool)>| {
+                    p.front().is_none_or(|(at, _)| *at >= s.first_ns)
+                };
+                if st.playing.is_none() && st.segs.front().is_some_and(|s| before(s, &st.pending)) {
+                    let next = st.segs.pop_front().expect("just seen");
+                    // Put on the input before its first pulse rises (at the previous stretch's
+                    // end, or when the train starts); a pulse rising right now (a train put
+                    // out now, without delay) is an edge the counters see now.
+                    if next.rises_ns(t_ns) > 0 {
+                        self.drive_input(to, true);
                     }
-                    None => {
-                        if self.inputs.drives(to).is_some() {
-                            self.inputs.remove(to);
-                        }
-                        while st.pending.front().is_some_and(|(at, _)| *at <= t_ns) {
-                            let (_, on) = st.pending.pop_front().unwrap();
-                            self.drive_input(to, on);
-                        }
-                        if let Some((at, _)) = st.pending.front() {
-                            next = next.min(*at);
-                        }
-                    }
+                    st.playing = Some(next);
                 }
-                st.wave = wave;
+                // The input carries the stretch playing (a stopped train's, cut short).
+                let on = match self.inputs.drives(to) {
+                    Some(Source::Train { train, .. }) => Some(*train),
+                    _ => None,
+                };
+                match st.playing {
+                    Some(p) if on != Some(p) => self.inputs.add(Source::Train { pin: to, train: p }),
+                    None if on.is_some() => {
+                        self.inputs.remove(to);
+                    }
+                    _ => {}
+                }
+                let mut next = st.pending.front().map_or(u64::MAX, |p| p.0);
+                if let Some(p) = st.playing {
+                    next = next.min(p.low_from_ns());
+                }
                 st.until_ns = next.max(t_ns + 1);
                 st.until_ns
             }
@@ -530,18 +514,19 @@ impl K2Sim {
     }
 }
 
-/// After a piece: the counts the encoder wave gave the counter in (a, b].
-fn finish(w: &mut Wire, a: u64, b: u64) {
-    if let (Kind::Encoder { .. }, Some((hz, origin_ns, up))) = (w.kind, w.state.wave) {
-        let lead = Wave { hz, origin_ns };
-        let lag = lead.shifted(lead.half_ns() / 2);
-        let edges = |t: u64| {
-            lead.rises_ns(t)
-                + lead.shifted(lead.half_ns()).rises_ns(t)
-                + lag.rises_ns(t)
-                + lag.shifted(lag.half_ns()).rises_ns(t)
-        };
-        let n = (edges(b) - edges(a)) as i64;
-        w.state.given += if up { n } else { -n };
+/// Keeps, of the pulses a loop wire carries, those the output started by `cut_ns` (in the
+/// wire's delayed time; a started pulse arrives whole); the rest never went out.
+fn cut_loop(st: &mut WireState, cut_ns: u64) {
+    let keep = |s: &wiring::LoopSeg| {
+        let started = if cut_ns < s.first_ns { 0 } else { (cut_ns - s.first_ns) / s.cycle_ns.max(1) + 1 };
+        wiring::LoopSeg { count: started.min(s.count), ..*s }
+    };
+    st.segs = st.segs.iter().map(keep).filter(|s| s.count > 0).collect();
+    if let Some(p) = st.playing {
+        let k = keep(&p);
+        if k != p {
+            st.playing = (k.count > 0).then_some(k);
+            st.until_ns = 0;
+        }
     }
 }

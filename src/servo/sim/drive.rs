@@ -152,7 +152,18 @@ pub struct Drive {
     pub faults_at: Vec<(f64, u16)>,
     /// Armed faults that acted: `(virtual time s, position, code)`.
     pub fault_events: Vec<(f64, f64, u16)>,
+    /// Plans replaced while a wire follows the drive, `(time replaced, plan)`, oldest first:
+    /// a wire reading the motion later sees it as it was ([`Drive::pieces_from`]), so what
+    /// it counts does not depend on when it reads.
+    #[serde(default)]
+    pub history: Vec<(f64, Motion)>,
+    /// How many wire hosts follow the drive: while any does, [`Self::history`] is kept.
+    #[serde(default)]
+    pub followers: u32,
 }
+
+/// Most replaced plans a drive keeps for its wires (they are dropped once read).
+const HISTORY: usize = 4096;
 
 impl Drive {
     pub fn new(id: u8, t: f64) -> Drive {
@@ -189,7 +200,47 @@ impl Drive {
             saves: 0,
             faults_at: Vec::new(),
             fault_events: Vec::new(),
+            history: Vec::new(),
+            followers: 0,
         }
+    }
+
+    /// Replaces the plan at `t` (kept in the history while a wire follows the drive).
+    fn set_motion(&mut self, m: Motion, t: f64) {
+        let old = std::mem::replace(&mut self.motion, m);
+        if self.followers > 0 {
+            if self.history.len() >= HISTORY {
+                self.history.remove(0);
+            }
+            self.history.push((t, old));
+        }
+    }
+
+    /// The motion from `t` on as it happened and is planned: the pieces of the plans
+    /// replaced since `t` (each up to its replacement), then the current plan's; each
+    /// `(t0, dur, p0, v0, a)`, the last one open-ended.
+    pub fn pieces_from(&self, t: f64) -> Vec<(f64, f64, f64, f64, f64)> {
+        let mut out = Vec::new();
+        let mut from = t;
+        for (until, m) in &self.history {
+            if *until <= from {
+                continue;
+            }
+            for (t0, dur, p0, v0, a) in m.pieces_from(from) {
+                if t0 >= *until {
+                    break;
+                }
+                out.push((t0, dur.min(until - t0), p0, v0, a));
+            }
+            from = *until;
+        }
+        out.extend(self.motion.pieces_from(from));
+        out
+    }
+
+    /// Drops the replaced plans that ended by `t` (a wire has read past them).
+    pub fn forget_before(&mut self, t: f64) {
+        self.history.retain(|(until, _)| *until > t);
     }
 
     fn stored(&self, name: &str) -> i64 {
@@ -339,7 +390,7 @@ impl Drive {
                 let (p, _) = self.motion.at(t);
                 let offset = self.stored("home_offset") as f64;
                 self.switches.shift(offset - p);
-                self.motion = Motion::still(t, offset);
+                self.set_motion(Motion::still(t, offset), t);
                 self.commanded = offset;
                 self.homed = true;
                 self.homing_onto = Onto::Nothing;
@@ -557,7 +608,7 @@ impl Drive {
     /// Stops dead (drive disabled or faulted): the motor holds where it is.
     fn stop_dead(&mut self, t: f64) {
         let (p, _) = self.motion.at(t);
-        self.motion = Motion::still(t, p);
+        self.set_motion(Motion::still(t, p), t);
         self.commanded = p;
         self.task = Task::Idle;
         self.pending = None;
@@ -568,7 +619,7 @@ impl Drive {
     /// Decelerates to rest with the deceleration object `decel` (the task is the caller's).
     fn brake(&mut self, decel: &str, t: f64) {
         let (p, v) = self.motion.at(t);
-        self.motion = Motion::stop(t, p, v, self.accel(decel));
+        self.set_motion(Motion::stop(t, p, v, self.accel(decel)), t);
     }
 
     /// Quick stop from "operation enabled", as 605A.00 says (CiA 402 option codes).
@@ -696,14 +747,17 @@ impl Drive {
     fn plan_move(&mut self, goal: f64, t: f64) {
         let (p, v) = self.motion.at(t);
         self.commanded = goal;
-        self.motion = Motion::position(
+        self.set_motion(
+            Motion::position(
+                t,
+                p,
+                v,
+                goal,
+                speed_from_dec(self.stored("profile_velocity") as f64),
+                self.accel("profile_acceleration"),
+                self.accel("profile_deceleration"),
+            ),
             t,
-            p,
-            v,
-            goal,
-            speed_from_dec(self.stored("profile_velocity") as f64),
-            self.accel("profile_acceleration"),
-            self.accel("profile_deceleration"),
         );
         self.task = Task::Move;
     }
@@ -712,12 +766,22 @@ impl Drive {
         let (p, v) = self.motion.at(t);
         self.limit_active = false;
         let target = speed_from_dec(self.stored("target_velocity") as f64);
-        self.motion = if self.mode() == -3 {
-            // Immediate velocity: no ramp.
-            Motion::velocity(t, p, target, target, 1.0, 1.0)
-        } else {
-            Motion::velocity(t, p, v, target, self.accel("profile_acceleration"), self.accel("profile_deceleration"))
-        };
+        self.set_motion(
+            if self.mode() == -3 {
+                // Immediate velocity: no ramp.
+                Motion::velocity(t, p, target, target, 1.0, 1.0)
+            } else {
+                Motion::velocity(
+                    t,
+                    p,
+                    v,
+                    target,
+                    self.accel("profile_acceleration"),
+                    self.accel("profile_deceleration"),
+                )
+            },
+            t,
+        );
         self.task = Task::Velocity;
     }
 
@@ -732,7 +796,7 @@ impl Drive {
             Ok(plan) => {
                 let acc = self.accel("homing_acceleration");
                 let speed = speed_from_dec(self.stored("homing_speed_switch") as f64);
-                self.motion = Motion::position(t, p, v, plan.target, speed, acc, acc);
+                self.set_motion(Motion::position(t, p, v, plan.target, speed, acc, acc), t);
                 self.homing_onto = plan.onto;
                 self.task = Task::Homing;
             }
@@ -753,7 +817,7 @@ impl Drive {
         let gear = self.stored("gear_factor") as f64 / (self.stored("gear_divider").max(1)) as f64;
         let pieces: Vec<(f64, f64)> =
             self.pulses.pieces_from(t).into_iter().map(|(d, rate)| (d, rate * counts * gear)).collect();
-        self.motion = Motion::cruise(t, p, &pieces);
+        self.set_motion(Motion::cruise(t, p, &pieces), t);
         self.limit_active = false;
         self.task = Task::Pulse;
     }

@@ -20,6 +20,9 @@ pub struct DrivePeer {
 
 impl DrivePeer {
     pub fn new(line: Arc<Mutex<SimLine>>, id: u8) -> DrivePeer {
+        if let Some(d) = line.lock().unwrap_or_else(|p| p.into_inner()).drive(id) {
+            d.followers += 1;
+        }
         DrivePeer { line, id, quiet: None }
     }
 
@@ -58,6 +61,19 @@ impl DrivePeer {
     }
 }
 
+impl Drop for DrivePeer {
+    /// One wire host fewer follows the drive; with none, it keeps no history.
+    fn drop(&mut self) {
+        let mut l = self.line.lock().unwrap_or_else(|p| p.into_inner());
+        if let Some(d) = l.drive(self.id) {
+            d.followers = d.followers.saturating_sub(1);
+            if d.followers == 0 {
+                d.history.clear();
+            }
+        }
+    }
+}
+
 impl Peer for DrivePeer {
     fn pulses(&mut self, train: PulseTrain, t: f64) {
         self.with(|d| d.connect_pulses(train, t));
@@ -66,7 +82,10 @@ impl Peer for DrivePeer {
     fn motion(&mut self, t: f64) -> Vec<Piece> {
         self.bring(t);
         self.with(|d| {
-            d.plan().pieces_from(t).into_iter().map(|(t0, dur, p0, v0, a)| Piece { t0, dur, p0, v0, a }).collect()
+            let pieces =
+                d.pieces_from(t).into_iter().map(|(t0, dur, p0, v0, a)| Piece { t0, dur, p0, v0, a }).collect();
+            d.forget_before(t);
+            pieces
         })
         .unwrap_or_default()
     }

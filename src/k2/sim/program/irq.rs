@@ -141,7 +141,7 @@ impl K2Sim {
     /// Edges of `sim input` signals on I0.0–I0.3 in (from, to] whose events have routines
     /// attached, queued at their times (at most [`MAX_SOURCE_EDGES`] per step).
     fn queue_source_edges(&mut self, from: Duration, to: Duration) {
-        if to <= from || self.inputs.edges().is_empty() || !self.interrupts_live() {
+        if to <= from || (self.inputs.edges().is_empty() && !self.inputs.has_shaped()) || !self.interrupts_live() {
             return;
         }
         let Some(cpu) = self.plc.as_ref().and_then(|p| p.user.as_ref()).map(|u| &u.cpu) else { return };
@@ -158,6 +158,25 @@ impl K2Sim {
                 let (a, b) = (wave.rises(from), wave.rises(to));
                 for k in a + 1..=b.min(a + MAX_SOURCE_EDGES) {
                     q.push((wave.rise_time(k), ev));
+                }
+            }
+        }
+        // Wired pulse trains and encoders: their level changes, listed edge by edge.
+        if self.inputs.has_shaped() {
+            let none = crate::k2::sim::fault::Faults::default();
+            let (a, b) = (crate::k2::sim::inputs::ns(from), crate::k2::sim::inputs::ns(to));
+            for bit in 0..4u8 {
+                let pin = (0, bit);
+                let attached = [true, false].iter().any(|r| cpu.handler(edge_event(bit, *r)).is_some());
+                if !attached || self.inputs.pin_edges(pin).is_none() {
+                    continue;
+                }
+                let (_, ch) = crate::k2::sim::edges::changes(&self.inputs, &none, pin, a, b, false);
+                for (t, rising) in ch.into_iter().take(MAX_SOURCE_EDGES as usize) {
+                    let ev = edge_event(bit, rising);
+                    if cpu.handler(ev).is_some() {
+                        q.push((Duration::from_nanos(t), ev));
+                    }
                 }
             }
         }
