@@ -1,4 +1,4 @@
-//! Lua benchmark (issue 7): register writes and reads per second from Lua against the
+//! Lua benchmark: register writes and reads per second from Lua against the
 //! in-process simulator (target ≥ 1 000 000 writes/s), and the wall time of a script that
 //! waits 10 simulated minutes in stepped time (target < 1 s). Prints figures; asserts nothing.
 //! Run: cargo bench --bench lua

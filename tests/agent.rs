@@ -1,4 +1,4 @@
-//! The PLC-side helper end to end (issue 5): `plcsh sim serve --agent` in one process runs
+//! The PLC-side helper end to end: `plcsh sim serve --agent` in one process runs
 //! the helper's mailbox protocol once per simulated scan; plcsh in another process reaches
 //! SM registers and instructions through Modbus TCP → mailbox → SM → PTO, and gets the same
 //! results as the in-process simulator.
@@ -123,7 +123,7 @@ fn a_missing_helper_is_one_clear_message() {
     assert!(l[0]["error"]["hint"].as_str().unwrap().contains("agent=VB3400"), "{}", l[0]);
 }
 
-/// Issue 30, as reported: a plain Modbus client leaves an SM write with start 40000 in the
+/// As reported: a plain Modbus client leaves an SM write with start 40000 in the
 /// mailbox. The helper refuses it (result 2, bad range) and keeps running: the heartbeat
 /// moves and the next helper command is served, not "mailbox busy … is the PLC in RUN?".
 #[test]

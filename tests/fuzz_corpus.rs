@@ -4,7 +4,7 @@
 //! parsers run in time linear in their input; a regression to exponential time shows here as
 //! a slow input long before it hangs a user's keystroke). The test profile has overflow
 //! checks, so an input whose arithmetic overflows panics here as it does under `cargo fuzz -a`;
-//! the reproductions of issue 30 also run with the refusal each must get.
+//! the reproductions of reported overflows also run with the refusal each must get.
 
 use plcsh::fuzzing::TARGETS;
 use std::path::Path;
@@ -51,7 +51,7 @@ fn every_corpus_and_regression_input_passes_its_target() {
     assert!(seen > TARGETS.len());
 }
 
-/// Issue 30's reproductions, with the refusal each must get: the helper refuses a mailbox
+/// The reported overflows' reproductions, with the refusal each must get: the helper refuses a mailbox
 /// request it cannot serve and keeps scanning; a number too large to hold is refused naming
 /// the limit, never wrapped. `cargo test --release --test fuzz_corpus` shows a release
 /// build (no overflow checks) refusing them the same way.

@@ -6,7 +6,7 @@
 //! through a proxy pty that spoils replies; batch reads coalesced within the frame limits.
 //! Transaction integrity against an independent responder (test code with its own reading of
 //! the frames, on a pty of its own) that answers late, as another station, with NAK, behind
-//! 00H noise, or at 4800/9600/19200 baud pace (issue #28). The programming port's reach per
+//! 00H noise, or at 4800/9600/19200 baud pace. The programming port's reach per
 //! model: a served FX2N and FX3U fed the public drivers' frames (D1000, D7999, M1535, the
 //! E-commands), the npm package node-fxplc run against them, and the driver against an
 //! independent responder per model, with and without ENQ.

@@ -1,5 +1,5 @@
 //! Lua through the real binary: `plcsh run`, exit status, file:line on errors, Ctrl-C
-//! running the abort handlers, the REPL's `lua`, `:` and block forms (issue 7).
+//! running the abort handlers, the REPL's `lua`, `:` and block forms.
 
 mod common;
 use common::*;

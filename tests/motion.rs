@@ -1,4 +1,4 @@
-//! The real binary on the K2's special functions (issue 4): pulse outputs in stepped time,
+//! The real binary on the K2's special functions: pulse outputs in stepped time,
 //! helpers returning their register writes, events, waits, and state that survives a restart.
 
 mod common;

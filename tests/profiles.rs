@@ -1,4 +1,4 @@
-//! Device profiles through the real binary (issue 8 §2): `--config`, `PLCSH_CONFIG`, the
+//! Device profiles through the real binary: `--config`, `PLCSH_CONFIG`, the
 //! user's config directory, `connect PROFILE`, `--device PROFILE`, `plcsh devices`, write
 //! rules enforced before anything reaches the device, and a bad file that does not stop the shell.
 

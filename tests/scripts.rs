@@ -1,5 +1,5 @@
 //! Every `scripts/*.lua` runs with the real binary against the default simulator in stepped
-//! time and must exit 0: the scripts assert their own outcomes (issue 7, "what it must show").
+//! time and must exit 0: the scripts assert their own outcomes.
 //! A script whose expectation is made wrong must fail with exit status 1, naming the line.
 
 mod common;

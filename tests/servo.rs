@@ -1,4 +1,4 @@
-//! Kinco servo end to end (issue 6): the driver over a REAL pseudo-terminal against the
+//! Kinco servo end to end: the driver over a REAL pseudo-terminal against the
 //! simulator served by the real binary (`plcsh sim serve --servo-pty`, readiness line
 //! awaited, never a sleep), and one-shot commands against the in-process simulator.
 // Unix only: real pseudo-terminals (Windows has none; its COM ports are tested under Wine

@@ -1,5 +1,4 @@
-//! `watch` and `trace` against the simulator served over TCP (issue 8: "sample at the requested
-//! rate; report the achieved rate in --verbose"), through `plcsh sim serve --tcp 127.0.0.1:0`.
+//! `watch` and `trace` against the simulator served over TCP, through `plcsh sim serve --tcp 127.0.0.1:0`.
 //! The achieved rates are printed (a benchmark figure), not asserted.
 
 mod common;

@@ -1,4 +1,4 @@
-//! The K2 over the wire (issue 3): the real `plcsh sim serve` process, talked to by plcsh's
+//! The K2 over the wire: the real `plcsh sim serve` process, talked to by plcsh's
 //! wire driver over Modbus TCP, Modbus RTU on the server's pseudo-terminal, and RTU over
 //! TCP; raw tokio-modbus requests for the server's exception codes.
 // Unix only: real pseudo-terminals (Windows has none; its COM ports are tested under Wine

@@ -1,4 +1,4 @@
-//! The Modbus benchmark (issue 3, item 4): plcsh's wire driver and simulator server side by
+//! The Modbus benchmark: plcsh's wire driver and simulator server side by
 //! side with libmodbus (C), pymodbus and mbpoll, over loopback TCP and RTU on a pty, with the
 //! 12-byte echo round trip as the floor. Run it through `bench/run.sh`, which installs the
 //! peers (Debian `libmodbus-dev`, `mbpoll`; PyPI `pymodbus`) and builds the C programs in

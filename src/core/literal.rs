@@ -521,7 +521,7 @@ mod tests {
         assert!(parse_duration_us("fast").is_err());
     }
 
-    /// Issue 30: durations past what an i64 of µs holds saturated (or wrapped, for a
+    /// Durations past what an i64 of µs holds saturated (or wrapped, for a
     /// timeout in ms times 1000) instead of being refused.
     #[test]
     fn a_duration_too_long_to_hold_is_refused_naming_the_limit() {

@@ -869,7 +869,7 @@ mod tests {
         assert_eq!(parse_timeout("250").unwrap(), Duration::from_millis(250));
         assert_eq!(parse_timeout("2s").unwrap(), Duration::from_secs(2));
         assert!(parse_timeout("0").is_err());
-        // Issue 30: 18446744073709552 ms × 1000 wrapped to 384 µs in a release build.
+        // 18446744073709552 ms × 1000 wrapped to 384 µs in a release build.
         let e = parse_timeout("18446744073709552").unwrap_err();
         assert!(e.message.contains("longer than a day (86400000 ms)"), "{e}");
         let rtu = Link::Rtu { path: "/dev/null".into(), line: LineSettings::n81(9600) };

@@ -82,7 +82,7 @@ pub trait K2Ops {
         (catalog::EEPROM_FIRST, catalog::EEPROM_LAST_DEFAULT)
     }
     /// The state of the PLC-side helper program this connection uses for SM registers and
-    /// instructions (issue 5, docs/agent.md).
+    /// instructions (docs/agent.md).
     fn helper_status(&mut self) -> Result<String> {
         Err(not_here("the helper status"))
     }

@@ -577,7 +577,7 @@ mod tests {
         assert_eq!(canon("K1M0"), "K1M0");
     }
 
-    /// Issue 30: addresses near the top of u32 overflowed the range iterator (`byte +=
+    /// Addresses near the top of u32 overflowed the range iterator (`byte +=
     /// 4`), the group arithmetic (`byte * 8`) and the odd-analog hint (`n + 1`).
     #[test]
     fn addresses_past_every_area_are_refused_naming_the_limit() {

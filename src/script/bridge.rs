@@ -97,8 +97,8 @@ const SPEED: &[Opt] = &[rename("rpm", "speed", "rpm")];
 /// `servo:jog{rpm=100}` → `servo jog 100rpm`.
 const JOG: &[Opt] = &[Opt { key: "rpm", to: "", unit: "rpm", spaced: true }];
 
-/// Every device method that runs a shell command: the K2 helpers of issue 4, the servo
-/// helpers of issue 6, the simulator's input signals.
+/// Every device method that runs a shell command: the K2 helpers, the servo helpers, the
+/// simulator's input signals.
 pub static BRIDGE: &[Bridge] = &[
     // Any device.
     row("read", "", "read"),

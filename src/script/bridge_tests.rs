@@ -1,5 +1,4 @@
-//! One test per family of bridged helpers (issue 7 item 2: "every typed helper … reachable
-//! from Lua"): each method is called from Lua, and the table it returns is checked against
+//! One test per family of bridged helpers: each method is called from Lua, and the table it returns is checked against
 //! the simulator's state as Rust reads it (session reads, not the Lua side).
 
 use super::*;

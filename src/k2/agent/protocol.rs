@@ -1,4 +1,4 @@
-//! The helper mailbox protocol (issue 5): how plcsh reaches SM registers and PLC
+//! The helper mailbox protocol: how plcsh reaches SM registers and PLC
 //! instructions on a real K2, whose Modbus map covers only I, Q, M, AI, AQ and V
 //! (`../shared/spec/k2.md` §3). A small PLC-side helper program (`lib/k2_agent.il`) runs
 //! every scan and executes commands that plcsh leaves in a mailbox in V memory.

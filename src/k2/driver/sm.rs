@@ -1,5 +1,5 @@
-//! SM operands and PLC instructions on a wire K2, through the helper mailbox (issue 5,
-//! docs/agent.md) when the device has `agent=VB…`; without it they stay refused by the
+//! SM operands and PLC instructions on a wire K2, through the helper mailbox
+//! (docs/agent.md) when the device has `agent=VB…`; without it they stay refused by the
 //! Modbus map with a message naming the helper.
 //!
 //! Reads: the SM bytes the batch needs are fetched in runs of at most 64 bytes (one read

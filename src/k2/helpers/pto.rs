@@ -423,7 +423,7 @@ mod tests {
         assert!(plan_pwm(k205(), 0, 1000, 2000, true).unwrap().notes[0].contains("100 %"));
     }
 
-    /// Issue 30: cycle × the channel's frequency limit wrapped in a release build
+    /// Cycle × the channel's frequency limit wrapped in a release build
     /// (368 934 881 474 192 µs read as "0 Hz is above Q0.0's limit") and panicked with
     /// overflow checks (`cycle=122222h`); a cycle that long is refused by the register.
     #[test]

@@ -128,7 +128,7 @@ mod tests {
         }
     }
 
-    /// Issue 30: the helper compared words as signed INTs, so a start of 32768 or more (or a
+    /// The helper compared words as signed INTs, so a start of 32768 or more (or a
     /// start + length that went negative) passed every check and the copy loop stopped the
     /// CPU with "bad indirect address"; start 100 with length 16#AAAA was acked done.
     #[test]

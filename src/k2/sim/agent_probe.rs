@@ -1,4 +1,4 @@
-//! The helper program's promises, checked on the program the PLC runs (issue 30): a
+//! The helper program's promises, checked on the program the PLC runs: a
 //! simulated K2 executing `lib/k2_agent.il` in its scan engine, driven one scan at a time,
 //! with every scan checked against the protocol. Its checks: the CPU stays in RUN, the
 //! heartbeat moves once per scan, a waiting request is acknowledged in that scan with the
@@ -423,8 +423,8 @@ mod tests {
         eprintln!("100 000 requests in {:?}; results {seen:?}", start.elapsed());
     }
 
-    /// The probe fails the helper that compared words as signed INTs (the program before
-    /// issue 30): the same checks without the guards for words of 32768 and more.
+    /// The probe fails the helper that compared words as signed INTs (the program as it was
+    /// before the fix): the same checks without the guards for words of 32768 and more.
     #[test]
     fn the_probe_catches_a_helper_that_reads_large_words_as_negative() {
         let il = crate::k2::agent::il::program(p::DEFAULT_BASE);

@@ -1,4 +1,4 @@
-//! `agent status`: is the PLC-side helper program there, current and running (issue 5)?
+//! `agent status`: is the PLC-side helper program there, current and running?
 
 use super::k2cmd;
 use super::CommandSpec;

@@ -318,7 +318,7 @@ fn profile(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let pr = hp::plan_profile(model, ch, at, &list, force, backup).map_err(|e| e.device(&name))?;
     let tl = hp::timeline(&pr.table, pr.base_ms);
     if plan_only {
-        // Frequency over time, drawn before anything is sent (issue 8: "see the ramp").
+        // Frequency over time, drawn before anything is sent.
         let mut points: Vec<(f64, f64)> = tl.points.iter().map(|p| (p.start_us as f64 / 1e6, p.freq_hz)).collect();
         if let Some(last) = tl.points.last() {
             points.push((last.end_us as f64 / 1e6, last.freq_hz));
