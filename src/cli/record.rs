@@ -43,15 +43,10 @@ pub fn show(cmd: &RecordCmd, style: Style, out: &mut dyn Write) -> i32 {
         Ok(r) => r,
         Err(e) => return fail(out, style, "record show", &e),
     };
-    if let Some(why) = &rec.truncated {
-        eprintln!(
-            "plcsh: warning: {} ends early ({why}); showing the {} frames before",
-            path.display(),
-            rec.frames.len()
-        );
-    }
+    warn(&rec, path, "showing");
     match show::write(&rec, style.json, out) {
-        Ok(()) => 0,
+        // A damaged file is shown whole but exits 1: frames were lost.
+        Ok(()) => i32::from(!rec.damaged.is_empty()),
         Err(e) => {
             eprintln!("plcsh: {e}");
             1
@@ -84,9 +79,7 @@ pub fn replay(
             .hint("choose the simulated model with --sim-model and its starting state with --snapshot"));
         }
         let rec = file::read(&args.file)?;
-        if let Some(why) = &rec.truncated {
-            eprintln!("plcsh: warning: {} ends early ({why}); replaying the frames before", args.file.display());
-        }
+        warn(&rec, &args.file, "replaying");
         replay::check_not_empty(&rec, &args.file)?;
         let snapshot = args.snapshot.as_deref().map(crate::snapshot::locate).transpose()?;
         replay::run(&rec, &replay::Target { model: args.sim_model.clone(), snapshot, bench: bench.map(Into::into) })
@@ -104,7 +97,7 @@ pub fn replay(
                 writeln!(
                     out,
                     "{}",
-                    serde_json::json!({ "ok": report.differences.is_empty(), "requests": report.requests,
+                    serde_json::json!({ "ok": report.differences.is_empty() && !report.damaged, "damaged": report.damaged, "requests": report.requests,
                     "differences": report.differences.len(), "skipped": report.skipped })
                 )
             })
@@ -127,5 +120,30 @@ pub fn replay(
         eprintln!("plcsh: {e}");
         return 1;
     }
-    i32::from(!report.differences.is_empty())
+    i32::from(!report.differences.is_empty() || report.damaged)
+}
+
+/// Says on stderr what of a file could not be read (damage skipped, an early end) and what
+/// a capture missed.
+fn warn(rec: &file::Recording, path: &std::path::Path, doing: &str) {
+    for d in &rec.damaged {
+        eprintln!("plcsh: warning: {}: {d}", path.display());
+    }
+    if !rec.damaged.is_empty() {
+        eprintln!(
+            "plcsh: warning: {}: {doing} the {} frames read around the damage; exit status 1",
+            path.display(),
+            rec.frames.len()
+        );
+    }
+    if let Some(why) = &rec.truncated {
+        eprintln!(
+            "plcsh: warning: {} ends early ({why}); {doing} the {} frames before",
+            path.display(),
+            rec.frames.len()
+        );
+    }
+    for n in &rec.notes {
+        eprintln!("plcsh: note: {}: {n}", path.display());
+    }
 }

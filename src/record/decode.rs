@@ -296,16 +296,32 @@ pub fn servo(bytes: &[u8]) -> Decoded {
 pub fn all(links: &[LinkInfo], frames: &[Frame]) -> Vec<Decoded> {
     let spaces: Vec<K2Space> = links.iter().map(|l| K2Space::new(model_of(l))).collect();
     let mut asked: Vec<Option<Asked>> = vec![None; links.len()];
+    // Modbus TCP clients may send several requests before the replies: a reply answers the
+    // request with its transaction id (the MBAP's first word), among the last few.
+    let mut by_tid: Vec<Vec<(u16, Asked)>> = vec![Vec::new(); links.len()];
     frames
         .iter()
         .map(|f| {
             let l = &links[f.link];
+            let tid = (l.proto == Proto::ModbusTcp && f.bytes.len() >= 2)
+                .then(|| u16::from_be_bytes([f.bytes[0], f.bytes[1]]));
             match l.proto {
                 Proto::ModbusTcp | Proto::ModbusRtu | Proto::RtuOverTcp => match modbus_pdu(l.proto, &f.bytes) {
                     Ok((unit, pdu)) => {
-                        let (d, q) = modbus(&spaces[f.link], unit, pdu, f.dir, asked[f.link]);
+                        let pending = &mut by_tid[f.link];
+                        let before = match (f.dir, tid) {
+                            (Dir::Received, Some(t)) => pending.iter().rev().find(|(k, _)| *k == t).map(|(_, q)| *q),
+                            _ => None,
+                        };
+                        let (d, q) = modbus(&spaces[f.link], unit, pdu, f.dir, before.or(asked[f.link]));
                         if f.dir == Dir::Sent {
                             asked[f.link] = q;
+                            if let (Some(t), Some(q)) = (tid, q) {
+                                if pending.len() >= 16 {
+                                    pending.remove(0);
+                                }
+                                pending.push((t, q));
+                            }
                         }
                         d
                     }

@@ -17,10 +17,13 @@
 //! `epb_flags` (inbound = from the device) and the session's virtual time in a comment
 //! `plcsh vt_us=N`.
 
+pub mod container;
 pub mod decode;
 pub mod file;
 pub mod framing;
+pub mod layers;
 pub mod packet;
+pub mod reassembly;
 pub mod replay;
 pub mod show;
 

@@ -95,6 +95,8 @@ pub struct Report {
     pub differences: Vec<Difference>,
     /// Links not replayed, and why.
     pub skipped: Vec<String>,
+    /// The file had damaged regions skipped: frames in them were not replayed.
+    pub damaged: bool,
 }
 
 /// A request and its reply: indices into the recording's frames.
@@ -121,7 +123,7 @@ fn exchanges(frames: &[Frame], link: usize) -> Vec<(usize, Option<usize>)> {
 
 /// Replays every link of `rec`.
 pub fn run(rec: &Recording, target: &Target) -> Result<Report> {
-    let mut report = Report::default();
+    let mut report = Report { damaged: !rec.damaged.is_empty(), ..Default::default() };
     match &target.bench {
         Some(path) => {
             // One machine on one clock: every link's exchanges in recorded order.
