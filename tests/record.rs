@@ -633,3 +633,162 @@ fn a_capture_plcsh_cannot_read_is_refused_naming_the_packet_and_what_to_try() {
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("no TCP payload"), "{}", stderr(&o));
 }
+
+/// The directory holding the plcsh binary the tests run.
+fn bin_dir() -> PathBuf {
+    Path::new(env!("CARGO_BIN_EXE_plcsh")).parent().unwrap().to_path_buf()
+}
+
+/// Records one session per protocol in `dir` under the names docs/recording.md uses.
+fn record_each_protocol(dir: &Path) {
+    let run = |file: &str, args: &[&str]| {
+        let o = plcsh()
+            .current_dir(dir)
+            .args(["--time", "stepped", "--record", file])
+            .args(args)
+            .stdin(Stdio::null())
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{file}: {}{}", stdout(&o), stderr(&o));
+    };
+    run("servo.pcapng", &["-c", "get servo:statusword; set servo:target_velocity=-100; get servo:target_velocity"]);
+    run("umpk.pcapng", &["-d", "lab=sim-umpk:UMPK16", "-c", "umpk info; get lab:I0"]);
+    run("fx.pcapng", &["-d", "fx=sim-fx:FX2N", "-c", "use fx; set D100=1234, M500=1; get D100"]);
+    run("fxlink.pcapng", &["-d", "fx=sim-fx:FX2N?protocol=link", "-c", "use fx; set D100=7; get D100 M1"]);
+}
+
+/// tshark (not our code) with the Lua dissector `lua`: the fields of every packet.
+fn dissect(tshark: &str, dir: &Path, lua: &str, file: &str, fields: &[&str]) -> Vec<Vec<String>> {
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("lib/wireshark").join(lua);
+    let mut c = Command::new(tshark);
+    c.current_dir(dir).arg("-X").arg(format!("lua_script:{}", script.display())).args(["-r", file, "-T", "fields"]);
+    for f in fields {
+        c.args(["-e", f]);
+    }
+    let o = c.output().unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(!stderr(&o).contains("Lua Error") && !stdout(&o).contains("Lua Error"), "{}{}", stderr(&o), stdout(&o));
+    stdout(&o).lines().map(|l| l.split('\t').map(str::to_string).collect()).collect()
+}
+
+/// Each protocol has its own link type, and the Lua dissectors in lib/wireshark decode what
+/// plcsh recorded: tshark shows the servo's object and value, UMPK's command and packet
+/// length, the FX frames' command, address and sum check.
+#[test]
+fn tshark_decodes_servo_umpk_and_fx_recordings_with_the_lua_dissectors() {
+    let Some(tshark) = tshark() else { return };
+    let dir = tmp("dissectors");
+    std::fs::create_dir_all(&dir).unwrap();
+    record_each_protocol(&dir);
+    // Link types, as tshark reads them from the interface descriptions.
+    for (file, want) in
+        [("servo.pcapng", "149"), ("umpk.pcapng", "150"), ("fx.pcapng", "151"), ("fxlink.pcapng", "152")]
+    {
+        let o = Command::new(tshark)
+            .current_dir(&dir)
+            .args(["-r", file, "-T", "fields", "-e", "frame.encap_type"])
+            .output()
+            .unwrap();
+        let wtap = stdout(&o);
+        // Wireshark numbers its encapsulations itself: USER0 is 45, so USERn is 45 + n.
+        let n: u32 = want.parse::<u32>().unwrap() - 147;
+        assert!(wtap.lines().all(|l| l.trim() == (45 + n).to_string()), "{file}: {wtap}");
+    }
+    let servo = dissect(
+        tshark,
+        &dir,
+        "kinco_servo.lua",
+        "servo.pcapng",
+        &[
+            "kinco_servo.direction",
+            "kinco_servo.func",
+            "kinco_servo.object",
+            "kinco_servo.value",
+            "kinco_servo.checksum.status",
+        ],
+    );
+    let row = |v: &[&str]| v.iter().map(|s| s.to_string()).collect::<Vec<String>>();
+    assert_eq!(servo[0], row(&["0", "0x40", "6041.00", "", "good"]), "{servo:?}");
+    assert!(servo.contains(&row(&["0", "0x23", "60FF.00", "4294967196", "good"])), "-100 as 32 bits: {servo:?}");
+    assert!(servo.contains(&row(&["1", "0x43", "60FF.00", "4294967196", "good"])), "{servo:?}");
+    assert_eq!(servo.len(), 6);
+    let umpk = dissect(
+        tshark,
+        &dir,
+        "umpk.lua",
+        "umpk.pcapng",
+        &["umpk.direction", "umpk.command", "umpk.length", "umpk.checksum.status"],
+    );
+    // ?03FD (controller info), then its echo and the 6-byte #06… packet.
+    assert_eq!(umpk[0], row(&["0", "0x03", "", "good"]), "{umpk:?}");
+    assert_eq!(umpk[1], row(&["1", "0x03", "6", "good,good"]), "{umpk:?}");
+    assert!(umpk.contains(&row(&["0", "0x05", "", "good"])), "input states: {umpk:?}");
+    let fx = dissect(
+        tshark,
+        &dir,
+        "fx.lua",
+        "fx.pcapng",
+        &["fx_port.command", "fx_port.address", "fx_port.count", "fx_port.sum.status"],
+    );
+    // D100 is byte address 0x1000 + 2·100 (seed 004); M500 is forced at 0x09F4, sent F409.
+    assert!(fx.contains(&row(&["1 (write)", "0x10c8", "2", "good"])), "{fx:?}");
+    assert!(fx.contains(&row(&["7 (force on)", "0x09f4", "", "good"])), "{fx:?}");
+    assert!(fx.contains(&row(&["0 (read)", "0x10c8", "2", "good"])), "{fx:?}");
+    let link = dissect(
+        tshark,
+        &dir,
+        "fx.lua",
+        "fxlink.pcapng",
+        &["fx_link.command", "fx_link.device", "fx_link.count", "fx_link.data", "fx_link.sum.status"],
+    );
+    assert!(link.contains(&row(&["WW (write words)", "D0100", "1", "0007", "good"])), "{link:?}");
+    assert!(link.contains(&row(&["BR (read bits)", "M0001", "1", "", "good"])), "{link:?}");
+    assert!(link.contains(&row(&["", "", "", "0007", "good"])), "the WR reply: {link:?}");
+    // A damaged servo checksum is reported bad.
+    let mut bytes = std::fs::read(dir.join("servo.pcapng")).unwrap();
+    let at = bytes.windows(4).position(|w| w == [0x40, 0x41, 0x60, 0x00]).unwrap() + 7;
+    bytes[at] ^= 0xFF;
+    std::fs::write(dir.join("bad.pcapng"), &bytes).unwrap();
+    let bad = dissect(tshark, &dir, "kinco_servo.lua", "bad.pcapng", &["kinco_servo.checksum.status"]);
+    assert_eq!(bad[0], row(&["bad"]), "{bad:?}");
+}
+
+/// Every `plcsh` and `tshark -r` line in docs/recording.md's sh blocks runs as written, on
+/// recordings made under the names it uses (the live capture line is run by
+/// `a_tshark_capture_on_loopback_reads_like_a_recording`, on a port of its own).
+#[test]
+fn the_recording_docs_examples_run() {
+    let Some(_) = tshark() else { return };
+    let dir = tmp("docs");
+    std::fs::create_dir_all(&dir).unwrap();
+    record_each_protocol(&dir);
+    let _ = std::os::unix::fs::symlink(Path::new(env!("CARGO_MANIFEST_DIR")).join("lib"), dir.join("lib"));
+    // rtu.pcapng: an RTU session; field.pcapng: a capture of Modbus TCP (a recording reads the same).
+    let link = dir.join("rtu-link");
+    let served = serve(&["--rtu-pty", link.to_str().unwrap()]);
+    record(&dir.join("rtu.pcapng"), &format!("plc=rtu:{}?model=K205-16DT", link.display()), "get VW0");
+    drop(served);
+    let served = serve(&["--tcp", "127.0.0.1:0"]);
+    record(&dir.join("field.pcapng"), &format!("plc=tcp://{}?model=K205-16DT", tcp_addr(&served)), "get VW0");
+    drop(served);
+    let doc = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/recording.md")).unwrap();
+    let mut in_sh = false;
+    let mut ran = 0;
+    let path = format!("{}:{}", bin_dir().display(), std::env::var("PATH").unwrap_or_default());
+    for line in doc.lines() {
+        if line.starts_with("```") {
+            in_sh = line == "```sh";
+            continue;
+        }
+        let cmd = line.split("  #").next().unwrap().trim();
+        if !in_sh || cmd.is_empty() || cmd.contains(" -i ") {
+            continue;
+        }
+        let o = Command::new("sh").current_dir(&dir).env("PATH", &path).args(["-c", cmd]).output().unwrap();
+        assert!(o.status.success(), "{cmd}: {}{}", stdout(&o), stderr(&o));
+        assert!(!stdout(&o).trim().is_empty(), "{cmd} printed nothing");
+        assert!(!stdout(&o).contains("Lua Error"), "{cmd}: {}", stdout(&o));
+        ran += 1;
+    }
+    assert!(ran >= 6, "{ran} examples");
+}

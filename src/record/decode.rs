@@ -328,10 +328,39 @@ pub fn all(links: &[LinkInfo], frames: &[Frame]) -> Vec<Decoded> {
                     Err(e) => Decoded { text: format!("malformed: {e}"), error: Some(e), ..Default::default() },
                 },
                 Proto::KincoServo => servo(&f.bytes),
+                Proto::Umpk | Proto::FxPort | Proto::FxLink => {
+                    Decoded { text: format!("{} bytes: {}", f.bytes.len(), ascii(&f.bytes)), ..Default::default() }
+                }
                 Proto::Unknown => Decoded { text: format!("{} bytes", f.bytes.len()), ..Default::default() },
             }
         })
         .collect()
+}
+
+/// The text of an ASCII protocol's frame, control characters named (`<STX>0 00A0 02<ETX>…`).
+pub fn ascii(b: &[u8]) -> String {
+    const NAMES: [(u8, &str); 8] = [
+        (0x02, "STX"),
+        (0x03, "ETX"),
+        (0x05, "ENQ"),
+        (0x06, "ACK"),
+        (0x15, "NAK"),
+        (0x0D, "CR"),
+        (0x0A, "LF"),
+        (0xAA, "AA"),
+    ];
+    let mut out = String::with_capacity(b.len());
+    for &c in b.iter().take(256) {
+        match NAMES.iter().find(|(k, _)| *k == c) {
+            Some((_, n)) => out.push_str(&format!("<{n}>")),
+            None if (0x20..0x7F).contains(&c) => out.push(char::from(c)),
+            None => out.push_str(&format!("<{c:02X}>")),
+        }
+    }
+    if b.len() > 256 {
+        out.push('…');
+    }
+    out
 }
 
 /// The K2 model a link's URL names (`model=`), else the default for its scheme.

@@ -37,7 +37,10 @@ pub fn frame_end(proto: Proto, request: bool, buf: &[u8]) -> Option<usize> {
             };
             (buf.len() >= n).then_some(n)
         }
-        // Requests are written whole; servo and undeclared frames arrive whole.
+        // UMPK replies come in pieces of unknown shape (echo, CR LF, monitor packets): kept
+        // until the next command.
+        Proto::Umpk if !request => None,
+        // Requests are written whole; servo, FX and undeclared frames arrive whole.
         _ => Some(buf.len()),
     }
 }

@@ -245,7 +245,7 @@ impl Inner {
             let names: Vec<&str> =
                 self.names.iter().filter(|(u, _)| url_on_link(u, link)).map(|(_, n)| n.as_str()).collect();
             let name = if names.is_empty() { link.to_string() } else { names.join(",") };
-            let linktype = if proto == Proto::ModbusTcp { DataLink::ETHERNET } else { DataLink::USER0 };
+            let linktype = DataLink::from(packet::linktype(proto));
             let idb = InterfaceDescriptionBlock {
                 linktype,
                 snaplen: 0xFFFF,

@@ -7,19 +7,38 @@
 //!   address is in the interface description); sequence and acknowledgement numbers follow
 //!   the bytes sent, with a handshake when a connection opens and FINs when it closes, and
 //!   the IPv4 and TCP checksums are correct.
-//! - Every other link (Modbus RTU, RTU over TCP, Kinco servo RS232, undeclared) is recorded
-//!   under LINKTYPE_USER0 (147) with a 4-byte header before the frame bytes:
-//!   `[direction, protocol, 0, 0]`, direction 0 = sent by plcsh, 1 = received; protocol
-//!   1 = Modbus RTU, 2 = Modbus RTU over TCP, 3 = Kinco servo RS232, 0 = undeclared.
+//! - Every other link is recorded under a LINKTYPE_USERn of its own ([`PROTO_LINKTYPES`]:
+//!   USER0 Modbus RTU, USER1 RTU over TCP, USER2 Kinco servo RS232, USER3 UMPK, USER4 FX
+//!   programming port, USER5 FX computer link, USER15 undeclared), so Wireshark hands each to
+//!   its own dissector (lib/wireshark/), with a 4-byte header before the frame bytes:
+//!   `[direction, protocol, 0, 0]`, direction 0 = sent by plcsh, 1 = received; the protocol
+//!   codes of [`proto_code`].
 
 use crate::core::trace::{Dir, Proto};
 
 /// LINKTYPE_USER0.
 pub const LINKTYPE_USER0: u32 = 147;
 /// The USER link type each protocol is written with (docs/recording.md).
-pub const PROTO_LINKTYPES: &[(Proto, u32)] = &[(Proto::ModbusRtu, LINKTYPE_USER0)];
+/// Wireshark tells them apart by link type: each gets its own dissector (lib/wireshark/).
+pub const PROTO_LINKTYPES: &[(Proto, u32)] = &[
+    (Proto::ModbusRtu, LINKTYPE_USER0),
+    (Proto::RtuOverTcp, LINKTYPE_USER0 + 1),
+    (Proto::KincoServo, LINKTYPE_USER0 + 2),
+    (Proto::Umpk, LINKTYPE_USER0 + 3),
+    (Proto::FxPort, LINKTYPE_USER0 + 4),
+    (Proto::FxLink, LINKTYPE_USER0 + 5),
+    (Proto::Unknown, LINKTYPE_USER0 + 15),
+];
 
-/// Length of the USER0 per-packet header.
+/// The link type frames of `p` are written with: Ethernet for Modbus TCP, else its USER type.
+pub fn linktype(p: Proto) -> u32 {
+    if p == Proto::ModbusTcp {
+        return 1;
+    }
+    PROTO_LINKTYPES.iter().find(|(q, _)| *q == p).map_or(LINKTYPE_USER0 + 15, |(_, t)| *t)
+}
+
+/// Length of the USER per-packet header.
 pub const USER_HEADER: usize = 4;
 /// The Modbus/TCP port every synthetic device listens on.
 pub const MODBUS_PORT: u16 = 502;
@@ -45,6 +64,9 @@ pub fn proto_code(p: Proto) -> u8 {
         Proto::RtuOverTcp => 2,
         Proto::KincoServo => 3,
         Proto::ModbusTcp => 4,
+        Proto::Umpk => 5,
+        Proto::FxPort => 6,
+        Proto::FxLink => 7,
     }
 }
 
@@ -54,6 +76,9 @@ pub fn proto_of_code(c: u8) -> Proto {
         2 => Proto::RtuOverTcp,
         3 => Proto::KincoServo,
         4 => Proto::ModbusTcp,
+        5 => Proto::Umpk,
+        6 => Proto::FxPort,
+        7 => Proto::FxLink,
         _ => Proto::Unknown,
     }
 }
@@ -66,17 +91,28 @@ pub fn proto_name(p: Proto) -> &'static str {
         Proto::ModbusRtu => "modbus-rtu",
         Proto::RtuOverTcp => "modbus-rtu-over-tcp",
         Proto::KincoServo => "kinco-servo",
+        Proto::Umpk => "umpk",
+        Proto::FxPort => "fx-port",
+        Proto::FxLink => "fx-link",
     }
 }
 
 pub fn proto_of_name(s: &str) -> Proto {
-    [Proto::ModbusTcp, Proto::ModbusRtu, Proto::RtuOverTcp, Proto::KincoServo]
-        .into_iter()
-        .find(|p| proto_name(*p) == s)
-        .unwrap_or(Proto::Unknown)
+    [
+        Proto::ModbusTcp,
+        Proto::ModbusRtu,
+        Proto::RtuOverTcp,
+        Proto::KincoServo,
+        Proto::Umpk,
+        Proto::FxPort,
+        Proto::FxLink,
+    ]
+    .into_iter()
+    .find(|p| proto_name(*p) == s)
+    .unwrap_or(Proto::Unknown)
 }
 
-/// A USER0 packet: the header, then the frame.
+/// A USER packet: the header, then the frame.
 pub fn user_packet(dir: Dir, proto: Proto, frame: &[u8]) -> Vec<u8> {
     let mut p = Vec::with_capacity(USER_HEADER + frame.len());
     user_packet_into(&mut p, dir, proto, frame);

@@ -193,6 +193,14 @@ fn replay_link(
             };
             servo_link(rec, ex, link, &sims, report);
         }
+        Proto::Umpk | Proto::FxPort | Proto::FxLink => skip(
+            report,
+            format!(
+                "{}: {} frames (replay covers Modbus and servo links)",
+                link.name,
+                super::packet::proto_name(link.proto)
+            ),
+        ),
         Proto::Unknown => skip(report, format!("{}: frames of an undeclared protocol", link.name)),
     }
     Ok(())
