@@ -382,7 +382,10 @@ fn a_tshark_capture_on_loopback_reads_like_a_recording() {
             let mut line = String::new();
             use std::io::BufRead;
             if err.read_line(&mut line).unwrap() == 0 {
-                panic!("tshark ended: {said}");
+                // No permission to capture (not root, dumpcap without capabilities).
+                assert!(std::env::var_os("CI").is_none(), "tshark cannot capture on {iface}: {said}");
+                eprintln!("tshark cannot capture on {iface}: skipping the live capture ({said})");
+                return;
             }
             said.push_str(&line);
             if line.contains("Capturing on") {
