@@ -795,3 +795,58 @@ fn the_recording_docs_examples_run() {
     }
     assert!(ran >= 6, "{ran} examples");
 }
+
+/// Offsets of the Enhanced Packet Blocks of a little-endian pcapng file.
+fn epb_offsets(b: &[u8]) -> Vec<usize> {
+    let mut out = Vec::new();
+    let mut at = 0;
+    while at + 8 <= b.len() {
+        let word = |i: usize| u32::from_le_bytes([b[i], b[i + 1], b[i + 2], b[i + 3]]);
+        if word(at) == 6 {
+            out.push(at);
+        }
+        at += (word(at + 4) as usize).max(12);
+    }
+    out
+}
+
+/// A recording damaged in the middle (a block's length overwritten) is read around the
+/// damage: the warning names the byte offsets, every frame after it is shown, and the exit
+/// status is 1 — for `record show` and for `replay`, which replays the rest.
+#[test]
+fn damage_in_the_middle_of_a_recording_is_named_and_the_frames_after_it_are_kept() {
+    let file = tmp("damaged.pcapng");
+    let o = plcsh()
+        .args(["--time", "stepped", "--record", file.to_str().unwrap(), "-c"])
+        .arg("get servo:statusword; get servo:position_actual; get servo:target_velocity; get servo:statusword")
+        .stdin(Stdio::null())
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    let mut bytes = std::fs::read(&file).unwrap();
+    let epbs = epb_offsets(&bytes);
+    assert_eq!(epbs.len(), 8);
+    let whole = json_lines(&plcsh().args(["--json", "record", "show", file.to_str().unwrap()]).output().unwrap());
+    // The third packet's block length: 0xFFFF (past the end of the file).
+    let at = epbs[2];
+    bytes[at + 4..at + 8].copy_from_slice(&0xFFFFu32.to_le_bytes());
+    std::fs::write(&file, &bytes).unwrap();
+    let o = plcsh().args(["--json", "record", "show", file.to_str().unwrap()]).output().unwrap();
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    let e = stderr(&o);
+    assert!(
+        e.contains(&format!("bytes {at}…{} ", epbs[3] - 1)) && e.contains(&format!("block at offset {}", epbs[3])),
+        "{e}"
+    );
+    assert!(e.contains("block length 65535"), "{e}");
+    let l = json_lines(&o);
+    let hex = |v: &[serde_json::Value]| v.iter().map(|x| x["hex"].as_str().unwrap().to_string()).collect::<Vec<_>>();
+    let mut want = hex(&whole);
+    want.remove(2);
+    assert_eq!(hex(&l), want, "every frame but the damaged one");
+    let o = plcsh().args(["--json", "replay", file.to_str().unwrap()]).output().unwrap();
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    let last = json_lines(&o).pop().unwrap();
+    assert_eq!((last["damaged"].as_bool(), last["ok"].as_bool()), (Some(true), Some(false)), "{last}");
+    assert!(stderr(&o).contains(&format!("bytes {at}…")), "{}", stderr(&o));
+}

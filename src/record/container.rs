@@ -303,7 +303,11 @@ fn pcap_record(bytes: &[u8], pos: usize, e: Endian, frac_max: u32) -> Option<usi
     let frac = e.u32(bytes, pos + 4)?;
     let incl = e.u32(bytes, pos + 8)?;
     let orig = e.u32(bytes, pos + 12)?;
-    (frac < frac_max && incl <= MAX_RECORD && incl <= orig && bytes.len() - pos - 16 >= incl as usize)
+    (frac < frac_max
+        && incl <= MAX_RECORD
+        && incl <= orig
+        && orig <= MAX_RECORD
+        && bytes.len() - pos - 16 >= incl as usize)
         .then_some(incl as usize)
 }
 
@@ -366,6 +370,78 @@ fn pcap(bytes: &[u8]) -> Result<Capture<'_>, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A pcapng block of type `t` around `body` (little-endian).
+    fn block(t: u32, body: &[u8]) -> Vec<u8> {
+        let total = (body.len() + 12) as u32;
+        [&t.to_le_bytes()[..], &total.to_le_bytes(), body, &total.to_le_bytes()].concat()
+    }
+
+    fn epb(n: u8) -> Vec<u8> {
+        let mut b = vec![0; 12];
+        b.extend_from_slice(&4u32.to_le_bytes());
+        b.extend_from_slice(&4u32.to_le_bytes());
+        b.extend_from_slice(&[n, n, n, n]);
+        block(6, &b)
+    }
+
+    fn file(packets: u8) -> Vec<u8> {
+        let mut f = block(SHB, &[0x4D, 0x3C, 0x2B, 0x1A, 1, 0, 0, 0, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF]);
+        f.extend_from_slice(&block(1, &[147, 0, 0, 0, 0, 0, 0, 0]));
+        for n in 0..packets {
+            f.extend_from_slice(&epb(n));
+        }
+        f
+    }
+
+    #[test]
+    fn damage_mid_file_is_skipped_naming_its_offsets_and_the_blocks_after_it_are_kept() {
+        let f = file(5);
+        let second = 28 + 20 + 36; // SHB, IDB, first EPB
+        let firsts = |c: &Capture<'_>| c.packets.iter().map(|p| p.data[0]).collect::<Vec<u8>>();
+        // A length field overwritten.
+        let mut bad = f.clone();
+        bad[second + 4..second + 8].copy_from_slice(&0x7777u32.to_le_bytes());
+        let c = parse(&bad).unwrap();
+        assert_eq!(firsts(&c), vec![0, 2, 3, 4], "{:?}", c.damaged);
+        assert_eq!(c.damaged.len(), 1);
+        assert!(c.damaged[0].starts_with(&format!("bytes {second}…{} (36 bytes)", second + 35)), "{}", c.damaged[0]);
+        assert!(
+            c.damaged[0].contains("block length 30583") && c.damaged[0].contains(&format!("offset {}", second + 36))
+        );
+        assert_eq!(c.truncated, None);
+        // Junk inserted between two blocks (not a multiple of 4), and a trailing length changed.
+        let mut bad = f[..second].to_vec();
+        bad.extend_from_slice(b"garbage");
+        bad.extend_from_slice(&f[second..]);
+        let end = bad.len();
+        bad[end - 4] = 0x99;
+        let c = parse(&bad).unwrap();
+        assert_eq!(firsts(&c), vec![0, 1, 2, 3], "{:?}", c.damaged);
+        assert!(c.damaged[0].contains("unknown block type"), "{:?}", c.damaged);
+        assert!(
+            c.truncated.as_deref().is_some_and(|t| t.contains(&format!("offset {}", end - 36))),
+            "{:?}",
+            c.truncated
+        );
+    }
+
+    #[test]
+    fn damaged_pcap_records_are_skipped_too() {
+        let mut f = vec![0xD4, 0xC3, 0xB2, 0xA1, 2, 0, 4, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 4, 0, 1, 0, 0, 0];
+        for n in 0..4u8 {
+            f.extend_from_slice(&[1, 0, 0, 0, 0, 0, 0, 0, 3, 0, 0, 0, 3, 0, 0, 0, n, n, n]);
+        }
+        let mut bad = f.clone();
+        bad[24 + 19 + 8] = 0xEE; // the second record's captured length
+        let c = parse(&bad).unwrap();
+        let firsts: Vec<u8> = c.packets.iter().map(|p| p.data[0]).collect();
+        assert_eq!(firsts, vec![0, 2, 3], "{:?}", c.damaged);
+        assert!(c.damaged[0].starts_with("bytes 43…61 (19 bytes)"), "{:?}", c.damaged);
+        let c = parse(&f[..f.len() - 1]).unwrap();
+        assert_eq!((c.packets.len(), c.damaged.len()), (3, 0));
+        assert!(c.truncated.is_some());
+    }
 
     #[test]
     fn timestamp_resolutions_convert_to_nanoseconds() {
