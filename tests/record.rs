@@ -774,6 +774,10 @@ fn the_recording_docs_examples_run() {
     let served = serve(&["--tcp", "127.0.0.1:0"]);
     record(&dir.join("field.pcapng"), &format!("plc=tcp://{}?model=K205-16DT", tcp_addr(&served)), "get VW0");
     drop(served);
+    let served = serve(&["--agent", "--tcp", "127.0.0.1:0"]);
+    let url = format!("plc=tcp://{}?model=K205-16DT&agent=VB3400", tcp_addr(&served));
+    record(&dir.join("helper.pcapng"), &url, "set SMB67=16#85, SMW68=500; get SMB67 SMW68");
+    drop(served);
     let doc = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/recording.md")).unwrap();
     let mut in_sh = false;
     let mut ran = 0;
@@ -849,4 +853,34 @@ fn damage_in_the_middle_of_a_recording_is_named_and_the_frames_after_it_are_kept
     let last = json_lines(&o).pop().unwrap();
     assert_eq!((last["damaged"].as_bool(), last["ok"].as_bool()), (Some(true), Some(false)), "{last}");
     assert!(stderr(&o).contains(&format!("bytes {at}…")), "{}", stderr(&o));
+}
+
+/// A session through the PLC-side helper (SM registers, PLS) replays clean: the replay runs
+/// the helper program in the simulated K2, at the mailbox base the recording shows, scan for
+/// scan as the recorded heartbeat counts them.
+#[test]
+fn a_session_through_the_plc_side_helper_replays_without_difference() {
+    for base in ["VB3400", "VB2000"] {
+        let served = serve(&["--agent", base, "--tcp", "127.0.0.1:0"]);
+        let url = format!("plc=tcp://{}?model=K205-16DT&agent={base}", tcp_addr(&served));
+        let file = tmp(&format!("helper-{base}.pcapng"));
+        let o = record(&file, &url, "set SMB67=16#85, SMW68=500, SMD72=1000; pls 0; get SMB67 SMW68 SMD72 VW0; rtc set 2026-11-22T10:00:00; rtc");
+        assert!(stdout(&o).contains("SMB67"), "{}", stdout(&o));
+        drop(served);
+        let o = plcsh().args(["--json", "replay", file.to_str().unwrap()]).output().unwrap();
+        let l = json_lines(&o);
+        let summary = l.last().unwrap();
+        assert_eq!(summary["differences"], 0, "{base}: {}", stdout(&o));
+        assert!(summary["requests"].as_u64().unwrap() > 10, "{summary}");
+        assert!(o.status.success());
+        // The helper is what answers: without it (another base named) the mailbox reads differ.
+        let o = plcsh().args(["--json", "replay", file.to_str().unwrap(), "--agent", "VB1000"]).output().unwrap();
+        assert_eq!(o.status.code(), Some(1), "{}", stdout(&o));
+        let diffs: Vec<serde_json::Value> =
+            json_lines(&o).into_iter().filter_map(|v| v.get("difference").cloned()).collect();
+        assert!(
+            diffs.iter().any(|d| d["detail"].as_str().unwrap().contains("recorded 19265, replayed 0")),
+            "{diffs:?}"
+        );
+    }
 }

@@ -26,6 +26,10 @@ pub struct ReplayArgs {
     /// Start the simulated K2 from this snapshot (a file, or a name saved with `sim snapshot save`).
     #[arg(long, value_name = "NAME|FILE")]
     pub snapshot: Option<String>,
+    /// Run the PLC-side helper (lib/k2_agent.il) with its mailbox at this V address. Without it,
+    /// the helper runs when the recording shows its status block being read.
+    #[arg(long, value_name = "VBn")]
+    pub agent: Option<String>,
 }
 
 fn fail(out: &mut dyn Write, style: Style, cmd: &str, e: &crate::core::Error) -> i32 {
@@ -82,7 +86,16 @@ pub fn replay(
         warn(&rec, &args.file, "replaying");
         replay::check_not_empty(&rec, &args.file)?;
         let snapshot = args.snapshot.as_deref().map(crate::snapshot::locate).transpose()?;
-        replay::run(&rec, &replay::Target { model: args.sim_model.clone(), snapshot, bench: bench.map(Into::into) })
+        let agent = args
+            .agent
+            .as_deref()
+            .map(crate::k2::agent::protocol::parse_base)
+            .transpose()
+            .map_err(crate::core::Error::usage)?;
+        replay::run(
+            &rec,
+            &replay::Target { model: args.sim_model.clone(), snapshot, bench: bench.map(Into::into), agent },
+        )
     };
     let report = match run() {
         Ok(r) => r,

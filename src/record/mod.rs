@@ -21,6 +21,7 @@ pub mod container;
 pub mod decode;
 pub mod file;
 pub mod framing;
+pub mod helper;
 pub mod layers;
 pub mod packet;
 pub mod reassembly;

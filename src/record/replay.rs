@@ -24,6 +24,7 @@
 
 use super::decode::{self, Asked};
 use super::file::{Frame, LinkInfo, Recording};
+use super::helper::Helper;
 use crate::core::trace::{hex_bytes, Dir, Proto};
 use crate::core::{Clock, Error, Result};
 use crate::k2::modbus_map;
@@ -44,6 +45,8 @@ pub struct Target {
     pub snapshot: Option<std::path::PathBuf>,
     /// A bench file whose machine answers instead of fresh simulators.
     pub bench: Option<std::path::PathBuf>,
+    /// The helper program's mailbox base (a V byte), when the recording does not show it.
+    pub agent: Option<u32>,
 }
 
 /// The simulators a link is replayed against, and the clock they run on.
@@ -178,7 +181,7 @@ fn replay_link(
                 },
                 None => fresh_k2(link, target)?,
             };
-            modbus_link(rec, ex, link, &sims, report);
+            modbus_link(rec, ex, link, &sims, target, bench.is_none(), report);
         }
         Proto::KincoServo => {
             let sims = match bench {
@@ -240,20 +243,52 @@ fn fresh_line(rec: &Recording, li: usize) -> Sims {
     Sims { base: clock.now(), vt0: None, clock, k2: None, line: Some(Arc::new(Mutex::new(line))) }
 }
 
-fn modbus_link(rec: &Recording, ex: &[Exchange], link: &LinkInfo, sims: &Sims, report: &mut Report) {
+fn modbus_link(
+    rec: &Recording,
+    ex: &[Exchange],
+    link: &LinkInfo,
+    sims: &Sims,
+    target: &Target,
+    heartbeat_clock: bool,
+    report: &mut Report,
+) {
     let sim = sims.k2.clone().expect("a K2 for a Modbus link");
     let model = sim.lock().unwrap_or_else(|p| p.into_inner()).model();
     let (clock, base) = (&sims.clock, sims.base);
     let space = K2Space::new(model);
     let vt0 = sims.vt0.or_else(|| ex.first().and_then(|(q, _)| rec.frames[*q].vt));
+    let pdu_of = |i: usize| decode::modbus_pdu(link.proto, &rec.frames[i].bytes).ok().map(|(_, p)| p.to_vec());
+    let pairs: Vec<(Vec<u8>, Option<Vec<u8>>)> =
+        ex.iter().filter_map(|&(q, r)| Some((pdu_of(q)?, r.and_then(pdu_of)))).collect();
+    let mut helper = Helper::detect(&space, &pairs, target.agent);
+    if let Some(h) = &helper {
+        let mut s = sim.lock().unwrap_or_else(|p| p.into_inner());
+        if s.agent_base.is_none() {
+            if let Err(e) = s.enable_agent(h.vbyte) {
+                report.skipped.push(format!("{}: the helper program cannot run: {e}", link.name));
+                helper = None;
+            }
+        }
+    }
     let mut service: Option<K2Service> = None;
     for &(q, r) in ex {
         let req = &rec.frames[q];
         report.requests += 1;
         let Ok((unit, pdu)) = decode::modbus_pdu(link.proto, &req.bytes) else { continue };
         let service = service.get_or_insert_with(|| K2Service::new(sim.clone(), unit));
-        if let (Some(t0), Some(t)) = (vt0, req.vt) {
-            step_to(clock, base + t.saturating_sub(t0));
+        let recorded_pdu = r.and_then(pdu_of);
+        match helper.as_mut() {
+            // With the helper the clock follows the PLC's scans (see `super::helper`).
+            Some(h) if heartbeat_clock => {
+                if let Some(n) = h.scans_before(&space, pdu, recorded_pdu.as_deref()) {
+                    h.catch_up(&mut sim.lock().unwrap_or_else(|p| p.into_inner()), clock, n);
+                }
+            }
+            _ => {
+                if let (Some(t0), Some(t)) = (vt0, req.vt) {
+                    step_to(clock, base + t.saturating_sub(t0));
+                }
+            }
         }
         // The simulator's RTU framing decodes the request, whatever transport carried it.
         let mut adu = Vec::with_capacity(pdu.len() + 3);
@@ -270,9 +305,10 @@ fn modbus_link(rec: &Recording, ex: &[Exchange], link: &LinkInfo, sims: &Sims, r
             None => None,
         };
         // Compare PDUs (unit … CRC and MBAP framing are transport matters).
-        let replayed_pdu = replayed.as_ref().map(|b| b[1..b.len() - 2].to_vec());
-        let recorded_pdu =
-            r.and_then(|r| decode::modbus_pdu(link.proto, &rec.frames[r].bytes).ok().map(|(_, p)| p.to_vec()));
+        let mut replayed_pdu = replayed.as_ref().map(|b| b[1..b.len() - 2].to_vec());
+        if let (Some(h), Some(p)) = (helper.as_mut(), replayed_pdu.as_mut()) {
+            h.match_heartbeat(&space, pdu, recorded_pdu.as_deref(), p);
+        }
         if replayed_pdu == recorded_pdu {
             continue;
         }
