@@ -349,10 +349,16 @@ fn stderr(o: &std::process::Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
 }
 
-/// Kills (SIGINT) a capture started by a test, waiting for it to write its file out.
-fn stop_capture(mut child: std::process::Child) {
-    let _ = nix::sys::signal::kill(nix::unistd::Pid::from_raw(child.id() as i32), nix::sys::signal::Signal::SIGINT);
-    let _ = child.wait();
+/// A capture started by a test: stopped (SIGINT, then waited for, so it writes its file out)
+/// when dropped, on every path.
+struct Capturing(std::process::Child);
+
+impl Drop for Capturing {
+    fn drop(&mut self) {
+        let _ =
+            nix::sys::signal::kill(nix::unistd::Pid::from_raw(self.0.id() as i32), nix::sys::signal::Signal::SIGINT);
+        let _ = self.0.wait();
+    }
 }
 
 /// A capture of a plcsh session taken by tshark on the loopback interface — plcsh did not
@@ -368,15 +374,17 @@ fn a_tshark_capture_on_loopback_reads_like_a_recording() {
     for iface in ["lo", "any"] {
         let file = tmp(&format!("field-{iface}.pcapng"));
         // `-w -`: written to standard output, packet by packet (a file is written in blocks).
-        let mut cap = Command::new(tshark)
-            .args(["-i", iface, "-f", &format!("tcp port {port}"), "-w", "-"])
-            .stdin(Stdio::null())
-            .stdout(std::fs::File::create(&file).unwrap())
-            .stderr(Stdio::piped())
-            .spawn()
-            .unwrap();
+        let mut cap = Capturing(
+            Command::new(tshark)
+                .args(["-i", iface, "-f", &format!("tcp port {port}"), "-w", "-"])
+                .stdin(Stdio::null())
+                .stdout(std::fs::File::create(&file).unwrap())
+                .stderr(Stdio::piped())
+                .spawn()
+                .unwrap(),
+        );
         // Ready when tshark says it is capturing.
-        let mut err = std::io::BufReader::new(cap.stderr.take().unwrap());
+        let mut err = std::io::BufReader::new(cap.0.stderr.take().unwrap());
         let mut said = String::new();
         loop {
             let mut line = String::new();
@@ -417,7 +425,7 @@ fn a_tshark_capture_on_loopback_reads_like_a_recording() {
             }
             std::thread::sleep(std::time::Duration::from_millis(50));
         };
-        stop_capture(cap);
+        drop(cap);
         assert!(shown.status.success(), "{}", stderr(&shown));
         let l = json_lines(&shown);
         let sent: Vec<(u64, String)> = l

@@ -147,7 +147,7 @@ fn plausible(bytes: &[u8], pos: usize, e: Endian) -> Option<(u32, usize, Endian)
     };
     let t = e.u32(bytes, pos)?;
     let total = e.u32(bytes, pos + 4)? as usize;
-    if !KNOWN.contains(&t) || total < 12 || total % 4 != 0 || bytes.len() - pos < total {
+    if !KNOWN.contains(&t) || total < 12 || !total.is_multiple_of(4) || bytes.len() - pos < total {
         return None;
     }
     (e.u32(bytes, pos + total - 4)? as usize == total).then_some((t, total, e))
@@ -205,7 +205,7 @@ fn header_fault(bytes: &[u8], pos: usize, e: Endian) -> String {
     let total = total as usize;
     if !KNOWN.contains(&t) && LE.u32(bytes, pos) != Some(SHB) {
         format!("unknown block type {t:#010X}")
-    } else if total < 12 || total % 4 != 0 {
+    } else if total < 12 || !total.is_multiple_of(4) {
         format!("block length {total} is not a multiple of 4 of at least 12")
     } else if total > left {
         format!("block length {total} but {left} bytes left")
