@@ -18,6 +18,7 @@ use super::packet::{self, parse_user};
 use super::reassembly::Stream;
 use crate::core::trace::{Dir, Proto};
 use crate::core::{Error, Result};
+use std::collections::HashMap;
 use std::net::{IpAddr, SocketAddr};
 use std::path::Path;
 use std::time::Duration;
@@ -95,14 +96,17 @@ struct Conn {
 struct Reader {
     rec: Recording,
     /// Server endpoints seen, with their links (a handful: searched linearly).
-    servers: Vec<(SocketAddr, usize)>,
+    servers: HashMap<SocketAddr, usize>,
     conns: Vec<(SocketAddr, SocketAddr, Conn)>,
+    /// Each connection's index in `conns`, by its two ends (the smaller first).
+    by_ends: HashMap<(SocketAddr, SocketAddr), usize>,
 }
 
 /// Parses a capture's bytes (pcapng or pcap).
 pub fn parse(bytes: &[u8]) -> std::result::Result<Recording, String> {
     let cap = container::parse(bytes)?;
-    let mut r = Reader { rec: Recording::default(), servers: Vec::new(), conns: Vec::new() };
+    let mut r =
+        Reader { rec: Recording::default(), servers: HashMap::new(), conns: Vec::new(), by_ends: HashMap::new() };
     r.rec.truncated = cap.truncated.clone();
     r.rec.damaged = cap.damaged.clone();
     let kinds: Vec<Kind> = cap.interfaces.iter().map(|i| r.interface(i)).collect();
@@ -190,7 +194,7 @@ impl Reader {
 
     /// The link of a foreign server endpoint, made on first sight.
     fn server_link(&mut self, server: SocketAddr, first: &[u8]) -> usize {
-        if let Some((_, l)) = self.servers.iter().find(|(s, _)| *s == server) {
+        if let Some(l) = self.servers.get(&server) {
             return *l;
         }
         let mbap = first.len() >= 7 && first[2..4] == [0, 0];
@@ -206,7 +210,7 @@ impl Reader {
         let name = format!("{host}:{}", server.port());
         let scheme = if proto == Proto::RtuOverTcp { "rtu-tcp" } else { "tcp" };
         self.rec.links.push(LinkInfo { link: format!("{scheme}://{name}"), name, proto });
-        self.servers.push((server, self.rec.links.len() - 1));
+        self.servers.insert(server, self.rec.links.len() - 1);
         self.rec.links.len() - 1
     }
 
@@ -221,7 +225,8 @@ impl Reader {
         let src = SocketAddr::new(t.src, t.sport);
         let dst = SocketAddr::new(t.dst, t.dport);
         // The connection, either way round.
-        let found = self.conns.iter().position(|(a, b, _)| (*a == src && *b == dst) || (*a == dst && *b == src));
+        let ends = if src < dst { (src, dst) } else { (dst, src) };
+        let found = self.by_ends.get(&ends).copied();
         let syn = t.flags & layers::TCP_SYN != 0;
         let ci = match found {
             Some(ci) if !(syn && t.flags & layers::TCP_ACK == 0) => ci,
@@ -230,7 +235,7 @@ impl Reader {
                 if t.payload.is_empty() && !syn {
                     return;
                 }
-                let known = |s: &SocketAddr| self.servers.iter().any(|(k, _)| k == s);
+                let known = |s: &SocketAddr| self.servers.contains_key(s);
                 let to_server = match flags_dir {
                     Some(d) => d == Dir::Sent,
                     None if t.dport == packet::MODBUS_PORT && t.sport != packet::MODBUS_PORT => true,
@@ -254,6 +259,7 @@ impl Reader {
                     }
                     None => {
                         self.conns.push((client, server, conn));
+                        self.by_ends.insert(ends, self.conns.len() - 1);
                         self.conns.len() - 1
                     }
                 }

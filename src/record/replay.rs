@@ -106,10 +106,11 @@ pub struct Report {
 type Exchange = (usize, Option<usize>);
 
 /// Pairs each request with the reply that followed it on its link (if any before the next
-/// request): `(request index, reply index)` into `frames`.
-fn exchanges(frames: &[Frame], link: usize) -> Vec<(usize, Option<usize>)> {
+/// request): `(request index, reply index)` into `frames`; `of_link` are the indices of
+/// the link's frames, in order.
+fn exchanges(frames: &[Frame], of_link: &[usize]) -> Vec<(usize, Option<usize>)> {
     let mut out: Vec<(usize, Option<usize>)> = Vec::new();
-    for (i, f) in frames.iter().enumerate().filter(|(_, f)| f.link == link) {
+    for (i, f) in of_link.iter().map(|&i| (i, &frames[i])) {
         match f.dir {
             Dir::Sent => out.push((i, None)),
             Dir::Received => {
@@ -127,12 +128,19 @@ fn exchanges(frames: &[Frame], link: usize) -> Vec<(usize, Option<usize>)> {
 /// Replays every link of `rec`.
 pub fn run(rec: &Recording, target: &Target) -> Result<Report> {
     let mut report = Report { damaged: !rec.damaged.is_empty(), ..Default::default() };
+    // Each link's frames, in one pass (a capture may hold many links).
+    let mut of_link: Vec<Vec<usize>> = vec![Vec::new(); rec.links.len()];
+    for (i, f) in rec.frames.iter().enumerate() {
+        if let Some(v) = of_link.get_mut(f.link) {
+            v.push(i);
+        }
+    }
     match &target.bench {
         Some(path) => {
             // One machine on one clock: every link's exchanges in recorded order.
             let bench = bench_sims(rec, path)?;
             let mut all: Vec<(usize, Exchange)> = (0..rec.links.len())
-                .flat_map(|li| exchanges(&rec.frames, li).into_iter().map(move |e| (li, e)))
+                .flat_map(|li| exchanges(&rec.frames, &of_link[li]).into_iter().map(move |e| (li, e)))
                 .collect();
             all.sort_by_key(|(_, (q, _))| *q);
             let mut warned = vec![false; rec.links.len()];
@@ -143,8 +151,8 @@ pub fn run(rec: &Recording, target: &Target) -> Result<Report> {
             }
         }
         None => {
-            for li in 0..rec.links.len() {
-                let ex = exchanges(&rec.frames, li);
+            for (li, frames) in of_link.iter().enumerate() {
+                let ex = exchanges(&rec.frames, frames);
                 replay_link(rec, li, &ex, None, target, &mut report, &mut false)?;
             }
         }
@@ -192,7 +200,7 @@ fn replay_link(
                         return Ok(());
                     }
                 },
-                None => fresh_line(rec, li),
+                None => fresh_line(rec, ex),
             };
             servo_link(rec, ex, link, &sims, report);
         }
@@ -233,9 +241,8 @@ fn fresh_k2(link: &LinkInfo, target: &Target) -> Result<Sims> {
 }
 
 /// A fresh servo line with the drive ids a servo link addressed.
-fn fresh_line(rec: &Recording, li: usize) -> Sims {
-    let mut ids: Vec<u8> =
-        exchanges(&rec.frames, li).iter().filter_map(|(q, _)| rec.frames[*q].bytes.first().copied()).collect();
+fn fresh_line(rec: &Recording, ex: &[Exchange]) -> Sims {
+    let mut ids: Vec<u8> = ex.iter().filter_map(|(q, _)| rec.frames[*q].bytes.first().copied()).collect();
     ids.sort_unstable();
     ids.dedup();
     let clock = Clock::stepped();
