@@ -892,3 +892,18 @@ fn a_session_through_the_plc_side_helper_replays_without_difference() {
         );
     }
 }
+
+/// A capture taken with a small snap length keeps what it kept, and says so.
+#[test]
+fn packets_cut_by_the_snap_length_are_noted() {
+    let mut packets = field_packets(false, &[], true);
+    let last = packets.last_mut().unwrap();
+    last.truncate(last.len() - 3);
+    let f = tmp("snaplen.pcap");
+    std::fs::write(&f, capture::pcap(101, &packets)).unwrap();
+    let o = plcsh().args(["record", "show", f.to_str().unwrap()]).output().unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(stderr(&o).contains("1 packets were cut short by the capture's snap length"), "{}", stderr(&o));
+    assert!(stdout(&o).contains("FC3 reply, 2 bytes (VW0): 1234"), "the whole first reply: {}", stdout(&o));
+    assert!(stdout(&o).contains("malformed"), "the cut second reply: {}", stdout(&o));
+}

@@ -100,13 +100,20 @@ struct Reader {
     conns: Vec<(SocketAddr, SocketAddr, Conn)>,
     /// Each connection's index in `conns`, by its two ends (the smaller first).
     by_ends: HashMap<(SocketAddr, SocketAddr), usize>,
+    /// Packets the capture's snap length cut short.
+    cut: usize,
 }
 
 /// Parses a capture's bytes (pcapng or pcap).
 pub fn parse(bytes: &[u8]) -> std::result::Result<Recording, String> {
     let cap = container::parse(bytes)?;
-    let mut r =
-        Reader { rec: Recording::default(), servers: HashMap::new(), conns: Vec::new(), by_ends: HashMap::new() };
+    let mut r = Reader {
+        rec: Recording::default(),
+        servers: HashMap::new(),
+        conns: Vec::new(),
+        by_ends: HashMap::new(),
+        cut: 0,
+    };
     r.rec.truncated = cap.truncated.clone();
     r.rec.damaged = cap.damaged.clone();
     let kinds: Vec<Kind> = cap.interfaces.iter().map(|i| r.interface(i)).collect();
@@ -139,12 +146,19 @@ pub fn parse(bytes: &[u8]) -> std::result::Result<Recording, String> {
             ref k => {
                 let own = if let Kind::Link(l) = k { Some(*l) } else { None };
                 if let Some(Layers::Tcp(t)) = layers::tcp(lt, p.data) {
+                    r.cut += usize::from(t.cut);
                     r.segment(&t, own, flags_dir, p.ts, vt);
                 }
             }
         }
     }
     r.finish();
+    if r.cut > 0 {
+        r.rec.notes.push(format!(
+            "{} packets were cut short by the capture's snap length: frames in them are incomplete (capture again without -s, or with -s 0)",
+            r.cut
+        ));
+    }
     if r.rec.frames.is_empty() && !cap.packets.is_empty() && kinds.iter().any(|k| matches!(k, Kind::Ip)) {
         return Err(format!(
             "its {} packets carry no TCP payload (no Modbus TCP traffic was captured)",

@@ -42,6 +42,9 @@ pub struct Tcp<'a> {
     pub seq: u32,
     pub flags: u8,
     pub payload: &'a [u8],
+    /// The capture kept less than the IP packet held (its snap length): `payload` is the
+    /// part kept.
+    pub cut: bool,
 }
 
 /// What a packet holds.
@@ -91,28 +94,27 @@ fn ethernet(p: &[u8]) -> Option<&[u8]> {
 }
 
 fn ip_tcp(ip: &[u8]) -> Option<Tcp<'_>> {
-    let (src, dst, seg) = match ip.first()? >> 4 {
+    let (src, dst, seg, cut) = match ip.first()? >> 4 {
         4 => {
             let ihl = usize::from(ip[0] & 0x0F) * 4;
             let total = usize::from(be16(ip, 2)?);
             // Total length 0: segmentation offload, the packet runs to the capture's end.
             let end = if total == 0 { ip.len() } else { total };
             let frag = be16(ip, 6)?;
-            if ihl < 20 || *ip.get(9)? != 6 || frag & 0x3FFF != 0 || end < ihl || ip.len() < end {
+            if ihl < 20 || *ip.get(9)? != 6 || frag & 0x3FFF != 0 || end < ihl {
                 return None;
             }
+            let (end, cut) = if ip.len() < end { (ip.len(), true) } else { (end, false) };
             let a = |at: usize| -> Option<IpAddr> {
                 let o: [u8; 4] = ip.get(at..at + 4)?.try_into().ok()?;
                 Some(IpAddr::from(o))
             };
-            (a(12)?, a(16)?, &ip[ihl..end])
+            (a(12)?, a(16)?, ip.get(ihl..end)?, cut)
         }
         6 => {
             let plen = usize::from(be16(ip, 4)?);
             let end = 40usize.checked_add(plen)?;
-            if ip.len() < end {
-                return None;
-            }
+            let (end, cut) = if ip.len() < end { (ip.len(), true) } else { (end, false) };
             let a = |at: usize| -> Option<IpAddr> {
                 let o: [u8; 16] = ip.get(at..at + 16)?.try_into().ok()?;
                 Some(IpAddr::from(o))
@@ -137,7 +139,7 @@ fn ip_tcp(ip: &[u8]) -> Option<Tcp<'_>> {
             if next != 6 || at > end {
                 return None;
             }
-            (a(8)?, a(24)?, &ip[at..end])
+            (a(8)?, a(24)?, ip.get(at..end)?, cut)
         }
         _ => return None,
     };
@@ -153,6 +155,7 @@ fn ip_tcp(ip: &[u8]) -> Option<Tcp<'_>> {
         seq: u32::from_be_bytes(seg.get(4..8)?.try_into().ok()?),
         flags: seg[13],
         payload: &seg[off..],
+        cut,
     })
 }
 
@@ -187,6 +190,9 @@ mod tests {
             assert_eq!((t.sport, t.dport, t.seq, t.payload), (40000, 5020, 7, &b"abc"[..]), "link type {lt}");
         }
         assert_eq!(tcp(105, &ip), None, "802.11 is not read");
+        // Cut by a snap length: the part kept, marked.
+        let Some(Layers::Tcp(t)) = tcp(101, &ip[..ip.len() - 1]) else { panic!() };
+        assert_eq!((t.payload, t.cut), (&b"ab"[..], true));
     }
 
     #[test]
