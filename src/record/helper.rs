@@ -122,19 +122,22 @@ impl Helper {
     pub fn catch_up(&mut self, sim: &mut crate::k2::sim::K2Sim, clock: &crate::core::Clock, scans: u64) {
         let heartbeat = |s: &crate::k2::sim::K2Sim| crate::k2::sim::agent::v_word(s, self.vbyte + 4);
         sim.advance();
-        let mut guard = 0;
+        let mut steps = 0;
+        let mut limit = None;
         loop {
             let hb = heartbeat(sim);
             let (prev, total) = *self.replayed.get_or_insert((hb, 0));
             let total = total + u64::from(hb.wrapping_sub(prev));
             self.replayed = Some((hb, total));
-            // A PLC that stopped scanning never catches up: bounded.
-            if total >= scans || guard > 4 * (scans - total) + 16 {
+            // A helper that stopped counting never catches up: at most four scan times per
+            // missing scan.
+            let limit = *limit.get_or_insert(4 * scans.saturating_sub(total) + 16);
+            if total >= scans || steps >= limit {
                 return;
             }
             clock.step(crate::k2::sim::SCAN_TIME);
             sim.advance();
-            guard += 1;
+            steps += 1;
         }
     }
 }
@@ -183,5 +186,22 @@ mod tests {
         // A read of other registers leaves the clock alone.
         assert_eq!(h.scans_before(&space, &[3, 0, 100, 0, 1], Some(&[3, 2, 0, 0])), None);
         assert!(Helper::detect(&space, &[(q, Some(vec![3, 2, 0, 0]))], None).is_none());
+    }
+
+    #[test]
+    fn the_simulated_plc_catches_up_every_scan_however_many() {
+        let clock = crate::core::Clock::stepped();
+        let mut sim = crate::k2::sim::open("K205-16DT", clock.clone()).unwrap();
+        sim.enable_agent(3400).unwrap();
+        let space = K2Space::new(sim.model());
+        let mut h = Helper::detect(&space, &[], Some(3400)).unwrap();
+        h.catch_up(&mut sim, &clock, 0);
+        let (start, _) = h.replayed.unwrap();
+        for target in [1, 2, 500, 501, 70_000] {
+            h.catch_up(&mut sim, &clock, target);
+            let hb = crate::k2::sim::agent::v_word(&sim, 3404);
+            assert_eq!(u64::from(hb.wrapping_sub(start)), target % 65536, "{target}");
+            assert_eq!(h.replayed.unwrap().1, target);
+        }
     }
 }
