@@ -96,7 +96,12 @@ impl Helper {
         let h = *words(recorded?).get(i)?;
         let scans = match self.recorded {
             None => 0,
-            Some((prev, total)) => total + u64::from(h.wrapping_sub(prev)),
+            // A heartbeat that went back (by half its range or more) is a PLC that restarted:
+            // no scans to run for it (the replay then differs there).
+            Some((prev, total)) => {
+                let d = h.wrapping_sub(prev);
+                total + if d < 0x8000 { u64::from(d) } else { 0 }
+            }
         };
         self.recorded = Some((h, scans));
         Some(scans)
