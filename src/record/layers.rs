@@ -112,6 +112,9 @@ fn ip_tcp(ip: &[u8]) -> Option<Tcp<'_>> {
             (a(12)?, a(16)?, ip.get(ihl..end)?, cut)
         }
         6 => {
+            if ip.len() < 40 {
+                return None;
+            }
             let plen = usize::from(be16(ip, 4)?);
             let end = 40usize.checked_add(plen)?;
             let (end, cut) = if ip.len() < end { (ip.len(), true) } else { (end, false) };
@@ -119,7 +122,7 @@ fn ip_tcp(ip: &[u8]) -> Option<Tcp<'_>> {
                 let o: [u8; 16] = ip.get(at..at + 16)?.try_into().ok()?;
                 Some(IpAddr::from(o))
             };
-            let (mut next, mut at) = (ip[6], 40);
+            let (mut next, mut at) = (*ip.get(6)?, 40);
             // Extension headers: hop-by-hop, routing, destination options, authentication.
             for _ in 0..8 {
                 match next {
