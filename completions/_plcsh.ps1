@@ -342,6 +342,7 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
         'plcsh;replay' {
             [CompletionResult]::new('--sim-model', '--sim-model', [CompletionResultType]::ParameterName, 'Simulate this K2 model instead of the one each recorded link names')
             [CompletionResult]::new('--snapshot', '--snapshot', [CompletionResultType]::ParameterName, 'Start the simulated K2 from this snapshot (a file, or a name saved with `sim snapshot save`)')
+            [CompletionResult]::new('--agent', '--agent', [CompletionResultType]::ParameterName, 'Run the PLC-side helper (lib/k2_agent.il) with its mailbox at this V address. Without it, the helper runs when the recording shows its status block being read')
             [CompletionResult]::new('--model', '--model', [CompletionResultType]::ParameterName, 'Model of the default simulated PLC')
             [CompletionResult]::new('-d', '-d', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
             [CompletionResult]::new('--device', '--device', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')

@@ -861,7 +861,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__replay)
-            opts="-v -d -h --sim-model --snapshot --json --verbose --model --device --time --config --state --record --bench --read-only --help"
+            opts="-v -d -h --sim-model --snapshot --agent --json --verbose --model --device --time --config --state --record --bench --read-only --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -872,6 +872,10 @@ _plcsh() {
                     return 0
                     ;;
                 --snapshot)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --agent)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;

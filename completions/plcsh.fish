@@ -248,6 +248,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subc
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l sim-model -d 'Simulate this K2 model instead of the one each recorded link names' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l snapshot -d 'Start the simulated K2 from this snapshot (a file, or a name saved with `sim snapshot save`)' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l agent -d 'Run the PLC-side helper (lib/k2_agent.il) with its mailbox at this V address. Without it, the helper runs when the recording shows its status block being read' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'

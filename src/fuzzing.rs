@@ -384,7 +384,8 @@ pub fn umpk_hex(data: &[u8]) {
     }
 }
 
-/// A pcapng recording as `plcsh record show` reads it: parsed, then every frame decoded.
+/// A capture as `plcsh record show` reads it (pcapng or pcap, plcsh's own or another tool's,
+/// damaged or not): parsed, reassembled, then every frame decoded.
 pub fn pcapng(data: &[u8]) {
     if let Ok(rec) = crate::record::file::parse(data) {
         let _ = crate::record::decode::all(&rec.links, &rec.frames);

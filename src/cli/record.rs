@@ -26,6 +26,10 @@ pub struct ReplayArgs {
     /// Start the simulated K2 from this snapshot (a file, or a name saved with `sim snapshot save`).
     #[arg(long, value_name = "NAME|FILE")]
     pub snapshot: Option<String>,
+    /// Run the PLC-side helper (lib/k2_agent.il) with its mailbox at this V address. Without it,
+    /// the helper runs when the recording shows its status block being read.
+    #[arg(long, value_name = "VBn")]
+    pub agent: Option<String>,
 }
 
 fn fail(out: &mut dyn Write, style: Style, cmd: &str, e: &crate::core::Error) -> i32 {
@@ -43,15 +47,10 @@ pub fn show(cmd: &RecordCmd, style: Style, out: &mut dyn Write) -> i32 {
         Ok(r) => r,
         Err(e) => return fail(out, style, "record show", &e),
     };
-    if let Some(why) = &rec.truncated {
-        eprintln!(
-            "plcsh: warning: {} ends early ({why}); showing the {} frames before",
-            path.display(),
-            rec.frames.len()
-        );
-    }
+    warn(&rec, path, "showing");
     match show::write(&rec, style.json, out) {
-        Ok(()) => 0,
+        // A damaged file is shown whole but exits 1: frames were lost.
+        Ok(()) => i32::from(!rec.damaged.is_empty()),
         Err(e) => {
             eprintln!("plcsh: {e}");
             1
@@ -84,12 +83,19 @@ pub fn replay(
             .hint("choose the simulated model with --sim-model and its starting state with --snapshot"));
         }
         let rec = file::read(&args.file)?;
-        if let Some(why) = &rec.truncated {
-            eprintln!("plcsh: warning: {} ends early ({why}); replaying the frames before", args.file.display());
-        }
+        warn(&rec, &args.file, "replaying");
         replay::check_not_empty(&rec, &args.file)?;
         let snapshot = args.snapshot.as_deref().map(crate::snapshot::locate).transpose()?;
-        replay::run(&rec, &replay::Target { model: args.sim_model.clone(), snapshot, bench: bench.map(Into::into) })
+        let agent = args
+            .agent
+            .as_deref()
+            .map(crate::k2::agent::protocol::parse_base)
+            .transpose()
+            .map_err(crate::core::Error::usage)?;
+        replay::run(
+            &rec,
+            &replay::Target { model: args.sim_model.clone(), snapshot, bench: bench.map(Into::into), agent },
+        )
     };
     let report = match run() {
         Ok(r) => r,
@@ -104,7 +110,7 @@ pub fn replay(
                 writeln!(
                     out,
                     "{}",
-                    serde_json::json!({ "ok": report.differences.is_empty(), "requests": report.requests,
+                    serde_json::json!({ "ok": report.differences.is_empty() && !report.damaged, "damaged": report.damaged, "requests": report.requests,
                     "differences": report.differences.len(), "skipped": report.skipped })
                 )
             })
@@ -127,5 +133,30 @@ pub fn replay(
         eprintln!("plcsh: {e}");
         return 1;
     }
-    i32::from(!report.differences.is_empty())
+    i32::from(!report.differences.is_empty() || report.damaged)
+}
+
+/// Says on stderr what of a file could not be read (damage skipped, an early end) and what
+/// a capture missed.
+fn warn(rec: &file::Recording, path: &std::path::Path, doing: &str) {
+    for d in &rec.damaged {
+        eprintln!("plcsh: warning: {}: {d}", path.display());
+    }
+    if !rec.damaged.is_empty() {
+        eprintln!(
+            "plcsh: warning: {}: {doing} the {} frames read around the damage; exit status 1",
+            path.display(),
+            rec.frames.len()
+        );
+    }
+    if let Some(why) = &rec.truncated {
+        eprintln!(
+            "plcsh: warning: {} ends early ({why}); {doing} the {} frames before",
+            path.display(),
+            rec.frames.len()
+        );
+    }
+    for n in &rec.notes {
+        eprintln!("plcsh: note: {}: {n}", path.display());
+    }
 }

@@ -31,6 +31,12 @@ pub enum Proto {
     RtuOverTcp,
     /// The Kinco servo drives' 10-byte RS232 frames.
     KincoServo,
+    /// The UMPK teaching PLC's terminal protocol (`?NNCC` commands, `#…` replies).
+    Umpk,
+    /// The FX programming-port protocol (ENQ, `STX cmd addr count … ETX sum`).
+    FxPort,
+    /// The FX dedicated computer-link protocol (`ENQ station pc cmd wait …`).
+    FxLink,
 }
 
 /// Receives every frame with its link's protocol, and connection boundaries.

@@ -50,7 +50,7 @@ use super::sim::{LinkServer, Plc, PortServer, Server, SimLink};
 use super::space::{FxSpace, Proto};
 use crate::core::link::line::{self as lines, SharedLine, Transport};
 use crate::core::link::serial::{Carrier, LineSettings, Parity};
-use crate::core::trace::{self, Dir};
+use crate::core::trace::{self, Dir, Proto as Wire};
 use crate::core::url::DeviceUrl;
 use crate::core::{Clock, Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
 use std::collections::HashMap;
@@ -453,7 +453,8 @@ impl Driver {
         let t = guard.as_mut();
         let gap = if resend { self.resend_gap(frame.len(), expect.chars()) } else { self.gap() };
         self.quiet(t, gap, gap + self.busy_limit(), what)?;
-        trace::frame(&line.name, Dir::Sent, frame);
+        let proto = if matches!(self.mode, Mode::Port { .. }) { Wire::FxPort } else { Wire::FxLink };
+        trace::frame_proto(&line.name, proto, Dir::Sent, frame);
         t.send(frame).map_err(|e| self.io_err(e))?;
         let timeout = self.timeout_for(frame.len(), expect.chars());
         let deadline = Instant::now() + timeout;
@@ -468,7 +469,12 @@ impl Driver {
         }
         .map_err(|e| self.io_err(e))?;
         if !heard.noise.is_empty() || !heard.frame.is_empty() {
-            trace::frame(&line.name, Dir::Received, &[heard.noise.as_slice(), heard.frame.as_slice()].concat());
+            trace::frame_proto(
+                &line.name,
+                proto,
+                Dir::Received,
+                &[heard.noise.as_slice(), heard.frame.as_slice()].concat(),
+            );
         }
         if heard.frame.is_empty() && heard.noise.is_empty() {
             let late = timeout.min(LATE_MAX);

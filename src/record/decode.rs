@@ -296,26 +296,71 @@ pub fn servo(bytes: &[u8]) -> Decoded {
 pub fn all(links: &[LinkInfo], frames: &[Frame]) -> Vec<Decoded> {
     let spaces: Vec<K2Space> = links.iter().map(|l| K2Space::new(model_of(l))).collect();
     let mut asked: Vec<Option<Asked>> = vec![None; links.len()];
+    // Modbus TCP clients may send several requests before the replies: a reply answers the
+    // request with its transaction id (the MBAP's first word), among the last few.
+    let mut by_tid: Vec<Vec<(u16, Asked)>> = vec![Vec::new(); links.len()];
     frames
         .iter()
         .map(|f| {
             let l = &links[f.link];
+            let tid = (l.proto == Proto::ModbusTcp && f.bytes.len() >= 2)
+                .then(|| u16::from_be_bytes([f.bytes[0], f.bytes[1]]));
             match l.proto {
                 Proto::ModbusTcp | Proto::ModbusRtu | Proto::RtuOverTcp => match modbus_pdu(l.proto, &f.bytes) {
                     Ok((unit, pdu)) => {
-                        let (d, q) = modbus(&spaces[f.link], unit, pdu, f.dir, asked[f.link]);
+                        let pending = &mut by_tid[f.link];
+                        let before = match (f.dir, tid) {
+                            (Dir::Received, Some(t)) => pending.iter().rev().find(|(k, _)| *k == t).map(|(_, q)| *q),
+                            _ => None,
+                        };
+                        let (d, q) = modbus(&spaces[f.link], unit, pdu, f.dir, before.or(asked[f.link]));
                         if f.dir == Dir::Sent {
                             asked[f.link] = q;
+                            if let (Some(t), Some(q)) = (tid, q) {
+                                if pending.len() >= 16 {
+                                    pending.remove(0);
+                                }
+                                pending.push((t, q));
+                            }
                         }
                         d
                     }
                     Err(e) => Decoded { text: format!("malformed: {e}"), error: Some(e), ..Default::default() },
                 },
                 Proto::KincoServo => servo(&f.bytes),
+                Proto::Umpk | Proto::FxPort | Proto::FxLink => {
+                    Decoded { text: format!("{} bytes: {}", f.bytes.len(), ascii(&f.bytes)), ..Default::default() }
+                }
                 Proto::Unknown => Decoded { text: format!("{} bytes", f.bytes.len()), ..Default::default() },
             }
         })
         .collect()
+}
+
+/// The text of an ASCII protocol's frame, control characters named (`<STX>0 00A0 02<ETX>…`).
+pub fn ascii(b: &[u8]) -> String {
+    const NAMES: [(u8, &str); 8] = [
+        (0x02, "STX"),
+        (0x03, "ETX"),
+        (0x05, "ENQ"),
+        (0x06, "ACK"),
+        (0x15, "NAK"),
+        (0x0D, "CR"),
+        (0x0A, "LF"),
+        (0xAA, "AA"),
+    ];
+    let mut out = String::with_capacity(b.len());
+    for &c in b.iter().take(256) {
+        match NAMES.iter().find(|(k, _)| *k == c) {
+            Some((_, n)) => out.push_str(&format!("<{n}>")),
+            None if (0x20..0x7F).contains(&c) => out.push(char::from(c)),
+            None => out.push_str(&format!("<{c:02X}>")),
+        }
+    }
+    if b.len() > 256 {
+        out.push('…');
+    }
+    out
 }
 
 /// The K2 model a link's URL names (`model=`), else the default for its scheme.

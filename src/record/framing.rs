@@ -37,7 +37,19 @@ pub fn frame_end(proto: Proto, request: bool, buf: &[u8]) -> Option<usize> {
             };
             (buf.len() >= n).then_some(n)
         }
-        // Requests are written whole; servo and undeclared frames arrive whole.
+        // UMPK replies (manual §4.1): with echo on they end in CR LF; a monitor packet is 30
+        // bytes from its 0xAA header; anything else (echo off: `R`, `#…CC`) is kept until the
+        // next command, or until 1 KiB has piled up.
+        Proto::Umpk if !request => {
+            if buf.first() == Some(&crate::umpk::codec::MONITOR_HEADER) {
+                return (buf.len() >= crate::umpk::codec::MONITOR_LEN).then_some(crate::umpk::codec::MONITOR_LEN);
+            }
+            match buf.windows(2).position(|w| w == b"\r\n") {
+                Some(at) => Some(at + 2),
+                None => (buf.len() >= 1024).then_some(buf.len()),
+            }
+        }
+        // Requests are written whole; servo, FX and undeclared frames arrive whole.
         _ => Some(buf.len()),
     }
 }
@@ -52,6 +64,19 @@ mod tests {
         assert_eq!(frame_end(Proto::ModbusTcp, false, &two), Some(11));
         assert_eq!(frame_end(Proto::ModbusTcp, false, &two[..9]), None, "half a frame waits");
         assert_eq!(frame_end(Proto::ModbusTcp, false, &[9, 9, 9, 9, 9, 9, 9, 9]), Some(8), "not Modbus: all");
+    }
+
+    #[test]
+    fn umpk_replies_end_at_cr_lf_or_a_whole_monitor_packet() {
+        assert_eq!(frame_end(Proto::Umpk, false, b"?03FD#06102910080001A8\r\n?0"), Some(24));
+        assert_eq!(frame_end(Proto::Umpk, false, b"?03FD#0610"), None, "wait for the rest");
+        let mut monitor = vec![0xAA; 31];
+        monitor[5] = b'\r';
+        monitor[6] = b'\n';
+        assert_eq!(frame_end(Proto::Umpk, false, &monitor), Some(30));
+        assert_eq!(frame_end(Proto::Umpk, false, &monitor[..29]), None);
+        assert_eq!(frame_end(Proto::Umpk, false, &[b'R'; 1024]), Some(1024));
+        assert_eq!(frame_end(Proto::Umpk, true, b"?05FB"), Some(5));
     }
 
     #[test]

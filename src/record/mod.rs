@@ -17,10 +17,14 @@
 //! `epb_flags` (inbound = from the device) and the session's virtual time in a comment
 //! `plcsh vt_us=N`.
 
+pub mod container;
 pub mod decode;
 pub mod file;
 pub mod framing;
+pub mod helper;
+pub mod layers;
 pub mod packet;
+pub mod reassembly;
 pub mod replay;
 pub mod show;
 
@@ -242,7 +246,7 @@ impl Inner {
             let names: Vec<&str> =
                 self.names.iter().filter(|(u, _)| url_on_link(u, link)).map(|(_, n)| n.as_str()).collect();
             let name = if names.is_empty() { link.to_string() } else { names.join(",") };
-            let linktype = if proto == Proto::ModbusTcp { DataLink::ETHERNET } else { DataLink::USER0 };
+            let linktype = DataLink::from(packet::linktype(proto));
             let idb = InterfaceDescriptionBlock {
                 linktype,
                 snaplen: 0xFFFF,

@@ -7,16 +7,38 @@
 //!   address is in the interface description); sequence and acknowledgement numbers follow
 //!   the bytes sent, with a handshake when a connection opens and FINs when it closes, and
 //!   the IPv4 and TCP checksums are correct.
-//! - Every other link (Modbus RTU, RTU over TCP, Kinco servo RS232, undeclared) is recorded
-//!   under LINKTYPE_USER0 (147) with a 4-byte header before the frame bytes:
-//!   `[direction, protocol, 0, 0]`, direction 0 = sent by plcsh, 1 = received; protocol
-//!   1 = Modbus RTU, 2 = Modbus RTU over TCP, 3 = Kinco servo RS232, 0 = undeclared.
+//! - Every other link is recorded under a LINKTYPE_USERn of its own ([`PROTO_LINKTYPES`]:
+//!   USER0 Modbus RTU, USER1 RTU over TCP, USER2 Kinco servo RS232, USER3 UMPK, USER4 FX
+//!   programming port, USER5 FX computer link, USER15 undeclared), so Wireshark hands each to
+//!   its own dissector (lib/wireshark/), with a 4-byte header before the frame bytes:
+//!   `[direction, protocol, 0, 0]`, direction 0 = sent by plcsh, 1 = received; the protocol
+//!   codes of [`proto_code`].
 
 use crate::core::trace::{Dir, Proto};
 
 /// LINKTYPE_USER0.
 pub const LINKTYPE_USER0: u32 = 147;
-/// Length of the USER0 per-packet header.
+/// The USER link type each protocol is written with (docs/recording.md).
+/// Wireshark tells them apart by link type: each gets its own dissector (lib/wireshark/).
+pub const PROTO_LINKTYPES: &[(Proto, u32)] = &[
+    (Proto::ModbusRtu, LINKTYPE_USER0),
+    (Proto::RtuOverTcp, LINKTYPE_USER0 + 1),
+    (Proto::KincoServo, LINKTYPE_USER0 + 2),
+    (Proto::Umpk, LINKTYPE_USER0 + 3),
+    (Proto::FxPort, LINKTYPE_USER0 + 4),
+    (Proto::FxLink, LINKTYPE_USER0 + 5),
+    (Proto::Unknown, LINKTYPE_USER0 + 15),
+];
+
+/// The link type frames of `p` are written with: Ethernet for Modbus TCP, else its USER type.
+pub fn linktype(p: Proto) -> u32 {
+    if p == Proto::ModbusTcp {
+        return 1;
+    }
+    PROTO_LINKTYPES.iter().find(|(q, _)| *q == p).map_or(LINKTYPE_USER0 + 15, |(_, t)| *t)
+}
+
+/// Length of the USER per-packet header.
 pub const USER_HEADER: usize = 4;
 /// The Modbus/TCP port every synthetic device listens on.
 pub const MODBUS_PORT: u16 = 502;
@@ -42,6 +64,9 @@ pub fn proto_code(p: Proto) -> u8 {
         Proto::RtuOverTcp => 2,
         Proto::KincoServo => 3,
         Proto::ModbusTcp => 4,
+        Proto::Umpk => 5,
+        Proto::FxPort => 6,
+        Proto::FxLink => 7,
     }
 }
 
@@ -51,6 +76,9 @@ pub fn proto_of_code(c: u8) -> Proto {
         2 => Proto::RtuOverTcp,
         3 => Proto::KincoServo,
         4 => Proto::ModbusTcp,
+        5 => Proto::Umpk,
+        6 => Proto::FxPort,
+        7 => Proto::FxLink,
         _ => Proto::Unknown,
     }
 }
@@ -63,17 +91,28 @@ pub fn proto_name(p: Proto) -> &'static str {
         Proto::ModbusRtu => "modbus-rtu",
         Proto::RtuOverTcp => "modbus-rtu-over-tcp",
         Proto::KincoServo => "kinco-servo",
+        Proto::Umpk => "umpk",
+        Proto::FxPort => "fx-port",
+        Proto::FxLink => "fx-link",
     }
 }
 
 pub fn proto_of_name(s: &str) -> Proto {
-    [Proto::ModbusTcp, Proto::ModbusRtu, Proto::RtuOverTcp, Proto::KincoServo]
-        .into_iter()
-        .find(|p| proto_name(*p) == s)
-        .unwrap_or(Proto::Unknown)
+    [
+        Proto::ModbusTcp,
+        Proto::ModbusRtu,
+        Proto::RtuOverTcp,
+        Proto::KincoServo,
+        Proto::Umpk,
+        Proto::FxPort,
+        Proto::FxLink,
+    ]
+    .into_iter()
+    .find(|p| proto_name(*p) == s)
+    .unwrap_or(Proto::Unknown)
 }
 
-/// A USER0 packet: the header, then the frame.
+/// A USER packet: the header, then the frame.
 pub fn user_packet(dir: Dir, proto: Proto, frame: &[u8]) -> Vec<u8> {
     let mut p = Vec::with_capacity(USER_HEADER + frame.len());
     user_packet_into(&mut p, dir, proto, frame);
@@ -85,6 +124,17 @@ pub fn user_packet_into(p: &mut Vec<u8>, dir: Dir, proto: Proto, frame: &[u8]) {
     p.clear();
     p.extend_from_slice(&[u8::from(dir == Dir::Received), proto_code(proto), 0, 0]);
     p.extend_from_slice(frame);
+}
+
+/// Is `linktype` one of LINKTYPE_USER0…USER15 (147…162)?
+pub fn is_user(linktype: u32) -> bool {
+    (LINKTYPE_USER0..LINKTYPE_USER0 + 16).contains(&linktype)
+}
+
+/// The protocol a USER link type stands for (docs/recording.md); USER0 also held every
+/// protocol in older recordings, told apart by the header's protocol byte.
+pub fn proto_of_linktype(linktype: u32) -> Proto {
+    PROTO_LINKTYPES.iter().find(|(_, t)| *t == linktype).map_or(Proto::Unknown, |(p, _)| *p)
 }
 
 /// Splits a USER0 packet; `None` when it is too short to hold the header.
@@ -172,39 +222,6 @@ pub fn tcp_packet_into(p: &mut Vec<u8>, s: &Segment, payload: &[u8]) {
     p.extend_from_slice(payload);
 }
 
-/// Takes an Ethernet/IPv4/TCP packet apart: the segment and its payload. `None` for
-/// anything else (checked lengths, no panics on short or hostile input).
-pub fn parse_tcp(p: &[u8]) -> Option<(Segment, &[u8])> {
-    if p.len() < 14 + 20 || p[12..14] != [0x08, 0x00] {
-        return None;
-    }
-    let ip = &p[14..];
-    let ihl = usize::from(ip[0] & 0x0F) * 4;
-    if ip[0] >> 4 != 4 || ihl < 20 || ip[9] != 6 {
-        return None;
-    }
-    let total = usize::from(u16::from_be_bytes([ip[2], ip[3]]));
-    if total < ihl + 20 || ip.len() < total {
-        return None;
-    }
-    let tcp = &ip[ihl..total];
-    let off = usize::from(tcp[12] >> 4) * 4;
-    if off < 20 || tcp.len() < off {
-        return None;
-    }
-    let be32 = |b: &[u8]| u32::from_be_bytes([b[0], b[1], b[2], b[3]]);
-    let seg = Segment {
-        src: [ip[12], ip[13], ip[14], ip[15]],
-        dst: [ip[16], ip[17], ip[18], ip[19]],
-        sport: u16::from_be_bytes([tcp[0], tcp[1]]),
-        dport: u16::from_be_bytes([tcp[2], tcp[3]]),
-        seq: be32(&tcp[4..8]),
-        ack: be32(&tcp[8..12]),
-        flags: tcp[13],
-    };
-    Some((seg, &tcp[off..]))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -229,24 +246,17 @@ mod tests {
         pseudo.extend_from_slice(&p[26..34]);
         pseudo.extend_from_slice(&[0, 6, 0, (20 + payload.len()) as u8]);
         assert_eq!(fold(sum16(&p[34..], sum16(&pseudo, 0))), 0, "TCP checksum");
-        let (back, data) = parse_tcp(&p).unwrap();
-        assert_eq!(back, s);
-        assert_eq!(data, payload);
+        let Some(crate::record::layers::Layers::Tcp(t)) = crate::record::layers::tcp(1, &p) else { panic!() };
+        assert_eq!((t.sport, t.dport, t.seq, t.flags), (s.sport, s.dport, s.seq, s.flags));
+        assert_eq!(t.payload, payload);
     }
 
     #[test]
     fn hostile_packets_are_refused_not_panicked_on() {
         for n in 0..80 {
             let junk: Vec<u8> = (0..n).map(|i| (i * 37 + 11) as u8).collect();
-            let _ = parse_tcp(&junk);
             let _ = parse_user(&junk);
         }
-        let mut p = tcp_packet(
-            &Segment { src: CLIENT_IP, dst: server_ip(3), sport: 1, dport: 2, seq: 0, ack: 0, flags: 0 },
-            b"abc",
-        );
-        p[16] = 0xFF; // total length past the end
-        assert!(parse_tcp(&p).is_none());
         let u = user_packet(Dir::Received, Proto::KincoServo, &[1, 2]);
         assert_eq!(parse_user(&u), Some((Dir::Received, Proto::KincoServo, &[1u8, 2][..])));
     }

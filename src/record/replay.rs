@@ -24,6 +24,7 @@
 
 use super::decode::{self, Asked};
 use super::file::{Frame, LinkInfo, Recording};
+use super::helper::Helper;
 use crate::core::trace::{hex_bytes, Dir, Proto};
 use crate::core::{Clock, Error, Result};
 use crate::k2::modbus_map;
@@ -44,6 +45,8 @@ pub struct Target {
     pub snapshot: Option<std::path::PathBuf>,
     /// A bench file whose machine answers instead of fresh simulators.
     pub bench: Option<std::path::PathBuf>,
+    /// The helper program's mailbox base (a V byte), when the recording does not show it.
+    pub agent: Option<u32>,
 }
 
 /// The simulators a link is replayed against, and the clock they run on.
@@ -95,16 +98,19 @@ pub struct Report {
     pub differences: Vec<Difference>,
     /// Links not replayed, and why.
     pub skipped: Vec<String>,
+    /// The file had damaged regions skipped: frames in them were not replayed.
+    pub damaged: bool,
 }
 
 /// A request and its reply: indices into the recording's frames.
 type Exchange = (usize, Option<usize>);
 
 /// Pairs each request with the reply that followed it on its link (if any before the next
-/// request): `(request index, reply index)` into `frames`.
-fn exchanges(frames: &[Frame], link: usize) -> Vec<(usize, Option<usize>)> {
+/// request): `(request index, reply index)` into `frames`; `of_link` are the indices of
+/// the link's frames, in order.
+fn exchanges(frames: &[Frame], of_link: &[usize]) -> Vec<(usize, Option<usize>)> {
     let mut out: Vec<(usize, Option<usize>)> = Vec::new();
-    for (i, f) in frames.iter().enumerate().filter(|(_, f)| f.link == link) {
+    for (i, f) in of_link.iter().map(|&i| (i, &frames[i])) {
         match f.dir {
             Dir::Sent => out.push((i, None)),
             Dir::Received => {
@@ -121,13 +127,20 @@ fn exchanges(frames: &[Frame], link: usize) -> Vec<(usize, Option<usize>)> {
 
 /// Replays every link of `rec`.
 pub fn run(rec: &Recording, target: &Target) -> Result<Report> {
-    let mut report = Report::default();
+    let mut report = Report { damaged: !rec.damaged.is_empty(), ..Default::default() };
+    // Each link's frames, in one pass (a capture may hold many links).
+    let mut of_link: Vec<Vec<usize>> = vec![Vec::new(); rec.links.len()];
+    for (i, f) in rec.frames.iter().enumerate() {
+        if let Some(v) = of_link.get_mut(f.link) {
+            v.push(i);
+        }
+    }
     match &target.bench {
         Some(path) => {
             // One machine on one clock: every link's exchanges in recorded order.
             let bench = bench_sims(rec, path)?;
             let mut all: Vec<(usize, Exchange)> = (0..rec.links.len())
-                .flat_map(|li| exchanges(&rec.frames, li).into_iter().map(move |e| (li, e)))
+                .flat_map(|li| exchanges(&rec.frames, &of_link[li]).into_iter().map(move |e| (li, e)))
                 .collect();
             all.sort_by_key(|(_, (q, _))| *q);
             let mut warned = vec![false; rec.links.len()];
@@ -138,8 +151,8 @@ pub fn run(rec: &Recording, target: &Target) -> Result<Report> {
             }
         }
         None => {
-            for li in 0..rec.links.len() {
-                let ex = exchanges(&rec.frames, li);
+            for (li, frames) in of_link.iter().enumerate() {
+                let ex = exchanges(&rec.frames, frames);
                 replay_link(rec, li, &ex, None, target, &mut report, &mut false)?;
             }
         }
@@ -176,7 +189,7 @@ fn replay_link(
                 },
                 None => fresh_k2(link, target)?,
             };
-            modbus_link(rec, ex, link, &sims, report);
+            modbus_link(rec, ex, link, &sims, target, bench.is_none(), report);
         }
         Proto::KincoServo => {
             let sims = match bench {
@@ -187,10 +200,18 @@ fn replay_link(
                         return Ok(());
                     }
                 },
-                None => fresh_line(rec, li),
+                None => fresh_line(rec, ex),
             };
             servo_link(rec, ex, link, &sims, report);
         }
+        Proto::Umpk | Proto::FxPort | Proto::FxLink => skip(
+            report,
+            format!(
+                "{}: {} frames (replay covers Modbus and servo links)",
+                link.name,
+                super::packet::proto_name(link.proto)
+            ),
+        ),
         Proto::Unknown => skip(report, format!("{}: frames of an undeclared protocol", link.name)),
     }
     Ok(())
@@ -220,9 +241,8 @@ fn fresh_k2(link: &LinkInfo, target: &Target) -> Result<Sims> {
 }
 
 /// A fresh servo line with the drive ids a servo link addressed.
-fn fresh_line(rec: &Recording, li: usize) -> Sims {
-    let mut ids: Vec<u8> =
-        exchanges(&rec.frames, li).iter().filter_map(|(q, _)| rec.frames[*q].bytes.first().copied()).collect();
+fn fresh_line(rec: &Recording, ex: &[Exchange]) -> Sims {
+    let mut ids: Vec<u8> = ex.iter().filter_map(|(q, _)| rec.frames[*q].bytes.first().copied()).collect();
     ids.sort_unstable();
     ids.dedup();
     let clock = Clock::stepped();
@@ -230,20 +250,52 @@ fn fresh_line(rec: &Recording, li: usize) -> Sims {
     Sims { base: clock.now(), vt0: None, clock, k2: None, line: Some(Arc::new(Mutex::new(line))) }
 }
 
-fn modbus_link(rec: &Recording, ex: &[Exchange], link: &LinkInfo, sims: &Sims, report: &mut Report) {
+fn modbus_link(
+    rec: &Recording,
+    ex: &[Exchange],
+    link: &LinkInfo,
+    sims: &Sims,
+    target: &Target,
+    heartbeat_clock: bool,
+    report: &mut Report,
+) {
     let sim = sims.k2.clone().expect("a K2 for a Modbus link");
     let model = sim.lock().unwrap_or_else(|p| p.into_inner()).model();
     let (clock, base) = (&sims.clock, sims.base);
     let space = K2Space::new(model);
     let vt0 = sims.vt0.or_else(|| ex.first().and_then(|(q, _)| rec.frames[*q].vt));
+    let pdu_of = |i: usize| decode::modbus_pdu(link.proto, &rec.frames[i].bytes).ok().map(|(_, p)| p.to_vec());
+    let pairs: Vec<(Vec<u8>, Option<Vec<u8>>)> =
+        ex.iter().filter_map(|&(q, r)| Some((pdu_of(q)?, r.and_then(pdu_of)))).collect();
+    let mut helper = Helper::detect(&space, &pairs, target.agent);
+    if let Some(h) = &helper {
+        let mut s = sim.lock().unwrap_or_else(|p| p.into_inner());
+        if s.agent_base.is_none() {
+            if let Err(e) = s.enable_agent(h.vbyte) {
+                report.skipped.push(format!("{}: the helper program cannot run: {e}", link.name));
+                helper = None;
+            }
+        }
+    }
     let mut service: Option<K2Service> = None;
     for &(q, r) in ex {
         let req = &rec.frames[q];
         report.requests += 1;
         let Ok((unit, pdu)) = decode::modbus_pdu(link.proto, &req.bytes) else { continue };
         let service = service.get_or_insert_with(|| K2Service::new(sim.clone(), unit));
-        if let (Some(t0), Some(t)) = (vt0, req.vt) {
-            step_to(clock, base + t.saturating_sub(t0));
+        let recorded_pdu = r.and_then(pdu_of);
+        match helper.as_mut() {
+            // With the helper the clock follows the PLC's scans (see `super::helper`).
+            Some(h) if heartbeat_clock => {
+                if let Some(n) = h.scans_before(&space, pdu, recorded_pdu.as_deref()) {
+                    h.catch_up(&mut sim.lock().unwrap_or_else(|p| p.into_inner()), clock, n);
+                }
+            }
+            _ => {
+                if let (Some(t0), Some(t)) = (vt0, req.vt) {
+                    step_to(clock, base + t.saturating_sub(t0));
+                }
+            }
         }
         // The simulator's RTU framing decodes the request, whatever transport carried it.
         let mut adu = Vec::with_capacity(pdu.len() + 3);
@@ -260,9 +312,10 @@ fn modbus_link(rec: &Recording, ex: &[Exchange], link: &LinkInfo, sims: &Sims, r
             None => None,
         };
         // Compare PDUs (unit … CRC and MBAP framing are transport matters).
-        let replayed_pdu = replayed.as_ref().map(|b| b[1..b.len() - 2].to_vec());
-        let recorded_pdu =
-            r.and_then(|r| decode::modbus_pdu(link.proto, &rec.frames[r].bytes).ok().map(|(_, p)| p.to_vec()));
+        let mut replayed_pdu = replayed.as_ref().map(|b| b[1..b.len() - 2].to_vec());
+        if let (Some(h), Some(p)) = (helper.as_mut(), replayed_pdu.as_mut()) {
+            h.match_heartbeat(&space, pdu, recorded_pdu.as_deref(), p);
+        }
         if replayed_pdu == recorded_pdu {
             continue;
         }

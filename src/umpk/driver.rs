@@ -35,7 +35,7 @@ use super::sim::{Umpk, RESET_TIME};
 use super::space::{UmpkOperand, UmpkSpace};
 use crate::core::link::line::Transport;
 use crate::core::link::serial::{Carrier, LineSettings};
-use crate::core::trace::{self, Dir};
+use crate::core::trace::{self, Dir, Proto};
 use crate::core::url::DeviceUrl;
 use crate::core::{Clock, Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
 use std::collections::VecDeque;
@@ -172,7 +172,7 @@ impl Driver {
             let wait = (deadline - now).min(Duration::from_millis(50));
             let n = self.t.recv(&mut buf, wait).map_err(|e| self.io_err(e))?;
             if n > 0 {
-                trace::frame(&self.link, Dir::Received, &buf[..n]);
+                trace::frame_proto(&self.link, Proto::Umpk, Dir::Received, &buf[..n]);
                 self.rx.extend_from_slice(&buf[..n]);
                 return Ok(true);
             }
@@ -209,7 +209,7 @@ impl Driver {
             self.rx.clear();
             self.t.discard_input().map_err(|e| self.io_err(e))?;
         }
-        trace::frame(&self.link, Dir::Sent, sent);
+        trace::frame_proto(&self.link, Proto::Umpk, Dir::Sent, sent);
         self.t.send(sent).map_err(|e| self.io_err(e))?;
         let deadline = self.clock.now() + wait;
         loop {
