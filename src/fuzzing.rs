@@ -37,6 +37,7 @@ pub static TARGETS: &[(&str, Target)] = &[
     ("agent_base", agent_base),
     ("il", il),
     ("fx_port", fx_port),
+    ("control", control),
     ("fx_link", fx_link),
     ("fx_operand", fx_operand),
     ("fx_il", fx_il),
@@ -409,4 +410,23 @@ pub fn rfc2217(data: &[u8]) {
 /// The bench file (parse only: no device is opened).
 pub fn bench(data: &[u8]) {
     let _ = crate::wiring::bench::Bench::parse(&text(data), Path::new("fuzz/bench.toml"));
+}
+
+/// Control channels of served simulators: each line (at most the channel's line length) to
+/// the K2's, the drive line's, the UMPK's and the FX PLC's control language, on in-process
+/// simulators whose stepped clock moves between lines.
+pub fn control(data: &[u8]) {
+    let clock = Clock::stepped();
+    let mut k2 = crate::k2::sim::K2Sim::new(&MODELS[0], clock.clone());
+    let mut umpk = crate::umpk::sim::Umpk::new(&crate::umpk::model::MODELS[0], clock.clone());
+    let mut fx = crate::fx::memory::Memory::with_clock(&crate::fx::model::MODELS[0], clock.clone());
+    let mut servo = crate::servo::sim::SimLine::new(&[1], clock.clone());
+    for line in data.split(|b| *b == b'\n').take(64) {
+        let line = text(&line[..line.len().min(crate::core::link::control::MAX_LINE)]);
+        let _ = crate::k2::sim::control::answer(&mut k2, &line, true);
+        let _ = crate::umpk::sim::control::answer(&mut umpk, &line);
+        let _ = crate::fx::control::answer(&mut fx, &line);
+        let _ = crate::servo::sim::control::answer_line(&mut servo, &line);
+        clock.step(std::time::Duration::from_millis(7));
+    }
 }
