@@ -9,7 +9,7 @@
 //! read_only = true               # refuse every write
 //! allow = ["VW100..VW120", "M0.0"]   # or: refuse writes outside these operands ("clock": rtc set)
 //! [devices.press1.options]        # passed to Device::set_option after opening
-//! word_order = "swapped"
+//! word_order = "low-first"       # checked against the family when the file is loaded
 //! ```
 //!
 //! Profiles belong to the session layer: the write rules (`read_only`, `allow`) become a
@@ -299,9 +299,27 @@ fn check(p: &Profile, clock: &crate::core::Clock) -> Result<()> {
         return Err(Error::usage(format!("unknown device scheme `{}:` in {}", u.scheme, p.url))
             .hint("known schemes: sim:MODEL, tcp://HOST:PORT, rtu:/dev/PORT, rtu+tcp://HOST:PORT, kinco:/dev/PORT, sim-servo:, fx:/dev/PORT, fxlink:/dev/PORT, sim-fx:FX2N, umpk:/dev/PORT, sim-umpk:UMPK16"));
     };
-    let device = crate::session::open_url(&twin, clock)?;
+    let mut device = crate::session::open_url(&twin, clock)?;
+    for (k, v) in &p.options {
+        check_option(&u, device.as_mut(), k, v).map_err(|mut e| {
+            e.message = format!("[options] {k} = \"{v}\": {}", e.message);
+            e
+        })?;
+    }
     Guard::build(p, device.operands())?;
     Ok(())
+}
+
+/// One `[options]` entry against the family that will receive it. The twin is the same
+/// driver as the real device for every family but the K2, whose wire driver has options of
+/// its own (checked without a connection); a simulator's file options (`state`, `program`)
+/// are left for `connect`, so loading the file touches no other file.
+fn check_option(u: &DeviceUrl, twin: &mut dyn crate::core::Device, key: &str, value: &str) -> Result<()> {
+    match (u.base_scheme(), key) {
+        ("tcp" | "rtu", _) => crate::k2::driver::check_option(key, value),
+        ("sim", "state" | "program") => Ok(()),
+        _ => twin.set_option(key, value),
+    }
 }
 
 /// Opens profile `profile` under device name `name`: its URL, then its options, then its
@@ -426,7 +444,7 @@ url = "kinco:/dev/ttyUSB1?id=1"
 encoder = 65536
 read_only = true
 [devices.axis1.options]
-word_order = "swapped"
+word_order = "low-first"
 "#;
 
     #[test]
@@ -441,7 +459,7 @@ word_order = "swapped"
         let axis = p.get("axis1").unwrap();
         assert_eq!(axis.url, "kinco:/dev/ttyUSB1?id=1&encoder=65536");
         assert!(axis.read_only);
-        assert_eq!(axis.options, vec![("word_order".to_string(), "swapped".to_string())]);
+        assert_eq!(axis.options, vec![("word_order".to_string(), "low-first".to_string())]);
         let names: Vec<&str> = p.list().iter().map(|p| p.name.as_str()).collect();
         assert_eq!(names, vec!["axis1", "press1"]);
     }

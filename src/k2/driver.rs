@@ -131,6 +131,23 @@ pub struct Settings {
 }
 
 /// Parses `timeout=`: milliseconds, or a duration with a unit (`500ms`, `2s`).
+/// Checks a K2 wire option (a profile's `[options]`, `Device::set_option`) without a
+/// connection: profiles are checked with it when the file is loaded.
+pub fn check_option(key: &str, value: &str) -> Result<()> {
+    match key {
+        "word_order" => WordOrder::parse(value).map(|_| ()),
+        "timeout" => parse_timeout(value).map(|_| ()),
+        "retries" => parse_retries(value).map(|_| ()),
+        "agent" => Ok(()),
+        _ => Err(Error::usage(format!("K2 wire devices have no option `{key}`"))
+            .hint("options: word_order (high-first, low-first), timeout, retries, agent")),
+    }
+}
+
+fn parse_retries(value: &str) -> Result<u32> {
+    value.parse().map_err(|_| Error::usage(format!("`retries={value}` is not a number")))
+}
+
 fn parse_timeout(v: &str) -> Result<Duration> {
     crate::core::literal::parse_timeout(v).map_err(Error::usage)
 }
@@ -637,18 +654,13 @@ impl Device for K2Wire {
     }
 
     fn set_option(&mut self, key: &str, value: &str) -> Result<()> {
+        check_option(key, value)?;
         match key {
             "word_order" => self.settings.word_order = WordOrder::parse(value)?,
             "timeout" => self.settings.timeout = parse_timeout(value)?,
-            "retries" => {
-                self.settings.retries =
-                    value.parse().map_err(|_| Error::usage(format!("`retries={value}` is not a number")))?
-            }
+            "retries" => self.settings.retries = parse_retries(value)?,
             "agent" => self.agent = Some(sm::client(value, self.settings.timeout)?),
-            _ => {
-                return Err(Error::usage(format!("K2 wire devices have no option `{key}`"))
-                    .hint("options: word_order, timeout, retries, agent"))
-            }
+            _ => unreachable!("check_option knows every option"),
         }
         Ok(())
     }
