@@ -65,10 +65,7 @@ pub struct Profiles {
 
 /// The profile file's path: `PLCSH_CONFIG`, else the user's config directory.
 pub fn default_path() -> Option<PathBuf> {
-    if let Some(p) = std::env::var_os("PLCSH_CONFIG").filter(|p| !p.is_empty()) {
-        return Some(PathBuf::from(p));
-    }
-    directories::ProjectDirs::from("", "", "plcsh").map(|d| d.config_dir().join("devices.toml"))
+    crate::paths::config_file()
 }
 
 #[derive(Deserialize)]

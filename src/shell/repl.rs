@@ -10,7 +10,7 @@ use std::path::PathBuf;
 
 /// Where the REPL keeps its history (`~/.local/share/plcsh/history.txt` on Linux).
 pub fn history_path() -> Option<PathBuf> {
-    directories::ProjectDirs::from("", "", "plcsh").map(|d| d.data_dir().join("history.txt"))
+    crate::paths::history()
 }
 
 /// Runs the interactive REPL until `quit` or end of input. Returns the exit status.
