@@ -212,6 +212,23 @@ fn method_typos_and_dots_for_colons_are_explained() {
     let p = script("dot.lua", "local v = plc.get('VW0')\n");
     let e = common::stderr(&run(&["run", p.to_str().unwrap()], ""));
     assert!(e.contains(&format!("{}:1:", p.display())) && e.contains("call it with a colon, `dev:get(…)`"), "{e}");
+    // Caught with pcall (called through a function or directly) or xpcall: the same explanation,
+    // with the script line, and plcsh.errinfo reads it.
+    let p = script(
+        "dotpcall.lua",
+        "local ok, e = pcall(function() return plc.get('VW0') end)\nprint(ok, e)\n\
+         print(select(2, pcall(plc.get, 'VW0')))\n\
+         print(select(2, xpcall(function() return plc.get('VW0') end, function(m) return 'handled: ' .. tostring(m) end)))\n\
+         print(plcsh.errinfo(e).kind)\n",
+    );
+    let o = run(&["run", p.to_str().unwrap()], "");
+    assert!(o.status.success(), "{}", both(&o));
+    let out: Vec<String> = stdout(&o).lines().map(str::to_string).collect();
+    let friendly = "`get` is a method: call it with a colon, `dev:get(…)`, not a dot `dev.get(…)`";
+    assert_eq!(out[0], format!("false\t{}:1: error[script]: {friendly}", p.display()), "{out:?}");
+    assert!(out[1].ends_with(friendly), "{out:?}");
+    assert_eq!(out[2], format!("handled: {}:4: error[script]: {friendly}", p.display()), "{out:?}");
+    assert_eq!(out[3], "script");
 }
 
 /// Unknown keys in an options table are errors (a misspelt timeout would wait for ever).
