@@ -289,13 +289,37 @@ pub fn offline_twin(u: &DeviceUrl) -> Option<String> {
     }
 }
 
-/// One profile against its offline twin: scheme, model, allow items.
+/// The URL parameters the family of `u` takes (the lists its `open` functions check), so a
+/// misspelt key in a profile is found at load. Beside [`offline_twin`] for the same reason.
+pub fn url_params(u: &DeviceUrl) -> Option<Vec<&'static str>> {
+    use crate::{fx::driver as fx, k2::driver as k2, servo::driver as servo, umpk::driver as umpk};
+    // `control=PATH` (a served simulator's control channel) goes to the session.
+    let wire = |lists: &[&[&'static str]]| lists.iter().flat_map(|l| l.iter().copied()).chain(["control"]).collect();
+    Some(match (u.base_scheme(), u.scheme.as_str()) {
+        ("sim", _) => crate::session::K2_SIM_PARAMS.to_vec(),
+        (_, "rtu" | "rtu+rfc2217") => wire(&[k2::PARAMS, k2::LINE_PARAMS]),
+        ("tcp" | "rtu", _) => wire(&[k2::PARAMS]),
+        ("kinco", _) => servo::SERIAL_PARAMS.to_vec(),
+        ("sim-servo", _) => servo::SIM_PARAMS.to_vec(),
+        ("fx", _) => wire(&[fx::PORT_PARAMS]),
+        ("fxlink", _) => wire(&[fx::LINK_PARAMS]),
+        ("sim-fx", _) => fx::SIM_PARAMS.to_vec(),
+        ("umpk", _) => wire(&[umpk::SERIAL_PARAMS]),
+        ("sim-umpk", _) => umpk::SIM_PARAMS.to_vec(),
+        _ => return None,
+    })
+}
+
+/// One profile against its offline twin: scheme, URL parameters, model, options, allow items.
 fn check(p: &Profile, clock: &crate::core::Clock) -> Result<()> {
     let u = DeviceUrl::parse(&p.url)?;
     let Some(twin) = offline_twin(&u) else {
         return Err(Error::usage(format!("unknown device scheme `{}:` in {}", u.scheme, p.url))
             .hint("known schemes: sim:MODEL, tcp://HOST:PORT, rtu:/dev/PORT, rtu+tcp://HOST:PORT, kinco:/dev/PORT, sim-servo:, fx:/dev/PORT, fxlink:/dev/PORT, sim-fx:FX2N, umpk:/dev/PORT, sim-umpk:UMPK16"));
     };
+    if let Some(known) = url_params(&u) {
+        u.expect_params(&known)?;
+    }
     let mut device = crate::session::open_url(&twin, clock)?;
     for (k, v) in &p.options {
         check_option(&u, device.as_mut(), k, v).map_err(|mut e| {
@@ -487,6 +511,15 @@ word_order = "low-first"
         assert_eq!(lines, vec![(15, true), (13, true), (9, true), (4, true)], "{:?}", p.problems);
         assert!(p.problems[3].message.contains("`url` is missing"));
         assert!(p.problems[2].message.contains("read_only"));
+    }
+
+    /// Every scheme the session opens has its parameter list and an offline twin here.
+    #[test]
+    fn every_scheme_has_its_parameters_and_a_twin() {
+        for (scheme, _) in crate::session::SCHEMES {
+            let u = DeviceUrl::parse(&format!("{scheme}x")).unwrap();
+            assert!(url_params(&u).is_some() && offline_twin(&u).is_some(), "{scheme}");
+        }
     }
 
     #[test]

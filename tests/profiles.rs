@@ -195,3 +195,28 @@ fn profile_options_are_checked_against_their_family_at_load() {
     assert_eq!(problems.len(), 4, "`devices` lists every problem: {problems:?}");
     assert!(problems[0].as_str().unwrap().starts_with(&format!("{file}:1: profile `axis1` skipped")), "{problems:?}");
 }
+
+/// A profile's other keys become URL parameters: one its family does not take (a typo) is
+/// found at load too, naming the parameters there are; the family's own ones load.
+#[test]
+fn profile_url_parameters_are_checked_against_their_family_at_load() {
+    let f = config(
+        "params",
+        "[devices.axis1]\nurl = \"kinco:/dev/ttyUSB1?id=1\"\nencodr = 65536\n\n\
+         [devices.axis2]\nurl = \"kinco:/dev/ttyUSB1?id=2\"\nencoder = 65536\n\n\
+         [devices.press1]\nurl = \"tcp://127.0.0.1:1\"\nbaud = 9600\n\n\
+         [devices.press2]\nurl = \"rtu:/dev/null\"\nbaud = 9600\nparity = \"even\"\n",
+    );
+    let file = f.display().to_string();
+    let o = run(&["--config", &file, "devices", "--json"], "");
+    let err = common::stderr(&o);
+    assert!(err.contains(&format!("{file}:1: profile `axis1` skipped: unknown parameter `encodr`")), "{err}");
+    assert!(err.contains("known: id, baud, echo, loop, timeout, encoder, control"), "{err}");
+    assert!(
+        err.contains(&format!("{file}:9: profile `press1` skipped: unknown parameter `baud`")),
+        "a TCP K2 has no baud: {err}"
+    );
+    let l = json_lines(&o);
+    let names: Vec<&str> = l[0]["profiles"].as_array().unwrap().iter().map(|p| p["name"].as_str().unwrap()).collect();
+    assert_eq!(names, vec!["axis2", "press2"]);
+}

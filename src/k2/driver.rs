@@ -261,15 +261,21 @@ impl ReadPlan {
     }
 }
 
+/// The URL parameters of a K2 on a wire; a serial line (`rtu:`, `rtu+rfc2217:`) also takes
+/// [`LINE_PARAMS`].
+pub const PARAMS: &[&str] = &["unit", "model", "word_order", "timeout", "retries", "agent"];
+/// The serial line's parameters (`rtu:PORT`, `rtu+rfc2217://…`).
+pub const LINE_PARAMS: &[&str] = &["baud", "parity", "stop"];
+
 impl K2Wire {
     /// Opens `tcp://…`, `rtu:…` or `rtu+tcp://…` and connects.
     pub fn open(url: &DeviceUrl) -> Result<K2Wire> {
-        let mut known = vec!["unit", "model", "word_order", "timeout", "retries", "agent"];
+        let mut known = PARAMS.to_vec();
         let link = match url.scheme.as_str() {
             "tcp" => Link::Tcp { addr: with_port(&url.target) },
             "rtu+tcp" => Link::RtuOverTcp { addr: with_port(&url.target) },
             "rtu" | "rtu+rfc2217" => {
-                known.extend(["baud", "parity", "stop"]);
+                known.extend(LINE_PARAMS);
                 let carrier =
                     Carrier::from_url(url, "rtu:COM3?baud=19200&unit=1 or rtu:/dev/ttyUSB0?baud=19200&unit=1")?;
                 let parity = url.param("parity").unwrap_or("none");
