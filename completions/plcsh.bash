@@ -31,6 +31,9 @@ _plcsh() {
             plcsh,models)
                 cmd="plcsh__subcmd__models"
                 ;;
+            plcsh,paths)
+                cmd="plcsh__subcmd__paths"
+                ;;
             plcsh,ports)
                 cmd="plcsh__subcmd__ports"
                 ;;
@@ -72,6 +75,9 @@ _plcsh() {
                 ;;
             plcsh__subcmd__help,models)
                 cmd="plcsh__subcmd__help__subcmd__models"
+                ;;
+            plcsh__subcmd__help,paths)
+                cmd="plcsh__subcmd__help__subcmd__paths"
                 ;;
             plcsh__subcmd__help,ports)
                 cmd="plcsh__subcmd__help__subcmd__ports"
@@ -137,7 +143,7 @@ _plcsh() {
 
     case "${cmd}" in
         plcsh)
-            opts="-c -v -d -h -V --command --json --verbose --model --device --time --config --state --record --bench --read-only --help --version models devices ports completions sim agent run record replay help"
+            opts="-c -v -d -h -V --command --json --verbose --model --device --time --config --state --record --bench --read-only --help --version models devices ports paths completions sim agent run record replay help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -425,7 +431,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__help)
-            opts="models devices ports completions sim agent run record replay help"
+            opts="models devices ports paths completions sim agent run record replay help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -509,6 +515,20 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__help__subcmd__models)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        plcsh__subcmd__help__subcmd__paths)
             opts=""
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
@@ -635,6 +655,52 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__models)
+            opts="-v -d -h --json --verbose --model --device --time --config --state --record --bench --read-only --help"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --model)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --device)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --time)
+                    COMPREPLY=($(compgen -W "wall stepped" -- "${cur}"))
+                    return 0
+                    ;;
+                --config)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --state)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --record)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --bench)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        plcsh__subcmd__paths)
             opts="-v -d -h --json --verbose --model --device --time --config --state --record --bench --read-only --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )

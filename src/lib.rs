@@ -11,6 +11,7 @@ pub mod fx;
 pub mod guard;
 pub mod k2;
 pub mod output;
+pub mod paths;
 pub mod plot;
 pub mod profile;
 pub mod record;

@@ -9,7 +9,7 @@
 //! read_only = true               # refuse every write
 //! allow = ["VW100..VW120", "M0.0"]   # or: refuse writes outside these operands ("clock": rtc set)
 //! [devices.press1.options]        # passed to Device::set_option after opening
-//! word_order = "swapped"
+//! word_order = "low-first"       # checked against the family when the file is loaded
 //! ```
 //!
 //! Profiles belong to the session layer: the write rules (`read_only`, `allow`) become a
@@ -65,10 +65,7 @@ pub struct Profiles {
 
 /// The profile file's path: `PLCSH_CONFIG`, else the user's config directory.
 pub fn default_path() -> Option<PathBuf> {
-    if let Some(p) = std::env::var_os("PLCSH_CONFIG").filter(|p| !p.is_empty()) {
-        return Some(PathBuf::from(p));
-    }
-    directories::ProjectDirs::from("", "", "plcsh").map(|d| d.config_dir().join("devices.toml"))
+    crate::paths::config_file()
 }
 
 #[derive(Deserialize)]
@@ -292,16 +289,58 @@ pub fn offline_twin(u: &DeviceUrl) -> Option<String> {
     }
 }
 
-/// One profile against its offline twin: scheme, model, allow items.
+/// The URL parameters the family of `u` takes (the lists its `open` functions check), so a
+/// misspelt key in a profile is found at load. Beside [`offline_twin`] for the same reason.
+pub fn url_params(u: &DeviceUrl) -> Option<Vec<&'static str>> {
+    use crate::{fx::driver as fx, k2::driver as k2, servo::driver as servo, umpk::driver as umpk};
+    // `control=PATH` (a served simulator's control channel) goes to the session.
+    let wire = |lists: &[&[&'static str]]| lists.iter().flat_map(|l| l.iter().copied()).chain(["control"]).collect();
+    Some(match (u.base_scheme(), u.scheme.as_str()) {
+        ("sim", _) => crate::session::K2_SIM_PARAMS.to_vec(),
+        (_, "rtu" | "rtu+rfc2217") => wire(&[k2::PARAMS, k2::LINE_PARAMS]),
+        ("tcp" | "rtu", _) => wire(&[k2::PARAMS]),
+        ("kinco", _) => servo::SERIAL_PARAMS.to_vec(),
+        ("sim-servo", _) => servo::SIM_PARAMS.to_vec(),
+        ("fx", _) => wire(&[fx::PORT_PARAMS]),
+        ("fxlink", _) => wire(&[fx::LINK_PARAMS]),
+        ("sim-fx", _) => fx::SIM_PARAMS.to_vec(),
+        ("umpk", _) => wire(&[umpk::SERIAL_PARAMS]),
+        ("sim-umpk", _) => umpk::SIM_PARAMS.to_vec(),
+        _ => return None,
+    })
+}
+
+/// One profile against its offline twin: scheme, URL parameters, model, options, allow items.
 fn check(p: &Profile, clock: &crate::core::Clock) -> Result<()> {
     let u = DeviceUrl::parse(&p.url)?;
     let Some(twin) = offline_twin(&u) else {
         return Err(Error::usage(format!("unknown device scheme `{}:` in {}", u.scheme, p.url))
             .hint("known schemes: sim:MODEL, tcp://HOST:PORT, rtu:/dev/PORT, rtu+tcp://HOST:PORT, kinco:/dev/PORT, sim-servo:, fx:/dev/PORT, fxlink:/dev/PORT, sim-fx:FX2N, umpk:/dev/PORT, sim-umpk:UMPK16"));
     };
-    let device = crate::session::open_url(&twin, clock)?;
+    if let Some(known) = url_params(&u) {
+        u.expect_params(&known)?;
+    }
+    let mut device = crate::session::open_url(&twin, clock)?;
+    for (k, v) in &p.options {
+        check_option(&u, device.as_mut(), k, v).map_err(|mut e| {
+            e.message = format!("[options] {k} = \"{v}\": {}", e.message);
+            e
+        })?;
+    }
     Guard::build(p, device.operands())?;
     Ok(())
+}
+
+/// One `[options]` entry against the family that will receive it. The twin is the same
+/// driver as the real device for every family but the K2, whose wire driver has options of
+/// its own (checked without a connection); a simulator's file options (`state`, `program`)
+/// are left for `connect`, so loading the file touches no other file.
+fn check_option(u: &DeviceUrl, twin: &mut dyn crate::core::Device, key: &str, value: &str) -> Result<()> {
+    match (u.base_scheme(), key) {
+        ("tcp" | "rtu", _) => crate::k2::driver::check_option(key, value),
+        ("sim", "state" | "program") => Ok(()),
+        _ => twin.set_option(key, value),
+    }
 }
 
 /// Opens profile `profile` under device name `name`: its URL, then its options, then its
@@ -426,7 +465,7 @@ url = "kinco:/dev/ttyUSB1?id=1"
 encoder = 65536
 read_only = true
 [devices.axis1.options]
-word_order = "swapped"
+word_order = "low-first"
 "#;
 
     #[test]
@@ -441,7 +480,7 @@ word_order = "swapped"
         let axis = p.get("axis1").unwrap();
         assert_eq!(axis.url, "kinco:/dev/ttyUSB1?id=1&encoder=65536");
         assert!(axis.read_only);
-        assert_eq!(axis.options, vec![("word_order".to_string(), "swapped".to_string())]);
+        assert_eq!(axis.options, vec![("word_order".to_string(), "low-first".to_string())]);
         let names: Vec<&str> = p.list().iter().map(|p| p.name.as_str()).collect();
         assert_eq!(names, vec!["axis1", "press1"]);
     }
@@ -472,6 +511,15 @@ word_order = "swapped"
         assert_eq!(lines, vec![(15, true), (13, true), (9, true), (4, true)], "{:?}", p.problems);
         assert!(p.problems[3].message.contains("`url` is missing"));
         assert!(p.problems[2].message.contains("read_only"));
+    }
+
+    /// Every scheme the session opens has its parameter list and an offline twin here.
+    #[test]
+    fn every_scheme_has_its_parameters_and_a_twin() {
+        for (scheme, _) in crate::session::SCHEMES {
+            let u = DeviceUrl::parse(&format!("{scheme}x")).unwrap();
+            assert!(url_params(&u).is_some() && offline_twin(&u).is_some(), "{scheme}");
+        }
     }
 
     #[test]

@@ -79,7 +79,6 @@ pub static SCHEMES: &[(&str, &str)] = &[
     ("sim-fx:", "in-process FX simulator: sim-fx:FX2N[?protocol=link]"),
 ];
 
-/// Opens a device from its URL. Every scheme plcsh knows is listed here.
 /// The `control=PATH` of a wire URL: a served simulator's control channel. The drive line
 /// (`kinco:`) takes it itself; for the other families the session keeps it.
 fn control_param(url: &str) -> Option<std::path::PathBuf> {
@@ -87,6 +86,10 @@ fn control_param(url: &str) -> Option<std::path::PathBuf> {
     matches!(u.base_scheme(), "tcp" | "rtu" | "fx" | "fxlink" | "umpk").then(|| u.param("control").map(Into::into))?
 }
 
+/// The URL parameters of the in-process K2 simulator (`sim:MODEL`).
+pub const K2_SIM_PARAMS: &[&str] = &["model", "program"];
+
+/// Opens a device from its URL. Every scheme plcsh knows is listed here.
 pub fn open_url(url: &str, clock: &Clock) -> Result<Box<dyn Device>> {
     let mut u = DeviceUrl::parse(url)?;
     if matches!(u.base_scheme(), "tcp" | "rtu" | "fx" | "fxlink" | "umpk") {
@@ -94,7 +97,7 @@ pub fn open_url(url: &str, clock: &Clock) -> Result<Box<dyn Device>> {
     }
     match u.base_scheme() {
         "sim" => {
-            u.expect_params(&["model", "program"])?;
+            u.expect_params(K2_SIM_PARAMS)?;
             let model = u.param("model").unwrap_or(&u.target);
             let mut d = crate::k2::open_sim(model, clock.clone())?;
             if let Some(p) = u.param("program") {

@@ -301,10 +301,7 @@ impl Snapshot {
 
 /// The directory named snapshots live in (`PLCSH_SNAPSHOTS` overrides).
 pub fn dir() -> Option<PathBuf> {
-    if let Some(d) = std::env::var_os("PLCSH_SNAPSHOTS") {
-        return Some(PathBuf::from(d));
-    }
-    directories::ProjectDirs::from("", "", "plcsh").map(|d| d.data_dir().join("snapshots"))
+    crate::paths::snapshots()
 }
 
 /// The file of snapshot `name` (a path when it has a `/` or ends in `.json`).

@@ -165,3 +165,31 @@ fn cyrillic_file_names_and_output() {
     assert_eq!(stdout(&o), "Привет, ПЛК: 0\n", "{}", both(&o));
     assert!(stderr(&o).contains(&format!("{}:3:", p.display())), "the location names the file: {}", stderr(&o));
 }
+
+/// `plcsh paths` (and `paths` in the shell) prints where every file lives, following the
+/// user's directories, the environment and the flags of this run.
+#[test]
+fn paths_prints_where_every_file_lives() {
+    let home = std::env::temp_dir().join(format!("plcsh-test-home-{}", std::process::id()));
+    std::fs::create_dir_all(&home).unwrap();
+    let cfg = home.join("paths-devices.toml");
+    std::fs::write(&cfg, "").unwrap();
+    let o = run(&["paths", "--json", "--config", cfg.to_str().unwrap(), "--state", "/tmp/k2-state.json"], "");
+    assert!(o.status.success(), "{}", both(&o));
+    let l = json_lines(&o);
+    let p = &l[0]["paths"];
+    assert_eq!(p["config"], cfg.display().to_string());
+    assert_eq!(p["state"], "/tmp/k2-state.json");
+    let data = home.join("data/plcsh");
+    assert_eq!(p["history"], data.join("history.txt").display().to_string());
+    assert_eq!(p["snapshots"], data.join("snapshots").display().to_string());
+    assert_eq!(p["umpk_flash"], data.join("umpk").display().to_string());
+    assert_eq!(p["user_lib"], home.join("config/plcsh/lib").display().to_string());
+    assert!(p["lib"].as_str().unwrap().ends_with("built in"), "{p}");
+    assert!(p["recordings"].as_str().unwrap().starts_with("none"), "{p}");
+    // The defaults and the environment, from the shell's `paths`.
+    let o = plcsh().env("PLCSH_SNAPSHOTS", "/tmp/snaps").args(["-c", "paths"]).output().unwrap();
+    let text = stdout(&o);
+    assert!(text.contains(&home.join("config/plcsh/devices.toml").display().to_string()), "{text}");
+    assert!(text.contains("/tmp/snaps") && text.contains("none"), "state none under PLCSH_STATE=none:\n{text}");
+}

@@ -67,6 +67,7 @@ const NOT_WRITES: &[(&str, &str)] = &[
     ("use", "session: picks the current device"),
     ("devices", "session: lists devices"),
     ("ports", "lists this computer's serial ports; touches no device"),
+    ("paths", "prints where plcsh keeps its files; touches no device"),
     ("connect", "session: opens a device"),
     ("close", "session: closes a device"),
     ("sim", "simulation controls: the simulated world around a device (clock, input signals, retention)"),

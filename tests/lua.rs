@@ -212,6 +212,23 @@ fn method_typos_and_dots_for_colons_are_explained() {
     let p = script("dot.lua", "local v = plc.get('VW0')\n");
     let e = common::stderr(&run(&["run", p.to_str().unwrap()], ""));
     assert!(e.contains(&format!("{}:1:", p.display())) && e.contains("call it with a colon, `dev:get(…)`"), "{e}");
+    // Caught with pcall (called through a function or directly) or xpcall: the same explanation,
+    // with the script line, and plcsh.errinfo reads it.
+    let p = script(
+        "dotpcall.lua",
+        "local ok, e = pcall(function() return plc.get('VW0') end)\nprint(ok, e)\n\
+         print(select(2, pcall(plc.get, 'VW0')))\n\
+         print(select(2, xpcall(function() return plc.get('VW0') end, function(m) return 'handled: ' .. tostring(m) end)))\n\
+         print(plcsh.errinfo(e).kind)\n",
+    );
+    let o = run(&["run", p.to_str().unwrap()], "");
+    assert!(o.status.success(), "{}", both(&o));
+    let out: Vec<String> = stdout(&o).lines().map(str::to_string).collect();
+    let friendly = "`get` is a method: call it with a colon, `dev:get(…)`, not a dot `dev.get(…)`";
+    assert_eq!(out[0], format!("false\t{}:1: error[script]: {friendly}", p.display()), "{out:?}");
+    assert!(out[1].ends_with(friendly), "{out:?}");
+    assert_eq!(out[2], format!("handled: {}:4: error[script]: {friendly}", p.display()), "{out:?}");
+    assert_eq!(out[3], "script");
 }
 
 /// Unknown keys in an options table are errors (a misspelt timeout would wait for ever).
@@ -315,4 +332,74 @@ fn require_searches_in_the_documented_order() {
 fn print_output_stays_in_order_under_dash_c() {
     let o = run(&["-c", "set VW0=5; get VW0; lua print('between'); get VW0"], "");
     assert_eq!(stdout(&o), "VW0  5\nbetween\nVW0  5\n");
+}
+
+/// An installed plcsh needs no source checkout: the binary is copied into a fresh prefix
+/// (`PREFIX/bin/plcsh`, the layout `cargo install --root PREFIX` makes) with no `lib/` beside
+/// it, run from another directory with a private home and no `PLCSH_LIB`, and
+/// `require("commission")` is served from the copy built into the binary (its loader data
+/// says so). `PLCSH_LIB` still overrides the built-in module.
+#[test]
+fn an_installed_binary_finds_the_lib_modules_without_the_checkout() {
+    let base = std::env::temp_dir().join(format!("plcsh-installed-{}", std::process::id()));
+    let (bin_dir, work, home) = (base.join("prefix/bin"), base.join("work"), base.join("home"));
+    for d in [&bin_dir, &work, &home] {
+        std::fs::create_dir_all(d).unwrap();
+    }
+    let src = std::path::Path::new(bin());
+    let exe = bin_dir.join(src.file_name().unwrap());
+    std::fs::copy(src, &exe).unwrap();
+    for up in [base.join("prefix/lib"), base.join("lib"), bin_dir.join("lib")] {
+        assert!(!up.exists(), "no lib/ beside the installed binary");
+    }
+    std::fs::write(
+        work.join("commission_run.lua"),
+        "local commission, from = require('commission')\nprint(from)\n\
+         local c = commission.new('installed')\nc:step('VW0 set', function() plc:set('VW0=7') end)\nc:run()\n\
+         print(#plcsh.lib_dirs)\n",
+    )
+    .unwrap();
+    let installed = |lib: Option<&std::path::Path>| {
+        let mut c = std::process::Command::new(&exe);
+        c.current_dir(&work)
+            .env("HOME", &home)
+            .env("XDG_CONFIG_HOME", home.join("config"))
+            .env("XDG_DATA_HOME", home.join("data"))
+            .env("APPDATA", home.join("appdata"))
+            .env("PLCSH_STATE", "none")
+            .env_remove("PLCSH_LIB")
+            .env_remove("PLCSH_CONFIG")
+            .args(["--time", "stepped", "run", "commission_run.lua"])
+            .stdin(Stdio::null());
+        if let Some(l) = lib {
+            c.env("PLCSH_LIB", l);
+        }
+        c.output().unwrap()
+    };
+    let o = installed(None);
+    assert!(o.status.success(), "{}", both(&o));
+    let out = stdout(&o);
+    assert!(out.starts_with("plcsh:lib/commission.lua\n"), "served from the binary:\n{out}");
+    assert!(out.contains("[x] 1. VW0 set"), "{out}");
+    assert!(out.ends_with("1\n"), "only the script's directory is a lib directory:\n{out}");
+    // PLCSH_LIB comes before the built-in copy.
+    let mine = base.join("mylib");
+    std::fs::create_dir_all(&mine).unwrap();
+    std::fs::write(mine.join("commission.lua"), "return {new = function() error('mine') end}\n").unwrap();
+    let o = installed(Some(&mine));
+    assert!(!o.status.success() && both(&o).contains("mine"), "{}", both(&o));
+    assert!(stdout(&o).starts_with(&format!("{}\n", mine.join("commission.lua").display())), "{}", both(&o));
+    let _ = std::fs::remove_dir_all(&base);
+}
+
+/// A module that is found nowhere lists every place searched, the built-in modules included.
+#[test]
+fn a_missing_module_names_every_place_searched() {
+    let p = script("missing.lua", "require('no_such_module')\n");
+    let o = run(&["run", p.to_str().unwrap()], "");
+    assert_eq!(o.status.code(), Some(1));
+    let e = both(&o);
+    assert!(e.contains("module 'no_such_module' not found"), "{e}");
+    assert!(e.contains("no module 'no_such_module' built into plcsh"), "{e}");
+    assert!(e.contains(&format!("no file '{}'", p.parent().unwrap().join("no_such_module.lua").display())), "{e}");
 }

@@ -141,3 +141,82 @@ fn a_missing_config_file_is_an_error() {
     assert!(common::stderr(&o).contains("/nonexistent/devices.toml: no such file"), "{}", common::stderr(&o));
     assert!(stdout(&o).is_empty());
 }
+
+/// The README's own `devices.toml` loads without a problem (checked against the offline
+/// twins, so the serial ports it names need not exist).
+#[test]
+fn the_readme_profile_example_loads_cleanly() {
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+    let at = readme.find("**Device profiles**").expect("the profiles section");
+    let block = &readme[at..];
+    let start = block.find("```toml\n").expect("a toml example") + "```toml\n".len();
+    let example = &block[start..start + block[start..].find("```").unwrap()];
+    assert!(example.contains("[devices.axis1.options]"), "{example}");
+    let f = config("readme", example);
+    let o = run(&["--config", f.to_str().unwrap(), "devices", "--json"], "");
+    assert!(common::stderr(&o).is_empty(), "{}", common::stderr(&o));
+    let l = json_lines(&o);
+    assert!(l[0].get("problems").is_none(), "{l:?}");
+    let names: Vec<&str> = l[0]["profiles"].as_array().unwrap().iter().map(|p| p["name"].as_str().unwrap()).collect();
+    assert_eq!(names, vec!["axis1", "press1"]);
+}
+
+/// `[options]` are checked against the family of the profile's device when the file is
+/// loaded: an option the family does not have, or a value it refuses, skips the profile with
+/// its file:line at start-up and in `devices`, naming the options the family has.
+#[test]
+fn profile_options_are_checked_against_their_family_at_load() {
+    let f = config(
+        "options",
+        "[devices.axis1]\nurl = \"kinco:/dev/ttyUSB1?id=1\"\n[devices.axis1.options]\nword_order = \"swapped\"\n\n\
+         [devices.press1]\nurl = \"tcp://127.0.0.1:1\"\n[devices.press1.options]\nword_order = \"swapped\"\n\n\
+         [devices.press2]\nurl = \"rtu:/dev/null\"\n[devices.press2.options]\nword_order = \"low-first\"\nretries = 3\n\n\
+         [devices.fx1]\nurl = \"fx:/dev/null\"\n[devices.fx1.options]\nretries = 99\n\n\
+         [devices.trainer]\nurl = \"sim-umpk:UMPK16\"\n[devices.trainer.options]\nencoder = 4096\n\n\
+         [devices.bench]\nurl = \"sim:K205-16DT\"\n[devices.bench.options]\nretain = \"VB0..VB9\"\n",
+    );
+    let file = f.display().to_string();
+    let o = run(&["--config", &file, "devices", "--json"], "");
+    let err = common::stderr(&o);
+    for (line, name, says) in [
+        (1, "axis1", "servo devices have no option `word_order`"),
+        (6, "press1", "`word_order=swapped` is not a word order"),
+        (17, "fx1", "retries `99` must be 0–10"),
+        (22, "trainer", "UMPK devices have no option `encoder`"),
+    ] {
+        assert!(err.contains(&format!("{file}:{line}: profile `{name}` skipped: [options] ")), "{name}: {err}");
+        assert!(err.contains(says), "{says}: {err}");
+    }
+    assert!(err.contains("options: encoder, timeout"), "the servo's options are named: {err}");
+    let l = json_lines(&o);
+    let names: Vec<&str> = l[0]["profiles"].as_array().unwrap().iter().map(|p| p["name"].as_str().unwrap()).collect();
+    assert_eq!(names, vec!["bench", "press2"], "the good profiles load");
+    let problems = l[0]["problems"].as_array().unwrap();
+    assert_eq!(problems.len(), 4, "`devices` lists every problem: {problems:?}");
+    assert!(problems[0].as_str().unwrap().starts_with(&format!("{file}:1: profile `axis1` skipped")), "{problems:?}");
+}
+
+/// A profile's other keys become URL parameters: one its family does not take (a typo) is
+/// found at load too, naming the parameters there are; the family's own ones load.
+#[test]
+fn profile_url_parameters_are_checked_against_their_family_at_load() {
+    let f = config(
+        "params",
+        "[devices.axis1]\nurl = \"kinco:/dev/ttyUSB1?id=1\"\nencodr = 65536\n\n\
+         [devices.axis2]\nurl = \"kinco:/dev/ttyUSB1?id=2\"\nencoder = 65536\n\n\
+         [devices.press1]\nurl = \"tcp://127.0.0.1:1\"\nbaud = 9600\n\n\
+         [devices.press2]\nurl = \"rtu:/dev/null\"\nbaud = 9600\nparity = \"even\"\n",
+    );
+    let file = f.display().to_string();
+    let o = run(&["--config", &file, "devices", "--json"], "");
+    let err = common::stderr(&o);
+    assert!(err.contains(&format!("{file}:1: profile `axis1` skipped: unknown parameter `encodr`")), "{err}");
+    assert!(err.contains("known: id, baud, echo, loop, timeout, encoder, control"), "{err}");
+    assert!(
+        err.contains(&format!("{file}:9: profile `press1` skipped: unknown parameter `baud`")),
+        "a TCP K2 has no baud: {err}"
+    );
+    let l = json_lines(&o);
+    let names: Vec<&str> = l[0]["profiles"].as_array().unwrap().iter().map(|p| p["name"].as_str().unwrap()).collect();
+    assert_eq!(names, vec!["axis2", "press2"]);
+}

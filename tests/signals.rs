@@ -219,3 +219,36 @@ fn a_handler_that_never_ends_is_cut_after_the_grace_period() {
     let took = t.elapsed();
     assert!(took >= std::time::Duration::from_secs(5) && took < std::time::Duration::from_secs(20), "{took:?}");
 }
+
+/// `sim serve` stopped by SIGINT or SIGTERM removes what it made, for every family alike:
+/// the served UMPK's link and control channel go with the K2's, the drives' and the FX's.
+#[test]
+fn sim_serve_removes_every_link_on_sigint_and_sigterm() {
+    let dir = std::env::temp_dir().join(format!("plcsh-serve-links-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for sig in ["-INT", "-TERM"] {
+        let links: Vec<(&str, std::path::PathBuf)> =
+            ["umpk", "servo", "fx", "rtu"].iter().map(|f| (*f, dir.join(format!("tty-{f}{sig}")))).collect();
+        let mut args = vec!["sim".to_string(), "serve".into(), "--state".into(), "none".into()];
+        args.extend(["--umpk-state".into(), "none".into()]);
+        for (family, link) in &links {
+            args.push(format!("--{family}-pty"));
+            args.push(link.display().to_string());
+        }
+        let refs: Vec<&str> = args.iter().map(String::as_str).collect();
+        let (mut child, _) = start_in_group(&refs);
+        let made = |p: &std::path::Path| std::fs::symlink_metadata(p).is_ok();
+        for (family, link) in &links {
+            assert!(made(link), "{sig}: the {family} link is made");
+        }
+        let umpk_ctl = dir.join(format!("tty-umpk{sig}.ctl"));
+        assert!(made(&umpk_ctl), "{sig}: the UMPK's control channel is made");
+        kill(sig, &child.id().to_string());
+        let _ = child.wait().unwrap();
+        for (family, link) in &links {
+            assert!(!made(link), "{sig}: the {family} link {} is removed", link.display());
+        }
+        assert!(!made(&umpk_ctl), "{sig}: the UMPK's control channel is removed");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

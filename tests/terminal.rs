@@ -185,15 +185,24 @@ fn pasted_blocks_run_every_line_in_order() {
     }
 }
 
-/// The first screens a user sees fit an 80-column terminal: `help` and `models` lines are at
-/// most 80 columns wide (details behind `help COMMAND` / `models MODEL`).
+/// The first screens a user sees fit an 80-column terminal: the banner, `help`, `help sim`,
+/// `help servo`, `models` and the completion menu are at most 80 columns wide (details behind
+/// `help COMMAND` / `models MODEL`), and a menu line cut to fit ends between words.
 #[test]
 fn help_and_models_fit_80_columns() {
     let home = std::env::temp_dir().join(format!("plcsh-tmux-80-{}", std::process::id()));
     std::fs::create_dir_all(&home).unwrap();
     let Some(t) = Tmux::start_sized(&home, 80, 60) else { return };
-    t.wait_for("the prompt", |s| s.contains("plc(sim)>"));
-    for (cmd, expect) in [("help", "help COMMAND"), ("models", "models MODEL")] {
+    let s = t.wait_for("the prompt", |s| s.contains("plc(sim)>"));
+    assert!(s.contains("Devices: plc"), "{s}");
+    let full: Vec<&str> = s.lines().filter(|l| l.chars().count() >= 80).collect();
+    assert!(full.is_empty(), "the banner wraps at 80 columns:\n{s}");
+    for (cmd, expect) in [
+        ("help", "help COMMAND"),
+        ("models", "models MODEL"),
+        ("help sim", "sub-commands"),
+        ("help servo", "sub-commands"),
+    ] {
         t.keys(&["C-l"]);
         t.literal(cmd);
         t.keys(&["Enter"]);
@@ -202,6 +211,27 @@ fn help_and_models_fit_80_columns() {
         let full: Vec<&str> = s.lines().filter(|l| l.chars().count() >= 80).collect();
         assert!(full.is_empty(), "`{cmd}` wraps at 80 columns:\n{s}");
     }
+    // The completion menu on an empty line: every command with its summary, one a line,
+    // each cut between two words to fit.
+    t.keys(&["C-l"]);
+    t.keys(&["Tab"]);
+    t.keys(&["Tab"]);
+    let s = t.wait_for("the command menu", |s| s.contains("connect") && s.contains("eeprom"));
+    let full: Vec<&str> = s.lines().filter(|l| l.chars().count() >= 80).collect();
+    assert!(full.is_empty(), "the completion menu wraps at 80 columns:\n{s}");
+    let cut: Vec<&str> = s.lines().filter(|l| l.trim_end().ends_with('…')).collect();
+    assert!(!cut.is_empty(), "long summaries are cut:\n{s}");
+    for l in &cut {
+        let kept = l.trim_end().trim_end_matches('…');
+        let name = kept.split_whitespace().next().unwrap();
+        let summary = plcsh::shell::commands::find(name).expect("a command").summary;
+        let shown = kept[name.len()..].trim_start();
+        assert!(
+            summary.starts_with(shown) && summary[shown.len()..].starts_with([' ', ',', ';', ':']),
+            "`{l}` ends inside a word of `{summary}`"
+        );
+    }
+    t.keys(&["C-u"]);
     // A long inline hint (the servo usage) is cut at the edge instead of wrapping under the prompt.
     t.keys(&["C-l"]);
     t.literal("servo ");

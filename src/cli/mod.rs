@@ -96,6 +96,8 @@ pub enum Sub {
     Devices,
     /// List the serial ports present, with USB adapter (VID:PID, product, serial number).
     Ports,
+    /// Print where every file lives: profiles, Lua modules, state, history, snapshots, UMPK flash, recordings.
+    Paths,
     /// Print a shell completion script (bash, zsh, fish, powershell), or write them all.
     Completions {
         /// The shell to print the script for.
@@ -147,6 +149,11 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
         TimeMode::Stepped => Clock::stepped(),
     };
     let mut s = Session::new(clock);
+    crate::paths::set_in_effect(crate::paths::InEffect {
+        config: cli.config.clone().or_else(crate::paths::config_file),
+        state: state_file(cli),
+        record: cli.record.clone(),
+    });
     if let Some(path) = &cli.config {
         // A file named on the command line must exist (a typo would silently load nothing).
         if !path.exists() {
@@ -401,6 +408,7 @@ fn run(cli: &Cli, mut shell: Shell, style: Style, mut out: std::io::StdoutLock<'
             Sub::Completions { shell, write } => completions::run(*shell, write.as_deref(), &mut out),
             Sub::Devices => i32::from(!shell.run_line("devices", &mut out)),
             Sub::Ports => i32::from(!shell.run_line("ports", &mut out)),
+            Sub::Paths => i32::from(!shell.run_line("paths", &mut out)),
             Sub::Sim { cmd: serve::SimCmd::Serve(args) } => serve::run(cli, args, style, &mut out),
             Sub::Sim { cmd: serve::SimCmd::Control(args) } => serve::control_run(args, style, &mut out),
             Sub::Agent(a) => agent::run(a, &mut out),

@@ -1129,9 +1129,17 @@ fn finish(mut d: Driver, u: &DeviceUrl) -> Result<Box<dyn Device>> {
     Ok(Box::new(d))
 }
 
+/// The URL parameters of the programming port (`fx:`), the computer link (`fxlink:`) and the
+/// simulator (`sim-fx:`).
+pub const PORT_PARAMS: &[&str] = &["baud", "model", "timeout", "retries"];
+pub const LINK_PARAMS: &[&str] =
+    &["station", "pc", "wait", "baud", "bits", "parity", "stop", "sum", "format", "xy", "model", "timeout", "retries"];
+pub const SIM_PARAMS: &[&str] =
+    &["model", "protocol", "station", "pc", "wait", "sum", "format", "xy", "share", "timeout", "retries", "program"];
+
 /// Opens `fx:PORT?baud=9600&model=FX2N&timeout=500ms&retries=3`: the programming port, 7E1.
 pub fn open_port(u: &DeviceUrl) -> Result<Box<dyn Device>> {
-    u.expect_params(&["baud", "model", "timeout", "retries"])?;
+    u.expect_params(PORT_PARAMS)?;
     let carrier = Carrier::from_url(u, "fx:COM6 or fx:/dev/ttyUSB0")?;
     let model = model_of(u, None)?;
     let baud = u.param_num::<u32>("baud")?.unwrap_or(9600);
@@ -1151,9 +1159,7 @@ pub fn open_port(u: &DeviceUrl) -> Result<Box<dyn Device>> {
 
 /// Opens `fxlink:PORT?station=0&pc=FF&wait=0&baud=9600&bits=7&parity=e&stop=1&sum=1&format=1`.
 pub fn open_link(u: &DeviceUrl) -> Result<Box<dyn Device>> {
-    u.expect_params(&[
-        "station", "pc", "wait", "baud", "bits", "parity", "stop", "sum", "format", "xy", "model", "timeout", "retries",
-    ])?;
+    u.expect_params(LINK_PARAMS)?;
     let carrier = Carrier::from_url(u, "fxlink:COM7?station=0 or fxlink:/dev/ttyUSB0?station=0")?;
     let model = model_of(u, None)?;
     let header = Header {
@@ -1211,9 +1217,7 @@ pub fn sim_plc(model: &'static Model, share: Option<&str>, clock: &Clock) -> Res
 /// Opens `sim-fx:MODEL?protocol=port|link&station=0&sum=1&format=1&share=NAME&program=FILE.il`
 /// on the session's clock; `program` loads an FX list into the PLC ([`super::program`]).
 pub fn open_sim(u: &DeviceUrl, clock: &Clock) -> Result<Box<dyn Device>> {
-    u.expect_params(&[
-        "model", "protocol", "station", "pc", "wait", "sum", "format", "xy", "share", "timeout", "retries", "program",
-    ])?;
+    u.expect_params(SIM_PARAMS)?;
     let model = model_of(u, Some(if u.target.is_empty() { "FX2N" } else { &u.target }))?;
     let plc = sim_plc(model, u.param("share"), clock)?;
     if let Some(p) = u.param("program") {

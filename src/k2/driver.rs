@@ -131,6 +131,23 @@ pub struct Settings {
 }
 
 /// Parses `timeout=`: milliseconds, or a duration with a unit (`500ms`, `2s`).
+/// Checks a K2 wire option (a profile's `[options]`, `Device::set_option`) without a
+/// connection: profiles are checked with it when the file is loaded.
+pub fn check_option(key: &str, value: &str) -> Result<()> {
+    match key {
+        "word_order" => WordOrder::parse(value).map(|_| ()),
+        "timeout" => parse_timeout(value).map(|_| ()),
+        "retries" => parse_retries(value).map(|_| ()),
+        "agent" => Ok(()),
+        _ => Err(Error::usage(format!("K2 wire devices have no option `{key}`"))
+            .hint("options: word_order (high-first, low-first), timeout, retries, agent")),
+    }
+}
+
+fn parse_retries(value: &str) -> Result<u32> {
+    value.parse().map_err(|_| Error::usage(format!("`retries={value}` is not a number")))
+}
+
 fn parse_timeout(v: &str) -> Result<Duration> {
     crate::core::literal::parse_timeout(v).map_err(Error::usage)
 }
@@ -244,15 +261,21 @@ impl ReadPlan {
     }
 }
 
+/// The URL parameters of a K2 on a wire; a serial line (`rtu:`, `rtu+rfc2217:`) also takes
+/// [`LINE_PARAMS`].
+pub const PARAMS: &[&str] = &["unit", "model", "word_order", "timeout", "retries", "agent"];
+/// The serial line's parameters (`rtu:PORT`, `rtu+rfc2217://…`).
+pub const LINE_PARAMS: &[&str] = &["baud", "parity", "stop"];
+
 impl K2Wire {
     /// Opens `tcp://…`, `rtu:…` or `rtu+tcp://…` and connects.
     pub fn open(url: &DeviceUrl) -> Result<K2Wire> {
-        let mut known = vec!["unit", "model", "word_order", "timeout", "retries", "agent"];
+        let mut known = PARAMS.to_vec();
         let link = match url.scheme.as_str() {
             "tcp" => Link::Tcp { addr: with_port(&url.target) },
             "rtu+tcp" => Link::RtuOverTcp { addr: with_port(&url.target) },
             "rtu" | "rtu+rfc2217" => {
-                known.extend(["baud", "parity", "stop"]);
+                known.extend(LINE_PARAMS);
                 let carrier =
                     Carrier::from_url(url, "rtu:COM3?baud=19200&unit=1 or rtu:/dev/ttyUSB0?baud=19200&unit=1")?;
                 let parity = url.param("parity").unwrap_or("none");
@@ -637,18 +660,13 @@ impl Device for K2Wire {
     }
 
     fn set_option(&mut self, key: &str, value: &str) -> Result<()> {
+        check_option(key, value)?;
         match key {
             "word_order" => self.settings.word_order = WordOrder::parse(value)?,
             "timeout" => self.settings.timeout = parse_timeout(value)?,
-            "retries" => {
-                self.settings.retries =
-                    value.parse().map_err(|_| Error::usage(format!("`retries={value}` is not a number")))?
-            }
+            "retries" => self.settings.retries = parse_retries(value)?,
             "agent" => self.agent = Some(sm::client(value, self.settings.timeout)?),
-            _ => {
-                return Err(Error::usage(format!("K2 wire devices have no option `{key}`"))
-                    .hint("options: word_order, timeout, retries, agent"))
-            }
+            _ => unreachable!("check_option knows every option"),
         }
         Ok(())
     }

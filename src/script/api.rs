@@ -312,6 +312,7 @@ pub fn register(lua: &Lua) -> mlua::Result<()> {
     p.set("wait_until", lua.create_function(wait_until)?)?;
     p.set("_interrupted", lua.create_function(|lua, ()| Ok(interrupt_flag(lua)?.load(Ordering::Relaxed)))?)?;
     p.set("errinfo", lua.create_function(errinfo)?)?;
+    p.set("_explain", lua.create_function(super::error::explain)?)?;
     p.set("table", lua.create_function(table)?)?;
     p.set("_write", lua.create_function(|lua, text: String| show(lua, &Outcome::new("print").text(text)))?)?;
     lua.set_named_registry_value(ABORT_KEY, lua.create_table()?)?;

@@ -246,6 +246,38 @@ fn leading_location(msg: &str) -> Option<String> {
         .then(|| format!("{file}:{line}"))
 }
 
+/// `plc.read("VW0")`: a method called with a dot gets a string where `self` goes. The
+/// explanation, when `e` is that mistake (the same at top level and inside `pcall`).
+fn dot_for_colon(e: &mlua::Error) -> Option<String> {
+    let mut cur = e;
+    loop {
+        match cur {
+            mlua::Error::CallbackError { cause, .. } | mlua::Error::WithContext { cause, .. } => cur = cause,
+            mlua::Error::BadArgument { to: Some(to), name: Some(name), .. } if name == "self" => {
+                let method = to.rsplit('.').next().unwrap_or(to);
+                return Some(format!(
+                    "`{method}` is a method: call it with a colon, `dev:{method}(…)`, not a dot `dev.{method}(…)`"
+                ));
+            }
+            _ => return None,
+        }
+    }
+}
+
+/// `plcsh._explain(e)`, applied by the prelude's `pcall`, `xpcall` and `coroutine.resume`
+/// to a caught error: a method called with a dot becomes the explanation a script gets at
+/// top level (with the script line), any other error is returned as it is.
+pub fn explain(_lua: &mlua::Lua, v: mlua::Value) -> mlua::Result<mlua::Value> {
+    let mlua::Value::Error(e) = &v else { return Ok(v) };
+    let Some(message) = dot_for_colon(e) else { return Ok(v) };
+    let location = match e.as_ref() {
+        mlua::Error::CallbackError { traceback, .. } => split_traceback(traceback).1.as_deref().and_then(first_frame),
+        _ => None,
+    };
+    let error = Error::new(ErrorKind::Script, message);
+    Ok(mlua::Value::Error(Box::new(mlua::Error::external(LuaFacing { cmd: None, error, location }))))
+}
+
 /// Turns a failed chunk's Lua error into a report.
 pub fn failure(e: &mlua::Error) -> Failure {
     // The outermost traceback is the fullest one.
@@ -269,14 +301,7 @@ pub fn failure(e: &mlua::Error) -> Failure {
     }
     let (message, tb) = match cur {
         mlua::Error::RuntimeError(m) => split_traceback(m),
-        // `plc.read("VW0")`: a method called with a dot gets a string where `self` goes.
-        mlua::Error::BadArgument { to: Some(to), name: Some(name), .. } if name == "self" => {
-            let method = to.rsplit('.').next().unwrap_or(to);
-            (
-                format!("`{method}` is a method: call it with a colon, `dev:{method}(…)`, not a dot `dev.{method}(…)`"),
-                None,
-            )
-        }
+        _ if dot_for_colon(cur).is_some() => (dot_for_colon(cur).unwrap_or_default(), None),
         mlua::Error::SyntaxError { message, .. } => (message.clone(), None),
         other => split_traceback(&other.to_string()),
     };

@@ -15,7 +15,7 @@ mod api;
 pub mod bridge;
 mod device;
 pub mod error;
-mod paths;
+pub mod paths;
 pub mod sandbox;
 mod snapshot;
 mod wire;

@@ -7,13 +7,18 @@ local write, select, tostring, type, error = plcsh._write, select, tostring, typ
 
 -- Ctrl-C must reach the top even through pcall: a protected call that failed while the
 -- script is being interrupted re-raises (the hook would otherwise be caught forever).
+-- A caught error is explained as at top level (`plc.get(…)` with a dot: use a colon).
 local rawpcall, rawxpcall, rawresume, stopping = pcall, xpcall, coroutine.resume, plcsh._interrupted
+local explain = plcsh._explain
 local function pass(ok, ...)
   if not ok and stopping() then error((...), 0) end
+  if not ok then return ok, explain((...)), select(2, ...) end
   return ok, ...
 end
 function pcall(f, ...) return pass(rawpcall(f, ...)) end
-function xpcall(f, handler, ...) return pass(rawxpcall(f, handler, ...)) end
+function xpcall(f, handler, ...)
+  return pass(rawxpcall(f, function(e) return handler(explain(e)) end, ...))
+end
 function coroutine.resume(co, ...) return pass(rawresume(co, ...)) end
 
 local show

@@ -523,11 +523,15 @@ fn port_gone(e: &std::io::Error) -> bool {
     crate::core::link::port_gone(e)
 }
 
+/// The URL parameters of a drive on a serial line (`kinco:`) and of the simulator (`sim-servo:`).
+pub const SERIAL_PARAMS: &[&str] = &["id", "baud", "echo", "loop", "timeout", "encoder", "control"];
+pub const SIM_PARAMS: &[&str] = &["id", "drives", "echo", "loop", "timeout", "encoder", "strict", "baud", "latency"];
+
 ///
 /// The line may be a port (`kinco:COM4`, `kinco:/dev/ttyUSB0`), a serial device server's
 /// raw TCP port (`kinco+tcp://HOST:PORT`) or its RFC 2217 port (`kinco+rfc2217://HOST:PORT`).
 pub fn open_serial(u: &DeviceUrl) -> Result<Box<dyn Device>> {
-    u.expect_params(&["id", "baud", "echo", "loop", "timeout", "encoder", "control"])?;
+    u.expect_params(SERIAL_PARAMS)?;
     let c = common(u)?;
     let baud = u.param_num::<u32>("baud")?.unwrap_or(DEFAULT_BAUD);
     if baud == 0 {
@@ -550,7 +554,7 @@ pub fn open_serial(u: &DeviceUrl) -> Result<Box<dyn Device>> {
 
 /// Opens `sim-servo:[NAME]?id=1&drives=1,2&echo=0`: the in-process simulator.
 pub fn open_sim(u: &DeviceUrl, clock: &Clock) -> Result<Box<dyn Device>> {
-    u.expect_params(&["id", "drives", "echo", "loop", "timeout", "encoder", "strict", "baud", "latency"])?;
+    u.expect_params(SIM_PARAMS)?;
     let c = common(u)?;
     let strict = match u.param("strict") {
         None | Some("0") | Some("false") | Some("off") => false,

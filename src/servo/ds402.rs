@@ -188,6 +188,9 @@ pub fn decode_status(sw: u16, mode: Option<i8>) -> Status {
 }
 
 /// Mode names for `servo mode`.
+/// The operating modes `servo mode` takes, by number (their names: [`mode_name`]).
+pub const MODES: &[i8] = &[1, 3, -3, 6, 4, -4];
+
 pub fn mode_number(name: &str) -> Option<i8> {
     Some(match name {
         "position" | "pp" | "1" => 1,

@@ -56,10 +56,23 @@ pub struct Hint {
     pub note: String,
 }
 
-/// Commands whose argument is a file (`run FILE`, `eeprom dump FILE`): (command, sub-command or "").
+/// Commands whose argument is a file (`run FILE`, `eeprom dump FILE`, `sim program load
+/// FILE.il`): (command, the words before the file after an optional `[DEVICE]`).
 /// Options named `to=`/`file=` complete paths for every command.
-pub static FILE_ARGS: &[(&str, &str)] =
-    &[("run", ""), ("source", ""), ("eeprom", "dump"), ("eeprom", "restore"), ("eeprom", "load"), ("eeprom", "save")];
+pub static FILE_ARGS: &[(&str, &[&str])] = &[
+    ("run", &[]),
+    ("source", &[]),
+    ("eeprom", &["dump"]),
+    ("eeprom", &["restore"]),
+    ("eeprom", &["load"]),
+    ("eeprom", &["save"]),
+    ("sim", &["program", "load"]),
+    ("umpk", &["program"]),
+];
+
+/// Commands whose sub-commands take operands (`servo read OBJ…`, `umpk monitor I0 Q0`): any
+/// other sub-command's arguments are values, never operands or `device:` prefixes.
+const OPERAND_SUBS: &[(&str, &[&str])] = &[("servo", &["read"]), ("umpk", &["monitor"])];
 
 /// Option keys commands accept, completed as `key=`.
 pub static OPTION_KEYS: &[(&str, &[&str])] =
@@ -79,6 +92,10 @@ enum Kind {
     Operands,
     HelpTopic,
     Files,
+    /// K2 model names (`models K209`).
+    Models,
+    /// DS402 operating modes (`servo mode p`).
+    ServoModes,
     Nothing,
 }
 
@@ -118,8 +135,11 @@ fn kind(ctx: &Ctx, at_command: bool, view: &View) -> Kind {
     }
     let n = ctx.args.len();
     let sub = ctx.args.first().copied().unwrap_or("");
+    let rest = after_device(ctx, view);
     // File arguments by name, so `run FILE` completes paths even before `run` is registered.
-    if FILE_ARGS.iter().any(|(c, s)| *c == ctx.name && ((s.is_empty() && n == 0) || (*s == sub && n == 1))) {
+    if FILE_ARGS.iter().any(|(c, words)| {
+        *c == ctx.name && (rest.len() == words.len() && rest.iter().zip(*words).all(|(a, w)| a.eq_ignore_ascii_case(w)))
+    }) {
         return Kind::Files;
     }
     if let Some((k, _)) = ctx.word.split_once('=') {
@@ -151,10 +171,39 @@ fn kind(ctx: &Ctx, at_command: bool, view: &View) -> Kind {
                 Kind::Nothing
             }
         }
-        "devices" | "quit" => Kind::Nothing,
-        _ if !cmd.subcommands.is_empty() && n == 0 => Kind::Subcommand,
+        "devices" | "quit" | "paths" | "ports" => Kind::Nothing,
+        "models" => {
+            if n == 0 {
+                Kind::Models
+            } else {
+                Kind::Nothing
+            }
+        }
+        _ if !cmd.subcommands.is_empty() && rest.is_empty() => Kind::Subcommand,
         "sim" => Kind::Nothing,
-        _ => Kind::Operands,
+        "servo" if rest.len() == 1 && rest[0].eq_ignore_ascii_case("mode") => Kind::ServoModes,
+        name => match OPERAND_SUBS.iter().find(|(c, _)| *c == name) {
+            Some((_, subs)) if !rest.first().is_some_and(|r| subs.iter().any(|s| r.eq_ignore_ascii_case(s))) => {
+                Kind::Nothing
+            }
+            _ => Kind::Operands,
+        },
+    }
+}
+
+/// The words after the command, without a leading `[DEVICE]` (`servo axis2 mode` → `mode`)
+/// for the commands whose usage has one.
+fn after_device<'c>(ctx: &'c Ctx, view: &View) -> &'c [&'c str] {
+    let takes_device = ctx.cmd.is_some_and(|c| c.usage.contains("[DEVICE]"));
+    match ctx.args.first() {
+        Some(first)
+            if takes_device
+                && !ctx.cmd.is_some_and(|c| c.subcommands.contains(first))
+                && view.devices.iter().any(|d| d.name == *first) =>
+        {
+            &ctx.args[1..]
+        }
+        _ => &ctx.args,
     }
 }
 
@@ -213,16 +262,44 @@ fn operands(word: &str, view: &View) -> Vec<Suggestion> {
     v
 }
 
+/// The models each simulator scheme takes after its colon: (scheme, names, what).
+fn sim_models() -> [(&'static str, Vec<&'static str>, &'static str); 3] {
+    [
+        ("sim:", crate::k2::catalog::MODELS.iter().map(|m| m.name).collect(), "simulated K2"),
+        ("sim-fx:", crate::fx::model::MODELS.iter().map(|m| m.name).collect(), "simulated FX PLC"),
+        ("sim-umpk:", crate::umpk::model::MODELS.iter().map(|m| m.name).collect(), "simulated UMPK"),
+    ]
+}
+
+fn models(word: &str) -> Vec<Suggestion> {
+    crate::k2::catalog::MODELS
+        .iter()
+        .filter(|m| starts_with_ci(m.name, word))
+        .map(|m| Suggestion { text: m.name.to_string(), meaning: "K2 model".into() })
+        .collect()
+}
+
+fn servo_modes(word: &str) -> Vec<Suggestion> {
+    crate::servo::ds402::MODES
+        .iter()
+        .map(|n| crate::servo::ds402::mode_name(*n))
+        .filter(|m| starts_with_ci(m, word))
+        .map(|m| Suggestion { text: m.to_string(), meaning: "operating mode".into() })
+        .collect()
+}
+
 fn urls(word: &str, view: &View) -> Vec<Suggestion> {
     let mut v: Vec<Suggestion> = Vec::new();
-    if starts_with_ci(word, "sim:") {
-        for m in crate::k2::catalog::MODELS {
-            let text = format!("sim:{}", m.name);
-            if starts_with_ci(&text, word) {
-                v.push(Suggestion { text, meaning: "simulated K2".into() });
+    for (scheme, names, what) in sim_models() {
+        if starts_with_ci(word, scheme) {
+            for name in names {
+                let text = format!("{scheme}{name}");
+                if starts_with_ci(&text, word) {
+                    v.push(Suggestion { text, meaning: what.into() });
+                }
             }
+            return v;
         }
-        return v;
     }
     for (s, meaning) in crate::session::SCHEMES {
         if starts_with_ci(s, word) {
@@ -298,6 +375,8 @@ pub fn complete(line: &str, pos: usize, view: &View) -> Completion {
             }
         }
         Kind::Files => files(word, view),
+        Kind::Models => models(word),
+        Kind::ServoModes => servo_modes(word),
         Kind::Nothing => Vec::new(),
     };
     items.sort_by(|a, b| a.text.cmp(&b.text));
@@ -518,6 +597,27 @@ mod tests {
         assert_eq!(texts("trace VW0 to=tr").1, vec!["to=trend.csv".to_string()]);
         assert_eq!(texts("eeprom dump t").1, vec!["trend.csv".to_string()]);
         assert!(texts("eeprom t").1.is_empty(), "only after the sub-command that takes a file");
+    }
+
+    #[test]
+    fn files_after_sim_program_load_and_umpk_program() {
+        assert_eq!(texts("sim program load scr").1, vec!["scripts/".to_string(), "scripts/ramp.lua".to_string()]);
+        assert_eq!(texts("umpk program tr").1, vec!["trend.csv".to_string()]);
+        assert_eq!(texts("umpk plc program tr").1, vec!["trend.csv".to_string()], "after a [DEVICE]");
+        assert!(texts("sim program tr").1.is_empty(), "`sim program` alone takes no file");
+    }
+
+    #[test]
+    fn models_profiles_and_servo_modes() {
+        let (_, m) = texts("models K209");
+        assert!(m.contains(&"K209M-56DT".to_string()) && m.iter().all(|t| t.starts_with("K209")), "{m:?}");
+        assert_eq!(texts("connect x sim-fx:FX2").1.first().map(String::as_str), Some("sim-fx:FX2N"));
+        assert_eq!(texts("connect x sim-umpk:").1, vec!["sim-umpk:UMPK16".to_string(), "sim-umpk:UMPK8".to_string()]);
+        assert_eq!(texts("connect p pr").1, vec!["press1".to_string()], "a profile under another name");
+        assert_eq!(texts("servo mode p").1, vec!["position".to_string(), "pulse".to_string()]);
+        assert_eq!(texts("servo servo mode h").1, vec!["homing".to_string()], "after a [DEVICE]");
+        assert!(texts("servo move p").1.is_empty(), "a move's position is no operand");
+        assert_eq!(texts("servo read servo:targ").1.len(), 2, "`servo read` takes objects");
     }
 
     #[test]

@@ -74,20 +74,29 @@ impl Completer for ShellHelper {
         let Some(s) = &self.session else { return Ok((pos, Vec::new())) };
         let c = complete::complete(line, pos, &view_of(s, &complete::list_paths));
         let width = c.items.iter().map(|s| s.text.chars().count()).max().unwrap_or(0);
+        // rustyline lists candidates in columns two apart: a candidate with its meaning is
+        // cut between words to fit the terminal (80 columns when its size is unknown).
+        let cols = super::term::size().map_or(80, |(c, _)| c).max(20);
         let pairs = c
             .items
             .into_iter()
-            .map(|s| Pair {
-                display: if s.meaning.is_empty() {
-                    s.text.clone()
-                } else {
-                    format!("{:<width$}  {}", s.text, s.meaning)
-                },
-                replacement: s.text,
-            })
+            .map(|s| Pair { display: menu_line(&s.text, &s.meaning, width, cols), replacement: s.text })
             .collect();
         Ok((c.start, pairs))
     }
+}
+
+/// One candidate as the completion menu shows it: the text, padded to `width`, then its
+/// meaning, cut between words so the line fits `cols` columns with the menu's gap.
+pub fn menu_line(text: &str, meaning: &str, width: usize, cols: usize) -> String {
+    if meaning.is_empty() {
+        return text.to_string();
+    }
+    let room = cols.saturating_sub(2);
+    if text.chars().count() + 4 > room {
+        return text.to_string();
+    }
+    super::term::fit_words(&format!("{text:<width$}  {meaning}"), room)
 }
 
 impl Hinter for ShellHelper {
@@ -110,7 +119,7 @@ impl Hinter for ShellHelper {
         // A hint longer than the rest of the terminal line would wrap under the prompt: cut it.
         let Some((cols, _)) = super::term::size() else { return Some(hint) };
         let room = cols.saturating_sub(self.prompt_width + line.chars().count() + 1);
-        Some(ShellHint { display: super::term::fit(&hint.display, room), insert: hint.insert })
+        Some(ShellHint { display: super::term::fit_words(&hint.display, room), insert: hint.insert })
     }
 }
 
@@ -126,6 +135,24 @@ impl Highlighter for ShellHelper {
 
 impl Validator for ShellHelper {}
 impl Helper for ShellHelper {}
+
+#[cfg(test)]
+mod menu_tests {
+    /// Every command's menu line fits 80 columns with the menu's gap and ends between words.
+    #[test]
+    fn menu_lines_fit_and_end_between_words() {
+        let width = 7;
+        for c in crate::shell::commands::COMMANDS {
+            let line = super::menu_line(c.name, c.summary, width, 80);
+            assert!(line.chars().count() <= 78, "{line}");
+            let shown = line.trim_end_matches('…')[width + 2..].to_string();
+            assert!(c.summary.starts_with(&shown), "{line}");
+            let after = &c.summary[shown.len()..];
+            assert!(after.is_empty() || after.starts_with([' ', ',', ';', ':']), "`{line}` cuts a word");
+        }
+        assert_eq!(super::menu_line("VW0", "", 5, 80), "VW0");
+    }
+}
 
 #[cfg(test)]
 mod session_tests {

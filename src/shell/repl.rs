@@ -10,7 +10,7 @@ use std::path::PathBuf;
 
 /// Where the REPL keeps its history (`~/.local/share/plcsh/history.txt` on Linux).
 pub fn history_path() -> Option<PathBuf> {
-    directories::ProjectDirs::from("", "", "plcsh").map(|d| d.data_dir().join("history.txt"))
+    crate::paths::history()
 }
 
 /// Runs the interactive REPL until `quit` or end of input. Returns the exit status.
@@ -30,12 +30,7 @@ pub fn interactive(shell: &mut Shell) -> i32 {
         let _ = ed.load_history(h);
     }
     let mut out = std::io::stdout();
-    let _ = writeln!(
-        out,
-        "plcsh {} — `help` lists commands, `quit` leaves. Devices: {}",
-        env!("CARGO_PKG_VERSION"),
-        device_list(shell)
-    );
+    let _ = writeln!(out, "{}", banner(&device_list(shell)));
     loop {
         let prompt = prompt(&shell.session);
         // Lend the session to the completer while the line is read (see helper.rs).
@@ -117,6 +112,15 @@ pub fn interactive(shell: &mut Shell) -> i32 {
         let _ = ed.save_history(h);
     }
     0
+}
+
+/// The REPL's first lines: the version and how to get help, then the open devices, wrapped
+/// between words to 80 columns.
+pub fn banner(devices: &str) -> String {
+    let mut lines = vec![format!("plcsh {} — `help` lists commands, `quit` leaves.", env!("CARGO_PKG_VERSION"))];
+    let wrapped = crate::core::text::wrap(&format!("Devices: {devices}"), 77);
+    lines.extend(wrapped.into_iter().enumerate().map(|(i, l)| if i == 0 { l } else { format!("  {l}") }));
+    lines.join("\n")
 }
 
 fn device_list(shell: &Shell) -> String {

@@ -620,10 +620,14 @@ fn options(d: &mut Driver, u: &DeviceUrl) -> Result<()> {
     Ok(())
 }
 
+/// The URL parameters of a UMPK on a serial line (`umpk:`) and of the simulator (`sim-umpk:`).
+pub const SERIAL_PARAMS: &[&str] = &["baud", "timeout", "model", "status_bits"];
+pub const SIM_PARAMS: &[&str] = &["model", "timeout", "status_bits", "state", "program"];
+
 /// Opens `umpk:/dev/ttyUSB0?baud=57600&timeout=500ms&model=UMPK16&status_bits=5,4,3,2,1,0`
 /// (or `umpk:COM5`, `umpk+tcp://HOST:PORT`, `umpk+rfc2217://HOST:PORT`).
 pub fn open_serial(u: &DeviceUrl) -> Result<Box<dyn Device>> {
-    u.expect_params(&["baud", "timeout", "model", "status_bits"])?;
+    u.expect_params(SERIAL_PARAMS)?;
     let carrier = Carrier::from_url(u, "umpk:COM5 or umpk:/dev/ttyUSB0")?;
     let want = model_param(u, u.param("model"))?;
     let baud = u.param_num::<u32>("baud")?.unwrap_or(codec::BAUD);
@@ -649,7 +653,7 @@ pub fn open_serial(u: &DeviceUrl) -> Result<Box<dyn Device>> {
 /// simulator on the session's clock (`state` keeps its flash, as `--umpk-state` does for
 /// the served one; `program` loads an IL lab program, as `sim program load` does).
 pub fn open_sim(u: &DeviceUrl, clock: &Clock) -> Result<Box<dyn Device>> {
-    u.expect_params(&["model", "timeout", "status_bits", "state", "program"])?;
+    u.expect_params(SIM_PARAMS)?;
     let m = model_param(u, u.param("model").or(Some(u.target.as_str())))?.unwrap_or(&model::MODELS[1]);
     let mut sim = Umpk::new(m, clock.clone());
     if let Some(v) = u.param("status_bits") {

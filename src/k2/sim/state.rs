@@ -152,7 +152,7 @@ struct StateFile {
 
 /// The default state file (`~/.local/share/plcsh/state.json` on Linux).
 pub fn default_path() -> Option<PathBuf> {
-    directories::ProjectDirs::from("", "", "plcsh").map(|d| d.data_dir().join("state.json"))
+    crate::paths::k2_state()
 }
 
 pub fn hex(bytes: &[u8]) -> String {

@@ -36,7 +36,9 @@ fn help(sh: &mut Shell, args: Args) -> Result<Outcome> {
         return sub_help(c, sub, words.next(), args);
     }
     if let Some(c) = super::find(&topic.to_ascii_lowercase()) {
-        let mut text = crate::core::text::wrap(c.usage, 78).join("\n    ");
+        // The usage's continuation lines are indented by 4: 75 columns of text keep every
+        // line within 79 (a line of 80 leaves some terminals at the edge).
+        let mut text = crate::core::text::wrap(c.usage, 75).join("\n    ");
         for line in crate::core::text::wrap(c.summary, 76) {
             text.push_str(&format!("\n  {line}"));
         }
@@ -110,7 +112,13 @@ fn sub_help(c: &CommandSpec, sub: &str, extra: Option<&str>, args: Args) -> Resu
             })
             .column(args.offset));
     }
-    let mut lines: Vec<String> = forms.iter().flat_map(|f| crate::core::text::wrap(f, 78)).collect();
+    let mut lines: Vec<String> = forms
+        .iter()
+        .flat_map(|f| {
+            let wrapped = crate::core::text::wrap(f, 75);
+            wrapped.into_iter().enumerate().map(|(i, l)| if i == 0 { l } else { format!("    {l}") })
+        })
+        .collect();
     if let Some(detail) = SUB_DETAILS.iter().find(|d| d.0 == c.name && d.1 == sub_l).map(|d| d.2) {
         lines.extend(crate::core::text::wrap(detail, 76).into_iter().map(|l| format!("  {l}")));
     }

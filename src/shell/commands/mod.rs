@@ -13,6 +13,7 @@ mod io;
 mod k2cmd;
 pub mod lua;
 pub mod models;
+pub mod paths;
 pub mod ports;
 pub mod profiles;
 pub(crate) mod pulse;
@@ -72,6 +73,7 @@ pub static COMMANDS: &[CommandSpec] = &[
     agent::AGENT,
     models::MODELS,
     ports::PORTS,
+    paths::PATHS,
     help::HELP,
     help::QUIT,
 ];

@@ -125,8 +125,7 @@ pub fn default_state(link: &Path, model: &Model) -> Option<PathBuf> {
     let abs = std::path::absolute(link).unwrap_or_else(|_| link.to_path_buf());
     let key: String =
         abs.to_string_lossy().chars().map(|c| if c.is_ascii_alphanumeric() || c == '-' { c } else { '_' }).collect();
-    directories::ProjectDirs::from("", "", "plcsh")
-        .map(|d| d.data_dir().join("umpk").join(format!("{}{key}.json", model.name)))
+    crate::paths::umpk_flash().map(|d| d.join(format!("{}{key}.json", model.name)))
 }
 
 /// `--umpk-model`: a model name from the table.

@@ -1,0 +1,108 @@
+//! Where plcsh keeps its files, in one place: the profile file, the user's Lua modules, the
+//! simulated K2's state, the REPL history, named snapshots, a served UMPK's flash, and
+//! recordings. Every module that reads or writes one of them asks here, and `plcsh paths`
+//! (or `paths` in the shell) prints this table with the file in effect for this run.
+//!
+//! The user's directories come from `directories` (`~/.config/plcsh` and
+//! `~/.local/share/plcsh` on Linux, `%APPDATA%\plcsh\…` on Windows, `~/Library/Application
+//! Support/plcsh` on macOS); environment variables and flags override single files.
+
+use std::path::PathBuf;
+use std::sync::OnceLock;
+
+fn dirs() -> Option<directories::ProjectDirs> {
+    directories::ProjectDirs::from("", "", "plcsh")
+}
+
+fn env_path(key: &str) -> Option<PathBuf> {
+    std::env::var_os(key).filter(|p| !p.is_empty()).map(PathBuf::from)
+}
+
+/// The profile file: `PLCSH_CONFIG`, else `devices.toml` in the user's config directory
+/// (`--config FILE` overrides both).
+pub fn config_file() -> Option<PathBuf> {
+    env_path("PLCSH_CONFIG").or_else(|| dirs().map(|d| d.config_dir().join("devices.toml")))
+}
+
+/// The user's Lua modules (`lib/` in the config directory).
+pub fn user_lib() -> Option<PathBuf> {
+    dirs().map(|d| d.config_dir().join("lib"))
+}
+
+/// The simulated K2's state file (backup area, retained ranges, clock) by default.
+pub fn k2_state() -> Option<PathBuf> {
+    dirs().map(|d| d.data_dir().join("state.json"))
+}
+
+/// The REPL history.
+pub fn history() -> Option<PathBuf> {
+    dirs().map(|d| d.data_dir().join("history.txt"))
+}
+
+/// The directory named snapshots live in: `PLCSH_SNAPSHOTS`, else the data directory's.
+pub fn snapshots() -> Option<PathBuf> {
+    env_path("PLCSH_SNAPSHOTS").or_else(|| dirs().map(|d| d.data_dir().join("snapshots")))
+}
+
+/// The directory a served UMPK keeps its flash in (one file per model and link) unless
+/// `--umpk-state FILE` names one.
+pub fn umpk_flash() -> Option<PathBuf> {
+    dirs().map(|d| d.data_dir().join("umpk"))
+}
+
+/// The files in effect for this run, as the command line set them (`--config`, `--state`):
+/// set once at start-up, read by `paths`.
+#[derive(Clone, Debug, Default)]
+pub struct InEffect {
+    pub config: Option<PathBuf>,
+    /// `None`: the state file is off (`--state none`).
+    pub state: Option<PathBuf>,
+    pub record: Option<PathBuf>,
+}
+
+static IN_EFFECT: OnceLock<InEffect> = OnceLock::new();
+
+/// Records the files the command line chose (the first call wins).
+pub fn set_in_effect(e: InEffect) {
+    let _ = IN_EFFECT.set(e);
+}
+
+/// One row of `paths`: a name (the JSON key), the path, and what sets it.
+pub struct Place {
+    pub name: &'static str,
+    pub path: String,
+    pub set_by: &'static str,
+}
+
+fn shown(p: Option<PathBuf>) -> String {
+    p.map(|p| p.display().to_string()).unwrap_or_else(|| "-".into())
+}
+
+/// Every file plcsh uses, with the one in effect for this run.
+pub fn places() -> Vec<Place> {
+    let e = IN_EFFECT.get().cloned().unwrap_or_else(|| InEffect {
+        config: config_file(),
+        state: env_path("PLCSH_STATE").or_else(k2_state),
+        record: None,
+    });
+    let lib: Vec<String> = crate::script::paths::lib_dirs().iter().map(|d| d.display().to_string()).collect();
+    let lib = if lib.is_empty() { "built in".to_string() } else { format!("{}, then built in", lib.join(", ")) };
+    vec![
+        Place { name: "config", path: shown(e.config), set_by: "--config, PLCSH_CONFIG" },
+        Place { name: "lib", path: lib, set_by: "PLCSH_LIB" },
+        Place { name: "user_lib", path: shown(user_lib()), set_by: "(your modules)" },
+        Place {
+            name: "state",
+            path: e.state.map(|p| p.display().to_string()).unwrap_or_else(|| "none".into()),
+            set_by: "--state, PLCSH_STATE",
+        },
+        Place { name: "history", path: shown(history()), set_by: "" },
+        Place { name: "snapshots", path: shown(snapshots()), set_by: "PLCSH_SNAPSHOTS" },
+        Place { name: "umpk_flash", path: shown(umpk_flash()), set_by: "sim serve --umpk-state" },
+        Place {
+            name: "recordings",
+            path: e.record.map(|p| p.display().to_string()).unwrap_or_else(|| "none (--record FILE)".into()),
+            set_by: "--record",
+        },
+    ]
+}
