@@ -19,9 +19,13 @@ struct Block {
     marker: Option<String>,
 }
 
+/// A block being read: its first line, info string, lines so far and marker.
+type OpenBlock<'a> = (usize, String, Vec<&'a str>, Option<String>);
+
 fn blocks(path: &Path, name: &str) -> Vec<Block> {
     let doc = std::fs::read_to_string(path).unwrap();
-    let (mut out, mut open): (Vec<Block>, Option<(usize, String, Vec<&str>, Option<String>)>) = (Vec::new(), None);
+    let mut out: Vec<Block> = Vec::new();
+    let mut open: Option<OpenBlock> = None;
     let mut last_comment: Option<String> = None;
     for (i, line) in doc.lines().enumerate() {
         if let Some((start, info, body, marker)) = open.as_mut() {
