@@ -476,8 +476,31 @@ fn every_example_in_the_readme_and_docs_runs() {
     assert!(t.run >= 60, "only {} examples ran", t.run);
 }
 
+/// A heading's anchor, as GitHub and mdBook make it: lower case, spaces to `-`, punctuation dropped.
+fn anchor(heading: &str) -> String {
+    let h = heading.trim_start_matches('#').trim().to_lowercase();
+    h.chars()
+        .filter(|c| c.is_alphanumeric() || matches!(c, '-' | '_' | ' '))
+        .map(|c| if c == ' ' { '-' } else { c })
+        .collect()
+}
+
+/// The anchors of a page's headings (outside fenced blocks).
+fn anchors(path: &Path) -> Vec<String> {
+    let mut fence = false;
+    let mut out = Vec::new();
+    for l in std::fs::read_to_string(path).unwrap_or_default().lines() {
+        if l.starts_with("```") {
+            fence = !fence;
+        } else if !fence && l.starts_with('#') && l.trim_start_matches('#').starts_with(' ') {
+            out.push(anchor(l));
+        }
+    }
+    out
+}
+
 /// No link leaves the repository: every Markdown link of the README and docs/ names a file of
-/// the checkout (an anchor within a page is not checked here).
+/// the checkout, and an anchor into a page names one of its headings.
 #[test]
 fn every_link_stays_in_the_repository() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).canonicalize().unwrap();
@@ -489,12 +512,16 @@ fn every_link_stays_in_the_repository() {
             let rest = &doc[k + 2..];
             let Some(end) = rest.find(')') else { continue };
             let target = &rest[..end];
-            if target.starts_with('#') || target.contains(' ') {
+            if target.contains(' ') {
                 continue;
             }
             count += 1;
-            let file = target.split('#').next().unwrap();
-            let full = path.parent().unwrap().join(file);
+            let (file, frag) = target.split_once('#').unwrap_or((target, ""));
+            let full = if file.is_empty() { path.clone() } else { path.parent().unwrap().join(file) };
+            let into_page = (!frag.is_empty() && file.ends_with(".md")) || file.is_empty();
+            if into_page && !anchors(&full).iter().any(|a| a == frag) {
+                bad.push(format!("{name}: {target} (no such heading)"));
+            }
             match full.canonicalize() {
                 Ok(p) if p.starts_with(&root) && !target.contains("://") => {}
                 _ => bad.push(format!("{name}: {target}")),
