@@ -136,21 +136,69 @@ fn quote(w: &str) -> String {
     format!("'{}'", w.replace('\'', "'\\''"))
 }
 
+/// A served simulated K2 standing in for a K2 on the wire: the same model, unit id and helper
+/// mailbox as the URL asks for, on Modbus TCP, RTU over TCP and RTU on a pty.
+fn served_k2(dir: &Path, url: &str) -> Option<(Served, String)> {
+    let (name, url) = match url.split_once('=').filter(|(n, _)| !n.contains(':')) {
+        Some((n, u)) => (format!("{n}="), u),
+        None => (String::new(), url),
+    };
+    let (scheme, rest) = url.split_once(':')?;
+    if !matches!(scheme, "tcp" | "rtu" | "rtu+tcp") {
+        return None;
+    }
+    let query = rest.split_once('?').map_or("", |(_, q)| q);
+    let param = |k: &str| query.split('&').find_map(|p| p.strip_prefix(&format!("{k}=")));
+    let default_model = if scheme == "tcp" { "K204ET-16DT" } else { "K205-16DT" };
+    static SERVED: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let link = dir.join(format!("k2-{}", SERVED.fetch_add(1, std::sync::atomic::Ordering::Relaxed)));
+    let link_s = link.display().to_string();
+    let model = param("model").unwrap_or(default_model).to_string();
+    let mut args = vec!["--tcp", "0", "--rtu-tcp", "0", "--rtu-pty", &link_s, "--model", &model];
+    if let Some(u) = param("unit") {
+        args.extend(["--unit", u]);
+    }
+    if let Some(a) = param("agent") {
+        args.extend(["--agent", a]);
+    }
+    let s = serve(&args);
+    let q = if query.is_empty() { String::new() } else { format!("?{query}") };
+    let to = match scheme {
+        "tcp" => format!("tcp://{}{q}", s.ready["tcp"].as_str()?),
+        "rtu+tcp" => format!("rtu+tcp://{}{q}", s.ready["rtu_tcp"].as_str()?),
+        _ => format!("rtu:{link_s}{q}"),
+    };
+    Some((s, format!("{name}{to}")))
+}
+
 /// A `plcsh …` line with its hardware devices replaced by simulators of the same family
-/// (`hardware` blocks); `Err` names a hardware device in an unmarked block.
-fn rewrite(line: &str, hardware: bool, served: &dyn Fn(&str) -> bool) -> Result<String, String> {
+/// (`hardware` blocks): a K2 on the wire by a served simulated K2 on the same transport, other
+/// families by their in-process simulators. `Err` names a hardware device in an unmarked block.
+fn rewrite(
+    dir: &Path,
+    line: &str,
+    hardware: bool,
+    served: &dyn Fn(&str) -> bool,
+) -> Result<(String, Vec<Served>), String> {
     let mut w = words(line);
+    let mut servers = Vec::new();
     for i in 1..w.len() {
         if matches!(w[i - 1].as_str(), "-d" | "--device") {
             if let Some(sim) = same_family(&w[i]).filter(|_| !served(&w[i])) {
                 if !hardware {
                     return Err(format!("needs hardware ({}): mark the block", w[i]));
                 }
-                w[i] = sim;
+                w[i] = match served_k2(dir, &w[i]) {
+                    Some((s, url)) => {
+                        servers.push(s);
+                        url
+                    }
+                    None => sim,
+                };
             }
         }
     }
-    Ok(w.iter().map(|s| quote(s)).collect::<Vec<_>>().join(" "))
+    Ok((w.iter().map(|s| quote(s)).collect::<Vec<_>>().join(" "), servers))
 }
 
 /// Runs a shell line in `dir` with `plcsh` on PATH and the test's private HOME.
@@ -340,9 +388,9 @@ fn run_sh_block(dir: &Path, b: &Block, marker: &str, t: &mut Tally) {
             Some((c, r)) => (c.to_string(), format!(" > {}", quote(words(r)[0].as_str()))),
             None => (l.clone(), String::new()),
         };
-        match rewrite(&cmd, hardware, &served) {
+        match rewrite(dir, &cmd, hardware, &served) {
             Err(e) => t.check(&b.at, &l, Err(e)),
-            Ok(cmd) => {
+            Ok((cmd, _servers)) => {
                 let o = sh(dir, &format!("{cmd}{redirect}"), "");
                 t.check(&b.at, &l, expect(&o));
             }
@@ -377,7 +425,7 @@ fn run_session_block(dir: &Path, b: &Block, hardware: bool, t: &mut Tally) {
             i += 1;
         }
         let cmd = cmd.split(" # ").next().unwrap().trim();
-        let cmd = match rewrite(cmd, hardware, &|_| false) {
+        let (cmd, _servers) = match rewrite(dir, cmd, hardware, &|_| false) {
             Ok(c) => c,
             Err(e) => {
                 t.check(&at, "", Err(e));
