@@ -227,17 +227,32 @@ fn sh(dir: &Path, line: &str, stdin: &str) -> std::process::Output {
 }
 
 /// Whitespace-insensitive: runs of spaces are one space.
+/// A leading wall-clock time column (`0.005166  plc → …`, as `record show` prints) is volatile:
+/// it is compared as `T`.
 fn norm(s: &str) -> String {
-    s.split_whitespace().collect::<Vec<_>>().join(" ")
+    let mut w: Vec<&str> = s.split_whitespace().collect();
+    if let Some(first) = w.first() {
+        let timestamp = first.split_once('.').is_some_and(|(a, b)| {
+            !a.is_empty()
+                && a.bytes().all(|c| c.is_ascii_digit())
+                && b.len() == 6
+                && b.bytes().all(|c| c.is_ascii_digit())
+        });
+        if timestamp && w.len() > 1 {
+            w[0] = "T";
+        }
+    }
+    w.join(" ")
 }
 
-/// Whether every shown line appears in `got`, in order; `…` in a shown line stands for anything.
-fn shows(shown: &[&str], got: &str) -> Result<(), String> {
-    let got: Vec<String> = got.lines().map(norm).collect();
-    let mut at = 0;
+/// Whether every shown line appears in what plcsh printed, in order within its stream (results on
+/// stdout, errors on stderr, as a terminal interleaves them); `…` in a shown line stands for anything.
+fn shows(shown: &[&str], o: &std::process::Output) -> Result<(), String> {
+    let streams: [Vec<String>; 2] = [stdout(o).lines().map(norm).collect(), stderr(o).lines().map(norm).collect()];
+    let mut at = [0, 0];
     for s in shown {
         let s = norm(s);
-        if s.is_empty() {
+        if s.is_empty() || s == "…" {
             continue;
         }
         let parts: Vec<&str> = s.split('…').collect();
@@ -251,8 +266,9 @@ fn shows(shown: &[&str], got: &str) -> Result<(), String> {
                 None => false,
             })
         };
-        match got[at..].iter().position(fits) {
-            Some(k) => at += k + 1,
+        let found = (0..2).find_map(|k| streams[k][at[k]..].iter().position(fits).map(|i| (k, i)));
+        match found {
+            Some((k, i)) => at[k] += i + 1,
             None => return Err(format!("shown line not in the output: {s:?}")),
         }
     }
@@ -353,13 +369,51 @@ fn fails_cleanly(o: &std::process::Output) -> Result<(), String> {
     }
 }
 
+/// The lines of an `sh` block: a command whose single quote spans lines is one line, and the
+/// lines under a command that are not commands themselves are its shown output.
+fn sh_commands(text: &str) -> Vec<(String, Vec<String>)> {
+    const OTHER: [&str; 11] =
+        ["tshark", "mbpoll", "picocom", "socat", "cargo", "rustup", "mkdir", "cp", ".", "sudo", "npm"];
+    let mut out: Vec<(String, Vec<String>)> = Vec::new();
+    let mut pending = String::new();
+    let mut in_output = false;
+    for line in text.replace("\\\n", " ").lines() {
+        if !pending.is_empty() {
+            pending.push(' ');
+            pending.push_str(line.trim());
+            if pending.matches('\'').count() % 2 == 0 {
+                out.push((std::mem::take(&mut pending), Vec::new()));
+            }
+            continue;
+        }
+        let l = line.trim();
+        let first = l.split_whitespace().next().unwrap_or("");
+        if l.starts_with("plcsh ") || l.starts_with("printf ") {
+            in_output = !l.starts_with("plcsh sim serve");
+            if l.matches('\'').count() % 2 == 1 {
+                pending = l.to_string();
+            } else {
+                out.push((l.to_string(), Vec::new()));
+            }
+        } else if l.is_empty() || l.starts_with('#') || OTHER.contains(&first) {
+            in_output = false;
+        } else if in_output {
+            if let Some(last) = out.last_mut() {
+                last.1.push(l.to_string());
+            }
+        }
+    }
+    out
+}
+
+/// An `sh` block: its `plcsh` lines run in order (servers kept for the block), and the output a
+/// command shows under it must appear in what it printed.
 fn run_sh_block(dir: &Path, b: &Block, marker: &str, t: &mut Tally) {
     let hardware = marker.starts_with("hardware");
-    let text = b.text.replace("\\\n", " ");
     let mut subs: Vec<(String, String)> = Vec::new();
     let mut servers = Vec::new();
-    for line in text.lines() {
-        let mut l = line.trim().to_string();
+    for (line, shown) in sh_commands(&b.text) {
+        let mut l = line;
         let is_plcsh = l.starts_with("plcsh ") || (l.starts_with("printf ") && l.contains("| plcsh"));
         if !is_plcsh {
             continue;
@@ -378,7 +432,11 @@ fn run_sh_block(dir: &Path, b: &Block, marker: &str, t: &mut Tally) {
             l = l.replace(from, to);
         }
         let served = |u: &str| subs.iter().any(|(_, to)| u.contains(to.as_str()));
-        let expect = |o: &std::process::Output| if marker == "fails" { fails_cleanly(o) } else { ok_or_err(o, true) };
+        let shown: Vec<&str> = shown.iter().map(String::as_str).collect();
+        let expect = |o: &std::process::Output| {
+            let status = if marker == "fails" { fails_cleanly(o) } else { ok_or_err(o, true) };
+            status.and_then(|_| shows(&shown, o).map_err(|e| format!("{e}\n--- output:\n{}", both(o))))
+        };
         if l.starts_with("printf ") {
             let o = sh(dir, &l, "");
             t.check(&b.at, &l, expect(&o));
@@ -440,7 +498,7 @@ fn run_session_block(dir: &Path, b: &Block, hardware: bool, t: &mut Tally) {
         let o = sh(dir, &cmd, &stdin);
         // A shown error is the example's point; the session then exits 1 as plcsh does.
         let shown_error = shown.iter().any(|l| l.starts_with("error["));
-        let mut r = shows(&shown, &both(&o));
+        let mut r = shows(&shown, &o);
         if r.is_ok() && !shown_error && !o.status.success() {
             r = ok_or_err(&o, true);
         }
