@@ -381,7 +381,7 @@ fn sh_commands(text: &str) -> Vec<(String, Vec<String>)> {
         if !pending.is_empty() {
             pending.push(' ');
             pending.push_str(line.trim());
-            if pending.matches('\'').count() % 2 == 0 {
+            if pending.matches('\'').count().is_multiple_of(2) {
                 out.push((std::mem::take(&mut pending), Vec::new()));
             }
             continue;
@@ -390,7 +390,7 @@ fn sh_commands(text: &str) -> Vec<(String, Vec<String>)> {
         let first = l.split_whitespace().next().unwrap_or("");
         if l.starts_with("plcsh ") || l.starts_with("printf ") {
             in_output = !l.starts_with("plcsh sim serve");
-            if l.matches('\'').count() % 2 == 1 {
+            if !l.matches('\'').count().is_multiple_of(2) {
                 pending = l.to_string();
             } else {
                 out.push((l.to_string(), Vec::new()));
