@@ -111,7 +111,7 @@ fn models_lists_the_catalogue() {
     assert!(names.contains(&"K205-16DR") && names.contains(&"K209M-56DT"));
 }
 
-/// `plcsh ports` (README "Windows: a first session"): the serial ports present, as a table or
+/// `plcsh ports` (docs/install.md, "Windows: a first session"): the serial ports present, as a table or
 /// as JSON with the fields a script needs; extra words are refused.
 #[test]
 fn ports_lists_serial_ports_as_table_or_json() {
@@ -132,7 +132,7 @@ fn ports_lists_serial_ports_as_table_or_json() {
     assert!(both(&o).contains("takes no arguments"), "{}", both(&o));
 }
 
-/// The device-server URLs the README shows name the carrier plcsh uses (parsed, not
+/// The device-server URLs the user guide shows (docs/install.md) name the carrier plcsh uses (parsed, not
 /// connected: those addresses are not on this machine).
 #[test]
 fn readme_device_server_urls_parse() {

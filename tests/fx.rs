@@ -1221,12 +1221,11 @@ fn shell_words(line: &str) -> Vec<String> {
     words
 }
 
-/// The README's FX examples, run as written (the served one against this test's own ptys in
+/// The user guide's FX examples (docs/fx.md), run as written (the served one against this test's own ptys in
 /// place of /tmp/fx and /tmp/fxlink): every command succeeds.
 #[test]
 fn the_readme_fx_examples_run() {
-    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
-    let section = readme.split("\n## FX-protocol PLCs").nth(1).unwrap().split("\n## ").next().unwrap();
+    let section = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/fx.md")).unwrap();
     let lines: Vec<String> = section
         .split("```sh")
         .skip(1)

@@ -1,4 +1,4 @@
-//! The simulated FX PLC as a PLC in RUN, driven through the real binary: the README's example
+//! The simulated FX PLC as a PLC in RUN, driven through the real binary: the user guide's example (docs/fx.md)
 //! (run exactly as printed), the clock relay M8013 and the initial pulse in stepped time,
 //! timers reaching their preset, RUN/STOP, refused writes and names; and a served FX PLC
 //! running a program whose timer value both ports read (loopback TCP, port 0, readiness line).
@@ -9,11 +9,11 @@ use plcsh::core::Value;
 
 /// The `-c` argument of the README's FX example that loads `scripts/fx_blink.il`.
 fn readme_example() -> String {
-    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/fx.md")).unwrap();
     let line = readme
         .lines()
         .find(|l| l.starts_with("plcsh --time stepped -d fx=sim-fx:FX2N -c \"use fx; sim program load"))
-        .expect("the README's FX program example");
+        .expect("the FX program example of docs/fx.md");
     line.split('"').nth(1).unwrap().to_string()
 }
 

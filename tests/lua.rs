@@ -305,7 +305,7 @@ fn a_sandboxed_run_refuses_os_execute_and_ends_with_a_summary() {
     assert!(common::stderr(&o).contains("is outside") && !outside.exists(), "{}", both(&o));
 }
 
-/// `require` searches in the README's order: PLCSH_LIB, the user's lib, the project's lib/,
+/// `require` searches in the order docs/lua.md gives: PLCSH_LIB, the user's lib, the project's lib/,
 /// then the script's own directory — and `plcsh.lib_dirs` lists every directory searched.
 #[test]
 fn require_searches_in_the_documented_order() {

@@ -1,4 +1,4 @@
-//! Units that cannot surprise (README "Scripting reference: units"): for every command that
+//! Units that cannot surprise (docs/lua.md, "Scripting reference: units"): for every command that
 //! takes a quantity, each spelling of the same amount — the bare number in the table's unit,
 //! and the number with each unit — gives the same result, the value the table says; and a
 //! trailing extra word is refused, never ignored. One table, one test.

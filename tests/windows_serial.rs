@@ -112,9 +112,9 @@ fn a_com_link_that_disappears_is_reported_and_reopened_when_back() {
 fn the_readme_windows_session_runs() {
     let _one = serial_guard();
     let (Some(k2), Some(servo)) = (com("PLCSH_WINE_COM_K2"), com("PLCSH_WINE_COM_SERVO")) else { return };
-    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
-    let section = readme.split("### Windows: a first session at the machine").nth(1).unwrap();
-    let section = section.split("\n### ").next().unwrap();
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/install.md")).unwrap();
+    let section = readme.split("## Windows: a first session at the machine").nth(1).unwrap();
+    let section = section.split("\n## ").next().unwrap();
     let lines: Vec<&str> = section.lines().filter_map(|l| l.strip_prefix("PS> plcsh ")).collect();
     assert!(lines.len() >= 3, "the section shows a session: {lines:?}");
     for line in lines {
