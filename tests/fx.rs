@@ -15,6 +15,8 @@
 #![cfg(unix)]
 
 mod common;
+#[path = "support/words.rs"]
+mod words;
 use common::*;
 use plcsh::core::link::pty::Pty;
 use plcsh::core::{Clock, Device, ErrorKind, Operand, Value};
@@ -1201,26 +1203,6 @@ fn enq_is_probed_and_followed_where_the_plc_requires_it() {
     assert_eq!(cmds, ["ENQ", "0", "0", "0"]);
 }
 
-/// Words of a README command line, as a POSIX shell splits these: spaces, and double quotes.
-fn shell_words(line: &str) -> Vec<String> {
-    let (mut words, mut cur, mut quoted) = (Vec::new(), String::new(), false);
-    for c in line.chars() {
-        match c {
-            '"' => quoted = !quoted,
-            ' ' if !quoted => {
-                if !cur.is_empty() {
-                    words.push(std::mem::take(&mut cur));
-                }
-            }
-            _ => cur.push(c),
-        }
-    }
-    if !cur.is_empty() {
-        words.push(cur);
-    }
-    words
-}
-
 /// The user guide's FX examples (docs/fx.md), run as written (the served one against this test's own ptys in
 /// place of /tmp/fx and /tmp/fxlink): every command succeeds.
 #[test]
@@ -1238,7 +1220,7 @@ fn the_readme_fx_examples_run() {
     for line in &lines {
         let line =
             line.replace("/tmp/fxlink", srv.link.to_str().unwrap()).replace("/tmp/fx", srv.port.to_str().unwrap());
-        let words = shell_words(&line);
+        let words = words::split(&line);
         let mut args: Vec<&str> = vec!["--json"];
         args.extend(words[1..].iter().map(String::as_str));
         let out = run(&args, "");

@@ -7,6 +7,8 @@
 //! Elsewhere (a native build, or no mapping) the tests say why and pass without running:
 //! they need `PLCSH_WINE_COM_K2` and `PLCSH_WINE_COM_SERVO` (the COM names), set by the stage.
 
+#[path = "support/words.rs"]
+mod words;
 use plcsh::core::{Clock, Device, Value};
 use plcsh::session::open_url;
 
@@ -119,7 +121,7 @@ fn the_readme_windows_session_runs() {
     assert!(lines.len() >= 3, "the section shows a session: {lines:?}");
     for line in lines {
         let line = line.replace("COM10", &servo).replace("COM3", &k2);
-        let args = split_quoted(&line);
+        let args = words::split(&line);
         let o = std::process::Command::new(env!("CARGO_BIN_EXE_plcsh"))
             .args(&args)
             .env("PLCSH_STATE", "none")
@@ -128,24 +130,4 @@ fn the_readme_windows_session_runs() {
         let text = format!("{}{}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr));
         assert!(o.status.success(), "plcsh {line}: {text}");
     }
-}
-
-/// PowerShell's word splitting as the README's lines need it: spaces, and double quotes.
-fn split_quoted(line: &str) -> Vec<String> {
-    let (mut words, mut cur, mut quoted) = (Vec::new(), String::new(), false);
-    for c in line.chars() {
-        match c {
-            '"' => quoted = !quoted,
-            ' ' if !quoted => {
-                if !cur.is_empty() {
-                    words.push(std::mem::take(&mut cur));
-                }
-            }
-            c => cur.push(c),
-        }
-    }
-    if !cur.is_empty() {
-        words.push(cur);
-    }
-    words
 }
