@@ -246,3 +246,20 @@ fn habits_from_other_tools_are_named_and_pwm_takes_strict() {
     let (o, _) = run_json("pwm 0 cycle=100 width=50; pwm 0 cycle=100 width=20 strict");
     assert!(o.status.success(), "changing a running PWM's duty is no conflict: {}", both(&o));
 }
+
+/// Commands of the command line typed in the shell say where they belong.
+#[test]
+fn command_line_commands_in_the_shell_say_where_they_belong() {
+    for (line, want) in [
+        ("run x.lua", "plcsh run SCRIPT.lua"),
+        ("replay x.pcapng", "plcsh replay FILE.pcapng"),
+        ("record show x.pcapng", "plcsh record show"),
+        ("agent il", "plcsh agent il"),
+    ] {
+        let (o, l) = run_json(line);
+        assert!(!o.status.success(), "{line}");
+        let e = &l[0]["error"];
+        let text = format!("{} {}", e["message"].as_str().unwrap_or(""), e["hint"].as_str().unwrap_or(""));
+        assert!(text.contains(want), "{line}: {text}");
+    }
+}

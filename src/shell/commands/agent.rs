@@ -18,6 +18,13 @@ pub const AGENT: CommandSpec = CommandSpec {
 fn agent(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let mut words = args.text.split_whitespace();
     let sub = words.next().unwrap_or("status");
+    if sub == "il" {
+        return Err(crate::core::Error::usage(
+            "`agent il` is a command-line command: it prints the helper program for KincoBuilder",
+        )
+        .hint("plcsh agent il > k2_agent.il (see plcsh agent il --help)")
+        .column(args.offset));
+    }
     if sub != "status" {
         return Err(crate::core::Error::usage(format!("unknown `agent {sub}`")).hint(AGENT.usage).column(args.offset));
     }
