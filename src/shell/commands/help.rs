@@ -72,6 +72,20 @@ fn help(sh: &mut Shell, args: Args) -> Result<Outcome> {
 /// a new form, any other piece (`rel POS` of `move abs|rel POS`) continuing the last one.
 pub fn sub_forms(c: &CommandSpec) -> Vec<(&'static str, String)> {
     let mut forms: Vec<(&'static str, String)> = Vec::new();
+    // `sim time | sim step D | sim cpu run|stop|pause`: whole forms between ` | `.
+    if c.usage.contains(" | ") {
+        for piece in c.usage.split(" | ").map(str::trim) {
+            let mut w = piece.split_whitespace();
+            if w.next() != Some(c.name) {
+                continue;
+            }
+            let head = w.next().unwrap_or("");
+            if let Some(sub) = c.subcommands.iter().find(|s| head.split('|').any(|a| a == **s)) {
+                forms.push((sub, piece.to_string()));
+            }
+        }
+        return forms;
+    }
     for piece in c.usage.split('|') {
         let words: Vec<&str> = piece.split_whitespace().collect();
         let lead = words.iter().take_while(|w| **w == c.name || **w == "[DEVICE]").count();
@@ -154,4 +168,48 @@ pub fn command_list() -> String {
     }
     text.push_str("operands: `help VW100`, `help SMB67` explain one; Tab completes them");
     text
+}
+
+/// The command card of the user guide (`docs/commands.md`, between its card markers): every
+/// command of the registry with its forms, one table made from [`COMMANDS`] so the guide and
+/// the shell cannot drift apart.
+pub fn card_markdown() -> String {
+    let mut t = String::from("| command | forms | what it does |\n|---|---|---|\n");
+    for c in COMMANDS {
+        let forms: Vec<String> = if c.subcommands.is_empty() {
+            vec![c.usage.split("   e.g.").next().unwrap_or(c.usage).trim().to_string()]
+        } else {
+            sub_forms(c).into_iter().map(|(_, f)| f).collect()
+        };
+        let cell = |s: &str| s.replace('|', "\\|");
+        let forms: Vec<String> = forms.iter().map(|f| format!("`{}`", cell(f))).collect();
+        t.push_str(&format!("| `{}` | {} | {} |\n", c.name, forms.join("<br>"), cell(c.summary)));
+    }
+    t
+}
+
+#[cfg(test)]
+mod card_tests {
+    /// The guide's command card is the registry's (`PLCSH_BLESS=1 cargo test card` rewrites it).
+    #[test]
+    fn the_guides_command_card_is_the_registrys() {
+        const START: &str = "<!-- command card: made from the command registry; PLCSH_BLESS=1 cargo test card -->\n";
+        const END: &str = "<!-- end of command card -->";
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/commands.md");
+        let doc = std::fs::read_to_string(path).unwrap();
+        let (a, b) =
+            (doc.find(START).expect("card start marker") + START.len(), doc.find(END).expect("card end marker"));
+        let card = super::card_markdown();
+        if std::env::var_os("PLCSH_BLESS").is_some() {
+            std::fs::write(path, format!("{}{card}{}", &doc[..a], &doc[b..])).unwrap();
+            return;
+        }
+        assert!(doc[a..b] == card, "docs/commands.md's command card is stale: PLCSH_BLESS=1 cargo test card");
+        for c in super::COMMANDS {
+            let row = card.lines().find(|l| l.starts_with(&format!("| `{}` |", c.name))).expect(c.name);
+            for s in c.subcommands {
+                assert!(row.contains(s), "{} {s} is missing from the card", c.name);
+            }
+        }
+    }
 }

@@ -15,7 +15,7 @@ use std::time::Duration;
 pub const SIM: CommandSpec = CommandSpec {
     name: "sim",
     aliases: &[],
-    usage: "sim time | sim step DURATION | sim clock [real|stepped] | sim input I0.1 freq=1kHz [dir=up|down] | sim input I0.1 off | sim quad A B freq=1kHz | sim inputs | sim retain RANGES|none | sim program load FILE.il | sim program | sim cpu run|stop|pause | sim scan [N] | sim break LINE | sim stepi [N] | sim stepn | sim wire FROM -> TO [lines=N] [delay=D] | sim wires | sim unwire TERMINAL|all | sim snapshot save|restore NAME | sim snapshots | sim fault KIND … | sim faults",
+    usage: "sim time | sim step DURATION | sim clock [real|stepped] | sim input I0.1 freq=1kHz [dir=up|down] | sim input I0.1 off | sim quad A B freq=1kHz | sim inputs | sim retain RANGES|none | sim program load FILE.il | sim program | sim cpu run|stop|pause | sim stop | sim pause | sim switch run|stop | sim scan [N] | sim break LINE | sim stepi [N] | sim stepn | sim wire FROM -> TO [lines=N] [delay=D] | sim wires | sim unwire TERMINAL|all | sim snapshot save|restore NAME | sim snapshots | sim fault KIND … | sim faults",
     summary: "the simulator's clock (show, step and keep stepped, follow the wall clock), input signals for the counters, retained ranges, the CPU running an IL program, wiring between simulated devices, snapshots of the simulated state, injected faults",
     subcommands: &[
         "time", "step", "clock", "input", "quad", "inputs", "retain", "program", "cpu", "stop", "pause", "switch", "scan", "break", "stepi",
