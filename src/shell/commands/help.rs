@@ -173,7 +173,8 @@ pub fn command_list() -> String {
 /// The command card of the user guide (`docs/commands.md`, between its card markers): every
 /// command of the registry with its forms, one table made from [`COMMANDS`] so the guide and
 /// the shell cannot drift apart.
-pub fn card_markdown() -> String {
+#[cfg(test)]
+fn card_markdown() -> String {
     let mut t = String::from("| command | forms | what it does |\n|---|---|---|\n");
     for c in COMMANDS {
         let forms: Vec<String> = if c.subcommands.is_empty() {
