@@ -106,6 +106,8 @@ fn record_show_decodes_rtu_and_servo_frames_by_name() {
     assert!(lines.iter().any(|l| l.contains("write target_velocity (60FF.00)")), "{text}");
     let o = plcsh().args(["--json", "record", "show", file.to_str().unwrap()]).output().unwrap();
     let l = json_lines(&o);
+    // The JSON contract: `ok` and `cmd` on every line.
+    assert!(l.iter().all(|v| v["ok"] == true && v["cmd"] == "record show"), "{l:?}");
     let rtu: Vec<&serde_json::Value> = l.iter().filter(|v| v["proto"] == "modbus-rtu").collect();
     assert_eq!(rtu[0]["dir"], "sent");
     assert_eq!(rtu[0]["function"], 6);
@@ -135,6 +137,10 @@ fn replay_reports_no_difference_then_exactly_the_changed_register() {
     let o = plcsh().args(["--json", "replay", changed.to_str().unwrap()]).output().unwrap();
     assert_eq!(o.status.code(), Some(1), "a difference exits 1");
     let l = json_lines(&o);
+    assert!(
+        l.iter().all(|v| v["cmd"] == "replay" && v["ok"] == false),
+        "the JSON contract, and a difference is a failure: {l:?}"
+    );
     let diffs: Vec<&serde_json::Value> = l.iter().filter_map(|v| v.get("difference")).collect();
     assert_eq!(diffs.len(), 1, "{}", stdout(&o));
     let detail = diffs[0]["detail"].as_str().unwrap();

@@ -105,12 +105,12 @@ pub fn replay(
         report
             .differences
             .iter()
-            .try_for_each(|d| writeln!(out, "{}", serde_json::json!({ "difference": d })))
+            .try_for_each(|d| writeln!(out, "{}", serde_json::json!({ "ok": false, "cmd": "replay", "difference": d })))
             .and_then(|_| {
                 writeln!(
                     out,
                     "{}",
-                    serde_json::json!({ "ok": report.differences.is_empty() && !report.damaged, "damaged": report.damaged, "requests": report.requests,
+                    serde_json::json!({ "ok": report.differences.is_empty() && !report.damaged, "cmd": "replay", "damaged": report.damaged, "requests": report.requests,
                     "differences": report.differences.len(), "skipped": report.skipped })
                 )
             })

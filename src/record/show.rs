@@ -8,9 +8,11 @@ use crate::core::trace::{hex_bytes, Dir};
 use serde::Serialize;
 use std::io::Write;
 
-/// One timeline entry as `--json` writes it.
+/// One timeline entry as `--json` writes it (the JSON contract's `ok` and `cmd` first).
 #[derive(Serialize)]
 struct JsonFrame<'a> {
+    ok: bool,
+    cmd: &'static str,
     n: usize,
     /// Virtual time in seconds (the session's clock), when recorded.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -34,6 +36,8 @@ pub fn write(rec: &Recording, json: bool, out: &mut dyn Write) -> std::io::Resul
         let link = &rec.links[f.link];
         if json {
             let j = JsonFrame {
+                ok: true,
+                cmd: "record show",
                 n: n + 1,
                 vt: f.vt.map(|v| v.as_secs_f64()),
                 wall: f.wall.as_secs_f64(),
