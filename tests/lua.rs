@@ -225,9 +225,13 @@ fn method_typos_and_dots_for_colons_are_explained() {
     assert!(o.status.success(), "{}", both(&o));
     let out: Vec<String> = stdout(&o).lines().map(str::to_string).collect();
     let friendly = "`get` is a method: call it with a colon, `dev:get(…)`, not a dot `dev.get(…)`";
-    assert_eq!(out[0], format!("false\t{}:1: error[script]: {friendly}", p.display()), "{out:?}");
+    // Lua shortens a long script path inside a caught message (`...\\Temp\\…` on Windows):
+    // the line and the explanation are what count.
+    assert!(out[0].starts_with("false\t"), "{out:?}");
+    assert!(out[0].ends_with(&format!("dotpcall.lua:1: error[script]: {friendly}")), "{out:?}");
     assert!(out[1].ends_with(friendly), "{out:?}");
-    assert_eq!(out[2], format!("handled: {}:4: error[script]: {friendly}", p.display()), "{out:?}");
+    assert!(out[2].starts_with("handled: "), "{out:?}");
+    assert!(out[2].ends_with(&format!("dotpcall.lua:4: error[script]: {friendly}")), "{out:?}");
     assert_eq!(out[3], "script");
 }
 
