@@ -1,4 +1,4 @@
-//! The real binary: piped stdin, `-c`, `--json`, exit codes (issue: foundation).
+//! The real binary: piped stdin, `-c`, `--json`, exit codes.
 
 mod common;
 use common::*;

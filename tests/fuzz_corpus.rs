@@ -56,7 +56,7 @@ fn every_corpus_and_regression_input_passes_its_target() {
 /// the limit, never wrapped. `cargo test --release --test fuzz_corpus` shows a release
 /// build (no overflow checks) refusing them the same way.
 #[test]
-fn the_issue_30_reproductions_are_refused_naming_the_limit() {
+fn the_overflow_reproductions_are_refused_naming_the_limit() {
     use plcsh::core::Clock;
     use plcsh::k2::agent::protocol::ResultCode;
     use plcsh::k2::sim::agent_probe::AgentProbe;

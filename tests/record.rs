@@ -107,7 +107,7 @@ fn record_show_decodes_rtu_and_servo_frames_by_name() {
     let o = plcsh().args(["--json", "record", "show", file.to_str().unwrap()]).output().unwrap();
     let l = json_lines(&o);
     // The JSON contract: `ok` and `cmd` on every line.
-    assert!(l.iter().all(|v| v["ok"] == true && v["cmd"] == "record show"), "{l:?}");
+    assert!(l.iter().all(|v| v["ok"] == true && v["cmd"] == "record" && v["sub"] == "show"), "{l:?}");
     let rtu: Vec<&serde_json::Value> = l.iter().filter(|v| v["proto"] == "modbus-rtu").collect();
     assert_eq!(rtu[0]["dir"], "sent");
     assert_eq!(rtu[0]["function"], 6);

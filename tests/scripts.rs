@@ -24,7 +24,7 @@ fn run_script(path: &Path) -> std::process::Output {
 #[test]
 fn every_script_runs_and_passes_its_checks() {
     let all = scripts();
-    assert!(all.len() >= 10, "the issue's example scripts are all there");
+    assert!(all.len() >= 10, "the example scripts are all there");
     let mut failed = Vec::new();
     for path in &all {
         let name = path.file_name().unwrap().to_str().unwrap();

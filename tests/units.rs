@@ -122,7 +122,7 @@ fn cases() -> Vec<Case> {
             template: "sim fault no-reply after={} for=1s",
             spellings: &["500", "500ms", "0.5s"],
             expect: 500_000_000u64.into(),
-            read: |l| last_with(l, "sim fault")["fault"]["from_ns"].clone(),
+            read: |l| last_with(l, "sim")["fault"]["from_ns"].clone(),
         },
         Case {
             what: "wire delay= (bare: ms)",
@@ -262,4 +262,47 @@ fn command_line_commands_in_the_shell_say_where_they_belong() {
         let text = format!("{} {}", e["message"].as_str().unwrap_or(""), e["hint"].as_str().unwrap_or(""));
         assert!(text.contains(want), "{line}: {text}");
     }
+}
+
+/// One placement (docs/commands.md, "Where the device goes"): the device right after the
+/// command word, a K2 channel first and prefixed like an operand; the older order reads the same.
+#[test]
+fn device_and_channel_go_in_the_same_place_in_every_family() {
+    let (o, l) = run_json(
+        "pto 0 freq=10Hz count=5; pto 0 status; pto status 0; pto plc:0 status; \
+         hsc 0 status; hsc status 0; agent plc status; agent status plc; agent; servo servo status",
+    );
+    assert!(o.status.success(), "{}", both(&o));
+    assert_eq!(l.len(), 10, "{l:?}");
+    assert_eq!(l[1]["status"], l[2]["status"], "{l:?}");
+    assert_eq!(l[1]["status"], l[3]["status"], "{l:?}");
+    assert_eq!(l[4]["status"], l[5]["status"], "{l:?}");
+    assert!(l[1]["status"].as_array().is_some_and(|s| !s.is_empty()), "{l:?}");
+    assert_eq!(l[6]["message"], l[7]["message"], "{l:?}");
+    assert_eq!(l[6]["message"], l[8]["message"], "{l:?}");
+    assert_eq!(l[9]["device"], "servo", "{l:?}");
+    for bad in ["pto 0 status extra", "agent plc status extra", "agent nosuchdevice"] {
+        let (o, l) = run_json(bad);
+        assert!(!o.status.success(), "`{bad}` was accepted: {l:?}");
+    }
+}
+
+/// `cmd` is the command's word, the same for all its forms, and `sub` names the sub-command
+/// (docs/json.md): `sim wires` and `sim faults` read alike.
+#[test]
+fn cmd_is_the_command_word_and_sub_names_the_sub_command() {
+    let (o, l) = run_json("sim wires; sim faults; sim inputs; sim time; servo status; pto 0 status; get VW0");
+    assert!(o.status.success(), "{}", both(&o));
+    let pairs: Vec<(String, String)> =
+        l.iter().map(|v| (v["cmd"].as_str().unwrap_or("?").into(), v["sub"].as_str().unwrap_or("").into())).collect();
+    let want = [
+        ("sim", "wires"),
+        ("sim", "faults"),
+        ("sim", "inputs"),
+        ("sim", "time"),
+        ("servo", "status"),
+        ("pto", "status"),
+        ("get", ""),
+    ];
+    assert_eq!(pairs, want.map(|(a, b)| (a.to_string(), b.to_string())), "{l:?}");
 }

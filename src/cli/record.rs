@@ -45,7 +45,7 @@ pub fn show(cmd: &RecordCmd, style: Style, out: &mut dyn Write) -> i32 {
     let RecordCmd::Show { file: path } = cmd;
     let rec = match file::read(path) {
         Ok(r) => r,
-        Err(e) => return fail(out, style, "record show", &e),
+        Err(e) => return fail(out, style, "record", &e),
     };
     warn(&rec, path, "showing");
     match show::write(&rec, style.json, out) {

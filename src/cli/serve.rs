@@ -445,7 +445,8 @@ async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
     let mut tasks = JoinSet::new();
     let mut ready = Map::new();
     ready.insert("ok".into(), json!(true));
-    ready.insert("cmd".into(), json!("sim serve"));
+    ready.insert("cmd".into(), json!("sim"));
+    ready.insert("sub".into(), json!("serve"));
     ready.insert("ready".into(), json!(true));
     let mut cleanup = Cleanup::default();
     let (k2, line) = match &cli.bench {
@@ -512,7 +513,7 @@ pub fn control_run(args: &ControlArgs, style: Style, out: &mut dyn Write) -> i32
     let line = args.words.join(" ");
     match control::send(&args.path, &line) {
         Ok((text, data)) => {
-            let mut o = output::Outcome::new("sim control").text(text);
+            let mut o = output::Outcome::new("sim").with("sub", "control").text(text);
             if let Json::Object(m) = data {
                 for (k, v) in m {
                     if k != "ok" && k != "text" {
@@ -526,7 +527,7 @@ pub fn control_run(args: &ControlArgs, style: Style, out: &mut dyn Write) -> i32
             }
         }
         Err(e) => {
-            let _ = output::report_error(out, style, "sim control", &e, None);
+            let _ = output::report_error(out, style, "sim", &e, None);
             if e.kind == crate::core::ErrorKind::Usage {
                 2
             } else {
@@ -541,14 +542,14 @@ pub fn run(cli: &Cli, args: &ServeArgs, style: Style, out: &mut dyn Write) -> i3
     let rt = match tokio::runtime::Builder::new_current_thread().enable_all().build() {
         Ok(rt) => rt,
         Err(e) => {
-            let _ = output::report_error(out, style, "sim serve", &Error::io("cannot start a runtime").cause(e), None);
+            let _ = output::report_error(out, style, "sim", &Error::io("cannot start a runtime").cause(e), None);
             return 1;
         }
     };
     match rt.block_on(serve(cli, args, out)) {
         Ok(()) => 0,
         Err(e) => {
-            let _ = output::report_error(out, style, "sim serve", &e, None);
+            let _ = output::report_error(out, style, "sim", &e, None);
             if e.kind == crate::core::ErrorKind::Usage {
                 2
             } else {

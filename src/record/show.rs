@@ -8,11 +8,12 @@ use crate::core::trace::{hex_bytes, Dir};
 use serde::Serialize;
 use std::io::Write;
 
-/// One timeline entry as `--json` writes it (the JSON contract's `ok` and `cmd` first).
+/// One timeline entry as `--json` writes it (the JSON contract's `ok`, `cmd` and `sub` first).
 #[derive(Serialize)]
 struct JsonFrame<'a> {
     ok: bool,
     cmd: &'static str,
+    sub: &'static str,
     n: usize,
     /// Virtual time in seconds (the session's clock), when recorded.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -37,7 +38,8 @@ pub fn write(rec: &Recording, json: bool, out: &mut dyn Write) -> std::io::Resul
         if json {
             let j = JsonFrame {
                 ok: true,
-                cmd: "record show",
+                cmd: "record",
+                sub: "show",
                 n: n + 1,
                 vt: f.vt.map(|v| v.as_secs_f64()),
                 wall: f.wall.as_secs_f64(),

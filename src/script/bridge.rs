@@ -110,13 +110,13 @@ pub static BRIDGE: &[Bridge] = &[
     row("pls", "k2", "pls {}"),
     row("pstop", "k2", "pstop {}"),
     with("pto", "k2", "pto {}", PULSE),
-    row("pto_status", "k2", "pto status {}"),
+    row("pto_status", "k2", "pto {} status"),
     with("pwm", "k2", "pwm {}", PULSE),
     with("profile", "k2", "profile {} at {}", PULSE),
     // K2 high-speed counters (k2.md §4).
     row("hdef", "k2", "hdef {} {}"),
     with("hsc", "k2", "hsc {}", HSC),
-    row("hsc_status", "k2", "hsc status {}"),
+    row("hsc_status", "k2", "hsc {} status"),
     // Interrupt events.
     row("events", "k2", "events"),
     row("wait_event", "k2", "wait event {} [timeout={ms}]"),

@@ -97,6 +97,25 @@ fn suggest_subcommand(spec: &commands::CommandSpec, args: Args, e: Error) -> Err
     e.hint(format!("did you mean `{} {near}`? `help {}` shows its usage", spec.name, spec.name))
 }
 
+/// One naming rule for every result (docs/json.md): `cmd` is the command's registry name, and
+/// `sub` the sub-command word when the command has them (`sim wires` and `sim faults` are
+/// both `"cmd":"sim"`, with `"sub":"wires"` and `"sub":"faults"`). The sub-command is the first
+/// word, or the second after a device name (`servo axis1 status`).
+fn name_outcome(spec: &commands::CommandSpec, args: &str, mut o: Outcome) -> Outcome {
+    o.cmd = spec.name.to_string();
+    if !spec.subcommands.is_empty() && !o.data.contains_key("sub") {
+        let sub = args
+            .split_whitespace()
+            .take(2)
+            .map(|w| w.to_ascii_lowercase())
+            .find(|w| spec.subcommands.contains(&w.as_str()));
+        if let Some(sub) = sub {
+            o.data.insert("sub".into(), serde_json::Value::String(sub));
+        }
+    }
+    o
+}
+
 /// The word just before a position: back to a space, `=` or `,` (`SMB67=B ` → `B`).
 fn word_before(text: &str) -> &str {
     let t = text.trim_end();
@@ -175,7 +194,9 @@ impl Shell {
                 .hint(commands::suggest(&name));
             return Err((name, e));
         };
-        (spec.run)(self, args).map_err(|e| (spec.name.to_string(), suggest_subcommand(spec, args, e)))
+        (spec.run)(self, args)
+            .map(|o| name_outcome(spec, args.text, o))
+            .map_err(|e| (spec.name.to_string(), suggest_subcommand(spec, args, e)))
     }
 
     /// Runs a line and writes each result (human-readable errors to stderr, JSON ones to `out`);

@@ -195,7 +195,7 @@ pub fn decode_status(s: u8) -> Vec<&'static str> {
     w
 }
 
-/// `hsc status N`.
+/// `hsc N status`.
 pub fn status(dev: &mut dyn Device, model: &Model, n: u8) -> Result<(Vec<Written>, Vec<String>)> {
     let r = counter(model, n)?;
     let mut cv = K2Operand::dword(Area::SM, r.cv);
@@ -236,7 +236,7 @@ mod tests {
     use crate::k2::catalog::find;
 
     #[test]
-    fn the_issue_example_plans_table_and_control_bytes() {
+    fn the_worked_example_plans_table_and_control_bytes() {
         let q = HscRequest {
             counter: 0,
             mode: 9,

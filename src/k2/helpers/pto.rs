@@ -325,7 +325,7 @@ pub fn decode_status(s: u8) -> Vec<&'static str> {
     w
 }
 
-/// `pto status N`: reads the channel's registers and decodes them.
+/// `pto N status`: reads the channel's registers and decodes them.
 pub fn status(dev: &mut dyn Device, model: &Model, ch: u8) -> Result<(Vec<Written>, Vec<String>)> {
     let (_, r) = channel(model, ch)?;
     let mut pos = K2Operand::dword(Area::SM, r.pos_cv);

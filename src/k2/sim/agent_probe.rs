@@ -414,7 +414,7 @@ mod tests {
         eprintln!("5 000 requests in {:?}; results {seen:?}", start.elapsed());
     }
 
-    /// The figure: `cargo test --release --lib a_hundred_thousand -- --ignored`.
+    /// The 100 000-request figure in BENCHMARKS.md: `cargo test --release --lib a_hundred_thousand -- --ignored`.
     #[test]
     #[ignore = "slow in a debug build: 100 000 scans"]
     fn a_hundred_thousand_random_requests_get_the_protocols_verdict() {

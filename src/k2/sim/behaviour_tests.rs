@@ -48,7 +48,7 @@ fn taken(s: &mut K2Sim) -> Vec<EventKind> {
 // ---- pulse outputs ------------------------------------------------------------------------
 
 #[test]
-fn the_issue_scenario_pto0_on_a_k205() {
+fn pto0_on_a_k205_runs_its_train_and_raises_its_event() {
     let (mut s, clock) = sim("K205-16DT");
     set(&mut s, "SMB67=16#85, SMW68=500, SMD72=1000");
     s.pls(0).unwrap();

@@ -1,4 +1,6 @@
-//! `agent status`: is the PLC-side helper program there, current and running?
+//! `agent [DEVICE] status`: is the PLC-side helper program there, current and running? The
+//! device goes right after the command word, as in `servo [DEVICE] status`; `agent status
+//! DEVICE` reads the same.
 
 use super::k2cmd;
 use super::CommandSpec;
@@ -9,26 +11,35 @@ use crate::shell::{Args, Shell};
 pub const AGENT: CommandSpec = CommandSpec {
     name: "agent",
     aliases: &[],
-    usage: "agent status [DEVICE]",
+    usage: "agent [DEVICE] status",
     summary: "check the PLC-side helper that reaches SM registers and instructions over Modbus (docs/agent.md)",
     subcommands: &["status"],
     run: agent,
 };
 
 fn agent(sh: &mut Shell, args: Args) -> Result<Outcome> {
-    let mut words = args.text.split_whitespace();
-    let sub = words.next().unwrap_or("status");
-    if sub == "il" {
+    let words: Vec<&str> = args.text.split_whitespace().collect();
+    if words.first() == Some(&"il") {
         return Err(crate::core::Error::usage(
             "`agent il` is a command-line command: it prints the helper program for KincoBuilder",
         )
         .hint("plcsh agent il > k2_agent.il (see plcsh agent il --help)")
         .column(args.offset));
     }
-    if sub != "status" {
-        return Err(crate::core::Error::usage(format!("unknown `agent {sub}`")).hint(AGENT.usage).column(args.offset));
+    // `agent`, `agent status`, `agent DEVICE`, `agent DEVICE status`, `agent status DEVICE`.
+    let (device, rest): (Option<&str>, Vec<&str>) = match words.as_slice() {
+        [] | ["status"] => (None, vec![]),
+        ["status", d, more @ ..] => (Some(d), more.to_vec()),
+        [d, "status", more @ ..] => (Some(d), more.to_vec()),
+        [d] if sh.session.index(d).is_ok() => (Some(d), vec![]),
+        [w, ..] => {
+            return Err(crate::core::Error::usage(format!("unknown `agent {w}`")).hint(AGENT.usage).column(args.offset))
+        }
+    };
+    if let Some(extra) = rest.first() {
+        return Err(crate::core::Error::usage(format!("unexpected `{extra}`")).hint(AGENT.usage).column(args.offset));
     }
-    let dev = match words.next() {
+    let dev = match device {
         Some(d) => sh.session.index(d)?,
         None => sh.session.current_index()?,
     };

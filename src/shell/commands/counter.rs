@@ -1,5 +1,5 @@
 //! High-speed counter commands (manual §3.3): the instructions `hdef N MODE` and `hsc N`,
-//! the typed helper `hsc N mode=… pv=[…] …` and `hsc status N`.
+//! the typed helper `hsc N mode=… pv=[…] …` and `hsc N status`.
 
 use super::k2cmd::{self, check_options, done_outcome, opt, value_err};
 use super::CommandSpec;
@@ -21,7 +21,7 @@ pub const HDEF: CommandSpec = CommandSpec {
 pub const HSC: CommandSpec = CommandSpec {
     name: "hsc",
     aliases: &[],
-    usage: "hsc N | hsc N mode=9 [rate=4x] [pv=[100,200,300] [relative] [cyclic] at VB3009] [cv=0] [dir=up|down] [reset=low] [start=low] [force] | hsc status N",
+    usage: "hsc N | hsc N mode=9 [rate=4x] [pv=[100,200,300] [relative] [cyclic] at VB3009] [cv=0] [dir=up|down] [reset=low] [start=low] [force] | hsc N status",
     summary: "run the HSC instruction; with options, write the counter's registers first (then HDEF, HSC); or decode its status",
     subcommands: &["status"],
     run: hsc,
@@ -48,8 +48,14 @@ fn hdef(sh: &mut Shell, args: Args) -> Result<Outcome> {
 fn hsc(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let w = lex::words_in(&args)?;
     let (pos, opts) = lex::options(&w);
-    if pos.first().is_some_and(|p| p.1.eq_ignore_ascii_case("status")) {
-        let word = *pos.get(1).ok_or_else(|| Error::usage("hsc status needs a counter number").column(args.offset))?;
+    // `hsc N status` (the channel first, as in every `hsc N …` form); `hsc status N` reads the same.
+    if let Some(at) = pos.iter().take(2).position(|p| p.1.eq_ignore_ascii_case("status")) {
+        let word = *pos.get(1 - at).ok_or_else(|| {
+            Error::usage("hsc N status needs a counter number, e.g. hsc 0 status").column(args.offset)
+        })?;
+        if let Some(extra) = pos.get(2) {
+            return Err(Error::usage(format!("unexpected `{}`", extra.1)).column(extra.0).hint("hsc N status"));
+        }
         let (dev, n) = k2cmd::channel(sh, word, "counter", 3)?;
         let name = k2cmd::name(sh, dev);
         let model = k2cmd::k2(sh, dev)?.model();

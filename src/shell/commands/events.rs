@@ -115,7 +115,7 @@ fn wait(sh: &mut Shell, args: Args) -> Result<Outcome> {
         if now >= deadline {
             return Err(Error::new(ErrorKind::Timeout, format!("no {m} within {}", format_time(timeout)))
                 .device(name)
-                .hint("`events keep` lists what arrived; `pto status N` / `hsc status N` show whether anything runs"));
+                .hint("`events keep` lists what arrived; `pto N status` / `hsc N status` show whether anything runs"));
         }
         // Jumping the clock to the next event is for simulators; with a device on a wire
         // open the wait is real (Session::sleep), never a timeout that expires in no time.

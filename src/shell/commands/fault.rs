@@ -23,7 +23,7 @@ pub fn run(sh: &mut Shell, sub: &str, rest: &str) -> Result<Outcome> {
         })?;
         crate::k2::sim::control::answer(sim, &line, false).map_err(|e| e.device(&name))?
     };
-    let mut o = Outcome::new(if sub == "faults" { "sim faults" } else { "sim fault" }).text(text);
+    let mut o = Outcome::new("sim").text(text);
     if let serde_json::Value::Object(m) = data {
         for (k, v) in m {
             if !matches!(k.as_str(), "ok" | "text" | "time_us") {

@@ -31,7 +31,7 @@ pub const PSTOP: CommandSpec = CommandSpec {
 pub const PTO: CommandSpec = CommandSpec {
     name: "pto",
     aliases: &[],
-    usage: "pto N freq=2kHz count=1000 [strict] | pto N cycle=500us count=1000 | pto status N",
+    usage: "pto N freq=2kHz count=1000 [strict] | pto N cycle=500us count=1000 | pto N status",
     summary: "start a single-segment pulse train (writes SMB67, SMW68, SMD72, then PLS), or decode its status",
     subcommands: &["status"],
     run: pto,
@@ -91,7 +91,7 @@ fn busy_check(sh: &mut Shell, dev: usize, ch: u8, strict: bool, by: &str) -> Res
     if strict {
         return Err(Error::state(format!("{what}: {by} {ch} would replace it; nothing was written"))
             .device(&name)
-            .hint(format!("wait for it (pto status {ch}), stop it (pstop {ch}), or drop `strict` to replace it")));
+            .hint(format!("wait for it (pto {ch} status), stop it (pstop {ch}), or drop `strict` to replace it")));
     }
     Ok(Some(format!("{what}; {by} {ch} replaced it (add `strict` to refuse instead)")))
 }
@@ -147,8 +147,14 @@ fn run_plan(sh: &mut Shell, dev: usize, cmd: &str, plan: &helpers::Plan) -> Resu
 fn pto(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let w = lex::words_in(&args)?;
     let (pos, opts) = lex::options(&w);
-    if pos.first().is_some_and(|p| p.1.eq_ignore_ascii_case("status")) {
-        let word = *pos.get(1).ok_or_else(|| Error::usage("pto status needs a channel number").column(args.offset))?;
+    // `pto N status` (the channel first, as in every `pto N …` form); `pto status N` reads the same.
+    if let Some(at) = pos.iter().take(2).position(|p| p.1.eq_ignore_ascii_case("status")) {
+        let word = *pos.get(1 - at).ok_or_else(|| {
+            Error::usage("pto N status needs a channel number, e.g. pto 0 status").column(args.offset)
+        })?;
+        if let Some(extra) = pos.get(2) {
+            return Err(Error::usage(format!("unexpected `{}`", extra.1)).column(extra.0).hint("pto N status"));
+        }
         let (dev, ch) = k2cmd::channel(sh, word, "pulse channel", 3)?;
         let name = k2cmd::name(sh, dev);
         let (model, _) = model_of(sh, dev)?;

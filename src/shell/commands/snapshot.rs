@@ -14,7 +14,7 @@ pub fn run(sh: &mut Shell, sub: &str, rest: Vec<&str>, offset: usize) -> Result<
         let rows: Vec<Vec<String>> =
             snapshot::list().into_iter().map(|(n, p)| vec![n, p.display().to_string()]).collect();
         let names: Vec<String> = rows.iter().map(|r| r[0].clone()).collect();
-        let mut o = Outcome::new("sim snapshots").with("snapshots", names);
+        let mut o = Outcome::new("sim").with("snapshots", names);
         if rows.is_empty() {
             o = o.text("no saved snapshots (sim snapshot save NAME)");
         } else {
@@ -34,7 +34,7 @@ pub fn run(sh: &mut Shell, sub: &str, rest: Vec<&str>, offset: usize) -> Result<
             let snap = Snapshot::capture(&mut sh.session)?;
             snap.save(&path)?;
             let devices: Vec<String> = snap.devices.keys().cloned().collect();
-            Ok(Outcome::new("sim snapshot")
+            Ok(Outcome::new("sim")
                 .text(format!(
                     "saved {} at {} to {}",
                     devices.join(", "),
@@ -50,7 +50,7 @@ pub fn run(sh: &mut Shell, sub: &str, rest: Vec<&str>, offset: usize) -> Result<
             let snap = Snapshot::load(&path)?;
             snap.restore(&mut sh.session)?;
             let devices: Vec<String> = snap.devices.keys().cloned().collect();
-            Ok(Outcome::new("sim snapshot")
+            Ok(Outcome::new("sim")
                 .text(format!(
                     "restored {} to {}",
                     devices.join(", "),
