@@ -48,14 +48,8 @@ fn hdef(sh: &mut Shell, args: Args) -> Result<Outcome> {
 fn hsc(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let w = lex::words_in(&args)?;
     let (pos, opts) = lex::options(&w);
-    // `hsc N status` (the channel first, as in every `hsc N …` form); `hsc status N` reads the same.
-    if let Some(at) = pos.iter().take(2).position(|p| p.1.eq_ignore_ascii_case("status")) {
-        let word = *pos.get(1 - at).ok_or_else(|| {
-            Error::usage("hsc N status needs a counter number, e.g. hsc 0 status").column(args.offset)
-        })?;
-        if let Some(extra) = pos.get(2) {
-            return Err(Error::usage(format!("unexpected `{}`", extra.1)).column(extra.0).hint("hsc N status"));
-        }
+    if let Some(word) = k2cmd::status_channel(&pos, args.offset, "counter", "hsc 0 status") {
+        let word = word?;
         let (dev, n) = k2cmd::channel(sh, word, "counter", 3)?;
         let name = k2cmd::name(sh, dev);
         let model = k2cmd::k2(sh, dev)?.model();

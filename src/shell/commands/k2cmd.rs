@@ -26,6 +26,20 @@ pub fn channel(sh: &Shell, word: Word, what: &str, max: u8) -> Result<(usize, u8
     Ok((dev, n))
 }
 
+/// The channel of a status form: `CMD N status` (the channel first, as in every `CMD N …`
+/// form) or `CMD status N`; `None` when the words are not a status form. `example` is the
+/// form to show (`pto 0 status`).
+pub fn status_channel<'a>(pos: &[Word<'a>], col: usize, what: &str, example: &str) -> Option<Result<Word<'a>>> {
+    let at = pos.iter().take(2).position(|p| p.1.eq_ignore_ascii_case("status"))?;
+    let Some(word) = pos.get(1 - at) else {
+        return Some(Err(Error::usage(format!("a status form needs a {what} number, e.g. {example}")).column(col)));
+    };
+    if let Some(extra) = pos.get(2) {
+        return Some(Err(Error::usage(format!("unexpected `{}`", extra.1)).column(extra.0).hint(example.to_string())));
+    }
+    Some(Ok(*word))
+}
+
 /// The device's name.
 pub fn name(sh: &Shell, dev: usize) -> String {
     sh.session.entries()[dev].name.clone()

@@ -147,14 +147,8 @@ fn run_plan(sh: &mut Shell, dev: usize, cmd: &str, plan: &helpers::Plan) -> Resu
 fn pto(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let w = lex::words_in(&args)?;
     let (pos, opts) = lex::options(&w);
-    // `pto N status` (the channel first, as in every `pto N …` form); `pto status N` reads the same.
-    if let Some(at) = pos.iter().take(2).position(|p| p.1.eq_ignore_ascii_case("status")) {
-        let word = *pos.get(1 - at).ok_or_else(|| {
-            Error::usage("pto N status needs a channel number, e.g. pto 0 status").column(args.offset)
-        })?;
-        if let Some(extra) = pos.get(2) {
-            return Err(Error::usage(format!("unexpected `{}`", extra.1)).column(extra.0).hint("pto N status"));
-        }
+    if let Some(word) = k2cmd::status_channel(&pos, args.offset, "pulse channel", "pto 0 status") {
+        let word = word?;
         let (dev, ch) = k2cmd::channel(sh, word, "pulse channel", 3)?;
         let name = k2cmd::name(sh, dev);
         let (model, _) = model_of(sh, dev)?;
