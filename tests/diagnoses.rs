@@ -7,15 +7,10 @@
 #![cfg(unix)]
 
 mod common;
-use plcsh::core::link::pty::Pty;
+use common::pty_responder::{self, Act};
 use plcsh::core::{Clock, ErrorKind};
 use plcsh::session::Session;
-use std::fs::File;
 use std::io::{Read, Write};
-use std::os::fd::AsFd;
-use std::path::PathBuf;
-use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 /// One request as the responder framed it, with the time its last byte arrived.
@@ -25,96 +20,21 @@ struct Req {
     bytes: Vec<u8>,
 }
 
-/// What the responder does for one request, in order.
-enum Act {
-    Sleep(Duration),
-    Send(Vec<u8>),
-}
-
-struct Responder {
-    path: PathBuf,
-    seen: Arc<Mutex<Vec<Req>>>,
-    /// When each answer was complete.
-    ends: Arc<Mutex<Vec<Instant>>>,
-    stop: Arc<AtomicBool>,
-}
-
-impl Responder {
-    fn seen(&self) -> Vec<Req> {
-        self.seen.lock().unwrap().clone()
-    }
-    fn ends(&self) -> Vec<Instant> {
-        self.ends.lock().unwrap().clone()
-    }
-}
-
-impl Drop for Responder {
-    fn drop(&mut self) {
-        self.stop.store(true, Ordering::SeqCst);
-    }
-}
+type Responder = pty_responder::Responder<Req>;
 
 /// Starts a responder on a new pty. `frame` says how long the request at the front of the
 /// buffer is (`None`: not all of it yet); `answer(request, k)` what to do for the k-th.
-/// A reader thread stamps requests as they arrive; a writer thread answers them in order.
 fn responder(
     frame: fn(&[u8]) -> Option<usize>,
     mut answer: impl FnMut(&[u8], usize) -> Vec<Act> + Send + 'static,
 ) -> Responder {
-    let (master, slave, path) = Pty::open().unwrap().into_parts();
-    let seen = Arc::new(Mutex::new(Vec::new()));
-    let ends = Arc::new(Mutex::new(Vec::new()));
-    let stop = Arc::new(AtomicBool::new(false));
-    let (tx, rx) = std::sync::mpsc::channel::<Req>();
-    let mut reader = master.try_clone().unwrap();
-    let (seen2, stop2) = (seen.clone(), stop.clone());
-    std::thread::spawn(move || {
-        // Our slave handle stays open: with no slave open, the master reads EIO.
-        let _slave = slave;
-        let mut buf: Vec<u8> = Vec::new();
-        while !stop2.load(Ordering::SeqCst) {
-            let mut fds = [nix::poll::PollFd::new(reader.as_fd(), nix::poll::PollFlags::POLLIN)];
-            if nix::poll::poll(&mut fds, nix::poll::PollTimeout::from(10u16)).unwrap_or(0) == 0 {
-                continue;
-            }
-            let mut b = [0u8; 512];
-            match reader.read(&mut b) {
-                Ok(n) if n > 0 => buf.extend_from_slice(&b[..n]),
-                _ => {
-                    std::thread::sleep(Duration::from_millis(5));
-                    continue;
-                }
-            }
-            while let Some(len) = frame(&buf) {
-                let req = Req { at: Instant::now(), bytes: buf.drain(..len).collect() };
-                seen2.lock().unwrap().push(req.clone());
-                let _ = tx.send(req);
-            }
-        }
-    });
-    let (ends2, stop3) = (ends.clone(), stop.clone());
-    std::thread::spawn(move || {
-        let mut w: File = master;
-        let mut k = 0;
-        while !stop3.load(Ordering::SeqCst) {
-            let req = match rx.recv_timeout(Duration::from_millis(10)) {
-                Ok(r) => r,
-                Err(std::sync::mpsc::RecvTimeoutError::Timeout) => continue,
-                Err(_) => break,
-            };
-            for act in answer(&req.bytes, k) {
-                match act {
-                    Act::Sleep(d) => std::thread::sleep(d),
-                    Act::Send(b) => {
-                        let _ = w.write_all(&b);
-                    }
-                }
-            }
-            ends2.lock().unwrap().push(Instant::now());
-            k += 1;
-        }
-    });
-    Responder { path, seen, ends, stop }
+    pty_responder::start(
+        move |buf: &mut Vec<u8>, at| {
+            let len = frame(buf)?;
+            Some(Some(Req { at, bytes: buf.drain(..len).collect() }))
+        },
+        move |req: &Req, k| answer(&req.bytes, k),
+    )
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -17,6 +17,7 @@
 mod common;
 #[path = "support/words.rs"]
 mod words;
+use common::pty_responder::{self, Act};
 use common::*;
 use plcsh::core::link::pty::Pty;
 use plcsh::core::{Clock, Device, ErrorKind, Operand, Value};
@@ -26,7 +27,7 @@ use std::io::{Read, Write};
 use std::os::fd::AsFd;
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicBool, AtomicU32, Ordering};
-use std::sync::{Arc, Mutex};
+use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 /// A served FX simulator with both ports on ptys symlinked in a private directory.
@@ -381,22 +382,6 @@ struct Req {
     sum_ok: bool,
 }
 
-/// What the responder does for one request, in order.
-enum Act {
-    Sleep(Duration),
-    /// Bytes at once.
-    Send(Vec<u8>),
-    /// Bytes one character at a time at the pace of `baud` (10-bit characters: 7E1).
-    Paced(Vec<u8>, u32),
-    /// 00H characters back to back at `baud` for this long: what a serial port delivers for
-    /// characters with parity or framing errors.
-    Noise(Duration, u32),
-}
-
-fn char_time(baud: u32) -> Duration {
-    Duration::from_nanos(10_000_000_000 / baud as u64)
-}
-
 /// The sum check: the low byte of the sum of the characters, two upper-case hex digits.
 fn sum2(bytes: &[u8]) -> Vec<u8> {
     format!("{:02X}", bytes.iter().fold(0u8, |a, b| a.wrapping_add(*b))).into_bytes()
@@ -463,114 +448,23 @@ fn parse_port(buf: &[u8]) -> Option<(usize, Option<Req>)> {
     Some((etx + 3, Some(req(&cmd, dev, count, sum_ok))))
 }
 
-struct Responder {
-    path: PathBuf,
-    seen: Arc<Mutex<Vec<Req>>>,
-    /// When the answer to each request was complete.
-    ends: Arc<Mutex<Vec<Instant>>>,
-    stop: Arc<AtomicBool>,
-}
-
-impl Responder {
-    fn seen(&self) -> Vec<Req> {
-        self.seen.lock().unwrap().clone()
-    }
-    fn ends(&self) -> Vec<Instant> {
-        self.ends.lock().unwrap().clone()
-    }
-    fn url(&self, scheme: &str, params: &str) -> String {
-        format!("{scheme}:{}{params}", self.path.display())
-    }
-}
-
-impl Drop for Responder {
-    fn drop(&mut self) {
-        self.stop.store(true, Ordering::SeqCst);
-    }
-}
+type Responder = pty_responder::Responder<Req>;
 
 /// Starts a responder on a new pty: `answer(request, k)` (k counts the requests from 0) says
 /// what to do for each. `port`: programming-port requests, else computer-link ones.
-fn responder(port: bool, mut answer: impl FnMut(&Req, usize) -> Vec<Act> + Send + 'static) -> Responder {
-    let (master, slave, path) = Pty::open().unwrap().into_parts();
-    let seen = Arc::new(Mutex::new(Vec::new()));
-    let ends = Arc::new(Mutex::new(Vec::new()));
-    let stop = Arc::new(AtomicBool::new(false));
-    let (tx, rx) = std::sync::mpsc::channel::<Req>();
-    let mut reader = master.try_clone().unwrap();
-    let (seen2, stop2) = (seen.clone(), stop.clone());
-    std::thread::spawn(move || {
-        // Our slave handle stays open: with no slave open, the master reads EIO.
-        let _slave = slave;
-        let mut buf: Vec<u8> = Vec::new();
-        while !stop2.load(Ordering::SeqCst) {
-            let mut fds = [nix::poll::PollFd::new(reader.as_fd(), nix::poll::PollFlags::POLLIN)];
-            if nix::poll::poll(&mut fds, nix::poll::PollTimeout::from(10u16)).unwrap_or(0) == 0 {
-                continue;
-            }
-            let mut b = [0u8; 512];
-            match reader.read(&mut b) {
-                Ok(n) if n > 0 => buf.extend_from_slice(&b[..n]),
-                _ => {
-                    std::thread::sleep(Duration::from_millis(5));
-                    continue;
-                }
-            }
-            loop {
-                // What cannot start a request is ignored, as a PLC ignores it.
-                let start = buf.iter().position(|b| *b == ENQ || (port && *b == STX)).unwrap_or(buf.len());
-                buf.drain(..start);
-                if buf.is_empty() {
-                    break;
-                }
-                let Some((len, req)) = (if port { parse_port(&buf) } else { parse_link(&buf) }) else { break };
-                buf.drain(..len);
-                if let Some(req) = req {
-                    seen2.lock().unwrap().push(req.clone());
-                    let _ = tx.send(req);
-                }
-            }
+fn responder(port: bool, answer: impl FnMut(&Req, usize) -> Vec<Act> + Send + 'static) -> Responder {
+    let frame = move |buf: &mut Vec<u8>, _| {
+        // What cannot start a request is ignored, as a PLC ignores it.
+        let start = buf.iter().position(|b| *b == ENQ || (port && *b == STX)).unwrap_or(buf.len());
+        buf.drain(..start);
+        if buf.is_empty() {
+            return None;
         }
-    });
-    let (ends2, stop3) = (ends.clone(), stop.clone());
-    std::thread::spawn(move || {
-        let mut w = master;
-        let mut k = 0;
-        while !stop3.load(Ordering::SeqCst) {
-            let req = match rx.recv_timeout(Duration::from_millis(10)) {
-                Ok(r) => r,
-                Err(std::sync::mpsc::RecvTimeoutError::Timeout) => continue,
-                Err(_) => break,
-            };
-            for act in answer(&req, k) {
-                // One character per character time, never faster: a thread woken late (a loaded
-                // machine) does not catch up with a burst, as a line cannot.
-                let paced = |w: &mut File, bytes: &[u8], baud: u32| {
-                    let mut due = Instant::now();
-                    for b in bytes {
-                        std::thread::sleep(due.saturating_duration_since(Instant::now()));
-                        let _ = w.write_all(&[*b]);
-                        due = due.max(Instant::now()) + char_time(baud);
-                    }
-                    std::thread::sleep(due.saturating_duration_since(Instant::now()));
-                };
-                match act {
-                    Act::Sleep(d) => std::thread::sleep(d),
-                    Act::Send(b) => {
-                        let _ = w.write_all(&b);
-                    }
-                    Act::Paced(b, baud) => paced(&mut w, &b, baud),
-                    Act::Noise(d, baud) => {
-                        let n = (d.as_nanos() / char_time(baud).as_nanos()) as usize;
-                        paced(&mut w, &vec![0u8; n], baud)
-                    }
-                }
-            }
-            ends2.lock().unwrap().push(Instant::now());
-            k += 1;
-        }
-    });
-    Responder { path, seen, ends, stop }
+        let (len, req) = if port { parse_port(buf) } else { parse_link(buf) }?;
+        buf.drain(..len);
+        Some(req)
+    };
+    pty_responder::start(frame, answer)
 }
 
 /// Link replies, built by hand: `STX station "FF" data ETX sum`, `ACK station "FF"`, `NAK

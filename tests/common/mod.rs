@@ -2,6 +2,9 @@
 
 #![allow(dead_code)]
 
+#[cfg(unix)]
+pub mod pty_responder;
+
 use std::io::Write;
 use std::process::{Command, Output, Stdio};
 
