@@ -230,6 +230,13 @@ impl Session {
         Ok(())
     }
 
+    /// Makes device `i` the current one (an index from [`index`](Self::index)).
+    pub fn use_index(&mut self, i: usize) {
+        if i < self.devices.len() {
+            self.current = i;
+        }
+    }
+
     pub fn current_name(&self) -> Option<&str> {
         self.devices.get(self.current).map(|e| e.name.as_str())
     }

@@ -281,7 +281,18 @@ fn device_and_channel_go_in_the_same_place_in_every_family() {
     assert_eq!(l[6]["message"], l[7]["message"], "{l:?}");
     assert_eq!(l[6]["message"], l[8]["message"], "{l:?}");
     assert_eq!(l[9]["device"], "servo", "{l:?}");
-    for bad in ["pto 0 status extra", "agent plc status extra", "agent nosuchdevice"] {
+    // The device after the command word for the K2's eeprom, rtc, events and wait, too.
+    let (o, l) =
+        run_json("eeprom plc status; eeprom status; rtc plc; events plc; use servo; rtc plc sync; servo status");
+    assert!(o.status.success(), "{}", both(&o));
+    assert_eq!(l[0]["message"], l[1]["message"], "{l:?}");
+    assert_eq!(l[2]["device"], "plc", "{l:?}");
+    // ... for that command only: afterwards the current device is the one `use` chose.
+    let (o, l) = run_json("use servo; rtc plc; get VW0");
+    assert!(!o.status.success(), "VW0 went to plc although `use servo` chose the drive: {l:?}");
+    let (_, l) = run_json("wait plc event 1 timeout=1ms");
+    assert_eq!(l[0]["error"]["kind"], "timeout", "{l:?}");
+    for bad in ["pto 0 status extra", "agent plc status extra", "agent nosuchdevice", "eeprom nosuchdevice status"] {
         let (o, l) = run_json(bad);
         assert!(!o.status.success(), "`{bad}` was accepted: {l:?}");
     }

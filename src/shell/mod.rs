@@ -194,9 +194,41 @@ impl Shell {
                 .hint(commands::suggest(&name));
             return Err((name, e));
         };
+        if let Some((dev, args)) = self.device_first(spec, args) {
+            // The command acts on DEVICE as if it were the current one, for this command only.
+            let before = self.session.current_index().ok();
+            self.session.use_index(dev);
+            let r = self.run_spec(spec, args);
+            if let Some(b) = before {
+                self.session.use_index(b);
+            }
+            return r;
+        }
+        self.run_spec(spec, args)
+    }
+
+    fn run_spec(&mut self, spec: &commands::CommandSpec, args: Args) -> CmdResult {
         (spec.run)(self, args)
             .map(|o| name_outcome(spec, args.text, o))
             .map_err(|e| (spec.name.to_string(), suggest_subcommand(spec, args, e)))
+    }
+
+    /// The device word of a command in [`commands::DEVICE_FIRST`] (`eeprom press status`,
+    /// `rtc press`, `wait press event 1`): an open device's name right after the command word
+    /// (a sub-command's word wins over a device of the same name). Returns the device and the
+    /// arguments after it.
+    fn device_first<'a>(&self, spec: &commands::CommandSpec, args: Args<'a>) -> Option<(usize, Args<'a>)> {
+        if !commands::DEVICE_FIRST.contains(&spec.name) {
+            return None;
+        }
+        let word = args.text.split_whitespace().next()?;
+        if spec.subcommands.iter().any(|s| s.eq_ignore_ascii_case(word)) {
+            return None;
+        }
+        let dev = self.session.index(word).ok()?;
+        let rest = &args.text[word.len()..];
+        let lead = rest.len() - rest.trim_start().len();
+        Some((dev, Args { text: rest.trim(), offset: args.offset + word.len() + lead }))
     }
 
     /// Runs a line and writes each result (human-readable errors to stderr, JSON ones to `out`);

@@ -78,6 +78,12 @@ pub static COMMANDS: &[CommandSpec] = &[
     help::QUIT,
 ];
 
+/// Commands that take a device right after the command word (docs/commands.md, "Where the
+/// device goes"): `eeprom press status`, `rtc press sync`, `events press`, `wait press event 1`.
+/// `servo`, `umpk` and `agent` read their device word themselves; K2 instructions take it as
+/// the prefix of their channel (`pto press:0`), operands as theirs (`get press:VW0`).
+pub const DEVICE_FIRST: &[&str] = &["eeprom", "rtc", "events", "wait"];
+
 pub fn find(name: &str) -> Option<&'static CommandSpec> {
     COMMANDS.iter().find(|c| c.name == name || c.aliases.contains(&name))
 }
