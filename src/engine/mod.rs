@@ -213,7 +213,10 @@ pub trait Family {
         n < self.events()
     }
     fn event_list(&self) -> String {
-        format!("0–{}", self.events() - 1)
+        match self.events() {
+            0 => "none: this PLC has no interrupts".to_string(),
+            n => format!("0–{}", n - 1),
+        }
     }
 }
 

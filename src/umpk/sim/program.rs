@@ -439,6 +439,9 @@ mod tests {
         assert!(e("LD I16\nST Q0\n").contains("I16"), "the UMPK16 has I0…I15");
         assert!(IlRunner::load("LD I8\nST Q0\n", "p.il", &MODELS[0]).is_err(), "the UMPK8 has I0…I7");
         assert!(e("LD I0\nST Q0\nST X1\n").contains("p.il:3"));
+        // The UMPK has no interrupts: an ATCH is refused saying so (it once underflowed).
+        let atch = e("LD I0\nATCH INT_0, 0\n");
+        assert!(atch.contains("no interrupts"), "{atch}");
     }
 
     #[test]
