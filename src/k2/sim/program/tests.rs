@@ -413,6 +413,87 @@ fn position_instructions_check_frequencies_and_the_emergency_stop_bit() {
     assert!(on(&mut s, "Q0.2"), "reverse");
 }
 
+/// Pulses `exec` (M0.0) off and on and lets the move finish.
+fn restart(s: &mut K2Sim, clock: &Clock, ms: u64) {
+    set(s, "M0.0", Value::Bool(false));
+    clock.step(Duration::from_millis(2));
+    set(s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(ms));
+}
+
+#[test]
+fn backward_moves_count_down_whether_the_direction_pin_is_freed_or_not() {
+    // K2 §3.4.3.1: SMD212 "increases counting forward and decreases counting backward";
+    // SM201.3 = 1 frees the direction pin as a plain output, the axis still moves backward.
+    // PABS is absolute (§3.4.1): PABS 0 after PABS −1000 returns to 0, and again stays there.
+    for freed in [false, true] {
+        let (mut s, clock) = sim();
+        s.load_program(
+            "LD %SM0.0\nPREL 0, %M0.0, %VW0, %VD2, %VW6, %VD8, %M0.1, %M0.2, %MB1\n\
+             LD %SM0.0\nPABS 0, %M2.0, %VW0, %VD2, %VW6, %VD12, %M2.1, %M2.2, %MB3",
+            "rev.il",
+        )
+        .unwrap();
+        for (op, v) in [("VW0", 125), ("VD2", 10_000), ("VW6", 0), ("VD8", -1000)] {
+            set(&mut s, op, Value::Int(v));
+        }
+        set(&mut s, "SM201.3", Value::Bool(freed));
+        set(&mut s, "Q0.2", Value::Bool(false));
+        restart(&mut s, &clock, 200);
+        assert!(on(&mut s, "M0.1") && !on(&mut s, "M0.2"), "PREL −1000 DONE, no ERR (freed {freed})");
+        assert_eq!(get(&mut s, "SMD212/DINT"), Value::Int(-1000), "PREL −1000 (freed {freed})");
+        assert_eq!(on(&mut s, "Q0.2"), !freed, "the direction output is driven only while SM201.3 = 0");
+        set(&mut s, "SM201.6", Value::Bool(true));
+        clock.step(Duration::from_millis(2));
+        set(&mut s, "SM201.6", Value::Bool(false));
+        let mut seen = Vec::new();
+        for target in [-1000, 0, 0, 500, -250] {
+            set(&mut s, "VD12", Value::Int(target));
+            set(&mut s, "M2.0", Value::Bool(false));
+            clock.step(Duration::from_millis(2));
+            set(&mut s, "M2.0", Value::Bool(true));
+            clock.step(Duration::from_millis(300));
+            assert!(
+                on(&mut s, "M2.1") && !on(&mut s, "M2.2"),
+                "PABS {target} DONE (freed {freed}): ERRID {:?} at {:?}",
+                get(&mut s, "MB3"),
+                get(&mut s, "SMD212/DINT")
+            );
+            seen.push(get(&mut s, "SMD212/DINT").as_i64());
+        }
+        assert_eq!(seen, [-1000, 0, 0, 500, -250], "PABS is absolute in both directions (freed {freed})");
+    }
+}
+
+#[test]
+fn jog_and_homing_backward_count_down_with_the_direction_pin_freed() {
+    // K2 §3.4.3.1 (SMD212 decreases backward), §3.4.3.2 (PJOG DIRC), with SM201.3 = 1.
+    let (mut s, clock) = sim();
+    s.load_program(
+        "LD %SM0.0\nPJOG 0, %M0.0, %VD0, %VW4, %M0.1, %M0.2, %MB1\n\
+         LD %SM0.0\nPFLO_F 1, %M2.0, %VD10, %VW14, %VW16, %VD18, %M2.1, %M2.2, %MB3",
+        "jogrev.il",
+    )
+    .unwrap();
+    set(&mut s, "SM201.3", Value::Bool(true));
+    set(&mut s, "SM231.3", Value::Bool(true));
+    set(&mut s, "VD0", Value::Int(1000));
+    set(&mut s, "VW4", Value::Int(1));
+    set(&mut s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(1000));
+    let a = get(&mut s, "SMD212/DINT").as_i64();
+    assert!((-1010..=-990).contains(&a), "1 s backward at 1 kHz: {a}");
+    assert!(!on(&mut s, "Q0.2"), "the freed pin is left alone");
+    // PFLO_F with a negative COUNT moves backward on channel 1.
+    for (op, v) in [("VD10", 1000), ("VW14", 1), ("VW16", 1), ("VD18", -300)] {
+        set(&mut s, op, Value::Int(v));
+    }
+    set(&mut s, "M2.0", Value::Bool(true));
+    clock.step(Duration::from_millis(400));
+    assert!(on(&mut s, "M2.1"), "DONE");
+    assert_eq!(get(&mut s, "SMD242/DINT"), Value::Int(-300));
+}
+
 #[test]
 fn pjog_follows_maxf_and_pflo_f_counts() {
     let (mut s, clock) = sim();
