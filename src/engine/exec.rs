@@ -245,6 +245,11 @@ impl Cpu {
         ScanOutcome { instructions: self.executed - before, cost_ns: self.spent_ns - cost_before, exit }
     }
 
+    /// The POU attached to `event`, whether interrupts are enabled or not.
+    pub fn attached_to(&self, event: u32) -> Option<u32> {
+        self.attached.get(event as usize).copied().flatten()
+    }
+
     /// The POU attached to `event`, if interrupts are enabled.
     pub fn handler(&self, event: u32) -> Option<u32> {
         if !self.interrupts_enabled {

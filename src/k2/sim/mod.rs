@@ -279,7 +279,9 @@ impl K2Sim {
         // years of uptime); the scan time is a whole number of ms, so scans follow from ms.
         const SCAN_MS: u64 = SCAN_TIME.as_millis() as u64;
         const _: () = assert!(SCAN_TIME.as_nanos() == SCAN_MS as u128 * 1_000_000);
-        let ms = now_ns.saturating_sub(self.start_ns) / 1_000_000;
+        // The clock bits run on the program's time (PAUSE and DEBUG freeze it: program::Plc::thaw).
+        let prog_ns = self.plc.as_ref().map_or(now_ns, |p| p.program_ns(now_ns));
+        let ms = prog_ns.saturating_sub(self.start_ns) / 1_000_000;
         let scans = ms / SCAN_MS;
         let mut b = 0u8;
         b |= 1; // SM0.0 always on (§8)

@@ -687,3 +687,173 @@ fn stop_values_of_the_outputs_are_a_setting() {
     assert!(s.set_stop_outputs("VB0=1").is_err());
     assert!(s.set_stop_outputs("QB0=300").is_err());
 }
+
+// ---- Frozen time, waiting events, the mode table ------------------------------------
+
+const FROZEN: &str = "PROGRAM MAIN\nLD %SM0.1\nMOVE B#10, %SMB34\nATCH TICK, 10\nENI\n(* Network 2 *)\n\
+LD %I0.0\nTON T37, 20\nST %Q0.0\n(* Network 3 *)\nLD %SM0.0\nINC %VW0\nEND_PROGRAM\n\
+INTERRUPT TICK\nLD %SM0.0\nINC %VW20\nEND_INTERRUPT";
+
+#[test]
+fn a_breakpoint_halt_is_not_credited_to_timers_timed_interrupts_or_sm0_5() {
+    // docs/il.md "Debugging": DEBUG freezes the program's time as PAUSE does (K80S DEBUG mode;
+    // K2 §2.1.2 timers and timed interrupts count program time). A 2 s TON halted for 10 s.
+    let (mut s, clock) = sim();
+    s.load_program(FROZEN, "frozen.il").unwrap();
+    set(&mut s, "I0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(500));
+    s.advance();
+    s.set_breakpoint("12").unwrap();
+    clock.step(Duration::from_millis(2));
+    s.advance();
+    assert_eq!(s.plc().unwrap().mode, Mode::Debug);
+    let (t37, ticks, sm05) = (get(&mut s, "T37").as_i64(), get(&mut s, "VW20").as_i64(), get(&mut s, "SM0.5"));
+    assert!((4..=5).contains(&t37), "0.5 s of TON: {t37}");
+    clock.step(Duration::from_millis(10_250));
+    s.advance();
+    assert_eq!(get(&mut s, "T37").as_i64(), t37, "frozen while halted");
+    assert_eq!(get(&mut s, "VW20").as_i64(), ticks, "no timed interrupt while halted");
+    assert_eq!(get(&mut s, "SM0.5"), sm05, "the 1 s clock is frozen too");
+    s.clear_breakpoints();
+    s.set_mode(Mode::Run).unwrap();
+    assert_eq!(get(&mut s, "SM0.5"), sm05, "and continues from its phase");
+    clock.step(Duration::from_millis(100));
+    let t = get(&mut s, "T37").as_i64();
+    assert!(t - t37 <= 2, "100 ms after RUN the timer moved by 1, not by the halt: {t37} → {t}");
+    let n = get(&mut s, "VW20").as_i64() - ticks;
+    assert!((95..=105).contains(&n), "1 ms timed interrupt: about 100 in 100 ms, no burst: {n}");
+    clock.step(Duration::from_millis(1_300));
+    assert!(!on(&mut s, "Q0.0"), "1.9 s of program time: not yet");
+    clock.step(Duration::from_millis(200));
+    assert!(on(&mut s, "Q0.0"), "2.1 s of program time: done");
+}
+
+#[test]
+fn stepping_in_debug_credits_no_time_between_steps() {
+    let (mut s, clock) = sim();
+    s.load_program(FROZEN, "frozen.il").unwrap();
+    set(&mut s, "I0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(300));
+    s.advance();
+    s.set_breakpoint("12").unwrap();
+    clock.step(Duration::from_millis(2));
+    s.advance();
+    let t37 = get(&mut s, "T37").as_i64();
+    for _ in 0..5 {
+        clock.step(Duration::from_secs(5));
+        s.debug_step(20, false).unwrap();
+    }
+    let t = get(&mut s, "T37").as_i64();
+    assert!(t - t37 <= 1, "25 s of stepping is not timer time: {t37} → {t}");
+}
+
+const DISI: &str = "PROGRAM MAIN\nLD %SM0.1\nATCH ON_EDGE, 0\nLD %M0.0\nDISI\nLD %M0.1\nENI\nEND_PROGRAM\n\
+INTERRUPT ON_EDGE\nLD %SM0.0\nINC %VW10\nLD %SM4.1\nS %M1.0, 1\nEND_INTERRUPT";
+
+fn edge(s: &mut K2Sim) {
+    set(s, "I0.0", Value::Bool(false));
+    set(s, "I0.0", Value::Bool(true));
+}
+
+#[test]
+fn an_edge_during_disi_waits_and_runs_once_after_eni() {
+    // docs/il.md "Interrupts": events wait while interrupts are disabled (S7-200 System Manual,
+    // interrupt queues: I/O queue of 16, overflow bit SM4.1).
+    let (mut s, clock) = sim();
+    s.load_program(DISI, "disi.il").unwrap();
+    set(&mut s, "M0.1", Value::Bool(true));
+    clock.step(Duration::from_millis(2));
+    edge(&mut s);
+    assert_eq!(get(&mut s, "VW10"), Value::Int(1), "enabled: runs at once");
+    set(&mut s, "M0.1", Value::Bool(false));
+    set(&mut s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(2));
+    edge(&mut s);
+    clock.step(Duration::from_millis(5));
+    assert_eq!(get(&mut s, "VW10"), Value::Int(1), "disabled: waits");
+    set(&mut s, "M0.0", Value::Bool(false));
+    set(&mut s, "M0.1", Value::Bool(true));
+    clock.step(Duration::from_millis(5));
+    assert_eq!(get(&mut s, "VW10"), Value::Int(2), "ran once after ENI");
+    clock.step(Duration::from_millis(5));
+    assert_eq!(get(&mut s, "VW10"), Value::Int(2), "and only once");
+    assert!(!on(&mut s, "M1.0"), "no overflow");
+    // 20 edges while disabled: the queue keeps 16, the overflow bit says some were lost.
+    set(&mut s, "M0.1", Value::Bool(false));
+    set(&mut s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(2));
+    for _ in 0..20 {
+        edge(&mut s);
+    }
+    set(&mut s, "M0.0", Value::Bool(false));
+    set(&mut s, "M0.1", Value::Bool(true));
+    clock.step(Duration::from_millis(5));
+    assert_eq!(get(&mut s, "VW10"), Value::Int(18), "16 queued edges ran");
+    assert!(on(&mut s, "M1.0"), "SM4.1 was on inside the routines");
+    assert!(!on(&mut s, "SM4.1"), "cleared once the queue emptied");
+}
+
+#[test]
+fn an_edge_during_pause_waits_for_run() {
+    let (mut s, clock) = sim();
+    s.load_program(DISI, "disi.il").unwrap();
+    set(&mut s, "M0.1", Value::Bool(true));
+    clock.step(Duration::from_millis(2));
+    s.set_mode(Mode::Pause).unwrap();
+    edge(&mut s);
+    clock.step(Duration::from_millis(5));
+    assert_eq!(get(&mut s, "VW10"), Value::Int(0), "paused: waits");
+    s.set_mode(Mode::Run).unwrap();
+    clock.step(Duration::from_millis(2));
+    assert_eq!(get(&mut s, "VW10"), Value::Int(1), "ran after RUN");
+    s.set_mode(Mode::Stop).unwrap();
+    edge(&mut s);
+    s.set_mode(Mode::Run).unwrap();
+    clock.step(Duration::from_millis(5));
+    assert_eq!(get(&mut s, "VW10"), Value::Int(1), "STOP drops events (a fresh start)");
+}
+
+#[test]
+fn the_switch_and_the_command_combine_as_the_manuals_table() {
+    // K2 §2.2.1: switch RUN + command RUN = RUN; every other pair = STOP; the last command is
+    // kept while the switch is at STOP.
+    let (mut s, clock) = sim();
+    s.load_program("LD %SM0.1\nINC %VW0\nLD %SM0.0\nINC %VW2", "sw.il").unwrap();
+    let mode = |s: &K2Sim| s.plc().unwrap().mode;
+    for (switch_run, command, want) in [
+        (true, Mode::Run, Mode::Run),
+        (true, Mode::Stop, Mode::Stop),
+        (false, Mode::Run, Mode::Stop),
+        (false, Mode::Stop, Mode::Stop),
+    ] {
+        s.set_switch(true).unwrap();
+        let _ = s.set_mode(command);
+        s.set_switch(switch_run).unwrap();
+        let r = s.set_mode(command);
+        assert_eq!(r.is_err(), !switch_run && command == Mode::Run, "refusal says the switch wins");
+        assert_eq!(mode(&s), want, "switch {switch_run} command {command:?}");
+    }
+    // Switch STOP then RUN with the last command RUN: RUN again, from a first scan.
+    s.set_switch(true).unwrap();
+    s.set_mode(Mode::Run).unwrap();
+    let first = get(&mut s, "VW0").as_i64();
+    s.set_switch(false).unwrap();
+    assert_eq!(mode(&s), Mode::Stop);
+    s.set_switch(true).unwrap();
+    assert_eq!(mode(&s), Mode::Run, "the kept RUN command runs");
+    assert_eq!(get(&mut s, "VW0").as_i64(), first + 1, "STOP → RUN starts with a first scan");
+    // A RUN command given while the switch is at STOP takes effect when it returns to RUN.
+    s.set_mode(Mode::Stop).unwrap();
+    s.set_switch(false).unwrap();
+    assert!(s.set_mode(Mode::Run).is_err());
+    s.set_switch(true).unwrap();
+    assert_eq!(mode(&s), Mode::Run);
+    // The last command STOP: the switch alone does not start it.
+    s.set_mode(Mode::Stop).unwrap();
+    s.set_switch(false).unwrap();
+    s.set_switch(true).unwrap();
+    assert_eq!(mode(&s), Mode::Stop);
+    let n = get(&mut s, "VW2");
+    clock.step(Duration::from_millis(10));
+    assert_eq!(get(&mut s, "VW2"), n, "no scans");
+}
