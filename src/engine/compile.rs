@@ -568,6 +568,7 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
             .chain(self.specials.iter().map(|s| s.name))
             .chain(["LDW=", "LDW<>", "LDW>", "LDW<", "LDD=", "LDR>", "AW=", "OW="].iter().copied());
         let mut e = self.e(pos, format!("unknown instruction {m}"));
+        let names = names.filter(|n| !isa::NEVER_SUGGESTED.contains(n));
         e = e.hint(match suggest(m, names) {
             Some(n) => format!("did you mean {n}? (docs/il.md lists the instructions)"),
             None => "docs/il.md lists the instructions this simulator runs".into(),

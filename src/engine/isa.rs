@@ -425,6 +425,15 @@ pub static CORE: &[Def] = &[
     d("NOP", K::Nop, (0, 1), C::Bit, "nothing", "IEC"),
 ];
 
+/// Instructions never offered as a "did you mean" for an unknown name, in any family: each
+/// stops the CPU or an axis, moves an axis, starts pulses or counters, sets the clock,
+/// silences interrupts or ends the program — a typo must not become one of them (a user who
+/// meant one types it).
+pub const NEVER_SUGGESTED: &[&str] = &[
+    "STOP", "PSTOP", "PLS", "PREL", "PABS", "PHOME", "PJOG", "PFLO_F", "HSC", "HDEF", "SET_RTC", "DISI", "DTCH", "END",
+    "MEND", "FEND",
+];
+
 /// Comparison mnemonics, S7-200 style: `LD`/`A`/`O` + `B`/`W`/`D`/`R` + operator.
 pub fn compare(m: &str) -> Option<Def> {
     let (comb, rest) = if let Some(r) = m.strip_prefix("LD") {

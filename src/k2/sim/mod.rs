@@ -85,6 +85,8 @@ pub struct K2Sim {
     run_ends: Vec<usize>,
     /// Numbered events waiting for their interrupt routines (program::irq).
     irq_queue: Vec<(Duration, u32)>,
+    /// A program's STOP instruction ran: the CPU goes to STOP at the end of the scan.
+    pub(crate) stop_requested: bool,
 }
 
 impl K2Sim {
@@ -114,6 +116,7 @@ impl K2Sim {
             raised: Vec::new(),
             run_ends: Vec::new(),
             irq_queue: Vec::new(),
+            stop_requested: false,
         };
         sim.refresh_system_bits(start);
         sim

@@ -47,6 +47,9 @@ pub fn status(s: &K2Sim, name: &str) -> Outcome {
         ms(p.costs.min_scan_ns),
         ms(p.costs.overhead_ns)
     ));
+    if p.mode == Mode::Stop && p.stopped_by_program {
+        lines.push("stopped by the program's STOP instruction (sim cpu run restarts it)".to_string());
+    }
     for f in &p.faults {
         lines.push(format!("fault at {:.3} s: {f}", f.at_ns as f64 / 1e9));
     }

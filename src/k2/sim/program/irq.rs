@@ -103,6 +103,7 @@ impl K2Sim {
             }
         }
         self.plc = Some(p);
+        self.take_stop_request();
     }
 
     /// Runs the events that waited, at `at`, while interrupts are enabled in RUN (a routine

@@ -123,6 +123,8 @@ pub struct Plc {
     /// Interrupt events waiting while interrupts are disabled (DISI), or the CPU is paused
     /// or halted: run in order once they may (S7-200 interrupt queues).
     pub pending: Vec<u32>,
+    /// The last STOP came from the program's STOP instruction.
+    pub stopped_by_program: bool,
     /// AQ words in STOP (K2 §2.2.1: "all outputs, including DO and AO").
     pub stop_analog: Vec<u8>,
     pub faults: Vec<Fault>,
@@ -159,6 +161,7 @@ impl Plc {
             frozen_ns: 0,
             pending: Vec::new(),
             stop_analog: Vec::new(),
+            stopped_by_program: false,
             faults: Vec::new(),
             stats: ScanStats::default(),
             run_scans: 0,
@@ -404,6 +407,9 @@ impl K2Sim {
         if new == old {
             return new;
         }
+        if new != Mode::Stop {
+            p.stopped_by_program = false;
+        }
         match new {
             Mode::Stop => {
                 p.paused_at = None;
@@ -629,6 +635,19 @@ impl K2Sim {
             return None;
         }
         self.plc = Some(p);
+        self.take_stop_request();
         None
+    }
+
+    /// A STOP instruction ran (K80S 5.4.5): the CPU goes to STOP now that the scan or the
+    /// routine is over (S7-200: "the transition to STOP is made at the end of the current
+    /// scan").
+    pub(super) fn take_stop_request(&mut self) {
+        if std::mem::take(&mut self.stop_requested) {
+            if let Some(p) = self.plc.as_mut() {
+                p.stopped_by_program = true;
+            }
+            self.enter_mode(Mode::Stop);
+        }
     }
 }

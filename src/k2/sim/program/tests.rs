@@ -181,8 +181,11 @@ fn load_errors_name_the_file_line_and_a_suggestion() {
     let (mut s, _) = sim();
     let e = s.load_program("LD %SM0.0\nMOVE 1, %VX0", "bad.il").unwrap_err();
     assert!(e.message.starts_with("bad.il:2:9:"), "{}", e.message);
+    let e = s.load_program("LD %SM0.0\nMOVEE 1, %VW0", "bad.il").unwrap_err();
+    assert!(e.hint.as_deref().unwrap_or("").contains("MOVE"), "{:?}", e.hint);
+    // A typo is never pointed at an instruction that starts pulses (engine::isa::NEVER_SUGGESTED).
     let e = s.load_program("LD %SM0.0\nPLSS 0", "bad.il").unwrap_err();
-    assert!(e.hint.as_deref().unwrap_or("").contains("PLS"), "{:?}", e.hint);
+    assert!(!e.hint.as_deref().unwrap_or("").contains("PLS"), "{:?}", e.hint);
     let e = s.load_program("LD %I7.0", "bad.il").unwrap_err();
     assert!(e.message.contains("I7.0") && e.message.contains("K205-16DT"), "{}", e.message);
     assert!(s.plc().is_none(), "nothing was loaded");
@@ -856,4 +859,82 @@ fn the_switch_and_the_command_combine_as_the_manuals_table() {
     let n = get(&mut s, "VW2");
     clock.step(Duration::from_millis(10));
     assert_eq!(get(&mut s, "VW2"), n, "no scans");
+}
+
+#[test]
+fn the_stop_instruction_stops_the_cpu_at_the_end_of_the_scan() {
+    // K80S 5.4.5: the program's STOP changes the mode to STOP; the rest of the scan runs
+    // (S7-200 System Manual, STOP instruction). Outputs take their STOP values (K2 §2.2.1).
+    let (mut s, clock) = sim();
+    s.load_program("LD %SM0.0\nS %Q0.0, 1\nLD %I0.0\nSTOP\nLD %SM0.0\nINC %VW0", "stop.il").unwrap();
+    clock.step(Duration::from_millis(5));
+    s.advance();
+    assert_eq!(s.plc().unwrap().mode, Mode::Run);
+    let n = get(&mut s, "VW0").as_i64();
+    set(&mut s, "I0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(5));
+    s.advance();
+    assert_eq!(s.plc().unwrap().mode, Mode::Stop);
+    assert!(s.plc().unwrap().stopped_by_program);
+    assert_eq!(get(&mut s, "VW0").as_i64(), n + 1, "the scan that ran STOP finished");
+    assert!(!on(&mut s, "Q0.0"), "outputs at their STOP values");
+    set(&mut s, "I0.0", Value::Bool(false));
+    s.set_mode(Mode::Run).unwrap();
+    clock.step(Duration::from_millis(5));
+    s.advance();
+    assert_eq!(s.plc().unwrap().mode, Mode::Run, "sim cpu run restarts it");
+}
+
+#[test]
+fn no_unknown_instruction_is_ever_pointed_at_a_dangerous_one() {
+    // A typo must not be answered "did you mean PSTOP?" (an axis emergency stop), STOP, a
+    // move, PLS … (engine::isa::NEVER_SUGGESTED). Every name one edit away from each of them
+    // (deletions, substitutions, insertions, transpositions), and the S7-200 names the
+    // dialect lacks, either load or get a hint naming none of them.
+    let (s, _) = sim();
+    let letters: Vec<char> = ('A'..='Z').chain('0'..='9').chain(['_']).collect();
+    let mut names: Vec<String> =
+        ["STOPP", "STP", "PSTP", "ESTOP", "END", "MEND", "HALT", "SCRE", "LSCR", "SCRT", "PID", "XMT", "RCV", "NETR"]
+            .iter()
+            .map(|x| x.to_string())
+            .collect();
+    for d in crate::engine::isa::NEVER_SUGGESTED {
+        let c: Vec<char> = d.chars().collect();
+        for i in 0..=c.len() {
+            if i < c.len() {
+                let mut v = c.clone();
+                v.remove(i);
+                names.push(v.iter().collect());
+                for l in &letters {
+                    let mut v = c.clone();
+                    v[i] = *l;
+                    names.push(v.iter().collect());
+                }
+            }
+            if i + 1 < c.len() {
+                let mut v = c.clone();
+                v.swap(i, i + 1);
+                names.push(v.iter().collect());
+            }
+            for l in &letters {
+                let mut v = c.clone();
+                v.insert(i, *l);
+                names.push(v.iter().collect());
+            }
+        }
+    }
+    let mut checked = 0;
+    for n in &names {
+        let Err(e) = s.compile(&format!("LD %SM0.0\n{n} 0"), "t.il") else { continue };
+        if !e.message.contains("unknown instruction") {
+            continue;
+        }
+        checked += 1;
+        let hint = e.hint.clone().unwrap_or_default();
+        for d in crate::engine::isa::NEVER_SUGGESTED {
+            let named = hint.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_')).any(|w| w == *d);
+            assert!(!named, "`{n}` is answered with {d}: {hint}");
+        }
+    }
+    assert!(checked > 1000, "the variants were unknown instructions: {checked}");
 }
