@@ -303,7 +303,8 @@ async fn serve_k2(
         sim.faults.add(&spec, now);
     }
     if let Some(p) = &args.program {
-        let text = std::fs::read_to_string(p).map_err(|e| Error::io(format!("cannot read {}: {e}", p.display())))?;
+        let text = crate::core::encoding::read_source(p)
+            .map_err(|e| Error::io(format!("cannot read {}: {e}", p.display())))?;
         sim.load_program(&text, &p.display().to_string())?;
         ready.insert("program".into(), json!(p.display().to_string()));
     }

@@ -822,7 +822,7 @@ impl Device for K2Sim {
             }
             "retain" => self.set_retain(value),
             "program" => {
-                let text = std::fs::read_to_string(value)
+                let text = crate::core::encoding::read_source(value)
                     .map_err(|e| Error::io(format!("cannot read the program {value}: {e}")))?;
                 self.load_program(&text, value).map(|_| ())
             }

@@ -95,7 +95,7 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
             None | Some("status") => Ok(status(s, &name)),
             Some("load") => {
                 let path = words.get(2).ok_or_else(|| Error::usage("sim program load needs a file, e.g. prog.il"))?;
-                let text = std::fs::read_to_string(path)
+                let text = crate::core::encoding::read_source(path)
                     .map_err(|e| Error::io(format!("cannot read {path}: {e}")).device(name.clone()))?;
                 let msg = s.load_program(&text, path).map_err(|e| e.device(name.clone()))?;
                 Ok(status(s, &name).text(msg))
