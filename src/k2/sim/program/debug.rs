@@ -35,8 +35,10 @@ impl K2Sim {
             .filter(|p| p.user.is_some())
             .ok_or_else(|| Error::state("no program is loaded").hint("sim program load FILE.il"))?;
         let l = p.user.as_ref().unwrap();
-        let spec = spec.trim();
-        let net = spec.strip_prefix("network").or_else(|| spec.strip_prefix('n')).map(str::trim);
+        // From Lua (`plc:breakpoint("network 2")`) the words arrive quoted, as one argument.
+        let spec = spec.trim().trim_matches(['"', '\'']).trim();
+        let lower = spec.to_ascii_lowercase();
+        let net = lower.strip_prefix("network").or_else(|| lower.strip_prefix('n')).map(str::trim);
         let idx = if let Some(n) = net.and_then(|n| n.parse::<u32>().ok()) {
             l.prog.network.iter().position(|x| *x == n).ok_or_else(|| {
                 Error::usage(format!("{} has no network {n}", l.source))

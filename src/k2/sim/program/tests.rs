@@ -938,3 +938,14 @@ fn no_unknown_instruction_is_ever_pointed_at_a_dangerous_one() {
     }
     assert!(checked > 1000, "the variants were unknown instructions: {checked}");
 }
+
+#[test]
+fn breakpoint_specs_are_accepted_as_lua_passes_them() {
+    // plc:breakpoint("network 2") reaches `sim break "network 2"` (docs/il.md "Debugging").
+    let (mut s, _) = sim();
+    s.load_program("(* Network 1 *)\nLD %SM0.0\nINC %VW0\n(* Network 2 *)\nLD %SM0.0\nINC %VW2", "n.il").unwrap();
+    for spec in ["network 2", "\"network 2\"", "'network 2'", "Network 2", "n2", "5", "\"n.il:5\""] {
+        let at = s.set_breakpoint(spec).unwrap_or_else(|e| panic!("{spec}: {e}"));
+        assert!(at.contains("n.il:5"), "{spec}: {at}");
+    }
+}
