@@ -25,6 +25,9 @@ pub enum FaultKind {
     CallDepth,
     /// A family instruction refused.
     Instruction,
+    /// Division by zero: a normal error (K2 §2.2.1 "normal error": code saved, Err LED;
+    /// K80S 5.3.4: an operation error is recorded and the CPU continues).
+    DivZero,
 }
 
 impl FaultKind {
@@ -35,6 +38,7 @@ impl FaultKind {
             FaultKind::BadAddress => 2,
             FaultKind::CallDepth => 3,
             FaultKind::Instruction => 4,
+            FaultKind::DivZero => 5,
         }
     }
     pub fn name(self) -> &'static str {
@@ -43,7 +47,12 @@ impl FaultKind {
             FaultKind::BadAddress => "bad indirect address",
             FaultKind::CallDepth => "call depth",
             FaultKind::Instruction => "instruction",
+            FaultKind::DivZero => "division by zero",
         }
+    }
+    /// Serious errors stop the CPU; normal ones are recorded and it continues (K2 §2.2.1).
+    pub fn serious(self) -> bool {
+        self != FaultKind::DivZero
     }
 }
 
@@ -94,6 +103,9 @@ pub struct ScanOutcome {
     pub exit: Exit,
 }
 
+/// Normal errors a CPU keeps between two looks by its family.
+pub const MAX_NORMAL_ERRORS: usize = 16;
+
 /// Nesting limit of subroutine calls (S7-200 allows 8 levels from the main program).
 pub const MAX_CALL_DEPTH: usize = 8;
 /// Depth of the logic stack and of parentheses.
@@ -126,6 +138,10 @@ pub struct Cpu {
     pub executed: u64,
     /// Watchdog restart point (WDT): the scan time counts from here.
     wdt_mark_ns: u64,
+    /// Normal errors since the family last took them ([`Cpu::take_errors`]), at most
+    /// [`MAX_NORMAL_ERRORS`] (the newest kept).
+    #[serde(default)]
+    errors: Vec<Fault>,
 }
 
 fn logic(op: u8, a: bool, b: bool) -> bool {
@@ -189,6 +205,24 @@ impl Cpu {
             attached: Vec::new(),
             ..Cpu::default()
         }
+    }
+
+    /// The normal errors recorded since the last call (division by zero), oldest first.
+    pub fn take_errors(&mut self) -> Vec<Fault> {
+        std::mem::take(&mut self.errors)
+    }
+
+    /// Records a normal error at instruction `pc` (cold: only on the error path).
+    #[cold]
+    fn normal_error(&mut self, prog: &Program, pc: u32, kind: FaultKind, message: &str) {
+        let mut f = Fault::new(kind, message);
+        f.line = prog.pos.get(pc as usize).map_or(0, |p| p.line);
+        f.instruction = prog.text.get(pc as usize).cloned().unwrap_or_default();
+        f.at_ns = self.now_ns;
+        if self.errors.len() >= MAX_NORMAL_ERRORS {
+            self.errors.remove(0);
+        }
+        self.errors.push(f);
     }
 
     /// Runs the main program once from the top at virtual time `now_ns` (or resumes a
@@ -413,7 +447,12 @@ impl Cpu {
                 Ins::Arith { op, ty, a, b, out } => {
                     if self.cr {
                         match arith(m, *op, *ty, a, b, out) {
-                            Ok(eno) => self.cr = eno,
+                            Ok(eno) => {
+                                self.cr = eno;
+                                if !eno && matches!(op, Arith::Div | Arith::Mod) && is_zero(m, b, *ty) {
+                                    self.normal_error(prog, (pc - 1) as u32, FaultKind::DivZero, "division by zero");
+                                }
+                            }
                             Err(f) => return self.fault(prog, (pc - 1) as u32, f),
                         }
                     }
@@ -705,6 +744,16 @@ fn bad<M: Machine>(m: &M, ops: &[&Opd], ty: DataType) -> Fault {
     ops.iter()
         .find_map(|o| read(m, o, ty).err())
         .unwrap_or_else(|| Fault::new(FaultKind::BadAddress, "bad indirect address"))
+}
+
+/// Whether a divisor reads as zero (cold: after a failed division only).
+#[cold]
+fn is_zero<M: Machine>(m: &M, b: &Opd, ty: DataType) -> bool {
+    match val(m, b, ty) {
+        Some(v) if ty == DataType::Real => f32::from_bits(v) == 0.0,
+        Some(v) => as_i64(ty, v) == 0,
+        None => false,
+    }
 }
 
 fn arith<M: Machine>(m: &mut M, op: Arith, ty: DataType, a: &Opd, b: &Opd, out: &Opd) -> Result<bool, Fault> {

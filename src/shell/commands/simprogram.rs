@@ -11,7 +11,7 @@ use crate::k2::sim::K2Sim;
 use crate::output::Outcome;
 use crate::shell::{Args, Shell};
 
-pub const USAGE: &str = "sim program load FILE.il | sim program unload | sim program | sim program costs [bit=200ns … overhead=0.3ms min_scan=1ms watchdog=300ms] | sim program stop-outputs QB0=16#05 … | sim cpu run|stop|pause | sim stop | sim pause | sim switch run|stop | sim scan [N] | sim break LINE|FILE:LINE|network N|clear | sim stepi [N] | sim stepn";
+pub const USAGE: &str = "sim program load FILE.il | sim program unload | sim program | sim program costs [bit=200ns … overhead=0.3ms min_scan=1ms watchdog=300ms] | sim program stop-outputs QB0=16#05 AQW0=16000 … | sim cpu run|stop|pause | sim stop | sim pause | sim switch run|stop | sim scan [N] | sim break LINE|FILE:LINE|network N|clear | sim stepi [N] | sim stepn";
 
 fn ms(ns: u64) -> f64 {
     (ns as f64 / 1e6 * 1000.0).round() / 1000.0
@@ -53,6 +53,22 @@ pub fn status(s: &K2Sim, name: &str) -> Outcome {
     for f in &p.faults {
         lines.push(format!("fault at {:.3} s: {f}", f.at_ns as f64 / 1e9));
     }
+    if let Some(last) = p.errors.last() {
+        lines.push(format!(
+            "Err LED on: {} normal error{} (the CPU continues); last at {:.3} s: {last}",
+            p.error_count,
+            if p.error_count == 1 { "" } else { "s" },
+            last.at_ns as f64 / 1e9
+        ));
+    }
+    let errors: Vec<serde_json::Value> = p
+        .errors
+        .iter()
+        .map(|f| {
+            serde_json::json!({"code": f.kind.code(), "kind": f.kind.name(), "message": f.message,
+            "line": f.line, "instruction": f.instruction, "at_s": f.at_ns as f64 / 1e9})
+        })
+        .collect();
     let faults: Vec<serde_json::Value> = p
         .faults
         .iter()
@@ -74,6 +90,9 @@ pub fn status(s: &K2Sim, name: &str) -> Outcome {
         .with("interrupts", st.interrupts)
         .with("watchdog_ms", ms(p.costs.watchdog_ns))
         .with("faults", faults)
+        .with("errors", errors)
+        .with("error_count", p.error_count)
+        .with("err_led", !p.faults.is_empty() || p.error_count > 0)
 }
 
 pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {

@@ -123,6 +123,11 @@ pub struct Plc {
     /// Interrupt events waiting while interrupts are disabled (DISI), or the CPU is paused
     /// or halted: run in order once they may (S7-200 interrupt queues).
     pub pending: Vec<u32>,
+    /// Normal errors (division by zero …), newest last, at most
+    /// [`crate::engine::exec::MAX_NORMAL_ERRORS`]; `error_count` counts all since loading. The
+    /// CPU keeps running (K2 §2.2.1 "normal error": Err LED on, code saved; K80S 5.3.4).
+    pub errors: Vec<Fault>,
+    pub error_count: u64,
     /// The last STOP came from the program's STOP instruction.
     pub stopped_by_program: bool,
     /// AQ words in STOP (K2 §2.2.1: "all outputs, including DO and AO").
@@ -162,6 +167,8 @@ impl Plc {
             pending: Vec::new(),
             stop_analog: Vec::new(),
             stopped_by_program: false,
+            errors: Vec::new(),
+            error_count: 0,
             faults: Vec::new(),
             stats: ScanStats::default(),
             run_scans: 0,
@@ -335,6 +342,8 @@ impl K2Sim {
         p.next_scan = now;
         p.faults.clear();
         p.pending.clear();
+        p.errors.clear();
+        p.error_count = 0;
         if p.mode == Mode::Run {
             self.advance_to(now);
         }
@@ -609,9 +618,16 @@ impl K2Sim {
             self.events.extend(raised);
         }
         let (mut cost, mut instrs) = (0, 0);
-        for l in [&p.user, &p.helper].into_iter().flatten() {
+        for l in [&mut p.user, &mut p.helper].into_iter().flatten() {
             cost += l.cpu.spent_ns;
             instrs += l.cpu.executed;
+            let errs = l.cpu.take_errors();
+            if !errs.is_empty() {
+                p.error_count += errs.len() as u64;
+                p.errors.extend(errs);
+                let over = p.errors.len().saturating_sub(crate::engine::exec::MAX_NORMAL_ERRORS);
+                p.errors.drain(..over);
+            }
         }
         let scan_ns = (p.costs.overhead_ns + cost + std::mem::take(&mut p.irq_ns)).max(p.costs.min_scan_ns).max(1);
         let s = &mut p.stats;

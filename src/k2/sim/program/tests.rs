@@ -949,3 +949,54 @@ fn breakpoint_specs_are_accepted_as_lua_passes_them() {
         assert!(at.contains("n.il:5"), "{spec}: {at}");
     }
 }
+
+#[test]
+fn division_by_zero_is_a_recorded_normal_error_and_the_cpu_continues() {
+    // K2 §2.2.1: a normal error lights Err and saves the code; K80S 5.3.4: an operation
+    // error is recorded and the CPU keeps running. SM1.3 is S7-200's divide-by-zero bit.
+    let (mut s, clock) = sim();
+    s.load_program("LD %M0.0\nDIV %VW0, %VW2\nST %Q0.0\nLD %SM1.3\nS %M1.0, 1\nLD %SM0.0\nINC %VW4", "div.il").unwrap();
+    set(&mut s, "VW2", Value::Int(10));
+    clock.step(Duration::from_millis(3));
+    s.advance();
+    assert!(s.plc().unwrap().errors.is_empty(), "no division yet");
+    set(&mut s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(3));
+    s.advance();
+    // VW0 is 0: 10 / 0.
+    let p = s.plc().unwrap();
+    assert_eq!(p.mode, Mode::Run, "the CPU continues");
+    let e = p.errors.last().expect("a record");
+    assert_eq!((e.kind, e.kind.code(), e.line), (FaultKind::DivZero, 5, 2), "{e}");
+    assert!(!e.kind.serious());
+    assert!(p.error_count >= 1 && p.faults.is_empty());
+    assert!(on(&mut s, "M1.0"), "SM1.3, the divide-by-zero bit, was on after DIV");
+    assert!(!on(&mut s, "Q0.0"), "ENO = 0");
+    assert_eq!(get(&mut s, "VW2"), Value::Int(10), "the output is unchanged");
+    let n = get(&mut s, "VW4").as_i64();
+    clock.step(Duration::from_millis(10));
+    assert!(get(&mut s, "VW4").as_i64() > n, "still scanning");
+    let p = s.plc().unwrap();
+    assert!(p.errors.len() <= crate::engine::exec::MAX_NORMAL_ERRORS, "the record is bounded");
+    assert!(p.error_count > 10, "every occurrence counted: {}", p.error_count);
+    // REAL too.
+    s.load_program("LD %SM0.0\nMOVR 1.5, %VD8\nMOVR 0.0, %VD12\n/R %VD12, %VD8", "divr.il").unwrap();
+    assert_eq!(s.plc().unwrap().errors.last().map(|e| e.kind), Some(FaultKind::DivZero));
+}
+
+#[test]
+fn analog_outputs_take_their_stop_values_too() {
+    // K2 §2.2.1: in STOP all outputs, "including DO and AO", take the configured values.
+    // The K205EA-18DT has one analog output (AQW0).
+    let mut s = sim::open("K205EA-18DT", Clock::stepped()).unwrap();
+    s.load_program("LD %SM0.0\nMOVE 5000, %AQW0\nMOVE 16#FF, %QB0", "ao.il").unwrap();
+    assert_eq!(get(&mut s, "AQW0"), Value::Int(5000));
+    s.set_stop_outputs("QB0=16#04 AQW0=16000").unwrap();
+    s.set_mode(Mode::Stop).unwrap();
+    assert_eq!(get(&mut s, "AQW0"), Value::Int(16000), "the configured AO value");
+    assert_eq!(get(&mut s, "QB0"), Value::Int(4));
+    let e = s.set_stop_outputs("VW0=1").unwrap_err();
+    assert!(e.message.contains("AQW0"), "{}", e.message);
+    s.set_stop_outputs("QB0=0").unwrap();
+    assert_eq!(get(&mut s, "AQW0"), Value::Int(0), "not named: 0");
+}
