@@ -4,13 +4,18 @@
 //! and, where one is close, the instruction or label meant — nothing unknown survives to
 //! run time.
 
-use super::isa::{self, Arith, Cmp, Comb, Conv, CostClass, CounterKind, Def, Kind, Logic, Shift, TimerKind, TyHint};
+use super::isa::{
+    self, Arith, Cmp, Comb, Conv, CostClass, CounterKind, Def, Kind, Logic, Shift, TimerKind, TyHint, Unary,
+};
 use super::source::{self, OperandText, Pos, PouKind, Stmt};
 use super::{ArgKind, CostTable, Element, Family, Loc, Opd, SpecialDef, Width};
 use crate::core::literal::parse_literal;
 use crate::core::text::edit_distance;
 use crate::core::{DataType, Error, ErrorKind, Result};
 use std::collections::HashMap;
+
+/// FOR loops nest at most this deep (S7-200 System Manual, For-Next Loop: eight levels).
+pub const MAX_FOR_NESTING: usize = 8;
 
 /// One compiled instruction: resolved locations, no names.
 #[derive(Clone, Debug, PartialEq)]
@@ -107,6 +112,27 @@ pub enum Ins {
         c: Conv,
         a: Opd,
         out: Opd,
+    },
+    Unary {
+        op: Unary,
+        ty: DataType,
+        a: Opd,
+        out: Opd,
+    },
+    Swap {
+        out: Opd,
+    },
+    /// FOR INDX, INIT, FINAL; `end` is the instruction after the matching NEXT.
+    For {
+        ty: DataType,
+        indx: Opd,
+        init: Opd,
+        fin: Opd,
+        end: u32,
+    },
+    /// NEXT of the FOR at `start`.
+    Next {
+        start: u32,
     },
     Jmp {
         to: u32,
@@ -292,6 +318,7 @@ pub fn compile<F: Family + ?Sized>(text: &str, file: &str, fam: &F) -> Result<Pr
         cx.prog.pous[pi].entry = cx.prog.code.len() as u32;
         let mut labels: HashMap<String, u32> = HashMap::new();
         let mut jumps: Vec<(usize, String, Pos)> = Vec::new();
+        let mut fors: Vec<(usize, Pos)> = Vec::new();
         let mut network = 0;
         for s in stmts {
             match s {
@@ -300,12 +327,35 @@ pub fn compile<F: Family + ?Sized>(text: &str, file: &str, fam: &F) -> Result<Pr
                     return Err(err(file, *pos, format!("label {name} is defined twice in {}", cx.prog.pous[pi].name)));
                 }
                 Stmt::Instr { mnemonic, operands, pos } => {
-                    let (ins, class) = cx.instr(mnemonic, operands, *pos, &mut jumps, &mut calls)?;
+                    let (mut ins, class) = cx.instr(mnemonic, operands, *pos, &mut jumps, &mut calls)?;
+                    let here = cx.prog.code.len();
+                    match &mut ins {
+                        Ins::For { .. } => {
+                            if fors.len() >= MAX_FOR_NESTING {
+                                return Err(err(file, *pos, format!("FOR loops nested deeper than {MAX_FOR_NESTING}")));
+                            }
+                            fors.push((here, *pos));
+                        }
+                        Ins::Next { start } => {
+                            let Some((f, _)) = fors.pop() else {
+                                return Err(err(file, *pos, "NEXT without a FOR".to_string())
+                                    .hint("a loop is FOR INDX, INIT, FINAL … NEXT in the same POU"));
+                            };
+                            *start = f as u32;
+                            if let Ins::For { end, .. } = &mut cx.prog.code[f] {
+                                *end = here as u32 + 1;
+                            }
+                        }
+                        _ => {}
+                    }
                     cx.push(ins, class, *pos, network, mnemonic, operands);
                     cx.prog.source_instructions += 1;
                 }
                 _ => {}
             }
+        }
+        if let Some((_, pos)) = fors.last() {
+            return Err(err(file, *pos, format!("FOR without a NEXT in {}", cx.prog.pous[pi].name)));
         }
         cx.push(Ins::End, CostClass::Jump, Pos::default(), network, "(end)", &[]);
         for (at, name, pos) in jumps {
@@ -742,6 +792,41 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
                 let t = self.value_ty(m, TyHint::Auto, &[(&ops[0], &out)])?;
                 Ins::Inv { ty: t, out: self.typed(&ops[0], &out, t)? }
             }
+            Kind::Unary(op) => {
+                let (a, out) = (self.raw(&ops[0])?, self.raw(&ops[1])?);
+                self.out_loc(&ops[1], &out)?;
+                let t = match op {
+                    Unary::Sqrt => DataType::Real,
+                    Unary::Abs => signed(self.value_ty(m, TyHint::Auto, &[(&ops[1], &out), (&ops[0], &a)])?),
+                };
+                if t == DataType::Bool || t == DataType::Byte {
+                    return Err(self.e(pos, format!("{m} works on INT, DINT or REAL values")));
+                }
+                Ins::Unary { op, ty: t, a: self.typed(&ops[0], &a, t)?, out: self.typed(&ops[1], &out, t)? }
+            }
+            Kind::Swap => {
+                let out = self.raw(&ops[0])?;
+                self.out_loc(&ops[0], &out)?;
+                Ins::Swap { out: self.typed(&ops[0], &out, DataType::Word)? }
+            }
+            Kind::For => {
+                let indx = self.raw(&ops[0])?;
+                self.out_loc(&ops[0], &indx)?;
+                let (init, fin) = (self.raw(&ops[1])?, self.raw(&ops[2])?);
+                let t =
+                    signed(self.value_ty(m, TyHint::Auto, &[(&ops[0], &indx), (&ops[1], &init), (&ops[2], &fin)])?);
+                if !matches!(t, DataType::Int | DataType::DInt) {
+                    return Err(self.e(pos, format!("{m}: INDX, INIT and FINAL are INT or DINT")));
+                }
+                Ins::For {
+                    ty: t,
+                    indx: self.typed(&ops[0], &indx, t)?,
+                    init: self.typed(&ops[1], &init, t)?,
+                    fin: self.typed(&ops[2], &fin, t)?,
+                    end: 0,
+                }
+            }
+            Kind::Next => Ins::Next { start: 0 },
             Kind::Conv(c) => {
                 let (ti, to) = conv_types(c);
                 let (a, out) = (self.raw(&ops[0])?, self.raw(&ops[1])?);

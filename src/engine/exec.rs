@@ -8,7 +8,7 @@
 //! All state types are plain data (serde) so a snapshot can store a running CPU.
 
 use super::compile::{Ins, Program};
-use super::isa::{Arith, Cmp, Comb, Conv, Logic, Shift};
+use super::isa::{Arith, Cmp, Comb, Conv, Logic, Shift, Unary};
 use super::timers::{self, CounterState, TimerState};
 use super::{read, write, Flags, Machine, Opd};
 use crate::core::DataType;
@@ -508,6 +508,61 @@ impl Cpu {
                         }
                     }
                 }
+                Ins::Unary { op, ty, a, out } => {
+                    if self.cr {
+                        match unary(m, *op, *ty, a, out) {
+                            Ok(eno) => self.cr = eno,
+                            Err(f) => return self.fault(prog, (pc - 1) as u32, f),
+                        }
+                    }
+                }
+                Ins::Swap { out } => {
+                    if self.cr {
+                        let r = read(m, out, DataType::Word)
+                            .and_then(|x| write(m, out, DataType::Word, (x as u16).swap_bytes() as u32));
+                        if let Err(f) = r {
+                            return self.fault(prog, (pc - 1) as u32, f);
+                        }
+                    }
+                }
+                Ins::For { ty, indx, init, fin, end } => {
+                    if !self.cr {
+                        pc = *end as usize;
+                    } else {
+                        let r = read(m, init, *ty).and_then(|i| {
+                            let f = read(m, fin, *ty)?;
+                            write(m, indx, *ty, i)?;
+                            Ok(as_i64(*ty, i) > as_i64(*ty, f))
+                        });
+                        match r {
+                            Ok(true) => pc = *end as usize,
+                            Ok(false) => {}
+                            Err(f) => return self.fault(prog, (pc - 1) as u32, f),
+                        }
+                    }
+                }
+                Ins::Next { start } => {
+                    if let Some(Ins::For { ty, indx, fin, .. }) = code.get(*start as usize) {
+                        let r = read(m, indx, *ty).and_then(|i| {
+                            let (i, f) = (as_i64(*ty, i), as_i64(*ty, read(m, fin, *ty)?));
+                            // INDX + 1; at the type's maximum the loop ends without wrapping.
+                            if fits(*ty, i + 1) {
+                                write(m, indx, *ty, mask(*ty, i + 1))?;
+                            }
+                            Ok(i < f)
+                        });
+                        match r {
+                            Ok(true) => {
+                                watchdog!();
+                                pc = *start as usize + 1;
+                                // The body runs with the FOR's enable on (S7-200).
+                                self.cr = true;
+                            }
+                            Ok(false) => {}
+                            Err(f) => return self.fault(prog, (pc - 1) as u32, f),
+                        }
+                    }
+                }
                 Ins::Conv { c, a, out } => {
                     if self.cr {
                         match convert(m, *c, a, out) {
@@ -744,6 +799,36 @@ fn bad<M: Machine>(m: &M, ops: &[&Opd], ty: DataType) -> Fault {
     ops.iter()
         .find_map(|o| read(m, o, ty).err())
         .unwrap_or_else(|| Fault::new(FaultKind::BadAddress, "bad indirect address"))
+}
+
+/// SQRT and ABS: OUT := f(IN); ENO = 0 when the result is not a number or does not fit
+/// (S7-200 status bits: SM1.1 overflow / illegal value, SM1.0 zero, SM1.2 negative).
+fn unary<M: Machine>(m: &mut M, op: Unary, ty: DataType, a: &Opd, out: &Opd) -> Result<bool, Fault> {
+    let Some(x) = val(m, a, ty) else {
+        return Err(bad(m, &[a], ty));
+    };
+    if ty == DataType::Real {
+        let x = f32::from_bits(x);
+        if op == Unary::Sqrt && (x.is_nan() || x < 0.0) {
+            m.flags(Flags { overflow: true, ..Flags::default() });
+            return Ok(false);
+        }
+        let r = match op {
+            Unary::Sqrt => x.sqrt(),
+            Unary::Abs => x.abs(),
+        };
+        m.flags(Flags { zero: r == 0.0, overflow: !r.is_finite(), negative: false, div_zero: false });
+        write(m, out, ty, r.to_bits())?;
+        return Ok(r.is_finite());
+    }
+    let r = as_i64(ty, x).abs();
+    let overflow = !fits(ty, r);
+    let raw = mask(ty, r);
+    m.flags(Flags { zero: raw == 0, overflow, negative: as_i64(ty, raw) < 0, div_zero: false });
+    if !put(m, out, ty, raw) {
+        return Err(bad(m, &[out], ty));
+    }
+    Ok(!overflow)
 }
 
 /// Whether a divisor reads as zero (cold: after a failed division only).

@@ -1000,3 +1000,122 @@ fn analog_outputs_take_their_stop_values_too() {
     s.set_stop_outputs("QB0=0").unwrap();
     assert_eq!(get(&mut s, "AQW0"), Value::Int(0), "not named: 0");
 }
+
+// ---- Added instructions: golden values at the edges (docs/il.md names each source) -------
+
+/// Runs `body` once (first scan) and returns the simulator.
+fn once(body: &str) -> K2Sim {
+    let (mut s, _) = sim();
+    s.load_program(&format!("LD %SM0.1\n{body}"), "golden.il").unwrap();
+    s
+}
+
+fn real(s: &mut K2Sim, op: &str) -> f32 {
+    match get(s, &format!("{op}/REAL")) {
+        Value::Real(r) => r as f32,
+        v => panic!("{op}: {v:?}"),
+    }
+}
+
+#[test]
+fn sqrt_golden_values() {
+    // S7-200 System Manual, Square Root (SQRT): REAL in, REAL out; SM1.1 on an illegal value.
+    for (x, want, eno) in [
+        (16.0f32, Some(4.0f32), true),
+        (2.0, Some(std::f32::consts::SQRT_2), true),
+        (0.0, Some(0.0), true),
+        (-4.0, None, false),
+        (f32::NAN, None, false),
+        (f32::INFINITY, Some(f32::INFINITY), false),
+    ] {
+        let (mut s, _) = sim();
+        set(&mut s, "VD0/REAL", Value::Real(x as f64));
+        set(&mut s, "VD4/REAL", Value::Real(-1.0));
+        s.load_program("LD %SM0.0\nSQRT %VD0, %VD4\nST %M0.0\nLD %SM1.1\nST %M0.1", "sqrt.il").unwrap();
+        let r = real(&mut s, "VD4");
+        match want {
+            Some(w) => assert_eq!(r, w, "√{x}"),
+            None => assert_eq!(r, -1.0, "√{x}: OUT unchanged"),
+        }
+        assert_eq!(on(&mut s, "M0.0"), eno, "ENO for √{x}");
+        assert_eq!(on(&mut s, "M0.1"), !eno, "SM1.1 for √{x}");
+    }
+}
+
+#[test]
+fn abs_golden_values() {
+    // IEC 61131-3 ABS; the S7-200 status bits (SM1.1 overflow) as the other arithmetic.
+    for (out, x, want, eno) in [
+        ("VW4", -5i64, -0i64 + 5, true),
+        ("VW4", 32767, 32767, true),
+        ("VW4", -32768, -32768, false),
+        ("VD8", -2_000_000, 2_000_000, true),
+        ("VD8", i32::MIN as i64, i32::MIN as i64, false),
+    ] {
+        let (src, lit) = if out == "VW4" { ("VW0", format!("INT#{x}")) } else { ("VD12", format!("DI#{x}")) };
+        let mut s = once(&format!("MOVE {lit}, %{src}\nABS %{src}, %{out}\nST %M0.0"));
+        let view = if out == "VW4" { "VW4/INT" } else { "VD8/DINT" };
+        assert_eq!(get(&mut s, view).as_i64(), want, "|{x}|");
+        assert_eq!(on(&mut s, "M0.0"), eno, "ENO for |{x}|");
+    }
+    for (x, want, eno) in [(-1.5f32, 1.5f32, true), (f32::NEG_INFINITY, f32::INFINITY, false)] {
+        let (mut s, _) = sim();
+        set(&mut s, "VD0/REAL", Value::Real(x as f64));
+        s.load_program("LD %SM0.0\nABS %VD0/REAL, %VD4/REAL\nST %M0.0", "absr.il").unwrap();
+        assert_eq!(real(&mut s, "VD4"), want);
+        assert_eq!(on(&mut s, "M0.0"), eno);
+    }
+    let (mut s, _) = sim();
+    set(&mut s, "VD0/REAL", Value::Real(f64::NAN));
+    s.load_program("LD %SM0.0\nABS %VD0/REAL, %VD4/REAL\nST %M0.0", "absn.il").unwrap();
+    assert!(real(&mut s, "VD4").is_nan() && !on(&mut s, "M0.0"), "|NaN| is NaN with ENO = 0");
+    let (s, _) = sim();
+    assert!(s.compile("LD %SM0.0\nABS %VB0, %VB1", "b.il").is_err(), "not on bytes");
+}
+
+#[test]
+fn swap_golden_values() {
+    // S7-200 System Manual, Swap Bytes (SWAP): the high and low byte of a word.
+    let mut s = once("MOVE W#16#1234, %VW0\nSWAP %VW0\nMOVE INT#-2, %VW2\nSWAP %VW2\nMOVE 16#0080, %VW4\nSWAP %VW4");
+    assert_eq!(get(&mut s, "VW0/WORD").as_i64(), 0x3412);
+    assert_eq!(get(&mut s, "VW2/WORD").as_i64(), 0xFEFF, "−2 = FFFE → FEFF");
+    assert_eq!(get(&mut s, "VW4/INT").as_i64(), -32768, "0080 → 8000 = −32768");
+    let (s, _) = sim();
+    assert!(s.compile("LD %SM0.0\nSWAP %VD0", "d.il").is_err(), "a word only");
+}
+
+#[test]
+fn for_next_golden_values() {
+    // S7-200 System Manual, For-Next Loop: INDX from INIT to FINAL, the body once per value;
+    // INIT > FINAL runs it not at all; loops nest (up to 8).
+    let mut s = once("FOR %VW0, 1, 10\nLD %SM0.0\nINC %VW2\nNEXT");
+    assert_eq!(get(&mut s, "VW2").as_i64(), 10, "ten passes");
+    assert_eq!(get(&mut s, "VW0").as_i64(), 11, "INDX ends at FINAL + 1");
+    let mut s = once("FOR %VW0, 5, 4\nLD %SM0.0\nINC %VW2\nNEXT");
+    assert_eq!(get(&mut s, "VW2").as_i64(), 0, "INIT > FINAL: none");
+    let mut s = once("FOR %VW0, -3, -1\nLD %SM0.0\nINC %VW2\nNEXT");
+    assert_eq!(get(&mut s, "VW2").as_i64(), 3, "negative bounds");
+    let mut s = once("FOR %VW0, 32765, 32767\nLD %SM0.0\nINC %VW2\nNEXT");
+    assert_eq!(get(&mut s, "VW2").as_i64(), 3, "FINAL = 32767 ends (no wrap to −32768)");
+    assert_eq!(get(&mut s, "VW0").as_i64(), 32767);
+    let mut s = once("FOR %VW0, 1, 3\nFOR %VW4, 1, 4\nLD %SM0.0\nINC %VW2\nNEXT\nNEXT");
+    assert_eq!(get(&mut s, "VW2").as_i64(), 12, "3 × 4 nested");
+    let mut s = once("FOR %VD0, DI#40000, DI#50000\nLD %SM0.0\nINC %VD4\nNEXT");
+    assert_eq!(get(&mut s, "VD4").as_i64(), 10_001, "DINT index past 32767");
+    // Not enabled: skipped.
+    let (mut s, _) = sim();
+    s.load_program("LD %M0.0\nFOR %VW0, 1, 10\nLD %SM0.0\nINC %VW2\nNEXT", "off.il").unwrap();
+    assert_eq!(get(&mut s, "VW2").as_i64(), 0);
+    // Load errors: unpaired, too deep.
+    let (s, _) = sim();
+    assert!(s.compile("LD %SM0.0\nNEXT", "n.il").unwrap_err().message.contains("NEXT without a FOR"));
+    assert!(s.compile("LD %SM0.0\nFOR %VW0, 1, 2", "f.il").unwrap_err().message.contains("FOR without a NEXT"));
+    let deep = "LD %SM0.0\n".to_string() + &"FOR %VW0, 1, 1\n".repeat(9) + &"NEXT\n".repeat(9);
+    assert!(s.compile(&deep, "d.il").unwrap_err().message.contains("deeper than 8"));
+    // An endless loop (FINAL re-read, the body keeps lowering INDX) meets the watchdog.
+    let (mut s, clock) = sim();
+    s.load_program("LD %SM0.0\nFOR %VW0, 1, 2\nLD %SM0.0\nMOVE 0, %VW0\nNEXT", "w.il").unwrap();
+    clock.step(Duration::from_millis(1));
+    s.advance();
+    assert_eq!(s.plc().unwrap().faults.first().map(|f| f.kind), Some(FaultKind::Watchdog));
+}
