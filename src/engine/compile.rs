@@ -217,6 +217,8 @@ pub struct Program {
     pub costs: CostTable,
     /// Instructions in the source (what the user wrote, not counting implicit ends).
     pub source_instructions: usize,
+    /// Load warnings (`file:line:column: …`): the program loads, but the user should know.
+    pub warnings: Vec<String>,
 }
 
 impl Program {
@@ -270,6 +272,7 @@ pub fn compile<F: Family + ?Sized>(text: &str, file: &str, fam: &F) -> Result<Pr
             counters: 0,
             costs: fam.costs(),
             source_instructions: 0,
+            warnings: Vec::new(),
         },
         specials: fam.specials(),
         timer_slots: HashMap::new(),
@@ -896,7 +899,7 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
 
     /// A timer preset or counter preset: INT operand or literal; `T#…` literals are
     /// converted to the timer's units.
-    fn preset(&self, o: &OperandText, base_ns: Option<u64>) -> Result<Opd> {
+    fn preset(&mut self, o: &OperandText, base_ns: Option<u64>) -> Result<Opd> {
         let r = self.raw(o)?;
         if let (Raw::Lit(t), Some(base)) = (&r, base_ns) {
             if t.to_ascii_uppercase().starts_with("T#") {
@@ -904,11 +907,32 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
                 let ms = lit.value.as_i64();
                 // In i128 to the end: a long T# on a fine time base must be refused, not
                 // truncated back into 0…32767.
-                let units = ms as i128 * 1_000_000 / base.max(1) as i128;
+                // A delay is never shorter than asked: a duration between two units rounds up
+                // (T#250ms on a 100 ms timer is 3 units, 300 ms), with a load warning.
+                let base = base.max(1) as i128;
+                let ns = ms as i128 * 1_000_000;
+                let units = (ns + base - 1).div_euclid(base);
                 if !(0..=32767).contains(&units) {
-                    return Err(
-                        self.e(o.pos, format!("{t} is {units} units of this timer; the preset must be 0…32767"))
-                    );
+                    let longest = 32767 * base / 1_000_000;
+                    return Err(self.e(
+                        o.pos,
+                        format!(
+                            "{t} is {units} units of this {} ms timer; the preset must be 0…32767 (at most {}.{:03} s)",
+                            base / 1_000_000,
+                            longest / 1000,
+                            longest % 1000
+                        ),
+                    ));
+                }
+                if units * base != ns {
+                    let got = units * base / 1_000_000;
+                    self.prog.warnings.push(format!(
+                        "{}:{}:{}: {t} is not a whole number of this timer's {} ms units: rounded up to {got} ms ({units} units), never shorter than asked",
+                        self.prog.file,
+                        o.pos.line,
+                        o.pos.col,
+                        base / 1_000_000
+                    ));
                 }
                 return Ok(Opd::Imm(units as u16 as u32));
             }

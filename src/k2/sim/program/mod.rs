@@ -327,6 +327,7 @@ impl K2Sim {
         self.advance();
         let now = self.last;
         let n = prog.source_instructions;
+        let warnings: String = prog.warnings.iter().map(|w| format!("\nwarning: {w}")).collect();
         let p = self.plc_mut();
         p.breaks = vec![false; prog.code.len()];
         p.has_breaks = false;
@@ -347,7 +348,10 @@ impl K2Sim {
         if p.mode == Mode::Run {
             self.advance_to(now);
         }
-        Ok(format!("{file}: {n} instructions loaded; CPU {}", self.plc.as_ref().map_or("RUN", |p| p.mode.name())))
+        Ok(format!(
+            "{file}: {n} instructions loaded; CPU {}{warnings}",
+            self.plc.as_ref().map_or("RUN", |p| p.mode.name())
+        ))
     }
 
     /// Installs the helper program (`lib/k2_agent.il` for this mailbox base) as text.

@@ -1119,3 +1119,22 @@ fn for_next_golden_values() {
     s.advance();
     assert_eq!(s.plc().unwrap().faults.first().map(|f| f.kind), Some(FaultKind::Watchdog));
 }
+
+#[test]
+fn a_duration_between_timer_units_rounds_up_with_a_warning() {
+    // docs/il.md "Timers": a delay is never shorter than asked. T37 is a 100 ms timer.
+    let (mut s, clock) = sim();
+    let msg =
+        s.load_program("LD %I0.0\nTON T37, T#250ms\nST %Q0.0\nLD %I0.0\nTON T38, T#300ms\nST %Q0.1", "r.il").unwrap();
+    assert!(msg.contains("warning: r.il:2:10: T#250ms") && msg.contains("300 ms (3 units)"), "{msg}");
+    assert!(!msg.contains("r.il:5"), "T#300ms is exact: no warning: {msg}");
+    set(&mut s, "I0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(260));
+    assert!(!on(&mut s, "Q0.0"), "not after 250 ms");
+    clock.step(Duration::from_millis(60));
+    assert!(on(&mut s, "Q0.0") && on(&mut s, "Q0.1"), "at 300 ms");
+    // The 100 ms class holds 32767 units: 3276.7 s; longer is refused naming the limit.
+    let e = s.compile("LD %I0.0\nTON T37, T#3277s", "l.il").unwrap_err();
+    assert!(e.message.contains("3276.700 s"), "{}", e.message);
+    assert!(s.compile("LD %I0.0\nTON T37, T#3276700ms", "l.il").unwrap().warnings.is_empty());
+}
