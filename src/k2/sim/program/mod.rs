@@ -575,7 +575,7 @@ impl K2Sim {
     /// most `limit` user-program instructions, stopping at breakpoints when `brk`.
     /// Returns the instruction it halted before, or `None` when the scan completed.
     pub(super) fn scan_part(&mut self, t: Duration, limit: u64, brk: bool) -> Option<u32> {
-        if !self.plc.as_ref()?.user.as_ref().is_some_and(|l| l.cpu.pc.is_some()) {
+        if self.plc.as_ref()?.user.as_ref().is_none_or(|l| l.cpu.pc.is_none()) {
             // Events that waited (DISI, PAUSE, DEBUG) run before the scan's program.
             self.run_pending(t);
         }
