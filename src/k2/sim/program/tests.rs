@@ -1138,3 +1138,20 @@ fn a_duration_between_timer_units_rounds_up_with_a_warning() {
     assert!(e.message.contains("3276.700 s"), "{}", e.message);
     assert!(s.compile("LD %I0.0\nTON T37, T#3276700ms", "l.il").unwrap().warnings.is_empty());
 }
+
+#[test]
+fn homing_backward_counts_down_with_the_direction_pin_freed() {
+    // K2 §3.4.3.1: SMD212 decreases moving backward; SM201.3 = 1 only frees Q0.2.
+    let (mut s, clock) = sim();
+    s.load_program(PHOME, "home.il").unwrap();
+    home_setup(&mut s);
+    set(&mut s, "SM201.3", Value::Bool(true));
+    set(&mut s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(1000));
+    let pos = get(&mut s, "SMD212/DINT").as_i64();
+    assert!((-4900..=-4600).contains(&pos), "moving backward toward home: {pos}");
+    assert!(!on(&mut s, "Q0.2"), "the freed pin is not driven");
+    set(&mut s, "M0.1", Value::Bool(true));
+    clock.step(Duration::from_millis(2));
+    assert!(on(&mut s, "M0.4") && !on(&mut s, "M0.5"), "DONE, no ERR");
+}
