@@ -1155,3 +1155,22 @@ fn homing_backward_counts_down_with_the_direction_pin_freed() {
     clock.step(Duration::from_millis(2));
     assert!(on(&mut s, "M0.4") && !on(&mut s, "M0.5"), "DONE, no ERR");
 }
+
+#[test]
+fn timed_interrupts_during_disi_queue_eight_and_flag_the_rest() {
+    // S7-200 System Manual Tables 9-22/9-23: the timed queue holds 8; SM4.2 marks a loss.
+    let (mut s, clock) = sim();
+    s.load_program(
+        "PROGRAM MAIN\nLD %SM0.1\nMOVE B#10, %SMB34\nATCH TICK, 10\nLD %M0.1\nENI\nEND_PROGRAM\n\
+         INTERRUPT TICK\nLD %SM0.0\nINC %VW20\nLD %SM4.2\nS %M1.0, 1\nEND_INTERRUPT",
+        "tq.il",
+    )
+    .unwrap();
+    clock.step(Duration::from_millis(20));
+    assert_eq!(get(&mut s, "VW20"), Value::Int(0), "not enabled yet: the ticks wait");
+    set(&mut s, "M0.1", Value::Bool(true));
+    clock.step(Duration::from_millis(2));
+    let n = get(&mut s, "VW20").as_i64();
+    assert!((8..=10).contains(&n), "8 waited, then the ticks since ENI: {n}");
+    assert!(on(&mut s, "M1.0"), "SM4.2: some were lost");
+}
