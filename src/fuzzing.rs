@@ -36,6 +36,7 @@ pub static TARGETS: &[(&str, Target)] = &[
     ("agent_mailbox", agent_mailbox),
     ("agent_base", agent_base),
     ("il", il),
+    ("il_encoding", il_encoding),
     ("fx_port", fx_port),
     ("control", control),
     ("fx_link", fx_link),
@@ -272,6 +273,15 @@ pub fn il(data: &[u8]) {
     let sim = crate::k2::sim::open("K205-16DT", Clock::stepped()).expect("the default model");
     let _ = sim.compile(&t, "fuzz.il");
     let _ = crate::umpk::sim::program::IlRunner::load(&t, "fuzz.il", &crate::umpk::model::MODELS[0]);
+}
+
+/// IL files as saved (core::encoding): UTF-8, UTF-16 with a byte-order mark, Windows-1251;
+/// what decodes is compiled as a K2 program.
+pub fn il_encoding(data: &[u8]) {
+    if let Ok((t, _)) = crate::core::encoding::decode(data) {
+        let sim = crate::k2::sim::open("K205-16DT", Clock::stepped()).expect("the default model");
+        let _ = sim.compile(&t, "fuzz.il");
+    }
 }
 
 /// FX programming port: the simulator's request side for the smallest model and the FX3U

@@ -214,3 +214,20 @@ print("ok")
     assert!(stdout(&o).contains("ok"));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The readiness line says which helper runs (the copy built into plcsh, not the file) and
+/// how to run an edited one: `--program FILE` without `--agent`, which then serves the
+/// mailbox from the file (docs/simulator.md).
+#[test]
+fn the_ready_line_names_the_built_in_helper_and_an_edited_one_runs_as_the_program() {
+    let served = serve(&["--tcp", "0", "--agent"]);
+    let note = served.ready["agent_program"].as_str().unwrap_or_else(|| panic!("{}", served.ready));
+    assert!(note.contains("built-in copy of lib/k2_agent.il") && note.contains("--program FILE"), "{note}");
+    drop(served);
+    let file = concat!(env!("CARGO_MANIFEST_DIR"), "/lib/k2_agent.il");
+    let served = serve(&["--tcp", "0", "--program", file]);
+    assert!(served.ready.get("agent_program").is_none(), "no built-in helper: {}", served.ready);
+    let url = format!("tcp://{}?model=K205-16DT&agent=VB3400", served.ready["tcp"].as_str().unwrap());
+    let l = json(Some(&url), "rtc set 2026-11-22T10:00:00; rtc");
+    assert!(l[1]["rtc"].as_str().unwrap_or("").starts_with("2026-11-22T10:00:0"), "{}", l[1]);
+}

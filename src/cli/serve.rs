@@ -269,6 +269,16 @@ impl Drop for Cleanup {
     }
 }
 
+/// The readiness line's word on the helper: `--agent` runs the copy of `lib/k2_agent.il`
+/// built into this plcsh (generated for the mailbox base), never a file on disk, so an edited
+/// helper is run as the program instead (docs/simulator.md).
+pub fn agent_note(base: u32) -> String {
+    format!(
+        "built-in copy of lib/k2_agent.il (plcsh {}, mailbox VB{base}); an edited copy runs with --program FILE instead of --agent",
+        env!("CARGO_PKG_VERSION")
+    )
+}
+
 /// Binds the K2's transports, spawns their servers and names them in `ready`.
 async fn serve_k2(
     cli: &Cli,
@@ -296,6 +306,8 @@ async fn serve_k2(
         let b = crate::k2::agent::protocol::parse_base(base).map_err(Error::usage)?;
         sim.enable_agent(b).map_err(Error::usage)?;
         ready.insert("agent".into(), json!(format!("VB{b}")));
+        // Which copy runs: the one built into plcsh (an edited lib/k2_agent.il is not read).
+        ready.insert("agent_program".into(), json!(agent_note(b)));
     }
     for f in &args.faults {
         let spec = crate::k2::sim::fault::parse(f).map_err(|m| Error::usage(format!("--fault \"{f}\": {m}")))?;
@@ -303,7 +315,8 @@ async fn serve_k2(
         sim.faults.add(&spec, now);
     }
     if let Some(p) = &args.program {
-        let text = std::fs::read_to_string(p).map_err(|e| Error::io(format!("cannot read {}: {e}", p.display())))?;
+        let text = crate::core::encoding::read_source(p)
+            .map_err(|e| Error::io(format!("cannot read {}: {e}", p.display())))?;
         sim.load_program(&text, &p.display().to_string())?;
         ready.insert("program".into(), json!(p.display().to_string()));
     }

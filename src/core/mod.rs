@@ -4,6 +4,7 @@
 pub mod clock;
 pub mod device;
 pub mod durable;
+pub mod encoding;
 pub mod error;
 pub mod link;
 pub mod literal;

@@ -4,13 +4,18 @@
 //! and, where one is close, the instruction or label meant — nothing unknown survives to
 //! run time.
 
-use super::isa::{self, Arith, Cmp, Comb, Conv, CostClass, CounterKind, Def, Kind, Logic, Shift, TimerKind, TyHint};
+use super::isa::{
+    self, Arith, Cmp, Comb, Conv, CostClass, CounterKind, Def, Kind, Logic, Shift, TimerKind, TyHint, Unary,
+};
 use super::source::{self, OperandText, Pos, PouKind, Stmt};
 use super::{ArgKind, CostTable, Element, Family, Loc, Opd, SpecialDef, Width};
 use crate::core::literal::parse_literal;
 use crate::core::text::edit_distance;
 use crate::core::{DataType, Error, ErrorKind, Result};
 use std::collections::HashMap;
+
+/// FOR loops nest at most this deep (S7-200 System Manual, For-Next Loop: eight levels).
+pub const MAX_FOR_NESTING: usize = 8;
 
 /// One compiled instruction: resolved locations, no names.
 #[derive(Clone, Debug, PartialEq)]
@@ -108,6 +113,27 @@ pub enum Ins {
         a: Opd,
         out: Opd,
     },
+    Unary {
+        op: Unary,
+        ty: DataType,
+        a: Opd,
+        out: Opd,
+    },
+    Swap {
+        out: Opd,
+    },
+    /// FOR INDX, INIT, FINAL; `end` is the instruction after the matching NEXT.
+    For {
+        ty: DataType,
+        indx: Opd,
+        init: Opd,
+        fin: Opd,
+        end: u32,
+    },
+    /// NEXT of the FOR at `start`.
+    Next {
+        start: u32,
+    },
     Jmp {
         to: u32,
     },
@@ -191,6 +217,8 @@ pub struct Program {
     pub costs: CostTable,
     /// Instructions in the source (what the user wrote, not counting implicit ends).
     pub source_instructions: usize,
+    /// Load warnings (`file:line:column: …`): the program loads, but the user should know.
+    pub warnings: Vec<String>,
 }
 
 impl Program {
@@ -244,6 +272,7 @@ pub fn compile<F: Family + ?Sized>(text: &str, file: &str, fam: &F) -> Result<Pr
             counters: 0,
             costs: fam.costs(),
             source_instructions: 0,
+            warnings: Vec::new(),
         },
         specials: fam.specials(),
         timer_slots: HashMap::new(),
@@ -292,6 +321,7 @@ pub fn compile<F: Family + ?Sized>(text: &str, file: &str, fam: &F) -> Result<Pr
         cx.prog.pous[pi].entry = cx.prog.code.len() as u32;
         let mut labels: HashMap<String, u32> = HashMap::new();
         let mut jumps: Vec<(usize, String, Pos)> = Vec::new();
+        let mut fors: Vec<(usize, Pos)> = Vec::new();
         let mut network = 0;
         for s in stmts {
             match s {
@@ -300,12 +330,35 @@ pub fn compile<F: Family + ?Sized>(text: &str, file: &str, fam: &F) -> Result<Pr
                     return Err(err(file, *pos, format!("label {name} is defined twice in {}", cx.prog.pous[pi].name)));
                 }
                 Stmt::Instr { mnemonic, operands, pos } => {
-                    let (ins, class) = cx.instr(mnemonic, operands, *pos, &mut jumps, &mut calls)?;
+                    let (mut ins, class) = cx.instr(mnemonic, operands, *pos, &mut jumps, &mut calls)?;
+                    let here = cx.prog.code.len();
+                    match &mut ins {
+                        Ins::For { .. } => {
+                            if fors.len() >= MAX_FOR_NESTING {
+                                return Err(err(file, *pos, format!("FOR loops nested deeper than {MAX_FOR_NESTING}")));
+                            }
+                            fors.push((here, *pos));
+                        }
+                        Ins::Next { start } => {
+                            let Some((f, _)) = fors.pop() else {
+                                return Err(err(file, *pos, "NEXT without a FOR".to_string())
+                                    .hint("a loop is FOR INDX, INIT, FINAL … NEXT in the same POU"));
+                            };
+                            *start = f as u32;
+                            if let Ins::For { end, .. } = &mut cx.prog.code[f] {
+                                *end = here as u32 + 1;
+                            }
+                        }
+                        _ => {}
+                    }
                     cx.push(ins, class, *pos, network, mnemonic, operands);
                     cx.prog.source_instructions += 1;
                 }
                 _ => {}
             }
+        }
+        if let Some((_, pos)) = fors.last() {
+            return Err(err(file, *pos, format!("FOR without a NEXT in {}", cx.prog.pous[pi].name)));
         }
         cx.push(Ins::End, CostClass::Jump, Pos::default(), network, "(end)", &[]);
         for (at, name, pos) in jumps {
@@ -568,6 +621,7 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
             .chain(self.specials.iter().map(|s| s.name))
             .chain(["LDW=", "LDW<>", "LDW>", "LDW<", "LDD=", "LDR>", "AW=", "OW="].iter().copied());
         let mut e = self.e(pos, format!("unknown instruction {m}"));
+        let names = names.filter(|n| !isa::NEVER_SUGGESTED.contains(n));
         e = e.hint(match suggest(m, names) {
             Some(n) => format!("did you mean {n}? (docs/il.md lists the instructions)"),
             None => "docs/il.md lists the instructions this simulator runs".into(),
@@ -741,6 +795,41 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
                 let t = self.value_ty(m, TyHint::Auto, &[(&ops[0], &out)])?;
                 Ins::Inv { ty: t, out: self.typed(&ops[0], &out, t)? }
             }
+            Kind::Unary(op) => {
+                let (a, out) = (self.raw(&ops[0])?, self.raw(&ops[1])?);
+                self.out_loc(&ops[1], &out)?;
+                let t = match op {
+                    Unary::Sqrt => DataType::Real,
+                    Unary::Abs => signed(self.value_ty(m, TyHint::Auto, &[(&ops[1], &out), (&ops[0], &a)])?),
+                };
+                if t == DataType::Bool || t == DataType::Byte {
+                    return Err(self.e(pos, format!("{m} works on INT, DINT or REAL values")));
+                }
+                Ins::Unary { op, ty: t, a: self.typed(&ops[0], &a, t)?, out: self.typed(&ops[1], &out, t)? }
+            }
+            Kind::Swap => {
+                let out = self.raw(&ops[0])?;
+                self.out_loc(&ops[0], &out)?;
+                Ins::Swap { out: self.typed(&ops[0], &out, DataType::Word)? }
+            }
+            Kind::For => {
+                let indx = self.raw(&ops[0])?;
+                self.out_loc(&ops[0], &indx)?;
+                let (init, fin) = (self.raw(&ops[1])?, self.raw(&ops[2])?);
+                let t =
+                    signed(self.value_ty(m, TyHint::Auto, &[(&ops[0], &indx), (&ops[1], &init), (&ops[2], &fin)])?);
+                if !matches!(t, DataType::Int | DataType::DInt) {
+                    return Err(self.e(pos, format!("{m}: INDX, INIT and FINAL are INT or DINT")));
+                }
+                Ins::For {
+                    ty: t,
+                    indx: self.typed(&ops[0], &indx, t)?,
+                    init: self.typed(&ops[1], &init, t)?,
+                    fin: self.typed(&ops[2], &fin, t)?,
+                    end: 0,
+                }
+            }
+            Kind::Next => Ins::Next { start: 0 },
             Kind::Conv(c) => {
                 let (ti, to) = conv_types(c);
                 let (a, out) = (self.raw(&ops[0])?, self.raw(&ops[1])?);
@@ -810,7 +899,7 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
 
     /// A timer preset or counter preset: INT operand or literal; `T#…` literals are
     /// converted to the timer's units.
-    fn preset(&self, o: &OperandText, base_ns: Option<u64>) -> Result<Opd> {
+    fn preset(&mut self, o: &OperandText, base_ns: Option<u64>) -> Result<Opd> {
         let r = self.raw(o)?;
         if let (Raw::Lit(t), Some(base)) = (&r, base_ns) {
             if t.to_ascii_uppercase().starts_with("T#") {
@@ -818,11 +907,32 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
                 let ms = lit.value.as_i64();
                 // In i128 to the end: a long T# on a fine time base must be refused, not
                 // truncated back into 0…32767.
-                let units = ms as i128 * 1_000_000 / base.max(1) as i128;
+                // A delay is never shorter than asked: a duration between two units rounds up
+                // (T#250ms on a 100 ms timer is 3 units, 300 ms), with a load warning.
+                let base = base.max(1) as i128;
+                let ns = ms as i128 * 1_000_000;
+                let units = (ns + base - 1).div_euclid(base);
                 if !(0..=32767).contains(&units) {
-                    return Err(
-                        self.e(o.pos, format!("{t} is {units} units of this timer; the preset must be 0…32767"))
-                    );
+                    let longest = 32767 * base / 1_000_000;
+                    return Err(self.e(
+                        o.pos,
+                        format!(
+                            "{t} is {units} units of this {} ms timer; the preset must be 0…32767 (at most {}.{:03} s)",
+                            base / 1_000_000,
+                            longest / 1000,
+                            longest % 1000
+                        ),
+                    ));
+                }
+                if units * base != ns {
+                    let got = units * base / 1_000_000;
+                    self.prog.warnings.push(format!(
+                        "{}:{}:{}: {t} is not a whole number of this timer's {} ms units: rounded up to {got} ms ({units} units), never shorter than asked",
+                        self.prog.file,
+                        o.pos.line,
+                        o.pos.col,
+                        base / 1_000_000
+                    ));
                 }
                 return Ok(Opd::Imm(units as u16 as u32));
             }

@@ -8,7 +8,7 @@
 //! All state types are plain data (serde) so a snapshot can store a running CPU.
 
 use super::compile::{Ins, Program};
-use super::isa::{Arith, Cmp, Comb, Conv, Logic, Shift};
+use super::isa::{Arith, Cmp, Comb, Conv, Logic, Shift, Unary};
 use super::timers::{self, CounterState, TimerState};
 use super::{read, write, Flags, Machine, Opd};
 use crate::core::DataType;
@@ -25,6 +25,9 @@ pub enum FaultKind {
     CallDepth,
     /// A family instruction refused.
     Instruction,
+    /// Division by zero: a normal error (K2 §2.2.1 "normal error": code saved, Err LED;
+    /// K80S 5.3.4: an operation error is recorded and the CPU continues).
+    DivZero,
 }
 
 impl FaultKind {
@@ -35,6 +38,7 @@ impl FaultKind {
             FaultKind::BadAddress => 2,
             FaultKind::CallDepth => 3,
             FaultKind::Instruction => 4,
+            FaultKind::DivZero => 5,
         }
     }
     pub fn name(self) -> &'static str {
@@ -43,7 +47,12 @@ impl FaultKind {
             FaultKind::BadAddress => "bad indirect address",
             FaultKind::CallDepth => "call depth",
             FaultKind::Instruction => "instruction",
+            FaultKind::DivZero => "division by zero",
         }
+    }
+    /// Serious errors stop the CPU; normal ones are recorded and it continues (K2 §2.2.1).
+    pub fn serious(self) -> bool {
+        self != FaultKind::DivZero
     }
 }
 
@@ -94,6 +103,9 @@ pub struct ScanOutcome {
     pub exit: Exit,
 }
 
+/// Normal errors a CPU keeps between two looks by its family.
+pub const MAX_NORMAL_ERRORS: usize = 16;
+
 /// Nesting limit of subroutine calls (S7-200 allows 8 levels from the main program).
 pub const MAX_CALL_DEPTH: usize = 8;
 /// Depth of the logic stack and of parentheses.
@@ -126,6 +138,10 @@ pub struct Cpu {
     pub executed: u64,
     /// Watchdog restart point (WDT): the scan time counts from here.
     wdt_mark_ns: u64,
+    /// Normal errors since the family last took them ([`Cpu::take_errors`]), at most
+    /// [`MAX_NORMAL_ERRORS`] (the newest kept).
+    #[serde(default)]
+    errors: Vec<Fault>,
 }
 
 fn logic(op: u8, a: bool, b: bool) -> bool {
@@ -191,6 +207,24 @@ impl Cpu {
         }
     }
 
+    /// The normal errors recorded since the last call (division by zero), oldest first.
+    pub fn take_errors(&mut self) -> Vec<Fault> {
+        std::mem::take(&mut self.errors)
+    }
+
+    /// Records a normal error at instruction `pc` (cold: only on the error path).
+    #[cold]
+    fn normal_error(&mut self, prog: &Program, pc: u32, kind: FaultKind, message: &str) {
+        let mut f = Fault::new(kind, message);
+        f.line = prog.pos.get(pc as usize).map_or(0, |p| p.line);
+        f.instruction = prog.text.get(pc as usize).cloned().unwrap_or_default();
+        f.at_ns = self.now_ns;
+        if self.errors.len() >= MAX_NORMAL_ERRORS {
+            self.errors.remove(0);
+        }
+        self.errors.push(f);
+    }
+
     /// Runs the main program once from the top at virtual time `now_ns` (or resumes a
     /// paused scan), up to `limit` instructions or a breakpoint (`brk[pc]`).
     pub fn scan<M: Machine>(
@@ -243,6 +277,11 @@ impl Cpu {
         (self.cr, self.stack, self.parens, self.calls, self.pc) = saved;
         self.now_ns = saved_now;
         ScanOutcome { instructions: self.executed - before, cost_ns: self.spent_ns - cost_before, exit }
+    }
+
+    /// The POU attached to `event`, whether interrupts are enabled or not.
+    pub fn attached_to(&self, event: u32) -> Option<u32> {
+        self.attached.get(event as usize).copied().flatten()
     }
 
     /// The POU attached to `event`, if interrupts are enabled.
@@ -408,7 +447,12 @@ impl Cpu {
                 Ins::Arith { op, ty, a, b, out } => {
                     if self.cr {
                         match arith(m, *op, *ty, a, b, out) {
-                            Ok(eno) => self.cr = eno,
+                            Ok(eno) => {
+                                self.cr = eno;
+                                if !eno && matches!(op, Arith::Div | Arith::Mod) && is_zero(m, b, *ty) {
+                                    self.normal_error(prog, (pc - 1) as u32, FaultKind::DivZero, "division by zero");
+                                }
+                            }
                             Err(f) => return self.fault(prog, (pc - 1) as u32, f),
                         }
                     }
@@ -461,6 +505,61 @@ impl Cpu {
                         let r = read(m, out, *ty).and_then(|x| write(m, out, *ty, mask(*ty, !x as i64)));
                         if let Err(f) = r {
                             return self.fault(prog, (pc - 1) as u32, f);
+                        }
+                    }
+                }
+                Ins::Unary { op, ty, a, out } => {
+                    if self.cr {
+                        match unary(m, *op, *ty, a, out) {
+                            Ok(eno) => self.cr = eno,
+                            Err(f) => return self.fault(prog, (pc - 1) as u32, f),
+                        }
+                    }
+                }
+                Ins::Swap { out } => {
+                    if self.cr {
+                        let r = read(m, out, DataType::Word)
+                            .and_then(|x| write(m, out, DataType::Word, (x as u16).swap_bytes() as u32));
+                        if let Err(f) = r {
+                            return self.fault(prog, (pc - 1) as u32, f);
+                        }
+                    }
+                }
+                Ins::For { ty, indx, init, fin, end } => {
+                    if !self.cr {
+                        pc = *end as usize;
+                    } else {
+                        let r = read(m, init, *ty).and_then(|i| {
+                            let f = read(m, fin, *ty)?;
+                            write(m, indx, *ty, i)?;
+                            Ok(as_i64(*ty, i) > as_i64(*ty, f))
+                        });
+                        match r {
+                            Ok(true) => pc = *end as usize,
+                            Ok(false) => {}
+                            Err(f) => return self.fault(prog, (pc - 1) as u32, f),
+                        }
+                    }
+                }
+                Ins::Next { start } => {
+                    if let Some(Ins::For { ty, indx, fin, .. }) = code.get(*start as usize) {
+                        let r = read(m, indx, *ty).and_then(|i| {
+                            let (i, f) = (as_i64(*ty, i), as_i64(*ty, read(m, fin, *ty)?));
+                            // INDX + 1; at the type's maximum the loop ends without wrapping.
+                            if fits(*ty, i + 1) {
+                                write(m, indx, *ty, mask(*ty, i + 1))?;
+                            }
+                            Ok(i < f)
+                        });
+                        match r {
+                            Ok(true) => {
+                                watchdog!();
+                                pc = *start as usize + 1;
+                                // The body runs with the FOR's enable on (S7-200).
+                                self.cr = true;
+                            }
+                            Ok(false) => {}
+                            Err(f) => return self.fault(prog, (pc - 1) as u32, f),
                         }
                     }
                 }
@@ -700,6 +799,46 @@ fn bad<M: Machine>(m: &M, ops: &[&Opd], ty: DataType) -> Fault {
     ops.iter()
         .find_map(|o| read(m, o, ty).err())
         .unwrap_or_else(|| Fault::new(FaultKind::BadAddress, "bad indirect address"))
+}
+
+/// SQRT and ABS: OUT := f(IN); ENO = 0 when the result is not a number or does not fit
+/// (S7-200 status bits: SM1.1 overflow / illegal value, SM1.0 zero, SM1.2 negative).
+fn unary<M: Machine>(m: &mut M, op: Unary, ty: DataType, a: &Opd, out: &Opd) -> Result<bool, Fault> {
+    let Some(x) = val(m, a, ty) else {
+        return Err(bad(m, &[a], ty));
+    };
+    if ty == DataType::Real {
+        let x = f32::from_bits(x);
+        if op == Unary::Sqrt && (x.is_nan() || x < 0.0) {
+            m.flags(Flags { overflow: true, ..Flags::default() });
+            return Ok(false);
+        }
+        let r = match op {
+            Unary::Sqrt => x.sqrt(),
+            Unary::Abs => x.abs(),
+        };
+        m.flags(Flags { zero: r == 0.0, overflow: !r.is_finite(), negative: false, div_zero: false });
+        write(m, out, ty, r.to_bits())?;
+        return Ok(r.is_finite());
+    }
+    let r = as_i64(ty, x).abs();
+    let overflow = !fits(ty, r);
+    let raw = mask(ty, r);
+    m.flags(Flags { zero: raw == 0, overflow, negative: as_i64(ty, raw) < 0, div_zero: false });
+    if !put(m, out, ty, raw) {
+        return Err(bad(m, &[out], ty));
+    }
+    Ok(!overflow)
+}
+
+/// Whether a divisor reads as zero (cold: after a failed division only).
+#[cold]
+fn is_zero<M: Machine>(m: &M, b: &Opd, ty: DataType) -> bool {
+    match val(m, b, ty) {
+        Some(v) if ty == DataType::Real => f32::from_bits(v) == 0.0,
+        Some(v) => as_i64(ty, v) == 0,
+        None => false,
+    }
 }
 
 fn arith<M: Machine>(m: &mut M, op: Arith, ty: DataType, a: &Opd, b: &Opd, out: &Opd) -> Result<bool, Fault> {

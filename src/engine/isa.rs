@@ -54,6 +54,15 @@ pub enum Arith {
     Mod,
 }
 
+/// One-operand numeric functions: OUT := f(IN).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub enum Unary {
+    /// Square root (REAL).
+    Sqrt,
+    /// Absolute value (INT, DINT, REAL).
+    Abs,
+}
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum Shift {
     Shl,
@@ -167,6 +176,10 @@ pub enum Kind {
         op: Logic,
     },
     Inv,
+    Unary(Unary),
+    Swap,
+    For,
+    Next,
     Conv(Conv),
     Jmp,
     Jmpc {
@@ -376,6 +389,46 @@ pub static CORE: &[Def] = &[
     d("WXOR", K::WordLogic { op: Logic::Xor }, (2, 3), C::Arith, "OUT := OUT XOR IN (bitwise)", "S7-200 (XORW)"),
     d("XORW", K::WordLogic { op: Logic::Xor }, (2, 3), C::Arith, "bitwise XOR", "S7-200"),
     d("INV", K::Inv, (1, 1), C::Arith, "OUT := NOT OUT (bitwise)", "S7-200 (INVW)"),
+    d(
+        "SQRT",
+        K::Unary(Unary::Sqrt),
+        (2, 2),
+        C::Real,
+        "if CR: OUT := √IN (REAL); IN < 0 or NaN: ENO = 0, SM1.1, OUT unchanged; +inf: OUT = +inf, ENO = 0",
+        "S7-200 System Manual, Square Root (SQRT)",
+    ),
+    d(
+        "ABS",
+        K::Unary(Unary::Abs),
+        (2, 2),
+        C::Arith,
+        "if CR: OUT := |IN| (type of OUT); −32768 / −2³¹ wrap to themselves with SM1.1 and ENO = 0; REAL NaN/inf: ENO = 0",
+        "IEC 61131-3 ABS (KincoBuilder IL)",
+    ),
+    d(
+        "SWAP",
+        K::Swap,
+        (1, 1),
+        C::Move,
+        "if CR: exchange the high and low byte of a word",
+        "S7-200 System Manual, Swap Bytes (SWAP)",
+    ),
+    d(
+        "FOR",
+        K::For,
+        (3, 3),
+        C::Jump,
+        "FOR INDX, INIT, FINAL: if CR, run the instructions up to NEXT with INDX = INIT … FINAL (INT or DINT; INIT > FINAL: none; nesting ≤ 8)",
+        "S7-200 System Manual, For-Next Loop (FOR, NEXT)",
+    ),
+    d(
+        "NEXT",
+        K::Next,
+        (0, 0),
+        C::Jump,
+        "end of a FOR loop: INDX + 1, back while INDX ≤ FINAL (FINAL re-read; at the type's maximum the loop ends)",
+        "S7-200 System Manual, For-Next Loop (FOR, NEXT)",
+    ),
     d("I_DI", K::Conv(Conv::IDi), (2, 2), C::Move, "INT → DINT", "S7-200"),
     d("INT_TO_DINT", K::Conv(Conv::IDi), (2, 2), C::Move, "INT → DINT", "IEC"),
     d("DI_I", K::Conv(Conv::DiI), (2, 2), C::Move, "DINT → INT (out of range: ENO = 0)", "S7-200"),
@@ -423,6 +476,15 @@ pub static CORE: &[Def] = &[
     d("WDT", K::Wdt, (0, 0), C::Special, "restart the watchdog count", "K80S"),
     d("WDR", K::Wdt, (0, 0), C::Special, "restart the watchdog count (S7-200 name)", "S7-200"),
     d("NOP", K::Nop, (0, 1), C::Bit, "nothing", "IEC"),
+];
+
+/// Instructions never offered as a "did you mean" for an unknown name, in any family: each
+/// stops the CPU or an axis, moves an axis, starts pulses or counters, sets the clock,
+/// silences interrupts or ends the program — a typo must not become one of them (a user who
+/// meant one types it).
+pub const NEVER_SUGGESTED: &[&str] = &[
+    "STOP", "PSTOP", "PLS", "PREL", "PABS", "PHOME", "PJOG", "PFLO_F", "HSC", "HDEF", "SET_RTC", "DISI", "DTCH", "END",
+    "MEND", "FEND",
 ];
 
 /// Comparison mnemonics, S7-200 style: `LD`/`A`/`O` + `B`/`W`/`D`/`R` + operator.

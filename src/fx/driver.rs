@@ -1221,7 +1221,8 @@ pub fn open_sim(u: &DeviceUrl, clock: &Clock) -> Result<Box<dyn Device>> {
     let model = model_of(u, Some(if u.target.is_empty() { "FX2N" } else { &u.target }))?;
     let plc = sim_plc(model, u.param("share"), clock)?;
     if let Some(p) = u.param("program") {
-        let text = std::fs::read_to_string(p).map_err(|e| Error::io(format!("{}: cannot read {p}: {e}", u.text)))?;
+        let text = crate::core::encoding::read_source(p)
+            .map_err(|e| Error::io(format!("{}: cannot read {p}: {e}", u.text)))?;
         let loaded = super::program::Loaded::load(&text, p, model)?;
         plc.lock().unwrap_or_else(|e| e.into_inner()).load_program(loaded);
     }

@@ -430,3 +430,15 @@ END
     scans(&mut m, 1);
     assert_eq!(d(&m, 0), 0, "RST D0");
 }
+
+#[test]
+fn an_unknown_fx_instruction_is_never_pointed_at_end() {
+    // END stops what follows from being scanned (FX PM 2, End): a typo is not answered with
+    // it (engine::isa::NEVER_SUGGESTED), while a harmless near name still is.
+    for typo in ["EN", "ENDD", "EMD", "XEND"] {
+        let Err(e) = Loaded::load(&format!("LD X0\n{typo}\n"), "t.il", fx2n()) else { panic!("{typo} loaded") };
+        assert!(!e.hint.as_deref().unwrap_or("").contains("END"), "{typo}: {:?}", e.hint);
+    }
+    let Err(e) = Loaded::load("LD X0\nOUTT Y0\n", "t.il", fx2n()) else { panic!("OUTT loaded") };
+    assert!(e.hint.as_deref().unwrap_or("").contains("OUT"), "{:?}", e.hint);
+}

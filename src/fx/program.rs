@@ -780,7 +780,13 @@ fn suggest(m: &str) -> Option<&'static str> {
     if m.chars().count() > 16 {
         return None;
     }
-    INSTRUCTIONS.iter().map(|d| (dist(m, d.name), d.name)).filter(|(d, _)| *d <= 2).min().map(|(_, n)| n)
+    INSTRUCTIONS
+        .iter()
+        .filter(|d| !crate::engine::isa::NEVER_SUGGESTED.contains(&d.name))
+        .map(|d| (dist(m, d.name), d.name))
+        .filter(|(d, _)| *d <= 2)
+        .min()
+        .map(|(_, n)| n)
 }
 
 /// Translates an FX list (named `file` in messages) into engine IL.

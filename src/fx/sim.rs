@@ -500,7 +500,7 @@ pub async fn serve_ports(
     }
     let mut mem = Memory::with_clock(m, opts.clock.clone());
     if let Some(p) = opts.program {
-        let text = std::fs::read_to_string(p)
+        let text = crate::core::encoding::read_source(p)
             .map_err(|e| crate::core::Error::io(format!("cannot read {}: {e}", p.display())))?;
         mem.load_program(super::program::Loaded::load(&text, &p.display().to_string(), m)?);
         ready.insert("fx_program".into(), json!(p.display().to_string()));

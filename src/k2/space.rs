@@ -69,6 +69,36 @@ impl K2Space {
         Ok(())
     }
 
+    /// `Q9.9` on a K205: the grammar says bit 9 does not exist (naming `Q9.7`), but Q9 is not
+    /// on this model either, so the message names the model's last valid bit (`Q1.7`).
+    fn past_the_end_bit(&self, text: &str, e: Error) -> Error {
+        let t = text.trim();
+        let Some((head, bit)) = t.rsplit_once('.') else { return e };
+        if bit.is_empty() || !bit.bytes().all(|b| b.is_ascii_digit()) || !e.message.contains("bits are 0…7") {
+            return e;
+        }
+        let Ok(ops) = operand::parse_expr(&format!("{head}.7")) else { return e };
+        let [op] = ops.as_slice() else { return e };
+        match self.check(op) {
+            Ok(()) => e,
+            Err(range) if self.area_len(op.area) == 0 => range,
+            Err(_) => {
+                let last = last_of(op, self.area_len(op.area)).unwrap_or_default();
+                Error::new(
+                    ErrorKind::Range,
+                    format!(
+                        "{t}: bit {bit} does not exist (bits are 0…7), and byte {} is past the end of the {} area on {} (last bit is {last})",
+                        op.byte,
+                        op.area.name(),
+                        self.model.name
+                    ),
+                )
+                .operand(t.to_string())
+                .hint(format!("{} on {}: {}0.0 … {last}", op.area.meaning(), self.model.name, op.area.name()))
+            }
+        }
+    }
+
     fn models_with(&self, area: Area) -> String {
         let with: Vec<&str> =
             catalog::MODELS.iter().filter(|m| K2Space::new(m).area_len(area) > 0).map(|m| m.name).collect();
@@ -77,7 +107,7 @@ impl K2Space {
 
     /// Parses and bounds-checks, returning K2 operands.
     pub fn parse_k2(&self, text: &str) -> Result<Vec<K2Operand>> {
-        let ops = operand::parse_expr(text)?;
+        let ops = operand::parse_expr(text).map_err(|e| self.past_the_end_bit(text, e))?;
         for o in &ops {
             self.check(o)?;
         }
@@ -256,6 +286,27 @@ mod tests {
 
     fn space(m: &str) -> K2Space {
         K2Space::new(catalog::find(m).unwrap())
+    }
+
+    #[test]
+    fn a_bit_past_7_in_a_byte_past_the_area_names_the_models_last_bit() {
+        // K205: Q0.0–Q1.7 (k2.md §1). Q9.9 is wrong twice; the message names Q1.7, not Q9.7.
+        let s = space("K205-16DT");
+        let e = s.parse_k2("Q9.9").unwrap_err();
+        assert!(e.message.contains("Q1.7") && !e.message.contains("Q9.7"), "{}", e.message);
+        assert!(e.message.contains("K205-16DT") && e.message.contains("bit 9"), "{}", e.message);
+        let e = s.parse_k2("%Q9.9").unwrap_err();
+        assert!(e.message.contains("Q1.7"), "{}", e.message);
+        // Inside the area only the bit is wrong: Q0.9 → Q0.7 is the last bit of that byte.
+        assert!(s.parse_k2("Q0.9").unwrap_err().message.contains("Q0.7"));
+        assert!(s.parse_k2("I7.8").unwrap_err().message.contains("I1.7"));
+        let fx = sim_compile_error("LD %SM0.0\nST %Q9.9");
+        assert!(fx.contains("Q1.7"), "a program load names it too: {fx}");
+    }
+
+    fn sim_compile_error(text: &str) -> String {
+        let sim = crate::k2::sim::open("K205-16DT", crate::core::Clock::stepped()).unwrap();
+        sim.compile(text, "q.il").unwrap_err().message.clone()
     }
 
     #[test]

@@ -663,7 +663,8 @@ pub fn open_sim(u: &DeviceUrl, clock: &Clock) -> Result<Box<dyn Device>> {
         sim.open_state(std::path::Path::new(p))?;
     }
     if let Some(p) = u.param("program") {
-        let text = std::fs::read_to_string(p).map_err(|e| Error::io(format!("{}: cannot read {p}: {e}", u.text)))?;
+        let text = crate::core::encoding::read_source(p)
+            .map_err(|e| Error::io(format!("{}: cannot read {p}: {e}", u.text)))?;
         sim.load_logic(Box::new(super::sim::program::IlRunner::load(&text, p, m)?));
     }
     let sim = Arc::new(Mutex::new(sim));

@@ -85,6 +85,8 @@ pub struct K2Sim {
     run_ends: Vec<usize>,
     /// Numbered events waiting for their interrupt routines (program::irq).
     irq_queue: Vec<(Duration, u32)>,
+    /// A program's STOP instruction ran: the CPU goes to STOP at the end of the scan.
+    pub(crate) stop_requested: bool,
 }
 
 impl K2Sim {
@@ -114,6 +116,7 @@ impl K2Sim {
             raised: Vec::new(),
             run_ends: Vec::new(),
             irq_queue: Vec::new(),
+            stop_requested: false,
         };
         sim.refresh_system_bits(start);
         sim
@@ -279,7 +282,9 @@ impl K2Sim {
         // years of uptime); the scan time is a whole number of ms, so scans follow from ms.
         const SCAN_MS: u64 = SCAN_TIME.as_millis() as u64;
         const _: () = assert!(SCAN_TIME.as_nanos() == SCAN_MS as u128 * 1_000_000);
-        let ms = now_ns.saturating_sub(self.start_ns) / 1_000_000;
+        // The clock bits run on the program's time (PAUSE and DEBUG freeze it: program::Plc::thaw).
+        let prog_ns = self.plc.as_ref().map_or(now_ns, |p| p.program_ns(now_ns));
+        let ms = prog_ns.saturating_sub(self.start_ns) / 1_000_000;
         let scans = ms / SCAN_MS;
         let mut b = 0u8;
         b |= 1; // SM0.0 always on (§8)
@@ -817,7 +822,7 @@ impl Device for K2Sim {
             }
             "retain" => self.set_retain(value),
             "program" => {
-                let text = std::fs::read_to_string(value)
+                let text = crate::core::encoding::read_source(value)
                     .map_err(|e| Error::io(format!("cannot read the program {value}: {e}")))?;
                 self.load_program(&text, value).map(|_| ())
             }

@@ -18,9 +18,14 @@
 //!   as an invalid cycle.
 //! - A PWM cycle below 2, or any cycle faster than the channel's limit, is refused with
 //!   status bit 4 too (the only error bit the status byte has).
-//! - Position counting (SMD212 …) counts PTO pulses. The sign is the direction output's
-//!   level (Q0.2 …: 0 forward = +, 1 reverse = −) while SM201.3 = 0; with SM201.3 = 1 the
-//!   pin is a plain output and pulses count forward. PWM pulses are not counted.
+//! - Position counting (SMD212 …) counts PTO pulses, up moving forward and down moving
+//!   backward (§3.4.3.1: "increases counting forward, decreases counting backward"). A
+//!   position instruction (PREL, PABS, PHOME, PJOG, PFLO_F) knows its direction and counts
+//!   by it whatever SM201.3 says: SM201.3 = 1 only frees the direction pin as a plain output,
+//!   it does not change which way the axis moves. A train started by `PLS` has no direction
+//!   of its own: it counts by the direction output's level (Q0.2 …: 0 forward = +,
+//!   1 reverse = −) while SM201.3 = 0, and forward while SM201.3 = 1 (the pin then says
+//!   nothing about the axis). PWM pulses are not counted.
 //! - SM201.6 (clear) and SM201.4 (load SMD208) act on every scan while set, as the manual
 //!   warns ("avoid keeping this bit at 1"); SM201.7 is latched by PSTOP and only the user
 //!   clears it. It blocks position instructions (PREL/PABS/PHOME/PJOG, not simulated); PLS
@@ -251,6 +256,9 @@ pub struct PtoChannel {
     run: Run,
     /// Pulses of the current train already added to the position counter.
     counted: u64,
+    /// The direction of a train started by a position instruction (true = backward); `None`
+    /// for a `PLS` train, which counts by the direction pin.
+    reverse: Option<bool>,
 }
 
 fn q_bit(mem: &Memory, p: (u32, u8)) -> bool {
@@ -287,6 +295,7 @@ impl PtoChannel {
             count: 0,
             run: Run::Idle,
             counted: 0,
+            reverse: None,
         }
     }
 
@@ -393,7 +402,10 @@ impl PtoChannel {
             return;
         }
         let r = self.regs;
-        let reverse = !mem.sm_bit(r.pos_control, pos::DIR_DISABLE) && q_bit(mem, self.dir);
+        let reverse = match self.reverse {
+            Some(rev) => rev,
+            None => !mem.sm_bit(r.pos_control, pos::DIR_DISABLE) && q_bit(mem, self.dir),
+        };
         let cv = mem.sm_dword(r.pos_cv) as i32;
         let d = n as i64 as i32;
         let cv = if reverse { cv.wrapping_sub(d) } else { cv.wrapping_add(d) };
@@ -441,6 +453,7 @@ impl PtoChannel {
         }
         self.run = Run::Pto(PtoRun::new(now, segs));
         self.counted = 0;
+        self.reverse = Some(reverse);
         let r = self.regs;
         for (b, v) in [(st::PTO_IDLE, false), (st::PWM_IDLE, true), (st::INVALID, false), (st::ABORTED, false)] {
             mem.set_sm_bit(r.status, b, v);
@@ -591,6 +604,7 @@ impl PtoChannel {
         );
         self.run = Run::Pto(train);
         self.counted = 0;
+        self.reverse = None;
         for (b, v) in [(st::PTO_IDLE, false), (st::PWM_IDLE, true), (st::INVALID, false), (st::ABORTED, false)] {
             mem.set_sm_bit(r.status, b, v);
         }
@@ -675,6 +689,8 @@ pub struct PtoState {
     count: u32,
     run: Run,
     counted: u64,
+    #[serde(default)]
+    reverse: Option<bool>,
 }
 
 impl PtoChannel {
@@ -685,11 +701,13 @@ impl PtoChannel {
             count: self.count,
             run: self.run.clone(),
             counted: self.counted,
+            reverse: self.reverse,
         }
     }
 
     pub fn load(&mut self, s: PtoState) {
-        (self.cycle, self.width, self.count, self.run, self.counted) = (s.cycle, s.width, s.count, s.run, s.counted);
+        (self.cycle, self.width, self.count, self.run, self.counted, self.reverse) =
+            (s.cycle, s.width, s.count, s.run, s.counted, s.reverse);
     }
 }
 

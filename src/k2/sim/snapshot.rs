@@ -206,9 +206,27 @@ pub struct ProgramState {
     pub next_scan_ns: u64,
     pub timed_next_ns: [Option<u64>; 2],
     pub stop_outputs: Vec<u8>,
+    /// AQ words in STOP.
+    #[serde(default)]
+    pub stop_analog: Vec<u8>,
+    /// The last mode command (K2 §2.2.1 table).
+    #[serde(default = "run_mode")]
+    pub command: super::program::Mode,
+    /// Frozen time so far and, while frozen, since when (PAUSE, DEBUG).
+    #[serde(default)]
+    pub frozen_ns: u64,
+    #[serde(default)]
+    pub paused_at_ns: Option<u64>,
+    /// Interrupt events waiting.
+    #[serde(default)]
+    pub pending: Vec<u32>,
     pub user: Option<LoadedState>,
     /// The helper's execution state (its text is regenerated from `agent_base`).
     pub helper_cpu: Option<crate::engine::Cpu>,
+}
+
+fn run_mode() -> super::program::Mode {
+    super::program::Mode::Run
 }
 
 impl ProgramState {
@@ -220,6 +238,11 @@ impl ProgramState {
             next_scan_ns: ns(p.next_scan),
             timed_next_ns: p.timed_next.map(|t| t.map(ns)),
             stop_outputs: p.stop_outputs.clone(),
+            stop_analog: p.stop_analog.clone(),
+            command: p.command,
+            frozen_ns: p.frozen_ns,
+            paused_at_ns: p.paused_at.map(ns),
+            pending: p.pending.clone(),
             user: p.user.as_ref().map(|l| LoadedState {
                 source: l.source.clone(),
                 text: l.text.clone(),
@@ -258,6 +281,11 @@ impl ProgramState {
         p.run_scans = self.run_scans;
         p.timed_next = self.timed_next_ns.map(|t| t.map(Duration::from_nanos));
         p.stop_outputs = self.stop_outputs.clone();
+        p.stop_analog = self.stop_analog.clone();
+        p.command = self.command;
+        p.frozen_ns = self.frozen_ns;
+        p.paused_at = self.paused_at_ns.map(Duration::from_nanos);
+        p.pending = self.pending.clone();
         Ok(p)
     }
 }

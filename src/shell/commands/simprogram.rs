@@ -11,7 +11,7 @@ use crate::k2::sim::K2Sim;
 use crate::output::Outcome;
 use crate::shell::{Args, Shell};
 
-pub const USAGE: &str = "sim program load FILE.il | sim program unload | sim program | sim program costs [bit=200ns … overhead=0.3ms min_scan=1ms watchdog=300ms] | sim program stop-outputs QB0=16#05 … | sim cpu run|stop|pause | sim stop | sim pause | sim switch run|stop | sim scan [N] | sim break LINE|FILE:LINE|network N|clear | sim stepi [N] | sim stepn";
+pub const USAGE: &str = "sim program load FILE.il | sim program unload | sim program | sim program costs [bit=200ns … overhead=0.3ms min_scan=1ms watchdog=300ms] | sim program stop-outputs QB0=16#05 AQW0=16000 … | sim cpu run|stop|pause | sim stop | sim pause | sim switch run|stop | sim scan [N] | sim break LINE|FILE:LINE|network N|clear | sim stepi [N] | sim stepn";
 
 fn ms(ns: u64) -> f64 {
     (ns as f64 / 1e6 * 1000.0).round() / 1000.0
@@ -47,9 +47,28 @@ pub fn status(s: &K2Sim, name: &str) -> Outcome {
         ms(p.costs.min_scan_ns),
         ms(p.costs.overhead_ns)
     ));
+    if p.mode == Mode::Stop && p.stopped_by_program {
+        lines.push("stopped by the program's STOP instruction (sim cpu run restarts it)".to_string());
+    }
     for f in &p.faults {
         lines.push(format!("fault at {:.3} s: {f}", f.at_ns as f64 / 1e9));
     }
+    if let Some(last) = p.errors.last() {
+        lines.push(format!(
+            "Err LED on: {} normal error{} (the CPU continues); last at {:.3} s: {last}",
+            p.error_count,
+            if p.error_count == 1 { "" } else { "s" },
+            last.at_ns as f64 / 1e9
+        ));
+    }
+    let errors: Vec<serde_json::Value> = p
+        .errors
+        .iter()
+        .map(|f| {
+            serde_json::json!({"code": f.kind.code(), "kind": f.kind.name(), "message": f.message,
+            "line": f.line, "instruction": f.instruction, "at_s": f.at_ns as f64 / 1e9})
+        })
+        .collect();
     let faults: Vec<serde_json::Value> = p
         .faults
         .iter()
@@ -71,6 +90,9 @@ pub fn status(s: &K2Sim, name: &str) -> Outcome {
         .with("interrupts", st.interrupts)
         .with("watchdog_ms", ms(p.costs.watchdog_ns))
         .with("faults", faults)
+        .with("errors", errors)
+        .with("error_count", p.error_count)
+        .with("err_led", !p.faults.is_empty() || p.error_count > 0)
 }
 
 pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
@@ -92,7 +114,7 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
             None | Some("status") => Ok(status(s, &name)),
             Some("load") => {
                 let path = words.get(2).ok_or_else(|| Error::usage("sim program load needs a file, e.g. prog.il"))?;
-                let text = std::fs::read_to_string(path)
+                let text = crate::core::encoding::read_source(path)
                     .map_err(|e| Error::io(format!("cannot read {path}: {e}")).device(name.clone()))?;
                 let msg = s.load_program(&text, path).map_err(|e| e.device(name.clone()))?;
                 Ok(status(s, &name).text(msg))

@@ -188,7 +188,7 @@ pub fn sim_program(sh: &mut Shell, args: Args) -> Result<Outcome> {
             let &(c, path) = words.get(2).ok_or_else(|| {
                 Error::usage("sim program load needs a file, e.g. sim program load scripts/umpk_lab1.il").column(col)
             })?;
-            let text = std::fs::read_to_string(path)
+            let text = crate::core::encoding::read_source(path)
                 .map_err(|e| Error::io(format!("cannot read {path}: {e}")).device(&name).column(c))?;
             let r = crate::umpk::sim::program::IlRunner::load(&text, path, u.model).map_err(|e| e.device(&name))?;
             let n = r.instructions();

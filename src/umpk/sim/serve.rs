@@ -161,7 +161,7 @@ pub async fn spawn(o: Options, stop: Arc<AtomicBool>) -> Result<serde_json::Map<
     // A program that does not load stops the server before it is ready.
     let runner = match &o.program {
         Some(p) => {
-            let text = std::fs::read_to_string(p)
+            let text = crate::core::encoding::read_source(p)
                 .map_err(|e| Error::io(format!("cannot read the UMPK program {}: {e}", p.display())))?;
             Some(super::program::IlRunner::load(&text, &p.to_string_lossy(), model)?)
         }

@@ -3,7 +3,8 @@
 //! the current result and the values of its operands after it ran.
 //!
 //! A breakpoint halts the CPU before the instruction (mode DEBUG); while halted no scan
-//! runs and timers do not count (as in PAUSE). `sim cpu run` continues the halted scan.
+//! runs and the program's time is frozen (as in PAUSE: timers, timed interrupts, SM0.5;
+//! [`super::Plc::thaw`]); events wait and run after RUN. `sim cpu run` continues the halted scan.
 //! Stepping past the end of the main program finishes the scan (the helper program, if
 //! any, runs whole) and the next step starts the next scan at its modelled time.
 
@@ -34,8 +35,10 @@ impl K2Sim {
             .filter(|p| p.user.is_some())
             .ok_or_else(|| Error::state("no program is loaded").hint("sim program load FILE.il"))?;
         let l = p.user.as_ref().unwrap();
-        let spec = spec.trim();
-        let net = spec.strip_prefix("network").or_else(|| spec.strip_prefix('n')).map(str::trim);
+        // From Lua (`plc:breakpoint("network 2")`) the words arrive quoted, as one argument.
+        let spec = spec.trim().trim_matches(['"', '\'']).trim();
+        let lower = spec.to_ascii_lowercase();
+        let net = lower.strip_prefix("network").or_else(|| lower.strip_prefix('n')).map(str::trim);
         let idx = if let Some(n) = net.and_then(|n| n.parse::<u32>().ok()) {
             l.prog.network.iter().position(|x| *x == n).ok_or_else(|| {
                 Error::usage(format!("{} has no network {n}", l.source))
@@ -85,7 +88,7 @@ impl K2Sim {
                 p.run_scans = 0;
             }
             if p.mode != Mode::Debug {
-                p.paused_at = p.paused_at.or(Some(self.last));
+                p.freeze(self.last);
                 p.mode = Mode::Debug;
             }
         }
@@ -98,7 +101,9 @@ impl K2Sim {
                 break;
             }
             let t = {
-                let p = self.plc.as_deref().unwrap();
+                // A step runs now; the time since the last step stays uncredited.
+                let p = self.plc.as_deref_mut().unwrap();
+                p.thaw(self.last);
                 p.next_scan.max(self.last)
             };
             let fresh = self.plc.as_deref().and_then(|p| p.user.as_ref()).is_some_and(|l| l.cpu.pc.is_none());
@@ -109,6 +114,7 @@ impl K2Sim {
             let step = self.describe(pc);
             out.push(step);
             if let Some(p) = self.plc.as_deref_mut() {
+                p.freeze(self.last);
                 p.halted = halted;
                 if p.mode == Mode::Stop {
                     break; // a fault

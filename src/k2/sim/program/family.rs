@@ -43,6 +43,7 @@ pub mod id {
     pub const PSTOP: u16 = 4;
     pub const READ_RTC: u16 = 5;
     pub const SET_RTC: u16 = 6;
+    pub const STOP: u16 = 7;
 }
 
 use super::motion::id as motion;
@@ -154,6 +155,15 @@ pub static SPECIALS: &[SpecialDef] = &[
         edge: false,
         doc: "SET_RTC buf: set the clock from 8 BCD bytes (invalid: ENO = 0)",
         source: "K2 §2.2.10; S7-200 buffer layout",
+    },
+    SpecialDef {
+        name: "STOP",
+        id: id::STOP,
+        args: &[],
+        optional: 0,
+        edge: false,
+        doc: "if CR: the CPU goes to STOP at the end of this scan (outputs to their STOP values; `sim cpu run` restarts)",
+        source: "K80S 5.4.5 (the program's STOP changes the mode); timing: S7-200 System Manual, STOP instruction",
     },
 ];
 
@@ -511,6 +521,11 @@ impl Machine for K2Machine<'_> {
                 for (k, v) in b.iter().enumerate() {
                     self.set(l.nth(k as u32), *v as u32);
                 }
+                true
+            }
+            id::STOP => {
+                // Takes effect when the scan (or interrupt routine) ends: program::scan_part.
+                sim.stop_requested = true;
                 true
             }
             id::SET_RTC => {

@@ -12,6 +12,15 @@
 //!   [`crate::k2::instr::EventKind::number`]; events the manual does not number cannot be
 //!   attached.
 //!
+//! Waiting events: an event whose routine is attached while interrupts are disabled
+//! (`DISI`), or while the CPU is in PAUSE or halted in DEBUG, is queued and its routine runs
+//! once interrupts may run again — before the next scan's program after `ENI` or RUN — in
+//! arrival order (S7-200 System Manual, "Understanding the Interrupt Priority and Queuing",
+//! Table 9-22: an I/O queue of 16 and a timed queue of 8 entries; an event arriving at a
+//! full queue is lost and sets SM4.1 (I/O) or SM4.2 (timed), Table 9-23). STOP empties the
+//! queue. Timed interrupts do not fire while the CPU is frozen (PAUSE, DEBUG): their
+//! schedule moves on by the frozen time (program::Plc::thaw).
+//!
 //! When: a routine runs at its event's virtual time. Events between two scans (an input
 //! written by a client, a timed interrupt, a PTO finishing) run after the earlier scan's
 //! program and before the next scan's program, in time order; the routine's cost-table
@@ -35,22 +44,42 @@ pub const TIMED: [(u32, u32); 2] = [(10, 34), (11, 35)];
 /// Timed-interrupt time base (K2 §2.1.2).
 pub const TIMED_BASE: Duration = Duration::from_micros(100);
 
+/// Interrupt queue depths (S7-200 System Manual Table 9-22): I/O events, timed events.
+pub const QUEUE_IO: usize = 16;
+pub const QUEUE_TIMED: usize = 8;
+
+fn is_timed(event: u32) -> bool {
+    TIMED.iter().any(|t| t.0 == event)
+}
+
 /// Edge event for input bit `bit` (0–3) of I0.
 pub fn edge_event(bit: u8, rising: bool) -> u32 {
     2 * bit as u32 + (!rising) as u32
 }
 
 impl K2Sim {
+    /// Whether events reach routines now or later: a user program and a mode other than STOP.
     fn interrupts_live(&self) -> bool {
-        self.plc
-            .as_ref()
-            .is_some_and(|p| p.mode == Mode::Run && p.user.as_ref().is_some_and(|u| u.cpu.interrupts_enabled))
+        self.plc.as_ref().is_some_and(|p| p.mode != Mode::Stop && p.user.is_some())
     }
 
-    /// Runs the routine attached to `event` at virtual time `at` (if any, and the CPU
-    /// is in RUN with interrupts enabled).
+    /// Runs the routine attached to `event` at virtual time `at` when the CPU is in RUN
+    /// with interrupts enabled; queues it while they are disabled or the CPU is frozen.
     pub(crate) fn run_interrupt(&mut self, event: u32, at: Duration) {
         let Some(mut p) = self.plc.take() else { return };
+        let waits = p.mode != Mode::Stop
+            && p.user.as_ref().is_some_and(|l| l.cpu.attached_to(event).is_some())
+            && (p.mode != Mode::Run || !p.user.as_ref().is_some_and(|l| l.cpu.interrupts_enabled));
+        if waits {
+            let (cap, bit) = if is_timed(event) { (QUEUE_TIMED, 2) } else { (QUEUE_IO, 1) };
+            if p.pending.iter().filter(|e| is_timed(**e) == is_timed(event)).count() < cap {
+                p.pending.push(event);
+            } else {
+                self.mem.sm[4] |= 1 << bit;
+            }
+            self.plc = Some(p);
+            return;
+        }
         if p.mode == Mode::Run {
             if let Some(l) = p.user.as_mut() {
                 if let Some(pou) = l.cpu.handler(event) {
@@ -74,6 +103,27 @@ impl K2Sim {
             }
         }
         self.plc = Some(p);
+        self.take_stop_request();
+    }
+
+    /// Runs the events that waited, at `at`, while interrupts are enabled in RUN (a routine
+    /// that disables them leaves the rest waiting). The overflow bits clear when the queue
+    /// empties (S7-200 Table 9-23).
+    pub(crate) fn run_pending(&mut self, at: Duration) {
+        let mut ran = false;
+        loop {
+            let Some(p) = self.plc.as_mut() else { return };
+            let ready = p.mode == Mode::Run && p.user.as_ref().is_some_and(|l| l.cpu.interrupts_enabled);
+            if !ready || p.pending.is_empty() {
+                if ran && p.pending.is_empty() {
+                    self.mem.sm[4] &= !0b110;
+                }
+                return;
+            }
+            let ev = p.pending.remove(0);
+            self.run_interrupt(ev, at);
+            ran = true;
+        }
     }
 
     /// Edge interrupts after the input image changed from `old` (a client's write).
@@ -122,11 +172,14 @@ impl K2Sim {
         let last = self.last;
         let sm = [self.mem.sm[TIMED[0].1 as usize], self.mem.sm[TIMED[1].1 as usize]];
         let p = self.plc.as_mut()?;
+        if matches!(p.mode, Mode::Pause | Mode::Debug) {
+            return None; // frozen: the schedule moves on at RUN (Plc::thaw)
+        }
         let cpu = &p.user.as_ref()?.cpu;
         let mut best: Option<(Duration, usize)> = None;
         for (i, &(ev, _)) in TIMED.iter().enumerate() {
             let period = TIMED_BASE * sm[i] as u32;
-            if !live || cpu.handler(ev).is_none() || period.is_zero() {
+            if !live || cpu.attached_to(ev).is_none() || period.is_zero() {
                 p.timed_next[i] = None;
                 continue;
             }
@@ -152,7 +205,7 @@ impl K2Sim {
             }
             for (wave, rising) in [(rise, true), (fall, false)] {
                 let ev = edge_event(pin.1, rising);
-                if cpu.handler(ev).is_none() {
+                if cpu.attached_to(ev).is_none() {
                     continue;
                 }
                 let (a, b) = (wave.rises(from), wave.rises(to));
@@ -167,14 +220,14 @@ impl K2Sim {
             let (a, b) = (crate::k2::sim::inputs::ns(from), crate::k2::sim::inputs::ns(to));
             for bit in 0..4u8 {
                 let pin = (0, bit);
-                let attached = [true, false].iter().any(|r| cpu.handler(edge_event(bit, *r)).is_some());
+                let attached = [true, false].iter().any(|r| cpu.attached_to(edge_event(bit, *r)).is_some());
                 if !attached || self.inputs.pin_edges(pin).is_none() {
                     continue;
                 }
                 let (_, ch) = crate::k2::sim::edges::changes(&self.inputs, &none, pin, a, b, false);
                 for (t, rising) in ch.into_iter().take(MAX_SOURCE_EDGES as usize) {
                     let ev = edge_event(bit, rising);
-                    if cpu.handler(ev).is_some() {
+                    if cpu.attached_to(ev).is_some() {
                         q.push((Duration::from_nanos(t), ev));
                     }
                 }

@@ -18,10 +18,19 @@
 //!
 //! **Modes** (K2 §2.2.1; K80S modes). RUN scans; STOP does not scan, sets the outputs to
 //! their STOP values (all off unless configured) and still serves Modbus; PAUSE freezes
-//! without touching data or outputs and RUN continues where it stopped. The real K2's
-//! mode is the switch × command table of §2.2.1 (switch STOP wins); the simulator's
-//! switch is a setting (`sim switch run|stop`). A serious error (watchdog, bad indirect
-//! address, call depth) stops the CPU with a fault record.
+//! without touching data or outputs and RUN continues where it stopped. The mode is the
+//! switch × command table of §2.2.1: RUN only when the switch is at RUN and the last command
+//! was RUN, STOP otherwise; the simulator's switch is a setting (`sim switch run|stop`),
+//! and the last command is kept while the switch is at STOP, so turning the switch back to
+//! RUN after a RUN command runs. A serious error (watchdog, bad indirect address, call
+//! depth) stops the CPU with a fault record; a normal error (division by zero) is recorded
+//! and the CPU continues (K2 §2.2.1, K80S 5.3.4).
+//!
+//! **Frozen time.** PAUSE and a DEBUG halt freeze the program's time: on RUN the timers,
+//! the timed interrupts' schedule, a halted scan's clock and the program's clock bits
+//! (SM0.4, SM0.5) are moved on by the time spent frozen ([`Plc::thaw`]), so nothing is
+//! credited for it. The pulse and counter hardware keeps running in virtual time (it is
+//! hardware, outside the CPU); its events wait (irq).
 
 pub mod debug;
 pub mod family;
@@ -105,6 +114,24 @@ pub struct Plc {
     pub mode: Mode,
     /// The RUN/STOP switch (a setting in the simulator; STOP wins over a RUN command).
     pub switch_run: bool,
+    /// The last mode command (`sim cpu run|stop|pause`), kept while the switch is at STOP
+    /// (K2 §2.2.1 table).
+    pub command: Mode,
+    /// Virtual time spent frozen (PAUSE, DEBUG) since the program started: the program's
+    /// clock bits run on `now − frozen_ns`.
+    pub frozen_ns: u64,
+    /// Interrupt events waiting while interrupts are disabled (DISI), or the CPU is paused
+    /// or halted: run in order once they may (S7-200 interrupt queues).
+    pub pending: Vec<u32>,
+    /// Normal errors (division by zero …), newest last, at most
+    /// [`crate::engine::exec::MAX_NORMAL_ERRORS`]; `error_count` counts all since loading. The
+    /// CPU keeps running (K2 §2.2.1 "normal error": Err LED on, code saved; K80S 5.3.4).
+    pub errors: Vec<Fault>,
+    pub error_count: u64,
+    /// The last STOP came from the program's STOP instruction.
+    pub stopped_by_program: bool,
+    /// AQ words in STOP (K2 §2.2.1: "all outputs, including DO and AO").
+    pub stop_analog: Vec<u8>,
     pub faults: Vec<Fault>,
     pub stats: ScanStats,
     /// Scans since the last STOP→RUN (SM0.1 is on in scan 0).
@@ -135,6 +162,13 @@ impl Plc {
             helper: None,
             mode: Mode::Run,
             switch_run: true,
+            command: Mode::Run,
+            frozen_ns: 0,
+            pending: Vec::new(),
+            stop_analog: Vec::new(),
+            stopped_by_program: false,
+            errors: Vec::new(),
+            error_count: 0,
             faults: Vec::new(),
             stats: ScanStats::default(),
             run_scans: 0,
@@ -161,14 +195,53 @@ impl Plc {
         for l in [&mut self.user, &mut self.helper].into_iter().flatten() {
             l.reset();
         }
-        self.mode = if self.switch_run { Mode::Run } else { Mode::Stop };
+        self.mode = if self.switch_run && self.command == Mode::Run { Mode::Run } else { Mode::Stop };
         self.run_scans = 0;
         self.next_scan = now;
         self.paused_at = None;
+        self.pending.clear();
         self.timed_next = [None; 2];
         self.irq_ns = 0;
         self.halted = None;
         self.faults.clear();
+    }
+}
+
+impl Plc {
+    /// Ends a freeze (PAUSE or DEBUG) at `now`: nothing the program sees is credited with the
+    /// time spent frozen — running timers, the timed interrupts' next firings, the clock of a
+    /// scan halted at a breakpoint, and the clock bits' phase all move on by it.
+    pub fn thaw(&mut self, now: Duration) {
+        let Some(at) = self.paused_at.take() else { return };
+        let dt = u64::try_from(now.saturating_sub(at).as_nanos()).unwrap_or(0);
+        if dt == 0 {
+            return;
+        }
+        self.frozen_ns = self.frozen_ns.saturating_add(dt);
+        for l in [&mut self.user, &mut self.helper].into_iter().flatten() {
+            for t in l.cpu.timers.iter_mut().filter(|t| t.running) {
+                t.mark_ns = t.mark_ns.saturating_add(dt);
+            }
+            if l.cpu.pc.is_some() {
+                l.cpu.now_ns = l.cpu.now_ns.saturating_add(dt);
+            }
+        }
+        let d = Duration::from_nanos(dt);
+        for t in self.timed_next.iter_mut().flatten() {
+            *t += d;
+        }
+        self.next_scan = self.next_scan.max(now);
+    }
+
+    /// Starts a freeze at `at` (no-op when already frozen).
+    pub fn freeze(&mut self, at: Duration) {
+        self.paused_at = self.paused_at.or(Some(at));
+    }
+
+    /// The program's clock at virtual `now_ns`: time spent frozen does not count.
+    pub fn program_ns(&self, now_ns: u64) -> u64 {
+        let now = self.paused_at.map_or(now_ns, |at| now_ns.min(u64::try_from(at.as_nanos()).unwrap_or(u64::MAX)));
+        now.saturating_sub(self.frozen_ns)
     }
 }
 
@@ -254,6 +327,7 @@ impl K2Sim {
         self.advance();
         let now = self.last;
         let n = prog.source_instructions;
+        let warnings: String = prog.warnings.iter().map(|w| format!("\nwarning: {w}")).collect();
         let p = self.plc_mut();
         p.breaks = vec![false; prog.code.len()];
         p.has_breaks = false;
@@ -268,10 +342,16 @@ impl K2Sim {
         p.run_scans = 0;
         p.next_scan = now;
         p.faults.clear();
+        p.pending.clear();
+        p.errors.clear();
+        p.error_count = 0;
         if p.mode == Mode::Run {
             self.advance_to(now);
         }
-        Ok(format!("{file}: {n} instructions loaded; CPU {}", self.plc.as_ref().map_or("RUN", |p| p.mode.name())))
+        Ok(format!(
+            "{file}: {n} instructions loaded; CPU {}{warnings}",
+            self.plc.as_ref().map_or("RUN", |p| p.mode.name())
+        ))
     }
 
     /// Installs the helper program (`lib/k2_agent.il` for this mailbox base) as text.
@@ -309,32 +389,49 @@ impl K2Sim {
         self.plc.as_deref()
     }
 
-    /// Sets the mode by command (`sim cpu run|stop|pause`). RUN with the switch at STOP stays
-    /// in STOP (K2 §2.2.1).
+    /// Sets the mode by command (`sim cpu run|stop|pause`). The command is kept; the mode
+    /// follows the switch × command table (K2 §2.2.1): with the switch at STOP the CPU stays
+    /// in STOP (an error saying so; the RUN command takes effect when the switch returns to RUN).
     pub fn set_mode(&mut self, want: Mode) -> Result<Mode> {
         self.advance();
+        let p = self.plc_mut();
+        if want != Mode::Debug {
+            p.command = want;
+        }
+        let switch_run = p.switch_run;
+        let refused = want != Mode::Stop && !switch_run;
+        let new = self.enter_mode(if switch_run { want } else { Mode::Stop });
+        if refused {
+            return Err(Error::state(format!(
+                "the RUN/STOP switch is at STOP: the CPU stays in STOP (manual §2.2.1); the {} command takes effect when the switch is at RUN",
+                want.name()
+            ))
+            .hint("sim switch run"));
+        }
+        Ok(new)
+    }
+
+    /// Puts the CPU into mode `new` now (the transitions: STOP → RUN restarts, PAUSE/DEBUG →
+    /// RUN continues with the frozen time not credited, STOP sets the STOP outputs).
+    fn enter_mode(&mut self, new: Mode) -> Mode {
         let now = self.last;
         let p = self.plc_mut();
         let old = p.mode;
-        let new = if want == Mode::Run && !p.switch_run { Mode::Stop } else { want };
-        let refused = want == Mode::Run && new == Mode::Stop;
-        if new == old && !refused {
-            return Ok(new);
+        if new == old {
+            return new;
+        }
+        if new != Mode::Stop {
+            p.stopped_by_program = false;
         }
         match new {
-            Mode::Stop => p.paused_at = None,
-            Mode::Pause | Mode::Debug => p.paused_at = p.paused_at.or(Some(now)),
+            Mode::Stop => {
+                p.paused_at = None;
+                p.pending.clear();
+            }
+            Mode::Pause | Mode::Debug => p.freeze(now),
             Mode::Run => {
                 p.halted = None;
-                if let Some(at) = p.paused_at.take() {
-                    // PAUSE froze the program: running timers do not count the pause.
-                    let dt = u64::try_from((now - at).as_nanos()).unwrap_or(0);
-                    for l in [&mut p.user, &mut p.helper].into_iter().flatten() {
-                        for t in l.cpu.timers.iter_mut().filter(|t| t.running) {
-                            t.mark_ns += dt;
-                        }
-                    }
-                }
+                p.thaw(now);
                 if old == Mode::Stop {
                     // STOP → RUN: a fresh start (first-scan bit, timers and edges reset);
                     // memory keeps its values.
@@ -342,6 +439,7 @@ impl K2Sim {
                     for l in [&mut p.user, &mut p.helper].into_iter().flatten() {
                         l.reset();
                     }
+                    p.timed_next = [None; 2];
                 }
                 p.next_scan = now;
             }
@@ -353,56 +451,77 @@ impl K2Sim {
         if new == Mode::Run {
             self.advance_to(now);
         }
-        if refused {
-            return Err(Error::state("the RUN/STOP switch is at STOP: the CPU stays in STOP (manual §2.2.1)")
-                .hint("sim switch run"));
-        }
-        Ok(new)
+        new
     }
 
-    /// The outputs' STOP values (K2 §2.2.1: set in KincoBuilder's hardware configuration):
-    /// `QB0=16#05 QB1=0` (bytes not named stay off). Returns the Q bytes.
+    /// The outputs' STOP values (K2 §2.2.1: "all outputs, including DO and AO", set in
+    /// KincoBuilder's hardware configuration): `QB0=16#05 QB1=0 AQW0=16000` (bytes and
+    /// words not named are off / 0). Returns the Q bytes.
     pub fn set_stop_outputs(&mut self, spec: &str) -> Result<Vec<u8>> {
-        let n = self.mem.q.len();
-        let mut bytes = vec![0u8; n];
+        use crate::k2::operand::{Area, Width};
+        let mut bytes = vec![0u8; self.mem.q.len()];
+        let mut analog = vec![0u8; self.mem.aq.len()];
         for item in spec.split_whitespace() {
-            let (k, v) = item
-                .split_once('=')
-                .ok_or_else(|| Error::usage(format!("`{item}` is not QBn=VALUE")).hint("e.g. QB0=16#05"))?;
+            let (k, v) = item.split_once('=').ok_or_else(|| {
+                Error::usage(format!("`{item}` is not QBn=VALUE or AQWn=VALUE")).hint("e.g. QB0=16#05 AQW0=16000")
+            })?;
             let ops = self.space().parse_k2(k)?;
             let op = ops[0];
-            if op.area != crate::k2::operand::Area::Q || op.width != crate::k2::operand::Width::Byte || ops.len() != 1 {
-                return Err(Error::usage(format!("{k}: STOP values are set per output byte (QB0, QB1 …)")));
-            }
             let lit =
                 crate::core::literal::parse_literal(v).map_err(|e| Error::usage(format!("{v}: {}", e.message)))?;
-            let val = lit.fit(crate::core::DataType::Byte, 8).map_err(Error::usage)?;
-            bytes[op.byte as usize] = val.as_i64() as u8;
+            match (op.area, op.width) {
+                (Area::Q, Width::Byte) if ops.len() == 1 => {
+                    let val = lit.fit(crate::core::DataType::Byte, 8).map_err(Error::usage)?;
+                    bytes[op.byte as usize] = val.as_i64() as u8;
+                }
+                (Area::AQ, Width::Word) if ops.len() == 1 => {
+                    let val = lit.fit(crate::core::DataType::Int, 16).map_err(Error::usage)?;
+                    // The AQ image holds words as the memory does (scratch write, then copy).
+                    let keep = self.mem.aq.clone();
+                    self.mem.write(&op, val.as_i64() as u16 as u32);
+                    let b = op.byte as usize;
+                    analog[b..b + 2].copy_from_slice(&self.mem.aq[b..b + 2]);
+                    self.mem.aq = keep;
+                }
+                _ => {
+                    return Err(Error::usage(format!(
+                        "{k}: STOP values are set per output byte (QB0, QB1 …) or analog output word (AQW0 …)"
+                    )))
+                }
+            }
         }
         let p = self.plc_mut();
         p.stop_outputs = bytes.clone();
+        p.stop_analog = analog;
         if p.mode == Mode::Stop {
             self.apply_stop_outputs();
         }
         Ok(bytes)
     }
 
-    /// The simulated mode switch.
+    /// The simulated mode switch: the mode becomes the §2.2.1 table's (switch RUN and last
+    /// command RUN → RUN; otherwise STOP). Returns the mode.
     pub fn set_switch(&mut self, run: bool) -> Result<Mode> {
-        self.plc_mut().switch_run = run;
-        if run {
-            Ok(self.plc.as_ref().map_or(Mode::Run, |p| p.mode))
-        } else {
-            self.set_mode(Mode::Stop)
-        }
+        self.advance();
+        let p = self.plc_mut();
+        let was = p.switch_run;
+        p.switch_run = run;
+        let command = p.command;
+        let mode = p.mode;
+        Ok(match (was, run) {
+            (_, false) => self.enter_mode(Mode::Stop),
+            // STOP → RUN on the switch: the kept command decides.
+            (false, true) => self.enter_mode(command),
+            (true, true) => mode,
+        })
     }
 
     pub(super) fn apply_stop_outputs(&mut self) {
         let Some(p) = &self.plc else { return };
         let n = self.mem.q.len().min(p.stop_outputs.len());
         self.mem.q[..n].copy_from_slice(&p.stop_outputs[..n]);
-        for a in self.mem.aq.iter_mut() {
-            *a = 0;
+        for (i, a) in self.mem.aq.iter_mut().enumerate() {
+            *a = p.stop_analog.get(i).copied().unwrap_or(0);
         }
     }
 
@@ -441,10 +560,13 @@ impl K2Sim {
 
     fn one_scan(&mut self, t: Duration) {
         if let Some(pc) = self.scan_part(t, u64::MAX, true) {
-            // A breakpoint: the CPU halts in DEBUG before instruction `pc`.
+            // A breakpoint: the CPU halts in DEBUG before instruction `pc`; the program's
+            // time freezes at the halted scan's time.
             if let Some(p) = self.plc.as_mut() {
                 p.mode = Mode::Debug;
                 p.halted = Some(pc);
+                let at = p.user.as_ref().map_or(t, |l| Duration::from_nanos(l.cpu.now_ns));
+                p.freeze(at);
             }
         }
     }
@@ -453,6 +575,10 @@ impl K2Sim {
     /// most `limit` user-program instructions, stopping at breakpoints when `brk`.
     /// Returns the instruction it halted before, or `None` when the scan completed.
     pub(super) fn scan_part(&mut self, t: Duration, limit: u64, brk: bool) -> Option<u32> {
+        if self.plc.as_ref()?.user.as_ref().is_none_or(|l| l.cpu.pc.is_none()) {
+            // Events that waited (DISI, PAUSE, DEBUG) run before the scan's program.
+            self.run_pending(t);
+        }
         let mut p = self.plc.take()?;
         let resuming = p.user.as_ref().is_some_and(|l| l.cpu.pc.is_some());
         let t = if resuming { Duration::from_nanos(p.user.as_ref().map_or(0, |l| l.cpu.now_ns)) } else { t };
@@ -496,9 +622,16 @@ impl K2Sim {
             self.events.extend(raised);
         }
         let (mut cost, mut instrs) = (0, 0);
-        for l in [&p.user, &p.helper].into_iter().flatten() {
+        for l in [&mut p.user, &mut p.helper].into_iter().flatten() {
             cost += l.cpu.spent_ns;
             instrs += l.cpu.executed;
+            let errs = l.cpu.take_errors();
+            if !errs.is_empty() {
+                p.error_count += errs.len() as u64;
+                p.errors.extend(errs);
+                let over = p.errors.len().saturating_sub(crate::engine::exec::MAX_NORMAL_ERRORS);
+                p.errors.drain(..over);
+            }
         }
         let scan_ns = (p.costs.overhead_ns + cost + std::mem::take(&mut p.irq_ns)).max(p.costs.min_scan_ns).max(1);
         let s = &mut p.stats;
@@ -522,6 +655,19 @@ impl K2Sim {
             return None;
         }
         self.plc = Some(p);
+        self.take_stop_request();
         None
+    }
+
+    /// A STOP instruction ran (K80S 5.4.5): the CPU goes to STOP now that the scan or the
+    /// routine is over (S7-200: "the transition to STOP is made at the end of the current
+    /// scan").
+    pub(super) fn take_stop_request(&mut self) {
+        if std::mem::take(&mut self.stop_requested) {
+            if let Some(p) = self.plc.as_mut() {
+                p.stopped_by_program = true;
+            }
+            self.enter_mode(Mode::Stop);
+        }
     }
 }

@@ -181,8 +181,11 @@ fn load_errors_name_the_file_line_and_a_suggestion() {
     let (mut s, _) = sim();
     let e = s.load_program("LD %SM0.0\nMOVE 1, %VX0", "bad.il").unwrap_err();
     assert!(e.message.starts_with("bad.il:2:9:"), "{}", e.message);
+    let e = s.load_program("LD %SM0.0\nMOVEE 1, %VW0", "bad.il").unwrap_err();
+    assert!(e.hint.as_deref().unwrap_or("").contains("MOVE"), "{:?}", e.hint);
+    // A typo is never pointed at an instruction that starts pulses (engine::isa::NEVER_SUGGESTED).
     let e = s.load_program("LD %SM0.0\nPLSS 0", "bad.il").unwrap_err();
-    assert!(e.hint.as_deref().unwrap_or("").contains("PLS"), "{:?}", e.hint);
+    assert!(!e.hint.as_deref().unwrap_or("").contains("PLS"), "{:?}", e.hint);
     let e = s.load_program("LD %I7.0", "bad.il").unwrap_err();
     assert!(e.message.contains("I7.0") && e.message.contains("K205-16DT"), "{}", e.message);
     assert!(s.plc().is_none(), "nothing was loaded");
@@ -413,6 +416,87 @@ fn position_instructions_check_frequencies_and_the_emergency_stop_bit() {
     assert!(on(&mut s, "Q0.2"), "reverse");
 }
 
+/// Pulses `exec` (M0.0) off and on and lets the move finish.
+fn restart(s: &mut K2Sim, clock: &Clock, ms: u64) {
+    set(s, "M0.0", Value::Bool(false));
+    clock.step(Duration::from_millis(2));
+    set(s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(ms));
+}
+
+#[test]
+fn backward_moves_count_down_whether_the_direction_pin_is_freed_or_not() {
+    // K2 §3.4.3.1: SMD212 "increases counting forward and decreases counting backward";
+    // SM201.3 = 1 frees the direction pin as a plain output, the axis still moves backward.
+    // PABS is absolute (§3.4.1): PABS 0 after PABS −1000 returns to 0, and again stays there.
+    for freed in [false, true] {
+        let (mut s, clock) = sim();
+        s.load_program(
+            "LD %SM0.0\nPREL 0, %M0.0, %VW0, %VD2, %VW6, %VD8, %M0.1, %M0.2, %MB1\n\
+             LD %SM0.0\nPABS 0, %M2.0, %VW0, %VD2, %VW6, %VD12, %M2.1, %M2.2, %MB3",
+            "rev.il",
+        )
+        .unwrap();
+        for (op, v) in [("VW0", 125), ("VD2", 10_000), ("VW6", 0), ("VD8", -1000)] {
+            set(&mut s, op, Value::Int(v));
+        }
+        set(&mut s, "SM201.3", Value::Bool(freed));
+        set(&mut s, "Q0.2", Value::Bool(false));
+        restart(&mut s, &clock, 200);
+        assert!(on(&mut s, "M0.1") && !on(&mut s, "M0.2"), "PREL −1000 DONE, no ERR (freed {freed})");
+        assert_eq!(get(&mut s, "SMD212/DINT"), Value::Int(-1000), "PREL −1000 (freed {freed})");
+        assert_eq!(on(&mut s, "Q0.2"), !freed, "the direction output is driven only while SM201.3 = 0");
+        set(&mut s, "SM201.6", Value::Bool(true));
+        clock.step(Duration::from_millis(2));
+        set(&mut s, "SM201.6", Value::Bool(false));
+        let mut seen = Vec::new();
+        for target in [-1000, 0, 0, 500, -250] {
+            set(&mut s, "VD12", Value::Int(target));
+            set(&mut s, "M2.0", Value::Bool(false));
+            clock.step(Duration::from_millis(2));
+            set(&mut s, "M2.0", Value::Bool(true));
+            clock.step(Duration::from_millis(300));
+            assert!(
+                on(&mut s, "M2.1") && !on(&mut s, "M2.2"),
+                "PABS {target} DONE (freed {freed}): ERRID {:?} at {:?}",
+                get(&mut s, "MB3"),
+                get(&mut s, "SMD212/DINT")
+            );
+            seen.push(get(&mut s, "SMD212/DINT").as_i64());
+        }
+        assert_eq!(seen, [-1000, 0, 0, 500, -250], "PABS is absolute in both directions (freed {freed})");
+    }
+}
+
+#[test]
+fn jog_and_homing_backward_count_down_with_the_direction_pin_freed() {
+    // K2 §3.4.3.1 (SMD212 decreases backward), §3.4.3.2 (PJOG DIRC), with SM201.3 = 1.
+    let (mut s, clock) = sim();
+    s.load_program(
+        "LD %SM0.0\nPJOG 0, %M0.0, %VD0, %VW4, %M0.1, %M0.2, %MB1\n\
+         LD %SM0.0\nPFLO_F 1, %M2.0, %VD10, %VW14, %VW16, %VD18, %M2.1, %M2.2, %MB3",
+        "jogrev.il",
+    )
+    .unwrap();
+    set(&mut s, "SM201.3", Value::Bool(true));
+    set(&mut s, "SM231.3", Value::Bool(true));
+    set(&mut s, "VD0", Value::Int(1000));
+    set(&mut s, "VW4", Value::Int(1));
+    set(&mut s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(1000));
+    let a = get(&mut s, "SMD212/DINT").as_i64();
+    assert!((-1010..=-990).contains(&a), "1 s backward at 1 kHz: {a}");
+    assert!(!on(&mut s, "Q0.2"), "the freed pin is left alone");
+    // PFLO_F with a negative COUNT moves backward on channel 1.
+    for (op, v) in [("VD10", 1000), ("VW14", 1), ("VW16", 1), ("VD18", -300)] {
+        set(&mut s, op, Value::Int(v));
+    }
+    set(&mut s, "M2.0", Value::Bool(true));
+    clock.step(Duration::from_millis(400));
+    assert!(on(&mut s, "M2.1"), "DONE");
+    assert_eq!(get(&mut s, "SMD242/DINT"), Value::Int(-300));
+}
+
 #[test]
 fn pjog_follows_maxf_and_pflo_f_counts() {
     let (mut s, clock) = sim();
@@ -605,4 +689,488 @@ fn stop_values_of_the_outputs_are_a_setting() {
     assert_eq!(get(&mut s, "QB0"), Value::Int(4), "Q0.2 stays on in STOP, the others go off");
     assert!(s.set_stop_outputs("VB0=1").is_err());
     assert!(s.set_stop_outputs("QB0=300").is_err());
+}
+
+// ---- Frozen time, waiting events, the mode table ------------------------------------
+
+const FROZEN: &str = "PROGRAM MAIN\nLD %SM0.1\nMOVE B#10, %SMB34\nATCH TICK, 10\nENI\n(* Network 2 *)\n\
+LD %I0.0\nTON T37, 20\nST %Q0.0\n(* Network 3 *)\nLD %SM0.0\nINC %VW0\nEND_PROGRAM\n\
+INTERRUPT TICK\nLD %SM0.0\nINC %VW20\nEND_INTERRUPT";
+
+#[test]
+fn a_breakpoint_halt_is_not_credited_to_timers_timed_interrupts_or_sm0_5() {
+    // docs/il.md "Debugging": DEBUG freezes the program's time as PAUSE does (K80S DEBUG mode;
+    // K2 §2.1.2 timers and timed interrupts count program time). A 2 s TON halted for 10 s.
+    let (mut s, clock) = sim();
+    s.load_program(FROZEN, "frozen.il").unwrap();
+    set(&mut s, "I0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(500));
+    s.advance();
+    s.set_breakpoint("12").unwrap();
+    clock.step(Duration::from_millis(2));
+    s.advance();
+    assert_eq!(s.plc().unwrap().mode, Mode::Debug);
+    let (t37, ticks, sm05) = (get(&mut s, "T37").as_i64(), get(&mut s, "VW20").as_i64(), get(&mut s, "SM0.5"));
+    assert!((4..=5).contains(&t37), "0.5 s of TON: {t37}");
+    clock.step(Duration::from_millis(10_250));
+    s.advance();
+    assert_eq!(get(&mut s, "T37").as_i64(), t37, "frozen while halted");
+    assert_eq!(get(&mut s, "VW20").as_i64(), ticks, "no timed interrupt while halted");
+    assert_eq!(get(&mut s, "SM0.5"), sm05, "the 1 s clock is frozen too");
+    s.clear_breakpoints();
+    s.set_mode(Mode::Run).unwrap();
+    assert_eq!(get(&mut s, "SM0.5"), sm05, "and continues from its phase");
+    clock.step(Duration::from_millis(100));
+    let t = get(&mut s, "T37").as_i64();
+    assert!(t - t37 <= 2, "100 ms after RUN the timer moved by 1, not by the halt: {t37} → {t}");
+    let n = get(&mut s, "VW20").as_i64() - ticks;
+    assert!((95..=105).contains(&n), "1 ms timed interrupt: about 100 in 100 ms, no burst: {n}");
+    clock.step(Duration::from_millis(1_300));
+    assert!(!on(&mut s, "Q0.0"), "1.9 s of program time: not yet");
+    clock.step(Duration::from_millis(200));
+    assert!(on(&mut s, "Q0.0"), "2.1 s of program time: done");
+}
+
+#[test]
+fn stepping_in_debug_credits_no_time_between_steps() {
+    let (mut s, clock) = sim();
+    s.load_program(FROZEN, "frozen.il").unwrap();
+    set(&mut s, "I0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(300));
+    s.advance();
+    s.set_breakpoint("12").unwrap();
+    clock.step(Duration::from_millis(2));
+    s.advance();
+    let t37 = get(&mut s, "T37").as_i64();
+    for _ in 0..5 {
+        clock.step(Duration::from_secs(5));
+        s.debug_step(20, false).unwrap();
+    }
+    let t = get(&mut s, "T37").as_i64();
+    assert!(t - t37 <= 1, "25 s of stepping is not timer time: {t37} → {t}");
+}
+
+const DISI: &str = "PROGRAM MAIN\nLD %SM0.1\nATCH ON_EDGE, 0\nLD %M0.0\nDISI\nLD %M0.1\nENI\nEND_PROGRAM\n\
+INTERRUPT ON_EDGE\nLD %SM0.0\nINC %VW10\nLD %SM4.1\nS %M1.0, 1\nEND_INTERRUPT";
+
+fn edge(s: &mut K2Sim) {
+    set(s, "I0.0", Value::Bool(false));
+    set(s, "I0.0", Value::Bool(true));
+}
+
+#[test]
+fn an_edge_during_disi_waits_and_runs_once_after_eni() {
+    // docs/il.md "Interrupts": events wait while interrupts are disabled (S7-200 System Manual,
+    // interrupt queues: I/O queue of 16, overflow bit SM4.1).
+    let (mut s, clock) = sim();
+    s.load_program(DISI, "disi.il").unwrap();
+    set(&mut s, "M0.1", Value::Bool(true));
+    clock.step(Duration::from_millis(2));
+    edge(&mut s);
+    assert_eq!(get(&mut s, "VW10"), Value::Int(1), "enabled: runs at once");
+    set(&mut s, "M0.1", Value::Bool(false));
+    set(&mut s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(2));
+    edge(&mut s);
+    clock.step(Duration::from_millis(5));
+    assert_eq!(get(&mut s, "VW10"), Value::Int(1), "disabled: waits");
+    set(&mut s, "M0.0", Value::Bool(false));
+    set(&mut s, "M0.1", Value::Bool(true));
+    clock.step(Duration::from_millis(5));
+    assert_eq!(get(&mut s, "VW10"), Value::Int(2), "ran once after ENI");
+    clock.step(Duration::from_millis(5));
+    assert_eq!(get(&mut s, "VW10"), Value::Int(2), "and only once");
+    assert!(!on(&mut s, "M1.0"), "no overflow");
+    // 20 edges while disabled: the queue keeps 16, the overflow bit says some were lost.
+    set(&mut s, "M0.1", Value::Bool(false));
+    set(&mut s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(2));
+    for _ in 0..20 {
+        edge(&mut s);
+    }
+    set(&mut s, "M0.0", Value::Bool(false));
+    set(&mut s, "M0.1", Value::Bool(true));
+    clock.step(Duration::from_millis(5));
+    assert_eq!(get(&mut s, "VW10"), Value::Int(18), "16 queued edges ran");
+    assert!(on(&mut s, "M1.0"), "SM4.1 was on inside the routines");
+    assert!(!on(&mut s, "SM4.1"), "cleared once the queue emptied");
+}
+
+#[test]
+fn an_edge_during_pause_waits_for_run() {
+    let (mut s, clock) = sim();
+    s.load_program(DISI, "disi.il").unwrap();
+    set(&mut s, "M0.1", Value::Bool(true));
+    clock.step(Duration::from_millis(2));
+    s.set_mode(Mode::Pause).unwrap();
+    edge(&mut s);
+    clock.step(Duration::from_millis(5));
+    assert_eq!(get(&mut s, "VW10"), Value::Int(0), "paused: waits");
+    s.set_mode(Mode::Run).unwrap();
+    clock.step(Duration::from_millis(2));
+    assert_eq!(get(&mut s, "VW10"), Value::Int(1), "ran after RUN");
+    s.set_mode(Mode::Stop).unwrap();
+    edge(&mut s);
+    s.set_mode(Mode::Run).unwrap();
+    clock.step(Duration::from_millis(5));
+    assert_eq!(get(&mut s, "VW10"), Value::Int(1), "STOP drops events (a fresh start)");
+}
+
+#[test]
+fn the_switch_and_the_command_combine_as_the_manuals_table() {
+    // K2 §2.2.1: switch RUN + command RUN = RUN; every other pair = STOP; the last command is
+    // kept while the switch is at STOP.
+    let (mut s, clock) = sim();
+    s.load_program("LD %SM0.1\nINC %VW0\nLD %SM0.0\nINC %VW2", "sw.il").unwrap();
+    let mode = |s: &K2Sim| s.plc().unwrap().mode;
+    for (switch_run, command, want) in [
+        (true, Mode::Run, Mode::Run),
+        (true, Mode::Stop, Mode::Stop),
+        (false, Mode::Run, Mode::Stop),
+        (false, Mode::Stop, Mode::Stop),
+    ] {
+        s.set_switch(true).unwrap();
+        let _ = s.set_mode(command);
+        s.set_switch(switch_run).unwrap();
+        let r = s.set_mode(command);
+        assert_eq!(r.is_err(), !switch_run && command == Mode::Run, "refusal says the switch wins");
+        assert_eq!(mode(&s), want, "switch {switch_run} command {command:?}");
+    }
+    // Switch STOP then RUN with the last command RUN: RUN again, from a first scan.
+    s.set_switch(true).unwrap();
+    s.set_mode(Mode::Run).unwrap();
+    let first = get(&mut s, "VW0").as_i64();
+    s.set_switch(false).unwrap();
+    assert_eq!(mode(&s), Mode::Stop);
+    s.set_switch(true).unwrap();
+    assert_eq!(mode(&s), Mode::Run, "the kept RUN command runs");
+    assert_eq!(get(&mut s, "VW0").as_i64(), first + 1, "STOP → RUN starts with a first scan");
+    // A RUN command given while the switch is at STOP takes effect when it returns to RUN.
+    s.set_mode(Mode::Stop).unwrap();
+    s.set_switch(false).unwrap();
+    assert!(s.set_mode(Mode::Run).is_err());
+    s.set_switch(true).unwrap();
+    assert_eq!(mode(&s), Mode::Run);
+    // The last command STOP: the switch alone does not start it.
+    s.set_mode(Mode::Stop).unwrap();
+    s.set_switch(false).unwrap();
+    s.set_switch(true).unwrap();
+    assert_eq!(mode(&s), Mode::Stop);
+    let n = get(&mut s, "VW2");
+    clock.step(Duration::from_millis(10));
+    assert_eq!(get(&mut s, "VW2"), n, "no scans");
+}
+
+#[test]
+fn the_stop_instruction_stops_the_cpu_at_the_end_of_the_scan() {
+    // K80S 5.4.5: the program's STOP changes the mode to STOP; the rest of the scan runs
+    // (S7-200 System Manual, STOP instruction). Outputs take their STOP values (K2 §2.2.1).
+    let (mut s, clock) = sim();
+    s.load_program("LD %SM0.0\nS %Q0.0, 1\nLD %I0.0\nSTOP\nLD %SM0.0\nINC %VW0", "stop.il").unwrap();
+    clock.step(Duration::from_millis(5));
+    s.advance();
+    assert_eq!(s.plc().unwrap().mode, Mode::Run);
+    let n = get(&mut s, "VW0").as_i64();
+    set(&mut s, "I0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(5));
+    s.advance();
+    assert_eq!(s.plc().unwrap().mode, Mode::Stop);
+    assert!(s.plc().unwrap().stopped_by_program);
+    assert_eq!(get(&mut s, "VW0").as_i64(), n + 1, "the scan that ran STOP finished");
+    assert!(!on(&mut s, "Q0.0"), "outputs at their STOP values");
+    set(&mut s, "I0.0", Value::Bool(false));
+    s.set_mode(Mode::Run).unwrap();
+    clock.step(Duration::from_millis(5));
+    s.advance();
+    assert_eq!(s.plc().unwrap().mode, Mode::Run, "sim cpu run restarts it");
+}
+
+#[test]
+fn no_unknown_instruction_is_ever_pointed_at_a_dangerous_one() {
+    // A typo must not be answered "did you mean PSTOP?" (an axis emergency stop), STOP, a
+    // move, PLS … (engine::isa::NEVER_SUGGESTED). Every name one edit away from each of them
+    // (deletions, substitutions, insertions, transpositions), and the S7-200 names the
+    // dialect lacks, either load or get a hint naming none of them.
+    let (s, _) = sim();
+    let letters: Vec<char> = ('A'..='Z').chain('0'..='9').chain(['_']).collect();
+    let mut names: Vec<String> =
+        ["STOPP", "STP", "PSTP", "ESTOP", "END", "MEND", "HALT", "SCRE", "LSCR", "SCRT", "PID", "XMT", "RCV", "NETR"]
+            .iter()
+            .map(|x| x.to_string())
+            .collect();
+    for d in crate::engine::isa::NEVER_SUGGESTED {
+        let c: Vec<char> = d.chars().collect();
+        for i in 0..=c.len() {
+            if i < c.len() {
+                let mut v = c.clone();
+                v.remove(i);
+                names.push(v.iter().collect());
+                for l in &letters {
+                    let mut v = c.clone();
+                    v[i] = *l;
+                    names.push(v.iter().collect());
+                }
+            }
+            if i + 1 < c.len() {
+                let mut v = c.clone();
+                v.swap(i, i + 1);
+                names.push(v.iter().collect());
+            }
+            for l in &letters {
+                let mut v = c.clone();
+                v.insert(i, *l);
+                names.push(v.iter().collect());
+            }
+        }
+    }
+    let mut checked = 0;
+    for n in &names {
+        let Err(e) = s.compile(&format!("LD %SM0.0\n{n} 0"), "t.il") else { continue };
+        if !e.message.contains("unknown instruction") {
+            continue;
+        }
+        checked += 1;
+        let hint = e.hint.clone().unwrap_or_default();
+        for d in crate::engine::isa::NEVER_SUGGESTED {
+            let named = hint.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_')).any(|w| w == *d);
+            assert!(!named, "`{n}` is answered with {d}: {hint}");
+        }
+    }
+    assert!(checked > 1000, "the variants were unknown instructions: {checked}");
+}
+
+#[test]
+fn breakpoint_specs_are_accepted_as_lua_passes_them() {
+    // plc:breakpoint("network 2") reaches `sim break "network 2"` (docs/il.md "Debugging").
+    let (mut s, _) = sim();
+    s.load_program("(* Network 1 *)\nLD %SM0.0\nINC %VW0\n(* Network 2 *)\nLD %SM0.0\nINC %VW2", "n.il").unwrap();
+    for spec in ["network 2", "\"network 2\"", "'network 2'", "Network 2", "n2", "5", "\"n.il:5\""] {
+        let at = s.set_breakpoint(spec).unwrap_or_else(|e| panic!("{spec}: {e}"));
+        assert!(at.contains("n.il:5"), "{spec}: {at}");
+    }
+}
+
+#[test]
+fn division_by_zero_is_a_recorded_normal_error_and_the_cpu_continues() {
+    // K2 §2.2.1: a normal error lights Err and saves the code; K80S 5.3.4: an operation
+    // error is recorded and the CPU keeps running. SM1.3 is S7-200's divide-by-zero bit.
+    let (mut s, clock) = sim();
+    s.load_program("LD %M0.0\nDIV %VW0, %VW2\nST %Q0.0\nLD %SM1.3\nS %M1.0, 1\nLD %SM0.0\nINC %VW4", "div.il").unwrap();
+    set(&mut s, "VW2", Value::Int(10));
+    clock.step(Duration::from_millis(3));
+    s.advance();
+    assert!(s.plc().unwrap().errors.is_empty(), "no division yet");
+    set(&mut s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(3));
+    s.advance();
+    // VW0 is 0: 10 / 0.
+    let p = s.plc().unwrap();
+    assert_eq!(p.mode, Mode::Run, "the CPU continues");
+    let e = p.errors.last().expect("a record");
+    assert_eq!((e.kind, e.kind.code(), e.line), (FaultKind::DivZero, 5, 2), "{e}");
+    assert!(!e.kind.serious());
+    assert!(p.error_count >= 1 && p.faults.is_empty());
+    assert!(on(&mut s, "M1.0"), "SM1.3, the divide-by-zero bit, was on after DIV");
+    assert!(!on(&mut s, "Q0.0"), "ENO = 0");
+    assert_eq!(get(&mut s, "VW2"), Value::Int(10), "the output is unchanged");
+    let n = get(&mut s, "VW4").as_i64();
+    clock.step(Duration::from_millis(10));
+    assert!(get(&mut s, "VW4").as_i64() > n, "still scanning");
+    let p = s.plc().unwrap();
+    assert!(p.errors.len() <= crate::engine::exec::MAX_NORMAL_ERRORS, "the record is bounded");
+    assert!(p.error_count > 10, "every occurrence counted: {}", p.error_count);
+    // REAL too.
+    s.load_program("LD %SM0.0\nMOVR 1.5, %VD8\nMOVR 0.0, %VD12\n/R %VD12, %VD8", "divr.il").unwrap();
+    assert_eq!(s.plc().unwrap().errors.last().map(|e| e.kind), Some(FaultKind::DivZero));
+}
+
+#[test]
+fn analog_outputs_take_their_stop_values_too() {
+    // K2 §2.2.1: in STOP all outputs, "including DO and AO", take the configured values.
+    // The K205EA-18DT has one analog output (AQW0).
+    let mut s = sim::open("K205EA-18DT", Clock::stepped()).unwrap();
+    s.load_program("LD %SM0.0\nMOVE 5000, %AQW0\nMOVE 16#FF, %QB0", "ao.il").unwrap();
+    assert_eq!(get(&mut s, "AQW0"), Value::Int(5000));
+    s.set_stop_outputs("QB0=16#04 AQW0=16000").unwrap();
+    s.set_mode(Mode::Stop).unwrap();
+    assert_eq!(get(&mut s, "AQW0"), Value::Int(16000), "the configured AO value");
+    assert_eq!(get(&mut s, "QB0"), Value::Int(4));
+    let e = s.set_stop_outputs("VW0=1").unwrap_err();
+    assert!(e.message.contains("AQW0"), "{}", e.message);
+    s.set_stop_outputs("QB0=0").unwrap();
+    assert_eq!(get(&mut s, "AQW0"), Value::Int(0), "not named: 0");
+}
+
+// ---- Added instructions: golden values at the edges (docs/il.md names each source) -------
+
+/// Runs `body` once (first scan) and returns the simulator.
+fn once(body: &str) -> K2Sim {
+    let (mut s, _) = sim();
+    s.load_program(&format!("LD %SM0.1\n{body}"), "golden.il").unwrap();
+    s
+}
+
+fn real(s: &mut K2Sim, op: &str) -> f32 {
+    match get(s, &format!("{op}/REAL")) {
+        Value::Real(r) => r as f32,
+        v => panic!("{op}: {v:?}"),
+    }
+}
+
+#[test]
+fn sqrt_golden_values() {
+    // S7-200 System Manual, Square Root (SQRT): REAL in, REAL out; SM1.1 on an illegal value.
+    for (x, want, eno) in [
+        (16.0f32, Some(4.0f32), true),
+        (2.0, Some(std::f32::consts::SQRT_2), true),
+        (0.0, Some(0.0), true),
+        (-4.0, None, false),
+        (f32::NAN, None, false),
+        (f32::INFINITY, Some(f32::INFINITY), false),
+    ] {
+        let (mut s, _) = sim();
+        set(&mut s, "VD0/REAL", Value::Real(x as f64));
+        set(&mut s, "VD4/REAL", Value::Real(-1.0));
+        s.load_program("LD %SM0.0\nSQRT %VD0, %VD4\nST %M0.0\nLD %SM1.1\nST %M0.1", "sqrt.il").unwrap();
+        let r = real(&mut s, "VD4");
+        match want {
+            Some(w) => assert_eq!(r, w, "√{x}"),
+            None => assert_eq!(r, -1.0, "√{x}: OUT unchanged"),
+        }
+        assert_eq!(on(&mut s, "M0.0"), eno, "ENO for √{x}");
+        assert_eq!(on(&mut s, "M0.1"), !eno, "SM1.1 for √{x}");
+    }
+}
+
+#[test]
+fn abs_golden_values() {
+    // IEC 61131-3 ABS; the S7-200 status bits (SM1.1 overflow) as the other arithmetic.
+    for (out, x, want, eno) in [
+        ("VW4", -5i64, 5, true),
+        ("VW4", 32767, 32767, true),
+        ("VW4", -32768, -32768, false),
+        ("VD8", -2_000_000, 2_000_000, true),
+        ("VD8", i32::MIN as i64, i32::MIN as i64, false),
+    ] {
+        let (src, lit) = if out == "VW4" { ("VW0", format!("INT#{x}")) } else { ("VD12", format!("DI#{x}")) };
+        let mut s = once(&format!("MOVE {lit}, %{src}\nABS %{src}, %{out}\nST %M0.0"));
+        let view = if out == "VW4" { "VW4/INT" } else { "VD8/DINT" };
+        assert_eq!(get(&mut s, view).as_i64(), want, "|{x}|");
+        assert_eq!(on(&mut s, "M0.0"), eno, "ENO for |{x}|");
+    }
+    for (x, want, eno) in [(-1.5f32, 1.5f32, true), (f32::NEG_INFINITY, f32::INFINITY, false)] {
+        let (mut s, _) = sim();
+        set(&mut s, "VD0/REAL", Value::Real(x as f64));
+        s.load_program("LD %SM0.0\nABS %VD0/REAL, %VD4/REAL\nST %M0.0", "absr.il").unwrap();
+        assert_eq!(real(&mut s, "VD4"), want);
+        assert_eq!(on(&mut s, "M0.0"), eno);
+    }
+    let (mut s, _) = sim();
+    set(&mut s, "VD0/REAL", Value::Real(f64::NAN));
+    s.load_program("LD %SM0.0\nABS %VD0/REAL, %VD4/REAL\nST %M0.0", "absn.il").unwrap();
+    assert!(real(&mut s, "VD4").is_nan() && !on(&mut s, "M0.0"), "|NaN| is NaN with ENO = 0");
+    let (s, _) = sim();
+    assert!(s.compile("LD %SM0.0\nABS %VB0, %VB1", "b.il").is_err(), "not on bytes");
+}
+
+#[test]
+fn swap_golden_values() {
+    // S7-200 System Manual, Swap Bytes (SWAP): the high and low byte of a word.
+    let mut s = once("MOVE W#16#1234, %VW0\nSWAP %VW0\nMOVE INT#-2, %VW2\nSWAP %VW2\nMOVE 16#0080, %VW4\nSWAP %VW4");
+    assert_eq!(get(&mut s, "VW0/WORD").as_i64(), 0x3412);
+    assert_eq!(get(&mut s, "VW2/WORD").as_i64(), 0xFEFF, "−2 = FFFE → FEFF");
+    assert_eq!(get(&mut s, "VW4/INT").as_i64(), -32768, "0080 → 8000 = −32768");
+    let (s, _) = sim();
+    assert!(s.compile("LD %SM0.0\nSWAP %VD0", "d.il").is_err(), "a word only");
+}
+
+#[test]
+fn for_next_golden_values() {
+    // S7-200 System Manual, For-Next Loop: INDX from INIT to FINAL, the body once per value;
+    // INIT > FINAL runs it not at all; loops nest (up to 8).
+    let mut s = once("FOR %VW0, 1, 10\nLD %SM0.0\nINC %VW2\nNEXT");
+    assert_eq!(get(&mut s, "VW2").as_i64(), 10, "ten passes");
+    assert_eq!(get(&mut s, "VW0").as_i64(), 11, "INDX ends at FINAL + 1");
+    let mut s = once("FOR %VW0, 5, 4\nLD %SM0.0\nINC %VW2\nNEXT");
+    assert_eq!(get(&mut s, "VW2").as_i64(), 0, "INIT > FINAL: none");
+    let mut s = once("FOR %VW0, -3, -1\nLD %SM0.0\nINC %VW2\nNEXT");
+    assert_eq!(get(&mut s, "VW2").as_i64(), 3, "negative bounds");
+    let mut s = once("FOR %VW0, 32765, 32767\nLD %SM0.0\nINC %VW2\nNEXT");
+    assert_eq!(get(&mut s, "VW2").as_i64(), 3, "FINAL = 32767 ends (no wrap to −32768)");
+    assert_eq!(get(&mut s, "VW0").as_i64(), 32767);
+    let mut s = once("FOR %VW0, 1, 3\nFOR %VW4, 1, 4\nLD %SM0.0\nINC %VW2\nNEXT\nNEXT");
+    assert_eq!(get(&mut s, "VW2").as_i64(), 12, "3 × 4 nested");
+    let mut s = once("FOR %VD0, DI#40000, DI#50000\nLD %SM0.0\nINC %VD4\nNEXT");
+    assert_eq!(get(&mut s, "VD4").as_i64(), 10_001, "DINT index past 32767");
+    // Not enabled: skipped.
+    let (mut s, _) = sim();
+    s.load_program("LD %M0.0\nFOR %VW0, 1, 10\nLD %SM0.0\nINC %VW2\nNEXT", "off.il").unwrap();
+    assert_eq!(get(&mut s, "VW2").as_i64(), 0);
+    // Load errors: unpaired, too deep.
+    let (s, _) = sim();
+    assert!(s.compile("LD %SM0.0\nNEXT", "n.il").unwrap_err().message.contains("NEXT without a FOR"));
+    assert!(s.compile("LD %SM0.0\nFOR %VW0, 1, 2", "f.il").unwrap_err().message.contains("FOR without a NEXT"));
+    let deep = "LD %SM0.0\n".to_string() + &"FOR %VW0, 1, 1\n".repeat(9) + &"NEXT\n".repeat(9);
+    assert!(s.compile(&deep, "d.il").unwrap_err().message.contains("deeper than 8"));
+    // An endless loop (FINAL re-read, the body keeps lowering INDX) meets the watchdog.
+    let (mut s, clock) = sim();
+    s.load_program("LD %SM0.0\nFOR %VW0, 1, 2\nLD %SM0.0\nMOVE 0, %VW0\nNEXT", "w.il").unwrap();
+    clock.step(Duration::from_millis(1));
+    s.advance();
+    assert_eq!(s.plc().unwrap().faults.first().map(|f| f.kind), Some(FaultKind::Watchdog));
+}
+
+#[test]
+fn a_duration_between_timer_units_rounds_up_with_a_warning() {
+    // docs/il.md "Timers": a delay is never shorter than asked. T37 is a 100 ms timer.
+    let (mut s, clock) = sim();
+    let msg =
+        s.load_program("LD %I0.0\nTON T37, T#250ms\nST %Q0.0\nLD %I0.0\nTON T38, T#300ms\nST %Q0.1", "r.il").unwrap();
+    assert!(msg.contains("warning: r.il:2:10: T#250ms") && msg.contains("300 ms (3 units)"), "{msg}");
+    assert!(!msg.contains("r.il:5"), "T#300ms is exact: no warning: {msg}");
+    set(&mut s, "I0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(260));
+    assert!(!on(&mut s, "Q0.0"), "not after 250 ms");
+    clock.step(Duration::from_millis(60));
+    assert!(on(&mut s, "Q0.0") && on(&mut s, "Q0.1"), "at 300 ms");
+    // The 100 ms class holds 32767 units: 3276.7 s; longer is refused naming the limit.
+    let e = s.compile("LD %I0.0\nTON T37, T#3277s", "l.il").unwrap_err();
+    assert!(e.message.contains("3276.700 s"), "{}", e.message);
+    assert!(s.compile("LD %I0.0\nTON T37, T#3276700ms", "l.il").unwrap().warnings.is_empty());
+}
+
+#[test]
+fn homing_backward_counts_down_with_the_direction_pin_freed() {
+    // K2 §3.4.3.1: SMD212 decreases moving backward; SM201.3 = 1 only frees Q0.2.
+    let (mut s, clock) = sim();
+    s.load_program(PHOME, "home.il").unwrap();
+    home_setup(&mut s);
+    set(&mut s, "SM201.3", Value::Bool(true));
+    set(&mut s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(1000));
+    let pos = get(&mut s, "SMD212/DINT").as_i64();
+    assert!((-4900..=-4600).contains(&pos), "moving backward toward home: {pos}");
+    assert!(!on(&mut s, "Q0.2"), "the freed pin is not driven");
+    set(&mut s, "M0.1", Value::Bool(true));
+    clock.step(Duration::from_millis(2));
+    assert!(on(&mut s, "M0.4") && !on(&mut s, "M0.5"), "DONE, no ERR");
+}
+
+#[test]
+fn timed_interrupts_during_disi_queue_eight_and_flag_the_rest() {
+    // S7-200 System Manual Tables 9-22/9-23: the timed queue holds 8; SM4.2 marks a loss.
+    let (mut s, clock) = sim();
+    s.load_program(
+        "PROGRAM MAIN\nLD %SM0.1\nMOVE B#10, %SMB34\nATCH TICK, 10\nLD %M0.1\nENI\nEND_PROGRAM\n\
+         INTERRUPT TICK\nLD %SM0.0\nINC %VW20\nLD %SM4.2\nS %M1.0, 1\nEND_INTERRUPT",
+        "tq.il",
+    )
+    .unwrap();
+    clock.step(Duration::from_millis(20));
+    assert_eq!(get(&mut s, "VW20"), Value::Int(0), "not enabled yet: the ticks wait");
+    set(&mut s, "M0.1", Value::Bool(true));
+    clock.step(Duration::from_millis(2));
+    let n = get(&mut s, "VW20").as_i64();
+    assert!((8..=10).contains(&n), "8 waited, then the ticks since ENI: {n}");
+    assert!(on(&mut s, "M1.0"), "SM4.2: some were lost");
 }

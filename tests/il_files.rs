@@ -1,0 +1,73 @@
+//! IL programs as users save them (docs/il.md "Loading"): UTF-8, UTF-16 with a byte-order
+//! mark (little- and big-endian) and Windows-1251 (a Russian Windows' ANSI code page) load the
+//! same through every loader — the K2's `sim program load` and `program=`, the FX's and the
+//! UMPK's `program=` — and broken UTF-16 is refused naming the byte.
+
+mod common;
+use common::*;
+
+/// "Пуск" (start) in Windows-1251, written out byte by byte as a Russian Notepad saves it.
+const START_1251: [u8; 4] = [0xCF, 0xF3, 0xF1, 0xEA];
+
+fn files(name: &str, text: &str) -> Vec<(String, std::path::PathBuf)> {
+    let dir = std::env::temp_dir().join(format!("plcsh-il-files-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let cp: Vec<u8> = text
+        .replace("Пуск", "\u{1}")
+        .bytes()
+        .flat_map(|b| if b == 1 { START_1251.to_vec() } else { vec![b] })
+        .collect();
+    let le: Vec<u8> = [0xFF, 0xFE].into_iter().chain(text.encode_utf16().flat_map(|u| u.to_le_bytes())).collect();
+    let be: Vec<u8> = [0xFE, 0xFF].into_iter().chain(text.encode_utf16().flat_map(|u| u.to_be_bytes())).collect();
+    let mut out = Vec::new();
+    for (enc, bytes) in [("utf8", text.as_bytes().to_vec()), ("cp1251", cp), ("utf16le", le), ("utf16be", be)] {
+        let p = dir.join(format!("{enc}.il"));
+        std::fs::write(&p, bytes).unwrap();
+        out.push((enc.to_string(), p));
+    }
+    out
+}
+
+#[test]
+fn a_k2_program_loads_in_every_encoding_a_windows_editor_saves() {
+    let text = "// Пуск насоса\nLD %SM0.0 // Пуск\nINC %VW0\n";
+    let mut reads = Vec::new();
+    for (enc, p) in files("k2", text) {
+        let script = format!("sim program load {}\nsim scan 3\nread VW0\n", p.display());
+        let o = run(&["--json", "--time", "stepped", "--device", "sim:K205-16DT"], &script);
+        let l = json_lines(&o);
+        assert!(l.iter().all(|x| x["ok"] == true), "{enc}: {}", both(&o));
+        assert!(l[0]["message"].as_str().unwrap_or("").contains("2 instructions loaded"), "{enc}: {}", l[0]);
+        reads.push(l[2].to_string());
+        // The device URL's program= takes the same path.
+        let url = format!("sim:K205-16DT?program={}", p.display());
+        let o = run(&["--json", "--time", "stepped", "--device", &url], "sim program\n");
+        assert!(json_lines(&o)[0]["ok"] == true, "{enc} via program=: {}", both(&o));
+    }
+    assert!(reads.iter().all(|r| *r == reads[0] && r.contains('4')), "the same program ran: {reads:?}");
+}
+
+#[test]
+fn fx_and_umpk_programs_load_through_the_same_decoder() {
+    for (enc, p) in files("fx", "// Пуск\nLD X0\nOUT Y0\n") {
+        let url = format!("fx=sim-fx:FX2N?program={}", p.display());
+        let o = run(&["--json", "--time", "stepped", "--device", &url], "sim program\n");
+        assert!(json_lines(&o)[0]["ok"] == true, "FX {enc}: {}", both(&o));
+    }
+    for (enc, p) in files("umpk", "// Пуск\nLD I0\nST Q0\n") {
+        let url = format!("lab=sim-umpk:UMPK16?program={}", p.display());
+        let o = run(&["--json", "--time", "stepped", "--device", &url], "sim program\n");
+        assert!(json_lines(&o)[0]["ok"] == true, "UMPK {enc}: {}", both(&o));
+    }
+}
+
+#[test]
+fn broken_utf16_is_refused_naming_the_byte() {
+    let dir = std::env::temp_dir().join(format!("plcsh-il-files-{}-broken", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = dir.join("odd.il");
+    std::fs::write(&p, [0xFF, 0xFE, b'L', 0, b'D']).unwrap();
+    let o = run(&["--time", "stepped", "--device", "sim:K205-16DT"], &format!("sim program load {}\n", p.display()));
+    let e = both(&o);
+    assert!(e.contains("odd.il") && e.contains("byte 4"), "{e}");
+}
