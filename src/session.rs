@@ -61,6 +61,10 @@ pub struct Session {
     pub profiles: crate::profile::Profiles,
     /// The session-wide read-only switch (`--read-only`), shared by every device's guard.
     read_only: Arc<AtomicBool>,
+    /// A sandboxed run's rules ([`crate::confine`]): checked here, where devices are opened.
+    pub confine: Option<Arc<crate::confine::Confinement>>,
+    /// A graded run's limits ([`crate::lab::budget`]): waits stop at its simulated-time limit.
+    pub budget: Option<Arc<crate::lab::budget::Budget>>,
 }
 
 /// URL schemes with what they open, for completion and hints. Keep in step with [`open_url`]
@@ -129,6 +133,8 @@ impl Session {
             interrupt: Arc::new(AtomicBool::new(false)),
             profiles: Default::default(),
             read_only: Arc::new(AtomicBool::new(false)),
+            confine: None,
+            budget: None,
         }
     }
 
@@ -142,12 +148,37 @@ impl Session {
     /// real machine must not expire in no time) and the virtual clock then moves by the same
     /// amount, so simulators stay in step. False when interrupted (Ctrl-C).
     pub fn sleep(&self, d: std::time::Duration) -> bool {
+        // A graded run's wait ends at its simulated-time limit (and the run with it).
+        let d = match &self.budget {
+            Some(b) => match b.cap_wait(&self.clock, d) {
+                Some(d) => d,
+                None => {
+                    self.interrupt.store(true, Ordering::Relaxed);
+                    return false;
+                }
+            },
+            None => d,
+        };
         if self.clock.is_stepped() && self.has_wire_device() {
             let ok = Clock::sleep_real(d, &self.interrupt);
             self.clock.step(d);
             return ok;
         }
         self.clock.sleep(d, &self.interrupt)
+    }
+
+    /// Refuses reading `path` when a sandbox's rules forbid it (commands that load files).
+    pub fn check_read(&self, path: &str) -> Result<()> {
+        self.confine.as_ref().map_or(Ok(()), |c| c.check_read(path))
+    }
+
+    /// The file of snapshot `name` (`crate::snapshot::locate`), under a sandbox's rules when
+    /// there are some: a path under its folders, never a named snapshot in the data directory.
+    pub fn snapshot_file(&self, name: &str, save: bool) -> Result<std::path::PathBuf> {
+        match &self.confine {
+            Some(c) => c.snapshot_file(name, save),
+            None => crate::snapshot::locate(name),
+        }
     }
 
     /// Turns the session-wide read-only switch on or off: every device refuses every
@@ -165,6 +196,22 @@ impl Session {
     pub fn open(&mut self, name: &str, url: &str) -> Result<()> {
         if name.is_empty() || !name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-') {
             return Err(Error::usage(format!("`{name}` is not a device name (letters, digits, _ and -)")));
+        }
+        if let Some(c) = &self.confine {
+            // A profile name opens the profile's URL: the rule applies to that.
+            let resolved = if url.contains(':') {
+                url.to_string()
+            } else {
+                self.profiles.get(url).map(|p| p.url.clone()).unwrap_or_else(|| url.to_string())
+            };
+            if resolved.contains(':') {
+                c.check_url(&resolved).map_err(|e| e.device(name))?;
+            } else {
+                return Err(crate::core::Error::unsupported(format!(
+                    "`{url}` is not a device URL: a sandboxed run opens simulated devices by URL only"
+                ))
+                .device(name));
+            }
         }
         if !url.contains(':') {
             return crate::profile::open(self, name, url);

@@ -146,6 +146,18 @@ impl Engine {
 
     /// Runs a script file with `args` (in `arg` and `...`, as the standalone `lua` does).
     pub fn run_file(&self, shell: &mut Shell, path: &Path, args: &[String]) -> Result<(), Failure> {
+        self.run_file_in(shell, path, args, None)
+    }
+
+    /// Runs a script file in environment `env` (a sandbox's, [`sandbox::student_env`]); the
+    /// globals when `None`.
+    pub fn run_file_in(
+        &self,
+        shell: &mut Shell,
+        path: &Path,
+        args: &[String],
+        env: Option<&Table>,
+    ) -> Result<(), Failure> {
         let code = std::fs::read(path).map_err(|e| Failure {
             error: Error::io(format!("cannot read {}: {e}", path.display())),
             location: None,
@@ -161,8 +173,17 @@ impl Engine {
                 for (i, a) in args.iter().enumerate() {
                     arg.raw_set(i + 1, a.as_str())?;
                 }
-                lua.globals().set("arg", arg)?;
-                let f = lua.load(&code[..]).set_name(format!("@{}", path.display())).into_function()?;
+                let chunk = lua.load(&code[..]).set_name(format!("@{}", path.display()));
+                let f = match env {
+                    Some(env) => {
+                        env.raw_set("arg", arg)?;
+                        chunk.set_environment(env.clone()).set_mode(mlua::chunk::ChunkMode::Text).into_function()?
+                    }
+                    None => {
+                        lua.globals().set("arg", arg)?;
+                        chunk.into_function()?
+                    }
+                };
                 let va = args.iter().map(|a| lua.create_string(a).map(Value::String)).collect::<mlua::Result<_>>()?;
                 Ok((f, va))
             };

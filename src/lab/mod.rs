@@ -1,0 +1,2 @@
+//! Teaching labs.
+pub mod budget;
