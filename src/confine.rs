@@ -61,9 +61,7 @@ impl Confinement {
             self.check_read(p)?;
         }
         if let Some(s) = u.param("state") {
-            if s != "none" {
-                self.check_write(s)?;
-            }
+            self.check_write(s)?;
         }
         Ok(())
     }
@@ -128,7 +126,7 @@ mod tests {
             let e = c.check_url(url).unwrap_err();
             assert!(e.to_string().contains("sandboxed run"), "{url}: {e}");
         }
-        for url in ["sim:K205-16DT", "sim-servo:?id=1", "sim-umpk:UMPK16", "sim-fx:FX2N", "sim-umpk:UMPK16?state=none"] {
+        for url in ["sim:K205-16DT", "sim-servo:?id=1", "sim-umpk:UMPK16", "sim-fx:FX2N"] {
             c.check_url(url).unwrap();
         }
         assert!(c.check_url("sim-umpk:UMPK16?state=/etc/flash.json").is_err());
