@@ -4,6 +4,7 @@
 //! One file per subcommand (`models.rs` …), each a thin call into the library.
 
 mod agent;
+mod lab;
 pub mod completions;
 mod record;
 mod run;
@@ -123,6 +124,11 @@ pub enum Sub {
     },
     /// Replay a recording's requests against a simulator and report every reply that differs.
     Replay(record::ReplayArgs),
+    /// Teaching labs: `lab new NAME`, `lab check LAB`, `lab grade LAB SUBMISSIONS…` (sandboxed, in parallel).
+    Lab {
+        #[command(subcommand)]
+        cmd: lab::LabCmd,
+    },
 }
 
 /// Splits `NAME=URL` (or a bare URL, named `plc`; or a bare profile name, named after itself).
@@ -363,6 +369,10 @@ fn run_cli() -> i32 {
         // Before any device is opened: replay builds its own simulators (and refuses --device).
         return record::replay(args, cli.bench.as_deref(), !cli.devices.is_empty(), style, &mut out);
     }
+    if let Some(Sub::Lab { cmd }) = &cli.sub {
+        // A lab builds its own simulators from its lab.toml (never the user's state file).
+        return lab::run(cmd, style, &mut out);
+    }
     let session = match build_session(&cli) {
         Ok(s) => s,
         Err(e) => {
@@ -415,6 +425,7 @@ fn run(cli: &Cli, mut shell: Shell, style: Style, mut out: std::io::StdoutLock<'
             Sub::Run(args) => run::main(&mut shell, args, style),
             Sub::Record { cmd } => record::show(cmd, style, &mut out),
             Sub::Replay(args) => record::replay(args, cli.bench.as_deref(), false, style, &mut out),
+            Sub::Lab { cmd } => lab::run(cmd, style, &mut out),
         };
     }
     if let Some(cmds) = &cli.command {

@@ -74,6 +74,31 @@ impl Engine {
         &self.lua
     }
 
+    /// Holds the run to a graded run's limits ([`crate::lab::budget`]): Lua memory, and Lua
+    /// instructions and simulated time, checked by the instruction hook. A limit passed
+    /// raises the interrupt flag too, so no `pcall` in the script can swallow it.
+    pub fn limit(
+        &self,
+        budget: Arc<crate::lab::budget::Budget>,
+        clock: crate::core::Clock,
+        interrupt: Arc<AtomicBool>,
+    ) -> mlua::Result<()> {
+        if let Some(m) = budget.memory {
+            self.lua.set_memory_limit(m)?;
+        }
+        self.lua.set_hook(HookTriggers::new().every_nth_instruction(HOOK_EVERY), move |_, _| {
+            if let Some(verdict) = budget.tick(u64::from(HOOK_EVERY), &clock) {
+                interrupt.store(true, Ordering::Relaxed);
+                return Err(error::raise(Error::new(ErrorKind::Interrupted, verdict)));
+            }
+            if interrupt.load(Ordering::Relaxed) {
+                Err(error::raise(api::interrupted_error()))
+            } else {
+                Ok(VmState::Continue)
+            }
+        })
+    }
+
     /// The status a script asked for with `os.exit`, once it has called it.
     pub fn exit_code(&self) -> Option<i32> {
         self.lua.named_registry_value::<Option<i32>>(EXIT_KEY).ok().flatten()
