@@ -101,9 +101,9 @@ lab.criterion("start latches the motor", 2, function()
 end)
 
 lab.criterion("ready lamp after 2 s", 2, function()
-  plcsh.sleep(1800) -- 1.85 s after the press
+  plcsh.sleep(1800) -- 1.9 s after the motor started
   lab.expect(plc["Q0.1"], false, "Q0.1 before 2 s")
-  plcsh.sleep(300) -- 2.15 s
+  plcsh.sleep(300) -- 2.2 s
   lab.expect(plc["Q0.1"], true, "Q0.1 after 2 s")
 end)
 

@@ -239,7 +239,7 @@ fn run(lab: &Lab, file: &str, kind: &str) -> crate::core::Result<Report> {
     } else if outcome.as_ref().is_err_and(|f| f.error.message.contains("not enough memory")) {
         budget.memory_verdict().unwrap_or_default()
     } else if let Some(e) = student_error {
-        format!("runtime error: {e}")
+        format!("runtime error: {}", e.lines().next().unwrap_or_default())
     } else if let Err(f) = &outcome {
         format!("grader error: {}", f.headline())
     } else if criteria.iter().all(|c| c.passed) {
@@ -247,6 +247,18 @@ fn run(lab: &Lab, file: &str, kind: &str) -> crate::core::Result<Report> {
     } else {
         "failed".into()
     };
+    // The write directory's name changes from run to run: reports name it by its role.
+    let wd = write.0.canonicalize().unwrap_or_else(|_| write.0.clone()).display().to_string();
+    let hide = |s: &mut Option<String>| {
+        if let Some(t) = s {
+            *t = t.replace(&wd, "the write directory");
+        }
+    };
+    for c in &mut criteria {
+        hide(&mut c.error);
+        hide(&mut c.got);
+    }
+    let verdict = verdict.replace(&wd, "the write directory");
     Ok(Report {
         student: student_name(Path::new(file)),
         file: file.to_string(),
@@ -328,7 +340,9 @@ fn install_lab(
             match exec.call::<MultiValue>(format!("sim program load {path}")) {
                 Ok(_) => Ok((true, None)),
                 Err(e) => {
-                    let msg = student_message(&e, &path);
+                    // The program's own error names its file:line (not the grader's line).
+                    let f = crate::script::error::failure(&e);
+                    let msg = f.error.message.split('\n').next().unwrap_or_default().to_string();
                     let lab: Table = lua.globals().get("lab")?;
                     lab.raw_set("_student_error", msg.clone())?;
                     Ok((false, Some(msg)))

@@ -2,27 +2,33 @@
 -- interpreter's globals, a submission in an environment of its own that has no `lab`: what a
 -- submission changes in its `plcsh`, `string` or globals the grader never sees.
 local lab, points = ...
-local plcsh, pcall, error, type, tostring, select = plcsh, pcall, error, type, tostring, select
+-- Everything the grader's API uses is taken now, before any submission runs.
+local pcall, error, type, tostring, setmetatable, getmetatable = pcall, error, type, tostring, setmetatable, getmetatable
+local format, gsub, abs = string.format, string.gsub, math.abs
+local encode, now = plcsh.json.encode, plcsh.now
 local results = {}
 lab._results = nil
 local run_lua, load_il = lab._run_lua, lab._load_il
 lab._run_lua, lab._load_il = nil, nil
 
+-- A value as the report shows it (never an address: reports are compared byte for byte).
 local function show(v)
-  if type(v) == "string" then return string.format("%q", v) end
-  if type(v) == "table" then
-    local ok, j = pcall(plcsh.json, v)
-    if ok then return j end
+  local t = type(v)
+  if t == "string" then return format("%q", v) end
+  if t == "table" then
+    local ok, j = pcall(encode, v)
+    return ok and j or "(a table)"
   end
-  return tostring(v)
+  if t == "number" or t == "boolean" or t == "nil" then return tostring(v) end
+  return "(a " .. t .. ")"
 end
 
-local function seconds() return plcsh.now() / 1000 end
+local function seconds() return now() / 1000 end
 
 local Fail = {}
 Fail.__index = Fail
 Fail.__tostring = function(f)
-  return string.format("%sexpected %s, got %s", f.what and (f.what .. ": ") or "", f.expected, f.got)
+  return format("%sexpected %s, got %s", f.what and (f.what .. ": ") or "", f.expected, f.got)
 end
 
 -- lab.expect(got, expected [, what]): ends the criterion as failed unless got == expected
@@ -38,7 +44,7 @@ end
 
 -- lab.expect_near(got, expected, tolerance [, what])
 function lab.expect_near(got, expected, tol, what)
-  if type(got) ~= "number" or math.abs(got - expected) > tol then
+  if type(got) ~= "number" or abs(got - expected) > tol then
     error(setmetatable({ expected = show(expected) .. " ± " .. show(tol), got = show(got), what = what, at = seconds() }, Fail), 0)
   end
   return got
@@ -61,7 +67,7 @@ function lab.criterion(name, pts, fn)
   elseif getmetatable(a) == Fail then
     r.got, r.expected, r.what, r.at = a.got, a.expected, a.what, a.at
   else
-    r.error, r.at = tostring(a):gsub("\nstack traceback:.*", ""), seconds()
+    r.error, r.at = gsub(tostring(a), "\nstack traceback:.*", ""), seconds()
   end
   results[#results + 1] = r
   return r.passed

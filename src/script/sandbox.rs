@@ -117,6 +117,9 @@ pub fn apply(lua: &Lua, rules: Arc<Confinement>) -> mlua::Result<()> {
             })?,
         )?;
     }
+    // Where the run may write: `plcsh.write_dir` (nil without one).
+    let p: Table = g.get("plcsh")?;
+    p.set("write_dir", rules.write.as_ref().map(|d| d.display().to_string()))?;
     install_loaders(lua, &g, rules)?;
     Ok(())
 }
@@ -180,6 +183,21 @@ fn install_loaders(lua: &Lua, env: &Table, rules: Arc<Confinement>) -> mlua::Res
     Ok(())
 }
 
+/// A copy of `t` and the tables in it (a library's sub-tables: `plcsh.json`), so nothing a
+/// submission changes reaches the grader's.
+fn deep_copy(lua: &Lua, t: &Table, depth: usize) -> mlua::Result<Table> {
+    let copy = lua.create_table()?;
+    for pair in t.pairs::<Value, Value>() {
+        let (k, v) = pair?;
+        let v = match v {
+            Value::Table(inner) if depth < 3 => Value::Table(deep_copy(lua, &inner, depth + 1)?),
+            v => v,
+        };
+        copy.raw_set(k, v)?;
+    }
+    Ok(copy)
+}
+
 /// A fresh environment for a submission: its own copies of the allowed libraries and of
 /// `plcsh`, the plain functions, the device globals, and loaders that give chunks this
 /// environment. Call after [`apply`].
@@ -191,16 +209,15 @@ pub fn student_env(lua: &Lua, rules: Arc<Confinement>) -> mlua::Result<Table> {
     }
     for lib in LIBRARIES {
         if let Value::Table(t) = g.raw_get::<Value>(*lib)? {
-            let copy = lua.create_table()?;
-            for pair in t.pairs::<Value, Value>() {
-                let (k, v) = pair?;
-                copy.raw_set(k, v)?;
-            }
-            env.raw_set(*lib, copy)?;
+            env.raw_set(*lib, deep_copy(lua, &t, 0)?)?;
         }
     }
-    // getmetatable: never the string metatable (shared with the grader).
-    env.raw_set("getmetatable", g.raw_get::<Value>("getmetatable")?)?;
+    // getmetatable: a table's only — the string and device metatables are shared with the grader.
+    let gm: mlua::Function = lua
+        .load("local gm, type = getmetatable, type\nreturn function(o) if type(o) == 'table' then return gm(o) end end")
+        .set_name("=sandbox")
+        .eval()?;
+    env.raw_set("getmetatable", gm)?;
     // Device handles (`plc`, `servo`), as the globals have them.
     for pair in g.pairs::<Value, Value>() {
         let (k, v) = pair?;
