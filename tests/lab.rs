@@ -263,7 +263,8 @@ fn a_umpk_il_submission_is_graded_and_its_snapshot_kept() {
         &format!("use lab; sim program load scripts/umpk_lab1.il; sim input I0=1; sim step 1s; sim snapshot save {snap}; sim step 1.5s; get Q1; sim snapshot restore {snap}; get Q1; sim step 1.5s; get Q1"),
     ]);
     assert!(o.status.success(), "{}", both(&o));
-    let q1: Vec<&str> = stdout(&o).lines().filter(|l| l.starts_with("Q1")).map(|l| l.split_whitespace().last().unwrap()).collect();
+    let text = stdout(&o);
+    let q1: Vec<&str> = text.lines().filter(|l| l.starts_with("Q1")).map(|l| l.split_whitespace().last().unwrap()).collect();
     assert_eq!(q1, ["1", "0", "1"], "{}", stdout(&o));
     // A built-in program is refused by name, never left out.
     let o = in_root(&["--device", "lab=sim-umpk:UMPK16", "-c", &format!("use lab; umpk sim reference lab1; sim snapshot save {snap}")]);
