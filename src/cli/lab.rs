@@ -92,6 +92,14 @@ pub fn run(cmd: &LabCmd, style: Style, out: &mut dyn Write) -> i32 {
                 let _ = writeln!(out, "{head}");
             }
             let _ = output::write_outcome(out, style, &o);
+            if !style.json {
+                // Why each criterion failed: expected, got, and when.
+                for r in &reports {
+                    for c in r.criteria.iter().filter(|c| !c.passed && !c.skipped) {
+                        let _ = writeln!(out, "{}: {}: {}", r.student, c.name, c.why());
+                    }
+                }
+            }
             i32::from(reports.iter().any(|r| r.verdict.starts_with("grader error")))
         }
         LabCmd::Worker { lab, submission } => crate::lab::worker(lab, submission),
