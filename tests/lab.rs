@@ -58,7 +58,11 @@ const EXPECTED: &[(&str, f64, &str)] = &[
     // Broken programs: the student's file and line.
     ("il_syntax_error", 0.0, "runtime error: tests/lab/submissions/il_syntax_error.il:3:1: unknown instruction FROB"),
     ("lua_syntax_error", 0.0, "runtime error: tests/lab/submissions/lua_syntax_error.lua:1:"),
-    ("lua_runtime_error", 0.0, "runtime error: tests/lab/submissions/lua_runtime_error.lua:3: attempt to index a nil value (local 'settings')"),
+    (
+        "lua_runtime_error",
+        0.0,
+        "runtime error: tests/lab/submissions/lua_runtime_error.lua:3: attempt to index a nil value (local 'settings')",
+    ),
     // Limits, named.
     ("infinite_loop", 0.0, "exceeded 20 M Lua instructions"),
     ("pcall_loop", 0.0, "exceeded 20 M Lua instructions"),
@@ -108,10 +112,16 @@ fn the_test_lab_grades_every_submission_as_expected_twice_alike() {
         by_student[student]["criteria"].as_array().unwrap().iter().find(|c| c["name"] == criterion).unwrap().clone()
     };
     let c = why("wrong_timer", "ready lamp after 2 s");
-    assert_eq!((c["what"].as_str(), c["expected"].as_str(), c["got"].as_str()), (Some("Q0.1 after 2 s"), Some("true"), Some("false")));
+    assert_eq!(
+        (c["what"].as_str(), c["expected"].as_str(), c["got"].as_str()),
+        (Some("Q0.1 after 2 s"), Some("true"), Some("false"))
+    );
     assert_eq!(c["at_s"].as_f64(), Some(2.2));
     let c = why("silent_wrong", "ready lamp after 2 s");
-    assert_eq!((c["what"].as_str(), c["got"].as_str(), c["at_s"].as_f64()), (Some("Q0.1 before 2 s"), Some("true"), Some(1.9)));
+    assert_eq!(
+        (c["what"].as_str(), c["got"].as_str(), c["at_s"].as_f64()),
+        (Some("Q0.1 before 2 s"), Some("true"), Some(1.9))
+    );
     let c = why("no_interlock", "no start while the drive is disabled");
     assert_eq!(c["what"].as_str(), Some("Q0.0 after start with the drive disabled"));
     // Limits in simulated time: the budget, whatever the machine's load.
@@ -149,7 +159,10 @@ fn lab_new_writes_a_lab_that_passes_check_and_check_catches_a_wrong_reference() 
     assert!(o.status.success(), "{}", both(&o));
     assert!(stdout(&o).contains("the reference solution gets 10/10 points"), "{}", stdout(&o));
     // The starter is not a solution: grading it gives some criteria, not all.
-    let o = plcsh().args(["--json", "lab", "grade", lab.to_str().unwrap(), lab.join("starter.il").to_str().unwrap()]).output().unwrap();
+    let o = plcsh()
+        .args(["--json", "lab", "grade", lab.to_str().unwrap(), lab.join("starter.il").to_str().unwrap()])
+        .output()
+        .unwrap();
     let r = &json_lines(&o)[0];
     assert_eq!(r["verdict"], "failed", "{r}");
     // `lab new` refuses an existing folder.
@@ -172,7 +185,11 @@ fn a_bad_lab_toml_is_refused_naming_the_key() {
     let d = temp("bad");
     std::fs::write(d.join("g.lua"), "").unwrap();
     std::fs::write(d.join("r.il"), "").unwrap();
-    std::fs::write(d.join("lab.toml"), "title = \"x\"\nreference = \"r.il\"\ngrader = \"g.lua\"\n[devices]\nplc = \"tcp://192.0.2.1:502\"\n").unwrap();
+    std::fs::write(
+        d.join("lab.toml"),
+        "title = \"x\"\nreference = \"r.il\"\ngrader = \"g.lua\"\n[devices]\nplc = \"tcp://192.0.2.1:502\"\n",
+    )
+    .unwrap();
     let o = plcsh().args(["lab", "check", d.to_str().unwrap()]).output().unwrap();
     assert_eq!(o.status.code(), Some(2), "{}", both(&o));
     assert!(both(&o).contains("[devices] plc") && both(&o).contains("real device"), "{}", both(&o));
@@ -189,21 +206,97 @@ struct Rule {
 
 /// The rules of docs/teaching.md's table, row by row.
 const RULES: &[Rule] = &[
-    Rule { name: "processes", denied: "os.execute('true')", refusal: "os.execute is not available in a sandboxed run", allowed: "assert(os.time() > 0)" },
-    Rule { name: "pipes", denied: "io.popen('ls')", refusal: "io.popen is not available in a sandboxed run", allowed: "io.write('')" },
-    Rule { name: "deleting files", denied: "os.remove('x')", refusal: "os.remove is not available", allowed: "assert(string.rep('a', 3) == 'aaa')" },
-    Rule { name: "C modules", denied: "require('lfs')", refusal: "module 'lfs' not found", allowed: "local c = require('commission'); assert(c)" },
-    Rule { name: "lab modules", denied: "require('nowhere')", refusal: "module 'nowhere' not found", allowed: "assert(require('helper').answer == 42)" },
-    Rule { name: "debug library", denied: "debug.getinfo(1)", refusal: "global 'debug'", allowed: "assert(type(utf8.char(65)) == 'string')" },
-    Rule { name: "reading outside", denied: "io.open('/etc/hostname')", refusal: "outside the sandbox's folders", allowed: "assert(io.open(arg[0]):read('l'))" },
-    Rule { name: "writing outside", denied: "io.open('elsewhere.txt', 'w')", refusal: "outside", allowed: "assert(io.open(plcsh.write_dir .. '/out.txt', 'w')):write('x')" },
-    Rule { name: "real devices", denied: "plcsh.connect('tcp://127.0.0.1:PORT', 'real')", refusal: "is a real device: a sandboxed run opens simulated devices only", allowed: "local d = plcsh.connect('sim:K205-16DT', 'k2'); d.VW0 = 4242; assert(d.VW0 == 4242)" },
-    Rule { name: "real devices by command", denied: "plcsh.exec('connect r umpk:/dev/ttyS0')", refusal: "is a real device", allowed: "plcsh.exec('connect u sim-umpk:UMPK16')" },
-    Rule { name: "named snapshots", denied: "plcsh.snapshot_save('lab1')", refusal: "named snapshot `lab1`", allowed: "plcsh.snapshot_save(plcsh.write_dir .. '/s.json'); plcsh.snapshot_restore(plcsh.write_dir .. '/s.json')" },
-    Rule { name: "snapshot paths", denied: "plcsh.exec('sim snapshot save ./grade.json')", refusal: "outside", allowed: "plcsh.exec('sim snapshot save ' .. plcsh.write_dir .. '/t.json')" },
-    Rule { name: "command files", denied: "plcsh.exec('sim program load /etc/hostname')", refusal: "outside the sandbox's folders", allowed: "plcsh.exec('sim program load ' .. plcsh.write_dir .. '/../prog.il')" },
-    Rule { name: "load", denied: "load(string.dump(function() end))()", refusal: "attempt to", allowed: "assert(load('return plcsh ~= nil and string.format(\"%d\", 1)')() == '1')" },
-    Rule { name: "loadfile", denied: "loadfile('/etc/hostname')", refusal: "outside the sandbox's folders", allowed: "assert(loadfile(arg[0]))" },
+    Rule {
+        name: "processes",
+        denied: "os.execute('true')",
+        refusal: "os.execute is not available in a sandboxed run",
+        allowed: "assert(os.time() > 0)",
+    },
+    Rule {
+        name: "pipes",
+        denied: "io.popen('ls')",
+        refusal: "io.popen is not available in a sandboxed run",
+        allowed: "io.write('')",
+    },
+    Rule {
+        name: "deleting files",
+        denied: "os.remove('x')",
+        refusal: "os.remove is not available",
+        allowed: "assert(string.rep('a', 3) == 'aaa')",
+    },
+    Rule {
+        name: "C modules",
+        denied: "require('lfs')",
+        refusal: "module 'lfs' not found",
+        allowed: "local c = require('commission'); assert(c)",
+    },
+    Rule {
+        name: "lab modules",
+        denied: "require('nowhere')",
+        refusal: "module 'nowhere' not found",
+        allowed: "assert(require('helper').answer == 42)",
+    },
+    Rule {
+        name: "debug library",
+        denied: "debug.getinfo(1)",
+        refusal: "global 'debug'",
+        allowed: "assert(type(utf8.char(65)) == 'string')",
+    },
+    Rule {
+        name: "reading outside",
+        denied: "io.open('/etc/hostname')",
+        refusal: "outside the sandbox's folders",
+        allowed: "assert(io.open(arg[0]):read('l'))",
+    },
+    Rule {
+        name: "writing outside",
+        denied: "io.open('elsewhere.txt', 'w')",
+        refusal: "outside",
+        allowed: "assert(io.open(plcsh.write_dir .. '/out.txt', 'w')):write('x')",
+    },
+    Rule {
+        name: "real devices",
+        denied: "plcsh.connect('tcp://127.0.0.1:PORT', 'real')",
+        refusal: "is a real device: a sandboxed run opens simulated devices only",
+        allowed: "local d = plcsh.connect('sim:K205-16DT', 'k2'); d.VW0 = 4242; assert(d.VW0 == 4242)",
+    },
+    Rule {
+        name: "real devices by command",
+        denied: "plcsh.exec('connect r umpk:/dev/ttyS0')",
+        refusal: "is a real device",
+        allowed: "plcsh.exec('connect u sim-umpk:UMPK16')",
+    },
+    Rule {
+        name: "named snapshots",
+        denied: "plcsh.snapshot_save('lab1')",
+        refusal: "named snapshot `lab1`",
+        allowed:
+            "plcsh.snapshot_save(plcsh.write_dir .. '/s.json'); plcsh.snapshot_restore(plcsh.write_dir .. '/s.json')",
+    },
+    Rule {
+        name: "snapshot paths",
+        denied: "plcsh.exec('sim snapshot save ./grade.json')",
+        refusal: "outside",
+        allowed: "plcsh.exec('sim snapshot save ' .. plcsh.write_dir .. '/t.json')",
+    },
+    Rule {
+        name: "command files",
+        denied: "plcsh.exec('sim program load /etc/hostname')",
+        refusal: "outside the sandbox's folders",
+        allowed: "plcsh.exec('sim program load ' .. plcsh.write_dir .. '/../prog.il')",
+    },
+    Rule {
+        name: "load",
+        denied: "load(string.dump(function() end))()",
+        refusal: "attempt to",
+        allowed: "assert(load('return plcsh ~= nil and string.format(\"%d\", 1)')() == '1')",
+    },
+    Rule {
+        name: "loadfile",
+        denied: "loadfile('/etc/hostname')",
+        refusal: "outside the sandbox's folders",
+        allowed: "assert(loadfile(arg[0]))",
+    },
 ];
 
 #[test]
@@ -245,7 +338,8 @@ fn every_sandbox_rule_refuses_one_attempt_and_allows_another() {
 
 #[test]
 fn a_umpk_il_submission_is_graded_and_its_snapshot_kept() {
-    let o = in_root(&["--json", "lab", "grade", "tests/lab/umpk", "scripts/umpk_lab1.il", "tests/lab/umpk/wrong_delay.il"]);
+    let o =
+        in_root(&["--json", "lab", "grade", "tests/lab/umpk", "scripts/umpk_lab1.il", "tests/lab/umpk/wrong_delay.il"]);
     assert!(o.status.success(), "{}", both(&o));
     let lines = json_lines(&o);
     assert_eq!(lines[0]["verdict"], "passed", "{}", lines[0]);
@@ -264,11 +358,21 @@ fn a_umpk_il_submission_is_graded_and_its_snapshot_kept() {
     ]);
     assert!(o.status.success(), "{}", both(&o));
     let text = stdout(&o);
-    let q1: Vec<&str> = text.lines().filter(|l| l.starts_with("Q1")).map(|l| l.split_whitespace().last().unwrap()).collect();
+    let q1: Vec<&str> =
+        text.lines().filter(|l| l.starts_with("Q1")).map(|l| l.split_whitespace().last().unwrap()).collect();
     assert_eq!(q1, ["1", "0", "1"], "{}", stdout(&o));
     // A built-in program is refused by name, never left out.
-    let o = in_root(&["--device", "lab=sim-umpk:UMPK16", "-c", &format!("use lab; umpk sim reference lab1; sim snapshot save {snap}")]);
+    let o = in_root(&[
+        "--device",
+        "lab=sim-umpk:UMPK16",
+        "-c",
+        &format!("use lab; umpk sim reference lab1; sim snapshot save {snap}"),
+    ]);
     assert!(!o.status.success());
-    assert!(both(&o).contains("cannot snapshot `lab`: its program `lab1 (reference)` is built into plcsh"), "{}", both(&o));
+    assert!(
+        both(&o).contains("cannot snapshot `lab`: its program `lab1 (reference)` is built into plcsh"),
+        "{}",
+        both(&o)
+    );
     std::fs::remove_dir_all(&d).unwrap();
 }

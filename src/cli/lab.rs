@@ -79,7 +79,11 @@ pub fn run(cmd: &LabCmd, style: Style, out: &mut dyn Write) -> i32 {
             };
             if let Some(path) = junit {
                 if let Err(e) = std::fs::write(path, crate::lab::runner::junit(&l, &reports)) {
-                    return fail(out, "lab grade", &crate::core::Error::io(format!("cannot write {}", path.display())).cause(e));
+                    return fail(
+                        out,
+                        "lab grade",
+                        &crate::core::Error::io(format!("cannot write {}", path.display())).cause(e),
+                    );
                 }
             }
             if style.json {

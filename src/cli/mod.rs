@@ -4,8 +4,8 @@
 //! One file per subcommand (`models.rs` …), each a thin call into the library.
 
 mod agent;
-mod lab;
 pub mod completions;
+mod lab;
 mod record;
 mod run;
 mod serve;

@@ -49,9 +49,12 @@ pub fn main(shell: &mut Shell, args: &RunArgs, style: Style) -> i32 {
         };
         let rules = std::sync::Arc::new(crate::confine::Confinement::new(vec![dir], args.write_dir.clone()));
         let setup = || -> mlua::Result<mlua::Table> {
-            crate::script::sandbox::apply(engine.lua(), rules.clone()).map_err(|e| mlua::Error::runtime(format!("apply: {e}")))?;
-            crate::script::paths::confine(engine.lua(), None).map_err(|e| mlua::Error::runtime(format!("paths: {e}")))?;
-            crate::script::sandbox::student_env(engine.lua(), rules.clone()).map_err(|e| mlua::Error::runtime(format!("env: {e}")))
+            crate::script::sandbox::apply(engine.lua(), rules.clone())
+                .map_err(|e| mlua::Error::runtime(format!("apply: {e}")))?;
+            crate::script::paths::confine(engine.lua(), None)
+                .map_err(|e| mlua::Error::runtime(format!("paths: {e}")))?;
+            crate::script::sandbox::student_env(engine.lua(), rules.clone())
+                .map_err(|e| mlua::Error::runtime(format!("env: {e}")))
         };
         match setup() {
             Ok(e) => env = Some(e),

@@ -35,7 +35,7 @@ pub fn describe_time(d: Duration) -> String {
 
 /// `50_000_000` → `50 M`.
 pub fn describe_count(n: u64) -> String {
-    if n >= 1_000_000 && n % 100_000 == 0 {
+    if n >= 1_000_000 && n.is_multiple_of(100_000) {
         format!("{} M", trim(n as f64 / 1e6))
     } else {
         n.to_string()

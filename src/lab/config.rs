@@ -81,8 +81,9 @@ pub struct Lab {
 
 fn duration(key: &str, text: &str) -> Result<Duration> {
     let t = text.trim().replace("min", "m");
-    let us = crate::core::literal::parse_duration_us(&t)
-        .map_err(|e| Error::usage(format!("{FILE}: [budget] {key} = \"{text}\": {e}")).hint("e.g. \"10min\", \"90s\""))?;
+    let us = crate::core::literal::parse_duration_us(&t).map_err(|e| {
+        Error::usage(format!("{FILE}: [budget] {key} = \"{text}\": {e}")).hint("e.g. \"10min\", \"90s\"")
+    })?;
     if us <= 0 {
         return Err(Error::usage(format!("{FILE}: [budget] {key} must be more than zero")));
     }
@@ -118,8 +119,8 @@ impl Lab {
 
     /// Parses the text of a `lab.toml` whose folder is `dir`.
     pub fn parse(text: &str, dir: &Path) -> Result<Lab> {
-        let raw: Raw = toml::from_str(text)
-            .map_err(|e| Error::usage(format!("{}: {}", dir.join(FILE).display(), e.message())))?;
+        let raw: Raw =
+            toml::from_str(text).map_err(|e| Error::usage(format!("{}: {}", dir.join(FILE).display(), e.message())))?;
         let file = |key: &str, name: &str| -> Result<PathBuf> {
             let p = dir.join(name);
             let real = p.canonicalize().map_err(|e| {
@@ -131,9 +132,11 @@ impl Lab {
             }
             Ok(real)
         };
-        if raw.bench.is_some() == !raw.devices.is_empty() {
-            return Err(Error::usage(format!("{FILE}: give the devices as bench = \"FILE\" or as a [devices] table (one of the two)"))
-                .hint("e.g. [devices] plc = \"sim:K205-16DT\""));
+        if raw.bench.is_some() != raw.devices.is_empty() {
+            return Err(Error::usage(format!(
+                "{FILE}: give the devices as bench = \"FILE\" or as a [devices] table (one of the two)"
+            ))
+            .hint("e.g. [devices] plc = \"sim:K205-16DT\""));
         }
         let devices: Vec<(String, String)> = raw.devices.into_iter().collect();
         let rules = crate::confine::Confinement::new(vec![dir.to_path_buf()], None);
@@ -180,8 +183,11 @@ mod tests {
     fn lab_dir(files: &[(&str, &str)]) -> PathBuf {
         use std::sync::atomic::{AtomicU32, Ordering};
         static N: AtomicU32 = AtomicU32::new(0);
-        let d = std::env::temp_dir()
-            .join(format!("plcsh-labcfg-{}-{}", std::process::id(), N.fetch_add(1, Ordering::Relaxed)));
+        let d = std::env::temp_dir().join(format!(
+            "plcsh-labcfg-{}-{}",
+            std::process::id(),
+            N.fetch_add(1, Ordering::Relaxed)
+        ));
         std::fs::create_dir_all(&d).unwrap();
         for (n, t) in files {
             std::fs::write(d.join(n), t).unwrap();
@@ -210,7 +216,7 @@ mod tests {
         let base = "title = \"t\"\nreference = \"ref.il\"\ngrader = \"g.lua\"\n";
         let cases = [
             (format!("{base}[devices]\nplc = \"tcp://10.0.0.1:502\"\n"), "real device"),
-            (format!("{base}"), "one of the two"),
+            (base.to_string(), "one of the two"),
             (format!("{base}snapshot = \"../x.json\"\n[devices]\nplc = \"sim:K205-16DT\"\n"), "snapshot"),
             (format!("{base}[devices]\nplc = \"sim:K205-16DT\"\n[budget]\nsim_time = \"soon\"\n"), "sim_time"),
             (format!("{base}[devices]\nplc = \"sim:K205-16DT\"\n[budget]\nmemory = \"lots\"\n"), "memory"),

@@ -141,8 +141,11 @@ impl WriteDir {
     fn new() -> crate::core::Result<WriteDir> {
         use std::sync::atomic::AtomicU64;
         static N: AtomicU64 = AtomicU64::new(0);
-        let d = std::env::temp_dir()
-            .join(format!("plcsh-lab-{}-{}", std::process::id(), N.fetch_add(1, Ordering::Relaxed)));
+        let d = std::env::temp_dir().join(format!(
+            "plcsh-lab-{}-{}",
+            std::process::id(),
+            N.fetch_add(1, Ordering::Relaxed)
+        ));
         std::fs::create_dir_all(&d).map_err(|e| Error::io(format!("cannot create {}", d.display())).cause(e))?;
         Ok(WriteDir(d))
     }
@@ -228,12 +231,8 @@ fn run(lab: &Lab, file: &str, kind: &str) -> crate::core::Result<Report> {
             criteria.push(skipped(name, *p));
         }
     }
-    let student_error: Option<String> = lua
-        .globals()
-        .get::<Table>("lab")
-        .and_then(|l| l.get::<Option<String>>("_student_error"))
-        .ok()
-        .flatten();
+    let student_error: Option<String> =
+        lua.globals().get::<Table>("lab").and_then(|l| l.get::<Option<String>>("_student_error")).ok().flatten();
     let verdict = if let Some(v) = budget.exceeded() {
         v
     } else if outcome.as_ref().is_err_and(|f| f.error.message.contains("not enough memory")) {
@@ -277,14 +276,7 @@ fn student_message(e: &mlua::Error, file: &str) -> String {
 }
 
 /// The grader's `lab` table, in the globals (a submission's environment has none).
-fn install_lab(
-    lua: &Lua,
-    lab: &Lab,
-    file: &str,
-    kind: &str,
-    env: Table,
-    budget: Arc<Budget>,
-) -> mlua::Result<()> {
+fn install_lab(lua: &Lua, lab: &Lab, file: &str, kind: &str, env: Table, budget: Arc<Budget>) -> mlua::Result<()> {
     let t = lua.create_table()?;
     t.set("title", lab.title.as_str())?;
     t.set("submission", file)?;

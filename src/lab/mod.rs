@@ -72,7 +72,8 @@ pub fn check(path: &Path) -> Result<(Outcome, String, bool)> {
 /// One submission's JSON object (the JSON contract: `ok`, `cmd`, then the report).
 pub fn report_json(r: &Report) -> serde_json::Value {
     let mut v = serde_json::json!({"ok": true, "cmd": "lab grade"});
-    if let (Some(m), serde_json::Value::Object(rep)) = (v.as_object_mut(), serde_json::to_value(r).unwrap_or_default()) {
+    if let (Some(m), serde_json::Value::Object(rep)) = (v.as_object_mut(), serde_json::to_value(r).unwrap_or_default())
+    {
         m.extend(rep);
     }
     v

@@ -21,7 +21,8 @@ pub fn submissions(args: &[PathBuf]) -> Result<Vec<String>> {
     for a in args {
         if a.is_dir() {
             let mut found: Vec<PathBuf> = Vec::new();
-            let entries = std::fs::read_dir(a).map_err(|e| Error::io(format!("cannot list {}", a.display())).cause(e))?;
+            let entries =
+                std::fs::read_dir(a).map_err(|e| Error::io(format!("cannot list {}", a.display())).cause(e))?;
             for e in entries.flatten() {
                 let p = e.path();
                 if p.is_dir() {
@@ -132,10 +133,7 @@ pub fn junit(lab: &Lab, reports: &[Report]) -> String {
     let mut out = String::from("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
     let failures: usize = reports.iter().map(|r| r.failed().len()).sum();
     let tests: usize = reports.iter().map(|r| r.criteria.len()).sum();
-    out.push_str(&format!(
-        "<testsuites name=\"{}\" tests=\"{tests}\" failures=\"{failures}\">\n",
-        xml(&lab.title)
-    ));
+    out.push_str(&format!("<testsuites name=\"{}\" tests=\"{tests}\" failures=\"{failures}\">\n", xml(&lab.title)));
     for r in reports {
         out.push_str(&format!(
             "  <testsuite name=\"{}\" tests=\"{}\" failures=\"{}\" time=\"{}\">\n",

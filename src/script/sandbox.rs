@@ -35,8 +35,25 @@ static REFUSED: &[(&str, &str, &str)] = &[
 
 /// Globals a submission's environment gets as they are (functions without side effects).
 const PLAIN: &[&str] = &[
-    "assert", "error", "ipairs", "next", "pairs", "pcall", "print", "rawequal", "rawget", "rawlen", "rawset",
-    "select", "setmetatable", "tonumber", "tostring", "type", "xpcall", "_VERSION", "require",
+    "assert",
+    "error",
+    "ipairs",
+    "next",
+    "pairs",
+    "pcall",
+    "print",
+    "rawequal",
+    "rawget",
+    "rawlen",
+    "rawset",
+    "select",
+    "setmetatable",
+    "tonumber",
+    "tostring",
+    "type",
+    "xpcall",
+    "_VERSION",
+    "require",
 ];
 
 /// Libraries a submission's environment gets a copy of (what it changes stays its own).

@@ -19,7 +19,9 @@ pub const LAB: CommandSpec = CommandSpec {
 
 fn lab(sh: &mut Shell, args: Args) -> Result<Outcome> {
     if sh.session.confine.is_some() {
-        return Err(Error::unsupported("`lab` is not available in a sandboxed run (it starts processes and writes folders)"));
+        return Err(Error::unsupported(
+            "`lab` is not available in a sandboxed run (it starts processes and writes folders)",
+        ));
     }
     let words: Vec<&str> = args.text.split_whitespace().collect();
     let usage = LAB.usage;
@@ -38,9 +40,10 @@ fn lab(sh: &mut Shell, args: Args) -> Result<Outcome> {
             for w in rest {
                 match w.strip_prefix("jobs=") {
                     Some(n) => {
-                        jobs = n.parse().ok().filter(|n| *n > 0).ok_or_else(|| {
-                            Error::usage(format!("jobs={n}: a number of workers ≥ 1")).hint(usage)
-                        })?;
+                        jobs =
+                            n.parse().ok().filter(|n| *n > 0).ok_or_else(|| {
+                                Error::usage(format!("jobs={n}: a number of workers ≥ 1")).hint(usage)
+                            })?;
                     }
                     None => subs.push(std::path::PathBuf::from(w)),
                 }

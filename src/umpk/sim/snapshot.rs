@@ -30,7 +30,7 @@ pub struct IlState {
 pub enum ProgramState {
     None,
     Binary,
-    Il(IlState),
+    Il(Box<IlState>),
 }
 
 /// Everything a simulated UMPK holds.
@@ -78,9 +78,9 @@ impl Umpk {
         let program = match &self.program {
             Program::None => ProgramState::None,
             Program::Binary => ProgramState::Binary,
-            Program::Logic(r) => ProgramState::Il(r.save().ok_or_else(|| {
+            Program::Logic(r) => ProgramState::Il(Box::new(r.save().ok_or_else(|| {
                 format!("its program `{}` is built into plcsh, not IL text (load an IL file instead)", r.name())
-            })?),
+            })?)),
         };
         let (mode, until) = match self.mode {
             Mode::Resetting(t) => ("restarting".to_string(), t.as_nanos() as u64),
@@ -152,13 +152,8 @@ impl Umpk {
         self.echo_off_by_command = s.echo_off_by_command;
         self.monitor = false;
         self.prog = Programming::default();
-        self.image = Image {
-            inputs: s.inputs,
-            outputs: s.outputs,
-            markers,
-            timers: s.timer_bits,
-            counters: s.counter_bits,
-        };
+        self.image =
+            Image { inputs: s.inputs, outputs: s.outputs, markers, timers: s.timer_bits, counters: s.counter_bits };
         self.logic = s.logic.clone();
         self.forced_inputs = s.forced_inputs;
         self.waves = s.waves.clone();
