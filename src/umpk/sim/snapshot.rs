@@ -125,6 +125,15 @@ impl Umpk {
         if s.logic.timers.len() != self.logic.timers.len() || s.logic.counters.len() != self.logic.counters.len() {
             return Err("the timers or counters do not match the model".into());
         }
+        if let Some(w) = s.waves.iter().find(|w| w.input >= self.model.inputs || w.period < 2) {
+            return Err(format!(
+                "a square wave on input {} every {} cycles cannot run on this model",
+                w.input, w.period
+            ));
+        }
+        if s.cycle > self.clock.now().as_millis() as u64 / super::logic::CYCLE_MS + 1 {
+            return Err("its cycle count is ahead of the snapshot's clock".into());
+        }
         let mode = match s.mode.as_str() {
             "Work" => Mode::Work,
             "Wait" => Mode::Wait,
@@ -137,6 +146,7 @@ impl Umpk {
             ProgramState::Il(il) => {
                 let mut r = super::program::IlRunner::load(&il.text, &il.source, self.model)
                     .map_err(|e| format!("its IL program {} does not compile: {e}", il.source))?;
+                check_cpu(&r.cpu, &il.cpu)?;
                 r.cpu = il.cpu.clone();
                 r.fault = il.fault.clone();
                 r.set_last_ns(il.last_ns);
@@ -167,4 +177,26 @@ impl Umpk {
         self.persist();
         Ok(())
     }
+}
+
+/// A saved scan-engine state fits the program compiled again: the same number of edges,
+/// timers, counters and instruction instances, and saved between scans (no open parentheses,
+/// calls or resume point) — a damaged or foreign snapshot is refused, never run.
+fn check_cpu(fresh: &Cpu, saved: &Cpu) -> Result<(), String> {
+    let (a, b) = (serde_json::to_value(fresh).unwrap_or_default(), serde_json::to_value(saved).unwrap_or_default());
+    let len = |v: &serde_json::Value, k: &str| v[k].as_array().map(Vec::len);
+    for k in ["edges", "timers", "counters", "special_en", "attached"] {
+        if len(&a, k) != len(&b, k) {
+            return Err(format!("its IL program's saved state does not fit the program ({k})"));
+        }
+    }
+    for k in ["parens", "calls"] {
+        if len(&b, k) != Some(0) {
+            return Err(format!("its IL program was saved in the middle of a scan ({k})"));
+        }
+    }
+    if !b["pc"].is_null() {
+        return Err("its IL program was saved in the middle of a scan".into());
+    }
+    Ok(())
 }
