@@ -444,6 +444,23 @@ mod tests {
     }
 
     #[test]
+    fn a_confined_session_opens_simulators_only_whichever_way_a_device_is_named() {
+        let mut s = Session::new(Clock::stepped());
+        s.profiles = crate::profile::Profiles::parse(
+            "[devices.press1]\nurl = \"tcp://192.0.2.1:502\"\n[devices.bench]\nurl = \"sim:K205-16DT\"\n",
+            std::path::Path::new("devices.toml"),
+        );
+        s.confine = Some(Arc::new(crate::confine::Confinement::new(vec![std::env::temp_dir()], None)));
+        for (name, url) in [("a", "tcp://192.0.2.1:502"), ("b", "press1"), ("c", "kinco+rfc2217://h:1"), ("d", "nosuch")] {
+            let e = s.open(name, url).unwrap_err();
+            assert!(e.to_string().contains("sandboxed run"), "{url}: {e}");
+            assert!(s.index(name).is_err(), "{url} was not opened");
+        }
+        s.open("sim", "sim:K205-16DT").unwrap();
+        s.open("bench", "bench").unwrap();
+    }
+
+    #[test]
     fn set_then_get_in_order() {
         let mut s = session();
         s.set(&[item("SMB67", "16#85"), item("SMW68", "500"), item("SMD72", "1000")]).unwrap();

@@ -200,3 +200,57 @@ fn check_cpu(fresh: &Cpu, saved: &Cpu) -> Result<(), String> {
     }
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::core::Clock;
+    use std::time::Duration;
+
+    const LAB: &str = "LD I0\nOR Q0\nANDN I1\nST Q0\nLD Q0\nTIMER T0, 1, 20\nST Q1\n";
+
+    fn umpk(clock: &Clock) -> Umpk {
+        let m = &crate::umpk::model::MODELS[1];
+        let mut u = Umpk::new(m, clock.clone());
+        u.load_logic(Box::new(super::super::program::IlRunner::load(LAB, "lab.il", m).unwrap()));
+        u
+    }
+
+    #[test]
+    fn a_running_il_program_continues_exactly_after_a_restore() {
+        let clock = Clock::stepped();
+        let mut a = umpk(&clock);
+        a.set_input(0, true);
+        clock.step(Duration::from_millis(1000));
+        a.advance(clock.now());
+        let saved = a.snapshot_state().unwrap();
+        let text = serde_json::to_string(&saved).unwrap();
+        clock.step(Duration::from_millis(1500));
+        a.advance(clock.now());
+        assert!(a.image.output(1), "Q1 on 2 s after the start");
+        // Back to 1 s, on a controller that never ran the program.
+        clock.set(Duration::from_millis(1000));
+        let mut b = Umpk::new(&crate::umpk::model::MODELS[1], clock.clone());
+        b.restore_snapshot(&serde_json::from_str(&text).unwrap()).unwrap();
+        assert!(b.image.output(0) && !b.image.output(1));
+        clock.step(Duration::from_millis(1500));
+        b.advance(clock.now());
+        assert!(b.image.output(1));
+        assert_eq!(b.errors, a.errors);
+    }
+
+    #[test]
+    fn what_a_snapshot_cannot_hold_is_refused_by_name() {
+        let clock = Clock::stepped();
+        let mut u = umpk(&clock);
+        u.monitor = true;
+        assert!(u.snapshot_state().unwrap_err().contains("monitor"));
+        u.monitor = false;
+        u.rx.push(b'I');
+        assert!(u.snapshot_state().unwrap_err().contains("serial line"));
+        let mut other = Umpk::new(&crate::umpk::model::MODELS[0], clock.clone());
+        u.rx.clear();
+        let st = u.snapshot_state().unwrap();
+        assert!(other.restore_snapshot(&st).unwrap_err().contains("UMPK16"));
+    }
+}
