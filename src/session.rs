@@ -167,6 +167,19 @@ impl Session {
         self.clock.sleep(d, &self.interrupt)
     }
 
+    /// A jump of the stepped clock by `d` (`sim step`, `wait`) within a graded run's
+    /// simulated-time limit: past it, the clock stops at the limit and the run ends.
+    pub fn budget_step(&self, d: std::time::Duration) -> Result<std::time::Duration> {
+        let Some(b) = &self.budget else { return Ok(d) };
+        match b.cap_wait(&self.clock, d) {
+            Some(d) => Ok(d),
+            None => {
+                self.interrupt.store(true, Ordering::Relaxed);
+                Err(Error::new(crate::core::ErrorKind::Interrupted, b.exceeded().unwrap_or_default()))
+            }
+        }
+    }
+
     /// Refuses reading `path` when a sandbox's rules forbid it (commands that load files).
     pub fn check_read(&self, path: &str) -> Result<()> {
         self.confine.as_ref().map_or(Ok(()), |c| c.check_read(path))
@@ -451,7 +464,9 @@ mod tests {
             std::path::Path::new("devices.toml"),
         );
         s.confine = Some(Arc::new(crate::confine::Confinement::new(vec![std::env::temp_dir()], None)));
-        for (name, url) in [("a", "tcp://192.0.2.1:502"), ("b", "press1"), ("c", "kinco+rfc2217://h:1"), ("d", "nosuch")] {
+        for (name, url) in
+            [("a", "tcp://192.0.2.1:502"), ("b", "press1"), ("c", "kinco+rfc2217://h:1"), ("d", "nosuch")]
+        {
             let e = s.open(name, url).unwrap_err();
             assert!(e.to_string().contains("sandboxed run"), "{url}: {e}");
             assert!(s.index(name).is_err(), "{url} was not opened");

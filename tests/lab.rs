@@ -67,6 +67,7 @@ const EXPECTED: &[(&str, f64, &str)] = &[
     ("infinite_loop", 0.0, "exceeded 20 M Lua instructions"),
     ("pcall_loop", 0.0, "exceeded 20 M Lua instructions"),
     ("never_returns", 0.0, "exceeded 11 simulated minutes"),
+    ("sim_step_far", 0.0, "exceeded 11 simulated minutes"),
     ("memory_bomb", 0.0, "exceeded 64 MiB of Lua memory"),
     // The sandbox.
     ("os_execute", 0.0, "os_execute.lua:1: os.execute is not available in a sandboxed run"),
