@@ -84,13 +84,18 @@ pub fn apply(lua: &Lua, rules: Arc<Confinement>) -> mlua::Result<()> {
         let t: Table = g.get(*lib)?;
         t.set(*name, refused(lua, format!("{lib}.{name}"), why)?)?;
     }
-    // debug: the traceback only (the rest reaches into other functions' locals and upvalues).
-    // (plcsh's interpreter is opened without it; a build that has it keeps the traceback.)
-    if let Value::Table(debug) = g.get::<Value>("debug")? {
-        let only = lua.create_table()?;
-        only.set("traceback", debug.get::<Value>("traceback")?)?;
-        g.set("debug", only)?;
-    }
+    // debug: the traceback only (the rest reaches into other functions' locals and upvalues;
+    // plcsh's interpreter is opened without the library, so the traceback is mlua's).
+    let only = lua.create_table()?;
+    only.set(
+        "traceback",
+        lua.create_function(|lua, (msg, level): (Value, Option<usize>)| match msg {
+            Value::String(s) => Ok(Value::String(lua.traceback(Some(&s.to_string_lossy()), level.unwrap_or(1))?)),
+            Value::Nil => Ok(Value::String(lua.traceback(None, level.unwrap_or(1))?)),
+            other => Ok(other),
+        })?,
+    )?;
+    g.set("debug", only)?;
     // The string metatable is shared by every environment: nobody may reach it.
     if let Some(mt) = lua.load("return getmetatable('')").eval::<Option<Table>>()? {
         mt.set("__metatable", false)?;
@@ -235,15 +240,16 @@ pub fn student_env(lua: &Lua, rules: Arc<Confinement>) -> mlua::Result<Table> {
         .set_name("=sandbox")
         .eval()?;
     env.raw_set("getmetatable", gm)?;
-    // Device handles (`plc`, `servo`), as the globals have them.
-    for pair in g.pairs::<Value, Value>() {
-        let (k, v) = pair?;
-        if let Value::UserData(_) = v {
-            if env.raw_get::<Value>(k.clone())?.is_nil() {
-                env.raw_set(k, v)?;
-            }
-        }
-    }
+    // Device handles (`plc`, `servo`): the globals' userdata, looked up when used, so a
+    // device opened later (or by the run's setup) is there too.
+    let lookup: mlua::Function = lua
+        .load("local G, rawget, type = ...\nreturn function(_, k) local v = rawget(G, k); if type(v) == 'userdata' then return v end end")
+        .set_name("=sandbox")
+        .call((g.clone(), g.raw_get::<Value>("rawget")?, g.raw_get::<Value>("type")?))?;
+    let mt = lua.create_table()?;
+    mt.raw_set("__index", lookup)?;
+    mt.raw_set("__metatable", false)?;
+    env.set_metatable(Some(mt))?;
     env.raw_set("_G", env.clone())?;
     install_loaders(lua, &env, rules)?;
     Ok(env)
