@@ -205,7 +205,8 @@ struct Rule {
     allowed: &'static str,
 }
 
-/// The rules of docs/teaching.md's table, row by row.
+/// The rules of docs/teaching.md's table, row by row (its "the grader" row is the test lab's
+/// `replace_criterion` and `replace_plcsh` submissions above).
 const RULES: &[Rule] = &[
     Rule {
         name: "processes",
@@ -297,6 +298,12 @@ const RULES: &[Rule] = &[
         denied: "loadfile('/etc/hostname')",
         refusal: "outside the sandbox's folders",
         allowed: "assert(loadfile(arg[0]))",
+    },
+    Rule {
+        name: "commands",
+        denied: "plcsh.exec('lab new elsewhere')",
+        refusal: "`lab` is not available in a sandboxed run",
+        allowed: "plcsh.exec('set VW0=7'); assert(plcsh.exec('get VW0').values[1].value == 7)",
     },
 ];
 
