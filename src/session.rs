@@ -211,20 +211,19 @@ impl Session {
             return Err(Error::usage(format!("`{name}` is not a device name (letters, digits, _ and -)")));
         }
         if let Some(c) = &self.confine {
-            // A profile name opens the profile's URL: the rule applies to that.
-            let resolved = if url.contains(':') {
-                url.to_string()
-            } else {
-                self.profiles.get(url).map(|p| p.url.clone()).unwrap_or_else(|| url.to_string())
-            };
-            if resolved.contains(':') {
-                c.check_url(&resolved).map_err(|e| e.device(name))?;
-            } else {
-                return Err(crate::core::Error::unsupported(format!(
-                    "`{url}` is not a device URL: a sandboxed run opens simulated devices by URL only"
-                ))
+            // A profile brings the user's options (state files, …): a sandboxed run opens
+            // devices by URL only, and only simulators.
+            if !url.contains(':') {
+                let real = self.profiles.get(url).is_some_and(|p| c.check_url(&p.url).is_err());
+                return Err(crate::core::Error::unsupported(if real {
+                    format!("`{url}` is a profile of a real device: a sandboxed run opens simulated devices only")
+                } else {
+                    format!("`{url}` is not a device URL: a sandboxed run opens simulated devices by URL only")
+                })
+                .hint("e.g. plcsh.connect(\"sim:K205-16DT\")")
                 .device(name));
             }
+            c.check_url(url).map_err(|e| e.device(name))?;
         }
         if !url.contains(':') {
             return crate::profile::open(self, name, url);
@@ -471,8 +470,9 @@ mod tests {
             assert!(e.to_string().contains("sandboxed run"), "{url}: {e}");
             assert!(s.index(name).is_err(), "{url} was not opened");
         }
+        // Profiles bring the user's options (state files): refused even for a simulator.
+        assert!(s.open("bench", "bench").unwrap_err().to_string().contains("by URL only"));
         s.open("sim", "sim:K205-16DT").unwrap();
-        s.open("bench", "bench").unwrap();
     }
 
     #[test]
