@@ -340,6 +340,18 @@ fn every_sandbox_rule_refuses_one_attempt_and_allows_another() {
             }
         }
     }
+    // A real device given on the command line is refused before the script starts.
+    let script = d.join("plain.lua");
+    std::fs::write(&script, "print('reached the end')\n").unwrap();
+    let o = plcsh()
+        .current_dir(&d)
+        .args(["--device", &format!("real=tcp://127.0.0.1:{port}"), "run", "--sandbox"])
+        .arg(&script)
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(1), "{}", both(&o));
+    assert!(both(&o).contains("is a real device: a sandboxed run opens simulated devices only"), "{}", both(&o));
+    assert!(!both(&o).contains("reached the end"));
     assert!(listener.accept().is_err(), "nothing connected to the loopback server");
     std::fs::remove_dir_all(&d).unwrap();
 }

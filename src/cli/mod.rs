@@ -155,6 +155,13 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
         TimeMode::Stepped => Clock::stepped(),
     };
     let mut s = Session::new(clock);
+    // A sandboxed run's rules hold from the first device on: a real device given with
+    // --device is refused where the session opens it, before any connection.
+    if let Some(Sub::Run(r)) = &cli.sub {
+        if r.sandbox {
+            s.confine = Some(std::sync::Arc::new(r.confinement()));
+        }
+    }
     crate::paths::set_in_effect(crate::paths::InEffect {
         config: cli.config.clone().or_else(crate::paths::config_file),
         state: state_file(cli),
@@ -187,7 +194,9 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
         s.open("plc", &format!("sim:{}", cli.model))?;
         // The simulated PLC keeps its backup area, retained ranges and clock (k2.md §7);
         // `sim serve` keeps its own (`--state`), so the shell's default file stays untouched.
-        if let Some(state) = state_file(cli).filter(|_| !matches!(cli.sub, Some(Sub::Sim { .. }))) {
+        // A sandboxed run keeps no state: every run starts clean (`--state FILE` is not read).
+        let keeps_state = !matches!(&cli.sub, Some(Sub::Sim { .. })) && s.confine.is_none();
+        if let Some(state) = state_file(cli).filter(|_| keeps_state) {
             s.device("plc")?.set_option("state", &state.to_string_lossy()).map_err(|e| e.device("plc"))?;
         }
     }

@@ -28,6 +28,17 @@ pub struct RunArgs {
     pub args: Vec<String>,
 }
 
+impl RunArgs {
+    /// The rules of `--sandbox`: the script's folder is read, `--write-dir` written.
+    pub fn confinement(&self) -> crate::confine::Confinement {
+        let dir = match self.script.parent() {
+            Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+            _ => PathBuf::from("."),
+        };
+        crate::confine::Confinement::new(vec![dir], self.write_dir.clone())
+    }
+}
+
 /// Runs the script; returns the exit status. With `--json` the run ends with one summary
 /// object: ok, the script, checks passed and failed, the duration, and the error (kind,
 /// message, `where` file:line, traceback) when it failed — one line a grader can read.
@@ -42,12 +53,9 @@ pub fn main(shell: &mut Shell, args: &RunArgs, style: Style) -> i32 {
     let mut env = None;
     if args.sandbox {
         // The script's folder is read, the write directory written; the session holds the
-        // rules, so devices, snapshots and shell commands follow them too.
-        let dir = match args.script.parent() {
-            Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
-            _ => PathBuf::from("."),
-        };
-        let rules = std::sync::Arc::new(crate::confine::Confinement::new(vec![dir], args.write_dir.clone()));
+        // rules (set before any device opened, `cli::build_session`), so devices, snapshots
+        // and shell commands follow them too.
+        let rules = shell.session.confine.clone().unwrap_or_else(|| std::sync::Arc::new(args.confinement()));
         let setup = || -> mlua::Result<mlua::Table> {
             crate::script::sandbox::apply(engine.lua(), rules.clone())
                 .map_err(|e| mlua::Error::runtime(format!("apply: {e}")))?;
