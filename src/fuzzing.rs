@@ -47,6 +47,8 @@ pub static TARGETS: &[(&str, Target)] = &[
     ("pcapng", pcapng),
     ("rfc2217", rfc2217),
     ("bench", bench),
+    ("lab_toml", lab_toml),
+    ("umpk_snapshot", umpk_snapshot),
 ];
 
 fn text(data: &[u8]) -> String {
@@ -438,5 +440,24 @@ pub fn control(data: &[u8]) {
         let _ = crate::fx::control::answer(&mut fx, &line);
         let _ = crate::servo::sim::control::answer_line(&mut servo, &line);
         clock.step(std::time::Duration::from_millis(7));
+    }
+}
+
+/// A lab's `lab.toml` (parse and check; the files it names are looked up in a folder that
+/// does not exist, so nothing is read).
+pub fn lab_toml(data: &[u8]) {
+    let _ = crate::lab::config::Lab::parse(&text(data), Path::new("fuzz/no-such-lab"));
+}
+
+/// A snapshot's `umpk` section (a snapshot file is outside input): decoded, then restored onto
+/// a simulated UMPK16, which must refuse or take it without panicking.
+pub fn umpk_snapshot(data: &[u8]) {
+    let Ok(state) = serde_json::from_slice::<crate::umpk::sim::snapshot::UmpkState>(data) else { return };
+    let clock = Clock::stepped();
+    let mut u = crate::umpk::sim::Umpk::new(&crate::umpk::model::MODELS[1], clock.clone());
+    if u.restore_snapshot(&state).is_ok() {
+        clock.step(std::time::Duration::from_millis(50));
+        u.advance(clock.now());
+        let _ = u.snapshot_state();
     }
 }

@@ -4,12 +4,14 @@
 //! `session` ← front ends (`shell`, `cli`, `script`). `output` renders core values only.
 
 pub mod cli;
+pub mod confine;
 pub mod core;
 pub mod engine;
 pub mod fuzzing;
 pub mod fx;
 pub mod guard;
 pub mod k2;
+pub mod lab;
 pub mod output;
 pub mod paths;
 pub mod plot;

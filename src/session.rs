@@ -61,6 +61,10 @@ pub struct Session {
     pub profiles: crate::profile::Profiles,
     /// The session-wide read-only switch (`--read-only`), shared by every device's guard.
     read_only: Arc<AtomicBool>,
+    /// A sandboxed run's rules ([`crate::confine`]): checked here, where devices are opened.
+    pub confine: Option<Arc<crate::confine::Confinement>>,
+    /// A graded run's limits ([`crate::lab::budget`]): waits stop at its simulated-time limit.
+    pub budget: Option<Arc<crate::lab::budget::Budget>>,
 }
 
 /// URL schemes with what they open, for completion and hints. Keep in step with [`open_url`]
@@ -129,6 +133,8 @@ impl Session {
             interrupt: Arc::new(AtomicBool::new(false)),
             profiles: Default::default(),
             read_only: Arc::new(AtomicBool::new(false)),
+            confine: None,
+            budget: None,
         }
     }
 
@@ -142,12 +148,50 @@ impl Session {
     /// real machine must not expire in no time) and the virtual clock then moves by the same
     /// amount, so simulators stay in step. False when interrupted (Ctrl-C).
     pub fn sleep(&self, d: std::time::Duration) -> bool {
+        // A graded run's wait ends at its simulated-time limit (and the run with it).
+        let d = match &self.budget {
+            Some(b) => match b.cap_wait(&self.clock, d) {
+                Some(d) => d,
+                None => {
+                    self.interrupt.store(true, Ordering::Relaxed);
+                    return false;
+                }
+            },
+            None => d,
+        };
         if self.clock.is_stepped() && self.has_wire_device() {
             let ok = Clock::sleep_real(d, &self.interrupt);
             self.clock.step(d);
             return ok;
         }
         self.clock.sleep(d, &self.interrupt)
+    }
+
+    /// A jump of the stepped clock by `d` (`sim step`, `wait`) within a graded run's
+    /// simulated-time limit: past it, the clock stops at the limit and the run ends.
+    pub fn budget_step(&self, d: std::time::Duration) -> Result<std::time::Duration> {
+        let Some(b) = &self.budget else { return Ok(d) };
+        match b.cap_wait(&self.clock, d) {
+            Some(d) => Ok(d),
+            None => {
+                self.interrupt.store(true, Ordering::Relaxed);
+                Err(Error::new(crate::core::ErrorKind::Interrupted, b.exceeded().unwrap_or_default()))
+            }
+        }
+    }
+
+    /// Refuses reading `path` when a sandbox's rules forbid it (commands that load files).
+    pub fn check_read(&self, path: &str) -> Result<()> {
+        self.confine.as_ref().map_or(Ok(()), |c| c.check_read(path))
+    }
+
+    /// The file of snapshot `name` (`crate::snapshot::locate`), under a sandbox's rules when
+    /// there are some: a path under its folders, never a named snapshot in the data directory.
+    pub fn snapshot_file(&self, name: &str, save: bool) -> Result<std::path::PathBuf> {
+        match &self.confine {
+            Some(c) => c.snapshot_file(name, save),
+            None => crate::snapshot::locate(name),
+        }
     }
 
     /// Turns the session-wide read-only switch on or off: every device refuses every
@@ -165,6 +209,21 @@ impl Session {
     pub fn open(&mut self, name: &str, url: &str) -> Result<()> {
         if name.is_empty() || !name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-') {
             return Err(Error::usage(format!("`{name}` is not a device name (letters, digits, _ and -)")));
+        }
+        if let Some(c) = &self.confine {
+            // A profile brings the user's options (state files, …): a sandboxed run opens
+            // devices by URL only, and only simulators.
+            if !url.contains(':') {
+                let real = self.profiles.get(url).is_some_and(|p| c.check_url(&p.url).is_err());
+                return Err(crate::core::Error::unsupported(if real {
+                    format!("`{url}` is a profile of a real device: a sandboxed run opens simulated devices only")
+                } else {
+                    format!("`{url}` is not a device URL: a sandboxed run opens simulated devices by URL only")
+                })
+                .hint("e.g. plcsh.connect(\"sim:K205-16DT\")")
+                .device(name));
+            }
+            c.check_url(url).map_err(|e| e.device(name))?;
         }
         if !url.contains(':') {
             return crate::profile::open(self, name, url);
@@ -401,6 +460,26 @@ mod tests {
 
     fn item(op: &str, v: &str) -> SetItem {
         SetItem { operand: op.into(), value: v.into(), column: 0, value_column: 0 }
+    }
+
+    #[test]
+    fn a_confined_session_opens_simulators_only_whichever_way_a_device_is_named() {
+        let mut s = Session::new(Clock::stepped());
+        s.profiles = crate::profile::Profiles::parse(
+            "[devices.press1]\nurl = \"tcp://192.0.2.1:502\"\n[devices.bench]\nurl = \"sim:K205-16DT\"\n",
+            std::path::Path::new("devices.toml"),
+        );
+        s.confine = Some(Arc::new(crate::confine::Confinement::new(vec![std::env::temp_dir()], None)));
+        for (name, url) in
+            [("a", "tcp://192.0.2.1:502"), ("b", "press1"), ("c", "kinco+rfc2217://h:1"), ("d", "nosuch")]
+        {
+            let e = s.open(name, url).unwrap_err();
+            assert!(e.to_string().contains("sandboxed run"), "{url}: {e}");
+            assert!(s.index(name).is_err(), "{url} was not opened");
+        }
+        // Profiles bring the user's options (state files): refused even for a simulator.
+        assert!(s.open("bench", "bench").unwrap_err().to_string().contains("by URL only"));
+        s.open("sim", "sim:K205-16DT").unwrap();
     }
 
     #[test]

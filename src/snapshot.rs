@@ -12,7 +12,11 @@
 //! ```
 //!
 //! A simulated FX PLC is one `fx` section ([`crate::fx::snapshot`]): its image, its CPU and its
-//! program's text (compiled again on restore) with the engine's state.
+//! program's text (compiled again on restore) with the engine's state. A simulated UMPK is one
+//! `umpk` section ([`crate::umpk::sim::snapshot`]): mode, flash, error history, image, timers,
+//! counters and its IL program with the engine's state. A simulator whose state a snapshot
+//! cannot hold (a UMPK running a built-in program, a family without a section) makes the save
+//! fail, naming the device and what it cannot keep: a snapshot never leaves a device out.
 //!
 //! A simulated PLC's wires are its `wiring` section: each wire's declaration (as `sim wire`
 //! takes it) and what it carries between pieces (counts given, pulses pushed, levels in
@@ -67,7 +71,15 @@ fn dec<T: serde::de::DeserializeOwned>(v: &serde_json::Value, what: &str) -> Res
 }
 
 /// The sections this plcsh knows, per family.
-const KNOWN: &[(&str, &str)] = &[("k2", "k2"), ("k2", "wiring"), ("servo", "servo"), ("fx", "fx")];
+const KNOWN: &[(&str, &str)] = &[("k2", "k2"), ("k2", "wiring"), ("servo", "servo"), ("fx", "fx"), ("umpk", "umpk")];
+
+/// The simulated UMPK behind a device, if it is one (`sim-umpk:`).
+fn umpk_sim(
+    dev: &mut Box<dyn crate::core::Device>,
+) -> Option<std::sync::Arc<std::sync::Mutex<crate::umpk::sim::Umpk>>> {
+    let ops = dev.family_ops_for(&[]).ok().flatten()?;
+    ops.downcast_mut::<crate::umpk::driver::Driver>()?.simulator()
+}
 
 /// The simulated FX PLC behind a device, if it is one (`sim-fx:`).
 fn fx_sim(dev: &mut Box<dyn crate::core::Device>) -> Option<crate::fx::sim::Plc> {
@@ -119,11 +131,25 @@ impl Snapshot {
                 let mut sections = BTreeMap::new();
                 sections.insert("fx".to_string(), enc(st)?);
                 devices.insert(name, DeviceSnap { family: "fx".into(), sections });
+            } else if let Some(u) = umpk_sim(dev) {
+                let st = u.lock().unwrap_or_else(|p| p.into_inner()).snapshot_state().map_err(|why| {
+                    Error::unsupported(format!("cannot snapshot `{name}`: {why}"))
+                        .hint("a snapshot holds every simulated device or none")
+                })?;
+                let mut sections = BTreeMap::new();
+                sections.insert("umpk".to_string(), enc(st)?);
+                devices.insert(name, DeviceSnap { family: "umpk".into(), sections });
+            } else if dev.info().simulated {
+                let family = dev.info().family;
+                return Err(Error::unsupported(format!(
+                    "cannot snapshot `{name}`: a simulated {family} device's state is not kept in snapshots"
+                ))
+                .hint("close it before saving, or save without it"));
             }
         }
         if devices.is_empty() {
             return Err(Error::usage("no simulated device is open: nothing to snapshot").hint(
-                "snapshots hold simulator state (sim:MODEL, sim-servo:, sim-fx:); a real device's state is its own",
+                "snapshots hold simulator state (sim:MODEL, sim-servo:, sim-fx:, sim-umpk:); a real device's state is its own",
             ));
         }
         Ok(Snapshot {
@@ -146,6 +172,7 @@ impl Snapshot {
                 "k2" => dev.as_k2().and_then(|k| k.as_sim()).is_some(),
                 "servo" => dev.as_servo().and_then(|sv| sv.simulator()).is_some(),
                 "fx" => fx_sim(dev).is_some(),
+                "umpk" => umpk_sim(dev).is_some(),
                 _ => false,
             };
             if !ok {
@@ -160,6 +187,7 @@ impl Snapshot {
         let mut k2 = Vec::new();
         let mut servo = Vec::new();
         let mut fx = Vec::new();
+        let mut umpk = Vec::new();
         let mut wiring: Vec<(usize, String, Vec<WireSnap>)> = Vec::new();
         for (name, d) in &self.devices {
             let i = s.index(name)?;
@@ -204,6 +232,19 @@ impl Snapshot {
                 }
                 fx.push((i, name, st));
             }
+            if let Some(v) = d.sections.get("umpk") {
+                let st: crate::umpk::sim::snapshot::UmpkState = dec(v, "umpk")?;
+                let u = umpk_sim(&mut s.entry(i).device).expect("checked above");
+                let model = u.lock().unwrap_or_else(|p| p.into_inner()).model.name;
+                if st.model != model {
+                    return Err(Error::usage(format!(
+                        "cannot restore `{name}`: the snapshot is of a {}, this simulator is a {model}",
+                        st.model
+                    ))
+                    .hint(format!("open it as {name}=sim-umpk:{}", st.model)));
+                }
+                umpk.push((i, name, st));
+            }
         }
         // Wires first: declaring one touches the PLC and the drive, whose saved states follow.
         for (i, name, wires) in &wiring {
@@ -229,6 +270,11 @@ impl Snapshot {
             let plc = fx_sim(&mut s.entry(i).device).expect("checked above");
             let mut m = plc.lock().unwrap_or_else(|p| p.into_inner());
             m.restore_state(&st).map_err(|e| Error::usage(format!("cannot restore `{name}`: {e}")))?;
+        }
+        for (i, name, st) in umpk {
+            let u = umpk_sim(&mut s.entry(i).device).expect("checked above");
+            let mut m = u.lock().unwrap_or_else(|p| p.into_inner());
+            m.restore_snapshot(&st).map_err(|e| Error::usage(format!("cannot restore `{name}`: {e}")))?;
         }
         for (i, name, wires) in wiring {
             let sim = s.entry(i).device.as_k2().and_then(|k| k.as_sim()).expect("checked above");

@@ -513,8 +513,9 @@ fn run_lua_block(dir: &Path, b: &Block, n: usize, t: &mut Tally) {
     t.check(&b.at, "lua", ok_or_err(&o, true));
 }
 
-/// A `toml` block: a profile file or a bench file. `<!-- example: file NAME [after FILE] -->`
-/// writes it as NAME (after the project's FILE) for the examples that follow to open.
+/// A `toml` block: a profile file, a bench file or a lab's `lab.toml` (checked with the files
+/// of `plcsh lab new` around it). `<!-- example: file NAME [after FILE] -->` writes it as NAME
+/// (after the project's FILE) for the examples that follow to open.
 fn run_toml_block(dir: &Path, b: &Block, marker: &str, n: usize, t: &mut Tally) {
     let mut file = dir.join(format!("example{n}.toml"));
     let mut text = b.text.clone();
@@ -528,7 +529,13 @@ fn run_toml_block(dir: &Path, b: &Block, marker: &str, n: usize, t: &mut Tally) 
     }
     std::fs::write(&file, &text).unwrap();
     let f = quote(&file.display().to_string());
-    let r = if b.text.contains("[devices.") {
+    let r = if b.text.contains("grader =") {
+        // A lab: the example lab's files with this lab.toml; its reference gets every point.
+        let lab = dir.join(format!("lab-example{n}"));
+        let q = quote(&lab.display().to_string());
+        let o = sh(dir, &format!("plcsh lab new {q} && cp {f} {q}/lab.toml && plcsh lab check {q}"), "");
+        ok_or_err(&o, true)
+    } else if b.text.contains("[devices.") {
         // A profile file: loaded with no problem reported.
         let o = sh(dir, &format!("plcsh --state none --config {f} devices --json"), "");
         ok_or_err(&o, true).and_then(|_| {

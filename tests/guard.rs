@@ -77,6 +77,7 @@ const NOT_WRITES: &[(&str, &str)] = &[
     ("events", "reads plcsh's own interrupt event log"),
     ("wait", "reads plcsh's own interrupt event log"),
     ("agent", "reads the helper's status"),
+    ("lab", "builds its own simulators from a lab folder in worker processes; touches no device of the session"),
     ("help", "text"),
     ("quit", "session"),
     ("models", "text: the model catalogue"),

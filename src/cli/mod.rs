@@ -5,6 +5,7 @@
 
 mod agent;
 pub mod completions;
+mod lab;
 mod record;
 mod run;
 mod serve;
@@ -123,6 +124,11 @@ pub enum Sub {
     },
     /// Replay a recording's requests against a simulator and report every reply that differs.
     Replay(record::ReplayArgs),
+    /// Teaching labs: `lab new NAME`, `lab check LAB`, `lab grade LAB SUBMISSIONS…` (sandboxed, in parallel).
+    Lab {
+        #[command(subcommand)]
+        cmd: lab::LabCmd,
+    },
 }
 
 /// Splits `NAME=URL` (or a bare URL, named `plc`; or a bare profile name, named after itself).
@@ -149,6 +155,13 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
         TimeMode::Stepped => Clock::stepped(),
     };
     let mut s = Session::new(clock);
+    // A sandboxed run's rules hold from the first device on: a real device given with
+    // --device is refused where the session opens it, before any connection.
+    if let Some(Sub::Run(r)) = &cli.sub {
+        if r.sandbox {
+            s.confine = Some(std::sync::Arc::new(r.confinement()));
+        }
+    }
     crate::paths::set_in_effect(crate::paths::InEffect {
         config: cli.config.clone().or_else(crate::paths::config_file),
         state: state_file(cli),
@@ -181,7 +194,9 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
         s.open("plc", &format!("sim:{}", cli.model))?;
         // The simulated PLC keeps its backup area, retained ranges and clock (k2.md §7);
         // `sim serve` keeps its own (`--state`), so the shell's default file stays untouched.
-        if let Some(state) = state_file(cli).filter(|_| !matches!(cli.sub, Some(Sub::Sim { .. }))) {
+        // A sandboxed run keeps no state: every run starts clean (`--state FILE` is not read).
+        let keeps_state = !matches!(&cli.sub, Some(Sub::Sim { .. })) && s.confine.is_none();
+        if let Some(state) = state_file(cli).filter(|_| keeps_state) {
             s.device("plc")?.set_option("state", &state.to_string_lossy()).map_err(|e| e.device("plc"))?;
         }
     }
@@ -363,6 +378,10 @@ fn run_cli() -> i32 {
         // Before any device is opened: replay builds its own simulators (and refuses --device).
         return record::replay(args, cli.bench.as_deref(), !cli.devices.is_empty(), style, &mut out);
     }
+    if let Some(Sub::Lab { cmd }) = &cli.sub {
+        // A lab builds its own simulators from its lab.toml (never the user's state file).
+        return lab::run(cmd, style, &mut out);
+    }
     let session = match build_session(&cli) {
         Ok(s) => s,
         Err(e) => {
@@ -415,6 +434,7 @@ fn run(cli: &Cli, mut shell: Shell, style: Style, mut out: std::io::StdoutLock<'
             Sub::Run(args) => run::main(&mut shell, args, style),
             Sub::Record { cmd } => record::show(cmd, style, &mut out),
             Sub::Replay(args) => record::replay(args, cli.bench.as_deref(), false, style, &mut out),
+            Sub::Lab { cmd } => lab::run(cmd, style, &mut out),
         };
     }
     if let Some(cmds) = &cli.command {

@@ -28,6 +28,17 @@ pub struct RunArgs {
     pub args: Vec<String>,
 }
 
+impl RunArgs {
+    /// The rules of `--sandbox`: the script's folder is read, `--write-dir` written.
+    pub fn confinement(&self) -> crate::confine::Confinement {
+        let dir = match self.script.parent() {
+            Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+            _ => PathBuf::from("."),
+        };
+        crate::confine::Confinement::new(vec![dir], self.write_dir.clone())
+    }
+}
+
 /// Runs the script; returns the exit status. With `--json` the run ends with one summary
 /// object: ok, the script, checks passed and failed, the duration, and the error (kind,
 /// message, `where` file:line, traceback) when it failed — one line a grader can read.
@@ -39,16 +50,31 @@ pub fn main(shell: &mut Shell, args: &RunArgs, style: Style) -> i32 {
             return 1;
         }
     };
+    let mut env = None;
     if args.sandbox {
-        // Commands the script runs (`trace … to=`, `eeprom dump` …) write under the same rule.
-        shell.write_rule = Some(args.write_dir.clone());
-        if let Err(e) = crate::script::sandbox::apply(engine.lua(), args.write_dir.as_deref()) {
-            eprintln!("cannot set up the sandbox: {e}");
-            return 1;
+        // The script's folder is read, the write directory written; the session holds the
+        // rules (set before any device opened, `cli::build_session`), so devices, snapshots
+        // and shell commands follow them too.
+        let rules = shell.session.confine.clone().unwrap_or_else(|| std::sync::Arc::new(args.confinement()));
+        let setup = || -> mlua::Result<mlua::Table> {
+            crate::script::sandbox::apply(engine.lua(), rules.clone())
+                .map_err(|e| mlua::Error::runtime(format!("apply: {e}")))?;
+            crate::script::paths::confine(engine.lua(), None)
+                .map_err(|e| mlua::Error::runtime(format!("paths: {e}")))?;
+            crate::script::sandbox::student_env(engine.lua(), rules.clone())
+                .map_err(|e| mlua::Error::runtime(format!("env: {e}")))
+        };
+        match setup() {
+            Ok(e) => env = Some(e),
+            Err(e) => {
+                eprintln!("cannot set up the sandbox: {e}");
+                return 1;
+            }
         }
+        shell.confine(rules);
     }
     let start = std::time::Instant::now();
-    let result = engine.run_file(shell, &args.script, &args.args);
+    let result = engine.run_file_in(shell, &args.script, &args.args, env.as_ref());
     let duration = start.elapsed();
     let _ = std::io::stdout().flush();
     if style.json {

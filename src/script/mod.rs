@@ -74,6 +74,31 @@ impl Engine {
         &self.lua
     }
 
+    /// Holds the run to a graded run's limits ([`crate::lab::budget`]): Lua memory, and Lua
+    /// instructions and simulated time, checked by the instruction hook. A limit passed
+    /// raises the interrupt flag too, so no `pcall` in the script can swallow it.
+    pub fn limit(
+        &self,
+        budget: Arc<crate::lab::budget::Budget>,
+        clock: crate::core::Clock,
+        interrupt: Arc<AtomicBool>,
+    ) -> mlua::Result<()> {
+        if let Some(m) = budget.memory {
+            self.lua.set_memory_limit(m)?;
+        }
+        self.lua.set_hook(HookTriggers::new().every_nth_instruction(HOOK_EVERY), move |_, _| {
+            if let Some(verdict) = budget.tick(u64::from(HOOK_EVERY), &clock) {
+                interrupt.store(true, Ordering::Relaxed);
+                return Err(error::raise(Error::new(ErrorKind::Interrupted, verdict)));
+            }
+            if interrupt.load(Ordering::Relaxed) {
+                Err(error::raise(api::interrupted_error()))
+            } else {
+                Ok(VmState::Continue)
+            }
+        })
+    }
+
     /// The status a script asked for with `os.exit`, once it has called it.
     pub fn exit_code(&self) -> Option<i32> {
         self.lua.named_registry_value::<Option<i32>>(EXIT_KEY).ok().flatten()
@@ -146,6 +171,18 @@ impl Engine {
 
     /// Runs a script file with `args` (in `arg` and `...`, as the standalone `lua` does).
     pub fn run_file(&self, shell: &mut Shell, path: &Path, args: &[String]) -> Result<(), Failure> {
+        self.run_file_in(shell, path, args, None)
+    }
+
+    /// Runs a script file in environment `env` (a sandbox's, [`sandbox::student_env`]); the
+    /// globals when `None`.
+    pub fn run_file_in(
+        &self,
+        shell: &mut Shell,
+        path: &Path,
+        args: &[String],
+        env: Option<&Table>,
+    ) -> Result<(), Failure> {
         let code = std::fs::read(path).map_err(|e| Failure {
             error: Error::io(format!("cannot read {}: {e}", path.display())),
             location: None,
@@ -161,8 +198,17 @@ impl Engine {
                 for (i, a) in args.iter().enumerate() {
                     arg.raw_set(i + 1, a.as_str())?;
                 }
-                lua.globals().set("arg", arg)?;
-                let f = lua.load(&code[..]).set_name(format!("@{}", path.display())).into_function()?;
+                let chunk = lua.load(&code[..]).set_name(format!("@{}", path.display()));
+                let f = match env {
+                    Some(env) => {
+                        env.raw_set("arg", arg)?;
+                        chunk.set_environment(env.clone()).set_mode(mlua::chunk::ChunkMode::Text).into_function()?
+                    }
+                    None => {
+                        lua.globals().set("arg", arg)?;
+                        chunk.into_function()?
+                    }
+                };
                 let va = args.iter().map(|a| lua.create_string(a).map(Value::String)).collect::<mlua::Result<_>>()?;
                 Ok((f, va))
             };

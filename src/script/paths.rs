@@ -56,6 +56,8 @@ pub fn project_lib() -> Option<PathBuf> {
 struct Search {
     dirs: Vec<PathBuf>,
     script_dir: Option<PathBuf>,
+    /// A sandboxed run: only the built-in modules and the script's (the lab's) own folder.
+    confined: bool,
 }
 
 #[derive(Clone)]
@@ -78,9 +80,9 @@ fn load(lua: &Lua, name: &str, code: &[u8], chunk_name: &str, from: &str) -> mlu
 }
 
 fn search(lua: &Lua, shared: &Shared, name: &str) -> mlua::Result<MultiValue> {
-    let (dirs, script_dir) = {
+    let (dirs, script_dir, confined) = {
         let s = shared.0.lock().unwrap_or_else(|p| p.into_inner());
-        (s.dirs.clone(), s.script_dir.clone())
+        (s.dirs.clone(), s.script_dir.clone(), s.confined)
     };
     let mut tried = Vec::new();
     let in_dir = |dir: &Path, tried: &mut Vec<String>| -> mlua::Result<Option<MultiValue>> {
@@ -108,6 +110,10 @@ fn search(lua: &Lua, shared: &Shared, name: &str) -> mlua::Result<MultiValue> {
             return Ok(found);
         }
     }
+    if confined {
+        tried.push("(a sandboxed run loads only plcsh's modules and the lab's own)".into());
+        return Ok(MultiValue::from_iter([Value::String(lua.create_string(tried.join("\n\t"))?)]));
+    }
     // Lua's defaults last, as its own file searcher would do them.
     let package: Table = lua.globals().get("package")?;
     let path: String = package.get("path")?;
@@ -128,7 +134,7 @@ fn search(lua: &Lua, shared: &Shared, name: &str) -> mlua::Result<MultiValue> {
 
 pub fn register(lua: &Lua) -> mlua::Result<()> {
     let dirs = lib_dirs();
-    let shared = Shared(Arc::new(Mutex::new(Search { dirs: dirs.clone(), script_dir: None })));
+    let shared = Shared(Arc::new(Mutex::new(Search { dirs: dirs.clone(), script_dir: None, confined: false })));
     let s = shared.clone();
     let searcher = lua.create_function(move |lua, (name, _extra): (String, Value)| search(lua, &s, &name))?;
     let package: Table = lua.globals().get("package")?;
@@ -142,13 +148,33 @@ pub fn register(lua: &Lua) -> mlua::Result<()> {
 
 /// `plcsh run` finds modules next to the script too — after the directories and modules
 /// above, as the README gives the order — and lists it last in `plcsh.lib_dirs`.
+/// A sandboxed run: `require` finds the built-in modules and the modules in `dir` (the lab's
+/// folder; the script's folder when `None`) only.
+pub fn confine(lua: &Lua, dir: Option<&Path>) -> mlua::Result<()> {
+    if let Some(shared) = lua.app_data_ref::<Shared>() {
+        let mut s = shared.0.lock().unwrap_or_else(|p| p.into_inner());
+        s.dirs.clear();
+        s.confined = true;
+        if let Some(d) = dir {
+            s.script_dir = Some(d.to_path_buf());
+        }
+    }
+    let p: Table = lua.globals().get("plcsh")?;
+    p.set("lib_dirs", dir.map(|d| vec![d.display().to_string()]).unwrap_or_default())
+}
+
+/// Sets the folder of the script being run (searched by `require`), unless a sandbox fixed it.
 pub fn add_script_dir(lua: &Lua, script: &Path) -> mlua::Result<()> {
     let dir = match script.parent() {
         Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
         _ => PathBuf::from("."),
     };
     if let Some(shared) = lua.app_data_ref::<Shared>() {
-        shared.0.lock().unwrap_or_else(|p| p.into_inner()).script_dir = Some(dir.clone());
+        let mut s = shared.0.lock().unwrap_or_else(|p| p.into_inner());
+        if s.confined && s.script_dir.is_some() {
+            return Ok(());
+        }
+        s.script_dir = Some(dir.clone());
     }
     let p: Table = lua.globals().get("plcsh")?;
     let listed: Table = p.get("lib_dirs")?;

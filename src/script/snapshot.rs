@@ -13,7 +13,7 @@ pub fn register(lua: &Lua, p: &Table) -> mlua::Result<()> {
         "snapshot_save",
         lua.create_function(|lua, name: String| {
             with_shell(lua, |sh| {
-                let path = snapshot::locate(&name)?;
+                let path = sh.session.snapshot_file(&name, true)?;
                 Snapshot::capture(&mut sh.session)?.save(&path)?;
                 Ok(path.display().to_string())
             })
@@ -24,7 +24,7 @@ pub fn register(lua: &Lua, p: &Table) -> mlua::Result<()> {
         "snapshot_restore",
         lua.create_function(|lua, name: String| {
             with_shell(lua, |sh| {
-                let snap = Snapshot::load(&snapshot::locate(&name)?)?;
+                let snap = Snapshot::load(&sh.session.snapshot_file(&name, false)?)?;
                 snap.restore(&mut sh.session)?;
                 Ok(snap.clock_us as f64 / 1e6)
             })
@@ -32,7 +32,14 @@ pub fn register(lua: &Lua, p: &Table) -> mlua::Result<()> {
     )?;
     p.set(
         "snapshots",
-        lua.create_function(|_, ()| Ok(snapshot::list().into_iter().map(|(n, _)| n).collect::<Vec<String>>()))?,
+        lua.create_function(|lua, ()| {
+            with_shell(lua, |sh| {
+                if sh.session.confine.is_some() {
+                    return Ok(Vec::new()); // a sandboxed run does not look into the data directory
+                }
+                Ok(snapshot::list().into_iter().map(|(n, _)| n).collect::<Vec<String>>())
+            })
+        })?,
     )?;
     Ok(())
 }

@@ -131,6 +131,13 @@ impl Shell {
         Shell { session, style, verbose: false, quit: false, last_trace: None, script: None, write_rule: None }
     }
 
+    /// Puts the session under a sandbox's rules ([`crate::confine`]): devices, snapshots and
+    /// the commands that read or write files follow them.
+    pub fn confine(&mut self, rules: std::sync::Arc<crate::confine::Confinement>) {
+        self.write_rule = Some(rules.write.clone());
+        self.session.confine = Some(rules);
+    }
+
     /// Runs every command on the line in order and returns their results. A failing
     /// command does not stop the ones after it on the same line only if it is not a
     /// write: after a failed command the rest of the line is skipped (the line is treated

@@ -45,6 +45,7 @@ fn eeprom(sh: &mut Shell, args: Args) -> Result<Outcome> {
                 .with("file", file)
         }
         ["restore", file] => {
+            sh.session.check_read(file)?;
             let bytes = std::fs::read(file).map_err(|e| Error::io(format!("cannot read {file}")).cause(e))?;
             let room = (last - first + 1) as usize;
             if bytes.len() > room {

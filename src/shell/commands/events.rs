@@ -127,7 +127,8 @@ fn wait(sh: &mut Shell, args: Args) -> Result<Outcome> {
                 Some(None) => deadline,
                 _ => (now + Duration::from_millis(1)).min(deadline),
             };
-            clock.step(target.saturating_sub(now).max(Duration::from_nanos(1)).min(deadline - now));
+            let step = target.saturating_sub(now).max(Duration::from_nanos(1)).min(deadline - now);
+            clock.step(sh.session.budget_step(step)?);
         } else {
             sh.session.sleep((deadline - now).min(Duration::from_millis(5)));
         }

@@ -77,6 +77,7 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
                 let &(c2, path) = words
                     .get(2)
                     .ok_or_else(|| Error::usage("sim program load needs a file, e.g. scripts/fx_blink.il").column(c))?;
+                sh.session.check_read(path).map_err(|e| e.device(&name).column(c2))?;
                 let text = crate::core::encoding::read_source(path)
                     .map_err(|e| Error::io(format!("cannot read {path}: {e}")).device(&name).column(c2))?;
                 let loaded = crate::fx::program::Loaded::load(&text, path, m.model).map_err(|e| e.device(&name))?;

@@ -11,6 +11,7 @@ mod fxsim;
 mod help;
 mod io;
 mod k2cmd;
+mod lab;
 pub mod lua;
 pub mod models;
 pub mod paths;
@@ -71,6 +72,7 @@ pub static COMMANDS: &[CommandSpec] = &[
     eeprom::EEPROM,
     lua::LUA,
     agent::AGENT,
+    lab::LAB,
     models::MODELS,
     ports::PORTS,
     paths::PATHS,

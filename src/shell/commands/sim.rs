@@ -59,6 +59,7 @@ fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
                 ))
                 .column(args.offset + 5));
             }
+            let step = sh.session.budget_step(step)?;
             clock.step(step);
         }
         "clock" => match args.text.split_whitespace().nth(1).map(str::to_ascii_lowercase).as_deref() {

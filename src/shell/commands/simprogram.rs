@@ -99,6 +99,9 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
     let words: Vec<&str> = args.text.split_whitespace().collect();
     let dev = sh.session.current_index()?;
     let name = k2cmd::name(sh, dev);
+    if let (Some(&"load"), Some(path)) = (words.get(1), words.get(2)) {
+        sh.session.check_read(path)?;
+    }
     let s = k2cmd::sim(sh, dev, &format!("sim {sub}"))?;
     s.advance();
     let mode = |w: Option<&&str>| -> Result<Mode> {

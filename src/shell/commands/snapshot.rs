@@ -11,6 +11,10 @@ use std::time::Duration;
 pub fn run(sh: &mut Shell, sub: &str, rest: Vec<&str>, offset: usize) -> Result<Outcome> {
     let usage = "sim snapshot save NAME | sim snapshot restore NAME | sim snapshots";
     if sub == "snapshots" {
+        if sh.session.confine.is_some() {
+            return Err(Error::unsupported("`sim snapshots` lists the user's data directory: not in a sandboxed run")
+                .hint("a sandboxed run keeps snapshots as files under its write directory"));
+        }
         let rows: Vec<Vec<String>> =
             snapshot::list().into_iter().map(|(n, p)| vec![n, p.display().to_string()]).collect();
         let names: Vec<String> = rows.iter().map(|r| r[0].clone()).collect();
@@ -28,7 +32,7 @@ pub fn run(sh: &mut Shell, sub: &str, rest: Vec<&str>, offset: usize) -> Result<
             return Err(Error::usage(format!("`sim snapshot` needs save or restore and a name: {usage}")).column(offset))
         }
     };
-    let path = snapshot::locate(name)?;
+    let path = sh.session.snapshot_file(name, verb == "save")?;
     match verb {
         "save" => {
             let snap = Snapshot::capture(&mut sh.session)?;

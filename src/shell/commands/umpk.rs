@@ -188,6 +188,7 @@ pub fn sim_program(sh: &mut Shell, args: Args) -> Result<Outcome> {
             let &(c, path) = words.get(2).ok_or_else(|| {
                 Error::usage("sim program load needs a file, e.g. sim program load scripts/umpk_lab1.il").column(col)
             })?;
+            sh.session.check_read(path).map_err(|e| e.device(&name).column(c))?;
             let text = crate::core::encoding::read_source(path)
                 .map_err(|e| Error::io(format!("cannot read {path}: {e}")).device(&name).column(c))?;
             let r = crate::umpk::sim::program::IlRunner::load(&text, path, u.model).map_err(|e| e.device(&name))?;
@@ -376,6 +377,7 @@ fn program(sh: &mut Shell, dev: usize, rest: &[Word], col: usize) -> Result<Outc
             Some(v.as_bytes().to_vec())
         }
     };
+    sh.session.check_read(file).map_err(|e| e.column(fc))?;
     let text =
         std::fs::read_to_string(file).map_err(|e| Error::io(format!("cannot read {file}")).cause(e).column(fc))?;
     let d = driver(sh, dev);

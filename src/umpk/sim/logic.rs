@@ -54,7 +54,7 @@ impl Image {
 }
 
 /// A timer's delay group (Table 5).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum Group {
     /// 10 ms – 2.55 s in 10 ms steps.
     Ms10 = 0,
@@ -79,7 +79,7 @@ impl Group {
 }
 
 /// An on-delay timer.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct OnDelay {
     pub group: Group,
     /// 1–255 steps of the group.
@@ -116,7 +116,7 @@ impl OnDelay {
 }
 
 /// A divide-by-N counter.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct Divider {
     /// Division ratio 1–255.
     pub ratio: u8,
@@ -158,7 +158,7 @@ impl Divider {
 /// The timers and counters of one controller, updated by the program each cycle, and what
 /// the cycle reports to the controller: error codes for the history and whether the program
 /// stopped.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct Logic {
     pub timers: Vec<OnDelay>,
     pub counters: Vec<Divider>,
@@ -291,6 +291,11 @@ pub trait Runner: Send {
     }
     /// Starts the program afresh (a reset or power-up after it stopped).
     fn restart(&mut self) {}
+    /// Its state for a snapshot; `None` for a program a snapshot cannot hold (one given as
+    /// code, like the built-in reference solutions).
+    fn save(&self) -> Option<super::snapshot::IlState> {
+        None
+    }
 }
 
 /// A program given as a closure (tests, built-in demonstrations).

@@ -37,6 +37,7 @@ pub mod logic;
 pub mod program;
 pub mod reference;
 pub mod serve;
+pub mod snapshot;
 pub mod state;
 
 use super::codec::{
@@ -105,7 +106,7 @@ struct Programming {
 }
 
 /// A square wave on an input.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Wave {
     pub input: u8,
     /// Period in cycles (≥ 2).

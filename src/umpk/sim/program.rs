@@ -275,8 +275,12 @@ fn check(p: &Program) -> Result<()> {
 /// An IL program loaded into the simulated UMPK.
 pub struct IlRunner {
     prog: Program,
-    cpu: Cpu,
-    file: String,
+    pub(crate) cpu: Cpu,
+    pub(crate) file: String,
+    /// The source, kept for snapshots (compiled again on restore).
+    text: String,
+    /// The name given at load (a path), for messages on restore.
+    source: String,
     /// Program time of the last cycle (ns, from the cost table).
     last_ns: u64,
     /// Why the program stopped (a fault: the watchdog), if it did.
@@ -291,7 +295,11 @@ impl IlRunner {
         check(&prog)?;
         let cpu = Cpu::new(&prog);
         let name = std::path::Path::new(file).file_name().map_or(file.into(), |n| n.to_string_lossy().into_owned());
-        Ok(IlRunner { prog, cpu, file: name, last_ns: 0, fault: None })
+        Ok(IlRunner { prog, cpu, file: name, text: text.into(), source: file.into(), last_ns: 0, fault: None })
+    }
+
+    pub(crate) fn set_last_ns(&mut self, ns: u64) {
+        self.last_ns = ns;
     }
 
     /// Instructions in the source.
@@ -318,6 +326,16 @@ impl Runner for IlRunner {
             scan.stop(code);
             self.fault = Some(format!("line {}: {} ({})", f.line, f.message, f.instruction));
         }
+    }
+
+    fn save(&self) -> Option<super::snapshot::IlState> {
+        Some(super::snapshot::IlState {
+            source: self.source.clone(),
+            text: self.text.clone(),
+            cpu: self.cpu.clone(),
+            last_ns: self.last_ns,
+            fault: self.fault.clone(),
+        })
     }
 
     fn restart(&mut self) {

@@ -1,0 +1,111 @@
+//! `plcsh lab new NAME`, `plcsh lab check LAB`, `plcsh lab grade LAB SUBMISSIONS… [--jobs N]
+//! [--junit FILE]`: thin calls into [`crate::lab`]. A lab builds its own simulators from its
+//! `lab.toml` (never the user's state file, profiles or `--device`s), so this runs before the
+//! session is built. Exit status: `check` 1 when the reference does not get every point;
+//! `grade` 0 when every submission was graded (whatever the grades), 1 on a grader error.
+
+use crate::output::{self, Style};
+use clap::Subcommand;
+use std::io::Write;
+use std::path::PathBuf;
+
+#[derive(Subcommand, Debug)]
+pub enum LabCmd {
+    /// Write a working example lab (K2 + drive with wiring, IL starter, Lua grader) into NAME.
+    New {
+        /// The new lab's folder.
+        name: PathBuf,
+    },
+    /// Check a lab: its lab.toml, files and start state, and the grader on the reference solution.
+    Check {
+        /// The lab folder (or its lab.toml).
+        lab: PathBuf,
+    },
+    /// Grade submissions (files or folders of .lua / .il files), each in a fresh sandboxed worker.
+    Grade {
+        /// The lab folder (or its lab.toml).
+        lab: PathBuf,
+        /// Submission files or folders.
+        #[arg(required = true)]
+        submissions: Vec<PathBuf>,
+        /// Worker processes at a time (default: one per core).
+        #[arg(long, value_name = "N")]
+        jobs: Option<usize>,
+        /// Also write the results as JUnit XML to FILE.
+        #[arg(long, value_name = "FILE")]
+        junit: Option<PathBuf>,
+    },
+    /// Grade one submission and print its report as JSON (what `lab grade` runs per submission).
+    #[command(hide = true)]
+    Worker { lab: PathBuf, submission: String },
+}
+
+pub fn run(cmd: &LabCmd, style: Style, out: &mut dyn Write) -> i32 {
+    let fail = |out: &mut dyn Write, name: &str, e: &crate::core::Error| {
+        let _ = output::report_error(out, style, name, e, None);
+        if e.kind == crate::core::ErrorKind::Usage {
+            2
+        } else {
+            1
+        }
+    };
+    match cmd {
+        LabCmd::New { name } => match crate::lab::new_lab(name) {
+            Ok(o) => i32::from(output::write_outcome(out, style, &o).is_err()),
+            Err(e) => fail(out, "lab new", &e),
+        },
+        LabCmd::Check { lab } => match crate::lab::check(lab) {
+            Ok((o, head, ok)) => {
+                if style.json {
+                    let mut v = o.to_json();
+                    v["ok"] = ok.into();
+                    if !ok {
+                        v["error"] = serde_json::json!({"kind": "state", "message": head});
+                    }
+                    let _ = writeln!(out, "{v}");
+                } else {
+                    let _ = writeln!(out, "{head}");
+                    let _ = output::write_outcome(out, style, &o);
+                }
+                i32::from(!ok)
+            }
+            Err(e) => fail(out, "lab check", &e),
+        },
+        LabCmd::Grade { lab, submissions, jobs, junit } => {
+            let jobs = jobs.unwrap_or_else(crate::lab::runner::default_jobs);
+            let (l, reports) = match crate::lab::grade(lab, submissions, jobs) {
+                Ok(x) => x,
+                Err(e) => return fail(out, "lab grade", &e),
+            };
+            if let Some(path) = junit {
+                if let Err(e) = std::fs::write(path, crate::lab::runner::junit(&l, &reports)) {
+                    return fail(
+                        out,
+                        "lab grade",
+                        &crate::core::Error::io(format!("cannot write {}", path.display())).cause(e),
+                    );
+                }
+            }
+            if style.json {
+                for r in &reports {
+                    let _ = writeln!(out, "{}", crate::lab::report_json(r));
+                }
+            }
+            let (head, o) = crate::lab::summary(&l, &reports);
+            if !style.json {
+                let _ = writeln!(out, "{head}");
+            }
+            let _ = output::write_outcome(out, style, &o);
+            if !style.json {
+                // Why each criterion failed: expected, got, and when.
+                for r in &reports {
+                    for c in r.criteria.iter().filter(|c| !c.passed && !c.skipped) {
+                        let _ = writeln!(out, "{}: {}: {}", r.student, c.name, c.why());
+                    }
+                }
+            }
+            i32::from(reports.iter().any(|r| r.verdict.starts_with("grader error")))
+        }
+        LabCmd::Worker { lab, submission } => crate::lab::worker(lab, submission),
+    }
+}

@@ -1,0 +1,150 @@
+//! The rules of a sandboxed run (`plcsh run --sandbox`, every submission and grader that
+//! `plcsh lab` runs), held by the session so that every path obeys them: the session refuses
+//! to open a real device here ([`crate::session::Session::open`] asks [`Confinement::check_url`]
+//! before any transport is touched), shell commands that read or write files ask
+//! [`Confinement::check_read`] / [`Confinement::check_write`], and snapshots are files under
+//! the write directory, never named snapshots in the user's data directory. The Lua side
+//! (`script::sandbox`) removes the parts of Lua that reach outside plcsh and routes Lua's own
+//! file functions through the same checks.
+
+use crate::core::url::DeviceUrl;
+use crate::core::{Error, Result};
+use std::path::{Path, PathBuf};
+
+/// Device URL schemes a sandboxed run may open: the in-process simulators.
+pub const SIMULATED: &[&str] = &["sim", "sim-servo", "sim-umpk", "sim-fx"];
+
+/// What a sandboxed run may touch.
+#[derive(Clone, Debug, Default)]
+pub struct Confinement {
+    /// Folders whose files may be read (the lab folder, the submission's folder, the write directory).
+    pub read: Vec<PathBuf>,
+    /// The one folder files may be written in (none: no file is written).
+    pub write: Option<PathBuf>,
+}
+
+fn canon(p: &Path) -> PathBuf {
+    p.canonicalize().unwrap_or_else(|_| p.to_path_buf())
+}
+
+/// `path` with `..` and symbolic links resolved as far as the file system allows (a file that
+/// does not exist yet resolves through its folder).
+fn resolve(path: &Path) -> Option<PathBuf> {
+    if let Ok(p) = path.canonicalize() {
+        return Some(p);
+    }
+    let name = path.file_name()?;
+    let parent = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    Some(parent.canonicalize().ok()?.join(name))
+}
+
+impl Confinement {
+    pub fn new(read: Vec<PathBuf>, write: Option<PathBuf>) -> Confinement {
+        let write = write.map(|w| canon(&w));
+        let mut read: Vec<PathBuf> = read.iter().map(|r| canon(r)).collect();
+        read.extend(write.clone());
+        Confinement { read, write }
+    }
+
+    /// Refuses every device URL but the in-process simulators, and a simulator's file
+    /// parameters outside the run's folders. Called where the session opens devices.
+    pub fn check_url(&self, url: &str) -> Result<()> {
+        let u = DeviceUrl::parse(url)?;
+        let scheme = u.scheme.to_ascii_lowercase();
+        if !SIMULATED.contains(&scheme.as_str()) {
+            return Err(Error::unsupported(format!(
+                "{url} is a real device: a sandboxed run opens simulated devices only"
+            ))
+            .hint("in the sandbox use sim:MODEL, sim-servo:, sim-umpk:MODEL or sim-fx:MODEL"));
+        }
+        if let Some(p) = u.param("program") {
+            self.check_read(p)?;
+        }
+        if let Some(s) = u.param("state") {
+            self.check_write(s)?;
+        }
+        Ok(())
+    }
+
+    /// Refuses reading `path` outside the run's folders.
+    pub fn check_read(&self, path: &str) -> Result<()> {
+        match resolve(Path::new(path)) {
+            Some(r) if self.read.iter().any(|d| r.starts_with(d)) => Ok(()),
+            _ => Err(Error::unsupported(format!("reading {path} is outside the sandbox's folders"))
+                .hint(format!("a sandboxed run reads files only under {}", self.folders()))),
+        }
+    }
+
+    /// Refuses writing `path` outside the write directory.
+    pub fn check_write(&self, path: &str) -> Result<()> {
+        crate::shell::files::check_write(&Some(self.write.clone()), path)
+    }
+
+    /// The file of snapshot `name` for saving (`save`) or restoring: a path under the run's
+    /// folders; a bare name (the user's data directory) is refused.
+    pub fn snapshot_file(&self, name: &str, save: bool) -> Result<PathBuf> {
+        if !(name.contains('/') || name.ends_with(".json")) {
+            return Err(Error::unsupported(format!(
+                "the named snapshot `{name}` lives in the user's data directory, which a sandboxed run may not touch"
+            ))
+            .hint("give a file path under the write directory, e.g. out/start.json"));
+        }
+        if save {
+            self.check_write(name)?;
+        } else {
+            self.check_read(name)?;
+        }
+        Ok(PathBuf::from(name))
+    }
+
+    fn folders(&self) -> String {
+        if self.read.is_empty() {
+            return "no folder".into();
+        }
+        self.read.iter().map(|p| p.display().to_string()).collect::<Vec<_>>().join(", ")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn real_devices_are_refused_and_simulators_allowed() {
+        let c = Confinement::new(vec![std::env::temp_dir()], None);
+        for url in [
+            "tcp://127.0.0.1:502",
+            "rtu:/dev/ttyUSB0",
+            "rtu+tcp://10.0.0.1:4001",
+            "kinco:/dev/ttyUSB0?id=1",
+            "kinco+rfc2217://h:1",
+            "umpk:/dev/ttyS0",
+            "umpk+tcp://h:1",
+            "fx:/dev/ttyS0",
+            "fxlink:COM3",
+        ] {
+            let e = c.check_url(url).unwrap_err();
+            assert!(e.to_string().contains("sandboxed run"), "{url}: {e}");
+        }
+        for url in ["sim:K205-16DT", "sim-servo:?id=1", "sim-umpk:UMPK16", "sim-fx:FX2N"] {
+            c.check_url(url).unwrap();
+        }
+        assert!(c.check_url("sim-umpk:UMPK16?state=/etc/flash.json").is_err());
+        assert!(c.check_url("sim:K205-16DT?program=/etc/passwd").is_err());
+    }
+
+    #[test]
+    fn reads_stay_in_the_folders_and_named_snapshots_are_refused() {
+        let d = std::env::temp_dir().join(format!("plcsh-confine-{}", std::process::id()));
+        std::fs::create_dir_all(d.join("out")).unwrap();
+        std::fs::write(d.join("a.txt"), "x").unwrap();
+        let c = Confinement::new(vec![d.clone()], Some(d.join("out")));
+        c.check_read(d.join("a.txt").to_str().unwrap()).unwrap();
+        assert!(c.check_read("/etc/passwd").is_err());
+        assert!(c.check_read(d.join("../x").to_str().unwrap()).is_err());
+        assert!(c.snapshot_file("lab1", true).is_err());
+        assert!(c.snapshot_file(d.join("grade.json").to_str().unwrap(), true).is_err());
+        c.snapshot_file(d.join("out/s.json").to_str().unwrap(), true).unwrap();
+        std::fs::remove_dir_all(&d).unwrap();
+    }
+}

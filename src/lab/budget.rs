@@ -1,0 +1,153 @@
+//! A graded run's limits, counted in things that do not depend on the machine: simulated time
+//! (waits stop at the limit, [`Budget::cap_wait`]), Lua instructions (counted by the
+//! interpreter's instruction hook) and Lua memory (the interpreter's allocator limit), with a
+//! wall-clock limit only as a safety net (the parent process ends a worker that passes it).
+//! The verdicts name the limit ("exceeded 10 simulated minutes"), so a submission gets the
+//! same verdict on an idle machine and on a loaded one.
+
+use crate::core::Clock;
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::Mutex;
+use std::time::Duration;
+
+/// The limits of one run, and which one it passed first.
+#[derive(Debug, Default)]
+pub struct Budget {
+    /// Simulated time from `start`.
+    pub sim_time: Option<Duration>,
+    pub start: Duration,
+    pub instructions: Option<u64>,
+    pub memory: Option<usize>,
+    executed: AtomicU64,
+    exceeded: Mutex<Option<String>>,
+}
+
+/// `600 s` → `10 simulated minutes`; `90 s` → `90 simulated seconds`.
+pub fn describe_time(d: Duration) -> String {
+    let s = d.as_secs_f64();
+    if s >= 60.0 && (s / 60.0).fract() == 0.0 {
+        let m = s / 60.0;
+        format!("{m} simulated minute{}", if m == 1.0 { "" } else { "s" })
+    } else {
+        format!("{} simulated second{}", trim(s), if s == 1.0 { "" } else { "s" })
+    }
+}
+
+/// `50_000_000` → `50 M`.
+pub fn describe_count(n: u64) -> String {
+    if n >= 1_000_000 && n.is_multiple_of(100_000) {
+        format!("{} M", trim(n as f64 / 1e6))
+    } else {
+        n.to_string()
+    }
+}
+
+/// `268435456` → `256 MiB`.
+pub fn describe_bytes(n: usize) -> String {
+    if n >= 1 << 20 {
+        format!("{} MiB", trim(n as f64 / (1u64 << 20) as f64))
+    } else {
+        format!("{n} bytes")
+    }
+}
+
+fn trim(x: f64) -> String {
+    let s = format!("{x:.3}");
+    s.trim_end_matches('0').trim_end_matches('.').to_string()
+}
+
+impl Budget {
+    pub fn new(sim_time: Option<Duration>, instructions: Option<u64>, memory: Option<usize>, clock: &Clock) -> Budget {
+        Budget { sim_time, start: clock.now(), instructions, memory, ..Default::default() }
+    }
+
+    /// Notes the first limit passed (later ones do not replace it).
+    pub fn exceed(&self, why: String) {
+        let mut e = self.exceeded.lock().unwrap_or_else(|p| p.into_inner());
+        if e.is_none() {
+            *e = Some(why);
+        }
+    }
+
+    /// The limit the run passed, as its verdict.
+    pub fn exceeded(&self) -> Option<String> {
+        self.exceeded.lock().unwrap_or_else(|p| p.into_inner()).clone()
+    }
+
+    fn deadline(&self) -> Option<Duration> {
+        self.sim_time.map(|t| self.start + t)
+    }
+
+    /// A wait of `d` from now: `Some(d)` within the limit; otherwise the clock moves to the
+    /// limit (stepped time), the limit is noted and the wait ends the run (`None`).
+    pub fn cap_wait(&self, clock: &Clock, d: Duration) -> Option<Duration> {
+        let Some(deadline) = self.deadline() else { return Some(d) };
+        let now = clock.now();
+        if now + d <= deadline {
+            return Some(d);
+        }
+        if clock.is_stepped() && deadline > now {
+            clock.step(deadline - now);
+        }
+        self.exceed(format!("exceeded {}", describe_time(self.sim_time.unwrap_or_default())));
+        None
+    }
+
+    /// Counts `n` more Lua instructions and checks the limits; the verdict when one is passed.
+    pub fn tick(&self, n: u64, clock: &Clock) -> Option<String> {
+        let done = self.executed.fetch_add(n, Ordering::Relaxed) + n;
+        if let Some(max) = self.instructions {
+            if done > max {
+                self.exceed(format!("exceeded {} Lua instructions", describe_count(max)));
+            }
+        }
+        if let Some(deadline) = self.deadline() {
+            if clock.now() > deadline {
+                self.exceed(format!("exceeded {}", describe_time(self.sim_time.unwrap_or_default())));
+            }
+        }
+        self.exceeded()
+    }
+
+    /// Simulated time used since the start (at most the limit).
+    pub fn used(&self, clock: &Clock) -> Duration {
+        let used = clock.now().saturating_sub(self.start);
+        self.sim_time.map_or(used, |t| used.min(t))
+    }
+
+    /// The memory verdict.
+    pub fn memory_verdict(&self) -> Option<String> {
+        self.memory.map(|m| format!("exceeded {} of Lua memory", describe_bytes(m)))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn verdicts_name_the_limit() {
+        assert_eq!(describe_time(Duration::from_secs(600)), "10 simulated minutes");
+        assert_eq!(describe_time(Duration::from_secs(90)), "90 simulated seconds");
+        assert_eq!(describe_count(50_000_000), "50 M");
+        assert_eq!(describe_bytes(256 << 20), "256 MiB");
+    }
+
+    #[test]
+    fn a_wait_past_the_limit_stops_at_the_limit() {
+        let clock = Clock::stepped();
+        let b = Budget::new(Some(Duration::from_secs(600)), None, None, &clock);
+        assert_eq!(b.cap_wait(&clock, Duration::from_secs(10)), Some(Duration::from_secs(10)));
+        assert_eq!(b.cap_wait(&clock, Duration::from_secs(3600)), None);
+        assert_eq!(clock.now(), Duration::from_secs(600));
+        assert_eq!(b.exceeded().unwrap(), "exceeded 10 simulated minutes");
+    }
+
+    #[test]
+    fn instructions_are_counted() {
+        let clock = Clock::stepped();
+        let b = Budget::new(None, Some(5000), None, &clock);
+        assert!(b.tick(4000, &clock).is_none());
+        assert_eq!(b.tick(2000, &clock).unwrap(), "exceeded 5000 Lua instructions");
+    }
+}

@@ -1,0 +1,231 @@
+//! `lab.toml`: what a teaching lab is made of — its devices (a bench file or a `[devices]`
+//! table), a start snapshot, the starter files handed to students, the reference solution,
+//! the grader script, the limits of one graded run and the points of each criterion. Parsed
+//! once, checked whole (every file named exists, inside the lab folder), with messages that
+//! name the key and what to write.
+
+use crate::core::{Error, Result};
+use serde::Deserialize;
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::time::Duration;
+
+/// The file name of a lab's description, in the lab folder.
+pub const FILE: &str = "lab.toml";
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Raw {
+    title: String,
+    bench: Option<String>,
+    #[serde(default)]
+    devices: BTreeMap<String, String>,
+    snapshot: Option<String>,
+    #[serde(default)]
+    starter: Vec<String>,
+    reference: String,
+    grader: String,
+    /// The device an IL submission is loaded into.
+    device: Option<String>,
+    #[serde(default)]
+    budget: RawBudget,
+    #[serde(default)]
+    points: BTreeMap<String, f64>,
+}
+
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct RawBudget {
+    sim_time: Option<String>,
+    instructions: Option<u64>,
+    memory: Option<String>,
+    wall: Option<String>,
+}
+
+/// One graded run's limits ([`super::budget`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Limits {
+    pub sim_time: Duration,
+    pub instructions: u64,
+    pub memory: usize,
+    pub wall: Duration,
+}
+
+impl Default for Limits {
+    fn default() -> Limits {
+        Limits {
+            sim_time: Duration::from_secs(600),
+            instructions: 50_000_000,
+            memory: 256 << 20,
+            wall: Duration::from_secs(60),
+        }
+    }
+}
+
+/// A lab, checked.
+#[derive(Clone, Debug)]
+pub struct Lab {
+    /// The lab folder (absolute).
+    pub dir: PathBuf,
+    pub title: String,
+    pub bench: Option<PathBuf>,
+    pub devices: Vec<(String, String)>,
+    pub snapshot: Option<PathBuf>,
+    pub starter: Vec<PathBuf>,
+    pub reference: PathBuf,
+    pub grader: PathBuf,
+    pub device: String,
+    pub limits: Limits,
+    pub points: BTreeMap<String, f64>,
+}
+
+fn duration(key: &str, text: &str) -> Result<Duration> {
+    let t = text.trim().replace("min", "m");
+    let us = crate::core::literal::parse_duration_us(&t).map_err(|e| {
+        Error::usage(format!("{FILE}: [budget] {key} = \"{text}\": {e}")).hint("e.g. \"10min\", \"90s\"")
+    })?;
+    if us <= 0 {
+        return Err(Error::usage(format!("{FILE}: [budget] {key} must be more than zero")));
+    }
+    Ok(Duration::from_micros(us as u64))
+}
+
+fn bytes(text: &str) -> Result<usize> {
+    let t = text.trim();
+    let (num, mult) = [("GiB", 1usize << 30), ("MiB", 1 << 20), ("KiB", 1 << 10), ("B", 1)]
+        .iter()
+        .find_map(|(u, m)| t.strip_suffix(u).map(|n| (n.trim(), *m)))
+        .unwrap_or((t, 1));
+    match num.parse::<usize>() {
+        Ok(n) if n > 0 => Ok(n.saturating_mul(mult)),
+        _ => Err(Error::usage(format!("{FILE}: [budget] memory = \"{text}\" is not a size"))
+            .hint("e.g. \"256MiB\" (units B, KiB, MiB, GiB)")),
+    }
+}
+
+impl Lab {
+    /// Reads `LAB/lab.toml` (`path` may name the folder or the file).
+    pub fn load(path: &Path) -> Result<Lab> {
+        let file = if path.is_dir() { path.join(FILE) } else { path.to_path_buf() };
+        let text = std::fs::read_to_string(&file).map_err(|e| {
+            Error::io(format!("cannot read {}", file.display()))
+                .cause(e)
+                .hint("a lab is a folder with a lab.toml; `plcsh lab new NAME` writes an example")
+        })?;
+        let dir = file.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+        let dir = dir.canonicalize().map_err(|e| Error::io(format!("cannot open {}", dir.display())).cause(e))?;
+        Lab::parse(&text, &dir)
+    }
+
+    /// Parses the text of a `lab.toml` whose folder is `dir`.
+    pub fn parse(text: &str, dir: &Path) -> Result<Lab> {
+        let raw: Raw =
+            toml::from_str(text).map_err(|e| Error::usage(format!("{}: {}", dir.join(FILE).display(), e.message())))?;
+        let file = |key: &str, name: &str| -> Result<PathBuf> {
+            let p = dir.join(name);
+            let real = p.canonicalize().map_err(|e| {
+                Error::usage(format!("{FILE}: {key} = \"{name}\": no such file in {}", dir.display())).cause(e)
+            })?;
+            if !real.starts_with(dir) {
+                return Err(Error::usage(format!("{FILE}: {key} = \"{name}\" is outside the lab folder"))
+                    .hint("a lab's files live in its folder, so the lab can be copied whole"));
+            }
+            Ok(real)
+        };
+        if raw.bench.is_some() != raw.devices.is_empty() {
+            return Err(Error::usage(format!(
+                "{FILE}: give the devices as bench = \"FILE\" or as a [devices] table (one of the two)"
+            ))
+            .hint("e.g. [devices] plc = \"sim:K205-16DT\""));
+        }
+        let devices: Vec<(String, String)> = raw.devices.into_iter().collect();
+        let rules = crate::confine::Confinement::new(vec![dir.to_path_buf()], None);
+        for (name, url) in &devices {
+            rules.check_url(url).map_err(|e| Error::usage(format!("{FILE}: [devices] {name}: {}", e.message)))?;
+        }
+        let b = raw.budget;
+        let d = Limits::default();
+        let limits = Limits {
+            sim_time: b.sim_time.as_deref().map(|t| duration("sim_time", t)).transpose()?.unwrap_or(d.sim_time),
+            instructions: match b.instructions {
+                Some(0) => return Err(Error::usage(format!("{FILE}: [budget] instructions must be more than zero"))),
+                Some(n) => n,
+                None => d.instructions,
+            },
+            memory: b.memory.as_deref().map(bytes).transpose()?.unwrap_or(d.memory),
+            wall: b.wall.as_deref().map(|t| duration("wall", t)).transpose()?.unwrap_or(d.wall),
+        };
+        for (k, v) in &raw.points {
+            if !v.is_finite() || *v < 0.0 {
+                return Err(Error::usage(format!("{FILE}: [points] \"{k}\" = {v}: points are a number ≥ 0")));
+            }
+        }
+        Ok(Lab {
+            dir: dir.to_path_buf(),
+            title: raw.title,
+            bench: raw.bench.as_deref().map(|b| file("bench", b)).transpose()?,
+            devices,
+            snapshot: raw.snapshot.as_deref().map(|s| file("snapshot", s)).transpose()?,
+            starter: raw.starter.iter().map(|s| file("starter", s)).collect::<Result<_>>()?,
+            reference: file("reference", &raw.reference)?,
+            grader: file("grader", &raw.grader)?,
+            device: raw.device.unwrap_or_else(|| "plc".into()),
+            limits,
+            points: raw.points,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn lab_dir(files: &[(&str, &str)]) -> PathBuf {
+        use std::sync::atomic::{AtomicU32, Ordering};
+        static N: AtomicU32 = AtomicU32::new(0);
+        let d = std::env::temp_dir().join(format!(
+            "plcsh-labcfg-{}-{}",
+            std::process::id(),
+            N.fetch_add(1, Ordering::Relaxed)
+        ));
+        std::fs::create_dir_all(&d).unwrap();
+        for (n, t) in files {
+            std::fs::write(d.join(n), t).unwrap();
+        }
+        d.canonicalize().unwrap()
+    }
+
+    #[test]
+    fn a_lab_parses_with_its_limits() {
+        let d = lab_dir(&[("ref.il", ""), ("g.lua", "")]);
+        let lab = Lab::parse(
+            "title = \"t\"\nreference = \"ref.il\"\ngrader = \"g.lua\"\n[devices]\nplc = \"sim:K205-16DT\"\n[budget]\nsim_time = \"2min\"\nmemory = \"64MiB\"\n[points]\nstarts = 2\n",
+            &d,
+        )
+        .unwrap();
+        assert_eq!(lab.limits.sim_time, Duration::from_secs(120));
+        assert_eq!(lab.limits.memory, 64 << 20);
+        assert_eq!(lab.limits.instructions, 50_000_000);
+        assert_eq!(lab.points["starts"], 2.0);
+        std::fs::remove_dir_all(&d).unwrap();
+    }
+
+    #[test]
+    fn bad_labs_are_refused_with_the_key() {
+        let d = lab_dir(&[("ref.il", ""), ("g.lua", "")]);
+        let base = "title = \"t\"\nreference = \"ref.il\"\ngrader = \"g.lua\"\n";
+        let cases = [
+            (format!("{base}[devices]\nplc = \"tcp://10.0.0.1:502\"\n"), "real device"),
+            (base.to_string(), "one of the two"),
+            (format!("{base}snapshot = \"../x.json\"\n[devices]\nplc = \"sim:K205-16DT\"\n"), "snapshot"),
+            (format!("{base}[devices]\nplc = \"sim:K205-16DT\"\n[budget]\nsim_time = \"soon\"\n"), "sim_time"),
+            (format!("{base}[devices]\nplc = \"sim:K205-16DT\"\n[budget]\nmemory = \"lots\"\n"), "memory"),
+            (format!("{base}colour = 1\n[devices]\nplc = \"sim:K205-16DT\"\n"), "colour"),
+        ];
+        for (text, want) in cases {
+            let e = Lab::parse(&text, &d).unwrap_err().to_string();
+            assert!(e.contains(want), "{want}: {e}");
+        }
+        std::fs::remove_dir_all(&d).unwrap();
+    }
+}

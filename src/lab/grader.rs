@@ -1,0 +1,381 @@
+//! Grades one submission in this process: a fresh session from the lab's devices (never the
+//! user's state file or profiles), the start snapshot, the sandbox's rules and the run's
+//! limits, then the grader script with its `lab` table (`lab.lua`). The result is a
+//! [`Report`] with no wall-clock figure in it, so two runs give the same bytes.
+
+use super::budget::Budget;
+use super::config::Lab;
+use crate::confine::Confinement;
+use crate::core::{Clock, Error, ErrorKind};
+use crate::output::Style;
+use crate::script::{sandbox, Engine};
+use crate::session::Session;
+use crate::shell::Shell;
+use mlua::{Lua, MultiValue, Table, Value};
+use serde::{Deserialize, Serialize};
+use std::path::{Path, PathBuf};
+use std::sync::atomic::Ordering;
+use std::sync::Arc;
+
+/// One criterion's result.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct Criterion {
+    pub name: String,
+    pub points: f64,
+    pub max: f64,
+    pub passed: bool,
+    /// Not run (the run ended before the grader reached it).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub skipped: bool,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub what: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub expected: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub got: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub error: Option<String>,
+    /// Simulated time of the failure, seconds.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub at_s: Option<f64>,
+}
+
+impl Criterion {
+    /// `expected 1, got 0 at 2.5 s`.
+    pub fn why(&self) -> String {
+        if self.skipped {
+            return "not reached".into();
+        }
+        let at = self.at_s.map(|t| format!(" at {} s", trim(t))).unwrap_or_default();
+        match (&self.error, &self.expected, &self.got) {
+            (Some(e), _, _) => format!("{e}{at}"),
+            (None, Some(x), Some(g)) => {
+                let what = self.what.as_ref().map(|w| format!("{w}: ")).unwrap_or_default();
+                format!("{what}expected {x}, got {g}{at}")
+            }
+            _ => String::new(),
+        }
+    }
+}
+
+fn trim(x: f64) -> String {
+    let s = format!("{x:.3}");
+    s.trim_end_matches('0').trim_end_matches('.').to_string()
+}
+
+/// One submission's grade.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct Report {
+    pub student: String,
+    pub file: String,
+    pub points: f64,
+    pub max_points: f64,
+    pub criteria: Vec<Criterion>,
+    /// `passed`, `failed`, `runtime error: …`, `exceeded …`, `grader error: …`.
+    pub verdict: String,
+    pub sim_time_s: f64,
+}
+
+impl Report {
+    pub fn passed(&self) -> Vec<&str> {
+        self.criteria.iter().filter(|c| c.passed).map(|c| c.name.as_str()).collect()
+    }
+    pub fn failed(&self) -> Vec<&str> {
+        self.criteria.iter().filter(|c| !c.passed).map(|c| c.name.as_str()).collect()
+    }
+    /// A report for a submission that could not be run at all.
+    pub fn broken(lab: &Lab, file: &str, verdict: String) -> Report {
+        let criteria: Vec<Criterion> = lab.points.iter().map(|(n, p)| skipped(n, *p)).collect();
+        Report {
+            student: student_name(Path::new(file)),
+            file: file.to_string(),
+            points: 0.0,
+            max_points: criteria.iter().map(|c| c.max).sum(),
+            criteria,
+            verdict,
+            sim_time_s: 0.0,
+        }
+    }
+}
+
+fn skipped(name: &str, max: f64) -> Criterion {
+    Criterion {
+        name: name.into(),
+        points: 0.0,
+        max,
+        passed: false,
+        skipped: true,
+        what: None,
+        expected: None,
+        got: None,
+        error: None,
+        at_s: None,
+    }
+}
+
+/// The student's name: the submission's file name without its extension (or the folder's
+/// name for `NAME/main.lua`).
+pub fn student_name(file: &Path) -> String {
+    let stem = file.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
+    if stem == "main" {
+        if let Some(p) = file.parent().and_then(|p| p.file_name()) {
+            return p.to_string_lossy().into_owned();
+        }
+    }
+    stem
+}
+
+/// What a submission is, from its extension.
+fn kind(file: &Path) -> Option<&'static str> {
+    match file.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
+        Some("lua") => Some("lua"),
+        Some("il") => Some("il"),
+        _ => None,
+    }
+}
+
+/// A folder for one run's files, removed when dropped.
+struct WriteDir(PathBuf);
+
+impl WriteDir {
+    fn new() -> crate::core::Result<WriteDir> {
+        use std::sync::atomic::AtomicU64;
+        static N: AtomicU64 = AtomicU64::new(0);
+        let d = std::env::temp_dir().join(format!(
+            "plcsh-lab-{}-{}",
+            std::process::id(),
+            N.fetch_add(1, Ordering::Relaxed)
+        ));
+        std::fs::create_dir_all(&d).map_err(|e| Error::io(format!("cannot create {}", d.display())).cause(e))?;
+        Ok(WriteDir(d))
+    }
+}
+
+impl Drop for WriteDir {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+/// The lab's devices in a fresh session under `rules`, at the start snapshot.
+pub fn session(lab: &Lab, rules: Option<Arc<Confinement>>) -> crate::core::Result<Session> {
+    let mut s = Session::new(Clock::stepped());
+    s.confine = rules;
+    match &lab.bench {
+        Some(b) => {
+            let bench = crate::wiring::bench::Bench::load(b)?;
+            crate::wiring::bench::open(&mut s, &bench)?;
+        }
+        None => {
+            for (n, url) in &lab.devices {
+                s.open(n, url)?;
+            }
+        }
+    }
+    if s.index(&lab.device).is_ok() {
+        s.use_device(&lab.device)?;
+    }
+    if let Some(snap) = &lab.snapshot {
+        crate::snapshot::Snapshot::load(snap)?.restore(&mut s)?;
+    }
+    Ok(s)
+}
+
+/// Grades `file` (as given on the command line) against `lab`.
+pub fn grade(lab: &Lab, file: &str) -> Report {
+    let path = Path::new(file);
+    let Some(kind) = kind(path) else {
+        return Report::broken(lab, file, "not a submission: give a .lua script or an .il program".into());
+    };
+    if !path.is_file() {
+        return Report::broken(lab, file, "not a submission: no such file".into());
+    }
+    match run(lab, file, kind) {
+        Ok(r) => r,
+        Err(e) => Report::broken(lab, file, format!("grader error: {e}")),
+    }
+}
+
+fn run(lab: &Lab, file: &str, kind: &str) -> crate::core::Result<Report> {
+    let write = WriteDir::new()?;
+    let sub_dir = Path::new(file).parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    let rules = Arc::new(Confinement::new(vec![lab.dir.clone(), sub_dir.to_path_buf()], Some(write.0.clone())));
+    let session = session(lab, Some(rules.clone())).map_err(|e| e.cause("opening the lab's devices"))?;
+    let clock = session.clock.clone();
+    let mut shell = Shell::new(session, Style { json: false, color: false });
+    shell.confine(rules.clone());
+    let budget = Arc::new(Budget::new(
+        Some(lab.limits.sim_time),
+        Some(lab.limits.instructions),
+        Some(lab.limits.memory),
+        &clock,
+    ));
+    shell.session.budget = Some(budget.clone());
+    let interrupt = shell.session.interrupt.clone();
+    let script_err = |e: mlua::Error| Error::new(ErrorKind::Script, format!("cannot start Lua: {e}"));
+    let engine = Engine::new(interrupt.clone(), Box::new(std::io::sink())).map_err(script_err)?;
+    let lua = engine.lua();
+    sandbox::apply(lua, rules.clone()).map_err(script_err)?;
+    crate::script::paths::confine(lua, Some(&lab.dir)).map_err(script_err)?;
+    let student_env = sandbox::student_env(lua, rules).map_err(script_err)?;
+    install_lab(lua, lab, file, kind, student_env, budget.clone()).map_err(script_err)?;
+    engine.limit(budget.clone(), clock.clone(), interrupt).map_err(script_err)?;
+
+    let outcome = engine.run_file(&mut shell, &lab.grader, &[]);
+    let lua = engine.lua();
+    lua.remove_hook();
+    lua.set_memory_limit(0).ok();
+    let mut criteria = collect(lua).map_err(script_err)?;
+    for (name, p) in &lab.points {
+        if !criteria.iter().any(|c| &c.name == name) {
+            criteria.push(skipped(name, *p));
+        }
+    }
+    let student_error: Option<String> =
+        lua.globals().get::<Table>("lab").and_then(|l| l.get::<Option<String>>("_student_error")).ok().flatten();
+    let verdict = if let Some(v) = budget.exceeded() {
+        v
+    } else if outcome.as_ref().is_err_and(|f| f.error.message.contains("not enough memory")) {
+        budget.memory_verdict().unwrap_or_default()
+    } else if let Some(e) = student_error {
+        format!("runtime error: {}", e.lines().next().unwrap_or_default())
+    } else if let Err(f) = &outcome {
+        format!("grader error: {}", f.headline())
+    } else if criteria.iter().all(|c| c.passed) {
+        "passed".into()
+    } else {
+        "failed".into()
+    };
+    // The write directory's name changes from run to run: reports name it by its role.
+    let wd = write.0.canonicalize().unwrap_or_else(|_| write.0.clone()).display().to_string();
+    let hide = |s: &mut Option<String>| {
+        if let Some(t) = s {
+            *t = t.replace(&wd, "the write directory");
+        }
+    };
+    for c in &mut criteria {
+        hide(&mut c.error);
+        hide(&mut c.got);
+    }
+    let verdict = verdict.replace(&wd, "the write directory");
+    Ok(Report {
+        student: student_name(Path::new(file)),
+        file: file.to_string(),
+        points: criteria.iter().map(|c| c.points).sum(),
+        max_points: criteria.iter().map(|c| c.max).sum(),
+        criteria,
+        verdict,
+        sim_time_s: budget.used(&clock).as_secs_f64(),
+    })
+}
+
+/// The message of a student's error: `file:line: message`, without the traceback.
+fn student_message(e: &mlua::Error, file: &str) -> String {
+    let f = crate::script::error::failure(e).with_full_chunk_name(file);
+    f.headline().split("\nstack traceback:").next().unwrap_or_default().trim_end().to_string()
+}
+
+/// The grader's `lab` table, in the globals (a submission's environment has none).
+fn install_lab(lua: &Lua, lab: &Lab, file: &str, kind: &str, env: Table, budget: Arc<Budget>) -> mlua::Result<()> {
+    let t = lua.create_table()?;
+    t.set("title", lab.title.as_str())?;
+    t.set("submission", file)?;
+    t.set("student", student_name(Path::new(file)))?;
+    t.set("kind", kind)?;
+    t.set("device", lab.device.as_str())?;
+    t.set("dir", lab.dir.display().to_string())?;
+    let b = budget.clone();
+    t.set(
+        "_run_lua",
+        lua.create_function(move |lua, path: String| {
+            let code = std::fs::read(&path).map_err(|e| mlua::Error::runtime(format!("cannot read {path}: {e}")))?;
+            let f = lua
+                .load(&code[..])
+                .set_name(format!("@{path}"))
+                .set_mode(mlua::chunk::ChunkMode::Text)
+                .set_environment(env.clone())
+                .into_function();
+            let r = f.and_then(|f| f.call::<()>(()));
+            match r {
+                Ok(()) => Ok((true, None)),
+                Err(e) => {
+                    if matches!(e, mlua::Error::MemoryError(_)) {
+                        if let Some(v) = b.memory_verdict() {
+                            b.exceed(v);
+                        }
+                    }
+                    let stopped = b.exceeded().is_some()
+                        || lua
+                            .globals()
+                            .get::<Table>("plcsh")
+                            .and_then(|p| p.get::<mlua::Function>("_interrupted"))
+                            .and_then(|f| f.call::<bool>(()))
+                            .unwrap_or(false);
+                    if stopped {
+                        return Err(e);
+                    }
+                    let msg = student_message(&e, &path);
+                    let lab: Table = lua.globals().get("lab")?;
+                    lab.raw_set("_student_error", msg.clone())?;
+                    Ok((false, Some(msg)))
+                }
+            }
+        })?,
+    )?;
+    t.set(
+        "_load_il",
+        lua.create_function(|lua, (path, device): (String, String)| {
+            let plcsh: Table = lua.globals().get("plcsh")?;
+            let exec: mlua::Function = plcsh.get("exec")?;
+            let use_dev = format!("use {device}");
+            exec.call::<MultiValue>(use_dev)?;
+            match exec.call::<MultiValue>(format!("sim program load {path}")) {
+                Ok(_) => Ok((true, None)),
+                Err(e) => {
+                    // The program's own error names its file:line (not the grader's line).
+                    let f = crate::script::error::failure(&e);
+                    let msg = f.error.message.split('\n').next().unwrap_or_default().to_string();
+                    let lab: Table = lua.globals().get("lab")?;
+                    lab.raw_set("_student_error", msg.clone())?;
+                    Ok((false, Some(msg)))
+                }
+            }
+        })?,
+    )?;
+    let points = lua.create_table()?;
+    for (n, p) in &lab.points {
+        points.set(n.as_str(), *p)?;
+    }
+    lua.load(include_str!("lab.lua")).set_name("=plcsh:lab").call::<()>((t.clone(), points))?;
+    lua.globals().set("lab", t)?;
+    Ok(())
+}
+
+fn collect(lua: &Lua) -> mlua::Result<Vec<Criterion>> {
+    let lab: Table = lua.globals().get("lab")?;
+    let f: mlua::Function = lab.get("_collect")?;
+    let list: Table = f.call(())?;
+    let mut out = Vec::new();
+    for r in list.sequence_values::<Table>() {
+        let r = r?;
+        let s = |k: &str| -> mlua::Result<Option<String>> {
+            Ok(match r.get::<Value>(k)? {
+                Value::Nil => None,
+                v => Some(lua.coerce_string(v)?.map(|s| s.to_string_lossy()).unwrap_or_default()),
+            })
+        };
+        out.push(Criterion {
+            name: r.get("name")?,
+            points: r.get("points")?,
+            max: r.get("max")?,
+            passed: r.get("passed")?,
+            skipped: false,
+            what: s("what")?,
+            expected: s("expected")?,
+            got: s("got")?,
+            error: s("error")?,
+            at_s: r.get::<Option<f64>>("at")?.map(|t| (t * 1e6).round() / 1e6),
+        });
+    }
+    Ok(out)
+}

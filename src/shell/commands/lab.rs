@@ -1,0 +1,58 @@
+//! `lab new NAME`, `lab check LAB`, `lab grade LAB SUBMISSIONS… [jobs=N]`: teaching labs from
+//! the shell, the same calls as `plcsh lab …` ([`crate::lab`]). A lab builds its own
+//! simulators, so the session's devices are not touched. Refused in a sandboxed run (grading
+//! starts processes and writes lab folders).
+
+use super::CommandSpec;
+use crate::core::{Error, Result};
+use crate::output::Outcome;
+use crate::shell::{Args, Shell};
+
+pub const LAB: CommandSpec = CommandSpec {
+    name: "lab",
+    aliases: &[],
+    usage: "lab new NAME | lab check LAB | lab grade LAB SUBMISSIONS… [jobs=N]",
+    summary: "teaching labs: write an example lab, check a lab against its reference solution, grade submissions (sandboxed, in parallel)",
+    subcommands: &["new", "check", "grade"],
+    run: lab,
+};
+
+fn lab(sh: &mut Shell, args: Args) -> Result<Outcome> {
+    if sh.session.confine.is_some() {
+        return Err(Error::unsupported(
+            "`lab` is not available in a sandboxed run (it starts processes and writes folders)",
+        ));
+    }
+    let words: Vec<&str> = args.text.split_whitespace().collect();
+    let usage = LAB.usage;
+    match words.as_slice() {
+        ["new", name] => crate::lab::new_lab(std::path::Path::new(name)),
+        ["check", path] => {
+            let (o, head, ok) = crate::lab::check(std::path::Path::new(path))?;
+            if !ok {
+                return Err(Error::state(head).hint("the table from `plcsh lab check` names each criterion's result"));
+            }
+            Ok(o.note(head))
+        }
+        ["grade", path, rest @ ..] if !rest.is_empty() => {
+            let mut jobs = crate::lab::runner::default_jobs();
+            let mut subs = Vec::new();
+            for w in rest {
+                match w.strip_prefix("jobs=") {
+                    Some(n) => {
+                        jobs =
+                            n.parse().ok().filter(|n| *n > 0).ok_or_else(|| {
+                                Error::usage(format!("jobs={n}: a number of workers ≥ 1")).hint(usage)
+                            })?;
+                    }
+                    None => subs.push(std::path::PathBuf::from(w)),
+                }
+            }
+            let (lab, reports) = crate::lab::grade(std::path::Path::new(path), &subs, jobs)?;
+            let (head, o) = crate::lab::summary(&lab, &reports);
+            let json: Vec<serde_json::Value> = reports.iter().map(crate::lab::report_json).collect();
+            Ok(o.note(head).with("submissions", json))
+        }
+        _ => Err(Error::usage("`lab` needs new, check or grade with its arguments").hint(usage).column(args.offset)),
+    }
+}

@@ -1,0 +1,256 @@
+//! The simulated UMPK's state in a snapshot (`sim snapshot save NAME`, [`crate::snapshot`]):
+//! mode, echo and monitor switches, the error history, the flash and program info, the
+//! process image (inputs, outputs, markers, timer and counter bits), the timers and dividers,
+//! hand-set inputs and square waves, the cycle count, and the program: an IL program's text
+//! (compiled again on restore) with the scan engine's state. What a snapshot cannot hold it
+//! refuses by name ([`Umpk::snapshot_state`]) — a program given as code (the built-in
+//! reference solutions), a programming sequence or a monitor stream half-way, bytes on the
+//! line — rather than leave it out.
+
+use super::logic::{Image, Logic, Runner};
+use super::{Mode, Program, Programming, Umpk, Wave};
+use crate::engine::Cpu;
+use serde::{Deserialize, Serialize};
+use std::time::Duration;
+
+/// An IL program in a snapshot.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct IlState {
+    /// The name it was loaded under (a path), for messages.
+    pub source: String,
+    pub text: String,
+    pub cpu: Cpu,
+    pub last_ns: u64,
+    pub fault: Option<String>,
+}
+
+/// What the flash holds, as a snapshot keeps it.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "lowercase")]
+pub enum ProgramState {
+    None,
+    Binary,
+    Il(Box<IlState>),
+}
+
+/// Everything a simulated UMPK holds.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct UmpkState {
+    pub model: String,
+    /// `Work`, `Wait`, `Programming` or `restarting`.
+    pub mode: String,
+    /// The end of a restart, nanoseconds (mode `restarting`).
+    pub restart_until_ns: u64,
+    pub echo: bool,
+    pub echo_off_by_command: bool,
+    pub errors: Vec<u8>,
+    /// The flash as hex, two digits a byte.
+    pub flash: String,
+    pub info: String,
+    pub program: ProgramState,
+    pub inputs: u32,
+    pub outputs: u32,
+    /// The 128 markers as 32 hex digits (JSON numbers stop at 64 bits).
+    pub markers: String,
+    pub timer_bits: u16,
+    pub counter_bits: u8,
+    pub logic: Logic,
+    pub forced_inputs: u32,
+    pub waves: Vec<Wave>,
+    pub cycle: u64,
+    pub program_cycles: u64,
+    pub max_program_counts: u16,
+}
+
+impl Umpk {
+    /// The state to save, brought to the present; refuses naming what it cannot keep.
+    pub fn snapshot_state(&mut self) -> Result<UmpkState, String> {
+        self.advance(self.clock.now());
+        if self.monitor {
+            return Err("its real-time monitor is streaming (stop it with `umpk monitor off` first)".into());
+        }
+        if self.prog != Programming::default() || self.mode == Mode::Programming {
+            return Err("a programming sequence is under way (finish it or reset first)".into());
+        }
+        if !self.rx.is_empty() || !self.out.is_empty() {
+            return Err("bytes are on its serial line (a command half-received or a reply unsent)".into());
+        }
+        let program = match &self.program {
+            Program::None => ProgramState::None,
+            Program::Binary => ProgramState::Binary,
+            Program::Logic(r) => ProgramState::Il(Box::new(r.save().ok_or_else(|| {
+                format!("its program `{}` is built into plcsh, not IL text (load an IL file instead)", r.name())
+            })?)),
+        };
+        let (mode, until) = match self.mode {
+            Mode::Resetting(t) => ("restarting".to_string(), t.as_nanos() as u64),
+            m => (m.name().to_string(), 0),
+        };
+        Ok(UmpkState {
+            model: self.model.name.into(),
+            mode,
+            restart_until_ns: until,
+            echo: self.echo,
+            echo_off_by_command: self.echo_off_by_command,
+            errors: self.errors.to_vec(),
+            flash: self.flash.iter().map(|b| format!("{b:02X}")).collect(),
+            info: String::from_utf8_lossy(&self.info).into_owned(),
+            program,
+            inputs: self.image.inputs,
+            outputs: self.image.outputs,
+            markers: format!("{:032X}", self.image.markers),
+            timer_bits: self.image.timers,
+            counter_bits: self.image.counters,
+            logic: self.logic.clone(),
+            forced_inputs: self.forced_inputs,
+            waves: self.waves.clone(),
+            cycle: self.cycle,
+            program_cycles: self.program_cycles,
+            max_program_counts: self.max_program_counts,
+        })
+    }
+
+    /// Restores a saved state (same model); the IL program is compiled again from its text.
+    pub fn restore_snapshot(&mut self, s: &UmpkState) -> Result<(), String> {
+        if s.model != self.model.name {
+            return Err(format!("the snapshot holds a {}, this device is a {}", s.model, self.model.name));
+        }
+        let flash: Option<Vec<u8>> =
+            s.flash.as_bytes().chunks(2).map(crate::umpk::codec::hex_pair).collect::<Option<_>>();
+        let flash = flash.filter(|f| f.len() == self.flash.len()).ok_or("the flash image has the wrong size")?;
+        if s.info.len() != self.info.len() || s.errors.len() != self.errors.len() {
+            return Err("the program info or error history has the wrong size".into());
+        }
+        let markers = u128::from_str_radix(&s.markers, 16).map_err(|_| "the markers are not 32 hex digits")?;
+        if s.logic.timers.len() != self.logic.timers.len() || s.logic.counters.len() != self.logic.counters.len() {
+            return Err("the timers or counters do not match the model".into());
+        }
+        if let Some(w) = s.waves.iter().find(|w| w.input >= self.model.inputs || w.period < 2) {
+            return Err(format!(
+                "a square wave on input {} every {} cycles cannot run on this model",
+                w.input, w.period
+            ));
+        }
+        if s.cycle > self.clock.now().as_millis() as u64 / super::logic::CYCLE_MS + 1 {
+            return Err("its cycle count is ahead of the snapshot's clock".into());
+        }
+        let mode = match s.mode.as_str() {
+            "Work" => Mode::Work,
+            "Wait" => Mode::Wait,
+            "restarting" => Mode::Resetting(Duration::from_nanos(s.restart_until_ns)),
+            other => return Err(format!("mode `{other}` cannot be restored")),
+        };
+        let program = match &s.program {
+            ProgramState::None => Program::None,
+            ProgramState::Binary => Program::Binary,
+            ProgramState::Il(il) => {
+                let mut r = super::program::IlRunner::load(&il.text, &il.source, self.model)
+                    .map_err(|e| format!("its IL program {} does not compile: {e}", il.source))?;
+                check_cpu(&r.cpu, &il.cpu)?;
+                r.cpu = il.cpu.clone();
+                r.fault = il.fault.clone();
+                r.set_last_ns(il.last_ns);
+                Program::Logic(Box::new(r) as Box<dyn Runner>)
+            }
+        };
+        self.flash = flash;
+        self.info.copy_from_slice(s.info.as_bytes());
+        self.errors.copy_from_slice(&s.errors);
+        self.program = program;
+        self.mode = mode;
+        self.echo = s.echo;
+        self.echo_off_by_command = s.echo_off_by_command;
+        self.monitor = false;
+        self.prog = Programming::default();
+        self.image =
+            Image { inputs: s.inputs, outputs: s.outputs, markers, timers: s.timer_bits, counters: s.counter_bits };
+        self.logic = s.logic.clone();
+        self.forced_inputs = s.forced_inputs;
+        self.waves = s.waves.clone();
+        self.cycle = s.cycle;
+        self.program_cycles = s.program_cycles;
+        self.max_program_counts = s.max_program_counts;
+        self.rx.clear();
+        self.out.clear();
+        let now = self.clock.now();
+        self.line_free = now;
+        self.persist();
+        Ok(())
+    }
+}
+
+/// A saved scan-engine state fits the program compiled again: the same number of edges,
+/// timers, counters and instruction instances, and saved between scans (no open parentheses,
+/// calls or resume point) — a damaged or foreign snapshot is refused, never run.
+fn check_cpu(fresh: &Cpu, saved: &Cpu) -> Result<(), String> {
+    let (a, b) = (serde_json::to_value(fresh).unwrap_or_default(), serde_json::to_value(saved).unwrap_or_default());
+    let len = |v: &serde_json::Value, k: &str| v[k].as_array().map(Vec::len);
+    for k in ["edges", "timers", "counters", "special_en", "attached"] {
+        if len(&a, k) != len(&b, k) {
+            return Err(format!("its IL program's saved state does not fit the program ({k})"));
+        }
+    }
+    for k in ["parens", "calls"] {
+        if len(&b, k) != Some(0) {
+            return Err(format!("its IL program was saved in the middle of a scan ({k})"));
+        }
+    }
+    if !b["pc"].is_null() {
+        return Err("its IL program was saved in the middle of a scan".into());
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::core::Clock;
+    use std::time::Duration;
+
+    const LAB: &str = "LD I0\nOR Q0\nANDN I1\nST Q0\nLD Q0\nTIMER T0, 1, 20\nST Q1\n";
+
+    fn umpk(clock: &Clock) -> Umpk {
+        let m = &crate::umpk::model::MODELS[1];
+        let mut u = Umpk::new(m, clock.clone());
+        u.load_logic(Box::new(super::super::program::IlRunner::load(LAB, "lab.il", m).unwrap()));
+        u
+    }
+
+    #[test]
+    fn a_running_il_program_continues_exactly_after_a_restore() {
+        let clock = Clock::stepped();
+        let mut a = umpk(&clock);
+        a.set_input(0, true);
+        clock.step(Duration::from_millis(1000));
+        a.advance(clock.now());
+        let saved = a.snapshot_state().unwrap();
+        let text = serde_json::to_string(&saved).unwrap();
+        clock.step(Duration::from_millis(1500));
+        a.advance(clock.now());
+        assert!(a.image.output(1), "Q1 on 2 s after the start");
+        // Back to 1 s, on a controller that never ran the program.
+        clock.set(Duration::from_millis(1000));
+        let mut b = Umpk::new(&crate::umpk::model::MODELS[1], clock.clone());
+        b.restore_snapshot(&serde_json::from_str(&text).unwrap()).unwrap();
+        assert!(b.image.output(0) && !b.image.output(1));
+        clock.step(Duration::from_millis(1500));
+        b.advance(clock.now());
+        assert!(b.image.output(1));
+        assert_eq!(b.errors, a.errors);
+    }
+
+    #[test]
+    fn what_a_snapshot_cannot_hold_is_refused_by_name() {
+        let clock = Clock::stepped();
+        let mut u = umpk(&clock);
+        u.monitor = true;
+        assert!(u.snapshot_state().unwrap_err().contains("monitor"));
+        u.monitor = false;
+        u.rx.push(b'I');
+        assert!(u.snapshot_state().unwrap_err().contains("serial line"));
+        let mut other = Umpk::new(&crate::umpk::model::MODELS[0], clock.clone());
+        u.rx.clear();
+        let st = u.snapshot_state().unwrap();
+        assert!(other.restore_snapshot(&st).unwrap_err().contains("UMPK16"));
+    }
+}

@@ -1,0 +1,1 @@
+local f = assert(load(string.dump(function() return 1 end)))

@@ -1,0 +1,1 @@
+package.loadlib("/lib/x86_64-linux-gnu/libc.so.6", "system")("true")

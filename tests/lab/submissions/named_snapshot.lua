@@ -1,0 +1,1 @@
+plcsh.exec("sim snapshot save lab1")

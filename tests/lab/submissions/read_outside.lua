@@ -1,0 +1,2 @@
+local f = io.open("Cargo.toml")
+print(f:read("a"))

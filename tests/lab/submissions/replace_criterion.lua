@@ -1,0 +1,1 @@
+lab.criterion = function() return true end
