@@ -52,7 +52,7 @@ pub fn run(cmd: &LabCmd, style: Style, out: &mut dyn Write) -> i32 {
     match cmd {
         LabCmd::New { name } => match crate::lab::new_lab(name) {
             Ok(o) => i32::from(output::write_outcome(out, style, &o).is_err()),
-            Err(e) => fail(out, "lab new", &e),
+            Err(e) => fail(out, "lab", &e),
         },
         LabCmd::Check { lab } => match crate::lab::check(lab) {
             Ok((o, head, ok)) => {
@@ -69,19 +69,19 @@ pub fn run(cmd: &LabCmd, style: Style, out: &mut dyn Write) -> i32 {
                 }
                 i32::from(!ok)
             }
-            Err(e) => fail(out, "lab check", &e),
+            Err(e) => fail(out, "lab", &e),
         },
         LabCmd::Grade { lab, submissions, jobs, junit } => {
             let jobs = jobs.unwrap_or_else(crate::lab::runner::default_jobs);
             let (l, reports) = match crate::lab::grade(lab, submissions, jobs) {
                 Ok(x) => x,
-                Err(e) => return fail(out, "lab grade", &e),
+                Err(e) => return fail(out, "lab", &e),
             };
             if let Some(path) = junit {
                 if let Err(e) = std::fs::write(path, crate::lab::runner::junit(&l, &reports)) {
                     return fail(
                         out,
-                        "lab grade",
+                        "lab",
                         &crate::core::Error::io(format!("cannot write {}", path.display())).cause(e),
                     );
                 }

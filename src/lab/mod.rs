@@ -28,7 +28,8 @@ pub fn new_lab(dir: &Path) -> Result<Outcome> {
         std::fs::write(&p, text).map_err(|e| Error::io(format!("cannot write {}", p.display())).cause(e))?;
     }
     let names: Vec<&str> = example::FILES.iter().map(|(n, _)| *n).collect();
-    Ok(Outcome::new("lab new")
+    Ok(Outcome::new("lab")
+        .with("sub", "new")
         .text(format!(
             "wrote {} ({}); check it with: plcsh lab check {}",
             dir.display(),
@@ -61,7 +62,8 @@ pub fn check(path: &Path) -> Result<(Outcome, String, bool)> {
             lab.title, r.points, r.max_points, r.verdict
         )
     };
-    let o = Outcome::new("lab check")
+    let o = Outcome::new("lab")
+        .with("sub", "check")
         .table(&["criterion", "points", "result"], rows)
         .with("lab", lab.title.as_str())
         .with("passed", ok)
@@ -71,7 +73,7 @@ pub fn check(path: &Path) -> Result<(Outcome, String, bool)> {
 
 /// One submission's JSON object (the JSON contract: `ok`, `cmd`, then the report).
 pub fn report_json(r: &Report) -> serde_json::Value {
-    let mut v = serde_json::json!({"ok": true, "cmd": "lab grade"});
+    let mut v = serde_json::json!({"ok": true, "cmd": "lab", "sub": "grade"});
     if let (Some(m), serde_json::Value::Object(rep)) = (v.as_object_mut(), serde_json::to_value(r).unwrap_or_default())
     {
         m.extend(rep);
@@ -97,7 +99,8 @@ pub fn summary(lab: &Lab, reports: &[Report]) -> (String, Outcome) {
         })
         .collect();
     let head = format!("{}: {} submission(s), {passed} passed every criterion", lab.title, reports.len());
-    let o = Outcome::new("lab grade")
+    let o = Outcome::new("lab")
+        .with("sub", "grade")
         .table(&["student", "points", "passed", "failed", "verdict", "simulated time"], rows)
         .with(
             "summary",
