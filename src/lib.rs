@@ -6,6 +6,7 @@
 pub mod cli;
 pub mod core;
 pub mod engine;
+pub mod fleet;
 pub mod fuzzing;
 pub mod fx;
 pub mod guard;

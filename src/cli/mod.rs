@@ -5,6 +5,7 @@
 
 mod agent;
 pub mod completions;
+mod fleet;
 mod record;
 mod run;
 mod serve;
@@ -73,6 +74,15 @@ pub struct Options {
     /// Refuse every change to every device (writes, instructions, servo commands): inspect a live machine.
     #[arg(long = "read-only", global = true)]
     pub read_only: bool,
+    /// Run -c's commands (or `run`'s script) on every device of this fleet from the profile file, at once (docs/fleets.md).
+    #[arg(short = 'f', long = "fleet", value_name = "NAME", global = true)]
+    pub fleet: Option<String>,
+    /// With --fleet: how many devices are worked on at once.
+    #[arg(short = 'j', long = "jobs", value_name = "N", default_value_t = 8, global = true)]
+    pub jobs: usize,
+    /// With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit).
+    #[arg(long = "device-timeout", value_name = "DURATION", default_value = "60s", global = true)]
+    pub device_timeout: String,
 }
 
 impl std::ops::Deref for Cli {
@@ -223,6 +233,11 @@ const VALUE_OPTIONS: &[&str] = &[
     "--write-dir",
     "--record",
     "--bench",
+    "-f",
+    "--fleet",
+    "-j",
+    "--jobs",
+    "--device-timeout",
 ];
 
 /// What a word of the command line is, before clap sees it.
@@ -396,6 +411,18 @@ fn run_cli() -> i32 {
 
 /// Runs what the flags ask for with the built shell; returns the exit status.
 fn run(cli: &Cli, mut shell: Shell, style: Style, mut out: std::io::StdoutLock<'static>) -> i32 {
+    if let Some(name) = &cli.fleet {
+        return match (&cli.sub, &cli.command) {
+            (Some(Sub::Run(args)), _) => fleet::script(cli, &shell, name, args, style, &mut out),
+            (None, Some(cmds)) => fleet::commands(cli, &shell, name, cmds, style, &mut out),
+            _ => {
+                let e = crate::core::Error::usage("--fleet runs -c COMMANDS or run SCRIPT.lua on every device of the fleet")
+                    .hint(format!("e.g. plcsh -f {name} -c 'get VW100', or plcsh run --fleet {name} check.lua"));
+                let _ = output::report_error(&mut out, style, "fleet", &e, None);
+                2
+            }
+        };
+    }
     if let Some(sub) = &cli.sub {
         return match sub {
             Sub::Models { name } => match crate::shell::commands::models::outcome(name.as_deref()) {

@@ -81,7 +81,7 @@ pub fn main(shell: &mut Shell, args: &RunArgs, style: Style) -> i32 {
 }
 
 /// The checks the script ran and how many failed (`plcsh.checks`, `plcsh.checks_failed`).
-fn checks(engine: &Engine) -> (u64, u64) {
+pub(super) fn checks(engine: &Engine) -> (u64, u64) {
     let get = |k: &str| -> Option<u64> {
         let t: mlua::Table = engine.lua().globals().get("plcsh").ok()?;
         t.get::<Option<u64>>(k).ok().flatten()
