@@ -9,6 +9,7 @@ mod fleet;
 mod record;
 mod run;
 mod serve;
+mod serve_fleet;
 
 use crate::core::{Clock, ErrorKind};
 use crate::k2::catalog;
@@ -75,7 +76,7 @@ pub struct Options {
     #[arg(long = "read-only", global = true)]
     pub read_only: bool,
     /// Run -c's commands (or `run`'s script) on every device of this fleet from the profile file, at once (docs/fleets.md).
-    #[arg(short = 'f', long = "fleet", value_name = "NAME", global = true)]
+    #[arg(short = 'f', long = "fleet", value_name = "NAME")]
     pub fleet: Option<String>,
     /// With --fleet: how many devices are worked on at once.
     #[arg(short = 'j', long = "jobs", value_name = "N", default_value_t = 8, global = true)]
@@ -413,7 +414,7 @@ fn run_cli() -> i32 {
 fn run(cli: &Cli, mut shell: Shell, style: Style, mut out: std::io::StdoutLock<'static>) -> i32 {
     if let Some(name) = &cli.fleet {
         return match (&cli.sub, &cli.command) {
-            (Some(Sub::Run(args)), _) => fleet::script(cli, &shell, name, args, style, &mut out),
+            (Some(Sub::Run(args)), _) if args.fleet.is_none() => fleet::script(cli, &shell, name, args, style, &mut out),
             (None, Some(cmds)) => fleet::commands(cli, &shell, name, cmds, style, &mut out),
             _ => {
                 let e = crate::core::Error::usage("--fleet runs -c COMMANDS or run SCRIPT.lua on every device of the fleet")
@@ -422,6 +423,11 @@ fn run(cli: &Cli, mut shell: Shell, style: Style, mut out: std::io::StdoutLock<'
                 2
             }
         };
+    }
+    if let Some(Sub::Run(args)) = &cli.sub {
+        if let Some(name) = &args.fleet {
+            return fleet::script(cli, &shell, name, args, style, &mut out);
+        }
     }
     if let Some(sub) = &cli.sub {
         return match sub {
