@@ -194,4 +194,47 @@ mod tests {
             assert!(e.contains(says), "{p}: {e}");
         }
     }
+
+    fn load(text: &str) -> crate::profile::Profiles {
+        crate::profile::Profiles::parse(text, std::path::Path::new("/etc/devices.toml"))
+    }
+
+    #[test]
+    fn a_url_fleet_gives_every_member_the_fleets_keys() {
+        let p = load("[fleets.line]\nurl = \"tcp://10.0.0.{11..12}:502\"\nunit = 3\nallow = [\"VW100\"]\n");
+        assert!(p.problems.is_empty(), "{:?}", p.problems);
+        let f = p.fleet("line").unwrap();
+        let names: Vec<&str> = f.members.iter().map(|m| m.name.as_str()).collect();
+        assert_eq!(names, ["line-11", "line-12"]);
+        let Source::Made(m) = &f.members[1].source else { panic!("{f:?}") };
+        assert_eq!(m.url, "tcp://10.0.0.12:502?unit=3");
+        assert_eq!(m.allow, Some(vec!["VW100".to_string()]));
+        assert_eq!(f.origin, "/etc/devices.toml:1");
+    }
+
+    #[test]
+    fn a_list_fleet_names_profiles_and_urls() {
+        let p = load("[devices.a]\nurl = \"sim:K205-16DT\"\n[fleets.mixed]\ndevices = [\"a\", \"sim:K209M-56DT\"]\n");
+        let f = p.fleet("mixed").unwrap();
+        assert_eq!(f.members[0].source, Source::Profile("a".into()));
+        assert_eq!(f.members[1].name, "mixed-2");
+        assert!(p.fleet("nope").unwrap_err().hint.clone().unwrap().contains("mixed"));
+    }
+
+    #[test]
+    fn bad_fleets_are_skipped_with_their_line() {
+        let p = load(concat!(
+            "[fleets.both]\ndevices = [\"a\"]\nurl = \"tcp://h:{1..2}\"\n",
+            "[fleets.none]\nread_only = true\n",
+            "[fleets.twice]\ndevices = [\"a\", \"a\"]\n",
+            "[fleets.keyed]\ndevices = [\"a\"]\nread_only = true\n",
+            "[fleets.empty]\ndevices = []\n",
+        ));
+        assert!(p.fleets.is_empty(), "{:?}", p.fleets);
+        let shown: Vec<String> = p.problems.iter().map(|x| x.to_string()).collect();
+        assert_eq!(shown.len(), 5, "{shown:?}");
+        assert!(shown[0].starts_with("/etc/devices.toml:3: fleet `both` skipped: give `devices` or `url`"), "{shown:?}");
+        assert!(shown.iter().any(|s| s.contains("`a` is listed twice")), "{shown:?}");
+        assert!(shown.iter().any(|s| s.contains("takes its rules from each profile")), "{shown:?}");
+    }
 }
