@@ -90,9 +90,8 @@ fn line_cmd(line: &str) -> String {
 }
 
 /// `plcsh run --fleet FLEET SCRIPT.lua ARGS…`: the script runs once per member in a Lua state
-/// of its own, on the member's thread, with the member as its current device (`plc` in the
-/// script is the member's handle only when the script names it `plcsh.device()`; commands
-/// and `plcsh.exec` act on it directly). What the script prints is kept per device and shown
+/// of its own, on the member's thread, with the member as its current device (commands and
+/// `plcsh.exec` act on it; `plcsh.fleet_member` names it for `plcsh.device`). What the script prints is kept per device and shown
 /// after the table (`output` in JSON), so the devices' lines never interleave.
 pub fn script(cli: &super::Cli, shell: &Shell, name: &str, args: &super::run::RunArgs, style: Style, out: &mut dyn Write) -> i32 {
     let (fleet, settings, base) = match prepare(cli, shell, name) {
@@ -107,6 +106,11 @@ pub fn script(cli: &super::Cli, shell: &Shell, name: &str, args: &super::run::Ru
         let printed = Arc::new(Mutex::new(Vec::new()));
         let engine = crate::script::Engine::new(stop, Box::new(Shared(printed.clone())))
             .map_err(|e| Error::new(ErrorKind::Script, format!("cannot start Lua: {e}")))?;
+        // The member's name, so one script serves a fleet and a single device:
+        // `plcsh.device(plcsh.fleet_member or "plc")`.
+        let member = members.members[i].name.clone();
+        let set = engine.lua().globals().get::<mlua::Table>("plcsh").and_then(|p| p.set("fleet_member", member));
+        set.map_err(|e| Error::new(ErrorKind::Script, format!("cannot start Lua: {e}")))?;
         if sandbox {
             sh.write_rule = Some(write_dir.clone());
             crate::script::sandbox::apply(engine.lua(), write_dir.as_deref())
