@@ -15,6 +15,7 @@ pub mod output;
 pub mod paths;
 pub mod plot;
 pub mod profile;
+pub mod publish;
 pub mod record;
 pub mod script;
 pub mod servo;

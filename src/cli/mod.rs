@@ -6,6 +6,7 @@
 mod agent;
 pub mod completions;
 mod fleet;
+mod publish;
 mod record;
 mod run;
 mod serve;
@@ -134,6 +135,8 @@ pub enum Sub {
     },
     /// Replay a recording's requests against a simulator and report every reply that differs.
     Replay(record::ReplayArgs),
+    /// Poll operands on a device or a fleet and publish them to an MQTT broker (docs/fleets.md).
+    Publish(publish::PublishArgs),
 }
 
 /// Splits `NAME=URL` (or a bare URL, named `plc`; or a bare profile name, named after itself).
@@ -448,6 +451,7 @@ fn run(cli: &Cli, mut shell: Shell, style: Style, mut out: std::io::StdoutLock<'
             Sub::Run(args) => run::main(&mut shell, args, style),
             Sub::Record { cmd } => record::show(cmd, style, &mut out),
             Sub::Replay(args) => record::replay(args, cli.bench.as_deref(), false, style, &mut out),
+            Sub::Publish(args) => publish::run(cli, &mut shell, args, style, &mut out),
         };
     }
     if let Some(cmds) = &cli.command {
