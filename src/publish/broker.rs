@@ -7,7 +7,11 @@
 //!
 //! rumqttc's event loop runs in a task of its own and reports to the queue's owner over a
 //! channel, so nothing waits on an event loop that is not being polled (its `poll` is not
-//! cancelled by a `select!`).
+//! cancelled by a `select!`). A message handed to rumqttc stays in our `unconfirmed` list
+//! until it is written (QoS 0) or acknowledged (QoS 1), in order; when the broker comes back
+//! without the old session, rumqttc forgets what it held, and those messages go back to the
+//! front of the queue — so nothing taken while the broker was away is lost to a reconnect
+//! (at QoS 1 a message may then arrive twice, as MQTT's "at least once" allows).
 
 use std::collections::VecDeque;
 use std::time::Duration;
@@ -65,7 +69,10 @@ pub struct Stats {
 }
 
 enum Loop {
-    ConnAck,
+    /// Connected; whether the broker kept the last session (rumqttc then resends what it holds).
+    ConnAck(bool),
+    /// One more message left for good: written (QoS 0) or acknowledged (QoS 1).
+    Confirmed,
     Disconnected,
     Error(String),
 }
@@ -144,14 +151,17 @@ macro_rules! broker_loop {
                 opts.set_last_will($will(cfg.will_topic.clone(), b"offline".to_vec(), QoS::AtLeastOnce, true));
                 let (client, mut eventloop) = <$client>::new(opts, 100);
                 let (etx, mut erx) = unbounded_channel::<Loop>();
+                let qos1 = cfg.qos1;
                 tokio::spawn(async move {
                     let mut backoff = BACKOFF_MIN;
                     loop {
                         let sent = match eventloop.poll().await {
-                            Ok(Event::Incoming(Packet::ConnAck(_))) => {
+                            Ok(Event::Incoming(Packet::ConnAck(c))) => {
                                 backoff = BACKOFF_MIN;
-                                etx.send(Loop::ConnAck)
+                                etx.send(Loop::ConnAck(c.session_present))
                             }
+                            Ok(Event::Incoming(Packet::PubAck(_))) if qos1 => etx.send(Loop::Confirmed),
+                            Ok(Event::Outgoing(rumqttc::Outgoing::Publish(_))) if !qos1 => etx.send(Loop::Confirmed),
                             Ok(Event::Outgoing(rumqttc::Outgoing::Disconnect)) => etx.send(Loop::Disconnected),
                             Ok(_) => Ok(()),
                             Err(e) => {
@@ -168,8 +178,11 @@ macro_rules! broker_loop {
                 });
                 let qos = if cfg.qos1 { QoS::AtLeastOnce } else { QoS::AtMostOnce };
                 let mut queue = Queue { items: VecDeque::new(), bound: cfg.bound, dropped: 0 };
+                let mut unconfirmed: VecDeque<Msg> = VecDeque::new();
+                let status = |text: &[u8]| Msg { topic: cfg.will_topic.clone(), payload: text.to_vec(), retain: true };
                 let mut stats = Stats::default();
-                let (mut connected, mut was_connected, mut stopping) = (false, false, false);
+                let (mut connected, mut was_connected, mut stopping, mut said_offline) = (false, false, false, false);
+                let mut away_told = false;
                 let mut deadline = None;
                 loop {
                     if connected {
@@ -178,11 +191,14 @@ macro_rules! broker_loop {
                             if client.try_publish(m.topic.clone(), qos, m.retain, m.payload.clone()).is_err() {
                                 break;
                             }
-                            queue.items.pop_front();
-                            stats.published += 1;
+                            unconfirmed.extend(queue.items.pop_front());
                         }
-                        if stopping && queue.items.is_empty() && deadline.is_none() {
-                            let _ = client.try_publish(cfg.will_topic.clone(), QoS::AtLeastOnce, true, b"offline".to_vec());
+                        if stopping && queue.items.is_empty() && unconfirmed.is_empty() && deadline.is_none() {
+                            if !said_offline {
+                                said_offline = true;
+                                queue.items.push_back(status(b"offline"));
+                                continue;
+                            }
                             let _ = client.try_disconnect();
                             deadline = Some(tokio::time::Instant::now() + Duration::from_secs(5));
                         }
@@ -190,18 +206,33 @@ macro_rules! broker_loop {
                     let until = deadline.unwrap_or_else(|| tokio::time::Instant::now() + Duration::from_secs(3600));
                     tokio::select! {
                         e = erx.recv() => match e {
-                            Some(Loop::ConnAck) => {
+                            Some(Loop::ConnAck(kept)) => {
                                 connected = true;
+                                away_told = false;
                                 if was_connected {
                                     stats.reconnects += 1;
                                 }
                                 was_connected = true;
-                                let _ = client.try_publish(cfg.will_topic.clone(), QoS::AtLeastOnce, true, b"online".to_vec());
+                                if !kept {
+                                    // A new session: rumqttc dropped what it held; send it again, first.
+                                    while let Some(m) = unconfirmed.pop_back() {
+                                        queue.items.push_front(m);
+                                    }
+                                }
+                                if !said_offline {
+                                    queue.items.push_front(status(b"online"));
+                                }
                                 let _ = notes.send(Note::Connected);
+                            }
+                            Some(Loop::Confirmed) => {
+                                if unconfirmed.pop_front().is_some() {
+                                    stats.published += 1;
+                                }
                             }
                             Some(Loop::Disconnected) => break,
                             Some(Loop::Error(why)) => {
-                                if connected || !was_connected {
+                                if !away_told {
+                                    away_told = true;
                                     let _ = notes.send(Note::Away(why));
                                 }
                                 connected = false;
@@ -220,7 +251,7 @@ macro_rules! broker_loop {
                     }
                 }
                 stats.dropped = queue.dropped;
-                stats.undelivered = queue.items.len() as u64;
+                stats.undelivered = (queue.items.len() + unconfirmed.len()) as u64;
                 stats
             }
         }

@@ -1,0 +1,231 @@
+//! `plcsh publish` against a real broker: mosquitto, started here on a free loopback port with a
+//! generated configuration and waited for by connecting; a subscriber written here (rumqttc)
+//! checks topics, payloads, retained values, device and publisher status, and — across a broker
+//! restart — that readings taken while the broker was away arrive, all of them, in order.
+//! Without mosquitto the tests are skipped (CI installs it: .ci/run).
+#![cfg(unix)]
+
+mod common;
+use common::*;
+use std::io::BufRead;
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
+
+fn mosquitto_present() -> bool {
+    let found = Command::new("mosquitto").arg("-h").stdout(Stdio::null()).stderr(Stdio::null()).status().is_ok();
+    if !found {
+        assert!(std::env::var_os("CI").is_none(), "mosquitto is required when CI is set (.ci/run installs it)");
+        eprintln!("skipped: mosquitto is not installed");
+    }
+    found
+}
+
+fn dir(name: &str) -> PathBuf {
+    use std::os::unix::fs::PermissionsExt;
+    let d = std::env::temp_dir().join(format!("plcsh-publish-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    // Started as root, mosquitto runs as its own user: it must be able to write its database here.
+    std::fs::set_permissions(&d, std::fs::Permissions::from_mode(0o777)).unwrap();
+    d
+}
+
+/// A mosquitto on `port` with its database in `dir` (sessions and queued messages survive a
+/// restart), ready once it accepts a connection.
+struct Broker {
+    child: Child,
+}
+
+impl Broker {
+    fn start(dir: &Path, port: u16) -> Broker {
+        let conf = dir.join("mosquitto.conf");
+        std::fs::write(
+            &conf,
+            format!(
+                "listener {port} 127.0.0.1\nallow_anonymous true\npersistence true\npersistence_location {}/\nautosave_interval 0\n",
+                dir.display()
+            ),
+        )
+        .unwrap();
+        let child = Command::new("mosquitto").arg("-c").arg(&conf).stdout(Stdio::null()).stderr(Stdio::null()).spawn().unwrap();
+        let deadline = Instant::now() + Duration::from_secs(10);
+        while std::net::TcpStream::connect(("127.0.0.1", port)).is_err() {
+            assert!(Instant::now() < deadline, "mosquitto did not start on port {port}");
+            std::thread::sleep(Duration::from_millis(10));
+        }
+        Broker { child }
+    }
+
+    /// SIGTERM (mosquitto saves its database), then waits for it to exit.
+    fn stop(mut self) {
+        plcsh::core::platform::terminate_child(&self.child);
+        let _ = self.child.wait();
+    }
+}
+
+impl Drop for Broker {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+/// A free loopback port: bound to 0, then released for the broker.
+fn free_port() -> u16 {
+    std::net::TcpListener::bind("127.0.0.1:0").unwrap().local_addr().unwrap().port()
+}
+
+type Got = Arc<Mutex<Vec<(String, Vec<u8>, bool)>>>;
+
+/// A subscriber to `plcsh/#` (QoS 1, a persistent session), collecting what arrives; it
+/// reconnects by itself while the broker is away.
+fn subscribe(port: u16, id: &str) -> Got {
+    let got: Got = Arc::default();
+    let mut opts = rumqttc::MqttOptions::new(id, "127.0.0.1", port);
+    opts.set_clean_session(false);
+    opts.set_keep_alive(Duration::from_secs(5));
+    let (client, mut conn) = rumqttc::Client::new(opts, 100);
+    client.subscribe("plcsh/#", rumqttc::QoS::AtLeastOnce).unwrap();
+    let g = got.clone();
+    let (ready_tx, ready) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        let _keep = client;
+        for ev in conn.iter() {
+            match ev {
+                Ok(rumqttc::Event::Incoming(rumqttc::Packet::SubAck(_))) => {
+                    let _ = ready_tx.send(());
+                }
+                Ok(rumqttc::Event::Incoming(rumqttc::Packet::Publish(p))) => {
+                    g.lock().unwrap().push((p.topic.clone(), p.payload.to_vec(), p.retain))
+                }
+                Ok(_) => {}
+                Err(_) => std::thread::sleep(Duration::from_millis(50)),
+            }
+        }
+    });
+    ready.recv_timeout(Duration::from_secs(10)).expect("subscribed");
+    got
+}
+
+fn wait_for(got: &Got, what: &str, f: impl Fn(&[(String, Vec<u8>, bool)]) -> bool) {
+    let deadline = Instant::now() + Duration::from_secs(20);
+    while !f(&got.lock().unwrap()) {
+        assert!(Instant::now() < deadline, "timed out waiting for {what}: {:?}", got.lock().unwrap().iter().map(|(t, p, _)| format!("{t} {}", String::from_utf8_lossy(p))).collect::<Vec<_>>());
+        std::thread::sleep(Duration::from_millis(10));
+    }
+}
+
+fn json(b: &[u8]) -> serde_json::Value {
+    serde_json::from_slice(b).unwrap_or_else(|e| panic!("not JSON: {}: {e}", String::from_utf8_lossy(b)))
+}
+
+#[test]
+fn a_fleets_values_and_status_are_published_and_retained() {
+    if !mosquitto_present() {
+        return;
+    }
+    let d = dir("retained");
+    let port = free_port();
+    let _broker = Broker::start(&d, port);
+    let dead = free_port();
+    let cfg = d.join("devices.toml");
+    std::fs::write(
+        &cfg,
+        format!("[devices.a]\nurl = \"sim:K205-16DT\"\n[devices.b]\nurl = \"sim:K209EA-50DX\"\n[fleets.line]\ndevices = [\"a\", \"b\", \"tcp://127.0.0.1:{dead}\"]\n"),
+    )
+    .unwrap();
+    let o = run(
+        &["--config", cfg.to_str().unwrap(), "--json", "publish", "-f", "line", "--broker", &format!("mqtt://127.0.0.1:{port}"),
+          "--every", "20ms", "--count", "3", "--qos", "1", "--mqtt-version", "5", "VW100", "VD200/REAL"],
+        "",
+    );
+    let l = json_lines(&o);
+    let summary = l.last().unwrap();
+    assert_eq!(o.status.code(), Some(1), "a member is offline: {}", both(&o));
+    assert_eq!(summary["cmd"], "publish");
+    assert_eq!(summary["offline"], serde_json::json!(["line-3"]));
+    assert_eq!(summary["dropped"], 0);
+    assert!(l.iter().any(|x| x["event"] == "device" && x["device"] == "line-3" && x["state"] == "offline"), "{l:?}");
+    // A subscriber that connects afterwards gets the last values: retained.
+    let got = subscribe(port, "late-reader");
+    wait_for(&got, "the retained values", |g| g.len() >= 8);
+    let g = got.lock().unwrap().clone();
+    let find = |t: &str| g.iter().find(|(topic, _, _)| topic == t).unwrap_or_else(|| panic!("{t}: {g:?}")).clone();
+    for dev in ["a", "b"] {
+        let (_, p, retained) = find(&format!("plcsh/line/{dev}/VW100"));
+        assert!(retained);
+        let v = json(&p);
+        assert_eq!((v["value"].as_i64(), v["type"].as_str(), v["seq"].as_u64()), (Some(0), Some("WORD"), Some(3)), "{v}");
+        assert_eq!(v["device"], dev);
+        assert!(v["ts"].as_u64().unwrap() > 1_600_000_000_000, "a source timestamp in ms: {v}");
+        assert_eq!(json(&find(&format!("plcsh/line/{dev}/VD200_REAL")).1)["type"], "REAL");
+        assert_eq!(find(&format!("plcsh/line/{dev}/status")).1, b"online");
+    }
+    assert_eq!(find("plcsh/line/line-3/status").1, b"offline");
+    assert!(!g.iter().any(|(t, _, _)| t == "plcsh/line/line-3/VW100"), "an offline device publishes no values");
+    assert_eq!(find("plcsh/line/_publisher/status").1, b"offline", "the publisher said goodbye");
+}
+
+#[test]
+fn readings_taken_while_the_broker_is_away_arrive_in_order() {
+    if !mosquitto_present() {
+        return;
+    }
+    let d = dir("restart");
+    let port = free_port();
+    let broker = Broker::start(&d, port);
+    let got = subscribe(port, "steady-reader");
+    let mut child = plcsh()
+        .args(["--json", "publish", "--broker", &format!("mqtt://127.0.0.1:{port}"), "--every", "20ms", "--count", "120", "--qos", "1", "VW100"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut lines = std::io::BufReader::new(child.stdout.take().unwrap()).lines();
+    let next_event = |lines: &mut std::io::Lines<_>, what: &str| loop {
+        let l: String = lines.next().unwrap_or_else(|| panic!("publish ended before {what}")).unwrap();
+        let v: serde_json::Value = serde_json::from_str(&l).unwrap();
+        if v["event"] == "broker" && v["state"] == what {
+            return;
+        }
+    };
+    next_event(&mut lines, "connected");
+    let seqs = |g: &[(String, Vec<u8>, bool)]| -> Vec<u64> {
+        g.iter().filter(|(t, _, _)| t == "plcsh/single/plc/VW100").map(|(_, p, _)| json(p)["seq"].as_u64().unwrap()).collect()
+    };
+    wait_for(&got, "the first readings", |g| seqs(g).len() >= 5);
+    broker.stop();
+    next_event(&mut lines, "away");
+    let broker = Broker::start(&d, port);
+    let rest: Vec<String> = lines.map(|l| l.unwrap()).collect();
+    let out = child.wait_with_output().unwrap();
+    let summary: serde_json::Value = serde_json::from_str(rest.last().expect("a summary")).unwrap();
+    assert_eq!(summary["ok"], true, "{rest:?} {}", String::from_utf8_lossy(&out.stderr));
+    assert!(summary["reconnects"].as_u64().unwrap() >= 1, "{summary}");
+    assert_eq!(summary["dropped"], 0);
+    wait_for(&got, "every reading", |g| seqs(g).contains(&120));
+    // At least once: a reading may come twice around the restart, but never out of order and none is missing.
+    let s = seqs(&got.lock().unwrap());
+    let mut highest = 0;
+    for &x in &s {
+        assert!(x > highest || x <= highest && s.iter().filter(|&&y| y == x).count() > 1, "out of order at {x}: {s:?}");
+        highest = highest.max(x);
+    }
+    let mut unique = s.clone();
+    unique.sort();
+    unique.dedup();
+    assert_eq!(unique, (1..=120).collect::<Vec<u64>>(), "every reading arrived");
+    drop(broker);
+}
+
+#[test]
+fn credentials_never_come_from_the_command_line() {
+    let o = run(&["publish", "--broker", "mqtt://user:secret@127.0.0.1:1883", "VW0"], "");
+    assert_eq!(o.status.code(), Some(2), "{}", both(&o));
+    assert!(stderr(&o).contains("PLCSH_MQTT_PASSWORD"), "{}", both(&o));
+    let o = run(&["publish", "VW0"], "");
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("needs a broker"), "{}", both(&o));
+}
