@@ -13,8 +13,18 @@ use std::process::{Child, Command, Stdio};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
+/// The broker's program: on PATH, or where Debian puts it (/usr/sbin is not on every user's PATH).
+fn mosquitto() -> &'static str {
+    let runs = |p: &str| Command::new(p).arg("-h").stdout(Stdio::null()).stderr(Stdio::null()).status().is_ok();
+    if runs("mosquitto") {
+        "mosquitto"
+    } else {
+        "/usr/sbin/mosquitto"
+    }
+}
+
 fn mosquitto_present() -> bool {
-    let found = Command::new("mosquitto").arg("-h").stdout(Stdio::null()).stderr(Stdio::null()).status().is_ok();
+    let found = Command::new(mosquitto()).arg("-h").stdout(Stdio::null()).stderr(Stdio::null()).status().is_ok();
     if !found {
         assert!(std::env::var_os("CI").is_none(), "mosquitto is required when CI is set (.ci/run installs it)");
         eprintln!("skipped: mosquitto is not installed");
@@ -49,7 +59,7 @@ impl Broker {
             ),
         )
         .unwrap();
-        let child = Command::new("mosquitto").arg("-c").arg(&conf).stdout(Stdio::null()).stderr(Stdio::null()).spawn().unwrap();
+        let child = Command::new(mosquitto()).arg("-c").arg(&conf).stdout(Stdio::null()).stderr(Stdio::null()).spawn().unwrap();
         let deadline = Instant::now() + Duration::from_secs(10);
         while std::net::TcpStream::connect(("127.0.0.1", port)).is_err() {
             assert!(Instant::now() < deadline, "mosquitto did not start on port {port}");
