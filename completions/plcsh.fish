@@ -51,6 +51,7 @@ complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "agent" -d 'The PLC-side
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "run" -d 'Run a Lua script: plcsh [--time stepped] [--device NAME=URL] run SCRIPT.lua [ARGS…]'
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "record" -d 'Recordings made with --record: `record show FILE` prints the decoded timeline'
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "replay" -d 'Replay a recording\'s requests against a simulator and report every reply that differs'
+complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "publish" -d 'Poll operands on a device or a fleet and publish them to an MQTT broker (docs/fleets.md)'
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
@@ -307,17 +308,43 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l json -d 'Print on
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -s h -l help -d 'Print help (see more with \'--help\')'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay help" -f -a "models" -d 'List the K2 model catalogue; `models MODEL` shows one in full (areas, counters, manual notes)'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay help" -f -a "devices" -d 'List open devices and the device profiles (devices.toml), with problems in that file'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay help" -f -a "ports" -d 'List the serial ports present, with USB adapter (VID:PID, product, serial number)'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay help" -f -a "paths" -d 'Print where every file lives: profiles, Lua modules, state, history, snapshots, UMPK flash, recordings'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay help" -f -a "completions" -d 'Print a shell completion script (bash, zsh, fish, powershell), or write them all'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay help" -f -a "sim" -d 'Serve simulators to other programs: `sim serve` puts the simulated K2 on Modbus TCP / RTU and drives on a pty'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay help" -f -a "agent" -d 'The PLC-side helper program that gives plcsh SM registers and instructions on a real K2'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay help" -f -a "run" -d 'Run a Lua script: plcsh [--time stepped] [--device NAME=URL] run SCRIPT.lua [ARGS…]'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay help" -f -a "record" -d 'Recordings made with --record: `record show FILE` prints the decoded timeline'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay help" -f -a "replay" -d 'Replay a recording\'s requests against a simulator and report every reply that differs'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l broker -d 'The broker: mqtt://HOST:PORT, or mqtts://HOST:PORT for TLS (default: `url` in the profile file\'s [mqtt])' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -s f -l fleet -d 'Publish every member of this fleet (default: the current device)' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l every -d 'How often each device is read' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l qos -d 'MQTT quality of service for values: 0 (at most once) or 1 (at least once)' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l deadband -d 'With --on-change: the smallest change published (in the operand\'s units)' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l buffer -d 'Readings kept while the broker is away (the oldest beyond it are dropped and counted)' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l mqtt-version -d 'MQTT protocol version' -r -f -a "3.1.1\t''
+5\t''"
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l count -d 'Stop after this many polls of each device (default: until Ctrl-C)' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l client-id -d 'The MQTT client id (default: plcsh-GROUP-PID)' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l model -d 'Model of the default simulated PLC' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
+stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l on-change -d 'Publish a value only when it changed (by more than --deadband); otherwise every poll'
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l json -d 'Print one JSON object per command result'
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay publish help" -f -a "models" -d 'List the K2 model catalogue; `models MODEL` shows one in full (areas, counters, manual notes)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay publish help" -f -a "devices" -d 'List open devices and the device profiles (devices.toml), with problems in that file'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay publish help" -f -a "ports" -d 'List the serial ports present, with USB adapter (VID:PID, product, serial number)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay publish help" -f -a "paths" -d 'Print where every file lives: profiles, Lua modules, state, history, snapshots, UMPK flash, recordings'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay publish help" -f -a "completions" -d 'Print a shell completion script (bash, zsh, fish, powershell), or write them all'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay publish help" -f -a "sim" -d 'Serve simulators to other programs: `sim serve` puts the simulated K2 on Modbus TCP / RTU and drives on a pty'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay publish help" -f -a "agent" -d 'The PLC-side helper program that gives plcsh SM registers and instructions on a real K2'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay publish help" -f -a "run" -d 'Run a Lua script: plcsh [--time stepped] [--device NAME=URL] run SCRIPT.lua [ARGS…]'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay publish help" -f -a "record" -d 'Recordings made with --record: `record show FILE` prints the decoded timeline'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay publish help" -f -a "replay" -d 'Replay a recording\'s requests against a simulator and report every reply that differs'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay publish help" -f -a "publish" -d 'Poll operands on a device or a fleet and publish them to an MQTT broker (docs/fleets.md)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay publish help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand help; and __fish_seen_subcommand_from sim" -f -a "serve" -d 'Serve the simulator over Modbus TCP, Modbus RTU on a pseudo-terminal, and/or RTU over TCP'
 complete -c plcsh -n "__fish_plcsh_using_subcommand help; and __fish_seen_subcommand_from sim" -f -a "control" -d 'Send one line to a served simulator\'s control channel (faults, events) and print the reply'
 complete -c plcsh -n "__fish_plcsh_using_subcommand help; and __fish_seen_subcommand_from agent" -f -a "il" -d 'Print the helper program (K2 instruction list) for KincoBuilder'
