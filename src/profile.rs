@@ -492,6 +492,16 @@ impl Guard {
         Ok(())
     }
 
+    /// True for a profile with `read_only = true`.
+    pub fn read_only(&self) -> bool {
+        self.read_only
+    }
+
+    /// True when the profile lists the operands that may be written (`allow`).
+    pub fn has_allow(&self) -> bool {
+        self.allow.is_some()
+    }
+
     /// A short description for `devices` (`read only`, `allow VW100..VW120, M0.0`).
     pub fn summary(&self) -> String {
         match (&self.allow, self.read_only) {

@@ -239,3 +239,111 @@ fn credentials_never_come_from_the_command_line() {
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("needs a broker"), "{}", both(&o));
 }
+
+#[test]
+fn writes_from_the_broker_only_to_allowed_operands() {
+    if !mosquitto_present() {
+        return;
+    }
+    let d = dir("writes");
+    let port = free_port();
+    let _broker = Broker::start(&d, port);
+    let cfg = d.join("devices.toml");
+    std::fs::write(
+        &cfg,
+        "[devices.a]\nurl = \"sim:K205-16DT\"\nallow = [\"VW100\"]\n[devices.v]\nurl = \"sim:K205-16DT\"\nread_only = true\n[fleets.pair]\ndevices = [\"a\", \"v\"]\n",
+    )
+    .unwrap();
+    let got = subscribe(port, "writer-watch");
+    let mut child = plcsh()
+        .args(["--config", cfg.to_str().unwrap(), "--json", "publish", "-f", "pair", "--accept-writes",
+               "--broker", &format!("mqtt://127.0.0.1:{port}"), "--every", "20ms", "--count", "400", "VW100", "VW102"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let topic_seen = |t: &str| {
+        let t = t.to_string();
+        move |g: &[(String, Vec<u8>, bool)]| g.iter().any(|(x, _, _)| *x == t)
+    };
+    // A value published after the publisher connected: its command subscription is in place.
+    wait_for(&got, "the first values", topic_seen("plcsh/pair/v/VW100"));
+    let mut opts = rumqttc::MqttOptions::new("writer", "127.0.0.1", port);
+    opts.set_keep_alive(Duration::from_secs(5));
+    let (client, mut conn) = rumqttc::Client::new(opts, 10);
+    std::thread::spawn(move || for _ in conn.iter() {});
+    let send = |topic: &str, body: &str| client.publish(topic, rumqttc::QoS::AtLeastOnce, false, body.as_bytes().to_vec()).unwrap();
+    send("plcsh/pair/a/set", r#"{"operand":"VW100","value":1234,"id":"allowed"}"#);
+    send("plcsh/pair/a/set", r#"{"operand":"VW102","value":1,"id":"not-listed"}"#);
+    send("plcsh/pair/v/set", r#"{"operand":"VW100","value":1,"id":"read-only"}"#);
+    send("plcsh/pair/a/set", r#"{"operand":"VW100""#);
+    let replies = |g: &[(String, Vec<u8>, bool)]| -> Vec<serde_json::Value> {
+        g.iter().filter(|(t, _, _)| t.ends_with("/reply")).map(|(_, p, _)| json(p)).collect()
+    };
+    wait_for(&got, "four replies", |g| replies(g).len() >= 4);
+    let value_of = |g: &[(String, Vec<u8>, bool)]| {
+        g.iter().filter(|(t, _, _)| t == "plcsh/pair/a/VW100").any(|(_, p, _)| json(p)["value"] == 1234)
+    };
+    wait_for(&got, "the written value published", value_of);
+    plcsh::core::platform::interrupt_child(&child);
+    let _ = child.wait();
+    let r = replies(&got.lock().unwrap());
+    let by = |id: &str| r.iter().find(|x| x["id"] == id).unwrap_or_else(|| panic!("{id}: {r:?}")).clone();
+    assert_eq!(by("allowed")["ok"], true, "{r:?}");
+    let not_listed = by("not-listed");
+    assert_eq!(not_listed["ok"], false);
+    assert!(not_listed["error"]["message"].as_str().unwrap().contains("allow list"), "{not_listed}");
+    let ro = by("read-only");
+    assert_eq!(ro["ok"], false);
+    assert!(ro["error"]["message"].as_str().unwrap().contains("read_only"), "{ro}");
+    assert!(r.iter().any(|x| x["ok"] == false && x["error"]["kind"] == "syntax"), "a broken command is answered: {r:?}");
+    assert!(
+        !got.lock().unwrap().iter().any(|(t, p, _)| t == "plcsh/pair/v/VW100" && json(p)["value"] != 0),
+        "the read-only device was not written"
+    );
+}
+
+#[test]
+fn without_accept_writes_the_broker_writes_nothing() {
+    if !mosquitto_present() {
+        return;
+    }
+    let d = dir("no-writes");
+    let port = free_port();
+    let _broker = Broker::start(&d, port);
+    let cfg = d.join("devices.toml");
+    std::fs::write(&cfg, "[devices.a]\nurl = \"sim:K205-16DT\"\nallow = [\"VW100\"]\n").unwrap();
+    let got = subscribe(port, "no-writes-watch");
+    let mut child = plcsh()
+        .args(["--config", cfg.to_str().unwrap(), "-d", "a", "publish", "--broker", &format!("mqtt://127.0.0.1:{port}"),
+               "--every", "20ms", "--count", "400", "VW100"])
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let seqs = |g: &[(String, Vec<u8>, bool)]| -> u64 {
+        g.iter().filter(|(t, _, _)| t == "plcsh/single/a/VW100").filter_map(|(_, p, _)| json(p)["seq"].as_u64()).max().unwrap_or(0)
+    };
+    wait_for(&got, "the first values", |g| seqs(g) >= 1);
+    let mut opts = rumqttc::MqttOptions::new("uninvited", "127.0.0.1", port);
+    opts.set_keep_alive(Duration::from_secs(5));
+    let (client, mut conn) = rumqttc::Client::new(opts, 10);
+    let (acked_tx, acked) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        for ev in conn.iter() {
+            if let Ok(rumqttc::Event::Incoming(rumqttc::Packet::PubAck(_))) = ev {
+                let _ = acked_tx.send(());
+            }
+        }
+    });
+    client.publish("plcsh/single/a/set", rumqttc::QoS::AtLeastOnce, false, br#"{"operand":"VW100","value":77}"#.to_vec()).unwrap();
+    acked.recv_timeout(Duration::from_secs(10)).expect("the broker took the command");
+    // Ten more polls after the broker had the command: none shows it, no reply came.
+    let after = seqs(&got.lock().unwrap());
+    wait_for(&got, "ten more polls", |g| seqs(g) >= after + 10);
+    plcsh::core::platform::interrupt_child(&child);
+    let _ = child.wait();
+    let g = got.lock().unwrap();
+    assert!(!g.iter().any(|(t, _, _)| t.ends_with("/reply")), "no reply without --accept-writes");
+    assert!(g.iter().filter(|(t, _, _)| t == "plcsh/single/a/VW100").all(|(_, p, _)| json(p)["value"] == 0));
+}

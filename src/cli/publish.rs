@@ -51,6 +51,10 @@ pub struct PublishArgs {
     /// The MQTT client id (default: plcsh-GROUP-PID).
     #[arg(long = "client-id", value_name = "ID")]
     pub client_id: Option<String>,
+    /// Take writes from the broker on plcsh/GROUP/DEVICE/set, only to operands on the device profile's
+    /// allow list (replies on plcsh/GROUP/DEVICE/reply); read-only profiles never accept one.
+    #[arg(long = "accept-writes")]
+    pub accept_writes: bool,
     /// The operands to publish (ranges allowed: VW100..VW110).
     #[arg(value_name = "OPERAND", required = true)]
     pub operands: Vec<String>,
@@ -89,6 +93,7 @@ fn config(cli: &super::Cli, args: &PublishArgs, group: &str) -> Result<broker::C
         qos1: args.qos == 1,
         bound: args.buffer.max(1),
         will_topic: publish::topic(group, "_publisher", "status"),
+        commands: args.accept_writes.then(|| format!("plcsh/{}/+/set", publish::level(group))),
     })
 }
 
@@ -148,17 +153,27 @@ fn start(cli: &super::Cli, shell: &mut Shell, args: &PublishArgs, style: Style, 
     let stop = shell.session.interrupt.clone();
     let mut offline: std::collections::BTreeSet<String> = Default::default();
     let base = crate::fleet::run::Base::of(&shell.session, Style::default());
+    // `--accept-writes`: each device's command channel, by its topic level.
+    let mut routes: std::collections::HashMap<String, std::sync::mpsc::Sender<Vec<u8>>> = Default::default();
+    let mut route = |name: &str| {
+        let (t, r) = std::sync::mpsc::channel::<Vec<u8>>();
+        routes.insert(publish::level(name), t);
+        args.accept_writes.then_some(r)
+    };
+    let single = shell.current_device().unwrap_or_else(|_| "plc".into());
+    let single_rx = route(&single);
+    let member_rx: Vec<_> = fleet.iter().flat_map(|f| f.members.iter()).map(|m| route(&m.name)).collect();
     std::thread::scope(|scope| {
         let mut pollers = Vec::new();
         match &fleet {
             Some(f) => {
                 let f = Arc::new(f.clone());
-                for (i, m) in f.members.iter().enumerate() {
+                for ((i, m), rx) in f.members.iter().enumerate().zip(member_rx) {
                     let (f, base, poll, tx, seen_tx, stop) =
                         (f.clone(), base.clone(), poll.clone(), tx.clone(), seen_tx.clone(), stop.clone());
                     let name = m.name.clone();
                     pollers.push(scope.spawn(move || match base.open(&f, &f.members[i], stop.clone()) {
-                        Ok(mut sh) => publish::poll_device(&mut sh, &name, &poll, &tx, &seen_tx, &stop),
+                        Ok(mut sh) => publish::poll_device(&mut sh, &name, &poll, &tx, &seen_tx, &stop, rx.as_ref()),
                         Err(e) => {
                             let _ = tx.send(ToBroker::Msg(broker::Msg {
                                 topic: publish::topic(&poll.group, &name, "status"),
@@ -171,10 +186,10 @@ fn start(cli: &super::Cli, shell: &mut Shell, args: &PublishArgs, style: Style, 
                 }
             }
             None => {
-                let name = shell.current_device().unwrap_or_else(|_| "plc".into());
+                let name = single.clone();
                 let (poll, tx, seen_tx, stop) = (poll.clone(), tx.clone(), seen_tx.clone(), stop.clone());
                 let sh = &mut *shell;
-                pollers.push(scope.spawn(move || publish::poll_device(sh, &name, &poll, &tx, &seen_tx, &stop)));
+                pollers.push(scope.spawn(move || publish::poll_device(sh, &name, &poll, &tx, &seen_tx, &stop, single_rx.as_ref())));
             }
         }
         drop(seen_tx);
@@ -184,6 +199,13 @@ fn start(cli: &super::Cli, shell: &mut Shell, args: &PublishArgs, style: Style, 
                 match n {
                     Note::Connected => event(out, style, json!({"ok": true, "cmd": "publish", "event": "broker", "state": "connected", "broker": broker_name}), format!("connected to {broker_name}")),
                     Note::Away(why) => event(out, style, json!({"ok": true, "cmd": "publish", "event": "broker", "state": "away", "broker": broker_name, "reason": why}), format!("broker {broker_name} away ({why}); readings are kept up to --buffer and sent when it returns")),
+                    Note::Command(topic, payload) => {
+                        // plcsh/GROUP/DEVICE/set: to that device's poller (others are not ours).
+                        let device = topic.split('/').nth(2).unwrap_or("");
+                        if let Some(t) = routes.get(device) {
+                            let _ = t.send(payload);
+                        }
+                    }
                 }
             }
             match seen.recv_timeout(Duration::from_millis(50)) {
@@ -206,7 +228,8 @@ fn start(cli: &super::Cli, shell: &mut Shell, args: &PublishArgs, style: Style, 
     let _ = tx.send(ToBroker::Stop);
     drop(tx);
     let stats = broker_thread.join().unwrap_or_default();
-    while let Ok(Note::Away(why)) = notes.try_recv() {
+    while let Ok(n) = notes.try_recv() {
+        let Note::Away(why) = n else { continue };
         event(out, style, json!({"ok": true, "cmd": "publish", "event": "broker", "state": "away", "broker": broker_name, "reason": why}), format!("broker {broker_name} away ({why})"));
     }
     let ok = stats.dropped == 0 && stats.undelivered == 0 && offline.is_empty();

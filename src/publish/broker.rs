@@ -38,6 +38,8 @@ pub enum Note {
     Connected,
     /// The broker went away (why), with the readings queued so far.
     Away(String),
+    /// A message on a command topic (`--accept-writes`): topic and payload.
+    Command(String, Vec<u8>),
 }
 
 /// How to reach the broker.
@@ -56,6 +58,8 @@ pub struct Config {
     pub bound: usize,
     /// The publisher's own status topic (its last will says `offline`).
     pub will_topic: String,
+    /// The command topic filter subscribed to (`--accept-writes`), if any.
+    pub commands: Option<String>,
 }
 
 /// What happened, for the summary.
@@ -75,6 +79,7 @@ enum Loop {
     Confirmed,
     Disconnected,
     Error(String),
+    Command(String, Vec<u8>),
 }
 
 const BACKOFF_MIN: Duration = Duration::from_millis(100);
@@ -161,6 +166,10 @@ macro_rules! broker_loop {
                                 etx.send(Loop::ConnAck(c.session_present))
                             }
                             Ok(Event::Incoming(Packet::PubAck(_))) if qos1 => etx.send(Loop::Confirmed),
+                            Ok(Event::Incoming(Packet::Publish(p))) => {
+                                let topic = String::from_utf8_lossy(AsRef::<[u8]>::as_ref(&p.topic)).into_owned();
+                                etx.send(Loop::Command(topic, p.payload.to_vec()))
+                            }
                             Ok(Event::Outgoing(rumqttc::Outgoing::Publish(_))) if !qos1 => etx.send(Loop::Confirmed),
                             Ok(Event::Outgoing(rumqttc::Outgoing::Disconnect)) => etx.send(Loop::Disconnected),
                             Ok(_) => Ok(()),
@@ -222,6 +231,9 @@ macro_rules! broker_loop {
                                 if !said_offline {
                                     queue.items.push_front(status(b"online"));
                                 }
+                                if let Some(filter) = &cfg.commands {
+                                    let _ = client.try_subscribe(filter.clone(), QoS::AtLeastOnce);
+                                }
                                 let _ = notes.send(Note::Connected);
                             }
                             Some(Loop::Confirmed) => {
@@ -230,6 +242,9 @@ macro_rules! broker_loop {
                                 }
                             }
                             Some(Loop::Disconnected) => break,
+                            Some(Loop::Command(topic, payload)) => {
+                                let _ = notes.send(Note::Command(topic, payload));
+                            }
                             Some(Loop::Error(why)) => {
                                 if !away_told {
                                     away_told = true;

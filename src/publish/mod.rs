@@ -11,12 +11,14 @@
 //! `plcsh/<GROUP>/<DEVICE>/status` is `online`/`offline` (retained): a device that stops
 //! answering is marked offline and none of its values are published until it answers again
 //! (so nothing stale is published as fresh). `plcsh/<GROUP>/_publisher/status` is the
-//! publisher's own state, `offline` also as its last will.
+//! publisher's own state, `offline` also as its last will. With `--accept-writes`,
+//! `plcsh/<GROUP>/<DEVICE>/set` takes writes and `…/reply` answers them ([`writes`]).
 //!
 //! Each device is polled on a thread of its own with the same reader as `get` (one batch per
 //! poll, coalesced by the driver); the broker connection is one thread ([`broker`]).
 
 pub mod broker;
+pub mod writes;
 
 use crate::core::{Error, Result, Value};
 use crate::shell::Shell;
@@ -83,6 +85,7 @@ pub fn poll_device(
     tx: &UnboundedSender<ToBroker>,
     seen: &std::sync::mpsc::Sender<Seen>,
     stop: &AtomicBool,
+    commands: Option<&std::sync::mpsc::Receiver<Vec<u8>>>,
 ) {
     let texts: Vec<&str> = p.operands.iter().map(String::as_str).collect();
     let mut last: HashMap<String, Value> = HashMap::new();
@@ -97,6 +100,15 @@ pub fn poll_device(
         }
         seq += 1;
         let started = std::time::Instant::now();
+        // Writes from the broker (`--accept-writes`) first, so this poll shows them.
+        while let Some(payload) = commands.and_then(|c| c.try_recv().ok()) {
+            let reply = writes::apply(shell, device, &payload);
+            let _ = tx.send(ToBroker::Msg(Msg {
+                topic: topic(&p.group, device, "reply"),
+                payload: reply.to_string().into_bytes(),
+                retain: false,
+            }));
+        }
         match shell.session.get(&texts) {
             Ok(readings) => {
                 let ts = now_ms();
