@@ -255,9 +255,7 @@ fn profile(
             toml::Value::String(s) => s.clone(),
             _ => return Err((at(v), "`url` must be a string".into())),
         },
-        (None, None) => {
-            return Err((None, "`url` is missing (e.g. url = \"tcp://192.168.1.10:502?unit=1\")".into()))
-        }
+        (None, None) => return Err((None, "`url` is missing (e.g. url = \"tcp://192.168.1.10:502?unit=1\")".into())),
     };
     let parsed = DeviceUrl::parse(&url).map_err(|e| (keys.get("url").and_then(at), e.message.clone()))?;
     let mut p = Profile {
@@ -410,7 +408,7 @@ pub fn open_profile(s: &mut crate::session::Session, name: &str, p: &Profile) ->
     for (k, v) in &p.options {
         device.set_option(k, v).map_err(|e| e.device(name).cause(&from))?;
     }
-    let guard = Guard::build(&p, device.operands()).map_err(|e| e.device(name))?;
+    let guard = Guard::build(p, device.operands()).map_err(|e| e.device(name))?;
     s.add_guarded(name, &p.url, device, guard);
     Ok(())
 }

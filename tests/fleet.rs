@@ -30,7 +30,7 @@ fn line_config(name: &str, urls: &[String], extra: &str) -> PathBuf {
     config(name, &text)
 }
 
-fn plcsh_with(cfg: &PathBuf, args: &[&str]) -> std::process::Output {
+fn plcsh_with(cfg: &std::path::Path, args: &[&str]) -> std::process::Output {
     let mut all = vec!["--config", cfg.to_str().unwrap()];
     all.extend_from_slice(args);
     run(&all, "")
@@ -125,7 +125,11 @@ fn a_script_runs_on_every_member_and_checks_decide_the_status() {
     let l = json_lines(&o);
     assert_eq!(o.status.code(), Some(1), "{}", both(&o));
     assert_eq!(l.len(), 4, "{l:?}");
-    assert_eq!((l[0]["ok"].clone(), l[1]["ok"].clone(), l[2]["ok"].clone()), (true.into(), false.into(), true.into()), "{l:?}");
+    assert_eq!(
+        (l[0]["ok"].clone(), l[1]["ok"].clone(), l[2]["ok"].clone()),
+        (true.into(), false.into(), true.into()),
+        "{l:?}"
+    );
     assert!(l[1]["error"]["message"].as_str().unwrap().contains("VW20 is not 1"), "{}", l[1]);
     assert!(l[0]["output"].as_str().unwrap().contains("VW20 is"), "what a member prints is kept: {}", l[0]);
     assert_eq!(l[3]["cmd"], "fleet");
@@ -183,7 +187,15 @@ fn devices_shows_fleets_and_bad_ones_with_their_line() {
     assert_eq!(fleets[0]["members"], serde_json::json!(["presses-11", "presses-12", "presses-13"]));
     let o = plcsh_with(&cfg, &["devices"]);
     let words = stdout(&o).split_whitespace().collect::<Vec<_>>().join(" ");
-    assert!(words.contains("| presses | (fleet) | 3 devices | tcp://10.0.0.{11..13}:502?unit=1 | read only |"), "{words}");
+    assert!(
+        words.contains("| presses | (fleet) | 3 devices | tcp://10.0.0.{11..13}:502?unit=1 | read only |"),
+        "{words}"
+    );
     let problems = l[0]["problems"].as_array().unwrap();
-    assert!(problems.iter().any(|p| p.as_str().unwrap().contains(":5: fleet `bad` skipped: the range {9..1} runs backwards")), "{problems:?}");
+    assert!(
+        problems
+            .iter()
+            .any(|p| p.as_str().unwrap().contains(":5: fleet `bad` skipped: the range {9..1} runs backwards")),
+        "{problems:?}"
+    );
 }

@@ -42,11 +42,7 @@ fn usage(out: &mut dyn Write, style: Style, cmd: &str, e: &Error) -> i32 {
 }
 
 /// What the fleet run needs from the main shell.
-fn prepare(
-    cli: &super::Cli,
-    shell: &Shell,
-    name: &str,
-) -> crate::core::Result<(crate::fleet::Fleet, Settings, Base)> {
+fn prepare(cli: &super::Cli, shell: &Shell, name: &str) -> crate::core::Result<(crate::fleet::Fleet, Settings, Base)> {
     let fleet = shell.session.profiles.fleet(name)?.clone();
     let settings = settings(cli)?;
     Ok((fleet, settings, Base::of(&shell.session, Style { json: false, color: false })))
@@ -82,7 +78,13 @@ pub fn commands(cli: &super::Cli, shell: &Shell, name: &str, line: &str, style: 
         })
         .collect();
     let first = line_cmd(cli.command.as_deref().unwrap_or(""));
-    finish(out, style, &rows, &report::Summary { fleet: name, cmd: &first, jobs: settings.jobs, elapsed: start.elapsed() }, shell)
+    finish(
+        out,
+        style,
+        &rows,
+        &report::Summary { fleet: name, cmd: &first, jobs: settings.jobs, elapsed: start.elapsed() },
+        shell,
+    )
 }
 
 fn line_cmd(line: &str) -> String {
@@ -93,7 +95,14 @@ fn line_cmd(line: &str) -> String {
 /// of its own, on the member's thread, with the member as its current device (commands and
 /// `plcsh.exec` act on it; `plcsh.fleet_member` names it for `plcsh.device`). What the script prints is kept per device and shown
 /// after the table (`output` in JSON), so the devices' lines never interleave.
-pub fn script(cli: &super::Cli, shell: &Shell, name: &str, args: &super::run::RunArgs, style: Style, out: &mut dyn Write) -> i32 {
+pub fn script(
+    cli: &super::Cli,
+    shell: &Shell,
+    name: &str,
+    args: &super::run::RunArgs,
+    style: Style,
+    out: &mut dyn Write,
+) -> i32 {
     let (fleet, settings, base) = match prepare(cli, shell, name) {
         Ok(p) => p,
         Err(e) => return usage(out, style, "run", &e),
@@ -161,7 +170,13 @@ pub fn script(cli: &super::Cli, shell: &Shell, name: &str, args: &super::run::Ru
         }
     }
     let what = args.script.display().to_string();
-    finish(out, style, &rows, &report::Summary { fleet: name, cmd: &what, jobs: settings.jobs, elapsed: start.elapsed() }, shell)
+    finish(
+        out,
+        style,
+        &rows,
+        &report::Summary { fleet: name, cmd: &what, jobs: settings.jobs, elapsed: start.elapsed() },
+        shell,
+    )
 }
 
 /// One member's script run.

@@ -417,11 +417,15 @@ fn run_cli() -> i32 {
 fn run(cli: &Cli, mut shell: Shell, style: Style, mut out: std::io::StdoutLock<'static>) -> i32 {
     if let Some(name) = &cli.fleet {
         return match (&cli.sub, &cli.command) {
-            (Some(Sub::Run(args)), _) if args.fleet.is_none() => fleet::script(cli, &shell, name, args, style, &mut out),
+            (Some(Sub::Run(args)), _) if args.fleet.is_none() => {
+                fleet::script(cli, &shell, name, args, style, &mut out)
+            }
             (None, Some(cmds)) => fleet::commands(cli, &shell, name, cmds, style, &mut out),
             _ => {
-                let e = crate::core::Error::usage("--fleet runs -c COMMANDS or run SCRIPT.lua on every device of the fleet")
-                    .hint(format!("e.g. plcsh -f {name} -c 'get VW100', or plcsh run --fleet {name} check.lua"));
+                let e = crate::core::Error::usage(
+                    "--fleet runs -c COMMANDS or run SCRIPT.lua on every device of the fleet",
+                )
+                .hint(format!("e.g. plcsh -f {name} -c 'get VW100', or plcsh run --fleet {name} check.lua"));
                 let _ = output::report_error(&mut out, style, "fleet", &e, None);
                 2
             }

@@ -64,7 +64,8 @@ fn config(cli: &super::Cli, args: &PublishArgs, group: &str) -> Result<broker::C
     let path = cli.config.clone().or_else(crate::profile::default_path);
     let file = publish::file_settings(path.as_deref())?;
     let url = args.broker.clone().or(file.url.clone()).ok_or_else(|| {
-        Error::usage("publish needs a broker").hint("--broker mqtt://HOST:1883, or url = \"mqtt://HOST:1883\" under [mqtt] in the profile file")
+        Error::usage("publish needs a broker")
+            .hint("--broker mqtt://HOST:1883, or url = \"mqtt://HOST:1883\" under [mqtt] in the profile file")
     })?;
     let (host, port, tls) = publish::parse_broker(&url)?;
     let env = |k: &str| std::env::var(k).ok().filter(|v| !v.is_empty());
@@ -79,7 +80,9 @@ fn config(cli: &super::Cli, args: &PublishArgs, group: &str) -> Result<broker::C
         (None, None) => None,
     };
     let ca = match &file.ca_file {
-        Some(f) => Some(std::fs::read(f).map_err(|e| Error::io(format!("cannot read [mqtt] ca_file {}: {e}", f.display())))?),
+        Some(f) => {
+            Some(std::fs::read(f).map_err(|e| Error::io(format!("cannot read [mqtt] ca_file {}: {e}", f.display())))?)
+        }
         None => None,
     };
     Ok(broker::Config {
@@ -88,7 +91,11 @@ fn config(cli: &super::Cli, args: &PublishArgs, group: &str) -> Result<broker::C
         tls: tls || ca.is_some(),
         ca,
         credentials,
-        client_id: args.client_id.clone().or(file.client_id).unwrap_or_else(|| format!("plcsh-{group}-{}", std::process::id())),
+        client_id: args
+            .client_id
+            .clone()
+            .or(file.client_id)
+            .unwrap_or_else(|| format!("plcsh-{group}-{}", std::process::id())),
         v5: args.mqtt_version == "5",
         qos1: args.qos == 1,
         bound: args.buffer.max(1),
@@ -148,7 +155,8 @@ fn start(cli: &super::Cli, shell: &mut Shell, args: &PublishArgs, style: Style, 
         count: args.count,
     };
     let (notes_tx, notes) = std::sync::mpsc::channel();
-    let (tx, broker_thread) = broker::spawn(cfg, notes_tx).map_err(|e| Error::io("cannot start the MQTT thread").cause(e))?;
+    let (tx, broker_thread) =
+        broker::spawn(cfg, notes_tx).map_err(|e| Error::io("cannot start the MQTT thread").cause(e))?;
     let (seen_tx, seen) = std::sync::mpsc::channel::<Seen>();
     let stop = shell.session.interrupt.clone();
     let mut offline: std::collections::BTreeSet<String> = Default::default();
@@ -189,7 +197,11 @@ fn start(cli: &super::Cli, shell: &mut Shell, args: &PublishArgs, style: Style, 
                 let name = single.clone();
                 let (poll, tx, seen_tx, stop) = (poll.clone(), tx.clone(), seen_tx.clone(), stop.clone());
                 let sh = &mut *shell;
-                pollers.push(scope.spawn(move || publish::poll_device(sh, &name, &poll, &tx, &seen_tx, &stop, single_rx.as_ref())));
+                pollers.push(
+                    scope.spawn(move || {
+                        publish::poll_device(sh, &name, &poll, &tx, &seen_tx, &stop, single_rx.as_ref())
+                    }),
+                );
             }
         }
         drop(seen_tx);
@@ -211,11 +223,21 @@ fn start(cli: &super::Cli, shell: &mut Shell, args: &PublishArgs, style: Style, 
             match seen.recv_timeout(Duration::from_millis(50)) {
                 Ok(Seen::Offline(d, e)) => {
                     offline.insert(d.clone());
-                    event(out, style, json!({"ok": true, "cmd": "publish", "event": "device", "device": d, "state": "offline", "error": e}), format!("{d} offline: {e}"));
+                    event(
+                        out,
+                        style,
+                        json!({"ok": true, "cmd": "publish", "event": "device", "device": d, "state": "offline", "error": e}),
+                        format!("{d} offline: {e}"),
+                    );
                 }
                 Ok(Seen::Online(d)) => {
                     offline.remove(&d);
-                    event(out, style, json!({"ok": true, "cmd": "publish", "event": "device", "device": d, "state": "online"}), format!("{d} answers again"));
+                    event(
+                        out,
+                        style,
+                        json!({"ok": true, "cmd": "publish", "event": "device", "device": d, "state": "online"}),
+                        format!("{d} answers again"),
+                    );
                 }
                 Err(RecvTimeoutError::Timeout) => {}
                 Err(RecvTimeoutError::Disconnected) => break,
@@ -230,7 +252,12 @@ fn start(cli: &super::Cli, shell: &mut Shell, args: &PublishArgs, style: Style, 
     let stats = broker_thread.join().unwrap_or_default();
     while let Ok(n) = notes.try_recv() {
         let Note::Away(why) = n else { continue };
-        event(out, style, json!({"ok": true, "cmd": "publish", "event": "broker", "state": "away", "broker": broker_name, "reason": why}), format!("broker {broker_name} away ({why})"));
+        event(
+            out,
+            style,
+            json!({"ok": true, "cmd": "publish", "event": "broker", "state": "away", "broker": broker_name, "reason": why}),
+            format!("broker {broker_name} away ({why})"),
+        );
     }
     let ok = stats.dropped == 0 && stats.undelivered == 0 && offline.is_empty();
     let offline: Vec<String> = offline.into_iter().collect();

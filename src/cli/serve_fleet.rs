@@ -37,9 +37,14 @@ pub(super) async fn serve(
     let limits = limits(args)?;
     let mut addrs = Vec::new();
     for k in 0..n {
-        let port = if first.port() == 0 { 0 } else { first.port().checked_add(k).ok_or_else(|| {
-            Error::usage(format!("--tcp {tcp} --fleet {n}: the ports run past 65535"))
-        })? };
+        let port = if first.port() == 0 {
+            0
+        } else {
+            first
+                .port()
+                .checked_add(k)
+                .ok_or_else(|| Error::usage(format!("--tcp {tcp} --fleet {n}: the ports run past 65535")))?
+        };
         let mut fields = Map::new();
         let sim = make_k2(cli, args, clock, &mut fields, None)?;
         if k == 0 {

@@ -96,10 +96,7 @@ pub(crate) fn parse(
     match (keys.get("devices"), keys.get("url")) {
         (Some(_), Some(u)) => return Err((at(u), "give `devices` or `url`, not both".into())),
         (None, None) => {
-            return Err((
-                None,
-                "a fleet needs `devices = [\"press1\", …]` or `url = \"tcp://10.0.0.{11..34}\"`".into(),
-            ))
+            return Err((None, "a fleet needs `devices = [\"press1\", …]` or `url = \"tcp://10.0.0.{11..34}\"`".into()))
         }
         (Some(d), None) => {
             let list = match d.get_ref() {
@@ -233,7 +230,10 @@ mod tests {
         assert!(p.fleets.is_empty(), "{:?}", p.fleets);
         let shown: Vec<String> = p.problems.iter().map(|x| x.to_string()).collect();
         assert_eq!(shown.len(), 5, "{shown:?}");
-        assert!(shown[0].starts_with("/etc/devices.toml:3: fleet `both` skipped: give `devices` or `url`"), "{shown:?}");
+        assert!(
+            shown[0].starts_with("/etc/devices.toml:3: fleet `both` skipped: give `devices` or `url`"),
+            "{shown:?}"
+        );
         assert!(shown.iter().any(|s| s.contains("`a` is listed twice")), "{shown:?}");
         assert!(shown.iter().any(|s| s.contains("takes its rules from each profile")), "{shown:?}");
     }

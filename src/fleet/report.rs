@@ -25,7 +25,14 @@ pub struct Row {
 impl Row {
     /// A device that could not be opened or did not finish.
     pub fn failed(device: &str, cmd: &str, e: &Error, elapsed: Duration) -> Row {
-        Row { device: device.into(), ok: false, json: output::error_json(cmd, e), values: None, text: error_text(e), elapsed }
+        Row {
+            device: device.into(),
+            ok: false,
+            json: output::error_json(cmd, e),
+            values: None,
+            text: error_text(e),
+            elapsed,
+        }
     }
 
     /// A device that ran a command line: its results in order (the line stops at the first failure).
@@ -49,9 +56,9 @@ impl Row {
             }
         };
         let values = match results {
-            [Ok(o)] if matches!(o.view, View::Values) && !o.values.is_empty() => Some(
-                o.values.iter().map(|r| (r.operand.clone(), output::show_value(&r.value, r.dtype))).collect(),
-            ),
+            [Ok(o)] if matches!(o.view, View::Values) && !o.values.is_empty() => {
+                Some(o.values.iter().map(|r| (r.operand.clone(), output::show_value(&r.value, r.dtype))).collect())
+            }
             _ => None,
         };
         let text = results
@@ -76,7 +83,10 @@ fn outcome_text(o: &Outcome) -> String {
     match &o.view {
         View::Values | View::Quiet if !o.values.is_empty() || !o.writes.is_empty() => {
             let list = if o.values.is_empty() { &o.writes } else { &o.values };
-            list.iter().map(|r| format!("{}={}", r.operand, output::show_value(&r.value, r.dtype))).collect::<Vec<_>>().join(" ")
+            list.iter()
+                .map(|r| format!("{}={}", r.operand, output::show_value(&r.value, r.dtype)))
+                .collect::<Vec<_>>()
+                .join(" ")
         }
         View::Text(t) => t.lines().next().unwrap_or("").to_string(),
         View::Table { rows, .. } => format!("{} rows", rows.len()),
@@ -117,7 +127,8 @@ pub fn write(out: &mut dyn Write, style: Style, rows: &[Row], s: &Summary) -> st
     }
     // Operand columns when every device that answered read the same operands.
     let shared: Option<Vec<String>> = {
-        let mut names = rows.iter().filter_map(|r| r.values.as_ref().map(|v| v.iter().map(|(o, _)| o.clone()).collect::<Vec<_>>()));
+        let mut names =
+            rows.iter().filter_map(|r| r.values.as_ref().map(|v| v.iter().map(|(o, _)| o.clone()).collect::<Vec<_>>()));
         let first = names.next();
         first.filter(|f| names.all(|n| n == *f) && rows.iter().all(|r| r.values.is_some() || !r.ok))
     };

@@ -122,7 +122,8 @@ pub fn each<T: Send + 'static>(fleet: &Fleet, settings: Settings, stop: &AtomicB
         }
         if let Ok((i, r)) = rx.recv_timeout(wait) {
             if let Some((start, _)) = running.remove(&i) {
-                results[i] = Some(Done { device: name(i), result: r.map_err(|e| named(e, &name(i))), elapsed: start.elapsed() });
+                results[i] =
+                    Some(Done { device: name(i), result: r.map_err(|e| named(e, &name(i))), elapsed: start.elapsed() });
             }
         }
         if let Some(t) = settings.timeout {
@@ -149,7 +150,9 @@ pub fn each<T: Send + 'static>(fleet: &Fleet, settings: Settings, stop: &AtomicB
         .map(|(i, r)| {
             r.unwrap_or_else(|| Done {
                 device: name(i),
-                result: Err(Error::new(ErrorKind::Interrupted, "not started: the fleet run was stopped").device(name(i))),
+                result: Err(
+                    Error::new(ErrorKind::Interrupted, "not started: the fleet run was stopped").device(name(i))
+                ),
                 elapsed: Duration::ZERO,
             })
         })

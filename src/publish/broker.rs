@@ -283,7 +283,12 @@ broker_loop!(
     rumqttc::LastWill::new
 );
 
-fn will5(topic: String, payload: Vec<u8>, qos: rumqttc::v5::mqttbytes::QoS, retain: bool) -> rumqttc::v5::mqttbytes::v5::LastWill {
+fn will5(
+    topic: String,
+    payload: Vec<u8>,
+    qos: rumqttc::v5::mqttbytes::QoS,
+    retain: bool,
+) -> rumqttc::v5::mqttbytes::v5::LastWill {
     rumqttc::v5::mqttbytes::v5::LastWill::new(topic, payload, qos, retain, None)
 }
 

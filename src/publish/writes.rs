@@ -75,7 +75,8 @@ pub fn apply(shell: &mut Shell, device: &str, payload: &[u8]) -> Json {
     let item = SetItem { operand: cmd.operand.clone(), value: cmd.value.clone(), column: 0, value_column: 0 };
     match shell.session.set(&[item]) {
         Ok(w) => {
-            let written: Vec<Json> = w.iter().map(|(_, r)| json!({"operand": r.operand, "value": r.value, "type": r.dtype})).collect();
+            let written: Vec<Json> =
+                w.iter().map(|(_, r)| json!({"operand": r.operand, "value": r.value, "type": r.dtype})).collect();
             json!({"ok": true, "device": device, "operand": cmd.operand, "id": cmd.id, "writes": written})
         }
         Err(e) => refuse(e),
@@ -92,7 +93,9 @@ mod tests {
         assert_eq!(c, Command { operand: "VW100".into(), value: "5".into(), id: json!(7) });
         assert_eq!(parse(br#"{"operand":"M0.0","value":true}"#).unwrap().value, "true");
         assert_eq!(parse(br#"{"operand":"SMB67","value":"16#85"}"#).unwrap().value, "16#85");
-        for bad in [&b"5"[..], b"{", br#"{"value":1}"#, br#"{"operand":"VW0"}"#, br#"{"operand":"VW0=1, VW2","value":1}"#] {
+        for bad in
+            [&b"5"[..], b"{", br#"{"value":1}"#, br#"{"operand":"VW0"}"#, br#"{"operand":"VW0=1, VW2","value":1}"#]
+        {
             assert!(parse(bad).is_err(), "{}", String::from_utf8_lossy(bad));
         }
         assert!(parse(&vec![b' '; MAX_PAYLOAD + 1]).is_err());

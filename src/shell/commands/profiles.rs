@@ -45,10 +45,18 @@ pub fn devices_and_profiles(s: &Session) -> (Vec<Vec<String>>, Outcome) {
         // A URL fleet's members share its rules; a list's members have their own profiles.
         let writes = match f.members.first().map(|m| &m.source) {
             Some(crate::fleet::Source::Made(p)) if p.read_only => "read only".to_string(),
-            Some(crate::fleet::Source::Made(p)) => p.allow.as_ref().map(|a| format!("allow {}", a.join(", "))).unwrap_or_default(),
+            Some(crate::fleet::Source::Made(p)) => {
+                p.allow.as_ref().map(|a| format!("allow {}", a.join(", "))).unwrap_or_default()
+            }
             _ => "per profile".to_string(),
         };
-        rows.push(vec![f.name.clone(), "(fleet)".into(), format!("{n} device{}", if n == 1 { "" } else { "s" }), f.spec.clone(), writes]);
+        rows.push(vec![
+            f.name.clone(),
+            "(fleet)".into(),
+            format!("{n} device{}", if n == 1 { "" } else { "s" }),
+            f.spec.clone(),
+            writes,
+        ]);
         let members: Vec<&str> = f.members.iter().map(|m| m.name.as_str()).collect();
         fleets.push(serde_json::json!({"name": f.name, "members": members, "spec": f.spec, "origin": f.origin}));
     }
