@@ -451,6 +451,7 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             [CompletionResult]::new('--jobs', '--jobs', [CompletionResultType]::ParameterName, 'With --fleet: how many devices are worked on at once')
             [CompletionResult]::new('--device-timeout', '--device-timeout', [CompletionResultType]::ParameterName, 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)')
             [CompletionResult]::new('--on-change', '--on-change', [CompletionResultType]::ParameterName, 'Publish a value only when it changed (by more than --deadband); otherwise every poll')
+            [CompletionResult]::new('--accept-writes', '--accept-writes', [CompletionResultType]::ParameterName, 'Take writes from the broker on plcsh/GROUP/DEVICE/set, only to operands on the device profile''s allow list (replies on plcsh/GROUP/DEVICE/reply); read-only profiles never accept one')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'Print one JSON object per command result')
             [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
             [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')

@@ -917,7 +917,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__publish)
-            opts="-f -v -d -j -h --broker --fleet --every --qos --on-change --deadband --buffer --mqtt-version --count --client-id --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help"
+            opts="-f -v -d -j -h --broker --fleet --every --qos --on-change --deadband --buffer --mqtt-version --count --client-id --accept-writes --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0

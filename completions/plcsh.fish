@@ -329,6 +329,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l bench -d 'Open a
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l on-change -d 'Publish a value only when it changed (by more than --deadband); otherwise every poll'
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l accept-writes -d 'Take writes from the broker on plcsh/GROUP/DEVICE/set, only to operands on the device profile\'s allow list (replies on plcsh/GROUP/DEVICE/reply); read-only profiles never accept one'
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'

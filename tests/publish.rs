@@ -434,3 +434,54 @@ fn without_accept_writes_the_broker_writes_nothing() {
     assert!(!g.iter().any(|(t, _, _)| t.ends_with("/reply")), "no reply without --accept-writes");
     assert!(g.iter().filter(|(t, _, _)| t == "plcsh/single/a/VW100").all(|(_, p, _)| json(p)["value"] == 0));
 }
+
+#[test]
+fn the_username_comes_from_the_profile_file_and_the_password_from_the_environment() {
+    if !mosquitto_present() {
+        return;
+    }
+    let d = dir("auth");
+    let port = free_port();
+    let passwords = d.join("passwords");
+    // mosquitto_passwd hashes the password into the broker's password file.
+    let made = Command::new("mosquitto_passwd").args(["-b", "-c"]).arg(&passwords).args(["plcsh", "s3cret"]).status();
+    if !made.is_ok_and(|s| s.success()) {
+        eprintln!("skipped: mosquitto_passwd is not available");
+        return;
+    }
+    use std::os::unix::fs::PermissionsExt;
+    std::fs::set_permissions(&passwords, std::fs::Permissions::from_mode(0o644)).unwrap();
+    let conf = d.join("mosquitto.conf");
+    std::fs::write(
+        &conf,
+        format!("listener {port} 127.0.0.1\nallow_anonymous false\npassword_file {}\n", passwords.display()),
+    )
+    .unwrap();
+    let mut broker =
+        Command::new(mosquitto()).arg("-c").arg(&conf).stdout(Stdio::null()).stderr(Stdio::null()).spawn().unwrap();
+    let deadline = Instant::now() + Duration::from_secs(10);
+    while std::net::TcpStream::connect(("127.0.0.1", port)).is_err() {
+        assert!(Instant::now() < deadline, "mosquitto did not start");
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    let cfg = d.join("devices.toml");
+    std::fs::write(&cfg, format!("[mqtt]\nurl = \"mqtt://127.0.0.1:{port}\"\nusername = \"plcsh\"\n")).unwrap();
+    let publish = |password: &str| {
+        plcsh()
+            .args(["--config", cfg.to_str().unwrap(), "--json", "publish", "--every", "10ms", "--count", "3", "VW100"])
+            .env("PLCSH_MQTT_PASSWORD", password)
+            .output()
+            .unwrap()
+    };
+    let o = publish("s3cret");
+    assert_eq!(o.status.code(), Some(0), "{}", both(&o));
+    let last: serde_json::Value = serde_json::from_str(stdout(&o).lines().last().unwrap()).unwrap();
+    assert!(last["published"].as_u64().unwrap() >= 4, "{last}");
+    let o = publish("wrong");
+    assert_eq!(o.status.code(), Some(1), "refused by the broker: {}", both(&o));
+    let lines = json_lines(&o);
+    assert!(lines.iter().any(|l| l["event"] == "broker" && l["state"] == "away"), "{lines:?}");
+    assert!(lines.last().unwrap()["undelivered"].as_u64().unwrap() > 0, "{lines:?}");
+    let _ = broker.kill();
+    let _ = broker.wait();
+}

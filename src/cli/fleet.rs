@@ -63,6 +63,7 @@ pub fn commands(cli: &super::Cli, shell: &Shell, name: &str, line: &str, style: 
         Err(e) => return usage(out, style, "fleet", &e),
     };
     let members = Arc::new(fleet.clone());
+    let ran = line.trim().to_string();
     let line = line.to_string();
     let work: Work<Vec<crate::shell::CmdResult>> = Arc::new(move |i, stop| {
         let mut sh = base.open(&members, &members.members[i], stop)?;
@@ -77,24 +78,20 @@ pub fn commands(cli: &super::Cli, shell: &Shell, name: &str, line: &str, style: 
             Err(e) => Row::failed(&d.device, "open", e, d.elapsed),
         })
         .collect();
-    let first = line_cmd(cli.command.as_deref().unwrap_or(""));
     finish(
         out,
         style,
         &rows,
-        &report::Summary { fleet: name, cmd: &first, jobs: settings.jobs, elapsed: start.elapsed() },
+        &report::Summary { fleet: name, cmd: &ran, jobs: settings.jobs, elapsed: start.elapsed() },
         shell,
     )
 }
 
-fn line_cmd(line: &str) -> String {
-    line.trim().to_string()
-}
-
 /// `plcsh run --fleet FLEET SCRIPT.lua ARGS…`: the script runs once per member in a Lua state
 /// of its own, on the member's thread, with the member as its current device (commands and
-/// `plcsh.exec` act on it; `plcsh.fleet_member` names it for `plcsh.device`). What the script prints is kept per device and shown
-/// after the table (`output` in JSON), so the devices' lines never interleave.
+/// `plcsh.exec` act on it; `plcsh.fleet_member` names it for `plcsh.device`). What the
+/// script prints is kept per device and shown before the table (`output` in JSON), so the
+/// devices' lines never interleave.
 pub fn script(
     cli: &super::Cli,
     shell: &Shell,
