@@ -2,7 +2,9 @@
 //! memory and its own Modbus TCP port, so a fleet (docs/fleets.md) and its tests run without
 //! hardware. Every member is built by the same code as the single served K2
 //! ([`super::serve::make_k2`]: model, unit, helper program, faults, user program) and served by
-//! the same server; they share the process's virtual clock. With port 0 each member binds a
+//! the same server; they share the process's virtual clock. Each member is served on a thread
+//! of its own (with its own small runtime), so one member that is slow to answer (a `late`
+//! fault, a long request) holds no other, as separate PLCs would not. With port 0 each member binds a
 //! free port of its own; with port P the members take P, P+1, … (a fleet's `url` range then
 //! names them). The readiness line lists the bound addresses in order under `fleet`, and
 //! `tcp` is the first of them.
@@ -52,8 +54,22 @@ pub(super) async fn serve(
         }
         let l = bind(&std::net::SocketAddr::new(first.ip(), port).to_string()).await?;
         addrs.push(l.local_addr()?.to_string());
+        let l = l.into_std()?;
         let service = K2Service::new(Arc::new(Mutex::new(sim)), args.unit);
-        tasks.spawn(modbus_server::serve_tcp(l, service, limits));
+        let (done_tx, done) = tokio::sync::oneshot::channel::<std::io::Result<()>>();
+        std::thread::Builder::new().name(format!("fleet-k2-{k}")).spawn(move || {
+            let served = tokio::runtime::Builder::new_current_thread().enable_all().build().and_then(|rt| {
+                rt.block_on(async move {
+                    let l = tokio::net::TcpListener::from_std(l)?;
+                    modbus_server::serve_tcp(l, service, limits).await
+                })
+            });
+            let _ = done_tx.send(served);
+        })?;
+        // The member's end (an error, or its thread gone) ends the server, as for one K2.
+        tasks.spawn(async move {
+            done.await.unwrap_or_else(|_| Err(std::io::Error::other("a fleet member's thread stopped")))
+        });
     }
     ready.insert("tcp".into(), json!(addrs[0]));
     ready.insert("fleet".into(), json!(addrs));
