@@ -485,3 +485,139 @@ fn the_username_comes_from_the_profile_file_and_the_password_from_the_environmen
     let _ = broker.kill();
     let _ = broker.wait();
 }
+
+/// Runs openssl with `args` in `dir`; false when it is missing or fails.
+fn openssl(dir: &Path, args: &[&str]) -> bool {
+    Command::new("openssl")
+        .args(args)
+        .current_dir(dir)
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .status()
+        .is_ok_and(|s| s.success())
+}
+
+#[test]
+fn tls_with_the_ca_from_the_profile_file() {
+    if !mosquitto_present() {
+        return;
+    }
+    let d = dir("tls");
+    // A CA of our own and a server certificate for 127.0.0.1 signed by it.
+    std::fs::write(d.join("server.ext"), "basicConstraints=CA:FALSE\nsubjectAltName=IP:127.0.0.1\n").unwrap();
+    let made = openssl(
+        &d,
+        &[
+            "req",
+            "-x509",
+            "-newkey",
+            "rsa:2048",
+            "-nodes",
+            "-keyout",
+            "ca.key",
+            "-out",
+            "ca.pem",
+            "-days",
+            "2",
+            "-subj",
+            "/CN=plcsh test CA",
+        ],
+    ) && openssl(
+        &d,
+        &[
+            "req",
+            "-newkey",
+            "rsa:2048",
+            "-nodes",
+            "-keyout",
+            "server.key",
+            "-out",
+            "server.csr",
+            "-subj",
+            "/CN=127.0.0.1",
+        ],
+    ) && openssl(
+        &d,
+        &[
+            "x509",
+            "-req",
+            "-in",
+            "server.csr",
+            "-CA",
+            "ca.pem",
+            "-CAkey",
+            "ca.key",
+            "-CAcreateserial",
+            "-out",
+            "server.pem",
+            "-days",
+            "2",
+            "-extfile",
+            "server.ext",
+        ],
+    );
+    if !made {
+        eprintln!("skipped: openssl could not make the test certificates");
+        return;
+    }
+    use std::os::unix::fs::PermissionsExt;
+    for f in ["server.key", "server.pem", "ca.pem"] {
+        std::fs::set_permissions(d.join(f), std::fs::Permissions::from_mode(0o644)).unwrap();
+    }
+    let port = free_port();
+    let conf = d.join("mosquitto.conf");
+    std::fs::write(
+        &conf,
+        format!(
+            "listener {port} 127.0.0.1\nallow_anonymous true\ncertfile {0}/server.pem\nkeyfile {0}/server.key\ncafile {0}/ca.pem\n",
+            d.display()
+        ),
+    )
+    .unwrap();
+    let mut broker =
+        Command::new(mosquitto()).arg("-c").arg(&conf).stdout(Stdio::null()).stderr(Stdio::null()).spawn().unwrap();
+    let deadline = Instant::now() + Duration::from_secs(10);
+    while std::net::TcpStream::connect(("127.0.0.1", port)).is_err() {
+        assert!(Instant::now() < deadline, "mosquitto did not start");
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    let cfg = d.join("devices.toml");
+    let publish = |ca: &str| {
+        std::fs::write(
+            &cfg,
+            format!("[mqtt]\nurl = \"mqtts://127.0.0.1:{port}\"\nca_file = \"{}\"\n", d.join(ca).display()),
+        )
+        .unwrap();
+        plcsh()
+            .args(["--config", cfg.to_str().unwrap(), "--json", "publish", "--every", "10ms", "--count", "3", "VW100"])
+            .output()
+            .unwrap()
+    };
+    let o = publish("ca.pem");
+    assert_eq!(o.status.code(), Some(0), "over TLS: {}", both(&o));
+    assert!(json_lines(&o).last().unwrap()["published"].as_u64().unwrap() >= 4, "{}", both(&o));
+    // A certificate the given CA did not sign is refused: the publisher never connects.
+    assert!(openssl(
+        &d,
+        &[
+            "req",
+            "-x509",
+            "-newkey",
+            "rsa:2048",
+            "-nodes",
+            "-keyout",
+            "other.key",
+            "-out",
+            "other.pem",
+            "-days",
+            "2",
+            "-subj",
+            "/CN=other CA"
+        ]
+    ));
+    let o = publish("other.pem");
+    assert_eq!(o.status.code(), Some(1), "{}", both(&o));
+    assert!(!json_lines(&o).iter().any(|l| l["state"] == "connected"), "{}", both(&o));
+    let _ = broker.kill();
+    let _ = broker.wait();
+}
