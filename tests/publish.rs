@@ -621,3 +621,68 @@ fn tls_with_the_ca_from_the_profile_file() {
     let _ = broker.kill();
     let _ = broker.wait();
 }
+
+#[test]
+fn on_change_publishes_once_and_a_device_that_stops_answering_goes_offline() {
+    if !mosquitto_present() {
+        return;
+    }
+    let d = dir("offline");
+    let port = free_port();
+    let _broker = Broker::start(&d, port);
+    let got = subscribe(port, "offline-watch");
+    let k2 = serve(&["--tcp", "0"]);
+    let url = format!("tcp://{}?timeout=200ms&retries=0", k2.ready["tcp"].as_str().unwrap());
+    let mut child = plcsh()
+        .args([
+            "-d",
+            &format!("press={url}"),
+            "--json",
+            "publish",
+            "--broker",
+            &format!("mqtt://127.0.0.1:{port}"),
+            "--every",
+            "20ms",
+            "--count",
+            "100",
+            "--on-change",
+            "VW100",
+        ])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let mut lines = std::io::BufReader::new(child.stdout.take().unwrap()).lines();
+    let values = |g: &[(String, Vec<u8>, bool)]| g.iter().filter(|(t, _, _)| t == "plcsh/single/press/VW100").count();
+    wait_for(&got, "the first value", |g| values(g) >= 1);
+    // Polls go on (every 20 ms) with VW100 unchanged; then it changes, and is published again.
+    std::thread::sleep(Duration::from_millis(300));
+    let o = run(&["-d", &url, "-c", "set VW100=5"], "");
+    assert!(o.status.success(), "{}", both(&o));
+    wait_for(&got, "the changed value", |g| values(g) >= 2);
+    drop(k2);
+    let offline = loop {
+        let l: serde_json::Value = serde_json::from_str(&lines.next().expect("a device event").unwrap()).unwrap();
+        if l["event"] == "device" {
+            break l;
+        }
+    };
+    assert_eq!((offline["device"].as_str(), offline["state"].as_str()), (Some("press"), Some("offline")), "{offline}");
+    wait_for(&got, "the offline status", |g| {
+        g.iter().any(|(t, p, _)| t == "plcsh/single/press/status" && p == b"offline")
+    });
+    plcsh::core::platform::interrupt_child(&child);
+    let rest: Vec<String> = lines.map(|l| l.unwrap()).collect();
+    let _ = child.wait();
+    let summary: serde_json::Value = serde_json::from_str(rest.last().expect("a summary")).unwrap();
+    assert_eq!(summary["offline"], serde_json::json!(["press"]), "{summary}");
+    let g = got.lock().unwrap();
+    let published: Vec<serde_json::Value> =
+        g.iter().filter(|(t, _, _)| t == "plcsh/single/press/VW100").map(|(_, p, _)| json(p)).collect();
+    assert_eq!(published.len(), 2, "--on-change: an unchanged value is published once: {published:?}");
+    assert_eq!((published[0]["value"].as_i64(), published[1]["value"].as_i64()), (Some(0), Some(5)));
+    assert!(published[1]["seq"].as_u64().unwrap() >= 3, "polls in between published nothing: {published:?}");
+    let status: Vec<&[u8]> =
+        g.iter().filter(|(t, _, _)| t == "plcsh/single/press/status").map(|(_, p, _)| p.as_slice()).collect();
+    assert_eq!(status, [&b"online"[..], b"offline"]);
+}
