@@ -686,3 +686,57 @@ fn on_change_publishes_once_and_a_device_that_stops_answering_goes_offline() {
         g.iter().filter(|(t, _, _)| t == "plcsh/single/press/status").map(|(_, p, _)| p.as_slice()).collect();
     assert_eq!(status, [&b"online"[..], b"offline"]);
 }
+
+#[test]
+fn beyond_the_buffer_the_oldest_readings_are_dropped_and_counted() {
+    if !mosquitto_present() {
+        return;
+    }
+    let d = dir("bound");
+    let port = free_port();
+    // No broker yet: every reading waits in a queue of 5.
+    let mut child = plcsh()
+        .args([
+            "--json",
+            "publish",
+            "--broker",
+            &format!("mqtt://127.0.0.1:{port}"),
+            "--every",
+            "10ms",
+            "--count",
+            "30",
+            "--buffer",
+            "5",
+            "--qos",
+            "1",
+            "VW100",
+        ])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let mut lines = std::io::BufReader::new(child.stdout.take().unwrap()).lines();
+    let mut until = |event: &str, state: &str| loop {
+        let l: serde_json::Value = serde_json::from_str(&lines.next().expect("an event").unwrap()).unwrap();
+        if l["event"] == event && l["state"] == state {
+            return;
+        }
+    };
+    until("broker", "away");
+    until("polling", "stopped");
+    // All 30 polls are queued (or dropped); now the broker comes, with a subscriber waiting.
+    let _broker = Broker::start(&d, port);
+    let got = subscribe(port, "bound-watch");
+    let rest: Vec<String> = lines.map(|l| l.unwrap()).collect();
+    let _ = child.wait();
+    let summary: serde_json::Value = serde_json::from_str(rest.last().expect("a summary")).unwrap();
+    // The device's `online` and 30 values: 31 messages, of which the newest 5 are kept.
+    assert_eq!(summary["dropped"], 26, "{summary}");
+    assert_eq!(summary["undelivered"], 0, "{summary}");
+    assert_eq!(summary["ok"], false, "readings were dropped: {summary}");
+    wait_for(&got, "the kept readings", |g| g.iter().filter(|(t, _, _)| t == "plcsh/single/plc/VW100").count() >= 1);
+    let g = got.lock().unwrap();
+    // The subscriber came after them: it sees the retained last value, the newest reading.
+    let last = g.iter().rev().find(|(t, _, _)| t == "plcsh/single/plc/VW100").map(|(_, p, _)| json(p)).unwrap();
+    assert_eq!(last["seq"], 30, "{last}");
+}

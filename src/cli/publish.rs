@@ -247,6 +247,12 @@ fn start(cli: &super::Cli, shell: &mut Shell, args: &PublishArgs, style: Style, 
             let _ = p.join();
         }
     });
+    event(
+        out,
+        style,
+        json!({"ok": true, "cmd": "publish", "event": "polling", "state": "stopped"}),
+        "polling stopped; delivering what is queued (the broker has a few seconds to take it)".into(),
+    );
     let _ = tx.send(ToBroker::Stop);
     drop(tx);
     let stats = broker_thread.join().unwrap_or_default();
