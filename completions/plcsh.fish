@@ -1,6 +1,6 @@
 # Print an optspec for argparse to handle cmd's options that are independent of any subcommand.
 function __fish_plcsh_global_optspecs
-    string join \n c/command= json v/verbose model= d/device= time= config= state= record= bench= read-only h/help V/version
+    string join \n c/command= json v/verbose model= d/device= time= config= state= record= bench= read-only f/fleet= j/jobs= device-timeout= h/help V/version
 end
 
 function __fish_plcsh_needs_command
@@ -33,6 +33,9 @@ complete -c plcsh -n "__fish_plcsh_needs_command" -l config -d 'Device profile f
 complete -c plcsh -n "__fish_plcsh_needs_command" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_needs_command" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_needs_command" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
+complete -c plcsh -n "__fish_plcsh_needs_command" -s f -l fleet -d 'Run -c\'s commands (or `run`\'s script) on every device of this fleet from the profile file, at once (docs/fleets.md)' -r
+complete -c plcsh -n "__fish_plcsh_needs_command" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_needs_command" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_needs_command" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_needs_command" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_needs_command" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'
@@ -49,6 +52,7 @@ complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "run" -d 'Run a Lua scri
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "record" -d 'Recordings made with --record: `record show FILE` prints the decoded timeline'
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "replay" -d 'Replay a recording\'s requests against a simulator and report every reply that differs'
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "lab" -d 'Teaching labs: `lab new NAME`, `lab check LAB`, `lab grade LAB SUBMISSIONS…` (sandboxed, in parallel)'
+complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "publish" -d 'Poll operands on a device or a fleet and publish them to an MQTT broker (docs/fleets.md)'
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
@@ -58,6 +62,8 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l config -d 'Device
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand models" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'
@@ -70,6 +76,8 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l config -d 'Devic
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'
@@ -82,6 +90,8 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l config -d 'Device 
 complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'
@@ -94,6 +104,8 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -l config -d 'Device 
 complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'
@@ -107,6 +119,8 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l config -d 'D
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'
@@ -119,6 +133,8 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_sub
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve control help" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve control help" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve control help" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve control help" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve control help" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve control help" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve control help" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve control help" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'
@@ -158,6 +174,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l fault -d 'Inject a fault into the served K2, e.g. `--fault "no-reply on VW100 after=2s times=1"` (repeatable; see `help sim`)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l max-connections -d 'Network connections served at once (per transport); more are closed on accept' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l idle-timeout -d 'Close a network connection that sends nothing for this long (`300s`, `2m`, `500ms`)' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l fleet -d 'Serve N simulated K2s, each with its own memory, on N TCP ports (with --tcp: port 0 gives each a free port, port P gives P, P+1, …); the readiness line lists them under `fleet` (docs/fleets.md)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
@@ -166,6 +183,8 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l servo-loop -d 'RS232 loop mode: echo every request before the reply (connect with echo=1)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l servo-instant -d 'Answer at once instead of at line speed (benchmarks, CI)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l servo-strict -d 'Refuse writes whose size code differs from the object\'s (abort 0x06070010)'
@@ -182,6 +201,8 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from control" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from control" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from control" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from control" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from control" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from control" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from control" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from control" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'
@@ -197,6 +218,8 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_s
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'
@@ -212,6 +235,8 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subco
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'
@@ -219,6 +244,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subco
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from help" -f -a "il" -d 'Print the helper program (K2 instruction list) for KincoBuilder'
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l write-dir -d 'With --sandbox: the directory the script may write files in (none without it)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand run" -s f -l fleet -d 'Run the script on every device of this fleet at once, each in a Lua state of its own (docs/fleets.md)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
@@ -227,6 +253,8 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l config -d 'Device pr
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand run" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l sandbox -d 'Run a script someone else wrote: no os.execute, io.popen, os.remove/rename/exit, C libraries or debug library; files written only under --write-dir'
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
@@ -240,6 +268,8 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'
@@ -254,6 +284,8 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subc
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'
@@ -271,6 +303,8 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l config -d 'Device
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'
@@ -283,6 +317,8 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_sub
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade worker help" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade worker help" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade worker help" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade worker help" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade worker help" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade worker help" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade worker help" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade worker help" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'
@@ -300,6 +336,8 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from new" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from new" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from new" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from new" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from new" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from new" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from new" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from new" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'
@@ -312,6 +350,8 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from check" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from check" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from check" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from check" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from check" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from check" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from check" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from check" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'
@@ -326,6 +366,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'
@@ -338,6 +379,8 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from worker" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from worker" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from worker" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from worker" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from worker" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from worker" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from worker" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from worker" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'
@@ -347,18 +390,45 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from help" -f -a "grade" -d 'Grade submissions (files or folders of .lua / .il files), each in a fresh sandboxed worker'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from help" -f -a "worker" -d 'Grade one submission and print its report as JSON (what `lab grade` runs per submission)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab help" -f -a "models" -d 'List the K2 model catalogue; `models MODEL` shows one in full (areas, counters, manual notes)'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab help" -f -a "devices" -d 'List open devices and the device profiles (devices.toml), with problems in that file'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab help" -f -a "ports" -d 'List the serial ports present, with USB adapter (VID:PID, product, serial number)'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab help" -f -a "paths" -d 'Print where every file lives: profiles, Lua modules, state, history, snapshots, UMPK flash, recordings'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab help" -f -a "completions" -d 'Print a shell completion script (bash, zsh, fish, powershell), or write them all'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab help" -f -a "sim" -d 'Serve simulators to other programs: `sim serve` puts the simulated K2 on Modbus TCP / RTU and drives on a pty'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab help" -f -a "agent" -d 'The PLC-side helper program that gives plcsh SM registers and instructions on a real K2'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab help" -f -a "run" -d 'Run a Lua script: plcsh [--time stepped] [--device NAME=URL] run SCRIPT.lua [ARGS…]'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab help" -f -a "record" -d 'Recordings made with --record: `record show FILE` prints the decoded timeline'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab help" -f -a "replay" -d 'Replay a recording\'s requests against a simulator and report every reply that differs'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab help" -f -a "lab" -d 'Teaching labs: `lab new NAME`, `lab check LAB`, `lab grade LAB SUBMISSIONS…` (sandboxed, in parallel)'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l broker -d 'The broker: mqtt://HOST:PORT, or mqtts://HOST:PORT for TLS (default: `url` in the profile file\'s [mqtt])' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -s f -l fleet -d 'Publish every member of this fleet (default: the current device)' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l every -d 'How often each device is read' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l qos -d 'MQTT quality of service for values: 0 (at most once) or 1 (at least once)' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l deadband -d 'With --on-change: the smallest change published (in the operand\'s units)' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l buffer -d 'Readings kept while the broker is away (the oldest beyond it are dropped and counted)' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l mqtt-version -d 'MQTT protocol version' -r -f -a "3.1.1\t''
+5\t''"
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l count -d 'Stop after this many polls of each device (default: until Ctrl-C)' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l client-id -d 'The MQTT client id (default: plcsh-GROUP-PID)' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l model -d 'Model of the default simulated PLC' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
+stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l on-change -d 'Publish a value only when it changed (by more than --deadband); otherwise every poll'
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l accept-writes -d 'Take writes from the broker on plcsh/GROUP/DEVICE/set, only to operands on the device profile\'s allow list (replies on plcsh/GROUP/DEVICE/reply); read-only profiles never accept one'
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l json -d 'Print one JSON object per command result'
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab publish help" -f -a "models" -d 'List the K2 model catalogue; `models MODEL` shows one in full (areas, counters, manual notes)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab publish help" -f -a "devices" -d 'List open devices and the device profiles (devices.toml), with problems in that file'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab publish help" -f -a "ports" -d 'List the serial ports present, with USB adapter (VID:PID, product, serial number)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab publish help" -f -a "paths" -d 'Print where every file lives: profiles, Lua modules, state, history, snapshots, UMPK flash, recordings'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab publish help" -f -a "completions" -d 'Print a shell completion script (bash, zsh, fish, powershell), or write them all'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab publish help" -f -a "sim" -d 'Serve simulators to other programs: `sim serve` puts the simulated K2 on Modbus TCP / RTU and drives on a pty'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab publish help" -f -a "agent" -d 'The PLC-side helper program that gives plcsh SM registers and instructions on a real K2'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab publish help" -f -a "run" -d 'Run a Lua script: plcsh [--time stepped] [--device NAME=URL] run SCRIPT.lua [ARGS…]'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab publish help" -f -a "record" -d 'Recordings made with --record: `record show FILE` prints the decoded timeline'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab publish help" -f -a "replay" -d 'Replay a recording\'s requests against a simulator and report every reply that differs'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab publish help" -f -a "lab" -d 'Teaching labs: `lab new NAME`, `lab check LAB`, `lab grade LAB SUBMISSIONS…` (sandboxed, in parallel)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab publish help" -f -a "publish" -d 'Poll operands on a device or a fleet and publish them to an MQTT broker (docs/fleets.md)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab publish help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand help; and __fish_seen_subcommand_from sim" -f -a "serve" -d 'Serve the simulator over Modbus TCP, Modbus RTU on a pseudo-terminal, and/or RTU over TCP'
 complete -c plcsh -n "__fish_plcsh_using_subcommand help; and __fish_seen_subcommand_from sim" -f -a "control" -d 'Send one line to a served simulator\'s control channel (faults, events) and print the reply'
 complete -c plcsh -n "__fish_plcsh_using_subcommand help; and __fish_seen_subcommand_from agent" -f -a "il" -d 'Print the helper program (K2 instruction list) for KincoBuilder'

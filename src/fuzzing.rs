@@ -46,6 +46,7 @@ pub static TARGETS: &[(&str, Target)] = &[
     ("umpk_hex", umpk_hex),
     ("pcapng", pcapng),
     ("rfc2217", rfc2217),
+    ("mqtt_command", mqtt_command),
     ("bench", bench),
     ("lab_toml", lab_toml),
     ("umpk_snapshot", umpk_snapshot),
@@ -117,6 +118,15 @@ pub fn profile(data: &[u8]) {
     for prof in p.list() {
         let _ = crate::profile::Guard::build(prof, &space);
     }
+}
+
+/// What arrives from outside for fleets and MQTT: a write command from the broker
+/// (`publish --accept-writes`), a broker URL and a fleet's URL range.
+pub fn mqtt_command(data: &[u8]) {
+    let _ = crate::publish::writes::parse(data);
+    let t = text(data);
+    let _ = crate::publish::parse_broker(&t);
+    let _ = crate::fleet::expand(&t);
 }
 
 /// Completion and the inline hint (run on every keystroke), at every cursor position.

@@ -59,6 +59,8 @@ impl fmt::Display for Problem {
 pub struct Profiles {
     list: Vec<Profile>,
     pub problems: Vec<Problem>,
+    /// The fleets (`[fleets.NAME]`, [`crate::fleet`]).
+    pub fleets: Vec<crate::fleet::Fleet>,
     /// The file they came from (also when it does not exist yet).
     pub file: Option<PathBuf>,
 }
@@ -72,6 +74,8 @@ pub fn default_path() -> Option<PathBuf> {
 struct RawFile {
     #[serde(default)]
     devices: BTreeMap<String, Spanned<BTreeMap<String, Spanned<toml::Value>>>>,
+    #[serde(default)]
+    fleets: BTreeMap<String, Spanned<BTreeMap<String, Spanned<toml::Value>>>>,
 }
 
 fn line_of(text: &str, offset: usize) -> usize {
@@ -131,12 +135,29 @@ impl Profiles {
         for (name, section) in raw.devices {
             let origin_line = line_of(text, section.span().start);
             let problem = |at: usize, m: String| Problem { file: file.clone(), line: line_of(text, at), message: m };
-            match profile(&name, section.get_ref(), &format!("{file}:{origin_line}")) {
+            match profile(&name, section.get_ref(), &format!("{file}:{origin_line}"), None) {
                 Ok(p) => out.list.push(p),
                 Err((at, m)) => {
                     let at = at.unwrap_or(section.span().start);
                     out.problems.push(problem(at, format!("profile `{name}` skipped: {m}")));
                 }
+            }
+        }
+        for (name, section) in raw.fleets {
+            let origin = format!("{file}:{}", line_of(text, section.span().start));
+            let make = |member: &str, url: &str| profile(member, section.get_ref(), &origin, Some(url));
+            let parsed = if valid_name(&name) {
+                crate::fleet::parse(&name, section.get_ref(), &origin, &make)
+            } else {
+                Err((None, "a fleet name is letters, digits, _ and -".into()))
+            };
+            match parsed {
+                Ok(f) => out.fleets.push(f),
+                Err((at, m)) => out.problems.push(Problem {
+                    file: file.clone(),
+                    line: line_of(text, at.unwrap_or(section.span().start)),
+                    message: format!("fleet `{name}` skipped: {m}"),
+                }),
             }
         }
         out
@@ -167,6 +188,26 @@ impl Profiles {
             }
         }
         self.list = kept;
+        // A URL fleet's members differ only in their address: the first stands for them all.
+        let mut fleets = Vec::new();
+        for f in std::mem::take(&mut self.fleets) {
+            let first = f.members.first().and_then(|m| match &m.source {
+                crate::fleet::Source::Made(p) => Some(p),
+                crate::fleet::Source::Profile(_) => None,
+            });
+            match first.map_or(Ok(()), |p| check(p, clock)) {
+                Ok(()) => fleets.push(f),
+                Err(e) => {
+                    let (file, line) = f.origin.rsplit_once(':').unwrap_or((&f.origin, "0"));
+                    let mut message = format!("fleet `{}` skipped: {}", f.name, e.message);
+                    if let Some(h) = &e.hint {
+                        message.push_str(&format!(" ({h})"));
+                    }
+                    self.problems.push(Problem { file: file.to_string(), line: line.parse().unwrap_or(0), message });
+                }
+            }
+        }
+        self.fleets = fleets;
         self.problems.sort_by_key(|p| p.line);
     }
 
@@ -176,6 +217,11 @@ impl Profiles {
 
     pub fn get(&self, name: &str) -> Option<&Profile> {
         self.list.iter().find(|p| p.name == name)
+    }
+
+    /// The fleet named `name`, or an error naming the fleets there are.
+    pub fn fleet(&self, name: &str) -> Result<&crate::fleet::Fleet> {
+        self.fleets.iter().find(|f| f.name == name).ok_or_else(|| crate::fleet::unknown(self, name))
     }
 
     /// "no profile named x" with the known names and the file, for errors.
@@ -192,23 +238,26 @@ impl Profiles {
 
 type Bad = (Option<usize>, String);
 
+/// One profile from its keys; `url` (a fleet member's expanded address) replaces the `url` key.
 fn profile(
     name: &str,
     keys: &BTreeMap<String, Spanned<toml::Value>>,
     origin: &str,
+    url: Option<&str>,
 ) -> std::result::Result<Profile, Bad> {
     if !valid_name(name) {
         return Err((None, "a profile name is letters, digits, _ and -".into()));
     }
     let at = |v: &Spanned<toml::Value>| Some(v.span().start);
-    let url = match keys.get("url") {
-        Some(v) => match v.get_ref() {
+    let url = match (url, keys.get("url")) {
+        (Some(u), _) => u.to_string(),
+        (None, Some(v)) => match v.get_ref() {
             toml::Value::String(s) => s.clone(),
             _ => return Err((at(v), "`url` must be a string".into())),
         },
-        None => return Err((None, "`url` is missing (e.g. url = \"tcp://192.168.1.10:502?unit=1\")".into())),
+        (None, None) => return Err((None, "`url` is missing (e.g. url = \"tcp://192.168.1.10:502?unit=1\")".into())),
     };
-    let parsed = DeviceUrl::parse(&url).map_err(|e| (at(&keys["url"]), e.message.clone()))?;
+    let parsed = DeviceUrl::parse(&url).map_err(|e| (keys.get("url").and_then(at), e.message.clone()))?;
     let mut p = Profile {
         name: name.to_string(),
         url: url.clone(),
@@ -220,7 +269,7 @@ fn profile(
     let mut extra = Vec::new();
     for (k, v) in keys {
         match k.as_str() {
-            "url" => {}
+            "url" | "devices" => {}
             "read_only" => match v.get_ref() {
                 toml::Value::Boolean(b) => p.read_only = *b,
                 _ => return Err((at(v), "`read_only` must be true or false".into())),
@@ -347,13 +396,19 @@ fn check_option(u: &DeviceUrl, twin: &mut dyn crate::core::Device, key: &str, va
 /// write rules as the entry's [`Guard`]. Called by `Session::open` for a URL without a scheme.
 pub fn open(s: &mut crate::session::Session, name: &str, profile: &str) -> Result<()> {
     let p = s.profiles.get(profile).cloned().ok_or_else(|| s.profiles.unknown(profile).device(name))?;
+    open_profile(s, name, &p)
+}
+
+/// Opens profile `p` under device name `name` (also a fleet member's own profile): its URL,
+/// its options, its write rules as the entry's guard.
+pub fn open_profile(s: &mut crate::session::Session, name: &str, p: &Profile) -> Result<()> {
     let from = format!("from profile `{}` ({})", p.name, p.origin);
     crate::record::name_device(&p.url, name);
     let mut device = crate::session::open_url(&p.url, &s.clock).map_err(|e| e.device(name).cause(&from))?;
     for (k, v) in &p.options {
         device.set_option(k, v).map_err(|e| e.device(name).cause(&from))?;
     }
-    let guard = Guard::build(&p, device.operands()).map_err(|e| e.device(name))?;
+    let guard = Guard::build(p, device.operands()).map_err(|e| e.device(name))?;
     s.add_guarded(name, &p.url, device, guard);
     Ok(())
 }
@@ -433,6 +488,16 @@ impl Guard {
             }
         }
         Ok(())
+    }
+
+    /// True for a profile with `read_only = true`.
+    pub fn read_only(&self) -> bool {
+        self.read_only
+    }
+
+    /// True when the profile lists the operands that may be written (`allow`).
+    pub fn has_allow(&self) -> bool {
+        self.allow.is_some()
     }
 
     /// A short description for `devices` (`read only`, `allow VW100..VW120, M0.0`).

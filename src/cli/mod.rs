@@ -5,10 +5,13 @@
 
 mod agent;
 pub mod completions;
+mod fleet;
 mod lab;
+mod publish;
 mod record;
 mod run;
 mod serve;
+mod serve_fleet;
 
 use crate::core::{Clock, ErrorKind};
 use crate::k2::catalog;
@@ -74,6 +77,15 @@ pub struct Options {
     /// Refuse every change to every device (writes, instructions, servo commands): inspect a live machine.
     #[arg(long = "read-only", global = true)]
     pub read_only: bool,
+    /// Run -c's commands (or `run`'s script) on every device of this fleet from the profile file, at once (docs/fleets.md).
+    #[arg(short = 'f', long = "fleet", value_name = "NAME")]
+    pub fleet: Option<String>,
+    /// With --fleet: how many devices are worked on at once.
+    #[arg(short = 'j', long = "jobs", value_name = "N", default_value_t = 8, global = true)]
+    pub jobs: usize,
+    /// With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit).
+    #[arg(long = "device-timeout", value_name = "DURATION", default_value = "60s", global = true)]
+    pub device_timeout: String,
 }
 
 impl std::ops::Deref for Cli {
@@ -129,6 +141,8 @@ pub enum Sub {
         #[command(subcommand)]
         cmd: lab::LabCmd,
     },
+    /// Poll operands on a device or a fleet and publish them to an MQTT broker (docs/fleets.md).
+    Publish(publish::PublishArgs),
 }
 
 /// Splits `NAME=URL` (or a bare URL, named `plc`; or a bare profile name, named after itself).
@@ -238,6 +252,11 @@ const VALUE_OPTIONS: &[&str] = &[
     "--write-dir",
     "--record",
     "--bench",
+    "-f",
+    "--fleet",
+    "-j",
+    "--jobs",
+    "--device-timeout",
 ];
 
 /// What a word of the command line is, before clap sees it.
@@ -415,6 +434,27 @@ fn run_cli() -> i32 {
 
 /// Runs what the flags ask for with the built shell; returns the exit status.
 fn run(cli: &Cli, mut shell: Shell, style: Style, mut out: std::io::StdoutLock<'static>) -> i32 {
+    if let Some(name) = &cli.fleet {
+        return match (&cli.sub, &cli.command) {
+            (Some(Sub::Run(args)), _) if args.fleet.is_none() => {
+                fleet::script(cli, &shell, name, args, style, &mut out)
+            }
+            (None, Some(cmds)) => fleet::commands(cli, &shell, name, cmds, style, &mut out),
+            _ => {
+                let e = crate::core::Error::usage(
+                    "--fleet runs -c COMMANDS or run SCRIPT.lua on every device of the fleet",
+                )
+                .hint(format!("e.g. plcsh -f {name} -c 'get VW100', or plcsh run --fleet {name} check.lua"));
+                let _ = output::report_error(&mut out, style, "fleet", &e, None);
+                2
+            }
+        };
+    }
+    if let Some(Sub::Run(args)) = &cli.sub {
+        if let Some(name) = &args.fleet {
+            return fleet::script(cli, &shell, name, args, style, &mut out);
+        }
+    }
     if let Some(sub) = &cli.sub {
         return match sub {
             Sub::Models { name } => match crate::shell::commands::models::outcome(name.as_deref()) {
@@ -435,6 +475,7 @@ fn run(cli: &Cli, mut shell: Shell, style: Style, mut out: std::io::StdoutLock<'
             Sub::Record { cmd } => record::show(cmd, style, &mut out),
             Sub::Replay(args) => record::replay(args, cli.bench.as_deref(), false, style, &mut out),
             Sub::Lab { cmd } => lab::run(cmd, style, &mut out),
+            Sub::Publish(args) => publish::run(cli, &mut shell, args, style, &mut out),
         };
     }
     if let Some(cmds) = &cli.command {

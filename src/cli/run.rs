@@ -20,6 +20,9 @@ pub struct RunArgs {
     /// With --sandbox: the directory the script may write files in (none without it).
     #[arg(long, value_name = "DIR", requires = "sandbox")]
     pub write_dir: Option<PathBuf>,
+    /// Run the script on every device of this fleet at once, each in a Lua state of its own (docs/fleets.md).
+    #[arg(short = 'f', long = "fleet", value_name = "NAME")]
+    pub fleet: Option<String>,
     /// The Lua script.
     pub script: PathBuf,
     /// Arguments for the script (`arg[1]`…, and `...`): everything after the script, even words
@@ -107,7 +110,7 @@ pub fn main(shell: &mut Shell, args: &RunArgs, style: Style) -> i32 {
 }
 
 /// The checks the script ran and how many failed (`plcsh.checks`, `plcsh.checks_failed`).
-fn checks(engine: &Engine) -> (u64, u64) {
+pub(super) fn checks(engine: &Engine) -> (u64, u64) {
     let get = |k: &str| -> Option<u64> {
         let t: mlua::Table = engine.lua().globals().get("plcsh").ok()?;
         t.get::<Option<u64>>(k).ok().flatten()

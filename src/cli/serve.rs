@@ -179,6 +179,11 @@ pub struct ServeArgs {
     /// On Modbus TCP, answer only the --unit id (by default unit 0xFF is this device too, as libmodbus does).
     #[arg(long = "strict-unit")]
     pub strict_unit: bool,
+    /// Serve N simulated K2s, each with its own memory, on N TCP ports (with --tcp: port 0 gives each a
+    /// free port, port P gives P, P+1, …); the readiness line lists them under `fleet` (docs/fleets.md).
+    #[arg(long = "fleet", value_name = "N", requires = "tcp", conflicts_with_all = ["rtu_pty", "rtu_tcp", "k2_control"],
+        value_parser = clap::value_parser!(u16).range(1..=1024))]
+    pub fleet: Option<u16>,
 }
 
 impl ServeArgs {
@@ -210,7 +215,7 @@ pub fn listen_addr(text: &str) -> Result<SocketAddr> {
     })
 }
 
-async fn bind(text: &str) -> Result<TcpListener> {
+pub(super) async fn bind(text: &str) -> Result<TcpListener> {
     let addr = listen_addr(text)?;
     TcpListener::bind(addr).await.map_err(|e| {
         Error::io(format!("cannot listen on {addr}"))
@@ -279,17 +284,15 @@ pub fn agent_note(base: u32) -> String {
     )
 }
 
-/// Binds the K2's transports, spawns their servers and names them in `ready`.
-async fn serve_k2(
+/// One simulated K2 as the flags describe it (model, state, helper program, faults, user
+/// program), its fields added to `ready`. Shared by the single K2 and by `--fleet N`.
+pub(super) fn make_k2(
     cli: &Cli,
     args: &ServeArgs,
     clock: &Clock,
-    tasks: &mut JoinSet<std::io::Result<()>>,
     ready: &mut Map<String, Json>,
-    cleanup: &mut Cleanup,
     bench: Option<crate::k2::sim::K2Sim>,
-) -> Result<()> {
-    let stop = cleanup.stop.clone();
+) -> Result<crate::k2::sim::K2Sim> {
     let mut sim = match bench {
         Some(sim) => sim,
         None => crate::k2::sim::open(&cli.model, clock.clone())?,
@@ -320,6 +323,34 @@ async fn serve_k2(
         sim.load_program(&text, &p.display().to_string())?;
         ready.insert("program".into(), json!(p.display().to_string()));
     }
+    Ok(sim)
+}
+
+/// How the served K2s treat their network connections (`--max-connections`, `--idle-timeout`, `--strict-unit`).
+pub(super) fn limits(args: &ServeArgs) -> Result<modbus_server::Limits> {
+    let idle =
+        crate::core::literal::parse_option_duration_us(&args.idle_timeout).ok().filter(|us| *us > 0).ok_or_else(
+            || Error::usage(format!("--idle-timeout {} is not a duration", args.idle_timeout)).hint("e.g. 300s, 2m"),
+        )?;
+    Ok(modbus_server::Limits {
+        max_connections: args.max_connections,
+        idle: std::time::Duration::from_micros(idle as u64),
+        unit_ff: !args.strict_unit,
+    })
+}
+
+/// Binds the K2's transports, spawns their servers and names them in `ready`.
+async fn serve_k2(
+    cli: &Cli,
+    args: &ServeArgs,
+    clock: &Clock,
+    tasks: &mut JoinSet<std::io::Result<()>>,
+    ready: &mut Map<String, Json>,
+    cleanup: &mut Cleanup,
+    bench: Option<crate::k2::sim::K2Sim>,
+) -> Result<()> {
+    let stop = cleanup.stop.clone();
+    let sim = make_k2(cli, args, clock, ready, bench)?;
     let sim = Arc::new(Mutex::new(sim));
     let service = K2Service::new(sim.clone(), args.unit);
     let control = args.k2_control.clone().or_else(|| args.rtu_pty.as_deref().map(control::default_path));
@@ -339,15 +370,7 @@ async fn serve_k2(
     if cli.verbose > 0 {
         report_faults(sim.clone(), stop);
     }
-    let idle =
-        crate::core::literal::parse_option_duration_us(&args.idle_timeout).ok().filter(|us| *us > 0).ok_or_else(
-            || Error::usage(format!("--idle-timeout {} is not a duration", args.idle_timeout)).hint("e.g. 300s, 2m"),
-        )?;
-    let limits = modbus_server::Limits {
-        max_connections: args.max_connections,
-        idle: std::time::Duration::from_micros(idle as u64),
-        unit_ff: !args.strict_unit,
-    };
+    let limits = limits(args)?;
     if let Some(a) = &args.tcp {
         let l = bind(a).await?;
         ready.insert("tcp".into(), json!(l.local_addr()?.to_string()));
@@ -472,7 +495,9 @@ async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
     };
     let servo_stop = Arc::new(AtomicBool::new(false));
     let _stop_servo = StopOnDrop(servo_stop.clone());
-    if args.serves_k2() {
+    if let Some(n) = args.fleet {
+        super::serve_fleet::serve(cli, args, n, &clock, &mut tasks, &mut ready).await?;
+    } else if args.serves_k2() {
         serve_k2(cli, args, &clock, &mut tasks, &mut ready, &mut cleanup, k2).await?;
     }
     serve_servo(args, &servo_stop, &mut ready, &mut cleanup, line).await?;

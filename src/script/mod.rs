@@ -15,6 +15,7 @@ mod api;
 pub mod bridge;
 mod device;
 pub mod error;
+mod fleet;
 pub mod paths;
 pub mod sandbox;
 mod snapshot;
@@ -37,7 +38,7 @@ use std::sync::Arc;
 pub const HOOK_EVERY: u32 = 1000;
 
 /// The Lua modules, registered in this order (the design's "one explicit list").
-const MODULES: &[fn(&Lua) -> mlua::Result<()>] = &[api::register, device::register, paths::register];
+const MODULES: &[fn(&Lua) -> mlua::Result<()>] = &[api::register, device::register, paths::register, fleet::register];
 
 /// A Lua state wired to plcsh.
 pub struct Engine {

@@ -1,5 +1,5 @@
 //! The `devices` listing: open devices (the current one marked `*`), then the profiles from
-//! devices.toml that are not open, then any problem in that file (with file:line). Shared by
+//! devices.toml that are not open, its fleets (`crate::fleet`), then any problem in that file (with file:line). Shared by
 //! the REPL's `devices` and `plcsh devices`.
 
 use crate::output::Outcome;
@@ -39,11 +39,35 @@ pub fn devices_and_profiles(s: &Session) -> (Vec<Vec<String>>, Outcome) {
         profiles.push(serde_json::json!({"name": p.name, "url": p.url, "read_only": p.read_only,
             "allow": p.allow, "origin": p.origin, "open": open}));
     }
+    let mut fleets = Vec::new();
+    for f in &s.profiles.fleets {
+        let n = f.members.len();
+        // A URL fleet's members share its rules; a list's members have their own profiles.
+        let writes = match f.members.first().map(|m| &m.source) {
+            Some(crate::fleet::Source::Made(p)) if p.read_only => "read only".to_string(),
+            Some(crate::fleet::Source::Made(p)) => {
+                p.allow.as_ref().map(|a| format!("allow {}", a.join(", "))).unwrap_or_default()
+            }
+            _ => "per profile".to_string(),
+        };
+        rows.push(vec![
+            f.name.clone(),
+            "(fleet)".into(),
+            format!("{n} device{}", if n == 1 { "" } else { "s" }),
+            f.spec.clone(),
+            writes,
+        ]);
+        let members: Vec<&str> = f.members.iter().map(|m| m.name.as_str()).collect();
+        fleets.push(serde_json::json!({"name": f.name, "members": members, "spec": f.spec, "origin": f.origin}));
+    }
     let problems: Vec<String> = s.profiles.problems.iter().map(|p| p.to_string()).collect();
     for p in &problems {
         rows.push(vec!["(problem)".into(), String::new(), String::new(), p.clone(), String::new()]);
     }
     let mut o = Outcome::new("devices").with("devices", list).with("profiles", profiles);
+    if !fleets.is_empty() {
+        o = o.with("fleets", fleets);
+    }
     if !problems.is_empty() {
         o = o.with("problems", problems);
     }

@@ -1,0 +1,77 @@
+//! `plcsh sim serve --fleet N --tcp ADDR`: N simulated K2s in one process, each with its own
+//! memory and its own Modbus TCP port, so a fleet (docs/fleets.md) and its tests run without
+//! hardware. Every member is built by the same code as the single served K2
+//! ([`super::serve::make_k2`]: model, unit, helper program, faults, user program) and served by
+//! the same server; they share the process's virtual clock. Each member is served on a thread
+//! of its own (with its own small runtime), so one member that is slow to answer (a `late`
+//! fault, a long request) holds no other, as separate PLCs would not. With port 0 each member binds a
+//! free port of its own; with port P the members take P, P+1, … (a fleet's `url` range then
+//! names them). The readiness line lists the bound addresses in order under `fleet`, and
+//! `tcp` is the first of them.
+
+use super::serve::{bind, limits, make_k2, ServeArgs};
+use super::Cli;
+use crate::core::{Clock, Error, Result};
+use crate::k2::sim::modbus_server::{self, K2Service};
+use serde_json::{json, Map, Value as Json};
+use std::sync::{Arc, Mutex};
+use tokio::task::JoinSet;
+
+/// Binds and spawns the N members; adds `fleet` (addresses), `tcp` and the members' shared
+/// fields to `ready`.
+pub(super) async fn serve(
+    cli: &Cli,
+    args: &ServeArgs,
+    n: u16,
+    clock: &Clock,
+    tasks: &mut JoinSet<std::io::Result<()>>,
+    ready: &mut Map<String, Json>,
+) -> Result<()> {
+    if cli.state.as_ref().is_some_and(|p| p.as_os_str() != "none") {
+        return Err(Error::usage("--state with --fleet: the simulators would share one state file")
+            .hint("leave --state out (a served fleet keeps no state)"));
+    }
+    if cli.bench.is_some() {
+        return Err(Error::usage("--bench with --fleet: a bench describes one machine"));
+    }
+    let tcp = args.tcp.as_deref().unwrap_or("0");
+    let first = super::serve::listen_addr(tcp)?;
+    let limits = limits(args)?;
+    let mut addrs = Vec::new();
+    for k in 0..n {
+        let port = if first.port() == 0 {
+            0
+        } else {
+            first
+                .port()
+                .checked_add(k)
+                .ok_or_else(|| Error::usage(format!("--tcp {tcp} --fleet {n}: the ports run past 65535")))?
+        };
+        let mut fields = Map::new();
+        let sim = make_k2(cli, args, clock, &mut fields, None)?;
+        if k == 0 {
+            ready.extend(fields);
+        }
+        let l = bind(&std::net::SocketAddr::new(first.ip(), port).to_string()).await?;
+        addrs.push(l.local_addr()?.to_string());
+        let l = l.into_std()?;
+        let service = K2Service::new(Arc::new(Mutex::new(sim)), args.unit);
+        let (done_tx, done) = tokio::sync::oneshot::channel::<std::io::Result<()>>();
+        std::thread::Builder::new().name(format!("fleet-k2-{k}")).spawn(move || {
+            let served = tokio::runtime::Builder::new_current_thread().enable_all().build().and_then(|rt| {
+                rt.block_on(async move {
+                    let l = tokio::net::TcpListener::from_std(l)?;
+                    modbus_server::serve_tcp(l, service, limits).await
+                })
+            });
+            let _ = done_tx.send(served);
+        })?;
+        // The member's end (an error, or its thread gone) ends the server, as for one K2.
+        tasks.spawn(async move {
+            done.await.unwrap_or_else(|_| Err(std::io::Error::other("a fleet member's thread stopped")))
+        });
+    }
+    ready.insert("tcp".into(), json!(addrs[0]));
+    ready.insert("fleet".into(), json!(addrs));
+    Ok(())
+}

@@ -1,0 +1,103 @@
+//! `plcsh publish --accept-writes`: writes that arrive from the broker. Off by default. A
+//! message on `plcsh/GROUP/DEVICE/set` — `{"operand":"VW100","value":5,"id":"any"}` — is
+//! applied only when the device's profile has an `allow` list and the operand is on it; a
+//! read-only profile (or `--read-only`) never accepts one, and a device without a profile or
+//! without an allow list refuses them all. Every outcome, applied or refused with the reason,
+//! is published on `plcsh/GROUP/DEVICE/reply` (not retained), with the request's `id`.
+//!
+//! The write itself goes through the session like `set`, so the profile's guard checks it
+//! again at the device boundary; the rule here only adds "the broker may write nothing the
+//! profile does not list".
+
+use crate::core::{Error, ErrorKind};
+use crate::session::SetItem;
+use crate::shell::Shell;
+use serde_json::{json, Value as Json};
+
+/// The longest command payload read (a write is a few dozen bytes).
+pub const MAX_PAYLOAD: usize = 4096;
+
+/// A write request.
+#[derive(Debug, PartialEq)]
+pub struct Command {
+    pub operand: String,
+    /// The value as `set` reads it (`5`, `16#85`, `true`, `1.5`).
+    pub value: String,
+    pub id: Json,
+}
+
+/// Parses a command payload; refuses anything but a small JSON object with `operand` and `value`.
+pub fn parse(payload: &[u8]) -> Result<Command, String> {
+    if payload.len() > MAX_PAYLOAD {
+        return Err(format!("a command is at most {MAX_PAYLOAD} bytes"));
+    }
+    let v: Json = serde_json::from_slice(payload).map_err(|e| format!("not JSON: {e}"))?;
+    let o = v.as_object().ok_or("a command is a JSON object {\"operand\":…, \"value\":…}")?;
+    let operand = o.get("operand").and_then(Json::as_str).ok_or("`operand` (a string) is missing")?;
+    let value = match o.get("value") {
+        Some(Json::Number(n)) => n.to_string(),
+        Some(Json::Bool(b)) => b.to_string(),
+        Some(Json::String(s)) => s.clone(),
+        _ => return Err("`value` (a number, true/false or a literal such as \"16#85\") is missing".into()),
+    };
+    if operand.contains(['=', ',', ';']) || value.contains([',', ';']) {
+        return Err("one operand and one value per command".into());
+    }
+    Ok(Command { operand: operand.to_string(), value, id: o.get("id").cloned().unwrap_or(Json::Null) })
+}
+
+/// Applies (or refuses) one command on `device`, the shell's current device; returns the reply.
+pub fn apply(shell: &mut Shell, device: &str, payload: &[u8]) -> Json {
+    let cmd = match parse(payload) {
+        Ok(c) => c,
+        Err(m) => return json!({"ok": false, "device": device, "error": {"kind": "syntax", "message": m}}),
+    };
+    let refuse = |e: Error| {
+        json!({"ok": false, "device": device, "operand": cmd.operand, "value": cmd.value, "id": cmd.id,
+            "error": {"kind": e.kind.name(), "message": e.message.clone()}})
+    };
+    let rules = shell.session.entries().iter().find(|e| e.name == device).and_then(|e| e.guard.clone());
+    let refusal = if shell.session.read_only() {
+        Some("the session is read-only (--read-only)".to_string())
+    } else {
+        match &rules {
+            None => Some(format!("`{device}` has no allow list: writes from the broker need one in its profile")),
+            Some(g) if g.read_only() => Some(format!("`{device}`'s profile is read_only")),
+            Some(g) if !g.has_allow() => {
+                Some(format!("`{device}`'s profile has no allow list: writes from the broker need one"))
+            }
+            Some(_) => None,
+        }
+    };
+    if let Some(m) = refusal {
+        return refuse(Error::new(ErrorKind::Usage, format!("write refused: {m}")));
+    }
+    let item = SetItem { operand: cmd.operand.clone(), value: cmd.value.clone(), column: 0, value_column: 0 };
+    match shell.session.set(&[item]) {
+        Ok(w) => {
+            let written: Vec<Json> =
+                w.iter().map(|(_, r)| json!({"operand": r.operand, "value": r.value, "type": r.dtype})).collect();
+            json!({"ok": true, "device": device, "operand": cmd.operand, "id": cmd.id, "writes": written})
+        }
+        Err(e) => refuse(e),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn commands_are_small_json_objects() {
+        let c = parse(br#"{"operand":"VW100","value":5,"id":7}"#).unwrap();
+        assert_eq!(c, Command { operand: "VW100".into(), value: "5".into(), id: json!(7) });
+        assert_eq!(parse(br#"{"operand":"M0.0","value":true}"#).unwrap().value, "true");
+        assert_eq!(parse(br#"{"operand":"SMB67","value":"16#85"}"#).unwrap().value, "16#85");
+        for bad in
+            [&b"5"[..], b"{", br#"{"value":1}"#, br#"{"operand":"VW0"}"#, br#"{"operand":"VW0=1, VW2","value":1}"#]
+        {
+            assert!(parse(bad).is_err(), "{}", String::from_utf8_lossy(bad));
+        }
+        assert!(parse(&vec![b' '; MAX_PAYLOAD + 1]).is_err());
+    }
+}

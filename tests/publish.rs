@@ -1,0 +1,742 @@
+//! `plcsh publish` against a real broker: mosquitto, started here on a free loopback port with a
+//! generated configuration and waited for by connecting; a subscriber written here (rumqttc)
+//! checks topics, payloads, retained values, device and publisher status, and — across a broker
+//! restart — that readings taken while the broker was away arrive, all of them, in order.
+//! Without mosquitto the tests are skipped (CI installs it: .ci/run).
+#![cfg(unix)]
+
+mod common;
+use common::*;
+use std::io::BufRead;
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
+
+/// The broker's program: on PATH, or where Debian puts it (/usr/sbin is not on every user's PATH).
+fn mosquitto() -> &'static str {
+    let runs = |p: &str| Command::new(p).arg("-h").stdout(Stdio::null()).stderr(Stdio::null()).status().is_ok();
+    if runs("mosquitto") {
+        "mosquitto"
+    } else {
+        "/usr/sbin/mosquitto"
+    }
+}
+
+fn mosquitto_present() -> bool {
+    let found = Command::new(mosquitto()).arg("-h").stdout(Stdio::null()).stderr(Stdio::null()).status().is_ok();
+    if !found {
+        assert!(std::env::var_os("CI").is_none(), "mosquitto is required when CI is set (.ci/run installs it)");
+        eprintln!("skipped: mosquitto is not installed");
+    }
+    found
+}
+
+fn dir(name: &str) -> PathBuf {
+    use std::os::unix::fs::PermissionsExt;
+    let d = std::env::temp_dir().join(format!("plcsh-publish-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    // Started as root, mosquitto runs as its own user: it must be able to write its database here.
+    std::fs::set_permissions(&d, std::fs::Permissions::from_mode(0o777)).unwrap();
+    d
+}
+
+/// A mosquitto on `port` with its database in `dir` (sessions and queued messages survive a
+/// restart), ready once it accepts a connection.
+struct Broker {
+    child: Child,
+}
+
+impl Broker {
+    fn start(dir: &Path, port: u16) -> Broker {
+        let conf = dir.join("mosquitto.conf");
+        std::fs::write(
+            &conf,
+            format!(
+                "listener {port} 127.0.0.1\nallow_anonymous true\npersistence true\npersistence_location {}/\nautosave_interval 0\n",
+                dir.display()
+            ),
+        )
+        .unwrap();
+        let child =
+            Command::new(mosquitto()).arg("-c").arg(&conf).stdout(Stdio::null()).stderr(Stdio::null()).spawn().unwrap();
+        let deadline = Instant::now() + Duration::from_secs(10);
+        while std::net::TcpStream::connect(("127.0.0.1", port)).is_err() {
+            assert!(Instant::now() < deadline, "mosquitto did not start on port {port}");
+            std::thread::sleep(Duration::from_millis(10));
+        }
+        Broker { child }
+    }
+
+    /// SIGTERM (mosquitto saves its database), then waits for it to exit.
+    fn stop(mut self) {
+        plcsh::core::platform::terminate_child(&self.child);
+        let _ = self.child.wait();
+    }
+}
+
+impl Drop for Broker {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+/// A free loopback port: bound to 0, then released for the broker.
+fn free_port() -> u16 {
+    std::net::TcpListener::bind("127.0.0.1:0").unwrap().local_addr().unwrap().port()
+}
+
+type Got = Arc<Mutex<Vec<(String, Vec<u8>, bool)>>>;
+
+/// A subscriber to `plcsh/#` (QoS 1, a persistent session), collecting what arrives; it
+/// reconnects by itself while the broker is away.
+fn subscribe(port: u16, id: &str) -> Got {
+    let got: Got = Arc::default();
+    let mut opts = rumqttc::MqttOptions::new(id, "127.0.0.1", port);
+    opts.set_clean_session(false);
+    opts.set_keep_alive(Duration::from_secs(5));
+    let (client, mut conn) = rumqttc::Client::new(opts, 100);
+    client.subscribe("plcsh/#", rumqttc::QoS::AtLeastOnce).unwrap();
+    let g = got.clone();
+    let (ready_tx, ready) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        let _keep = client;
+        for ev in conn.iter() {
+            match ev {
+                Ok(rumqttc::Event::Incoming(rumqttc::Packet::SubAck(_))) => {
+                    let _ = ready_tx.send(());
+                }
+                Ok(rumqttc::Event::Incoming(rumqttc::Packet::Publish(p))) => {
+                    g.lock().unwrap().push((p.topic.clone(), p.payload.to_vec(), p.retain))
+                }
+                Ok(_) => {}
+                Err(_) => std::thread::sleep(Duration::from_millis(50)),
+            }
+        }
+    });
+    ready.recv_timeout(Duration::from_secs(10)).expect("subscribed");
+    got
+}
+
+fn wait_for(got: &Got, what: &str, f: impl Fn(&[(String, Vec<u8>, bool)]) -> bool) {
+    let deadline = Instant::now() + Duration::from_secs(20);
+    while !f(&got.lock().unwrap()) {
+        assert!(
+            Instant::now() < deadline,
+            "timed out waiting for {what}: {:?}",
+            got.lock()
+                .unwrap()
+                .iter()
+                .map(|(t, p, _)| format!("{t} {}", String::from_utf8_lossy(p)))
+                .collect::<Vec<_>>()
+        );
+        std::thread::sleep(Duration::from_millis(10));
+    }
+}
+
+fn json(b: &[u8]) -> serde_json::Value {
+    serde_json::from_slice(b).unwrap_or_else(|e| panic!("not JSON: {}: {e}", String::from_utf8_lossy(b)))
+}
+
+#[test]
+fn a_fleets_values_and_status_are_published_and_retained() {
+    if !mosquitto_present() {
+        return;
+    }
+    let d = dir("retained");
+    let port = free_port();
+    let _broker = Broker::start(&d, port);
+    let dead = free_port();
+    let cfg = d.join("devices.toml");
+    std::fs::write(
+        &cfg,
+        format!("[devices.a]\nurl = \"sim:K205-16DT\"\n[devices.b]\nurl = \"sim:K209EA-50DX\"\n[fleets.line]\ndevices = [\"a\", \"b\", \"tcp://127.0.0.1:{dead}\"]\n"),
+    )
+    .unwrap();
+    let o = run(
+        &[
+            "--config",
+            cfg.to_str().unwrap(),
+            "--json",
+            "publish",
+            "-f",
+            "line",
+            "--broker",
+            &format!("mqtt://127.0.0.1:{port}"),
+            "--every",
+            "20ms",
+            "--count",
+            "3",
+            "--qos",
+            "1",
+            "--mqtt-version",
+            "5",
+            "VW100",
+            "VD200/REAL",
+        ],
+        "",
+    );
+    let l = json_lines(&o);
+    let summary = l.last().unwrap();
+    assert_eq!(o.status.code(), Some(1), "a member is offline: {}", both(&o));
+    assert_eq!(summary["cmd"], "publish");
+    assert_eq!(summary["offline"], serde_json::json!(["line-3"]));
+    assert_eq!(summary["dropped"], 0);
+    assert!(l.iter().any(|x| x["event"] == "device" && x["device"] == "line-3" && x["state"] == "offline"), "{l:?}");
+    // A subscriber that connects afterwards gets the last values: retained.
+    let got = subscribe(port, "late-reader");
+    wait_for(&got, "the retained values", |g| g.len() >= 8);
+    let g = got.lock().unwrap().clone();
+    let find = |t: &str| g.iter().find(|(topic, _, _)| topic == t).unwrap_or_else(|| panic!("{t}: {g:?}")).clone();
+    for dev in ["a", "b"] {
+        let (_, p, retained) = find(&format!("plcsh/line/{dev}/VW100"));
+        assert!(retained);
+        let v = json(&p);
+        assert_eq!(
+            (v["value"].as_i64(), v["type"].as_str(), v["seq"].as_u64()),
+            (Some(0), Some("WORD"), Some(3)),
+            "{v}"
+        );
+        assert_eq!(v["device"], dev);
+        assert!(v["ts"].as_u64().unwrap() > 1_600_000_000_000, "a source timestamp in ms: {v}");
+        assert_eq!(json(&find(&format!("plcsh/line/{dev}/VD200_REAL")).1)["type"], "REAL");
+        assert_eq!(find(&format!("plcsh/line/{dev}/status")).1, b"online");
+    }
+    assert_eq!(find("plcsh/line/line-3/status").1, b"offline");
+    assert!(!g.iter().any(|(t, _, _)| t == "plcsh/line/line-3/VW100"), "an offline device publishes no values");
+    assert_eq!(find("plcsh/line/_publisher/status").1, b"offline", "the publisher said goodbye");
+}
+
+#[test]
+fn readings_taken_while_the_broker_is_away_arrive_in_order() {
+    if !mosquitto_present() {
+        return;
+    }
+    let d = dir("restart");
+    let port = free_port();
+    let broker = Broker::start(&d, port);
+    let got = subscribe(port, "steady-reader");
+    let mut child = plcsh()
+        .args([
+            "--json",
+            "publish",
+            "--broker",
+            &format!("mqtt://127.0.0.1:{port}"),
+            "--every",
+            "20ms",
+            "--count",
+            "120",
+            "--qos",
+            "1",
+            "VW100",
+        ])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut lines = std::io::BufReader::new(child.stdout.take().unwrap()).lines();
+    let next_event = |lines: &mut std::io::Lines<_>, what: &str| loop {
+        let l: String = lines.next().unwrap_or_else(|| panic!("publish ended before {what}")).unwrap();
+        let v: serde_json::Value = serde_json::from_str(&l).unwrap();
+        if v["event"] == "broker" && v["state"] == what {
+            return;
+        }
+    };
+    next_event(&mut lines, "connected");
+    let seqs = |g: &[(String, Vec<u8>, bool)]| -> Vec<u64> {
+        g.iter()
+            .filter(|(t, _, _)| t == "plcsh/single/plc/VW100")
+            .map(|(_, p, _)| json(p)["seq"].as_u64().unwrap())
+            .collect()
+    };
+    wait_for(&got, "the first readings", |g| seqs(g).len() >= 5);
+    broker.stop();
+    next_event(&mut lines, "away");
+    let broker = Broker::start(&d, port);
+    let rest: Vec<String> = lines.map(|l| l.unwrap()).collect();
+    let out = child.wait_with_output().unwrap();
+    let summary: serde_json::Value = serde_json::from_str(rest.last().expect("a summary")).unwrap();
+    assert_eq!(summary["ok"], true, "{rest:?} {}", String::from_utf8_lossy(&out.stderr));
+    assert!(summary["reconnects"].as_u64().unwrap() >= 1, "{summary}");
+    assert_eq!(summary["dropped"], 0);
+    wait_for(&got, "every reading", |g| seqs(g).contains(&120));
+    // At least once: a reading may come twice around the restart, but never out of order and none is missing.
+    let s = seqs(&got.lock().unwrap());
+    let (mut highest, mut seen) = (0, std::collections::HashSet::new());
+    for &x in &s {
+        // A repeat is a redelivery; a reading not seen before must come after every earlier one.
+        if seen.insert(x) {
+            assert!(x > highest, "out of order at {x}: {s:?}");
+            highest = x;
+        }
+    }
+    let mut unique = s.clone();
+    unique.sort();
+    unique.dedup();
+    assert_eq!(unique, (1..=120).collect::<Vec<u64>>(), "every reading arrived");
+    drop(broker);
+}
+
+#[test]
+fn credentials_never_come_from_the_command_line() {
+    let o = run(&["publish", "--broker", "mqtt://user:secret@127.0.0.1:1883", "VW0"], "");
+    assert_eq!(o.status.code(), Some(2), "{}", both(&o));
+    assert!(stderr(&o).contains("PLCSH_MQTT_PASSWORD"), "{}", both(&o));
+    let o = run(&["publish", "VW0"], "");
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("needs a broker"), "{}", both(&o));
+}
+
+#[test]
+fn writes_from_the_broker_only_to_allowed_operands() {
+    if !mosquitto_present() {
+        return;
+    }
+    let d = dir("writes");
+    let port = free_port();
+    let _broker = Broker::start(&d, port);
+    let cfg = d.join("devices.toml");
+    std::fs::write(
+        &cfg,
+        "[devices.a]\nurl = \"sim:K205-16DT\"\nallow = [\"VW100\"]\n[devices.v]\nurl = \"sim:K205-16DT\"\nread_only = true\n[fleets.pair]\ndevices = [\"a\", \"v\"]\n",
+    )
+    .unwrap();
+    let got = subscribe(port, "writer-watch");
+    let mut child = plcsh()
+        .args([
+            "--config",
+            cfg.to_str().unwrap(),
+            "--json",
+            "publish",
+            "-f",
+            "pair",
+            "--accept-writes",
+            "--broker",
+            &format!("mqtt://127.0.0.1:{port}"),
+            "--every",
+            "20ms",
+            "--count",
+            "400",
+            "VW100",
+            "VW102",
+        ])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let topic_seen = |t: &str| {
+        let t = t.to_string();
+        move |g: &[(String, Vec<u8>, bool)]| g.iter().any(|(x, _, _)| *x == t)
+    };
+    // A value published after the publisher connected: its command subscription is in place.
+    wait_for(&got, "the first values", topic_seen("plcsh/pair/v/VW100"));
+    let mut opts = rumqttc::MqttOptions::new("writer", "127.0.0.1", port);
+    opts.set_keep_alive(Duration::from_secs(5));
+    let (client, mut conn) = rumqttc::Client::new(opts, 10);
+    std::thread::spawn(move || for _ in conn.iter() {});
+    let send = |topic: &str, body: &str| {
+        client.publish(topic, rumqttc::QoS::AtLeastOnce, false, body.as_bytes().to_vec()).unwrap()
+    };
+    send("plcsh/pair/a/set", r#"{"operand":"VW100","value":1234,"id":"allowed"}"#);
+    send("plcsh/pair/a/set", r#"{"operand":"VW102","value":1,"id":"not-listed"}"#);
+    send("plcsh/pair/v/set", r#"{"operand":"VW100","value":1,"id":"read-only"}"#);
+    send("plcsh/pair/a/set", r#"{"operand":"VW100""#);
+    let replies = |g: &[(String, Vec<u8>, bool)]| -> Vec<serde_json::Value> {
+        g.iter().filter(|(t, _, _)| t.ends_with("/reply")).map(|(_, p, _)| json(p)).collect()
+    };
+    wait_for(&got, "four replies", |g| replies(g).len() >= 4);
+    let value_of = |g: &[(String, Vec<u8>, bool)]| {
+        g.iter().filter(|(t, _, _)| t == "plcsh/pair/a/VW100").any(|(_, p, _)| json(p)["value"] == 1234)
+    };
+    wait_for(&got, "the written value published", value_of);
+    plcsh::core::platform::interrupt_child(&child);
+    let _ = child.wait();
+    let r = replies(&got.lock().unwrap());
+    let by = |id: &str| r.iter().find(|x| x["id"] == id).unwrap_or_else(|| panic!("{id}: {r:?}")).clone();
+    assert_eq!(by("allowed")["ok"], true, "{r:?}");
+    let not_listed = by("not-listed");
+    assert_eq!(not_listed["ok"], false);
+    assert!(not_listed["error"]["message"].as_str().unwrap().contains("allow list"), "{not_listed}");
+    let ro = by("read-only");
+    assert_eq!(ro["ok"], false);
+    assert!(ro["error"]["message"].as_str().unwrap().contains("read_only"), "{ro}");
+    assert!(
+        r.iter().any(|x| x["ok"] == false && x["error"]["kind"] == "syntax"),
+        "a broken command is answered: {r:?}"
+    );
+    assert!(
+        !got.lock().unwrap().iter().any(|(t, p, _)| t == "plcsh/pair/v/VW100" && json(p)["value"] != 0),
+        "the read-only device was not written"
+    );
+}
+
+#[test]
+fn without_accept_writes_the_broker_writes_nothing() {
+    if !mosquitto_present() {
+        return;
+    }
+    let d = dir("no-writes");
+    let port = free_port();
+    let _broker = Broker::start(&d, port);
+    let cfg = d.join("devices.toml");
+    std::fs::write(&cfg, "[devices.a]\nurl = \"sim:K205-16DT\"\nallow = [\"VW100\"]\n").unwrap();
+    let got = subscribe(port, "no-writes-watch");
+    let mut child = plcsh()
+        .args([
+            "--config",
+            cfg.to_str().unwrap(),
+            "-d",
+            "a",
+            "publish",
+            "--broker",
+            &format!("mqtt://127.0.0.1:{port}"),
+            "--every",
+            "20ms",
+            "--count",
+            "400",
+            "VW100",
+        ])
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let seqs = |g: &[(String, Vec<u8>, bool)]| -> u64 {
+        g.iter()
+            .filter(|(t, _, _)| t == "plcsh/single/a/VW100")
+            .filter_map(|(_, p, _)| json(p)["seq"].as_u64())
+            .max()
+            .unwrap_or(0)
+    };
+    wait_for(&got, "the first values", |g| seqs(g) >= 1);
+    let mut opts = rumqttc::MqttOptions::new("uninvited", "127.0.0.1", port);
+    opts.set_keep_alive(Duration::from_secs(5));
+    let (client, mut conn) = rumqttc::Client::new(opts, 10);
+    let (acked_tx, acked) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        for ev in conn.iter() {
+            if let Ok(rumqttc::Event::Incoming(rumqttc::Packet::PubAck(_))) = ev {
+                let _ = acked_tx.send(());
+            }
+        }
+    });
+    client
+        .publish("plcsh/single/a/set", rumqttc::QoS::AtLeastOnce, false, br#"{"operand":"VW100","value":77}"#.to_vec())
+        .unwrap();
+    acked.recv_timeout(Duration::from_secs(10)).expect("the broker took the command");
+    // Ten more polls after the broker had the command: none shows it, no reply came.
+    let after = seqs(&got.lock().unwrap());
+    wait_for(&got, "ten more polls", |g| seqs(g) >= after + 10);
+    plcsh::core::platform::interrupt_child(&child);
+    let _ = child.wait();
+    let g = got.lock().unwrap();
+    assert!(!g.iter().any(|(t, _, _)| t.ends_with("/reply")), "no reply without --accept-writes");
+    assert!(g.iter().filter(|(t, _, _)| t == "plcsh/single/a/VW100").all(|(_, p, _)| json(p)["value"] == 0));
+}
+
+#[test]
+fn the_username_comes_from_the_profile_file_and_the_password_from_the_environment() {
+    if !mosquitto_present() {
+        return;
+    }
+    let d = dir("auth");
+    let port = free_port();
+    let passwords = d.join("passwords");
+    // mosquitto_passwd hashes the password into the broker's password file.
+    let made = Command::new("mosquitto_passwd").args(["-b", "-c"]).arg(&passwords).args(["plcsh", "s3cret"]).status();
+    if !made.is_ok_and(|s| s.success()) {
+        eprintln!("skipped: mosquitto_passwd is not available");
+        return;
+    }
+    use std::os::unix::fs::PermissionsExt;
+    std::fs::set_permissions(&passwords, std::fs::Permissions::from_mode(0o644)).unwrap();
+    let conf = d.join("mosquitto.conf");
+    std::fs::write(
+        &conf,
+        format!("listener {port} 127.0.0.1\nallow_anonymous false\npassword_file {}\n", passwords.display()),
+    )
+    .unwrap();
+    let mut broker =
+        Command::new(mosquitto()).arg("-c").arg(&conf).stdout(Stdio::null()).stderr(Stdio::null()).spawn().unwrap();
+    let deadline = Instant::now() + Duration::from_secs(10);
+    while std::net::TcpStream::connect(("127.0.0.1", port)).is_err() {
+        assert!(Instant::now() < deadline, "mosquitto did not start");
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    let cfg = d.join("devices.toml");
+    std::fs::write(&cfg, format!("[mqtt]\nurl = \"mqtt://127.0.0.1:{port}\"\nusername = \"plcsh\"\n")).unwrap();
+    let publish = |password: &str| {
+        plcsh()
+            .args(["--config", cfg.to_str().unwrap(), "--json", "publish", "--every", "10ms", "--count", "3", "VW100"])
+            .env("PLCSH_MQTT_PASSWORD", password)
+            .output()
+            .unwrap()
+    };
+    let o = publish("s3cret");
+    assert_eq!(o.status.code(), Some(0), "{}", both(&o));
+    let last: serde_json::Value = serde_json::from_str(stdout(&o).lines().last().unwrap()).unwrap();
+    assert!(last["published"].as_u64().unwrap() >= 4, "{last}");
+    let o = publish("wrong");
+    assert_eq!(o.status.code(), Some(1), "refused by the broker: {}", both(&o));
+    let lines = json_lines(&o);
+    assert!(lines.iter().any(|l| l["event"] == "broker" && l["state"] == "away"), "{lines:?}");
+    assert!(lines.last().unwrap()["undelivered"].as_u64().unwrap() > 0, "{lines:?}");
+    let _ = broker.kill();
+    let _ = broker.wait();
+}
+
+/// Runs openssl with `args` in `dir`; false when it is missing or fails.
+fn openssl(dir: &Path, args: &[&str]) -> bool {
+    Command::new("openssl")
+        .args(args)
+        .current_dir(dir)
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .status()
+        .is_ok_and(|s| s.success())
+}
+
+#[test]
+fn tls_with_the_ca_from_the_profile_file() {
+    if !mosquitto_present() {
+        return;
+    }
+    let d = dir("tls");
+    // A CA of our own and a server certificate for 127.0.0.1 signed by it.
+    std::fs::write(d.join("server.ext"), "basicConstraints=CA:FALSE\nsubjectAltName=IP:127.0.0.1\n").unwrap();
+    let made = openssl(
+        &d,
+        &[
+            "req",
+            "-x509",
+            "-newkey",
+            "rsa:2048",
+            "-nodes",
+            "-keyout",
+            "ca.key",
+            "-out",
+            "ca.pem",
+            "-days",
+            "2",
+            "-subj",
+            "/CN=plcsh test CA",
+        ],
+    ) && openssl(
+        &d,
+        &[
+            "req",
+            "-newkey",
+            "rsa:2048",
+            "-nodes",
+            "-keyout",
+            "server.key",
+            "-out",
+            "server.csr",
+            "-subj",
+            "/CN=127.0.0.1",
+        ],
+    ) && openssl(
+        &d,
+        &[
+            "x509",
+            "-req",
+            "-in",
+            "server.csr",
+            "-CA",
+            "ca.pem",
+            "-CAkey",
+            "ca.key",
+            "-CAcreateserial",
+            "-out",
+            "server.pem",
+            "-days",
+            "2",
+            "-extfile",
+            "server.ext",
+        ],
+    );
+    if !made {
+        eprintln!("skipped: openssl could not make the test certificates");
+        return;
+    }
+    use std::os::unix::fs::PermissionsExt;
+    for f in ["server.key", "server.pem", "ca.pem"] {
+        std::fs::set_permissions(d.join(f), std::fs::Permissions::from_mode(0o644)).unwrap();
+    }
+    let port = free_port();
+    let conf = d.join("mosquitto.conf");
+    std::fs::write(
+        &conf,
+        format!(
+            "listener {port} 127.0.0.1\nallow_anonymous true\ncertfile {0}/server.pem\nkeyfile {0}/server.key\ncafile {0}/ca.pem\n",
+            d.display()
+        ),
+    )
+    .unwrap();
+    let mut broker =
+        Command::new(mosquitto()).arg("-c").arg(&conf).stdout(Stdio::null()).stderr(Stdio::null()).spawn().unwrap();
+    let deadline = Instant::now() + Duration::from_secs(10);
+    while std::net::TcpStream::connect(("127.0.0.1", port)).is_err() {
+        assert!(Instant::now() < deadline, "mosquitto did not start");
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    let cfg = d.join("devices.toml");
+    let publish = |ca: &str| {
+        std::fs::write(
+            &cfg,
+            format!("[mqtt]\nurl = \"mqtts://127.0.0.1:{port}\"\nca_file = \"{}\"\n", d.join(ca).display()),
+        )
+        .unwrap();
+        plcsh()
+            .args(["--config", cfg.to_str().unwrap(), "--json", "publish", "--every", "10ms", "--count", "3", "VW100"])
+            .output()
+            .unwrap()
+    };
+    let o = publish("ca.pem");
+    assert_eq!(o.status.code(), Some(0), "over TLS: {}", both(&o));
+    assert!(json_lines(&o).last().unwrap()["published"].as_u64().unwrap() >= 4, "{}", both(&o));
+    // A certificate the given CA did not sign is refused: the publisher never connects.
+    assert!(openssl(
+        &d,
+        &[
+            "req",
+            "-x509",
+            "-newkey",
+            "rsa:2048",
+            "-nodes",
+            "-keyout",
+            "other.key",
+            "-out",
+            "other.pem",
+            "-days",
+            "2",
+            "-subj",
+            "/CN=other CA"
+        ]
+    ));
+    let o = publish("other.pem");
+    assert_eq!(o.status.code(), Some(1), "{}", both(&o));
+    assert!(!json_lines(&o).iter().any(|l| l["state"] == "connected"), "{}", both(&o));
+    let _ = broker.kill();
+    let _ = broker.wait();
+}
+
+#[test]
+fn on_change_publishes_once_and_a_device_that_stops_answering_goes_offline() {
+    if !mosquitto_present() {
+        return;
+    }
+    let d = dir("offline");
+    let port = free_port();
+    let _broker = Broker::start(&d, port);
+    let got = subscribe(port, "offline-watch");
+    let k2 = serve(&["--tcp", "0"]);
+    let url = format!("tcp://{}?timeout=200ms&retries=0", k2.ready["tcp"].as_str().unwrap());
+    let mut child = plcsh()
+        .args([
+            "-d",
+            &format!("press={url}"),
+            "--json",
+            "publish",
+            "--broker",
+            &format!("mqtt://127.0.0.1:{port}"),
+            "--every",
+            "20ms",
+            "--count",
+            "100",
+            "--on-change",
+            "VW100",
+        ])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let mut lines = std::io::BufReader::new(child.stdout.take().unwrap()).lines();
+    let values = |g: &[(String, Vec<u8>, bool)]| g.iter().filter(|(t, _, _)| t == "plcsh/single/press/VW100").count();
+    wait_for(&got, "the first value", |g| values(g) >= 1);
+    // Polls go on (every 20 ms) with VW100 unchanged; then it changes, and is published again.
+    std::thread::sleep(Duration::from_millis(300));
+    let o = run(&["-d", &url, "-c", "set VW100=5"], "");
+    assert!(o.status.success(), "{}", both(&o));
+    wait_for(&got, "the changed value", |g| values(g) >= 2);
+    drop(k2);
+    let offline = loop {
+        let l: serde_json::Value = serde_json::from_str(&lines.next().expect("a device event").unwrap()).unwrap();
+        if l["event"] == "device" {
+            break l;
+        }
+    };
+    assert_eq!((offline["device"].as_str(), offline["state"].as_str()), (Some("press"), Some("offline")), "{offline}");
+    wait_for(&got, "the offline status", |g| {
+        g.iter().any(|(t, p, _)| t == "plcsh/single/press/status" && p == b"offline")
+    });
+    plcsh::core::platform::interrupt_child(&child);
+    let rest: Vec<String> = lines.map(|l| l.unwrap()).collect();
+    let _ = child.wait();
+    let summary: serde_json::Value = serde_json::from_str(rest.last().expect("a summary")).unwrap();
+    assert_eq!(summary["offline"], serde_json::json!(["press"]), "{summary}");
+    let g = got.lock().unwrap();
+    let published: Vec<serde_json::Value> =
+        g.iter().filter(|(t, _, _)| t == "plcsh/single/press/VW100").map(|(_, p, _)| json(p)).collect();
+    assert_eq!(published.len(), 2, "--on-change: an unchanged value is published once: {published:?}");
+    assert_eq!((published[0]["value"].as_i64(), published[1]["value"].as_i64()), (Some(0), Some(5)));
+    assert!(published[1]["seq"].as_u64().unwrap() >= 3, "polls in between published nothing: {published:?}");
+    let status: Vec<&[u8]> =
+        g.iter().filter(|(t, _, _)| t == "plcsh/single/press/status").map(|(_, p, _)| p.as_slice()).collect();
+    assert_eq!(status, [&b"online"[..], b"offline"]);
+}
+
+#[test]
+fn beyond_the_buffer_the_oldest_readings_are_dropped_and_counted() {
+    if !mosquitto_present() {
+        return;
+    }
+    let d = dir("bound");
+    let port = free_port();
+    // No broker yet: every reading waits in a queue of 5.
+    let mut child = plcsh()
+        .args([
+            "--json",
+            "publish",
+            "--broker",
+            &format!("mqtt://127.0.0.1:{port}"),
+            "--every",
+            "10ms",
+            "--count",
+            "30",
+            "--buffer",
+            "5",
+            "--qos",
+            "1",
+            "VW100",
+        ])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let mut lines = std::io::BufReader::new(child.stdout.take().unwrap()).lines();
+    let mut until = |event: &str, state: &str| loop {
+        let l: serde_json::Value = serde_json::from_str(&lines.next().expect("an event").unwrap()).unwrap();
+        if l["event"] == event && l["state"] == state {
+            return;
+        }
+    };
+    until("broker", "away");
+    until("polling", "stopped");
+    // All 30 polls are queued (or dropped); now the broker comes, with a subscriber waiting.
+    let _broker = Broker::start(&d, port);
+    let got = subscribe(port, "bound-watch");
+    let rest: Vec<String> = lines.map(|l| l.unwrap()).collect();
+    let _ = child.wait();
+    let summary: serde_json::Value = serde_json::from_str(rest.last().expect("a summary")).unwrap();
+    // The device's `online` and 30 values: 31 messages, of which the newest 5 are kept.
+    assert_eq!(summary["dropped"], 26, "{summary}");
+    assert_eq!(summary["undelivered"], 0, "{summary}");
+    assert_eq!(summary["ok"], false, "readings were dropped: {summary}");
+    wait_for(&got, "the kept readings", |g| g.iter().filter(|(t, _, _)| t == "plcsh/single/plc/VW100").count() >= 1);
+    let g = got.lock().unwrap();
+    // The subscriber came after them: it sees the retained last value, the newest reading.
+    let last = g.iter().rev().find(|(t, _, _)| t == "plcsh/single/plc/VW100").map(|(_, p, _)| json(p)).unwrap();
+    assert_eq!(last["seq"], 30, "{last}");
+}
