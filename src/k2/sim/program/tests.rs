@@ -1174,3 +1174,109 @@ fn timed_interrupts_during_disi_queue_eight_and_flag_the_rest() {
     assert!((8..=10).contains(&n), "8 waited, then the ticks since ENI: {n}");
     assert!(on(&mut s, "M1.0"), "SM4.2: some were lost");
 }
+
+// ---- Snapshots keep the CPU's error list, the STOP flag, waiting events, a DEBUG halt ----
+
+/// The simulator's state through the snapshot file's JSON, restored onto a fresh simulator
+/// whose clock is set to the saved time (as `sim snapshot restore` does).
+fn through_snapshot(s: &K2Sim, clock: &Clock) -> (K2Sim, Clock) {
+    let text = serde_json::to_string(&s.snapshot_state()).unwrap();
+    let st: crate::k2::sim::snapshot::K2State = serde_json::from_str(&text).unwrap();
+    let (mut b, bclock) = sim();
+    bclock.set(clock.now());
+    b.restore_snapshot(&st).unwrap();
+    (b, bclock)
+}
+
+#[test]
+fn a_snapshot_keeps_the_normal_errors_and_the_program_stop() {
+    // K2 §2.2.1: a normal error lights Err and its code is saved; it must not vanish across
+    // `sim snapshot save/restore`. Nor may "stopped by the program's STOP" (K80S 5.4.5).
+    let (mut s, clock) = sim();
+    s.load_program("LD %SM0.0\nDIV %VW0, %VW2\nLD %I0.0\nSTOP\nLD %SM0.0\nINC %VW4", "ds.il").unwrap();
+    set(&mut s, "VW2", Value::Int(7));
+    clock.step(Duration::from_millis(5));
+    set(&mut s, "I0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(3));
+    s.advance();
+    let (errors, count) = {
+        let p = s.plc().unwrap();
+        assert!(p.stopped_by_program && p.mode == Mode::Stop);
+        assert!(!p.errors.is_empty());
+        (p.errors.clone(), p.error_count)
+    };
+    let (b, _) = through_snapshot(&s, &clock);
+    let p = b.plc().unwrap();
+    assert_eq!(p.errors, errors, "the normal-error records (Err LED) came back");
+    assert_eq!(p.error_count, count);
+    assert!(p.stopped_by_program, "the program's STOP came back");
+    assert_eq!(p.mode, Mode::Stop);
+}
+
+#[test]
+fn a_snapshot_keeps_a_serious_fault() {
+    // A bad indirect address stops the CPU with a serious error (K2 §2.2.1): restored, the CPU
+    // still says why it stopped.
+    let (mut s, clock) = sim();
+    s.load_program("LD %SM0.0\nMOVD 16#7FFFFF00, %VD0\nMOVE *%VD0, %VW10", "bad.il").unwrap();
+    clock.step(Duration::from_millis(2));
+    s.advance();
+    let faults = s.plc().unwrap().faults.clone();
+    assert!(!faults.is_empty(), "the bad pointer stopped the CPU");
+    let (b, _) = through_snapshot(&s, &clock);
+    assert_eq!(b.plc().unwrap().faults, faults);
+    assert_eq!(b.plc().unwrap().mode, Mode::Stop);
+}
+
+#[test]
+fn an_edge_waiting_during_disi_survives_a_snapshot_and_runs_once_after_eni() {
+    let (mut s, clock) = sim();
+    s.load_program(DISI, "disi.il").unwrap();
+    set(&mut s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(2));
+    edge(&mut s);
+    clock.step(Duration::from_millis(2));
+    assert_eq!(get(&mut s, "VW10"), Value::Int(0), "disabled: waits");
+    let (mut b, bclock) = through_snapshot(&s, &clock);
+    assert_eq!(b.plc().unwrap().pending.len(), 1, "the waiting event came back");
+    for (x, c) in [(&mut s, &clock), (&mut b, &bclock)] {
+        set(x, "M0.0", Value::Bool(false));
+        set(x, "M0.1", Value::Bool(true));
+        c.step(Duration::from_millis(5));
+        assert_eq!(get(x, "VW10"), Value::Int(1), "ran once after ENI");
+    }
+}
+
+#[test]
+fn a_debug_halt_survives_a_snapshot_with_its_frozen_time_and_breakpoints() {
+    // docs/il.md "Debugging": a halt freezes program time; restored, it is still halted at the
+    // same instruction, still frozen, and `sim cpu run` continues the halted scan.
+    let (mut s, clock) = sim();
+    s.load_program(FROZEN, "frozen.il").unwrap();
+    set(&mut s, "I0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(500));
+    s.advance();
+    s.set_breakpoint("12").unwrap();
+    clock.step(Duration::from_millis(2));
+    s.advance();
+    assert_eq!(s.plc().unwrap().mode, Mode::Debug);
+    let halted = s.plc().unwrap().halted;
+    assert!(halted.is_some());
+    let (mut b, bclock) = through_snapshot(&s, &clock);
+    assert_eq!(b.plc().unwrap().mode, Mode::Debug);
+    assert_eq!(b.plc().unwrap().halted, halted, "halted at the same instruction");
+    assert_eq!(b.breakpoints(), s.breakpoints(), "the breakpoints came back");
+    let mut seen = Vec::new();
+    for (x, c) in [(&mut s, &clock), (&mut b, &bclock)] {
+        let t37 = get(x, "T37").as_i64();
+        c.step(Duration::from_secs(10));
+        x.advance();
+        assert_eq!(get(x, "T37").as_i64(), t37, "still frozen");
+        x.clear_breakpoints();
+        x.set_mode(Mode::Run).unwrap();
+        c.step(Duration::from_millis(1400));
+        seen.push((get(x, "T37").as_i64(), get(x, "VW0").as_i64(), get(x, "VW20").as_i64(), on(x, "Q0.0")));
+    }
+    assert_eq!(seen[0], seen[1], "the restored CPU continues exactly as the saved one");
+    assert!(!seen[0].3, "1.9 s of program time: the 2 s TON is not done");
+}
