@@ -1280,3 +1280,89 @@ fn a_debug_halt_survives_a_snapshot_with_its_frozen_time_and_breakpoints() {
     assert_eq!(seen[0], seen[1], "the restored CPU continues exactly as the saved one");
     assert!(!seen[0].3, "1.9 s of program time: the 2 s TON is not done");
 }
+
+// ---- Every position instruction in both directions, direction pin driven or freed -------
+
+/// One move of `instr` on channel 0: exec on, run `ms`, (PHOME: the home signal, PJOG:
+/// exec off), let it stop. Returns (SMD212, Q0.2, DONE, ERR, ERRID, event-28 routines run).
+fn one_move(instr: &str, backward: bool, freed: bool) -> (i64, bool, bool, bool, i64, i64) {
+    let (mut s, clock) = sim();
+    let text = format!(
+        "PROGRAM MAIN\nLD %SM0.1\nATCH PTO0_DONE, 28\nENI\nLD %SM0.0\n{instr}\nEND_PROGRAM\n\
+         INTERRUPT PTO0_DONE\nLD %SM0.0\nINC %VW200\nEND_INTERRUPT"
+    );
+    s.load_program(&text, "dir.il").unwrap();
+    let sign = if backward { -1 } else { 1 };
+    for (op, v) in [
+        ("VW100", 125),             // MINF
+        ("VD102", 1000),            // MAXF / F
+        ("VW106", 0),               // TIME (PREL, PABS)
+        ("VD130", 200 * sign),      // POS / COUNT
+        ("VW110", 1),               // PHOME MODE 1
+        ("VW112", backward as i64), // PHOME DIRC
+        ("VW114", 200),             // PHOME MINF
+        ("VW120", 100),             // PHOME TIME
+        ("VW122", 1),               // PFLO_F NUM, DENOM
+        ("VW124", backward as i64), // PJOG DIRC
+    ] {
+        set(&mut s, op, Value::Int(v));
+    }
+    set(&mut s, "SM201.3", Value::Bool(freed));
+    // A freed pin is a plain output: give it the level a driven pin would NOT have.
+    set(&mut s, "Q0.2", Value::Bool(freed && !backward));
+    clock.step(Duration::from_millis(2));
+    set(&mut s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(150));
+    let mid_pin = on(&mut s, "Q0.2");
+    if instr.starts_with("PHOME") {
+        set(&mut s, "M0.3", Value::Bool(true));
+    } else if instr.starts_with("PJOG") {
+        set(&mut s, "M0.0", Value::Bool(false));
+    }
+    clock.step(Duration::from_millis(400));
+    assert_eq!(mid_pin, on(&mut s, "Q0.2"), "{instr}: the pin keeps its level after the move");
+    (
+        get(&mut s, "SMD212/DINT").as_i64(),
+        mid_pin,
+        on(&mut s, "M0.1"),
+        on(&mut s, "M0.2"),
+        get(&mut s, "MB1").as_i64(),
+        get(&mut s, "VW200").as_i64(),
+    )
+}
+
+#[test]
+fn every_position_instruction_moves_both_ways_with_the_direction_pin_driven_or_freed() {
+    // K2 §3.4: the direction output (Q0.2 for channel 0) is "forward = 0, reverse = 1";
+    // SM201.3 = 1 disables it "and it is used as an ordinary output" (§3.4 SM table);
+    // §3.4.3.1: SMD212 increases counting forward and decreases counting backward.
+    let instrs = [
+        "PREL 0, %M0.0, %VW100, %VD102, %VW106, %VD130, %M0.1, %M0.2, %MB1",
+        "PABS 0, %M0.0, %VW100, %VD102, %VW106, %VD130, %M0.1, %M0.2, %MB1",
+        "PJOG 0, %M0.0, %VD102, %VW124, %M0.1, %M0.2, %MB1",
+        "PHOME 0, %M0.0, %M0.3, %M0.4, %VW110, %VW112, %VW114, %VD102, %VW120, %M0.1, %M0.2, %MB1",
+        "PFLO_F 0, %M0.0, %VD102, %VW122, %VW122, %VD130, %M0.1, %M0.2, %MB1",
+    ];
+    for instr in instrs {
+        let name = instr.split(' ').next().unwrap();
+        let mut events = Vec::new();
+        for freed in [false, true] {
+            for backward in [false, true] {
+                let (pos, pin, done, err, errid, ev) = one_move(instr, backward, freed);
+                let what = format!("{name} backward={backward} SM201.3={freed}");
+                assert!(done && !err && errid == 0, "{what}: DONE {done} ERR {err} ERRID {errid}");
+                assert!(pos != 0 && (pos < 0) == backward, "{what}: SMD212 = {pos}");
+                if !instr.starts_with("PHOME") && !instr.starts_with("PJOG") {
+                    assert_eq!(pos.abs(), 200, "{what}: the whole move");
+                } else if instr.starts_with("PHOME") {
+                    // Method-free homing: the position counts the pulses run toward home.
+                    assert!(pos.abs() > 100, "{what}: {pos}");
+                }
+                let want_pin = if freed { !backward } else { backward };
+                assert_eq!(pin, want_pin, "{what}: direction output (freed: left as it was)");
+                events.push(ev);
+            }
+        }
+        assert!(events.iter().all(|e| *e == events[0]), "{name}: event 28 the same either way: {events:?}");
+    }
+}
