@@ -1366,3 +1366,53 @@ fn every_position_instruction_moves_both_ways_with_the_direction_pin_driven_or_f
         assert!(events.iter().all(|e| *e == events[0]), "{name}: event 28 the same either way: {events:?}");
     }
 }
+
+// ---- Every timer kind halted at a breakpoint mid-timing ----------------------------------
+
+const TIMERS: &str = "(* Network 1 *)\nLD %I0.0\nTON T37, 20\nST %M10.0\nLD %I0.1\nTOF T38, 20\nST %M10.1\n\
+LD %I0.0\nTMR T39, 20\nST %M10.2\nLD %I0.0\nTMON T40, 20\nST %M10.3\nLD %I0.0\nTRTG T41, 20\nST %M10.4\n\
+LD %I0.0\nTP T42, 20\nST %M10.5\n(* Network 2 *)\nLD %SM0.0\nINC %VW0";
+
+/// The six timer outputs M10.0–M10.5.
+fn timer_bits(s: &mut K2Sim) -> Vec<bool> {
+    (0..6).map(|k| on(s, &format!("M10.{k}"))).collect()
+}
+
+#[test]
+fn every_timer_kind_halted_ten_seconds_mid_timing_is_credited_no_time() {
+    // docs/il.md "Debugging": a breakpoint halt freezes the program's time for TON, TOF, TMR,
+    // TMON, TRTG and TP alike (K80S DEBUG; K2 §2.1.2: 100 ms timers T20–T255). Each is 2 s.
+    // At program time 0 I0.0 rises (TON, TMR, TMON, TRTG, TP start) and I0.1 falls (TOF starts).
+    let (mut s, clock) = sim();
+    s.load_program(TIMERS, "timers.il").unwrap();
+    set(&mut s, "I0.1", Value::Bool(true));
+    clock.step(Duration::from_millis(5));
+    assert_eq!(timer_bits(&mut s), [false, true, false, false, false, false], "TOF on while its input is");
+    set(&mut s, "I0.0", Value::Bool(true));
+    set(&mut s, "I0.1", Value::Bool(false));
+    clock.step(Duration::from_millis(700));
+    s.advance();
+    s.set_breakpoint("network 2").unwrap();
+    clock.step(Duration::from_millis(2));
+    s.advance();
+    assert_eq!(s.plc().unwrap().mode, Mode::Debug);
+    let timing = [false, true, false, true, true, true];
+    assert_eq!(timer_bits(&mut s), timing, "0.7 s in: all timing");
+    let values: Vec<i64> = (37..=42).map(|t| get(&mut s, &format!("T{t}")).as_i64()).collect();
+    assert!(values.iter().all(|v| (6..=7).contains(v)), "0.7 s = 7 ticks of 100 ms: {values:?}");
+    clock.step(Duration::from_secs(10));
+    s.advance();
+    let frozen: Vec<i64> = (37..=42).map(|t| get(&mut s, &format!("T{t}")).as_i64()).collect();
+    assert_eq!(frozen, values, "no timer moved during the 10 s halt");
+    assert_eq!(timer_bits(&mut s), timing);
+    s.clear_breakpoints();
+    s.set_mode(Mode::Run).unwrap();
+    clock.step(Duration::from_millis(1100));
+    assert_eq!(timer_bits(&mut s), timing, "1.8 s of program time: all still timing");
+    clock.step(Duration::from_millis(400));
+    assert_eq!(
+        timer_bits(&mut s),
+        [true, false, true, false, false, false],
+        "2.2 s of program time: on-delays done, off-delay and pulses over"
+    );
+}
