@@ -1416,3 +1416,62 @@ fn every_timer_kind_halted_ten_seconds_mid_timing_is_credited_no_time() {
         "2.2 s of program time: on-delays done, off-delay and pulses over"
     );
 }
+
+// ---- PTO / PWM edge values (K2 §3.4.2) ----------------------------------------------------
+
+/// PLS 0 once with control byte `ctrl`, cycle `cycle`, width `width`, count `count`; after
+/// 20 ms returns (SM66.4 bad cycle/count, SM66.7 idle, pulses counted in SMD212… via Q0.0).
+fn pls_once(ctrl: i64, cycle: i64, width: i64, count: i64) -> (K2Sim, Clock) {
+    let (mut s, clock) = sim();
+    s.load_program(
+        "LD %M0.0\nR_TRIG\nMOVE %VB0, %SMB67\nMOVE %VW2, %SMW68\nMOVE %VW4, %SMW70\nMOVE %VD6, %SMD72\nPLS 0",
+        "pls.il",
+    )
+    .unwrap();
+    for (op, v) in [("VB0", ctrl), ("VW2", cycle), ("VW4", width), ("VD6", count)] {
+        set(&mut s, op, Value::Int(v));
+    }
+    set(&mut s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(2));
+    (s, clock)
+}
+
+#[test]
+fn a_pto_with_fewer_than_two_pulses_or_a_cycle_below_two_is_refused_with_sm66_4() {
+    // K2 §3.4.2: "the number of pulses 2 ~ 4,294,967,295. If fewer than 2, the K2 sets the
+    // error bit and inhibits the output"; SM66.4 "cycle time or pulse count invalid; both
+    // must be greater than 1".
+    // The cycle cases use the 1 ms time base (SM67.3 = 1): 2 µs is beyond the channel anyway.
+    for (ctrl, cycle, count, bad) in [
+        (0x85, 500, 0, true),
+        (0x85, 500, 1, true),
+        (0x85, 500, 2, false),
+        (0x8D, 1, 10, true),
+        (0x8D, 0, 10, true),
+        (0x8D, 2, 10, false),
+    ] {
+        let (mut s, clock) = pls_once(ctrl, cycle, 0, count);
+        clock.step(Duration::from_millis(30));
+        assert_eq!(on(&mut s, "SM66.4"), bad, "cycle {cycle} µs, count {count}: SM66.4");
+        if bad {
+            assert!(!on(&mut s, "Q0.0"), "cycle {cycle}, count {count}: no output");
+        }
+        assert!(on(&mut s, "SM66.7"), "cycle {cycle}, count {count}: idle again (or never started)");
+    }
+}
+
+#[test]
+fn a_pwm_width_above_the_cycle_is_always_on_and_zero_is_always_off() {
+    // K2 §3.4.2 PWM: "if the pulse width is greater than the cycle time, the duty cycle is
+    // 100% and the output is on continuously; if the width is 0, the duty cycle is 0% and the
+    // output is off". Control byte 16#CB: enabled, PWM, µs, update cycle and width.
+    for (width, want) in [(2000, true), (0, false)] {
+        let (mut s, clock) = pls_once(0xCB, 1000, width, 0);
+        let mut seen = Vec::new();
+        for _ in 0..20 {
+            clock.step(Duration::from_micros(137));
+            seen.push(on(&mut s, "Q0.0"));
+        }
+        assert!(seen.iter().all(|q| *q == want), "width {width} µs of a 1000 µs cycle: {seen:?}");
+    }
+}
