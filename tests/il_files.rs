@@ -71,3 +71,18 @@ fn broken_utf16_is_refused_naming_the_byte() {
     let e = both(&o);
     assert!(e.contains("odd.il") && e.contains("byte 4"), "{e}");
 }
+
+#[test]
+fn a_served_k2_runs_a_program_file_in_every_encoding() {
+    // `sim serve --program FILE` decodes the file as `sim program load` does (docs/il.md
+    // "Loading"); a Modbus client then sees what the program wrote (K2 §3.2.1: VW0 is
+    // holding register 100). The first scan runs as the program loads, before readiness.
+    let text = "// Пуск насоса\n(* Пуск *)\nLD %SM0.0 // Пуск\nMOVE 1234, %VW0\n";
+    for (enc, p) in files("serve", text) {
+        let served = serve(&["--tcp", "127.0.0.1:0", "--program", p.to_str().unwrap()]);
+        let url = format!("tcp://{}?model=K205-16DT", served.ready["tcp"].as_str().unwrap());
+        let o = run(&["--json", "--device", &url], "read VW0\n");
+        let l = json_lines(&o);
+        assert!(l[0]["ok"] == true && l[0].to_string().contains("1234"), "{enc}: {}", both(&o));
+    }
+}

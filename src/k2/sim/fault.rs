@@ -14,7 +14,7 @@
 //! | `drop` | the TCP connection closed before the reply | served, Modbus TCP |
 //! | `stuck I0.1=1` | the input image bit held at a level | in-process and served |
 //! | `noisy I0.1 freq=5kHz` | the input image bit flipping at random, freq= slots per second | in-process and served |
-//! | `power-loss for=5s` | nothing for the window (no reply, no scan, outputs off), then a restart with only what a power cut keeps: the E2PROM backup area, the retained ranges and the running clock | in-process and served |
+//! | `power-loss for=5s` | nothing for the window (no reply, no scan, outputs off), then a restart with only what a power cut keeps: the E2PROM backup area, the retained ranges and the running clock; under 20 ms a dip instead (K80S §5.2.2: the program pauses with outputs held, timers run on, no restart) | in-process and served |
 //!
 //! Request faults apply to requests that touch the range (any request without a range). In
 //! the process (`sim:MODEL`) there is no transport, so `late`, `bad-crc` and `drop` act only

@@ -10,7 +10,9 @@
 //!
 //! While the power is off the PLC answers nothing (a `no-reply` to every request, on every
 //! transport), runs no scan and drives no output. At power-up it starts as at first power-on:
-//! SM0.1 in the first scan, uptime from zero. Both moments are exact in virtual time, so a
+//! SM0.1 in the first scan, uptime from zero. A loss shorter than 20 ms is a dip, not a cut
+//! ([`POWER_DIP`], K80S §5.2.2): the program pauses with its outputs held and carries on
+//! afterwards with nothing lost and no restart. Both moments are exact in virtual time, so a
 //! client that polls through the cut and one that never polls see the same PLC afterwards.
 
 use super::K2Sim;
@@ -22,6 +24,11 @@ use crate::k2::sim::pto::PtoChannel;
 use crate::k2::sm_map::{HSC_REGS, PTO_REGS};
 use std::time::Duration;
 
+/// A power loss shorter than this is a dip, not a cut (K80S CPU chapter §5.2.2, "instantaneous
+/// power failure": under 20 ms the CPU pauses, holds its outputs, keeps its timers and timed
+/// interrupt sources running and continues; from 20 ms it restarts as at power-up).
+pub const POWER_DIP: Duration = Duration::from_millis(20);
+
 impl K2Sim {
     /// [`Self::advance_to`] when a power loss is set: up to the cut as usual, nothing while
     /// the power is off, a power-up at the window's end, then as usual again.
@@ -30,6 +37,17 @@ impl K2Sim {
         windows.sort_by_key(|w| w.1);
         for (id, off, on) in windows {
             if on <= self.last || now < off {
+                continue;
+            }
+            if on - off < POWER_DIP {
+                if self.last < off {
+                    self.advance_powered(off);
+                    self.dip(id, off, on);
+                }
+                if now < on {
+                    self.advance_powered(now);
+                    return;
+                }
                 continue;
             }
             if self.last < off {
@@ -43,6 +61,22 @@ impl K2Sim {
             self.power_on(on);
         }
         self.advance_powered(now);
+    }
+
+    /// A dip shorter than [`POWER_DIP`] from `off` to `on` (K80S §5.2.2): the program pauses
+    /// with the outputs held; memory, timers and the hardware carry on; a timed interrupt
+    /// due during the dip runs once when it ends, repeats are dropped; no restart.
+    fn dip(&mut self, id: u32, off: Duration, on: Duration) {
+        self.events.extend(vec![(off, crate::k2::instr::EventKind::Fault { id, fault: 8 })]);
+        if let Some(f) = self.faults.list.iter_mut().find(|f| f.id == id) {
+            f.hits = 1;
+        }
+        if let Some(p) = self.plc.as_mut() {
+            p.next_scan = p.next_scan.max(on);
+            for t in p.timed_next.iter_mut().flatten() {
+                *t = (*t).max(on);
+            }
+        }
     }
 
     /// The cut at `at`: outputs go dark at once (what a client reads after the power returns
@@ -145,5 +179,47 @@ mod tests {
         let e = crate::k2::sim::fault::parse("power-loss").unwrap_err();
         assert!(e.contains("for=5s"), "{e}");
         assert!(crate::k2::sim::fault::parse("power-loss for=1s on VW0").is_err());
+    }
+
+    /// K80S §5.2.2: under 20 ms the CPU pauses with outputs held, timers and timed interrupt
+    /// sources keep running (one interrupt due in the dip runs after it), no restart; from
+    /// 20 ms it restarts as at power-up (SM0.1, memory lost).
+    #[test]
+    fn a_dip_under_20_ms_pauses_and_continues_a_longer_loss_restarts() {
+        let run = |ms: u64| {
+            let clock = Clock::stepped();
+            let mut sim = crate::k2::sim::open("K205-16DT", clock.clone()).unwrap();
+            sim.load_program(
+                "PROGRAM MAIN\nLD %SM0.1\nINC %VW0\nMOVE B#50, %SMB34\nATCH TICK, 10\nENI\n\
+                 LD %SM0.0\nTON T37, 2\nST %Q0.5\nLD %SM0.0\nINC %VW2\nEND_PROGRAM\n\
+                 INTERRUPT TICK\nLD %SM0.0\nINC %VW4\nEND_INTERRUPT",
+                "dip.il",
+            )
+            .unwrap();
+            sim.mem.m[3] = 0x5A;
+            clock.step(Duration::from_millis(300));
+            let ops = sim.operands().parse("VW2").unwrap();
+            let scans = sim.read(&ops).unwrap()[0].as_i64();
+            crate::k2::sim::control::answer(&mut sim, &format!("fault power-loss after=1ms for={ms}ms"), true).unwrap();
+            clock.step(Duration::from_millis(1 + ms / 2));
+            sim.advance();
+            let held = sim.mem.q[0] & 0x20 != 0;
+            clock.step(Duration::from_millis(ms / 2 + 1));
+            let v: Vec<i64> =
+                ["VW0", "VW2", "VW4", "T37", "MB3"].iter().map(|n| read(&mut sim, n).unwrap().as_i64()).collect();
+            (v, scans, held)
+        };
+        let (v, scans, held) = run(15);
+        assert_eq!(v[0], 1, "a dip: no second first scan");
+        assert!(held, "outputs held during the dip");
+        assert!(v[1] - scans <= 3, "no scans in the dip: {} then {}", scans, v[1]);
+        assert!(v[3] >= 3, "the 100 ms timer kept running: {}", v[3]);
+        assert_eq!(v[4], 0x5A, "memory kept");
+        // 5 ms ticks: 60 in 300 ms, then one for the 15 ms dip, not three.
+        assert!((60..=62).contains(&v[2]), "one tick after the dip: {}", v[2]);
+        let (v, _, held) = run(20);
+        assert!(!held, "a 20 ms loss turns the outputs off");
+        assert_eq!(v[0], 1, "restarted: SM0.1 counted again from a cleared VW0");
+        assert_eq!(v[4], 0, "memory lost");
     }
 }

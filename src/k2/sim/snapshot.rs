@@ -220,6 +220,27 @@ pub struct ProgramState {
     /// Interrupt events waiting.
     #[serde(default)]
     pub pending: Vec<u32>,
+    /// Normal errors kept (division by zero …; the Err LED is on while any is) and how many
+    /// there were since loading (K2 §2.2.1 "normal error": the code is saved).
+    #[serde(default)]
+    pub errors: Vec<crate::engine::exec::Fault>,
+    #[serde(default)]
+    pub error_count: u64,
+    /// The serious error that stopped the CPU, if one did.
+    #[serde(default)]
+    pub faults: Vec<crate::engine::exec::Fault>,
+    /// The last STOP came from the program's STOP instruction.
+    #[serde(default)]
+    pub stopped_by_program: bool,
+    /// Where a DEBUG halt stopped (the next instruction of the user program) and the
+    /// instructions with breakpoints.
+    #[serde(default)]
+    pub halted: Option<u32>,
+    #[serde(default)]
+    pub breaks: Vec<u32>,
+    /// Interrupt-routine time still to add to the next scan.
+    #[serde(default)]
+    pub irq_ns: u64,
     pub user: Option<LoadedState>,
     /// The helper's execution state (its text is regenerated from `agent_base`).
     pub helper_cpu: Option<crate::engine::Cpu>,
@@ -243,6 +264,13 @@ impl ProgramState {
             frozen_ns: p.frozen_ns,
             paused_at_ns: p.paused_at.map(ns),
             pending: p.pending.clone(),
+            errors: p.errors.clone(),
+            error_count: p.error_count,
+            faults: p.faults.clone(),
+            stopped_by_program: p.stopped_by_program,
+            halted: p.halted,
+            breaks: p.breaks.iter().enumerate().filter(|(_, b)| **b).map(|(i, _)| i as u32).collect(),
+            irq_ns: p.irq_ns,
             user: p.user.as_ref().map(|l| LoadedState {
                 source: l.source.clone(),
                 text: l.text.clone(),
@@ -286,6 +314,25 @@ impl ProgramState {
         p.frozen_ns = self.frozen_ns;
         p.paused_at = self.paused_at_ns.map(Duration::from_nanos);
         p.pending = self.pending.clone();
+        p.errors = self.errors.clone();
+        p.error_count = self.error_count;
+        p.faults = self.faults.clone();
+        p.stopped_by_program = self.stopped_by_program;
+        p.irq_ns = self.irq_ns;
+        let code_len = p.user.as_ref().map_or(0, |l| l.prog.code.len());
+        if let Some(h) = self.halted {
+            if h as usize >= code_len {
+                return Err(format!("the snapshot's DEBUG halt is at instruction {h}, the program has {code_len}"));
+            }
+            p.halted = Some(h);
+        }
+        for &b in &self.breaks {
+            let slot = p.breaks.get_mut(b as usize).ok_or_else(|| {
+                format!("the snapshot's breakpoint is at instruction {b}, the program has {code_len}")
+            })?;
+            *slot = true;
+            p.has_breaks = true;
+        }
         Ok(p)
     }
 }

@@ -1174,3 +1174,304 @@ fn timed_interrupts_during_disi_queue_eight_and_flag_the_rest() {
     assert!((8..=10).contains(&n), "8 waited, then the ticks since ENI: {n}");
     assert!(on(&mut s, "M1.0"), "SM4.2: some were lost");
 }
+
+// ---- Snapshots keep the CPU's error list, the STOP flag, waiting events, a DEBUG halt ----
+
+/// The simulator's state through the snapshot file's JSON, restored onto a fresh simulator
+/// whose clock is set to the saved time (as `sim snapshot restore` does).
+fn through_snapshot(s: &K2Sim, clock: &Clock) -> (K2Sim, Clock) {
+    let text = serde_json::to_string(&s.snapshot_state()).unwrap();
+    let st: crate::k2::sim::snapshot::K2State = serde_json::from_str(&text).unwrap();
+    let (mut b, bclock) = sim();
+    bclock.set(clock.now());
+    b.restore_snapshot(&st).unwrap();
+    (b, bclock)
+}
+
+#[test]
+fn a_snapshot_keeps_the_normal_errors_and_the_program_stop() {
+    // K2 §2.2.1: a normal error lights Err and its code is saved; it must not vanish across
+    // `sim snapshot save/restore`. Nor may "stopped by the program's STOP" (K80S 5.4.5).
+    let (mut s, clock) = sim();
+    s.load_program("LD %SM0.0\nDIV %VW0, %VW2\nLD %I0.0\nSTOP\nLD %SM0.0\nINC %VW4", "ds.il").unwrap();
+    set(&mut s, "VW2", Value::Int(7));
+    clock.step(Duration::from_millis(5));
+    set(&mut s, "I0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(3));
+    s.advance();
+    let (errors, count) = {
+        let p = s.plc().unwrap();
+        assert!(p.stopped_by_program && p.mode == Mode::Stop);
+        assert!(!p.errors.is_empty());
+        (p.errors.clone(), p.error_count)
+    };
+    let (b, _) = through_snapshot(&s, &clock);
+    let p = b.plc().unwrap();
+    assert_eq!(p.errors, errors, "the normal-error records (Err LED) came back");
+    assert_eq!(p.error_count, count);
+    assert!(p.stopped_by_program, "the program's STOP came back");
+    assert_eq!(p.mode, Mode::Stop);
+}
+
+#[test]
+fn a_snapshot_keeps_a_serious_fault() {
+    // A bad indirect address stops the CPU with a serious error (K2 §2.2.1): restored, the CPU
+    // still says why it stopped.
+    let (mut s, clock) = sim();
+    s.load_program("LD %SM0.0\nMOVD 16#7FFFFF00, %VD0\nMOVE *%VD0, %VW10", "bad.il").unwrap();
+    clock.step(Duration::from_millis(2));
+    s.advance();
+    let faults = s.plc().unwrap().faults.clone();
+    assert!(!faults.is_empty(), "the bad pointer stopped the CPU");
+    let (b, _) = through_snapshot(&s, &clock);
+    assert_eq!(b.plc().unwrap().faults, faults);
+    assert_eq!(b.plc().unwrap().mode, Mode::Stop);
+}
+
+#[test]
+fn an_edge_waiting_during_disi_survives_a_snapshot_and_runs_once_after_eni() {
+    let (mut s, clock) = sim();
+    s.load_program(DISI, "disi.il").unwrap();
+    set(&mut s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(2));
+    edge(&mut s);
+    clock.step(Duration::from_millis(2));
+    assert_eq!(get(&mut s, "VW10"), Value::Int(0), "disabled: waits");
+    let (mut b, bclock) = through_snapshot(&s, &clock);
+    assert_eq!(b.plc().unwrap().pending.len(), 1, "the waiting event came back");
+    for (x, c) in [(&mut s, &clock), (&mut b, &bclock)] {
+        set(x, "M0.0", Value::Bool(false));
+        set(x, "M0.1", Value::Bool(true));
+        c.step(Duration::from_millis(5));
+        assert_eq!(get(x, "VW10"), Value::Int(1), "ran once after ENI");
+    }
+}
+
+#[test]
+fn a_debug_halt_survives_a_snapshot_with_its_frozen_time_and_breakpoints() {
+    // docs/il.md "Debugging": a halt freezes program time; restored, it is still halted at the
+    // same instruction, still frozen, and `sim cpu run` continues the halted scan.
+    let (mut s, clock) = sim();
+    s.load_program(FROZEN, "frozen.il").unwrap();
+    set(&mut s, "I0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(500));
+    s.advance();
+    s.set_breakpoint("12").unwrap();
+    clock.step(Duration::from_millis(2));
+    s.advance();
+    assert_eq!(s.plc().unwrap().mode, Mode::Debug);
+    let halted = s.plc().unwrap().halted;
+    assert!(halted.is_some());
+    let (mut b, bclock) = through_snapshot(&s, &clock);
+    assert_eq!(b.plc().unwrap().mode, Mode::Debug);
+    assert_eq!(b.plc().unwrap().halted, halted, "halted at the same instruction");
+    assert_eq!(b.breakpoints(), s.breakpoints(), "the breakpoints came back");
+    let mut seen = Vec::new();
+    for (x, c) in [(&mut s, &clock), (&mut b, &bclock)] {
+        let t37 = get(x, "T37").as_i64();
+        c.step(Duration::from_secs(10));
+        x.advance();
+        assert_eq!(get(x, "T37").as_i64(), t37, "still frozen");
+        x.clear_breakpoints();
+        x.set_mode(Mode::Run).unwrap();
+        c.step(Duration::from_millis(1400));
+        seen.push((get(x, "T37").as_i64(), get(x, "VW0").as_i64(), get(x, "VW20").as_i64(), on(x, "Q0.0")));
+    }
+    assert_eq!(seen[0], seen[1], "the restored CPU continues exactly as the saved one");
+    assert!(!seen[0].3, "1.9 s of program time: the 2 s TON is not done");
+}
+
+// ---- Every position instruction in both directions, direction pin driven or freed -------
+
+/// One move of `instr` on channel 0: exec on, run `ms`, (PHOME: the home signal, PJOG:
+/// exec off), let it stop. Returns (SMD212, Q0.2, DONE, ERR, ERRID, event-28 routines run).
+fn one_move(instr: &str, backward: bool, freed: bool) -> (i64, bool, bool, bool, i64, i64) {
+    let (mut s, clock) = sim();
+    let text = format!(
+        "PROGRAM MAIN\nLD %SM0.1\nATCH PTO0_DONE, 28\nENI\nLD %SM0.0\n{instr}\nEND_PROGRAM\n\
+         INTERRUPT PTO0_DONE\nLD %SM0.0\nINC %VW200\nEND_INTERRUPT"
+    );
+    s.load_program(&text, "dir.il").unwrap();
+    let sign = if backward { -1 } else { 1 };
+    for (op, v) in [
+        ("VW100", 125),             // MINF
+        ("VD102", 1000),            // MAXF / F
+        ("VW106", 0),               // TIME (PREL, PABS)
+        ("VD130", 200 * sign),      // POS / COUNT
+        ("VW110", 1),               // PHOME MODE 1
+        ("VW112", backward as i64), // PHOME DIRC
+        ("VW114", 200),             // PHOME MINF
+        ("VW120", 100),             // PHOME TIME
+        ("VW122", 1),               // PFLO_F NUM, DENOM
+        ("VW124", backward as i64), // PJOG DIRC
+    ] {
+        set(&mut s, op, Value::Int(v));
+    }
+    set(&mut s, "SM201.3", Value::Bool(freed));
+    // A freed pin is a plain output: give it the level a driven pin would NOT have.
+    set(&mut s, "Q0.2", Value::Bool(freed && !backward));
+    clock.step(Duration::from_millis(2));
+    set(&mut s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(150));
+    let mid_pin = on(&mut s, "Q0.2");
+    if instr.starts_with("PHOME") {
+        set(&mut s, "M0.3", Value::Bool(true));
+    } else if instr.starts_with("PJOG") {
+        set(&mut s, "M0.0", Value::Bool(false));
+    }
+    clock.step(Duration::from_millis(400));
+    assert_eq!(mid_pin, on(&mut s, "Q0.2"), "{instr}: the pin keeps its level after the move");
+    (
+        get(&mut s, "SMD212/DINT").as_i64(),
+        mid_pin,
+        on(&mut s, "M0.1"),
+        on(&mut s, "M0.2"),
+        get(&mut s, "MB1").as_i64(),
+        get(&mut s, "VW200").as_i64(),
+    )
+}
+
+#[test]
+fn every_position_instruction_moves_both_ways_with_the_direction_pin_driven_or_freed() {
+    // K2 §3.4: the direction output (Q0.2 for channel 0) is "forward = 0, reverse = 1";
+    // SM201.3 = 1 disables it "and it is used as an ordinary output" (§3.4 SM table);
+    // §3.4.3.1: SMD212 increases counting forward and decreases counting backward.
+    let instrs = [
+        "PREL 0, %M0.0, %VW100, %VD102, %VW106, %VD130, %M0.1, %M0.2, %MB1",
+        "PABS 0, %M0.0, %VW100, %VD102, %VW106, %VD130, %M0.1, %M0.2, %MB1",
+        "PJOG 0, %M0.0, %VD102, %VW124, %M0.1, %M0.2, %MB1",
+        "PHOME 0, %M0.0, %M0.3, %M0.4, %VW110, %VW112, %VW114, %VD102, %VW120, %M0.1, %M0.2, %MB1",
+        "PFLO_F 0, %M0.0, %VD102, %VW122, %VW122, %VD130, %M0.1, %M0.2, %MB1",
+    ];
+    for instr in instrs {
+        let name = instr.split(' ').next().unwrap();
+        let mut events = Vec::new();
+        for freed in [false, true] {
+            for backward in [false, true] {
+                let (pos, pin, done, err, errid, ev) = one_move(instr, backward, freed);
+                let what = format!("{name} backward={backward} SM201.3={freed}");
+                assert!(done && !err && errid == 0, "{what}: DONE {done} ERR {err} ERRID {errid}");
+                assert!(pos != 0 && (pos < 0) == backward, "{what}: SMD212 = {pos}");
+                if !instr.starts_with("PHOME") && !instr.starts_with("PJOG") {
+                    assert_eq!(pos.abs(), 200, "{what}: the whole move");
+                } else if instr.starts_with("PHOME") {
+                    // Method-free homing: the position counts the pulses run toward home.
+                    assert!(pos.abs() > 100, "{what}: {pos}");
+                }
+                let want_pin = if freed { !backward } else { backward };
+                assert_eq!(pin, want_pin, "{what}: direction output (freed: left as it was)");
+                events.push(ev);
+            }
+        }
+        assert!(events.iter().all(|e| *e == events[0]), "{name}: event 28 the same either way: {events:?}");
+    }
+}
+
+// ---- Every timer kind halted at a breakpoint mid-timing ----------------------------------
+
+const TIMERS: &str = "(* Network 1 *)\nLD %I0.0\nTON T37, 20\nST %M10.0\nLD %I0.1\nTOF T38, 20\nST %M10.1\n\
+LD %I0.0\nTMR T39, 20\nST %M10.2\nLD %I0.0\nTMON T40, 20\nST %M10.3\nLD %I0.0\nTRTG T41, 20\nST %M10.4\n\
+LD %I0.0\nTP T42, 20\nST %M10.5\n(* Network 2 *)\nLD %SM0.0\nINC %VW0";
+
+/// The six timer outputs M10.0–M10.5.
+fn timer_bits(s: &mut K2Sim) -> Vec<bool> {
+    (0..6).map(|k| on(s, &format!("M10.{k}"))).collect()
+}
+
+#[test]
+fn every_timer_kind_halted_ten_seconds_mid_timing_is_credited_no_time() {
+    // docs/il.md "Debugging": a breakpoint halt freezes the program's time for TON, TOF, TMR,
+    // TMON, TRTG and TP alike (K80S DEBUG; K2 §2.1.2: 100 ms timers T20–T255). Each is 2 s.
+    // At program time 0 I0.0 rises (TON, TMR, TMON, TRTG, TP start) and I0.1 falls (TOF starts).
+    let (mut s, clock) = sim();
+    s.load_program(TIMERS, "timers.il").unwrap();
+    set(&mut s, "I0.1", Value::Bool(true));
+    clock.step(Duration::from_millis(5));
+    assert_eq!(timer_bits(&mut s), [false, true, false, false, false, false], "TOF on while its input is");
+    set(&mut s, "I0.0", Value::Bool(true));
+    set(&mut s, "I0.1", Value::Bool(false));
+    clock.step(Duration::from_millis(700));
+    s.advance();
+    s.set_breakpoint("network 2").unwrap();
+    clock.step(Duration::from_millis(2));
+    s.advance();
+    assert_eq!(s.plc().unwrap().mode, Mode::Debug);
+    let timing = [false, true, false, true, true, true];
+    assert_eq!(timer_bits(&mut s), timing, "0.7 s in: all timing");
+    let values: Vec<i64> = (37..=42).map(|t| get(&mut s, &format!("T{t}")).as_i64()).collect();
+    assert!(values.iter().all(|v| (6..=7).contains(v)), "0.7 s = 7 ticks of 100 ms: {values:?}");
+    clock.step(Duration::from_secs(10));
+    s.advance();
+    let frozen: Vec<i64> = (37..=42).map(|t| get(&mut s, &format!("T{t}")).as_i64()).collect();
+    assert_eq!(frozen, values, "no timer moved during the 10 s halt");
+    assert_eq!(timer_bits(&mut s), timing);
+    s.clear_breakpoints();
+    s.set_mode(Mode::Run).unwrap();
+    clock.step(Duration::from_millis(1100));
+    assert_eq!(timer_bits(&mut s), timing, "1.8 s of program time: all still timing");
+    clock.step(Duration::from_millis(400));
+    assert_eq!(
+        timer_bits(&mut s),
+        [true, false, true, false, false, false],
+        "2.2 s of program time: on-delays done, off-delay and pulses over"
+    );
+}
+
+// ---- PTO / PWM edge values (K2 §3.4.2) ----------------------------------------------------
+
+/// PLS 0 once with control byte `ctrl`, cycle `cycle`, width `width`, count `count`; after
+/// 20 ms returns (SM66.4 bad cycle/count, SM66.7 idle, pulses counted in SMD212… via Q0.0).
+fn pls_once(ctrl: i64, cycle: i64, width: i64, count: i64) -> (K2Sim, Clock) {
+    let (mut s, clock) = sim();
+    s.load_program(
+        "LD %M0.0\nR_TRIG\nMOVE %VB0, %SMB67\nMOVE %VW2, %SMW68\nMOVE %VW4, %SMW70\nMOVE %VD6, %SMD72\nPLS 0",
+        "pls.il",
+    )
+    .unwrap();
+    for (op, v) in [("VB0", ctrl), ("VW2", cycle), ("VW4", width), ("VD6", count)] {
+        set(&mut s, op, Value::Int(v));
+    }
+    set(&mut s, "M0.0", Value::Bool(true));
+    clock.step(Duration::from_millis(2));
+    (s, clock)
+}
+
+#[test]
+fn a_pto_with_fewer_than_two_pulses_or_a_cycle_below_two_is_refused_with_sm66_4() {
+    // K2 §3.4.2: "the number of pulses 2 ~ 4,294,967,295. If fewer than 2, the K2 sets the
+    // error bit and inhibits the output"; SM66.4 "cycle time or pulse count invalid; both
+    // must be greater than 1".
+    // The cycle cases use the 1 ms time base (SM67.3 = 1): 2 µs is beyond the channel anyway.
+    for (ctrl, cycle, count, bad) in [
+        (0x85, 500, 0, true),
+        (0x85, 500, 1, true),
+        (0x85, 500, 2, false),
+        (0x8D, 1, 10, true),
+        (0x8D, 0, 10, true),
+        (0x8D, 2, 10, false),
+    ] {
+        let (mut s, clock) = pls_once(ctrl, cycle, 0, count);
+        clock.step(Duration::from_millis(30));
+        assert_eq!(on(&mut s, "SM66.4"), bad, "cycle {cycle} µs, count {count}: SM66.4");
+        if bad {
+            assert!(!on(&mut s, "Q0.0"), "cycle {cycle}, count {count}: no output");
+        }
+        assert!(on(&mut s, "SM66.7"), "cycle {cycle}, count {count}: idle again (or never started)");
+    }
+}
+
+#[test]
+fn a_pwm_width_above_the_cycle_is_always_on_and_zero_is_always_off() {
+    // K2 §3.4.2 PWM: "if the pulse width is greater than the cycle time, the duty cycle is
+    // 100% and the output is on continuously; if the width is 0, the duty cycle is 0% and the
+    // output is off". Control byte 16#CB: enabled, PWM, µs, update cycle and width.
+    for (width, want) in [(2000, true), (0, false)] {
+        let (mut s, clock) = pls_once(0xCB, 1000, width, 0);
+        let mut seen = Vec::new();
+        for _ in 0..20 {
+            clock.step(Duration::from_micros(137));
+            seen.push(on(&mut s, "Q0.0"));
+        }
+        assert!(seen.iter().all(|q| *q == want), "width {width} µs of a 1000 µs cycle: {seen:?}");
+    }
+}
