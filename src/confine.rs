@@ -24,18 +24,18 @@ pub struct Confinement {
 }
 
 fn canon(p: &Path) -> PathBuf {
-    p.canonicalize().unwrap_or_else(|_| p.to_path_buf())
+    crate::core::fspath::canonical(p).unwrap_or_else(|_| p.to_path_buf())
 }
 
 /// `path` with `..` and symbolic links resolved as far as the file system allows (a file that
 /// does not exist yet resolves through its folder).
 fn resolve(path: &Path) -> Option<PathBuf> {
-    if let Ok(p) = path.canonicalize() {
+    if let Ok(p) = crate::core::fspath::canonical(path) {
         return Some(p);
     }
     let name = path.file_name()?;
     let parent = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
-    Some(parent.canonicalize().ok()?.join(name))
+    Some(crate::core::fspath::canonical(parent).ok()?.join(name))
 }
 
 impl Confinement {

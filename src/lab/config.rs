@@ -113,7 +113,8 @@ impl Lab {
                 .hint("a lab is a folder with a lab.toml; `plcsh lab new NAME` writes an example")
         })?;
         let dir = file.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
-        let dir = dir.canonicalize().map_err(|e| Error::io(format!("cannot open {}", dir.display())).cause(e))?;
+        let dir = crate::core::fspath::canonical(dir)
+            .map_err(|e| Error::io(format!("cannot open {}", dir.display())).cause(e))?;
         Lab::parse(&text, &dir)
     }
 
@@ -123,7 +124,7 @@ impl Lab {
             toml::from_str(text).map_err(|e| Error::usage(format!("{}: {}", dir.join(FILE).display(), e.message())))?;
         let file = |key: &str, name: &str| -> Result<PathBuf> {
             let p = dir.join(name);
-            let real = p.canonicalize().map_err(|e| {
+            let real = crate::core::fspath::canonical(&p).map_err(|e| {
                 Error::usage(format!("{FILE}: {key} = \"{name}\": no such file in {}", dir.display())).cause(e)
             })?;
             if !real.starts_with(dir) {
@@ -192,7 +193,7 @@ mod tests {
         for (n, t) in files {
             std::fs::write(d.join(n), t).unwrap();
         }
-        d.canonicalize().unwrap()
+        crate::core::fspath::canonical(&d).unwrap()
     }
 
     #[test]

@@ -247,7 +247,7 @@ fn run(lab: &Lab, file: &str, kind: &str) -> crate::core::Result<Report> {
         "failed".into()
     };
     // The write directory's name changes from run to run: reports name it by its role.
-    let wd = write.0.canonicalize().unwrap_or_else(|_| write.0.clone()).display().to_string();
+    let wd = crate::core::fspath::canonical(&write.0).unwrap_or_else(|_| write.0.clone()).display().to_string();
     let hide = |s: &mut Option<String>| {
         if let Some(t) = s {
             *t = t.replace(&wd, "the write directory");

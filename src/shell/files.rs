@@ -17,10 +17,10 @@ pub fn check_write(rule: &WriteRule, path: &str) -> Result<()> {
         return Err(Error::unsupported(format!("writing {path} is not allowed in a sandboxed run"))
             .hint("give the run a directory for its files: plcsh run --sandbox --write-dir DIR"));
     };
-    let dir = dir.canonicalize().unwrap_or_else(|_| dir.clone());
+    let dir = crate::core::fspath::canonical(dir).unwrap_or_else(|_| dir.clone());
     let p = Path::new(path);
     let parent = p.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
-    let resolved = parent.canonicalize().ok().map(|d| d.join(p.file_name().unwrap_or_default()));
+    let resolved = crate::core::fspath::canonical(parent).ok().map(|d| d.join(p.file_name().unwrap_or_default()));
     match resolved {
         Some(r) if r.starts_with(&dir) && p.file_name().is_some() => Ok(()),
         _ => Err(Error::unsupported(format!("writing {path} is outside {}", dir.display()))
