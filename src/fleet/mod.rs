@@ -73,7 +73,10 @@ pub fn expand(pattern: &str) -> std::result::Result<Vec<(u64, String)>, String> 
         return Err(format!("the range {{{inner}}} runs backwards"));
     }
     if b - a >= MAX_MEMBERS as u64 {
-        return Err(format!("the range {{{inner}}} names {} devices; a fleet has at most {MAX_MEMBERS}", b - a + 1));
+        return Err(format!(
+            "the range {{{inner}}} names {} devices; a fleet has at most {MAX_MEMBERS}",
+            (b - a).saturating_add(1)
+        ));
     }
     let (head, tail) = (&pattern[..open], &pattern[close + 1..]);
     Ok((a..=b).map(|v| (v, format!("{head}{v}{tail}"))).collect())
@@ -185,6 +188,7 @@ mod tests {
             ("tcp://10.0.0.{a..3}", "not a number"),
             ("tcp://10.0.0.{1-3}", "not a range"),
             ("tcp://h:{1..65535}", "at most"),
+            ("t:{0..18446744073709551615}", "at most"),
             ("tcp://h:}{1..2}", "only one"),
         ] {
             let e = expand(p).unwrap_err();
