@@ -248,9 +248,11 @@ fn run(lab: &Lab, file: &str, kind: &str) -> crate::core::Result<Report> {
     };
     // The write directory's name changes from run to run: reports name it by its role.
     let wd = crate::core::fspath::canonical(&write.0).unwrap_or_else(|_| write.0.clone()).display().to_string();
+    // `got` holds values as JSON text, where a Windows path's `\` is written `\\`.
+    let wd_json = wd.replace('\\', "\\\\");
     let hide = |s: &mut Option<String>| {
         if let Some(t) = s {
-            *t = t.replace(&wd, "the write directory");
+            *t = t.replace(&wd, "the write directory").replace(&wd_json, "the write directory");
         }
     };
     for c in &mut criteria {
