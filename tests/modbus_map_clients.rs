@@ -17,27 +17,10 @@
 
 mod common;
 
-use common::serve;
+use common::{pymodbus, serve};
 use serde_json::{json, Value};
 use std::io::{BufRead, BufReader, Write};
 use std::process::{Child, ChildStdin, ChildStdout, Stdio};
-
-fn pymodbus() -> Option<&'static str> {
-    let ok = |p: &str| {
-        std::process::Command::new(p)
-            .args(["-c", "import pymodbus.client"])
-            .stdout(Stdio::null())
-            .stderr(Stdio::null())
-            .status()
-            .is_ok_and(|s| s.success())
-    };
-    let found = ["/usr/bin/python3", "python3"].into_iter().find(|p| ok(p));
-    if found.is_none() {
-        assert!(std::env::var_os("CI").is_none(), "CI must install python3-pymodbus");
-        eprintln!("skipped: no python3 with pymodbus");
-    }
-    found
-}
 
 /// (model, I bytes, Q bytes, M bytes, V bytes, AI bytes, AQ bytes): K2 manual §2.1.2.
 const MODELS: &[(&str, u32, u32, u32, u32, u32, u32)] = &[

@@ -10,29 +10,12 @@
 
 mod common;
 
-use common::{json_lines, run, serve, stdout};
+use common::{json_lines, pymodbus, run, serve, stdout};
 use serde_json::Value;
 use std::io::{BufRead, BufReader};
 use std::process::{Child, Stdio};
 use std::sync::mpsc::{channel, Receiver};
 use std::time::{Duration, Instant};
-
-fn pymodbus() -> Option<&'static str> {
-    let ok = |p: &str| {
-        std::process::Command::new(p)
-            .args(["-c", "import pymodbus.client"])
-            .stdout(Stdio::null())
-            .stderr(Stdio::null())
-            .status()
-            .is_ok_and(|s| s.success())
-    };
-    let found = ["/usr/bin/python3", "python3"].into_iter().find(|p| ok(p));
-    if found.is_none() {
-        assert!(std::env::var_os("CI").is_none(), "CI must install python3-pymodbus");
-        eprintln!("skipped: no python3 with pymodbus");
-    }
-    found
-}
 
 fn tmp(name: &str) -> std::path::PathBuf {
     let d = std::env::temp_dir().join(format!("plcsh-sim-control-{}-{name}", std::process::id()));

@@ -97,3 +97,22 @@ pub fn open_device(url: &str) -> Box<dyn plcsh::core::Device> {
 pub fn operands(d: &dyn plcsh::core::Device, names: &[&str]) -> Vec<plcsh::core::Operand> {
     names.iter().flat_map(|n| d.operands().parse(n).unwrap()).collect()
 }
+
+/// A python3 that has pymodbus (Debian's python3-pymodbus, installed by .ci/run), for the
+/// tests that check the simulator with another client; `None` skips the test, except under CI.
+pub fn pymodbus() -> Option<&'static str> {
+    let ok = |p: &str| {
+        Command::new(p)
+            .args(["-c", "import pymodbus.client"])
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .status()
+            .is_ok_and(|s| s.success())
+    };
+    let found = ["/usr/bin/python3", "python3"].into_iter().find(|p| ok(p));
+    if found.is_none() {
+        assert!(std::env::var_os("CI").is_none(), "CI must install python3-pymodbus");
+        eprintln!("skipped: no python3 with pymodbus");
+    }
+    found
+}

@@ -61,22 +61,12 @@ pub fn status(s: &K2Sim, name: &str) -> Outcome {
             last.at_ns as f64 / 1e9
         ));
     }
-    let errors: Vec<serde_json::Value> = p
-        .errors
-        .iter()
-        .map(|f| {
-            serde_json::json!({"code": f.kind.code(), "kind": f.kind.name(), "message": f.message,
+    let record = |f: &crate::engine::Fault| {
+        serde_json::json!({"code": f.kind.code(), "kind": f.kind.name(), "message": f.message,
             "line": f.line, "instruction": f.instruction, "at_s": f.at_ns as f64 / 1e9})
-        })
-        .collect();
-    let faults: Vec<serde_json::Value> = p
-        .faults
-        .iter()
-        .map(|f| {
-            serde_json::json!({"code": f.kind.code(), "kind": f.kind.name(), "message": f.message,
-            "line": f.line, "instruction": f.instruction, "at_s": f.at_ns as f64 / 1e9})
-        })
-        .collect();
+    };
+    let errors: Vec<serde_json::Value> = p.errors.iter().map(record).collect();
+    let faults: Vec<serde_json::Value> = p.faults.iter().map(record).collect();
     Outcome::new("sim")
         .text(lines.join("\n"))
         .with("mode", p.mode.name())
