@@ -803,3 +803,22 @@ fn programming_a_binary_into_the_simulator_says_it_is_stored_not_executed() {
     let _ = child.wait();
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A failing flash page outside the model's program memory stops the server before it is
+/// ready, naming the model's pages (Table 1 row 10), instead of serving a fault no write meets.
+#[test]
+fn a_flash_fail_page_past_the_program_memory_is_refused_before_serving() {
+    let dir = std::env::temp_dir().join(format!("plcsh-umpk-{}-flashpage", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let link = dir.join("ttyUMPK");
+    for (model, page, pages) in [("UMPK8", "32", "pages 0–31"), ("UMPK16", "48", "pages 0–47")] {
+        let o = plcsh()
+            .args(["sim", "serve", "--umpk-pty", link.to_str().unwrap(), "--umpk-model", model])
+            .args(["--umpk-flash-fail", page])
+            .output()
+            .unwrap();
+        assert_eq!(o.status.code(), Some(2), "{model}: {}", both(&o));
+        assert!(stderr(&o).contains(pages) && stderr(&o).contains(model), "{model}: {}", both(&o));
+        assert!(!link.exists(), "nothing is served");
+    }
+}

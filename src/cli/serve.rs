@@ -144,7 +144,8 @@ pub struct ServeArgs {
     /// Bit numbers of W,H,R,E,P,T in the UMPK's status word.
     #[arg(long = "umpk-status-bits", value_name = "W,H,R,E,P,T", default_value = "5,4,3,2,1,0", value_parser = crate::umpk::codec::StatusLayout::parse)]
     pub umpk_status_bits: crate::umpk::codec::StatusLayout,
-    /// Make the simulated UMPK's flash write fail on this 64-byte page (programming gets `W`).
+    /// Make the simulated UMPK's flash write fail on this 64-byte page (programming gets `W`):
+    /// 0–31 on the UMPK8, 0–47 on the UMPK16.
     #[arg(long = "umpk-flash-fail", value_name = "PAGE")]
     pub umpk_flash_fail: Option<u16>,
     /// Where the simulated UMPK keeps its flash, program info and error history (default: one

@@ -754,7 +754,7 @@ mod tests {
         u.reset().unwrap();
         assert_eq!(&u.program_info().unwrap()[..4], b"LAB1");
         let sim = u.simulator().unwrap();
-        sim.lock().unwrap().flash_fail = Some(2);
+        sim.lock().unwrap().fail_flash_page(Some(2)).unwrap();
         let e = u.program(&p, None, &mut |_, _| {}).unwrap_err();
         assert!(e.message.contains("record 3 of 4") && e.message.contains("W: the flash (IAP) write failed"), "{e}");
         assert!(e.hint.as_deref().unwrap().contains("again from the start"));

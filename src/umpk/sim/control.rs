@@ -125,7 +125,7 @@ pub fn answer(u: &mut Umpk, text: &str) -> Result<(String, Json)> {
                 Some(p) => Some(p.parse::<usize>().map_err(|_| usage(format!("`{p}` is not a page number")))?),
                 None => return Err(usage("flash-fail PAGE|off")),
             };
-            u.flash_fail = page;
+            u.fail_flash_page(page)?;
             let text = match page {
                 Some(p) => format!("flash writes to page {p} (16#{:04X}) will fail with W", p * 64),
                 None => "flash writes succeed".into(),

@@ -135,8 +135,9 @@ pub struct Umpk {
     /// Inputs set by hand (`umpk sim input I3=1`).
     pub forced_inputs: u32,
     pub waves: Vec<Wave>,
-    /// Flash page whose write fails (`W`), for tests and labs.
-    pub flash_fail: Option<usize>,
+    /// Flash page whose write fails (`W`), for tests and labs; set through
+    /// [`Umpk::fail_flash_page`], which keeps it inside the program memory.
+    flash_fail: Option<usize>,
     /// Injected faults: a silent line, stuck inputs ([`control`]).
     pub faults: crate::core::sim_faults::Faults,
     /// Where the flash, program info and error history are kept ([`state`]).
@@ -160,6 +161,25 @@ pub struct Umpk {
 }
 
 impl Umpk {
+    /// Makes flash writes to one 64-byte page fail with `W` (§4.2), or none. A page past the
+    /// model's program memory (Table 1 row 10) is refused naming the range, rather than kept
+    /// as a page no write can reach — or, for a page number near `usize::MAX`, an address
+    /// that overflows when shown.
+    pub fn fail_flash_page(&mut self, page: Option<usize>) -> crate::core::Result<()> {
+        let pages = self.model.program_bytes / PAGE;
+        if let Some(p) = page.filter(|&p| p >= pages) {
+            return Err(crate::core::Error::usage(format!(
+                "flash page {p} is past the {}'s program memory: pages 0–{} ({} bytes of 64-byte pages)",
+                self.model.name,
+                pages - 1,
+                self.model.program_bytes
+            ))
+            .hint(format!("give a page from 0 to {}, or `off`", pages - 1)));
+        }
+        self.flash_fail = page;
+        Ok(())
+    }
+
     /// A controller that has been on for a while: Wait mode (nothing programmed), echo on.
     /// (Its power-up `R` went out before anyone listened; a reset sends one.)
     pub fn new(model: &'static Model, clock: Clock) -> Umpk {

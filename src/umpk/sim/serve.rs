@@ -172,7 +172,7 @@ pub async fn spawn(o: Options, stop: Arc<AtomicBool>) -> Result<serde_json::Map<
         let mut tx = Some(tx);
         let setup = |u: &mut Umpk| {
             u.layout = layout;
-            u.flash_fail = o.flash_fail;
+            u.fail_flash_page(o.flash_fail)?;
             if let Some(p) = &state {
                 u.open_state(p)?;
             }

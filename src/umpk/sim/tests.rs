@@ -147,7 +147,7 @@ fn every_programming_error_letter() {
     fresh(&mut u);
     assert_eq!(s(&talk(&mut u, &Record::data(0x30, &[1; 32]).encode())), "A", "crosses a page boundary");
     fresh(&mut u);
-    u.flash_fail = Some(1);
+    u.fail_flash_page(Some(1)).unwrap();
     assert_eq!(
         program_records(&mut u, &[Record::data(0, &[1; 64]), Record::data(0x40, &[1; 64])]),
         "R W",
@@ -158,6 +158,35 @@ fn every_programming_error_letter() {
     clock.step(RESET_TIME);
     u.take_all();
     assert_eq!(u.mode(), Mode::Wait);
+}
+
+/// `flash-fail PAGE` (the control channel, `umpk sim flash-fail`, `--umpk-flash-fail`) takes
+/// the pages of the model's program memory (Table 1 row 10: 2 KB = pages 0–31 on the UMPK8,
+/// 3 KB = 0–47 on the UMPK16) and refuses the rest naming the range; a page number near
+/// `usize::MAX` overflowed its address (`p * 64`) in the fuzz campaign with overflow checks.
+#[test]
+fn a_failing_flash_page_is_one_of_the_models_pages() {
+    for (name, last) in [("UMPK8", 31), ("UMPK16", 47)] {
+        let (mut u, _) = sim(name);
+        let (text, j) = super::control::answer(&mut u, &format!("flash-fail {last}")).unwrap();
+        assert!(text.contains(&format!("page {last} (16#{:04X})", last * 64)), "{text}");
+        assert_eq!(j["flash_fail"], last);
+        for (page, want) in [
+            (format!("{}", last + 1), format!("pages 0–{last}")),
+            (usize::MAX.to_string(), format!("pages 0–{last}")),
+            ("3444444444444444444444".into(), "is not a page number".into()),
+        ] {
+            let e = super::control::answer(&mut u, &format!("flash-fail {page}")).unwrap_err();
+            assert!(e.to_string().contains(&want), "{page}: {e}");
+            let (_, j) = super::control::answer(&mut u, "inputs").unwrap();
+            assert!(j.is_object(), "the simulator still answers");
+        }
+        // A refusal keeps the page set before it.
+        assert_eq!(u.flash_fail, Some(last));
+        assert!(u.fail_flash_page(Some(last + 1)).unwrap_err().to_string().contains(name));
+        super::control::answer(&mut u, "flash-fail off").unwrap();
+        assert_eq!(u.flash_fail, None);
+    }
 }
 
 #[test]
