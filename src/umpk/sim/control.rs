@@ -127,7 +127,9 @@ pub fn answer(u: &mut Umpk, text: &str) -> Result<(String, Json)> {
             };
             u.fail_flash_page(page)?;
             let text = match page {
-                Some(p) => format!("flash writes to page {p} (16#{:04X}) will fail with W", p * 64),
+                Some(p) => {
+                    format!("flash writes to page {p} (16#{:04X}) will fail with W", p * crate::umpk::model::PAGE)
+                }
                 None => "flash writes succeed".into(),
             };
             Ok((text, json!({"flash_fail": page, "time_us": now_us})))

@@ -169,7 +169,7 @@ impl Umpk {
         let pages = self.model.program_bytes / PAGE;
         if let Some(p) = page.filter(|&p| p >= pages) {
             return Err(crate::core::Error::usage(format!(
-                "flash page {p} is past the {}'s program memory: pages 0–{} ({} bytes of 64-byte pages)",
+                "flash page {p} is past the {}'s program memory: pages 0–{} ({} bytes of {PAGE}-byte pages)",
                 self.model.name,
                 pages - 1,
                 self.model.program_bytes
