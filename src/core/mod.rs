@@ -6,6 +6,7 @@ pub mod device;
 pub mod durable;
 pub mod encoding;
 pub mod error;
+pub mod float_serde;
 pub mod fspath;
 pub mod link;
 pub mod literal;
