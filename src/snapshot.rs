@@ -64,10 +64,116 @@ fn enc(v: impl Serialize) -> Result<serde_json::Value> {
     serde_json::to_value(v).map_err(|e| Error::io("cannot encode the snapshot").cause(e))
 }
 
-fn dec<T: serde::de::DeserializeOwned>(v: &serde_json::Value, what: &str) -> Result<T> {
+/// Decodes `device`'s `section`; a value that does not fit is named by its path.
+fn dec<T: serde::de::DeserializeOwned>(v: &serde_json::Value, device: &str, section: &str) -> Result<T> {
     serde_json::from_value(v.clone()).map_err(|e| {
-        Error::usage(format!("the snapshot's {what} section is not valid")).cause(e).hint("the file may be damaged")
+        let at = failing_field::<T>(v).map(|p| format!(" at `{p}`")).unwrap_or_default();
+        Error::usage(format!("`{device}`'s {section} section in the snapshot is not valid{at}"))
+            .cause(e)
+            .hint("the file may be damaged")
     })
+}
+
+/// The path (`inputs[0].Encoder.track.dur`) of the value in `v` that decoding as `T` stops
+/// at: `v` written out one value a line, decoded again, and the keys above the line the
+/// decoder names collected by indentation.
+fn failing_field<T: serde::de::DeserializeOwned>(v: &serde_json::Value) -> Option<String> {
+    let text = serde_json::to_string_pretty(v).ok()?;
+    let e = serde_json::from_str::<T>(&text).err()?;
+    let lines: Vec<&str> = text.lines().take(e.line()).collect();
+    let (last, above) = lines.split_last()?;
+    let indent = |l: &str| l.len() - l.trim_start().len();
+    let closing = |l: &str| l.trim_start().starts_with(['}', ']']);
+    let mut parts: Vec<String> = Vec::new();
+    // Counting the array elements before the one on the path, while inside an array.
+    let mut element: Option<usize> = None;
+    let mut level = indent(last);
+    match json_key(last) {
+        Some(k) => parts.push(k),
+        None if closing(last) => level += 1,
+        None => element = Some(0),
+    }
+    for l in above.iter().rev() {
+        let i = indent(l);
+        if i == level {
+            if let Some(n) = element.as_mut().filter(|_| !closing(l)) {
+                *n += 1;
+            }
+            continue;
+        }
+        if i > level {
+            continue;
+        }
+        if let Some(n) = element.take() {
+            parts.push(format!("[{n}]"));
+        }
+        level = i;
+        match json_key(l) {
+            Some(k) => parts.push(k),
+            None => element = Some(0),
+        }
+    }
+    let mut path = String::new();
+    for p in parts.iter().rev() {
+        if !path.is_empty() && !p.starts_with('[') {
+            path.push('.');
+        }
+        path.push_str(p);
+    }
+    (!path.is_empty()).then_some(path)
+}
+
+/// The key of a pretty-printed `"key": value` line.
+fn json_key(line: &str) -> Option<String> {
+    let t = line.trim_start();
+    let body = t.strip_prefix('"')?;
+    let mut escaped = false;
+    let end = body.char_indices().find_map(|(i, c)| match (escaped, c) {
+        (false, '\\') => {
+            escaped = true;
+            None
+        }
+        (false, '"') => Some(i),
+        _ => {
+            escaped = false;
+            None
+        }
+    })?;
+    body[end + 1..].starts_with(':').then(|| serde_json::from_str(&t[..end + 2]).ok()).flatten()
+}
+
+/// The first place two JSON values differ, as a path (`""` for the top).
+fn first_difference(a: &serde_json::Value, b: &serde_json::Value) -> Option<String> {
+    use serde_json::Value as V;
+    match (a, b) {
+        (V::Object(x), V::Object(y)) => {
+            for (k, va) in x {
+                match y.get(k) {
+                    Some(vb) => {
+                        if let Some(p) = first_difference(va, vb) {
+                            return Some(if p.is_empty() || p.starts_with('[') {
+                                format!("{k}{p}")
+                            } else {
+                                format!("{k}.{p}")
+                            });
+                        }
+                    }
+                    None => return Some(k.clone()),
+                }
+            }
+            y.keys().find(|k| !x.contains_key(*k)).cloned()
+        }
+        (V::Array(x), V::Array(y)) if x.len() == y.len() => x.iter().zip(y).enumerate().find_map(|(i, (va, vb))| {
+            first_difference(va, vb).map(|p| {
+                if p.is_empty() || p.starts_with('[') {
+                    format!("[{i}]{p}")
+                } else {
+                    format!("[{i}].{p}")
+                }
+            })
+        }),
+        _ => (a != b).then(String::new),
+    }
 }
 
 /// The sections this plcsh knows, per family.
@@ -93,6 +199,58 @@ pub struct WireSnap {
     /// The declaration, as `sim wire` takes it.
     pub decl: String,
     pub state: crate::wiring::WireState,
+}
+
+/// One device's sections, decoded into the states they restore.
+#[derive(Default)]
+struct Sections {
+    k2: Option<crate::k2::sim::snapshot::K2State>,
+    wiring: Option<Vec<WireSnap>>,
+    servo: Option<Vec<crate::servo::sim::drive::Drive>>,
+    fx: Option<crate::fx::snapshot::FxState>,
+    umpk: Option<crate::umpk::sim::snapshot::UmpkState>,
+}
+
+impl Sections {
+    /// Decodes every section of `d` ([`Snapshot::check`] refused unknown ones).
+    fn decode(name: &str, d: &DeviceSnap) -> Result<Sections> {
+        let mut s = Sections::default();
+        for (section, v) in &d.sections {
+            match section.as_str() {
+                "k2" => s.k2 = Some(dec(v, name, section)?),
+                "wiring" => s.wiring = Some(dec(v, name, section)?),
+                "servo" => s.servo = Some(dec(v, name, section)?),
+                "fx" => s.fx = Some(dec(v, name, section)?),
+                "umpk" => s.umpk = Some(dec(v, name, section)?),
+                _ => {}
+            }
+        }
+        for w in s.wiring.iter().flatten() {
+            crate::wiring::parse(&w.decl).map_err(|e| e.cause(format!("a wire of `{name}` in the snapshot")))?;
+        }
+        Ok(s)
+    }
+
+    /// The sections again, as JSON.
+    fn encode(&self) -> Result<BTreeMap<String, serde_json::Value>> {
+        let mut out = BTreeMap::new();
+        if let Some(x) = &self.k2 {
+            out.insert("k2".to_string(), enc(x)?);
+        }
+        if let Some(x) = &self.wiring {
+            out.insert("wiring".to_string(), enc(x)?);
+        }
+        if let Some(x) = &self.servo {
+            out.insert("servo".to_string(), enc(x)?);
+        }
+        if let Some(x) = &self.fx {
+            out.insert("fx".to_string(), enc(x)?);
+        }
+        if let Some(x) = &self.umpk {
+            out.insert("umpk".to_string(), enc(x)?);
+        }
+        Ok(out)
+    }
 }
 
 /// The wires a simulated PLC hosts, with their state.
@@ -191,8 +349,8 @@ impl Snapshot {
         let mut wiring: Vec<(usize, String, Vec<WireSnap>)> = Vec::new();
         for (name, d) in &self.devices {
             let i = s.index(name)?;
-            if let Some(v) = d.sections.get("k2") {
-                let st: crate::k2::sim::snapshot::K2State = dec(v, "k2")?;
+            let sections = Sections::decode(name, d)?;
+            if let Some(st) = sections.k2 {
                 let sim = s.entry(i).device.as_k2().and_then(|k| k.as_sim()).expect("checked above");
                 if st.model != sim.model().name {
                     return Err(Error::usage(format!(
@@ -203,24 +361,16 @@ impl Snapshot {
                     .hint(format!("open it as {name}=sim:{}", st.model)));
                 }
                 k2.push((i, name, st));
-                let wires: Vec<WireSnap> = match d.sections.get("wiring") {
-                    Some(v) => dec(v, "wiring")?,
-                    None => Vec::new(),
-                };
-                for w in &wires {
-                    crate::wiring::parse(&w.decl).map_err(|e| e.cause("a wire in the snapshot"))?;
-                }
+                let wires = sections.wiring.unwrap_or_default();
                 // Version 1 did not save wires: its PLCs keep theirs.
                 if self.version >= 2 {
                     wiring.push((i, name.clone(), wires));
                 }
             }
-            if let Some(v) = d.sections.get("servo") {
-                let drives: Vec<crate::servo::sim::drive::Drive> = dec(v, "servo")?;
+            if let Some(drives) = sections.servo {
                 servo.push((i, drives));
             }
-            if let Some(v) = d.sections.get("fx") {
-                let st: crate::fx::snapshot::FxState = dec(v, "fx")?;
+            if let Some(st) = sections.fx {
                 let plc = fx_sim(&mut s.entry(i).device).expect("checked above");
                 let model = plc.lock().unwrap_or_else(|p| p.into_inner()).model.name;
                 if st.model != model {
@@ -232,8 +382,7 @@ impl Snapshot {
                 }
                 fx.push((i, name, st));
             }
-            if let Some(v) = d.sections.get("umpk") {
-                let st: crate::umpk::sim::snapshot::UmpkState = dec(v, "umpk")?;
+            if let Some(st) = sections.umpk {
                 let u = umpk_sim(&mut s.entry(i).device).expect("checked above");
                 let model = u.lock().unwrap_or_else(|p| p.into_inner()).model.name;
                 if st.model != model {
@@ -314,10 +463,45 @@ impl Snapshot {
         Ok(())
     }
 
-    /// Writes the snapshot to `path` (atomically: a crash leaves the old file or the new).
+    /// Writes the snapshot to `path` (atomically: a crash leaves the old file or the new),
+    /// after checking that it reads back ([`Self::encode`]): a file is never written that
+    /// could not be restored.
     pub fn save(&self, path: &Path) -> Result<()> {
-        let text = serde_json::to_string(self).map_err(|e| Error::io("cannot encode the snapshot").cause(e))?;
+        let text = self.encode()?;
         crate::core::durable::write_atomic(path, text.as_bytes())
+    }
+
+    /// The file's text, checked by reading it back as [`Self::load`] and [`Self::restore`]
+    /// will: every section must decode into the state it restores, and that state must
+    /// encode to the same JSON (nothing changed or lost on the way, non-finite numbers
+    /// included). Otherwise the save is refused, naming the device, the section and the
+    /// value.
+    pub fn encode(&self) -> Result<String> {
+        let text = serde_json::to_string(self).map_err(|e| Error::io("cannot encode the snapshot").cause(e))?;
+        let refuse = |what: String| {
+            Error::state(format!("cannot save the snapshot: {what}")).hint(
+                "nothing was written: the file would not restore. This is a fault in plcsh; \
+                 please report it with the commands that led here",
+            )
+        };
+        let back: Snapshot = serde_json::from_str(&text).map_err(|e| refuse(format!("it does not read back ({e})")))?;
+        back.check().map_err(|e| refuse(e.message.clone()))?;
+        for (name, d) in &back.devices {
+            let sections = Sections::decode(name, d).map_err(|e| {
+                let cause = e.causes.first().map(|c| format!(" ({c})")).unwrap_or_default();
+                refuse(format!("{}{cause}", e.message))
+            })?;
+            let again = sections.encode()?;
+            for (section, v) in &d.sections {
+                let Some(w) = again.get(section) else { continue };
+                if let Some(at) = first_difference(v, w) {
+                    return Err(refuse(format!(
+                        "`{name}`'s {section} section does not read back as saved: `{at}` changes"
+                    )));
+                }
+            }
+        }
+        Ok(text)
     }
 
     pub fn load(path: &Path) -> Result<Snapshot> {
@@ -339,7 +523,7 @@ impl Snapshot {
             .values()
             .find_map(|d| d.sections.get("k2"))
             .ok_or_else(|| Error::usage("the snapshot holds no simulated K2"))?;
-        let st: crate::k2::sim::snapshot::K2State = dec(v, "k2")?;
+        let st: crate::k2::sim::snapshot::K2State = dec(v, "plc", "k2")?;
         sim.clock.set(Duration::from_micros(self.clock_us));
         sim.restore_snapshot(&st).map_err(Error::usage)
     }
@@ -379,4 +563,91 @@ pub fn list() -> Vec<(String, PathBuf)> {
         .collect();
     out.sort();
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::core::Clock;
+
+    /// The wired bench (`machines/pto_servo_encoder.toml`) at rest after 10 ms: its encoder
+    /// signals are stretches that never end (duration +∞).
+    fn wired_bench() -> Session {
+        let mut s = Session::new(Clock::stepped());
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("machines/pto_servo_encoder.toml");
+        crate::wiring::bench::open(&mut s, &crate::wiring::bench::Bench::load(&path).unwrap()).unwrap();
+        s.clock.step(Duration::from_millis(10));
+        s
+    }
+
+    /// A machine at rest holds endless stretches; its snapshot encodes them, reads back and
+    /// restores onto a fresh bench, and that one saves the same text.
+    #[test]
+    fn a_wired_machine_at_rest_saves_a_file_that_restores() {
+        let mut s = wired_bench();
+        let snap = Snapshot::capture(&mut s).unwrap();
+        let text = snap.encode().unwrap();
+        assert!(text.contains(r#""dur":"inf""#), "an endless stretch is saved as a word: {text}");
+        let back: Snapshot = serde_json::from_str(&text).unwrap();
+        let mut fresh = wired_bench();
+        fresh.clock.step(Duration::from_millis(123));
+        back.restore(&mut fresh).unwrap();
+        assert_eq!(Snapshot::capture(&mut fresh).unwrap().encode().unwrap(), text);
+    }
+
+    /// A value that would not read back (here: the `null` JSON has for a NaN) refuses the
+    /// save, naming the device, the section and the value's path.
+    #[test]
+    fn a_value_that_would_not_read_back_refuses_the_save_by_name() {
+        let mut snap = Snapshot::capture(&mut wired_bench()).unwrap();
+        let k2 = snap.devices.get_mut("plc").unwrap().sections.get_mut("k2").unwrap();
+        k2["inputs"][0]["Encoder"]["track"]["x0"] = serde_json::Value::Null;
+        let e = snap.encode().unwrap_err();
+        let m = e.to_string();
+        assert!(m.contains("cannot save the snapshot"), "{m}");
+        assert!(m.contains("`plc`'s k2 section") && m.contains("at `inputs[0].Encoder.track.x0`"), "{m}");
+        assert!(m.contains("invalid type: null"), "{m}");
+        assert!(e.hint.as_deref().unwrap_or("").contains("nothing was written"), "{e:?}");
+        let file = std::env::temp_dir().join(format!("plcsh-unreadable-{}.json", std::process::id()));
+        assert!(snap.save(&file).is_err());
+        assert!(!file.exists(), "no file is written");
+        // A value that decodes but changes on the way is refused too.
+        let mut snap = Snapshot::capture(&mut wired_bench()).unwrap();
+        let servo = snap.devices.get_mut("servo").unwrap().sections.get_mut("servo").unwrap();
+        servo[0]["surplus"] = serde_json::json!(1);
+        let m = snap.encode().unwrap_err().to_string();
+        assert!(m.contains("`servo`'s servo section does not read back as saved: `[0].surplus` changes"), "{m}");
+    }
+
+    #[test]
+    fn the_failing_value_is_found_by_its_path() {
+        #[derive(Debug, serde::Deserialize)]
+        #[allow(dead_code)]
+        struct Inner {
+            x: f64,
+            tag: String,
+        }
+        #[derive(Debug, serde::Deserialize)]
+        #[allow(dead_code)]
+        struct Outer {
+            name: String,
+            list: Vec<Inner>,
+            nums: Vec<u8>,
+        }
+        let path = |v: serde_json::Value| failing_field::<Outer>(&v);
+        let ok = serde_json::json!({"name": "a", "list": [{"x": 1, "tag": "{\"k\": 1}"}], "nums": [1, 2]});
+        assert_eq!(path(ok.clone()), None);
+        let mut v = ok.clone();
+        v["list"] = serde_json::json!([{"x": 1, "tag": "p"}, {"x": 2, "tag": "q"}, {"x": null, "tag": "r"}]);
+        assert_eq!(path(v).as_deref(), Some("list[2].x"));
+        let mut v = ok.clone();
+        v["nums"] = serde_json::json!([1, 2, 3, 300]);
+        assert_eq!(path(v).as_deref(), Some("nums[3]"));
+        let mut v = ok.clone();
+        v["list"] = serde_json::json!([{"x": 1}]);
+        assert_eq!(path(v).as_deref(), Some("list[0]"), "a missing field: the object that lacks it");
+        let mut v = ok;
+        v["name"] = serde_json::json!(5);
+        assert_eq!(path(v).as_deref(), Some("name"));
+    }
 }

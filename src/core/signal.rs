@@ -13,8 +13,10 @@
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct PulseSegment {
     /// Virtual time of the first pulse's rising edge, seconds.
+    #[serde(with = "crate::core::float_serde")]
     pub start: f64,
     /// Pulses per second (> 0).
+    #[serde(with = "crate::core::float_serde")]
     pub freq: f64,
     /// Number of pulses.
     pub count: u64,

@@ -337,6 +337,7 @@ pub struct WireState {
     /// Encoder: added to the drive's position (4× counts) so the output stays where it was
     /// when the drive re-references its position (homing): an incremental encoder's
     /// outputs change only when the shaft turns.
+    #[serde(with = "crate::core::float_serde")]
     pub offset: f64,
     /// The current piece is valid until this time (ns) while the peer's plan is `plan`.
     pub until_ns: u64,

@@ -154,9 +154,14 @@ impl Train {
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Track {
     pub t0_ns: u64,
+    /// Seconds the stretch lasts; `+∞` for the last one (saved as `"inf"`).
+    #[serde(with = "crate::core::float_serde::duration")]
     pub dur: f64,
+    #[serde(with = "crate::core::float_serde")]
     pub x0: f64,
+    #[serde(with = "crate::core::float_serde")]
     pub v: f64,
+    #[serde(with = "crate::core::float_serde")]
     pub a: f64,
 }
 

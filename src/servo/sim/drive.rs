@@ -123,8 +123,10 @@ pub struct Drive {
     motion: Motion,
     task: Task,
     /// Position commanded by the last set-point (relative set-points add to it).
+    #[serde(with = "crate::core::float_serde")]
     commanded: f64,
     /// A set-point waiting for the current move to end (bit 5 low: set of set-points).
+    #[serde(with = "crate::core::float_serde::option")]
     pending: Option<f64>,
     last_cw: u16,
     setpoint_ack: bool,
@@ -139,6 +141,7 @@ pub struct Drive {
     /// What halt interrupted, resumed when bit 8 drops.
     resume: Option<Task>,
     /// The last time events were brought up to.
+    #[serde(with = "crate::core::float_serde")]
     seen: f64,
     /// Limit switches and the home switch.
     pub switches: Switches,
@@ -149,13 +152,15 @@ pub struct Drive {
     /// How many times parameters were stored (2FF0.01 = 1).
     pub saves: u32,
     /// Faults armed at a position: `(position, code)`, injected when the motion crosses it.
+    #[serde(with = "crate::core::float_serde::pairs")]
     pub faults_at: Vec<(f64, u16)>,
     /// Armed faults that acted: `(virtual time s, position, code)`.
+    #[serde(with = "crate::core::float_serde::triples")]
     pub fault_events: Vec<(f64, f64, u16)>,
     /// Plans replaced while a wire follows the drive, `(time replaced, plan)`, oldest first:
     /// a wire reading the motion later sees it as it was ([`Drive::pieces_from`]), so what
     /// it counts does not depend on when it reads.
-    #[serde(default)]
+    #[serde(default, with = "crate::core::float_serde::pairs")]
     pub history: Vec<(f64, Motion)>,
     /// How many wire hosts follow the drive: while any does, [`Self::history`] is kept.
     #[serde(default)]

@@ -11,10 +11,13 @@
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Switches {
     /// The home switch's edge: the switch is active at and above it.
+    #[serde(with = "crate::core::float_serde")]
     pub home: f64,
     /// Negative limit switch: active at and below it (`None`: not wired).
+    #[serde(with = "crate::core::float_serde::option")]
     pub neg_limit: Option<f64>,
     /// Positive limit switch: active at and above it.
+    #[serde(with = "crate::core::float_serde::option")]
     pub pos_limit: Option<f64>,
 }
 

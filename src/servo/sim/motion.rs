@@ -25,10 +25,15 @@ pub fn accel_from_dec(dec: f64) -> f64 {
 
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 struct Seg {
+    #[serde(with = "crate::core::float_serde")]
     t0: f64,
+    #[serde(with = "crate::core::float_serde::duration")]
     dur: f64,
+    #[serde(with = "crate::core::float_serde")]
     p0: f64,
+    #[serde(with = "crate::core::float_serde")]
     v0: f64,
+    #[serde(with = "crate::core::float_serde")]
     a: f64,
 }
 
@@ -47,8 +52,11 @@ impl Seg {
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Motion {
     segs: Vec<Seg>,
+    #[serde(with = "crate::core::float_serde")]
     t_end: f64,
+    #[serde(with = "crate::core::float_serde")]
     p_end: f64,
+    #[serde(with = "crate::core::float_serde")]
     v_end: f64,
 }
 
