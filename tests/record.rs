@@ -913,3 +913,47 @@ fn packets_cut_by_the_snap_length_are_noted() {
     assert!(stdout(&o).contains("FC3 reply, 2 bytes (VW0): 1234"), "the whole first reply: {}", stdout(&o));
     assert!(stdout(&o).contains("malformed"), "the cut second reply: {}", stdout(&o));
 }
+
+/// A file holding no complete block (an empty file, a pcapng section header cut short, in
+/// either byte order) is no capture: refused with exit status 2, saying so. A file whose
+/// section header is whole but whose next block is cut short is what a killed writer
+/// leaves: read up to the cut, which the warning names (pcapng draft §3.1: a block's total
+/// length counts its whole body).
+#[test]
+fn a_file_with_no_complete_block_is_refused_and_a_cut_after_the_header_is_named() {
+    let whole = capture::pcapng(1, &field_packets(false, &[0; 14], true));
+    let mut be_shb = vec![0x0A, 0x0D, 0x0D, 0x0A, 0, 0, 0, 28, 0x1A, 0x2B, 0x3C, 0x4D, 0, 1, 0, 0];
+    be_shb.extend_from_slice(&[0xFF; 8]);
+    for (name, bytes, says) in [
+        ("shb-cut-le.pcapng", whole[..20].to_vec(), "block length 28 but 20 bytes left"),
+        ("shb-cut-8.pcapng", whole[..8].to_vec(), "8 bytes left, less than a section header"),
+        ("shb-cut-be.pcapng", be_shb, "block length 28 but 24 bytes left"),
+        ("empty.pcapng", Vec::new(), "it is empty (0 bytes)"),
+    ] {
+        let (o, _) = show_json(&bytes, name);
+        let e = stderr(&o) + &stdout(&o);
+        assert_eq!(o.status.code(), Some(2), "{name}: {e}");
+        assert!(e.contains(says), "{name}: {e}");
+        assert!(
+            bytes.is_empty() || (e.contains("holds no complete block") && e.contains("section header at offset 0")),
+            "{name}: {e}"
+        );
+        let f = tmp(name);
+        let o = plcsh().args(["replay", f.to_str().unwrap()]).output().unwrap();
+        assert_eq!(o.status.code(), Some(2), "replay {name}: {}", stderr(&o));
+    }
+    // The header and the interface whole, the first packet cut: no frames, the cut named.
+    let idb_end = 28 + 20;
+    let (o, l) = show_json(&whole[..idb_end + 10], "first-epb-cut.pcapng");
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(l.is_empty(), "{l:?}");
+    let e = stderr(&o);
+    let first = u32::from_le_bytes(whole[idb_end + 4..idb_end + 8].try_into().unwrap());
+    assert!(
+        e.contains(&format!(
+            "ends early (the block at offset {idb_end} is cut short: block length {first} but 10 bytes left)"
+        )),
+        "{e}"
+    );
+    assert!(e.contains("showing the 0 frames before"), "{e}");
+}

@@ -83,8 +83,9 @@ impl Endian {
 pub fn parse(bytes: &[u8]) -> Result<Capture<'_>, String> {
     let magic = bytes.get(..4).map(|m| u32::from_le_bytes([m[0], m[1], m[2], m[3]]));
     match magic {
-        Some(SHB) => Ok(pcapng(bytes)),
+        Some(SHB) => pcapng(bytes),
         Some(0xA1B2_C3D4 | 0xD4C3_B2A1 | 0xA1B2_3C4D | 0x4D3C_B2A1) => pcap(bytes),
+        _ if bytes.is_empty() => Err("it is empty (0 bytes)".to_string()),
         _ => Err(format!(
             "it starts with {} instead of a pcapng section header (0A 0D 0D 0A) or a pcap file header",
             crate::core::trace::hex_bytes(&bytes[..bytes.len().min(4)])
@@ -153,14 +154,17 @@ fn plausible(bytes: &[u8], pos: usize, e: Endian) -> Option<(u32, usize, Endian)
     (e.u32(bytes, pos + total - 4)? as usize == total).then_some((t, total, e))
 }
 
-fn pcapng(bytes: &[u8]) -> Capture<'_> {
+fn pcapng(bytes: &[u8]) -> Result<Capture<'_>, String> {
     let mut cap = Capture { format: "pcapng", ..Default::default() };
     let mut e = Endian { big: false };
     // Section-local interface ids → (index in cap.interfaces, if_tsresol, if_tsoffset).
     let mut section: Vec<(usize, u8, i64)> = Vec::new();
     let mut pos = 0;
+    // Whole blocks taken in: a file without one is no capture (§3.1: every block ends with
+    // its total length), not an empty one.
+    let mut whole = 0usize;
     while pos < bytes.len() {
-        let why = match plausible(bytes, pos, e) {
+        let (why, cut) = match plausible(bytes, pos, e) {
             Some((t, total, be)) => {
                 let body = &bytes[pos + 8..pos + total - 4];
                 match block(&mut cap, &mut section, be, t, body, pos) {
@@ -168,16 +172,18 @@ fn pcapng(bytes: &[u8]) -> Capture<'_> {
                         if t == SHB {
                             e = be;
                         }
+                        whole += 1;
                         pos += total;
                         continue;
                     }
-                    Err(why) => why,
+                    Err(why) => (why, false),
                 }
             }
             None => header_fault(bytes, pos, e),
         };
         // Scan forward for the next block that holds together.
         let next = (pos + 1..bytes.len().saturating_sub(11)).find(|&q| plausible(bytes, q, e).is_some());
+        let state = if cut { "cut short" } else { "damaged" };
         match next {
             Some(q) => {
                 cap.damaged.push(format!(
@@ -187,30 +193,50 @@ fn pcapng(bytes: &[u8]) -> Capture<'_> {
                 ));
                 pos = q;
             }
+            None if whole == 0 => {
+                let what = if pos == 0 { "the section header" } else { "the block" };
+                return Err(format!(
+                    "it holds no complete block ({} bytes): {what} at offset {pos} is {state} ({why})",
+                    bytes.len()
+                ));
+            }
             None => {
-                cap.truncated = Some(format!("the block at offset {pos} is cut short or damaged ({why})"));
+                cap.truncated = Some(format!("the block at offset {pos} is {state}: {why}"));
                 break;
             }
         }
     }
-    cap
+    Ok(cap)
 }
 
-/// Why the block header at `pos` does not hold together.
-fn header_fault(bytes: &[u8], pos: usize, e: Endian) -> String {
+/// Why the block header at `pos` does not hold together, and whether the file ends inside
+/// it (cut short rather than damaged).
+fn header_fault(bytes: &[u8], pos: usize, e: Endian) -> (String, bool) {
     let left = bytes.len() - pos;
+    let shb = LE.u32(bytes, pos) == Some(SHB);
+    // A section header says its own byte order (§4.1: the byte-order magic after the length).
+    let e = match (shb, LE.u32(bytes, pos + 8)) {
+        (true, Some(BOM)) => LE,
+        (true, Some(0x4D3C_2B1A)) => Endian { big: true },
+        (true, Some(_)) => {
+            let magic = crate::core::trace::hex_bytes(&bytes[pos + 8..pos + 12]);
+            return (format!("its byte-order magic {magic} is neither 4D 3C 2B 1A nor 1A 2B 3C 4D"), false);
+        }
+        (true, None) => return (format!("{left} bytes left, less than a section header's first 12"), true),
+        (false, _) => e,
+    };
     let (Some(t), Some(total)) = (e.u32(bytes, pos), e.u32(bytes, pos + 4)) else {
-        return format!("{left} bytes left, less than a block header");
+        return (format!("{left} bytes left, less than a block header"), true);
     };
     let total = total as usize;
-    if !KNOWN.contains(&t) && LE.u32(bytes, pos) != Some(SHB) {
-        format!("unknown block type {t:#010X}")
+    if !KNOWN.contains(&t) && !shb {
+        (format!("unknown block type {t:#010X}"), false)
     } else if total < 12 || !total.is_multiple_of(4) {
-        format!("block length {total} is not a multiple of 4 of at least 12")
+        (format!("block length {total} is not a multiple of 4 of at least 12"), false)
     } else if total > left {
-        format!("block length {total} but {left} bytes left")
+        (format!("block length {total} but {left} bytes left"), true)
     } else {
-        "its trailing length differs from its leading length".to_string()
+        ("its trailing length differs from its leading length".to_string(), false)
     }
 }
 
@@ -455,6 +481,7 @@ mod tests {
     #[test]
     fn junk_is_refused_and_hostile_lengths_do_not_panic() {
         assert!(parse(b"hello world").unwrap_err().contains("68 65 6C 6C"));
+        assert_eq!(parse(b"").unwrap_err(), "it is empty (0 bytes)");
         let mut b = vec![0x0A, 0x0D, 0x0D, 0x0A, 28, 0, 0, 0, 0x4D, 0x3C, 0x2B, 0x1A];
         b.extend_from_slice(&[1, 0, 0, 0, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 28, 0, 0, 0]);
         for n in 0..b.len() + 8 {
@@ -463,5 +490,38 @@ mod tests {
             let _ = parse(&c);
         }
         assert!(parse(&b).unwrap().truncated.is_none());
+    }
+
+    #[test]
+    fn a_file_without_one_whole_block_is_no_capture() {
+        let f = file(2);
+        // Every cut inside the section header (28 bytes) is refused, naming the header.
+        for n in 4..28 {
+            let e = parse(&f[..n]).unwrap_err();
+            assert!(
+                e.starts_with(&format!("it holds no complete block ({n} bytes): the section header at offset 0")),
+                "{n}: {e}"
+            );
+            assert!(e.contains("cut short"), "{n}: {e}");
+        }
+        // A section header with a byte-order magic that is neither order: damaged, not cut.
+        let mut bad = f.clone();
+        bad[8..12].copy_from_slice(&[1, 2, 3, 4]);
+        let e = parse(&bad[..28]).unwrap_err();
+        assert!(e.contains("is damaged (its byte-order magic 01 02 03 04 is neither"), "{e}");
+        // Past the header every cut keeps what came before and names the cut block.
+        for n in 28..f.len() {
+            let c = parse(&f[..n]).unwrap();
+            let whole_packets = n.saturating_sub(48) / 36;
+            assert_eq!(c.packets.len(), whole_packets, "{n}");
+            let starts = [28, 48, 84, 120];
+            let at = *starts.iter().rev().find(|&&s| s <= n).unwrap();
+            if n == at {
+                assert_eq!(c.truncated, None, "{n}");
+            } else {
+                let t = c.truncated.unwrap();
+                assert!(t.starts_with(&format!("the block at offset {at} is cut short: ")), "{n}: {t}");
+            }
+        }
     }
 }
