@@ -1,5 +1,7 @@
-//! Small text helpers for messages: the "did you mean" suggestions every family's errors
-//! and the shell's unknown-command message make, and word wrapping for help text.
+//! Small text helpers for messages and typed lines: the "did you mean" suggestions every
+//! family's errors and the shell's unknown-command message make, word wrapping for help text,
+//! the shell language's quoting rules ([`Quotes`]) and the K2 manual's spelling of operands
+//! ([`fold_manual_spelling`]).
 
 /// Levenshtein distance between two strings (by characters).
 pub fn edit_distance(a: &str, b: &str) -> usize {
@@ -62,39 +64,105 @@ const LOOK_ALIKES: &[(char, char)] = &[
     ('Н', 'H'),
 ];
 
-/// Reads a line as the K2 manual spells it: Cyrillic look-alikes become Latin letters (`В` is
-/// `B` before `#` or after a letter — `В#16#85`, `VВ0` — and `V` where an area starts, as the
-/// Russian text transliterates V), and `% VW2` becomes `%VW2`. Quoted text is left alone.
-/// Returns the new line and the words that changed (`ВW0` → `VW0`), or `None` when nothing did.
+/// What one character of a typed line is, under the shell language's quoting rules
+/// (docs/commands.md, "Quoting").
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Role {
+    /// Outside quotes: separators, brackets, `#` comments and operands are read here.
+    Bare,
+    /// The quote that opens quoted text (`"` or `'`).
+    Open,
+    /// The quote that closes it.
+    Close,
+    /// A backslash that makes the next character literal inside double quotes (`\"`, `\\`).
+    Escape,
+    /// A character of quoted text, taken as it is.
+    Quoted,
+}
+
+/// The shell language's quoting, one character at a time: `"…"` and `'…'` hold spaces, `;`,
+/// `,`, `#` and brackets as text. Inside double quotes `\"` is a quote and `\\` a backslash;
+/// every other backslash is itself, so `"C:\Users\Иванов\лаб 1"` is that path. Inside single
+/// quotes every character is itself. Outside quotes a backslash is an ordinary character.
+/// One pass, constant work per character.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Quotes {
+    /// The open quote and its byte position, while inside quotes.
+    pub open: Option<(usize, char)>,
+    escaped: bool,
+}
+
+impl Quotes {
+    /// The role of character `c` at byte `at`, given the character after it; moves the state on.
+    pub fn feed(&mut self, at: usize, c: char, next: Option<char>) -> Role {
+        match self.open {
+            None if c == '"' || c == '\'' => {
+                self.open = Some((at, c));
+                Role::Open
+            }
+            None => Role::Bare,
+            Some(_) if self.escaped => {
+                self.escaped = false;
+                Role::Quoted
+            }
+            Some((_, q)) if c == q => {
+                self.open = None;
+                Role::Close
+            }
+            Some((_, '"')) if c == '\\' && matches!(next, Some('"' | '\\')) => {
+                self.escaped = true;
+                Role::Escape
+            }
+            Some(_) => Role::Quoted,
+        }
+    }
+
+    /// Every character of `s` with its byte position and role.
+    pub fn roles(s: &str) -> impl Iterator<Item = (usize, char, Role)> + '_ {
+        let mut q = Quotes::default();
+        let mut it = s.char_indices().peekable();
+        std::iter::from_fn(move || {
+            let (i, c) = it.next()?;
+            let next = it.peek().map(|p| p.1);
+            Some((i, c, q.feed(i, c, next)))
+        })
+    }
+}
+
+/// Reads operands and values as the K2 manual spells them: Cyrillic look-alikes become Latin
+/// letters (`В` is `B` before `#` or after a letter — `В#16#85`, `VВ0` — and `V` where an area
+/// starts, as the Russian text transliterates V), and `% VW2` becomes `%VW2`. Quoted text is
+/// left alone. Returns the new text and the words that changed (`ВW0` → `VW0`), or `None` when
+/// nothing did.
+///
+/// Only for operand words: the shell calls it on the words a command's grammar reads as
+/// operands and values, never on file paths, names, messages or Lua code (the command
+/// registry's `TEXT_ARGS` says which words those are), so `Проверка/светофор.il` stays as typed.
 pub fn fold_manual_spelling(line: &str) -> Option<(String, Vec<(String, String)>)> {
     if line.is_ascii() && !line.contains('%') {
         return None;
     }
-    let chars: Vec<char> = line.chars().collect();
+    let chars: Vec<(char, Role)> = Quotes::roles(line).map(|(_, c, r)| (c, r)).collect();
+    let bare = |k: usize| chars.get(k).filter(|x| x.1 == Role::Bare).map(|x| x.0);
     let mut out = String::with_capacity(line.len());
-    let mut quoted = false;
     let mut i = 0;
     while i < chars.len() {
-        let c = chars[i];
-        if c == '"' {
-            quoted = !quoted;
-        }
-        if quoted {
+        let (c, role) = chars[i];
+        if role != Role::Bare {
             out.push(c);
             i += 1;
             continue;
         }
         match c {
-            '%' if chars.get(i + 1).is_some_and(|n| n.is_whitespace()) => {
+            '%' if bare(i + 1).is_some_and(char::is_whitespace) => {
                 out.push('%');
-                while chars.get(i + 1).is_some_and(|n| n.is_whitespace()) {
+                while bare(i + 1).is_some_and(char::is_whitespace) {
                     i += 1;
                 }
             }
             'В' | 'в' => {
-                let next_hash =
-                    chars.get(i + 1).is_some_and(|n| *n == '#' || n.is_whitespace() && chars.get(i + 2) == Some(&'#'));
-                let after_letter = i > 0 && chars[i - 1].is_ascii_alphabetic();
+                let next_hash = bare(i + 1).is_some_and(|n| n == '#' || n.is_whitespace() && bare(i + 2) == Some('#'));
+                let after_letter = i > 0 && chars[i - 1].0.is_ascii_alphabetic();
                 let latin = if next_hash || after_letter { 'B' } else { 'V' };
                 out.push(if c == 'в' { latin.to_ascii_lowercase() } else { latin });
             }
@@ -130,6 +198,29 @@ mod tests {
         assert_eq!(fold_manual_spelling("get % VW2").unwrap().0, "get %VW2");
         assert!(fold_manual_spelling("get VW0").is_none());
         assert_eq!(fold_manual_spelling("connect \"ВW0\"").as_ref().map(|f| f.0.as_str()), None);
+        // Quoted text is text, whichever quotes hold it.
+        assert_eq!(fold_manual_spelling("'ВW0' ВW0").unwrap().0, "'ВW0' VW0");
+        assert_eq!(fold_manual_spelling(r#""a \" ВW0" ВW0"#).unwrap().0, r#""a \" ВW0" VW0"#);
+    }
+
+    #[test]
+    fn quotes_follow_the_documented_rules() {
+        let roles = |s: &str| Quotes::roles(s).map(|(_, _, r)| r).collect::<Vec<_>>();
+        use Role::*;
+        assert_eq!(roles(r#"a"b""#), [Bare, Open, Quoted, Close]);
+        assert_eq!(roles(r#""\"x""#), [Open, Escape, Quoted, Quoted, Close]);
+        assert_eq!(roles(r#""\\""#), [Open, Escape, Quoted, Close]);
+        // Any other backslash is itself: a Windows path inside double quotes.
+        assert_eq!(roles(r#""\U""#), [Open, Quoted, Quoted, Close]);
+        // Inside single quotes, and outside quotes, nothing escapes.
+        assert_eq!(roles(r#"'\'"#), [Open, Quoted, Close]);
+        assert_eq!(roles(r#"\'x'"#), [Bare, Open, Quoted, Close]);
+        assert_eq!(roles(r#"'"'"#), [Open, Quoted, Close]);
+        let mut q = Quotes::default();
+        for (i, c) in "'x".char_indices() {
+            q.feed(i, c, None);
+        }
+        assert_eq!(q.open, Some((0, '\'')));
     }
 
     #[test]

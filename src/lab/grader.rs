@@ -292,7 +292,7 @@ fn install_lab(lua: &Lua, lab: &Lab, file: &str, kind: &str, env: Table, budget:
         lua.create_function(move |lua, path: String| {
             let code = std::fs::read(&path).map_err(|e| mlua::Error::runtime(format!("cannot read {path}: {e}")))?;
             let f = lua
-                .load(&code[..])
+                .load(crate::script::file_chunk(&code))
                 .set_name(format!("@{path}"))
                 .set_mode(mlua::chunk::ChunkMode::Text)
                 .set_environment(env.clone())
@@ -329,9 +329,10 @@ fn install_lab(lua: &Lua, lab: &Lab, file: &str, kind: &str, env: Table, budget:
         lua.create_function(|lua, (path, device): (String, String)| {
             let plcsh: Table = lua.globals().get("plcsh")?;
             let exec: mlua::Function = plcsh.get("exec")?;
-            let use_dev = format!("use {device}");
-            exec.call::<MultiValue>(use_dev)?;
-            match exec.call::<MultiValue>(format!("sim program load {path}")) {
+            // The path as one quoted word: a lab under `C:\Users\Иванов\лаб 1` loads as it is.
+            use crate::shell::lex::quote;
+            exec.call::<MultiValue>(format!("use {}", quote(&device)))?;
+            match exec.call::<MultiValue>(format!("sim program load {}", quote(&path))) {
                 Ok(_) => Ok((true, None)),
                 Err(e) => {
                     // The program's own error names its file:line (not the grader's line).

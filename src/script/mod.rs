@@ -34,6 +34,19 @@ use std::path::Path;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 
+/// A Lua file's text as the stock `lua` reads it (`luaL_loadfilex`): without a UTF-8 byte-order
+/// mark (Notepad's old default), and with a first line that starts with `#`
+/// (`#!/usr/bin/env plcsh run`) left empty, so line numbers stay those of the file. Every
+/// place plcsh loads Lua from a file reads it through this: `plcsh run`, graders and
+/// submissions, `require`d modules (`loadfile` and `dofile` are Lua's own, which do the same).
+pub fn file_chunk(code: &[u8]) -> &[u8] {
+    let code = code.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(code);
+    if code.first() == Some(&b'#') {
+        return code.iter().position(|&b| b == b'\n').map_or(&[], |i| &code[i..]);
+    }
+    code
+}
+
 /// Lua instructions between two checks of the interrupt flag.
 pub const HOOK_EVERY: u32 = 1000;
 
@@ -199,7 +212,7 @@ impl Engine {
                 for (i, a) in args.iter().enumerate() {
                     arg.raw_set(i + 1, a.as_str())?;
                 }
-                let chunk = lua.load(&code[..]).set_name(format!("@{}", path.display()));
+                let chunk = lua.load(file_chunk(&code)).set_name(format!("@{}", path.display()));
                 let f = match env {
                     Some(env) => {
                         env.raw_set("arg", arg)?;

@@ -71,7 +71,7 @@ fn candidates(dir: &Path, name: &str) -> [PathBuf; 2] {
 /// Loads a module's text as a chunk (text only: a binary chunk can crash the interpreter).
 fn load(lua: &Lua, name: &str, code: &[u8], chunk_name: &str, from: &str) -> mlua::Result<MultiValue> {
     let f = lua
-        .load(code)
+        .load(super::file_chunk(code))
         .set_name(chunk_name)
         .set_mode(ChunkMode::Text)
         .into_function()

@@ -334,3 +334,24 @@ fn first_hour_conveniences() {
     assert!(line.ends_with(" t=1.000s homed\t{pos=0}\n"), "{line}");
     assert!(buf.text().contains(" t=1.000s homed"));
 }
+
+/// A Lua file is read as the stock `lua` reads it: a UTF-8 byte-order mark (Notepad) is
+/// skipped, a first `#` line is left empty and the line numbers stay the file's.
+#[test]
+fn a_files_byte_order_mark_and_first_hash_line_are_skipped() {
+    assert_eq!(file_chunk(b"\xEF\xBB\xBFprint(1)"), b"print(1)");
+    assert_eq!(file_chunk(b"#!/usr/bin/env plcsh run\nprint(1)"), b"\nprint(1)");
+    assert_eq!(file_chunk(b"\xEF\xBB\xBF# shebang\n\nerror('x')"), b"\n\nerror('x')");
+    assert_eq!(file_chunk(b"# only a comment"), b"");
+    assert_eq!(file_chunk(b"print(1) # not the first line"), b"print(1) # not the first line");
+    assert_eq!(file_chunk(b"\xEF\xBB"), b"\xEF\xBB", "a partial mark is text (Lua reports it)");
+    let dir = std::env::temp_dir().join(format!("plcsh-bom-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = dir.join("bom.lua");
+    std::fs::write(&p, b"\xEF\xBB\xBF#!/usr/bin/env plcsh run\nprint('ok')\nerror('line 3')\n").unwrap();
+    let (mut sh, engine, out) = setup();
+    let f = engine.run_file(&mut sh, &p, &[]).unwrap_err();
+    assert_eq!(out.text(), "ok\n");
+    assert!(f.headline().contains("bom.lua:3:"), "the error keeps the file's line: {}", f.headline());
+    let _ = std::fs::remove_dir_all(&dir);
+}

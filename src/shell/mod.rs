@@ -54,26 +54,66 @@ pub trait ScriptHook: Send {
     fn incomplete(&mut self, code: &str) -> bool;
 }
 
-/// The line without a trailing comment: `#` at the start or after a space, followed by a space
-/// or the end (`get VW0   # speed`, as a checklist writes it). `16#85`, `T#5s` and the manual's
-/// spaced `B # 16 # 85` are values.
+/// The line without a trailing comment: an unquoted `#` at the start or after a space,
+/// followed by a space or the end (`get VW0   # speed`, as a checklist writes it). `16#85`,
+/// `T#5s` and the manual's spaced `B # 16 # 85` are values; a `#` in quotes is text.
 fn strip_comment(line: &str) -> &str {
     let b = line.as_bytes();
-    let mut quoted = false;
-    for (i, &c) in b.iter().enumerate() {
-        match c {
-            b'"' => quoted = !quoted,
-            b'#' if !quoted
-                && (i == 0 || b[i - 1].is_ascii_whitespace())
-                && b.get(i + 1).is_none_or(|n| n.is_ascii_whitespace())
-                && !crate::core::literal::is_literal_head(word_before(&line[..i])) =>
-            {
+    for (i, c, role) in crate::core::text::Quotes::roles(line) {
+        if c == '#'
+            && role == crate::core::text::Role::Bare
+            && (i == 0 || b[i - 1].is_ascii_whitespace())
+            && b.get(i + 1).is_none_or(|n| n.is_ascii_whitespace())
+        {
+            let before = word_before(&line[..i]);
+            let folded = crate::core::text::fold_manual_spelling(before);
+            if !crate::core::literal::is_literal_head(folded.as_ref().map_or(before, |f| f.0.as_str())) {
                 return &line[..i];
             }
-            _ => {}
         }
     }
     line
+}
+
+/// The K2 manual's spelling ([`crate::core::text::fold_manual_spelling`]) read in the words of
+/// a command's arguments that may be operands or values — never in its text words (file
+/// paths, names, messages: [`commands::text_words`]) or quoted ones. Returns the new text
+/// and the words that changed, or `None` when nothing did (or the words cannot be split: the
+/// command then reports that as typed).
+pub(crate) fn fold_operands(cmd: &str, text: &str) -> Option<(String, Vec<(String, String)>)> {
+    if text.is_ascii() && !text.contains('%') {
+        return None;
+    }
+    let words = lex::words(text).ok()?;
+    let raw: Vec<&str> = words.iter().map(|w| w.1).collect();
+    let mask = commands::text_words(cmd, &raw);
+    let mut out = String::with_capacity(text.len());
+    let mut changed = Vec::new();
+    let (mut copied, mut k) = (0, 0);
+    while k < words.len() {
+        if mask[k] {
+            k += 1;
+            continue;
+        }
+        // A run of operand words, folded as one piece (`% VW2` is two words).
+        let mut j = k;
+        while j + 1 < words.len() && !mask[j + 1] {
+            j += 1;
+        }
+        let (start, end) = (words[k].0, words[j].0 + words[j].1.len());
+        out.push_str(&text[copied..start]);
+        match crate::core::text::fold_manual_spelling(&text[start..end]) {
+            Some((f, c)) => {
+                out.push_str(&f);
+                changed.extend(c);
+            }
+            None => out.push_str(&text[start..end]),
+        }
+        copied = end;
+        k = j + 1;
+    }
+    out.push_str(&text[copied..]);
+    (out != text).then_some((out, changed))
 }
 
 /// A usage error from a command with sub-commands whose first word is none of them: the
@@ -156,30 +196,18 @@ impl Shell {
             let r = (commands::lua::LUA.run)(self, args).map_err(|e| ("lua".to_string(), e));
             return on(self, r);
         }
-        // The K2 manual's own spelling (`В#16#85` with a Cyrillic В, `% VW2`) reads as meant.
-        let folded = crate::core::text::fold_manual_spelling(line);
-        let line = folded.as_ref().map_or(line, |(l, _)| l.as_str());
         let line = strip_comment(line);
         let parts = match lex::split_commands(line) {
             Ok(p) => p,
             Err(e) => return on(self, Err(("line".into(), e))),
         };
-        let mut first = true;
         for (offset, part) in parts {
             let lead = part.len() - part.trim_start().len();
             let cmd_text = part.trim();
             if cmd_text.is_empty() {
                 continue;
             }
-            let mut r = self.exec_one(cmd_text, offset + lead);
-            if let (Some((_, changed)), Ok(o)) = (folded.as_ref().filter(|_| first), r.as_mut()) {
-                let words: Vec<String> = changed.iter().map(|(a, b)| format!("`{a}` as `{b}`")).collect();
-                o.notes.push(format!(
-                    "read {} (the K2 manual's spelling: Cyrillic look-alike letters, `% VW2`)",
-                    words.join(", ")
-                ));
-            }
-            first = false;
+            let r = self.exec_one(cmd_text, offset + lead);
             let failed = r.is_err();
             on(self, r);
             // A stop (Ctrl-C, SIGTERM, SIGHUP) ends the whole line, whichever command saw it.
@@ -191,7 +219,11 @@ impl Shell {
 
     fn exec_one(&mut self, text: &str, offset: usize) -> CmdResult {
         let name_len = text.find(char::is_whitespace).unwrap_or(text.len());
-        let name = text[..name_len].to_ascii_lowercase();
+        // The K2 manual's own spelling (`В#16#85` with a Cyrillic В, `% VW2`) reads as meant in
+        // operands and values; paths and names stay as typed (`fold_operands`).
+        let typed = &text[..name_len];
+        let folded_name = crate::core::text::fold_manual_spelling(typed);
+        let name = folded_name.as_ref().map_or(typed, |f| f.0.as_str()).to_ascii_lowercase();
         let rest = &text[name_len..];
         let lead = rest.len() - rest.trim_start().len();
         let args = Args { text: rest.trim(), offset: offset + name_len + lead };
@@ -201,17 +233,35 @@ impl Shell {
                 .hint(commands::suggest(&name));
             return Err((name, e));
         };
-        if let Some((dev, args)) = self.device_first(spec, args) {
-            // The command acts on DEVICE as if it were the current one, for this command only.
-            let before = self.session.current_index().ok();
-            self.session.use_index(dev);
-            let r = self.run_spec(spec, args);
-            if let Some(b) = before {
-                self.session.use_index(b);
+        let mut changed: Vec<(String, String)> = folded_name.map(|f| f.1).unwrap_or_default();
+        let (dev, args) = match self.device_first(spec, args) {
+            Some((dev, args)) => (Some(dev), args),
+            None => (None, args),
+        };
+        let folded = fold_operands(spec.name, args.text);
+        let args = Args { text: folded.as_ref().map_or(args.text, |f| f.0.as_str()), offset: args.offset };
+        changed.extend(folded.as_ref().map(|f| f.1.clone()).unwrap_or_default());
+        let mut r = match dev {
+            Some(dev) => {
+                // The command acts on DEVICE as if it were the current one, for this command only.
+                let before = self.session.current_index().ok();
+                self.session.use_index(dev);
+                let r = self.run_spec(spec, args);
+                if let Some(b) = before {
+                    self.session.use_index(b);
+                }
+                r
             }
-            return r;
+            None => self.run_spec(spec, args),
+        };
+        if let (false, Ok(o)) = (changed.is_empty(), r.as_mut()) {
+            let words: Vec<String> = changed.iter().map(|(a, b)| format!("`{a}` as `{b}`")).collect();
+            o.notes.push(format!(
+                "read {} (the K2 manual's spelling: Cyrillic look-alike letters, `% VW2`)",
+                words.join(", ")
+            ));
         }
-        self.run_spec(spec, args)
+        r
     }
 
     fn run_spec(&mut self, spec: &commands::CommandSpec, args: Args) -> CmdResult {

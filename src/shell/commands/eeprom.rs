@@ -22,7 +22,9 @@ pub const EEPROM: CommandSpec = CommandSpec {
 };
 
 fn eeprom(sh: &mut Shell, args: Args) -> Result<Outcome> {
-    let parts: Vec<&str> = args.text.split_whitespace().collect();
+    // The words as text: `eeprom dump "Резерв 1/VB.bin"` (docs/commands.md, "Quoting").
+    let words = crate::shell::lex::unquoted_words(args.text).map_err(|e| e.shift(args.offset))?;
+    let parts: Vec<&str> = words.iter().map(|w| w.as_ref()).collect();
     let dev = sh.session.current_index()?;
     let name = k2cmd::name(sh, dev);
     let (first, last) = k2cmd::k2(sh, dev)?.backup_area();
@@ -32,7 +34,14 @@ fn eeprom(sh: &mut Shell, args: Args) -> Result<Outcome> {
             let end = match rest {
                 [] => last,
                 ["all"] => EEPROM_LAST_MAX,
-                _ => return Err(Error::usage("eeprom dump FILE [all]").column(args.offset)),
+                _ => {
+                    return Err(Error::usage("eeprom dump FILE [all]")
+                        .hint(format!(
+                            "a path with spaces goes in quotes: eeprom dump {}",
+                            crate::shell::lex::quote(&parts[1..].join(" "))
+                        ))
+                        .column(args.offset))
+                }
             };
             crate::shell::files::check_write(&sh.write_rule, file)?;
             let core: Vec<_> = ops(end).iter().map(|o| o.to_core()).collect();
@@ -109,6 +118,14 @@ fn eeprom(sh: &mut Shell, args: Args) -> Result<Outcome> {
             sh.session.entry(dev).device.set_option("backup_last", n).map_err(|e| e.device(&name))?;
             let (_, last) = k2cmd::k2(sh, dev)?.backup_area();
             Outcome::new("eeprom").text(format!("backup area VB{EEPROM_FIRST}…VB{last}")).with("last", last)
+        }
+        ["restore", more @ ..] if more.len() > 1 => {
+            return Err(Error::usage(format!("eeprom restore takes one file, not {} words", more.len()))
+                .hint(format!(
+                    "a path with spaces goes in quotes: eeprom restore {}",
+                    crate::shell::lex::quote(&more.join(" "))
+                ))
+                .column(args.offset))
         }
         _ => return Err(Error::usage("unknown eeprom command").column(args.offset).hint(EEPROM.usage)),
     };

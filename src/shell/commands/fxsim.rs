@@ -74,13 +74,12 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
         "program" => match arg(1) {
             None | Some((_, "status")) => None,
             Some((c, "load")) => {
-                let &(c2, path) = words
-                    .get(2)
+                let (c2, path) = lex::one_path(&args, 2, "sim program load")?
                     .ok_or_else(|| Error::usage("sim program load needs a file, e.g. scripts/fx_blink.il").column(c))?;
-                sh.session.check_read(path).map_err(|e| e.device(&name).column(c2))?;
-                let text = crate::core::encoding::read_source(path)
+                sh.session.check_read(&path).map_err(|e| e.device(&name).column(c2))?;
+                let text = crate::core::encoding::read_source(&path)
                     .map_err(|e| Error::io(format!("cannot read {path}: {e}")).device(&name).column(c2))?;
-                let loaded = crate::fx::program::Loaded::load(&text, path, m.model).map_err(|e| e.device(&name))?;
+                let loaded = crate::fx::program::Loaded::load(&text, &path, m.model).map_err(|e| e.device(&name))?;
                 let n = loaded.instructions;
                 m.load_program(loaded);
                 Some(format!("{path}: {n} instructions loaded; the PLC restarts in RUN"))

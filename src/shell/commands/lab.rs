@@ -23,7 +23,10 @@ fn lab(sh: &mut Shell, args: Args) -> Result<Outcome> {
             "`lab` is not available in a sandboxed run (it starts processes and writes folders)",
         ));
     }
-    let words: Vec<&str> = args.text.split_whitespace().collect();
+    // Folders and files as text: `lab check "Лабораторные/лаб 1"` (docs/commands.md, "Quoting").
+    let raw = crate::shell::lex::words(args.text).map_err(|e| e.shift(args.offset))?;
+    let text: Vec<_> = raw.iter().map(|w| crate::shell::lex::unquote(w.1)).collect();
+    let words: Vec<&str> = text.iter().map(|w| w.as_ref()).collect();
     let usage = LAB.usage;
     match words.as_slice() {
         ["new", name] => crate::lab::new_lab(std::path::Path::new(name)),
@@ -37,8 +40,9 @@ fn lab(sh: &mut Shell, args: Args) -> Result<Outcome> {
         ["grade", path, rest @ ..] if !rest.is_empty() => {
             let mut jobs = crate::lab::runner::default_jobs();
             let mut subs = Vec::new();
-            for w in rest {
-                match w.strip_prefix("jobs=") {
+            for (w, typed) in rest.iter().zip(&raw[2..]) {
+                // A quoted word is a file, never an option.
+                match w.strip_prefix("jobs=").filter(|_| !typed.1.starts_with(['"', '\''])) {
                     Some(n) => {
                         jobs =
                             n.parse().ok().filter(|n| *n > 0).ok_or_else(|| {

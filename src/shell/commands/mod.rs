@@ -86,6 +86,97 @@ pub static COMMANDS: &[CommandSpec] = &[
 /// the prefix of their channel (`pto press:0`), operands as theirs (`get press:VW0`).
 pub const DEVICE_FIRST: &[&str] = &["eeprom", "rtc", "events", "wait"];
 
+/// Which words of a command are text — a file path, a name, a message — and never operands.
+/// The shell reads the K2 manual's look-alike letters (`ВW0` as `VW0`,
+/// [`crate::core::text::fold_manual_spelling`]) in every other word, and never in these:
+/// `sim program load Проверка/светофор.il` loads that file. Quoted words are text wherever they
+/// are. Every usage form with a file in it (`FILE…`, `LAB`, `SUBMISSIONS…`) has its entry
+/// here (a test reads the registry's forms to keep it so).
+pub struct TextArg {
+    pub cmd: &'static str,
+    /// The sub-command words before the text (any case); a device word may come first
+    /// for the commands that read it themselves (`umpk lab program FILE.hex`).
+    pub after: &'static [&'static str],
+    pub what: Text,
+    /// The placeholder in the usage form (`FILE.il`, `to=FILE.csv`, `LAB`).
+    pub placeholder: &'static str,
+}
+
+/// Where the text is, after a [`TextArg`]'s sub-command words.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Text {
+    /// The next word.
+    Word,
+    /// Every word after them.
+    Rest,
+    /// The value of this `key=` option, anywhere after them.
+    Option(&'static str),
+}
+
+const fn text(cmd: &'static str, after: &'static [&'static str], what: Text, placeholder: &'static str) -> TextArg {
+    TextArg { cmd, after, what, placeholder }
+}
+
+/// Every command word that is text (see [`TextArg`]).
+pub static TEXT_ARGS: &[TextArg] = &[
+    text("sim", &["program", "load"], Text::Word, "FILE.il"),
+    text("sim", &["snapshot", "save"], Text::Word, "NAME"),
+    text("sim", &["snapshot", "restore"], Text::Word, "NAME"),
+    text("sim", &["break"], Text::Rest, "FILE:LINE"),
+    text("eeprom", &["dump"], Text::Word, "FILE"),
+    text("eeprom", &["restore"], Text::Word, "FILE"),
+    text("trace", &[], Text::Option("to"), "to=FILE.csv"),
+    text("plot", &[], Text::Option("to"), "to=FILE.png"),
+    text("profile", &[], Text::Option("to"), "to=FILE.png"),
+    text("umpk", &["program"], Text::Word, "FILE.hex"),
+    text("umpk", &["program"], Text::Option("info"), "info=\"…\""),
+    text("umpk", &["send"], Text::Rest, "TEXT"),
+    text("lab", &["new"], Text::Rest, "NAME"),
+    text("lab", &["check"], Text::Rest, "LAB"),
+    text("lab", &["grade"], Text::Rest, "SUBMISSIONS…"),
+    text("connect", &[], Text::Rest, "URL"),
+    text("use", &[], Text::Rest, "DEVICE"),
+    text("close", &[], Text::Rest, "NAME"),
+];
+
+/// Commands that read a device word before their sub-command themselves.
+const OWN_DEVICE_WORD: &[&str] = &["umpk", "servo", "agent"];
+
+/// For each of `words` (a command's arguments as the lexer splits them, quotes kept): true
+/// when it is text by [`TEXT_ARGS`] or quoted, false when it may be an operand or a value.
+pub fn text_words(cmd: &str, words: &[&str]) -> Vec<bool> {
+    let mut mask: Vec<bool> = words.iter().map(|w| w.contains(['"', '\''])).collect();
+    for t in TEXT_ARGS.iter().filter(|t| t.cmd == cmd) {
+        let starts: &[usize] = if OWN_DEVICE_WORD.contains(&cmd) { &[0, 1] } else { &[0] };
+        for &s in starts {
+            let n = t.after.len();
+            let matches =
+                words.len() >= s + n && t.after.iter().zip(&words[s..s + n]).all(|(a, w)| a.eq_ignore_ascii_case(w));
+            if !matches {
+                continue;
+            }
+            let from = s + n;
+            match t.what {
+                Text::Word => {
+                    if let Some(m) = mask.get_mut(from) {
+                        *m = true;
+                    }
+                }
+                Text::Rest => mask[from..].iter_mut().for_each(|m| *m = true),
+                Text::Option(key) => {
+                    for (m, w) in mask[from..].iter_mut().zip(&words[from..]) {
+                        if w.split_once('=').is_some_and(|(k, _)| k.eq_ignore_ascii_case(key)) {
+                            *m = true;
+                        }
+                    }
+                }
+            }
+            break;
+        }
+    }
+    mask
+}
+
 pub fn find(name: &str) -> Option<&'static CommandSpec> {
     COMMANDS.iter().find(|c| c.name == name || c.aliases.contains(&name))
 }
@@ -122,5 +213,83 @@ pub fn suggest(name: &str) -> String {
     match best.first() {
         Some((d, n)) if *d <= 2 => format!("did you mean `{n}`? `help` lists the commands"),
         _ => "`help` lists the commands".to_string(),
+    }
+}
+
+#[cfg(test)]
+mod text_args_tests {
+    use super::*;
+
+    /// Every form of every command, as `help` and the command card show them.
+    fn forms() -> Vec<(&'static str, String)> {
+        COMMANDS
+            .iter()
+            .flat_map(|c| {
+                if c.subcommands.is_empty() {
+                    vec![(c.name, c.usage.split("   e.g.").next().unwrap_or(c.usage).trim().to_string())]
+                } else {
+                    help::sub_forms(c).into_iter().map(|(_, f)| (c.name, f)).collect()
+                }
+            })
+            .collect()
+    }
+
+    /// A placeholder that stands for a file or folder: `FILE…`, `LAB`, `SUBMISSIONS…`, and the
+    /// NAME of `lab new NAME` and `sim snapshot save NAME` (a name or a path).
+    fn is_file(cmd: &str, token: &str) -> bool {
+        token.contains("FILE")
+            || token == "LAB"
+            || token.starts_with("SUBMISSIONS")
+            || token == "NAME" && ["lab", "sim"].contains(&cmd)
+    }
+
+    /// Every file a usage form takes is text: a line made from the form (files a Cyrillic
+    /// path, other placeholders a number) keeps the path as typed while the shell reads the
+    /// manual's spelling in the rest. A new command that takes a file and is missing from
+    /// [`TEXT_ARGS`] fails here.
+    #[test]
+    fn every_file_in_a_usage_form_is_text_never_an_operand() {
+        const PATH: &str = "Проверка/светофор";
+        let mut seen = Vec::new();
+        for (cmd, form) in forms() {
+            let (mut words, mut files) = (Vec::<String>::new(), Vec::new());
+            for token in form.split_whitespace().skip(1) {
+                let t = token.trim_matches(['[', ']']);
+                if t.contains(['(', ')']) || t == "…" || t.is_empty() {
+                    continue; // the profile's segment list
+                }
+                let alt = t.split('|').find(|a| is_file(cmd, a)).unwrap_or_else(|| t.split('|').next().unwrap_or(t));
+                if is_file(cmd, alt) {
+                    let (key, value) = alt.split_once('=').map_or(("", alt), |(k, v)| (k, v));
+                    let ext = value.split_once('.').map_or(String::new(), |(_, e)| format!(".{e}"));
+                    let eq = if key.is_empty() { "" } else { "=" };
+                    files.push(words.len());
+                    words.push(format!("{key}{eq}{PATH}{ext}"));
+                } else if alt.chars().any(|c| c.is_ascii_uppercase()) && !alt.chars().any(|c| c.is_ascii_lowercase()) {
+                    words.push("0".into());
+                } else {
+                    words.push(alt.to_string());
+                }
+            }
+            if files.is_empty() {
+                continue;
+            }
+            let text = words.join(" ");
+            assert!(crate::shell::lex::words(&text).is_ok(), "{form}: `{text}` does not split");
+            let after = crate::shell::fold_operands(cmd, &text).map_or(text.clone(), |f| f.0);
+            let after: Vec<&str> = after.split(' ').collect();
+            for &i in &files {
+                assert_eq!(after.get(i).copied(), Some(words[i].as_str()), "{form}: the file was read as an operand");
+            }
+            seen.push(form);
+        }
+        for want in ["sim program load", "eeprom dump", "eeprom restore", "trace", "plot", "profile", "umpk program"] {
+            assert!(seen.iter().any(|f| f.starts_with(want)), "no form `{want} … FILE` in the registry: {seen:?}");
+        }
+        // … and an operand next to them is still read in the manual's spelling.
+        let f = crate::shell::fold_operands("trace", "ВW0 every=10ms to=Проверка.csv").unwrap();
+        assert_eq!(f.0, "VW0 every=10ms to=Проверка.csv");
+        let f = crate::shell::fold_operands("umpk", "lab program Проверка.hex info=\"Тест\" run").unwrap_or_default();
+        assert_eq!(f.0, "", "nothing in `umpk program` is an operand");
     }
 }

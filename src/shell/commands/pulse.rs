@@ -302,7 +302,8 @@ fn profile(sh: &mut Shell, args: Args) -> Result<Outcome> {
             "force" => force = true,
             "strict" => strict = true,
             "plan" => plan_only = true,
-            _ if t.to_ascii_lowercase().starts_with("to=") => svg_to = Some(t[3..].to_string()),
+            // The file as text: `plan to="графики/профиль 1.svg"`.
+            _ if t.to_ascii_lowercase().starts_with("to=") => svg_to = Some(lex::unquote(&t[3..]).into_owned()),
             _ if t.to_ascii_lowercase().starts_with("size=") => {
                 size = Some(crate::plot::parse_size(&t[5..]).map_err(|m| Error::usage(m).column(c))?)
             }

@@ -87,7 +87,12 @@ fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
             return super::fxsim::run(sh, sub, args)
         }
         "input" | "quad" | "inputs" | "retain" => return super::siminputs::run(sh, sub, args),
-        "snapshot" | "snapshots" => return super::snapshot::run(sh, sub, it.collect(), args.offset),
+        "snapshot" | "snapshots" => {
+            // The name or path as text: `sim snapshot save "снимки/до пуска.json"`.
+            let words = crate::shell::lex::unquoted_words(args.text).map_err(|e| e.shift(args.offset))?;
+            let rest = words.iter().skip(1).map(|w| w.as_ref()).collect();
+            return super::snapshot::run(sh, sub, rest, args.offset);
+        }
         "fault" | "faults" => {
             let rest = args.text.trim_start().get(sub.len()..).unwrap_or("").trim();
             return super::fault::run(sh, sub, rest);

@@ -89,8 +89,13 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
     let words: Vec<&str> = args.text.split_whitespace().collect();
     let dev = sh.session.current_index()?;
     let name = k2cmd::name(sh, dev);
-    if let (Some(&"load"), Some(path)) = (words.get(1), words.get(2)) {
-        sh.session.check_read(path)?;
+    // The file, as text: `sim program load "Проверка 1/светофор.il"` (docs/commands.md, "Quoting").
+    let file = match (sub, words.get(1)) {
+        ("program", Some(&"load")) => crate::shell::lex::one_path(&args, 2, "sim program load")?,
+        _ => None,
+    };
+    if let Some((c, path)) = &file {
+        sh.session.check_read(path).map_err(|e| e.column(*c))?;
     }
     let s = k2cmd::sim(sh, dev, &format!("sim {sub}"))?;
     s.advance();
@@ -106,10 +111,10 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
         "program" => match words.get(1).copied() {
             None | Some("status") => Ok(status(s, &name)),
             Some("load") => {
-                let path = words.get(2).ok_or_else(|| Error::usage("sim program load needs a file, e.g. prog.il"))?;
-                let text = crate::core::encoding::read_source(path)
-                    .map_err(|e| Error::io(format!("cannot read {path}: {e}")).device(name.clone()))?;
-                let msg = s.load_program(&text, path).map_err(|e| e.device(name.clone()))?;
+                let (c, path) = file.ok_or_else(|| Error::usage("sim program load needs a file, e.g. prog.il"))?;
+                let text = crate::core::encoding::read_source(&path)
+                    .map_err(|e| Error::io(format!("cannot read {path}: {e}")).device(name.clone()).column(c))?;
+                let msg = s.load_program(&text, &path).map_err(|e| e.device(name.clone()))?;
                 Ok(status(s, &name).text(msg))
             }
             Some("costs") => {
@@ -167,7 +172,8 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
             Ok(o.with("ran", done))
         }
         "break" => {
-            let spec = words[1..].join(" ");
+            // `sim break "Проверка 1/светофор.il:5"`: the words as text.
+            let spec = crate::shell::lex::unquoted_words(args.text)?[1..].join(" ");
             let msg = match spec.as_str() {
                 "" => {
                     let b = s.breakpoints();

@@ -28,6 +28,14 @@ pub fn run(sh: &mut Shell, sub: &str, rest: Vec<&str>, offset: usize) -> Result<
     }
     let (verb, name) = match rest.as_slice() {
         [v, n] => (*v, *n),
+        [v, more @ ..] if more.len() > 1 => {
+            return Err(Error::usage(format!("`sim snapshot {v}` takes one name or file, not {} words", more.len()))
+                .hint(format!(
+                    "a path with spaces goes in quotes: sim snapshot {v} {}",
+                    crate::shell::lex::quote(&more.join(" "))
+                ))
+                .column(offset))
+        }
         _ => {
             return Err(Error::usage(format!("`sim snapshot` needs save or restore and a name: {usage}")).column(offset))
         }

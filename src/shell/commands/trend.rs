@@ -76,8 +76,10 @@ fn trace(sh: &mut Shell, args: Args) -> Result<Outcome> {
     }
     let mut o = Outcome::new("trace");
     if let Some(&(col, _, path)) = req.options.iter().find(|(_, k, _)| *k == "to") {
-        write_file(sh, path, &rec.csv(), col)?;
-        o = o.with("file", path);
+        // The file as text: `to="журнал 1.csv"` (docs/commands.md, "Quoting").
+        let path = lex::unquote(path);
+        write_file(sh, &path, &rec.csv(), col)?;
+        o = o.with("file", path.as_ref());
     }
     let rows = rec
         .labels
@@ -142,7 +144,7 @@ fn plot(sh: &mut Shell, args: Args) -> Result<Outcome> {
                 .ok_or_else(|| Error::usage(format!("{k}={v} is not a size (2…1000 characters)")).column(col))
         };
         match k {
-            "to" => to = Some((col, v)),
+            "to" => to = Some((col, lex::unquote(v))),
             "width" => width = num(v)?,
             "height" => height = num(v)?,
             "size" => size = Some(crate::plot::parse_size(v).map_err(|m| Error::usage(m).column(col))?),
@@ -159,10 +161,10 @@ fn plot(sh: &mut Shell, args: Args) -> Result<Outcome> {
     if let Some((col, path)) = to {
         let size = size.unwrap_or_else(|| crate::plot::default_size(&series));
         let title = format!("trace, every {}", crate::plot::time(rec.every.as_secs_f64()));
-        crate::shell::files::check_write(&sh.write_rule, path).map_err(|e| e.column(col))?;
-        crate::plot::write_picture(path, &series, &title, size).map_err(|e| e.column(col))?;
+        crate::shell::files::check_write(&sh.write_rule, &path).map_err(|e| e.column(col))?;
+        crate::plot::write_picture(&path, &series, &title, size).map_err(|e| e.column(col))?;
         text.push_str(&format!("wrote {path}\n"));
-        o = o.with("file", path);
+        o = o.with("file", path.as_ref());
     }
     Ok(o.text(text.trim_end().to_string()))
 }

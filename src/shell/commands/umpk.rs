@@ -185,13 +185,13 @@ pub fn sim_program(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let msg = match words.get(1).map(|w| (w.0, w.1)) {
         None | Some((_, "status")) => None,
         Some((_, "load")) => {
-            let &(c, path) = words.get(2).ok_or_else(|| {
+            let (c, path) = lex::one_path(&args, 2, "sim program load")?.ok_or_else(|| {
                 Error::usage("sim program load needs a file, e.g. sim program load scripts/umpk_lab1.il").column(col)
             })?;
-            sh.session.check_read(path).map_err(|e| e.device(&name).column(c))?;
-            let text = crate::core::encoding::read_source(path)
+            sh.session.check_read(&path).map_err(|e| e.device(&name).column(c))?;
+            let text = crate::core::encoding::read_source(&path)
                 .map_err(|e| Error::io(format!("cannot read {path}: {e}")).device(&name).column(c))?;
-            let r = crate::umpk::sim::program::IlRunner::load(&text, path, u.model).map_err(|e| e.device(&name))?;
+            let r = crate::umpk::sim::program::IlRunner::load(&text, &path, u.model).map_err(|e| e.device(&name))?;
             let n = r.instructions();
             u.load_logic(Box::new(r));
             Some(format!("{path}: {n} instructions loaded; runs every {CYCLE_MS} ms cycle in Work mode"))
@@ -279,7 +279,8 @@ fn send(d: &mut Driver, rest: &[Word], col: usize) -> Result<Outcome> {
     let Some(&(_, text)) = rest.first() else {
         return Err(Error::usage("umpk send needs a command or record, e.g. umpk send ?03FD").column(col));
     };
-    let x = d.send_raw(text)?;
+    let text = lex::unquote(text);
+    let x = d.send_raw(&text)?;
     let (shown, meaning) = match &x.reply {
         Reply::Ok => ("R".to_string(), "ok".to_string()),
         Reply::Letter(l) => ((*l as char).to_string(), letter_text(*l).to_string()),
@@ -370,13 +371,16 @@ fn program(sh: &mut Shell, dev: usize, rest: &[Word], col: usize) -> Result<Outc
     let info = match opt(&opts, "info") {
         None => None,
         Some((c, v)) => {
-            let v = v.trim_matches('"');
+            let v = lex::unquote(v);
             if v.is_empty() || v.len() > INFO_LEN || !v.bytes().all(|b| (0x20..0x7F).contains(&b)) {
                 return Err(value_err(c, format!("info=\"{v}\": 1–22 printable ASCII characters (manual §4.2.4)")));
             }
             Some(v.as_bytes().to_vec())
         }
     };
+    // The file, as text: `umpk program "Лаб 1/прошивка.hex"` (docs/commands.md, "Quoting").
+    let file = lex::unquote(file);
+    let file = file.as_ref();
     sh.session.check_read(file).map_err(|e| e.column(fc))?;
     let text =
         std::fs::read_to_string(file).map_err(|e| Error::io(format!("cannot read {file}")).cause(e).column(fc))?;
