@@ -15,6 +15,7 @@ pub mod k2;
 pub mod lab;
 pub mod output;
 pub mod paths;
+pub mod pending;
 pub mod plot;
 pub mod profile;
 pub mod publish;

@@ -234,6 +234,71 @@ impl Session {
         Ok(())
     }
 
+    /// Opens `url` under `name` as [`open`](Self::open) does, with `key=value` set at the
+    /// device's first use instead of now (`crate::pending`): the simulated PLC's state file,
+    /// so a plcsh that never uses that PLC never takes its state file.
+    pub fn open_with_option_on_first_use(&mut self, name: &str, url: &str, key: &str, value: &str) -> Result<()> {
+        self.open(name, url)?;
+        let i = self.index(name)?;
+        let mut e = self.devices.remove(i);
+        e.device = Box::new(crate::pending::Pending::option_on_first_use(e.device, key, value));
+        self.devices.insert(i, e);
+        Ok(())
+    }
+
+    /// Opens `url` under `name`; when its link cannot be made now (a PLC not powered yet, an
+    /// adapter not plugged in), the device still joins the session, not connected, and every
+    /// later command tries again (`crate::pending`). Returns that link error, for a note.
+    /// Anything else (a bad URL, a profile's error) fails as [`open`](Self::open) does.
+    pub fn open_or_later(&mut self, name: &str, url: &str) -> Result<Option<Error>> {
+        let e = match self.open(name, url) {
+            Ok(()) => return Ok(None),
+            Err(e) if e.kind == crate::core::ErrorKind::Link && url.contains(':') => e,
+            Err(e) => return Err(e),
+        };
+        let (u, clock, read_only) = (url.to_string(), self.clock.clone(), self.read_only.clone());
+        let open: crate::pending::Opener = Box::new(move || {
+            let device = open_url(&u, &clock)?;
+            Ok(Box::new(crate::guard::Guarded::new(device, None, read_only.clone())) as Box<dyn Device>)
+        });
+        let device = Box::new(crate::pending::Pending::unopened(url, open, e.clone()));
+        let entry =
+            Entry { name: name.to_string(), url: url.to_string(), device, guard: None, control: control_param(url) };
+        match self.devices.iter().position(|d| d.name == name) {
+            Some(i) => self.devices[i] = entry,
+            None => self.devices.push(entry),
+        }
+        Ok(Some(e))
+    }
+
+    /// Makes device `i` ready for a command ([`Device::ready`]): the reason it is not (its
+    /// state file held by another plcsh, its link still down) comes back named by device.
+    pub fn ready(&mut self, i: usize) -> Result<()> {
+        let e = &mut self.devices[i];
+        e.device.ready().map_err(|err| err.device(&e.name))
+    }
+
+    /// Makes ready the device each operand expression names (`press:VW0`, else the current one).
+    fn ready_for(&mut self, texts: &[&str]) -> Result<()> {
+        let mut done: Vec<usize> = Vec::new();
+        for t in texts {
+            let t = t.trim();
+            let i = match t.find(':').map(|c| self.index(&t[..c])) {
+                Some(Ok(i)) => i,
+                Some(Err(_)) => continue, // resolve names the unknown device
+                None => match self.current_index() {
+                    Ok(i) => i,
+                    Err(_) => continue,
+                },
+            };
+            if !done.contains(&i) {
+                self.ready(i)?;
+                done.push(i);
+            }
+        }
+        Ok(())
+    }
+
     /// Adds an already-open device (behind the session's write guard).
     pub fn add(&mut self, name: &str, url: &str, device: Box<dyn Device>) {
         self.add_guarded(name, url, device, None);
@@ -348,6 +413,7 @@ impl Session {
 
     /// Reads operand expressions (each may be a range) from any devices.
     pub fn get(&mut self, texts: &[&str]) -> Result<Vec<(usize, Reading)>> {
+        self.ready_for(texts)?;
         let targets: Vec<Target> = texts.iter().map(|t| self.resolve(t)).collect::<Result<_>>()?;
         let mut out = Vec::new();
         // Batch consecutive operands of one device so drivers can coalesce.
@@ -374,6 +440,8 @@ impl Session {
     /// Validates every item first (operand, value, bounds); writes nothing if any is bad.
     /// Then writes in the order given.
     pub fn set(&mut self, items: &[SetItem]) -> Result<Vec<(usize, Reading)>> {
+        let texts: Vec<&str> = items.iter().map(|it| it.operand.as_str()).collect();
+        self.ready_for(&texts)?;
         let mut plan: Vec<(usize, Operand, Value)> = Vec::new();
         for it in items {
             let target = self.resolve(&it.operand).map_err(|e| e.shift(it.column))?;

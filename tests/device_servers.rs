@@ -43,7 +43,7 @@ fn python() -> Option<&'static str> {
 fn device_server(mode: &str, serial: &str) -> Option<DeviceServer> {
     let Some(py) = python() else {
         assert!(std::env::var_os("CI").is_none(), "CI must install python3-serial (pyserial)");
-        eprintln!("skipped: no python3 with pyserial");
+        common::skipped("python3 with pyserial (apt-get install python3-serial)");
         return None;
     };
     let script = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/support/device_server.py");

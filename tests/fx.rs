@@ -920,10 +920,10 @@ fn node_fxplc() -> Option<PathBuf> {
         return Some(dir);
     }
     assert!(std::env::var_os("CI").is_none(), "CI must install node-fxplc (npm) into {}", dir.display());
-    eprintln!(
-        "skipped: node-fxplc is not installed in {} (npm install --prefix target/node-fxplc node-fxplc)",
+    common::skipped(&format!(
+        "node and node-fxplc in {} (npm install --prefix target/node-fxplc node-fxplc@0.1.6)",
         dir.display()
-    );
+    ));
     None
 }
 

@@ -27,7 +27,7 @@ fn mosquitto_present() -> bool {
     let found = Command::new(mosquitto()).arg("-h").stdout(Stdio::null()).stderr(Stdio::null()).status().is_ok();
     if !found {
         assert!(std::env::var_os("CI").is_none(), "mosquitto is required when CI is set (.ci/run installs it)");
-        eprintln!("skipped: mosquitto is not installed");
+        common::skipped("mosquitto (apt-get install mosquitto)");
     }
     found
 }
@@ -446,7 +446,7 @@ fn the_username_comes_from_the_profile_file_and_the_password_from_the_environmen
     // mosquitto_passwd hashes the password into the broker's password file.
     let made = Command::new("mosquitto_passwd").args(["-b", "-c"]).arg(&passwords).args(["plcsh", "s3cret"]).status();
     if !made.is_ok_and(|s| s.success()) {
-        eprintln!("skipped: mosquitto_passwd is not available");
+        common::skipped("mosquitto_passwd (apt-get install mosquitto)");
         return;
     }
     use std::os::unix::fs::PermissionsExt;
@@ -557,7 +557,7 @@ fn tls_with_the_ca_from_the_profile_file() {
         ],
     );
     if !made {
-        eprintln!("skipped: openssl could not make the test certificates");
+        common::skipped("openssl to make test certificates (apt-get install openssl)");
         return;
     }
     use std::os::unix::fs::PermissionsExt;

@@ -38,7 +38,7 @@ fn tshark() -> Option<&'static str> {
         Ok(s) if s.success() => Some("tshark"),
         _ if std::env::var_os("CI").is_some() => panic!("tshark is missing (.ci/run installs it)"),
         _ => {
-            eprintln!("tshark is not installed: skipping the tshark check (apt-get install tshark)");
+            common::skipped("tshark (apt-get install tshark)");
             None
         }
     }
@@ -398,7 +398,10 @@ fn a_tshark_capture_on_loopback_reads_like_a_recording() {
             if err.read_line(&mut line).unwrap() == 0 {
                 // No permission to capture (not root, dumpcap without capabilities).
                 assert!(std::env::var_os("CI").is_none(), "tshark cannot capture on {iface}: {said}");
-                eprintln!("tshark cannot capture on {iface}: skipping the live capture ({said})");
+                common::skipped(&format!(
+                    "permission for tshark to capture on {iface}: root, or dumpcap with cap_net_raw ({})",
+                    said.trim()
+                ));
                 return;
             }
             said.push_str(&line);
@@ -805,7 +808,8 @@ fn the_recording_docs_examples_run() {
         if !in_sh || cmd.is_empty() || cmd.contains(" -i ") {
             continue;
         }
-        let o = Command::new("sh").current_dir(&dir).env("PATH", &path).args(["-c", cmd]).output().unwrap();
+        let o =
+            own_world(&mut Command::new("sh")).current_dir(&dir).env("PATH", &path).args(["-c", cmd]).output().unwrap();
         assert!(o.status.success(), "{cmd}: {}{}", stdout(&o), stderr(&o));
         assert!(!stdout(&o).trim().is_empty(), "{cmd} printed nothing");
         assert!(!stdout(&o).contains("Lua Error"), "{cmd}: {}", stdout(&o));

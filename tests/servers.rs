@@ -211,7 +211,7 @@ fn eleven_hundred_connections_against_a_1024_descriptor_limit_do_not_end_the_ser
         libc::getrlimit(libc::RLIMIT_NOFILE, &mut lim);
     }
     if lim.rlim_max < 2048 {
-        eprintln!("skipped: the hard descriptor limit is {}", lim.rlim_max);
+        common::skipped(&format!("a hard descriptor limit of 2048 or more (it is {}; ulimit -Hn)", lim.rlim_max));
         return;
     }
     lim.rlim_cur = lim.rlim_max.min(4096);

@@ -21,7 +21,7 @@ impl Tmux {
 
     fn start_sized(home: &std::path::Path, width: u16, height: u16) -> Option<Tmux> {
         if Command::new("tmux").arg("-V").output().map(|o| !o.status.success()).unwrap_or(true) {
-            eprintln!("tmux is not installed: skipping the terminal test (apt-get install tmux)");
+            common::skipped("tmux (apt-get install tmux)");
             return None;
         }
         // One tmux server per test (tests run in parallel threads of one process).
@@ -277,4 +277,28 @@ fn ctrl_c_in_the_repl_returns_to_the_prompt_without_running_the_rest() {
     let s = t.wait_for("the values", |s| s.lines().any(|l| l.trim_start().starts_with("VW12 ")));
     assert!(s.lines().any(|l| l.trim_start().starts_with("VW10") && l.trim_end().ends_with(" 0")), "{s}");
     assert!(s.lines().any(|l| l.trim_start().starts_with("VW12") && l.trim_end().ends_with(" 0")), "{s}");
+}
+
+/// Two shells in two terminals on the same default state file: the second says once that the
+/// file is taken and runs a `plc` that keeps nothing, instead of refusing to open.
+#[test]
+fn a_second_shell_on_the_same_state_file_opens_with_a_warning() {
+    let home = std::env::temp_dir().join(format!("plcsh-tmux-two-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&home);
+    std::fs::create_dir_all(&home).unwrap();
+    let Some(first) = Tmux::start(&home) else { return };
+    first.wait_for("the first prompt", |s| s.contains("plc(sim)>"));
+    first.literal("set VW3700=42");
+    first.keys(&["Enter"]);
+    let Some(second) = Tmux::start(&home) else { return };
+    let s = second.wait_for("the second prompt", |s| s.contains("plc(sim)>"));
+    assert!(s.contains("is in use by process") && s.contains("keeps nothing"), "{s}");
+    second.literal("set VW3700=7; get VW3700");
+    second.keys(&["Enter"]);
+    second.wait_for("the second shell's own plc", |s| s.contains("VW3700  7"));
+    first.literal("get VW3700");
+    first.keys(&["Enter"]);
+    first.wait_for("the first shell keeps its value", |s| s.contains("VW3700  42"));
+    drop((first, second));
+    let _ = std::fs::remove_dir_all(&home);
 }

@@ -315,7 +315,7 @@ fn hex_programming_end_to_end_through_the_shell_and_each_error_letter() {
 #[test]
 fn a_persons_terminal_typing_by_hand() {
     if std::process::Command::new("socat").arg("-V").output().map(|o| !o.status.success()).unwrap_or(true) {
-        eprintln!("socat is not installed: skipping the terminal test (apt-get install socat)");
+        common::skipped("socat (apt-get install socat)");
         return;
     }
     let srv = Server::start("socat", &[]);

@@ -19,6 +19,15 @@ fn serial_guard() -> std::sync::MutexGuard<'static, ()> {
     ONE_AT_A_TIME.lock().unwrap_or_else(|p| p.into_inner())
 }
 
+/// One `skipped: needs …` line on the terminal even when cargo test captures output.
+fn skipped(var: &str) {
+    use std::io::Write;
+    let _ = writeln!(
+        std::io::stderr().lock(),
+        "skipped: needs {var}, set by .ci/windows when it maps COM ports under Wine"
+    );
+}
+
 fn com(var: &str) -> Option<String> {
     let v = std::env::var(var).ok().filter(|v| !v.is_empty());
     if v.is_none() {
@@ -26,7 +35,7 @@ fn com(var: &str) -> Option<String> {
             std::env::var_os("PLCSH_WINE").is_none() || std::env::var_os("CI").is_none(),
             "{var} must be set by .ci/windows when the tests run under Wine in CI"
         );
-        eprintln!("skipped: {var} is not set (only .ci/windows maps COM ports under Wine)");
+        skipped(var);
     }
     v
 }

@@ -205,13 +205,33 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
     // without first loading the simulator's state) or names a real device of their family
     // (a real K2 or drive is never shadowed by a simulated one the user did not ask for).
     if !named.iter().any(|(n, _)| n == "plc") && !real_k2 {
-        s.open("plc", &format!("sim:{}", cli.model))?;
+        let url = format!("sim:{}", cli.model);
         // The simulated PLC keeps its backup area, retained ranges and clock (k2.md §7);
         // `sim serve` keeps its own (`--state`), so the shell's default file stays untouched.
         // A sandboxed run keeps no state: every run starts clean (`--state FILE` is not read).
         let keeps_state = !matches!(&cli.sub, Some(Sub::Sim { .. })) && s.confine.is_none();
-        if let Some(state) = state_file(cli).filter(|_| keeps_state) {
-            s.device("plc")?.set_option("state", &state.to_string_lossy()).map_err(|e| e.device("plc"))?;
+        match state_file(cli).filter(|_| keeps_state) {
+            // Taken when a command first uses `plc`, not now: a plcsh that never does (ports,
+            // models, help, a fleet, a second shell for the drive) leaves it to the shell that
+            // has it (docs/state.md, "One plcsh per state file").
+            Some(state) => s.open_with_option_on_first_use("plc", &url, "state", &state.to_string_lossy())?,
+            None => s.open("plc", &url)?,
+        }
+        if interactive_shell(cli) {
+            // A second interactive shell: say now that the state file is taken, and go on with a
+            // plc that keeps nothing rather than refusing every command on it.
+            let i = s.index("plc")?;
+            if let Err(e) = s.ready(i) {
+                if !e.message.contains("is in use by") {
+                    return Err(e);
+                }
+                s.open("plc", &url)?;
+                eprintln!(
+                    "plcsh: warning: {}: this shell's plc starts fresh and keeps nothing (as with --state none); \
+                     to keep its own, start it with --state FILE",
+                    e.message.trim_end_matches('.')
+                );
+            }
         }
     }
     if !named.iter().any(|(n, _)| n == "servo") && !real_servo {
@@ -219,7 +239,15 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
     }
     for d in &cli.devices {
         let (name, url) = split_device_arg(d);
-        s.open(&name, &url)?;
+        if line_by_line(cli) {
+            // A shell opened before the cabinet is powered stays open: the device is marked not
+            // connected and every command tries again. A one-shot still fails with the link error.
+            if let Some(e) = s.open_or_later(&name, &url)? {
+                eprintln!("plcsh: {name}: {} — not connected; the next command tries again", e.message);
+            }
+        } else {
+            s.open(&name, &url)?;
+        }
         if name == url {
             current = name;
         }
@@ -237,6 +265,17 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
         }
     }
     Ok(s)
+}
+
+/// The REPL or a batch of lines on stdin (no subcommand, no `-c`, no fleet): commands come
+/// one at a time, so a device that is not there yet can be there for the next one.
+fn line_by_line(cli: &Cli) -> bool {
+    cli.sub.is_none() && cli.command.is_none() && cli.fleet.is_none()
+}
+
+/// The REPL at a terminal (not a batch on stdin).
+fn interactive_shell(cli: &Cli) -> bool {
+    line_by_line(cli) && std::io::stdin().is_terminal()
 }
 
 /// Options of plcsh that take a value (`--time stepped`): their value is not a positional.

@@ -43,6 +43,12 @@ pub enum Change {
 pub trait Device: Send {
     fn info(&self) -> &DeviceInfo;
     fn operands(&self) -> &dyn OperandSpace;
+    /// Makes the device usable before a command: sets what was deferred to its first use
+    /// (the simulator's state file) and tries again a link that could not be made when the
+    /// session opened it (`crate::pending`). Devices that are always ready answer `Ok`.
+    fn ready(&mut self) -> Result<()> {
+        Ok(())
+    }
     /// Reads a batch; values come back in the order asked.
     fn read(&mut self, ops: &[Operand]) -> Result<Vec<Value>>;
     /// Reads a batch into `out` (cleared first), reusing its allocation: for a loop that

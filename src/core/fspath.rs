@@ -49,7 +49,11 @@ mod tests {
 
     #[test]
     fn canonical_resolves_dot_dot() {
-        let d = std::env::temp_dir();
-        assert_eq!(canonical(&d.join("x").join("..")).ok(), canonical(&d).ok());
+        // A folder of this test's own: `x/..` resolves only where `x` exists.
+        let d = std::env::temp_dir().join(format!("plcsh-fspath-{}", std::process::id()));
+        std::fs::create_dir_all(d.join("x")).unwrap();
+        let (up, direct) = (canonical(&d.join("x").join("..")), canonical(&d));
+        let _ = std::fs::remove_dir_all(&d);
+        assert_eq!(up.unwrap(), direct.unwrap());
     }
 }

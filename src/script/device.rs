@@ -39,8 +39,10 @@ impl Handle {
     }
 
     /// Resolves the name now; drops the cache if the name now means another device.
-    fn resolve(&mut self, sh: &Shell) -> Result<usize> {
+    fn resolve(&mut self, sh: &mut Shell) -> Result<usize> {
         let i = index(sh, &self.name)?;
+        // Ready first (`crate::pending`): a state file taken, a link tried again.
+        sh.session.ready(i)?;
         let e = &sh.session.entries()[i];
         let model = &e.device.info().model;
         if e.url != self.ident.0 || *model != self.ident.1 {

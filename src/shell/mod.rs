@@ -265,6 +265,13 @@ impl Shell {
     }
 
     fn run_spec(&mut self, spec: &commands::CommandSpec, args: Args) -> CmdResult {
+        if !commands::NO_CURRENT_DEVICE.contains(&spec.name) {
+            // The device the command acts on, ready first (`crate::pending`): the reason it is
+            // not (its state file held, its link down) is the command's error.
+            if let Ok(i) = self.session.current_index() {
+                self.session.ready(i).map_err(|e| (spec.name.to_string(), e))?;
+            }
+        }
         (spec.run)(self, args)
             .map(|o| name_outcome(spec, args.text, o))
             .map_err(|e| (spec.name.to_string(), suggest_subcommand(spec, args, e)))

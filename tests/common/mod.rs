@@ -8,6 +8,15 @@ pub mod pty_responder;
 use std::io::Write;
 use std::process::{Command, Output, Stdio};
 
+/// Says that the calling test did not run its check, on the terminal even when cargo test
+/// captures output (a passing test's `eprintln!` is hidden, so a skip would read as `ok`):
+/// one line `skipped: needs WHAT (HOW TO GET IT)`. The test then returns.
+pub fn skipped(needs: &str) {
+    use std::io::Write;
+    let test = std::thread::current().name().unwrap_or("a test").to_string();
+    let _ = writeln!(std::io::stderr().lock(), "skipped: needs {needs} ({test})");
+}
+
 /// Path of the built binary.
 pub fn bin() -> &'static str {
     env!("CARGO_BIN_EXE_plcsh")
@@ -16,13 +25,20 @@ pub fn bin() -> &'static str {
 /// A `plcsh` command with a private HOME (history and state files stay out of the user's).
 pub fn plcsh() -> Command {
     let mut c = Command::new(bin());
+    own_world(&mut c);
+    c
+}
+
+/// Gives a command (plcsh, or a shell that runs plcsh) this test process's private HOME and
+/// data/config folders and no state file, so nothing depends on the user's files or on
+/// another plcsh running on the machine.
+pub fn own_world(c: &mut Command) -> &mut Command {
     let home = std::env::temp_dir().join(format!("plcsh-test-home-{}", std::process::id()));
     let _ = std::fs::create_dir_all(&home);
     c.env("HOME", &home).env("XDG_DATA_HOME", home.join("data")).env("XDG_CONFIG_HOME", home.join("config"));
     c.env_remove("NO_COLOR").env_remove("PLCSH_CONFIG");
     // No test touches a default state file; tests about state name theirs with --state.
-    c.env("PLCSH_STATE", "none");
-    c
+    c.env("PLCSH_STATE", "none")
 }
 
 /// Runs plcsh with `args`, feeding `stdin`.
@@ -112,7 +128,7 @@ pub fn pymodbus() -> Option<&'static str> {
     let found = ["/usr/bin/python3", "python3"].into_iter().find(|p| ok(p));
     if found.is_none() {
         assert!(std::env::var_os("CI").is_none(), "CI must install python3-pymodbus");
-        eprintln!("skipped: no python3 with pymodbus");
+        skipped("python3 with pymodbus (apt-get install python3-pymodbus)");
     }
     found
 }

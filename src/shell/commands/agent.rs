@@ -43,6 +43,7 @@ fn agent(sh: &mut Shell, args: Args) -> Result<Outcome> {
         Some(d) => sh.session.index(d)?,
         None => sh.session.current_index()?,
     };
+    sh.session.ready(dev)?;
     let name = k2cmd::name(sh, dev);
     let k2 = k2cmd::k2(sh, dev)?;
     let text = if k2.as_sim().is_some() {

@@ -86,6 +86,14 @@ pub static COMMANDS: &[CommandSpec] = &[
 /// the prefix of their channel (`pto press:0`), operands as theirs (`get press:VW0`).
 pub const DEVICE_FIRST: &[&str] = &["eeprom", "rtc", "events", "wait"];
 
+/// Commands that do not act on the current device, or find their device themselves (and make
+/// it ready there): the shell does not make the current device ready before them, so `help`,
+/// `ports` or `servo status` never take the simulated PLC's state file (`crate::pending`).
+pub const NO_CURRENT_DEVICE: &[&str] = &[
+    "help", "quit", "models", "ports", "paths", "devices", "use", "connect", "close", "lua", "lab", "get", "set",
+    "read", "servo", "umpk", "agent",
+];
+
 /// Which words of a command are text — a file path, a name, a message — and never operands.
 /// The shell reads the K2 manual's look-alike letters (`ВW0` as `VW0`,
 /// [`crate::core::text::fold_manual_spelling`]) in every other word, and never in these:

@@ -54,6 +54,7 @@ fn servo(sh: &mut Shell, args: Args) -> Result<Outcome> {
         Some(_) => e.shift(args.offset),
         None => e.column(args.offset),
     })?;
+    sh.session.ready(dev)?;
     let Some(&(col, sub)) = rest.first() else {
         return Err(Error::usage("servo needs a subcommand").hint(SERVO.usage).column(args.offset));
     };
@@ -152,7 +153,8 @@ fn servo(sh: &mut Shell, args: Args) -> Result<Outcome> {
 
 /// Splits an optional leading device name off the words.
 fn pick_device<'a>(sh: &mut Shell, words: &'a [lex::Word<'a>]) -> Result<(usize, &'a [lex::Word<'a>])> {
-    let is_servo = |sh: &mut Shell, i: usize| sh.session.entry(i).device.as_servo().is_some();
+    // By family, so a drive not connected yet is still found (and tried) by name.
+    let is_servo = |sh: &mut Shell, i: usize| sh.session.entries()[i].device.info().family == "servo";
     if let Some(&(col, first)) = words.first() {
         if !SERVO.subcommands.contains(&first) {
             if let Ok(i) = sh.session.index(first) {

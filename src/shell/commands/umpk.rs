@@ -39,7 +39,8 @@ pub const UMPK: CommandSpec = CommandSpec {
 };
 
 fn is_umpk(sh: &mut Shell, i: usize) -> bool {
-    sh.session.entry(i).device.family_ops_for(&[]).ok().flatten().is_some_and(|a| a.is::<Driver>())
+    // By family, so a UMPK not connected yet is still found (and tried) by name.
+    sh.session.entries()[i].device.info().family == "umpk"
 }
 
 fn pick<'a>(sh: &mut Shell, words: &'a [Word<'a>]) -> Result<(usize, &'a [Word<'a>])> {
@@ -87,6 +88,7 @@ fn changing<'a>(sh: &'a mut Shell, dev: usize, what: &str) -> Result<&'a mut Dri
 fn umpk(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let words = lex::words_in(&args)?;
     let (dev, rest) = pick(sh, &words)?;
+    sh.session.ready(dev)?;
     let Some(&(col, sub)) = rest.first() else {
         return Err(Error::usage("umpk needs a subcommand").hint(UMPK.usage).column(args.offset));
     };
