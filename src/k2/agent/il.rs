@@ -31,9 +31,20 @@ impl Gen {
     fn d(&self, off: u32) -> String {
         format!("%VD{}", self.base + off)
     }
-    /// The one-scan "execute" flag.
+    /// The one-scan "execute" flag: a request waits and the previous scan executed none.
+    /// The request is acknowledged in this scan.
     fn flag(&self) -> String {
         format!("%V{}.0", self.base + OFF_SCRATCH + 12)
+    }
+    /// "The request is valid": on with the execute flag, off once a check refuses it. It is
+    /// the enable of every instruction the helper runs.
+    fn valid(&self) -> String {
+        format!("%V{}.4", self.base + OFF_SCRATCH + 12)
+    }
+    /// "A request executed last scan": this scan executes none, so every instruction's
+    /// enable is low for at least one scan between two executions.
+    fn rested(&self) -> String {
+        format!("%V{}.5", self.base + OFF_SCRATCH + 12)
     }
     /// Set when the command's instruction reported success (its ENO).
     fn ok(&self) -> String {
@@ -78,9 +89,9 @@ impl Gen {
     fn label(&mut self, l: &str) {
         let _ = writeln!(self.out, "{l}:");
     }
-    /// `LD flag; AND command == code` — the guard of every command network.
+    /// `LD valid; AND command == code` — the enable of every command network.
     fn when(&mut self, code: u16) {
-        let f = self.flag();
+        let f = self.valid();
         let cmd = self.w(p::OFF_REQUEST + 4);
         self.line("LD", &f, "");
         self.line("AW=", &format!("{cmd}, {code}"), "");
@@ -107,12 +118,14 @@ impl Gen {
         }
     }
 
-    /// The refusals of [`p::checks`], in order: each sets the result and jumps to the ack.
+    /// The refusals of [`p::checks`], in order: each one that matches a still-valid request
+    /// sets the result and clears "valid", so the first match wins and nothing runs; no
+    /// jump skips the instruction networks (their enables must see every scan).
     /// The PLC compares words only as signed INTs (S7-200 convention; no unsigned compare),
     /// so "word < lo" with lo ≥ 0 also catches words of 32768 or more, and ARG1 + ARG2 is
     /// computed only after earlier rows bounded both, so the sum cannot overflow an INT.
     fn checks(&mut self) {
-        let (result, count) = (self.result(), self.count());
+        let (result, count, valid) = (self.result(), self.count(), self.valid());
         let rows = p::checks();
         let mut summed: Option<(u16, u16)> = None;
         for (i, c) in rows.iter().enumerate() {
@@ -137,6 +150,7 @@ impl Gen {
                         assert!(max <= p::INT_MAX as u32, "check {i}: ARG1 + ARG2 can reach {max}, past an INT");
                         let (a1, a2) = (self.w(p::Field::Arg1.offset()), self.w(p::Field::Arg2.offset()));
                         self.gate(cmds, &format!("both bounded: ARG1 + ARG2 <= {max}, no INT overflow"));
+                        self.line("A", &valid, "only once the rows above passed");
                         self.line("MOVE", &format!("{a1}, {count}"), "");
                         self.line("ADD", &format!("{a2}, {count}"), "");
                         summed = Some(cmds);
@@ -176,8 +190,9 @@ impl Gen {
                     self.line("AW>", &format!("{count}, {lo}"), "");
                 }
             }
+            self.line("A", &valid, "");
             self.line("MOVE", &format!("{}, {result}", c.result.code()), "");
-            self.line("JMPC", "ACK", "");
+            self.line("R", &format!("{valid}, 1"), "refused: nothing runs");
         }
     }
 
@@ -217,6 +232,12 @@ pub fn program(base: u32) -> String {
    KincoBuilder's S7-200-style IL. If KincoBuilder rejects a line, enter that network in
    LD with the logic its comment gives.
 
+   Every command acts every time it is asked (docs/agent.md, section Every command acts):
+   no jump skips an instruction network, so PLS and PSTOP, which act on the rising edge of
+   their enable (manual section 3.4.2), see it fall on every scan without a request; and a
+   request never executes in the scan right after one did, so the enable is low for at least
+   one scan between two executions of the same instruction.
+
    Network 3 refuses malformed requests before anything runs (docs/agent.md, section Checks).
    Word compares are signed INT compares, so each `word < bound` test also catches the
    words 32768..65535, and ARG1 + ARG2 is added only after both are bounded: no request
@@ -238,18 +259,25 @@ pub fn program(base: u32) -> String {
     g.line("MOVE", &format!("{}, {}", p::VERSION, g.w(p::OFF_VERSION)), "protocol version");
     g.line("ADD", &format!("1, {}", g.w(p::OFF_HEARTBEAT)), "heartbeat");
 
-    g.net("a new request waits when the request sequence differs from ack 0");
+    let (valid, rested) = (g.valid(), g.rested());
+    g.net(
+        "a new request waits when the request sequence differs from ack 0; it executes unless one executed last scan",
+    );
     g.line("LDW<>", &format!("{}, {}", g.w(p::OFF_REQUEST), g.w(p::OFF_ACKS)), "");
-    g.line("=", &flag, "execute this scan");
+    g.line("AN", &rested, "a scan with every enable low between two executions");
+    g.line("=", &flag, "execute (and acknowledge) this scan");
+    g.line("=", &valid, "valid until a check below refuses it");
+    g.line("=", &rested, "so the next scan executes nothing");
     g.line("LD", &flag, "");
     g.line("MOVE", &format!("0, {result}"), "result 0 = done");
     g.line("MOVE", &format!("0, {}", g.w(p::OFF_REPLY_LEN)), "no reply data yet");
-    g.line("LDN", &flag, "");
-    g.line("JMPC", "DONE", "nothing to do");
 
     let (a1, a2) = (g.w(p::OFF_REQUEST + 6), g.w(p::OFF_REQUEST + 8));
     g.net("refuse malformed requests: the checks of docs/agent.md, in order, over unsigned words");
+    g.line("LDN", &flag, "");
+    g.line("JMPC", "CHECKED", "no request executes: nothing to check (no instruction is skipped)");
     g.checks();
+    g.label("CHECKED");
 
     g.net("command 1: copy ARG2 bytes of request data to SMB[ARG1]");
     g.when(Command::SmWrite { start: 0, data: vec![] }.code());
@@ -261,7 +289,6 @@ pub fn program(base: u32) -> String {
     g.line("MOVE", &format!("&VB{}, {}", base + p::OFF_REQ_DATA, g.src()), "source: request data");
     g.line("MOVE", &format!("{a2}, {}", g.count()), "");
     g.copy_loop("WRITE_LOOP");
-    g.line("JMP", "ACK", "");
     g.label("NOT_WRITE");
 
     g.net("command 2: copy ARG2 bytes from SMB[ARG1] to the reply");
@@ -274,17 +301,16 @@ pub fn program(base: u32) -> String {
     g.line("MOVE", &format!("{a2}, {}", g.count()), "");
     g.line("MOVE", &format!("{a2}, {}", g.w(p::OFF_REPLY_LEN)), "");
     g.copy_loop("READ_LOOP");
-    g.line("JMP", "ACK", "");
     g.label("NOT_READ");
 
     let ok = g.ok();
     let code = |r: p::ResultCode| r.code();
 
     g.net("the instruction's ENO, set by the network that runs it");
-    g.line("LD", &flag, "");
+    g.line("LD", "%SM0.0", "");
     g.line("R", &format!("{ok}, 1"), "set below by the instruction's ENO");
 
-    g.net("command 3: PLS ARG1 (the one-scan execute flag is the rising edge PLS needs, section 3.4.2)");
+    g.net("command 3: PLS ARG1 - evaluated every scan: its enable is on in the request's scan only, a rising edge each time (section 3.4.2)");
     for r in PTO_REGS {
         g.when_arg(Command::Pls(0).code(), r.channel as u32, None);
         g.line("PLS", &r.channel.to_string(), "");
@@ -314,7 +340,7 @@ pub fn program(base: u32) -> String {
     g.line("AN", &ok, "");
     g.line("MOVE", &format!("{}, {result}", code(p::ResultCode::InstructionFailed)), "");
 
-    g.net("command 6: PSTOP ARG1 - stop the channel and latch its emergency-stop bit (section 3.4.3.1)");
+    g.net("command 6: PSTOP ARG1 - stop the channel and latch its emergency-stop bit (section 3.4.3.1); runs every scan, acts on EXEC's rising edge");
     let (exec, done, errid) = (g.exec(), g.done(), g.errid());
     for r in PTO_REGS {
         g.when_arg(Command::Pstop(0).code(), r.channel as u32, None);
@@ -335,7 +361,6 @@ pub fn program(base: u32) -> String {
     g.line("MOVE", &format!("8, {}", g.w(p::OFF_REPLY_LEN)), "");
 
     g.net("acknowledge: shift acks 0-2 to 1-3, then ack 0 = (sequence, token, result), sequence last");
-    g.label("ACK");
     g.line("LD", &flag, "");
     g.line("BLKMOVE", &format!("{}, {}, 6", g.b(p::OFF_ACKS + 12), g.b(p::OFF_ACKS + 18)), "ack 2 -> ack 3");
     g.line("BLKMOVE", &format!("{}, {}, 6", g.b(p::OFF_ACKS + 6), g.b(p::OFF_ACKS + 12)), "ack 1 -> ack 2");
@@ -343,7 +368,6 @@ pub fn program(base: u32) -> String {
     g.line("MOVE", &format!("{}, {}", g.w(p::OFF_REQUEST + 2), g.w(p::OFF_ACKS + 2)), "token");
     g.line("MOVE", &format!("{result}, {}", g.w(p::OFF_ACKS + 4)), "result");
     g.line("MOVE", &format!("{}, {}", g.w(p::OFF_REQUEST), g.w(p::OFF_ACKS)), "sequence: the ack is complete");
-    g.label("DONE");
     g.out
 }
 
@@ -380,10 +404,11 @@ mod tests {
     #[test]
     fn every_check_refuses_before_any_command_runs() {
         let il = program(p::DEFAULT_BASE);
-        let (checks, first_command) = (il.find("Network 3").unwrap(), il.find("Network 4").unwrap());
+        let (checks, first_command) = (il.find("(* Network 3:").unwrap(), il.find("(* Network 4:").unwrap());
         let net = &il[checks..first_command];
         let rows = p::checks();
-        assert_eq!(net.matches("JMPC    ACK").count(), rows.len(), "one refusal per row of the table");
+        let refusal = format!("R       %V{}.4, 1", p::DEFAULT_BASE + OFF_SCRATCH + 12);
+        assert_eq!(net.matches(&refusal).count(), rows.len(), "one refusal per row of the table");
         for c in &rows {
             assert!(net.contains(&format!("{} -> result {}", c.why, c.result.code())), "{}", c.why);
         }
@@ -394,6 +419,204 @@ mod tests {
                 assert!((0..=32767).contains(&n), "{line}");
             }
         }
+    }
+
+    /// The PLC instructions the helper runs (K2 manual §3.3, §3.4, §2.2.10).
+    const INSTRUCTIONS: [&str; 6] = ["PLS", "HDEF", "HSC", "PSTOP", "SET_RTC", "READ_RTC"];
+
+    /// No jump lands past an instruction: every instruction line is evaluated on every scan,
+    /// so an edge-triggered one (PLS, PSTOP's EXEC) sees its enable fall between requests.
+    #[test]
+    fn no_jump_skips_an_instruction() {
+        let il = program(p::DEFAULT_BASE);
+        let lines: Vec<&str> = il.lines().collect();
+        let op = |l: &str| l.split_whitespace().next().unwrap_or("").to_string();
+        let mut jumps = 0;
+        for (i, l) in lines.iter().enumerate() {
+            if !matches!(op(l).as_str(), "JMP" | "JMPC" | "JMPCN") {
+                continue;
+            }
+            jumps += 1;
+            let target = l.split_whitespace().nth(1).unwrap();
+            let at = lines.iter().position(|x| *x == format!("{target}:")).unwrap_or_else(|| panic!("{l}: no label"));
+            let (lo, hi) = if at > i { (i, at) } else { (at, i) };
+            for skipped in &lines[lo..hi] {
+                assert!(!INSTRUCTIONS.contains(&op(skipped).as_str()), "`{l}` jumps over `{skipped}`");
+            }
+        }
+        assert_eq!(jumps, 5, "only past the checks and the SM copy loops, and in the loops");
+        for name in INSTRUCTIONS {
+            assert!(lines.iter().any(|l| op(l) == name), "{name} is in the program");
+        }
+    }
+
+    /// Every instruction's enable contains the "valid" bit, which is on in a request's scan
+    /// only and never in two scans in a row (the "executed last scan" bit holds it off).
+    #[test]
+    fn every_instruction_is_enabled_by_the_one_scan_valid_bit() {
+        let base = p::DEFAULT_BASE;
+        let il = program(base);
+        let (valid, rested) = (format!("%V{}.4", base + OFF_SCRATCH + 12), format!("%V{}.5", base + OFF_SCRATCH + 12));
+        let lines: Vec<&str> = il.lines().collect();
+        for (i, l) in lines.iter().enumerate() {
+            let name = l.split_whitespace().next().unwrap_or("");
+            if !INSTRUCTIONS.contains(&name) {
+                continue;
+            }
+            // The rung that enables it: back to its LD (PSTOP: the rung that computes EXEC).
+            let mut k = i;
+            let mut skip_sm0 = name == "PSTOP";
+            loop {
+                k -= 1;
+                if lines[k].starts_with("LD ") {
+                    if skip_sm0 && lines[k].contains("%SM0.0") {
+                        skip_sm0 = false;
+                        continue;
+                    }
+                    break;
+                }
+            }
+            assert!(lines[k].contains(&valid), "{l}: enabled by `{}`, not by the valid bit", lines[k]);
+        }
+        let net2 = &il[il.find("(* Network 2:").unwrap()..il.find("(* Network 3:").unwrap()];
+        let order: Vec<&str> = net2.lines().filter(|l| l.contains(&rested) || l.contains(&valid)).collect();
+        assert!(order[0].starts_with("AN") && order[0].contains(&rested), "{order:?}");
+        assert!(order[1].starts_with("=") && order[1].contains(&valid), "{order:?}");
+        assert!(order[2].starts_with("=") && order[2].contains(&rested), "{order:?}");
+    }
+
+    use crate::k2::sim::agent_probe::AgentProbe;
+
+    /// Request data holding `bytes` (the rest zero).
+    fn data(bytes: &[u8]) -> [u8; p::DATA_MAX] {
+        let mut d = [0; p::DATA_MAX];
+        d[..bytes.len()].copy_from_slice(bytes);
+        d
+    }
+
+    /// Sends one request through the probe (every scan checked against the protocol).
+    fn ask(probe: &mut AgentProbe, code: u16, args: [u16; 2], bytes: &[u8]) -> p::ResultCode {
+        probe.request(code, [args[0], args[1], 0], &data(bytes)).unwrap_or_else(|e| panic!("{e}"))
+    }
+
+    /// The channels the probe's model has (K205-16DT).
+    fn channels(probe: &AgentProbe) -> Vec<&'static crate::k2::sm_map::PtoRegs> {
+        PTO_REGS.iter().filter(|r| probe.sim.model().pto.iter().any(|c| c.channel == r.channel)).collect()
+    }
+
+    /// Scans until channel `r`'s PTO is idle (SM66.7 …), at most `limit` scans.
+    fn until_idle(probe: &mut AgentProbe, r: &crate::k2::sm_map::PtoRegs, limit: u32) {
+        for _ in 0..limit {
+            if probe.sim.mem.sm_bit(r.status, 7) {
+                return;
+            }
+            probe.scan();
+        }
+        panic!("PTO{} still busy after {limit} scans", r.channel);
+    }
+
+    /// PLS acts on its enable's rising edge (K2 manual §3.4.2): a second PLS of the same
+    /// channel — after the first train ended, with or without an SM write in between —
+    /// starts a second train. Returns SMD212 … of every channel after two trains of 100
+    /// pulses each.
+    fn pls_twice(probe: &mut AgentProbe, write_between: bool) -> Vec<u32> {
+        let mut out = Vec::new();
+        for r in channels(probe) {
+            // SMB67 = 16#85, SMW68 = 100 (µs), SMD72 = 100 (§3.4.2.3) in one SM write.
+            let cfg = [0x85, 0, 100, 0, 0, 0, 0, 0, 100];
+            assert_eq!(ask(probe, 1, [r.control as u16, cfg.len() as u16], &cfg), p::ResultCode::Ok);
+            assert_eq!(ask(probe, 3, [r.channel as u16, 0], &[]), p::ResultCode::Ok);
+            until_idle(probe, r, 100);
+            if write_between {
+                assert_eq!(ask(probe, 1, [r.control as u16, 1], &[0x85]), p::ResultCode::Ok);
+            }
+            assert_eq!(ask(probe, 3, [r.channel as u16, 0], &[]), p::ResultCode::Ok);
+            until_idle(probe, r, 100);
+            out.push(probe.sim.mem.sm_dword(r.pos_cv));
+        }
+        out
+    }
+
+    #[test]
+    fn pls_starts_a_train_every_time_it_is_asked() {
+        let mut probe = AgentProbe::new();
+        let chans = channels(&probe);
+        assert!(chans.len() >= 2, "the model has pulse channels");
+        assert_eq!(pls_twice(&mut probe, false), vec![200; chans.len()], "SMD212 … count both trains");
+        assert_eq!(pls_twice(&mut probe, true), vec![400; chans.len()], "and with an SM write between");
+        // Back to back: PLS right after PLS (the second waits one scan, enable low).
+        for r in chans {
+            let before = probe.sim.mem.sm_dword(r.pos_cv);
+            assert_eq!(ask(&mut probe, 3, [r.channel as u16, 0], &[]), p::ResultCode::Ok);
+            assert_eq!(ask(&mut probe, 3, [r.channel as u16, 0], &[]), p::ResultCode::Ok);
+            until_idle(&mut probe, r, 100);
+            let after = probe.sim.mem.sm_dword(r.pos_cv);
+            // The second PLS restarts the running train (pulses already out stay counted):
+            // more than one train's 100 pulses, at most two trains' worth.
+            assert!(after - before > 100 && after - before <= 200, "PTO{}: {before} -> {after}", r.channel);
+        }
+    }
+
+    #[test]
+    fn pstop_latches_its_bit_every_time_it_is_asked() {
+        let mut probe = AgentProbe::new();
+        for r in channels(&probe) {
+            for round in 0..3 {
+                assert_eq!(ask(&mut probe, 6, [r.channel as u16, 0], &[]), p::ResultCode::Ok);
+                assert!(
+                    probe.sim.mem.sm_bit(r.pos_control, 7),
+                    "PSTOP {} round {round}: SM{}.7",
+                    r.channel,
+                    r.pos_control
+                );
+                // The program clears it (§3.4.3.1): an SM write, then PSTOP again.
+                assert_eq!(ask(&mut probe, 1, [r.pos_control as u16, 1], &[0]), p::ResultCode::Ok);
+                assert!(!probe.sim.mem.sm_bit(r.pos_control, 7));
+            }
+        }
+    }
+
+    /// A request that waits right after a scan that executed one is executed one scan
+    /// later, so every instruction's enable is low in between.
+    #[test]
+    fn a_request_never_executes_in_the_scan_after_an_execution() {
+        let mut probe = AgentProbe::new();
+        let write = |probe: &mut AgentProbe, seq: u16| {
+            let base = (p::DEFAULT_BASE + p::OFF_REQUEST) as usize;
+            for (k, w) in p::request_words(seq, 7, &Command::Ping).iter().enumerate() {
+                probe.sim.mem.v[base + 2 * k..base + 2 * k + 2].copy_from_slice(&w.to_be_bytes());
+            }
+        };
+        let ack0 = |probe: &AgentProbe| probe.status().acks[0].seq;
+        write(&mut probe, 1);
+        probe.scan();
+        assert_eq!(ack0(&probe), 1, "executed in the next scan");
+        write(&mut probe, 2);
+        probe.scan();
+        assert_eq!(ack0(&probe), 1, "not in the scan right after an execution");
+        probe.scan();
+        assert_eq!(ack0(&probe), 2, "in the one after");
+        probe.scan();
+        write(&mut probe, 3);
+        probe.scan();
+        assert_eq!(ack0(&probe), 3, "after an idle scan: at once");
+    }
+
+    /// The probe fails a helper that jumps over its instruction networks on scans without
+    /// a request (the program as it was before): the second PLS never sees its enable fall.
+    #[test]
+    fn the_probe_catches_a_helper_that_jumps_over_its_instructions() {
+        let il = program(p::DEFAULT_BASE);
+        let g = Gen { base: p::DEFAULT_BASE, out: String::new(), network: 0 };
+        let flag = g.flag();
+        // A jump from network 2 to the end on scans without a request.
+        let jumping =
+            il.replace("\n(* Network 3:", &format!("LDN     {flag}\nJMPC    DONE\n\n(* Network 3:")) + "DONE:\n";
+        assert_ne!(jumping, il);
+        let mut probe = AgentProbe::new();
+        probe.sim.load_helper(&jumping, "jumping.il").unwrap();
+        let n = channels(&probe).len();
+        assert_eq!(pls_twice(&mut probe, false), vec![100; n], "the second PLS is acknowledged but runs no train");
     }
 
     #[test]

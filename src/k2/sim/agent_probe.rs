@@ -1,8 +1,9 @@
 //! The helper program's promises, checked on the program the PLC runs: a
 //! simulated K2 executing `lib/k2_agent.il` in its scan engine, driven one scan at a time,
 //! with every scan checked against the protocol. Its checks: the CPU stays in RUN, the
-//! heartbeat moves once per scan, a waiting request is acknowledged in that scan with the
-//! verdict of [`Command::decode`] (the Rust twin of the program's checks), the reply is what
+//! heartbeat moves once per scan, a waiting request is acknowledged in that scan — or, when
+//! the scan before acknowledged one, in the next (the scan between two executions, in which
+//! every instruction's enable is low: docs/agent.md) — with the verdict of [`Command::decode`] (the Rust twin of the program's checks), the reply is what
 //! the command asked for, and no memory outside the mailbox and the SM bytes the request
 //! names changes. The fuzz target `agent_mailbox` and the mailbox property test both drive
 //! the helper through this type, so a request that breaks a promise is a crash for the one
@@ -42,6 +43,8 @@ pub struct AgentProbe {
     clock: Clock,
     base: u32,
     token: u16,
+    /// The last scan acknowledged a request: the next one executes none.
+    executed_last: bool,
 }
 
 impl Default for AgentProbe {
@@ -57,7 +60,7 @@ impl AgentProbe {
         let mut sim = super::open("K205-16DT", clock.clone()).expect("the default model");
         let base = p::DEFAULT_BASE;
         sim.enable_agent(base).expect("the default base");
-        let mut probe = AgentProbe { sim, clock, base, token: 0x5AA5 };
+        let mut probe = AgentProbe { sim, clock, base, token: 0x5AA5, executed_last: false };
         probe.scan();
         probe
     }
@@ -68,8 +71,12 @@ impl AgentProbe {
     pub fn scan(&mut self) {
         let next = self.sim.plc().map_or(self.sim.last, |p| p.next_scan);
         let now = self.clock.now();
+        let ack0 = self.word(p::OFF_ACKS);
         self.clock.step(next.saturating_sub(now).max(Duration::from_nanos(1)));
         self.sim.advance();
+        // Only the helper writes during a scan, and it executes only a request whose
+        // sequence differs from ack 0's: ack 0 changed exactly when a request executed.
+        self.executed_last = self.word(p::OFF_ACKS) != ack0;
     }
 
     /// Scans run so far.
@@ -102,8 +109,9 @@ impl AgentProbe {
         self.checked_scan()
     }
 
-    /// Sends a request (the next sequence number, whatever the words say) and runs one
-    /// checked scan; returns the helper's result.
+    /// Sends a request (the next sequence number, whatever the words say) and runs checked
+    /// scans until it is acknowledged (two when the scan before executed one); returns the
+    /// helper's result.
     pub fn request(&mut self, code: u16, args: [u16; 3], data: &[u8; DATA_MAX]) -> Result<ResultCode, String> {
         let seq = p::next_seq(self.word(p::OFF_ACKS));
         self.token = self.token.wrapping_mul(31).wrapping_add(7);
@@ -113,10 +121,12 @@ impl AgentProbe {
         }
         let at = (self.base + p::OFF_REQ_DATA) as usize;
         self.sim.mem.v[at..at + DATA_MAX].copy_from_slice(data);
-        match self.checked_scan()? {
-            Some(a) => Ok(a.result),
-            None => Err(format!("request {code} {args:?} was not acknowledged")),
+        for _ in 0..2 {
+            if let Some(a) = self.checked_scan()? {
+                return Ok(a.result);
+            }
         }
+        Err(format!("request {code} {args:?} was not acknowledged"))
     }
 
     /// What the helper must answer to a request: [`Command::decode`]'s refusal, or for a
@@ -155,7 +165,8 @@ impl AgentProbe {
         let at = (self.base + p::OFF_REQ_DATA) as usize;
         let data: [u8; DATA_MAX] = self.sim.mem.v[at..at + DATA_MAX].try_into().expect("64 bytes");
         let before = self.status();
-        let pending = seq != before.acks[0].seq;
+        // A request waiting right after a scan that executed one waits this scan out.
+        let pending = seq != before.acks[0].seq && !self.executed_last;
         let verdict = pending.then(|| self.verdict(code, args, &data));
         let mem = self.sim.mem.clone();
         let scans = self.scans();
