@@ -1,7 +1,9 @@
 //! IL programs as users save them (docs/il.md "Loading"): UTF-8, UTF-16 with a byte-order
 //! mark (little- and big-endian) and Windows-1251 (a Russian Windows' ANSI code page) load the
 //! same through every loader — the K2's `sim program load` and `program=`, the FX's and the
-//! UMPK's `program=` — and broken UTF-16 is refused naming the byte.
+//! UMPK's `program=` — UTF-16 without a mark loads by the NUL bytes of its ASCII text, broken
+//! UTF-16 is refused naming the byte, and a refusal quoting the file escapes its control
+//! characters.
 
 mod common;
 use common::*;
@@ -84,5 +86,80 @@ fn a_served_k2_runs_a_program_file_in_every_encoding() {
         let o = run(&["--json", "--device", &url], "read VW0\n");
         let l = json_lines(&o);
         assert!(l[0]["ok"] == true && l[0].to_string().contains("1234"), "{enc}: {}", both(&o));
+    }
+}
+
+/// `text` in UTF-16 without a byte-order mark, little- and big-endian, as files in `name`.
+fn bomless(name: &str, text: &str) -> Vec<(&'static str, std::path::PathBuf)> {
+    let dir = std::env::temp_dir().join(format!("plcsh-il-files-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let le: Vec<u8> = text.encode_utf16().flat_map(|u| u.to_le_bytes()).collect();
+    let be: Vec<u8> = text.encode_utf16().flat_map(|u| u.to_be_bytes()).collect();
+    [("utf16le-nobom", le), ("utf16be-nobom", be)]
+        .into_iter()
+        .map(|(enc, bytes)| {
+            let p = dir.join(format!("{enc}.il"));
+            std::fs::write(&p, bytes).unwrap();
+            (enc, p)
+        })
+        .collect()
+}
+
+/// No character below U+0020 but the line ends, nor DEL.
+fn no_control_characters(s: &str) -> bool {
+    !s.chars().any(|c| c.is_control() && c != '\n')
+}
+
+#[test]
+fn utf16_without_a_byte_order_mark_loads_in_every_loader() {
+    // docs/il.md "Loading": the NUL bytes of ASCII text say UTF-16 and which byte order.
+    for (enc, p) in bomless("k2-nobom", "(* Пуск *)\r\nLD %SM0.0 // Пуск\r\nINC %VW0\r\n") {
+        let script = format!("sim program load {}\nsim scan 3\nread VW0\n", p.display());
+        let o = run(&["--json", "--time", "stepped", "--device", "sim:K205-16DT"], &script);
+        let l = json_lines(&o);
+        assert!(l.iter().all(|x| x["ok"] == true), "K2 {enc}: {}", both(&o));
+        assert!(l[0]["message"].as_str().unwrap_or("").contains("2 instructions loaded"), "K2 {enc}: {}", l[0]);
+        assert!(l[2].to_string().contains('4'), "K2 {enc}: {}", l[2]);
+    }
+    for (enc, p) in bomless("fx-nobom", "// Пуск\r\nLD X0\r\nOUT Y0\r\n") {
+        let url = format!("fx=sim-fx:FX2N?program={}", p.display());
+        let o = run(&["--json", "--time", "stepped", "--device", &url], "sim program\n");
+        assert!(json_lines(&o)[0]["ok"] == true, "FX {enc}: {}", both(&o));
+    }
+    for (enc, p) in bomless("umpk-nobom", "// Пуск\nLD I0\nST Q0\n") {
+        let url = format!("lab=sim-umpk:UMPK16?program={}", p.display());
+        let o = run(&["--json", "--time", "stepped", "--device", &url], "sim program\n");
+        assert!(json_lines(&o)[0]["ok"] == true, "UMPK {enc}: {}", both(&o));
+    }
+}
+
+#[test]
+fn a_refusal_quoting_the_file_writes_its_control_characters_out() {
+    // An escape sequence and a NUL inside an instruction: each loader names it, escaped,
+    // and nothing it prints carries a control character (a terminal would obey it).
+    let dir = std::env::temp_dir().join(format!("plcsh-il-files-{}-control", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let cases: [(&str, &str, &str); 3] = [
+        ("k2", "sim:K205-16DT", "LD %SM0.0\nINC\u{1b}[2J\0 %VW0\n"),
+        ("fx", "fx=sim-fx:FX2N", "LD X0\nOUT\u{1b}[2J\0 Y0\n"),
+        ("umpk", "lab=sim-umpk:UMPK16", "LD I0\nST\u{1b}[2J\0 Q0\n"),
+    ];
+    for (name, dev, text) in cases {
+        let p = dir.join(format!("{name}.il"));
+        std::fs::write(&p, text).unwrap();
+        let url = format!("{dev}?program={}", p.display());
+        for json in [false, true] {
+            let args: &[&str] = if json {
+                &["--json", "--time", "stepped", "--device", &url]
+            } else {
+                &["--time", "stepped", "--device", &url]
+            };
+            let o = run(args, "sim program\n");
+            let e = both(&o);
+            assert!(!o.status.success(), "{name}: {e}");
+            assert!(no_control_characters(&e), "{name} (json {json}): {e:?}");
+            let escaped = if json { "\\\\u{1B}[2J\\\\0" } else { "\\u{1B}[2J\\0" };
+            assert!(e.contains(&format!("{name}.il:2:1")) && e.contains(escaped), "{name} (json {json}): {e}");
+        }
     }
 }

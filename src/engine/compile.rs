@@ -252,8 +252,13 @@ fn err(file: &str, pos: Pos, msg: impl std::fmt::Display) -> Error {
 }
 
 /// Compiles IL `text` (named `file` in messages) for `fam`. Statements before any POU
-/// header form the main program.
+/// header form the main program. A refusal quoting the text writes its control characters
+/// out ([`crate::core::encoding::printable`]).
 pub fn compile<F: Family + ?Sized>(text: &str, file: &str, fam: &F) -> Result<Program> {
+    compile_text(text, file, fam).map_err(crate::core::encoding::printable_error)
+}
+
+fn compile_text<F: Family + ?Sized>(text: &str, file: &str, fam: &F) -> Result<Program> {
     let stmts = source::parse(text).map_err(|e| err(file, e.pos, e.message))?;
     let mut cx = Ctx {
         fam,

@@ -1044,7 +1044,8 @@ pub struct Loaded {
 impl Loaded {
     /// Translates and compiles FX list `text` (named `file` in messages) for `model`.
     pub fn load(text: &str, file: &str, model: &'static Model) -> Result<Loaded> {
-        let tr = translate(text, file, model)?;
+        // Refusals quote the list's text: its control characters are written out.
+        let tr = translate(text, file, model).map_err(crate::core::encoding::printable_error)?;
         let fam = FxFamily { model };
         let mut prog = engine::compile(&tr.text, file, &fam).map_err(|e| tr.remap(file, e))?;
         // Listings and faults name the FX source line.

@@ -292,7 +292,7 @@ impl IlRunner {
     pub fn load(text: &str, file: &str, model: &'static Model) -> Result<IlRunner> {
         let fam = UmpkFamily::new(model);
         let prog = engine::compile(text, file, &fam)?;
-        check(&prog)?;
+        check(&prog).map_err(crate::core::encoding::printable_error)?;
         let cpu = Cpu::new(&prog);
         let name = std::path::Path::new(file).file_name().map_or(file.into(), |n| n.to_string_lossy().into_owned());
         Ok(IlRunner { prog, cpu, file: name, text: text.into(), source: file.into(), last_ns: 0, fault: None })
