@@ -232,11 +232,11 @@ pub fn program(base: u32) -> String {
    KincoBuilder's S7-200-style IL. If KincoBuilder rejects a line, enter that network in
    LD with the logic its comment gives.
 
-   Every command acts every time it is asked (docs/agent.md, section Every command acts):
-   no jump skips an instruction network, so PLS and PSTOP, which act on the rising edge of
-   their enable (manual section 3.4.2), see it fall on every scan without a request; and a
-   request never executes in the scan right after one did, so the enable is low for at least
-   one scan between two executions of the same instruction.
+   Every command acts every time it is asked (docs/agent.md, section \"Every command acts
+   every time\"): no jump skips an instruction, so PLS and PSTOP, which act on the rising
+   edge of their enable (manual section 3.4.2), see it fall on every scan without a request;
+   and a request never executes in the scan right after one did, so the enable is low for at
+   least one scan between two executions of the same instruction.
 
    Network 3 refuses malformed requests before anything runs (docs/agent.md, section Checks).
    Word compares are signed INT compares, so each `word < bound` test also catches the
