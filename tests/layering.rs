@@ -1,0 +1,356 @@
+//! One way down: the layers of `src/` and the rule that keeps them (docs/development.md,
+//! "Layers"). Each top-level module has a layer; a `crate::` path in a module may name its own
+//! layer or a lower one, never a higher one, and a device family never names another family.
+//! Inside one folder, the files (other than `mod.rs`) never depend on each other in a cycle.
+//!
+//! The test reads the source as text (comments and `#[cfg(test)]` code aside: a test may build
+//! a whole session to exercise a family) and names every line that breaks the rule. Exceptions
+//! still standing are listed in [`EXCEPTIONS`], each with its reason; a listed exception that no
+//! longer occurs fails the test too, so the list only shrinks.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::{Path, PathBuf};
+
+/// The layers, lowest first. A module may use modules of its own layer and of layers below.
+const LAYERS: &[(&str, &[&str])] = &[
+    ("core", &["core"]),
+    ("base", &["engine", "paths", "signals", "plot"]),
+    ("families", &["k2", "servo", "umpk", "fx"]),
+    ("devices", &["wiring", "guard", "snapshot", "pending", "session", "profile", "confine", "output"]),
+    ("services", &["record"]),
+    ("front ends", &["fleet", "lab", "script", "shell", "publish"]),
+    ("cli", &["cli", "fuzzing"]),
+];
+
+/// Modules of one layer that must not name each other: the device families.
+const FAMILIES: &[&str] = &["k2", "servo", "umpk", "fx"];
+
+/// Modules that must name no device family at all (design guide: "core and the guard name no
+/// family"): a new family is added without touching them.
+const FAMILY_NEUTRAL: &[&str] = &["core", "engine", "guard", "pending"];
+
+const CAPABILITY: &str = "two capability hooks (as_k2/as_servo) still name their families";
+const GUARD_CHANGES: &str = "the change lists of K2 instructions and servo writes still live in the guard";
+const SIGNAL_MODEL: &str = "the wiring signal model still lives above the families";
+
+/// `(file, module it names, reason)`: imports that still break the rule, each with its reason.
+const EXCEPTIONS: &[(&str, &str, &str)] = &[
+    ("src/core/device.rs", "k2", CAPABILITY),
+    ("src/core/device.rs", "servo", CAPABILITY),
+    ("src/pending.rs", "k2", CAPABILITY),
+    ("src/pending.rs", "servo", CAPABILITY),
+    ("src/guard.rs", "k2", GUARD_CHANGES),
+    ("src/guard.rs", "servo", GUARD_CHANGES),
+    ("src/k2/helpers/mod.rs", "guard", GUARD_CHANGES),
+    ("src/servo/ds402.rs", "guard", GUARD_CHANGES),
+    ("src/k2/sim/mod.rs", "wiring", SIGNAL_MODEL),
+    ("src/k2/sim/wired.rs", "wiring", SIGNAL_MODEL),
+    ("src/servo/sim/wired.rs", "wiring", SIGNAL_MODEL),
+    ("src/confine.rs", "shell", "the sandbox's write rule still lives in the shell's file helpers"),
+    ("src/paths.rs", "script", "the Lua module search path is still computed by the script layer"),
+    ("src/profile.rs", "fleet", "fleet definitions are still parsed by the fleet runner's module"),
+    ("src/profile.rs", "record", "device names for recordings are still kept by the recorder"),
+    ("src/session.rs", "record", "device names for recordings are still kept by the recorder"),
+    ("src/session.rs", "lab", "the simulated-time budget still lives in the lab module"),
+    ("src/umpk/sim/control.rs", "k2", "the frequency parser is still the K2 helpers' own"),
+];
+
+/// Sibling-file cycles that still stand: `(folder, reason)`.
+const CYCLE_EXCEPTIONS: &[(&str, &str)] = &[
+    ("src/cli", "serve and serve_fleet share the readiness line"),
+    ("src/core/link", "the line, serial, RFC 2217 and TCP transports share their settings types"),
+    ("src/fx", "memory, plc, program and space share the device image types"),
+    ("src/k2/agent", "the IL generator and the protocol share the mailbox layout"),
+    ("src/k2/sim", "the Modbus server and its network loop share the connection state"),
+    ("src/k2/sim/program", "the family hooks and motion instructions call each other"),
+    ("src/script", "the Lua API, device handles, bridge, snapshot and wire modules call each other"),
+    ("src/umpk/sim", "logic, snapshot and program share the engine state"),
+];
+
+fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
+    for e in std::fs::read_dir(dir).unwrap() {
+        let p = e.unwrap().path();
+        if p.is_dir() {
+            rust_files(&p, out);
+        } else if p.extension().is_some_and(|x| x == "rs") {
+            out.push(p);
+        }
+    }
+}
+
+fn layer_of(module: &str) -> Option<usize> {
+    LAYERS.iter().position(|(_, mods)| mods.contains(&module))
+}
+
+/// The file's code without comments and without its `#[cfg(test)]` modules (which run to the
+/// end of the file by this project's convention), as (line number, text).
+fn code_lines(text: &str) -> Vec<(usize, String)> {
+    let mut out = Vec::new();
+    let mut in_block_comment = false;
+    let lines: Vec<&str> = text.lines().collect();
+    for (i, raw) in lines.iter().enumerate() {
+        let t = raw.trim_start();
+        if t.starts_with("#[cfg(test)]") {
+            let next = lines.get(i + 1).map(|l| l.trim_start()).unwrap_or("");
+            if next.starts_with("mod ") && next.ends_with('{') {
+                break;
+            }
+            if next.starts_with("mod ") && next.ends_with(';') {
+                continue; // a test module in its own file (that file is skipped by name)
+            }
+        }
+        if in_block_comment {
+            if let Some(end) = t.find("*/") {
+                in_block_comment = false;
+                out.push((i + 1, t[end + 2..].to_string()));
+            }
+            continue;
+        }
+        if t.starts_with("//") {
+            continue;
+        }
+        if t.starts_with("/*") && !t.contains("*/") {
+            in_block_comment = true;
+            continue;
+        }
+        // `//` after code starts a comment, unless inside a string (URLs like tcp://).
+        let code = raw
+            .match_indices("//")
+            .map(|(p, _)| p)
+            .find(|&p| raw[..p].matches('"').count() % 2 == 0)
+            .map_or(*raw, |p| &raw[..p]);
+        out.push((i + 1, code.to_string()));
+    }
+    out
+}
+
+/// The top-level modules a line names through `crate::`, grouped imports included.
+fn crate_refs(line: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut rest = line;
+    while let Some(p) = rest.find("crate::") {
+        let after = &rest[p + "crate::".len()..];
+        if let Some(group) = after.strip_prefix('{') {
+            let end = group.find('}').unwrap_or(group.len());
+            for item in group[..end].split(',') {
+                let name: String = item.trim().chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect();
+                if !name.is_empty() {
+                    out.push(name);
+                }
+            }
+        } else {
+            let name: String = after.chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect();
+            if !name.is_empty() {
+                out.push(name);
+            }
+        }
+        rest = &rest[p + "crate::".len()..];
+    }
+    out
+}
+
+/// The top-level module of a file under src/ (`src/k2/sim/mod.rs` → `k2`, `src/guard.rs` →
+/// `guard`), or `None` for the crate roots and the binaries.
+fn module_of(rel: &Path) -> Option<String> {
+    let mut parts = rel.iter().map(|p| p.to_string_lossy().into_owned());
+    let first = parts.next()?;
+    if first == "bin" || first == "lib.rs" || first == "main.rs" {
+        return None;
+    }
+    Some(first.trim_end_matches(".rs").to_string())
+}
+
+fn is_test_file(p: &Path) -> bool {
+    p.file_name().is_some_and(|n| n.to_string_lossy().ends_with("tests.rs"))
+}
+
+fn src() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("src")
+}
+
+#[test]
+fn every_module_has_a_layer() {
+    let mut files = Vec::new();
+    rust_files(&src(), &mut files);
+    let mut missing = BTreeSet::new();
+    for f in &files {
+        if let Some(m) = module_of(f.strip_prefix(src()).unwrap()) {
+            if layer_of(&m).is_none() {
+                missing.insert(m);
+            }
+        }
+    }
+    assert!(missing.is_empty(), "modules with no layer in LAYERS: {missing:?}");
+}
+
+#[test]
+fn no_module_names_a_higher_layer_or_another_family() {
+    let mut files = Vec::new();
+    rust_files(&src(), &mut files);
+    files.sort();
+    let mut found: Vec<(String, String, String)> = Vec::new();
+    let mut seen_exceptions = BTreeSet::new();
+    for f in &files {
+        let rel = f.strip_prefix(src()).unwrap();
+        let Some(module) = module_of(rel) else { continue };
+        if is_test_file(f) {
+            continue;
+        }
+        let Some(own) = layer_of(&module) else { continue };
+        let text = std::fs::read_to_string(f).unwrap();
+        let rel_text = format!("src/{}", rel.to_string_lossy().replace('\\', "/"));
+        for (n, line) in code_lines(&text) {
+            for target in crate_refs(&line) {
+                if target == module {
+                    continue;
+                }
+                let Some(theirs) = layer_of(&target) else { continue };
+                let across = FAMILIES.contains(&module.as_str()) && FAMILIES.contains(&target.as_str());
+                let neutral = FAMILY_NEUTRAL.contains(&module.as_str()) && FAMILIES.contains(&target.as_str());
+                if theirs <= own && !across && !neutral {
+                    continue;
+                }
+                if EXCEPTIONS.iter().any(|(file, m, _)| *file == rel_text && *m == target) {
+                    seen_exceptions.insert((rel_text.clone(), target.clone()));
+                    continue;
+                }
+                let why = if across {
+                    "another family".to_string()
+                } else if neutral {
+                    format!("`{module}` is family-neutral")
+                } else {
+                    format!("layer `{}` above `{}`", LAYERS[theirs].0, LAYERS[own].0)
+                };
+                found.push((format!("{rel_text}:{n}"), target.clone(), format!("{why}: {}", line.trim())));
+            }
+        }
+    }
+    let report: Vec<String> = found.iter().map(|(at, m, why)| format!("{at} names crate::{m} ({why})")).collect();
+    assert!(report.is_empty(), "imports against the layer order:\n{}", report.join("\n"));
+    let stale: Vec<String> = EXCEPTIONS
+        .iter()
+        .filter(|(f, m, _)| !seen_exceptions.contains(&(f.to_string(), m.to_string())))
+        .map(|(f, m, _)| format!("{f} → {m}"))
+        .collect();
+    assert!(stale.is_empty(), "exceptions that no longer occur (remove them): {stale:?}");
+}
+
+/// The sibling files a file in `folder` names (`super::x`, `crate::folder::x`, `use super::{x, y}`).
+fn sibling_refs(line: &str, crate_path: &str, siblings: &BTreeSet<String>) -> BTreeSet<String> {
+    let mut out = BTreeSet::new();
+    for prefix in ["super::".to_string(), format!("crate::{crate_path}::")] {
+        let mut start = 0;
+        while let Some(found) = line[start..].find(prefix.as_str()) {
+            let p = start + found;
+            // `super::super::…` names the folder above: not a sibling.
+            let after = &line[p + prefix.len()..];
+            let before_ok = prefix != "super::" || !line[..p].ends_with("super::");
+            let names: Vec<String> = if let Some(group) = after.strip_prefix('{') {
+                let end = group.find('}').unwrap_or(group.len());
+                group[..end]
+                    .split(',')
+                    .map(|i| i.trim().chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect())
+                    .collect()
+            } else {
+                vec![after.chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect()]
+            };
+            if before_ok && !after.starts_with("super::") {
+                for n in names {
+                    if siblings.contains(&n) {
+                        out.insert(n);
+                    }
+                }
+            }
+            start = p + prefix.len();
+        }
+    }
+    out
+}
+
+#[test]
+fn no_cycles_between_the_files_of_a_folder() {
+    let mut files = Vec::new();
+    rust_files(&src(), &mut files);
+    let mut folders: BTreeMap<PathBuf, Vec<PathBuf>> = BTreeMap::new();
+    for f in files {
+        if f.file_name().is_some_and(|n| n == "mod.rs" || n == "lib.rs" || n == "main.rs") || is_test_file(&f) {
+            continue;
+        }
+        folders.entry(f.parent().unwrap().to_path_buf()).or_default().push(f);
+    }
+    let mut cycles = Vec::new();
+    for (folder, files) in &folders {
+        let rel = folder.strip_prefix(src()).unwrap_or(Path::new(""));
+        if rel.as_os_str().is_empty() || rel.starts_with("bin") {
+            continue; // top-level modules are layered by the test above
+        }
+        let crate_path = rel.to_string_lossy().replace(['/', '\\'], "::");
+        let name = |f: &Path| f.file_stem().unwrap().to_string_lossy().into_owned();
+        let mut siblings: BTreeSet<String> = files.iter().map(|f| name(f)).collect();
+        // A sibling folder with a mod.rs is a sibling module too.
+        for e in std::fs::read_dir(folder).unwrap() {
+            let p = e.unwrap().path();
+            if p.join("mod.rs").exists() {
+                siblings.insert(p.file_name().unwrap().to_string_lossy().into_owned());
+            }
+        }
+        let mut edges: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
+        for f in files {
+            let text = std::fs::read_to_string(f).unwrap();
+            let me = name(f);
+            let mut to = BTreeSet::new();
+            for (_, line) in code_lines(&text) {
+                to.extend(sibling_refs(&line, &crate_path, &siblings));
+            }
+            to.remove(&me);
+            edges.insert(me, to);
+        }
+        // Depth-first search for a cycle among the files.
+        fn visit(
+            n: &str,
+            edges: &BTreeMap<String, BTreeSet<String>>,
+            stack: &mut Vec<String>,
+            done: &mut BTreeSet<String>,
+            out: &mut Vec<Vec<String>>,
+        ) {
+            if let Some(pos) = stack.iter().position(|s| s == n) {
+                out.push(stack[pos..].to_vec());
+                return;
+            }
+            if done.contains(n) {
+                return;
+            }
+            stack.push(n.to_string());
+            for m in edges.get(n).into_iter().flatten() {
+                visit(m, edges, stack, done, out);
+            }
+            stack.pop();
+            done.insert(n.to_string());
+        }
+        let mut found = Vec::new();
+        let mut done = BTreeSet::new();
+        for n in edges.keys() {
+            visit(n, &edges, &mut Vec::new(), &mut done, &mut found);
+        }
+        let folder_text = format!("src/{}", rel.to_string_lossy().replace('\\', "/"));
+        if !found.is_empty() && !CYCLE_EXCEPTIONS.iter().any(|(f, _)| *f == folder_text) {
+            for c in found {
+                cycles.push(format!("{folder_text}: {} → {}", c.join(" → "), c[0]));
+            }
+        }
+    }
+    assert!(cycles.is_empty(), "files of one folder that depend on each other in a cycle:\n{}", cycles.join("\n"));
+}
+
+#[test]
+fn the_reader_sees_through_comments_and_groups() {
+    assert_eq!(crate_refs("use crate::{fx::driver as fx, k2::driver as k2};"), vec!["fx", "k2"]);
+    assert_eq!(crate_refs("let x = crate::core::value::mask(3);"), vec!["core"]);
+    let lines = code_lines("use a;\n// crate::k2::x\nlet u = \"tcp://h\"; // crate::fx\n#[cfg(test)]\nmod tests {\nuse crate::session;\n}\n");
+    let all: Vec<String> = lines.iter().flat_map(|(_, l)| crate_refs(l)).collect();
+    assert!(all.is_empty(), "{all:?}");
+    let sib: BTreeSet<String> = ["plc", "memory"].iter().map(|s| s.to_string()).collect();
+    let r = sibling_refs("use super::{plc::Plc, memory};", "fx", &sib);
+    assert_eq!(r.len(), 2);
+    assert!(sibling_refs("use super::super::plc;", "fx", &sib).is_empty());
+}
