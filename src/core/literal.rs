@@ -341,6 +341,18 @@ pub fn parse_timeout(text: &str) -> Result<std::time::Duration, String> {
     Ok(std::time::Duration::from_micros(us.round() as u64))
 }
 
+/// A timeout in messages, to the microsecond `parse_timeout` keeps: `500 ms`, `0.5 ms`,
+/// `2.25 ms` — never a user's `timeout=0.5` shown as `0 ms`. The number reads back as the
+/// same `timeout=` (a bare number is milliseconds).
+pub fn millis_text(d: std::time::Duration) -> String {
+    let us = d.as_micros();
+    let frac = format!("{:03}", us % 1000);
+    match frac.trim_end_matches('0') {
+        "" => format!("{} ms", us / 1000),
+        f => format!("{}.{f} ms", us / 1000),
+    }
+}
+
 impl Literal {
     /// Checks this literal against an operand of type `target` whose significant width is
     /// `bits` (equal to `target.bits()` except for bit groups such as `K1M0`, 4 bits), and
@@ -548,5 +560,22 @@ mod tests {
         }
         assert!(parse_timeout("0").unwrap_err().contains("more than zero"));
         assert!(parse_timeout("-5").is_err());
+    }
+
+    #[test]
+    fn a_timeout_in_messages_reads_back_as_the_same_timeout() {
+        for (given, shown) in
+            [("500", "500 ms"), ("0.5", "0.5 ms"), ("2.25ms", "2.25 ms"), ("1s", "1000 ms"), ("1us", "0.001 ms")]
+        {
+            assert_eq!(millis_text(parse_timeout(given).unwrap()), shown, "{given}");
+        }
+        let mut rng = crate::core::test_rng::Rng(0x71_3E0C);
+        for _ in 0..2000 {
+            let us = 1 + rng.below(86_400_000_000);
+            let d = std::time::Duration::from_micros(us);
+            let text = millis_text(d);
+            let back = parse_timeout(text.trim_end_matches(" ms")).unwrap();
+            assert_eq!(back, d, "{text}");
+        }
     }
 }

@@ -50,6 +50,7 @@ use super::sim::{LinkServer, Plc, PortServer, Server, SimLink};
 use super::space::{FxSpace, Proto};
 use crate::core::link::line::{self as lines, SharedLine, Transport};
 use crate::core::link::serial::{Carrier, LineSettings, Parity};
+use crate::core::literal::millis_text;
 use crate::core::trace::{self, Dir, Proto as Wire};
 use crate::core::url::DeviceUrl;
 use crate::core::{Clock, Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
@@ -265,8 +266,10 @@ pub struct Driver {
     serial: LineSettings,
     /// Added to every timeout: a device server's network.
     allowance: Duration,
-    /// The URL's `timeout=`, when given: it replaces the computed timeout.
+    /// The URL's `timeout=`, when given: it replaces the computed timeout. With the text
+    /// the user wrote, which messages quote.
     timeout: Option<Duration>,
+    timeout_given: Option<String>,
     retries: u32,
     requests: u64,
     /// Frames resent after a NAK, a bad sum, noise or a reply that did not fit.
@@ -309,6 +312,7 @@ impl Driver {
             serial: DEFAULT_LINE,
             allowance: Duration::ZERO,
             timeout: None,
+            timeout_given: None,
             retries: DEFAULT_RETRIES,
             requests: 0,
             resent: 0,
@@ -342,12 +346,13 @@ impl Driver {
     }
 
     /// `543 ms (281 characters at 9600 7E1: 293 ms on the wire, …)`: the timeout and where it
-    /// comes from, for messages.
+    /// comes from, for messages; a timeout the user set is quoted as given
+    /// (`250 ms (timeout=250ms)`, `0.5 ms (timeout=0.5)`).
     fn timeout_text(&self, req: usize, reply: usize) -> String {
-        let t = self.timeout_for(req, reply).as_millis();
-        if self.timeout.is_some() {
-            return format!("{t} ms (timeout=)");
+        if let (Some(t), Some(given)) = (self.timeout, &self.timeout_given) {
+            return format!("{} (timeout={given})", millis_text(t));
         }
+        let t = self.timeout_for(req, reply).as_millis();
         let mut parts = vec![format!(
             "{} characters at {}: {} ms on the wire",
             req + reply,
@@ -672,10 +677,11 @@ impl Driver {
     }
 
     fn late_hint(&self, req: usize, reply: usize) -> String {
+        let t = self.timeout_for(req, reply);
         format!(
-            "the PLC answers later than {} ms: raise the timeout (timeout={}ms in the URL), or check its scan time (D8012)",
-            self.timeout_for(req, reply).as_millis(),
-            2 * self.timeout_for(req, reply).as_millis()
+            "the PLC answers later than {}: raise the timeout (timeout={} in the URL), or check its scan time (D8012)",
+            millis_text(t),
+            millis_text(2 * t).replace(' ', "")
         )
     }
 
@@ -1057,8 +1063,10 @@ impl Device for Driver {
 
     fn set_option(&mut self, key: &str, value: &str) -> Result<()> {
         match key {
-            "timeout" if value == "auto" => self.timeout = None,
-            "timeout" => self.timeout = Some(parse_timeout(value)?),
+            "timeout" if value == "auto" => (self.timeout, self.timeout_given) = (None, None),
+            "timeout" => {
+                (self.timeout, self.timeout_given) = (Some(parse_timeout(value)?), Some(value.trim().to_string()))
+            }
             "retries" => {
                 self.retries = value
                     .parse()
@@ -1526,6 +1534,29 @@ mod tests {
         p.read(&ops(&p, &["D0"])).unwrap_err();
         let sent = sent.lock().unwrap().clone();
         assert_eq!(sent.iter().map(|f| f[0]).collect::<Vec<_>>(), vec![ENQ, port::STX, ENQ, port::STX], "{sent:?}");
+    }
+
+    /// A timeout the user set is quoted as given in the no-reply message, to the
+    /// microsecond (never `timeout=` with the value lost, never `0 ms`).
+    #[test]
+    fn a_no_reply_message_keeps_the_timeout_the_user_gave() {
+        let model = Model::find("FX2N").unwrap();
+        let plc = sim_plc(model, None, &Clock::stepped()).unwrap();
+        let s = Settings::default();
+        let line = lines::private("one-station", Box::new(SimLink::new(plc, Box::new(LinkServer::new(0, s)))));
+        let info = DeviceInfo { family: "fx", model: "test".into(), link: "x".into(), simulated: true };
+        let mut d = Driver::link(line, model, Header { station: 3, pc: 0xFF, wait: 0 }, s, info);
+        for (given, shown) in
+            [("40ms", "40 ms (timeout=40ms)"), ("2.5", "2.5 ms (timeout=2.5)"), ("0.03s", "30 ms (timeout=0.03s)")]
+        {
+            d.set_option("timeout", given).unwrap();
+            let e = d.read(&ops(&d, &["D0"])).unwrap_err();
+            assert!(e.message.contains(&format!("within {shown}")), "{given}: {e}");
+        }
+        // `auto` goes back to the timeout computed from the line, with its parts.
+        d.set_option("timeout", "auto").unwrap();
+        let e = d.read(&ops(&d, &["D0"])).unwrap_err();
+        assert!(e.message.contains("characters at 9600") && !e.message.contains("timeout="), "{e}");
     }
 
     // Public drivers (node-fxplc `FXPLCClient._sendCommand`, KrystianD/fxplc `_send_command`)
