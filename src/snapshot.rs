@@ -253,6 +253,39 @@ impl Sections {
     }
 }
 
+/// Brings every simulator to now before a capture: the drives, then the PLCs (whose wires
+/// read the drives), twice. A simulator works lazily — a drive handles what happened since
+/// it was last asked; a PLC's wire keeps a drive's plan while it holds and skips asking
+/// while nothing can happen; a pulse output that ended reaches its drive as the PLC's step
+/// ends, after its wires were read — so without this the same machine could save
+/// different (equivalent) files, and a restored one, asked afresh, would not save the file
+/// it came from. The second pass lets the wires read what the first one's outputs did; no
+/// virtual time passes.
+fn settle(s: &mut Session) {
+    // The instant in seconds as a drive's line and as a PLC's wires work it out (from the
+    // clock's seconds and nanoseconds, from nanoseconds): they can differ in the last bit,
+    // and a drive keeps the later time it was brought to.
+    let now = s.clock.now();
+    let now = now.as_secs_f64().max(now.as_nanos() as f64 / 1e9);
+    for _ in 0..2 {
+        for i in 0..s.entries().len() {
+            if let Some(line) = s.entry(i).device.as_servo().and_then(|sv| sv.simulator()) {
+                let mut line = line.lock().unwrap_or_else(|p| p.into_inner());
+                for id in line.ids() {
+                    if let Some(d) = line.drive(id) {
+                        d.advance(now);
+                    }
+                }
+            }
+        }
+        for i in 0..s.entries().len() {
+            if let Some(sim) = s.entry(i).device.as_k2().and_then(|k| k.as_sim()) {
+                sim.advance();
+            }
+        }
+    }
+}
+
 /// The wires a simulated PLC hosts, with their state.
 fn capture_wiring(sim: &crate::k2::sim::K2Sim) -> Vec<WireSnap> {
     sim.wiring
@@ -265,13 +298,13 @@ impl Snapshot {
     /// Captures every simulator in the session (real devices have no simulated state).
     pub fn capture(s: &mut Session) -> Result<Snapshot> {
         let clock = s.clock.clone();
+        settle(s);
         let mut devices = BTreeMap::new();
         for i in 0..s.entries().len() {
             let e = s.entry(i);
             let name = e.name.clone();
             let dev = &mut e.device;
             if let Some(sim) = dev.as_k2().and_then(|k| k.as_sim()) {
-                sim.advance();
                 let mut sections = BTreeMap::new();
                 sections.insert("k2".to_string(), enc(sim.snapshot_state())?);
                 let wires = capture_wiring(sim);
