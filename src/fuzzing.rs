@@ -84,16 +84,26 @@ pub fn literal(data: &[u8]) {
     let _ = crate::k2::helpers::parse_freq_hz(&t);
 }
 
-/// The command-line lexer: commands, words, options.
+/// The command-line lexer: commands, words, options, quoted text, the manual's spelling read
+/// in operand words only; and any text [`quote`](crate::shell::lex::quote)d is one word that
+/// reads back as itself.
 pub fn lexer(data: &[u8]) {
+    use crate::shell::lex;
     let t = text(data);
-    if let Ok(parts) = crate::shell::lex::split_commands(&t) {
+    if let Ok(parts) = lex::split_commands(&t) {
         for (_, p) in parts {
-            if let Ok(w) = crate::shell::lex::words(p) {
-                let _ = crate::shell::lex::options(&w);
+            if let Ok(w) = lex::words(p) {
+                let _ = lex::options(&w);
+                w.iter().for_each(|(_, word)| drop(lex::unquote(word)));
+            }
+            for cmd in ["sim", "trace", "umpk", "get"] {
+                let _ = crate::shell::fold_operands(cmd, p);
             }
         }
     }
+    let q = lex::quote(&t);
+    let w = lex::words(&q).unwrap_or_default();
+    assert!(w.len() == 1 && lex::unquote(w[0].1) == t, "quote({t:?}) gave {q}, read back as {w:?}");
 }
 
 /// Device URLs, and the numbers the drivers read from them (`baud=`, `unit=`, `id=`,

@@ -174,3 +174,33 @@ fn bare_numbers_follow_one_unit_rule() {
     let r = sh.exec("servo move abs 0 speed=2731dec");
     assert!(r[0].as_ref().unwrap().message.as_deref().unwrap_or("").contains("(2731 DEC)"));
 }
+
+/// Quoted text is text: a `#` or `;` in quotes neither comments nor splits, and neither quoted
+/// words nor file paths are read in the manual's spelling, while the operands beside them are.
+#[test]
+fn quotes_and_paths_are_read_as_typed() {
+    assert_eq!(super::strip_comment(r#"eeprom dump "a #1.bin" # note"#), r#"eeprom dump "a #1.bin" "#);
+    assert_eq!(super::strip_comment("trace VW0 to='#1 .csv'"), "trace VW0 to='#1 .csv'");
+    // The manual's spaced literal with a Cyrillic В is still a value, not a comment.
+    assert_eq!(super::strip_comment("set SMB67=В # 16 # 85"), "set SMB67=В # 16 # 85");
+    let mut sh = shell();
+    let e = error(&mut sh, "sim program load Проверка/светофор.il");
+    assert!(e.message.contains("Проверка/светофор.il"), "the path as typed: {e}");
+    let e = error(&mut sh, "sim program load 'Лаб 1/светофор.il'; get VW0");
+    assert!(e.message.contains("Лаб 1/светофор.il"), "{e}");
+    let r = sh.exec("set VW0=7; get 'VW0'");
+    assert!(r[1].is_err(), "a quoted word is text, never an operand: {:?}", r[1]);
+}
+
+/// The shell's reading of a line is linear in its length, whatever it holds.
+#[test]
+fn long_lines_are_read_in_linear_time() {
+    for unit in ["# ", "В # ", "% ", "'a' ", "ВW0 ", "\"\\\"\" ", "to=x "] {
+        let line = format!("trace {}", unit.repeat(100_000));
+        let t = std::time::Instant::now();
+        let _ = super::strip_comment(&line);
+        let _ = super::fold_operands("trace", &line);
+        let _ = super::fold_operands("sim", &format!("program load {line}"));
+        assert!(t.elapsed() < std::time::Duration::from_secs(2), "{unit:?}: {:?}", t.elapsed());
+    }
+}

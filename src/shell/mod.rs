@@ -65,9 +65,10 @@ fn strip_comment(line: &str) -> &str {
             && (i == 0 || b[i - 1].is_ascii_whitespace())
             && b.get(i + 1).is_none_or(|n| n.is_ascii_whitespace())
         {
-            let before = word_before(&line[..i]);
-            let folded = crate::core::text::fold_manual_spelling(before);
-            if !crate::core::literal::is_literal_head(folded.as_ref().map_or(before, |f| f.0.as_str())) {
+            // Read in the manual's spelling with the `#` after it (`В # 16 # 85` is `B#16#85`).
+            let before = format!("{} #", word_before(&line[..i]));
+            let folded = crate::core::text::fold_manual_spelling(&before).map_or(before, |f| f.0);
+            if !crate::core::literal::is_literal_head(folded.trim_end_matches(" #")) {
                 return &line[..i];
             }
         }

@@ -113,9 +113,8 @@ pub struct TextArg {
 /// Where the text is, after a [`TextArg`]'s sub-command words.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Text {
-    /// The next word.
-    Word,
-    /// Every word after them.
+    /// Every word after them (a command that takes one file refuses more words, and names
+    /// them as typed).
     Rest,
     /// The value of this `key=` option, anywhere after them.
     Option(&'static str),
@@ -127,17 +126,16 @@ const fn text(cmd: &'static str, after: &'static [&'static str], what: Text, pla
 
 /// Every command word that is text (see [`TextArg`]).
 pub static TEXT_ARGS: &[TextArg] = &[
-    text("sim", &["program", "load"], Text::Word, "FILE.il"),
-    text("sim", &["snapshot", "save"], Text::Word, "NAME"),
-    text("sim", &["snapshot", "restore"], Text::Word, "NAME"),
+    text("sim", &["program", "load"], Text::Rest, "FILE.il"),
+    text("sim", &["snapshot", "save"], Text::Rest, "NAME"),
+    text("sim", &["snapshot", "restore"], Text::Rest, "NAME"),
     text("sim", &["break"], Text::Rest, "FILE:LINE"),
-    text("eeprom", &["dump"], Text::Word, "FILE"),
-    text("eeprom", &["restore"], Text::Word, "FILE"),
+    text("eeprom", &["dump"], Text::Rest, "FILE"),
+    text("eeprom", &["restore"], Text::Rest, "FILE"),
     text("trace", &[], Text::Option("to"), "to=FILE.csv"),
     text("plot", &[], Text::Option("to"), "to=FILE.png"),
     text("profile", &[], Text::Option("to"), "to=FILE.png"),
-    text("umpk", &["program"], Text::Word, "FILE.hex"),
-    text("umpk", &["program"], Text::Option("info"), "info=\"…\""),
+    text("umpk", &["program"], Text::Rest, "FILE.hex"),
     text("umpk", &["send"], Text::Rest, "TEXT"),
     text("lab", &["new"], Text::Rest, "NAME"),
     text("lab", &["check"], Text::Rest, "LAB"),
@@ -165,11 +163,6 @@ pub fn text_words(cmd: &str, words: &[&str]) -> Vec<bool> {
             }
             let from = s + n;
             match t.what {
-                Text::Word => {
-                    if let Some(m) = mask.get_mut(from) {
-                        *m = true;
-                    }
-                }
                 Text::Rest => mask[from..].iter_mut().for_each(|m| *m = true),
                 Text::Option(key) => {
                     for (m, w) in mask[from..].iter_mut().zip(&words[from..]) {
