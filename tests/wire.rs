@@ -253,6 +253,18 @@ fn a_wrong_unit_id_gets_no_answer_and_the_message_says_what_to_check() {
     }
 }
 
+/// The no-reply message keeps the timeout the user gave, to the microsecond: `timeout=150.5`
+/// is `150.5 ms`, not `150 ms`.
+#[test]
+fn a_no_reply_message_keeps_the_timeout_the_user_gave() {
+    let srv = Server::start("K205-16DT", "0");
+    for url in srv.urls("model=K205-16DT&unit=7&timeout=150.5&retries=0") {
+        let mut s = session(&[("plc", &url)]);
+        let e = s.get(&["VW0"]).unwrap_err();
+        assert!(e.message.contains("no reply from unit 7 within 150.5 ms"), "{url}: {e}");
+    }
+}
+
 #[test]
 fn sm_t_and_c_are_refused_before_anything_is_sent() {
     let srv = Server::start("K205-16DT", "0");

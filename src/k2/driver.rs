@@ -593,8 +593,9 @@ fn with_port(target: &str) -> String {
     }
 }
 
+/// A timeout in a message, as exact as the user gave it (`timeout=0.5` is `0.5 ms`).
 fn ms(d: Duration) -> String {
-    format!("{} ms", d.as_millis())
+    crate::core::literal::millis_text(d)
 }
 
 impl Device for K2Wire {

@@ -255,8 +255,9 @@ impl Driver {
         late: usize,
         bad_checksum: Option<frame::BadChecksum>,
     ) -> Error {
-        let ms = self.timeout.as_millis();
-        let head = format!("no reply from drive id {} to {} of {} within {ms} ms", req.id, verb(req), req.object());
+        // As exact as the user gave it (`timeout=0.5` is `0.5 ms`, never `0 ms`).
+        let ms = crate::core::literal::millis_text(self.timeout);
+        let head = format!("no reply from drive id {} to {} of {} within {ms}", req.id, verb(req), req.object());
         let likely = if !is_request_func(req.func) {
             format!(
                 "likely cause: unknown function code {:02X} — a drive answers only reads (40) and writes (23, 2B, 2F) and ignores anything else",
@@ -279,7 +280,7 @@ impl Driver {
                 what.push(format!("{late} byte(s) came after the timeout and were dropped"));
             }
             return Error::link(format!("{head}; likely cause: late replies — {}", what.join(", "))).hint(format!(
-                "the drive answers later than the timeout: raise it (timeout= in the URL, now {ms}ms), and check that no other master talks on the line; a late reply is never taken for the next request's"
+                "the drive answers later than the timeout: raise it (timeout= in the URL, now {ms}), and check that no other master talks on the line; a late reply is never taken for the next request's"
             ));
         } else if !partial.is_empty() {
             format!(
@@ -649,6 +650,17 @@ mod tests {
         let e = d.write(&[(sw, Value::Int(1))]).unwrap_err();
         assert_eq!(e.kind, ErrorKind::Unsupported, "refused before sending");
         assert_eq!(d.requests(), 3, "nothing went on the wire");
+    }
+
+    #[test]
+    fn a_no_reply_message_keeps_the_timeout_the_user_gave() {
+        // Drive 3 is addressed but only drive 1 exists: the message says the timeout as given,
+        // to the microsecond (`timeout=2.5` is 2.5 ms, not 2).
+        for (given, shown) in [("2.5", "within 2.5 ms"), ("40ms", "within 40 ms"), ("1500us", "within 1.5 ms")] {
+            let mut d = sim(&format!("sim-servo:?id=3&drives=1&timeout={given}"));
+            let e = d.read(&[op(d.as_ref(), "statusword")]).unwrap_err();
+            assert!(e.message.contains(shown), "{given}: {e}");
+        }
     }
 
     #[test]

@@ -220,10 +220,10 @@ impl Driver {
                         self.rx.clear();
                         let got = if partial.len() > 2 { format!("; only {partial} came") } else { String::new() };
                         return Err(Error::link(format!(
-                            "no complete reply to {} from the UMPK on {} within {} ms{got}",
+                            "no complete reply to {} from the UMPK on {} within {}{got}",
                             codec::show(sent),
                             self.link,
-                            wait.as_millis()
+                            crate::core::literal::millis_text(wait)
                         ))
                         .hint("check power, the RS-232 cable (≤ 2 m) and 57600 8N1; a controller being reset is silent for ~0.6 s"));
                     }
@@ -405,9 +405,9 @@ impl Driver {
         }
         m?.ok_or_else(|| {
             Error::link(format!(
-                "no real-time monitor packet from the UMPK on {} within {} ms",
+                "no real-time monitor packet from the UMPK on {} within {}",
                 self.link,
-                self.timeout.as_millis()
+                crate::core::literal::millis_text(self.timeout)
             ))
         })
     }
@@ -815,6 +815,36 @@ mod tests {
         assert_eq!(e.kind, ErrorKind::Link);
         assert!(e.message.contains("unexpected reply"), "{e}");
         assert_eq!(d.requests, 1);
+    }
+
+    /// A line where nothing answers.
+    struct Deaf;
+
+    impl Transport for Deaf {
+        fn send(&mut self, _: &[u8]) -> io::Result<()> {
+            Ok(())
+        }
+        fn recv(&mut self, _: &mut [u8], _: Duration) -> io::Result<usize> {
+            Ok(0)
+        }
+    }
+
+    #[test]
+    fn a_no_reply_message_keeps_the_timeout_the_user_gave() {
+        let info = DeviceInfo { family: "umpk", model: "UMPK16".into(), link: "deaf".into(), simulated: true };
+        let mut d = Driver::attach(Box::new(Deaf), "deaf", &model::MODELS[1], info);
+        d.clock = Clock::stepped();
+        d.in_process = true;
+        for (given, shown) in [("2.5", "within 2.5 ms"), ("40ms", "within 40 ms"), ("0.25s", "within 250 ms")] {
+            d.set_option("timeout", given).unwrap();
+            let e = d.controller_info().unwrap_err();
+            assert!(e.message.contains("no complete reply") && e.message.contains(shown), "{given}: {e}");
+            // With the monitor on (as `umpk monitor` leaves it), no packet comes either.
+            d.monitor_on = true;
+            let e = d.snapshot().unwrap_err();
+            d.monitor_on = false;
+            assert!(e.message.contains("no real-time monitor packet") && e.message.contains(shown), "{given}: {e}");
+        }
     }
 
     #[test]
