@@ -231,3 +231,42 @@ fn the_ready_line_names_the_built_in_helper_and_an_edited_one_runs_as_the_progra
     let l = json(Some(&url), "rtc set 2026-11-22T10:00:00; rtc");
     assert!(l[1]["rtc"].as_str().unwrap_or("").starts_with("2026-11-22T10:00:0"), "{}", l[1]);
 }
+
+/// As reported: through the helper, `pto N freq=2kHz count=…` twice (two plcsh runs) counted
+/// only the first train, though both said "done by the helper", and a second `pstop` with
+/// only SM writes in between did not latch SM201.7. PLS and PSTOP act on the rising edge of
+/// their enable (K2 manual §3.4.2); the helper now lets it fall between requests. On every
+/// pulse channel: two trains count twice, PLS right after PLS runs twice, and PSTOP latches
+/// again after the latch was cleared.
+#[test]
+fn pls_and_pstop_act_every_time_they_are_asked_on_every_channel() {
+    use plcsh::k2::sm_map::PTO_REGS;
+    let srv = Server::start(&["--agent"]);
+    let url = srv.url();
+    let mut s = session(&url);
+    let model = plcsh::k2::catalog::lookup("K205-16DT").unwrap();
+    for r in PTO_REGS.iter().filter(|r| model.pto.iter().any(|c| c.channel == r.channel)) {
+        let (ch, idle, pos) = (r.channel, format!("SM{}.7", r.status), format!("SMD{}", r.pos_cv));
+        for train in 1..=2 {
+            let l = json(Some(&url), &format!("pto {ch} freq=2kHz count=100"));
+            assert!(l[0].to_string().contains("done by the helper"), "{l:?}");
+            poll_until(&mut s, &idle, Value::Bool(true));
+            assert_eq!(s.get(&[pos.as_str()]).unwrap()[0].1.value, Value::Int(100 * train), "PTO{ch}, train {train}");
+        }
+        // Back to back in one session: the second PLS restarts the running train (pulses
+        // already out stay counted), so more than one train's worth is added.
+        json(Some(&url), &format!("pls {ch}; pls {ch}"));
+        poll_until(&mut s, &idle, Value::Bool(true));
+        match s.get(&[pos.as_str()]).unwrap()[0].1.value {
+            Value::Int(v) => assert!(v > 300 && v <= 400, "PTO{ch}: {pos} = {v} after PLS twice"),
+            ref v => panic!("{pos}: {v:?}"),
+        }
+        let latch = format!("SM{}.7", r.pos_control);
+        for round in 1..=2 {
+            json(Some(&url), &format!("pstop {ch}"));
+            assert_eq!(s.get(&[latch.as_str()]).unwrap()[0].1.value, Value::Bool(true), "{latch}, PSTOP {round}");
+            json(Some(&url), &format!("set SMW{}=500; set {latch}=0", r.cycle));
+            assert_eq!(s.get(&[latch.as_str()]).unwrap()[0].1.value, Value::Bool(false), "{latch} cleared");
+        }
+    }
+}
