@@ -195,8 +195,11 @@ pub fn decode_status(s: u8) -> Vec<&'static str> {
     w
 }
 
-/// `hsc N status`.
-pub fn status(dev: &mut dyn Device, model: &Model, n: u8) -> Result<(Vec<Written>, Vec<String>)> {
+/// `hsc N status`: the registers as read, and in words. The current value is the
+/// counter's own: in a simulator the count itself, even while SMD38 … holds a value the user
+/// wrote there (a new current value, §3.3.2: loaded by the next HSC with SM37.6 … set — the
+/// words say so); on a PLC the SMD38 … it shows.
+pub fn status(dev: &mut dyn Device, model: &Model, n: u8) -> Result<Status> {
     let r = counter(model, n)?;
     let mut cv = K2Operand::dword(Area::SM, r.cv);
     cv.view = DataType::DInt;
@@ -216,7 +219,20 @@ pub fn status(dev: &mut dyn Device, model: &Model, n: u8) -> Result<(Vec<Written
     let b = vals[4].value.as_i64() as u8;
     let mut words: Vec<String> = decode_status(st).into_iter().map(String::from).collect();
     words.insert(0, if c & ctl::ENABLE != 0 { "enabled".into() } else { "disabled".into() });
-    words.push(format!("CV {}", vals[2].value.as_i64()));
+    let smd = vals[2].value.as_i64();
+    // The count wraps as a DINT, as SMD38 … shows it.
+    let live = dev
+        .as_k2()
+        .and_then(|k| k.as_sim())
+        .and_then(|s| s.hsc.iter().find(|h| h.regs.channel == n).map(|h| (h.cv() as i32 as i64, h.user_cv)));
+    let cv = live.map_or(smd, |(cv, _)| cv);
+    words.push(format!("CV {cv}"));
+    if live.is_some_and(|(cv, written)| written && cv != smd) {
+        words.push(format!(
+            "SMD{} holds {smd}, written: a new CV, loaded by the next HSC {n} with SM{}.6 set (§3.3.2)",
+            r.cv, r.control
+        ));
+    }
     if b & mpv::MULTI != 0 {
         words.push(format!(
             "multi-PV {}{}, segment {}",
@@ -227,7 +243,18 @@ pub fn status(dev: &mut dyn Device, model: &Model, n: u8) -> Result<(Vec<Written
     } else {
         words.push(format!("single PV {}", vals[3].value.as_i64()));
     }
-    Ok((vals, words))
+    Ok(Status { registers: vals, words, cv })
+}
+
+/// What `hsc N status` found.
+#[derive(Clone, Debug)]
+pub struct Status {
+    /// The registers as read (SMB36, SMB37, SMD38, SMD42, SMB141, SMB140 for HSC0).
+    pub registers: Vec<Written>,
+    /// Enabled, direction, compare, CV, a written SMD38 waiting for HSC, the PV(s).
+    pub words: Vec<String>,
+    /// The counter's current value (see [`status`]).
+    pub cv: i64,
 }
 
 #[cfg(test)]
@@ -300,6 +327,42 @@ mod tests {
         assert!(plan(m, &HscRequest { counter: 2, mode: 3, ..base.clone() }, b).is_err());
         assert!(plan(find("K209M-56DT").unwrap(), &HscRequest { counter: 3, ..base.clone() }, b).is_err());
         assert!(plan(m, &HscRequest { mode: 3, up: Some(true), ..base }, b).is_err(), "dir= with external direction");
+    }
+
+    /// §3.3.2: SMD38 is the new current value an HSC with SM37.6 set loads. Written while
+    /// the counter counts, it waits there; `hsc 0 status` still reports the count (and the
+    /// value waiting), the next HSC with SM37.6 loads it, one without drops it.
+    #[test]
+    fn status_reports_the_count_while_smd38_holds_a_written_value() {
+        use crate::core::Clock;
+        use crate::output::Style;
+        use crate::session::Session;
+        use crate::shell::Shell;
+        let mut s = Session::new(Clock::stepped());
+        s.open("plc", "sim:K205-16DT").unwrap();
+        let mut sh = Shell::new(s, Style { json: true, color: false });
+        let mut last = |line: &str| {
+            let r = sh.exec(line);
+            r.last().unwrap().as_ref().unwrap_or_else(|e| panic!("{line}: {}", e.1)).clone()
+        };
+        let cv = |o: &crate::output::Outcome| o.data["cv"].as_i64().unwrap();
+        let words = |o: &crate::output::Outcome| o.message.clone().unwrap_or_default();
+        last("hsc 0 mode=0 dir=up; sim input I0.1 freq=1kHz; sim step 1s");
+        let o = last("set SMD38=5; sim step 10ms; hsc status 0");
+        assert_eq!(cv(&o), 1010, "{}", words(&o));
+        assert!(words(&o).contains("CV 1010; SMD38 holds 5, written: a new CV"), "{}", words(&o));
+        assert_eq!(o.values[2].operand, "SMD38");
+        assert_eq!(o.values[2].value.as_i64(), 5, "the register as read");
+        // An HSC without SM37.6 (16#98: enable, write direction, up) keeps counting from the
+        // count; SMD38 shows the count again.
+        let o = last("hsc 0; sim step 10ms; hsc 0 status");
+        assert_eq!((cv(&o), o.values[2].value.as_i64()), (1020, 1020), "{}", words(&o));
+        assert!(!words(&o).contains("holds"), "{}", words(&o));
+        // With SM37.6 set (16#C8: enable, write CV, up) the next HSC loads it.
+        let o = last("set SMD38=7, SMB37=16#C8; hsc 0 status");
+        assert_eq!(cv(&o), 1020, "not before the HSC: {}", words(&o));
+        let o = last("hsc 0; sim step 10ms; hsc 0 status");
+        assert_eq!((cv(&o), o.values[2].value.as_i64()), (17, 17), "{}", words(&o));
     }
 
     #[test]

@@ -14,8 +14,12 @@
 //! an interval without a crossing costs a few multiplications.
 //!
 //! Behaviour where the manual is silent (stated assumptions):
-//! - SMD38 … shows the live count. A value the user writes there is kept (not overwritten
-//!   by the live count) until the next `HSC`, which loads it when SM37.6 is set.
+//! - SMD38 … shows the live count. A value the user writes there is the new current value
+//!   (§3.3.2, "write new current value into HSC": SM37.6 …): it is kept there (not
+//!   overwritten by the count) until the next `HSC`, which loads it when SM37.6 is set and
+//!   drops it otherwise (SMD38 then shows the count again). The count itself goes on
+//!   meanwhile ([`HscChannel::cv`]); `hsc N status` reports it, and the value waiting.
+//!   docs/pulse-hsc-rtc-eeprom.md states the rule.
 //! - SM141.5 "reset interrupt variable": 0 → `HSC` restarts the table at PV1 with the
 //!   current value as the relative reference; 1 → it continues from the current segment.
 //! - External reset (modes 1, 2, 4, 7, 10) acts on the edge into the active level (SM37.0:

@@ -53,10 +53,13 @@ fn hsc(sh: &mut Shell, args: Args) -> Result<Outcome> {
         let (dev, n) = k2cmd::channel(sh, word, "counter", 3)?;
         let name = k2cmd::name(sh, dev);
         let model = k2cmd::k2(sh, dev)?.model();
-        let (vals, words) = hh::status(sh.session.entry(dev).device.as_mut(), model, n).map_err(|e| e.device(&name))?;
-        let mut o = Outcome::new("hsc").text(format!("HSC{n}: {}", words.join("; "))).with("status", &words);
+        let st = hh::status(sh.session.entry(dev).device.as_mut(), model, n).map_err(|e| e.device(&name))?;
+        let mut o = Outcome::new("hsc")
+            .text(format!("HSC{n}: {}", st.words.join("; ")))
+            .with("status", &st.words)
+            .with("cv", st.cv);
         o.device = Some(name);
-        o.values = k2cmd::readings(&vals);
+        o.values = k2cmd::readings(&st.registers);
         return Ok(o);
     }
     let word =
