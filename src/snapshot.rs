@@ -567,9 +567,12 @@ pub fn dir() -> Option<PathBuf> {
     crate::paths::snapshots()
 }
 
-/// The file of snapshot `name` (a path when it has a `/` or ends in `.json`).
+/// The file of snapshot `name` (a path when it has a path separator of this system — `/`, and
+/// `\` on Windows — or a drive letter, or ends in `.json`).
 pub fn locate(name: &str) -> Result<PathBuf> {
-    if name.contains('/') || name.ends_with(".json") {
+    // A drive (`C:x`) is a path prefix on Windows only; elsewhere Path says there is none.
+    let drive = Path::new(name).components().any(|c| matches!(c, std::path::Component::Prefix(_)));
+    if name.chars().any(std::path::is_separator) || drive || name.ends_with(".json") {
         return Ok(PathBuf::from(name));
     }
     if name.is_empty() || !name.chars().all(|c| c.is_ascii_alphanumeric() || "_-.".contains(c)) {
@@ -600,6 +603,14 @@ pub fn list() -> Vec<(String, PathBuf)> {
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn a_name_with_this_systems_separator_or_a_drive_is_a_path() {
+        assert_eq!(locate("dir/s1").unwrap(), PathBuf::from("dir/s1"));
+        let name = format!("snaps{}before", std::path::MAIN_SEPARATOR);
+        assert_eq!(locate(&name).unwrap(), PathBuf::from(&name), "C:\\snaps\\before on Windows");
+        assert!(locate("before").unwrap().ends_with("before.json"), "a bare name is a named snapshot");
+    }
+
     use super::*;
     use crate::core::Clock;
 
