@@ -332,6 +332,10 @@ pub fn parse_timeout(text: &str) -> Result<std::time::Duration, String> {
     if us.is_nan() || us <= 0.0 {
         return Err(format!("`timeout={text}` must be more than zero (e.g. 200ms)"));
     }
+    if us < 0.5 {
+        // It would round to no wait at all: every request would time out at once.
+        return Err(format!("`timeout={text}` is shorter than a microsecond, the finest a link waits (e.g. 200ms)"));
+    }
     if us > MAX_TIMEOUT.as_micros() as f64 {
         return Err(format!(
             "`timeout={text}` is longer than a day ({} ms), the longest a link waits for a reply",
@@ -456,6 +460,12 @@ fn fits_f32(v: f64) -> bool {
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn a_timeout_below_a_microsecond_is_refused_not_made_zero() {
+        assert!(parse_timeout("0.0004").unwrap_err().contains("shorter than a microsecond"));
+        assert_eq!(parse_timeout("0.001").unwrap(), std::time::Duration::from_micros(1));
+    }
+
     use super::*;
 
     fn fit(s: &str, t: DataType) -> Result<Value, String> {
