@@ -297,7 +297,7 @@ pub fn il(data: &[u8]) {
     let _ = crate::umpk::sim::program::IlRunner::load(&t, "fuzz.il", &crate::umpk::model::MODELS[0]);
 }
 
-/// IL files as saved (core::encoding): UTF-8, UTF-16 with a byte-order mark, Windows-1251;
+/// IL files as saved (core::encoding): UTF-8, UTF-16 with or without a byte-order mark, Windows-1251;
 /// what decodes is compiled as a K2 program.
 pub fn il_encoding(data: &[u8]) {
     if let Ok((t, _)) = crate::core::encoding::decode(data) {
