@@ -30,6 +30,12 @@
 //! needs the same devices, by name, with the same models; it checks everything before
 //! changing anything it can check, then sets the clock and each device.
 //!
+//! A save brings every simulator to the saved instant first (`settle`: the same machine
+//! always writes the same file) and reads back what it encoded before writing anything
+//! ([`Snapshot::encode`]): every section must decode into the state it restores and encode to
+//! the same JSON, or the save is refused naming the device, the section and the value. Non-finite
+//! numbers are written as words ([`crate::core::float_serde`]), never as JSON `null`.
+//!
 //! Named snapshots live in the user's data directory (`…/plcsh/snapshots/NAME.json`);
 //! a NAME with a `/` or ending in `.json` is a file path.
 
