@@ -35,17 +35,17 @@
 use crate::core::device::Change;
 use crate::core::{Device, DeviceInfo, Error, Operand, OperandSpace, Result, Value};
 use crate::k2::catalog::Model;
-use crate::k2::sm_map::{HSC_REGS, PTO_REGS};
+use crate::k2::changes;
 use crate::k2::{Event, EventMatch, K2Ops, RtcTime};
 use crate::profile::Guard;
-use crate::servo::frame::{func, FRAME_LEN};
-use crate::servo::objects::{self, ObjRef};
+use crate::servo::frame::FRAME_LEN;
+use crate::servo::objects::ObjRef;
 use crate::servo::{units, ServoOps};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex};
 
-/// The pseudo-operand SET_RTC changes.
-pub const CLOCK: &str = "clock";
+/// The pseudo-operand SET_RTC changes (a profile's allow list may name it).
+pub use crate::core::device::CLOCK;
 
 /// A device behind the session's write rules.
 pub struct Guarded {
@@ -131,42 +131,6 @@ impl Guarded {
     }
 }
 
-/// The change a K2 instruction makes (module doc): `name` is `PLS`, `PSTOP`, `HDEF`,
-/// `HSC`, `SET_RTC`; `channel` the pulse channel or counter.
-pub fn k2_instruction(model: &Model, name: &str, channel: u8) -> Change {
-    let pto = PTO_REGS.iter().find(|r| r.channel == channel);
-    let out = model.pto(channel).map(|p| p.output.to_string());
-    let hsc = HSC_REGS.iter().find(|r| r.channel == channel);
-    let mut touches = Vec::new();
-    match name {
-        "PLS" | "PSTOP" => {
-            touches.extend(out);
-            if let Some(r) = pto {
-                touches.push(format!("SMB{}", r.status));
-                if name == "PSTOP" {
-                    touches.push(format!("SMB{}", r.pos_control));
-                }
-            }
-        }
-        "HDEF" => touches.extend(hsc.map(|r| format!("SMB{}", r.control))),
-        "HSC" => {
-            if let Some(r) = hsc {
-                touches.push(format!("SMD{}", r.cv));
-                touches.push(format!("SMB{}", r.status));
-            }
-        }
-        _ => touches.push(CLOCK.to_string()),
-    }
-    let what = if name == "SET_RTC" { name.to_string() } else { format!("{name} {channel}") };
-    Change::Action { what, touches }
-}
-
-/// The change a servo object write makes: a write of the object (named as the drive's
-/// operands name it: `controlword`, `2FF0.09/u32`).
-pub fn servo_write(obj: ObjRef) -> Change {
-    Change::Write(obj.to_operand())
-}
-
 impl Device for Guarded {
     fn info(&self) -> &DeviceInfo {
         self.inner.info()
@@ -225,7 +189,7 @@ impl Device for Guarded {
 impl Guarded {
     fn instruction(&self, name: &str, channel: u8) -> Result<()> {
         match self.k2_model {
-            Some(m) => self.check_changes(&[k2_instruction(m, name, channel)]),
+            Some(m) => self.check_changes(&[changes::instruction(m, name, channel)]),
             None => Ok(()),
         }
     }
@@ -286,25 +250,12 @@ impl ServoOps for Guarded {
         self.servo_ops().read_raw(obj)
     }
     fn write_raw(&mut self, obj: ObjRef, raw: u32) -> Result<()> {
-        self.check_changes(&[servo_write(obj)])?;
+        self.check_changes(&[crate::servo::changes::write(obj)])?;
         self.servo_ops().write_raw(obj, raw)
     }
     fn raw_frame(&mut self, bytes: [u8; FRAME_LEN]) -> Result<[u8; FRAME_LEN]> {
         if self.restricted() {
-            let b = bytes;
-            let (index, sub) = (u16::from_le_bytes([b[2], b[3]]), b[4]);
-            let obj = match objects::lookup(index, sub) {
-                Some(o) => ObjRef::of(o),
-                None => ObjRef { index, sub, dtype: crate::core::DataType::DWord },
-            };
-            match b[1] {
-                func::READ | func::READ_1 | func::READ_2 | func::READ_4 => {}
-                func::WRITE_1 | func::WRITE_2 | func::WRITE_4 => self.check_changes(&[servo_write(obj)])?,
-                code => {
-                    let what = format!("raw frame with function code 16#{code:02X}");
-                    self.check_changes(&[Change::Action { what: what.clone(), touches: vec![what] }])?
-                }
-            }
+            self.check_changes(&crate::servo::changes::frame(&bytes))?;
         }
         self.servo_ops().raw_frame(bytes)
     }
@@ -325,24 +276,6 @@ impl ServoOps for Guarded {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::k2::catalog;
-
-    fn touches(c: Change) -> Vec<String> {
-        match c {
-            Change::Action { touches, .. } => touches,
-            Change::Write(_) => Vec::new(),
-        }
-    }
-
-    #[test]
-    fn instructions_change_their_channels_registers_and_outputs() {
-        let m = catalog::find("K205-16DT").unwrap();
-        assert_eq!(touches(k2_instruction(m, "PLS", 0)), ["Q0.0", "SMB66"]);
-        assert_eq!(touches(k2_instruction(m, "PSTOP", 1)), ["Q0.1", "SMB76", "SMB231"]);
-        assert_eq!(touches(k2_instruction(m, "HDEF", 0)), ["SMB37"]);
-        assert_eq!(touches(k2_instruction(m, "HSC", 0)), ["SMD38", "SMB36"]);
-        assert_eq!(touches(k2_instruction(m, "SET_RTC", 0)), [CLOCK]);
-    }
 
     #[test]
     fn an_unrestricted_guard_passes_everything_and_the_session_switch_stops_it() {

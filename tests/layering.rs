@@ -41,8 +41,6 @@ const EXCEPTIONS: &[(&str, &str, &str)] = &[
     ("src/pending.rs", "servo", CAPABILITY),
     ("src/guard.rs", "k2", GUARD_CHANGES),
     ("src/guard.rs", "servo", GUARD_CHANGES),
-    ("src/k2/helpers/mod.rs", "guard", GUARD_CHANGES),
-    ("src/servo/ds402.rs", "guard", GUARD_CHANGES),
     ("src/k2/sim/mod.rs", "wiring", SIGNAL_MODEL),
     ("src/k2/sim/wired.rs", "wiring", SIGNAL_MODEL),
     ("src/servo/sim/wired.rs", "wiring", SIGNAL_MODEL),

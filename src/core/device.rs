@@ -29,6 +29,10 @@ pub struct DeviceInfo {
     pub simulated: bool,
 }
 
+/// The pseudo-operand a change of a device's real-time clock names (`SET_RTC`): a profile's
+/// allow list may name it like a register.
+pub const CLOCK: &str = "clock";
+
 /// A change a command is about to make to a device, as the write guard sees it.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Change {

@@ -3,6 +3,7 @@
 
 pub mod agent;
 pub mod catalog;
+pub mod changes;
 pub mod coalesce;
 pub mod driver;
 pub mod helpers;

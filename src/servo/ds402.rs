@@ -245,7 +245,7 @@ fn obj(name: &str) -> ObjRef {
 /// Asks the write guard for every object a helper will write, before it writes any, so
 /// a refused helper sends nothing.
 fn declare(ops: &dyn ServoOps, names: &[&str]) -> Result<()> {
-    let changes: Vec<_> = names.iter().map(|n| crate::guard::servo_write(obj(n))).collect();
+    let changes: Vec<_> = names.iter().map(|n| super::changes::write(obj(n))).collect();
     ops.permits(&changes)
 }
 

@@ -4,6 +4,7 @@
 //! and helpers (`ds402`) and the drive simulator (`sim`).
 //! Specs: `../shared/spec/kinco-servo.md`, `../shared/spec/kinco-public-notes.md`.
 
+pub mod changes;
 pub mod driver;
 pub mod ds402;
 pub mod frame;

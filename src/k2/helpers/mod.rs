@@ -28,12 +28,12 @@ pub enum Instr {
 }
 
 impl Instr {
-    /// What the instruction changes, for the write guard (`crate::guard`).
+    /// What the instruction changes, for the write rules ([`super::changes`]).
     pub fn change(&self, model: &super::catalog::Model) -> Change {
         match *self {
-            Instr::Pls(q) => crate::guard::k2_instruction(model, "PLS", q),
-            Instr::Hdef(n, _) => crate::guard::k2_instruction(model, "HDEF", n),
-            Instr::Hsc(n) => crate::guard::k2_instruction(model, "HSC", n),
+            Instr::Pls(q) => super::changes::instruction(model, "PLS", q),
+            Instr::Hdef(n, _) => super::changes::instruction(model, "HDEF", n),
+            Instr::Hsc(n) => super::changes::instruction(model, "HSC", n),
         }
     }
 }
