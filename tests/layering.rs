@@ -31,7 +31,6 @@ const FAMILY_NEUTRAL: &[&str] = &["core", "engine", "guard", "pending"];
 
 const CAPABILITY: &str = "two capability hooks (as_k2/as_servo) still name their families";
 const GUARD_CHANGES: &str = "the change lists of K2 instructions and servo writes still live in the guard";
-const SIGNAL_MODEL: &str = "the wiring signal model still lives above the families";
 
 /// `(file, module it names, reason)`: imports that still break the rule, each with its reason.
 const EXCEPTIONS: &[(&str, &str, &str)] = &[
@@ -41,9 +40,6 @@ const EXCEPTIONS: &[(&str, &str, &str)] = &[
     ("src/pending.rs", "servo", CAPABILITY),
     ("src/guard.rs", "k2", GUARD_CHANGES),
     ("src/guard.rs", "servo", GUARD_CHANGES),
-    ("src/k2/sim/mod.rs", "wiring", SIGNAL_MODEL),
-    ("src/k2/sim/wired.rs", "wiring", SIGNAL_MODEL),
-    ("src/servo/sim/wired.rs", "wiring", SIGNAL_MODEL),
     ("src/confine.rs", "shell", "the sandbox's write rule still lives in the shell's file helpers"),
     ("src/paths.rs", "script", "the Lua module search path is still computed by the script layer"),
     ("src/profile.rs", "fleet", "fleet definitions are still parsed by the fleet runner's module"),
@@ -57,7 +53,6 @@ const EXCEPTIONS: &[(&str, &str, &str)] = &[
 const CYCLE_EXCEPTIONS: &[(&str, &str)] = &[
     ("src/cli", "serve and serve_fleet share the readiness line"),
     ("src/core/link", "the line, serial, RFC 2217 and TCP transports share their settings types"),
-    ("src/fx", "memory, plc, program and space share the device image types"),
     ("src/k2/agent", "the IL generator and the protocol share the mailbox layout"),
     ("src/k2/sim", "the Modbus server and its network loop share the connection state"),
     ("src/k2/sim/program", "the family hooks and motion instructions call each other"),

@@ -20,6 +20,7 @@ pub mod text;
 pub mod trace;
 pub mod url;
 pub mod value;
+pub mod wiring;
 
 pub use clock::Clock;
 pub use device::{Device, DeviceInfo};

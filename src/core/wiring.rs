@@ -1,6 +1,11 @@
-//! Virtual wiring between simulated devices: a K2's pulse output to a drive's pulse input,
-//! the drive's encoder output to the K2's counter inputs, outputs to inputs (loopback), a
-//! drive's digital outputs and the switches on its axis to PLC inputs.
+//! The signal model of virtual wiring between simulated devices: a K2's pulse output to a
+//! drive's pulse input, the drive's encoder output to the K2's counter inputs, outputs to
+//! inputs (loopback), a drive's digital outputs and the switches on its axis to PLC inputs.
+//!
+//! It lives in the core, below the families, because it is what they share: the host (the K2
+//! simulator, `k2::sim::wired`) and its peers (the drive simulator, `servo::sim::wired`) both
+//! speak it without naming each other. Opening the wired devices in a session (`sim wire`,
+//! benches) is the session layer's part, `crate::wiring`.
 //!
 //! Wiring is data, not special cases (design guide, "Simulated devices can be wired"): each
 //! family names its terminals and says what *signal* each one speaks ([`Role`]): a pulse
@@ -23,7 +28,7 @@
 //! Exactness: an encoder output is its position, not a wave at some rate. Each piece hands
 //! the counter the motion itself (`x(t)` in 4× counts, `x = p · 4 · lines / resolution`,
 //! constant acceleration within the piece, moving one way: a piece ends where the motion
-//! stops or reverses), and the A/B state is a function of `x` (`k2::sim::inputs::Track`):
+//! stops or reverses), and the A/B state is a function of `x` ([`Track`]):
 //! the edges between any two instants follow from the position at those instants, so
 //! counts never drift, ramps included, and do not depend on where pieces or polls fall.
 //! At 1× a decoder counts one edge per period (A's edge while B is low: A rising up, A
@@ -31,10 +36,7 @@
 //! input carries the train's pulses exactly (whole-ns cycles, the count put out), delayed
 //! by the wire's delay whether or not the output still runs then.
 
-pub mod bench;
-pub mod setup;
-
-use crate::core::signal::PulseTrain;
+use crate::core::signal::{PulseTrain, Track, Train};
 use crate::core::{Error, Result};
 
 /// One stretch of a planned motion: from `t0` for `dur` seconds (infinite for the last),
@@ -326,14 +328,14 @@ pub struct Wire {
 
 /// One stretch of pulses a pulse output put out, as a wire carries them to an input
 /// (delayed): `count` cycles of `cycle_ns`, the first rising at `first_ns`.
-pub type LoopSeg = crate::k2::sim::inputs::Train;
+pub type LoopSeg = Train;
 
 /// What a wire carries over between pieces (saved whole in snapshots).
 #[derive(Clone, Debug, Default, serde::Serialize, serde::Deserialize)]
 #[serde(default)]
 pub struct WireState {
     /// Encoder: the signal of the current piece (its A/B state follows from it).
-    pub track: Option<crate::k2::sim::inputs::Track>,
+    pub track: Option<Track>,
     /// Encoder: added to the drive's position (4× counts) so the output stays where it was
     /// when the drive re-references its position (homing): an incremental encoder's
     /// outputs change only when the shaft turns.

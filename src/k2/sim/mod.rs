@@ -74,7 +74,7 @@ pub struct K2Sim {
     /// Injected faults ([`fault`]).
     pub faults: fault::Faults,
     /// Wires to other simulated devices (`sim wire`); this simulator hosts them ([`wired`]).
-    pub wiring: Option<Box<crate::wiring::Harness>>,
+    pub wiring: Option<Box<crate::core::wiring::Harness>>,
     /// The CPU running programs (user program, helper), once one was loaded.
     pub plc: Option<Box<program::Plc>>,
     /// The helper program's mailbox base when it runs (`--agent`), for snapshots.

@@ -1,4 +1,4 @@
-//! The K2 simulator as the host of virtual wiring ([`crate::wiring`]): it resolves its own
+//! The K2 simulator as the host of virtual wiring ([`crate::core::wiring`]): it resolves its own
 //! terminals (`Q0.0` a pulse output or a plain output, `I0.3` an input, `I0.1,I0.0` an A/B
 //! pair), pushes its pulse outputs to the drives they are wired to the moment they start or
 //! stop, and advances piecewise so each wired input is one formula per piece: the drive's
@@ -9,9 +9,9 @@ use super::inputs::{ns, Pin, Source, Track};
 use super::pto::pos;
 use super::K2Sim;
 use crate::core::signal::PulseTrain;
+use crate::core::wiring::{self, Decl, Harness, Kind, MakePeer, Peer, Role, Wire, WireState};
 use crate::core::{Error, Result};
 use crate::k2::operand::{Area, K2Operand};
-use crate::wiring::{self, Decl, Harness, Kind, MakePeer, Peer, Role, Wire, WireState};
 use std::time::Duration;
 
 /// A change of an encoder's position between two pieces larger than this (4× counts) is a

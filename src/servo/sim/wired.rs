@@ -1,11 +1,11 @@
-//! A simulated drive as a wiring peer ([`crate::wiring::Peer`]): its pulse input, its
+//! A simulated drive as a wiring peer ([`crate::core::wiring::Peer`]): its pulse input, its
 //! encoder output (the planned motion), its digital outputs and the switches on its axis,
 //! reached through the shared line so the same drive answers its serial link and its wires.
 
 use super::SimLine;
 use crate::core::signal::PulseTrain;
+use crate::core::wiring::{DriveOut, Peer, Piece, Switch};
 use crate::servo::ds402::State;
-use crate::wiring::{DriveOut, Peer, Piece, Switch};
 use std::sync::{Arc, Mutex};
 
 /// Drive `id` on a simulated line.
