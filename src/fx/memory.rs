@@ -2,15 +2,15 @@
 //! port and computer link) read and write, sized from the model table. Devices the model
 //! does not have are refused here, so each port answers NAK for them as a real PLC does.
 //!
-//! The image belongs to a CPU ([`super::plc`]): the special devices it drives (M8000–M8003,
-//! the clock relays M8011–M8014, the scan times D8010–D8012) are computed from its state and
-//! the image's time, not stored, so a write cannot change them; D8000 (watchdog) starts at
-//! 200 ms. Every port locks the image and brings it to the present ([`Memory::advance`])
+//! The image belongs to a CPU (its state [`super::cpu`], its scans [`super::plc`]): the
+//! special devices it drives (M8000–M8003, the clock relays M8011–M8014, the scan times
+//! D8010–D8012) are computed from its state and the image's time, not stored, so a write
+//! cannot change them; D8000 (watchdog) starts at 200 ms. Every port locks the image and brings it to the present ([`Memory::advance`])
 //! before answering.
 
+use super::cpu::Cpu;
 use super::model::{fx1s_counter, Model};
 use super::operand::{Area, CN32_FIRST, SPECIAL, SPECIAL_COUNT};
-use super::plc::Cpu;
 use super::port::{self, Region, Table};
 use crate::core::Clock;
 use std::time::Duration;

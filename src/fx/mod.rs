@@ -15,8 +15,11 @@
 //! there, so there is nothing for the write guard to police beyond device writes.
 
 pub mod control;
+pub mod cpu;
 pub mod driver;
+pub mod elements;
 pub mod link;
+pub mod machine;
 pub mod memory;
 pub mod model;
 pub mod operand;

@@ -1,6 +1,7 @@
 //! The simulated FX PLC's CPU: RUN/STOP, the scan cycle in virtual time, the special devices
 //! a program or a client observes, and the FX timer and counter rules. The device image is
-//! [`Memory`]; this module is what makes it behave like a PLC rather than plain memory.
+//! [`Memory`] and the CPU's state beside it [`super::cpu`]; this module is what makes them
+//! behave like a PLC rather than plain memory.
 //!
 //! Sources: the FX Series Programming Manual (Mitsubishi JY992D48301, public; e.g.
 //! <https://marine.manualsonline.com/manuals/mfg/mitsubishi/fx2c.html?p=92>), chapter "Devices
@@ -9,7 +10,7 @@
 //! <https://industrialmonitordirect.com/blogs/knowledgebase/mitsubishi-fx-timer-programming-t0-t255-configuration-guide>.
 //!
 //! - **Scans.** In RUN the CPU scans back to back: scan k starts when scan k−1 ends; a scan
-//!   lasts the fixed END processing ([`costs`]) plus its program's time from the engine's cost
+//!   lasts the fixed END processing ([`super::program::costs`]) plus its program's time from the engine's cost
 //!   table. A scan's program runs at its start time and its results are visible from then on.
 //!   [`Memory::advance_to`] runs every scan that starts at or before a time — whoever asks and
 //!   however often, so an outcome never depends on who polls. Without a program the scans are
@@ -25,7 +26,7 @@
 //! - **RUN/STOP.** STOP: no scans, all outputs Y off (M8033 "keep memory in STOP" is not
 //!   modelled), other devices kept. STOP → RUN: scans start again, M8002 pulses, timers
 //!   start from their current values, edge memories are cleared.
-//! - **Timers** ([`TIMERS`], FX2N table): `OUT Tn K` counts while its coil is on, in units of
+//! - **Timers** ([`super::elements::TIMERS`], FX2N table): `OUT Tn K` counts while its coil is on, in units of
 //!   the timer's base, up to the preset, and then holds; the contact is on at the preset.
 //!   Coil off: T0–T245 clear (value 0, contact off); T246–T255 are retentive and hold until
 //!   `RST`. Time between two executions of the coil is credited to the coil state seen at the
@@ -42,188 +43,14 @@
 //!   written). Coils (TC/CC) are the program's: without a program nothing counts, as on a
 //!   real PLC.
 
+use super::cpu::{Stats, TimerRun};
+use super::elements::{timer_class, C32_FIRST, DIRECTION_RELAY};
 use super::memory::Memory;
-use super::model::Model;
 use super::program::Loaded;
-use crate::core::Clock;
-use crate::engine::CostTable;
 use std::time::Duration;
 
-/// One FX2N timer class: numbers, time base, whether it keeps its value when its coil goes
-/// off (FX PM "Timers"; the FX2N/FX1N table).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct TimerClass {
-    pub first: u16,
-    pub last: u16,
-    pub base_ns: u64,
-    pub retentive: bool,
-}
-
-/// The timer table (FX2N): T0–T199 100 ms, T200–T245 10 ms, T246–T249 1 ms retentive,
-/// T250–T255 100 ms retentive. Other models use the same numbers within their range.
-pub static TIMERS: &[TimerClass] = &[
-    TimerClass { first: 0, last: 199, base_ns: 100_000_000, retentive: false },
-    TimerClass { first: 200, last: 245, base_ns: 10_000_000, retentive: false },
-    TimerClass { first: 246, last: 249, base_ns: 1_000_000, retentive: true },
-    TimerClass { first: 250, last: 255, base_ns: 100_000_000, retentive: true },
-];
-
-/// The class of timer `n` (numbers past the table count as 100 ms).
-pub fn timer_class(n: u16) -> TimerClass {
-    TIMERS.iter().find(|c| (c.first..=c.last).contains(&n)).copied().unwrap_or(TIMERS[0])
-}
-
-/// First 32-bit up/down counter and the direction relay of C200 (FX PM "Counters").
-pub const C32_FIRST: u16 = 200;
-pub const C32_LAST: u16 = 234;
-pub const DIRECTION_RELAY: u16 = 8200;
-
-/// A line for `help T5` / `help C5`: which class the timer or counter is in.
-pub fn element_note(timer: bool, n: u16) -> String {
-    if timer {
-        let c = timer_class(n);
-        let base = match c.base_ns {
-            1_000_000 => "1 ms",
-            10_000_000 => "10 ms",
-            _ => "100 ms",
-        };
-        format!(
-            "T{n}: {base} timer{} (T{}–T{}); contact T{n} = TS{n}, coil TC{n}, current value TN{n}; `OUT T{n} K50` in a program",
-            if c.retentive { ", retentive (RST clears it)" } else { "" },
-            c.first,
-            c.last
-        )
-    } else if n < C32_FIRST {
-        format!("C{n}: 16-bit up counter (C0–C199); contact C{n} = CS{n}, coil CC{n}, current value CN{n}")
-    } else if n <= C32_LAST {
-        format!(
-            "C{n}: 32-bit up/down counter (C200–C234), counts down while M{} is on; contact C{n} = CS{n}, current value CN{n}",
-            DIRECTION_RELAY + n - C32_FIRST
-        )
-    } else {
-        format!("C{n}: high-speed counter (C235–C255; not simulated)")
-    }
-}
-
-/// Default costs (estimates: FX2N basic instructions 0.08 µs each, applied instructions from
-/// 1.52 µs — FX2N hardware specification; END processing 0.5 ms is plcsh's estimate). The
-/// watchdog is D8000's default, 200 ms (FX PM, D8000).
-pub fn costs() -> CostTable {
-    CostTable {
-        // bit, compare, move, arith, real, timer, jump, call, special (OUT T/C, RST)
-        class_ns: [80, 1_520, 1_520, 1_520, 10_000, 160, 80, 1_000, 160],
-        per_element_ns: 100,
-        overhead_ns: 500_000,
-        min_scan_ns: 0,
-        watchdog_ns: 200_000_000,
-    }
-}
-
-/// RUN or STOP.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
-pub enum Mode {
-    Run,
-    Stop,
-}
-
-impl Mode {
-    pub fn name(self) -> &'static str {
-        match self {
-            Mode::Run => "RUN",
-            Mode::Stop => "STOP",
-        }
-    }
-}
-
-/// Per-timer state the image does not hold: the coil at the last execution and the time
-/// credited so far.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
-pub struct TimerRun {
-    pub on: bool,
-    pub mark_ns: u64,
-    pub frac_ns: u64,
-}
-
-/// Scan-time statistics (D8010–D8012).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
-pub struct Stats {
-    /// Scans since the last STOP → RUN.
-    pub scans: u64,
-    pub last_ns: u64,
-    pub min_ns: u64,
-    pub max_ns: u64,
-}
-
-/// The CPU part of a simulated PLC.
-#[derive(Clone, Debug)]
-pub struct Cpu {
-    pub clock: Clock,
-    pub mode: Mode,
-    /// Start of the next scan.
-    pub next_scan: Duration,
-    pub stats: Stats,
-    pub costs: CostTable,
-    /// Why the CPU stopped on its own (the watchdog), if it did.
-    pub fault: Option<String>,
-    pub program: Option<Box<Loaded>>,
-    pub timers: Vec<TimerRun>,
-    /// Each counter's coil at its last execution (rising edges count).
-    pub counter_prev: Vec<bool>,
-}
-
-impl Cpu {
-    /// A CPU in RUN from the clock's present time.
-    pub fn new(clock: Clock, model: &Model) -> Cpu {
-        let now = clock.now();
-        Cpu {
-            clock,
-            mode: Mode::Run,
-            next_scan: now,
-            stats: Stats::default(),
-            costs: costs(),
-            fault: None,
-            program: None,
-            timers: vec![TimerRun::default(); model.t as usize],
-            counter_prev: vec![false; model.c as usize],
-        }
-    }
-
-    /// A special relay the CPU drives, at image time `at` (`None`: an ordinary relay).
-    pub fn system_bit(&self, index: u16, at: Duration) -> Option<bool> {
-        let run = self.mode == Mode::Run;
-        let clock = |period_ns: u64| (at.as_nanos() as u64 % period_ns) < period_ns / 2;
-        Some(match index {
-            8000 => run,
-            8001 => !run,
-            8002 => run && self.stats.scans == 1,
-            8003 => run && self.stats.scans > 1,
-            8011 => clock(10_000_000),
-            8012 => clock(100_000_000),
-            8013 => clock(1_000_000_000),
-            8014 => clock(60_000_000_000),
-            _ => return None,
-        })
-    }
-
-    /// A special register the CPU drives (D8010–D8012, 0.1 ms units).
-    pub fn system_word(&self, index: u16) -> Option<u16> {
-        let units = |ns: u64| (ns / 100_000).min(u16::MAX as u64) as u16;
-        Some(match index {
-            8010 => units(self.stats.last_ns),
-            8011 => units(self.stats.min_ns),
-            8012 => units(self.stats.max_ns),
-            _ => return None,
-        })
-    }
-
-    fn record(&mut self, d_ns: u64, n: u64) {
-        let s = &mut self.stats;
-        s.min_ns = if s.scans == 0 { d_ns } else { s.min_ns.min(d_ns) };
-        s.max_ns = s.max_ns.max(d_ns);
-        s.last_ns = d_ns;
-        s.scans += n;
-    }
-}
+/// RUN or STOP: the switch [`Memory::set_mode`] turns (`sim cpu run|stop`).
+pub use super::cpu::Mode;
 
 fn ns(d: Duration) -> u64 {
     d.as_nanos().min(u64::MAX as u128) as u64

@@ -4,10 +4,10 @@
 
 use crate::core::test_rng::Rng;
 use crate::core::Clock;
+use crate::fx::cpu::Mode;
 use crate::fx::memory::Memory;
 use crate::fx::model::Model;
 use crate::fx::operand::Area;
-use crate::fx::plc::Mode;
 use crate::fx::program::{self, Loaded};
 use std::time::Duration;
 
@@ -110,7 +110,7 @@ fn m8002_is_on_in_the_first_scan_only_and_again_after_stop_run() {
 fn scan_times_come_from_the_cost_table_and_cannot_be_written() {
     let (mut m, c) = plc(None);
     step(&mut m, &c, ms(10));
-    let t = crate::fx::plc::costs();
+    let t = crate::fx::program::costs();
     let units = (t.overhead_ns / 100_000) as u32;
     assert_eq!([8010, 8011, 8012].map(|i| m.word(Area::D, i)), [Some(units); 3], "an empty program: END only");
     assert_eq!(m.cpu.stats.scans, 10_000_000 / t.overhead_ns + 1, "scans at 0, 0.5 ms … 10 ms");

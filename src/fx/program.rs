@@ -12,22 +12,20 @@
 //! 2. [`FxFamily`] resolves the operands through the FX grammar ([`super::operand`]) bounded by
 //!    the model; timers and counters are the family instructions `FXTIM`, `FXCNT`, `FXCNT32`
 //!    and `FXRST` (not written by users: `OUT T0 K50`, `RST C0` become them).
-//! 3. [`FxMachine`] executes against the PLC's [`Memory`]: FX timer and counter rules live in
-//!    [`super::plc`].
+//! 3. [`super::machine::FxMachine`] executes against the PLC's memory: FX timer and counter
+//!    rules live in [`super::plc`].
 //!
 //! The subset and its sources are listed in `docs/il.md` ("The FX family"), checked against
 //! [`INSTRUCTIONS`] by a test.
 
-use super::memory::Memory;
+use super::elements::{C32_FIRST, C32_LAST};
 use super::model::Model;
 use super::operand::{self, Area, FxOperand, Width as FxWidth};
-use super::plc::{C32_FIRST, C32_LAST};
 use super::space::{FxSpace, Proto};
 use crate::core::{DataType, Error, ErrorKind, Result};
 use crate::engine::source::{self, Pos, Stmt};
 use crate::engine::{
-    self, ArgKind, CostTable, Cpu, Element, Family, Fault, Loc, Machine, Opd, OperandError, Program, Resolved,
-    SpecialDef, Width,
+    self, ArgKind, CostTable, Cpu, Element, Family, Loc, OperandError, Program, Resolved, SpecialDef, Width,
 };
 
 /// What an FX mnemonic becomes.
@@ -841,7 +839,7 @@ fn loc_of(o: &FxOperand) -> Loc {
 }
 
 /// The area and device number of a location (groups: the digit count too).
-fn decode(l: Loc) -> Option<(Area, u16, u8)> {
+pub(super) fn decode(l: Loc) -> Option<(Area, u16, u8)> {
     let area = *operand::AREAS.get((l.area & 0x0F) as usize).map(|s| &s.area)?;
     let groups = l.area >> 4;
     let n = match l.width {
@@ -850,6 +848,20 @@ fn decode(l: Loc) -> Option<(Area, u16, u8)> {
         _ => l.index / 2,
     };
     u16::try_from(n).ok().map(|n| (area, n, groups))
+}
+
+/// Default costs (estimates: FX2N basic instructions 0.08 µs each, applied instructions from
+/// 1.52 µs — FX2N hardware specification; END processing 0.5 ms is plcsh's estimate). The
+/// watchdog is D8000's default, 200 ms (FX PM, D8000).
+pub fn costs() -> CostTable {
+    CostTable {
+        // bit, compare, move, arith, real, timer, jump, call, special (OUT T/C, RST)
+        class_ns: [80, 1_520, 1_520, 1_520, 10_000, 160, 80, 1_000, 160],
+        per_element_ns: 100,
+        overhead_ns: 500_000,
+        min_scan_ns: 0,
+        watchdog_ns: 200_000_000,
+    }
 }
 
 /// The FX operand space as the engine sees it.
@@ -894,138 +906,11 @@ impl Family for FxFamily {
     }
 
     fn costs(&self) -> CostTable {
-        super::plc::costs()
+        costs()
     }
 
     fn events(&self) -> u32 {
         0
-    }
-}
-
-/// The PLC's memory during a scan.
-pub struct FxMachine<'m> {
-    pub mem: &'m mut Memory,
-    pub now_ns: u64,
-}
-
-impl FxMachine<'_> {
-    fn bit(&self, area: Area, n: u16) -> bool {
-        self.mem.bit(area, n).unwrap_or(false)
-    }
-
-    /// A program's write: a special device the CPU drives is left alone.
-    fn put_bit(&mut self, area: Area, n: u16, v: bool) {
-        if !operand::system_driven(area, n) && self.mem.exists(area, n) {
-            self.mem.set_plain_bit(area, n, v);
-        }
-    }
-}
-
-impl Machine for FxMachine<'_> {
-    fn get(&self, l: Loc) -> u32 {
-        let Some((area, n, groups)) = decode(l) else { return 0 };
-        if groups > 0 {
-            return (0..4 * groups as u16).fold(0u32, |a, i| a | (self.bit(area, n.wrapping_add(i)) as u32) << i);
-        }
-        match l.width {
-            Width::Bit(_) => self.bit(area, n) as u32,
-            Width::DWord if area == Area::D => {
-                let lo = self.mem.word(area, n).unwrap_or(0);
-                let hi = self.mem.word(area, n.wrapping_add(1)).unwrap_or(0);
-                lo & 0xFFFF | hi << 16
-            }
-            _ => self.mem.word(area, n).unwrap_or(0),
-        }
-    }
-
-    fn set(&mut self, l: Loc, v: u32) {
-        let Some((area, n, groups)) = decode(l) else { return };
-        if groups > 0 {
-            for i in 0..4 * groups as u16 {
-                self.put_bit(area, n.wrapping_add(i), v >> i & 1 != 0);
-            }
-            return;
-        }
-        match l.width {
-            Width::Bit(_) => self.put_bit(area, n, v & 1 != 0),
-            Width::DWord if area == Area::D => {
-                for (k, w) in [(0u16, v & 0xFFFF), (1, v >> 16)] {
-                    if !operand::system_driven(area, n.wrapping_add(k)) {
-                        self.mem.set_plain_word(area, n.wrapping_add(k), w);
-                    }
-                }
-            }
-            _ => {
-                if !operand::system_driven(area, n) {
-                    self.mem.set_plain_word(area, n, v);
-                }
-            }
-        }
-    }
-
-    fn deref(&self, _ptr: u32, _w: Width) -> Option<Loc> {
-        None
-    }
-
-    fn special(&mut self, id: u16, inst: u32, args: &[Opd], types: &[DataType]) -> std::result::Result<bool, Fault> {
-        self.element(id, inst, args, types, true)
-    }
-
-    fn special_off(
-        &mut self,
-        id: u16,
-        inst: u32,
-        args: &[Opd],
-        types: &[DataType],
-    ) -> std::result::Result<bool, Fault> {
-        self.element(id, inst, args, types, false)
-    }
-}
-
-impl FxMachine<'_> {
-    /// Timers, counters and RST: act with the CR on or off and leave it as it was.
-    fn element(
-        &mut self,
-        id: u16,
-        _inst: u32,
-        args: &[Opd],
-        types: &[DataType],
-        input: bool,
-    ) -> std::result::Result<bool, Fault> {
-        let target = match args.first() {
-            Some(Opd::Loc(l)) => decode(*l),
-            _ => None,
-        };
-        let Some((area, n, _)) = target else { return Ok(input) };
-        let preset = |m: &Self| -> i64 {
-            let (Some(o), Some(t)) = (args.get(1), types.get(1)) else { return 0 };
-            let raw = engine::read(m, o, *t).unwrap_or(0);
-            if t.bits() == 32 {
-                raw as i32 as i64
-            } else {
-                raw as u16 as i16 as i64
-            }
-        };
-        match id {
-            id::TIMER => {
-                let k = preset(self) as i32;
-                self.mem.timer_coil(n, input, k, self.now_ns);
-            }
-            id::COUNTER | id::COUNTER32 => {
-                let k = preset(self);
-                self.mem.counter_coil(n, input, k);
-            }
-            _ if input => match area {
-                Area::TS | Area::TN => self.mem.reset_element(true, n),
-                Area::CS | Area::CN => self.mem.reset_element(false, n),
-                _ => {
-                    let (Some(o), Some(t)) = (args.first(), types.first()) else { return Ok(input) };
-                    engine::write(self, o, *t, 0)?;
-                }
-            },
-            _ => {}
-        }
-        Ok(input)
     }
 }
 
@@ -1067,16 +952,5 @@ impl Loaded {
     /// STOP → RUN: edge memories and the engine's state start afresh.
     pub fn reset(&mut self) {
         self.cpu = Cpu::new(&self.prog);
-    }
-
-    /// One scan at `now_ns`: the program's time (ns) and a fault that stops the PLC.
-    pub fn scan(&mut self, mem: &mut Memory, now_ns: u64) -> (u64, Option<String>) {
-        let mut m = FxMachine { mem, now_ns };
-        let out = self.cpu.scan(&self.prog, &mut m, now_ns, u64::MAX, None);
-        let fault = match out.exit {
-            engine::exec::Exit::Fault(f) => Some(format!("line {}: {} ({})", f.line, f.message, f.instruction)),
-            _ => None,
-        };
-        (out.cost_ns, fault)
     }
 }

@@ -3,8 +3,8 @@
 //! its program (the FX list's text, compiled again on restore, with the engine's state), so
 //! the same script from the same snapshot gives the same results.
 
+use super::cpu::{Mode, Stats, TimerRun};
 use super::memory::Memory;
-use super::plc::{Mode, Stats, TimerRun};
 use super::program::Loaded;
 use serde::{Deserialize, Serialize};
 use std::time::Duration;

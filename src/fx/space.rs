@@ -219,7 +219,7 @@ impl OperandSpace for FxSpace {
             Area::CS | Area::CC | Area::CN => Some(false),
             _ => None,
         } {
-            s.push_str(&super::plc::element_note(timer, o.index));
+            s.push_str(&super::elements::element_note(timer, o.index));
             s.push('\n');
         }
         match self.proto {
