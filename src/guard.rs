@@ -174,6 +174,10 @@ impl Device for Guarded {
         self.check_changes(changes)?;
         Ok(self.inner.family_ops())
     }
+    fn family(&mut self, changes: &[Change]) -> Result<Option<&mut dyn std::any::Any>> {
+        self.check_changes(changes)?;
+        self.inner.family(changes)
+    }
     fn permits(&self, changes: &[Change]) -> Result<()> {
         self.check_changes(changes)
     }

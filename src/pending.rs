@@ -213,6 +213,12 @@ impl Device for Pending {
         }
         self.make_ready()?.family_ops_for(changes)
     }
+    fn family(&mut self, changes: &[Change]) -> Result<Option<&mut dyn std::any::Any>> {
+        if !self.answers(|d| d.family(&[]).ok().flatten().is_some()) {
+            return Ok(None);
+        }
+        self.make_ready()?.family(changes)
+    }
     fn permits(&self, changes: &[Change]) -> Result<()> {
         match &self.state {
             State::Opened { device, .. } => device.permits(changes),

@@ -15,6 +15,7 @@ use super::error::Result;
 use super::operand::{Operand, OperandSpace};
 use super::value::Value;
 use serde::Serialize;
+use std::any::Any;
 
 /// What a device is, for `devices` and messages.
 #[derive(Clone, Debug, Serialize)]
@@ -74,6 +75,16 @@ pub trait Device: Send {
     fn as_servo(&mut self) -> Option<&mut dyn crate::servo::ServoOps> {
         None
     }
+    /// The one capability hook: the device's family operations — the family's own object,
+    /// which only that family's typed accessor downcasts ([`lookup`]) — handed out once
+    /// `changes`, what the caller is about to make through it (`&[]` to read or to reach
+    /// simulation controls), are permitted. A wrapper that holds write rules checks
+    /// `changes` first and refuses the whole command, naming the rule; a plain device just
+    /// answers. Devices without family operations answer `None`.
+    fn family(&mut self, changes: &[Change]) -> Result<Option<&mut dyn Any>> {
+        let _ = changes;
+        Ok(None)
+    }
     /// Capabilities of families that have no hook of their own (UMPK, FX and later ones):
     /// their shell commands and Lua methods downcast through this one generic hook instead
     /// of each family adding an `as_<family>` method here (design guide, "New families").
@@ -104,4 +115,16 @@ pub trait Device: Send {
     fn set_option(&mut self, key: &str, _value: &str) -> Result<()> {
         Err(crate::core::Error::usage(format!("{} devices have no option `{key}`", self.info().family)))
     }
+}
+
+/// The one generic lookup: the family operations of `dev` when it is a device of `family`
+/// (its [`DeviceInfo::family`]), for a caller about to make `changes` (see
+/// [`Device::family`]). A device of another family answers `Ok(None)` without being asked,
+/// so looking for a drive among the open devices never makes a PLC take its deferred state
+/// file (`crate::pending`).
+pub fn lookup<'a>(dev: &'a mut dyn Device, family: &str, changes: &[Change]) -> Result<Option<&'a mut dyn Any>> {
+    if dev.info().family != family {
+        return Ok(None);
+    }
+    dev.family(changes)
 }

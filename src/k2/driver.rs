@@ -660,6 +660,11 @@ impl Device for K2Wire {
         Some(self)
     }
 
+    /// The K2 operations (`k2::ops`): this connection permits everything.
+    fn family(&mut self, _changes: &[crate::core::device::Change]) -> Result<Option<&mut dyn std::any::Any>> {
+        Ok(Some(self))
+    }
+
     fn set_option(&mut self, key: &str, value: &str) -> Result<()> {
         check_option(key, value)?;
         match key {

@@ -1,6 +1,7 @@
 //! Everything about the Kinco K2 PLC family in one room: the model catalogue, the operand
 //! grammar, SM register tables, the memory image, the simulator and the typed helpers.
 
+pub mod access;
 pub mod agent;
 pub mod catalog;
 pub mod changes;
@@ -15,6 +16,7 @@ pub mod sim;
 pub mod sm_map;
 pub mod space;
 
+pub use access::{ops, simulator, K2Access};
 use crate::core::{Device, Error, Result};
 pub use instr::{Event, EventKind, EventMatch, RtcTime};
 

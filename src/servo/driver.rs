@@ -92,7 +92,8 @@ pub struct Driver {
     answered: bool,
     /// The quiet awaited before each request (a few character times at the line's baud).
     gap: Duration,
-    /// A served simulator's control socket (`control=` in the URL, else `PORT.ctl` if present).
+    /// A served simulator's control socket (`control=` in the URL, else `PORT.ctl` if present
+    /// when the drive was opened).
     control: Option<std::path::PathBuf>,
 }
 
@@ -439,6 +440,12 @@ impl Device for Driver {
         Some(self)
     }
 
+    /// The drive operations and simulation controls (`servo::ops`, `servo::simulator`): the
+    /// driver itself permits everything.
+    fn family(&mut self, _changes: &[crate::core::device::Change]) -> Result<Option<&mut dyn std::any::Any>> {
+        Ok(Some(self))
+    }
+
     fn set_option(&mut self, key: &str, value: &str) -> Result<()> {
         match key {
             "encoder" if value == "auto" => self.read_resolution().map(|_| ()),
@@ -478,10 +485,7 @@ impl ServoOps for Driver {
         self.sim()
     }
     fn sim_control(&self) -> Option<std::path::PathBuf> {
-        self.control.clone().or_else(|| {
-            let p = super::sim::serve::control_path(std::path::Path::new(&self.line.name));
-            p.exists().then_some(p)
-        })
+        self.control.clone()
     }
 }
 
@@ -549,7 +553,11 @@ pub fn open_serial(u: &DeviceUrl) -> Result<Box<dyn Device>> {
     };
     let mut d = Driver::attach(line, c.id, c.echo, c.timeout, info);
     d.gap = Driver::gap_at(baud);
-    d.control = u.param("control").map(std::path::PathBuf::from);
+    // A served simulator's control socket: as given, else `PORT.ctl` if the server made one.
+    d.control = u.param("control").map(std::path::PathBuf::from).or_else(|| {
+        let p = super::sim::serve::control_path(std::path::Path::new(&d.line.name));
+        p.exists().then_some(p)
+    });
     finish(d, &c)
 }
 

@@ -4,6 +4,7 @@
 //! and helpers (`ds402`) and the drive simulator (`sim`).
 //! Specs: `../shared/spec/kinco-servo.md`, `../shared/spec/kinco-public-notes.md`.
 
+pub mod access;
 pub mod changes;
 pub mod driver;
 pub mod ds402;
@@ -12,6 +13,7 @@ pub mod objects;
 pub mod sim;
 pub mod units;
 
+pub use access::{ops, simulator, ServoAccess};
 use crate::core::Result;
 use objects::ObjRef;
 use std::sync::{Arc, Mutex};

@@ -579,6 +579,11 @@ impl Device for Driver {
         Some(self)
     }
 
+    /// The controller's own operations (`umpk::ops`): the driver itself permits everything.
+    fn family(&mut self, _changes: &[crate::core::device::Change]) -> Result<Option<&mut dyn std::any::Any>> {
+        Ok(Some(self))
+    }
+
     fn set_option(&mut self, key: &str, value: &str) -> Result<()> {
         match key {
             "timeout" => {

@@ -202,8 +202,21 @@ pub struct Driver {
     /// Characters dropped while waiting for the line to be quiet (late replies, noise).
     pub dropped: u64,
     /// The simulated PLC behind an in-process `sim-fx:` device (its CPU: `sim program`,
-    /// `sim cpu`), reached by the shell through [`Device::family_ops`].
+    /// `sim cpu`), reached by the shell through [`ops`].
     pub sim: Option<Plc>,
+}
+
+/// The simulated FX PLC's driver behind a device (`sim-fx:`: its CPU, `sim program`, `sim
+/// cpu`), for a command about to make `changes`, through the one generic lookup
+/// (`core::device::lookup`): the device's write rules check `changes` first. A real FX has no
+/// operations of its own and answers `None`.
+pub fn ops<'a>(dev: &'a mut dyn Device, changes: &[crate::core::device::Change]) -> Result<Option<&'a mut Driver>> {
+    Ok(crate::core::device::lookup(dev, "fx", changes)?.and_then(|a| a.downcast_mut::<Driver>()))
+}
+
+/// The simulated FX PLC behind a device, if it is one (`sim-fx:`; simulation controls).
+pub fn simulator(dev: &mut dyn Device) -> Option<Plc> {
+    ops(dev, &[]).ok()??.sim.clone()
 }
 
 impl Driver {
@@ -644,6 +657,11 @@ impl Device for Driver {
     fn family_ops(&mut self) -> Option<&mut dyn std::any::Any> {
         // Only a simulator has operations of its own (its CPU); a real FX has none here.
         self.sim.is_some().then_some(self as &mut dyn std::any::Any)
+    }
+
+    fn family(&mut self, _changes: &[crate::core::device::Change]) -> Result<Option<&mut dyn std::any::Any>> {
+        // Only a simulator has operations of its own (its CPU); a real FX has none here.
+        Ok(self.sim.is_some().then_some(self as &mut dyn std::any::Any))
     }
 
     fn set_option(&mut self, key: &str, value: &str) -> Result<()> {

@@ -809,6 +809,12 @@ impl Device for K2Sim {
         Some(self)
     }
 
+    /// The K2 operations and simulation controls (`k2::ops`, `k2::simulator`): the simulator
+    /// itself permits everything.
+    fn family(&mut self, _changes: &[crate::core::device::Change]) -> Result<Option<&mut dyn std::any::Any>> {
+        Ok(Some(self))
+    }
+
     /// `state=FILE` (persist there), `backup_last=4095` (E2PROM area end),
     /// `retain=VB0..VB99,MB0[8]` (battery-retained ranges, or `none`).
     fn set_option(&mut self, key: &str, value: &str) -> Result<()> {
