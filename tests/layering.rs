@@ -46,7 +46,6 @@ const EXCEPTIONS: &[(&str, &str, &str)] = &[
     ("src/profile.rs", "record", "device names for recordings are still kept by the recorder"),
     ("src/session.rs", "record", "device names for recordings are still kept by the recorder"),
     ("src/session.rs", "lab", "the simulated-time budget still lives in the lab module"),
-    ("src/umpk/sim/control.rs", "k2", "the frequency parser is still the K2 helpers' own"),
 ];
 
 /// Sibling-file cycles that still stand: `(folder, reason)`.

@@ -357,6 +357,29 @@ pub fn millis_text(d: std::time::Duration) -> String {
     }
 }
 
+/// A frequency option (`freq=`, a PTO's rate): `2kHz`, `500Hz`, `1.5khz`, `200k`, `1MHz` → Hz.
+/// Positive and finite; the messages quote the text.
+pub fn parse_freq_hz(text: &str) -> std::result::Result<f64, String> {
+    let t = text.trim().to_ascii_lowercase();
+    let num_len = t.find(|c: char| !(c.is_ascii_digit() || c == '.' || c == '_')).unwrap_or(t.len());
+    let n: f64 =
+        t[..num_len].replace('_', "").parse().map_err(|_| format!("`{text}` is not a frequency (e.g. 2kHz, 500Hz)"))?;
+    let f = match &t[num_len..] {
+        "" | "hz" => 1.0,
+        "k" | "khz" => 1e3,
+        "m" | "mhz" => 1e6,
+        u => return Err(format!("unknown frequency unit `{u}` in `{text}` (use Hz, kHz)")),
+    };
+    let hz = n * f;
+    if hz <= 0.0 {
+        return Err(format!("`{text}` is not a positive frequency"));
+    }
+    if !hz.is_finite() {
+        return Err(format!("`{text}` is too large a frequency to hold (at most {:e} Hz)", f64::MAX));
+    }
+    Ok(hz)
+}
+
 impl Literal {
     /// Checks this literal against an operand of type `target` whose significant width is
     /// `bits` (equal to `target.bits()` except for bit groups such as `K1M0`, 4 bits), and
@@ -467,6 +490,18 @@ mod tests {
     }
 
     use super::*;
+
+    #[test]
+    fn frequencies() {
+        assert_eq!(parse_freq_hz("2kHz").unwrap(), 2000.0);
+        assert_eq!(parse_freq_hz("1.5khz").unwrap(), 1500.0);
+        assert_eq!(parse_freq_hz("200k").unwrap(), 200_000.0);
+        assert_eq!(parse_freq_hz("50").unwrap(), 50.0);
+        assert!(parse_freq_hz("fast").is_err());
+        assert!(parse_freq_hz("2kV").is_err());
+        assert!(parse_freq_hz("0Hz").is_err());
+        assert!(parse_freq_hz(&format!("1{}kHz", "0".repeat(400))).unwrap_err().contains("too large"));
+    }
 
     fn fit(s: &str, t: DataType) -> Result<Value, String> {
         parse_literal(s).map_err(|e| e.message)?.fit(t, t.bits())

@@ -143,27 +143,7 @@ pub(crate) fn read_ops(dev: &mut dyn Device, ops: &[K2Operand]) -> Result<Vec<Wr
         .collect())
 }
 
-/// `2kHz`, `500Hz`, `1.5khz`, `200k`, `1MHz` → Hz.
-pub fn parse_freq_hz(text: &str) -> std::result::Result<f64, String> {
-    let t = text.trim().to_ascii_lowercase();
-    let num_len = t.find(|c: char| !(c.is_ascii_digit() || c == '.' || c == '_')).unwrap_or(t.len());
-    let n: f64 =
-        t[..num_len].replace('_', "").parse().map_err(|_| format!("`{text}` is not a frequency (e.g. 2kHz, 500Hz)"))?;
-    let f = match &t[num_len..] {
-        "" | "hz" => 1.0,
-        "k" | "khz" => 1e3,
-        "m" | "mhz" => 1e6,
-        u => return Err(format!("unknown frequency unit `{u}` in `{text}` (use Hz, kHz)")),
-    };
-    let hz = n * f;
-    if hz <= 0.0 {
-        return Err(format!("`{text}` is not a positive frequency"));
-    }
-    if !hz.is_finite() {
-        return Err(format!("`{text}` is too large a frequency to hold (at most {:e} Hz)", f64::MAX));
-    }
-    Ok(hz)
-}
+pub use crate::core::literal::parse_freq_hz;
 
 /// A pulse cycle or width: a bare number is µs (the units table), else `500us`, `1ms`, `2s`.
 pub fn parse_us(text: &str) -> std::result::Result<u64, String> {
@@ -232,15 +212,7 @@ mod tests {
     }
 
     #[test]
-    fn frequencies_and_durations() {
-        assert_eq!(parse_freq_hz("2kHz").unwrap(), 2000.0);
-        assert_eq!(parse_freq_hz("1.5khz").unwrap(), 1500.0);
-        assert_eq!(parse_freq_hz("200k").unwrap(), 200_000.0);
-        assert_eq!(parse_freq_hz("50").unwrap(), 50.0);
-        assert!(parse_freq_hz("fast").is_err());
-        assert!(parse_freq_hz("2kV").is_err());
-        assert!(parse_freq_hz("0Hz").is_err());
-        assert!(parse_freq_hz(&format!("1{}kHz", "0".repeat(400))).unwrap_err().contains("too large"));
+    fn durations() {
         assert_eq!(parse_us("500us").unwrap(), 500);
         assert_eq!(parse_us("1ms").unwrap(), 1000);
         assert!(parse_us("0ms").is_err());

@@ -82,7 +82,7 @@ pub fn answer(u: &mut Umpk, text: &str) -> Result<(String, Json)> {
                 if value.is_some() {
                     return Err(usage("give a level or freq=, not both"));
                 }
-                let hz = crate::k2::helpers::parse_freq_hz(f).map_err(usage)?;
+                let hz = crate::core::literal::parse_freq_hz(f).map_err(usage)?;
                 let period = (1000.0 / hz / CYCLE_MS as f64).round();
                 if !(2.0..=1_000_000.0).contains(&period) {
                     return Err(usage(format!("freq={f}: the 10 ms cycle sees square waves of 0.0001–50 Hz")));
