@@ -3,15 +3,29 @@
 //! bound to instruction indices. Every refusal is a load error naming `file:line:column`
 //! and, where one is close, the instruction or label meant — nothing unknown survives to
 //! run time.
+//!
+//! This file holds the compiled program's shape ([`Ins`], [`Program`]), the walk over the
+//! file's POUs, networks, labels and calls, and the dispatch of each mnemonic. Operands are
+//! resolved and typed in [`operands`]; each instruction group is compiled in its own file:
+//! bit logic and comparisons ([`logic`]), moves ([`moves`]), arithmetic, word logic and
+//! conversions ([`arith`]), program flow and interrupts ([`flow`]), timers and counters
+//! ([`elements`]).
+
+mod arith;
+mod elements;
+mod flow;
+mod logic;
+mod moves;
+mod operands;
 
 use super::isa::{
     self, Arith, Cmp, Comb, Conv, CostClass, CounterKind, Def, Kind, Logic, Shift, TimerKind, TyHint, Unary,
 };
 use super::source::{self, OperandText, Pos, PouKind, Stmt};
-use super::{ArgKind, CostTable, Element, Family, Loc, Opd, SpecialDef, Width};
-use crate::core::literal::parse_literal;
+use super::{ArgKind, CostTable, Element, Family, Loc, Opd, SpecialDef};
 use crate::core::text::edit_distance;
 use crate::core::{DataType, Error, ErrorKind, Result};
+use operands::Raw;
 use std::collections::HashMap;
 
 /// FOR loops nest at most this deep (S7-200 System Manual, For-Next Loop: eight levels).
@@ -412,30 +426,6 @@ fn suggest<'a>(name: &str, cands: impl Iterator<Item = &'a str>) -> Option<Strin
         .map(|(_, c)| c.to_string())
 }
 
-fn bits_of(ty: DataType) -> u32 {
-    ty.bits()
-}
-
-/// The type a typed mnemonic fixes.
-fn hint_ty(h: TyHint) -> Option<DataType> {
-    match h {
-        TyHint::Byte => Some(DataType::Byte),
-        TyHint::Int => Some(DataType::Int),
-        TyHint::DInt => Some(DataType::DInt),
-        TyHint::Real => Some(DataType::Real),
-        TyHint::Auto => None,
-    }
-}
-
-/// An operand before typing: a location (with its own type), a pointer deref, or literal text.
-#[derive(Clone, Debug)]
-enum Raw {
-    Loc(Loc, DataType, String),
-    Ind(Loc),
-    Lit(String),
-    Ptr(u32),
-}
-
 impl<F: Family + ?Sized> Ctx<'_, F> {
     fn push(&mut self, ins: Ins, class: CostClass, pos: Pos, network: u32, m: &str, ops: &[OperandText]) {
         self.prog.code.push(ins);
@@ -449,129 +439,6 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
 
     fn e(&self, pos: Pos, msg: impl std::fmt::Display) -> Error {
         err(self.file, pos, msg)
-    }
-
-    fn raw(&self, o: &OperandText) -> Result<Raw> {
-        let t = o.text.as_str();
-        let fail = |e: super::OperandError| {
-            let mut x = self.e(o.pos, format!("{t}: {}", e.message)).operand(t);
-            if let Some(h) = e.hint {
-                x = x.hint(h);
-            }
-            x
-        };
-        if let Some(rest) = t.strip_prefix('*') {
-            let r = self.fam.operand(rest).map_err(fail)?;
-            if r.loc.width != Width::DWord {
-                return Err(self
-                    .e(o.pos, format!("{t}: a pointer is a double word, {rest} is not"))
-                    .hint(format!("keep pointers in double words, e.g. *%VD{}", r.loc.index)));
-            }
-            return Ok(Raw::Ind(r.loc));
-        }
-        if let Some(rest) = t.strip_prefix('&') {
-            let r = self.fam.operand(rest).map_err(fail)?;
-            let p = self.fam.pointer(r.loc).ok_or_else(|| {
-                self.e(o.pos, format!("{t}: {} cannot be pointed to", r.canonical))
-                    .hint("point to V, M, I, Q or SM bytes")
-            })?;
-            return Ok(Raw::Ptr(p));
-        }
-        let first = t.chars().next().unwrap_or(' ');
-        let upper = t.to_ascii_uppercase();
-        if first.is_ascii_digit()
-            || first == '-'
-            || first == '+'
-            || t.contains('#')
-            || matches!(upper.as_str(), "TRUE" | "FALSE" | "ON" | "OFF")
-        {
-            return Ok(Raw::Lit(t.to_string()));
-        }
-        let r = self.fam.value_operand(t).map_err(fail)?;
-        Ok(Raw::Loc(r.loc, r.ty, r.canonical))
-    }
-
-    /// Types a raw operand as `ty`: locations must have the same width; literals must fit.
-    fn typed(&self, o: &OperandText, r: &Raw, ty: DataType) -> Result<Opd> {
-        match r {
-            Raw::Loc(l, t, name) => {
-                if bits_of(*t) != bits_of(ty) {
-                    return Err(self
-                        .e(o.pos, format!("{name} is a {} but this operation works on {}", t.name(), ty.name()))
-                        .operand(name.clone())
-                        .hint(conversion_hint(*t, ty)));
-                }
-                Ok(Opd::Loc(*l))
-            }
-            Raw::Ind(l) => Ok(Opd::Ind(*l)),
-            Raw::Ptr(p) => {
-                if bits_of(ty) != 32 {
-                    return Err(self.e(o.pos, format!("{}: a pointer needs a double word", o.text)));
-                }
-                Ok(Opd::Imm(*p))
-            }
-            Raw::Lit(text) => Ok(Opd::Imm(self.literal(o, text, ty)?)),
-        }
-    }
-
-    fn literal(&self, o: &OperandText, text: &str, ty: DataType) -> Result<u32> {
-        let lit = parse_literal(text).map_err(|e| self.e(o.pos, format!("{text}: {}", e.message)))?;
-        let v = lit.fit(ty, ty.bits()).map_err(|m| self.e(o.pos, m))?;
-        Ok(ty.encode(&v))
-    }
-
-    /// The type of an operand as written (locations only).
-    fn own_ty(r: &Raw) -> Option<DataType> {
-        match r {
-            Raw::Loc(_, t, _) => Some(*t),
-            Raw::Ptr(_) => Some(DataType::DWord),
-            _ => None,
-        }
-    }
-
-    fn out_loc(&self, o: &OperandText, r: &Raw) -> Result<()> {
-        match r {
-            Raw::Lit(_) | Raw::Ptr(_) => {
-                Err(self.e(o.pos, format!("{} cannot be written: the output must be a memory location", o.text)))
-            }
-            _ => Ok(()),
-        }
-    }
-
-    fn bit(&self, o: &OperandText) -> Result<Loc> {
-        let first = o.text.chars().next().unwrap_or(' ');
-        let raw = if matches!(first, '*' | '&') || first.is_ascii_digit() || o.text.contains('#') {
-            self.raw(o)?
-        } else {
-            let r = self.fam.operand(&o.text).map_err(|e| {
-                let mut x = self.e(o.pos, format!("{}: {}", o.text, e.message)).operand(o.text.clone());
-                if let Some(h) = e.hint {
-                    x = x.hint(h);
-                }
-                x
-            })?;
-            Raw::Loc(r.loc, r.ty, r.canonical)
-        };
-        match raw {
-            Raw::Loc(l, DataType::Bool, _) => Ok(l),
-            Raw::Loc(_, t, name) => Err(self
-                .e(o.pos, format!("{name} is a {}, not a bit", t.name()))
-                .operand(name.clone())
-                .hint("bit operands look like %M0.0, %I0.1, %SM0.0 (or T5/C5 for a timer's or counter's bit)")),
-            _ => Err(self.e(o.pos, format!("{}: a bit location is needed here", o.text))),
-        }
-    }
-
-    fn count(&self, o: &OperandText) -> Result<u32> {
-        let v = self.literal(o, &o.text, DataType::DInt)? as i32;
-        if !(1..=255).contains(&v) {
-            return Err(self.e(o.pos, format!("{}: expected a count 1…255", o.text)));
-        }
-        Ok(v as u32)
-    }
-
-    fn name(o: &OperandText) -> String {
-        o.text.trim_start_matches('%').to_ascii_uppercase()
     }
 
     #[allow(clippy::type_complexity)]
@@ -643,25 +510,9 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
         Ok(())
     }
 
-    fn element(&mut self, o: &OperandText, timer: bool) -> Result<(Element, u32)> {
-        let el = self.fam.element(&o.text, timer).map_err(|e| {
-            let mut x = self.e(o.pos, format!("{}: {}", o.text, e.message));
-            if let Some(h) = e.hint {
-                x = x.hint(h);
-            }
-            x
-        })?;
-        let slots = if timer { &mut self.timer_slots } else { &mut self.counter_slots };
-        let next = slots.len() as u32;
-        let slot = *slots.entry(el.number).or_insert(next);
-        if timer {
-            self.prog.timers = self.timer_slots.len() as u32;
-        } else {
-            self.prog.counters = self.counter_slots.len() as u32;
-        }
-        Ok((el, slot))
-    }
-
+    /// A core instruction: the one-line ones here, the others by their group — bit logic
+    /// ([`logic`]), moves ([`moves`]), arithmetic and conversions ([`arith`]), program flow
+    /// and interrupts ([`flow`]), timers and counters ([`elements`]).
     #[allow(clippy::too_many_arguments)]
     fn core(
         &mut self,
@@ -676,328 +527,44 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
         Ok(match def.kind {
             Kind::Ld { neg } => Ins::Ld { loc: self.bit(&ops[0])?, neg },
             Kind::Logic { op, neg } => Ins::Logic { op, loc: self.bit(&ops[0])?, neg },
-            Kind::ParOpen { op, neg } => {
-                let load = match ops.first() {
-                    Some(o) => Some(self.bit(o)?),
-                    None => None,
-                };
-                Ins::ParOpen { op, neg, load }
-            }
+            Kind::ParOpen { op, neg } => self.par_open(op, neg, ops)?,
             Kind::ParClose => Ins::ParClose,
             Kind::Not => Ins::Not,
             Kind::St { neg } => Ins::St { loc: self.bit(&ops[0])?, neg },
-            Kind::Set | Kind::Reset => {
-                let on = def.kind == Kind::Set;
-                // A timer or counter operand: R clears it (S7-200 `R T37, 1`).
-                let up = ops[0].text.trim_start_matches('%').to_ascii_uppercase();
-                if !on && (up.starts_with('T') || up.starts_with('C')) && up[1..].chars().all(|c| c.is_ascii_digit()) {
-                    let timer = up.starts_with('T');
-                    let (el, slot) = self.element(&ops[0], timer)?;
-                    return Ok(Ins::ResetElem { timer, slot, cv: el.cv, q: el.q });
-                }
-                let n = match ops.get(1) {
-                    Some(o) => self.count(o)?,
-                    None => 1,
-                };
-                Ins::Set { loc: self.bit(&ops[0])?, n, on }
-            }
+            Kind::Set | Kind::Reset => self.set_reset(def.kind == Kind::Set, ops)?,
             Kind::Ald => Ins::Ald,
             Kind::Old => Ins::Old,
             Kind::Lps => Ins::Lps,
             Kind::Lrd => Ins::Lrd,
             Kind::Lpp => Ins::Lpp,
-            Kind::RTrig | Kind::FTrig => {
-                let slot = self.prog.edges;
-                self.prog.edges += 1;
-                Ins::Edge { slot, rising: def.kind == Kind::RTrig }
-            }
-            Kind::Compare { comb, ty, op } => {
-                let (a, b) = (self.raw(&ops[0])?, self.raw(&ops[1])?);
-                let t = match hint_ty(ty) {
-                    Some(t) => t,
-                    None => Self::own_ty(&a).or(Self::own_ty(&b)).unwrap_or(DataType::Int),
-                };
-                // `LDW` compares INT; a WORD operand compares as its bits (same width).
-                Ins::Compare { comb, op, ty: t, a: self.typed(&ops[0], &a, t)?, b: self.typed(&ops[1], &b, t)? }
-            }
-            Kind::Move { ty } => {
-                let (a, out) = (self.raw(&ops[0])?, self.raw(&ops[1])?);
-                self.out_loc(&ops[1], &out)?;
-                let t = self.value_ty(m, ty, &[(&ops[1], &out), (&ops[0], &a)])?;
-                Ins::Move { ty: t, a: self.typed(&ops[0], &a, t)?, out: self.typed(&ops[1], &out, t)? }
-            }
-            Kind::BlkMove { .. } | Kind::Fill => {
-                let fill = def.kind == Kind::Fill;
-                let hint = if let Kind::BlkMove { ty } = def.kind { ty } else { TyHint::Int };
-                let (a, out) = (self.raw(&ops[0])?, self.raw(&ops[1])?);
-                self.out_loc(&ops[1], &out)?;
-                let t = self.value_ty(m, hint, &[(&ops[1], &out), (&ops[0], &a)])?;
-                let n_raw = self.raw(&ops[2])?;
-                let n = self.typed(&ops[2], &n_raw, DataType::Int)?;
-                if let Opd::Imm(v) = n {
-                    if !(1..=255).contains(&(v as u16 as i16)) {
-                        return Err(self.e(ops[2].pos, format!("{m}: N must be 1…255, found {}", v as i16)));
-                    }
-                }
-                Ins::Block { ty: t, a: self.typed(&ops[0], &a, t)?, out: self.typed(&ops[1], &out, t)?, n, fill }
-            }
-            Kind::Arith { op, ty } => {
-                let out_o = ops.last().unwrap();
-                let out = self.raw(out_o)?;
-                self.out_loc(out_o, &out)?;
-                let ins: Vec<Raw> = ops[..ops.len() - 1].iter().map(|o| self.raw(o)).collect::<Result<_>>()?;
-                let mut all: Vec<(&OperandText, &Raw)> = vec![(out_o, &out)];
-                all.extend(ops.iter().zip(ins.iter()));
-                let t = signed(self.value_ty(m, ty, &all)?);
-                if t == DataType::Bool {
-                    return Err(self.e(pos, format!("{m} works on numbers, not bits")));
-                }
-                let outd = self.typed(out_o, &out, t)?;
-                let (a, b) = if ins.len() == 1 {
-                    (outd, self.typed(&ops[0], &ins[0], t)?)
-                } else {
-                    (self.typed(&ops[0], &ins[0], t)?, self.typed(&ops[1], &ins[1], t)?)
-                };
-                Ins::Arith { op, ty: t, a, b, out: outd }
-            }
-            Kind::IncDec { inc, ty } => {
-                let out = self.raw(&ops[0])?;
-                self.out_loc(&ops[0], &out)?;
-                let t = signed(self.value_ty(m, ty, &[(&ops[0], &out)])?);
-                Ins::IncDec { inc, ty: t, out: self.typed(&ops[0], &out, t)? }
-            }
-            Kind::Shift { op } => {
-                let out = self.raw(&ops[0])?;
-                self.out_loc(&ops[0], &out)?;
-                let t = self.value_ty(m, TyHint::Auto, &[(&ops[0], &out)])?;
-                let n = self.raw(&ops[1])?;
-                Ins::Shift {
-                    op,
-                    ty: t,
-                    out: self.typed(&ops[0], &out, t)?,
-                    n: self.typed(&ops[1], &n, DataType::Byte)?,
-                }
-            }
-            Kind::WordLogic { op } => {
-                let out_o = ops.last().unwrap();
-                let out = self.raw(out_o)?;
-                self.out_loc(out_o, &out)?;
-                let ins: Vec<Raw> = ops[..ops.len() - 1].iter().map(|o| self.raw(o)).collect::<Result<_>>()?;
-                let mut all: Vec<(&OperandText, &Raw)> = vec![(out_o, &out)];
-                all.extend(ops.iter().zip(ins.iter()));
-                let t = self.value_ty(m, TyHint::Auto, &all)?;
-                let outd = self.typed(out_o, &out, t)?;
-                let (a, b) = if ins.len() == 1 {
-                    (outd, self.typed(&ops[0], &ins[0], t)?)
-                } else {
-                    (self.typed(&ops[0], &ins[0], t)?, self.typed(&ops[1], &ins[1], t)?)
-                };
-                Ins::WordLogic { op, ty: t, a, b, out: outd }
-            }
-            Kind::Inv => {
-                let out = self.raw(&ops[0])?;
-                self.out_loc(&ops[0], &out)?;
-                let t = self.value_ty(m, TyHint::Auto, &[(&ops[0], &out)])?;
-                Ins::Inv { ty: t, out: self.typed(&ops[0], &out, t)? }
-            }
-            Kind::Unary(op) => {
-                let (a, out) = (self.raw(&ops[0])?, self.raw(&ops[1])?);
-                self.out_loc(&ops[1], &out)?;
-                let t = match op {
-                    Unary::Sqrt => DataType::Real,
-                    Unary::Abs => signed(self.value_ty(m, TyHint::Auto, &[(&ops[1], &out), (&ops[0], &a)])?),
-                };
-                if t == DataType::Bool || t == DataType::Byte {
-                    return Err(self.e(pos, format!("{m} works on INT, DINT or REAL values")));
-                }
-                Ins::Unary { op, ty: t, a: self.typed(&ops[0], &a, t)?, out: self.typed(&ops[1], &out, t)? }
-            }
-            Kind::Swap => {
-                let out = self.raw(&ops[0])?;
-                self.out_loc(&ops[0], &out)?;
-                Ins::Swap { out: self.typed(&ops[0], &out, DataType::Word)? }
-            }
-            Kind::For => {
-                let indx = self.raw(&ops[0])?;
-                self.out_loc(&ops[0], &indx)?;
-                let (init, fin) = (self.raw(&ops[1])?, self.raw(&ops[2])?);
-                let t =
-                    signed(self.value_ty(m, TyHint::Auto, &[(&ops[0], &indx), (&ops[1], &init), (&ops[2], &fin)])?);
-                if !matches!(t, DataType::Int | DataType::DInt) {
-                    return Err(self.e(pos, format!("{m}: INDX, INIT and FINAL are INT or DINT")));
-                }
-                Ins::For {
-                    ty: t,
-                    indx: self.typed(&ops[0], &indx, t)?,
-                    init: self.typed(&ops[1], &init, t)?,
-                    fin: self.typed(&ops[2], &fin, t)?,
-                    end: 0,
-                }
-            }
+            Kind::RTrig | Kind::FTrig => self.edge(def.kind == Kind::RTrig),
+            Kind::Compare { comb, ty, op } => self.compare(comb, ty, op, ops)?,
+            Kind::Move { ty } => self.move_value(m, ty, ops)?,
+            Kind::BlkMove { ty } => self.block(m, ty, false, ops)?,
+            Kind::Fill => self.block(m, TyHint::Int, true, ops)?,
+            Kind::Arith { op, ty } => self.arith(m, op, ty, ops, pos)?,
+            Kind::IncDec { inc, ty } => self.inc_dec(m, inc, ty, ops)?,
+            Kind::Shift { op } => self.shift(m, op, ops)?,
+            Kind::WordLogic { op } => self.word_logic(m, op, ops)?,
+            Kind::Inv => self.inv(m, ops)?,
+            Kind::Unary(op) => self.unary(m, op, ops, pos)?,
+            Kind::Swap => self.swap(ops)?,
+            Kind::For => self.for_loop(m, ops, pos)?,
             Kind::Next => Ins::Next { start: 0 },
-            Kind::Conv(c) => {
-                let (ti, to) = conv_types(c);
-                let (a, out) = (self.raw(&ops[0])?, self.raw(&ops[1])?);
-                self.out_loc(&ops[1], &out)?;
-                Ins::Conv { c, a: self.typed(&ops[0], &a, ti)?, out: self.typed(&ops[1], &out, to)? }
-            }
-            Kind::Jmp | Kind::Jmpc { .. } => {
-                jumps.push((here, Self::name(&ops[0]), ops[0].pos));
-                match def.kind {
-                    Kind::Jmpc { neg } => Ins::Jmpc { to: 0, neg },
-                    _ => Ins::Jmp { to: 0 },
-                }
-            }
-            Kind::Cal | Kind::Calc { .. } => {
-                calls.push((here, Self::name(&ops[0]), ops[0].pos));
-                let cond = match def.kind {
-                    Kind::Calc { neg } => Some(!neg),
-                    // KincoBuilder runs a subroutine box when its EN (the CR) is on.
-                    _ => Some(true),
-                };
-                Ins::Cal { pou: 0, cond }
-            }
+            Kind::Conv(c) => self.conv(c, ops)?,
+            Kind::Jmp | Kind::Jmpc { .. } => Self::jump(def.kind, ops, here, jumps),
+            Kind::Cal | Kind::Calc { .. } => Self::call(def.kind, ops, here, calls),
             Kind::Ret => Ins::Ret { cond: None },
             Kind::Retc { neg } => Ins::Ret { cond: Some(!neg) },
-            Kind::Timer(kind) => {
-                let (el, slot) = self.element(&ops[0], true)?;
-                let pt = self.preset(&ops[1], Some(el.base_ns))?;
-                let reset = match ops.get(2) {
-                    Some(o) => Some(self.bit(o)?),
-                    None => None,
-                };
-                Ins::Timer { kind, slot, el, pt, reset }
-            }
-            Kind::Counter(kind) => {
-                let (el, slot) = self.element(&ops[0], false)?;
-                let pv = self.preset(&ops[1], None)?;
-                let (second, reset) = match kind {
-                    CounterKind::Ctud => (Some(self.bit(&ops[2])?), ops.get(3).map(|o| self.bit(o)).transpose()?),
-                    _ => (None, ops.get(2).map(|o| self.bit(o)).transpose()?),
-                };
-                Ins::Counter { kind, slot, el, pv, second, reset }
-            }
-            Kind::Atch => {
-                calls.push((here, Self::name(&ops[0]), ops[0].pos));
-                let r = self.raw(&ops[1])?;
-                let event = self.typed(&ops[1], &r, DataType::Int)?;
-                if let Opd::Imm(v) = event {
-                    if (v as i16) < 0 || !self.fam.event_exists(v as i16 as u32) {
-                        return Err(self.e(
-                            ops[1].pos,
-                            format!("ATCH: no interrupt event {} (events: {})", v as i16, self.fam.event_list()),
-                        ));
-                    }
-                }
-                Ins::Atch { pou: 0, event }
-            }
-            Kind::Dtch => {
-                let r = self.raw(&ops[0])?;
-                Ins::Dtch { event: self.typed(&ops[0], &r, DataType::Int)? }
-            }
+            Kind::Timer(kind) => self.timer(kind, ops)?,
+            Kind::Counter(kind) => self.counter(kind, ops)?,
+            Kind::Atch => self.atch(ops, here, calls)?,
+            Kind::Dtch => self.dtch(ops)?,
             Kind::Eni => Ins::Eni,
             Kind::Disi => Ins::Disi,
             Kind::Wdt => Ins::Wdt,
             Kind::Nop => Ins::Nop,
         })
-    }
-
-    /// A timer preset or counter preset: INT operand or literal; `T#…` literals are
-    /// converted to the timer's units.
-    fn preset(&mut self, o: &OperandText, base_ns: Option<u64>) -> Result<Opd> {
-        let r = self.raw(o)?;
-        if let (Raw::Lit(t), Some(base)) = (&r, base_ns) {
-            if t.to_ascii_uppercase().starts_with("T#") {
-                let lit = parse_literal(t).map_err(|e| self.e(o.pos, format!("{t}: {}", e.message)))?;
-                let ms = lit.value.as_i64();
-                // In i128 to the end: a long T# on a fine time base must be refused, not
-                // truncated back into 0…32767.
-                // A delay is never shorter than asked: a duration between two units rounds up
-                // (T#250ms on a 100 ms timer is 3 units, 300 ms), with a load warning.
-                let base = base.max(1) as i128;
-                let ns = ms as i128 * 1_000_000;
-                let units = (ns + base - 1).div_euclid(base);
-                if !(0..=32767).contains(&units) {
-                    let longest = 32767 * base / 1_000_000;
-                    return Err(self.e(
-                        o.pos,
-                        format!(
-                            "{t} is {units} units of this {} ms timer; the preset must be 0…32767 (at most {}.{:03} s)",
-                            base / 1_000_000,
-                            longest / 1000,
-                            longest % 1000
-                        ),
-                    ));
-                }
-                if units * base != ns {
-                    let got = units * base / 1_000_000;
-                    self.prog.warnings.push(format!(
-                        "{}:{}:{}: {t} is not a whole number of this timer's {} ms units: rounded up to {got} ms ({units} units), never shorter than asked",
-                        self.prog.file,
-                        o.pos.line,
-                        o.pos.col,
-                        base / 1_000_000
-                    ));
-                }
-                return Ok(Opd::Imm(units as u16 as u32));
-            }
-        }
-        self.typed(o, &r, DataType::Int)
-    }
-
-    /// The type of a value instruction: the mnemonic's, else the first located operand's
-    /// (the output first), else INT for literals only and BYTE behind pointers.
-    fn value_ty(&self, m: &str, hint: TyHint, ops: &[(&OperandText, &Raw)]) -> Result<DataType> {
-        if let Some(t) = hint_ty(hint) {
-            return Ok(t);
-        }
-        for (_, r) in ops {
-            if let Raw::Loc(_, t, _) = r {
-                return Ok(*t);
-            }
-        }
-        if ops.iter().any(|(_, r)| matches!(r, Raw::Ptr(_))) {
-            return Ok(DataType::DWord);
-        }
-        if ops.iter().any(|(_, r)| matches!(r, Raw::Ind(_))) {
-            // `MOVE *VD4, *VD8`: pointers made with `&VB…` address bytes.
-            return Ok(DataType::Byte);
-        }
-        let _ = m;
-        Ok(DataType::Int)
-    }
-}
-
-/// Arithmetic on a WORD or DWORD operand is INT or DINT arithmetic (S7-200 `+I`, `+D`:
-/// VW and VD hold signed numbers for the arithmetic instructions).
-fn signed(t: DataType) -> DataType {
-    match t {
-        DataType::Word => DataType::Int,
-        DataType::DWord => DataType::DInt,
-        t => t,
-    }
-}
-
-fn conv_types(c: Conv) -> (DataType, DataType) {
-    use DataType as T;
-    match c {
-        Conv::IDi => (T::Int, T::DInt),
-        Conv::DiI => (T::DInt, T::Int),
-        Conv::BI => (T::Byte, T::Int),
-        Conv::IB => (T::Int, T::Byte),
-        Conv::DiR => (T::DInt, T::Real),
-        Conv::Round | Conv::Trunc => (T::Real, T::DInt),
-        Conv::IBcd | Conv::BcdI => (T::Int, T::Int),
-    }
-}
-
-fn conversion_hint(from: DataType, to: DataType) -> String {
-    match (from.bits(), to.bits()) {
-        (16, 32) => "convert first: I_DI IN, %VDn (INT → DINT)".into(),
-        (32, 16) => "convert first: DI_I IN, %VWn (DINT → INT)".into(),
-        (8, 16) => "convert first: B_I IN, %VWn (BYTE → INT)".into(),
-        (16, 8) => "convert first: I_B IN, %VBn (INT → BYTE)".into(),
-        _ => "use operands of the same size (B, W, D)".into(),
     }
 }
 

@@ -1,0 +1,192 @@
+//! Operands while compiling: text resolved through the family ([`Family::operand`],
+//! [`Family::value_operand`], pointers `*VD4` and `&VB0`), literals fitted to the type the
+//! instruction works on, bit operands, and the type a value instruction takes from its
+//! mnemonic or its operands. Every instruction group's compiler uses these.
+
+use super::Ctx;
+use crate::core::literal::parse_literal;
+use crate::core::{DataType, Result};
+use crate::engine::isa::TyHint;
+use crate::engine::source::OperandText;
+use crate::engine::{Family, Loc, Opd, Width};
+
+fn bits_of(ty: DataType) -> u32 {
+    ty.bits()
+}
+
+/// The type a typed mnemonic fixes.
+pub(super) fn hint_ty(h: TyHint) -> Option<DataType> {
+    match h {
+        TyHint::Byte => Some(DataType::Byte),
+        TyHint::Int => Some(DataType::Int),
+        TyHint::DInt => Some(DataType::DInt),
+        TyHint::Real => Some(DataType::Real),
+        TyHint::Auto => None,
+    }
+}
+
+/// An operand before typing: a location (with its own type), a pointer deref, or literal text.
+#[derive(Clone, Debug)]
+pub(super) enum Raw {
+    Loc(Loc, DataType, String),
+    Ind(Loc),
+    Lit(String),
+    Ptr(u32),
+}
+
+impl<F: Family + ?Sized> Ctx<'_, F> {
+    pub(super) fn raw(&self, o: &OperandText) -> Result<Raw> {
+        let t = o.text.as_str();
+        let fail = |e: crate::engine::OperandError| {
+            let mut x = self.e(o.pos, format!("{t}: {}", e.message)).operand(t);
+            if let Some(h) = e.hint {
+                x = x.hint(h);
+            }
+            x
+        };
+        if let Some(rest) = t.strip_prefix('*') {
+            let r = self.fam.operand(rest).map_err(fail)?;
+            if r.loc.width != Width::DWord {
+                return Err(self
+                    .e(o.pos, format!("{t}: a pointer is a double word, {rest} is not"))
+                    .hint(format!("keep pointers in double words, e.g. *%VD{}", r.loc.index)));
+            }
+            return Ok(Raw::Ind(r.loc));
+        }
+        if let Some(rest) = t.strip_prefix('&') {
+            let r = self.fam.operand(rest).map_err(fail)?;
+            let p = self.fam.pointer(r.loc).ok_or_else(|| {
+                self.e(o.pos, format!("{t}: {} cannot be pointed to", r.canonical))
+                    .hint("point to V, M, I, Q or SM bytes")
+            })?;
+            return Ok(Raw::Ptr(p));
+        }
+        let first = t.chars().next().unwrap_or(' ');
+        let upper = t.to_ascii_uppercase();
+        if first.is_ascii_digit()
+            || first == '-'
+            || first == '+'
+            || t.contains('#')
+            || matches!(upper.as_str(), "TRUE" | "FALSE" | "ON" | "OFF")
+        {
+            return Ok(Raw::Lit(t.to_string()));
+        }
+        let r = self.fam.value_operand(t).map_err(fail)?;
+        Ok(Raw::Loc(r.loc, r.ty, r.canonical))
+    }
+
+    /// Types a raw operand as `ty`: locations must have the same width; literals must fit.
+    pub(super) fn typed(&self, o: &OperandText, r: &Raw, ty: DataType) -> Result<Opd> {
+        match r {
+            Raw::Loc(l, t, name) => {
+                if bits_of(*t) != bits_of(ty) {
+                    return Err(self
+                        .e(o.pos, format!("{name} is a {} but this operation works on {}", t.name(), ty.name()))
+                        .operand(name.clone())
+                        .hint(conversion_hint(*t, ty)));
+                }
+                Ok(Opd::Loc(*l))
+            }
+            Raw::Ind(l) => Ok(Opd::Ind(*l)),
+            Raw::Ptr(p) => {
+                if bits_of(ty) != 32 {
+                    return Err(self.e(o.pos, format!("{}: a pointer needs a double word", o.text)));
+                }
+                Ok(Opd::Imm(*p))
+            }
+            Raw::Lit(text) => Ok(Opd::Imm(self.literal(o, text, ty)?)),
+        }
+    }
+
+    pub(super) fn literal(&self, o: &OperandText, text: &str, ty: DataType) -> Result<u32> {
+        let lit = parse_literal(text).map_err(|e| self.e(o.pos, format!("{text}: {}", e.message)))?;
+        let v = lit.fit(ty, ty.bits()).map_err(|m| self.e(o.pos, m))?;
+        Ok(ty.encode(&v))
+    }
+
+    /// The type of an operand as written (locations only).
+    pub(super) fn own_ty(r: &Raw) -> Option<DataType> {
+        match r {
+            Raw::Loc(_, t, _) => Some(*t),
+            Raw::Ptr(_) => Some(DataType::DWord),
+            _ => None,
+        }
+    }
+
+    pub(super) fn out_loc(&self, o: &OperandText, r: &Raw) -> Result<()> {
+        match r {
+            Raw::Lit(_) | Raw::Ptr(_) => {
+                Err(self.e(o.pos, format!("{} cannot be written: the output must be a memory location", o.text)))
+            }
+            _ => Ok(()),
+        }
+    }
+
+    pub(super) fn bit(&self, o: &OperandText) -> Result<Loc> {
+        let first = o.text.chars().next().unwrap_or(' ');
+        let raw = if matches!(first, '*' | '&') || first.is_ascii_digit() || o.text.contains('#') {
+            self.raw(o)?
+        } else {
+            let r = self.fam.operand(&o.text).map_err(|e| {
+                let mut x = self.e(o.pos, format!("{}: {}", o.text, e.message)).operand(o.text.clone());
+                if let Some(h) = e.hint {
+                    x = x.hint(h);
+                }
+                x
+            })?;
+            Raw::Loc(r.loc, r.ty, r.canonical)
+        };
+        match raw {
+            Raw::Loc(l, DataType::Bool, _) => Ok(l),
+            Raw::Loc(_, t, name) => Err(self
+                .e(o.pos, format!("{name} is a {}, not a bit", t.name()))
+                .operand(name.clone())
+                .hint("bit operands look like %M0.0, %I0.1, %SM0.0 (or T5/C5 for a timer's or counter's bit)")),
+            _ => Err(self.e(o.pos, format!("{}: a bit location is needed here", o.text))),
+        }
+    }
+
+    pub(super) fn count(&self, o: &OperandText) -> Result<u32> {
+        let v = self.literal(o, &o.text, DataType::DInt)? as i32;
+        if !(1..=255).contains(&v) {
+            return Err(self.e(o.pos, format!("{}: expected a count 1…255", o.text)));
+        }
+        Ok(v as u32)
+    }
+
+    pub(super) fn name(o: &OperandText) -> String {
+        o.text.trim_start_matches('%').to_ascii_uppercase()
+    }
+
+    /// The type of a value instruction: the mnemonic's, else the first located operand's
+    /// (the output first), else INT for literals only and BYTE behind pointers.
+    pub(super) fn value_ty(&self, m: &str, hint: TyHint, ops: &[(&OperandText, &Raw)]) -> Result<DataType> {
+        if let Some(t) = hint_ty(hint) {
+            return Ok(t);
+        }
+        for (_, r) in ops {
+            if let Raw::Loc(_, t, _) = r {
+                return Ok(*t);
+            }
+        }
+        if ops.iter().any(|(_, r)| matches!(r, Raw::Ptr(_))) {
+            return Ok(DataType::DWord);
+        }
+        if ops.iter().any(|(_, r)| matches!(r, Raw::Ind(_))) {
+            // `MOVE *VD4, *VD8`: pointers made with `&VB…` address bytes.
+            return Ok(DataType::Byte);
+        }
+        let _ = m;
+        Ok(DataType::Int)
+    }
+}
+
+fn conversion_hint(from: DataType, to: DataType) -> String {
+    match (from.bits(), to.bits()) {
+        (16, 32) => "convert first: I_DI IN, %VDn (INT → DINT)".into(),
+        (32, 16) => "convert first: DI_I IN, %VWn (DINT → INT)".into(),
+        (8, 16) => "convert first: B_I IN, %VWn (BYTE → INT)".into(),
+        (16, 8) => "convert first: I_B IN, %VBn (INT → BYTE)".into(),
+        _ => "use operands of the same size (B, W, D)".into(),
+    }
+}
