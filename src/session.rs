@@ -63,8 +63,8 @@ pub struct Session {
     read_only: Arc<AtomicBool>,
     /// A sandboxed run's rules ([`crate::confine`]): checked here, where devices are opened.
     pub confine: Option<Arc<crate::confine::Confinement>>,
-    /// A graded run's limits ([`crate::lab::budget`]): waits stop at its simulated-time limit.
-    pub budget: Option<Arc<crate::lab::budget::Budget>>,
+    /// A graded run's limits ([`crate::core::budget`]): waits stop at its simulated-time limit.
+    pub budget: Option<Arc<crate::core::budget::Budget>>,
 }
 
 /// URL schemes with what they open, for completion and hints. Keep in step with [`open_url`]

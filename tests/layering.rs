@@ -45,7 +45,6 @@ const EXCEPTIONS: &[(&str, &str, &str)] = &[
     ("src/profile.rs", "fleet", "fleet definitions are still parsed by the fleet runner's module"),
     ("src/profile.rs", "record", "device names for recordings are still kept by the recorder"),
     ("src/session.rs", "record", "device names for recordings are still kept by the recorder"),
-    ("src/session.rs", "lab", "the simulated-time budget still lives in the lab module"),
 ];
 
 /// Sibling-file cycles that still stand: `(folder, reason)`.

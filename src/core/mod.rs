@@ -1,6 +1,7 @@
 //! Family-neutral building blocks: values, literals, operands, the device trait, errors
 //! and the virtual clock. Nothing here knows a PLC model or a wire protocol.
 
+pub mod budget;
 pub mod clock;
 pub mod device;
 pub mod durable;

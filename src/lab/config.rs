@@ -42,7 +42,7 @@ struct RawBudget {
     wall: Option<String>,
 }
 
-/// One graded run's limits ([`super::budget`]).
+/// One graded run's limits ([`crate::core::budget`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Limits {
     pub sim_time: Duration,

@@ -3,9 +3,9 @@
 //! limits, then the grader script with its `lab` table (`lab.lua`). The result is a
 //! [`Report`] with no wall-clock figure in it, so two runs give the same bytes.
 
-use super::budget::Budget;
 use super::config::Lab;
 use crate::confine::Confinement;
+use crate::core::budget::Budget;
 use crate::core::{Clock, Error, ErrorKind};
 use crate::output::Style;
 use crate::script::{sandbox, Engine};

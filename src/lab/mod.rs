@@ -1,10 +1,10 @@
 //! Teaching labs (`plcsh lab new | check | grade`): a lab is a folder with a `lab.toml`
 //! ([`config`]) naming its machine, start snapshot, starter files, reference solution, grader
 //! and limits. Every submission is graded from the same fresh state in a sandbox
-//! ([`crate::confine`], `script::sandbox`) under deterministic limits ([`budget`]), in a
-//! worker process of its own ([`runner`]); the grader's `lab` API is [`grader`].
+//! ([`crate::confine`], `script::sandbox`) under deterministic limits
+//! ([`crate::core::budget`]), in a worker process of its own ([`runner`]); the grader's `lab`
+//! API is [`grader`].
 
-pub mod budget;
 pub mod config;
 pub mod example;
 pub mod grader;

@@ -88,12 +88,12 @@ impl Engine {
         &self.lua
     }
 
-    /// Holds the run to a graded run's limits ([`crate::lab::budget`]): Lua memory, and Lua
+    /// Holds the run to a graded run's limits ([`crate::core::budget`]): Lua memory, and Lua
     /// instructions and simulated time, checked by the instruction hook. A limit passed
     /// raises the interrupt flag too, so no `pcall` in the script can swallow it.
     pub fn limit(
         &self,
-        budget: Arc<crate::lab::budget::Budget>,
+        budget: Arc<crate::core::budget::Budget>,
         clock: crate::core::Clock,
         interrupt: Arc<AtomicBool>,
     ) -> mlua::Result<()> {

@@ -4,6 +4,10 @@
 //! wall-clock limit only as a safety net (the parent process ends a worker that passes it).
 //! The verdicts name the limit ("exceeded 10 simulated minutes"), so a submission gets the
 //! same verdict on an idle machine and on a loaded one.
+//!
+//! The limits are set by `plcsh lab` (`crate::lab`) and kept by the session (its waits stop at
+//! the simulated-time limit) and the Lua engine (its instruction hook): it lives in the core so
+//! that the session below the lab can hold it.
 
 use crate::core::Clock;
 use std::sync::atomic::{AtomicU64, Ordering};
