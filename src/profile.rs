@@ -403,7 +403,7 @@ pub fn open(s: &mut crate::session::Session, name: &str, profile: &str) -> Resul
 /// its options, its write rules as the entry's guard.
 pub fn open_profile(s: &mut crate::session::Session, name: &str, p: &Profile) -> Result<()> {
     let from = format!("from profile `{}` ({})", p.name, p.origin);
-    crate::record::name_device(&p.url, name);
+    crate::core::trace::name_device(&p.url, name);
     let mut device = crate::session::open_url(&p.url, &s.clock).map_err(|e| e.device(name).cause(&from))?;
     for (k, v) in &p.options {
         device.set_option(k, v).map_err(|e| e.device(name).cause(&from))?;

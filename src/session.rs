@@ -228,7 +228,7 @@ impl Session {
         if !url.contains(':') {
             return crate::profile::open(self, name, url);
         }
-        crate::record::name_device(url, name);
+        crate::core::trace::name_device(url, name);
         let device = open_url(url, &self.clock).map_err(|e| e.device(name))?;
         self.add(name, url, device);
         Ok(())

@@ -43,8 +43,6 @@ const EXCEPTIONS: &[(&str, &str, &str)] = &[
     ("src/confine.rs", "shell", "the sandbox's write rule still lives in the shell's file helpers"),
     ("src/paths.rs", "script", "the Lua module search path is still computed by the script layer"),
     ("src/profile.rs", "fleet", "fleet definitions are still parsed by the fleet runner's module"),
-    ("src/profile.rs", "record", "device names for recordings are still kept by the recorder"),
-    ("src/session.rs", "record", "device names for recordings are still kept by the recorder"),
 ];
 
 /// Sibling-file cycles that still stand: `(folder, reason)`.

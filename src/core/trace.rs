@@ -5,7 +5,8 @@
 //!
 //! Two independent outlets: the display sink ([`set_sink`]) sees frames as they cross; the
 //! recorder ([`set_recorder`]) also learns each link's protocol and when a connection opens
-//! and closes, which it needs to write standard captures.
+//! and closes, which it needs to write standard captures, and the name each device is opened
+//! under ([`name_device`]: the session tells it here, so it need not know the recorder).
 
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex, OnceLock};
@@ -47,6 +48,8 @@ pub trait Recorder: Send + Sync {
     fn frame(&self, link: &str, proto: Proto, dir: Dir, bytes: &[u8]);
     /// The connection on `link` closed.
     fn closed(&self, link: &str);
+    /// The device opened from `url` is called `name` (so a capture says `plc`, not the URL).
+    fn named(&self, _url: &str, _name: &str) {}
 }
 
 /// Where traced frames go.
@@ -88,6 +91,11 @@ pub fn opened(link: &str, proto: Proto, peer: &str) {
 /// Reports that the connection on `link` closed.
 pub fn closed(link: &str) {
     with_recorder(|r| r.closed(link));
+}
+
+/// Tells the running recording (if any) the name of the device opened from `url`.
+pub fn name_device(url: &str, name: &str) {
+    with_recorder(|r| r.named(url, name));
 }
 
 struct State {

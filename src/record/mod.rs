@@ -392,6 +392,10 @@ impl trace::Recorder for FileRecorder {
         }
         i.flush();
     }
+
+    fn named(&self, url: &str, name: &str) {
+        self.name_device(url, name);
+    }
 }
 
 /// The recorder of this process, while one runs (`--record`).
@@ -411,13 +415,6 @@ pub fn start(path: &Path, clock: Clock) -> Result<()> {
 pub fn stop() -> Result<()> {
     let r = current().lock().unwrap_or_else(|p| p.into_inner()).take();
     r.map_or(Ok(()), |r| r.finish())
-}
-
-/// Tells the running recording (if any) the name of the device opened from `url`.
-pub fn name_device(url: &str, name: &str) {
-    if let Some(r) = current().lock().unwrap_or_else(|p| p.into_inner()).as_ref() {
-        r.name_device(url, name);
-    }
 }
 
 #[cfg(test)]
