@@ -6,6 +6,9 @@
 //! the write directory, never named snapshots in the user's data directory. The Lua side
 //! (`script::sandbox`) removes the parts of Lua that reach outside plcsh and routes Lua's own
 //! file functions through the same checks.
+//!
+//! The write rule itself ([`WriteRule`], [`check_write`]) is here too: the shell's commands
+//! that write files (`trend … to=`, `eeprom dump`, …) hold one, unrestricted outside a sandbox.
 
 use crate::core::url::DeviceUrl;
 use crate::core::{Error, Result};
@@ -36,6 +39,28 @@ fn resolve(path: &Path) -> Option<PathBuf> {
     let name = path.file_name()?;
     let parent = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
     Some(crate::core::fspath::canonical(parent).ok()?.join(name))
+}
+
+/// The rule: `None` writes anywhere; `Some(None)` nowhere; `Some(Some(dir))` only under `dir`.
+pub type WriteRule = Option<Option<PathBuf>>;
+
+/// Checks that `path` may be written under `rule` (after resolving `..` and symbolic links in
+/// its directory).
+pub fn check_write(rule: &WriteRule, path: &str) -> Result<()> {
+    let Some(dir) = rule else { return Ok(()) };
+    let Some(dir) = dir else {
+        return Err(Error::unsupported(format!("writing {path} is not allowed in a sandboxed run"))
+            .hint("give the run a directory for its files: plcsh run --sandbox --write-dir DIR"));
+    };
+    let dir = crate::core::fspath::canonical(dir).unwrap_or_else(|_| dir.clone());
+    let p = Path::new(path);
+    let parent = p.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    let resolved = crate::core::fspath::canonical(parent).ok().map(|d| d.join(p.file_name().unwrap_or_default()));
+    match resolved {
+        Some(r) if r.starts_with(&dir) && p.file_name().is_some() => Ok(()),
+        _ => Err(Error::unsupported(format!("writing {path} is outside {}", dir.display()))
+            .hint("a sandboxed run writes only under its --write-dir")),
+    }
 }
 
 impl Confinement {
@@ -77,7 +102,7 @@ impl Confinement {
 
     /// Refuses writing `path` outside the write directory.
     pub fn check_write(&self, path: &str) -> Result<()> {
-        crate::shell::files::check_write(&Some(self.write.clone()), path)
+        check_write(&Some(self.write.clone()), path)
     }
 
     /// The file of snapshot `name` for saving (`save`) or restoring: a path under the run's
@@ -146,5 +171,16 @@ mod tests {
         assert!(c.snapshot_file(d.join("grade.json").to_str().unwrap(), true).is_err());
         c.snapshot_file(d.join("out/s.json").to_str().unwrap(), true).unwrap();
         std::fs::remove_dir_all(&d).unwrap();
+    }
+
+    #[test]
+    fn writes_stay_under_the_directory() {
+        let dir = std::env::temp_dir();
+        assert!(check_write(&None, "/etc/x").is_ok());
+        assert!(check_write(&Some(None), "x.csv").is_err());
+        let rule = Some(Some(dir.clone()));
+        assert!(check_write(&rule, dir.join("a.csv").to_str().unwrap()).is_ok());
+        assert!(check_write(&rule, dir.join("../a.csv").to_str().unwrap()).is_err());
+        assert!(check_write(&rule, "/etc/passwd").is_err());
     }
 }
