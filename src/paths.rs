@@ -7,7 +7,7 @@
 //! `~/.local/share/plcsh` on Linux, `%APPDATA%\plcsh\…` on Windows, `~/Library/Application
 //! Support/plcsh` on macOS); environment variables and flags override single files.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
 
 fn dirs() -> Option<directories::ProjectDirs> {
@@ -27,6 +27,38 @@ pub fn config_file() -> Option<PathBuf> {
 /// The user's Lua modules (`lib/` in the config directory).
 pub fn user_lib() -> Option<PathBuf> {
     dirs().map(|d| d.config_dir().join("lib"))
+}
+
+/// The directories `require` searches before the modules built into the binary, most specific
+/// first (only those that exist): `PLCSH_LIB`, the user's [`user_lib`], the project's `lib/`
+/// ([`project_lib`]). The Lua searcher (`script::paths`) walks them; `paths` shows them.
+pub fn lib_dirs() -> Vec<PathBuf> {
+    let mut dirs: Vec<PathBuf> = Vec::new();
+    if let Some(v) = std::env::var_os("PLCSH_LIB") {
+        dirs.extend(std::env::split_paths(&v).filter(|p| !p.as_os_str().is_empty()));
+    }
+    dirs.extend(user_lib());
+    if let Some(found) = project_lib() {
+        dirs.push(found);
+    }
+    dirs.retain(|d| d.is_dir());
+    dirs.dedup();
+    dirs
+}
+
+/// The project's `lib/` on disk next to the executable, when there is one.
+pub fn project_lib() -> Option<PathBuf> {
+    let exe = std::env::current_exe().ok()?;
+    [2usize, 1, 0]
+        .iter()
+        .filter_map(|up| {
+            let mut p = exe.parent();
+            for _ in 0..*up {
+                p = p.and_then(Path::parent);
+            }
+            p.map(|p| p.join("lib"))
+        })
+        .find(|p| p.join("commission.lua").is_file())
 }
 
 /// The simulated K2's state file (backup area, retained ranges, clock) by default.
@@ -85,7 +117,7 @@ pub fn places() -> Vec<Place> {
         state: env_path("PLCSH_STATE").or_else(k2_state),
         record: None,
     });
-    let lib: Vec<String> = crate::script::paths::lib_dirs().iter().map(|d| d.display().to_string()).collect();
+    let lib: Vec<String> = lib_dirs().iter().map(|d| d.display().to_string()).collect();
     let lib = if lib.is_empty() { "built in".to_string() } else { format!("{}, then built in", lib.join(", ")) };
     vec![
         Place { name: "config", path: shown(e.config), set_by: "--config, PLCSH_CONFIG" },

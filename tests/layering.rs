@@ -40,7 +40,6 @@ const EXCEPTIONS: &[(&str, &str, &str)] = &[
     ("src/pending.rs", "servo", CAPABILITY),
     ("src/guard.rs", "k2", GUARD_CHANGES),
     ("src/guard.rs", "servo", GUARD_CHANGES),
-    ("src/paths.rs", "script", "the Lua module search path is still computed by the script layer"),
     ("src/profile.rs", "fleet", "fleet definitions are still parsed by the fleet runner's module"),
 ];
 

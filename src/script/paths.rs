@@ -9,7 +9,9 @@
 //! then Lua's defaults (`package.path`).
 //! One searcher (in the place of Lua's file searcher, so the sandbox's list of searchers is
 //! unchanged) walks this list; the directories are visible to scripts as `plcsh.lib_dirs`, and
-//! a module found in the binary reports `plcsh:lib/NAME.lua` as its loader data.
+//! a module found in the binary reports `plcsh:lib/NAME.lua` as its loader data. The
+//! directories of 1–3 are computed by [`crate::paths::lib_dirs`], where `plcsh paths` reads
+//! them too.
 
 use mlua::chunk::ChunkMode;
 use mlua::{Lua, MultiValue, Table, Value};
@@ -19,36 +21,7 @@ use std::sync::{Arc, Mutex};
 /// The modules of `lib/` built into the binary: (module name, source).
 pub const BUILT_IN: &[(&str, &str)] = &[("commission", include_str!("../../lib/commission.lua"))];
 
-/// The directories searched before the built-in modules, most specific first (only those
-/// that exist).
-pub fn lib_dirs() -> Vec<PathBuf> {
-    let mut dirs: Vec<PathBuf> = Vec::new();
-    if let Some(v) = std::env::var_os("PLCSH_LIB") {
-        dirs.extend(std::env::split_paths(&v).filter(|p| !p.as_os_str().is_empty()));
-    }
-    dirs.extend(crate::paths::user_lib());
-    if let Some(found) = project_lib() {
-        dirs.push(found);
-    }
-    dirs.retain(|d| d.is_dir());
-    dirs.dedup();
-    dirs
-}
-
-/// The project's `lib/` on disk next to the executable, when there is one.
-pub fn project_lib() -> Option<PathBuf> {
-    let exe = std::env::current_exe().ok()?;
-    [2usize, 1, 0]
-        .iter()
-        .filter_map(|up| {
-            let mut p = exe.parent();
-            for _ in 0..*up {
-                p = p.and_then(Path::parent);
-            }
-            p.map(|p| p.join("lib"))
-        })
-        .find(|p| p.join("commission.lua").is_file())
-}
+use crate::paths::lib_dirs;
 
 /// The search list of one interpreter: directories before the built-in modules, then the
 /// script's directory (set by `plcsh run`).
