@@ -189,14 +189,12 @@ const KNOWN: &[(&str, &str)] = &[("k2", "k2"), ("k2", "wiring"), ("servo", "serv
 fn umpk_sim(
     dev: &mut Box<dyn crate::core::Device>,
 ) -> Option<std::sync::Arc<std::sync::Mutex<crate::umpk::sim::Umpk>>> {
-    let ops = dev.family_ops_for(&[]).ok().flatten()?;
-    ops.downcast_mut::<crate::umpk::driver::Driver>()?.simulator()
+    crate::umpk::ops(dev.as_mut(), &[]).ok()??.simulator()
 }
 
 /// The simulated FX PLC behind a device, if it is one (`sim-fx:`).
 fn fx_sim(dev: &mut Box<dyn crate::core::Device>) -> Option<crate::fx::sim::Plc> {
-    let ops = dev.family_ops_for(&[]).ok().flatten()?;
-    ops.downcast_mut::<crate::fx::driver::Driver>()?.sim.clone()
+    crate::fx::driver::simulator(dev.as_mut())
 }
 
 /// One wire in a snapshot's `wiring` section.
@@ -275,7 +273,7 @@ fn settle(s: &mut Session) {
     let now = now.as_secs_f64().max(now.as_nanos() as f64 / 1e9);
     for _ in 0..2 {
         for i in 0..s.entries().len() {
-            if let Some(line) = s.entry(i).device.as_servo().and_then(|sv| sv.simulator()) {
+            if let Some(line) = crate::servo::simulator(s.entry(i).device.as_mut()) {
                 let mut line = line.lock().unwrap_or_else(|p| p.into_inner());
                 for id in line.ids() {
                     if let Some(d) = line.drive(id) {
@@ -285,7 +283,7 @@ fn settle(s: &mut Session) {
             }
         }
         for i in 0..s.entries().len() {
-            if let Some(sim) = s.entry(i).device.as_k2().and_then(|k| k.as_sim()) {
+            if let Some(sim) = crate::k2::simulator(s.entry(i).device.as_mut()) {
                 sim.advance();
             }
         }
@@ -310,7 +308,7 @@ impl Snapshot {
             let e = s.entry(i);
             let name = e.name.clone();
             let dev = &mut e.device;
-            if let Some(sim) = dev.as_k2().and_then(|k| k.as_sim()) {
+            if let Some(sim) = crate::k2::simulator(dev.as_mut()) {
                 let mut sections = BTreeMap::new();
                 sections.insert("k2".to_string(), enc(sim.snapshot_state())?);
                 let wires = capture_wiring(sim);
@@ -318,7 +316,7 @@ impl Snapshot {
                     sections.insert("wiring".to_string(), enc(wires)?);
                 }
                 devices.insert(name, DeviceSnap { family: "k2".into(), sections });
-            } else if let Some(line) = dev.as_servo().and_then(|sv| sv.simulator()) {
+            } else if let Some(line) = crate::servo::simulator(dev.as_mut()) {
                 let line = line.lock().unwrap_or_else(|p| p.into_inner());
                 let mut sections = BTreeMap::new();
                 sections.insert("servo".to_string(), enc(line.save_drives())?);
@@ -366,8 +364,8 @@ impl Snapshot {
             let i = s.index(name).map_err(|e| e.cause("the snapshot has this device"))?;
             let dev = &mut s.entry(i).device;
             let ok = match d.family.as_str() {
-                "k2" => dev.as_k2().and_then(|k| k.as_sim()).is_some(),
-                "servo" => dev.as_servo().and_then(|sv| sv.simulator()).is_some(),
+                "k2" => crate::k2::simulator(dev.as_mut()).is_some(),
+                "servo" => crate::servo::simulator(dev.as_mut()).is_some(),
                 "fx" => fx_sim(dev).is_some(),
                 "umpk" => umpk_sim(dev).is_some(),
                 _ => false,
@@ -390,7 +388,7 @@ impl Snapshot {
             let i = s.index(name)?;
             let sections = Sections::decode(name, d)?;
             if let Some(st) = sections.k2 {
-                let sim = s.entry(i).device.as_k2().and_then(|k| k.as_sim()).expect("checked above");
+                let sim = crate::k2::simulator(s.entry(i).device.as_mut()).expect("checked above");
                 if st.model != sim.model().name {
                     return Err(Error::usage(format!(
                         "cannot restore `{name}`: the snapshot is of a {}, this simulator is a {}",
@@ -436,7 +434,7 @@ impl Snapshot {
         }
         // Wires first: declaring one touches the PLC and the drive, whose saved states follow.
         for (i, name, wires) in &wiring {
-            let sim = s.entry(*i).device.as_k2().and_then(|k| k.as_sim()).expect("checked above");
+            let sim = crate::k2::simulator(s.entry(*i).device.as_mut()).expect("checked above");
             if sim.wiring.as_ref().is_some_and(|h| !h.wires.is_empty()) {
                 sim.unwire("all")?;
             }
@@ -447,11 +445,11 @@ impl Snapshot {
         }
         s.clock.set(Duration::from_micros(self.clock_us));
         for (i, name, st) in k2 {
-            let sim = s.entry(i).device.as_k2().and_then(|k| k.as_sim()).expect("checked above");
+            let sim = crate::k2::simulator(s.entry(i).device.as_mut()).expect("checked above");
             sim.restore_snapshot(&st).map_err(|m| Error::usage(format!("cannot restore `{name}`: {m}")))?;
         }
         for (i, drives) in servo {
-            let line = s.entry(i).device.as_servo().and_then(|sv| sv.simulator()).expect("checked above");
+            let line = crate::servo::simulator(s.entry(i).device.as_mut()).expect("checked above");
             line.lock().unwrap_or_else(|p| p.into_inner()).restore_drives(drives);
         }
         for (i, name, st) in fx {
@@ -465,7 +463,7 @@ impl Snapshot {
             m.restore_snapshot(&st).map_err(|e| Error::usage(format!("cannot restore `{name}`: {e}")))?;
         }
         for (i, name, wires) in wiring {
-            let sim = s.entry(i).device.as_k2().and_then(|k| k.as_sim()).expect("checked above");
+            let sim = crate::k2::simulator(s.entry(i).device.as_mut()).expect("checked above");
             let h = sim.wiring.get_or_insert_with(Default::default);
             if h.wires.len() != wires.len() {
                 return Err(Error::state(format!("restoring `{name}`: its wires did not come back as saved")));

@@ -11,6 +11,7 @@ use plcsh::core::{Clock, Device, ErrorKind, Value};
 use plcsh::servo::ds402::{self, Profile, Waiter};
 use plcsh::servo::frame::Frame;
 use plcsh::servo::objects::{self, ObjRef};
+use plcsh::servo::ServoOps;
 use plcsh::session::open_url;
 use std::path::PathBuf;
 use std::sync::atomic::AtomicBool;
@@ -52,7 +53,7 @@ fn enable_move_wait_and_read_back_over_a_real_pty() {
     let mut d = open(&srv.url("id=2&baud=38400"));
     let never = AtomicBool::new(false);
     let w = Waiter { clock: Clock::following(), interrupt: &never };
-    let ops = d.as_servo().unwrap();
+    let ops: &mut dyn plcsh::servo::ServoOps = &mut plcsh::servo::ops(d.as_mut()).unwrap();
     assert_eq!(ds402::enable(ops, &w).unwrap().len(), 3);
     assert_eq!(ds402::status(ops).unwrap().state, "operation enabled");
     // 300 rpm at R = 10000 is 819200 DEC.
@@ -84,7 +85,7 @@ fn silence_over_a_pty_is_diagnosed_and_the_link_recovers() {
     // Bad checksum: the served drive ignores the frame.
     let mut bad = Frame::read(1, 0x6041, 0).to_bytes();
     bad[9] ^= 0x55;
-    let e = d.as_servo().unwrap().raw_frame(bad).unwrap_err();
+    let e = plcsh::servo::ops(d.as_mut()).unwrap().raw_frame(bad).unwrap_err();
     assert_eq!(e.kind, ErrorKind::Link);
     assert!(e.message.contains("likely cause: bad checksum"), "{e}");
     // Unknown object: the id answers its statusword, so the object is the likely cause.
@@ -92,7 +93,7 @@ fn silence_over_a_pty_is_diagnosed_and_the_link_recovers() {
     let e = d.read(&[unknown]).unwrap_err();
     assert!(e.message.contains("likely cause: unknown object"), "{e}");
     // The link is still in step: the same frame with its right checksum is answered.
-    let good = d.as_servo().unwrap().raw_frame(Frame::read(1, 0x6041, 0).to_bytes()).unwrap();
+    let good = plcsh::servo::ops(d.as_mut()).unwrap().raw_frame(Frame::read(1, 0x6041, 0).to_bytes()).unwrap();
     assert_eq!(good, [0x01, 0x4B, 0x41, 0x60, 0x00, 0x31, 0x42, 0x00, 0x00, 0xA0], "the manual's reply");
 }
 
@@ -112,7 +113,7 @@ fn read_only_write_gets_the_abort_code_in_words_over_a_pty() {
     assert_eq!(d.write(&[(sw, Value::Int(1))]).unwrap_err().kind, ErrorKind::Unsupported);
     assert_eq!(d.requests(), 0);
     // … and the drive itself answers 0x80 with 0x06010002 when asked anyway.
-    let e = d.as_servo().unwrap().write_raw(ObjRef::of(objects::named("statusword")), 1).unwrap_err();
+    let e = plcsh::servo::ops(d.as_mut()).unwrap().write_raw(ObjRef::of(objects::named("statusword")), 1).unwrap_err();
     assert_eq!(e.kind, ErrorKind::Refused);
     assert!(e.message.contains("16#06010002 — attempt to write a read-only object"), "{e}");
 }

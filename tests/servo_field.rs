@@ -336,7 +336,7 @@ fn faults_injected_through_the_control_socket_and_the_shell() {
     assert!(t.elapsed() >= Duration::from_millis(60));
     // Drive fault: statusword fault bit and the code in the error objects.
     srv.control("fault drive 16#2310 id=1");
-    let s = d1.as_servo().unwrap();
+    let s: &mut dyn plcsh::servo::ServoOps = &mut plcsh::servo::ops(d1.as_mut()).unwrap();
     let status = plcsh::servo::ds402::status(s).unwrap();
     assert!(status.fault, "{status:?}");
     assert_eq!(s.read_raw(ObjRef::of(objects::named("error_code"))).unwrap(), 0x2310);
@@ -434,7 +434,7 @@ fn the_fault_script_handles_a_served_drive_and_on_abort_runs_when_unhandled() {
     assert!(out.contains("16#06090030"), "{out}");
     // on_abort left the drive disabled and the line clear.
     let mut d = open_url(&srv.url("id=1"), &Clock::following()).unwrap();
-    let st = plcsh::servo::ds402::status(d.as_servo().unwrap()).unwrap();
+    let st = plcsh::servo::ds402::status(&mut plcsh::servo::ops(d.as_mut()).unwrap()).unwrap();
     assert_eq!(st.state, "ready to switch on");
 }
 

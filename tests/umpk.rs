@@ -97,7 +97,7 @@ fn open(url: &str) -> Box<dyn Device> {
 }
 
 fn drv(d: &mut Box<dyn Device>) -> &mut Driver {
-    d.family_ops().unwrap().downcast_mut::<Driver>().unwrap()
+    plcsh::umpk::ops(d.as_mut(), &[]).unwrap().unwrap()
 }
 
 #[test]

@@ -70,7 +70,7 @@ fn servo_move_on_a_com_port() {
     assert_eq!(d.read(&o[1..]).unwrap(), vec![Value::Int(-5)]);
     let never = std::sync::atomic::AtomicBool::new(false);
     let w = plcsh::servo::ds402::Waiter { clock: Clock::following(), interrupt: &never };
-    let ops = d.as_servo().unwrap();
+    let ops: &mut dyn plcsh::servo::ServoOps = &mut plcsh::servo::ops(d.as_mut()).unwrap();
     plcsh::servo::ds402::enable(ops, &w).unwrap();
     let speed = plcsh::servo::ds402::Profile { speed: Some(819_200), ..Default::default() };
     plcsh::servo::ds402::move_to(ops, &w, false, 10_000, speed).unwrap();

@@ -8,6 +8,7 @@
 
 use plcsh::core::{Clock, Operand};
 use plcsh::k2::helpers::{self, hsc as hh, pto as hp};
+use plcsh::k2::K2Ops;
 use plcsh::session::{Session, SetItem};
 use std::time::{Duration, Instant};
 
@@ -36,9 +37,9 @@ fn machine() -> (Session, Clock, u64) {
     plcsh::wiring::setup::wire(&mut s, "plc:Q0.0 -> servo:pulse").unwrap();
     plcsh::wiring::setup::wire(&mut s, "servo:encoder -> plc:I0.1,I0.0 lines=1250").unwrap();
     let dev = s.device("plc").unwrap().as_mut();
-    let m = dev.as_k2().unwrap().model();
+    let m = plcsh::k2::ops(dev).unwrap().model();
     let q = hh::HscRequest { counter: 0, mode: 9, rate4x: true, pv: vec![1_000_000_000], ..Default::default() };
-    let backup = dev.as_k2().unwrap().backup_area();
+    let backup = plcsh::k2::ops(dev).unwrap().backup_area();
     helpers::execute(dev, &hh::plan(m, &q, backup).unwrap()).unwrap();
     let p = &m.pto[0];
     let cycle = 1_000_000u64.div_ceil(p.max_hz as u64);

@@ -682,7 +682,7 @@ mod tests {
         let mut d = sim("sim-servo:?id=1");
         let e = d.read(&[op(d.as_ref(), "3FFF.01/u16")]).unwrap_err();
         assert!(e.message.contains("likely cause: unknown object"), "{e}");
-        let s = d.as_servo().unwrap();
+        let mut s = crate::servo::ops(d.as_mut()).unwrap();
         let mut bad = Frame::read(1, 0x6041, 0).to_bytes();
         bad[9] = bad[9].wrapping_add(1);
         let e = s.raw_frame(bad).unwrap_err();
@@ -694,7 +694,7 @@ mod tests {
     #[test]
     fn read_only_write_through_the_low_level_path_gets_the_abort_in_words() {
         let mut d = sim("sim-servo:?id=1");
-        let s = d.as_servo().unwrap();
+        let mut s = crate::servo::ops(d.as_mut()).unwrap();
         let e = s.write_raw(ObjRef::of(objects::named("statusword")), 1).unwrap_err();
         assert_eq!(e.kind, ErrorKind::Refused);
         assert!(e.message.contains("16#06010002") && e.message.contains("read-only"), "{e}");
@@ -706,7 +706,7 @@ mod tests {
         let open = |u: &str| open_sim(&DeviceUrl::parse(u).unwrap(), &clock).unwrap();
         let mut a = open("sim-servo:shared-test?id=1");
         let mut b = open("sim-servo:shared-test?id=2");
-        let ids = a.as_servo().unwrap().simulator().unwrap().lock().unwrap().ids();
+        let ids = crate::servo::ops(a.as_mut()).unwrap().simulator().unwrap().lock().unwrap().ids();
         assert_eq!(ids, vec![1, 2]);
         let cw = op(a.as_ref(), "controlword");
         b.write(&[(cw, Value::Int(0x0F))]).unwrap();
@@ -725,10 +725,16 @@ mod tests {
         // Two frames at 38400 baud (5.2 ms) plus the 2 ms think-time.
         assert!(t.elapsed() >= Duration::from_micros(7_208), "{:?}", t.elapsed());
         let mut strict = sim("sim-servo:?id=1&strict=1");
-        let e = strict.as_servo().unwrap().raw_frame(Frame::write(1, 0x607A, 0, Size::B1, 5).to_bytes()).unwrap();
+        let e = crate::servo::ops(strict.as_mut())
+            .unwrap()
+            .raw_frame(Frame::write(1, 0x607A, 0, Size::B1, 5).to_bytes())
+            .unwrap();
         assert_eq!(Frame::from_bytes(&e).unwrap().data, frame::abort::LENGTH_MISMATCH);
         let mut lenient = sim("sim-servo:?id=1");
-        let ok = lenient.as_servo().unwrap().raw_frame(Frame::write(1, 0x607A, 0, Size::B1, 5).to_bytes()).unwrap();
+        let ok = crate::servo::ops(lenient.as_mut())
+            .unwrap()
+            .raw_frame(Frame::write(1, 0x607A, 0, Size::B1, 5).to_bytes())
+            .unwrap();
         assert_eq!(ok[1], frame::func::WRITE_OK);
         for bad in ["sim-servo:?strict=maybe", "sim-servo:?baud=0", "sim-servo:?latency=soon"] {
             assert!(open_sim(&DeviceUrl::parse(bad).unwrap(), &Clock::stepped()).is_err(), "{bad}");

@@ -692,7 +692,7 @@ mod tests {
     }
 
     fn drv(d: &mut Box<dyn Device>) -> &mut Driver {
-        d.family_ops().unwrap().downcast_mut::<Driver>().unwrap()
+        crate::umpk::ops(d.as_mut(), &[]).unwrap().unwrap()
     }
 
     #[test]

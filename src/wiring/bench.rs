@@ -37,6 +37,7 @@
 //! `sim program load`.
 
 use crate::core::{Error, Result};
+use crate::servo::ServoOps;
 use crate::session::{Session, SetItem};
 use serde::Deserialize;
 use std::collections::BTreeMap;
@@ -79,7 +80,7 @@ pub struct BenchFault {
 fn inject(s: &mut Session, f: &BenchFault) -> Result<String> {
     let i = s.index(&f.device)?;
     let dev = &mut s.entry(i).device;
-    if let Some(sim) = dev.as_k2().and_then(|k| k.as_sim()) {
+    if let Some(sim) = crate::k2::simulator(dev.as_mut()) {
         let spec =
             crate::k2::sim::fault::parse(&f.spec).map_err(|m| Error::usage(m).hint(crate::k2::sim::fault::USAGE))?;
         sim.advance();
@@ -87,7 +88,7 @@ fn inject(s: &mut Session, f: &BenchFault) -> Result<String> {
         sim.faults.add(&spec, now);
         return Ok(sim.faults.list.last().map(|x| x.describe()).unwrap_or_default());
     }
-    if let Some(servo) = dev.as_servo() {
+    if let Some(mut servo) = crate::servo::ops(dev.as_mut()) {
         let id = servo.drive_id();
         if let Some(line) = servo.simulator() {
             use crate::servo::sim::control;
@@ -178,7 +179,7 @@ pub fn open(s: &mut Session, bench: &Bench) -> Result<Vec<String>> {
         let text = std::fs::read_to_string(&p)
             .map_err(|e| Error::io(format!("bench {file}: cannot read the program {}: {e}", p.display())))?;
         let i = s.index(dev)?;
-        let sim = s.entry(i).device.as_k2().and_then(|k| k.as_sim()).ok_or_else(|| {
+        let sim = crate::k2::simulator(s.entry(i).device.as_mut()).ok_or_else(|| {
             Error::usage(format!("bench {file}: a program runs in a simulated K2, and {dev} is not one"))
                 .hint("give programs for sim:MODEL devices only")
         })?;
@@ -222,7 +223,7 @@ pub fn serve_parts(path: &Path, clock: &crate::core::Clock) -> Result<ServeParts
     for i in 0..s.entries().len() {
         let name = s.entries()[i].name.clone();
         let dev = &mut s.entry(i).device;
-        if let Some(sim) = dev.as_k2().and_then(|k| k.as_sim()) {
+        if let Some(sim) = crate::k2::simulator(dev.as_mut()) {
             if k2.is_some() {
                 return Err(Error::unsupported(format!(
                     "bench {}: {name} is a second PLC; sim serve serves one PLC",
@@ -231,7 +232,7 @@ pub fn serve_parts(path: &Path, clock: &crate::core::Clock) -> Result<ServeParts
             }
             let fresh = crate::k2::sim::K2Sim::new(sim.model(), clock.clone());
             k2 = Some(std::mem::replace(sim, fresh));
-        } else if let Some(l) = dev.as_servo().and_then(|d| d.simulator()) {
+        } else if let Some(l) = crate::servo::simulator(dev.as_mut()) {
             match &line {
                 Some(prev) if !std::sync::Arc::ptr_eq(prev, &l) => {
                     return Err(Error::unsupported(format!(

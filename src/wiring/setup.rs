@@ -4,6 +4,8 @@
 
 use super::{Decl, Role};
 use crate::core::{Error, Result};
+use crate::k2::K2Ops;
+use crate::servo::ServoOps;
 use crate::session::Session;
 
 /// What one end of a wire is.
@@ -18,7 +20,7 @@ fn resolve(s: &mut Session, ep: &super::Endpoint) -> Result<End> {
     let i = s.index(&ep.device)?;
     let name = ep.device.clone();
     let dev = &mut s.entry(i).device;
-    if let Some(k2) = dev.as_k2() {
+    if let Some(mut k2) = crate::k2::ops(dev.as_mut()) {
         let sim = k2.as_sim().ok_or_else(|| {
             Error::unsupported(format!("{name} is a real PLC: wires join simulated devices"))
                 .hint("open a simulator, e.g. connect plc sim:K205-16DT")
@@ -26,7 +28,7 @@ fn resolve(s: &mut Session, ep: &super::Endpoint) -> Result<End> {
         })?;
         return Ok(End::Plc(i, sim.wire_terminal(&ep.terminal).map_err(|e| e.device(&name))?));
     }
-    if let Some(servo) = dev.as_servo() {
+    if let Some(mut servo) = crate::servo::ops(dev.as_mut()) {
         let id = servo.drive_id();
         let line = servo.simulator().ok_or_else(|| {
             Error::unsupported(format!("{name} is a real drive: wires join simulated devices"))
@@ -65,7 +67,7 @@ pub fn add(s: &mut Session, decl: Decl) -> Result<String> {
         }
     };
     let host_name = s.entries()[host].name.clone();
-    let sim = s.entry(host).device.as_k2().and_then(|k| k.as_sim()).expect("resolved as a simulator");
+    let sim = crate::k2::simulator(s.entry(host).device.as_mut()).expect("resolved as a simulator");
     let peer = peer.map(|(name, line, id)| {
         let make: super::MakePeer = Box::new(move || Box::new(crate::servo::sim::wired::DrivePeer::new(line, id)));
         (name, make)
@@ -81,7 +83,7 @@ pub fn add(s: &mut Session, decl: Decl) -> Result<String> {
 pub fn list(s: &mut Session) -> Vec<String> {
     let mut out = Vec::new();
     for i in 0..s.entries().len() {
-        if let Some(sim) = s.entry(i).device.as_k2().and_then(|k| k.as_sim()) {
+        if let Some(sim) = crate::k2::simulator(s.entry(i).device.as_mut()) {
             out.extend(sim.wires());
         }
     }
@@ -93,7 +95,7 @@ pub fn unwire(s: &mut Session, which: &str) -> Result<Vec<String>> {
     let mut gone = Vec::new();
     let mut last_err = None;
     for i in 0..s.entries().len() {
-        if let Some(sim) = s.entry(i).device.as_k2().and_then(|k| k.as_sim()) {
+        if let Some(sim) = crate::k2::simulator(s.entry(i).device.as_mut()) {
             if sim.wiring.is_none() {
                 continue;
             }
@@ -141,8 +143,8 @@ mod tests {
         for it in ["plc:SMB37=16#A4", "plc:SMD42/DINT=100000000"] {
             set(&mut s, it);
         }
-        s.device("plc").unwrap().as_k2().unwrap().hdef(0, 9).unwrap();
-        s.device("plc").unwrap().as_k2().unwrap().hsc(0).unwrap();
+        crate::k2::ops(s.device("plc").unwrap().as_mut()).unwrap().hdef(0, 9).unwrap();
+        crate::k2::ops(s.device("plc").unwrap().as_mut()).unwrap().hsc(0).unwrap();
         for it in ["servo:operating_mode=1", "servo:controlword=6", "servo:controlword=7", "servo:controlword=15"] {
             set(&mut s, it);
         }

@@ -221,9 +221,7 @@ pub fn status(dev: &mut dyn Device, model: &Model, n: u8) -> Result<Status> {
     words.insert(0, if c & ctl::ENABLE != 0 { "enabled".into() } else { "disabled".into() });
     let smd = vals[2].value.as_i64();
     // The count wraps as a DINT, as SMD38 … shows it.
-    let live = dev
-        .as_k2()
-        .and_then(|k| k.as_sim())
+    let live = crate::k2::simulator(dev)
         .and_then(|s| s.hsc.iter().find(|h| h.regs.channel == n).map(|h| (h.cv() as i32 as i64, h.user_cv)));
     let cv = live.map_or(smd, |(cv, _)| cv);
     words.push(format!("CV {cv}"));

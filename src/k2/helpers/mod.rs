@@ -106,12 +106,12 @@ pub fn execute(dev: &mut dyn Device, plan: &Plan) -> Result<Done> {
         let v = space.check(&core, *v).map_err(|e| e.operand(op.canonical()))?;
         items.push((core, v));
     }
-    if !plan.then.is_empty() && dev.as_k2().is_none() {
+    if !plan.then.is_empty() && super::ops(dev).is_none() {
         return Err(Error::unsupported("this device is not a K2 PLC"));
     }
-    // The whole plan goes past the write guard first: refused whole, nothing sent.
+    // The whole plan goes past the write rules first: refused whole, nothing sent.
     let mut changes: Vec<Change> = items.iter().map(|(op, _)| Change::Write(*op)).collect();
-    if let Some(model) = dev.as_k2().map(|k| k.model()) {
+    if let Some(model) = super::ops(dev).map(|k| k.model()) {
         changes.extend(plan.then.iter().map(|i| i.change(model)));
     }
     dev.permits(&changes)?;
@@ -120,7 +120,8 @@ pub fn execute(dev: &mut dyn Device, plan: &Plan) -> Result<Done> {
     for ((op, v), (core, _)) in plan.writes.iter().zip(&items) {
         done.writes.push(Written { operand: op.canonical(), value: *v, dtype: core.dtype });
     }
-    let k2: &mut dyn K2Ops = dev.as_k2().expect("checked above");
+    let mut access = super::ops(dev).expect("checked above");
+    let k2: &mut dyn K2Ops = &mut access;
     for i in &plan.then {
         let r = match *i {
             Instr::Pls(q) => k2.pls(q),

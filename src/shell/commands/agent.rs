@@ -5,6 +5,7 @@
 use super::k2cmd;
 use super::CommandSpec;
 use crate::core::Result;
+use crate::k2::K2Ops;
 use crate::output::Outcome;
 use crate::shell::{Args, Shell};
 
@@ -45,7 +46,7 @@ fn agent(sh: &mut Shell, args: Args) -> Result<Outcome> {
     };
     sh.session.ready(dev)?;
     let name = k2cmd::name(sh, dev);
-    let k2 = k2cmd::k2(sh, dev)?;
+    let mut k2 = k2cmd::k2(sh, dev)?;
     let text = if k2.as_sim().is_some() {
         "simulator: SM registers and instructions are reached directly (no helper needed)".to_string()
     } else {

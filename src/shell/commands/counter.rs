@@ -5,6 +5,7 @@ use super::k2cmd::{self, check_options, done_outcome, opt, value_err};
 use super::CommandSpec;
 use crate::core::{Error, Result};
 use crate::k2::helpers::{self, hsc as hh};
+use crate::k2::K2Ops;
 use crate::output::Outcome;
 use crate::shell::lex::{self, Word};
 use crate::shell::{Args, Shell};

@@ -8,6 +8,7 @@ use super::CommandSpec;
 use crate::core::{Error, Result, Value};
 use crate::k2::catalog::{EEPROM_ENDURANCE, EEPROM_FIRST, EEPROM_LAST_MAX};
 use crate::k2::operand::{Area, K2Operand};
+use crate::k2::K2Ops;
 use crate::output::Outcome;
 use crate::shell::{Args, Shell};
 

@@ -6,6 +6,7 @@ use super::k2cmd::{self, opt, value_err};
 use super::CommandSpec;
 use crate::core::clock::format_time;
 use crate::core::{Error, ErrorKind, Result};
+use crate::k2::K2Ops;
 use crate::k2::{Event, EventMatch};
 use crate::output::Outcome;
 use crate::shell::lex;

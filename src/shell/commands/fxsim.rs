@@ -4,7 +4,6 @@
 //! has no PAUSE mode, so `sim cpu pause` is refused.
 
 use crate::core::{Error, Result};
-use crate::fx::driver::Driver;
 use crate::fx::memory::Memory;
 use crate::fx::plc::Mode;
 use crate::output::Outcome;
@@ -15,7 +14,7 @@ pub const USAGE: &str = "sim program load FILE.il | sim program unload | sim pro
 /// True when the current device is a simulated FX PLC.
 pub fn current_is_fx_sim(sh: &mut Shell) -> bool {
     let Ok(i) = sh.session.current_index() else { return false };
-    sh.session.entry(i).device.family_ops_for(&[]).ok().flatten().is_some_and(|a| a.is::<Driver>())
+    crate::fx::driver::ops(sh.session.entry(i).device.as_mut(), &[]).ok().flatten().is_some()
 }
 
 fn ms(ns: u64) -> f64 {
@@ -64,8 +63,8 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
     let dev = sh.session.current_index()?;
     let name = sh.session.entries()[dev].name.clone();
     let col = words.first().map_or(args.offset, |w| w.0);
-    let ops = sh.session.entry(dev).device.family_ops_for(&[])?;
-    let d = ops.and_then(|a| a.downcast_mut::<Driver>()).ok_or_else(|| Error::usage("not an FX simulator"))?;
+    let ops = crate::fx::driver::ops(sh.session.entry(dev).device.as_mut(), &[])?;
+    let d = ops.ok_or_else(|| Error::usage("not an FX simulator"))?;
     let plc = d.sim.clone().ok_or_else(|| Error::unsupported("a real FX runs its own program").device(&name))?;
     let mut m = plc.lock().unwrap_or_else(|p| p.into_inner());
     m.advance();

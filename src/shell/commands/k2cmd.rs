@@ -1,11 +1,11 @@
 //! Plumbing shared by the K2 special-function commands (`pls`, `pto`, `hsc`, `events`,
 //! `rtc`, `eeprom`, `sim input`): finding the device and channel a command names, reaching
-//! its [`K2Ops`], and turning helper results into an [`Outcome`].
+//! its [`crate::k2::K2Ops`] (a [`K2Access`]), and turning helper results into an [`Outcome`].
 
 use crate::core::{Error, ErrorKind, Result};
 use crate::k2::helpers::{Done, Written};
 use crate::k2::sim::K2Sim;
-use crate::k2::K2Ops;
+use crate::k2::K2Access;
 use crate::output::Outcome;
 use crate::session::Reading;
 use crate::shell::lex::{Opt, Word};
@@ -45,20 +45,18 @@ pub fn name(sh: &Shell, dev: usize) -> String {
     sh.session.entries()[dev].name.clone()
 }
 
-/// The K2 instructions of device `dev`.
-pub fn k2(sh: &mut Shell, dev: usize) -> Result<&mut dyn K2Ops> {
+/// The K2 instructions of device `dev`, each checked against the device's write rules.
+pub fn k2(sh: &mut Shell, dev: usize) -> Result<K2Access<'_>> {
     let name = name(sh, dev);
-    sh.session
-        .entry(dev)
-        .device
-        .as_k2()
+    crate::k2::ops(sh.session.entry(dev).device.as_mut())
         .ok_or_else(|| Error::unsupported(format!("{name} is not a K2 PLC")).device(name))
 }
 
 /// The simulator behind device `dev`, or an error saying the control is simulator-only.
 pub fn sim<'a>(sh: &'a mut Shell, dev: usize, what: &str) -> Result<&'a mut K2Sim> {
     let name = name(sh, dev);
-    k2(sh, dev)?.as_sim().ok_or_else(|| {
+    k2(sh, dev)?;
+    crate::k2::simulator(sh.session.entry(dev).device.as_mut()).ok_or_else(|| {
         Error::unsupported(format!("{what} is a simulator control; {name} is not simulated")).device(name)
     })
 }

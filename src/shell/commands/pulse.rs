@@ -6,6 +6,7 @@ use super::k2cmd::{self, check_options, done_outcome, opt, value_err};
 use super::CommandSpec;
 use crate::core::{Error, Result};
 use crate::k2::helpers::{self, pto as hp};
+use crate::k2::K2Ops;
 use crate::output::Outcome;
 use crate::shell::lex::{self, Word};
 use crate::shell::{Args, Shell};
@@ -68,7 +69,7 @@ fn instruction(sh: &mut Shell, args: Args, cmd: &str, usage: &str) -> Result<Out
     let (dev, ch) = k2cmd::channel(sh, word, "pulse channel", 3)?;
     let name = k2cmd::name(sh, dev);
     let warning = if cmd == "pls" { busy_check(sh, dev, ch, strict, "PLS")? } else { None };
-    let k2 = k2cmd::k2(sh, dev)?;
+    let mut k2 = k2cmd::k2(sh, dev)?;
     let report = if cmd == "pls" { k2.pls(ch) } else { k2.pstop(ch) }.map_err(|e| e.device(&name))?;
     let sim = sh.session.simulated(dev);
     let mut o = Outcome::new(cmd).text(report.clone()).with("report", report).with("channel", ch).acted_on(&name, sim);

@@ -5,6 +5,7 @@ use super::k2cmd;
 use super::CommandSpec;
 use crate::core::{Error, Result};
 use crate::k2::instr::{host_local_now, RtcTime};
+use crate::k2::K2Ops;
 use crate::output::Outcome;
 use crate::shell::{Args, Shell};
 
@@ -24,7 +25,7 @@ fn rtc(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let (sub, rest) = text.split_once(char::is_whitespace).unwrap_or((text, ""));
     let dev = sh.session.current_index()?;
     let name = k2cmd::name(sh, dev);
-    let k2 = k2cmd::k2(sh, dev)?;
+    let mut k2 = k2cmd::k2(sh, dev)?;
     let set = match sub.to_ascii_lowercase().as_str() {
         "" => None,
         "set" => Some(

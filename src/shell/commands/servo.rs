@@ -1,5 +1,5 @@
 //! `servo …`: DS402 helpers for Kinco drives (`servo::ds402`), running through
-//! `Device::as_servo()` on the serial driver and the simulator alike.
+//! `servo::ops` on the serial driver and the simulator alike.
 //!
 //! Which drive: `servo [DEVICE] SUBCOMMAND …`. A first word that names an open device
 //! (and is not a subcommand) picks it; otherwise the current device if it is a servo,
@@ -64,8 +64,9 @@ fn servo(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let clock = if simulated { sh.session.clock.clone() } else { Clock::following() };
     let interrupt = sh.session.interrupt.clone();
     let entry = sh.session.entry(dev);
-    let space = ServoSpace::new(entry.device.as_servo().expect("picked a servo").resolution());
-    let ops: &mut dyn ServoOps = entry.device.as_servo().expect("picked a servo");
+    let mut access = crate::servo::ops(entry.device.as_mut()).expect("picked a servo");
+    let space = ServoSpace::new(access.resolution());
+    let ops: &mut dyn ServoOps = &mut access;
     let w = Waiter { clock, interrupt: &interrupt };
     let at = |c: usize| args.offset + c;
     if let (true, Some(&(c, w))) =

@@ -6,6 +6,7 @@
 
 use super::CommandSpec;
 use crate::core::{Error, Result};
+use crate::k2::K2Ops;
 use crate::output::Outcome;
 use crate::shell::progress::Progress;
 use crate::shell::sample::{self, Recording};
@@ -119,7 +120,7 @@ fn pulse_counts(sh: &mut Shell, operands: &[(usize, &str)]) -> Vec<(String, Stri
         let dev = target.device;
         let names: Vec<String> = target.ops.iter().map(|o| sh.session.name_of(dev, o)).collect();
         let prefix = text.trim().find(':').map(|c| text.trim()[..=c].to_string()).unwrap_or_default();
-        let Some(k2) = sh.session.entry(dev).device.as_k2() else { continue };
+        let Some(k2) = crate::k2::ops(sh.session.entry(dev).device.as_mut()) else { continue };
         let model = k2.model();
         for name in names {
             let Some(p) = model.pto.iter().find(|p| p.output == name) else { continue };

@@ -1,7 +1,6 @@
 //! `umpk …`: the UMPK8/UMPK16 terminal commands (manual §4.1), the real-time monitor,
-//! Intel HEX programming (§4.2) and the simulator's inputs, through `Device::family_ops()`
-//! downcast to [`crate::umpk::driver::Driver`] (the serial driver and the in-process
-//! simulator alike).
+//! Intel HEX programming (§4.2) and the simulator's inputs, through [`crate::umpk::ops`]: the
+//! [`crate::umpk::driver::Driver`] (the serial driver and the in-process simulator alike).
 //!
 //! Which controller: `umpk [DEVICE] SUBCOMMAND …` — a first word naming an open device picks
 //! it; otherwise the current device if it is a UMPK, otherwise the only UMPK open.
@@ -76,13 +75,13 @@ fn driver(sh: &mut Shell, dev: usize) -> &mut Driver {
 
 /// The UMPK behind device `dev` for a command that changes the controller (`what`: reset,
 /// echo, program, errors clear, send): the write guard checks it first and refuses the whole
-/// command, naming the rule (`Device::family_ops_for`). An allow list names it as `umpk:WHAT`.
+/// command, naming the rule ([`crate::umpk::ops`]). An allow list names it as `umpk:WHAT`.
 fn changing<'a>(sh: &'a mut Shell, dev: usize, what: &str) -> Result<&'a mut Driver> {
     let change =
         crate::core::device::Change::Action { what: format!("umpk {what}"), touches: vec![format!("umpk:{what}")] };
     let changes: &[crate::core::device::Change] = if what.is_empty() { &[] } else { std::slice::from_ref(&change) };
-    let ops = sh.session.entry(dev).device.family_ops_for(changes)?;
-    Ok(ops.and_then(|a| a.downcast_mut::<Driver>()).expect("picked a UMPK"))
+    let ops = crate::umpk::ops(sh.session.entry(dev).device.as_mut(), changes)?;
+    Ok(ops.expect("picked a UMPK"))
 }
 
 fn umpk(sh: &mut Shell, args: Args) -> Result<Outcome> {
