@@ -40,7 +40,6 @@ const EXCEPTIONS: &[(&str, &str, &str)] = &[
     ("src/pending.rs", "servo", CAPABILITY),
     ("src/guard.rs", "k2", GUARD_CHANGES),
     ("src/guard.rs", "servo", GUARD_CHANGES),
-    ("src/profile.rs", "fleet", "fleet definitions are still parsed by the fleet runner's module"),
 ];
 
 /// Sibling-file cycles that still stand: `(folder, reason)`.

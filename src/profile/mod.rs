@@ -16,6 +16,11 @@
 //! [`Guard`] on the open device, and the session checks it before anything reaches the device,
 //! for every front end. A bad file is reported with file:line (toml's spans) and never stops
 //! the shell: a broken profile is skipped, the others and the defaults still work.
+//!
+//! The same file names fleets (`[fleets.NAME]`, [`fleet`]): sets of these devices worked on as
+//! one; their definitions are read here, the runner that works on them is `crate::fleet`.
+
+pub mod fleet;
 
 use crate::core::url::DeviceUrl;
 use crate::core::{Error, Operand, OperandSpace, Result};
@@ -59,8 +64,8 @@ impl fmt::Display for Problem {
 pub struct Profiles {
     list: Vec<Profile>,
     pub problems: Vec<Problem>,
-    /// The fleets (`[fleets.NAME]`, [`crate::fleet`]).
-    pub fleets: Vec<crate::fleet::Fleet>,
+    /// The fleets (`[fleets.NAME]`, [`fleet`]).
+    pub fleets: Vec<fleet::Fleet>,
     /// The file they came from (also when it does not exist yet).
     pub file: Option<PathBuf>,
 }
@@ -147,7 +152,7 @@ impl Profiles {
             let origin = format!("{file}:{}", line_of(text, section.span().start));
             let make = |member: &str, url: &str| profile(member, section.get_ref(), &origin, Some(url));
             let parsed = if valid_name(&name) {
-                crate::fleet::parse(&name, section.get_ref(), &origin, &make)
+                fleet::parse(&name, section.get_ref(), &origin, &make)
             } else {
                 Err((None, "a fleet name is letters, digits, _ and -".into()))
             };
@@ -192,8 +197,8 @@ impl Profiles {
         let mut fleets = Vec::new();
         for f in std::mem::take(&mut self.fleets) {
             let first = f.members.first().and_then(|m| match &m.source {
-                crate::fleet::Source::Made(p) => Some(p),
-                crate::fleet::Source::Profile(_) => None,
+                fleet::Source::Made(p) => Some(p),
+                fleet::Source::Profile(_) => None,
             });
             match first.map_or(Ok(()), |p| check(p, clock)) {
                 Ok(()) => fleets.push(f),
@@ -220,8 +225,8 @@ impl Profiles {
     }
 
     /// The fleet named `name`, or an error naming the fleets there are.
-    pub fn fleet(&self, name: &str) -> Result<&crate::fleet::Fleet> {
-        self.fleets.iter().find(|f| f.name == name).ok_or_else(|| crate::fleet::unknown(self, name))
+    pub fn fleet(&self, name: &str) -> Result<&fleet::Fleet> {
+        self.fleets.iter().find(|f| f.name == name).ok_or_else(|| fleet::unknown(self, name))
     }
 
     /// "no profile named x" with the known names and the file, for errors.
