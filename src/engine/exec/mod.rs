@@ -6,12 +6,28 @@
 //! (the debugger), so the program counter and call stack are part of the state.
 //!
 //! All state types are plain data (serde) so a snapshot can store a running CPU.
+//!
+//! This file holds the CPU's state and the interpreter loop, which dispatches each
+//! instruction (the one-line ones, jumps and calls, which move the program counter, run in
+//! the loop itself). What an instruction group computes is in its own file: bit logic and
+//! comparisons ([`logic`]), arithmetic, shifts and conversions ([`arith`]), block moves
+//! ([`moves`]); timers and counters are [`super::timers`]. Operand access through pointers
+//! is [`operands`].
+
+mod arith;
+mod logic;
+mod moves;
+mod operands;
 
 use super::compile::{Ins, Program};
-use super::isa::{Arith, Cmp, Comb, Conv, Logic, Shift, Unary};
+use super::isa::{Arith, Comb};
 use super::timers::{self, CounterState, TimerState};
-use super::{read, write, Flags, Machine, Opd};
+use super::{read, write, Machine, Opd};
 use crate::core::DataType;
+use arith::{arith, as_i64, convert, fits, invert, is_zero, mask, shift_out, unary, word_logic};
+use logic::{compare, lcode, logic};
+use moves::swap;
+use operands::{bad, put, val};
 use serde::{Deserialize, Serialize};
 
 /// What stopped a CPU.
@@ -142,50 +158,6 @@ pub struct Cpu {
     /// [`MAX_NORMAL_ERRORS`] (the newest kept).
     #[serde(default)]
     errors: Vec<Fault>,
-}
-
-fn logic(op: u8, a: bool, b: bool) -> bool {
-    match op {
-        0 => a & b,
-        1 => a | b,
-        _ => a ^ b,
-    }
-}
-
-fn lcode(l: Logic) -> u8 {
-    match l {
-        Logic::And => 0,
-        Logic::Or => 1,
-        Logic::Xor => 2,
-    }
-}
-
-/// Sign-extends or interprets a raw pattern of type `ty` as i64.
-#[inline]
-fn as_i64(ty: DataType, raw: u32) -> i64 {
-    match ty {
-        DataType::Bool => (raw & 1) as i64,
-        DataType::Byte => (raw & 0xFF) as i64,
-        DataType::SInt => raw as u8 as i8 as i64,
-        DataType::Word => (raw & 0xFFFF) as i64,
-        DataType::Int => raw as u16 as i16 as i64,
-        DataType::DWord => raw as i64,
-        DataType::DInt => raw as i32 as i64,
-        DataType::Real => f32::from_bits(raw) as i64,
-    }
-}
-
-fn fits(ty: DataType, v: i64) -> bool {
-    let (lo, hi) = ty.int_range();
-    v >= lo && v <= hi
-}
-
-fn mask(ty: DataType, v: i64) -> u32 {
-    match ty.bits() {
-        8 => v as u32 & 0xFF,
-        16 => v as u32 & 0xFFFF,
-        _ => v as u32,
-    }
 }
 
 impl Cpu {
@@ -469,41 +441,21 @@ impl Cpu {
                 }
                 Ins::Shift { op, ty, out, n } => {
                     if self.cr {
-                        let r = read(m, out, *ty).and_then(|v| {
-                            let k = read(m, n, DataType::Byte)?;
-                            let v = shift(*op, ty.bits(), v, k);
-                            m.flags(Flags { zero: v == 0, ..Flags::default() });
-                            write(m, out, *ty, v)
-                        });
-                        if let Err(f) = r {
+                        if let Err(f) = shift_out(m, *op, *ty, out, n) {
                             return self.fault(prog, (pc - 1) as u32, f);
                         }
                     }
                 }
                 Ins::WordLogic { op, ty, a, b, out } => {
                     if self.cr {
-                        let r = read(m, a, *ty).and_then(|x| {
-                            let y = read(m, b, *ty)?;
-                            let v = mask(
-                                *ty,
-                                match op {
-                                    Logic::And => x & y,
-                                    Logic::Or => x | y,
-                                    Logic::Xor => x ^ y,
-                                } as i64,
-                            );
-                            m.flags(Flags { zero: v == 0, ..Flags::default() });
-                            write(m, out, *ty, v)
-                        });
-                        if let Err(f) = r {
+                        if let Err(f) = word_logic(m, *op, *ty, a, b, out) {
                             return self.fault(prog, (pc - 1) as u32, f);
                         }
                     }
                 }
                 Ins::Inv { ty, out } => {
                     if self.cr {
-                        let r = read(m, out, *ty).and_then(|x| write(m, out, *ty, mask(*ty, !x as i64)));
-                        if let Err(f) = r {
+                        if let Err(f) = invert(m, *ty, out) {
                             return self.fault(prog, (pc - 1) as u32, f);
                         }
                     }
@@ -518,9 +470,7 @@ impl Cpu {
                 }
                 Ins::Swap { out } => {
                     if self.cr {
-                        let r = read(m, out, DataType::Word)
-                            .and_then(|x| write(m, out, DataType::Word, (x as u16).swap_bytes() as u32));
-                        if let Err(f) = r {
+                        if let Err(f) = swap(m, out) {
                             return self.fault(prog, (pc - 1) as u32, f);
                         }
                     }
@@ -699,268 +649,13 @@ impl Cpu {
             }
         }
     }
-
-    #[allow(clippy::too_many_arguments)]
-    fn block<M: Machine>(
-        &mut self,
-        prog: &Program,
-        m: &mut M,
-        ty: DataType,
-        a: &Opd,
-        out: &Opd,
-        n: &Opd,
-        fill: bool,
-        _pc: usize,
-    ) -> Result<(), Fault> {
-        let n = read(m, n, DataType::Int)? as u16 as i16;
-        if !(1..=255).contains(&n) {
-            return Err(Fault::new(FaultKind::Instruction, format!("block length {n} is not 1…255")));
-        }
-        self.spent_ns += prog.costs.per_element_ns as u64 * n as u64;
-        let w = super::width_of(ty);
-        let src = super::loc_of(m, a, ty)?;
-        let dst = super::loc_of(m, out, ty)?.ok_or_else(|| Fault::new(FaultKind::BadAddress, "no destination"))?;
-        let _ = w;
-        // Read all first: overlapping blocks copy as if through a buffer.
-        let vals: Vec<u32> = match (fill, src) {
-            (true, _) | (false, None) => vec![read(m, a, ty)?; n as usize],
-            (false, Some(s)) => (0..n as u32).map(|k| m.get(s.nth(k))).collect(),
-        };
-        for (k, v) in vals.into_iter().enumerate() {
-            m.set(dst.nth(k as u32), v);
-        }
-        Ok(())
-    }
 }
 
-fn compare(ty: DataType, op: Cmp, x: u32, y: u32) -> bool {
-    use std::cmp::Ordering;
-    let ord = if ty == DataType::Real {
-        match f32::from_bits(x).partial_cmp(&f32::from_bits(y)) {
-            Some(o) => o,
-            None => return op == Cmp::Ne,
-        }
-    } else {
-        as_i64(ty, x).cmp(&as_i64(ty, y))
-    };
-    match op {
-        Cmp::Eq => ord == Ordering::Equal,
-        Cmp::Ne => ord != Ordering::Equal,
-        Cmp::Lt => ord == Ordering::Less,
-        Cmp::Gt => ord == Ordering::Greater,
-        Cmp::Le => ord != Ordering::Greater,
-        Cmp::Ge => ord != Ordering::Less,
-    }
-}
-
-/// Arithmetic with S7-200 status: result wraps to the type's width, overflow is flagged;
-/// division by zero leaves the output unchanged and returns ENO = 0 (SM1.3 on the K2).
+/// The watchdog fault: the scan's program time passed the limit.
 #[cold]
 fn watchdog_fault(wd: u64) -> Fault {
     Fault::new(
         FaultKind::Watchdog,
         format!("the scan ran past the watchdog limit of {} ms (an endless loop?)", wd as f64 / 1e6),
     )
-}
-
-/// An operand's raw value without building a fault (the hot path); `None` only for a
-/// pointer outside memory.
-#[inline(always)]
-fn val<M: Machine>(m: &M, o: &Opd, ty: DataType) -> Option<u32> {
-    match *o {
-        Opd::Imm(v) => Some(v),
-        Opd::Loc(l) => Some(m.get(l)),
-        Opd::Ind(p) => m.deref(m.get(p), super::width_of(ty)).map(|l| m.get(l)),
-    }
-}
-
-/// Writes an operand; `false` for a pointer outside memory.
-#[inline(always)]
-fn put<M: Machine>(m: &mut M, o: &Opd, ty: DataType, v: u32) -> bool {
-    match *o {
-        Opd::Imm(_) => true,
-        Opd::Loc(l) => {
-            m.set(l, v);
-            true
-        }
-        Opd::Ind(p) => match m.deref(m.get(p), super::width_of(ty)) {
-            Some(l) => {
-                m.set(l, v);
-                true
-            }
-            None => false,
-        },
-    }
-}
-
-/// The fault for the first of `ops` whose pointer is bad (cold path).
-#[cold]
-fn bad<M: Machine>(m: &M, ops: &[&Opd], ty: DataType) -> Fault {
-    ops.iter()
-        .find_map(|o| read(m, o, ty).err())
-        .unwrap_or_else(|| Fault::new(FaultKind::BadAddress, "bad indirect address"))
-}
-
-/// SQRT and ABS: OUT := f(IN); ENO = 0 when the result is not a number or does not fit
-/// (S7-200 status bits: SM1.1 overflow / illegal value, SM1.0 zero, SM1.2 negative).
-fn unary<M: Machine>(m: &mut M, op: Unary, ty: DataType, a: &Opd, out: &Opd) -> Result<bool, Fault> {
-    let Some(x) = val(m, a, ty) else {
-        return Err(bad(m, &[a], ty));
-    };
-    if ty == DataType::Real {
-        let x = f32::from_bits(x);
-        if op == Unary::Sqrt && (x.is_nan() || x < 0.0) {
-            m.flags(Flags { overflow: true, ..Flags::default() });
-            return Ok(false);
-        }
-        let r = match op {
-            Unary::Sqrt => x.sqrt(),
-            Unary::Abs => x.abs(),
-        };
-        m.flags(Flags { zero: r == 0.0, overflow: !r.is_finite(), negative: false, div_zero: false });
-        write(m, out, ty, r.to_bits())?;
-        return Ok(r.is_finite());
-    }
-    let r = as_i64(ty, x).abs();
-    let overflow = !fits(ty, r);
-    let raw = mask(ty, r);
-    m.flags(Flags { zero: raw == 0, overflow, negative: as_i64(ty, raw) < 0, div_zero: false });
-    if !put(m, out, ty, raw) {
-        return Err(bad(m, &[out], ty));
-    }
-    Ok(!overflow)
-}
-
-/// Whether a divisor reads as zero (cold: after a failed division only).
-#[cold]
-fn is_zero<M: Machine>(m: &M, b: &Opd, ty: DataType) -> bool {
-    match val(m, b, ty) {
-        Some(v) if ty == DataType::Real => f32::from_bits(v) == 0.0,
-        Some(v) => as_i64(ty, v) == 0,
-        None => false,
-    }
-}
-
-fn arith<M: Machine>(m: &mut M, op: Arith, ty: DataType, a: &Opd, b: &Opd, out: &Opd) -> Result<bool, Fault> {
-    let (Some(x), Some(y)) = (val(m, a, ty), val(m, b, ty)) else {
-        return Err(bad(m, &[a, b], ty));
-    };
-    if ty == DataType::Real {
-        let (x, y) = (f32::from_bits(x), f32::from_bits(y));
-        if matches!(op, Arith::Div | Arith::Mod) && y == 0.0 {
-            m.flags(Flags { div_zero: true, ..Flags::default() });
-            return Ok(false);
-        }
-        let r = match op {
-            Arith::Add => x + y,
-            Arith::Sub => x - y,
-            Arith::Mul => x * y,
-            Arith::Div => x / y,
-            Arith::Mod => x % y,
-        };
-        m.flags(Flags { zero: r == 0.0, overflow: !r.is_finite(), negative: r < 0.0, div_zero: false });
-        write(m, out, ty, r.to_bits())?;
-        return Ok(r.is_finite());
-    }
-    let (x, y) = (as_i64(ty, x), as_i64(ty, y));
-    if matches!(op, Arith::Div | Arith::Mod) && y == 0 {
-        m.flags(Flags { div_zero: true, ..Flags::default() });
-        return Ok(false);
-    }
-    let r = match op {
-        Arith::Add => x + y,
-        Arith::Sub => x - y,
-        Arith::Mul => x.wrapping_mul(y),
-        Arith::Div => x / y,
-        Arith::Mod => x % y,
-    };
-    let overflow = !fits(ty, r);
-    let raw = mask(ty, r);
-    let shown = as_i64(ty, raw);
-    m.flags(Flags { zero: raw == 0, overflow, negative: shown < 0, div_zero: false });
-    if !put(m, out, ty, raw) {
-        return Err(bad(m, &[out], ty));
-    }
-    Ok(!overflow)
-}
-
-fn shift(op: Shift, bits: u32, v: u32, k: u32) -> u32 {
-    let mask = if bits == 32 { u32::MAX } else { (1u32 << bits) - 1 };
-    let v = v & mask;
-    match op {
-        Shift::Shl => {
-            if k >= bits {
-                0
-            } else {
-                (v << k) & mask
-            }
-        }
-        Shift::Shr => {
-            if k >= bits {
-                0
-            } else {
-                v >> k
-            }
-        }
-        Shift::Rol => {
-            let k = k % bits;
-            if k == 0 {
-                v
-            } else {
-                ((v << k) | (v >> (bits - k))) & mask
-            }
-        }
-        Shift::Ror => {
-            let k = k % bits;
-            if k == 0 {
-                v
-            } else {
-                ((v >> k) | (v << (bits - k))) & mask
-            }
-        }
-    }
-}
-
-fn convert<M: Machine>(m: &mut M, c: Conv, a: &Opd, out: &Opd) -> Result<bool, Fault> {
-    use DataType as T;
-    let r: Option<(DataType, u32)> = match c {
-        Conv::IDi => Some((T::DInt, as_i64(T::Int, read(m, a, T::Int)?) as i32 as u32)),
-        Conv::DiI => {
-            let v = as_i64(T::DInt, read(m, a, T::DInt)?);
-            fits(T::Int, v).then_some((T::Int, v as u16 as u32))
-        }
-        Conv::BI => Some((T::Int, read(m, a, T::Byte)? & 0xFF)),
-        Conv::IB => {
-            let v = as_i64(T::Int, read(m, a, T::Int)?);
-            (0..=255).contains(&v).then_some((T::Byte, v as u32))
-        }
-        Conv::DiR => Some((T::Real, (as_i64(T::DInt, read(m, a, T::DInt)?) as f32).to_bits())),
-        Conv::Round | Conv::Trunc => {
-            let f = f32::from_bits(read(m, a, T::Real)?) as f64;
-            let v = if c == Conv::Round { f.round() } else { f.trunc() };
-            (v.is_finite() && v >= i32::MIN as f64 && v <= i32::MAX as f64).then_some((T::DInt, v as i32 as u32))
-        }
-        Conv::IBcd => {
-            let v = as_i64(T::Int, read(m, a, T::Int)?);
-            (0..=9999).contains(&v).then(|| {
-                let d = |k: i64| ((v / 10i64.pow(k as u32)) % 10) as u32;
-                (T::Int, d(0) | d(1) << 4 | d(2) << 8 | d(3) << 12)
-            })
-        }
-        Conv::BcdI => {
-            let v = read(m, a, T::Int)? & 0xFFFF;
-            let digits = [v & 0xF, v >> 4 & 0xF, v >> 8 & 0xF, v >> 12 & 0xF];
-            digits
-                .iter()
-                .all(|d| *d <= 9)
-                .then(|| (T::Int, digits[0] + digits[1] * 10 + digits[2] * 100 + digits[3] * 1000))
-        }
-    };
-    match r {
-        Some((ty, v)) => {
-            write(m, out, ty, v)?;
-            Ok(true)
-        }
-        None => Ok(false),
-    }
 }
