@@ -11,7 +11,6 @@ mod publish;
 mod record;
 mod run;
 mod serve;
-mod serve_fleet;
 
 use crate::core::{Clock, ErrorKind};
 use crate::k2::catalog;

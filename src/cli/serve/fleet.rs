@@ -1,7 +1,7 @@
 //! `plcsh sim serve --fleet N --tcp ADDR`: N simulated K2s in one process, each with its own
 //! memory and its own Modbus TCP port, so a fleet (docs/fleets.md) and its tests run without
 //! hardware. Every member is built by the same code as the single served K2
-//! ([`super::serve::make_k2`]: model, unit, helper program, faults, user program) and served by
+//! ([`super::make_k2`]: model, unit, helper program, faults, user program) and served by
 //! the same server; they share the process's virtual clock. Each member is served on a thread
 //! of its own (with its own small runtime), so one member that is slow to answer (a `late`
 //! fault, a long request) holds no other, as separate PLCs would not. With port 0 each member binds a
@@ -9,8 +9,8 @@
 //! names them). The readiness line lists the bound addresses in order under `fleet`, and
 //! `tcp` is the first of them.
 
-use super::serve::{bind, limits, make_k2, ServeArgs};
-use super::Cli;
+use super::{bind, limits, make_k2, ServeArgs};
+use crate::cli::Cli;
 use crate::core::{Clock, Error, Result};
 use crate::k2::sim::modbus_server::{self, K2Service};
 use serde_json::{json, Map, Value as Json};
@@ -35,7 +35,7 @@ pub(super) async fn serve(
         return Err(Error::usage("--bench with --fleet: a bench describes one machine"));
     }
     let tcp = args.tcp.as_deref().unwrap_or("0");
-    let first = super::serve::listen_addr(tcp)?;
+    let first = super::listen_addr(tcp)?;
     let limits = limits(args)?;
     let mut addrs = Vec::new();
     for k in 0..n {

@@ -25,6 +25,9 @@
 //!
 //! Shape: each served family adds its endpoints in its own function ([`serve_k2`],
 //! [`serve_servo`]) — it binds, spawns its tasks and adds its fields to the readiness line.
+//! `--fleet N` serves N K2s instead of one ([`fleet`], built by the same [`make_k2`]).
+
+mod fleet;
 
 use super::Cli;
 use crate::core::link::async_pty::AsyncPty;
@@ -497,7 +500,7 @@ async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
     let servo_stop = Arc::new(AtomicBool::new(false));
     let _stop_servo = StopOnDrop(servo_stop.clone());
     if let Some(n) = args.fleet {
-        super::serve_fleet::serve(cli, args, n, &clock, &mut tasks, &mut ready).await?;
+        fleet::serve(cli, args, n, &clock, &mut tasks, &mut ready).await?;
     } else if args.serves_k2() {
         serve_k2(cli, args, &clock, &mut tasks, &mut ready, &mut cleanup, k2).await?;
     }
