@@ -8,28 +8,19 @@ use super::{Ctx, Ins};
 use crate::core::{DataType, Result};
 use crate::engine::isa::{Arith, Conv, Logic, Shift, TyHint, Unary};
 use crate::engine::source::{OperandText, Pos};
-use crate::engine::Family;
+use crate::engine::{Family, Opd};
 
 impl<F: Family + ?Sized> Ctx<'_, F> {
     /// `+I IN1, IN2, OUT` (or `IN, OUT`: OUT := OUT op IN).
     pub(super) fn arith(&self, m: &str, op: Arith, ty: TyHint, ops: &[OperandText], pos: Pos) -> Result<Ins> {
-        let out_o = ops.last().unwrap();
-        let out = self.raw(out_o)?;
-        self.out_loc(out_o, &out)?;
-        let ins: Vec<Raw> = ops[..ops.len() - 1].iter().map(|o| self.raw(o)).collect::<Result<_>>()?;
-        let mut all: Vec<(&OperandText, &Raw)> = vec![(out_o, &out)];
-        all.extend(ops.iter().zip(ins.iter()));
-        let t = signed(self.value_ty(m, ty, &all)?);
-        if t == DataType::Bool {
-            return Err(self.e(pos, format!("{m} works on numbers, not bits")));
-        }
-        let outd = self.typed(out_o, &out, t)?;
-        let (a, b) = if ins.len() == 1 {
-            (outd, self.typed(&ops[0], &ins[0], t)?)
-        } else {
-            (self.typed(&ops[0], &ins[0], t)?, self.typed(&ops[1], &ins[1], t)?)
-        };
-        Ok(Ins::Arith { op, ty: t, a, b, out: outd })
+        let (t, a, b, out) = self.binary(ops, |all| {
+            let t = signed(self.value_ty(m, ty, all)?);
+            if t == DataType::Bool {
+                return Err(self.e(pos, format!("{m} works on numbers, not bits")));
+            }
+            Ok(t)
+        })?;
+        Ok(Ins::Arith { op, ty: t, a, b, out })
     }
 
     /// `INC…` / `DEC… OUT`.
@@ -51,20 +42,32 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
 
     /// `WAND IN1, IN2, OUT` (or `IN, OUT`).
     pub(super) fn word_logic(&self, m: &str, op: Logic, ops: &[OperandText]) -> Result<Ins> {
+        let (t, a, b, out) = self.binary(ops, |all| self.value_ty(m, TyHint::Auto, all))?;
+        Ok(Ins::WordLogic { op, ty: t, a, b, out })
+    }
+
+    /// The operands of `OP IN1, IN2, OUT` or `OP IN, OUT` (OUT := OUT op IN): the output
+    /// checked first, then the inputs, all typed as `ty_of` decides from them (the output
+    /// first): the type and the operands `a`, `b`, `out`.
+    fn binary(
+        &self,
+        ops: &[OperandText],
+        ty_of: impl FnOnce(&[(&OperandText, &Raw)]) -> Result<DataType>,
+    ) -> Result<(DataType, Opd, Opd, Opd)> {
         let out_o = ops.last().unwrap();
         let out = self.raw(out_o)?;
         self.out_loc(out_o, &out)?;
         let ins: Vec<Raw> = ops[..ops.len() - 1].iter().map(|o| self.raw(o)).collect::<Result<_>>()?;
         let mut all: Vec<(&OperandText, &Raw)> = vec![(out_o, &out)];
         all.extend(ops.iter().zip(ins.iter()));
-        let t = self.value_ty(m, TyHint::Auto, &all)?;
+        let t = ty_of(&all)?;
         let outd = self.typed(out_o, &out, t)?;
         let (a, b) = if ins.len() == 1 {
             (outd, self.typed(&ops[0], &ins[0], t)?)
         } else {
             (self.typed(&ops[0], &ins[0], t)?, self.typed(&ops[1], &ins[1], t)?)
         };
-        Ok(Ins::WordLogic { op, ty: t, a, b, out: outd })
+        Ok((t, a, b, outd))
     }
 
     /// `INV… OUT`.
