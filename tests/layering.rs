@@ -44,7 +44,6 @@ const EXCEPTIONS: &[(&str, &str, &str)] = &[
 
 /// Sibling-file cycles that still stand: `(folder, reason)`.
 const CYCLE_EXCEPTIONS: &[(&str, &str)] = &[
-    ("src/core/link", "the line, serial, RFC 2217 and TCP transports share their settings types"),
     ("src/k2/agent", "the IL generator and the protocol share the mailbox layout"),
     ("src/k2/sim", "the Modbus server and its network loop share the connection state"),
     ("src/k2/sim/program", "the family hooks and motion instructions call each other"),

@@ -1,6 +1,8 @@
 //! The transport layer, family-neutral: every byte that reaches a device or leaves a served
 //! simulator goes through here, apart from the codecs that give it meaning.
 //!
+//! - [`transport`]: the byte stream every transport offers; [`settings`]: a serial line's
+//!   character format;
 //! - [`line`]: the byte line of the serial families (servo, UMPK, FX) and the registry that
 //!   shares one line among the devices on it;
 //! - [`serial`]: what carries a serial line — a port on this computer (a tty, a COM port),
@@ -23,8 +25,10 @@ pub mod port;
 pub mod rfc2217;
 pub mod serial;
 pub mod served;
+pub mod settings;
 pub mod tcp;
 pub mod traced;
+pub mod transport;
 
 #[cfg(unix)]
 pub mod unix;

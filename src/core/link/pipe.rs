@@ -2,7 +2,7 @@
 //! one end and a simulator's serve loop (or a scripted responder) on the other, on every
 //! operating system (a socket pair or a pty exists only on some).
 
-use super::line::Transport;
+use super::transport::Transport;
 use std::collections::VecDeque;
 use std::io;
 use std::sync::{Arc, Condvar, Mutex};

@@ -14,8 +14,8 @@
 //! and every piece read is reported to [`crate::core::trace`] as the traced async streams
 //! report theirs ([`super::traced`]), and a peer closing the connection raises a flag.
 
-use super::line::Transport;
 use super::traced::Traced;
+use super::transport::Transport;
 use crate::core::trace::{self, Dir, Proto};
 use std::io;
 use std::sync::atomic::{AtomicBool, Ordering};

@@ -11,8 +11,8 @@
 //! SET-PARITY 3, SET-STOPSIZE 4, SET-CONTROL 5, PURGE-DATA 12; the server answers each with
 //! the code + 100), and waits for the server to confirm them before the first frame.
 
-use super::line::Transport;
-use super::serial::{LineSettings, Parity};
+use super::settings::{LineSettings, Parity};
+use super::transport::Transport;
 use crate::core::{Error, Result};
 use std::io::{self, Read, Write};
 use std::net::TcpStream;

@@ -3,9 +3,9 @@
 //! with `…+tcp://HOST:PORT`, as to a serial device server). Either way the serve loop gets
 //! one [`Transport`] that behaves like the device's end of a line.
 
-use super::line::Transport;
 use super::pty::Pty;
 use super::tcp::ServedTcp;
+use super::transport::Transport;
 use crate::core::Result;
 use std::net::SocketAddr;
 use std::path::{Path, PathBuf};

@@ -9,7 +9,7 @@
 //! loses what the server sends meanwhile, as a line nobody listens to does; the server never
 //! waits for it.
 
-use super::line::Transport;
+use super::transport::Transport;
 use crate::core::url::DeviceUrl;
 use crate::core::{Error, Result};
 use std::io::{self, Read, Write};
