@@ -13,10 +13,10 @@
 //! The session puts [`Pending`] around the guarded device (`Pending(Guarded(device))`), and a
 //! device opened late is guarded like one opened at once (the session's opener wraps it), so
 //! every call goes through both and no path can use the simulator before its state is loaded:
-//! a call that returns a `Result` fails with the reason (the state file's holder, the link
-//! error) and changes nothing; a capability hook answers `None`. Front ends call
-//! [`Device::ready`] (through `Session::ready`) before a command, so the user sees the reason,
-//! not a missing capability.
+//! a call fails with the reason (the state file's holder, the link error) and changes nothing,
+//! the capability hook ([`Device::family`]) included, so a family's accessor (`k2::ops` …)
+//! answers `None`. Front ends call [`Device::ready`] (through `Session::ready`) before a
+//! command, so the user sees the reason, not a missing capability.
 
 use crate::core::device::Change;
 use crate::core::operand::{Candidate, Operand, OperandSpace};
@@ -98,20 +98,16 @@ impl Pending {
         Ok(device)
     }
 
-    /// Whether the device answers a capability hook at all, asked without making it ready: a
-    /// command looking for a drive among the open devices (`servo status`) does not take the
-    /// simulated PLC's state file. A device not open yet may answer anything once it is.
+    /// Whether the device answers the capability hook at all, asked without making it ready.
+    /// A device not open yet may answer anything once it is. (A lookup for another family
+    /// than the device's — `servo status` looking for a drive among the open devices — is
+    /// answered by `core::device::lookup` from the device's family name before the hook is
+    /// asked, so it does not take the simulated PLC's state file either.)
     fn answers(&mut self, ask: impl FnOnce(&mut Box<dyn Device>) -> bool) -> bool {
         match &mut self.state {
             State::Opened { device, .. } => ask(device),
             State::Unopened(_) => true,
         }
-    }
-
-    /// The device once ready, or `None` (a capability hook cannot carry the reason; the
-    /// front ends asked [`Device::ready`] first and reported it).
-    fn ready_device(&mut self) -> Option<&mut Box<dyn Device>> {
-        self.make_ready().ok()
     }
 }
 
@@ -189,30 +185,6 @@ impl Device for Pending {
             State::Unopened(_) => 0,
         }
     }
-    fn as_k2(&mut self) -> Option<&mut dyn crate::k2::K2Ops> {
-        if !self.answers(|d| d.as_k2().is_some()) {
-            return None;
-        }
-        self.ready_device()?.as_k2()
-    }
-    fn as_servo(&mut self) -> Option<&mut dyn crate::servo::ServoOps> {
-        if !self.answers(|d| d.as_servo().is_some()) {
-            return None;
-        }
-        self.ready_device()?.as_servo()
-    }
-    fn family_ops(&mut self) -> Option<&mut dyn std::any::Any> {
-        if !self.answers(|d| d.family_ops().is_some()) {
-            return None;
-        }
-        self.ready_device()?.family_ops()
-    }
-    fn family_ops_for(&mut self, changes: &[Change]) -> Result<Option<&mut dyn std::any::Any>> {
-        if !self.answers(|d| d.family_ops_for(&[]).ok().flatten().is_some()) {
-            return Ok(None);
-        }
-        self.make_ready()?.family_ops_for(changes)
-    }
     fn family(&mut self, changes: &[Change]) -> Result<Option<&mut dyn std::any::Any>> {
         if !self.answers(|d| d.family(&[]).ok().flatten().is_some()) {
             return Ok(None);
@@ -262,10 +234,28 @@ mod tests {
         assert!(e.message.contains("in use"), "{}", e.message);
         let op = first.operands().parse("VW0").unwrap();
         assert!(first.read(&op).is_err(), "no use before the state is loaded");
-        assert!(first.as_k2().is_none());
+        assert!(crate::k2::ops(&mut first).is_none());
         drop(other);
         first.ready().expect("free again: the next use takes it");
         assert!(first.is_ready());
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn looking_for_another_family_leaves_the_state_file_alone() {
+        let dir = std::env::temp_dir().join(format!("plcsh-pending-family-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        let state = dir.join("state.json");
+        let clock = Clock::stepped();
+        let sim = crate::session::open_url("sim:K205-16DT", &clock).unwrap();
+        let mut plc = Pending::option_on_first_use(sim, "state", &state.to_string_lossy());
+        assert!(crate::servo::ops(&mut plc).is_none());
+        assert!(crate::core::device::lookup(&mut plc, "umpk", &[]).unwrap().is_none());
+        assert!(!plc.is_ready(), "a lookup for a drive or a UMPK does not take the PLC's state file");
+        assert!(!state.exists());
+        assert!(crate::k2::ops(&mut plc).is_some(), "the PLC's own family makes it ready");
+        assert!(plc.is_ready());
         let _ = std::fs::remove_dir_all(&dir);
     }
 

@@ -29,18 +29,8 @@ const FAMILIES: &[&str] = &["k2", "servo", "umpk", "fx"];
 /// family"): a new family is added without touching them.
 const FAMILY_NEUTRAL: &[&str] = &["core", "engine", "guard", "pending"];
 
-const CAPABILITY: &str = "two capability hooks (as_k2/as_servo) still name their families";
-const GUARD_CHANGES: &str = "the change lists of K2 instructions and servo writes still live in the guard";
-
 /// `(file, module it names, reason)`: imports that still break the rule, each with its reason.
-const EXCEPTIONS: &[(&str, &str, &str)] = &[
-    ("src/core/device.rs", "k2", CAPABILITY),
-    ("src/core/device.rs", "servo", CAPABILITY),
-    ("src/pending.rs", "k2", CAPABILITY),
-    ("src/pending.rs", "servo", CAPABILITY),
-    ("src/guard.rs", "k2", GUARD_CHANGES),
-    ("src/guard.rs", "servo", GUARD_CHANGES),
-];
+const EXCEPTIONS: &[(&str, &str, &str)] = &[];
 
 /// Sibling-file cycles that still stand: `(folder, reason)`.
 const CYCLE_EXCEPTIONS: &[(&str, &str)] = &[

@@ -1,9 +1,33 @@
 //! The device trait: the small surface every device family implements, real or simulated.
 //!
 //! Batched reads and writes are the primitive (a single read is a batch of one) because
-//! coalescing is where a fieldbus tool wins or loses. Optional capabilities are hooks that
-//! default to `None` (the probe-rs `DebugProbe` pattern): a K2 answers `as_k2`, a servo
-//! drive `as_servo`, and a simulator additionally exposes its simulation controls.
+//! coalescing is where a fieldbus tool wins or loses. What a device can do beyond that is
+//! its family's, reached through one optional hook (below).
+//!
+//! Design note, capabilities: one mechanism for every family. A device's family operations
+//! (a K2's instructions and event log, a drive's raw objects and frames, a UMPK's terminal
+//! commands, a simulated FX's CPU) are reached through one hook, [`Device::family`], found
+//! by one generic lookup, [`lookup`] (`lookup(dev, "k2", changes)`), which answers the
+//! family's own object as `dyn Any`. Only that family downcasts it, in its typed accessor
+//! (`k2::ops`, `servo::ops`, `umpk::ops`, `fx::driver::ops`; for simulation controls
+//! `k2::simulator`, `servo::simulator`, `fx::driver::simulator`). So this module names no
+//! family, and a new family adds its operations by answering the hook and writing its
+//! accessor, without touching `core` or the write guard.
+//!
+//! Every call that changes a device states its changes first: the hook takes the
+//! [`Change`]s the caller is about to make and hands the object out only once they are
+//! permitted (the write guard checks its rules; a plain device permits everything). The
+//! families' accessors state them per call, computed by the family (`k2::changes`,
+//! `servo::changes`), so every instruction and object write made through them is checked;
+//! the simulator reached for simulation controls (`k2::simulator`) is the deliberate
+//! exception the guard's doc names. Why the hook takes the changes instead of handing out the object beside a
+//! separate rule checker: checking a write names the operand in the device's own operand
+//! space, which a wrapper can read only while it holds the whole device, not while the
+//! object is lent out. Why the lookup compares the family name before asking the hook: a
+//! device whose readiness is deferred (`crate::pending`) must not be made ready by a
+//! lookup for another family. Capability traits per function (pulse outputs, counters, the
+//! clock: the embedded-hal shape) can sit on the same lookup when a second family shares
+//! one; today each operation belongs to one family, so the accessors are per family.
 //!
 //! Design note: the trait is synchronous. The design guide sketches `async fn`; we chose
 //! blocking calls because every front end (rustyline, Lua, one-shot) is sequential, the
@@ -69,12 +93,6 @@ pub trait Device: Send {
     fn requests(&self) -> u64 {
         0
     }
-    fn as_k2(&mut self) -> Option<&mut dyn crate::k2::K2Ops> {
-        None
-    }
-    fn as_servo(&mut self) -> Option<&mut dyn crate::servo::ServoOps> {
-        None
-    }
     /// The one capability hook: the device's family operations — the family's own object,
     /// which only that family's typed accessor downcasts ([`lookup`]) — handed out once
     /// `changes`, what the caller is about to make through it (`&[]` to read or to reach
@@ -84,25 +102,6 @@ pub trait Device: Send {
     fn family(&mut self, changes: &[Change]) -> Result<Option<&mut dyn Any>> {
         let _ = changes;
         Ok(None)
-    }
-    /// Capabilities of families that have no hook of their own (UMPK, FX and later ones):
-    /// their shell commands and Lua methods downcast through this one generic hook instead
-    /// of each family adding an `as_<family>` method here (design guide, "New families").
-    ///
-    /// The write guard (`crate::guard`) cannot see what a command does with the object
-    /// it hands out, so while a write rule is in force (a profile's `read_only`/`allow`,
-    /// the session's `--read-only`) a guarded device answers `None` here. Family commands
-    /// therefore take the hook through [`Device::family_ops_for`], stating first what they
-    /// will change.
-    fn family_ops(&mut self) -> Option<&mut dyn std::any::Any> {
-        None
-    }
-    /// The family hook for a command that will make `changes` (`&[]` for one that only
-    /// reads): the guard checks the changes first and refuses the whole command, naming
-    /// the rule, before the hook is handed out. An unguarded device just answers.
-    fn family_ops_for(&mut self, changes: &[Change]) -> Result<Option<&mut dyn std::any::Any>> {
-        self.permits(changes)?;
-        Ok(self.family_ops())
     }
     /// Asks whether `changes` may be made, before a command makes any of them, so a
     /// command is refused whole (nothing sent) rather than half-way. Unguarded devices

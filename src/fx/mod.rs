@@ -18,7 +18,7 @@
 //!
 //! Reading and writing devices goes through the generic `get`/`set`/`read`/`watch`/`trace`
 //! and Lua field access. Only the in-process simulator has operations of its own (`sim program
-//! load`, `sim cpu run|stop`), reached through `Device::family_ops`; a real FX answers `None`
+//! load`, `sim cpu run|stop`), reached through [`driver::ops`]; a real FX answers `None`
 //! there, so there is nothing for the write guard to police beyond device writes.
 
 pub mod control;

@@ -656,10 +656,6 @@ impl Device for K2Wire {
         self.requests
     }
 
-    fn as_k2(&mut self) -> Option<&mut dyn super::K2Ops> {
-        Some(self)
-    }
-
     /// The K2 operations (`k2::ops`): this connection permits everything.
     fn family(&mut self, _changes: &[crate::core::device::Change]) -> Result<Option<&mut dyn std::any::Any>> {
         Ok(Some(self))
@@ -802,7 +798,8 @@ mod tests {
     /// The driver attached over an in-memory pipe to the simulator's RTU server (on a thread
     /// of its own), with the simulator shared for checks.
     fn served(sim: crate::k2::sim::K2Sim) -> (K2Wire, Arc<Mutex<crate::k2::sim::K2Sim>>, std::thread::JoinHandle<()>) {
-        use crate::k2::sim::modbus_server::{serve_rtu_stream, K2Service};
+        use crate::k2::sim::modbus_net::serve_rtu_stream;
+        use crate::k2::sim::modbus_server::K2Service;
         let (client, server) = tokio::io::duplex(1024);
         let model = sim.model();
         let sim = Arc::new(Mutex::new(sim));

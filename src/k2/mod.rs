@@ -16,8 +16,8 @@ pub mod sim;
 pub mod sm_map;
 pub mod space;
 
-pub use access::{ops, simulator, K2Access};
 use crate::core::{Device, Error, Result};
+pub use access::{ops, simulator, K2Access};
 pub use instr::{Event, EventKind, EventMatch, RtcTime};
 
 /// The K2's special instructions (manual §3.3, §3.4, §2.2.9) and event access, as a device
@@ -28,7 +28,7 @@ pub use instr::{Event, EventKind, EventMatch, RtcTime};
 /// PLC-side helper program (a mailbox in V memory), because every method maps onto one
 /// instruction (PLS, HDEF, HSC, PSTOP, SET_RTC, READ_RTC) or onto an event ring the helper
 /// fills from ATCHed interrupt routines. Simulation-only controls (input signal sources,
-/// retention settings) go through [`K2Ops::as_sim`].
+/// retention settings) go through [`K2Ops::as_sim`] and [`simulator`].
 ///
 /// Every method has a default that refuses, so a device that cannot run instructions yet
 /// (the Modbus driver before its helper exists) implements only `model`.

@@ -436,10 +436,6 @@ impl Device for Driver {
         self.requests
     }
 
-    fn as_servo(&mut self) -> Option<&mut dyn ServoOps> {
-        Some(self)
-    }
-
     /// The drive operations and simulation controls (`servo::ops`, `servo::simulator`): the
     /// driver itself permits everything.
     fn family(&mut self, _changes: &[crate::core::device::Change]) -> Result<Option<&mut dyn std::any::Any>> {

@@ -13,8 +13,8 @@ pub mod objects;
 pub mod sim;
 pub mod units;
 
-pub use access::{ops, simulator, ServoAccess};
 use crate::core::Result;
+pub use access::{ops, simulator, ServoAccess};
 use objects::ObjRef;
 use std::sync::{Arc, Mutex};
 
@@ -45,8 +45,8 @@ pub trait ServoOps {
         None
     }
 
-    /// Asks the write guard (`crate::guard`) whether `changes` may be made, before a
-    /// helper makes any of them; unguarded drives permit everything.
+    /// Asks the device's write rules whether `changes` may be made, before a helper makes
+    /// any of them ([`ServoAccess`] asks the device; a bare driver permits everything).
     fn permits(&self, changes: &[crate::core::device::Change]) -> Result<()> {
         let _ = changes;
         Ok(())

@@ -575,10 +575,6 @@ impl Device for Driver {
         self.requests
     }
 
-    fn family_ops(&mut self) -> Option<&mut dyn std::any::Any> {
-        Some(self)
-    }
-
     /// The controller's own operations (`umpk::ops`): the driver itself permits everything.
     fn family(&mut self, _changes: &[crate::core::device::Change]) -> Result<Option<&mut dyn std::any::Any>> {
         Ok(Some(self))

@@ -654,11 +654,6 @@ impl Device for Driver {
         self.requests
     }
 
-    fn family_ops(&mut self) -> Option<&mut dyn std::any::Any> {
-        // Only a simulator has operations of its own (its CPU); a real FX has none here.
-        self.sim.is_some().then_some(self as &mut dyn std::any::Any)
-    }
-
     fn family(&mut self, _changes: &[crate::core::device::Change]) -> Result<Option<&mut dyn std::any::Any>> {
         // Only a simulator has operations of its own (its CPU); a real FX has none here.
         Ok(self.sim.is_some().then_some(self as &mut dyn std::any::Any))

@@ -805,10 +805,6 @@ impl Device for K2Sim {
         Ok(())
     }
 
-    fn as_k2(&mut self) -> Option<&mut dyn crate::k2::K2Ops> {
-        Some(self)
-    }
-
     /// The K2 operations and simulation controls (`k2::ops`, `k2::simulator`): the simulator
     /// itself permits everything.
     fn family(&mut self, _changes: &[crate::core::device::Change]) -> Result<Option<&mut dyn std::any::Any>> {

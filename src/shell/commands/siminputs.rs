@@ -1,6 +1,6 @@
 //! `sim input I0.1 freq=1kHz [dir=up|down]`, `sim input I0.1 off`, `sim quad A B freq=…
 //! [dir=down]`, `sim inputs`, `sim retain RANGES|none` — simulator-only controls, reached
-//! through `K2Ops::as_sim`.
+//! through `k2::simulator`.
 
 use super::k2cmd::{self, check_options, opt, value_err};
 use crate::core::{Error, Result, Value};
