@@ -158,7 +158,7 @@ mod tests {
         let e = g.write(&[(op, Value::Int(6))]).unwrap_err();
         assert!(e.message.contains("--read-only"), "{e}");
         assert!(g.family(&[]).unwrap().is_some(), "a use that changes nothing is let through");
-        let e = g.family(&[pls]).err().expect("a stated change is checked");
+        let e = g.family(&[pls]).expect_err("a stated change is checked");
         assert!(e.message.contains("PLS 0") && e.message.contains("--read-only"), "{e}");
         assert!(crate::k2::ops(&mut g).unwrap().pls(0).unwrap_err().message.contains("PLS 0"));
         assert_eq!(g.read(&[op]).unwrap(), vec![Value::Int(5)]);

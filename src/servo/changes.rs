@@ -54,7 +54,7 @@ mod tests {
         match frame(&odd).as_slice() {
             [Change::Action { what, touches }] => {
                 assert_eq!(what, "raw frame with function code 16#99");
-                assert_eq!(touches, &[what.clone()]);
+                assert_eq!(touches, std::slice::from_ref(what));
             }
             other => panic!("{other:?}"),
         }
