@@ -8,7 +8,8 @@
 use plcsh::core::trace::{self, Dir, Proto};
 use plcsh::core::url::DeviceUrl;
 use plcsh::core::{Clock, Device};
-use plcsh::k2::sim::modbus_server::{serve_tcp, K2Service};
+use plcsh::k2::sim::modbus_net::serve_tcp;
+use plcsh::k2::sim::modbus_server::K2Service;
 use std::sync::{Arc, Mutex};
 use std::time::Instant;
 

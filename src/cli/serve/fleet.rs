@@ -12,7 +12,8 @@
 use super::{bind, limits, make_k2, ServeArgs};
 use crate::cli::Cli;
 use crate::core::{Clock, Error, Result};
-use crate::k2::sim::modbus_server::{self, K2Service};
+use crate::k2::sim::modbus_net;
+use crate::k2::sim::modbus_server::K2Service;
 use serde_json::{json, Map, Value as Json};
 use std::sync::{Arc, Mutex};
 use tokio::task::JoinSet;
@@ -61,7 +62,7 @@ pub(super) async fn serve(
             let served = tokio::runtime::Builder::new_current_thread().enable_all().build().and_then(|rt| {
                 rt.block_on(async move {
                     let l = tokio::net::TcpListener::from_std(l)?;
-                    modbus_server::serve_tcp(l, service, limits).await
+                    modbus_net::serve_tcp(l, service, limits).await
                 })
             });
             let _ = done_tx.send(served);

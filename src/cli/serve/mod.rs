@@ -34,7 +34,8 @@ use crate::core::link::async_pty::AsyncPty;
 use crate::core::link::control;
 use crate::core::link::served::ServeOn;
 use crate::core::{Clock, Error, Result};
-use crate::k2::sim::modbus_server::{self, K2Service};
+use crate::k2::sim::modbus_net;
+use crate::k2::sim::modbus_server::K2Service;
 use crate::output::{self, Style};
 use clap::{Args, Subcommand};
 use serde_json::{json, Map, Value as Json};
@@ -331,12 +332,12 @@ pub(super) fn make_k2(
 }
 
 /// How the served K2s treat their network connections (`--max-connections`, `--idle-timeout`, `--strict-unit`).
-pub(super) fn limits(args: &ServeArgs) -> Result<modbus_server::Limits> {
+pub(super) fn limits(args: &ServeArgs) -> Result<modbus_net::Limits> {
     let idle =
         crate::core::literal::parse_option_duration_us(&args.idle_timeout).ok().filter(|us| *us > 0).ok_or_else(
             || Error::usage(format!("--idle-timeout {} is not a duration", args.idle_timeout)).hint("e.g. 300s, 2m"),
         )?;
-    Ok(modbus_server::Limits {
+    Ok(modbus_net::Limits {
         max_connections: args.max_connections,
         idle: std::time::Duration::from_micros(idle as u64),
         unit_ff: !args.strict_unit,
@@ -378,12 +379,12 @@ async fn serve_k2(
     if let Some(a) = &args.tcp {
         let l = bind(a).await?;
         ready.insert("tcp".into(), json!(l.local_addr()?.to_string()));
-        tasks.spawn(modbus_server::serve_tcp(l, service.clone(), limits));
+        tasks.spawn(modbus_net::serve_tcp(l, service.clone(), limits));
     }
     if let Some(a) = &args.rtu_tcp {
         let l = bind(a).await?;
         ready.insert("rtu_tcp".into(), json!(l.local_addr()?.to_string()));
-        tasks.spawn(modbus_server::serve_rtu_over_tcp(l, service.clone(), limits));
+        tasks.spawn(modbus_net::serve_rtu_over_tcp(l, service.clone(), limits));
     }
     if let Some(link) = &args.rtu_pty {
         let pty = AsyncPty::open()?;
@@ -391,7 +392,7 @@ async fn serve_k2(
         cleanup.links.push(link.clone());
         ready.insert("rtu_pty".into(), json!({"path": pty.path(), "link": link}));
         let service = service.clone();
-        tasks.spawn(async move { modbus_server::serve_rtu(&pty, service).await });
+        tasks.spawn(async move { modbus_net::serve_rtu(&pty, service).await });
     }
     Ok(())
 }

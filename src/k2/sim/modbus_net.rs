@@ -26,6 +26,7 @@
 use super::fault::FaultKind;
 use super::modbus_server::K2Service;
 use super::rtu_frame::{self, Frame};
+use crate::core::link::async_pty::AsyncPty;
 use std::future::Future;
 use std::io;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -116,14 +117,31 @@ async fn accept_loop(listener: TcpListener, service: K2Service, limits: Limits, 
     }
 }
 
-/// Serves Modbus TCP on `listener`.
+/// Serves Modbus TCP on `listener` until the future is dropped.
 pub async fn serve_tcp(listener: TcpListener, service: K2Service, limits: Limits) -> io::Result<()> {
     accept_loop(listener, service, limits, false).await
 }
 
-/// Serves Modbus RTU frames over TCP (a transparent serial gateway) on `listener`.
+/// Serves Modbus RTU frames over TCP (what serial-to-Ethernet gateways in transparent
+/// mode carry) on `listener` until the future is dropped.
 pub async fn serve_rtu_over_tcp(listener: TcpListener, service: K2Service, limits: Limits) -> io::Result<()> {
     accept_loop(listener, service, limits, true).await
+}
+
+/// Serves Modbus RTU on a pseudo-terminal until the future is dropped (framing in
+/// [`super::rtu_frame`]).
+pub async fn serve_rtu(pty: &AsyncPty, service: K2Service) -> io::Result<()> {
+    let s = pty.stream().map_err(|e| io::Error::other(e.to_string()))?;
+    serve_rtu_stream(s, service).await
+}
+
+/// Serves Modbus RTU frames on any byte stream (a pty, an in-memory pipe in tests) until the
+/// stream ends.
+pub async fn serve_rtu_stream<S>(s: S, service: K2Service) -> io::Result<()>
+where
+    S: AsyncRead + AsyncWrite + Unpin,
+{
+    rtu_stream(s, service, None).await
 }
 
 /// One Modbus TCP connection: MBAP header (transaction, protocol 0, length, unit), PDU.

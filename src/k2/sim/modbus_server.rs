@@ -8,8 +8,9 @@
 //! §3.2.1) answered with *illegal data value*; a request outside one area with *illegal data
 //! address*; any other function with *illegal function*. A request for another unit id gets
 //! no reply at all, as from a real RTU slave (unit 0, broadcast, is executed without a
-//! reply). The transports' loops (connection limit, idle timeout, one decoder for every
-//! transport, silence-based RTU framing) are in [`super::modbus_net`].
+//! reply). The transports' loops that serve it (connection limit, idle timeout, one decoder for
+//! every transport, silence-based RTU framing) are in [`super::modbus_net`], which uses this
+//! file's [`K2Service`].
 //!
 //! Scans: a K2 serves its Modbus slave ports between program scans. Before each request the
 //! server brings the simulation up to the clock ([`K2Sim::advance`]), which runs whatever the
@@ -20,17 +21,13 @@
 //! Injected faults ([`crate::k2::sim::fault`]) act here, on every transport: no reply, an
 //! exception, a late reply; a corrupted CRC on RTU; a dropped connection on TCP.
 
-pub use super::modbus_net::Limits;
-use crate::core::link::async_pty::AsyncPty;
 use crate::k2::instr::EventKind;
 use crate::k2::modbus_map::{self, Exception, Table};
 use crate::k2::operand::Area;
 use crate::k2::sim::fault::FaultKind;
 use crate::k2::sim::K2Sim;
 use std::future::{ready, Ready};
-use std::io;
 use std::sync::{Arc, Mutex, MutexGuard};
-use tokio::net::TcpListener;
 use tokio_modbus::server::Service;
 use tokio_modbus::{ExceptionCode, Request, Response, SlaveRequest};
 
@@ -288,33 +285,6 @@ impl Service for K2Service {
             Some(Err(e)) => Err(e),
         })
     }
-}
-
-/// Serves Modbus TCP on `listener` until the future is dropped (`super::modbus_net`).
-pub async fn serve_tcp(listener: TcpListener, service: K2Service, limits: Limits) -> io::Result<()> {
-    super::modbus_net::serve_tcp(listener, service, limits).await
-}
-
-/// Serves Modbus RTU frames over TCP (what serial-to-Ethernet gateways in transparent
-/// mode carry) on `listener` until the future is dropped.
-pub async fn serve_rtu_over_tcp(listener: TcpListener, service: K2Service, limits: Limits) -> io::Result<()> {
-    super::modbus_net::serve_rtu_over_tcp(listener, service, limits).await
-}
-
-/// Serves Modbus RTU on a pseudo-terminal until the future is dropped (framing in
-/// [`super::rtu_frame`]).
-pub async fn serve_rtu(pty: &AsyncPty, service: K2Service) -> io::Result<()> {
-    let s = pty.stream().map_err(|e| io::Error::other(e.to_string()))?;
-    serve_rtu_stream(s, service).await
-}
-
-/// Serves Modbus RTU frames on any byte stream (a pty, an in-memory pipe in tests) until the
-/// stream ends.
-pub async fn serve_rtu_stream<S>(s: S, service: K2Service) -> io::Result<()>
-where
-    S: tokio::io::AsyncRead + tokio::io::AsyncWrite + Unpin,
-{
-    super::modbus_net::rtu_stream(s, service, None).await
 }
 
 #[cfg(test)]
