@@ -6,10 +6,10 @@
 //!
 //! This file holds the compiled program's shape ([`Ins`], [`Program`]), the walk over the
 //! file's POUs, networks, labels and calls, and the dispatch of each mnemonic. Operands are
-//! resolved and typed in [`operands`]; each instruction group is compiled in its own file:
-//! bit logic and comparisons ([`logic`]), moves ([`moves`]), arithmetic, word logic and
-//! conversions ([`arith`]), program flow and interrupts ([`flow`]), timers and counters
-//! ([`elements`]).
+//! resolved and typed in `operands`; each instruction group is compiled in its own file:
+//! bit logic and comparisons (`logic`), moves (`moves`), arithmetic, word logic and
+//! conversions (`arith`), program flow and interrupts (`flow`), timers and counters
+//! (`elements`).
 
 mod arith;
 mod elements;

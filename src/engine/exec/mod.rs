@@ -10,9 +10,9 @@
 //! This file holds the CPU's state and the interpreter loop, which dispatches each
 //! instruction (the one-line ones, jumps and calls, which move the program counter, run in
 //! the loop itself). What an instruction group computes is in its own file: bit logic and
-//! comparisons ([`logic`]), arithmetic, shifts and conversions ([`arith`]), block moves
-//! ([`moves`]); timers and counters are [`super::timers`]. Operand access through pointers
-//! is [`operands`].
+//! comparisons (`logic`), arithmetic, shifts and conversions (`arith`), block moves
+//! (`moves`); timers and counters are [`super::timers`]. Operand access through pointers
+//! is `operands`.
 
 mod arith;
 mod logic;

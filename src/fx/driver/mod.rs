@@ -6,8 +6,8 @@
 //! This file holds what both protocols share: the [`Driver`], the transaction on the line
 //! (quiet, send, collect, judge, resend) and its messages, the [`Device`] face and the URL
 //! parameters. What differs lives beside it: the programming port's handshake, address
-//! table and frames in [`programming_port`], the computer link's commands and frames in
-//! [`computer_link`], and the in-process simulator as a device in [`simulated`].
+//! table and frames in `programming_port`, the computer link's commands and frames in
+//! `computer_link`, and the in-process simulator as a device in `simulated`.
 //!
 //! - Transactions sit on the line's timing ([`LineSettings`]): before every request the line
 //!   must be quiet for a few character times (a late reply or a tail of noise is dropped,

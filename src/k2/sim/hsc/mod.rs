@@ -38,10 +38,10 @@
 //!   than a second.
 //!
 //! The counter is one [`HscChannel`] in four files: this one holds its state and snapshot;
-//! [`regs`] its register map (the control, multi-PV and status bytes of §3.3.2, the PV
+//! `regs` its register map (the control, multi-PV and status bytes of §3.3.2, the PV
 //! table of §3.3.3, `HDEF`/`HSC` and what the counter publishes to its SM registers);
-//! [`modes`] what each mode of §3.3.1 counts (the edge streams of its inputs, written
-//! edges); [`events`] counting over an interval of virtual time and the "CV = PV", direction
+//! `modes` what each mode of §3.3.1 counts (the edge streams of its inputs, written
+//! edges); `events` counting over an interval of virtual time and the "CV = PV", direction
 //! and reset events it raises.
 
 mod events;
