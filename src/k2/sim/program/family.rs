@@ -44,9 +44,28 @@ pub mod id {
     pub const READ_RTC: u16 = 5;
     pub const SET_RTC: u16 = 6;
     pub const STOP: u16 = 7;
+    /// Position control (`super::motion`).
+    pub const PREL: u16 = 10;
+    pub const PABS: u16 = 11;
+    pub const PHOME: u16 = 12;
+    pub const PJOG: u16 = 13;
+    pub const PFLO_F: u16 = 14;
 }
 
-use super::motion::id as motion;
+/// Per-occurrence state of a K2 instruction in a program.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub struct Inst {
+    pub exec_prev: bool,
+    pub busy: bool,
+    pub done: bool,
+    pub err: u8,
+    /// Frequency of the running constant-speed train (PJOG, PHOME, PFLO_F), Hz.
+    pub freq: u64,
+    /// PFLO_F: pulses still to output; PHOME: slowed down by NHOME.
+    pub remaining: u64,
+    pub slow: bool,
+}
+
 use ArgKind as A;
 
 const W: ArgKind = A::Value(Some(DataType::Word));
@@ -95,7 +114,7 @@ pub static SPECIALS: &[SpecialDef] = &[
     },
     SpecialDef {
         name: "PREL",
-        id: motion::PREL,
+        id: id::PREL,
         args: &[A::Const, A::Bit, W, D, W, DI, A::Bit, A::Bit, B],
         optional: 0,
         edge: false,
@@ -104,7 +123,7 @@ pub static SPECIALS: &[SpecialDef] = &[
     },
     SpecialDef {
         name: "PABS",
-        id: motion::PABS,
+        id: id::PABS,
         args: &[A::Const, A::Bit, W, D, W, DI, A::Bit, A::Bit, B],
         optional: 0,
         edge: false,
@@ -113,7 +132,7 @@ pub static SPECIALS: &[SpecialDef] = &[
     },
     SpecialDef {
         name: "PHOME",
-        id: motion::PHOME,
+        id: id::PHOME,
         args: &[A::Const, A::Bit, A::Bit, A::Bit, W, W, W, D, W, A::Bit, A::Bit, B],
         optional: 0,
         edge: false,
@@ -122,7 +141,7 @@ pub static SPECIALS: &[SpecialDef] = &[
     },
     SpecialDef {
         name: "PJOG",
-        id: motion::PJOG,
+        id: id::PJOG,
         args: &[A::Const, A::Bit, D, W, A::Bit, A::Bit, B],
         optional: 0,
         edge: false,
@@ -131,7 +150,7 @@ pub static SPECIALS: &[SpecialDef] = &[
     },
     SpecialDef {
         name: "PFLO_F",
-        id: motion::PFLO_F,
+        id: id::PFLO_F,
         args: &[A::Const, A::Bit, D, W, W, DI, A::Bit, A::Bit, B],
         optional: 0,
         edge: false,
@@ -297,7 +316,7 @@ pub struct K2Machine<'a> {
     pub sim: &'a mut K2Sim,
     pub now: Duration,
     /// Per-occurrence state of the K2 instructions (EXEC edges, running moves).
-    pub inst: &'a mut Vec<super::motion::Inst>,
+    pub inst: &'a mut Vec<Inst>,
     pub raised: Vec<(Duration, crate::k2::instr::EventKind)>,
 }
 
@@ -542,7 +561,7 @@ impl Machine for K2Machine<'_> {
                     _ => false,
                 }
             }
-            super::motion::id::PREL..=super::motion::id::PFLO_F => return self.position(sid, inst, args, &vals),
+            id::PREL..=id::PFLO_F => return self.position(sid, inst, args, &vals),
             _ => return Err(Fault::new(FaultKind::Instruction, format!("unknown family instruction {sid}"))),
         })
     }

@@ -15,33 +15,11 @@
 //! 1 stopped or blocked by the emergency-stop bit, 2 frequency below the minimum, 3 MAXF
 //! below MINF or above the channel's maximum, 4 the channel is busy, 5 no such pulse channel.
 
-use super::family::K2Machine;
+pub use super::family::Inst;
+use super::family::{id, K2Machine};
 use crate::core::DataType;
 use crate::engine::{self, Fault, Opd};
 use crate::k2::sim::pto::pos;
-use serde::{Deserialize, Serialize};
-
-/// Per-occurrence state of a K2 instruction in a program.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
-pub struct Inst {
-    pub exec_prev: bool,
-    pub busy: bool,
-    pub done: bool,
-    pub err: u8,
-    /// Frequency of the running constant-speed train (PJOG, PHOME, PFLO_F), Hz.
-    pub freq: u64,
-    /// PFLO_F: pulses still to output; PHOME: slowed down by NHOME.
-    pub remaining: u64,
-    pub slow: bool,
-}
-
-pub mod id {
-    pub const PREL: u16 = 10;
-    pub const PABS: u16 = 11;
-    pub const PHOME: u16 = 12;
-    pub const PJOG: u16 = 13;
-    pub const PFLO_F: u16 = 14;
-}
 
 /// Minimum output frequency of position control (§3.4.3), and of PFLO_F.
 pub const MIN_HZ: u64 = 125;
