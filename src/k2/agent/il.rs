@@ -15,6 +15,14 @@ pub const OFF_SCRATCH: u32 = p::SIZE;
 /// Bytes the program needs in all (mailbox + scratch).
 pub const TOTAL_SIZE: u32 = p::SIZE + 16;
 
+/// The commands (first, last code) whose instruction must see its enable low between two
+/// runs: PLS and PSTOP act on a rising edge (K2 manual §3.4.2; PSTOP's EXEC), and HDEF, HSC
+/// and SET_RTC, on which the manual is silent, are treated the same way. A request that
+/// repeats the last one executed among these waits one scan. READ_RTC is left out: it
+/// changes nothing, and a K2 that ran it on the edge only would leave the reply empty (its
+/// length is set by the instruction's ENO), which plcsh reports — never a wrong clock.
+pub const REPEAT_WAITS: (u16, u16) = (3, 7);
+
 struct Gen {
     base: u32,
     out: String,
@@ -41,10 +49,24 @@ impl Gen {
     fn valid(&self) -> String {
         format!("%V{}.4", self.base + OFF_SCRATCH + 12)
     }
-    /// "A request executed last scan": this scan executes none, so every instruction's
-    /// enable is low for at least one scan between two executions.
+    /// "The last request executed was one of [`REPEAT_WAITS`] and passed the checks";
+    /// [`Self::last`] says which. Changed only when a request executes.
     fn rested(&self) -> String {
         format!("%V{}.5", self.base + OFF_SCRATCH + 12)
+    }
+    /// "A waiting request repeats that instruction command and waits this scan out": every
+    /// instruction's enable is low in this scan, so the repeated one sees a rising edge in
+    /// the next. On in one scan per such request (the next scan sees it on and runs it).
+    fn hold(&self) -> String {
+        format!("%V{}.6", self.base + OFF_SCRATCH + 12)
+    }
+    /// The last request executed (the low byte of its command code).
+    fn last(&self) -> String {
+        self.b(OFF_SCRATCH + 13)
+    }
+    /// The low byte of the request's command word (V is big-endian).
+    fn command_low(&self) -> String {
+        self.b(p::Field::Command.offset() + 1)
     }
     /// Set when the command's instruction reported success (its ENO).
     fn ok(&self) -> String {
@@ -195,19 +217,6 @@ impl Gen {
             self.line("R", &format!("{valid}, 1"), "refused: nothing runs");
         }
     }
-
-    /// A byte-copy loop through two pointers (S7-200-style `&`/`*` indirect addressing).
-    fn copy_loop(&mut self, label: &str) {
-        let (src, dst, count) = (self.src(), self.dst(), self.count());
-        self.label(label);
-        self.line("LD", "%SM0.0", "");
-        self.line("MOVE", &format!("*{src}, *{dst}"), "one byte");
-        self.line("ADD", &format!("1, {src}"), "");
-        self.line("ADD", &format!("1, {dst}"), "");
-        self.line("SUB", &format!("1, {count}"), "");
-        self.line("LDW>", &format!("{count}, 0"), "");
-        self.line("JMPC", label, "");
-    }
 }
 
 /// The helper program for a mailbox at VB`base` (even, with TOTAL_SIZE bytes free).
@@ -228,15 +237,15 @@ pub fn program(base: u32) -> String {
    Status: exercised only against plcsh's simulator, which executes this text in its IL
    engine (`plcsh sim serve --agent`); not yet run on a real K2. Mnemonics the K2 manual shows
    (LD, ST, R_TRIG, MOVE with typed operands, PLS) are used as shown there; comparisons
-   (AW=, LDW<), ALD, ADD/SUB, jumps and the &/* indirect addressing are written as in
-   KincoBuilder's S7-200-style IL. If KincoBuilder rejects a line, enter that network in
-   LD with the logic its comment gives.
+   (AW=, LDW<), ALD, ADD, the block move BMB, the jump and the &/* indirect addressing are
+   written as in KincoBuilder's S7-200-style IL. If KincoBuilder rejects a line, enter that
+   network in LD with the logic its comment gives.
 
    Every command acts every time it is asked (docs/agent.md, section \"Every command acts
    every time\"): no jump skips an instruction, so PLS and PSTOP, which act on the rising
    edge of their enable (manual section 3.4.2), see it fall on every scan without a request;
-   and a request never executes in the scan right after one did, so the enable is low for at
-   least one scan between two executions of the same instruction.
+   and a request that repeats the instruction command of the request executed before it waits
+   one scan, so an instruction's enable is low for at least one scan between two executions.
 
    Network 3 refuses malformed requests before anything runs (docs/agent.md, section Checks).
    Word compares are signed INT compares, so each `word < bound` test also catches the
@@ -259,15 +268,18 @@ pub fn program(base: u32) -> String {
     g.line("MOVE", &format!("{}, {}", p::VERSION, g.w(p::OFF_VERSION)), "protocol version");
     g.line("ADD", &format!("1, {}", g.w(p::OFF_HEARTBEAT)), "heartbeat");
 
-    let (valid, rested) = (g.valid(), g.rested());
-    g.net(
-        "a new request waits when the request sequence differs from ack 0; it executes unless one executed last scan",
-    );
-    g.line("LDW<>", &format!("{}, {}", g.w(p::OFF_REQUEST), g.w(p::OFF_ACKS)), "");
-    g.line("AN", &rested, "a scan with every enable low between two executions");
+    let (valid, rested, hold, last, cmd_low) = (g.valid(), g.rested(), g.hold(), g.last(), g.command_low());
+    let waiting = format!("{}, {}", g.w(p::OFF_REQUEST), g.w(p::OFF_ACKS));
+    g.net("a new request waits when the request sequence differs from ack 0; one that repeats the last instruction command waits a scan first");
+    g.line("LDW<>", &waiting, "");
+    g.line("A", &rested, "the last request executed was an instruction command");
+    g.line("AB=", &format!("{cmd_low}, {last}"), "and this one names the same command");
+    g.line("AN", &hold, "and has not waited yet");
+    g.line("=", &hold, "so it waits this scan, with every enable low");
+    g.line("LDW<>", &waiting, "");
+    g.line("AN", &hold, "");
     g.line("=", &flag, "execute (and acknowledge) this scan");
     g.line("=", &valid, "valid until a check below refuses it");
-    g.line("=", &rested, "so the next scan executes nothing");
     g.line("LD", &flag, "");
     g.line("MOVE", &format!("0, {result}"), "result 0 = done");
     g.line("MOVE", &format!("0, {}", g.w(p::OFF_REPLY_LEN)), "no reply data yet");
@@ -279,29 +291,33 @@ pub fn program(base: u32) -> String {
     g.checks();
     g.label("CHECKED");
 
-    g.net("command 1: copy ARG2 bytes of request data to SMB[ARG1]");
+    g.net(&format!(
+        "remember the request this scan executes, and whether it runs an instruction that needs a rising edge (commands {}..{})",
+        REPEAT_WAITS.0, REPEAT_WAITS.1
+    ));
+    g.line("LD", &flag, "");
+    g.line("R", &format!("{rested}, 1"), "");
+    g.line("MOVE", &format!("{cmd_low}, {last}"), "");
+    g.gate(REPEAT_WAITS, "");
+    g.line("A", &valid, "");
+    g.line("S", &format!("{rested}, 1"), "read by network 2 when the next request waits");
+
+    g.net("command 1: copy ARG2 bytes of request data to SMB[ARG1] (one block move)");
     g.when(Command::SmWrite { start: 0, data: vec![] }.code());
-    g.line("JMPCN", "NOT_WRITE", "");
-    g.line("MOVE", &format!("&VB{}, {}", base + p::OFF_REQ_DATA, g.src()), "source: request data");
     g.line("MOVE", &format!("&SMB0, {}", g.dst()), "target: SMB0 + ARG1");
     g.line("I_DI", &format!("{a1}, {}", g.src()), "ARG1 as a double word");
     g.line("ADD", &format!("{}, {}", g.src(), g.dst()), "");
     g.line("MOVE", &format!("&VB{}, {}", base + p::OFF_REQ_DATA, g.src()), "source: request data");
-    g.line("MOVE", &format!("{a2}, {}", g.count()), "");
-    g.copy_loop("WRITE_LOOP");
-    g.label("NOT_WRITE");
+    g.line("BMB", &format!("*{}, *{}, {a2}", g.src(), g.dst()), "ARG2 bytes (1..64 once the checks passed)");
 
-    g.net("command 2: copy ARG2 bytes from SMB[ARG1] to the reply");
+    g.net("command 2: copy ARG2 bytes from SMB[ARG1] to the reply (one block move)");
     g.when(Command::SmRead { start: 0, len: 0 }.code());
-    g.line("JMPCN", "NOT_READ", "");
     g.line("MOVE", &format!("&SMB0, {}", g.src()), "source: SMB0 + ARG1");
     g.line("I_DI", &format!("{a1}, {}", g.dst()), "ARG1 as a double word");
     g.line("ADD", &format!("{}, {}", g.dst(), g.src()), "");
     g.line("MOVE", &format!("&VB{}, {}", base + p::OFF_REPLY, g.dst()), "target: reply data");
-    g.line("MOVE", &format!("{a2}, {}", g.count()), "");
     g.line("MOVE", &format!("{a2}, {}", g.w(p::OFF_REPLY_LEN)), "");
-    g.copy_loop("READ_LOOP");
-    g.label("NOT_READ");
+    g.line("BMB", &format!("*{}, *{}, {a2}", g.src(), g.dst()), "ARG2 bytes (1..64 once the checks passed)");
 
     let ok = g.ok();
     let code = |r: p::ResultCode| r.code();
@@ -444,19 +460,19 @@ mod tests {
                 assert!(!INSTRUCTIONS.contains(&op(skipped).as_str()), "`{l}` jumps over `{skipped}`");
             }
         }
-        assert_eq!(jumps, 5, "only past the checks and the SM copy loops, and in the loops");
+        assert_eq!(jumps, 1, "only past the checks");
         for name in INSTRUCTIONS {
             assert!(lines.iter().any(|l| op(l) == name), "{name} is in the program");
         }
     }
 
-    /// Every instruction's enable contains the "valid" bit, which is on in a request's scan
-    /// only and never in two scans in a row (the "executed last scan" bit holds it off).
+    /// Every instruction's enable starts with the "valid" bit (on in a request's scan only)
+    /// and the command's code.
     #[test]
     fn every_instruction_is_enabled_by_the_one_scan_valid_bit() {
         let base = p::DEFAULT_BASE;
         let il = program(base);
-        let (valid, rested) = (format!("%V{}.4", base + OFF_SCRATCH + 12), format!("%V{}.5", base + OFF_SCRATCH + 12));
+        let valid = Gen { base, out: String::new(), network: 0 }.valid();
         let lines: Vec<&str> = il.lines().collect();
         for (i, l) in lines.iter().enumerate() {
             let name = l.split_whitespace().next().unwrap_or("");
@@ -477,12 +493,9 @@ mod tests {
                 }
             }
             assert!(lines[k].contains(&valid), "{l}: enabled by `{}`, not by the valid bit", lines[k]);
+            let cmd = format!("AW=     %VW{}, ", base + p::Field::Command.offset());
+            assert!(lines[k + 1].starts_with(&cmd), "{l}: its enable names no command: `{}`", lines[k + 1]);
         }
-        let net2 = &il[il.find("(* Network 2:").unwrap()..il.find("(* Network 3:").unwrap()];
-        let order: Vec<&str> = net2.lines().filter(|l| l.contains(&rested) || l.contains(&valid)).collect();
-        assert!(order[0].starts_with("AN") && order[0].contains(&rested), "{order:?}");
-        assert!(order[1].starts_with("=") && order[1].contains(&valid), "{order:?}");
-        assert!(order[2].starts_with("=") && order[2].contains(&rested), "{order:?}");
     }
 
     use crate::k2::sim::agent_probe::AgentProbe;
@@ -576,30 +589,50 @@ mod tests {
         }
     }
 
-    /// A request that waits right after a scan that executed one is executed one scan
-    /// later, so every instruction's enable is low in between.
+    /// A request that repeats the instruction command of the request executed before it
+    /// (right before, or scans before) waits one scan, so that instruction's enable is low
+    /// in between; any other request runs in the scan that sees it.
     #[test]
-    fn a_request_never_executes_in_the_scan_after_an_execution() {
+    fn a_repeated_instruction_command_waits_one_scan() {
         let mut probe = AgentProbe::new();
-        let write = |probe: &mut AgentProbe, seq: u16| {
+        let write = |probe: &mut AgentProbe, seq: u16, cmd: &Command| {
             let base = (p::DEFAULT_BASE + p::OFF_REQUEST) as usize;
-            for (k, w) in p::request_words(seq, 7, &Command::Ping).iter().enumerate() {
+            for (k, w) in p::request_words(seq, 7, cmd).iter().enumerate() {
                 probe.sim.mem.v[base + 2 * k..base + 2 * k + 2].copy_from_slice(&w.to_be_bytes());
             }
         };
         let ack0 = |probe: &AgentProbe| probe.status().acks[0].seq;
-        write(&mut probe, 1);
-        probe.scan();
-        assert_eq!(ack0(&probe), 1, "executed in the next scan");
-        write(&mut probe, 2);
-        probe.scan();
-        assert_eq!(ack0(&probe), 1, "not in the scan right after an execution");
-        probe.scan();
-        assert_eq!(ack0(&probe), 2, "in the one after");
-        probe.scan();
-        write(&mut probe, 3);
-        probe.scan();
-        assert_eq!(ack0(&probe), 3, "after an idle scan: at once");
+        // (request, idle scans before it is written, scans until its ack).
+        let cases = [
+            (Command::ReadRtc, 0, 1),
+            (Command::ReadRtc, 0, 1),
+            (Command::SetRtc([0x26, 0x13, 1, 0, 0, 0, 0, 1]), 0, 1),
+            (Command::SetRtc([0x26, 0x11, 1, 0, 0, 0, 0, 1]), 0, 2),
+            (Command::SmRead { start: 66, len: 1 }, 0, 1),
+            (Command::Pls(0), 0, 1),
+            (Command::Pls(1), 0, 2),
+            (Command::Pls(1), 5, 2),
+            (Command::Pstop(1), 0, 1),
+            (Command::Pstop(1), 0, 2),
+            (Command::Hsc(9), 0, 1),
+            (Command::Hsc(0), 0, 1),
+            (Command::Ping, 0, 1),
+            (Command::Ping, 0, 1),
+            (Command::SmWrite { start: 67, data: vec![0x85] }, 0, 1),
+            (Command::SmWrite { start: 67, data: vec![0x85] }, 0, 1),
+        ];
+        for (seq, (cmd, idle, scans)) in (1..).zip(cases) {
+            for _ in 0..idle {
+                probe.scan();
+            }
+            write(&mut probe, seq, &cmd);
+            for k in 1..scans {
+                probe.scan();
+                assert_eq!(ack0(&probe), seq - 1, "{cmd:?}: not acknowledged in scan {k}");
+            }
+            probe.scan();
+            assert_eq!(ack0(&probe), seq, "{cmd:?}: acknowledged in scan {scans}");
+        }
     }
 
     /// The probe fails a helper that jumps over its instruction networks on scans without
@@ -609,9 +642,9 @@ mod tests {
         let il = program(p::DEFAULT_BASE);
         let g = Gen { base: p::DEFAULT_BASE, out: String::new(), network: 0 };
         let flag = g.flag();
-        // A jump from network 2 to the end on scans without a request.
+        // A jump over the command networks to the end on scans without a request.
         let jumping =
-            il.replace("\n(* Network 3:", &format!("LDN     {flag}\nJMPC    DONE\n\n(* Network 3:")) + "DONE:\n";
+            il.replace("\n(* Network 5:", &format!("LDN     {flag}\nJMPC    DONE\n\n(* Network 5:")) + "DONE:\n";
         assert_ne!(jumping, il);
         let mut probe = AgentProbe::new();
         probe.sim.load_helper(&jumping, "jumping.il").unwrap();

@@ -2,8 +2,9 @@
 //! simulated K2 executing `lib/k2_agent.il` in its scan engine, driven one scan at a time,
 //! with every scan checked against the protocol. Its checks: the CPU stays in RUN, the
 //! heartbeat moves once per scan, a waiting request is acknowledged in that scan — or, when
-//! the scan before acknowledged one, in the next (the scan between two executions, in which
-//! every instruction's enable is low: docs/agent.md) — with the verdict of [`Command::decode`] (the Rust twin of the program's checks), the reply is what
+//! it repeats the instruction command of the request executed before it, in the next (it
+//! waits a scan with every instruction's enable low: docs/agent.md) — with the verdict of
+//! [`Command::decode`] (the Rust twin of the program's checks), the reply is what
 //! the command asked for, and no memory outside the mailbox and the SM bytes the request
 //! names changes. The fuzz target `agent_mailbox` and the mailbox property test both drive
 //! the helper through this type, so a request that breaks a promise is a crash for the one
@@ -12,7 +13,7 @@
 use super::program::Mode;
 use super::K2Sim;
 use crate::core::Clock;
-use crate::k2::agent::il::TOTAL_SIZE;
+use crate::k2::agent::il::{REPEAT_WAITS, TOTAL_SIZE};
 use crate::k2::agent::protocol::{self as p, Ack, Command, ResultCode, Status, DATA_MAX};
 use crate::k2::instr::RtcTime;
 use crate::k2::memory::Memory;
@@ -43,8 +44,11 @@ pub struct AgentProbe {
     clock: Clock,
     base: u32,
     token: u16,
-    /// The last scan acknowledged a request: the next one executes none.
-    executed_last: bool,
+    /// The command (one of [`REPEAT_WAITS`], low byte of its code) of the last request
+    /// executed, if it was one that passed the checks: a request naming it waits one scan.
+    last_instruction: Option<u8>,
+    /// The last scan held a waiting request (the next one runs it).
+    held: bool,
 }
 
 impl Default for AgentProbe {
@@ -60,7 +64,7 @@ impl AgentProbe {
         let mut sim = super::open("K205-16DT", clock.clone()).expect("the default model");
         let base = p::DEFAULT_BASE;
         sim.enable_agent(base).expect("the default base");
-        let mut probe = AgentProbe { sim, clock, base, token: 0x5AA5, executed_last: false };
+        let mut probe = AgentProbe { sim, clock, base, token: 0x5AA5, last_instruction: None, held: false };
         probe.scan();
         probe
     }
@@ -72,11 +76,27 @@ impl AgentProbe {
         let next = self.sim.plc().map_or(self.sim.last, |p| p.next_scan);
         let now = self.clock.now();
         let ack0 = self.word(p::OFF_ACKS);
+        let code = self.word(p::OFF_REQUEST + 4);
+        let holds = self.holds();
         self.clock.step(next.saturating_sub(now).max(Duration::from_nanos(1)));
         self.sim.advance();
         // Only the helper writes during a scan, and it executes only a request whose
-        // sequence differs from ack 0's: ack 0 changed exactly when a request executed.
-        self.executed_last = self.word(p::OFF_ACKS) != ack0;
+        // sequence differs from ack 0's: ack 0 changed exactly when a request executed. An
+        // instruction command that no check refused enabled its instruction.
+        self.held = holds;
+        if self.word(p::OFF_ACKS) != ack0 {
+            let refused = p::checks().iter().any(|c| c.result == self.status().acks[0].result);
+            let waits = (REPEAT_WAITS.0..=REPEAT_WAITS.1).contains(&code);
+            self.last_instruction = (!refused && waits).then_some(code as u8);
+        }
+    }
+
+    /// Whether the next scan holds the waiting request: it repeats the instruction command of
+    /// the request executed before it and has not waited yet (the helper compares the
+    /// command's low byte).
+    fn holds(&self) -> bool {
+        let waiting = self.word(p::OFF_REQUEST) != self.word(p::OFF_ACKS);
+        waiting && !self.held && self.last_instruction == Some(self.word(p::OFF_REQUEST + 4) as u8)
     }
 
     /// Scans run so far.
@@ -165,8 +185,7 @@ impl AgentProbe {
         let at = (self.base + p::OFF_REQ_DATA) as usize;
         let data: [u8; DATA_MAX] = self.sim.mem.v[at..at + DATA_MAX].try_into().expect("64 bytes");
         let before = self.status();
-        // A request waiting right after a scan that executed one waits this scan out.
-        let pending = seq != before.acks[0].seq && !self.executed_last;
+        let pending = seq != before.acks[0].seq && !self.holds();
         let verdict = pending.then(|| self.verdict(code, args, &data));
         let mem = self.sim.mem.clone();
         let scans = self.scans();
