@@ -36,7 +36,6 @@ const EXCEPTIONS: &[(&str, &str, &str)] = &[];
 const CYCLE_EXCEPTIONS: &[(&str, &str)] = &[
     ("src/k2/agent", "the IL generator and the protocol share the mailbox layout"),
     ("src/script", "the Lua API, device handles, bridge, snapshot and wire modules call each other"),
-    ("src/umpk/sim", "logic, snapshot and program share the engine state"),
 ];
 
 fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {

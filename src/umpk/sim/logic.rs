@@ -278,6 +278,17 @@ impl Scan<'_> {
     }
 }
 
+/// An IL program in a snapshot ([`Runner::save`]; the snapshot file is `super::snapshot`'s).
+#[derive(Clone, Debug, serde::Serialize, serde::Deserialize)]
+pub struct IlState {
+    /// The name it was loaded under (a path), for messages.
+    pub source: String,
+    pub text: String,
+    pub cpu: crate::engine::Cpu,
+    pub last_ns: u64,
+    pub fault: Option<String>,
+}
+
 /// A program the simulator executes, once per 10 ms cycle in Work mode.
 pub trait Runner: Send {
     /// Evaluates the program for one cycle: inputs are in `scan.io`; it sets outputs and
@@ -293,7 +304,7 @@ pub trait Runner: Send {
     fn restart(&mut self) {}
     /// Its state for a snapshot; `None` for a program a snapshot cannot hold (one given as
     /// code, like the built-in reference solutions).
-    fn save(&self) -> Option<super::snapshot::IlState> {
+    fn save(&self) -> Option<IlState> {
         None
     }
 }

@@ -328,8 +328,8 @@ impl Runner for IlRunner {
         }
     }
 
-    fn save(&self) -> Option<super::snapshot::IlState> {
-        Some(super::snapshot::IlState {
+    fn save(&self) -> Option<super::logic::IlState> {
+        Some(super::logic::IlState {
             source: self.source.clone(),
             text: self.text.clone(),
             cpu: self.cpu.clone(),

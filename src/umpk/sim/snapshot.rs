@@ -7,22 +7,11 @@
 //! reference solutions), a programming sequence or a monitor stream half-way, bytes on the
 //! line — rather than leave it out.
 
-use super::logic::{Image, Logic, Runner};
+use super::logic::{IlState, Image, Logic, Runner};
 use super::{Mode, Program, Programming, Umpk, Wave};
 use crate::engine::Cpu;
 use serde::{Deserialize, Serialize};
 use std::time::Duration;
-
-/// An IL program in a snapshot.
-#[derive(Clone, Debug, Serialize, Deserialize)]
-pub struct IlState {
-    /// The name it was loaded under (a path), for messages.
-    pub source: String,
-    pub text: String,
-    pub cpu: Cpu,
-    pub last_ns: u64,
-    pub fault: Option<String>,
-}
 
 /// What the flash holds, as a snapshot keeps it.
 #[derive(Clone, Debug, Serialize, Deserialize)]
