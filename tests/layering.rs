@@ -35,7 +35,6 @@ const EXCEPTIONS: &[(&str, &str, &str)] = &[];
 /// Sibling-file cycles that still stand: `(folder, reason)`.
 const CYCLE_EXCEPTIONS: &[(&str, &str)] = &[
     ("src/k2/agent", "the IL generator and the protocol share the mailbox layout"),
-    ("src/script", "the Lua API, device handles, bridge, snapshot and wire modules call each other"),
 ];
 
 fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {

@@ -33,6 +33,15 @@ pub fn with_shell<R>(lua: &Lua, f: impl FnOnce(&mut Shell) -> crate::core::Resul
     r.map_err(|e| super::error::raise_at(lua, e))
 }
 
+/// The session index of device `name`, with an error a script user understands.
+pub fn index(sh: &Shell, name: &str) -> crate::core::Result<usize> {
+    sh.session.index(name).map_err(|e| {
+        let mut err = Error::state(format!("device `{name}` is not open (closed, or never opened)")).device(name);
+        err.hint = e.hint.clone();
+        err
+    })
+}
+
 /// The interrupt flag (Ctrl-C) of the session.
 pub fn interrupt_flag(lua: &Lua) -> mlua::Result<Arc<AtomicBool>> {
     with_shell(lua, |sh| Ok(sh.session.interrupt.clone()))
@@ -58,7 +67,7 @@ pub fn exec_on(lua: &Lua, device: Option<&str>, line: &str) -> mlua::Result<Mult
     let results = with_shell(lua, |sh| {
         let back = sh.session.current_name().map(str::to_string);
         if let Some(d) = device {
-            super::device::index(sh, d)?;
+            index(sh, d)?;
             sh.session.use_device(d)?;
         }
         let mut r = Vec::new();
@@ -302,8 +311,9 @@ fn table(lua: &Lua, (rows, headers): (Table, Option<Vec<String>>)) -> mlua::Resu
     show(lua, &Outcome::new("table").table(&hs, cells).with("headers", &headers).with("rows", json))
 }
 
-/// Registers the `plcsh` table (device functions are added by `device::register`).
-pub fn register(lua: &Lua) -> mlua::Result<()> {
+/// The `plcsh` table with the functions of this file (`script::Engine` adds wiring and
+/// snapshots and sets it as a global; device functions are added by `device::register`).
+pub fn plcsh_table(lua: &Lua) -> mlua::Result<Table> {
     let p = lua.create_table()?;
     p.set("exec", lua.create_function(|lua, line: String| exec_on(lua, None, &line))?)?;
     p.set("sleep", lua.create_function(|lua, ms: f64| sleep(lua, millis(ms, "sleep")?))?)?;
@@ -346,8 +356,5 @@ pub fn register(lua: &Lua) -> mlua::Result<()> {
         })?,
     )?;
     p.set("json", json)?;
-    super::wire::register(lua, &p)?;
-    super::snapshot::register(lua, &p)?;
-    lua.globals().set("plcsh", p)?;
-    Ok(())
+    Ok(p)
 }

@@ -360,7 +360,7 @@ pub fn call(lua: &Lua, name: &str, b: &Bridge, args: &[Value]) -> mlua::Result<m
     let line = render(b, args).map_err(super::error::raise)?;
     if !b.family.is_empty() {
         let family = api::with_shell(lua, |sh| {
-            let i = super::device::index(sh, name)?;
+            let i = api::index(sh, name)?;
             Ok(sh.session.entries()[i].device.info().family)
         })?;
         if !b.applies_to(family) {

@@ -8,7 +8,7 @@
 //! dropped when the name comes to mean another device), and values go straight to
 //! `Session::write_values`/`read_values`, never through command text.
 
-use super::api::{self, with_shell};
+use super::api::{self, index, with_shell};
 use super::bridge::{self, BRIDGE};
 use super::error::raise;
 use crate::core::{DataType, Error, Operand, Result, Value as V};
@@ -22,15 +22,6 @@ pub struct Handle {
     /// What the name meant when the cache was filled (url, model).
     ident: (String, String),
     cache: HashMap<Box<[u8]>, Operand>,
-}
-
-/// The session index of device `name`, with an error a script user understands.
-pub fn index(sh: &Shell, name: &str) -> Result<usize> {
-    sh.session.index(name).map_err(|e| {
-        let mut err = Error::state(format!("device `{name}` is not open (closed, or never opened)")).device(name);
-        err.hint = e.hint.clone();
-        err
-    })
 }
 
 impl Handle {

@@ -51,7 +51,16 @@ pub fn file_chunk(code: &[u8]) -> &[u8] {
 pub const HOOK_EVERY: u32 = 1000;
 
 /// The Lua modules, registered in this order (the design's "one explicit list").
-const MODULES: &[fn(&Lua) -> mlua::Result<()>] = &[api::register, device::register, paths::register, fleet::register];
+const MODULES: &[fn(&Lua) -> mlua::Result<()>] = &[plcsh, device::register, paths::register, fleet::register];
+
+/// The `plcsh` table: the API's own functions ([`api::plcsh_table`]), then wiring and
+/// snapshots, set as a global.
+fn plcsh(lua: &Lua) -> mlua::Result<()> {
+    let p = api::plcsh_table(lua)?;
+    wire::register(lua, &p)?;
+    snapshot::register(lua, &p)?;
+    lua.globals().set("plcsh", p)
+}
 
 /// A Lua state wired to plcsh.
 pub struct Engine {
