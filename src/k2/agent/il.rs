@@ -10,10 +10,7 @@ use super::protocol::{self as p, Command};
 use crate::k2::sm_map::{HSC_MODES, PTO_REGS};
 use std::fmt::Write;
 
-/// Scratch words the program uses, right after the client-visible block.
-pub const OFF_SCRATCH: u32 = p::SIZE;
-/// Bytes the program needs in all (mailbox + scratch).
-pub const TOTAL_SIZE: u32 = p::SIZE + 16;
+pub use super::protocol::{OFF_SCRATCH, TOTAL_SIZE};
 
 /// The commands (first, last code) whose instruction must see its enable low between two
 /// runs: PLS and PSTOP act on a rising edge (K2 manual §3.4.2; PSTOP's EXEC), and HDEF, HSC

@@ -59,6 +59,10 @@ pub const OFF_REQ_DATA: u32 = 108;
 pub const STATUS_WORDS: u16 = (OFF_REQUEST / 2) as u16;
 /// Words a client writes for one request (header and full data block).
 pub const REQUEST_WORDS: u16 = ((SIZE - OFF_REQUEST) / 2) as u16;
+/// Scratch words the helper program (`super::il`) uses, right after the client-visible block.
+pub const OFF_SCRATCH: u32 = SIZE;
+/// Bytes the helper program needs in all (mailbox + scratch).
+pub const TOTAL_SIZE: u32 = SIZE + 16;
 
 /// Parses a mailbox base (`VB3400`, `3400`): even, with the mailbox and the helper's
 /// scratch words below the E2PROM backup area (§2.2.8), so the helper never wears it.
@@ -69,7 +73,7 @@ pub fn parse_base(text: &str) -> Result<u32, String> {
         .trim_start_matches("VB")
         .parse()
         .map_err(|_| format!("`{text}` is not a V byte address (e.g. VB{DEFAULT_BASE})"))?;
-    let total = super::il::TOTAL_SIZE;
+    let total = TOTAL_SIZE;
     // `n + total` in u64: a base near u32::MAX must be refused, not wrap past the check.
     if !n.is_multiple_of(2) || n as u64 + total as u64 > crate::k2::catalog::EEPROM_FIRST as u64 {
         return Err(format!(
