@@ -200,7 +200,7 @@ fn lua_reaches_the_helper_on_a_wire_plc() {
         &script,
         r#"
 local plc = plcsh.device("plc")
-assert(plc:agent_status().message:find("helper protocol 1"))
+assert(plc:agent_status().message:find("helper protocol 2"))
 plc:set({"SMB67", 0x85}, {"SMW68", 500}, {"SMD72", 200})
 plc:pls(0)
 plcsh.wait_until(function() return plc["SM66.7"] end, {timeout = 5000, every = 10})

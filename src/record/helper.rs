@@ -3,7 +3,7 @@
 //! replay runs that helper (`lib/k2_agent.il`) in the simulated K2 too.
 //!
 //! - Which recordings: a recorded read whose reply starts with the helper's signature
-//!   (`16#4B41`, "KA") and protocol version 1 is a read of the helper's status block; its
+//!   (`16#4B41`, "KA") and protocol version 1 or 2 is a read of the helper's status block; its
 //!   first register is the mailbox base. `replay --agent VBn` names the base when the
 //!   recording holds no such read (a capture started mid-session).
 //! - The scans: the helper acts once per PLC scan, and its heartbeat word (+4) counts the
@@ -24,8 +24,10 @@ use super::decode::{self, Asked};
 use crate::k2::modbus_map::{self, Table};
 use crate::k2::space::K2Space;
 
-/// The helper's signature and protocol version, the first two words of its status block.
-const SIGNATURE: [u16; 2] = [0x4B41, 1];
+/// The helper's signature, the first word of its status block; the second is its protocol
+/// version (1 in recordings made before version 2, whose sessions replay the same way).
+const SIGNATURE: u16 = 0x4B41;
+const VERSIONS: [u16; 2] = [1, crate::k2::agent::protocol::VERSION];
 /// The heartbeat's word offset in the status block (byte +4).
 const HEARTBEAT_WORD: u16 = 2;
 
@@ -74,7 +76,7 @@ impl Helper {
             None => pairs.iter().find_map(|(q, r)| {
                 let (fc, addr) = (*q.first()?, u16::from_be_bytes([*q.get(1)?, *q.get(2)?]));
                 let w = words(r.as_deref()?);
-                (fc == 3 && w.len() > usize::from(HEARTBEAT_WORD) && w[..2] == SIGNATURE)
+                (fc == 3 && w.len() > usize::from(HEARTBEAT_WORD) && w[0] == SIGNATURE && VERSIONS.contains(&w[1]))
                     .then(|| vbyte_of(space, addr).map(|vb| make(vb, addr)))
                     .flatten()
             }),

@@ -89,6 +89,14 @@ impl AgentClient {
                 self.base
             )));
         }
+        if s.version == 1 {
+            return Err(Error::new(
+                ErrorKind::Unsupported,
+                "the helper in the PLC is version 1, which runs a repeated PLS or PSTOP on a channel only the first time"
+                    .to_string(),
+            )
+            .hint("download the current helper (version 2) into the PLC: `plcsh agent il` prints it (lib/k2_agent.il)"));
+        }
         if s.version != p::VERSION {
             return Err(Error::new(
                 ErrorKind::Unsupported,
@@ -268,6 +276,20 @@ mod tests {
         assert_eq!(e.kind, ErrorKind::Unsupported);
         assert!(e.hint.clone().unwrap().contains("plcsh agent il"), "{e}");
         assert_eq!(r.writes, 0, "nothing was written to a mailbox nobody reads");
+    }
+
+    #[test]
+    fn a_version_1_helper_is_refused_by_what_it_gets_wrong() {
+        // A PLC still running the version-1 helper: signature and version words, no program.
+        let mut r = regs(false);
+        r.write_v(p::DEFAULT_BASE, &[p::SIGNATURE, 1, 0]).unwrap();
+        let clock = r.clock.clone();
+        let mut c = AgentClient::new(p::DEFAULT_BASE);
+        let e = c.run(&mut r, &Command::Pls(0), &mut |_| clock.step(SCAN_TIME)).unwrap_err();
+        assert_eq!(e.kind, ErrorKind::Unsupported);
+        assert!(e.message.contains("version 1") && e.message.contains("only the first time"), "{e}");
+        assert!(e.hint.clone().unwrap().contains("plcsh agent il"), "{e}");
+        assert_eq!(r.writes, 1, "only the test's own write: no request reached the old helper");
     }
 
     #[test]

@@ -41,7 +41,10 @@ pub const DEFAULT_BASE: u32 = 3400;
 /// Bytes the mailbox occupies (VB3400…VB3571 by default).
 pub const SIZE: u32 = 172;
 pub const SIGNATURE: u16 = 0x4B41;
-pub const VERSION: u16 = 1;
+/// Version 2: every command acts every time it is asked (docs/agent.md, "Every command acts
+/// every time"). A version-1 helper ran a repeated PLS or PSTOP only the first time, so plcsh
+/// refuses it with a message saying so rather than report a second pulse train it never ran.
+pub const VERSION: u16 = 2;
 /// Largest data block of one command (SM bytes read or written at once).
 pub const DATA_MAX: usize = 64;
 /// Number of acknowledgements kept.
