@@ -36,16 +36,9 @@ const EXCEPTIONS: &[(&str, &str, &str)] = &[];
 /// fails the test, as a stale entry of [`EXCEPTIONS`] does.
 const CYCLE_EXCEPTIONS: &[(&str, &str)] = &[];
 
-fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
-    for e in std::fs::read_dir(dir).unwrap() {
-        let p = e.unwrap().path();
-        if p.is_dir() {
-            rust_files(&p, out);
-        } else if p.extension().is_some_and(|x| x == "rs") {
-            out.push(p);
-        }
-    }
-}
+#[path = "support/source_tree.rs"]
+mod source_tree;
+use source_tree::rust_files;
 
 fn layer_of(module: &str) -> Option<usize> {
     LAYERS.iter().position(|(_, mods)| mods.contains(&module))

@@ -4,7 +4,7 @@
 //! the same source builds for every system, so nothing a user does can work on one and
 //! silently not exist on the other. This test reads the tree and names any line that breaks it.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 /// Where platform code may live.
 const ALLOWED: &[&str] =
@@ -31,16 +31,9 @@ const PLATFORM: &[&str] = &[
     "COMPort",
 ];
 
-fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
-    for e in std::fs::read_dir(dir).unwrap() {
-        let p = e.unwrap().path();
-        if p.is_dir() {
-            rust_files(&p, out);
-        } else if p.extension().is_some_and(|x| x == "rs") {
-            out.push(p);
-        }
-    }
-}
+#[path = "support/source_tree.rs"]
+mod source_tree;
+use source_tree::rust_files;
 
 #[test]
 fn platform_code_lives_in_the_transport_and_platform_modules_only() {
