@@ -50,6 +50,14 @@ struct NotConnected {
     reason: Error,
 }
 
+/// How `devices` and the prompt tell a device that is not connected yet: the end of its link.
+pub const NOT_CONNECTED: &str = " (not connected)";
+
+/// Is this device one that has not connected yet?
+pub fn is_not_connected(info: &DeviceInfo) -> bool {
+    info.link.ends_with(NOT_CONNECTED)
+}
+
 impl Pending {
     /// `device`, with `key=value` set on first use (e.g. the simulator's `state` file).
     pub fn option_on_first_use(device: Box<dyn Device>, key: &str, value: &str) -> Pending {
@@ -63,7 +71,7 @@ impl Pending {
             .ok()
             .and_then(|u| u.param("model").map(str::to_string))
             .unwrap_or_else(|| "not connected".to_string());
-        let info = DeviceInfo { family, model, link: format!("{url} (not connected)"), simulated: false };
+        let info = DeviceInfo { family, model, link: format!("{url}{NOT_CONNECTED}"), simulated: false };
         let space = NotConnected { family, reason: error };
         Pending { state: State::Unopened(Unopened { open, info, space }) }
     }
@@ -268,6 +276,7 @@ mod tests {
         let mut d = Pending::unopened(url, Box::new(move || crate::session::open_url(url, &c)), e);
         assert_eq!(d.info().family, "k2");
         assert_eq!(d.info().model, "K205-16DT");
+        assert!(is_not_connected(d.info()));
         let e = d.operands().parse("VW0").unwrap_err();
         assert_eq!(e.kind, ErrorKind::Link);
         assert!(d.ready().is_err());
@@ -280,6 +289,7 @@ mod tests {
         let mut d = Pending::unopened(&url, Box::new(move || crate::session::open_url(&u, &c)), e);
         d.ready().expect("the listener accepts the connection");
         assert!(d.is_ready());
+        assert!(!is_not_connected(d.info()), "{}", d.info().link);
         assert!(d.operands().parse("VW0").is_ok());
     }
 }

@@ -252,6 +252,16 @@ fn a_shell_opened_before_the_cabinet_is_powered_connects_at_a_later_command() {
 }
 
 #[test]
+fn a_device_not_there_yet_shows_in_the_prompt_and_in_devices() {
+    let mut s = plcsh::session::Session::new(plcsh::core::Clock::stepped());
+    let e = s.open_or_later("plc", "rtu:./no-such-port?baud=19200&model=K205-16DT").unwrap();
+    assert!(e.is_some(), "the port is missing: opened later");
+    assert_eq!(plcsh::shell::repl::prompt(&s), "plc(not connected)> ");
+    let o = run(&["--json", "-d", "rtu:./no-such-port?baud=19200"], "devices\n");
+    assert!(stdout(&o).contains("not connected"), "{}", stdout(&o));
+}
+
+#[test]
 fn a_one_shot_still_fails_with_the_link_error() {
     let o = run(&["--json", "-d", "rtu:./no-such-port?baud=19200", "-c", "get VW0"], "");
     assert_eq!(o.status.code(), Some(1), "{}", both(&o));

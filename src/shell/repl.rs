@@ -193,6 +193,9 @@ pub fn prompt(s: &Session) -> String {
             if e.device.info().simulated {
                 marks.push("sim");
             }
+            if crate::pending::is_not_connected(e.device.info()) {
+                marks.push("not connected");
+            }
             e.name.clone()
         }
         Err(_) => "plcsh".to_string(),
