@@ -407,3 +407,27 @@ fn a_missing_module_names_every_place_searched() {
     assert!(e.contains("no module 'no_such_module' built into plcsh"), "{e}");
     assert!(e.contains(&format!("no file '{}'", p.parent().unwrap().join("no_such_module.lua").display())), "{e}");
 }
+
+/// `plcsh.quote` makes any path one word of a shell line: a snapshot saved under a name with a
+/// space, a quote and a Cyrillic letter restores through `plcsh.exec`.
+#[test]
+fn quote_makes_any_path_one_word_for_exec() {
+    let dir = std::env::temp_dir().join(format!("plcsh-lua-quote-{}", std::process::id()));
+    let odd = dir.join("снимок it's \"one\"; #1");
+    std::fs::create_dir_all(&odd).unwrap();
+    let p = script(
+        "quote.lua",
+        r#"
+local dir = arg[1]
+local file = dir .. "/s.json"
+plcsh.exec("set VW0=42; sim snapshot save " .. plcsh.quote(file))
+plcsh.exec("set VW0=1; sim snapshot restore " .. plcsh.quote(file))
+plcsh.assert_eq(plcsh.device("plc").VW0, 42, "restored from " .. file)
+print("ok")
+"#,
+    );
+    let o = run(&["--time", "stepped", "run", p.to_str().unwrap(), odd.to_str().unwrap()], "");
+    assert!(o.status.success(), "{}", both(&o));
+    assert!(stdout(&o).contains("ok"));
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -316,6 +316,8 @@ fn table(lua: &Lua, (rows, headers): (Table, Option<Vec<String>>)) -> mlua::Resu
 pub fn plcsh_table(lua: &Lua) -> mlua::Result<Table> {
     let p = lua.create_table()?;
     p.set("exec", lua.create_function(|lua, line: String| exec_on(lua, None, &line))?)?;
+    // One word of a shell line for any text (a path with spaces or quotes), read back unchanged.
+    p.set("quote", lua.create_function(|_, text: String| Ok(crate::shell::lex::quote(&text).into_owned()))?)?;
     p.set("sleep", lua.create_function(|lua, ms: f64| sleep(lua, millis(ms, "sleep")?))?)?;
     p.set("now", lua.create_function(|lua, ()| Ok(now(lua)?.as_secs_f64() * 1000.0))?)?;
     p.set("stepped", lua.create_function(|lua, ()| with_shell(lua, |sh| Ok(sh.session.clock.is_stepped())))?)?;
