@@ -4,8 +4,12 @@
 //! (or `paths` in the shell) prints this table with the file in effect for this run.
 //!
 //! The user's directories come from `directories` (`~/.config/plcsh` and
-//! `~/.local/share/plcsh` on Linux, `%APPDATA%\plcsh\…` on Windows, `~/Library/Application
-//! Support/plcsh` on macOS); environment variables and flags override single files.
+//! `~/.local/share/plcsh` on Linux, `~/Library/Application Support/plcsh` on macOS);
+//! environment variables and flags override single files. On Windows the split is the usual
+//! one: the configuration (profiles, the user's Lua modules) roams with the user in
+//! `%APPDATA%\plcsh\config`, while what belongs to this PC — the simulator's state, history,
+//! snapshots, UMPK flash images — stays in `%LOCALAPPDATA%\plcsh\data`, so a lab PC with
+//! roaming profiles does not carry them to every log-on.
 
 use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
@@ -63,23 +67,23 @@ pub fn project_lib() -> Option<PathBuf> {
 
 /// The simulated K2's state file (backup area, retained ranges, clock) by default.
 pub fn k2_state() -> Option<PathBuf> {
-    dirs().map(|d| d.data_dir().join("state.json"))
+    dirs().map(|d| d.data_local_dir().join("state.json"))
 }
 
 /// The REPL history.
 pub fn history() -> Option<PathBuf> {
-    dirs().map(|d| d.data_dir().join("history.txt"))
+    dirs().map(|d| d.data_local_dir().join("history.txt"))
 }
 
 /// The directory named snapshots live in: `PLCSH_SNAPSHOTS`, else the data directory's.
 pub fn snapshots() -> Option<PathBuf> {
-    env_path("PLCSH_SNAPSHOTS").or_else(|| dirs().map(|d| d.data_dir().join("snapshots")))
+    env_path("PLCSH_SNAPSHOTS").or_else(|| dirs().map(|d| d.data_local_dir().join("snapshots")))
 }
 
 /// The directory a served UMPK keeps its flash in (one file per model and link) unless
 /// `--umpk-state FILE` names one.
 pub fn umpk_flash() -> Option<PathBuf> {
-    dirs().map(|d| d.data_dir().join("umpk"))
+    dirs().map(|d| d.data_local_dir().join("umpk"))
 }
 
 /// The files in effect for this run, as the command line set them (`--config`, `--state`):

@@ -189,9 +189,11 @@ fn paths_prints_where_every_file_lives() {
         assert_eq!(p["umpk_flash"], data.join("umpk").display().to_string());
         assert_eq!(p["user_lib"], home.join("config/plcsh/lib").display().to_string());
     } else {
-        for k in ["history", "snapshots", "umpk_flash", "user_lib"] {
-            assert!(p[k].as_str().is_some_and(|s| s.contains("plcsh")), "{k}: {p}");
+        // Configuration roams with the user; state, history, snapshots and flash stay on the PC.
+        for k in ["history", "snapshots", "umpk_flash"] {
+            assert!(p[k].as_str().is_some_and(|s| s.contains(r"\AppData\Local\plcsh\data")), "{k}: {p}");
         }
+        assert!(p["user_lib"].as_str().is_some_and(|s| s.contains(r"\AppData\Roaming\plcsh\config")), "{p}");
     }
     assert!(p["lib"].as_str().unwrap().ends_with("built in"), "{p}");
     assert!(p["recordings"].as_str().unwrap().starts_with("none"), "{p}");
