@@ -58,7 +58,8 @@ impl LocalListener {
     /// Listens at `path` (an old socket there is replaced).
     pub fn bind(path: &Path) -> io::Result<LocalListener> {
         let _ = std::fs::remove_file(path);
-        let l = std::os::unix::net::UnixListener::bind(path)?;
+        let (short, _dir) = socket_path(path)?;
+        let l = std::os::unix::net::UnixListener::bind(short)?;
         l.set_nonblocking(true)?;
         Ok(LocalListener(l))
     }
@@ -72,5 +73,58 @@ impl LocalListener {
 
 /// Connects to the control channel at `path`.
 pub fn local_connect(path: &Path) -> io::Result<LocalStream> {
-    std::os::unix::net::UnixStream::connect(path)
+    let (short, _dir) = socket_path(path)?;
+    std::os::unix::net::UnixStream::connect(short)
+}
+
+/// The path to give a Unix socket call for `path`. A socket's path is limited to about 100
+/// bytes (`SUN_LEN`), which a control channel beside a pty in a deep folder — a Cyrillic name
+/// takes two bytes a letter — passes quickly. On Linux a longer path is reached through its
+/// folder's descriptor (`/proc/self/fd/N/NAME`, the same file), which is short; the folder
+/// stays open (the second value) until the call is made. Elsewhere the path is used as it is.
+fn socket_path(path: &Path) -> io::Result<(std::path::PathBuf, Option<std::fs::File>)> {
+    const ROOM: usize = 100;
+    if path.as_os_str().len() < ROOM {
+        return Ok((path.to_path_buf(), None));
+    }
+    #[cfg(target_os = "linux")]
+    if let (Some(dir), Some(name)) = (path.parent(), path.file_name()) {
+        use std::os::fd::AsRawFd;
+        let dir = if dir.as_os_str().is_empty() { Path::new(".") } else { dir };
+        let folder = std::fs::File::open(dir)?;
+        let short = std::path::PathBuf::from(format!("/proc/self/fd/{}", folder.as_raw_fd())).join(name);
+        if short.as_os_str().len() < ROOM {
+            return Ok((short, Some(folder)));
+        }
+    }
+    Ok((path.to_path_buf(), None))
+}
+
+#[cfg(test)]
+mod socket_path_tests {
+    use super::*;
+
+    #[test]
+    fn a_control_socket_in_a_deep_folder_with_a_cyrillic_name_listens_and_connects() {
+        let mut dir = std::env::temp_dir().join(format!("plcsh-sock-{}", std::process::id()));
+        for _ in 0..4 {
+            dir = dir.join("Проверка лабораторной работы");
+        }
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("пресс rtu.ctl");
+        assert!(path.as_os_str().len() > 200, "past SUN_LEN: {}", path.as_os_str().len());
+        let l = LocalListener::bind(&path);
+        if cfg!(target_os = "linux") {
+            let l = l.expect("bound through the folder's descriptor");
+            assert!(path.exists(), "the socket is at the long path itself");
+            let _c = local_connect(&path).expect("connects through the folder's descriptor");
+            let mut tries = 0;
+            while l.accept().is_err() {
+                tries += 1;
+                assert!(tries < 1000, "the connection never arrived");
+                std::thread::yield_now();
+            }
+        }
+        let _ = std::fs::remove_dir_all(std::env::temp_dir().join(format!("plcsh-sock-{}", std::process::id())));
+    }
 }
