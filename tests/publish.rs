@@ -42,6 +42,17 @@ fn dir(name: &str) -> PathBuf {
     d
 }
 
+/// The broker's `user` line: run as root, mosquitto drops to the `mosquitto` user, which cannot
+/// read files in a private temporary folder (a TMPDIR of mode 0700, as CI's own); it keeps
+/// the test's user instead. Run as anyone else, mosquitto stays that user anyway.
+fn broker_user() -> &'static str {
+    if unsafe { libc::geteuid() } == 0 {
+        "user root\n"
+    } else {
+        ""
+    }
+}
+
 /// A mosquitto on `port` with its database in `dir` (sessions and queued messages survive a
 /// restart), ready once it accepts a connection.
 struct Broker {
@@ -54,7 +65,8 @@ impl Broker {
         std::fs::write(
             &conf,
             format!(
-                "listener {port} 127.0.0.1\nallow_anonymous true\npersistence true\npersistence_location {}/\nautosave_interval 0\n",
+                "{}listener {port} 127.0.0.1\nallow_anonymous true\npersistence true\npersistence_location {}/\nautosave_interval 0\n",
+                broker_user(),
                 dir.display()
             ),
         )
@@ -454,7 +466,11 @@ fn the_username_comes_from_the_profile_file_and_the_password_from_the_environmen
     let conf = d.join("mosquitto.conf");
     std::fs::write(
         &conf,
-        format!("listener {port} 127.0.0.1\nallow_anonymous false\npassword_file {}\n", passwords.display()),
+        format!(
+            "{}listener {port} 127.0.0.1\nallow_anonymous false\npassword_file {}\n",
+            broker_user(),
+            passwords.display()
+        ),
     )
     .unwrap();
     let mut broker =
@@ -569,8 +585,9 @@ fn tls_with_the_ca_from_the_profile_file() {
     std::fs::write(
         &conf,
         format!(
-            "listener {port} 127.0.0.1\nallow_anonymous true\ncertfile {0}/server.pem\nkeyfile {0}/server.key\ncafile {0}/ca.pem\n",
-            d.display()
+            "{1}listener {port} 127.0.0.1\nallow_anonymous true\ncertfile {0}/server.pem\nkeyfile {0}/server.key\ncafile {0}/ca.pem\n",
+            d.display(),
+            broker_user()
         ),
     )
     .unwrap();

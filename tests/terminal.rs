@@ -79,6 +79,16 @@ impl Tmux {
         String::from_utf8_lossy(&o.stdout).into_owned()
     }
 
+    /// The screen with lines the pane wrapped joined again (`capture-pane -J`).
+    fn joined_screen(&self) -> String {
+        let o = Command::new("tmux")
+            .args(["-u", "-L", &self.socket, "capture-pane", "-p", "-J", "-t", "t"])
+            .env("LANG", "C.UTF-8")
+            .output()
+            .expect("capture-pane");
+        String::from_utf8_lossy(&o.stdout).into_owned()
+    }
+
     /// Waits for the screen to satisfy `ok` (a readiness condition, not a timing assertion:
     /// the deadline only turns a hang into a failure with the screen shown).
     fn wait_for(&self, what: &str, ok: impl Fn(&str) -> bool) -> String {
@@ -291,7 +301,9 @@ fn a_second_shell_on_the_same_state_file_opens_with_a_warning() {
     first.literal("set VW3700=42");
     first.keys(&["Enter"]);
     let Some(second) = Tmux::start(&home) else { return };
-    let s = second.wait_for("the second prompt", |s| s.contains("plc(sim)>"));
+    second.wait_for("the second prompt", |s| s.contains("plc(sim)>"));
+    // The warning as one line, however the pane wrapped it.
+    let s = second.joined_screen();
     assert!(s.contains("is in use by process") && s.contains("keeps nothing"), "{s}");
     second.literal("set VW3700=7; get VW3700");
     second.keys(&["Enter"]);
