@@ -175,12 +175,14 @@ mod tests {
 
     #[test]
     fn writes_stay_under_the_directory() {
-        let dir = std::env::temp_dir();
+        let dir = std::env::temp_dir().join(format!("plcsh-confine-writes-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
         assert!(check_write(&None, "/etc/x").is_ok());
         assert!(check_write(&Some(None), "x.csv").is_err());
         let rule = Some(Some(dir.clone()));
         assert!(check_write(&rule, dir.join("a.csv").to_str().unwrap()).is_ok());
         assert!(check_write(&rule, dir.join("../a.csv").to_str().unwrap()).is_err());
         assert!(check_write(&rule, "/etc/passwd").is_err());
+        let _ = std::fs::remove_dir_all(&dir);
     }
 }
