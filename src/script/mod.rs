@@ -70,6 +70,8 @@ pub struct Engine {
 impl Engine {
     /// A Lua state whose `print` writes to `out`, interrupted by `interrupt`.
     pub fn new(interrupt: Arc<AtomicBool>, out: Box<dyn Write + Send>) -> mlua::Result<Engine> {
+        // Lua opens files through the platform's UTF-8 name shims where it needs them (Windows).
+        std::hint::black_box(crate::core::platform::keep_c_shims());
         let lua = Lua::new();
         for register in MODULES {
             register(&lua)?;

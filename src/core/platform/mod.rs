@@ -16,8 +16,8 @@ pub mod windows;
 use windows as sys;
 
 pub use sys::{
-    discard_typed_ahead, durable_rename, install_stop_handlers, interrupt_child, name_file, stop_signal, terminal_size,
-    terminate_child, thread_cpu_time, unnamed_file, utc_offset,
+    discard_typed_ahead, durable_rename, install_stop_handlers, interrupt_child, keep_c_shims, name_file, stop_signal,
+    terminal_size, terminate_child, thread_cpu_time, unnamed_file, utc_offset,
 };
 
 /// The stop signals' numbers as exit statuses use them (128 + number), on every system:

@@ -233,3 +233,68 @@ mod tests {
         assert!(off.abs() <= 14 * 3600 && off % 60 == 0, "{off}");
     }
 }
+
+/// Lua's own file functions (`io.open`, `io.lines`, `dofile`, `loadfile`, `os.remove`,
+/// `os.rename`) call the C library with UTF-8 names, which the Windows C library reads in the
+/// ANSI code page: a script in `C:\Users\Иванов\…` could not open its own files. The Windows
+/// build compiles Lua with these calls renamed (`.cargo/config.toml`, `CFLAGS_…windows…`), and
+/// these functions take the UTF-8 name, make it UTF-16 and call the C library's wide forms.
+mod utf8_stdio {
+    use std::ffi::{c_char, c_int, c_void, CStr};
+
+    extern "C" {
+        fn _wfopen(name: *const u16, mode: *const u16) -> *mut c_void;
+        fn _wfreopen(name: *const u16, mode: *const u16, f: *mut c_void) -> *mut c_void;
+        fn _wremove(name: *const u16) -> c_int;
+        fn _wrename(from: *const u16, to: *const u16) -> c_int;
+    }
+
+    /// A NUL-terminated UTF-16 copy of a UTF-8 C string (invalid UTF-8 replaced, as it could
+    /// name no file anyway).
+    unsafe fn wide(s: *const c_char) -> Vec<u16> {
+        let text = unsafe { CStr::from_ptr(s) }.to_string_lossy();
+        text.encode_utf16().chain(std::iter::once(0)).collect()
+    }
+
+    #[no_mangle]
+    pub unsafe extern "C" fn plcsh_fopen(name: *const c_char, mode: *const c_char) -> *mut c_void {
+        let (n, m) = unsafe { (wide(name), wide(mode)) };
+        unsafe { _wfopen(n.as_ptr(), m.as_ptr()) }
+    }
+
+    #[no_mangle]
+    pub unsafe extern "C" fn plcsh_freopen(name: *const c_char, mode: *const c_char, f: *mut c_void) -> *mut c_void {
+        if name.is_null() {
+            return unsafe { _wfreopen(std::ptr::null(), wide(mode).as_ptr(), f) };
+        }
+        let (n, m) = unsafe { (wide(name), wide(mode)) };
+        unsafe { _wfreopen(n.as_ptr(), m.as_ptr(), f) }
+    }
+
+    #[no_mangle]
+    pub unsafe extern "C" fn plcsh_remove(name: *const c_char) -> c_int {
+        let n = unsafe { wide(name) };
+        unsafe { _wremove(n.as_ptr()) }
+    }
+
+    #[no_mangle]
+    pub unsafe extern "C" fn plcsh_rename(from: *const c_char, to: *const c_char) -> c_int {
+        let (a, b) = unsafe { (wide(from), wide(to)) };
+        unsafe { _wrename(a.as_ptr(), b.as_ptr()) }
+    }
+
+    /// The functions' addresses, taken so the linker keeps them for Lua in every binary.
+    pub fn keep() -> [usize; 4] {
+        [
+            plcsh_fopen as *const () as usize,
+            plcsh_freopen as *const () as usize,
+            plcsh_remove as *const () as usize,
+            plcsh_rename as *const () as usize,
+        ]
+    }
+}
+
+/// Keeps the UTF-8 C-library functions Lua is compiled against in the binary.
+pub fn keep_c_shims() -> usize {
+    std::hint::black_box(utf8_stdio::keep()).iter().sum()
+}
