@@ -121,13 +121,7 @@ impl Pending {
 
 /// The family a URL's scheme names, for `devices` before the device answers.
 fn family_of(url: &str) -> &'static str {
-    match url.split([':', '+']).next().unwrap_or("") {
-        "tcp" | "rtu" | "sim" => "k2",
-        "kinco" | "sim-servo" => "servo",
-        "fx" | "fxlink" | "sim-fx" => "fx",
-        "umpk" | "sim-umpk" => "umpk",
-        _ => "unknown",
-    }
+    crate::session::url_family(url).map_or("unknown", |(family, _)| family)
 }
 
 /// A link error said again for a device that stays in the session, not connected.

@@ -67,20 +67,21 @@ pub struct Session {
     pub budget: Option<Arc<crate::core::budget::Budget>>,
 }
 
-/// URL schemes with what they open, for completion and hints. Keep in step with [`open_url`]
-/// (a test checks that every scheme listed here is one `open_url` knows).
-pub static SCHEMES: &[(&str, &str)] = &[
-    ("sim:", "in-process K2 simulator: sim:MODEL"),
-    ("kinco:", "Kinco servo drive on a serial port: kinco:/dev/ttyUSB0?id=1&baud=38400"),
-    ("sim-servo:", "in-process Kinco servo simulator: sim-servo:?id=1"),
-    ("umpk:", "UMPK8/UMPK16 teaching PLC on a serial port: umpk:/dev/ttyUSB0?baud=57600"),
-    ("sim-umpk:", "in-process UMPK simulator: sim-umpk:UMPK16"),
-    ("tcp://", "K2 over Modbus TCP: tcp://HOST:502?unit=1&model=K204ET-16DT"),
-    ("rtu:", "K2 over Modbus RTU: rtu:/dev/ttyUSB0?baud=115200&unit=1&model=K205-16DT"),
-    ("rtu+tcp://", "K2 through an RTU-over-TCP gateway: rtu+tcp://HOST:PORT?unit=1"),
-    ("fx:", "FX PLC on its programming port: fx:/dev/ttyUSB0?model=FX2N"),
-    ("fxlink:", "FX PLC over the computer link: fxlink:/dev/ttyUSB0?station=0&pc=FF&wait=0"),
-    ("sim-fx:", "in-process FX simulator: sim-fx:FX2N[?protocol=link]"),
+/// URL schemes with what they open, for completion and hints, and the family and kind
+/// (simulated or not) each names: `(prefix, meaning, family, simulated)`. Keep in step with
+/// [`open_url`] (a test checks that every scheme listed here is one `open_url` knows).
+pub static SCHEMES: &[(&str, &str, &str, bool)] = &[
+    ("sim:", "in-process K2 simulator: sim:MODEL", "k2", true),
+    ("kinco:", "Kinco servo drive on a serial port: kinco:/dev/ttyUSB0?id=1&baud=38400", "servo", false),
+    ("sim-servo:", "in-process Kinco servo simulator: sim-servo:?id=1", "servo", true),
+    ("umpk:", "UMPK8/UMPK16 teaching PLC on a serial port: umpk:/dev/ttyUSB0?baud=57600", "umpk", false),
+    ("sim-umpk:", "in-process UMPK simulator: sim-umpk:UMPK16", "umpk", true),
+    ("tcp://", "K2 over Modbus TCP: tcp://HOST:502?unit=1&model=K204ET-16DT", "k2", false),
+    ("rtu:", "K2 over Modbus RTU: rtu:/dev/ttyUSB0?baud=115200&unit=1&model=K205-16DT", "k2", false),
+    ("rtu+tcp://", "K2 through an RTU-over-TCP gateway: rtu+tcp://HOST:PORT?unit=1", "k2", false),
+    ("fx:", "FX PLC on its programming port: fx:/dev/ttyUSB0?model=FX2N", "fx", false),
+    ("fxlink:", "FX PLC over the computer link: fxlink:/dev/ttyUSB0?station=0&pc=FF&wait=0", "fx", false),
+    ("sim-fx:", "in-process FX simulator: sim-fx:FX2N[?protocol=link]", "fx", true),
 ];
 
 /// The `control=PATH` of a wire URL: a served simulator's control channel. The drive line
@@ -92,6 +93,17 @@ fn control_param(url: &str) -> Option<std::path::PathBuf> {
 
 /// The URL parameters of the in-process K2 simulator (`sim:MODEL`).
 pub const K2_SIM_PARAMS: &[&str] = &["model", "program"];
+
+/// The family a device URL names and whether it is a simulator, by its base scheme
+/// (`rtu+tcp://…` is `rtu`); `None` for an unknown scheme or a bare profile name.
+pub fn url_family(url: &str) -> Option<(&'static str, bool)> {
+    let (scheme, _) = url.split_once(':')?;
+    let base = scheme.split('+').next().unwrap_or(scheme);
+    SCHEMES
+        .iter()
+        .find(|(prefix, ..)| prefix.trim_end_matches("//").trim_end_matches(':') == base)
+        .map(|&(_, _, family, simulated)| (family, simulated))
+}
 
 /// Opens a device from its URL. Every scheme plcsh knows is listed here.
 pub fn open_url(url: &str, clock: &Clock) -> Result<Box<dyn Device>> {
@@ -520,6 +532,21 @@ mod tests {
     use super::*;
     use crate::core::ErrorKind;
 
+    #[test]
+    fn every_listed_scheme_is_one_open_url_knows() {
+        let clock = Clock::stepped();
+        for (prefix, _, family, simulated) in SCHEMES {
+            let url = format!("{prefix}./no-such-port?model=nothing");
+            assert_eq!(url_family(&url), Some((*family, *simulated)), "{url}");
+            if let Err(e) = open_url(&url, &clock) {
+                assert!(!e.message.contains("unknown device scheme"), "{url}: {e}");
+            }
+        }
+        assert_eq!(url_family("rtu+tcp://127.0.0.1:502"), Some(("k2", false)));
+        assert_eq!(url_family("press1"), None, "a profile name");
+        assert!(open_url("nope:x", &clock).is_err_and(|e| e.message.contains("unknown device scheme")));
+    }
+
     fn session() -> Session {
         let mut s = Session::new(Clock::stepped());
         s.open("plc", "sim:K205-16DT").unwrap();
@@ -580,7 +607,7 @@ mod tests {
 
     #[test]
     fn every_listed_scheme_is_known_to_open_url() {
-        for (scheme, _) in SCHEMES {
+        for (scheme, ..) in SCHEMES {
             if let Err(e) = open_url(&format!("{scheme}x"), &Clock::stepped()) {
                 assert!(!e.message.contains("unknown device scheme"), "{scheme}: {}", e.message);
             }

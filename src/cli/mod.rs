@@ -389,12 +389,7 @@ pub fn state_file(cli: &Cli) -> Option<std::path::PathBuf> {
 /// URLs, `servo` for `kinco:`; `None` for simulators and unknown schemes.
 fn real_family(s: &Session, url: &str) -> Option<&'static str> {
     let url = if url.contains(':') { url } else { s.profiles.get(url).map(|p| p.url.as_str())? };
-    let scheme = url.split([':', '+']).next().unwrap_or("");
-    match scheme {
-        "tcp" | "rtu" => Some("k2"),
-        "kinco" => Some("servo"),
-        _ => None,
-    }
+    crate::session::url_family(url).filter(|(_, simulated)| !simulated).map(|(family, _)| family)
 }
 
 /// Entry point; returns the process exit status.

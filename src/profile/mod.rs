@@ -586,7 +586,7 @@ word_order = "low-first"
     /// Every scheme the session opens has its parameter list and an offline twin here.
     #[test]
     fn every_scheme_has_its_parameters_and_a_twin() {
-        for (scheme, _) in crate::session::SCHEMES {
+        for (scheme, ..) in crate::session::SCHEMES {
             let u = DeviceUrl::parse(&format!("{scheme}x")).unwrap();
             assert!(url_params(&u).is_some() && offline_twin(&u).is_some(), "{scheme}");
         }

@@ -301,7 +301,7 @@ fn urls(word: &str, view: &View) -> Vec<Suggestion> {
             return v;
         }
     }
-    for (s, meaning) in crate::session::SCHEMES {
+    for (s, meaning, ..) in crate::session::SCHEMES {
         if starts_with_ci(s, word) {
             v.push(Suggestion { text: s.to_string(), meaning: meaning.to_string() });
         }

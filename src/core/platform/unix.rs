@@ -137,6 +137,11 @@ pub fn interrupt_child(child: &std::process::Child) {
     }
 }
 
+/// Nothing to keep: the C library reads UTF-8 names as they are (Windows needs shims for Lua).
+pub fn keep_c_shims() -> usize {
+    0
+}
+
 #[cfg(test)]
 mod tests {
     /// On Linux the content of a durable write exists without a name until it is named: a
@@ -160,9 +165,4 @@ mod tests {
         assert!(super::name_file(&f, &d.join(".x.tmp")).is_err(), "an existing name is not replaced");
         let _ = std::fs::remove_dir_all(&d);
     }
-}
-
-/// Nothing to keep: the C library reads UTF-8 names as they are (Windows needs shims for Lua).
-pub fn keep_c_shims() -> usize {
-    0
 }

@@ -197,43 +197,6 @@ pub fn interrupt_child(child: &std::process::Child) {
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The console events map onto the Unix signals' statuses: Ctrl-C raises the interrupt
-    /// flag only (the shell tells it apart itself), Ctrl-Break is stored as SIGTERM. (Closing
-    /// the window, SIGHUP, waits for the grace period before returning, so it is not run here.)
-    #[test]
-    fn console_events_raise_the_flag_and_record_the_signal() {
-        static RECEIVED: AtomicI32 = AtomicI32::new(0);
-        let flag = Arc::new(AtomicBool::new(false));
-        install_stop_handlers(&flag, &RECEIVED);
-        // SAFETY: calls the handler as Windows would, on this thread.
-        assert_eq!(unsafe { on_console_event(CTRL_C_EVENT) }, TRUE);
-        assert!(flag.load(Ordering::SeqCst));
-        assert_eq!(RECEIVED.load(Ordering::SeqCst), code::INT);
-        // A second event while the first is pending changes nothing.
-        flag.store(false, Ordering::SeqCst);
-        assert_eq!(unsafe { on_console_event(CTRL_BREAK_EVENT) }, TRUE);
-        assert!(!flag.load(Ordering::SeqCst));
-        assert_eq!(RECEIVED.load(Ordering::SeqCst), code::INT);
-        // Once handled, the next one counts.
-        RECEIVED.store(0, Ordering::SeqCst);
-        assert_eq!(unsafe { on_console_event(CTRL_BREAK_EVENT) }, TRUE);
-        assert!(flag.load(Ordering::SeqCst));
-        assert_eq!(RECEIVED.load(Ordering::SeqCst), code::TERM);
-        // An event that is not a stop is left to the next handler.
-        assert_eq!(unsafe { on_console_event(99) }, FALSE);
-    }
-
-    #[test]
-    fn the_time_zone_offset_is_whole_minutes_within_a_day() {
-        let off = utc_offset(1_800_000_000);
-        assert!(off.abs() <= 14 * 3600 && off % 60 == 0, "{off}");
-    }
-}
-
 /// Lua's own file functions (`io.open`, `io.lines`, `dofile`, `loadfile`, `os.remove`,
 /// `os.rename`) call the C library with UTF-8 names, which the Windows C library reads in the
 /// ANSI code page: a script in `C:\Users\Иванов\…` could not open its own files. The Windows
@@ -297,4 +260,41 @@ mod utf8_stdio {
 /// Keeps the UTF-8 C-library functions Lua is compiled against in the binary.
 pub fn keep_c_shims() -> usize {
     std::hint::black_box(utf8_stdio::keep()).iter().sum()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The console events map onto the Unix signals' statuses: Ctrl-C raises the interrupt
+    /// flag only (the shell tells it apart itself), Ctrl-Break is stored as SIGTERM. (Closing
+    /// the window, SIGHUP, waits for the grace period before returning, so it is not run here.)
+    #[test]
+    fn console_events_raise_the_flag_and_record_the_signal() {
+        static RECEIVED: AtomicI32 = AtomicI32::new(0);
+        let flag = Arc::new(AtomicBool::new(false));
+        install_stop_handlers(&flag, &RECEIVED);
+        // SAFETY: calls the handler as Windows would, on this thread.
+        assert_eq!(unsafe { on_console_event(CTRL_C_EVENT) }, TRUE);
+        assert!(flag.load(Ordering::SeqCst));
+        assert_eq!(RECEIVED.load(Ordering::SeqCst), code::INT);
+        // A second event while the first is pending changes nothing.
+        flag.store(false, Ordering::SeqCst);
+        assert_eq!(unsafe { on_console_event(CTRL_BREAK_EVENT) }, TRUE);
+        assert!(!flag.load(Ordering::SeqCst));
+        assert_eq!(RECEIVED.load(Ordering::SeqCst), code::INT);
+        // Once handled, the next one counts.
+        RECEIVED.store(0, Ordering::SeqCst);
+        assert_eq!(unsafe { on_console_event(CTRL_BREAK_EVENT) }, TRUE);
+        assert!(flag.load(Ordering::SeqCst));
+        assert_eq!(RECEIVED.load(Ordering::SeqCst), code::TERM);
+        // An event that is not a stop is left to the next handler.
+        assert_eq!(unsafe { on_console_event(99) }, FALSE);
+    }
+
+    #[test]
+    fn the_time_zone_offset_is_whole_minutes_within_a_day() {
+        let off = utc_offset(1_800_000_000);
+        assert!(off.abs() <= 14 * 3600 && off % 60 == 0, "{off}");
+    }
 }
