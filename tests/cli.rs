@@ -198,7 +198,7 @@ fn paths_prints_where_every_file_lives() {
     assert!(p["lib"].as_str().unwrap().ends_with("built in"), "{p}");
     assert!(p["recordings"].as_str().unwrap().starts_with("none"), "{p}");
     // The defaults and the environment, from the shell's `paths`.
-    let o = plcsh().env("PLCSH_SNAPSHOTS", "/tmp/snaps").args(["-c", "paths"]).output().unwrap();
+    let o = plcsh().env("PLCSH_SNAPSHOTS", "/tmp/snaps").args(["-c", "paths"]).output_retrying().unwrap();
     let text = stdout(&o);
     if cfg!(unix) {
         assert!(text.contains(&home.join("config/plcsh/devices.toml").display().to_string()), "{text}");

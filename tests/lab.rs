@@ -14,7 +14,7 @@ fn root() -> &'static Path {
 }
 
 fn in_root(args: &[&str]) -> std::process::Output {
-    plcsh().current_dir(root()).args(args).output().expect("start plcsh")
+    plcsh().current_dir(root()).args(args).output_retrying().expect("start plcsh")
 }
 
 /// Every file under `dir` with its bytes.
@@ -155,28 +155,28 @@ fn the_test_lab_grades_every_submission_as_expected_twice_alike() {
 fn lab_new_writes_a_lab_that_passes_check_and_check_catches_a_wrong_reference() {
     let d = temp("new");
     let lab = d.join("conveyor");
-    let o = plcsh().args(["lab", "new", lab.to_str().unwrap()]).output().unwrap();
+    let o = plcsh().args(["lab", "new", lab.to_str().unwrap()]).output_retrying().unwrap();
     assert!(o.status.success(), "{}", both(&o));
-    let o = plcsh().args(["lab", "check", lab.to_str().unwrap()]).output().unwrap();
+    let o = plcsh().args(["lab", "check", lab.to_str().unwrap()]).output_retrying().unwrap();
     assert!(o.status.success(), "{}", both(&o));
     assert!(stdout(&o).contains("the reference solution gets 10/10 points"), "{}", stdout(&o));
     // The starter is not a solution: grading it gives some criteria, not all.
     let o = plcsh()
         .args(["--json", "lab", "grade", lab.to_str().unwrap(), lab.join("starter.il").to_str().unwrap()])
-        .output()
+        .output_retrying()
         .unwrap();
     let r = &json_lines(&o)[0];
     assert_eq!(r["verdict"], "failed", "{r}");
     // `lab new` refuses an existing folder.
-    let o = plcsh().args(["lab", "new", lab.to_str().unwrap()]).output().unwrap();
+    let o = plcsh().args(["lab", "new", lab.to_str().unwrap()]).output_retrying().unwrap();
     assert!(!o.status.success() && both(&o).contains("already exists"), "{}", both(&o));
     // A wrong reference fails the check, naming the criterion.
     let text = std::fs::read_to_string(lab.join("reference.il")).unwrap().replace("T37, 20", "T37, 25");
     std::fs::write(lab.join("reference.il"), text).unwrap();
-    let o = plcsh().args(["lab", "check", lab.to_str().unwrap()]).output().unwrap();
+    let o = plcsh().args(["lab", "check", lab.to_str().unwrap()]).output_retrying().unwrap();
     assert_eq!(o.status.code(), Some(1), "{}", both(&o));
     assert!(stdout(&o).contains("Q0.1 after 2 s: expected true, got false at 2.2 s"), "{}", stdout(&o));
-    let o = plcsh().args(["--json", "lab", "check", lab.to_str().unwrap()]).output().unwrap();
+    let o = plcsh().args(["--json", "lab", "check", lab.to_str().unwrap()]).output_retrying().unwrap();
     let j = &json_lines(&o)[0];
     assert_eq!((j["ok"].as_bool(), j["cmd"].as_str()), (Some(false), Some("lab")), "{j}");
     std::fs::remove_dir_all(&d).unwrap();
@@ -192,7 +192,7 @@ fn a_bad_lab_toml_is_refused_naming_the_key() {
         "title = \"x\"\nreference = \"r.il\"\ngrader = \"g.lua\"\n[devices]\nplc = \"tcp://192.0.2.1:502\"\n",
     )
     .unwrap();
-    let o = plcsh().args(["lab", "check", d.to_str().unwrap()]).output().unwrap();
+    let o = plcsh().args(["lab", "check", d.to_str().unwrap()]).output_retrying().unwrap();
     assert_eq!(o.status.code(), Some(2), "{}", both(&o));
     assert!(both(&o).contains("[devices] plc") && both(&o).contains("real device"), "{}", both(&o));
     std::fs::remove_dir_all(&d).unwrap();
@@ -328,7 +328,7 @@ fn every_sandbox_rule_refuses_one_attempt_and_allows_another() {
                 .current_dir(&d)
                 .args(["--time", "stepped", "run", "--sandbox", "--write-dir", "out"])
                 .arg(&script)
-                .output()
+                .output_retrying()
                 .unwrap();
             let text = both(&o);
             if must_fail {
@@ -348,7 +348,7 @@ fn every_sandbox_rule_refuses_one_attempt_and_allows_another() {
         .current_dir(&d)
         .args(["--device", &format!("real=tcp://127.0.0.1:{port}"), "run", "--sandbox"])
         .arg(&script)
-        .output()
+        .output_retrying()
         .unwrap();
     assert_eq!(o.status.code(), Some(1), "{}", both(&o));
     assert!(both(&o).contains("is a real device: a sandboxed run opens simulated devices only"), "{}", both(&o));

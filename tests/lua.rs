@@ -98,7 +98,7 @@ fn ctrl_c_during_wait_until_runs_the_abort_handlers_and_exits_non_zero() {
         .stdin(Stdio::null())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
-        .spawn()
+        .spawn_retrying()
         .unwrap();
     let mut lines = BufReader::new(child.stdout.take().unwrap()).lines();
     // Readiness: the script is about to wait.
@@ -153,7 +153,7 @@ fn require_finds_the_project_lib() {
     std::fs::write(dir.join("commission.lua"), "return {new = 'mine'}\n").unwrap();
     let mut cmd = plcsh();
     cmd.env("PLCSH_LIB", &dir).args(["run", p.to_str().unwrap()]);
-    let o = cmd.output().unwrap();
+    let o = cmd.output_retrying().unwrap();
     assert_eq!(stdout(&o), "string\n");
 }
 
@@ -174,7 +174,7 @@ fn a_failed_checklist_step_fails_the_script() {
 
 #[test]
 fn stdin_closes_cleanly_after_an_unfinished_block() {
-    let mut child = plcsh().stdin(Stdio::piped()).stdout(Stdio::piped()).spawn().unwrap();
+    let mut child = plcsh().stdin(Stdio::piped()).stdout(Stdio::piped()).spawn_retrying().unwrap();
     child.stdin.take().unwrap().write_all(b"lua\nprint(1)\n").unwrap();
     let o = child.wait_with_output().unwrap();
     assert_eq!(String::from_utf8_lossy(&o.stdout), "1\n");
@@ -326,7 +326,7 @@ fn require_searches_in_the_documented_order() {
         "print((require('shadow')), (require('own')))\nprint(plcsh.lib_dirs[1], plcsh.lib_dirs[#plcsh.lib_dirs])\n",
     )
     .unwrap();
-    let o = plcsh().env("PLCSH_LIB", &libdir).args(["run", s.to_str().unwrap()]).output().unwrap();
+    let o = plcsh().env("PLCSH_LIB", &libdir).args(["run", s.to_str().unwrap()]).output_retrying().unwrap();
     assert!(o.status.success(), "{}", both(&o));
     assert_eq!(stdout(&o), format!("from PLCSH_LIB\town\n{}\t{}\n", libdir.display(), scriptdir.display()),);
 }
@@ -378,7 +378,7 @@ fn an_installed_binary_finds_the_lib_modules_without_the_checkout() {
         if let Some(l) = lib {
             c.env("PLCSH_LIB", l);
         }
-        c.output().unwrap()
+        c.output_retrying().unwrap()
     };
     let o = installed(None);
     assert!(o.status.success(), "{}", both(&o));

@@ -206,14 +206,18 @@ fn odd_dir(test: &str) -> PathBuf {
 fn shell(args: &[&str], line: &str, by_c: bool) -> Vec<serde_json::Value> {
     let mut c = plcsh();
     c.args(["--time", "stepped", "--json"]).args(args);
-    let o = if by_c { c.args(["-c", line]).stdin(Stdio::null()).output().unwrap() } else { run_with_stdin(c, line) };
+    let o = if by_c {
+        c.args(["-c", line]).stdin(Stdio::null()).output_retrying().unwrap()
+    } else {
+        run_with_stdin(c, line)
+    };
     assert!(o.status.success(), "`{line}` failed:\n{}", both(&o));
     json_lines(&o)
 }
 
 fn run_with_stdin(mut c: std::process::Command, input: &str) -> Output {
     use std::io::Write;
-    let mut child = c.stdin(Stdio::piped()).stdout(Stdio::piped()).stderr(Stdio::piped()).spawn().unwrap();
+    let mut child = c.stdin(Stdio::piped()).stdout(Stdio::piped()).stderr(Stdio::piped()).spawn_retrying().unwrap();
     child.stdin.take().unwrap().write_all(format!("{input}\n").as_bytes()).unwrap();
     child.wait_with_output().unwrap()
 }
@@ -333,7 +337,7 @@ fn a_path_with_a_space_and_no_quotes_is_refused_with_the_quoted_form() {
     std::fs::create_dir_all(&dir).unwrap();
     let p = dir.join("светофор.il");
     std::fs::write(&p, "LD %I0.0\n= %Q0.0\n").unwrap();
-    let o = plcsh().args(["--json", "-c", &format!("sim program load {}", p.display())]).output().unwrap();
+    let o = plcsh().args(["--json", "-c", &format!("sim program load {}", p.display())]).output_retrying().unwrap();
     let l = json_lines(&o);
     assert_eq!(l[0]["error"]["kind"], "usage", "{l:?}");
     let hint = l[0]["error"]["hint"].as_str().unwrap_or_default();
@@ -355,8 +359,10 @@ fn run_a_script() {
     let out = dir.join("итоги");
     std::fs::create_dir_all(&out).unwrap();
     let s = script.to_str().unwrap();
-    let text =
-        ok(&plcsh().args(["run", "--sandbox", "--write-dir", out.to_str().unwrap(), s, "один"]).output().unwrap());
+    let text = ok(&plcsh()
+        .args(["run", "--sandbox", "--write-dir", out.to_str().unwrap(), s, "один"])
+        .output_retrying()
+        .unwrap());
     assert_eq!(text, "аргумент: один\n");
     assert_eq!(std::fs::read_to_string(out.join("итог.txt")).unwrap(), "ok");
 }
@@ -368,21 +374,23 @@ fn config_state_and_bench_files() {
     std::fs::write(&config, "[devices.press]\nurl = \"sim:K209M-56DT\"\n").unwrap();
     let c = config.to_str().unwrap();
     let l = json_lines(
-        &plcsh().args(["--json", "--config", c, "-c", "connect press; use press; get VW0"]).output().unwrap(),
+        &plcsh().args(["--json", "--config", c, "-c", "connect press; use press; get VW0"]).output_retrying().unwrap(),
     );
     assert_eq!(l[2]["device"], "press", "{l:?}");
     let state = dir.join("состояние.json");
     let st = state.to_str().unwrap();
-    ok(&plcsh().args(["--state", st, "-c", "set VB3648=77"]).output().unwrap());
+    ok(&plcsh().args(["--state", st, "-c", "set VB3648=77"]).output_retrying().unwrap());
     assert!(state.is_file());
-    let l = json_lines(&plcsh().args(["--json", "--state", st, "-c", "get VB3648"]).output().unwrap());
+    let l = json_lines(&plcsh().args(["--json", "--state", st, "-c", "get VB3648"]).output_retrying().unwrap());
     assert_eq!(l[0]["values"][0]["value"], 77, "the state file kept the backup area: {l:?}");
     let bench = dir.join("стенд 1.toml");
     let text =
         "name = \"стенд\"\ncurrent = \"press1\"\ninit = [\"press1:VW0=5\"]\n[devices]\npress1 = \"sim:K205-16DT\"\n";
     std::fs::write(&bench, text).unwrap();
     let b = bench.to_str().unwrap();
-    let l = json_lines(&plcsh().args(["--json", "--time", "stepped", "--bench", b, "-c", "get VW0"]).output().unwrap());
+    let l = json_lines(
+        &plcsh().args(["--json", "--time", "stepped", "--bench", b, "-c", "get VW0"]).output_retrying().unwrap(),
+    );
     assert_eq!(l[0]["values"][0]["value"], 5, "{l:?}");
 }
 
@@ -396,12 +404,14 @@ fn record_show_and_replay() {
     ok(&plcsh()
         .args(["--time", "stepped", "--record", rec.to_str().unwrap(), "-c", &line])
         .stdin(Stdio::null())
-        .output()
+        .output_retrying()
         .unwrap());
-    let text = ok(&plcsh().args(["record", "show", rec.to_str().unwrap()]).output().unwrap());
+    let text = ok(&plcsh().args(["record", "show", rec.to_str().unwrap()]).output_retrying().unwrap());
     assert!(text.contains("statusword"), "{text}");
-    let text =
-        ok(&plcsh().args(["replay", rec.to_str().unwrap(), "--snapshot", snap.to_str().unwrap()]).output().unwrap());
+    let text = ok(&plcsh()
+        .args(["replay", rec.to_str().unwrap(), "--snapshot", snap.to_str().unwrap()])
+        .output_retrying()
+        .unwrap());
     assert!(text.trim_end().ends_with(" 0 difference(s)"), "{text}");
 }
 
@@ -410,15 +420,15 @@ fn lab_on_the_command_line() {
     let dir = odd_dir("labcli");
     let lab = dir.join("лаб 1");
     let l = lab.to_str().unwrap();
-    ok(&plcsh().args(["lab", "new", l]).output().unwrap());
-    let text = ok(&plcsh().args(["lab", "check", l]).output().unwrap());
+    ok(&plcsh().args(["lab", "new", l]).output_retrying().unwrap());
+    let text = ok(&plcsh().args(["lab", "check", l]).output_retrying().unwrap());
     assert!(text.contains("gets 10/10 points"), "{text}");
     let sub = dir.join("Петров П.П.il");
     std::fs::copy(lab.join("reference.il"), &sub).unwrap();
     let junit = dir.join("итог.xml");
     let o = plcsh()
         .args(["--json", "lab", "grade", l, sub.to_str().unwrap(), "--jobs", "1", "--junit", junit.to_str().unwrap()])
-        .output()
+        .output_retrying()
         .unwrap();
     let r = &json_lines(&o)[0];
     assert_eq!((&r["student"], &r["points"]), (&"Петров П.П".into(), &10.0.into()), "{r}");
@@ -428,7 +438,7 @@ fn lab_on_the_command_line() {
 #[test]
 fn completion_scripts_folder() {
     let dir = odd_dir("completions").join("дополнения");
-    ok(&plcsh().args(["completions", "--write", dir.to_str().unwrap()]).output().unwrap());
+    ok(&plcsh().args(["completions", "--write", dir.to_str().unwrap()]).output_retrying().unwrap());
     assert!(dir.join("plcsh.bash").is_file());
 }
 
@@ -453,10 +463,10 @@ fn served_simulators_files() {
         assert_eq!(served.ready[key], p(file), "{key}: {}", served.ready);
     }
     for ctl in ["к2.ctl", "фх.ctl", "умпк.ctl"] {
-        let text = ok(&plcsh().args(["sim", "control", &p(ctl), "faults"]).output().unwrap());
+        let text = ok(&plcsh().args(["sim", "control", &p(ctl), "faults"]).output_retrying().unwrap());
         assert!(text.contains("no injected faults"), "{ctl}: {text}");
     }
-    let text = ok(&plcsh().args(["sim", "control", &p("привод.ctl"), "fault", "clear"]).output().unwrap());
+    let text = ok(&plcsh().args(["sim", "control", &p("привод.ctl"), "fault", "clear"]).output_retrying().unwrap());
     assert!(!text.is_empty(), "the drive line's channel answers");
 }
 
@@ -475,7 +485,8 @@ fn served_simulators_pty_links() {
         assert!(meta.file_type().is_symlink(), "{link}");
     }
     let url = format!("rtu:{}?unit=1", p("пресс rtu"));
-    let l = json_lines(&plcsh().args(["--json", "-d", &format!("x={url}"), "-c", "get x:VW0"]).output().unwrap());
+    let l =
+        json_lines(&plcsh().args(["--json", "-d", &format!("x={url}"), "-c", "get x:VW0"]).output_retrying().unwrap());
     assert_eq!(l[0]["values"][0]["value"], 0, "the link's path reaches the port: {l:?}");
 }
 
@@ -492,16 +503,16 @@ fn lua_files_with_a_byte_order_mark_load_everywhere() {
     let script = dir.join("скрипт.lua");
     std::fs::write(&script, format!("{BOM}#!/usr/bin/env plcsh run\nprint(require('модуль').x)\nerror('line 3')\n"))
         .unwrap();
-    let o = plcsh().args(["run", script.to_str().unwrap()]).output().unwrap();
+    let o = plcsh().args(["run", script.to_str().unwrap()]).output_retrying().unwrap();
     assert_eq!(stdout(&o), "из модуля\n", "{}", both(&o));
     assert!(stderr(&o).contains("скрипт.lua:3:"), "line numbers stay the file's: {}", stderr(&o));
     let shell_file = dir.join("из оболочки.lua");
     std::fs::write(&shell_file, format!("{BOM}print('dofile')\n")).unwrap();
     let line = format!("lua dofile({:?})", shell_file.to_str().unwrap());
-    assert_eq!(ok(&plcsh().args(["-c", &line]).output().unwrap()), "dofile\n");
+    assert_eq!(ok(&plcsh().args(["-c", &line]).output_retrying().unwrap()), "dofile\n");
     // A lab whose grader and a student's Lua submission were saved with a BOM.
     let lab = dir.join("лаб");
-    ok(&plcsh().args(["lab", "new", lab.to_str().unwrap()]).output().unwrap());
+    ok(&plcsh().args(["lab", "new", lab.to_str().unwrap()]).output_retrying().unwrap());
     let grader = std::fs::read_to_string(lab.join("grade.lua")).unwrap();
     std::fs::write(lab.join("grade.lua"), format!("{BOM}{grader}")).unwrap();
     let sub = dir.join("Сидоров.lua");
@@ -509,7 +520,7 @@ fn lua_files_with_a_byte_order_mark_load_everywhere() {
     std::fs::write(&sub, format!("{BOM}plcsh.exec({load:?})\n")).unwrap();
     let o = plcsh()
         .args(["--json", "lab", "grade", lab.to_str().unwrap(), sub.to_str().unwrap(), "--jobs", "1"])
-        .output()
+        .output_retrying()
         .unwrap();
     let r = &json_lines(&o)[0];
     assert_eq!(r["verdict"], "passed", "{r}");
