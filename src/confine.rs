@@ -24,6 +24,9 @@ pub struct Confinement {
     pub read: Vec<PathBuf>,
     /// The one folder files may be written in (none: no file is written).
     pub write: Option<PathBuf>,
+    /// What the read rule covers, in words, for messages that must not show the folders'
+    /// paths (a graded submission is not told where the lab lives).
+    pub view: Option<String>,
 }
 
 fn canon(p: &Path) -> PathBuf {
@@ -68,7 +71,7 @@ impl Confinement {
         let write = write.map(|w| canon(&w));
         let mut read: Vec<PathBuf> = read.iter().map(|r| canon(r)).collect();
         read.extend(write.clone());
-        Confinement { read, write }
+        Confinement { read, write, view: None }
     }
 
     /// Refuses every device URL but the in-process simulators, and a simulator's file
@@ -123,6 +126,9 @@ impl Confinement {
     }
 
     fn folders(&self) -> String {
+        if let Some(v) = &self.view {
+            return v.clone();
+        }
         if self.read.is_empty() {
             return "no folder".into();
         }

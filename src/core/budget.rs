@@ -123,6 +123,20 @@ impl Budget {
     pub fn memory_verdict(&self) -> Option<String> {
         self.memory.map(|m| format!("exceeded {} of Lua memory", describe_bytes(m)))
     }
+
+    /// Notes that the memory limit was hit: from then on the run is over, whatever the Lua
+    /// code does (the interpreter's "not enough memory" error alone could be caught by a
+    /// `pcall`; the instruction hook and the sandbox's `pcall` raise the verdict again).
+    pub fn exceed_memory(&self) {
+        if let Some(v) = self.memory_verdict() {
+            self.exceed(v);
+        }
+    }
+
+    /// Lua instructions counted so far (in steps of the hook's interval).
+    pub fn instructions_used(&self) -> u64 {
+        self.executed.load(Ordering::Relaxed)
+    }
 }
 
 #[cfg(test)]
@@ -145,6 +159,17 @@ mod tests {
         assert_eq!(b.cap_wait(&clock, Duration::from_secs(3600)), None);
         assert_eq!(clock.now(), Duration::from_secs(600));
         assert_eq!(b.exceeded().unwrap(), "exceeded 10 simulated minutes");
+    }
+
+    #[test]
+    fn a_memory_limit_hit_stays_hit_and_comes_first() {
+        let clock = Clock::stepped();
+        let b = Budget::new(Some(Duration::from_secs(60)), Some(5000), Some(1 << 20), &clock);
+        assert!(b.tick(1000, &clock).is_none());
+        b.exceed_memory();
+        assert_eq!(b.tick(1000, &clock).unwrap(), "exceeded 1 MiB of Lua memory");
+        assert_eq!(b.tick(9000, &clock).unwrap(), "exceeded 1 MiB of Lua memory");
+        assert_eq!(b.instructions_used(), 11000);
     }
 
     #[test]

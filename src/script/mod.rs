@@ -111,7 +111,9 @@ impl Engine {
         if let Some(m) = budget.memory {
             self.lua.set_memory_limit(m)?;
         }
-        self.lua.set_hook(HookTriggers::new().every_nth_instruction(HOOK_EVERY), move |_, _| {
+        // A global hook: every coroutine the script creates inherits it, so a loop inside a
+        // coroutine is counted too (a per-thread hook would leave coroutines uncounted).
+        self.lua.set_global_hook(HookTriggers::new().every_nth_instruction(HOOK_EVERY), move |_, _| {
             if let Some(verdict) = budget.tick(u64::from(HOOK_EVERY), &clock) {
                 interrupt.store(true, Ordering::Relaxed);
                 return Err(error::raise(Error::new(ErrorKind::Interrupted, verdict)));

@@ -18,6 +18,7 @@ use super::error::raise_at;
 use crate::confine::Confinement;
 use crate::core::Error;
 use mlua::{Lua, MultiValue, Table, Value};
+use std::path::PathBuf;
 use std::sync::Arc;
 
 /// What a sandboxed run refuses, with the reason shown to the student.
@@ -109,7 +110,27 @@ pub fn apply(lua: &Lua, rules: Arc<Confinement>) -> mlua::Result<()> {
     searchers.raw_set(4, Value::Nil)?;
     // Files: reads under the run's folders, writes under its write directory.
     let io: Table = g.get("io")?;
-    let open: mlua::Function = io.get("open")?;
+    wrap_io(lua, &io, rules.clone())?;
+    // Where the run may write: `plcsh.write_dir` (nil without one).
+    let p: Table = g.get("plcsh")?;
+    p.set("write_dir", rules.write.as_ref().map(|d| d.display().to_string()))?;
+    install_loaders(lua, &g, rules)?;
+    Ok(())
+}
+
+/// Lua's own file functions (`io.open`, `io.lines`, `io.input`, `io.output`), kept in the
+/// registry the first time (no script reaches them there), set in `io` checked against `rules`.
+fn wrap_io(lua: &Lua, io: &Table, rules: Arc<Confinement>) -> mlua::Result<()> {
+    let raw = |name: &str| -> mlua::Result<mlua::Function> {
+        let key = format!("plcsh.sandbox.raw_io_{name}");
+        if let Ok(f) = lua.named_registry_value::<mlua::Function>(&key) {
+            return Ok(f);
+        }
+        let f: mlua::Function = io.get(name)?;
+        lua.set_named_registry_value(&key, f.clone())?;
+        Ok(f)
+    };
+    let open = raw("open")?;
     let r = rules.clone();
     io.set(
         "open",
@@ -126,7 +147,7 @@ pub fn apply(lua: &Lua, rules: Arc<Confinement>) -> mlua::Result<()> {
         })?,
     )?;
     for (name, write) in [("lines", false), ("input", false), ("output", true)] {
-        let f: mlua::Function = io.get(name)?;
+        let f = raw(name)?;
         let r = rules.clone();
         io.set(
             name,
@@ -139,10 +160,6 @@ pub fn apply(lua: &Lua, rules: Arc<Confinement>) -> mlua::Result<()> {
             })?,
         )?;
     }
-    // Where the run may write: `plcsh.write_dir` (nil without one).
-    let p: Table = g.get("plcsh")?;
-    p.set("write_dir", rules.write.as_ref().map(|d| d.display().to_string()))?;
-    install_loaders(lua, &g, rules)?;
     Ok(())
 }
 
@@ -253,4 +270,322 @@ pub fn student_env(lua: &Lua, rules: Arc<Confinement>) -> mlua::Result<Table> {
     env.raw_set("_G", env.clone())?;
     install_loaders(lua, &env, rules)?;
     Ok(env)
+}
+
+/// What a graded submission's `require` finds, and nothing else: a folder submission's own
+/// modules (`NAME/main.lua` requires `NAME/util.lua`), the modules the lab shares
+/// (`shared = ["helpers.lua"]` in its `lab.toml`) and plcsh's built-in modules. Each is loaded
+/// afresh for the submission, in its environment: never the grader's table.
+#[derive(Clone, Debug, Default)]
+pub struct World {
+    /// A folder submission's folder: (resolved, as messages name it).
+    pub own: Option<(PathBuf, String)>,
+    /// The lab's shared modules: (module name, file, as messages name it).
+    pub shared: Vec<(String, PathBuf, String)>,
+}
+
+/// A module name `require` looks for as a file: letters, digits, `_` and `-` between dots.
+fn module_name_ok(name: &str) -> bool {
+    name.len() <= 200
+        && name
+            .split('.')
+            .all(|p| !p.is_empty() && p.chars().all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-'))
+}
+
+impl World {
+    /// The module's text, its chunk name and how messages name its file.
+    fn find(&self, name: &str) -> Option<(Vec<u8>, String)> {
+        if module_name_ok(name) {
+            if let Some((dir, shown)) = &self.own {
+                let rel = name.replace('.', "/");
+                for cand in [format!("{rel}.lua"), format!("{rel}/init.lua")] {
+                    let file = dir.join(&cand);
+                    let Ok(real) = crate::core::fspath::canonical(&file) else { continue };
+                    if !real.starts_with(dir) || !real.is_file() {
+                        continue;
+                    }
+                    if let Ok(code) = std::fs::read(&real) {
+                        let sep = if shown.is_empty() || shown.ends_with(['/', '\\']) { "" } else { "/" };
+                        return Some((code, format!("{shown}{sep}{cand}")));
+                    }
+                }
+            }
+        }
+        if let Some((_, file, shown)) = self.shared.iter().find(|(n, _, _)| n == name) {
+            return std::fs::read(file).ok().map(|code| (code, shown.clone()));
+        }
+        super::paths::BUILT_IN
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|(_, code)| (code.as_bytes().to_vec(), format!("plcsh:lib/{name}.lua")))
+    }
+
+    /// Why `name` was not found, naming only what the submission may see.
+    fn not_found(&self, name: &str) -> String {
+        let own = match &self.own {
+            Some(_) => format!("no {}.lua in the submission's folder", name.replace('.', "/")),
+            None => "a single-file submission has no modules of its own".into(),
+        };
+        let shared = if self.shared.is_empty() {
+            "the lab shares no modules".to_string()
+        } else {
+            let names: Vec<&str> = self.shared.iter().map(|(n, _, _)| n.as_str()).collect();
+            format!("the lab shares {}", names.join(", "))
+        };
+        format!("module '{name}' not found: {own}; {shared}")
+    }
+}
+
+/// `require` for a submission's environment `env` (see [`World`]).
+fn submission_require(lua: &Lua, env: &Table, world: World) -> mlua::Result<mlua::Function> {
+    let loaded = lua.create_table()?;
+    let loading = Arc::new(std::sync::Mutex::new(Vec::<String>::new()));
+    let env = env.clone();
+    lua.create_function(move |lua, name: Value| -> mlua::Result<MultiValue> {
+        let name = match &name {
+            Value::String(s) => s.to_string_lossy(),
+            Value::Integer(_) | Value::Number(_) => {
+                lua.coerce_string(name.clone())?.map(|s| s.to_string_lossy()).unwrap_or_default()
+            }
+            other => {
+                return Err(raise_at(
+                    lua,
+                    Error::usage(format!("bad argument #1 to 'require' (string expected, got {})", other.type_name())),
+                ))
+            }
+        };
+        let done: Value = loaded.raw_get(name.as_str())?;
+        if !done.is_nil() {
+            return Ok(MultiValue::from_iter([done]));
+        }
+        if loading.lock().unwrap_or_else(|p| p.into_inner()).contains(&name) {
+            return Err(raise_at(
+                lua,
+                Error::usage(format!("module '{name}' requires itself (a loop of require calls)")),
+            ));
+        }
+        let Some((code, shown)) = world.find(&name) else {
+            return Err(raise_at(
+                lua,
+                Error::usage(world.not_found(&name))
+                    .hint("a submission requires its own modules and those the lab shares"),
+            ));
+        };
+        let f = lua
+            .load(super::file_chunk(&code))
+            .set_name(format!("@{shown}"))
+            .set_mode(mlua::chunk::ChunkMode::Text)
+            .set_environment(env.clone())
+            .into_function()
+            .map_err(|e| mlua::Error::runtime(format!("error loading module '{name}' from {shown}:\n\t{e}")))?;
+        loading.lock().unwrap_or_else(|p| p.into_inner()).push(name.clone());
+        let r = f.call::<Value>((name.as_str(), shown.as_str()));
+        loading.lock().unwrap_or_else(|p| p.into_inner()).retain(|n| n != &name);
+        let v = match r? {
+            Value::Nil => Value::Boolean(true),
+            v => v,
+        };
+        loaded.raw_set(name.as_str(), v.clone())?;
+        Ok(MultiValue::from_iter([v, Value::String(lua.create_string(&shown)?)]))
+    })
+}
+
+/// A graded submission's environment: [`student_env`] with Lua's file functions checked
+/// against the submission's own `rules` (its files, the lab's shared and starter files, the
+/// write directory: never the grader's), the `require` of [`World`], no `__gc` finalizers
+/// (a finalizer runs where no instruction is counted), and `pcall`, `xpcall`,
+/// `coroutine.resume` and `coroutine.close` that give back no limit: `stop(err)` says whether
+/// the run is over (it notes a memory error as the memory limit) and the verdict is raised
+/// again.
+pub fn submission_env(lua: &Lua, rules: Arc<Confinement>, world: World, stop: mlua::Function) -> mlua::Result<Table> {
+    let env = student_env(lua, rules.clone())?;
+    let io: Table = env.raw_get("io")?;
+    wrap_io(lua, &io, rules)?;
+    env.raw_set("require", submission_require(lua, &env, world)?)?;
+    // The lab's folder is not the submission's to know.
+    let p: Table = env.raw_get("plcsh")?;
+    p.raw_set("lib_dirs", lua.create_table()?)?;
+    let co: Table = env.raw_get("coroutine")?;
+    let (pcall, xpcall, resume, close, setmt): (Value, Value, Value, Value, Value) = lua
+        .load(
+            r#"
+local pcall, xpcall, resume, close, setmetatable, stop, error, rawget, type = ...
+local function pass(ok, ...)
+  if not ok then
+    local v = stop((...))
+    if v then error(v, 0) end
+  end
+  return ok, ...
+end
+return function(f, ...) return pass(pcall(f, ...)) end,
+  function(f, h, ...)
+    return pass(xpcall(f, function(e) local v = stop(e); if v then return v end; return h(e) end, ...))
+  end,
+  function(c, ...) return pass(resume(c, ...)) end,
+  function(c) return pass(close(c)) end,
+  function(t, mt)
+    if type(mt) == "table" and rawget(mt, "__gc") ~= nil then
+      error("setmetatable: a __gc finalizer is not available in a graded run (finalizers run outside the instruction count)", 2)
+    end
+    return setmetatable(t, mt)
+  end
+"#,
+        )
+        .set_name("=sandbox")
+        .call((
+            env.raw_get::<Value>("pcall")?,
+            env.raw_get::<Value>("xpcall")?,
+            co.raw_get::<Value>("resume")?,
+            co.raw_get::<Value>("close")?,
+            env.raw_get::<Value>("setmetatable")?,
+            stop,
+            env.raw_get::<Value>("error")?,
+            env.raw_get::<Value>("rawget")?,
+            env.raw_get::<Value>("type")?,
+        ))?;
+    env.raw_set("pcall", pcall)?;
+    env.raw_set("xpcall", xpcall)?;
+    co.raw_set("resume", resume)?;
+    co.raw_set("close", close)?;
+    env.raw_set("setmetatable", setmt)?;
+    Ok(env)
+}
+
+/// 2026-01-01 00:00:00 UTC: what `os.time()` reads at simulated time zero in a graded run.
+pub const EPOCH: i64 = 1_767_225_600;
+
+/// Simulated nanoseconds per Lua instruction in `os.clock()`: a busy loop advances it.
+const NS_PER_INSTRUCTION: f64 = 10.0;
+
+/// Days from 1970-01-01 to `y-m-d` (the proleptic Gregorian calendar; `m` and `d` may be out
+/// of range and carry over, as C's `mktime` does).
+fn days_from_civil(y: i64, m: i64, d: i64) -> i64 {
+    let y = y + (m - 1).div_euclid(12);
+    let m = (m - 1).rem_euclid(12) + 1;
+    let y = if m <= 2 { y - 1 } else { y };
+    let era = y.div_euclid(400);
+    let yoe = y - era * 400;
+    let mp = (m + 9) % 12;
+    let doy = (153 * mp + 2) / 5;
+    let doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
+    era * 146_097 + doe - 719_468 + (d - 1)
+}
+
+/// The same graded run gives the same bytes on every machine: `os.time`, `os.clock` and
+/// `os.date` read simulated time (UTC, from [`EPOCH`]; `os.clock` adds a figure from the Lua
+/// instructions run, so a busy loop advances it), `math.random` starts from `seed` and
+/// `math.randomseed()` without a number starts there again, and `tostring`, `print` and
+/// `string.format` show no memory address (`table`, `function`; `%p` is refused). Set in the
+/// globals, before a submission's environment copies them.
+pub fn deterministic(
+    lua: &Lua,
+    clock: crate::core::Clock,
+    budget: Arc<crate::core::budget::Budget>,
+    seed: i64,
+) -> mlua::Result<()> {
+    let g = lua.globals();
+    let os: Table = g.get("os")?;
+    let start = budget.start;
+    let now_s = {
+        let clock = clock.clone();
+        move || clock.now().saturating_sub(start).as_secs_f64()
+    };
+    let n = now_s.clone();
+    os.set(
+        "time",
+        lua.create_function(move |lua, t: Option<Table>| -> mlua::Result<i64> {
+            let Some(t) = t else { return Ok(EPOCH + n().floor() as i64) };
+            let field = |k: &str, default: Option<i64>| -> mlua::Result<i64> {
+                match (t.get::<Option<f64>>(k)?, default) {
+                    (Some(v), _) => Ok(v.floor() as i64),
+                    (None, Some(d)) => Ok(d),
+                    (None, None) => Err(raise_at(lua, Error::usage(format!("field '{k}' missing in date table")))),
+                }
+            };
+            let days = days_from_civil(field("year", None)?, field("month", None)?, field("day", None)?);
+            Ok(days * 86_400 + field("hour", Some(12))? * 3600 + field("min", Some(0))? * 60 + field("sec", Some(0))?)
+        })?,
+    )?;
+    let b = budget.clone();
+    let n = now_s.clone();
+    os.set(
+        "clock",
+        lua.create_function(move |_, ()| Ok(n() + b.instructions_used() as f64 * NS_PER_INSTRUCTION * 1e-9))?,
+    )?;
+    let raw_date: mlua::Function = os.get("date")?;
+    let n = now_s;
+    os.set(
+        "date",
+        lua.create_function(move |lua, (fmt, t): (Option<String>, Option<f64>)| {
+            let fmt = fmt.unwrap_or_else(|| "%c".into());
+            let fmt = if fmt.starts_with('!') { fmt } else { format!("!{fmt}") };
+            let t = t.map_or_else(|| EPOCH + n().floor() as i64, |t| t.floor() as i64);
+            raw_date.call::<Value>((lua.create_string(&fmt)?, t))
+        })?,
+    )?;
+    // math.random from the seed; math.randomseed() without a number starts there again.
+    let math: Table = g.get("math")?;
+    let raw_seed: mlua::Function = math.get("randomseed")?;
+    raw_seed.call::<()>((seed, 0))?;
+    math.set(
+        "randomseed",
+        lua.create_function(move |_, args: MultiValue| {
+            if args.is_empty() {
+                raw_seed.call::<MultiValue>((seed, 0))
+            } else {
+                raw_seed.call::<MultiValue>(args)
+            }
+        })?,
+    )?;
+    let string: Table = g.get("string")?;
+    let (tostring, print, format): (Value, Value, Value) = lua
+        .load(
+            r##"
+local tostring, print, format, type, select, gsub, find, error, unpack = ...
+local function safe(v)
+  local s = tostring(v)
+  local t = type(v)
+  if t == "table" or t == "function" or t == "thread" or t == "userdata" then
+    s = gsub(s, ": 0x%x+$", "")
+    s = gsub(s, ": %x%x%x%x%x%x%x%x+$", "")
+  end
+  return s
+end
+local function print_(...)
+  local a, n = { ... }, select("#", ...)
+  for i = 1, n do
+    if type(a[i]) ~= "table" then a[i] = safe(a[i]) end
+  end
+  return print(unpack(a, 1, n))
+end
+local function format_(fmt, ...)
+  if type(fmt) == "string" and find((gsub(fmt, "%%%%", "")), "%%[-+ #0]*%d*%.?%d*p") then
+    error("string.format: %p (an address) is not available in a graded run", 2)
+  end
+  local a, n = { ... }, select("#", ...)
+  for i = 1, n do
+    local t = type(a[i])
+    if t == "table" or t == "function" or t == "thread" or t == "userdata" then a[i] = safe(a[i]) end
+  end
+  return format(fmt, unpack(a, 1, n))
+end
+return safe, print_, format_
+"##,
+        )
+        .set_name("=sandbox")
+        .call((
+            g.get::<Value>("tostring")?,
+            g.get::<Value>("print")?,
+            string.get::<Value>("format")?,
+            g.get::<Value>("type")?,
+            g.get::<Value>("select")?,
+            string.get::<Value>("gsub")?,
+            string.get::<Value>("find")?,
+            g.get::<Value>("error")?,
+            g.get::<Table>("table")?.get::<Value>("unpack")?,
+        ))?;
+    g.set("tostring", tostring)?;
+    g.set("print", print)?;
+    string.set("format", format)?;
+    Ok(())
 }
