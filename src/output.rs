@@ -118,10 +118,10 @@ pub struct Style {
 }
 
 impl Style {
-    /// Colour only on a terminal and only when `NO_COLOR` is unset (no-color.org).
-    pub fn detect(json: bool, is_terminal: bool) -> Style {
-        let no_color = std::env::var_os("NO_COLOR").is_some_and(|v| !v.is_empty());
-        Style { json, color: is_terminal && !no_color && !json }
+    /// Colour only where standard output takes escape codes (a terminal; on Windows a
+    /// console switched to them) and `NO_COLOR` is unset: `core::platform::colour` decides.
+    pub fn detect(json: bool) -> Style {
+        Style { json, color: !json && crate::core::platform::colour(crate::core::platform::Stream::Stdout) }
     }
 }
 

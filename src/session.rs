@@ -5,6 +5,7 @@
 //! Device URLs are opened through one list, [`open_url`]: a new family adds its schemes
 //! there.
 
+use crate::core::platform::words::port;
 use crate::core::url::DeviceUrl;
 use crate::core::{Clock, DataType, Device, Error, Operand, Result, Value};
 use serde::Serialize;
@@ -72,15 +73,15 @@ pub struct Session {
 /// [`open_url`] (a test checks that every scheme listed here is one `open_url` knows).
 pub static SCHEMES: &[(&str, &str, &str, bool)] = &[
     ("sim:", "in-process K2 simulator: sim:MODEL", "k2", true),
-    ("kinco:", "Kinco servo drive on a serial port: kinco:/dev/ttyUSB0?id=1&baud=38400", "servo", false),
+    ("kinco:", concat!("Kinco servo drive on a serial port: kinco:", port!(), "?id=1&baud=38400"), "servo", false),
     ("sim-servo:", "in-process Kinco servo simulator: sim-servo:?id=1", "servo", true),
-    ("umpk:", "UMPK8/UMPK16 teaching PLC on a serial port: umpk:/dev/ttyUSB0?baud=57600", "umpk", false),
+    ("umpk:", concat!("UMPK8/UMPK16 teaching PLC on a serial port: umpk:", port!(), "?baud=57600"), "umpk", false),
     ("sim-umpk:", "in-process UMPK simulator: sim-umpk:UMPK16", "umpk", true),
     ("tcp://", "K2 over Modbus TCP: tcp://HOST:502?unit=1&model=K204ET-16DT", "k2", false),
-    ("rtu:", "K2 over Modbus RTU: rtu:/dev/ttyUSB0?baud=115200&unit=1&model=K205-16DT", "k2", false),
+    ("rtu:", concat!("K2 over Modbus RTU: rtu:", port!(), "?baud=115200&unit=1&model=K205-16DT"), "k2", false),
     ("rtu+tcp://", "K2 through an RTU-over-TCP gateway: rtu+tcp://HOST:PORT?unit=1", "k2", false),
-    ("fx:", "FX PLC on its programming port: fx:/dev/ttyUSB0?model=FX2N", "fx", false),
-    ("fxlink:", "FX PLC over the computer link: fxlink:/dev/ttyUSB0?station=0&pc=FF&wait=0", "fx", false),
+    ("fx:", concat!("FX PLC on its programming port: fx:", port!(), "?model=FX2N"), "fx", false),
+    ("fxlink:", concat!("FX PLC over the computer link: fxlink:", port!(), "?station=0&pc=FF&wait=0"), "fx", false),
     ("sim-fx:", "in-process FX simulator: sim-fx:FX2N[?protocol=link]", "fx", true),
 ];
 

@@ -82,15 +82,11 @@ pub fn exit_status() -> Option<i32> {
     }
 }
 
-/// What stopped the work, for messages: `Ctrl-C`, `SIGTERM`, `SIGHUP` (Ctrl-C when no
-/// signal is pending: the flag was raised in the process).
+/// What stopped the work, for messages, in this system's words: `Ctrl-C`, `SIGTERM`,
+/// `SIGHUP` (on Windows `Ctrl-Break`, `console closed`); Ctrl-C when no signal is pending
+/// (the flag was raised in the process).
 pub fn cause() -> &'static str {
-    use crate::core::platform::code;
-    match RECEIVED.load(Ordering::SeqCst) {
-        code::TERM => "SIGTERM",
-        code::HUP => "SIGHUP",
-        _ => "Ctrl-C",
-    }
+    crate::core::platform::words::stop_name(RECEIVED.load(Ordering::SeqCst))
 }
 
 /// True when the pending stop is a Ctrl-C (the REPL returns to its prompt on one).

@@ -198,7 +198,7 @@ fn shell(clock: Clock, p: &Profiles, name: &str, profile: &str) -> Shell {
     let mut s = Session::new(clock);
     s.profiles = p.clone();
     s.open(name, profile).unwrap_or_else(|e| panic!("open {profile}: {e}"));
-    let mut sh = Shell::new(s, Style::detect(true, false));
+    let mut sh = Shell::new(s, Style::detect(true));
     plcsh::script::install(&mut sh);
     sh
 }
@@ -324,7 +324,7 @@ fn the_session_wide_read_only_switch_refuses_every_change_and_shows_in_the_promp
     assert_eq!(plcsh::shell::repl::prompt(&s), "plc(sim)> ");
     s.set_read_only(true);
     assert_eq!(plcsh::shell::repl::prompt(&s), "plc(sim, read-only)> ");
-    let mut sh = Shell::new(s, Style::detect(true, false));
+    let mut sh = Shell::new(s, Style::detect(true));
     for line in ["set VW0=1", "pls 0", "rtc sync", "servo enable", "hsc 0 mode=0"] {
         let e = refusal(&mut sh, line).unwrap_or_else(|| panic!("`{line}` was not refused"));
         assert!(e.contains("--read-only"), "{line}: {e}");

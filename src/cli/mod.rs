@@ -60,8 +60,8 @@ pub struct Options {
     /// Simulator time: follow the wall clock, or move only when stepped.
     #[arg(long, value_enum, default_value = "wall", global = true)]
     pub time: TimeMode,
-    /// Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).
-    #[arg(long, value_name = "FILE", global = true)]
+    #[arg(long, value_name = "FILE", global = true,
+        help = concat!("Device profile file (default: PLCSH_CONFIG, else ", crate::core::platform::words::profile_file!(), ")."))]
     pub config: Option<std::path::PathBuf>,
     /// Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the
     /// user's data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE.
@@ -119,7 +119,9 @@ pub enum Sub {
         #[arg(long, value_name = "DIR")]
         write: Option<std::path::PathBuf>,
     },
-    /// Serve simulators to other programs: `sim serve` puts the simulated K2 on Modbus TCP / RTU and drives on a pty.
+    // Serve simulators to other programs (the words for this system: core::platform::words).
+    #[command(about = concat!("Serve simulators to other programs: `sim serve` puts the simulated K2 on Modbus TCP / RTU and drives ",
+        crate::core::platform::words::served_line!(), "."))]
     Sim {
         #[command(subcommand)]
         cmd: serve::SimCmd,
@@ -423,8 +425,8 @@ fn run_cli() -> i32 {
             return if e.use_stderr() { 2 } else { 0 };
         }
     };
-    let stdout_tty = std::io::stdout().is_terminal();
-    let style = Style::detect(cli.json, stdout_tty);
+    crate::core::platform::enable_escapes();
+    let style = Style::detect(cli.json);
     let mut out = std::io::stdout().lock();
     if let Some(Sub::Replay(args)) = &cli.sub {
         // Before any device is opened: replay builds its own simulators (and refuses --device).

@@ -10,7 +10,7 @@
 //! p.finish();
 //! ```
 
-use std::io::{IsTerminal, Write};
+use std::io::Write;
 use std::time::{Duration, Instant};
 
 /// A progress line; drawn at most every 100 ms.
@@ -25,7 +25,7 @@ pub struct Progress {
 impl Progress {
     /// Shown only when stderr is a terminal.
     pub fn new(label: &str, total: Option<Duration>) -> Progress {
-        Progress::with(label, total, std::io::stderr().is_terminal())
+        Progress::with(label, total, crate::core::platform::escapes(crate::core::platform::Stream::Stderr))
     }
 
     /// A progress that is shown (or not) regardless of the terminal.

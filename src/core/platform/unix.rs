@@ -26,6 +26,24 @@ pub fn install_stop_handlers(interrupt: &Arc<AtomicBool>, received: &'static Ato
     }
 }
 
+/// A Unix terminal takes escape codes as it is: nothing to switch on.
+pub fn enable_escapes() {}
+
+/// A Unix terminal takes escape codes ([`super::escapes`] asks whether it is one).
+pub fn console_escapes(_stream: super::Stream) -> bool {
+    true
+}
+
+/// The stop cause's name for a signal's number: SIGTERM, SIGHUP, else Ctrl-C (SIGINT, or the
+/// flag raised in the process).
+pub fn stop_name(code: i32) -> &'static str {
+    match code {
+        super::code::TERM => "SIGTERM",
+        super::code::HUP => "SIGHUP",
+        _ => "Ctrl-C",
+    }
+}
+
 /// A future that completes on Ctrl-C or SIGTERM (a server's stop). The handlers are
 /// installed when this is called, so a signal sent right after is not lost.
 pub fn stop_signal() -> std::io::Result<impl std::future::Future<Output = ()>> {

@@ -1,5 +1,11 @@
-//! The Windows side of [`super`]: console control events, the console's size, the time zone
-//! through the C runtime, thread CPU time.
+//! The Windows side of [`super`]: console control events, the console's size and its
+//! virtual-terminal mode, the time zone through the C runtime, thread CPU time.
+//!
+//! Escape codes: a classic console (conhost: cmd.exe or Windows PowerShell in their own
+//! window) shows them as text unless ENABLE_VIRTUAL_TERMINAL_PROCESSING is on, and it is off
+//! by default. [`enable_escapes`] turns it on for standard output and error at start-up;
+//! where the console refuses (consoles before Windows 10 1511), [`console_escapes`] says no
+//! and output stays plain.
 //!
 //! Console events map onto the Unix signals' exit statuses: Ctrl-C is SIGINT (130),
 //! Ctrl-Break — what console tools and process managers send to stop a program politely —
@@ -10,14 +16,17 @@
 
 use super::code;
 use std::sync::atomic::{AtomicBool, AtomicI32, Ordering};
+use std::sync::OnceLock;
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
 use windows_sys::core::BOOL;
+use windows_sys::Win32::Foundation::HANDLE;
 use windows_sys::Win32::Foundation::{FALSE, TRUE};
 use windows_sys::Win32::System::Console::{
-    FlushConsoleInputBuffer, GetConsoleScreenBufferInfo, GetStdHandle, SetConsoleCtrlHandler,
-    CONSOLE_SCREEN_BUFFER_INFO, CTRL_BREAK_EVENT, CTRL_CLOSE_EVENT, CTRL_C_EVENT, CTRL_LOGOFF_EVENT,
-    CTRL_SHUTDOWN_EVENT, STD_INPUT_HANDLE, STD_OUTPUT_HANDLE,
+    FlushConsoleInputBuffer, GetConsoleMode, GetConsoleScreenBufferInfo, GetStdHandle, SetConsoleCtrlHandler,
+    SetConsoleMode, CONSOLE_MODE, CONSOLE_SCREEN_BUFFER_INFO, CTRL_BREAK_EVENT, CTRL_CLOSE_EVENT, CTRL_C_EVENT,
+    CTRL_LOGOFF_EVENT, CTRL_SHUTDOWN_EVENT, ENABLE_VIRTUAL_TERMINAL_PROCESSING, STD_ERROR_HANDLE, STD_INPUT_HANDLE,
+    STD_OUTPUT_HANDLE,
 };
 
 /// How long a closing console waits for the abort handlers (Windows allows about 5 s).
@@ -62,6 +71,63 @@ pub fn install_stop_handlers(interrupt: &Arc<AtomicBool>, received: &'static Ato
     // SAFETY: registers a handler function with the signature Windows calls.
     unsafe {
         SetConsoleCtrlHandler(Some(on_console_event), TRUE);
+    }
+}
+
+/// Whether standard output and error take escape codes, decided once (see [`enable_escapes`]).
+static ESCAPES: OnceLock<[bool; 2]> = OnceLock::new();
+
+/// Turns on virtual-terminal processing for standard output and error where they are
+/// consoles, once per process. `PLCSH_CONSOLE_VT=off` acts as if the console refused.
+pub fn enable_escapes() {
+    ESCAPES.get_or_init(|| {
+        let refuse = std::env::var(super::CONSOLE_VT_ENV).is_ok_and(|v| v.eq_ignore_ascii_case("off"));
+        // SAFETY: the handles are the process's standard streams; the calls fail harmlessly
+        // on a handle that is not a console.
+        unsafe { [vt_on(GetStdHandle(STD_OUTPUT_HANDLE), refuse), vt_on(GetStdHandle(STD_ERROR_HANDLE), refuse)] }
+    });
+}
+
+/// Whether `stream`, when it is a terminal, takes escape codes.
+pub fn console_escapes(stream: super::Stream) -> bool {
+    enable_escapes();
+    let both = ESCAPES.get().copied().unwrap_or([false, false]);
+    both[match stream {
+        super::Stream::Stdout => 0,
+        super::Stream::Stderr => 1,
+    }]
+}
+
+/// Switches the console behind `h` to process escape codes; true when it does (already, or
+/// now). A handle that is no console — a pipe, a file, or the pipe of an MSYS2/Cygwin
+/// terminal, which reads escape codes itself — needs nothing (true). With `refuse`, the mode
+/// is left alone and a console without the mode counts as refusing.
+///
+/// # Safety
+/// `h` is a handle of this process (or null/invalid, which the calls refuse).
+unsafe fn vt_on(h: HANDLE, refuse: bool) -> bool {
+    let mut mode: CONSOLE_MODE = 0;
+    // SAFETY: `mode` is ours; see the function's contract for `h`.
+    if unsafe { GetConsoleMode(h, &mut mode) } == 0 {
+        return true;
+    }
+    if refuse {
+        return false;
+    }
+    if mode & ENABLE_VIRTUAL_TERMINAL_PROCESSING != 0 {
+        return true;
+    }
+    // SAFETY: as above.
+    unsafe { SetConsoleMode(h, mode | ENABLE_VIRTUAL_TERMINAL_PROCESSING) != 0 }
+}
+
+/// The stop cause's name for an event's number: Ctrl-Break (stored as SIGTERM's number),
+/// the console closing (SIGHUP's: "console closed"), else Ctrl-C.
+pub fn stop_name(code: i32) -> &'static str {
+    match code {
+        code::TERM => "Ctrl-Break",
+        code::HUP => "console closed",
+        _ => "Ctrl-C",
     }
 }
 
@@ -290,6 +356,26 @@ mod tests {
         assert_eq!(RECEIVED.load(Ordering::SeqCst), code::TERM);
         // An event that is not a stop is left to the next handler.
         assert_eq!(unsafe { on_console_event(99) }, FALSE);
+    }
+
+    /// A handle that is no console (a pipe, a file, nothing) needs no switch, refused or
+    /// not: whether it is a terminal decides (`super::escapes`). The console itself is
+    /// checked by tests/windows_console.rs, in a console under Wine.
+    #[test]
+    fn a_handle_that_is_no_console_needs_no_switch() {
+        // SAFETY: a null handle, which the console calls refuse.
+        unsafe {
+            assert!(vt_on(std::ptr::null_mut(), false));
+            assert!(vt_on(std::ptr::null_mut(), true));
+        }
+    }
+
+    #[test]
+    fn the_stop_causes_use_windows_words() {
+        assert_eq!(stop_name(code::TERM), "Ctrl-Break");
+        assert_eq!(stop_name(code::INT), "Ctrl-C");
+        assert_eq!(stop_name(0), "Ctrl-C");
+        assert_eq!(stop_name(code::HUP), "console closed");
     }
 
     #[test]

@@ -25,7 +25,7 @@ use crate::umpk::driver::Driver;
 use crate::umpk::hex;
 use crate::umpk::sim::{describe_status, logic::CYCLE_MS};
 use crate::umpk::space::UmpkOperand;
-use std::io::{IsTerminal, Write};
+use std::io::Write;
 use std::time::Duration;
 
 pub const UMPK: CommandSpec = CommandSpec {
@@ -394,7 +394,7 @@ fn program(sh: &mut Shell, dev: usize, rest: &[Word], col: usize) -> Result<Outc
             memory - 1
         ))
     })?;
-    let show = std::io::stderr().is_terminal() && !sh.style.json;
+    let show = crate::core::platform::escapes(crate::core::platform::Stream::Stderr) && !sh.style.json;
     let mut progress = |k: usize, n: usize| {
         if show {
             eprint!("\r\x1b[2Kprogramming {} record {k}/{n}", crate::shell::progress::bar(k as f64 / n as f64, 20));
@@ -467,7 +467,7 @@ fn monitor(sh: &mut Shell, dev: usize, rest: &[Word]) -> Result<Outcome> {
     }
     let mode = if sh.style.json {
         Mode::Json
-    } else if std::io::stdout().is_terminal() && !quiet {
+    } else if crate::core::platform::escapes(crate::core::platform::Stream::Stdout) && !quiet {
         Mode::Live { color: sh.style.color }
     } else {
         Mode::Lines

@@ -13,7 +13,7 @@ use crate::output::{show_value, Outcome};
 use crate::session::Session;
 use crate::shell::sample::{self, Plan, Sample, Stats};
 use crate::shell::{Args, Shell};
-use std::io::{IsTerminal, Write};
+use std::io::Write;
 use std::time::Duration;
 
 pub const WATCH: CommandSpec = CommandSpec {
@@ -177,7 +177,7 @@ fn watch(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let texts: Vec<&str> = req.operands.iter().map(|(_, t)| *t).collect();
     let mode = if sh.style.json {
         Mode::Json
-    } else if std::io::stdout().is_terminal() {
+    } else if crate::core::platform::escapes(crate::core::platform::Stream::Stdout) {
         Mode::Live { color: sh.style.color }
     } else {
         Mode::Lines

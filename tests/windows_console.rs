@@ -1,0 +1,150 @@
+//! The console and the words plcsh shows, as a user of this system meets them.
+//!
+//! Words (every system): `--help` names this system's default profile file, `sim --help`
+//! says how a served line is reached here, and a port that is not there gets a hint naming
+//! this system's ports (`COM3` on Windows, `/dev/ttyUSB0` elsewhere).
+//!
+//! The console (Windows, run by `.ci/windows` under Wine in a terminal, where Wine gives the
+//! process a console): plcsh switches the console it inherits to process escape codes at
+//! start-up (ENABLE_VIRTUAL_TERMINAL_PROCESSING, which a classic console has off), and with
+//! `PLCSH_CONSOLE_VT=off` — acting as a console that refuses — it leaves the mode alone and
+//! writes its error without escape codes (read back from the console's screen buffer).
+
+mod common;
+use common::{plcsh, Start};
+
+fn text(b: &[u8]) -> String {
+    String::from_utf8_lossy(b).into_owned()
+}
+
+#[test]
+fn help_names_this_systems_profile_file_and_served_lines() {
+    let out = plcsh().arg("--help").output_retrying().unwrap();
+    let help = text(&out.stdout);
+    assert!(out.status.success(), "{help}");
+    let sim = text(&plcsh().args(["sim", "--help"]).output_retrying().unwrap().stdout);
+    if cfg!(windows) {
+        assert!(help.contains(r"%APPDATA%\plcsh\config\devices.toml"), "{help}");
+        assert!(!help.contains("~/.config"), "{help}");
+        assert!(!sim.contains("pty") && sim.contains("TCP port") && sim.contains("COM port pair"), "{sim}");
+    } else {
+        assert!(help.contains("/plcsh/devices.toml") && !help.contains("%APPDATA%"), "{help}");
+        assert!(sim.contains("pty"), "{sim}");
+    }
+}
+
+#[test]
+fn a_missing_port_gets_a_hint_with_this_systems_port_names() {
+    let port = if cfg!(windows) { "COM9" } else { "/dev/ttyPLCSHMISSING9" };
+    let out = plcsh()
+        .args(["-d", &format!("rtu:{port}"), "-c", "get VW0"])
+        .stdin(std::process::Stdio::null())
+        .output_retrying()
+        .unwrap();
+    let err = text(&out.stderr);
+    assert!(!out.status.success(), "{err}");
+    assert!(err.contains("serial port") && err.contains(port), "{err}");
+    if cfg!(windows) {
+        assert!(err.contains("COM3") && !err.contains("/dev/"), "{err}");
+    } else {
+        assert!(err.contains("/dev/ttyUSB0") && !err.contains("COM3"), "{err}");
+    }
+}
+
+#[cfg(windows)]
+mod console {
+    use super::common::{plcsh, Start};
+    use windows_sys::Win32::Foundation::HANDLE;
+    use windows_sys::Win32::System::Console::{
+        GetConsoleMode, GetConsoleScreenBufferInfo, GetStdHandle, ReadConsoleOutputCharacterW, SetConsoleMode,
+        CONSOLE_MODE, CONSOLE_SCREEN_BUFFER_INFO, COORD, ENABLE_VIRTUAL_TERMINAL_PROCESSING, STD_OUTPUT_HANDLE,
+    };
+
+    /// The console on standard output, when this test process has one.
+    fn console() -> Option<HANDLE> {
+        // SAFETY: the process's standard output handle and a mode we own.
+        unsafe {
+            let h = GetStdHandle(STD_OUTPUT_HANDLE);
+            let mut m: CONSOLE_MODE = 0;
+            (GetConsoleMode(h, &mut m) != 0).then_some(h)
+        }
+    }
+
+    fn mode(h: HANDLE) -> CONSOLE_MODE {
+        let mut m: CONSOLE_MODE = 0;
+        // SAFETY: a console handle of this process and a mode we own.
+        assert!(unsafe { GetConsoleMode(h, &mut m) } != 0);
+        m
+    }
+
+    fn set_mode(h: HANDLE, m: CONSOLE_MODE) {
+        // SAFETY: as above.
+        assert!(unsafe { SetConsoleMode(h, m) } != 0, "{}", std::io::Error::last_os_error());
+    }
+
+    /// The last `n` rows of the console's screen buffer up to the cursor, as text.
+    fn last_rows(h: HANDLE, n: i16) -> String {
+        // SAFETY: a console handle, an info struct and a buffer we own, read within its size.
+        unsafe {
+            let mut info: CONSOLE_SCREEN_BUFFER_INFO = std::mem::zeroed();
+            assert!(GetConsoleScreenBufferInfo(h, &mut info) != 0);
+            let width = info.dwSize.X.max(1) as usize;
+            let top = (info.dwCursorPosition.Y - n).max(0);
+            let rows = (info.dwCursorPosition.Y - top + 1) as usize;
+            let mut buf = vec![0u16; width * rows];
+            let mut read = 0u32;
+            let at = COORD { X: 0, Y: top };
+            ReadConsoleOutputCharacterW(h, buf.as_mut_ptr(), buf.len() as u32, at, &mut read);
+            String::from_utf16_lossy(&buf[..read as usize])
+        }
+    }
+
+    /// Whether a console is required here: `.ci/windows` runs this file in a terminal and
+    /// says so; elsewhere (output captured) there is no console to check.
+    fn required() -> bool {
+        std::env::var_os("PLCSH_WINE_CONSOLE").is_some()
+    }
+
+    /// The inherited console is switched to escape codes at start-up; with the refusal asked
+    /// for, it is left alone and the error is written without escape codes.
+    #[test]
+    fn the_console_takes_escape_codes_or_output_stays_plain() {
+        let Some(h) = console() else {
+            assert!(!required(), "PLCSH_WINE_CONSOLE is set but standard output is no console");
+            super::common::skipped("a console on standard output (.ci/windows runs this in a terminal)");
+            return;
+        };
+        let plain = mode(h) & !ENABLE_VIRTUAL_TERMINAL_PROCESSING;
+        set_mode(h, plain);
+        let st = plcsh().args(["-c", "get VW0"]).stdin(std::process::Stdio::null()).status_retrying();
+        assert!(st.success());
+        let switched = mode(h);
+        set_mode(h, plain);
+        assert_eq!(switched, plain | ENABLE_VIRTUAL_TERMINAL_PROCESSING, "plcsh switched its console to escape codes");
+
+        let st = plcsh()
+            .args(["-c", "get NOSUCH"])
+            .env("PLCSH_CONSOLE_VT", "off")
+            .stdin(std::process::Stdio::null())
+            .status_retrying();
+        assert!(!st.success());
+        assert_eq!(mode(h), plain, "a console that refuses is left as it was");
+        // The row the error starts on (the test harness writes its own rows around it).
+        let shown = last_rows(h, 8);
+        let at = shown.find("error[operand]").unwrap_or_else(|| panic!("no error on the console: {shown:?}"));
+        let row = &shown[shown[..at].rfind("  ").unwrap_or(0)..];
+        let row = &row[..row.find("hint:").unwrap_or(row.len())];
+        assert!(!row.contains('\u{1b}') && !row.contains("[31m") && !row.contains('←'), "{row:?}");
+    }
+
+    trait Status {
+        fn status_retrying(&mut self) -> std::process::ExitStatus;
+    }
+
+    impl Status for std::process::Command {
+        fn status_retrying(&mut self) -> std::process::ExitStatus {
+            let mut child = self.spawn_retrying().expect("plcsh starts");
+            child.wait().expect("plcsh ends")
+        }
+    }
+}
