@@ -266,6 +266,9 @@ impl Shell {
     }
 
     fn run_spec(&mut self, spec: &commands::CommandSpec, args: Args) -> CmdResult {
+        // Every command is strict in one place: a word after the end of its forms is refused
+        // before the command runs or its device is made ready.
+        commands::forms::check(spec, args).map_err(|e| (spec.name.to_string(), e))?;
         if !commands::NO_CURRENT_DEVICE.contains(&spec.name) {
             // The device the command acts on, ready first (`crate::pending`): the reason it is
             // not (its state file held, its link down) is the command's error.

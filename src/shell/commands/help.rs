@@ -8,7 +8,7 @@ use crate::shell::{Args, Shell};
 pub const HELP: CommandSpec = CommandSpec {
     name: "help",
     aliases: &["?"],
-    usage: "help [COMMAND|OPERAND]",
+    usage: "help [COMMAND [SUB]|OPERAND|all]",
     summary: "list commands, or explain one command (its full usage) or operand",
     subcommands: &[],
     run: help,
@@ -67,42 +67,10 @@ fn help(sh: &mut Shell, args: Args) -> Result<Outcome> {
     Ok(o)
 }
 
-/// The forms of a command's sub-commands, read from its usage line: the line split at `|`,
-/// a piece that starts with a sub-command's name (after the command and `[DEVICE]`) starting
-/// a new form, any other piece (`rel POS` of `move abs|rel POS`) continuing the last one.
+/// The forms of a command's sub-commands ([`super::forms::of`]), with the sub-command each
+/// belongs to.
 pub fn sub_forms(c: &CommandSpec) -> Vec<(&'static str, String)> {
-    let mut forms: Vec<(&'static str, String)> = Vec::new();
-    // `sim time | sim step D | sim cpu run|stop|pause`: whole forms between ` | `.
-    if c.usage.contains(" | ") {
-        for piece in c.usage.split(" | ").map(str::trim) {
-            let mut w = piece.split_whitespace();
-            if w.next() != Some(c.name) {
-                continue;
-            }
-            let head = w.next().unwrap_or("");
-            if let Some(sub) = c.subcommands.iter().find(|s| head.split('|').any(|a| a == **s)) {
-                forms.push((sub, piece.to_string()));
-            }
-        }
-        return forms;
-    }
-    for piece in c.usage.split('|') {
-        let words: Vec<&str> = piece.split_whitespace().collect();
-        let lead = words.iter().take_while(|w| **w == c.name || **w == "[DEVICE]").count();
-        let starts = words.get(lead).and_then(|w| c.subcommands.iter().find(|s| *s == w));
-        match (starts, forms.last_mut()) {
-            (Some(sub), _) => forms.push((sub, format!("{} {}", c.name, words[lead..].join(" ")))),
-            (None, Some(last)) => {
-                last.1.push('|');
-                last.1.push_str(piece.trim_end());
-            }
-            (None, None) => {}
-        }
-    }
-    for f in &mut forms {
-        f.1 = f.1.trim().to_string();
-    }
-    forms
+    super::forms::of(c).into_iter().filter_map(|f| Some((f.sub?, f.text))).collect()
 }
 
 /// `help COMMAND SUB`: the forms of one sub-command, with the details of those that have
@@ -177,11 +145,7 @@ pub fn command_list() -> String {
 fn card_markdown() -> String {
     let mut t = String::from("| command | forms | what it does |\n|---|---|---|\n");
     for c in COMMANDS {
-        let forms: Vec<String> = if c.subcommands.is_empty() {
-            vec![c.usage.split("   e.g.").next().unwrap_or(c.usage).trim().to_string()]
-        } else {
-            sub_forms(c).into_iter().map(|(_, f)| f).collect()
-        };
+        let forms: Vec<String> = super::forms::of(c).into_iter().map(|f| f.text).collect();
         let cell = |s: &str| s.replace('|', "\\|");
         let forms: Vec<String> = forms.iter().map(|f| format!("`{}`", cell(f))).collect();
         t.push_str(&format!("| `{}` | {} | {} |\n", c.name, forms.join("<br>"), cell(c.summary)));

@@ -7,6 +7,7 @@ mod device;
 mod eeprom;
 mod events;
 mod fault;
+pub mod forms;
 mod fxsim;
 mod help;
 mod io;

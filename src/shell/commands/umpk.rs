@@ -31,7 +31,7 @@ use std::time::Duration;
 pub const UMPK: CommandSpec = CommandSpec {
     name: "umpk",
     aliases: &[],
-    usage: "umpk [DEVICE] info|program-info|errors [clear]|timing|reset|echo on|off|monitor [OPERAND…] [count=N] [for=2s] [every=100ms] [quiet]|program FILE.hex [info=\"…\"] [run]|send TEXT|sim input I3=1|I3 freq=2Hz|I3 off|sim flash-fail PAGE|off|sim reference [NAME]",
+    usage: "umpk [DEVICE] info|program-info|errors [clear]|timing|reset|echo on|off|monitor [OPERAND…] [count=N] [for=2s] [every=100ms] [quiet]|program FILE.hex [info=\"…\"] [run]|send TEXT|sim input I3=1|sim input I3 [off] [freq=2Hz]|sim inputs|sim flash-fail PAGE|off|sim fault no-reply|stuck [I3=1] [for=D]|sim fault clear|sim faults|sim events|sim reference [NAME]",
     summary: "UMPK8/UMPK16 teaching PLCs: controller and program info, error history, timing, reset, echo, real-time monitor, Intel HEX programming",
     subcommands: &["info", "program-info", "errors", "timing", "reset", "echo", "monitor", "program", "send", "sim"],
     run: umpk,
