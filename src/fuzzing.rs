@@ -46,6 +46,7 @@ pub static TARGETS: &[(&str, Target)] = &[
     ("umpk_hex", umpk_hex),
     ("pcapng", pcapng),
     ("rfc2217", rfc2217),
+    ("rfc2217_server", rfc2217_server),
     ("mqtt_command", mqtt_command),
     ("bench", bench),
     ("lab_toml", lab_toml),
@@ -437,6 +438,22 @@ pub fn rfc2217(data: &[u8]) {
     parts.feed(&data[..cut], &mut d2, &mut e2);
     parts.feed(&data[cut..], &mut d2, &mut e2);
     assert_eq!((d1, e1), (d2, e2), "the same stream cut in two decodes the same");
+}
+
+/// The RFC 2217 server side (`sim serve --rfc2217`): any stream from a client, whole or cut
+/// in two, gives the same data and the same answers, and both stay linear in its length (an
+/// answer is at most a few bytes per command, and a command takes at least three bytes).
+pub fn rfc2217_server(data: &[u8]) {
+    use crate::cli::serve::rfc2217::Server;
+    let (mut whole, mut d1, mut r1) = (Server::default(), Vec::new(), Vec::new());
+    whole.feed(data, &mut d1, &mut r1);
+    assert!(d1.len() <= data.len());
+    assert!(r1.len() <= 8 * data.len(), "{} answer bytes for {} input bytes", r1.len(), data.len());
+    let cut = data.first().map_or(0, |b| usize::from(*b) % (data.len() + 1));
+    let (mut parts, mut d2, mut r2) = (Server::default(), Vec::new(), Vec::new());
+    parts.feed(&data[..cut], &mut d2, &mut r2);
+    parts.feed(&data[cut..], &mut d2, &mut r2);
+    assert_eq!((d1, r1), (d2, r2), "the same stream cut in two is answered the same");
 }
 
 /// The bench file (parse only: no device is opened).

@@ -10,7 +10,7 @@ mod lab;
 mod publish;
 mod record;
 mod run;
-mod serve;
+pub(crate) mod serve;
 
 use crate::core::{Clock, ErrorKind};
 use crate::k2::catalog;

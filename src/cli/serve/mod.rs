@@ -26,8 +26,12 @@
 //! Shape: each served family adds its endpoints in its own function ([`serve_k2`],
 //! [`serve_servo`]) — it binds, spawns its tasks and adds its fields to the readiness line.
 //! `--fleet N` serves N K2s instead of one ([`fleet`], built by the same [`make_k2`]).
+//!
+//! `--rfc2217` makes the serial options' TCP ports speak RFC 2217 instead of raw TCP
+//! ([`rfc2217`]: a front before each raw port).
 
 mod fleet;
+pub(crate) mod rfc2217;
 
 use super::Cli;
 use crate::core::link::async_pty::AsyncPty;
@@ -67,7 +71,7 @@ pub struct ControlArgs {
     pub words: Vec<String>,
 }
 
-#[derive(Args, Debug)]
+#[derive(Args, Debug, Clone)]
 pub struct ServeArgs {
     /// Modbus TCP on ADDR (`127.0.0.1:5020`, `5020`, `0` for a free port; loopback unless a host is given).
     #[arg(long, value_name = "ADDR")]
@@ -189,6 +193,10 @@ pub struct ServeArgs {
     #[arg(long = "fleet", value_name = "N", requires = "tcp", conflicts_with_all = ["rtu_pty", "rtu_tcp", "k2_control"],
         value_parser = clap::value_parser!(u16).range(1..=1024))]
     pub fleet: Option<u16>,
+    /// The serial options' TCP ports (--rtu-tcp, --servo-tcp, --fx-tcp, --fx-link-tcp, --umpk-tcp) speak RFC 2217
+    /// (Telnet COM-PORT-OPTION) instead of raw TCP: for FAMILY+rfc2217:// and virtual COM port drivers.
+    #[arg(long = "rfc2217")]
+    pub rfc2217: bool,
 }
 
 impl ServeArgs {
@@ -467,6 +475,9 @@ async fn serve_servo(
 }
 
 async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
+    // With --rfc2217 the families serve raw TCP on loopback, and fronts listen where asked.
+    let (behind, fronts) = rfc2217::behind_fronts(args)?;
+    let args = behind.as_ref().unwrap_or(args);
     let servo = serve_on(&args.servo_pty, &args.servo_tcp)?;
     let fx = (serve_on(&args.fx_pty, &args.fx_tcp)?, serve_on(&args.fx_link_pty, &args.fx_link_tcp)?);
     let umpk = serve_on(&args.umpk_pty, &args.umpk_tcp)?;
@@ -532,6 +543,13 @@ async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
             control: args.umpk_control.clone(),
         };
         ready.extend(crate::umpk::sim::serve::spawn(u, servo_stop.clone()).await?);
+    }
+    for (field, listen) in fronts {
+        let Some(inner) = ready.get(field).and_then(Json::as_str).and_then(|a| a.parse().ok()) else { continue };
+        let (addr, task) = rfc2217::front(listen, inner).await?;
+        ready.insert(field.into(), json!(addr.to_string()));
+        ready.insert("rfc2217".into(), json!(true));
+        tasks.spawn(task);
     }
     serde_json::to_writer(&mut *out, &ready).map_err(|e| Error::io("cannot print the readiness line").cause(e))?;
     writeln!(out)?;
