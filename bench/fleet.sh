@@ -1,0 +1,114 @@
+#!/usr/bin/env bash
+# Fleet publishing at scale: `plcsh publish -f bench` and a pymodbus + paho peer
+# (bench/py/fleet_peer.py), one after the other in one run, against the same served fleet of
+# simulated K2s (`plcsh sim serve --fleet N`), the same mosquitto on a free loopback port and
+# an independent subscriber (bench/py/fleet_sub.py). For each case: devices, the offered rate,
+# the rate the subscriber saw per device, CPU of the poller (% of one core), its peak RSS,
+# poll->subscriber latency p50/p99, and what went missing (by `seq`, plus plcsh's own counters).
+#
+#   bench/fleet.sh [PLCSH] [CASE…]      CASE: DEVICES:HZ (default: 500:10 1000:10 5000:1)
+#   SECS=15 WARM=4 REGS=3 PEER=1 bench/fleet.sh target/release/plcsh 1000:10
+#
+# Use a release build for figures. Machine load is printed before each case.
+set -u
+exe=${1:-target/release/plcsh}
+shift || true
+cases=${*:-500:10 1000:10 5000:1}
+secs=${SECS:-15}
+warm=${WARM:-4}
+regs=${REGS:-3}
+peer=${PEER:-1}
+py=/usr/bin/python3
+here=$(cd "$(dirname "$0")" && pwd)
+mosq=$(command -v mosquitto || echo /usr/sbin/mosquitto)
+work=$(mktemp -d /tmp/plcsh-fleet-bench.XXXXXX)
+pids=()
+cleanup() { for p in "${pids[@]}"; do kill "$p" 2>/dev/null; done; wait 2>/dev/null; rm -rf "$work"; }
+trap cleanup EXIT
+ulimit -n "$(ulimit -Hn)" 2>/dev/null
+
+free_port() { $py -c 'import socket; s=socket.socket(); s.bind(("127.0.0.1",0)); print(s.getsockname()[1])'; }
+ticks() { awk '{print $14+$15}' "/proc/$1/stat" 2>/dev/null || echo 0; }
+# Samples VmRSS of PID every 0.5 s into FILE until it exits; the peak is the largest line.
+rss_watch() { while [ -e "/proc/$1" ]; do awk '/VmRSS/{print $2}' "/proc/$1/status" 2>/dev/null >>"$2"; sleep 0.5; done; }
+
+# measure NAME GROUP N HZ CMD…: starts the poller, lets it warm up, measures SECS, stops it.
+measure() {
+    local name=$1 group=$2 n=$3 hz=$4
+    shift 4
+    local start=$(($(date +%s) + warm))
+    $py "$here/py/fleet_sub.py" "$bport" "$group" "$start" "$secs" "$n" "$regs" "$hz" >"$work/sub.$group" &
+    local sub=$!
+    sleep 0.3
+    "$@" >"$work/out.$group" 2>"$work/err.$group" &
+    local p=$!
+    : >"$work/rss.$group"
+    rss_watch "$p" "$work/rss.$group" &
+    local w=$!
+    sleep "$(($(date +%s) >= start ? 0 : start - $(date +%s)))"
+    local t0 c0 t1 c1
+    t0=$(date +%s.%N); c0=$(ticks "$p")
+    sleep "$secs"
+    t1=$(date +%s.%N); c1=$(ticks "$p")
+    kill -INT "$p" 2>/dev/null
+    wait "$p"; local rc=$?
+    wait "$sub" "$w" 2>/dev/null
+    local hz_tck; hz_tck=$(getconf CLK_TCK)
+    local cpu; cpu=$(echo "($c1 - $c0) / $hz_tck / ($t1 - $t0) * 100" | bc -l)
+    local rss; rss=$(sort -n "$work/rss.$group" | tail -1)
+    local summary; summary=$(tail -1 "$work/out.$group")
+    $py - "$name" "$n" "$hz" "$cpu" "${rss:-0}" "$rc" "$work/sub.$group" "$summary" <<'PY'
+import json, sys
+name, n, hz, cpu, rss, rc, subf, summary = sys.argv[1:9]
+s = json.loads(open(subf).read() or "{}")
+try:
+    own = json.loads(summary)
+except ValueError:
+    own = {"raw": summary[:200]}
+keep = {k: own[k] for k in ("published", "dropped", "behind", "dropped_broker_away", "dropped_behind", "undelivered") if k in own}
+lat = s.get("latency_ms", {})
+print("| %s | %s | %s Hz | %s Hz | %.0f %% | %.0f MiB | %s | %s | %s | %s | exit %s |" % (
+    name, n, hz, s.get("rate_hz"), float(cpu), int(rss) / 1024, lat.get("p50"), lat.get("p99"),
+    s.get("missing_by_seq"), json.dumps(keep, separators=(",", ":")), rc))
+PY
+}
+
+echo "| poller | devices | offered | seen per device | CPU (one core) | peak RSS | p50 ms | p99 ms | missing (seq) | own counters | |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|"
+for c in $cases; do
+    n=${c%%:*}
+    hz=${c##*:}
+    period_ms=$((1000 / hz))
+    echo "# $(date -u +%FT%TZ) $n devices at $hz Hz; load: $(cut -d' ' -f1-3 /proc/loadavg); $(nproc) cores" >&2
+    "$exe" --state none sim serve --fleet "$n" --tcp 127.0.0.1:0 >"$work/ready" 2>"$work/serve.err" &
+    srv=$!
+    pids+=("$srv")
+    for _ in $(seq 1 600); do [ -s "$work/ready" ] && break; sleep 0.1; done
+    $py - "$work/ready" "$work/fleet.toml" "$work/addrs" <<'PY'
+import json, sys
+r = json.loads(open(sys.argv[1]).readline())
+open(sys.argv[2], "w").write("[fleets.bench]\ndevices = [%s]\n" % ", ".join('"tcp://%s"' % a for a in r["fleet"]))
+open(sys.argv[3], "w").write(" ".join(r["fleet"]))
+PY
+    [ -s "$work/addrs" ] || { echo "sim serve --fleet $n did not get ready: $(cat "$work/serve.err")" >&2; exit 1; }
+    bport=$(free_port)
+    printf 'listener %s 127.0.0.1\nallow_anonymous true\nmax_queued_messages 100000\n%s' "$bport" \
+        "$([ "$(id -u)" = 0 ] && echo 'user root')" >"$work/mosq.conf"
+    "$mosq" -c "$work/mosq.conf" >/dev/null 2>&1 &
+    brk=$!
+    pids+=("$brk")
+    for _ in $(seq 1 100); do (exec 3<>"/dev/tcp/127.0.0.1/$bport") 2>/dev/null && break; sleep 0.05; done
+    ops=""
+    for ((j = 0; j < regs; j++)); do ops="$ops VW$((100 + 2 * j))"; done
+    # shellcheck disable=SC2086
+    measure plcsh bench "$n" "$hz" "$exe" --state none --config "$work/fleet.toml" --json publish -f bench \
+        --broker "mqtt://127.0.0.1:$bport" --every "${period_ms}ms" $ops
+    if [ "$peer" = 1 ]; then
+        # shellcheck disable=SC2046
+        measure "pymodbus+paho" peer "$n" "$hz" $py "$here/py/fleet_peer.py" "$bport" peer \
+            "$(echo "1 / $hz" | bc -l)" "$regs" $(cat "$work/addrs")
+    fi
+    kill "$brk" "$srv" 2>/dev/null
+    wait "$brk" "$srv" 2>/dev/null
+    pids=()
+done
