@@ -517,6 +517,7 @@ impl Session {
     /// Raises the interrupt flag (Ctrl-C); waits and scripts check it.
     pub fn interrupt(&self) {
         self.interrupt.store(true, Ordering::Relaxed);
+        Clock::wake_sleepers();
     }
 
     pub fn clear_interrupt(&self) {

@@ -55,6 +55,10 @@ fn start_watcher() {
                         since = None;
                         continue;
                     }
+                    if since.is_none() {
+                        // The flag is up: sleeping waits look at it now (core::Clock::sleep_real).
+                        crate::core::Clock::wake_sleepers();
+                    }
                     if IDLE.load(Ordering::SeqCst) {
                         std::process::exit(128 + sig);
                     }

@@ -287,7 +287,11 @@ fn readings_taken_while_the_broker_is_away_arrive_in_order() {
     let mut unique = s.clone();
     unique.sort();
     unique.dedup();
-    assert_eq!(unique, (1..=120).collect::<Vec<u64>>(), "every reading arrived");
+    // Every poll taken arrived; a slot the poller had to skip (a loaded machine) is counted as
+    // such in the summary, and is the only kind of gap.
+    let skipped = summary["skipped"].as_u64().unwrap();
+    assert_eq!(unique.len() as u64 + skipped, 120, "every reading arrived: {unique:?} {summary}");
+    assert!(skipped <= 10, "{summary}");
     drop(broker);
 }
 
@@ -493,11 +497,20 @@ fn the_username_comes_from_the_profile_file_and_the_password_from_the_environmen
     assert_eq!(o.status.code(), Some(0), "{}", both(&o));
     let last: serde_json::Value = serde_json::from_str(stdout(&o).lines().last().unwrap()).unwrap();
     assert!(last["published"].as_u64().unwrap() >= 4, "{last}");
+    // Refused credentials are no outage: the run ends at once with its own status and says so.
     let o = publish("wrong");
-    assert_eq!(o.status.code(), Some(1), "refused by the broker: {}", both(&o));
+    assert_eq!(o.status.code(), Some(3), "refused by the broker: {}", both(&o));
     let lines = json_lines(&o);
-    assert!(lines.iter().any(|l| l["event"] == "broker" && l["state"] == "away"), "{lines:?}");
-    assert!(lines.last().unwrap()["undelivered"].as_u64().unwrap() > 0, "{lines:?}");
+    let last = lines.last().unwrap();
+    assert_eq!(last["ok"], false, "{lines:?}");
+    let message = last["error"]["message"].as_str().unwrap();
+    assert!(message.contains("refused the credentials") && message.contains("NotAuthorized"), "{message}");
+    assert!(last["error"]["hint"].as_str().unwrap().contains("PLCSH_MQTT_PASSWORD"), "{last}");
+    assert!(!lines.iter().any(|l| l["state"] == "away"), "not reported as an outage: {lines:?}");
+    // Without the username at all: the same.
+    std::fs::write(&cfg, format!("[mqtt]\nurl = \"mqtt://127.0.0.1:{port}\"\n")).unwrap();
+    let o = publish("");
+    assert_eq!(o.status.code(), Some(3), "{}", both(&o));
     let _ = broker.kill();
     let _ = broker.wait();
 }
@@ -633,8 +646,11 @@ fn tls_with_the_ca_from_the_profile_file() {
         ]
     ));
     let o = publish("other.pem");
-    assert_eq!(o.status.code(), Some(1), "{}", both(&o));
-    assert!(!json_lines(&o).iter().any(|l| l["state"] == "connected"), "{}", both(&o));
+    assert_eq!(o.status.code(), Some(4), "a certificate error has its own status: {}", both(&o));
+    let lines = json_lines(&o);
+    assert!(!lines.iter().any(|l| l["state"] == "connected" || l["state"] == "away"), "{}", both(&o));
+    let message = lines.last().unwrap()["error"]["message"].as_str().unwrap().to_string();
+    assert!(message.contains("TLS") && message.contains("certificate"), "{message}");
     let _ = broker.kill();
     let _ = broker.wait();
 }

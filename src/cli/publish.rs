@@ -2,22 +2,34 @@
 //! current device or on every member of a fleet and publishes them to an MQTT broker
 //! ([`crate::publish`] has the topic layout and payloads; docs/fleets.md the guide).
 //!
-//! Exit status: 0 when the run ended (its `--count` polls, or Ctrl-C) with every reading
-//! delivered and every device answering; 1 when readings were dropped or left undelivered or a
-//! device was offline at the end; 2 for a usage error (no broker, a password on the command
-//! line, a bad option).
+//! Exit status: 0 when the run ended (its `--count` polls, or a stop by Ctrl-C or SIGTERM)
+//! with every reading delivered and every device answering; 1 when readings were dropped or
+//! left undelivered or a device was offline at the end; 2 for a usage error found before
+//! anything connects (no broker, a password on the command line, a bad option, an operand
+//! that one of the devices does not have); 3 when the broker refused the credentials; 4 when
+//! the broker's TLS certificate did not verify or no broker answered at the start.
 
 use crate::core::{Error, ErrorKind, Result};
 use crate::output::{self, Style};
-use crate::publish::broker::{self, Note, ToBroker};
-use crate::publish::{self as publish, Poll, Seen};
+use crate::publish::broker::{self, Fatal, Note};
+use crate::publish::outbox::{Msg, Outbox};
+use crate::publish::poller::{Member, Pool};
+use crate::publish::{self as publish, Poll, Seen, Shard};
 use crate::shell::Shell;
 use clap::Args;
 use serde_json::json;
 use std::io::Write;
+use std::sync::atomic::Ordering;
 use std::sync::mpsc::RecvTimeoutError;
 use std::sync::Arc;
-use std::time::Duration;
+use std::time::{Duration, Instant};
+
+/// Exit status: the broker refused the credentials.
+pub const EXIT_AUTH: i32 = 3;
+/// Exit status: the broker's TLS certificate did not verify, or no broker answered at the start.
+pub const EXIT_BROKER: i32 = 4;
+/// How often `plcsh/GROUP/_publisher/stats` is published.
+const STATS_EVERY: Duration = Duration::from_secs(5);
 
 #[derive(Args, Debug)]
 pub struct PublishArgs {
@@ -39,7 +51,9 @@ pub struct PublishArgs {
     /// With --on-change: the smallest change published (in the operand's units).
     #[arg(long, value_name = "X", requires = "on_change")]
     pub deadband: Option<f64>,
-    /// Readings kept while the broker is away (the oldest beyond it are dropped and counted).
+    /// Readings queued for the broker at most: while it is away the oldest beyond it are dropped;
+    /// while it is connected but plcsh falls behind, the newest value of a topic replaces the queued one
+    /// (both counted).
     #[arg(long, value_name = "N", default_value_t = 10_000)]
     pub buffer: usize,
     /// MQTT protocol version.
@@ -55,22 +69,37 @@ pub struct PublishArgs {
     /// allow list (replies on plcsh/GROUP/DEVICE/reply); read-only profiles never accept one.
     #[arg(long = "accept-writes")]
     pub accept_writes: bool,
+    /// Publish this part of the fleet only (K of N publishers; default: `shard` in the profile file's [mqtt]).
+    #[arg(long, value_name = "K/N", requires = "fleet")]
+    pub shard: Option<String>,
     /// The operands to publish (ranges allowed: VW100..VW110).
     #[arg(value_name = "OPERAND", required = true)]
     pub operands: Vec<String>,
 }
 
-fn config(cli: &super::Cli, args: &PublishArgs, group: &str) -> Result<broker::Config> {
-    let path = cli.config.clone().or_else(crate::profile::default_path);
-    let file = publish::file_settings(path.as_deref())?;
+/// Where the publisher's own topics go: `plcsh/GROUP/_publisher/` (`…/_publisher/shardK/` for
+/// a shard, so each shard has its own status and last will).
+fn publisher_prefix(group: &str, shard: Option<Shard>) -> String {
+    match shard {
+        Some(s) => format!("plcsh/{}/_publisher/shard{}/", publish::level(group), s.k),
+        None => format!("plcsh/{}/_publisher/", publish::level(group)),
+    }
+}
+
+fn config(
+    args: &PublishArgs,
+    file: &publish::FileSettings,
+    group: &str,
+    shard: Option<Shard>,
+) -> Result<broker::Config> {
     let url = args.broker.clone().or(file.url.clone()).ok_or_else(|| {
         Error::usage("publish needs a broker")
             .hint("--broker mqtt://HOST:1883, or url = \"mqtt://HOST:1883\" under [mqtt] in the profile file")
     })?;
     let (host, port, tls) = publish::parse_broker(&url)?;
     let env = |k: &str| std::env::var(k).ok().filter(|v| !v.is_empty());
-    let username = env("PLCSH_MQTT_USERNAME").or(file.username);
-    let password = env("PLCSH_MQTT_PASSWORD").or(file.password);
+    let username = env("PLCSH_MQTT_USERNAME").or(file.username.clone());
+    let password = env("PLCSH_MQTT_PASSWORD").or(file.password.clone());
     let credentials = match (username, password) {
         (Some(u), p) => Some((u, p.unwrap_or_default())),
         (None, Some(_)) => {
@@ -85,21 +114,25 @@ fn config(cli: &super::Cli, args: &PublishArgs, group: &str) -> Result<broker::C
         }
         None => None,
     };
+    let default_id = match shard {
+        Some(s) => format!("plcsh-{group}-shard{}-{}", s.k, std::process::id()),
+        None => format!("plcsh-{group}-{}", std::process::id()),
+    };
     Ok(broker::Config {
         host,
         port,
         tls: tls || ca.is_some(),
         ca,
         credentials,
-        client_id: args
-            .client_id
-            .clone()
-            .or(file.client_id)
-            .unwrap_or_else(|| format!("plcsh-{group}-{}", std::process::id())),
+        client_id: match (args.client_id.clone().or(file.client_id.clone()), shard) {
+            // One id given for every shard (the profile file is shared): each shard still needs its own.
+            (Some(id), Some(s)) if args.client_id.is_none() => format!("{id}-shard{}", s.k),
+            (Some(id), _) => id,
+            (None, _) => default_id,
+        },
         v5: args.mqtt_version == "5",
         qos1: args.qos == 1,
-        bound: args.buffer.max(1),
-        will_topic: publish::topic(group, "_publisher", "status"),
+        will_topic: format!("{}status", publisher_prefix(group, shard)),
         commands: args.accept_writes.then(|| format!("plcsh/{}/+/set", publish::level(group))),
     })
 }
@@ -128,6 +161,97 @@ pub fn run(cli: &super::Cli, shell: &mut Shell, args: &PublishArgs, style: Style
     }
 }
 
+/// The error and exit status of a broker failure no retry mends.
+fn fatal(f: &Fatal, broker: &str) -> (Error, i32) {
+    match f {
+        Fatal::Auth(why) => (
+            Error::new(ErrorKind::Refused, format!("the broker {broker} refused the credentials ({why})")).hint(
+                "check username under [mqtt] in the profile file (or PLCSH_MQTT_USERNAME) and PLCSH_MQTT_PASSWORD, \
+                 and that the broker's ACL lets this user connect",
+            ),
+            EXIT_AUTH,
+        ),
+        Fatal::Tls(why) => (
+            Error::new(ErrorKind::Link, format!("TLS with the broker {broker} failed ({why})")).hint(
+                "the broker's certificate must verify against ca_file under [mqtt] (its CA, PEM) or the system's roots, \
+                 and name the host in --broker",
+            ),
+            EXIT_BROKER,
+        ),
+        Fatal::NeverReached(why) => (
+            Error::new(
+                ErrorKind::Link,
+                format!(
+                    "no MQTT broker answered at {broker} within {} s of the start ({why})",
+                    broker::FIRST_CONTACT.as_secs()
+                ),
+            )
+            .hint("is the broker running, and are the host and port in --broker right (mqtt:// 1883, mqtts:// 8883)?"),
+            EXIT_BROKER,
+        ),
+    }
+}
+
+/// The members this publisher polls, each with its session opened (no connection yet), and
+/// every operand checked against every member's model: one usage error for all that are
+/// wrong, before anything connects.
+fn members(
+    shell: &mut Shell,
+    fleet: Option<&crate::fleet::Fleet>,
+    shard: Option<Shard>,
+    operands: &[String],
+) -> Result<Vec<Member>> {
+    let texts: Vec<&str> = operands.iter().map(String::as_str).collect();
+    let Some(f) = fleet else {
+        for t in &texts {
+            shell.session.resolve(t)?;
+        }
+        let name = shell.current_device().unwrap_or_else(|_| "plc".into());
+        let mut stand_in = crate::session::Session::new(shell.session.clock.clone());
+        stand_in.interrupt = shell.session.interrupt.clone();
+        let session = std::mem::replace(&mut shell.session, stand_in);
+        return Ok(vec![Member { name, session: Ok(session) }]);
+    };
+    let base = crate::fleet::run::Base::of(&shell.session, Style::default());
+    let stop = shell.session.interrupt.clone();
+    let mut list = Vec::new();
+    // (operand, devices that do not have it, the first error)
+    let mut wrong: Vec<(String, Vec<String>, Error)> = Vec::new();
+    for m in f.members.iter().filter(|m| shard.is_none_or(|s| s.takes(&m.name))) {
+        let session = base.open_session(f, m, stop.clone());
+        if let Ok(s) = &session {
+            for t in &texts {
+                if let Err(e) = s.resolve(t) {
+                    match wrong.iter_mut().find(|(op, ..)| op == t) {
+                        Some((_, devices, _)) => devices.push(m.name.clone()),
+                        None => wrong.push((t.to_string(), vec![m.name.clone()], e)),
+                    }
+                }
+            }
+        }
+        list.push(Member { name: m.name.clone(), session });
+    }
+    if let Some((op, devices, e)) = wrong.into_iter().next() {
+        let on = if devices.len() == list.len() {
+            format!("any member of fleet `{}`", f.name)
+        } else {
+            let mut shown = devices.iter().take(5).cloned().collect::<Vec<_>>().join(", ");
+            if devices.len() > 5 {
+                shown += &format!(" and {} more", devices.len() - 5);
+            }
+            shown
+        };
+        let mut err = Error::usage(format!("`{op}` is not an operand of {on}: {}", e.message)).hint(
+            "nothing was published; fix the operand (plcsh -f FLEET -c 'get OPERAND' shows what each member answers)",
+        );
+        if let Some(h) = e.hint.clone() {
+            err = err.hint(h);
+        }
+        return Err(err);
+    }
+    Ok(list)
+}
+
 fn start(cli: &super::Cli, shell: &mut Shell, args: &PublishArgs, style: Style, out: &mut dyn Write) -> Result<i32> {
     let every = crate::core::literal::parse_option_duration_us(&args.every)
         .ok()
@@ -139,14 +263,18 @@ fn start(cli: &super::Cli, shell: &mut Shell, args: &PublishArgs, style: Style, 
         None => None,
     };
     let group = fleet.as_ref().map_or("single".to_string(), |f| f.name.clone());
-    if fleet.is_none() {
-        let texts: Vec<&str> = args.operands.iter().map(String::as_str).collect();
-        for t in &texts {
-            shell.session.resolve(t)?;
-        }
-    }
-    let cfg = config(cli, args, &group)?;
+    let path = cli.config.clone().or_else(crate::profile::default_path);
+    let file = publish::file_settings(path.as_deref())?;
+    let shard = match (args.shard.as_deref(), fleet.is_some()) {
+        (Some(t), _) => Some(Shard::parse(t)?),
+        (None, true) => file.shard.as_deref().map(Shard::parse).transpose()?,
+        (None, false) => None,
+    };
+    let cfg = config(args, &file, &group, shard)?;
+    let members = members(shell, fleet.as_ref(), shard, &args.operands)?;
+    let single = fleet.is_none();
     let broker_name = format!("{}:{}", cfg.host, cfg.port);
+    let prefix = publisher_prefix(&group, shard);
     let poll = Poll {
         group: group.clone(),
         operands: args.operands.clone(),
@@ -154,131 +282,214 @@ fn start(cli: &super::Cli, shell: &mut Shell, args: &PublishArgs, style: Style, 
         deadband: args.on_change.then(|| args.deadband.unwrap_or(0.0)),
         count: args.count,
     };
+    let names: Vec<String> = members.iter().map(|m| m.name.clone()).collect();
+    // `--accept-writes`: the members by their topic level; every member of the fleet, for
+    // telling "another shard's" from "no such device".
+    let routes: std::collections::HashMap<String, usize> =
+        names.iter().enumerate().map(|(i, n)| (publish::level(n), i)).collect();
+    let everyone: Vec<String> = match &fleet {
+        Some(f) => f.members.iter().map(|m| m.name.clone()).collect(),
+        None => names.clone(),
+    };
+    let outbox = Arc::new(Outbox::new(args.buffer.max(1), members.len()));
     let (notes_tx, notes) = std::sync::mpsc::channel();
-    let (tx, broker_thread) =
-        broker::spawn(cfg, notes_tx).map_err(|e| Error::io("cannot start the MQTT thread").cause(e))?;
+    let broker_thread =
+        broker::spawn(cfg, outbox.clone(), notes_tx).map_err(|e| Error::io("cannot start the MQTT thread").cause(e))?;
     let (seen_tx, seen) = std::sync::mpsc::channel::<Seen>();
     let stop = shell.session.interrupt.clone();
+    let pool = Pool::start(members, poll, outbox.clone(), seen_tx)
+        .map_err(|e| Error::io("cannot start the polling threads").cause(e))?;
     let mut offline: std::collections::BTreeSet<String> = Default::default();
-    let base = crate::fleet::run::Base::of(&shell.session, Style::default());
-    // `--accept-writes`: each device's command channel, by its topic level.
-    let mut routes: std::collections::HashMap<String, std::sync::mpsc::Sender<Vec<u8>>> = Default::default();
-    let mut route = |name: &str| {
-        let (t, r) = std::sync::mpsc::channel::<Vec<u8>>();
-        routes.insert(publish::level(name), t);
-        args.accept_writes.then_some(r)
-    };
-    let single = shell.current_device().unwrap_or_else(|_| "plc".into());
-    let single_rx = route(&single);
-    let member_rx: Vec<_> = fleet.iter().flat_map(|f| f.members.iter()).map(|m| route(&m.name)).collect();
-    std::thread::scope(|scope| {
-        let mut pollers = Vec::new();
-        match &fleet {
-            Some(f) => {
-                let f = Arc::new(f.clone());
-                for ((i, m), rx) in f.members.iter().enumerate().zip(member_rx) {
-                    let (f, base, poll, tx, seen_tx, stop) =
-                        (f.clone(), base.clone(), poll.clone(), tx.clone(), seen_tx.clone(), stop.clone());
-                    let name = m.name.clone();
-                    pollers.push(scope.spawn(move || match base.open(&f, &f.members[i], stop.clone()) {
-                        Ok(mut sh) => publish::poll_device(&mut sh, &name, &poll, &tx, &seen_tx, &stop, rx.as_ref()),
-                        Err(e) => {
-                            let _ = tx.send(ToBroker::Msg(broker::Msg {
-                                topic: publish::topic(&poll.group, &name, "status"),
-                                payload: b"offline".to_vec(),
-                                retain: true,
-                            }));
-                            let _ = seen_tx.send(Seen::Offline(name, e));
-                        }
-                    }));
-                }
-            }
-            None => {
-                let name = single.clone();
-                let (poll, tx, seen_tx, stop) = (poll.clone(), tx.clone(), seen_tx.clone(), stop.clone());
-                let sh = &mut *shell;
-                pollers.push(
-                    scope.spawn(move || {
-                        publish::poll_device(sh, &name, &poll, &tx, &seen_tx, &stop, single_rx.as_ref())
-                    }),
-                );
-            }
+    let mut failed: Option<Fatal> = None;
+    let mut stopped_by_signal = false;
+    let started = Instant::now();
+    let mut next_stats = started + STATS_EVERY;
+    let stats_msg = |outbox: &Outbox, offline: usize, workers: usize| {
+        let (skipped, behind, away) = outbox.totals();
+        let j = json!({"ts": publish::now_ms(), "devices": names.len(), "workers": workers, "queued": outbox.len(),
+            "skipped": skipped, "dropped_behind": behind, "dropped_broker_away": away, "offline": offline,
+            "shard": shard.map(|s| format!("{}/{}", s.k, s.n)), "uptime_s": started.elapsed().as_secs()});
+        Msg {
+            topic: format!("{prefix}stats"),
+            payload: j.to_string().into_bytes(),
+            retain: true,
+            key: None,
+            dev: Outbox::PUBLISHER,
         }
-        drop(seen_tx);
-        // Report what happens while the devices are polled.
-        loop {
-            while let Ok(n) = notes.try_recv() {
-                match n {
-                    Note::Connected => event(out, style, json!({"ok": true, "cmd": "publish", "event": "broker", "state": "connected", "broker": broker_name}), format!("connected to {broker_name}")),
-                    Note::Away(why) => event(out, style, json!({"ok": true, "cmd": "publish", "event": "broker", "state": "away", "broker": broker_name, "reason": why}), format!("broker {broker_name} away ({why}); readings are kept up to --buffer and sent when it returns")),
-                    Note::Command(topic, payload) => {
-                        // plcsh/GROUP/DEVICE/set: to that device's poller (others are not ours).
-                        let device = topic.split('/').nth(2).unwrap_or("");
-                        if let Some(t) = routes.get(device) {
-                            let _ = t.send(payload);
-                        }
+    };
+    // Report what happens while the devices are polled.
+    loop {
+        while let Ok(n) = notes.try_recv() {
+            match n {
+                Note::Connected => event(
+                    out,
+                    style,
+                    json!({"ok": true, "cmd": "publish", "event": "broker", "state": "connected", "broker": broker_name}),
+                    format!("connected to {broker_name}"),
+                ),
+                Note::Away(why) => event(
+                    out,
+                    style,
+                    json!({"ok": true, "cmd": "publish", "event": "broker", "state": "away", "broker": broker_name, "reason": why}),
+                    format!(
+                        "broker {broker_name} away ({why}); readings are kept up to --buffer and sent when it returns"
+                    ),
+                ),
+                Note::Fatal(f) => failed = Some(f),
+                Note::Command(topic, payload) => {
+                    // plcsh/GROUP/DEVICE/set: to that device's poller; another shard's device is
+                    // that shard's; a device of no shard gets its answer from this publisher
+                    // (from shard 1 only, so it is answered once).
+                    let device = topic.split('/').nth(2).unwrap_or("");
+                    if let Some(&i) = routes.get(device) {
+                        pool.command(i, payload);
+                    } else if shard.is_none_or(|s| s.k == 1) && !everyone.iter().any(|n| publish::level(n) == device) {
+                        let reply = publish::writes::unknown_device(device, &group, &everyone, &payload);
+                        outbox.push(Msg {
+                            topic: publish::topic(&group, device, "reply"),
+                            payload: reply.to_string().into_bytes(),
+                            retain: false,
+                            key: None,
+                            dev: Outbox::PUBLISHER,
+                        });
                     }
                 }
             }
-            match seen.recv_timeout(Duration::from_millis(50)) {
-                Ok(Seen::Offline(d, e)) => {
-                    offline.insert(d.clone());
-                    event(
-                        out,
-                        style,
-                        json!({"ok": true, "cmd": "publish", "event": "device", "device": d, "state": "offline", "error": e}),
-                        format!("{d} offline: {e}"),
-                    );
-                }
-                Ok(Seen::Online(d)) => {
-                    offline.remove(&d);
-                    event(
-                        out,
-                        style,
-                        json!({"ok": true, "cmd": "publish", "event": "device", "device": d, "state": "online"}),
-                        format!("{d} answers again"),
-                    );
-                }
-                Err(RecvTimeoutError::Timeout) => {}
-                Err(RecvTimeoutError::Disconnected) => break,
+        }
+        if failed.is_some() {
+            break;
+        }
+        if stop.load(Ordering::SeqCst) {
+            stopped_by_signal = true;
+            break;
+        }
+        match seen.recv_timeout(Duration::from_millis(50)) {
+            Ok(Seen::Offline(d, e)) => {
+                offline.insert(d.clone());
+                event(
+                    out,
+                    style,
+                    json!({"ok": true, "cmd": "publish", "event": "device", "device": d, "state": "offline", "error": e}),
+                    format!("{d} offline: {e}"),
+                );
             }
+            Ok(Seen::Online(d)) => {
+                offline.remove(&d);
+                event(
+                    out,
+                    style,
+                    json!({"ok": true, "cmd": "publish", "event": "device", "device": d, "state": "online"}),
+                    format!("{d} answers again"),
+                );
+            }
+            Err(RecvTimeoutError::Timeout) => {}
+            Err(RecvTimeoutError::Disconnected) => {}
         }
-        for p in pollers {
-            let _ = p.join();
+        if pool.finished() {
+            break;
         }
-    });
+        if Instant::now() >= next_stats {
+            next_stats += STATS_EVERY;
+            outbox.set_stats(stats_msg(&outbox, offline.len(), pool.workers()));
+        }
+    }
+    pool.stop();
+    pool.join();
+    if stopped_by_signal {
+        // A stop is this command's normal end: the exit status says how the delivery went
+        // (a second signal during the delivery counts again).
+        crate::signals::handled();
+        stop.store(false, Ordering::SeqCst);
+    }
+    let mut offline: Vec<String> = pool.offline();
+    offline.sort();
+    if let Some(f) = &failed {
+        outbox.close();
+        let _ = broker_thread.join();
+        let (e, code) = fatal(f, &broker_name);
+        output::report_error(out, style, "publish", &e, None)?;
+        return Ok(code);
+    }
     event(
         out,
         style,
         json!({"ok": true, "cmd": "publish", "event": "polling", "state": "stopped"}),
         "polling stopped; delivering what is queued (the broker has a few seconds to take it)".into(),
     );
-    let _ = tx.send(ToBroker::Stop);
-    drop(tx);
+    outbox.set_stats(stats_msg(&outbox, offline.len(), 0));
+    outbox.close();
     let stats = broker_thread.join().unwrap_or_default();
+    let mut late_fatal = None;
     while let Ok(n) = notes.try_recv() {
-        let Note::Away(why) = n else { continue };
-        event(
-            out,
-            style,
-            json!({"ok": true, "cmd": "publish", "event": "broker", "state": "away", "broker": broker_name, "reason": why}),
-            format!("broker {broker_name} away ({why})"),
-        );
+        match n {
+            Note::Away(why) => event(
+                out,
+                style,
+                json!({"ok": true, "cmd": "publish", "event": "broker", "state": "away", "broker": broker_name, "reason": why}),
+                format!("broker {broker_name} away ({why})"),
+            ),
+            Note::Fatal(f) => late_fatal = Some(f),
+            _ => {}
+        }
     }
-    let ok = stats.dropped == 0 && stats.undelivered == 0 && offline.is_empty();
-    let offline: Vec<String> = offline.into_iter().collect();
+    if let Some(f) = late_fatal.or(stats.fatal.clone()) {
+        let (e, code) = fatal(&f, &broker_name);
+        output::report_error(out, style, "publish", &e, None)?;
+        return Ok(code);
+    }
+    if single {
+        // The session goes back to the shell (its device stays open for what follows).
+        if let Some(s) = pool.take_session(0) {
+            shell.session = s;
+        }
+    }
+    let (skipped, behind, away) = outbox.totals();
+    let dropped = behind + away;
+    // Per device, those that missed anything: {"press7": {"skipped": 3, "dropped_behind": 0, …}}.
+    let mut per_device = serde_json::Map::new();
+    for (i, c) in outbox.counters.iter().enumerate() {
+        let (s, b, a) = (
+            c.skipped.load(Ordering::Relaxed),
+            c.behind.load(Ordering::Relaxed),
+            c.broker_away.load(Ordering::Relaxed),
+        );
+        if s + b + a > 0 {
+            let name = names.get(i).cloned().unwrap_or_else(|| "_publisher".into());
+            per_device.insert(name, json!({"skipped": s, "dropped_behind": b, "dropped_broker_away": a}));
+        }
+    }
+    let ok = dropped == 0 && stats.undelivered == 0 && offline.is_empty();
     let summary = json!({"ok": ok, "cmd": "publish", "group": group, "broker": broker_name, "published": stats.published,
-        "dropped": stats.dropped, "undelivered": stats.undelivered, "reconnects": stats.reconnects, "offline": offline});
+        "dropped": dropped, "dropped_broker_away": away, "dropped_behind": behind, "skipped": skipped,
+        "undelivered": stats.undelivered, "reconnects": stats.reconnects, "offline": offline,
+        "devices": names.len(), "behind": per_device, "shard": shard.map(|s| format!("{}/{}", s.k, s.n))});
     if style.json {
         writeln!(out, "{summary}")?;
     } else {
+        let worst: Vec<String> = {
+            let mut v: Vec<(&String, u64)> = per_device
+                .iter()
+                .map(|(k, v)| {
+                    (
+                        k,
+                        ["skipped", "dropped_behind", "dropped_broker_away"]
+                            .iter()
+                            .map(|f| v[*f].as_u64().unwrap_or(0))
+                            .sum(),
+                    )
+                })
+                .collect();
+            v.sort_by(|a, b| b.1.cmp(&a.1));
+            v.iter().take(5).map(|(k, n)| format!("{k} {n}")).collect()
+        };
         writeln!(
             out,
-            "published {} messages to {broker_name} (group {group}); {} dropped while the broker was away, {} undelivered, {} reconnects{}",
+            "published {} messages to {broker_name} (group {group}{}); {away} dropped while the broker was away, {behind} dropped and {skipped} polls skipped because plcsh fell behind, {} undelivered, {} reconnects{}{}",
             stats.published,
-            stats.dropped,
+            shard.map(|s| format!(", shard {}/{}", s.k, s.n)).unwrap_or_default(),
             stats.undelivered,
             stats.reconnects,
+            if worst.is_empty() { String::new() } else { format!("; most behind: {}", worst.join(", ")) },
             if offline.is_empty() { String::new() } else { format!("; offline: {}", offline.join(", ")) }
         )?;
     }

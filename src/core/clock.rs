@@ -148,22 +148,38 @@ impl Clock {
         Clock::sleep_real(d, interrupt)
     }
 
-    /// Waits `d` of wall time whatever the mode, in slices that notice `interrupt`; false
-    /// when interrupted.
+    /// Waits `d` of wall time whatever the mode; false when `interrupt` was raised. The wait
+    /// is one timed wait on a process-wide condition variable that [`Clock::wake_sleepers`]
+    /// wakes (the signal watcher calls it when a stop signal raised the flag; code that raises
+    /// a flag itself calls it too), not a loop of short sleeps: a sleeping poller costs no
+    /// wake-ups until its time is up.
     pub fn sleep_real(d: Duration, interrupt: &AtomicBool) -> bool {
         let end = Instant::now() + d;
+        let (lock, cv) = &SLEEPERS;
+        let mut gen = lock.lock().unwrap_or_else(|p| p.into_inner());
         loop {
-            if interrupt.load(Ordering::Relaxed) {
+            if interrupt.load(Ordering::SeqCst) {
                 return false;
             }
             let now = Instant::now();
             if now >= end {
                 return true;
             }
-            std::thread::sleep((end - now).min(Duration::from_millis(20)));
+            gen = cv.wait_timeout(gen, end - now).unwrap_or_else(|p| p.into_inner()).0;
         }
     }
+
+    /// Wakes every [`Clock::sleep_real`] so it looks at its interrupt flag again (after a
+    /// flag was raised).
+    pub fn wake_sleepers() {
+        let (lock, cv) = &SLEEPERS;
+        *lock.lock().unwrap_or_else(|p| p.into_inner()) += 1;
+        cv.notify_all();
+    }
 }
+
+/// The sleepers' condition variable and a count of wake-ups (the mutex guards nothing else).
+static SLEEPERS: (Mutex<u64>, std::sync::Condvar) = (Mutex::new(0), std::sync::Condvar::new());
 
 /// Formats a virtual time as `12.345678s`.
 pub fn format_time(d: Duration) -> String {
@@ -204,5 +220,33 @@ mod tests {
         let c = Clock::following();
         let stop = AtomicBool::new(true);
         assert!(!c.sleep(Duration::from_secs(5), &stop));
+    }
+
+    #[test]
+    fn a_raised_flag_ends_a_long_sleep_when_the_sleepers_are_woken() {
+        let stop = Arc::new(AtomicBool::new(false));
+        let s = stop.clone();
+        let t = std::thread::spawn(move || {
+            let started = Instant::now();
+            (Clock::sleep_real(Duration::from_secs(30), &s), started.elapsed())
+        });
+        // Raise the flag and wake until the sleeper has gone (it may not be asleep yet).
+        stop.store(true, Ordering::SeqCst);
+        while !t.is_finished() {
+            Clock::wake_sleepers();
+            std::thread::yield_now();
+        }
+        let (slept, took) = t.join().unwrap();
+        assert!(!slept);
+        assert!(took < Duration::from_secs(5), "{took:?}");
+    }
+
+    #[test]
+    fn a_real_sleep_lasts_its_time_and_no_more_than_a_little() {
+        let never = AtomicBool::new(false);
+        let started = Instant::now();
+        assert!(Clock::sleep_real(Duration::from_millis(30), &never));
+        let took = started.elapsed();
+        assert!(took >= Duration::from_millis(30) && took < Duration::from_millis(500), "{took:?}");
     }
 }

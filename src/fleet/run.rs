@@ -54,16 +54,24 @@ impl Base {
     /// A shell with one device, `m`, open and current: opened through the profile path
     /// ([`crate::profile::open_profile`]), so its write rules and `--read-only` hold.
     pub fn open(&self, fleet: &Fleet, m: &Member, interrupt: Arc<AtomicBool>) -> Result<Shell> {
-        let mut s = Session::new(self.clock.clone());
+        let mut s = self.open_session(fleet, m, interrupt)?;
         s.profiles = self.profiles.clone();
+        let mut shell = Shell::new(s, self.style);
+        crate::script::install(&mut shell);
+        Ok(shell)
+    }
+
+    /// Only the session of [`Base::open`], with the member's device open and current: no Lua
+    /// state and no copy of the profile file (a publisher holds thousands of these at once;
+    /// a copy of the profiles each would hold the whole member list once per member).
+    pub fn open_session(&self, fleet: &Fleet, m: &Member, interrupt: Arc<AtomicBool>) -> Result<Session> {
+        let mut s = Session::new(self.clock.clone());
         s.set_read_only(self.read_only);
         s.interrupt = interrupt;
         let p = fleet.profile_of(m, &self.profiles)?.clone();
         crate::profile::open_profile(&mut s, &m.name, &p)?;
         s.use_device(&m.name)?;
-        let mut shell = Shell::new(s, self.style);
-        crate::script::install(&mut shell);
-        Ok(shell)
+        Ok(s)
     }
 }
 
@@ -131,6 +139,7 @@ pub fn each<T: Send + 'static>(fleet: &Fleet, settings: Settings, stop: &AtomicB
             for i in late {
                 if let Some((start, flag)) = running.remove(&i) {
                     flag.store(true, Ordering::Relaxed);
+                    crate::core::Clock::wake_sleepers();
                     let e = Error::new(ErrorKind::Timeout, format!("no result within {} s", t.as_secs_f64()))
                         .device(name(i))
                         .hint("the device may be off or slow; raise --device-timeout, or check its link alone");
@@ -142,6 +151,7 @@ pub fn each<T: Send + 'static>(fleet: &Fleet, settings: Settings, stop: &AtomicB
             for (_, flag) in running.values() {
                 flag.store(true, Ordering::Relaxed);
             }
+            crate::core::Clock::wake_sleepers();
         }
     }
     results

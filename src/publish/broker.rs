@@ -1,9 +1,15 @@
 //! The MQTT side of `plcsh publish`: one thread with a small tokio runtime that owns the
-//! broker connection (rumqttc; MQTT 3.1.1 or 5). Readings arrive on a channel; they wait in
-//! one bounded queue and leave it, oldest first, only while the broker is connected, so
-//! readings taken while it is away are delivered in order when it returns. Beyond the bound
-//! the oldest are dropped and counted. The connection is retried with backoff (0.1 s doubling
+//! broker connection (rumqttc; MQTT 3.1.1 or 5). Readings wait in the one bounded queue
+//! ([`super::outbox`]) and leave it, oldest first, only while the broker is connected, so
+//! readings taken while it is away are delivered in order when it returns; what a full queue
+//! drops is counted by cause there. The connection is retried with backoff (0.1 s doubling
 //! to 5 s); the publisher's own last will marks it offline.
+//!
+//! Failures that no retry mends end the run instead of being retried for ever: the broker
+//! refusing the credentials (CONNACK "not authorized" or "bad user name or password"), a TLS
+//! certificate it presents that does not verify, and a broker never reached at all within
+//! [`FIRST_CONTACT`] of the start ([`Fatal`]; exit statuses in docs/fleets.md). A broker that
+//! answered once and then went away is an outage: readings are kept and it is retried.
 //!
 //! rumqttc's event loop runs in a task of its own and reports to the queue's owner over a
 //! channel, so nothing waits on an event loop that is not being polled (its `poll` is not
@@ -13,34 +19,37 @@
 //! front of the queue — so nothing taken while the broker was away is lost to a reconnect
 //! (at QoS 1 a message may then arrive twice, as MQTT's "at least once" allows).
 
+use super::outbox::{Msg, Outbox};
 use std::collections::VecDeque;
+use std::sync::Arc;
 use std::time::Duration;
-use tokio::sync::mpsc::{unbounded_channel, UnboundedReceiver, UnboundedSender};
-
-/// One message for the broker.
-#[derive(Clone, Debug)]
-pub struct Msg {
-    pub topic: String,
-    pub payload: Vec<u8>,
-    pub retain: bool,
-}
-
-/// What the pollers send.
-pub enum ToBroker {
-    Msg(Msg),
-    /// Deliver what is queued (for a few seconds at most), then disconnect.
-    Stop,
-}
+use tokio::sync::mpsc::unbounded_channel;
 
 /// What the broker side tells the front end.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Note {
     Connected,
-    /// The broker went away (why), with the readings queued so far.
+    /// The broker went away (why); readings are kept.
     Away(String),
     /// A message on a command topic (`--accept-writes`): topic and payload.
     Command(String, Vec<u8>),
+    /// A failure no retry mends: the run ends with its status.
+    Fatal(Fatal),
 }
+
+/// Why the broker connection cannot be used at all.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Fatal {
+    /// The broker refused the credentials (or their absence).
+    Auth(String),
+    /// The broker's TLS certificate did not verify (or TLS could not start).
+    Tls(String),
+    /// No broker answered within [`FIRST_CONTACT`] of the start.
+    NeverReached(String),
+}
+
+/// How long a broker may take to answer the first time before the run gives up on it.
+pub const FIRST_CONTACT: Duration = Duration::from_secs(10);
 
 /// How to reach the broker.
 #[derive(Clone, Debug)]
@@ -54,8 +63,6 @@ pub struct Config {
     pub client_id: String,
     pub v5: bool,
     pub qos1: bool,
-    /// Readings kept while the broker is away.
-    pub bound: usize,
     /// The publisher's own status topic (its last will says `offline`).
     pub will_topic: String,
     /// The command topic filter subscribed to (`--accept-writes`), if any.
@@ -66,10 +73,11 @@ pub struct Config {
 #[derive(Clone, Debug, Default)]
 pub struct Stats {
     pub published: u64,
-    pub dropped: u64,
     pub reconnects: u64,
     /// Still queued at the end (the broker was away when plcsh stopped).
     pub undelivered: u64,
+    /// Set when the run ended on a failure no retry mends.
+    pub fatal: Option<Fatal>,
 }
 
 enum Loop {
@@ -84,14 +92,17 @@ enum Loop {
 
 const BACKOFF_MIN: Duration = Duration::from_millis(100);
 const BACKOFF_MAX: Duration = Duration::from_secs(5);
+/// Messages taken from the queue at once (one lock for many).
+const BATCH: usize = 256;
 
-/// Starts the broker thread; returns the channel for readings and the thread (its stats).
+/// Starts the broker thread, which takes its messages from `outbox` until it is closed and
+/// empty; returns the thread (its stats).
 pub fn spawn(
     cfg: Config,
+    outbox: Arc<Outbox>,
     notes: std::sync::mpsc::Sender<Note>,
-) -> std::io::Result<(UnboundedSender<ToBroker>, std::thread::JoinHandle<Stats>)> {
-    let (tx, rx) = unbounded_channel();
-    let h = std::thread::Builder::new().name("mqtt".into()).spawn(move || {
+) -> std::io::Result<std::thread::JoinHandle<Stats>> {
+    std::thread::Builder::new().name("mqtt".into()).spawn(move || {
         let rt = match tokio::runtime::Builder::new_current_thread().enable_all().build() {
             Ok(rt) => rt,
             Err(e) => {
@@ -100,12 +111,11 @@ pub fn spawn(
             }
         };
         if cfg.v5 {
-            rt.block_on(v5::run(cfg, rx, notes))
+            rt.block_on(v5::run(cfg, outbox, notes))
         } else {
-            rt.block_on(v4::run(cfg, rx, notes))
+            rt.block_on(v4::run(cfg, outbox, notes))
         }
-    })?;
-    Ok((tx, h))
+    })
 }
 
 fn transport(cfg: &Config) -> rumqttc::Transport {
@@ -116,21 +126,17 @@ fn transport(cfg: &Config) -> rumqttc::Transport {
     }
 }
 
-/// The queue: bounded, oldest dropped first.
-struct Queue {
-    items: VecDeque<Msg>,
-    bound: usize,
-    dropped: u64,
-}
-
-impl Queue {
-    fn push(&mut self, m: Msg) {
-        self.items.push_back(m);
-        while self.items.len() > self.bound.max(1) {
-            self.items.pop_front();
-            self.dropped += 1;
-        }
+/// A connection error that no retry mends, by rumqttc's words for it (the same for MQTT
+/// 3.1.1 and 5): a refused CONNACK for the credentials, or a TLS failure.
+pub fn classify(error: &str) -> Option<Fatal> {
+    if error.contains("NotAuthorized") || error.contains("BadUserNamePassword") {
+        return Some(Fatal::Auth(error.to_string()));
     }
+    let e = error.to_ascii_lowercase();
+    if e.starts_with("tls") || e.contains("certificate") || e.contains("handshake") {
+        return Some(Fatal::Tls(error.to_string()));
+    }
+    None
 }
 
 /// The same loop for MQTT 3.1.1 and 5: the two client APIs differ only in their types.
@@ -142,11 +148,7 @@ macro_rules! broker_loop {
             use $packet as Packet;
             use $qos as QoS;
 
-            pub async fn run(
-                cfg: Config,
-                mut rx: UnboundedReceiver<ToBroker>,
-                notes: std::sync::mpsc::Sender<Note>,
-            ) -> Stats {
+            pub async fn run(cfg: Config, outbox: Arc<Outbox>, notes: std::sync::mpsc::Sender<Note>) -> Stats {
                 let mut opts = <$opts>::new(cfg.client_id.clone(), cfg.host.clone(), cfg.port);
                 opts.set_keep_alive(Duration::from_secs(5));
                 opts.set_transport(transport(&cfg));
@@ -154,7 +156,7 @@ macro_rules! broker_loop {
                     opts.set_credentials(u.clone(), p.clone());
                 }
                 opts.set_last_will($will(cfg.will_topic.clone(), b"offline".to_vec(), QoS::AtLeastOnce, true));
-                let (client, mut eventloop) = <$client>::new(opts, 100);
+                let (client, mut eventloop) = <$client>::new(opts, 1000);
                 let (etx, mut erx) = unbounded_channel::<Loop>();
                 let qos1 = cfg.qos1;
                 tokio::spawn(async move {
@@ -186,37 +188,76 @@ macro_rules! broker_loop {
                     }
                 });
                 let qos = if cfg.qos1 { QoS::AtLeastOnce } else { QoS::AtMostOnce };
-                let mut queue = Queue { items: VecDeque::new(), bound: cfg.bound, dropped: 0 };
                 let mut unconfirmed: VecDeque<Msg> = VecDeque::new();
-                let status = |text: &[u8]| Msg { topic: cfg.will_topic.clone(), payload: text.to_vec(), retain: true };
+                let status = |text: &[u8]| Msg {
+                    topic: cfg.will_topic.clone(),
+                    payload: text.to_vec(),
+                    retain: true,
+                    key: None,
+                    dev: Outbox::PUBLISHER,
+                };
                 let mut stats = Stats::default();
-                let (mut connected, mut was_connected, mut stopping, mut said_offline) = (false, false, false, false);
+                let (mut connected, mut was_connected, mut said_offline) = (false, false, false);
                 let mut away_told = false;
                 let mut deadline = None;
+                let first_contact = tokio::time::Instant::now() + FIRST_CONTACT;
+                let mut last_error = String::from("no answer");
+                let mut batch = Vec::with_capacity(BATCH);
                 loop {
+                    let stopping = outbox.is_closed();
                     if connected {
                         // Oldest first; a full client channel leaves the rest queued for the next turn.
-                        while let Some(m) = queue.items.front() {
-                            if client.try_publish(m.topic.clone(), qos, m.retain, m.payload.clone()).is_err() {
+                        'drain: loop {
+                            batch.clear();
+                            outbox.take(BATCH, &mut batch);
+                            if batch.is_empty() {
                                 break;
                             }
-                            unconfirmed.extend(queue.items.pop_front());
+                            let mut rest = batch.drain(..);
+                            while let Some(m) = rest.next() {
+                                if client.try_publish(m.topic.clone(), qos, m.retain, m.payload.clone()).is_err() {
+                                    outbox.put_back(std::iter::once(m).chain(rest));
+                                    break 'drain;
+                                }
+                                unconfirmed.push_back(m);
+                            }
                         }
-                        if stopping && queue.items.is_empty() && unconfirmed.is_empty() && deadline.is_none() {
+                        if let Some(m) = outbox.take_stats() {
+                            match client.try_publish(m.topic.clone(), qos, m.retain, m.payload.clone()) {
+                                Ok(()) => unconfirmed.push_back(m),
+                                Err(_) => outbox.set_stats(m),
+                            }
+                        }
+                        if stopping
+                            && outbox.is_empty()
+                            && !outbox.has_stats()
+                            && unconfirmed.is_empty()
+                            && deadline.is_none()
+                        {
                             if !said_offline {
                                 said_offline = true;
-                                queue.items.push_back(status(b"offline"));
+                                outbox.push_front(status(b"offline"));
                                 continue;
                             }
                             let _ = client.try_disconnect();
                             deadline = Some(tokio::time::Instant::now() + Duration::from_secs(5));
                         }
+                    } else if stopping && deadline.is_none() {
+                        // Stopping with the broker away: give it a few seconds to return.
+                        deadline = Some(tokio::time::Instant::now() + Duration::from_secs(5));
                     }
-                    let until = deadline.unwrap_or_else(|| tokio::time::Instant::now() + Duration::from_secs(3600));
+                    let never = !was_connected && stats.fatal.is_none();
+                    let until = match deadline {
+                        Some(d) if never => d.min(first_contact),
+                        Some(d) => d,
+                        None if never => first_contact,
+                        None => tokio::time::Instant::now() + Duration::from_secs(3600),
+                    };
                     tokio::select! {
                         e = erx.recv() => match e {
                             Some(Loop::ConnAck(kept)) => {
                                 connected = true;
+                                outbox.set_connected(true);
                                 away_told = false;
                                 if was_connected {
                                     stats.reconnects += 1;
@@ -224,12 +265,10 @@ macro_rules! broker_loop {
                                 was_connected = true;
                                 if !kept {
                                     // A new session: rumqttc dropped what it held; send it again, first.
-                                    while let Some(m) = unconfirmed.pop_back() {
-                                        queue.items.push_front(m);
-                                    }
+                                    outbox.put_back(unconfirmed.drain(..));
                                 }
                                 if !said_offline {
-                                    queue.items.push_front(status(b"online"));
+                                    outbox.push_front(status(b"online"));
                                 }
                                 if let Some(filter) = &cfg.commands {
                                     let _ = client.try_subscribe(filter.clone(), QoS::AtLeastOnce);
@@ -246,27 +285,35 @@ macro_rules! broker_loop {
                                 let _ = notes.send(Note::Command(topic, payload));
                             }
                             Some(Loop::Error(why)) => {
+                                connected = false;
+                                outbox.set_connected(false);
+                                if let Some(f) = classify(&why) {
+                                    let _ = notes.send(Note::Fatal(f.clone()));
+                                    stats.fatal = Some(f);
+                                    break;
+                                }
+                                last_error = why.clone();
                                 if !away_told {
                                     away_told = true;
                                     let _ = notes.send(Note::Away(why));
                                 }
-                                connected = false;
-                                if stopping && deadline.is_none() {
-                                    // Stopping with the broker away: give it a few seconds to return.
-                                    deadline = Some(tokio::time::Instant::now() + Duration::from_secs(5));
-                                }
                             }
                             None => break,
                         },
-                        m = rx.recv(), if !stopping => match m {
-                            Some(ToBroker::Msg(m)) => queue.push(m),
-                            Some(ToBroker::Stop) | None => stopping = true,
-                        },
-                        _ = tokio::time::sleep_until(until), if deadline.is_some() => break,
+                        _ = outbox.wake.notified() => {}
+                        _ = tokio::time::sleep_until(until) => {
+                            if !was_connected {
+                                let f = Fatal::NeverReached(last_error.clone());
+                                let _ = notes.send(Note::Fatal(f.clone()));
+                                stats.fatal = Some(f);
+                            }
+                            if deadline.is_some() || stats.fatal.is_some() {
+                                break;
+                            }
+                        }
                     }
                 }
-                stats.dropped = queue.dropped;
-                stats.undelivered = (queue.items.len() + unconfirmed.len()) as u64;
+                stats.undelivered = (outbox.len() + unconfirmed.len()) as u64;
                 stats
             }
         }
@@ -307,13 +354,18 @@ mod tests {
     use super::*;
 
     #[test]
-    fn the_queue_keeps_the_newest_in_order_and_counts_the_dropped() {
-        let mut q = Queue { items: VecDeque::new(), bound: 3, dropped: 0 };
-        for i in 0..5 {
-            q.push(Msg { topic: format!("t{i}"), payload: Vec::new(), retain: false });
+    fn refused_credentials_and_certificates_are_told_from_an_outage() {
+        for e in [
+            "Connection refused, return code: `NotAuthorized`",
+            "Connection refused, return code: `BadUserNamePassword`",
+        ] {
+            assert!(matches!(classify(e), Some(Fatal::Auth(_))), "{e}");
         }
-        let kept: Vec<&str> = q.items.iter().map(|m| m.topic.as_str()).collect();
-        assert_eq!(kept, ["t2", "t3", "t4"]);
-        assert_eq!(q.dropped, 2);
+        for e in ["TLS: I/O: invalid peer certificate: UnknownIssuer", "TLS: Web Pki: certificate expired"] {
+            assert!(matches!(classify(e), Some(Fatal::Tls(_))), "{e}");
+        }
+        for e in ["I/O: Connection refused (os error 111)", "Network timeout", "I/O: connection reset by peer"] {
+            assert_eq!(classify(e), None, "{e}");
+        }
     }
 }

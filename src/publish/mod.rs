@@ -14,19 +14,21 @@
 //! publisher's own state, `offline` also as its last will. With `--accept-writes`,
 //! `plcsh/<GROUP>/<DEVICE>/set` takes writes and `…/reply` answers them ([`writes`]).
 //!
-//! Each device is polled on a thread of its own with the same reader as `get` (one batch per
-//! poll, coalesced by the driver); the broker connection is one thread ([`broker`]).
+//! `plcsh/<GROUP>/_publisher/stats` (retained, every few seconds and at the end) sums up
+//! what the publisher did and why readings went missing ([`outbox`]'s counters).
+//!
+//! The devices are polled on a fixed-rate schedule by a small pool of threads ([`poller`])
+//! with the same reader as `get` (one batch per poll, coalesced by the driver); values wait
+//! in one bounded queue ([`outbox`]); the broker connection is one thread ([`broker`]).
+//! With `--shard K/N` a publisher takes its part of a fleet ([`Shard`]).
 
 pub mod broker;
+pub mod outbox;
+pub mod poller;
 pub mod writes;
 
 use crate::core::{Error, Result, Value};
-use crate::shell::Shell;
-use broker::{Msg, ToBroker};
-use std::collections::HashMap;
-use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Duration;
-use tokio::sync::mpsc::UnboundedSender;
 
 /// How a device is polled.
 #[derive(Clone, Debug)]
@@ -50,7 +52,7 @@ pub fn topic(group: &str, device: &str, leaf: &str) -> String {
 }
 
 /// Milliseconds since the Unix epoch (UTC), now.
-fn now_ms() -> u64 {
+pub(crate) fn now_ms() -> u64 {
     std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map(|d| d.as_millis() as u64).unwrap_or(0)
 }
 
@@ -77,82 +79,45 @@ pub enum Seen {
     Online(String),
 }
 
-/// Polls one device (the shell's current one) until `stop` or the count; sends its messages.
-pub fn poll_device(
-    shell: &mut Shell,
-    device: &str,
-    p: &Poll,
-    tx: &UnboundedSender<ToBroker>,
-    seen: &std::sync::mpsc::Sender<Seen>,
-    stop: &AtomicBool,
-    commands: Option<&std::sync::mpsc::Receiver<Vec<u8>>>,
-) {
-    let texts: Vec<&str> = p.operands.iter().map(String::as_str).collect();
-    let mut last: HashMap<String, Value> = HashMap::new();
-    let mut online: Option<bool> = None;
-    let send = |topic: String, payload: Vec<u8>| {
-        let _ = tx.send(ToBroker::Msg(Msg { topic, payload, retain: true }));
-    };
-    let mut seq = 0u64;
-    loop {
-        if stop.load(Ordering::Relaxed) || p.count.is_some_and(|c| seq >= c) {
-            break;
+/// `--shard K/N`: this publisher's part of a fleet split over N publishers. A member belongs
+/// to shard `FNV-1a(name) mod N + 1`: the parts are disjoint, together they are the fleet,
+/// and a member stays in its part whatever the order of the list and whatever members are
+/// added or removed (only the new ones find a part). Each shard has its own client id
+/// (`plcsh-GROUP-shardK-PID` by default) and last will (`plcsh/GROUP/_publisher/shardK/status`),
+/// and all publish one topic tree.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Shard {
+    pub k: u32,
+    pub n: u32,
+}
+
+impl Shard {
+    pub fn parse(text: &str) -> Result<Shard> {
+        let bad = || {
+            Error::usage(format!("--shard {text} is not K/N"))
+                .hint("e.g. --shard 1/3, --shard 2/3 and --shard 3/3 on three publishers (1 <= K <= N)")
+        };
+        let (k, n) = text.split_once('/').ok_or_else(bad)?;
+        let (k, n) = (k.trim().parse::<u32>().map_err(|_| bad())?, n.trim().parse::<u32>().map_err(|_| bad())?);
+        if n == 0 || k == 0 || k > n {
+            return Err(bad());
         }
-        seq += 1;
-        let started = std::time::Instant::now();
-        // Writes from the broker (`--accept-writes`) first, so this poll shows them.
-        while let Some(payload) = commands.and_then(|c| c.try_recv().ok()) {
-            let reply = writes::apply(shell, device, &payload);
-            let _ = tx.send(ToBroker::Msg(Msg {
-                topic: topic(&p.group, device, "reply"),
-                payload: reply.to_string().into_bytes(),
-                retain: false,
-            }));
+        Ok(Shard { k, n })
+    }
+
+    /// Whether member `name` is this shard's.
+    pub fn takes(&self, name: &str) -> bool {
+        let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+        for b in name.bytes() {
+            h ^= u64::from(b);
+            h = h.wrapping_mul(0x0100_0000_01b3);
         }
-        match shell.session.get(&texts) {
-            Ok(readings) => {
-                let ts = now_ms();
-                if online != Some(true) {
-                    // Back (or first): every value is published fresh.
-                    last.clear();
-                    send(topic(&p.group, device, "status"), b"online".to_vec());
-                    if online.is_some() {
-                        let _ = seen.send(Seen::Online(device.to_string()));
-                    }
-                    online = Some(true);
-                }
-                for (_, r) in readings {
-                    if let Some(db) = p.deadband {
-                        if !changed(last.get(&r.operand), &r.value, db) {
-                            continue;
-                        }
-                    }
-                    let payload = serde_json::json!({"value": r.value, "type": r.dtype, "ts": ts, "seq": seq,
-                        "device": device, "operand": r.operand});
-                    send(topic(&p.group, device, &r.operand), payload.to_string().into_bytes());
-                    last.insert(r.operand.clone(), r.value);
-                }
-            }
-            Err(e) => {
-                if online != Some(false) {
-                    send(topic(&p.group, device, "status"), b"offline".to_vec());
-                    let _ = seen.send(Seen::Offline(device.to_string(), e));
-                    online = Some(false);
-                }
-            }
-        }
-        if p.count.is_some_and(|c| seq >= c) {
-            break;
-        }
-        let rest = p.every.saturating_sub(started.elapsed());
-        if !crate::core::Clock::sleep_real(rest, &shell.session.interrupt) {
-            break;
-        }
+        (h % u64::from(self.n)) as u32 + 1 == self.k
     }
 }
 
 /// The `[mqtt]` section of the profile file: `url`, `username`, `password`, `ca_file`,
-/// `client_id`. PLCSH_MQTT_USERNAME and PLCSH_MQTT_PASSWORD override the file's.
+/// `client_id`, `shard`. PLCSH_MQTT_USERNAME and PLCSH_MQTT_PASSWORD override the file's.
 #[derive(Clone, Debug, Default, serde::Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct FileSettings {
@@ -161,6 +126,8 @@ pub struct FileSettings {
     pub password: Option<String>,
     pub ca_file: Option<std::path::PathBuf>,
     pub client_id: Option<String>,
+    /// This host's part of a fleet (`"2/3"`), as `--shard`.
+    pub shard: Option<String>,
 }
 
 #[derive(serde::Deserialize)]
@@ -231,6 +198,25 @@ mod tests {
         assert!(changed(Some(&a), &b, 0.0), "deadband 0: any change");
         assert!(!changed(Some(&a), &a, 0.0));
         assert!(changed(Some(&Value::Bool(false)), &Value::Bool(true), 0.0));
+    }
+
+    #[test]
+    fn shards_split_a_fleet_into_disjoint_parts_whatever_its_order() {
+        let names: Vec<String> = (1..=500).map(|i| format!("press{i}")).collect();
+        let shards: Vec<Shard> = (1..=3).map(|k| Shard::parse(&format!("{k}/3")).unwrap()).collect();
+        let mut sizes = [0; 3];
+        for n in &names {
+            let owners: Vec<usize> = (0..3).filter(|&k| shards[k].takes(n)).collect();
+            assert_eq!(owners.len(), 1, "{n} belongs to exactly one shard: {owners:?}");
+            sizes[owners[0]] += 1;
+        }
+        assert!(sizes.iter().all(|&s| s > 120), "roughly even: {sizes:?}");
+        // The part depends on the name alone: the same in any order, with any other members.
+        assert!(names.iter().filter(|n| shards[0].takes(n)).all(|n| Shard { k: 1, n: 3 }.takes(n)));
+        assert!(Shard::parse("1/1").unwrap().takes("anything"));
+        for bad in ["0/3", "4/3", "1/0", "3", "a/b", "1/3/4"] {
+            assert!(Shard::parse(bad).is_err(), "{bad}");
+        }
     }
 
     #[test]

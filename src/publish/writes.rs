@@ -10,8 +10,8 @@
 //! profile does not list".
 
 use crate::core::{Error, ErrorKind};
+use crate::session::Session;
 use crate::session::SetItem;
-use crate::shell::Shell;
 use serde_json::{json, Value as Json};
 
 /// The longest command payload read (a write is a few dozen bytes).
@@ -46,8 +46,8 @@ pub fn parse(payload: &[u8]) -> Result<Command, String> {
     Ok(Command { operand: operand.to_string(), value, id: o.get("id").cloned().unwrap_or(Json::Null) })
 }
 
-/// Applies (or refuses) one command on `device`, the shell's current device; returns the reply.
-pub fn apply(shell: &mut Shell, device: &str, payload: &[u8]) -> Json {
+/// Applies (or refuses) one command on `device`, the session's current device; returns the reply.
+pub fn apply(session: &mut Session, device: &str, payload: &[u8]) -> Json {
     let cmd = match parse(payload) {
         Ok(c) => c,
         Err(m) => return json!({"ok": false, "device": device, "error": {"kind": "syntax", "message": m}}),
@@ -56,8 +56,8 @@ pub fn apply(shell: &mut Shell, device: &str, payload: &[u8]) -> Json {
         json!({"ok": false, "device": device, "operand": cmd.operand, "value": cmd.value, "id": cmd.id,
             "error": {"kind": e.kind.name(), "message": e.message.clone()}})
     };
-    let rules = shell.session.entries().iter().find(|e| e.name == device).and_then(|e| e.guard.clone());
-    let refusal = if shell.session.read_only() {
+    let rules = session.entries().iter().find(|e| e.name == device).and_then(|e| e.guard.clone());
+    let refusal = if session.read_only() {
         Some("the session is read-only (--read-only)".to_string())
     } else {
         match &rules {
@@ -73,7 +73,7 @@ pub fn apply(shell: &mut Shell, device: &str, payload: &[u8]) -> Json {
         return refuse(Error::new(ErrorKind::Usage, format!("write refused: {m}")));
     }
     let item = SetItem { operand: cmd.operand.clone(), value: cmd.value.clone(), column: 0, value_column: 0 };
-    match shell.session.set(&[item]) {
+    match session.set(&[item]) {
         Ok(w) => {
             let written: Vec<Json> =
                 w.iter().map(|(_, r)| json!({"operand": r.operand, "value": r.value, "type": r.dtype})).collect();
@@ -81,6 +81,41 @@ pub fn apply(shell: &mut Shell, device: &str, payload: &[u8]) -> Json {
         }
         Err(e) => refuse(e),
     }
+}
+
+/// The reply to a write for a device that is no member of the fleet (`plcsh/GROUP/pressX/set`):
+/// an error naming the members, the closest names first.
+pub fn unknown_device(device: &str, group: &str, members: &[String], payload: &[u8]) -> Json {
+    let mut near: Vec<(usize, &String)> = members.iter().map(|m| (distance(device, m), m)).collect();
+    near.sort();
+    let close: Vec<&str> =
+        near.iter().filter(|(d, _)| *d <= 2.max(device.len() / 3)).take(3).map(|(_, m)| m.as_str()).collect();
+    let mut listed: Vec<&str> = members.iter().take(10).map(String::as_str).collect();
+    if members.len() > 10 {
+        listed.push("…");
+    }
+    let mut message = format!("`{device}` is no device of `{group}` (members: {})", listed.join(", "));
+    if !close.is_empty() {
+        message += &format!("; did you mean {}?", close.join(", "));
+    }
+    let id = parse(payload).map(|c| c.id).unwrap_or(Json::Null);
+    json!({"ok": false, "device": device, "id": id, "error": {"kind": "usage", "message": message}})
+}
+
+/// Levenshtein distance (names are short).
+fn distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut prev = row[0];
+        row[0] = i + 1;
+        for (j, cb) in b.iter().enumerate() {
+            let cur = row[j + 1];
+            row[j + 1] = (prev + usize::from(ca != *cb)).min(row[j] + 1).min(cur + 1);
+            prev = cur;
+        }
+    }
+    row[b.len()]
 }
 
 #[cfg(test)]
@@ -99,5 +134,17 @@ mod tests {
             assert!(parse(bad).is_err(), "{}", String::from_utf8_lossy(bad));
         }
         assert!(parse(&vec![b' '; MAX_PAYLOAD + 1]).is_err());
+    }
+
+    #[test]
+    fn a_write_for_no_member_names_the_members_and_the_closest() {
+        let members: Vec<String> = ["press1", "press2", "oven"].iter().map(|s| s.to_string()).collect();
+        let r = unknown_device("presX", "line", &members, br#"{"operand":"VW0","value":1,"id":9}"#);
+        assert_eq!(r["ok"], false);
+        assert_eq!(r["id"], 9);
+        let m = r["error"]["message"].as_str().unwrap();
+        assert!(m.contains("press1, press2, oven") && m.contains("did you mean press1, press2?"), "{m}");
+        let far = unknown_device("zzzzzzzz", "line", &members, b"{}");
+        assert!(!far["error"]["message"].as_str().unwrap().contains("did you mean"));
     }
 }

@@ -1,0 +1,518 @@
+//! Polling many devices on a fixed-rate schedule with a small pool of threads.
+//!
+//! **The model.** Every device has a schedule: poll k is due at `start + phase + k·every`
+//! (the phase spreads the devices over one period so they do not all fire at once). The due
+//! instants of all devices sit in one binary heap; a pool of worker threads takes the
+//! earliest due device, waits (a timed wait on a condition variable, no sleep slicing) until
+//! its time, polls it with the same reader as `get`, queues the values ([`super::outbox`])
+//! and puts the device back with its next due instant. A device is held by one worker at a
+//! time, so its polls never overlap and stay in order.
+//!
+//! **Late polls.** The next poll is always the next slot of the schedule, never "every after
+//! the last poll started", so the rate does not drift. When a poll (or the pool) ran so late
+//! that whole slots have passed, those slots are skipped — the next poll reads the newest
+//! values — and counted per device as `skipped`; `seq` in the payload is the slot number, so
+//! a historian sees the gap.
+//!
+//! **Why a pool and not a thread per device.** The `Device` interface is synchronous; a
+//! thread per device (the first design) costs a stack and a wake-up per poll per device and,
+//! past about 800 devices at 10 Hz on two cores, spent more time switching than polling. The
+//! pool starts with two threads per core (at least 4); a device that is slow to answer
+//! holds only the worker polling it, and when a due poll finds no idle worker and is already
+//! half a period late, the pool grows by one (up to [`MAX_WORKERS`]), so a few silent
+//! devices waiting out their timeouts do not hold the others. Async transports would avoid
+//! even that but would mean a second implementation of every driver; measured in
+//! BENCHMARKS.md ("Fleet publishing at scale").
+//!
+//! **What a device costs.** A device is a [`Session`] with one open device, no Lua state and
+//! no copy of the profile file (the fleet's member list is not copied into every member),
+//! and the topics and JSON pieces of its operands, built once.
+
+use super::outbox::{Msg, Outbox};
+use super::{changed, now_ms, Poll, Seen};
+use crate::core::{Error, Value};
+use crate::session::Session;
+use std::cmp::Reverse;
+use std::collections::{BinaryHeap, HashMap};
+use std::fmt::Write as _;
+use std::sync::atomic::Ordering;
+use std::sync::{Arc, Condvar, Mutex};
+use std::time::{Duration, Instant};
+
+/// The most worker threads one publisher grows to.
+pub const MAX_WORKERS: usize = 64;
+
+/// One device to poll: its name and its session (or why it could not be opened).
+pub struct Member {
+    pub name: String,
+    pub session: std::result::Result<Session, Error>,
+}
+
+/// One operand's topic and the pieces of its payload, built once.
+struct Leaf {
+    topic: String,
+    /// `,"device":"NAME","operand":"OP"}` — the payload's tail.
+    tail: String,
+    key: u32,
+}
+
+struct Dev {
+    name: String,
+    session: std::result::Result<Session, Error>,
+    /// The operands' leaves, by the operand's name as read.
+    leaves: HashMap<String, Leaf>,
+    status_topic: String,
+    last: HashMap<String, Value>,
+    online: Option<bool>,
+    /// The next slot of the schedule (0-based).
+    slot: u64,
+    phase: Duration,
+}
+
+struct Sched {
+    heap: BinaryHeap<Reverse<(Instant, u32)>>,
+    stop: bool,
+    idle: usize,
+    workers: usize,
+    /// Devices still on the schedule (not finished their `--count`).
+    live: usize,
+}
+
+/// The pool, its devices and their schedule.
+pub struct Pool {
+    devs: Vec<Mutex<Dev>>,
+    /// Writes from the broker waiting for their device's next poll (`--accept-writes`).
+    commands: Vec<Mutex<Vec<Vec<u8>>>>,
+    sched: Mutex<Sched>,
+    cv: Condvar,
+    outbox: Arc<Outbox>,
+    seen: Mutex<std::sync::mpsc::Sender<Seen>>,
+    poll: Poll,
+    texts: Vec<String>,
+    start: Instant,
+    threads: Mutex<Vec<std::thread::JoinHandle<()>>>,
+}
+
+/// The first key of device `i`'s topics (its status; its operands follow).
+fn key_base(i: usize, operands: usize) -> u32 {
+    (i * (operands + 1)) as u32
+}
+
+impl Pool {
+    /// Starts polling `members` (their order is the fleet's); values go to `outbox`, device
+    /// state changes to `seen`.
+    pub fn start(
+        members: Vec<Member>,
+        poll: Poll,
+        outbox: Arc<Outbox>,
+        seen: std::sync::mpsc::Sender<Seen>,
+    ) -> std::io::Result<Arc<Pool>> {
+        let n = members.len().max(1);
+        let start = Instant::now();
+        let every = poll.every;
+        let mut heap = BinaryHeap::new();
+        let devs: Vec<Mutex<Dev>> = members
+            .into_iter()
+            .enumerate()
+            .map(|(i, m)| {
+                let phase = every.mul_f64(i as f64 / n as f64);
+                heap.push(Reverse((start + phase, i as u32)));
+                Mutex::new(Dev {
+                    status_topic: super::topic(&poll.group, &m.name, "status"),
+                    name: m.name,
+                    session: m.session,
+                    leaves: HashMap::new(),
+                    last: HashMap::new(),
+                    online: None,
+                    slot: 0,
+                    phase,
+                })
+            })
+            .collect();
+        let count = devs.len();
+        let workers = count.min((2 * std::thread::available_parallelism().map_or(2, |n| n.get())).max(4));
+        let pool = Arc::new(Pool {
+            commands: (0..count).map(|_| Mutex::new(Vec::new())).collect(),
+            devs,
+            sched: Mutex::new(Sched { heap, stop: false, idle: 0, workers: 0, live: count }),
+            cv: Condvar::new(),
+            outbox,
+            seen: Mutex::new(seen),
+            texts: poll.operands.clone(),
+            poll,
+            start,
+            threads: Mutex::new(Vec::new()),
+        });
+        for _ in 0..workers {
+            pool.spawn_worker()?;
+        }
+        Ok(pool)
+    }
+
+    fn lock(&self) -> std::sync::MutexGuard<'_, Sched> {
+        self.sched.lock().unwrap_or_else(|p| p.into_inner())
+    }
+
+    fn spawn_worker(self: &Arc<Self>) -> std::io::Result<()> {
+        let me = self.clone();
+        self.lock().workers += 1;
+        let h = std::thread::Builder::new().name("publish".into()).spawn(move || me.work());
+        match h {
+            Ok(h) => {
+                self.threads.lock().unwrap_or_else(|p| p.into_inner()).push(h);
+                Ok(())
+            }
+            Err(e) => {
+                self.lock().workers -= 1;
+                Err(e)
+            }
+        }
+    }
+
+    /// Queues a write for device `i`, applied before its next poll.
+    pub fn command(&self, i: usize, payload: Vec<u8>) {
+        if let Some(c) = self.commands.get(i) {
+            c.lock().unwrap_or_else(|p| p.into_inner()).push(payload);
+        }
+    }
+
+    /// Stops the schedule: workers finish the poll they are in and end.
+    pub fn stop(&self) {
+        self.lock().stop = true;
+        self.cv.notify_all();
+    }
+
+    /// True when every device finished its `--count` (or the pool was stopped and its
+    /// workers are gone).
+    pub fn finished(&self) -> bool {
+        let g = self.lock();
+        g.live == 0 || (g.stop && g.workers == 0)
+    }
+
+    /// Waits for the workers to end (after [`Pool::stop`] or the last `--count`).
+    pub fn join(&self) {
+        loop {
+            let Some(h) = self.threads.lock().unwrap_or_else(|p| p.into_inner()).pop() else { return };
+            let _ = h.join();
+        }
+    }
+
+    /// Devices that are offline (or never opened) now.
+    pub fn offline(&self) -> Vec<String> {
+        self.devs
+            .iter()
+            .filter_map(|d| {
+                let d = d.lock().unwrap_or_else(|p| p.into_inner());
+                (d.online == Some(false)).then(|| d.name.clone())
+            })
+            .collect()
+    }
+
+    /// Device `i`'s session back (after the pool has stopped), for the single device's shell.
+    pub fn take_session(&self, i: usize) -> Option<Session> {
+        let mut d = self.devs.get(i)?.lock().unwrap_or_else(|p| p.into_inner());
+        let gone = Err(Error::state("the session was handed back"));
+        std::mem::replace(&mut d.session, gone).ok()
+    }
+
+    /// Worker threads running now.
+    pub fn workers(&self) -> usize {
+        self.lock().workers
+    }
+
+    fn work(self: Arc<Self>) {
+        let every = self.poll.every;
+        loop {
+            let mut g = self.lock();
+            let i = loop {
+                if g.stop || g.live == 0 {
+                    g.workers -= 1;
+                    drop(g);
+                    self.cv.notify_all();
+                    return;
+                }
+                let now = Instant::now();
+                match g.heap.peek() {
+                    Some(&Reverse((due, i))) if due <= now => {
+                        g.heap.pop();
+                        // Late, and nobody idle to take the next one: a worker is held by a
+                        // slow device; one more worker keeps the others on time.
+                        if now - due > every / 2 && g.idle == 0 && g.workers < MAX_WORKERS && g.workers < g.live {
+                            drop(g);
+                            let _ = self.spawn_worker();
+                            g = self.lock();
+                        }
+                        break i as usize;
+                    }
+                    Some(&Reverse((due, _))) => {
+                        g.idle += 1;
+                        g = self.cv.wait_timeout(g, due - now).unwrap_or_else(|p| p.into_inner()).0;
+                        g.idle -= 1;
+                    }
+                    None => {
+                        g.idle += 1;
+                        g = self.cv.wait(g).unwrap_or_else(|p| p.into_inner());
+                        g.idle -= 1;
+                    }
+                }
+            };
+            drop(g);
+            let next = self.poll_one(i);
+            let mut g = self.lock();
+            match next {
+                Some(due) => {
+                    let earliest = g.heap.peek().is_none_or(|Reverse((d, _))| due < *d);
+                    g.heap.push(Reverse((due, i as u32)));
+                    if earliest && g.idle > 0 {
+                        self.cv.notify_one();
+                    }
+                }
+                None => {
+                    g.live -= 1;
+                    if g.live == 0 {
+                        self.cv.notify_all();
+                    }
+                }
+            }
+        }
+    }
+
+    fn send(&self, m: Msg) {
+        self.outbox.push(m);
+    }
+
+    fn tell(&self, s: Seen) {
+        let _ = self.seen.lock().unwrap_or_else(|p| p.into_inner()).send(s);
+    }
+
+    /// Polls device `i` once (writes first); returns its next due instant, `None` when done.
+    fn poll_one(&self, i: usize) -> Option<Instant> {
+        let mut guard = self.devs[i].lock().unwrap_or_else(|p| p.into_inner());
+        let d = &mut *guard;
+        let p = &self.poll;
+        let dev = i as u32;
+        let base = key_base(i, self.texts.len());
+        let session = match &mut d.session {
+            Ok(s) => s,
+            Err(e) => {
+                // Never opened: offline once, and off the schedule.
+                self.send(Msg {
+                    topic: d.status_topic.clone(),
+                    payload: b"offline".to_vec(),
+                    retain: true,
+                    key: Some(base),
+                    dev,
+                });
+                d.online = Some(false);
+                self.tell(Seen::Offline(d.name.clone(), e.clone()));
+                return None;
+            }
+        };
+        d.slot += 1;
+        let seq = d.slot;
+        // Writes from the broker (`--accept-writes`) first, so this poll shows them.
+        let cmds = std::mem::take(&mut *self.commands[i].lock().unwrap_or_else(|p| p.into_inner()));
+        for payload in cmds {
+            let reply = super::writes::apply(session, &d.name, &payload);
+            self.send(Msg {
+                topic: super::topic(&p.group, &d.name, "reply"),
+                payload: reply.to_string().into_bytes(),
+                retain: false,
+                key: None,
+                dev,
+            });
+        }
+        let texts: Vec<&str> = self.texts.iter().map(String::as_str).collect();
+        match session.get(&texts) {
+            Ok(readings) => {
+                let ts = now_ms();
+                if d.online != Some(true) {
+                    // Back (or first): every value is published fresh.
+                    d.last.clear();
+                    self.send(Msg {
+                        topic: d.status_topic.clone(),
+                        payload: b"online".to_vec(),
+                        retain: true,
+                        key: Some(base),
+                        dev,
+                    });
+                    if d.online.is_some() {
+                        self.tell(Seen::Online(d.name.clone()));
+                    }
+                    d.online = Some(true);
+                }
+                let mut payload = String::with_capacity(160);
+                for (_, r) in readings {
+                    if let Some(db) = p.deadband {
+                        if !changed(d.last.get(&r.operand), &r.value, db) {
+                            continue;
+                        }
+                    }
+                    let next_key = base + 1 + d.leaves.len() as u32;
+                    let leaf = d.leaves.entry(r.operand.clone()).or_insert_with(|| Leaf {
+                        topic: super::topic(&p.group, &d.name, &r.operand),
+                        tail: format!(
+                            ",\"device\":{},\"operand\":{}}}",
+                            serde_json::Value::from(d.name.as_str()),
+                            serde_json::Value::from(r.operand.as_str())
+                        ),
+                        key: next_key,
+                    });
+                    payload.clear();
+                    payload.push_str("{\"value\":");
+                    let value = serde_json::to_string(&r.value).unwrap_or_else(|_| "null".into());
+                    let dtype = serde_json::to_string(&r.dtype).unwrap_or_else(|_| "null".into());
+                    let _ = write!(payload, "{value},\"type\":{dtype},\"ts\":{ts},\"seq\":{seq}{}", leaf.tail);
+                    self.send(Msg {
+                        topic: leaf.topic.clone(),
+                        payload: payload.as_bytes().to_vec(),
+                        retain: true,
+                        key: Some(leaf.key),
+                        dev,
+                    });
+                    if p.deadband.is_some() {
+                        d.last.insert(r.operand, r.value);
+                    }
+                }
+            }
+            // A stop (Ctrl-C) that cut a read short says nothing about the device.
+            Err(e) if e.kind == crate::core::ErrorKind::Interrupted => {}
+            Err(e) => {
+                if d.online != Some(false) {
+                    self.send(Msg {
+                        topic: d.status_topic.clone(),
+                        payload: b"offline".to_vec(),
+                        retain: true,
+                        key: Some(base),
+                        dev,
+                    });
+                    self.tell(Seen::Offline(d.name.clone(), e));
+                    d.online = Some(false);
+                }
+            }
+        }
+        if p.count.is_some_and(|c| d.slot >= c) {
+            return None;
+        }
+        // The next slot; slots already a whole period past are skipped (the next poll reads
+        // the newest values) and counted.
+        let every = p.every;
+        let due = |slot: u64| self.start + d.phase + every.saturating_mul(slot.min(u32::MAX as u64) as u32);
+        let now = Instant::now();
+        let mut next = due(d.slot);
+        if next + every <= now {
+            let behind = ((now - next).as_nanos() / every.as_nanos().max(1)) as u64;
+            let behind = p.count.map_or(behind, |c| behind.min(c.saturating_sub(d.slot)));
+            d.slot += behind;
+            self.outbox.of(dev).skipped.fetch_add(behind, Ordering::Relaxed);
+            if p.count.is_some_and(|c| d.slot >= c) {
+                return None;
+            }
+            next = due(d.slot);
+        }
+        Some(next)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn members(n: usize) -> Vec<Member> {
+        (0..n)
+            .map(|i| {
+                let mut s = Session::new(crate::core::Clock::following());
+                s.open(&format!("d{i}"), "sim:K205-16DT").unwrap();
+                Member { name: format!("d{i}"), session: Ok(s) }
+            })
+            .collect()
+    }
+
+    fn poll(every_ms: u64, count: u64) -> Poll {
+        Poll {
+            group: "g".into(),
+            operands: vec!["VW0".into(), "VW2".into()],
+            every: Duration::from_millis(every_ms),
+            deadband: None,
+            count: Some(count),
+        }
+    }
+
+    fn seqs(outbox: &Outbox, device: &str) -> Vec<u64> {
+        let mut all = Vec::new();
+        outbox.take(usize::MAX, &mut all);
+        all.iter()
+            .filter(|m| m.topic == format!("plcsh/g/{device}/VW0"))
+            .map(|m| serde_json::from_slice::<serde_json::Value>(&m.payload).unwrap()["seq"].as_u64().unwrap())
+            .collect()
+    }
+
+    #[test]
+    fn every_device_is_polled_on_its_slots_in_order_by_a_few_threads() {
+        let outbox = Arc::new(Outbox::new(100_000, 40));
+        let (tx, _rx) = std::sync::mpsc::channel();
+        let started = Instant::now();
+        let pool = Pool::start(members(40), poll(20, 5), outbox.clone(), tx).unwrap();
+        pool.join();
+        let took = started.elapsed();
+        assert!(pool.finished());
+        assert!(pool.workers() == 0, "the workers end when every device is done");
+        // 5 slots 20 ms apart: 80 ms of schedule at least, and not much more.
+        assert!(took >= Duration::from_millis(80) && took < Duration::from_secs(5), "{took:?}");
+        assert_eq!(outbox.totals().0, 0, "nothing skipped");
+        let mut all = Vec::new();
+        outbox.take(usize::MAX, &mut all);
+        for d in 0..40 {
+            let topic = format!("plcsh/g/d{d}/VW0");
+            let s: Vec<u64> = all
+                .iter()
+                .filter(|m| m.topic == topic)
+                .map(|m| serde_json::from_slice::<serde_json::Value>(&m.payload).unwrap()["seq"].as_u64().unwrap())
+                .collect();
+            assert_eq!(s, [1, 2, 3, 4, 5], "d{d}");
+            let status: Vec<&Msg> = all.iter().filter(|m| m.topic == format!("plcsh/g/d{d}/status")).collect();
+            assert_eq!(status.len(), 1);
+            assert_eq!(status[0].payload, b"online");
+        }
+        let first = all.iter().find(|m| m.topic == "plcsh/g/d3/VW2").unwrap();
+        let j: serde_json::Value = serde_json::from_slice(&first.payload).unwrap();
+        assert_eq!(j["device"], "d3");
+        assert_eq!(j["operand"], "VW2");
+        assert_eq!(j["type"], "WORD");
+        assert_eq!(j["value"], 0);
+    }
+
+    #[test]
+    fn a_poll_that_overruns_its_slots_skips_them_and_counts_them() {
+        // A device whose poll takes longer than the period: a write queued for it runs first
+        // in a poll; instead, hold its lock from outside for a few periods.
+        let outbox = Arc::new(Outbox::new(100_000, 1));
+        let (tx, _rx) = std::sync::mpsc::channel();
+        let pool = Pool::start(members(1), poll(10, 30), outbox.clone(), tx).unwrap();
+        std::thread::sleep(Duration::from_millis(25));
+        {
+            let _held = pool.devs[0].lock().unwrap();
+            std::thread::sleep(Duration::from_millis(100));
+        }
+        pool.join();
+        let skipped = outbox.totals().0;
+        let s = seqs(&outbox, "d0");
+        assert!(skipped >= 5, "skipped {skipped}, seqs {s:?}");
+        assert_eq!(s.len() as u64 + skipped, 30, "every slot is a poll or a skip: {s:?}");
+        assert!(s.windows(2).all(|w| w[0] < w[1]), "in order: {s:?}");
+        assert_eq!(*s.last().unwrap(), 30);
+    }
+
+    #[test]
+    fn stop_ends_the_workers_at_once() {
+        let outbox = Arc::new(Outbox::new(1000, 3));
+        let (tx, _rx) = std::sync::mpsc::channel();
+        let pool = Pool::start(members(3), poll(60_000, 1000), outbox, tx).unwrap();
+        std::thread::sleep(Duration::from_millis(50));
+        let t = Instant::now();
+        pool.stop();
+        pool.join();
+        assert!(t.elapsed() < Duration::from_secs(2), "{:?}", t.elapsed());
+        assert!(pool.finished());
+    }
+}
