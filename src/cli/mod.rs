@@ -12,7 +12,7 @@ mod record;
 mod run;
 pub(crate) mod serve;
 
-use crate::core::{exit, Clock};
+use crate::core::{Clock, ErrorKind};
 use crate::k2::catalog;
 use crate::output::{self, Style};
 use crate::session::Session;
