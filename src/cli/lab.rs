@@ -78,7 +78,7 @@ pub fn run(cmd: &LabCmd, style: Style, out: &mut dyn Write) -> i32 {
                 Err(e) => return fail(out, "lab", &e),
             };
             if let Some(path) = junit {
-                if let Err(e) = std::fs::write(path, crate::lab::runner::junit(&l, &reports)) {
+                if let Err(e) = std::fs::write(path, crate::lab::report::junit(&l, &reports)) {
                     return fail(
                         out,
                         "lab",
@@ -98,10 +98,8 @@ pub fn run(cmd: &LabCmd, style: Style, out: &mut dyn Write) -> i32 {
             let _ = output::write_outcome(out, style, &o);
             if !style.json {
                 // Why each criterion failed: expected, got, and when.
-                for r in &reports {
-                    for c in r.criteria.iter().filter(|c| !c.passed && !c.skipped) {
-                        let _ = writeln!(out, "{}: {}: {}", r.student, c.name, c.why());
-                    }
+                for line in crate::lab::report::why_lines(&reports) {
+                    let _ = writeln!(out, "{line}");
                 }
             }
             i32::from(reports.iter().any(|r| r.verdict.starts_with("grader error")))

@@ -80,14 +80,48 @@ pub struct Lab {
 }
 
 fn duration(key: &str, text: &str) -> Result<Duration> {
-    let t = text.trim().replace("min", "m");
-    let us = crate::core::literal::parse_duration_us(&t).map_err(|e| {
-        Error::usage(format!("{FILE}: [budget] {key} = \"{text}\": {e}")).hint("e.g. \"10min\", \"90s\"")
+    let us = crate::core::literal::parse_duration_us(text.trim()).map_err(|e| {
+        let msg = format!("{FILE}: [budget] {key} = \"{text}\" is not a time plcsh reads");
+        match spelled_out(text) {
+            Some((n, short, secs)) => Error::usage(msg).hint(format!(
+                "write \"{}{short}\"{} (units h, min, s, ms)",
+                number(n),
+                if short == "s" { String::new() } else { format!(" or \"{}s\"", number(secs)) }
+            )),
+            None => Error::usage(format!("{msg}: {e}")).hint("e.g. \"10min\", \"90s\", \"1h\" (units h, min, s, ms)"),
+        }
     })?;
     if us <= 0 {
-        return Err(Error::usage(format!("{FILE}: [budget] {key} must be more than zero")));
+        return Err(Error::usage(format!("{FILE}: [budget] {key} = \"{text}\" must be more than zero")));
     }
     Ok(Duration::from_micros(us as u64))
+}
+
+/// A time written out in words (`10 minutes`, `90 sec`, `2 часа`): the number, the unit as
+/// plcsh writes it, and the time in seconds — what the message tells the user to write.
+fn spelled_out(text: &str) -> Option<(f64, &'static str, f64)> {
+    let t = text.trim();
+    let split = t.find(|c: char| !(c.is_ascii_digit() || c == '.' || c == '_'))?;
+    let n: f64 = t[..split].replace('_', "").parse().ok()?;
+    let word = t[split..].trim().trim_end_matches('.').to_lowercase();
+    let (short, factor) = match word.as_str() {
+        "h" | "hr" | "hrs" | "hour" | "hours" | "ч" | "час" | "часа" | "часов" => ("h", 3600.0),
+        "m" | "min" | "mins" | "minute" | "minutes" | "мин" | "минута" | "минуты" | "минут" => {
+            ("min", 60.0)
+        }
+        "s" | "sec" | "secs" | "second" | "seconds" | "с" | "сек" | "секунда" | "секунды" | "секунд" => {
+            ("s", 1.0)
+        }
+        "ms" | "msec" | "millisecond" | "milliseconds" | "мс" => ("ms", 0.001),
+        _ => return None,
+    };
+    Some((n, short, n * factor))
+}
+
+/// A number as a person writes it: `10`, `2.5`.
+fn number(x: f64) -> String {
+    let s = format!("{x:.3}");
+    s.trim_end_matches('0').trim_end_matches('.').to_string()
 }
 
 fn bytes(text: &str) -> Result<usize> {
@@ -161,10 +195,28 @@ impl Lab {
                 return Err(Error::usage(format!("{FILE}: [points] \"{k}\" = {v}: points are a number ≥ 0")));
             }
         }
+        let bench = raw.bench.as_deref().map(|b| file("bench", b)).transpose()?;
+        if let Some(want) = &raw.device {
+            // The device an IL submission is loaded into is one of the lab's.
+            let names: Vec<String> = match &bench {
+                Some(b) => crate::wiring::bench::Bench::load(b)?.devices.into_keys().collect(),
+                None => devices.iter().map(|(n, _)| n.clone()).collect(),
+            };
+            if !names.contains(want) {
+                let near = names.iter().map(|n| (crate::core::text::edit_distance(want, n), n)).min();
+                let hint = match near {
+                    Some((d, n)) if d <= 2 => {
+                        format!("did you mean device = \"{n}\"? the lab's devices: {}", names.join(", "))
+                    }
+                    _ => format!("the lab's devices: {}", names.join(", ")),
+                };
+                return Err(Error::usage(format!("{FILE}: device = \"{want}\" is not a device of the lab")).hint(hint));
+            }
+        }
         Ok(Lab {
             dir: dir.to_path_buf(),
             title: raw.title,
-            bench: raw.bench.as_deref().map(|b| file("bench", b)).transpose()?,
+            bench,
             devices,
             snapshot: raw.snapshot.as_deref().map(|s| file("snapshot", s)).transpose()?,
             starter: raw.starter.iter().map(|s| file("starter", s)).collect::<Result<_>>()?,
@@ -222,11 +274,43 @@ mod tests {
             (format!("{base}[devices]\nplc = \"sim:K205-16DT\"\n[budget]\nsim_time = \"soon\"\n"), "sim_time"),
             (format!("{base}[devices]\nplc = \"sim:K205-16DT\"\n[budget]\nmemory = \"lots\"\n"), "memory"),
             (format!("{base}colour = 1\n[devices]\nplc = \"sim:K205-16DT\"\n"), "colour"),
+            (
+                format!("{base}device = \"plc2\"\n[devices]\nplc = \"sim:K205-16DT\"\n"),
+                "device = \"plc2\" is not a device of the lab",
+            ),
         ];
         for (text, want) in cases {
             let e = Lab::parse(&text, &d).unwrap_err().to_string();
             assert!(e.contains(want), "{want}: {e}");
         }
         std::fs::remove_dir_all(&d).unwrap();
+    }
+
+    #[test]
+    fn a_misnamed_device_gets_the_nearest_name() {
+        let d = lab_dir(&[("ref.il", ""), ("g.lua", "")]);
+        let text = "title = \"t\"\nreference = \"ref.il\"\ngrader = \"g.lua\"\ndevice = \"plc2\"\n[devices]\nplc = \"sim:K205-16DT\"\nservo = \"sim-servo:?id=1\"\n";
+        let e = Lab::parse(text, &d).unwrap_err();
+        assert!(e.hint.as_deref().unwrap_or_default().contains("did you mean device = \"plc\"?"), "{e}");
+        std::fs::remove_dir_all(&d).unwrap();
+    }
+
+    #[test]
+    fn a_time_in_words_is_quoted_with_what_to_write() {
+        for (text, want) in [
+            ("10 minutes", "write \"10min\" or \"600s\""),
+            ("90 seconds", "write \"90s\""),
+            ("2 hours", "write \"2h\" or \"7200s\""),
+            ("10 минут", "write \"10min\" or \"600s\""),
+        ] {
+            let e = duration("sim_time", text).unwrap_err();
+            assert!(e.message.contains(&format!("sim_time = \"{text}\"")), "{text}: {e}");
+            assert!(e.hint.as_deref().unwrap_or_default().contains(want), "{text}: {:?}", e.hint);
+            assert!(!e.to_string().contains("mutes"), "{e}");
+        }
+        let e = duration("wall", "soon").unwrap_err();
+        assert!(e.message.contains("wall = \"soon\""), "{e}");
+        assert_eq!(duration("sim_time", "10min").unwrap(), Duration::from_secs(600));
+        assert_eq!(duration("sim_time", "1h30m").unwrap(), Duration::from_secs(5400));
     }
 }

@@ -29,10 +29,12 @@ pub struct Criterion {
     pub skipped: bool,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub what: Option<String>,
+    /// What the criterion expected and what it got: a number as a JSON number, anything
+    /// else as the grader's text of it (`"on"` with its quotes for a string, `true`, `{…}`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub expected: Option<String>,
+    pub expected: Option<serde_json::Value>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub got: Option<String>,
+    pub got: Option<serde_json::Value>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub error: Option<String>,
     /// Simulated time of the failure, seconds.
@@ -51,10 +53,18 @@ impl Criterion {
             (Some(e), _, _) => format!("{e}{at}"),
             (None, Some(x), Some(g)) => {
                 let what = self.what.as_ref().map(|w| format!("{w}: ")).unwrap_or_default();
-                format!("{what}expected {x}, got {g}{at}")
+                format!("{what}expected {}, got {}{at}", shown(x), shown(g))
             }
             _ => String::new(),
         }
+    }
+}
+
+/// A recorded value as the grader showed it: a string is its text, a number its digits.
+fn shown(v: &serde_json::Value) -> String {
+    match v {
+        serde_json::Value::String(s) => s.clone(),
+        other => other.to_string(),
     }
 }
 
@@ -225,7 +235,8 @@ fn run(lab: &Lab, file: &str, kind: &str) -> crate::core::Result<Report> {
     let lua = engine.lua();
     lua.remove_hook();
     lua.set_memory_limit(0).ok();
-    let mut criteria = collect(lua).map_err(script_err)?;
+    let mut grader_errors = Vec::new();
+    let mut criteria = collect(lua, &mut grader_errors).map_err(script_err)?;
     for (name, p) in &lab.points {
         if !criteria.iter().any(|c| &c.name == name) {
             criteria.push(skipped(name, *p));
@@ -237,6 +248,9 @@ fn run(lab: &Lab, file: &str, kind: &str) -> crate::core::Result<Report> {
         v
     } else if outcome.as_ref().is_err_and(|f| f.error.message.contains("not enough memory")) {
         budget.memory_verdict().unwrap_or_default()
+    } else if let Some(e) = grader_errors.first() {
+        // A mistake in the grader's own code is the teacher's, whatever the submission did.
+        format!("grader error: {e}")
     } else if let Some(e) = student_error {
         format!("runtime error: {}", e.lines().next().unwrap_or_default())
     } else if let Err(f) = &outcome {
@@ -257,7 +271,11 @@ fn run(lab: &Lab, file: &str, kind: &str) -> crate::core::Result<Report> {
     };
     for c in &mut criteria {
         hide(&mut c.error);
-        hide(&mut c.got);
+        if let Some(serde_json::Value::String(g)) = &c.got {
+            let mut g = Some(g.clone());
+            hide(&mut g);
+            c.got = g.map(serde_json::Value::String);
+        }
     }
     let verdict = verdict.replace(&wd, "the write directory");
     Ok(Report {
@@ -274,7 +292,39 @@ fn run(lab: &Lab, file: &str, kind: &str) -> crate::core::Result<Report> {
 /// The message of a student's error: `file:line: message`, without the traceback.
 fn student_message(e: &mlua::Error, file: &str) -> String {
     let f = crate::script::error::failure(e).with_full_chunk_name(file);
-    f.headline().split("\nstack traceback:").next().unwrap_or_default().trim_end().to_string()
+    let msg = f.headline().split("\nstack traceback:").next().unwrap_or_default().trim_end().to_string();
+    no_addresses(&with_hint(msg, f.error.hint.as_deref()))
+}
+
+/// `s` without the memory addresses Lua shows for a table, function, thread or userdata
+/// (`table: 0x55d…` → `table`): they differ from run to run, and a verdict must not.
+pub fn no_addresses(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    let mut rest = s;
+    while let Some(i) = rest.find(": ") {
+        let (head, tail) = rest.split_at(i);
+        let after = &tail[2..];
+        let hex = after.strip_prefix("0x").unwrap_or(after);
+        let n = hex.bytes().take_while(u8::is_ascii_hexdigit).count();
+        let named = ["table", "function", "thread", "userdata", "builtin"].iter().any(|w| head.ends_with(w));
+        out.push_str(head);
+        if named && (n >= 8 || (hex.len() < after.len() && n >= 1)) {
+            rest = &hex[n..];
+        } else {
+            out.push_str(": ");
+            rest = after;
+        }
+    }
+    out.push_str(rest);
+    out
+}
+
+/// A verdict with the shell's hint for it (`— did you mean TON?`), as the shell shows it.
+fn with_hint(msg: String, hint: Option<&str>) -> String {
+    match hint {
+        Some(h) if !h.is_empty() && !msg.contains(h) => format!("{msg} — {h}"),
+        _ => msg,
+    }
 }
 
 /// The grader's `lab` table, in the globals (a submission's environment has none).
@@ -338,6 +388,7 @@ fn install_lab(lua: &Lua, lab: &Lab, file: &str, kind: &str, env: Table, budget:
                     // The program's own error names its file:line (not the grader's line).
                     let f = crate::script::error::failure(&e);
                     let msg = f.error.message.split('\n').next().unwrap_or_default().to_string();
+                    let msg = with_hint(msg, f.error.hint.as_deref());
                     let lab: Table = lua.globals().get("lab")?;
                     lab.raw_set("_student_error", msg.clone())?;
                     Ok((false, Some(msg)))
@@ -354,7 +405,20 @@ fn install_lab(lua: &Lua, lab: &Lab, file: &str, kind: &str, env: Table, budget:
     Ok(())
 }
 
-fn collect(lua: &Lua) -> mlua::Result<Vec<Criterion>> {
+/// Lua's text of a number JSON cannot hold (`inf`, `-inf`, `nan`).
+fn lua_number_text(n: f64) -> String {
+    if n.is_nan() {
+        "nan".into()
+    } else if n > 0.0 {
+        "inf".into()
+    } else {
+        "-inf".into()
+    }
+}
+
+/// The criteria the grader ran, and the errors in the grader's own code that ended any of
+/// them (lab.lua tells those from failed checks: see `lab.criterion`).
+fn collect(lua: &Lua, grader_errors: &mut Vec<String>) -> mlua::Result<Vec<Criterion>> {
     let lab: Table = lua.globals().get("lab")?;
     let f: mlua::Function = lab.get("_collect")?;
     let list: Table = f.call(())?;
@@ -367,6 +431,22 @@ fn collect(lua: &Lua) -> mlua::Result<Vec<Criterion>> {
                 v => Some(lua.coerce_string(v)?.map(|s| s.to_string_lossy()).unwrap_or_default()),
             })
         };
+        // A number stays a number (an integer as one); anything else is the grader's text.
+        let v = |k: &str| -> mlua::Result<Option<serde_json::Value>> {
+            Ok(match r.get::<Value>(k)? {
+                Value::Nil => None,
+                Value::Integer(i) => Some(i.into()),
+                Value::Number(n) => Some(
+                    serde_json::Number::from_f64(n)
+                        .map(serde_json::Value::Number)
+                        .unwrap_or_else(|| lua_number_text(n).into()),
+                ),
+                other => Some(lua.coerce_string(other)?.map(|s| s.to_string_lossy()).unwrap_or_default().into()),
+            })
+        };
+        if let Some(e) = s("grader_error")? {
+            grader_errors.push(format!("criterion \"{}\": {e}", r.get::<String>("name")?));
+        }
         out.push(Criterion {
             name: r.get("name")?,
             points: r.get("points")?,
@@ -374,11 +454,27 @@ fn collect(lua: &Lua) -> mlua::Result<Vec<Criterion>> {
             passed: r.get("passed")?,
             skipped: false,
             what: s("what")?,
-            expected: s("expected")?,
-            got: s("got")?,
+            expected: v("expected")?,
+            got: v("got")?,
             error: s("error")?,
             at_s: r.get::<Option<f64>>("at")?.map(|t| (t * 1e6).round() / 1e6),
         });
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod runtime_tests {
+    use super::*;
+
+    #[test]
+    fn addresses_leave_verdicts() {
+        assert_eq!(no_addresses("x.lua:1: table: 0x55d0c8a1b2c0"), "x.lua:1: table");
+        assert_eq!(
+            no_addresses("got function: builtin: 0x5583e0c31ba0 and thread: 000001A2B3C4D5E6"),
+            "got function: builtin and thread"
+        );
+        assert_eq!(no_addresses("stop: deadbeef, table: no"), "stop: deadbeef, table: no");
+        assert_eq!(no_addresses("Q0.0: expected 1, got 0"), "Q0.0: expected 1, got 0");
+    }
 }

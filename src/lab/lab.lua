@@ -3,8 +3,11 @@
 -- submission changes in its `plcsh`, `string` or globals the grader never sees.
 local lab, points = ...
 -- Everything the grader's API uses is taken now, before any submission runs.
-local pcall, error, type, tostring, setmetatable, getmetatable = pcall, error, type, tostring, setmetatable, getmetatable
-local format, gsub, abs = string.format, string.gsub, math.abs
+local pcall, xpcall, error, type, tostring, setmetatable, getmetatable =
+  pcall, xpcall, error, type, tostring, setmetatable, getmetatable
+local format, gsub, abs, find, match, sub, gmatch =
+  string.format, string.gsub, math.abs, string.find, string.match, string.sub, string.gmatch
+local traceback = debug and debug.traceback
 local encode, now = plcsh.json.encode, plcsh.now
 local results = {}
 lab._results = nil
@@ -15,6 +18,7 @@ lab._run_lua, lab._load_il = nil, nil
 local function show(v)
   local t = type(v)
   if t == "string" then return format("%q", v) end
+  if t == "number" then return v end -- a number stays a number in the report's JSON
   if t == "table" then
     local ok, j = pcall(encode, v)
     return ok and j or "(a table)"
@@ -50,6 +54,47 @@ function lab.expect_near(got, expected, tol, what)
   return got
 end
 
+-- An error in the grader's own code, as opposed to a check that failed.
+local Bug = {}
+
+-- The submission's own chunk (its file name as Lua writes it, maybe shortened to `...tail`).
+local function in_submission(src)
+  local file = lab.submission
+  if src == file then return true end
+  if sub(src, 1, 3) == "..." then
+    local tail = sub(src, 4)
+    return #tail > 0 and sub(file, -#tail) == tail
+  end
+  return false
+end
+
+-- The message handler of a criterion: a grader error is Lua itself stopping the grader's code
+-- (calling or indexing a nil, arithmetic on a nil, a library function given a bad argument)
+-- in a teacher's file (the grader, the lab's modules). Everything else ends the criterion as
+-- failed: lab.expect, error() and assert() (checks the grader makes), an error plcsh raises
+-- (a device refusing: it is not a string), and errors in the submission's own code.
+local function caught(e)
+  if type(e) ~= "string" or not traceback then return e end
+  local frames, n = {}, 0
+  for line in gmatch(traceback("", 2), "\n%s*([^\n]*)") do
+    if line ~= "stack traceback:" then
+      n = n + 1
+      frames[n] = line
+    end
+  end
+  local top = frames[1]
+  if not top then return e end
+  if sub(top, 1, 4) == "[C]:" then
+    local fn = match(top, "in function '([^']*)'")
+    if fn == "error" or fn == "assert" or not find(e, "^bad argument") then return e end
+    top = frames[2] -- a library function given a bad argument: its caller decides
+    if not top or sub(top, 1, 4) == "[C]:" then return e end
+  end
+  local src = match(top, "^(.-):%d+:")
+  if not src or in_submission(src) then return e end
+  return setmetatable({ message = e }, Bug)
+end
+
 -- lab.criterion(name, points, fn): runs fn now; it passes when it returns anything but false
 -- and raises nothing. `return false, got, expected` or lab.expect(...) say what was wrong.
 function lab.criterion(name, pts, fn)
@@ -58,12 +103,15 @@ function lab.criterion(name, pts, fn)
   end
   local max = points[name] or pts or 1
   local r = { name = name, max = max, points = 0, passed = false }
-  local ok, a, b, c = pcall(fn)
+  local ok, a, b, c = xpcall(fn, caught)
   if ok and a ~= false then
     r.passed, r.points = true, max
   elseif ok then
     r.got, r.expected = b ~= nil and show(b) or "false", c ~= nil and show(c) or "true"
     r.at = seconds()
+  elseif getmetatable(a) == Bug then
+    r.grader_error = gsub(a.message, "\nstack traceback:.*", "")
+    r.error, r.at = "grader error: " .. r.grader_error, seconds()
   elseif getmetatable(a) == Fail then
     r.got, r.expected, r.what, r.at = a.got, a.expected, a.what, a.at
   else

@@ -8,6 +8,7 @@
 pub mod config;
 pub mod example;
 pub mod grader;
+pub mod report;
 pub mod runner;
 
 use crate::core::{Error, Result};
@@ -40,17 +41,48 @@ pub fn new_lab(dir: &Path) -> Result<Outcome> {
         .with("files", names))
 }
 
+/// Every `[points]` key names a criterion the grader defines (the reference's run shows
+/// which): a misspelt key would otherwise cost every student its points. Only a run that
+/// reached the grader's end tells; one that stopped early is reported by its verdict.
+fn points_name_criteria(lab: &Lab, r: &Report) -> Result<()> {
+    if r.verdict != "passed" && r.verdict != "failed" {
+        return Ok(());
+    }
+    let defined: Vec<&str> = r.criteria.iter().filter(|c| !c.skipped).map(|c| c.name.as_str()).collect();
+    for key in lab.points.keys() {
+        if defined.contains(&key.as_str()) {
+            continue;
+        }
+        let near = defined.iter().map(|n| (crate::core::text::edit_distance(key, n), *n)).min();
+        let hint = match near {
+            Some((d, n)) if d <= key.chars().count().max(3) / 3 + 1 => {
+                format!("did you mean \"{n}\"? the grader defines: {}", quoted(&defined))
+            }
+            _ if defined.is_empty() => "the grader defines no criterion (lab.criterion(name, points, fn))".into(),
+            _ => format!("the grader defines: {}", quoted(&defined)),
+        };
+        return Err(Error::usage(format!(
+            "{}: [points] \"{key}\" names no criterion the grader defines (on the reference solution)",
+            config::FILE
+        ))
+        .hint(hint));
+    }
+    Ok(())
+}
+
+fn quoted(names: &[&str]) -> String {
+    names.iter().map(|n| format!("\"{n}\"")).collect::<Vec<_>>().join(", ")
+}
+
 /// `lab check LAB`: the lab is valid and its reference solution gets every point.
 pub fn check(path: &Path) -> Result<(Outcome, String, bool)> {
     let lab = Lab::load(path)?;
     let reference = lab.reference.display().to_string();
-    let r = grader::grade(&lab, &reference);
+    let mut r = grader::grade(&lab, &reference);
+    report::bound(&mut r);
+    points_name_criteria(&lab, &r)?;
     let ok = r.verdict == "passed" && r.points == r.max_points && r.max_points > 0.0;
-    let rows: Vec<Vec<String>> = r
-        .criteria
-        .iter()
-        .map(|c| vec![c.name.clone(), format!("{}/{}", c.points, c.max), if c.passed { "ok".into() } else { c.why() }])
-        .collect();
+    let rows = report::check_rows(&r);
     let head = if ok {
         format!(
             "{}: the reference solution gets {}/{} points in {} simulated s",
@@ -71,55 +103,14 @@ pub fn check(path: &Path) -> Result<(Outcome, String, bool)> {
     Ok((o, head, ok))
 }
 
-/// One submission's JSON object (the JSON contract: `ok`, `cmd`, then the report).
-pub fn report_json(r: &Report) -> serde_json::Value {
-    let mut v = serde_json::json!({"ok": true, "cmd": "lab", "sub": "grade"});
-    if let (Some(m), serde_json::Value::Object(rep)) = (v.as_object_mut(), serde_json::to_value(r).unwrap_or_default())
-    {
-        m.extend(rep);
-    }
-    v
-}
-
-/// The summary after the submissions: its first line, and the table.
-pub fn summary(lab: &Lab, reports: &[Report]) -> (String, Outcome) {
-    let passed = reports.iter().filter(|r| r.verdict == "passed").count();
-    let broken = reports.iter().filter(|r| r.verdict.starts_with("grader error")).count();
-    let rows: Vec<Vec<String>> = reports
-        .iter()
-        .map(|r| {
-            vec![
-                r.student.clone(),
-                format!("{}/{}", r.points, r.max_points),
-                r.passed().len().to_string(),
-                r.failed().iter().map(|n| n.to_string()).collect::<Vec<_>>().join(", "),
-                r.verdict.clone(),
-                format!("{} s", r.sim_time_s),
-            ]
-        })
-        .collect();
-    let head = format!("{}: {} submission(s), {passed} passed every criterion", lab.title, reports.len());
-    let o = Outcome::new("lab")
-        .with("sub", "grade")
-        .table(&["student", "points", "passed", "failed", "verdict", "simulated time"], rows)
-        .with(
-            "summary",
-            serde_json::json!({
-                "lab": lab.title,
-                "submissions": reports.len(),
-                "passed": passed,
-                "grader_errors": broken,
-                "points": reports.iter().map(|r| r.points).sum::<f64>(),
-            }),
-        );
-    (head, o)
-}
+pub use report::{json as report_json, summary};
 
 /// Grades `subs` (files or folders) with `jobs` workers.
 pub fn grade(path: &Path, subs: &[std::path::PathBuf], jobs: usize) -> Result<(Lab, Vec<Report>)> {
     let lab = Lab::load(path)?;
     let files = runner::submissions(subs)?;
-    let reports = runner::grade_all(path, &lab, &files, jobs)?;
+    let mut reports = runner::grade_all(path, &lab, &files, jobs)?;
+    reports.iter_mut().for_each(report::bound);
     Ok((lab, reports))
 }
 

@@ -1,0 +1,2 @@
+-- Bytecode.
+assert(load(string.dump(function() end)))()

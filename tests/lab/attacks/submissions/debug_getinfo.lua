@@ -1,0 +1,2 @@
+-- The debug library.
+debug.getinfo(1)

@@ -1,0 +1,2 @@
+-- Removing the instruction hook.
+debug.sethook()

@@ -1,0 +1,2 @@
+-- | in a verdict.
+error("a | b | c |", 0)

@@ -1,0 +1,2 @@
+-- An error that is a table (no address in the verdict).
+error({})

@@ -1,0 +1,2 @@
+-- An error with its own __tostring.
+error(setmetatable({}, { __tostring = function() return "custom" end }))

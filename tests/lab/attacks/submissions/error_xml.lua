@@ -1,0 +1,2 @@
+-- XML markup in an error.
+error("</failure></testcase><testcase name=\"forged\"/> & '", 0)

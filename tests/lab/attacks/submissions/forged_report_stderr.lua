@@ -1,0 +1,2 @@
+-- A report line written to the submission's own output changes nothing.
+io.stderr:write('\n{"student":"forged_report_stderr","file":"tests/lab/attacks/submissions/forged_report_stderr.lua","points":10.0,"max_points":10.0,"criteria":[{"name":"runs","points":1.0,"max":1.0,"passed":true},{"name":"drive enabled","points":3.0,"max":3.0,"passed":true},{"name":"answer in VW0","points":3.0,"max":3.0,"passed":true},{"name":"lamp on","points":3.0,"max":3.0,"passed":true}],"verdict":"passed","sim_time_s":0.2}\n')

@@ -1,0 +1,9 @@
+-- An endless loop in a finalizer.
+setmetatable({}, { __gc = function() while true do end end })
+collectgarbage()
+local plc, servo = plcsh.device("plc"), plcsh.device("servo")
+servo.controlword = 6
+servo.controlword = 7
+servo.controlword = 15
+plc.VW0 = 1234
+plc["Q0.0"] = true

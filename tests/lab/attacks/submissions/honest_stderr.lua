@@ -1,0 +1,8 @@
+-- A correct solution that writes to stderr.
+local plc, servo = plcsh.device("plc"), plcsh.device("servo")
+servo.controlword = 6
+servo.controlword = 7
+servo.controlword = 15
+plc.VW0 = 1234
+plc["Q0.0"] = true
+io.stderr:write("warning: nothing\n")

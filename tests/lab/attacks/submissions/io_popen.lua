@@ -1,0 +1,2 @@
+-- A pipe to a process.
+io.popen("echo hi")

@@ -1,0 +1,2 @@
+-- The lab command starts processes.
+plcsh.exec("lab new elsewhere")

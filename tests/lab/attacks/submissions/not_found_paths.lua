@@ -1,0 +1,2 @@
+-- The message of a missing module names no folder outside the submission's view.
+require("nothing_here")

@@ -1,0 +1,2 @@
+-- A process.
+os.execute("echo hi")

@@ -1,0 +1,2 @@
+-- Reading the environment.
+error(tostring(os.getenv("HOME")), 0)

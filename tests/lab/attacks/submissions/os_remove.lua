@@ -1,0 +1,2 @@
+-- Deleting the grader.
+os.remove("tests/lab/attacks/lab/grade.lua")

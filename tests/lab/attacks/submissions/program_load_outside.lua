@@ -1,0 +1,2 @@
+-- A simulator program from outside.
+plcsh.exec("sim program load /etc/hostname")

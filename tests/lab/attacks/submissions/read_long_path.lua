@@ -1,0 +1,2 @@
+-- A very long path.
+assert(io.open(string.rep("a/", 5000) .. "x"))

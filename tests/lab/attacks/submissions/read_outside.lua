@@ -1,0 +1,2 @@
+-- Reading a file outside every allowed folder.
+io.open("Cargo.toml"):read("a")

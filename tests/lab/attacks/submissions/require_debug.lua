@@ -1,0 +1,2 @@
+-- require('debug') gives no hooks.
+require("debug").sethook()

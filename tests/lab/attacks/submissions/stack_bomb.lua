@@ -1,0 +1,3 @@
+-- Unbounded recursion.
+local function f() return 1 + f() end
+f()

@@ -1,0 +1,2 @@
+-- The string metatable.
+getmetatable("").__index.rep = function() return "" end

@@ -1,0 +1,363 @@
+//! The project's attack class: every submission in tests/lab/attacks/submissions — hostile
+//! ones (forged reports, borrowed modules, the reference read, limits dodged, outputs broken,
+//! verdicts made to differ between runs) and the correct solutions they are compared with —
+//! graded twice with two workers by `plcsh --json lab grade`, byte-identical, each with the
+//! points and verdict tests/lab/attacks/expected.txt gives it. The outputs stay sound (the
+//! JUnit file parses as XML, the text table has one line per submission and no control
+//! character), and the teacher's mistakes are the teacher's: a bug in the grader is a grader
+//! error, `lab check` refuses `[points]` and devices that name nothing, and a time in words
+//! is quoted back with what to write.
+
+mod common;
+use common::*;
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+fn root() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn in_root(args: &[&str]) -> std::process::Output {
+    plcsh().current_dir(root()).args(args).output_retrying().expect("start plcsh")
+}
+
+fn temp(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("plcsh-attacks-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// One row of expected.txt: the student, the points, and the verdict's expected parts (any).
+struct Expected {
+    student: String,
+    points: f64,
+    verdict: Vec<String>,
+}
+
+fn expected() -> Vec<Expected> {
+    let text = std::fs::read_to_string(root().join("tests/lab/attacks/expected.txt")).unwrap();
+    text.lines()
+        .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
+        .map(|l| {
+            let cols: Vec<&str> = l.split('\t').collect();
+            assert_eq!(cols.len(), 3, "expected.txt: three columns separated by tabs: {l}");
+            Expected {
+                student: cols[0].to_string(),
+                points: cols[1].parse().unwrap_or_else(|_| panic!("expected.txt: points: {l}")),
+                verdict: cols[2].split("||").map(str::to_string).collect(),
+            }
+        })
+        .collect()
+}
+
+/// A memory address as Lua prints one (`table: 0x55d0c3a2b4c0`): six or more hex digits
+/// after `0x`.
+fn has_address(s: &str) -> bool {
+    s.match_indices("0x").any(|(i, _)| s[i + 2..].chars().take_while(|c| c.is_ascii_hexdigit()).count() >= 6)
+}
+
+/// A character a terminal or an XML 1.0 parser must not receive.
+fn is_control(c: char) -> bool {
+    c.is_control() && c != '\n'
+}
+
+#[test]
+fn the_attack_class_gets_its_expected_verdicts_twice_alike() {
+    let want = expected();
+    assert!(want.len() >= 60, "the class has {} submissions", want.len());
+    let d = temp("class");
+    let junit = d.join("results.xml");
+    let grade = |junit: Option<&Path>| {
+        let mut args = vec!["--json", "lab", "grade", "tests/lab/attacks/lab", "tests/lab/attacks/submissions"];
+        args.extend(["--jobs", "2"]);
+        if let Some(j) = junit {
+            args.extend(["--junit", j.to_str().unwrap()]);
+        }
+        in_root(&args)
+    };
+    let first = grade(Some(&junit));
+    let second = grade(None);
+    assert_eq!(first.status.code(), Some(0), "no grader error: {}", stderr(&first));
+    let lines = json_lines(&first);
+    assert_eq!(lines.len(), want.len() + 1, "one object per submission and a summary");
+    let by_student: BTreeMap<&str, &serde_json::Value> =
+        lines[..want.len()].iter().map(|l| (l["student"].as_str().unwrap(), l)).collect();
+
+    // Every submission as expected; all the differences at once.
+    let root_text = root().display().to_string();
+    let mut wrong = Vec::new();
+    for w in &want {
+        let Some(r) = by_student.get(w.student.as_str()) else {
+            wrong.push(format!("{}: not graded", w.student));
+            continue;
+        };
+        // A path in a verdict has the platform's separator (`submissions\x.lua` on Windows).
+        let raw = r["verdict"].as_str().unwrap();
+        let v = raw.replace('\\', "/");
+        let short: String = v.chars().take(200).collect();
+        if !w.verdict.iter().any(|part| v.contains(part.as_str()) || raw.contains(part.as_str())) {
+            wrong.push(format!("{}: verdict `{short}`, expected `{}`", w.student, w.verdict.join("` or `")));
+        }
+        if r["points"].as_f64() != Some(w.points) {
+            wrong.push(format!("{}: {} points, expected {} (`{short}`)", w.student, r["points"], w.points));
+        }
+        // Nothing in a report names the machine's folders or a memory address, or is large.
+        let text = r.to_string();
+        if text.contains(&root_text) {
+            wrong.push(format!("{}: the report names {root_text}", w.student));
+        }
+        if has_address(&text) {
+            wrong.push(format!("{}: a memory address in `{short}`", w.student));
+        }
+        if r["verdict"].as_str().unwrap().chars().any(is_control) {
+            wrong.push(format!("{}: a control character in the verdict", w.student));
+        }
+        if text.len() > 200_000 {
+            wrong.push(format!("{}: a report of {} bytes", w.student, text.len()));
+        }
+    }
+    assert!(wrong.is_empty(), "{} of {} submissions differ:\n{}", wrong.len(), want.len(), wrong.join("\n"));
+
+    // Byte-identical, run after run.
+    assert_eq!(stdout(&first), stdout(&second), "two runs differ");
+
+    // A number the grader expected or got is a JSON number.
+    let answer = by_student["math_random"]["criteria"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|c| c["name"] == "answer in VW0")
+        .unwrap()
+        .clone();
+    assert_eq!(answer["expected"], serde_json::json!(1234), "{answer}");
+    assert!(answer["got"].is_number(), "{answer}");
+
+    // The JUnit file is XML a real parser reads, with a suite per submission.
+    let xml = std::fs::read_to_string(&junit).unwrap();
+    assert!(!xml.chars().any(|c| c.is_control() && c != '\n'), "a control character in the JUnit file");
+    assert_eq!(xml.matches("<testsuite ").count(), want.len());
+    let python = Path::new("/usr/bin/python3");
+    if python.exists() {
+        let o = std::process::Command::new(python)
+            .args([
+                "-c",
+                "import sys, xml.etree.ElementTree as E\nr = E.parse(sys.argv[1]).getroot()\nprint(len(r.findall('testsuite')), sum(1 for _ in r.iter('failure')))",
+            ])
+            .arg(&junit)
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "the JUnit file does not parse: {}", String::from_utf8_lossy(&o.stderr));
+        let counts = String::from_utf8_lossy(&o.stdout).to_string();
+        let failures: usize = lines[..want.len()]
+            .iter()
+            .map(|l| l["criteria"].as_array().unwrap().iter().filter(|c| c["passed"] != true).count())
+            .sum();
+        assert_eq!(counts.split_whitespace().collect::<Vec<_>>(), [want.len().to_string(), failures.to_string()]);
+    } else {
+        skipped("/usr/bin/python3 (to parse the JUnit file with an XML parser of its own)");
+    }
+    std::fs::remove_dir_all(&d).unwrap();
+}
+
+#[test]
+fn verdicts_that_would_break_the_text_table_stay_one_line_each() {
+    let subs = [
+        "error_escape.lua",
+        "error_newlines.lua",
+        "error_pipes.lua",
+        "error_nul.lua",
+        "error_c1.lua",
+        "error_huge.lua",
+    ];
+    let mut args = vec!["lab".to_string(), "grade".into(), "tests/lab/attacks/lab".into()];
+    args.extend(subs.iter().map(|s| format!("tests/lab/attacks/submissions/{s}")));
+    let started = std::time::Instant::now();
+    let o = plcsh().current_dir(root()).args(&args).output_retrying().unwrap();
+    let took = started.elapsed();
+    assert_eq!(o.status.code(), Some(0), "{}", both(&o));
+    let text = stdout(&o);
+    assert!(!text.chars().any(is_control), "a control character reached the terminal: {text:?}");
+    assert!(text.len() < 40_000, "{} bytes for six submissions", text.len());
+    // The table: a header, a rule, then one row per submission, each with seven unescaped |.
+    let rows: Vec<&str> = text.lines().filter(|l| l.starts_with('|')).collect();
+    assert_eq!(rows.len(), subs.len() + 2, "{text}");
+    for r in &rows {
+        let bars = r.char_indices().filter(|(i, c)| *c == '|' && (*i == 0 || &r[i - 1..*i] != "\\")).count();
+        assert_eq!(bars, 7, "one row, six cells: {r}");
+    }
+    assert!(text.contains("\\u{1b}[2J"), "{text}");
+    assert!(text.contains("a \\| b \\| c \\|"), "{text}");
+    assert!(text.contains("bytes more)"), "{text}");
+    // A 20 MiB error is graded and shown in seconds (it took minutes when the table held it whole).
+    assert!(took < std::time::Duration::from_secs(30), "{took:?}");
+}
+
+/// A lab folder `lab/` in a temporary folder of its own: the attack lab's files, with `edit`
+/// applied to one. Returns the lab folder.
+fn lab_copy(name: &str, file: &str, edit: impl Fn(&str) -> String) -> PathBuf {
+    let d = temp(name).join("lab");
+    std::fs::create_dir_all(&d).unwrap();
+    for f in ["lab.toml", "grade.lua", "helpers.lua", "reference.lua"] {
+        let text = std::fs::read_to_string(root().join("tests/lab/attacks/lab").join(f)).unwrap();
+        std::fs::write(d.join(f), if f == file { edit(&text) } else { text }).unwrap();
+    }
+    d
+}
+
+fn remove(lab: &Path) {
+    std::fs::remove_dir_all(lab.parent().unwrap()).unwrap();
+}
+
+/// The rows of docs/teaching.md's "What a submission sees": (what, try, yes).
+fn doc_rows() -> Vec<(String, String, bool)> {
+    let doc = std::fs::read_to_string(root().join("docs/teaching.md")).unwrap();
+    let start = doc.find("| what | try | a submission |").expect("the table in docs/teaching.md");
+    let mut rows = Vec::new();
+    for line in doc[start..].lines().skip(2) {
+        if !line.starts_with('|') {
+            break;
+        }
+        let cells: Vec<&str> = line.trim_matches('|').split(" | ").map(str::trim).collect();
+        assert_eq!(cells.len(), 3, "three cells: {line}");
+        let code = cells[1]
+            .strip_prefix('`')
+            .and_then(|c| c.strip_suffix('`'))
+            .unwrap_or_else(|| panic!("a code span: {line}"));
+        let yes = match cells[2] {
+            "yes" => true,
+            "no" => false,
+            other => panic!("yes or no, not `{other}`: {line}"),
+        };
+        rows.push((cells[0].to_string(), code.to_string(), yes));
+    }
+    rows
+}
+
+#[test]
+fn what_a_submission_sees_is_as_the_teaching_guide_says_row_by_row() {
+    let rows = doc_rows();
+    assert!(rows.len() >= 30, "{} rows", rows.len());
+    let lab = lab_copy("doc", "", |t| t.to_string());
+    let top = lab.parent().unwrap().to_path_buf();
+    std::fs::write(top.join("outside.txt"), "not the submission's\n").unwrap();
+    for (i, (_, code, _)) in rows.iter().enumerate() {
+        let name = format!("row{i:02}");
+        let sub = top.join("subs").join(&name);
+        std::fs::create_dir_all(&sub).unwrap();
+        std::fs::write(sub.join("mine.lua"), "return { ok = true }\n").unwrap();
+        let code = code.replace("NAME", &name);
+        std::fs::write(
+            sub.join("main.lua"),
+            format!("local ok, v = pcall(function() return {code} end)\nprint(\"ROW \" .. ((ok and v) and \"yes\" or \"no\"))\n"),
+        )
+        .unwrap();
+    }
+    let o = plcsh()
+        .current_dir(&top)
+        .args(["--json", "lab", "grade", "lab", "subs", "--jobs", "2"])
+        .output_retrying()
+        .unwrap();
+    let lines = json_lines(&o);
+    assert_eq!(lines.len(), rows.len() + 1, "{}", both(&o));
+    let mut wrong = Vec::new();
+    for (i, (what, code, yes)) in rows.iter().enumerate() {
+        let r = lines.iter().find(|l| l["student"] == format!("row{i:02}")).unwrap();
+        let out = r["stdout"].as_str().unwrap_or_default();
+        let got = out.contains("ROW yes");
+        if got != *yes {
+            wrong.push(format!(
+                "{what}: `{code}` gives {}, the guide says {} (verdict `{}`, output `{out}`)",
+                if got { "yes" } else { "no" },
+                if *yes { "yes" } else { "no" },
+                r["verdict"].as_str().unwrap_or_default().chars().take(200).collect::<String>()
+            ));
+        }
+        // A "no" that ended the run ends it on its limit or refusal, never on the wall-clock net.
+        assert!(!r["verdict"].as_str().unwrap_or_default().contains("wall-clock"), "{what}: {r}");
+    }
+    assert!(wrong.is_empty(), "{} of {} rows differ:\n{}", wrong.len(), rows.len(), wrong.join("\n"));
+    remove(&lab);
+}
+
+#[test]
+fn lab_check_refuses_points_devices_and_times_that_name_nothing() {
+    // A [points] key no criterion has would cost every student its points.
+    let d = lab_copy("points", "lab.toml", |t| t.replace("\"lamp on\" = 3", "\"lamp onn\" = 3"));
+    let o = plcsh().args(["lab", "check"]).arg(&d).output_retrying().unwrap();
+    assert_eq!(o.status.code(), Some(2), "{}", both(&o));
+    let text = both(&o);
+    assert!(text.contains("[points] \"lamp onn\" names no criterion the grader defines"), "{text}");
+    assert!(text.contains("did you mean \"lamp on\"?"), "{text}");
+    remove(&d);
+    // The device IL is loaded into is one of the lab's.
+    let d = lab_copy("device", "lab.toml", |t| t.replace("device = \"plc\"", "device = \"plc2\""));
+    let o = plcsh().args(["lab", "check"]).arg(&d).output_retrying().unwrap();
+    assert_eq!(o.status.code(), Some(2), "{}", both(&o));
+    assert!(both(&o).contains("device = \"plc2\" is not a device of the lab"), "{}", both(&o));
+    assert!(both(&o).contains("did you mean device = \"plc\"?"), "{}", both(&o));
+    remove(&d);
+    // A time in words is quoted as written, with what to write.
+    let d = lab_copy("time", "lab.toml", |t| t.replace("sim_time = \"1min\"", "sim_time = \"10 minutes\""));
+    let o = plcsh().args(["lab", "check"]).arg(&d).output_retrying().unwrap();
+    assert_eq!(o.status.code(), Some(2), "{}", both(&o));
+    let text = both(&o);
+    assert!(text.contains("sim_time = \"10 minutes\"") && text.contains("\"10min\" or \"600s\""), "{text}");
+    assert!(!text.contains("mutes"), "{text}");
+    remove(&d);
+}
+
+#[test]
+fn a_bug_in_the_grader_inside_a_criterion_is_a_grader_error() {
+    let reference = "tests/lab/attacks/submissions/honest_reference.lua";
+    let grade = |d: &Path| {
+        plcsh().current_dir(root()).args(["--json", "lab", "grade"]).arg(d).arg(reference).output_retrying().unwrap()
+    };
+    // Calling a nil in the grader's own function: the teacher's bug, `lab grade` exits 1.
+    let d = lab_copy("bug", "grade.lua", |t| {
+        t.replace(
+            "lab.expect(plc.VW0, helpers.ANSWER, \"VW0\")",
+            "lab.expect(plc.VW0, helpers.answer_of(plc), \"VW0\")",
+        )
+    });
+    let o = grade(&d);
+    assert_eq!(o.status.code(), Some(1), "{}", both(&o));
+    let r = &json_lines(&o)[0];
+    let v = r["verdict"].as_str().unwrap();
+    assert!(v.starts_with("grader error: criterion \"answer in VW0\": "), "{v}");
+    assert!(v.contains("grade.lua:") && v.contains("attempt to call a nil value (field 'answer_of')"), "{v}");
+    // Indexing a nil in a lab module the grader calls: the teacher's too.
+    std::fs::write(d.join("helpers.lua"), "local M = { ANSWER = 1234 }\nfunction M.enabled(servo) return servo.statusword & M.mask.enabled == 0x27 end\nreturn M\n").unwrap();
+    std::fs::write(
+        d.join("grade.lua"),
+        std::fs::read_to_string(root().join("tests/lab/attacks/lab/grade.lua")).unwrap(),
+    )
+    .unwrap();
+    let o = grade(&d);
+    assert_eq!(o.status.code(), Some(1), "{}", both(&o));
+    let v = json_lines(&o)[0]["verdict"].as_str().unwrap().to_string();
+    assert!(v.starts_with("grader error: criterion \"drive enabled\": ") && v.contains("helpers.lua:2:"), "{v}");
+    remove(&d);
+
+    // A check the grader makes with assert or error, and a device refusing, are the student's.
+    let d = lab_copy("checks", "grade.lua", |t| {
+        t.replace("lab.expect(plc[\"Q0.0\"], true, \"Q0.0\")", "assert(plc[\"Q0.1\"], \"the second lamp is off\")")
+            .replace(
+                "lab.expect(plc.VW0, helpers.ANSWER, \"VW0\")",
+                "if plc.VW0 ~= 4321 then error(\"VW0 is not 4321\") end",
+            )
+            .replace(
+                "lab.expect(helpers.enabled(servo), true, \"the drive's operation enabled\")",
+                "servo.nosuchobject = 1",
+            )
+    });
+    let o = grade(&d);
+    assert_eq!(o.status.code(), Some(0), "{}", both(&o));
+    let r = &json_lines(&o)[0];
+    assert_eq!((r["verdict"].as_str(), r["points"].as_f64()), (Some("failed"), Some(1.0)), "{r}");
+    let errors: Vec<&str> = r["criteria"].as_array().unwrap().iter().filter_map(|c| c["error"].as_str()).collect();
+    assert_eq!(errors.len(), 3, "{r}");
+    assert!(errors.iter().all(|e| !e.contains("grader error")), "{errors:?}");
+    assert!(errors.iter().any(|e| e.contains("the second lamp is off")), "{errors:?}");
+    remove(&d);
+}
