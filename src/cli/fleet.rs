@@ -4,7 +4,9 @@
 //!
 //! Exit status: 0 when every device succeeded, 1 when any device failed (its row says why;
 //! the others still ran), 2 for a usage error before any device was touched (no such fleet,
-//! `--fleet` without `-c` or `run`), 130 when Ctrl-C stopped the run.
+//! `--fleet` without `-c` or `run`) and for a command line that every member refused the same
+//! way before doing anything (an operand typo, an unknown command: one error, not one row per
+//! device), 130 when Ctrl-C stopped the run.
 
 use crate::core::{Error, ErrorKind};
 use crate::fleet::report::{self, Row};
@@ -71,6 +73,10 @@ pub fn commands(cli: &super::Cli, shell: &Shell, name: &str, line: &str, style: 
     });
     let start = Instant::now();
     let done = run::each(&fleet, settings, &shell.session.interrupt, work);
+    if let Some((cmd, e)) = same_usage_error(&done, name) {
+        let _ = output::report_error(out, style, &cmd, &e, None);
+        return 2;
+    }
     let rows: Vec<Row> = done
         .iter()
         .map(|d| match &d.result {
@@ -85,6 +91,36 @@ pub fn commands(cli: &super::Cli, shell: &Shell, name: &str, line: &str, style: 
         &report::Summary { fleet: name, cmd: &ran, jobs: settings.jobs, elapsed: start.elapsed() },
         shell,
     )
+}
+
+/// The one error to show when every member refused the line's first command with the same
+/// usage error (a syntax or operand error, an unknown command) before anything ran: the line
+/// is wrong, not the devices.
+fn same_usage_error(done: &[run::Done<Vec<crate::shell::CmdResult>>], fleet: &str) -> Option<(String, Error)> {
+    let mut first: Option<(&String, &Error)> = None;
+    for d in done {
+        let Ok(results) = &d.result else { return None };
+        let [Err((cmd, e))] = results.as_slice() else { return None };
+        // A refused write (a usage error about an operand of a device) is the device's answer.
+        let line_error = match e.kind {
+            ErrorKind::Syntax | ErrorKind::Operand => true,
+            ErrorKind::Usage => e.operand.is_none() && e.device.is_none(),
+            _ => false,
+        };
+        if !line_error {
+            return None;
+        }
+        match first {
+            None => first = Some((cmd, e)),
+            Some((c, f)) if c == cmd && f.kind == e.kind && f.message == e.message => {}
+            Some(_) => return None,
+        }
+    }
+    let (cmd, e) = first?;
+    let mut e = e.clone();
+    e.device = None;
+    e.message = format!("{} (every member of fleet `{fleet}` refused it; nothing ran)", e.message);
+    Some((cmd.clone(), e))
 }
 
 /// `plcsh run --fleet FLEET SCRIPT.lua ARGS…`: the script runs once per member in a Lua state

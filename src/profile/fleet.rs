@@ -21,7 +21,7 @@ use std::collections::BTreeMap;
 use toml::Spanned;
 
 /// The most members one URL range may name (a typo such as `{1..65535}` is refused, not opened).
-pub const MAX_MEMBERS: usize = 1024;
+pub const MAX_MEMBERS: usize = 10_000;
 
 /// How a member is opened.
 #[derive(Clone, Debug, PartialEq)]

@@ -191,7 +191,7 @@ pub struct ServeArgs {
     /// Serve N simulated K2s, each with its own memory, on N TCP ports (with --tcp: port 0 gives each a
     /// free port, port P gives P, P+1, …); the readiness line lists them under `fleet` (docs/fleets.md).
     #[arg(long = "fleet", value_name = "N", requires = "tcp", conflicts_with_all = ["rtu_pty", "rtu_tcp", "k2_control"],
-        value_parser = clap::value_parser!(u16).range(1..=1024))]
+        value_parser = clap::value_parser!(u16).range(1..=10_000))]
     pub fleet: Option<u16>,
     /// The serial options' TCP ports (--rtu-tcp, --servo-tcp, --fx-tcp, --fx-link-tcp, --umpk-tcp) speak RFC 2217
     /// (Telnet COM-PORT-OPTION) instead of raw TCP: for FAMILY+rfc2217:// and virtual COM port drivers.
