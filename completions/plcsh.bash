@@ -31,6 +31,9 @@ _plcsh() {
             plcsh,lab)
                 cmd="plcsh__subcmd__lab"
                 ;;
+            plcsh,man)
+                cmd="plcsh__subcmd__man"
+                ;;
             plcsh,models)
                 cmd="plcsh__subcmd__models"
                 ;;
@@ -81,6 +84,9 @@ _plcsh() {
                 ;;
             plcsh__subcmd__help,lab)
                 cmd="plcsh__subcmd__help__subcmd__lab"
+                ;;
+            plcsh__subcmd__help,man)
+                cmd="plcsh__subcmd__help__subcmd__man"
                 ;;
             plcsh__subcmd__help,models)
                 cmd="plcsh__subcmd__help__subcmd__models"
@@ -197,7 +203,7 @@ _plcsh() {
 
     case "${cmd}" in
         plcsh)
-            opts="-c -v -d -f -j -h -V --command --json --verbose --model --device --time --config --state --record --bench --read-only --fleet --jobs --device-timeout --help --version models devices ports paths completions sim agent run record replay lab publish help"
+            opts="-c -v -d -f -j -h -V --command --json --verbose --model --device --time --config --state --record --bench --read-only --fleet --jobs --device-timeout --help --version models devices ports paths man completions sim agent run record replay lab publish help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -553,7 +559,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__help)
-            opts="models devices ports paths completions sim agent run record replay lab publish help"
+            opts="models devices ports paths man completions sim agent run record replay lab publish help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -695,6 +701,20 @@ _plcsh() {
         plcsh__subcmd__help__subcmd__lab__subcmd__worker)
             opts=""
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        plcsh__subcmd__help__subcmd__man)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
             fi
@@ -977,7 +997,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__lab__subcmd__grade)
-            opts="-v -d -h --jobs --junit --json --verbose --model --device --time --config --state --record --bench --read-only --device-timeout --help"
+            opts="-v -d -h --jobs --junit --show-output --json --verbose --model --device --time --config --state --record --bench --read-only --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1177,8 +1197,70 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__lab__subcmd__worker)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help"
+            opts="-v -d -j -h --report --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --report)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --model)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --device)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --time)
+                    COMPREPLY=($(compgen -W "wall stepped" -- "${cur}"))
+                    return 0
+                    ;;
+                --config)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --state)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --record)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --bench)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --jobs)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -j)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --device-timeout)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        plcsh__subcmd__man)
+            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
             fi
@@ -1409,7 +1491,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__publish)
-            opts="-f -v -d -j -h --broker --fleet --every --qos --on-change --deadband --buffer --mqtt-version --count --client-id --accept-writes --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help"
+            opts="-f -v -d -j -h --broker --fleet --every --qos --on-change --deadband --buffer --mqtt-version --count --client-id --accept-writes --shard --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1452,6 +1534,10 @@ _plcsh() {
                     return 0
                     ;;
                 --client-id)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --shard)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1977,7 +2063,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__sim__subcmd__serve)
-            opts="-v -d -j -h --tcp --rtu-pty --rtu-tcp --unit --agent --program --servo-pty --servo-tcp --servo-control --servo-id --servo-loop --servo-baud --servo-latency --servo-instant --servo-strict --fx-pty --fx-tcp --fx-link-pty --fx-link-tcp --fx-model --fx-station --fx-program --umpk-pty --umpk-tcp --umpk-model --umpk-status-bits --umpk-flash-fail --umpk-state --umpk-program --fx-control --umpk-control --k2-control --fault --max-connections --idle-timeout --strict-unit --fleet --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help"
+            opts="-v -d -j -h --tcp --rtu-pty --rtu-tcp --unit --agent --program --servo-pty --servo-tcp --servo-control --servo-id --servo-loop --servo-baud --servo-latency --servo-instant --servo-strict --fx-pty --fx-tcp --fx-link-pty --fx-link-tcp --fx-model --fx-station --fx-program --umpk-pty --umpk-tcp --umpk-model --umpk-status-bits --umpk-flash-fail --umpk-state --umpk-program --fx-control --umpk-control --k2-control --fault --max-connections --idle-timeout --strict-unit --fleet --rfc2217 --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0

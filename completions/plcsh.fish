@@ -29,7 +29,7 @@ complete -c plcsh -n "__fish_plcsh_needs_command" -l model -d 'Model of the defa
 complete -c plcsh -n "__fish_plcsh_needs_command" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_needs_command" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
-complete -c plcsh -n "__fish_plcsh_needs_command" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
+complete -c plcsh -n "__fish_plcsh_needs_command" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
 complete -c plcsh -n "__fish_plcsh_needs_command" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_needs_command" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_needs_command" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
@@ -45,8 +45,9 @@ complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "models" -d 'List the K2
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "devices" -d 'List open devices and the device profiles (devices.toml), with problems in that file'
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "ports" -d 'List the serial ports present, with USB adapter (VID:PID, product, serial number)'
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "paths" -d 'Print where every file lives: profiles, Lua modules, state, history, snapshots, UMPK flash, recordings'
+complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "man" -d 'Print the manual page (roff) made from these flags and the shell\'s commands: plcsh man > plcsh.1'
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "completions" -d 'Print a shell completion script (bash, zsh, fish, powershell), or write them all'
-complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "sim" -d 'Serve simulators to other programs: `sim serve` puts the simulated K2 on Modbus TCP / RTU and drives on a pty'
+complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "sim" -d 'Serve simulators to other programs: `sim serve` puts the simulated K2 on Modbus TCP / RTU and drives on a pty or a TCP port (raw or RFC 2217).'
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "agent" -d 'The PLC-side helper program that gives plcsh SM registers and instructions on a real K2'
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "run" -d 'Run a Lua script: plcsh [--time stepped] [--device NAME=URL] run SCRIPT.lua [ARGS…]'
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "record" -d 'Recordings made with --record: `record show FILE` prints the decoded timeline'
@@ -58,7 +59,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l model -d 'Model o
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
-complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
@@ -72,7 +73,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l model -d 'Model 
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
-complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
@@ -86,7 +87,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l model -d 'Model of
 complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
-complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
@@ -100,7 +101,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -l model -d 'Model of
 complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
-complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
@@ -110,12 +111,26 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -l json -d 'Print one
 complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'
 complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c plcsh -n "__fish_plcsh_using_subcommand man" -l model -d 'Model of the default simulated PLC' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand man" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand man" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
+stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
+complete -c plcsh -n "__fish_plcsh_using_subcommand man" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand man" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand man" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand man" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand man" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand man" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand man" -l json -d 'Print one JSON object per command result'
+complete -c plcsh -n "__fish_plcsh_using_subcommand man" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
+complete -c plcsh -n "__fish_plcsh_using_subcommand man" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'
+complete -c plcsh -n "__fish_plcsh_using_subcommand man" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l write -d 'Write every script into DIR (plcsh.bash, _plcsh, plcsh.fish, _plcsh.ps1)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
-complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
@@ -129,7 +144,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_sub
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve control help" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve control help" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
-complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve control help" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve control help" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve control help" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve control help" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve control help" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
@@ -179,7 +194,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
-complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
@@ -189,6 +204,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l servo-instant -d 'Answer at once instead of at line speed (benchmarks, CI)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l servo-strict -d 'Refuse writes whose size code differs from the object\'s (abort 0x06070010)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l strict-unit -d 'On Modbus TCP, answer only the --unit id (by default unit 0xFF is this device too, as libmodbus does)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l rfc2217 -d 'The serial options\' TCP ports (--rtu-tcp, --servo-tcp, --fx-tcp, --fx-link-tcp, --umpk-tcp) speak RFC 2217 (Telnet COM-PORT-OPTION) instead of raw TCP: for FAMILY+rfc2217:// and virtual COM port drivers'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'
@@ -197,7 +213,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from control" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from control" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
-complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from control" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from control" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from control" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from control" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from control" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
@@ -214,7 +230,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_s
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
-complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
@@ -231,7 +247,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subco
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
-complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
@@ -249,7 +265,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l model -d 'Model of t
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
-complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
@@ -264,7 +280,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
-complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
@@ -280,7 +296,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subc
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
-complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
@@ -299,7 +315,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l model -d 'Model o
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
-complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
@@ -313,7 +329,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_sub
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade worker help" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade worker help" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
-complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade worker help" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade worker help" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade worker help" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade worker help" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade worker help" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
@@ -326,13 +342,13 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_sub
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade worker help" -f -a "new" -d 'Write a working example lab (K2 + drive with wiring, IL starter, Lua grader) into NAME'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade worker help" -f -a "check" -d 'Check a lab: its lab.toml, files and start state, and the grader on the reference solution'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade worker help" -f -a "grade" -d 'Grade submissions (files or folders of .lua / .il files), each in a fresh sandboxed worker'
-complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade worker help" -f -a "worker" -d 'Grade one submission and print its report as JSON (what `lab grade` runs per submission)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade worker help" -f -a "worker" -d 'Grade one submission and write its report as JSON to REPORT (what `lab grade` runs per submission; what the submission prints goes to stdout, never into the report)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade worker help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from new" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from new" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from new" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
-complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from new" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from new" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from new" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from new" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from new" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
@@ -346,7 +362,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from check" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from check" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
-complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from check" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from check" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from check" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from check" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from check" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
@@ -362,20 +378,22 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
-complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -l show-output -d 'Show what each submission printed (stdout and stderr, the first 64 KiB of each); `--json` always carries them as `stdout` and `stderr`'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from worker" -l report -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from worker" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from worker" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from worker" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
-complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from worker" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from worker" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from worker" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from worker" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from worker" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
@@ -388,23 +406,24 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from help" -f -a "new" -d 'Write a working example lab (K2 + drive with wiring, IL starter, Lua grader) into NAME'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from help" -f -a "check" -d 'Check a lab: its lab.toml, files and start state, and the grader on the reference solution'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from help" -f -a "grade" -d 'Grade submissions (files or folders of .lua / .il files), each in a fresh sandboxed worker'
-complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from help" -f -a "worker" -d 'Grade one submission and print its report as JSON (what `lab grade` runs per submission)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from help" -f -a "worker" -d 'Grade one submission and write its report as JSON to REPORT (what `lab grade` runs per submission; what the submission prints goes to stdout, never into the report)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l broker -d 'The broker: mqtt://HOST:PORT, or mqtts://HOST:PORT for TLS (default: `url` in the profile file\'s [mqtt])' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -s f -l fleet -d 'Publish every member of this fleet (default: the current device)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l every -d 'How often each device is read' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l qos -d 'MQTT quality of service for values: 0 (at most once) or 1 (at least once)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l deadband -d 'With --on-change: the smallest change published (in the operand\'s units)' -r
-complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l buffer -d 'Readings kept while the broker is away (the oldest beyond it are dropped and counted)' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l buffer -d 'Readings queued for the broker at most: while it is away the oldest beyond it are dropped; while it is connected but plcsh falls behind, the newest value of a topic replaces the queued one (both counted)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l mqtt-version -d 'MQTT protocol version' -r -f -a "3.1.1\t''
 5\t''"
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l count -d 'Stop after this many polls of each device (default: until Ctrl-C)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l client-id -d 'The MQTT client id (default: plcsh-GROUP-PID)' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l shard -d 'Publish this part of the fleet only (K of N publishers; default: `shard` in the profile file\'s [mqtt])' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
-complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
@@ -416,19 +435,20 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l json -d 'Print o
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -s h -l help -d 'Print help (see more with \'--help\')'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab publish help" -f -a "models" -d 'List the K2 model catalogue; `models MODEL` shows one in full (areas, counters, manual notes)'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab publish help" -f -a "devices" -d 'List open devices and the device profiles (devices.toml), with problems in that file'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab publish help" -f -a "ports" -d 'List the serial ports present, with USB adapter (VID:PID, product, serial number)'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab publish help" -f -a "paths" -d 'Print where every file lives: profiles, Lua modules, state, history, snapshots, UMPK flash, recordings'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab publish help" -f -a "completions" -d 'Print a shell completion script (bash, zsh, fish, powershell), or write them all'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab publish help" -f -a "sim" -d 'Serve simulators to other programs: `sim serve` puts the simulated K2 on Modbus TCP / RTU and drives on a pty'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab publish help" -f -a "agent" -d 'The PLC-side helper program that gives plcsh SM registers and instructions on a real K2'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab publish help" -f -a "run" -d 'Run a Lua script: plcsh [--time stepped] [--device NAME=URL] run SCRIPT.lua [ARGS…]'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab publish help" -f -a "record" -d 'Recordings made with --record: `record show FILE` prints the decoded timeline'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab publish help" -f -a "replay" -d 'Replay a recording\'s requests against a simulator and report every reply that differs'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab publish help" -f -a "lab" -d 'Teaching labs: `lab new NAME`, `lab check LAB`, `lab grade LAB SUBMISSIONS…` (sandboxed, in parallel)'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab publish help" -f -a "publish" -d 'Poll operands on a device or a fleet and publish them to an MQTT broker (docs/fleets.md)'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths completions sim agent run record replay lab publish help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths man completions sim agent run record replay lab publish help" -f -a "models" -d 'List the K2 model catalogue; `models MODEL` shows one in full (areas, counters, manual notes)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths man completions sim agent run record replay lab publish help" -f -a "devices" -d 'List open devices and the device profiles (devices.toml), with problems in that file'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths man completions sim agent run record replay lab publish help" -f -a "ports" -d 'List the serial ports present, with USB adapter (VID:PID, product, serial number)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths man completions sim agent run record replay lab publish help" -f -a "paths" -d 'Print where every file lives: profiles, Lua modules, state, history, snapshots, UMPK flash, recordings'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths man completions sim agent run record replay lab publish help" -f -a "man" -d 'Print the manual page (roff) made from these flags and the shell\'s commands: plcsh man > plcsh.1'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths man completions sim agent run record replay lab publish help" -f -a "completions" -d 'Print a shell completion script (bash, zsh, fish, powershell), or write them all'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths man completions sim agent run record replay lab publish help" -f -a "sim" -d 'Serve simulators to other programs: `sim serve` puts the simulated K2 on Modbus TCP / RTU and drives on a pty or a TCP port (raw or RFC 2217).'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths man completions sim agent run record replay lab publish help" -f -a "agent" -d 'The PLC-side helper program that gives plcsh SM registers and instructions on a real K2'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths man completions sim agent run record replay lab publish help" -f -a "run" -d 'Run a Lua script: plcsh [--time stepped] [--device NAME=URL] run SCRIPT.lua [ARGS…]'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths man completions sim agent run record replay lab publish help" -f -a "record" -d 'Recordings made with --record: `record show FILE` prints the decoded timeline'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths man completions sim agent run record replay lab publish help" -f -a "replay" -d 'Replay a recording\'s requests against a simulator and report every reply that differs'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths man completions sim agent run record replay lab publish help" -f -a "lab" -d 'Teaching labs: `lab new NAME`, `lab check LAB`, `lab grade LAB SUBMISSIONS…` (sandboxed, in parallel)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths man completions sim agent run record replay lab publish help" -f -a "publish" -d 'Poll operands on a device or a fleet and publish them to an MQTT broker (docs/fleets.md)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and not __fish_seen_subcommand_from models devices ports paths man completions sim agent run record replay lab publish help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand help; and __fish_seen_subcommand_from sim" -f -a "serve" -d 'Serve the simulator over Modbus TCP, Modbus RTU on a pseudo-terminal, and/or RTU over TCP'
 complete -c plcsh -n "__fish_plcsh_using_subcommand help; and __fish_seen_subcommand_from sim" -f -a "control" -d 'Send one line to a served simulator\'s control channel (faults, events) and print the reply'
 complete -c plcsh -n "__fish_plcsh_using_subcommand help; and __fish_seen_subcommand_from agent" -f -a "il" -d 'Print the helper program (K2 instruction list) for KincoBuilder'
@@ -436,4 +456,4 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand help; and __fish_seen_subcom
 complete -c plcsh -n "__fish_plcsh_using_subcommand help; and __fish_seen_subcommand_from lab" -f -a "new" -d 'Write a working example lab (K2 + drive with wiring, IL starter, Lua grader) into NAME'
 complete -c plcsh -n "__fish_plcsh_using_subcommand help; and __fish_seen_subcommand_from lab" -f -a "check" -d 'Check a lab: its lab.toml, files and start state, and the grader on the reference solution'
 complete -c plcsh -n "__fish_plcsh_using_subcommand help; and __fish_seen_subcommand_from lab" -f -a "grade" -d 'Grade submissions (files or folders of .lua / .il files), each in a fresh sandboxed worker'
-complete -c plcsh -n "__fish_plcsh_using_subcommand help; and __fish_seen_subcommand_from lab" -f -a "worker" -d 'Grade one submission and print its report as JSON (what `lab grade` runs per submission)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand help; and __fish_seen_subcommand_from lab" -f -a "worker" -d 'Grade one submission and write its report as JSON to REPORT (what `lab grade` runs per submission; what the submission prints goes to stdout, never into the report)'

@@ -68,6 +68,7 @@ const SUBCOMMANDS: &[(&str, &[&str], bool)] = &[
     ("ports", &["ports"], false),
     ("paths", &["paths"], false),
     ("completions", &["completions", "bash"], false),
+    ("man", &["man"], false),
     ("sim", &["sim", "control", "--help"], false),
     ("agent", &["agent", "il"], false),
     ("run", &["run", "drive_only.lua"], false),

@@ -7,6 +7,7 @@ mod agent;
 pub mod completions;
 mod fleet;
 mod lab;
+mod man;
 mod publish;
 mod record;
 mod run;
@@ -111,6 +112,8 @@ pub enum Sub {
     /// Print where every file lives: profiles, Lua modules, state, history, snapshots, UMPK flash, recordings.
     Paths,
     /// Print a shell completion script (bash, zsh, fish, powershell), or write them all.
+    /// Print the manual page (roff) made from these flags and the shell's commands: plcsh man > plcsh.1
+    Man,
     Completions {
         /// The shell to print the script for.
         #[arg(value_enum)]
@@ -433,6 +436,10 @@ fn run_cli() -> i32 {
         return record::replay(args, cli.bench.as_deref(), !cli.devices.is_empty(), style, &mut out);
     }
     if let Some(Sub::Lab { cmd }) = &cli.sub {
+    if let Some(Sub::Man) = &cli.sub {
+        // Made from the flags and the command registry: no device is opened.
+        return man::run(&mut out);
+    }
         // A lab builds its own simulators from its lab.toml (never the user's state file).
         return lab::run(cmd, style, &mut out);
     }
@@ -500,6 +507,7 @@ fn run(cli: &Cli, mut shell: Shell, style: Style, mut out: std::io::StdoutLock<'
                 }
             },
             Sub::Completions { shell, write } => completions::run(*shell, write.as_deref(), &mut out),
+            Sub::Man => man::run(&mut out),
             Sub::Devices => i32::from(!shell.run_line("devices", &mut out)),
             Sub::Ports => i32::from(!shell.run_line("ports", &mut out)),
             Sub::Paths => i32::from(!shell.run_line("paths", &mut out)),

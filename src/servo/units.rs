@@ -169,7 +169,22 @@ pub fn parse_engineering(text: &str, unit: Unit, r: u32) -> Option<Result<i128, 
     let t = text.trim();
     let lower = t.to_ascii_lowercase();
     const SUFFIXES: [&str; 5] = ["rps/s", "rpm", "rev", "inc", "dec"];
-    let suffix = SUFFIXES.iter().find(|s| lower.ends_with(*s) && lower.len() > s.len())?;
+    let Some(suffix) = SUFFIXES.iter().find(|s| lower.ends_with(*s) && lower.len() > s.len()) else {
+        // A number with a unit this object does not know (`300rps`): named as typed.
+        let at = lower.find(|c: char| c.is_ascii_alphabetic() || c == '/')?;
+        let (number, unit_text) = (&t[..at], &t[at..]);
+        if parse_decimal(number).is_none() || !unit_text.chars().all(|c| c.is_ascii_alphabetic() || c == '/') {
+            return None;
+        }
+        let write = match unit {
+            Unit::Speed => format!("write rpm or dec (the drive's unit) for a speed: {number}rpm"),
+            Unit::Accel => format!("write rps/s or dec (the drive's unit) for an acceleration: {number}rps/s"),
+            Unit::Increments => format!("write rev or inc for a position: {number}rev"),
+            // Other objects read their own units (`5s`, `100W`) elsewhere.
+            _ => return None,
+        };
+        return Some(Err(format!("unit `{unit_text}` is not known here; {write}")));
+    };
     let number = t[..t.len() - suffix.len()].trim();
     let Some(d) = parse_decimal(number) else {
         return Some(Err(format!("`{number}` is not a number (write e.g. 300{suffix})")));

@@ -8,7 +8,7 @@
 //! logic here free of the editor and of the file system (file listing is injected) makes it
 //! unit-testable on plain strings.
 
-use super::commands::{find, CommandSpec, COMMANDS};
+use super::commands::{find, forms, CommandSpec, COMMANDS};
 use crate::core::OperandSpace;
 
 /// An open device, as completion sees it.
@@ -70,14 +70,6 @@ pub static FILE_ARGS: &[(&str, &[&str])] = &[
     ("umpk", &["program"]),
 ];
 
-/// Commands whose sub-commands take operands (`servo read OBJ…`, `umpk monitor I0 Q0`): any
-/// other sub-command's arguments are values, never operands or `device:` prefixes.
-const OPERAND_SUBS: &[(&str, &[&str])] = &[("servo", &["read"]), ("umpk", &["monitor"])];
-
-/// Option keys commands accept, completed as `key=`.
-pub static OPTION_KEYS: &[(&str, &[&str])] =
-    &[("watch", &["every=", "count="]), ("trace", &["every=", "for=", "to="]), ("plot", &["to=", "width=", "height="])];
-
 /// Option keys whose value is a path.
 const PATH_KEYS: &[&str] = &["to", "file"];
 
@@ -96,6 +88,8 @@ enum Kind {
     Models,
     /// DS402 operating modes (`servo mode p`).
     ServoModes,
+    /// The options and words of the command's forms (`pto 0 fr` → `freq=`).
+    Options,
     Nothing,
 }
 
@@ -179,16 +173,23 @@ fn kind(ctx: &Ctx, at_command: bool, view: &View) -> Kind {
                 Kind::Nothing
             }
         }
-        _ if !cmd.subcommands.is_empty() && rest.is_empty() => Kind::Subcommand,
-        "sim" => Kind::Nothing,
+        // A command whose sub-command comes first (`sim step`, `servo move`); `pto N status`
+        // names its sub-command later, after the channel.
+        _ if !cmd.subcommands.is_empty() && rest.is_empty() && !cmd.usage.starts_with(&format!("{} N", cmd.name)) => {
+            Kind::Subcommand
+        }
         "servo" if rest.len() == 1 && rest[0].eq_ignore_ascii_case("mode") => Kind::ServoModes,
-        name => match OPERAND_SUBS.iter().find(|(c, _)| *c == name) {
-            Some((_, subs)) if !rest.first().is_some_and(|r| subs.iter().any(|s| r.eq_ignore_ascii_case(s))) => {
-                Kind::Nothing
-            }
-            _ => Kind::Operands,
-        },
+        // What the command's forms take there: operands (`get`, `watch`, `servo read`), or
+        // options and the forms' own words (`pto 0 freq=`, `servo move abs`).
+        _ if forms::takes_operands(cmd, sub_of(cmd, rest)) => Kind::Operands,
+        _ => Kind::Options,
     }
+}
+
+/// The sub-command among the words typed (`servo axis1 move …` → `move`), if the command has
+/// sub-commands.
+fn sub_of(cmd: &CommandSpec, rest: &[&str]) -> Option<&'static str> {
+    rest.first().and_then(|r| cmd.subcommands.iter().find(|s| r.eq_ignore_ascii_case(s)).copied())
 }
 
 /// The words after the command, without a leading `[DEVICE]` (`servo axis2 mode` → `mode`)
@@ -326,14 +327,26 @@ fn files(word: &str, view: &View) -> Vec<Suggestion> {
     (view.files)(path).into_iter().map(|p| Suggestion { text: format!("{key}{p}"), meaning: String::new() }).collect()
 }
 
-fn options(cmd: &CommandSpec, word: &str) -> Vec<Suggestion> {
-    OPTION_KEYS
-        .iter()
-        .filter(|(c, _)| *c == cmd.name)
-        .flat_map(|(_, keys)| keys.iter())
-        .filter(|k| !word.is_empty() && starts_with_ci(k, word))
-        .map(|k| Suggestion { text: k.to_string(), meaning: "option".into() })
-        .collect()
+/// The option keys of the command's forms (`freq=`, with the form's example value as its
+/// meaning) starting with `word`; with `words`, the forms' own words too (`strict`, `abs`).
+fn options(cmd: &CommandSpec, rest: &[&str], word: &str, words: bool) -> Vec<Suggestion> {
+    let sub = sub_of(cmd, rest);
+    let typed = |k: &str| rest.iter().any(|r| r.split_once('=').is_some_and(|(t, _)| t.eq_ignore_ascii_case(k)));
+    let mut v: Vec<Suggestion> = forms::options(cmd, sub)
+        .into_iter()
+        .filter(|(k, _)| starts_with_ci(k, word) && !typed(k))
+        .map(|(k, e)| Suggestion { text: format!("{k}="), meaning: format!("option, e.g. {k}={e}") })
+        .collect();
+    if words {
+        let done = |w: &str| rest.iter().any(|r| r.eq_ignore_ascii_case(w));
+        v.extend(
+            forms::literals(cmd, sub)
+                .into_iter()
+                .filter(|w| starts_with_ci(w, word) && !done(w))
+                .map(|w| Suggestion { meaning: format!("{} … {w}", cmd.name), text: w }),
+        );
+    }
+    v
 }
 
 /// Completions for the word before `pos` in `line`.
@@ -370,10 +383,14 @@ pub fn complete(line: &str, pos: usize, view: &View) -> Completion {
                 Vec::new()
             } else {
                 let mut v = operands(word, view);
-                v.extend(options(ctx.cmd.expect("operands follow a command"), word));
+                if !word.is_empty() {
+                    let rest = after_device(&ctx, view);
+                    v.extend(options(ctx.cmd.expect("operands follow a command"), rest, word, false));
+                }
                 v
             }
         }
+        Kind::Options => options(ctx.cmd.expect("options follow a command"), after_device(&ctx, view), word, true),
         Kind::Files => files(word, view),
         Kind::Models => models(word),
         Kind::ServoModes => servo_modes(word),
@@ -424,7 +441,7 @@ pub fn hint(line: &str, pos: usize, view: &View) -> Option<Hint> {
             _ => None,
         };
     }
-    if !matches!(k, Kind::Operands | Kind::HelpTopic) {
+    if !matches!(k, Kind::Operands | Kind::HelpTopic | Kind::Options) {
         return None;
     }
     let operand = word.split_once('=').map(|(o, _)| o).unwrap_or(word);
@@ -618,6 +635,54 @@ mod tests {
         assert_eq!(texts("servo servo mode h").1, vec!["homing".to_string()], "after a [DEVICE]");
         assert!(texts("servo move p").1.is_empty(), "a move's position is no operand");
         assert_eq!(texts("servo read servo:targ").1.len(), 2, "`servo read` takes objects");
+    }
+
+    /// Options and the forms' own words come from the registry's forms, in place of operand
+    /// areas where a command takes none.
+    #[test]
+    fn options_come_from_the_forms() {
+        assert_eq!(texts("pto 0 fr").1, vec!["freq=".to_string()]);
+        let (_, all) = texts("pto 0 ");
+        for want in ["freq=", "count=", "cycle=", "strict", "status"] {
+            assert!(all.contains(&want.to_string()), "{want} in {all:?}");
+        }
+        assert!(!all.iter().any(|t| t == "VW" || t == "MD" || t.starts_with("VW")), "no operand areas: {all:?}");
+        assert!(!texts("pto 0 freq=1kHz ").1.contains(&"freq=".to_string()), "an option typed is not offered again");
+        assert_eq!(texts("servo move abs 100 sp").1, vec!["speed=".to_string()]);
+        assert_eq!(texts("servo servo move ").1, vec!["abs", "acc=", "dec=", "rel", "speed="]);
+        assert_eq!(texts("hsc 0 mo").1, vec!["mode=".to_string()]);
+        with_view(|v| {
+            let c = complete("pto 0 cy", 8, v);
+            assert!(c.items[0].meaning.contains("cycle=500us"), "{:?}", c.items);
+            assert_eq!(hint("pto 0 fr", 8, v).and_then(|h| h.insert).as_deref(), Some("eq="));
+        });
+    }
+
+    /// The command card, `help COMMAND` and completion are made from the same forms: every
+    /// form is in the card's row and in `help`'s text, and every option of a form completes
+    /// after that form's words.
+    #[test]
+    fn card_help_and_completion_agree() {
+        let card = crate::shell::commands::help::card_markdown();
+        with_view(|v| {
+            for (c, f) in forms::all() {
+                let help = crate::shell::commands::help::command_help(c).replace("\n    ", " ");
+                assert!(help.lines().any(|l| l == f.text), "`help {}` lacks `{}`:\n{help}", c.name, f.text);
+                let row = card.lines().find(|l| l.starts_with(&format!("| `{}` |", c.name))).expect(c.name);
+                assert!(row.contains(&format!("`{}`", f.text.replace('|', "\\|"))), "the card lacks `{}`", f.text);
+                let sub = f.sub.map(|s| format!(" {s}")).unwrap_or_default();
+                let line = forms::longest_line(c, &f, "1").unwrap_or(format!("{}{sub}", c.name));
+                for (key, _) in forms::options(c, f.sub) {
+                    let typed = format!("{line} {}", &key[..1]);
+                    let got = complete(&typed, typed.len(), v);
+                    assert!(
+                        got.items.iter().any(|s| s.text == format!("{key}=")),
+                        "`{typed}` does not offer {key}=: {:?}",
+                        got.items
+                    );
+                }
+            }
+        });
     }
 
     #[test]

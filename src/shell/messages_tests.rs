@@ -204,3 +204,26 @@ fn long_lines_are_read_in_linear_time() {
         assert!(t.elapsed() < std::time::Duration::from_secs(2), "{unit:?}: {:?}", t.elapsed());
     }
 }
+
+/// Messages that name the mistake and the form that works, at the word they are about.
+#[test]
+fn messages_name_the_mistake_and_the_correct_form() {
+    let mut sh = shell();
+    // Two writes after a space: the comma that separates them.
+    let e = error(&mut sh, "set VW0=5 VW2=6");
+    assert!(e.message.contains("separated by commas") && e.message.contains("set VW0=5, VW2=6"), "{e}");
+    assert_eq!(e.column, Some(10), "at the second write");
+    // A negative count: what a count is.
+    let e = error(&mut sh, "pto 0 freq=1kHz count=-5");
+    assert!(e.message.contains("count must be a positive whole number"), "{e}");
+    // A cycle too short is told as the cycle typed (2 µs), with the shortest there is (§3.4).
+    let e = error(&mut sh, "pto 0 cycle=2 count=10");
+    assert!(e.message.contains("cycle of 2 µs is too short") && e.message.contains("shortest cycle is"), "{e}");
+    assert!(!e.message.contains("500000 Hz"), "{e}");
+    assert_eq!(e.column, Some(6), "at cycle=");
+    // A unit the drive's speeds do not take.
+    for line in ["servo move abs 100 speed=300rps", "servo jog 300rps"] {
+        let e = error(&mut sh, line);
+        assert!(e.message.contains("unit `rps` is not known here") && e.message.contains("rpm"), "{line}: {e}");
+    }
+}

@@ -68,16 +68,24 @@ fn check_freq(spec: &PtoSpec, us: u64, what: &str) -> Result<()> {
     }
     // Saturating: a product past u64 is far above 1 000 000, and a cycle that long is
     // refused by the register's limit (to_base), not wrapped into "too fast".
+    let shortest = 1_000_000u64.div_ceil(spec.max_hz as u64);
+    if us.saturating_mul(spec.max_hz as u64) < 1_000_000 && what.starts_with("cycle") {
+        // The cycle as typed: `cycle=2` is 2 µs, too short, not "500000 Hz".
+        return Err(bad(
+            what,
+            format!(
+                "a cycle of {us} µs is too short for {}: its shortest cycle is {shortest} µs ({} Hz, manual §3.4)",
+                spec.output, spec.max_hz
+            ),
+        )
+        .hint(format!("cycle={shortest}us or longer; cycle= is in µs unless a unit is given (cycle=1ms)")));
+    }
     if us.saturating_mul(spec.max_hz as u64) < 1_000_000 {
         return Err(bad(
             what,
             format!("{} Hz is above {}'s limit of {} Hz (manual §3.4)", 1_000_000 / us, spec.output, spec.max_hz),
         )
-        .hint(format!(
-            "the shortest cycle on {} is {} µs",
-            spec.output,
-            1_000_000u64.div_ceil(spec.max_hz as u64)
-        )));
+        .hint(format!("the shortest cycle on {} is {shortest} µs", spec.output)));
     }
     Ok(())
 }
@@ -87,7 +95,7 @@ fn check_freq(spec: &PtoSpec, us: u64, what: &str) -> Result<()> {
 pub fn plan_pto(model: &Model, ch: u8, rate: Rate, count: u64) -> Result<Plan> {
     let (spec, r) = channel(model, ch)?;
     let (us, note) = rate.cycle_us();
-    check_freq(spec, us, "freq")?;
+    check_freq(spec, us, if matches!(rate, Rate::CycleUs(_)) { "cycle" } else { "freq" })?;
     if !(2..=u32::MAX as u64).contains(&count) {
         return Err(bad("count", format!("count={count}: a PTO needs 2 … 4 294 967 295 pulses (§3.4.2.1)")));
     }

@@ -376,6 +376,34 @@ pub fn options(c: &CommandSpec, sub: Option<&str>) -> Vec<(String, String)> {
     out
 }
 
+/// The words a command's forms spell out (`pto` → `strict`, `status`; `servo move` → `abs`,
+/// `rel`), for completion; `sub` narrows them to one sub-command's forms, whose own name is
+/// left out.
+pub fn literals(c: &CommandSpec, sub: Option<&str>) -> Vec<String> {
+    let mut out: Vec<String> = Vec::new();
+    for f in of(c).iter().filter(|f| sub.is_none() || f.sub.is_none() || f.sub == sub) {
+        let body = f.text.split_once(' ').map_or("", |(_, r)| r);
+        for tok in tokens(body) {
+            if let Tok::Word(w) = tok {
+                let plain = w.chars().all(|ch| ch.is_ascii_lowercase() || ch == '-');
+                if plain && Some(w.as_str()) != sub && !out.contains(&w) {
+                    out.push(w);
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Whether a command's forms (or one sub-command's) take operands: a placeholder `OPERAND`,
+/// `RANGE` or `OBJ` (`get`, `watch`, `servo read`).
+pub fn takes_operands(c: &CommandSpec, sub: Option<&str>) -> bool {
+    of(c)
+        .iter()
+        .filter(|f| sub.is_none() || f.sub == sub)
+        .any(|f| f.text.contains("OPERAND") || f.text.contains("RANGE") || f.text.contains("OBJ…"))
+}
+
 /// Every command and its forms (the registry walked once).
 pub fn all() -> impl Iterator<Item = (&'static CommandSpec, Form)> {
     COMMANDS.iter().flat_map(|c| of(c).into_iter().map(move |f| (c, f)))
@@ -434,7 +462,7 @@ mod tests {
     fn forms_of_commands_whose_sub_command_comes_later() {
         let hsc = super::super::find("hsc").unwrap();
         let f = of(hsc);
-        assert_eq!(f.len(), 3, "{f:?}");
+        assert_eq!(f.len(), 4, "{f:?}");
         assert_eq!(f[2], Form { sub: Some("status"), text: "hsc N status".into() });
         let events = of(super::super::find("events").unwrap());
         assert_eq!(events, vec![Form { sub: Some("keep"), text: "events [keep]".into() }]);

@@ -25,10 +25,11 @@ pub const QUIT: CommandSpec = CommandSpec {
 
 fn help(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let topic = args.text.trim();
-    if topic.is_empty() {
-        // Name and summary, wrapped to 80 columns; `help COMMAND` gives the whole usage.
+    if topic.is_empty() || topic.eq_ignore_ascii_case("all") {
+        // `help`: the commands by group, on one 80×24 screen; `help all`: each with its summary.
         let names: Vec<&str> = COMMANDS.iter().map(|c| c.name).collect();
-        return Ok(Outcome::new("help").text(command_list()).with("commands", names));
+        let text = if topic.is_empty() { grouped() } else { command_list() };
+        return Ok(Outcome::new("help").text(text).with("commands", names));
     }
     let mut words = topic.split_whitespace();
     let first = words.next().unwrap_or("").to_ascii_lowercase();
@@ -36,18 +37,7 @@ fn help(sh: &mut Shell, args: Args) -> Result<Outcome> {
         return sub_help(c, sub, words.next(), args);
     }
     if let Some(c) = super::find(&topic.to_ascii_lowercase()) {
-        // The usage's continuation lines are indented by 4: 75 columns of text keep every
-        // line within 79 (a line of 80 leaves some terminals at the edge).
-        let mut text = crate::core::text::wrap(c.usage, 75).join("\n    ");
-        for line in crate::core::text::wrap(c.summary, 76) {
-            text.push_str(&format!("\n  {line}"));
-        }
-        if !c.subcommands.is_empty() {
-            for line in crate::core::text::wrap(&format!("sub-commands: {}", c.subcommands.join(", ")), 76) {
-                text.push_str(&format!("\n  {line}"));
-            }
-        }
-        return Ok(Outcome::new("help").text(text).with("command", c.name));
+        return Ok(Outcome::new("help").text(command_help(c)).with("command", c.name));
     }
     let target = sh.session.resolve(topic).map_err(|e| {
         // A word that is neither a command nor an operand: most likely a mistyped command.
@@ -65,6 +55,26 @@ fn help(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let mut o = Outcome::new("help").text(text.trim_end().to_string());
     o.device = Some(entry.name.clone());
     Ok(o)
+}
+
+/// `help COMMAND`: its forms, as the command card shows them ([`super::forms`]), one a line,
+/// then what it does and its sub-commands. Continuation lines are indented by 4: 75 columns
+/// of text keep every line within 79 (a line of 80 leaves some terminals at the edge).
+pub fn command_help(c: &CommandSpec) -> String {
+    let mut text = super::forms::of(c)
+        .iter()
+        .map(|f| crate::core::text::wrap(&f.text, 75).join("\n    "))
+        .collect::<Vec<_>>()
+        .join("\n");
+    for line in crate::core::text::wrap(c.summary, 76) {
+        text.push_str(&format!("\n  {line}"));
+    }
+    if !c.subcommands.is_empty() {
+        for line in crate::core::text::wrap(&format!("sub-commands: {}", c.subcommands.join(", ")), 76) {
+            text.push_str(&format!("\n  {line}"));
+        }
+    }
+    text
 }
 
 /// The forms of a command's sub-commands ([`super::forms::of`]), with the sub-command each
@@ -122,12 +132,40 @@ fn quit(sh: &mut Shell, args: Args) -> Result<Outcome> {
     Ok(Outcome::new("quit").quiet())
 }
 
-/// The command list as `help` prints it: one command a line, summaries wrapped to fit 80
+/// The commands by what they are for, as `help` lists them (every command in one group).
+pub const GROUPS: &[(&str, &[&str])] = &[
+    ("read and write", &["get", "set", "read", "watch", "trace", "plot"]),
+    ("devices", &["use", "devices", "connect", "close", "ports", "paths", "models"]),
+    ("simulator", &["sim"]),
+    ("pulse outputs", &["pls", "pstop", "pto", "pwm", "profile"]),
+    ("counters", &["hdef", "hsc"]),
+    ("interrupts", &["events", "wait"]),
+    ("PLC", &["rtc", "eeprom", "agent"]),
+    ("servo, UMPK", &["servo", "umpk"]),
+    ("scripts, labs", &["lua", "lab"]),
+    ("this shell", &["help", "quit"]),
+];
+
+/// `help`: the commands by group, fitting an 80×24 terminal with room for the prompt.
+pub fn grouped() -> String {
+    let w = GROUPS.iter().map(|g| g.0.len()).max().unwrap_or(8) + 2;
+    let mut lines = vec!["commands by group (`help all` lists each with what it does):".to_string()];
+    for (group, names) in GROUPS {
+        lines.push(format!("  {group:<w$}{}", names.join(", ")));
+    }
+    lines.push(String::new());
+    lines.push("`help COMMAND`: its forms (`help pto`); `help sim step`: one sub-command's".into());
+    lines.push("`help VW100`, `help SMB67`: what an operand is; Tab completes commands,".into());
+    lines.push("operands and options (`pto 0 fr` ⇥ `freq=`)".into());
+    lines.join("\n")
+}
+
+/// The command list as `help all` prints it: one command a line, summaries wrapped to fit 80
 /// columns under their own column.
 pub fn command_list() -> String {
     const WIDTH: usize = 80;
     let name_w = COMMANDS.iter().map(|c| c.name.len()).max().unwrap_or(4) + 2;
-    let mut text = String::from("commands (`help COMMAND` shows its full usage and sub-commands):\n");
+    let mut text = String::from("commands (`help COMMAND` shows its forms and sub-commands):\n");
     for c in COMMANDS {
         for (i, line) in crate::core::text::wrap(c.summary, WIDTH - 2 - name_w - 1).iter().enumerate() {
             let name = if i == 0 { c.name } else { "" };
@@ -142,7 +180,7 @@ pub fn command_list() -> String {
 /// command of the registry with its forms, one table made from [`COMMANDS`] so the guide and
 /// the shell cannot drift apart.
 #[cfg(test)]
-fn card_markdown() -> String {
+pub fn card_markdown() -> String {
     let mut t = String::from("| command | forms | what it does |\n|---|---|---|\n");
     for c in COMMANDS {
         let forms: Vec<String> = super::forms::of(c).into_iter().map(|f| f.text).collect();
@@ -151,6 +189,39 @@ fn card_markdown() -> String {
         t.push_str(&format!("| `{}` | {} | {} |\n", c.name, forms.join("<br>"), cell(c.summary)));
     }
     t
+}
+
+#[cfg(test)]
+mod screen_tests {
+    use super::*;
+
+    /// `help` fits an 80×24 terminal (22 lines leave the command and the next prompt), and
+    /// names every command once; `help all` lists every command with its summary.
+    #[test]
+    fn help_fits_one_screen_and_names_every_command() {
+        let text = grouped();
+        let lines: Vec<&str> = text.lines().collect();
+        assert!(lines.len() <= 22, "{} lines:\n{text}", lines.len());
+        for l in &lines {
+            assert!(l.chars().count() <= 80, "wider than 80 columns: {l}");
+        }
+        for c in COMMANDS {
+            let n = GROUPS.iter().filter(|g| g.1.contains(&c.name)).count();
+            assert_eq!(n, 1, "`{}` is in {n} groups of `help`", c.name);
+        }
+        for (_, names) in GROUPS {
+            for n in *names {
+                assert!(super::super::find(n).is_some(), "`{n}` in a group is no command");
+            }
+        }
+        let all = command_list();
+        for c in COMMANDS {
+            assert!(all.lines().any(|l| l.trim_start().starts_with(c.name)), "`help all` lacks {}", c.name);
+        }
+        for l in all.lines() {
+            assert!(l.chars().count() <= 80, "wider than 80 columns: {l}");
+        }
+    }
 }
 
 #[cfg(test)]

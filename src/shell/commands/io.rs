@@ -114,6 +114,17 @@ fn set(sh: &mut Shell, args: Args) -> Result<Outcome> {
         }
         let vtext = &p[eq + 1..];
         let vlead = vtext.len() - vtext.trim_start().len();
+        let v = vtext.trim();
+        // `set VW0=5 VW2=6`: a second write after a space, not a value with a space in it.
+        if let Some(sp) = v.find(char::is_whitespace) {
+            let after = v[sp..].trim_start();
+            if after.split_whitespace().next().is_some_and(|w| w.contains('=') && !w.starts_with('=')) {
+                let at = column + eq + 1 + vlead + (v.len() - after.len());
+                return Err(Error::syntax(format!("writes are separated by commas: `set {}`", comma_line(args.text)))
+                    .column(at)
+                    .hint(SET.usage));
+            }
+        }
         items.push(SetItem {
             operand: p[..eq].to_string(),
             value: vtext.trim().to_string(),
@@ -127,6 +138,19 @@ fn set(sh: &mut Shell, args: Args) -> Result<Outcome> {
     o.device = writes.first().map(|(d, _)| sh.session.entries()[*d].name.clone());
     o.writes = writes.into_iter().map(|(_, r)| r).collect();
     Ok(count_requests(sh, before, o.quiet()))
+}
+
+/// `VW0=5 VW2=6` as the writes it means, `VW0=5, VW2=6`: every word with a `=` starts a
+/// write, other words stay with the value before them (`B # 16 # 85`).
+fn comma_line(text: &str) -> String {
+    let mut out = String::new();
+    for w in text.split([' ', '\t', ',']).filter(|w| !w.is_empty()) {
+        if !out.is_empty() {
+            out.push_str(if w.contains('=') && !w.starts_with('=') { ", " } else { " " });
+        }
+        out.push_str(w);
+    }
+    out
 }
 
 fn read(sh: &mut Shell, args: Args) -> Result<Outcome> {

@@ -9,7 +9,7 @@ mod events;
 mod fault;
 pub mod forms;
 mod fxsim;
-mod help;
+pub mod help;
 mod io;
 mod k2cmd;
 mod lab;

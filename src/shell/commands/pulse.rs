@@ -32,7 +32,7 @@ pub const PSTOP: CommandSpec = CommandSpec {
 pub const PTO: CommandSpec = CommandSpec {
     name: "pto",
     aliases: &[],
-    usage: "pto N freq=2kHz count=1000 [strict] | pto N cycle=500us count=1000 | pto N status",
+    usage: "pto N freq=2kHz count=1000 [strict] | pto N cycle=500us count=1000 [strict] | pto N status | pto status N",
     summary: "start a single-segment pulse train (writes SMB67, SMW68, SMD72, then PLS), or decode its status",
     subcommands: &["status"],
     run: pto,
@@ -41,7 +41,7 @@ pub const PTO: CommandSpec = CommandSpec {
 pub const PWM: CommandSpec = CommandSpec {
     name: "pwm",
     aliases: &[],
-    usage: "pwm N cycle=1ms width=250us [async] [strict]",
+    usage: "pwm N cycle=1ms width=250us [sync|async] [strict]",
     summary: "start PWM on channel N (writes SMB67=16#D3, SMW68, SMW70, then PLS)",
     subcommands: &[],
     run: pwm,
@@ -125,7 +125,10 @@ fn count(opts: &[lex::Opt], key: &str) -> Result<Option<u64>> {
                 if !t.is_empty() && t.bytes().all(|b| b.is_ascii_digit()) {
                     value_err(c, format!("{key}={v} is too many pulses: a PTO counts up to 4 294 967 295 (§3.4.2.1)"))
                 } else {
-                    value_err(c, format!("{key}={v} is not a whole number"))
+                    value_err(
+                        c,
+                        format!("{key} must be a positive whole number of pulses, 1 … 4 294 967 295 (got {key}={v})"),
+                    )
                 }
             })
         })
@@ -174,7 +177,12 @@ fn pto(sh: &mut Shell, args: Args) -> Result<Outcome> {
         count(&opts, "count")?.ok_or_else(|| Error::usage("pto needs count=").column(args.offset).hint(PTO.usage))?;
     let (model, _) = model_of(sh, dev)?;
     let name = k2cmd::name(sh, dev);
-    let plan = hp::plan_pto(model, ch, rate, n).map_err(|e| e.device(&name))?;
+    // A refused rate points at the option as typed (`cycle=2`).
+    let at_option = |e: Error| match e.operand.as_deref().and_then(|o| opt(&opts, o)) {
+        Some((c, _)) if e.column.is_none() => e.column(c),
+        _ => e,
+    };
+    let plan = hp::plan_pto(model, ch, rate, n).map_err(|e| at_option(e).device(&name))?;
     let warning = busy_check(sh, dev, ch, strict, "PLS")?;
     let mut o = run_plan(sh, dev, "pto", &plan)?;
     o.notes.extend(warning);
