@@ -362,3 +362,45 @@ fn a_bug_in_the_grader_inside_a_criterion_is_a_grader_error() {
     assert!(errors.iter().any(|e| e.contains("the second lamp is off")), "{errors:?}");
     remove(&d);
 }
+
+/// Symlinks a submission brings along (made here: a checkout on Windows has none): a folder
+/// submission with a link to the lab folder, a module that is a link to the reference, and
+/// `..` after a link. Each is refused; the reference stays unread.
+#[cfg(unix)]
+#[test]
+fn symlinks_in_a_submission_lead_nowhere() {
+    let lab = lab_copy("links", "", |t| t.to_string());
+    let top = lab.parent().unwrap().to_path_buf();
+    let tries = [
+        ("module", "require(\"ref\")"),
+        ("dofile", "dofile(\"subs/linked/lab/reference.lua\")"),
+        ("io_open", "assert(load(io.open(\"subs/linked/ref.lua\"):read(\"a\")))()"),
+        ("dotdot", "assert(load(io.open(\"subs/linked/lab/../lab/reference.lua\"):read(\"a\")))()"),
+        ("require_dir", "require(\"lab.reference\")"),
+    ];
+    for (name, code) in tries {
+        let sub = top.join("subs").join(format!("linked_{name}"));
+        std::fs::create_dir_all(&sub).unwrap();
+        std::os::unix::fs::symlink(&lab, sub.join("lab")).unwrap();
+        std::os::unix::fs::symlink(lab.join("reference.lua"), sub.join("ref.lua")).unwrap();
+        std::fs::write(
+            sub.join("main.lua"),
+            format!("{}\n", code.replace("subs/linked/", &format!("subs/linked_{name}/"))),
+        )
+        .unwrap();
+    }
+    let o = plcsh()
+        .current_dir(&top)
+        .args(["--json", "lab", "grade", "lab", "subs", "--jobs", "2"])
+        .output_retrying()
+        .unwrap();
+    let lines = json_lines(&o);
+    assert_eq!(lines.len(), tries.len() + 1, "{}", both(&o));
+    for r in &lines[..tries.len()] {
+        assert_eq!(r["points"].as_f64(), Some(0.0), "{r}");
+        let v = r["verdict"].as_str().unwrap();
+        assert!(v.starts_with("runtime error: "), "{r}");
+        assert!(v.contains("not found") || v.contains("outside the sandbox's folders"), "refused, not failed: {v}");
+    }
+    remove(&lab);
+}
