@@ -60,7 +60,7 @@ fn start_watcher() {
                         crate::core::Clock::wake_sleepers();
                     }
                     if IDLE.load(Ordering::SeqCst) {
-                        std::process::exit(128 + sig);
+                        std::process::exit(crate::core::exit::for_signal(sig));
                     }
                     let (s, t) = *since.get_or_insert((sig, Instant::now()));
                     if s != sig {
@@ -70,7 +70,7 @@ fn start_watcher() {
                             "plcsh: stopped: the stop did not finish within {} s (abort handlers still running?)",
                             ABORT_GRACE.as_secs()
                         );
-                        std::process::exit(128 + sig);
+                        std::process::exit(crate::core::exit::for_signal(sig));
                     }
                 }
             })
@@ -82,7 +82,7 @@ fn start_watcher() {
 pub fn exit_status() -> Option<i32> {
     match RECEIVED.load(Ordering::SeqCst) {
         0 => None,
-        sig => Some(128 + sig),
+        sig => Some(crate::core::exit::for_signal(sig)),
     }
 }
 

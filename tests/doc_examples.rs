@@ -53,19 +53,24 @@ fn blocks(path: &Path, name: &str) -> Vec<Block> {
     out
 }
 
-/// Every page: the README and docs/*.md.
+/// Every page: the README, CHANGELOG.md, docs/*.md and docs/reference/*.md.
 fn pages() -> Vec<(PathBuf, String)> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let mut v = vec![(root.join("README.md"), "README.md".to_string())];
-    let mut docs: Vec<_> = std::fs::read_dir(root.join("docs"))
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|e| e == "md"))
-        .collect();
-    docs.sort();
-    for p in docs {
-        let n = format!("docs/{}", p.file_name().unwrap().to_string_lossy());
-        v.push((p, n));
+    let mut v = vec![
+        (root.join("README.md"), "README.md".to_string()),
+        (root.join("CHANGELOG.md"), "CHANGELOG.md".to_string()),
+    ];
+    for dir in ["docs", "docs/reference"] {
+        let mut docs: Vec<_> = std::fs::read_dir(root.join(dir))
+            .unwrap()
+            .map(|e| e.unwrap().path())
+            .filter(|p| p.extension().is_some_and(|e| e == "md"))
+            .collect();
+        docs.sort();
+        for p in docs {
+            let n = format!("{dir}/{}", p.file_name().unwrap().to_string_lossy());
+            v.push((p, n));
+        }
     }
     v
 }

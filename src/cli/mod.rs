@@ -10,10 +10,11 @@ mod lab;
 mod man;
 mod publish;
 mod record;
+pub mod reference;
 mod run;
 pub(crate) mod serve;
 
-use crate::core::{Clock, ErrorKind};
+use crate::core::{exit, Clock};
 use crate::k2::catalog;
 use crate::output::{self, Style};
 use crate::session::Session;
@@ -425,7 +426,7 @@ fn run_cli() -> i32 {
         }
         Err(e) => {
             let _ = e.print();
-            return if e.use_stderr() { 2 } else { 0 };
+            return if e.use_stderr() { exit::USAGE } else { exit::OK };
         }
     };
     crate::core::platform::enable_escapes();
@@ -447,7 +448,7 @@ fn run_cli() -> i32 {
         Ok(s) => s,
         Err(e) => {
             let _ = output::report_error(&mut out, style, "open", &e, None);
-            return if e.kind == ErrorKind::Usage { 2 } else { 1 };
+            return exit::for_error(e.kind);
         }
     };
     crate::signals::install(&session.interrupt);

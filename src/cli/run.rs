@@ -101,9 +101,9 @@ pub fn main(shell: &mut Shell, args: &RunArgs, style: Style) -> i32 {
                 let _ = write!(std::io::stderr().lock(), "{}", f.human());
             }
             if f.interrupted() {
-                130
+                crate::core::exit::INTERRUPTED
             } else {
-                1
+                crate::core::exit::FAILED
             }
         }
     }

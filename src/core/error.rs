@@ -39,6 +39,23 @@ pub enum ErrorKind {
 }
 
 impl ErrorKind {
+    /// Every kind, in the order of the enum (the guide's error catalogue lists them so).
+    pub const ALL: &'static [ErrorKind] = &[
+        ErrorKind::Syntax,
+        ErrorKind::Operand,
+        ErrorKind::Value,
+        ErrorKind::Range,
+        ErrorKind::Unsupported,
+        ErrorKind::Refused,
+        ErrorKind::Link,
+        ErrorKind::Timeout,
+        ErrorKind::Usage,
+        ErrorKind::Script,
+        ErrorKind::Io,
+        ErrorKind::Interrupted,
+        ErrorKind::State,
+    ];
+
     pub fn name(self) -> &'static str {
         match self {
             ErrorKind::Syntax => "syntax",
@@ -208,6 +225,30 @@ impl From<std::io::Error> for Error {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn all_lists_every_kind_once_in_order() {
+        // Exhaustive: a new kind does not compile here until it has its place in `ALL`.
+        let place = |k: ErrorKind| match k {
+            ErrorKind::Syntax => 0,
+            ErrorKind::Operand => 1,
+            ErrorKind::Value => 2,
+            ErrorKind::Range => 3,
+            ErrorKind::Unsupported => 4,
+            ErrorKind::Refused => 5,
+            ErrorKind::Link => 6,
+            ErrorKind::Timeout => 7,
+            ErrorKind::Usage => 8,
+            ErrorKind::Script => 9,
+            ErrorKind::Io => 10,
+            ErrorKind::Interrupted => 11,
+            ErrorKind::State => 12,
+        };
+        assert_eq!(ErrorKind::ALL.len(), 13);
+        for (i, &k) in ErrorKind::ALL.iter().enumerate() {
+            assert_eq!(place(k), i, "{}", k.name());
+        }
+    }
 
     #[test]
     fn display_names_device_operand_and_hint() {

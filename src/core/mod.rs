@@ -7,6 +7,7 @@ pub mod device;
 pub mod durable;
 pub mod encoding;
 pub mod error;
+pub mod exit;
 pub mod float_serde;
 pub mod fspath;
 pub mod link;
