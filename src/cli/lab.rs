@@ -34,10 +34,20 @@ pub enum LabCmd {
         /// Also write the results as JUnit XML to FILE.
         #[arg(long, value_name = "FILE")]
         junit: Option<PathBuf>,
+        /// Show what each submission printed (stdout and stderr, the first 64 KiB of each);
+        /// `--json` always carries them as `stdout` and `stderr`.
+        #[arg(long)]
+        show_output: bool,
     },
-    /// Grade one submission and print its report as JSON (what `lab grade` runs per submission).
+    /// Grade one submission and write its report as JSON to REPORT (what `lab grade` runs per
+    /// submission; what the submission prints goes to stdout, never into the report).
     #[command(hide = true)]
-    Worker { lab: PathBuf, submission: String },
+    Worker {
+        lab: PathBuf,
+        submission: String,
+        #[arg(long, value_name = "REPORT")]
+        report: PathBuf,
+    },
 }
 
 pub fn run(cmd: &LabCmd, style: Style, out: &mut dyn Write) -> i32 {
@@ -71,7 +81,7 @@ pub fn run(cmd: &LabCmd, style: Style, out: &mut dyn Write) -> i32 {
             }
             Err(e) => fail(out, "lab", &e),
         },
-        LabCmd::Grade { lab, submissions, jobs, junit } => {
+        LabCmd::Grade { lab, submissions, jobs, junit, show_output } => {
             let jobs = jobs.unwrap_or_else(crate::lab::runner::default_jobs);
             let (l, reports) = match crate::lab::grade(lab, submissions, jobs) {
                 Ok(x) => x,
@@ -101,9 +111,29 @@ pub fn run(cmd: &LabCmd, style: Style, out: &mut dyn Write) -> i32 {
                 for line in crate::lab::report::why_lines(&reports) {
                     let _ = writeln!(out, "{line}");
                 }
+                if *show_output {
+                    for r in &reports {
+                        for (what, text) in [("stdout", &r.stdout), ("stderr", &r.stderr)] {
+                            if let Some(t) = text {
+                                let _ = writeln!(out, "{} ({what}):", r.student);
+                                for line in t.lines() {
+                                    let _ = writeln!(out, "  {}", visible(line));
+                                }
+                            }
+                        }
+                    }
+                }
             }
             i32::from(reports.iter().any(|r| r.verdict.starts_with("grader error")))
         }
-        LabCmd::Worker { lab, submission } => crate::lab::worker(lab, submission),
+        LabCmd::Worker { lab, submission, report } => crate::lab::runner::worker(lab, submission, report),
     }
+}
+
+/// A line of a submission's output with its control characters made visible (`\u{1b}`), so
+/// it cannot move the cursor or clear the teacher's terminal.
+fn visible(line: &str) -> String {
+    line.chars()
+        .map(|c| if c.is_control() && c != '\t' { c.escape_default().to_string() } else { c.to_string() })
+        .collect()
 }

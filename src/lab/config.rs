@@ -31,6 +31,11 @@ struct Raw {
     budget: RawBudget,
     #[serde(default)]
     points: BTreeMap<String, f64>,
+    /// The submission kinds the lab grades (default: the reference's).
+    accepts: Option<Vec<String>>,
+    /// Lua modules in the lab folder a submission may `require` (a fresh copy each).
+    #[serde(default)]
+    shared: Vec<String>,
 }
 
 #[derive(Deserialize, Default)]
@@ -77,6 +82,50 @@ pub struct Lab {
     pub device: String,
     pub limits: Limits,
     pub points: BTreeMap<String, f64>,
+    /// The submission kinds graded ([`KINDS`]).
+    pub accepts: Vec<String>,
+    /// The shared modules: (module name, file, the file's name in the lab folder).
+    pub shared: Vec<(String, PathBuf, String)>,
+}
+
+/// The submission kinds, as `accepts` names them, and how verdicts name them.
+pub const KINDS: &[(&str, &str)] =
+    &[("lua", "Lua (.lua)"), ("k2-il", "K2 IL (.il)"), ("umpk-il", "UMPK IL (.il)"), ("fx-il", "FX IL (.il)")];
+
+/// The IL kind of a device URL's family (`sim:` is a K2).
+pub fn il_kind(url: &str) -> &'static str {
+    let scheme = url.split(':').next().unwrap_or_default().to_ascii_lowercase();
+    match scheme.as_str() {
+        "sim-umpk" | "umpk" => "umpk-il",
+        "sim-fx" | "fx" | "fxlink" => "fx-il",
+        _ => "k2-il",
+    }
+}
+
+/// How a verdict names the kinds in `accepts`: `K2 IL (.il)`, `Lua (.lua) or K2 IL (.il)`.
+pub fn describe_kinds(accepts: &[String]) -> String {
+    let names: Vec<&str> = accepts.iter().filter_map(|k| KINDS.iter().find(|(n, _)| n == k).map(|(_, d)| *d)).collect();
+    names.join(" or ")
+}
+
+impl Lab {
+    /// The kind of submission `file` is in this lab (`lua`, or the IL of the lab's device).
+    pub fn kind_of(&self, file: &Path) -> Option<String> {
+        match file.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
+            Some("lua") => Some("lua".into()),
+            Some("il") => Some(self.il_kind()),
+            _ => None,
+        }
+    }
+
+    /// The IL kind of the device an IL submission is loaded into.
+    pub fn il_kind(&self) -> String {
+        let url = match &self.bench {
+            Some(b) => crate::wiring::bench::Bench::load(b).ok().and_then(|b| b.devices.get(&self.device).cloned()),
+            None => self.devices.iter().find(|(n, _)| n == &self.device).map(|(_, u)| u.clone()),
+        };
+        il_kind(url.as_deref().unwrap_or("sim:")).to_string()
+    }
 }
 
 fn duration(key: &str, text: &str) -> Result<Duration> {
@@ -213,7 +262,23 @@ impl Lab {
                 return Err(Error::usage(format!("{FILE}: device = \"{want}\" is not a device of the lab")).hint(hint));
             }
         }
-        Ok(Lab {
+        for k in raw.accepts.iter().flatten() {
+            if !KINDS.iter().any(|(n, _)| n == k) {
+                let names: Vec<&str> = KINDS.iter().map(|(n, _)| *n).collect();
+                return Err(Error::usage(format!("{FILE}: accepts = [\"{k}\"]: not a submission kind"))
+                    .hint(format!("kinds: {}", names.join(", "))));
+            }
+        }
+        let mut shared = Vec::new();
+        for name in &raw.shared {
+            let real = file("shared", name)?;
+            let module = name.strip_suffix(".lua").filter(|m| !m.is_empty()).ok_or_else(|| {
+                Error::usage(format!("{FILE}: shared = [\"{name}\"]: a shared module is a .lua file"))
+                    .hint("e.g. shared = [\"helpers.lua\"] (a submission then calls require(\"helpers\"))")
+            })?;
+            shared.push((module.replace(['/', '\\'], "."), real, name.clone()));
+        }
+        let mut lab = Lab {
             dir: dir.to_path_buf(),
             title: raw.title,
             bench,
@@ -225,7 +290,14 @@ impl Lab {
             device: raw.device.unwrap_or_else(|| "plc".into()),
             limits,
             points: raw.points,
-        })
+            accepts: raw.accepts.clone().unwrap_or_default(),
+            shared,
+        };
+        if raw.accepts.is_none() {
+            let kind = lab.kind_of(&lab.reference).unwrap_or_else(|| "lua".into());
+            lab.accepts = vec![kind];
+        }
+        Ok(lab)
     }
 }
 
@@ -260,6 +332,24 @@ mod tests {
         assert_eq!(lab.limits.memory, 64 << 20);
         assert_eq!(lab.limits.instructions, 50_000_000);
         assert_eq!(lab.points["starts"], 2.0);
+        // By default a lab accepts its reference's kind: here the IL of its K2.
+        assert_eq!(lab.accepts, ["k2-il"]);
+        assert_eq!(describe_kinds(&lab.accepts), "K2 IL (.il)");
+        std::fs::remove_dir_all(&d).unwrap();
+    }
+
+    #[test]
+    fn accepts_and_shared_modules_are_read() {
+        let d = lab_dir(&[("ref.il", ""), ("g.lua", ""), ("helpers.lua", "return {}")]);
+        let lab = Lab::parse(
+            "title = \"t\"\nreference = \"ref.il\"\ngrader = \"g.lua\"\naccepts = [\"lua\", \"umpk-il\"]\nshared = [\"helpers.lua\"]\ndevice = \"u\"\n[devices]\nu = \"sim-umpk:UMPK16\"\n",
+            &d,
+        )
+        .unwrap();
+        assert_eq!(lab.accepts, ["lua", "umpk-il"]);
+        assert_eq!(lab.kind_of(Path::new("x.il")).as_deref(), Some("umpk-il"));
+        assert_eq!(lab.shared[0].0, "helpers");
+        assert_eq!(describe_kinds(&lab.accepts), "Lua (.lua) or UMPK IL (.il)");
         std::fs::remove_dir_all(&d).unwrap();
     }
 
@@ -274,6 +364,12 @@ mod tests {
             (format!("{base}[devices]\nplc = \"sim:K205-16DT\"\n[budget]\nsim_time = \"soon\"\n"), "sim_time"),
             (format!("{base}[devices]\nplc = \"sim:K205-16DT\"\n[budget]\nmemory = \"lots\"\n"), "memory"),
             (format!("{base}colour = 1\n[devices]\nplc = \"sim:K205-16DT\"\n"), "colour"),
+            (format!("{base}accepts = [\"python\"]\n[devices]\nplc = \"sim:K205-16DT\"\n"), "not a submission kind"),
+            (
+                format!("{base}shared = [\"ref.il\"]\n[devices]\nplc = \"sim:K205-16DT\"\n"),
+                "a shared module is a .lua file",
+            ),
+            (format!("{base}shared = [\"../x.lua\"]\n[devices]\nplc = \"sim:K205-16DT\"\n"), "shared"),
             (
                 format!("{base}device = \"plc2\"\n[devices]\nplc = \"sim:K205-16DT\"\n"),
                 "device = \"plc2\" is not a device of the lab",

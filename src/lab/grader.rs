@@ -84,6 +84,12 @@ pub struct Report {
     /// `passed`, `failed`, `runtime error: …`, `exceeded …`, `grader error: …`.
     pub verdict: String,
     pub sim_time_s: f64,
+    /// What the run wrote to its stdout and stderr (`print`, `io.write`), bounded: kept for
+    /// the teacher, never read for a grade.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stdout: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stderr: Option<String>,
 }
 
 impl Report {
@@ -104,6 +110,8 @@ impl Report {
             criteria,
             verdict,
             sim_time_s: 0.0,
+            stdout: None,
+            stderr: None,
         }
     }
 }
@@ -133,15 +141,6 @@ pub fn student_name(file: &Path) -> String {
         }
     }
     stem
-}
-
-/// What a submission is, from its extension.
-fn kind(file: &Path) -> Option<&'static str> {
-    match file.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
-        Some("lua") => Some("lua"),
-        Some("il") => Some("il"),
-        _ => None,
-    }
 }
 
 /// A folder for one run's files, removed when dropped.
@@ -191,25 +190,69 @@ pub fn session(lab: &Lab, rules: Option<Arc<Confinement>>) -> crate::core::Resul
     Ok(s)
 }
 
-/// Grades `file` (as given on the command line) against `lab`.
+/// Grades `file` (as given on the command line) against `lab`; what the Lua code prints is
+/// dropped (`lab check`).
 pub fn grade(lab: &Lab, file: &str) -> Report {
+    grade_to(lab, file, Box::new(std::io::sink()))
+}
+
+/// Grades `file`, with what the grader and the submission `print` written to `out` (a
+/// worker's stdout, which `lab grade` keeps as the submission's output and never reads a
+/// grade from).
+pub fn grade_to(lab: &Lab, file: &str, out: Box<dyn std::io::Write + Send>) -> Report {
     let path = Path::new(file);
-    let Some(kind) = kind(path) else {
+    let Some(kind) = lab.kind_of(path) else {
         return Report::broken(lab, file, "not a submission: give a .lua script or an .il program".into());
     };
     if !path.is_file() {
         return Report::broken(lab, file, "not a submission: no such file".into());
     }
-    match run(lab, file, kind) {
+    if !lab.accepts.contains(&kind) {
+        return Report::broken(
+            lab,
+            file,
+            format!("not accepted: this lab accepts {} submissions", super::config::describe_kinds(&lab.accepts)),
+        );
+    }
+    let kind = if kind == "lua" { "lua" } else { "il" };
+    match run(lab, file, kind, out) {
         Ok(r) => r,
         Err(e) => Report::broken(lab, file, format!("grader error: {e}")),
     }
 }
 
-fn run(lab: &Lab, file: &str, kind: &str) -> crate::core::Result<Report> {
+/// What a submission may read: its own file (a folder submission, `NAME/main.lua`: its
+/// folder), the lab's shared modules and starter files, and the write directory. The grader,
+/// the reference and every other file of the lab are the teacher's.
+fn submission_view(lab: &Lab, file: &Path, write: &Path) -> (Arc<Confinement>, sandbox::World) {
+    let folder = file.file_stem().is_some_and(|s| s == "main");
+    let dir = file.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    let mut read = vec![if folder { dir.to_path_buf() } else { file.to_path_buf() }];
+    read.extend(lab.shared.iter().map(|(_, f, _)| f.clone()));
+    read.extend(lab.starter.iter().cloned());
+    let mut rules = Confinement::new(read, Some(write.to_path_buf()));
+    rules.view = Some("the submission's own files, the lab's shared and starter files and the write directory".into());
+    let own = folder.then(|| {
+        let real = crate::core::fspath::canonical(dir).unwrap_or_else(|_| dir.to_path_buf());
+        (real, dir.display().to_string())
+    });
+    (Arc::new(rules), sandbox::World { own, shared: lab.shared.clone() })
+}
+
+/// `math.random`'s seed for `student` in `lab`: the same in every run, another per student.
+fn seed(lab: &Lab, student: &str) -> i64 {
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    for b in lab.title.bytes().chain([0u8]).chain(student.bytes()) {
+        h = (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
+    }
+    h as i64
+}
+
+fn run(lab: &Lab, file: &str, kind: &str, out: Box<dyn std::io::Write + Send>) -> crate::core::Result<Report> {
     let write = WriteDir::new()?;
     let sub_dir = Path::new(file).parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
     let rules = Arc::new(Confinement::new(vec![lab.dir.clone(), sub_dir.to_path_buf()], Some(write.0.clone())));
+    let (student_rules, world) = submission_view(lab, Path::new(file), &write.0);
     let session = session(lab, Some(rules.clone())).map_err(|e| e.cause("opening the lab's devices"))?;
     let clock = session.clock.clone();
     let mut shell = Shell::new(session, Style { json: false, color: false });
@@ -223,18 +266,42 @@ fn run(lab: &Lab, file: &str, kind: &str) -> crate::core::Result<Report> {
     shell.session.budget = Some(budget.clone());
     let interrupt = shell.session.interrupt.clone();
     let script_err = |e: mlua::Error| Error::new(ErrorKind::Script, format!("cannot start Lua: {e}"));
-    let engine = Engine::new(interrupt.clone(), Box::new(std::io::sink())).map_err(script_err)?;
+    let engine = Engine::new(interrupt.clone(), out).map_err(script_err)?;
     let lua = engine.lua();
     sandbox::apply(lua, rules.clone()).map_err(script_err)?;
     crate::script::paths::confine(lua, Some(&lab.dir)).map_err(script_err)?;
-    let student_env = sandbox::student_env(lua, rules).map_err(script_err)?;
-    install_lab(lua, lab, file, kind, student_env, budget.clone()).map_err(script_err)?;
-    engine.limit(budget.clone(), clock.clone(), interrupt).map_err(script_err)?;
+    sandbox::deterministic(lua, clock.clone(), budget.clone(), seed(lab, &student_name(Path::new(file))))
+        .map_err(script_err)?;
+    // A limit is over for good: a caught "not enough memory" is the memory limit, and a
+    // `pcall` in the submission gives back no limit (the verdict is raised again).
+    let (b, stop_flag) = (budget.clone(), interrupt.clone());
+    let stop = lua
+        .create_function(move |_, v: Value| {
+            let memory = match &v {
+                Value::String(s) => s.to_string_lossy().contains("not enough memory"),
+                Value::Error(e) => {
+                    matches!(**e, mlua::Error::MemoryError(_)) || e.to_string().contains("not enough memory")
+                }
+                _ => false,
+            };
+            if memory {
+                b.exceed_memory();
+                stop_flag.store(true, Ordering::Relaxed);
+            }
+            Ok(b.exceeded())
+        })
+        .map_err(script_err)?;
+    let student_env = sandbox::submission_env(lua, student_rules.clone(), world, stop).map_err(script_err)?;
+    install_lab(lua, lab, file, kind, student_env, budget.clone(), [rules.clone(), student_rules])
+        .map_err(script_err)?;
+    engine.limit(budget.clone(), clock.clone(), interrupt.clone()).map_err(script_err)?;
 
     let outcome = engine.run_file(&mut shell, &lab.grader, &[]);
     let lua = engine.lua();
     lua.remove_hook();
+    lua.remove_global_hook();
     lua.set_memory_limit(0).ok();
+    let plc_fault = if kind == "il" { plc_fault(&mut shell, lab, file) } else { None };
     let mut grader_errors = Vec::new();
     let mut criteria = collect(lua, &mut grader_errors).map_err(script_err)?;
     for (name, p) in &lab.points {
@@ -253,6 +320,8 @@ fn run(lab: &Lab, file: &str, kind: &str) -> crate::core::Result<Report> {
         format!("grader error: {e}")
     } else if let Some(e) = student_error {
         format!("runtime error: {}", e.lines().next().unwrap_or_default())
+    } else if let Some(fault) = plc_fault {
+        format!("runtime error: {fault}")
     } else if let Err(f) = &outcome {
         format!("grader error: {}", f.headline())
     } else if criteria.iter().all(|c| c.passed) {
@@ -277,7 +346,7 @@ fn run(lab: &Lab, file: &str, kind: &str) -> crate::core::Result<Report> {
             c.got = g.map(serde_json::Value::String);
         }
     }
-    let verdict = verdict.replace(&wd, "the write directory");
+    let verdict = no_addresses(&verdict.replace(&wd, "the write directory"));
     Ok(Report {
         student: student_name(Path::new(file)),
         file: file.to_string(),
@@ -286,7 +355,24 @@ fn run(lab: &Lab, file: &str, kind: &str) -> crate::core::Result<Report> {
         criteria,
         verdict,
         sim_time_s: budget.used(&clock).as_secs_f64(),
+        stdout: None,
+        stderr: None,
     })
+}
+
+/// The fault that stopped the PLC an IL submission runs on (its watchdog: an endless loop),
+/// as `file:line: …`, read from `sim program` once the grader is done.
+fn plc_fault(shell: &mut Shell, lab: &Lab, file: &str) -> Option<String> {
+    shell.session.interrupt.store(false, Ordering::Relaxed);
+    shell.session.use_device(&lab.device).ok()?;
+    let o = shell.exec("sim program").into_iter().next()?.ok()?.to_json();
+    let f = o.get("faults")?.as_array()?.first()?;
+    let line = f.get("line").and_then(|l| l.as_u64()).map(|l| format!(":{l}")).unwrap_or_default();
+    let code = f.get("code").and_then(|c| c.as_u64()).map(|c| format!("fault {c} ")).unwrap_or_default();
+    let kind = f.get("kind").and_then(|k| k.as_str()).unwrap_or("fault");
+    let msg = f.get("message").and_then(|m| m.as_str()).unwrap_or_default();
+    let at = f.get("instruction").and_then(|i| i.as_str()).map(|i| format!(" at `{i}`")).unwrap_or_default();
+    Some(format!("{file}{line}: the PLC stopped on {code}({kind}): {msg}{at}"))
 }
 
 /// The message of a student's error: `file:line: message`, without the traceback.
@@ -328,7 +414,17 @@ fn with_hint(msg: String, hint: Option<&str>) -> String {
 }
 
 /// The grader's `lab` table, in the globals (a submission's environment has none).
-fn install_lab(lua: &Lua, lab: &Lab, file: &str, kind: &str, env: Table, budget: Arc<Budget>) -> mlua::Result<()> {
+/// `rules`: the grader's and the submission's; the session holds the submission's while it runs
+/// (so `plcsh.exec("sim program load …")` in a submission reads only what it may).
+fn install_lab(
+    lua: &Lua,
+    lab: &Lab,
+    file: &str,
+    kind: &str,
+    env: Table,
+    budget: Arc<Budget>,
+    rules: [Arc<Confinement>; 2],
+) -> mlua::Result<()> {
     let t = lua.create_table()?;
     t.set("title", lab.title.as_str())?;
     t.set("submission", file)?;
@@ -347,7 +443,14 @@ fn install_lab(lua: &Lua, lab: &Lab, file: &str, kind: &str, env: Table, budget:
                 .set_mode(mlua::chunk::ChunkMode::Text)
                 .set_environment(env.clone())
                 .into_function();
+            let confine = |lua: &Lua, r: &Arc<Confinement>| {
+                if let Some(mut sh) = lua.app_data_mut::<Shell>() {
+                    sh.confine(r.clone());
+                }
+            };
+            confine(lua, &rules[1]);
             let r = f.and_then(|f| f.call::<()>(()));
+            confine(lua, &rules[0]);
             match r {
                 Ok(()) => Ok((true, None)),
                 Err(e) => {

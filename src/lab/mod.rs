@@ -78,7 +78,7 @@ fn quoted(names: &[&str]) -> String {
 pub fn check(path: &Path) -> Result<(Outcome, String, bool)> {
     let lab = Lab::load(path)?;
     let reference = lab.reference.display().to_string();
-    let mut r = grader::grade(&lab, &reference);
+    let mut r = runner::grade_one(path, &lab, &reference)?;
     report::bound(&mut r);
     points_name_criteria(&lab, &r)?;
     let ok = r.verdict == "passed" && r.points == r.max_points && r.max_points > 0.0;
@@ -112,22 +112,4 @@ pub fn grade(path: &Path, subs: &[std::path::PathBuf], jobs: usize) -> Result<(L
     let mut reports = runner::grade_all(path, &lab, &files, jobs)?;
     reports.iter_mut().for_each(report::bound);
     Ok((lab, reports))
-}
-
-/// The worker: grades one file, prints its report as one JSON line.
-pub fn worker(path: &Path, file: &str) -> i32 {
-    let report = match Lab::load(path) {
-        Ok(lab) => grader::grade(&lab, file),
-        Err(e) => {
-            eprintln!("plcsh lab worker: {e}");
-            return 1;
-        }
-    };
-    match serde_json::to_string(&report) {
-        Ok(s) => {
-            println!("{s}");
-            0
-        }
-        Err(_) => 1,
-    }
 }

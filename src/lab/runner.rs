@@ -2,8 +2,14 @@
 //! FILE`, one per core by default, `--jobs N`), so one submission's crash, memory or endless
 //! loop cannot touch another's grade, and the wall-clock limit is a safety net the parent
 //! holds (it ends a worker that passes it; every other limit is counted inside the worker in
-//! simulated time and Lua instructions). Results come back as one JSON line each and are
-//! shown in the order the submissions were given.
+//! simulated time and Lua instructions). Results are shown in the order the submissions were
+//! given.
+//!
+//! A worker's report comes back in a file the parent names (`--report FILE`, in a folder of
+//! the parent's own, 0700, removed afterwards), never through the worker's stdout: a
+//! submission reads and writes only its own files and the write directory, so it cannot
+//! reach that file, and what it prints (`print`, `io.write`, `io.stderr:write`) is only its
+//! output — kept, bounded, for the teacher (`--show-output`, `stdout`/`stderr` in `--json`).
 
 use super::config::Lab;
 use super::grader::Report;
@@ -46,26 +52,86 @@ pub fn submissions(args: &[PathBuf]) -> Result<Vec<String>> {
     Ok(out)
 }
 
+/// How much of a worker's stdout and of its stderr is kept.
+pub const OUTPUT_CAP: usize = 64 << 10;
+
+/// Reads `r` to its end, keeping the first [`OUTPUT_CAP`] bytes: the text (cut at a character)
+/// and `(… N bytes more)` for the rest.
+fn capture(mut r: impl Read) -> String {
+    let mut kept = Vec::new();
+    let mut more: u64 = 0;
+    let mut buf = [0u8; 8192];
+    loop {
+        match r.read(&mut buf) {
+            Ok(0) | Err(_) => break,
+            Ok(n) => {
+                let room = OUTPUT_CAP.saturating_sub(kept.len()).min(n);
+                kept.extend_from_slice(&buf[..room]);
+                more += (n - room) as u64;
+            }
+        }
+    }
+    let mut text = String::from_utf8_lossy(&kept).into_owned();
+    if more > 0 {
+        text.push_str(&format!("(… {more} bytes more)"));
+    }
+    text
+}
+
+/// A folder of the parent's own for one worker's report (0700 where the system has modes),
+/// removed when dropped.
+struct ReportDir(PathBuf);
+
+impl ReportDir {
+    fn new() -> std::io::Result<ReportDir> {
+        use std::sync::atomic::{AtomicU64, Ordering};
+        static N: AtomicU64 = AtomicU64::new(0);
+        let d = std::env::temp_dir().join(format!(
+            "plcsh-report-{}-{}",
+            std::process::id(),
+            N.fetch_add(1, Ordering::Relaxed)
+        ));
+        let mut b = std::fs::DirBuilder::new();
+        #[cfg(unix)]
+        std::os::unix::fs::DirBuilderExt::mode(&mut b, 0o700);
+        b.create(&d)?;
+        Ok(ReportDir(d))
+    }
+}
+
+impl Drop for ReportDir {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
 /// Runs one worker for `file` and reads its report; ends it at the wall-clock limit.
 fn one(exe: &Path, lab_path: &Path, lab: &Lab, file: &str) -> Report {
+    let dir = match ReportDir::new() {
+        Ok(d) => d,
+        Err(e) => {
+            return Report::broken(lab, file, format!("grader error: cannot create a folder for the report: {e}"))
+        }
+    };
+    let report = dir.0.join("report.json");
     let child = Command::new(exe)
         .args(["lab", "worker"])
         .arg(lab_path)
         .arg(file)
+        .arg("--report")
+        .arg(&report)
         .stdin(Stdio::null())
         .stdout(Stdio::piped())
-        .stderr(Stdio::null())
+        .stderr(Stdio::piped())
         .spawn();
     let mut child = match child {
         Ok(c) => c,
         Err(e) => return Report::broken(lab, file, format!("grader error: cannot start a worker: {e}")),
     };
-    let mut stdout = child.stdout.take().expect("piped");
-    let reader = std::thread::spawn(move || {
-        let mut s = String::new();
-        let _ = stdout.read_to_string(&mut s);
-        s
-    });
+    let stdout = child.stdout.take().expect("piped");
+    let stderr = child.stderr.take().expect("piped");
+    let out_reader = std::thread::spawn(move || capture(stdout));
+    let err_reader = std::thread::spawn(move || capture(stderr));
     let deadline = Instant::now() + lab.limits.wall;
     let status = loop {
         match child.try_wait() {
@@ -79,17 +145,51 @@ fn one(exe: &Path, lab_path: &Path, lab: &Lab, file: &str) -> Report {
             Err(_) => break None,
         }
     };
-    let text = reader.join().unwrap_or_default();
-    let Some(status) = status else {
-        return Report::broken(
+    let out = out_reader.join().unwrap_or_default();
+    let err = err_reader.join().unwrap_or_default();
+    let mut r = match status {
+        None => Report::broken(
             lab,
             file,
             format!("exceeded the wall-clock safety net of {} s", lab.limits.wall.as_secs_f64()),
-        );
+        ),
+        Some(status) => match std::fs::read(&report).ok().and_then(|b| serde_json::from_slice::<Report>(&b).ok()) {
+            Some(r) => r,
+            None => Report::broken(lab, file, format!("grader error: the worker ended ({status}) without a report")),
+        },
     };
-    match text.lines().last().and_then(|l| serde_json::from_str::<Report>(l).ok()) {
-        Some(r) => r,
-        None => Report::broken(lab, file, format!("grader error: the worker ended ({status}) without a report")),
+    r.stdout = Some(out).filter(|s| !s.is_empty());
+    r.stderr = Some(err).filter(|s| !s.is_empty());
+    r
+}
+
+/// Grades one file in a worker (`lab check` grades the reference this way too, so what it
+/// prints stays out of the check's own output).
+pub fn grade_one(lab_path: &Path, lab: &Lab, file: &str) -> Result<Report> {
+    let exe = std::env::current_exe().map_err(|e| Error::io("cannot find the plcsh executable").cause(e))?;
+    Ok(one(&exe, lab_path, lab, file))
+}
+
+/// The worker (`plcsh lab worker LAB FILE --report REPORT`): grades one file, with what the
+/// Lua code prints on this process's stdout, and writes the report as JSON to `REPORT`.
+pub fn worker(path: &Path, file: &str, report: &Path) -> i32 {
+    let r = match Lab::load(path) {
+        Ok(lab) => super::grader::grade_to(&lab, file, Box::new(std::io::stdout())),
+        Err(e) => {
+            eprintln!("plcsh lab worker: {e}");
+            return 1;
+        }
+    };
+    let text = match serde_json::to_vec(&r) {
+        Ok(t) => t,
+        Err(_) => return 1,
+    };
+    match std::fs::write(report, text) {
+        Ok(()) => 0,
+        Err(e) => {
+            eprintln!("plcsh lab worker: cannot write {}: {e}", report.display());
+            1
+        }
     }
 }
 
