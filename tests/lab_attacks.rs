@@ -77,7 +77,23 @@ fn the_attack_class_gets_its_expected_verdicts_twice_alike() {
         in_root(&args)
     };
     let first = grade(Some(&junit));
+    // The second run on a loaded machine: a busy thread per core beside the two workers.
+    let stop = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+    let cores = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(2);
+    let load: Vec<_> = (0..cores)
+        .map(|_| {
+            let stop = stop.clone();
+            std::thread::spawn(move || {
+                let mut x = 0u64;
+                while !stop.load(std::sync::atomic::Ordering::Relaxed) {
+                    x = std::hint::black_box(x.wrapping_mul(6364136223846793005).wrapping_add(1));
+                }
+            })
+        })
+        .collect();
     let second = grade(None);
+    stop.store(true, std::sync::atomic::Ordering::Relaxed);
+    load.into_iter().for_each(|t| t.join().unwrap());
     assert_eq!(first.status.code(), Some(0), "no grader error: {}", stderr(&first));
     let lines = json_lines(&first);
     assert_eq!(lines.len(), want.len() + 1, "one object per submission and a summary");
@@ -119,7 +135,7 @@ fn the_attack_class_gets_its_expected_verdicts_twice_alike() {
     }
     assert!(wrong.is_empty(), "{} of {} submissions differ:\n{}", wrong.len(), want.len(), wrong.join("\n"));
 
-    // Byte-identical, run after run.
+    // Byte-identical, run after run, idle or loaded.
     assert_eq!(stdout(&first), stdout(&second), "two runs differ");
 
     // A number the grader expected or got is a JSON number.
