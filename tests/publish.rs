@@ -359,10 +359,11 @@ fn writes_from_the_broker_only_to_allowed_operands() {
     send("plcsh/pair/a/set", r#"{"operand":"VW102","value":1,"id":"not-listed"}"#);
     send("plcsh/pair/v/set", r#"{"operand":"VW100","value":1,"id":"read-only"}"#);
     send("plcsh/pair/a/set", r#"{"operand":"VW100""#);
+    send("plcsh/pair/b/set", r#"{"operand":"VW100","value":1,"id":"no-such-device"}"#);
     let replies = |g: &[(String, Vec<u8>, bool)]| -> Vec<serde_json::Value> {
         g.iter().filter(|(t, _, _)| t.ends_with("/reply")).map(|(_, p, _)| json(p)).collect()
     };
-    wait_for(&got, "four replies", |g| replies(g).len() >= 4);
+    wait_for(&got, "five replies", |g| replies(g).len() >= 5);
     let value_of = |g: &[(String, Vec<u8>, bool)]| {
         g.iter().filter(|(t, _, _)| t == "plcsh/pair/a/VW100").any(|(_, p, _)| json(p)["value"] == 1234)
     };
@@ -382,6 +383,12 @@ fn writes_from_the_broker_only_to_allowed_operands() {
         r.iter().any(|x| x["ok"] == false && x["error"]["kind"] == "syntax"),
         "a broken command is answered: {r:?}"
     );
+    // A device that is no member is answered on its own reply topic, with the members.
+    let unknown = by("no-such-device");
+    assert_eq!((unknown["ok"].as_bool(), unknown["device"].as_str()), (Some(false), Some("b")), "{unknown}");
+    let m = unknown["error"]["message"].as_str().unwrap();
+    assert!(m.contains("no device of `pair`") && m.contains("members: a, v") && m.contains("did you mean"), "{m}");
+    assert!(got.lock().unwrap().iter().any(|(t, _, _)| t == "plcsh/pair/b/reply"));
     assert!(
         !got.lock().unwrap().iter().any(|(t, p, _)| t == "plcsh/pair/v/VW100" && json(p)["value"] != 0),
         "the read-only device was not written"
@@ -763,8 +770,11 @@ fn beyond_the_buffer_the_oldest_readings_are_dropped_and_counted() {
     let rest: Vec<String> = lines.map(|l| l.unwrap()).collect();
     let _ = child.wait();
     let summary: serde_json::Value = serde_json::from_str(rest.last().expect("a summary")).unwrap();
-    // The device's `online` and 30 values: 31 messages, of which the newest 5 are kept.
-    assert_eq!(summary["dropped"], 26, "{summary}");
+    // The device's `online` and a value per poll (30, less the slots a loaded machine made
+    // it skip, counted apart): of these messages the newest 5 are kept.
+    let polls = 30 - summary["skipped"].as_u64().unwrap();
+    assert_eq!(summary["dropped"].as_u64(), Some(1 + polls - 5), "{summary}");
+    assert_eq!(summary["dropped_broker_away"], summary["dropped"], "{summary}");
     assert_eq!(summary["undelivered"], 0, "{summary}");
     assert_eq!(summary["ok"], false, "readings were dropped: {summary}");
     wait_for(&got, "the kept readings", |g| g.iter().filter(|(t, _, _)| t == "plcsh/single/plc/VW100").count() >= 1);
@@ -772,4 +782,261 @@ fn beyond_the_buffer_the_oldest_readings_are_dropped_and_counted() {
     // The subscriber came after them: it sees the retained last value, the newest reading.
     let last = g.iter().rev().find(|(t, _, _)| t == "plcsh/single/plc/VW100").map(|(_, p, _)| json(p)).unwrap();
     assert_eq!(last["seq"], 30, "{last}");
+}
+
+/// A profile file with fleet `line` of `n` in-process simulated K2s (`line-1` … `line-N`).
+fn sim_fleet(d: &Path, n: usize) -> PathBuf {
+    let cfg = d.join("devices.toml");
+    let list = vec!["\"sim:K205-16DT\""; n].join(", ");
+    std::fs::write(&cfg, format!("[fleets.line]\ndevices = [{list}]\n")).unwrap();
+    cfg
+}
+
+/// Reads `lines` until a JSON event with `event` and `state`.
+fn until_event(lines: &mut impl Iterator<Item = std::io::Result<String>>, event: &str, state: &str) {
+    loop {
+        let l = lines.next().unwrap_or_else(|| panic!("publish ended before {event} {state}")).unwrap();
+        let v: serde_json::Value = serde_json::from_str(&l).unwrap();
+        if v["event"] == event && v["state"] == state {
+            return;
+        }
+    }
+}
+
+#[test]
+fn an_operand_no_member_has_is_one_usage_error_before_anything_connects() {
+    if !mosquitto_present() {
+        return;
+    }
+    let d = dir("typo");
+    let port = free_port();
+    let _broker = Broker::start(&d, port);
+    let got = subscribe(port, "typo-watch");
+    let cfg = sim_fleet(&d, 3);
+    let broker = format!("mqtt://127.0.0.1:{port}");
+    let args = ["--config", cfg.to_str().unwrap(), "--json", "publish", "-f", "line", "--broker", &broker];
+    let o = run(&[&args[..], &["VW100", "VX0"]].concat(), "");
+    assert_eq!(o.status.code(), Some(2), "{}", both(&o));
+    let l = json_lines(&o);
+    assert_eq!(l.len(), 1, "one error, not one per device: {l:?}");
+    let m = l[0]["error"]["message"].as_str().unwrap();
+    assert!(m.contains("VX0") && m.contains("any member of fleet `line`"), "{m}");
+    // A model that lacks an operand the others have: the member is named.
+    std::fs::write(&cfg, "[fleets.line]\ndevices = [\"sim:K205-16DT\", \"sim:K204ET-16DT\"]\n").unwrap();
+    let o = run(&[&args[..], &["AIW0"]].concat(), "");
+    assert_eq!(o.status.code(), Some(2), "{}", both(&o));
+    let m = json_lines(&o)[0]["error"]["message"].as_str().unwrap().to_string();
+    assert!(m.contains("AIW0") && m.contains("line-1") && !m.contains("line-2"), "{m}");
+    // Nothing reached the broker: no device marked offline, no publisher status.
+    std::thread::sleep(Duration::from_millis(300));
+    let g = got.lock().unwrap();
+    assert!(g.is_empty(), "nothing published: {g:?}");
+}
+
+#[test]
+fn a_stop_by_signal_after_everything_was_delivered_exits_0() {
+    if !mosquitto_present() {
+        return;
+    }
+    let d = dir("stop");
+    let port = free_port();
+    let _broker = Broker::start(&d, port);
+    let got = subscribe(port, "stop-watch");
+    for (signal, name) in [
+        (plcsh::core::platform::interrupt_child as fn(&Child), "SIGINT"),
+        (plcsh::core::platform::terminate_child, "SIGTERM"),
+    ] {
+        got.lock().unwrap().clear();
+        let mut child = plcsh()
+            .args([
+                "--json",
+                "publish",
+                "--broker",
+                &format!("mqtt://127.0.0.1:{port}"),
+                "--every",
+                "20ms",
+                "--qos",
+                "1",
+                "VW100",
+            ])
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        let mut lines = std::io::BufReader::new(child.stdout.take().unwrap()).lines();
+        until_event(&mut lines, "broker", "connected");
+        wait_for(&got, "values", |g| g.iter().filter(|(t, _, _)| t == "plcsh/single/plc/VW100").count() >= 3);
+        signal(&child);
+        let rest: Vec<String> = lines.map(|l| l.unwrap()).collect();
+        let status = child.wait().unwrap();
+        let summary: serde_json::Value = serde_json::from_str(rest.last().expect("a summary")).unwrap();
+        assert_eq!(summary["ok"], true, "{name}: {rest:?}");
+        assert_eq!(summary["undelivered"], 0, "{name}: {summary}");
+        assert_eq!(status.code(), Some(0), "{name}: a normal stop with everything delivered: {rest:?}");
+        wait_for(&got, "the goodbye", |g| {
+            g.iter().any(|(t, p, _)| t == "plcsh/single/_publisher/status" && p == b"offline")
+        });
+    }
+}
+
+#[test]
+fn a_broker_never_reached_is_named_as_such() {
+    let port = free_port();
+    let started = Instant::now();
+    let o = run(
+        &[
+            "--json",
+            "publish",
+            "--broker",
+            &format!("mqtt://127.0.0.1:{port}"),
+            "--every",
+            "50ms",
+            "--count",
+            "2",
+            "VW100",
+        ],
+        "",
+    );
+    assert_eq!(o.status.code(), Some(4), "{}", both(&o));
+    let l = json_lines(&o);
+    let m = l.last().unwrap()["error"]["message"].as_str().unwrap().to_string();
+    assert!(m.contains("no MQTT broker answered at 127.0.0.1:") && m.contains("refused"), "{m}");
+    assert!(started.elapsed() < Duration::from_secs(15), "{:?}", started.elapsed());
+}
+
+#[test]
+fn falling_behind_with_the_broker_up_keeps_the_queue_bounded_and_says_so() {
+    if !mosquitto_present() {
+        return;
+    }
+    let d = dir("behind");
+    let port = free_port();
+    let _broker = Broker::start(&d, port);
+    let cfg = sim_fleet(&d, 20);
+    // 20 devices every millisecond at QoS 1 into a queue of 3: more than plcsh hands over.
+    let o = run(
+        &[
+            "--config",
+            cfg.to_str().unwrap(),
+            "--json",
+            "publish",
+            "-f",
+            "line",
+            "--broker",
+            &format!("mqtt://127.0.0.1:{port}"),
+            "--every",
+            "1ms",
+            "--count",
+            "300",
+            "--buffer",
+            "3",
+            "--qos",
+            "1",
+            "VW100",
+            "VW102",
+        ],
+        "",
+    );
+    let l = json_lines(&o);
+    let summary = l.last().unwrap();
+    assert!(l.iter().any(|x| x["state"] == "connected"), "{l:?}");
+    assert!(!l.iter().any(|x| x["state"] == "away"), "the broker never left: {l:?}");
+    assert_eq!(summary["dropped_broker_away"], 0, "not blamed on the broker: {summary}");
+    let behind = summary["dropped_behind"].as_u64().unwrap() + summary["skipped"].as_u64().unwrap();
+    assert!(behind > 0, "{summary}");
+    assert_eq!(summary["dropped"], summary["dropped_behind"], "{summary}");
+    // Per device: who missed what.
+    let per = summary["behind"].as_object().unwrap();
+    let total: u64 = per.values().map(|v| v["dropped_behind"].as_u64().unwrap() + v["skipped"].as_u64().unwrap()).sum();
+    assert_eq!(total, behind, "{summary}");
+    assert!(per.keys().all(|k| k.starts_with("line-")), "{summary}");
+    assert_eq!(o.status.code(), Some(1), "readings were dropped: {}", both(&o));
+}
+
+#[test]
+fn three_shards_publish_the_whole_fleet_once_and_a_killed_shard_shows_its_will() {
+    if !mosquitto_present() {
+        return;
+    }
+    let d = dir("shards");
+    let port = free_port();
+    let _broker = Broker::start(&d, port);
+    let got = subscribe(port, "shard-watch");
+    let cfg = sim_fleet(&d, 12);
+    let shard = |k: u32| {
+        let mut c = plcsh()
+            .args([
+                "--config",
+                cfg.to_str().unwrap(),
+                "--json",
+                "publish",
+                "-f",
+                "line",
+                "--shard",
+                &format!("{k}/3"),
+                "--broker",
+                &format!("mqtt://127.0.0.1:{port}"),
+                "--every",
+                "50ms",
+                "VW100",
+            ])
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        let lines = std::io::BufReader::new(c.stdout.take().unwrap()).lines();
+        (c, lines)
+    };
+    let mut shards: Vec<_> = (1..=3).map(shard).collect();
+    for (_, lines) in shards.iter_mut() {
+        until_event(lines, "broker", "connected");
+    }
+    let status_of = |g: &[(String, Vec<u8>, bool)], k: u32| {
+        g.iter()
+            .rev()
+            .find(|(t, _, _)| *t == format!("plcsh/line/_publisher/shard{k}/status"))
+            .map(|(_, p, _)| p.clone())
+    };
+    wait_for(&got, "every shard online", |g| (1..=3).all(|k| status_of(g, k).as_deref() == Some(&b"online"[..])));
+    let devices = |g: &[(String, Vec<u8>, bool)]| -> std::collections::BTreeSet<String> {
+        g.iter()
+            .filter(|(t, _, _)| t.ends_with("/VW100"))
+            .map(|(_, p, _)| json(p)["device"].as_str().unwrap().to_string())
+            .collect()
+    };
+    wait_for(&got, "every device", |g| devices(g).len() == 12);
+    // kill -9 the third shard: the broker publishes its will; the others stay online.
+    let (mut third, _) = shards.pop().unwrap();
+    third.kill().unwrap();
+    let _ = third.wait();
+    wait_for(&got, "the killed shard's will", |g| status_of(g, 3).as_deref() == Some(&b"offline"[..]));
+    let g = got.lock().unwrap().clone();
+    assert_eq!(status_of(&g, 1).as_deref(), Some(&b"online"[..]));
+    assert_eq!(status_of(&g, 2).as_deref(), Some(&b"online"[..]));
+    let mut summaries = Vec::new();
+    for (c, lines) in shards {
+        plcsh::core::platform::interrupt_child(&c);
+        let rest: Vec<String> = lines.map(|l| l.unwrap()).collect();
+        let _ = c.wait_with_output();
+        summaries.push(serde_json::from_str::<serde_json::Value>(rest.last().unwrap()).unwrap());
+    }
+    // Exactly the fleet, each device from one shard only: one `online` per device, and no
+    // poll number twice for a device.
+    let all: std::collections::BTreeSet<String> = (1..=12).map(|i| format!("line-{i}")).collect();
+    assert_eq!(devices(&g), all);
+    for dev in &all {
+        let onlines = g.iter().filter(|(t, p, _)| *t == format!("plcsh/line/{dev}/status") && p == b"online").count();
+        assert_eq!(onlines, 1, "{dev} is polled by one shard");
+        let mut seqs: Vec<u64> = g
+            .iter()
+            .filter(|(t, _, _)| *t == format!("plcsh/line/{dev}/VW100"))
+            .map(|(_, p, _)| json(p)["seq"].as_u64().unwrap())
+            .collect();
+        let n = seqs.len();
+        seqs.dedup();
+        assert_eq!(seqs.len(), n, "{dev}: one publisher's polls");
+    }
+    let held: u64 = summaries.iter().map(|s| s["devices"].as_u64().unwrap()).sum::<u64>();
+    assert!(held < 12 && held > 0, "the two left hold their parts only: {summaries:?}");
+    assert!(summaries.iter().all(|s| s["shard"].is_string() && s["ok"] == true), "{summaries:?}");
 }

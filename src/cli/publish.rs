@@ -28,6 +28,8 @@ use std::time::{Duration, Instant};
 pub const EXIT_AUTH: i32 = 3;
 /// Exit status: the broker's TLS certificate did not verify, or no broker answered at the start.
 pub const EXIT_BROKER: i32 = 4;
+/// How long polling waits for the broker's first answer before it starts anyway.
+const START_GRACE: Duration = Duration::from_secs(2);
 /// How often `plcsh/GROUP/_publisher/stats` is published.
 const STATS_EVERY: Duration = Duration::from_secs(5);
 
@@ -297,6 +299,30 @@ fn start(cli: &super::Cli, shell: &mut Shell, args: &PublishArgs, style: Style, 
         broker::spawn(cfg, outbox.clone(), notes_tx).map_err(|e| Error::io("cannot start the MQTT thread").cause(e))?;
     let (seen_tx, seen) = std::sync::mpsc::channel::<Seen>();
     let stop = shell.session.interrupt.clone();
+    // Polling starts once the broker has answered (or after START_GRACE without it, the
+    // readings then wait for it): readings dropped while a connection is still being made
+    // would be blamed on a broker that is there.
+    let grace = Instant::now() + START_GRACE;
+    let mut early = Vec::new();
+    while let Ok(n) = notes.recv_timeout(grace.saturating_duration_since(Instant::now())) {
+        let done = matches!(n, Note::Connected | Note::Fatal(_));
+        early.push(n);
+        if done || stop.load(Ordering::SeqCst) {
+            break;
+        }
+    }
+    if let Some(Note::Fatal(f)) = early.last() {
+        outbox.close();
+        let _ = broker_thread.join();
+        let (e, code) = fatal(f, &broker_name);
+        output::report_error(out, style, "publish", &e, None)?;
+        return Ok(code);
+    }
+    let (early_tx, notes_early) = std::sync::mpsc::channel();
+    for n in early {
+        let _ = early_tx.send(n);
+    }
+    drop(early_tx);
     let pool = Pool::start(members, poll, outbox.clone(), seen_tx)
         .map_err(|e| Error::io("cannot start the polling threads").cause(e))?;
     let mut offline: std::collections::BTreeSet<String> = Default::default();
@@ -319,7 +345,7 @@ fn start(cli: &super::Cli, shell: &mut Shell, args: &PublishArgs, style: Style, 
     };
     // Report what happens while the devices are polled.
     loop {
-        while let Ok(n) = notes.try_recv() {
+        while let Ok(n) = notes_early.try_recv().or_else(|_| notes.try_recv()) {
             match n {
                 Note::Connected => event(
                     out,

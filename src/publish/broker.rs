@@ -268,7 +268,13 @@ macro_rules! broker_loop {
                                     outbox.put_back(unconfirmed.drain(..));
                                 }
                                 if !said_offline {
-                                    outbox.push_front(status(b"online"));
+                                    // Straight to the client, ahead of the queue (a full queue
+                                    // could push it out).
+                                    let m = status(b"online");
+                                    match client.try_publish(m.topic.clone(), qos, true, m.payload.clone()) {
+                                        Ok(()) => unconfirmed.push_back(m),
+                                        Err(_) => outbox.push_front(m),
+                                    }
                                 }
                                 if let Some(filter) = &cfg.commands {
                                     let _ = client.try_subscribe(filter.clone(), QoS::AtLeastOnce);

@@ -402,12 +402,10 @@ impl Pool {
         let mut next = due(d.slot);
         if next + every <= now {
             let behind = ((now - next).as_nanos() / every.as_nanos().max(1)) as u64;
-            let behind = p.count.map_or(behind, |c| behind.min(c.saturating_sub(d.slot)));
+            // With --count the last slot is always polled (the run ends on a fresh reading).
+            let behind = p.count.map_or(behind, |c| behind.min(c.saturating_sub(d.slot + 1)));
             d.slot += behind;
             self.outbox.of(dev).skipped.fetch_add(behind, Ordering::Relaxed);
-            if p.count.is_some_and(|c| d.slot >= c) {
-                return None;
-            }
             next = due(d.slot);
         }
         Some(next)
