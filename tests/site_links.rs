@@ -98,7 +98,12 @@ fn every_link_of_the_built_site_resolves() {
             checked += 1;
             let (path, frag) = link.split_once('#').unwrap_or((&link, ""));
             let path = percent_decoded(path.split('?').next().unwrap());
-            let mut target = if path.is_empty() { page.clone() } else { page.parent().unwrap().join(&path) };
+            // `/…` is the site's root (the 404 page's `<base href="/">`).
+            let mut target = match path.strip_prefix('/') {
+                Some(from_root) => site.join(from_root),
+                None if path.is_empty() => page.clone(),
+                None => page.parent().unwrap().join(&path),
+            };
             if target.is_dir() {
                 target = target.join("index.html");
             }
