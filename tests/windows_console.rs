@@ -8,7 +8,8 @@
 //! process a console): plcsh switches the console it inherits to process escape codes at
 //! start-up (ENABLE_VIRTUAL_TERMINAL_PROCESSING, which a classic console has off), and with
 //! `PLCSH_CONSOLE_VT=off` — acting as a console that refuses — it leaves the mode alone and
-//! writes its error without escape codes (read back from the console's screen buffer).
+//! writes its error and `watch`'s samples without escape codes (read back from the console's
+//! screen buffer).
 
 mod common;
 use common::{plcsh, Start};
@@ -135,6 +136,18 @@ mod console {
         let row = &shown[shown[..at].rfind("  ").unwrap_or(0)..];
         let row = &row[..row.find("hint:").unwrap_or(row.len())];
         assert!(!row.contains('\u{1b}') && !row.contains("[31m") && !row.contains('←'), "{row:?}");
+
+        // `watch` prints its plain form: one line per sample, no erase-line codes.
+        let st = plcsh()
+            .args(["-c", "watch VW0 SMB28 every=10ms count=3"])
+            .env("PLCSH_CONSOLE_VT", "off")
+            .stdin(std::process::Stdio::null())
+            .status_retrying();
+        assert!(st.success());
+        let shown = last_rows(h, 8);
+        let at = shown.rfind("VW0").unwrap_or_else(|| panic!("no watch output on the console: {shown:?}"));
+        let rows = &shown[shown[..at].rfind("watch VW0").map_or(0, |i| i + 9)..];
+        assert!(!rows.contains('\u{1b}') && !rows.contains("[2K") && !rows.contains('←'), "{rows:?}");
     }
 
     trait Status {
