@@ -181,9 +181,29 @@ fn bytes(text: &str) -> Result<usize> {
         .unwrap_or((t, 1));
     match num.parse::<usize>() {
         Ok(n) if n > 0 => Ok(n.saturating_mul(mult)),
-        _ => Err(Error::usage(format!("{FILE}: [budget] memory = \"{text}\" is not a size"))
-            .hint("e.g. \"256MiB\" (units B, KiB, MiB, GiB)")),
+        _ => Err(Error::usage(format!("{FILE}: [budget] memory = \"{text}\" is not a size")).hint(
+            match size_in_words(t) {
+                Some(w) => format!("write \"{w}\" (units B, KiB, MiB, GiB)"),
+                None => "e.g. \"256MiB\" (units B, KiB, MiB, GiB)".into(),
+            },
+        )),
     }
+}
+
+/// A size written another way (`256 MB`, `1g`, `512 мегабайт`), as plcsh writes it (`256MiB`).
+fn size_in_words(t: &str) -> Option<String> {
+    let split = t.find(|c: char| !c.is_ascii_digit())?;
+    let n: u64 = t[..split].parse().ok().filter(|n| *n > 0)?;
+    let unit = match t[split..].trim().to_lowercase().as_str() {
+        "k" | "kb" | "kib" | "kbytes" | "kilobyte" | "kilobytes" | "кб" | "килобайт" => "KiB",
+        "m" | "mb" | "mib" | "meg" | "megs" | "megabyte" | "megabytes" | "мб" | "мегабайт" | "мегабайта" => {
+            "MiB"
+        }
+        "g" | "gb" | "gib" | "gigabyte" | "gigabytes" | "гб" | "гигабайт" | "гигабайта" => "GiB",
+        "b" | "byte" | "bytes" | "байт" => "B",
+        _ => return None,
+    };
+    Some(format!("{n}{unit}"))
 }
 
 impl Lab {
@@ -403,6 +423,11 @@ mod tests {
             assert!(e.message.contains(&format!("sim_time = \"{text}\"")), "{text}: {e}");
             assert!(e.hint.as_deref().unwrap_or_default().contains(want), "{text}: {:?}", e.hint);
             assert!(!e.to_string().contains("mutes"), "{e}");
+        }
+        for (text, want) in [("256 MB", "write \"256MiB\""), ("1g", "write \"1GiB\""), ("64 мб", "write \"64MiB\"")] {
+            let e = bytes(text).unwrap_err();
+            assert!(e.message.contains(&format!("memory = \"{text}\"")), "{text}: {e}");
+            assert!(e.hint.as_deref().unwrap_or_default().contains(want), "{text}: {:?}", e.hint);
         }
         let e = duration("wall", "soon").unwrap_err();
         assert!(e.message.contains("wall = \"soon\""), "{e}");
