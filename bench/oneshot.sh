@@ -5,21 +5,23 @@
 # each figure is the median (wall time; the CPU time and minor page faults of the process),
 # with the load average before and after.
 #
-#   bench/oneshot.sh [RUNS] [PLCSH...]    # default 20 runs, the static and the default build
+#   bench/oneshot.sh [RUNS] [PLCSH...]    # default 40 runs, the static and the default build
 #
 # Several plcsh binaries may be given (e.g. builds with different release settings): each is
 # measured in the same rounds. Needs target/bench/mb_client (bench/run.sh or bench/callgrind.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-runs=${1:-20}
+runs=${1:-40}
 shift || true
 bins=("$@")
 if [ ${#bins[@]} -eq 0 ]; then
     [ -x target/x86_64-unknown-linux-gnu/release/plcsh ] && bins+=(target/x86_64-unknown-linux-gnu/release/plcsh)
-    bins+=(target/release/plcsh)
+    [ -x target/release/plcsh ] && bins+=(target/release/plcsh)
 fi
+[ ${#bins[@]} -gt 0 ] || { echo "no plcsh build to measure: cargo build-static (or give PLCSH)" >&2; exit 1; }
 . bench/serve-sim.sh
-serve_sim target/release/plcsh
+# The server is the first program measured (any build serves the same simulator).
+serve_sim "${bins[0]}"
 # Each plcsh runs from a copy, as `cargo install` puts it on the PATH: a file the linker has just
 # written takes ~15 more page faults per start than the same bytes copied (its page-cache pages
 # are smaller), which would measure the build directory rather than the program.
