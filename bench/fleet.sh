@@ -65,7 +65,7 @@ try:
     own = json.loads(summary)
 except ValueError:
     own = {"raw": summary[:200]}
-keep = {k: own[k] for k in ("published", "dropped", "behind", "dropped_broker_away", "dropped_behind", "undelivered") if k in own}
+keep = {k: own[k] for k in ("published", "skipped", "dropped_behind", "dropped_broker_away", "undelivered") if k in own}
 lat = s.get("latency_ms", {})
 print("| %s | %s | %s Hz | %s Hz | %.0f %% | %.0f MiB | %s | %s | %s | %s | exit %s |" % (
     name, n, hz, s.get("rate_hz"), float(cpu), int(rss) / 1024, lat.get("p50"), lat.get("p99"),

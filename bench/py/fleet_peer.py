@@ -45,7 +45,7 @@ async def device(i, addr, period, regs, group, mq, stats, stop):
         now = time.monotonic()
         if due < now:
             late = int((now - due) / period) + 1
-            stats["behind"] += late
+            stats["skipped"] += late
             k += late
             due = start + k * period
         try:
@@ -66,7 +66,7 @@ async def main():
     loop = asyncio.get_running_loop()
     for s in (signal.SIGINT, signal.SIGTERM):
         loop.add_signal_handler(s, stop.set)
-    stats = {"published": 0, "errors": 0, "behind": 0}
+    stats = {"published": 0, "errors": 0, "skipped": 0}
     await asyncio.gather(*(device(i, a, period, regs, group, mq, stats, stop) for i, a in enumerate(addrs)))
     mq.loop_stop()
     print(json.dumps(stats))

@@ -505,7 +505,7 @@ fn start(cli: &super::Cli, shell: &mut Shell, args: &PublishArgs, style: Style, 
                     )
                 })
                 .collect();
-            v.sort_by(|a, b| b.1.cmp(&a.1));
+            v.sort_by_key(|b| std::cmp::Reverse(b.1));
             v.iter().take(5).map(|(k, n)| format!("{k} {n}")).collect()
         };
         writeln!(
