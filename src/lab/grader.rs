@@ -391,10 +391,11 @@ pub fn no_addresses(s: &str) -> String {
         let (head, tail) = rest.split_at(i);
         let after = &tail[2..];
         let hex = after.strip_prefix("0x").unwrap_or(after);
-        let n = hex.bytes().take_while(u8::is_ascii_hexdigit).count();
         let named = ["table", "function", "thread", "userdata", "builtin"].iter().any(|w| head.ends_with(w));
+        // An address has at most 16 hex digits: no need to look further into a long text.
+        let n = if named { hex.bytes().take(17).take_while(u8::is_ascii_hexdigit).count() } else { 0 };
         out.push_str(head);
-        if named && (n >= 8 || (hex.len() < after.len() && n >= 1)) {
+        if (8..=16).contains(&n) || (hex.len() < after.len() && (1..=16).contains(&n)) {
             rest = &hex[n..];
         } else {
             out.push_str(": ");
