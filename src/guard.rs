@@ -31,7 +31,7 @@
 //! machine: they are reached through the same hook, stating no changes.
 
 use crate::core::device::Change;
-use crate::core::{Device, DeviceInfo, Error, Operand, OperandSpace, Result, Value};
+use crate::core::{Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
 use crate::profile::Guard;
 use std::any::Any;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -71,7 +71,7 @@ impl Guarded {
                 Some(w) => format!("{w} refused (it changes {name})"),
                 None => "write refused".to_string(),
             };
-            return Err(Error::usage(format!("{doing}: the session is read-only (--read-only)"))
+            return Err(Error::new(ErrorKind::Refused, format!("{doing}: the session is read-only (--read-only)"))
                 .operand(name.to_string())
                 .hint("reading works; start plcsh without --read-only to write"));
         }

@@ -205,3 +205,66 @@ fn paths_prints_where_every_file_lives() {
     }
     assert!(text.contains("/tmp/snaps") && text.contains("none"), "state none under PLCSH_STATE=none:\n{text}");
 }
+
+/// `plcsh man` prints the roff page made from the clap definition: its title, then every
+/// subcommand and every shell command; `plcsh man > plcsh.1` is the file `man ./plcsh.1` reads.
+#[test]
+fn man_prints_the_manual_page() {
+    let o = run(&["man"], "");
+    assert!(o.status.success(), "{}", both(&o));
+    let page = stdout(&o);
+    let th = page.lines().find(|l| l.starts_with(".TH")).unwrap_or("");
+    assert!(th.starts_with(".TH PLCSH 1"), "{th}");
+    for sub in ["models", "devices", "ports", "paths", "man", "completions", "sim", "agent", "run", "record", "lab"] {
+        assert!(page.contains(&format!("plcsh\\-{sub}")), "the page lacks the subcommand {sub}");
+    }
+    for cmd in ["get", "set", "pto", "hsc", "servo", "sim"] {
+        assert!(page.contains(&format!("\\fB{cmd} ")), "the page lacks the shell command {cmd}");
+    }
+}
+
+/// A subcommand the command line does not have gets plcsh's message: the subcommands there
+/// are, and the shell command of that name (`agent status` is one).
+#[test]
+fn an_unknown_subcommand_names_the_ones_there_are() {
+    let o = run(&["agent", "status"], "");
+    assert_eq!(o.status.code(), Some(2));
+    let err = stderr(&o);
+    assert!(err.contains("`plcsh agent` has no subcommand `status`") && err.contains("its subcommands: il"), "{err}");
+    assert!(err.contains("plcsh -c 'agent status'"), "{err}");
+    assert!(!err.contains("unrecognized subcommand"), "{err}");
+}
+
+/// A subcommand's help lists its own options apart from the global ones.
+#[test]
+fn subcommand_help_separates_its_own_options_from_the_global_ones() {
+    for args in [&["completions", "--help"][..], &["sim", "serve", "--help"]] {
+        let o = run(args, "");
+        let text = stdout(&o);
+        let (own, global) = text.split_once("Global options:").unwrap_or_else(|| panic!("{args:?}: {text}"));
+        assert!(global.contains("--json") && !own.contains("--json"), "{args:?}: {text}");
+    }
+    let o = run(&["completions", "--help"], "");
+    let own = stdout(&o).split("Global options:").next().unwrap_or("").to_string();
+    assert!(own.contains("--write") && !own.contains("--model"), "{own}");
+}
+
+/// One bad profile leaves `devices` readable: the problem is a line of its own, the table's
+/// rows as narrow as the devices make them.
+#[test]
+fn a_bad_profile_does_not_widen_the_devices_table() {
+    let dir = std::env::temp_dir().join(format!("plcsh-bad-profile-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("devices.toml");
+    std::fs::write(&file, "[devices.bad]\nurl = \"nope:/x\"\n").unwrap();
+    let o = run(&["--config", file.to_str().unwrap(), "devices"], "");
+    assert!(o.status.success(), "{}", both(&o));
+    for l in stdout(&o).lines() {
+        assert!(l.chars().count() <= 100, "a row {} wide: {l}", l.chars().count());
+    }
+    assert!(stderr(&o).contains("profile `bad` skipped"), "{}", stderr(&o));
+    let o = run(&["--json", "--config", file.to_str().unwrap(), "devices"], "");
+    let j = &json_lines(&o)[0];
+    assert!(j["problems"][0].as_str().is_some_and(|p| p.contains("`bad`")), "{j}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}

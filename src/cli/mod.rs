@@ -39,6 +39,10 @@ pub struct Cli {
     pub sub: Option<Sub>,
 }
 
+/// The heading of the options every subcommand takes, apart from a subcommand's own
+/// (`plcsh sim serve --help` lists its serve options first, then these).
+const GLOBAL: &str = "Global options";
+
 /// The top-level options (`cli.json`, `cli.devices` … read through `Deref`): one table for
 /// the full parser and for [`parse_one_shot`]'s light one.
 #[derive(clap::Args, Debug)]
@@ -47,45 +51,45 @@ pub struct Options {
     #[arg(short = 'c', long = "command", value_name = "COMMANDS")]
     pub command: Option<String>,
     /// Print one JSON object per command result.
-    #[arg(long, global = true)]
+    #[arg(long, global = true, help_heading = GLOBAL)]
     pub json: bool,
     /// Show more: each frame sent and received in hex with timing, request counts, sample rates.
-    #[arg(short, long, action = clap::ArgAction::Count, global = true)]
+    #[arg(short, long, action = clap::ArgAction::Count, global = true, help_heading = GLOBAL)]
     pub verbose: u8,
     /// Model of the default simulated PLC.
-    #[arg(long, default_value = catalog::DEFAULT_MODEL, global = true)]
+    #[arg(long, default_value = catalog::DEFAULT_MODEL, global = true, help_heading = GLOBAL)]
     pub model: String,
     /// Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made
     /// current) or a bare URL (which replaces `plc`). Repeatable.
-    #[arg(long = "device", short = 'd', value_name = "NAME=URL", global = true)]
+    #[arg(long = "device", short = 'd', value_name = "NAME=URL", global = true, help_heading = GLOBAL)]
     pub devices: Vec<String>,
     /// Simulator time: follow the wall clock, or move only when stepped.
-    #[arg(long, value_enum, default_value = "wall", global = true)]
+    #[arg(long, value_enum, default_value = "wall", global = true, help_heading = GLOBAL)]
     pub time: TimeMode,
-    #[arg(long, value_name = "FILE", global = true,
+    #[arg(long, value_name = "FILE", global = true, help_heading = GLOBAL,
         help = concat!("Device profile file (default: PLCSH_CONFIG, else ", crate::core::platform::words::profile_file!(), ")."))]
     pub config: Option<std::path::PathBuf>,
     /// Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the
     /// user's data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE.
-    #[arg(long, value_name = "FILE|none", global = true)]
+    #[arg(long, value_name = "FILE|none", global = true, help_heading = GLOBAL)]
     pub state: Option<std::path::PathBuf>,
     /// Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`).
-    #[arg(long, value_name = "FILE", global = true)]
+    #[arg(long, value_name = "FILE", global = true, help_heading = GLOBAL)]
     pub record: Option<std::path::PathBuf>,
     /// Open a simulated machine described by a bench file (devices, wiring, initial values).
-    #[arg(long, value_name = "FILE", global = true)]
+    #[arg(long, value_name = "FILE", global = true, help_heading = GLOBAL)]
     pub bench: Option<std::path::PathBuf>,
     /// Refuse every change to every device (writes, instructions, servo commands): inspect a live machine.
-    #[arg(long = "read-only", global = true)]
+    #[arg(long = "read-only", global = true, help_heading = GLOBAL)]
     pub read_only: bool,
     /// Run -c's commands (or `run`'s script) on every device of this fleet from the profile file, at once (docs/fleets.md).
     #[arg(short = 'f', long = "fleet", value_name = "NAME")]
     pub fleet: Option<String>,
     /// With --fleet: how many devices are worked on at once.
-    #[arg(short = 'j', long = "jobs", value_name = "N", default_value_t = 8, global = true)]
+    #[arg(short = 'j', long = "jobs", value_name = "N", default_value_t = 8, global = true, help_heading = GLOBAL)]
     pub jobs: usize,
     /// With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit).
-    #[arg(long = "device-timeout", value_name = "DURATION", default_value = "60s", global = true)]
+    #[arg(long = "device-timeout", value_name = "DURATION", default_value = "60s", global = true, help_heading = GLOBAL)]
     pub device_timeout: String,
 }
 
@@ -112,9 +116,9 @@ pub enum Sub {
     Ports,
     /// Print where every file lives: profiles, Lua modules, state, history, snapshots, UMPK flash, recordings.
     Paths,
-    /// Print a shell completion script (bash, zsh, fish, powershell), or write them all.
     /// Print the manual page (roff) made from these flags and the shell's commands: plcsh man > plcsh.1
     Man,
+    /// Print a shell completion script (bash, zsh, fish, powershell), or write them all.
     Completions {
         /// The shell to print the script for.
         #[arg(value_enum)]
@@ -415,7 +419,7 @@ fn run_cli() -> i32 {
     let (argv, script_args) = split_script_args(std::env::args_os().collect());
     let parsed = match parse_one_shot(&argv) {
         Some(cli) => Ok(cli),
-        None => Cli::try_parse_from(argv),
+        None => Cli::try_parse_from(argv.iter()),
     };
     let cli = match parsed {
         Ok(mut c) => {
@@ -425,6 +429,10 @@ fn run_cli() -> i32 {
             c
         }
         Err(e) => {
+            if let Some(msg) = unknown_subcommand(&argv, &e) {
+                eprintln!("{msg}");
+                return exit::USAGE;
+            }
             let _ = e.print();
             return if e.use_stderr() { exit::USAGE } else { exit::OK };
         }
@@ -436,11 +444,11 @@ fn run_cli() -> i32 {
         // Before any device is opened: replay builds its own simulators (and refuses --device).
         return record::replay(args, cli.bench.as_deref(), !cli.devices.is_empty(), style, &mut out);
     }
-    if let Some(Sub::Lab { cmd }) = &cli.sub {
     if let Some(Sub::Man) = &cli.sub {
         // Made from the flags and the command registry: no device is opened.
         return man::run(&mut out);
     }
+    if let Some(Sub::Lab { cmd }) = &cli.sub {
         // A lab builds its own simulators from its lab.toml (never the user's state file).
         return lab::run(cmd, style, &mut out);
     }
@@ -475,6 +483,46 @@ fn run_cli() -> i32 {
     }
 }
 
+/// plcsh's own message for a subcommand the command line does not have (`plcsh agent status`):
+/// the subcommands there are, and the shell command of that name when there is one (`agent
+/// status` is a shell command: `plcsh -c 'agent status'`).
+fn unknown_subcommand(argv: &[std::ffi::OsString], e: &clap::Error) -> Option<String> {
+    use clap::error::{ContextKind, ContextValue};
+    if e.kind() != clap::error::ErrorKind::InvalidSubcommand {
+        return None;
+    }
+    let Some(ContextValue::String(bad)) = e.get(ContextKind::InvalidSubcommand) else { return None };
+    // The subcommands typed before the unknown word (`agent`), walked through the definition.
+    let mut cmd = <Cli as clap::CommandFactory>::command();
+    let mut path = vec!["plcsh".to_string()];
+    for a in argv.iter().skip(1).filter_map(|a| a.to_str()) {
+        if a == bad {
+            break;
+        }
+        if let Some(sub) = cmd.find_subcommand(a).cloned() {
+            path.push(a.to_string());
+            cmd = sub;
+        }
+    }
+    let subs: Vec<String> = cmd
+        .get_subcommands()
+        .filter(|s| !s.is_hide_set())
+        .map(|s| s.get_name().to_string())
+        .filter(|n| n != "help")
+        .collect();
+    let mut msg =
+        format!("plcsh: `{}` has no subcommand `{bad}`; its subcommands: {}", path.join(" "), subs.join(", "));
+    let shell_line = format!("{} {bad}", path[1..].join(" "));
+    let shell_line = shell_line.trim();
+    if let Some(c) = crate::shell::commands::find(shell_line.split(' ').next().unwrap_or("")) {
+        if !crate::shell::commands::forms::fitting(c, shell_line[c.name.len()..].trim()).is_empty() {
+            msg.push_str(&format!("\n  hint: `{shell_line}` is a shell command: plcsh -c '{shell_line}'"));
+        }
+    }
+    msg.push_str(&format!("\n  `{} --help` describes each", path.join(" ")));
+    Some(msg)
+}
+
 /// Runs what the flags ask for with the built shell; returns the exit status.
 fn run(cli: &Cli, mut shell: Shell, style: Style, mut out: std::io::StdoutLock<'static>) -> i32 {
     if let Some(name) = &cli.fleet {
@@ -507,8 +555,8 @@ fn run(cli: &Cli, mut shell: Shell, style: Style, mut out: std::io::StdoutLock<'
                     2
                 }
             },
-            Sub::Completions { shell, write } => completions::run(*shell, write.as_deref(), &mut out),
             Sub::Man => man::run(&mut out),
+            Sub::Completions { shell, write } => completions::run(*shell, write.as_deref(), &mut out),
             Sub::Devices => i32::from(!shell.run_line("devices", &mut out)),
             Sub::Ports => i32::from(!shell.run_line("ports", &mut out)),
             Sub::Paths => i32::from(!shell.run_line("paths", &mut out)),

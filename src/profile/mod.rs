@@ -23,7 +23,7 @@
 pub mod fleet;
 
 use crate::core::url::DeviceUrl;
-use crate::core::{Error, Operand, OperandSpace, Result};
+use crate::core::{Error, ErrorKind, Operand, OperandSpace, Result};
 use serde::Deserialize;
 use std::collections::{BTreeMap, HashSet};
 use std::fmt;
@@ -476,18 +476,25 @@ impl Guard {
             None => "write refused".to_string(),
         };
         if self.read_only {
-            return Err(Error::usage(format!("{doing}: profile `{}` is read_only ({})", self.profile, self.origin))
-                .operand(name.to_string())
-                .hint("reading works; to write, remove `read_only = true` from the profile"));
+            // A refusal by the write rules, as docs/json.md lists it: kind `refused`.
+            return Err(Error::new(
+                ErrorKind::Refused,
+                format!("{doing}: profile `{}` is read_only ({})", self.profile, self.origin),
+            )
+            .operand(name.to_string())
+            .hint("reading works; to write, remove `read_only = true` from the profile"));
         }
         if let Some((set, items)) = &self.allow {
             if !set.contains(bare(name)) {
-                return Err(Error::usage(format!(
-                    "{doing}: {name} is not in profile `{}`'s allow list [{}] ({})",
-                    self.profile,
-                    items.join(", "),
-                    self.origin
-                ))
+                return Err(Error::new(
+                    ErrorKind::Refused,
+                    format!(
+                        "{doing}: {name} is not in profile `{}`'s allow list [{}] ({})",
+                        self.profile,
+                        items.join(", "),
+                        self.origin
+                    ),
+                )
                 .operand(name.to_string())
                 .hint("writes are allowed only to the operands listed, with the same size"));
             }
@@ -611,11 +618,13 @@ word_order = "low-first"
         let e = g.check(&space, &op("VW106")).unwrap_err();
         assert!(e.message.contains("press1") && e.message.contains("allow list"), "{}", e.message);
         assert_eq!(e.operand.as_deref(), Some("VW106"));
+        assert_eq!(e.kind, ErrorKind::Refused, "a refusal, as docs/json.md lists it");
         assert!(g.check(&space, &op("VB100")).is_err(), "a different size is not listed");
         let mut ro = p.get("axis1").unwrap().clone();
         ro.url = "sim:".into();
         let g = Guard::build(&ro, &space).unwrap().unwrap();
-        assert!(g.check(&space, &op("VW0")).unwrap_err().message.contains("read_only"));
+        let e = g.check(&space, &op("VW0")).unwrap_err();
+        assert!(e.message.contains("read_only") && e.kind == ErrorKind::Refused, "{e}");
         let mut bad = p.get("press1").unwrap().clone();
         bad.allow = Some(vec!["VX1".into()]);
         assert!(Guard::build(&bad, &space).unwrap_err().message.contains("allow item `VX1`"));

@@ -227,3 +227,13 @@ fn messages_name_the_mistake_and_the_correct_form() {
         assert!(e.message.contains("unit `rps` is not known here") && e.message.contains("rpm"), "{line}: {e}");
     }
 }
+
+/// A write the session's rules refuse is `kind: "refused"` (docs/json.md), not a usage error.
+#[test]
+fn write_rule_refusals_are_kind_refused() {
+    let mut sh = shell();
+    sh.session.set_read_only(true);
+    let e = error(&mut sh, "set VW0=1");
+    assert_eq!(e.kind, crate::core::ErrorKind::Refused, "{e}");
+    assert_eq!(e.kind.name(), "refused");
+}

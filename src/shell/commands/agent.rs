@@ -12,7 +12,7 @@ use crate::shell::{Args, Shell};
 pub const AGENT: CommandSpec = CommandSpec {
     name: "agent",
     aliases: &[],
-    usage: "agent [DEVICE] status",
+    usage: "agent [DEVICE] [status] | agent status DEVICE",
     summary: "check the PLC-side helper that reaches SM registers and instructions over Modbus (docs/agent.md)",
     subcommands: &["status"],
     run: agent,

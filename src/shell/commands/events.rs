@@ -99,7 +99,8 @@ fn wait(sh: &mut Shell, args: Args) -> Result<Outcome> {
             let num = e.kind.number().map(|n| format!("event {n} ")).unwrap_or_default();
             let mut o = Outcome::new("wait")
                 .text(format!(
-                    "{num}({}) at {} after waiting {}",
+                    "{num}{} ({}) at {} after waiting {}",
+                    e.kind.name(),
                     e.kind.describe(),
                     format_time(e.time),
                     format_time(waited)

@@ -263,6 +263,12 @@ fn grammar(c: &CommandSpec, f: &Form) -> Grammar {
 fn reach(nodes: &[Node], words: &[&str], from: Vec<usize>) -> Vec<usize> {
     let mut at = from;
     for n in nodes {
+        if let (Node::Rest, Some(&first)) = (n, at.iter().min()) {
+            // Any number of words: every position from the first reached (once, so a long
+            // line costs its length, not its square).
+            at = (first..=words.len()).collect();
+            continue;
+        }
         let mut next = Vec::new();
         for &p in &at {
             match n {
@@ -340,9 +346,12 @@ pub fn check(c: &CommandSpec, args: Args) -> Result<()> {
         Some(s) => format!("help {} {s}", c.name),
         None => format!("help {}", c.name),
     };
-    Err(Error::usage(format!("unexpected `{extra}` after `{}`: the form is {}", typed.join(" "), forms.join(" | ")))
-        .hint(format!("nothing goes after it; `{help}` shows every form"))
-        .column(col))
+    let message = if forms == [c.name] {
+        format!("unexpected `{extra}`: `{}` takes no arguments", c.name)
+    } else {
+        format!("unexpected `{extra}` after `{}`: the form is {}", typed.join(" "), forms.join(" | "))
+    };
+    Err(Error::usage(message).hint(format!("nothing goes after it; `{help}` shows every form")).column(col))
 }
 
 /// The forms of `c` that `text` (the words after the command's name) fits, options aside.
@@ -482,6 +491,17 @@ mod tests {
         assert_eq!(e.column, Some(25), "{e}");
         let e = line_check("devices all=1").unwrap_err();
         assert_eq!(e.column, Some(8), "{e}");
+    }
+
+    /// The check is linear in the words of a line.
+    #[test]
+    fn long_lines_are_checked_in_linear_time() {
+        for cmd in ["get", "set", "sim fault", "umpk monitor", "servo raw", "sim step", "hsc 0"] {
+            let line = format!("{cmd} {}", "VW0 ".repeat(100_000));
+            let t = std::time::Instant::now();
+            let _ = line_check(line.trim());
+            assert!(t.elapsed() < std::time::Duration::from_secs(2), "{cmd}: {:?}", t.elapsed());
+        }
     }
 
     #[test]

@@ -1,6 +1,6 @@
 //! The `devices` listing: open devices (the current one marked `*`), then the profiles from
-//! devices.toml that are not open, its fleets (`crate::fleet`), then any problem in that file (with file:line). Shared by
-//! the REPL's `devices` and `plcsh devices`.
+//! devices.toml that are not open, its fleets (`crate::fleet`); any problem in that file (with
+//! file:line) is a note of its own line. Shared by the REPL's `devices` and `plcsh devices`.
 
 use crate::output::Outcome;
 use crate::session::Session;
@@ -61,10 +61,12 @@ pub fn devices_and_profiles(s: &Session) -> (Vec<Vec<String>>, Outcome) {
         fleets.push(serde_json::json!({"name": f.name, "members": members, "spec": f.spec, "origin": f.origin}));
     }
     let problems: Vec<String> = s.profiles.problems.iter().map(|p| p.to_string()).collect();
-    for p in &problems {
-        rows.push(vec!["(problem)".into(), String::new(), String::new(), p.clone(), String::new()]);
-    }
     let mut o = Outcome::new("devices").with("devices", list).with("profiles", profiles);
+    // A problem is a message of its own line (`note: …`), never a table cell: one bad profile
+    // leaves the rows as narrow as the devices make them.
+    for p in &problems {
+        o.notes.push(format!("profile file: {p}"));
+    }
     if !fleets.is_empty() {
         o = o.with("fleets", fleets);
     }

@@ -74,9 +74,13 @@ fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
         },
         "run" => {
             return Err(Error::usage("`sim run` is ambiguous: say which runs")
-                .hint(
-                    "the clock follows the wall clock: sim clock real; the simulated CPU runs its program: sim cpu run",
-                )
+                // Within 80 columns after `  hint: `.
+                .hint("sim clock real: time follows the wall clock; sim cpu run: the program runs")
+                .column(args.offset));
+        }
+        "serve" | "control" => {
+            return Err(Error::usage(format!("`sim {sub}` is a command-line command, not a shell command"))
+                .hint(format!("in another terminal: plcsh sim {sub} … (plcsh sim {sub} --help lists its options)"))
                 .column(args.offset))
         }
         "input" if super::umpk::current_is_umpk(sh) => return super::umpk::sim_input(sh, args),
