@@ -183,6 +183,21 @@ fn a_lab_grades_only_the_kinds_it_accepts() {
     let r = &json_lines(&o)[0];
     assert_eq!(r["verdict"], "not accepted: this lab accepts UMPK IL (.il) submissions", "{r}");
     assert_eq!(r["points"].as_f64(), Some(0.0));
+    // An endless loop on the UMPK trips its watchdog (10 ms): the verdict names it.
+    let looping = d.join("looping.il");
+    std::fs::write(&looping, "L1: LD I0\nJMP L1\n").unwrap();
+    let o = plcsh()
+        .current_dir(root())
+        .args(["--json", "lab", "grade", "tests/lab/umpk", looping.to_str().unwrap()])
+        .output_retrying()
+        .unwrap();
+    let r = &json_lines(&o)[0];
+    let v = r["verdict"].as_str().unwrap();
+    assert!(
+        v.starts_with("runtime error: ")
+            && v.contains("looping.il:2: the PLC stopped: the scan ran past the watchdog limit of 10 ms"),
+        "{r}"
+    );
     std::fs::remove_dir_all(&d).unwrap();
 }
 

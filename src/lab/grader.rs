@@ -366,6 +366,12 @@ fn plc_fault(shell: &mut Shell, lab: &Lab, file: &str) -> Option<String> {
     shell.session.interrupt.store(false, Ordering::Relaxed);
     shell.session.use_device(&lab.device).ok()?;
     let o = shell.exec("sim program").into_iter().next()?.ok()?.to_json();
+    // A UMPK says it in its program line: `IL p.il stopped: line 2: … (JMP L1) (executed …)`.
+    if let Some(why) = o.get("program").and_then(|p| p.as_str()).and_then(|p| p.split_once(" stopped: line ")) {
+        let (line, msg) = why.1.split_once(": ")?;
+        let msg = msg.split(" (executed").next().unwrap_or(msg);
+        return Some(format!("{file}:{line}: the PLC stopped: {msg}"));
+    }
     let f = o.get("faults")?.as_array()?.first()?;
     let line = f.get("line").and_then(|l| l.as_u64()).map(|l| format!(":{l}")).unwrap_or_default();
     let code = f.get("code").and_then(|c| c.as_u64()).map(|c| format!("fault {c} ")).unwrap_or_default();
