@@ -237,3 +237,18 @@ fn write_rule_refusals_are_kind_refused() {
     assert_eq!(e.kind, crate::core::ErrorKind::Refused, "{e}");
     assert_eq!(e.kind.name(), "refused");
 }
+
+/// A jog or move above the drive's configured maximum speed (6080.00) is refused with that
+/// maximum; the simulated drive's is 3000 rpm.
+#[test]
+fn speeds_above_the_drives_maximum_are_refused_with_it() {
+    let mut sh = shell();
+    for line in ["servo jog 99999rpm", "servo move abs 1000 speed=3001rpm", "servo jog -4000"] {
+        let e = error(&mut sh, line);
+        assert!(e.message.contains("maximum speed of 3000 rpm"), "{line}: {e}");
+        assert_eq!(e.kind, crate::core::ErrorKind::Range, "{line}");
+    }
+    // The limit is the drive's setting, read each time.
+    let r = sh.exec("set servo:max_speed=5000; servo enable; servo jog 4000rpm");
+    assert!(r.iter().all(|r| r.is_ok()), "{r:?}");
+}

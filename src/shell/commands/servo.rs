@@ -281,6 +281,9 @@ fn move_cmd(
         }
     };
     let p = profile(space, &opts, &["speed", "acc", "dec"], base, true)?;
+    if let (Some(s), Some(&(c, _, _))) = (p.speed, opts.iter().find(|o| o.1 == "speed")) {
+        within_max_speed(ops, space, s, base + c)?;
+    }
     ds402::move_to(ops, w, kind == "rel", target, p)?;
     let r = space.resolution.get();
     let mut text = format!("{} move to {target} inc started", if kind == "rel" { "relative" } else { "absolute" });
@@ -304,6 +307,7 @@ fn jog(ops: &mut dyn ServoOps, space: &ServoSpace, rest: &[lex::Word], base: usi
         );
     };
     let speed = value_for(space, "target_velocity", s, base + c)?;
+    within_max_speed(ops, space, speed, base + c)?;
     let p = profile(space, &opts, &["acc", "dec"], base, false)?;
     ds402::jog(ops, speed, p)?;
     let rpm = units::dec_to_rpm(speed, space.resolution.get());
@@ -311,6 +315,28 @@ fn jog(ops: &mut dyn ServoOps, space: &ServoSpace, rest: &[lex::Word], base: usi
         .text(format!("jogging at {} rpm ({speed} DEC, mode 3)", units::show(rpm)))
         .with("target_velocity", speed)
         .with("rpm", rpm))
+}
+
+/// Refuses a speed (DEC) above the drive's configured maximum speed, object 6080.00
+/// `max_speed` (Kinco public notes, object table: "max speed", 16 bits; read as rpm, the unit
+/// the drive's own speed settings use, 3000 on the simulated drive). A drive that does not
+/// answer for the object, or holds 0 there, sets no limit here.
+fn within_max_speed(ops: &mut dyn ServoOps, space: &ServoSpace, speed: i64, col: usize) -> Result<()> {
+    let Ok(max) = ops.read_raw(ObjRef::of(objects::named("max_speed"))) else { return Ok(()) };
+    let max_rpm = f64::from(max & 0xFFFF);
+    let rpm = units::dec_to_rpm(speed, space.resolution.get());
+    if max_rpm > 0.0 && rpm.abs() > max_rpm {
+        return Err(Error::new(
+            crate::core::ErrorKind::Range,
+            format!("{} rpm is above the drive's maximum speed of {max_rpm} rpm (6080.00 max_speed)", units::show(rpm)),
+        )
+        .operand("max_speed")
+        .column(col)
+        .hint(format!(
+            "a speed up to {max_rpm}rpm; the maximum is the drive's setting 6080.00 (servo read max_speed)"
+        )));
+    }
+    Ok(())
 }
 
 fn wait(ops: &mut dyn ServoOps, w: &Waiter, rest: &[lex::Word], base: usize, col: usize) -> Result<Outcome> {
