@@ -212,6 +212,8 @@ fn every_limit_ends_the_run_with_its_verdict() {
             format!("for _ = 1, 10 do coroutine.resume(coroutine.create(function() local t = {{}} for i = 1, 1e9 do t[i] = i end end)) end\n{SOLUTION}"),
         ),
         ("mem_xpcall.lua", format!("xpcall(string.rep, function() return 'fine' end, 'x', 1e9)\n{SOLUTION}")),
+        // The memory left full for the grader: the run's limit, not the grader's error.
+        ("mem_kept.lua", format!("{SOLUTION}\nkeep = {{}}\npcall(function() for i = 1, 1e9 do keep[i] = i end end)\n")),
         ("co_loop.lua", "coroutine.wrap(function() while true do end end)()\n".into()),
         (
             "co_pcall_loop.lua",
@@ -222,7 +224,7 @@ fn every_limit_ends_the_run_with_its_verdict() {
     ];
     let (by, o) = grade(&d, &subs, &[]);
     assert_eq!(o.status.code(), Some(0), "{}", both(&o));
-    for s in ["mem_pcall", "mem_coroutine", "mem_xpcall"] {
+    for s in ["mem_pcall", "mem_coroutine", "mem_xpcall", "mem_kept"] {
         assert_eq!(verdict(&by[s]), "exceeded 64 MiB of Lua memory", "{s}: {}", by[s]);
         assert_eq!(by[s]["points"].as_f64(), Some(0.0), "{s}");
     }

@@ -291,6 +291,9 @@ fn run(lab: &Lab, file: &str, kind: &str, out: Box<dyn std::io::Write + Send>) -
             Ok(b.exceeded())
         })
         .map_err(script_err)?;
+    // The grader's own protected calls too: a submission that keeps the memory full makes the
+    // run's verdict the memory limit, not a grader error.
+    sandbox::hold_limits(lua, &lua.globals(), &stop).map_err(script_err)?;
     let student_env = sandbox::submission_env(lua, student_rules.clone(), world, stop).map_err(script_err)?;
     install_lab(lua, lab, file, kind, student_env, budget.clone(), [rules.clone(), student_rules])
         .map_err(script_err)?;

@@ -405,11 +405,40 @@ pub fn submission_env(lua: &Lua, rules: Arc<Confinement>, world: World, stop: ml
     // The lab's folder is not the submission's to know.
     let p: Table = env.raw_get("plcsh")?;
     p.raw_set("lib_dirs", lua.create_table()?)?;
-    let co: Table = env.raw_get("coroutine")?;
-    let (pcall, xpcall, resume, close, setmt): (Value, Value, Value, Value, Value) = lua
+    hold_limits(lua, &env, &stop)?;
+    let setmt: mlua::Function = lua
         .load(
             r#"
-local pcall, xpcall, resume, close, setmetatable, stop, error, rawget, type = ...
+local setmetatable, error, rawget, type = ...
+return function(t, mt)
+  if type(mt) == "table" and rawget(mt, "__gc") ~= nil then
+    error("setmetatable: a __gc finalizer is not available in a graded run (finalizers run outside the instruction count)", 2)
+  end
+  return setmetatable(t, mt)
+end
+"#,
+        )
+        .set_name("=sandbox")
+        .call((
+            env.raw_get::<Value>("setmetatable")?,
+            env.raw_get::<Value>("error")?,
+            env.raw_get::<Value>("rawget")?,
+            env.raw_get::<Value>("type")?,
+        ))?;
+    env.raw_set("setmetatable", setmt)?;
+    Ok(env)
+}
+
+/// `pcall`, `xpcall`, `coroutine.resume`, `coroutine.close` and `load` in `t` (the globals,
+/// or a submission's environment) that give back no limit: when one of them would return an
+/// error, `stop(err)` says whether the run is over (it notes a "not enough memory" as the
+/// memory limit) and then the verdict is raised again instead.
+pub fn hold_limits(lua: &Lua, t: &Table, stop: &mlua::Function) -> mlua::Result<()> {
+    let co: Table = t.raw_get("coroutine")?;
+    let (pcall, xpcall, resume, close, load): (Value, Value, Value, Value, Value) = lua
+        .load(
+            r#"
+local pcall, xpcall, resume, close, load, stop, error = ...
 local function pass(ok, ...)
   if not ok then
     local v = stop((...))
@@ -417,38 +446,40 @@ local function pass(ok, ...)
   end
   return ok, ...
 end
+local function loaded(f, ...)
+  if f == nil then
+    local v = stop((...))
+    if v then error(v, 0) end
+  end
+  return f, ...
+end
 return function(f, ...) return pass(pcall(f, ...)) end,
   function(f, h, ...)
     return pass(xpcall(f, function(e) local v = stop(e); if v then return v end; return h(e) end, ...))
   end,
   function(c, ...) return pass(resume(c, ...)) end,
   function(c) return pass(close(c)) end,
-  function(t, mt)
-    if type(mt) == "table" and rawget(mt, "__gc") ~= nil then
-      error("setmetatable: a __gc finalizer is not available in a graded run (finalizers run outside the instruction count)", 2)
-    end
-    return setmetatable(t, mt)
-  end
+  load and function(...) return loaded(load(...)) end
 "#,
         )
         .set_name("=sandbox")
         .call((
-            env.raw_get::<Value>("pcall")?,
-            env.raw_get::<Value>("xpcall")?,
+            t.raw_get::<Value>("pcall")?,
+            t.raw_get::<Value>("xpcall")?,
             co.raw_get::<Value>("resume")?,
             co.raw_get::<Value>("close")?,
-            env.raw_get::<Value>("setmetatable")?,
-            stop,
-            env.raw_get::<Value>("error")?,
-            env.raw_get::<Value>("rawget")?,
-            env.raw_get::<Value>("type")?,
+            t.raw_get::<Value>("load")?,
+            stop.clone(),
+            t.raw_get::<Value>("error")?,
         ))?;
-    env.raw_set("pcall", pcall)?;
-    env.raw_set("xpcall", xpcall)?;
+    t.raw_set("pcall", pcall)?;
+    t.raw_set("xpcall", xpcall)?;
     co.raw_set("resume", resume)?;
     co.raw_set("close", close)?;
-    env.raw_set("setmetatable", setmt)?;
-    Ok(env)
+    if !load.is_nil() {
+        t.raw_set("load", load)?;
+    }
+    Ok(())
 }
 
 /// 2026-01-01 00:00:00 UTC: what `os.time()` reads at simulated time zero in a graded run.
