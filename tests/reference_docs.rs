@@ -18,7 +18,7 @@ fn docs() -> &'static Path {
 }
 
 /// The text between a generated table's markers on its page.
-fn between<'a>(doc: &'a str, page: &str, name: &str) -> (usize, usize) {
+fn between(doc: &str, page: &str, name: &str) -> (usize, usize) {
     let (start, end) = (reference::start_marker(name), reference::end_marker(name));
     let a = doc.find(&start).unwrap_or_else(|| panic!("{page}: no marker {start:?}")) + start.len();
     let b = doc[a..].find(&end).unwrap_or_else(|| panic!("{page}: no marker {end:?}")) + a;
