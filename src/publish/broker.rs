@@ -203,24 +203,28 @@ macro_rules! broker_loop {
                 let first_contact = tokio::time::Instant::now() + FIRST_CONTACT;
                 let mut last_error = String::from("no answer");
                 let mut batch = Vec::with_capacity(BATCH);
+                let mut pending: VecDeque<Msg> = VecDeque::with_capacity(BATCH);
                 loop {
                     let stopping = outbox.is_closed();
                     if connected {
                         // Oldest first; a full client channel leaves the rest queued for the next turn.
-                        'drain: loop {
-                            batch.clear();
-                            outbox.take(BATCH, &mut batch);
-                            if batch.is_empty() {
+                        // Taken in batches (one lock for many) into `pending`, which the
+                        // client's channel empties as it has room: a full channel leaves them
+                        // there for the next turn instead of going back into the queue.
+                        loop {
+                            if pending.is_empty() {
+                                outbox.take(BATCH, &mut batch);
+                                pending.extend(batch.drain(..));
+                                if pending.is_empty() {
+                                    break;
+                                }
+                            }
+                            let Some(m) = pending.pop_front() else { break };
+                            if client.try_publish(m.topic.clone(), qos, m.retain, m.payload.clone()).is_err() {
+                                pending.push_front(m);
                                 break;
                             }
-                            let mut rest = batch.drain(..);
-                            while let Some(m) = rest.next() {
-                                if client.try_publish(m.topic.clone(), qos, m.retain, m.payload.clone()).is_err() {
-                                    outbox.put_back(std::iter::once(m).chain(rest));
-                                    break 'drain;
-                                }
-                                unconfirmed.push_back(m);
-                            }
+                            unconfirmed.push_back(m);
                         }
                         if let Some(m) = outbox.take_stats() {
                             match client.try_publish(m.topic.clone(), qos, m.retain, m.payload.clone()) {
@@ -229,6 +233,7 @@ macro_rules! broker_loop {
                             }
                         }
                         if stopping
+                            && pending.is_empty()
                             && outbox.is_empty()
                             && !outbox.has_stats()
                             && unconfirmed.is_empty()
@@ -265,6 +270,7 @@ macro_rules! broker_loop {
                                 was_connected = true;
                                 if !kept {
                                     // A new session: rumqttc dropped what it held; send it again, first.
+                                    outbox.put_back(pending.drain(..));
                                     outbox.put_back(unconfirmed.drain(..));
                                 }
                                 if !said_offline {
@@ -293,6 +299,8 @@ macro_rules! broker_loop {
                             Some(Loop::Error(why)) => {
                                 connected = false;
                                 outbox.set_connected(false);
+                                // Not handed over: back into the queue, where the bound applies.
+                                outbox.put_back(pending.drain(..));
                                 if let Some(f) = classify(&why) {
                                     let _ = notes.send(Note::Fatal(f.clone()));
                                     stats.fatal = Some(f);
@@ -319,7 +327,7 @@ macro_rules! broker_loop {
                         }
                     }
                 }
-                stats.undelivered = (outbox.len() + unconfirmed.len()) as u64;
+                stats.undelivered = (outbox.len() + pending.len() + unconfirmed.len()) as u64;
                 stats
             }
         }
