@@ -206,3 +206,44 @@ fn every_environment_variable_read_is_listed() {
         assert!(found.contains(*v), "{v} is listed but the program does not read it");
     }
 }
+
+/// The messages the catalogue explains are the ones the program prints: each message's fixed
+/// words are on the page and in the source (a reworded message shows up here, and the page
+/// is reworded with it).
+#[test]
+fn the_message_catalogue_quotes_the_program() {
+    let page = std::fs::read_to_string(docs().join("reference/errors.md")).unwrap();
+    let mut source = String::new();
+    fn walk(dir: &Path, out: &mut String) {
+        for e in std::fs::read_dir(dir).unwrap() {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                walk(&p, out);
+            } else if p.extension().is_some_and(|x| x == "rs") {
+                out.push_str(&std::fs::read_to_string(&p).unwrap());
+            }
+        }
+    }
+    walk(Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/src")), &mut source);
+    for words in [
+        "is in use by",
+        "is not in the K2 Modbus map",
+        "no plcsh helper answers in",
+        "is installed but its heartbeat did not move in",
+        "mailbox busy: ",
+        "races to other clients",
+        "did not acknowledge",
+        "the helper in the PLC is version 1",
+        "(Modbus exception",
+        "a reply with an invalid CRC arrived",
+        "the device did not answer: no reply from unit",
+        "cannot connect to",
+        "cannot open serial port",
+        "the session is read-only (--read-only)",
+        "allow list",
+        "is out of range for",
+    ] {
+        assert!(page.contains(words), "docs/reference/errors.md does not explain `{words}`");
+        assert!(source.contains(words), "no message of the program says `{words}` any more: update the catalogue");
+    }
+}
