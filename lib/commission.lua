@@ -46,9 +46,17 @@ function M:step(name, fn, opts)
   return self
 end
 
-local function first_line(err)
-  local s = tostring(err)
-  return (s:match("^[^\n]*"))
+--- A failure as one line for the table: a failed check's following lines (`actual: 0`,
+--- `expected: 5`) are kept, joined with "; ".
+local function one_line(err)
+  local parts = {}
+  for line in tostring(err):gmatch("[^\n]+") do
+    local t = line:match("^%s*(.-)%s*$")
+    if t ~= "" and not t:match("^stack traceback") and not t:match("^%[C%]") and not line:match("^\t") then
+      parts[#parts + 1] = t
+    end
+  end
+  return table.concat(parts, "; ")
 end
 
 --- Runs the steps in order, prints the checklist and a summary table.
@@ -72,7 +80,7 @@ function M:run()
         print(string.format("[x] %d. %s%s", i, s.name, r.note and (" — " .. r.note) or ""))
       else
         r.status = s.opts.optional and "failed (optional)" or "FAILED"
-        r.note = first_line(note)
+        r.note = one_line(note)
         r.error = note
         print(string.format("[ ] %d. %s — %s: %s", i, s.name, r.status, tostring(note)))
         if not s.opts.optional then
@@ -85,7 +93,8 @@ function M:run()
   end
   local rows = {}
   for _, r in ipairs(results) do
-    rows[#rows + 1] = { r.step, r.name, r.status, r.ms and string.format("%.1f", r.ms) or "", r.note or "" }
+    -- Numbers stay numbers (JSON rows keep them): the step and its time in ms to 0.1.
+    rows[#rows + 1] = { r.step, r.name, r.status, r.ms and math.floor(r.ms * 10 + 0.5) / 10 or "", r.note or "" }
   end
   plcsh.table(rows, { "#", "step", "status", "ms", "note" })
   local done = 0

@@ -172,6 +172,23 @@ fn a_failed_checklist_step_fails_the_script() {
     assert!(s.contains(&format!("{}:5: demo: 1 step(s) failed", p.display())), "{s}");
 }
 
+/// A checklist's table keeps a failed check's actual and expected values, and its numbers
+/// are numbers in JSON.
+#[test]
+fn a_checklist_table_keeps_the_values_of_a_failed_check_and_its_numbers() {
+    let p = script(
+        "check_values.lua",
+        "local c = require('commission').new('demo', {keep_going = true})\nc:step('bad', function() plcsh.assert_eq(plc.VW0, 5) end)\nc:step('ok', function() end)\nc:run()\n",
+    );
+    let o = run(&["--json", "run", p.to_str().unwrap()], "");
+    let table = common::json_lines(&o).into_iter().find(|l| l["cmd"] == "table").expect("the table line");
+    let rows = table["rows"].as_array().unwrap();
+    assert_eq!(rows[0][0], 1, "the step number is a number: {table}");
+    assert!(rows[0][3].is_number() && rows[1][3].is_number(), "ms are numbers: {table}");
+    let note = rows[0][4].as_str().unwrap();
+    assert!(note.contains("actual:   0") && note.contains("expected: 5"), "{note}");
+}
+
 #[test]
 fn stdin_closes_cleanly_after_an_unfinished_block() {
     let mut child = plcsh().stdin(Stdio::piped()).stdout(Stdio::piped()).spawn_retrying().unwrap();

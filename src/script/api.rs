@@ -298,16 +298,25 @@ fn table(lua: &Lua, (rows, headers): (Table, Option<Vec<String>>)) -> mlua::Resu
         None => (1..=rows.iter().map(|r| r.raw_len()).max().unwrap_or(0)).map(|i| i.to_string()).collect(),
     };
     let mut cells = Vec::new();
+    let mut json: Vec<Vec<serde_json::Value>> = Vec::new();
     for r in &rows {
-        let mut line = Vec::new();
+        let (mut line, mut values) = (Vec::new(), Vec::new());
         for (i, h) in headers.iter().enumerate() {
             let v: Value = if keyed { r.get(h.as_str())? } else { r.get(i + 1)? };
-            line.push(cell(lua, &v)?);
+            let shown = cell(lua, &v)?;
+            // In JSON a number stays a number and a boolean a boolean; the rest as shown.
+            values.push(match v {
+                Value::Integer(n) => n.into(),
+                Value::Number(n) => serde_json::Number::from_f64(n).map_or(shown.clone().into(), Into::into),
+                Value::Boolean(b) => b.into(),
+                _ => shown.clone().into(),
+            });
+            line.push(shown);
         }
         cells.push(line);
+        json.push(values);
     }
     let hs: Vec<&str> = headers.iter().map(String::as_str).collect();
-    let json: Vec<Vec<String>> = cells.clone();
     show(lua, &Outcome::new("table").table(&hs, cells).with("headers", &headers).with("rows", json))
 }
 

@@ -22,7 +22,7 @@ pub const HDEF: CommandSpec = CommandSpec {
 pub const HSC: CommandSpec = CommandSpec {
     name: "hsc",
     aliases: &[],
-    usage: "hsc N | hsc N mode=9 [rate=4x] [pv=[100,200,300] [relative] [cyclic] at VB3009] [cv=0] [dir=up|down] [reset=low] [start=low] [force] | hsc N status | hsc status N",
+    usage: "hsc N | hsc N mode=9 [rate=4x] [pv=[100,200,300]] [relative] [cyclic] [at VB3009] [cv=0] [dir=up|down] [reset=low] [start=low] [force] | hsc N status | hsc status N",
     summary: "run the HSC instruction; with options, write the counter's registers first (then HDEF, HSC); or decode its status",
     subcommands: &["status"],
     run: hsc,

@@ -259,10 +259,51 @@ fn grammar(c: &CommandSpec, f: &Form) -> Grammar {
     Grammar { nodes, keys, text: f.text.clone() }
 }
 
+/// An optional part that starts with a word of its own (`[strict]`, `[at VB3009]`,
+/// `[sync|async]`), never a placeholder.
+fn keyword_led(n: &Node) -> bool {
+    fn led(seq: &[Node]) -> bool {
+        match seq.first() {
+            Some(Node::Lit(_)) => true,
+            Some(Node::Alt(a)) => a.iter().all(|s| led(s)),
+            _ => false,
+        }
+    }
+    matches!(n, Node::Opt(seq) if led(seq))
+}
+
 /// The positions in `words` a sequence can end at, from each of `from`.
 fn reach(nodes: &[Node], words: &[&str], from: Vec<usize>) -> Vec<usize> {
     let mut at = from;
-    for n in nodes {
+    let mut i = 0;
+    while i < nodes.len() {
+        let n = &nodes[i];
+        i += 1;
+        if keyword_led(n) {
+            // A run of optional parts that each start with a word of their own is taken in
+            // any order (`[relative] [cyclic] [at VB3009]`, `[force] [strict]`): as many
+            // rounds as there are parts.
+            let mut group = vec![n];
+            while let Some(next) = nodes.get(i).filter(|m| keyword_led(m)) {
+                group.push(next);
+                i += 1;
+            }
+            for _ in 0..group.len() {
+                let mut next = at.clone();
+                for g in &group {
+                    if let Node::Opt(seq) = g {
+                        next.extend(reach(seq, words, at.clone()));
+                    }
+                }
+                next.sort_unstable();
+                next.dedup();
+                if next == at {
+                    break;
+                }
+                at = next;
+            }
+            continue;
+        }
         if let (Node::Rest, Some(&first)) = (n, at.iter().min()) {
             // Any number of words: every position from the first reached (once, so a long
             // line costs its length, not its square).
