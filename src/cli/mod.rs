@@ -460,8 +460,12 @@ fn run_cli() -> i32 {
         }
     };
     crate::signals::install(&session.interrupt);
-    for p in &session.profiles.problems {
-        eprintln!("plcsh: warning: {p}");
+    // Once per run: `plcsh devices` shows the problems itself, as notes of its listing (in
+    // JSON they are its `problems` and `notes`, and the warnings stay on standard error).
+    if !matches!(cli.sub, Some(Sub::Devices)) || style.json {
+        for p in &session.profiles.problems {
+            eprintln!("plcsh: warning: {p}");
+        }
     }
     let mut shell = Shell::new(session, style);
     shell.verbose = cli.verbose > 0;

@@ -387,6 +387,22 @@ pub fn check(c: &CommandSpec, args: Args) -> Result<()> {
         Some(s) => format!("help {} {s}", c.name),
         None => format!("help {}", c.name),
     };
+    // A file or name with a space typed without quotes: the quoted form.
+    let text_from = super::TEXT_ARGS.iter().filter(|t| t.cmd == c.name && t.what == super::Text::Rest).find_map(|t| {
+        let n = t.after.len();
+        (words.len() > n && t.after.iter().zip(&words).all(|(a, w)| a.eq_ignore_ascii_case(w))).then_some(n)
+    });
+    if let Some(n) = text_from.filter(|&n| n < end) {
+        let path = words[n..].join(" ");
+        let head: Vec<&str> = std::iter::once(c.name).chain(words[..n].iter().copied()).collect();
+        return Err(Error::usage(format!(
+            "unexpected `{extra}` after `{}`: the form is {}",
+            typed.join(" "),
+            forms.join(" | ")
+        ))
+        .hint(format!("a path or name with spaces goes in quotes: {} {}", head.join(" "), lex::quote(&path)))
+        .column(col));
+    }
     let message = if forms == [c.name] {
         format!("unexpected `{extra}`: `{}` takes no arguments", c.name)
     } else {
