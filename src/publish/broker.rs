@@ -229,7 +229,9 @@ macro_rules! broker_loop {
                         if let Some(m) = outbox.take_stats() {
                             match client.try_publish(m.topic.clone(), qos, m.retain, m.payload.clone()) {
                                 Ok(()) => unconfirmed.push_back(m),
-                                Err(_) => outbox.set_stats(m),
+                                // Back in its slot without a wake-up: the client's room comes with
+                                // its next event (a wake-up here would spin and starve the client).
+                                Err(_) => outbox.restore_stats(m),
                             }
                         }
                         if stopping

@@ -163,6 +163,12 @@ impl Outbox {
         self.wake.notify_one();
     }
 
+    /// Puts a stats message that could not be sent back (unless a newer one came), without
+    /// waking the broker thread.
+    pub fn restore_stats(&self, m: Msg) {
+        self.lock().stats.get_or_insert(m);
+    }
+
     pub fn take_stats(&self) -> Option<Msg> {
         self.lock().stats.take()
     }
