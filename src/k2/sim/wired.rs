@@ -359,8 +359,7 @@ impl K2Sim {
             // output that scan starts (PLS in the program or the helper) reaches the wire at
             // the scan's own time, not at the end of the step.
             // A CPU in STOP (a watchdog fault) scans no more: its pieces are the wires' own.
-            let scanning =
-                self.plc.as_ref().is_some_and(|p| p.mode == super::program::Mode::Run && p.has_program());
+            let scanning = self.plc.as_ref().is_some_and(|p| p.mode == super::program::Mode::Run && p.has_program());
             if let Some(p) = self.plc.as_ref().filter(|_| scanning) {
                 end = end.min(ns(p.next_scan).max(t_ns + 1));
             }
