@@ -56,11 +56,12 @@ measure() {
     local hz_tck; hz_tck=$(getconf CLK_TCK)
     local cpu; cpu=$(echo "($c1 - $c0) / $hz_tck / ($t1 - $t0) * 100" | bc -l)
     local rss; rss=$(sort -n "$work/rss.$group" | tail -1)
-    local summary; summary=$(tail -1 "$work/out.$group")
-    $py - "$name" "$n" "$hz" "$cpu" "${rss:-0}" "$rc" "$work/sub.$group" "$summary" <<'PY'
+    $py - "$name" "$n" "$hz" "$cpu" "${rss:-0}" "$rc" "$work/sub.$group" "$work/out.$group" <<'PY'
 import json, sys
-name, n, hz, cpu, rss, rc, subf, summary = sys.argv[1:9]
+name, n, hz, cpu, rss, rc, subf, outf = sys.argv[1:9]
 s = json.loads(open(subf).read() or "{}")
+lines = open(outf).read().splitlines()
+summary = lines[-1] if lines else ""
 try:
     own = json.loads(summary)
 except ValueError:
