@@ -156,7 +156,7 @@ print("failed", r.failed)
     assert!(o.status.success(), "{}", both(&o));
     let out = stdout(&o);
     assert!(out.contains("line-1\ttrue\t9"), "{out}");
-    assert!(out.contains("guarded\tfalse\tusage"), "{out}");
+    assert!(out.contains("guarded\tfalse\trefused"), "{out}");
     assert!(out.contains("failed\t1"), "{out}");
 }
 
