@@ -84,6 +84,7 @@ const CASES: &[(&str, &[&str])] = &[
             "plcsh lab grade <submissions>",
             "plcsh lab grade --junit",
             "plcsh lab worker <lab>",
+            "plcsh lab worker --report",
         ],
     ),
     ("completion_scripts_folder", &["plcsh completions --write"]),
@@ -426,7 +427,14 @@ fn lab_on_the_command_line() {
     let sub = dir.join("Петров П.П.il");
     std::fs::copy(lab.join("reference.il"), &sub).unwrap();
     let junit = dir.join("итог.xml");
+    // The workers' reports (`lab worker --report FILE`) go to a folder in the temporary folder:
+    // one with Cyrillic letters and a space here.
+    let tmp = dir.join("врем енно");
+    std::fs::create_dir_all(&tmp).unwrap();
     let o = plcsh()
+        .env("TMPDIR", &tmp)
+        .env("TEMP", &tmp)
+        .env("TMP", &tmp)
         .args(["--json", "lab", "grade", l, sub.to_str().unwrap(), "--jobs", "1", "--junit", junit.to_str().unwrap()])
         .output_retrying()
         .unwrap();
@@ -515,9 +523,16 @@ fn lua_files_with_a_byte_order_mark_load_everywhere() {
     ok(&plcsh().args(["lab", "new", lab.to_str().unwrap()]).output_retrying().unwrap());
     let grader = std::fs::read_to_string(lab.join("grade.lua")).unwrap();
     std::fs::write(lab.join("grade.lua"), format!("{BOM}{grader}")).unwrap();
-    let sub = dir.join("Сидоров.lua");
-    let load = format!("sim program load {}", Spelling::DoubleEscaped.write(&lab.join("reference.il")));
-    std::fs::write(&sub, format!("{BOM}plcsh.exec({load:?})\n")).unwrap();
+    // The lab takes Lua submissions too; a folder submission reads its own files only, so it
+    // brings its IL program with it.
+    let toml = std::fs::read_to_string(lab.join("lab.toml")).unwrap();
+    let toml = toml.replacen("\ndevice = ", "\naccepts = [\"k2-il\", \"lua\"]\ndevice = ", 1);
+    std::fs::write(lab.join("lab.toml"), toml).unwrap();
+    let sub = dir.join("Сидоров");
+    std::fs::create_dir_all(&sub).unwrap();
+    std::fs::copy(lab.join("reference.il"), sub.join("программа.il")).unwrap();
+    let load = format!("sim program load {}", Spelling::DoubleEscaped.write(&sub.join("программа.il")));
+    std::fs::write(sub.join("main.lua"), format!("{BOM}plcsh.exec({load:?})\n")).unwrap();
     let o = plcsh()
         .args(["--json", "lab", "grade", lab.to_str().unwrap(), sub.to_str().unwrap(), "--jobs", "1"])
         .output_retrying()
