@@ -17,6 +17,13 @@
 //! while a piped session waits for input) nothing is running that could notice the flag,
 //! so the watcher ends the process there at once; the simulator's retained state does not
 //! depend on a clean exit (it is made durable as it is written).
+//!
+//! **The watcher starts when it can have work.** A one-shot that reads and exits never
+//! starts it (one thread less to create at every start): the first real sleep or wait
+//! ([`crate::core::Clock::sleep_real`]), the first prompt ([`set_idle`]) and the first stop
+//! noticed by the running work ([`cause`], which every interrupted command or script asks
+//! before its abort handlers run) start it, once. A signal that comes before it starts is
+//! not lost: the handlers have already raised the flag, and the watcher's first look sees it.
 
 use std::sync::atomic::{AtomicBool, AtomicI32, Ordering};
 use std::sync::Arc;
@@ -32,16 +39,17 @@ static RECEIVED: AtomicI32 = AtomicI32::new(0);
 static IDLE: AtomicBool = AtomicBool::new(false);
 
 /// Installs the handlers for the session's interrupt flag (the platform's stop signals:
-/// [`crate::core::platform::install_stop_handlers`]) and the watcher that keeps the grace
-/// period.
+/// [`crate::core::platform::install_stop_handlers`]). The watcher that keeps the grace
+/// period starts later, when it can have work ([`start_watcher`]).
 pub fn install(interrupt: &Arc<AtomicBool>) {
     crate::core::platform::install_stop_handlers(interrupt, &RECEIVED);
-    start_watcher();
 }
 
-/// Ends the process on a signal received at an idle prompt, and on one whose stop has taken
-/// longer than [`ABORT_GRACE`].
-fn start_watcher() {
+/// Starts, once per process, the watcher that ends the process on a signal received at an
+/// idle prompt and on one whose stop has taken longer than [`ABORT_GRACE`], and wakes
+/// sleeping waits when a signal raised the flag. Called by whatever may wait for a signal:
+/// a sleep, a prompt, a stop being handled.
+pub fn start_watcher() {
     static STARTED: std::sync::Once = std::sync::Once::new();
     STARTED.call_once(|| {
         std::thread::Builder::new()
@@ -90,6 +98,8 @@ pub fn exit_status() -> Option<i32> {
 /// `SIGHUP` (on Windows `Ctrl-Break`, `console closed`); Ctrl-C when no signal is pending
 /// (the flag was raised in the process).
 pub fn cause() -> &'static str {
+    // A stop is being handled: its abort handlers get the grace period.
+    start_watcher();
     crate::core::platform::words::stop_name(RECEIVED.load(Ordering::SeqCst))
 }
 

@@ -154,6 +154,9 @@ impl Clock {
     /// a flag itself calls it too), not a loop of short sleeps: a sleeping poller costs no
     /// wake-ups until its time is up.
     pub fn sleep_real(d: Duration, interrupt: &AtomicBool) -> bool {
+        // Whoever sleeps may be woken by a stop signal: the watcher that wakes sleepers runs
+        // from the first sleep on (a one-shot that never sleeps does without it).
+        crate::signals::start_watcher();
         let end = Instant::now() + d;
         let (lock, cv) = &SLEEPERS;
         let mut gen = lock.lock().unwrap_or_else(|p| p.into_inner());
