@@ -24,10 +24,8 @@ use std::sync::mpsc::RecvTimeoutError;
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
-/// Exit status: the broker refused the credentials.
-pub const EXIT_AUTH: i32 = 3;
-/// Exit status: the broker's TLS certificate did not verify, or no broker answered at the start.
-pub const EXIT_BROKER: i32 = 4;
+/// Exit statuses of a broker failure (the table is `core::exit`).
+pub use crate::core::exit::{BROKER_AUTH as EXIT_AUTH, BROKER_UNREACHABLE as EXIT_BROKER};
 /// How long polling waits for the broker's first answer before it starts anyway.
 const START_GRACE: Duration = Duration::from_secs(2);
 /// How often `plcsh/GROUP/_publisher/stats` is published.

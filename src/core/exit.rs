@@ -13,6 +13,11 @@ pub const FAILED: i32 = 1;
 /// The command line is wrong: an unknown flag or subcommand, a missing value, a file named
 /// on the command line that does not exist.
 pub const USAGE: i32 = 2;
+/// `plcsh publish`: the MQTT broker refused the credentials (no retry mends that).
+pub const BROKER_AUTH: i32 = 3;
+/// `plcsh publish`: the broker's TLS certificate did not verify, or no broker answered at the
+/// start.
+pub const BROKER_UNREACHABLE: i32 = 4;
 /// SIGHUP (a dropped SSH session; on Windows, the console window closed).
 pub const HANGUP: i32 = 128 + code::HUP;
 /// Ctrl-C (SIGINT) stopped the work; the abort handlers ran.
@@ -35,7 +40,8 @@ pub static STATUSES: &[Status] = &[
         code: OK,
         name: "ok",
         when: "every command succeeded; a script finished; every device of a fleet answered; \
-               `sim serve` stopped by SIGTERM, SIGHUP or Ctrl-C",
+               `sim serve` stopped by SIGTERM, SIGHUP or Ctrl-C; `publish` stopped by Ctrl-C or \
+               SIGTERM after every reading was delivered",
     },
     Status {
         code: FAILED,
@@ -48,6 +54,17 @@ pub static STATUSES: &[Status] = &[
         name: "usage",
         when: "the command line is wrong: unknown flag or subcommand, missing or bad value, a file \
                named with --config that does not exist, an unreadable recording",
+    },
+    Status {
+        code: BROKER_AUTH,
+        name: "broker refused",
+        when: "`publish`: the MQTT broker refused the credentials (username, password or its ACL)",
+    },
+    Status {
+        code: BROKER_UNREACHABLE,
+        name: "broker unreachable",
+        when: "`publish`: the broker's TLS certificate did not verify, or no broker answered within \
+               10 s of the start",
     },
     Status {
         code: HANGUP,
