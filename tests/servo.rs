@@ -49,7 +49,7 @@ fn open(url: &str) -> Box<dyn Device> {
 fn enable_move_wait_and_read_back_over_a_real_pty() {
     let srv = Server::start("move", &["--servo-id", "1,2"]);
     assert_eq!(srv.ready["ids"], serde_json::json!([1, 2]));
-    assert!(srv.ready["servo_pty"].as_str().unwrap().starts_with("/dev/pts/"));
+    assert!(srv.ready["servo_pty"]["path"].as_str().unwrap().starts_with("/dev/pts/"));
     let mut d = open(&srv.url("id=2&baud=38400"));
     let never = AtomicBool::new(false);
     let w = Waiter { clock: Clock::following(), interrupt: &never };

@@ -34,7 +34,7 @@ impl Server {
         let mut args = vec!["--umpk-pty", link.to_str().unwrap()];
         args.extend_from_slice(extra);
         let served = serve(&args);
-        assert!(served.ready["umpk_pty"].as_str().unwrap().starts_with("/dev/pts/"), "{}", served.ready);
+        assert!(served.ready["umpk_pty"]["path"].as_str().unwrap().starts_with("/dev/pts/"), "{}", served.ready);
         Server { served, link, dir }
     }
 }

@@ -451,7 +451,7 @@ pub fn serve(
     let mut served = Served::open(on)?;
     ready(match served.tcp {
         Some(a) => serde_json::json!(a.to_string()),
-        None => serde_json::json!({"path": served.pty, "link": served.link}),
+        None => serde_json::json!(served.pty_ready()),
     });
     serve_line(served.line.as_mut(), server.as_mut(), &plc, stop)
 }

@@ -30,6 +30,14 @@ impl ServeOn {
     }
 }
 
+/// A pty endpoint as every family's readiness line names it (`rtu_pty`, `servo_pty`, `fx_pty`,
+/// `fx_link_pty`, `umpk_pty`: one shape): the slave device and the symlink to it, if any.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct PtyReady {
+    pub path: PathBuf,
+    pub link: Option<PathBuf>,
+}
+
 /// An open endpoint: the line, and what clients need to reach it.
 pub struct Served {
     pub line: Box<dyn Transport>,
@@ -42,6 +50,11 @@ pub struct Served {
 }
 
 impl Served {
+    /// The readiness line's field for a pty endpoint (`None` on TCP).
+    pub fn pty_ready(&self) -> Option<PtyReady> {
+        self.pty.clone().map(|path| PtyReady { path, link: self.link.clone() })
+    }
+
     /// Opens the endpoint.
     pub fn open(on: &ServeOn) -> Result<Served> {
         match on {

@@ -78,11 +78,9 @@ pub fn serve_line(t: &mut dyn Transport, line: &Arc<Mutex<SimLine>>, stop: &Atom
 /// What `serve` announces once clients may connect.
 #[derive(Clone, Debug, serde::Serialize)]
 pub struct Ready {
-    /// The pty slave device (`/dev/pts/N`), when served on a pty.
+    /// The pty slave device (`/dev/pts/N`) and the symlink to it, when served on a pty.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub servo_pty: Option<PathBuf>,
-    /// The symlink pointing at it, if one was asked for.
-    pub link: Option<PathBuf>,
+    pub servo_pty: Option<crate::core::link::served::PtyReady>,
     /// The TCP address, when served on TCP (`kinco+tcp://ADDR`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub servo_tcp: Option<String>,
@@ -154,8 +152,7 @@ pub fn serve_on_line(
         None => None,
     };
     ready(&Ready {
-        servo_pty: served.pty.clone(),
-        link: served.link.clone(),
+        servo_pty: served.pty_ready(),
         servo_tcp: served.tcp.map(|a| a.to_string()),
         ids,
         echo: opts.echo,

@@ -26,11 +26,9 @@ const MAX_WAIT: Duration = Duration::from_millis(10);
 /// What `serve` announces once clients may connect.
 #[derive(Clone, Debug, serde::Serialize)]
 pub struct Ready {
-    /// The pty slave device (`/dev/pts/N`), when served on a pty.
+    /// The pty slave device (`/dev/pts/N`) and the symlink to it, when served on a pty.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub umpk_pty: Option<PathBuf>,
-    /// The symlink pointing at it.
-    pub umpk_link: Option<PathBuf>,
+    pub umpk_pty: Option<crate::core::link::served::PtyReady>,
     /// The TCP address, when served on TCP (`umpk+tcp://ADDR`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub umpk_tcp: Option<String>,
@@ -107,8 +105,7 @@ pub fn serve(
         (u.mode().name(), u.state_path.clone())
     };
     ready(&Ready {
-        umpk_pty: served.pty.clone(),
-        umpk_link: served.link.clone(),
+        umpk_pty: served.pty_ready(),
         umpk_tcp: served.tcp.map(|a| a.to_string()),
         umpk_model: model.name,
         umpk_mode,
