@@ -4,10 +4,13 @@
 # simulated K2s (`plcsh sim serve --fleet N`), the same mosquitto on a free loopback port and
 # an independent subscriber (bench/py/fleet_sub.py). For each case: devices, the offered rate,
 # the rate the subscriber saw per device, CPU of the poller (% of one core), its peak RSS,
-# poll->subscriber latency p50/p99, and what went missing (by `seq`, plus plcsh's own counters).
+# poll->subscriber latency p50/p99, what went missing (by `seq`, plus plcsh's own counters), and
+# the poller's CPU per published value (its CPU seconds over the window / the values the
+# subscriber received in it, in µs).
 #
 #   bench/fleet.sh [PLCSH] [CASE…]      CASE: DEVICES:HZ (default: 500:10 1000:10 5000:1)
 #   SECS=15 WARM=4 REGS=3 PEER=1 bench/fleet.sh target/release/plcsh 1000:10
+#   PROFILE=1 …: also `perf record -g` plcsh over the window (report in /tmp/plcsh-fleet-N.perf)
 #
 # Use a release build for figures. Machine load is printed before each case.
 set -u
@@ -48,7 +51,11 @@ measure() {
     sleep "$(($(date +%s) >= start ? 0 : start - $(date +%s)))"
     local t0 c0 t1 c1
     t0=$(date +%s.%N); c0=$(ticks "$p")
-    sleep "$secs"
+    if [ "${PROFILE:-0}" = 1 ] && [ "$name" = plcsh ]; then
+        perf record -q -g -F 499 -o "/tmp/plcsh-fleet-$n.perf" -p "$p" -- sleep "$secs" 2>/dev/null
+    else
+        sleep "$secs"
+    fi
     t1=$(date +%s.%N); c1=$(ticks "$p")
     kill -INT "$p" 2>/dev/null
     wait "$p"; local rc=$?
@@ -56,9 +63,10 @@ measure() {
     local hz_tck; hz_tck=$(getconf CLK_TCK)
     local cpu; cpu=$(echo "($c1 - $c0) / $hz_tck / ($t1 - $t0) * 100" | bc -l)
     local rss; rss=$(sort -n "$work/rss.$group" | tail -1)
-    $py - "$name" "$n" "$hz" "$cpu" "${rss:-0}" "$rc" "$work/sub.$group" "$work/out.$group" <<'PY'
+    local dt; dt=$(echo "$t1 - $t0" | bc -l)
+    $py - "$name" "$n" "$hz" "$cpu" "${rss:-0}" "$rc" "$work/sub.$group" "$work/out.$group" "$dt" <<'PY'
 import json, sys
-name, n, hz, cpu, rss, rc, subf, outf = sys.argv[1:9]
+name, n, hz, cpu, rss, rc, subf, outf, dt = sys.argv[1:10]
 s = json.loads(open(subf).read() or "{}")
 lines = open(outf).read().splitlines()
 summary = lines[-1] if lines else ""
@@ -68,14 +76,16 @@ except ValueError:
     own = {"raw": summary[:200]}
 keep = {k: own[k] for k in ("published", "skipped", "dropped_behind", "dropped_broker_away", "undelivered") if k in own}
 lat = s.get("latency_ms", {})
-print("| %s | %s | %s Hz | %s Hz | %.0f %% | %.0f MiB | %s | %s | %s | %s | exit %s |" % (
-    name, n, hz, s.get("rate_hz"), float(cpu), int(rss) / 1024, lat.get("p50"), lat.get("p99"),
+values = s.get("messages") or 0
+per_value = "%.1f µs" % (float(cpu) / 100 * float(dt) / values * 1e6) if values else "—"
+print("| %s | %s | %s Hz | %s Hz | %.0f %% | %s | %.0f MiB | %s | %s | %s | %s | exit %s |" % (
+    name, n, hz, s.get("rate_hz"), float(cpu), per_value, int(rss) / 1024, lat.get("p50"), lat.get("p99"),
     s.get("missing_by_seq"), json.dumps(keep, separators=(",", ":")), rc))
 PY
 }
 
-echo "| poller | devices | offered | seen per device | CPU (one core) | peak RSS | p50 ms | p99 ms | missing (seq) | own counters | |"
-echo "|---|---|---|---|---|---|---|---|---|---|---|"
+echo "| poller | devices | offered | seen per device | CPU (one core) | CPU per value | peak RSS | p50 ms | p99 ms | missing (seq) | own counters | |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
 for c in $cases; do
     n=${c%%:*}
     hz=${c##*:}

@@ -83,11 +83,37 @@ pub struct Stats {
 enum Loop {
     /// Connected; whether the broker kept the last session (rumqttc then resends what it holds).
     ConnAck(bool),
-    /// One more message left for good: written (QoS 0) or acknowledged (QoS 1).
+    /// Messages left for good: written (QoS 0) or acknowledged (QoS 1); their number is in
+    /// [`Confirmations`] (one wake-up for however many came meanwhile).
     Confirmed,
     Disconnected,
     Error(String),
     Command(String, Vec<u8>),
+}
+
+/// Messages confirmed by the event loop and not yet taken off the `unconfirmed` list. The
+/// event loop counts each one here and sends [`Loop::Confirmed`] only when the last one sent
+/// was taken, so a burst of confirmations costs the queue's owner one turn, not one per message.
+#[derive(Default)]
+struct Confirmations {
+    count: std::sync::atomic::AtomicU64,
+    signalled: std::sync::atomic::AtomicBool,
+}
+
+impl Confirmations {
+    /// One more (event loop side); whether the owner must be told.
+    fn add(&self) -> bool {
+        use std::sync::atomic::Ordering::SeqCst;
+        self.count.fetch_add(1, SeqCst);
+        !self.signalled.swap(true, SeqCst)
+    }
+
+    /// All counted so far (owner side).
+    fn take(&self) -> u64 {
+        use std::sync::atomic::Ordering::SeqCst;
+        self.signalled.store(false, SeqCst);
+        self.count.swap(0, SeqCst)
+    }
 }
 
 const BACKOFF_MIN: Duration = Duration::from_millis(100);
@@ -159,24 +185,35 @@ macro_rules! broker_loop {
                 let (client, mut eventloop) = <$client>::new(opts, 1000);
                 let (etx, mut erx) = unbounded_channel::<Loop>();
                 let qos1 = cfg.qos1;
+                let confirmations = Arc::new(Confirmations::default());
+                let counted = confirmations.clone();
+                let confirmed = move |etx: &tokio::sync::mpsc::UnboundedSender<Loop>| {
+                    if counted.add() {
+                        etx.send(Loop::Confirmed).map_err(|_| ())
+                    } else {
+                        Ok(())
+                    }
+                };
                 tokio::spawn(async move {
                     let mut backoff = BACKOFF_MIN;
                     loop {
                         let sent = match eventloop.poll().await {
                             Ok(Event::Incoming(Packet::ConnAck(c))) => {
                                 backoff = BACKOFF_MIN;
-                                etx.send(Loop::ConnAck(c.session_present))
+                                etx.send(Loop::ConnAck(c.session_present)).map_err(|_| ())
                             }
-                            Ok(Event::Incoming(Packet::PubAck(_))) if qos1 => etx.send(Loop::Confirmed),
+                            Ok(Event::Incoming(Packet::PubAck(_))) if qos1 => confirmed(&etx),
                             Ok(Event::Incoming(Packet::Publish(p))) => {
                                 let topic = String::from_utf8_lossy(AsRef::<[u8]>::as_ref(&p.topic)).into_owned();
-                                etx.send(Loop::Command(topic, p.payload.to_vec()))
+                                etx.send(Loop::Command(topic, p.payload.to_vec())).map_err(|_| ())
                             }
-                            Ok(Event::Outgoing(rumqttc::Outgoing::Publish(_))) if !qos1 => etx.send(Loop::Confirmed),
-                            Ok(Event::Outgoing(rumqttc::Outgoing::Disconnect)) => etx.send(Loop::Disconnected),
+                            Ok(Event::Outgoing(rumqttc::Outgoing::Publish(_))) if !qos1 => confirmed(&etx),
+                            Ok(Event::Outgoing(rumqttc::Outgoing::Disconnect)) => {
+                                etx.send(Loop::Disconnected).map_err(|_| ())
+                            }
                             Ok(_) => Ok(()),
                             Err(e) => {
-                                let r = etx.send(Loop::Error(e.to_string()));
+                                let r = etx.send(Loop::Error(e.to_string())).map_err(|_| ());
                                 tokio::time::sleep(backoff).await;
                                 backoff = (backoff * 2).min(BACKOFF_MAX);
                                 r
@@ -260,63 +297,9 @@ macro_rules! broker_loop {
                         None if never => first_contact,
                         None => tokio::time::Instant::now() + Duration::from_secs(3600),
                     };
-                    tokio::select! {
-                        e = erx.recv() => match e {
-                            Some(Loop::ConnAck(kept)) => {
-                                connected = true;
-                                outbox.set_connected(true);
-                                away_told = false;
-                                if was_connected {
-                                    stats.reconnects += 1;
-                                }
-                                was_connected = true;
-                                if !kept {
-                                    // A new session: rumqttc dropped what it held; send it again, first.
-                                    outbox.put_back(pending.drain(..));
-                                    outbox.put_back(unconfirmed.drain(..));
-                                }
-                                if !said_offline {
-                                    // Straight to the client, ahead of the queue (a full queue
-                                    // could push it out).
-                                    let m = status(b"online");
-                                    match client.try_publish(m.topic.clone(), qos, true, m.payload.clone()) {
-                                        Ok(()) => unconfirmed.push_back(m),
-                                        Err(_) => outbox.push_front(m),
-                                    }
-                                }
-                                if let Some(filter) = &cfg.commands {
-                                    let _ = client.try_subscribe(filter.clone(), QoS::AtLeastOnce);
-                                }
-                                let _ = notes.send(Note::Connected);
-                            }
-                            Some(Loop::Confirmed) => {
-                                if unconfirmed.pop_front().is_some() {
-                                    stats.published += 1;
-                                }
-                            }
-                            Some(Loop::Disconnected) => break,
-                            Some(Loop::Command(topic, payload)) => {
-                                let _ = notes.send(Note::Command(topic, payload));
-                            }
-                            Some(Loop::Error(why)) => {
-                                connected = false;
-                                outbox.set_connected(false);
-                                // Not handed over: back into the queue, where the bound applies.
-                                outbox.put_back(pending.drain(..));
-                                if let Some(f) = classify(&why) {
-                                    let _ = notes.send(Note::Fatal(f.clone()));
-                                    stats.fatal = Some(f);
-                                    break;
-                                }
-                                last_error = why.clone();
-                                if !away_told {
-                                    away_told = true;
-                                    let _ = notes.send(Note::Away(why));
-                                }
-                            }
-                            None => break,
-                        },
-                        _ = outbox.wake.notified() => {}
+                    let e = tokio::select! {
+                        e = erx.recv() => e,
+                        _ = outbox.wake.notified() => continue,
                         _ = tokio::time::sleep_until(until) => {
                             if !was_connected {
                                 let f = Fatal::NeverReached(last_error.clone());
@@ -326,7 +309,71 @@ macro_rules! broker_loop {
                             if deadline.is_some() || stats.fatal.is_some() {
                                 break;
                             }
+                            continue;
                         }
+                    };
+                    // Confirmations first: the event loop counted them before it sent `e`
+                    // (an error puts back only what was not confirmed).
+                    for _ in 0..confirmations.take() {
+                        if unconfirmed.pop_front().is_some() {
+                            stats.published += 1;
+                        }
+                    }
+                    match e {
+                        Some(Loop::ConnAck(kept)) => {
+                            connected = true;
+                            outbox.set_connected(true);
+                            away_told = false;
+                            if was_connected {
+                                stats.reconnects += 1;
+                            }
+                            was_connected = true;
+                            if !kept {
+                                // A new session: rumqttc dropped what it held; send it again, first.
+                                outbox.put_back(pending.drain(..));
+                                outbox.put_back(unconfirmed.drain(..));
+                            }
+                            if !said_offline {
+                                // Straight to the client, ahead of the queue (a full queue
+                                // could push it out).
+                                let m = status(b"online");
+                                match client.try_publish(m.topic.clone(), qos, true, m.payload.clone()) {
+                                    Ok(()) => unconfirmed.push_back(m),
+                                    Err(_) => outbox.push_front(m),
+                                }
+                            }
+                            if let Some(filter) = &cfg.commands {
+                                let _ = client.try_subscribe(filter.clone(), QoS::AtLeastOnce);
+                            }
+                            let _ = notes.send(Note::Connected);
+                        }
+                        Some(Loop::Confirmed) => {}
+                        Some(Loop::Disconnected) => break,
+                        Some(Loop::Command(topic, payload)) => {
+                            let _ = notes.send(Note::Command(topic, payload));
+                        }
+                        Some(Loop::Error(why)) => {
+                            connected = false;
+                            outbox.set_connected(false);
+                            // Not handed over: back into the queue, where the bound applies.
+                            outbox.put_back(pending.drain(..));
+                            if let Some(f) = classify(&why) {
+                                let _ = notes.send(Note::Fatal(f.clone()));
+                                stats.fatal = Some(f);
+                                break;
+                            }
+                            last_error = why.clone();
+                            if !away_told {
+                                away_told = true;
+                                let _ = notes.send(Note::Away(why));
+                            }
+                        }
+                        None => break,
+                    }
+                }
+                for _ in 0..confirmations.take() {
+                    if unconfirmed.pop_front().is_some() {
+                        stats.published += 1;
                     }
                 }
                 stats.undelivered = (outbox.len() + pending.len() + unconfirmed.len()) as u64;
@@ -368,6 +415,17 @@ broker_loop!(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn confirmations_wake_the_owner_once_per_burst_and_none_is_lost() {
+        let c = Confirmations::default();
+        assert!(c.add(), "the first one tells the owner");
+        assert!(!c.add() && !c.add(), "the rest of the burst ride along");
+        assert_eq!(c.take(), 3);
+        assert_eq!(c.take(), 0);
+        assert!(c.add(), "after a take the next one tells the owner again");
+        assert_eq!(c.take(), 1);
+    }
 
     #[test]
     fn refused_credentials_and_certificates_are_told_from_an_outage() {

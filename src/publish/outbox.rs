@@ -102,8 +102,23 @@ impl Outbox {
 
     /// Queues a message (see the module's rules for a full queue).
     pub fn push(&self, m: Msg) {
+        self.push_all(std::iter::once(m));
+    }
+
+    /// Queues a poll's messages, in order, under one lock and with at most one wake-up.
+    pub fn push_all(&self, msgs: impl IntoIterator<Item = Msg>) {
         let mut g = self.lock();
         let was_empty = g.items.is_empty();
+        for m in msgs {
+            self.push_locked(&mut g, m);
+        }
+        drop(g);
+        if was_empty {
+            self.wake.notify_one();
+        }
+    }
+
+    fn push_locked(&self, g: &mut Inner, m: Msg) {
         if g.items.len() >= self.bound {
             if g.connected {
                 if let Some(&pos) = m.key.and_then(|k| g.latest.get(&k)) {
@@ -127,10 +142,6 @@ impl Outbox {
             g.latest.insert(k, pos);
         }
         g.items.push_back(m);
-        drop(g);
-        if was_empty {
-            self.wake.notify_one();
-        }
     }
 
     /// Takes up to `max` messages from the front.
@@ -254,6 +265,21 @@ mod tests {
         assert_eq!(o.of(0).behind.load(Ordering::Relaxed), 3);
         assert_eq!(topics(&o), [("b".to_string(), "1".to_string()), ("c".to_string(), "1".to_string())]);
         assert_eq!(o.totals(), (0, 3, 0));
+    }
+
+    #[test]
+    fn a_poll_queued_at_once_keeps_its_order_and_the_bound() {
+        let o = Outbox::new(3, 2);
+        o.set_connected(true);
+        o.push_all((0..3).map(|i| msg(&format!("t{i}"), i, 0, "1")));
+        o.push_all((0..3).map(|i| msg(&format!("t{i}"), i, 0, "2")));
+        assert_eq!(o.len(), 3, "bounded");
+        assert_eq!(o.of(0).behind.load(Ordering::Relaxed), 3, "each newer value took its topic's place");
+        // A topic with nothing queued pushes out the oldest.
+        o.push_all([msg("u", 9, 1, "1")]);
+        assert_eq!(o.of(0).behind.load(Ordering::Relaxed), 4);
+        let want = [("t1", "2"), ("t2", "2"), ("u", "1")];
+        assert_eq!(topics(&o), want.map(|(t, p)| (t.to_string(), p.to_string())));
     }
 
     #[test]

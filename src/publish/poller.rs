@@ -34,7 +34,7 @@ use crate::core::{Error, Value};
 use crate::session::Session;
 use std::cmp::Reverse;
 use std::collections::{BinaryHeap, HashMap};
-use std::fmt::Write as _;
+use std::io::Write as _;
 use std::sync::atomic::Ordering;
 use std::sync::{Arc, Condvar, Mutex};
 use std::time::{Duration, Instant};
@@ -51,22 +51,84 @@ pub struct Member {
 /// One operand's topic and the pieces of its payload, built once.
 struct Leaf {
     topic: String,
+    /// `,"type":"WORD","ts":` — the payload's middle.
+    mid: String,
     /// `,"device":"NAME","operand":"OP"}` — the payload's tail.
     tail: String,
     key: u32,
 }
 
+/// What a device's poll reads, resolved once from the operand texts after its first good
+/// read (the model is known then): the operands and the leaf of each. A poll then reads
+/// them straight from the device, without parsing the texts or naming each value again.
+struct Plan {
+    /// The device's index in its session.
+    device: usize,
+    ops: Vec<crate::core::Operand>,
+    leaves: Vec<usize>,
+}
+
 struct Dev {
     name: String,
     session: std::result::Result<Session, Error>,
-    /// The operands' leaves, by the operand's name as read.
-    leaves: HashMap<String, Leaf>,
+    /// The operands' leaves, in the order they were first read.
+    leaves: Vec<Leaf>,
+    /// A leaf's index by the operand's name as read.
+    leaf_of: HashMap<String, usize>,
+    /// The resolved reads (dropped when the device goes offline: it may come back another model).
+    plan: Option<Plan>,
     status_topic: String,
-    last: HashMap<String, Value>,
+    /// The last published value of each leaf (`--deadband`).
+    last: Vec<Option<Value>>,
     online: Option<bool>,
     /// The next slot of the schedule (0-based).
     slot: u64,
     phase: Duration,
+}
+
+impl Dev {
+    /// The leaf of operand `name` (made on its first reading).
+    fn leaf(&mut self, group: &str, base: u32, name: &str, dtype: crate::core::DataType) -> usize {
+        if let Some(&i) = self.leaf_of.get(name) {
+            return i;
+        }
+        let i = self.leaves.len();
+        let dtype = serde_json::to_string(&dtype).unwrap_or_else(|_| "null".into());
+        self.leaves.push(Leaf {
+            topic: super::topic(group, &self.name, name),
+            mid: format!(",\"type\":{dtype},\"ts\":"),
+            tail: format!(
+                ",\"device\":{},\"operand\":{}}}",
+                serde_json::Value::from(self.name.as_str()),
+                serde_json::Value::from(name)
+            ),
+            key: base + 1 + i as u32,
+        });
+        self.last.push(None);
+        self.leaf_of.insert(name.to_string(), i);
+        i
+    }
+
+    /// Resolves the operand texts once into a [`Plan`] (`None`: they name more than one
+    /// device, or do not resolve; the poll then goes through [`Session::get`] each time).
+    fn plan(&mut self, group: &str, base: u32, texts: &[String]) -> Option<()> {
+        let session = self.session.as_ref().ok()?;
+        let mut device = None;
+        let mut named = Vec::new();
+        for t in texts {
+            let target = session.resolve(t).ok()?;
+            if *device.get_or_insert(target.device) != target.device {
+                return None;
+            }
+            for op in target.ops {
+                named.push((op, session.name_of(target.device, &op)));
+            }
+        }
+        let device = device?;
+        let leaves = named.iter().map(|(op, name)| self.leaf(group, base, name, op.dtype)).collect();
+        self.plan = Some(Plan { device, ops: named.into_iter().map(|(op, _)| op).collect(), leaves });
+        Some(())
+    }
 }
 
 struct Sched {
@@ -121,8 +183,10 @@ impl Pool {
                     status_topic: super::topic(&poll.group, &m.name, "status"),
                     name: m.name,
                     session: m.session,
-                    leaves: HashMap::new(),
-                    last: HashMap::new(),
+                    leaves: Vec::new(),
+                    leaf_of: HashMap::new(),
+                    plan: None,
+                    last: Vec::new(),
                     online: None,
                     slot: 0,
                     phase,
@@ -322,14 +386,31 @@ impl Pool {
                 dev,
             });
         }
-        let texts: Vec<&str> = self.texts.iter().map(String::as_str).collect();
-        match session.get(&texts) {
-            Ok(readings) => {
+        // The resolved plan when there is one (one read, no parsing); the general reader
+        // the first time and whenever the texts do not make a plan.
+        let read: crate::core::Result<Vec<(usize, Value)>> = match &d.plan {
+            Some(plan) => session
+                .ready(plan.device)
+                .and_then(|()| session.read_values(plan.device, &plan.ops))
+                .map(|values| plan.leaves.iter().copied().zip(values).collect()),
+            None => {
+                let texts: Vec<&str> = self.texts.iter().map(String::as_str).collect();
+                session.get(&texts).map(|readings| {
+                    readings.into_iter().map(|(_, r)| (d.leaf(&p.group, base, &r.operand, r.dtype), r.value)).collect()
+                })
+            }
+        };
+        match read {
+            Ok(values) => {
                 let ts = now_ms();
+                if d.plan.is_none() {
+                    d.plan(&p.group, base, &self.texts);
+                }
+                let mut batch = Vec::with_capacity(values.len() + 1);
                 if d.online != Some(true) {
                     // Back (or first): every value is published fresh.
-                    d.last.clear();
-                    self.send(Msg {
+                    d.last.iter_mut().for_each(|l| *l = None);
+                    batch.push(Msg {
                         topic: d.status_topic.clone(),
                         payload: b"online".to_vec(),
                         retain: true,
@@ -341,43 +422,32 @@ impl Pool {
                     }
                     d.online = Some(true);
                 }
-                let mut payload = String::with_capacity(160);
-                for (_, r) in readings {
+                for (l, value) in values {
                     if let Some(db) = p.deadband {
-                        if !changed(d.last.get(&r.operand), &r.value, db) {
+                        if !changed(d.last[l].as_ref(), &value, db) {
                             continue;
                         }
+                        d.last[l] = Some(value);
                     }
-                    let next_key = base + 1 + d.leaves.len() as u32;
-                    let leaf = d.leaves.entry(r.operand.clone()).or_insert_with(|| Leaf {
-                        topic: super::topic(&p.group, &d.name, &r.operand),
-                        tail: format!(
-                            ",\"device\":{},\"operand\":{}}}",
-                            serde_json::Value::from(d.name.as_str()),
-                            serde_json::Value::from(r.operand.as_str())
-                        ),
-                        key: next_key,
-                    });
-                    payload.clear();
-                    payload.push_str("{\"value\":");
-                    let value = serde_json::to_string(&r.value).unwrap_or_else(|_| "null".into());
-                    let dtype = serde_json::to_string(&r.dtype).unwrap_or_else(|_| "null".into());
-                    let _ = write!(payload, "{value},\"type\":{dtype},\"ts\":{ts},\"seq\":{seq}{}", leaf.tail);
-                    self.send(Msg {
-                        topic: leaf.topic.clone(),
-                        payload: payload.as_bytes().to_vec(),
-                        retain: true,
-                        key: Some(leaf.key),
-                        dev,
-                    });
-                    if p.deadband.is_some() {
-                        d.last.insert(r.operand, r.value);
+                    let leaf = &d.leaves[l];
+                    // `{"value":V,"type":"T","ts":TS,"seq":SEQ,"device":"D","operand":"O"}`,
+                    // written straight into the message's own buffer.
+                    let mut payload = Vec::with_capacity(48 + leaf.mid.len() + leaf.tail.len());
+                    payload.extend_from_slice(b"{\"value\":");
+                    if serde_json::to_writer(&mut payload, &value).is_err() {
+                        payload.extend_from_slice(b"null");
                     }
+                    payload.extend_from_slice(leaf.mid.as_bytes());
+                    let _ = write!(payload, "{ts},\"seq\":{seq}");
+                    payload.extend_from_slice(leaf.tail.as_bytes());
+                    batch.push(Msg { topic: leaf.topic.clone(), payload, retain: true, key: Some(leaf.key), dev });
                 }
+                self.outbox.push_all(batch);
             }
             // A stop (Ctrl-C) that cut a read short says nothing about the device.
             Err(e) if e.kind == crate::core::ErrorKind::Interrupted => {}
             Err(e) => {
+                d.plan = None;
                 if d.online != Some(false) {
                     self.send(Msg {
                         topic: d.status_topic.clone(),
