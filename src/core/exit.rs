@@ -107,7 +107,7 @@ mod tests {
     #[test]
     fn the_table_has_each_status_once_in_order() {
         let codes: Vec<i32> = STATUSES.iter().map(|s| s.code).collect();
-        assert_eq!(codes, [OK, FAILED, USAGE, HANGUP, INTERRUPTED, TERMINATED]);
+        assert_eq!(codes, [OK, FAILED, USAGE, BROKER_AUTH, BROKER_UNREACHABLE, HANGUP, INTERRUPTED, TERMINATED]);
         assert!(codes.windows(2).all(|w| w[0] < w[1]));
     }
 
