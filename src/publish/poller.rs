@@ -6,7 +6,7 @@
 //! earliest due device, waits (a timed wait on a condition variable, no sleep slicing) until
 //! its time — or takes it at once when it is due within [`SLACK`], so a busy pool polls one
 //! device after the next without a sleep and a wake-up per poll — polls it with the same
-//! reader as `get` (the operand texts resolved once, [`Plan`]), queues the poll's values at
+//! reader as `get` (the operand texts resolved once into a plan), queues the poll's values at
 //! once ([`super::outbox`]) and puts the device back with its next due instant. A device is
 //! held by one worker at a time, so its polls never overlap and stay in order.
 //!
