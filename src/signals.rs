@@ -43,6 +43,7 @@ static IDLE: AtomicBool = AtomicBool::new(false);
 /// period starts later, when it can have work ([`start_watcher`]).
 pub fn install(interrupt: &Arc<AtomicBool>) {
     crate::core::platform::install_stop_handlers(interrupt, &RECEIVED);
+    crate::core::clock::before_sleep(start_watcher);
 }
 
 /// Starts, once per process, the watcher that ends the process on a signal received at an

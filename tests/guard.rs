@@ -313,7 +313,9 @@ fn every_write_is_refused_on_a_drive_over_a_pty() {
     let dir = scratch("pty");
     let link = dir.join("ttyKINCO");
     let _served = serve(&["--servo-pty", link.to_str().unwrap()]);
-    walk(&format!("kinco:{}?id=1", link.display()), "servo", Clock::following);
+    // A generous timeout: the served line is paced like RS232, and a loaded CI machine can
+    // delay a reply past the default 200 ms; this test is about refusals, not timing.
+    walk(&format!("kinco:{}?id=1&timeout=2s", link.display()), "servo", Clock::following);
 }
 
 #[test]

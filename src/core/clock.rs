@@ -48,6 +48,15 @@ fn ns(d: Duration) -> u64 {
     d.as_secs().saturating_mul(1_000_000_000).saturating_add(d.subsec_nanos() as u64).min(FOLLOWING - 1)
 }
 
+/// What runs before a real sleep (the signal watcher's start, which lives above `core`:
+/// `signals::install` sets it, so a process that never sleeps starts no watcher thread).
+static BEFORE_SLEEP: std::sync::OnceLock<fn()> = std::sync::OnceLock::new();
+
+/// Sets what runs before every real sleep (once per process; later calls are ignored).
+pub fn before_sleep(f: fn()) {
+    let _ = BEFORE_SLEEP.set(f);
+}
+
 impl Clock {
     /// The latest virtual time a stepped clock reaches (its ns count is 64 bits: about 584
     /// years); a step past it stops there. Commands refuse such a step instead.
@@ -156,7 +165,9 @@ impl Clock {
     pub fn sleep_real(d: Duration, interrupt: &AtomicBool) -> bool {
         // Whoever sleeps may be woken by a stop signal: the watcher that wakes sleepers runs
         // from the first sleep on (a one-shot that never sleeps does without it).
-        crate::signals::start_watcher();
+        if let Some(start) = BEFORE_SLEEP.get() {
+            start();
+        }
         let end = Instant::now() + d;
         let (lock, cv) = &SLEEPERS;
         let mut gen = lock.lock().unwrap_or_else(|p| p.into_inner());

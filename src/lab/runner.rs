@@ -91,10 +91,7 @@ impl ReportDir {
             std::process::id(),
             N.fetch_add(1, Ordering::Relaxed)
         ));
-        let mut b = std::fs::DirBuilder::new();
-        #[cfg(unix)]
-        std::os::unix::fs::DirBuilderExt::mode(&mut b, 0o700);
-        b.create(&d)?;
+        crate::core::platform::create_private_dir(&d)?;
         Ok(ReportDir(d))
     }
 }

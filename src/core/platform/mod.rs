@@ -18,8 +18,8 @@ pub mod windows;
 use windows as sys;
 
 pub use sys::{
-    discard_typed_ahead, durable_rename, install_stop_handlers, interrupt_child, keep_c_shims, name_file, stop_signal,
-    terminal_size, terminate_child, thread_cpu_time, unnamed_file, utc_offset,
+    create_private_dir, discard_typed_ahead, durable_rename, install_stop_handlers, interrupt_child, keep_c_shims,
+    name_file, stop_signal, terminal_size, terminate_child, thread_cpu_time, unnamed_file, utc_offset,
 };
 
 /// A standard stream that output with escape codes may go to.

@@ -29,6 +29,12 @@ pub fn install_stop_handlers(interrupt: &Arc<AtomicBool>, received: &'static Ato
 /// A Unix terminal takes escape codes as it is: nothing to switch on.
 pub fn enable_escapes() {}
 
+/// Creates a folder only this user can enter (mode 0700).
+pub fn create_private_dir(path: &std::path::Path) -> std::io::Result<()> {
+    use std::os::unix::fs::DirBuilderExt;
+    std::fs::DirBuilder::new().mode(0o700).create(path)
+}
+
 /// A Unix terminal takes escape codes ([`super::escapes`] asks whether it is one).
 pub fn console_escapes(_stream: super::Stream) -> bool {
     true

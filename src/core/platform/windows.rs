@@ -77,6 +77,13 @@ pub fn install_stop_handlers(interrupt: &Arc<AtomicBool>, received: &'static Ato
 /// Whether standard output and error take escape codes, decided once (see [`enable_escapes`]).
 static ESCAPES: OnceLock<[bool; 2]> = OnceLock::new();
 
+/// Creates a folder for this user's own files. Windows has no mode bits: a folder in the
+/// user's temporary folder (`%LOCALAPPDATA%\Temp`) inherits an access list that admits only
+/// the user, administrators and the system.
+pub fn create_private_dir(path: &std::path::Path) -> std::io::Result<()> {
+    std::fs::create_dir(path)
+}
+
 /// Turns on virtual-terminal processing for standard output and error where they are
 /// consoles, once per process. `PLCSH_CONSOLE_VT=off` acts as if the console refused.
 pub fn enable_escapes() {
