@@ -68,6 +68,12 @@ mod tests {
     /// The committed scripts match what the binary generates now.
     #[test]
     fn committed_completions_are_current() {
+        // The committed scripts are made on Unix; on Windows the help texts in them name
+        // Windows paths and lines (`core::platform::words`), so they differ by those words.
+        if cfg!(windows) {
+            println!("skipped: needs Unix help texts (the committed scripts are made on Unix)");
+            return;
+        }
         let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("completions");
         if std::env::var_os("PLCSH_BLESS").is_some() {
             write_all(&dir).unwrap();
