@@ -198,12 +198,13 @@ fn paths_prints_where_every_file_lives() {
     assert!(p["lib"].as_str().unwrap().ends_with("built in"), "{p}");
     assert!(p["recordings"].as_str().unwrap().starts_with("none"), "{p}");
     // The defaults and the environment, from the shell's `paths`.
-    let o = plcsh().env("PLCSH_SNAPSHOTS", "/tmp/snaps").args(["-c", "paths"]).output_retrying().unwrap();
+    let snaps = home.join("snaps").display().to_string();
+    let o = plcsh().env("PLCSH_SNAPSHOTS", &snaps).args(["-c", "paths"]).output_retrying().unwrap();
     let text = stdout(&o);
     if cfg!(unix) {
         assert!(text.contains(&home.join("config/plcsh/devices.toml").display().to_string()), "{text}");
     }
-    assert!(text.contains("/tmp/snaps") && text.contains("none"), "state none under PLCSH_STATE=none:\n{text}");
+    assert!(text.contains(&snaps) && text.contains("none"), "state none under PLCSH_STATE=none:\n{text}");
 }
 
 /// `plcsh man` prints the roff page made from the clap definition: its title, then every
@@ -253,7 +254,9 @@ fn subcommand_help_separates_its_own_options_from_the_global_ones() {
 /// rows as narrow as the devices make them.
 #[test]
 fn a_bad_profile_does_not_widen_the_devices_table() {
+    // A folder of this test's own, made afresh.
     let dir = std::env::temp_dir().join(format!("plcsh-bad-profile-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     let file = dir.join("devices.toml");
     std::fs::write(&file, "[devices.bad]\nurl = \"nope:/x\"\n").unwrap();

@@ -268,7 +268,9 @@ mod tests {
 
     #[test]
     fn a_20_mib_verdict_gives_a_small_table_fast() {
+        // A folder of this test's own, made afresh.
         let dir = std::env::temp_dir().join(format!("plcsh-report-test-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
         std::fs::create_dir_all(&dir).unwrap();
         std::fs::write(dir.join("r.lua"), "").unwrap();
         std::fs::write(dir.join("g.lua"), "").unwrap();

@@ -86,13 +86,20 @@ impl ReportDir {
     fn new() -> std::io::Result<ReportDir> {
         use std::sync::atomic::{AtomicU64, Ordering};
         static N: AtomicU64 = AtomicU64::new(0);
-        let d = std::env::temp_dir().join(format!(
-            "plcsh-report-{}-{}",
-            std::process::id(),
-            N.fetch_add(1, Ordering::Relaxed)
-        ));
-        crate::core::platform::create_private_dir(&d)?;
-        Ok(ReportDir(d))
+        // A new folder every time: one left by an earlier process with the same id (a crash,
+        // a reused process id) is passed over, never reused, since another user may own it.
+        loop {
+            let d = std::env::temp_dir().join(format!(
+                "plcsh-report-{}-{}",
+                std::process::id(),
+                N.fetch_add(1, Ordering::Relaxed)
+            ));
+            match crate::core::platform::create_private_dir(&d) {
+                Ok(()) => return Ok(ReportDir(d)),
+                Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
+                Err(e) => return Err(e),
+            }
+        }
     }
 }
 
