@@ -367,6 +367,18 @@ impl Pool {
         let _ = self.seen.lock().unwrap_or_else(|p| p.into_inner()).send(s);
     }
 
+    /// Marks a device offline: its retained status, and the front end told why.
+    fn mark_offline(&self, status_topic: &str, name: &str, key: u32, dev: u32, e: Error) {
+        self.send(Msg {
+            topic: status_topic.to_string(),
+            payload: b"offline".to_vec(),
+            retain: true,
+            key: Some(key),
+            dev,
+        });
+        self.tell(Seen::Offline(name.to_string(), e));
+    }
+
     /// Polls device `i` once (writes first); returns its next due instant, `None` when done.
     fn poll_one(&self, i: usize) -> Option<Instant> {
         let mut guard = self.devs[i].lock().unwrap_or_else(|p| p.into_inner());
@@ -378,15 +390,8 @@ impl Pool {
             Ok(s) => s,
             Err(e) => {
                 // Never opened: offline once, and off the schedule.
-                self.send(Msg {
-                    topic: d.status_topic.clone(),
-                    payload: b"offline".to_vec(),
-                    retain: true,
-                    key: Some(base),
-                    dev,
-                });
+                self.mark_offline(&d.status_topic, &d.name, base, dev, e.clone());
                 d.online = Some(false);
-                self.tell(Seen::Offline(d.name.clone(), e.clone()));
                 return None;
             }
         };
@@ -467,14 +472,7 @@ impl Pool {
             Err(e) => {
                 d.plan = None;
                 if d.online != Some(false) {
-                    self.send(Msg {
-                        topic: d.status_topic.clone(),
-                        payload: b"offline".to_vec(),
-                        retain: true,
-                        key: Some(base),
-                        dev,
-                    });
-                    self.tell(Seen::Offline(d.name.clone(), e));
+                    self.mark_offline(&d.status_topic, &d.name, base, dev, e);
                     d.online = Some(false);
                 }
             }
