@@ -214,9 +214,13 @@ fn a_fleets_values_and_status_are_published_and_retained() {
         assert_eq!(v["device"], dev);
         assert!(v["ts"].as_u64().unwrap() > 1_600_000_000_000, "a source timestamp in ms: {v}");
         assert_eq!(json(&find(&format!("plcsh/line/{dev}/VD200_REAL")).1)["type"], "REAL");
-        assert_eq!(find(&format!("plcsh/line/{dev}/status")).1, b"online");
+        assert_eq!(json(&find(&format!("plcsh/line/{dev}/status")).1), serde_json::json!({"state": "online"}));
     }
-    assert_eq!(find("plcsh/line/line-3/status").1, b"offline");
+    // A port that refuses connections: offline, and why.
+    assert_eq!(
+        json(&find("plcsh/line/line-3/status").1),
+        serde_json::json!({"state": "offline", "reason": "unreachable"})
+    );
     assert!(!g.iter().any(|(t, _, _)| t == "plcsh/line/line-3/VW100"), "an offline device publishes no values");
     assert_eq!(find("plcsh/line/_publisher/status").1, b"offline", "the publisher said goodbye");
 }
@@ -316,7 +320,7 @@ fn writes_from_the_broker_only_to_allowed_operands() {
     let cfg = d.join("devices.toml");
     std::fs::write(
         &cfg,
-        "[devices.a]\nurl = \"sim:K205-16DT\"\nallow = [\"VW100\"]\n[devices.v]\nurl = \"sim:K205-16DT\"\nread_only = true\n[fleets.pair]\ndevices = [\"a\", \"v\"]\n",
+        "[devices.a]\nurl = \"sim:K205-16DT\"\nallow = [\"VW100\"]\n[devices.v]\nurl = \"sim:K205-16DT\"\nread_only = true\n[devices.n]\nurl = \"sim:K205-16DT\"\n[fleets.pair]\ndevices = [\"a\", \"v\", \"n\"]\n",
     )
     .unwrap();
     let got = subscribe(port, "writer-watch");
@@ -359,11 +363,12 @@ fn writes_from_the_broker_only_to_allowed_operands() {
     send("plcsh/pair/a/set", r#"{"operand":"VW102","value":1,"id":"not-listed"}"#);
     send("plcsh/pair/v/set", r#"{"operand":"VW100","value":1,"id":"read-only"}"#);
     send("plcsh/pair/a/set", r#"{"operand":"VW100""#);
+    send("plcsh/pair/n/set", r#"{"operand":"VW100","value":1,"id":"no-allow-list"}"#);
     send("plcsh/pair/b/set", r#"{"operand":"VW100","value":1,"id":"no-such-device"}"#);
     let replies = |g: &[(String, Vec<u8>, bool)]| -> Vec<serde_json::Value> {
         g.iter().filter(|(t, _, _)| t.ends_with("/reply")).map(|(_, p, _)| json(p)).collect()
     };
-    wait_for(&got, "five replies", |g| replies(g).len() >= 5);
+    wait_for(&got, "six replies", |g| replies(g).len() >= 6);
     let value_of = |g: &[(String, Vec<u8>, bool)]| {
         g.iter().filter(|(t, _, _)| t == "plcsh/pair/a/VW100").any(|(_, p, _)| json(p)["value"] == 1234)
     };
@@ -376,9 +381,21 @@ fn writes_from_the_broker_only_to_allowed_operands() {
     let not_listed = by("not-listed");
     assert_eq!(not_listed["ok"], false);
     assert!(not_listed["error"]["message"].as_str().unwrap().contains("allow list"), "{not_listed}");
+    assert_eq!(not_listed["error"]["kind"], "refused", "{not_listed}");
     let ro = by("read-only");
     assert_eq!(ro["ok"], false);
     assert!(ro["error"]["message"].as_str().unwrap().contains("read_only"), "{ro}");
+    // The same refusal, in the same words, as the same write through `set`.
+    let o = run(&["--config", cfg.to_str().unwrap(), "--json", "-f", "pair", "-c", "set VW100=1"], "");
+    let by_set = json_lines(&o).into_iter().find(|l| l["device"] == "v").unwrap_or_else(|| panic!("{}", both(&o)));
+    assert_eq!(
+        (&ro["error"]["kind"], &ro["error"]["message"]),
+        (&by_set["error"]["kind"], &by_set["error"]["message"]),
+        "{ro} {by_set}"
+    );
+    assert_eq!(ro["error"]["kind"], "refused");
+    let no_allow = by("no-allow-list");
+    assert_eq!(no_allow["error"]["kind"], "refused", "{no_allow}");
     assert!(
         r.iter().any(|x| x["ok"] == false && x["error"]["kind"] == "syntax"),
         "a broken command is answered: {r:?}"
@@ -387,7 +404,7 @@ fn writes_from_the_broker_only_to_allowed_operands() {
     let unknown = by("no-such-device");
     assert_eq!((unknown["ok"].as_bool(), unknown["device"].as_str()), (Some(false), Some("b")), "{unknown}");
     let m = unknown["error"]["message"].as_str().unwrap();
-    assert!(m.contains("no device of `pair`") && m.contains("members: a, v") && m.contains("did you mean"), "{m}");
+    assert!(m.contains("no device of `pair`") && m.contains("members: a, v, n") && m.contains("did you mean"), "{m}");
     assert!(got.lock().unwrap().iter().any(|(t, _, _)| t == "plcsh/pair/b/reply"));
     assert!(
         !got.lock().unwrap().iter().any(|(t, p, _)| t == "plcsh/pair/v/VW100" && json(p)["value"] != 0),
@@ -709,7 +726,7 @@ fn on_change_publishes_once_and_a_device_that_stops_answering_goes_offline() {
     };
     assert_eq!((offline["device"].as_str(), offline["state"].as_str()), (Some("press"), Some("offline")), "{offline}");
     wait_for(&got, "the offline status", |g| {
-        g.iter().any(|(t, p, _)| t == "plcsh/single/press/status" && p == b"offline")
+        g.iter().any(|(t, p, _)| t == "plcsh/single/press/status" && json(p)["state"] == "offline")
     });
     plcsh::core::platform::interrupt_child(&child);
     let rest: Vec<String> = lines.map(|l| l.unwrap()).collect();
@@ -722,9 +739,12 @@ fn on_change_publishes_once_and_a_device_that_stops_answering_goes_offline() {
     assert_eq!(published.len(), 2, "--on-change: an unchanged value is published once: {published:?}");
     assert_eq!((published[0]["value"].as_i64(), published[1]["value"].as_i64()), (Some(0), Some(5)));
     assert!(published[1]["seq"].as_u64().unwrap() >= 3, "polls in between published nothing: {published:?}");
-    let status: Vec<&[u8]> =
-        g.iter().filter(|(t, _, _)| t == "plcsh/single/press/status").map(|(_, p, _)| p.as_slice()).collect();
-    assert_eq!(status, [&b"online"[..], b"offline"]);
+    let status: Vec<serde_json::Value> =
+        g.iter().filter(|(t, _, _)| t == "plcsh/single/press/status").map(|(_, p, _)| json(p)).collect();
+    assert_eq!(status.len(), 2, "{status:?}");
+    assert_eq!(status[0], serde_json::json!({"state": "online"}));
+    assert_eq!(status[1]["state"], "offline", "{status:?}");
+    assert!(["unreachable", "no reply"].contains(&status[1]["reason"].as_str().unwrap()), "{status:?}");
 }
 
 #[test]
@@ -1025,7 +1045,10 @@ fn three_shards_publish_the_whole_fleet_once_and_a_killed_shard_shows_its_will()
     let all: std::collections::BTreeSet<String> = (1..=12).map(|i| format!("line-{i}")).collect();
     assert_eq!(devices(&g), all);
     for dev in &all {
-        let onlines = g.iter().filter(|(t, p, _)| *t == format!("plcsh/line/{dev}/status") && p == b"online").count();
+        let onlines = g
+            .iter()
+            .filter(|(t, p, _)| *t == format!("plcsh/line/{dev}/status") && json(p)["state"] == "online")
+            .count();
         assert_eq!(onlines, 1, "{dev} is polled by one shard");
         let mut seqs: Vec<u64> = g
             .iter()
@@ -1039,4 +1062,220 @@ fn three_shards_publish_the_whole_fleet_once_and_a_killed_shard_shows_its_will()
     let held: u64 = summaries.iter().map(|s| s["devices"].as_u64().unwrap()).sum::<u64>();
     assert!(held < 12 && held > 0, "the two left hold their parts only: {summaries:?}");
     assert!(summaries.iter().all(|s| s["shard"].is_string() && s["ok"] == true), "{summaries:?}");
+}
+
+/// Checks every value message of `got` against its topic and the device's known values:
+/// `plcsh/GROUP/DEV/OP` carries `"device":"DEV","operand":"OP"` and the value `want(DEV, OP)`;
+/// a status topic carries a status. Returns the number of value messages checked.
+fn check_attribution(got: &[(String, Vec<u8>, bool)], want: impl Fn(&str, &str) -> i64) -> usize {
+    let mut values = 0;
+    for (topic, payload, _) in got {
+        let parts: Vec<&str> = topic.split('/').collect();
+        if parts.len() != 4 || parts[2] == "_publisher" || parts[3] == "reply" {
+            continue;
+        }
+        let (dev, leaf) = (parts[2], parts[3]);
+        let v = json(payload);
+        if leaf == "status" {
+            assert!(v["state"] == "online" || v["state"] == "offline", "{topic}: {v}");
+            continue;
+        }
+        values += 1;
+        assert_eq!((v["device"].as_str(), v["operand"].as_str()), (Some(dev), Some(leaf)), "{topic}: {v}");
+        assert_eq!(v["value"].as_i64(), Some(want(dev, leaf)), "{topic}: {v}");
+    }
+    values
+}
+
+#[test]
+fn a_range_published_under_overload_is_never_attributed_to_another_device() {
+    if !mosquitto_present() {
+        return;
+    }
+    let d = dir("attribution");
+    let port = free_port();
+    let _broker = Broker::start(&d, port);
+    let got = subscribe(port, "attribution-watch");
+    let (a, b) = (serve(&["--tcp", "0"]), serve(&["--tcp", "0"]));
+    let url = |s: &Served| format!("tcp://{}", s.ready["tcp"].as_str().unwrap());
+    // Every register of each device holds a value naming the device and the register.
+    let want = |dev: &str, op: &str| -> i64 {
+        let n: i64 = op.trim_start_matches("VW").parse().unwrap();
+        if dev == "a" {
+            1000 + n
+        } else {
+            2000 + n
+        }
+    };
+    for (s, dev) in [(&a, "a"), (&b, "b")] {
+        let sets: Vec<String> = (0..=6).step_by(2).map(|n| format!("VW{n}={}", want(dev, &format!("VW{n}")))).collect();
+        let o = run(&["-d", &url(s), "-c", &format!("set {}", sets.join(", "))], "");
+        assert!(o.status.success(), "{}", both(&o));
+    }
+    let cfg = d.join("devices.toml");
+    std::fs::write(
+        &cfg,
+        format!(
+            "[devices.a]\nurl = \"{}\"\n[devices.b]\nurl = \"{}\"\n[fleets.pair]\ndevices = [\"a\", \"b\"]\n",
+            url(&a),
+            url(&b)
+        ),
+    )
+    .unwrap();
+    let o = run(
+        &[
+            "--config",
+            cfg.to_str().unwrap(),
+            "--json",
+            "publish",
+            "-f",
+            "pair",
+            "--broker",
+            &format!("mqtt://127.0.0.1:{port}"),
+            "--buffer",
+            "4",
+            "--every",
+            "5ms",
+            "--count",
+            "400",
+            "VW0..VW6",
+        ],
+        "",
+    );
+    let summary = json_lines(&o).pop().unwrap();
+    let published = summary["published"].as_u64().unwrap() as usize;
+    assert!(published > 100, "{summary}");
+    wait_for(&got, "every published message", |g| {
+        g.iter().filter(|(t, _, _)| t.starts_with("plcsh/pair/")).count() >= published
+    });
+    let checked = check_attribution(&got.lock().unwrap(), want);
+    assert!(checked > 50, "{checked} values checked: {summary}");
+}
+
+/// Reads `lines` (JSON events) until one satisfies `want`; returns it.
+fn until_line(
+    lines: &mut impl Iterator<Item = std::io::Result<String>>,
+    what: &str,
+    want: impl Fn(&serde_json::Value) -> bool,
+) -> serde_json::Value {
+    loop {
+        let l = lines.next().unwrap_or_else(|| panic!("publish ended before {what}")).unwrap();
+        let v: serde_json::Value = serde_json::from_str(&l).unwrap();
+        if want(&v) {
+            return v;
+        }
+    }
+}
+
+#[test]
+fn a_member_off_at_the_start_is_published_once_it_answers_and_reasons_are_told_apart() {
+    if !mosquitto_present() {
+        return;
+    }
+    let d = dir("comeback");
+    let port = free_port();
+    let _broker = Broker::start(&d, port);
+    let got = subscribe(port, "comeback-watch");
+    let late = free_port();
+    let ctl = d.join("k2.ctl");
+    let other = serve(&["--tcp", "0", "--k2-control", ctl.to_str().unwrap()]);
+    let cfg = d.join("devices.toml");
+    std::fs::write(
+        &cfg,
+        format!(
+            "[devices.late]\nurl = \"tcp://127.0.0.1:{late}?timeout=300ms&retries=0\"\n[devices.hung]\nurl = \"tcp://{}?timeout=300ms&retries=0\"\n[fleets.pair]\ndevices = [\"late\", \"hung\"]\n",
+            other.ready["tcp"].as_str().unwrap()
+        ),
+    )
+    .unwrap();
+    let mut child = plcsh()
+        .args(["--config", cfg.to_str().unwrap(), "--json", "publish", "-f", "pair"])
+        .args(["--broker", &format!("mqtt://127.0.0.1:{port}"), "--every", "50ms", "VW100"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let mut lines = std::io::BufReader::new(child.stdout.take().unwrap()).lines();
+    let off = until_line(&mut lines, "late offline", |v| v["event"] == "device" && v["device"] == "late");
+    assert_eq!((off["state"].as_str(), off["reason"].as_str()), (Some("offline"), Some("unreachable")), "{off}");
+    let status = |g: &[(String, Vec<u8>, bool)], dev: &str| {
+        g.iter().rev().find(|(t, _, _)| *t == format!("plcsh/pair/{dev}/status")).map(|(_, p, _)| json(p))
+    };
+    wait_for(&got, "late's status with its reason", |g| {
+        status(g, "late") == Some(serde_json::json!({"state": "offline", "reason": "unreachable"}))
+    });
+    // Served a while later: polled again, published from its first good poll.
+    std::thread::sleep(Duration::from_millis(500));
+    let _served = serve(&["--tcp", &format!("127.0.0.1:{late}")]);
+    let back = until_line(&mut lines, "late back", |v| v["event"] == "device" && v["device"] == "late");
+    assert_eq!(back["state"], "online", "{back}");
+    wait_for(&got, "late's values", |g| g.iter().any(|(t, _, _)| t == "plcsh/pair/late/VW100"));
+    wait_for(&got, "late online", |g| status(g, "late") == Some(serde_json::json!({"state": "online"})));
+    // Exceptions and silence are told apart, on the status topic as in the events.
+    let control = |words: &str| {
+        let mut args = vec!["sim", "control", ctl.to_str().unwrap()];
+        args.extend(words.split_whitespace());
+        let o = run(&args, "");
+        assert!(o.status.success(), "{}", both(&o));
+    };
+    control("fault exception 2");
+    let ev = until_line(&mut lines, "an exception", |v| v["event"] == "device" && v["device"] == "hung");
+    assert_eq!((ev["state"].as_str(), ev["reason"].as_str()), (Some("offline"), Some("exception 2")), "{ev}");
+    wait_for(&got, "the exception's status", |g| status(g, "hung").is_some_and(|s| s["reason"] == "exception 2"));
+    control("fault clear");
+    until_line(&mut lines, "hung back", |v| v["event"] == "device" && v["device"] == "hung" && v["state"] == "online");
+    control("fault no-reply");
+    let ev = until_line(&mut lines, "silence", |v| v["event"] == "device" && v["device"] == "hung");
+    assert_eq!((ev["state"].as_str(), ev["reason"].as_str()), (Some("offline"), Some("no reply")), "{ev}");
+    wait_for(&got, "the silence's status", |g| status(g, "hung").is_some_and(|s| s["reason"] == "no reply"));
+    control("fault clear");
+    until_line(&mut lines, "hung back again", |v| {
+        v["event"] == "device" && v["device"] == "hung" && v["state"] == "online"
+    });
+    plcsh::core::platform::interrupt_child(&child);
+    let rest: Vec<String> = lines.map(|l| l.unwrap()).collect();
+    let _ = child.wait();
+    let summary: serde_json::Value = serde_json::from_str(rest.last().expect("a summary")).unwrap();
+    assert_eq!(summary["offline"], serde_json::json!([]), "{summary}");
+}
+
+#[test]
+fn one_device_down_at_the_start_is_waited_for_and_a_typo_is_a_usage_error() {
+    if !mosquitto_present() {
+        return;
+    }
+    let d = dir("single-late");
+    let port = free_port();
+    let _broker = Broker::start(&d, port);
+    let got = subscribe(port, "single-late-watch");
+    let broker = format!("mqtt://127.0.0.1:{port}");
+    // An operand the device does not have: a usage error before anything connects.
+    let k2 = serve(&["--tcp", "0"]);
+    let o = run(
+        &["-d", &format!("press=tcp://{}", k2.ready["tcp"].as_str().unwrap()), "publish", "--broker", &broker, "VX0"],
+        "",
+    );
+    assert_eq!(o.status.code(), Some(2), "{}", both(&o));
+    assert!(stderr(&o).contains("VX0"), "{}", both(&o));
+    drop(k2);
+    let late = free_port();
+    let mut child = plcsh()
+        .args(["-d", &format!("press=tcp://127.0.0.1:{late}?timeout=300ms&retries=0"), "--json", "publish"])
+        .args(["--broker", &broker, "--every", "50ms", "VW100"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let mut lines = std::io::BufReader::new(child.stdout.take().unwrap()).lines();
+    let off = until_line(&mut lines, "offline", |v| v["event"] == "device");
+    assert_eq!((off["state"].as_str(), off["reason"].as_str()), (Some("offline"), Some("unreachable")), "{off}");
+    let _served = serve(&["--tcp", &format!("127.0.0.1:{late}")]);
+    until_line(&mut lines, "online", |v| v["event"] == "device" && v["state"] == "online");
+    wait_for(&got, "its values", |g| g.iter().any(|(t, _, _)| t == "plcsh/single/press/VW100"));
+    plcsh::core::platform::interrupt_child(&child);
+    let rest: Vec<String> = lines.map(|l| l.unwrap()).collect();
+    let status = child.wait().unwrap();
+    let summary: serde_json::Value = serde_json::from_str(rest.last().expect("a summary")).unwrap();
+    assert_eq!(summary["offline"], serde_json::json!([]), "{summary}");
+    assert_eq!(status.code(), Some(0), "{rest:?}");
 }

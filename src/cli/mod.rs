@@ -254,6 +254,10 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
             if let Some(e) = s.open_or_later(&name, &url)? {
                 eprintln!("plcsh: {name}: {} — not connected; the next command tries again", e.message);
             }
+        } else if matches!(&cli.sub, Some(Sub::Publish(p)) if p.fleet.is_none()) {
+            // A publisher waits for its device like a fleet's member: offline (the reason on its
+            // status topic) and tried again with backoff until it answers (docs/fleets.md).
+            s.open_or_later(&name, &url)?;
         } else {
             s.open(&name, &url)?;
         }

@@ -203,17 +203,37 @@ fn members(
 ) -> Result<Vec<Member>> {
     let texts: Vec<&str> = operands.iter().map(String::as_str).collect();
     let Some(f) = fleet else {
-        for t in &texts {
-            shell.session.resolve(t)?;
+        // A device that could not be connected yet (its grammar comes with its model, known
+        // once it answers) is checked at its first answer; any other is checked now.
+        let waiting = shell
+            .session
+            .current_index()
+            .ok()
+            .and_then(|i| shell.session.entries().get(i))
+            .is_some_and(|e| crate::pending::is_not_connected(e.device.info()));
+        if !waiting {
+            for t in &texts {
+                if let Err(e) = shell.session.resolve(t) {
+                    let mut err = Error::usage(format!("`{t}` is not an operand of this device: {}", e.message)).hint(
+                        "nothing was published; fix the operand (plcsh -c 'get OPERAND' shows what the device answers)",
+                    );
+                    if let Some(h) = e.hint.clone() {
+                        err = err.hint(h);
+                    }
+                    return Err(err);
+                }
+            }
         }
         let name = shell.current_device().unwrap_or_else(|_| "plc".into());
         let mut stand_in = crate::session::Session::new(shell.session.clock.clone());
         stand_in.interrupt = shell.session.interrupt.clone();
         let session = std::mem::replace(&mut shell.session, stand_in);
-        return Ok(vec![Member { name, session: Ok(session) }]);
+        return Ok(vec![Member { name, session: Ok(session), reopen: None }]);
     };
     let base = crate::fleet::run::Base::of(&shell.session, Style::default());
     let stop = shell.session.interrupt.clone();
+    // One copy of the fleet and the profiles for every member's reopening.
+    let shared = Arc::new((base.clone(), f.clone()));
     let mut list = Vec::new();
     // (operand, devices that do not have it, the first error)
     let mut wrong: Vec<(String, Vec<String>, Error)> = Vec::new();
@@ -229,7 +249,11 @@ fn members(
                 }
             }
         }
-        list.push(Member { name: m.name.clone(), session });
+        // A member that cannot be opened now is tried again by its poller (with backoff).
+        let (shared, member, stop) = (shared.clone(), m.clone(), stop.clone());
+        let reopen: crate::publish::poller::Reopen =
+            Box::new(move || shared.0.open_session(&shared.1, &member, stop.clone()));
+        list.push(Member { name: m.name.clone(), session, reopen: Some(reopen) });
     }
     if let Some((op, devices, e)) = wrong.into_iter().next() {
         let on = if devices.len() == list.len() {
@@ -393,8 +417,9 @@ fn start(cli: &super::Cli, shell: &mut Shell, args: &PublishArgs, style: Style, 
                 event(
                     out,
                     style,
-                    json!({"ok": true, "cmd": "publish", "event": "device", "device": d, "state": "offline", "error": e}),
-                    format!("{d} offline: {e}"),
+                    json!({"ok": true, "cmd": "publish", "event": "device", "device": d, "state": "offline",
+                        "reason": crate::publish::poller::reason(&e), "error": e}),
+                    format!("{d} offline ({}): {e}", crate::publish::poller::reason(&e)),
                 );
             }
             Ok(Seen::Online(d)) => {

@@ -255,6 +255,17 @@ macro_rules! broker_loop {
                     }
                     let stopping = outbox.is_closed();
                     if connected {
+                        // The stats first: they say how the readings fare, and must not wait
+                        // behind them when plcsh falls behind (a full client channel keeps them
+                        // in their slot, first for the next room).
+                        if let Some(m) = outbox.take_stats() {
+                            match client.try_publish(m.topic.clone(), qos, m.retain, m.payload.clone()) {
+                                Ok(()) => unconfirmed.push_back(m),
+                                // Back in its slot without a wake-up: the client's room comes with
+                                // its next event (a wake-up here would spin and starve the client).
+                                Err(_) => outbox.restore_stats(m),
+                            }
+                        }
                         // Oldest first; a full client channel leaves the rest queued for the next turn.
                         // Taken in batches (one lock for many) into `pending`, which the
                         // client's channel empties as it has room: a full channel leaves them
@@ -274,14 +285,6 @@ macro_rules! broker_loop {
                             }
                             unconfirmed.push_back(m);
                             handed = true;
-                        }
-                        if let Some(m) = outbox.take_stats() {
-                            match client.try_publish(m.topic.clone(), qos, m.retain, m.payload.clone()) {
-                                Ok(()) => unconfirmed.push_back(m),
-                                // Back in its slot without a wake-up: the client's room comes with
-                                // its next event (a wake-up here would spin and starve the client).
-                                Err(_) => outbox.restore_stats(m),
-                            }
                         }
                         if stopping
                             && pending.is_empty()

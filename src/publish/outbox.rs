@@ -23,14 +23,18 @@ use std::collections::{HashMap, VecDeque};
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Mutex;
 
+/// A message's identity: its device's index and the topic's index among that device's.
+pub type Key = (u32, u32);
+
 /// One message for the broker.
 #[derive(Clone, Debug)]
 pub struct Msg {
     pub topic: String,
     pub payload: Vec<u8>,
     pub retain: bool,
-    /// The topic's merge key (`None`: never merged).
-    pub key: Option<u32>,
+    /// The message's identity for merging: (device, topic of that device), carried with the
+    /// value from the poll that read it (`None`: never merged).
+    pub key: Option<Key>,
     /// The device it is about ([`Outbox::PUBLISHER`] for the publisher's own).
     pub dev: u32,
 }
@@ -53,7 +57,7 @@ struct Inner {
     /// The position of `items[0]` in the sequence of every message ever queued.
     base: u64,
     /// Each key's newest queued message, by position.
-    latest: HashMap<u32, u64>,
+    latest: HashMap<Key, u64>,
     connected: bool,
     closed: bool,
     /// The publisher's latest stats message: one slot, newest wins, outside the bound.
@@ -122,8 +126,10 @@ impl Outbox {
         if g.items.len() >= self.bound {
             if g.connected {
                 if let Some(&pos) = m.key.and_then(|k| g.latest.get(&k)) {
-                    if pos >= g.base {
-                        let i = (pos - g.base) as usize;
+                    let i = pos.wrapping_sub(g.base) as usize;
+                    // Only into a queued message of the same identity (a position may have
+                    // been taken and another message put back there since).
+                    if pos >= g.base && g.items.get(i).is_some_and(|old| old.key == m.key) {
                         let old = &mut g.items[i];
                         self.of(old.dev).behind.fetch_add(1, Ordering::Relaxed);
                         old.payload = m.payload;
@@ -228,7 +234,7 @@ mod tests {
     use super::*;
 
     fn msg(topic: &str, key: u32, dev: u32, payload: &str) -> Msg {
-        Msg { topic: topic.into(), payload: payload.into(), retain: true, key: Some(key), dev }
+        Msg { topic: topic.into(), payload: payload.into(), retain: true, key: Some((dev, key)), dev }
     }
 
     fn topics(o: &Outbox) -> Vec<(String, String)> {

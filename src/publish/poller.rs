@@ -55,10 +55,58 @@ pub const SLACK: Duration = Duration::from_millis(1);
 /// The most worker threads one publisher grows to.
 pub const MAX_WORKERS: usize = 64;
 
-/// One device to poll: its name and its session (or why it could not be opened).
+/// Opens a member's session again (a device that could not be opened, tried again later).
+pub type Reopen = Box<dyn FnMut() -> std::result::Result<Session, Error> + Send>;
+
+/// One device to poll: its name, its session (or why it could not be opened) and how to
+/// open it again when it could not.
 pub struct Member {
     pub name: String,
     pub session: std::result::Result<Session, Error>,
+    pub reopen: Option<Reopen>,
+}
+
+/// The longest wait between two tries of a device that is offline (the backoff starts at
+/// one period and doubles up to this; a device is tried again for as long as the run lasts).
+pub const RETRY_MAX: Duration = Duration::from_secs(5);
+
+/// Why a device is offline, in a word a consumer can switch on (the `reason` of the
+/// device's status and of the `--json` device event): `unreachable` (no connection could be
+/// made), `no reply` (connected, but it did not answer in time), `exception N` (it answered
+/// with Modbus exception N), `refused` (it refused otherwise, or its profile cannot be used).
+pub fn reason(e: &Error) -> String {
+    use crate::core::ErrorKind as K;
+    let m = e.message.to_ascii_lowercase();
+    match e.kind {
+        K::Refused => match m.find("exception ") {
+            Some(at) => {
+                let digits: String = m[at + 10..].chars().take_while(char::is_ascii_digit).collect();
+                match digits.parse::<u32>() {
+                    Ok(n) => format!("exception {n}"),
+                    Err(_) => "refused".into(),
+                }
+            }
+            None => "refused".into(),
+        },
+        K::Timeout => "no reply".into(),
+        K::Link | K::Io
+            if m.contains("no reply") || m.contains("did not answer") || m.contains("instead of replying") =>
+        {
+            "no reply".into()
+        }
+        K::Link | K::Io | K::Interrupted => "unreachable".into(),
+        _ => "refused".into(),
+    }
+}
+
+/// The retained payload of a device's status topic: `{"state":"online"}` or
+/// `{"state":"offline","reason":"no reply"}` (docs/fleets.md, "Topics").
+pub fn status_payload(online: bool, why: Option<&str>) -> Vec<u8> {
+    match (online, why) {
+        (true, _) => br#"{"state":"online"}"#.to_vec(),
+        (false, Some(r)) => serde_json::json!({"state": "offline", "reason": r}).to_string().into_bytes(),
+        (false, None) => br#"{"state":"offline"}"#.to_vec(),
+    }
 }
 
 /// One operand's topic and the pieces of its payload, built once.
@@ -68,7 +116,8 @@ struct Leaf {
     mid: String,
     /// `,"device":"NAME","operand":"OP"}` — the payload's tail.
     tail: String,
-    key: u32,
+    /// The message's identity: (device, leaf + 1); a device's status is leaf 0.
+    key: (u32, u32),
 }
 
 /// What a device's poll reads, resolved once from the operand texts after its first good
@@ -83,7 +132,14 @@ struct Plan {
 
 struct Dev {
     name: String,
+    /// The device's index in the pool (the first half of its messages' keys).
+    index: u32,
     session: std::result::Result<Session, Error>,
+    reopen: Option<Reopen>,
+    /// The wait before the next try while offline (doubles up to [`RETRY_MAX`]).
+    backoff: Duration,
+    /// Why it went offline (while it is).
+    reason: Option<String>,
     /// The operands' leaves, in the order they were first read.
     leaves: Vec<Leaf>,
     /// A leaf's index by the operand's name as read.
@@ -101,7 +157,7 @@ struct Dev {
 
 impl Dev {
     /// The leaf of operand `name` (made on its first reading).
-    fn leaf(&mut self, group: &str, base: u32, name: &str, dtype: crate::core::DataType) -> usize {
+    fn leaf(&mut self, group: &str, name: &str, dtype: crate::core::DataType) -> usize {
         if let Some(&i) = self.leaf_of.get(name) {
             return i;
         }
@@ -115,7 +171,7 @@ impl Dev {
                 serde_json::Value::from(self.name.as_str()),
                 serde_json::Value::from(name)
             ),
-            key: base + 1 + i as u32,
+            key: (self.index, 1 + i as u32),
         });
         self.last.push(None);
         self.leaf_of.insert(name.to_string(), i);
@@ -124,7 +180,7 @@ impl Dev {
 
     /// Resolves the operand texts once into a [`Plan`] (`None`: they name more than one
     /// device, or do not resolve; the poll then goes through [`Session::get`] each time).
-    fn plan(&mut self, group: &str, base: u32, texts: &[String]) -> Option<()> {
+    fn plan(&mut self, group: &str, texts: &[String]) -> Option<()> {
         let session = self.session.as_ref().ok()?;
         let mut device = None;
         let mut named = Vec::new();
@@ -138,7 +194,7 @@ impl Dev {
             }
         }
         let device = device?;
-        let leaves = named.iter().map(|(op, name)| self.leaf(group, base, name, op.dtype)).collect();
+        let leaves = named.iter().map(|(op, name)| self.leaf(group, name, op.dtype)).collect();
         self.plan = Some(Plan { device, ops: named.into_iter().map(|(op, _)| op).collect(), leaves });
         Some(())
     }
@@ -168,11 +224,6 @@ pub struct Pool {
     threads: Mutex<Vec<std::thread::JoinHandle<()>>>,
 }
 
-/// The first key of device `i`'s topics (its status; its operands follow).
-fn key_base(i: usize, operands: usize) -> u32 {
-    (i * (operands + 1)) as u32
-}
-
 impl Pool {
     /// Starts polling `members` (their order is the fleet's); values go to `outbox`, device
     /// state changes to `seen`.
@@ -195,7 +246,11 @@ impl Pool {
                 Mutex::new(Dev {
                     status_topic: super::topic(&poll.group, &m.name, "status"),
                     name: m.name,
+                    index: i as u32,
                     session: m.session,
+                    reopen: m.reopen,
+                    backoff: every,
+                    reason: None,
                     leaves: Vec::new(),
                     leaf_of: HashMap::new(),
                     plan: None,
@@ -367,83 +422,121 @@ impl Pool {
         let _ = self.seen.lock().unwrap_or_else(|p| p.into_inner()).send(s);
     }
 
-    /// Marks a device offline: its retained status, and the front end told why.
-    fn mark_offline(&self, status_topic: &str, name: &str, key: u32, dev: u32, e: Error) {
+    /// Marks a device offline: its retained status with the reason, and the front end told
+    /// why — once per change of state (the reason is the one it went offline with).
+    fn mark_offline(&self, d: &mut Dev, e: Error) {
+        if d.online == Some(false) {
+            return;
+        }
+        let why = reason(&e);
         self.send(Msg {
-            topic: status_topic.to_string(),
-            payload: b"offline".to_vec(),
+            topic: d.status_topic.clone(),
+            payload: status_payload(false, Some(&why)),
             retain: true,
-            key: Some(key),
-            dev,
+            key: Some((d.index, 0)),
+            dev: d.index,
         });
-        self.tell(Seen::Offline(name.to_string(), e));
+        d.online = Some(false);
+        d.reason = Some(why);
+        self.tell(Seen::Offline(d.name.clone(), e));
     }
 
-    /// Polls device `i` once (writes first); returns its next due instant, `None` when done.
+    /// Polls device `i` once (writes first; a device not opened yet is opened first);
+    /// returns its next due instant, `None` when done.
     fn poll_one(&self, i: usize) -> Option<Instant> {
         let mut guard = self.devs[i].lock().unwrap_or_else(|p| p.into_inner());
         let d = &mut *guard;
         let p = &self.poll;
         let dev = i as u32;
-        let base = key_base(i, self.texts.len());
-        let session = match &mut d.session {
-            Ok(s) => s,
-            Err(e) => {
-                // Never opened: offline once, and off the schedule.
-                self.mark_offline(&d.status_topic, &d.name, base, dev, e.clone());
-                d.online = Some(false);
-                return None;
+        if d.session.is_err() {
+            match d.reopen.as_mut() {
+                // Never opened (or lost): tried again, on the backoff below.
+                Some(open) => d.session = open(),
+                None => {
+                    // Nothing to open it with: offline once, and off the schedule.
+                    let e = d.session.as_ref().err().cloned().unwrap_or_else(|| Error::state("not open"));
+                    self.mark_offline(d, e);
+                    return None;
+                }
             }
-        };
+        }
         d.slot += 1;
         let seq = d.slot;
         // Writes from the broker (`--accept-writes`) first, so this poll shows them.
         let cmds = std::mem::take(&mut *self.commands[i].lock().unwrap_or_else(|p| p.into_inner()));
-        for payload in cmds {
-            let reply = super::writes::apply(session, &d.name, &payload);
-            self.send(Msg {
-                topic: super::topic(&p.group, &d.name, "reply"),
-                payload: reply.to_string().into_bytes(),
-                retain: false,
-                key: None,
-                dev,
-            });
-        }
-        // The resolved plan when there is one (one read, no parsing); the general reader
-        // the first time and whenever the texts do not make a plan.
-        let read: crate::core::Result<Vec<(usize, Value)>> = match &d.plan {
-            Some(plan) => session
-                .ready(plan.device)
-                .and_then(|()| session.read_values(plan.device, &plan.ops))
-                .map(|values| plan.leaves.iter().copied().zip(values).collect()),
-            None => {
-                let texts: Vec<&str> = self.texts.iter().map(String::as_str).collect();
-                session.get(&texts).map(|readings| {
-                    readings.into_iter().map(|(_, r)| (d.leaf(&p.group, base, &r.operand, r.dtype), r.value)).collect()
-                })
+        let read: crate::core::Result<Vec<(usize, Value)>> = match &mut d.session {
+            Err(e) => {
+                for payload in cmds {
+                    let reply = super::writes::offline(&d.name, e, &payload);
+                    self.send(Msg {
+                        topic: super::topic(&p.group, &d.name, "reply"),
+                        payload: reply.to_string().into_bytes(),
+                        retain: false,
+                        key: None,
+                        dev,
+                    });
+                }
+                Err(e.clone())
+            }
+            Ok(session) => {
+                for payload in cmds {
+                    let reply = super::writes::apply(session, &d.name, &payload);
+                    self.send(Msg {
+                        topic: super::topic(&p.group, &d.name, "reply"),
+                        payload: reply.to_string().into_bytes(),
+                        retain: false,
+                        key: None,
+                        dev,
+                    });
+                }
+                // The resolved plan when there is one (one read, no parsing); the general
+                // reader the first time and whenever the texts do not make a plan.
+                match &d.plan {
+                    Some(plan) => session
+                        .ready(plan.device)
+                        .and_then(|()| session.read_values(plan.device, &plan.ops))
+                        .map(|values| plan.leaves.iter().copied().zip(values).collect()),
+                    None => {
+                        let texts: Vec<&str> = self.texts.iter().map(String::as_str).collect();
+                        match session.get(&texts) {
+                            Ok(readings) => {
+                                let named: Vec<(String, crate::core::DataType, Value)> =
+                                    readings.into_iter().map(|(_, r)| (r.operand, r.dtype, r.value)).collect();
+                                Ok(named
+                                    .into_iter()
+                                    .map(|(name, dtype, value)| (d.leaf(&p.group, &name, dtype), value))
+                                    .collect())
+                            }
+                            Err(e) => Err(e),
+                        }
+                    }
+                }
             }
         };
+        let mut wait = None;
         match read {
             Ok(values) => {
                 let ts = now_ms();
                 if d.plan.is_none() {
-                    d.plan(&p.group, base, &self.texts);
+                    d.plan(&p.group, &self.texts);
                 }
+                d.backoff = p.every;
                 let mut batch = Vec::with_capacity(values.len() + 1);
                 if d.online != Some(true) {
                     // Back (or first): every value is published fresh.
                     d.last.iter_mut().for_each(|l| *l = None);
                     batch.push(Msg {
                         topic: d.status_topic.clone(),
-                        payload: b"online".to_vec(),
+                        payload: status_payload(true, None),
                         retain: true,
-                        key: Some(base),
+                        key: Some((d.index, 0)),
                         dev,
                     });
                     if d.online.is_some() {
                         self.tell(Seen::Online(d.name.clone()));
                     }
                     d.online = Some(true);
+                    d.reason = None;
                 }
                 for (l, value) in values {
                     if let Some(db) = p.deadband {
@@ -471,25 +564,34 @@ impl Pool {
             Err(e) if e.kind == crate::core::ErrorKind::Interrupted => {}
             Err(e) => {
                 d.plan = None;
-                if d.online != Some(false) {
-                    self.mark_offline(&d.status_topic, &d.name, base, dev, e);
-                    d.online = Some(false);
-                }
+                self.mark_offline(d, e);
+                // Tried again after the backoff (one period, doubling up to RETRY_MAX).
+                wait = Some(d.backoff);
+                d.backoff = (d.backoff * 2).min(RETRY_MAX.max(p.every));
             }
         }
         if p.count.is_some_and(|c| d.slot >= c) {
             return None;
         }
         // The next slot; slots already a whole period past are skipped (the next poll reads
-        // the newest values) and counted.
+        // the newest values) and counted. An offline device's next try is the first slot
+        // after its backoff (those slots are not counted as skipped: nothing could be read).
         let every = p.every;
         let due = |slot: u64| self.start + d.phase + every.saturating_mul(slot.min(u32::MAX as u64) as u32);
         let now = Instant::now();
         let mut next = due(d.slot);
-        if next + every <= now {
+        let clamp = |behind: u64, slot: u64| p.count.map_or(behind, |c| behind.min(c.saturating_sub(slot + 1)));
+        if let Some(wait) = wait {
+            let at = now + wait;
+            if next < at {
+                let behind = clamp((at - next).as_nanos().div_ceil(every.as_nanos().max(1)) as u64, d.slot);
+                d.slot += behind;
+                next = due(d.slot);
+            }
+        } else if next + every <= now {
             let behind = ((now - next).as_nanos() / every.as_nanos().max(1)) as u64;
             // With --count the last slot is always polled (the run ends on a fresh reading).
-            let behind = p.count.map_or(behind, |c| behind.min(c.saturating_sub(d.slot + 1)));
+            let behind = clamp(behind, d.slot);
             d.slot += behind;
             self.outbox.of(dev).skipped.fetch_add(behind, Ordering::Relaxed);
             next = due(d.slot);
@@ -507,7 +609,7 @@ mod tests {
             .map(|i| {
                 let mut s = Session::new(crate::core::Clock::following());
                 s.open(&format!("d{i}"), "sim:K205-16DT").unwrap();
-                Member { name: format!("d{i}"), session: Ok(s) }
+                Member { name: format!("d{i}"), session: Ok(s), reopen: None }
             })
             .collect()
     }
@@ -560,7 +662,7 @@ mod tests {
             assert_eq!(s, [1, 2, 3, 4, 5], "d{d}");
             let status: Vec<&Msg> = all.iter().filter(|m| m.topic == format!("plcsh/g/d{d}/status")).collect();
             assert_eq!(status.len(), 1);
-            assert_eq!(status[0].payload, b"online");
+            assert_eq!(status[0].payload, br#"{"state":"online"}"#);
         }
         let first = all.iter().find(|m| m.topic == "plcsh/g/d3/VW2").unwrap();
         let j: serde_json::Value = serde_json::from_slice(&first.payload).unwrap();

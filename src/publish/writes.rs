@@ -52,25 +52,30 @@ pub fn apply(session: &mut Session, device: &str, payload: &[u8]) -> Json {
         Ok(c) => c,
         Err(m) => return json!({"ok": false, "device": device, "error": {"kind": "syntax", "message": m}}),
     };
+    // The same error object as the same write through `set` (`plcsh -c 'set …' --json`).
     let refuse = |e: Error| {
         json!({"ok": false, "device": device, "operand": cmd.operand, "value": cmd.value, "id": cmd.id,
-            "error": {"kind": e.kind.name(), "message": e.message.clone()}})
+            "error": serde_json::to_value(&e).unwrap_or_else(|_| json!({"kind": e.kind.name(), "message": e.message}))})
     };
+    // `--read-only` and a read_only profile: refused by the device's guard, as `set` is. A
+    // device without an allow list: refused here (`set` would write, the broker may not).
     let rules = session.entries().iter().find(|e| e.name == device).and_then(|e| e.guard.clone());
-    let refusal = if session.read_only() {
-        Some("the session is read-only (--read-only)".to_string())
-    } else {
-        match &rules {
+    let guarded = session.read_only() || rules.as_ref().is_some_and(|g| g.read_only());
+    if !guarded {
+        let refusal = match &rules {
             None => Some(format!("`{device}` has no allow list: writes from the broker need one in its profile")),
-            Some(g) if g.read_only() => Some(format!("`{device}`'s profile is read_only")),
             Some(g) if !g.has_allow() => {
                 Some(format!("`{device}`'s profile has no allow list: writes from the broker need one"))
             }
             Some(_) => None,
+        };
+        if let Some(m) = refusal {
+            return refuse(
+                Error::new(ErrorKind::Refused, format!("write refused: {m}"))
+                    .operand(cmd.operand.clone())
+                    .device(device.to_string()),
+            );
         }
-    };
-    if let Some(m) = refusal {
-        return refuse(Error::new(ErrorKind::Usage, format!("write refused: {m}")));
     }
     let item = SetItem { operand: cmd.operand.clone(), value: cmd.value.clone(), column: 0, value_column: 0 };
     match session.set(&[item]) {
@@ -81,6 +86,16 @@ pub fn apply(session: &mut Session, device: &str, payload: &[u8]) -> Json {
         }
         Err(e) => refuse(e),
     }
+}
+
+/// The reply to a write for a device that is offline (not opened yet): the device's error.
+pub fn offline(device: &str, e: &Error, payload: &[u8]) -> Json {
+    let (operand, value, id) = match parse(payload) {
+        Ok(c) => (Json::from(c.operand), Json::from(c.value), c.id),
+        Err(m) => return json!({"ok": false, "device": device, "error": {"kind": "syntax", "message": m}}),
+    };
+    json!({"ok": false, "device": device, "operand": operand, "value": value, "id": id,
+        "error": serde_json::to_value(e).unwrap_or_else(|_| json!({"kind": e.kind.name(), "message": e.message}))})
 }
 
 /// The reply to a write for a device that is no member of the fleet (`plcsh/GROUP/pressX/set`):
