@@ -25,6 +25,8 @@
 pub mod broker;
 pub mod outbox;
 pub mod poller;
+#[cfg(test)]
+mod property;
 pub mod writes;
 
 use crate::core::{Error, Result, Value};

@@ -69,6 +69,9 @@ pub struct Outbox {
     inner: Mutex<Inner>,
     bound: usize,
     pub counters: Vec<Counters>,
+    /// Messages ever queued (put back ones aside): each is delivered, or counted in one of
+    /// the counters, or still queued.
+    pub accepted: AtomicU64,
     /// Wakes the broker thread when the queue stops being empty or is closed.
     pub wake: tokio::sync::Notify,
 }
@@ -90,6 +93,7 @@ impl Outbox {
             }),
             bound: bound.max(1),
             counters: (0..=devices).map(|_| Counters::default()).collect(),
+            accepted: AtomicU64::new(0),
             wake: tokio::sync::Notify::new(),
         }
     }
@@ -123,6 +127,7 @@ impl Outbox {
     }
 
     fn push_locked(&self, g: &mut Inner, m: Msg) {
+        self.accepted.fetch_add(1, Ordering::Relaxed);
         if g.items.len() >= self.bound {
             if g.connected {
                 if let Some(&pos) = m.key.and_then(|k| g.latest.get(&k)) {
