@@ -6,11 +6,15 @@
 # the rate the subscriber saw per device, CPU of the poller (% of one core), its peak RSS,
 # poll->subscriber latency p50/p99, what went missing (by `seq`, plus plcsh's own counters), and
 # the poller's CPU per published value (its CPU seconds over the window / the values the
-# subscriber received in it, in µs).
+# subscriber received in it, in µs). The subscriber checks every value message's topic against
+# its payload (`misattributed`: a value published under another device's or operand's topic).
 #
 #   bench/fleet.sh [PLCSH] [CASE…]      CASE: DEVICES:HZ (default: 500:10 1000:10 5000:1)
 #   SECS=15 WARM=4 REGS=3 PEER=1 bench/fleet.sh target/release/plcsh 1000:10
 #   PROFILE=1 …: also `perf record -g` plcsh over the window (report in /tmp/plcsh-fleet-N.perf)
+#
+#   PROPERTY=100000 bench/fleet.sh …: first the publisher's property test (src/publish/property.rs,
+#   1 000 generated runs in CI) at plant size: that many generated runs, release build
 #
 # Use a release build for figures. Machine load is printed before each case.
 set -u
@@ -29,6 +33,12 @@ pids=()
 cleanup() { for p in "${pids[@]}"; do kill "$p" 2>/dev/null; done; wait 2>/dev/null; rm -rf "$work"; }
 trap cleanup EXIT
 ulimit -n "$(ulimit -Hn)" 2>/dev/null
+
+if [ "${PROPERTY:-0}" != 0 ]; then
+    echo "# $(date -u +%FT%TZ) property test: $PROPERTY generated runs; load: $(cut -d' ' -f1-3 /proc/loadavg)" >&2
+    (cd "$here/.." && PLCSH_PUBLISH_CASES=$PROPERTY cargo test --release --lib publish::property -- --nocapture 2>&1 |
+        grep -E "cases|test result|panicked") || exit 1
+fi
 
 free_port() { $py -c 'import socket; s=socket.socket(); s.bind(("127.0.0.1",0)); print(s.getsockname()[1])'; }
 ticks() { awk '{print $14+$15}' "/proc/$1/stat" 2>/dev/null || echo 0; }
@@ -74,7 +84,8 @@ try:
     own = json.loads(summary)
 except ValueError:
     own = {"raw": summary[:200]}
-keep = {k: own[k] for k in ("published", "skipped", "dropped_behind", "dropped_broker_away", "undelivered") if k in own}
+keep = {"misattributed": s.get("misattributed"), "checked": s.get("checked")}
+keep.update({k: own[k] for k in ("published", "skipped", "dropped_behind", "dropped_broker_away", "undelivered") if k in own})
 lat = s.get("latency_ms", {})
 values = s.get("messages") or 0
 per_value = "%.1f µs" % (float(cpu) / 100 * float(dt) / values * 1e6) if values else "—"

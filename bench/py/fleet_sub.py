@@ -6,8 +6,10 @@ parses afterwards, so its own cost per message is a few microseconds.
     python3 fleet_sub.py PORT GROUP START_EPOCH SECONDS DEVICES REGS RATE_HZ
 
 Prints one JSON line: messages in the window, rate per device, poll->broker->subscriber
-latency p50/p99/max (arrival minus the payload's `ts`), and readings missing by `seq`
-(a poll whose number never arrived for a device and operand: skipped, merged or dropped).
+latency p50/p99/max (arrival minus the payload's `ts`), readings missing by `seq`
+(a poll whose number never arrived for a device and operand: skipped, merged or dropped), and
+messages misattributed: a value whose payload names another device or operand than its
+topic (plcsh/GROUP/DEVICE/OPERAND), checked for every message received, in the window or not.
 """
 import json
 import socket
@@ -65,6 +67,8 @@ def main():
     n = 0
     seqs = {}
     devs = set()
+    misattributed = 0
+    checked = 0
     for t, c in chunks:
         buf += c
         i = 0
@@ -93,11 +97,15 @@ def main():
             off = 2 + tl + (2 if (h >> 1) & 3 else 0)
             if tp.endswith(b"/status") or tp.endswith(b"/stats") or b"/_publisher/" in tp:
                 continue
-            if not (start <= t < end):
-                continue
             try:
                 p = json.loads(pkt[off:])
             except ValueError:
+                continue
+            levels = tp.decode(errors="replace").split("/")
+            checked += 1
+            if len(levels) != 4 or p.get("device") != levels[2] or p.get("operand", "").replace("/", "_") != levels[3]:
+                misattributed += 1
+            if not (start <= t < end):
                 continue
             n += 1
             lat.append(t * 1000 - p["ts"])
@@ -116,6 +124,7 @@ def main():
         "offered": int(devices * regs * rate * secs),
         "latency_ms": {"p50": q(0.5), "p99": q(0.99), "max": round(lat[-1], 1) if lat else None},
         "missing_by_seq": missing,
+        "checked": checked, "misattributed": misattributed,
     }))
 
 
