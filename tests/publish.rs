@@ -65,7 +65,7 @@ impl Broker {
         std::fs::write(
             &conf,
             format!(
-                "{}listener {port} 127.0.0.1\nallow_anonymous true\npersistence true\npersistence_location {}/\nautosave_interval 0\n",
+                "{}listener {port} 127.0.0.1\nallow_anonymous true\nmax_queued_messages 0\npersistence true\npersistence_location {}/\nautosave_interval 0\n",
                 broker_user(),
                 dir.display()
             ),
@@ -1278,4 +1278,55 @@ fn one_device_down_at_the_start_is_waited_for_and_a_typo_is_a_usage_error() {
     let summary: serde_json::Value = serde_json::from_str(rest.last().expect("a summary")).unwrap();
     assert_eq!(summary["offline"], serde_json::json!([]), "{summary}");
     assert_eq!(status.code(), Some(0), "{rest:?}");
+}
+
+#[test]
+fn a_stop_under_overload_delivers_what_it_counts_and_counts_the_rest_as_dropped() {
+    if !mosquitto_present() {
+        return;
+    }
+    let d = dir("overload-stop");
+    let port = free_port();
+    let _broker = Broker::start(&d, port);
+    // No limit on what the broker queues for the subscriber: what it was handed, it passes on.
+    let got = subscribe(port, "overload-watch");
+    let cfg = sim_fleet(&d, 10);
+    for qos in ["0", "1"] {
+        got.lock().unwrap().clear();
+        let mut child = plcsh()
+            .args(["--config", cfg.to_str().unwrap(), "--json", "publish", "-f", "line"])
+            .args(["--broker", &format!("mqtt://127.0.0.1:{port}"), "--every", "1ms", "--buffer", "100000"])
+            .args(["--qos", qos, "VW0..VW18"])
+            .stdout(Stdio::piped())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap();
+        let mut lines = std::io::BufReader::new(child.stdout.take().unwrap()).lines();
+        until_event(&mut lines, "broker", "connected");
+        wait_for(&got, "readings flowing", |g| g.len() >= 2000);
+        plcsh::core::platform::interrupt_child(&child);
+        let stopped = Instant::now();
+        let rest: Vec<String> = lines.map(|l| l.unwrap()).collect();
+        let _ = child.wait();
+        let took = stopped.elapsed();
+        let summary: serde_json::Value = serde_json::from_str(rest.last().expect("a summary")).unwrap();
+        // Bounded: the stop's grace (5 s) and the close (1 s), and a loaded machine's slack.
+        assert!(took < Duration::from_secs(20), "QoS {qos}: the stop took {took:?}: {summary}");
+        let published = summary["published"].as_u64().unwrap() as usize;
+        let at_stop = summary["dropped_at_stop"].as_u64().unwrap();
+        assert_eq!(summary["undelivered"].as_u64(), Some(at_stop), "{summary}");
+        // Everything counted as published reached the broker: the subscriber gets it all.
+        wait_for(&got, "every message counted as published", |g| g.len() >= published);
+        let g = got.lock().unwrap();
+        let received = g.len();
+        assert!(received >= published, "QoS {qos}: {received} received, {published} counted: {summary}");
+        if at_stop == 0 {
+            // A clean end: the publisher's goodbye, after everything else.
+            assert!(
+                g.iter().any(|(t, p, _)| t == "plcsh/line/_publisher/status" && p == b"offline"),
+                "QoS {qos}: {summary}"
+            );
+        }
+        check_attribution(&g, |_, _| 0);
+    }
 }

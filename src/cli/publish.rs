@@ -493,7 +493,10 @@ fn start(cli: &super::Cli, shell: &mut Shell, args: &PublishArgs, style: Style, 
         }
     }
     let (skipped, behind, away) = outbox.totals();
-    let dropped = behind + away;
+    // What the stop could not hand to the broker (or, at QoS 0, not prove it arrived) is
+    // dropped at the stop, never published.
+    let at_stop = stats.undelivered;
+    let dropped = behind + away + at_stop;
     // Per device, those that missed anything: {"press7": {"skipped": 3, "dropped_behind": 0, …}}.
     let mut per_device = serde_json::Map::new();
     for (i, c) in outbox.counters.iter().enumerate() {
@@ -509,7 +512,7 @@ fn start(cli: &super::Cli, shell: &mut Shell, args: &PublishArgs, style: Style, 
     }
     let ok = dropped == 0 && stats.undelivered == 0 && offline.is_empty();
     let summary = json!({"ok": ok, "cmd": "publish", "group": group, "broker": broker_name, "published": stats.published,
-        "dropped": dropped, "dropped_broker_away": away, "dropped_behind": behind, "skipped": skipped,
+        "dropped": dropped, "dropped_broker_away": away, "dropped_behind": behind, "dropped_at_stop": at_stop, "skipped": skipped,
         "undelivered": stats.undelivered, "reconnects": stats.reconnects, "offline": offline,
         "devices": names.len(), "behind": per_device, "shard": shard.map(|s| format!("{}/{}", s.k, s.n))});
     if style.json {
@@ -533,7 +536,7 @@ fn start(cli: &super::Cli, shell: &mut Shell, args: &PublishArgs, style: Style, 
         };
         writeln!(
             out,
-            "published {} messages to {broker_name} (group {group}{}); {away} dropped while the broker was away, {behind} dropped and {skipped} polls skipped because plcsh fell behind, {} undelivered, {} reconnects{}{}",
+            "published {} messages to {broker_name} (group {group}{}); {away} dropped while the broker was away, {behind} dropped and {skipped} polls skipped because plcsh fell behind, {} dropped at the stop (not delivered), {} reconnects{}{}",
             stats.published,
             shard.map(|s| format!(", shard {}/{}", s.k, s.n)).unwrap_or_default(),
             stats.undelivered,

@@ -74,7 +74,8 @@ pub struct Config {
 pub struct Stats {
     pub published: u64,
     pub reconnects: u64,
-    /// Still queued at the end (the broker was away when plcsh stopped).
+    /// Not known to have reached the broker at the end (still queued, not acknowledged, or at
+    /// QoS 0 written without a proof of arrival): dropped at the stop.
     pub undelivered: u64,
     /// Set when the run ended on a failure no retry mends.
     pub fatal: Option<Fatal>,
@@ -86,7 +87,10 @@ enum Loop {
     /// Messages left for good: written (QoS 0) or acknowledged (QoS 1); their number is in
     /// [`Confirmations`] (one wake-up for however many came meanwhile).
     Confirmed,
+    /// plcsh's DISCONNECT was written; the connection closes next.
     Disconnected,
+    /// The broker closed the connection after the DISCONNECT.
+    Closed,
     Error(String),
     Command(String, Vec<u8>),
 }
@@ -115,6 +119,29 @@ impl Confirmations {
         self.count.swap(0, SeqCst)
     }
 }
+
+/// At QoS 0 a message "written" is in the kernel's send buffer, not yet known to be at the
+/// broker. A PUBACK of a later QoS 1 message (the publisher's own status and stats are sent at
+/// QoS 1) proves that the broker read everything before it, in order: `written` counts the
+/// messages handed to the socket, `proven` how many of them are known to have arrived.
+#[derive(Default)]
+struct Proofs {
+    written: std::sync::atomic::AtomicU64,
+    proven: std::sync::atomic::AtomicU64,
+}
+
+impl Proofs {
+    fn unproven(&self) -> u64 {
+        use std::sync::atomic::Ordering::SeqCst;
+        self.written.load(SeqCst).saturating_sub(self.proven.load(SeqCst))
+    }
+}
+
+/// How long a stop may take to hand what is queued to the broker and close the connection;
+/// what is not delivered by then is counted as dropped at the stop.
+pub const STOP_GRACE: Duration = Duration::from_secs(5);
+/// How long the broker has to close the connection after plcsh's DISCONNECT.
+const CLOSE_GRACE: Duration = Duration::from_secs(1);
 
 const BACKOFF_MIN: Duration = Duration::from_millis(100);
 const BACKOFF_MAX: Duration = Duration::from_secs(5);
@@ -192,6 +219,8 @@ macro_rules! broker_loop {
                 let qos1 = cfg.qos1;
                 let confirmations = Arc::new(Confirmations::default());
                 let counted = confirmations.clone();
+                let proofs = Arc::new(Proofs::default());
+                let proved = proofs.clone();
                 let confirmed = move |etx: &tokio::sync::mpsc::UnboundedSender<Loop>| {
                     if counted.add() {
                         etx.send(Loop::Confirmed).map_err(|_| ())
@@ -200,7 +229,11 @@ macro_rules! broker_loop {
                     }
                 };
                 tokio::spawn(async move {
+                    use std::sync::atomic::Ordering::SeqCst;
                     let mut backoff = BACKOFF_MIN;
+                    // QoS 0: each QoS 1 message written, and how many were written up to it.
+                    let mut proof_points: VecDeque<(u16, u64)> = VecDeque::new();
+                    let mut closing = false;
                     loop {
                         let sent = match eventloop.poll().await {
                             Ok(Event::Incoming(Packet::ConnAck(c))) => {
@@ -208,16 +241,43 @@ macro_rules! broker_loop {
                                 etx.send(Loop::ConnAck(c.session_present)).map_err(|_| ())
                             }
                             Ok(Event::Incoming(Packet::PubAck(_))) if qos1 => confirmed(&etx),
+                            Ok(Event::Incoming(Packet::PubAck(a))) => {
+                                while let Some((pkid, upto)) = proof_points.pop_front() {
+                                    if pkid == a.pkid {
+                                        proved.proven.fetch_max(upto, SeqCst);
+                                        break;
+                                    }
+                                }
+                                etx.send(Loop::Confirmed).map_err(|_| ())
+                            }
                             Ok(Event::Incoming(Packet::Publish(p))) => {
                                 let topic = String::from_utf8_lossy(AsRef::<[u8]>::as_ref(&p.topic)).into_owned();
                                 etx.send(Loop::Command(topic, p.payload.to_vec())).map_err(|_| ())
                             }
-                            Ok(Event::Outgoing(rumqttc::Outgoing::Publish(_))) if !qos1 => confirmed(&etx),
+                            Ok(Event::Outgoing(rumqttc::Outgoing::Publish(pkid))) if !qos1 => {
+                                let upto = proved.written.fetch_add(1, SeqCst) + 1;
+                                if pkid != 0 {
+                                    proof_points.push_back((pkid, upto));
+                                }
+                                confirmed(&etx)
+                            }
                             Ok(Event::Outgoing(rumqttc::Outgoing::Disconnect)) => {
+                                // Then read until the broker closes: dropping a socket with
+                                // unread bytes resets it, and a reset discards what the
+                                // kernel has not sent yet.
+                                closing = true;
                                 etx.send(Loop::Disconnected).map_err(|_| ())
                             }
                             Ok(_) => Ok(()),
+                            Err(_) if closing => {
+                                let _ = etx.send(Loop::Closed);
+                                break;
+                            }
                             Err(e) => {
+                                // What was written on the lost connection is not known either
+                                // way; it was counted when written (as before a reconnect).
+                                proved.proven.store(proved.written.load(SeqCst), SeqCst);
+                                proof_points.clear();
                                 let r = etx.send(Loop::Error(e.to_string())).map_err(|_| ());
                                 tokio::time::sleep(backoff).await;
                                 backoff = (backoff * 2).min(BACKOFF_MAX);
@@ -241,7 +301,18 @@ macro_rules! broker_loop {
                 let mut stats = Stats::default();
                 let (mut connected, mut was_connected, mut said_offline) = (false, false, false);
                 let mut away_told = false;
-                let mut deadline = None;
+                // The stop: by when it must be done, and by when the broker must have closed.
+                let (mut stop_by, mut close_by) = (None, None);
+                let mut disconnecting = false;
+                // The publisher's own messages go at QoS 1: their PUBACK proves that the broker
+                // read everything before them, at QoS 0 too ([`Proofs`]).
+                let qos_of = |m: &Msg| {
+                    if m.dev == Outbox::PUBLISHER && m.retain {
+                        QoS::AtLeastOnce
+                    } else {
+                        qos
+                    }
+                };
                 let first_contact = tokio::time::Instant::now() + FIRST_CONTACT;
                 let mut last_error = String::from("no answer");
                 let mut batch = Vec::with_capacity(BATCH);
@@ -254,12 +325,15 @@ macro_rules! broker_loop {
                         tokio::time::sleep(LINGER).await;
                     }
                     let stopping = outbox.is_closed();
-                    if connected {
+                    if stopping && stop_by.is_none() {
+                        stop_by = Some(tokio::time::Instant::now() + STOP_GRACE);
+                    }
+                    if connected && !disconnecting {
                         // The stats first: they say how the readings fare, and must not wait
                         // behind them when plcsh falls behind (a full client channel keeps them
                         // in their slot, first for the next room).
                         if let Some(m) = outbox.take_stats() {
-                            match client.try_publish(m.topic.clone(), qos, m.retain, m.payload.clone()) {
+                            match client.try_publish(m.topic.clone(), qos_of(&m), m.retain, m.payload.clone()) {
                                 Ok(()) => unconfirmed.push_back(m),
                                 // Back in its slot without a wake-up: the client's room comes with
                                 // its next event (a wake-up here would spin and starve the client).
@@ -279,33 +353,33 @@ macro_rules! broker_loop {
                                 }
                             }
                             let Some(m) = pending.pop_front() else { break };
-                            if client.try_publish(m.topic.clone(), qos, m.retain, m.payload.clone()).is_err() {
+                            if client.try_publish(m.topic.clone(), qos_of(&m), m.retain, m.payload.clone()).is_err() {
                                 pending.push_front(m);
                                 break;
                             }
                             unconfirmed.push_back(m);
                             handed = true;
                         }
-                        if stopping
-                            && pending.is_empty()
-                            && outbox.is_empty()
-                            && !outbox.has_stats()
-                            && unconfirmed.is_empty()
-                            && deadline.is_none()
-                        {
+                        if stopping && pending.is_empty() && outbox.is_empty() && !outbox.has_stats() {
                             if !said_offline {
                                 said_offline = true;
                                 outbox.push_front(status(b"offline"));
                                 continue;
                             }
-                            let _ = client.try_disconnect();
-                            deadline = Some(tokio::time::Instant::now() + Duration::from_secs(5));
+                            // Everything acknowledged (QoS 1) or proven to have arrived (QoS 0):
+                            // DISCONNECT, then the broker closes the connection.
+                            if unconfirmed.is_empty() && (qos1 || proofs.unproven() == 0) {
+                                let _ = client.try_disconnect();
+                                disconnecting = true;
+                                close_by = Some(tokio::time::Instant::now() + CLOSE_GRACE);
+                            }
                         }
-                    } else if stopping && deadline.is_none() {
-                        // Stopping with the broker away: give it a few seconds to return.
-                        deadline = Some(tokio::time::Instant::now() + Duration::from_secs(5));
                     }
                     let never = !was_connected && stats.fatal.is_none();
+                    let deadline = match (stop_by, close_by) {
+                        (Some(a), Some(b)) => Some(a.min(b)),
+                        (a, b) => a.or(b),
+                    };
                     let until = match deadline {
                         Some(d) if never => d.min(first_contact),
                         Some(d) => d,
@@ -321,8 +395,22 @@ macro_rules! broker_loop {
                                 let _ = notes.send(Note::Fatal(f.clone()));
                                 stats.fatal = Some(f);
                             }
-                            if deadline.is_some() || stats.fatal.is_some() {
+                            if stats.fatal.is_some() {
                                 break;
+                            }
+                            let now = tokio::time::Instant::now();
+                            if close_by.is_some_and(|c| now >= c) {
+                                break;
+                            }
+                            if stop_by.is_some_and(|c| now >= c) {
+                                if !connected || disconnecting {
+                                    break;
+                                }
+                                // Out of time: what is not delivered now is dropped at the
+                                // stop; the connection is still closed cleanly.
+                                let _ = client.try_disconnect();
+                                disconnecting = true;
+                                close_by = Some(now + CLOSE_GRACE);
                             }
                             continue;
                         }
@@ -352,7 +440,7 @@ macro_rules! broker_loop {
                                 // Straight to the client, ahead of the queue (a full queue
                                 // could push it out).
                                 let m = status(b"online");
-                                match client.try_publish(m.topic.clone(), qos, true, m.payload.clone()) {
+                                match client.try_publish(m.topic.clone(), QoS::AtLeastOnce, true, m.payload.clone()) {
                                     Ok(()) => unconfirmed.push_back(m),
                                     Err(_) => outbox.push_front(m),
                                 }
@@ -363,7 +451,8 @@ macro_rules! broker_loop {
                             let _ = notes.send(Note::Connected);
                         }
                         Some(Loop::Confirmed) => {}
-                        Some(Loop::Disconnected) => break,
+                        Some(Loop::Disconnected) => {}
+                        Some(Loop::Closed) => break,
                         Some(Loop::Command(topic, payload)) => {
                             let _ = notes.send(Note::Command(topic, payload));
                         }
@@ -391,7 +480,11 @@ macro_rules! broker_loop {
                         stats.published += 1;
                     }
                 }
-                stats.undelivered = (outbox.len() + pending.len() + unconfirmed.len()) as u64;
+                // At QoS 0, what was written without a proof of arrival is not counted as
+                // published: dropped at the stop.
+                let unproven = if qos1 { 0 } else { proofs.unproven() };
+                stats.published = stats.published.saturating_sub(unproven);
+                stats.undelivered = (outbox.len() + pending.len() + unconfirmed.len()) as u64 + unproven;
                 stats
             }
         }
