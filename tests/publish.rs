@@ -1304,6 +1304,8 @@ fn a_stop_under_overload_delivers_what_it_counts_and_counts_the_rest_as_dropped(
         let mut lines = std::io::BufReader::new(child.stdout.take().unwrap()).lines();
         until_event(&mut lines, "broker", "connected");
         wait_for(&got, "readings flowing", |g| g.len() >= 2000);
+        // The stats come on time (every 5 s) while plcsh is behind, not only at the end.
+        wait_for(&got, "the stats during the run", |g| g.iter().any(|(t, _, _)| t == "plcsh/line/_publisher/stats"));
         plcsh::core::platform::interrupt_child(&child);
         let stopped = Instant::now();
         let rest: Vec<String> = lines.map(|l| l.unwrap()).collect();
