@@ -3,8 +3,8 @@
 //! ([`crate::publish`] has the topic layout and payloads; docs/fleets.md the guide).
 //!
 //! Exit status: 0 when the run ended (its `--count` polls, or a stop by Ctrl-C or SIGTERM)
-//! with every reading delivered and every device answering; 1 when readings were dropped or
-//! left undelivered or a device was offline at the end; 2 for a usage error found before
+//! with every reading delivered and every device answering; 1 when readings were dropped (the
+//! stop's `dropped_at_stop` included) or a device was offline at the end; 2 for a usage error found before
 //! anything connects (no broker, a password on the command line, a bad option, an operand
 //! that one of the devices does not have); 3 when the broker refused the credentials; 4 when
 //! the broker's TLS certificate did not verify or no broker answered at the start.

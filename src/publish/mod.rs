@@ -8,9 +8,11 @@
 //! — `ts` is the source timestamp (ms since the Unix epoch, UTC: when the device's answer
 //! arrived), `seq` counts this device's polls, `unit` is added where the operand has one.
 //! Values are retained (a subscriber that connects later gets the last ones).
-//! `plcsh/<GROUP>/<DEVICE>/status` is `online`/`offline` (retained): a device that stops
-//! answering is marked offline and none of its values are published until it answers again
-//! (so nothing stale is published as fresh). `plcsh/<GROUP>/_publisher/status` is the
+//! `plcsh/<GROUP>/<DEVICE>/status` is `{"state":"online"}` or
+//! `{"state":"offline","reason":"no reply"}` (retained; [`poller::reason`]): a device that
+//! stops answering, or cannot be opened, is marked offline and none of its values are
+//! published until it answers again (so nothing stale is published as fresh); it is tried
+//! again with backoff for as long as the run lasts. `plcsh/<GROUP>/_publisher/status` is the
 //! publisher's own state, `offline` also as its last will. With `--accept-writes`,
 //! `plcsh/<GROUP>/<DEVICE>/set` takes writes and `…/reply` answers them ([`writes`]).
 //!

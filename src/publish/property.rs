@@ -71,7 +71,7 @@ fn expected(dev: u32, operand: &str) -> Option<serde_json::Value> {
     }
     let (byte, bit) = operand.strip_prefix('M')?.split_once('.')?;
     let i = byte.parse::<u32>().ok()? * 8 + bit.parse::<u32>().ok()?;
-    Some(serde_json::json!((dev + i) % 3 == 0))
+    Some(serde_json::json!((dev + i).is_multiple_of(3)))
 }
 
 /// Device `dev`'s session: a simulated K2 named `d{dev}`, its registers set, behind [`Flaky`].
