@@ -30,11 +30,16 @@ const NO_REPLY: u8 = 1;
 const EXCEPTION: u8 = 2;
 const DOWN: u8 = 3;
 
-/// A simulated K2 that fails while its mode says so.
+/// A simulated K2 that fails while its mode says so, and whose words read `POLL` ×
+/// [`POLL`] more than they hold (POLL counts its good reads): a value names its poll too.
 struct Flaky {
     inner: Box<dyn Device>,
     mode: Arc<AtomicU8>,
+    reads: i64,
 }
+
+/// A word's value is `expected + POLL × k` at the device's k-th good read.
+const POLL: i64 = 100_000;
 
 impl Flaky {
     fn check(&self) -> Result<()> {
@@ -56,7 +61,14 @@ impl Device for Flaky {
     }
     fn read(&mut self, ops: &[Operand]) -> Result<Vec<Value>> {
         self.check()?;
-        self.inner.read(ops)
+        self.reads += 1;
+        let k = self.reads;
+        Ok(self
+            .inner
+            .read(ops)?
+            .into_iter()
+            .map(|v| if let Value::Int(n) = v { Value::Int(n + POLL * k) } else { v })
+            .collect())
     }
     fn write(&mut self, items: &[(Operand, Value)]) -> Result<()> {
         self.check()?;
@@ -91,7 +103,7 @@ fn session(dev: u32, mode: Arc<AtomicU8>) -> Session {
     device.write(&items).unwrap();
     let mut s = Session::new(crate::core::Clock::following());
     let name = format!("d{dev}");
-    s.add(&name, "sim:K205-16DT", Box::new(Flaky { inner: device, mode }));
+    s.add(&name, "sim:K205-16DT", Box::new(Flaky { inner: device, mode, reads: 0 }));
     s.use_device(&name).unwrap();
     s
 }
@@ -121,8 +133,10 @@ fn operands(r: &mut Rng) -> Vec<String> {
     list
 }
 
-/// Checks one message; returns whether it was a value.
-fn check(m: &Msg, devices: u32, case: u64) -> bool {
+/// Checks one message; returns whether it was a value. `polls` keeps, per (device, seq), the
+/// read its words came from: every value of one poll must come from the same read, and a
+/// later poll from a later read.
+fn check(m: &Msg, devices: u32, case: u64, polls: &mut std::collections::HashMap<(u32, u64), i64>) -> bool {
     let text = String::from_utf8_lossy(&m.payload);
     let parts: Vec<&str> = m.topic.split('/').collect();
     assert_eq!(parts.len(), 4, "case {case}: {} {text}", m.topic);
@@ -143,7 +157,19 @@ fn check(m: &Msg, devices: u32, case: u64) -> bool {
     }
     assert_eq!(j["device"], parts[2], "case {case}: {} {text}", m.topic);
     assert_eq!(j["operand"], parts[3], "case {case}: {} {text}", m.topic);
-    assert_eq!(Some(&j["value"]), expected(dev, parts[3]).as_ref(), "case {case}: {} {text}", m.topic);
+    let want = expected(dev, parts[3]);
+    match (j["value"].as_i64(), want.as_ref().and_then(|w| w.as_i64())) {
+        (Some(got), Some(base)) => {
+            let k = got - base;
+            assert!(k > 0 && k % POLL == 0, "case {case}: {} {text}: not {base} + {POLL} × k", m.topic);
+            let seq = j["seq"].as_u64().unwrap();
+            let read = *polls.entry((dev, seq)).or_insert(k / POLL);
+            assert_eq!(read, k / POLL, "case {case}: one poll, one read: {} {text}", m.topic);
+            let earlier = polls.iter().filter(|((d, s), _)| *d == dev && *s < seq).map(|(_, r)| *r).max();
+            assert!(earlier.is_none_or(|e| e < read), "case {case}: a later poll, a later read: {} {text}", m.topic);
+        }
+        _ => assert_eq!(Some(&j["value"]), want.as_ref(), "case {case}: {} {text}", m.topic),
+    }
     true
 }
 
@@ -184,6 +210,7 @@ fn run_case(case: u64) -> u64 {
     let pool = Pool::start(members, poll, outbox.clone(), tx).unwrap();
     let (mut delivered, mut values) = (0u64, 0u64);
     let mut held = Vec::new();
+    let mut polls = std::collections::HashMap::new();
     let faulty = r.below(2) == 0;
     loop {
         let done = pool.finished();
@@ -200,7 +227,7 @@ fn run_case(case: u64) -> u64 {
                 outbox.set_connected(false);
             } else {
                 for m in held.drain(..) {
-                    values += u64::from(check(&m, devices, case));
+                    values += u64::from(check(&m, devices, case, &mut polls));
                     delivered += 1;
                 }
             }
