@@ -104,7 +104,7 @@ pub fn reason(e: &Error) -> String {
 pub fn status_payload(online: bool, why: Option<&str>) -> Vec<u8> {
     match (online, why) {
         (true, _) => br#"{"state":"online"}"#.to_vec(),
-        (false, Some(r)) => serde_json::json!({"state": "offline", "reason": r}).to_string().into_bytes(),
+        (false, Some(r)) => format!(r#"{{"state":"offline","reason":{}}}"#, serde_json::Value::from(r)).into_bytes(),
         (false, None) => br#"{"state":"offline"}"#.to_vec(),
     }
 }

@@ -262,3 +262,52 @@ fn every_published_message_is_true_over_generated_runs() {
     assert!(values > cases, "values were checked: {values} in {cases} cases");
     eprintln!("{cases} cases, {values} values checked in {:?}", started.elapsed());
 }
+
+#[test]
+fn a_device_that_cannot_be_opened_is_tried_with_backoff_and_published_once_it_opens() {
+    let tries = Arc::new(AtomicU64::new(0));
+    let opens_at = std::time::Instant::now() + Duration::from_millis(600);
+    let counted = tries.clone();
+    let reopen: Reopen = Box::new(move || {
+        counted.fetch_add(1, Ordering::Relaxed);
+        if std::time::Instant::now() < opens_at {
+            Err(Error::link("cannot connect to 127.0.0.1:502"))
+        } else {
+            Ok(session(0, Arc::new(AtomicU8::new(OK))))
+        }
+    });
+    let member = Member { name: "d0".into(), session: Err(Error::link("cannot connect")), reopen: Some(reopen) };
+    let outbox = Arc::new(Outbox::new(10_000, 1));
+    let poll = Poll {
+        group: "g".into(),
+        operands: vec!["VW0..VW2".into()],
+        every: Duration::from_millis(5),
+        deadband: None,
+        count: None,
+    };
+    let (tx, seen) = std::sync::mpsc::channel();
+    let pool = Pool::start(vec![member], poll, outbox.clone(), tx).unwrap();
+    let deadline = std::time::Instant::now() + Duration::from_secs(20);
+    let mut got = Vec::new();
+    while !got.iter().any(|m: &Msg| m.topic == "plcsh/g/d0/VW2") {
+        assert!(std::time::Instant::now() < deadline, "never published: {got:?}");
+        outbox.take(usize::MAX, &mut got);
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    pool.stop();
+    pool.join();
+    // Every 5 ms for 600 ms would be 120 tries; the backoff (5, 10, 20 … ms) makes it about 8.
+    let n = tries.load(Ordering::Relaxed);
+    assert!((3..=14).contains(&n), "{n} tries");
+    let status: Vec<String> = got
+        .iter()
+        .filter(|m| m.topic == "plcsh/g/d0/status")
+        .map(|m| String::from_utf8_lossy(&m.payload).into_owned())
+        .collect();
+    assert_eq!(status, [r#"{"state":"offline","reason":"unreachable"}"#, r#"{"state":"online"}"#], "once each");
+    let told: Vec<String> = seen.try_iter().map(|s| format!("{s:?}")).collect();
+    assert_eq!(told.len(), 2, "one report per change: {told:?}");
+    let mut polls = std::collections::HashMap::new();
+    let values = got.iter().filter(|m| check(m, 1, 0, &mut polls)).count();
+    assert!(values >= 2, "{got:?}");
+}
