@@ -42,7 +42,7 @@ pub(super) fn shadow(len: u32) -> Memory {
 }
 
 /// The link's V words, for the mailbox client.
-struct VWords<'a>(&'a mut K2Wire);
+pub(super) struct VWords<'a>(pub(super) &'a mut K2Wire);
 
 impl VWords<'_> {
     fn register(&self, vbyte: u32) -> Result<u16> {
