@@ -98,7 +98,7 @@ pub fn probe(args: &ProbeArgs, shell: &Shell, style: Style, out: &mut dyn Write)
     let mut tried = vec![];
     let hint = dev.link_hint();
     let mut result = probe::run(&mut dev, args.reads, hint);
-    let mut answered_url = url.clone();
+    let mut line = dev.serial_line();
     let silent =
         |p: &probe::Probe| p.areas.iter().all(|a| matches!(a.extent, probe::Extent::NoReply { last: None, .. }));
     if silent(&result) && args.scan_serial && dev.serial_line().is_some() {
@@ -112,24 +112,24 @@ pub fn probe(args: &ProbeArgs, shell: &Shell, style: Style, out: &mut dyn Write)
                     .and_then(|u| with_param(&u, "timeout", "300ms"));
                 let Ok(candidate) = candidate else { continue };
                 let Ok(mut d) = open(&candidate, &options) else { continue };
-                let line = d.serial_line().unwrap_or_default();
-                if tried.contains(&line) {
+                let settings = d.serial_line().unwrap_or_default();
+                if tried.contains(&settings) {
                     continue;
                 }
-                tried.push(line);
+                tried.push(settings);
                 let hint = d.link_hint();
                 if !matches!(
                     probe::Reader::read(&mut d, crate::k2::modbus_map::Table::HoldingRegisters, 100),
                     probe::Answer::Failed { .. }
                 ) {
                     result = probe::run(&mut d, args.reads, hint);
-                    answered_url = candidate;
+                    line = d.serial_line();
                     break 'scan;
                 }
             }
         }
     }
-    let serial = if silent(&result) { None } else { open(&answered_url, &options).ok().and_then(|d| d.serial_line()) };
+    let serial = if silent(&result) { None } else { line };
     let version = env!("CARGO_PKG_VERSION");
     if let Some(path) = &args.report {
         if let Err(e) = std::fs::write(path, probe::markdown(&result, &args.url, serial.as_deref(), version)) {

@@ -124,8 +124,7 @@ pub fn run(client: &mut AgentClient, regs: &mut dyn Registers, model: &'static M
     steps(client, regs, model, time, &mut r);
     // Steps that did not run because an earlier one failed.
     let done = r.steps.len();
-    for (i, (name, proves)) in PROVES.iter().enumerate().skip(done) {
-        let _ = i;
+    for (name, proves) in PROVES.iter().skip(done) {
         r.steps.push(Step {
             name,
             outcome: Outcome::Failed,

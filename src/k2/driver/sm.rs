@@ -59,7 +59,11 @@ impl VWords<'_> {
                     u8::from(c)
                 ),
             )
-            .hint("check that agent=VB… lies inside the V area of this model"),
+            .hint(match u8::from(c) {
+                2 => "check that agent=VB… lies inside the V area of this model",
+                4 => "the PLC reports a device failure: check its error LED and diagnostics, then try again",
+                _ => "check that this is the PLC's Modbus port and unit (plcsh probe URL says what it answers)",
+            }),
         }
     }
 }
