@@ -316,3 +316,26 @@ fn the_in_process_simulator_is_refused_with_how_to_serve_it() {
         assert!(both(&o).contains("sim serve"), "{}", both(&o));
     }
 }
+
+/// The check writes (the mailbox, one channel's SM bytes): `--read-only` and a profile that
+/// limits writes refuse it before anything is sent; the probe, which only reads, runs.
+#[test]
+fn a_read_only_session_or_profile_refuses_the_check_but_not_the_probe() {
+    let d = dir("read-only");
+    let plc = Plc::start(&d, "K205-16DT", true, &[]);
+    let rec = d.join("r.pcapng");
+    let o = run(&["--read-only", "--record", rec.to_str().unwrap(), "agent", "check", &plc.tcp("K205-16DT")], "");
+    assert_eq!(o.status.code(), Some(1), "{}", both(&o));
+    assert!(both(&o).contains("--read-only refuses every change"), "{}", both(&o));
+    assert!(sent(&rec).is_empty(), "nothing was sent");
+    let config = d.join("devices.toml");
+    std::fs::write(&config, format!("[devices.press]\nurl = \"{}\"\nread_only = true\n", plc.tcp("K205-16DT")))
+        .unwrap();
+    let o = run(&["--config", config.to_str().unwrap(), "agent", "check", "press"], "");
+    assert_eq!(o.status.code(), Some(1), "{}", both(&o));
+    assert!(both(&o).contains("profile `press`"), "{}", both(&o));
+    let o = run(&["--read-only", "--config", config.to_str().unwrap(), "probe", "press", "--reads", "3"], "");
+    assert_eq!(o.status.code(), Some(0), "{}", both(&o));
+    assert!(stdout(&o).contains("models that fit: K205-16DT"), "{}", both(&o));
+    let _ = std::fs::remove_dir_all(&d);
+}

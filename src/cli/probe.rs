@@ -38,12 +38,24 @@ pub struct CheckArgs {
     pub url: String,
 }
 
-/// The device URL `target` names: itself, or a profile's URL and options.
-fn resolve(shell: &Shell, target: &str) -> Result<(DeviceUrl, Vec<(String, String)>)> {
+/// The device URL `target` names: itself, or a profile's URL and options. `writes`: the
+/// command writes (`agent check`), so a read-only session (`--read-only`) or a profile that
+/// limits writes (`read_only`, `allow`) refuses it before anything is opened.
+fn resolve(shell: &Shell, target: &str, writes: bool) -> Result<(DeviceUrl, Vec<(String, String)>)> {
+    let refuse = |why: String| {
+        Error::new(crate::core::ErrorKind::Refused, format!("agent check writes the helper's mailbox and the SM bytes of one pulse channel, and {why}"))
+            .hint("run it without --read-only, with the PLC's URL, when the machine is safe to test (docs/reference/first-connection.md lists what it writes)")
+    };
+    if writes && shell.session.read_only() {
+        return Err(refuse("--read-only refuses every change".into()));
+    }
     let (text, options) = if target.contains(':') {
         (target.to_string(), Vec::new())
     } else {
         let p = shell.session.profiles.get(target).ok_or_else(|| shell.session.profiles.unknown(target))?;
+        if writes && (p.read_only || p.allow.is_some()) {
+            return Err(refuse(format!("profile `{target}` ({}) limits writes", p.origin)));
+        }
         (p.url.clone(), p.options.clone())
     };
     let url = DeviceUrl::parse(&text)?.without("control");
@@ -87,7 +99,7 @@ fn with_param(url: &DeviceUrl, key: &str, value: &str) -> Result<DeviceUrl> {
 }
 
 pub fn probe(args: &ProbeArgs, shell: &Shell, style: Style, out: &mut dyn Write) -> i32 {
-    let (url, options) = match resolve(shell, &args.url) {
+    let (url, options) = match resolve(shell, &args.url, false) {
         Ok(x) => x,
         Err(e) => return fail(out, style, "probe", &e),
     };
@@ -186,7 +198,7 @@ fn text(p: &probe::Probe, url: &str, serial: Option<&str>, tried: &[String]) -> 
 }
 
 pub fn check(args: &CheckArgs, shell: &Shell, style: Style, out: &mut dyn Write) -> i32 {
-    let (url, options) = match resolve(shell, &args.url) {
+    let (url, options) = match resolve(shell, &args.url, true) {
         Ok(x) => x,
         Err(e) => return fail(out, style, "agent check", &e),
     };
