@@ -405,15 +405,14 @@ fn refusal(
     let bit4 = status & 0x10 != 0;
     let idle_kept = (status ^ before[at(c.status)]) & 0x80 == 0;
     let still = cv_before == cv_after;
-    let helper = match pls.expect("the setup succeeded") {
-        Ok(_) => "the helper reported it done".to_string(),
-        Err(e) if e.kind == ErrorKind::Refused => format!("the helper reported: {}", e.message),
+    let (helper, reported_done) = match pls.expect("the setup succeeded") {
+        Ok(_) => ("the helper reported it done".to_string(), true),
+        Err(e) if e.kind == ErrorKind::Refused => (format!("the helper reported: {}", e.message), false),
         Err(e) => {
             r.steps.push(failed(I, &e, "run the check again"));
             return;
         }
     };
-    let reported_done = helper.contains("done");
     let ok = bit4 && idle_kept && still && !reported_done;
     let seen = format!(
         "{name}: status SMB{} 16#{:02X} → 16#{status:02X} (bit 4 {}), position SMD{} {}; {helper}; {} written back",
@@ -535,6 +534,43 @@ mod tests {
         assert_eq!(r.steps[0].outcome, Outcome::Failed);
         assert!(r.steps[0].todo.as_deref().unwrap().contains("plcsh agent il"), "{}", text(&r));
         assert!(r.steps[1..].iter().all(|s| s.seen.starts_with("not run")), "{}", text(&r));
+    }
+
+    /// A helper that takes PLS's CR as success on a K2 that leaves the CR as it was (manual
+    /// §3.4.2, IL): its acknowledgement of a refused PLS says "done". The check fails, naming it.
+    #[test]
+    fn a_helper_that_reports_a_refused_pls_as_done_fails_the_check() {
+        struct DoneForPls(SimRegs);
+        impl Registers for DoneForPls {
+            fn read_v(&mut self, vbyte: u32, count: u16) -> Result<Vec<u16>> {
+                let mut w = self.0.read_v(vbyte, count)?;
+                let pls = self.0.sim.mem.read(&K2Operand::word(Area::V, p::DEFAULT_BASE + p::OFF_REQUEST + 4)) == 3;
+                let result = ((p::OFF_ACKS + 4) / 2) as usize;
+                if vbyte == p::DEFAULT_BASE && pls && w.len() > result && w[result] == 6 {
+                    w[result] = 0;
+                }
+                Ok(w)
+            }
+            fn write_v(&mut self, vbyte: u32, words: &[u16]) -> Result<()> {
+                self.0.write_v(vbyte, words)
+            }
+        }
+        let clock = Clock::stepped();
+        let mut s = sim::open("K205-16DT", clock.clone()).unwrap();
+        s.enable_agent(p::DEFAULT_BASE).unwrap();
+        clock.step(SCAN_TIME * 3);
+        s.advance();
+        let mut regs = DoneForPls(SimRegs { sim: s, clock: clock.clone() });
+        let r = run(
+            &mut AgentClient::new(p::DEFAULT_BASE),
+            &mut regs,
+            catalog::find("K205-16DT").unwrap(),
+            &mut Stepped(clock),
+        );
+        assert_eq!(r.steps[5].outcome, Outcome::Failed, "{}", text(&r));
+        assert!(r.steps[5].seen.contains("bit 4 set") && r.steps[5].seen.contains("done"), "{}", text(&r));
+        assert!(r.steps[5].todo.as_deref().unwrap().contains("CR"), "{}", text(&r));
+        assert_eq!(regs.0.sim.mem.sm_byte(67), 0, "the bytes are written back all the same");
     }
 
     #[test]
