@@ -49,15 +49,22 @@ impl Plc {
 
     /// The simulator's whole state, without what moves by itself: the virtual time, SMB0 (the
     /// clock bits SM0.5 and SM0.4 and the scan toggle SM0.6), the helper's mailbox (its
-    /// heartbeat counts scans) and the helper program's own execution state.
+    /// heartbeat counts scans), and the CPU's scan count and schedule and the helper's own
+    /// execution state. The CPU's mode, errors and faults stay in: a command that stopped the
+    /// CPU or raised an error would show.
     fn state(&self, faults: bool) -> Value {
         let mut args = vec!["--json", "sim", "control", self.ctl.to_str().unwrap(), "state"];
         args.retain(|a| !a.is_empty());
         let o = run(&args, "");
         assert!(o.status.success(), "{}", both(&o));
         let mut s = json_lines(&o).remove(0)["state"].take();
-        for k in ["start_ns", "last_ns", "program"] {
+        for k in ["start_ns", "last_ns"] {
             s.as_object_mut().unwrap().remove(k);
+        }
+        if let Some(p) = s["program"].as_object_mut() {
+            for k in ["run_scans", "next_scan_ns", "timed_next_ns", "helper_cpu"] {
+                p.remove(k);
+            }
         }
         if faults {
             // The fault's own log and hit count move with every request it acts on.
