@@ -52,6 +52,7 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             [CompletionResult]::new('completions', 'completions', [CompletionResultType]::ParameterValue, 'Print a shell completion script (bash, zsh, fish, powershell), or write them all')
             [CompletionResult]::new('sim', 'sim', [CompletionResultType]::ParameterValue, 'Serve simulators to other programs: `sim serve` puts the simulated K2 on Modbus TCP / RTU and drives on a pty or a TCP port (raw or RFC 2217).')
             [CompletionResult]::new('agent', 'agent', [CompletionResultType]::ParameterValue, 'The PLC-side helper program that gives plcsh SM registers and instructions on a real K2')
+            [CompletionResult]::new('probe', 'probe', [CompletionResultType]::ParameterValue, 'What a K2 answers over Modbus before the helper is in it: areas and their last addresses, the models that fit, response time; reads only (docs/reference/first-connection.md)')
             [CompletionResult]::new('run', 'run', [CompletionResultType]::ParameterValue, 'Run a Lua script: plcsh [--time stepped] [--device NAME=URL] run SCRIPT.lua [ARGS…]')
             [CompletionResult]::new('record', 'record', [CompletionResultType]::ParameterValue, 'Recordings made with --record: `record show FILE` prints the decoded timeline')
             [CompletionResult]::new('replay', 'replay', [CompletionResultType]::ParameterValue, 'Replay a recording''s requests against a simulator and report every reply that differs')
@@ -316,6 +317,7 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('il', 'il', [CompletionResultType]::ParameterValue, 'Print the helper program (K2 instruction list) for KincoBuilder')
+            [CompletionResult]::new('check', 'check', [CompletionResultType]::ParameterValue, 'Self-test of the helper in a PLC: signature, version, scan rate, system bits, clock and a refused PLS; writes only the mailbox and puts back the SM bytes it used (docs/agent.md)')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
         }
@@ -340,15 +342,62 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             break
         }
+        'plcsh;agent;check' {
+            [CompletionResult]::new('--model', '--model', [CompletionResultType]::ParameterName, 'Model of the default simulated PLC')
+            [CompletionResult]::new('-d', '-d', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
+            [CompletionResult]::new('--device', '--device', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
+            [CompletionResult]::new('--time', '--time', [CompletionResultType]::ParameterName, 'Simulator time: follow the wall clock, or move only when stepped')
+            [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).')
+            [CompletionResult]::new('--state', '--state', [CompletionResultType]::ParameterName, 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user''s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE')
+            [CompletionResult]::new('--record', '--record', [CompletionResultType]::ParameterName, 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)')
+            [CompletionResult]::new('--bench', '--bench', [CompletionResultType]::ParameterName, 'Open a simulated machine described by a bench file (devices, wiring, initial values)')
+            [CompletionResult]::new('-j', '-j', [CompletionResultType]::ParameterName, 'With --fleet: how many devices are worked on at once')
+            [CompletionResult]::new('--jobs', '--jobs', [CompletionResultType]::ParameterName, 'With --fleet: how many devices are worked on at once')
+            [CompletionResult]::new('--device-timeout', '--device-timeout', [CompletionResultType]::ParameterName, 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'Print one JSON object per command result')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
+            [CompletionResult]::new('--read-only', '--read-only', [CompletionResultType]::ParameterName, 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            break
+        }
         'plcsh;agent;help' {
             [CompletionResult]::new('il', 'il', [CompletionResultType]::ParameterValue, 'Print the helper program (K2 instruction list) for KincoBuilder')
+            [CompletionResult]::new('check', 'check', [CompletionResultType]::ParameterValue, 'Self-test of the helper in a PLC: signature, version, scan rate, system bits, clock and a refused PLS; writes only the mailbox and puts back the SM bytes it used (docs/agent.md)')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
         }
         'plcsh;agent;help;il' {
             break
         }
+        'plcsh;agent;help;check' {
+            break
+        }
         'plcsh;agent;help;help' {
+            break
+        }
+        'plcsh;probe' {
+            [CompletionResult]::new('--report', '--report', [CompletionResultType]::ParameterName, 'Also write the findings as a Markdown report to FILE')
+            [CompletionResult]::new('--reads', '--reads', [CompletionResultType]::ParameterName, 'Reads timed for the response time (p50, p99)')
+            [CompletionResult]::new('--model', '--model', [CompletionResultType]::ParameterName, 'Model of the default simulated PLC')
+            [CompletionResult]::new('-d', '-d', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
+            [CompletionResult]::new('--device', '--device', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
+            [CompletionResult]::new('--time', '--time', [CompletionResultType]::ParameterName, 'Simulator time: follow the wall clock, or move only when stepped')
+            [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).')
+            [CompletionResult]::new('--state', '--state', [CompletionResultType]::ParameterName, 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user''s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE')
+            [CompletionResult]::new('--record', '--record', [CompletionResultType]::ParameterName, 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)')
+            [CompletionResult]::new('--bench', '--bench', [CompletionResultType]::ParameterName, 'Open a simulated machine described by a bench file (devices, wiring, initial values)')
+            [CompletionResult]::new('-j', '-j', [CompletionResultType]::ParameterName, 'With --fleet: how many devices are worked on at once')
+            [CompletionResult]::new('--jobs', '--jobs', [CompletionResultType]::ParameterName, 'With --fleet: how many devices are worked on at once')
+            [CompletionResult]::new('--device-timeout', '--device-timeout', [CompletionResultType]::ParameterName, 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)')
+            [CompletionResult]::new('--scan-serial', '--scan-serial', [CompletionResultType]::ParameterName, 'On a serial line that does not answer, try the common settings (9600…115200 baud, no, even or odd parity) and say which one answered')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'Print one JSON object per command result')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
+            [CompletionResult]::new('--read-only', '--read-only', [CompletionResultType]::ParameterName, 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             break
         }
         'plcsh;run' {
@@ -623,6 +672,7 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             [CompletionResult]::new('completions', 'completions', [CompletionResultType]::ParameterValue, 'Print a shell completion script (bash, zsh, fish, powershell), or write them all')
             [CompletionResult]::new('sim', 'sim', [CompletionResultType]::ParameterValue, 'Serve simulators to other programs: `sim serve` puts the simulated K2 on Modbus TCP / RTU and drives on a pty or a TCP port (raw or RFC 2217).')
             [CompletionResult]::new('agent', 'agent', [CompletionResultType]::ParameterValue, 'The PLC-side helper program that gives plcsh SM registers and instructions on a real K2')
+            [CompletionResult]::new('probe', 'probe', [CompletionResultType]::ParameterValue, 'What a K2 answers over Modbus before the helper is in it: areas and their last addresses, the models that fit, response time; reads only (docs/reference/first-connection.md)')
             [CompletionResult]::new('run', 'run', [CompletionResultType]::ParameterValue, 'Run a Lua script: plcsh [--time stepped] [--device NAME=URL] run SCRIPT.lua [ARGS…]')
             [CompletionResult]::new('record', 'record', [CompletionResultType]::ParameterValue, 'Recordings made with --record: `record show FILE` prints the decoded timeline')
             [CompletionResult]::new('replay', 'replay', [CompletionResultType]::ParameterValue, 'Replay a recording''s requests against a simulator and report every reply that differs')
@@ -662,9 +712,16 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
         }
         'plcsh;help;agent' {
             [CompletionResult]::new('il', 'il', [CompletionResultType]::ParameterValue, 'Print the helper program (K2 instruction list) for KincoBuilder')
+            [CompletionResult]::new('check', 'check', [CompletionResultType]::ParameterValue, 'Self-test of the helper in a PLC: signature, version, scan rate, system bits, clock and a refused PLS; writes only the mailbox and puts back the SM bytes it used (docs/agent.md)')
             break
         }
         'plcsh;help;agent;il' {
+            break
+        }
+        'plcsh;help;agent;check' {
+            break
+        }
+        'plcsh;help;probe' {
             break
         }
         'plcsh;help;run' {

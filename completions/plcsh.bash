@@ -43,6 +43,9 @@ _plcsh() {
             plcsh,ports)
                 cmd="plcsh__subcmd__ports"
                 ;;
+            plcsh,probe)
+                cmd="plcsh__subcmd__probe"
+                ;;
             plcsh,publish)
                 cmd="plcsh__subcmd__publish"
                 ;;
@@ -58,11 +61,17 @@ _plcsh() {
             plcsh,sim)
                 cmd="plcsh__subcmd__sim"
                 ;;
+            plcsh__subcmd__agent,check)
+                cmd="plcsh__subcmd__agent__subcmd__check"
+                ;;
             plcsh__subcmd__agent,help)
                 cmd="plcsh__subcmd__agent__subcmd__help"
                 ;;
             plcsh__subcmd__agent,il)
                 cmd="plcsh__subcmd__agent__subcmd__il"
+                ;;
+            plcsh__subcmd__agent__subcmd__help,check)
+                cmd="plcsh__subcmd__agent__subcmd__help__subcmd__check"
                 ;;
             plcsh__subcmd__agent__subcmd__help,help)
                 cmd="plcsh__subcmd__agent__subcmd__help__subcmd__help"
@@ -97,6 +106,9 @@ _plcsh() {
             plcsh__subcmd__help,ports)
                 cmd="plcsh__subcmd__help__subcmd__ports"
                 ;;
+            plcsh__subcmd__help,probe)
+                cmd="plcsh__subcmd__help__subcmd__probe"
+                ;;
             plcsh__subcmd__help,publish)
                 cmd="plcsh__subcmd__help__subcmd__publish"
                 ;;
@@ -111,6 +123,9 @@ _plcsh() {
                 ;;
             plcsh__subcmd__help,sim)
                 cmd="plcsh__subcmd__help__subcmd__sim"
+                ;;
+            plcsh__subcmd__help__subcmd__agent,check)
+                cmd="plcsh__subcmd__help__subcmd__agent__subcmd__check"
                 ;;
             plcsh__subcmd__help__subcmd__agent,il)
                 cmd="plcsh__subcmd__help__subcmd__agent__subcmd__il"
@@ -203,7 +218,7 @@ _plcsh() {
 
     case "${cmd}" in
         plcsh)
-            opts="-c -v -d -f -j -h -V --command --json --verbose --model --device --time --config --state --record --bench --read-only --fleet --jobs --device-timeout --help --version models devices ports paths man completions sim agent run record replay lab publish help"
+            opts="-c -v -d -f -j -h -V --command --json --verbose --model --device --time --config --state --record --bench --read-only --fleet --jobs --device-timeout --help --version models devices ports paths man completions sim agent probe run record replay lab publish help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -277,7 +292,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__agent)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help il help"
+            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help il check help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -334,9 +349,81 @@ _plcsh() {
             COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
             return 0
             ;;
-        plcsh__subcmd__agent__subcmd__help)
-            opts="il help"
+        plcsh__subcmd__agent__subcmd__check)
+            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --model)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --device)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --time)
+                    COMPREPLY=($(compgen -W "wall stepped" -- "${cur}"))
+                    return 0
+                    ;;
+                --config)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --state)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --record)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --bench)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --jobs)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -j)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --device-timeout)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        plcsh__subcmd__agent__subcmd__help)
+            opts="il check help"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        plcsh__subcmd__agent__subcmd__help__subcmd__check)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
             fi
@@ -559,7 +646,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__help)
-            opts="models devices ports paths man completions sim agent run record replay lab publish help"
+            opts="models devices ports paths man completions sim agent probe run record replay lab publish help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -573,8 +660,22 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__help__subcmd__agent)
-            opts="il"
+            opts="il check"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        plcsh__subcmd__help__subcmd__agent__subcmd__check)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
             fi
@@ -755,6 +856,20 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__help__subcmd__ports)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        plcsh__subcmd__help__subcmd__probe)
             opts=""
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
@@ -1439,6 +1554,72 @@ _plcsh() {
                 return 0
             fi
             case "${prev}" in
+                --model)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --device)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --time)
+                    COMPREPLY=($(compgen -W "wall stepped" -- "${cur}"))
+                    return 0
+                    ;;
+                --config)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --state)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --record)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --bench)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --jobs)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -j)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --device-timeout)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        plcsh__subcmd__probe)
+            opts="-v -d -j -h --report --reads --scan-serial --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --report)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --reads)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 --model)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0

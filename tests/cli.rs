@@ -216,7 +216,9 @@ fn man_prints_the_manual_page() {
     let page = stdout(&o);
     let th = page.lines().find(|l| l.starts_with(".TH")).unwrap_or("");
     assert!(th.starts_with(".TH PLCSH 1"), "{th}");
-    for sub in ["models", "devices", "ports", "paths", "man", "completions", "sim", "agent", "run", "record", "lab"] {
+    for sub in
+        ["models", "devices", "ports", "paths", "man", "completions", "sim", "agent", "probe", "run", "record", "lab"]
+    {
         assert!(page.contains(&format!("plcsh\\-{sub}")), "the page lacks the subcommand {sub}");
     }
     for cmd in ["get", "set", "pto", "hsc", "servo", "sim"] {

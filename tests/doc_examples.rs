@@ -188,7 +188,9 @@ fn rewrite(
     let mut w = words(line);
     let mut servers = Vec::new();
     for i in 1..w.len() {
-        if matches!(w[i - 1].as_str(), "-d" | "--device") {
+        // A device after -d, or the PLC `probe URL` and `agent check URL` take as their argument.
+        let positional = w[i - 1] == "probe" || (i >= 2 && w[i - 2] == "agent" && w[i - 1] == "check");
+        if matches!(w[i - 1].as_str(), "-d" | "--device") || positional {
             if let Some(sim) = same_family(&w[i]).filter(|_| !served(&w[i])) {
                 if !hardware {
                     return Err(format!("needs hardware ({}): mark the block", w[i]));

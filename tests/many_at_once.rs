@@ -71,6 +71,7 @@ const SUBCOMMANDS: &[(&str, &[&str], bool)] = &[
     ("man", &["man"], false),
     ("sim", &["sim", "control", "--help"], false),
     ("agent", &["agent", "il"], false),
+    ("probe", &["probe", "--help"], false),
     ("run", &["run", "drive_only.lua"], false),
     ("record", &["record", "show", "missing.pcapng"], false),
     ("replay", &["replay", "missing.pcapng"], false),

@@ -88,6 +88,7 @@ const CASES: &[(&str, &[&str])] = &[
         ],
     ),
     ("completion_scripts_folder", &["plcsh completions --write"]),
+    ("probe_report_file", &["plcsh probe --report"]),
     (
         "served_simulators_files",
         &[
@@ -448,6 +449,16 @@ fn completion_scripts_folder() {
     let dir = odd_dir("completions").join("дополнения");
     ok(&plcsh().args(["completions", "--write", dir.to_str().unwrap()]).output_retrying().unwrap());
     assert!(dir.join("plcsh.bash").is_file());
+}
+
+#[test]
+fn probe_report_file() {
+    let dir = odd_dir("probe");
+    let served = serve(&["--tcp", "127.0.0.1:0"]);
+    let url = format!("tcp://{}?model=K205-16DT", served.ready["tcp"].as_str().unwrap());
+    let report = dir.join("отчёт о \"пробе\".md");
+    ok(&plcsh().args(["probe", &url, "--reads", "3", "--report", report.to_str().unwrap()]).output_retrying().unwrap());
+    assert!(std::fs::read_to_string(&report).unwrap().contains("K205-16DT"));
 }
 
 #[test]

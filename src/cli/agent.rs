@@ -17,6 +17,9 @@ pub enum AgentCmd {
         #[arg(long, default_value = "VB3400")]
         base: String,
     },
+    /// Self-test of the helper in a PLC: signature, version, scan rate, system bits, clock and
+    /// a refused PLS; writes only the mailbox and puts back the SM bytes it used (docs/agent.md).
+    Check(super::probe::CheckArgs),
 }
 
 pub fn run(args: &AgentArgs, out: &mut dyn Write) -> i32 {
@@ -28,5 +31,6 @@ pub fn run(args: &AgentArgs, out: &mut dyn Write) -> i32 {
                 2
             }
         },
+        AgentCmd::Check(_) => unreachable!("`agent check` is run by cli::probe with the session's profiles"),
     }
 }

@@ -8,6 +8,7 @@ pub mod completions;
 mod fleet;
 mod lab;
 mod man;
+mod probe;
 mod publish;
 mod record;
 pub mod reference;
@@ -136,6 +137,9 @@ pub enum Sub {
     },
     /// The PLC-side helper program that gives plcsh SM registers and instructions on a real K2.
     Agent(agent::AgentArgs),
+    /// What a K2 answers over Modbus before the helper is in it: areas and their last addresses,
+    /// the models that fit, response time; reads only (docs/reference/first-connection.md).
+    Probe(probe::ProbeArgs),
     /// Run a Lua script: plcsh [--time stepped] [--device NAME=URL] run SCRIPT.lua [ARGS…]
     Run(run::RunArgs),
     /// Recordings made with --record: `record show FILE` prints the decoded timeline.
@@ -570,7 +574,9 @@ fn run(cli: &Cli, mut shell: Shell, style: Style, mut out: std::io::StdoutLock<'
             Sub::Paths => i32::from(!shell.run_line("paths", &mut out)),
             Sub::Sim { cmd: serve::SimCmd::Serve(args) } => serve::run(cli, args, style, &mut out),
             Sub::Sim { cmd: serve::SimCmd::Control(args) } => serve::control_run(args, style, &mut out),
+            Sub::Agent(agent::AgentArgs { cmd: agent::AgentCmd::Check(a) }) => probe::check(a, &shell, style, &mut out),
             Sub::Agent(a) => agent::run(a, &mut out),
+            Sub::Probe(a) => probe::probe(a, &shell, style, &mut out),
             Sub::Run(args) => run::main(&mut shell, args, style),
             Sub::Record { cmd } => record::show(cmd, style, &mut out),
             Sub::Replay(args) => record::replay(args, cli.bench.as_deref(), false, style, &mut out),

@@ -34,6 +34,7 @@
 mod client;
 
 pub use client::fuzz_replies;
+mod reads;
 mod sm;
 
 use super::agent::client::AgentClient;

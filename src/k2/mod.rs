@@ -12,6 +12,7 @@ pub mod instr;
 pub mod memory;
 pub mod modbus_map;
 pub mod operand;
+pub mod probe;
 pub mod sim;
 pub mod sm_map;
 pub mod space;

@@ -42,7 +42,7 @@ pub(super) fn shadow(len: u32) -> Memory {
 }
 
 /// The link's V words, for the mailbox client.
-struct VWords<'a>(&'a mut K2Wire);
+pub(super) struct VWords<'a>(pub(super) &'a mut K2Wire);
 
 impl VWords<'_> {
     fn register(&self, vbyte: u32) -> Result<u16> {
@@ -59,7 +59,11 @@ impl VWords<'_> {
                     u8::from(c)
                 ),
             )
-            .hint("check that agent=VB… lies inside the V area of this model"),
+            .hint(match u8::from(c) {
+                2 => "check that agent=VB… lies inside the V area of this model",
+                4 => "the PLC reports a device failure: check its error LED and diagnostics, then try again",
+                _ => "check that this is the PLC's Modbus port and unit (plcsh probe URL says what it answers)",
+            }),
         }
     }
 }

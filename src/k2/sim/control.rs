@@ -21,7 +21,7 @@ use crate::k2::instr::EventKind;
 use serde_json::{json, Value as Json};
 
 /// The control words, for messages.
-pub const WORDS: &str = "fault KIND … | fault clear [ID|all] | faults | events";
+pub const WORDS: &str = "fault KIND … | fault clear [ID|all] | faults | events | state";
 
 fn usage(msg: impl Into<String>) -> Error {
     Error::usage(msg).hint(format!("control words: {WORDS}; faults: {USAGE}"))
@@ -101,6 +101,15 @@ pub fn answer(sim: &mut K2Sim, text: &str, served: bool) -> Result<(String, Json
                 text.push_str(" (acts when the simulator is served: sim serve --fault …, or its control channel)");
             }
             Ok((text, json!({"id": id, "fault": f, "time_us": now_us})))
+        }
+        "state" => {
+            // The whole simulated state, as a snapshot holds it: a client's tests compare it
+            // before and after a command that must change nothing (`plcsh probe`, `agent check`).
+            if !rest.is_empty() {
+                return Err(usage(format!("`state` takes nothing after it (got `{rest}`)")));
+            }
+            let state = serde_json::to_value(sim.snapshot_state()).unwrap_or_default();
+            Ok((state.to_string(), json!({"state": state, "time_us": now_us})))
         }
         "" => Err(usage("an empty control line")),
         other => Err(usage(format!("`{other}` is not a control word of a simulated K2"))),
