@@ -236,7 +236,7 @@ pub fn write_error(w: &mut dyn Write, style: Style, cmd: &str, e: &Error, line: 
     let hint = msg.hint.take();
     writeln!(w, "{red}error[{}]{reset}: {msg}", e.kind.name())?;
     if let Some(h) = hint {
-        writeln!(w, "  hint: {h}")?;
+        writeln!(w, "  {}", crate::msg!("label-hint", hint = h))?;
     }
     Ok(())
 }

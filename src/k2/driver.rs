@@ -48,6 +48,7 @@ use crate::core::link::serial::{Carrier, LineSettings, Parity};
 use crate::core::trace::Proto;
 use crate::core::url::DeviceUrl;
 use crate::core::{Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
+use crate::msg;
 use client::ModbusClient;
 use std::collections::HashMap;
 use std::time::Duration;
@@ -89,13 +90,18 @@ impl Link {
     }
 
     /// What to check when the PLC does not answer.
-    fn hint(&self) -> &'static str {
+    fn hint(&self) -> String {
+        msg!("k2-hint-no-reply", link = self.kind()).into()
+    }
+
+    /// The link as the messages' `$link` selector names it.
+    fn kind(&self) -> &'static str {
         match self {
-            Link::Tcp { .. } => "check the unit id (unit=), that HOST:PORT is the PLC (a K204ET answers Modbus TCP on port 502) and that it is powered and reachable (ping)",
-            Link::Rtu { .. } => "check the unit id (unit= is the PLC port's station number), the wiring (RS485 A/B, ground), the port settings (baud=, parity=, stop=) against the PLC port's, and the port path",
-            Link::RtuOverTcp { .. } => "check the unit id (unit=), the gateway's address and port, and that its serial settings (baud, parity, stop bits) match the PLC port's",
-            Link::RtuRfc2217 { .. } => "check the unit id (unit=), the device server's address and port, and the line settings (baud=, parity=, stop=) against the PLC port's",
-            Link::Attached { .. } => "check the unit id and what is at the other end of the stream",
+            Link::Tcp { .. } => "tcp",
+            Link::Rtu { .. } => "rtu",
+            Link::RtuOverTcp { .. } => "gateway",
+            Link::RtuRfc2217 { .. } => "rfc2217",
+            Link::Attached { .. } => "stream",
         }
     }
 }
@@ -105,17 +111,10 @@ impl Link {
     /// frame was damaged on its way (Modbus over serial line V1.02 §2.5.1.2: the CRC covers
     /// the whole frame), otherwise the line carries something that is not this PLC's reply.
     fn garbled_hint(&self, bad_crc: bool) -> String {
-        let line = match self {
-            Link::Rtu { .. } => "the port settings (baud=, parity=, stop=) against the PLC port's, the wiring (RS485 A/B, ground, termination at both ends of a long line), and that no other master or device talks on the line",
-            Link::RtuOverTcp { .. } => "the gateway's serial settings (baud, parity, stop bits) against the PLC port's, the wiring from the gateway to the PLC, and that the gateway is in transparent (RTU) mode, not Modbus TCP",
-            Link::RtuRfc2217 { .. } => "the line settings (baud=, parity=, stop=) against the PLC port's and the wiring from the device server to the PLC",
-            Link::Tcp { .. } => "that HOST:PORT speaks Modbus TCP (an RTU gateway needs rtu+tcp://)",
-            Link::Attached { .. } => "what is at the other end of the stream",
-        };
         if bad_crc {
-            format!("the bytes were damaged on the way; check {line}; plcsh retries (retries=)")
+            msg!("k2-hint-damaged", link = self.kind()).into()
         } else {
-            format!("check {line}")
+            msg!("k2-hint-garbled", link = self.kind()).into()
         }
     }
 }
@@ -459,31 +458,32 @@ impl K2Wire {
                 Ok(Err(code)) => return Err(Failure::Exception(code)),
                 Err(e) if e.kind() == std::io::ErrorKind::TimedOut => {
                     self.ctx = None;
-                    last = Some(Failure::Link(Error::link(format!(
-                        "the device did not answer: no reply from unit {} within {}",
-                        self.settings.unit,
-                        ms(timeout)
+                    last = Some(Failure::Link(Error::link(msg!(
+                        "link-no-reply",
+                        unit = self.settings.unit,
+                        timeout = ms(timeout)
                     ))));
                 }
                 Err(e) if client::garbled(&e).is_some() => {
                     // Something arrived, but not a reply: say what, never "did not answer".
                     self.ctx = None;
                     let g = client::garbled(&e).expect("checked");
-                    let head = format!("unit {} sent no valid reply within {}", self.settings.unit, ms(timeout));
-                    last = Some(Failure::Link(
-                        Error::link(format!("{head}: {g}")).hint(self.link.garbled_hint(g.bad_crc.is_some())),
-                    ));
+                    let m = msg!(
+                        "link-no-valid-reply",
+                        unit = self.settings.unit,
+                        timeout = ms(timeout),
+                        what = g.to_string()
+                    );
+                    last = Some(Failure::Link(Error::link(m).hint(self.link.garbled_hint(g.bad_crc.is_some()))));
                 }
                 Err(e) => {
                     // Dropped connection, garbled or mismatched reply: start afresh.
                     self.ctx = None;
                     last = Some(Failure::Link(if self.peer_closed.load(std::sync::atomic::Ordering::Relaxed) {
                         // The stream saw the end of file (a read or a write may report it).
-                        Error::link("the PLC closed the connection instead of replying").hint(
-                            "plcsh reconnects and retries (retries=); if it keeps happening, check the PLC's limit on Modbus TCP connections and whether another client or a gateway takes the connection over",
-                        )
+                        Error::link(msg!("link-closed")).hint(msg!("k2-hint-closed"))
                     } else {
-                        Error::link("the link failed").cause(e)
+                        Error::link(msg!("link-failed")).cause(e)
                     }));
                 }
             }
@@ -492,7 +492,7 @@ impl K2Wire {
         Err(match last.expect("at least one attempt") {
             Failure::Link(mut e) => {
                 if attempts > 1 {
-                    e.message.push_str(&format!(" ({attempts} attempts)"));
+                    e.message = msg!("link-attempts", message = e.message.as_str(), attempts = attempts).text;
                 }
                 if e.hint.is_none() {
                     e = e.hint(self.link.hint());

@@ -11,6 +11,7 @@
 use super::transport::Transport;
 use crate::core::url::DeviceUrl;
 use crate::core::{Error, Result};
+use crate::msg;
 use std::io::{self, Read, Write};
 use std::time::Duration;
 
@@ -89,11 +90,12 @@ pub fn open(c: &Carrier, settings: LineSettings) -> Result<Box<dyn Transport>> {
 
 /// What to check when a port cannot be opened.
 pub fn open_hint() -> String {
-    format!(
-        "`plcsh ports` lists this computer's serial ports and their USB adapters; check the name ({}), that no other program (KincoBuilder, a terminal program) holds the port{}",
-        super::sys::PORT_EXAMPLES,
-        super::sys::PERMISSION_HINT
-    )
+    let examples = super::sys::PORT_EXAMPLES;
+    if super::sys::PORT_GROUP {
+        msg!("link-hint-open-port-group", examples = examples).into()
+    } else {
+        msg!("link-hint-open-port", examples = examples).into()
+    }
 }
 
 /// Opens a port on this computer (exclusively: a second program cannot open it meanwhile).
@@ -101,7 +103,7 @@ pub fn open_port(path: &str, settings: LineSettings) -> Result<SerialPort> {
     builder(path, settings)
         .open_native()
         .map(SerialPort)
-        .map_err(|e| Error::link(format!("cannot open serial port {path}")).cause(e).hint(open_hint()))
+        .map_err(|e| Error::link(msg!("link-cannot-open-port", port = path)).cause(e).hint(open_hint()))
 }
 
 /// A serial port on this computer (a tty or a COM port).

@@ -12,6 +12,7 @@
 use super::transport::Transport;
 use crate::core::url::DeviceUrl;
 use crate::core::{Error, Result};
+use crate::msg;
 use std::io::{self, Read, Write};
 use std::net::{SocketAddr, TcpListener, TcpStream, ToSocketAddrs};
 use std::sync::mpsc;
@@ -38,7 +39,7 @@ pub fn with_port(target: &str, u: &DeviceUrl) -> Result<String> {
 /// A host name is looked up on a thread of its own, so a name server that does not answer
 /// costs the timeout, not a hang. `hint` says what to check when nothing answers.
 pub fn connect(addr: &str, timeout: Duration, hint: &str) -> Result<TcpStream> {
-    let refused = |e: io::Error| Error::link(format!("cannot connect to {addr}")).cause(e).hint(hint.to_string());
+    let refused = |e: io::Error| Error::link(msg!("link-cannot-connect", addr = addr)).cause(e).hint(hint.to_string());
     let start = Instant::now();
     let addrs: Vec<SocketAddr> = match addr.parse::<SocketAddr>() {
         Ok(a) => vec![a],
@@ -51,11 +52,12 @@ pub fn connect(addr: &str, timeout: Duration, hint: &str) -> Result<TcpStream> {
             match rx.recv_timeout(timeout) {
                 Ok(r) => r.map_err(refused)?,
                 Err(_) => {
-                    return Err(Error::link(format!(
-                        "cannot connect to {addr}: the name was not looked up within {} ms",
-                        timeout.as_millis()
+                    return Err(Error::link(msg!(
+                        "link-name-not-looked-up",
+                        addr = addr,
+                        ms = timeout.as_millis() as u64
                     ))
-                    .hint("use the IP address, or check the name server"))
+                    .hint(msg!("link-hint-name-server")))
                 }
             }
         }
@@ -73,7 +75,7 @@ pub fn connect(addr: &str, timeout: Duration, hint: &str) -> Result<TcpStream> {
     }
     Err(match last {
         Some(e) if e.kind() == io::ErrorKind::TimedOut => {
-            Error::link(format!("cannot connect to {addr}: no answer within {} ms", timeout.as_millis()))
+            Error::link(msg!("link-connect-timeout", addr = addr, ms = timeout.as_millis() as u64))
                 .hint(hint.to_string())
         }
         Some(e) => refused(e),
@@ -148,9 +150,7 @@ impl ServedTcp {
     /// Listens on `addr` (port 0 picks a free port, see [`ServedTcp::local_addr`]).
     pub fn bind(addr: SocketAddr) -> Result<ServedTcp> {
         let listener = TcpListener::bind(addr).map_err(|e| {
-            Error::io(format!("cannot listen on {addr}"))
-                .cause(e)
-                .hint("choose another port (0 picks a free one); ports below 1024 need privileges")
+            Error::io(msg!("link-cannot-listen", addr = addr.to_string())).cause(e).hint(msg!("link-hint-listen"))
         })?;
         let local = listener.local_addr()?;
         let (tx, incoming) = mpsc::channel();
