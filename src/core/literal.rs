@@ -34,11 +34,6 @@ fn err(column: usize, message: Msg) -> LiteralError {
     LiteralError { column, message }
 }
 
-/// A message made elsewhere (a duration's), without its own id in this place.
-fn err_text(column: usize, id: &'static str, text: String) -> LiteralError {
-    LiteralError { column, message: Msg { id, text } }
-}
-
 /// Parses one literal. Spaces around `#` are accepted (`B # 16 # 85`, as the manual's
 /// scanned text writes it); other spaces are not.
 pub fn parse_literal(text: &str) -> Result<Literal, LiteralError> {
@@ -134,7 +129,8 @@ pub fn is_literal_head(word: &str) -> bool {
 fn parse_typed(s: &str) -> Result<Literal, LiteralError> {
     // T#500ms / TIME#1s200ms
     if let Some(rest) = s.strip_prefix("T#").or_else(|| s.strip_prefix("TIME#")) {
-        let ms = parse_duration_ms(rest).map_err(|m| err_text(s.len() - rest.len(), "literal-duration", m))?;
+        let ms =
+            parse_duration_ms(rest).map_err(|m| err(s.len() - rest.len(), msg!("literal-duration", message = m)))?;
         return Ok(Literal { value: Value::Int(ms), declared: None, pattern: false, text: String::new() });
     }
     if let Some(hash) = s.find('#') {
