@@ -201,7 +201,12 @@ mod tests { fn t() { let _ = "words in a test"; } }
     let found: Vec<String> = literals(body).into_iter().map(|(_, s)| s).filter(|s| is_prose(s)).collect();
     assert_eq!(
         found,
-        vec!["cannot open {path}", "a raw text with \"quotes\"", "the lock is never poisoned", "a developer's words here"]
+        vec![
+            "cannot open {path}",
+            "a raw text with \"quotes\"",
+            "the lock is never poisoned",
+            "a developer's words here"
+        ]
     );
     assert!(!is_prose("value-out-of-range"));
     assert!(!is_prose("{} ms"));
