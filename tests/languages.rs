@@ -128,3 +128,18 @@ fn a_labs_language_is_checked_with_its_file() {
     assert_eq!(code, Some(0), "{out}{err}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn a_one_shot_that_prints_values_parses_no_catalogue() {
+    // Start-up cost: the catalogue is parsed on the first message, never for values alone.
+    use plcsh::core::msg::catalogues_parsed;
+    let mut s = plcsh::session::Session::new(plcsh::core::Clock::stepped());
+    s.open("plc", "sim:K205-16DT").unwrap();
+    let mut sh = plcsh::shell::Shell::new(s, plcsh::output::Style::detect(true));
+    for r in sh.exec("set VW0=5; get VW0..VW18; get I0.0 SMB67") {
+        assert!(r.is_ok(), "{:?}", r.err());
+    }
+    assert_eq!(catalogues_parsed(), 0);
+    assert!(sh.exec("set VB2=300").into_iter().any(|r| r.is_err()));
+    assert_eq!(catalogues_parsed(), 1);
+}

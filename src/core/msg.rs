@@ -131,9 +131,16 @@ fn decide(choice: Option<Lang>, env: impl Fn(&str) -> Option<String>, system: im
     system().and_then(|s| Lang::from_tag(&s)).unwrap_or(Lang::En)
 }
 
+static BUNDLES: [OnceLock<FluentBundle<FluentResource>>; 3] = [OnceLock::new(), OnceLock::new(), OnceLock::new()];
+
+/// How many catalogues this process has parsed so far (tests: a one-shot that prints values
+/// parses none).
+pub fn catalogues_parsed() -> usize {
+    BUNDLES.iter().filter(|b| b.get().is_some()).count()
+}
+
 /// The parsed catalogue of `lang`, built on first use.
 fn bundle(lang: Lang) -> &'static FluentBundle<FluentResource> {
-    static BUNDLES: [OnceLock<FluentBundle<FluentResource>>; 3] = [OnceLock::new(), OnceLock::new(), OnceLock::new()];
     BUNDLES[lang.index() as usize - 1].get_or_init(|| {
         // The catalogues are checked by the tests below: a parse error cannot ship.
         let res = FluentResource::try_new(lang.source().to_string()).unwrap_or_else(|(res, _)| res);

@@ -138,13 +138,12 @@ pub fn check_option(key: &str, value: &str) -> Result<()> {
         "timeout" => parse_timeout(value).map(|_| ()),
         "retries" => parse_retries(value).map(|_| ()),
         "agent" => Ok(()),
-        _ => Err(Error::usage(format!("K2 wire devices have no option `{key}`"))
-            .hint("options: word_order (high-first, low-first), timeout, retries, agent")),
+        _ => Err(Error::usage(msg!("k2-no-option", key = key)).hint(msg!("k2-hint-options"))),
     }
 }
 
 fn parse_retries(value: &str) -> Result<u32> {
-    value.parse().map_err(|_| Error::usage(format!("`retries={value}` is not a number")))
+    value.parse().map_err(|_| Error::usage(msg!("k2-retries-not-number", value = value)))
 }
 
 fn parse_timeout(v: &str) -> Result<Duration> {
@@ -279,17 +278,17 @@ impl K2Wire {
                     Carrier::from_url(url, "rtu:COM3?baud=19200&unit=1 or rtu:/dev/ttyUSB0?baud=19200&unit=1")?;
                 let parity = url.param("parity").unwrap_or("none");
                 let parity = Parity::parse(parity).ok_or_else(|| {
-                    Error::usage(format!("`parity={parity}` in {} is not a parity", url.text))
-                        .hint("use parity=none, parity=even or parity=odd")
+                    Error::usage(msg!("link-not-parity", parity = parity, url = url.text.as_str()))
+                        .hint(msg!("link-hint-parity"))
                 })?;
                 let stop = match url.param("stop").unwrap_or("1") {
                     "1" => 1,
                     "2" => 2,
-                    s => return Err(Error::usage(format!("`stop={s}` in {} is not 1 or 2", url.text))),
+                    s => return Err(Error::usage(msg!("link-not-stop-bits", stop = s, url = url.text.as_str()))),
                 };
                 let baud = url.param_num::<u32>("baud")?.unwrap_or(9600);
                 if baud == 0 {
-                    return Err(Error::usage(format!("`baud=0` in {} is not a baud rate", url.text)));
+                    return Err(Error::usage(msg!("link-baud-zero", url = url.text.as_str())));
                 }
                 let line = LineSettings { baud, data_bits: 8, parity, stop_bits: stop };
                 match carrier {
@@ -297,15 +296,15 @@ impl K2Wire {
                     c => Link::Rtu { path: c.key(), line },
                 }
             }
-            s => return Err(Error::usage(format!("`{s}:` is not a K2 wire scheme"))),
+            s => return Err(Error::usage(msg!("k2-not-scheme", scheme = s))),
         };
         url.expect_params(&known)?;
         let default_model = if matches!(link, Link::Tcp { .. }) { "K204ET-16DT" } else { catalog::DEFAULT_MODEL };
         let model = catalog::lookup(url.param("model").unwrap_or(default_model))?;
         let unit = url.param_num::<u8>("unit")?.unwrap_or(1);
         if unit == 0 || unit > 247 {
-            return Err(Error::usage(format!("`unit={unit}` in {} is not a Modbus unit id", url.text))
-                .hint("unit ids are 1…247 (0 is broadcast, which gets no reply)"));
+            return Err(Error::usage(msg!("link-not-unit-id", unit = unit, url = url.text.as_str()))
+                .hint(msg!("link-hint-unit-id")));
         }
         let settings = Settings {
             unit,
@@ -351,7 +350,7 @@ impl K2Wire {
         let mut dev = K2Wire::with_link(Link::Attached { rtu }, model, settings, name.clone())?;
         let proto = if rtu { Proto::ModbusRtu } else { Proto::ModbusTcp };
         let port = AsyncPort::new(Box::new(transport), &name, proto, "attached stream")
-            .map_err(|e| Error::io("cannot start a runtime for the attached stream").cause(e))?;
+            .map_err(|e| Error::io(msg!("k2-cannot-start-runtime")).cause(e))?;
         dev.ctx = Some(ModbusClient::new(Box::new(port), rtu, dev.settings.unit));
         Ok(dev)
     }
@@ -378,13 +377,13 @@ impl K2Wire {
                             p.watch_eof(closed);
                             ModbusClient::new(p, !tcp, unit)
                         })
-                        .map_err(|e| Error::link(format!("cannot use the connection to {addr}")).cause(e))
+                        .map_err(|e| Error::link(msg!("link-cannot-use-connection", addr = addr.as_str())).cause(e))
                 }
-                Link::Attached { .. } => Err(Error::link("the attached stream failed and cannot be reopened by plcsh")),
+                Link::Attached { .. } => Err(Error::link(msg!("k2-attached-failed"))),
                 Link::Rtu { path, line } => {
                     let p = port::serial_port(path, *line, &name, Proto::ModbusRtu).map_err(|e| {
                         let h = e.hint.clone().unwrap_or_default();
-                        e.hint(format!("{h}; the next command opens it again once it is back"))
+                        e.hint(msg!("k2-hint-reopen", hint = h))
                     })?;
                     Ok(ModbusClient::new(p, true, unit))
                 }
@@ -421,10 +420,7 @@ impl K2Wire {
         let fits = data.len() == 1 + data[0] as usize
             && if table.is_bits() { data.len() > want } else { data.len() == want + 1 };
         if !fits {
-            return Err(Failure::Link(Error::link(format!(
-                "the reply to a read of {} was too short",
-                span.describe()
-            ))));
+            return Err(Failure::Link(Error::link(msg!("k2-reply-too-short", span = span.describe()))));
         }
         out.clear();
         out.extend_from_slice(&data[1..]);
@@ -504,33 +500,39 @@ impl K2Wire {
     }
 
     /// Puts a failure in the user's terms: what was asked, for which operand.
+    /// `doing` is `reading` or `writing` (the `$doing` selector of `k2-request`).
     fn explain(&self, f: Failure, doing: &str, span: &Span, fc: u8, op: &K2Operand, more: usize) -> Error {
-        let what = format!(
-            "{doing} {}{} ({}, FC {fc:02})",
-            op.canonical(),
-            if more > 0 { format!(" and {more} more") } else { String::new() },
-            span.describe()
-        );
+        let what = msg!(
+            "k2-request",
+            doing = doing,
+            operand = op.canonical(),
+            more = more,
+            span = span.describe(),
+            fc = format!("{fc:02}")
+        )
+        .text;
         match f {
             Failure::Link(e) => {
                 let mut e = e.operand(op.canonical());
-                e.message = format!("{what}: {}", e.message);
+                e.message = msg!("k2-while", what = what, message = e.message.as_str()).text;
                 e
             }
             Failure::Exception(code) => {
                 let c = u8::from(code);
                 let hint = match c {
-                    1 => "this PLC does not support that function code over this port".to_string(),
-                    2 => format!(
-                        "the address is outside the PLC's Modbus map; check that model={} matches the PLC",
-                        self.space.model.name
-                    ),
-                    3 => "the PLC refused the request's size or value (limits: 1600 bits or 100 registers read, 800 bits or 100 registers written)".to_string(),
-                    _ => "see the PLC's diagnostics".to_string(),
+                    1 => msg!("k2-hint-exception-1"),
+                    2 => msg!("k2-hint-exception-2", model = self.space.model.name),
+                    3 => msg!("k2-hint-exception-3"),
+                    _ => msg!("k2-hint-exception"),
                 };
                 Error::new(
                     ErrorKind::Refused,
-                    format!("the PLC refused {what}: {} (Modbus exception {c:02})", modbus_map::exception_name(c)),
+                    msg!(
+                        "k2-refused",
+                        what = what,
+                        exception = modbus_map::exception_name(c),
+                        code = format!("{c:02}")
+                    ),
                 )
                 .operand(op.canonical())
                 .hint(hint)
@@ -577,11 +579,7 @@ fn same_batch(a: &[Operand], b: &[Operand]) -> bool {
 
 /// Connects to `addr` (`HOST:PORT`) within `timeout` ([`crate::core::link::tcp::connect`]).
 fn tcp_connect(addr: &str, timeout: Duration) -> Result<std::net::TcpStream> {
-    crate::core::link::tcp::connect(
-        addr,
-        timeout,
-        "check that HOST:PORT is the PLC or gateway (a K204ET answers Modbus TCP on port 502), that it is powered and reachable (ping), and that no firewall blocks the port",
-    )
+    crate::core::link::tcp::connect(addr, timeout, &String::from(msg!("k2-hint-connect")))
 }
 
 fn with_port(target: &str) -> String {
@@ -750,7 +748,7 @@ impl K2Wire {
                 let first = run.items[0];
                 let mut e = self.explain(f, "writing", &s, fc, &k2[first], run.items.len() - 1);
                 if n > 0 {
-                    e.message.push_str(&format!("; the {n} write request(s) before it were sent"));
+                    e.message = msg!("k2-writes-before", message = e.message.as_str(), sent = n).text;
                 }
                 return Err(e);
             }

@@ -200,6 +200,49 @@ link-cannot-open-port = cannot open serial port { $port }
 link-cannot-use-port = cannot use the serial port { $port }
 link-hint-open-port = `plcsh ports` lists this computer's serial ports and their USB adapters; check the name ({ $examples }), that no other program (KincoBuilder, a terminal program) holds the port
 link-hint-open-port-group = `plcsh ports` lists this computer's serial ports and their USB adapters; check the name ({ $examples }), that no other program (KincoBuilder, a terminal program) holds the port, and that you may open it (the dialout group: sudo usermod -aG dialout $USER, then log in again)
+link-not-host-port = `{ $target }` in { $url } is not HOST:PORT
+link-hint-host-port = give the device server's address and the TCP port of its serial channel, e.g. 192.168.127.254:4001
+link-no-address = the name resolves to no address
+link-hint-server = check the device server's address and the TCP port of this serial channel, that it is in raw TCP server mode (or RFC 2217 for +rfc2217://), that no other client holds the channel, and that no firewall blocks the port
+link-connection-closed = the connection closed
+link-cannot-start-thread = cannot start the accepting thread
+link-no-port-named = { $url } names no serial port
+link-hint-port-example = e.g. { $example } (`plcsh ports` lists this computer's serial ports)
+link-unknown-carrier = `+{ $carrier }` in { $url } is not a way to reach a serial line
+link-hint-carriers = use +tcp://HOST:PORT (a device server's raw TCP port) or +rfc2217://HOST:PORT
+link-cannot-list-ports = cannot list the serial ports
+link-hint-list-ports-dev = ls /dev/ttyUSB* /dev/ttyACM* /dev/serial/by-id shows the ports the kernel has
+link-hint-list-ports-device-manager = Device Manager → Ports (COM & LPT) shows the ports Windows has
+k2-no-option = K2 wire devices have no option `{ $key }`
+k2-hint-options = options: word_order (high-first, low-first), timeout, retries, agent
+k2-retries-not-number = `retries={ $value }` is not a number
+k2-not-scheme = `{ $scheme }:` is not a K2 wire scheme
+k2-cannot-start-runtime = cannot start a runtime for the attached stream
+k2-attached-failed = the attached stream failed and cannot be reopened by plcsh
+k2-hint-reopen = { $hint }; the next command opens it again once it is back
+k2-reply-too-short = the reply to a read of { $span } was too short
+k2-request = { $doing ->
+        [reading] reading
+       *[writing] writing
+    } { $operand }{ $more ->
+        [0] {""}
+       *[other] {" "}and { $more } more
+    } ({ $span }, FC { $fc })
+k2-while = { $what }: { $message }
+k2-refused = the PLC refused { $what }: { $exception } (Modbus exception { $code })
+k2-hint-exception-1 = this PLC does not support that function code over this port
+k2-hint-exception-2 = the address is outside the PLC's Modbus map; check that model={ $model } matches the PLC
+k2-hint-exception-3 = the PLC refused the request's size or value (limits: 1600 bits or 100 registers read, 800 bits or 100 registers written)
+k2-hint-exception = see the PLC's diagnostics
+k2-hint-connect = check that HOST:PORT is the PLC or gateway (a K204ET answers Modbus TCP on port 502), that it is powered and reachable (ping), and that no firewall blocks the port
+k2-writes-before = { $message }; the { $sent } write request(s) before it were sent
+link-not-parity = `parity={ $parity }` in { $url } is not a parity
+link-hint-parity = use parity=none, parity=even or parity=odd
+link-not-stop-bits = `stop={ $stop }` in { $url } is not 1 or 2
+link-baud-zero = `baud=0` in { $url } is not a baud rate
+link-not-unit-id = `unit={ $unit }` in { $url } is not a Modbus unit id
+link-hint-unit-id = unit ids are 1…247 (0 is broadcast, which gets no reply)
+link-cannot-use-connection = cannot use the connection to { $addr }
 
 ## The command line (cli)
 

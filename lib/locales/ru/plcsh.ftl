@@ -197,6 +197,53 @@ link-cannot-open-port = не удаётся открыть последоват�
 link-cannot-use-port = не удаётся использовать последовательный порт { $port }
 link-hint-open-port = `plcsh ports` перечисляет последовательные порты этого компьютера и их USB-адаптеры; проверьте имя ({ $examples }) и что порт не занят другой программой (KincoBuilder, программой терминала)
 link-hint-open-port-group = `plcsh ports` перечисляет последовательные порты этого компьютера и их USB-адаптеры; проверьте имя ({ $examples }), что порт не занят другой программой (KincoBuilder, программой терминала) и что у вас есть право его открыть (группа dialout: sudo usermod -aG dialout $USER, затем войдите в систему заново)
+link-not-host-port = `{ $target }` в { $url } не HOST:PORT
+link-hint-host-port = укажите адрес сервера устройств и TCP-порт его последовательного канала, например 192.168.127.254:4001
+link-no-address = имени не соответствует ни один адрес
+link-hint-server = проверьте адрес сервера устройств и TCP-порт этого последовательного канала, что он в режиме сервера raw TCP (или RFC 2217 для +rfc2217://), что канал не занят другим клиентом и что порт не закрыт межсетевым экраном
+link-connection-closed = соединение закрыто
+link-cannot-start-thread = не удаётся запустить поток приёма соединений
+link-no-port-named = { $url } не называет последовательный порт
+link-hint-port-example = например { $example } (`plcsh ports` перечисляет последовательные порты этого компьютера)
+link-unknown-carrier = `+{ $carrier }` в { $url } — не способ связи с последовательной линией
+link-hint-carriers = используйте +tcp://HOST:PORT (raw TCP-порт сервера устройств) или +rfc2217://HOST:PORT
+link-cannot-list-ports = не удаётся получить список последовательных портов
+link-hint-list-ports-dev = ls /dev/ttyUSB* /dev/ttyACM* /dev/serial/by-id показывает порты, которые видит ядро
+link-hint-list-ports-device-manager = Диспетчер устройств → Порты (COM и LPT) показывает порты, которые видит Windows
+k2-no-option = у устройств K2 по линии связи нет параметра `{ $key }`
+k2-hint-options = параметры: word_order (high-first, low-first), timeout, retries, agent
+k2-retries-not-number = `retries={ $value }` не число
+k2-not-scheme = `{ $scheme }:` не схема связи с K2
+k2-cannot-start-runtime = не удаётся запустить среду выполнения для присоединённого потока
+k2-attached-failed = присоединённый поток дал сбой, и plcsh не может открыть его заново
+k2-hint-reopen = { $hint }; следующая команда откроет его снова, когда он вернётся
+k2-reply-too-short = ответ на чтение { $span } слишком короткий
+k2-request = { $doing ->
+        [reading] чтение
+       *[writing] запись
+    } { $operand }{ $more ->
+        [0] {""}
+       *[other] {" "}и ещё { $more }
+    } ({ $span }, FC { $fc })
+k2-while = { $what }: { $message }
+k2-refused = ПЛК отказал ({ $what }): { $exception } (исключение Modbus { $code })
+k2-hint-exception-1 = этот ПЛК не поддерживает этот код функции на этом порту
+k2-hint-exception-2 = адрес вне карты Modbus ПЛК; проверьте, что model={ $model } соответствует ПЛК
+k2-hint-exception-3 = ПЛК отказал из-за размера или значения запроса (пределы: чтение 1600 бит или 100 регистров, запись 800 бит или 100 регистров)
+k2-hint-exception = смотрите диагностику ПЛК
+k2-hint-connect = проверьте, что HOST:PORT — это ПЛК или шлюз (K204ET отвечает по Modbus TCP на порту 502), что он включён и доступен (ping) и что порт не закрыт межсетевым экраном
+k2-writes-before = { $message }; { $sent ->
+        [one] { $sent } запрос записи перед ним был отправлен
+        [few] { $sent } запроса записи перед ним были отправлены
+       *[many] { $sent } запросов записи перед ним были отправлены
+    }
+link-not-parity = `parity={ $parity }` в { $url } не четность
+link-hint-parity = используйте parity=none, parity=even или parity=odd
+link-not-stop-bits = `stop={ $stop }` в { $url } не 1 и не 2
+link-baud-zero = `baud=0` в { $url } не скорость передачи данных
+link-not-unit-id = `unit={ $unit }` в { $url } не адрес ведомого устройства Modbus
+link-hint-unit-id = адреса ведомых устройств — 1…247 (0 — широковещательный, на него нет ответа)
+link-cannot-use-connection = не удаётся использовать соединение с { $addr }
 
 ## Командная строка (cli)
 

@@ -193,6 +193,49 @@ link-cannot-open-port = 无法打开串口 { $port }
 link-cannot-use-port = 无法使用串口 { $port }
 link-hint-open-port = `plcsh ports` 列出本机的串口及其 USB 转换器；请检查名称 ({ $examples })，以及是否有其他程序 (KincoBuilder、终端程序) 占用了该串口
 link-hint-open-port-group = `plcsh ports` 列出本机的串口及其 USB 转换器；请检查名称 ({ $examples })、是否有其他程序 (KincoBuilder、终端程序) 占用了该串口，以及您是否有权限打开它 (dialout 组：sudo usermod -aG dialout $USER，然后重新登录)
+link-not-host-port = { $url } 中的 `{ $target }` 不是 HOST:PORT
+link-hint-host-port = 请给出串口服务器的地址及其串行通道的 TCP 端口，例如 192.168.127.254:4001
+link-no-address = 该名称解析不到任何地址
+link-hint-server = 请检查串口服务器的地址和此串行通道的 TCP 端口、它是否处于 raw TCP 服务器模式 (+rfc2217:// 则为 RFC 2217)、是否有其他客户端占用该通道，以及防火墙是否阻挡了该端口
+link-connection-closed = 连接已关闭
+link-cannot-start-thread = 无法启动接受连接的线程
+link-no-port-named = { $url } 没有指定串口
+link-hint-port-example = 例如 { $example } (`plcsh ports` 列出本机的串口)
+link-unknown-carrier = { $url } 中的 `+{ $carrier }` 不是连接串行线路的方式
+link-hint-carriers = 请用 +tcp://HOST:PORT (串口服务器的 raw TCP 端口) 或 +rfc2217://HOST:PORT
+link-cannot-list-ports = 无法列出串口
+link-hint-list-ports-dev = ls /dev/ttyUSB* /dev/ttyACM* /dev/serial/by-id 显示内核识别到的串口
+link-hint-list-ports-device-manager = 设备管理器 → 端口 (COM 和 LPT) 显示 Windows 识别到的串口
+k2-no-option = K2 通信设备没有选项 `{ $key }`
+k2-hint-options = 选项：word_order (high-first、low-first)、timeout、retries、agent
+k2-retries-not-number = `retries={ $value }` 不是数字
+k2-not-scheme = `{ $scheme }:` 不是 K2 通信方式
+k2-cannot-start-runtime = 无法为接入的数据流启动运行时
+k2-attached-failed = 接入的数据流出错，plcsh 无法重新打开它
+k2-hint-reopen = { $hint }；恢复后，下一条命令会重新打开它
+k2-reply-too-short = 读取 { $span } 的回复太短
+k2-request = { $doing ->
+        [reading] 读取
+       *[writing] 写入
+    } { $operand }{ $more ->
+        [0] {""}
+       *[other] {" "}及另外 { $more } 个
+    } ({ $span }，FC { $fc })
+k2-while = { $what }：{ $message }
+k2-refused = PLC 拒绝了{ $what }：{ $exception } (Modbus 异常码 { $code })
+k2-hint-exception-1 = 此 PLC 在此端口上不支持该功能码
+k2-hint-exception-2 = 地址超出 PLC 的 Modbus 映射；请检查 model={ $model } 是否与 PLC 一致
+k2-hint-exception-3 = PLC 拒绝了请求的大小或数值 (限制：读 1600 位或 100 个寄存器，写 800 位或 100 个寄存器)
+k2-hint-exception = 请查看 PLC 的诊断信息
+k2-hint-connect = 请检查 HOST:PORT 是否为该 PLC 或网关 (K204ET 在端口 502 上应答 Modbus TCP)、是否上电并可以访问 (ping)，以及防火墙是否阻挡了该端口
+k2-writes-before = { $message }；在它之前的 { $sent } 个写请求已发送
+link-not-parity = { $url } 中的 `parity={ $parity }` 不是奇偶校验方式
+link-hint-parity = 请用 parity=none、parity=even 或 parity=odd
+link-not-stop-bits = { $url } 中的 `stop={ $stop }` 不是 1 或 2
+link-baud-zero = { $url } 中的 `baud=0` 不是波特率
+link-not-unit-id = { $url } 中的 `unit={ $unit }` 不是 Modbus 站号
+link-hint-unit-id = 站号为 1…247 (0 是广播，不会有回复)
+link-cannot-use-connection = 无法使用到 { $addr } 的连接
 
 ## 命令行 (cli)
 

@@ -49,15 +49,15 @@ impl Carrier {
         let carrier = u.scheme.split_once('+').map(|(_, c)| c);
         let target = u.target.trim();
         if target.is_empty() {
-            return Err(Error::usage(format!("{} names no serial port", u.text))
-                .hint(format!("e.g. {example} (`plcsh ports` lists this computer's serial ports)")));
+            return Err(Error::usage(msg!("link-no-port-named", url = u.text.as_str()))
+                .hint(msg!("link-hint-port-example", example = example)));
         }
         match carrier {
             None => Ok(Carrier::Port(target.to_string())),
             Some("tcp") => Ok(Carrier::Tcp(super::tcp::with_port(target, u)?)),
             Some("rfc2217") => Ok(Carrier::Rfc2217(super::tcp::with_port(target, u)?)),
-            Some(other) => Err(Error::usage(format!("`+{other}` in {} is not a way to reach a serial line", u.text))
-                .hint("use +tcp://HOST:PORT (a device server's raw TCP port) or +rfc2217://HOST:PORT")),
+            Some(other) => Err(Error::usage(msg!("link-unknown-carrier", carrier = other, url = u.text.as_str()))
+                .hint(msg!("link-hint-carriers"))),
         }
     }
 
@@ -157,7 +157,7 @@ pub struct PortInfo {
 /// The serial ports the operating system reports, sorted by name (COM2 before COM10).
 pub fn ports() -> Result<Vec<PortInfo>> {
     let found = serialport::available_ports()
-        .map_err(|e| Error::io("cannot list the serial ports").cause(e).hint(super::sys::PORT_LIST_HINT))?;
+        .map_err(|e| Error::io(msg!("link-cannot-list-ports")).cause(e).hint(super::sys::port_list_hint()))?;
     let mut list: Vec<PortInfo> = found
         .into_iter()
         .filter(|p| super::sys::listed_port(&p.port_name))

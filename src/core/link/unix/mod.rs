@@ -20,7 +20,9 @@ pub const PORT_EXAMPLES: &str =
 /// open hint then says how to join it (`link-hint-open-port-group`).
 pub const PORT_GROUP: bool = true;
 /// What to check when listing ports fails.
-pub const PORT_LIST_HINT: &str = "ls /dev/ttyUSB* /dev/ttyACM* /dev/serial/by-id shows the ports the kernel has";
+pub fn port_list_hint() -> String {
+    crate::msg!("link-hint-list-ports-dev").into()
+}
 
 /// Whether `ports` lists a port the OS reports: Linux reports every `ttyS` slot the kernel
 /// reserved, present or not, so those without a device behind them are left out.
