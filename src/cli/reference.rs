@@ -339,6 +339,20 @@ pub fn error_kinds_markdown() -> String {
     t
 }
 
+/// Every message id of the catalogue with its text in each language, arguments shown as
+/// `$name` (a selector shows its catch-all form).
+pub fn message_ids_markdown() -> String {
+    use crate::core::msg::{self, Arg, Lang};
+    let mut t = String::from("| id | en | ru | zh-CN |\n|---|---|---|---|\n");
+    for id in msg::ids(Lang::En) {
+        let vars = msg::variables(Lang::En, &id);
+        let args: Vec<(&str, Arg)> = vars.iter().map(|v| (v.as_str(), Arg::Text(format!("${v}")))).collect();
+        let texts: Vec<String> = Lang::ALL.iter().map(|&l| cell(&msg::format_in(l, &id, &args))).collect();
+        t.push_str(&format!("| `{id}` | {} |\n", texts.join(" | ")));
+    }
+    t
+}
+
 #[cfg(test)]
 mod kind_tests {
     #[test]
@@ -353,18 +367,4 @@ mod kind_tests {
             }
         }
     }
-}
-
-/// Every message id of the catalogue with its text in each language, arguments shown as
-/// `$name` (a selector shows its catch-all form).
-pub fn message_ids_markdown() -> String {
-    use crate::core::msg::{self, Arg, Lang};
-    let mut t = String::from("| id | en | ru | zh-CN |\n|---|---|---|---|\n");
-    for id in msg::ids(Lang::En) {
-        let vars = msg::variables(Lang::En, &id);
-        let args: Vec<(&str, Arg)> = vars.iter().map(|v| (v.as_str(), Arg::Text(format!("${v}")))).collect();
-        let texts: Vec<String> = Lang::ALL.iter().map(|&l| cell(&msg::format_in(l, &id, &args))).collect();
-        t.push_str(&format!("| `{id}` | {} |\n", texts.join(" | ")));
-    }
-    t
 }
