@@ -136,7 +136,7 @@ fn a_one_shot_that_prints_values_parses_no_catalogue() {
     let mut s = plcsh::session::Session::new(plcsh::core::Clock::stepped());
     s.open("plc", "sim:K205-16DT").unwrap();
     let mut sh = plcsh::shell::Shell::new(s, plcsh::output::Style::detect(true));
-    for r in sh.exec("set VW0=5; get VW0..VW18; get I0.0 SMB67") {
+    for r in sh.exec("set VW0=5; get VW0..VW18; get I0.0 SMB67 K4M0 VD4/REAL VW0[4] T5 C3 Q0.0") {
         assert!(r.is_ok(), "{:?}", r.err());
     }
     assert_eq!(catalogues_parsed(), 0);

@@ -470,14 +470,20 @@ fn parse_group(rest: &str, original: &str) -> Result<K2Operand> {
         return Err(op_err(2, msg!("k2-group-nested", group = format!("K{n}"))));
     }
     let typed = &original[original.len() - inner.len()..];
-    let body = parse_body(inner, typed).or_else(|e| {
-        if inner.contains('.') {
-            // A bit was given: the first error is the one to report.
-            return Err(e);
-        }
-        // `K4M0` names a byte without a bit: read it as bit 0.
-        parse_body(&format!("{inner}.0"), &format!("{typed}.0"))
-    });
+    // `K4M0` names a byte without a bit: read it as bit 0. Tried first, so the usual form
+    // makes no error on the way (a message costs a catalogue look-up); a text without a bit
+    // that is not a byte of a bit area (`K4MB0`, `K4T5`) gets the first form's message.
+    let as_bit = (!inner.contains('.')).then(|| parse_body(&format!("{inner}.0"), &format!("{typed}.0")));
+    let body = match as_bit {
+        Some(Ok(op)) => Ok(op),
+        _ => parse_body(inner, typed).or_else(|e| {
+            if inner.contains('.') {
+                // A bit was given: the first error is the one to report.
+                return Err(e);
+            }
+            parse_body(&format!("{inner}.0"), &format!("{typed}.0"))
+        }),
+    };
     let op = body.map_err(|e| e.shift(2))?;
     let Width::Bit(bit) = op.width else {
         return Err(op_err(
