@@ -425,6 +425,8 @@ pub fn main() -> i32 {
 }
 
 fn run_cli() -> i32 {
+    // Messages follow PLCSH_LANG and the system's language (read on the first message only).
+    crate::core::msg::follow_system();
     let (argv, script_args) = split_script_args(std::env::args_os().collect());
     let parsed = match parse_one_shot(&argv) {
         Some(cli) => Ok(cli),

@@ -16,8 +16,9 @@
 //! The language, first match wins: `--lang` ([`set_choice`]), `PLCSH_LANG`, then the
 //! system's (`LC_ALL`, `LC_MESSAGES`, `LANG` on Unix; the user's UI language on Windows:
 //! `core::platform::ui_language`); English when none names a language plcsh speaks (`C`
-//! and `POSIX` are English). A lab grades in the language its `lab.toml` names
-//! ([`set_language`]).
+//! and `POSIX` are English). The environment is consulted only in the program
+//! ([`follow_system`]); the library used in-process speaks English unless told. A lab grades
+//! in the language its `lab.toml` names ([`set_language`]).
 
 use fluent_bundle::concurrent::FluentBundle;
 use fluent_bundle::{FluentArgs, FluentResource, FluentValue};
@@ -88,6 +89,17 @@ static CURRENT: AtomicU8 = AtomicU8::new(0);
 /// `--lang`, kept until the first message decides the language.
 static CHOICE: OnceLock<Lang> = OnceLock::new();
 
+/// Whether the environment (`PLCSH_LANG`, the system's language) may choose: set by the
+/// program's entry point ([`follow_system`]). The library alone — tests that run commands
+/// in-process, benchmarks — speaks English unless told otherwise, whatever the machine's locale.
+static SYSTEM: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// Lets `PLCSH_LANG` and the system's language choose (read on the first message).
+pub fn follow_system() {
+    SYSTEM.store(true, Ordering::Relaxed);
+    CURRENT.store(0, Ordering::Relaxed);
+}
+
 /// `--lang`: wins over the environment. Cheap (no catalogue is read).
 pub fn set_choice(lang: Lang) {
     let _ = CHOICE.set(lang);
@@ -106,12 +118,11 @@ pub fn language() -> Lang {
         2 => Lang::Ru,
         3 => Lang::ZhCn,
         _ => {
-            // Unit tests speak English whatever the machine's locale (integration tests set
-            // PLCSH_LANG=en for the program they run).
-            #[cfg(test)]
-            let lang = decide(CHOICE.get().copied(), |_| None, || None);
-            #[cfg(not(test))]
-            let lang = decide(CHOICE.get().copied(), |k| std::env::var(k).ok(), crate::core::platform::ui_language);
+            let lang = if SYSTEM.load(Ordering::Relaxed) {
+                decide(CHOICE.get().copied(), |k| std::env::var(k).ok(), crate::core::platform::ui_language)
+            } else {
+                decide(CHOICE.get().copied(), |_| None, || None)
+            };
             CURRENT.store(lang.index(), Ordering::Relaxed);
             lang
         }
