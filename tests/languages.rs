@@ -22,18 +22,19 @@ fn run(args: &[&str], env: &[(&str, &str)]) -> (Option<i32>, String, String) {
     (o.status.code(), String::from_utf8_lossy(&o.stdout).into_owned(), String::from_utf8_lossy(&o.stderr).into_owned())
 }
 
-const SESSION: &str = "set VB2=300; get VX0; get Q9.9";
+const SESSION: &str = "set VB2=300; get VX0; get Q9.9; fo";
 
 #[test]
 fn a_first_mistake_reads_the_same_in_three_languages() {
     // Each command of a one-shot runs on its own line here, so every error shows.
-    let cases: [(&str, [&str; 3]); 3] = [
+    let cases: [(&str, [&str; 4]); 3] = [
         (
             "en",
             [
                 "error[value]: plc: VB2: 300 is out of range for BYTE (0…255)\n",
                 "error[operand]: plc: V needs a bit (`V0.0`) or a size letter (`VB0`, `VW0`, `VD0`)\n",
                 "error[range]: plc: Q9.9: bit 9 does not exist (bits are 0…7), and byte 9 is past the end of the Q area on K205-16DT (last bit is Q1.7)\n  hint: digital outputs on K205-16DT: Q0.0 … Q1.7\n",
+                "error[usage]: unknown command `fo`\n  hint: did you mean `pto`? `help` lists the commands\n",
             ],
         ),
         (
@@ -42,6 +43,7 @@ fn a_first_mistake_reads_the_same_in_three_languages() {
                 "error[value]: plc: VB2: 300 вне диапазона BYTE (0…255)\n",
                 "error[operand]: plc: после V нужен бит (`V0.0`) или буква размера (`VB0`, `VW0`, `VD0`)\n",
                 "error[range]: plc: Q9.9: бита 9 нет (биты 0…7), а байт 9 за концом области Q на K205-16DT (последний бит — Q1.7)\n  подсказка: дискретные выходы на K205-16DT: Q0.0 … Q1.7\n",
+                "error[usage]: неизвестная команда `fo`\n  подсказка: может быть, `pto`? `help` перечисляет команды\n",
             ],
         ),
         (
@@ -50,6 +52,7 @@ fn a_first_mistake_reads_the_same_in_three_languages() {
                 "error[value]: plc: VB2: 300 超出 BYTE 的范围 (0…255)\n",
                 "error[operand]: plc: V 之后需要位 (`V0.0`) 或大小字母 (`VB0`、`VW0`、`VD0`)\n",
                 "error[range]: plc: Q9.9：位 9 不存在 (位号为 0…7)，而且字节 9 超出 K205-16DT 上 Q 存储区的末尾 (最后一位是 Q1.7)\n  提示：K205-16DT 上的开关量输出：Q0.0 … Q1.7\n",
+                "error[usage]: 未知的命令 `fo`\n  提示：是否想输入 `pto`？`help` 列出所有命令\n",
             ],
         ),
     ];
@@ -73,10 +76,14 @@ fn json_codes_do_not_depend_on_the_language() {
         codes.push(v["error"]["code"].as_str().unwrap().to_string());
     }
     assert_eq!(codes, ["value-out-of-range"; 3]);
+    let code = |cmd: &str| {
+        let (_, out, _) = run(&["--json", "-c", cmd], &[]);
+        let v: serde_json::Value = serde_json::from_str(out.trim()).unwrap();
+        v["error"]["code"].as_str().unwrap().to_string()
+    };
+    assert_eq!(code("frobnicate"), "shell-unknown-command");
     // A message not in the catalogue yet has its kind's code.
-    let (_, out, _) = run(&["--json", "-c", "frobnicate"], &[]);
-    let v: serde_json::Value = serde_json::from_str(out.trim()).unwrap();
-    assert_eq!(v["error"]["code"], "kind-usage", "{out}");
+    assert_eq!(code("sim wirse"), "kind-usage");
 }
 
 #[test]

@@ -247,3 +247,10 @@ link-cannot-use-connection = cannot use the connection to { $addr }
 ## The command line (cli)
 
 cli-hint-shell-command = `{ $line }` is a shell command: plcsh -c '{ $line }'
+
+## The shell (shell)
+
+shell-unknown-command = unknown command `{ $name }`
+shell-hint-did-you-mean = did you mean `{ $name }`? `help` lists the commands
+shell-hint-help = `help` lists the commands
+shell-hint-subcommand = did you mean `{ $command } { $near }`? `help { $command }` shows its usage

@@ -248,3 +248,10 @@ link-cannot-use-connection = не удаётся использовать сое
 ## Командная строка (cli)
 
 cli-hint-shell-command = `{ $line }` — команда оболочки: plcsh -c '{ $line }'
+
+## Оболочка (shell)
+
+shell-unknown-command = неизвестная команда `{ $name }`
+shell-hint-did-you-mean = может быть, `{ $name }`? `help` перечисляет команды
+shell-hint-help = `help` перечисляет команды
+shell-hint-subcommand = может быть, `{ $command } { $near }`? `help { $command }` показывает, как её вызывать

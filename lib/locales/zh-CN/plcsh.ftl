@@ -240,3 +240,10 @@ link-cannot-use-connection = 无法使用到 { $addr } 的连接
 ## 命令行 (cli)
 
 cli-hint-shell-command = `{ $line }` 是 shell 命令：plcsh -c '{ $line }'
+
+## Shell (shell)
+
+shell-unknown-command = 未知的命令 `{ $name }`
+shell-hint-did-you-mean = 是否想输入 `{ $name }`？`help` 列出所有命令
+shell-hint-help = `help` 列出所有命令
+shell-hint-subcommand = 是否想输入 `{ $command } { $near }`？`help { $command }` 显示其用法
