@@ -236,7 +236,7 @@ pub fn write_error(w: &mut dyn Write, style: Style, cmd: &str, e: &Error, line: 
     let hint = msg.hint.take();
     writeln!(w, "{red}error[{}]{reset}: {msg}", e.kind.name())?;
     if let Some(h) = hint {
-        writeln!(w, "  hint: {h}")?;
+        writeln!(w, "  {}", crate::msg!("label-hint", hint = h))?;
     }
     Ok(())
 }
@@ -277,6 +277,24 @@ mod tests {
         let text = String::from_utf8(human).unwrap();
         assert!(text.contains("  set VB2=300\n             ^\n"), "{text}");
         assert!(text.contains("error[value]"));
+    }
+
+    #[test]
+    fn tables_align_chinese_text_by_display_width() {
+        // A Chinese character takes two columns of a terminal (UAX #11 East Asian Wide): the
+        // table's borders line up only if comfy-table counts display columns, not chars.
+        let o = Outcome::new("read").table(
+            &["operand", "value"],
+            vec![vec!["VW0".into(), "温度传感器".into()], vec!["VW2".into(), "1".into()]],
+        );
+        let mut buf = Vec::new();
+        write_outcome(&mut buf, Style::default(), &o).unwrap();
+        let s = String::from_utf8(buf).unwrap();
+        let width =
+            |l: &str| l.chars().map(|c| if ('\u{4e00}'..='\u{9fff}').contains(&c) { 2 } else { 1 }).sum::<usize>();
+        let lines: Vec<&str> = s.lines().filter(|l| !l.is_empty()).collect();
+        assert!(lines.len() >= 4 && s.contains("温度传感器"), "{s}");
+        assert!(lines.iter().all(|l| width(l) == width(lines[0])), "{s}");
     }
 
     #[test]

@@ -223,6 +223,8 @@ fn sh(dir: &Path, line: &str, stdin: &str) -> std::process::Output {
         .env("XDG_DATA_HOME", home.join("data"))
         .env("XDG_CONFIG_HOME", home.join("config"))
         .env("PLCSH_STATE", "none")
+        // English unless an example says --lang: the pages show English output.
+        .env("PLCSH_LANG", "en")
         .env_remove("PLCSH_CONFIG")
         .stdin(Stdio::piped())
         .stdout(Stdio::piped())

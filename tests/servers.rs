@@ -222,6 +222,7 @@ fn eleven_hundred_connections_against_a_1024_descriptor_limit_do_not_end_the_ser
     let mut child = std::process::Command::new("sh")
         .args(["-c", &script])
         .env("PLCSH_STATE", "none")
+        .env("PLCSH_LANG", "en")
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()

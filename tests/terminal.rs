@@ -55,6 +55,7 @@ impl Tmux {
             .args(["-u", "-L", &self.socket])
             .args(args)
             .env("LANG", "C.UTF-8")
+            .env("PLCSH_LANG", "en")
             .status()
             .map(|s| s.success())
             .unwrap_or(false)

@@ -134,6 +134,7 @@ fn the_readme_windows_session_runs() {
         let o = std::process::Command::new(env!("CARGO_BIN_EXE_plcsh"))
             .args(&args)
             .env("PLCSH_STATE", "none")
+            .env("PLCSH_LANG", "en")
             .output()
             .unwrap();
         let text = format!("{}{}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr));

@@ -89,6 +89,9 @@ pub struct Options {
     /// With --fleet: how many devices are worked on at once.
     #[arg(short = 'j', long = "jobs", value_name = "N", default_value_t = 8, global = true, help_heading = GLOBAL)]
     pub jobs: usize,
+    /// The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system's; English when neither names one of these).
+    #[arg(long, value_name = "LANG", value_parser = parse_lang, global = true, help_heading = GLOBAL)]
+    pub lang: Option<crate::core::msg::Lang>,
     /// With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit).
     #[arg(long = "device-timeout", value_name = "DURATION", default_value = "60s", global = true, help_heading = GLOBAL)]
     pub device_timeout: String,
@@ -313,7 +316,13 @@ const VALUE_OPTIONS: &[&str] = &[
     "-j",
     "--jobs",
     "--device-timeout",
+    "--lang",
 ];
+
+/// `--lang`: a language plcsh speaks, by tag (`ru`, `zh-CN`) or locale name (`ru_RU.UTF-8`).
+fn parse_lang(text: &str) -> Result<crate::core::msg::Lang, String> {
+    crate::core::msg::Lang::from_tag(text).ok_or_else(|| crate::msg!("lang-unknown", lang = text).into())
+}
 
 /// What a word of the command line is, before clap sees it.
 #[derive(Clone, Copy, PartialEq, Eq, Debug)]
@@ -424,6 +433,8 @@ pub fn main() -> i32 {
 }
 
 fn run_cli() -> i32 {
+    // Messages follow PLCSH_LANG and the system's language (read on the first message only).
+    crate::core::msg::follow_system();
     let (argv, script_args) = split_script_args(std::env::args_os().collect());
     let parsed = match parse_one_shot(&argv) {
         Some(cli) => Ok(cli),
@@ -445,6 +456,9 @@ fn run_cli() -> i32 {
             return if e.use_stderr() { exit::USAGE } else { exit::OK };
         }
     };
+    if let Some(lang) = cli.lang {
+        crate::core::msg::set_choice(lang);
+    }
     crate::core::platform::enable_escapes();
     let style = Style::detect(cli.json);
     let mut out = std::io::stdout().lock();
@@ -528,7 +542,8 @@ fn unknown_subcommand(argv: &[std::ffi::OsString], e: &clap::Error) -> Option<St
     let shell_line = shell_line.trim();
     if let Some(c) = crate::shell::commands::find(shell_line.split(' ').next().unwrap_or("")) {
         if !crate::shell::commands::forms::fitting(c, shell_line[c.name.len()..].trim()).is_empty() {
-            msg.push_str(&format!("\n  hint: `{shell_line}` is a shell command: plcsh -c '{shell_line}'"));
+            let hint = crate::msg!("cli-hint-shell-command", line = shell_line);
+            msg.push_str(&format!("\n  {}", crate::msg!("label-hint", hint = hint.text)));
         }
     }
     msg.push_str(&format!("\n  `{} --help` describes each", path.join(" ")));

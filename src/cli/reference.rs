@@ -30,6 +30,7 @@ pub static GENERATED: &[Generated] = &[
     Generated { page: "reference/k2-models.md", name: "k2 models", render: models_markdown },
     Generated { page: "reference/k2-models.md", name: "k2 areas", render: areas_markdown },
     Generated { page: "reference/errors.md", name: "error kinds", render: error_kinds_markdown },
+    Generated { page: "reference/errors.md", name: "message ids", render: message_ids_markdown },
 ];
 
 /// The opening marker of a generated table.
@@ -61,6 +62,11 @@ pub static ENVIRONMENT: &[(&str, Option<&str>, &str)] = &[
         "PLCSH_CONSOLE_VT",
         None,
         "Windows: `off` treats the console as one that does not draw escape codes (plain output)",
+    ),
+    (
+        "PLCSH_LANG",
+        Some("--lang"),
+        "the language of messages (`en`, `ru`, `zh-CN`), when --lang is not given; before LC_ALL, LC_MESSAGES, LANG",
     ),
     ("NO_COLOR", None, "any non-empty value: no colour, even on a terminal (no-color.org)"),
 ];
@@ -312,63 +318,15 @@ pub fn areas_markdown() -> String {
     t
 }
 
-/// What an error kind means and what to do about it. An exhaustive match: a new kind does
-/// not compile until it is described here.
-pub fn kind_text(kind: ErrorKind) -> (&'static str, &'static str) {
-    match kind {
-        ErrorKind::Syntax => (
-            "the line does not parse: a stray character, an unclosed quote, a missing `=` in `set`",
-            "the caret under the line points at the word; `help COMMAND` shows the form",
-        ),
-        ErrorKind::Operand => (
-            "the operand is unknown or malformed (`VX0`, `M0.8`, `SMB`)",
-            "`help VW100` explains an operand; Tab completes them",
-        ),
-        ErrorKind::Value => (
-            "the value does not fit the operand (`set VB2=300`) or is not a number of the unit asked for",
-            "the message gives the range of the operand's type; use a view (`VW0/INT`) for signed values",
-        ),
-        ErrorKind::Range => (
-            "the operand is past the end of the model's area, or the model has no such area (`AIW0` on a K205-16DT)",
-            "check `model=` in the URL against the PLC (`plcsh models`); the hint names the models that have the area",
-        ),
-        ErrorKind::Unsupported => (
-            "this device or link cannot do it: SM, T and C over plain Modbus, an instruction without the helper",
-            "install the helper program for SM registers and instructions (docs/agent.md), or use the simulator",
-        ),
-        ErrorKind::Refused => (
-            "the device answered with a refusal: a Modbus exception, a servo abort code, a helper result",
-            "the hint says which; for `illegal data address` check `model=` against the PLC",
-        ),
-        ErrorKind::Link => (
-            "no answer, a timeout, a bad CRC, a dropped connection, a port that cannot be opened",
-            "the no-reply checklist: unit id, baud/parity/stop, A/B wiring, permissions, a program holding the port; `-v` shows the frames",
-        ),
-        ErrorKind::Timeout => (
-            "a wait ran out of time (`wait`, a helper command not acknowledged)",
-            "give the wait longer, or check that the PLC is in RUN and the helper is called every scan",
-        ),
-        ErrorKind::Usage => (
-            "a command was used wrongly: a missing argument, an unknown command or device, a file in use",
-            "`help COMMAND`; `devices` lists the device names",
-        ),
-        ErrorKind::Script => (
-            "a Lua script failed: a runtime error, a failed `plcsh.assert_eq`, `os.exit`",
-            "the message names file:line, with a traceback",
-        ),
-        ErrorKind::Io => (
-            "a file or the operating system failed: a file that cannot be read or written",
-            "the message names the file and the system's reason",
-        ),
-        ErrorKind::Interrupted => (
-            "Ctrl-C, SIGTERM or SIGHUP stopped the command; the abort handlers ran",
-            "run it again; the exit status says which signal (docs/reference/exit-status.md)",
-        ),
-        ErrorKind::State => (
-            "the device is in a state where the command cannot run: a PTO busy, the helper's mailbox busy, the helper stopped",
-            "wait for the running operation (`pto 0 status`), or put the PLC in RUN",
-        ),
-    }
+/// What an error kind means and what to do about it, from the catalogue's `error-kind-cause`
+/// and `error-kind-fix` (a test checks that every kind has a text of its own there).
+pub fn kind_text(kind: ErrorKind) -> (String, String) {
+    // The guide's table is English; the catalogue has the same texts in every language.
+    let en = crate::core::msg::Lang::En;
+    (
+        crate::msg!(lang: en, "error-kind-cause", kind = kind.name()).text,
+        crate::msg!(lang: en, "error-kind-fix", kind = kind.name()).text,
+    )
 }
 
 /// Every `error.kind`, with its meaning and what to do.
@@ -376,7 +334,37 @@ pub fn error_kinds_markdown() -> String {
     let mut t = String::from("| `kind` | what happened | what to do |\n|---|---|---|\n");
     for &k in ErrorKind::ALL {
         let (cause, fix) = kind_text(k);
-        t.push_str(&format!("| `{}` | {} | {} |\n", k.name(), cell(cause), cell(fix)));
+        t.push_str(&format!("| `{}` | {} | {} |\n", k.name(), cell(&cause), cell(&fix)));
     }
     t
+}
+
+/// Every message id of the catalogue with its text in each language, arguments shown as
+/// `$name` (a selector shows its catch-all form).
+pub fn message_ids_markdown() -> String {
+    use crate::core::msg::{self, Arg, Lang};
+    let mut t = String::from("| id | en | ru | zh-CN |\n|---|---|---|---|\n");
+    for id in msg::ids(Lang::En) {
+        let vars = msg::variables(Lang::En, &id);
+        let args: Vec<(&str, Arg)> = vars.iter().map(|v| (v.as_str(), Arg::Text(format!("${v}")))).collect();
+        let texts: Vec<String> = Lang::ALL.iter().map(|&l| cell(&msg::format_in(l, &id, &args))).collect();
+        t.push_str(&format!("| `{id}` | {} |\n", texts.join(" | ")));
+    }
+    t
+}
+
+#[cfg(test)]
+mod kind_tests {
+    #[test]
+    fn every_kind_has_its_own_text_in_every_language() {
+        use crate::core::msg::{format_in, Lang};
+        for &l in Lang::ALL {
+            let mut seen = std::collections::BTreeSet::new();
+            for &k in crate::core::ErrorKind::ALL {
+                let cause = format_in(l, "error-kind-cause", &[("kind", k.name().into())]);
+                let fix = format_in(l, "error-kind-fix", &[("kind", k.name().into())]);
+                assert!(seen.insert(cause.clone()) && seen.insert(fix), "{}: `{}` shares its text", l.tag(), k.name());
+            }
+        }
+    }
 }

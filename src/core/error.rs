@@ -1,8 +1,12 @@
 //! The one error type that reaches users. Every message names the device, the operand
 //! and what to try; the `kind` separates "the device refused" (a Modbus exception, a servo
 //! 0x80 abort) from "the link failed" (timeout, checksum), because a user acts differently
-//! on each. The JSON output carries `kind` so pipelines can branch on it.
+//! on each. The JSON output carries `kind` and `code` so pipelines can branch on them:
+//! `code` is the message id of the catalogue (`core::msg`) the text came from, e.g.
+//! `value-out-of-range`; a message not yet in the catalogue has the code `kind-KIND`
+//! (`kind-usage`), which names no more than its kind.
 
+use super::msg::Msg;
 use serde::Serialize;
 use std::fmt;
 
@@ -73,6 +77,58 @@ impl ErrorKind {
             ErrorKind::State => "state",
         }
     }
+
+    /// The code of an error whose message has no id in the catalogue yet: `kind-usage` …
+    pub fn default_code(self) -> &'static str {
+        match self {
+            ErrorKind::Syntax => "kind-syntax",
+            ErrorKind::Operand => "kind-operand",
+            ErrorKind::Value => "kind-value",
+            ErrorKind::Range => "kind-range",
+            ErrorKind::Unsupported => "kind-unsupported",
+            ErrorKind::Refused => "kind-refused",
+            ErrorKind::Link => "kind-link",
+            ErrorKind::Timeout => "kind-timeout",
+            ErrorKind::Usage => "kind-usage",
+            ErrorKind::Script => "kind-script",
+            ErrorKind::Io => "kind-io",
+            ErrorKind::Interrupted => "kind-interrupted",
+            ErrorKind::State => "kind-state",
+        }
+    }
+}
+
+/// The text an error is made from: a catalogue message ([`Msg`], which brings its id as the
+/// error's code) or plain text (code `kind-KIND`).
+pub struct Text {
+    code: Option<&'static str>,
+    text: String,
+}
+
+impl From<Msg> for Text {
+    fn from(m: Msg) -> Text {
+        Text { code: Some(m.id), text: m.text }
+    }
+}
+impl From<String> for Text {
+    fn from(text: String) -> Text {
+        Text { code: None, text }
+    }
+}
+impl From<&String> for Text {
+    fn from(text: &String) -> Text {
+        Text { code: None, text: text.clone() }
+    }
+}
+impl From<&str> for Text {
+    fn from(text: &str) -> Text {
+        Text { code: None, text: text.to_string() }
+    }
+}
+impl From<std::borrow::Cow<'_, str>> for Text {
+    fn from(text: std::borrow::Cow<'_, str>) -> Text {
+        Text { code: None, text: text.into_owned() }
+    }
 }
 
 /// An error with the context a user needs to act on it. Boxed, so `Result`s stay small
@@ -87,6 +143,8 @@ pub struct Error {
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Details {
     pub kind: ErrorKind,
+    /// The message id (`value-out-of-range`), or `kind-KIND` for a text not in the catalogue.
+    pub code: &'static str,
     pub message: String,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub device: Option<String>,
@@ -119,11 +177,13 @@ impl std::ops::DerefMut for Error {
 }
 
 impl Error {
-    pub fn new(kind: ErrorKind, message: impl Into<String>) -> Error {
+    pub fn new(kind: ErrorKind, message: impl Into<Text>) -> Error {
+        let Text { code, text } = message.into();
         Error {
             inner: Box::new(Details {
                 kind,
-                message: message.into(),
+                code: code.unwrap_or(kind.default_code()),
+                message: text,
                 device: None,
                 operand: None,
                 hint: None,
@@ -164,22 +224,22 @@ impl Error {
         self
     }
 
-    pub fn usage(m: impl Into<String>) -> Error {
+    pub fn usage(m: impl Into<Text>) -> Error {
         Error::new(ErrorKind::Usage, m)
     }
-    pub fn syntax(m: impl Into<String>) -> Error {
+    pub fn syntax(m: impl Into<Text>) -> Error {
         Error::new(ErrorKind::Syntax, m)
     }
-    pub fn io(m: impl Into<String>) -> Error {
+    pub fn io(m: impl Into<Text>) -> Error {
         Error::new(ErrorKind::Io, m)
     }
-    pub fn link(m: impl Into<String>) -> Error {
+    pub fn link(m: impl Into<Text>) -> Error {
         Error::new(ErrorKind::Link, m)
     }
-    pub fn unsupported(m: impl Into<String>) -> Error {
+    pub fn unsupported(m: impl Into<Text>) -> Error {
         Error::new(ErrorKind::Unsupported, m)
     }
-    pub fn state(m: impl Into<String>) -> Error {
+    pub fn state(m: impl Into<Text>) -> Error {
         Error::new(ErrorKind::State, m)
     }
 }

@@ -7,7 +7,9 @@
 //! never a silent wrap: `300` into a byte fails, `-1` into a WORD fails unless it is written
 //! as a signed type (`INT#-1`), and a bit pattern (`16#FFFF`) fills any operand of its width.
 
+use super::msg::Msg;
 use super::value::{mask, DataType, Value};
+use crate::msg;
 
 /// A parsed literal, not yet checked against an operand.
 #[derive(Clone, Debug, PartialEq)]
@@ -25,11 +27,11 @@ pub struct Literal {
 #[derive(Clone, Debug, PartialEq)]
 pub struct LiteralError {
     pub column: usize,
-    pub message: String,
+    pub message: Msg,
 }
 
-fn err(column: usize, message: impl Into<String>) -> LiteralError {
-    LiteralError { column, message: message.into() }
+fn err(column: usize, message: Msg) -> LiteralError {
+    LiteralError { column, message }
 }
 
 /// Parses one literal. Spaces around `#` are accepted (`B # 16 # 85`, as the manual's
@@ -37,11 +39,11 @@ fn err(column: usize, message: impl Into<String>) -> LiteralError {
 pub fn parse_literal(text: &str) -> Result<Literal, LiteralError> {
     let trimmed = text.trim();
     if trimmed.is_empty() {
-        return Err(err(0, "a value is missing"));
+        return Err(err(0, msg!("literal-missing")));
     }
     let compact: String = squeeze_hash_spaces(trimmed);
     if let Some(pos) = compact.find(char::is_whitespace) {
-        return Err(err(pos, format!("unexpected space in value `{trimmed}`")));
+        return Err(err(pos, msg!("literal-space", value = trimmed)));
     }
     let upper = compact.to_ascii_uppercase();
     let mut lit = match upper.as_str() {
@@ -52,7 +54,7 @@ pub fn parse_literal(text: &str) -> Result<Literal, LiteralError> {
             Literal { value: Value::Bool(false), declared: Some(DataType::Bool), pattern: false, text: String::new() }
         }
         _ => parse_typed(&upper).map_err(|mut e| {
-            e.message = as_typed(&e.message, &upper, &compact);
+            e.message.text = as_typed(&e.message.text, &upper, &compact);
             e
         })?,
     };
@@ -127,7 +129,8 @@ pub fn is_literal_head(word: &str) -> bool {
 fn parse_typed(s: &str) -> Result<Literal, LiteralError> {
     // T#500ms / TIME#1s200ms
     if let Some(rest) = s.strip_prefix("T#").or_else(|| s.strip_prefix("TIME#")) {
-        let ms = parse_duration_ms(rest).map_err(|m| err(s.len() - rest.len(), m))?;
+        let ms =
+            parse_duration_ms(rest).map_err(|m| err(s.len() - rest.len(), msg!("literal-duration", message = m)))?;
         return Ok(Literal { value: Value::Int(ms), declared: None, pattern: false, text: String::new() });
     }
     if let Some(hash) = s.find('#') {
@@ -138,17 +141,14 @@ fn parse_typed(s: &str) -> Result<Literal, LiteralError> {
             if t == DataType::Real {
                 inner.value = Value::Real(inner.value.as_f64());
             } else if let Value::Real(_) = inner.value {
-                return Err(err(
-                    hash + 1,
-                    format!("{head}# takes an integer; write REAL#{rest} for a floating-point value"),
-                ));
+                return Err(err(hash + 1, msg!("literal-typed-integer", prefix = head, rest = rest)));
             }
             let is_pattern_type = matches!(t, DataType::Byte | DataType::Word | DataType::DWord);
             if t != DataType::Real {
                 let (lo, hi) = t.int_range();
                 let v = inner.value.as_i64();
                 if v < lo || v > hi {
-                    return Err(err(0, format!("{v} does not fit {} ({lo}…{hi})", t.name())));
+                    return Err(err(0, msg!("value-does-not-fit", value = v, dtype = t.name(), min = lo, max = hi)));
                 }
             }
             return Ok(Literal {
@@ -161,10 +161,7 @@ fn parse_typed(s: &str) -> Result<Literal, LiteralError> {
         if head.chars().all(|c| c.is_ascii_digit() || c == '-') {
             return parse_number(s);
         }
-        return Err(err(
-            0,
-            format!("unknown type prefix `{head}#` (use B#, W#, DW#, INT#, DI#, REAL#, T# or a radix 2#, 8#, 16#)"),
-        ));
+        return Err(err(0, msg!("literal-unknown-prefix", prefix = head)));
     }
     parse_number(s)
 }
@@ -176,20 +173,14 @@ fn parse_number(s: &str) -> Result<Literal, LiteralError> {
         None => (false, s.strip_prefix('+').unwrap_or(s), usize::from(s.starts_with('+'))),
     };
     if body.is_empty() {
-        return Err(err(off, "a number is missing"));
+        return Err(err(off, msg!("literal-number-missing")));
     }
     // C-style radix prefixes, as mbpoll and most languages write them: say the IEC form.
     for (c, radix) in [("0X", "16#"), ("0B", "2#"), ("0O", "8#")] {
         if let Some(digits) = body.strip_prefix(c).filter(|d| !d.is_empty()) {
             let sign = if neg { "-" } else { "" };
-            return Err(err(
-                off,
-                format!(
-                    "`{sign}{}{}` is C notation; write {sign}{radix}{digits} (IEC 61131-3, as KincoBuilder does)",
-                    c.to_ascii_lowercase(),
-                    digits
-                ),
-            ));
+            let typed = format!("{sign}{}{digits}", c.to_ascii_lowercase());
+            return Err(err(off, msg!("literal-c-notation", typed = typed, iec = format!("{sign}{radix}{digits}"))));
         }
     }
     if let Some(hash) = body.find('#') {
@@ -198,26 +189,28 @@ fn parse_number(s: &str) -> Result<Literal, LiteralError> {
             "8" => 8,
             "2" => 2,
             "10" => 10,
-            r => return Err(err(off, format!("radix {r}# is not one of 2#, 8#, 10#, 16#"))),
+            r => return Err(err(off, msg!("literal-unknown-radix", radix = r))),
         };
         let digits: String = body[hash + 1..].chars().filter(|&c| c != '_').collect();
         if digits.is_empty() {
-            return Err(err(off + hash + 1, format!("no digits after {radix}#")));
+            return Err(err(off + hash + 1, msg!("literal-no-digits", radix = radix)));
         }
         if let Some((i, c)) = body[hash + 1..].char_indices().find(|&(_, c)| c != '_' && !c.is_digit(radix)) {
-            return Err(err(off + hash + 1 + i, format!("`{c}` is not a base-{radix} digit")));
+            return Err(err(
+                off + hash + 1 + i,
+                msg!("literal-not-digit-of-base", char = c.to_string(), radix = radix),
+            ));
         }
-        let v = u64::from_str_radix(&digits, radix)
-            .map_err(|_| err(off, format!("{s} is wider than 32 bits (16#FFFF_FFFF at most)")))?;
+        let v = u64::from_str_radix(&digits, radix).map_err(|_| err(off, msg!("literal-too-wide", value = s)))?;
         if v > u32::MAX as u64 {
-            return Err(err(off, format!("{s} is wider than 32 bits (16#FFFF_FFFF at most)")));
+            return Err(err(off, msg!("literal-too-wide", value = s)));
         }
         let v = if neg { -(v as i64) } else { v as i64 };
         return Ok(Literal { value: Value::Int(v), declared: None, pattern: radix != 10 && !neg, text: String::new() });
     }
     let digits: String = body.chars().filter(|&c| c != '_').collect();
     if digits.contains(['.', 'E', 'e']) {
-        let f: f64 = digits.parse().map_err(|_| err(off, format!("`{s}` is not a number")))?;
+        let f: f64 = digits.parse().map_err(|_| err(off, msg!("literal-not-number", value = s)))?;
         return Ok(Literal {
             value: Value::Real(if neg { -f } else { f }),
             declared: None,
@@ -226,9 +219,10 @@ fn parse_number(s: &str) -> Result<Literal, LiteralError> {
         });
     }
     if let Some((i, c)) = body.char_indices().find(|&(_, c)| !c.is_ascii_digit() && c != '_') {
-        return Err(err(off + i, format!("`{c}` is not a digit in `{s}`")));
+        return Err(err(off + i, msg!("literal-not-digit", char = c.to_string(), value = s)));
     }
-    let v: i64 = digits.parse().map_err(|_| err(off, format!("{s} is too large: integers go up to {}", i64::MAX)))?;
+    let v: i64 =
+        digits.parse().map_err(|_| err(off, msg!("literal-too-large", value = s, max = i64::MAX.to_string())))?;
     Ok(Literal { value: Value::Int(if neg { -v } else { v }), declared: None, pattern: false, text: String::new() })
 }
 
@@ -237,7 +231,7 @@ fn parse_number(s: &str) -> Result<Literal, LiteralError> {
 pub fn parse_duration_ms(s: &str) -> Result<i64, String> {
     let us = parse_duration_us(s)?;
     if us % 1000 != 0 {
-        return Err(format!("T#{s} is not a whole number of milliseconds"));
+        return Err(msg!("duration-not-whole-ms", value = s).into());
     }
     Ok(us / 1000)
 }
@@ -285,34 +279,37 @@ fn whole_us(us: f64, text: &str) -> Result<i64, String> {
     if us.is_finite() && us.abs() < i64::MAX as f64 {
         Ok(us.round() as i64)
     } else {
-        Err(format!("`{}` is longer than the longest duration, {} µs (about 292 000 years)", text.trim(), i64::MAX))
+        Err(msg!("duration-too-long", value = text.trim(), max = i64::MAX.to_string()).into())
     }
 }
 
 fn duration_us(s: &str) -> Result<f64, String> {
     let s = s.trim().to_ascii_lowercase();
     if s.is_empty() {
-        return Err("a duration is missing (e.g. 500ms, 2s, 250us)".into());
+        return Err(msg!("duration-missing").into());
     }
     let mut total: f64 = 0.0;
     let mut rest = s.as_str();
     while !rest.is_empty() {
         let num_len = rest.find(|c: char| !(c.is_ascii_digit() || c == '.' || c == '_')).unwrap_or(rest.len());
         if num_len == 0 {
-            return Err(format!("`{s}` is not a duration (e.g. 500ms, 2s, 250us)"));
+            return Err(msg!("duration-not-duration", value = s.as_str()).into());
         }
-        let n: f64 = rest[..num_len].replace('_', "").parse().map_err(|_| format!("`{s}` is not a duration"))?;
+        let n: f64 = rest[..num_len]
+            .replace('_', "")
+            .parse()
+            .map_err(|_| String::from(msg!("duration-not-duration", value = s.as_str())))?;
         rest = &rest[num_len..];
         let unit_len = rest.find(|c: char| c.is_ascii_digit()).unwrap_or(rest.len());
         let factor = match &rest[..unit_len] {
-            "" => return Err(format!("`{s}` needs a unit on every number (h, m, s, ms, us), e.g. {}ms or {}s", n, n)),
+            "" => return Err(msg!("duration-needs-unit", value = s.as_str(), number = n.to_string()).into()),
             "d" => 86_400e6,
             "h" => 3_600e6,
             "m" | "min" => 60e6,
             "s" => 1e6,
             "ms" => 1e3,
             "us" | "µs" => 1.0,
-            u => return Err(format!("unknown time unit `{u}` in `{s}` (use h, m, s, ms, us)")),
+            u => return Err(msg!("duration-unknown-unit", unit = u, value = s.as_str()).into()),
         };
         total += n * factor;
         rest = &rest[unit_len..];
@@ -330,17 +327,14 @@ pub const MAX_TIMEOUT: std::time::Duration = std::time::Duration::from_secs(86_4
 pub fn parse_timeout(text: &str) -> Result<std::time::Duration, String> {
     let us = option_duration_us(text)?;
     if us.is_nan() || us <= 0.0 {
-        return Err(format!("`timeout={text}` must be more than zero (e.g. 200ms)"));
+        return Err(msg!("timeout-not-positive", value = text).into());
     }
     if us < 0.5 {
         // It would round to no wait at all: every request would time out at once.
-        return Err(format!("`timeout={text}` is shorter than a microsecond, the finest a link waits (e.g. 200ms)"));
+        return Err(msg!("timeout-too-short", value = text).into());
     }
     if us > MAX_TIMEOUT.as_micros() as f64 {
-        return Err(format!(
-            "`timeout={text}` is longer than a day ({} ms), the longest a link waits for a reply",
-            MAX_TIMEOUT.as_millis()
-        ));
+        return Err(msg!("timeout-too-long", value = text, max = MAX_TIMEOUT.as_millis() as u64).into());
     }
     Ok(std::time::Duration::from_micros(us.round() as u64))
 }
@@ -363,19 +357,19 @@ pub fn parse_freq_hz(text: &str) -> std::result::Result<f64, String> {
     let t = text.trim().to_ascii_lowercase();
     let num_len = t.find(|c: char| !(c.is_ascii_digit() || c == '.' || c == '_')).unwrap_or(t.len());
     let n: f64 =
-        t[..num_len].replace('_', "").parse().map_err(|_| format!("`{text}` is not a frequency (e.g. 2kHz, 500Hz)"))?;
+        t[..num_len].replace('_', "").parse().map_err(|_| String::from(msg!("freq-not-frequency", value = text)))?;
     let f = match &t[num_len..] {
         "" | "hz" => 1.0,
         "k" | "khz" => 1e3,
         "m" | "mhz" => 1e6,
-        u => return Err(format!("unknown frequency unit `{u}` in `{text}` (use Hz, kHz)")),
+        u => return Err(msg!("freq-unknown-unit", unit = u, value = text).into()),
     };
     let hz = n * f;
     if hz <= 0.0 {
-        return Err(format!("`{text}` is not a positive frequency"));
+        return Err(msg!("freq-not-positive", value = text).into());
     }
     if !hz.is_finite() {
-        return Err(format!("`{text}` is too large a frequency to hold (at most {:e} Hz)", f64::MAX));
+        return Err(msg!("freq-too-large", value = text, max = format!("{:e}", f64::MAX)).into());
     }
     Ok(hz)
 }
@@ -384,7 +378,7 @@ impl Literal {
     /// Checks this literal against an operand of type `target` whose significant width is
     /// `bits` (equal to `target.bits()` except for bit groups such as `K1M0`, 4 bits), and
     /// returns the value in the operand's own type.
-    pub fn fit(&self, target: DataType, bits: u32) -> Result<Value, String> {
+    pub fn fit(&self, target: DataType, bits: u32) -> Result<Value, Msg> {
         let shown = &self.text;
         match target {
             DataType::Bool => {
@@ -392,14 +386,14 @@ impl Literal {
                     Value::Bool(b) => Ok(Value::Bool(b)),
                     Value::Int(0) => Ok(Value::Bool(false)),
                     Value::Int(1) => Ok(Value::Bool(true)),
-                    _ => Err(format!("{shown} does not fit a bit (use 0/1, TRUE/FALSE, ON/OFF)")),
+                    _ => Err(msg!("value-not-bit", value = shown)),
                 };
             }
             DataType::Real => {
                 return match self.value {
-                    Value::Bool(_) => Err(format!("{shown} is a bit, not a REAL")),
+                    Value::Bool(_) => Err(msg!("value-bit-not-real", value = shown)),
                     v if !fits_f32(v.as_f64()) => {
-                        Err(format!("{shown} does not fit a REAL (32-bit IEEE float: ±{:e} at most)", f32::MAX))
+                        Err(msg!("value-not-real", value = shown, max = format!("{:e}", f32::MAX)))
                     }
                     v => Ok(Value::Real(v.as_f64())),
                 };
@@ -412,62 +406,74 @@ impl Literal {
             Value::Real(r) => {
                 if self.declared == Some(DataType::Real) && bits == 32 {
                     if !fits_f32(r) {
-                        return Err(format!(
-                            "{shown} does not fit a REAL (32-bit IEEE float: ±{:e} at most)",
-                            f32::MAX
-                        ));
+                        return Err(msg!("value-not-real", value = shown, max = format!("{:e}", f32::MAX)));
                     }
                     // REAL#1.5 into a 32-bit integer operand stores the IEEE pattern.
                     return Ok(target.decode((r as f32).to_bits()));
                 }
-                return Err(format!(
-                    "{shown} is not an integer; a {} holds whole numbers (to store an IEEE float use a 32-bit operand with /REAL, e.g. VD100/REAL)",
-                    target.name()
-                ));
+                return Err(msg!("value-not-integer", value = shown, dtype = target.name()));
             }
         };
         let raw: u64 = match self.declared {
             Some(t) if t.is_signed() => {
                 if t.bits() > bits {
-                    return Err(format!(
-                        "{shown} is a {} ({} bits) and does not fit a {bits}-bit operand",
-                        t.name(),
-                        t.bits()
+                    return Err(msg!(
+                        "value-type-too-wide",
+                        value = shown,
+                        dtype = t.name(),
+                        bits = t.bits(),
+                        width = bits
                     ));
                 }
                 v as u64 & mask(bits)
             }
             Some(t) if t != DataType::Bool && t.bits() > bits => {
-                return Err(format!(
-                    "{shown} is a {} ({} bits) and does not fit a {bits}-bit operand",
-                    t.name(),
-                    t.bits()
+                return Err(msg!(
+                    "value-type-too-wide",
+                    value = shown,
+                    dtype = t.name(),
+                    bits = t.bits(),
+                    width = bits
                 ));
             }
             // A bit group narrower than its type (an FX K4Y0 viewed as DINT) is zero-extended:
             // it is never negative.
             _ if self.pattern || !target.is_signed() || bits < target.bits() => {
                 if v < 0 || v as u64 > mask(bits) {
-                    let hint = if v < 0 && !target.is_signed() {
-                        let signed = match bits {
-                            8 => "SINT",
-                            16 => "INT",
-                            _ => "DI",
-                        };
-                        format!("; write it as {signed}#{v} to store its two's complement")
-                    } else {
-                        String::new()
+                    let max = mask(bits);
+                    let signed = match bits {
+                        8 => "SINT",
+                        16 => "INT",
+                        _ => "DI",
                     };
-                    let what =
-                        if bits == target.bits() { target.name().to_string() } else { format!("a {bits}-bit group") };
-                    return Err(format!("{shown} is out of range for {what} (0…{}){hint}", mask(bits)));
+                    let group = bits != target.bits();
+                    return Err(match (v < 0 && !target.is_signed(), group) {
+                        (false, false) => msg!("value-out-of-range", value = shown, dtype = target.name(), max = max),
+                        (false, true) => msg!("value-out-of-range-group", value = shown, bits = bits, max = max),
+                        (true, false) => msg!(
+                            "value-out-of-range-signed",
+                            value = shown,
+                            dtype = target.name(),
+                            max = max,
+                            signed = signed,
+                            number = v
+                        ),
+                        (true, true) => msg!(
+                            "value-out-of-range-group-signed",
+                            value = shown,
+                            bits = bits,
+                            max = max,
+                            signed = signed,
+                            number = v
+                        ),
+                    });
                 }
                 v as u64
             }
             _ => {
                 let (lo, hi) = (-(1i64 << (bits - 1)), (1i64 << (bits - 1)) - 1);
                 if v < lo || v > hi {
-                    return Err(format!("{shown} does not fit {} ({lo}…{hi})", target.name()));
+                    return Err(msg!("value-does-not-fit", value = shown, dtype = target.name(), min = lo, max = hi));
                 }
                 v as u64 & mask(bits)
             }
@@ -504,7 +510,7 @@ mod tests {
     }
 
     fn fit(s: &str, t: DataType) -> Result<Value, String> {
-        parse_literal(s).map_err(|e| e.message)?.fit(t, t.bits())
+        parse_literal(s).map_err(|e| e.message.text)?.fit(t, t.bits()).map_err(String::from)
     }
 
     #[test]

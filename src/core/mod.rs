@@ -12,6 +12,7 @@ pub mod float_serde;
 pub mod fspath;
 pub mod link;
 pub mod literal;
+pub mod msg;
 pub mod operand;
 pub mod platform;
 pub mod signal;

@@ -36,15 +36,17 @@ pub fn count_form<T: Copy>(
     parse_one: impl Fn(&str) -> Result<T>,
     next: impl Fn(&T) -> T,
 ) -> Result<Vec<T>> {
-    let err = |col: usize, msg: String| Error::new(ErrorKind::Operand, msg).column(col);
+    let err = |col: usize, m: super::msg::Msg| Error::new(ErrorKind::Operand, m).column(col);
     let a = parse_one(&t[..open]).map_err(|e| e.shift(lead))?;
     let inner = t[open + 1..]
         .strip_suffix(']')
-        .ok_or_else(|| err(lead + t.len(), format!("missing `]` in count form (e.g. {example})")))?;
-    let n: usize =
-        inner.trim().parse().map_err(|_| err(lead + open + 1, format!("`{inner}` is not a count (e.g. {example})")))?;
+        .ok_or_else(|| err(lead + t.len(), crate::msg!("count-missing-bracket", example = example)))?;
+    let n: usize = inner
+        .trim()
+        .parse()
+        .map_err(|_| err(lead + open + 1, crate::msg!("count-not-a-count", count = inner, example = example)))?;
     if n == 0 || n > MAX_RANGE {
-        return Err(err(lead + open + 1, format!("count must be 1…{MAX_RANGE}")));
+        return Err(err(lead + open + 1, crate::msg!("count-out-of-range", max = MAX_RANGE)));
     }
     let mut out = Vec::with_capacity(n);
     let mut cur = a;

@@ -69,7 +69,7 @@ pub struct Faults {
     pub log: Vec<(u64, u32, &'static str)>,
 }
 
-fn usage(msg: impl Into<String>, words: &str) -> Error {
+fn usage(msg: impl Into<crate::core::error::Text>, words: &str) -> Error {
     Error::usage(msg).hint(format!("control words: {words}"))
 }
 

@@ -25,7 +25,7 @@ use serde_json::{json, Value as Json};
 pub const WORDS: &str =
     "input X0=1|X0=0 | inputs | fault no-reply [for=D] | fault stuck X0=1 [for=D] | fault clear [ID] | faults | events";
 
-fn usage(msg: impl Into<String>) -> Error {
+fn usage(msg: impl Into<crate::core::error::Text>) -> Error {
     Error::usage(msg).hint(format!("control words: {WORDS}"))
 }
 

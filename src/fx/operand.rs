@@ -415,7 +415,7 @@ impl FxOperand {
     }
 }
 
-fn op_err(col: usize, msg: impl Into<String>) -> Error {
+fn op_err(col: usize, msg: impl Into<crate::core::error::Text>) -> Error {
     Error::new(ErrorKind::Operand, msg).column(col)
 }
 

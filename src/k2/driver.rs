@@ -49,6 +49,7 @@ use crate::core::link::serial::{Carrier, LineSettings, Parity};
 use crate::core::trace::Proto;
 use crate::core::url::DeviceUrl;
 use crate::core::{Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
+use crate::msg;
 use client::ModbusClient;
 use std::collections::HashMap;
 use std::time::Duration;
@@ -90,13 +91,18 @@ impl Link {
     }
 
     /// What to check when the PLC does not answer.
-    fn hint(&self) -> &'static str {
+    fn hint(&self) -> String {
+        msg!("k2-hint-no-reply", link = self.kind()).into()
+    }
+
+    /// The link as the messages' `$link` selector names it.
+    fn kind(&self) -> &'static str {
         match self {
-            Link::Tcp { .. } => "check the unit id (unit=), that HOST:PORT is the PLC (a K204ET answers Modbus TCP on port 502) and that it is powered and reachable (ping)",
-            Link::Rtu { .. } => "check the unit id (unit= is the PLC port's station number), the wiring (RS485 A/B, ground), the port settings (baud=, parity=, stop=) against the PLC port's, and the port path",
-            Link::RtuOverTcp { .. } => "check the unit id (unit=), the gateway's address and port, and that its serial settings (baud, parity, stop bits) match the PLC port's",
-            Link::RtuRfc2217 { .. } => "check the unit id (unit=), the device server's address and port, and the line settings (baud=, parity=, stop=) against the PLC port's",
-            Link::Attached { .. } => "check the unit id and what is at the other end of the stream",
+            Link::Tcp { .. } => "tcp",
+            Link::Rtu { .. } => "rtu",
+            Link::RtuOverTcp { .. } => "gateway",
+            Link::RtuRfc2217 { .. } => "rfc2217",
+            Link::Attached { .. } => "stream",
         }
     }
 }
@@ -106,17 +112,10 @@ impl Link {
     /// frame was damaged on its way (Modbus over serial line V1.02 §2.5.1.2: the CRC covers
     /// the whole frame), otherwise the line carries something that is not this PLC's reply.
     fn garbled_hint(&self, bad_crc: bool) -> String {
-        let line = match self {
-            Link::Rtu { .. } => "the port settings (baud=, parity=, stop=) against the PLC port's, the wiring (RS485 A/B, ground, termination at both ends of a long line), and that no other master or device talks on the line",
-            Link::RtuOverTcp { .. } => "the gateway's serial settings (baud, parity, stop bits) against the PLC port's, the wiring from the gateway to the PLC, and that the gateway is in transparent (RTU) mode, not Modbus TCP",
-            Link::RtuRfc2217 { .. } => "the line settings (baud=, parity=, stop=) against the PLC port's and the wiring from the device server to the PLC",
-            Link::Tcp { .. } => "that HOST:PORT speaks Modbus TCP (an RTU gateway needs rtu+tcp://)",
-            Link::Attached { .. } => "what is at the other end of the stream",
-        };
         if bad_crc {
-            format!("the bytes were damaged on the way; check {line}; plcsh retries (retries=)")
+            msg!("k2-hint-damaged", link = self.kind()).into()
         } else {
-            format!("check {line}")
+            msg!("k2-hint-garbled", link = self.kind()).into()
         }
     }
 }
@@ -140,13 +139,12 @@ pub fn check_option(key: &str, value: &str) -> Result<()> {
         "timeout" => parse_timeout(value).map(|_| ()),
         "retries" => parse_retries(value).map(|_| ()),
         "agent" => Ok(()),
-        _ => Err(Error::usage(format!("K2 wire devices have no option `{key}`"))
-            .hint("options: word_order (high-first, low-first), timeout, retries, agent")),
+        _ => Err(Error::usage(msg!("k2-no-option", key = key)).hint(msg!("k2-hint-options"))),
     }
 }
 
 fn parse_retries(value: &str) -> Result<u32> {
-    value.parse().map_err(|_| Error::usage(format!("`retries={value}` is not a number")))
+    value.parse().map_err(|_| Error::usage(msg!("k2-retries-not-number", value = value)))
 }
 
 fn parse_timeout(v: &str) -> Result<Duration> {
@@ -281,17 +279,17 @@ impl K2Wire {
                     Carrier::from_url(url, "rtu:COM3?baud=19200&unit=1 or rtu:/dev/ttyUSB0?baud=19200&unit=1")?;
                 let parity = url.param("parity").unwrap_or("none");
                 let parity = Parity::parse(parity).ok_or_else(|| {
-                    Error::usage(format!("`parity={parity}` in {} is not a parity", url.text))
-                        .hint("use parity=none, parity=even or parity=odd")
+                    Error::usage(msg!("link-not-parity", parity = parity, url = url.text.as_str()))
+                        .hint(msg!("link-hint-parity"))
                 })?;
                 let stop = match url.param("stop").unwrap_or("1") {
                     "1" => 1,
                     "2" => 2,
-                    s => return Err(Error::usage(format!("`stop={s}` in {} is not 1 or 2", url.text))),
+                    s => return Err(Error::usage(msg!("link-not-stop-bits", stop = s, url = url.text.as_str()))),
                 };
                 let baud = url.param_num::<u32>("baud")?.unwrap_or(9600);
                 if baud == 0 {
-                    return Err(Error::usage(format!("`baud=0` in {} is not a baud rate", url.text)));
+                    return Err(Error::usage(msg!("link-baud-zero", url = url.text.as_str())));
                 }
                 let line = LineSettings { baud, data_bits: 8, parity, stop_bits: stop };
                 match carrier {
@@ -299,15 +297,15 @@ impl K2Wire {
                     c => Link::Rtu { path: c.key(), line },
                 }
             }
-            s => return Err(Error::usage(format!("`{s}:` is not a K2 wire scheme"))),
+            s => return Err(Error::usage(msg!("k2-not-scheme", scheme = s))),
         };
         url.expect_params(&known)?;
         let default_model = if matches!(link, Link::Tcp { .. }) { "K204ET-16DT" } else { catalog::DEFAULT_MODEL };
         let model = catalog::lookup(url.param("model").unwrap_or(default_model))?;
         let unit = url.param_num::<u8>("unit")?.unwrap_or(1);
         if unit == 0 || unit > 247 {
-            return Err(Error::usage(format!("`unit={unit}` in {} is not a Modbus unit id", url.text))
-                .hint("unit ids are 1…247 (0 is broadcast, which gets no reply)"));
+            return Err(Error::usage(msg!("link-not-unit-id", unit = unit, url = url.text.as_str()))
+                .hint(msg!("link-hint-unit-id")));
         }
         let settings = Settings {
             unit,
@@ -353,7 +351,7 @@ impl K2Wire {
         let mut dev = K2Wire::with_link(Link::Attached { rtu }, model, settings, name.clone())?;
         let proto = if rtu { Proto::ModbusRtu } else { Proto::ModbusTcp };
         let port = AsyncPort::new(Box::new(transport), &name, proto, "attached stream")
-            .map_err(|e| Error::io("cannot start a runtime for the attached stream").cause(e))?;
+            .map_err(|e| Error::io(msg!("k2-cannot-start-runtime")).cause(e))?;
         dev.ctx = Some(ModbusClient::new(Box::new(port), rtu, dev.settings.unit));
         Ok(dev)
     }
@@ -380,13 +378,13 @@ impl K2Wire {
                             p.watch_eof(closed);
                             ModbusClient::new(p, !tcp, unit)
                         })
-                        .map_err(|e| Error::link(format!("cannot use the connection to {addr}")).cause(e))
+                        .map_err(|e| Error::link(msg!("link-cannot-use-connection", addr = addr.as_str())).cause(e))
                 }
-                Link::Attached { .. } => Err(Error::link("the attached stream failed and cannot be reopened by plcsh")),
+                Link::Attached { .. } => Err(Error::link(msg!("k2-attached-failed"))),
                 Link::Rtu { path, line } => {
                     let p = port::serial_port(path, *line, &name, Proto::ModbusRtu).map_err(|e| {
                         let h = e.hint.clone().unwrap_or_default();
-                        e.hint(format!("{h}; the next command opens it again once it is back"))
+                        e.hint(msg!("k2-hint-reopen", hint = h))
                     })?;
                     Ok(ModbusClient::new(p, true, unit))
                 }
@@ -423,10 +421,7 @@ impl K2Wire {
         let fits = data.len() == 1 + data[0] as usize
             && if table.is_bits() { data.len() > want } else { data.len() == want + 1 };
         if !fits {
-            return Err(Failure::Link(Error::link(format!(
-                "the reply to a read of {} was too short",
-                span.describe()
-            ))));
+            return Err(Failure::Link(Error::link(msg!("k2-reply-too-short", span = span.describe()))));
         }
         out.clear();
         out.extend_from_slice(&data[1..]);
@@ -460,31 +455,32 @@ impl K2Wire {
                 Ok(Err(code)) => return Err(Failure::Exception(code)),
                 Err(e) if e.kind() == std::io::ErrorKind::TimedOut => {
                     self.ctx = None;
-                    last = Some(Failure::Link(Error::link(format!(
-                        "the device did not answer: no reply from unit {} within {}",
-                        self.settings.unit,
-                        ms(timeout)
+                    last = Some(Failure::Link(Error::link(msg!(
+                        "link-no-reply",
+                        unit = self.settings.unit,
+                        timeout = ms(timeout)
                     ))));
                 }
                 Err(e) if client::garbled(&e).is_some() => {
                     // Something arrived, but not a reply: say what, never "did not answer".
                     self.ctx = None;
                     let g = client::garbled(&e).expect("checked");
-                    let head = format!("unit {} sent no valid reply within {}", self.settings.unit, ms(timeout));
-                    last = Some(Failure::Link(
-                        Error::link(format!("{head}: {g}")).hint(self.link.garbled_hint(g.bad_crc.is_some())),
-                    ));
+                    let m = msg!(
+                        "link-no-valid-reply",
+                        unit = self.settings.unit,
+                        timeout = ms(timeout),
+                        what = g.to_string()
+                    );
+                    last = Some(Failure::Link(Error::link(m).hint(self.link.garbled_hint(g.bad_crc.is_some()))));
                 }
                 Err(e) => {
                     // Dropped connection, garbled or mismatched reply: start afresh.
                     self.ctx = None;
                     last = Some(Failure::Link(if self.peer_closed.load(std::sync::atomic::Ordering::Relaxed) {
                         // The stream saw the end of file (a read or a write may report it).
-                        Error::link("the PLC closed the connection instead of replying").hint(
-                            "plcsh reconnects and retries (retries=); if it keeps happening, check the PLC's limit on Modbus TCP connections and whether another client or a gateway takes the connection over",
-                        )
+                        Error::link(msg!("link-closed")).hint(msg!("k2-hint-closed"))
                     } else {
-                        Error::link("the link failed").cause(e)
+                        Error::link(msg!("link-failed")).cause(e)
                     }));
                 }
             }
@@ -493,7 +489,7 @@ impl K2Wire {
         Err(match last.expect("at least one attempt") {
             Failure::Link(mut e) => {
                 if attempts > 1 {
-                    e.message.push_str(&format!(" ({attempts} attempts)"));
+                    e.message = msg!("link-attempts", message = e.message.as_str(), attempts = attempts).text;
                 }
                 if e.hint.is_none() {
                     e = e.hint(self.link.hint());
@@ -505,33 +501,39 @@ impl K2Wire {
     }
 
     /// Puts a failure in the user's terms: what was asked, for which operand.
+    /// `doing` is `reading` or `writing` (the `$doing` selector of `k2-request`).
     fn explain(&self, f: Failure, doing: &str, span: &Span, fc: u8, op: &K2Operand, more: usize) -> Error {
-        let what = format!(
-            "{doing} {}{} ({}, FC {fc:02})",
-            op.canonical(),
-            if more > 0 { format!(" and {more} more") } else { String::new() },
-            span.describe()
-        );
+        let what = msg!(
+            "k2-request",
+            doing = doing,
+            operand = op.canonical(),
+            more = more,
+            span = span.describe(),
+            fc = format!("{fc:02}")
+        )
+        .text;
         match f {
             Failure::Link(e) => {
                 let mut e = e.operand(op.canonical());
-                e.message = format!("{what}: {}", e.message);
+                e.message = msg!("k2-while", what = what, message = e.message.as_str()).text;
                 e
             }
             Failure::Exception(code) => {
                 let c = u8::from(code);
                 let hint = match c {
-                    1 => "this PLC does not support that function code over this port".to_string(),
-                    2 => format!(
-                        "the address is outside the PLC's Modbus map; check that model={} matches the PLC",
-                        self.space.model.name
-                    ),
-                    3 => "the PLC refused the request's size or value (limits: 1600 bits or 100 registers read, 800 bits or 100 registers written)".to_string(),
-                    _ => "see the PLC's diagnostics".to_string(),
+                    1 => msg!("k2-hint-exception-1"),
+                    2 => msg!("k2-hint-exception-2", model = self.space.model.name),
+                    3 => msg!("k2-hint-exception-3"),
+                    _ => msg!("k2-hint-exception"),
                 };
                 Error::new(
                     ErrorKind::Refused,
-                    format!("the PLC refused {what}: {} (Modbus exception {c:02})", modbus_map::exception_name(c)),
+                    msg!(
+                        "k2-refused",
+                        what = what,
+                        exception = modbus_map::exception_name(c),
+                        code = format!("{c:02}")
+                    ),
                 )
                 .operand(op.canonical())
                 .hint(hint)
@@ -578,11 +580,7 @@ fn same_batch(a: &[Operand], b: &[Operand]) -> bool {
 
 /// Connects to `addr` (`HOST:PORT`) within `timeout` ([`crate::core::link::tcp::connect`]).
 fn tcp_connect(addr: &str, timeout: Duration) -> Result<std::net::TcpStream> {
-    crate::core::link::tcp::connect(
-        addr,
-        timeout,
-        "check that HOST:PORT is the PLC or gateway (a K204ET answers Modbus TCP on port 502), that it is powered and reachable (ping), and that no firewall blocks the port",
-    )
+    crate::core::link::tcp::connect(addr, timeout, &String::from(msg!("k2-hint-connect")))
 }
 
 fn with_port(target: &str) -> String {
@@ -751,7 +749,7 @@ impl K2Wire {
                 let first = run.items[0];
                 let mut e = self.explain(f, "writing", &s, fc, &k2[first], run.items.len() - 1);
                 if n > 0 {
-                    e.message.push_str(&format!("; the {n} write request(s) before it were sent"));
+                    e.message = msg!("k2-writes-before", message = e.message.as_str(), sent = n).text;
                 }
                 return Err(e);
             }

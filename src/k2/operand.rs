@@ -13,6 +13,7 @@
 
 use crate::core::text::edit_distance;
 use crate::core::{DataType, Error, ErrorKind, Result};
+use crate::msg;
 
 /// A K2 memory area.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize, serde::Deserialize)]
@@ -45,18 +46,8 @@ impl Area {
         }
     }
 
-    pub fn meaning(self) -> &'static str {
-        match self {
-            Area::I => "digital inputs",
-            Area::Q => "digital outputs",
-            Area::M => "internal memory bits",
-            Area::V => "variable memory",
-            Area::SM => "special memory (system and function registers)",
-            Area::AI => "analog inputs",
-            Area::AQ => "analog outputs",
-            Area::T => "timers (current value)",
-            Area::C => "counters (current value)",
-        }
+    pub fn meaning(self) -> String {
+        msg!("k2-area-meaning", area = self.name()).into()
     }
 
     /// Areas that have bit, byte, word and double-word forms.
@@ -245,8 +236,8 @@ pub fn default_view_at(area: Area, width: Width, byte: u32) -> DataType {
 /// Most operands a single range may expand to.
 pub use crate::core::operand::MAX_RANGE;
 
-fn op_err(col: usize, msg: impl Into<String>) -> Error {
-    Error::new(ErrorKind::Operand, msg).column(col)
+fn op_err(col: usize, m: crate::core::msg::Msg) -> Error {
+    Error::new(ErrorKind::Operand, m).column(col)
 }
 
 /// Parses an operand expression: one operand, a range `A..B`, or a count `A[n]`.
@@ -255,30 +246,21 @@ pub fn parse_expr(text: &str) -> Result<Vec<K2Operand>> {
     let t = text.trim();
     if let Some(dots) = t.find("..") {
         if let Some(more) = t[dots + 2..].find("..") {
-            return Err(op_err(
-                lead + dots + 2 + more,
-                format!("a range has one `..`: FIRST..LAST, e.g. {}", &t[..dots + 2 + more]),
-            ));
+            return Err(op_err(lead + dots + 2 + more, msg!("range-one-dots", example = &t[..dots + 2 + more])));
         }
         let a = parse_one(&t[..dots]).map_err(|e| e.shift(lead))?;
         let b = parse_one(&t[dots + 2..]).map_err(|e| e.shift(lead + dots + 2))?;
         if a.area != b.area || std::mem::discriminant(&a.width) != std::mem::discriminant(&b.width) || a.view != b.view
         {
-            return Err(op_err(
-                lead + dots + 2,
-                format!("a range needs two operands of one area and size: {}..{}", a.canonical(), b.canonical()),
-            ));
+            return Err(op_err(lead + dots + 2, msg!("range-mixed", first = a.canonical(), last = b.canonical())));
         }
         if let (Width::Group { n: na, .. }, Width::Group { n: nb, .. }) = (a.width, b.width) {
             if na != nb {
-                return Err(op_err(lead, "a range of bit groups needs one group size"));
+                return Err(op_err(lead, msg!("range-group-sizes")));
             }
         }
         if b.ordinal() < a.ordinal() {
-            return Err(op_err(
-                lead + dots + 2,
-                format!("range end {} is before its start {}", b.canonical(), a.canonical()),
-            ));
+            return Err(op_err(lead + dots + 2, msg!("range-backwards", last = b.canonical(), first = a.canonical())));
         }
         let mut out = vec![a];
         let mut cur = a;
@@ -287,17 +269,12 @@ pub fn parse_expr(text: &str) -> Result<Vec<K2Operand>> {
             if cur.ordinal() > b.ordinal() {
                 return Err(op_err(
                     lead + dots + 2,
-                    format!(
-                        "{} is not on a {}-step from {} (ranges step by the operand size)",
-                        b.canonical(),
-                        a.width.bytes(),
-                        a.canonical()
-                    ),
+                    msg!("range-off-step", last = b.canonical(), step = a.width.bytes(), first = a.canonical()),
                 ));
             }
             out.push(cur);
             if out.len() > MAX_RANGE {
-                return Err(op_err(lead, format!("range longer than {MAX_RANGE} operands")));
+                return Err(op_err(lead, msg!("range-too-long", max = MAX_RANGE)));
             }
         }
         return Ok(out);
@@ -313,17 +290,13 @@ pub fn parse_one(text: &str) -> Result<K2Operand> {
     let lead = text.len() - text.trim_start().len();
     let t = text.trim();
     if t.is_empty() {
-        return Err(op_err(lead, "an operand is missing"));
+        return Err(op_err(lead, msg!("operand-missing")));
     }
     let (body, view) = match t.find('/') {
         Some(slash) => {
             let name = &t[slash + 1..];
-            let v = DataType::from_name(name).ok_or_else(|| {
-                op_err(
-                    lead + slash + 1,
-                    format!("unknown type `{name}` (use BOOL, BYTE, SINT, WORD, INT, DWORD, DINT, REAL)"),
-                )
-            })?;
+            let v = DataType::from_name(name)
+                .ok_or_else(|| op_err(lead + slash + 1, msg!("operand-unknown-type", name = name)))?;
             (&t[..slash], Some((v, slash + 1)))
         }
         None => (t, None),
@@ -336,13 +309,16 @@ pub fn parse_one(text: &str) -> Result<K2Operand> {
         // `T37/BOOL`, `C5/BOOL`: the timer's or counter's bit (the value is `T37`).
         let element_bit = v == DataType::Bool && op.width == Width::Element;
         if !element_bit && (v.bits() != op.view.bits() || matches!(op.width, Width::Group { .. })) {
-            return Err(op_err(lead + col, format!(
-                "{} is {} bits wide; /{} needs {} bits (views keep the width: /SINT on bytes, /INT on words, /DINT or /REAL on double words)",
-                op.canonical(),
-                op.bits(),
-                v.name(),
-                v.bits()
-            )));
+            return Err(op_err(
+                lead + col,
+                msg!(
+                    "operand-view-width",
+                    operand = op.canonical(),
+                    bits = op.bits(),
+                    view = v.name(),
+                    need = v.bits()
+                ),
+            ));
         }
         op.view = v;
     }
@@ -371,13 +347,7 @@ fn address(n: u32, col: usize, original: &str) -> Result<u32> {
         return Ok(n);
     }
     let largest = crate::k2::catalog::MODELS.iter().map(|m| m.v_bytes).max().unwrap_or(1);
-    Err(op_err(
-        col,
-        format!(
-            "`{original}` is past every K2 area: addresses go up to {MAX_ADDRESS} at most (the largest area, V, ends at VB{})",
-            largest - 1
-        ),
-    ))
+    Err(op_err(col, msg!("k2-address-too-large", operand = original, max = MAX_ADDRESS, last = largest - 1)))
 }
 
 fn parse_body(s: &str, original: &str) -> Result<K2Operand> {
@@ -408,7 +378,7 @@ fn parse_body(s: &str, original: &str) -> Result<K2Operand> {
         if used < rest.len() {
             Err(op_err(
                 alen + used,
-                format!("unexpected `{}` after {}", &original[alen + used..], &original[..alen + used]),
+                msg!("operand-unexpected-after", rest = &original[alen + used..], head = &original[..alen + used]),
             ))
         } else {
             Ok(())
@@ -416,27 +386,28 @@ fn parse_body(s: &str, original: &str) -> Result<K2Operand> {
     };
     match area {
         Area::T | Area::C => {
-            let (n, len) = number(rest).ok_or_else(|| {
-                op_err(alen, format!("{} needs a number ({}0…{}255)", area.name(), area.name(), area.name()))
-            })?;
+            let (n, len) =
+                number(rest).ok_or_else(|| op_err(alen, msg!("k2-element-needs-number", area = area.name())))?;
             trailing(len)?;
             let n = address(n, alen, original)?;
             Ok(K2Operand::new(area, Width::Element, n))
         }
         Area::AI | Area::AQ => {
             let Some(r) = rest.strip_prefix('W') else {
-                return Err(op_err(alen, format!("analog values are words: {}W0, {}W2 …", area.name(), area.name())));
+                return Err(op_err(alen, msg!("k2-analog-words", area = area.name())));
             };
-            let (n, len) = number(r).ok_or_else(|| {
-                op_err(alen + 1, format!("{}W needs a byte address (e.g. {}W0)", area.name(), area.name()))
-            })?;
+            let (n, len) =
+                number(r).ok_or_else(|| op_err(alen + 1, msg!("k2-analog-needs-address", area = area.name())))?;
             trailing(len + 1)?;
             let n = address(n, alen + 1, original)?;
             if n % 2 != 0 {
                 let a = area.name();
-                let near =
-                    if n < MAX_ADDRESS { format!("{a}W{} or {a}W{}", n - 1, n + 1) } else { format!("{a}W{}", n - 1) };
-                return Err(op_err(alen + 1, format!("analog words are at even addresses: {near}")));
+                let m = if n < MAX_ADDRESS {
+                    msg!("k2-analog-even", below = format!("{a}W{}", n - 1), above = format!("{a}W{}", n + 1))
+                } else {
+                    msg!("k2-analog-even-last", below = format!("{a}W{}", n - 1))
+                };
+                return Err(op_err(alen + 1, m));
             }
             Ok(K2Operand::word(area, n))
         }
@@ -448,44 +419,36 @@ fn parse_body(s: &str, original: &str) -> Result<K2Operand> {
                 _ => None,
             };
             if let Some(w) = width {
-                let (n, len) = number(&rest[1..])
-                    .ok_or_else(|| op_err(alen + 1, format!("{}{} needs a byte address", area.name(), &rest[..1])))?;
+                let (n, len) = number(&rest[1..]).ok_or_else(|| {
+                    op_err(alen + 1, msg!("k2-needs-byte-address", operand = format!("{}{}", area.name(), &rest[..1])))
+                })?;
                 if rest[1 + len..].starts_with('.') {
-                    return Err(op_err(
-                        alen + 1 + len,
-                        format!(
-                            "a {} has no bit; write the bit as {}{n}.{}",
-                            if w == Width::Byte { "byte" } else { "word" },
-                            area.name(),
-                            &rest[2 + len..]
-                        ),
-                    ));
+                    let bit = format!("{}{n}.{}", area.name(), &rest[2 + len..]);
+                    let m = if w == Width::Byte {
+                        msg!("k2-byte-has-no-bit", bit = bit)
+                    } else {
+                        msg!("k2-word-has-no-bit", bit = bit)
+                    };
+                    return Err(op_err(alen + 1 + len, m));
                 }
                 trailing(len + 1)?;
                 let n = address(n, alen + 1, original)?;
                 return Ok(K2Operand::new(area, w, n));
             }
-            let (n, len) = number(rest).ok_or_else(|| {
-                op_err(
-                    alen,
-                    format!("{a} needs a bit (`{a}0.0`) or a size letter (`{a}B0`, `{a}W0`, `{a}D0`)", a = area.name()),
-                )
-            })?;
+            let (n, len) =
+                number(rest).ok_or_else(|| op_err(alen, msg!("k2-needs-bit-or-size", area = area.name())))?;
             let after = &rest[len..];
             let Some(b) = after.strip_prefix('.') else {
                 if after.is_empty() {
-                    return Err(op_err(
-                        alen + len,
-                        format!("{a}{n} needs a bit ({a}{n}.0) or a size ({a}B{n}, {a}W{n}, {a}D{n})", a = area.name()),
-                    ));
+                    return Err(op_err(alen + len, msg!("k2-byte-needs-bit-or-size", area = area.name(), byte = n)));
                 }
                 return trailing(len).map(|_| unreachable!());
             };
-            let (bit, blen) = number(b).ok_or_else(|| op_err(alen + len + 1, "a bit number 0…7 is missing"))?;
+            let (bit, blen) = number(b).ok_or_else(|| op_err(alen + len + 1, msg!("k2-bit-missing")))?;
             if bit > 7 {
                 return Err(op_err(
                     alen + len + 1,
-                    format!("bit {bit} does not exist: bits are 0…7 ({}{n}.7 is the last)", area.name()),
+                    msg!("k2-bit-too-large", bit = bit, last = format!("{}{n}.7", area.name())),
                 ));
             }
             trailing(len + 1 + blen)?;
@@ -498,32 +461,38 @@ fn parse_body(s: &str, original: &str) -> Result<K2Operand> {
 fn parse_group(rest: &str, original: &str) -> Result<K2Operand> {
     let n = rest.as_bytes()[0] - b'0';
     if !(1..=8).contains(&n) || rest.as_bytes().get(1).is_some_and(|c| c.is_ascii_digit()) {
-        return Err(op_err(1, "bit groups are K1…K8 (4 to 32 bits)"));
+        return Err(op_err(1, msg!("k2-group-size")));
     }
     let inner = &rest[1..];
     // A group of a group is never an operand; refusing it here keeps parsing linear (the
     // retry below would otherwise double the work for every nested `K1`).
     if inner.starts_with('K') {
-        return Err(op_err(2, format!("K{n} groups bits of I, Q, M, V or SM; groups do not nest")));
+        return Err(op_err(2, msg!("k2-group-nested", group = format!("K{n}"))));
     }
     let typed = &original[original.len() - inner.len()..];
-    let body = parse_body(inner, typed).or_else(|e| {
-        if inner.contains('.') {
-            // A bit was given: the first error is the one to report.
-            return Err(e);
-        }
-        // `K4M0` names a byte without a bit: read it as bit 0.
-        parse_body(&format!("{inner}.0"), &format!("{typed}.0"))
-    });
+    // `K4M0` names a byte without a bit: read it as bit 0. Tried first, so the usual form
+    // makes no error on the way (a message costs a catalogue look-up); a text without a bit
+    // that is not a byte of a bit area (`K4MB0`, `K4T5`) gets the first form's message.
+    let as_bit = (!inner.contains('.')).then(|| parse_body(&format!("{inner}.0"), &format!("{typed}.0")));
+    let body = match as_bit {
+        Some(Ok(op)) => Ok(op),
+        _ => parse_body(inner, typed).or_else(|e| {
+            if inner.contains('.') {
+                // A bit was given: the first error is the one to report.
+                return Err(e);
+            }
+            parse_body(&format!("{inner}.0"), &format!("{typed}.0"))
+        }),
+    };
     let op = body.map_err(|e| e.shift(2))?;
     let Width::Bit(bit) = op.width else {
         return Err(op_err(
             2,
-            format!("K{n} groups bits: write K{n}{}{} (a bit address), not a byte or word", op.area.name(), op.byte),
+            msg!("k2-group-needs-bit", group = format!("K{n}"), example = format!("K{n}{}{}", op.area.name(), op.byte)),
         ));
     };
     if !op.area.is_bit_area() {
-        return Err(op_err(2, format!("K{n} groups bits of I, Q, M, V or SM")));
+        return Err(op_err(2, msg!("k2-group-area", group = format!("K{n}"))));
     }
     Ok(K2Operand::new(op.area, Width::Group { n, bit }, op.byte))
 }
@@ -547,18 +516,18 @@ fn unknown_area(s: &str, original: &str) -> Error {
     // The message quotes the operand as typed; the hint always names something to try.
     let typed_head: String = original.chars().take_while(|c| c.is_alphabetic()).collect();
     let what = if typed_head.is_empty() {
-        format!("`{original}` is not a K2 operand: operands start with an area letter")
+        msg!("k2-not-operand-no-area", operand = original)
     } else {
-        format!("`{original}` is not a K2 operand: unknown area `{typed_head}`")
+        msg!("k2-not-operand-unknown-area", operand = original, area = typed_head)
     };
     let hint = if !suggestions.is_empty() {
-        format!("did you mean {}? areas are I Q M V SM AI AQ T C", suggestions.join(", "))
+        msg!("k2-hint-did-you-mean", suggestions = suggestions.join(", "))
     } else if head.starts_with("DB") {
-        "the K2 has no data blocks: its data memory is V (VB0, VW0, VD0 …); areas are I Q M V SM AI AQ T C".to_string()
+        msg!("k2-hint-no-data-blocks")
     } else if original.starts_with('-') {
-        "commands take no -options here; name operands such as VW0, I0.0, SMB67".to_string()
+        msg!("k2-hint-no-options")
     } else {
-        "areas are I Q M V SM AI AQ T C, e.g. VW0, I0.0, Q0.1, SMB67, T5".to_string()
+        msg!("k2-hint-areas")
     };
     op_err(0, what).hint(hint)
 }

@@ -7,6 +7,7 @@ use super::catalog::{self, Model};
 use super::operand::{self, Area, K2Operand, Width};
 use super::sm_map::{self, SmSize};
 use crate::core::{Candidate, Error, ErrorKind, Operand, OperandSpace, Result};
+use crate::msg;
 
 /// K2 operands for one model.
 #[derive(Clone, Copy, Debug)]
@@ -42,7 +43,12 @@ impl K2Space {
         if len == 0 {
             return Err(Error::new(
                 ErrorKind::Range,
-                format!("{} has no {} area ({})", self.model.name, op.area.name(), op.area.meaning()),
+                msg!(
+                    "k2-model-has-no-area",
+                    model = self.model.name,
+                    area = op.area.name(),
+                    meaning = op.area.meaning()
+                ),
             )
             .operand(name)
             .hint(self.models_with(op.area)));
@@ -50,18 +56,21 @@ impl K2Space {
         let end = op.byte as u64 + op.width.bytes() as u64;
         if end > len as u64 {
             let message = match last_of(op, len) {
-                Some(last) => format!(
-                    "{name} is past the end of the {} area on {} (last {} is {last})",
-                    op.area.name(),
-                    self.model.name,
-                    kind_word(op.width)
+                Some(last) => msg!(
+                    "k2-past-the-end",
+                    operand = name.as_str(),
+                    area = op.area.name(),
+                    model = self.model.name,
+                    size = kind_word(op.width),
+                    last = last
                 ),
-                None => format!(
-                    "{name} does not fit the {} area on {}: it has {} bits, fewer than one {} needs",
-                    op.area.name(),
-                    self.model.name,
-                    len * 8,
-                    kind_word(op.width)
+                None => msg!(
+                    "k2-area-too-small",
+                    operand = name.as_str(),
+                    area = op.area.name(),
+                    model = self.model.name,
+                    bits = len * 8,
+                    size = kind_word(op.width)
                 ),
             };
             return Err(Error::new(ErrorKind::Range, message).operand(name));
@@ -74,7 +83,7 @@ impl K2Space {
     fn past_the_end_bit(&self, text: &str, e: Error) -> Error {
         let t = text.trim();
         let Some((head, bit)) = t.rsplit_once('.') else { return e };
-        if bit.is_empty() || !bit.bytes().all(|b| b.is_ascii_digit()) || !e.message.contains("bits are 0…7") {
+        if bit.is_empty() || !bit.bytes().all(|b| b.is_ascii_digit()) || e.code != "k2-bit-too-large" {
             return e;
         }
         let Ok(ops) = operand::parse_expr(&format!("{head}.7")) else { return e };
@@ -86,15 +95,24 @@ impl K2Space {
                 let last = last_of(op, self.area_len(op.area)).unwrap_or_default();
                 Error::new(
                     ErrorKind::Range,
-                    format!(
-                        "{t}: bit {bit} does not exist (bits are 0…7), and byte {} is past the end of the {} area on {} (last bit is {last})",
-                        op.byte,
-                        op.area.name(),
-                        self.model.name
+                    msg!(
+                        "k2-bit-and-byte-past-the-end",
+                        operand = t,
+                        bit = bit,
+                        byte = op.byte,
+                        area = op.area.name(),
+                        model = self.model.name,
+                        last = last.as_str()
                     ),
                 )
                 .operand(t.to_string())
-                .hint(format!("{} on {}: {}0.0 … {last}", op.area.meaning(), self.model.name, op.area.name()))
+                .hint(msg!(
+                    "k2-hint-area-bits",
+                    meaning = op.area.meaning(),
+                    model = self.model.name,
+                    first = format!("{}0.0", op.area.name()),
+                    last = last.as_str()
+                ))
             }
         }
     }
@@ -102,7 +120,7 @@ impl K2Space {
     fn models_with(&self, area: Area) -> String {
         let with: Vec<&str> =
             catalog::MODELS.iter().filter(|m| K2Space::new(m).area_len(area) > 0).map(|m| m.name).collect();
-        format!("models with {}: {}", area.name(), with.join(", "))
+        msg!("k2-hint-models-with", area = area.name(), models = with.join(", ")).into()
     }
 
     /// Parses and bounds-checks, returning K2 operands.
@@ -115,12 +133,13 @@ impl K2Space {
     }
 }
 
+/// The operand size as the messages' `$size` selector names it (`k2-past-the-end`).
 fn kind_word(w: Width) -> &'static str {
     match w {
         Width::Bit(_) => "bit",
         Width::Byte => "byte",
         Width::Word => "word",
-        Width::DWord => "double word",
+        Width::DWord => "dword",
         Width::Group { .. } => "group",
         Width::Element => "element",
     }

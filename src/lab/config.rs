@@ -36,6 +36,9 @@ struct Raw {
     /// Lua modules in the lab folder a submission may `require` (a fresh copy each).
     #[serde(default)]
     shared: Vec<String>,
+    /// The language of the lab's messages and verdicts (`en`, `ru`, `zh-CN`), whatever the
+    /// grader's locale.
+    language: Option<String>,
 }
 
 #[derive(Deserialize, Default)]
@@ -225,6 +228,11 @@ impl Lab {
     pub fn parse(text: &str, dir: &Path) -> Result<Lab> {
         let raw: Raw =
             toml::from_str(text).map_err(|e| Error::usage(format!("{}: {}", dir.join(FILE).display(), e.message())))?;
+        if let Some(tag) = &raw.language {
+            let lang = crate::core::msg::Lang::from_tag(tag)
+                .ok_or_else(|| Error::usage(format!("{FILE}: {}", crate::msg!("lang-unknown", lang = tag.as_str()))))?;
+            crate::core::msg::set_language(lang);
+        }
         let file = |key: &str, name: &str| -> Result<PathBuf> {
             let p = dir.join(name);
             let real = crate::core::fspath::canonical(&p).map_err(|e| {

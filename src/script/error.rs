@@ -173,7 +173,7 @@ impl Failure {
     pub fn human(&self) -> String {
         let mut s = format!("error[{}]: {}\n", self.error.kind.name(), self.headline());
         if let Some(h) = &self.error.hint {
-            s.push_str(&format!("  hint: {h}\n"));
+            s.push_str(&format!("  {}\n", crate::msg!("label-hint", hint = h.as_str())));
         }
         if let Some(t) = &self.traceback {
             s.push_str("stack traceback:\n");

@@ -244,7 +244,7 @@ pub fn short_type(t: DataType) -> &'static str {
     }
 }
 
-fn operand_err(m: impl Into<String>) -> Error {
+fn operand_err(m: impl Into<crate::core::error::Text>) -> Error {
     Error::new(ErrorKind::Operand, m)
 }
 

@@ -73,7 +73,7 @@ impl Completer for ShellHelper {
     fn complete(&self, line: &str, pos: usize, _ctx: &Context<'_>) -> rustyline::Result<(usize, Vec<Pair>)> {
         let Some(s) = &self.session else { return Ok((pos, Vec::new())) };
         let c = complete::complete(line, pos, &view_of(s, &complete::list_paths));
-        let width = c.items.iter().map(|s| s.text.chars().count()).max().unwrap_or(0);
+        let width = c.items.iter().map(|s| super::term::width(&s.text)).max().unwrap_or(0);
         // rustyline lists candidates in columns two apart: a candidate with its meaning is
         // cut between words to fit the terminal (80 columns when its size is unknown).
         let cols = super::term::size().map_or(80, |(c, _)| c).max(20);
@@ -93,10 +93,12 @@ pub fn menu_line(text: &str, meaning: &str, width: usize, cols: usize) -> String
         return text.to_string();
     }
     let room = cols.saturating_sub(2);
-    if text.chars().count() + 4 > room {
+    let w = super::term::width(text);
+    if w + 4 > room {
         return text.to_string();
     }
-    super::term::fit_words(&format!("{text:<width$}  {meaning}"), room)
+    let pad = " ".repeat(width.saturating_sub(w));
+    super::term::fit_words(&format!("{text}{pad}  {meaning}"), room)
 }
 
 impl Hinter for ShellHelper {
@@ -118,7 +120,7 @@ impl Hinter for ShellHelper {
         }?;
         // A hint longer than the rest of the terminal line would wrap under the prompt: cut it.
         let Some((cols, _)) = super::term::size() else { return Some(hint) };
-        let room = cols.saturating_sub(self.prompt_width + line.chars().count() + 1);
+        let room = cols.saturating_sub(self.prompt_width + super::term::width(line) + 1);
         Some(ShellHint { display: super::term::fit_words(&hint.display, room), insert: hint.insert })
     }
 }

@@ -135,7 +135,7 @@ fn suggest_subcommand(spec: &commands::CommandSpec, args: Args, e: Error) -> Err
     if d > 2 || d >= word.len() {
         return e;
     }
-    e.hint(format!("did you mean `{} {near}`? `help {}` shows its usage", spec.name, spec.name))
+    e.hint(crate::msg!("shell-hint-subcommand", command = spec.name, near = near))
 }
 
 /// One naming rule for every result (docs/json.md): `cmd` is the command's registry name, and
@@ -229,7 +229,7 @@ impl Shell {
         let lead = rest.len() - rest.trim_start().len();
         let args = Args { text: rest.trim(), offset: offset + name_len + lead };
         let Some(spec) = commands::find(&name) else {
-            let e = Error::new(ErrorKind::Usage, format!("unknown command `{name}`"))
+            let e = Error::new(ErrorKind::Usage, crate::msg!("shell-unknown-command", name = name.as_str()))
                 .column(offset)
                 .hint(commands::suggest(&name));
             return Err((name, e));

@@ -31,12 +31,15 @@ pub fn plcsh() -> Command {
 
 /// Gives a command (plcsh, or a shell that runs plcsh) this test process's private HOME and
 /// data/config folders and no state file, so nothing depends on the user's files or on
-/// another plcsh running on the machine.
+/// another plcsh running on the machine, nor on the machine's language.
 pub fn own_world(c: &mut Command) -> &mut Command {
     let home = std::env::temp_dir().join(format!("plcsh-test-home-{}", std::process::id()));
     let _ = std::fs::create_dir_all(&home);
     c.env("HOME", &home).env("XDG_DATA_HOME", home.join("data")).env("XDG_CONFIG_HOME", home.join("config"));
     c.env_remove("NO_COLOR").env_remove("PLCSH_CONFIG");
+    // Messages in English whatever the machine's locale (LC_ALL, LANG) or PLCSH_LANG: tests
+    // that check other languages say so with --lang.
+    c.env("PLCSH_LANG", "en");
     // No test touches a default state file; tests about state name theirs with --state.
     c.env("PLCSH_STATE", "none")
 }

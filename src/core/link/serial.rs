@@ -11,6 +11,7 @@
 use super::transport::Transport;
 use crate::core::url::DeviceUrl;
 use crate::core::{Error, Result};
+use crate::msg;
 use std::io::{self, Read, Write};
 use std::time::Duration;
 
@@ -48,15 +49,15 @@ impl Carrier {
         let carrier = u.scheme.split_once('+').map(|(_, c)| c);
         let target = u.target.trim();
         if target.is_empty() {
-            return Err(Error::usage(format!("{} names no serial port", u.text))
-                .hint(format!("e.g. {example} (`plcsh ports` lists this computer's serial ports)")));
+            return Err(Error::usage(msg!("link-no-port-named", url = u.text.as_str()))
+                .hint(msg!("link-hint-port-example", example = example)));
         }
         match carrier {
             None => Ok(Carrier::Port(target.to_string())),
             Some("tcp") => Ok(Carrier::Tcp(super::tcp::with_port(target, u)?)),
             Some("rfc2217") => Ok(Carrier::Rfc2217(super::tcp::with_port(target, u)?)),
-            Some(other) => Err(Error::usage(format!("`+{other}` in {} is not a way to reach a serial line", u.text))
-                .hint("use +tcp://HOST:PORT (a device server's raw TCP port) or +rfc2217://HOST:PORT")),
+            Some(other) => Err(Error::usage(msg!("link-unknown-carrier", carrier = other, url = u.text.as_str()))
+                .hint(msg!("link-hint-carriers"))),
         }
     }
 
@@ -89,11 +90,12 @@ pub fn open(c: &Carrier, settings: LineSettings) -> Result<Box<dyn Transport>> {
 
 /// What to check when a port cannot be opened.
 pub fn open_hint() -> String {
-    format!(
-        "`plcsh ports` lists this computer's serial ports and their USB adapters; check the name ({}), that no other program (KincoBuilder, a terminal program) holds the port{}",
-        super::sys::PORT_EXAMPLES,
-        super::sys::PERMISSION_HINT
-    )
+    let examples = super::sys::PORT_EXAMPLES;
+    if super::sys::PORT_GROUP {
+        msg!("link-hint-open-port-group", examples = examples).into()
+    } else {
+        msg!("link-hint-open-port", examples = examples).into()
+    }
 }
 
 /// Opens a port on this computer (exclusively: a second program cannot open it meanwhile).
@@ -101,7 +103,7 @@ pub fn open_port(path: &str, settings: LineSettings) -> Result<SerialPort> {
     builder(path, settings)
         .open_native()
         .map(SerialPort)
-        .map_err(|e| Error::link(format!("cannot open serial port {path}")).cause(e).hint(open_hint()))
+        .map_err(|e| Error::link(msg!("link-cannot-open-port", port = path)).cause(e).hint(open_hint()))
 }
 
 /// A serial port on this computer (a tty or a COM port).
@@ -155,7 +157,7 @@ pub struct PortInfo {
 /// The serial ports the operating system reports, sorted by name (COM2 before COM10).
 pub fn ports() -> Result<Vec<PortInfo>> {
     let found = serialport::available_ports()
-        .map_err(|e| Error::io("cannot list the serial ports").cause(e).hint(super::sys::PORT_LIST_HINT))?;
+        .map_err(|e| Error::io(msg!("link-cannot-list-ports")).cause(e).hint(super::sys::port_list_hint()))?;
     let mut list: Vec<PortInfo> = found
         .into_iter()
         .filter(|p| super::sys::listed_port(&p.port_name))

@@ -12,6 +12,7 @@
 use super::transport::Transport;
 use crate::core::url::DeviceUrl;
 use crate::core::{Error, Result};
+use crate::msg;
 use std::io::{self, Read, Write};
 use std::net::{SocketAddr, TcpListener, TcpStream, ToSocketAddrs};
 use std::sync::mpsc;
@@ -28,9 +29,8 @@ pub fn with_port(target: &str, u: &DeviceUrl) -> Result<String> {
     let t = target.trim_end_matches('/');
     match t.rsplit_once(':') {
         Some((host, p)) if !host.is_empty() && p.parse::<u16>().is_ok_and(|p| p > 0) => Ok(t.to_string()),
-        _ => Err(Error::usage(format!("`{target}` in {} is not HOST:PORT", u.text)).hint(
-            "give the device server's address and the TCP port of its serial channel, e.g. 192.168.127.254:4001",
-        )),
+        _ => Err(Error::usage(msg!("link-not-host-port", target = target, url = u.text.as_str()))
+            .hint(msg!("link-hint-host-port"))),
     }
 }
 
@@ -38,7 +38,7 @@ pub fn with_port(target: &str, u: &DeviceUrl) -> Result<String> {
 /// A host name is looked up on a thread of its own, so a name server that does not answer
 /// costs the timeout, not a hang. `hint` says what to check when nothing answers.
 pub fn connect(addr: &str, timeout: Duration, hint: &str) -> Result<TcpStream> {
-    let refused = |e: io::Error| Error::link(format!("cannot connect to {addr}")).cause(e).hint(hint.to_string());
+    let refused = |e: io::Error| Error::link(msg!("link-cannot-connect", addr = addr)).cause(e).hint(hint.to_string());
     let start = Instant::now();
     let addrs: Vec<SocketAddr> = match addr.parse::<SocketAddr>() {
         Ok(a) => vec![a],
@@ -51,11 +51,12 @@ pub fn connect(addr: &str, timeout: Duration, hint: &str) -> Result<TcpStream> {
             match rx.recv_timeout(timeout) {
                 Ok(r) => r.map_err(refused)?,
                 Err(_) => {
-                    return Err(Error::link(format!(
-                        "cannot connect to {addr}: the name was not looked up within {} ms",
-                        timeout.as_millis()
+                    return Err(Error::link(msg!(
+                        "link-name-not-looked-up",
+                        addr = addr,
+                        ms = timeout.as_millis() as u64
                     ))
-                    .hint("use the IP address, or check the name server"))
+                    .hint(msg!("link-hint-name-server")))
                 }
             }
         }
@@ -73,16 +74,18 @@ pub fn connect(addr: &str, timeout: Duration, hint: &str) -> Result<TcpStream> {
     }
     Err(match last {
         Some(e) if e.kind() == io::ErrorKind::TimedOut => {
-            Error::link(format!("cannot connect to {addr}: no answer within {} ms", timeout.as_millis()))
+            Error::link(msg!("link-connect-timeout", addr = addr, ms = timeout.as_millis() as u64))
                 .hint(hint.to_string())
         }
         Some(e) => refused(e),
-        None => refused(io::Error::new(io::ErrorKind::NotFound, "the name resolves to no address")),
+        None => refused(io::Error::new(io::ErrorKind::NotFound, String::from(msg!("link-no-address")))),
     })
 }
 
 /// What to check when a serial device server does not answer.
-pub const SERVER_HINT: &str = "check the device server's address and the TCP port of this serial channel, that it is in raw TCP server mode (or RFC 2217 for +rfc2217://), that no other client holds the channel, and that no firewall blocks the port";
+pub fn server_hint() -> String {
+    msg!("link-hint-server").into()
+}
 
 /// Receives into `buf` within `timeout` on a blocking stream: 0 when nothing came, an
 /// `UnexpectedEof` error when the peer closed.
@@ -90,7 +93,7 @@ fn recv_within(s: &mut TcpStream, buf: &mut [u8], timeout: Duration) -> io::Resu
     // A zero read timeout means "block forever" to the socket API: ask for 1 µs instead.
     s.set_read_timeout(Some(timeout.max(Duration::from_micros(1))))?;
     match s.read(buf) {
-        Ok(0) => Err(io::Error::new(io::ErrorKind::UnexpectedEof, "the connection closed")),
+        Ok(0) => Err(io::Error::new(io::ErrorKind::UnexpectedEof, String::from(msg!("link-connection-closed")))),
         Ok(n) => Ok(n),
         Err(e) if matches!(e.kind(), io::ErrorKind::WouldBlock | io::ErrorKind::TimedOut) => Ok(0),
         Err(e) if e.kind() == io::ErrorKind::Interrupted => Ok(0),
@@ -119,7 +122,7 @@ pub struct TcpLine {
 
 impl TcpLine {
     pub fn connect(addr: &str, timeout: Duration) -> Result<TcpLine> {
-        Ok(TcpLine { stream: connect(addr, timeout, SERVER_HINT)? })
+        Ok(TcpLine { stream: connect(addr, timeout, &server_hint())? })
     }
 
     pub fn from_stream(stream: TcpStream) -> TcpLine {
@@ -148,9 +151,7 @@ impl ServedTcp {
     /// Listens on `addr` (port 0 picks a free port, see [`ServedTcp::local_addr`]).
     pub fn bind(addr: SocketAddr) -> Result<ServedTcp> {
         let listener = TcpListener::bind(addr).map_err(|e| {
-            Error::io(format!("cannot listen on {addr}"))
-                .cause(e)
-                .hint("choose another port (0 picks a free one); ports below 1024 need privileges")
+            Error::io(msg!("link-cannot-listen", addr = addr.to_string())).cause(e).hint(msg!("link-hint-listen"))
         })?;
         let local = listener.local_addr()?;
         let (tx, incoming) = mpsc::channel();
@@ -163,7 +164,7 @@ impl ServedTcp {
                     }
                 }
             })
-            .map_err(|e| Error::io("cannot start the accepting thread").cause(e))?;
+            .map_err(|e| Error::io(msg!("link-cannot-start-thread")).cause(e))?;
         Ok(ServedTcp { local, incoming, client: None })
     }
 

@@ -19,8 +19,36 @@ use windows as sys;
 
 pub use sys::{
     create_private_dir, discard_typed_ahead, durable_rename, install_stop_handlers, interrupt_child, keep_c_shims,
-    name_file, stop_signal, terminal_size, terminate_child, thread_cpu_time, unnamed_file, utc_offset,
+    name_file, stop_signal, terminal_size, terminate_child, thread_cpu_time, ui_language, unnamed_file, utc_offset,
 };
+
+/// The language tag of a Windows LANGID (`GetUserDefaultUILanguage`): its primary language
+/// (low 10 bits) and, for Chinese, its script by sub-language (`0x0804` zh-CN and `0x1004`
+/// zh-SG are Simplified; `0x0404` zh-TW, `0x0C04` zh-HK, `0x1404` zh-MO Traditional).
+/// Pure, so tested on every system; `core::msg::Lang::from_tag` reads the result.
+pub fn langid_tag(id: u16) -> &'static str {
+    match (id & 0x3ff, id >> 10) {
+        (0x09, _) => "en",
+        (0x19, _) => "ru",
+        (0x04, 0x01 | 0x03 | 0x05) => "zh-TW",
+        (0x04, _) => "zh-CN",
+        _ => "und",
+    }
+}
+
+#[cfg(test)]
+mod language_tests {
+    #[test]
+    fn langids_name_their_languages() {
+        assert_eq!(super::langid_tag(0x0409), "en");
+        assert_eq!(super::langid_tag(0x0419), "ru");
+        assert_eq!(super::langid_tag(0x0804), "zh-CN");
+        assert_eq!(super::langid_tag(0x1004), "zh-CN");
+        assert_eq!(super::langid_tag(0x0404), "zh-TW");
+        assert_eq!(super::langid_tag(0x0C04), "zh-TW");
+        assert_eq!(super::langid_tag(0x0407), "und");
+    }
+}
 
 /// A standard stream that output with escape codes may go to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

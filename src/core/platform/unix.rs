@@ -26,6 +26,12 @@ pub fn install_stop_handlers(interrupt: &Arc<AtomicBool>, received: &'static Ato
     }
 }
 
+/// The user's language as POSIX says to look for messages: the first set of `LC_ALL`,
+/// `LC_MESSAGES`, `LANG` (an empty one counts as unset).
+pub fn ui_language() -> Option<String> {
+    ["LC_ALL", "LC_MESSAGES", "LANG"].iter().find_map(|k| std::env::var(k).ok().filter(|v| !v.is_empty()))
+}
+
 /// A Unix terminal takes escape codes as it is: nothing to switch on.
 pub fn enable_escapes() {}
 

@@ -77,6 +77,14 @@ pub fn install_stop_handlers(interrupt: &Arc<AtomicBool>, received: &'static Ato
 /// Whether standard output and error take escape codes, decided once (see [`enable_escapes`]).
 static ESCAPES: OnceLock<[bool; 2]> = OnceLock::new();
 
+/// The user's UI language (Settings › Time & language), as a tag: Windows programs speak the
+/// language of the user's interface, not of the locale's number formats.
+pub fn ui_language() -> Option<String> {
+    // SAFETY: takes nothing, returns the user's UI language as a LANGID.
+    let id = unsafe { windows_sys::Win32::Globalization::GetUserDefaultUILanguage() };
+    Some(super::langid_tag(id).to_string())
+}
+
 /// Creates a folder for this user's own files. Windows has no mode bits: a folder in the
 /// user's temporary folder (`%LOCALAPPDATA%\Temp`) inherits an access list that admits only
 /// the user, administrators and the system.

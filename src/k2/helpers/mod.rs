@@ -156,7 +156,7 @@ pub fn parse_us(text: &str) -> std::result::Result<u64, String> {
 }
 
 /// A value error naming the option.
-pub(crate) fn bad(option: &str, msg: impl Into<String>) -> Error {
+pub(crate) fn bad(option: &str, msg: impl Into<crate::core::error::Text>) -> Error {
     Error::new(ErrorKind::Value, msg).operand(option.to_string())
 }
 

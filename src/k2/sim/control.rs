@@ -23,7 +23,7 @@ use serde_json::{json, Value as Json};
 /// The control words, for messages.
 pub const WORDS: &str = "fault KIND … | fault clear [ID|all] | faults | events | state";
 
-fn usage(msg: impl Into<String>) -> Error {
+fn usage(msg: impl Into<crate::core::error::Text>) -> Error {
     Error::usage(msg).hint(format!("control words: {WORDS}; faults: {USAGE}"))
 }
 

@@ -68,7 +68,7 @@ pub struct Request {
 
 pub const USAGE: &str = "servo sim fault [drive] [CODE] | fault no-reply|bad-checksum|drop-echo [count=N|all] | fault delay 50ms | fault abort OBJECT CODE | fault clear | switch [home|neg|pos] POS|off | pulses freq=HZ count=N [dir=fwd|rev] | strict on|off";
 
-fn usage(msg: impl Into<String>, col: usize) -> Error {
+fn usage(msg: impl Into<crate::core::error::Text>, col: usize) -> Error {
     Error::usage(msg).column(col).hint(USAGE)
 }
 

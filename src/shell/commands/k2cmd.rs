@@ -115,6 +115,6 @@ pub fn opt<'a>(opts: &[Opt<'a>], key: &str) -> Option<(usize, &'a str)> {
 }
 
 /// A value error at a column.
-pub fn value_err(col: usize, msg: impl Into<String>) -> Error {
+pub fn value_err(col: usize, msg: impl Into<crate::core::error::Text>) -> Error {
     Error::new(ErrorKind::Value, msg).column(col)
 }

@@ -213,8 +213,8 @@ pub fn suggest(name: &str) -> String {
         COMMANDS.iter().map(|c| (crate::core::text::edit_distance(name, c.name), c.name)).collect();
     best.sort();
     match best.first() {
-        Some((d, n)) if *d <= 2 => format!("did you mean `{n}`? `help` lists the commands"),
-        _ => "`help` lists the commands".to_string(),
+        Some((d, n)) if *d <= 2 => crate::msg!("shell-hint-did-you-mean", name = *n).into(),
+        _ => crate::msg!("shell-hint-help").into(),
     }
 }
 

@@ -25,7 +25,7 @@ use serde_json::{json, Value as Json};
 /// The control words, for messages.
 pub const WORDS: &str = "input I3=1|I3=0|I3 freq=2Hz | inputs | flash-fail PAGE|off | fault no-reply [for=D] | fault stuck I3=1 [for=D] | fault clear | faults | events";
 
-fn usage(msg: impl Into<String>) -> Error {
+fn usage(msg: impl Into<crate::core::error::Text>) -> Error {
     Error::usage(msg).hint(format!("control words: {WORDS}"))
 }
 

@@ -16,11 +16,13 @@ use std::path::Path;
 /// Port names as a user of this system writes them (for hints).
 pub const PORT_EXAMPLES: &str =
     "/dev/ttyUSB0, /dev/ttyACM0, /dev/ttyS0, /dev/serial/by-id/…, /dev/cu.usbserial-… on macOS";
-/// Why a port may refuse to open besides a wrong name.
-pub const PERMISSION_HINT: &str =
-    ", and that you may open it (the dialout group: sudo usermod -aG dialout $USER, then log in again)";
+/// Whether a port may refuse to open because the user is not in its group (dialout): the
+/// open hint then says how to join it (`link-hint-open-port-group`).
+pub const PORT_GROUP: bool = true;
 /// What to check when listing ports fails.
-pub const PORT_LIST_HINT: &str = "ls /dev/ttyUSB* /dev/ttyACM* /dev/serial/by-id shows the ports the kernel has";
+pub fn port_list_hint() -> String {
+    crate::msg!("link-hint-list-ports-dev").into()
+}
 
 /// Whether `ports` lists a port the OS reports: Linux reports every `ttyS` slot the kernel
 /// reserved, present or not, so those without a device behind them are left out.

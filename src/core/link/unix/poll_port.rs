@@ -19,11 +19,13 @@ pub fn tcp_port(stream: std::net::TcpStream, link: &str, proto: Proto, peer: &st
 /// Opens a serial port (exclusively) as a deadline port.
 pub fn serial_port(path: &str, settings: LineSettings, link: &str, proto: Proto) -> Result<Box<dyn Port>> {
     let port = crate::core::link::serial::builder(path, settings).open_native().map_err(|e| {
-        Error::link(format!("cannot open the serial port {path}")).cause(e).hint(crate::core::link::serial::open_hint())
+        Error::link(crate::msg!("link-cannot-open-port", port = path))
+            .cause(e)
+            .hint(crate::core::link::serial::open_hint())
     })?;
     PollPort::new(port, link, proto, path)
         .map(|p| Box::new(p) as Box<dyn Port>)
-        .map_err(|e| Error::link(format!("cannot use the serial port {path}")).cause(e))
+        .map_err(|e| Error::link(crate::msg!("link-cannot-use-port", port = path)).cause(e))
 }
 
 /// A descriptor owned by `T` (a `TcpStream`, a `serialport::TTYPort`, whose `Drop` releases

@@ -17,10 +17,12 @@ use std::path::Path;
 
 /// Port names as a user of this system writes them (for hints).
 pub const PORT_EXAMPLES: &str = "COM3, COM10; Device Manager → Ports (COM & LPT) shows them too";
-/// Why a port may refuse to open besides a wrong name.
-pub const PERMISSION_HINT: &str = "";
+/// Whether a port may refuse to open because the user is not in its group: not on Windows.
+pub const PORT_GROUP: bool = false;
 /// What to check when listing ports fails.
-pub const PORT_LIST_HINT: &str = "Device Manager → Ports (COM & LPT) shows the ports Windows has";
+pub fn port_list_hint() -> String {
+    crate::msg!("link-hint-list-ports-device-manager").into()
+}
 
 /// Every port Windows reports is listed.
 pub fn listed_port(_name: &str) -> bool {

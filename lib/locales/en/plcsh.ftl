@@ -1,0 +1,256 @@
+# plcsh's messages in English: the reference catalogue. Every id here is in ru/ and zh-CN/ too,
+# with the same arguments (tests: core::msg). docs/development.md, "How to add a message".
+# Operands, mnemonics, commands, options and JSON keys stay as they are in every language.
+
+## The shape of an error (core::error, output)
+
+# The label before an error's hint, on the line under `error[KIND]: …`.
+label-hint = hint: { $hint }
+
+# What each `error.kind` means and what to do (the table of docs/reference/errors.md).
+error-kind-cause = { $kind ->
+    [syntax] the line does not parse: a stray character, an unclosed quote, a missing `=` in `set`
+    [operand] the operand is unknown or malformed (`VX0`, `M0.8`, `SMB`)
+    [value] the value does not fit the operand (`set VB2=300`) or is not a number of the unit asked for
+    [range] the operand is past the end of the model's area, or the model has no such area (`AIW0` on a K205-16DT)
+    [unsupported] this device or link cannot do it: SM, T and C over plain Modbus, an instruction without the helper
+    [refused] the device answered with a refusal: a Modbus exception, a servo abort code, a helper result
+    [link] no answer, a timeout, a bad CRC, a dropped connection, a port that cannot be opened
+    [timeout] a wait ran out of time (`wait`, a helper command not acknowledged)
+    [usage] a command was used wrongly: a missing argument, an unknown command or device, a file in use
+    [script] a Lua script failed: a runtime error, a failed `plcsh.assert_eq`, `os.exit`
+    [io] a file or the operating system failed: a file that cannot be read or written
+    [interrupted] Ctrl-C, SIGTERM or SIGHUP stopped the command; the abort handlers ran
+   *[state] the device is in a state where the command cannot run: a PTO busy, the helper's mailbox busy, the helper stopped
+}
+error-kind-fix = { $kind ->
+    [syntax] the caret under the line points at the word; `help COMMAND` shows the form
+    [operand] `help VW100` explains an operand; Tab completes them
+    [value] the message gives the range of the operand's type; use a view (`VW0/INT`) for signed values
+    [range] check `model=` in the URL against the PLC (`plcsh models`); the hint names the models that have the area
+    [unsupported] install the helper program for SM registers and instructions (docs/agent.md), or use the simulator
+    [refused] the hint says which; for `illegal data address` check `model=` against the PLC
+    [link] the no-reply checklist: unit id, baud/parity/stop, A/B wiring, permissions, a program holding the port; `-v` shows the frames
+    [timeout] give the wait longer, or check that the PLC is in RUN and the helper is called every scan
+    [usage] `help COMMAND`; `devices` lists the device names
+    [script] the message names file:line, with a traceback
+    [io] the message names the file and the system's reason
+    [interrupted] run it again; the exit status says which signal (docs/reference/exit-status.md)
+   *[state] wait for the running operation (`pto 0 status`), or put the PLC in RUN
+}
+
+# `--lang` or `language` naming a language plcsh does not speak.
+lang-unknown = unknown language `{ $lang }`: plcsh speaks en, ru, zh-CN
+
+## Values (core::literal): IEC 61131-3 literals and whether they fit an operand
+
+literal-missing = a value is missing
+literal-space = unexpected space in value `{ $value }`
+literal-duration = { $message }
+literal-typed-integer = { $prefix }# takes an integer; write REAL#{ $rest } for a floating-point value
+literal-unknown-prefix = unknown type prefix `{ $prefix }#` (use B#, W#, DW#, INT#, DI#, REAL#, T# or a radix 2#, 8#, 16#)
+literal-number-missing = a number is missing
+literal-c-notation = `{ $typed }` is C notation; write { $iec } (IEC 61131-3, as KincoBuilder does)
+literal-unknown-radix = radix { $radix }# is not one of 2#, 8#, 10#, 16#
+literal-no-digits = no digits after { $radix }#
+literal-not-digit-of-base = `{ $char }` is not a base-{ $radix } digit
+literal-too-wide = { $value } is wider than 32 bits (16#FFFF_FFFF at most)
+literal-not-number = `{ $value }` is not a number
+literal-not-digit = `{ $char }` is not a digit in `{ $value }`
+literal-too-large = { $value } is too large: integers go up to { $max }
+value-does-not-fit = { $value } does not fit { $dtype } ({ $min }…{ $max })
+value-not-bit = { $value } does not fit a bit (use 0/1, TRUE/FALSE, ON/OFF)
+value-bit-not-real = { $value } is a bit, not a REAL
+value-not-real = { $value } does not fit a REAL (32-bit IEEE float: ±{ $max } at most)
+value-not-integer = { $value } is not an integer; a { $dtype } holds whole numbers (to store an IEEE float use a 32-bit operand with /REAL, e.g. VD100/REAL)
+value-type-too-wide = { $value } is a { $dtype } ({ $bits } bits) and does not fit a { $width }-bit operand
+value-out-of-range = { $value } is out of range for { $dtype } (0…{ $max })
+value-out-of-range-group = { $value } is out of range for a { $bits }-bit group (0…{ $max })
+value-out-of-range-signed = { $value } is out of range for { $dtype } (0…{ $max }); write it as { $signed }#{ $number } to store its two's complement
+value-out-of-range-group-signed = { $value } is out of range for a { $bits }-bit group (0…{ $max }); write it as { $signed }#{ $number } to store its two's complement
+
+## Durations, timeouts and frequencies (core::literal)
+
+duration-not-whole-ms = T#{ $value } is not a whole number of milliseconds
+duration-too-long = `{ $value }` is longer than the longest duration, { $max } µs (about 292 000 years)
+duration-missing = a duration is missing (e.g. 500ms, 2s, 250us)
+duration-not-duration = `{ $value }` is not a duration (e.g. 500ms, 2s, 250us)
+duration-needs-unit = `{ $value }` needs a unit on every number (h, m, s, ms, us), e.g. { $number }ms or { $number }s
+duration-unknown-unit = unknown time unit `{ $unit }` in `{ $value }` (use h, m, s, ms, us)
+timeout-not-positive = `timeout={ $value }` must be more than zero (e.g. 200ms)
+timeout-too-short = `timeout={ $value }` is shorter than a microsecond, the finest a link waits (e.g. 200ms)
+timeout-too-long = `timeout={ $value }` is longer than a day ({ $max } ms), the longest a link waits for a reply
+freq-not-frequency = `{ $value }` is not a frequency (e.g. 2kHz, 500Hz)
+freq-unknown-unit = unknown frequency unit `{ $unit }` in `{ $value }` (use Hz, kHz)
+freq-not-positive = `{ $value }` is not a positive frequency
+freq-too-large = `{ $value }` is too large a frequency to hold (at most { $max } Hz)
+
+## Operand expressions: counts and ranges (core::operand, k2::operand)
+
+count-missing-bracket = missing `]` in count form (e.g. { $example })
+count-not-a-count = `{ $count }` is not a count (e.g. { $example })
+count-out-of-range = count must be 1…{ $max }
+range-one-dots = a range has one `..`: FIRST..LAST, e.g. { $example }
+range-mixed = a range needs two operands of one area and size: { $first }..{ $last }
+range-group-sizes = a range of bit groups needs one group size
+range-backwards = range end { $last } is before its start { $first }
+range-off-step = { $last } is not on a { $step }-step from { $first } (ranges step by the operand size)
+range-too-long = range longer than { $max } operands
+operand-missing = an operand is missing
+operand-unknown-type = unknown type `{ $name }` (use BOOL, BYTE, SINT, WORD, INT, DWORD, DINT, REAL)
+operand-view-width = { $operand } is { $bits } bits wide; /{ $view } needs { $need } bits (views keep the width: /SINT on bytes, /INT on words, /DINT or /REAL on double words)
+operand-unexpected-after = unexpected `{ $rest }` after { $head }
+
+## K2 operands (k2::operand, k2::space; K2 manual §3.2)
+
+k2-area-meaning = { $area ->
+    [I] digital inputs
+    [Q] digital outputs
+    [M] internal memory bits
+    [V] variable memory
+    [SM] special memory (system and function registers)
+    [AI] analog inputs
+    [AQ] analog outputs
+    [T] timers (current value)
+   *[C] counters (current value)
+}
+k2-address-too-large = `{ $operand }` is past every K2 area: addresses go up to { $max } at most (the largest area, V, ends at VB{ $last })
+k2-element-needs-number = { $area } needs a number ({ $area }0…{ $area }255)
+k2-analog-words = analog values are words: { $area }W0, { $area }W2 …
+k2-analog-needs-address = { $area }W needs a byte address (e.g. { $area }W0)
+k2-analog-even = analog words are at even addresses: { $below } or { $above }
+k2-analog-even-last = analog words are at even addresses: { $below }
+k2-needs-byte-address = { $operand } needs a byte address
+k2-byte-has-no-bit = a byte has no bit; write the bit as { $bit }
+k2-word-has-no-bit = a word has no bit; write the bit as { $bit }
+k2-needs-bit-or-size = { $area } needs a bit (`{ $area }0.0`) or a size letter (`{ $area }B0`, `{ $area }W0`, `{ $area }D0`)
+k2-byte-needs-bit-or-size = { $area }{ $byte } needs a bit ({ $area }{ $byte }.0) or a size ({ $area }B{ $byte }, { $area }W{ $byte }, { $area }D{ $byte })
+k2-bit-missing = a bit number 0…7 is missing
+k2-bit-too-large = bit { $bit } does not exist: bits are 0…7 ({ $last } is the last)
+k2-group-size = bit groups are K1…K8 (4 to 32 bits)
+k2-group-nested = { $group } groups bits of I, Q, M, V or SM; groups do not nest
+k2-group-needs-bit = { $group } groups bits: write { $example } (a bit address), not a byte or word
+k2-group-area = { $group } groups bits of I, Q, M, V or SM
+k2-not-operand-no-area = `{ $operand }` is not a K2 operand: operands start with an area letter
+k2-not-operand-unknown-area = `{ $operand }` is not a K2 operand: unknown area `{ $area }`
+k2-hint-did-you-mean = did you mean { $suggestions }? areas are I Q M V SM AI AQ T C
+k2-hint-no-data-blocks = the K2 has no data blocks: its data memory is V (VB0, VW0, VD0 …); areas are I Q M V SM AI AQ T C
+k2-hint-no-options = commands take no -options here; name operands such as VW0, I0.0, SMB67
+k2-hint-areas = areas are I Q M V SM AI AQ T C, e.g. VW0, I0.0, Q0.1, SMB67, T5
+k2-model-has-no-area = { $model } has no { $area } area ({ $meaning })
+k2-hint-models-with = models with { $area }: { $models }
+k2-past-the-end = { $operand } is past the end of the { $area } area on { $model } (last { $size ->
+        [bit] bit
+        [byte] byte
+        [word] word
+        [dword] double word
+        [group] group
+       *[element] element
+    } is { $last })
+k2-area-too-small = { $operand } does not fit the { $area } area on { $model }: it has { $bits } bits, fewer than one { $size ->
+        [bit] bit
+        [byte] byte
+        [word] word
+        [dword] double word
+        [group] group
+       *[element] element
+    } needs
+k2-bit-and-byte-past-the-end = { $operand }: bit { $bit } does not exist (bits are 0…7), and byte { $byte } is past the end of the { $area } area on { $model } (last bit is { $last })
+k2-hint-area-bits = { $meaning } on { $model }: { $first } … { $last }
+
+## Links: no reply, timeouts, ports (core::link, k2::driver)
+
+link-no-reply = the device did not answer: no reply from unit { $unit } within { $timeout }
+link-no-valid-reply = unit { $unit } sent no valid reply within { $timeout }: { $what }
+link-closed = the PLC closed the connection instead of replying
+link-failed = the link failed
+link-attempts = { $message } ({ $attempts ->
+        [one] { $attempts } attempt
+       *[other] { $attempts } attempts
+    })
+k2-hint-no-reply = { $link ->
+    [tcp] check the unit id (unit=), that HOST:PORT is the PLC (a K204ET answers Modbus TCP on port 502) and that it is powered and reachable (ping)
+    [rtu] check the unit id (unit= is the PLC port's station number), the wiring (RS485 A/B, ground), the port settings (baud=, parity=, stop=) against the PLC port's, and the port path
+    [gateway] check the unit id (unit=), the gateway's address and port, and that its serial settings (baud, parity, stop bits) match the PLC port's
+    [rfc2217] check the unit id (unit=), the device server's address and port, and the line settings (baud=, parity=, stop=) against the PLC port's
+   *[stream] check the unit id and what is at the other end of the stream
+}
+k2-hint-garbled = { $link ->
+    [rtu] check the port settings (baud=, parity=, stop=) against the PLC port's, the wiring (RS485 A/B, ground, termination at both ends of a long line), and that no other master or device talks on the line
+    [gateway] check the gateway's serial settings (baud, parity, stop bits) against the PLC port's, the wiring from the gateway to the PLC, and that the gateway is in transparent (RTU) mode, not Modbus TCP
+    [rfc2217] check the line settings (baud=, parity=, stop=) against the PLC port's and the wiring from the device server to the PLC
+    [tcp] check that HOST:PORT speaks Modbus TCP (an RTU gateway needs rtu+tcp://)
+   *[stream] check what is at the other end of the stream
+}
+k2-hint-damaged = { $link ->
+    [rtu] the bytes were damaged on the way; check the port settings (baud=, parity=, stop=) against the PLC port's, the wiring (RS485 A/B, ground, termination at both ends of a long line), and that no other master or device talks on the line; plcsh retries (retries=)
+    [gateway] the bytes were damaged on the way; check the gateway's serial settings (baud, parity, stop bits) against the PLC port's, the wiring from the gateway to the PLC, and that the gateway is in transparent (RTU) mode, not Modbus TCP; plcsh retries (retries=)
+    [rfc2217] the bytes were damaged on the way; check the line settings (baud=, parity=, stop=) against the PLC port's and the wiring from the device server to the PLC; plcsh retries (retries=)
+    [tcp] the bytes were damaged on the way; check that HOST:PORT speaks Modbus TCP (an RTU gateway needs rtu+tcp://); plcsh retries (retries=)
+   *[stream] the bytes were damaged on the way; check what is at the other end of the stream; plcsh retries (retries=)
+}
+k2-hint-closed = plcsh reconnects and retries (retries=); if it keeps happening, check the PLC's limit on Modbus TCP connections and whether another client or a gateway takes the connection over
+link-cannot-connect = cannot connect to { $addr }
+link-name-not-looked-up = cannot connect to { $addr }: the name was not looked up within { $ms } ms
+link-hint-name-server = use the IP address, or check the name server
+link-connect-timeout = cannot connect to { $addr }: no answer within { $ms } ms
+link-cannot-listen = cannot listen on { $addr }
+link-hint-listen = choose another port (0 picks a free one); ports below 1024 need privileges
+link-cannot-open-port = cannot open serial port { $port }
+link-cannot-use-port = cannot use the serial port { $port }
+link-hint-open-port = `plcsh ports` lists this computer's serial ports and their USB adapters; check the name ({ $examples }), that no other program (KincoBuilder, a terminal program) holds the port
+link-hint-open-port-group = `plcsh ports` lists this computer's serial ports and their USB adapters; check the name ({ $examples }), that no other program (KincoBuilder, a terminal program) holds the port, and that you may open it (the dialout group: sudo usermod -aG dialout $USER, then log in again)
+link-not-host-port = `{ $target }` in { $url } is not HOST:PORT
+link-hint-host-port = give the device server's address and the TCP port of its serial channel, e.g. 192.168.127.254:4001
+link-no-address = the name resolves to no address
+link-hint-server = check the device server's address and the TCP port of this serial channel, that it is in raw TCP server mode (or RFC 2217 for +rfc2217://), that no other client holds the channel, and that no firewall blocks the port
+link-connection-closed = the connection closed
+link-cannot-start-thread = cannot start the accepting thread
+link-no-port-named = { $url } names no serial port
+link-hint-port-example = e.g. { $example } (`plcsh ports` lists this computer's serial ports)
+link-unknown-carrier = `+{ $carrier }` in { $url } is not a way to reach a serial line
+link-hint-carriers = use +tcp://HOST:PORT (a device server's raw TCP port) or +rfc2217://HOST:PORT
+link-cannot-list-ports = cannot list the serial ports
+link-hint-list-ports-dev = ls /dev/ttyUSB* /dev/ttyACM* /dev/serial/by-id shows the ports the kernel has
+link-hint-list-ports-device-manager = Device Manager → Ports (COM & LPT) shows the ports Windows has
+k2-no-option = K2 wire devices have no option `{ $key }`
+k2-hint-options = options: word_order (high-first, low-first), timeout, retries, agent
+k2-retries-not-number = `retries={ $value }` is not a number
+k2-not-scheme = `{ $scheme }:` is not a K2 wire scheme
+k2-cannot-start-runtime = cannot start a runtime for the attached stream
+k2-attached-failed = the attached stream failed and cannot be reopened by plcsh
+k2-hint-reopen = { $hint }; the next command opens it again once it is back
+k2-reply-too-short = the reply to a read of { $span } was too short
+k2-request = { $doing ->
+        [reading] reading
+       *[writing] writing
+    } { $operand }{ $more ->
+        [0] {""}
+       *[other] {" "}and { $more } more
+    } ({ $span }, FC { $fc })
+k2-while = { $what }: { $message }
+k2-refused = the PLC refused { $what }: { $exception } (Modbus exception { $code })
+k2-hint-exception-1 = this PLC does not support that function code over this port
+k2-hint-exception-2 = the address is outside the PLC's Modbus map; check that model={ $model } matches the PLC
+k2-hint-exception-3 = the PLC refused the request's size or value (limits: 1600 bits or 100 registers read, 800 bits or 100 registers written)
+k2-hint-exception = see the PLC's diagnostics
+k2-hint-connect = check that HOST:PORT is the PLC or gateway (a K204ET answers Modbus TCP on port 502), that it is powered and reachable (ping), and that no firewall blocks the port
+k2-writes-before = { $message }; the { $sent } write request(s) before it were sent
+link-not-parity = `parity={ $parity }` in { $url } is not a parity
+link-hint-parity = use parity=none, parity=even or parity=odd
+link-not-stop-bits = `stop={ $stop }` in { $url } is not 1 or 2
+link-baud-zero = `baud=0` in { $url } is not a baud rate
+link-not-unit-id = `unit={ $unit }` in { $url } is not a Modbus unit id
+link-hint-unit-id = unit ids are 1…247 (0 is broadcast, which gets no reply)
+link-cannot-use-connection = cannot use the connection to { $addr }
+
+## The command line (cli)
+
+cli-hint-shell-command = `{ $line }` is a shell command: plcsh -c '{ $line }'
+
+## The shell (shell)
+
+shell-unknown-command = unknown command `{ $name }`
+shell-hint-did-you-mean = did you mean `{ $name }`? `help` lists the commands
+shell-hint-help = `help` lists the commands
+shell-hint-subcommand = did you mean `{ $command } { $near }`? `help { $command }` shows its usage

@@ -1,0 +1,257 @@
+# Сообщения plcsh на русском языке. Термины — по глоссарию (shared/spec/glossary.md): как их пишут
+# руководства K2 и УМПК. Операнды, мнемоники, команды, ключи и поля JSON не переводятся.
+
+## Вид ошибки (core::error, output)
+
+label-hint = подсказка: { $hint }
+
+error-kind-cause = { $kind ->
+    [syntax] строка не разбирается: лишний символ, незакрытая кавычка, нет `=` в `set`
+    [operand] операнд неизвестен или записан неверно (`VX0`, `M0.8`, `SMB`)
+    [value] значение не помещается в операнд (`set VB2=300`) или не является числом в нужных единицах
+    [range] операнд за концом области памяти модели, или у модели нет такой области (`AIW0` на K205-16DT)
+    [unsupported] это устройство или линия связи так не умеет: SM, T и C по обычному Modbus, инструкция без программы-помощника
+    [refused] устройство ответило отказом: исключение Modbus, код отказа сервопривода, результат программы-помощника
+    [link] нет ответа, тайм-аут, неверная контрольная сумма (CRC), разорванное соединение, порт не открывается
+    [timeout] ожидание не дождалось (`wait`, команда программе-помощнику не подтверждена)
+    [usage] команда использована неверно: нет аргумента, неизвестная команда или устройство, файл занят
+    [script] сценарий Lua завершился с ошибкой: ошибка выполнения, не выполнен `plcsh.assert_eq`, `os.exit`
+    [io] ошибка файла или операционной системы: файл не читается или не записывается
+    [interrupted] команду остановили Ctrl-C, SIGTERM или SIGHUP; обработчики прерывания выполнены
+   *[state] устройство в состоянии, в котором команда не выполняется: PTO занят, почтовый ящик программы-помощника занят, программа-помощник остановлена
+}
+error-kind-fix = { $kind ->
+    [syntax] знак ^ под строкой указывает на слово; `help COMMAND` показывает форму команды
+    [operand] `help VW100` объясняет операнд; Tab дополняет операнды
+    [value] в сообщении указан диапазон типа операнда; для значений со знаком используйте вид (`VW0/INT`)
+    [range] сверьте `model=` в URL с ПЛК (`plcsh models`); подсказка называет модели, у которых эта область есть
+    [unsupported] установите программу-помощник для регистров SM и инструкций (docs/agent.md) или используйте симулятор
+    [refused] подсказка говорит, какой отказ; при `illegal data address` сверьте `model=` с ПЛК
+    [link] проверьте по списку «нет ответа»: unit id, baud/parity/stop, подключение A/B, права доступа, программу, занявшую порт; `-v` показывает пакеты
+    [timeout] дайте ожиданию больше времени или проверьте, что ПЛК в режиме RUN и программа-помощник вызывается в каждом цикле сканирования
+    [usage] `help COMMAND`; `devices` перечисляет имена устройств
+    [script] сообщение называет файл:строку и показывает трассировку
+    [io] сообщение называет файл и причину, названную системой
+    [interrupted] запустите снова; код завершения говорит, какой сигнал (docs/reference/exit-status.md)
+   *[state] дождитесь окончания текущей операции (`pto 0 status`) или переведите ПЛК в режим RUN
+}
+
+lang-unknown = неизвестный язык `{ $lang }`: plcsh говорит на en, ru, zh-CN
+
+## Значения (core::literal): литералы IEC 61131-3 и проверка, помещаются ли они в операнд
+
+literal-missing = не указано значение
+literal-space = лишний пробел в значении `{ $value }`
+literal-duration = { $message }
+literal-typed-integer = { $prefix }# принимает целое число; для числа с плавающей точкой напишите REAL#{ $rest }
+literal-unknown-prefix = неизвестный префикс типа `{ $prefix }#` (используйте B#, W#, DW#, INT#, DI#, REAL#, T# или основание 2#, 8#, 16#)
+literal-number-missing = не указано число
+literal-c-notation = `{ $typed }` — запись языка C; напишите { $iec } (IEC 61131-3, как в KincoBuilder)
+literal-unknown-radix = основание { $radix }# не из числа 2#, 8#, 10#, 16#
+literal-no-digits = нет цифр после { $radix }#
+literal-not-digit-of-base = `{ $char }` не цифра в системе по основанию { $radix }
+literal-too-wide = { $value } шире 32 бит (не больше 16#FFFF_FFFF)
+literal-not-number = `{ $value }` не число
+literal-not-digit = `{ $char }` не цифра в `{ $value }`
+literal-too-large = { $value } слишком велико: целые числа — до { $max }
+value-does-not-fit = { $value } не помещается в { $dtype } ({ $min }…{ $max })
+value-not-bit = { $value } не помещается в бит (используйте 0/1, TRUE/FALSE, ON/OFF)
+value-bit-not-real = { $value } — бит, а не REAL
+value-not-real = { $value } не помещается в REAL (32-битное число IEEE с плавающей точкой: не больше ±{ $max })
+value-not-integer = { $value } не целое число; { $dtype } хранит целые числа (чтобы записать число IEEE с плавающей точкой, возьмите 32-битный операнд с /REAL, например VD100/REAL)
+value-type-too-wide = { $value } — это { $dtype } ({ $bits } бит), он не помещается в { $width }-битный операнд
+value-out-of-range = { $value } вне диапазона { $dtype } (0…{ $max })
+value-out-of-range-group = { $value } вне диапазона { $bits }-битной группы (0…{ $max })
+value-out-of-range-signed = { $value } вне диапазона { $dtype } (0…{ $max }); напишите { $signed }#{ $number }, чтобы записать его дополнительный код
+value-out-of-range-group-signed = { $value } вне диапазона { $bits }-битной группы (0…{ $max }); напишите { $signed }#{ $number }, чтобы записать его дополнительный код
+
+## Длительности, тайм-ауты и частоты (core::literal)
+
+duration-not-whole-ms = T#{ $value } — не целое число миллисекунд
+duration-too-long = `{ $value }` длиннее самой долгой длительности, { $max } мкс (около 292 000 лет)
+duration-missing = не указана длительность (например 500ms, 2s, 250us)
+duration-not-duration = `{ $value }` не длительность (например 500ms, 2s, 250us)
+duration-needs-unit = в `{ $value }` у каждого числа нужна единица (h, m, s, ms, us), например { $number }ms или { $number }s
+duration-unknown-unit = неизвестная единица времени `{ $unit }` в `{ $value }` (используйте h, m, s, ms, us)
+timeout-not-positive = `timeout={ $value }` должен быть больше нуля (например 200ms)
+timeout-too-short = `timeout={ $value }` короче микросекунды, самого короткого ожидания линии связи (например 200ms)
+timeout-too-long = `timeout={ $value }` длиннее суток ({ $max } мс), самого долгого ожидания ответа
+freq-not-frequency = `{ $value }` не частота (например 2kHz, 500Hz)
+freq-unknown-unit = неизвестная единица частоты `{ $unit }` в `{ $value }` (используйте Hz, kHz)
+freq-not-positive = `{ $value }` не положительная частота
+freq-too-large = `{ $value }` — слишком большая частота (не больше { $max } Hz)
+
+## Выражения операндов: количество и диапазоны (core::operand, k2::operand)
+
+count-missing-bracket = нет `]` в записи с количеством (например { $example })
+count-not-a-count = `{ $count }` не количество (например { $example })
+count-out-of-range = количество должно быть 1…{ $max }
+range-one-dots = в диапазоне одно `..`: ПЕРВЫЙ..ПОСЛЕДНИЙ, например { $example }
+range-mixed = диапазону нужны два операнда одной области и одного размера: { $first }..{ $last }
+range-group-sizes = диапазону групп битов нужен один размер группы
+range-backwards = конец диапазона { $last } раньше его начала { $first }
+range-off-step = { $last } не попадает в шаг { $step } от { $first } (диапазон идёт с шагом размера операнда)
+range-too-long = диапазон длиннее { $max } операндов
+operand-missing = не указан операнд
+operand-unknown-type = неизвестный тип `{ $name }` (используйте BOOL, BYTE, SINT, WORD, INT, DWORD, DINT, REAL)
+operand-view-width = ширина { $operand } — { $bits } бит; /{ $view } нужно { $need } бит (вид сохраняет ширину: /SINT для байтов, /INT для слов, /DINT или /REAL для двойных слов)
+operand-unexpected-after = лишнее `{ $rest }` после { $head }
+
+## Операнды K2 (k2::operand, k2::space; руководство K2 §3.2)
+
+k2-area-meaning = { $area ->
+    [I] дискретные входы
+    [Q] дискретные выходы
+    [M] внутренние биты памяти
+    [V] область V (память переменных)
+    [SM] область SM (системные и функциональные регистры)
+    [AI] аналоговые входы
+    [AQ] аналоговые выходы
+    [T] таймеры (текущее значение)
+   *[C] счетчики (текущее значение)
+}
+k2-address-too-large = `{ $operand }` за пределами всех областей K2: адреса — не больше { $max } (самая большая область, V, кончается на VB{ $last })
+k2-element-needs-number = после { $area } нужен номер ({ $area }0…{ $area }255)
+k2-analog-words = аналоговые значения — слова: { $area }W0, { $area }W2 …
+k2-analog-needs-address = после { $area }W нужен адрес байта (например { $area }W0)
+k2-analog-even = аналоговые слова стоят по чётным адресам: { $below } или { $above }
+k2-analog-even-last = аналоговые слова стоят по чётным адресам: { $below }
+k2-needs-byte-address = после { $operand } нужен адрес байта
+k2-byte-has-no-bit = у байта нет бита; бит записывается как { $bit }
+k2-word-has-no-bit = у слова нет бита; бит записывается как { $bit }
+k2-needs-bit-or-size = после { $area } нужен бит (`{ $area }0.0`) или буква размера (`{ $area }B0`, `{ $area }W0`, `{ $area }D0`)
+k2-byte-needs-bit-or-size = после { $area }{ $byte } нужен бит ({ $area }{ $byte }.0) или размер ({ $area }B{ $byte }, { $area }W{ $byte }, { $area }D{ $byte })
+k2-bit-missing = не указан номер бита 0…7
+k2-bit-too-large = бита { $bit } нет: биты 0…7 (последний — { $last })
+k2-group-size = группы битов — K1…K8 (от 4 до 32 бит)
+k2-group-nested = { $group } группирует биты I, Q, M, V или SM; группы не вкладываются друг в друга
+k2-group-needs-bit = { $group } группирует биты: напишите { $example } (адрес бита), а не байт или слово
+k2-group-area = { $group } группирует биты I, Q, M, V или SM
+k2-not-operand-no-area = `{ $operand }` не операнд K2: операнд начинается с буквы области
+k2-not-operand-unknown-area = `{ $operand }` не операнд K2: неизвестная область `{ $area }`
+k2-hint-did-you-mean = может быть, { $suggestions }? области: I Q M V SM AI AQ T C
+k2-hint-no-data-blocks = у K2 нет блоков данных: его память данных — область V (VB0, VW0, VD0 …); области: I Q M V SM AI AQ T C
+k2-hint-no-options = здесь команды не принимают -ключей; назовите операнды, например VW0, I0.0, SMB67
+k2-hint-areas = области: I Q M V SM AI AQ T C, например VW0, I0.0, Q0.1, SMB67, T5
+k2-model-has-no-area = у { $model } нет области { $area } ({ $meaning })
+k2-hint-models-with = модели с областью { $area }: { $models }
+k2-past-the-end = { $operand } за концом области { $area } на { $model } (последний { $size ->
+        [bit] бит
+        [byte] байт
+        [word] слово
+        [dword] двойное слово
+        [group] группа
+       *[element] элемент
+    } — { $last })
+k2-area-too-small = { $operand } не помещается в область { $area } на { $model }: в ней { $bits } бит, меньше, чем нужно для { $size ->
+        [bit] бита
+        [byte] байта
+        [word] слова
+        [dword] двойного слова
+        [group] группы
+       *[element] элемента
+    }
+k2-bit-and-byte-past-the-end = { $operand }: бита { $bit } нет (биты 0…7), а байт { $byte } за концом области { $area } на { $model } (последний бит — { $last })
+k2-hint-area-bits = { $meaning } на { $model }: { $first } … { $last }
+
+## Связь: нет ответа, тайм-ауты, порты (core::link, k2::driver)
+
+link-no-reply = устройство не ответило: нет ответа от unit { $unit } за { $timeout }
+link-no-valid-reply = unit { $unit } не прислал верного ответа за { $timeout }: { $what }
+link-closed = ПЛК закрыл соединение вместо ответа
+link-failed = ошибка связи
+link-attempts = { $message } ({ $attempts ->
+        [one] { $attempts } попытка
+        [few] { $attempts } попытки
+       *[many] { $attempts } попыток
+    })
+k2-hint-no-reply = { $link ->
+    [tcp] проверьте unit id (unit=), что HOST:PORT — это ПЛК (K204ET отвечает по Modbus TCP на порту 502) и что он включён и доступен (ping)
+    [rtu] проверьте unit id (unit= — номер станции порта ПЛК), подключение (RS485 A/B, земля), настройки порта (baud=, parity=, stop=) против настроек порта ПЛК и путь к порту
+    [gateway] проверьте unit id (unit=), адрес и порт шлюза и что его настройки последовательного порта (скорость, четность, стоповые биты) совпадают с настройками порта ПЛК
+    [rfc2217] проверьте unit id (unit=), адрес и порт сервера устройств и настройки линии (baud=, parity=, stop=) против настроек порта ПЛК
+   *[stream] проверьте unit id и что находится на другом конце потока
+}
+k2-hint-garbled = { $link ->
+    [rtu] проверьте настройки порта (baud=, parity=, stop=) против настроек порта ПЛК, подключение (RS485 A/B, земля, терминаторы на обоих концах длинной линии) и что на линии не говорит другой ведущий или другое устройство
+    [gateway] проверьте настройки последовательного порта шлюза (скорость, четность, стоповые биты) против настроек порта ПЛК, подключение от шлюза к ПЛК и что шлюз в прозрачном режиме (RTU), а не Modbus TCP
+    [rfc2217] проверьте настройки линии (baud=, parity=, stop=) против настроек порта ПЛК и подключение от сервера устройств к ПЛК
+    [tcp] проверьте, что HOST:PORT говорит на Modbus TCP (шлюзу RTU нужен rtu+tcp://)
+   *[stream] проверьте, что находится на другом конце потока
+}
+k2-hint-damaged = { $link ->
+    [rtu] байты повреждены по дороге; проверьте настройки порта (baud=, parity=, stop=) против настроек порта ПЛК, подключение (RS485 A/B, земля, терминаторы на обоих концах длинной линии) и что на линии не говорит другой ведущий или другое устройство; plcsh повторяет запрос (retries=)
+    [gateway] байты повреждены по дороге; проверьте настройки последовательного порта шлюза (скорость, четность, стоповые биты) против настроек порта ПЛК, подключение от шлюза к ПЛК и что шлюз в прозрачном режиме (RTU), а не Modbus TCP; plcsh повторяет запрос (retries=)
+    [rfc2217] байты повреждены по дороге; проверьте настройки линии (baud=, parity=, stop=) против настроек порта ПЛК и подключение от сервера устройств к ПЛК; plcsh повторяет запрос (retries=)
+    [tcp] байты повреждены по дороге; проверьте, что HOST:PORT говорит на Modbus TCP (шлюзу RTU нужен rtu+tcp://); plcsh повторяет запрос (retries=)
+   *[stream] байты повреждены по дороге; проверьте, что находится на другом конце потока; plcsh повторяет запрос (retries=)
+}
+k2-hint-closed = plcsh переподключается и повторяет запрос (retries=); если это повторяется, проверьте ограничение ПЛК на число соединений Modbus TCP и не перехватывает ли соединение другой клиент или шлюз
+link-cannot-connect = не удаётся подключиться к { $addr }
+link-name-not-looked-up = не удаётся подключиться к { $addr }: имя не найдено за { $ms } мс
+link-hint-name-server = укажите IP-адрес или проверьте сервер имён
+link-connect-timeout = не удаётся подключиться к { $addr }: нет ответа за { $ms } мс
+link-cannot-listen = не удаётся слушать { $addr }
+link-hint-listen = выберите другой порт (0 — любой свободный); для портов ниже 1024 нужны права
+link-cannot-open-port = не удаётся открыть последовательный порт { $port }
+link-cannot-use-port = не удаётся использовать последовательный порт { $port }
+link-hint-open-port = `plcsh ports` перечисляет последовательные порты этого компьютера и их USB-адаптеры; проверьте имя ({ $examples }) и что порт не занят другой программой (KincoBuilder, программой терминала)
+link-hint-open-port-group = `plcsh ports` перечисляет последовательные порты этого компьютера и их USB-адаптеры; проверьте имя ({ $examples }), что порт не занят другой программой (KincoBuilder, программой терминала) и что у вас есть право его открыть (группа dialout: sudo usermod -aG dialout $USER, затем войдите в систему заново)
+link-not-host-port = `{ $target }` в { $url } не HOST:PORT
+link-hint-host-port = укажите адрес сервера устройств и TCP-порт его последовательного канала, например 192.168.127.254:4001
+link-no-address = имени не соответствует ни один адрес
+link-hint-server = проверьте адрес сервера устройств и TCP-порт этого последовательного канала, что он в режиме сервера raw TCP (или RFC 2217 для +rfc2217://), что канал не занят другим клиентом и что порт не закрыт межсетевым экраном
+link-connection-closed = соединение закрыто
+link-cannot-start-thread = не удаётся запустить поток приёма соединений
+link-no-port-named = { $url } не называет последовательный порт
+link-hint-port-example = например { $example } (`plcsh ports` перечисляет последовательные порты этого компьютера)
+link-unknown-carrier = `+{ $carrier }` в { $url } — не способ связи с последовательной линией
+link-hint-carriers = используйте +tcp://HOST:PORT (raw TCP-порт сервера устройств) или +rfc2217://HOST:PORT
+link-cannot-list-ports = не удаётся получить список последовательных портов
+link-hint-list-ports-dev = ls /dev/ttyUSB* /dev/ttyACM* /dev/serial/by-id показывает порты, которые видит ядро
+link-hint-list-ports-device-manager = Диспетчер устройств → Порты (COM и LPT) показывает порты, которые видит Windows
+k2-no-option = у устройств K2 по линии связи нет параметра `{ $key }`
+k2-hint-options = параметры: word_order (high-first, low-first), timeout, retries, agent
+k2-retries-not-number = `retries={ $value }` не число
+k2-not-scheme = `{ $scheme }:` не схема связи с K2
+k2-cannot-start-runtime = не удаётся запустить среду выполнения для присоединённого потока
+k2-attached-failed = присоединённый поток дал сбой, и plcsh не может открыть его заново
+k2-hint-reopen = { $hint }; следующая команда откроет его снова, когда он вернётся
+k2-reply-too-short = ответ на чтение { $span } слишком короткий
+k2-request = { $doing ->
+        [reading] чтение
+       *[writing] запись
+    } { $operand }{ $more ->
+        [0] {""}
+       *[other] {" "}и ещё { $more }
+    } ({ $span }, FC { $fc })
+k2-while = { $what }: { $message }
+k2-refused = ПЛК отказал ({ $what }): { $exception } (исключение Modbus { $code })
+k2-hint-exception-1 = этот ПЛК не поддерживает этот код функции на этом порту
+k2-hint-exception-2 = адрес вне карты Modbus ПЛК; проверьте, что model={ $model } соответствует ПЛК
+k2-hint-exception-3 = ПЛК отказал из-за размера или значения запроса (пределы: чтение 1600 бит или 100 регистров, запись 800 бит или 100 регистров)
+k2-hint-exception = смотрите диагностику ПЛК
+k2-hint-connect = проверьте, что HOST:PORT — это ПЛК или шлюз (K204ET отвечает по Modbus TCP на порту 502), что он включён и доступен (ping) и что порт не закрыт межсетевым экраном
+k2-writes-before = { $message }; { $sent ->
+        [one] { $sent } запрос записи перед ним был отправлен
+        [few] { $sent } запроса записи перед ним были отправлены
+       *[many] { $sent } запросов записи перед ним были отправлены
+    }
+link-not-parity = `parity={ $parity }` в { $url } не четность
+link-hint-parity = используйте parity=none, parity=even или parity=odd
+link-not-stop-bits = `stop={ $stop }` в { $url } не 1 и не 2
+link-baud-zero = `baud=0` в { $url } не скорость передачи данных
+link-not-unit-id = `unit={ $unit }` в { $url } не адрес ведомого устройства Modbus
+link-hint-unit-id = адреса ведомых устройств — 1…247 (0 — широковещательный, на него нет ответа)
+link-cannot-use-connection = не удаётся использовать соединение с { $addr }
+
+## Командная строка (cli)
+
+cli-hint-shell-command = `{ $line }` — команда оболочки: plcsh -c '{ $line }'
+
+## Оболочка (shell)
+
+shell-unknown-command = неизвестная команда `{ $name }`
+shell-hint-did-you-mean = может быть, `{ $name }`? `help` перечисляет команды
+shell-hint-help = `help` перечисляет команды
+shell-hint-subcommand = может быть, `{ $command } { $near }`? `help { $command }` показывает, как её вызывать

@@ -1,0 +1,249 @@
+# plcsh 的简体中文消息。术语按术语表 (shared/spec/glossary.md)：按步科伺服、K80S 和 FX 手册的写法。
+# 操作数、指令助记符、命令、选项和 JSON 键保持原样。
+
+## 错误的格式 (core::error, output)
+
+label-hint = 提示：{ $hint }
+
+error-kind-cause = { $kind ->
+    [syntax] 该行无法解析：多余的字符、未闭合的引号、`set` 中缺少 `=`
+    [operand] 操作数未知或格式错误 (`VX0`、`M0.8`、`SMB`)
+    [value] 值超出操作数的范围 (`set VB2=300`)，或不是所要求单位的数值
+    [range] 操作数超出该型号存储区的末尾，或该型号没有此存储区 (K205-16DT 上的 `AIW0`)
+    [unsupported] 此设备或连接不支持该操作：通过普通 Modbus 访问 SM、T 和 C，没有辅助程序时执行指令
+    [refused] 设备回复了拒绝：Modbus 异常响应、伺服驱动器中止代码、辅助程序的结果
+    [link] 无回复、超时、校验码错误 (CRC)、连接断开、串口无法打开
+    [timeout] 等待超时 (`wait`、辅助程序命令未被确认)
+    [usage] 命令用法错误：缺少参数、未知的命令或设备、文件被占用
+    [script] Lua 脚本失败：运行时错误、`plcsh.assert_eq` 未通过、`os.exit`
+    [io] 文件或操作系统出错：文件无法读取或写入
+    [interrupted] Ctrl-C、SIGTERM 或 SIGHUP 停止了命令；中止处理已执行
+   *[state] 设备处于无法执行该命令的状态：PTO 忙、辅助程序的邮箱忙、辅助程序已停止
+}
+error-kind-fix = { $kind ->
+    [syntax] 行下方的 ^ 指向出错的词；`help COMMAND` 显示命令格式
+    [operand] `help VW100` 解释操作数；Tab 键补全操作数
+    [value] 消息给出操作数类型的范围；有符号值请使用视图 (`VW0/INT`)
+    [range] 将 URL 中的 `model=` 与 PLC 核对 (`plcsh models`)；提示列出具有该存储区的型号
+    [unsupported] 为 SM 寄存器和指令安装辅助程序 (docs/agent.md)，或使用仿真器
+    [refused] 提示说明是哪种拒绝；遇到 `illegal data address` 时将 `model=` 与 PLC 核对
+    [link] 按无回复检查清单：unit id、baud/parity/stop、A/B 接线、权限、占用串口的程序；`-v` 显示收发的帧
+    [timeout] 延长等待时间，或检查 PLC 是否处于 RUN 模式、辅助程序是否每个扫描周期都被调用
+    [usage] `help COMMAND`；`devices` 列出设备名称
+    [script] 消息给出 文件:行 以及回溯
+    [io] 消息给出文件名和系统给出的原因
+    [interrupted] 重新运行；退出状态说明是哪个信号 (docs/reference/exit-status.md)
+   *[state] 等待正在执行的操作结束 (`pto 0 status`)，或将 PLC 切换到 RUN 模式
+}
+
+lang-unknown = 未知的语言 `{ $lang }`：plcsh 支持 en、ru、zh-CN
+
+## 数值 (core::literal)：IEC 61131-3 常数及其是否适合操作数
+
+literal-missing = 缺少数值
+literal-space = 数值 `{ $value }` 中有多余的空格
+literal-duration = { $message }
+literal-typed-integer = { $prefix }# 只接受整数；浮点数请写 REAL#{ $rest }
+literal-unknown-prefix = 未知的类型前缀 `{ $prefix }#` (请用 B#、W#、DW#、INT#、DI#、REAL#、T# 或基数 2#、8#、16#)
+literal-number-missing = 缺少数字
+literal-c-notation = `{ $typed }` 是 C 语言写法；请写 { $iec } (IEC 61131-3，与 KincoBuilder 相同)
+literal-unknown-radix = 基数 { $radix }# 不是 2#、8#、10#、16# 之一
+literal-no-digits = { $radix }# 之后没有数字
+literal-not-digit-of-base = `{ $char }` 不是 { $radix } 进制的数字
+literal-too-wide = { $value } 超过 32 位 (最大 16#FFFF_FFFF)
+literal-not-number = `{ $value }` 不是数字
+literal-not-digit = `{ $char }` 不是 `{ $value }` 中的数字
+literal-too-large = { $value } 太大：整数最大为 { $max }
+value-does-not-fit = { $value } 超出 { $dtype } 的范围 ({ $min }…{ $max })
+value-not-bit = { $value } 不能写入位 (请用 0/1、TRUE/FALSE、ON/OFF)
+value-bit-not-real = { $value } 是位，不是 REAL
+value-not-real = { $value } 超出 REAL 的范围 (32 位 IEEE 浮点数：最大 ±{ $max })
+value-not-integer = { $value } 不是整数；{ $dtype } 只存整数 (要存 IEEE 浮点数，请用带 /REAL 的 32 位操作数，例如 VD100/REAL)
+value-type-too-wide = { $value } 是 { $dtype } ({ $bits } 位)，不能写入 { $width } 位的操作数
+value-out-of-range = { $value } 超出 { $dtype } 的范围 (0…{ $max })
+value-out-of-range-group = { $value } 超出 { $bits } 位组的范围 (0…{ $max })
+value-out-of-range-signed = { $value } 超出 { $dtype } 的范围 (0…{ $max })；写成 { $signed }#{ $number } 可存入其补码
+value-out-of-range-group-signed = { $value } 超出 { $bits } 位组的范围 (0…{ $max })；写成 { $signed }#{ $number } 可存入其补码
+
+## 时间、超时和频率 (core::literal)
+
+duration-not-whole-ms = T#{ $value } 不是整数毫秒
+duration-too-long = `{ $value }` 超过最长时间 { $max } µs (约 292 000 年)
+duration-missing = 缺少时间 (例如 500ms、2s、250us)
+duration-not-duration = `{ $value }` 不是时间 (例如 500ms、2s、250us)
+duration-needs-unit = `{ $value }` 的每个数字都需要单位 (h、m、s、ms、us)，例如 { $number }ms 或 { $number }s
+duration-unknown-unit = `{ $value }` 中有未知的时间单位 `{ $unit }` (请用 h、m、s、ms、us)
+timeout-not-positive = `timeout={ $value }` 必须大于零 (例如 200ms)
+timeout-too-short = `timeout={ $value }` 短于一微秒，即连接等待的最小单位 (例如 200ms)
+timeout-too-long = `timeout={ $value }` 超过一天 ({ $max } ms)，即等待回复的最长时间
+freq-not-frequency = `{ $value }` 不是频率 (例如 2kHz、500Hz)
+freq-unknown-unit = `{ $value }` 中有未知的频率单位 `{ $unit }` (请用 Hz、kHz)
+freq-not-positive = `{ $value }` 不是正的频率
+freq-too-large = `{ $value }` 频率太大 (最大 { $max } Hz)
+
+## 操作数表达式：数量和范围 (core::operand, k2::operand)
+
+count-missing-bracket = 数量写法中缺少 `]` (例如 { $example })
+count-not-a-count = `{ $count }` 不是数量 (例如 { $example })
+count-out-of-range = 数量必须为 1…{ $max }
+range-one-dots = 范围只有一个 `..`：首..尾，例如 { $example }
+range-mixed = 范围需要同一存储区、同一大小的两个操作数：{ $first }..{ $last }
+range-group-sizes = 位组的范围需要相同的组大小
+range-backwards = 范围的结尾 { $last } 在开头 { $first } 之前
+range-off-step = { $last } 不在从 { $first } 起步长为 { $step } 的位置上 (范围按操作数大小步进)
+range-too-long = 范围超过 { $max } 个操作数
+operand-missing = 缺少操作数
+operand-unknown-type = 未知的类型 `{ $name }` (请用 BOOL、BYTE、SINT、WORD、INT、DWORD、DINT、REAL)
+operand-view-width = { $operand } 宽 { $bits } 位；/{ $view } 需要 { $need } 位 (视图保持宽度：字节用 /SINT，字用 /INT，双字用 /DINT 或 /REAL)
+operand-unexpected-after = { $head } 之后有多余的 `{ $rest }`
+
+## K2 操作数 (k2::operand, k2::space；K2 手册 §3.2)
+
+k2-area-meaning = { $area ->
+    [I] 开关量输入
+    [Q] 开关量输出
+    [M] 内部存储位
+    [V] 变量存储器
+    [SM] 特殊寄存器 (系统和功能寄存器)
+    [AI] 模拟量输入
+    [AQ] 模拟量输出
+    [T] 定时器 (当前值)
+   *[C] 计数器 (当前值)
+}
+k2-address-too-large = `{ $operand }` 超出 K2 的所有存储区：地址最大为 { $max } (最大的存储区 V 结束于 VB{ $last })
+k2-element-needs-number = { $area } 之后需要编号 ({ $area }0…{ $area }255)
+k2-analog-words = 模拟量是字：{ $area }W0、{ $area }W2 …
+k2-analog-needs-address = { $area }W 之后需要字节地址 (例如 { $area }W0)
+k2-analog-even = 模拟量字位于偶数地址：{ $below } 或 { $above }
+k2-analog-even-last = 模拟量字位于偶数地址：{ $below }
+k2-needs-byte-address = { $operand } 之后需要字节地址
+k2-byte-has-no-bit = 字节没有位；位应写成 { $bit }
+k2-word-has-no-bit = 字没有位；位应写成 { $bit }
+k2-needs-bit-or-size = { $area } 之后需要位 (`{ $area }0.0`) 或大小字母 (`{ $area }B0`、`{ $area }W0`、`{ $area }D0`)
+k2-byte-needs-bit-or-size = { $area }{ $byte } 需要位 ({ $area }{ $byte }.0) 或大小 ({ $area }B{ $byte }、{ $area }W{ $byte }、{ $area }D{ $byte })
+k2-bit-missing = 缺少位号 0…7
+k2-bit-too-large = 位 { $bit } 不存在：位号为 0…7 (最后一位是 { $last })
+k2-group-size = 位组为 K1…K8 (4 到 32 位)
+k2-group-nested = { $group } 组合 I、Q、M、V 或 SM 的位；位组不能嵌套
+k2-group-needs-bit = { $group } 组合位：请写 { $example } (位地址)，而不是字节或字
+k2-group-area = { $group } 组合 I、Q、M、V 或 SM 的位
+k2-not-operand-no-area = `{ $operand }` 不是 K2 操作数：操作数以存储区字母开头
+k2-not-operand-unknown-area = `{ $operand }` 不是 K2 操作数：未知的存储区 `{ $area }`
+k2-hint-did-you-mean = 是否想输入 { $suggestions }？存储区有 I Q M V SM AI AQ T C
+k2-hint-no-data-blocks = K2 没有数据块：它的数据存储器是 V (VB0、VW0、VD0 …)；存储区有 I Q M V SM AI AQ T C
+k2-hint-no-options = 这里的命令不接受 -选项；请给出操作数，例如 VW0、I0.0、SMB67
+k2-hint-areas = 存储区有 I Q M V SM AI AQ T C，例如 VW0、I0.0、Q0.1、SMB67、T5
+k2-model-has-no-area = { $model } 没有 { $area } 存储区 ({ $meaning })
+k2-hint-models-with = 具有 { $area } 的型号：{ $models }
+k2-past-the-end = { $operand } 超出 { $model } 上 { $area } 存储区的末尾 (最后一个{ $size ->
+        [bit] 位
+        [byte] 字节
+        [word] 字
+        [dword] 双字
+        [group] 位组
+       *[element] 元件
+    }是 { $last })
+k2-area-too-small = { $operand } 放不进 { $model } 上的 { $area } 存储区：它只有 { $bits } 位，不够一个{ $size ->
+        [bit] 位
+        [byte] 字节
+        [word] 字
+        [dword] 双字
+        [group] 位组
+       *[element] 元件
+    }
+k2-bit-and-byte-past-the-end = { $operand }：位 { $bit } 不存在 (位号为 0…7)，而且字节 { $byte } 超出 { $model } 上 { $area } 存储区的末尾 (最后一位是 { $last })
+k2-hint-area-bits = { $model } 上的{ $meaning }：{ $first } … { $last }
+
+## 通信：无回复、超时、串口 (core::link, k2::driver)
+
+link-no-reply = 设备没有应答：unit { $unit } 在 { $timeout } 内无回复
+link-no-valid-reply = unit { $unit } 在 { $timeout } 内没有发来有效的回复：{ $what }
+link-closed = PLC 没有回复，而是关闭了连接
+link-failed = 通讯错误
+link-attempts = { $message } (尝试 { $attempts } 次)
+k2-hint-no-reply = { $link ->
+    [tcp] 请检查 unit id (unit=)、HOST:PORT 是否为该 PLC (K204ET 在端口 502 上应答 Modbus TCP)，以及 PLC 是否上电并可以访问 (ping)
+    [rtu] 请检查 unit id (unit= 是 PLC 端口的站号)、接线 (RS485 A/B、地线)、串口设置 (baud=、parity=、stop=) 是否与 PLC 端口一致，以及串口路径
+    [gateway] 请检查 unit id (unit=)、网关的地址和端口，以及网关的串口设置 (波特率、奇偶校验、停止位) 是否与 PLC 端口一致
+    [rfc2217] 请检查 unit id (unit=)、串口服务器的地址和端口，以及线路设置 (baud=、parity=、stop=) 是否与 PLC 端口一致
+   *[stream] 请检查 unit id 以及数据流另一端是什么
+}
+k2-hint-garbled = { $link ->
+    [rtu] 请检查串口设置 (baud=、parity=、stop=) 是否与 PLC 端口一致、接线 (RS485 A/B、地线、长线两端的终端电阻)，以及线路上是否有其他主站或设备在通信
+    [gateway] 请检查网关的串口设置 (波特率、奇偶校验、停止位) 是否与 PLC 端口一致、网关到 PLC 的接线，以及网关是否处于透明 (RTU) 模式而不是 Modbus TCP
+    [rfc2217] 请检查线路设置 (baud=、parity=、stop=) 是否与 PLC 端口一致，以及串口服务器到 PLC 的接线
+    [tcp] 请检查 HOST:PORT 是否使用 Modbus TCP (RTU 网关需要 rtu+tcp://)
+   *[stream] 请检查数据流另一端是什么
+}
+k2-hint-damaged = { $link ->
+    [rtu] 字节在传输中损坏；请检查串口设置 (baud=、parity=、stop=) 是否与 PLC 端口一致、接线 (RS485 A/B、地线、长线两端的终端电阻)，以及线路上是否有其他主站或设备在通信；plcsh 会重试 (retries=)
+    [gateway] 字节在传输中损坏；请检查网关的串口设置 (波特率、奇偶校验、停止位) 是否与 PLC 端口一致、网关到 PLC 的接线，以及网关是否处于透明 (RTU) 模式而不是 Modbus TCP；plcsh 会重试 (retries=)
+    [rfc2217] 字节在传输中损坏；请检查线路设置 (baud=、parity=、stop=) 是否与 PLC 端口一致，以及串口服务器到 PLC 的接线；plcsh 会重试 (retries=)
+    [tcp] 字节在传输中损坏；请检查 HOST:PORT 是否使用 Modbus TCP (RTU 网关需要 rtu+tcp://)；plcsh 会重试 (retries=)
+   *[stream] 字节在传输中损坏；请检查数据流另一端是什么；plcsh 会重试 (retries=)
+}
+k2-hint-closed = plcsh 会重新连接并重试 (retries=)；如果反复出现，请检查 PLC 对 Modbus TCP 连接数的限制，以及是否有其他客户端或网关接管了连接
+link-cannot-connect = 无法连接到 { $addr }
+link-name-not-looked-up = 无法连接到 { $addr }：{ $ms } ms 内未能解析该名称
+link-hint-name-server = 请使用 IP 地址，或检查域名服务器
+link-connect-timeout = 无法连接到 { $addr }：{ $ms } ms 内无应答
+link-cannot-listen = 无法在 { $addr } 上监听
+link-hint-listen = 请换一个端口 (0 表示任选一个空闲端口)；1024 以下的端口需要权限
+link-cannot-open-port = 无法打开串口 { $port }
+link-cannot-use-port = 无法使用串口 { $port }
+link-hint-open-port = `plcsh ports` 列出本机的串口及其 USB 转换器；请检查名称 ({ $examples })，以及是否有其他程序 (KincoBuilder、终端程序) 占用了该串口
+link-hint-open-port-group = `plcsh ports` 列出本机的串口及其 USB 转换器；请检查名称 ({ $examples })、是否有其他程序 (KincoBuilder、终端程序) 占用了该串口，以及您是否有权限打开它 (dialout 组：sudo usermod -aG dialout $USER，然后重新登录)
+link-not-host-port = { $url } 中的 `{ $target }` 不是 HOST:PORT
+link-hint-host-port = 请给出串口服务器的地址及其串行通道的 TCP 端口，例如 192.168.127.254:4001
+link-no-address = 该名称解析不到任何地址
+link-hint-server = 请检查串口服务器的地址和此串行通道的 TCP 端口、它是否处于 raw TCP 服务器模式 (+rfc2217:// 则为 RFC 2217)、是否有其他客户端占用该通道，以及防火墙是否阻挡了该端口
+link-connection-closed = 连接已关闭
+link-cannot-start-thread = 无法启动接受连接的线程
+link-no-port-named = { $url } 没有指定串口
+link-hint-port-example = 例如 { $example } (`plcsh ports` 列出本机的串口)
+link-unknown-carrier = { $url } 中的 `+{ $carrier }` 不是连接串行线路的方式
+link-hint-carriers = 请用 +tcp://HOST:PORT (串口服务器的 raw TCP 端口) 或 +rfc2217://HOST:PORT
+link-cannot-list-ports = 无法列出串口
+link-hint-list-ports-dev = ls /dev/ttyUSB* /dev/ttyACM* /dev/serial/by-id 显示内核识别到的串口
+link-hint-list-ports-device-manager = 设备管理器 → 端口 (COM 和 LPT) 显示 Windows 识别到的串口
+k2-no-option = K2 通信设备没有选项 `{ $key }`
+k2-hint-options = 选项：word_order (high-first、low-first)、timeout、retries、agent
+k2-retries-not-number = `retries={ $value }` 不是数字
+k2-not-scheme = `{ $scheme }:` 不是 K2 通信方式
+k2-cannot-start-runtime = 无法为接入的数据流启动运行时
+k2-attached-failed = 接入的数据流出错，plcsh 无法重新打开它
+k2-hint-reopen = { $hint }；恢复后，下一条命令会重新打开它
+k2-reply-too-short = 读取 { $span } 的回复太短
+k2-request = { $doing ->
+        [reading] 读取
+       *[writing] 写入
+    } { $operand }{ $more ->
+        [0] {""}
+       *[other] {" "}及另外 { $more } 个
+    } ({ $span }，FC { $fc })
+k2-while = { $what }：{ $message }
+k2-refused = PLC 拒绝了{ $what }：{ $exception } (Modbus 异常码 { $code })
+k2-hint-exception-1 = 此 PLC 在此端口上不支持该功能码
+k2-hint-exception-2 = 地址超出 PLC 的 Modbus 映射；请检查 model={ $model } 是否与 PLC 一致
+k2-hint-exception-3 = PLC 拒绝了请求的大小或数值 (限制：读 1600 位或 100 个寄存器，写 800 位或 100 个寄存器)
+k2-hint-exception = 请查看 PLC 的诊断信息
+k2-hint-connect = 请检查 HOST:PORT 是否为该 PLC 或网关 (K204ET 在端口 502 上应答 Modbus TCP)、是否上电并可以访问 (ping)，以及防火墙是否阻挡了该端口
+k2-writes-before = { $message }；在它之前的 { $sent } 个写请求已发送
+link-not-parity = { $url } 中的 `parity={ $parity }` 不是奇偶校验方式
+link-hint-parity = 请用 parity=none、parity=even 或 parity=odd
+link-not-stop-bits = { $url } 中的 `stop={ $stop }` 不是 1 或 2
+link-baud-zero = { $url } 中的 `baud=0` 不是波特率
+link-not-unit-id = { $url } 中的 `unit={ $unit }` 不是 Modbus 站号
+link-hint-unit-id = 站号为 1…247 (0 是广播，不会有回复)
+link-cannot-use-connection = 无法使用到 { $addr } 的连接
+
+## 命令行 (cli)
+
+cli-hint-shell-command = `{ $line }` 是 shell 命令：plcsh -c '{ $line }'
+
+## Shell (shell)
+
+shell-unknown-command = 未知的命令 `{ $name }`
+shell-hint-did-you-mean = 是否想输入 `{ $name }`？`help` 列出所有命令
+shell-hint-help = `help` 列出所有命令
+shell-hint-subcommand = 是否想输入 `{ $command } { $near }`？`help { $command }` 显示其用法
