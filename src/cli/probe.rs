@@ -109,7 +109,7 @@ pub fn probe(args: &ProbeArgs, shell: &Shell, style: Style, out: &mut dyn Write)
     };
     let mut tried = vec![];
     let hint = dev.link_hint();
-    let mut result = probe::run(&mut dev, args.reads, hint);
+    let mut result = probe::run(&mut dev, args.reads, &hint);
     let mut line = dev.serial_line();
     let silent =
         |p: &probe::Probe| p.areas.iter().all(|a| matches!(a.extent, probe::Extent::NoReply { last: None, .. }));
@@ -134,7 +134,7 @@ pub fn probe(args: &ProbeArgs, shell: &Shell, style: Style, out: &mut dyn Write)
                     probe::Reader::read(&mut d, crate::k2::modbus_map::Table::HoldingRegisters, 100),
                     probe::Answer::Failed { .. }
                 ) {
-                    result = probe::run(&mut d, args.reads, hint);
+                    result = probe::run(&mut d, args.reads, &hint);
                     line = d.serial_line();
                     break 'scan;
                 }

@@ -37,7 +37,7 @@ impl Reader for K2Wire {
 
 impl K2Wire {
     /// What to check when the PLC does not answer on this link.
-    pub fn link_hint(&self) -> &'static str {
+    pub fn link_hint(&self) -> String {
         self.link.hint()
     }
 
