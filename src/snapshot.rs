@@ -290,12 +290,20 @@ fn settle(s: &mut Session) {
     }
 }
 
-/// The wires a simulated PLC hosts, with their state.
+/// The wires a simulated PLC hosts, with their state. Every field of a wire and of the
+/// harness is named (no `..`): one added does not compile until it is saved or named.
 fn capture_wiring(sim: &crate::k2::sim::K2Sim) -> Vec<WireSnap> {
-    sim.wiring
-        .as_ref()
-        .map(|h| h.wires.iter().map(|w| WireSnap { decl: w.decl.to_string(), state: w.state.clone() }).collect())
-        .unwrap_or_default()
+    let Some(h) = sim.wiring.as_ref() else { return Vec::new() };
+    // The peers are the session's devices, found again by name when the wires are declared.
+    let crate::core::wiring::Harness { peers: _, wires } = h.as_ref();
+    wires
+        .iter()
+        .map(|w| {
+            // The kind and the peer follow from the declaration (`sim wire` makes them again).
+            let crate::core::wiring::Wire { decl, kind: _, peer: _, state } = w;
+            WireSnap { decl: decl.to_string(), state: state.clone() }
+        })
+        .collect()
 }
 
 impl Snapshot {
