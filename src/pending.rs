@@ -53,6 +53,9 @@ struct NotConnected {
 /// How `devices` and the prompt tell a device that is not connected yet: the end of its link.
 pub const NOT_CONNECTED: &str = " (not connected)";
 
+/// The model a device not connected yet shows when its URL names none.
+pub const UNKNOWN_MODEL: &str = "not connected";
+
 /// Is this device one that has not connected yet?
 pub fn is_not_connected(info: &DeviceInfo) -> bool {
     info.link.ends_with(NOT_CONNECTED)
@@ -70,7 +73,7 @@ impl Pending {
         let model = crate::core::url::DeviceUrl::parse(url)
             .ok()
             .and_then(|u| u.param("model").map(str::to_string))
-            .unwrap_or_else(|| "not connected".to_string());
+            .unwrap_or_else(|| UNKNOWN_MODEL.to_string());
         let info = DeviceInfo { family, model, link: format!("{url}{NOT_CONNECTED}"), simulated: false };
         let space = NotConnected { family, reason: error };
         Pending { state: State::Unopened(Unopened { open, info, space }) }
