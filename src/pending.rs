@@ -124,7 +124,7 @@ impl Pending {
 
 /// The family a URL's scheme names, for `devices` before the device answers.
 fn family_of(url: &str) -> &'static str {
-    crate::session::url_family(url).map_or("unknown", |(family, _)| family)
+    crate::schemes::url_family(url).map_or("unknown", |(family, _)| family)
 }
 
 /// A link error said again for a device that stays in the session, not connected.

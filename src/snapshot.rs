@@ -579,21 +579,10 @@ pub fn dir() -> Option<PathBuf> {
     crate::paths::snapshots()
 }
 
-/// The file of snapshot `name` (a path when it has a path separator of this system — `/`, and
-/// `\` on Windows — or a drive letter, or ends in `.json`).
+/// The file of snapshot `name` ([`crate::paths::snapshot_file`]: a path when it has a path
+/// separator of this system, a drive letter or ends in `.json`, else a named snapshot).
 pub fn locate(name: &str) -> Result<PathBuf> {
-    // A drive (`C:x`) is a path prefix on Windows only; elsewhere Path says there is none.
-    let drive = Path::new(name).components().any(|c| matches!(c, std::path::Component::Prefix(_)));
-    if name.chars().any(std::path::is_separator) || drive || name.ends_with(".json") {
-        return Ok(PathBuf::from(name));
-    }
-    if name.is_empty() || !name.chars().all(|c| c.is_ascii_alphanumeric() || "_-.".contains(c)) {
-        return Err(Error::usage(format!("`{name}` is not a snapshot name (letters, digits, _ - .)"))
-            .hint("or give a file path ending in .json"));
-    }
-    let d =
-        dir().ok_or_else(|| Error::io("no data directory for snapshots").hint("give a file path ending in .json"))?;
-    Ok(d.join(format!("{name}.json")))
+    crate::paths::snapshot_file(name)
 }
 
 /// Named snapshots: `(name, file)`, sorted.

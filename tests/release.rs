@@ -128,7 +128,10 @@ fn the_archives_hold_the_program_licences_changelog_man_page_and_completions() {
     // (core::platform::words), the tarball's the Linux program's.
     let unzip = |name: &str| {
         let out = Command::new("python3")
-            .args(["-c", "import sys, zipfile; sys.stdout.buffer.write(zipfile.ZipFile(sys.argv[1]).read(sys.argv[2]))"])
+            .args([
+                "-c",
+                "import sys, zipfile; sys.stdout.buffer.write(zipfile.ZipFile(sys.argv[1]).read(sys.argv[2]))",
+            ])
             .arg(&zip)
             .arg(format!("plcsh-{v}-x86_64-pc-windows-gnu/{name}"))
             .output()
@@ -144,7 +147,10 @@ fn the_archives_hold_the_program_licences_changelog_man_page_and_completions() {
         .arg(format!("plcsh-{v}-x86_64-unknown-linux-gnu/completions/_plcsh.ps1"))
         .output()
         .unwrap();
-    assert!(!String::from_utf8_lossy(&tar_ps1.stdout).contains("%APPDATA%"), "the Linux program's words in the tarball");
+    assert!(
+        !String::from_utf8_lossy(&tar_ps1.stdout).contains("%APPDATA%"),
+        "the Linux program's words in the tarball"
+    );
 
     // Reproducible: the exe's header holds the release's time, not the time it was stripped
     // (PE header: the COFF header at the offset in 0x3C, TimeDateStamp 8 bytes in), and a

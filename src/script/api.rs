@@ -360,7 +360,7 @@ pub fn plcsh_table(lua: &Lua) -> mlua::Result<Table> {
     p.set("errinfo", lua.create_function(errinfo)?)?;
     p.set("_explain", lua.create_function(super::error::explain)?)?;
     p.set("table", lua.create_function(table)?)?;
-    p.set("_write", lua.create_function(|lua, text: mlua::String| print_bytes(lua, &text.as_bytes()))?)?;
+    p.set("_write", lua.create_function(|lua, text: mlua::LuaString| print_bytes(lua, &text.as_bytes()))?)?;
     lua.set_named_registry_value(ABORT_KEY, lua.create_table()?)?;
     p.set(
         "on_abort",

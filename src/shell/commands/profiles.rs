@@ -1,5 +1,5 @@
 //! The `devices` listing: open devices (the current one marked `*`), then the profiles from
-//! devices.toml that are not open, its fleets (`crate::fleet`); any problem in that file (with
+//! devices.toml that are not open, its fleets (`crate::profile::fleet`); any problem in that file (with
 //! file:line) is a note of its own line. Shared by the REPL's `devices` and `plcsh devices`.
 
 use crate::output::Outcome;
@@ -44,8 +44,8 @@ pub fn devices_and_profiles(s: &Session) -> (Vec<Vec<String>>, Outcome) {
         let n = f.members.len();
         // A URL fleet's members share its rules; a list's members have their own profiles.
         let writes = match f.members.first().map(|m| &m.source) {
-            Some(crate::fleet::Source::Made(p)) if p.read_only => "read only".to_string(),
-            Some(crate::fleet::Source::Made(p)) => {
+            Some(crate::profile::fleet::Source::Made(p)) if p.read_only => "read only".to_string(),
+            Some(crate::profile::fleet::Source::Made(p)) => {
                 p.allow.as_ref().map(|a| format!("allow {}", a.join(", "))).unwrap_or_default()
             }
             _ => "per profile".to_string(),
