@@ -228,11 +228,11 @@ mod tests {
         std::fs::create_dir_all(&dir).unwrap();
         let state = dir.join("state.json");
         let clock = Clock::stepped();
-        let sim = crate::session::open_url("sim:K205-16DT", &clock).unwrap();
+        let sim = crate::schemes::open_url("sim:K205-16DT", &clock).unwrap();
         let mut first = Pending::option_on_first_use(sim, "state", &state.to_string_lossy());
         assert!(!first.is_ready());
         // Not used yet: another holder can take the state file.
-        let other = crate::session::open_url("sim:K205-16DT", &clock).unwrap();
+        let other = crate::schemes::open_url("sim:K205-16DT", &clock).unwrap();
         let mut other = Pending::option_on_first_use(other, "state", &state.to_string_lossy());
         other.ready().expect("the first holder");
         let e = first.ready().unwrap_err();
@@ -253,7 +253,7 @@ mod tests {
         std::fs::create_dir_all(&dir).unwrap();
         let state = dir.join("state.json");
         let clock = Clock::stepped();
-        let sim = crate::session::open_url("sim:K205-16DT", &clock).unwrap();
+        let sim = crate::schemes::open_url("sim:K205-16DT", &clock).unwrap();
         let mut plc = Pending::option_on_first_use(sim, "state", &state.to_string_lossy());
         assert!(crate::servo::ops(&mut plc).is_none());
         assert!(crate::core::device::lookup(&mut plc, "umpk", &[]).unwrap().is_none());
@@ -268,9 +268,9 @@ mod tests {
     fn a_device_not_there_yet_is_tried_again_on_each_use() {
         let clock = Clock::stepped();
         let url = "tcp://127.0.0.1:1?model=K205-16DT";
-        let e = crate::session::open_url(url, &clock).err().expect("nothing listens on port 1");
+        let e = crate::schemes::open_url(url, &clock).err().expect("nothing listens on port 1");
         let c = clock.clone();
-        let mut d = Pending::unopened(url, Box::new(move || crate::session::open_url(url, &c)), e);
+        let mut d = Pending::unopened(url, Box::new(move || crate::schemes::open_url(url, &c)), e);
         assert_eq!(d.info().family, "k2");
         assert_eq!(d.info().model, "K205-16DT");
         assert!(is_not_connected(d.info()));
@@ -281,9 +281,9 @@ mod tests {
         // Now something listens there (a listener bound to port 0 stands in for the PLC).
         let l = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
         let url = format!("tcp://{}?model=K205-16DT", l.local_addr().unwrap());
-        let e = crate::session::open_url("tcp://127.0.0.1:1", &clock).err().unwrap();
+        let e = crate::schemes::open_url("tcp://127.0.0.1:1", &clock).err().unwrap();
         let (u, c) = (url.clone(), clock.clone());
-        let mut d = Pending::unopened(&url, Box::new(move || crate::session::open_url(&u, &c)), e);
+        let mut d = Pending::unopened(&url, Box::new(move || crate::schemes::open_url(&u, &c)), e);
         d.ready().expect("the listener accepts the connection");
         assert!(d.is_ready());
         assert!(!is_not_connected(d.info()), "{}", d.info().link);

@@ -323,7 +323,7 @@ fn profile(
 
 /// The simulator that stands for a profile's device when it is checked at load: the same
 /// family and model, without touching the wire. `None` for a scheme no family knows. A new
-/// family adds its schemes here beside its line in `session::open_url`.
+/// family adds its schemes here beside its line in `schemes::open_url`.
 pub fn offline_twin(u: &DeviceUrl) -> Option<String> {
     let k2_model = || u.param("model").unwrap_or(crate::k2::catalog::DEFAULT_MODEL).to_string();
     match u.base_scheme() {
