@@ -7,7 +7,7 @@
 //! being the static build) and listing both archives.
 //!
 //! Needs the Windows build (`target/x86_64-pc-windows-gnu/debug/plcsh.exe`, or
-//! `PLCSH_RELEASE_WINDOWS_EXE`) and the MinGW tools; the Windows stage of CI runs it after its
+//! `PLCSH_RELEASE_WINDOWS_EXE`), the MinGW tools and Wine; the Windows stage of CI runs it after its
 //! build with `PLCSH_RELEASE_TEST=1`, which makes a missing one a failure. Unix only (the
 //! script is bash).
 
@@ -25,7 +25,9 @@ fn windows_exe() -> Option<PathBuf> {
     let p = std::env::var_os("PLCSH_RELEASE_WINDOWS_EXE")
         .map(PathBuf::from)
         .unwrap_or_else(|| root().join("target/x86_64-pc-windows-gnu/debug/plcsh.exe"));
-    let tools = Command::new("x86_64-w64-mingw32-strip").arg("--version").output().is_ok_and(|o| o.status.success());
+    let works = |tool: &str| Command::new(tool).arg("--version").output().is_ok_and(|o| o.status.success());
+    // Wine runs plcsh.exe to make the zip's completions.
+    let tools = works("x86_64-w64-mingw32-strip") && works("wine");
     (p.is_file() && tools).then_some(p)
 }
 
@@ -68,9 +70,9 @@ fn the_archives_hold_the_program_licences_changelog_man_page_and_completions() {
     let Some(win) = windows_exe() else {
         assert!(
             std::env::var_os("PLCSH_RELEASE_TEST").is_none(),
-            "PLCSH_RELEASE_TEST is set: the Windows build and MinGW must be here"
+            "PLCSH_RELEASE_TEST is set: the Windows build, MinGW and Wine must be here"
         );
-        common::skipped("the Windows build and MinGW (the Windows stage of CI: .ci/windows)");
+        common::skipped("the Windows build, MinGW and Wine (the Windows stage of CI: .ci/windows)");
         return;
     };
     let dist = release(&win, 1);
