@@ -7,10 +7,21 @@
 //! failure `{"ok":false,"cmd":…,"error":{"kind","message","device"?,"operand"?,"hint"?,"column"?}}`.
 
 use crate::core::{DataType, Error, Value};
-use crate::session::Reading;
 use comfy_table::{presets, ContentArrangement, Table};
 use serde::Serialize;
 use std::io::{self, Write};
+
+/// One value read or written, as reported to users and scripts (`values`, `writes`).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Reading {
+    pub operand: String,
+    pub value: Value,
+    #[serde(rename = "type")]
+    pub dtype: DataType,
+    /// Set when a command touches several devices.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub device: Option<String>,
+}
 
 /// How a result is shown to a person.
 #[derive(Clone, Debug, Default)]

@@ -80,6 +80,24 @@ pub fn snapshots() -> Option<PathBuf> {
     env_path("PLCSH_SNAPSHOTS").or_else(|| dirs().map(|d| d.data_local_dir().join("snapshots")))
 }
 
+/// The file of snapshot `name` (a path when it has a path separator of this system — `/`, and
+/// `\` on Windows — or a drive letter, or ends in `.json`).
+pub fn snapshot_file(name: &str) -> crate::core::Result<PathBuf> {
+    // A drive (`C:x`) is a path prefix on Windows only; elsewhere Path says there is none.
+    let drive = Path::new(name).components().any(|c| matches!(c, std::path::Component::Prefix(_)));
+    if name.chars().any(std::path::is_separator) || drive || name.ends_with(".json") {
+        return Ok(PathBuf::from(name));
+    }
+    if name.is_empty() || !name.chars().all(|c| c.is_ascii_alphanumeric() || "_-.".contains(c)) {
+        return Err(crate::core::Error::usage(format!("`{name}` is not a snapshot name (letters, digits, _ - .)"))
+            .hint("or give a file path ending in .json"));
+    }
+    let d = snapshots().ok_or_else(|| {
+        crate::core::Error::io("no data directory for snapshots").hint("give a file path ending in .json")
+    })?;
+    Ok(d.join(format!("{name}.json")))
+}
+
 /// The directory a served UMPK keeps its flash in (one file per model and link) unless
 /// `--umpk-state FILE` names one.
 pub fn umpk_flash() -> Option<PathBuf> {

@@ -53,6 +53,9 @@ struct NotConnected {
 /// How `devices` and the prompt tell a device that is not connected yet: the end of its link.
 pub const NOT_CONNECTED: &str = " (not connected)";
 
+/// The model a device not connected yet shows when its URL names none.
+pub const UNKNOWN_MODEL: &str = "not connected";
+
 /// Is this device one that has not connected yet?
 pub fn is_not_connected(info: &DeviceInfo) -> bool {
     info.link.ends_with(NOT_CONNECTED)
@@ -70,7 +73,7 @@ impl Pending {
         let model = crate::core::url::DeviceUrl::parse(url)
             .ok()
             .and_then(|u| u.param("model").map(str::to_string))
-            .unwrap_or_else(|| "not connected".to_string());
+            .unwrap_or_else(|| UNKNOWN_MODEL.to_string());
         let info = DeviceInfo { family, model, link: format!("{url}{NOT_CONNECTED}"), simulated: false };
         let space = NotConnected { family, reason: error };
         Pending { state: State::Unopened(Unopened { open, info, space }) }
@@ -121,7 +124,7 @@ impl Pending {
 
 /// The family a URL's scheme names, for `devices` before the device answers.
 fn family_of(url: &str) -> &'static str {
-    crate::session::url_family(url).map_or("unknown", |(family, _)| family)
+    crate::schemes::url_family(url).map_or("unknown", |(family, _)| family)
 }
 
 /// A link error said again for a device that stays in the session, not connected.
@@ -225,11 +228,11 @@ mod tests {
         std::fs::create_dir_all(&dir).unwrap();
         let state = dir.join("state.json");
         let clock = Clock::stepped();
-        let sim = crate::session::open_url("sim:K205-16DT", &clock).unwrap();
+        let sim = crate::schemes::open_url("sim:K205-16DT", &clock).unwrap();
         let mut first = Pending::option_on_first_use(sim, "state", &state.to_string_lossy());
         assert!(!first.is_ready());
         // Not used yet: another holder can take the state file.
-        let other = crate::session::open_url("sim:K205-16DT", &clock).unwrap();
+        let other = crate::schemes::open_url("sim:K205-16DT", &clock).unwrap();
         let mut other = Pending::option_on_first_use(other, "state", &state.to_string_lossy());
         other.ready().expect("the first holder");
         let e = first.ready().unwrap_err();
@@ -250,7 +253,7 @@ mod tests {
         std::fs::create_dir_all(&dir).unwrap();
         let state = dir.join("state.json");
         let clock = Clock::stepped();
-        let sim = crate::session::open_url("sim:K205-16DT", &clock).unwrap();
+        let sim = crate::schemes::open_url("sim:K205-16DT", &clock).unwrap();
         let mut plc = Pending::option_on_first_use(sim, "state", &state.to_string_lossy());
         assert!(crate::servo::ops(&mut plc).is_none());
         assert!(crate::core::device::lookup(&mut plc, "umpk", &[]).unwrap().is_none());
@@ -265,9 +268,9 @@ mod tests {
     fn a_device_not_there_yet_is_tried_again_on_each_use() {
         let clock = Clock::stepped();
         let url = "tcp://127.0.0.1:1?model=K205-16DT";
-        let e = crate::session::open_url(url, &clock).err().expect("nothing listens on port 1");
+        let e = crate::schemes::open_url(url, &clock).err().expect("nothing listens on port 1");
         let c = clock.clone();
-        let mut d = Pending::unopened(url, Box::new(move || crate::session::open_url(url, &c)), e);
+        let mut d = Pending::unopened(url, Box::new(move || crate::schemes::open_url(url, &c)), e);
         assert_eq!(d.info().family, "k2");
         assert_eq!(d.info().model, "K205-16DT");
         assert!(is_not_connected(d.info()));
@@ -278,9 +281,9 @@ mod tests {
         // Now something listens there (a listener bound to port 0 stands in for the PLC).
         let l = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
         let url = format!("tcp://{}?model=K205-16DT", l.local_addr().unwrap());
-        let e = crate::session::open_url("tcp://127.0.0.1:1", &clock).err().unwrap();
+        let e = crate::schemes::open_url("tcp://127.0.0.1:1", &clock).err().unwrap();
         let (u, c) = (url.clone(), clock.clone());
-        let mut d = Pending::unopened(&url, Box::new(move || crate::session::open_url(&u, &c)), e);
+        let mut d = Pending::unopened(&url, Box::new(move || crate::schemes::open_url(&u, &c)), e);
         d.ready().expect("the listener accepts the connection");
         assert!(d.is_ready());
         assert!(!is_not_connected(d.info()), "{}", d.info().link);

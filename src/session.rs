@@ -2,27 +2,18 @@
 //! interrupt flag. It is the one API the REPL, Lua and one-shot commands call; front ends
 //! never touch transports or simulators directly.
 //!
-//! Device URLs are opened through one list, [`open_url`]: a new family adds its schemes
-//! there.
+//! Device URLs are opened through one list, [`crate::schemes::open_url`]: a new family adds
+//! its schemes there.
 
-use crate::core::platform::words::port;
+pub use crate::schemes::{open_url, url_family, K2_SIM_PARAMS, SCHEMES};
+
 use crate::core::url::DeviceUrl;
-use crate::core::{Clock, DataType, Device, Error, Operand, Result, Value};
-use serde::Serialize;
+use crate::core::{Clock, Device, Error, Operand, Result, Value};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 
-/// One value read or written, as reported to users and scripts.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Reading {
-    pub operand: String,
-    pub value: Value,
-    #[serde(rename = "type")]
-    pub dtype: DataType,
-    /// Set when a command touches several devices.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub device: Option<String>,
-}
+/// One value read or written, as reported to users and scripts (rendered by [`crate::output`]).
+pub use crate::output::Reading;
 
 /// An open device with its name.
 pub struct Entry {
@@ -68,72 +59,11 @@ pub struct Session {
     pub budget: Option<Arc<crate::core::budget::Budget>>,
 }
 
-/// URL schemes with what they open, for completion and hints, and the family and kind
-/// (simulated or not) each names: `(prefix, meaning, family, simulated)`. Keep in step with
-/// [`open_url`] (a test checks that every scheme listed here is one `open_url` knows).
-pub static SCHEMES: &[(&str, &str, &str, bool)] = &[
-    ("sim:", "in-process K2 simulator: sim:MODEL", "k2", true),
-    ("kinco:", concat!("Kinco servo drive on a serial port: kinco:", port!(), "?id=1&baud=38400"), "servo", false),
-    ("sim-servo:", "in-process Kinco servo simulator: sim-servo:?id=1", "servo", true),
-    ("umpk:", concat!("UMPK8/UMPK16 teaching PLC on a serial port: umpk:", port!(), "?baud=57600"), "umpk", false),
-    ("sim-umpk:", "in-process UMPK simulator: sim-umpk:UMPK16", "umpk", true),
-    ("tcp://", "K2 over Modbus TCP: tcp://HOST:502?unit=1&model=K204ET-16DT", "k2", false),
-    ("rtu:", concat!("K2 over Modbus RTU: rtu:", port!(), "?baud=115200&unit=1&model=K205-16DT"), "k2", false),
-    ("rtu+tcp://", "K2 through an RTU-over-TCP gateway: rtu+tcp://HOST:PORT?unit=1", "k2", false),
-    ("fx:", concat!("FX PLC on its programming port: fx:", port!(), "?model=FX2N"), "fx", false),
-    ("fxlink:", concat!("FX PLC over the computer link: fxlink:", port!(), "?station=0&pc=FF&wait=0"), "fx", false),
-    ("sim-fx:", "in-process FX simulator: sim-fx:FX2N[?protocol=link]", "fx", true),
-];
-
 /// The `control=PATH` of a wire URL: a served simulator's control channel. The drive line
 /// (`kinco:`) takes it itself; for the other families the session keeps it.
 fn control_param(url: &str) -> Option<std::path::PathBuf> {
     let u = DeviceUrl::parse(url).ok()?;
     matches!(u.base_scheme(), "tcp" | "rtu" | "fx" | "fxlink" | "umpk").then(|| u.param("control").map(Into::into))?
-}
-
-/// The URL parameters of the in-process K2 simulator (`sim:MODEL`).
-pub const K2_SIM_PARAMS: &[&str] = &["model", "program"];
-
-/// The family a device URL names and whether it is a simulator, by its base scheme
-/// (`rtu+tcp://…` is `rtu`); `None` for an unknown scheme or a bare profile name.
-pub fn url_family(url: &str) -> Option<(&'static str, bool)> {
-    let (scheme, _) = url.split_once(':')?;
-    let base = scheme.split('+').next().unwrap_or(scheme);
-    SCHEMES
-        .iter()
-        .find(|(prefix, ..)| prefix.trim_end_matches("//").trim_end_matches(':') == base)
-        .map(|&(_, _, family, simulated)| (family, simulated))
-}
-
-/// Opens a device from its URL. Every scheme plcsh knows is listed here.
-pub fn open_url(url: &str, clock: &Clock) -> Result<Box<dyn Device>> {
-    let mut u = DeviceUrl::parse(url)?;
-    if matches!(u.base_scheme(), "tcp" | "rtu" | "fx" | "fxlink" | "umpk") {
-        u = u.without("control");
-    }
-    match u.base_scheme() {
-        "sim" => {
-            u.expect_params(K2_SIM_PARAMS)?;
-            let model = u.param("model").unwrap_or(&u.target);
-            let mut d = crate::k2::open_sim(model, clock.clone())?;
-            if let Some(p) = u.param("program") {
-                d.set_option("program", p)?; // an IL program running in the simulated CPU
-            }
-            Ok(d)
-        }
-        "kinco" => crate::servo::driver::open_serial(&u),
-        "sim-servo" => crate::servo::driver::open_sim(&u, clock),
-        "tcp" | "rtu" => crate::k2::open_wire(&u),
-        "fx" => crate::fx::driver::open_port(&u),
-        "fxlink" => crate::fx::driver::open_link(&u),
-        "sim-fx" => crate::fx::driver::open_sim(&u, clock),
-        "umpk" => crate::umpk::driver::open_serial(&u),
-        "sim-umpk" => crate::umpk::driver::open_sim(&u, clock),
-        other => Err(Error::usage(format!("unknown device scheme `{other}:` in {url}")).hint(
-            "known schemes: sim:MODEL, tcp://HOST:PORT, rtu:PORT, kinco:PORT?id=1, sim-servo:?id=1, fx:PORT, fxlink:PORT, sim-fx:FX2N, umpk:PORT, sim-umpk:UMPK16 (PORT: COM3, /dev/ttyUSB0; a serial device server: rtu+tcp://HOST:PORT, kinco+rfc2217://HOST:PORT, …)",
-        )),
-    }
 }
 
 impl Session {
@@ -198,12 +128,12 @@ impl Session {
         self.confine.as_ref().map_or(Ok(()), |c| c.check_read(path))
     }
 
-    /// The file of snapshot `name` (`crate::snapshot::locate`), under a sandbox's rules when
+    /// The file of snapshot `name` ([`crate::paths::snapshot_file`]), under a sandbox's rules when
     /// there are some: a path under its folders, never a named snapshot in the data directory.
     pub fn snapshot_file(&self, name: &str, save: bool) -> Result<std::path::PathBuf> {
         match &self.confine {
             Some(c) => c.snapshot_file(name, save),
-            None => crate::snapshot::locate(name),
+            None => crate::paths::snapshot_file(name),
         }
     }
 
@@ -239,7 +169,7 @@ impl Session {
             c.check_url(url).map_err(|e| e.device(name))?;
         }
         if !url.contains(':') {
-            return crate::profile::open(self, name, url);
+            return self.open_profile_named(name, url);
         }
         crate::core::trace::name_device(url, name);
         let device = open_url(url, &self.clock).map_err(|e| e.device(name))?;
@@ -309,6 +239,28 @@ impl Session {
                 done.push(i);
             }
         }
+        Ok(())
+    }
+
+    /// Opens profile `profile` under device name `name`: its URL, then its options, then its
+    /// write rules as the entry's [`crate::profile::Guard`]. Called by [`Self::open`] for a URL
+    /// without a scheme.
+    fn open_profile_named(&mut self, name: &str, profile: &str) -> Result<()> {
+        let p = self.profiles.get(profile).cloned().ok_or_else(|| self.profiles.unknown(profile).device(name))?;
+        self.open_profile(name, &p)
+    }
+
+    /// Opens profile `p` under device name `name` (also a fleet member's own profile): its
+    /// URL, its options, its write rules as the entry's guard.
+    pub fn open_profile(&mut self, name: &str, p: &crate::profile::Profile) -> Result<()> {
+        let from = format!("from profile `{}` ({})", p.name, p.origin);
+        crate::core::trace::name_device(&p.url, name);
+        let mut device = open_url(&p.url, &self.clock).map_err(|e| e.device(name).cause(&from))?;
+        for (k, v) in &p.options {
+            device.set_option(k, v).map_err(|e| e.device(name).cause(&from))?;
+        }
+        let guard = crate::profile::Guard::build(p, device.operands()).map_err(|e| e.device(name))?;
+        self.add_guarded(name, &p.url, device, guard);
         Ok(())
     }
 

@@ -290,12 +290,20 @@ fn settle(s: &mut Session) {
     }
 }
 
-/// The wires a simulated PLC hosts, with their state.
+/// The wires a simulated PLC hosts, with their state. Every field of a wire and of the
+/// harness is named (no `..`): one added does not compile until it is saved or named.
 fn capture_wiring(sim: &crate::k2::sim::K2Sim) -> Vec<WireSnap> {
-    sim.wiring
-        .as_ref()
-        .map(|h| h.wires.iter().map(|w| WireSnap { decl: w.decl.to_string(), state: w.state.clone() }).collect())
-        .unwrap_or_default()
+    let Some(h) = sim.wiring.as_ref() else { return Vec::new() };
+    // The peers are the session's devices, found again by name when the wires are declared.
+    let crate::core::wiring::Harness { peers: _, wires } = h.as_ref();
+    wires
+        .iter()
+        .map(|w| {
+            // The kind and the peer follow from the declaration (`sim wire` makes them again).
+            let crate::core::wiring::Wire { decl, kind: _, peer: _, state } = w;
+            WireSnap { decl: decl.to_string(), state: state.clone() }
+        })
+        .collect()
 }
 
 impl Snapshot {
@@ -571,21 +579,10 @@ pub fn dir() -> Option<PathBuf> {
     crate::paths::snapshots()
 }
 
-/// The file of snapshot `name` (a path when it has a path separator of this system — `/`, and
-/// `\` on Windows — or a drive letter, or ends in `.json`).
+/// The file of snapshot `name` ([`crate::paths::snapshot_file`]: a path when it has a path
+/// separator of this system, a drive letter or ends in `.json`, else a named snapshot).
 pub fn locate(name: &str) -> Result<PathBuf> {
-    // A drive (`C:x`) is a path prefix on Windows only; elsewhere Path says there is none.
-    let drive = Path::new(name).components().any(|c| matches!(c, std::path::Component::Prefix(_)));
-    if name.chars().any(std::path::is_separator) || drive || name.ends_with(".json") {
-        return Ok(PathBuf::from(name));
-    }
-    if name.is_empty() || !name.chars().all(|c| c.is_ascii_alphanumeric() || "_-.".contains(c)) {
-        return Err(Error::usage(format!("`{name}` is not a snapshot name (letters, digits, _ - .)"))
-            .hint("or give a file path ending in .json"));
-    }
-    let d =
-        dir().ok_or_else(|| Error::io("no data directory for snapshots").hint("give a file path ending in .json"))?;
-    Ok(d.join(format!("{name}.json")))
+    crate::paths::snapshot_file(name)
 }
 
 /// Named snapshots: `(name, file)`, sorted.

@@ -295,3 +295,18 @@ fn time_chance_and_addresses_are_the_same_in_every_run() {
     assert!(v("format_p").contains("%p (an address) is not available in a graded run"), "{}", v("format_p"));
     std::fs::remove_dir_all(&d).unwrap();
 }
+
+/// A submission printing text that is not UTF-8 (a CP1251 line, as a Russian CSV file holds
+/// it) prints as stock Lua does, and is graded as what it does: its output is kept (the JSON
+/// report shows the bytes that are not UTF-8 as U+FFFD).
+#[test]
+fn a_submission_printing_cp1251_text_is_graded_and_its_output_kept() {
+    let d = temp("cp1251");
+    let subs = vec![("cyrillic.lua", format!("{SOLUTION}\nprint(\"\\207\\240\\232\\226\\229\\242;1\")\n"))];
+    let (by, o) = grade(&d, &subs, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", both(&o));
+    let r = &by["cyrillic"];
+    assert_eq!(verdict(r), "passed", "{r}");
+    assert_eq!(r["stdout"].as_str(), Some("\u{FFFD}\u{FFFD}\u{FFFD}\u{FFFD}\u{FFFD}\u{FFFD};1\n"), "{r}");
+    std::fs::remove_dir_all(&d).unwrap();
+}

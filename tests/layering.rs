@@ -1,7 +1,9 @@
 //! One way down: the layers of `src/` and the rule that keeps them (docs/development.md,
 //! "Layers"). Each top-level module has a layer; a `crate::` path in a module may name its own
 //! layer or a lower one, never a higher one, and a device family never names another family.
-//! Inside one folder, the files (other than `mod.rs`) never depend on each other in a cycle.
+//! Inside one folder, the files (other than `mod.rs`) never depend on each other in a cycle;
+//! nor do the folders and files of one folder, the top-level modules among them, counting every
+//! file inside a folder as that folder's (a layer's modules may use each other, one way only).
 //!
 //! The test reads the source as text (comments and `#[cfg(test)]` code aside: a test may build
 //! a whole session to exercise a family) and names every line that breaks the rule. Exceptions
@@ -16,7 +18,7 @@ const LAYERS: &[(&str, &[&str])] = &[
     ("core", &["core"]),
     ("base", &["engine", "paths", "signals", "plot"]),
     ("families", &["k2", "servo", "umpk", "fx"]),
-    ("devices", &["wiring", "guard", "snapshot", "pending", "session", "profile", "confine", "output"]),
+    ("devices", &["wiring", "guard", "snapshot", "pending", "session", "profile", "confine", "output", "schemes"]),
     ("services", &["record"]),
     ("front ends", &["fleet", "lab", "script", "shell", "publish"]),
     ("cli", &["cli", "fuzzing"]),
@@ -308,6 +310,122 @@ fn no_cycles_between_the_files_of_a_folder() {
     assert!(cycles.is_empty(), "files of one folder that depend on each other in a cycle:\n{}", cycles.join("\n"));
     let stale: Vec<&str> = CYCLE_EXCEPTIONS.iter().map(|(f, _)| *f).filter(|f| !cyclic.contains(*f)).collect();
     assert!(stale.is_empty(), "cycle exceptions that no longer occur (remove them): {stale:?}");
+}
+
+/// A cycle in `edges`, if there is one (depth-first search).
+fn find_cycle(edges: &BTreeMap<String, BTreeSet<String>>) -> Option<Vec<String>> {
+    fn visit(
+        n: &str,
+        edges: &BTreeMap<String, BTreeSet<String>>,
+        stack: &mut Vec<String>,
+        done: &mut BTreeSet<String>,
+    ) -> Option<Vec<String>> {
+        if let Some(pos) = stack.iter().position(|s| s == n) {
+            return Some(stack[pos..].to_vec());
+        }
+        if !done.insert(n.to_string()) {
+            return None;
+        }
+        stack.push(n.to_string());
+        for m in edges.get(n).into_iter().flatten() {
+            if let Some(c) = visit(m, edges, stack, done) {
+                return Some(c);
+            }
+        }
+        stack.pop();
+        None
+    }
+    let mut done = BTreeSet::new();
+    edges.keys().find_map(|n| visit(n, edges, &mut Vec::new(), &mut done))
+}
+
+/// The children of every folder under src/ (its files and sub-folders, the crate root's being
+/// the top-level modules) never name each other in a cycle: an arrow goes from a child to
+/// another when any file inside the first names the second by its `crate::` path (for the top
+/// level, any `crate::MODULE`). So a session that opens profiles never has a profile open a
+/// session, and the shell that hands lines to Lua is not also a module Lua's engine hands back to.
+#[test]
+fn no_cycles_between_the_modules_and_folders_of_a_folder() {
+    let mut files = Vec::new();
+    rust_files(&src(), &mut files);
+    files.sort();
+    let root = src();
+    // Folder (as a crate path, "" for the root) → child → children it names.
+    let mut graphs: BTreeMap<String, BTreeMap<String, BTreeSet<String>>> = BTreeMap::new();
+    let mut children: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
+    let parts_of = |f: &Path| -> Vec<String> {
+        let rel = f.strip_prefix(&root).unwrap();
+        rel.iter().map(|p| p.to_string_lossy().trim_end_matches(".rs").to_string()).collect()
+    };
+    for f in &files {
+        let parts = parts_of(f);
+        if matches!(parts[0].as_str(), "bin" | "lib" | "main") {
+            continue;
+        }
+        for depth in 0..parts.len() {
+            let child = &parts[depth];
+            if child == "mod" {
+                continue;
+            }
+            children.entry(parts[..depth].join("::")).or_default().insert(child.clone());
+        }
+    }
+    for f in &files {
+        let parts = parts_of(f);
+        if matches!(parts[0].as_str(), "bin" | "lib" | "main") || is_test_file(f) {
+            continue;
+        }
+        let text = std::fs::read_to_string(f).unwrap();
+        let code: Vec<String> = code_lines(&text).into_iter().map(|(_, l)| l).collect();
+        // For each folder above the file: the child the file is in, and the children it names.
+        for depth in 0..parts.len() - 1 {
+            let folder = parts[..depth].join("::");
+            let me = &parts[depth];
+            let Some(kids) = children.get(&folder) else { continue };
+            let prefix = if folder.is_empty() { "crate::".to_string() } else { format!("crate::{folder}::") };
+            for line in &code {
+                let mut rest = line.as_str();
+                while let Some(p) = rest.find(prefix.as_str()) {
+                    let after = &rest[p + prefix.len()..];
+                    let names: Vec<String> = match after.strip_prefix('{') {
+                        Some(group) => group[..group.find('}').unwrap_or(group.len())]
+                            .split(',')
+                            .map(|i| i.trim().chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect())
+                            .collect(),
+                        None => vec![after.chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect()],
+                    };
+                    for n in names {
+                        if kids.contains(&n) && n != *me {
+                            graphs.entry(folder.clone()).or_default().entry(me.clone()).or_default().insert(n);
+                        }
+                    }
+                    rest = &rest[p + prefix.len()..];
+                }
+            }
+        }
+    }
+    let mut cycles = Vec::new();
+    for (folder, edges) in &graphs {
+        if let Some(c) = find_cycle(edges) {
+            let at = if folder.is_empty() { "src".to_string() } else { format!("src/{}", folder.replace("::", "/")) };
+            cycles.push(format!("{at}: {} → {}", c.join(" → "), c[0]));
+        }
+    }
+    assert!(cycles.is_empty(), "modules of one folder that name each other in a cycle:\n{}", cycles.join("\n"));
+}
+
+#[test]
+fn a_cycle_is_found() {
+    let edges = |pairs: &[(&str, &str)]| {
+        let mut m: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
+        for (a, b) in pairs {
+            m.entry(a.to_string()).or_default().insert(b.to_string());
+        }
+        m
+    };
+    assert_eq!(find_cycle(&edges(&[("shell", "script"), ("script", "lab")])), None);
+    let c = find_cycle(&edges(&[("lab", "script"), ("script", "shell"), ("shell", "lab")])).unwrap();
+    assert_eq!(c.len(), 3, "{c:?}");
 }
 
 #[test]

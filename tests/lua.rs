@@ -119,6 +119,27 @@ fn ctrl_c_during_wait_until_runs_the_abort_handlers_and_exits_non_zero() {
     let _ = std::fs::remove_file(&marker);
 }
 
+/// A line that is not UTF-8 (CP1251, as a Russian CSV file holds it) prints as its bytes, as
+/// stock Lua prints it, from `plcsh run` and from the REPL's `lua`, and the run succeeds.
+#[test]
+fn print_of_cp1251_text_writes_its_bytes() {
+    let cp1251 = b"\xCF\xF0\xE8\xE2\xE5\xF2;1\n"; // "Привет;1"
+    let dir = script("cp1251.lua", "").parent().unwrap().to_path_buf();
+    let csv = dir.join("line.csv");
+    std::fs::write(&csv, cp1251).unwrap();
+    let p = script(
+        "cp1251.lua",
+        "local f = assert(io.open(arg[1], 'rb'))\nlocal line = f:read('l')\nf:close()\nprint(line)\nplcsh.log(line)\n",
+    );
+    let o = run(&["run", p.to_str().unwrap(), csv.to_str().unwrap()], "");
+    assert!(o.status.success(), "{}", both(&o));
+    assert!(o.stdout.starts_with(b"\xCF\xF0\xE8\xE2\xE5\xF2;1\n"), "{:?}", o.stdout);
+    assert!(o.stdout.ends_with(b"s \xCF\xF0\xE8\xE2\xE5\xF2;1\n"), "plcsh.log too: {:?}", o.stdout);
+    let o = run(&[], "lua print('\\207\\240\\232')\n");
+    assert!(o.status.success(), "{}", both(&o));
+    assert_eq!(o.stdout, b"\xCF\xF0\xE8\n");
+}
+
 #[test]
 fn repl_lua_forms_share_one_state() {
     let input = "lua x = 20; y = 22\n:x + y\nlua\nfor i = 1, 2 do\n  print('line ' .. i)\nend\nend\n:function twice(v)\n  return v * 2\nend\n:twice(plc.VW0 + 4)\nset VW0=1; get VW0\n";

@@ -259,8 +259,21 @@ fn a_device_not_there_yet_shows_in_the_prompt_and_in_devices() {
     let e = s.open_or_later("plc", "rtu:./no-such-port?baud=19200&model=K205-16DT").unwrap();
     assert!(e.is_some(), "the port is missing: opened later");
     assert_eq!(plcsh::shell::repl::prompt(&s), "plc(not connected)> ");
-    let o = run(&["--json", "-d", "rtu:./no-such-port?baud=19200"], "devices\n");
-    assert!(stdout(&o).contains("not connected"), "{}", stdout(&o));
+    // Its model is known from the URL: the listing still says it is not connected, in the
+    // table and in JSON.
+    let url = "rtu:./no-such-port?baud=19200&model=K205-16DT";
+    let o = run(&["-d", url], "devices\n");
+    let row = stdout(&o).lines().find(|l| l.contains("no-such-port")).map(str::to_string);
+    assert!(row.as_deref().is_some_and(|r| r.contains("(not connected)") && r.contains("K205-16DT")), "{}", both(&o));
+    let o = run(&["--json", "-d", url], "devices\n");
+    let j = json_lines(&o);
+    let named = |j: &serde_json::Value, name: &str| {
+        j["devices"].as_array().and_then(|d| d.iter().find(|d| d["name"] == name)).cloned().unwrap_or_default()
+    };
+    assert_eq!(named(&j[0], "plc")["connected"], false, "{j:?}");
+    assert_eq!(named(&j[0], "plc")["model"], "K205-16DT", "{j:?}");
+    // The simulated drive beside it is connected, and says so.
+    assert_eq!(named(&j[0], "servo")["connected"], true, "{j:?}");
 }
 
 #[test]

@@ -1,13 +1,16 @@
 //! Everything a snapshot saves restores: random simulated machines (a K2 running an IL program,
 //! with injected faults, wires — PTO → drive, encoder → counter, drive outputs and switches,
 //! loopbacks — counters with queued events, pulse trains; drives moving, jogging, homing,
-//! following pulses, faulting at a position; a UMPK with a program and flash; an FX PLC
-//! with a program) run for random virtual times, are saved, and restored into a fresh
+//! following pulses, faulting at a position; a UMPK with a program, flash, injected faults
+//! and a failing flash page; an FX PLC with a program and injected faults) run for random
+//! virtual times, are saved, and restored into a fresh
 //! session that first did unrelated things of its own. Then:
 //!
 //! - the restored session saves the same bytes (save → restore → save is the identity);
 //! - the original and the restored session, continued with the same commands for the same
-//!   virtual time, give the same results and end in the same state, byte for byte;
+//!   virtual time, give the same results — every statistic a program or a client reads
+//!   among them (the K2's scan count and SMW22/24/26, the FX PLC's D8010–D8012, the UMPK's
+//!   program time) — and end in the same state, byte for byte;
 //! - a new `plcsh` process restoring the file and continuing ends in that state too.
 //!
 //! Cases come from a seeded generator (`core::test_rng`); a failure prints the seed and the
@@ -72,8 +75,24 @@ fn path(rel: &str) -> String {
     format!("{ROOT}/{rel}")
 }
 
+/// Applies a line of the simulated FX PLC's control language (`fx-control fault stuck X1=1`:
+/// what `plcsh sim serve --fx-…` takes on its control channel) to the in-process one.
+fn fx_control(sh: &mut Shell, line: &str) -> Option<Value> {
+    let words = line.strip_prefix("fx-control ")?;
+    let i = sh.session.index("fx").expect("an FX device");
+    let plc = plcsh::fx::driver::simulator(sh.session.entry(i).device.as_mut()).expect("a simulated FX PLC");
+    let mut m = plc.lock().unwrap();
+    Some(match plcsh::fx::control::answer(&mut m, words) {
+        Ok((text, data)) => serde_json::json!({ "text": text, "data": data }),
+        Err(e) => serde_json::json!({ "error": e.to_string() }),
+    })
+}
+
 /// Runs a line; each command's result as JSON (an error as `{"error": message}`).
 fn run(sh: &mut Shell, line: &str) -> Vec<Value> {
+    if let Some(v) = fx_control(sh, line) {
+        return vec![v];
+    }
     sh.exec(line)
         .into_iter()
         .map(|r| match r {
@@ -85,6 +104,10 @@ fn run(sh: &mut Shell, line: &str) -> Vec<Value> {
 
 /// Runs a line whose every command must succeed.
 fn must(sh: &mut Shell, line: &str, case: &Case) {
+    if let Some(v) = fx_control(sh, line) {
+        assert!(v.get("error").is_none(), "{}\n`{line}`: {v}", case.describe());
+        return;
+    }
     for r in sh.exec(line) {
         if let Err((cmd, e)) = r {
             panic!("{}\n`{line}`: {cmd} failed: {e}", case.describe());
@@ -296,7 +319,19 @@ fn generate(seed: u64) -> Case {
             actions.push("use umpk; sim input I1=0".into());
             gets.push("umpk:Q0 umpk:Q1 umpk:Q2".into());
         }
-        gets.push("umpk:I0".into());
+        // Injected faults: an input stuck (for a while or until cleared), a failing flash
+        // page. A line kept silent shows in the state compared, not by asking the silent line.
+        for _ in 0..r.below(3) {
+            setup.push(match r.below(4) {
+                0 => format!("umpk sim fault stuck I{}={}", r.below(4), r.below(2)),
+                1 => format!("umpk sim fault stuck I1=1 for={}", ms(&mut r, 1, 2_000)),
+                2 => format!("umpk sim flash-fail {}", r.below(8)),
+                _ => format!("umpk sim fault no-reply for={}", ms(&mut r, 1, 600)),
+            });
+        }
+        actions.push("use umpk; umpk sim fault stuck I3=1 for=300ms".into());
+        // Statistics a client reads: the longest program time (`umpk timing`).
+        gets.push("umpk:I0 umpk:I1 umpk:I3".into());
     }
 
     // An FX PLC running its program.
@@ -309,7 +344,15 @@ fn generate(seed: u64) -> Case {
         actions.push("set fx:X1=1".into());
         actions.push("set fx:X1=0".into());
         actions.push("set fx:X0=1".into());
-        gets.push("fx:Y0 fx:Y1 fx:Y2 fx:CS0 fx:D0 fx:TN0".into());
+        // Injected faults (the control channel's words, applied in process): inputs stuck.
+        for _ in 0..r.below(3) {
+            setup.push(match r.below(2) {
+                0 => format!("fx-control fault stuck X{}={}", r.below(2), r.below(2)),
+                _ => format!("fx-control fault stuck X1=1 for={}", ms(&mut r, 1, 2_000)),
+            });
+        }
+        // Statistics a program reads: the scan times D8010–D8012.
+        gets.push("fx:Y0 fx:Y1 fx:Y2 fx:CS0 fx:D0 fx:TN0 fx:X0 fx:X1 fx:D8010 fx:D8011 fx:D8012".into());
     }
 
     // Run to the save: steps of random length with actions between them.
@@ -346,7 +389,17 @@ fn generate(seed: u64) -> Case {
     }
     after.push(format!("get {}", gets.join(" ")));
     if k2 {
-        after.push("use plc; events keep; sim faults; sim wires".into());
+        // `sim program` shows the scan count and SMW22/24/26's times.
+        after.push("use plc; events keep; sim faults; sim wires; sim program".into());
+        after.push("get plc:SMW22 plc:SMW24 plc:SMW26".into());
+    }
+    if umpk {
+        after.push("use umpk; umpk sim faults; umpk sim events; umpk timing".into());
+    }
+    if fx {
+        after.push("fx-control faults".into());
+        after.push("fx-control events".into());
+        after.push("use fx; sim program".into());
     }
     Case { seed, devices, setup, noise, after }
 }
@@ -424,7 +477,8 @@ fn a_new_plcsh_process_restores_and_continues_identically() {
         // Line by line on standard input, as in process: a failing command (an injected
         // fault) ends its line only.
         let mut lines = vec![format!("sim snapshot restore {}", file.display())];
-        lines.extend(case.after.iter().cloned());
+        // The FX control words go to the in-process simulator only (they only read here).
+        lines.extend(case.after.iter().filter(|l| !l.starts_with("fx-control ")).cloned());
         lines.push(format!("sim snapshot save {}", out.display()));
         let mut args = vec!["--time".to_string(), "stepped".into(), "--json".into()];
         for (n, u) in &case.devices {
@@ -442,5 +496,70 @@ fn a_new_plcsh_process_restores_and_continues_identically() {
         );
         let _ = std::fs::remove_file(&file);
         let _ = std::fs::remove_file(&out);
+    }
+}
+
+/// Every saved field is restored or refused, mechanically: where a simulator's state is
+/// saved, its state structs are taken apart whole — `let Struct { a, b, c: _ } = …` without
+/// `..` — so a field added to a simulator does not compile until its snapshot code saves it
+/// or names it as not the machine's state (with a comment saying why). This test keeps
+/// those patterns in place: each exists and none has `..`. A drive is saved whole by serde
+/// (every field, none skipped), as are the fault lists.
+#[test]
+fn each_simulator_state_struct_is_taken_apart_whole_where_it_is_saved() {
+    let whole: &[(&str, &[&str])] = &[
+        ("src/k2/sim/snapshot.rs", &["K2Sim", "Memory", "Backup", "Plc", "Loaded"]),
+        ("src/k2/sim/pto.rs", &["PtoChannel"]),
+        ("src/k2/sim/hsc/mod.rs", &["HscChannel"]),
+        ("src/k2/sim/events.rs", &["EventLog"]),
+        ("src/umpk/sim/snapshot.rs", &["Umpk", "Image"]),
+        ("src/fx/snapshot.rs", &["Memory", "Cpu"]),
+        ("src/servo/sim/mod.rs", &["SimLine"]),
+        ("src/snapshot.rs", &["Harness", "Wire"]),
+    ];
+    for (file, structs) in whole {
+        let text = std::fs::read_to_string(path(file)).unwrap();
+        // Comments out: a `..` in one is not a rest pattern.
+        let code: String = text.lines().map(|l| l.split("//").next().unwrap_or("").to_string() + "\n").collect();
+        for name in *structs {
+            let start = code
+                .match_indices("let ")
+                .map(|(i, _)| i + 4)
+                .find(|&i| {
+                    let head = code[i..].split('{').next().unwrap_or("");
+                    head.trim().rsplit("::").next() == Some(*name) && !head.contains(['=', ';', '('])
+                })
+                .unwrap_or_else(|| {
+                    panic!("{file}: no `let {name} {{ … }} = …` taking the state apart where it is saved")
+                });
+            let open = start + code[start..].find('{').unwrap();
+            let mut depth = 0;
+            let end = code[open..]
+                .char_indices()
+                .find_map(|(i, c)| {
+                    depth += match c {
+                        '{' => 1,
+                        '}' => -1,
+                        _ => 0,
+                    };
+                    (depth == 0).then_some(open + i)
+                })
+                .unwrap();
+            let pattern = &code[open..=end];
+            assert!(!pattern.contains(".."), "{file}: `let {name} {pattern} = …` must name every field, without `..`");
+        }
+    }
+    for (file, ty) in [
+        ("src/servo/sim/drive.rs", "pub struct Drive {"),
+        ("src/core/sim_faults.rs", "pub struct Faults {"),
+        ("src/k2/sim/fault.rs", "pub struct Faults {"),
+        ("src/core/wiring.rs", "pub struct WireState {"),
+    ] {
+        let text = std::fs::read_to_string(path(file)).unwrap();
+        let at = text.find(ty).unwrap_or_else(|| panic!("{file}: no `{ty}`"));
+        let derive = text[..at].rsplit("#[derive(").next().unwrap();
+        assert!(derive.contains("Serialize") && derive.contains("Deserialize"), "{file}: {ty} is saved by serde");
+        let body = &text[at..at + text[at..].find("\n}").unwrap()];
+        assert!(!body.contains("serde(skip"), "{file}: {ty} skips a field a snapshot would then leave out");
     }
 }

@@ -52,6 +52,23 @@ fn a_missing_port_gets_a_hint_with_this_systems_port_names() {
     }
 }
 
+/// A command for a servo drive or a UMPK when none is open hints how to open one, with this
+/// system's port name.
+#[test]
+fn a_missing_servo_or_umpk_gets_a_hint_with_this_systems_port_name() {
+    for line in ["close servo; servo status", "umpk info"] {
+        let out =
+            plcsh().args(["--state", "none", "-c", line]).stdin(std::process::Stdio::null()).output_retrying().unwrap();
+        let err = text(&out.stderr);
+        assert!(!out.status.success() && err.contains("open one with --device"), "{line}: {err}");
+        if cfg!(windows) {
+            assert!(err.contains(":COM3") && !err.contains("/dev/"), "{line}: {err}");
+        } else {
+            assert!(err.contains(":/dev/ttyUSB0") && !err.contains("COM3"), "{line}: {err}");
+        }
+    }
+}
+
 #[cfg(windows)]
 mod console {
     use super::common::{plcsh, Start};

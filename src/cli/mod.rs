@@ -498,6 +498,7 @@ fn run_cli() -> i32 {
     if !matches!(cli.sub, Some(Sub::Run(_))) {
         crate::script::install(&mut shell);
     }
+    crate::lab::hook::install(&mut shell);
 
     let serving = matches!(cli.sub, Some(Sub::Sim { .. }));
     let code = run(&cli, shell, style, out);

@@ -16,7 +16,7 @@ use std::time::Duration;
 pub const WORDS: &str = "fault no-reply [for=D] | fault stuck IN=1 [for=D] | fault clear [ID] | faults | events";
 
 /// What an injected fault does.
-#[derive(Clone, Debug, PartialEq, Eq, serde::Serialize)]
+#[derive(Clone, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum FaultKind {
     /// Received bytes are ignored: no echo, no reply (a dead line or a hung controller).
@@ -35,7 +35,7 @@ impl FaultKind {
 }
 
 /// One injected fault, its window in virtual time.
-#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Fault {
     pub id: u32,
     #[serde(flatten)]
@@ -60,13 +60,16 @@ impl Fault {
     }
 }
 
-/// The faults set on one simulator, and when each started acting.
-#[derive(Clone, Debug, Default)]
+/// The faults set on one simulator, and when each started acting. A snapshot keeps all of
+/// it (the UMPK's and the FX PLC's sections), so a restored simulator holds the same inputs
+/// stuck, stays silent for the rest of a window and numbers its next fault alike.
+#[derive(Clone, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Faults {
     pub list: Vec<Fault>,
+    /// The id of the last fault set.
     next: u32,
     /// `(virtual time µs, fault id, what)` of every fault that started acting.
-    pub log: Vec<(u64, u32, &'static str)>,
+    pub log: Vec<(u64, u32, String)>,
 }
 
 fn usage(msg: impl Into<crate::core::error::Text>, words: &str) -> Error {
@@ -198,7 +201,7 @@ impl Faults {
         self.next += 1;
         let from = now.as_micros() as u64;
         let f = Fault { id: self.next, kind, from_us: from, until_us: window.map(|d| from + d.as_micros() as u64) };
-        self.log.push((from, f.id, f.kind.name()));
+        self.log.push((from, f.id, f.kind.name().to_string()));
         let text = f.describe();
         let data = json!({"id": f.id, "fault": f, "time_us": from});
         self.list.push(f);

@@ -18,9 +18,13 @@ impl DeviceUrl {
     pub fn parse(text: &str) -> Result<DeviceUrl> {
         let t = text.trim();
         let Some(colon) = t.find(':') else {
-            return Err(Error::usage(format!("`{t}` is not a device URL")).hint(
-                "use sim:MODEL, tcp://HOST:PORT?unit=1, rtu:/dev/ttyUSB0?baud=115200, rtu+tcp://HOST:PORT, kinco:/dev/ttyUSB0?id=1 or sim-servo:?id=1",
-            ));
+            return Err(Error::usage(format!("`{t}` is not a device URL")).hint(concat!(
+                "use sim:MODEL, tcp://HOST:PORT?unit=1, rtu:",
+                crate::core::platform::words::port!(),
+                "?baud=115200, rtu+tcp://HOST:PORT, kinco:",
+                crate::core::platform::words::port!(),
+                "?id=1 or sim-servo:?id=1"
+            )));
         };
         let scheme = t[..colon].to_ascii_lowercase();
         let mut rest = &t[colon + 1..];

@@ -52,7 +52,7 @@ impl Base {
     }
 
     /// A shell with one device, `m`, open and current: opened through the profile path
-    /// ([`crate::profile::open_profile`]), so its write rules and `--read-only` hold.
+    /// ([`crate::session::Session::open_profile`]), so its write rules and `--read-only` hold.
     pub fn open(&self, fleet: &Fleet, m: &Member, interrupt: Arc<AtomicBool>) -> Result<Shell> {
         let mut s = self.open_session(fleet, m, interrupt)?;
         s.profiles = self.profiles.clone();
@@ -69,7 +69,7 @@ impl Base {
         s.set_read_only(self.read_only);
         s.interrupt = interrupt;
         let p = fleet.profile_of(m, &self.profiles)?.clone();
-        crate::profile::open_profile(&mut s, &m.name, &p)?;
+        s.open_profile(&m.name, &p)?;
         s.use_device(&m.name)?;
         Ok(s)
     }

@@ -23,9 +23,9 @@ pub struct Memory {
     pub(super) tn: Vec<u16>,
     pub(super) cn: Vec<u32>,
     pub(super) d: Vec<u16>,
-    regions: Vec<Region>,
+    pub(super) regions: Vec<Region>,
     /// The extended (E-command) table's regions.
-    ext_regions: Vec<Region>,
+    pub(super) ext_regions: Vec<Region>,
     /// Device writes made through either port (for tests and `devices`).
     pub writes: u64,
     /// The CPU that scans this image.

@@ -33,6 +33,9 @@ pub struct FxState {
     pub timers: Vec<TimerRun>,
     pub counter_prev: Vec<bool>,
     pub program: Option<ProgramState>,
+    /// Injected faults (`fault no-reply`, `fault stuck X0=1`) with their windows and log.
+    #[serde(default)]
+    pub faults: crate::core::sim_faults::Faults,
 }
 
 fn ns(d: Duration) -> u64 {
@@ -41,27 +44,60 @@ fn ns(d: Duration) -> u64 {
 
 impl Memory {
     /// The state to save (the PLC brought to the present first).
+    ///
+    /// Every field of [`Memory`] and its [`super::cpu::Cpu`] is named below (no `..`): a
+    /// field added to the simulator does not compile until it is saved here or named as not
+    /// the machine's state, with why.
     pub fn snapshot_state(&mut self) -> FxState {
         self.advance();
-        let c = &self.cpu;
+        let Memory {
+            model,
+            bits,
+            tn,
+            cn,
+            d,
+            // The ports' device tables, from the model.
+            regions: _,
+            ext_regions: _,
+            // Device writes through either port: the link's traffic (`devices` shows it), not
+            // the PLC's state.
+            writes: _,
+            cpu,
+            at,
+            faults,
+        } = &*self;
+        let super::cpu::Cpu {
+            // The session's clock: the snapshot's `clock_us`.
+            clock: _,
+            mode,
+            next_scan,
+            stats,
+            // The instruction cost table: fixed (`program::costs`), no command changes it.
+            costs: _,
+            fault,
+            program,
+            timers,
+            counter_prev,
+        } = cpu;
         FxState {
-            model: self.model.name.to_string(),
-            bits: self.bits.to_vec(),
-            tn: self.tn.clone(),
-            cn: self.cn.clone(),
-            d: self.d.clone(),
-            at_ns: ns(self.at),
-            mode: c.mode,
-            next_scan_ns: ns(c.next_scan),
-            stats: c.stats,
-            fault: c.fault.clone(),
-            timers: c.timers.clone(),
-            counter_prev: c.counter_prev.clone(),
-            program: c.program.as_ref().map(|p| ProgramState {
+            model: model.name.to_string(),
+            bits: bits.to_vec(),
+            tn: tn.clone(),
+            cn: cn.clone(),
+            d: d.clone(),
+            at_ns: ns(*at),
+            mode: *mode,
+            next_scan_ns: ns(*next_scan),
+            stats: *stats,
+            fault: fault.clone(),
+            timers: timers.clone(),
+            counter_prev: counter_prev.clone(),
+            program: program.as_ref().map(|p| ProgramState {
                 source: p.source.clone(),
                 text: p.text.clone(),
                 cpu: p.cpu.clone(),
             }),
+            faults: faults.clone(),
         }
     }
 
@@ -78,6 +114,12 @@ impl Memory {
             && st.counter_prev.len() == self.cpu.counter_prev.len();
         if !sizes_ok {
             return Err("the saved device image does not fit this model".into());
+        }
+        if let Some(f) = st.faults.list.iter().find(|f| match f.kind {
+            crate::core::sim_faults::FaultKind::Stuck { input, .. } => input >= self.model.x,
+            crate::core::sim_faults::FaultKind::NoReply => false,
+        }) {
+            return Err(format!("its fault {} holds an input this model does not have", f.id));
         }
         let program = match &st.program {
             None => None,
@@ -102,6 +144,7 @@ impl Memory {
         c.timers.clone_from(&st.timers);
         c.counter_prev.clone_from(&st.counter_prev);
         c.program = program;
+        self.faults.clone_from(&st.faults);
         Ok(())
     }
 }

@@ -8,6 +8,7 @@
 pub mod config;
 pub mod example;
 pub mod grader;
+pub mod hook;
 pub mod report;
 pub mod runner;
 

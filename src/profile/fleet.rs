@@ -12,7 +12,7 @@
 //! This module is the definition, parsed with the profiles (`crate::profile`) because a fleet's
 //! keys are a profile's; the concurrent runner is `crate::fleet::run`, the rendering of its
 //! results `crate::fleet::report`. A member is always opened through
-//! [`crate::profile::open_profile`], the same path as `connect PROFILE`, so the profile's write
+//! [`crate::session::Session::open_profile`], the same path as `connect PROFILE`, so the profile's write
 //! rules and the session's `--read-only` wrap it at the device boundary.
 
 use super::Profile;

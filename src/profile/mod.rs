@@ -323,7 +323,7 @@ fn profile(
 
 /// The simulator that stands for a profile's device when it is checked at load: the same
 /// family and model, without touching the wire. `None` for a scheme no family knows. A new
-/// family adds its schemes here beside its line in `session::open_url`.
+/// family adds its schemes here beside its line in `schemes::open_url`.
 pub fn offline_twin(u: &DeviceUrl) -> Option<String> {
     let k2_model = || u.param("model").unwrap_or(crate::k2::catalog::DEFAULT_MODEL).to_string();
     match u.base_scheme() {
@@ -350,7 +350,7 @@ pub fn url_params(u: &DeviceUrl) -> Option<Vec<&'static str>> {
     // `control=PATH` (a served simulator's control channel) goes to the session.
     let wire = |lists: &[&[&'static str]]| lists.iter().flat_map(|l| l.iter().copied()).chain(["control"]).collect();
     Some(match (u.base_scheme(), u.scheme.as_str()) {
-        ("sim", _) => crate::session::K2_SIM_PARAMS.to_vec(),
+        ("sim", _) => crate::schemes::K2_SIM_PARAMS.to_vec(),
         (_, "rtu" | "rtu+rfc2217") => wire(&[k2::PARAMS, k2::LINE_PARAMS]),
         ("tcp" | "rtu", _) => wire(&[k2::PARAMS]),
         ("kinco", _) => servo::SERIAL_PARAMS.to_vec(),
@@ -374,7 +374,7 @@ fn check(p: &Profile, clock: &crate::core::Clock) -> Result<()> {
     if let Some(known) = url_params(&u) {
         u.expect_params(&known)?;
     }
-    let mut device = crate::session::open_url(&twin, clock)?;
+    let mut device = crate::schemes::open_url(&twin, clock)?;
     for (k, v) in &p.options {
         check_option(&u, device.as_mut(), k, v).map_err(|mut e| {
             e.message = format!("[options] {k} = \"{v}\": {}", e.message);
@@ -395,27 +395,6 @@ fn check_option(u: &DeviceUrl, twin: &mut dyn crate::core::Device, key: &str, va
         ("sim", "state" | "program") => Ok(()),
         _ => twin.set_option(key, value),
     }
-}
-
-/// Opens profile `profile` under device name `name`: its URL, then its options, then its
-/// write rules as the entry's [`Guard`]. Called by `Session::open` for a URL without a scheme.
-pub fn open(s: &mut crate::session::Session, name: &str, profile: &str) -> Result<()> {
-    let p = s.profiles.get(profile).cloned().ok_or_else(|| s.profiles.unknown(profile).device(name))?;
-    open_profile(s, name, &p)
-}
-
-/// Opens profile `p` under device name `name` (also a fleet member's own profile): its URL,
-/// its options, its write rules as the entry's guard.
-pub fn open_profile(s: &mut crate::session::Session, name: &str, p: &Profile) -> Result<()> {
-    let from = format!("from profile `{}` ({})", p.name, p.origin);
-    crate::core::trace::name_device(&p.url, name);
-    let mut device = crate::session::open_url(&p.url, &s.clock).map_err(|e| e.device(name).cause(&from))?;
-    for (k, v) in &p.options {
-        device.set_option(k, v).map_err(|e| e.device(name).cause(&from))?;
-    }
-    let guard = Guard::build(p, device.operands()).map_err(|e| e.device(name))?;
-    s.add_guarded(name, &p.url, device, guard);
-    Ok(())
 }
 
 /// The write rules of a profile, bound to an open device's operand space.
@@ -446,8 +425,8 @@ impl Guard {
                 let mut set = HashSet::new();
                 for item in items {
                     // `clock`: the real-time clock (`rtc set|sync`), which is no operand.
-                    if item.trim() == crate::guard::CLOCK {
-                        set.insert(crate::guard::CLOCK.to_string());
+                    if item.trim() == crate::core::device::CLOCK {
+                        set.insert(crate::core::device::CLOCK.to_string());
                         continue;
                     }
                     let ops = space.parse(item).map_err(|e| {
@@ -593,7 +572,7 @@ word_order = "low-first"
     /// Every scheme the session opens has its parameter list and an offline twin here.
     #[test]
     fn every_scheme_has_its_parameters_and_a_twin() {
-        for (scheme, ..) in crate::session::SCHEMES {
+        for (scheme, ..) in crate::schemes::SCHEMES {
             let u = DeviceUrl::parse(&format!("{scheme}x")).unwrap();
             assert!(url_params(&u).is_some() && offline_twin(&u).is_some(), "{scheme}");
         }

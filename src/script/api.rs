@@ -105,6 +105,31 @@ pub fn show(lua: &Lua, o: &Outcome) -> mlua::Result<()> {
     output::write_outcome(&mut *sink.0, style, o).and_then(|_| sink.0.flush()).map_err(|e| raise(e.into()))
 }
 
+/// `print`'s line: Lua's bytes as stock Lua writes them, whatever their encoding (a CP1251
+/// line a script read from a CSV file prints as those bytes, as `lua` prints it). Under
+/// `--json` the line is a JSON string, so bytes that are not UTF-8 become U+FFFD there; and
+/// where the output refuses bytes that are not UTF-8 (a Windows console through Rust's
+/// standard output), the line is written the same way rather than lost.
+fn print_bytes(lua: &Lua, bytes: &[u8]) -> mlua::Result<()> {
+    if let Ok(text) = std::str::from_utf8(bytes) {
+        return show(lua, &Outcome::new("print").text(text));
+    }
+    let lossy = || Outcome::new("print").text(String::from_utf8_lossy(bytes));
+    if with_shell(lua, |sh| Ok(sh.style.json))? {
+        return show(lua, &lossy());
+    }
+    let mut sink = lua.app_data_mut::<Sink>().ok_or_else(|| raise(Error::state("no output")))?;
+    let mut line = bytes.to_vec();
+    line.push(b'\n');
+    match sink.0.write_all(&line).and_then(|_| sink.0.flush()) {
+        Err(e) if e.kind() == std::io::ErrorKind::InvalidData => {
+            drop(sink);
+            show(lua, &lossy())
+        }
+        r => r.map_err(|e| raise(e.into())),
+    }
+}
+
 fn millis(ms: f64, what: &str) -> mlua::Result<Duration> {
     if !ms.is_finite() || ms < 0.0 {
         return Err(raise(Error::usage(format!("{what}: {ms} is not a duration in milliseconds (a number ≥ 0)"))));
@@ -335,7 +360,7 @@ pub fn plcsh_table(lua: &Lua) -> mlua::Result<Table> {
     p.set("errinfo", lua.create_function(errinfo)?)?;
     p.set("_explain", lua.create_function(super::error::explain)?)?;
     p.set("table", lua.create_function(table)?)?;
-    p.set("_write", lua.create_function(|lua, text: String| show(lua, &Outcome::new("print").text(text)))?)?;
+    p.set("_write", lua.create_function(|lua, text: mlua::LuaString| print_bytes(lua, &text.as_bytes()))?)?;
     lua.set_named_registry_value(ABORT_KEY, lua.create_table()?)?;
     p.set(
         "on_abort",

@@ -1,4 +1,4 @@
-//! `plcsh.fleet(NAME)` in Lua: a fleet from the profile file (`crate::fleet`) as a table with
+//! `plcsh.fleet(NAME)` in Lua: a fleet from the profile file (`crate::profile::fleet`) as a table with
 //! its `name`, its `devices` (member names) and `each(fn)`, which calls `fn(plc)` with a device
 //! handle for every member in the fleet's order and returns one result per member:
 //! `{device=, ok=true, value=<fn's first result>}` or `{device=, ok=false, kind=, error=}`.
@@ -7,7 +7,7 @@
 //!
 //! Sequential by design: one Lua state is entered by one thread at a time, so `each` visits
 //! the members one after another on the script's own session (a member is opened through the
-//! profile path, [`crate::profile::open_profile`], with its write rules, and closed afterwards
+//! profile path, [`crate::session::Session::open_profile`], with its write rules, and closed afterwards
 //! unless it was open before). For concurrency a script runs on every member at once with
 //! `plcsh run --fleet NAME SCRIPT.lua`, one Lua state per device.
 
@@ -29,7 +29,7 @@ fn describe(e: &mlua::Error) -> (String, String) {
     }
 }
 
-fn each(lua: &Lua, fleet: &crate::fleet::Fleet, f: Function) -> mlua::Result<Table> {
+fn each(lua: &Lua, fleet: &crate::profile::fleet::Fleet, f: Function) -> mlua::Result<Table> {
     let out = lua.create_table()?;
     let mut failed = 0;
     for m in &fleet.members {
@@ -40,7 +40,7 @@ fn each(lua: &Lua, fleet: &crate::fleet::Fleet, f: Function) -> mlua::Result<Tab
                 return Ok(false);
             }
             let p = fleet.profile_of(m, &sh.session.profiles)?.clone();
-            crate::profile::open_profile(&mut sh.session, &m.name, &p)?;
+            sh.session.open_profile(&m.name, &p)?;
             Ok(true)
         });
         let called = match &opened {

@@ -269,6 +269,23 @@ fn print_and_table_go_through_the_shell_output() {
     assert!(buf.text().ends_with("{\"ok\":true,\"cmd\":\"print\",\"message\":\"x\"}\n"), "{}", buf.text());
 }
 
+/// Text that is not UTF-8 (a CP1251 line read from a CSV file) prints as its bytes, as
+/// stock Lua prints it; under `--json` as a JSON string, its bytes that are not UTF-8 shown
+/// as U+FFFD. `plcsh.log` prints the same way.
+#[test]
+fn print_writes_bytes_that_are_not_utf8_as_they_are() {
+    let (mut sh, e, buf) = setup();
+    // "Привет" in CP1251.
+    run(&mut sh, &e, r"print('\207\240\232\226\229\242', 1)").unwrap();
+    assert_eq!(buf.0.lock().unwrap().as_slice(), b"\xCF\xF0\xE8\xE2\xE5\xF2\t1\n");
+    run(&mut sh, &e, r"plcsh.log('\207')").unwrap();
+    assert!(buf.0.lock().unwrap().ends_with(b" \xCF\n"), "{:?}", buf.0.lock().unwrap());
+    buf.0.lock().unwrap().clear();
+    sh.style.json = true;
+    run(&mut sh, &e, r"print('\207\240 ok')").unwrap();
+    assert_eq!(buf.text(), "{\"ok\":true,\"cmd\":\"print\",\"message\":\"\u{FFFD}\u{FFFD} ok\"}\n");
+}
+
 #[test]
 fn json_round_trips_and_checks_report_both_values() {
     let (mut sh, e, _) = setup();

@@ -44,6 +44,29 @@ pub struct Shell {
     pub script: Option<Box<dyn ScriptHook>>,
     /// Where commands may write files (`files::check_write`); confined in a sandboxed run.
     pub write_rule: files::WriteRule,
+    /// Teaching labs (`lab new|check|grade`); `None` when not installed.
+    pub labs: Option<std::sync::Arc<dyn LabHook>>,
+}
+
+/// Teaching labs, which the `lab` command hands its work to ([`crate::lab`]). Labs sit above
+/// the shell — a lab grades with Lua and shells of its own — so the shell knows this hook, not
+/// the module; the cli installs it (`lab::hook::install`), as it installs the [`ScriptHook`].
+pub trait LabHook: Send + Sync {
+    /// Writes an example lab into `dir`.
+    fn new_lab(&self, dir: &std::path::Path) -> Result<Outcome>;
+    /// Checks a lab against its reference solution: the table, its headline, and whether every
+    /// criterion held.
+    fn check(&self, lab: &std::path::Path) -> Result<(Outcome, String, bool)>;
+    /// How many workers grade at once unless `jobs=` says.
+    fn default_jobs(&self) -> usize;
+    /// Grades `submissions` in `jobs` workers: the summary's headline and table, and each
+    /// submission's report as JSON.
+    fn grade(
+        &self,
+        lab: &std::path::Path,
+        submissions: &[std::path::PathBuf],
+        jobs: usize,
+    ) -> Result<(String, Outcome, Vec<serde_json::Value>)>;
 }
 
 /// An embedded language the shell hands whole lines to (Lua, `src/script/`).
@@ -169,7 +192,16 @@ pub type CmdResult = std::result::Result<Outcome, (String, Error)>;
 
 impl Shell {
     pub fn new(session: Session, style: Style) -> Shell {
-        Shell { session, style, verbose: false, quit: false, last_trace: None, script: None, write_rule: None }
+        Shell {
+            session,
+            style,
+            verbose: false,
+            quit: false,
+            last_trace: None,
+            script: None,
+            write_rule: None,
+            labs: None,
+        }
     }
 
     /// Puts the session under a sandbox's rules ([`crate::confine`]): devices, snapshots and

@@ -126,11 +126,14 @@ pub struct EventLogState {
 }
 
 impl EventLog {
+    /// Every field is named (no `..`): a field added to the log does not compile until it is
+    /// saved here.
     pub fn save(&self) -> EventLogState {
+        let EventLog { events, next_seq, dropped } = self;
         EventLogState {
-            events: self.events.iter().map(|e| (e.seq, e.time.as_nanos() as u64, e.kind)).collect(),
-            next_seq: self.next_seq,
-            dropped: self.dropped,
+            events: events.iter().map(|e| (e.seq, e.time.as_nanos() as u64, e.kind)).collect(),
+            next_seq: *next_seq,
+            dropped: *dropped,
         }
     }
 

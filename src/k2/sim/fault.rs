@@ -338,7 +338,7 @@ pub fn parse(text: &str) -> Result<Spec, String> {
             }
             "freq" => match &mut spec.kind {
                 FaultKind::Noisy { hz, .. } => {
-                    let f = crate::k2::helpers::parse_freq_hz(v)?;
+                    let f = crate::core::literal::parse_freq_hz(v)?;
                     if !(1.0..=1e7).contains(&f) {
                         return Err(format!("freq={v}: 1 Hz … 10 MHz"));
                     }

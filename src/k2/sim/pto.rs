@@ -694,15 +694,23 @@ pub struct PtoState {
 }
 
 impl PtoChannel {
+    /// Every field is named (no `..`): a field added to the channel does not compile until
+    /// it is saved here or named as not the machine's state.
     pub fn save(&self) -> PtoState {
-        PtoState {
-            cycle: self.cycle,
-            width: self.width,
-            count: self.count,
-            run: self.run.clone(),
-            counted: self.counted,
-            reverse: self.reverse,
-        }
+        let PtoChannel {
+            // The registers, limits and output pins: from the model.
+            regs: _,
+            spec: _,
+            out: _,
+            dir: _,
+            cycle,
+            width,
+            count,
+            run,
+            counted,
+            reverse,
+        } = self;
+        PtoState { cycle: *cycle, width: *width, count: *count, run: run.clone(), counted: *counted, reverse: *reverse }
     }
 
     pub fn load(&mut self, s: PtoState) {

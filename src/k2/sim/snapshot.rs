@@ -30,6 +30,11 @@ pub struct MemImage {
     pub aq: String,
     pub t: Vec<i16>,
     pub c: Vec<i16>,
+    /// Timer and counter bits (one byte each, 0/1); empty in a file older than them (all off).
+    #[serde(default)]
+    pub tq: String,
+    #[serde(default)]
+    pub cq: String,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -76,38 +81,86 @@ fn area_named(name: &str) -> Option<Area> {
 
 impl K2Sim {
     /// The simulator's complete state.
+    ///
+    /// Every field of [`K2Sim`], its memory and its backup bookkeeping is named below (no
+    /// `..`; the pulse outputs, counters, event log and CPU do the same in their own `save`):
+    /// a field added to the simulator does not compile until it is saved here or named as
+    /// not the machine's state, with why.
     pub fn snapshot_state(&self) -> K2State {
-        let m = &self.mem;
+        let K2Sim {
+            // The device's name card and operand space: from the model.
+            info: _,
+            space: _,
+            mem,
+            // The session's clock: the snapshot's `clock_us`.
+            clock: _,
+            start,
+            // `start` in ns (restored from it).
+            start_ns: _,
+            last,
+            pto,
+            hsc,
+            inputs,
+            events,
+            rtc,
+            backup,
+            faults,
+            // The wires: the snapshot's `wiring` section ([`crate::snapshot`]).
+            wiring: _,
+            plc,
+            agent_base,
+            // Scratch space of one step, empty between steps.
+            raised: _,
+            run_ends: _,
+            // Events for interrupt routines, queued and run within one step.
+            irq_queue,
+            // A STOP instruction's request, acted on at the end of the scan that ran it.
+            stop_requested,
+        } = self;
+        debug_assert!(irq_queue.is_empty() && !*stop_requested, "a K2 simulator saved in the middle of a step");
+        let crate::k2::memory::Memory { i, q, m, v, sm, ai, aq, t, c, tq, cq } = mem;
+        let super::state::Backup {
+            last: backup_last,
+            writes,
+            session,
+            retain,
+            // The state file and its lock: where this simulator persists, from its URL.
+            path: _,
+            lock: _,
+            since,
+        } = backup;
         K2State {
             model: self.model().name.to_string(),
-            start_ns: ns(self.start),
-            last_ns: ns(self.last),
+            start_ns: ns(*start),
+            last_ns: ns(*last),
             mem: MemImage {
-                i: hex(&m.i),
-                q: hex(&m.q),
-                m: hex(&m.m),
-                v: hex(&m.v),
-                sm: hex(&m.sm),
-                ai: hex(&m.ai),
-                aq: hex(&m.aq),
-                t: m.t.clone(),
-                c: m.c.clone(),
+                i: hex(i),
+                q: hex(q),
+                m: hex(m),
+                v: hex(v),
+                sm: hex(sm),
+                ai: hex(ai),
+                aq: hex(aq),
+                t: t.clone(),
+                c: c.clone(),
+                tq: hex(tq),
+                cq: hex(cq),
             },
-            pto: self.pto.iter().map(|p| p.save()).collect(),
-            hsc: self.hsc.iter().map(|h| h.save()).collect(),
-            inputs: self.inputs.sources().to_vec(),
-            events: self.events.save(),
-            rtc: self.rtc,
+            pto: pto.iter().map(|p| p.save()).collect(),
+            hsc: hsc.iter().map(|h| h.save()).collect(),
+            inputs: inputs.sources().to_vec(),
+            events: events.save(),
+            rtc: *rtc,
             backup: BackupState {
-                last: self.backup.last,
-                writes: self.backup.writes.clone(),
-                session: self.backup.session.clone(),
-                retain: self.backup.retain.iter().map(|r| (r.area.name().to_string(), r.first, r.len)).collect(),
-                since_ns: ns(self.backup.since),
+                last: *backup_last,
+                writes: writes.clone(),
+                session: session.clone(),
+                retain: retain.iter().map(|r| (r.area.name().to_string(), r.first, r.len)).collect(),
+                since_ns: ns(*since),
             },
-            agent_base: self.agent_base,
-            program: self.plc.as_ref().map(|p| ProgramState::save(p)),
-            faults: self.faults.clone(),
+            agent_base: *agent_base,
+            program: plc.as_ref().map(|p| ProgramState::save(p)),
+            faults: faults.clone(),
         }
     }
 
@@ -142,6 +195,15 @@ impl K2Sim {
         if s.mem.t.len() != m.t.len() || s.mem.c.len() != m.c.len() {
             return Err("timer or counter counts differ from the model's".into());
         }
+        // Timer and counter bits: all off in a file older than them.
+        let bits = |name: &str, text: &str, want: usize| {
+            if text.is_empty() {
+                Ok(vec![0; want])
+            } else {
+                area(name, text, want)
+            }
+        };
+        let (tq, cq) = (bits("T bits", &s.mem.tq, m.tq.len())?, bits("C bits", &s.mem.cq, m.cq.len())?);
         if s.pto.len() != self.pto.len() || s.hsc.len() != self.hsc.len() {
             return Err("pulse output or counter counts differ from the model's".into());
         }
@@ -163,6 +225,7 @@ impl K2Sim {
         (self.mem.i, self.mem.q, self.mem.m, self.mem.v, self.mem.sm, self.mem.ai, self.mem.aq) = mem;
         self.mem.t = s.mem.t.clone();
         self.mem.c = s.mem.c.clone();
+        (self.mem.tq, self.mem.cq) = (tq, cq);
         for (p, st) in self.pto.iter_mut().zip(&s.pto) {
             p.load(st.clone());
         }
@@ -244,6 +307,13 @@ pub struct ProgramState {
     pub user: Option<LoadedState>,
     /// The helper's execution state (its text is regenerated from `agent_base`).
     pub helper_cpu: Option<crate::engine::Cpu>,
+    /// Scan statistics: the scan count and the last, shortest and longest scan times a
+    /// program reads in SMW22/SMW24/SMW26. A file older than them starts them afresh.
+    #[serde(default)]
+    pub stats: super::program::ScanStats,
+    /// The cost table (`sim program costs …`); `None` in a file older than it (the defaults).
+    #[serde(default)]
+    pub costs: Option<crate::engine::CostTable>,
 }
 
 fn run_mode() -> super::program::Mode {
@@ -251,33 +321,70 @@ fn run_mode() -> super::program::Mode {
 }
 
 impl ProgramState {
+    /// Every field of the CPU and its programs is named (no `..`): a field added to them
+    /// does not compile until it is saved here or named as not the machine's state.
     fn save(p: &super::program::Plc) -> ProgramState {
+        let super::program::Plc {
+            user,
+            helper,
+            mode,
+            switch_run,
+            command,
+            frozen_ns,
+            pending,
+            errors,
+            error_count,
+            stopped_by_program,
+            stop_analog,
+            faults,
+            stats,
+            run_scans,
+            next_scan,
+            costs,
+            paused_at,
+            timed_next,
+            irq_ns,
+            breaks,
+            // Whether any of `breaks` is set (restored from them).
+            has_breaks: _,
+            halted,
+            stop_outputs,
+        } = p;
+        let loaded = |l: &super::program::Loaded| {
+            let super::program::Loaded {
+                // Compiled again from `text` on restore.
+                prog: _,
+                cpu,
+                source,
+                text,
+                inst,
+            } = l;
+            LoadedState { source: source.clone(), text: text.clone(), cpu: cpu.clone(), inst: inst.clone() }
+        };
         ProgramState {
-            mode: p.mode,
-            switch_run: p.switch_run,
-            run_scans: p.run_scans,
-            next_scan_ns: ns(p.next_scan),
-            timed_next_ns: p.timed_next.map(|t| t.map(ns)),
-            stop_outputs: p.stop_outputs.clone(),
-            stop_analog: p.stop_analog.clone(),
-            command: p.command,
-            frozen_ns: p.frozen_ns,
-            paused_at_ns: p.paused_at.map(ns),
-            pending: p.pending.clone(),
-            errors: p.errors.clone(),
-            error_count: p.error_count,
-            faults: p.faults.clone(),
-            stopped_by_program: p.stopped_by_program,
-            halted: p.halted,
-            breaks: p.breaks.iter().enumerate().filter(|(_, b)| **b).map(|(i, _)| i as u32).collect(),
-            irq_ns: p.irq_ns,
-            user: p.user.as_ref().map(|l| LoadedState {
-                source: l.source.clone(),
-                text: l.text.clone(),
-                cpu: l.cpu.clone(),
-                inst: l.inst.clone(),
-            }),
-            helper_cpu: p.helper.as_ref().map(|l| l.cpu.clone()),
+            mode: *mode,
+            switch_run: *switch_run,
+            run_scans: *run_scans,
+            next_scan_ns: ns(*next_scan),
+            timed_next_ns: timed_next.map(|t| t.map(ns)),
+            stop_outputs: stop_outputs.clone(),
+            stop_analog: stop_analog.clone(),
+            command: *command,
+            frozen_ns: *frozen_ns,
+            paused_at_ns: paused_at.map(ns),
+            pending: pending.clone(),
+            errors: errors.clone(),
+            error_count: *error_count,
+            faults: faults.clone(),
+            stopped_by_program: *stopped_by_program,
+            halted: *halted,
+            breaks: breaks.iter().enumerate().filter(|(_, b)| **b).map(|(i, _)| i as u32).collect(),
+            irq_ns: *irq_ns,
+            user: user.as_ref().map(loaded),
+            // The helper's text is regenerated from `agent_base`.
+            helper_cpu: helper.as_ref().map(|l| loaded(l).cpu),
+            stats: *stats,
+            costs: (*costs != super::program::family::default_costs()).then(|| costs.clone()),
         }
     }
 
@@ -286,9 +393,15 @@ impl ProgramState {
     fn build(&self, sim: &K2Sim, agent_base: Option<u32>) -> Result<super::program::Plc, String> {
         use super::program::{Loaded, Plc};
         let mut p = Plc::new(Duration::from_nanos(self.next_scan_ns), sim.mem.q.len());
+        if let Some(c) = &self.costs {
+            p.costs = c.clone();
+        }
+        p.stats = self.stats;
+        // Compiled with the saved costs, not the ones this simulator had before the restore.
+        let compile = |text: &str, file: &str| sim.compile_costed(text, file, p.costs.clone());
         if let Some(base) = agent_base {
             let text = crate::k2::agent::il::program(base);
-            let prog = sim.compile(&text, "k2_agent.il").map_err(|e| format!("the helper program: {e}"))?;
+            let prog = compile(&text, "k2_agent.il").map_err(|e| format!("the helper program: {e}"))?;
             let mut l = Loaded::new(prog, "k2_agent.il".to_string(), &text);
             if let Some(cpu) = &self.helper_cpu {
                 l.cpu = cpu.clone();
@@ -296,8 +409,7 @@ impl ProgramState {
             p.helper = Some(l);
         }
         if let Some(u) = &self.user {
-            let prog =
-                sim.compile(&u.text, &u.source).map_err(|e| format!("the snapshot's program {}: {e}", u.source))?;
+            let prog = compile(&u.text, &u.source).map_err(|e| format!("the snapshot's program {}: {e}", u.source))?;
             p.breaks = vec![false; prog.code.len()];
             let mut l = Loaded::new(prog, u.source.clone(), &u.text);
             l.cpu = u.cpu.clone();

@@ -189,9 +189,23 @@ impl SimLine {
 }
 
 impl SimLine {
-    /// Every drive's state, for snapshots (`crate::snapshot`).
+    /// Every drive's state, for snapshots (`crate::snapshot`). A [`Drive`] is saved whole
+    /// (serde names each of its fields); every field of the line is named below (no `..`), so
+    /// a field added to it does not compile until it is saved or named as not the machine's.
     pub fn save_drives(&self) -> Vec<Drive> {
-        self.drives.clone()
+        let SimLine {
+            drives,
+            // The session's clock: the snapshot's `clock_us`.
+            clock: _,
+            // The line's echo mode, timing and transport faults come from the device URL and
+            // the link (docs/snapshots.md: what belongs to the link is not kept).
+            echo: _,
+            pace: _,
+            faults: _,
+            // Requests the line carried: the link's traffic, not a drive's state.
+            received: _,
+        } = self;
+        drives.clone()
     }
 
     /// Replaces the drives with saved ones.

@@ -1,5 +1,6 @@
 //! `lab new NAME`, `lab check LAB`, `lab grade LAB SUBMISSIONS… [jobs=N]`: teaching labs from
-//! the shell, the same calls as `plcsh lab …` ([`crate::lab`]). A lab builds its own
+//! the shell, the same calls as `plcsh lab …` (`crate::lab`, through the shell's
+//! [`crate::shell::LabHook`]). A lab builds its own
 //! simulators, so the session's devices are not touched. Refused in a sandboxed run (grading
 //! starts processes and writes lab folders).
 
@@ -28,17 +29,18 @@ fn lab(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let text: Vec<_> = raw.iter().map(|w| crate::shell::lex::unquote(w.1)).collect();
     let words: Vec<&str> = text.iter().map(|w| w.as_ref()).collect();
     let usage = LAB.usage;
+    let labs = sh.labs.clone().ok_or_else(|| Error::unsupported("`lab` is not available in this run"))?;
     match words.as_slice() {
-        ["new", name] => crate::lab::new_lab(std::path::Path::new(name)),
+        ["new", name] => labs.new_lab(std::path::Path::new(name)),
         ["check", path] => {
-            let (o, head, ok) = crate::lab::check(std::path::Path::new(path))?;
+            let (o, head, ok) = labs.check(std::path::Path::new(path))?;
             if !ok {
                 return Err(Error::state(head).hint("the table from `plcsh lab check` names each criterion's result"));
             }
             Ok(o.note(head))
         }
         ["grade", path, rest @ ..] if !rest.is_empty() => {
-            let mut jobs = crate::lab::runner::default_jobs();
+            let mut jobs = labs.default_jobs();
             let mut subs = Vec::new();
             for (w, typed) in rest.iter().zip(&raw[2..]) {
                 // A quoted word is a file, never an option.
@@ -52,9 +54,7 @@ fn lab(sh: &mut Shell, args: Args) -> Result<Outcome> {
                     None => subs.push(std::path::PathBuf::from(w)),
                 }
             }
-            let (lab, reports) = crate::lab::grade(std::path::Path::new(path), &subs, jobs)?;
-            let (head, o) = crate::lab::summary(&lab, &reports);
-            let json: Vec<serde_json::Value> = reports.iter().map(crate::lab::report_json).collect();
+            let (head, o, json) = labs.grade(std::path::Path::new(path), &subs, jobs)?;
             Ok(o.note(head).with("submissions", json))
         }
         _ => Err(Error::usage("`lab` needs new, check or grade with its arguments").hint(usage).column(args.offset)),

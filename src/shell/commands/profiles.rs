@@ -1,5 +1,5 @@
 //! The `devices` listing: open devices (the current one marked `*`), then the profiles from
-//! devices.toml that are not open, its fleets (`crate::fleet`); any problem in that file (with
+//! devices.toml that are not open, its fleets (`crate::profile::fleet`); any problem in that file (with
 //! file:line) is a note of its own line. Shared by the REPL's `devices` and `plcsh devices`.
 
 use crate::output::Outcome;
@@ -15,15 +15,15 @@ pub fn devices_and_profiles(s: &Session) -> (Vec<Vec<String>>, Outcome) {
         let is_current = Some(&e.name) == current.as_ref();
         let mark = if is_current { "*" } else { "" };
         let writes = e.guard.as_ref().map(|g| g.summary()).unwrap_or_default();
-        rows.push(vec![
-            format!("{mark}{}", e.name),
-            info.family.to_string(),
-            info.model.clone(),
-            e.url.clone(),
-            writes.clone(),
-        ]);
+        // A device whose link could not be made yet says so, in the prompt's words, whatever
+        // its URL tells of its model.
+        let connected = !crate::pending::is_not_connected(info);
+        let url = if connected { e.url.clone() } else { format!("{}{}", e.url, crate::pending::NOT_CONNECTED) };
+        let model =
+            if connected || info.model != crate::pending::UNKNOWN_MODEL { info.model.clone() } else { String::new() };
+        rows.push(vec![format!("{mark}{}", e.name), info.family.to_string(), model, url, writes.clone()]);
         list.push(serde_json::json!({"name": e.name, "family": info.family, "model": info.model, "url": e.url,
-            "simulated": info.simulated, "current": is_current, "writes": writes}));
+            "simulated": info.simulated, "current": is_current, "connected": connected, "writes": writes}));
     }
     let mut profiles = Vec::new();
     for p in s.profiles.list() {
@@ -44,8 +44,8 @@ pub fn devices_and_profiles(s: &Session) -> (Vec<Vec<String>>, Outcome) {
         let n = f.members.len();
         // A URL fleet's members share its rules; a list's members have their own profiles.
         let writes = match f.members.first().map(|m| &m.source) {
-            Some(crate::fleet::Source::Made(p)) if p.read_only => "read only".to_string(),
-            Some(crate::fleet::Source::Made(p)) => {
+            Some(crate::profile::fleet::Source::Made(p)) if p.read_only => "read only".to_string(),
+            Some(crate::profile::fleet::Source::Made(p)) => {
                 p.allow.as_ref().map(|a| format!("allow {}", a.join(", "))).unwrap_or_default()
             }
             _ => "per profile".to_string(),

@@ -174,8 +174,11 @@ fn pick_device<'a>(sh: &mut Shell, words: &'a [lex::Word<'a>]) -> Result<(usize,
     let servos: Vec<usize> = (0..sh.session.entries().len()).filter(|&i| is_servo(sh, i)).collect();
     match servos.as_slice() {
         [i] => Ok((*i, words)),
-        [] => Err(Error::usage("no servo drive is open")
-            .hint("open one with --device ax=kinco:/dev/ttyUSB0?id=1 or connect ax sim-servo:?id=1")),
+        [] => Err(Error::usage("no servo drive is open").hint(concat!(
+            "open one with --device ax=kinco:",
+            crate::core::platform::words::port!(),
+            "?id=1 or connect ax sim-servo:?id=1"
+        ))),
         many => {
             let names: Vec<String> = many.iter().map(|&i| sh.session.entries()[i].name.clone()).collect();
             Err(Error::usage("several servo drives are open; name one").hint(format!(

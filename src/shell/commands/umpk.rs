@@ -61,8 +61,11 @@ fn pick<'a>(sh: &mut Shell, words: &'a [Word<'a>]) -> Result<(usize, &'a [Word<'
     let all: Vec<usize> = (0..sh.session.entries().len()).filter(|&i| is_umpk(sh, i)).collect();
     match all.as_slice() {
         [i] => Ok((*i, words)),
-        [] => Err(Error::usage("no UMPK is open")
-            .hint("open one with --device lab=umpk:/dev/ttyUSB0 or connect lab sim-umpk:UMPK16")),
+        [] => Err(Error::usage("no UMPK is open").hint(concat!(
+            "open one with --device lab=umpk:",
+            crate::core::platform::words::port!(),
+            " or connect lab sim-umpk:UMPK16"
+        ))),
         _ => Err(Error::usage("several UMPKs are open; name one (umpk NAME info)")),
     }
 }

@@ -49,53 +49,104 @@ pub struct UmpkState {
     pub cycle: u64,
     pub program_cycles: u64,
     pub max_program_counts: u16,
+    /// The flash page whose writes fail (`flash-fail PAGE`), if one does.
+    #[serde(default)]
+    pub flash_fail: Option<usize>,
+    /// Injected faults (`fault no-reply`, `fault stuck I1=1`) with their windows and log.
+    #[serde(default)]
+    pub faults: crate::core::sim_faults::Faults,
 }
 
 impl Umpk {
     /// The state to save, brought to the present; refuses naming what it cannot keep.
+    ///
+    /// Every field of [`Umpk`] is named below (no `..`): a field added to the simulator does
+    /// not compile until it is saved here or named as not the machine's state, with why.
     pub fn snapshot_state(&mut self) -> Result<UmpkState, String> {
         self.advance(self.clock.now());
-        if self.monitor {
+        let Umpk {
+            model,
+            // From the device URL (`status_bits=`), like a drive line's echo mode: the link's
+            // setting, not the controller's state; a restore keeps the URL's.
+            layout: _,
+            // The session's clock: the snapshot's `clock_us`.
+            clock: _,
+            mode,
+            echo,
+            echo_off_by_command,
+            monitor,
+            errors,
+            flash,
+            info,
+            program,
+            prog,
+            image,
+            logic,
+            forced_inputs,
+            waves,
+            flash_fail,
+            faults,
+            // Where the flash is kept (`state=`), from the device URL; a restore writes the
+            // restored flash there.
+            state_path: _,
+            rx,
+            out,
+            // When the line is next free: at or before now once `out` is empty (checked).
+            line_free: _,
+            lose_reply,
+            cycle,
+            program_cycles,
+            max_program_counts,
+            // Counts of bytes, commands and binaries the line carried: the link's traffic
+            // (tests and a server's note read them), not the controller's state.
+            received: _,
+            commands: _,
+            binaries: _,
+        } = &*self;
+        if *monitor {
             return Err("its real-time monitor is streaming (stop it with `umpk monitor off` first)".into());
         }
-        if self.prog != Programming::default() || self.mode == Mode::Programming {
+        if *prog != Programming::default() || *mode == Mode::Programming {
             return Err("a programming sequence is under way (finish it or reset first)".into());
         }
-        if !self.rx.is_empty() || !self.out.is_empty() {
+        if !rx.is_empty() || !out.is_empty() || *lose_reply {
             return Err("bytes are on its serial line (a command half-received or a reply unsent)".into());
         }
-        let program = match &self.program {
+        let program = match program {
             Program::None => ProgramState::None,
             Program::Binary => ProgramState::Binary,
             Program::Logic(r) => ProgramState::Il(Box::new(r.save().ok_or_else(|| {
                 format!("its program `{}` is built into plcsh, not IL text (load an IL file instead)", r.name())
             })?)),
         };
-        let (mode, until) = match self.mode {
+        let (mode, until) = match *mode {
             Mode::Resetting(t) => ("restarting".to_string(), t.as_nanos() as u64),
             m => (m.name().to_string(), 0),
         };
+        let Image { inputs, outputs, markers, timers, counters } = *image;
         Ok(UmpkState {
-            model: self.model.name.into(),
+            model: model.name.into(),
             mode,
             restart_until_ns: until,
-            echo: self.echo,
-            echo_off_by_command: self.echo_off_by_command,
-            errors: self.errors.to_vec(),
-            flash: self.flash.iter().map(|b| format!("{b:02X}")).collect(),
-            info: String::from_utf8_lossy(&self.info).into_owned(),
+            echo: *echo,
+            echo_off_by_command: *echo_off_by_command,
+            errors: errors.to_vec(),
+            flash: flash.iter().map(|b| format!("{b:02X}")).collect(),
+            info: String::from_utf8_lossy(info).into_owned(),
             program,
-            inputs: self.image.inputs,
-            outputs: self.image.outputs,
-            markers: format!("{:032X}", self.image.markers),
-            timer_bits: self.image.timers,
-            counter_bits: self.image.counters,
-            logic: self.logic.clone(),
-            forced_inputs: self.forced_inputs,
-            waves: self.waves.clone(),
-            cycle: self.cycle,
-            program_cycles: self.program_cycles,
-            max_program_counts: self.max_program_counts,
+            inputs,
+            outputs,
+            markers: format!("{markers:032X}"),
+            timer_bits: timers,
+            counter_bits: counters,
+            logic: logic.clone(),
+            forced_inputs: *forced_inputs,
+            waves: waves.clone(),
+            cycle: *cycle,
+            program_cycles: *program_cycles,
+            max_program_counts: *max_program_counts,
+            flash_fail: *flash_fail,
+            faults: faults.clone(),
         })
     }
 
@@ -119,6 +170,15 @@ impl Umpk {
                 "a square wave on input {} every {} cycles cannot run on this model",
                 w.input, w.period
             ));
+        }
+        if let Some(p) = s.flash_fail.filter(|&p| p >= self.model.program_bytes / crate::umpk::model::PAGE) {
+            return Err(format!("its failing flash page {p} is past the model's program memory"));
+        }
+        if let Some(f) = s.faults.list.iter().find(|f| match f.kind {
+            crate::core::sim_faults::FaultKind::Stuck { input, .. } => input >= u16::from(self.model.inputs),
+            crate::core::sim_faults::FaultKind::NoReply => false,
+        }) {
+            return Err(format!("its fault {} holds an input this model does not have", f.id));
         }
         if s.cycle > self.clock.now().as_millis() as u64 / super::logic::CYCLE_MS + 1 {
             return Err("its cycle count is ahead of the snapshot's clock".into());
@@ -159,6 +219,9 @@ impl Umpk {
         self.cycle = s.cycle;
         self.program_cycles = s.program_cycles;
         self.max_program_counts = s.max_program_counts;
+        self.flash_fail = s.flash_fail;
+        self.faults = s.faults.clone();
+        self.lose_reply = false;
         self.rx.clear();
         self.out.clear();
         let now = self.clock.now();
@@ -226,6 +289,36 @@ mod tests {
         b.advance(clock.now());
         assert!(b.image.output(1));
         assert_eq!(b.errors, a.errors);
+    }
+
+    /// An injected fault is the controller's state: a UMPK saved while `fault stuck I1=1`
+    /// holds its input keeps it held after a restore, numbers its next fault alike and keeps
+    /// its failing flash page.
+    #[test]
+    fn injected_faults_are_saved_and_restored() {
+        let clock = Clock::stepped();
+        let mut a = umpk(&clock);
+        a.set_input(0, true);
+        clock.step(Duration::from_millis(1000));
+        super::super::control::answer(&mut a, "fault stuck I1=1 for=500ms").unwrap();
+        super::super::control::answer(&mut a, "flash-fail 3").unwrap();
+        let text = serde_json::to_string(&a.snapshot_state().unwrap()).unwrap();
+        clock.step(Duration::from_millis(1500));
+        a.advance(clock.now());
+        assert!(a.image.output(0) && !a.image.output(1), "I1 held Q0 off until 1.5 s: Q1's delay starts again");
+        clock.set(Duration::from_millis(1000));
+        let mut b = Umpk::new(&crate::umpk::model::MODELS[1], clock.clone());
+        b.restore_snapshot(&serde_json::from_str(&text).unwrap()).unwrap();
+        clock.step(Duration::from_millis(1500));
+        b.advance(clock.now());
+        assert_eq!((b.image.outputs, b.image.inputs), (a.image.outputs, a.image.inputs), "as the uninterrupted run");
+        assert_eq!(b.faults, a.faults);
+        assert_eq!(b.flash_fail, Some(3));
+        let (next_a, next_b) = (
+            super::super::control::answer(&mut a, "fault no-reply").unwrap().1,
+            super::super::control::answer(&mut b, "fault no-reply").unwrap().1,
+        );
+        assert_eq!(next_a["id"], next_b["id"], "the next fault is numbered alike");
     }
 
     #[test]

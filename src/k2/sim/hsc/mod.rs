@@ -171,25 +171,66 @@ pub struct HscState {
     cmp: Compare,
     last_up: bool,
     user_cv: bool,
+    /// The direction the status bit last showed, a change not yet raised as an event and
+    /// when it happened (a file older than them: none).
+    #[serde(default)]
+    shown_up: Option<bool>,
+    #[serde(default)]
+    dir_event: Option<bool>,
+    #[serde(default)]
+    dir_at_ns: Option<u64>,
 }
 
 impl HscChannel {
+    /// Every field is named (no `..`): a field added to the counter does not compile until
+    /// it is saved here or named as not the machine's state.
     pub fn save(&self) -> HscState {
+        let HscChannel {
+            // The registers and limits: from the model.
+            regs: _,
+            spec: _,
+            mode,
+            running,
+            cv,
+            dir_up,
+            rate4x,
+            reset_low,
+            start_low,
+            pv,
+            multi,
+            table,
+            fault,
+            cmp,
+            last_up,
+            user_cv,
+            // Worked out again on the next step.
+            cache: _,
+            quiet: _,
+            settings: _,
+            shown_up,
+            dir_event,
+            dir_at,
+            #[cfg(test)]
+                general_only: _,
+        } = self;
         HscState {
-            mode: self.mode.map(|m| m.mode),
-            running: self.running,
-            cv: self.cv,
-            dir_up: self.dir_up,
-            rate4x: self.rate4x,
-            reset_low: self.reset_low,
-            start_low: self.start_low,
-            pv: self.pv,
-            multi: self.multi,
-            table: self.table.clone(),
-            fault: self.fault,
-            cmp: self.cmp,
-            last_up: self.last_up,
-            user_cv: self.user_cv,
+            mode: mode.map(|m| m.mode),
+            running: *running,
+            cv: *cv,
+            dir_up: *dir_up,
+            rate4x: *rate4x,
+            reset_low: *reset_low,
+            start_low: *start_low,
+            pv: *pv,
+            multi: *multi,
+            table: table.clone(),
+            fault: *fault,
+            cmp: *cmp,
+            last_up: *last_up,
+            user_cv: *user_cv,
+            shown_up: *shown_up,
+            dir_event: *dir_event,
+            dir_at_ns: dir_at.map(|t| u64::try_from(t.as_nanos()).unwrap_or(u64::MAX)),
         }
     }
 
@@ -218,7 +259,8 @@ impl HscChannel {
         self.cache = None;
         self.quiet = None;
         self.settings += 1;
-        (self.shown_up, self.dir_event, self.dir_at) = (None, None, None);
+        (self.shown_up, self.dir_event, self.dir_at) =
+            (s.shown_up, s.dir_event, s.dir_at_ns.map(std::time::Duration::from_nanos));
         Ok(())
     }
 }

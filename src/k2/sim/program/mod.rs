@@ -93,8 +93,8 @@ impl Loaded {
     }
 }
 
-/// Scan statistics.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+/// Scan statistics (kept in snapshots: a program reads them in SMW22–SMW26).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, serde::Deserialize)]
 pub struct ScanStats {
     pub scans: u64,
     pub last_ns: u64,
@@ -312,6 +312,12 @@ impl K2Sim {
     /// Compiles IL text for this model (load errors name `file:line:column`).
     pub fn compile(&self, text: &str, file: &str) -> Result<Program> {
         engine::compile(text, file, &self.family()).map_err(|e| e.device(self.model().name))
+    }
+
+    /// Compiles IL text for this model with the cost table `costs` (a snapshot's).
+    pub(crate) fn compile_costed(&self, text: &str, file: &str, costs: CostTable) -> Result<Program> {
+        let family = K2Family { space: *self.space(), costs: Some(costs) };
+        engine::compile(text, file, &family).map_err(|e| e.device(self.model().name))
     }
 
     fn plc_mut(&mut self) -> &mut Plc {

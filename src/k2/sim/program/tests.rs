@@ -1475,3 +1475,28 @@ fn a_pwm_width_above_the_cycle_is_always_on_and_zero_is_always_off() {
         assert!(seen.iter().all(|q| *q == want), "width {width} µs of a 1000 µs cycle: {seen:?}");
     }
 }
+
+/// The scan statistics a program reads (SMW22 last, SMW24 minimum, SMW26 maximum scan time)
+/// and the scan count survive a snapshot, as do the costs that made them: restored, the
+/// longest scan is still the 12 ms one from before the save, not the first scan after it.
+#[test]
+fn scan_statistics_and_costs_survive_a_snapshot() {
+    let (mut a, clock) = sim();
+    a.load_program("LD %SM0.0\nINC %VW0", "t.il").unwrap();
+    a.set_costs("min_scan=12ms").unwrap();
+    clock.step(Duration::from_millis(100));
+    a.set_costs("min_scan=2ms").unwrap();
+    clock.step(Duration::from_millis(20));
+    let st = a.snapshot_state();
+    let mut b = sim::open("K205-16DT", clock.clone()).unwrap();
+    b.restore_snapshot(&st).unwrap();
+    clock.step(Duration::from_millis(30));
+    for op in ["SMW22", "SMW24", "SMW26", "VW0"] {
+        assert_eq!(get(&mut b, op), get(&mut a, op), "{op} as in the uninterrupted run");
+    }
+    assert_eq!(get(&mut b, "SMW26"), Value::Int(12), "the longest scan was before the save");
+    assert_eq!(get(&mut b, "SMW22"), Value::Int(2), "scans of the saved 2 ms minimum");
+    let (pa, pb) = (a.plc().unwrap(), b.plc().unwrap());
+    assert_eq!(pb.stats, pa.stats, "the scan count and times");
+    assert_eq!(pb.costs, pa.costs);
+}
