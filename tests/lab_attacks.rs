@@ -137,6 +137,20 @@ fn the_attack_class_gets_its_expected_verdicts_twice_alike() {
 
     // Byte-identical, run after run, idle or loaded.
     assert_eq!(stdout(&first), stdout(&second), "two runs differ");
+    let third = grade(None);
+    assert_eq!(stdout(&first), stdout(&third), "a third run differs");
+
+    // What the submissions printed: in the order written, the write directory as `write`, and
+    // never the reference (an abort handler runs as the submission, or not at all).
+    let out = |s: &str| by_student[s]["stdout"].as_str().unwrap_or_default().to_string();
+    assert_eq!(out("io_order"), "one\ntwo\nthree\nfour\n");
+    assert_eq!(out("write_dir_path"), "write\n");
+    let tmp = std::env::temp_dir().display().to_string();
+    for l in &lines[..want.len()] {
+        let text = l.to_string();
+        assert!(!text.contains("servo.controlword = 15"), "the reference reached a report: {text}");
+        assert!(!text.contains(&tmp) && !text.contains("plcsh-report-"), "a folder of the grader's: {text}");
+    }
 
     // A number the grader expected or got is a JSON number.
     let answer = by_student["math_random"]["criteria"]
@@ -379,31 +393,36 @@ fn a_bug_in_the_grader_inside_a_criterion_is_a_grader_error() {
     remove(&d);
 }
 
-/// Symlinks a submission brings along (made here: a checkout on Windows has none): a folder
-/// submission with a link to the lab folder, a module that is a link to the reference, and
-/// `..` after a link. Each is refused; the reference stays unread.
+/// Symlinks a submission brings along (made here: a checkout on Windows has none): a link to
+/// the reference as the submission (relative and absolute), a folder whose `main.lua` links
+/// there, a folder with a link to the lab folder or a module that links to the reference, and
+/// an IL program that is a link. Each is refused with a verdict saying so; none is graded.
 #[cfg(unix)]
 #[test]
 fn symlinks_in_a_submission_lead_nowhere() {
     let lab = lab_copy("links", "", |t| t.to_string());
     let top = lab.parent().unwrap().to_path_buf();
-    let tries = [
-        ("module", "require(\"ref\")"),
-        ("dofile", "dofile(\"subs/linked/lab/reference.lua\")"),
-        ("io_open", "assert(load(io.open(\"subs/linked/ref.lua\"):read(\"a\")))()"),
-        ("dotdot", "assert(load(io.open(\"subs/linked/lab/../lab/reference.lua\"):read(\"a\")))()"),
-        ("require_dir", "require(\"lab.reference\")"),
-    ];
+    let subs = top.join("subs");
+    std::fs::create_dir_all(&subs).unwrap();
+    let link = |to: &Path, at: &Path| std::os::unix::fs::symlink(to, at).unwrap();
+    link(Path::new("../lab/reference.lua"), &subs.join("relative.lua"));
+    link(&lab.join("reference.lua"), &subs.join("absolute.lua"));
+    std::fs::write(lab.join("reference.il"), "LD SM0.0\n= Q0.0\nMOVW 1234, VW0\n").unwrap();
+    link(&lab.join("reference.il"), &subs.join("program.il"));
+    std::fs::create_dir_all(subs.join("main_link")).unwrap();
+    link(&lab.join("reference.lua"), &subs.join("main_link/main.lua"));
+    link(&lab.join("reference.lua"), &top.join("elsewhere.lua"));
+    std::fs::create_dir_all(top.join("folder_target")).unwrap();
+    link(&lab.join("reference.lua"), &top.join("folder_target/main.lua"));
+    link(&top.join("folder_target"), &subs.join("folder_link"));
+    let tries =
+        [("module", "require(\"ref\")"), ("lab_folder", "dofile(\"subs/linked_lab_folder/lab/reference.lua\")")];
     for (name, code) in tries {
-        let sub = top.join("subs").join(format!("linked_{name}"));
+        let sub = subs.join(format!("linked_{name}"));
         std::fs::create_dir_all(&sub).unwrap();
-        std::os::unix::fs::symlink(&lab, sub.join("lab")).unwrap();
-        std::os::unix::fs::symlink(lab.join("reference.lua"), sub.join("ref.lua")).unwrap();
-        std::fs::write(
-            sub.join("main.lua"),
-            format!("{}\n", code.replace("subs/linked/", &format!("subs/linked_{name}/"))),
-        )
-        .unwrap();
+        link(&lab, &sub.join("lab"));
+        link(&lab.join("reference.lua"), &sub.join("ref.lua"));
+        std::fs::write(sub.join("main.lua"), format!("{code}\n")).unwrap();
     }
     let o = plcsh()
         .current_dir(&top)
@@ -411,12 +430,14 @@ fn symlinks_in_a_submission_lead_nowhere() {
         .output_retrying()
         .unwrap();
     let lines = json_lines(&o);
-    assert_eq!(lines.len(), tries.len() + 1, "{}", both(&o));
-    for r in &lines[..tries.len()] {
+    let want = ["absolute", "folder_link", "linked_lab_folder", "linked_module", "main_link", "program", "relative"];
+    assert_eq!(lines.len(), want.len() + 1, "{}", both(&o));
+    let got: Vec<&str> = lines[..want.len()].iter().map(|r| r["student"].as_str().unwrap()).collect();
+    assert_eq!(got, want, "{}", both(&o));
+    for r in &lines[..want.len()] {
         assert_eq!(r["points"].as_f64(), Some(0.0), "{r}");
         let v = r["verdict"].as_str().unwrap();
-        assert!(v.starts_with("runtime error: "), "{r}");
-        assert!(v.contains("not found") || v.contains("outside the sandbox's folders"), "refused, not failed: {v}");
+        assert!(v.starts_with("refused: ") && v.contains("is a symbolic link"), "{r}");
     }
     remove(&lab);
 }

@@ -47,6 +47,9 @@ pub enum LabCmd {
         submission: String,
         #[arg(long, value_name = "REPORT")]
         report: PathBuf,
+        /// The submission's write directory, made private by the parent (which removes it).
+        #[arg(long, value_name = "DIR")]
+        write_dir: Option<PathBuf>,
     },
 }
 
@@ -126,7 +129,9 @@ pub fn run(cmd: &LabCmd, style: Style, out: &mut dyn Write) -> i32 {
             }
             i32::from(reports.iter().any(|r| r.verdict.starts_with("grader error")))
         }
-        LabCmd::Worker { lab, submission, report } => crate::lab::runner::worker(lab, submission, report),
+        LabCmd::Worker { lab, submission, report, write_dir } => {
+            crate::lab::runner::worker(lab, submission, report, write_dir.as_deref())
+        }
     }
 }
 
