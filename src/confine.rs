@@ -244,6 +244,38 @@ mod tests {
     }
 
     #[test]
+    fn bench_actions_are_refused_unless_granted_and_driving_is_not_one() {
+        for (cmd, args, want) in [
+            ("sim", "unwire all", Some("sim unwire")),
+            ("sim", "", None),
+            ("sim", "step 10ms", None),
+            ("sim", "snapshot save w/s.json", None),
+            ("sim", "snapshot restore w/s.json", Some("sim snapshot")),
+            ("sim", "clock real", Some("sim clock")),
+            ("servo", "axis1 sim fault", Some("servo sim")),
+            ("servo", "enable", None),
+            ("umpk", "sim reference lab1", Some("umpk sim")),
+            ("rtc", "sync", Some("rtc sync")),
+            ("rtc", "set 2026-01-01T00:00:00", None),
+            ("close", "servo", Some("close")),
+            ("get", "VW0", None),
+        ] {
+            assert_eq!(bench_action(cmd, args).as_deref(), want, "{cmd} {args}");
+        }
+        // Every action named is one a lab can grant.
+        for (cmd, args) in [("sim", "wire a -> b"), ("servo", "sim x"), ("connect", "x sim:"), ("paths", "")] {
+            let a = bench_action(cmd, args).unwrap();
+            assert!(BENCH_ACTIONS.iter().any(|(n, _)| *n == a), "{a}");
+        }
+        let mut c = Confinement::new(vec![], None);
+        c.check_bench("sim unwire").unwrap();
+        c.machine = Some(vec!["sim faults".into()]);
+        c.check_bench("sim faults").unwrap();
+        let e = c.check_bench("sim unwire").unwrap_err();
+        assert!(e.message.contains("not available to a graded submission"), "{e}");
+    }
+
+    #[test]
     fn reads_stay_in_the_folders_and_named_snapshots_are_refused() {
         let d = std::env::temp_dir().join(format!("plcsh-confine-{}", std::process::id()));
         std::fs::create_dir_all(d.join("out")).unwrap();

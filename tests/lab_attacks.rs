@@ -338,6 +338,22 @@ fn lab_check_refuses_points_devices_and_times_that_name_nothing() {
     remove(&d);
 }
 
+/// `lab check` names the criteria a program earns without doing the task: here the attack
+/// lab's "runs", which an empty program passes, and a starter that is the reference copied.
+#[test]
+fn lab_check_warns_of_points_a_program_earns_without_the_task() {
+    let d = lab_copy("free", "lab.toml", |t| t.replace("shared = [", "starter = [\"given.lua\"]\nshared = ["));
+    std::fs::copy(d.join("reference.lua"), d.join("given.lua")).unwrap();
+    let o = plcsh().args(["lab", "check"]).arg(&d).output_retrying().unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", both(&o));
+    let text = stdout(&o);
+    assert!(text.contains("warning: an empty program earns 1/10 points (\"runs\")"), "{text}");
+    assert!(text.contains("warning: the starter given.lua earns 10/10 points"), "{text}");
+    let o = plcsh().args(["--json", "lab", "check"]).arg(&d).output_retrying().unwrap();
+    assert_eq!(json_lines(&o)[0]["warnings"].as_array().map(Vec::len), Some(2), "{}", both(&o));
+    remove(&d);
+}
+
 #[test]
 fn a_bug_in_the_grader_inside_a_criterion_is_a_grader_error() {
     let reference = "tests/lab/attacks/submissions/honest_reference.lua";
@@ -390,6 +406,46 @@ fn a_bug_in_the_grader_inside_a_criterion_is_a_grader_error() {
     assert_eq!(errors.len(), 3, "{r}");
     assert!(errors.iter().all(|e| !e.contains("grader error")), "{errors:?}");
     assert!(errors.iter().any(|e| e.contains("the second lamp is off")), "{errors:?}");
+    remove(&d);
+}
+
+/// A lab that grants opening and closing devices (`grants` in lab.toml) still grades its own
+/// machine: a submission that closes a lab device, or rebuilds the machine under the same
+/// names and presets what the grader reads, gets a runtime error and no point — never 10/10,
+/// and never a grader error (`lab grade` exits 0). A name that is no bench action is refused.
+#[test]
+fn a_granted_bench_action_never_makes_another_machine_the_graded_one() {
+    let d =
+        lab_copy("grants", "lab.toml", |t| t.replace("shared = [", "grants = [\"close\", \"connect\"]\nshared = ["));
+    let o = plcsh()
+        .current_dir(root())
+        .args(["--json", "lab", "grade"])
+        .arg(&d)
+        .args([
+            "tests/lab/attacks/submissions/machine_rebuilt.lua",
+            "tests/lab/attacks/submissions/machine_close_device.lua",
+            "tests/lab/attacks/submissions/machine_connect_same_name.lua",
+            "tests/lab/attacks/submissions/honest_reference.lua",
+        ])
+        .output_retrying()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", both(&o));
+    let lines = json_lines(&o);
+    for r in &lines[..3] {
+        assert_eq!(r["points"].as_f64(), Some(0.0), "{r}");
+        let v = r["verdict"].as_str().unwrap();
+        assert!(v.starts_with("runtime error: ") && v.contains("closed or replaced the lab's device"), "{r}");
+    }
+    assert_eq!((lines[3]["verdict"].as_str(), lines[3]["points"].as_f64()), (Some("passed"), Some(10.0)));
+    remove(&d);
+    let d = lab_copy("grants_bad", "lab.toml", |t| t.replace("shared = [", "grants = [\"sim faultz\"]\nshared = ["));
+    let o = plcsh().args(["lab", "check"]).arg(&d).output_retrying().unwrap();
+    assert_eq!(o.status.code(), Some(2), "{}", both(&o));
+    assert!(
+        both(&o).contains("grants = [\"sim faultz\"]") && both(&o).contains("did you mean \"sim fault"),
+        "{}",
+        both(&o)
+    );
     remove(&d);
 }
 

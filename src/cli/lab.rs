@@ -79,6 +79,11 @@ pub fn run(cmd: &LabCmd, style: Style, out: &mut dyn Write) -> i32 {
                 } else {
                     let _ = writeln!(out, "{head}");
                     let _ = output::write_outcome(out, style, &o);
+                    // Criteria a program passes without doing the task, named for the teacher.
+                    let warnings = o.data.get("warnings").and_then(|w| w.as_array()).cloned().unwrap_or_default();
+                    for w in warnings.iter().filter_map(|w| w.as_str()) {
+                        let _ = writeln!(out, "warning: {w}");
+                    }
                 }
                 i32::from(!ok)
             }
@@ -118,7 +123,7 @@ pub fn run(cmd: &LabCmd, style: Style, out: &mut dyn Write) -> i32 {
                     for r in &reports {
                         for (what, text) in [("stdout", &r.stdout), ("stderr", &r.stderr)] {
                             if let Some(t) = text {
-                                let _ = writeln!(out, "{} ({what}):", r.student);
+                                let _ = writeln!(out, "{} ({what}):", crate::lab::report::cell(&r.student));
                                 for line in t.lines() {
                                     let _ = writeln!(out, "  {}", visible(line));
                                 }

@@ -430,6 +430,11 @@ mod tests {
             ),
             (format!("{base}shared = [\"../x.lua\"]\n[devices]\nplc = \"sim:K205-16DT\"\n"), "shared"),
             (
+                format!("{base}grants = [\"sim faultz\"]\n[devices]\nplc = \"sim:K205-16DT\"\n"),
+                "grants = [\"sim faultz\"]: not an action a lab grants",
+            ),
+            (format!("{base}[devices]\nplc = \"sim:K205-16DT\"\n[budget]\nwrite = \"lots\"\n"), "write = \"lots\""),
+            (
                 format!("{base}device = \"plc2\"\n[devices]\nplc = \"sim:K205-16DT\"\n"),
                 "device = \"plc2\" is not a device of the lab",
             ),

@@ -584,6 +584,12 @@ fn with_hint(msg: String, hint: Option<&str>) -> String {
     }
 }
 
+/// The session's devices by name and identity (where each device lives): a device closed and
+/// opened again under its name is another.
+fn machine(sh: &Shell) -> Vec<(String, usize)> {
+    sh.session.entries().iter().map(|e| (e.name.clone(), &*e.device as *const _ as *const u8 as usize)).collect()
+}
+
 /// The grader's `lab` table, in the globals (a submission's environment has none).
 /// `rules`: the grader's and the submission's; the session holds the submission's while it runs
 /// (so `plcsh.exec("sim program load …")` in a submission reads only what it may).
@@ -632,6 +638,7 @@ fn install_lab(
                 }
             };
             let current = lua.app_data_ref::<Shell>().and_then(|sh| sh.session.current_index().ok());
+            let before = lua.app_data_ref::<Shell>().map(|sh| machine(&sh)).unwrap_or_default();
             // The submission's abort handlers are its own: kept apart from the grader's and
             // run here, as the submission (its file rules, the run's limits), never by the
             // grader's end of the run.
@@ -657,6 +664,19 @@ fn install_lab(
             // What the submission made current (`use servo`) is not the grader's.
             if let (Some(i), Some(mut sh)) = (current, lua.app_data_mut::<Shell>()) {
                 sh.session.use_index(i);
+            }
+            // The grader grades the lab's devices, never others under their names: a device
+            // the submission closed or replaced (where the lab grants it) ends every criterion
+            // still to run, and the verdict is the submission's.
+            let after = lua.app_data_ref::<Shell>().map(|sh| machine(&sh)).unwrap_or_default();
+            if let Some((name, _)) = before.iter().find(|d| !after.contains(d)) {
+                let msg = format!("{path}: the submission closed or replaced the lab's device `{name}`");
+                let lab: Table = lua.globals().get("lab")?;
+                lab.raw_set("_machine_changed", msg.clone())?;
+                if r.is_ok() {
+                    lab.raw_set("_student_error", msg.clone())?;
+                    return Ok((false, Some(msg)));
+                }
             }
             match r {
                 Ok(()) => Ok((true, None)),

@@ -86,6 +86,20 @@ fn capture(mut r: impl Read) -> String {
 /// removed when dropped.
 struct ReportDir(PathBuf);
 
+/// A private folder of this process's own (0700), removed when dropped: where `lab check`
+/// writes the empty program it grades.
+pub struct PrivateDir(ReportDir);
+
+impl PrivateDir {
+    pub fn new() -> std::io::Result<PrivateDir> {
+        ReportDir::new().map(PrivateDir)
+    }
+
+    pub fn path(&self) -> &Path {
+        &self.0 .0
+    }
+}
+
 impl ReportDir {
     fn new() -> std::io::Result<ReportDir> {
         use std::sync::atomic::{AtomicU64, Ordering};

@@ -834,3 +834,43 @@ fn charge_for_bytes(
     )?;
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn module_names_take_any_alphabet_and_never_a_path() {
+        for ok in ["mine", "pkg.util", "модуль", "модуль.часть", "a-b_c2"] {
+            assert!(module_name_ok(ok), "{ok}");
+        }
+        for bad in ["../lab/reference", "a/b", "a\\b", "..", "a..b", "", "C:x", "a\u{0}b", "x y"] {
+            assert!(!module_name_ok(bad), "{bad:?}");
+        }
+    }
+
+    #[test]
+    fn utf16_lua_text_loads_as_utf8_and_a_cut_one_is_refused() {
+        let mut le = vec![0xFF, 0xFE];
+        le.extend("x = \"Привет\"\n".encode_utf16().flat_map(|u| u.to_le_bytes()));
+        assert_eq!(lua_text(le).unwrap(), "x = \"Привет\"\n".as_bytes());
+        let mut cut = vec![0xFE, 0xFF];
+        cut.extend("x = 1\n".encode_utf16().flat_map(|u| u.to_be_bytes()));
+        cut.push(0);
+        assert!(lua_text(cut).unwrap_err().contains("save it as UTF-8"));
+        // Windows-1251 bytes stay as written (Lua's strings are bytes).
+        let cp = b"s = \"\xcf\xf0\xe8\xe2\xe5\xf2\"\n".to_vec();
+        assert_eq!(lua_text(cp.clone()).unwrap(), cp);
+    }
+
+    #[test]
+    fn a_traceback_shows_no_absolute_folder() {
+        let t = "here\nstack traceback:\n\t[C]: in ?\n\tsubs/a.lua:2: in main chunk\n\t/home/t/labs/l1/grade.lua:5: in main chunk\n\t...abs/l1/grade.lua:5: in x\n\tC:\\Users\\t\\g.lua:1: in y";
+        let s = no_folders(t);
+        assert!(
+            s.contains("subs/a.lua:2") && !s.contains("/home/") && !s.contains("Users") && !s.contains("...abs"),
+            "{s}"
+        );
+        assert_eq!(s.matches("(a frame of the lab's)").count(), 3, "{s}");
+    }
+}
