@@ -338,6 +338,51 @@ fn lab_check_refuses_points_devices_and_times_that_name_nothing() {
     remove(&d);
 }
 
+/// The teacher's side of a class: a submission larger than the lab's cap is a verdict, not
+/// gigabytes of memory; two submissions with one student name are flagged; a file name with a
+/// newline stays one line under `--show-output`; a write directory past the cap is a verdict,
+/// and no folder of a run is left behind, whether the worker ended or was ended.
+#[test]
+fn big_twin_and_odd_submissions_are_told_apart_and_leave_nothing_behind() {
+    let d = lab_copy("teacher", "lab.toml", |t| t.replace("wall = \"60s\"", "wall = \"60s\"\nwrite = \"1MiB\""));
+    let top = d.parent().unwrap().to_path_buf();
+    let subs = top.join("subs");
+    std::fs::create_dir_all(subs.join("twin")).unwrap();
+    let task = std::fs::read_to_string(root().join("tests/lab/attacks/lab/reference.lua")).unwrap();
+    std::fs::write(subs.join("twin.lua"), &task).unwrap();
+    std::fs::write(subs.join("twin/main.lua"), &task).unwrap();
+    std::fs::write(subs.join("huge.il"), "LD SM0.0\n".repeat(300_000)).unwrap();
+    // More than the cap, and far more (the parent may end this one while it writes).
+    let flood = |mib: u32| {
+        format!("local f = assert(io.open(plcsh.write_dir .. \"/w.bin\", \"wb\"))\nlocal s = string.rep(\"z\", 1 << 20)\nfor _ = 1, {mib} do f:write(s) f:flush() end\nf:close()\n{task}")
+    };
+    std::fs::write(subs.join("flood.lua"), flood(2)).unwrap();
+    std::fs::write(subs.join("deluge.lua"), flood(40)).unwrap();
+    let odd = if cfg!(unix) { "odd\nrow" } else { "odd_row" };
+    std::fs::write(subs.join(format!("{odd}.lua")), format!("print(\"hi\")\n{task}")).unwrap();
+    let tmp = top.join("tmp");
+    std::fs::create_dir_all(&tmp).unwrap();
+    let o = plcsh()
+        .current_dir(&top)
+        .env("TMPDIR", &tmp)
+        .env("TMP", &tmp)
+        .env("TEMP", &tmp)
+        .args(["lab", "grade", "lab", "subs", "--jobs", "2", "--show-output"])
+        .output_retrying()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", both(&o));
+    let text = stdout(&o);
+    assert!(text.contains("warning: 2 submissions have the student name twin"), "{text}");
+    assert!(text.contains("refused: the submission is 2700000 bytes, more than the lab's 1 MiB"), "{text}");
+    assert_eq!(text.matches("exceeded 1 MiB in the write directory").count(), 2, "{text}");
+    if cfg!(unix) {
+        assert!(text.contains("odd\\nrow (stdout):"), "{text}");
+    }
+    let left: Vec<_> = std::fs::read_dir(&tmp).unwrap().flatten().map(|e| e.file_name()).collect();
+    assert!(left.is_empty(), "left in the temporary folder: {left:?}");
+    remove(&d);
+}
+
 /// `lab check` names the criteria a program earns without doing the task: here the attack
 /// lab's "runs", which an empty program passes, and a starter that is the reference copied.
 #[test]
