@@ -791,9 +791,32 @@ fn charge_for_bytes(
         let t: Table = g.get(lib)?;
         let raw: mlua::Function = t.get(name)?;
         let charge = charge.clone();
+        let b = budget.clone();
         t.set(
             name,
-            lua.create_function(move |_, args: MultiValue| {
+            lua.create_function(move |lua, args: MultiValue| {
+                // table.concat's result is its items' bytes (and the separators'): refused
+                // before it would allocate past the memory limit, as string.rep is.
+                if name == "concat" {
+                    if let (Some(Value::Table(items)), Some(limit)) = (args.front(), b.memory) {
+                        let sep = match args.get(1) {
+                            Some(Value::String(s)) => s.as_bytes().len(),
+                            _ => 0,
+                        };
+                        let mut bytes = 0usize;
+                        for v in items.clone().sequence_values::<Value>().flatten() {
+                            bytes = bytes.saturating_add(match v {
+                                Value::String(s) => s.as_bytes().len() + sep,
+                                _ => 24 + sep,
+                            });
+                        }
+                        if bytes > limit.saturating_sub(lua.used_memory()) {
+                            b.exceed_memory();
+                            let v = b.exceeded().unwrap_or_default();
+                            return Err(super::error::raise(Error::new(ErrorKind::Interrupted, v)));
+                        }
+                    }
+                }
                 let r = raw.call::<MultiValue>(args)?;
                 charge(size(&r))?;
                 Ok(r)
