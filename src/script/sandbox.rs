@@ -465,26 +465,68 @@ pub fn submission_env(lua: &Lua, rules: Arc<Confinement>, world: World, stop: ml
     let p: Table = env.raw_get("plcsh")?;
     p.raw_set("lib_dirs", lua.create_table()?)?;
     hold_limits(lua, &env, &stop)?;
-    let setmt: mlua::Function = lua
+    // A `__close` metamethod runs as the submission, and it cannot hide a limit: the error
+    // it is closed with goes to `stop` first (a "not enough memory" is the memory limit for
+    // good), whatever the handler then raises in its place — Lua 5.4 lets it replace the
+    // error. Set through `setmetatable`, assigned later to a metatable (the sandbox keeps a
+    // watch on each: a `__newindex` of its own) or `rawset`.
+    let (setmt, rawset): (mlua::Function, mlua::Function) = lua
         .load(
             r#"
-local setmetatable, error, rawget, type = ...
-return function(t, mt)
-  if type(mt) == "table" and rawget(mt, "__gc") ~= nil then
-    error("setmetatable: a __gc finalizer is not available in a graded run (finalizers run outside the instruction count)", 2)
+local setmetatable, getmetatable, error, rawget, rawset, type, stop = ...
+local watched = setmetatable({}, { __mode = "k" })
+local function guarded(f)
+  if type(f) ~= "function" then return f end
+  return function(o, e, ...)
+    if e ~= nil then
+      local v = stop(e)
+      if v then error(v, 0) end
+    end
+    return f(o, e, ...)
+  end
+end
+local watch = {
+  __newindex = function(t, k, v)
+    if k == "__close" then v = guarded(v) end
+    rawset(t, k, v)
+  end,
+  __metatable = false,
+}
+local function setmt(t, mt)
+  if type(mt) == "table" then
+    if rawget(mt, "__gc") ~= nil then
+      error("setmetatable: a __gc finalizer is not available in a graded run (finalizers run outside the instruction count)", 2)
+    end
+    if not watched[mt] then
+      local c = rawget(mt, "__close")
+      if c ~= nil then rawset(mt, "__close", guarded(c)) end
+      -- A metatable with a metatable of its own (inheritance: `{__index = Base}`) keeps it;
+      -- its `__close` is guarded now and through `rawset`.
+      if getmetatable(mt) == nil then setmetatable(mt, watch) end
+      watched[mt] = true
+    end
   end
   return setmetatable(t, mt)
 end
+local function rawset_(t, k, v)
+  if k == "__close" and watched[t] then v = guarded(v) end
+  return rawset(t, k, v)
+end
+return setmt, rawset_
 "#,
         )
         .set_name("=sandbox")
         .call((
             env.raw_get::<Value>("setmetatable")?,
+            lua.globals().raw_get::<Value>("getmetatable")?,
             env.raw_get::<Value>("error")?,
             env.raw_get::<Value>("rawget")?,
+            env.raw_get::<Value>("rawset")?,
             env.raw_get::<Value>("type")?,
+            stop,
         ))?;
     env.raw_set("setmetatable", setmt)?;
+    env.raw_set("rawset", rawset)?;
     Ok(env)
 }
 
