@@ -147,7 +147,9 @@ impl Confinement {
                 Err(Error::unsupported(format!(
                     "`{what}` is not available to a graded submission: it {why}, which changes the lab's machine rather than drives it"
                 ))
-                .hint("a submission drives the lab's devices as its program would on the real machine"))
+                .hint(format!(
+                    "a submission drives the lab's devices as its program would on the real machine; a lab that needs this grants it in lab.toml: grants = [\"{what}\"]"
+                )))
             }
             _ => Ok(()),
         }
