@@ -27,6 +27,70 @@ pub struct Confinement {
     /// What the read rule covers, in words, for messages that must not show the folders'
     /// paths (a graded submission is not told where the lab lives).
     pub view: Option<String>,
+    /// `Some(grants)` while a graded submission runs: the machine is the lab's, and of what
+    /// changes the bench rather than drives it ([`bench_action`]) only the actions its
+    /// `lab.toml` grants by name are allowed.
+    pub machine: Option<Vec<String>>,
+}
+
+/// The actions that change the bench rather than drive it, by the name a lab grants them
+/// with (`grants = ["sim faults"]` in `lab.toml`): a program on the real machine could do
+/// none of them. Every `sim` sub-command but `sim time`, `sim step` (waiting is what a
+/// program does) and `sim snapshot save`, the simulators' own controls (`servo sim`, `umpk sim`), opening and
+/// closing devices (`connect`, `close`, `plcsh.connect`), setting the PLC's clock from the
+/// host (`rtc sync`) and the user's folders (`paths`).
+pub const BENCH_ACTIONS: &[(&str, &str)] = &[
+    ("sim clock", "shows or changes the simulator's clock mode"),
+    ("sim input", "drives a simulated input signal"),
+    ("sim quad", "drives a simulated encoder"),
+    ("sim inputs", "lists the simulated input signals"),
+    ("sim retain", "changes the battery-retained ranges"),
+    ("sim program", "loads, unloads or reads the PLC's program"),
+    ("sim cpu", "runs or stops the PLC's CPU"),
+    ("sim stop", "stops the PLC's CPU"),
+    ("sim pause", "pauses the PLC's CPU"),
+    ("sim switch", "moves the PLC's RUN/STOP switch"),
+    ("sim scan", "runs PLC scans by hand"),
+    ("sim break", "sets breakpoints in the PLC's program"),
+    ("sim stepi", "steps the PLC's program"),
+    ("sim stepn", "steps the PLC's program"),
+    ("sim wire", "wires simulated devices together"),
+    ("sim wires", "lists the wiring"),
+    ("sim unwire", "removes wiring"),
+    ("sim snapshot", "restores a saved simulated state"),
+    ("sim snapshots", "lists the saved states"),
+    ("sim fault", "injects or clears faults"),
+    ("sim faults", "lists the injected faults"),
+    ("servo sim", "controls the simulated drive"),
+    ("umpk sim", "controls the simulated UMPK"),
+    ("connect", "opens a device"),
+    ("close", "closes a device"),
+    ("rtc sync", "sets the PLC's clock from the host's"),
+    ("paths", "shows the user's folders"),
+];
+
+/// The bench action a command is (its [`BENCH_ACTIONS`] name), or `None` when it drives the
+/// devices. `cmd` is the command's registry name, `args` its words after a leading device
+/// word (`rtc press sync` → `sync`).
+pub fn bench_action(cmd: &str, args: &str) -> Option<String> {
+    let mut words = args.split_whitespace().map(str::to_ascii_lowercase);
+    let first = words.next();
+    match cmd {
+        "sim" => match first.as_deref().unwrap_or("time") {
+            "time" | "step" => None,
+            // Saving the state changes nothing (the file rules hold); restoring it does.
+            "snapshot" if words.next().as_deref() == Some("save") => None,
+            sub => Some(format!("sim {sub}")),
+        },
+        // The device word may come first: `servo axis1 sim fault`.
+        "servo" | "umpk" => {
+            let second = words.next();
+            (first.as_deref() == Some("sim") || second.as_deref() == Some("sim")).then(|| format!("{cmd} sim"))
+        }
+        "connect" | "close" | "paths" => Some(cmd.to_string()),
+        "rtc" => (first.as_deref() == Some("sync")).then(|| "rtc sync".to_string()),
+        _ => None,
+    }
 }
 
 fn canon(p: &Path) -> PathBuf {
@@ -71,7 +135,24 @@ impl Confinement {
         let write = write.map(|w| canon(&w));
         let mut read: Vec<PathBuf> = read.iter().map(|r| canon(r)).collect();
         read.extend(write.clone());
-        Confinement { read, write, view: None }
+        Confinement { read, write, view: None, machine: None }
+    }
+
+    /// Refuses bench action `what` ([`BENCH_ACTIONS`]) while the machine is the lab's, unless
+    /// the lab grants it.
+    pub fn check_bench(&self, what: &str) -> Result<()> {
+        match &self.machine {
+            Some(grants) if !grants.iter().any(|g| g == what) => {
+                let why = BENCH_ACTIONS.iter().find(|(n, _)| *n == what).map_or("changes the bench", |(_, w)| *w);
+                Err(Error::unsupported(format!(
+                    "`{what}` is not available to a graded submission: it {why}, which changes the lab's machine rather than drives it"
+                ))
+                .hint(format!(
+                    "a submission drives the lab's devices as its program would on the real machine; a lab that needs this grants it in lab.toml: grants = [\"{what}\"]"
+                )))
+            }
+            _ => Ok(()),
+        }
     }
 
     /// Refuses every device URL but the in-process simulators, and a simulator's file
@@ -162,6 +243,38 @@ mod tests {
         }
         assert!(c.check_url("sim-umpk:UMPK16?state=/etc/flash.json").is_err());
         assert!(c.check_url("sim:K205-16DT?program=/etc/passwd").is_err());
+    }
+
+    #[test]
+    fn bench_actions_are_refused_unless_granted_and_driving_is_not_one() {
+        for (cmd, args, want) in [
+            ("sim", "unwire all", Some("sim unwire")),
+            ("sim", "", None),
+            ("sim", "step 10ms", None),
+            ("sim", "snapshot save w/s.json", None),
+            ("sim", "snapshot restore w/s.json", Some("sim snapshot")),
+            ("sim", "clock real", Some("sim clock")),
+            ("servo", "axis1 sim fault", Some("servo sim")),
+            ("servo", "enable", None),
+            ("umpk", "sim reference lab1", Some("umpk sim")),
+            ("rtc", "sync", Some("rtc sync")),
+            ("rtc", "set 2026-01-01T00:00:00", None),
+            ("close", "servo", Some("close")),
+            ("get", "VW0", None),
+        ] {
+            assert_eq!(bench_action(cmd, args).as_deref(), want, "{cmd} {args}");
+        }
+        // Every action named is one a lab can grant.
+        for (cmd, args) in [("sim", "wire a -> b"), ("servo", "sim x"), ("connect", "x sim:"), ("paths", "")] {
+            let a = bench_action(cmd, args).unwrap();
+            assert!(BENCH_ACTIONS.iter().any(|(n, _)| *n == a), "{a}");
+        }
+        let mut c = Confinement::new(vec![], None);
+        c.check_bench("sim unwire").unwrap();
+        c.machine = Some(vec!["sim faults".into()]);
+        c.check_bench("sim faults").unwrap();
+        let e = c.check_bench("sim unwire").unwrap_err();
+        assert!(e.message.contains("not available to a graded submission"), "{e}");
     }
 
     #[test]

@@ -143,6 +143,11 @@ impl Session {
         self.read_only.store(on, Ordering::Relaxed);
     }
 
+    /// Refuses bench action `what` in a graded submission ([`crate::confine::Confinement::check_bench`]).
+    pub fn check_bench(&self, what: &str) -> Result<()> {
+        self.confine.as_ref().map_or(Ok(()), |c| c.check_bench(what))
+    }
+
     pub fn read_only(&self) -> bool {
         self.read_only.load(Ordering::Relaxed)
     }
@@ -167,6 +172,7 @@ impl Session {
                 .device(name));
             }
             c.check_url(url).map_err(|e| e.device(name))?;
+            c.check_bench("connect").map_err(|e| e.device(name))?;
         }
         if !url.contains(':') {
             return self.open_profile_named(name, url);
@@ -289,6 +295,9 @@ impl Session {
     }
 
     pub fn close(&mut self, name: &str) -> Result<()> {
+        if let Some(c) = &self.confine {
+            c.check_bench("close").map_err(|e| e.device(name))?;
+        }
         let i = self.index(name)?;
         self.devices.remove(i);
         if self.current >= self.devices.len() {

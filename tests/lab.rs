@@ -80,7 +80,7 @@ const EXPECTED: &[(&str, f64, &str)] = &[
     ("require_outside", 0.0, "require_outside.lua:1: module 'socket' not found"),
     ("loadlib", 0.0, "loadlib.lua:1: attempt to index a nil value (global 'package')"),
     ("debug_library", 0.0, "debug_library.lua:1: attempt to call a nil value (field 'getinfo')"),
-    ("string_metatable", 0.0, "string_metatable.lua:1: attempt to index a nil value"),
+    ("string_metatable", 0.0, "string_metatable.lua:1: attempt to index a boolean value"),
     ("binary_chunk", 0.0, "binary_chunk.lua:1: attempt to load a binary chunk"),
 ];
 

@@ -137,6 +137,20 @@ fn the_attack_class_gets_its_expected_verdicts_twice_alike() {
 
     // Byte-identical, run after run, idle or loaded.
     assert_eq!(stdout(&first), stdout(&second), "two runs differ");
+    let third = grade(None);
+    assert_eq!(stdout(&first), stdout(&third), "a third run differs");
+
+    // What the submissions printed: in the order written, the write directory as `write`, and
+    // never the reference (an abort handler runs as the submission, or not at all).
+    let out = |s: &str| by_student[s]["stdout"].as_str().unwrap_or_default().to_string();
+    assert_eq!(out("io_order"), "one\ntwo\nthree\nfour\n");
+    assert_eq!(out("write_dir_path"), "write\n");
+    let tmp = std::env::temp_dir().display().to_string();
+    for l in &lines[..want.len()] {
+        let text = l.to_string();
+        assert!(!text.contains("servo.controlword = 15"), "the reference reached a report: {text}");
+        assert!(!text.contains(&tmp) && !text.contains("plcsh-report-"), "a folder of the grader's: {text}");
+    }
 
     // A number the grader expected or got is a JSON number.
     let answer = by_student["math_random"]["criteria"]
@@ -324,6 +338,67 @@ fn lab_check_refuses_points_devices_and_times_that_name_nothing() {
     remove(&d);
 }
 
+/// The teacher's side of a class: a submission larger than the lab's cap is a verdict, not
+/// gigabytes of memory; two submissions with one student name are flagged; a file name with a
+/// newline stays one line under `--show-output`; a write directory past the cap is a verdict,
+/// and no folder of a run is left behind, whether the worker ended or was ended.
+#[test]
+fn big_twin_and_odd_submissions_are_told_apart_and_leave_nothing_behind() {
+    let d = lab_copy("teacher", "lab.toml", |t| t.replace("wall = \"60s\"", "wall = \"60s\"\nwrite = \"1MiB\""));
+    let top = d.parent().unwrap().to_path_buf();
+    let subs = top.join("subs");
+    std::fs::create_dir_all(subs.join("twin")).unwrap();
+    let task = std::fs::read_to_string(root().join("tests/lab/attacks/lab/reference.lua")).unwrap();
+    std::fs::write(subs.join("twin.lua"), &task).unwrap();
+    std::fs::write(subs.join("twin/main.lua"), &task).unwrap();
+    std::fs::write(subs.join("huge.il"), "LD SM0.0\n".repeat(300_000)).unwrap();
+    // More than the cap, and far more (the parent may end this one while it writes).
+    let flood = |mib: u32| {
+        format!("local f = assert(io.open(plcsh.write_dir .. \"/w.bin\", \"wb\"))\nlocal s = string.rep(\"z\", 1 << 20)\nfor _ = 1, {mib} do f:write(s) f:flush() end\nf:close()\n{task}")
+    };
+    std::fs::write(subs.join("flood.lua"), flood(2)).unwrap();
+    std::fs::write(subs.join("deluge.lua"), flood(40)).unwrap();
+    let odd = if cfg!(unix) { "odd\nrow" } else { "odd_row" };
+    std::fs::write(subs.join(format!("{odd}.lua")), format!("print(\"hi\")\n{task}")).unwrap();
+    let tmp = top.join("tmp");
+    std::fs::create_dir_all(&tmp).unwrap();
+    let o = plcsh()
+        .current_dir(&top)
+        .env("TMPDIR", &tmp)
+        .env("TMP", &tmp)
+        .env("TEMP", &tmp)
+        .args(["lab", "grade", "lab", "subs", "--jobs", "2", "--show-output"])
+        .output_retrying()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", both(&o));
+    let text = stdout(&o);
+    assert!(text.contains("warning: 2 submissions have the student name twin"), "{text}");
+    assert!(text.contains("refused: the submission is 2700000 bytes, more than the lab's 1 MiB"), "{text}");
+    assert_eq!(text.matches("exceeded 1 MiB in the write directory").count(), 2, "{text}");
+    if cfg!(unix) {
+        assert!(text.contains("odd\\nrow (stdout):"), "{text}");
+    }
+    let left: Vec<_> = std::fs::read_dir(&tmp).unwrap().flatten().map(|e| e.file_name()).collect();
+    assert!(left.is_empty(), "left in the temporary folder: {left:?}");
+    remove(&d);
+}
+
+/// `lab check` names the criteria a program earns without doing the task: here the attack
+/// lab's "runs", which an empty program passes, and a starter that is the reference copied.
+#[test]
+fn lab_check_warns_of_points_a_program_earns_without_the_task() {
+    let d = lab_copy("free", "lab.toml", |t| t.replace("shared = [", "starter = [\"given.lua\"]\nshared = ["));
+    std::fs::copy(d.join("reference.lua"), d.join("given.lua")).unwrap();
+    let o = plcsh().args(["lab", "check"]).arg(&d).output_retrying().unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", both(&o));
+    let text = stdout(&o);
+    assert!(text.contains("warning: an empty program earns 1/10 points (\"runs\")"), "{text}");
+    assert!(text.contains("warning: the starter given.lua earns 10/10 points"), "{text}");
+    let o = plcsh().args(["--json", "lab", "check"]).arg(&d).output_retrying().unwrap();
+    assert_eq!(json_lines(&o)[0]["warnings"].as_array().map(Vec::len), Some(2), "{}", both(&o));
+    remove(&d);
+}
+
 #[test]
 fn a_bug_in_the_grader_inside_a_criterion_is_a_grader_error() {
     let reference = "tests/lab/attacks/submissions/honest_reference.lua";
@@ -379,31 +454,76 @@ fn a_bug_in_the_grader_inside_a_criterion_is_a_grader_error() {
     remove(&d);
 }
 
-/// Symlinks a submission brings along (made here: a checkout on Windows has none): a folder
-/// submission with a link to the lab folder, a module that is a link to the reference, and
-/// `..` after a link. Each is refused; the reference stays unread.
+/// A lab that grants opening and closing devices (`grants` in lab.toml) still grades its own
+/// machine: a submission that closes a lab device, or rebuilds the machine under the same
+/// names and presets what the grader reads, gets a runtime error and no point — never 10/10,
+/// and never a grader error (`lab grade` exits 0). A name that is no bench action is refused.
+#[test]
+fn a_granted_bench_action_never_makes_another_machine_the_graded_one() {
+    let d =
+        lab_copy("grants", "lab.toml", |t| t.replace("shared = [", "grants = [\"close\", \"connect\"]\nshared = ["));
+    let o = plcsh()
+        .current_dir(root())
+        .args(["--json", "lab", "grade"])
+        .arg(&d)
+        .args([
+            "tests/lab/attacks/submissions/machine_rebuilt.lua",
+            "tests/lab/attacks/submissions/machine_close_device.lua",
+            "tests/lab/attacks/submissions/machine_connect_same_name.lua",
+            "tests/lab/attacks/submissions/honest_reference.lua",
+        ])
+        .output_retrying()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", both(&o));
+    let lines = json_lines(&o);
+    for r in &lines[..3] {
+        assert_eq!(r["points"].as_f64(), Some(0.0), "{r}");
+        let v = r["verdict"].as_str().unwrap();
+        assert!(v.starts_with("runtime error: ") && v.contains("closed or replaced the lab's device"), "{r}");
+    }
+    assert_eq!((lines[3]["verdict"].as_str(), lines[3]["points"].as_f64()), (Some("passed"), Some(10.0)));
+    remove(&d);
+    let d = lab_copy("grants_bad", "lab.toml", |t| t.replace("shared = [", "grants = [\"sim faultz\"]\nshared = ["));
+    let o = plcsh().args(["lab", "check"]).arg(&d).output_retrying().unwrap();
+    assert_eq!(o.status.code(), Some(2), "{}", both(&o));
+    assert!(
+        both(&o).contains("grants = [\"sim faultz\"]") && both(&o).contains("did you mean \"sim fault"),
+        "{}",
+        both(&o)
+    );
+    remove(&d);
+}
+
+/// Symlinks a submission brings along (made here: a checkout on Windows has none): a link to
+/// the reference as the submission (relative and absolute), a folder whose `main.lua` links
+/// there, a folder with a link to the lab folder or a module that links to the reference, and
+/// an IL program that is a link. Each is refused with a verdict saying so; none is graded.
 #[cfg(unix)]
 #[test]
 fn symlinks_in_a_submission_lead_nowhere() {
     let lab = lab_copy("links", "", |t| t.to_string());
     let top = lab.parent().unwrap().to_path_buf();
-    let tries = [
-        ("module", "require(\"ref\")"),
-        ("dofile", "dofile(\"subs/linked/lab/reference.lua\")"),
-        ("io_open", "assert(load(io.open(\"subs/linked/ref.lua\"):read(\"a\")))()"),
-        ("dotdot", "assert(load(io.open(\"subs/linked/lab/../lab/reference.lua\"):read(\"a\")))()"),
-        ("require_dir", "require(\"lab.reference\")"),
-    ];
+    let subs = top.join("subs");
+    std::fs::create_dir_all(&subs).unwrap();
+    let link = |to: &Path, at: &Path| std::os::unix::fs::symlink(to, at).unwrap();
+    link(Path::new("../lab/reference.lua"), &subs.join("relative.lua"));
+    link(&lab.join("reference.lua"), &subs.join("absolute.lua"));
+    std::fs::write(lab.join("reference.il"), "LD SM0.0\n= Q0.0\nMOVW 1234, VW0\n").unwrap();
+    link(&lab.join("reference.il"), &subs.join("program.il"));
+    std::fs::create_dir_all(subs.join("main_link")).unwrap();
+    link(&lab.join("reference.lua"), &subs.join("main_link/main.lua"));
+    link(&lab.join("reference.lua"), &top.join("elsewhere.lua"));
+    std::fs::create_dir_all(top.join("folder_target")).unwrap();
+    link(&lab.join("reference.lua"), &top.join("folder_target/main.lua"));
+    link(&top.join("folder_target"), &subs.join("folder_link"));
+    let tries =
+        [("module", "require(\"ref\")"), ("lab_folder", "dofile(\"subs/linked_lab_folder/lab/reference.lua\")")];
     for (name, code) in tries {
-        let sub = top.join("subs").join(format!("linked_{name}"));
+        let sub = subs.join(format!("linked_{name}"));
         std::fs::create_dir_all(&sub).unwrap();
-        std::os::unix::fs::symlink(&lab, sub.join("lab")).unwrap();
-        std::os::unix::fs::symlink(lab.join("reference.lua"), sub.join("ref.lua")).unwrap();
-        std::fs::write(
-            sub.join("main.lua"),
-            format!("{}\n", code.replace("subs/linked/", &format!("subs/linked_{name}/"))),
-        )
-        .unwrap();
+        link(&lab, &sub.join("lab"));
+        link(&lab.join("reference.lua"), &sub.join("ref.lua"));
+        std::fs::write(sub.join("main.lua"), format!("{code}\n")).unwrap();
     }
     let o = plcsh()
         .current_dir(&top)
@@ -411,12 +531,14 @@ fn symlinks_in_a_submission_lead_nowhere() {
         .output_retrying()
         .unwrap();
     let lines = json_lines(&o);
-    assert_eq!(lines.len(), tries.len() + 1, "{}", both(&o));
-    for r in &lines[..tries.len()] {
+    let want = ["absolute", "folder_link", "linked_lab_folder", "linked_module", "main_link", "program", "relative"];
+    assert_eq!(lines.len(), want.len() + 1, "{}", both(&o));
+    let got: Vec<&str> = lines[..want.len()].iter().map(|r| r["student"].as_str().unwrap()).collect();
+    assert_eq!(got, want, "{}", both(&o));
+    for r in &lines[..want.len()] {
         assert_eq!(r["points"].as_f64(), Some(0.0), "{r}");
         let v = r["verdict"].as_str().unwrap();
-        assert!(v.starts_with("runtime error: "), "{r}");
-        assert!(v.contains("not found") || v.contains("outside the sandbox's folders"), "refused, not failed: {v}");
+        assert!(v.starts_with("refused: ") && v.contains("is a symbolic link"), "{r}");
     }
     remove(&lab);
 }

@@ -85,6 +85,7 @@ const CASES: &[(&str, &[&str])] = &[
             "plcsh lab grade --junit",
             "plcsh lab worker <lab>",
             "plcsh lab worker --report",
+            "plcsh lab worker --write-dir",
         ],
     ),
     ("completion_scripts_folder", &["plcsh completions --write"]),
@@ -428,8 +429,8 @@ fn lab_on_the_command_line() {
     let sub = dir.join("Петров П.П.il");
     std::fs::copy(lab.join("reference.il"), &sub).unwrap();
     let junit = dir.join("итог.xml");
-    // The workers' reports (`lab worker --report FILE`) go to a folder in the temporary folder:
-    // one with Cyrillic letters and a space here.
+    // The workers' reports (`lab worker --report FILE`) and write directories (`--write-dir
+    // DIR`) go to a folder in the temporary folder: one with Cyrillic letters and a space here.
     let tmp = dir.join("врем енно");
     std::fs::create_dir_all(&tmp).unwrap();
     let o = plcsh()
@@ -534,10 +535,11 @@ fn lua_files_with_a_byte_order_mark_load_everywhere() {
     ok(&plcsh().args(["lab", "new", lab.to_str().unwrap()]).output_retrying().unwrap());
     let grader = std::fs::read_to_string(lab.join("grade.lua")).unwrap();
     std::fs::write(lab.join("grade.lua"), format!("{BOM}{grader}")).unwrap();
-    // The lab takes Lua submissions too; a folder submission reads its own files only, so it
-    // brings its IL program with it.
+    // The lab takes Lua submissions too, which may load a program; a folder submission reads
+    // its own files only, so it brings its IL program with it.
     let toml = std::fs::read_to_string(lab.join("lab.toml")).unwrap();
-    let toml = toml.replacen("\ndevice = ", "\naccepts = [\"k2-il\", \"lua\"]\ndevice = ", 1);
+    let toml =
+        toml.replacen("\ndevice = ", "\naccepts = [\"k2-il\", \"lua\"]\ngrants = [\"sim program\"]\ndevice = ", 1);
     std::fs::write(lab.join("lab.toml"), toml).unwrap();
     let sub = dir.join("Сидоров");
     std::fs::create_dir_all(&sub).unwrap();

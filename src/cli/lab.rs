@@ -47,6 +47,9 @@ pub enum LabCmd {
         submission: String,
         #[arg(long, value_name = "REPORT")]
         report: PathBuf,
+        /// The submission's write directory, made private by the parent (which removes it).
+        #[arg(long, value_name = "DIR")]
+        write_dir: Option<PathBuf>,
     },
 }
 
@@ -76,6 +79,11 @@ pub fn run(cmd: &LabCmd, style: Style, out: &mut dyn Write) -> i32 {
                 } else {
                     let _ = writeln!(out, "{head}");
                     let _ = output::write_outcome(out, style, &o);
+                    // Criteria a program passes without doing the task, named for the teacher.
+                    let warnings = o.data.get("warnings").and_then(|w| w.as_array()).cloned().unwrap_or_default();
+                    for w in warnings.iter().filter_map(|w| w.as_str()) {
+                        let _ = writeln!(out, "warning: {w}");
+                    }
                 }
                 i32::from(!ok)
             }
@@ -115,7 +123,7 @@ pub fn run(cmd: &LabCmd, style: Style, out: &mut dyn Write) -> i32 {
                     for r in &reports {
                         for (what, text) in [("stdout", &r.stdout), ("stderr", &r.stderr)] {
                             if let Some(t) = text {
-                                let _ = writeln!(out, "{} ({what}):", r.student);
+                                let _ = writeln!(out, "{} ({what}):", crate::lab::report::cell(&r.student));
                                 for line in t.lines() {
                                     let _ = writeln!(out, "  {}", visible(line));
                                 }
@@ -126,7 +134,9 @@ pub fn run(cmd: &LabCmd, style: Style, out: &mut dyn Write) -> i32 {
             }
             i32::from(reports.iter().any(|r| r.verdict.starts_with("grader error")))
         }
-        LabCmd::Worker { lab, submission, report } => crate::lab::runner::worker(lab, submission, report),
+        LabCmd::Worker { lab, submission, report, write_dir } => {
+            crate::lab::runner::worker(lab, submission, report, write_dir.as_deref())
+        }
     }
 }
 

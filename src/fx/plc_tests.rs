@@ -304,6 +304,10 @@ fn load_errors_name_the_fx_line_and_what_to_do() {
     let e = |t: &str| Loaded::load(t, "p.il", fx2n()).expect_err(t).to_string();
     assert!(e("LD X0\nOUTT Y0\n").contains("p.il:2:1: unknown FX instruction OUTT"), "{}", e("LD X0\nOUTT Y0\n"));
     assert!(e("LD X0\nOUTT Y0\n").contains("did you mean OUT"));
+    // Another family's mnemonic gets the FX way to write it (FX PM 2 and 4), not MOV for TON.
+    let ton = e("LD X0\nTON T0 K20\n");
+    assert!(ton.contains("OUT T0 K20") && !ton.contains("did you mean MOV"), "{ton}");
+    assert!(e("LDN X0\n").contains("LDI X0"), "{}", e("LDN X0\n"));
     assert!(e("LD X0\nOUT X1\n").contains("p.il:2:5") && e("LD X0\nOUT X1\n").contains("drives Y, M and S"));
     assert!(e("LD X0\nOUT T0\n").contains("needs a preset"));
     assert!(e("LD X0\nOUT C240 K5\n").contains("high-speed counters"));

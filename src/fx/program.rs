@@ -605,6 +605,12 @@ impl Builder<'_> {
 
     fn statement(&mut self, m: &str, ops: &[(String, Pos)], at: Pos) -> Result<bool> {
         let Some(def) = lookup(m) else {
+            // Another family's mnemonic (a K2's or IEC's `TON`): the FX way to write it, not
+            // the FX mnemonic nearest in spelling (`TON` is two letters from `MOV`).
+            if let Some((_, how)) = FOREIGN.iter().find(|(f, _)| f.eq_ignore_ascii_case(m)) {
+                return Err(load_err(self.file, at, format!("unknown FX instruction {m}"))
+                    .hint(format!("{m} is not an FX mnemonic: on an FX write {how} (docs/il.md, The FX family)")));
+            }
             let near = suggest(m);
             let mut e = load_err(self.file, at, format!("unknown FX instruction {m}"));
             e = e.hint(match near {
@@ -761,6 +767,37 @@ impl Builder<'_> {
         Ok(())
     }
 }
+
+/// Mnemonics of the K2's and IEC 61131-3 instruction lists that an FX writes otherwise, with
+/// the FX form (FX PM 2 and 4: timers and counters are coils with a preset).
+const FOREIGN: &[(&str, &str)] = &[
+    ("TON", "the timer as a coil with its preset: LD X0 / OUT T0 K20 (T0–T199 count 100 ms)"),
+    ("TOF", "an off-delay with a timer coil and LDI: LDI X0 / OUT T0 K20 (T0–T199 count 100 ms)"),
+    ("TONR", "a retentive timer coil: OUT T250 K20 (T250–T255 keep their value; RST T250 clears it)"),
+    ("TP", "a pulse from a timer coil: OUT T0 K20 with its contact (T0–T199 count 100 ms)"),
+    ("CTU", "the counter as a coil with its preset: LD X0 / OUT C0 K10 (RST C0 clears it)"),
+    ("CTD", "a down count with a 32-bit counter: OUT C200 K10 with M8200 on"),
+    ("=", "OUT Y0"),
+    ("ST", "OUT Y0"),
+    ("LDN", "LDI X0"),
+    ("AN", "ANI X0"),
+    ("ANDN", "ANI X0"),
+    ("A", "AND X0"),
+    ("O", "OR X0"),
+    ("ON", "ORI X0"),
+    ("ORN", "ORI X0"),
+    ("ALD", "ANB"),
+    ("OLD", "ORB"),
+    ("LPS", "MPS"),
+    ("LRD", "MRD"),
+    ("LPP", "MPP"),
+    ("NOT", "INV"),
+    ("S", "SET Y0"),
+    ("R", "RST Y0"),
+    ("MOVW", "MOV K5 D0"),
+    ("MOVB", "MOV K5 D0"),
+    ("MOVD", "DMOV K5 D0"),
+];
 
 fn suggest(m: &str) -> Option<&'static str> {
     fn dist(a: &str, b: &str) -> usize {

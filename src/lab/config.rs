@@ -39,6 +39,9 @@ struct Raw {
     /// The language of the lab's messages and verdicts (`en`, `ru`, `zh-CN`), whatever the
     /// grader's locale.
     language: Option<String>,
+    /// Bench actions a submission may take ([`crate::confine::BENCH_ACTIONS`]).
+    #[serde(default)]
+    grants: Vec<String>,
 }
 
 #[derive(Deserialize, Default)]
@@ -48,6 +51,8 @@ struct RawBudget {
     instructions: Option<u64>,
     memory: Option<String>,
     wall: Option<String>,
+    submission: Option<String>,
+    write: Option<String>,
 }
 
 /// One graded run's limits ([`crate::core::budget`]).
@@ -57,6 +62,10 @@ pub struct Limits {
     pub instructions: u64,
     pub memory: usize,
     pub wall: Duration,
+    /// The most a submission may be, in bytes (a folder: all its files together).
+    pub submission: u64,
+    /// The most a submission may leave in its write directory, in bytes.
+    pub write: u64,
 }
 
 impl Default for Limits {
@@ -66,6 +75,10 @@ impl Default for Limits {
             instructions: 50_000_000,
             memory: 256 << 20,
             wall: Duration::from_secs(60),
+            // A whole class's programs are kilobytes; a megabyte is room for any honest one.
+            submission: 1 << 20,
+            // A worker per core on a laptop: 8 × 64 MiB at most on its disk at once.
+            write: 64 << 20,
         }
     }
 }
@@ -89,6 +102,8 @@ pub struct Lab {
     pub accepts: Vec<String>,
     /// The shared modules: (module name, file, the file's name in the lab folder).
     pub shared: Vec<(String, PathBuf, String)>,
+    /// The bench actions a submission may take (`grants` in `lab.toml`).
+    pub grants: Vec<String>,
 }
 
 /// The submission kinds, as `accepts` names them, and how verdicts name them.
@@ -177,6 +192,10 @@ fn number(x: f64) -> String {
 }
 
 fn bytes(text: &str) -> Result<usize> {
+    bytes_of("memory", text)
+}
+
+fn bytes_of(key: &str, text: &str) -> Result<usize> {
     let t = text.trim();
     let (num, mult) = [("GiB", 1usize << 30), ("MiB", 1 << 20), ("KiB", 1 << 10), ("B", 1)]
         .iter()
@@ -184,7 +203,7 @@ fn bytes(text: &str) -> Result<usize> {
         .unwrap_or((t, 1));
     match num.parse::<usize>() {
         Ok(n) if n > 0 => Ok(n.saturating_mul(mult)),
-        _ => Err(Error::usage(format!("{FILE}: [budget] memory = \"{text}\" is not a size")).hint(
+        _ => Err(Error::usage(format!("{FILE}: [budget] {key} = \"{text}\" is not a size")).hint(
             match size_in_words(t) {
                 Some(w) => format!("write \"{w}\" (units B, KiB, MiB, GiB)"),
                 None => "e.g. \"256MiB\" (units B, KiB, MiB, GiB)".into(),
@@ -266,7 +285,26 @@ impl Lab {
             },
             memory: b.memory.as_deref().map(bytes).transpose()?.unwrap_or(d.memory),
             wall: b.wall.as_deref().map(|t| duration("wall", t)).transpose()?.unwrap_or(d.wall),
+            submission: match b.submission.as_deref() {
+                Some(t) => bytes_of("submission", t)? as u64,
+                None => d.submission,
+            },
+            write: match b.write.as_deref() {
+                Some(t) => bytes_of("write", t)? as u64,
+                None => d.write,
+            },
         };
+        for g in &raw.grants {
+            if !crate::confine::BENCH_ACTIONS.iter().any(|(n, _)| n == g) {
+                let names: Vec<&str> = crate::confine::BENCH_ACTIONS.iter().map(|(n, _)| *n).collect();
+                let near = names.iter().map(|n| (crate::core::text::edit_distance(g, n), *n)).min();
+                let hint = match near {
+                    Some((d, n)) if d <= 2 => format!("did you mean \"{n}\"? grants: {}", names.join(", ")),
+                    _ => format!("grants: {}", names.join(", ")),
+                };
+                return Err(Error::usage(format!("{FILE}: grants = [\"{g}\"]: not an action a lab grants")).hint(hint));
+            }
+        }
         for (k, v) in &raw.points {
             if !v.is_finite() || *v < 0.0 {
                 return Err(Error::usage(format!("{FILE}: [points] \"{k}\" = {v}: points are a number ≥ 0")));
@@ -320,6 +358,7 @@ impl Lab {
             points: raw.points,
             accepts: raw.accepts.clone().unwrap_or_default(),
             shared,
+            grants: raw.grants.clone(),
         };
         if raw.accepts.is_none() {
             let kind = lab.kind_of(&lab.reference).unwrap_or_else(|| "lua".into());
@@ -398,6 +437,11 @@ mod tests {
                 "a shared module is a .lua file",
             ),
             (format!("{base}shared = [\"../x.lua\"]\n[devices]\nplc = \"sim:K205-16DT\"\n"), "shared"),
+            (
+                format!("{base}grants = [\"sim faultz\"]\n[devices]\nplc = \"sim:K205-16DT\"\n"),
+                "grants = [\"sim faultz\"]: not an action a lab grants",
+            ),
+            (format!("{base}[devices]\nplc = \"sim:K205-16DT\"\n[budget]\nwrite = \"lots\"\n"), "write = \"lots\""),
             (
                 format!("{base}device = \"plc2\"\n[devices]\nplc = \"sim:K205-16DT\"\n"),
                 "device = \"plc2\" is not a device of the lab",

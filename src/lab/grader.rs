@@ -143,26 +143,137 @@ pub fn student_name(file: &Path) -> String {
     stem
 }
 
-/// A folder for one run's files, removed when dropped.
-struct WriteDir(PathBuf);
+/// A folder for one run's files: made fresh and private (0700 where the system has modes; a
+/// path that exists, a link included, is passed over, never used), removed when dropped. A
+/// worker of `lab grade` is given one its parent made ([`WriteDir::given`]), which the parent
+/// removes however the worker ends.
+pub struct WriteDir(PathBuf, bool);
 
 impl WriteDir {
-    fn new() -> crate::core::Result<WriteDir> {
+    pub fn new() -> crate::core::Result<WriteDir> {
         use std::sync::atomic::AtomicU64;
         static N: AtomicU64 = AtomicU64::new(0);
-        let d = std::env::temp_dir().join(format!(
-            "plcsh-lab-{}-{}",
-            std::process::id(),
-            N.fetch_add(1, Ordering::Relaxed)
-        ));
-        std::fs::create_dir_all(&d).map_err(|e| Error::io(format!("cannot create {}", d.display())).cause(e))?;
-        Ok(WriteDir(d))
+        loop {
+            let d = std::env::temp_dir().join(format!(
+                "plcsh-lab-{}-{}",
+                std::process::id(),
+                N.fetch_add(1, Ordering::Relaxed)
+            ));
+            match crate::core::platform::create_private_dir(&d) {
+                Ok(()) => return Ok(WriteDir(d, true)),
+                Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
+                Err(e) => return Err(Error::io("cannot create a write directory for the run").cause(e)),
+            }
+        }
+    }
+
+    /// A folder the caller made and removes (it must be a folder, not a link to one).
+    pub fn given(dir: &Path) -> crate::core::Result<WriteDir> {
+        if crate::core::platform::is_link(dir) || !dir.is_dir() {
+            return Err(Error::io("the write directory given is not a folder of the grader's own"));
+        }
+        Ok(WriteDir(dir.to_path_buf(), false))
+    }
+
+    pub fn path(&self) -> &Path {
+        &self.0
     }
 }
 
 impl Drop for WriteDir {
     fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
+        if self.1 {
+            let _ = std::fs::remove_dir_all(&self.0);
+        }
+    }
+}
+
+/// What a submission left in its write directory, in bytes (links counted as themselves,
+/// never followed); stops counting past `cap`.
+pub fn written(dir: &Path, cap: u64) -> u64 {
+    let mut total = 0u64;
+    let mut todo = vec![dir.to_path_buf()];
+    while let Some(d) = todo.pop() {
+        let Ok(entries) = std::fs::read_dir(&d) else { continue };
+        for e in entries.flatten() {
+            let Ok(m) = std::fs::symlink_metadata(e.path()) else { continue };
+            if m.is_dir() {
+                todo.push(e.path());
+            }
+            total = total.saturating_add(m.len().max(1));
+            if total > cap {
+                return total;
+            }
+        }
+    }
+    total
+}
+
+/// The verdict of a run that left more than `cap` bytes in its write directory.
+pub fn write_verdict(cap: u64) -> String {
+    format!(
+        "exceeded {} in the write directory",
+        crate::core::budget::describe_bytes(usize::try_from(cap).unwrap_or(usize::MAX))
+    )
+}
+
+/// Why `file` is not a submission of its own bytes, or too big to grade: a symbolic link
+/// (the file itself, its folder for `NAME/main.lua`, or any entry in that folder), or more
+/// bytes than the lab's `[budget] submission`. Git checkouts and zip or tar archives keep
+/// links, and a link to the lab's reference would be graded as the reference.
+fn refused(lab: &Lab, file: &Path) -> Option<String> {
+    use crate::core::platform::is_link;
+    let name = |p: &Path| crate::core::encoding::printable(&p.display().to_string()).into_owned();
+    let link = |p: &Path| {
+        Some(format!(
+            "refused: {} is a symbolic link: a submission is its own files, never a link (hand in the file itself)",
+            name(p)
+        ))
+    };
+    if is_link(file) {
+        return link(file);
+    }
+    let cap = lab.limits.submission;
+    let too_big = |n: u64| {
+        Some(format!(
+            "refused: the submission is {} bytes, more than the lab's {} ([budget] submission in lab.toml)",
+            n,
+            crate::core::budget::describe_bytes(usize::try_from(cap).unwrap_or(usize::MAX))
+        ))
+    };
+    if file.file_stem().is_some_and(|s| s == "main") {
+        let dir = file.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+        if is_link(dir) {
+            return link(dir);
+        }
+        // The folder's entries, to a bounded depth and number: a link anywhere is refused.
+        let (mut total, mut seen) = (0u64, 0usize);
+        let mut todo = vec![(dir.to_path_buf(), 0usize)];
+        while let Some((d, depth)) = todo.pop() {
+            let Ok(entries) = std::fs::read_dir(&d) else { continue };
+            for e in entries.flatten() {
+                let p = e.path();
+                seen += 1;
+                let Ok(m) = std::fs::symlink_metadata(&p) else { continue };
+                if m.file_type().is_symlink() {
+                    let shown = p.strip_prefix(dir).map(|r| Path::new(dir.file_name().unwrap_or_default()).join(r));
+                    return link(shown.as_deref().unwrap_or(&p));
+                }
+                if m.is_dir() && depth < 16 && seen < 10_000 {
+                    todo.push((p, depth + 1));
+                } else if m.is_file() {
+                    total = total.saturating_add(m.len());
+                }
+            }
+            if total > cap {
+                return too_big(total);
+            }
+        }
+        return None;
+    }
+    match std::fs::symlink_metadata(file) {
+        Ok(m) if m.len() > cap => too_big(m.len()),
+        _ => None,
     }
 }
 
@@ -200,10 +311,18 @@ pub fn grade(lab: &Lab, file: &str) -> Report {
 /// worker's stdout, which `lab grade` keeps as the submission's output and never reads a
 /// grade from).
 pub fn grade_to(lab: &Lab, file: &str, out: Box<dyn std::io::Write + Send>) -> Report {
+    grade_in(lab, file, out, None)
+}
+
+/// [`grade_to`] with the write directory `write` (a worker's, made by its parent), or a new one.
+pub fn grade_in(lab: &Lab, file: &str, out: Box<dyn std::io::Write + Send>, write: Option<&Path>) -> Report {
     let path = Path::new(file);
     let Some(kind) = lab.kind_of(path) else {
         return Report::broken(lab, file, "not a submission: give a .lua script or an .il program".into());
     };
+    if let Some(why) = refused(lab, path) {
+        return Report::broken(lab, file, why);
+    }
     if !path.is_file() {
         return Report::broken(lab, file, "not a submission: no such file".into());
     }
@@ -215,7 +334,14 @@ pub fn grade_to(lab: &Lab, file: &str, out: Box<dyn std::io::Write + Send>) -> R
         );
     }
     let kind = if kind == "lua" { "lua" } else { "il" };
-    match run(lab, file, kind, out) {
+    let write = match write.map(WriteDir::given).unwrap_or_else(WriteDir::new) {
+        Ok(w) => w,
+        Err(e) => return Report::broken(lab, file, format!("grader error: {e}")),
+    };
+    match run(lab, file, kind, out, &write) {
+        Ok(_) if written(write.path(), lab.limits.write) > lab.limits.write => {
+            Report::broken(lab, file, write_verdict(lab.limits.write))
+        }
         Ok(r) => r,
         Err(e) => Report::broken(lab, file, format!("grader error: {e}")),
     }
@@ -232,6 +358,8 @@ fn submission_view(lab: &Lab, file: &Path, write: &Path) -> (Arc<Confinement>, s
     read.extend(lab.starter.iter().cloned());
     let mut rules = Confinement::new(read, Some(write.to_path_buf()));
     rules.view = Some("the submission's own files, the lab's shared and starter files and the write directory".into());
+    // The machine is the lab's: the submission drives it, and changes the bench only as granted.
+    rules.machine = Some(lab.grants.clone());
     let own = folder.then(|| {
         let real = crate::core::fspath::canonical(dir).unwrap_or_else(|_| dir.to_path_buf());
         (real, dir.display().to_string())
@@ -248,15 +376,23 @@ fn seed(lab: &Lab, student: &str) -> i64 {
     h as i64
 }
 
-fn run(lab: &Lab, file: &str, kind: &str, out: Box<dyn std::io::Write + Send>) -> crate::core::Result<Report> {
-    let write = WriteDir::new()?;
+fn run(
+    lab: &Lab,
+    file: &str,
+    kind: &str,
+    out: Box<dyn std::io::Write + Send>,
+    write: &WriteDir,
+) -> crate::core::Result<Report> {
     let sub_dir = Path::new(file).parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
     let rules = Arc::new(Confinement::new(vec![lab.dir.clone(), sub_dir.to_path_buf()], Some(write.0.clone())));
-    let (student_rules, world) = submission_view(lab, Path::new(file), &write.0);
+    let (student_rules, world) = submission_view(lab, Path::new(file), write.path());
     let session = session(lab, Some(rules.clone())).map_err(|e| e.cause("opening the lab's devices"))?;
     let clock = session.clock.clone();
     let mut shell = Shell::new(session, Style { json: false, color: false });
     shell.confine(rules.clone());
+    // One clock per lab: every simulated PLC's real-time clock starts at the lab's epoch
+    // (2026-01-01 00:00:00, what `os.time` reads at simulated time zero), not the host's.
+    set_rtc_epoch(&mut shell);
     let budget = Arc::new(Budget::new(
         Some(lab.limits.sim_time),
         Some(lab.limits.instructions),
@@ -363,6 +499,31 @@ fn run(lab: &Lab, file: &str, kind: &str, out: Box<dyn std::io::Write + Send>) -
     })
 }
 
+/// The date and time every simulated K2's real-time clock starts at in a graded run: the
+/// sandbox's epoch ([`sandbox::EPOCH`], 2026-01-01 00:00:00), so a program that reads the
+/// clock gets the same answer on every machine and at every hour.
+pub const RTC_EPOCH: &str = "2026-01-01T00:00:00";
+
+/// Sets every simulated K2's clock to [`RTC_EPOCH`] (`rtc NAME set …`, the manual's SET_RTC,
+/// §2.2.9). The UMPK, FX and drive simulators keep no calendar clock: their time is the
+/// session's simulated clock, which starts at zero.
+fn set_rtc_epoch(shell: &mut Shell) {
+    let k2s: Vec<String> = shell
+        .session
+        .entries()
+        .iter()
+        .filter(|e| e.url.split(':').next().is_some_and(|s| s.eq_ignore_ascii_case("sim")))
+        .map(|e| e.name.clone())
+        .collect();
+    let back = shell.session.current_index().ok();
+    for name in k2s {
+        let _ = shell.exec(&format!("rtc {name} set {RTC_EPOCH}"));
+    }
+    if let Some(b) = back {
+        shell.session.use_index(b);
+    }
+}
+
 /// The fault that stopped the PLC an IL submission runs on (its watchdog: an endless loop),
 /// as `file:line: …`, read from `sim program` once the grader is done.
 fn plc_fault(shell: &mut Shell, lab: &Lab, file: &str) -> Option<String> {
@@ -423,6 +584,12 @@ fn with_hint(msg: String, hint: Option<&str>) -> String {
     }
 }
 
+/// The session's devices by name and identity (where each device lives): a device closed and
+/// opened again under its name is another.
+fn machine(sh: &Shell) -> Vec<(String, usize)> {
+    sh.session.entries().iter().map(|e| (e.name.clone(), &*e.device as *const _ as *const u8 as usize)).collect()
+}
+
 /// The grader's `lab` table, in the globals (a submission's environment has none).
 /// `rules`: the grader's and the submission's; the session holds the submission's while it runs
 /// (so `plcsh.exec("sim program load …")` in a submission reads only what it may).
@@ -443,12 +610,24 @@ fn install_lab(
     t.set("device", lab.device.as_str())?;
     t.set("dir", lab.dir.display().to_string())?;
     let b = budget.clone();
+    let cap = lab.limits.submission;
     t.set(
         "_run_lua",
         lua.create_function(move |lua, path: String| {
-            let code = std::fs::read(&path).map_err(|e| mlua::Error::runtime(format!("cannot read {path}: {e}")))?;
+            // Never through a link (the submission was checked for links before the run).
+            let code = crate::core::platform::read_no_follow(Path::new(&path), cap)
+                .map_err(|e| mlua::Error::runtime(format!("cannot read {path}: {e}")))?;
+            let code = match sandbox::lua_text(code) {
+                Ok(c) => c,
+                Err(why) => {
+                    let msg = format!("{path}: {why}");
+                    let lab: Table = lua.globals().get("lab")?;
+                    lab.raw_set("_student_error", msg.clone())?;
+                    return Ok((false, Some(msg)));
+                }
+            };
             let f = lua
-                .load(crate::script::file_chunk(&code))
+                .load(code)
                 .set_name(format!("@{path}"))
                 .set_mode(mlua::chunk::ChunkMode::Text)
                 .set_environment(env.clone())
@@ -458,9 +637,47 @@ fn install_lab(
                     sh.confine(r.clone());
                 }
             };
+            let current = lua.app_data_ref::<Shell>().and_then(|sh| sh.session.current_index().ok());
+            let before = lua.app_data_ref::<Shell>().map(|sh| machine(&sh)).unwrap_or_default();
+            // The submission's abort handlers are its own: kept apart from the grader's and
+            // run here, as the submission (its file rules, the run's limits), never by the
+            // grader's end of the run.
+            let grader_handlers: Table = lua.named_registry_value(crate::script::ABORT_KEY)?;
+            lua.set_named_registry_value(crate::script::ABORT_KEY, lua.create_table()?)?;
             confine(lua, &rules[1]);
-            let r = f.and_then(|f| f.call::<()>(()));
+            let mut r = f.and_then(|f| f.call::<()>(()));
+            let own: Table = lua.named_registry_value(crate::script::ABORT_KEY)?;
+            lua.set_named_registry_value(crate::script::ABORT_KEY, grader_handlers)?;
+            if r.is_err() && b.exceeded().is_none() {
+                // Once a limit ended the run, no submission code runs again.
+                let list: Vec<mlua::Function> = own.sequence_values().filter_map(|f| f.ok()).collect();
+                for h in list.iter().rev() {
+                    if let Err(e) = h.call::<()>("failed") {
+                        if b.exceeded().is_some() {
+                            r = Err(e);
+                            break;
+                        }
+                    }
+                }
+            }
             confine(lua, &rules[0]);
+            // What the submission made current (`use servo`) is not the grader's.
+            if let (Some(i), Some(mut sh)) = (current, lua.app_data_mut::<Shell>()) {
+                sh.session.use_index(i);
+            }
+            // The grader grades the lab's devices, never others under their names: a device
+            // the submission closed or replaced (where the lab grants it) ends every criterion
+            // still to run, and the verdict is the submission's.
+            let after = lua.app_data_ref::<Shell>().map(|sh| machine(&sh)).unwrap_or_default();
+            if let Some((name, _)) = before.iter().find(|d| !after.contains(d)) {
+                let msg = format!("{path}: the submission closed or replaced the lab's device `{name}`");
+                let lab: Table = lua.globals().get("lab")?;
+                lab.raw_set("_machine_changed", msg.clone())?;
+                if r.is_ok() {
+                    lab.raw_set("_student_error", msg.clone())?;
+                    return Ok((false, Some(msg)));
+                }
+            }
             match r {
                 Ok(()) => Ok((true, None)),
                 Err(e) => {

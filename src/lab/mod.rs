@@ -30,14 +30,12 @@ pub fn new_lab(dir: &Path) -> Result<Outcome> {
         std::fs::write(&p, text).map_err(|e| Error::io(format!("cannot write {}", p.display())).cause(e))?;
     }
     let names: Vec<&str> = example::FILES.iter().map(|(n, _)| *n).collect();
+    // The command to type next, with the folder quoted as the shell reads it (`'my lab'`).
+    let shown = dir.display().to_string();
+    let word = crate::shell::lex::quote(&shown);
     Ok(Outcome::new("lab")
         .with("sub", "new")
-        .text(format!(
-            "wrote {} ({}); check it with: plcsh lab check {}",
-            dir.display(),
-            names.join(", "),
-            dir.display()
-        ))
+        .text(format!("wrote {word} ({}); check it with: plcsh lab check {word}", names.join(", ")))
         .with("dir", dir.display().to_string())
         .with("files", names))
 }
@@ -84,6 +82,7 @@ pub fn check(path: &Path) -> Result<(Outcome, String, bool)> {
     points_name_criteria(&lab, &r)?;
     let ok = r.verdict == "passed" && r.points == r.max_points && r.max_points > 0.0;
     let rows = report::check_rows(&r);
+    let warnings = if ok { free_points(path, &lab)? } else { Vec::new() };
     let head = if ok {
         format!(
             "{}: the reference solution gets {}/{} points in {} simulated s",
@@ -100,8 +99,43 @@ pub fn check(path: &Path) -> Result<(Outcome, String, bool)> {
         .table(&["criterion", "points", "result"], rows)
         .with("lab", lab.title.as_str())
         .with("passed", ok)
+        .with("warnings", warnings)
         .with("reference", r);
     Ok((o, head, ok))
+}
+
+/// Points a program earns without doing the task: each starter file the lab accepts, and an
+/// empty program of the lab's first kind, graded as a student's would be. A criterion such a
+/// program passes checks nothing the task asks for; each one that earns points is named.
+fn free_points(path: &Path, lab: &Lab) -> Result<Vec<String>> {
+    let dir =
+        runner::PrivateDir::new().map_err(|e| Error::io("cannot create a folder for the empty program").cause(e))?;
+    let mut tries: Vec<(String, String)> = Vec::new();
+    for s in &lab.starter {
+        if lab.kind_of(s).is_some_and(|k| lab.accepts.contains(&k)) {
+            let name = s.strip_prefix(&lab.dir).unwrap_or(s).display().to_string();
+            tries.push((format!("the starter {name}"), s.display().to_string()));
+        }
+    }
+    let ext = if lab.accepts.iter().any(|k| k == "lua") { "lua" } else { "il" };
+    let empty = dir.path().join(format!("empty.{ext}"));
+    std::fs::write(&empty, "").map_err(|e| Error::io("cannot write the empty program").cause(e))?;
+    tries.push(("an empty program".into(), empty.display().to_string()));
+    let mut out = Vec::new();
+    for (what, file) in tries {
+        let mut r = runner::grade_one(path, lab, &file)?;
+        report::bound(&mut r);
+        if r.points > 0.0 {
+            let names: Vec<&str> = r.passed();
+            out.push(format!(
+                "{what} earns {}/{} points ({}): a criterion a program passes without doing the task checks nothing the task asks",
+                r.points,
+                r.max_points,
+                quoted(&names)
+            ));
+        }
+    }
+    Ok(out)
 }
 
 pub use report::{json as report_json, summary};

@@ -141,7 +141,24 @@ pub fn summary(lab: &Lab, reports: &[Report]) -> (String, Outcome) {
             ]
         })
         .collect();
-    let head = format!("{}: {} submission(s), {passed} passed every criterion", cell(&lab.title), reports.len());
+    // Two submissions with one student name (`ivanov.lua` and `ivanov/main.lua`) are flagged:
+    // their rows would otherwise read as one student graded twice.
+    let mut names: std::collections::BTreeMap<&str, Vec<&str>> = std::collections::BTreeMap::new();
+    for r in reports {
+        names.entry(r.student.as_str()).or_default().push(r.file.as_str());
+    }
+    let twice: Vec<(&str, Vec<&str>)> = names.into_iter().filter(|(_, f)| f.len() > 1).collect();
+    let mut head = format!("{}: {} submission(s), {passed} passed every criterion", cell(&lab.title), reports.len());
+    for (name, files) in &twice {
+        head.push_str(&format!(
+            "\nwarning: {} submissions have the student name {}: {}",
+            files.len(),
+            cell(name),
+            files.iter().map(|f| cell(f)).collect::<Vec<_>>().join(", ")
+        ));
+    }
+    let duplicates: Vec<serde_json::Value> =
+        twice.iter().map(|(n, f)| serde_json::json!({"student": n, "files": f})).collect();
     let o = Outcome::new("lab")
         .with("sub", "grade")
         .table(&["student", "points", "passed", "failed", "verdict", "simulated time"], rows)
@@ -153,6 +170,7 @@ pub fn summary(lab: &Lab, reports: &[Report]) -> (String, Outcome) {
                 "passed": passed,
                 "grader_errors": broken,
                 "points": reports.iter().map(|r| r.points).sum::<f64>(),
+                "duplicate_students": duplicates,
             }),
         );
     (head, o)

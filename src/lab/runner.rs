@@ -31,15 +31,19 @@ pub fn submissions(args: &[PathBuf]) -> Result<Vec<String>> {
                 std::fs::read_dir(a).map_err(|e| Error::io(format!("cannot list {}", a.display())).cause(e))?;
             for e in entries.flatten() {
                 let p = e.path();
+                // A link is listed as what it names (a file, a folder's main.lua) and graded
+                // as a link: refused, with a verdict saying so (`grader::refused`).
+                let link = crate::core::platform::is_link(&p);
                 if p.is_dir() {
-                    found.extend(["main.lua", "main.il"].iter().map(|m| p.join(m)).filter(|m| m.is_file()));
-                } else if matches!(p.extension().and_then(|x| x.to_str()), Some("lua" | "il")) {
+                    let mains = ["main.lua", "main.il"].iter().map(|m| p.join(m));
+                    found.extend(mains.filter(|m| std::fs::symlink_metadata(m).is_ok()));
+                } else if matches!(p.extension().and_then(|x| x.to_str()), Some("lua" | "il")) || link {
                     found.push(p);
                 }
             }
             found.sort();
             out.extend(found.into_iter().map(|p| p.display().to_string()));
-        } else if a.is_file() {
+        } else if a.is_file() || crate::core::platform::is_link(a) {
             out.push(a.display().to_string());
         } else {
             return Err(Error::usage(format!("{}: no such file or folder", a.display()))
@@ -82,6 +86,20 @@ fn capture(mut r: impl Read) -> String {
 /// removed when dropped.
 struct ReportDir(PathBuf);
 
+/// A private folder of this process's own (0700), removed when dropped: where `lab check`
+/// writes the empty program it grades.
+pub struct PrivateDir(ReportDir);
+
+impl PrivateDir {
+    pub fn new() -> std::io::Result<PrivateDir> {
+        ReportDir::new().map(PrivateDir)
+    }
+
+    pub fn path(&self) -> &Path {
+        &self.0 .0
+    }
+}
+
 impl ReportDir {
     fn new() -> std::io::Result<ReportDir> {
         use std::sync::atomic::{AtomicU64, Ordering};
@@ -109,6 +127,21 @@ impl Drop for ReportDir {
     }
 }
 
+/// `text` with the write directory's path (as made, and as the system resolves it) shown as
+/// `write`: the folder's name changes from run to run and is the grader's, never the output's.
+fn hide_write_dir(text: String, dir: &Path) -> String {
+    let mut names = vec![dir.display().to_string()];
+    if let Ok(real) = crate::core::fspath::canonical(dir) {
+        names.push(real.display().to_string());
+    }
+    names.sort_by_key(|n| std::cmp::Reverse(n.len()));
+    let mut text = text;
+    for n in names.iter().filter(|n| !n.is_empty()) {
+        text = text.replace(n.as_str(), "write");
+    }
+    text
+}
+
 /// Runs one worker for `file` and reads its report; ends it at the wall-clock limit.
 fn one(exe: &Path, lab_path: &Path, lab: &Lab, file: &str) -> Report {
     let dir = match ReportDir::new() {
@@ -118,12 +151,20 @@ fn one(exe: &Path, lab_path: &Path, lab: &Lab, file: &str) -> Report {
         }
     };
     let report = dir.0.join("report.json");
+    // The submission's write directory: made here, private, inside this run's own folder and
+    // removed with it however the worker ends (killed at the wall-clock limit included).
+    let write = dir.0.join("write");
+    if let Err(e) = crate::core::platform::create_private_dir(&write) {
+        return Report::broken(lab, file, format!("grader error: cannot create the write directory: {e}"));
+    }
     let child = Command::new(exe)
         .args(["lab", "worker"])
         .arg(lab_path)
         .arg(file)
         .arg("--report")
         .arg(&report)
+        .arg("--write-dir")
+        .arg(&write)
         .stdin(Stdio::null())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
@@ -137,6 +178,10 @@ fn one(exe: &Path, lab_path: &Path, lab: &Lab, file: &str) -> Report {
     let out_reader = std::thread::spawn(move || capture(stdout));
     let err_reader = std::thread::spawn(move || capture(stderr));
     let deadline = Instant::now() + lab.limits.wall;
+    // The disk's safety net: a worker whose write directory grows far past the lab's cap is
+    // ended (the worker itself gives the verdict for any size past the cap at its end).
+    let mut next_look = Instant::now();
+    let mut flooded = false;
     let status = loop {
         match child.try_wait() {
             Ok(Some(st)) => break Some(st),
@@ -145,13 +190,27 @@ fn one(exe: &Path, lab_path: &Path, lab: &Lab, file: &str) -> Report {
                 let _ = child.wait();
                 break None;
             }
-            Ok(None) => std::thread::sleep(Duration::from_millis(5)),
+            Ok(None) => {
+                if Instant::now() >= next_look {
+                    next_look = Instant::now() + Duration::from_millis(200);
+                    let far = lab.limits.write.saturating_mul(4);
+                    if super::grader::written(&write, far) > far {
+                        flooded = true;
+                        let _ = child.kill();
+                        let _ = child.wait();
+                        break None;
+                    }
+                }
+                std::thread::sleep(Duration::from_millis(5))
+            }
             Err(_) => break None,
         }
     };
     let out = out_reader.join().unwrap_or_default();
     let err = err_reader.join().unwrap_or_default();
+    let (out, err) = (hide_write_dir(out, &write), hide_write_dir(err, &write));
     let mut r = match status {
+        None if flooded => Report::broken(lab, file, super::grader::write_verdict(lab.limits.write)),
         None => Report::broken(
             lab,
             file,
@@ -176,9 +235,9 @@ pub fn grade_one(lab_path: &Path, lab: &Lab, file: &str) -> Result<Report> {
 
 /// The worker (`plcsh lab worker LAB FILE --report REPORT`): grades one file, with what the
 /// Lua code prints on this process's stdout, and writes the report as JSON to `REPORT`.
-pub fn worker(path: &Path, file: &str, report: &Path) -> i32 {
+pub fn worker(path: &Path, file: &str, report: &Path, write: Option<&Path>) -> i32 {
     let r = match Lab::load(path) {
-        Ok(lab) => super::grader::grade_to(&lab, file, Box::new(std::io::stdout())),
+        Ok(lab) => super::grader::grade_in(&lab, file, Box::new(std::io::stdout()), write),
         Err(e) => {
             eprintln!("plcsh lab worker: {e}");
             return 1;

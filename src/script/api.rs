@@ -157,8 +157,26 @@ fn truthy(v: &Value) -> bool {
 
 /// Refuses a table JSON cannot hold without losing data: a sparse list (`{1, nil, 3}`) or one
 /// mixing list items and keys (`{1, 2, x=3}`) — serde would drop or reorder them silently.
+/// How deep `plcsh.json.encode` follows nested tables: deeper (or a table that holds itself)
+/// is an error, never a stack overflow.
+pub const JSON_DEPTH: usize = 128;
+
 fn json_shape(lua: &Lua, v: &Value, path: &mut String) -> mlua::Result<()> {
+    json_shape_at(lua, v, path, 0)
+}
+
+fn json_shape_at(lua: &Lua, v: &Value, path: &mut String, depth: usize) -> mlua::Result<()> {
     let Value::Table(t) = v else { return Ok(()) };
+    if depth >= JSON_DEPTH {
+        return Err(super::error::raise_at(
+            lua,
+            Error::new(
+                ErrorKind::Value,
+                format!("plcsh.json.encode: the value is nested more than {JSON_DEPTH} tables deep (or holds itself)"),
+            )
+            .hint("JSON holds trees of tables; flatten the value"),
+        ));
+    }
     let (mut ints, mut max, mut others) = (0usize, 0i64, 0usize);
     for pair in t.clone().pairs::<Value, Value>() {
         let (k, _) = pair?;
@@ -187,11 +205,13 @@ fn json_shape(lua: &Lua, v: &Value, path: &mut String) -> mlua::Result<()> {
         let (k, item) = pair?;
         let len = path.len();
         match &k {
+            _ if len > 200 => {}
             Value::Integer(i) => path.push_str(&format!("[{i}]")),
             Value::String(s) => path.push_str(&format!(".{}", s.to_string_lossy())),
             _ => path.push_str("[?]"),
         }
-        json_shape(lua, &item, path)?;
+        // The path names the first levels only (it would grow with the square of the depth).
+        json_shape_at(lua, &item, path, depth + 1)?;
         path.truncate(len);
     }
     Ok(())

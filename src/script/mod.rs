@@ -21,6 +21,7 @@ pub mod sandbox;
 mod snapshot;
 mod wire;
 
+pub use api::ABORT_KEY;
 pub use bridge::{Bridge, BRIDGE};
 pub use error::Failure;
 

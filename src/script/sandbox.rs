@@ -78,6 +78,32 @@ fn arg_str(args: &MultiValue, i: usize) -> Option<String> {
     }
 }
 
+/// A traceback without the frames of files named by an absolute path (the grader's, the lab's
+/// modules: `/home/teacher/labs/…`, `C:\\Users\\…`, or Lua's shortened `...tail` of one):
+/// such a frame reads `(a frame of the lab's)`, so no folder of the grader's reaches a run.
+fn no_folders(t: &str) -> String {
+    let mut out = String::with_capacity(t.len());
+    let mut after = false;
+    for (i, line) in t.split('\n').enumerate() {
+        if i > 0 {
+            out.push('\n');
+        }
+        let frame = line.trim_start();
+        let b = frame.as_bytes();
+        let absolute = frame.starts_with('/')
+            || frame.starts_with("...")
+            || frame.starts_with("\\\\")
+            || (b.len() > 2 && b[0].is_ascii_alphabetic() && b[1] == b':' && (b[2] == b'\\' || b[2] == b'/'));
+        if after && absolute {
+            out.push_str("\t(a frame of the lab's)");
+        } else {
+            out.push_str(line);
+        }
+        after |= line == "stack traceback:";
+    }
+    out
+}
+
 /// Restricts the globals of `lua` for a sandboxed run under `rules`.
 pub fn apply(lua: &Lua, rules: Arc<Confinement>) -> mlua::Result<()> {
     let g = lua.globals();
@@ -251,9 +277,11 @@ pub fn student_env(lua: &Lua, rules: Arc<Confinement>) -> mlua::Result<Table> {
             env.raw_set(*lib, deep_copy(lua, &t, 0)?)?;
         }
     }
-    // getmetatable: a table's only — the string and device metatables are shared with the grader.
+    // getmetatable: a table's, and a string's as stock Lua gives it (its `__metatable` field:
+    // `false`, the string metatable being protected), never a device's (shared with the
+    // grader). One value, always, as Lua's own returns: `type(getmetatable(1))` is "nil".
     let gm: mlua::Function = lua
-        .load("local gm, type = getmetatable, type\nreturn function(o) if type(o) == 'table' then return gm(o) end end")
+        .load("local gm, type = getmetatable, type\nreturn function(o) local t = type(o); if t == 'table' or t == 'string' then return gm(o) end; return nil end")
         .set_name("=sandbox")
         .eval()?;
     env.raw_set("getmetatable", gm)?;
@@ -284,12 +312,11 @@ pub struct World {
     pub shared: Vec<(String, PathBuf, String)>,
 }
 
-/// A module name `require` looks for as a file: letters, digits, `_` and `-` between dots.
+/// A module name `require` looks for as a file: letters (any alphabet's: `модуль`), digits,
+/// `_` and `-` between dots — never a path separator, `..`, a drive or a control character.
 fn module_name_ok(name: &str) -> bool {
     name.len() <= 200
-        && name
-            .split('.')
-            .all(|p| !p.is_empty() && p.chars().all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-'))
+        && name.split('.').all(|p| !p.is_empty() && p.chars().all(|c| c.is_alphanumeric() || c == '_' || c == '-'))
 }
 
 impl World {
@@ -304,7 +331,8 @@ impl World {
                     if !real.starts_with(dir) || !real.is_file() {
                         continue;
                     }
-                    if let Ok(code) = std::fs::read(&real) {
+                    // Never through a link: the module is the submission's own file.
+                    if let Ok(code) = crate::core::platform::read_no_follow(&file, 16 << 20) {
                         let sep = if shown.is_empty() || shown.ends_with(['/', '\\']) { "" } else { "/" };
                         return Some((code, format!("{shown}{sep}{cand}")));
                     }
@@ -334,6 +362,25 @@ impl World {
         };
         format!("module '{name}' not found: {own}; {shared}")
     }
+}
+
+/// A Lua file's text as a submission's or grader's chunk: UTF-16 (Notepad's "Unicode") read by
+/// the IL files' rule ([`crate::core::encoding`]) as UTF-8, any other bytes as they are (Lua's
+/// strings are bytes: a Windows-1251 file's strings stay as written), without a UTF-8
+/// byte-order mark or a `#!` line ([`super::file_chunk`]).
+pub fn lua_text(code: Vec<u8>) -> Result<Vec<u8>, String> {
+    use crate::core::encoding::{decode, Encoding};
+    let utf16 = code.starts_with(b"\xFF\xFE") || code.starts_with(b"\xFE\xFF") || code.contains(&0);
+    let code = if utf16 {
+        match decode(&code) {
+            Ok((text, Encoding::Utf16Le | Encoding::Utf16Be)) => text.into_bytes(),
+            Ok(_) => code,
+            Err(e) => return Err(e.replace("save the file as UTF-8", "save it as UTF-8")),
+        }
+    } else {
+        code
+    };
+    Ok(super::file_chunk(&code).to_vec())
 }
 
 /// `require` for a submission's environment `env` (see [`World`]).
@@ -371,8 +418,10 @@ fn submission_require(lua: &Lua, env: &Table, world: World) -> mlua::Result<mlua
                     .hint("a submission requires its own modules and those the lab shares"),
             ));
         };
+        let code = lua_text(code)
+            .map_err(|why| raise_at(lua, Error::usage(format!("error loading module '{name}' from {shown}: {why}"))))?;
         let f = lua
-            .load(super::file_chunk(&code))
+            .load(code)
             .set_name(format!("@{shown}"))
             .set_mode(mlua::chunk::ChunkMode::Text)
             .set_environment(env.clone())
@@ -402,30 +451,82 @@ pub fn submission_env(lua: &Lua, rules: Arc<Confinement>, world: World, stop: ml
     let io: Table = env.raw_get("io")?;
     wrap_io(lua, &io, rules)?;
     env.raw_set("require", submission_require(lua, &env, world)?)?;
-    // The lab's folder is not the submission's to know.
+    // The lab's folder is not the submission's to know: not in `plcsh.lib_dirs`, not in a
+    // traceback's frames.
+    let debug: Table = env.raw_get("debug")?;
+    let traceback: mlua::Function = debug.raw_get("traceback")?;
+    debug.raw_set(
+        "traceback",
+        lua.create_function(move |lua, args: MultiValue| match traceback.call::<Value>(args)? {
+            Value::String(t) => Ok(Value::String(lua.create_string(no_folders(&t.to_string_lossy()))?)),
+            other => Ok(other),
+        })?,
+    )?;
     let p: Table = env.raw_get("plcsh")?;
     p.raw_set("lib_dirs", lua.create_table()?)?;
     hold_limits(lua, &env, &stop)?;
-    let setmt: mlua::Function = lua
+    // A `__close` metamethod runs as the submission, and it cannot hide a limit: the error
+    // it is closed with goes to `stop` first (a "not enough memory" is the memory limit for
+    // good), whatever the handler then raises in its place — Lua 5.4 lets it replace the
+    // error. Set through `setmetatable`, assigned later to a metatable (the sandbox keeps a
+    // watch on each: a `__newindex` of its own) or `rawset`.
+    let (setmt, rawset): (mlua::Function, mlua::Function) = lua
         .load(
             r#"
-local setmetatable, error, rawget, type = ...
-return function(t, mt)
-  if type(mt) == "table" and rawget(mt, "__gc") ~= nil then
-    error("setmetatable: a __gc finalizer is not available in a graded run (finalizers run outside the instruction count)", 2)
+local setmetatable, getmetatable, error, rawget, rawset, type, stop = ...
+local watched = setmetatable({}, { __mode = "k" })
+local function guarded(f)
+  if type(f) ~= "function" then return f end
+  return function(o, e, ...)
+    if e ~= nil then
+      local v = stop(e)
+      if v then error(v, 0) end
+    end
+    return f(o, e, ...)
+  end
+end
+local watch = {
+  __newindex = function(t, k, v)
+    if k == "__close" then v = guarded(v) end
+    rawset(t, k, v)
+  end,
+  __metatable = false,
+}
+local function setmt(t, mt)
+  if type(mt) == "table" then
+    if rawget(mt, "__gc") ~= nil then
+      error("setmetatable: a __gc finalizer is not available in a graded run (finalizers run outside the instruction count)", 2)
+    end
+    if not watched[mt] then
+      local c = rawget(mt, "__close")
+      if c ~= nil then rawset(mt, "__close", guarded(c)) end
+      -- A metatable with a metatable of its own (inheritance: `{__index = Base}`) keeps it;
+      -- its `__close` is guarded now and through `rawset`.
+      if getmetatable(mt) == nil then setmetatable(mt, watch) end
+      watched[mt] = true
+    end
   end
   return setmetatable(t, mt)
 end
+local function rawset_(t, k, v)
+  if k == "__close" and watched[t] then v = guarded(v) end
+  return rawset(t, k, v)
+end
+return setmt, rawset_
 "#,
         )
         .set_name("=sandbox")
         .call((
             env.raw_get::<Value>("setmetatable")?,
+            lua.globals().raw_get::<Value>("getmetatable")?,
             env.raw_get::<Value>("error")?,
             env.raw_get::<Value>("rawget")?,
+            env.raw_get::<Value>("rawset")?,
             env.raw_get::<Value>("type")?,
+            stop,
         ))?;
     env.raw_set("setmetatable", setmt)?;
+    env.raw_set("rawset", rawset)?;
     Ok(env)
 }
 
@@ -618,5 +719,223 @@ return safe, print_, format_
     g.set("tostring", tostring)?;
     g.set("print", print)?;
     string.set("format", format)?;
+    // plcsh.show (and print of a table, which shows it) took Lua's own `tostring` when the
+    // prelude loaded: what it writes loses its addresses here.
+    let p: Table = g.get("plcsh")?;
+    let show: mlua::Function = lua
+        .load(
+            r##"
+local show, gsub, ipairs = ...
+local names = { "table", "function", "thread", "userdata" }
+return function(...)
+  local s = show(...)
+  for _, n in ipairs(names) do
+    s = gsub(s, n .. ": builtin: 0x%x+", n)
+    s = gsub(s, n .. ": builtin: %x%x%x%x%x%x%x%x+", n)
+    s = gsub(s, n .. ": 0x%x+", n)
+    s = gsub(s, n .. ": %x%x%x%x%x%x%x%x+", n)
+  end
+  return s
+end
+"##,
+        )
+        .set_name("=sandbox")
+        .call((p.get::<Value>("show")?, string.get::<Value>("gsub")?, g.get::<Value>("ipairs")?))?;
+    p.set("show", show.clone())?;
+    let print_tables: mlua::Function = lua
+        .load(
+            r##"
+local print, show, type, select, getmetatable, rawget, unpack, out, pcall = ...
+return function(...)
+  -- What io.write left in the C library's buffer goes out first: output stays in order.
+  pcall(out.flush, out)
+  local a, n = { ... }, select("#", ...)
+  for i = 1, n do
+    local mt = type(a[i]) == "table" and getmetatable(a[i])
+    if type(a[i]) == "table" and not (type(mt) == "table" and rawget(mt, "__tostring")) then a[i] = show(a[i]) end
+  end
+  return print(unpack(a, 1, n))
+end
+"##,
+        )
+        .set_name("=sandbox")
+        .call((
+            g.get::<Value>("print")?,
+            show,
+            g.get::<Value>("type")?,
+            g.get::<Value>("select")?,
+            g.get::<Value>("getmetatable")?,
+            g.get::<Value>("rawget")?,
+            g.get::<Table>("table")?.get::<Value>("unpack")?,
+            g.get::<Table>("io")?.get::<Value>("stdout")?,
+            g.get::<Value>("pcall")?,
+        ))?;
+    g.set("print", print_tables)?;
+    // One locale: the C library's "C" (a decimal point, not a comma). Asking for another
+    // fails as stock Lua's does on a system without it (nil), so `tostring(0.5)` reads
+    // `0.5` on every machine whatever the teacher's locale.
+    os.set(
+        "setlocale",
+        lua.create_function(|lua, (loc, _cat): (Option<mlua::LuaString>, Option<String>)| {
+            Ok(match loc {
+                None => Some(lua.create_string("C")?),
+                Some(l) if matches!(&*l.as_bytes(), b"C" | b"POSIX" | b"") => Some(lua.create_string("C")?),
+                Some(_) => None,
+            })
+        })?,
+    )?;
+    charge_for_bytes(lua, &clock, &budget)?;
     Ok(())
+}
+
+/// Bytes a C function of Lua's may produce for one counted instruction: copying memory costs
+/// about this much per byte as one instruction of the interpreter, so work done inside
+/// `string.rep` or `table.concat` counts like the loop that would make it.
+pub const BYTES_PER_INSTRUCTION: usize = 16;
+
+/// The string functions that make large results (`string.rep`, `string.format`,
+/// `string.gsub`, `table.concat`, `string.upper`, `string.lower`, `string.reverse`) charge the
+/// instruction budget by the bytes they produce, so a run's verdict does not depend on the
+/// machine's speed; `string.rep` is refused before it allocates past the memory limit (a
+/// `<close>` handler cannot then turn the memory limit into a plain error). Concatenation
+/// with `..` is the interpreter's own and counts one instruction.
+fn charge_for_bytes(
+    lua: &Lua,
+    clock: &crate::core::Clock,
+    budget: &Arc<crate::core::budget::Budget>,
+) -> mlua::Result<()> {
+    use crate::core::ErrorKind;
+    let charge = {
+        let (clock, budget) = (clock.clone(), budget.clone());
+        move |bytes: usize| -> mlua::Result<()> {
+            let n = (bytes / BYTES_PER_INSTRUCTION) as u64;
+            if n == 0 {
+                return Ok(());
+            }
+            match budget.tick(n, &clock) {
+                Some(v) => Err(super::error::raise(Error::new(ErrorKind::Interrupted, v))),
+                None => Ok(()),
+            }
+        }
+    };
+    let size = |v: &MultiValue| -> usize {
+        v.iter().map(|x| if let Value::String(s) = x { s.as_bytes().len() } else { 0 }).sum()
+    };
+    let g = lua.globals();
+    for (lib, name) in [
+        ("string", "format"),
+        ("string", "gsub"),
+        ("string", "upper"),
+        ("string", "lower"),
+        ("string", "reverse"),
+        ("table", "concat"),
+    ] {
+        let t: Table = g.get(lib)?;
+        let raw: mlua::Function = t.get(name)?;
+        let charge = charge.clone();
+        let b = budget.clone();
+        t.set(
+            name,
+            lua.create_function(move |lua, args: MultiValue| {
+                // table.concat's result is its items' bytes (and the separators'): refused
+                // before it would allocate past the memory limit, as string.rep is.
+                if name == "concat" {
+                    if let (Some(Value::Table(items)), Some(limit)) = (args.front(), b.memory) {
+                        let sep = match args.get(1) {
+                            Some(Value::String(s)) => s.as_bytes().len(),
+                            _ => 0,
+                        };
+                        let mut bytes = 0usize;
+                        for v in items.clone().sequence_values::<Value>().flatten() {
+                            bytes = bytes.saturating_add(match v {
+                                Value::String(s) => s.as_bytes().len() + sep,
+                                _ => 24 + sep,
+                            });
+                        }
+                        if bytes > limit.saturating_sub(lua.used_memory()) {
+                            b.exceed_memory();
+                            let v = b.exceeded().unwrap_or_default();
+                            return Err(super::error::raise(Error::new(ErrorKind::Interrupted, v)));
+                        }
+                    }
+                }
+                let r = raw.call::<MultiValue>(args)?;
+                charge(size(&r))?;
+                Ok(r)
+            })?,
+        )?;
+    }
+    let string: Table = g.get("string")?;
+    let raw_rep: mlua::Function = string.get("rep")?;
+    let b = budget.clone();
+    string.set(
+        "rep",
+        lua.create_function(move |lua, args: MultiValue| {
+            let len = |i: usize| match args.get(i) {
+                Some(Value::String(s)) => s.as_bytes().len() as f64,
+                Some(Value::Integer(n)) => n.to_string().len() as f64,
+                Some(Value::Number(n)) => format!("{n}").len() as f64,
+                _ => 0.0,
+            };
+            let n = match args.get(1) {
+                Some(Value::Integer(n)) => *n as f64,
+                Some(Value::Number(n)) => *n,
+                _ => 0.0,
+            };
+            if n > 0.0 {
+                let bytes = len(0) * n + len(2) * (n - 1.0);
+                if let Some(limit) = b.memory {
+                    if bytes > limit.saturating_sub(lua.used_memory()) as f64 {
+                        b.exceed_memory();
+                        let v = b.exceeded().unwrap_or_default();
+                        return Err(super::error::raise(Error::new(ErrorKind::Interrupted, v)));
+                    }
+                }
+            }
+            let r = raw_rep.call::<MultiValue>(args)?;
+            charge(size(&r))?;
+            Ok(r)
+        })?,
+    )?;
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn module_names_take_any_alphabet_and_never_a_path() {
+        for ok in ["mine", "pkg.util", "модуль", "модуль.часть", "a-b_c2"] {
+            assert!(module_name_ok(ok), "{ok}");
+        }
+        for bad in ["../lab/reference", "a/b", "a\\b", "..", "a..b", "", "C:x", "a\u{0}b", "x y"] {
+            assert!(!module_name_ok(bad), "{bad:?}");
+        }
+    }
+
+    #[test]
+    fn utf16_lua_text_loads_as_utf8_and_a_cut_one_is_refused() {
+        let mut le = vec![0xFF, 0xFE];
+        le.extend("x = \"Привет\"\n".encode_utf16().flat_map(|u| u.to_le_bytes()));
+        assert_eq!(lua_text(le).unwrap(), "x = \"Привет\"\n".as_bytes());
+        let mut cut = vec![0xFE, 0xFF];
+        cut.extend("x = 1\n".encode_utf16().flat_map(|u| u.to_be_bytes()));
+        cut.push(0);
+        assert!(lua_text(cut).unwrap_err().contains("save it as UTF-8"));
+        // Windows-1251 bytes stay as written (Lua's strings are bytes).
+        let cp = b"s = \"\xcf\xf0\xe8\xe2\xe5\xf2\"\n".to_vec();
+        assert_eq!(lua_text(cp.clone()).unwrap(), cp);
+    }
+
+    #[test]
+    fn a_traceback_shows_no_absolute_folder() {
+        let t = "here\nstack traceback:\n\t[C]: in ?\n\tsubs/a.lua:2: in main chunk\n\t/home/t/labs/l1/grade.lua:5: in main chunk\n\t...abs/l1/grade.lua:5: in x\n\tC:\\Users\\t\\g.lua:1: in y";
+        let s = no_folders(t);
+        assert!(
+            s.contains("subs/a.lua:2") && !s.contains("/home/") && !s.contains("Users") && !s.contains("...abs"),
+            "{s}"
+        );
+        assert_eq!(s.matches("(a frame of the lab's)").count(), 3, "{s}");
+    }
 }

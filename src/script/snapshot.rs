@@ -24,7 +24,9 @@ pub fn register(lua: &Lua, p: &Table) -> mlua::Result<()> {
         "snapshot_restore",
         lua.create_function(|lua, name: String| {
             with_shell(lua, |sh| {
-                let snap = Snapshot::load(&sh.session.snapshot_file(&name, false)?)?;
+                let file = sh.session.snapshot_file(&name, false)?;
+                sh.session.check_bench("sim snapshot")?;
+                let snap = Snapshot::load(&file)?;
                 snap.restore(&mut sh.session)?;
                 Ok(snap.clock_us as f64 / 1e6)
             })

@@ -8,17 +8,28 @@ pub fn register(lua: &Lua, p: &Table) -> mlua::Result<()> {
     p.set(
         "wire",
         lua.create_function(|lua, text: String| {
-            with_shell(lua, |sh| crate::wiring::setup::wire(&mut sh.session, &text))
+            with_shell(lua, |sh| {
+                sh.session.check_bench("sim wire")?;
+                crate::wiring::setup::wire(&mut sh.session, &text)
+            })
         })?,
     )?;
     p.set(
         "wires",
-        lua.create_function(|lua, ()| with_shell(lua, |sh| Ok(crate::wiring::setup::list(&mut sh.session))))?,
+        lua.create_function(|lua, ()| {
+            with_shell(lua, |sh| {
+                sh.session.check_bench("sim wires")?;
+                Ok(crate::wiring::setup::list(&mut sh.session))
+            })
+        })?,
     )?;
     p.set(
         "unwire",
         lua.create_function(|lua, text: String| {
-            with_shell(lua, |sh| crate::wiring::setup::unwire(&mut sh.session, &text))
+            with_shell(lua, |sh| {
+                sh.session.check_bench("sim unwire")?;
+                crate::wiring::setup::unwire(&mut sh.session, &text)
+            })
         })?,
     )?;
     Ok(())

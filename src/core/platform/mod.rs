@@ -19,7 +19,8 @@ use windows as sys;
 
 pub use sys::{
     create_private_dir, discard_typed_ahead, durable_rename, install_stop_handlers, interrupt_child, keep_c_shims,
-    name_file, stop_signal, terminal_size, terminate_child, thread_cpu_time, ui_language, unnamed_file, utc_offset,
+    name_file, open_no_follow, stop_signal, terminal_size, terminate_child, thread_cpu_time, ui_language, unnamed_file,
+    utc_offset,
 };
 
 /// The language tag of a Windows LANGID (`GetUserDefaultUILanguage`): its primary language
@@ -48,6 +49,24 @@ mod language_tests {
         assert_eq!(super::langid_tag(0x0C04), "zh-TW");
         assert_eq!(super::langid_tag(0x0407), "und");
     }
+}
+
+/// The bytes of `path`, read without following a symbolic link in its last component
+/// ([`open_no_follow`]), at most `cap` bytes (a longer file is refused, never read whole).
+pub fn read_no_follow(path: &std::path::Path, cap: u64) -> std::io::Result<Vec<u8>> {
+    use std::io::Read;
+    let f = open_no_follow(path)?;
+    let mut out = Vec::new();
+    f.take(cap.saturating_add(1)).read_to_end(&mut out)?;
+    if out.len() as u64 > cap {
+        return Err(std::io::Error::other(format!("longer than {cap} bytes")));
+    }
+    Ok(out)
+}
+
+/// Whether `path` itself is a symbolic link (on Windows a junction too).
+pub fn is_link(path: &std::path::Path) -> bool {
+    std::fs::symlink_metadata(path).is_ok_and(|m| m.file_type().is_symlink())
 }
 
 /// A standard stream that output with escape codes may go to.

@@ -41,6 +41,19 @@ pub fn create_private_dir(path: &std::path::Path) -> std::io::Result<()> {
     std::fs::DirBuilder::new().mode(0o700).create(path)
 }
 
+/// Opens `path` for reading, refusing a symbolic link in its last component (`O_NOFOLLOW`:
+/// the call fails with `ELOOP`, reported as "a symbolic link").
+pub fn open_no_follow(path: &std::path::Path) -> std::io::Result<std::fs::File> {
+    use std::os::unix::fs::OpenOptionsExt;
+    std::fs::OpenOptions::new().read(true).custom_flags(libc::O_NOFOLLOW).open(path).map_err(|e| {
+        if e.raw_os_error() == Some(libc::ELOOP) {
+            std::io::Error::other("a symbolic link")
+        } else {
+            e
+        }
+    })
+}
+
 /// A Unix terminal takes escape codes ([`super::escapes`] asks whether it is one).
 pub fn console_escapes(_stream: super::Stream) -> bool {
     true

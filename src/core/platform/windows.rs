@@ -92,6 +92,19 @@ pub fn create_private_dir(path: &std::path::Path) -> std::io::Result<()> {
     std::fs::create_dir(path)
 }
 
+/// Opens `path` for reading without following a reparse point in its last component
+/// (`FILE_FLAG_OPEN_REPARSE_POINT`): a symbolic link or a junction opens as itself and is
+/// refused as "a symbolic link".
+pub fn open_no_follow(path: &std::path::Path) -> std::io::Result<std::fs::File> {
+    use std::os::windows::fs::OpenOptionsExt;
+    const FILE_FLAG_OPEN_REPARSE_POINT: u32 = 0x0020_0000;
+    let f = std::fs::OpenOptions::new().read(true).custom_flags(FILE_FLAG_OPEN_REPARSE_POINT).open(path)?;
+    if f.metadata()?.file_type().is_symlink() {
+        return Err(std::io::Error::other("a symbolic link"));
+    }
+    Ok(f)
+}
+
 /// Turns on virtual-terminal processing for standard output and error where they are
 /// consoles, once per process. `PLCSH_CONSOLE_VT=off` acts as if the console refused.
 pub fn enable_escapes() {

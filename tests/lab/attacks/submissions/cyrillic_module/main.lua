@@ -1,0 +1,3 @@
+-- A module with a Cyrillic name beside main.lua.
+local m = require("модуль")
+m.run()

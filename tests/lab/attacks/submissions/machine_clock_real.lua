@@ -1,0 +1,8 @@
+-- Puts the rest of the run on the wall clock.
+plcsh.exec("sim clock real")
+local plc, servo = plcsh.device("plc"), plcsh.device("servo")
+servo.controlword = 6
+servo.controlword = 7
+servo.controlword = 15
+plc.VW0 = 1234
+plc["Q0.0"] = true

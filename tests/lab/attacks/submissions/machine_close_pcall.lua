@@ -1,0 +1,8 @@
+-- Tries to close a lab device, then does the task: the refusal is caught, the task is done.
+pcall(plcsh.exec, "close servo")
+local plc, servo = plcsh.device("plc"), plcsh.device("servo")
+servo.controlword = 6
+servo.controlword = 7
+servo.controlword = 15
+plc.VW0 = 1234
+plc["Q0.0"] = true
