@@ -365,6 +365,7 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             [CompletionResult]::new('--bench', '--bench', [CompletionResultType]::ParameterName, 'Open a simulated machine described by a bench file (devices, wiring, initial values)')
             [CompletionResult]::new('-j', '-j', [CompletionResultType]::ParameterName, 'With --fleet: how many devices are worked on at once')
             [CompletionResult]::new('--jobs', '--jobs', [CompletionResultType]::ParameterName, 'With --fleet: how many devices are worked on at once')
+            [CompletionResult]::new('--lang', '--lang', [CompletionResultType]::ParameterName, 'The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system''s; English when neither names one of these)')
             [CompletionResult]::new('--device-timeout', '--device-timeout', [CompletionResultType]::ParameterName, 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'Print one JSON object per command result')
             [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
@@ -402,6 +403,7 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             [CompletionResult]::new('--bench', '--bench', [CompletionResultType]::ParameterName, 'Open a simulated machine described by a bench file (devices, wiring, initial values)')
             [CompletionResult]::new('-j', '-j', [CompletionResultType]::ParameterName, 'With --fleet: how many devices are worked on at once')
             [CompletionResult]::new('--jobs', '--jobs', [CompletionResultType]::ParameterName, 'With --fleet: how many devices are worked on at once')
+            [CompletionResult]::new('--lang', '--lang', [CompletionResultType]::ParameterName, 'The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system''s; English when neither names one of these)')
             [CompletionResult]::new('--device-timeout', '--device-timeout', [CompletionResultType]::ParameterName, 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)')
             [CompletionResult]::new('--scan-serial', '--scan-serial', [CompletionResultType]::ParameterName, 'On a serial line that does not answer, try the common settings (9600…115200 baud, no, even or odd parity) and say which one answered')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'Print one JSON object per command result')
@@ -608,6 +610,7 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
         }
         'plcsh;lab;worker' {
             [CompletionResult]::new('--report', '--report', [CompletionResultType]::ParameterName, 'report')
+            [CompletionResult]::new('--write-dir', '--write-dir', [CompletionResultType]::ParameterName, 'The submission''s write directory, made private by the parent (which removes it)')
             [CompletionResult]::new('--model', '--model', [CompletionResultType]::ParameterName, 'Model of the default simulated PLC')
             [CompletionResult]::new('-d', '-d', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
             [CompletionResult]::new('--device', '--device', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')

@@ -218,7 +218,7 @@ _plcsh() {
 
     case "${cmd}" in
         plcsh)
-            opts="-c -v -d -f -j -h -V --command --json --verbose --model --device --time --config --state --record --bench --read-only --fleet --jobs --device-timeout --help --version models devices ports paths man completions sim agent probe run record replay lab publish help"
+            opts="-c -v -d -f -j -h -V --command --json --verbose --model --device --time --config --state --record --bench --read-only --fleet --jobs --lang --device-timeout --help --version models devices ports paths man completions sim agent probe run record replay lab publish help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -280,6 +280,10 @@ _plcsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --lang)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 --device-timeout)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
@@ -292,7 +296,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__agent)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help il check help"
+            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help il check help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -338,6 +342,10 @@ _plcsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --lang)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 --device-timeout)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
@@ -350,7 +358,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__agent__subcmd__check)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help"
+            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -393,6 +401,10 @@ _plcsh() {
                     return 0
                     ;;
                 -j)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --lang)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -464,7 +476,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__agent__subcmd__il)
-            opts="-v -d -j -h --base --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help"
+            opts="-v -d -j -h --base --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -514,6 +526,10 @@ _plcsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --lang)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 --device-timeout)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
@@ -526,7 +542,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__completions)
-            opts="-v -d -j -h --write --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help bash elvish fish powershell zsh"
+            opts="-v -d -j -h --write --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help bash elvish fish powershell zsh"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -576,6 +592,10 @@ _plcsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --lang)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 --device-timeout)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
@@ -588,7 +608,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__devices)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help"
+            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -631,6 +651,10 @@ _plcsh() {
                     return 0
                     ;;
                 -j)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --lang)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -996,7 +1020,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__lab)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help new check grade worker help"
+            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help new check grade worker help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1042,6 +1066,10 @@ _plcsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --lang)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 --device-timeout)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
@@ -1054,7 +1082,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__lab__subcmd__check)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help"
+            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1100,6 +1128,10 @@ _plcsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --lang)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 --device-timeout)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
@@ -1112,7 +1144,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__lab__subcmd__grade)
-            opts="-v -d -h --jobs --junit --show-output --json --verbose --model --device --time --config --state --record --bench --read-only --device-timeout --help"
+            opts="-v -d -h --jobs --junit --show-output --json --verbose --model --device --time --config --state --record --bench --read-only --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1155,6 +1187,10 @@ _plcsh() {
                     return 0
                     ;;
                 --bench)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --lang)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1254,7 +1290,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__lab__subcmd__new)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help"
+            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1297,6 +1333,10 @@ _plcsh() {
                     return 0
                     ;;
                 -j)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --lang)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1312,13 +1352,17 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__lab__subcmd__worker)
-            opts="-v -d -j -h --report --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help"
+            opts="-v -d -j -h --report --write-dir --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
             fi
             case "${prev}" in
                 --report)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --write-dir)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1359,6 +1403,10 @@ _plcsh() {
                     return 0
                     ;;
                 -j)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --lang)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1374,7 +1422,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__man)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help"
+            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1417,6 +1465,10 @@ _plcsh() {
                     return 0
                     ;;
                 -j)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --lang)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1432,7 +1484,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__models)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help"
+            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1475,6 +1527,10 @@ _plcsh() {
                     return 0
                     ;;
                 -j)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --lang)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1490,7 +1546,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__paths)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help"
+            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1533,6 +1589,10 @@ _plcsh() {
                     return 0
                     ;;
                 -j)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --lang)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1548,7 +1608,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__ports)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help"
+            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1594,6 +1654,10 @@ _plcsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --lang)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 --device-timeout)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
@@ -1606,7 +1670,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__probe)
-            opts="-v -d -j -h --report --reads --scan-serial --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help"
+            opts="-v -d -j -h --report --reads --scan-serial --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1660,6 +1724,10 @@ _plcsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --lang)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 --device-timeout)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
@@ -1672,7 +1740,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__publish)
-            opts="-f -v -d -j -h --broker --fleet --every --qos --on-change --deadband --buffer --mqtt-version --count --client-id --accept-writes --shard --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help"
+            opts="-f -v -d -j -h --broker --fleet --every --qos --on-change --deadband --buffer --mqtt-version --count --client-id --accept-writes --shard --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1762,6 +1830,10 @@ _plcsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --lang)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 --device-timeout)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
@@ -1774,7 +1846,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__record)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help show help"
+            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help show help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1817,6 +1889,10 @@ _plcsh() {
                     return 0
                     ;;
                 -j)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --lang)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1874,7 +1950,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__record__subcmd__show)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help"
+            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1920,6 +1996,10 @@ _plcsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --lang)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 --device-timeout)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
@@ -1932,7 +2012,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__replay)
-            opts="-v -d -j -h --sim-model --snapshot --agent --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help"
+            opts="-v -d -j -h --sim-model --snapshot --agent --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1990,6 +2070,10 @@ _plcsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --lang)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 --device-timeout)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
@@ -2002,7 +2086,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__run)
-            opts="-f -v -d -j -h --sandbox --write-dir --fleet --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help"
+            opts="-f -v -d -j -h --sandbox --write-dir --fleet --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2060,6 +2144,10 @@ _plcsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --lang)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 --device-timeout)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
@@ -2072,7 +2160,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__sim)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help serve control help"
+            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help serve control help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2118,6 +2206,10 @@ _plcsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --lang)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 --device-timeout)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
@@ -2130,7 +2222,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__sim__subcmd__control)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help"
+            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2173,6 +2265,10 @@ _plcsh() {
                     return 0
                     ;;
                 -j)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --lang)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -2244,7 +2340,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__sim__subcmd__serve)
-            opts="-v -d -j -h --tcp --rtu-pty --rtu-tcp --unit --agent --program --servo-pty --servo-tcp --servo-control --servo-id --servo-loop --servo-baud --servo-latency --servo-instant --servo-strict --fx-pty --fx-tcp --fx-link-pty --fx-link-tcp --fx-model --fx-station --fx-program --umpk-pty --umpk-tcp --umpk-model --umpk-status-bits --umpk-flash-fail --umpk-state --umpk-program --fx-control --umpk-control --k2-control --fault --max-connections --idle-timeout --strict-unit --fleet --rfc2217 --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help"
+            opts="-v -d -j -h --tcp --rtu-pty --rtu-tcp --unit --agent --program --servo-pty --servo-tcp --servo-control --servo-id --servo-loop --servo-baud --servo-latency --servo-instant --servo-strict --fx-pty --fx-tcp --fx-link-pty --fx-link-tcp --fx-model --fx-station --fx-program --umpk-pty --umpk-tcp --umpk-model --umpk-status-bits --umpk-flash-fail --umpk-state --umpk-program --fx-control --umpk-control --k2-control --fault --max-connections --idle-timeout --strict-unit --fleet --rfc2217 --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2419,6 +2515,10 @@ _plcsh() {
                     return 0
                     ;;
                 -j)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --lang)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;

@@ -1,6 +1,6 @@
 # Print an optspec for argparse to handle cmd's options that are independent of any subcommand.
 function __fish_plcsh_global_optspecs
-    string join \n c/command= json v/verbose model= d/device= time= config= state= record= bench= read-only f/fleet= j/jobs= device-timeout= h/help V/version
+    string join \n c/command= json v/verbose model= d/device= time= config= state= record= bench= read-only f/fleet= j/jobs= lang= device-timeout= h/help V/version
 end
 
 function __fish_plcsh_needs_command
@@ -35,6 +35,7 @@ complete -c plcsh -n "__fish_plcsh_needs_command" -l record -d 'Record every fra
 complete -c plcsh -n "__fish_plcsh_needs_command" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_needs_command" -s f -l fleet -d 'Run -c\'s commands (or `run`\'s script) on every device of this fleet from the profile file, at once (docs/fleets.md)' -r
 complete -c plcsh -n "__fish_plcsh_needs_command" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_needs_command" -l lang -d 'The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system\'s; English when neither names one of these)' -r
 complete -c plcsh -n "__fish_plcsh_needs_command" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_needs_command" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_needs_command" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
@@ -65,6 +66,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l state -d 'Simulat
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l lang -d 'The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system\'s; English when neither names one of these)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
@@ -79,6 +81,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l state -d 'Simula
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l lang -d 'The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system\'s; English when neither names one of these)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
@@ -93,6 +96,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l state -d 'Simulato
 complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l lang -d 'The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system\'s; English when neither names one of these)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
@@ -107,6 +111,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -l state -d 'Simulato
 complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -l lang -d 'The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system\'s; English when neither names one of these)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
@@ -121,6 +126,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand man" -l state -d 'Simulator 
 complete -c plcsh -n "__fish_plcsh_using_subcommand man" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand man" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand man" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand man" -l lang -d 'The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system\'s; English when neither names one of these)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand man" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand man" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand man" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
@@ -136,6 +142,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l state -d 'Si
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l lang -d 'The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system\'s; English when neither names one of these)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
@@ -150,6 +157,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_sub
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve control help" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve control help" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve control help" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve control help" -l lang -d 'The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system\'s; English when neither names one of these)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve control help" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve control help" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve control help" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
@@ -200,6 +208,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l lang -d 'The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system\'s; English when neither names one of these)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l servo-loop -d 'RS232 loop mode: echo every request before the reply (connect with echo=1)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l servo-instant -d 'Answer at once instead of at line speed (benchmarks, CI)'
@@ -219,6 +228,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from control" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from control" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from control" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from control" -l lang -d 'The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system\'s; English when neither names one of these)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from control" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from control" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from control" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
@@ -236,6 +246,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_s
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il check help" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il check help" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il check help" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il check help" -l lang -d 'The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system\'s; English when neither names one of these)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il check help" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il check help" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il check help" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
@@ -254,6 +265,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subco
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l lang -d 'The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system\'s; English when neither names one of these)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
@@ -268,6 +280,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subco
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from check" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from check" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from check" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from check" -l lang -d 'The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system\'s; English when neither names one of these)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from check" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from check" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from check" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
@@ -287,6 +300,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand probe" -l state -d 'Simulato
 complete -c plcsh -n "__fish_plcsh_using_subcommand probe" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand probe" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand probe" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand probe" -l lang -d 'The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system\'s; English when neither names one of these)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand probe" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand probe" -l scan-serial -d 'On a serial line that does not answer, try the common settings (9600…115200 baud, no, even or odd parity) and say which one answered'
 complete -c plcsh -n "__fish_plcsh_using_subcommand probe" -l json -d 'Print one JSON object per command result'
@@ -304,6 +318,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l state -d 'Simulator 
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l lang -d 'The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system\'s; English when neither names one of these)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l sandbox -d 'Run a script someone else wrote: no os.execute, io.popen, os.remove/rename/exit, C libraries or debug library; files written only under --write-dir'
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l json -d 'Print one JSON object per command result'
@@ -319,6 +334,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -l lang -d 'The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system\'s; English when neither names one of these)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
@@ -335,6 +351,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subc
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -l lang -d 'The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system\'s; English when neither names one of these)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
@@ -354,6 +371,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l state -d 'Simulat
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l lang -d 'The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system\'s; English when neither names one of these)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
@@ -368,6 +386,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_sub
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade worker help" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade worker help" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade worker help" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade worker help" -l lang -d 'The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system\'s; English when neither names one of these)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade worker help" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade worker help" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade worker help" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
@@ -387,6 +406,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from new" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from new" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from new" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from new" -l lang -d 'The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system\'s; English when neither names one of these)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from new" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from new" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from new" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
@@ -401,6 +421,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from check" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from check" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from check" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from check" -l lang -d 'The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system\'s; English when neither names one of these)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from check" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from check" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from check" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
@@ -416,6 +437,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -l state -d 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user\'s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -l lang -d 'The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system\'s; English when neither names one of these)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -l show-output -d 'Show what each submission printed (stdout and stderr, the first 64 KiB of each); `--json` always carries them as `stdout` and `stderr`'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -l json -d 'Print one JSON object per command result'
@@ -423,6 +445,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -l read-only -d 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from worker" -l report -r -F
+complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from worker" -l write-dir -d 'The submission\'s write directory, made private by the parent (which removes it)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from worker" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from worker" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from worker" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
@@ -432,6 +455,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from worker" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from worker" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from worker" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from worker" -l lang -d 'The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system\'s; English when neither names one of these)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from worker" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from worker" -l json -d 'Print one JSON object per command result'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from worker" -s v -l verbose -d 'Show more: each frame sent and received in hex with timing, request counts, sample rates'
@@ -462,6 +486,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l state -d 'Simula
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l record -d 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l bench -d 'Open a simulated machine described by a bench file (devices, wiring, initial values)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -s j -l jobs -d 'With --fleet: how many devices are worked on at once' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l lang -d 'The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system\'s; English when neither names one of these)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l device-timeout -d 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l on-change -d 'Publish a value only when it changed (by more than --deadband); otherwise every poll'
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l accept-writes -d 'Take writes from the broker on plcsh/GROUP/DEVICE/set, only to operands on the device profile\'s allow list (replies on plcsh/GROUP/DEVICE/reply); read-only profiles never accept one'
