@@ -580,7 +580,7 @@ pub fn locate(name: &str) -> Result<PathBuf> {
         return Ok(PathBuf::from(name));
     }
     if name.is_empty() || !name.chars().all(|c| c.is_ascii_alphanumeric() || "_-.".contains(c)) {
-        return Err(Error::usage(format!("`{name}` is not a snapshot name (letters, digits, _ - .)"))
+        return Err(Error::usage(format!("`{name}` is not a snapshot name (Latin letters A-Z a-z, digits, _ - .)"))
             .hint("or give a file path ending in .json"));
     }
     let d =

@@ -193,7 +193,12 @@ fn monitor_stream_rate_and_any_command_stops_it() {
     assert_eq!(decoded, packets);
     // Any command stops it: after `?03FD` only whole packets already sent, then the reply.
     t.send(b"?03FD");
-    let all = [got, t.quiet(100)].concat();
+    // Waits for the reply itself (a loaded machine may deliver the packets sent before it
+    // slowly), never for a pause in the stream.
+    let reply = b"#06102910080401A4";
+    let after = t.read_until(Duration::from_secs(20), |g| g.ends_with(reply));
+    let all = [got, after].concat();
+    assert!(all.ends_with(reply), "no reply to ?03FD: {:02X?}", &all[all.len().saturating_sub(64)..]);
     let pos = all.len() - 17;
     assert_eq!(&all[pos..], b"#06102910080401A4", "monitor off again, echo off");
     assert_eq!(pos % MONITOR_LEN, 0, "whole packets before the reply");

@@ -393,14 +393,36 @@ pub fn check(c: &CommandSpec, args: Args) -> Result<()> {
         (words.len() > n && t.after.iter().zip(&words).all(|(a, w)| a.eq_ignore_ascii_case(w))).then_some(n)
     });
     if let Some(n) = text_from.filter(|&n| n < end) {
-        let path = words[n..].join(" ");
         let head: Vec<&str> = std::iter::once(c.name).chain(words[..n].iter().copied()).collect();
+        // A path typed in quotes is already one word: the word after it is the extra one
+        // (never folded into the file name).
+        let hint = if words[n..end].iter().any(|w| w.contains(['"', '\''])) {
+            format!("nothing goes after the {}; `{help}` shows every form", if end - n == 1 { "file" } else { "files" })
+        } else {
+            let path = words[n..].join(" ");
+            format!("a path or name with spaces goes in quotes: {} {}", head.join(" "), lex::quote(&path))
+        };
         return Err(Error::usage(format!(
             "unexpected `{extra}` after `{}`: the form is {}",
             typed.join(" "),
             forms.join(" | ")
         ))
-        .hint(format!("a path or name with spaces goes in quotes: {} {}", head.join(" "), lex::quote(&path)))
+        .hint(hint)
+        .column(col));
+    }
+    // A number and its unit typed apart (`sim step 1 s`): the one word it should be.
+    let unit = !extra.is_empty() && extra.chars().all(|ch| ch.is_ascii_alphabetic()) && extra.len() <= 4;
+    if let Some(num) = end.checked_sub(1).map(|i| words[i]).filter(|w| unit && w.parse::<f64>().is_ok()) {
+        let fixed: Vec<String> = std::iter::once(c.name.to_string())
+            .chain(words[..end - 1].iter().map(|w| w.to_string()))
+            .chain(std::iter::once(format!("{num}{extra}")))
+            .collect();
+        return Err(Error::usage(format!(
+            "unexpected `{extra}` after `{}`: the form is {}",
+            typed.join(" "),
+            forms.join(" | ")
+        ))
+        .hint(format!("a number and its unit are one word: {}", fixed.join(" ")))
         .column(col));
     }
     let message = if forms == [c.name] {
