@@ -291,7 +291,7 @@ mod tests {
             let _ = words(&line);
             let _ = unquote(&line);
             let _ = quote(&line);
-            assert!(t.elapsed() < std::time::Duration::from_secs(2), "{unit:?}: {:?}", t.elapsed());
+            assert!(t.elapsed() < std::time::Duration::from_secs(10), "{unit:?}: {:?}", t.elapsed());
         }
     }
 }

@@ -579,7 +579,7 @@ mod tests {
             let line = format!("{cmd} {}", "VW0 ".repeat(100_000));
             let t = std::time::Instant::now();
             let _ = line_check(line.trim());
-            assert!(t.elapsed() < std::time::Duration::from_secs(2), "{cmd}: {:?}", t.elapsed());
+            assert!(t.elapsed() < std::time::Duration::from_secs(10), "{cmd}: {:?}", t.elapsed());
         }
     }
 
