@@ -92,3 +92,17 @@ fn a_tcp_served_line_has_one_client_at_a_time() {
     let o = run(&["--json", "-d", &url, "-c", "get axis:statusword"], "");
     assert_eq!(json_lines(&o)[0]["values"][0]["value"], 0x4231, "the line is free again: {}", both(&o));
 }
+
+/// docs/reference/first-connection.md and docs/safety.md say what the prompt shows for a real
+/// device opened by a profile's name: its name alone, `press1>` (a simulator's says `(sim)`).
+#[test]
+fn the_prompt_of_a_real_device_is_as_the_first_connection_page_says() {
+    let served = serve(&["--tcp", "0", "--state", "none"]);
+    let mut s = plcsh::session::Session::new(plcsh::core::Clock::following());
+    s.open("press1", &format!("tcp://{}?model=K205-16DT", served.ready["tcp"].as_str().unwrap())).unwrap();
+    let prompt = plcsh::shell::repl::prompt(&s);
+    assert_eq!(prompt, "press1> ");
+    let page = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/reference/first-connection.md")).unwrap();
+    assert!(page.contains(&format!("the prompt says `{}`", prompt.trim_end())), "the page names another prompt");
+    assert!(!page.contains("(real)`"), "no `(real)` prompt on the page");
+}
