@@ -101,7 +101,7 @@ pub fn open_port(path: &str, settings: LineSettings) -> Result<SerialPort> {
     builder(path, settings)
         .open_native()
         .map(SerialPort)
-        .map_err(|e| Error::link(format!("cannot open serial port {path}")).cause(e).hint(open_hint()))
+        .map_err(|e| Error::link(format!("cannot open the serial port {path}")).cause(e).hint(open_hint()))
 }
 
 /// A serial port on this computer (a tty or a COM port).

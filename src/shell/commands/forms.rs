@@ -464,6 +464,36 @@ pub fn options(c: &CommandSpec, sub: Option<&str>) -> Vec<(String, String)> {
     out
 }
 
+/// The words that stand for each other in a form (`abs|rel`: one of the two), as pairs in
+/// both orders; `sub` narrows them to one sub-command's forms. Once one is typed, completion
+/// offers none of the others (`servo move abs 1000 ⇥` never offers `rel`).
+pub fn rivals(c: &CommandSpec, sub: Option<&str>) -> Vec<(String, String)> {
+    let mut out = Vec::new();
+    for f in of(c).iter().filter(|f| sub.is_none() || f.sub.is_none() || f.sub == sub) {
+        let body = f.text.split_once(' ').map_or("", |(_, r)| r);
+        let toks = tokens(body);
+        let mut run: Vec<String> = Vec::new();
+        let mut i = 0;
+        while i < toks.len() {
+            if let Tok::Word(w) = &toks[i] {
+                run.push(w.clone());
+                if matches!(toks.get(i + 1), Some(Tok::Bar)) && matches!(toks.get(i + 2), Some(Tok::Word(_))) {
+                    i += 2;
+                    continue;
+                }
+            }
+            for a in &run {
+                for b in run.iter().filter(|b| *b != a) {
+                    out.push((a.clone(), b.clone()));
+                }
+            }
+            run.clear();
+            i += 1;
+        }
+    }
+    out
+}
+
 /// The words a command's forms spell out (`pto` → `strict`, `status`; `servo move` → `abs`,
 /// `rel`), for completion; `sub` narrows them to one sub-command's forms, whose own name is
 /// left out.

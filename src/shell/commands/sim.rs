@@ -75,7 +75,7 @@ fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
         "run" => {
             return Err(Error::usage("`sim run` is ambiguous: say which runs")
                 // Within 80 columns after `  hint: `.
-                .hint("sim clock real: time follows the wall clock; sim cpu run: the program runs")
+                .hint("sim clock real: time follows the clock; sim cpu run: the program runs")
                 .column(args.offset));
         }
         "serve" | "control" => {
