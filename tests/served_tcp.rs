@@ -104,7 +104,8 @@ fn the_prompt_of_a_real_device_is_as_the_first_connection_page_says() {
     s.open("press1", &format!("tcp://{}?model=K205-16DT", served.ready["tcp"].as_str().unwrap())).unwrap();
     let prompt = plcsh::shell::repl::prompt(&s);
     assert_eq!(prompt, "press1> ");
-    let page = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/reference/first-connection.md")).unwrap();
+    let page =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/reference/first-connection.md")).unwrap();
     assert!(page.contains(&format!("the prompt says `{}`", prompt.trim_end())), "the page names another prompt");
     assert!(!page.contains("(real)`"), "no `(real)` prompt on the page");
 }

@@ -312,6 +312,9 @@ fn a_port_another_program_holds_is_refused_as_the_error_page_says() {
     let shown = "Unable to acquire exclusive lock on serial port";
     assert!(err.contains(&format!("cannot open the serial port {}: {shown}", link.display())), "{err}");
     let page = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/reference/errors.md")).unwrap();
-    assert!(page.contains(&format!("### `cannot open the serial port …: {shown}`")), "errors.md quotes another message");
+    assert!(
+        page.contains(&format!("### `cannot open the serial port …: {shown}`")),
+        "errors.md quotes another message"
+    );
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -318,7 +318,8 @@ fn every_long_running_command_stops_on_every_listed_signal_with_the_documented_s
     let served = serve(&["--tcp", "0", "--state", "none"]);
     let device = format!("plc=tcp://{}?model=K205-16DT", served.ready["tcp"].as_str().unwrap());
     let (lab, spin) = spinning_lab(&dir);
-    let bench = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("machines/pto_servo_encoder.toml").display().to_string();
+    let bench =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("machines/pto_servo_encoder.toml").display().to_string();
     let link = |name: &str| dir.join(name).display().to_string();
     let s = |v: &[&str]| v.iter().map(|x| x.to_string()).collect::<Vec<String>>();
     let serve_case = |what: &'static str, mode: Vec<String>| {
@@ -352,7 +353,16 @@ fn every_long_running_command_stops_on_every_listed_signal_with_the_documented_s
         one_shot("trace", "get VW0; trace VW0 every=10ms for=120s"),
         Case {
             what: "run",
-            args: vec!["--state".into(), "none".into(), "--device".into(), device.clone(), "run".into(), script().display().to_string(), "1".into(), "wait".into()],
+            args: vec![
+                "--state".into(),
+                "none".into(),
+                "--device".into(),
+                device.clone(),
+                "run".into(),
+                script().display().to_string(),
+                "1".into(),
+                "wait".into(),
+            ],
             stdin: None,
             ready: Ready::FirstLine,
             statuses: [130, 143, 129],

@@ -24,7 +24,10 @@ fn date() -> &'static str {
         .lines()
         .filter_map(|l| l.strip_prefix("### "))
         .map(|l| l.split_whitespace().next().unwrap_or(""))
-        .find(|d| d.len() == 10 && d.bytes().enumerate().all(|(i, b)| if i == 4 || i == 7 { b == b'-' } else { b.is_ascii_digit() }))
+        .find(|d| {
+            d.len() == 10
+                && d.bytes().enumerate().all(|(i, b)| if i == 4 || i == 7 { b == b'-' } else { b.is_ascii_digit() })
+        })
         .unwrap_or("")
 }
 
@@ -118,7 +121,10 @@ mod tests {
         assert!(page.is_ascii(), "raw UTF-8 on the page");
         let text = String::from_utf8(page.clone()).unwrap();
         let th = text.lines().find(|l| l.starts_with(".TH")).unwrap_or("");
-        assert!(th.starts_with(".TH PLCSH 1 20") && th.contains(concat!("\"plcsh ", env!("CARGO_PKG_VERSION"), "\"")), "{th}");
+        assert!(
+            th.starts_with(".TH PLCSH 1 20") && th.contains(concat!("\"plcsh ", env!("CARGO_PKG_VERSION"), "\"")),
+            "{th}"
+        );
         let dir = std::env::temp_dir().join(format!("plcsh-man-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         let file = dir.join("plcsh.1");

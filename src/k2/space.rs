@@ -293,10 +293,8 @@ mod tests {
     #[test]
     fn operand_help_cites_only_what_the_user_has() {
         let s = space("K209EA-50DX");
-        let mut texts: Vec<String> = crate::k2::sm_map::names()
-            .iter()
-            .filter_map(|n| s.help(&n.operand()).ok())
-            .collect();
+        let mut texts: Vec<String> =
+            crate::k2::sm_map::names().iter().filter_map(|n| s.help(&n.operand()).ok()).collect();
         texts.extend(["VW100", "I0.0", "SMB67", "SM0.1", "T5"].iter().map(|o| s.help(o).unwrap()));
         assert!(texts.len() > 50, "{}", texts.len());
         for t in &texts {

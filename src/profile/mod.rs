@@ -251,7 +251,7 @@ fn profile(
     url: Option<&str>,
 ) -> std::result::Result<Profile, Bad> {
     if !valid_name(name) {
-        return Err((None, "a profile name is Latin letters A-Z a-z, digits, _ and - only (it becomes a device name, typed before operands: press1.VW0)".into()));
+        return Err((None, "a profile name is Latin letters A-Z a-z, digits, _ and - only (it becomes a device name, typed before operands: press1:VW0)".into()));
     }
     let at = |v: &Spanned<toml::Value>| Some(v.span().start);
     let url = match (url, keys.get("url")) {

@@ -341,9 +341,8 @@ fn options(cmd: &CommandSpec, rest: &[&str], word: &str, words: bool) -> Vec<Sug
         // A word typed, or one of its alternatives typed (`abs` for `rel`), is done.
         let rivals = forms::rivals(cmd, sub);
         let done = |w: &str| {
-            rest.iter().any(|r| {
-                r.eq_ignore_ascii_case(w) || rivals.iter().any(|(a, b)| a == w && b.eq_ignore_ascii_case(r))
-            })
+            rest.iter()
+                .any(|r| r.eq_ignore_ascii_case(w) || rivals.iter().any(|(a, b)| a == w && b.eq_ignore_ascii_case(r)))
         };
         v.extend(
             forms::literals(cmd, sub)

@@ -103,7 +103,8 @@ fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
             let words = crate::shell::lex::words_in(&args)?;
             if sub == "fault" && words.get(1).is_some_and(|w| w.1.eq_ignore_ascii_case("clear")) {
                 const FORM: &str = "sim fault clear [ID|all]";
-                const HINT: &str = "sim fault clear (every fault) | sim fault clear 2 (fault 2; `sim faults` lists the ids)";
+                const HINT: &str =
+                    "sim fault clear (every fault) | sim fault clear 2 (fault 2; `sim faults` lists the ids)";
                 if let Some(&(col, extra)) = words.get(3) {
                     let typed: Vec<&str> = words[..3].iter().map(|w| w.1).collect();
                     return Err(Error::usage(format!(
