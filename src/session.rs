@@ -156,7 +156,12 @@ impl Session {
     /// it is the first. A `url` without a scheme is a profile name (`crate::profile`).
     pub fn open(&mut self, name: &str, url: &str) -> Result<()> {
         if name.is_empty() || !name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-') {
-            return Err(Error::usage(format!("`{name}` is not a device name (letters, digits, _ and -)")));
+            // ASCII only: a device name is typed before operands (`press1:VW0`), where Cyrillic
+            // look-alikes are read as the Latin letters the manual means (core::text).
+            return Err(Error::usage(format!(
+                "`{name}` is not a device name: Latin letters A-Z a-z, digits, _ and - only"
+            ))
+            .hint("e.g. connect press1 sim:K209EA-50DX (the name is typed before operands: press1:VW0)"));
         }
         if let Some(c) = &self.confine {
             // A profile brings the user's options (state files, …): a sandboxed run opens

@@ -138,13 +138,18 @@ fn a_request_with_a_huge_start_is_refused_and_the_helper_keeps_running() {
     };
     let start = Instant::now();
     while read(&mut s, "VW3408") != 1 {
-        assert!(start.elapsed() < Duration::from_secs(5), "the request was never acknowledged");
+        assert!(start.elapsed() < Duration::from_secs(20), "the request was never acknowledged");
         std::thread::sleep(Duration::from_millis(5));
     }
     assert_eq!(read(&mut s, "VW3412"), 2, "result 2: bad range");
+    // The heartbeat moves: the PLC still scans (waited for, however late a loaded machine
+    // schedules the server).
     let beat = read(&mut s, "VW3404");
-    std::thread::sleep(Duration::from_millis(20));
-    assert_ne!(read(&mut s, "VW3404"), beat, "the heartbeat moves: the PLC still scans");
+    let start = Instant::now();
+    while read(&mut s, "VW3404") == beat {
+        assert!(start.elapsed() < Duration::from_secs(20), "the heartbeat stopped at {beat}: the PLC no longer scans");
+        std::thread::sleep(Duration::from_millis(10));
+    }
     let l = json(Some(&srv.url()), "get SMB66");
     assert_eq!(values(&l[0]).len(), 1, "the helper still answers: {l:?}");
 }

@@ -210,11 +210,10 @@ fn rewrite(
 
 /// Runs a shell line in `dir` with `plcsh` on PATH and the test's private HOME.
 fn sh(dir: &Path, line: &str, stdin: &str) -> std::process::Output {
-    use std::io::Write;
     let bindir = Path::new(bin()).parent().unwrap();
     let path = format!("{}:{}", bindir.display(), std::env::var("PATH").unwrap_or_default());
     let home = dir.join("home");
-    let mut child = Command::new("sh")
+    let child = Command::new("sh")
         .arg("-c")
         .arg(line)
         .current_dir(dir)
@@ -231,8 +230,7 @@ fn sh(dir: &Path, line: &str, stdin: &str) -> std::process::Output {
         .stderr(Stdio::piped())
         .spawn()
         .unwrap();
-    child.stdin.take().unwrap().write_all(stdin.as_bytes()).unwrap();
-    child.wait_with_output().unwrap()
+    output_with_input(child, stdin.as_bytes())
 }
 
 /// Whitespace-insensitive: runs of spaces are one space.

@@ -3,7 +3,7 @@
 
 mod common;
 use common::*;
-use std::io::{BufRead, BufReader, Write};
+use std::io::{BufRead, BufReader};
 use std::path::PathBuf;
 use std::process::Stdio;
 
@@ -212,9 +212,8 @@ fn a_checklist_table_keeps_the_values_of_a_failed_check_and_its_numbers() {
 
 #[test]
 fn stdin_closes_cleanly_after_an_unfinished_block() {
-    let mut child = plcsh().stdin(Stdio::piped()).stdout(Stdio::piped()).spawn_retrying().unwrap();
-    child.stdin.take().unwrap().write_all(b"lua\nprint(1)\n").unwrap();
-    let o = child.wait_with_output().unwrap();
+    let child = plcsh().stdin(Stdio::piped()).stdout(Stdio::piped()).spawn_retrying().unwrap();
+    let o = output_with_input(child, b"lua\nprint(1)\n");
     assert_eq!(String::from_utf8_lossy(&o.stdout), "1\n");
 }
 

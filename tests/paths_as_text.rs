@@ -219,10 +219,8 @@ fn shell(args: &[&str], line: &str, by_c: bool) -> Vec<serde_json::Value> {
 }
 
 fn run_with_stdin(mut c: std::process::Command, input: &str) -> Output {
-    use std::io::Write;
-    let mut child = c.stdin(Stdio::piped()).stdout(Stdio::piped()).stderr(Stdio::piped()).spawn_retrying().unwrap();
-    child.stdin.take().unwrap().write_all(format!("{input}\n").as_bytes()).unwrap();
-    child.wait_with_output().unwrap()
+    let child = c.stdin(Stdio::piped()).stdout(Stdio::piped()).stderr(Stdio::piped()).spawn_retrying().unwrap();
+    output_with_input(child, format!("{input}\n").as_bytes())
 }
 
 fn repo(rel: &str) -> PathBuf {

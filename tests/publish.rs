@@ -853,6 +853,13 @@ fn an_operand_no_member_has_is_one_usage_error_before_anything_connects() {
     assert!(g.is_empty(), "nothing published: {g:?}");
 }
 
+/// A dropped SSH session: SIGHUP to the child.
+fn hang_up(c: &Child) {
+    assert!(Command::new("kill").args(["-HUP", &c.id().to_string()]).status().unwrap().success());
+}
+
+/// Every stop signal the docs list (docs/reference/exit-status.md) ends `publish` normally once
+/// everything was delivered.
 #[test]
 fn a_stop_by_signal_after_everything_was_delivered_exits_0() {
     if !mosquitto_present() {
@@ -865,6 +872,7 @@ fn a_stop_by_signal_after_everything_was_delivered_exits_0() {
     for (signal, name) in [
         (plcsh::core::platform::interrupt_child as fn(&Child), "SIGINT"),
         (plcsh::core::platform::terminate_child, "SIGTERM"),
+        (hang_up, "SIGHUP"),
     ] {
         got.lock().unwrap().clear();
         let mut child = plcsh()

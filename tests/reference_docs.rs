@@ -241,7 +241,7 @@ fn the_message_catalogue_quotes_the_program() {
         "a reply with an invalid CRC arrived",
         "the device did not answer: no reply from unit",
         "cannot connect to",
-        "cannot open serial port",
+        "cannot open the serial port",
         "the session is read-only (--read-only)",
         "allow list",
         "is out of range for",

@@ -63,14 +63,16 @@ fn every_serial_family_is_served_on_tcp_and_reached_with_plus_tcp() {
         &[
             "--json",
             "-d",
-            &format!("axis=kinco+tcp://{}?id=1&control={}", addr("servo_tcp"), ctl.display()),
+            // A generous reply timeout: the served line is paced like RS232, and a loaded machine
+            // can delay a reply past the default; this is about the control channel, not timing.
+            &format!("axis=kinco+tcp://{}?id=1&timeout=2s&control={}", addr("servo_tcp"), ctl.display()),
             "-c",
             "servo sim fault 16#2310; get axis:error_code",
         ],
         "",
     );
     let l = json_lines(&o);
-    assert_eq!(l[0]["ok"], true, "{l:?}");
+    assert_eq!(l[0]["ok"], true, "{l:?} {}", stderr(&o));
     assert_eq!(l[1]["values"][0]["value"], 0x2310, "{l:?}");
 }
 
@@ -91,4 +93,19 @@ fn a_tcp_served_line_has_one_client_at_a_time() {
     drop(first);
     let o = run(&["--json", "-d", &url, "-c", "get axis:statusword"], "");
     assert_eq!(json_lines(&o)[0]["values"][0]["value"], 0x4231, "the line is free again: {}", both(&o));
+}
+
+/// docs/reference/first-connection.md and docs/safety.md say what the prompt shows for a real
+/// device opened by a profile's name: its name alone, `press1>` (a simulator's says `(sim)`).
+#[test]
+fn the_prompt_of_a_real_device_is_as_the_first_connection_page_says() {
+    let served = serve(&["--tcp", "0", "--state", "none"]);
+    let mut s = plcsh::session::Session::new(plcsh::core::Clock::following());
+    s.open("press1", &format!("tcp://{}?model=K205-16DT", served.ready["tcp"].as_str().unwrap())).unwrap();
+    let prompt = plcsh::shell::repl::prompt(&s);
+    assert_eq!(prompt, "press1> ");
+    let page =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/reference/first-connection.md")).unwrap();
+    assert!(page.contains(&format!("the prompt says `{}`", prompt.trim_end())), "the page names another prompt");
+    assert!(!page.contains("(real)`"), "no `(real)` prompt on the page");
 }

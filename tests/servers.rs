@@ -296,3 +296,26 @@ fn noise_on_the_pty_does_not_hold_up_tcp() {
     p.write_all(&rtu(1, READ_VW0)).unwrap();
     assert_eq!(&rtu_reply(&mut p, 7)[..5], &[1, 3, 2, 0, 0]);
 }
+
+/// A port another program holds is refused with the words docs/reference/errors.md quotes.
+#[cfg(unix)]
+#[test]
+fn a_port_another_program_holds_is_refused_as_the_error_page_says() {
+    let dir = std::env::temp_dir().join(format!("plcsh-held-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let link = dir.join("held");
+    let _served = serve(&["--rtu-pty", link.to_str().unwrap(), "--state", "none"]);
+    // Another program holds it, as a terminal program would (opened exclusively).
+    let _held = serialport::new(link.to_str().unwrap(), 9600).open_native().expect("the first open");
+    let o = run(&["--state", "none", "-d", &format!("rtu:{}", link.display()), "-c", "get VW0"], "");
+    let err = stderr(&o);
+    let shown = "Unable to acquire exclusive lock on serial port";
+    assert!(err.contains(&format!("cannot open the serial port {}: {shown}", link.display())), "{err}");
+    let page = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/reference/errors.md")).unwrap();
+    assert!(
+        page.contains(&format!("### `cannot open the serial port …: {shown}`")),
+        "errors.md quotes another message"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

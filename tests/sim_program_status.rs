@@ -52,11 +52,7 @@ fn a_snapshot_keeps_the_err_led_and_the_program_stop() {
         .stdin(std::process::Stdio::piped())
         .stdout(std::process::Stdio::piped())
         .spawn()
-        .and_then(|mut c| {
-            use std::io::Write;
-            c.stdin.take().unwrap().write_all(script.as_bytes())?;
-            c.wait_with_output()
-        })
+        .map(|c| output_with_input(c, script.as_bytes()))
         .unwrap();
     let l = json_lines(&o);
     assert!(l.iter().all(|x| x["ok"] == true), "{}", both(&o));

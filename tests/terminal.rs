@@ -315,3 +315,40 @@ fn a_second_shell_on_the_same_state_file_opens_with_a_warning() {
     drop((first, second));
     let _ = std::fs::remove_dir_all(&home);
 }
+
+/// Two shells open at once under one user: each keeps its lines in the history file (the
+/// one that quits later appends to what the other saved, never rewrites it from its own copy).
+#[test]
+fn two_shells_at_once_both_keep_their_history() {
+    let home = std::env::temp_dir().join(format!("plcsh-tmux-history-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&home);
+    std::fs::create_dir_all(&home).unwrap();
+    let Some(a) = Tmux::start(&home) else { return };
+    let Some(b) = Tmux::start(&home) else { return };
+    a.wait_for("the first prompt", |s| s.contains("plc(sim)>"));
+    b.wait_for("the second prompt", |s| s.contains("plc(sim)>"));
+    a.literal("get VW10");
+    a.keys(&["Enter"]);
+    a.wait_for("the first shell's answer", |s| s.contains("VW10  0"));
+    b.literal("get VW12");
+    b.keys(&["Enter"]);
+    b.wait_for("the second shell's answer", |s| s.contains("VW12  0"));
+    let file = home.join("data").join("plcsh").join("history.txt");
+    let read = || std::fs::read_to_string(&file).unwrap_or_default();
+    let wait_file = |what: &str, ok: &dyn Fn(&str) -> bool| {
+        let deadline = Instant::now() + Duration::from_secs(30);
+        while !ok(&read()) {
+            assert!(Instant::now() < deadline, "waited for {what}; history file:\n{}", read());
+            std::thread::sleep(Duration::from_millis(50));
+        }
+    };
+    a.literal("quit");
+    a.keys(&["Enter"]);
+    wait_file("the first shell's line", &|t| t.contains("get VW10"));
+    b.literal("quit");
+    b.keys(&["Enter"]);
+    wait_file("the second shell's line", &|t| t.contains("get VW12"));
+    let text = read();
+    assert!(text.contains("get VW10") && text.contains("get VW12"), "both shells' lines are kept:\n{text}");
+    let _ = std::fs::remove_dir_all(&home);
+}

@@ -16,9 +16,36 @@ pub const FILES: &[(Shell, &str)] = &[
     (Shell::PowerShell, "_plcsh.ps1"),
 ];
 
+/// `cmd` without its hidden subcommands (`lab worker`, which `lab grade` runs itself), at
+/// every level, so no shell completes them (nor `help lab worker`, made from the same tree).
+fn without_hidden(cmd: clap::Command) -> clap::Command {
+    let all = cmd.get_subcommands().count();
+    let visible: Vec<clap::Command> = cmd.get_subcommands().filter(|s| !s.is_hide_set()).cloned().collect();
+    if visible.len() == all {
+        return cmd.mut_subcommands(without_hidden);
+    }
+    // clap cannot take a subcommand out: the command is made again with its own arguments,
+    // texts and settings and the visible subcommands only.
+    // (clap takes a name as `&'static str`: the few names of a one-shot generation are leaked.)
+    let name: &'static str = Box::leak(cmd.get_name().to_string().into_boxed_str());
+    let mut fresh = clap::Command::new(name)
+        .subcommand_required(cmd.is_subcommand_required_set())
+        .arg_required_else_help(cmd.is_arg_required_else_help_set());
+    if let Some(a) = cmd.get_about() {
+        fresh = fresh.about(a.clone());
+    }
+    if let Some(a) = cmd.get_long_about() {
+        fresh = fresh.long_about(a.clone());
+    }
+    for a in cmd.get_arguments() {
+        fresh = fresh.arg(a.clone());
+    }
+    fresh.subcommands(visible.into_iter().map(without_hidden))
+}
+
 /// The completion script for `shell`.
 pub fn script(shell: Shell) -> Vec<u8> {
-    let mut cmd = super::Cli::command();
+    let mut cmd = without_hidden(super::Cli::command());
     let mut buf = Vec::new();
     clap_complete::generate(shell, &mut cmd, "plcsh", &mut buf);
     buf
@@ -95,6 +122,19 @@ mod tests {
         let bash = String::from_utf8(script(Shell::Bash)).unwrap();
         for word in ["completions", "devices", "models", "--config", "--device"] {
             assert!(bash.contains(word), "{word} missing from the bash script");
+        }
+    }
+
+    /// A hidden subcommand (`lab worker`, run by `lab grade` itself) is completed by no shell,
+    /// while its visible neighbours are.
+    #[test]
+    fn no_shell_completes_a_hidden_subcommand() {
+        for shell in [Shell::Bash, Shell::Zsh, Shell::Fish, Shell::PowerShell] {
+            let s = String::from_utf8(script(shell)).unwrap();
+            assert!(s.contains("grade") && s.contains("check"), "{shell:?}: lab's visible subcommands");
+            for as_a_name in ["'worker:", "\"worker\"", "'worker'", "grade worker", ",worker)", "__worker"] {
+                assert!(!s.contains(as_a_name), "{shell:?} offers `lab worker` ({as_a_name})");
+            }
         }
     }
 }

@@ -95,6 +95,22 @@ pub fn run(cmd: &LabCmd, style: Style, out: &mut dyn Write) -> i32 {
                 Ok(x) => x,
                 Err(e) => return fail(out, "lab", &e),
             };
+            if crate::signals::exit_status().is_some() {
+                // Stopped: the workers were ended; no summary of a partial run is printed as
+                // if it were the class's grades.
+                // (The status is the signal's: cli::run.)
+                let done = reports.iter().filter(|r| !r.verdict.starts_with("not graded")).count();
+                let e = crate::core::Error::new(
+                    crate::core::ErrorKind::Interrupted,
+                    format!(
+                        "lab grade stopped by {} before every submission was graded ({done} graded)",
+                        crate::signals::cause()
+                    ),
+                )
+                .hint("run it again to grade every submission");
+                let _ = output::report_error(out, style, "lab", &e, None);
+                return 1;
+            }
             if let Some(path) = junit {
                 if let Err(e) = std::fs::write(path, crate::lab::report::junit(&l, &reports)) {
                     return fail(

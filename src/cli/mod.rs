@@ -472,7 +472,14 @@ fn run_cli() -> i32 {
     }
     if let Some(Sub::Lab { cmd }) = &cli.sub {
         // A lab builds its own simulators from its lab.toml (never the user's state file).
-        return lab::run(cmd, style, &mut out);
+        // The stopping signals end the workers and the run with the signal's status (a worker
+        // keeps the default handling: its parent ends it).
+        if matches!(cmd, lab::LabCmd::Worker { .. }) {
+            return lab::run(cmd, style, &mut out);
+        }
+        crate::signals::install(&std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false)));
+        let code = lab::run(cmd, style, &mut out);
+        return crate::signals::exit_status().unwrap_or(code);
     }
     let session = match build_session(&cli) {
         Ok(s) => s,

@@ -26,7 +26,7 @@ pub struct RunArgs {
     /// The Lua script.
     pub script: PathBuf,
     /// Arguments for the script (`arg[1]`…, and `...`): everything after the script, even words
-    /// that look like plcsh flags (see `split_script_args`). Flags for plcsh go before the script.
+    /// that look like plcsh flags. Flags for plcsh go before the script.
     #[arg(trailing_var_arg = true, allow_hyphen_values = true)]
     pub args: Vec<String>,
 }

@@ -40,8 +40,8 @@ pub static STATUSES: &[Status] = &[
         code: OK,
         name: "ok",
         when: "every command succeeded; a script finished; every device of a fleet answered; \
-               `sim serve` stopped by SIGTERM, SIGHUP or Ctrl-C; `publish` stopped by Ctrl-C or \
-               SIGTERM after every reading was delivered",
+               `sim serve` stopped by SIGTERM, SIGHUP or Ctrl-C; `publish` stopped by Ctrl-C, \
+               SIGTERM or SIGHUP after every reading was delivered",
     },
     Status {
         code: FAILED,

@@ -325,12 +325,15 @@ fn build_names() -> Vec<SmName> {
     let mut add = |byte: u32, size: SmSize, meaning: String, section: &'static str| {
         v.push(SmName { byte, size, meaning, section })
     };
-    // §8 and S7-200 conventions for the first status byte.
-    add(0, SmSize::Byte, "system status bits (read-only)".into(), "k2.md §8");
-    add(0, SmSize::Bit(0), "always on".into(), "k2.md §8");
-    add(0, SmSize::Bit(1), "on during the first scan only".into(), "k2.md §8");
-    add(0, SmSize::Bit(5), "1-second clock (0.5 s on, 0.5 s off)".into(), "kinco-public-notes (S7-200 convention)");
-    add(0, SmSize::Bit(6), "toggles every scan".into(), "kinco-public-notes (S7-200 convention)");
+    // The first status byte: SM0.0 and SM0.1 as the manual's PTO/PWM examples use them
+    // (§3.4.2.3, §3.4.2.4; the digest's §8), the rest by the S7-200 convention Kinco's public
+    // notes follow. The texts are shown to users (`help SM0.1`): they cite what the user has.
+    let ex = "§3.4.2.3, §3.4.2.4 (the manual's examples; S7-200 convention)";
+    add(0, SmSize::Byte, "system status bits (read-only)".into(), ex);
+    add(0, SmSize::Bit(0), "always on".into(), ex);
+    add(0, SmSize::Bit(1), "on during the first scan only".into(), ex);
+    add(0, SmSize::Bit(5), "1-second clock (0.5 s on, 0.5 s off)".into(), "S7-200 convention (KincoBuilder's help)");
+    add(0, SmSize::Bit(6), "toggles every scan".into(), "S7-200 convention (KincoBuilder's help)");
     for r in PTO_REGS {
         let n = r.channel;
         let q = ["Q0.0", "Q0.1", "Q0.4", "Q0.5"][n as usize];

@@ -251,10 +251,10 @@ impl OperandSpace for K2Space {
             if matches!(k.area, Area::T | Area::C) { "elements" } else { "bytes" },
             self.model.name
         ));
-        if let Some(n) = sm_name(&k) {
-            s.push_str(&format!("manual {}\n", n.section));
-        } else {
-            s.push_str("manual §2 (operands, k2.md §2)\n");
+        match sm_name(&k) {
+            Some(n) if n.section.starts_with('§') => s.push_str(&format!("manual {}\n", n.section)),
+            Some(n) => s.push_str(&format!("source: {}\n", n.section)),
+            None => s.push_str("written as the manual and KincoBuilder write operands (S7-200 style)\n"),
         }
         Ok(s)
     }
@@ -305,6 +305,20 @@ mod tests {
 
     fn space(m: &str) -> K2Space {
         K2Space::new(catalog::find(m).unwrap())
+    }
+
+    /// `help OPERAND` cites what a user has — the K2 manual's sections, KincoBuilder — never a
+    /// file of the project's own notes (`k2.md`, `kinco-public-notes`).
+    #[test]
+    fn operand_help_cites_only_what_the_user_has() {
+        let s = space("K209EA-50DX");
+        let mut texts: Vec<String> =
+            crate::k2::sm_map::names().iter().filter_map(|n| s.help(&n.operand()).ok()).collect();
+        texts.extend(["VW100", "I0.0", "SMB67", "SM0.1", "T5"].iter().map(|o| s.help(o).unwrap()));
+        assert!(texts.len() > 50, "{}", texts.len());
+        for t in &texts {
+            assert!(!t.contains(".md") && !t.contains("public-notes") && !t.contains("digest"), "{t}");
+        }
     }
 
     #[test]

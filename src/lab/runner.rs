@@ -190,6 +190,12 @@ fn one(exe: &Path, lab_path: &Path, lab: &Lab, file: &str) -> Report {
                 let _ = child.wait();
                 break None;
             }
+            // A stop (Ctrl-C, SIGTERM, SIGHUP) ends the worker at once: no orphan grades on.
+            Ok(None) if crate::signals::exit_status().is_some() => {
+                let _ = child.kill();
+                let _ = child.wait();
+                return Report::broken(lab, file, format!("not graded: stopped by {}", crate::signals::cause()));
+            }
             Ok(None) => {
                 if Instant::now() >= next_look {
                     next_look = Instant::now() + Duration::from_millis(200);
@@ -272,6 +278,9 @@ pub fn grade_all(lab_path: &Path, lab: &Lab, files: &[String], jobs: usize) -> R
                     i
                 };
                 let Some(file) = files.get(i) else { break };
+                if crate::signals::exit_status().is_some() {
+                    break; // stopped: no new worker starts
+                }
                 let r = one(&exe, lab_path, lab, file);
                 results.lock().unwrap_or_else(|p| p.into_inner())[i] = Some(r);
             });

@@ -154,7 +154,7 @@ impl Profiles {
             let parsed = if valid_name(&name) {
                 fleet::parse(&name, section.get_ref(), &origin, &make)
             } else {
-                Err((None, "a fleet name is letters, digits, _ and -".into()))
+                Err((None, "a fleet name is Latin letters A-Z a-z, digits, _ and - only".into()))
             };
             match parsed {
                 Ok(f) => out.fleets.push(f),
@@ -251,7 +251,7 @@ fn profile(
     url: Option<&str>,
 ) -> std::result::Result<Profile, Bad> {
     if !valid_name(name) {
-        return Err((None, "a profile name is letters, digits, _ and -".into()));
+        return Err((None, "a profile name is Latin letters A-Z a-z, digits, _ and - only (it becomes a device name, typed before operands: press1:VW0)".into()));
     }
     let at = |v: &Spanned<toml::Value>| Some(v.span().start);
     let url = match (url, keys.get("url")) {

@@ -338,7 +338,12 @@ fn options(cmd: &CommandSpec, rest: &[&str], word: &str, words: bool) -> Vec<Sug
         .map(|(k, e)| Suggestion { text: format!("{k}="), meaning: format!("option, e.g. {k}={e}") })
         .collect();
     if words {
-        let done = |w: &str| rest.iter().any(|r| r.eq_ignore_ascii_case(w));
+        // A word typed, or one of its alternatives typed (`abs` for `rel`), is done.
+        let rivals = forms::rivals(cmd, sub);
+        let done = |w: &str| {
+            rest.iter()
+                .any(|r| r.eq_ignore_ascii_case(w) || rivals.iter().any(|(a, b)| a == w && b.eq_ignore_ascii_case(r)))
+        };
         v.extend(
             forms::literals(cmd, sub)
                 .into_iter()
@@ -649,6 +654,9 @@ mod tests {
         assert!(!all.iter().any(|t| t == "VW" || t == "MD" || t.starts_with("VW")), "no operand areas: {all:?}");
         assert!(!texts("pto 0 freq=1kHz ").1.contains(&"freq=".to_string()), "an option typed is not offered again");
         assert_eq!(texts("servo move abs 100 sp").1, vec!["speed=".to_string()]);
+        // One of `abs|rel` typed: the other is not offered.
+        assert!(!texts("servo move abs 1000 ").1.contains(&"rel".to_string()), "{:?}", texts("servo move abs 1000 ").1);
+        assert!(!texts("servo move rel 10 ").1.contains(&"abs".to_string()));
         assert_eq!(texts("servo servo move ").1, vec!["abs", "acc=", "dec=", "rel", "speed="]);
         assert_eq!(texts("hsc 0 mo").1, vec!["mode=".to_string()]);
         with_view(|v| {

@@ -109,7 +109,9 @@ pub fn interactive(shell: &mut Shell) -> i32 {
         if let Some(dir) = h.parent() {
             let _ = std::fs::create_dir_all(dir);
         }
-        let _ = ed.save_history(h);
+        // Appended under the file's lock, never rewritten from this session's copy: two shells
+        // open at once both keep their lines (the later one does not drop the earlier's).
+        let _ = ed.append_history(h);
     }
     0
 }

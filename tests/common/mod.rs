@@ -77,15 +77,30 @@ impl Start for Command {
 
 /// Runs plcsh with `args`, feeding `stdin`.
 pub fn run(args: &[&str], stdin: &str) -> Output {
-    let mut child = plcsh()
+    let child = plcsh()
         .args(args)
         .stdin(Stdio::piped())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn_retrying()
         .expect("start plcsh");
-    child.stdin.take().unwrap().write_all(stdin.as_bytes()).unwrap();
-    child.wait_with_output().expect("plcsh output")
+    output_with_input(child, stdin.as_bytes())
+}
+
+/// Feeds `input` to a started child (its stdin piped) and waits for its output. The input is
+/// written from a thread while the output is read: the program may refuse and exit before it
+/// reads its input (a broken pipe is then no failure of the test, which judges the exit status
+/// and the output), and a large input must not block against a full output pipe.
+pub fn output_with_input(mut child: std::process::Child, input: &[u8]) -> Output {
+    let mut pipe = child.stdin.take().expect("stdin piped");
+    let text = input.to_vec();
+    let writer = std::thread::spawn(move || match pipe.write_all(&text) {
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => {}
+        r => r.expect("write the program's input"),
+    });
+    let out = child.wait_with_output().expect("the program's output");
+    writer.join().expect("the input writer");
+    out
 }
 
 pub fn stdout(o: &Output) -> String {

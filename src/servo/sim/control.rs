@@ -66,7 +66,7 @@ pub struct Request {
     pub id: Option<u8>,
 }
 
-pub const USAGE: &str = "servo sim fault [drive] [CODE] | fault no-reply|bad-checksum|drop-echo [count=N|all] | fault delay 50ms | fault abort OBJECT CODE | fault clear | switch [home|neg|pos] POS|off | pulses freq=HZ count=N [dir=fwd|rev] | strict on|off";
+pub const USAGE: &str = "servo sim fault [drive] [CODE] | fault no-reply|bad-checksum|drop-echo [all|count=N] | fault delay|late 50ms [count=N|all] | fault abort OBJECT CODE | fault clear | switch [home|neg|pos] POS|off | pulses freq=HZ count=N [dir=fwd|rev] | strict on|off";
 
 fn usage(msg: impl Into<crate::core::error::Text>, col: usize) -> Error {
     Error::usage(msg).column(col).hint(USAGE)
@@ -129,11 +129,27 @@ pub fn parse(words: &[(usize, &str)]) -> Result<Request> {
                         "bad-checksum" => FaultKind::BadChecksum,
                         _ => FaultKind::DropEcho,
                     };
-                    Control::Line(k, count()?)
+                    // `all` (the command card's form) is `count=all`: every request from now on.
+                    // Any other word is refused, never dropped (a rehearsed outage must not
+                    // pass on the retry).
+                    match args {
+                        [] => Control::Line(k, count()?),
+                        [(_, w)] if w.eq_ignore_ascii_case("all") => {
+                            if let Some((oc, _)) = opt("count").or_else(|| opt("times")) {
+                                return Err(usage("say `all` or count=N, not both", oc));
+                            }
+                            Control::Line(k, None)
+                        }
+                        [(c, w), ..] => {
+                            return Err(usage(format!("unexpected `{w}` after `fault {kind}`: say all or count=N"), *c))
+                        }
+                    }
                 }
                 "delay" | "late" => {
                     known(&["count", "times"])?;
-                    let &[(c, d)] = args else { return Err(usage("fault delay needs a duration, e.g. 50ms", first.0)) };
+                    let &[(c, d)] = args else {
+                        return Err(usage(format!("fault {kind} needs one duration, e.g. fault {kind} 50ms"), first.0));
+                    };
                     let us = parse_option_duration_us(d).map_err(|m| usage(m, c))?;
                     Control::Line(FaultKind::Delay(Duration::from_micros(us.max(0) as u64)), count()?)
                 }
@@ -368,6 +384,16 @@ mod tests {
         );
         assert_eq!(p("fault no-reply").unwrap().control, Control::Line(FaultKind::NoReply, Some(1)));
         assert_eq!(p("fault bad-checksum count=all").unwrap().control, Control::Line(FaultKind::BadChecksum, None));
+        // The command card's `all` is every request, like count=all; any other word is refused.
+        assert_eq!(p("fault no-reply all").unwrap().control, Control::Line(FaultKind::NoReply, None));
+        assert_eq!(p("fault drop-echo all").unwrap().control, Control::Line(FaultKind::DropEcho, None));
+        assert_eq!(p("fault no-reply x").unwrap_err().column, Some(15));
+        assert!(p("fault no-reply all count=2").is_err());
+        assert_eq!(
+            p("fault late 50ms").unwrap().control,
+            Control::Line(FaultKind::Delay(Duration::from_millis(50)), Some(1))
+        );
+        assert!(p("fault late").unwrap_err().message.contains("fault late needs one duration"));
         assert_eq!(
             p("fault delay 50ms count=3").unwrap().control,
             Control::Line(FaultKind::Delay(Duration::from_millis(50)), Some(3))

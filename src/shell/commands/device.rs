@@ -41,19 +41,21 @@ pub const CLOSE: CommandSpec = CommandSpec {
     run: close,
 };
 
-fn one_word<'a>(args: &Args<'a>, usage: &str) -> Result<&'a str> {
+/// The one name a command takes, its quotes removed by the shell's one quoting rule
+/// ([`lex::unquote`]): `use 'k2'` names `k2`.
+fn one_word(args: &Args, usage: &str) -> Result<String> {
     let w = lex::words(args.text)?;
     match w.as_slice() {
-        [(_, name)] => Ok(name),
+        [(_, name)] => Ok(lex::unquote(name).into_owned()),
         _ => Err(Error::usage(format!("usage: {usage}")).column(args.offset)),
     }
 }
 
 fn use_cmd(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let name = one_word(&args, USE.usage)?;
-    sh.session.use_device(name).map_err(|e| e.column(args.offset))?;
+    sh.session.use_device(&name).map_err(|e| e.column(args.offset))?;
     let mut o = Outcome::new("use");
-    o.device = Some(name.to_string());
+    o.device = Some(name);
     Ok(o.quiet())
 }
 
@@ -64,10 +66,11 @@ fn devices(sh: &mut Shell, args: Args) -> Result<Outcome> {
 }
 
 fn connect(sh: &mut Shell, args: Args) -> Result<Outcome> {
-    let w = lex::words(args.text)?;
+    // Quoted words are their text (a port path with a space: `connect k2 'rtu:/dev/my port'`).
+    let w = lex::unquoted_words(args.text)?;
     let (name, url) = match w.as_slice() {
-        [(_, profile)] => (profile, profile),
-        [(_, name), (_, url)] => (name, url),
+        [profile] => (profile, profile),
+        [name, url] => (name, url),
         _ => return Err(Error::usage(format!("usage: {}", CONNECT.usage)).column(args.offset)),
     };
     sh.session.open(name, url)?;
@@ -78,6 +81,6 @@ fn connect(sh: &mut Shell, args: Args) -> Result<Outcome> {
 
 fn close(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let name = one_word(&args, CLOSE.usage)?;
-    sh.session.close(name)?;
+    sh.session.close(&name)?;
     Ok(Outcome::new("close").quiet())
 }

@@ -154,9 +154,10 @@ pub fn grouped() -> String {
         lines.push(format!("  {group:<w$}{}", names.join(", ")));
     }
     lines.push(String::new());
-    lines.push("`help COMMAND`: its forms (`help pto`); `help sim step`: one sub-command's".into());
-    lines.push("`help VW100`, `help SMB67`: what an operand is; Tab completes commands,".into());
-    lines.push("operands and options (`pto 0 fr` ⇥ `freq=`)".into());
+    // Whole sentences within 80 columns (the test below holds them to it).
+    lines.push("`help COMMAND`: its forms (`help pto`); `help sim step`: a sub-command's forms.".into());
+    lines.push("`help VW100`, `help SMB67`: what an operand is. Tab completes commands,".into());
+    lines.push("operands and options (`pto 0 fr` ⇥ `freq=`).".into());
     lines.join("\n")
 }
 
@@ -205,6 +206,9 @@ mod screen_tests {
         for l in &lines {
             assert!(l.chars().count() <= 80, "wider than 80 columns: {l}");
         }
+        // The footer is whole sentences: each ends with a full stop, none is cut off.
+        let footer = text.split("\n\n").last().unwrap_or("").replace('\n', " ");
+        assert!(footer.contains("a sub-command's forms.") && footer.ends_with('.'), "{footer}");
         for c in COMMANDS {
             let n = GROUPS.iter().filter(|g| g.1.contains(&c.name)).count();
             assert_eq!(n, 1, "`{}` is in {n} groups of `help`", c.name);

@@ -83,7 +83,7 @@ fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
         "run" => {
             return Err(Error::usage("`sim run` is ambiguous: say which runs")
                 // Within 80 columns after `  hint: `.
-                .hint("sim clock real: time follows the wall clock; sim cpu run: the program runs")
+                .hint("sim clock real: time follows the clock; sim cpu run: the program runs")
                 .column(args.offset));
         }
         "serve" | "control" => {
@@ -106,6 +106,30 @@ fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
             return super::snapshot::run(sh, sub, rest, args.offset);
         }
         "fault" | "faults" => {
+            // `sim fault clear [ID|all]`: one word at most, a number or `all`, each refused at
+            // its column with the form (the control language's whole grammar is no hint here).
+            let words = crate::shell::lex::words_in(&args)?;
+            if sub == "fault" && words.get(1).is_some_and(|w| w.1.eq_ignore_ascii_case("clear")) {
+                const FORM: &str = "sim fault clear [ID|all]";
+                const HINT: &str =
+                    "sim fault clear (every fault) | sim fault clear 2 (fault 2; `sim faults` lists the ids)";
+                if let Some(&(col, extra)) = words.get(3) {
+                    let typed: Vec<&str> = words[..3].iter().map(|w| w.1).collect();
+                    return Err(Error::usage(format!(
+                        "unexpected `{extra}` after `sim {}`: the form is {FORM}",
+                        typed.join(" ")
+                    ))
+                    .hint(HINT)
+                    .column(col));
+                }
+                if let Some(&(col, id)) = words.get(2) {
+                    if !id.eq_ignore_ascii_case("all") && id.parse::<u32>().is_err() {
+                        return Err(Error::usage(format!("`{id}` is not a fault id: the form is {FORM}"))
+                            .hint(HINT)
+                            .column(col));
+                    }
+                }
+            }
             let rest = args.text.trim_start().get(sub.len()..).unwrap_or("").trim();
             return super::fault::run(sh, sub, rest);
         }

@@ -50,8 +50,22 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
         }
         "retain" => {
             let text: Vec<&str> = w.iter().map(|w| w.1).collect();
+            // `none` is the whole list: a word beside it is refused at its own column, never
+            // read as an operand named `none`.
+            if let Some(at) = w.iter().position(|x| x.1.eq_ignore_ascii_case("none")).filter(|_| w.len() > 1) {
+                let other = if at == 0 { w[1] } else { w[0] };
+                return Err(Error::usage(format!("`sim retain none` stands alone (got `{}` beside it)", other.1))
+                    .hint("sim retain none (retain nothing) | sim retain VB0..VB99 MB0[8] (these ranges)")
+                    .column(other.0));
+            }
             let s = k2cmd::sim(sh, dev, "sim retain")?;
             if !text.is_empty() {
+                // A range that is not an operand is named at its column.
+                for x in w {
+                    if !x.1.eq_ignore_ascii_case("none") {
+                        s.space().parse_k2(x.1.trim_matches(',')).map_err(|e| e.column(x.0).device(&name))?;
+                    }
+                }
                 s.set_retain(&text.join(" ")).map_err(|e| e.device(&name))?;
             }
             let list: Vec<String> = s

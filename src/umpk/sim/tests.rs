@@ -316,7 +316,7 @@ fn a_year_of_idle_time_costs_one_cycle() {
     clock.step(Duration::from_secs(365 * 24 * 3600));
     let t = std::time::Instant::now();
     assert_eq!(s(&talk(&mut u, b"?05FB")), "?05FB#0402000000FA\r\n");
-    assert!(t.elapsed() < Duration::from_millis(100));
+    assert!(t.elapsed() < Duration::from_secs(10), "{:?}", t.elapsed());
 }
 
 #[test]
