@@ -2,5 +2,6 @@
 //! real K2 over Modbus: its mailbox protocol, shared by the simulator and the wire driver.
 
 pub mod client;
+pub mod forms;
 pub mod il;
 pub mod protocol;

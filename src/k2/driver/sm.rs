@@ -186,9 +186,10 @@ impl K2Wire {
 }
 
 /// The helper client for `agent=VB…` (validated like `plcsh agent il --base`).
-pub(super) fn client(text: &str, timeout: Duration) -> Result<AgentClient> {
+pub(super) fn client(text: &str, timeout: Duration, model: &'static crate::k2::catalog::Model) -> Result<AgentClient> {
     let base = crate::k2::agent::protocol::parse_base(text).map_err(Error::usage)?;
     let mut c = AgentClient::new(base);
+    c.model = model;
     c.timeout = timeout.max(Duration::from_secs(1));
     Ok(c)
 }

@@ -287,7 +287,7 @@ impl ProgramState {
         use super::program::{Loaded, Plc};
         let mut p = Plc::new(Duration::from_nanos(self.next_scan_ns), sim.mem.q.len());
         if let Some(base) = agent_base {
-            let text = crate::k2::agent::il::program(base);
+            let text = crate::k2::agent::il::program(sim.model(), base);
             let prog = sim.compile(&text, "k2_agent.il").map_err(|e| format!("the helper program: {e}"))?;
             let mut l = Loaded::new(prog, "k2_agent.il".to_string(), &text);
             if let Some(cpu) = &self.helper_cpu {
