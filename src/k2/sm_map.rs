@@ -105,6 +105,19 @@ pub fn pos_cv_read_only(r: &PtoRegs, written: &str) -> (String, String) {
     (msg, hint)
 }
 
+/// Why PLS did nothing: the channel's enable bit (SM67.7 …) is clear and it is idle, so
+/// there was nothing to stop and nothing started (§3.4.2.2): (message, hint). In process and
+/// through the helper alike.
+pub fn pls_did_nothing(r: &PtoRegs) -> (String, String) {
+    (
+        format!(
+            "PLS {} did nothing: the enable bit SM{}.7 of the control byte SMB{} is clear and PTO{} is idle",
+            r.channel, r.control, r.control, r.channel
+        ),
+        format!("set SMB{}=16#85 (enable, PTO, update cycle and count), SMW{} and SMD{}, then PLS {}", r.control, r.cycle, r.count, r.channel),
+    )
+}
+
 /// Why a write to SMB0 is refused: (message, hint).
 pub fn smb0_read_only(written: &str) -> (String, String) {
     (

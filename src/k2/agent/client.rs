@@ -169,7 +169,8 @@ impl AgentClient {
                 let s = self.status(regs)?;
                 if let Some((i, ack)) = s.find(seq, self.token) {
                     return match ack.result {
-                        ResultCode::Ok if i == 0 => Ok(s.reply),
+                        ResultCode::Ok if i == 0 => p::reply_of(cmd, &s.reply)
+                            .ok_or_else(|| Error::link(format!("the helper's reply to {what} is shorter than asked"))),
                         ResultCode::Ok if matches!(cmd, Command::SmRead { .. } | Command::ReadRtc) => break, // reply overwritten: read again
                         ResultCode::Ok => Ok(Vec::new()),
                         rc => {

@@ -137,7 +137,6 @@ const fn x(mnemonic: &'static str, operands: &'static [Kind], source: &'static s
 pub static FORMS: &[Form] = &[
     m("LD", &[Bit], "K2 §3.4.3.1: «LD %SM0.0», «LD %M0.4»"),
     m("ST", &[Bit], "K2 §3.4.3.1: «ST %SM201.6», «ST %SM201.4»"),
-    m("MOVE", &[DWord, DWord], "K2 §3.4.3.1: «MOVE DI # 100, %SMD208» (a MOVE box with typed operands)"),
     m("MOVE", &[WordLit, Word], "K2 §3.4.3.1: «MOVE DI # 100, %SMD208»; typed literals as §3.4.2.3 «SMB67 = B # 16 # 85»"),
     m("MOVE", &[Word, Word], "K2 §3.4.3.1: «MOVE DI # 100, %SMD208» (MOVE takes the output's type)"),
     m("MOVE", &[Byte, Byte], "K2 §3.4.3.1: «MOVE DI # 100, %SMD208» (MOVE takes the output's type)"),
@@ -155,8 +154,6 @@ pub static FORMS: &[Form] = &[
     x("ALD", &[], "S7-200 IL; not in the K2 manual", "two contact groups in series"),
     x("ADD", &[IntLit, Word], "S7-200 IL (+I) / IEC ADD; not in the K2 manual", "an ADD box IN1 = the word, IN2 = 1, OUT = the word"),
     x("ADD", &[Word, Word], "S7-200 IL (+I) / IEC ADD; not in the K2 manual", "an ADD box IN1 = OUT, IN2 = the first operand"),
-    x("ADD", &[DWord, DWord], "S7-200 IL (+D) / IEC ADD; not in the K2 manual", "an ADD box (DINT) IN1 = OUT, IN2 = the first operand"),
-    x("I_DI", &[Word, DWord], "S7-200 IL; not in the K2 manual", "an I_DI (INT to DINT) box"),
     x("LDW=", &[Word, IntLit], "S7-200 IL compare contact; not in the K2 manual", "a ==I compare contact"),
     x("LDW<>", &[Word, Word], "S7-200 IL compare contact; not in the K2 manual", "a <>I compare contact"),
     x("LDW<", &[Word, IntLit], "S7-200 IL compare contact; not in the K2 manual", "a <I compare contact"),
@@ -164,13 +161,12 @@ pub static FORMS: &[Form] = &[
     x("AW=", &[Word, IntLit], "S7-200 IL compare contact; not in the K2 manual", "a ==I compare contact in series"),
     x("AW<", &[Word, IntLit], "S7-200 IL compare contact; not in the K2 manual", "a <I compare contact in series"),
     x("AW>", &[Word, IntLit], "S7-200 IL compare contact; not in the K2 manual", "a >I compare contact in series"),
+    x("AW>=", &[Word, IntLit], "S7-200 IL compare contact; not in the K2 manual", "a >=I compare contact in series"),
     x("AW<=", &[Word, IntLit], "S7-200 IL compare contact; not in the K2 manual", "a <=I compare contact in series"),
     x("OW>", &[Word, IntLit], "S7-200 IL compare contact; not in the K2 manual", "a >I compare contact in parallel"),
     x("AB=", &[Byte, Byte], "S7-200 IL compare contact; not in the K2 manual", "a ==B compare contact in series"),
     x("JMPC", &[Label], "IEC 61131-3 IL; not in the K2 manual", "a JMP coil to the label, or drop it: it only skips the checks on scans without a request"),
     x("label:", &[], "IEC 61131-3 IL; not in the K2 manual", "a LBL at the network"),
-    x("MOVE", &[Pointer, DWord], "S7-200 indirect addressing (&); not in the K2 manual — VARIANT (commands 1, 2)", "one MOVE box per SM byte instead of the pointer copy"),
-    x("BMB", &[Indirect, Indirect, Word], "S7-200 IL block move with indirect (*) operands; not in the K2 manual — VARIANT (commands 1, 2)", "one MOVE box per SM byte, enabled by ARG1 <= byte < ARG1 + ARG2"),
 ];
 
 /// The form of one line of IL (comments already removed): its mnemonic and operand kinds.
@@ -225,25 +221,8 @@ pub fn markdown() -> String {
 mod tests {
     use super::super::{il, protocol as p};
     use super::*;
-    use crate::k2::catalog::{Model, EEPROM_FIRST, MODELS};
-    use crate::k2::sm_map::{HSC_MODES, HSC_REGS, PTO_REGS};
-
-    /// The SM bytes the manual's rows give `model`: SMB0 (system bits) and the registers of
-    /// its pulse outputs (§3.4.2.2, §3.4.3.1) and counters (§3.3.2, §3.3.3).
-    fn sm_rows(model: &Model) -> Vec<u32> {
-        let mut v = vec![0];
-        for r in PTO_REGS.iter().filter(|r| model.pto(r.channel).is_some()) {
-            v.extend([r.status, r.control, r.pos_control]);
-            v.extend([r.cycle, r.width, r.profile].iter().flat_map(|&a| a..a + 2));
-            v.extend([r.count, r.pos_cv, r.pos_new_cv].iter().flat_map(|&a| a..a + 4));
-        }
-        for r in HSC_REGS.iter().filter(|r| model.hsc(r.channel).is_some()) {
-            v.extend([r.status, r.control, r.mpv_control, r.segment]);
-            v.extend(r.table..r.table + 2);
-            v.extend([r.cv, r.pv].iter().flat_map(|&a| a..a + 4));
-        }
-        v
-    }
+    use crate::k2::catalog::{EEPROM_FIRST, MODELS};
+    use crate::k2::sm_map::HSC_MODES;
 
     fn bases() -> Vec<u32> {
         vec![0, 2, 2000, p::DEFAULT_BASE, EEPROM_FIRST - il::TOTAL_SIZE]
@@ -255,7 +234,7 @@ mod tests {
     #[test]
     fn every_generated_helper_uses_only_the_tables_forms_and_the_models_rows() {
         for model in MODELS {
-            let rows = sm_rows(model);
+            let rows = p::sm_rows(model);
             for base in bases() {
                 assert!(il::refuse(model, base).is_none(), "{} at VB{base}", model.name);
                 let text = il::program(model, base);
@@ -318,7 +297,8 @@ mod tests {
         let il = il::program(model, p::DEFAULT_BASE);
         let lines = code_lines(&il);
         assert!(!lines.iter().any(|l| l.starts_with("= ") || l.starts_with("=\t")), "no `=`");
-        assert!(!lines.iter().any(|l| l.starts_with("BLKMOVE")), "one block-move mnemonic (BMB)");
+        assert!(!lines.iter().any(|l| l.starts_with("BLKMOVE") || l.starts_with("BMB")), "no block move");
+        assert!(!lines.iter().any(|l| l.contains('&') || l.contains('*')), "no pointer");
         for l in &lines {
             let (mn, ops) = form_of(l);
             if mn == "MOVE" || mn.starts_with("LDW") || mn.starts_with("AW") || mn.starts_with("OW") {
@@ -327,6 +307,23 @@ mod tests {
         }
         for f in FORMS {
             assert!(il.contains(&f.shape()), "the header names `{}`", f.shape());
+        }
+    }
+
+    /// The table is exact: every form in it is used by some generated helper.
+    #[test]
+    fn every_form_of_the_table_is_used() {
+        let mut used = std::collections::HashSet::new();
+        for model in MODELS {
+            for line in code_lines(&il::program(model, p::DEFAULT_BASE)) {
+                let (mn, ops) = form_of(&line);
+                if let Some(f) = find(&mn, &ops) {
+                    used.insert(f.shape());
+                }
+            }
+        }
+        for f in FORMS {
+            assert!(used.contains(&f.shape()), "`{}` is in the table but no helper uses it", f.shape());
         }
     }
 

@@ -89,6 +89,78 @@ pub fn sm_end() -> u32 {
         .unwrap_or(1)
 }
 
+/// The SM bytes the manual's rows give `model`, sorted: SMB0 (the system bits) and the
+/// registers of its own pulse outputs (§3.4.2.2, §3.4.3.1) and counters (§3.3.2, §3.3.3),
+/// as plcsh's SM table names them. The helper reads and writes these bytes only, each by its
+/// fixed address.
+pub fn sm_rows(model: &Model) -> Vec<u32> {
+    let mut v = vec![0];
+    for r in PTO_REGS.iter().filter(|r| model.pto(r.channel).is_some()) {
+        v.extend([r.status, r.control, r.pos_control]);
+        v.extend([r.cycle, r.width, r.profile].iter().flat_map(|&a| a..a + 2));
+        v.extend([r.count, r.pos_cv, r.pos_new_cv].iter().flat_map(|&a| a..a + 4));
+    }
+    for r in sm_map::HSC_REGS.iter().filter(|r| model.hsc(r.channel).is_some()) {
+        v.extend([r.status, r.control, r.mpv_control, r.segment]);
+        v.extend(r.table..r.table + 2);
+        v.extend([r.cv, r.pv].iter().flat_map(|&a| a..a + 4));
+    }
+    v.sort_unstable();
+    v.dedup();
+    v
+}
+
+/// The SM blocks of the mailbox's data area, (first byte, one past the last register's last
+/// byte), in order, the same for every model (the bytes between two blocks are no register): SM byte b of block (s, e) travels in request or reply data byte b − s, so the
+/// helper copies each byte by its fixed address (no pointer). Made greedily from the
+/// registers of every channel (a register never straddles two blocks), each block at most
+/// [`DATA_MAX`] bytes.
+pub fn sm_blocks() -> Vec<(u32, u32)> {
+    let mut regs: Vec<(u32, u32)> = sm_map::names()
+        .iter()
+        .filter(|n| !matches!(n.size, sm_map::SmSize::Bit(_)))
+        .map(|n| {
+            let len = match n.size {
+                sm_map::SmSize::Word => 2,
+                sm_map::SmSize::DWord => 4,
+                _ => 1,
+            };
+            (n.byte, n.byte + len)
+        })
+        .collect();
+    regs.sort_unstable();
+    let mut blocks: Vec<(u32, u32)> = Vec::new();
+    for (a, b) in regs {
+        match blocks.last_mut() {
+            Some(last) if a < last.1 => last.1 = last.1.max(b),
+            Some(last) if b - last.0 <= DATA_MAX as u32 => last.1 = b,
+            _ => blocks.push((a, b)),
+        }
+    }
+    if let Some(first) = blocks.first_mut() {
+        first.0 = 0;
+    }
+    blocks
+}
+
+/// The block (first, end) SM byte `b` travels in: the last that starts at or before it.
+pub fn block_of(b: u32) -> (u32, u32) {
+    let blocks = sm_blocks();
+    *blocks.iter().rev().find(|(s, _)| *s <= b).unwrap_or(&blocks[0])
+}
+
+/// The bytes a read reply holds for `cmd` (the reply carries the whole block: SM byte b at
+/// b − the block's first byte); other commands' replies as they are.
+pub fn reply_of(cmd: &Command, reply: &[u8]) -> Option<Vec<u8>> {
+    match cmd {
+        Command::SmRead { start, len } => {
+            let off = (*start as u32 - block_of(*start as u32).0) as usize;
+            reply.get(off..off + *len as usize).map(<[u8]>::to_vec)
+        }
+        _ => Some(reply.to_vec()),
+    }
+}
+
 /// Parses a mailbox base (`VB3400`, `3400`): even, with the mailbox and the helper's
 /// scratch words below the E2PROM backup area (§2.2.8), so the helper never wears it.
 pub fn parse_base(text: &str) -> Result<u32, String> {
@@ -150,7 +222,13 @@ impl Command {
     /// (args, data) of the request block.
     fn args(&self) -> ([u16; 3], Vec<u8>) {
         match self {
-            Command::SmWrite { start, data } => ([*start, data.len() as u16, 0], data.clone()),
+            Command::SmWrite { start, data } => {
+                // SM byte b travels at data byte b − its block's first byte.
+                let off = (*start as u32 - block_of(*start as u32).0) as usize;
+                let mut d = vec![0; off];
+                d.extend_from_slice(data);
+                ([*start, data.len() as u16, 0], d)
+            }
             Command::SmRead { start, len } => ([*start, *len, 0], Vec::new()),
             Command::Pls(n) | Command::Hsc(n) | Command::Pstop(n) => ([*n as u16, 0, 0], Vec::new()),
             Command::Hdef { hsc, mode } => ([*hsc as u16, *mode as u16, 0], Vec::new()),
@@ -170,7 +248,11 @@ impl Command {
         }
         let len = args[1] as usize;
         Ok(match code {
-            1 => Command::SmWrite { start: args[0], data: data[..len].to_vec() },
+            1 => {
+                let off = (args[0] as u32 - block_of(args[0] as u32).0) as usize;
+                let bytes = data.get(off..off + len).ok_or((ResultCode::BadRange, 0))?;
+                Command::SmWrite { start: args[0], data: bytes.to_vec() }
+            }
             2 => Command::SmRead { start: args[0], len: args[1] },
             3 => Command::Pls(args[0] as u8),
             4 => Command::Hdef { hsc: args[0] as u8, mode: u8::try_from(args[1]).map_err(|_| (ResultCode::BadMode, 0))? },
@@ -239,6 +321,9 @@ pub enum Test {
     Overlaps(u16, u16),
     /// Every request of the row's commands (the model has no such channel at all).
     Always,
+    /// ARG1 is in `lo` … `hi` and ARG1 + ARG2 is above `end`: the range runs out of its
+    /// SM block (both bounded by earlier rows: no overflow).
+    Span(u16, u16, u16),
 }
 
 /// The largest INT: every bound in [`checks`] stays at or below it.
@@ -271,6 +356,7 @@ impl Check {
             Test::EndAbove(limit) => a1 + a2 > limit as u32,
             Test::Overlaps(lo, hi) => a1 < hi as u32 && a1 + a2 > lo as u32,
             Test::Always => true,
+            Test::Span(lo, hi, end) => (lo as u32..=hi as u32).contains(&a1) && a1 + a2 > end as u32,
         }
     }
 }
@@ -316,6 +402,35 @@ pub fn checks(model: &Model) -> Vec<Check> {
             why: format!("the last byte is SMB{sm_last} at most (SMD{} is the highest register the manual names)", sm_last - 3),
         },
     ];
+    for (s, e) in sm_blocks() {
+        if e < end as u32 {
+            v.push(Check {
+                commands: sm,
+                test: Test::Span(s as u16, e as u16 - 1, e as u16),
+                result: ResultCode::BadRange,
+                why: format!("SMB{s}..SMB{} is one block: split there", e - 1),
+            });
+        }
+    }
+    let rows = sm_rows(model);
+    let mut b = 1;
+    while b < end as u32 {
+        if rows.contains(&b) {
+            b += 1;
+            continue;
+        }
+        let gap = b;
+        while b < end as u32 && !rows.contains(&b) {
+            b += 1;
+        }
+        let name = if b - gap == 1 { format!("SMB{gap}") } else { format!("SMB{gap}..SMB{}", b - 1) };
+        v.push(Check {
+            commands: sm,
+            test: Test::Overlaps(gap as u16, b as u16),
+            result: ResultCode::BadRange,
+            why: format!("{name}: no register of {} the manual names", model.name),
+        });
+    }
     for r in PTO_REGS.iter().filter(|r| model.pto(r.channel).is_some()) {
         let at = r.pos_cv as u16;
         v.push(Check {
@@ -361,6 +476,7 @@ pub fn checks_markdown(model: &Model) -> String {
             Test::EndAbove(l) => format!("argument 1 + argument 2 > {l}"),
             Test::Overlaps(lo, hi) => format!("bytes argument 1 … argument 1 + argument 2 − 1 meet {lo}…{}", hi - 1),
             Test::Always => "always".to_string(),
+            Test::Span(lo, hi, e) => format!("argument 1 in {lo}…{hi} and argument 1 + argument 2 > {e}"),
         };
         s.push_str(&format!("| {} | {cmds} | {test} | {} {} | {} |\n", i + 1, c.result.code(), c.result.name(), c.why));
     }
@@ -393,6 +509,10 @@ pub enum StatusCause {
     NotLatched = 2,
     /// After HSC: the counter's status bit 3, "multi-PV table fault" (§3.3.2).
     PvTable = 3,
+    /// PLS found the channel's enable bit SM67.7 … clear and the channel idle (PTO and PWM
+    /// idle bits SM66.7, SM66.3 …, §3.4.2.2): it had nothing to stop and started nothing. The
+    /// manual calls this no error; plcsh reports it as it does in process.
+    NothingToDo = 4,
 }
 
 impl ResultCode {
@@ -482,6 +602,13 @@ pub fn reason(model: &Model, cmd: &Command, result: ResultCode, cause: u8) -> (S
                     r.cycle, r.control, r.count, r.control, r.control
                 )),
             ),
+            None => (result.to_string(), None),
+        },
+        (ResultCode::StatusBit, Command::Pls(n)) if cause == StatusCause::NothingToDo as u8 => match pto(*n) {
+            Some(r) => {
+                let (m, h) = sm_map::pls_did_nothing(r);
+                (m, Some(h))
+            }
             None => (result.to_string(), None),
         },
         (ResultCode::StatusBit, Command::Pstop(n)) if cause == StatusCause::NotLatched as u8 => match pto(*n) {
@@ -649,10 +776,24 @@ pub fn execute_scan(
     let mut data = [0u8; DATA_MAX];
     data.copy_from_slice(&v[b + OFF_REQ_DATA as usize..b + SIZE as usize]);
     let ((result, cause), reply) = match Command::decode(model, code, args, &data) {
-        Ok(cmd) => match exec(cmd) {
-            Ok(r) => ((ResultCode::Ok, 0), r),
-            Err(rc) => ((rc, 0), Vec::new()),
-        },
+        Ok(cmd) => {
+            let read = match cmd {
+                Command::SmRead { start, .. } => Some(start as u32 - block_of(start as u32).0),
+                _ => None,
+            };
+            match exec(cmd) {
+                // A read's reply is the whole block: SM byte b at b − the block's first byte.
+                Ok(r) => match read {
+                    Some(off) => {
+                        let mut full = vec![0; DATA_MAX];
+                        full[off as usize..off as usize + r.len()].copy_from_slice(&r);
+                        ((ResultCode::Ok, 0), full)
+                    }
+                    None => ((ResultCode::Ok, 0), r),
+                },
+                Err(rc) => ((rc, 0), Vec::new()),
+            }
+        }
         Err(rc) => (rc, Vec::new()),
     };
     let v = mem.v_mut();
@@ -739,7 +880,8 @@ mod tests {
         let mut m = Buf(vec![0; 4096]);
         write_request(&mut m, 1, 7, &Command::SmRead { start: 66, len: 3 });
         execute_scan(model(), &mut m, DEFAULT_BASE, &mut |_| Ok(vec![0x80, 1, 2]));
-        assert_eq!(status(&m).reply, vec![0x80, 1, 2]);
+        let cmd = Command::SmRead { start: 66, len: 3 };
+        assert_eq!(reply_of(&cmd, &status(&m).reply), Some(vec![0x80, 1, 2]), "at SMB66's place in its block");
         write_request(&mut m, 2, 9, &Command::Pls(0));
         execute_scan(model(), &mut m, DEFAULT_BASE, &mut |_| Ok(Vec::new()));
         let s = status(&m);
@@ -787,6 +929,29 @@ mod tests {
         let doc = include_str!("../../../docs/agent.md");
         let table = checks_markdown(model());
         assert!(doc.contains(&table), "docs/agent.md lacks the current table of checks:\n{table}");
+    }
+
+    /// The blocks run in order over SMB0…SMB265, none is longer than the data area, and no register of
+    /// any channel straddles two of them.
+    #[test]
+    fn sm_blocks_tile_the_window_and_hold_whole_registers() {
+        let blocks = sm_blocks();
+        assert_eq!(blocks.first().unwrap().0, 0);
+        assert_eq!(blocks.last().unwrap().1, sm_end());
+        for w in blocks.windows(2) {
+            assert!(w[0].1 <= w[1].0, "{w:?}");
+        }
+        for (s, e) in &blocks {
+            assert!(e - s <= DATA_MAX as u32, "SMB{s}..SMB{e}");
+        }
+        for n in sm_map::names() {
+            let len = match n.size {
+                sm_map::SmSize::Word => 2,
+                sm_map::SmSize::DWord => 4,
+                _ => 1,
+            };
+            assert_eq!(block_of(n.byte), block_of(n.byte + len - 1), "SM byte {} ({})", n.byte, n.meaning);
+        }
     }
 
     #[test]

@@ -243,7 +243,7 @@ impl AgentProbe {
     ) -> Result<(), String> {
         let reply = self.status().reply;
         let want_len = match (result, code) {
-            (ResultCode::Ok, 2) => args[1] as usize,
+            (ResultCode::Ok, 2) => DATA_MAX,
             (ResultCode::Ok, 8) => 8,
             _ => 0,
         };
@@ -253,15 +253,18 @@ impl AgentProbe {
         let sm = &self.sim.mem.sm;
         let owned = cpu_owned();
         if result == ResultCode::Ok && code == 2 {
+            // The reply is the block: SM byte b at b − the block's first byte.
             let start = args[0] as usize;
-            for (k, b) in reply.iter().enumerate() {
+            let off = start - p::block_of(start as u32).0 as usize;
+            for (k, b) in reply[off..off + args[1] as usize].iter().enumerate() {
                 if !owned.contains(&(start + k)) && sm[start + k] != *b {
                     return Err(format!("{what}: reply byte {k} is {b}, SMB{} is {}", start + k, sm[start + k]));
                 }
             }
         }
         if let Some((start, len)) = written {
-            for (k, want) in data[..len].iter().enumerate() {
+            let off = start - p::block_of(start as u32).0 as usize;
+            for (k, want) in data[off..off + len].iter().enumerate() {
                 let byte = start + k;
                 if !owned.contains(&byte) && !is_position_control(byte) && sm[byte] != *want {
                     return Err(format!("{what}: SMB{byte} is {}, the request wrote {want}", sm[byte]));
@@ -464,8 +467,10 @@ mod tests {
         assert_ne!(signed, il);
         let mut probe = AgentProbe::new();
         probe.sim.load_helper(&signed, "signed.il").unwrap();
+        // It copies no SM byte by pointer any more, so it no longer faults: it acknowledges
+        // a read it should have refused.
         let e = probe.request(2, [40000, 1, 0], &[0; DATA_MAX]).unwrap_err();
-        assert!(e.contains("left RUN"), "{e}");
+        assert!(e.contains("the protocol says"), "{e}");
         let mut probe = AgentProbe::new();
         probe.sim.load_helper(&signed, "signed.il").unwrap();
         let e = probe.request(3, [40000, 0, 0], &[0; DATA_MAX]).unwrap_err();
