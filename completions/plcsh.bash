@@ -377,17 +377,17 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__agent__subcmd__il)
-            opts="-v -d -j -h --base --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --device-timeout --help"
+            opts="-v -d -j -h --model --base --json --verbose --device --time --config --state --record --bench --read-only --jobs --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
             fi
             case "${prev}" in
-                --base)
+                --model)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
-                --model)
+                --base)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;

@@ -242,8 +242,8 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_s
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -f -a "il" -d 'Print the helper program (K2 instruction list) for KincoBuilder'
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l model -d 'The PLC\'s model: the helper runs only the pulse outputs, counters and counter modes this model has (default: the default simulated model)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l base -d 'Mailbox base: an even V byte address below the E2PROM area (VB3648)' -r
-complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
