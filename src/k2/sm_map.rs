@@ -114,7 +114,10 @@ pub fn pls_did_nothing(r: &PtoRegs) -> (String, String) {
             "PLS {} did nothing: the enable bit SM{}.7 of the control byte SMB{} is clear and PTO{} is idle",
             r.channel, r.control, r.control, r.channel
         ),
-        format!("set SMB{}=16#85 (enable, PTO, update cycle and count), SMW{} and SMD{}, then PLS {}", r.control, r.cycle, r.count, r.channel),
+        format!(
+            "set SMB{}=16#85 (enable, PTO, update cycle and count), SMW{} and SMD{}, then PLS {}",
+            r.control, r.cycle, r.count, r.channel
+        ),
     )
 }
 

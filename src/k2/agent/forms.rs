@@ -241,11 +241,16 @@ mod tests {
                 for line in code_lines(&text) {
                     let (mn, ops) = form_of(&line);
                     assert!(find(&mn, &ops).is_some(), "{} VB{base}: `{line}` has a form the table lacks", model.name);
-                    let args: Vec<&str> = line.split_once(char::is_whitespace).map_or(vec![], |(_, r)| r.split(',').collect());
+                    let args: Vec<&str> =
+                        line.split_once(char::is_whitespace).map_or(vec![], |(_, r)| r.split(',').collect());
                     for a in &args {
                         match address(a) {
                             Some(("SM", _, b)) => {
-                                assert!(rows.contains(&b), "{} VB{base}: `{line}`: SMB{b} is not a row of this model", model.name)
+                                assert!(
+                                    rows.contains(&b),
+                                    "{} VB{base}: `{line}`: SMB{b} is not a row of this model",
+                                    model.name
+                                )
                             }
                             Some((_, k, b)) => {
                                 let size = match k {

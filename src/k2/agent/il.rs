@@ -439,7 +439,11 @@ pub fn program(model: &'static Model, base: u32) -> String {
         g.line("A", &format!("%SM{}.4", r.status), "cycle time or pulse count invalid (section 3.4.2.2)");
         g.line("MOVE", &format!("{}, {result}", status(p::StatusCause::PtoInvalid)), "result 8, cause 1: status bit 4");
         g.line("LD", &idle, "");
-        g.line("MOVE", &format!("{}, {result}", status(p::StatusCause::NothingToDo)), "result 8, cause 4: nothing to do");
+        g.line(
+            "MOVE",
+            &format!("{}, {result}", status(p::StatusCause::NothingToDo)),
+            "result 8, cause 4: nothing to do",
+        );
     }
 
     g.net("command 4: HDEF ARG1, ARG2 - one line per counter and mode of section 3.3.1 on this model; the manual names no status for HDEF: its ENO is read");
@@ -776,6 +780,16 @@ mod tests {
         probe.sim.load_helper(&jumping, "jumping.il").unwrap();
         let n = channels(&probe).len();
         assert_eq!(pls_twice(&mut probe, false), vec![100; n], "the second PLS is acknowledged but runs no train");
+    }
+
+    /// A model whose V area cannot hold the mailbox is refused, naming its last V byte.
+    #[test]
+    fn a_model_without_the_v_bytes_is_refused() {
+        let mut small = *default_model();
+        small.v_bytes = 2048;
+        let m = refuse(&small, p::DEFAULT_BASE).expect("refused");
+        assert!(m.contains("VB0…VB2047") && m.contains("VB3400…VB3587"), "{m}");
+        assert!(refuse(default_model(), p::DEFAULT_BASE).is_none());
     }
 
     #[test]

@@ -242,7 +242,12 @@ impl Command {
     /// is generated from ([`super::il`]), so the two give the same verdict on every request.
     /// A refusal comes with its cause: the row's number (1-based), as the helper writes it
     /// into the result word's high byte.
-    pub fn decode(model: &Model, code: u16, args: [u16; 3], data: &[u8; DATA_MAX]) -> Result<Command, (ResultCode, u8)> {
+    pub fn decode(
+        model: &Model,
+        code: u16,
+        args: [u16; 3],
+        data: &[u8; DATA_MAX],
+    ) -> Result<Command, (ResultCode, u8)> {
         if let Some((i, c)) = checks(model).iter().enumerate().find(|(_, c)| c.refuses(code, args)) {
             return Err((c.result, i as u8 + 1));
         }
@@ -255,7 +260,9 @@ impl Command {
             }
             2 => Command::SmRead { start: args[0], len: args[1] },
             3 => Command::Pls(args[0] as u8),
-            4 => Command::Hdef { hsc: args[0] as u8, mode: u8::try_from(args[1]).map_err(|_| (ResultCode::BadMode, 0))? },
+            4 => {
+                Command::Hdef { hsc: args[0] as u8, mode: u8::try_from(args[1]).map_err(|_| (ResultCode::BadMode, 0))? }
+            }
             5 => Command::Hsc(args[0] as u8),
             6 => Command::Pstop(args[0] as u8),
             7 => {
@@ -399,7 +406,10 @@ pub fn checks(model: &Model) -> Vec<Check> {
             commands: sm,
             test: Test::EndAbove(end),
             result: ResultCode::BadRange,
-            why: format!("the last byte is SMB{sm_last} at most (SMD{} is the highest register the manual names)", sm_last - 3),
+            why: format!(
+                "the last byte is SMB{sm_last} at most (SMD{} is the highest register the manual names)",
+                sm_last - 3
+            ),
         },
     ];
     for (s, e) in sm_blocks() {
@@ -919,9 +929,15 @@ mod tests {
         assert_eq!(a.result, ResultCode::UnknownCommand);
         assert!(ResultCode::BadRange.to_string().contains("64 bytes"));
         write_request(&mut m, 3, 1, &Command::SmWrite { start: 0, data: vec![1] });
-        assert_eq!(execute_scan(model(), &mut m, DEFAULT_BASE, &mut |_| panic!("SMB0")).unwrap().result, ResultCode::ReadOnly);
+        assert_eq!(
+            execute_scan(model(), &mut m, DEFAULT_BASE, &mut |_| panic!("SMB0")).unwrap().result,
+            ResultCode::ReadOnly
+        );
         write_request(&mut m, 4, 1, &Command::SmRead { start: 260, len: 20 });
-        assert_eq!(execute_scan(model(), &mut m, DEFAULT_BASE, &mut |_| panic!("past")).unwrap().result, ResultCode::BadRange);
+        assert_eq!(
+            execute_scan(model(), &mut m, DEFAULT_BASE, &mut |_| panic!("past")).unwrap().result,
+            ResultCode::BadRange
+        );
     }
 
     #[test]

@@ -122,7 +122,11 @@ fn pls_leaves_the_cr_as_it_was_and_a_refusal_shows_only_in_status_bit_4() {
         s.load_program(&text, "repro.il").unwrap();
         clock.step(Duration::from_millis(1));
         assert!(on(&mut s, "V0.0"), "{count}: the CR after PLS is the CR before it (§3.4.2)");
-        assert_eq!(on(&mut s, "SM66.4"), refused, "{count}: status bit 4, cycle time or pulse count invalid (§3.4.2.2)");
+        assert_eq!(
+            on(&mut s, "SM66.4"),
+            refused,
+            "{count}: status bit 4, cycle time or pulse count invalid (§3.4.2.2)"
+        );
         clock.step(Duration::from_millis(20));
         let pulses = if refused { 0 } else { 10 };
         assert_eq!(get(&mut s, "SMD212/DINT"), Value::Int(pulses), "{count}: a refused PLS starts no train");
