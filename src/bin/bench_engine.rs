@@ -100,9 +100,11 @@ fn helper_cost() {
         let mut s = sim::open(model.name, clock.clone()).unwrap();
         s.enable_agent(DEFAULT_BASE).unwrap();
         clock.step(Duration::from_millis(10));
+        s.advance();
         let (scans0, n0) = s.plc().map(|p| (p.stats.scans, p.stats.total_instructions)).unwrap();
         let t = Instant::now();
         clock.step(Duration::from_secs(60));
+        s.advance();
         let wall = t.elapsed();
         let p = s.plc().unwrap();
         let scans = p.stats.scans - scans0;

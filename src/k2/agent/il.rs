@@ -97,9 +97,18 @@ impl Gen {
     fn count(&self) -> String {
         self.w(OFF_SCRATCH + 2)
     }
-    /// "PLS finds its channel disabled and idle" (computed before PLS runs).
-    fn idle(&self) -> String {
-        format!("%V{}.0", self.base + OFF_SCRATCH + 5)
+    /// "PLS finds channel `n` disabled and idle" (computed before PLS runs, in the scan
+    /// that executes a PLS request; read in the same scan).
+    fn idle(&self, n: u8) -> String {
+        format!("%V{}.{n}", self.base + OFF_SCRATCH + 5)
+    }
+    /// Jumps to `label` unless this scan executes a valid request with command `code`: the
+    /// networks between read status bits and set results, and hold no instruction.
+    fn skip_unless(&mut self, code: u16, label: &str) {
+        let cmd = self.w(p::Field::Command.offset());
+        self.line("LDW<>", &format!("{cmd}, {}", int(code)), "");
+        self.line("ON", &self.valid(), "");
+        self.line("JMPC", label, "no instruction in between");
     }
     /// "The request writes SM block `k`" ([`p::sm_blocks`]).
     fn block(&self, k: usize) -> String {
@@ -425,26 +434,39 @@ pub fn program(model: &'static Model, base: u32) -> String {
     g.line("LD", "%SM0.0", "");
     g.line("R", &format!("{ok}, 1"), "set below by the instruction's ENO");
 
-    g.net("command 3: PLS ARG1 - evaluated every scan: its enable is on in the request's scan only, a rising edge each time (section 3.4.2); PLS leaves the CR as it was, so its verdict is the channel's status bit 4 (section 3.4.2.2)");
-    let idle = g.idle();
+    let a1 = g.w(p::Field::Arg1.offset());
+    g.net("command 3, before PLS: is the channel disabled and idle, so that PLS will have nothing to do? (section 3.4.2.2: enable bit 7 of the control byte, idle bits 7 and 3 of the status byte)");
+    g.skip_unless(Command::Pls(0).code(), "PLS_READY");
+    for r in &ptos {
+        g.line("LDW=", &format!("{a1}, {}", int(r.channel)), "");
+        g.line("AN", &format!("%SM{}.7", r.control), "enable bit clear");
+        g.line("A", &format!("%SM{}.7", r.status), "PTO idle");
+        g.line("A", &format!("%SM{}.3", r.status), "PWM idle");
+        g.line("ST", &g.idle(r.channel), "");
+    }
+    g.label("PLS_READY");
+
+    g.net("command 3: PLS ARG1 - evaluated every scan: its enable is on in the request's scan only, a rising edge each time (section 3.4.2)");
     for r in &ptos {
         g.when_arg(Command::Pls(0).code(), r.channel as u32, None);
-        g.line("AN", &format!("%SM{}.7", r.control), "enable bit clear (section 3.4.2.2)");
-        g.line("A", &format!("%SM{}.7", r.status), "PTO idle");
-        g.line("A", &format!("%SM{}.3", r.status), "PWM idle: PLS will have nothing to stop");
-        g.line("ST", &idle, "");
-        g.when_arg(Command::Pls(0).code(), r.channel as u32, None);
         g.line("R", &format!("%SM{}.4, 1", r.status), "a bit left by an earlier refusal is not this PLS's");
-        g.line("PLS", &r.channel.to_string(), "the CR is still the enable (section 3.4.2)");
-        g.line("A", &format!("%SM{}.4", r.status), "cycle time or pulse count invalid (section 3.4.2.2)");
+        g.line("PLS", &r.channel.to_string(), "leaves the CR as it was (section 3.4.2)");
+    }
+
+    g.net("command 3, after PLS: its verdict is the channel's status bit 4, cycle time or pulse count invalid (section 3.4.2.2), as PLS leaves the CR as it was");
+    g.skip_unless(Command::Pls(0).code(), "PLS_DONE");
+    for r in &ptos {
+        g.line("LDW=", &format!("{a1}, {}", int(r.channel)), "");
+        g.line("A", &format!("%SM{}.4", r.status), "");
         g.line("MOVE", &format!("{}, {result}", status(p::StatusCause::PtoInvalid)), "result 8, cause 1: status bit 4");
-        g.line("LD", &idle, "");
+        g.line("LD", &g.idle(r.channel), "");
         g.line(
             "MOVE",
             &format!("{}, {result}", status(p::StatusCause::NothingToDo)),
             "result 8, cause 4: nothing to do",
         );
     }
+    g.label("PLS_DONE");
 
     g.net("command 4: HDEF ARG1, ARG2 - one line per counter and mode of section 3.3.1 on this model; the manual names no status for HDEF: its ENO is read");
     for &(hsc, mode, what) in HSC_MODES.iter().filter(|m| model.hsc(m.0).is_some()) {
@@ -465,11 +487,13 @@ pub fn program(model: &'static Model, base: u32) -> String {
     g.when(Command::Hsc(0).code());
     g.line("AN", &ok, "");
     g.line("MOVE", &format!("{}, {result}", word(p::ResultCode::InstructionFailed.code())), "");
+    g.skip_unless(Command::Hsc(0).code(), "HSC_DONE");
     for r in &hscs {
-        g.when_arg(Command::Hsc(0).code(), r.channel as u32, None);
+        g.line("LDW=", &format!("{a1}, {}", int(r.channel)), "");
         g.line("A", &format!("%SM{}.3", r.status), "fault in the multi-PV table (section 3.3.2)");
         g.line("MOVE", &format!("{}, {result}", status(p::StatusCause::PvTable)), "result 8, cause 3");
     }
+    g.label("HSC_DONE");
 
     g.net("command 6: PSTOP ARG1 - stop the channel and latch its emergency-stop bit (section 3.4.3.1); runs every scan, acts on EXEC's rising edge; the latch is its verdict");
     let (exec, done, errid) = (g.exec(), g.done(), g.errid());
@@ -478,10 +502,14 @@ pub fn program(model: &'static Model, base: u32) -> String {
         g.line("ST", &exec, "EXEC: on in this request's scan only");
         g.line("LD", "%SM0.0", "");
         g.line("PSTOP", &format!("{}, {exec}, {done}, {errid}", r.channel), "AXIS, EXEC, DONE, ERRID");
-        g.line("LD", &exec, "");
+    }
+    g.skip_unless(Command::Pstop(0).code(), "PSTOP_DONE");
+    for r in &ptos {
+        g.line("LDW=", &format!("{a1}, {}", int(r.channel)), "");
         g.line("AN", &format!("%SM{}.7", r.pos_control), "PSTOP sets it (section 3.4.3.1)");
         g.line("MOVE", &format!("{}, {result}", status(p::StatusCause::NotLatched)), "result 8, cause 2");
     }
+    g.label("PSTOP_DONE");
 
     g.net("commands 7 and 8: SET_RTC from the request data, READ_RTC into the reply; the manual names no status for them: SET_RTC's ENO is read");
     g.when(Command::SetRtc([0; 8]).code());
@@ -495,6 +523,8 @@ pub fn program(model: &'static Model, base: u32) -> String {
     g.line("MOVE", &format!("{}, {}", word(8), g.w(p::OFF_REPLY_LEN)), "");
 
     g.net("acknowledge: shift acks 0-2 to 1-3 word by word, then ack 0 = (sequence, token, result), sequence last");
+    g.line("LDN", &flag, "");
+    g.line("JMPC", "ACKED", "no request executed: nothing to acknowledge (no instruction in between)");
     g.line("LD", &flag, "");
     for k in (0..9u32).rev() {
         let what = format!("ack {} -> ack {}", k / 3, k / 3 + 1);
@@ -503,6 +533,7 @@ pub fn program(model: &'static Model, base: u32) -> String {
     g.line("MOVE", &format!("{}, {}", g.w(p::OFF_REQUEST + 2), g.w(p::OFF_ACKS + 2)), "token");
     g.line("MOVE", &format!("{result}, {}", g.w(p::OFF_ACKS + 4)), "result");
     g.line("MOVE", &format!("{}, {}", g.w(p::OFF_REQUEST), g.w(p::OFF_ACKS)), "sequence: the ack is complete");
+    g.label("ACKED");
     g.out
 }
 
@@ -585,7 +616,7 @@ mod tests {
                 assert!(!INSTRUCTIONS.contains(&op(skipped).as_str()), "`{l}` jumps over `{skipped}`");
             }
         }
-        assert_eq!(jumps, 2, "past the checks and past the SM copies");
+        assert!(jumps >= 2, "past the checks and past the SM copies, at least");
         for name in INSTRUCTIONS {
             assert!(lines.iter().any(|l| op(l) == name), "{name} is in the program");
         }
