@@ -69,6 +69,11 @@ fn hour() {
     let clock = Clock::stepped();
     let mut s = sim::open("K205-16DT", clock.clone()).unwrap();
     s.enable_agent(DEFAULT_BASE).unwrap();
+    // BENCH_HELPER=FILE runs another helper text (an older one, to compare on one machine).
+    if let Ok(path) = std::env::var("BENCH_HELPER") {
+        let text = std::fs::read_to_string(&path).unwrap();
+        s.load_helper(&text, &path).unwrap();
+    }
     s.load_program(&user_program(), "user.il").unwrap();
     let polls = s.space().parse("SMB66").unwrap();
     // BENCH_SECONDS shortens the run (for callgrind).
