@@ -333,8 +333,8 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             break
         }
         'plcsh;agent;il' {
+            [CompletionResult]::new('--model', '--model', [CompletionResultType]::ParameterName, 'The PLC''s model: the helper runs only the pulse outputs, counters and counter modes this model has (default: the default simulated model)')
             [CompletionResult]::new('--base', '--base', [CompletionResultType]::ParameterName, 'Mailbox base: an even V byte address below the E2PROM area (VB3648)')
-            [CompletionResult]::new('--model', '--model', [CompletionResultType]::ParameterName, 'Model of the default simulated PLC')
             [CompletionResult]::new('-d', '-d', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
             [CompletionResult]::new('--device', '--device', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
             [CompletionResult]::new('--time', '--time', [CompletionResultType]::ParameterName, 'Simulator time: follow the wall clock, or move only when stepped')

@@ -141,7 +141,12 @@ fn a_request_with_a_huge_start_is_refused_and_the_helper_keeps_running() {
         assert!(start.elapsed() < Duration::from_secs(20), "the request was never acknowledged");
         std::thread::sleep(Duration::from_millis(5));
     }
-    assert_eq!(read(&mut s, "VW3412"), 2, "result 2: bad range");
+    // The result word: the code in the low byte, the cause (the row of the checks) above.
+    let word = read(&mut s, "VW3412");
+    assert_eq!(word & 0xFF, 2, "result 2: bad range");
+    let row =
+        &plcsh::k2::agent::protocol::checks(plcsh::k2::catalog::lookup("K205-16DT").unwrap())[(word >> 8) as usize - 1];
+    assert!(row.why.contains("SMB0..SMB265"), "cause {}: {}", word >> 8, row.why);
     // The heartbeat moves: the PLC still scans (waited for, however late a loaded machine
     // schedules the server).
     let beat = read(&mut s, "VW3404");
@@ -205,7 +210,7 @@ fn lua_reaches_the_helper_on_a_wire_plc() {
         &script,
         r#"
 local plc = plcsh.device("plc")
-assert(plc:agent_status().message:find("helper protocol 2"))
+assert(plc:agent_status().message:find("helper protocol 3"))
 plc:set({"SMB67", 0x85}, {"SMW68", 500}, {"SMD72", 200})
 plc:pls(0)
 plcsh.wait_until(function() return plc["SM66.7"] end, {timeout = 5000, every = 10})
@@ -274,4 +279,77 @@ fn pls_and_pstop_act_every_time_they_are_asked_on_every_channel() {
             assert_eq!(s.get(&[latch.as_str()]).unwrap()[0].1.value, Value::Bool(false), "{latch} cleared");
         }
     }
+}
+
+/// A PLS the PLC refuses (pulse count 1; K2 §3.4.2.2: «Время цикла и количество импульсов
+/// должны быть больше 1») leaves the CR as it was (§3.4.2, «Это не повлияет на значение CR»),
+/// so the helper reads the channel's status bit 4: through `sim serve --agent` the refusal is
+/// reported with that bit and the manual's rule, the words the simulator uses in process —
+/// never "done by the helper". A write to SMD212 is refused with the read-only rule and the
+/// way to set it (SMD208 + SM201.4), as in process.
+#[test]
+fn a_refused_pls_and_a_read_only_write_are_reported_with_their_reasons() {
+    let srv = Server::start(&["--agent"]);
+    let line = "set SMB67=16#85, SMW68=1000, SMD72=1; pls 0";
+    let o = run(&["--json", "--device", &srv.url(), "-c", line], "");
+    let l = json_lines(&o);
+    let last = l.last().unwrap();
+    assert_ne!(last["ok"], true, "refused, not done: {l:?}");
+    let msg = last["error"]["message"].as_str().unwrap_or_else(|| panic!("{last}"));
+    assert!(msg.contains("SM66.4") && msg.contains("cycle and count must both be > 1, §3.4.2.2"), "{msg}");
+    assert!(!stdout(&o).contains("done by the helper"), "{}", stdout(&o));
+    let local = run(&["--json", "--time", "stepped", "-c", line], "");
+    let local = json_lines(&local);
+    let local_msg = local.last().unwrap()["error"]["message"].as_str().unwrap().to_string();
+    assert!(
+        local_msg.contains("SM66.4") && local_msg.contains("cycle and count must both be > 1, §3.4.2.2"),
+        "{local_msg}"
+    );
+
+    for (device, what) in [(Some(srv.url()), "helper"), (None, "in process")] {
+        let mut args = vec!["--json", "-c", "set SMD212=5"];
+        let d;
+        match &device {
+            Some(u) => {
+                d = u.clone();
+                args.extend(["--device", &d]);
+            }
+            None => args.extend(["--time", "stepped"]),
+        }
+        let l = json_lines(&run(&args, ""));
+        let e = &l.last().unwrap()["error"];
+        let m = e["message"].as_str().unwrap_or_else(|| panic!("{what}: {l:?}"));
+        assert!(
+            m.contains("SMD212 is the read-only current value of position channel 0 (manual §3.4.3.1)"),
+            "{what}: {m}"
+        );
+        let h = e["hint"].as_str().unwrap_or_else(|| panic!("{what}: {e}"));
+        assert!(h.contains("SMD208") && h.contains("SM201.4"), "{what}: {h}");
+    }
+}
+
+/// `plcsh agent il --model MODEL` prints the helper for that model only: the K209M's fourth
+/// pulse output (`PLS 3`, manual §3.4) and no HSC2 (§3.3), no PLS on the relay K205-16DR
+/// (§2.2.6), the default model's program is `lib/k2_agent.il`, and an unknown model is
+/// refused with the catalogue.
+#[test]
+fn the_helper_is_printed_for_the_model_it_goes_into() {
+    let il = |model: &str| {
+        let o = run(&["agent", "il", "--model", model], "");
+        assert!(o.status.success(), "{model}: {}", String::from_utf8_lossy(&o.stderr));
+        stdout(&o)
+    };
+    let k209m = il("K209M-56DT");
+    assert!(k209m.contains("\nPLS     3") && k209m.contains("\nPSTOP   3,"), "the K209M's Q0.5");
+    assert!(!k209m.contains("\nHDEF    2,") && k209m.contains("\nHDEF    1, 10"), "HSC0, HSC1 only");
+    let relay = il("K205-16DR");
+    assert!(!relay.contains("\nPLS ") && !relay.contains("\nPSTOP "), "no pulse outputs on relays");
+    let k205 = il("K205-16DT");
+    assert!(!k205.contains("\nPLS     3"), "PLS 0, 1, 2 only (§3.4.2: «Константа (0,1 или 2)»)");
+    let lib = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/lib/k2_agent.il")).unwrap();
+    assert_eq!(stdout(&run(&["agent", "il"], "")), lib, "the default model's helper is lib/k2_agent.il");
+    assert_eq!(k205, lib);
+    let o = run(&["agent", "il", "--model", "K999"], "");
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("K209M-56DT"), "the catalogue is named");
 }

@@ -218,12 +218,17 @@ fn ok(sh: &mut Shell, line: &str) {
 
 /// Everything a K2 command could change, read through the guarded device: V (without
 /// the helper's mailbox and scratch bytes VB3400…VB3587, which the helper program itself
-/// writes as it runs), SM (without
-/// SMB0's clock bits), Q, M, the
-/// clock's year.
+/// writes as it runs), SM (the registers the manual gives the model — what the helper
+/// reaches — without SMB0's clock bits), Q, M, the clock's year.
 fn k2_state(sh: &mut Shell) -> Vec<String> {
     let mut lines = Vec::new();
-    for r in ["VB0..VB3399", "VB3588..VB4095", "SMB1..SMB549", "QB0..QB1", "MB0..MB31"] {
+    let model = plcsh::k2::catalog::lookup("K205-16DT").unwrap();
+    let sm: Vec<String> =
+        plcsh::k2::agent::protocol::sm_rows(model).into_iter().filter(|b| *b != 0).map(|b| format!("SMB{b}")).collect();
+    let sm: Vec<&str> = sm.iter().map(String::as_str).collect();
+    let got = sh.session.get(&sm).unwrap_or_else(|e| panic!("get SM rows: {e}"));
+    lines.extend(got.iter().map(|(_, r)| format!("{}={}", r.operand, r.value)));
+    for r in ["VB0..VB3399", "VB3588..VB4095", "QB0..QB1", "MB0..MB31"] {
         let got = sh.session.get(&[r]).unwrap_or_else(|e| panic!("get {r}: {e}"));
         lines.extend(got.iter().map(|(_, r)| format!("{}={}", r.operand, r.value)));
     }

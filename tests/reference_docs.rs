@@ -237,6 +237,8 @@ fn the_message_catalogue_quotes_the_program() {
         "races to other clients",
         "did not acknowledge",
         "the helper in the PLC is version 1",
+        "the helper in the PLC is version 2",
+        "after PLS",
         "(Modbus exception",
         "a reply with an invalid CRC arrived",
         "the device did not answer: no reply from unit",

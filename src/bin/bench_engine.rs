@@ -7,6 +7,9 @@
 //!    a 1000-instruction user program at its modelled scan time, the clock stepped in 10 ms
 //!    steps with a status read per step (as a polling client would): wall time, scans,
 //!    instructions, memory.
+//! 3. The helper's own cost per catalogue model (`plcsh agent il --model`): the
+//!    instructions of an idle scan, the modelled scan time (cost table), and the wall time
+//!    per simulated scan, the helper alone.
 
 use plcsh::core::{Clock, Device, OperandSpace};
 use plcsh::engine::Cpu;
@@ -66,6 +69,11 @@ fn hour() {
     let clock = Clock::stepped();
     let mut s = sim::open("K205-16DT", clock.clone()).unwrap();
     s.enable_agent(DEFAULT_BASE).unwrap();
+    // BENCH_HELPER=FILE runs another helper text (an older one, to compare on one machine).
+    if let Ok(path) = std::env::var("BENCH_HELPER") {
+        let text = std::fs::read_to_string(&path).unwrap();
+        s.load_helper(&text, &path).unwrap();
+    }
     s.load_program(&user_program(), "user.il").unwrap();
     let polls = s.space().parse("SMB66").unwrap();
     // BENCH_SECONDS shortens the run (for callgrind).
@@ -90,8 +98,35 @@ fn hour() {
     s.backup.path = None;
 }
 
+/// The helper alone on every model: idle scans (no request), then one SM read per scan.
+fn helper_cost() {
+    for model in plcsh::k2::catalog::MODELS {
+        let clock = Clock::stepped();
+        let mut s = sim::open(model.name, clock.clone()).unwrap();
+        s.enable_agent(DEFAULT_BASE).unwrap();
+        clock.step(Duration::from_millis(10));
+        s.advance();
+        let (scans0, n0) = s.plc().map(|p| (p.stats.scans, p.stats.total_instructions)).unwrap();
+        let t = Instant::now();
+        clock.step(Duration::from_secs(60));
+        s.advance();
+        let wall = t.elapsed();
+        let p = s.plc().unwrap();
+        let scans = p.stats.scans - scans0;
+        println!(
+            "helper alone on {}: {} instructions per idle scan, modelled scan {:.3} ms (cost table), {:.2} µs wall per scan",
+            model.name,
+            (p.stats.total_instructions - n0) / scans.max(1),
+            p.stats.last_ns as f64 / 1e6,
+            wall.as_secs_f64() * 1e6 / scans.max(1) as f64
+        );
+        s.backup.path = None;
+    }
+}
+
 fn main() {
     raw_speed();
     hour();
+    helper_cost();
     println!("memory: VmRSS {} kB, VmHWM {} kB", mem_kb("VmRSS:"), mem_kb("VmHWM:"));
 }

@@ -315,7 +315,7 @@ impl K2Wire {
         };
         let mut dev = K2Wire::with_link(link, model, settings, url.text.clone())?;
         if let Some(a) = url.param("agent") {
-            dev.agent = Some(sm::client(a, dev.settings.timeout)?);
+            dev.agent = Some(sm::client(a, dev.settings.timeout, dev.space.model)?);
         }
         dev.connect().map_err(|e| match e {
             Failure::Link(e) => e,
@@ -666,7 +666,7 @@ impl Device for K2Wire {
             "word_order" => self.settings.word_order = WordOrder::parse(value)?,
             "timeout" => self.settings.timeout = parse_timeout(value)?,
             "retries" => self.settings.retries = parse_retries(value)?,
-            "agent" => self.agent = Some(sm::client(value, self.settings.timeout)?),
+            "agent" => self.agent = Some(sm::client(value, self.settings.timeout, self.space.model)?),
             _ => unreachable!("check_option knows every option"),
         }
         Ok(())

@@ -81,6 +81,54 @@ pub static PTO_REGS: [PtoRegs; 4] = [
     },
 ];
 
+/// The rule a refused PLS breaks, in the manual's words (§3.4.2.2, status bit 4: «Время
+/// цикла и количество импульсов должны быть больше 1»). The simulator's refusal and the
+/// helper's report of status bit 4 both quote it, so a user reads one explanation.
+pub const PTO_INVALID_RULE: &str = "cycle and count must both be > 1, §3.4.2.2";
+
+/// Why a write that meets `r`'s current value SMD212 … is refused (§3.4.3.1: «Только для
+/// чтения»), and how to set it instead: (message, hint). `written` names what was written
+/// (`SMD212`, `SMB212…SMB215`). In process and through the helper alike.
+pub fn pos_cv_read_only(r: &PtoRegs, written: &str) -> (String, String) {
+    let msg = if written == format!("SMD{}", r.pos_cv) {
+        format!("SMD{} is the read-only current value of position channel {} (manual §3.4.3.1)", r.pos_cv, r.channel)
+    } else {
+        format!(
+            "{written} overlaps SMD{}, the read-only current value of position channel {} (manual §3.4.3.1)",
+            r.pos_cv, r.channel
+        )
+    };
+    let hint = format!(
+        "load a new value through SMD{} and SM{}.4 (set SMD{}=100, SM{}.4=1), or clear it with SM{}.6",
+        r.pos_new_cv, r.pos_control, r.pos_new_cv, r.pos_control, r.pos_control
+    );
+    (msg, hint)
+}
+
+/// Why PLS did nothing: the channel's enable bit (SM67.7 …) is clear and it is idle, so
+/// there was nothing to stop and nothing started (§3.4.2.2): (message, hint). In process and
+/// through the helper alike.
+pub fn pls_did_nothing(r: &PtoRegs) -> (String, String) {
+    (
+        format!(
+            "PLS {} did nothing: the enable bit SM{}.7 of the control byte SMB{} is clear and PTO{} is idle",
+            r.channel, r.control, r.control, r.channel
+        ),
+        format!(
+            "set SMB{}=16#85 (enable, PTO, update cycle and count), SMW{} and SMD{}, then PLS {}",
+            r.control, r.cycle, r.count, r.channel
+        ),
+    )
+}
+
+/// Why a write to SMB0 is refused: (message, hint).
+pub fn smb0_read_only(written: &str) -> (String, String) {
+    (
+        format!("{written} holds the system status bits and is read-only"),
+        "SM0.0 is always on, SM0.1 marks the first scan, SM0.5 is the 1-second clock".to_string(),
+    )
+}
+
 /// Registers of one high-speed counter (§3.3.2, §3.3.3).
 #[derive(Clone, Copy, Debug)]
 pub struct HscRegs {

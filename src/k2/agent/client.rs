@@ -30,6 +30,9 @@ pub struct AgentClient {
     pub poll: Duration,
     /// Commands sent (for messages and tests).
     pub commands: u64,
+    /// The PLC's model: the helper's checks are the model's (`plcsh agent il --model`), and
+    /// a refusal's cause names one of them.
+    pub model: &'static crate::k2::catalog::Model,
 }
 
 /// A token that differs between sessions and processes (never 0).
@@ -67,6 +70,7 @@ impl AgentClient {
             timeout: Duration::from_secs(2),
             poll: Duration::from_millis(1),
             commands: 0,
+            model: crate::k2::catalog::lookup(crate::k2::catalog::DEFAULT_MODEL).expect("the default model"),
         }
     }
 
@@ -89,13 +93,21 @@ impl AgentClient {
                 self.base
             )));
         }
+        if s.version == 2 {
+            return Err(Error::new(
+                ErrorKind::Unsupported,
+                "the helper in the PLC is version 2, which reports a refused PLS as done (it read the CR, which PLS leaves as it was, manual §3.4.2)"
+                    .to_string(),
+            )
+            .hint(format!("download the current helper (version {}) into the PLC: `plcsh agent il --model MODEL` prints it (lib/k2_agent.il)", p::VERSION)));
+        }
         if s.version == 1 {
             return Err(Error::new(
                 ErrorKind::Unsupported,
                 "the helper in the PLC is version 1, which runs a repeated PLS or PSTOP on a channel only the first time"
                     .to_string(),
             )
-            .hint("download the current helper (version 2) into the PLC: `plcsh agent il` prints it (lib/k2_agent.il)"));
+            .hint(format!("download the current helper (version {}) into the PLC: `plcsh agent il --model MODEL` prints it (lib/k2_agent.il)", p::VERSION)));
         }
         if s.version != p::VERSION {
             return Err(Error::new(
@@ -157,13 +169,21 @@ impl AgentClient {
                 let s = self.status(regs)?;
                 if let Some((i, ack)) = s.find(seq, self.token) {
                     return match ack.result {
-                        ResultCode::Ok if i == 0 => Ok(s.reply),
+                        ResultCode::Ok if i == 0 => p::reply_of(cmd, &s.reply)
+                            .ok_or_else(|| Error::link(format!("the helper's reply to {what} is shorter than asked"))),
                         ResultCode::Ok if matches!(cmd, Command::SmRead { .. } | Command::ReadRtc) => break, // reply overwritten: read again
                         ResultCode::Ok => Ok(Vec::new()),
-                        rc => Err(Error::new(
-                            ErrorKind::Refused,
-                            format!("the helper refused {what}: {rc} (result {})", rc.code()),
-                        )),
+                        rc => {
+                            let (why, hint) = p::reason(self.model, cmd, rc, ack.cause);
+                            let e = Error::new(
+                                ErrorKind::Refused,
+                                format!("the helper refused {what}: {why} (result {}, cause {})", rc.code(), ack.cause),
+                            );
+                            Err(match hint {
+                                Some(h) => e.hint(h),
+                                None => e,
+                            })
+                        }
                     };
                 }
                 let lost = s.acks.iter().any(|a| a.seq == seq && a.token != self.token);

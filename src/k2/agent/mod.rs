@@ -3,5 +3,6 @@
 
 pub mod check;
 pub mod client;
+pub mod forms;
 pub mod il;
 pub mod protocol;

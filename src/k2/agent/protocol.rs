@@ -32,8 +32,8 @@
 //! retries; the four-entry ack history lets a client confirm its command even when another
 //! client's command ran right after it.
 
-use crate::k2::catalog::SM_BYTES;
-use crate::k2::sm_map::PTO_REGS;
+use crate::k2::catalog::Model;
+use crate::k2::sm_map::{self, PTO_REGS};
 use std::fmt;
 
 /// Mailbox base when the device does not say (`agent=VB3400`).
@@ -41,10 +41,14 @@ pub const DEFAULT_BASE: u32 = 3400;
 /// Bytes the mailbox occupies (VB3400…VB3571 by default).
 pub const SIZE: u32 = 172;
 pub const SIGNATURE: u16 = 0x4B41;
-/// Version 2: every command acts every time it is asked (docs/agent.md, "Every command acts
-/// every time"). A version-1 helper ran a repeated PLS or PSTOP only the first time, so plcsh
-/// refuses it with a message saying so rather than report a second pulse train it never ran.
-pub const VERSION: u16 = 2;
+/// Version 3: a refusal is read where the PLC reports it — after PLS the channel's status bit
+/// 4 (§3.4.2.2), after PSTOP the emergency-stop latch (§3.4.3.1), after HSC the counter's
+/// table-fault bit (§3.3.2) — and every result word carries its cause in the high byte
+/// (docs/agent.md, "Versions"). Version 2 took the CR after PLS as its success, which the
+/// manual says PLS leaves unchanged (§3.4.2), so it would report a refused PLS as done;
+/// version 1 also ran a repeated PLS or PSTOP only the first time. plcsh refuses both with a
+/// message saying so.
+pub const VERSION: u16 = 3;
 /// Largest data block of one command (SM bytes read or written at once).
 pub const DATA_MAX: usize = 64;
 /// Number of acknowledgements kept.
@@ -66,6 +70,96 @@ pub const REQUEST_WORDS: u16 = ((SIZE - OFF_REQUEST) / 2) as u16;
 pub const OFF_SCRATCH: u32 = SIZE;
 /// Bytes the helper program needs in all (mailbox + scratch).
 pub const TOTAL_SIZE: u32 = SIZE + 16;
+
+/// One past the highest SM byte the helper reaches: the end of the highest register the
+/// manual names (SMD262, §3.4.3.1 — plcsh's SM table, [`sm_map::names`]). The manual gives
+/// no SM size; the S7-200's SMB0…SMB549 is not assumed.
+pub fn sm_end() -> u32 {
+    sm_map::names()
+        .iter()
+        .map(|n| {
+            n.byte
+                + match n.size {
+                    sm_map::SmSize::Bit(_) | sm_map::SmSize::Byte => 1,
+                    sm_map::SmSize::Word => 2,
+                    sm_map::SmSize::DWord => 4,
+                }
+        })
+        .max()
+        .unwrap_or(1)
+}
+
+/// The SM bytes the manual's rows give `model`, sorted: SMB0 (the system bits) and the
+/// registers of its own pulse outputs (§3.4.2.2, §3.4.3.1) and counters (§3.3.2, §3.3.3),
+/// as plcsh's SM table names them. The helper reads and writes these bytes only, each by its
+/// fixed address.
+pub fn sm_rows(model: &Model) -> Vec<u32> {
+    let mut v = vec![0];
+    for r in PTO_REGS.iter().filter(|r| model.pto(r.channel).is_some()) {
+        v.extend([r.status, r.control, r.pos_control]);
+        v.extend([r.cycle, r.width, r.profile].iter().flat_map(|&a| a..a + 2));
+        v.extend([r.count, r.pos_cv, r.pos_new_cv].iter().flat_map(|&a| a..a + 4));
+    }
+    for r in sm_map::HSC_REGS.iter().filter(|r| model.hsc(r.channel).is_some()) {
+        v.extend([r.status, r.control, r.mpv_control, r.segment]);
+        v.extend(r.table..r.table + 2);
+        v.extend([r.cv, r.pv].iter().flat_map(|&a| a..a + 4));
+    }
+    v.sort_unstable();
+    v.dedup();
+    v
+}
+
+/// The SM blocks of the mailbox's data area, (first byte, one past the last register's last
+/// byte), in order, the same for every model (the bytes between two blocks are no register): SM byte b of block (s, e) travels in request or reply data byte b − s, so the
+/// helper copies each byte by its fixed address (no pointer). Made greedily from the
+/// registers of every channel (a register never straddles two blocks), each block at most
+/// [`DATA_MAX`] bytes.
+pub fn sm_blocks() -> Vec<(u32, u32)> {
+    let mut regs: Vec<(u32, u32)> = sm_map::names()
+        .iter()
+        .filter(|n| !matches!(n.size, sm_map::SmSize::Bit(_)))
+        .map(|n| {
+            let len = match n.size {
+                sm_map::SmSize::Word => 2,
+                sm_map::SmSize::DWord => 4,
+                _ => 1,
+            };
+            (n.byte, n.byte + len)
+        })
+        .collect();
+    regs.sort_unstable();
+    let mut blocks: Vec<(u32, u32)> = Vec::new();
+    for (a, b) in regs {
+        match blocks.last_mut() {
+            Some(last) if a < last.1 => last.1 = last.1.max(b),
+            Some(last) if b - last.0 <= DATA_MAX as u32 => last.1 = b,
+            _ => blocks.push((a, b)),
+        }
+    }
+    if let Some(first) = blocks.first_mut() {
+        first.0 = 0;
+    }
+    blocks
+}
+
+/// The block (first, end) SM byte `b` travels in: the last that starts at or before it.
+pub fn block_of(b: u32) -> (u32, u32) {
+    let blocks = sm_blocks();
+    *blocks.iter().rev().find(|(s, _)| *s <= b).unwrap_or(&blocks[0])
+}
+
+/// The bytes a read reply holds for `cmd` (the reply carries the whole block: SM byte b at
+/// b − the block's first byte); other commands' replies as they are.
+pub fn reply_of(cmd: &Command, reply: &[u8]) -> Option<Vec<u8>> {
+    match cmd {
+        Command::SmRead { start, len } => {
+            let off = (*start as u32 - block_of(*start as u32).0) as usize;
+            reply.get(off..off + *len as usize).map(<[u8]>::to_vec)
+        }
+        _ => Some(reply.to_vec()),
+    }
+}
 
 /// Parses a mailbox base (`VB3400`, `3400`): even, with the mailbox and the helper's
 /// scratch words below the E2PROM backup area (§2.2.8), so the helper never wears it.
@@ -128,7 +222,13 @@ impl Command {
     /// (args, data) of the request block.
     fn args(&self) -> ([u16; 3], Vec<u8>) {
         match self {
-            Command::SmWrite { start, data } => ([*start, data.len() as u16, 0], data.clone()),
+            Command::SmWrite { start, data } => {
+                // SM byte b travels at data byte b − its block's first byte.
+                let off = (*start as u32 - block_of(*start as u32).0) as usize;
+                let mut d = vec![0; off];
+                d.extend_from_slice(data);
+                ([*start, data.len() as u16, 0], d)
+            }
             Command::SmRead { start, len } => ([*start, *len, 0], Vec::new()),
             Command::Pls(n) | Command::Hsc(n) | Command::Pstop(n) => ([*n as u16, 0, 0], Vec::new()),
             Command::Hdef { hsc, mode } => ([*hsc as u16, *mode as u16, 0], Vec::new()),
@@ -137,19 +237,32 @@ impl Command {
         }
     }
 
-    /// Decodes a request block (the helper's side): the request words are refused by the
-    /// first row of [`checks`] that matches — the very rows the helper program is generated
-    /// from ([`super::il`]), so the two give the same verdict on every request.
-    pub fn decode(code: u16, args: [u16; 3], data: &[u8; DATA_MAX]) -> Result<Command, ResultCode> {
-        if let Some(c) = checks().iter().find(|c| c.refuses(code, args)) {
-            return Err(c.result);
+    /// Decodes a request block (the helper's side, for `model`): the request words are
+    /// refused by the first row of [`checks`] that matches — the very rows the helper program
+    /// is generated from ([`super::il`]), so the two give the same verdict on every request.
+    /// A refusal comes with its cause: the row's number (1-based), as the helper writes it
+    /// into the result word's high byte.
+    pub fn decode(
+        model: &Model,
+        code: u16,
+        args: [u16; 3],
+        data: &[u8; DATA_MAX],
+    ) -> Result<Command, (ResultCode, u8)> {
+        if let Some((i, c)) = checks(model).iter().enumerate().find(|(_, c)| c.refuses(code, args)) {
+            return Err((c.result, i as u8 + 1));
         }
         let len = args[1] as usize;
         Ok(match code {
-            1 => Command::SmWrite { start: args[0], data: data[..len].to_vec() },
+            1 => {
+                let off = (args[0] as u32 - block_of(args[0] as u32).0) as usize;
+                let bytes = data.get(off..off + len).ok_or((ResultCode::BadRange, 0))?;
+                Command::SmWrite { start: args[0], data: bytes.to_vec() }
+            }
             2 => Command::SmRead { start: args[0], len: args[1] },
             3 => Command::Pls(args[0] as u8),
-            4 => Command::Hdef { hsc: args[0] as u8, mode: u8::try_from(args[1]).map_err(|_| ResultCode::BadMode)? },
+            4 => {
+                Command::Hdef { hsc: args[0] as u8, mode: u8::try_from(args[1]).map_err(|_| (ResultCode::BadMode, 0))? }
+            }
             5 => Command::Hsc(args[0] as u8),
             6 => Command::Pstop(args[0] as u8),
             7 => {
@@ -159,7 +272,7 @@ impl Command {
             }
             8 => Command::ReadRtc,
             9 => Command::Ping,
-            _ => return Err(ResultCode::UnknownCommand),
+            _ => return Err((ResultCode::UnknownCommand, 0)),
         })
     }
 }
@@ -213,6 +326,11 @@ pub enum Test {
     EndAbove(u16),
     /// ARG1 … ARG1 + ARG2 − 1 overlaps `lo` … `hi` − 1.
     Overlaps(u16, u16),
+    /// Every request of the row's commands (the model has no such channel at all).
+    Always,
+    /// ARG1 is in `lo` … `hi` and ARG1 + ARG2 is above `end`: the range runs out of its
+    /// SM block (both bounded by earlier rows: no overflow).
+    Span(u16, u16, u16),
 }
 
 /// The largest INT: every bound in [`checks`] stays at or below it.
@@ -244,15 +362,20 @@ impl Check {
             Test::Outside(f, lo, hi) => !(lo..=hi).contains(&f.of(code, args)),
             Test::EndAbove(limit) => a1 + a2 > limit as u32,
             Test::Overlaps(lo, hi) => a1 < hi as u32 && a1 + a2 > lo as u32,
+            Test::Always => true,
+            Test::Span(lo, hi, end) => (lo as u32..=hi as u32).contains(&a1) && a1 + a2 > end as u32,
         }
     }
 }
 
-/// The helper's refusals, in the order it makes them; the first that matches gives the
-/// result. [`Command::decode`] and the helper program (il.rs) are both made from this table,
-/// and docs/agent.md shows it ([`checks_markdown`]).
-pub fn checks() -> Vec<Check> {
-    let sm_last = (SM_BYTES - 1) as u16;
+/// The helper's refusals for `model`, in the order it makes them; the first that matches
+/// gives the result. [`Command::decode`] and the helper program (il.rs) are both made from
+/// this table, and docs/agent.md shows it for the default model ([`checks_markdown`]). Only
+/// the channels and counters `model` has pass (§3.3.1, §3.4 tables), and only SM bytes of the
+/// registers the manual names ([`sm_end`]).
+pub fn checks(model: &Model) -> Vec<Check> {
+    let end = sm_end() as u16;
+    let sm_last = end - 1;
     let sm = Some((1, 2));
     let mut v = vec![
         Check {
@@ -265,7 +388,7 @@ pub fn checks() -> Vec<Check> {
             commands: Some((1, 1)),
             test: Test::Is(Field::Arg1, 0),
             result: ResultCode::ReadOnly,
-            why: "SMB0 holds the system bits".into(),
+            why: "SMB0 holds the system status bits and is read-only".into(),
         },
         Check {
             commands: sm,
@@ -277,16 +400,48 @@ pub fn checks() -> Vec<Check> {
             commands: sm,
             test: Test::Outside(Field::Arg1, 0, sm_last),
             result: ResultCode::BadRange,
-            why: format!("the start is SMB0..SMB{sm_last}"),
+            why: format!("the start is SMB0..SMB{sm_last}, the registers the manual names"),
         },
         Check {
             commands: sm,
-            test: Test::EndAbove(SM_BYTES as u16),
+            test: Test::EndAbove(end),
             result: ResultCode::BadRange,
-            why: format!("the last byte is SMB{sm_last} at most"),
+            why: format!(
+                "the last byte is SMB{sm_last} at most (SMD{} is the highest register the manual names)",
+                sm_last - 3
+            ),
         },
     ];
-    for r in PTO_REGS {
+    for (s, e) in sm_blocks() {
+        if e < end as u32 {
+            v.push(Check {
+                commands: sm,
+                test: Test::Span(s as u16, e as u16 - 1, e as u16),
+                result: ResultCode::BadRange,
+                why: format!("SMB{s}..SMB{} is one block: split there", e - 1),
+            });
+        }
+    }
+    let rows = sm_rows(model);
+    let mut b = 1;
+    while b < end as u32 {
+        if rows.contains(&b) {
+            b += 1;
+            continue;
+        }
+        let gap = b;
+        while b < end as u32 && !rows.contains(&b) {
+            b += 1;
+        }
+        let name = if b - gap == 1 { format!("SMB{gap}") } else { format!("SMB{gap}..SMB{}", b - 1) };
+        v.push(Check {
+            commands: sm,
+            test: Test::Overlaps(gap as u16, b as u16),
+            result: ResultCode::BadRange,
+            why: format!("{name}: no register of {} the manual names", model.name),
+        });
+    }
+    for r in PTO_REGS.iter().filter(|r| model.pto(r.channel).is_some()) {
         let at = r.pos_cv as u16;
         v.push(Check {
             commands: Some((1, 1)),
@@ -295,20 +450,30 @@ pub fn checks() -> Vec<Check> {
             why: format!("SMD{at} is read-only (section 3.4.3.1)"),
         });
     }
-    v.push(Check {
-        commands: Some((3, 6)),
-        test: Test::Outside(Field::Arg1, 0, 3),
+    let channels = |n: usize, cmds: (u16, u16), what: &str| Check {
+        commands: Some(cmds),
+        test: if n == 0 { Test::Always } else { Test::Outside(Field::Arg1, 0, n as u16 - 1) },
         result: ResultCode::BadChannel,
-        why: "channels and counters are 0..3".into(),
-    });
+        why: if n == 0 {
+            format!("{} has no {what}", model.name)
+        } else {
+            format!("{} has {what} 0..{}", model.name, n - 1)
+        },
+    };
+    // The catalogue numbers channels and counters from 0 without gaps.
+    debug_assert!(model.pto.iter().enumerate().all(|(i, c)| c.channel as usize == i));
+    debug_assert!(model.hsc.iter().enumerate().all(|(i, c)| c.channel as usize == i));
+    v.push(channels(model.pto.len(), (3, 3), "pulse outputs"));
+    v.push(channels(model.hsc.len(), (4, 5), "high-speed counters"));
+    v.push(channels(model.pto.len(), (6, 6), "pulse outputs"));
     v
 }
 
 /// The checks as a Markdown table (docs/agent.md holds it; a test keeps the two equal).
-pub fn checks_markdown() -> String {
+pub fn checks_markdown(model: &Model) -> String {
     let mut s =
         String::from("| # | commands | refused when (words unsigned) | result | why |\n|---|---|---|---|---|\n");
-    for (i, c) in checks().iter().enumerate() {
+    for (i, c) in checks(model).iter().enumerate() {
         let cmds = match c.commands {
             None => "all".to_string(),
             Some((a, b)) if a == b => a.to_string(),
@@ -320,6 +485,8 @@ pub fn checks_markdown() -> String {
             Test::Outside(f, lo, hi) => format!("{} not in {lo}…{hi}", f.name()),
             Test::EndAbove(l) => format!("argument 1 + argument 2 > {l}"),
             Test::Overlaps(lo, hi) => format!("bytes argument 1 … argument 1 + argument 2 − 1 meet {lo}…{}", hi - 1),
+            Test::Always => "always".to_string(),
+            Test::Span(lo, hi, e) => format!("argument 1 in {lo}…{hi} and argument 1 + argument 2 > {e}"),
         };
         s.push_str(&format!("| {} | {cmds} | {test} | {} {} | {} |\n", i + 1, c.result.code(), c.result.name(), c.why));
     }
@@ -337,7 +504,25 @@ pub enum ResultCode {
     BadMode,
     InstructionFailed,
     BadClock,
+    /// The instruction ran and the register the manual names for its outcome reports a
+    /// refusal; the cause ([`StatusCause`]) says which register.
+    StatusBit,
     Other(u16),
+}
+
+/// Which status register reported a refusal (the cause byte of [`ResultCode::StatusBit`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum StatusCause {
+    /// After PLS: the channel's status bit 4, "cycle time or pulse count invalid" (§3.4.2.2).
+    PtoInvalid = 1,
+    /// After PSTOP: the emergency-stop bit SM201.7 … did not latch (§3.4.3.1).
+    NotLatched = 2,
+    /// After HSC: the counter's status bit 3, "multi-PV table fault" (§3.3.2).
+    PvTable = 3,
+    /// PLS found the channel's enable bit SM67.7 … clear and the channel idle (PTO and PWM
+    /// idle bits SM66.7, SM66.3 …, §3.4.2.2): it had nothing to stop and started nothing. The
+    /// manual calls this no error; plcsh reports it as it does in process.
+    NothingToDo = 4,
 }
 
 impl ResultCode {
@@ -351,6 +536,7 @@ impl ResultCode {
             ResultCode::BadMode => 5,
             ResultCode::InstructionFailed => 6,
             ResultCode::BadClock => 7,
+            ResultCode::StatusBit => 8,
             ResultCode::Other(c) => c,
         }
     }
@@ -366,6 +552,7 @@ impl ResultCode {
             ResultCode::BadMode => "no such mode",
             ResultCode::InstructionFailed => "instruction failed",
             ResultCode::BadClock => "bad date or time",
+            ResultCode::StatusBit => "status bit",
             ResultCode::Other(_) => "other",
         }
     }
@@ -380,6 +567,7 @@ impl ResultCode {
             5 => ResultCode::BadMode,
             6 => ResultCode::InstructionFailed,
             7 => ResultCode::BadClock,
+            8 => ResultCode::StatusBit,
             c => ResultCode::Other(c),
         }
     }
@@ -390,18 +578,95 @@ impl fmt::Display for ResultCode {
         f.write_str(match self {
             ResultCode::Ok => "done",
             ResultCode::UnknownCommand => "the helper does not know this command (update lib/k2_agent.il)",
-            ResultCode::BadRange => "SM range outside SMB0…SMB549 or longer than 64 bytes",
-            ResultCode::ReadOnly => "SMB0 holds the system status bits and is read-only",
+            ResultCode::BadRange => "SM range outside the registers the manual names or longer than 64 bytes",
+            ResultCode::ReadOnly => "the SM bytes are read-only",
             ResultCode::BadChannel => "no such channel on this PLC",
             ResultCode::BadMode => "the counter does not have this mode",
-            ResultCode::InstructionFailed => "the PLC instruction reported an error",
+            ResultCode::InstructionFailed => "the PLC instruction reported an error (its ENO)",
             ResultCode::BadClock => "the date or time is not valid",
+            ResultCode::StatusBit => "the instruction's status bit reports a refusal",
             ResultCode::Other(_) => "unknown result code",
         })?;
         if let ResultCode::Other(c) = self {
             write!(f, " {c}")?;
         }
         Ok(())
+    }
+}
+
+/// Why the helper answered `result` with `cause` to `cmd` on `model`: (message, hint), in
+/// the words plcsh uses for the same refusal in process (the simulator's messages and the
+/// manual's sections), so a refusal reads the same whichever way the command went.
+pub fn reason(model: &Model, cmd: &Command, result: ResultCode, cause: u8) -> (String, Option<String>) {
+    let pto = |n: u8| PTO_REGS.iter().find(|r| r.channel == n);
+    match (result, cmd) {
+        (ResultCode::StatusBit, Command::Pls(n)) if cause == StatusCause::PtoInvalid as u8 => match pto(*n) {
+            Some(r) => (
+                format!(
+                    "the PLC set status bit SM{}.4 after PLS {n}: cycle time or pulse count invalid ({}); no pulses were sent",
+                    r.status,
+                    sm_map::PTO_INVALID_RULE
+                ),
+                Some(format!(
+                    "load SMW{} with SM{}.0 and SMD{} with SM{}.2 set (e.g. SMB{}=16#85), then PLS again",
+                    r.cycle, r.control, r.count, r.control, r.control
+                )),
+            ),
+            None => (result.to_string(), None),
+        },
+        (ResultCode::StatusBit, Command::Pls(n)) if cause == StatusCause::NothingToDo as u8 => match pto(*n) {
+            Some(r) => {
+                let (m, h) = sm_map::pls_did_nothing(r);
+                (m, Some(h))
+            }
+            None => (result.to_string(), None),
+        },
+        (ResultCode::StatusBit, Command::Pstop(n)) if cause == StatusCause::NotLatched as u8 => match pto(*n) {
+            Some(r) => (
+                format!(
+                    "the emergency-stop bit SM{}.7 did not latch after PSTOP {n} (manual §3.4.3.1: PSTOP sets it)",
+                    r.pos_control
+                ),
+                Some("check that the PLC runs the current helper and that position channel exists on it".into()),
+            ),
+            None => (result.to_string(), None),
+        },
+        (ResultCode::StatusBit, Command::Hsc(n)) if cause == StatusCause::PvTable as u8 => {
+            match sm_map::HSC_REGS.iter().find(|r| r.channel == *n) {
+                Some(r) => (
+                    format!(
+                        "the PLC set status bit SM{}.3 after HSC {n}: fault in the multi-PV table (manual §3.3.2)",
+                        r.status
+                    ),
+                    Some(format!(
+                        "check the PV table at SMW{} (an odd V address, a count of 1..32, PVs that differ by more than 1; §3.3.3)",
+                        r.table
+                    )),
+                ),
+                None => (result.to_string(), None),
+            }
+        }
+        (ResultCode::ReadOnly, Command::SmWrite { start, data }) => {
+            let (s, e) = (*start as u32, *start as u32 + data.len().max(1) as u32);
+            let written =
+                if e - s == 1 { format!("SMB{s}") } else { format!("SMB{s}…SMB{}", e - 1) };
+            if s == 0 {
+                let (m, h) = sm_map::smb0_read_only(&written);
+                return (m, Some(h));
+            }
+            match PTO_REGS.iter().find(|r| s < r.pos_cv + 4 && r.pos_cv < e) {
+                Some(r) => {
+                    let named = if s == r.pos_cv && e == s + 4 { format!("SMD{s}") } else { written };
+                    let (m, h) = sm_map::pos_cv_read_only(r, &named);
+                    (m, Some(h))
+                }
+                None => (result.to_string(), None),
+            }
+        }
+        _ => match checks(model).get((cause as usize).wrapping_sub(1)) {
+            Some(c) if c.result == result => (format!("{result}: {}", c.why.replace("..", "…")), None),
+            _ => (result.to_string(), None),
+        },
     }
 }
 
@@ -421,6 +686,15 @@ pub struct Ack {
     pub seq: u16,
     pub token: u16,
     pub result: ResultCode,
+    /// Why (the result word's high byte): for a refused request the row of [`checks`]
+    /// (1-based), for [`ResultCode::StatusBit`] a [`StatusCause`]; 0 when the result has
+    /// one cause.
+    pub cause: u8,
+}
+
+/// The result word the helper writes: the code in the low byte, the cause in the high one.
+pub fn result_word(result: ResultCode, cause: u8) -> u16 {
+    (result.code() & 0xFF) | (cause as u16) << 8
 }
 
 /// What a client sees in one status read (words from base + 0).
@@ -439,7 +713,8 @@ impl Status {
     pub fn parse(words: &[u16]) -> Status {
         let ack = |i: usize| {
             let o = (OFF_ACKS / 2) as usize + 3 * i;
-            Ack { seq: words[o], token: words[o + 1], result: ResultCode::from_code(words[o + 2]) }
+            let r = words[o + 2];
+            Ack { seq: words[o], token: words[o + 1], result: ResultCode::from_code(r & 0xFF), cause: (r >> 8) as u8 }
         };
         let len = (words[(OFF_REPLY_LEN / 2) as usize] as usize).min(DATA_MAX);
         let reply: Vec<u8> = words[(OFF_REPLY / 2) as usize..(OFF_REQUEST / 2) as usize]
@@ -488,6 +763,7 @@ fn put(v: &mut [u8], at: usize, w: u16) {
 /// version and heartbeat; if a new request is waiting, run it through `exec` and record
 /// the acknowledgement. `exec` returns reply data or a result code.
 pub fn execute_scan(
+    model: &Model,
     mem: &mut dyn VMemory,
     base: u32,
     exec: &mut dyn FnMut(Command) -> Result<Vec<u8>, ResultCode>,
@@ -509,11 +785,25 @@ pub fn execute_scan(
     let args = [word(v, req + 6), word(v, req + 8), word(v, req + 10)];
     let mut data = [0u8; DATA_MAX];
     data.copy_from_slice(&v[b + OFF_REQ_DATA as usize..b + SIZE as usize]);
-    let (result, reply) = match Command::decode(code, args, &data) {
-        Ok(cmd) => match exec(cmd) {
-            Ok(r) => (ResultCode::Ok, r),
-            Err(rc) => (rc, Vec::new()),
-        },
+    let ((result, cause), reply) = match Command::decode(model, code, args, &data) {
+        Ok(cmd) => {
+            let read = match cmd {
+                Command::SmRead { start, .. } => Some(start as u32 - block_of(start as u32).0),
+                _ => None,
+            };
+            match exec(cmd) {
+                // A read's reply is the whole block: SM byte b at b − the block's first byte.
+                Ok(r) => match read {
+                    Some(off) => {
+                        let mut full = vec![0; DATA_MAX];
+                        full[off as usize..off as usize + r.len()].copy_from_slice(&r);
+                        ((ResultCode::Ok, 0), full)
+                    }
+                    None => ((ResultCode::Ok, 0), r),
+                },
+                Err(rc) => ((rc, 0), Vec::new()),
+            }
+        }
         Err(rc) => (rc, Vec::new()),
     };
     let v = mem.v_mut();
@@ -527,14 +817,18 @@ pub fn execute_scan(
     v[rep..rep + r.len()].copy_from_slice(&r);
     v[rep + r.len()..rep + DATA_MAX].fill(0);
     put(v, acks + 2, token);
-    put(v, acks + 4, result.code());
+    put(v, acks + 4, result_word(result, cause));
     put(v, acks, seq);
-    Some(Ack { seq, token, result })
+    Some(Ack { seq, token, result, cause })
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn model() -> &'static Model {
+        crate::k2::catalog::lookup(crate::k2::catalog::DEFAULT_MODEL).unwrap()
+    }
 
     #[test]
     fn a_base_near_the_top_of_u32_is_refused_not_wrapped() {
@@ -579,12 +873,12 @@ mod tests {
         let mut ran = Vec::new();
         let cmd = Command::SmWrite { start: 67, data: vec![0x85] };
         write_request(&mut m, 1, 0xBEEF, &cmd);
-        let ack = execute_scan(&mut m, DEFAULT_BASE, &mut |c| {
+        let ack = execute_scan(model(), &mut m, DEFAULT_BASE, &mut |c| {
             ran.push(c);
             Ok(Vec::new())
         });
-        assert_eq!(ack, Some(Ack { seq: 1, token: 0xBEEF, result: ResultCode::Ok }));
-        assert!(execute_scan(&mut m, DEFAULT_BASE, &mut |_| panic!("ran twice")).is_none());
+        assert_eq!(ack, Some(Ack { seq: 1, token: 0xBEEF, result: ResultCode::Ok, cause: 0 }));
+        assert!(execute_scan(model(), &mut m, DEFAULT_BASE, &mut |_| panic!("ran twice")).is_none());
         assert_eq!(ran, vec![cmd]);
         let s = status(&m);
         assert_eq!((s.signature, s.version, s.heartbeat), (SIGNATURE, VERSION, 2));
@@ -595,10 +889,11 @@ mod tests {
     fn reply_data_and_history() {
         let mut m = Buf(vec![0; 4096]);
         write_request(&mut m, 1, 7, &Command::SmRead { start: 66, len: 3 });
-        execute_scan(&mut m, DEFAULT_BASE, &mut |_| Ok(vec![0x80, 1, 2]));
-        assert_eq!(status(&m).reply, vec![0x80, 1, 2]);
+        execute_scan(model(), &mut m, DEFAULT_BASE, &mut |_| Ok(vec![0x80, 1, 2]));
+        let cmd = Command::SmRead { start: 66, len: 3 };
+        assert_eq!(reply_of(&cmd, &status(&m).reply), Some(vec![0x80, 1, 2]), "at SMB66's place in its block");
         write_request(&mut m, 2, 9, &Command::Pls(0));
-        execute_scan(&mut m, DEFAULT_BASE, &mut |_| Ok(Vec::new()));
+        execute_scan(model(), &mut m, DEFAULT_BASE, &mut |_| Ok(Vec::new()));
         let s = status(&m);
         assert_eq!(s.acks[0].seq, 2);
         assert_eq!(s.find(1, 7).map(|x| x.0), Some(1), "the older ack is still found");
@@ -612,7 +907,7 @@ mod tests {
         write_request(&mut m, 1, 0xA, &Command::Pls(0));
         write_request(&mut m, 1, 0xB, &Command::Pls(1));
         let mut ran = Vec::new();
-        execute_scan(&mut m, DEFAULT_BASE, &mut |c| {
+        execute_scan(model(), &mut m, DEFAULT_BASE, &mut |c| {
             ran.push(c);
             Ok(vec![])
         });
@@ -626,24 +921,53 @@ mod tests {
     fn bad_requests_get_result_codes_not_execution() {
         let mut m = Buf(vec![0; 4096]);
         write_request(&mut m, 1, 1, &Command::Pls(9));
-        let a = execute_scan(&mut m, DEFAULT_BASE, &mut |_| panic!("must not run")).unwrap();
+        let a = execute_scan(model(), &mut m, DEFAULT_BASE, &mut |_| panic!("must not run")).unwrap();
         assert_eq!(a.result, ResultCode::BadChannel);
         put(&mut m.0, (DEFAULT_BASE + OFF_REQUEST + 4) as usize, 77);
         put(&mut m.0, (DEFAULT_BASE + OFF_REQUEST) as usize, 2);
-        let a = execute_scan(&mut m, DEFAULT_BASE, &mut |_| panic!("must not run")).unwrap();
+        let a = execute_scan(model(), &mut m, DEFAULT_BASE, &mut |_| panic!("must not run")).unwrap();
         assert_eq!(a.result, ResultCode::UnknownCommand);
         assert!(ResultCode::BadRange.to_string().contains("64 bytes"));
         write_request(&mut m, 3, 1, &Command::SmWrite { start: 0, data: vec![1] });
-        assert_eq!(execute_scan(&mut m, DEFAULT_BASE, &mut |_| panic!("SMB0")).unwrap().result, ResultCode::ReadOnly);
-        write_request(&mut m, 4, 1, &Command::SmRead { start: 540, len: 20 });
-        assert_eq!(execute_scan(&mut m, DEFAULT_BASE, &mut |_| panic!("past")).unwrap().result, ResultCode::BadRange);
+        assert_eq!(
+            execute_scan(model(), &mut m, DEFAULT_BASE, &mut |_| panic!("SMB0")).unwrap().result,
+            ResultCode::ReadOnly
+        );
+        write_request(&mut m, 4, 1, &Command::SmRead { start: 260, len: 20 });
+        assert_eq!(
+            execute_scan(model(), &mut m, DEFAULT_BASE, &mut |_| panic!("past")).unwrap().result,
+            ResultCode::BadRange
+        );
     }
 
     #[test]
     fn the_protocol_document_shows_the_checks_the_helper_makes() {
         let doc = include_str!("../../../docs/agent.md");
-        let table = checks_markdown();
+        let table = checks_markdown(model());
         assert!(doc.contains(&table), "docs/agent.md lacks the current table of checks:\n{table}");
+    }
+
+    /// The blocks run in order over SMB0…SMB265, none is longer than the data area, and no register of
+    /// any channel straddles two of them.
+    #[test]
+    fn sm_blocks_tile_the_window_and_hold_whole_registers() {
+        let blocks = sm_blocks();
+        assert_eq!(blocks.first().unwrap().0, 0);
+        assert_eq!(blocks.last().unwrap().1, sm_end());
+        for w in blocks.windows(2) {
+            assert!(w[0].1 <= w[1].0, "{w:?}");
+        }
+        for (s, e) in &blocks {
+            assert!(e - s <= DATA_MAX as u32, "SMB{s}..SMB{e}");
+        }
+        for n in sm_map::names() {
+            let len = match n.size {
+                sm_map::SmSize::Word => 2,
+                sm_map::SmSize::DWord => 4,
+                _ => 1,
+            };
+            assert_eq!(block_of(n.byte), block_of(n.byte + len - 1), "SM byte {} ({})", n.byte, n.meaning);
+        }
     }
 
     #[test]

@@ -13,7 +13,7 @@
 use super::{Failure, K2Wire};
 use crate::core::{Error, ErrorKind, Operand, Result, Value};
 use crate::k2::agent::client::{AgentClient, Registers};
-use crate::k2::agent::protocol::{Command, DATA_MAX};
+use crate::k2::agent::protocol::{self, Command, DATA_MAX};
 use crate::k2::instr::RtcTime;
 use crate::k2::memory::Memory;
 use crate::k2::modbus_map;
@@ -127,17 +127,29 @@ impl K2Wire {
         let k2: Vec<K2Operand> = ops.iter().map(|o| K2Operand::from_key(o.key)).collect();
         let mut ranges: Vec<(u32, u32)> = k2.iter().map(|o| (o.byte, o.byte + o.width.bytes())).collect();
         ranges.sort();
+        // The helper copies the bytes of the registers the manual gives the model, block by
+        // block (docs/agent.md): a run stays in one block and reads through no other byte.
+        let rows = protocol::sm_rows(self.space.model);
+        let named = |s: u32, e: u32| (s..e).all(|b| rows.contains(&b));
         let mut runs: Vec<(u32, u32)> = Vec::new();
         for (s, e) in ranges {
             match runs.last_mut() {
-                Some(last) if s <= last.1 + READ_THROUGH && e - last.0 <= DATA_MAX as u32 => last.1 = last.1.max(e),
+                Some(last)
+                    if s <= last.1 + READ_THROUGH
+                        && e - last.0 <= DATA_MAX as u32
+                        && protocol::block_of(last.0) == protocol::block_of(e.max(1) - 1)
+                        && named(last.1.min(s), s.max(last.1)) =>
+                {
+                    last.1 = last.1.max(e)
+                }
                 _ => runs.push((s, e)),
             }
         }
         for (s, e) in runs {
             let mut at = s;
             while at < e {
-                let len = (e - at).min(DATA_MAX as u32);
+                let block_end = protocol::block_of(at).1;
+                let len = (e - at).min(DATA_MAX as u32).min(block_end.max(at + 1) - at);
                 let what = format!("reading SMB{at}…SMB{}", at + len - 1);
                 let bytes = self.agent_run(&Command::SmRead { start: at as u16, len: len as u16 }, &what)?;
                 self.sm_shadow.sm[at as usize..(at + len) as usize].copy_from_slice(&bytes[..len as usize]);
@@ -164,13 +176,26 @@ impl K2Wire {
             self.sm_shadow.write(&k, o.dtype.encode(v));
             let bytes = self.sm_shadow.sm[start as usize..(start + len) as usize].to_vec();
             match cmds.last_mut() {
-                Some((s, b)) if *s + b.len() as u32 == start && b.len() + bytes.len() <= DATA_MAX => b.extend(bytes),
+                Some((s, b))
+                    if *s + b.len() as u32 == start
+                        && b.len() + bytes.len() <= DATA_MAX
+                        && protocol::block_of(*s) == protocol::block_of(start + len - 1) =>
+                {
+                    b.extend(bytes)
+                }
                 _ => cmds.push((start, bytes)),
             }
         }
         for (start, data) in cmds {
-            let what = format!("writing SMB{start}…SMB{}", start as usize + data.len() - 1);
-            self.agent_run(&Command::SmWrite { start: start as u16, data }, &what)?;
+            // One command per block (an operand across two blocks, SMW61, is two commands).
+            let (mut at, mut rest) = (start, &data[..]);
+            while !rest.is_empty() {
+                let n = ((protocol::block_of(at).1.max(at + 1) - at) as usize).min(rest.len());
+                let what = format!("writing SMB{at}…SMB{}", at as usize + n - 1);
+                self.agent_run(&Command::SmWrite { start: at as u16, data: rest[..n].to_vec() }, &what)?;
+                at += n as u32;
+                rest = &rest[n..];
+            }
         }
         Ok(())
     }
@@ -190,9 +215,10 @@ impl K2Wire {
 }
 
 /// The helper client for `agent=VB…` (validated like `plcsh agent il --base`).
-pub(super) fn client(text: &str, timeout: Duration) -> Result<AgentClient> {
+pub(super) fn client(text: &str, timeout: Duration, model: &'static crate::k2::catalog::Model) -> Result<AgentClient> {
     let base = crate::k2::agent::protocol::parse_base(text).map_err(Error::usage)?;
     let mut c = AgentClient::new(base);
+    c.model = model;
     c.timeout = timeout.max(Duration::from_secs(1));
     Ok(c)
 }

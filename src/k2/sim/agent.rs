@@ -20,7 +20,7 @@ impl K2Sim {
                 self.mem.v.len() - 1
             ));
         }
-        let text = crate::k2::agent::il::program(base);
+        let text = crate::k2::agent::il::program(self.model(), base);
         self.load_helper(&text, "k2_agent.il").map_err(|e| e.to_string())?;
         self.agent_base = Some(base);
         Ok(())
@@ -120,7 +120,8 @@ mod tests {
         assert!(s.mem.sm_bit(66, 7), "PTO0 idle after 1000 × 500 µs");
         request(&mut s, 3, &Command::SmRead { start: 66, len: 1 });
         acked(&mut s, &clock, 3);
-        assert_eq!(status(&s).reply, vec![s.mem.sm_byte(66)]);
+        let reply = protocol::reply_of(&Command::SmRead { start: 66, len: 1 }, &status(&s).reply);
+        assert_eq!(reply, Some(vec![s.mem.sm_byte(66)]));
     }
 
     #[test]
@@ -135,6 +136,55 @@ mod tests {
         request(&mut s, 3, &Command::SetRtc([0x26, 0x13, 0x01, 0, 0, 0, 0, 1]));
         acked(&mut s, &clock, 3);
         assert_eq!(status(&s).acks[0].result, ResultCode::BadClock, "month 13");
+    }
+
+    /// A refused PLS is read where the PLC reports it: PLS leaves the CR as it was (K2
+    /// §3.4.2, «Это не повлияет на значение CR»), so the helper reads the channel's status
+    /// bit 4, "cycle time or pulse count invalid" (§3.4.2.2), and its result names it; a write
+    /// to SMD212 names the read-only current value and the way to set it (§3.4.3.1). The
+    /// causes reach the user in the words the simulator uses in process.
+    #[test]
+    fn a_refused_pls_is_reported_from_its_status_bit_with_the_in_process_words() {
+        let (mut s, clock) = sim();
+        let model = s.model();
+        // SMB67 = 16#85, SMW68 = 1000 µs, SMD72 = 1 pulse: below the manual's minimum of 2.
+        request(&mut s, 1, &Command::SmWrite { start: 67, data: vec![0x85, 0x03, 0xE8, 0, 0, 0, 0, 0, 1] });
+        acked(&mut s, &clock, 1);
+        request(&mut s, 2, &Command::Pls(0));
+        acked(&mut s, &clock, 2);
+        let ack = status(&s).acks[0];
+        assert_eq!((ack.result, ack.cause), (ResultCode::StatusBit, protocol::StatusCause::PtoInvalid as u8));
+        assert!(s.mem.sm_bit(66, 4), "SM66.4");
+        let (why, hint) = protocol::reason(model, &Command::Pls(0), ack.result, ack.cause);
+        assert!(why.contains("SM66.4") && why.contains(crate::k2::sm_map::PTO_INVALID_RULE), "{why}");
+        assert!(hint.unwrap().contains("SMD72"));
+        // The same request with 10 pulses is done, and bit 4 is clear again.
+        request(&mut s, 3, &Command::SmWrite { start: 72, data: vec![0, 0, 0, 10] });
+        acked(&mut s, &clock, 3);
+        request(&mut s, 4, &Command::Pls(0));
+        acked(&mut s, &clock, 4);
+        assert_eq!(status(&s).acks[0].result, ResultCode::Ok);
+        assert!(!s.mem.sm_bit(66, 4));
+        // SMD212: result 3 with the cause that names it, in the in-process words.
+        let cmd = Command::SmWrite { start: 212, data: vec![0, 0, 0, 5] };
+        request(&mut s, 5, &cmd);
+        acked(&mut s, &clock, 5);
+        let ack = status(&s).acks[0];
+        assert_eq!(ack.result, ResultCode::ReadOnly);
+        let row = &protocol::checks(model)[ack.cause as usize - 1];
+        assert!(row.why.contains("SMD212"), "cause {}: {}", ack.cause, row.why);
+        let (why, hint) = protocol::reason(model, &cmd, ack.result, ack.cause);
+        let op = crate::k2::operand::K2Operand::new(Area::SM, crate::k2::operand::Width::DWord, 212);
+        let local = s.check_writable(&op).unwrap_err();
+        assert_eq!(why, local.message, "the same words as in process");
+        assert!(hint.unwrap().contains("SMD208") && local.hint.clone().unwrap().contains("SM201.4"));
+        // SMB0: result 3 again, another cause.
+        request(&mut s, 6, &Command::SmWrite { start: 0, data: vec![1] });
+        acked(&mut s, &clock, 6);
+        let ack = status(&s).acks[0];
+        assert_eq!(ack.result, ResultCode::ReadOnly);
+        let (why, _) = protocol::reason(model, &Command::SmWrite { start: 0, data: vec![1] }, ack.result, ack.cause);
+        assert!(why.contains("system status bits"), "{why}");
     }
 
     /// What a client that ignores the protocol can write: any command and arguments.
@@ -162,8 +212,12 @@ mod tests {
             (2, [500, 0xFFFF, 0], BadRange),
             (2, [549, 32768, 0], BadRange),
             (1, [0, 40000, 0], ReadOnly),
-            (2, [549, 1, 0], Ok),
-            (2, [486, 64, 0], Ok),
+            (2, [265, 1, 0], Ok),
+            (2, [258, 4, 0], Ok),
+            (2, [258, 8, 0], BadRange),
+            (2, [202, 64, 0], BadRange),
+            (2, [266, 1, 0], BadRange),
+            (2, [549, 1, 0], BadRange),
             (3, [40000, 0, 0], BadChannel),
             (5, [65535, 0, 0], BadChannel),
             (4, [32768, 0, 0], BadChannel),

@@ -27,6 +27,8 @@ pub enum Verdict {
     Is(ResultCode),
     /// Done, or this failure of the PLC instruction (which depends on the channel's state).
     OkOr(ResultCode),
+    /// Done, or either of these failures (HSC: its ENO, or the table-fault bit, §3.3.2).
+    OkOrEither(ResultCode, ResultCode),
 }
 
 impl Verdict {
@@ -34,6 +36,7 @@ impl Verdict {
         match self {
             Verdict::Is(x) => r == x,
             Verdict::OkOr(x) => r == ResultCode::Ok || r == x,
+            Verdict::OkOrEither(x, y) => r == ResultCode::Ok || r == x || r == y,
         }
     }
 }
@@ -85,7 +88,7 @@ impl AgentProbe {
         // instruction command that no check refused enabled its instruction.
         self.held = holds;
         if self.word(p::OFF_ACKS) != ack0 {
-            let refused = p::checks().iter().any(|c| c.result == self.status().acks[0].result);
+            let refused = p::checks(self.sim.model()).iter().any(|c| c.result == self.status().acks[0].result);
             let waits = (REPEAT_WAITS.0..=REPEAT_WAITS.1).contains(&code);
             self.last_instruction = (!refused && waits).then_some(code as u8);
         }
@@ -153,8 +156,8 @@ impl AgentProbe {
     /// command it accepts, what the PLC instruction does on this model.
     pub fn verdict(&self, code: u16, args: [u16; 3], data: &[u8; DATA_MAX]) -> Verdict {
         let model = self.sim.model();
-        match Command::decode(code, args, data) {
-            Err(r) => Verdict::Is(r),
+        match Command::decode(model, code, args, data) {
+            Err((r, _)) => Verdict::Is(r),
             Ok(Command::Hdef { hsc, mode }) => {
                 let has = model.hsc.iter().any(|h| h.channel == hsc);
                 Verdict::Is(if has && sm_map::hsc_mode(hsc, mode).is_some() {
@@ -163,11 +166,9 @@ impl AgentProbe {
                     ResultCode::BadMode
                 })
             }
-            Ok(Command::Pls(ch)) if model.pto.iter().any(|c| c.channel == ch) => {
-                Verdict::OkOr(ResultCode::InstructionFailed)
-            }
+            Ok(Command::Pls(ch)) if model.pto.iter().any(|c| c.channel == ch) => Verdict::OkOr(ResultCode::StatusBit),
             Ok(Command::Hsc(ch)) if model.hsc.iter().any(|h| h.channel == ch) => {
-                Verdict::OkOr(ResultCode::InstructionFailed)
+                Verdict::OkOrEither(ResultCode::InstructionFailed, ResultCode::StatusBit)
             }
             Ok(Command::Pls(_) | Command::Hsc(_)) => Verdict::Is(ResultCode::InstructionFailed),
             Ok(Command::SetRtc(b)) => {
@@ -242,7 +243,7 @@ impl AgentProbe {
     ) -> Result<(), String> {
         let reply = self.status().reply;
         let want_len = match (result, code) {
-            (ResultCode::Ok, 2) => args[1] as usize,
+            (ResultCode::Ok, 2) => DATA_MAX,
             (ResultCode::Ok, 8) => 8,
             _ => 0,
         };
@@ -252,15 +253,18 @@ impl AgentProbe {
         let sm = &self.sim.mem.sm;
         let owned = cpu_owned();
         if result == ResultCode::Ok && code == 2 {
+            // The reply is the block: SM byte b at b − the block's first byte.
             let start = args[0] as usize;
-            for (k, b) in reply.iter().enumerate() {
+            let off = start - p::block_of(start as u32).0 as usize;
+            for (k, b) in reply[off..off + args[1] as usize].iter().enumerate() {
                 if !owned.contains(&(start + k)) && sm[start + k] != *b {
                     return Err(format!("{what}: reply byte {k} is {b}, SMB{} is {}", start + k, sm[start + k]));
                 }
             }
         }
         if let Some((start, len)) = written {
-            for (k, want) in data[..len].iter().enumerate() {
+            let off = start - p::block_of(start as u32).0 as usize;
+            for (k, want) in data[off..off + len].iter().enumerate() {
                 let byte = start + k;
                 if !owned.contains(&byte) && !is_position_control(byte) && sm[byte] != *want {
                     return Err(format!("{what}: SMB{byte} is {}, the request wrote {want}", sm[byte]));
@@ -457,14 +461,16 @@ mod tests {
     /// before the fix): the same checks without the guards for words of 32768 and more.
     #[test]
     fn the_probe_catches_a_helper_that_reads_large_words_as_negative() {
-        let il = crate::k2::agent::il::program(p::DEFAULT_BASE);
+        let il = crate::k2::agent::il::program(AgentProbe::new().sim.model(), p::DEFAULT_BASE);
         let arg1 = format!("%VW{}", p::DEFAULT_BASE + p::Field::Arg1.offset());
-        let signed = il.replace(&format!("LDW<    {arg1}, 0 "), &format!("LDW<    {arg1}, -32768 "));
+        let signed = il.replace(&format!("LDW<    {arg1}, INT#0 "), &format!("LDW<    {arg1}, INT#-32768 "));
         assert_ne!(signed, il);
         let mut probe = AgentProbe::new();
         probe.sim.load_helper(&signed, "signed.il").unwrap();
+        // It copies no SM byte by pointer any more, so it no longer faults: it acknowledges
+        // a read it should have refused.
         let e = probe.request(2, [40000, 1, 0], &[0; DATA_MAX]).unwrap_err();
-        assert!(e.contains("left RUN"), "{e}");
+        assert!(e.contains("the protocol says"), "{e}");
         let mut probe = AgentProbe::new();
         probe.sim.load_helper(&signed, "signed.il").unwrap();
         let e = probe.request(3, [40000, 0, 0], &[0; DATA_MAX]).unwrap_err();

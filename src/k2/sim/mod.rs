@@ -315,39 +315,16 @@ impl K2Sim {
     /// Refuses writes the PLC would not accept.
     fn check_writable(&self, op: &K2Operand) -> Result<()> {
         if op.area == Area::SM && op.byte == 0 {
-            return Err(Error::new(
-                ErrorKind::Refused,
-                format!("{} holds the system status bits and is read-only", op.canonical()),
-            )
-            .operand(op.canonical())
-            .hint("SM0.0 is always on, SM0.1 marks the first scan, SM0.5 is the 1-second clock"));
+            let (msg, hint) = crate::k2::sm_map::smb0_read_only(&op.canonical());
+            return Err(Error::new(ErrorKind::Refused, msg).operand(op.canonical()).hint(hint));
         }
         let (lo, hi) = (op.byte, op.byte + op.width.bytes());
         if op.area == Area::SM {
             for p in &self.pto {
                 let r = p.regs;
                 if lo < r.pos_cv + 4 && r.pos_cv < hi {
-                    return Err(Error::new(
-                        ErrorKind::Refused,
-                        if op.canonical() == format!("SMD{}", r.pos_cv) {
-                            format!(
-                                "SMD{} is the read-only current value of position channel {} (manual §3.4.3.1)",
-                                r.pos_cv, r.channel
-                            )
-                        } else {
-                            format!(
-                                "{} overlaps SMD{}, the read-only current value of position channel {} (manual §3.4.3.1)",
-                                op.canonical(),
-                                r.pos_cv,
-                                r.channel
-                            )
-                        },
-                    )
-                    .operand(op.canonical())
-                    .hint(format!(
-                        "load a new value through SMD{} and SM{}.4 (set SMD{}=100, SM{}.4=1), or clear it with SM{}.6",
-                        r.pos_new_cv, r.pos_control, r.pos_new_cv, r.pos_control, r.pos_control
-                    )));
+                    let (msg, hint) = crate::k2::sm_map::pos_cv_read_only(&r, &op.canonical());
+                    return Err(Error::new(ErrorKind::Refused, msg).operand(op.canonical()).hint(hint));
                 }
             }
         }

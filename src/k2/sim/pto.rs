@@ -584,7 +584,7 @@ impl PtoChannel {
                 };
                 return Err(self.refuse(
                     mem,
-                    format!("{what} is below 2 (cycle and count must both be > 1, §3.4.2.2)"),
+                    format!("{what} is below 2 ({})", crate::k2::sm_map::PTO_INVALID_RULE),
                     op,
                     format!("load {reg} set (e.g. SMB{}=16#85), then PLS again", r.control),
                 ));

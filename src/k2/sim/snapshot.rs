@@ -400,7 +400,7 @@ impl ProgramState {
         // Compiled with the saved costs, not the ones this simulator had before the restore.
         let compile = |text: &str, file: &str| sim.compile_costed(text, file, p.costs.clone());
         if let Some(base) = agent_base {
-            let text = crate::k2::agent::il::program(base);
+            let text = crate::k2::agent::il::program(sim.model(), base);
             let prog = compile(&text, "k2_agent.il").map_err(|e| format!("the helper program: {e}"))?;
             let mut l = Loaded::new(prog, "k2_agent.il".to_string(), &text);
             if let Some(cpu) = &self.helper_cpu {

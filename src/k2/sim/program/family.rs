@@ -82,7 +82,7 @@ pub static SPECIALS: &[SpecialDef] = &[
         args: &[A::Const],
         optional: 0,
         edge: true,
-        doc: "PLS q: load the channel's SM settings and start PTO/PWM (on the rising edge of EN)",
+        doc: "PLS q: load the channel's SM settings and start PTO/PWM (on the rising edge of EN); the CR is left as it was — a refusal sets only the status bit SM66.4 …",
         source: "K2 §3.4.2",
     },
     SpecialDef {
@@ -486,11 +486,15 @@ impl Machine for K2Machine<'_> {
         let sim = &mut *self.sim;
         Ok(match sid {
             id::PLS => {
+                // K2 §3.4.2 (IL): «Если CR = 1, то PLS выполняется. Это не повлияет на
+                // значение CR.» — PLS runs only with the CR on and leaves it on, refused or
+                // not. A refusal shows in the channel's status byte alone: bit 4, "cycle time
+                // or pulse count invalid" (§3.4.2.2, SM66.4 …), which `pls` sets.
                 let ch = c(0)? as u8;
-                match sim.pto_index(ch) {
-                    Ok(i) => sim.pto[i].pls(&mut sim.mem, now).is_ok(),
-                    Err(_) => false,
+                if let Ok(i) = sim.pto_index(ch) {
+                    let _ = sim.pto[i].pls(&mut sim.mem, now);
                 }
+                true
             }
             id::HDEF => {
                 let (h, mode) = (c(0)? as u8, c(1)? as u8);

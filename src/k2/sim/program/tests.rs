@@ -108,6 +108,31 @@ fn a_program_starts_a_pulse_train_with_pls() {
     assert_eq!(get(&mut s, "SMD212/DINT"), Value::Int(1000));
 }
 
+/// K2 §3.4.2 (PLS, IL): «Если CR = 1, то PLS выполняется. Это не повлияет на значение CR.»
+/// A refused PLS (pulse count below 2, §3.4.2.2: «Время цикла и количество импульсов должны
+/// быть больше 1») leaves the CR on as an accepted one does; only the channel's status bit
+/// SM66.4 tells them apart.
+#[test]
+fn pls_leaves_the_cr_as_it_was_and_a_refusal_shows_only_in_status_bit_4() {
+    for (count, refused) in [("DI#1", true), ("DI#10", false)] {
+        let (mut s, clock) = sim();
+        let text = format!(
+            "LD %SM0.0\nMOVE B#16#85, %SMB67\nMOVE W#16#03E8, %SMW68\nMOVE {count}, %SMD72\nLD %SM0.1\nPLS 0\nS %V0.0, 1"
+        );
+        s.load_program(&text, "repro.il").unwrap();
+        clock.step(Duration::from_millis(1));
+        assert!(on(&mut s, "V0.0"), "{count}: the CR after PLS is the CR before it (§3.4.2)");
+        assert_eq!(
+            on(&mut s, "SM66.4"),
+            refused,
+            "{count}: status bit 4, cycle time or pulse count invalid (§3.4.2.2)"
+        );
+        clock.step(Duration::from_millis(20));
+        let pulses = if refused { 0 } else { 10 };
+        assert_eq!(get(&mut s, "SMD212/DINT"), Value::Int(pulses), "{count}: a refused PLS starts no train");
+    }
+}
+
 #[test]
 fn an_endless_loop_trips_the_watchdog_and_stops_the_cpu() {
     // K80S: a scan past the watchdog stops the CPU and turns outputs off; a fault is recorded.
