@@ -257,6 +257,7 @@ shell-hint-subcommand = did you mean `{ $command } { $near }`? `help { $command 
 
 ## Servo parameter sets (servo::params, servo params)
 
+servo-params-cannot-read = cannot read { $file }
 servo-params-bad-file = { $file } is not a parameter set file: { $reason }
 servo-params-other-drive = { $file } holds the parameters of a { $kind } drive and this drive is a { $expected }: a set loads only onto the drive type it was read from
 servo-params-unknown-object = { $file } lists parameter { $name } as { $object }/{ $dtype }, which is not a parameter of this drive's object dictionary: the file comes from another drive type or was edited

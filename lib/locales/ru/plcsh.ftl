@@ -258,6 +258,7 @@ shell-hint-subcommand = может быть, `{ $command } { $near }`? `help { $
 
 ## Servo parameter sets (servo::params, servo params)
 
+servo-params-cannot-read = не удаётся прочитать { $file }
 servo-params-bad-file = { $file } — не файл набора параметров: { $reason }
 servo-params-other-drive = { $file } содержит параметры привода { $kind }, а этот привод — { $expected }: набор загружается только в привод того типа, с которого он прочитан
 servo-params-unknown-object = { $file } называет параметр { $name } объектом { $object }/{ $dtype }, а в словаре объектов этого привода такого параметра нет: файл от привода другого типа или изменён вручную

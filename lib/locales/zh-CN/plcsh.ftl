@@ -250,6 +250,7 @@ shell-hint-subcommand = 是否想输入 `{ $command } { $near }`？`help { $comm
 
 ## Servo parameter sets (servo::params, servo params)
 
+servo-params-cannot-read = 无法读取 { $file }
 servo-params-bad-file = { $file } 不是参数集文件：{ $reason }
 servo-params-other-drive = { $file } 保存的是 { $kind } 驱动器的参数，而此驱动器是 { $expected }：参数集只能载入读出它的同类型驱动器
 servo-params-unknown-object = { $file } 把参数 { $name } 写为 { $object }/{ $dtype }，此驱动器的对象字典中没有这个参数：文件来自其他类型的驱动器或被修改过

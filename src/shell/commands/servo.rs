@@ -538,7 +538,7 @@ fn params(sh: &mut Shell, dev: usize, rest: &[lex::Word], base: usize, col: usiz
     let read_file = |sh: &Shell, (c, f): &(usize, String)| -> Result<ParamSet> {
         sh.session.check_read(f).map_err(|e| e.column(*c))?;
         let text = std::fs::read_to_string(f)
-            .map_err(|e| Error::io(format!("cannot read {f}")).cause(e).column(*c))?;
+            .map_err(|e| Error::io(crate::msg!("servo-params-cannot-read", file = f.as_str())).cause(e).column(*c))?;
         ParamSet::parse(&text, f).map_err(|e| e.column(*c))
     };
     let entry = &sh.session.entries()[dev];
