@@ -289,7 +289,7 @@ fn eeprom_dump_and_restore() {
 #[test]
 fn servo_parameter_sets() {
     for (dir, sp, by_c) in places("params") {
-        let file = dir.join("привод 1.toml");
+        let file = dir.join("привод.toml");
         let w = sp.write(&file);
         let line = format!(
             "servo params save {w}; set servo:profile_velocity=1234; servo params diff {w}; servo params load {w}"
