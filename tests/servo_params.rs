@@ -101,7 +101,8 @@ fn a_random_parameter_set_round_trips_exactly_onto_another_drive() {
         run(&mut sh, &format!("servo a params save {fa}; servo b params load {fa}; servo b params save {fb}"));
         let a = params::ParamSet::parse(&std::fs::read_to_string(fa).unwrap(), fa).unwrap();
         let b = params::ParamSet::parse(&std::fs::read_to_string(fb).unwrap(), fb).unwrap();
-        let got: Vec<(&str, i64)> = a.parameters.iter().map(|e| (objects::named(&e.name).name, e.value.unwrap())).collect();
+        let got: Vec<(&str, i64)> =
+            a.parameters.iter().map(|e| (objects::named(&e.name).name, e.value.unwrap())).collect();
         assert_eq!(got, want, "seed {seed}: the file holds what the drive holds");
         assert_eq!(a.parameters, b.parameters, "seed {seed}: drive b now holds drive a's set");
         assert!(params::diff(&a, &b).is_empty(), "seed {seed}");

@@ -583,8 +583,7 @@ fn params(sh: &mut Shell, dev: usize, rest: &[lex::Word], base: usize, col: usiz
             let (right, right_label) = match files {
                 [_, b] => (read_file(sh, b)?, b.1.clone()),
                 _ => {
-                    let mut access =
-                        crate::servo::ops(sh.session.entry(dev).device.as_mut()).expect("picked a servo");
+                    let mut access = crate::servo::ops(sh.session.entry(dev).device.as_mut()).expect("picked a servo");
                     let id = ServoOps::drive_id(&access);
                     let groups: Vec<&str> = left.drive.groups.iter().map(|g| g.as_str()).collect();
                     (params::read_set(&mut access, &groups, params::Identity { id, ..identity })?, "drive".to_string())
@@ -615,9 +614,17 @@ fn params(sh: &mut Shell, dev: usize, rest: &[lex::Word], base: usize, col: usiz
             let mut access = crate::servo::ops(sh.session.entry(dev).device.as_mut()).expect("picked a servo");
             let done = params::load(&mut access, &set, store)?;
             let mut text: String = if store {
-                crate::msg!("servo-params-loaded-stored", written = done.written.len() as u64, unchanged = done.unchanged as u64)
+                crate::msg!(
+                    "servo-params-loaded-stored",
+                    written = done.written.len() as u64,
+                    unchanged = done.unchanged as u64
+                )
             } else {
-                crate::msg!("servo-params-loaded", written = done.written.len() as u64, unchanged = done.unchanged as u64)
+                crate::msg!(
+                    "servo-params-loaded",
+                    written = done.written.len() as u64,
+                    unchanged = done.unchanged as u64
+                )
             }
             .into();
             for w in &done.written {
