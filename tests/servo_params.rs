@@ -203,6 +203,11 @@ fn a_file_from_another_drive_type_or_dictionary_is_refused_before_any_write() {
     let e = error(&mut sh, &format!("servo b params load {}", moved.display()));
     assert_eq!(e.code, "servo-params-unknown-object", "{e}");
     assert!(e.message.contains("gear_factor") && e.message.contains("2508.09"), "{e}");
+    let twice = d.join("twice.toml");
+    let first = text.find("[[parameter]]").unwrap();
+    let second = text[first + 1..].find("[[parameter]]").unwrap() + first + 1;
+    std::fs::write(&twice, format!("{text}\n{}", &text[first..second])).unwrap();
+    assert_eq!(error(&mut sh, &format!("servo b params load {}", twice.display())).code, "servo-params-duplicate");
     let bad = d.join("bad.toml");
     std::fs::write(&bad, "[drive\n").unwrap();
     assert_eq!(error(&mut sh, &format!("servo b params load {}", bad.display())).code, "servo-params-bad-file");

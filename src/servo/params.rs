@@ -120,7 +120,13 @@ impl ParamSet {
                 msg!("servo-params-other-drive", file = file, kind = set.drive.kind.as_str(), expected = DRIVE_TYPE),
             ));
         }
-        for e in &set.parameters {
+        for (i, e) in set.parameters.iter().enumerate() {
+            if set.parameters[..i].iter().any(|x| x.name == e.name) {
+                return Err(Error::new(
+                    ErrorKind::Value,
+                    msg!("servo-params-duplicate", file = file, name = e.name.as_str()),
+                ));
+            }
             let o = objects::by_name(&e.name).filter(|o| {
                 o.address() == e.object && objects::short_type(o.dtype) == e.dtype && parameters().any(|p| p == *o)
             });

@@ -261,6 +261,7 @@ servo-params-cannot-read = cannot read { $file }
 servo-params-bad-file = { $file } is not a parameter set file: { $reason }
 servo-params-other-drive = { $file } holds the parameters of a { $kind } drive and this drive is a { $expected }: a set loads only onto the drive type it was read from
 servo-params-unknown-object = { $file } lists parameter { $name } as { $object }/{ $dtype }, which is not a parameter of this drive's object dictionary: the file comes from another drive type or was edited
+servo-params-duplicate = { $file } lists parameter { $name } twice
 servo-params-out-of-range = { $file }: { $value } is out of range for { $name }
 servo-params-unknown-group = unknown parameter group `{ $group }`; the groups are { $groups }
 servo-params-read-back = { $name } ({ $object }) reads back { $back } after { $value } was written; the load stopped there

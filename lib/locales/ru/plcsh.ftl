@@ -262,6 +262,7 @@ servo-params-cannot-read = не удаётся прочитать { $file }
 servo-params-bad-file = { $file } — не файл набора параметров: { $reason }
 servo-params-other-drive = { $file } содержит параметры привода { $kind }, а этот привод — { $expected }: набор загружается только в привод того типа, с которого он прочитан
 servo-params-unknown-object = { $file } называет параметр { $name } объектом { $object }/{ $dtype }, а в словаре объектов этого привода такого параметра нет: файл от привода другого типа или изменён вручную
+servo-params-duplicate = { $file } перечисляет параметр { $name } дважды
 servo-params-out-of-range = { $file }: { $value } вне диапазона параметра { $name }
 servo-params-unknown-group = неизвестная группа параметров `{ $group }`; группы: { $groups }
 servo-params-read-back = { $name } ({ $object }) после записи { $value } читается как { $back }; загрузка остановлена

@@ -254,6 +254,7 @@ servo-params-cannot-read = 无法读取 { $file }
 servo-params-bad-file = { $file } 不是参数集文件：{ $reason }
 servo-params-other-drive = { $file } 保存的是 { $kind } 驱动器的参数，而此驱动器是 { $expected }：参数集只能载入读出它的同类型驱动器
 servo-params-unknown-object = { $file } 把参数 { $name } 写为 { $object }/{ $dtype }，此驱动器的对象字典中没有这个参数：文件来自其他类型的驱动器或被修改过
+servo-params-duplicate = { $file } 两次列出参数 { $name }
 servo-params-out-of-range = { $file }：{ $value } 超出参数 { $name } 的范围
 servo-params-unknown-group = 未知的参数组 `{ $group }`；参数组有 { $groups }
 servo-params-read-back = 写入 { $value } 后读回 { $name }（{ $object }）为 { $back }；载入在此停止
