@@ -29,6 +29,7 @@ pub static TARGETS: &[(&str, Target)] = &[
     ("completion", completion),
     ("servo_frame", servo_frame),
     ("servo_units", servo_units),
+    ("servo_params", servo_params),
     ("pulse", pulse),
     ("modbus_rtu", modbus_rtu),
     ("modbus_tcp", modbus_tcp),
@@ -181,6 +182,16 @@ pub fn servo_frame(data: &[u8]) {
         for size in [Size::B1, Size::B2, Size::B4] {
             let _ = decode_reply(&pair[0], &pair[1].to_bytes(), size);
         }
+    }
+}
+
+/// A drive parameter set file (`servo params load FILE`): parsed, checked, compared with
+/// itself.
+pub fn servo_params(data: &[u8]) {
+    use crate::servo::params::{self, ParamSet};
+    if let Ok(set) = ParamSet::parse(&text(data), "fuzz.toml") {
+        assert!(params::diff(&set, &set).is_empty(), "a set differs from itself");
+        let _ = set.to_toml();
     }
 }
 

@@ -53,6 +53,7 @@ const SERVO_WRITES: &[(&str, &[&str])] = &[
             "servo home method=35",
             "servo halt",
             "servo save",
+            "servo params load {params}",
             "servo raw 01 2B 40 60 00 0F 00 00 00",
             "servo raw 01 2F 60 60 00 03 00 00 00",
         ],
@@ -107,6 +108,7 @@ const BRIDGE_WRITES: &[(&str, &str)] = &[
     ("jog", "servo:jog{rpm=100}"),
     ("home", "servo:home()"),
     ("save", "servo:save()"),
+    ("params_load", "servo:params_load(\"{params}\")"),
     ("halt", "servo:halt()"),
     ("umpk_reset", "lab:umpk_reset()"),
     ("umpk_echo", "lab:umpk_echo(\"off\")"),
@@ -133,6 +135,8 @@ const BRIDGE_NOT_WRITES: &[(&str, &str)] = &[
     ("sim_off", "simulation control"),
     ("sim_inputs", "simulation control"),
     ("status", "reads"),
+    ("params_save", "reads the drive, writes a host file"),
+    ("params_diff", "reads"),
     ("wait_target", "reads"),
     ("encoder", "client-side unit conversion"),
     ("sim_fault", "simulation control"),
@@ -261,7 +265,14 @@ fn walk(url: &str, family: &str, clock: impl Fn() -> Clock) {
     let (file, p) = profiles(&dir, url, allowed);
     let backup = dir.join("backup.bin");
     std::fs::write(&backup, [1u8, 2, 3, 4]).unwrap();
-    let subst = |l: &str| l.replace("{backup}", backup.to_str().unwrap());
+    // A parameter set that differs from the drive's (profile_velocity), for `servo params load`.
+    let params = dir.join("params.toml");
+    std::fs::write(
+        &params,
+        "[drive]\ntype = \"Kinco servo\"\nmodel = \"m\"\nid = 1\nurl = \"u\"\nsaved = \"t\"\nplcsh = \"v\"\nencoder_resolution = 10000\n\n[[parameter]]\nname = \"profile_velocity\"\nobject = \"6081.00\"\ntype = \"u32\"\nunit = \"DEC\"\nvalue = 1234\n",
+    )
+    .unwrap();
+    let subst = |l: &str| l.replace("{backup}", backup.to_str().unwrap()).replace("{params}", params.to_str().unwrap());
     let mut calls: Vec<String> = lines.iter().flat_map(|(_, ls)| ls.iter().map(|l| subst(l))).collect();
     let prefix = format!("{name}:");
     calls

@@ -65,6 +65,7 @@ const CASES: &[(&str, &[&str])] = &[
     ("sim_program_load_and_break", &["sim program load FILE.il", "sim break FILE:LINE"]),
     ("sim_snapshot_save_and_restore", &["sim snapshot save NAME", "sim snapshot restore NAME"]),
     ("eeprom_dump_and_restore", &["eeprom dump FILE", "eeprom restore FILE"]),
+    ("servo_parameter_sets", &["servo params save FILE", "servo params diff FILE", "servo params load FILE"]),
     ("trace_and_plot_files", &["trace to=FILE.csv", "plot to=FILE.png"]),
     ("profile_plan_file", &["profile to=FILE.png"]),
     ("umpk_program_file", &["umpk program FILE.hex"]),
@@ -282,6 +283,22 @@ fn eeprom_dump_and_restore() {
             shell(&[], &format!("set VB3648=165; eeprom dump {w}; set VB3648=0; eeprom restore {w}; get VB3648"), by_c);
         assert_eq!(std::fs::read(&file).unwrap().first(), Some(&165), "{sp:?}");
         assert_eq!(l[4]["values"][0]["value"], 165, "{l:?}");
+    }
+}
+
+#[test]
+fn servo_parameter_sets() {
+    for (dir, sp, by_c) in places("params") {
+        let file = dir.join("привод.toml");
+        let w = sp.write(&file);
+        let line = format!(
+            "servo params save {w}; set servo:profile_velocity=1234; servo params diff {w}; servo params load {w}"
+        );
+        let l = shell(&[], &line, by_c);
+        assert!(std::fs::read_to_string(&file).unwrap().contains("profile_velocity"), "{sp:?}");
+        assert_eq!(l[0]["file"], shown(&file), "{sp:?}: {l:?}");
+        assert_eq!(l[2]["count"], 1, "{sp:?}: {l:?}");
+        assert_eq!(l[3]["written"][0]["name"], "profile_velocity", "{sp:?}: {l:?}");
     }
 }
 

@@ -23,6 +23,7 @@ const OPEN_ENDED: &[&str] = &[
     "trace OPERAND… every=10ms for=2s [to=FILE.csv]",
     "plot [OPERAND…] [to=FILE.png|FILE.svg] [size=900x340] [width=60] [height=8]",
     "servo read OBJ…",
+    "servo params save FILE [group…]",
     "servo raw BYTES…",
     "umpk monitor [OPERAND…] [count=N] [for=2s] [every=100ms] [quiet]",
     "lua CODE…",
@@ -58,6 +59,7 @@ fn a_word_after_every_form_of_every_command_is_refused_at_that_word() {
     // Lines a technician types, each with the form it must be refused against.
     for (cmd, form, line) in [
         ("servo", "servo save", "servo save x"),
+        ("servo", "servo params diff FILE [FILE2]", "servo params diff a.toml b.toml x"),
         ("sim", "sim wires", "sim wires x"),
         ("sim", "sim snapshots", "sim snapshots x"),
         ("sim", "sim cpu run|stop|pause", "sim cpu run x"),

@@ -97,6 +97,9 @@ const SPEED: &[Opt] = &[rename("rpm", "speed", "rpm")];
 /// `servo:jog{rpm=100}` → `servo jog 100rpm`.
 const JOG: &[Opt] = &[Opt { key: "rpm", to: "", unit: "rpm", spaced: true }];
 
+/// `{store=true}` → `--store`.
+const STORE: &[Opt] = &[rename("store", "--store", "")];
+
 /// Every device method that runs a shell command: the K2 helpers, the servo helpers, the
 /// simulator's input signals.
 pub static BRIDGE: &[Bridge] = &[
@@ -161,6 +164,10 @@ pub static BRIDGE: &[Bridge] = &[
     row("halt", "servo", "servo halt"),
     row("wait_target", "servo", "servo wait target [timeout={ms}]"),
     row("save", "servo", "servo save"),
+    // Parameter sets (servo::params): servo:params_load("x.toml", {store=true}).
+    row("params_save", "servo", "servo params save {}"),
+    row("params_diff", "servo", "servo params diff {}"),
+    with("params_load", "servo", "servo params load {}", STORE),
     row("encoder", "servo", "servo encoder"),
     row("sim_fault", "servo", "servo sim fault"),
     row("sim_switch", "servo", "servo sim switch {}"),

@@ -10,6 +10,7 @@ pub mod driver;
 pub mod ds402;
 pub mod frame;
 pub mod objects;
+pub mod params;
 pub mod sim;
 pub mod units;
 

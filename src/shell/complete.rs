@@ -68,6 +68,9 @@ pub static FILE_ARGS: &[(&str, &[&str])] = &[
     ("eeprom", &["save"]),
     ("sim", &["program", "load"]),
     ("umpk", &["program"]),
+    ("servo", &["params", "save"]),
+    ("servo", &["params", "diff"]),
+    ("servo", &["params", "load"]),
 ];
 
 /// Option keys whose value is a path.

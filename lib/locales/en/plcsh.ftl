@@ -254,3 +254,32 @@ shell-unknown-command = unknown command `{ $name }`
 shell-hint-did-you-mean = did you mean `{ $name }`? `help` lists the commands
 shell-hint-help = `help` lists the commands
 shell-hint-subcommand = did you mean `{ $command } { $near }`? `help { $command }` shows its usage
+
+## Servo parameter sets (servo::params, servo params)
+
+servo-params-cannot-read = cannot read { $file }
+servo-params-bad-file = { $file } is not a parameter set file: { $reason }
+servo-params-other-drive = { $file } holds the parameters of a { $kind } drive and this drive is a { $expected }: a set loads only onto the drive type it was read from
+servo-params-unknown-object = { $file } lists parameter { $name } as { $object }/{ $dtype }, which is not a parameter of this drive's object dictionary: the file comes from another drive type or was edited
+servo-params-duplicate = { $file } lists parameter { $name } twice
+servo-params-out-of-range = { $file }: { $value } is out of range for { $name }
+servo-params-unknown-group = unknown parameter group `{ $group }`; the groups are { $groups }
+servo-params-read-back = { $name } ({ $object }) reads back { $back } after { $value } was written; the load stopped there
+servo-params-stopped = the load stopped at { $name } ({ $object }) after { $written ->
+        [one] one write
+       *[other] { $written } writes
+    }: { $reason }
+servo-params-usage = usage: servo params save FILE [group…] | servo params diff FILE [FILE2] | servo params load FILE [--store]
+servo-params-saved = saved { $count ->
+        [one] one parameter
+       *[other] { $count } parameters
+    } to { $file }; { $refused } refused or missing
+servo-params-same = no differences
+servo-params-loaded = wrote { $written ->
+        [one] one parameter
+       *[other] { $written } parameters
+    }, each read back; { $unchanged } unchanged
+servo-params-loaded-stored = wrote { $written ->
+        [one] one parameter
+       *[other] { $written } parameters
+    }, each read back; { $unchanged } unchanged; stored in the drive's memory (2FF0.01 = 1)

@@ -255,3 +255,35 @@ shell-unknown-command = неизвестная команда `{ $name }`
 shell-hint-did-you-mean = может быть, `{ $name }`? `help` перечисляет команды
 shell-hint-help = `help` перечисляет команды
 shell-hint-subcommand = может быть, `{ $command } { $near }`? `help { $command }` показывает, как её вызывать
+
+## Servo parameter sets (servo::params, servo params)
+
+servo-params-cannot-read = не удаётся прочитать { $file }
+servo-params-bad-file = { $file } — не файл набора параметров: { $reason }
+servo-params-other-drive = { $file } содержит параметры привода { $kind }, а этот привод — { $expected }: набор загружается только в привод того типа, с которого он прочитан
+servo-params-unknown-object = { $file } называет параметр { $name } объектом { $object }/{ $dtype }, а в словаре объектов этого привода такого параметра нет: файл от привода другого типа или изменён вручную
+servo-params-duplicate = { $file } перечисляет параметр { $name } дважды
+servo-params-out-of-range = { $file }: { $value } вне диапазона параметра { $name }
+servo-params-unknown-group = неизвестная группа параметров `{ $group }`; группы: { $groups }
+servo-params-read-back = { $name } ({ $object }) после записи { $value } читается как { $back }; загрузка остановлена
+servo-params-stopped = загрузка остановлена на { $name } ({ $object }) после { $written ->
+        [one] { $written } записи
+       *[other] { $written } записей
+    }: { $reason }
+servo-params-usage = как вызывать: servo params save FILE [group…] | servo params diff FILE [FILE2] | servo params load FILE [--store]
+servo-params-saved = { $count ->
+        [one] сохранён { $count } параметр
+        [few] сохранено { $count } параметра
+       *[many] сохранено { $count } параметров
+    } в { $file }; отказано или нет: { $refused }
+servo-params-same = различий нет
+servo-params-loaded = { $written ->
+        [one] записан { $written } параметр
+        [few] записано { $written } параметра
+       *[many] записано { $written } параметров
+    }, каждый прочитан обратно; без изменений: { $unchanged }
+servo-params-loaded-stored = { $written ->
+        [one] записан { $written } параметр
+        [few] записано { $written } параметра
+       *[many] записано { $written } параметров
+    }, каждый прочитан обратно; без изменений: { $unchanged }; параметры сохранены в памяти привода (2FF0.01 = 1)

@@ -247,3 +247,20 @@ shell-unknown-command = 未知的命令 `{ $name }`
 shell-hint-did-you-mean = 是否想输入 `{ $name }`？`help` 列出所有命令
 shell-hint-help = `help` 列出所有命令
 shell-hint-subcommand = 是否想输入 `{ $command } { $near }`？`help { $command }` 显示其用法
+
+## Servo parameter sets (servo::params, servo params)
+
+servo-params-cannot-read = 无法读取 { $file }
+servo-params-bad-file = { $file } 不是参数集文件：{ $reason }
+servo-params-other-drive = { $file } 保存的是 { $kind } 驱动器的参数，而此驱动器是 { $expected }：参数集只能载入读出它的同类型驱动器
+servo-params-unknown-object = { $file } 把参数 { $name } 写为 { $object }/{ $dtype }，此驱动器的对象字典中没有这个参数：文件来自其他类型的驱动器或被修改过
+servo-params-duplicate = { $file } 两次列出参数 { $name }
+servo-params-out-of-range = { $file }：{ $value } 超出参数 { $name } 的范围
+servo-params-unknown-group = 未知的参数组 `{ $group }`；参数组有 { $groups }
+servo-params-read-back = 写入 { $value } 后读回 { $name }（{ $object }）为 { $back }；载入在此停止
+servo-params-stopped = 载入在 { $name }（{ $object }）处停止，此前已写入 { $written } 次：{ $reason }
+servo-params-usage = 用法：servo params save FILE [group…] | servo params diff FILE [FILE2] | servo params load FILE [--store]
+servo-params-saved = 已将 { $count } 个参数保存到 { $file }；拒绝或不存在：{ $refused }
+servo-params-same = 没有差异
+servo-params-loaded = 已写入 { $written } 个参数，均已读回；未改变：{ $unchanged }
+servo-params-loaded-stored = 已写入 { $written } 个参数，均已读回；未改变：{ $unchanged }；参数已保存到驱动器存储器（2FF0.01 = 1）

@@ -22,7 +22,7 @@ use std::time::Duration;
 pub const SERVO: CommandSpec = CommandSpec {
     name: "servo",
     aliases: &[],
-    usage: "servo [DEVICE] status|enable|disable|fault-reset|quickstop|mode NAME|move abs|rel POS [speed=300rpm] [acc=100rps/s] [dec=100rps/s]|jog SPEED [acc=100rps/s] [dec=100rps/s]|halt [on|off]|home [method=N]|wait target [timeout=5s]|save|read OBJ…|encoder [N|auto]|raw BYTES…|sim fault [drive] [CODE] [id=N]|sim fault no-reply|bad-checksum|drop-echo [count=N] [all]|sim fault delay D|sim fault late D|sim fault abort OBJ CODE|sim fault clear|sim switch [home|neg|pos] POS|off|sim pulses freq=HZ count=N [dir=fwd|rev]|sim strict on|off",
+    usage: "servo [DEVICE] status|enable|disable|fault-reset|quickstop|mode NAME|move abs|rel POS [speed=300rpm] [acc=100rps/s] [dec=100rps/s]|jog SPEED [acc=100rps/s] [dec=100rps/s]|halt [on|off]|home [method=N]|wait target [timeout=5s]|save|params save FILE [group…]|params diff FILE [FILE2]|params load FILE [--store]|read OBJ…|encoder [N|auto]|raw BYTES…|sim fault [drive] [CODE] [id=N]|sim fault no-reply|bad-checksum|drop-echo [count=N] [all]|sim fault delay D|sim fault late D|sim fault abort OBJ CODE|sim fault clear|sim switch [home|neg|pos] POS|off|sim pulses freq=HZ count=N [dir=fwd|rev]|sim strict on|off",
     summary: "Kinco servo helpers: DS402 state machine, moves, jog, homing, waits, units, raw frames",
     subcommands: &[
         "status",
@@ -37,6 +37,7 @@ pub const SERVO: CommandSpec = CommandSpec {
         "home",
         "wait",
         "save",
+        "params",
         "read",
         "encoder",
         "raw",
@@ -60,6 +61,9 @@ fn servo(sh: &mut Shell, args: Args) -> Result<Outcome> {
     };
     let rest = &rest[1..];
     let name = sh.session.entries()[dev].name.clone();
+    if sub == "params" {
+        return params(sh, dev, rest, args.offset, args.offset + col).map_err(|e| e.device(name));
+    }
     let simulated = sh.session.entries()[dev].device.info().simulated;
     let clock = if simulated { sh.session.clock.clone() } else { Clock::following() };
     let interrupt = sh.session.interrupt.clone();
@@ -525,4 +529,120 @@ fn sim(ops: &mut dyn ServoOps, rest: &[lex::Word], base: usize, col: usize) -> R
         }
     }
     Ok(o)
+}
+
+/// `servo params save FILE [group…]`, `servo params diff FILE [FILE2]`, `servo params load
+/// FILE [--store]`: parameter sets ([`crate::servo::params`]; docs/servo.md "Parameter sets").
+fn params(sh: &mut Shell, dev: usize, rest: &[lex::Word], base: usize, col: usize) -> Result<Outcome> {
+    use crate::servo::params::{self, ParamSet};
+    let usage = || Error::usage(crate::msg!("servo-params-usage")).column(col);
+    let words: Vec<(usize, String)> = rest.iter().map(|&(c, w)| (base + c, lex::unquote(w).into_owned())).collect();
+    let Some((verb, files)) = words.split_first() else { return Err(usage()) };
+    let read_file = |sh: &Shell, (c, f): &(usize, String)| -> Result<ParamSet> {
+        sh.session.check_read(f).map_err(|e| e.column(*c))?;
+        let text = std::fs::read_to_string(f)
+            .map_err(|e| Error::io(crate::msg!("servo-params-cannot-read", file = f.as_str())).cause(e).column(*c))?;
+        ParamSet::parse(&text, f).map_err(|e| e.column(*c))
+    };
+    let entry = &sh.session.entries()[dev];
+    let identity = params::Identity {
+        kind: params::DRIVE_TYPE.to_string(),
+        model: entry.device.info().model.clone(),
+        id: 0,
+        url: entry.url.clone(),
+        saved: params::utc_now(),
+        plcsh: env!("CARGO_PKG_VERSION").to_string(),
+        encoder_resolution: 0,
+        groups: Vec::new(),
+    };
+    let simulated = entry.device.info().simulated;
+    match (verb.1.as_str(), files) {
+        ("save", [(c, file), groups @ ..]) => {
+            for (gc, g) in groups {
+                params::check_group(g).map_err(|e| e.column(*gc))?;
+            }
+            crate::shell::files::check_write(&sh.write_rule, file).map_err(|e| e.column(*c))?;
+            let groups: Vec<&str> = groups.iter().map(|g| g.1.as_str()).collect();
+            let set = {
+                let mut access = crate::servo::ops(sh.session.entry(dev).device.as_mut()).expect("picked a servo");
+                let id = ServoOps::drive_id(&access);
+                params::read_set(&mut access, &groups, params::Identity { id, ..identity })?
+            };
+            crate::core::durable::write_atomic(std::path::Path::new(file), set.to_toml().as_bytes())?;
+            let refused = set.parameters.iter().filter(|e| e.value.is_none()).count();
+            Ok(Outcome::new("servo")
+                .text(crate::msg!(
+                    "servo-params-saved",
+                    count = set.parameters.len() as u64,
+                    file = file.as_str(),
+                    refused = refused as u64
+                ))
+                .with("file", file)
+                .with("drive", &set.drive)
+                .with("parameters", &set.parameters))
+        }
+        ("diff", [a]) | ("diff", [a, _]) => {
+            let left = read_file(sh, a)?;
+            let (right, right_label) = match files {
+                [_, b] => (read_file(sh, b)?, b.1.clone()),
+                _ => {
+                    let mut access = crate::servo::ops(sh.session.entry(dev).device.as_mut()).expect("picked a servo");
+                    let id = ServoOps::drive_id(&access);
+                    let groups: Vec<&str> = left.drive.groups.iter().map(|g| g.as_str()).collect();
+                    (params::read_set(&mut access, &groups, params::Identity { id, ..identity })?, "drive".to_string())
+                }
+            };
+            let d = params::diff(&left, &right);
+            let rows: Vec<Vec<String>> = d
+                .iter()
+                .map(|x| vec![x.name.clone(), x.object.clone(), x.left.shown.clone(), x.right.shown.clone()])
+                .collect();
+            let mut o = Outcome::new("servo");
+            o = if rows.is_empty() {
+                o.text(crate::msg!("servo-params-same"))
+            } else {
+                o.table(&["parameter", "object", a.1.as_str(), right_label.as_str()], rows)
+            };
+            Ok(o.with("left", &a.1).with("right", &right_label).with("count", d.len()).with("differences", &d))
+        }
+        ("load", [f]) | ("load", [f, (_, _)]) => {
+            let store = match files {
+                [_, (sc, s)] if s != "--store" => {
+                    return Err(Error::usage(crate::msg!("servo-params-usage")).column(*sc))
+                }
+                [_, _] => true,
+                _ => false,
+            };
+            let set = read_file(sh, f)?;
+            let mut access = crate::servo::ops(sh.session.entry(dev).device.as_mut()).expect("picked a servo");
+            let done = params::load(&mut access, &set, store)?;
+            let mut text: String = if store {
+                crate::msg!(
+                    "servo-params-loaded-stored",
+                    written = done.written.len() as u64,
+                    unchanged = done.unchanged as u64
+                )
+            } else {
+                crate::msg!(
+                    "servo-params-loaded",
+                    written = done.written.len() as u64,
+                    unchanged = done.unchanged as u64
+                )
+            }
+            .into();
+            for w in &done.written {
+                text.push_str(&format!("\n  {} ({}) {} → {}", w.name, w.object, w.old, w.new));
+            }
+            let name = sh.session.entries()[dev].name.clone();
+            Ok(Outcome::new("servo")
+                .text(text)
+                .with("file", &f.1)
+                .with("written", &done.written)
+                .with("unchanged", done.unchanged)
+                .with("skipped", &done.skipped)
+                .with("stored", done.stored)
+                .acted_on(&name, simulated))
+        }
+        _ => Err(usage()),
+    }
 }

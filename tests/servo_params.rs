@@ -1,0 +1,239 @@
+//! Drive parameter sets (docs/servo.md, "Parameter sets"): `servo params save/diff/load` and
+//! the Lua methods on the in-process drive simulator. A random parameter set within each
+//! object's range (the ranges the drive accepts: kinco-servo.md seed §1 and the public notes'
+//! option codes, as `servo::sim::drive` enforces them) round-trips exactly through a file onto
+//! a second drive; a load never writes a parameter whose value is already the file's (the
+//! requests the simulated line received count it); a refusal stops the load naming the
+//! parameter; a file from another drive type is refused.
+
+mod common;
+use plcsh::core::Clock;
+use plcsh::output::Style;
+use plcsh::servo::objects::{self, ObjRef};
+use plcsh::servo::params;
+use plcsh::session::Session;
+use plcsh::shell::Shell;
+use serde_json::Value;
+use std::path::PathBuf;
+
+/// The seeded generator the property tests share (`core::test_rng`).
+#[path = "../src/core/test_rng.rs"]
+#[allow(dead_code)]
+mod test_rng;
+use test_rng::Rng;
+
+fn dir(tag: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("plcsh-params-{}-{tag}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn shell() -> Shell {
+    let mut s = Session::new(Clock::stepped());
+    s.open("a", "sim-servo:?id=1").unwrap();
+    s.open("b", "sim-servo:?id=1").unwrap();
+    Shell::new(s, Style { json: true, color: false })
+}
+
+fn run(sh: &mut Shell, line: &str) -> Vec<Value> {
+    sh.exec(line)
+        .into_iter()
+        .map(|r| match r {
+            Ok(o) => serde_json::to_value(&o).unwrap(),
+            Err((cmd, e)) => panic!("`{line}`: {cmd} failed: {e}"),
+        })
+        .collect()
+}
+
+/// The error of the last command of `line`.
+fn error(sh: &mut Shell, line: &str) -> plcsh::core::Error {
+    match sh.exec(line).pop().expect("a result") {
+        Ok(o) => panic!("`{line}` succeeded: {}", serde_json::to_value(&o).unwrap()),
+        Err((_, e)) => e,
+    }
+}
+
+/// Requests drive `name`'s simulated line has received so far.
+fn received(sh: &mut Shell, name: &str) -> u64 {
+    let i = sh.session.index(name).unwrap();
+    let line = plcsh::servo::simulator(sh.session.entry(i).device.as_mut()).expect("simulated");
+    let n = line.lock().unwrap().received;
+    n
+}
+
+/// A value the drive accepts for parameter `o`: the option codes and modes the drive takes
+/// (operating mode seed §3; 605A/605D option codes, 2508.03 pulse modes per the public notes;
+/// 2508.02 gear divider not 0), a positive encoder resolution, otherwise any value of the type.
+fn pick(o: &objects::Object, rng: &mut Rng) -> i64 {
+    match o.name {
+        "operating_mode" => rng.pick(&[1, 3, -3, 4, 6, -4]),
+        "quickstop_option" => rng.in_range(0, 8),
+        "halt_option" => rng.in_range(1, 4),
+        "pulse_mode" => rng.pick(&[0, 1, 2, 10, 11, 12]),
+        "gear_divider" => rng.in_range(1, 0xFFFF),
+        "encoder_resolution" => rng.in_range(1, 1 << 24),
+        _ => {
+            let (lo, hi) = o.dtype.int_range();
+            rng.in_range(lo, hi)
+        }
+    }
+}
+
+#[test]
+fn a_random_parameter_set_round_trips_exactly_onto_another_drive() {
+    let d = dir("roundtrip");
+    for seed in 1..=6u64 {
+        let mut rng = Rng(0x9E37_79B9_7F4A_7C15 ^ seed);
+        let mut sh = shell();
+        let mut want = Vec::new();
+        {
+            let i = sh.session.index("a").unwrap();
+            let mut ops = plcsh::servo::ops(sh.session.entry(i).device.as_mut()).unwrap();
+            for o in params::parameters() {
+                let v = pick(o, &mut rng);
+                plcsh::servo::ServoOps::write_raw(&mut ops, ObjRef::of(o), o.dtype.encode(&plcsh::core::Value::Int(v)))
+                    .unwrap_or_else(|e| panic!("seed {seed}: {} = {v}: {e}", o.name));
+                want.push((o.name, v));
+            }
+        }
+        let (fa, fb) = (d.join(format!("a{seed}.toml")), d.join(format!("b{seed}.toml")));
+        let (fa, fb) = (fa.to_str().unwrap(), fb.to_str().unwrap());
+        run(&mut sh, &format!("servo a params save {fa}; servo b params load {fa}; servo b params save {fb}"));
+        let a = params::ParamSet::parse(&std::fs::read_to_string(fa).unwrap(), fa).unwrap();
+        let b = params::ParamSet::parse(&std::fs::read_to_string(fb).unwrap(), fb).unwrap();
+        let got: Vec<(&str, i64)> =
+            a.parameters.iter().map(|e| (objects::named(&e.name).name, e.value.unwrap())).collect();
+        assert_eq!(got, want, "seed {seed}: the file holds what the drive holds");
+        assert_eq!(a.parameters, b.parameters, "seed {seed}: drive b now holds drive a's set");
+        assert!(params::diff(&a, &b).is_empty(), "seed {seed}");
+        let l = run(&mut sh, &format!("servo a params diff {fa} {fb}; servo b params diff {fa}"));
+        assert_eq!((&l[0]["count"], &l[1]["count"]), (&0.into(), &0.into()), "seed {seed}: {l:?}");
+    }
+}
+
+#[test]
+fn a_load_writes_only_what_differs_and_stores_only_when_asked() {
+    let d = dir("writes");
+    let f = d.join("set.toml");
+    let f = f.to_str().unwrap();
+    let mut sh = shell();
+    let l = run(&mut sh, &format!("servo a params save {f}"));
+    let n = l[0]["parameters"].as_array().unwrap().len() as u64;
+    assert!(n >= 40, "{n}");
+    // Nothing differs: one read per parameter on the line and not one write.
+    let before = received(&mut sh, "a");
+    let l = run(&mut sh, &format!("servo a params load {f}"));
+    assert_eq!(received(&mut sh, "a") - before, n, "{l:?}");
+    assert_eq!(l[0]["written"], serde_json::json!([]), "{l:?}");
+    assert_eq!(l[0]["unchanged"], n);
+    // Two differ: a read of each, then a write and a read-back for each of the two.
+    run(&mut sh, "set a:profile_velocity=1234, a:gear_factor=7");
+    let l = run(&mut sh, &format!("servo a params diff {f}"));
+    assert_eq!(l[0]["count"], 2, "{l:?}");
+    let diffs = l[0]["differences"].as_array().unwrap();
+    assert_eq!(diffs[0]["name"], "profile_velocity");
+    assert_eq!(diffs[0]["left"]["shown"], "273067 DEC = 100 rpm", "the units of a diff: {l:?}");
+    let before = received(&mut sh, "a");
+    let l = run(&mut sh, &format!("servo a params load {f}"));
+    assert_eq!(received(&mut sh, "a") - before, n + 4, "{l:?}");
+    let names: Vec<&str> = l[0]["written"].as_array().unwrap().iter().map(|w| w["name"].as_str().unwrap()).collect();
+    assert_eq!(names, ["profile_velocity", "gear_factor"]);
+    assert_eq!(l[0]["written"][0]["old"], 1234);
+    assert_eq!(l[0]["stored"], false);
+    let saves = |sh: &mut Shell| {
+        let i = sh.session.index("a").unwrap();
+        let line = plcsh::servo::simulator(sh.session.entry(i).device.as_mut()).unwrap();
+        let s = line.lock().unwrap().drive(1).unwrap().saves;
+        s
+    };
+    assert_eq!(saves(&mut sh), 0, "no store without --store");
+    let l = run(&mut sh, &format!("servo a params load {f} --store"));
+    assert_eq!((saves(&mut sh), &l[0]["stored"]), (1, &true.into()), "{l:?}");
+}
+
+#[test]
+fn a_refusal_stops_the_load_naming_the_parameter_and_a_refused_read_is_listed_not_guessed() {
+    let d = dir("refusal");
+    let f = d.join("set.toml");
+    let f = f.to_str().unwrap();
+    let mut sh = shell();
+    run(&mut sh, &format!("servo a params save {f}; set b:gear_factor=9, b:pulse_filter=3"));
+    run(&mut sh, "servo b sim fault abort gear_factor 16#06090030");
+    let e = error(&mut sh, &format!("servo b params load {f}"));
+    assert_eq!(e.kind, plcsh::core::ErrorKind::Refused, "{e}");
+    assert_eq!(e.code, "servo-params-stopped", "{e}");
+    assert!(e.message.contains("gear_factor (2508.01)") && e.message.contains("16#06090030"), "{e}");
+    assert_eq!(e.operand.as_deref(), Some("gear_factor"));
+    // Stopped there: the parameter after it was not written.
+    let l = run(&mut sh, "get b:pulse_filter");
+    assert_eq!(l[0]["values"][0]["value"], 3, "{l:?}");
+    // A drive that refuses a read: the file says so, with the drive's answer, and no value.
+    run(&mut sh, "servo b sim fault clear; servo b sim fault abort velocity_kp 16#06010000");
+    let g = d.join("refused.toml");
+    let g = g.to_str().unwrap();
+    let l = run(&mut sh, &format!("servo b params save {g}"));
+    assert!(l[0]["text"].as_str().unwrap_or_default().contains("1 refused") || l[0].to_string().contains("1 refused"));
+    let set = params::ParamSet::parse(&std::fs::read_to_string(g).unwrap(), g).unwrap();
+    let e = set.parameters.iter().find(|e| e.name == "velocity_kp").unwrap();
+    assert_eq!((e.value, e.status.as_deref()), (None, Some("refused")), "{e:?}");
+    assert!(e.note.as_deref().unwrap_or_default().contains("16#06010000"), "{e:?}");
+    // The diff against a drive that answers shows the refusal, and a load skips it.
+    let l = run(&mut sh, &format!("servo b sim fault clear; servo a params diff {g}; servo a params load {g}"));
+    let diffs = l[1]["differences"].as_array().unwrap();
+    assert!(diffs.iter().any(|x| x["name"] == "velocity_kp" && x["left"]["status"] == "refused"), "{l:?}");
+    assert_eq!(l[2]["skipped"], serde_json::json!(["velocity_kp"]), "{l:?}");
+}
+
+#[test]
+fn a_file_from_another_drive_type_or_dictionary_is_refused_before_any_write() {
+    let d = dir("other");
+    let f = d.join("set.toml");
+    let f = f.to_str().unwrap();
+    let mut sh = shell();
+    run(&mut sh, &format!("servo a params save {f}; set b:gear_factor=9"));
+    let text = std::fs::read_to_string(f).unwrap();
+    let other = d.join("other.toml");
+    std::fs::write(&other, text.replace("type = \"Kinco servo\"", "type = \"Delta ASDA-B2\"")).unwrap();
+    let before = received(&mut sh, "b");
+    let e = error(&mut sh, &format!("servo b params load {}", other.display()));
+    assert_eq!(e.code, "servo-params-other-drive", "{e}");
+    assert!(e.message.contains("Delta ASDA-B2") && e.message.contains("Kinco servo"), "{e}");
+    let moved = d.join("moved.toml");
+    std::fs::write(&moved, text.replace("object = \"2508.01\"", "object = \"2508.09\"")).unwrap();
+    let e = error(&mut sh, &format!("servo b params load {}", moved.display()));
+    assert_eq!(e.code, "servo-params-unknown-object", "{e}");
+    assert!(e.message.contains("gear_factor") && e.message.contains("2508.09"), "{e}");
+    let twice = d.join("twice.toml");
+    let first = text.find("[[parameter]]").unwrap();
+    let second = text[first + 1..].find("[[parameter]]").unwrap() + first + 1;
+    std::fs::write(&twice, format!("{text}\n{}", &text[first..second])).unwrap();
+    assert_eq!(error(&mut sh, &format!("servo b params load {}", twice.display())).code, "servo-params-duplicate");
+    let bad = d.join("bad.toml");
+    std::fs::write(&bad, "[drive\n").unwrap();
+    assert_eq!(error(&mut sh, &format!("servo b params load {}", bad.display())).code, "servo-params-bad-file");
+    assert_eq!(received(&mut sh, "b"), before, "nothing reached the drive");
+    assert_eq!(run(&mut sh, "get b:gear_factor")[0]["values"][0]["value"], 9);
+}
+
+#[test]
+fn lua_saves_compares_and_loads_parameter_sets() {
+    let d = dir("lua");
+    let f = d.join("set.toml");
+    let f = f.to_str().unwrap().replace('\\', "/");
+    let script = format!(
+        "local s = plcsh.device('servo')\n\
+         s:params_save('{f}')\n\
+         s.profile_velocity = 99\n\
+         local d = s:params_diff('{f}')\n\
+         assert(d.count == 1 and d.differences[1].name == 'profile_velocity', 'diff')\n\
+         local l = s:params_load('{f}', {{store = true}})\n\
+         assert(#l.written == 1 and l.stored == true, 'load')\n\
+         assert(s:params_diff('{f}').count == 0, 'after')\n\
+         print('lua ok')\n"
+    );
+    let p = d.join("s.lua");
+    std::fs::write(&p, script).unwrap();
+    let o = common::plcsh().args(["--time", "stepped", "run"]).arg(&p).output().unwrap();
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success() && out.contains("lua ok"), "{out}\n{}", String::from_utf8_lossy(&o.stderr));
+}
