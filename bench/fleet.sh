@@ -36,7 +36,7 @@ ulimit -n "$(ulimit -Hn)" 2>/dev/null
 
 if [ "${PROPERTY:-0}" != 0 ]; then
     echo "# $(date -u +%FT%TZ) property test: $PROPERTY generated runs; load: $(cut -d' ' -f1-3 /proc/loadavg)" >&2
-    (cd "$here/.." && PLCSH_PUBLISH_CASES=$PROPERTY cargo test --release --lib publish::property -- --nocapture 2>&1 |
+    (cd "$here/.." && PLCSH_BENCH_PUBLISH_CASES=$PROPERTY cargo test --release --lib publish::property -- --nocapture 2>&1 |
         grep -E "cases|test result|panicked") || exit 1
 fi
 

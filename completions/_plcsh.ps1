@@ -540,7 +540,6 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             [CompletionResult]::new('new', 'new', [CompletionResultType]::ParameterValue, 'Write a working example lab (K2 + drive with wiring, IL starter, Lua grader) into NAME')
             [CompletionResult]::new('check', 'check', [CompletionResultType]::ParameterValue, 'Check a lab: its lab.toml, files and start state, and the grader on the reference solution')
             [CompletionResult]::new('grade', 'grade', [CompletionResultType]::ParameterValue, 'Grade submissions (files or folders of .lua / .il files), each in a fresh sandboxed worker')
-            [CompletionResult]::new('worker', 'worker', [CompletionResultType]::ParameterValue, 'Grade one submission and write its report as JSON to REPORT (what `lab grade` runs per submission; what the submission prints goes to stdout, never into the report)')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
         }
@@ -608,34 +607,10 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             break
         }
-        'plcsh;lab;worker' {
-            [CompletionResult]::new('--report', '--report', [CompletionResultType]::ParameterName, 'report')
-            [CompletionResult]::new('--write-dir', '--write-dir', [CompletionResultType]::ParameterName, 'The submission''s write directory, made private by the parent (which removes it)')
-            [CompletionResult]::new('--model', '--model', [CompletionResultType]::ParameterName, 'Model of the default simulated PLC')
-            [CompletionResult]::new('-d', '-d', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
-            [CompletionResult]::new('--device', '--device', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
-            [CompletionResult]::new('--time', '--time', [CompletionResultType]::ParameterName, 'Simulator time: follow the wall clock, or move only when stepped')
-            [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).')
-            [CompletionResult]::new('--state', '--state', [CompletionResultType]::ParameterName, 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user''s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE')
-            [CompletionResult]::new('--record', '--record', [CompletionResultType]::ParameterName, 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)')
-            [CompletionResult]::new('--bench', '--bench', [CompletionResultType]::ParameterName, 'Open a simulated machine described by a bench file (devices, wiring, initial values)')
-            [CompletionResult]::new('-j', '-j', [CompletionResultType]::ParameterName, 'With --fleet: how many devices are worked on at once')
-            [CompletionResult]::new('--jobs', '--jobs', [CompletionResultType]::ParameterName, 'With --fleet: how many devices are worked on at once')
-            [CompletionResult]::new('--lang', '--lang', [CompletionResultType]::ParameterName, 'The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system''s; English when neither names one of these)')
-            [CompletionResult]::new('--device-timeout', '--device-timeout', [CompletionResultType]::ParameterName, 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)')
-            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'Print one JSON object per command result')
-            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
-            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
-            [CompletionResult]::new('--read-only', '--read-only', [CompletionResultType]::ParameterName, 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine')
-            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            break
-        }
         'plcsh;lab;help' {
             [CompletionResult]::new('new', 'new', [CompletionResultType]::ParameterValue, 'Write a working example lab (K2 + drive with wiring, IL starter, Lua grader) into NAME')
             [CompletionResult]::new('check', 'check', [CompletionResultType]::ParameterValue, 'Check a lab: its lab.toml, files and start state, and the grader on the reference solution')
             [CompletionResult]::new('grade', 'grade', [CompletionResultType]::ParameterValue, 'Grade submissions (files or folders of .lua / .il files), each in a fresh sandboxed worker')
-            [CompletionResult]::new('worker', 'worker', [CompletionResultType]::ParameterValue, 'Grade one submission and write its report as JSON to REPORT (what `lab grade` runs per submission; what the submission prints goes to stdout, never into the report)')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
         }
@@ -646,9 +621,6 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             break
         }
         'plcsh;lab;help;grade' {
-            break
-        }
-        'plcsh;lab;help;worker' {
             break
         }
         'plcsh;lab;help;help' {
@@ -766,7 +738,6 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             [CompletionResult]::new('new', 'new', [CompletionResultType]::ParameterValue, 'Write a working example lab (K2 + drive with wiring, IL starter, Lua grader) into NAME')
             [CompletionResult]::new('check', 'check', [CompletionResultType]::ParameterValue, 'Check a lab: its lab.toml, files and start state, and the grader on the reference solution')
             [CompletionResult]::new('grade', 'grade', [CompletionResultType]::ParameterValue, 'Grade submissions (files or folders of .lua / .il files), each in a fresh sandboxed worker')
-            [CompletionResult]::new('worker', 'worker', [CompletionResultType]::ParameterValue, 'Grade one submission and write its report as JSON to REPORT (what `lab grade` runs per submission; what the submission prints goes to stdout, never into the report)')
             break
         }
         'plcsh;help;lab;new' {
@@ -776,9 +747,6 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             break
         }
         'plcsh;help;lab;grade' {
-            break
-        }
-        'plcsh;help;lab;worker' {
             break
         }
         'plcsh;help;publish' {

@@ -139,9 +139,6 @@ _plcsh() {
             plcsh__subcmd__help__subcmd__lab,new)
                 cmd="plcsh__subcmd__help__subcmd__lab__subcmd__new"
                 ;;
-            plcsh__subcmd__help__subcmd__lab,worker)
-                cmd="plcsh__subcmd__help__subcmd__lab__subcmd__worker"
-                ;;
             plcsh__subcmd__help__subcmd__record,show)
                 cmd="plcsh__subcmd__help__subcmd__record__subcmd__show"
                 ;;
@@ -163,9 +160,6 @@ _plcsh() {
             plcsh__subcmd__lab,new)
                 cmd="plcsh__subcmd__lab__subcmd__new"
                 ;;
-            plcsh__subcmd__lab,worker)
-                cmd="plcsh__subcmd__lab__subcmd__worker"
-                ;;
             plcsh__subcmd__lab__subcmd__help,check)
                 cmd="plcsh__subcmd__lab__subcmd__help__subcmd__check"
                 ;;
@@ -177,9 +171,6 @@ _plcsh() {
                 ;;
             plcsh__subcmd__lab__subcmd__help,new)
                 cmd="plcsh__subcmd__lab__subcmd__help__subcmd__new"
-                ;;
-            plcsh__subcmd__lab__subcmd__help,worker)
-                cmd="plcsh__subcmd__lab__subcmd__help__subcmd__worker"
                 ;;
             plcsh__subcmd__record,help)
                 cmd="plcsh__subcmd__record__subcmd__help"
@@ -476,17 +467,17 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__agent__subcmd__il)
-            opts="-v -d -j -h --base --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
+            opts="-v -d -j -h --model --base --json --verbose --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
             fi
             case "${prev}" in
-                --base)
+                --model)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
-                --model)
+                --base)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -768,7 +759,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__help__subcmd__lab)
-            opts="new check grade worker"
+            opts="new check grade"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -810,20 +801,6 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__help__subcmd__lab__subcmd__new)
-            opts=""
-            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
-                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-                return 0
-            fi
-            case "${prev}" in
-                *)
-                    COMPREPLY=()
-                    ;;
-            esac
-            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-            return 0
-            ;;
-        plcsh__subcmd__help__subcmd__lab__subcmd__worker)
             opts=""
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
@@ -1020,7 +997,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__lab)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help new check grade worker help"
+            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help new check grade help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1206,7 +1183,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__lab__subcmd__help)
-            opts="new check grade worker help"
+            opts="new check grade help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1275,20 +1252,6 @@ _plcsh() {
             COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
             return 0
             ;;
-        plcsh__subcmd__lab__subcmd__help__subcmd__worker)
-            opts=""
-            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
-                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-                return 0
-            fi
-            case "${prev}" in
-                *)
-                    COMPREPLY=()
-                    ;;
-            esac
-            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-            return 0
-            ;;
         plcsh__subcmd__lab__subcmd__new)
             opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
@@ -1296,76 +1259,6 @@ _plcsh() {
                 return 0
             fi
             case "${prev}" in
-                --model)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
-                --device)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
-                -d)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
-                --time)
-                    COMPREPLY=($(compgen -W "wall stepped" -- "${cur}"))
-                    return 0
-                    ;;
-                --config)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
-                --state)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
-                --record)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
-                --bench)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
-                --jobs)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
-                -j)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
-                --lang)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
-                --device-timeout)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
-                *)
-                    COMPREPLY=()
-                    ;;
-            esac
-            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-            return 0
-            ;;
-        plcsh__subcmd__lab__subcmd__worker)
-            opts="-v -d -j -h --report --write-dir --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
-            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
-                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-                return 0
-            fi
-            case "${prev}" in
-                --report)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
-                --write-dir)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
                 --model)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0

@@ -254,9 +254,9 @@ fn run_case(case: u64) -> u64 {
 
 #[test]
 fn every_published_message_is_true_over_generated_runs() {
-    // PLCSH_PUBLISH_CASES raises the number of cases (bench/fleet.sh: plant size).
-    let cases: u64 = std::env::var("PLCSH_PUBLISH_CASES").ok().and_then(|n| n.parse().ok()).unwrap_or(1000);
-    let first: u64 = std::env::var("PLCSH_PUBLISH_SEED").ok().and_then(|n| n.parse().ok()).unwrap_or(1);
+    // PLCSH_BENCH_PUBLISH_CASES raises the number of cases (bench/fleet.sh: plant size).
+    let cases: u64 = std::env::var("PLCSH_BENCH_PUBLISH_CASES").ok().and_then(|n| n.parse().ok()).unwrap_or(1000);
+    let first: u64 = std::env::var("PLCSH_BENCH_PUBLISH_SEED").ok().and_then(|n| n.parse().ok()).unwrap_or(1);
     let started = std::time::Instant::now();
     let values: u64 = (first..first + cases).map(run_case).sum();
     assert!(values > cases, "values were checked: {values} in {cases} cases");
