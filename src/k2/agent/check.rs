@@ -546,7 +546,8 @@ mod tests {
                 let mut w = self.0.read_v(vbyte, count)?;
                 let pls = self.0.sim.mem.read(&K2Operand::word(Area::V, p::DEFAULT_BASE + p::OFF_REQUEST + 4)) == 3;
                 let result = ((p::OFF_ACKS + 4) / 2) as usize;
-                if vbyte == p::DEFAULT_BASE && pls && w.len() > result && w[result] == 6 {
+                // A refusal (result 6, or 8 with its cause in the high byte) turned into "done".
+                if vbyte == p::DEFAULT_BASE && pls && w.len() > result && matches!(w[result] & 0xFF, 6 | 8) {
                     w[result] = 0;
                 }
                 Ok(w)
