@@ -49,7 +49,7 @@ impl Plc {
 
     /// The simulator's whole state, without what moves by itself: the virtual time, SMB0 (the
     /// clock bits SM0.5 and SM0.4 and the scan toggle SM0.6), the helper's mailbox (its
-    /// heartbeat counts scans), and the CPU's scan count and schedule and the helper's own
+    /// heartbeat counts scans), and the CPU's scan count, statistics and schedule and the helper's own
     /// execution state. The CPU's mode, errors and faults stay in: a command that stopped the
     /// CPU or raised an error would show.
     fn state(&self, faults: bool) -> Value {
@@ -62,7 +62,7 @@ impl Plc {
             s.as_object_mut().unwrap().remove(k);
         }
         if let Some(p) = s["program"].as_object_mut() {
-            for k in ["run_scans", "next_scan_ns", "timed_next_ns", "helper_cpu"] {
+            for k in ["run_scans", "next_scan_ns", "timed_next_ns", "helper_cpu", "stats"] {
                 p.remove(k);
             }
         }
@@ -72,7 +72,9 @@ impl Plc {
             s.as_object_mut().unwrap().remove("events");
         }
         let sm = s["mem"]["sm"].as_str().unwrap().to_string();
-        s["mem"]["sm"] = format!("..{}", &sm[2..]).into();
+        // SMW22/24/26 (last, shortest and longest scan time: the simulator keeps them as the S7-200 does, docs/il.md) move
+        // with the scans themselves: a scan that served a helper command is a longer one.
+        s["mem"]["sm"] = format!("..{}<scan times>{}", &sm[2..44], &sm[56..]).into();
         if self.agent {
             let v = s["mem"]["v"].as_str().unwrap().to_string();
             let (a, b) = (2 * BASE, 2 * (BASE + MAILBOX));
