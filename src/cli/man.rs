@@ -142,7 +142,12 @@ mod tests {
         }
         let _ = std::fs::remove_dir_all(&dir);
         if !missing.is_empty() {
-            assert!(std::env::var_os("CI").is_none(), "{missing:?} required when CI is set (.ci/run installs them)");
+            // The Windows stage runs this under Wine, where the Unix man tools are not programs
+            // it can start: the page is the same bytes there, read by the Linux run.
+            assert!(
+                std::env::var_os("CI").is_none() || cfg!(windows),
+                "{missing:?} required when CI is set (.ci/run installs them)"
+            );
             // Straight to the terminal: cargo test hides a passing test's eprintln!.
             use std::io::Write;
             let _ = writeln!(
