@@ -226,8 +226,10 @@ fn the_message_catalogue_quotes_the_program() {
     }
     walk(Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/src")), &mut source);
     // Messages in the catalogue are the program's too (English, the reference language).
-    source
-        .push_str(&std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/lib/locales/en/plcsh.ftl")).unwrap());
+    for file in ["plcsh", "tags", "names", "data", "report"] {
+        let path = format!("{}/lib/locales/en/{file}.ftl", env!("CARGO_MANIFEST_DIR"));
+        source.push_str(&std::fs::read_to_string(path).unwrap());
+    }
     for words in [
         "is in use by",
         "is not in the K2 Modbus map",

@@ -25,6 +25,25 @@ use fluent_bundle::{FluentArgs, FluentResource, FluentValue};
 use std::sync::atomic::{AtomicU8, Ordering};
 use std::sync::OnceLock;
 
+/// The files of one language's catalogue, by subject, in this order (tests/messages.rs reads
+/// the same list): `plcsh` (the shell and its devices), `tags` (tag tables), `names` (names
+/// where operands go), `data` (parameter and data sets), `report` (commissioning reports).
+/// One file per subject keeps a subject's messages together and lets work on two subjects go
+/// on side by side.
+pub const CATALOGUE_FILES: [&str; 5] = ["plcsh", "tags", "names", "data", "report"];
+
+macro_rules! catalogue {
+    ($lang:literal) => {
+        [
+            include_str!(concat!("../../lib/locales/", $lang, "/plcsh.ftl")),
+            include_str!(concat!("../../lib/locales/", $lang, "/tags.ftl")),
+            include_str!(concat!("../../lib/locales/", $lang, "/names.ftl")),
+            include_str!(concat!("../../lib/locales/", $lang, "/data.ftl")),
+            include_str!(concat!("../../lib/locales/", $lang, "/report.ftl")),
+        ]
+    };
+}
+
 /// A language plcsh speaks.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Lang {
@@ -75,12 +94,17 @@ impl Lang {
         }
     }
 
+    /// The whole catalogue of the language: its files ([`CATALOGUE_FILES`]) one after the other.
     fn source(self) -> &'static str {
-        match self {
-            Lang::En => include_str!("../../lib/locales/en/plcsh.ftl"),
-            Lang::Ru => include_str!("../../lib/locales/ru/plcsh.ftl"),
-            Lang::ZhCn => include_str!("../../lib/locales/zh-CN/plcsh.ftl"),
-        }
+        static JOINED: [OnceLock<String>; 3] = [OnceLock::new(), OnceLock::new(), OnceLock::new()];
+        JOINED[self.index() as usize - 1].get_or_init(|| {
+            let files: &[&str] = match self {
+                Lang::En => &catalogue!("en"),
+                Lang::Ru => &catalogue!("ru"),
+                Lang::ZhCn => &catalogue!("zh-CN"),
+            };
+            files.join("\n")
+        })
     }
 }
 

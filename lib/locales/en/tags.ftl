@@ -1,0 +1,1 @@
+# plcsh messages (en): tags. Same ids and arguments in en, ru and zh-CN (tests/messages.rs).
