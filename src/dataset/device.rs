@@ -50,7 +50,7 @@ pub fn identity(session: &Session, dev: usize) -> Identity {
     let info = e.device.info();
     Identity {
         family: info.family.to_string(),
-        model: info.model.clone(),
+        model: super::model_code(&info.model).to_string(),
         name: e.name.clone(),
         url: e.url.clone(),
         saved: crate::servo::params::utc_now(),

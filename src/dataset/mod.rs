@@ -59,6 +59,16 @@ pub struct Identity {
     pub plcsh: String,
 }
 
+/// The model code of a device's model line (`DeviceInfo::model`): the families write it as the
+/// code itself (`K205-16DT`, `UMPK16`) or with what reaches it around the code (`simulated FX2N
+/// (programming port)`, `FX2N (computer link, station 0)`); a set names the code, so a set saved
+/// from a simulator loads onto the real PLC of the same model.
+pub fn model_code(line: &str) -> &str {
+    let line = line.trim();
+    let line = line.strip_prefix("simulated ").unwrap_or(line);
+    line.split([' ', ',', '(']).next().unwrap_or(line)
+}
+
 /// A value as the file holds it: in the operand's type.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(untagged)]
@@ -225,7 +235,8 @@ impl DataSet {
 
     /// Refuses a set read from another family or model than `family`/`model` (device `name`).
     pub fn check_device(&self, file: &str, name: &str, family: &str, model: &str) -> Result<()> {
-        if self.device.family == family && self.device.model.eq_ignore_ascii_case(model) {
+        let model = model_code(model);
+        if self.device.family == family && model_code(&self.device.model).eq_ignore_ascii_case(model) {
             return Ok(());
         }
         Err(Error::new(
@@ -340,6 +351,9 @@ mod tests {
         assert_eq!(e.code, "data-other-device");
         assert!(e.message.contains("K205-16DT") && e.message.contains("K209M-56DT"), "{e}");
         assert_eq!(set.check_device("x.toml", "fx", "fx", "FX2N").unwrap_err().code, "data-other-device");
+        assert_eq!(model_code("simulated FX2N (programming port)"), "FX2N");
+        assert_eq!(model_code("FX2N (computer link, station 0)"), "FX2N");
+        assert_eq!(model_code("K205-16DT"), "K205-16DT");
     }
 
     #[test]
