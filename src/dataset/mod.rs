@@ -198,7 +198,7 @@ impl DataSet {
         let set: DataSet = toml::from_str(text)
             .map_err(|e| Error::syntax(msg!("data-bad-file", file = file, reason = e.message())))?;
         if set.device.family.trim().is_empty() || set.device.model.trim().is_empty() {
-            return Err(Error::syntax(msg!("data-bad-file", file = file, reason = "[device] names no family or model")));
+            return Err(Error::syntax(msg!("data-no-identity", file = file)));
         }
         let mut seen = HashSet::with_capacity(set.set.values.len());
         for e in &set.set.values {

@@ -5,6 +5,7 @@
 data-usage = usage: data save FILE OPERAND… | data diff FILE [FILE2] | data load FILE
 data-cannot-read = cannot read { $file }
 data-bad-file = { $file } is not a data set file: { $reason }
+data-no-identity = { $file } is not a data set file: its [device] table names no family or model
 data-bad-operand = { $file } lists an operand `{ $operand }` that no device names so
 data-bad-type = { $file } gives { $operand } the type `{ $dtype }`; the types are BOOL, BYTE, SINT, WORD, INT, DWORD, DINT and REAL
 data-bad-value = { $file }: { $value } is not a { $dtype } value for { $operand }

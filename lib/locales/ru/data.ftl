@@ -5,6 +5,7 @@
 data-usage = как вызывать: data save FILE OPERAND… | data diff FILE [FILE2] | data load FILE
 data-cannot-read = не удаётся прочитать { $file }
 data-bad-file = { $file } не является файлом набора данных: { $reason }
+data-no-identity = { $file } не является файлом набора данных: в его таблице [device] не указаны семейство или модель
 data-bad-operand = в { $file } указан операнд `{ $operand }`, такого имени нет ни у одного устройства
 data-bad-type = в { $file } операнду { $operand } задан тип `{ $dtype }`; типы: BOOL, BYTE, SINT, WORD, INT, DWORD, DINT и REAL
 data-bad-value = { $file }: { $value } не является значением типа { $dtype } для { $operand }

@@ -5,6 +5,7 @@
 data-usage = 用法：data save FILE OPERAND… | data diff FILE [FILE2] | data load FILE
 data-cannot-read = 无法读取 { $file }
 data-bad-file = { $file } 不是数据集文件：{ $reason }
+data-no-identity = { $file } 不是数据集文件：其 [device] 表未写明系列或型号
 data-bad-operand = { $file } 列出的操作数 `{ $operand }` 不是任何设备的操作数名称
 data-bad-type = { $file } 给 { $operand } 的类型是 `{ $dtype }`；类型有 BOOL、BYTE、SINT、WORD、INT、DWORD、DINT 和 REAL
 data-bad-value = { $file }：{ $value } 不是 { $operand } 的 { $dtype } 类型值
