@@ -110,8 +110,12 @@ fn a_random_typed_set_round_trips_exactly_onto_another_plc_writing_only_what_dif
         let set = read_set(fa);
         // What differs between b and the file: the diff says it, and the load writes exactly that.
         let l = run(&mut sh, &format!("data b diff {fa}"));
-        let differ: Vec<String> =
-            l[0]["differences"].as_array().unwrap().iter().map(|x| x["operand"].as_str().unwrap().to_string()).collect();
+        let differ: Vec<String> = l[0]["differences"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x["operand"].as_str().unwrap().to_string())
+            .collect();
         let l = run(&mut sh, &format!("data b load {fa}"));
         let written: Vec<String> =
             l[0]["written"].as_array().unwrap().iter().map(|x| x["operand"].as_str().unwrap().to_string()).collect();
@@ -127,10 +131,8 @@ fn a_random_typed_set_round_trips_exactly_onto_another_plc_writing_only_what_dif
         // The typed values are what `get` reads on the first PLC.
         run(&mut sh, "use a");
         let got = values(&mut sh, &list);
-        let file: Vec<String> = set.set.values[..ops.len()]
-            .iter()
-            .map(|e| serde_json::to_value(e.value).unwrap().to_string())
-            .collect();
+        let file: Vec<String> =
+            set.set.values[..ops.len()].iter().map(|e| serde_json::to_value(e.value).unwrap().to_string()).collect();
         assert_eq!(got, file, "seed {seed}");
     }
 }
@@ -252,7 +254,8 @@ fn fx_data_registers_and_umpk_operands_go_the_same_way() {
     let mut sh = shell(&[("fx", "sim-fx:FX2N"), ("lab", "sim-umpk:UMPK16"), ("link", "sim-fx:FX2N?protocol=link")]);
     run(&mut sh, &format!("use fx; set D0=12, D7=-3, M5=1; data save {f} D0..D9 M5; set D7=0, M5=0"));
     let l = run(&mut sh, &format!("data diff {f}; data load {f}"));
-    let differ: Vec<&str> = l[0]["differences"].as_array().unwrap().iter().map(|x| x["operand"].as_str().unwrap()).collect();
+    let differ: Vec<&str> =
+        l[0]["differences"].as_array().unwrap().iter().map(|x| x["operand"].as_str().unwrap()).collect();
     assert_eq!(differ, ["D7", "M5"], "{l:?}");
     assert_eq!(l[1]["written"].as_array().unwrap().len(), 2, "{l:?}");
     assert_eq!(values(&mut sh, "D7 M5"), ["-3", "true"]);
@@ -269,7 +272,15 @@ fn fx_data_registers_and_umpk_operands_go_the_same_way() {
     let l = run(&mut sh, &format!("data diff {g}; data load {g}"));
     assert_eq!((&l[0]["count"], &l[1]["unchanged"]), (&0.into(), &16.into()), "{l:?}");
     let text = std::fs::read_to_string(g).unwrap();
-    std::fs::write(g, text.replacen("operand = \"Q0\", type = \"BOOL\", value = false", "operand = \"Q0\", type = \"BOOL\", value = true", 1)).unwrap();
+    std::fs::write(
+        g,
+        text.replacen(
+            "operand = \"Q0\", type = \"BOOL\", value = false",
+            "operand = \"Q0\", type = \"BOOL\", value = true",
+            1,
+        ),
+    )
+    .unwrap();
     let e = error(&mut sh, &format!("data load {g}"));
     assert_eq!(e.code, "data-stopped", "{e}");
     assert_eq!(e.operand.as_deref(), Some("Q0"), "{e}");

@@ -56,7 +56,9 @@ pub fn expand(session: &mut Session, dev: usize, word: &str) -> Option<Result<Ve
         })
         .collect();
     if ranges.is_empty() {
-        return Some(Err(Error::new(ErrorKind::State, msg!("data-retained-none", device = name.as_str())).device(name)));
+        return Some(
+            Err(Error::new(ErrorKind::State, msg!("data-retained-none", device = name.as_str())).device(name)),
+        );
     }
     Some(Ok(ranges))
 }

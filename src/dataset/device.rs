@@ -70,11 +70,7 @@ pub fn read(session: &mut Session, dev: usize, asked: Vec<String>, ops: &[Operan
     let values = ops
         .into_iter()
         .zip(values)
-        .map(|((o, operand), v)| Entry {
-            operand,
-            dtype: o.dtype.name().to_string(),
-            value: FileValue::of(o.dtype, v),
-        })
+        .map(|((o, operand), v)| Entry { operand, dtype: o.dtype.name().to_string(), value: FileValue::of(o.dtype, v) })
         .collect();
     Ok(DataSet { device: identity(session, dev), set: Body { operands: asked, values } })
 }
@@ -102,9 +98,12 @@ fn resolve(session: &Session, dev: usize, set: &DataSet, file: &str) -> Result<V
             .device(&e.name)
         };
         if x.operand.contains(':') {
-            return Err(unknown(msg!("data-operand-elsewhere", operand = x.operand.as_str(), device = e.name.as_str()).into()));
+            return Err(unknown(
+                msg!("data-operand-elsewhere", operand = x.operand.as_str(), device = e.name.as_str()).into(),
+            ));
         }
-        let target = session.resolve(&format!("{}:{}", e.name, x.operand)).map_err(|err| unknown(err.message.to_string()))?;
+        let target =
+            session.resolve(&format!("{}:{}", e.name, x.operand)).map_err(|err| unknown(err.message.to_string()))?;
         let op = match target.ops.as_slice() {
             [op] if op.dtype == x.data_type() => *op,
             [op] => return Err(unknown(format!("{} is {}", x.operand, op.dtype.name()))),
@@ -126,7 +125,11 @@ pub fn current(session: &mut Session, dev: usize, set: &DataSet, file: &str) -> 
         .values
         .iter()
         .zip(ops.iter().zip(values))
-        .map(|(e, (o, v))| Entry { operand: e.operand.clone(), dtype: e.dtype.clone(), value: FileValue::of(o.dtype, v) })
+        .map(|(e, (o, v))| Entry {
+            operand: e.operand.clone(),
+            dtype: e.dtype.clone(),
+            value: FileValue::of(o.dtype, v),
+        })
         .collect();
     Ok(DataSet { device: identity(session, dev), set: Body { operands: set.set.operands.clone(), values } })
 }

@@ -203,7 +203,10 @@ impl DataSet {
         let mut seen = HashSet::with_capacity(set.set.values.len());
         for e in &set.set.values {
             if e.operand.is_empty() || e.operand.len() > MAX_OPERAND || e.operand.contains(char::is_whitespace) {
-                return Err(Error::new(ErrorKind::Value, msg!("data-bad-operand", file = file, operand = e.operand.as_str())));
+                return Err(Error::new(
+                    ErrorKind::Value,
+                    msg!("data-bad-operand", file = file, operand = e.operand.as_str()),
+                ));
             }
             let t = DataType::from_name(&e.dtype).filter(|t| t.name() == e.dtype);
             let Some(t) = t else {
@@ -226,8 +229,11 @@ impl DataSet {
                 .operand(e.operand.as_str()));
             }
             if !seen.insert(e.operand.as_str()) {
-                return Err(Error::new(ErrorKind::Value, msg!("data-duplicate", file = file, operand = e.operand.as_str()))
-                    .operand(e.operand.as_str()));
+                return Err(Error::new(
+                    ErrorKind::Value,
+                    msg!("data-duplicate", file = file, operand = e.operand.as_str()),
+                )
+                .operand(e.operand.as_str()));
             }
         }
         Ok(set)

@@ -86,7 +86,12 @@ fn data(sh: &mut Shell, args: Args) -> Result<Outcome> {
             let rows: Vec<Vec<String>> = d
                 .iter()
                 .map(|x| {
-                    vec![x.operand.clone(), x.dtype.clone(), dataset::Difference::shown(x.left), dataset::Difference::shown(x.right)]
+                    vec![
+                        x.operand.clone(),
+                        x.dtype.clone(),
+                        dataset::Difference::shown(x.left),
+                        dataset::Difference::shown(x.right),
+                    ]
                 })
                 .collect();
             let o = Outcome::new("data");

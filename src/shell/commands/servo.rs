@@ -612,11 +612,8 @@ fn params(sh: &mut Shell, dev: usize, rest: &[lex::Word], base: usize, col: usiz
             let mut sets = Vec::new();
             for (i, label) in [(dev, entry_name(sh, dev)), (other_dev, other.clone())] {
                 let e = &sh.session.entries()[i];
-                let identity = params::Identity {
-                    model: e.device.info().model.clone(),
-                    url: e.url.clone(),
-                    ..identity.clone()
-                };
+                let identity =
+                    params::Identity { model: e.device.info().model.clone(), url: e.url.clone(), ..identity.clone() };
                 let Some(mut access) = crate::servo::ops(sh.session.entry(i).device.as_mut()) else {
                     return Err(Error::unsupported(crate::msg!("data-not-a-drive", device = label.as_str()))
                         .device(label)
