@@ -310,3 +310,42 @@ fn lua_saves_compares_and_loads_data_sets() {
     let out = String::from_utf8_lossy(&o.stdout);
     assert!(o.status.success() && out.contains("lua ok"), "{out}\n{}", String::from_utf8_lossy(&o.stderr));
 }
+
+/// The wire traffic a recording holds (`plcsh --record`, `plcsh record show --json`) for a K2 on
+/// Modbus TCP: a load sends a write for each operand whose value differs and none for the rest
+/// (the E2PROM area included, whose writes wear it: k2.md §7), and a second load sends none.
+#[test]
+fn the_recorded_modbus_traffic_shows_a_load_writes_only_what_differs() {
+    let served = common::serve(&["--tcp", "127.0.0.1:0", "--state", "none"]);
+    let url = format!("plc=tcp://{}?model=K205-16DT", served.ready["tcp"].as_str().unwrap());
+    let d = dir("recorded");
+    let (set, rec) = (d.join("set.toml"), d.join("load.pcapng"));
+    let line = format!(
+        "set VW3700=1234, VW10=5; data save {set} eeprom VW10; set VB3701=0, VW10=6; get VW200; \
+         data load {set}; get VW200; data load {set}",
+        set = set.display()
+    );
+    let o = common::plcsh().args(["--record", rec.to_str().unwrap(), "-d", &url, "-c", &line]).output().unwrap();
+    assert!(o.status.success(), "{}{}", common::stdout(&o), String::from_utf8_lossy(&o.stderr));
+    drop(served);
+    let o = common::plcsh().args(["--json", "record", "show", rec.to_str().unwrap()]).output().unwrap();
+    let frames: Vec<Value> = common::json_lines(&o).into_iter().filter(|f| f["dir"] == "sent").collect();
+    // Modbus writes: FC5, FC6, FC15, FC16.
+    let writes = |fs: &[Value]| -> Vec<String> {
+        fs.iter()
+            .filter(|f| [5, 6, 15, 16].contains(&f["function"].as_u64().unwrap_or(0)))
+            .map(|f| f["operands"].as_str().unwrap_or("?").to_string())
+            .collect()
+    };
+    let marks: Vec<usize> =
+        frames.iter().enumerate().filter(|(_, f)| f["operands"] == "VW200").map(|(i, _)| i).collect();
+    assert_eq!(marks.len(), 2, "{marks:?}");
+    let load = writes(&frames[marks[0] + 1..marks[1]]);
+    assert_eq!(load.len(), 2, "one write for VB3701, one for VW10: {load:?}");
+    assert!(load.iter().any(|w| w.contains("3700")) && load.iter().any(|w| w.contains("VW10")), "{load:?}");
+    assert!(
+        writes(&frames[marks[1] + 1..]).is_empty(),
+        "the second load writes nothing: {:?}",
+        writes(&frames[marks[1] + 1..])
+    );
+}
