@@ -182,6 +182,19 @@ fn a_file_from_another_family_or_model_is_refused_before_anything_is_sent() {
     assert_eq!(e.code, "data-other-device", "{e}");
     assert!(e.message.contains("fx FX2N"), "{e}");
     assert_eq!(values(&mut sh, "big:VW0 VW0"), ["1", "0"], "nothing was written");
+    // Two files compare only within one family.
+    let g = d.join("fx.toml");
+    run(&mut sh, &format!("data fx save {} D0", g.display()));
+    let e = error(&mut sh, &format!("data diff {f} {}", g.display()));
+    assert_eq!(e.code, "data-families-differ", "{e}");
+    // An operand that is not one is pointed at in the line as `get` points at it.
+    let line = format!("data save {f} VW0 VQ3");
+    let e = error(&mut sh, &line);
+    let g = error(&mut sh, "get VW0 VQ3");
+    assert_eq!(e.message, g.message);
+    let at = |l: &str, e: &plcsh::core::Error| e.column.map(|c| c - l.find("VQ3").unwrap());
+    assert_eq!(at(&line, &e), at("get VW0 VQ3", &g), "{e}");
+    assert!(g.column.is_some());
     // A damaged or hand-broken file names the file and the entry.
     let bad = d.join("bad.toml");
     std::fs::write(&bad, std::fs::read_to_string(f).unwrap().replace("value = 5", "value = 70000")).unwrap();
