@@ -330,3 +330,24 @@ fn lua_saves_compares_and_loads_parameter_sets() {
     let out = String::from_utf8_lossy(&o.stdout);
     assert!(o.status.success() && out.contains("lua ok"), "{out}\n{}", String::from_utf8_lossy(&o.stderr));
 }
+
+#[test]
+fn lua_compares_two_open_drives() {
+    let d = dir("lua-with");
+    let script = "local a = plcsh.device('a')\n\
+                  local b = plcsh.device('b')\n\
+                  b.gear_factor = 7\n\
+                  local d = a:params_diff{with = 'b'}\n\
+                  assert(d.count == 1 and d.differences[1].name == 'gear_factor', 'diff')\n\
+                  assert(d.left == 'a' and d.right == 'b', 'labels')\n\
+                  print('lua ok')\n";
+    let p = d.join("w.lua");
+    std::fs::write(&p, script).unwrap();
+    let o = common::plcsh()
+        .args(["--time", "stepped", "-d", "a=sim-servo:?id=1", "-d", "b=sim-servo:?id=2", "run"])
+        .arg(&p)
+        .output()
+        .unwrap();
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success() && out.contains("lua ok"), "{out}\n{}", String::from_utf8_lossy(&o.stderr));
+}
