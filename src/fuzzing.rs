@@ -30,6 +30,7 @@ pub static TARGETS: &[(&str, Target)] = &[
     ("servo_frame", servo_frame),
     ("servo_units", servo_units),
     ("servo_params", servo_params),
+    ("data_set", data_set),
     ("pulse", pulse),
     ("modbus_rtu", modbus_rtu),
     ("modbus_tcp", modbus_tcp),
@@ -192,6 +193,18 @@ pub fn servo_params(data: &[u8]) {
     if let Ok(set) = ParamSet::parse(&text(data), "fuzz.toml") {
         assert!(params::diff(&set, &set).is_empty(), "a set differs from itself");
         let _ = set.to_toml();
+    }
+}
+
+/// A PLC data set file (`data load FILE`, `data diff FILE`): parsed, checked, compared with
+/// itself, written and read again to the same values.
+pub fn data_set(data: &[u8]) {
+    use crate::dataset::{self, DataSet};
+    if let Ok(set) = DataSet::parse(&text(data), "fuzz.toml") {
+        assert!(dataset::diff(&set, &set).is_empty(), "a set differs from itself");
+        let again = DataSet::parse(&set.to_toml(), "again.toml").expect("a set's own text reads back");
+        assert!(dataset::diff(&set, &again).is_empty(), "a set written and read back differs");
+        assert_eq!(set.device, again.device);
     }
 }
 

@@ -6,6 +6,7 @@
 pub mod cli;
 pub mod confine;
 pub mod core;
+pub mod dataset;
 pub mod engine;
 pub mod fleet;
 pub mod fuzzing;

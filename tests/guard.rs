@@ -33,6 +33,7 @@ const K2_WRITES: &[(&str, &[&str])] = &[
     ("hsc", &["hsc 0", "hsc 0 mode=0 cv=5"]),
     ("rtc", &["rtc set 2001-01-01T00:00:00", "rtc sync"]),
     ("eeprom", &["eeprom restore {backup}"]),
+    ("data", &["data load {dataset}"]),
     ("lua", &["lua plc.VW102 = 5", "lua plc:set(\"VW102=5\")", "lua plc:cmd(\"pls 0\")"]),
 ];
 
@@ -98,6 +99,7 @@ const BRIDGE_WRITES: &[(&str, &str)] = &[
     ("rtc_set", "plc:rtc_set(\"2001-01-01T00:00:00\")"),
     ("rtc_sync", "plc:rtc_sync()"),
     ("eeprom_restore", "plc:eeprom_restore(\"{backup}\")"),
+    ("data_load", "plc:data_load(\"{dataset}\")"),
     ("enable", "servo:enable()"),
     ("disable", "servo:disable()"),
     ("fault_reset", "servo:fault_reset()"),
@@ -128,6 +130,8 @@ const BRIDGE_NOT_WRITES: &[(&str, &str)] = &[
     ("rtc", "reads"),
     ("agent_status", "reads"),
     ("eeprom_dump", "reads the device, writes a host file"),
+    ("data_save", "reads the device, writes a host file"),
+    ("data_diff", "reads"),
     ("eeprom_status", "reads the simulator's wear counters"),
     ("eeprom_area", "where plcsh takes the backup area to end (client-side; simulator configuration)"),
     ("sim_input", "simulation control"),
@@ -272,7 +276,18 @@ fn walk(url: &str, family: &str, clock: impl Fn() -> Clock) {
         "[drive]\ntype = \"Kinco servo\"\nmodel = \"m\"\nid = 1\nurl = \"u\"\nsaved = \"t\"\nplcsh = \"v\"\nencoder_resolution = 10000\n\n[[parameter]]\nname = \"profile_velocity\"\nobject = \"6081.00\"\ntype = \"u32\"\nunit = \"DEC\"\nvalue = 1234\n",
     )
     .unwrap();
-    let subst = |l: &str| l.replace("{backup}", backup.to_str().unwrap()).replace("{params}", params.to_str().unwrap());
+    // A data set that differs from the PLC's (VW102), for `data load`.
+    let dataset = dir.join("data.toml");
+    std::fs::write(
+        &dataset,
+        "[device]\nfamily = \"k2\"\nmodel = \"K205-16DT\"\nname = \"plc\"\nurl = \"u\"\nsaved = \"t\"\nplcsh = \"v\"\n\n[set]\nvalues = [{ operand = \"VW102\", type = \"WORD\", value = 4321 }]\n",
+    )
+    .unwrap();
+    let subst = |l: &str| {
+        l.replace("{backup}", backup.to_str().unwrap())
+            .replace("{params}", params.to_str().unwrap())
+            .replace("{dataset}", dataset.to_str().unwrap())
+    };
     let mut calls: Vec<String> = lines.iter().flat_map(|(_, ls)| ls.iter().map(|l| subst(l))).collect();
     let prefix = format!("{name}:");
     calls

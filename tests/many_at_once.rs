@@ -107,6 +107,7 @@ const SHELL_LINES: &[(&str, bool)] = &[
     ("wait 1ms", true),
     ("rtc", true),
     ("eeprom status", true),
+    ("data diff set.toml", true),
     ("lua print(1)", false),
     ("lua print(plc.VW0)", true),
     ("agent", true),

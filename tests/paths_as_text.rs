@@ -66,6 +66,7 @@ const CASES: &[(&str, &[&str])] = &[
     ("sim_snapshot_save_and_restore", &["sim snapshot save NAME", "sim snapshot restore NAME"]),
     ("eeprom_dump_and_restore", &["eeprom dump FILE", "eeprom restore FILE"]),
     ("servo_parameter_sets", &["servo params save FILE", "servo params diff FILE", "servo params load FILE"]),
+    ("data_sets", &["data save FILE", "data diff FILE", "data load FILE"]),
     ("trace_and_plot_files", &["trace to=FILE.csv", "plot to=FILE.png"]),
     ("profile_plan_file", &["profile to=FILE.png"]),
     ("umpk_program_file", &["umpk program FILE.hex"]),
@@ -299,6 +300,22 @@ fn servo_parameter_sets() {
         assert_eq!(l[0]["file"], shown(&file), "{sp:?}: {l:?}");
         assert_eq!(l[2]["count"], 1, "{sp:?}: {l:?}");
         assert_eq!(l[3]["written"][0]["name"], "profile_velocity", "{sp:?}: {l:?}");
+    }
+}
+
+#[test]
+fn data_sets() {
+    for (dir, sp, by_c) in places("data") {
+        let file = dir.join("рецепт.toml");
+        let w = sp.write(&file);
+        // The file is text; the operand after it is an operand, read in the manual's spelling
+        // (a Cyrillic В in `ВW0`).
+        let line = format!("set VW0=7; data save {w} \u{412}W0 VW2; set VW0=1; data diff {w}; data load {w}");
+        let l = shell(&[], &line, by_c);
+        assert!(std::fs::read_to_string(&file).unwrap().contains("operand = \"VW0\""), "{sp:?}");
+        assert_eq!(l[1]["file"], shown(&file), "{sp:?}: {l:?}");
+        assert_eq!((&l[3]["count"], &l[3]["left"]), (&1.into(), &shown(&file).into()), "{sp:?}: {l:?}");
+        assert_eq!(l[4]["written"][0]["operand"], "VW0", "{sp:?}: {l:?}");
     }
 }
 

@@ -96,9 +96,35 @@ fn a_random_parameter_set_round_trips_exactly_onto_another_drive() {
                 want.push((o.name, v));
             }
         }
+        // Drive b holds another random set in about half of the parameters.
+        {
+            let i = sh.session.index("b").unwrap();
+            let mut ops = plcsh::servo::ops(sh.session.entry(i).device.as_mut()).unwrap();
+            for o in params::parameters() {
+                if rng.below(2) == 0 {
+                    continue;
+                }
+                let v = pick(o, &mut rng);
+                plcsh::servo::ServoOps::write_raw(&mut ops, ObjRef::of(o), o.dtype.encode(&plcsh::core::Value::Int(v)))
+                    .unwrap_or_else(|e| panic!("seed {seed}: b {} = {v}: {e}", o.name));
+            }
+        }
         let (fa, fb) = (d.join(format!("a{seed}.toml")), d.join(format!("b{seed}.toml")));
         let (fa, fb) = (fa.to_str().unwrap(), fb.to_str().unwrap());
-        run(&mut sh, &format!("servo a params save {fa}; servo b params load {fa}; servo b params save {fb}"));
+        run(&mut sh, &format!("servo a params save {fa}"));
+        // The load writes exactly what the diff shows (in the file's order), each once and read
+        // back once: one request per parameter to compare, two per write on the simulated line.
+        let l = run(&mut sh, &format!("servo b params diff {fa}"));
+        let differ: Vec<String> =
+            l[0]["differences"].as_array().unwrap().iter().map(|x| x["name"].as_str().unwrap().to_string()).collect();
+        let before = received(&mut sh, "b");
+        let l = run(&mut sh, &format!("servo b params load {fa}"));
+        let written: Vec<String> =
+            l[0]["written"].as_array().unwrap().iter().map(|x| x["name"].as_str().unwrap().to_string()).collect();
+        assert_eq!(written, differ, "seed {seed}");
+        let n = want.len() as u64;
+        assert_eq!(received(&mut sh, "b") - before, n + 2 * written.len() as u64, "seed {seed}");
+        run(&mut sh, &format!("servo b params save {fb}"));
         let a = params::ParamSet::parse(&std::fs::read_to_string(fa).unwrap(), fa).unwrap();
         let b = params::ParamSet::parse(&std::fs::read_to_string(fb).unwrap(), fb).unwrap();
         let got: Vec<(&str, i64)> =
@@ -108,7 +134,74 @@ fn a_random_parameter_set_round_trips_exactly_onto_another_drive() {
         assert!(params::diff(&a, &b).is_empty(), "seed {seed}");
         let l = run(&mut sh, &format!("servo a params diff {fa} {fb}; servo b params diff {fa}"));
         assert_eq!((&l[0]["count"], &l[1]["count"]), (&0.into(), &0.into()), "seed {seed}: {l:?}");
+        let l = run(&mut sh, "servo a params diff --with b");
+        assert_eq!(l[0]["count"], 0, "seed {seed}: the two drives hold one set: {l:?}");
     }
+}
+
+#[test]
+fn two_open_drives_compare_parameter_by_parameter() {
+    let mut sh = shell();
+    sh.session.open("plc", "sim:K205-16DT").unwrap();
+    run(&mut sh, "set b:profile_velocity=1234, b:gear_factor=7");
+    let l = run(&mut sh, "servo a params diff --with b");
+    assert_eq!((&l[0]["left"], &l[0]["right"], &l[0]["count"]), (&"a".into(), &"b".into(), &2.into()), "{l:?}");
+    let diffs = l[0]["differences"].as_array().unwrap();
+    assert_eq!((&diffs[0]["name"], &diffs[1]["name"]), (&"profile_velocity".into(), &"gear_factor".into()));
+    assert_eq!(diffs[0]["right"]["shown"], "1234 DEC = 0.452 rpm", "with units: {l:?}");
+    assert_eq!(error(&mut sh, "servo a params diff --with plc").code, "data-not-a-drive");
+    assert_eq!(error(&mut sh, "servo a params diff --with nosuch").kind, plcsh::core::ErrorKind::Usage);
+}
+
+/// The wire traffic a recording holds (`plcsh --record`, `plcsh record show --json`): a save
+/// sends no write, and a load sends exactly one write for each parameter that differs and
+/// none for the others — the frames themselves, decoded by the recorder, not a count.
+#[test]
+fn the_recorded_wire_traffic_shows_a_load_writes_only_the_parameters_that_differ() {
+    let d = dir("recorded");
+    let (set, rec) = (d.join("set.toml"), d.join("load.pcapng"));
+    let line = format!(
+        "set b:profile_velocity=1234, b:gear_factor=7; servo a params save {set}; get b:statusword; \
+         servo b params load {set}; get b:statusword; servo b params load {set}",
+        set = set.display()
+    );
+    let o = common::plcsh()
+        .args(["--time", "stepped", "--record", rec.to_str().unwrap()])
+        .args(["-d", "a=sim-servo:?id=1", "-d", "b=sim-servo:?id=2", "-c", &line])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}{}", common::stdout(&o), String::from_utf8_lossy(&o.stderr));
+    let o = common::plcsh().args(["--json", "record", "show", rec.to_str().unwrap()]).output().unwrap();
+    let frames: Vec<Value> = common::json_lines(&o).into_iter().filter(|f| f["dir"] == "sent").collect();
+    let is_write = |f: &Value| [0x23, 0x2B, 0x2F].contains(&f["function"].as_u64().unwrap_or(0));
+    let objects = |fs: &[Value], unit: u64, write: bool| -> Vec<String> {
+        fs.iter()
+            .filter(|f| f["unit"] == unit && is_write(f) == write)
+            .map(|f| f["operands"].as_str().unwrap_or("?").to_string())
+            .collect()
+    };
+    // Drive 1 (a) was only read: by the save.
+    assert!(objects(&frames, 1, true).is_empty(), "{:?}", objects(&frames, 1, true));
+    let n = params::parameters().count();
+    assert_eq!(objects(&frames, 1, false).len(), n);
+    // Drive 2 (b): the two `set` writes, then between the statusword reads the load's
+    // comparison reads, one write and one read-back per differing parameter, nothing else.
+    let marks: Vec<usize> = frames
+        .iter()
+        .enumerate()
+        .filter(|(_, f)| f["unit"] == 2 && f["operands"] == "statusword")
+        .map(|(i, _)| i)
+        .collect();
+    assert_eq!(marks.len(), 2, "{marks:?}");
+    assert_eq!(objects(&frames[..marks[0]], 2, true), ["profile_velocity", "gear_factor"]);
+    let load = &frames[marks[0] + 1..marks[1]];
+    assert_eq!(objects(load, 2, true), ["profile_velocity", "gear_factor"], "only what differs is written");
+    let reads = objects(load, 2, false);
+    assert_eq!(reads.len(), n + 2, "a read per parameter and a read-back per write: {reads:?}");
+    // The second load finds nothing to write: reads only.
+    let again = &frames[marks[1] + 1..];
+    assert!(objects(again, 2, true).is_empty(), "{:?}", objects(again, 2, true));
+    assert_eq!(objects(again, 2, false).len(), n);
 }
 
 #[test]
@@ -234,6 +327,27 @@ fn lua_saves_compares_and_loads_parameter_sets() {
     let p = d.join("s.lua");
     std::fs::write(&p, script).unwrap();
     let o = common::plcsh().args(["--time", "stepped", "run"]).arg(&p).output().unwrap();
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success() && out.contains("lua ok"), "{out}\n{}", String::from_utf8_lossy(&o.stderr));
+}
+
+#[test]
+fn lua_compares_two_open_drives() {
+    let d = dir("lua-with");
+    let script = "local a = plcsh.device('a')\n\
+                  local b = plcsh.device('b')\n\
+                  b.gear_factor = 7\n\
+                  local d = a:params_diff{with = 'b'}\n\
+                  assert(d.count == 1 and d.differences[1].name == 'gear_factor', 'diff')\n\
+                  assert(d.left == 'a' and d.right == 'b', 'labels')\n\
+                  print('lua ok')\n";
+    let p = d.join("w.lua");
+    std::fs::write(&p, script).unwrap();
+    let o = common::plcsh()
+        .args(["--time", "stepped", "-d", "a=sim-servo:?id=1", "-d", "b=sim-servo:?id=2", "run"])
+        .arg(&p)
+        .output()
+        .unwrap();
     let out = String::from_utf8_lossy(&o.stdout);
     assert!(o.status.success() && out.contains("lua ok"), "{out}\n{}", String::from_utf8_lossy(&o.stderr));
 }

@@ -24,6 +24,7 @@ const OPEN_ENDED: &[&str] = &[
     "plot [OPERAND…] [to=FILE.png|FILE.svg] [size=900x340] [width=60] [height=8]",
     "servo read OBJ…",
     "servo params save FILE [group…]",
+    "data save FILE OPERAND…",
     "servo raw BYTES…",
     "umpk monitor [OPERAND…] [count=N] [for=2s] [every=100ms] [quiet]",
     "lua CODE…",

@@ -100,6 +100,9 @@ const JOG: &[Opt] = &[Opt { key: "rpm", to: "", unit: "rpm", spaced: true }];
 /// `{store=true}` → `--store`.
 const STORE: &[Opt] = &[rename("store", "--store", "")];
 
+/// `{with="servo2"}` → `--with servo2`.
+const WITH: &[Opt] = &[Opt { key: "with", to: "--with", unit: "", spaced: true }];
+
 /// Every device method that runs a shell command: the K2 helpers, the servo helpers, the
 /// simulator's input signals.
 pub static BRIDGE: &[Bridge] = &[
@@ -133,6 +136,11 @@ pub static BRIDGE: &[Bridge] = &[
     row("eeprom_restore", "k2", "eeprom restore {}"),
     row("eeprom_status", "k2", "eeprom status"),
     row("eeprom_area", "k2", "eeprom area {}"),
+    // Data sets (dataset): plc:data_save("recipe.toml", "VB0..VB99", "eeprom"), data_diff(file
+    // [, file2]), data_load(file); any PLC family whose operands `get` reads.
+    row("data_save", "k2/fx/umpk", "data save {}"),
+    row("data_diff", "k2/fx/umpk", "data diff {}"),
+    row("data_load", "k2/fx/umpk", "data load {}"),
     // K2 simulator input signals.
     row("sim_input", "k2", "sim input {}"),
     row("sim_quad", "k2", "sim quad {} {}"),
@@ -166,7 +174,8 @@ pub static BRIDGE: &[Bridge] = &[
     row("save", "servo", "servo save"),
     // Parameter sets (servo::params): servo:params_load("x.toml", {store=true}).
     row("params_save", "servo", "servo params save {}"),
-    row("params_diff", "servo", "servo params diff {}"),
+    // servo:params_diff(file [, file2]) or servo:params_diff{with="servo2"} (another drive).
+    with("params_diff", "servo", "servo params diff", WITH),
     with("params_load", "servo", "servo params load {}", STORE),
     row("encoder", "servo", "servo encoder"),
     row("sim_fault", "servo", "servo sim fault"),
@@ -445,6 +454,12 @@ mod tests {
         assert_eq!(render_lua("sim_off", "'I0.1'").unwrap(), "sim input I0.1 off");
         assert_eq!(render_lua("pto", "0, {freq=2000.0}").unwrap(), "pto 0 freq=2000");
         assert_eq!(render_lua("cmd", "'get VW0'").unwrap(), "get VW0");
+        assert_eq!(render_lua("params_diff", "'a.toml'").unwrap(), "servo params diff a.toml");
+        assert_eq!(render_lua("params_diff", "{with='servo2'}").unwrap(), "servo params diff --with servo2");
+        assert_eq!(
+            render_lua("data_save", "'r.toml', 'VB0..VB9', 'eeprom'").unwrap(),
+            "data save r.toml VB0..VB9 eeprom"
+        );
     }
 
     #[test]

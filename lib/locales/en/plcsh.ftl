@@ -269,7 +269,7 @@ servo-params-stopped = the load stopped at { $name } ({ $object }) after { $writ
         [one] one write
        *[other] { $written } writes
     }: { $reason }
-servo-params-usage = usage: servo params save FILE [group…] | servo params diff FILE [FILE2] | servo params load FILE [--store]
+servo-params-usage = usage: servo params save FILE [group…] | servo params diff FILE [FILE2] | servo params diff --with DRIVE | servo params load FILE [--store]
 servo-params-saved = saved { $count ->
         [one] one parameter
        *[other] { $count } parameters

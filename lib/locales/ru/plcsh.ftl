@@ -270,7 +270,7 @@ servo-params-stopped = загрузка остановлена на { $name } ({
         [one] { $written } записи
        *[other] { $written } записей
     }: { $reason }
-servo-params-usage = как вызывать: servo params save FILE [group…] | servo params diff FILE [FILE2] | servo params load FILE [--store]
+servo-params-usage = как вызывать: servo params save FILE [group…] | servo params diff FILE [FILE2] | servo params diff --with DRIVE | servo params load FILE [--store]
 servo-params-saved = { $count ->
         [one] сохранён { $count } параметр
         [few] сохранено { $count } параметра

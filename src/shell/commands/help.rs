@@ -140,7 +140,7 @@ pub const GROUPS: &[(&str, &[&str])] = &[
     ("pulse outputs", &["pls", "pstop", "pto", "pwm", "profile"]),
     ("counters", &["hdef", "hsc"]),
     ("interrupts", &["events", "wait"]),
-    ("PLC", &["rtc", "eeprom", "agent"]),
+    ("PLC", &["rtc", "eeprom", "data", "agent"]),
     ("servo, UMPK", &["servo", "umpk"]),
     ("scripts, labs", &["lua", "lab"]),
     ("this shell", &["help", "quit"]),

@@ -3,6 +3,7 @@
 
 mod agent;
 mod counter;
+mod data;
 mod device;
 mod eeprom;
 mod events;
@@ -71,6 +72,7 @@ pub static COMMANDS: &[CommandSpec] = &[
     events::WAIT,
     rtc::RTC,
     eeprom::EEPROM,
+    data::DATA,
     lua::LUA,
     agent::AGENT,
     lab::LAB,
@@ -85,7 +87,7 @@ pub static COMMANDS: &[CommandSpec] = &[
 /// device goes"): `eeprom press status`, `rtc press sync`, `events press`, `wait press event 1`.
 /// `servo`, `umpk` and `agent` read their device word themselves; K2 instructions take it as
 /// the prefix of their channel (`pto press:0`), operands as theirs (`get press:VW0`).
-pub const DEVICE_FIRST: &[&str] = &["eeprom", "rtc", "events", "wait"];
+pub const DEVICE_FIRST: &[&str] = &["eeprom", "rtc", "events", "wait", "data"];
 
 /// Commands that do not act on the current device, or find their device themselves (and make
 /// it ready there): the shell does not make the current device ready before them, so `help`,
@@ -119,6 +121,9 @@ pub enum Text {
     Rest,
     /// The value of this `key=` option, anywhere after them.
     Option(&'static str),
+    /// The one word right after them (`data save FILE OPERAND…`: the file is text, the
+    /// operands after it are operands).
+    Word,
 }
 
 const fn text(cmd: &'static str, after: &'static [&'static str], what: Text, placeholder: &'static str) -> TextArg {
@@ -133,6 +138,9 @@ pub static TEXT_ARGS: &[TextArg] = &[
     text("sim", &["break"], Text::Rest, "FILE:LINE"),
     text("eeprom", &["dump"], Text::Rest, "FILE"),
     text("eeprom", &["restore"], Text::Rest, "FILE"),
+    text("data", &["save"], Text::Word, "FILE"),
+    text("data", &["diff"], Text::Rest, "FILE"),
+    text("data", &["load"], Text::Rest, "FILE"),
     text("servo", &["params", "save"], Text::Rest, "FILE"),
     text("servo", &["params", "diff"], Text::Rest, "FILE"),
     text("servo", &["params", "load"], Text::Rest, "FILE"),
@@ -168,6 +176,7 @@ pub fn text_words(cmd: &str, words: &[&str]) -> Vec<bool> {
             let from = s + n;
             match t.what {
                 Text::Rest => mask[from..].iter_mut().for_each(|m| *m = true),
+                Text::Word => mask.iter_mut().skip(from).take(1).for_each(|m| *m = true),
                 Text::Option(key) => {
                     for (m, w) in mask[from..].iter_mut().zip(&words[from..]) {
                         if w.split_once('=').is_some_and(|(k, _)| k.eq_ignore_ascii_case(key)) {

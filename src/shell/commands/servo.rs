@@ -22,7 +22,7 @@ use std::time::Duration;
 pub const SERVO: CommandSpec = CommandSpec {
     name: "servo",
     aliases: &[],
-    usage: "servo [DEVICE] status|enable|disable|fault-reset|quickstop|mode NAME|move abs|rel POS [speed=300rpm] [acc=100rps/s] [dec=100rps/s]|jog SPEED [acc=100rps/s] [dec=100rps/s]|halt [on|off]|home [method=N]|wait target [timeout=5s]|save|params save FILE [group…]|params diff FILE [FILE2]|params load FILE [--store]|read OBJ…|encoder [N|auto]|raw BYTES…|sim fault [drive] [CODE] [id=N]|sim fault no-reply|bad-checksum|drop-echo [count=N] [all]|sim fault delay D|sim fault late D|sim fault abort OBJ CODE|sim fault clear|sim switch [home|neg|pos] POS|off|sim pulses freq=HZ count=N [dir=fwd|rev]|sim strict on|off",
+    usage: "servo [DEVICE] status|enable|disable|fault-reset|quickstop|mode NAME|move abs|rel POS [speed=300rpm] [acc=100rps/s] [dec=100rps/s]|jog SPEED [acc=100rps/s] [dec=100rps/s]|halt [on|off]|home [method=N]|wait target [timeout=5s]|save|params save FILE [group…]|params diff FILE [FILE2]|params diff --with DRIVE|params load FILE [--store]|read OBJ…|encoder [N|auto]|raw BYTES…|sim fault [drive] [CODE] [id=N]|sim fault no-reply|bad-checksum|drop-echo [count=N] [all]|sim fault delay D|sim fault late D|sim fault abort OBJ CODE|sim fault clear|sim switch [home|neg|pos] POS|off|sim pulses freq=HZ count=N [dir=fwd|rev]|sim strict on|off",
     summary: "Kinco servo helpers: DS402 state machine, moves, jog, homing, waits, units, raw frames",
     subcommands: &[
         "status",
@@ -531,7 +531,31 @@ fn sim(ops: &mut dyn ServoOps, rest: &[lex::Word], base: usize, col: usize) -> R
     Ok(o)
 }
 
-/// `servo params save FILE [group…]`, `servo params diff FILE [FILE2]`, `servo params load
+/// The difference of two parameter sets as `servo params diff` shows it.
+fn diff_outcome(
+    left: &crate::servo::params::ParamSet,
+    right: &crate::servo::params::ParamSet,
+    left_label: &str,
+    right_label: &str,
+) -> Outcome {
+    let d = crate::servo::params::diff(left, right);
+    let rows: Vec<Vec<String>> =
+        d.iter().map(|x| vec![x.name.clone(), x.object.clone(), x.left.shown.clone(), x.right.shown.clone()]).collect();
+    let o = Outcome::new("servo");
+    let o = if rows.is_empty() {
+        o.text(crate::msg!("servo-params-same"))
+    } else {
+        o.table(&["parameter", "object", left_label, right_label], rows)
+    };
+    o.with("left", left_label).with("right", right_label).with("count", d.len()).with("differences", &d)
+}
+
+fn entry_name(sh: &Shell, dev: usize) -> String {
+    sh.session.entries()[dev].name.clone()
+}
+
+/// `servo params save FILE [group…]`, `servo params diff FILE [FILE2]`, `servo params diff
+/// --with DRIVE` (this drive against another open one), `servo params load
 /// FILE [--store]`: parameter sets ([`crate::servo::params`]; docs/servo.md "Parameter sets").
 fn params(sh: &mut Shell, dev: usize, rest: &[lex::Word], base: usize, col: usize) -> Result<Outcome> {
     use crate::servo::params::{self, ParamSet};
@@ -581,6 +605,27 @@ fn params(sh: &mut Shell, dev: usize, rest: &[lex::Word], base: usize, col: usiz
                 .with("drive", &set.drive)
                 .with("parameters", &set.parameters))
         }
+        ("diff", [(_, with), (dc, other)]) if with == "--with" => {
+            // This drive against another open drive, read now, every parameter of both.
+            let other_dev = sh.session.index(other).map_err(|e| e.column(*dc))?;
+            sh.session.ready(other_dev)?;
+            let mut sets = Vec::new();
+            for (i, label) in [(dev, entry_name(sh, dev)), (other_dev, other.clone())] {
+                let e = &sh.session.entries()[i];
+                let identity =
+                    params::Identity { model: e.device.info().model.clone(), url: e.url.clone(), ..identity.clone() };
+                let Some(mut access) = crate::servo::ops(sh.session.entry(i).device.as_mut()) else {
+                    return Err(Error::unsupported(crate::msg!("data-not-a-drive", device = label.as_str()))
+                        .device(label)
+                        .column(*dc));
+                };
+                let id = ServoOps::drive_id(&access);
+                sets.push((params::read_set(&mut access, &[], params::Identity { id, ..identity })?, label));
+            }
+            let (right, right_label) = sets.pop().expect("two drives");
+            let (left, left_label) = sets.pop().expect("two drives");
+            Ok(diff_outcome(&left, &right, &left_label, &right_label))
+        }
         ("diff", [a]) | ("diff", [a, _]) => {
             let left = read_file(sh, a)?;
             let (right, right_label) = match files {
@@ -592,18 +637,7 @@ fn params(sh: &mut Shell, dev: usize, rest: &[lex::Word], base: usize, col: usiz
                     (params::read_set(&mut access, &groups, params::Identity { id, ..identity })?, "drive".to_string())
                 }
             };
-            let d = params::diff(&left, &right);
-            let rows: Vec<Vec<String>> = d
-                .iter()
-                .map(|x| vec![x.name.clone(), x.object.clone(), x.left.shown.clone(), x.right.shown.clone()])
-                .collect();
-            let mut o = Outcome::new("servo");
-            o = if rows.is_empty() {
-                o.text(crate::msg!("servo-params-same"))
-            } else {
-                o.table(&["parameter", "object", a.1.as_str(), right_label.as_str()], rows)
-            };
-            Ok(o.with("left", &a.1).with("right", &right_label).with("count", d.len()).with("differences", &d))
+            Ok(diff_outcome(&left, &right, &a.1, &right_label))
         }
         ("load", [f]) | ("load", [f, (_, _)]) => {
             let store = match files {
