@@ -59,7 +59,8 @@ dl.facts dd{margin:0;overflow-wrap:anywhere}
 .scroll{overflow-x:auto;-webkit-overflow-scrolling:touch}
 table{border-collapse:collapse;width:100%;font-size:.92rem}
 th,td{border:1px solid var(--line);padding:.3rem .45rem;text-align:left;vertical-align:top;overflow-wrap:anywhere}
-th{background:#f6f8fa}
+th{background:#f6f8fa;overflow-wrap:normal}
+td.word{white-space:nowrap}
 td.num{text-align:right;white-space:nowrap;font-variant-numeric:tabular-nums}
 .ok{color:var(--ok);font-weight:600}
 .failed,.failed-optional{color:var(--bad);font-weight:600}
@@ -175,8 +176,10 @@ fn devices(h: &mut String, r: &Report, lang: Lang) {
         };
         fact(h, &msg!(lang: lang, "report-device-kind"), &sim);
         if let Some(Json::Object(rep)) = d.get("reports") {
+            // Scalars only: lists and tables stay in the JSON twin.
             for (k, v) in rep {
-                if matches!(k.as_str(), "ok" | "cmd" | "text") {
+                if matches!(k.as_str(), "ok" | "cmd" | "sub" | "text" | "device" | "message") || v.is_object() || v.is_array()
+                {
                     continue;
                 }
                 let _ = writeln!(h, "<dt><code>{}</code></dt><dd>{}</dd>", escape(k), escape(&value_text(v)));
@@ -220,7 +223,7 @@ fn step_row(h: &mut String, s: &Step, lang: Lang) {
     let class = escape(&s.result);
     let _ = write!(
         h,
-        "<tr id=\"step-{}\" class=\"step {class}\"><td class=\"num\">{}</td><td>{}</td><td class=\"{class}\">{}</td><td class=\"num\">{}</td><td>",
+        "<tr id=\"step-{}\" class=\"step step-{class}\"><td class=\"num\">{}</td><td>{}</td><td class=\"{class} word\">{}</td><td class=\"num\">{}</td><td>",
         s.n,
         s.n,
         escape(&s.name),
