@@ -69,11 +69,6 @@ pub static ENVIRONMENT: &[(&str, Option<&str>, &str)] = &[
         "the language of messages (`en`, `ru`, `zh-CN`), when --lang is not given; before LC_ALL, LC_MESSAGES, LANG",
     ),
     ("NO_COLOR", None, "any non-empty value: no colour, even on a terminal (no-color.org)"),
-    (
-        "SOURCE_DATE_EPOCH",
-        None,
-        "seconds since 1970: the date a commissioning report carries instead of now, so a rehearsal's report is reproducible (reproducible-builds.org)",
-    ),
 ];
 
 /// The environment variable that sets a flag's default, if any.

@@ -87,7 +87,7 @@ pub fn main(shell: &mut Shell, args: &RunArgs, style: Style) -> i32 {
         if let Err(e) = crate::script::report::remember(lua, &begun)
             .and_then(|_| lua.set_named_registry_value(crate::script::report::PATH_KEY, path.as_str()))
         {
-            eprintln!("cannot start Lua: {e}");
+            eprintln!("{}", crate::msg!("report-cannot-write", file = path.as_str(), reason = e.to_string()));
             return 1;
         }
     }
