@@ -54,9 +54,15 @@ function M.new(title, opts)
     traces = {},
     references = {},
   }, M)
-  self.report_path = plcsh.report.path() or opts.report
-  if self.report_path and not plcsh.report.path() then
-    plcsh.report.begin() -- the write log starts here (with --report it started with the run)
+  local found, report = pcall(function() return plcsh.report end) -- a sandbox may leave it out
+  report = found and report or nil
+  local asked = report and report.path()
+  self.report_path = asked or opts.report
+  if self.report_path then
+    assert(report, "commission.new: this run cannot write a report (no plcsh.report)")
+    if not asked then
+      report.begin() -- the write log starts here (with --report it started with the run)
+    end
   end
   return self
 end
