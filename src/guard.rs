@@ -41,9 +41,9 @@
 //! Nothing of this runs while the log is off: the usual case costs one flag load.
 
 use crate::core::device::Change;
+use crate::core::Clock;
 use crate::core::{Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
 use crate::profile::Guard;
-use crate::core::Clock;
 use serde::Serialize;
 use std::any::Any;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -89,7 +89,12 @@ pub struct WriteLog {
 
 impl WriteLog {
     pub fn new(clock: Clock) -> WriteLog {
-        WriteLog { on: AtomicBool::new(false), clock, entries: Mutex::new((Vec::new(), 0)), waiting: Mutex::new(Vec::new()) }
+        WriteLog {
+            on: AtomicBool::new(false),
+            clock,
+            entries: Mutex::new((Vec::new(), 0)),
+            waiting: Mutex::new(Vec::new()),
+        }
     }
 
     /// Empties the log and starts logging.
@@ -410,7 +415,10 @@ mod tests {
         assert!(log.waiting().is_empty());
         let e = log.entries().0;
         assert_eq!(e.len(), 3, "{e:?}");
-        assert_eq!((e[1].action.as_deref(), e[1].old, e[1].new), (Some("test"), Some(Value::Int(6)), Some(Value::Int(7))));
+        assert_eq!(
+            (e[1].action.as_deref(), e[1].old, e[1].new),
+            (Some("test"), Some(Value::Int(6)), Some(Value::Int(7)))
+        );
         assert_eq!((e[2].operand.as_str(), e[2].old, e[2].new), ("clock", None, None), "no operand, no values");
         // A refused write is logged with the refusal and no new value.
         flag.store(true, Ordering::Relaxed);

@@ -237,7 +237,8 @@ fn the_bench_axis_gives_a_report_byte_identical_on_a_second_rehearsal() {
     assert_eq!(servo["reports"]["cmd"], "servo", "the command's own --json result");
     // The move's measured values, a recorded command result, the parameter sets.
     let mv = &j["steps"][5];
-    let value = |name: &str| mv["values"].as_array().unwrap().iter().find(|v| v["name"] == name).unwrap()["value"].clone();
+    let value =
+        |name: &str| mv["values"].as_array().unwrap().iter().find(|v| v["name"] == name).unwrap()["value"].clone();
     assert_eq!(value("pulses out (SMD212)"), 8000);
     assert_eq!(value("drive moved"), 32000);
     assert_eq!(j["steps"][1]["results"][0]["state"], "operation enabled");
@@ -255,9 +256,15 @@ fn the_bench_axis_gives_a_report_byte_identical_on_a_second_rehearsal() {
     let writes = j["writes"].as_array().unwrap();
     let smb201: Vec<&Value> = writes.iter().filter(|w| w["operand"] == "SMB201").collect();
     assert_eq!(smb201.len(), 2, "{smb201:?}");
-    assert_eq!((smb201[0]["new"].clone(), smb201[1]["old"].clone(), smb201[1]["new"].clone()), (64.into(), 64.into(), 0.into()));
+    assert_eq!(
+        (smb201[0]["new"].clone(), smb201[1]["old"].clone(), smb201[1]["new"].clone()),
+        (64.into(), 64.into(), 0.into())
+    );
     assert!(writes.iter().all(|w| w["t_ms"].as_f64().unwrap() <= j["time"]["end_ms"].as_f64().unwrap()));
-    assert!(writes.iter().any(|w| w["device"] == "plc" && w["action"].is_string()), "a K2 instruction's changes are logged");
+    assert!(
+        writes.iter().any(|w| w["device"] == "plc" && w["action"].is_string()),
+        "a K2 instruction's changes are logged"
+    );
 
     for id in ["summary", "devices", "checklist", "params", "curves", "writes", "notes"] {
         assert!(html.contains(&format!("<section id=\"{id}\">")), "section {id}");
@@ -439,14 +446,18 @@ fn chromium_renders_prints_on_a4_and_shows_the_report() {
     let boxes: Vec<&str> = text.match_indices("/MediaBox").map(|(i, _)| &text[i..(i + 60).min(text.len())]).collect();
     assert!(!boxes.is_empty(), "the PDF has pages");
     for b in &boxes {
-        let nums: Vec<f64> = b[b.find('[').unwrap() + 1..b.find(']').unwrap()]
-            .split_whitespace()
-            .map(|n| n.parse().unwrap())
-            .collect();
+        let nums: Vec<f64> =
+            b[b.find('[').unwrap() + 1..b.find(']').unwrap()].split_whitespace().map(|n| n.parse().unwrap()).collect();
         assert_eq!((nums[2].round(), nums[3].round()), (595.0, 842.0), "A4 in points: {b}");
     }
-    let pages = text.matches("/Type /Page\n").count() + text.matches("/Type /Page ").count() + text.matches("/Type /Page/").count();
-    assert!(pages >= 7 || boxes.len() >= 7, "a page break before each of the 7 sections: {pages} pages, {} boxes", boxes.len());
+    let pages = text.matches("/Type /Page\n").count()
+        + text.matches("/Type /Page ").count()
+        + text.matches("/Type /Page/").count();
+    assert!(
+        pages >= 7 || boxes.len() >= 7,
+        "a page break before each of the 7 sections: {pages} pages, {} boxes",
+        boxes.len()
+    );
 
     // A screenshot: its size and a fair share of ink (text, tables, the plot).
     let shot = d.join("shot.png");

@@ -129,16 +129,17 @@ fn summary(h: &mut String, r: &Report, lang: Lang) {
     } else {
         msg!(lang: lang, "report-result-failed")
     };
-    let _ = writeln!(h, "<p><span class=\"verdict {}\">{}</span> {}</p>", escape(&r.summary.result), escape(&verdict), {
-        escape(&msg!(
-            lang: lang,
-            "report-summary",
-            ok = r.summary.ok,
-            total = r.summary.steps,
-            failed = r.summary.failed,
-            skipped = r.summary.skipped
-        ))
-    });
+    let _ =
+        writeln!(h, "<p><span class=\"verdict {}\">{}</span> {}</p>", escape(&r.summary.result), escape(&verdict), {
+            escape(&msg!(
+                lang: lang,
+                "report-summary",
+                ok = r.summary.ok,
+                total = r.summary.steps,
+                failed = r.summary.failed,
+                skipped = r.summary.skipped
+            ))
+        });
     h.push_str("<dl class=\"facts\">\n");
     if let Some(s) = &r.site {
         fact(h, &msg!(lang: lang, "report-site"), s);
@@ -178,7 +179,9 @@ fn devices(h: &mut String, r: &Report, lang: Lang) {
         if let Some(Json::Object(rep)) = d.get("reports") {
             // Scalars only: lists and tables stay in the JSON twin.
             for (k, v) in rep {
-                if matches!(k.as_str(), "ok" | "cmd" | "sub" | "text" | "device" | "message") || v.is_object() || v.is_array()
+                if matches!(k.as_str(), "ok" | "cmd" | "sub" | "text" | "device" | "message")
+                    || v.is_object()
+                    || v.is_array()
                 {
                     continue;
                 }
@@ -247,7 +250,11 @@ fn step_row(h: &mut String, s: &Step, lang: Lang) {
         );
     }
     if !s.values.is_empty() {
-        let _ = write!(h, "<table class=\"values\"><tr><th colspan=\"2\">{}</th></tr>", escape(&msg!(lang: lang, "report-values")));
+        let _ = write!(
+            h,
+            "<table class=\"values\"><tr><th colspan=\"2\">{}</th></tr>",
+            escape(&msg!(lang: lang, "report-values"))
+        );
         for v in &s.values {
             let unit = v.unit.as_deref().map(|u| format!(" {u}")).unwrap_or_default();
             let _ = write!(
@@ -261,7 +268,11 @@ fn step_row(h: &mut String, s: &Step, lang: Lang) {
         h.push_str("</table>");
     }
     if !s.results.is_empty() {
-        let _ = write!(h, "<p class=\"detail\">{}</p>", escape(&msg!(lang: lang, "report-results", count = s.results.len())));
+        let _ = write!(
+            h,
+            "<p class=\"detail\">{}</p>",
+            escape(&msg!(lang: lang, "report-results", count = s.results.len()))
+        );
     }
     h.push_str("</td></tr>\n");
 }
@@ -346,14 +357,11 @@ fn curves(h: &mut String, r: &Report, lang: Lang) {
 }
 
 fn curve(h: &mut String, i: usize, t: &Trace, lang: Lang) {
-    let series: Vec<crate::plot::Series> = t
-        .series
-        .iter()
-        .map(|c| crate::plot::Series::new(c.name.clone(), c.unit.clone(), c.points.clone()))
-        .collect();
+    let series: Vec<crate::plot::Series> =
+        t.series.iter().map(|c| crate::plot::Series::new(c.name.clone(), c.unit.clone(), c.points.clone())).collect();
     let (w, height) = crate::plot::default_size(&series);
     let w = w.min(super::PLOT_COLUMNS as u32 + 100);
-    let _ = write!(h, "<figure class=\"plot\" id=\"curve-{}\">\n", i + 1);
+    let _ = writeln!(h, "<figure class=\"plot\" id=\"curve-{}\">", i + 1);
     match crate::plot::svg(&series, &t.title, w, height) {
         Ok(svg) => h.push_str(&scalable_svg(&svg, w, height)),
         Err(e) => {
@@ -372,7 +380,13 @@ fn curve(h: &mut String, i: usize, t: &Trace, lang: Lang) {
     }
     let _ = write!(h, "\n<figcaption>{}", escape(&caption));
     for c in &t.series {
-        let with_unit = |v: f64| if c.unit.is_empty() { crate::plot::number(v) } else { format!("{} {}", crate::plot::number(v), c.unit) };
+        let with_unit = |v: f64| {
+            if c.unit.is_empty() {
+                crate::plot::number(v)
+            } else {
+                format!("{} {}", crate::plot::number(v), c.unit)
+            }
+        };
         let figures = msg!(
             lang: lang,
             "report-curve-figures",
@@ -424,7 +438,8 @@ fn writes(h: &mut String, r: &Report, lang: Lang) {
         h.push_str("</table></div>\n");
     }
     if r.writes_not_kept > 0 {
-        let _ = writeln!(h, "<p>{}</p>", escape(&msg!(lang: lang, "report-writes-not-kept", count = r.writes_not_kept)));
+        let _ =
+            writeln!(h, "<p>{}</p>", escape(&msg!(lang: lang, "report-writes-not-kept", count = r.writes_not_kept)));
     }
     h.push_str("</section>\n");
 }

@@ -21,7 +21,9 @@ fn sample_run() -> Run {
 
 fn ctx(lang: Lang) -> Context {
     Context {
-        devices: vec![serde_json::json!({"name": "plc", "family": "k2", "model": "K205-16DT", "url": "sim:K205-16DT", "simulated": true})],
+        devices: vec![
+            serde_json::json!({"name": "plc", "family": "k2", "model": "K205-16DT", "url": "sim:K205-16DT", "simulated": true}),
+        ],
         date: rfc3339(1_796_684_646),
         stepped: true,
         start_ms: 0.0,

@@ -96,8 +96,9 @@ fn record(lua: &Lua, v: Value) -> mlua::Result<Run> {
             }
         }
     }
-    serde_json::from_value(j)
-        .map_err(|e| raise(Error::new(crate::core::ErrorKind::Value, crate::msg!("report-bad-record", reason = e.to_string()))))
+    serde_json::from_value(j).map_err(|e| {
+        raise(Error::new(crate::core::ErrorKind::Value, crate::msg!("report-bad-record", reason = e.to_string())))
+    })
 }
 
 fn begun(lua: &Lua) -> mlua::Result<Option<Begun>> {
