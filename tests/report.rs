@@ -351,14 +351,24 @@ c:run()
 #[test]
 fn any_script_run_with_report_gets_its_devices_and_writes() {
     let d = dir("plain");
-    std::fs::write(d.join("plain.lua"), "plc.VW10 = 7\nplc.VW10 = 8\n").unwrap();
+    std::fs::write(d.join("plain.lua"), "plc.VW10 = 7\nplc.VW10 = 8\nservo:enable()\n").unwrap();
     let o = plcsh_in(&d, &["--lang", "zh-CN", "--time", "stepped", "run", "--report", "r.html", "plain.lua"]);
     assert!(o.status.success(), "{}", both(&o));
     let j: Value = serde_json::from_str(&std::fs::read_to_string(d.join("r.json")).unwrap()).unwrap();
     assert!(schema_errors(&j).is_empty(), "{:?}", schema_errors(&j));
-    let w: Vec<(Value, Value)> =
-        j["writes"].as_array().unwrap().iter().map(|w| (w["old"].clone(), w["new"].clone())).collect();
-    assert_eq!(w, vec![(0.into(), 7.into()), (7.into(), 8.into())]);
+    let w: Vec<(Value, Value, Value)> = j["writes"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|w| (w["operand"].clone(), w["old"].clone(), w["new"].clone()))
+        .collect();
+    let e = |op: &str, old: i64, new: i64| (Value::from(op), Value::from(old), Value::from(new));
+    // Plain writes, then the drive's enable sequence (DS402 shutdown, switch on, enable
+    // operation): object writes the guard sees as operations, read back after each.
+    assert_eq!(
+        w,
+        vec![e("VW10", 0, 7), e("VW10", 7, 8), e("controlword", 0, 6), e("controlword", 6, 7), e("controlword", 7, 15)]
+    );
     assert_eq!(j["title"], "plain.lua");
     let html = std::fs::read_to_string(d.join("r.html")).unwrap();
     assert!(html.contains("对设备的写入") && html.contains("lang=\"zh-CN\""), "headings in Chinese");
