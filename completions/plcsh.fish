@@ -309,6 +309,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand probe" -l read-only -d 'Refu
 complete -c plcsh -n "__fish_plcsh_using_subcommand probe" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l write-dir -d 'With --sandbox: the directory the script may write files in (none without it)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -s f -l fleet -d 'Run the script on every device of this fleet at once, each in a Lua state of its own (docs/fleets.md)' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l report -d 'Write a commissioning report: this HTML file and its JSON twin beside it (docs/commissioning.md). The commission runner writes its checklist there; any other script gets the devices and the log of every write it made' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'

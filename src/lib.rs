@@ -21,6 +21,7 @@ pub mod plot;
 pub mod profile;
 pub mod publish;
 pub mod record;
+pub mod report;
 pub mod schemes;
 pub mod script;
 pub mod servo;

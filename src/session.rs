@@ -57,6 +57,9 @@ pub struct Session {
     pub confine: Option<Arc<crate::confine::Confinement>>,
     /// A graded run's limits ([`crate::core::budget`]): waits stop at its simulated-time limit.
     pub budget: Option<Arc<crate::core::budget::Budget>>,
+    /// The log of every write made to a device while a report is recorded
+    /// ([`crate::guard::WriteLog`]); every device's guard writes to it.
+    pub write_log: Arc<crate::guard::WriteLog>,
 }
 
 /// The `control=PATH` of a wire URL: a served simulator's control channel. The drive line
@@ -69,6 +72,7 @@ fn control_param(url: &str) -> Option<std::path::PathBuf> {
 impl Session {
     /// An empty session with the given clock.
     pub fn new(clock: Clock) -> Session {
+        let clock_for_log = clock.clone();
         Session {
             devices: Vec::new(),
             current: 0,
@@ -78,6 +82,7 @@ impl Session {
             read_only: Arc::new(AtomicBool::new(false)),
             confine: None,
             budget: None,
+            write_log: Arc::new(crate::guard::WriteLog::new(clock_for_log)),
         }
     }
 
@@ -211,9 +216,11 @@ impl Session {
             Err(e) => return Err(e),
         };
         let (u, clock, read_only) = (url.to_string(), self.clock.clone(), self.read_only.clone());
+        let (log, logged_as) = (self.write_log.clone(), name.to_string());
         let open: crate::pending::Opener = Box::new(move || {
             let device = open_url(&u, &clock)?;
-            Ok(Box::new(crate::guard::Guarded::new(device, None, read_only.clone())) as Box<dyn Device>)
+            let guarded = crate::guard::Guarded::new(device, None, read_only.clone()).logging(log.clone(), &logged_as);
+            Ok(Box::new(guarded) as Box<dyn Device>)
         });
         let device = Box::new(crate::pending::Pending::unopened(url, open, e.clone()));
         let entry =
@@ -223,6 +230,17 @@ impl Session {
             None => self.devices.push(entry),
         }
         Ok(Some(e))
+    }
+
+    /// The write log as it stands: every device's guard first reads back the values of its
+    /// last family operation ([`crate::guard::WriteLog`]; an empty read reaches its guard, and
+    /// only devices with such an operation are asked, so no deferred device is made ready).
+    pub fn write_log_entries(&mut self) -> (Vec<crate::guard::Written>, u64) {
+        let waiting = self.write_log.waiting();
+        for e in self.devices.iter_mut().filter(|e| waiting.contains(&e.name)) {
+            let _ = e.device.read(&[]);
+        }
+        self.write_log.entries()
     }
 
     /// Makes device `i` ready for a command ([`Device::ready`]): the reason it is not (its
@@ -290,7 +308,10 @@ impl Session {
         device: Box<dyn Device>,
         rules: Option<crate::profile::Guard>,
     ) {
-        let device = Box::new(crate::guard::Guarded::new(device, rules.clone(), self.read_only.clone()));
+        let device = Box::new(
+            crate::guard::Guarded::new(device, rules.clone(), self.read_only.clone())
+                .logging(self.write_log.clone(), name),
+        );
         let control = control_param(url);
         let entry = Entry { name: name.to_string(), url: url.to_string(), device, guard: rules, control };
         match self.devices.iter().position(|e| e.name == name) {

@@ -19,7 +19,7 @@ const LAYERS: &[(&str, &[&str])] = &[
     ("base", &["engine", "paths", "signals", "plot"]),
     ("families", &["k2", "servo", "umpk", "fx"]),
     ("devices", &["wiring", "guard", "snapshot", "pending", "session", "profile", "confine", "output", "schemes"]),
-    ("services", &["record", "dataset"]),
+    ("services", &["record", "dataset", "report"]),
     ("front ends", &["fleet", "lab", "script", "shell", "publish"]),
     ("cli", &["cli", "fuzzing"]),
 ];

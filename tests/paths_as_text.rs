@@ -71,7 +71,7 @@ const CASES: &[(&str, &[&str])] = &[
     ("profile_plan_file", &["profile to=FILE.png"]),
     ("umpk_program_file", &["umpk program FILE.hex"]),
     ("lab_in_the_shell", &["lab new NAME", "lab check LAB", "lab grade SUBMISSIONS…"]),
-    ("run_a_script", &["plcsh run <script>", "plcsh run --write-dir"]),
+    ("run_a_script", &["plcsh run <script>", "plcsh run --write-dir", "plcsh run --report"]),
     ("config_state_and_bench_files", &["plcsh --config", "plcsh --state", "plcsh --bench"]),
     (
         "record_show_and_replay",
@@ -400,6 +400,23 @@ fn run_a_script() {
         .unwrap());
     assert_eq!(text, "аргумент: один\n");
     assert_eq!(std::fs::read_to_string(out.join("итог.txt")).unwrap(), "ok");
+    // A commissioning report where the sandbox may write: the page and its JSON twin.
+    let report = out.join("отчёт 1.html");
+    ok(&plcsh()
+        .args([
+            "run",
+            "--sandbox",
+            "--write-dir",
+            out.to_str().unwrap(),
+            "--report",
+            report.to_str().unwrap(),
+            s,
+            "два",
+        ])
+        .output_retrying()
+        .unwrap());
+    assert!(std::fs::read_to_string(&report).unwrap().contains("проверка.lua"), "titled by the script");
+    assert!(out.join("отчёт 1.json").is_file());
 }
 
 #[test]

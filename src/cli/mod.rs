@@ -309,6 +309,7 @@ const VALUE_OPTIONS: &[&str] = &[
     "--config",
     "--state",
     "--write-dir",
+    "--report",
     "--record",
     "--bench",
     "-f",

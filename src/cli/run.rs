@@ -23,6 +23,11 @@ pub struct RunArgs {
     /// Run the script on every device of this fleet at once, each in a Lua state of its own (docs/fleets.md).
     #[arg(short = 'f', long = "fleet", value_name = "NAME")]
     pub fleet: Option<String>,
+    /// Write a commissioning report: this HTML file and its JSON twin beside it (docs/commissioning.md).
+    /// The commission runner writes its checklist there; any other script gets the devices and
+    /// the log of every write it made.
+    #[arg(long, value_name = "FILE")]
+    pub report: Option<String>,
     /// The Lua script.
     pub script: PathBuf,
     /// Arguments for the script (`arg[1]`…, and `...`): everything after the script, even words
@@ -76,9 +81,29 @@ pub fn main(shell: &mut Shell, args: &RunArgs, style: Style) -> i32 {
         }
         shell.confine(rules);
     }
+    if let Some(path) = &args.report {
+        let begun = crate::script::report::begin(shell);
+        let lua = engine.lua();
+        if let Err(e) = crate::script::report::remember(lua, &begun)
+            .and_then(|_| lua.set_named_registry_value(crate::script::report::PATH_KEY, path.as_str()))
+        {
+            eprintln!("{}", crate::msg!("report-cannot-write", file = path.as_str(), reason = e.to_string()));
+            return 1;
+        }
+    }
     let start = std::time::Instant::now();
-    let result = engine.run_file_in(shell, &args.script, &args.args, env.as_ref());
+    let mut result = engine.run_file_in(shell, &args.script, &args.args, env.as_ref());
     let duration = start.elapsed();
+    if let Some(path) = &args.report {
+        if let Err(e) = report_if_none(&engine, shell, args, path, &result) {
+            if result.is_ok() {
+                result = Err(crate::script::Failure { error: e, location: None, traceback: None });
+            } else {
+                eprintln!("{e}");
+            }
+        }
+        shell.session.write_log.stop();
+    }
     let _ = std::io::stdout().flush();
     if style.json {
         let mut summary = match &result {
@@ -107,6 +132,28 @@ pub fn main(shell: &mut Shell, args: &RunArgs, style: Style) -> i32 {
             }
         }
     }
+}
+
+/// `--report FILE` for a script that wrote no report itself (no commission runner): the
+/// devices and the write log, titled by the script, with the script's failure as a note.
+fn report_if_none(
+    engine: &Engine,
+    shell: &mut Shell,
+    args: &RunArgs,
+    path: &str,
+    result: &Result<(), crate::script::Failure>,
+) -> crate::core::Result<()> {
+    let lua = engine.lua();
+    if lua.named_registry_value::<Option<bool>>(crate::script::report::WRITTEN_KEY).ok().flatten() == Some(true) {
+        return Ok(());
+    }
+    let Some(begun) = crate::script::report::begun_in(lua) else { return Ok(()) };
+    let run = crate::report::Run {
+        title: args.script.display().to_string(),
+        notes: result.as_ref().err().map(|f| f.error.to_string()).into_iter().collect(),
+        ..Default::default()
+    };
+    crate::script::report::write(shell, run, &begun, path).map(|_| ())
 }
 
 /// The checks the script ran and how many failed (`plcsh.checks`, `plcsh.checks_failed`).

@@ -17,6 +17,7 @@ mod device;
 pub mod error;
 mod fleet;
 pub mod paths;
+pub mod report;
 pub mod sandbox;
 mod snapshot;
 mod wire;
@@ -60,6 +61,7 @@ fn plcsh(lua: &Lua) -> mlua::Result<()> {
     let p = api::plcsh_table(lua)?;
     wire::register(lua, &p)?;
     snapshot::register(lua, &p)?;
+    report::register(lua, &p)?;
     lua.globals().set("plcsh", p)
 }
 

@@ -354,9 +354,13 @@ fn stopped(err: &Error, o: &Object, done: usize) -> Error {
     e
 }
 
-/// Now as RFC 3339 UTC (`2026-12-07T21:08:13Z`).
+/// Now as RFC 3339 UTC (`2026-12-07T21:08:13Z`); `SOURCE_DATE_EPOCH` (seconds, the
+/// reproducible-builds convention) stands for now when set, so a rehearsal's saved sets and
+/// its commissioning report are the same files every time.
 pub fn utc_now() -> String {
-    let s = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map(|d| d.as_secs()).unwrap_or(0) as i64;
+    let s = std::env::var("SOURCE_DATE_EPOCH").ok().and_then(|v| v.trim().parse::<i64>().ok()).unwrap_or_else(|| {
+        std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map(|d| d.as_secs()).unwrap_or(0) as i64
+    });
     let (days, rem) = (s.div_euclid(86_400), s.rem_euclid(86_400));
     // Howard Hinnant's civil_from_days.
     let z = days + 719_468;
