@@ -97,8 +97,8 @@ impl Outcome {
         self.data.insert(key.to_string(), serde_json::to_value(v).unwrap_or(serde_json::Value::Null));
         self
     }
-    pub fn table(mut self, headers: &[&str], rows: Vec<Vec<String>>) -> Outcome {
-        self.view = View::Table { headers: headers.iter().map(|s| s.to_string()).collect(), rows };
+    pub fn table<S: AsRef<str>>(mut self, headers: &[S], rows: Vec<Vec<String>>) -> Outcome {
+        self.view = View::Table { headers: headers.iter().map(|s| s.as_ref().to_string()).collect(), rows };
         self
     }
     /// The same data as `--json` prints, as a JSON value (for Lua and tests).

@@ -73,7 +73,7 @@ pub fn run(cmd: &LabCmd, style: Style, out: &mut dyn Write) -> i32 {
                     let mut v = o.to_json();
                     v["ok"] = ok.into();
                     if !ok {
-                        v["error"] = serde_json::json!({"kind": "state", "message": head});
+                        v["error"] = serde_json::json!({"kind": "state", "code": "lab-check-failed", "message": head});
                     }
                     let _ = writeln!(out, "{v}");
                 } else {

@@ -35,7 +35,7 @@ pub fn new_lab(dir: &Path) -> Result<Outcome> {
     let word = crate::shell::lex::quote(&shown);
     Ok(Outcome::new("lab")
         .with("sub", "new")
-        .text(format!("wrote {word} ({}); check it with: plcsh lab check {word}", names.join(", ")))
+        .text(crate::msg!("lab-new-wrote", dir = word.to_string(), files = names.join(", ")).text)
         .with("dir", dir.display().to_string())
         .with("files", names))
 }
@@ -73,6 +73,16 @@ fn quoted(names: &[&str]) -> String {
     names.iter().map(|n| format!("\"{n}\"")).collect::<Vec<_>>().join(", ")
 }
 
+/// Points as a message argument: a whole number as a number (plural forms read it), any
+/// other as its digits.
+fn number(x: f64) -> crate::core::msg::Arg {
+    if x.fract() == 0.0 && x.abs() < 1e15 {
+        crate::core::msg::Arg::Int(x as i64)
+    } else {
+        crate::core::msg::Arg::Text(x.to_string())
+    }
+}
+
 /// `lab check LAB`: the lab is valid and its reference solution gets every point.
 pub fn check(path: &Path) -> Result<(Outcome, String, bool)> {
     let lab = Lab::load(path)?;
@@ -83,20 +93,28 @@ pub fn check(path: &Path) -> Result<(Outcome, String, bool)> {
     let ok = r.verdict == "passed" && r.points == r.max_points && r.max_points > 0.0;
     let rows = report::check_rows(&r);
     let warnings = if ok { free_points(path, &lab)? } else { Vec::new() };
+    let (points, max) = (number(r.points), number(r.max_points));
     let head = if ok {
-        format!(
-            "{}: the reference solution gets {}/{} points in {} simulated s",
-            lab.title, r.points, r.max_points, r.sim_time_s
+        crate::msg!(
+            "lab-check-passed",
+            lab = lab.title.as_str(),
+            points = points,
+            max = max,
+            time = r.sim_time_s.to_string()
         )
     } else {
-        format!(
-            "{}: the reference solution gets {}/{} points ({}): the grader or the reference needs fixing",
-            lab.title, r.points, r.max_points, r.verdict
+        crate::msg!(
+            "lab-check-failed",
+            lab = lab.title.as_str(),
+            points = points,
+            max = max,
+            verdict = r.verdict.as_str()
         )
-    };
+    }
+    .text;
     let o = Outcome::new("lab")
         .with("sub", "check")
-        .table(&["criterion", "points", "result"], rows)
+        .table(&report::headings(crate::msg!("lab-check-columns")), rows)
         .with("lab", lab.title.as_str())
         .with("passed", ok)
         .with("warnings", warnings)
