@@ -55,16 +55,14 @@ fn points_name_criteria(lab: &Lab, r: &Report) -> Result<()> {
         let near = defined.iter().map(|n| (crate::core::text::edit_distance(key, n), *n)).min();
         let hint = match near {
             Some((d, n)) if d <= key.chars().count().max(3) / 3 + 1 => {
-                format!("did you mean \"{n}\"? the grader defines: {}", quoted(&defined))
+                crate::msg!("lab-hint-did-you-mean-criterion", near = n, criteria = quoted(&defined))
             }
-            _ if defined.is_empty() => "the grader defines no criterion (lab.criterion(name, points, fn))".into(),
-            _ => format!("the grader defines: {}", quoted(&defined)),
+            _ if defined.is_empty() => crate::msg!("lab-hint-no-criteria"),
+            _ => crate::msg!("lab-hint-criteria", criteria = quoted(&defined)),
         };
-        return Err(Error::usage(format!(
-            "{}: [points] \"{key}\" names no criterion the grader defines (on the reference solution)",
-            config::FILE
-        ))
-        .hint(hint));
+        return Err(
+            Error::usage(crate::msg!("lab-points-no-criterion", file = config::FILE, key = key.as_str())).hint(hint)
+        );
     }
     Ok(())
 }
@@ -128,29 +126,37 @@ pub fn check(path: &Path) -> Result<(Outcome, String, bool)> {
 fn free_points(path: &Path, lab: &Lab) -> Result<Vec<String>> {
     let dir =
         runner::PrivateDir::new().map_err(|e| Error::io("cannot create a folder for the empty program").cause(e))?;
-    let mut tries: Vec<(String, String)> = Vec::new();
+    // (the starter's name, or none for the empty program; the file graded)
+    let mut tries: Vec<(Option<String>, String)> = Vec::new();
     for s in &lab.starter {
         if lab.kind_of(s).is_some_and(|k| lab.accepts.contains(&k)) {
             let name = s.strip_prefix(&lab.dir).unwrap_or(s).display().to_string();
-            tries.push((format!("the starter {name}"), s.display().to_string()));
+            tries.push((Some(name), s.display().to_string()));
         }
     }
     let ext = if lab.accepts.iter().any(|k| k == "lua") { "lua" } else { "il" };
     let empty = dir.path().join(format!("empty.{ext}"));
     std::fs::write(&empty, "").map_err(|e| Error::io("cannot write the empty program").cause(e))?;
-    tries.push(("an empty program".into(), empty.display().to_string()));
+    tries.push((None, empty.display().to_string()));
     let mut out = Vec::new();
-    for (what, file) in tries {
+    for (starter, file) in tries {
         let mut r = runner::grade_one(path, lab, &file)?;
         report::bound(&mut r);
         if r.points > 0.0 {
-            let names: Vec<&str> = r.passed();
-            out.push(format!(
-                "{what} earns {}/{} points ({}): a criterion a program passes without doing the task checks nothing the task asks",
-                r.points,
-                r.max_points,
-                quoted(&names)
-            ));
+            let (points, max, criteria) = (number(r.points), number(r.max_points), quoted(&r.passed()));
+            out.push(
+                match starter {
+                    Some(file) => crate::msg!(
+                        "lab-free-points-starter",
+                        file = file,
+                        points = points,
+                        max = max,
+                        criteria = criteria
+                    ),
+                    None => crate::msg!("lab-free-points-empty", points = points, max = max, criteria = criteria),
+                }
+                .text,
+            );
         }
     }
     Ok(out)

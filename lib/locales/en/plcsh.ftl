@@ -6,6 +6,8 @@
 
 # The label before an error's hint, on the line under `error[KIND]: …`.
 label-hint = hint: { $hint }
+# The label before a warning (lab check's free points).
+label-warning = warning: { $warning }
 
 # What each `error.kind` means and what to do (the table of docs/reference/errors.md).
 error-kind-cause = { $kind ->
@@ -371,6 +373,12 @@ lab-expected-at = expected { $expected }, got { $got } at { $at } s
 lab-expected-what = { $what }: expected { $expected }, got { $got }
 lab-expected-what-at = { $what }: expected { $expected }, got { $got } at { $at } s
 lab-error-at = { $error } at { $at } s
+lab-free-points-starter = the starter { $file } earns { $points }/{ $max } points ({ $criteria }): a criterion a program passes without doing the task checks nothing the task asks
+lab-free-points-empty = an empty program earns { $points }/{ $max } points ({ $criteria }): a criterion a program passes without doing the task checks nothing the task asks
+lab-points-no-criterion = { $file }: [points] "{ $key }" names no criterion the grader defines (on the reference solution)
+lab-hint-did-you-mean-criterion = did you mean "{ $near }"? the grader defines: { $criteria }
+lab-hint-no-criteria = the grader defines no criterion (lab.criterion(name, points, fn))
+lab-hint-criteria = the grader defines: { $criteria }
 lab-check-passed = { $lab }: the reference solution gets { $points }/{ $max } points in { $time } simulated s
 lab-check-failed = { $lab }: the reference solution gets { $points }/{ $max } points ({ $verdict }): the grader or the reference needs fixing
 

@@ -4,6 +4,7 @@
 ## Вид ошибки (core::error, output)
 
 label-hint = подсказка: { $hint }
+label-warning = Внимание: { $warning }
 
 error-kind-cause = { $kind ->
     [syntax] строка не разбирается: лишний символ, незакрытая кавычка, нет `=` в `set`
@@ -372,6 +373,18 @@ lab-expected-at = ожидалось { $expected }, получено { $got } в
 lab-expected-what = { $what }: ожидалось { $expected }, получено { $got }
 lab-expected-what-at = { $what }: ожидалось { $expected }, получено { $got } в момент { $at } с
 lab-error-at = { $error } в момент { $at } с
+lab-free-points-starter = заготовка { $file } набирает { $points } из { $max ->
+        [one] { $max } балла
+       *[other] { $max } баллов
+    } ({ $criteria }): критерий, который программа проходит, не выполняя задания, ничего из задания не проверяет
+lab-free-points-empty = пустая программа набирает { $points } из { $max ->
+        [one] { $max } балла
+       *[other] { $max } баллов
+    } ({ $criteria }): критерий, который программа проходит, не выполняя задания, ничего из задания не проверяет
+lab-points-no-criterion = { $file }: [points] "{ $key }" не называет ни одного критерия, определённого программой оценки (на эталонном решении)
+lab-hint-did-you-mean-criterion = может быть, "{ $near }"? программа оценки определяет: { $criteria }
+lab-hint-no-criteria = программа оценки не определяет ни одного критерия (lab.criterion(name, points, fn))
+lab-hint-criteria = программа оценки определяет: { $criteria }
 lab-check-passed = { $lab }: эталонное решение набирает { $points } из { $max ->
         [one] { $max } балла
        *[other] { $max } баллов

@@ -4,6 +4,7 @@
 ## 错误的格式 (core::error, output)
 
 label-hint = 提示：{ $hint }
+label-warning = 警告：{ $warning }
 
 error-kind-cause = { $kind ->
     [syntax] 该行无法解析：多余的字符、未闭合的引号、`set` 中缺少 `=`
@@ -357,6 +358,12 @@ lab-expected-at = 期望 { $expected }，实际为 { $got }（{ $at } s 时）
 lab-expected-what = { $what }：期望 { $expected }，实际为 { $got }
 lab-expected-what-at = { $what }：期望 { $expected }，实际为 { $got }（{ $at } s 时）
 lab-error-at = { $error }（{ $at } s 时）
+lab-free-points-starter = 初始文件 { $file } 得到 { $points }/{ $max } 分（{ $criteria }）：程序不完成任务也能通过的评分标准检查不到任务要求的任何内容
+lab-free-points-empty = 空程序得到 { $points }/{ $max } 分（{ $criteria }）：程序不完成任务也能通过的评分标准检查不到任务要求的任何内容
+lab-points-no-criterion = { $file }：[points] "{ $key }" 不是评分程序定义的评分标准（在参考答案上）
+lab-hint-did-you-mean-criterion = 是否想输入 "{ $near }"？评分程序定义了：{ $criteria }
+lab-hint-no-criteria = 评分程序没有定义评分标准（lab.criterion(name, points, fn)）
+lab-hint-criteria = 评分程序定义了：{ $criteria }
 lab-check-passed = { $lab }：参考答案在 { $time } s 仿真时间内得到 { $points }/{ $max } 分
 lab-check-failed = { $lab }：参考答案得到 { $points }/{ $max } 分（{ $verdict }）：需要修改评分程序或参考答案
 
