@@ -107,6 +107,12 @@ impl Outcome {
     }
 }
 
+/// A table's column headings from one catalogue message (`|` between them), so a language
+/// has them side by side (`lab-grade-columns`, `probe-columns`).
+pub fn headings(m: crate::core::msg::Msg) -> Vec<String> {
+    m.text.split('|').map(|h| h.trim().to_string()).collect()
+}
+
 #[derive(Serialize)]
 struct JsonOk<'a> {
     ok: bool,

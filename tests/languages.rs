@@ -450,3 +450,62 @@ fn the_repl_lines_up_chinese_text_in_a_terminal() {
     tmux(&["send-keys", "-t", "t", "-l", "quit"]);
     tmux(&["send-keys", "-t", "t", "Enter"]);
 }
+
+/// The first-connection page's probe (docs/reference/first-connection.md), against a simulated
+/// K204ET-16DT served on Modbus TCP, in each language: the head line, the table's headings and
+/// results, the verdicts and what to do are the language's; the Modbus tables, areas,
+/// addresses and models stay as they are; the table's columns line up by display width.
+#[test]
+fn the_first_connection_probe_in_three_languages() {
+    let served = serve(&["--tcp", "127.0.0.1:0", "--model", "K204ET-16DT"]);
+    let addr = served.ready["tcp"].as_str().expect("tcp address").to_string();
+    let url = format!("tcp://{addr}?model=K204ET-16DT");
+    let wants = [
+        (
+            "en",
+            "probe of ",
+            "read requests, no writes",
+            "table",
+            "answers",
+            "ok: area sizes fit models K205EA-18DT, K204ET-16DT",
+            "  what to do: these models have the same Modbus areas",
+        ),
+        (
+            "ru",
+            "опрос ",
+            "запросов на чтение, без записи",
+            "таблица",
+            "отвечает",
+            "в порядке: размеры областей подходят моделям K205EA-18DT, K204ET-16DT",
+            "  что делать: у этих моделей одинаковые области Modbus",
+        ),
+        (
+            "zh-CN",
+            "探测 ",
+            "次读请求，无写入",
+            "表",
+            "有应答",
+            "正常：存储区大小与 2 个型号相符：K205EA-18DT, K204ET-16DT",
+            "  处理方法：这些型号的 Modbus 存储区相同",
+        ),
+    ];
+    for (lang, head, requests, first_heading, answers, fit, todo) in wants {
+        let (code, out, err) = run(&["--lang", lang, "probe", &url], &[]);
+        assert_eq!(code, Some(0), "{lang}: {out}{err}");
+        let lines: Vec<&str> = out.lines().collect();
+        assert!(lines[0].starts_with(&format!("{head}{url}")) && lines[0].ends_with(requests), "{lang}: {}", lines[0]);
+        assert!(lines[1].starts_with(first_heading), "{lang}: {}", lines[1]);
+        let table: Vec<&str> = lines[1..].iter().copied().take_while(|l| l.contains("  ")).collect();
+        assert_eq!(table.len(), 9, "{lang}:\n{out}");
+        assert!(table[1].starts_with("coils") && table[1].ends_with(answers), "{lang}: {}", table[1]);
+        // The second column (FC) starts at the same terminal column on every line.
+        let second = |l: &str| {
+            let gap = l.find("  ").expect("two columns");
+            columns(&l[..gap]) + l[gap..].chars().take_while(|c| *c == ' ').count()
+        };
+        let at: Vec<usize> = table.iter().map(|l| second(l)).collect();
+        assert!(at.iter().all(|&c| c == at[0]), "{lang}: the columns do not line up:\n{out}");
+        assert!(lines.contains(&fit), "{lang}: no `{fit}` in:\n{out}");
+        assert!(lines.iter().any(|l| l.starts_with(todo)), "{lang}: no `{todo}…` in:\n{out}");
+    }
+}

@@ -179,11 +179,7 @@ fn shown_verdict(v: &str) -> String {
     }
 }
 
-/// A table's column headings from one catalogue message (`|` between them), so a language
-/// has them side by side.
-pub fn headings(m: crate::core::msg::Msg) -> Vec<String> {
-    m.text.split('|').map(|h| h.trim().to_string()).collect()
-}
+pub use crate::output::headings;
 
 /// The lines under the table: why each criterion failed (expected, got, and when), one line
 /// each.

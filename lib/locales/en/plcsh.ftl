@@ -382,6 +382,46 @@ lab-hint-criteria = the grader defines: { $criteria }
 lab-check-passed = { $lab }: the reference solution gets { $points }/{ $max } points in { $time } simulated s
 lab-check-failed = { $lab }: the reference solution gets { $points }/{ $max } points ({ $verdict }): the grader or the reference needs fixing
 
+## Probe (k2::probe, cli::probe): what a K2 answers before the helper is in it
+
+probe-head = probe of { $url }: { $requests } read requests, no writes
+probe-serial-answered = serial settings that answered: { $settings }
+probe-serial-tried = serial settings tried without an answer: { $settings }
+probe-columns = table | FC | area | first | last | units | reads | result
+probe-models = models that fit: { $models }
+probe-models-none = models that fit: none
+probe-verdict = { $ok ->
+        [ok] ok
+       *[failed] FAILED
+    }: { $what }
+probe-what-to-do = what to do: { $todo }
+probe-result-answers = answers
+probe-result-no-end = answers up to the next area: no end found
+probe-result-absent = absent (exception 02 at its first address)
+probe-result-refused = exception { $code } ({ $name }) at { $address }
+probe-result-no-reply = no reply at { $address }
+probe-no-answer = the PLC did not answer a read of { $table } { $address }: { $message }
+probe-refused = { $table } { $address } ({ $area }, FC { $fc }) was refused with exception { $code } ({ $name })
+probe-no-reply = { $table } { $address } ({ $area }, FC { $fc }) got no reply: { $message }
+probe-todo-link-again = { $hint }; then probe again
+probe-no-model = no catalogue model has these area sizes ({ $sizes })
+probe-todo-no-model = connect with the closest model= (plcsh models lists them) and attach this report (--report FILE) when asking: plcsh's catalogue may lack this PLC
+probe-models-fit = area sizes fit { $count ->
+        [one] model
+       *[other] models
+    } { $models }
+probe-todo-same-areas = these models have the same Modbus areas: give the one on the PLC's label as model=
+probe-no-mailbox = V as holding registers does not answer up to register { $register } (VB{ $first } … VB{ $last }, the helper's default mailbox)
+probe-todo-mailbox = SM registers and instructions need the helper's mailbox in V: choose a base the PLC answers (plcsh agent il --base VB…)
+probe-timed-failed = { $failed } of { $reads } timed reads of { $what } got no reply or an exception
+probe-todo-link-slow = { $hint }; a line that loses replies makes every command slow (plcsh retries)
+probe-timed = { $reads } reads of { $what }: p50 { $p50 } ms, p99 { $p99 } ms
+probe-todo-exception-01 = the port does not take this read function code: check that it is the PLC's Modbus port (PORT1/PORT2 set to Modbus RTU slave in KincoBuilder, or Modbus TCP on a K204ET) and not a programming or free-protocol port
+probe-todo-exception-04 = the PLC reports a device failure: check its error LED and diagnostics in KincoBuilder, then probe again
+probe-todo-exception-06 = the PLC is busy: probe again; if it stays busy, something else keeps it busy (another master, a download)
+probe-todo-gateway = a gateway answered for the PLC: check the gateway's route to the PLC (unit id, serial settings, wiring)
+probe-todo-attach = attach this report when asking about it: plcsh probe … --report FILE
+
 ## The shell (shell)
 
 shell-unknown-command = unknown command `{ $name }`

@@ -394,6 +394,54 @@ lab-check-failed = { $lab }: эталонное решение набирает 
        *[other] { $max } баллов
     } ({ $verdict }): исправьте программу оценки или эталонное решение
 
+## Опрос (k2::probe, cli::probe): что K2 отвечает до установки вспомогательной программы
+
+probe-head = опрос { $url }: { $requests ->
+        [one] { $requests } запрос
+        [few] { $requests } запроса
+       *[many] { $requests } запросов
+    } на чтение, без записи
+probe-serial-answered = параметры связи, на которые пришёл ответ: { $settings }
+probe-serial-tried = опробованные параметры связи без ответа: { $settings }
+probe-columns = таблица | FC | область | первый | последний | единиц | чтений | результат
+probe-models = подходящие модели: { $models }
+probe-models-none = подходящие модели: нет
+probe-verdict = { $ok ->
+        [ok] в порядке
+       *[failed] ОШИБКА
+    }: { $what }
+probe-what-to-do = что делать: { $todo }
+probe-result-answers = отвечает
+probe-result-no-end = отвечает до следующей области: конец не найден
+probe-result-absent = отсутствует (исключение 02 на первом адресе)
+probe-result-refused = исключение { $code } ({ $name }) на адресе { $address }
+probe-result-no-reply = нет ответа на адресе { $address }
+probe-no-answer = ПЛК не ответил на чтение { $table } { $address }: { $message }
+probe-refused = { $table } { $address } ({ $area }, FC { $fc }): отказ с исключением { $code } ({ $name })
+probe-no-reply = { $table } { $address } ({ $area }, FC { $fc }): нет ответа: { $message }
+probe-todo-link-again = { $hint }; затем опросите снова
+probe-no-model = ни у одной модели каталога нет таких размеров областей ({ $sizes })
+probe-todo-no-model = подключайтесь с ближайшей model= (их перечисляет plcsh models) и приложите этот отчёт (--report FILE) к вопросу: в каталоге plcsh может не быть этого ПЛК
+probe-models-fit = размеры областей подходят { $count ->
+        [one] модели
+       *[other] моделям
+    } { $models }
+probe-todo-same-areas = у этих моделей одинаковые области Modbus: укажите в model= ту, что на этикетке ПЛК
+probe-no-mailbox = V как регистры хранения не отвечает до регистра { $register } (VB{ $first } … VB{ $last }, почтовый ящик вспомогательной программы по умолчанию)
+probe-todo-mailbox = регистрам SM и инструкциям нужен почтовый ящик вспомогательной программы в V: выберите базовый адрес, на который ПЛК отвечает (plcsh agent il --base VB…)
+probe-timed-failed = { $failed } из { $reads } замеренных чтений { $what } остались без ответа или получили исключение
+probe-todo-link-slow = { $hint }; линия, теряющая ответы, замедляет каждую команду (plcsh повторяет запросы)
+probe-timed = { $reads ->
+        [one] { $reads } чтение
+        [few] { $reads } чтения
+       *[many] { $reads } чтений
+    } { $what }: p50 { $p50 } мс, p99 { $p99 } мс
+probe-todo-exception-01 = порт не принимает этот код функции чтения: проверьте, что это порт Modbus ПЛК (PORT1/PORT2 настроен в KincoBuilder как ведомый Modbus RTU, или Modbus TCP на K204ET), а не порт программирования или свободного протокола
+probe-todo-exception-04 = ПЛК сообщает об отказе устройства: проверьте светодиод ошибки и диагностику в KincoBuilder, затем опросите снова
+probe-todo-exception-06 = ПЛК занят: опросите снова; если он остаётся занятым, его занимает что-то другое (другой ведущий, загрузка программы)
+probe-todo-gateway = за ПЛК ответил шлюз: проверьте маршрут шлюза к ПЛК (адрес ведомого устройства, параметры связи, проводку)
+probe-todo-attach = приложите этот отчёт к вопросу: plcsh probe … --report FILE
+
 ## Оболочка (shell)
 
 shell-unknown-command = неизвестная команда `{ $name }`

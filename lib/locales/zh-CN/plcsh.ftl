@@ -367,6 +367,43 @@ lab-hint-criteria = 评分程序定义了：{ $criteria }
 lab-check-passed = { $lab }：参考答案在 { $time } s 仿真时间内得到 { $points }/{ $max } 分
 lab-check-failed = { $lab }：参考答案得到 { $points }/{ $max } 分（{ $verdict }）：需要修改评分程序或参考答案
 
+## 探测 (k2::probe, cli::probe)：安装辅助程序之前 K2 的应答
+
+probe-head = 探测 { $url }：{ $requests } 次读请求，无写入
+probe-serial-answered = 有回复的串口参数：{ $settings }
+probe-serial-tried = 尝试过但无回复的串口参数：{ $settings }
+probe-columns = 表 | FC | 存储区 | 首地址 | 末地址 | 单元数 | 读次数 | 结果
+probe-models = 相符的型号：{ $models }
+probe-models-none = 相符的型号：无
+probe-verdict = { $ok ->
+        [ok] 正常
+       *[failed] 失败
+    }：{ $what }
+probe-what-to-do = 处理方法：{ $todo }
+probe-result-answers = 有应答
+probe-result-no-end = 一直应答到下一个存储区：未找到末尾
+probe-result-absent = 不存在（首地址返回异常码 02）
+probe-result-refused = 地址 { $address } 返回异常码 { $code }（{ $name }）
+probe-result-no-reply = 地址 { $address } 无回复
+probe-no-answer = PLC 未回复对 { $table } { $address } 的读取：{ $message }
+probe-refused = { $table } { $address }（{ $area }，FC { $fc }）被拒绝，异常码 { $code }（{ $name }）
+probe-no-reply = { $table } { $address }（{ $area }，FC { $fc }）无回复：{ $message }
+probe-todo-link-again = { $hint }；然后再次探测
+probe-no-model = 目录中没有型号具有这些存储区大小（{ $sizes }）
+probe-todo-no-model = 使用最接近的 model=（plcsh models 列出所有型号）连接，并在提问时附上此报告（--report FILE）：plcsh 的目录中可能没有这台 PLC
+probe-models-fit = 存储区大小与 { $count } 个型号相符：{ $models }
+probe-todo-same-areas = 这些型号的 Modbus 存储区相同：请将 PLC 铭牌上的型号作为 model= 给出
+probe-no-mailbox = V 作为保持寄存器未能应答到寄存器 { $register }（VB{ $first } … VB{ $last }，辅助程序的默认邮箱）
+probe-todo-mailbox = SM 寄存器和指令需要辅助程序在 V 区的邮箱：请选择 PLC 有应答的基址（plcsh agent il --base VB…）
+probe-timed-failed = 对 { $what } 的 { $reads } 次计时读取中有 { $failed } 次无回复或返回异常
+probe-todo-link-slow = { $hint }；丢失回复的线路会使每条命令变慢（plcsh 会重试）
+probe-timed = { $what } 读取 { $reads } 次：p50 { $p50 } ms，p99 { $p99 } ms
+probe-todo-exception-01 = 该端口不接受这个读功能码：请确认它是 PLC 的 Modbus 口（在 KincoBuilder 中将 PORT1/PORT2 设为 Modbus RTU 从站，或 K204ET 上的 Modbus TCP），而不是编程口或自由协议口
+probe-todo-exception-04 = PLC 报告设备故障：请检查其错误指示灯和 KincoBuilder 中的诊断信息，然后再次探测
+probe-todo-exception-06 = PLC 忙：请再次探测；如果一直忙，说明有其他事情占用它（另一个主站、程序下载）
+probe-todo-gateway = 网关代替 PLC 作了应答：请检查网关到 PLC 的路由（站号、串口参数、接线）
+probe-todo-attach = 提问时请附上此报告：plcsh probe … --report FILE
+
 ## Shell (shell)
 
 shell-unknown-command = 未知的命令 `{ $name }`
