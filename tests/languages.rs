@@ -427,7 +427,9 @@ fn the_repl_lines_up_chinese_text_in_a_terminal() {
             std::thread::sleep(Duration::from_millis(50));
         }
     };
-    wait_for("the prompt", &|s| s.contains("plc(sim)>"));
+    // The banner in Chinese, the devices wrapped within the terminal.
+    let s = wait_for("the prompt", &|s| s.contains("plc(sim)>"));
+    assert!(s.contains("`help` 列出命令，`quit` 退出。") && s.contains("设备：plc（K205-16DT 仿真）"), "{s}");
     tmux(&["send-keys", "-t", "t", "-l", "help"]);
     tmux(&["send-keys", "-t", "t", "Enter"]);
     let s = wait_for("help in Chinese", &|s| s.contains("本 shell") && s.contains("freq="));
@@ -508,4 +510,28 @@ fn the_first_connection_probe_in_three_languages() {
         assert!(lines.contains(&fit), "{lang}: no `{fit}` in:\n{out}");
         assert!(lines.iter().any(|l| l.starts_with(todo)), "{lang}: no `{todo}…` in:\n{out}");
     }
+}
+
+/// With neither `--lang` nor `PLCSH_LANG`, plcsh speaks the system's language as
+/// `core::platform::ui_language` reads it — the locale variables on Unix, the user's UI
+/// language (GetUserDefaultUILanguage) on Windows — or English when that is none of its three.
+#[test]
+fn without_a_choice_plcsh_speaks_the_systems_ui_language() {
+    use plcsh::core::msg::Lang;
+    let system = plcsh::core::platform::ui_language();
+    let want = system.as_deref().and_then(Lang::from_tag).unwrap_or(Lang::En);
+    // The child gets this process's own locale (own_world sets only PLCSH_LANG, removed here).
+    let mut c = plcsh();
+    c.env_remove("PLCSH_LANG").args(["-c", "set VB2=300"]);
+    let o = c.output().unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    let said = if err.contains("вне диапазона") {
+        Lang::Ru
+    } else if err.contains("超出") {
+        Lang::ZhCn
+    } else {
+        assert!(err.contains("is out of range"), "{err}");
+        Lang::En
+    };
+    assert_eq!(said, want, "the system's language is {system:?}: {err}");
 }

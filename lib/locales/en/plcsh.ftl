@@ -422,6 +422,25 @@ probe-todo-exception-06 = the PLC is busy: probe again; if it stays busy, someth
 probe-todo-gateway = a gateway answered for the PLC: check the gateway's route to the PLC (unit id, serial settings, wiring)
 probe-todo-attach = attach this report when asking about it: plcsh probe … --report FILE
 
+## The REPL (shell::repl): its first lines
+repl-banner = plcsh { $version } — `help` lists commands, `quit` leaves.
+repl-devices = Devices: { $devices }
+repl-device-simulated = { $name } ({ $model } simulated)
+repl-no-line-editor = cannot start the line editor: { $error }
+repl-input-error = input error: { $error }
+
+## Snapshots of the simulated state (shell::commands::snapshot)
+snapshot-list-sandboxed = `sim snapshots` lists the user's data directory: not in a sandboxed run
+snapshot-hint-sandboxed = a sandboxed run keeps snapshots as files under its write directory
+snapshot-none = no saved snapshots (sim snapshot save NAME)
+snapshot-columns = snapshot | file
+snapshot-one-name = `sim snapshot { $verb }` takes one name or file, not { $count } words
+snapshot-hint-quotes = a path with spaces goes in quotes: sim snapshot { $verb } { $path }
+snapshot-needs-verb = `sim snapshot` needs save or restore and a name: { $usage }
+snapshot-saved = saved { $devices } at { $time } to { $file }
+snapshot-restored = restored { $devices } to { $time }
+snapshot-unknown = unknown `sim snapshot { $verb }`
+
 ## The shell (shell)
 
 shell-unknown-command = unknown command `{ $name }`

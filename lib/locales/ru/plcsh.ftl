@@ -442,6 +442,29 @@ probe-todo-exception-06 = ПЛК занят: опросите снова; есл
 probe-todo-gateway = за ПЛК ответил шлюз: проверьте маршрут шлюза к ПЛК (адрес ведомого устройства, параметры связи, проводку)
 probe-todo-attach = приложите этот отчёт к вопросу: plcsh probe … --report FILE
 
+## REPL (shell::repl): первые строки
+repl-banner = plcsh { $version } — `help` перечисляет команды, `quit` — выход.
+repl-devices = Устройства: { $devices }
+repl-device-simulated = { $name } ({ $model }, симулятор)
+repl-no-line-editor = не удаётся запустить редактор строки: { $error }
+repl-input-error = ошибка ввода: { $error }
+
+## Снимки состояния симулятора (shell::commands::snapshot)
+snapshot-list-sandboxed = `sim snapshots` показывает каталог данных пользователя: не в запуске в песочнице
+snapshot-hint-sandboxed = запуск в песочнице хранит снимки файлами в своём каталоге для записи
+snapshot-none = сохранённых снимков нет (sim snapshot save NAME)
+snapshot-columns = снимок | файл
+snapshot-one-name = `sim snapshot { $verb }` принимает одно имя или файл, а не { $count ->
+        [one] { $count } слово
+        [few] { $count } слова
+       *[many] { $count } слов
+    }
+snapshot-hint-quotes = путь с пробелами пишется в кавычках: sim snapshot { $verb } { $path }
+snapshot-needs-verb = `sim snapshot` нужны save или restore и имя: { $usage }
+snapshot-saved = { $devices } в момент { $time } сохранены в { $file }
+snapshot-restored = { $devices } восстановлены на момент { $time }
+snapshot-unknown = неизвестная команда `sim snapshot { $verb }`
+
 ## Оболочка (shell)
 
 shell-unknown-command = неизвестная команда `{ $name }`

@@ -404,6 +404,25 @@ probe-todo-exception-06 = PLC 忙：请再次探测；如果一直忙，说明�
 probe-todo-gateway = 网关代替 PLC 作了应答：请检查网关到 PLC 的路由（站号、串口参数、接线）
 probe-todo-attach = 提问时请附上此报告：plcsh probe … --report FILE
 
+## REPL (shell::repl)：开头几行
+repl-banner = plcsh { $version } — `help` 列出命令，`quit` 退出。
+repl-devices = 设备：{ $devices }
+repl-device-simulated = { $name }（{ $model } 仿真）
+repl-no-line-editor = 无法启动行编辑器：{ $error }
+repl-input-error = 输入错误：{ $error }
+
+## 仿真状态的快照 (shell::commands::snapshot)
+snapshot-list-sandboxed = `sim snapshots` 列出用户数据目录：在沙箱运行中不可用
+snapshot-hint-sandboxed = 沙箱运行将快照作为文件保存在其写入目录下
+snapshot-none = 没有保存的快照（sim snapshot save NAME）
+snapshot-columns = 快照 | 文件
+snapshot-one-name = `sim snapshot { $verb }` 只接受一个名称或文件，而不是 { $count } 个词
+snapshot-hint-quotes = 含空格的路径请加引号：sim snapshot { $verb } { $path }
+snapshot-needs-verb = `sim snapshot` 需要 save 或 restore 以及一个名称：{ $usage }
+snapshot-saved = 已将 { $devices } 在 { $time } 时的状态保存到 { $file }
+snapshot-restored = 已将 { $devices } 恢复到 { $time } 时的状态
+snapshot-unknown = 未知的 `sim snapshot { $verb }`
+
 ## Shell (shell)
 
 shell-unknown-command = 未知的命令 `{ $name }`
