@@ -55,6 +55,32 @@ const SUBCOMMANDS: &[(&str, Text)] = &[
     ("publish", || msg!("cli-sub-publish")),
 ];
 
+/// Texts of the subcommands' own subcommands and options: (subcommand, its subcommand, the
+/// option's clap id or none for what the subcommand does, the text).
+const NESTED: &[(&str, &str, Option<&str>, Text)] = &[
+    ("lab", "new", None, || msg!("cli-lab-new")),
+    ("lab", "new", Some("name"), || msg!("cli-lab-new-name")),
+    ("lab", "check", None, || msg!("cli-lab-check")),
+    ("lab", "check", Some("lab"), || msg!("cli-lab-arg-lab")),
+    ("lab", "grade", None, || msg!("cli-lab-grade")),
+    ("lab", "grade", Some("lab"), || msg!("cli-lab-arg-lab")),
+    ("lab", "grade", Some("submissions"), || msg!("cli-lab-grade-submissions")),
+    ("lab", "grade", Some("jobs"), || msg!("cli-lab-grade-jobs")),
+    ("lab", "grade", Some("junit"), || msg!("cli-lab-grade-junit")),
+    ("lab", "grade", Some("show_output"), || msg!("cli-lab-grade-show-output")),
+];
+
+/// An option's help (and its long help, when clap made one from a longer doc comment).
+fn arg_text(a: Arg, text: String) -> Arg {
+    let long = a.get_long_help().is_some();
+    let a = a.help(text.clone());
+    if long {
+        a.long_help(text)
+    } else {
+        a
+    }
+}
+
 /// `cmd` (the whole command line's definition) in the current language: unchanged in English.
 pub fn command(cmd: Command) -> Command {
     if language() == Lang::En {
@@ -67,10 +93,18 @@ pub fn command(cmd: Command) -> Command {
 fn apply(mut cmd: Command) -> Command {
     cmd = cmd.about(msg!("cli-about").text);
     for (id, text) in OPTIONS {
-        cmd = cmd.mut_arg(id, |a| a.help(text().text));
+        cmd = cmd.mut_arg(id, |a| arg_text(a, text().text));
     }
     for (name, text) in SUBCOMMANDS {
         cmd = cmd.mut_subcommand(name, |s| s.about(text().text));
+    }
+    for (sub, inner, arg, text) in NESTED {
+        cmd = cmd.mut_subcommand(sub, |s| {
+            s.mut_subcommand(inner, |t| match arg {
+                None => t.about(text().text),
+                Some(a) => t.mut_arg(a, |x| arg_text(x, text().text)),
+            })
+        });
     }
     frame(cmd, true)
 }
@@ -131,6 +165,14 @@ mod tests {
         for (name, text) in SUBCOMMANDS {
             let sub = cmd.find_subcommand(name).unwrap_or_else(|| panic!("no subcommand {name}"));
             assert_eq!(sub.get_about().map(|s| s.to_string()), Some(text().text), "{name}");
+        }
+        for (sub, inner, arg, text) in NESTED {
+            let c = cmd.find_subcommand(sub).and_then(|s| s.find_subcommand(inner)).expect("a nested subcommand");
+            let shown = match arg {
+                None => c.get_about(),
+                Some(a) => c.get_arguments().find(|x| x.get_id() == a).and_then(|x| x.get_help()),
+            };
+            assert_eq!(shown.map(|s| s.to_string()), Some(text().text), "{sub} {inner} {arg:?}");
         }
         // Every subcommand and every top-level option with a help text has its text here.
         for sub in cmd.get_subcommands() {
