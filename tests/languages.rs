@@ -228,6 +228,7 @@ fn help_and_the_command_lines_help_in_three_languages() {
             assert!(!lab.contains("Write a working example lab"), "{lang}: an English subcommand text:\n{lab}");
             let (_, grade, _) = run(&["--lang", lang, "lab", "grade", "--help"], &[]);
             assert!(grade.contains("--jobs") && !grade.contains("Worker processes"), "{lang}:\n{grade}");
+            assert!(!grade.contains("Arguments:") && grade.contains("<SUBMISSIONS>"), "{lang}:\n{grade}");
         }
     }
     // The man page follows the language too (its roff writes non-ASCII as \[uXXXX]).

@@ -114,10 +114,15 @@ fn apply(mut cmd: Command) -> Command {
 fn frame(mut cmd: Command, top: bool) -> Command {
     // clap takes headings as `&'static str` (without its `string` feature): made once, for the
     // one help screen or error this process prints.
-    static HEADINGS: std::sync::OnceLock<[&'static str; 3]> = std::sync::OnceLock::new();
-    let [global, options, commands] = *HEADINGS.get_or_init(|| {
+    static HEADINGS: std::sync::OnceLock<[&'static str; 4]> = std::sync::OnceLock::new();
+    let [global, options, commands, arguments] = *HEADINGS.get_or_init(|| {
         let leak = |m: Msg| -> &'static str { Box::leak(m.text.into_boxed_str()) };
-        [leak(msg!("cli-heading-global")), leak(msg!("cli-heading-options")), leak(msg!("cli-heading-commands"))]
+        [
+            leak(msg!("cli-heading-global")),
+            leak(msg!("cli-heading-options")),
+            leak(msg!("cli-heading-commands")),
+            leak(msg!("cli-heading-arguments")),
+        ]
     });
     let template = format!(
         "{{before-help}}{{about-with-newline}}\n{} {{usage}}\n\n{{all-args}}{{after-help}}",
@@ -139,7 +144,8 @@ fn frame(mut cmd: Command, top: bool) -> Command {
         .arg(Arg::new("help").short('h').long("help").action(ArgAction::Help).help(msg!("cli-help-flag").text))
         .mut_args(|a| match a.get_help_heading() {
             Some(super::GLOBAL) => a.help_heading(global),
-            None if !a.is_positional() => a.help_heading(options),
+            None if a.is_positional() => a.help_heading(arguments),
+            None => a.help_heading(options),
             _ => a,
         });
     cmd.mut_subcommands(|s| frame(s, false))

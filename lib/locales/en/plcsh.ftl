@@ -294,6 +294,7 @@ cli-lab-grade-junit = Also write the results as JUnit XML to FILE
 cli-lab-grade-show-output = Show what each submission printed (stdout and stderr, the first 64 KiB of each); `--json` always carries them as `stdout` and `stderr`
 cli-heading-usage = Usage:
 cli-heading-commands = Commands
+cli-heading-arguments = Arguments
 cli-heading-options = Options
 cli-heading-global = Global options
 cli-help-flag = Print help

@@ -292,6 +292,7 @@ cli-lab-grade-junit = Записать результаты ещё и в FILE в
 cli-lab-grade-show-output = Показать, что вывела каждая работа (stdout и stderr, первые 64 КиБ каждого); `--json` всегда передаёт их как `stdout` и `stderr`
 cli-heading-usage = Использование:
 cli-heading-commands = Команды
+cli-heading-arguments = Аргументы
 cli-heading-options = Параметры
 cli-heading-global = Общие параметры
 cli-help-flag = Показать справку

@@ -284,6 +284,7 @@ cli-lab-grade-junit = 同时将结果以 JUnit XML 写入 FILE
 cli-lab-grade-show-output = 显示每份作业输出的内容（stdout 和 stderr，各自前 64 KiB）；`--json` 总是以 `stdout` 和 `stderr` 给出
 cli-heading-usage = 用法:
 cli-heading-commands = 命令
+cli-heading-arguments = 参数
 cli-heading-options = 选项
 cli-heading-global = 全局选项
 cli-help-flag = 显示帮助
