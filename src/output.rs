@@ -97,14 +97,20 @@ impl Outcome {
         self.data.insert(key.to_string(), serde_json::to_value(v).unwrap_or(serde_json::Value::Null));
         self
     }
-    pub fn table(mut self, headers: &[&str], rows: Vec<Vec<String>>) -> Outcome {
-        self.view = View::Table { headers: headers.iter().map(|s| s.to_string()).collect(), rows };
+    pub fn table<S: AsRef<str>>(mut self, headers: &[S], rows: Vec<Vec<String>>) -> Outcome {
+        self.view = View::Table { headers: headers.iter().map(|s| s.as_ref().to_string()).collect(), rows };
         self
     }
     /// The same data as `--json` prints, as a JSON value (for Lua and tests).
     pub fn to_json(&self) -> serde_json::Value {
         serde_json::to_value(JsonOk { ok: true, outcome: self }).unwrap_or_default()
     }
+}
+
+/// A table's column headings from one catalogue message (`|` between them), so a language
+/// has them side by side (`lab-grade-columns`, `probe-columns`).
+pub fn headings(m: crate::core::msg::Msg) -> Vec<String> {
+    m.text.split('|').map(|h| h.trim().to_string()).collect()
 }
 
 #[derive(Serialize)]

@@ -235,7 +235,7 @@ fn help_and_models_fit_80_columns() {
     for l in &cut {
         let kept = l.trim_end().trim_end_matches('…');
         let name = kept.split_whitespace().next().unwrap();
-        let summary = plcsh::shell::commands::find(name).expect("a command").summary;
+        let summary = plcsh::shell::commands::find(name).expect("a command").summary();
         let shown = kept[name.len()..].trim_start();
         assert!(
             summary.starts_with(shown) && summary[shown.len()..].starts_with([' ', ',', ';', ':']),

@@ -73,7 +73,7 @@ pub fn run(cmd: &LabCmd, style: Style, out: &mut dyn Write) -> i32 {
                     let mut v = o.to_json();
                     v["ok"] = ok.into();
                     if !ok {
-                        v["error"] = serde_json::json!({"kind": "state", "message": head});
+                        v["error"] = serde_json::json!({"kind": "state", "code": "lab-check-failed", "message": head});
                     }
                     let _ = writeln!(out, "{v}");
                 } else {
@@ -82,7 +82,7 @@ pub fn run(cmd: &LabCmd, style: Style, out: &mut dyn Write) -> i32 {
                     // Criteria a program passes without doing the task, named for the teacher.
                     let warnings = o.data.get("warnings").and_then(|w| w.as_array()).cloned().unwrap_or_default();
                     for w in warnings.iter().filter_map(|w| w.as_str()) {
-                        let _ = writeln!(out, "warning: {w}");
+                        let _ = writeln!(out, "{}", crate::msg!("label-warning", warning = w));
                     }
                 }
                 i32::from(!ok)

@@ -50,7 +50,7 @@ fn portable(page: &str) -> String {
 
 /// The manual page, as `man` reads it.
 pub fn page() -> Vec<u8> {
-    let cmd = super::Cli::command();
+    let cmd = super::localise::command(super::Cli::command());
     let version = concat!("plcsh ", env!("CARGO_PKG_VERSION"));
     let man = clap_mangen::Man::new(cmd).title("PLCSH").date(date()).source(version).manual("plcsh manual");
     let mut buf = Vec::new();
@@ -69,11 +69,8 @@ pub fn page() -> Vec<u8> {
 /// The SHELL COMMANDS section: every command of the interactive shell and of `-c`, with its
 /// forms and what it does, from the command registry.
 fn shell_commands() -> String {
-    let mut s = String::from(".SH \"SHELL COMMANDS\"\n");
-    s.push_str(&roff_text(
-        "Typed at the plcsh> prompt, given to -c (several separated by ;) or run from Lua with plcsh.exec. \
-         help lists them by group, help COMMAND shows a command's forms.",
-    ));
+    let mut s = format!(".SH \"{}\"\n", crate::msg!("man-shell-commands"));
+    s.push_str(&roff_text(&crate::msg!("man-shell-commands-intro")));
     s.push('\n');
     for c in crate::shell::commands::COMMANDS {
         s.push_str(".TP\n");
@@ -86,7 +83,7 @@ fn shell_commands() -> String {
                 s.push_str(".br\n");
             }
         }
-        s.push_str(&roff_text(c.summary));
+        s.push_str(&roff_text(&c.summary()));
         s.push('\n');
     }
     s
@@ -108,7 +105,7 @@ mod tests {
         let at = page.find("\\fBpto status N\\fR\n").expect("pto's last form on the page");
         let after = &page[at..].lines().nth(1).unwrap_or("");
         assert_eq!(*after, ".br", "a break after the last form");
-        assert!(page[at..].lines().nth(2).unwrap_or("").starts_with(&super::roff_text(pto.summary)[..20]));
+        assert!(page[at..].lines().nth(2).unwrap_or("").starts_with(&super::roff_text(&pto.summary())[..20]));
     }
 
     /// The page is plain ASCII roff (every other character as `\[uXXXX]`) with a date in the

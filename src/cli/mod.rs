@@ -7,6 +7,7 @@ mod agent;
 pub mod completions;
 mod fleet;
 mod lab;
+mod localise;
 mod man;
 mod probe;
 mod publish;
@@ -325,6 +326,17 @@ fn parse_lang(text: &str) -> Result<crate::core::msg::Lang, String> {
     crate::core::msg::Lang::from_tag(text).ok_or_else(|| crate::msg!("lang-unknown", lang = text).into())
 }
 
+/// The language `--lang X` (or `--lang=X`) names on a command line clap refused or answered
+/// with help, for that answer.
+fn lang_in(argv: &[std::ffi::OsString]) -> Option<crate::core::msg::Lang> {
+    let words: Vec<&str> = argv.iter().filter_map(|a| a.to_str()).collect();
+    words.iter().enumerate().rev().find_map(|(i, w)| match w.strip_prefix("--lang") {
+        Some(v) if v.starts_with('=') => crate::core::msg::Lang::from_tag(&v[1..]),
+        Some("") => words.get(i + 1).and_then(|v| crate::core::msg::Lang::from_tag(v)),
+        _ => None,
+    })
+}
+
 /// What a word of the command line is, before clap sees it.
 #[derive(Clone, Copy, PartialEq, Eq, Debug)]
 enum Word {
@@ -453,6 +465,23 @@ fn run_cli() -> i32 {
                 eprintln!("{msg}");
                 return exit::USAGE;
             }
+            // Help in the language of messages: the parser again, with the catalogue's texts
+            // (only here, so a line that parses costs nothing). clap's own error sentences
+            // have no translations: an error stays as clap writes it.
+            use clap::error::ErrorKind;
+            let e = if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand)
+            {
+                if let Some(lang) = lang_in(&argv) {
+                    crate::core::msg::set_choice(lang);
+                }
+                localise::command(<Cli as clap::CommandFactory>::command())
+                    .try_get_matches_from(argv.iter())
+                    .err()
+                    .filter(|l| l.kind() == e.kind())
+                    .unwrap_or(e)
+            } else {
+                e
+            };
             let _ = e.print();
             return if e.use_stderr() { exit::USAGE } else { exit::OK };
         }

@@ -167,31 +167,48 @@ pub fn probe(args: &ProbeArgs, shell: &Shell, style: Style, out: &mut dyn Write)
     i32::from(!result.ok())
 }
 
+/// Terminal columns of a cell (a Chinese character takes two).
+fn columns(cell: Option<&String>) -> usize {
+    cell.map_or(0, |c| unicode_width::UnicodeWidthStr::width(c.as_str()))
+}
+
 fn text(p: &probe::Probe, url: &str, serial: Option<&str>, tried: &[String]) -> String {
-    let mut rows = vec![probe::HEADERS.iter().map(|s| s.to_string()).collect::<Vec<_>>()];
+    let mut rows = vec![crate::output::headings(crate::msg!("probe-columns"))];
     rows.extend(probe::rows(p));
     let widths: Vec<usize> =
-        (0..probe::HEADERS.len()).map(|c| rows.iter().map(|r| r[c].chars().count()).max().unwrap_or(0)).collect();
-    let mut s = format!("probe of {url}: {} read requests, no writes\n", p.requests);
+        (0..probe::HEADERS.len()).map(|c| rows.iter().map(|r| columns(r.get(c))).max().unwrap_or(0)).collect();
+    let mut s = crate::msg!("probe-head", url = url, requests = p.requests).text + "\n";
     if let Some(line) = serial {
-        s.push_str(&format!("serial settings that answered: {line}\n"));
+        s.push_str(&crate::msg!("probe-serial-answered", settings = line));
+        s.push('\n');
     }
     if !tried.is_empty() && serial.is_none() {
-        s.push_str(&format!("serial settings tried without an answer: {}\n", tried.join("; ")));
+        s.push_str(&crate::msg!("probe-serial-tried", settings = tried.join("; ")));
+        s.push('\n');
     }
     for r in &rows {
-        let cells: Vec<String> = r.iter().zip(&widths).map(|(c, w)| format!("{c:<w$}")).collect();
+        // Padded to display columns: a Chinese heading takes two a character.
+        let cells: Vec<String> = r
+            .iter()
+            .zip(&widths)
+            .map(|(c, w)| format!("{c}{}", " ".repeat(w.saturating_sub(columns(Some(c))))))
+            .collect();
         s.push_str(cells.join("  ").trim_end());
         s.push('\n');
     }
-    s.push_str(&format!(
-        "models that fit: {}\n",
-        if p.models.is_empty() { "none".into() } else { p.models.join(", ") }
-    ));
+    s.push_str(&if p.models.is_empty() {
+        crate::msg!("probe-models-none")
+    } else {
+        crate::msg!("probe-models", models = p.models.join(", "))
+    });
+    s.push('\n');
     for v in &p.verdicts {
-        s.push_str(&format!("{} {}\n", if v.ok { "ok:" } else { "FAILED:" }, v.what));
+        s.push_str(&crate::msg!("probe-verdict", ok = if v.ok { "ok" } else { "failed" }, what = v.what.as_str()));
+        s.push('\n');
         if let Some(t) = &v.todo {
-            s.push_str(&format!("  what to do: {t}\n"));
+            s.push_str("  ");
+            s.push_str(&crate::msg!("probe-what-to-do", todo = t.as_str()));
+            s.push('\n');
         }
     }
     s.trim_end().to_string()

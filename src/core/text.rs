@@ -17,23 +17,69 @@ pub fn edit_distance(a: &str, b: &str) -> usize {
     prev[b.len()]
 }
 
-/// Breaks `text` into lines of at most `width` characters at spaces (a word longer than the
-/// width gets a line of its own). Used to keep help and hints inside an 80-column terminal.
+/// Breaks `text` into lines of at most `width` terminal columns at spaces (a word longer than
+/// the width gets a line of its own). Chinese text, written without spaces, may also break
+/// between two of its characters (each two columns wide), never before a closing punctuation
+/// mark (`，`, `。`, `）` …). Used to keep help and hints inside an 80-column terminal.
 pub fn wrap(text: &str, width: usize) -> Vec<String> {
+    use unicode_width::UnicodeWidthStr;
     let mut lines = vec![String::new()];
-    for word in text.split_whitespace() {
-        let cur = lines.last_mut().expect("one line");
-        let len = cur.chars().count();
-        if len > 0 && len + 1 + word.chars().count() > width {
-            lines.push(word.to_string());
-        } else {
-            if len > 0 {
-                cur.push(' ');
+    for word in code_spans(text) {
+        for (i, piece) in pieces(&word).into_iter().enumerate() {
+            let cur = lines.last_mut().expect("one line");
+            let len = cur.width();
+            let gap = usize::from(i == 0 && len > 0);
+            if len > 0 && len + gap + piece.width() > width {
+                lines.push(piece.to_string());
+            } else {
+                if gap == 1 {
+                    cur.push(' ');
+                }
+                cur.push_str(piece);
             }
-            cur.push_str(word);
         }
     }
     lines
+}
+
+/// The words of `text`, with a `code span` of several words kept as one (never broken).
+fn code_spans(text: &str) -> Vec<String> {
+    let mut out: Vec<String> = Vec::new();
+    let mut open = false;
+    for word in text.split_whitespace() {
+        match out.last_mut() {
+            Some(last) if open => {
+                last.push(' ');
+                last.push_str(word);
+            }
+            _ => out.push(word.to_string()),
+        }
+        if word.matches('`').count() % 2 == 1 {
+            open = !open;
+        }
+    }
+    out
+}
+
+/// The pieces a line may break between inside one word: each wide (Chinese) character with the
+/// closing punctuation after it, and each run of other characters.
+fn pieces(word: &str) -> Vec<&str> {
+    use unicode_width::UnicodeWidthChar;
+    const CLOSING: &[char] = &['，', '。', '、', '；', '：', '）', '」', '』', '！', '？', ')', ',', '.', ';', ':'];
+    let mut out = Vec::new();
+    let mut start = 0;
+    let mut prev_wide = false;
+    for (at, c) in word.char_indices() {
+        let wide = c.width() == Some(2) && !CLOSING.contains(&c);
+        // A break before a wide character, and after one unless punctuation closes it.
+        if at > start && (wide || prev_wide && !CLOSING.contains(&c)) {
+            out.push(&word[start..at]);
+            start = at;
+        }
+        prev_wide = wide || (prev_wide && CLOSING.contains(&c));
+    }
+    out.push(&word[start..]);
+    out
 }
 
 /// Cyrillic letters that look like the Latin ones operands and literals use. Text copied from
@@ -234,5 +280,24 @@ mod tests {
         assert_eq!(edit_distance("VX", "VW"), 1);
         assert_eq!(edit_distance("", "SM"), 2);
         assert_eq!(edit_distance("controlwrod", "controlword"), 2);
+    }
+
+    #[test]
+    fn wrap_counts_columns_and_breaks_chinese_between_characters() {
+        assert_eq!(wrap("read a range as a table", 12), vec!["read a range", "as a table"]);
+        // Two columns a character: 10 columns hold five; the comma stays with its character.
+        let lines = wrap("读取操作数，可用范围和前缀", 10);
+        assert_eq!(lines, vec!["读取操作", "数，可用范", "围和前缀"]);
+        for l in wrap("Kinco 伺服工具：DS402 状态机、运动、点动、回原点、等待、单位、原始报文", 20)
+        {
+            assert!(unicode_width::UnicodeWidthStr::width(l.as_str()) <= 20, "{l}");
+            assert!(!l.starts_with(['，', '、', '：']), "{l}");
+        }
+        assert_eq!(wrap("运动、点动", 6), vec!["运动、", "点动"], "a break between characters adds no space");
+        assert_eq!(wrap("运动 点动", 20), vec!["运动 点动"], "a space written stays");
+        assert_eq!(
+            wrap("Tab completes (`pto 0 fr` ⇥ `freq=`).", 20),
+            vec!["Tab completes", "(`pto 0 fr` ⇥", "`freq=`)."]
+        );
     }
 }

@@ -231,11 +231,11 @@ fn timing_target(areas: &[AreaFound]) -> Option<(Table, u16, String)> {
 /// What to do about exception `code` on a read.
 fn exception_todo(code: u8) -> String {
     match code {
-        1 => "the port does not take this read function code: check that it is the PLC's Modbus port (PORT1/PORT2 set to Modbus RTU slave in KincoBuilder, or Modbus TCP on a K204ET) and not a programming or free-protocol port".into(),
-        4 => "the PLC reports a device failure: check its error LED and diagnostics in KincoBuilder, then probe again".into(),
-        6 => "the PLC is busy: probe again; if it stays busy, something else keeps it busy (another master, a download)".into(),
-        0x0A | 0x0B => "a gateway answered for the PLC: check the gateway's route to the PLC (unit id, serial settings, wiring)".into(),
-        _ => "attach this report when asking about it: plcsh probe … --report FILE".into(),
+        1 => crate::msg!("probe-todo-exception-01").text,
+        4 => crate::msg!("probe-todo-exception-04").text,
+        6 => crate::msg!("probe-todo-exception-06").text,
+        0x0A | 0x0B => crate::msg!("probe-todo-gateway").text,
+        _ => crate::msg!("probe-todo-attach").text,
     }
 }
 
@@ -260,7 +260,13 @@ pub fn run(reader: &mut dyn Reader, reads: u32, link_hint: &str) -> Probe {
         };
         probe.verdicts.push(Verdict {
             ok: false,
-            what: format!("the PLC did not answer a read of {} {}: {msg}", probe.areas[0].table, probe.areas[0].first),
+            what: crate::msg!(
+                "probe-no-answer",
+                table = probe.areas[0].table.to_string(),
+                address = probe.areas[0].first,
+                message = msg
+            )
+            .text,
             todo: Some(link_hint.to_string()),
         });
         return probe;
@@ -269,16 +275,30 @@ pub fn run(reader: &mut dyn Reader, reads: u32, link_hint: &str) -> Probe {
         match &a.extent {
             Extent::Refused { code, name, at, .. } => probe.verdicts.push(Verdict {
                 ok: false,
-                what: format!(
-                    "{} {at} ({}, FC {:02}) was refused with exception {code:02} ({name})",
-                    a.table, a.area, a.fc
-                ),
+                what: crate::msg!(
+                    "probe-refused",
+                    table = a.table.to_string(),
+                    address = *at,
+                    area = a.area.to_string(),
+                    fc = format!("{:02}", a.fc),
+                    code = format!("{code:02}"),
+                    name = name.to_string()
+                )
+                .text,
                 todo: Some(exception_todo(*code)),
             }),
             Extent::NoReply { at, message, .. } => probe.verdicts.push(Verdict {
                 ok: false,
-                what: format!("{} {at} ({}, FC {:02}) got no reply: {message}", a.table, a.area, a.fc),
-                todo: Some(format!("{link_hint}; then probe again")),
+                what: crate::msg!(
+                    "probe-no-reply",
+                    table = a.table.to_string(),
+                    address = *at,
+                    area = a.area.to_string(),
+                    fc = format!("{:02}", a.fc),
+                    message = message.as_str()
+                )
+                .text,
+                todo: Some(crate::msg!("probe-todo-link-again", hint = link_hint).text),
             }),
             _ => {}
         }
@@ -289,19 +309,14 @@ pub fn run(reader: &mut dyn Reader, reads: u32, link_hint: &str) -> Probe {
         let found: Vec<String> = probe.areas.iter().map(shown).collect();
         probe.verdicts.push(Verdict {
             ok: false,
-            what: format!("no catalogue model has these area sizes ({})", found.join(", ")),
-            todo: Some("connect with the closest model= (plcsh models lists them) and attach this report (--report FILE) when asking: plcsh's catalogue may lack this PLC".into()),
+            what: crate::msg!("probe-no-model", sizes = found.join(", ")).text,
+            todo: Some(crate::msg!("probe-todo-no-model").text),
         });
     } else {
         probe.verdicts.push(Verdict {
             ok: true,
-            what: format!(
-                "area sizes fit {} {}",
-                if probe.models.len() == 1 { "model" } else { "models" },
-                probe.models.join(", ")
-            ),
-            todo: (probe.models.len() > 1)
-                .then(|| "these models have the same Modbus areas: give the one on the PLC's label as model=".into()),
+            what: crate::msg!("probe-models-fit", count = probe.models.len(), models = probe.models.join(", ")).text,
+            todo: (probe.models.len() > 1).then(|| crate::msg!("probe-todo-same-areas").text),
         });
     }
     let v_holding = REGIONS.iter().position(|r| r.table == Table::HoldingRegisters && r.area == Area::V);
@@ -314,12 +329,14 @@ pub fn run(reader: &mut dyn Reader, reads: u32, link_hint: &str) -> Probe {
         if end.is_none_or(|l| (l as u32) < helper_last) {
             probe.verdicts.push(Verdict {
                 ok: false,
-                what: format!(
-                    "V as holding registers does not answer up to register {helper_last} (VB{} … VB{}, the helper's default mailbox)",
-                    super::agent::protocol::DEFAULT_BASE,
-                    super::agent::protocol::DEFAULT_BASE + super::agent::protocol::TOTAL_SIZE - 1
-                ),
-                todo: Some("SM registers and instructions need the helper's mailbox in V: choose a base the PLC answers (plcsh agent il --base VB…)".into()),
+                what: crate::msg!(
+                    "probe-no-mailbox",
+                    register = helper_last,
+                    first = super::agent::protocol::DEFAULT_BASE,
+                    last = super::agent::protocol::DEFAULT_BASE + super::agent::protocol::TOTAL_SIZE - 1
+                )
+                .text,
+                todo: Some(crate::msg!("probe-todo-mailbox").text),
             });
         }
     }
@@ -329,19 +346,21 @@ pub fn run(reader: &mut dyn Reader, reads: u32, link_hint: &str) -> Probe {
         if t.failed > 0 {
             probe.verdicts.push(Verdict {
                 ok: false,
-                what: format!("{} of {} timed reads of {} got no reply or an exception", t.failed, t.reads, t.what),
-                todo: Some(format!("{link_hint}; a line that loses replies makes every command slow (plcsh retries)")),
+                what: crate::msg!("probe-timed-failed", failed = t.failed, reads = t.reads, what = t.what.as_str())
+                    .text,
+                todo: Some(crate::msg!("probe-todo-link-slow", hint = link_hint).text),
             });
         } else {
             probe.verdicts.push(Verdict {
                 ok: true,
-                what: format!(
-                    "{} reads of {}: p50 {:.2} ms, p99 {:.2} ms",
-                    t.reads,
-                    t.what,
-                    t.p50_ms.unwrap_or(0.0),
-                    t.p99_ms.unwrap_or(0.0)
-                ),
+                what: crate::msg!(
+                    "probe-timed",
+                    reads = t.reads,
+                    what = t.what.as_str(),
+                    p50 = format!("{:.2}", t.p50_ms.unwrap_or(0.0)),
+                    p99 = format!("{:.2}", t.p99_ms.unwrap_or(0.0))
+                )
+                .text,
                 todo: None,
             });
         }
@@ -356,15 +375,23 @@ pub fn rows(p: &Probe) -> Vec<Vec<String>> {
         .iter()
         .map(|a| {
             let (last, note) = match &a.extent {
-                Extent::Answers { last } => (last.to_string(), "answers".to_string()),
-                Extent::NoEnd { last } => (last.to_string(), "answers up to the next area: no end found".to_string()),
-                Extent::Absent => ("-".into(), "absent (exception 02 at its first address)".into()),
-                Extent::Refused { code, name, at, last } => {
-                    (last.map_or("-".into(), |l| l.to_string()), format!("exception {code:02} ({name}) at {at}"))
-                }
-                Extent::NoReply { at, last, .. } => {
-                    (last.map_or("-".into(), |l| l.to_string()), format!("no reply at {at}"))
-                }
+                Extent::Answers { last } => (last.to_string(), crate::msg!("probe-result-answers").text),
+                Extent::NoEnd { last } => (last.to_string(), crate::msg!("probe-result-no-end").text),
+                Extent::Absent => ("-".into(), crate::msg!("probe-result-absent").text),
+                Extent::Refused { code, name, at, last } => (
+                    last.map_or("-".into(), |l| l.to_string()),
+                    crate::msg!(
+                        "probe-result-refused",
+                        code = format!("{code:02}"),
+                        name = name.to_string(),
+                        address = *at
+                    )
+                    .text,
+                ),
+                Extent::NoReply { at, last, .. } => (
+                    last.map_or("-".into(), |l| l.to_string()),
+                    crate::msg!("probe-result-no-reply", address = *at).text,
+                ),
             };
             vec![
                 a.table.to_string(),

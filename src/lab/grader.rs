@@ -43,20 +43,29 @@ pub struct Criterion {
 }
 
 impl Criterion {
-    /// `expected 1, got 0 at 2.5 s`.
+    /// `expected 1, got 0 at 2.5 s`, in the language of messages (the lab's `language`).
     pub fn why(&self) -> String {
+        use crate::msg;
         if self.skipped {
-            return "not reached".into();
+            return msg!("lab-not-reached").text;
         }
-        let at = self.at_s.map(|t| format!(" at {} s", trim(t))).unwrap_or_default();
-        match (&self.error, &self.expected, &self.got) {
-            (Some(e), _, _) => format!("{e}{at}"),
-            (None, Some(x), Some(g)) => {
-                let what = self.what.as_ref().map(|w| format!("{w}: ")).unwrap_or_default();
-                format!("{what}expected {}, got {}{at}", shown(x), shown(g))
+        let at = self.at_s.map(trim);
+        let text = match (&self.error, &self.expected, &self.got, &self.what, at) {
+            (Some(e), _, _, _, Some(at)) => msg!("lab-error-at", error = e, at = at),
+            (Some(e), _, _, _, None) => return e.clone(),
+            (None, Some(x), Some(g), Some(w), Some(at)) => {
+                msg!("lab-expected-what-at", what = w, expected = shown(x), got = shown(g), at = at)
             }
-            _ => String::new(),
-        }
+            (None, Some(x), Some(g), Some(w), None) => {
+                msg!("lab-expected-what", what = w, expected = shown(x), got = shown(g))
+            }
+            (None, Some(x), Some(g), None, Some(at)) => {
+                msg!("lab-expected-at", expected = shown(x), got = shown(g), at = at)
+            }
+            (None, Some(x), Some(g), None, None) => msg!("lab-expected", expected = shown(x), got = shown(g)),
+            _ => return String::new(),
+        };
+        text.text
     }
 }
 

@@ -35,7 +35,7 @@ pub fn new_lab(dir: &Path) -> Result<Outcome> {
     let word = crate::shell::lex::quote(&shown);
     Ok(Outcome::new("lab")
         .with("sub", "new")
-        .text(format!("wrote {word} ({}); check it with: plcsh lab check {word}", names.join(", ")))
+        .text(crate::msg!("lab-new-wrote", dir = word.to_string(), files = names.join(", ")).text)
         .with("dir", dir.display().to_string())
         .with("files", names))
 }
@@ -55,22 +55,30 @@ fn points_name_criteria(lab: &Lab, r: &Report) -> Result<()> {
         let near = defined.iter().map(|n| (crate::core::text::edit_distance(key, n), *n)).min();
         let hint = match near {
             Some((d, n)) if d <= key.chars().count().max(3) / 3 + 1 => {
-                format!("did you mean \"{n}\"? the grader defines: {}", quoted(&defined))
+                crate::msg!("lab-hint-did-you-mean-criterion", near = n, criteria = quoted(&defined))
             }
-            _ if defined.is_empty() => "the grader defines no criterion (lab.criterion(name, points, fn))".into(),
-            _ => format!("the grader defines: {}", quoted(&defined)),
+            _ if defined.is_empty() => crate::msg!("lab-hint-no-criteria"),
+            _ => crate::msg!("lab-hint-criteria", criteria = quoted(&defined)),
         };
-        return Err(Error::usage(format!(
-            "{}: [points] \"{key}\" names no criterion the grader defines (on the reference solution)",
-            config::FILE
-        ))
-        .hint(hint));
+        return Err(
+            Error::usage(crate::msg!("lab-points-no-criterion", file = config::FILE, key = key.as_str())).hint(hint)
+        );
     }
     Ok(())
 }
 
 fn quoted(names: &[&str]) -> String {
     names.iter().map(|n| format!("\"{n}\"")).collect::<Vec<_>>().join(", ")
+}
+
+/// Points as a message argument: a whole number as a number (plural forms read it), any
+/// other as its digits.
+fn number(x: f64) -> crate::core::msg::Arg {
+    if x.fract() == 0.0 && x.abs() < 1e15 {
+        crate::core::msg::Arg::Int(x as i64)
+    } else {
+        crate::core::msg::Arg::Text(x.to_string())
+    }
 }
 
 /// `lab check LAB`: the lab is valid and its reference solution gets every point.
@@ -83,20 +91,28 @@ pub fn check(path: &Path) -> Result<(Outcome, String, bool)> {
     let ok = r.verdict == "passed" && r.points == r.max_points && r.max_points > 0.0;
     let rows = report::check_rows(&r);
     let warnings = if ok { free_points(path, &lab)? } else { Vec::new() };
+    let (points, max) = (number(r.points), number(r.max_points));
     let head = if ok {
-        format!(
-            "{}: the reference solution gets {}/{} points in {} simulated s",
-            lab.title, r.points, r.max_points, r.sim_time_s
+        crate::msg!(
+            "lab-check-passed",
+            lab = lab.title.as_str(),
+            points = points,
+            max = max,
+            time = r.sim_time_s.to_string()
         )
     } else {
-        format!(
-            "{}: the reference solution gets {}/{} points ({}): the grader or the reference needs fixing",
-            lab.title, r.points, r.max_points, r.verdict
+        crate::msg!(
+            "lab-check-failed",
+            lab = lab.title.as_str(),
+            points = points,
+            max = max,
+            verdict = r.verdict.as_str()
         )
-    };
+    }
+    .text;
     let o = Outcome::new("lab")
         .with("sub", "check")
-        .table(&["criterion", "points", "result"], rows)
+        .table(&report::headings(crate::msg!("lab-check-columns")), rows)
         .with("lab", lab.title.as_str())
         .with("passed", ok)
         .with("warnings", warnings)
@@ -110,29 +126,37 @@ pub fn check(path: &Path) -> Result<(Outcome, String, bool)> {
 fn free_points(path: &Path, lab: &Lab) -> Result<Vec<String>> {
     let dir =
         runner::PrivateDir::new().map_err(|e| Error::io("cannot create a folder for the empty program").cause(e))?;
-    let mut tries: Vec<(String, String)> = Vec::new();
+    // (the starter's name, or none for the empty program; the file graded)
+    let mut tries: Vec<(Option<String>, String)> = Vec::new();
     for s in &lab.starter {
         if lab.kind_of(s).is_some_and(|k| lab.accepts.contains(&k)) {
             let name = s.strip_prefix(&lab.dir).unwrap_or(s).display().to_string();
-            tries.push((format!("the starter {name}"), s.display().to_string()));
+            tries.push((Some(name), s.display().to_string()));
         }
     }
     let ext = if lab.accepts.iter().any(|k| k == "lua") { "lua" } else { "il" };
     let empty = dir.path().join(format!("empty.{ext}"));
     std::fs::write(&empty, "").map_err(|e| Error::io("cannot write the empty program").cause(e))?;
-    tries.push(("an empty program".into(), empty.display().to_string()));
+    tries.push((None, empty.display().to_string()));
     let mut out = Vec::new();
-    for (what, file) in tries {
+    for (starter, file) in tries {
         let mut r = runner::grade_one(path, lab, &file)?;
         report::bound(&mut r);
         if r.points > 0.0 {
-            let names: Vec<&str> = r.passed();
-            out.push(format!(
-                "{what} earns {}/{} points ({}): a criterion a program passes without doing the task checks nothing the task asks",
-                r.points,
-                r.max_points,
-                quoted(&names)
-            ));
+            let (points, max, criteria) = (number(r.points), number(r.max_points), quoted(&r.passed()));
+            out.push(
+                match starter {
+                    Some(file) => crate::msg!(
+                        "lab-free-points-starter",
+                        file = file,
+                        points = points,
+                        max = max,
+                        criteria = criteria
+                    ),
+                    None => crate::msg!("lab-free-points-empty", points = points, max = max, criteria = criteria),
+                }
+                .text,
+            );
         }
     }
     Ok(out)

@@ -136,7 +136,7 @@ pub fn summary(lab: &Lab, reports: &[Report]) -> (String, Outcome) {
                 format!("{}/{}", r.points, r.max_points),
                 r.passed().len().to_string(),
                 cell(&r.failed().iter().map(|n| n.to_string()).collect::<Vec<_>>().join(", ")),
-                cell(&r.verdict),
+                cell(&shown_verdict(&r.verdict)),
                 format!("{} s", r.sim_time_s),
             ]
         })
@@ -148,33 +148,38 @@ pub fn summary(lab: &Lab, reports: &[Report]) -> (String, Outcome) {
         names.entry(r.student.as_str()).or_default().push(r.file.as_str());
     }
     let twice: Vec<(&str, Vec<&str>)> = names.into_iter().filter(|(_, f)| f.len() > 1).collect();
-    let mut head = format!("{}: {} submission(s), {passed} passed every criterion", cell(&lab.title), reports.len());
+    let mut head = crate::msg!("lab-grade-head", lab = cell(&lab.title), count = reports.len(), passed = passed).text;
     for (name, files) in &twice {
-        head.push_str(&format!(
-            "\nwarning: {} submissions have the student name {}: {}",
-            files.len(),
-            cell(name),
-            files.iter().map(|f| cell(f)).collect::<Vec<_>>().join(", ")
-        ));
+        let files = files.iter().map(|f| cell(f)).collect::<Vec<_>>().join(", ");
+        head.push('\n');
+        head.push_str(&crate::msg!("lab-duplicate-student", count = files.len(), student = cell(name), files = files));
     }
     let duplicates: Vec<serde_json::Value> =
         twice.iter().map(|(n, f)| serde_json::json!({"student": n, "files": f})).collect();
-    let o = Outcome::new("lab")
-        .with("sub", "grade")
-        .table(&["student", "points", "passed", "failed", "verdict", "simulated time"], rows)
-        .with(
-            "summary",
-            serde_json::json!({
-                "lab": lab.title,
-                "submissions": reports.len(),
-                "passed": passed,
-                "grader_errors": broken,
-                "points": reports.iter().map(|r| r.points).sum::<f64>(),
-                "duplicate_students": duplicates,
-            }),
-        );
+    let o = Outcome::new("lab").with("sub", "grade").table(&headings(crate::msg!("lab-grade-columns")), rows).with(
+        "summary",
+        serde_json::json!({
+            "lab": lab.title,
+            "submissions": reports.len(),
+            "passed": passed,
+            "grader_errors": broken,
+            "points": reports.iter().map(|r| r.points).sum::<f64>(),
+            "duplicate_students": duplicates,
+        }),
+    );
     (head, o)
 }
+
+/// A verdict as a person reads it: `passed` and `failed` in the language of messages, any
+/// other (an error, a limit) as the grader wrote it.
+fn shown_verdict(v: &str) -> String {
+    match v {
+        "passed" | "failed" => crate::msg!("lab-verdict", verdict = v).text,
+        _ => v.to_string(),
+    }
+}
+
+pub use crate::output::headings;
 
 /// The lines under the table: why each criterion failed (expected, got, and when), one line
 /// each.
@@ -193,7 +198,8 @@ pub fn check_rows(r: &Report) -> Vec<Vec<String>> {
     r.criteria
         .iter()
         .map(|c| {
-            vec![cell(&c.name), format!("{}/{}", c.points, c.max), if c.passed { "ok".into() } else { cell(&c.why()) }]
+            let result = if c.passed { crate::msg!("lab-criterion-ok").text } else { cell(&c.why()) };
+            vec![cell(&c.name), format!("{}/{}", c.points, c.max), result]
         })
         .collect()
 }

@@ -222,12 +222,12 @@ fn commands(word: &str) -> Vec<Suggestion> {
     let mut v: Vec<Suggestion> = COMMANDS
         .iter()
         .filter(|c| starts_with_ci(c.name, word))
-        .map(|c| Suggestion { text: c.name.to_string(), meaning: c.summary.to_string() })
+        .map(|c| Suggestion { text: c.name.to_string(), meaning: c.summary() })
         .collect();
     if v.is_empty() {
         for c in COMMANDS {
             for a in c.aliases.iter().filter(|a| starts_with_ci(a, word)) {
-                v.push(Suggestion { text: a.to_string(), meaning: format!("= {}: {}", c.name, c.summary) });
+                v.push(Suggestion { text: a.to_string(), meaning: format!("= {}: {}", c.name, c.summary()) });
             }
         }
     }

@@ -145,11 +145,12 @@ mod menu_tests {
     fn menu_lines_fit_and_end_between_words() {
         let width = 7;
         for c in crate::shell::commands::COMMANDS {
-            let line = super::menu_line(c.name, c.summary, width, 80);
+            let summary = c.summary();
+            let line = super::menu_line(c.name, &summary, width, 80);
             assert!(line.chars().count() <= 78, "{line}");
             let shown = line.trim_end_matches('…')[width + 2..].to_string();
-            assert!(c.summary.starts_with(&shown), "{line}");
-            let after = &c.summary[shown.len()..];
+            assert!(summary.starts_with(&shown), "{line}");
+            let after = &summary[shown.len()..];
             assert!(after.is_empty() || after.starts_with([' ', ',', ';', ':']), "`{line}` cuts a word");
         }
         assert_eq!(super::menu_line("VW0", "", 5, 80), "VW0");

@@ -20,7 +20,7 @@ pub fn interactive(shell: &mut Shell) -> i32 {
         match rustyline::Editor::with_config(config) {
             Ok(e) => e,
             Err(e) => {
-                eprintln!("cannot start the line editor: {e}");
+                eprintln!("{}", crate::msg!("repl-no-line-editor", error = e.to_string()));
                 return 1;
             }
         };
@@ -100,7 +100,7 @@ pub fn interactive(shell: &mut Shell) -> i32 {
             Err(ReadlineError::Interrupted) => continue,
             Err(ReadlineError::Eof) => break,
             Err(e) => {
-                eprintln!("input error: {e}");
+                eprintln!("{}", crate::msg!("repl-input-error", error = e.to_string()));
                 break;
             }
         }
@@ -119,8 +119,8 @@ pub fn interactive(shell: &mut Shell) -> i32 {
 /// The REPL's first lines: the version and how to get help, then the open devices, wrapped
 /// between words to 80 columns.
 pub fn banner(devices: &str) -> String {
-    let mut lines = vec![format!("plcsh {} — `help` lists commands, `quit` leaves.", env!("CARGO_PKG_VERSION"))];
-    let wrapped = crate::core::text::wrap(&format!("Devices: {devices}"), 77);
+    let mut lines = vec![crate::msg!("repl-banner", version = env!("CARGO_PKG_VERSION")).text];
+    let wrapped = crate::core::text::wrap(&crate::msg!("repl-devices", devices = devices), 77);
     lines.extend(wrapped.into_iter().enumerate().map(|(i, l)| if i == 0 { l } else { format!("  {l}") }));
     lines.join("\n")
 }
@@ -131,12 +131,12 @@ fn device_list(shell: &Shell) -> String {
         .entries()
         .iter()
         .map(|e| {
-            format!(
-                "{} ({} {})",
-                e.name,
-                e.device.info().model,
-                if e.device.info().simulated { "simulated" } else { e.url.as_str() }
-            )
+            let (name, model) = (e.name.as_str(), e.device.info().model.as_str());
+            if e.device.info().simulated {
+                crate::msg!("repl-device-simulated", name = name, model = model).text
+            } else {
+                format!("{name} ({model} {})", e.url)
+            }
         })
         .collect::<Vec<_>>()
         .join(", ")
@@ -156,7 +156,7 @@ pub fn batch(shell: &mut Shell, input: &mut dyn BufRead, out: &mut dyn Write) ->
             Ok(0) => break,
             Ok(_) => {}
             Err(e) => {
-                eprintln!("input error: {e}");
+                eprintln!("{}", crate::msg!("repl-input-error", error = e.to_string()));
                 return 1;
             }
         }

@@ -6,6 +6,8 @@
 
 # The label before an error's hint, on the line under `error[KIND]: …`.
 label-hint = hint: { $hint }
+# The label before a warning (lab check's free points).
+label-warning = warning: { $warning }
 
 # What each `error.kind` means and what to do (the table of docs/reference/errors.md).
 error-kind-cause = { $kind ->
@@ -246,7 +248,209 @@ link-cannot-use-connection = cannot use the connection to { $addr }
 
 ## The command line (cli)
 
+# `--help` and the man page (cli::localise): the same texts as the doc comments of cli::Cli,
+# without the full stop clap leaves out (a test holds them together).
+cli-about = A shell for commissioning and debugging Kinco K2 PLCs and servo drives
+cli-opt-command = Run these commands (separated by `;`) and exit
+cli-opt-json = Print one JSON object per command result
+cli-opt-verbose = Show more: each frame sent and received in hex with timing, request counts, sample rates
+cli-opt-model = Model of the default simulated PLC
+cli-opt-device = Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable
+cli-opt-time = Simulator time: follow the wall clock, or move only when stepped
+cli-opt-config = Device profile file (default: PLCSH_CONFIG, else { $file }).
+cli-opt-state = Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user's data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE
+cli-opt-record = Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)
+cli-opt-bench = Open a simulated machine described by a bench file (devices, wiring, initial values)
+cli-opt-read-only = Refuse every change to every device (writes, instructions, servo commands): inspect a live machine
+cli-opt-fleet = Run -c's commands (or `run`'s script) on every device of this fleet from the profile file, at once (docs/fleets.md)
+cli-opt-jobs = With --fleet: how many devices are worked on at once
+cli-opt-lang = The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system's; English when neither names one of these)
+cli-opt-device-timeout = With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)
+cli-sub-models = List the K2 model catalogue; `models MODEL` shows one in full (areas, counters, manual notes)
+cli-sub-devices = List open devices and the device profiles (devices.toml), with problems in that file
+cli-sub-ports = List the serial ports present, with USB adapter (VID:PID, product, serial number)
+cli-sub-paths = Print where every file lives: profiles, Lua modules, state, history, snapshots, UMPK flash, recordings
+cli-sub-man = Print the manual page (roff) made from these flags and the shell's commands: plcsh man > plcsh.1
+cli-sub-completions = Print a shell completion script (bash, zsh, fish, powershell), or write them all
+cli-sub-sim = Serve simulators to other programs: `sim serve` puts the simulated K2 on Modbus TCP / RTU and drives { $served ->
+        [tcp] on a TCP port (raw or RFC 2217, which a COM port pair such as com0com's can reach)
+       *[pty] on a pty or a TCP port (raw or RFC 2217)
+    }.
+cli-sub-agent = The PLC-side helper program that gives plcsh SM registers and instructions on a real K2
+cli-sub-probe = What a K2 answers over Modbus before the helper is in it: areas and their last addresses, the models that fit, response time; reads only (docs/reference/first-connection.md)
+cli-sub-run = Run a Lua script: plcsh [--time stepped] [--device NAME=URL] run SCRIPT.lua [ARGS…]
+cli-sub-record = Recordings made with --record: `record show FILE` prints the decoded timeline
+cli-sub-replay = Replay a recording's requests against a simulator and report every reply that differs
+cli-sub-lab = Teaching labs: `lab new NAME`, `lab check LAB`, `lab grade LAB SUBMISSIONS…` (sandboxed, in parallel)
+cli-sub-publish = Poll operands on a device or a fleet and publish them to an MQTT broker (docs/fleets.md)
+cli-lab-new = Write a working example lab (K2 + drive with wiring, IL starter, Lua grader) into NAME
+cli-lab-new-name = The new lab's folder
+cli-lab-check = Check a lab: its lab.toml, files and start state, and the grader on the reference solution
+cli-lab-arg-lab = The lab folder (or its lab.toml)
+cli-lab-grade = Grade submissions (files or folders of .lua / .il files), each in a fresh sandboxed worker
+cli-lab-grade-submissions = Submission files or folders
+cli-lab-grade-jobs = Worker processes at a time (default: one per core)
+cli-lab-grade-junit = Also write the results as JUnit XML to FILE
+cli-lab-grade-show-output = Show what each submission printed (stdout and stderr, the first 64 KiB of each); `--json` always carries them as `stdout` and `stderr`
+cli-heading-usage = Usage:
+cli-heading-commands = Commands
+cli-heading-arguments = Arguments
+cli-heading-options = Options
+cli-heading-global = Global options
+cli-help-flag = Print help
+cli-version-flag = Print version
 cli-hint-shell-command = `{ $line }` is a shell command: plcsh -c '{ $line }'
+
+## Help and the command card (shell::commands::help): what each command does, the help screens
+
+# What a command does: `help`'s and the completion menu's line, the command card, the man page.
+summary-get = read operands (ranges and device: prefixes allowed)
+summary-set = write operands in order; the whole line is checked before anything is written
+summary-read = read a range as a table: value, hex and binary
+summary-use = make DEVICE the one operands without a prefix go to
+summary-devices = list open devices and device profiles
+summary-connect = open a device under a name, or a device profile from devices.toml
+summary-close = close a device
+summary-sim = the simulator's clock (show, step and keep stepped, follow the wall clock), input signals for the counters, retained ranges, the CPU running an IL program, wiring between simulated devices, snapshots of the simulated state, injected faults
+summary-watch = a live table of operands, refreshed in place until Ctrl-C or count=N; changes highlighted
+summary-trace = record operands over time (for `plot`), optionally into a CSV file
+summary-plot = draw the last trace in the terminal, and as a PNG or SVG picture with to= (a pulse output as its frequency)
+summary-servo = Kinco servo helpers: DS402 state machine, moves, jog, homing, waits, units, raw frames
+summary-umpk = UMPK8/UMPK16 teaching PLCs: controller and program info, error history, timing, reset, echo, real-time monitor, Intel HEX programming
+summary-pls = run the PLS instruction on pulse channel N (0 = Q0.0, 1 = Q0.1, 2 = Q0.4, 3 = Q0.5 on K209M)
+summary-pstop = emergency-stop pulse channel N (latches SM201.7 …; clear it with set SM201.7=0)
+summary-pto = start a single-segment pulse train (writes SMB67, SMW68, SMD72, then PLS), or decode its status
+summary-pwm = start PWM on channel N (writes SMB67=16#D3, SMW68, SMW70, then PLS)
+summary-profile = multi-segment PTO from a profile table (writes the table, SMW168, SMB67=16#A0, then PLS); `plan` only draws the frequency over time
+summary-hdef = run the HDEF instruction: give counter HSC N its mode (§3.3.1)
+summary-hsc = run the HSC instruction; with options, write the counter's registers first (then HDEF, HSC); or decode its status
+summary-events = show the interrupt events raised so far with their virtual times, and clear the log (`keep` leaves it)
+summary-wait = block until the device raises an interrupt event (taken from the log); stepped time jumps ahead
+summary-rtc = read the PLC's real-time clock, set it, or set it from the host's local time
+summary-eeprom = save or load the E2PROM backup area (VB3648…) as a binary file; show write counts; set where the area ends
+summary-data = data sets: save operands' typed values to a file, compare a file with the device or another file, load only what differs
+summary-lua = run Lua in the session's Lua state (devices are globals: plc.VW100 = 5)
+summary-agent = check the PLC-side helper that reaches SM registers and instructions over Modbus (docs/agent.md)
+summary-lab = teaching labs: write an example lab, check a lab against its reference solution, grade submissions (sandboxed, in parallel)
+summary-models = the K2 model catalogue; one model in full (areas, counters, pulse outputs, manual notes)
+summary-ports = the serial ports present, with USB adapter (VID:PID, product, serial number)
+summary-paths = where every file lives: profiles, Lua modules, state, history, snapshots
+summary-help = list commands, or explain one command (its full usage) or operand
+summary-quit = leave the shell
+
+# `help`: the groups of commands, by their key in shell::commands::help::GROUPS.
+help-groups-heading = commands by group (`help all` lists each with what it does):
+help-group = { $group ->
+    [io] read and write
+    [devices] devices
+    [simulator] simulator
+    [pulse] pulse outputs
+    [counters] counters
+    [interrupts] interrupts
+    [plc] PLC
+    [servo] servo, UMPK
+    [scripts] scripts, labs
+   *[shell] this shell
+}
+# Wrapped to the terminal's 80 columns.
+help-footer = `help COMMAND`: its forms (`help pto`); `help sim step`: a sub-command's forms. `help VW100`, `help SMB67`: what an operand is. Tab completes commands, operands and options (`pto 0 fr` ⇥ `freq=`).
+help-all-heading = commands (`help COMMAND` shows its forms and sub-commands):
+help-all-footer = operands: `help VW100`, `help SMB67` explain one; Tab completes them
+help-sub-commands = sub-commands: { $list }
+help-no-topic = no command or operand `{ $topic }`
+help-extra-word = help takes a command and one sub-command (got `{ $word }` after them)
+help-no-sub-command = `{ $command }` has no sub-command `{ $sub }`
+shell-takes-nothing = { $command } takes nothing after it (got `{ $word }`)
+# The man page's section of shell commands (cli::man): its heading and first paragraph.
+man-shell-commands = SHELL COMMANDS
+man-shell-commands-intro = Typed at the plcsh> prompt, given to -c (several separated by ;) or run from Lua with plcsh.exec. help lists them by group, help COMMAND shows a command's forms.
+
+## Labs (lab): the grade's and the check's lines, tables and verdicts, in the lab's `language`
+
+lab-new-wrote = wrote { $dir } ({ $files }); check it with: plcsh lab check { $dir }
+lab-grade-head = { $lab }: { $count } submission(s), { $passed } passed every criterion
+lab-duplicate-student = warning: { $count } submissions have the student name { $student }: { $files }
+# The columns of `lab grade`'s table, `|` between them.
+lab-grade-columns = student | points | passed | failed | verdict | simulated time
+lab-check-columns = criterion | points | result
+lab-verdict = { $verdict ->
+        [passed] passed
+       *[failed] failed
+    }
+lab-criterion-ok = ok
+lab-not-reached = not reached
+lab-expected = expected { $expected }, got { $got }
+lab-expected-at = expected { $expected }, got { $got } at { $at } s
+lab-expected-what = { $what }: expected { $expected }, got { $got }
+lab-expected-what-at = { $what }: expected { $expected }, got { $got } at { $at } s
+lab-error-at = { $error } at { $at } s
+lab-free-points-starter = the starter { $file } earns { $points }/{ $max } points ({ $criteria }): a criterion a program passes without doing the task checks nothing the task asks
+lab-free-points-empty = an empty program earns { $points }/{ $max } points ({ $criteria }): a criterion a program passes without doing the task checks nothing the task asks
+lab-points-no-criterion = { $file }: [points] "{ $key }" names no criterion the grader defines (on the reference solution)
+lab-hint-did-you-mean-criterion = did you mean "{ $near }"? the grader defines: { $criteria }
+lab-hint-no-criteria = the grader defines no criterion (lab.criterion(name, points, fn))
+lab-hint-criteria = the grader defines: { $criteria }
+lab-check-passed = { $lab }: the reference solution gets { $points }/{ $max } points in { $time } simulated s
+lab-check-failed = { $lab }: the reference solution gets { $points }/{ $max } points ({ $verdict }): the grader or the reference needs fixing
+
+## Probe (k2::probe, cli::probe): what a K2 answers before the helper is in it
+
+probe-head = probe of { $url }: { $requests } read requests, no writes
+probe-serial-answered = serial settings that answered: { $settings }
+probe-serial-tried = serial settings tried without an answer: { $settings }
+probe-columns = table | FC | area | first | last | units | reads | result
+probe-models = models that fit: { $models }
+probe-models-none = models that fit: none
+probe-verdict = { $ok ->
+        [ok] ok
+       *[failed] FAILED
+    }: { $what }
+probe-what-to-do = what to do: { $todo }
+probe-result-answers = answers
+probe-result-no-end = answers up to the next area: no end found
+probe-result-absent = absent (exception 02 at its first address)
+probe-result-refused = exception { $code } ({ $name }) at { $address }
+probe-result-no-reply = no reply at { $address }
+probe-no-answer = the PLC did not answer a read of { $table } { $address }: { $message }
+probe-refused = { $table } { $address } ({ $area }, FC { $fc }) was refused with exception { $code } ({ $name })
+probe-no-reply = { $table } { $address } ({ $area }, FC { $fc }) got no reply: { $message }
+probe-todo-link-again = { $hint }; then probe again
+probe-no-model = no catalogue model has these area sizes ({ $sizes })
+probe-todo-no-model = connect with the closest model= (plcsh models lists them) and attach this report (--report FILE) when asking: plcsh's catalogue may lack this PLC
+probe-models-fit = area sizes fit { $count ->
+        [one] model
+       *[other] models
+    } { $models }
+probe-todo-same-areas = these models have the same Modbus areas: give the one on the PLC's label as model=
+probe-no-mailbox = V as holding registers does not answer up to register { $register } (VB{ $first } … VB{ $last }, the helper's default mailbox)
+probe-todo-mailbox = SM registers and instructions need the helper's mailbox in V: choose a base the PLC answers (plcsh agent il --base VB…)
+probe-timed-failed = { $failed } of { $reads } timed reads of { $what } got no reply or an exception
+probe-todo-link-slow = { $hint }; a line that loses replies makes every command slow (plcsh retries)
+probe-timed = { $reads } reads of { $what }: p50 { $p50 } ms, p99 { $p99 } ms
+probe-todo-exception-01 = the port does not take this read function code: check that it is the PLC's Modbus port (PORT1/PORT2 set to Modbus RTU slave in KincoBuilder, or Modbus TCP on a K204ET) and not a programming or free-protocol port
+probe-todo-exception-04 = the PLC reports a device failure: check its error LED and diagnostics in KincoBuilder, then probe again
+probe-todo-exception-06 = the PLC is busy: probe again; if it stays busy, something else keeps it busy (another master, a download)
+probe-todo-gateway = a gateway answered for the PLC: check the gateway's route to the PLC (unit id, serial settings, wiring)
+probe-todo-attach = attach this report when asking about it: plcsh probe … --report FILE
+
+## The REPL (shell::repl): its first lines
+repl-banner = plcsh { $version } — `help` lists commands, `quit` leaves.
+repl-devices = Devices: { $devices }
+repl-device-simulated = { $name } ({ $model } simulated)
+repl-no-line-editor = cannot start the line editor: { $error }
+repl-input-error = input error: { $error }
+
+## Snapshots of the simulated state (shell::commands::snapshot)
+snapshot-list-sandboxed = `sim snapshots` lists the user's data directory: not in a sandboxed run
+snapshot-hint-sandboxed = a sandboxed run keeps snapshots as files under its write directory
+snapshot-none = no saved snapshots (sim snapshot save NAME)
+snapshot-columns = snapshot | file
+snapshot-one-name = `sim snapshot { $verb }` takes one name or file, not { $count } words
+snapshot-hint-quotes = a path with spaces goes in quotes: sim snapshot { $verb } { $path }
+snapshot-needs-verb = `sim snapshot` needs save or restore and a name: { $usage }
+snapshot-saved = saved { $devices } at { $time } to { $file }
+snapshot-restored = restored { $devices } to { $time }
+snapshot-unknown = unknown `sim snapshot { $verb }`
 
 ## The shell (shell)
 

@@ -4,6 +4,7 @@
 ## 错误的格式 (core::error, output)
 
 label-hint = 提示：{ $hint }
+label-warning = 警告：{ $warning }
 
 error-kind-cause = { $kind ->
     [syntax] 该行无法解析：多余的字符、未闭合的引号、`set` 中缺少 `=`
@@ -239,7 +240,199 @@ link-cannot-use-connection = 无法使用到 { $addr } 的连接
 
 ## 命令行 (cli)
 
+cli-about = 用于调试和投运 Kinco K2 PLC 及伺服驱动器的 shell
+cli-opt-command = 执行这些命令（以 `;` 分隔）后退出
+cli-opt-json = 每条命令的结果输出一个 JSON 对象
+cli-opt-verbose = 显示更多：每个收发的帧（十六进制，带时间）、请求次数、采样率
+cli-opt-model = 默认仿真 PLC 的型号
+cli-opt-device = 添加设备：NAME=URL、NAME=PROFILE、单独的 PROFILE（以其名称打开并设为当前设备）或单独的 URL（替换 `plc`）。可重复
+cli-opt-time = 仿真器时间：跟随实际时钟，或只在单步时前进
+cli-opt-config = 设备配置文件（默认：PLCSH_CONFIG，否则 { $file }）。
+cli-opt-state = 仿真器状态文件（备份区、断电保持范围、时钟）；默认 PLCSH_STATE，否则在用户数据目录中；`none` 不读也不写（实验、测试）。`sim serve` 只有带 --state FILE 时才保存状态
+cli-opt-record = 将每条设备链路上的每一帧记录到 FILE（pcapng；`plcsh record show FILE`）
+cli-opt-bench = 打开由台架文件描述的仿真设备组（设备、接线、初始值）
+cli-opt-read-only = 拒绝对任何设备的任何更改（写入、指令、伺服命令）：用于检查运行中的设备
+cli-opt-fleet = 在配置文件中该设备组的每台设备上同时执行 -c 的命令（或 `run` 的脚本）（docs/fleets.md）
+cli-opt-jobs = 配合 --fleet：同时处理多少台设备
+cli-opt-lang = 消息的语言：en、ru、zh-CN（默认：PLCSH_LANG，否则为系统语言；两者都不是其中之一时使用英语）
+cli-opt-device-timeout = 配合 --fleet：设备忙碌超过此时长即报告为超时（`30s`、`2m`；0 表示不限）
+cli-sub-models = 列出 K2 型号目录；`models MODEL` 显示单个型号的完整信息（存储区、计数器、手册说明）
+cli-sub-devices = 列出已打开的设备和设备配置文件（devices.toml），以及该文件中的问题
+cli-sub-ports = 列出现有的串口及其 USB 适配器（VID:PID、产品、序列号）
+cli-sub-paths = 显示每个文件所在的位置：配置文件、Lua 模块、状态、历史、快照、UMPK 闪存、记录
+cli-sub-man = 输出由这些选项和 shell 命令生成的手册页（roff）：plcsh man > plcsh.1
+cli-sub-completions = 输出 shell 补全脚本（bash、zsh、fish、powershell），或全部写入文件
+cli-sub-sim = 向其他程序提供仿真器：`sim serve` 将仿真 K2 置于 Modbus TCP / RTU 上，并将驱动器置于 { $served ->
+        [tcp] TCP 端口上（原始或 RFC 2217，可通过 com0com 等 COM 端口对访问）
+       *[pty] pty 或 TCP 端口上（原始或 RFC 2217）
+    }。
+cli-sub-agent = PLC 端的辅助程序，它在真实的 K2 上为 plcsh 提供 SM 寄存器和指令
+cli-sub-probe = 安装辅助程序之前 K2 通过 Modbus 的应答：各存储区及其最后地址、相符的型号、响应时间；只读（docs/reference/first-connection.md）
+cli-sub-run = 运行 Lua 脚本：plcsh [--time stepped] [--device NAME=URL] run SCRIPT.lua [ARGS…]
+cli-sub-record = 用 --record 制作的记录：`record show FILE` 输出解码后的时间线
+cli-sub-replay = 在仿真器上重放记录中的请求，并报告每个不同的回复
+cli-sub-lab = 教学实验：`lab new NAME`、`lab check LAB`、`lab grade LAB SUBMISSIONS…`（在沙箱中并行）
+cli-sub-publish = 轮询设备或设备组的操作数并发布到 MQTT 代理（docs/fleets.md）
+cli-lab-new = 将一个可运行的示例实验（K2 和驱动器及接线、IL 初始文件、Lua 评分程序）写入 NAME
+cli-lab-new-name = 新实验的文件夹
+cli-lab-check = 检查实验：其 lab.toml、文件和初始状态，以及评分程序在参考答案上的结果
+cli-lab-arg-lab = 实验文件夹（或其 lab.toml）
+cli-lab-grade = 为提交的作业评分（.lua / .il 文件或其文件夹），每份在新的沙箱工作进程中运行
+cli-lab-grade-submissions = 提交的文件或文件夹
+cli-lab-grade-jobs = 同时运行的工作进程数（默认：每个核一个）
+cli-lab-grade-junit = 同时将结果以 JUnit XML 写入 FILE
+cli-lab-grade-show-output = 显示每份作业输出的内容（stdout 和 stderr，各自前 64 KiB）；`--json` 总是以 `stdout` 和 `stderr` 给出
+cli-heading-usage = 用法:
+cli-heading-commands = 命令
+cli-heading-arguments = 参数
+cli-heading-options = 选项
+cli-heading-global = 全局选项
+cli-help-flag = 显示帮助
+cli-version-flag = 显示版本
 cli-hint-shell-command = `{ $line }` 是 shell 命令：plcsh -c '{ $line }'
+
+## 帮助和命令卡片 (shell::commands::help)：每个命令的作用、帮助界面
+
+summary-get = 读取操作数（可用范围和 device: 前缀）
+summary-set = 按顺序写入操作数；写入任何内容之前先检查整行
+summary-read = 以表格读取一个范围：数值、十六进制和二进制
+summary-use = 将 DEVICE 设为无前缀操作数所指的设备
+summary-devices = 列出已打开的设备和设备配置文件
+summary-connect = 以一个名称打开设备，或打开 devices.toml 中的设备配置文件
+summary-close = 关闭设备
+summary-sim = 仿真器的时钟（显示、单步并保持单步、跟随实际时间）、计数器的输入信号、断电保持范围、运行 IL 程序的 CPU、仿真设备之间的接线、仿真状态的快照、注入的故障
+summary-watch = 操作数的实时表格，原地刷新直到 Ctrl-C 或 count=N；变化高亮显示
+summary-trace = 随时间记录操作数（供 `plot` 使用），可选写入 CSV 文件
+summary-plot = 在终端中绘制最近一次 trace，并可用 to= 输出 PNG 或 SVG 图片（脉冲输出绘制其频率）
+summary-servo = Kinco 伺服工具：DS402 状态机、运动、点动、回原点、等待、单位、原始报文
+summary-umpk = UMPK8/UMPK16 教学 PLC：控制器和程序信息、错误历史、时序、复位、回显、实时监视、Intel HEX 编程
+summary-pls = 在脉冲通道 N 上执行 PLS 指令（0 = Q0.0，1 = Q0.1，2 = Q0.4，K209M 上 3 = Q0.5）
+summary-pstop = 急停脉冲通道 N（锁存 SM201.7 …；用 set SM201.7=0 清除）
+summary-pto = 启动单段脉冲串输出（写入 SMB67、SMW68、SMD72，然后 PLS），或解读其状态
+summary-pwm = 在通道 N 上启动脉宽调制 PWM（写入 SMB67=16#D3、SMW68、SMW70，然后 PLS）
+summary-profile = 按包络表执行多段 PTO（写入包络表、SMW168、SMB67=16#A0，然后 PLS）；`plan` 只绘制频率随时间的变化
+summary-hdef = 执行 HDEF 指令：为高速计数器 HSC N 指定模式（§3.3.1）
+summary-hsc = 执行 HSC 指令；带选项时先写入计数器的寄存器（然后 HDEF、HSC）；或解读其状态
+summary-events = 显示至今产生的中断事件及其虚拟时间，并清空记录（`keep` 保留记录）
+summary-wait = 等待设备产生中断事件（从记录中取出）；单步时间直接跳到该时刻
+summary-rtc = 读取 PLC 的实时时钟、设置它，或按主机本地时间设置
+summary-eeprom = 将 E2PROM 备份区（VB3648…）保存为二进制文件或从中载入；显示写入次数；设置备份区的结束位置
+summary-data = 数据集：将操作数的类型化数值保存到文件，将文件与设备或另一文件比较，只载入不同之处
+summary-lua = 在会话的 Lua 状态中运行 Lua（设备是全局变量：plc.VW100 = 5）
+summary-agent = 检查 PLC 端的辅助程序，它通过 Modbus 提供 SM 寄存器和指令（docs/agent.md）
+summary-lab = 教学实验：生成示例实验、按参考答案检查实验、为提交的作业评分（在沙箱中并行）
+summary-models = K2 型号目录；单个型号的完整信息（存储区、计数器、脉冲输出、手册说明）
+summary-ports = 现有的串口及其 USB 适配器（VID:PID、产品、序列号）
+summary-paths = 每个文件所在的位置：配置文件、Lua 模块、状态、历史、快照
+summary-help = 列出命令，或说明一个命令（其完整用法）或操作数
+summary-quit = 退出 shell
+
+help-groups-heading = 按用途分组的命令（`help all` 列出每个命令及其作用）：
+help-group = { $group ->
+    [io] 读写
+    [devices] 设备
+    [simulator] 仿真器
+    [pulse] 脉冲输出
+    [counters] 计数器
+    [interrupts] 中断
+    [plc] PLC
+    [servo] 伺服、UMPK
+    [scripts] 脚本、实验
+   *[shell] 本 shell
+}
+help-footer = `help COMMAND`：命令的各种形式（`help pto`）；`help sim step`：子命令的形式。`help VW100`、`help SMB67`：操作数的含义。Tab 键补全命令、操作数和选项（`pto 0 fr` ⇥ `freq=`）。
+help-all-heading = 命令（`help COMMAND` 显示其形式和子命令）：
+help-all-footer = 操作数：`help VW100`、`help SMB67` 说明一个操作数；Tab 键补全操作数
+help-sub-commands = 子命令：{ $list }
+help-no-topic = 没有命令或操作数 `{ $topic }`
+help-extra-word = help 只接受一个命令和一个子命令（其后还有 `{ $word }`）
+help-no-sub-command = `{ $command }` 没有子命令 `{ $sub }`
+shell-takes-nothing = { $command } 后面不接任何内容（收到 `{ $word }`）
+man-shell-commands = SHELL 命令
+man-shell-commands-intro = 在 plcsh> 提示符下输入，交给 -c（多条以 ; 分隔），或在 Lua 中用 plcsh.exec 执行。help 按用途分组列出命令，help COMMAND 显示命令的各种形式。
+
+## 实验 (lab)：评分和检查的输出行、表格和结论，使用实验的 `language`
+
+lab-new-wrote = 已写入 { $dir }（{ $files }）；用以下命令检查：plcsh lab check { $dir }
+lab-grade-head = { $lab }：{ $count } 份提交的作业，{ $passed } 份通过全部评分标准
+lab-duplicate-student = 警告：{ $count } 份提交的作业使用同一学生名 { $student }：{ $files }
+lab-grade-columns = 学生 | 分数 | 通过 | 未通过 | 结论 | 仿真时间
+lab-check-columns = 评分标准 | 分数 | 结果
+lab-verdict = { $verdict ->
+        [passed] 通过
+       *[failed] 未通过
+    }
+lab-criterion-ok = 通过
+lab-not-reached = 未执行到
+lab-expected = 期望 { $expected }，实际为 { $got }
+lab-expected-at = 期望 { $expected }，实际为 { $got }（{ $at } s 时）
+lab-expected-what = { $what }：期望 { $expected }，实际为 { $got }
+lab-expected-what-at = { $what }：期望 { $expected }，实际为 { $got }（{ $at } s 时）
+lab-error-at = { $error }（{ $at } s 时）
+lab-free-points-starter = 初始文件 { $file } 得到 { $points }/{ $max } 分（{ $criteria }）：程序不完成任务也能通过的评分标准检查不到任务要求的任何内容
+lab-free-points-empty = 空程序得到 { $points }/{ $max } 分（{ $criteria }）：程序不完成任务也能通过的评分标准检查不到任务要求的任何内容
+lab-points-no-criterion = { $file }：[points] "{ $key }" 不是评分程序定义的评分标准（在参考答案上）
+lab-hint-did-you-mean-criterion = 是否想输入 "{ $near }"？评分程序定义了：{ $criteria }
+lab-hint-no-criteria = 评分程序没有定义评分标准（lab.criterion(name, points, fn)）
+lab-hint-criteria = 评分程序定义了：{ $criteria }
+lab-check-passed = { $lab }：参考答案在 { $time } s 仿真时间内得到 { $points }/{ $max } 分
+lab-check-failed = { $lab }：参考答案得到 { $points }/{ $max } 分（{ $verdict }）：需要修改评分程序或参考答案
+
+## 探测 (k2::probe, cli::probe)：安装辅助程序之前 K2 的应答
+
+probe-head = 探测 { $url }：{ $requests } 次读请求，无写入
+probe-serial-answered = 有回复的串口参数：{ $settings }
+probe-serial-tried = 尝试过但无回复的串口参数：{ $settings }
+probe-columns = 表 | FC | 存储区 | 首地址 | 末地址 | 单元数 | 读次数 | 结果
+probe-models = 相符的型号：{ $models }
+probe-models-none = 相符的型号：无
+probe-verdict = { $ok ->
+        [ok] 正常
+       *[failed] 失败
+    }：{ $what }
+probe-what-to-do = 处理方法：{ $todo }
+probe-result-answers = 有应答
+probe-result-no-end = 一直应答到下一个存储区：未找到末尾
+probe-result-absent = 不存在（首地址返回异常码 02）
+probe-result-refused = 地址 { $address } 返回异常码 { $code }（{ $name }）
+probe-result-no-reply = 地址 { $address } 无回复
+probe-no-answer = PLC 未回复对 { $table } { $address } 的读取：{ $message }
+probe-refused = { $table } { $address }（{ $area }，FC { $fc }）被拒绝，异常码 { $code }（{ $name }）
+probe-no-reply = { $table } { $address }（{ $area }，FC { $fc }）无回复：{ $message }
+probe-todo-link-again = { $hint }；然后再次探测
+probe-no-model = 目录中没有型号具有这些存储区大小（{ $sizes }）
+probe-todo-no-model = 使用最接近的 model=（plcsh models 列出所有型号）连接，并在提问时附上此报告（--report FILE）：plcsh 的目录中可能没有这台 PLC
+probe-models-fit = 存储区大小与 { $count } 个型号相符：{ $models }
+probe-todo-same-areas = 这些型号的 Modbus 存储区相同：请将 PLC 铭牌上的型号作为 model= 给出
+probe-no-mailbox = V 作为保持寄存器未能应答到寄存器 { $register }（VB{ $first } … VB{ $last }，辅助程序的默认邮箱）
+probe-todo-mailbox = SM 寄存器和指令需要辅助程序在 V 区的邮箱：请选择 PLC 有应答的基址（plcsh agent il --base VB…）
+probe-timed-failed = 对 { $what } 的 { $reads } 次计时读取中有 { $failed } 次无回复或返回异常
+probe-todo-link-slow = { $hint }；丢失回复的线路会使每条命令变慢（plcsh 会重试）
+probe-timed = { $what } 读取 { $reads } 次：p50 { $p50 } ms，p99 { $p99 } ms
+probe-todo-exception-01 = 该端口不接受这个读功能码：请确认它是 PLC 的 Modbus 口（在 KincoBuilder 中将 PORT1/PORT2 设为 Modbus RTU 从站，或 K204ET 上的 Modbus TCP），而不是编程口或自由协议口
+probe-todo-exception-04 = PLC 报告设备故障：请检查其错误指示灯和 KincoBuilder 中的诊断信息，然后再次探测
+probe-todo-exception-06 = PLC 忙：请再次探测；如果一直忙，说明有其他事情占用它（另一个主站、程序下载）
+probe-todo-gateway = 网关代替 PLC 作了应答：请检查网关到 PLC 的路由（站号、串口参数、接线）
+probe-todo-attach = 提问时请附上此报告：plcsh probe … --report FILE
+
+## REPL (shell::repl)：开头几行
+repl-banner = plcsh { $version } — `help` 列出命令，`quit` 退出。
+repl-devices = 设备：{ $devices }
+repl-device-simulated = { $name }（{ $model } 仿真）
+repl-no-line-editor = 无法启动行编辑器：{ $error }
+repl-input-error = 输入错误：{ $error }
+
+## 仿真状态的快照 (shell::commands::snapshot)
+snapshot-list-sandboxed = `sim snapshots` 列出用户数据目录：在沙箱运行中不可用
+snapshot-hint-sandboxed = 沙箱运行将快照作为文件保存在其写入目录下
+snapshot-none = 没有保存的快照（sim snapshot save NAME）
+snapshot-columns = 快照 | 文件
+snapshot-one-name = `sim snapshot { $verb }` 只接受一个名称或文件，而不是 { $count } 个词
+snapshot-hint-quotes = 含空格的路径请加引号：sim snapshot { $verb } { $path }
+snapshot-needs-verb = `sim snapshot` 需要 save 或 restore 以及一个名称：{ $usage }
+snapshot-saved = 已将 { $devices } 在 { $time } 时的状态保存到 { $file }
+snapshot-restored = 已将 { $devices } 恢复到 { $time } 时的状态
+snapshot-unknown = 未知的 `sim snapshot { $verb }`
 
 ## Shell (shell)
 

@@ -169,6 +169,12 @@ pub mod words {
         };
     }
     pub(crate) use served_line;
+    /// Which of [`served_line`]'s two texts this system's is, as the message catalogue's
+    /// `cli-sub-sim` selects it: `tcp` on Windows, `pty` elsewhere.
+    #[cfg(windows)]
+    pub const SERVED: &str = "tcp";
+    #[cfg(not(windows))]
+    pub const SERVED: &str = "pty";
 
     /// A serial port's name, as examples show it.
     pub const PORT: &str = port!();

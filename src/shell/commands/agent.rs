@@ -13,7 +13,7 @@ pub const AGENT: CommandSpec = CommandSpec {
     name: "agent",
     aliases: &[],
     usage: "agent [DEVICE] [status] | agent status DEVICE",
-    summary: "check the PLC-side helper that reaches SM registers and instructions over Modbus (docs/agent.md)",
+    summary: || crate::msg!("summary-agent"),
     subcommands: &["status"],
     run: agent,
 };

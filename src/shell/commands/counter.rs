@@ -14,7 +14,7 @@ pub const HDEF: CommandSpec = CommandSpec {
     name: "hdef",
     aliases: &[],
     usage: "hdef N MODE   e.g. hdef 0 9",
-    summary: "run the HDEF instruction: give counter HSC N its mode (§3.3.1)",
+    summary: || crate::msg!("summary-hdef"),
     subcommands: &[],
     run: hdef,
 };
@@ -23,7 +23,7 @@ pub const HSC: CommandSpec = CommandSpec {
     name: "hsc",
     aliases: &[],
     usage: "hsc N | hsc N mode=9 [rate=4x] [pv=[100,200,300]] [relative] [cyclic] [at VB3009] [cv=0] [dir=up|down] [reset=low] [start=low] [force] | hsc N status | hsc status N",
-    summary: "run the HSC instruction; with options, write the counter's registers first (then HDEF, HSC); or decode its status",
+    summary: || crate::msg!("summary-hsc"),
     subcommands: &["status"],
     run: hsc,
 };

@@ -14,7 +14,7 @@ pub const DATA: CommandSpec = CommandSpec {
     name: "data",
     aliases: &[],
     usage: "data save FILE OPERAND… | data diff FILE [FILE2] | data load FILE   e.g. data save recipe.toml VB0..VB99 VD200/REAL eeprom",
-    summary: "data sets: save operands' typed values to a file, compare a file with the device or another file, load only what differs",
+    summary: || crate::msg!("summary-data"),
     subcommands: &["save", "diff", "load"],
     run: data,
 };

@@ -9,7 +9,7 @@ pub const USE: CommandSpec = CommandSpec {
     name: "use",
     aliases: &[],
     usage: "use DEVICE",
-    summary: "make DEVICE the one operands without a prefix go to",
+    summary: || crate::msg!("summary-use"),
     subcommands: &[],
     run: use_cmd,
 };
@@ -18,7 +18,7 @@ pub const DEVICES: CommandSpec = CommandSpec {
     name: "devices",
     aliases: &[],
     usage: "devices",
-    summary: "list open devices and device profiles",
+    summary: || crate::msg!("summary-devices"),
     subcommands: &[],
     run: devices,
 };
@@ -27,7 +27,7 @@ pub const CONNECT: CommandSpec = CommandSpec {
     name: "connect",
     aliases: &["open"],
     usage: "connect NAME URL | connect PROFILE   e.g. connect press sim:K209EA-50DX, connect press1",
-    summary: "open a device under a name, or a device profile from devices.toml",
+    summary: || crate::msg!("summary-connect"),
     subcommands: &[],
     run: connect,
 };
@@ -36,7 +36,7 @@ pub const CLOSE: CommandSpec = CommandSpec {
     name: "close",
     aliases: &[],
     usage: "close NAME",
-    summary: "close a device",
+    summary: || crate::msg!("summary-close"),
     subcommands: &[],
     run: close,
 };

@@ -16,8 +16,7 @@ pub const EEPROM: CommandSpec = CommandSpec {
     name: "eeprom",
     aliases: &[],
     usage: "eeprom dump FILE [all] | eeprom restore FILE | eeprom status | eeprom area 3902|4095",
-    summary:
-        "save or load the E2PROM backup area (VB3648…) as a binary file; show write counts; set where the area ends",
+    summary: || crate::msg!("summary-eeprom"),
     subcommands: &["dump", "restore", "status", "area"],
     run: eeprom,
 };

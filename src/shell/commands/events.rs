@@ -17,7 +17,7 @@ pub const EVENTS: CommandSpec = CommandSpec {
     name: "events",
     aliases: &[],
     usage: "events [keep]",
-    summary: "show the interrupt events raised so far with their virtual times, and clear the log (`keep` leaves it)",
+    summary: || crate::msg!("summary-events"),
     subcommands: &["keep"],
     run: events,
 };
@@ -26,7 +26,7 @@ pub const WAIT: CommandSpec = CommandSpec {
     name: "wait",
     aliases: &[],
     usage: "wait event N|NAME [timeout=2s]   e.g. wait event 28 timeout=2s, wait event pto1-done",
-    summary: "block until the device raises an interrupt event (taken from the log); stepped time jumps ahead",
+    summary: || crate::msg!("summary-wait"),
     subcommands: &["event"],
     run: wait,
 };

@@ -9,7 +9,7 @@ pub const HELP: CommandSpec = CommandSpec {
     name: "help",
     aliases: &["?"],
     usage: "help [COMMAND [SUB]|OPERAND|all]",
-    summary: "list commands, or explain one command (its full usage) or operand",
+    summary: || crate::msg!("summary-help"),
     subcommands: &[],
     run: help,
 };
@@ -18,7 +18,7 @@ pub const QUIT: CommandSpec = CommandSpec {
     name: "quit",
     aliases: &["exit", "q"],
     usage: "quit",
-    summary: "leave the shell",
+    summary: || crate::msg!("summary-quit"),
     subcommands: &[],
     run: quit,
 };
@@ -42,7 +42,7 @@ fn help(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let target = sh.session.resolve(topic).map_err(|e| {
         // A word that is neither a command nor an operand: most likely a mistyped command.
         if topic.chars().all(|c| c.is_ascii_alphabetic() || c == '-') {
-            crate::core::Error::usage(format!("no command or operand `{topic}`"))
+            crate::core::Error::usage(crate::msg!("help-no-topic", topic = topic))
                 .hint(super::suggest(&topic.to_ascii_lowercase()))
                 .column(args.offset)
         } else {
@@ -66,11 +66,11 @@ pub fn command_help(c: &CommandSpec) -> String {
         .map(|f| crate::core::text::wrap(&f.text, 75).join("\n    "))
         .collect::<Vec<_>>()
         .join("\n");
-    for line in crate::core::text::wrap(c.summary, 76) {
+    for line in crate::core::text::wrap(&c.summary(), 76) {
         text.push_str(&format!("\n  {line}"));
     }
     if !c.subcommands.is_empty() {
-        for line in crate::core::text::wrap(&format!("sub-commands: {}", c.subcommands.join(", ")), 76) {
+        for line in crate::core::text::wrap(&crate::msg!("help-sub-commands", list = c.subcommands.join(", ")), 76) {
             text.push_str(&format!("\n  {line}"));
         }
     }
@@ -88,19 +88,17 @@ pub fn sub_forms(c: &CommandSpec) -> Vec<(&'static str, String)> {
 fn sub_help(c: &CommandSpec, sub: &str, extra: Option<&str>, args: Args) -> Result<Outcome> {
     let sub_l = sub.to_ascii_lowercase();
     if let Some(w) = extra {
-        return Err(crate::core::Error::usage(format!(
-            "help takes a command and one sub-command (got `{w}` after them)"
-        ))
-        .hint(format!("help {} {sub_l}", c.name))
-        .column(args.offset));
+        return Err(crate::core::Error::usage(crate::msg!("help-extra-word", word = w))
+            .hint(format!("help {} {sub_l}", c.name))
+            .column(args.offset));
     }
     let forms: Vec<String> = sub_forms(c).into_iter().filter(|(s, _)| *s == sub_l).map(|(_, f)| f).collect();
     if forms.is_empty() {
-        return Err(crate::core::Error::usage(format!("`{}` has no sub-command `{sub}`", c.name))
+        return Err(crate::core::Error::usage(crate::msg!("help-no-sub-command", command = c.name, sub = sub))
             .hint(if c.subcommands.is_empty() {
                 format!("help {}", c.name)
             } else {
-                format!("sub-commands: {}", c.subcommands.join(", "))
+                crate::msg!("help-sub-commands", list = c.subcommands.join(", ")).text
             })
             .column(args.offset));
     }
@@ -132,32 +130,38 @@ fn quit(sh: &mut Shell, args: Args) -> Result<Outcome> {
     Ok(Outcome::new("quit").quiet())
 }
 
-/// The commands by what they are for, as `help` lists them (every command in one group).
+/// The commands by what they are for, as `help` lists them (every command in one group), each
+/// group by its key of `help-group` in the catalogue.
 pub const GROUPS: &[(&str, &[&str])] = &[
-    ("read and write", &["get", "set", "read", "watch", "trace", "plot"]),
+    ("io", &["get", "set", "read", "watch", "trace", "plot"]),
     ("devices", &["use", "devices", "connect", "close", "ports", "paths", "models"]),
     ("simulator", &["sim"]),
-    ("pulse outputs", &["pls", "pstop", "pto", "pwm", "profile"]),
+    ("pulse", &["pls", "pstop", "pto", "pwm", "profile"]),
     ("counters", &["hdef", "hsc"]),
     ("interrupts", &["events", "wait"]),
-    ("PLC", &["rtc", "eeprom", "data", "agent"]),
-    ("servo, UMPK", &["servo", "umpk"]),
-    ("scripts, labs", &["lua", "lab"]),
-    ("this shell", &["help", "quit"]),
+    ("plc", &["rtc", "eeprom", "data", "agent"]),
+    ("servo", &["servo", "umpk"]),
+    ("scripts", &["lua", "lab"]),
+    ("shell", &["help", "quit"]),
 ];
+
+/// `text` padded with spaces to `width` terminal columns (a Chinese character takes two).
+fn pad(text: &str, width: usize) -> String {
+    let w = crate::shell::term::width(text);
+    format!("{text}{}", " ".repeat(width.saturating_sub(w)))
+}
 
 /// `help`: the commands by group, fitting an 80×24 terminal with room for the prompt.
 pub fn grouped() -> String {
-    let w = GROUPS.iter().map(|g| g.0.len()).max().unwrap_or(8) + 2;
-    let mut lines = vec!["commands by group (`help all` lists each with what it does):".to_string()];
-    for (group, names) in GROUPS {
-        lines.push(format!("  {group:<w$}{}", names.join(", ")));
+    let names: Vec<String> = GROUPS.iter().map(|g| crate::msg!("help-group", group = g.0).text).collect();
+    let w = names.iter().map(|n| crate::shell::term::width(n)).max().unwrap_or(8) + 2;
+    let mut lines = vec![crate::msg!("help-groups-heading").text];
+    for ((_, cmds), name) in GROUPS.iter().zip(&names) {
+        lines.push(format!("  {}{}", pad(name, w), cmds.join(", ")));
     }
     lines.push(String::new());
     // Whole sentences within 80 columns (the test below holds them to it).
-    lines.push("`help COMMAND`: its forms (`help pto`); `help sim step`: a sub-command's forms.".into());
-    lines.push("`help VW100`, `help SMB67`: what an operand is. Tab completes commands,".into());
-    lines.push("operands and options (`pto 0 fr` ⇥ `freq=`).".into());
+    lines.extend(crate::core::text::wrap(&crate::msg!("help-footer"), 79));
     lines.join("\n")
 }
 
@@ -166,14 +170,14 @@ pub fn grouped() -> String {
 pub fn command_list() -> String {
     const WIDTH: usize = 80;
     let name_w = COMMANDS.iter().map(|c| c.name.len()).max().unwrap_or(4) + 2;
-    let mut text = String::from("commands (`help COMMAND` shows its forms and sub-commands):\n");
+    let mut text = crate::msg!("help-all-heading").text + "\n";
     for c in COMMANDS {
-        for (i, line) in crate::core::text::wrap(c.summary, WIDTH - 2 - name_w - 1).iter().enumerate() {
+        for (i, line) in crate::core::text::wrap(&c.summary(), WIDTH - 2 - name_w - 1).iter().enumerate() {
             let name = if i == 0 { c.name } else { "" };
             text.push_str(&format!("  {name:<name_w$}{line}\n"));
         }
     }
-    text.push_str("operands: `help VW100`, `help SMB67` explain one; Tab completes them");
+    text.push_str(&crate::msg!("help-all-footer"));
     text
 }
 
@@ -187,7 +191,7 @@ pub fn card_markdown() -> String {
         let forms: Vec<String> = super::forms::of(c).into_iter().map(|f| f.text).collect();
         let cell = |s: &str| s.replace('|', "\\|");
         let forms: Vec<String> = forms.iter().map(|f| format!("`{}`", cell(f))).collect();
-        t.push_str(&format!("| `{}` | {} | {} |\n", c.name, forms.join("<br>"), cell(c.summary)));
+        t.push_str(&format!("| `{}` | {} | {} |\n", c.name, forms.join("<br>"), cell(&c.summary())));
     }
     t
 }

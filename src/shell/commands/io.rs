@@ -10,7 +10,7 @@ pub const GET: CommandSpec = CommandSpec {
     name: "get",
     aliases: &["g"],
     usage: "get OPERAND…   e.g. get VW100 SMD72 plc:M0.0 VW0..VW8",
-    summary: "read operands (ranges and device: prefixes allowed)",
+    summary: || crate::msg!("summary-get"),
     subcommands: &[],
     run: get,
 };
@@ -19,7 +19,7 @@ pub const SET: CommandSpec = CommandSpec {
     name: "set",
     aliases: &["s"],
     usage: "set OPERAND=VALUE[, OPERAND=VALUE…]   e.g. set SMB67=16#85, SMW68=500, SMD72=1000",
-    summary: "write operands in order; the whole line is checked before anything is written",
+    summary: || crate::msg!("summary-set"),
     subcommands: &[],
     run: set,
 };
@@ -28,7 +28,7 @@ pub const READ: CommandSpec = CommandSpec {
     name: "read",
     aliases: &["r"],
     usage: "read RANGE…   e.g. read VW0..VW20, read VB0[16]",
-    summary: "read a range as a table: value, hex and binary",
+    summary: || crate::msg!("summary-read"),
     subcommands: &[],
     run: read,
 };

@@ -13,7 +13,7 @@ pub const LAB: CommandSpec = CommandSpec {
     name: "lab",
     aliases: &[],
     usage: "lab new NAME | lab check LAB | lab grade LAB SUBMISSIONS… [jobs=N]",
-    summary: "teaching labs: write an example lab, check a lab against its reference solution, grade submissions (sandboxed, in parallel)",
+    summary: || crate::msg!("summary-lab"),
     subcommands: &["new", "check", "grade"],
     run: lab,
 };

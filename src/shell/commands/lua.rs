@@ -15,7 +15,7 @@ pub const LUA: CommandSpec = CommandSpec {
     name: "lua",
     aliases: &[],
     usage: "lua CODE…   e.g. lua print(plc.VW100)   (also `:CODE`, or `lua` … `end` over several lines)",
-    summary: "run Lua in the session's Lua state (devices are globals: plc.VW100 = 5)",
+    summary: || crate::msg!("summary-lua"),
     subcommands: &[],
     run: lua,
 };

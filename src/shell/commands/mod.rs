@@ -40,10 +40,18 @@ pub struct CommandSpec {
     pub name: &'static str,
     pub aliases: &'static [&'static str],
     pub usage: &'static str,
-    pub summary: &'static str,
+    /// What it does, in the current language (`summary-NAME` in the catalogue).
+    pub summary: fn() -> crate::core::msg::Msg,
     /// Sub-commands, for completion.
     pub subcommands: &'static [&'static str],
     pub run: fn(&mut Shell, Args) -> Result<Outcome>,
+}
+
+impl CommandSpec {
+    /// What the command does, in the current language.
+    pub fn summary(&self) -> String {
+        (self.summary)().text
+    }
 }
 
 /// Every command, in the order `help` lists them.
@@ -201,7 +209,7 @@ pub fn find(name: &str) -> Option<&'static CommandSpec> {
 pub fn no_arguments(name: &str, args: Args) -> Result<()> {
     match args.text.split_whitespace().next() {
         None => Ok(()),
-        Some(w) => Err(Error::usage(format!("{name} takes nothing after it (got `{w}`)"))
+        Some(w) => Err(Error::usage(crate::msg!("shell-takes-nothing", command = name, word = w))
             .hint(name.to_string())
             .column(args.offset)),
     }

@@ -12,7 +12,7 @@ pub const MODELS: CommandSpec = CommandSpec {
     name: "models",
     aliases: &[],
     usage: "models [MODEL]   e.g. models K209EA",
-    summary: "the K2 model catalogue; one model in full (areas, counters, pulse outputs, manual notes)",
+    summary: || crate::msg!("summary-models"),
     subcommands: &[],
     run: models,
 };

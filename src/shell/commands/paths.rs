@@ -11,7 +11,7 @@ pub const PATHS: CommandSpec = CommandSpec {
     name: "paths",
     aliases: &[],
     usage: "paths",
-    summary: "where every file lives: profiles, Lua modules, state, history, snapshots",
+    summary: || crate::msg!("summary-paths"),
     subcommands: &[],
     run: paths,
 };

@@ -12,7 +12,7 @@ pub const PORTS: CommandSpec = CommandSpec {
     name: "ports",
     aliases: &[],
     usage: "ports",
-    summary: "the serial ports present, with USB adapter (VID:PID, product, serial number)",
+    summary: || crate::msg!("summary-ports"),
     subcommands: &[],
     run: ports,
 };

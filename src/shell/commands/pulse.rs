@@ -15,7 +15,7 @@ pub const PLS: CommandSpec = CommandSpec {
     name: "pls",
     aliases: &[],
     usage: "pls N [strict]   e.g. set SMB67=16#85, SMW68=500, SMD72=1000; pls 0",
-    summary: "run the PLS instruction on pulse channel N (0 = Q0.0, 1 = Q0.1, 2 = Q0.4, 3 = Q0.5 on K209M)",
+    summary: || crate::msg!("summary-pls"),
     subcommands: &[],
     run: pls,
 };
@@ -24,7 +24,7 @@ pub const PSTOP: CommandSpec = CommandSpec {
     name: "pstop",
     aliases: &[],
     usage: "pstop N",
-    summary: "emergency-stop pulse channel N (latches SM201.7 …; clear it with set SM201.7=0)",
+    summary: || crate::msg!("summary-pstop"),
     subcommands: &[],
     run: pstop,
 };
@@ -33,7 +33,7 @@ pub const PTO: CommandSpec = CommandSpec {
     name: "pto",
     aliases: &[],
     usage: "pto N freq=2kHz count=1000 [strict] | pto N cycle=500us count=1000 [strict] | pto N status | pto status N",
-    summary: "start a single-segment pulse train (writes SMB67, SMW68, SMD72, then PLS), or decode its status",
+    summary: || crate::msg!("summary-pto"),
     subcommands: &["status"],
     run: pto,
 };
@@ -42,7 +42,7 @@ pub const PWM: CommandSpec = CommandSpec {
     name: "pwm",
     aliases: &[],
     usage: "pwm N cycle=1ms width=250us [sync|async] [strict]",
-    summary: "start PWM on channel N (writes SMB67=16#D3, SMW68, SMW70, then PLS)",
+    summary: || crate::msg!("summary-pwm"),
     subcommands: &[],
     run: pwm,
 };
@@ -51,7 +51,7 @@ pub const PROFILE: CommandSpec = CommandSpec {
     name: "profile",
     aliases: &[],
     usage: "profile N at VB3001 [(cycle=500us, count=1000), (freq=4kHz, count=4000), …] [force] [strict] [plan [to=FILE.png|FILE.svg] [size=900x340]]",
-    summary: "multi-segment PTO from a profile table (writes the table, SMW168, SMB67=16#A0, then PLS); `plan` only draws the frequency over time",
+    summary: || crate::msg!("summary-profile"),
     subcommands: &[],
     run: profile,
 };

@@ -13,7 +13,7 @@ pub const RTC: CommandSpec = CommandSpec {
     name: "rtc",
     aliases: &[],
     usage: "rtc | rtc set 2026-11-22T10:00:00 | rtc sync",
-    summary: "read the PLC's real-time clock, set it, or set it from the host's local time",
+    summary: || crate::msg!("summary-rtc"),
     subcommands: &["set", "sync"],
     run: rtc,
 };

@@ -23,7 +23,7 @@ pub const SERVO: CommandSpec = CommandSpec {
     name: "servo",
     aliases: &[],
     usage: "servo [DEVICE] status|enable|disable|fault-reset|quickstop|mode NAME|move abs|rel POS [speed=300rpm] [acc=100rps/s] [dec=100rps/s]|jog SPEED [acc=100rps/s] [dec=100rps/s]|halt [on|off]|home [method=N]|wait target [timeout=5s]|save|params save FILE [group…]|params diff FILE [FILE2]|params diff --with DRIVE|params load FILE [--store]|read OBJ…|encoder [N|auto]|raw BYTES…|sim fault [drive] [CODE] [id=N]|sim fault no-reply|bad-checksum|drop-echo [count=N] [all]|sim fault delay D|sim fault late D|sim fault abort OBJ CODE|sim fault clear|sim switch [home|neg|pos] POS|off|sim pulses freq=HZ count=N [dir=fwd|rev]|sim strict on|off",
-    summary: "Kinco servo helpers: DS402 state machine, moves, jog, homing, waits, units, raw frames",
+    summary: || crate::msg!("summary-servo"),
     subcommands: &[
         "status",
         "enable",

@@ -16,7 +16,7 @@ pub const SIM: CommandSpec = CommandSpec {
     name: "sim",
     aliases: &[],
     usage: "sim time | sim step DURATION | sim clock [real|stepped] | sim input I0.1 freq=1kHz [dir=up|down] | sim input I0.1 off | sim quad A B freq=1kHz [dir=up|down] | sim inputs | sim retain RANGE…|none | sim program load FILE.il | sim program unload | sim program [status] | sim program costs [bit=200ns] … | sim program stop-outputs QB0=16#05 … | sim cpu run|stop|pause | sim stop | sim pause | sim switch run|stop | sim scan [N] | sim break [LINE|FILE:LINE|network N|clear] | sim stepi [N] | sim stepn | sim wire FROM -> TO[,TO…] [lines=N] [delay=D] | sim wires | sim unwire TERMINAL|all | sim snapshot save|restore NAME | sim snapshots | sim fault KIND … [at=TIME] [after=D] [for=D] [times=N] | sim fault clear [ID] | sim faults",
-    summary: "the simulator's clock (show, step and keep stepped, follow the wall clock), input signals for the counters, retained ranges, the CPU running an IL program, wiring between simulated devices, snapshots of the simulated state, injected faults",
+    summary: || crate::msg!("summary-sim"),
     subcommands: &[
         "time", "step", "clock", "input", "quad", "inputs", "retain", "program", "cpu", "stop", "pause", "switch", "scan", "break", "stepi",
         "stepn", "wire", "wires", "unwire", "snapshot", "snapshots", "fault", "faults",

@@ -17,7 +17,7 @@ pub const TRACE: CommandSpec = CommandSpec {
     name: "trace",
     aliases: &[],
     usage: "trace OPERAND… every=10ms for=2s [to=FILE.csv]   e.g. trace SMD72 Q0.0 every=10ms for=2s",
-    summary: "record operands over time (for `plot`), optionally into a CSV file",
+    summary: || crate::msg!("summary-trace"),
     subcommands: &[],
     run: trace,
 };
@@ -26,8 +26,7 @@ pub const PLOT: CommandSpec = CommandSpec {
     name: "plot",
     aliases: &[],
     usage: "plot [OPERAND…] [to=FILE.png|FILE.svg] [size=900x340] [width=60] [height=8]   e.g. plot Q0.0 to=ramp.png",
-    summary:
-        "draw the last trace in the terminal, and as a PNG or SVG picture with to= (a pulse output as its frequency)",
+    summary: || crate::msg!("summary-plot"),
     subcommands: &[],
     run: plot,
 };

@@ -32,7 +32,7 @@ pub const UMPK: CommandSpec = CommandSpec {
     name: "umpk",
     aliases: &[],
     usage: "umpk [DEVICE] info|program-info|errors [clear]|timing|reset|echo on|off|monitor [OPERAND…] [count=N] [for=2s] [every=100ms] [quiet]|program FILE.hex [info=\"…\"] [run]|send TEXT|sim input I3=1|sim input I3 [off] [freq=2Hz]|sim inputs|sim flash-fail PAGE|off|sim fault no-reply|stuck [I3=1] [for=D]|sim fault clear|sim faults|sim events|sim reference [NAME]",
-    summary: "UMPK8/UMPK16 teaching PLCs: controller and program info, error history, timing, reset, echo, real-time monitor, Intel HEX programming",
+    summary: || crate::msg!("summary-umpk"),
     subcommands: &["info", "program-info", "errors", "timing", "reset", "echo", "monitor", "program", "send", "sim"],
     run: umpk,
 };

@@ -20,7 +20,7 @@ pub const WATCH: CommandSpec = CommandSpec {
     name: "watch",
     aliases: &[],
     usage: "watch OPERAND… [every=200ms] [count=N]   e.g. watch VW0 SMD72 SM0.5 every=100ms",
-    summary: "a live table of operands, refreshed in place until Ctrl-C or count=N; changes highlighted",
+    summary: || crate::msg!("summary-watch"),
     subcommands: &[],
     run: watch,
 };
