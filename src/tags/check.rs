@@ -21,7 +21,7 @@ pub fn check(table: &TagTable, spaces: &[&dyn OperandSpace]) -> Vec<TagProblem> 
     let mut spans: Vec<(Span, usize)> = Vec::new();
     for (i, t) in table.iter().enumerate() {
         if let Some(s) = spaces.iter().find(|s| s.parse(&t.name).is_ok_and(|ops| !ops.is_empty())) {
-            out.push(problem(t, msg!("tags-name-is-operand", name = t.name.as_str(), family = s.family())));
+            out.push(problem(t, msg!("tags-name-is-operand", name = t.name.as_str(), family = s.family().to_ascii_uppercase())));
             continue;
         }
         let Some(space) = spaces.first() else { continue };

@@ -14,7 +14,11 @@ tags-no-name = в строке есть адрес, но нет имени
 tags-no-address = у `{ $name }` нет адреса
 tags-bad-address = `{ $name }`: `{ $address }` — не адрес (в адресе нет пробелов: VW0, M0.3, %MW10)
 tags-unknown-type = `{ $name }`: неизвестный тип `{ $dtype }` (BOOL, BYTE, SINT, WORD, INT, DWORD, DINT, REAL; также UINT, UDINT, USINT)
-tags-type-does-not-fit = `{ $name }`: тип { $dtype } не подходит к { $address } ({ $bits } бит)
+tags-type-does-not-fit = `{ $name }`: тип { $dtype } не подходит к { $address } ({ $bits ->
+    [one] { $bits } бит
+    [few] { $bits } бита
+   *[many] { $bits } бит
+})
 tags-resolve-failed = `{ $name }`: { $address } здесь не операнд: { $problem }
 tags-address-is-range = `{ $address }` — диапазон; адрес тега — один операнд
 tags-overlap = `{ $name }` ({ $address }) перекрывается с `{ $other }` ({ $other_address }, строка { $line })
@@ -31,3 +35,10 @@ tags-iec-no-address = у `{ $name }` нет адреса (напишите `{ $n
 tags-iec-no-block = в файле нет блока VAR_GLOBAL … END_VAR
 tags-iec-unclosed-block = VAR_GLOBAL без END_VAR
 tags-iec-unclosed-comment = комментарий, открытый здесь с (*, не закрыт *)
+tags-unknown-model = нет модели K2, FX или UMPK с именем `{ $model }` (plcsh models перечисляет модели K2)
+tags-usage = укажите файл тегов: plcsh tags FILE, plcsh tags check FILE, plcsh tags export FILE --to csv|iec
+tags-check-ok = { $file }: { $count ->
+    [one] { $count } тег
+    [few] { $count } тега
+   *[many] { $count } тегов
+}, проблем нет

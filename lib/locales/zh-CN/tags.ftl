@@ -31,3 +31,6 @@ tags-iec-no-address = `{ $name }` 没有地址 (写作 `{ $name } AT %MW10 : INT
 tags-iec-no-block = 文件中没有 VAR_GLOBAL … END_VAR 块
 tags-iec-unclosed-block = VAR_GLOBAL 没有 END_VAR
 tags-iec-unclosed-comment = 此处以 (* 开始的注释没有以 *) 结束
+tags-unknown-model = 没有名为 `{ $model }` 的 K2、FX 或 UMPK 型号 (plcsh models 列出 K2 型号)
+tags-usage = 请指定标签文件: plcsh tags FILE, plcsh tags check FILE, plcsh tags export FILE --to csv|iec
+tags-check-ok = { $file }: { $count } 个标签, 没有问题
