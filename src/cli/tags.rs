@@ -4,12 +4,13 @@
 //! model; the simulated K2's by default), and names are checked against every family's
 //! operands, so a table does not start to read two ways when it moves to another device.
 
-use crate::core::{exit, Error, OperandSpace};
+use crate::core::{exit, Error};
+use crate::profile::tags::{load as load_checked, space_for};
 use crate::output::{self, Outcome, Style};
-use crate::tags::{export, TagFormat, TagProblems, TagTable};
+use crate::tags::{export, TagFormat, TagProblems};
 use clap::{Args, Subcommand, ValueEnum};
 use std::io::Write;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 #[derive(Args, Debug)]
 #[command(args_conflicts_with_subcommands = true)]
@@ -78,51 +79,6 @@ impl FormatArg {
             FormatArg::Iec => TagFormat::Iec,
         }
     }
-}
-
-/// The operand space of a model of any family (`K209M`, `FX2N`, `UMPK16`).
-pub fn space_for(model: Option<&str>) -> crate::core::Result<Box<dyn OperandSpace>> {
-    let name = model.unwrap_or(crate::k2::catalog::DEFAULT_MODEL);
-    if let Some(m) = crate::k2::catalog::find(name) {
-        return Ok(Box::new(crate::k2::space::K2Space::new(m)));
-    }
-    if let Some(m) = crate::fx::model::Model::find(name) {
-        return Ok(Box::new(crate::fx::space::FxSpace::new(m, crate::fx::space::Proto::Port)));
-    }
-    if let Some(m) = name.to_ascii_uppercase().starts_with("UMPK").then(|| crate::umpk::model::find(name)).flatten() {
-        return Ok(Box::new(crate::umpk::space::UmpkSpace { model: m }));
-    }
-    Err(Error::usage(crate::msg!("tags-unknown-model", model = name)))
-}
-
-/// One space of every family, the largest model of each: the operands a name must not read as.
-pub fn every_family() -> Vec<Box<dyn OperandSpace>> {
-    let k2 = crate::k2::catalog::MODELS.last().expect("the K2 catalogue has models");
-    let fx = crate::fx::model::MODELS.last().expect("the FX catalogue has models");
-    let umpk = crate::umpk::model::MODELS.last().expect("the UMPK catalogue has models");
-    vec![
-        Box::new(crate::k2::space::K2Space::new(k2)),
-        Box::new(crate::fx::space::FxSpace::new(fx, crate::fx::space::Proto::Port)),
-        Box::new(crate::umpk::space::UmpkSpace { model: umpk }),
-    ]
-}
-
-/// Reads and checks a tag file for `space`'s family: the table, or every problem.
-pub fn load_checked(path: &Path, format: Option<TagFormat>, space: &dyn OperandSpace) -> Result<TagTable, TagProblems> {
-    let bytes = std::fs::read(path).map_err(|e| {
-        let origin = path.display().to_string();
-        TagProblems(vec![crate::tags::TagProblem {
-            origin: origin.clone(),
-            line: 0,
-            column: 0,
-            message: crate::msg!("tags-cannot-read", file = origin.as_str(), reason = e.to_string()),
-        }])
-    })?;
-    let table = TagTable::parse(&bytes, &path.display().to_string(), format)?;
-    let others = every_family();
-    let mut spaces: Vec<&dyn OperandSpace> = vec![space];
-    spaces.extend(others.iter().map(|b| b.as_ref()));
-    table.checked(&spaces)
 }
 
 fn problems_json(p: &TagProblems) -> serde_json::Value {

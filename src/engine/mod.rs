@@ -29,12 +29,14 @@ pub mod compile;
 pub mod exec;
 pub mod isa;
 pub mod source;
+pub mod symbols;
 pub mod timers;
 
 #[cfg(test)]
 mod tests;
 
-pub use compile::{compile, Program};
+pub use compile::Program;
+pub use symbols::{compile, compile_with_tags};
 pub use exec::{Cpu, Fault, FaultKind, ScanOutcome};
 pub use isa::{CostClass, CounterKind, TimerKind};
 

@@ -194,7 +194,8 @@ impl TagFormat {
     }
 }
 
-/// One problem of a tag file, at `origin:line:column` (1-based; column counts characters).
+/// One problem of a tag file, at `origin:line:column` (1-based; column counts characters;
+/// line 0 when the problem is the whole file, which could not be read).
 #[derive(Clone, Debug, PartialEq)]
 pub struct TagProblem {
     pub origin: String,
@@ -205,6 +206,10 @@ pub struct TagProblem {
 
 impl fmt::Display for TagProblem {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        // Line 0: the file as a whole (it could not be read); the message names it.
+        if self.line == 0 {
+            return write!(f, "{}", encoding::printable(&self.message.text));
+        }
         write!(f, "{}:{}:{}: {}", self.origin, self.line, self.column, encoding::printable(&self.message.text))
     }
 }

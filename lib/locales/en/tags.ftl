@@ -40,3 +40,9 @@ tags-check-ok = { $file }: { $count ->
     [one] { $count } tag
    *[other] { $count } tags
 }, no problems
+tags-symbol-address = tag `{ $name }` is at { $address }, which is not an operand here: { $problem }
+tags-unknown-symbol = `{ $name }` is neither a tag nor an operand
+tags-unknown-symbol-near = `{ $name }` is not a tag (nearest: { $nearest })
+tags-declared-address = { $file }:{ $line }:{ $column }: tag `{ $name }`: { $address } is not an operand of this PLC: { $problem }
+tags-declared-twice = { $file }:{ $line }:{ $column }: tag `{ $name }` is declared in the program and in { $tags } (line { $tag_line })
+tags-option-last = tags=FILE names the tag file and comes last: sim program load FILE.il tags=FILE.csv

@@ -42,3 +42,9 @@ tags-check-ok = { $file }: { $count ->
     [few] { $count } тега
    *[many] { $count } тегов
 }, проблем нет
+tags-symbol-address = тег `{ $name }` имеет адрес { $address }, который здесь не операнд: { $problem }
+tags-unknown-symbol = `{ $name }` — не тег и не операнд
+tags-unknown-symbol-near = `{ $name }` — не тег (ближайшие: { $nearest })
+tags-declared-address = { $file }:{ $line }:{ $column }: тег `{ $name }`: { $address } — не операнд этого ПЛК: { $problem }
+tags-declared-twice = { $file }:{ $line }:{ $column }: тег `{ $name }` объявлен и в программе, и в { $tags } (строка { $tag_line })
+tags-option-last = tags=FILE задаёт файл тегов и стоит последним: sim program load FILE.il tags=FILE.csv

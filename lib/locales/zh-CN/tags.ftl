@@ -34,3 +34,9 @@ tags-iec-unclosed-comment = 此处以 (* 开始的注释没有以 *) 结束
 tags-unknown-model = 没有名为 `{ $model }` 的 K2、FX 或 UMPK 型号 (plcsh models 列出 K2 型号)
 tags-usage = 请指定标签文件: plcsh tags FILE, plcsh tags check FILE, plcsh tags export FILE --to csv|iec
 tags-check-ok = { $file }: { $count } 个标签, 没有问题
+tags-symbol-address = 标签 `{ $name }` 的地址是 { $address }, 在此不是操作数: { $problem }
+tags-unknown-symbol = `{ $name }` 既不是标签也不是操作数
+tags-unknown-symbol-near = `{ $name }` 不是标签 (最接近的: { $nearest })
+tags-declared-address = { $file }:{ $line }:{ $column }: 标签 `{ $name }`: { $address } 不是此 PLC 的操作数: { $problem }
+tags-declared-twice = { $file }:{ $line }:{ $column }: 标签 `{ $name }` 在程序和 { $tags } (第 { $tag_line } 行) 中都有声明
+tags-option-last = tags=FILE 指定标签文件, 放在最后: sim program load FILE.il tags=FILE.csv
