@@ -13,8 +13,8 @@ mod publish;
 mod record;
 pub mod reference;
 mod run;
-pub mod tags;
 pub(crate) mod serve;
+pub mod tags;
 
 use crate::core::{exit, Clock};
 use crate::k2::catalog;

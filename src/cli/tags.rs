@@ -5,8 +5,8 @@
 //! operands, so a table does not start to read two ways when it moves to another device.
 
 use crate::core::{exit, Error};
-use crate::profile::tags::{load as load_checked, space_for};
 use crate::output::{self, Outcome, Style};
+use crate::profile::tags::{load as load_checked, space_for};
 use crate::tags::{export, TagFormat, TagProblems};
 use clap::{Args, Subcommand, ValueEnum};
 use std::io::Write;
@@ -95,7 +95,8 @@ fn problems_json(p: &TagProblems) -> serde_json::Value {
 /// what it was asked for; on standard error otherwise) or one JSON object with `problems`.
 fn report(out: &mut dyn Write, style: Style, cmd: &str, p: &TagProblems, to_stdout: bool) -> i32 {
     if style.json {
-        let v = serde_json::json!({"ok": false, "cmd": cmd, "problems": problems_json(p), "error": p.clone().into_error()});
+        let v =
+            serde_json::json!({"ok": false, "cmd": cmd, "problems": problems_json(p), "error": p.clone().into_error()});
         let _ = writeln!(out, "{v}");
     } else if to_stdout {
         let _ = writeln!(out, "{p}");
@@ -127,7 +128,12 @@ pub fn run(args: &TagsArgs, style: Style, out: &mut dyn Write) -> i32 {
         Ok(t) => t,
         Err(p) => return report(out, style, cmd, &p, cmd == "tags check"),
     };
+    let warnings: Vec<String> = table.warnings().iter().map(|w| w.to_string()).collect();
     match &args.cmd {
+        // `check` reports overlaps as problems: they are what it is asked to find.
+        Some(TagsCmd::Check { .. }) if !warnings.is_empty() => {
+            report(out, style, cmd, &TagProblems(table.warnings().to_vec()), true)
+        }
         Some(TagsCmd::Check { .. }) => {
             let o = Outcome::new(cmd)
                 .text(crate::msg!("tags-check-ok", file = table.origin(), count = table.len() as i64).text)
@@ -144,6 +150,9 @@ pub fn run(args: &TagsArgs, style: Style, out: &mut dyn Write) -> i32 {
                     Err(e) => return fail(out, cmd, &e),
                 },
             };
+            for w in &warnings {
+                eprintln!("{}", crate::msg!("tags-warning", warning = w.as_str()));
+            }
             match path {
                 Some(p) => match crate::core::durable::write_atomic(p, text.as_bytes()) {
                     Ok(()) => exit::OK,
@@ -166,11 +175,13 @@ pub fn run(args: &TagsArgs, style: Style, out: &mut dyn Write) -> i32 {
                     "comment": t.comment, "line": t.line,
                 }));
             }
-            let o = Outcome::new(cmd)
+            let mut o = Outcome::new(cmd)
                 .table(&["name", "address", "type", "comment"], rows)
                 .with("file", table.origin())
                 .with("format", table.format().map(|f| f.name()))
-                .with("tags", json);
+                .with("tags", json)
+                .with("warnings", &warnings);
+            o.notes = warnings;
             i32::from(output::write_outcome(out, style, &o).is_err())
         }
     }

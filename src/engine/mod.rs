@@ -36,9 +36,9 @@ pub mod timers;
 mod tests;
 
 pub use compile::Program;
-pub use symbols::{compile, compile_with_tags};
 pub use exec::{Cpu, Fault, FaultKind, ScanOutcome};
 pub use isa::{CostClass, CounterKind, TimerKind};
+pub use symbols::{compile, compile_with_tags};
 
 use crate::core::DataType;
 use serde::{Deserialize, Serialize};

@@ -38,10 +38,20 @@ impl<F: Family + ?Sized> Symbolic<'_, F> {
 
     /// Resolves `text` through `f`: a tag's address, or the text itself as an operand. A word
     /// that is neither, and reads as a name, is an unknown symbol with the nearest tags.
-    fn through<T>(&self, text: &str, f: impl Fn(&str) -> std::result::Result<T, OperandError>) -> std::result::Result<T, OperandError> {
+    fn through<T>(
+        &self,
+        text: &str,
+        f: impl Fn(&str) -> std::result::Result<T, OperandError>,
+    ) -> std::result::Result<T, OperandError> {
         if let Some(t) = self.tag(text) {
             return f(&t.address).map_err(|e| OperandError {
-                message: msg!("tags-symbol-address", name = t.name.as_str(), address = t.address.as_str(), problem = e.message.as_str()).into(),
+                message: msg!(
+                    "tags-symbol-address",
+                    name = t.name.as_str(),
+                    address = t.address.as_str(),
+                    problem = e.message.as_str()
+                )
+                .into(),
                 hint: e.hint,
             });
         }
@@ -53,7 +63,10 @@ impl<F: Family + ?Sized> Symbolic<'_, F> {
             }
             let near = self.tags.suggest(word);
             if near.is_empty() {
-                OperandError { message: msg!("tags-unknown-symbol", name = word).into(), hint: e.hint.or(Some(e.message)) }
+                OperandError {
+                    message: msg!("tags-unknown-symbol", name = word).into(),
+                    hint: e.hint.or(Some(e.message)),
+                }
             } else {
                 OperandError {
                     message: msg!("tags-unknown-symbol-near", name = word, nearest = near.join(", ")).into(),
@@ -117,7 +130,12 @@ fn blank(text: &str, blocks: &[std::ops::Range<usize>]) -> String {
 /// ([`compile::compile`]) with the program's own `VAR_GLOBAL` tags and those of `tags` (a tag
 /// file given beside it). A problem of the declarations or of the merged table is refused as
 /// the tag table refuses it (`file:line:column: …`, every problem a cause).
-pub fn compile_with_tags<F: Family + ?Sized>(text: &str, file: &str, fam: &F, tags: Option<&TagTable>) -> Result<Program> {
+pub fn compile_with_tags<F: Family + ?Sized>(
+    text: &str,
+    file: &str,
+    fam: &F,
+    tags: Option<&TagTable>,
+) -> Result<Program> {
     let declared = mentions_var_global(text);
     if !declared && tags.is_none_or(|t| t.is_empty()) {
         return compile::compile(text, file, fam);
@@ -128,7 +146,8 @@ pub fn compile_with_tags<F: Family + ?Sized>(text: &str, file: &str, fam: &F, ta
     let own = if own.is_empty() && problems.list.is_empty() {
         TagTable::default()
     } else {
-        TagTable::from_tags(own, file, None, problems).map_err(|p| crate::core::encoding::printable_error(p.into_error()))?
+        TagTable::from_tags(own, file, None, problems)
+            .map_err(|p| crate::core::encoding::printable_error(p.into_error()))?
     };
     let mut all: Vec<Tag> = own.iter().cloned().collect();
     if let Some(extra) = tags {
@@ -136,7 +155,15 @@ pub fn compile_with_tags<F: Family + ?Sized>(text: &str, file: &str, fam: &F, ta
             if let Some(first) = own.get(&t.name) {
                 return Err(Error::new(
                     ErrorKind::Syntax,
-                    msg!("tags-declared-twice", file = file, line = first.line as i64, column = first.column as i64, name = first.name.as_str(), tags = extra.origin(), tag_line = t.line as i64),
+                    msg!(
+                        "tags-declared-twice",
+                        file = file,
+                        line = first.line as i64,
+                        column = first.column as i64,
+                        name = first.name.as_str(),
+                        tags = extra.origin(),
+                        tag_line = t.line as i64
+                    ),
                 ));
             }
             all.push(t.clone());
@@ -151,7 +178,15 @@ pub fn compile_with_tags<F: Family + ?Sized>(text: &str, file: &str, fam: &F, ta
             let origin = if i < own_count { file } else { tags.map_or(file, |x| x.origin()) };
             return Err(Error::new(
                 ErrorKind::Syntax,
-                msg!("tags-declared-address", file = origin, line = t.line as i64, column = t.column as i64, name = t.name.as_str(), address = t.address.as_str(), problem = e.message.as_str()),
+                msg!(
+                    "tags-declared-address",
+                    file = origin,
+                    line = t.line as i64,
+                    column = t.column as i64,
+                    name = t.name.as_str(),
+                    address = t.address.as_str(),
+                    problem = e.message.as_str()
+                ),
             )
             .operand(t.address.clone()));
         }
@@ -160,7 +195,11 @@ pub fn compile_with_tags<F: Family + ?Sized>(text: &str, file: &str, fam: &F, ta
         // Only a block without declarations: the program is an address program.
         return compile::compile(&blank(text, &blocks), file, fam);
     }
-    let text = if blocks.is_empty() { std::borrow::Cow::Borrowed(text) } else { std::borrow::Cow::Owned(blank(text, &blocks)) };
+    let text = if blocks.is_empty() {
+        std::borrow::Cow::Borrowed(text)
+    } else {
+        std::borrow::Cow::Owned(blank(text, &blocks))
+    };
     compile::compile(&text, file, &Symbolic { fam, tags: &table })
 }
 

@@ -42,12 +42,31 @@ pub fn every_family() -> Vec<Box<dyn OperandSpace>> {
     out
 }
 
-/// Checks a table read already for `space`'s family (and names against every family).
+/// Checks a table read already for `space`'s family (and names against every family); the
+/// overlaps it finds are the table's warnings ([`TagTable::checked`]).
 pub fn check(table: TagTable, space: &dyn OperandSpace) -> Result<TagTable, TagProblems> {
+    check_after(table, Vec::new(), space)
+}
+
+/// [`check`] of the good tags of a file whose reading found `problems` already: every
+/// problem of the file at once.
+fn check_after(
+    table: TagTable,
+    mut problems: Vec<TagProblem>,
+    space: &dyn OperandSpace,
+) -> Result<TagTable, TagProblems> {
     let others = every_family();
     let mut spaces: Vec<&dyn OperandSpace> = vec![space];
     spaces.extend(others.iter().map(|b| b.as_ref()));
-    table.checked(&spaces)
+    match table.checked(&spaces) {
+        Ok(t) if problems.is_empty() => Ok(t),
+        Ok(_) => Err(TagProblems(problems)),
+        Err(p) => {
+            problems.extend(p.0);
+            problems.sort_by_key(|p| (p.line, p.column));
+            Err(TagProblems(problems))
+        }
+    }
 }
 
 /// Reads a tag file (`format` `None`: told by its name and text) and checks it for `space`'s
@@ -62,5 +81,6 @@ pub fn load(path: &Path, format: Option<TagFormat>, space: &dyn OperandSpace) ->
             message: crate::msg!("tags-cannot-read", file = origin.as_str(), reason = e.to_string()),
         }])
     })?;
-    check(TagTable::parse(&bytes, &origin, format)?, space)
+    let (table, problems) = TagTable::read(&bytes, &origin, format);
+    check_after(table, problems, space)
 }

@@ -12,7 +12,7 @@ tags-name-is-keyword = `{ $name }` is an IEC 61131-3 keyword and cannot name a t
 tags-name-is-operand = `{ $name }` reads as an operand of { $family } and cannot name a tag (add a word: `{ $name }_val`)
 tags-no-name = a row has an address but no name
 tags-no-address = `{ $name }` has no address
-tags-bad-address = `{ $name }`: `{ $address }` is not an address (an address has no spaces: VW0, M0.3, %MW10)
+tags-bad-address = `{ $name }`: `{ $address }` is not an address (an address has no spaces and no `/TYPE`: VW0, M0.3, %MW10; the type goes in its own column)
 tags-unknown-type = `{ $name }`: unknown type `{ $dtype }` (BOOL, BYTE, SINT, WORD, INT, DWORD, DINT, REAL; UINT, UDINT, USINT too)
 tags-type-does-not-fit = `{ $name }`: type { $dtype } does not fit { $address } ({ $bits ->
     [one] { $bits } bit
@@ -46,3 +46,4 @@ tags-unknown-symbol-near = `{ $name }` is not a tag (nearest: { $nearest })
 tags-declared-address = { $file }:{ $line }:{ $column }: tag `{ $name }`: { $address } is not an operand of this PLC: { $problem }
 tags-declared-twice = { $file }:{ $line }:{ $column }: tag `{ $name }` is declared in the program and in { $tags } (line { $tag_line })
 tags-option-last = tags=FILE names the tag file and comes last: sim program load FILE.il tags=FILE.csv
+tags-warning = warning: { $warning }

@@ -12,7 +12,7 @@ tags-name-is-keyword = `{ $name }` — ключевое слово IEC 61131-3 �
 tags-name-is-operand = `{ $name }` читается как операнд { $family } и не может быть именем тега (добавьте слово: `{ $name }_val`)
 tags-no-name = в строке есть адрес, но нет имени
 tags-no-address = у `{ $name }` нет адреса
-tags-bad-address = `{ $name }`: `{ $address }` — не адрес (в адресе нет пробелов: VW0, M0.3, %MW10)
+tags-bad-address = `{ $name }`: `{ $address }` — не адрес (в адресе нет пробелов и `/TYPE`: VW0, M0.3, %MW10; тип пишется в своём столбце)
 tags-unknown-type = `{ $name }`: неизвестный тип `{ $dtype }` (BOOL, BYTE, SINT, WORD, INT, DWORD, DINT, REAL; также UINT, UDINT, USINT)
 tags-type-does-not-fit = `{ $name }`: тип { $dtype } не подходит к { $address } ({ $bits ->
     [one] { $bits } бит
@@ -48,3 +48,4 @@ tags-unknown-symbol-near = `{ $name }` — не тег (ближайшие: { $n
 tags-declared-address = { $file }:{ $line }:{ $column }: тег `{ $name }`: { $address } — не операнд этого ПЛК: { $problem }
 tags-declared-twice = { $file }:{ $line }:{ $column }: тег `{ $name }` объявлен и в программе, и в { $tags } (строка { $tag_line })
 tags-option-last = tags=FILE задаёт файл тегов и стоит последним: sim program load FILE.il tags=FILE.csv
+tags-warning = предупреждение: { $warning }

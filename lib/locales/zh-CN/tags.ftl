@@ -12,7 +12,7 @@ tags-name-is-keyword = `{ $name }` 是 IEC 61131-3 关键字, 不能作为标签
 tags-name-is-operand = `{ $name }` 可读作 { $family } 的操作数, 不能作为标签名称 (加一个词: `{ $name }_val`)
 tags-no-name = 某行有地址但没有名称
 tags-no-address = `{ $name }` 没有地址
-tags-bad-address = `{ $name }`: `{ $address }` 不是地址 (地址中没有空格: VW0、M0.3、%MW10)
+tags-bad-address = `{ $name }`: `{ $address }` 不是地址 (地址中没有空格和 `/TYPE`: VW0、M0.3、%MW10; 类型写在自己的列中)
 tags-unknown-type = `{ $name }`: 未知的类型 `{ $dtype }` (BOOL、BYTE、SINT、WORD、INT、DWORD、DINT、REAL; 也可用 UINT、UDINT、USINT)
 tags-type-does-not-fit = `{ $name }`: 类型 { $dtype } 与 { $address } 不符 ({ $bits } 位)
 tags-resolve-failed = `{ $name }`: { $address } 在此不是操作数: { $problem }
@@ -40,3 +40,4 @@ tags-unknown-symbol-near = `{ $name }` 不是标签 (最接近的: { $nearest })
 tags-declared-address = { $file }:{ $line }:{ $column }: 标签 `{ $name }`: { $address } 不是此 PLC 的操作数: { $problem }
 tags-declared-twice = { $file }:{ $line }:{ $column }: 标签 `{ $name }` 在程序和 { $tags } (第 { $tag_line } 行) 中都有声明
 tags-option-last = tags=FILE 指定标签文件, 放在最后: sim program load FILE.il tags=FILE.csv
+tags-warning = 警告: { $warning }

@@ -147,7 +147,9 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
                     None => None,
                 };
                 let msg = s.load_program_with_tags(&text, &path, tags.as_ref()).map_err(|e| e.device(name.clone()))?;
-                Ok(status(s, &name).text(msg))
+                let mut o = status(s, &name).text(msg);
+                o.notes.extend(tags.iter().flat_map(|t| t.warnings()).map(|w| w.to_string()));
+                Ok(o)
             }
             Some("costs") => {
                 let t = s.set_costs(&words[2..].join(" ")).map_err(|e| e.device(name.clone()))?;
