@@ -348,3 +348,26 @@ fn load_errors_name_the_unknown_symbol_and_the_nearest_tag() {
         "{e}"
     );
 }
+
+/// A command word cannot name a tag (`get get` would read two ways): the list the tag
+/// module keeps is the shell's command registry (names and aliases) and the program's
+/// sub-commands, no more and no less.
+#[test]
+fn the_taken_command_words_are_the_registry_s() {
+    use clap::CommandFactory;
+    let mut words: Vec<String> = Vec::new();
+    for c in plcsh::shell::commands::COMMANDS {
+        words.push(c.name.to_string());
+        words.extend(c.aliases.iter().map(|a| a.to_string()));
+    }
+    for sub in plcsh::cli::Cli::command().get_subcommands() {
+        words.push(sub.get_name().to_string());
+    }
+    words.retain(|w| w != "help" || plcsh::shell::commands::find("help").is_some());
+    words.retain(|w| w.chars().all(|c| c.is_alphanumeric() || c == '_'));
+    words.sort();
+    words.dedup();
+    let mut kept: Vec<String> = name::COMMAND_WORDS.iter().map(|w| w.to_string()).collect();
+    kept.sort();
+    assert_eq!(kept, words, "plcsh::tags::name::COMMAND_WORDS differs from the command registry");
+}

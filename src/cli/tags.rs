@@ -113,8 +113,8 @@ pub fn run(args: &TagsArgs, style: Style, out: &mut dyn Write) -> i32 {
         exit::for_error(e.kind)
     };
     let (cmd, file, opts) = match (&args.cmd, &args.file) {
-        (Some(TagsCmd::Check { file, opts }), _) => ("tags check", file, opts),
-        (Some(TagsCmd::Export { file, opts, .. }), _) => ("tags export", file, opts),
+        (Some(TagsCmd::Check { file, opts }), _) => ("tags", file, opts),
+        (Some(TagsCmd::Export { file, opts, .. }), _) => ("tags", file, opts),
         (None, Some(file)) => ("tags", file, &args.opts),
         (None, None) => {
             return fail(out, "tags", &Error::usage(crate::msg!("tags-usage")));
@@ -126,7 +126,8 @@ pub fn run(args: &TagsArgs, style: Style, out: &mut dyn Write) -> i32 {
     };
     let table = match load_checked(file, opts.format.map(FormatArg::format), space.as_ref()) {
         Ok(t) => t,
-        Err(p) => return report(out, style, cmd, &p, cmd == "tags check"),
+        // `check` prints what it was asked to find on standard output.
+        Err(p) => return report(out, style, cmd, &p, matches!(args.cmd, Some(TagsCmd::Check { .. }))),
     };
     let warnings: Vec<String> = table.warnings().iter().map(|w| w.to_string()).collect();
     match &args.cmd {
