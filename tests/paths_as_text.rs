@@ -480,7 +480,10 @@ fn tag_files() {
     assert!(ok(&plcsh().args(["tags", t]).output_retrying().unwrap()).contains("Start_Button"));
     assert!(ok(&plcsh().args(["tags", "check", t]).output_retrying().unwrap()).contains("2 tags"));
     let iec = dir.join("экспорт 'теги'.st");
-    ok(&plcsh().args(["tags", "export", t, "--to", "iec", "--output", iec.to_str().unwrap()]).output_retrying().unwrap());
+    ok(&plcsh()
+        .args(["tags", "export", t, "--to", "iec", "--output", iec.to_str().unwrap()])
+        .output_retrying()
+        .unwrap());
     assert!(std::fs::read_to_string(&iec).unwrap().contains("Start_Button AT %IX0.0 : BOOL;"));
     // In the shell: the program and its tag file, each a path with spaces, in quotes.
     let prog = dir.join("программа 1.il");

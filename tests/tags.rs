@@ -401,3 +401,25 @@ fn the_taken_command_words_are_the_registry_s() {
     kept.sort();
     assert_eq!(kept, words, "plcsh::tags::name::COMMAND_WORDS differs from the command registry");
 }
+
+/// A program loaded with a tag file beside it is kept with the tags, so a snapshot restores
+/// it without the file (the docs' example program and tag file).
+#[test]
+fn a_snapshot_of_a_program_with_a_tag_file_restores_without_the_file() {
+    let dir = world("snapshot");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    for f in ["batch.il", "press1.csv"] {
+        std::fs::copy(root.join("docs/tags").join(f), dir.join(f)).unwrap();
+    }
+    let line = "sim program load batch.il tags=press1.csv; sim scan 2; sim snapshot save snap.json";
+    let o = plcsh_in(&dir, &["--time", "stepped", "--state", "none", "-c", line]);
+    assert!(o.status.success(), "{}", common::both(&o));
+    std::fs::remove_file(dir.join("press1.csv")).unwrap();
+    let o = plcsh_in(
+        &dir,
+        &["--time", "stepped", "--state", "none", "-c", "sim snapshot restore snap.json; sim scan 2; get VW10"],
+    );
+    assert!(o.status.success(), "{}", common::both(&o));
+    assert!(common::stdout(&o).contains("VW10  5"), "{}", common::both(&o));
+    let _ = std::fs::remove_dir_all(&dir);
+}
