@@ -27,6 +27,7 @@ pub const COMMAND_WORDS: &[&str] = &[
     "close",
     "completions",
     "connect",
+    "data",
     "devices",
     "eeprom",
     "events",
