@@ -56,22 +56,48 @@ const WINE_TRANSIENT: i32 = 1359;
 
 impl Start for Command {
     fn output_retrying(&mut self) -> std::io::Result<Output> {
-        for _ in 0..4 {
+        let mut tries = Retries::new();
+        loop {
             match self.output() {
-                Err(e) if e.raw_os_error() == Some(WINE_TRANSIENT) => continue,
+                Err(e) if tries.again(&e) => continue,
                 r => return r,
             }
         }
-        self.output()
     }
     fn spawn_retrying(&mut self) -> std::io::Result<std::process::Child> {
-        for _ in 0..4 {
+        let mut tries = Retries::new();
+        loop {
             match self.spawn() {
-                Err(e) if e.raw_os_error() == Some(WINE_TRANSIENT) => continue,
+                Err(e) if tries.again(&e) => continue,
                 r => return r,
             }
         }
-        self.spawn()
+    }
+}
+
+/// When a start that failed for a passing reason is tried again: Wine's transient error (four
+/// times), and "text file busy" — a program the test has just copied is still open for writing
+/// in a child that another test's thread forked at that instant and that has not yet exec'd;
+/// it closes as soon as that child execs, so the start is tried again for up to 10 s.
+struct Retries {
+    wine: u32,
+    until: std::time::Instant,
+}
+
+impl Retries {
+    fn new() -> Retries {
+        Retries { wine: 0, until: std::time::Instant::now() + std::time::Duration::from_secs(10) }
+    }
+    fn again(&mut self, e: &std::io::Error) -> bool {
+        if e.raw_os_error() == Some(WINE_TRANSIENT) && self.wine < 4 {
+            self.wine += 1;
+            return true;
+        }
+        if e.kind() == std::io::ErrorKind::ExecutableFileBusy && std::time::Instant::now() < self.until {
+            std::thread::sleep(std::time::Duration::from_millis(10));
+            return true;
+        }
+        false
     }
 }
 
