@@ -28,5 +28,6 @@ pub mod session;
 pub mod shell;
 pub mod signals;
 pub mod snapshot;
+pub mod tags;
 pub mod umpk;
 pub mod wiring;

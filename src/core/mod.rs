@@ -28,5 +28,5 @@ pub mod wiring;
 pub use clock::Clock;
 pub use device::{Device, DeviceInfo};
 pub use error::{Error, ErrorKind, Result};
-pub use operand::{Candidate, Operand, OperandSpace};
+pub use operand::{Candidate, Operand, OperandSpace, Span};
 pub use value::{DataType, Value};

@@ -64,6 +64,17 @@ pub struct Candidate {
     pub meaning: String,
 }
 
+/// The memory an operand occupies, in its family's own numbering: `area` (any number the
+/// family chooses, one per independent memory), the first bit and the number of bits. Two
+/// operands overlap when their areas are equal and their bit ranges meet (tag tables use it
+/// to find two names on overlapping addresses).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct Span {
+    pub area: u32,
+    pub first_bit: u64,
+    pub bits: u64,
+}
+
 /// A device family's operand grammar, bound to one model (so bounds are known).
 pub trait OperandSpace: Send + Sync {
     /// Family name, e.g. `k2`, `servo`.
@@ -79,6 +90,11 @@ pub trait OperandSpace: Send + Sync {
     fn help(&self, text: &str) -> Result<String>;
     /// Candidates that start with `prefix` (case-insensitive), for completion.
     fn complete(&self, prefix: &str) -> Vec<Candidate>;
+    /// The memory `op` occupies ([`Span`]); `None` (the default) when the family does not
+    /// say, and then no overlap is looked for.
+    fn span(&self, _op: &Operand) -> Option<Span> {
+        None
+    }
     /// Parses the value text of `set OP=VALUE` for this operand and checks that it fits.
     /// The default reads an IEC literal; a family overrides it to accept its own value
     /// syntax (e.g. a servo's `300rpm`). Errors carry a column within `text`.

@@ -196,6 +196,20 @@ impl OperandSpace for K2Space {
         K2Operand::from_key(op.key).canonical()
     }
 
+    /// Bit areas by byte and bit (K2 manual §3.2: `VB0`, `VW0`, `VD0`, `V0.0` share bytes);
+    /// a timer or counter is one element whatever its view (`T5`, `T5/BOOL`).
+    fn span(&self, op: &Operand) -> Option<crate::core::Span> {
+        let k = K2Operand::from_key(op.key);
+        let area = Area::ALL.iter().position(|a| *a == k.area)? as u32;
+        let (first_bit, bits) = match k.width {
+            Width::Bit(b) => (k.byte as u64 * 8 + b as u64, 1),
+            Width::Group { n, bit } => (k.byte as u64 * 8 + bit as u64, 4 * n as u64),
+            Width::Element => (k.byte as u64 * 64, 64),
+            w => (k.byte as u64 * 8, w.bytes() as u64 * 8),
+        };
+        Some(crate::core::Span { area, first_bit, bits })
+    }
+
     fn describe(&self, op: &Operand) -> Option<String> {
         let k = K2Operand::from_key(op.key);
         if let Some(n) = sm_name(&k) {

@@ -1,1 +1,33 @@
 # plcsh messages (zh-CN): tags. Same ids and arguments in en, ru and zh-CN (tests/messages.rs).
+tags-cannot-read = 无法读取标签文件 { $file }: { $reason }
+tags-bad-encoding = { $problem }
+tags-empty = { $file } 中没有标签
+tags-duplicate = `{ $name }` 重复定义 (已作为 `{ $first }` 定义于第 { $line } 行; 名称不区分大小写)
+tags-name-empty = 标签的名称为空
+tags-name-bad-start = `{ $name }` 不能作为标签名称: 以 `{ $char }` 开头 (名称以字母或 `_` 开头)
+tags-name-bad-char = `{ $name }` 不能作为标签名称: `{ $char }` 不是字母、数字或 `_`
+tags-name-underscores = `{ $name }` 不能作为标签名称: 连续两个 `_` 或以 `_` 结尾 (IEC 61131-3 标识符)
+tags-name-is-command = `{ $name }` 是 plcsh 的命令词, 不能作为标签名称
+tags-name-is-keyword = `{ $name }` 是 IEC 61131-3 关键字, 不能作为标签名称
+tags-name-is-operand = `{ $name }` 可读作 { $family } 的操作数, 不能作为标签名称 (加一个词: `{ $name }_val`)
+tags-no-name = 某行有地址但没有名称
+tags-no-address = `{ $name }` 没有地址
+tags-bad-address = `{ $name }`: `{ $address }` 不是地址 (地址中没有空格: VW0、M0.3、%MW10)
+tags-unknown-type = `{ $name }`: 未知的类型 `{ $dtype }` (BOOL、BYTE、SINT、WORD、INT、DWORD、DINT、REAL; 也可用 UINT、UDINT、USINT)
+tags-type-does-not-fit = `{ $name }`: 类型 { $dtype } 与 { $address } 不符 ({ $bits } 位)
+tags-resolve-failed = `{ $name }`: { $address } 在此不是操作数: { $problem }
+tags-address-is-range = `{ $address }` 是一个范围; 标签的地址是一个操作数
+tags-overlap = `{ $name }` ({ $address }) 与 `{ $other }` ({ $other_address }, 第 { $line } 行) 重叠
+tags-csv-unclosed-quote = 此处开始的引号没有闭合 (引号字段中的引号要写两次: "")
+tags-csv-no-column = 表头行没有 { $column } 列 (表头的词: 名称、地址、类型、注释)
+tags-toml-syntax = 不是 TOML: { $detail }
+tags-toml-no-table = 文件中没有 [tags] 表
+tags-toml-entry = `{ $name }`: 写一个地址 ("VW0") 或一个表 ({ "{" } address = "VW0", type = "INT", comment = "…" { "}" })
+tags-toml-unknown-key = `{ $name }`: 未知的键 `{ $key }` (address、type、comment)
+tags-toml-not-text = `{ $name }`: `{ $key }` 必须是带引号的文本
+tags-iec-expected = 应为 { $expected }, 实为 `{ $found }`
+tags-iec-one-name = `{ $name }`: 带地址的声明只能有一个名称 (IEC 61131-3 §6.5.5)
+tags-iec-no-address = `{ $name }` 没有地址 (写作 `{ $name } AT %MW10 : INT;`)
+tags-iec-no-block = 文件中没有 VAR_GLOBAL … END_VAR 块
+tags-iec-unclosed-block = VAR_GLOBAL 没有 END_VAR
+tags-iec-unclosed-comment = 此处以 (* 开始的注释没有以 *) 结束
