@@ -17,22 +17,10 @@
 //! operand grammar's own view suffix.
 
 use crate::core::text::edit_distance;
-use crate::core::{Candidate, DataType, Error, ErrorKind, Operand, OperandSpace, Result};
+use crate::core::{Candidate, Operand, OperandSpace, Result};
+use crate::tags::TagTable;
 use std::collections::HashMap;
 use std::sync::Arc;
-
-/// One tag as the table gives it, before it is resolved against a device.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Source<'a> {
-    pub name: &'a str,
-    /// The address as written in the file (`VD200`, `%MW10`, `M0.3`).
-    pub address: &'a str,
-    /// The declared type, when the file gives one.
-    pub dtype: Option<DataType>,
-    pub comment: &'a str,
-    /// The line of the file, for messages.
-    pub line: usize,
-}
 
 /// A tag resolved on one device.
 #[derive(Clone, Debug, PartialEq)]
@@ -54,78 +42,37 @@ pub struct Names {
     by_op: HashMap<Operand, u32>,
 }
 
-/// The IEC identifier's case fold (names are compared without case).
+/// The IEC identifier's case fold (names are compared without case), as the table folds.
 pub fn fold(name: &str) -> String {
-    if name.bytes().all(|b| b.is_ascii() && !b.is_ascii_uppercase()) {
-        return name.to_string();
-    }
-    name.to_lowercase()
+    crate::tags::name::fold(name).into_owned()
 }
 
-/// The most problems one load reports one by one (the rest are counted).
-const SHOWN: usize = 20;
-
 impl Names {
-    /// Resolves `tags` (from `file`) through a device's operand grammar. Every address that the
-    /// device does not have, or whose type does not fit, is one problem with `file:line`; any
-    /// problem refuses the whole table (a half-attached table would make a name mean nothing
-    /// on one command and something on the next).
-    pub fn resolve<'a>(
-        file: &str,
-        tags: impl IntoIterator<Item = Source<'a>>,
-        space: &dyn OperandSpace,
-    ) -> Result<Names> {
-        let mut n = Names { file: file.to_string(), ..Names::default() };
-        let mut problems: Vec<String> = Vec::new();
-        let mut count = 0usize;
-        for t in tags {
-            match resolve_one(&t, space) {
-                Ok(op) => {
-                    let key = fold(t.name);
-                    if n.by_name.contains_key(&key) {
-                        count += 1;
-                        if problems.len() < SHOWN {
-                            problems.push(format!(
-                                "{file}:{}: {}",
-                                t.line,
-                                crate::msg!("names-duplicate", name = t.name)
-                            ));
-                        }
-                        continue;
-                    }
-                    let i = n.list.len() as u32;
-                    n.by_name.insert(key, i);
-                    n.by_op.entry(op).or_insert(i);
-                    n.list.push(Named {
-                        name: t.name.to_string(),
-                        op,
-                        operand: space.name(&op),
-                        comment: t.comment.to_string(),
-                    });
-                }
-                Err(e) => {
-                    count += 1;
-                    if problems.len() < SHOWN {
-                        problems.push(format!("{file}:{}: {}: {}", t.line, t.name, e.message));
-                    }
-                }
-            }
+    /// Resolves `table` on a device's operand grammar, after the checks that need the device
+    /// (a name that reads as one of its operands, an address it does not have, a type that
+    /// does not fit, overlaps: [`TagTable::check`]). Any problem refuses the whole table, each
+    /// with its `file:line:column`: a half-attached table would make a name mean nothing on
+    /// one command and something on the next.
+    pub fn resolve(table: &TagTable, space: &dyn OperandSpace) -> Result<Names> {
+        let problems = table.check(&[space]);
+        if !problems.is_empty() {
+            return Err(crate::tags::TagProblems(problems)
+                .into_error()
+                .hint(crate::msg!("names-hint-check", file = table.origin())));
         }
-        if count == 0 {
-            return Ok(n);
+        let mut n = Names { file: table.origin().to_string(), ..Names::default() };
+        n.list.reserve(table.len());
+        for t in table.iter() {
+            let op = t.resolve(space)?;
+            let i = n.list.len() as u32;
+            n.by_name.insert(fold(&t.name), i);
+            n.by_op.entry(op).or_insert(i);
+            n.list.push(Named { name: t.name.clone(), op, operand: space.name(&op), comment: t.comment.clone() });
         }
-        let more = count - problems.len();
-        let mut message = problems.join("\n");
-        if more > 0 {
-            message.push('\n');
-            message.push_str(&crate::msg!("names-more-problems", count = more).text);
-        }
-        Err(Error::new(ErrorKind::Syntax, crate::msg!("names-not-attached", file = file, count = count))
-            .cause(message)
-            .hint(crate::msg!("names-hint-check", file = file)))
+        Ok(n)
     }
 
-    /// The tag called `name` (any case).
+/// The tag called `name` (any case).
     pub fn get(&self, name: &str) -> Option<&Named> {
         if self.list.is_empty() {
             return None;
@@ -224,64 +171,9 @@ pub enum Expanded {
     Text(String),
 }
 
-/// One tag's operand: its address in the view of its type.
-fn resolve_one(t: &Source, space: &dyn OperandSpace) -> Result<Operand> {
-    let ops = space.parse(t.address)?;
-    let [op] = ops[..] else {
-        return Err(Error::new(ErrorKind::Operand, crate::msg!("names-not-one-operand", address = t.address)));
-    };
-    let Some(want) = t.dtype else { return Ok(op) };
-    if op.dtype == want || (want == DataType::Bool && op.bits == 1) {
-        return Ok(op);
-    }
-    let viewed = format!("{}/{}", t.address.trim(), want.name());
-    match space.parse(&viewed) {
-        Ok(v) if v.len() == 1 => Ok(v[0]),
-        _ => Err(Error::new(
-            ErrorKind::Operand,
-            crate::msg!("names-type-does-not-fit", address = t.address, dtype = want.name(), bits = op.bits),
-        )),
-    }
-}
-
-/// A tag file as loaded, before it is resolved against a device: what a device entry keeps
-/// until its operand grammar can be asked (a device not connected yet resolves it when it is).
-#[derive(Clone, Debug, Default)]
-pub struct Tags {
-    pub file: String,
-    pub items: Vec<Item>,
-}
-
-/// One tag of [`Tags`], owned.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Item {
-    pub name: String,
-    pub address: String,
-    pub dtype: Option<DataType>,
-    pub comment: String,
-    pub line: usize,
-}
-
-impl Tags {
-    pub fn sources(&self) -> impl Iterator<Item = Source<'_>> {
-        self.items.iter().map(|t| Source {
-            name: &t.name,
-            address: &t.address,
-            dtype: t.dtype,
-            comment: &t.comment,
-            line: t.line,
-        })
-    }
-
-    /// Resolves the table on a device's grammar ([`Names::resolve`]).
-    pub fn resolve(&self, space: &dyn OperandSpace) -> Result<Names> {
-        Names::resolve(&self.file, self.sources(), space)
-    }
-}
-
-/// Loads tag file `path` with the tag-table parsers ([`crate::tags`]).
-pub fn load(path: &std::path::Path) -> Result<Tags> {
-    Err(Error::unsupported(format!("{}: tag files cannot be read yet", path.display())))
+/// Loads tag file `path` ([`TagTable::load`]; its problems as one error, each with its line).
+pub fn load(path: &std::path::Path) -> Result<TagTable> {
+    TagTable::load(path).map_err(crate::tags::TagProblems::into_error)
 }
 
 /// What a device's names are when it has none.
@@ -293,30 +185,22 @@ pub fn none() -> Arc<Names> {
 mod tests {
     use super::*;
 
-    fn space() -> Box<dyn crate::core::Device> {
+    fn device() -> Box<dyn crate::core::Device> {
         crate::session::open_url("sim:K205-16DT", &crate::core::Clock::stepped()).unwrap()
     }
 
-    fn src<'a>(name: &'a str, address: &'a str, dtype: Option<DataType>, comment: &'a str) -> Source<'a> {
-        Source { name, address, dtype, comment, line: 1 }
+    fn table(text: &str) -> TagTable {
+        TagTable::parse_text(text, "t.csv", None).unwrap()
     }
 
     #[test]
     fn names_resolve_both_ways_with_the_view_of_their_type() {
-        let d = space();
-        let n = Names::resolve(
-            "t.csv",
-            [
-                src("Tank2_Level", "VD200", Some(DataType::Real), "уровень"),
-                src("Мотор_1_Пуск", "M0.3", Some(DataType::Bool), ""),
-                src("电机", "VW10", Some(DataType::Word), ""),
-            ],
-            d.operands(),
-        )
-        .unwrap();
-        let t = n.get("tank2_level").unwrap();
-        assert_eq!(t.operand, "VD200/REAL");
-        assert_eq!(t.op.dtype, DataType::Real);
+        let d = device();
+        let t = table("name,address,type,comment\nTank2_Level,VD200,REAL,уровень\nМотор_1_Пуск,M0.3,BOOL,\n电机,VW10,WORD,\n");
+        let n = Names::resolve(&t, d.operands()).unwrap();
+        let tank = n.get("tank2_level").unwrap();
+        assert_eq!(tank.operand, "VD200/REAL");
+        assert_eq!(tank.op.dtype, crate::core::DataType::Real);
         assert_eq!(n.get("МОТОР_1_ПУСК").unwrap().operand, "M0.3");
         assert_eq!(n.get("电机").unwrap().operand, "VW10");
         let op = d.operands().parse("VD200/REAL").unwrap()[0];
@@ -331,23 +215,13 @@ mod tests {
     }
 
     #[test]
-    fn a_bad_tag_refuses_the_table_with_its_line() {
-        let d = space();
-        let e = Names::resolve(
-            "t.csv",
-            [
-                Source { name: "A", address: "VW0", dtype: None, comment: "", line: 3 },
-                Source { name: "a", address: "VW2", dtype: None, comment: "", line: 4 },
-                Source { name: "B", address: "VW99999", dtype: None, comment: "", line: 5 },
-                Source { name: "C", address: "VB0", dtype: Some(DataType::Real), comment: "", line: 6 },
-            ],
-            d.operands(),
-        )
-        .unwrap_err();
-        let all = e.causes.join("\n");
-        assert!(all.contains("t.csv:4:"), "{all}");
-        assert!(all.contains("t.csv:5: B"), "{all}");
-        assert!(all.contains("t.csv:6: C"), "{all}");
-        assert!(e.message.contains('3'), "{e}");
+    fn a_tag_the_device_does_not_have_refuses_the_table_with_its_line() {
+        let d = device();
+        let t = table("name,address,type\nA,VW0,INT\nB,VW99999,INT\nC,VB0,REAL\n");
+        let e = Names::resolve(&t, d.operands()).unwrap_err();
+        let all = format!("{}\n{}", e.message, e.causes.join("\n"));
+        assert!(all.contains("t.csv:3"), "{all}");
+        assert!(all.contains("t.csv:4"), "{all}");
+        assert!(!all.contains("t.csv:2"), "{all}");
     }
 }

@@ -31,7 +31,7 @@ pub struct Entry {
     pub names: Arc<crate::names::Names>,
     /// A tag file not resolved yet (the device was not connected when it was given): resolved
     /// when the device is made ready.
-    pub tags: Option<Arc<crate::names::Tags>>,
+    pub tags: Option<Arc<crate::tags::TagTable>>,
 }
 
 /// How `set` items arrive: operand text and value text, with their columns in the line.
@@ -246,7 +246,8 @@ impl Session {
         if let Some(tags) = e.tags.clone() {
             // A tag file given before the device was connected: resolved now, and reported on
             // every command until it resolves (a name must not mean nothing silently).
-            e.names = Arc::new(tags.resolve(e.device.operands()).map_err(|err| err.device(&e.name))?);
+            e.names =
+                Arc::new(crate::names::Names::resolve(&tags, e.device.operands()).map_err(|err| err.device(&e.name))?);
             e.tags = None;
         }
         Ok(())
@@ -255,18 +256,18 @@ impl Session {
     /// Gives device `i` the tags of `tags` (`tags = "…"` in a profile, `--tags`,
     /// `plc:tags_load`): resolved on its operand grammar now, or when it is connected if it
     /// is not yet. Returns how many names the device has.
-    pub fn attach_tags(&mut self, i: usize, tags: crate::names::Tags) -> Result<usize> {
+    pub fn attach_tags(&mut self, i: usize, tags: crate::tags::TagTable) -> Result<usize> {
         let e = &mut self.devices[i];
         let waiting = tags
-            .items
-            .first()
+            .iter()
+            .next()
             .is_some_and(|t| e.device.operands().parse(&t.address).is_err_and(|x| x.kind == crate::core::ErrorKind::Link));
         if waiting {
-            let n = tags.items.len();
+            let n = tags.len();
             e.tags = Some(Arc::new(tags));
             return Ok(n);
         }
-        let names = tags.resolve(e.device.operands()).map_err(|err| err.device(&e.name))?;
+        let names = crate::names::Names::resolve(&tags, e.device.operands()).map_err(|err| err.device(&e.name))?;
         let n = names.len();
         e.names = Arc::new(names);
         e.tags = None;
