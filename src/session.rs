@@ -373,6 +373,10 @@ impl Session {
         }
         let guard = crate::profile::Guard::build(p, device.operands()).map_err(|e| e.device(name))?;
         self.add_guarded(name, &p.url, device, guard);
+        if let Some(tags) = &p.tags {
+            let i = self.index(name)?;
+            self.load_tags(i, tags).map_err(|e| e.cause(&from))?;
+        }
         Ok(())
     }
 

@@ -156,18 +156,20 @@ struct Dev {
 }
 
 impl Dev {
-    /// The leaf of operand `name` (made on its first reading).
-    fn leaf(&mut self, group: &str, name: &str, dtype: crate::core::DataType) -> usize {
+    /// The leaf of operand `name` (made on its first reading). A tag's name (`crate::names`)
+    /// is the topic's last level and rides in the payload as `name` beside `operand`.
+    fn leaf(&mut self, group: &str, name: &str, tag: Option<&str>, dtype: crate::core::DataType) -> usize {
         if let Some(&i) = self.leaf_of.get(name) {
             return i;
         }
         let i = self.leaves.len();
         let dtype = serde_json::to_string(&dtype).unwrap_or_else(|_| "null".into());
+        let tag_field = tag.map(|t| format!(",\"name\":{}", serde_json::Value::from(t))).unwrap_or_default();
         self.leaves.push(Leaf {
-            topic: super::topic(group, &self.name, name),
+            topic: super::topic(group, &self.name, tag.unwrap_or(name)),
             mid: format!(",\"type\":{dtype},\"ts\":"),
             tail: format!(
-                ",\"device\":{},\"operand\":{}}}",
+                ",\"device\":{},\"operand\":{}{tag_field}}}",
                 serde_json::Value::from(self.name.as_str()),
                 serde_json::Value::from(name)
             ),
@@ -190,12 +192,13 @@ impl Dev {
                 return None;
             }
             for op in target.ops {
-                named.push((op, session.name_of(target.device, &op)));
+                let tag = session.tag_of(target.device, &op).map(|t| t.name.clone());
+                named.push((op, session.name_of(target.device, &op), tag));
             }
         }
         let device = device?;
-        let leaves = named.iter().map(|(op, name)| self.leaf(group, name, op.dtype)).collect();
-        self.plan = Some(Plan { device, ops: named.into_iter().map(|(op, _)| op).collect(), leaves });
+        let leaves = named.iter().map(|(op, name, tag)| self.leaf(group, name, tag.as_deref(), op.dtype)).collect();
+        self.plan = Some(Plan { device, ops: named.into_iter().map(|(op, ..)| op).collect(), leaves });
         Some(())
     }
 }
@@ -500,11 +503,9 @@ impl Pool {
                         let texts: Vec<&str> = self.texts.iter().map(String::as_str).collect();
                         match session.get(&texts) {
                             Ok(readings) => {
-                                let named: Vec<(String, crate::core::DataType, Value)> =
-                                    readings.into_iter().map(|(_, r)| (r.operand, r.dtype, r.value)).collect();
-                                Ok(named
+                                Ok(readings
                                     .into_iter()
-                                    .map(|(name, dtype, value)| (d.leaf(&p.group, &name, dtype), value))
+                                    .map(|(_, r)| (d.leaf(&p.group, &r.operand, r.name.as_deref(), r.dtype), r.value))
                                     .collect())
                             }
                             Err(e) => Err(e),
