@@ -673,6 +673,53 @@ mod tests {
         assert_eq!(j["value"], 0);
     }
 
+    /// A tag's name is the topic's last level on every poll (the first through the session's
+    /// reader, the later ones through the resolved plan), and the payload carries `name` beside
+    /// `operand` (docs/tags.md, "How names appear"); an operand without a tag keeps its topic.
+    #[test]
+    fn a_named_operand_is_published_under_its_name_with_name_and_operand_in_the_payload() {
+        let mut s = Session::new(crate::core::Clock::following());
+        s.open("press", "sim:K205-16DT").unwrap();
+        let table = crate::tags::TagTable::parse_text(
+            "name,address,type,comment\nTank2_Level,VD200,REAL,\nМотор_1_Пуск,M0.3,BOOL,\n",
+            "t.csv",
+            None,
+        )
+        .unwrap();
+        s.attach_tags(0, table).unwrap();
+        let outbox = Arc::new(Outbox::new(1000, 1));
+        let (tx, _rx) = std::sync::mpsc::channel();
+        let poll = Poll {
+            group: "g".into(),
+            operands: vec!["Tank2_Level".into(), "Мотор_1_Пуск".into(), "VW0".into()],
+            every: Duration::from_millis(5),
+            deadband: None,
+            count: Some(3),
+        };
+        let pool = Pool::start(vec![Member { name: "press".into(), session: Ok(s), reopen: None }], poll, outbox.clone(), tx)
+            .unwrap();
+        pool.join();
+        let mut all = Vec::new();
+        outbox.take(usize::MAX, &mut all);
+        for (topic, operand, name) in [
+            ("plcsh/g/press/Tank2_Level", "VD200/REAL", Some("Tank2_Level")),
+            ("plcsh/g/press/Мотор_1_Пуск", "M0.3", Some("Мотор_1_Пуск")),
+            ("plcsh/g/press/VW0", "VW0", None),
+        ] {
+            let got: Vec<serde_json::Value> = all
+                .iter()
+                .filter(|m| m.topic == topic)
+                .map(|m| serde_json::from_slice(&m.payload).unwrap())
+                .collect();
+            assert_eq!(got.len(), 3, "{topic}: every poll");
+            for j in got {
+                assert_eq!(j["operand"], operand, "{j}");
+                assert_eq!(j["device"], "press", "{j}");
+                assert_eq!(j.get("name").and_then(|n| n.as_str()), name, "{j}");
+            }
+        }
+    }
+
     #[test]
     fn a_poll_that_overruns_its_slots_skips_them_and_counts_them() {
         // A device whose poll takes longer than the period: a write queued for it runs first
