@@ -26,6 +26,16 @@ fn device_of(session: &Session, cmd: &str, words: &[(usize, &str)]) -> Option<us
         if let Some(i) = words.first().and_then(|w| session.index(w.1).ok()) {
             return Some(i);
         }
+        // Without a device word, `servo …` and `umpk …` act on the current device if it is
+        // of their family, else on the first open one that is.
+        let family = if cmd == "agent" { "k2" } else { cmd };
+        let of = |i: usize| session.entries()[i].device.info().family == family;
+        if let Some(i) = session.current_index().ok().filter(|&i| of(i)) {
+            return Some(i);
+        }
+        if let Some(i) = (0..session.entries().len()).find(|&i| of(i)) {
+            return Some(i);
+        }
     }
     session.current_index().ok()
 }
