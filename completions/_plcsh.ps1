@@ -59,6 +59,7 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             [CompletionResult]::new('replay', 'replay', [CompletionResultType]::ParameterValue, 'Replay a recording''s requests against a simulator and report every reply that differs')
             [CompletionResult]::new('lab', 'lab', [CompletionResultType]::ParameterValue, 'Teaching labs: `lab new NAME`, `lab check LAB`, `lab grade LAB SUBMISSIONS…` (sandboxed, in parallel)')
             [CompletionResult]::new('publish', 'publish', [CompletionResultType]::ParameterValue, 'Poll operands on a device or a fleet and publish them to an MQTT broker (docs/fleets.md)')
+            [CompletionResult]::new('tags', 'tags', [CompletionResultType]::ParameterValue, 'Tag tables (docs/tags.md): `tags FILE` lists the names, `tags check FILE` checks them, `tags export FILE --to csv|iec` writes them in another form')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
         }
@@ -660,6 +661,93 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             break
         }
+        'plcsh;tags' {
+            [CompletionResult]::new('--model', '--model', [CompletionResultType]::ParameterName, 'The model whose operands the addresses are (K2, FX or UMPK; default: the simulated K2''s)')
+            [CompletionResult]::new('--format', '--format', [CompletionResultType]::ParameterName, 'Read the file as this format instead of telling it by its name and text')
+            [CompletionResult]::new('-d', '-d', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
+            [CompletionResult]::new('--device', '--device', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
+            [CompletionResult]::new('--time', '--time', [CompletionResultType]::ParameterName, 'Simulator time: follow the wall clock, or move only when stepped')
+            [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).')
+            [CompletionResult]::new('--state', '--state', [CompletionResultType]::ParameterName, 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user''s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE')
+            [CompletionResult]::new('--record', '--record', [CompletionResultType]::ParameterName, 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)')
+            [CompletionResult]::new('--bench', '--bench', [CompletionResultType]::ParameterName, 'Open a simulated machine described by a bench file (devices, wiring, initial values)')
+            [CompletionResult]::new('-j', '-j', [CompletionResultType]::ParameterName, 'With --fleet: how many devices are worked on at once')
+            [CompletionResult]::new('--jobs', '--jobs', [CompletionResultType]::ParameterName, 'With --fleet: how many devices are worked on at once')
+            [CompletionResult]::new('--lang', '--lang', [CompletionResultType]::ParameterName, 'The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system''s; English when neither names one of these)')
+            [CompletionResult]::new('--device-timeout', '--device-timeout', [CompletionResultType]::ParameterName, 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'Print one JSON object per command result')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
+            [CompletionResult]::new('--read-only', '--read-only', [CompletionResultType]::ParameterName, 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('check', 'check', [CompletionResultType]::ParameterValue, 'Check a tag file: one line per problem with file:line:column; exit status 1 when there is any')
+            [CompletionResult]::new('export', 'export', [CompletionResultType]::ParameterValue, 'Write a tag file in another form (CSV or IEC VAR_GLOBAL) to standard output or --output')
+            [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
+            break
+        }
+        'plcsh;tags;check' {
+            [CompletionResult]::new('--model', '--model', [CompletionResultType]::ParameterName, 'The model whose operands the addresses are (K2, FX or UMPK; default: the simulated K2''s)')
+            [CompletionResult]::new('--format', '--format', [CompletionResultType]::ParameterName, 'Read the file as this format instead of telling it by its name and text')
+            [CompletionResult]::new('-d', '-d', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
+            [CompletionResult]::new('--device', '--device', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
+            [CompletionResult]::new('--time', '--time', [CompletionResultType]::ParameterName, 'Simulator time: follow the wall clock, or move only when stepped')
+            [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).')
+            [CompletionResult]::new('--state', '--state', [CompletionResultType]::ParameterName, 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user''s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE')
+            [CompletionResult]::new('--record', '--record', [CompletionResultType]::ParameterName, 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)')
+            [CompletionResult]::new('--bench', '--bench', [CompletionResultType]::ParameterName, 'Open a simulated machine described by a bench file (devices, wiring, initial values)')
+            [CompletionResult]::new('-j', '-j', [CompletionResultType]::ParameterName, 'With --fleet: how many devices are worked on at once')
+            [CompletionResult]::new('--jobs', '--jobs', [CompletionResultType]::ParameterName, 'With --fleet: how many devices are worked on at once')
+            [CompletionResult]::new('--lang', '--lang', [CompletionResultType]::ParameterName, 'The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system''s; English when neither names one of these)')
+            [CompletionResult]::new('--device-timeout', '--device-timeout', [CompletionResultType]::ParameterName, 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'Print one JSON object per command result')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
+            [CompletionResult]::new('--read-only', '--read-only', [CompletionResultType]::ParameterName, 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            break
+        }
+        'plcsh;tags;export' {
+            [CompletionResult]::new('--to', '--to', [CompletionResultType]::ParameterName, 'The form to write')
+            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Write here instead of standard output (replaced whole, atomically)')
+            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Write here instead of standard output (replaced whole, atomically)')
+            [CompletionResult]::new('--model', '--model', [CompletionResultType]::ParameterName, 'The model whose operands the addresses are (K2, FX or UMPK; default: the simulated K2''s)')
+            [CompletionResult]::new('--format', '--format', [CompletionResultType]::ParameterName, 'Read the file as this format instead of telling it by its name and text')
+            [CompletionResult]::new('-d', '-d', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
+            [CompletionResult]::new('--device', '--device', [CompletionResultType]::ParameterName, 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable')
+            [CompletionResult]::new('--time', '--time', [CompletionResultType]::ParameterName, 'Simulator time: follow the wall clock, or move only when stepped')
+            [CompletionResult]::new('--config', '--config', [CompletionResultType]::ParameterName, 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).')
+            [CompletionResult]::new('--state', '--state', [CompletionResultType]::ParameterName, 'Simulator state file (backup area, retained ranges, clock); default PLCSH_STATE, else in the user''s data directory; `none` reads and writes nothing (labs, tests). `sim serve` keeps state only with --state FILE')
+            [CompletionResult]::new('--record', '--record', [CompletionResultType]::ParameterName, 'Record every frame on every device link to FILE (pcapng; `plcsh record show FILE`)')
+            [CompletionResult]::new('--bench', '--bench', [CompletionResultType]::ParameterName, 'Open a simulated machine described by a bench file (devices, wiring, initial values)')
+            [CompletionResult]::new('-j', '-j', [CompletionResultType]::ParameterName, 'With --fleet: how many devices are worked on at once')
+            [CompletionResult]::new('--jobs', '--jobs', [CompletionResultType]::ParameterName, 'With --fleet: how many devices are worked on at once')
+            [CompletionResult]::new('--lang', '--lang', [CompletionResultType]::ParameterName, 'The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system''s; English when neither names one of these)')
+            [CompletionResult]::new('--device-timeout', '--device-timeout', [CompletionResultType]::ParameterName, 'With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'Print one JSON object per command result')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Show more: each frame sent and received in hex with timing, request counts, sample rates')
+            [CompletionResult]::new('--read-only', '--read-only', [CompletionResultType]::ParameterName, 'Refuse every change to every device (writes, instructions, servo commands): inspect a live machine')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            break
+        }
+        'plcsh;tags;help' {
+            [CompletionResult]::new('check', 'check', [CompletionResultType]::ParameterValue, 'Check a tag file: one line per problem with file:line:column; exit status 1 when there is any')
+            [CompletionResult]::new('export', 'export', [CompletionResultType]::ParameterValue, 'Write a tag file in another form (CSV or IEC VAR_GLOBAL) to standard output or --output')
+            [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
+            break
+        }
+        'plcsh;tags;help;check' {
+            break
+        }
+        'plcsh;tags;help;export' {
+            break
+        }
+        'plcsh;tags;help;help' {
+            break
+        }
         'plcsh;help' {
             [CompletionResult]::new('models', 'models', [CompletionResultType]::ParameterValue, 'List the K2 model catalogue; `models MODEL` shows one in full (areas, counters, manual notes)')
             [CompletionResult]::new('devices', 'devices', [CompletionResultType]::ParameterValue, 'List open devices and the device profiles (devices.toml), with problems in that file')
@@ -675,6 +763,7 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             [CompletionResult]::new('replay', 'replay', [CompletionResultType]::ParameterValue, 'Replay a recording''s requests against a simulator and report every reply that differs')
             [CompletionResult]::new('lab', 'lab', [CompletionResultType]::ParameterValue, 'Teaching labs: `lab new NAME`, `lab check LAB`, `lab grade LAB SUBMISSIONS…` (sandboxed, in parallel)')
             [CompletionResult]::new('publish', 'publish', [CompletionResultType]::ParameterValue, 'Poll operands on a device or a fleet and publish them to an MQTT broker (docs/fleets.md)')
+            [CompletionResult]::new('tags', 'tags', [CompletionResultType]::ParameterValue, 'Tag tables (docs/tags.md): `tags FILE` lists the names, `tags check FILE` checks them, `tags export FILE --to csv|iec` writes them in another form')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
         }
@@ -750,6 +839,17 @@ Register-ArgumentCompleter -Native -CommandName 'plcsh' -ScriptBlock {
             break
         }
         'plcsh;help;publish' {
+            break
+        }
+        'plcsh;help;tags' {
+            [CompletionResult]::new('check', 'check', [CompletionResultType]::ParameterValue, 'Check a tag file: one line per problem with file:line:column; exit status 1 when there is any')
+            [CompletionResult]::new('export', 'export', [CompletionResultType]::ParameterValue, 'Write a tag file in another form (CSV or IEC VAR_GLOBAL) to standard output or --output')
+            break
+        }
+        'plcsh;help;tags;check' {
+            break
+        }
+        'plcsh;help;tags;export' {
             break
         }
         'plcsh;help;help' {

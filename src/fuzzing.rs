@@ -52,6 +52,7 @@ pub static TARGETS: &[(&str, Target)] = &[
     ("bench", bench),
     ("lab_toml", lab_toml),
     ("umpk_snapshot", umpk_snapshot),
+    ("tags", tags),
 ];
 
 fn text(data: &[u8]) -> String {
@@ -508,4 +509,27 @@ pub fn umpk_snapshot(data: &[u8]) {
         u.advance(clock.now());
         let _ = u.snapshot_state();
     }
+}
+
+/// A tag file (CSV, TOML or IEC declarations, in any encoding): read in every format and by
+/// detection, checked against every family, written back as CSV and IEC and read again; and
+/// the bytes as an IL program with `VAR_GLOBAL` symbols, loaded by the simulated K2.
+pub fn tags(data: &[u8]) {
+    use crate::tags::{export, TagFormat, TagTable};
+    let space = K2Space::new(&MODELS[0]);
+    for f in [None, Some(TagFormat::Csv), Some(TagFormat::Toml), Some(TagFormat::Iec)] {
+        let Ok(t) = TagTable::parse(data, "fuzz.tags", f) else { continue };
+        let _ = t.suggest("Conveyor_Run");
+        if let Ok(t) = crate::profile::tags::check(t, &space) {
+            let csv = export::to_csv(&t);
+            let back = TagTable::parse_text(&csv, "fuzz.csv", Some(TagFormat::Csv));
+            assert!(back.is_ok_and(|b| b.len() == t.len()), "the CSV export reads back");
+            if let Ok(iec) = export::to_iec(&t, &space) {
+                let back = TagTable::parse_text(&iec, "fuzz.st", Some(TagFormat::Iec));
+                assert!(back.is_ok_and(|b| b.len() == t.len()), "the IEC export reads back");
+            }
+        }
+    }
+    let sim = crate::k2::sim::K2Sim::new(&MODELS[0], Clock::stepped());
+    let _ = sim.compile(&text(data), "fuzz.il");
 }

@@ -77,6 +77,7 @@ const SUBCOMMANDS: &[(&str, &[&str], bool)] = &[
     ("replay", &["replay", "missing.pcapng"], false),
     ("lab", &["lab", "check", "no-such-lab"], false),
     ("publish", &["publish", "--help"], false),
+    ("tags", &["tags", "check", "missing.csv"], false),
 ];
 
 /// Lines of every shell command, and whether each needs the simulated PLC (the current device).

@@ -14,6 +14,7 @@ mod record;
 pub mod reference;
 mod run;
 pub(crate) mod serve;
+pub mod tags;
 
 use crate::core::{exit, Clock};
 use crate::k2::catalog;
@@ -163,6 +164,9 @@ pub enum Sub {
     },
     /// Poll operands on a device or a fleet and publish them to an MQTT broker (docs/fleets.md).
     Publish(publish::PublishArgs),
+    /// Tag tables (docs/tags.md): `tags FILE` lists the names, `tags check FILE` checks them,
+    /// `tags export FILE --to csv|iec` writes them in another form.
+    Tags(tags::TagsArgs),
 }
 
 /// Splits `NAME=URL` (or a bare URL, named `plc`; or a bare profile name, named after itself).
@@ -483,6 +487,10 @@ fn run_cli() -> i32 {
         // Made from the flags and the command registry: no device is opened.
         return man::run(&mut out);
     }
+    if let Some(Sub::Tags(args)) = &cli.sub {
+        // A tag file alone: no device is opened.
+        return tags::run(args, style, &mut out);
+    }
     if let Some(Sub::Lab { cmd }) = &cli.sub {
         // A lab builds its own simulators from its lab.toml (never the user's state file).
         // The stopping signals end the workers and the run with the signal's status (a worker
@@ -618,6 +626,7 @@ fn run(cli: &Cli, mut shell: Shell, style: Style, mut out: std::io::StdoutLock<'
             Sub::Replay(args) => record::replay(args, cli.bench.as_deref(), false, style, &mut out),
             Sub::Lab { cmd } => lab::run(cmd, style, &mut out),
             Sub::Publish(args) => publish::run(cli, &mut shell, args, style, &mut out),
+            Sub::Tags(args) => tags::run(args, style, &mut out),
         };
     }
     if let Some(cmds) = &cli.command {

@@ -29,14 +29,16 @@ pub mod compile;
 pub mod exec;
 pub mod isa;
 pub mod source;
+pub mod symbols;
 pub mod timers;
 
 #[cfg(test)]
 mod tests;
 
-pub use compile::{compile, Program};
+pub use compile::Program;
 pub use exec::{Cpu, Fault, FaultKind, ScanOutcome};
 pub use isa::{CostClass, CounterKind, TimerKind};
+pub use symbols::{compile, compile_with_tags};
 
 use crate::core::DataType;
 use serde::{Deserialize, Serialize};

@@ -165,6 +165,17 @@ impl OperandSpace for FxSpace {
         FxOperand::from_key(op.key).canonical()
     }
 
+    /// Bit devices by number (`K4M0` covers M0–M15, fx-and-masterk.md A); word devices by
+    /// word (`D10/DINT` covers D10 and D11). A timer's or counter's contact and its current
+    /// value are separate memories (`T5` the bit, the word form its value).
+    fn span(&self, op: &Operand) -> Option<crate::core::Span> {
+        let o = FxOperand::from_key(op.key);
+        let word = matches!(o.width, Width::Word | Width::Pair);
+        let area = (o.area as u32) * 2 + u32::from(word);
+        let (unit, count) = if word { (16, o.span() as u64) } else { (1, o.span() as u64) };
+        Some(crate::core::Span { area, first_bit: o.index as u64 * unit, bits: count * unit })
+    }
+
     fn describe(&self, op: &Operand) -> Option<String> {
         let o = FxOperand::from_key(op.key);
         let spec = o.area.spec();

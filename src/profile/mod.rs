@@ -21,6 +21,7 @@
 //! one; their definitions are read here, the runner that works on them is `crate::fleet`.
 
 pub mod fleet;
+pub mod tags;
 
 use crate::core::url::DeviceUrl;
 use crate::core::{Error, ErrorKind, Operand, OperandSpace, Result};

@@ -12,16 +12,21 @@ use super::{Tag, TagProblem, TagTable};
 use crate::core::{OperandSpace, Span};
 use crate::msg;
 
-/// Every family problem of `table`, in file order. `spaces[0]` is the family the addresses
-/// are read in; a name is refused if it parses as an operand of any of `spaces`.
-pub fn check(table: &TagTable, spaces: &[&dyn OperandSpace]) -> Vec<TagProblem> {
+/// Every family problem of `table`, in file order: (the problems that stop it from loading,
+/// the overlaps). `spaces[0]` is the family the addresses are read in; a name is refused if
+/// it parses as an operand of any of `spaces`.
+pub fn check(table: &TagTable, spaces: &[&dyn OperandSpace]) -> (Vec<TagProblem>, Vec<TagProblem>) {
     let mut out = Vec::new();
+    let mut overlaps = Vec::new();
     let problem =
         |t: &Tag, message| TagProblem { origin: table.origin().to_string(), line: t.line, column: t.column, message };
     let mut spans: Vec<(Span, usize)> = Vec::new();
     for (i, t) in table.iter().enumerate() {
         if let Some(s) = spaces.iter().find(|s| s.parse(&t.name).is_ok_and(|ops| !ops.is_empty())) {
-            out.push(problem(t, msg!("tags-name-is-operand", name = t.name.as_str(), family = s.family())));
+            out.push(problem(
+                t,
+                msg!("tags-name-is-operand", name = t.name.as_str(), family = s.family().to_ascii_uppercase()),
+            ));
             continue;
         }
         let Some(space) = spaces.first() else { continue };
@@ -46,7 +51,7 @@ pub fn check(table: &TagTable, spaces: &[&dyn OperandSpace]) -> Vec<TagProblem> 
                 let (a, b) = (tags[j], tags[i]);
                 // Report at the later of the two in the file.
                 let (first, second) = if a.line <= b.line { (a, b) } else { (b, a) };
-                out.push(problem(
+                overlaps.push(problem(
                     second,
                     msg!(
                         "tags-overlap",
@@ -66,5 +71,6 @@ pub fn check(table: &TagTable, spaces: &[&dyn OperandSpace]) -> Vec<TagProblem> 
         }
     }
     out.sort_by_key(|p| (p.line, p.column));
-    out
+    overlaps.sort_by_key(|p| (p.line, p.column));
+    (out, overlaps)
 }

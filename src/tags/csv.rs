@@ -235,7 +235,7 @@ pub fn parse(text: &str, problems: &mut Problems<'_>) -> Vec<Tag> {
             problems.add(l, c, msg!("tags-no-address", name = name_text));
             continue;
         }
-        if let Some(bad) = addr_text.find(char::is_whitespace) {
+        if let Some(bad) = addr_text.find(|c: char| c.is_whitespace() || c == '/') {
             let f = address.unwrap();
             problems.add(
                 f.line,
@@ -323,7 +323,7 @@ mod tests {
             vec![
                 "t.csv:2:7: `A`: unknown type `FLOAT` (BOOL, BYTE, SINT, WORD, INT, DWORD, DINT, REAL; UINT, UDINT, USINT too)",
                 "t.csv:3:3: `B` has no address",
-                "t.csv:4:4: `C`: `V W0` is not an address (an address has no spaces: VW0, M0.3, %MW10)",
+                "t.csv:4:4: `C`: `V W0` is not an address (an address has no spaces and no `/TYPE`: VW0, M0.3, %MW10; the type goes in its own column)",
                 "t.csv:5:1: a quote opened here is not closed (a quote inside a quoted field is written twice: \"\")",
             ]
         );

@@ -194,7 +194,8 @@ impl TagFormat {
     }
 }
 
-/// One problem of a tag file, at `origin:line:column` (1-based; column counts characters).
+/// One problem of a tag file, at `origin:line:column` (1-based; column counts characters;
+/// line 0 when the problem is the whole file, which could not be read).
 #[derive(Clone, Debug, PartialEq)]
 pub struct TagProblem {
     pub origin: String,
@@ -205,6 +206,10 @@ pub struct TagProblem {
 
 impl fmt::Display for TagProblem {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        // Line 0: the file as a whole (it could not be read); the message names it.
+        if self.line == 0 {
+            return write!(f, "{}", encoding::printable(&self.message.text));
+        }
         write!(f, "{}:{}:{}: {}", self.origin, self.line, self.column, encoding::printable(&self.message.text))
     }
 }
@@ -272,6 +277,8 @@ pub struct TagTable {
     encoding: Option<Encoding>,
     tags: Vec<Tag>,
     index: HashMap<Box<str>, u32>,
+    /// What [`TagTable::checked`] found that does not stop the table from loading.
+    warnings: Vec<TagProblem>,
 }
 
 impl TagTable {
@@ -293,21 +300,46 @@ impl TagTable {
     /// byte-order mark, UTF-16, Windows-1251: [`crate::core::encoding::decode`]); `origin`
     /// names it in problems. `format` `None` detects it ([`TagFormat::detect`]).
     pub fn parse(bytes: &[u8], origin: &str, format: Option<TagFormat>) -> Result<TagTable, TagProblems> {
-        let (text, enc) = encoding::decode(bytes).map_err(|m| {
-            TagProblems(vec![TagProblem {
-                origin: origin.to_string(),
-                line: 1,
-                column: 1,
-                message: msg!("tags-bad-encoding", problem = m),
-            }])
-        })?;
-        let mut t = TagTable::parse_text(&text, origin, format)?;
+        let (t, p) = TagTable::read(bytes, origin, format);
+        if p.is_empty() {
+            Ok(t)
+        } else {
+            Err(TagProblems(p))
+        }
+    }
+
+    /// [`TagTable::parse`] that keeps the good tags ([`TagTable::build`]): the table and the
+    /// problems (a file that cannot be decoded is one problem and an empty table).
+    pub fn read(bytes: &[u8], origin: &str, format: Option<TagFormat>) -> (TagTable, Vec<TagProblem>) {
+        let (text, enc) = match encoding::decode(bytes) {
+            Ok(d) => d,
+            Err(m) => {
+                let p = TagProblem {
+                    origin: origin.to_string(),
+                    line: 1,
+                    column: 1,
+                    message: msg!("tags-bad-encoding", problem = m),
+                };
+                return (TagTable { origin: origin.to_string(), ..TagTable::default() }, vec![p]);
+            }
+        };
+        let (mut t, p) = TagTable::read_text(&text, origin, format);
         t.encoding = Some(enc);
-        Ok(t)
+        (t, p)
     }
 
     /// [`TagTable::parse`] for text already decoded.
     pub fn parse_text(text: &str, origin: &str, format: Option<TagFormat>) -> Result<TagTable, TagProblems> {
+        let (t, p) = TagTable::read_text(text, origin, format);
+        if p.is_empty() {
+            Ok(t)
+        } else {
+            Err(TagProblems(p))
+        }
+    }
+
+    /// [`TagTable::read`] for text already decoded.
+    pub fn read_text(text: &str, origin: &str, format: Option<TagFormat>) -> (TagTable, Vec<TagProblem>) {
         let format = format.unwrap_or_else(|| TagFormat::detect(origin, text));
         let mut problems = Problems::new(origin);
         let tags = match format {
@@ -315,7 +347,7 @@ impl TagTable {
             TagFormat::Toml => toml_table::parse(text, &mut problems),
             TagFormat::Iec => iec::parse(text, &mut problems),
         };
-        TagTable::from_tags(tags, origin, Some(format), problems)
+        TagTable::build(tags, origin, Some(format), problems)
     }
 
     /// A table of `tags` already read (by a parser, or from a program's `VAR_GLOBAL` block):
@@ -325,8 +357,25 @@ impl TagTable {
         tags: Vec<Tag>,
         origin: &str,
         format: Option<TagFormat>,
-        mut problems: Problems<'_>,
+        problems: Problems<'_>,
     ) -> Result<TagTable, TagProblems> {
+        let (table, list) = TagTable::build(tags, origin, format, problems);
+        if list.is_empty() {
+            Ok(table)
+        } else {
+            Err(TagProblems(list))
+        }
+    }
+
+    /// [`TagTable::from_tags`] that keeps the good tags: the table of every tag without a
+    /// problem, and the problems in file order (so the family checks can still run on the rest
+    /// and a file's every problem is reported at once).
+    pub fn build(
+        tags: Vec<Tag>,
+        origin: &str,
+        format: Option<TagFormat>,
+        mut problems: Problems<'_>,
+    ) -> (TagTable, Vec<TagProblem>) {
         let mut index: HashMap<Box<str>, u32> = HashMap::with_capacity(tags.len());
         let mut kept = Vec::with_capacity(tags.len());
         for tag in tags {
@@ -350,12 +399,9 @@ impl TagTable {
         if kept.is_empty() && problems.list.is_empty() {
             problems.add(1, 1, msg!("tags-empty", file = origin));
         }
-        if !problems.list.is_empty() {
-            let mut list = problems.list;
-            list.sort_by_key(|p| (p.line, p.column));
-            return Err(TagProblems(list));
-        }
-        Ok(TagTable { origin: origin.to_string(), format, encoding: None, tags: kept, index })
+        let mut list = problems.list;
+        list.sort_by_key(|p| (p.line, p.column));
+        (TagTable { origin: origin.to_string(), format, encoding: None, tags: kept, index, warnings: Vec::new() }, list)
     }
 
     /// The tag of this name: IEC 61131-3 identifiers are case-insensitive (§6.1.2), so
@@ -401,18 +447,29 @@ impl TagTable {
     /// The checks that need device families, as problems at each tag's line: a name that
     /// reads as an operand of any of `spaces`; an address that is not an operand of the
     /// first (the table's family), a type that does not fit it, and two tags on overlapping
-    /// addresses of different sizes ([`check`]).
+    /// addresses of different sizes ([`check`]). Every problem, in file order.
     pub fn check(&self, spaces: &[&dyn OperandSpace]) -> Vec<TagProblem> {
-        check::check(self, spaces)
+        let (mut errors, overlaps) = check::check(self, spaces);
+        errors.extend(overlaps);
+        errors.sort_by_key(|p| (p.line, p.column));
+        errors
     }
 
-    /// [`TagTable::check`] as a result: the table, or every problem.
-    pub fn checked(self, spaces: &[&dyn OperandSpace]) -> Result<TagTable, TagProblems> {
-        let p = self.check(spaces);
-        if p.is_empty() {
+    /// [`TagTable::check`] as a result: the table, or the problems that stop it from loading.
+    /// Overlapping addresses do not (a program reads `SMB0` and `SM0.0`, `VW100` and `VB101`
+    /// on purpose): they are the table's [`TagTable::warnings`], for the loader to show.
+    pub fn checked(mut self, spaces: &[&dyn OperandSpace]) -> Result<TagTable, TagProblems> {
+        let (errors, overlaps) = check::check(&self, spaces);
+        if errors.is_empty() {
+            self.warnings = overlaps;
             Ok(self)
         } else {
-            Err(TagProblems(p))
+            Err(TagProblems(errors))
         }
+    }
+
+    /// The problems found by [`TagTable::checked`] that let the table load (overlaps).
+    pub fn warnings(&self) -> &[TagProblem] {
+        &self.warnings
     }
 }

@@ -17,7 +17,6 @@
 //! `get get` or `plc.watch` would read two ways.
 
 use crate::core::msg::Msg;
-use crate::core::text::edit_distance;
 use crate::msg;
 use std::borrow::Cow;
 
@@ -239,6 +238,30 @@ pub fn address_text(raw: &str) -> String {
     up
 }
 
+/// The optimal-string-alignment distance (Levenshtein with a swap of two neighbours as one
+/// edit: `Strat` is one edit from `Start`), by characters; O(|a|·|b|).
+pub fn distance(a: &str, b: &str) -> usize {
+    let a: Vec<char> = a.chars().collect();
+    let b: Vec<char> = b.chars().collect();
+    let w = b.len() + 1;
+    let mut d = vec![0usize; (a.len() + 1) * w];
+    for (j, cell) in d.iter_mut().enumerate().take(w) {
+        *cell = j;
+    }
+    for i in 1..=a.len() {
+        d[i * w] = i;
+        for j in 1..=b.len() {
+            let cost = usize::from(a[i - 1] != b[j - 1]);
+            let mut v = (d[(i - 1) * w + j] + 1).min(d[i * w + j - 1] + 1).min(d[(i - 1) * w + j - 1] + cost);
+            if i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] {
+                v = v.min(d[(i - 2) * w + j - 2] + 1);
+            }
+            d[i * w + j] = v;
+        }
+    }
+    d[a.len() * w + b.len()]
+}
+
 /// The at most `n` names of `names` nearest to `name` (case-insensitive), nearest first: an
 /// edit distance of at most a third of the name's length (at least 1), or a name that starts
 /// with it. Linear in the number of names; each distance is bounded by the names' lengths.
@@ -255,7 +278,7 @@ pub fn nearest<'a>(name: &str, names: impl Iterator<Item = &'a str>, n: usize) -
         if !prefix && clen.abs_diff(len) > limit {
             continue;
         }
-        let d = if prefix { 0 } else { edit_distance(&key, &c) };
+        let d = if prefix { 0 } else { distance(&key, &c) };
         if d <= limit {
             found.push((d, cand));
         }
@@ -318,5 +341,8 @@ mod tests {
         assert_eq!(nearest("Conveyor", names.iter().copied(), 3), vec!["Conveyor_Run", "Conveyor_Stop"]);
         assert_eq!(nearest("мотор_1_пуcк", names.iter().copied(), 3), vec!["Мотор_1_Пуск"], "Latin c for Cyrillic с");
         assert!(nearest("xyz", names.iter().copied(), 3).is_empty());
+        assert_eq!(nearest("Tnak2_Level", names.iter().copied(), 3), vec!["Tank2_Level"], "a swap is one edit");
+        assert_eq!(distance("Strat", "Start"), 1);
+        assert_eq!(distance("", "ab"), 2);
     }
 }

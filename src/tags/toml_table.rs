@@ -105,7 +105,7 @@ pub fn parse(text: &str, problems: &mut Problems<'_>) -> Vec<Tag> {
             problems.add(vl, vc, msg!("tags-no-address", name = name.as_str()));
             continue;
         }
-        if address.trim().contains(char::is_whitespace) {
+        if address.trim().contains(|c: char| c.is_whitespace() || c == '/') {
             problems.add(vl, vc, msg!("tags-bad-address", name = name.as_str(), address = address.trim()));
             continue;
         }

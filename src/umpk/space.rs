@@ -139,6 +139,12 @@ impl OperandSpace for UmpkSpace {
         UmpkOperand::from_core(op).name()
     }
 
+    /// Every UMPK operand is one bit of its area (manual §3.3–§3.5).
+    fn span(&self, op: &Operand) -> Option<crate::core::Span> {
+        let o = UmpkOperand::from_core(op);
+        Some(crate::core::Span { area: o.area as u32, first_bit: o.index as u64, bits: 1 })
+    }
+
     fn describe(&self, op: &Operand) -> Option<String> {
         let o = UmpkOperand::from_core(op);
         Some(format!("{} {} (read from {})", o.area().meaning, o.name(), o.area().source))

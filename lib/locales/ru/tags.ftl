@@ -12,9 +12,13 @@ tags-name-is-keyword = `{ $name }` — ключевое слово IEC 61131-3 �
 tags-name-is-operand = `{ $name }` читается как операнд { $family } и не может быть именем тега (добавьте слово: `{ $name }_val`)
 tags-no-name = в строке есть адрес, но нет имени
 tags-no-address = у `{ $name }` нет адреса
-tags-bad-address = `{ $name }`: `{ $address }` — не адрес (в адресе нет пробелов: VW0, M0.3, %MW10)
+tags-bad-address = `{ $name }`: `{ $address }` — не адрес (в адресе нет пробелов и `/TYPE`: VW0, M0.3, %MW10; тип пишется в своём столбце)
 tags-unknown-type = `{ $name }`: неизвестный тип `{ $dtype }` (BOOL, BYTE, SINT, WORD, INT, DWORD, DINT, REAL; также UINT, UDINT, USINT)
-tags-type-does-not-fit = `{ $name }`: тип { $dtype } не подходит к { $address } ({ $bits } бит)
+tags-type-does-not-fit = `{ $name }`: тип { $dtype } не подходит к { $address } ({ $bits ->
+    [one] { $bits } бит
+    [few] { $bits } бита
+   *[many] { $bits } бит
+})
 tags-resolve-failed = `{ $name }`: { $address } здесь не операнд: { $problem }
 tags-address-is-range = `{ $address }` — диапазон; адрес тега — один операнд
 tags-overlap = `{ $name }` ({ $address }) перекрывается с `{ $other }` ({ $other_address }, строка { $line })
@@ -31,3 +35,17 @@ tags-iec-no-address = у `{ $name }` нет адреса (напишите `{ $n
 tags-iec-no-block = в файле нет блока VAR_GLOBAL … END_VAR
 tags-iec-unclosed-block = VAR_GLOBAL без END_VAR
 tags-iec-unclosed-comment = комментарий, открытый здесь с (*, не закрыт *)
+tags-unknown-model = нет модели K2, FX или UMPK с именем `{ $model }` (plcsh models перечисляет модели K2)
+tags-usage = укажите файл тегов: plcsh tags FILE, plcsh tags check FILE, plcsh tags export FILE --to csv|iec
+tags-check-ok = { $file }: { $count ->
+    [one] { $count } тег
+    [few] { $count } тега
+   *[many] { $count } тегов
+}, проблем нет
+tags-symbol-address = тег `{ $name }` имеет адрес { $address }, который здесь не операнд: { $problem }
+tags-unknown-symbol = `{ $name }` — не тег и не операнд
+tags-unknown-symbol-near = `{ $name }` — не тег (ближайшие: { $nearest })
+tags-declared-address = { $file }:{ $line }:{ $column }: тег `{ $name }`: { $address } — не операнд этого ПЛК: { $problem }
+tags-declared-twice = { $file }:{ $line }:{ $column }: тег `{ $name }` объявлен и в программе, и в { $tags } (строка { $tag_line })
+tags-option-last = tags=FILE задаёт файл тегов и стоит последним: sim program load FILE.il tags=FILE.csv
+tags-warning = предупреждение: { $warning }

@@ -11,7 +11,7 @@ use crate::k2::sim::K2Sim;
 use crate::output::Outcome;
 use crate::shell::{Args, Shell};
 
-pub const USAGE: &str = "sim program load FILE.il | sim program unload | sim program | sim program costs [bit=200ns … overhead=0.3ms min_scan=1ms watchdog=300ms] | sim program stop-outputs QB0=16#05 AQW0=16000 … | sim cpu run|stop|pause | sim stop | sim pause | sim switch run|stop | sim scan [N] | sim break LINE|FILE:LINE|network N|clear | sim stepi [N] | sim stepn";
+pub const USAGE: &str = "sim program load FILE.il [tags=FILE.csv] | sim program unload | sim program | sim program costs [bit=200ns … overhead=0.3ms min_scan=1ms watchdog=300ms] | sim program stop-outputs QB0=16#05 AQW0=16000 … | sim cpu run|stop|pause | sim stop | sim pause | sim switch run|stop | sim scan [N] | sim break LINE|FILE:LINE|network N|clear | sim stepi [N] | sim stepn";
 
 fn ms(ns: u64) -> f64 {
     (ns as f64 / 1e6 * 1000.0).round() / 1000.0
@@ -85,15 +85,40 @@ pub fn status(s: &K2Sim, name: &str) -> Outcome {
         .with("err_led", !p.faults.is_empty() || p.error_count > 0)
 }
 
+/// `args` without a last word `tags=FILE` (any case; the file may be quoted), and that file
+/// with its column. `tags=` elsewhere than last is refused: it follows the program's file.
+pub fn tags_option(args: Args) -> Result<(Args, Option<(usize, String)>)> {
+    let words = crate::shell::lex::words_in(&args)?;
+    let is_tags = |w: &str| w.get(..5).is_some_and(|k| k.eq_ignore_ascii_case("tags="));
+    let Some(i) = words.iter().position(|(_, w)| is_tags(w)) else { return Ok((args, None)) };
+    let (col, word) = words[i];
+    if i + 1 != words.len() {
+        return Err(Error::usage(crate::msg!("tags-option-last")).column(col));
+    }
+    let path = crate::shell::lex::unquote(&word[5..]).into_owned();
+    if path.is_empty() {
+        return Err(Error::usage(crate::msg!("tags-option-last")).column(col));
+    }
+    let cut = col - args.offset;
+    Ok((Args { text: &args.text[..cut], offset: args.offset }, Some((col + 5, path))))
+}
+
 pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
     let words: Vec<&str> = args.text.split_whitespace().collect();
     let dev = sh.session.current_index()?;
     let name = k2cmd::name(sh, dev);
-    // The file, as text: `sim program load "Проверка 1/светофор.il"` (docs/commands.md, "Quoting").
-    let file = match (sub, words.get(1)) {
-        ("program", Some(&"load")) => crate::shell::lex::one_path(&args, 2, "sim program load")?,
-        _ => None,
+    // The file, as text: `sim program load "Проверка 1/светофор.il"` (docs/commands.md, "Quoting"),
+    // and the tag file of its symbols after it (`tags=press1.csv`, docs/tags.md).
+    let (file, tag_file) = match (sub, words.get(1)) {
+        ("program", Some(&"load")) => {
+            let (args, tags) = tags_option(args)?;
+            (crate::shell::lex::one_path(&args, 2, "sim program load")?, tags)
+        }
+        _ => (None, None),
     };
+    if let Some((c, path)) = &tag_file {
+        sh.session.check_read(path).map_err(|e| e.column(*c))?;
+    }
     if let Some((c, path)) = &file {
         sh.session.check_read(path).map_err(|e| e.column(*c))?;
     }
@@ -114,8 +139,17 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
                 let (c, path) = file.ok_or_else(|| Error::usage("sim program load needs a file, e.g. prog.il"))?;
                 let text = crate::core::encoding::read_source(&path)
                     .map_err(|e| Error::io(format!("cannot read {path}: {e}")).device(name.clone()).column(c))?;
-                let msg = s.load_program(&text, &path).map_err(|e| e.device(name.clone()))?;
-                Ok(status(s, &name).text(msg))
+                let tags = match &tag_file {
+                    Some((c, t)) => Some(
+                        crate::profile::tags::load(std::path::Path::new(t), None, s.space())
+                            .map_err(|p| p.into_error().device(name.clone()).column(*c))?,
+                    ),
+                    None => None,
+                };
+                let msg = s.load_program_with_tags(&text, &path, tags.as_ref()).map_err(|e| e.device(name.clone()))?;
+                let mut o = status(s, &name).text(msg);
+                o.notes.extend(tags.iter().flat_map(|t| t.warnings()).map(|w| w.to_string()));
+                Ok(o)
             }
             Some("costs") => {
                 let t = s.set_costs(&words[2..].join(" ")).map_err(|e| e.device(name.clone()))?;

@@ -314,6 +314,12 @@ impl K2Sim {
         engine::compile(text, file, &self.family()).map_err(|e| e.device(self.model().name))
     }
 
+    /// [`Self::compile`] with the tags of a tag file beside the program (and those the
+    /// program declares in `VAR_GLOBAL`: engine::symbols).
+    pub fn compile_with_tags(&self, text: &str, file: &str, tags: Option<&crate::tags::TagTable>) -> Result<Program> {
+        engine::compile_with_tags(text, file, &self.family(), tags).map_err(|e| e.device(self.model().name))
+    }
+
     /// Compiles IL text for this model with the cost table `costs` (a snapshot's).
     pub(crate) fn compile_costed(&self, text: &str, file: &str, costs: CostTable) -> Result<Program> {
         let family = K2Family { space: *self.space(), costs: Some(costs) };
@@ -329,7 +335,28 @@ impl K2Sim {
     /// Loading is allowed in any mode (the real K2 wants STOP for a download; the
     /// simulator loads as if it switched to STOP, downloaded and returned).
     pub fn load_program(&mut self, text: &str, file: &str) -> Result<String> {
-        let prog = self.compile(text, file)?;
+        self.load_program_with_tags(text, file, None)
+    }
+
+    /// [`Self::load_program`] with the tags of a tag file beside the program. The program is
+    /// kept (for snapshots and `sim serve` restarts) with those tags appended as a
+    /// `VAR_GLOBAL` block after its last line, so it loads again without the file and its
+    /// line numbers stay.
+    pub fn load_program_with_tags(
+        &mut self,
+        text: &str,
+        file: &str,
+        tags: Option<&crate::tags::TagTable>,
+    ) -> Result<String> {
+        let prog = self.compile_with_tags(text, file, tags)?;
+        let kept = match tags {
+            Some(t) if !t.is_empty() => {
+                let block = crate::tags::export::to_iec(t, self.space()).map_err(|e| e.device(self.model().name))?;
+                std::borrow::Cow::Owned(format!("{text}\n{block}"))
+            }
+            _ => std::borrow::Cow::Borrowed(text),
+        };
+        let text: &str = &kept;
         self.advance();
         let now = self.last;
         let n = prog.source_instructions;
