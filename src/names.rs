@@ -40,6 +40,8 @@ pub struct Names {
     list: Vec<Named>,
     by_name: HashMap<String, u32>,
     by_op: HashMap<Operand, u32>,
+    /// What let the table load but deserves a look (overlapping addresses), `file:line: …`.
+    pub warnings: Vec<String>,
 }
 
 /// The IEC identifier's case fold (names are compared without case), as the table folds.
@@ -49,18 +51,17 @@ pub fn fold(name: &str) -> String {
 
 impl Names {
     /// Resolves `table` on a device's operand grammar, after the checks that need the device
-    /// (a name that reads as one of its operands, an address it does not have, a type that
-    /// does not fit, overlaps: [`TagTable::check`]). Any problem refuses the whole table, each
-    /// with its `file:line:column`: a half-attached table would make a name mean nothing on
-    /// one command and something on the next.
-    pub fn resolve(table: &TagTable, space: &dyn OperandSpace) -> Result<Names> {
-        let problems = table.check(&[space]);
-        if !problems.is_empty() {
-            return Err(crate::tags::TagProblems(problems)
-                .into_error()
-                .hint(crate::msg!("names-hint-check", file = table.origin())));
-        }
-        let mut n = Names { file: table.origin().to_string(), ..Names::default() };
+    /// and every family ([`crate::profile::tags::check`]: a name that reads as an operand, an
+    /// address the device does not have, a type that does not fit). Any problem refuses the
+    /// whole table, each with its `file:line:column`: a half-attached table would make a name
+    /// mean nothing on one command and something on the next. Overlapping addresses let it
+    /// load and are kept as [`Names::warnings`].
+    pub fn resolve(table: TagTable, space: &dyn OperandSpace) -> Result<Names> {
+        let origin = table.origin().to_string();
+        let table = crate::profile::tags::check(table, space)
+            .map_err(|p| p.into_error().hint(crate::msg!("names-hint-check", file = origin.as_str())))?;
+        let mut n = Names { file: origin, ..Names::default() };
+        n.warnings = table.warnings().iter().map(|w| w.to_string()).collect();
         n.list.reserve(table.len());
         for t in table.iter() {
             let op = t.resolve(space)?;
@@ -72,7 +73,7 @@ impl Names {
         Ok(n)
     }
 
-/// The tag called `name` (any case).
+    /// The tag called `name` (any case).
     pub fn get(&self, name: &str) -> Option<&Named> {
         if self.list.is_empty() {
             return None;
@@ -171,9 +172,19 @@ pub enum Expanded {
     Text(String),
 }
 
-/// Loads tag file `path` ([`TagTable::load`]; its problems as one error, each with its line).
+/// Reads tag file `path` ([`TagTable::read`]; its problems as one error, each with its line).
+/// The device checks come when it is attached ([`Names::resolve`]).
 pub fn load(path: &std::path::Path) -> Result<TagTable> {
-    TagTable::load(path).map_err(crate::tags::TagProblems::into_error)
+    let origin = path.display().to_string();
+    let bytes = std::fs::read(path).map_err(|e| {
+        crate::core::Error::io(crate::msg!("tags-cannot-read", file = origin.as_str(), reason = e.to_string()))
+    })?;
+    let (table, problems) = TagTable::read(&bytes, &origin, None);
+    if problems.is_empty() {
+        Ok(table)
+    } else {
+        Err(crate::tags::TagProblems(problems).into_error())
+    }
 }
 
 /// What a device's names are when it has none.
@@ -197,7 +208,7 @@ mod tests {
     fn names_resolve_both_ways_with_the_view_of_their_type() {
         let d = device();
         let t = table("name,address,type,comment\nTank2_Level,VD200,REAL,уровень\nМотор_1_Пуск,M0.3,BOOL,\n电机,VW10,WORD,\n");
-        let n = Names::resolve(&t, d.operands()).unwrap();
+        let n = Names::resolve(t, d.operands()).unwrap();
         let tank = n.get("tank2_level").unwrap();
         assert_eq!(tank.operand, "VD200/REAL");
         assert_eq!(tank.op.dtype, crate::core::DataType::Real);
@@ -218,7 +229,7 @@ mod tests {
     fn a_tag_the_device_does_not_have_refuses_the_table_with_its_line() {
         let d = device();
         let t = table("name,address,type\nA,VW0,INT\nB,VW99999,INT\nC,VB0,REAL\n");
-        let e = Names::resolve(&t, d.operands()).unwrap_err();
+        let e = Names::resolve(t, d.operands()).unwrap_err();
         let all = format!("{}\n{}", e.message, e.causes.join("\n"));
         assert!(all.contains("t.csv:3"), "{all}");
         assert!(all.contains("t.csv:4"), "{all}");

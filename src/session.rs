@@ -246,8 +246,9 @@ impl Session {
         if let Some(tags) = e.tags.clone() {
             // A tag file given before the device was connected: resolved now, and reported on
             // every command until it resolves (a name must not mean nothing silently).
+            let table = crate::tags::TagTable::clone(&tags);
             e.names =
-                Arc::new(crate::names::Names::resolve(&tags, e.device.operands()).map_err(|err| err.device(&e.name))?);
+                Arc::new(crate::names::Names::resolve(table, e.device.operands()).map_err(|err| err.device(&e.name))?);
             e.tags = None;
         }
         Ok(())
@@ -267,7 +268,7 @@ impl Session {
             e.tags = Some(Arc::new(tags));
             return Ok(n);
         }
-        let names = crate::names::Names::resolve(&tags, e.device.operands()).map_err(|err| err.device(&e.name))?;
+        let names = crate::names::Names::resolve(tags, e.device.operands()).map_err(|err| err.device(&e.name))?;
         let n = names.len();
         e.names = Arc::new(names);
         e.tags = None;

@@ -292,6 +292,9 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
             _ => (s.current_index()?, t.as_str()),
         };
         s.load_tags(i, std::path::Path::new(file))?;
+        for w in &s.names(i).warnings {
+            eprintln!("plcsh: warning: {w}");
+        }
     }
     // `sim serve --bench` opens the bench in the served simulators instead.
     if let (Some(path), false) = (&cli.bench, matches!(cli.sub, Some(Sub::Sim { .. }))) {
