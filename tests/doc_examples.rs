@@ -520,7 +520,7 @@ fn run_lua_block(dir: &Path, b: &Block, n: usize, t: &mut Tally) {
     t.check(&b.at, "lua", ok_or_err(&o, true));
 }
 
-/// A `toml` block: a profile file, a bench file or a lab's `lab.toml` (checked with the files
+/// A `toml` block: a profile file, a tag file, a bench file or a lab's `lab.toml` (checked with the files
 /// of `plcsh lab new` around it). `<!-- example: file NAME [after FILE] -->` writes it as NAME
 /// (after the project's FILE) for the examples that follow to open.
 fn run_toml_block(dir: &Path, b: &Block, marker: &str, n: usize, t: &mut Tally) {
@@ -553,6 +553,10 @@ fn run_toml_block(dir: &Path, b: &Block, marker: &str, n: usize, t: &mut Tally) 
                 Ok(())
             }
         })
+    } else if b.text.contains("[tags]") {
+        // A tag file (docs/tags.md): it checks without a problem.
+        let o = sh(dir, &format!("plcsh tags check {f}"), "");
+        ok_or_err(&o, true)
     } else {
         // A bench file: the machine it describes opens.
         let o = sh(dir, &format!("plcsh --state none --time stepped --bench {f} -c devices"), "");

@@ -99,7 +99,14 @@ fn report(out: &mut dyn Write, style: Style, cmd: &str, p: &TagProblems, to_stdo
             serde_json::json!({"ok": false, "cmd": cmd, "problems": problems_json(p), "error": p.clone().into_error()});
         let _ = writeln!(out, "{v}");
     } else if to_stdout {
+        // The problems are the answer; the summary is the error a script's log shows.
         let _ = writeln!(out, "{p}");
+        let file = p.0.first().map_or("", |x| x.origin.as_str());
+        let e = Error::new(
+            crate::core::ErrorKind::Syntax,
+            crate::msg!("tags-check-failed", file = file, count = p.0.len() as i64),
+        );
+        let _ = output::report_error(out, style, cmd, &e, None);
     } else {
         let _ = out.flush();
         eprintln!("{p}");

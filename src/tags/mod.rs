@@ -115,6 +115,12 @@ impl Tag {
             )
             .operand(self.address.clone())
         };
+        // The common case in one parse: the address read as the declared type.
+        if let TagType::Of(t) = self.dtype {
+            if let Ok(op) = parse_single(space, &format!("{}/{}", self.address, t.name())) {
+                return Ok(op);
+            }
+        }
         let op = parse_single(space, &self.address).map_err(named)?;
         match self.dtype {
             TagType::Of(t) if t != op.dtype => {
@@ -411,6 +417,12 @@ impl TagTable {
         self.index.get(key.as_ref()).map(|&i| &self.tags[i as usize])
     }
 
+    /// The index of the tag of this name in [`TagTable::iter`]'s order (case-insensitive, as
+    /// [`TagTable::get`]).
+    pub fn position(&self, name: &str) -> Option<usize> {
+        self.index.get(name::fold(name).as_ref()).map(|&i| i as usize)
+    }
+
     /// The tags in file order.
     pub fn iter(&self) -> std::slice::Iter<'_, Tag> {
         self.tags.iter()
@@ -471,5 +483,48 @@ impl TagTable {
     /// The problems found by [`TagTable::checked`] that let the table load (overlaps).
     pub fn warnings(&self) -> &[TagProblem] {
         &self.warnings
+    }
+}
+
+/// A table bound to one device's family: every tag's operand resolved once, so a name costs a
+/// lookup and no parse (benches/tags.rs, BENCHMARKS.md "Tags").
+#[derive(Clone, Debug)]
+pub struct BoundTable {
+    table: TagTable,
+    operands: Vec<Operand>,
+}
+
+impl BoundTable {
+    /// Resolves every tag of `table` in `space` ([`Tag::resolve`]); the tags that do not
+    /// resolve are the problems, at their lines.
+    pub fn bind(table: TagTable, space: &dyn OperandSpace) -> Result<BoundTable, TagProblems> {
+        let mut operands = Vec::with_capacity(table.len());
+        let mut problems = Vec::new();
+        for t in table.iter() {
+            match t.resolve(space) {
+                Ok(op) => operands.push(op),
+                Err(e) => problems.push(TagProblem {
+                    origin: table.origin().to_string(),
+                    line: t.line,
+                    column: t.column,
+                    message: Msg { id: e.code, text: e.message.clone() },
+                }),
+            }
+        }
+        if problems.is_empty() {
+            Ok(BoundTable { table, operands })
+        } else {
+            Err(TagProblems(problems))
+        }
+    }
+
+    /// The tag of this name and its operand.
+    pub fn get(&self, name: &str) -> Option<(&Tag, Operand)> {
+        let i = self.table.position(name)?;
+        Some((&self.table.tags[i], self.operands[i]))
+    }
+
+    pub fn table(&self) -> &TagTable {
+        &self.table
     }
 }

@@ -47,3 +47,7 @@ tags-declared-address = { $file }:{ $line }:{ $column }: tag `{ $name }`: { $add
 tags-declared-twice = { $file }:{ $line }:{ $column }: tag `{ $name }` is declared in the program and in { $tags } (line { $tag_line })
 tags-option-last = tags=FILE names the tag file and comes last: sim program load FILE.il tags=FILE.csv
 tags-warning = warning: { $warning }
+tags-check-failed = { $file }: { $count ->
+    [one] { $count } problem
+   *[other] { $count } problems
+}

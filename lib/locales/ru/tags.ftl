@@ -49,3 +49,8 @@ tags-declared-address = { $file }:{ $line }:{ $column }: тег `{ $name }`: { $
 tags-declared-twice = { $file }:{ $line }:{ $column }: тег `{ $name }` объявлен и в программе, и в { $tags } (строка { $tag_line })
 tags-option-last = tags=FILE задаёт файл тегов и стоит последним: sim program load FILE.il tags=FILE.csv
 tags-warning = предупреждение: { $warning }
+tags-check-failed = { $file }: { $count ->
+    [one] { $count } проблема
+    [few] { $count } проблемы
+   *[many] { $count } проблем
+}

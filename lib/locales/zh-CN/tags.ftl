@@ -41,3 +41,4 @@ tags-declared-address = { $file }:{ $line }:{ $column }: 标签 `{ $name }`: { $
 tags-declared-twice = { $file }:{ $line }:{ $column }: 标签 `{ $name }` 在程序和 { $tags } (第 { $tag_line } 行) 中都有声明
 tags-option-last = tags=FILE 指定标签文件, 放在最后: sim program load FILE.il tags=FILE.csv
 tags-warning = 警告: { $warning }
+tags-check-failed = { $file }: { $count } 个问题
