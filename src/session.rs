@@ -320,17 +320,24 @@ impl Session {
             }
             None => {}
         }
-        space.parse(body).map_err(|mut err| {
+        space.parse(body).map_err(|err| {
             let near = e.names.near(body);
-            if !near.is_empty() {
-                let list: Vec<String> = near.iter().map(|n| format!("{} ({})", n.name, n.operand)).collect();
-                let mut hint: String = crate::msg!("names-hint-did-you-mean", names = list.join(", ")).into();
-                if let Some(h) = &err.hint {
-                    hint = format!("{hint}; {h}");
-                }
-                err.hint = Some(hint);
+            if near.is_empty() {
+                return err;
             }
-            err
+            // A word nearer a name than an operand: said as an unknown name, the grammar's own
+            // reading kept as the cause.
+            let word = body.trim();
+            let list: Vec<String> = near.iter().map(|n| format!("{} ({})", n.name, n.operand)).collect();
+            let mut hint: String = crate::msg!("names-hint-did-you-mean", names = list.join(", ")).into();
+            if let Some(h) = &err.hint {
+                hint = format!("{hint}; {h}");
+            }
+            let msg = crate::msg!("names-unknown", word = word, file = e.names.file.as_str());
+            Error::new(crate::core::ErrorKind::Operand, msg)
+                .cause(&err.message)
+                .hint(hint)
+                .column(body.len() - body.trim_start().len())
         })
     }
 

@@ -4,3 +4,4 @@ names-hint-did-you-mean = did you mean { $names }?
 names-profile-tags-not-text = `tags` must be a file name, e.g. tags = "press1.csv"
 names-help-tag = { $name } is { $operand } (a tag of { $file })
 names-help-comment = comment: { $comment }
+names-unknown = `{ $word }` is neither a tag of { $file } nor an operand

@@ -4,3 +4,4 @@ names-hint-did-you-mean = 是否想输入 { $names }？
 names-profile-tags-not-text = `tags` 应为文件名，例如 tags = "press1.csv"
 names-help-tag = { $name } 即 { $operand }（来自 { $file } 的标签）
 names-help-comment = 注释：{ $comment }
+names-unknown = `{ $word }` 既不是 { $file } 中的标签，也不是操作数
