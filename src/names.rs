@@ -207,7 +207,9 @@ mod tests {
     #[test]
     fn names_resolve_both_ways_with_the_view_of_their_type() {
         let d = device();
-        let t = table("name,address,type,comment\nTank2_Level,VD200,REAL,уровень\nМотор_1_Пуск,M0.3,BOOL,\n电机,VW10,WORD,\n");
+        let t = table(
+            "name,address,type,comment\nTank2_Level,VD200,REAL,уровень\nМотор_1_Пуск,M0.3,BOOL,\n电机,VW10,WORD,\n",
+        );
         let n = Names::resolve(t, d.operands()).unwrap();
         let tank = n.get("tank2_level").unwrap();
         assert_eq!(tank.operand, "VD200/REAL");

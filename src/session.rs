@@ -259,10 +259,9 @@ impl Session {
     /// is not yet. Returns how many names the device has.
     pub fn attach_tags(&mut self, i: usize, tags: crate::tags::TagTable) -> Result<usize> {
         let e = &mut self.devices[i];
-        let waiting = tags
-            .iter()
-            .next()
-            .is_some_and(|t| e.device.operands().parse(&t.address).is_err_and(|x| x.kind == crate::core::ErrorKind::Link));
+        let waiting = tags.iter().next().is_some_and(|t| {
+            e.device.operands().parse(&t.address).is_err_and(|x| x.kind == crate::core::ErrorKind::Link)
+        });
         if waiting {
             let n = tags.len();
             e.tags = Some(Arc::new(tags));

@@ -214,10 +214,19 @@ fn a_profile_names_its_tag_file_beside_itself() {
     let conf = dir.join("conf");
     std::fs::create_dir_all(&conf).unwrap();
     std::fs::write(conf.join("press.csv"), "name,address,type\nPress_Force,VW10,INT\n").unwrap();
-    std::fs::write(conf.join("devices.toml"), "[devices.press1]\nurl = \"sim:K205-16DT\"\ntags = \"press.csv\"\n").unwrap();
+    std::fs::write(conf.join("devices.toml"), "[devices.press1]\nurl = \"sim:K205-16DT\"\ntags = \"press.csv\"\n")
+        .unwrap();
     let o = common::plcsh()
         .current_dir(&dir)
-        .args(["--json", "--config", "conf/devices.toml", "--device", "press1", "-c", "set Press_Force=-5; get press1:Press_Force"])
+        .args([
+            "--json",
+            "--config",
+            "conf/devices.toml",
+            "--device",
+            "press1",
+            "-c",
+            "set Press_Force=-5; get press1:Press_Force",
+        ])
         .output()
         .unwrap();
     let v = common::json_lines(&o);

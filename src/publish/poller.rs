@@ -502,12 +502,10 @@ impl Pool {
                     None => {
                         let texts: Vec<&str> = self.texts.iter().map(String::as_str).collect();
                         match session.get(&texts) {
-                            Ok(readings) => {
-                                Ok(readings
-                                    .into_iter()
-                                    .map(|(_, r)| (d.leaf(&p.group, &r.operand, r.name.as_deref(), r.dtype), r.value))
-                                    .collect())
-                            }
+                            Ok(readings) => Ok(readings
+                                .into_iter()
+                                .map(|(_, r)| (d.leaf(&p.group, &r.operand, r.name.as_deref(), r.dtype), r.value))
+                                .collect()),
                             Err(e) => Err(e),
                         }
                     }
@@ -696,8 +694,9 @@ mod tests {
             deadband: None,
             count: Some(3),
         };
-        let pool = Pool::start(vec![Member { name: "press".into(), session: Ok(s), reopen: None }], poll, outbox.clone(), tx)
-            .unwrap();
+        let pool =
+            Pool::start(vec![Member { name: "press".into(), session: Ok(s), reopen: None }], poll, outbox.clone(), tx)
+                .unwrap();
         pool.join();
         let mut all = Vec::new();
         outbox.take(usize::MAX, &mut all);
@@ -706,11 +705,8 @@ mod tests {
             ("plcsh/g/press/Мотор_1_Пуск", "M0.3", Some("Мотор_1_Пуск")),
             ("plcsh/g/press/VW0", "VW0", None),
         ] {
-            let got: Vec<serde_json::Value> = all
-                .iter()
-                .filter(|m| m.topic == topic)
-                .map(|m| serde_json::from_slice(&m.payload).unwrap())
-                .collect();
+            let got: Vec<serde_json::Value> =
+                all.iter().filter(|m| m.topic == topic).map(|m| serde_json::from_slice(&m.payload).unwrap()).collect();
             assert_eq!(got.len(), 3, "{topic}: every poll");
             for j in got {
                 assert_eq!(j["operand"], operand, "{j}");

@@ -53,9 +53,13 @@ fn help(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let body = topic.rsplit(':').next().unwrap_or(topic);
     // A tag's name (`crate::names`): what it stands for and its comment, then its operand's help.
     if let Some(n) = entry.names.get(body) {
-        let mut text: String =
-            crate::msg!("names-help-tag", name = n.name.as_str(), operand = n.operand.as_str(), file = entry.names.file.as_str())
-                .into();
+        let mut text: String = crate::msg!(
+            "names-help-tag",
+            name = n.name.as_str(),
+            operand = n.operand.as_str(),
+            file = entry.names.file.as_str()
+        )
+        .into();
         if !n.comment.is_empty() {
             text.push_str(&format!("\n  {}", crate::msg!("names-help-comment", comment = n.comment.as_str()).text));
         }
