@@ -603,6 +603,42 @@ mod tests {
         });
     }
 
+    /// A device's tag names complete beside its operands, the operand and the comment as the
+    /// meaning, also after its `device:` prefix; a whole name's hint is that meaning too.
+    #[test]
+    fn tag_names_complete_with_their_comments() {
+        let k205 = K2Space::new(catalog::find("K205-16DT").unwrap());
+        let table = crate::tags::TagTable::parse_text(
+            "name,address,type,comment\nTank2_Level,VD200,REAL,level of tank 2\nМотор_1_Пуск,Q0.0,BOOL,\n",
+            "t.csv",
+            None,
+        )
+        .unwrap();
+        let names = crate::names::Names::resolve(table, &k205).unwrap();
+        let view = View {
+            devices: vec![DeviceView {
+                name: "plc",
+                family: "k2",
+                model: "K205-16DT",
+                space: &k205,
+                names: Some(&names),
+            }],
+            current: Some(0),
+            profiles: vec![],
+            files: &fake_files,
+        };
+        let c = complete("get tank", 8, &view);
+        assert_eq!(
+            c.items,
+            vec![Suggestion { text: "Tank2_Level".into(), meaning: "VD200/REAL · level of tank 2".into() }]
+        );
+        let line = "watch plc:мот";
+        let c = complete(line, line.len(), &view);
+        assert_eq!(c.items.iter().map(|s| s.text.as_str()).collect::<Vec<_>>(), ["plc:Мотор_1_Пуск"]);
+        assert_eq!(c.items[0].meaning, "Q0.0");
+        assert_eq!(meaning("Tank2_Level", &view).as_deref(), Some("VD200/REAL · level of tank 2"));
+    }
+
     #[test]
     fn device_prefix_completes_that_devices_operands() {
         let (start, items) = texts("get servo:targ");
