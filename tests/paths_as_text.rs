@@ -90,6 +90,10 @@ const CASES: &[(&str, &[&str])] = &[
         ],
     ),
     ("completion_scripts_folder", &["plcsh completions --write"]),
+    (
+        "tag_files",
+        &["plcsh tags <file>", "plcsh tags check <file>", "plcsh tags export <file>", "plcsh tags export --output"],
+    ),
     ("probe_report_file", &["plcsh probe --report"]),
     (
         "served_simulators_files",
@@ -465,6 +469,32 @@ fn completion_scripts_folder() {
     let dir = odd_dir("completions").join("дополнения");
     ok(&plcsh().args(["completions", "--write", dir.to_str().unwrap()]).output_retrying().unwrap());
     assert!(dir.join("plcsh.bash").is_file());
+}
+
+#[test]
+fn tag_files() {
+    let dir = odd_dir("tags");
+    let tags = dir.join("теги пресса.csv");
+    std::fs::write(&tags, "name,address,comment\nStart_Button,I0.0,\"кнопка \"\"пуск\"\"\"\nScans,VW20,\n").unwrap();
+    let t = tags.to_str().unwrap();
+    assert!(ok(&plcsh().args(["tags", t]).output_retrying().unwrap()).contains("Start_Button"));
+    assert!(ok(&plcsh().args(["tags", "check", t]).output_retrying().unwrap()).contains("2 tags"));
+    let iec = dir.join("экспорт 'теги'.st");
+    ok(&plcsh()
+        .args(["tags", "export", t, "--to", "iec", "--output", iec.to_str().unwrap()])
+        .output_retrying()
+        .unwrap());
+    assert!(std::fs::read_to_string(&iec).unwrap().contains("Start_Button AT %IX0.0 : BOOL;"));
+    // In the shell: the program and its tag file, each a path with spaces, in quotes.
+    let prog = dir.join("программа 1.il");
+    std::fs::write(&prog, "LD %SM0.0\nINC Scans\n").unwrap();
+    let line = format!(
+        "sim program load {} tags={}; sim scan 2; get VW20",
+        Spelling::DoubleEscaped.write(&prog),
+        Spelling::DoubleEscaped.write(&tags)
+    );
+    let text = ok(&plcsh().args(["--time", "stepped", "--state", "none", "-c", &line]).output_retrying().unwrap());
+    assert!(text.contains("VW20  3"), "{text}");
 }
 
 #[test]

@@ -208,7 +208,7 @@ fn tags_lists_checks_and_exports_with_a_round_trip() {
 /// A program with its operands replaced by generated names (Latin and Cyrillic), and the tags:
 /// (name, address, natural type). Operands are found by the engine's own lexer; literals,
 /// labels, POU names, views (`/REAL`) and pointers' targets stay as written.
-fn symbolize(text: &str, space: &K2Space) -> (String, Vec<(String, String, String)>) {
+fn symbolize(text: &str, space: &dyn OperandSpace) -> (String, Vec<(String, String, String)>) {
     let stmts = source::parse(text).expect("the program lexes");
     let mut lines: Vec<Vec<char>> = text.split('\n').map(|l| l.chars().collect()).collect();
     let mut tags: Vec<(String, String, String)> = Vec::new();
@@ -235,7 +235,7 @@ fn symbolize(text: &str, space: &K2Space) -> (String, Vec<(String, String, Strin
             let i = match tags.iter().position(|t| t.1 == address) {
                 Some(i) => i,
                 None => {
-                    let prefix = if tags.len() % 2 == 0 { "Tag" } else { "Тег" };
+                    let prefix = if tags.len().is_multiple_of(2) { "Tag" } else { "Тег" };
                     let n = format!("{prefix}_{}", address.replace('.', "_"));
                     tags.push((n, address.clone(), ops[0].dtype.name().to_string()));
                     tags.len() - 1
@@ -245,7 +245,7 @@ fn symbolize(text: &str, space: &K2Space) -> (String, Vec<(String, String, Strin
         }
     }
     // From the end of each line, so earlier columns stay right.
-    edits.sort_by(|a, b| (b.0, b.1).cmp(&(a.0, a.1)));
+    edits.sort_by_key(|e| std::cmp::Reverse((e.0, e.1)));
     for (line, col, width, name) in edits {
         lines[line].splice(col..col + width, name.chars());
     }
@@ -327,6 +327,36 @@ fn programs_with_symbols_run_like_programs_with_addresses() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// The UMPK loads through the same engine: its lab programs with symbols (a `VAR_GLOBAL`
+/// block, and a UTF-16 CSV beside them) compile to the instructions of the address version.
+#[test]
+fn umpk_programs_with_symbols_compile_like_programs_with_addresses() {
+    use plcsh::umpk::sim::program::UmpkFamily;
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let model = plcsh::umpk::model::find("UMPK16").unwrap();
+    let fam = UmpkFamily::new(model);
+    let mut compared = 0;
+    for f in [root.join("scripts/umpk_lab1.il"), root.join("tests/lab/umpk/reference.il")] {
+        let text = plcsh::core::encoding::read_source(&f).unwrap();
+        let want = plcsh::engine::compile(&text, "p.il", &fam).unwrap_or_else(|e| panic!("{}: {e}", f.display()));
+        let (named, tags) = symbolize(&text, &fam.space);
+        assert!(!tags.is_empty(), "{}: no operand found", f.display());
+        let block: String = tags.iter().map(|(n, a, t)| format!("  {n} AT %{a} : {t};\n")).collect();
+        let declared = format!("VAR_GLOBAL\n{block}END_VAR\n{named}");
+        let a = plcsh::engine::compile(&declared, "p.il", &fam).unwrap_or_else(|e| panic!("{}: {e}", f.display()));
+        assert_eq!(a.code, want.code, "{}", f.display());
+        let csv: String = std::iter::once("名称,地址,类型\n".to_string())
+            .chain(tags.iter().map(|(n, a, t)| format!("{n},{a},{t}\n")))
+            .collect();
+        let table = TagTable::parse(&utf16le_bom(&csv), "t.csv", None).unwrap();
+        let table = plcsh::profile::tags::check(table, &fam.space).unwrap_or_else(|p| panic!("{p}"));
+        let b = plcsh::engine::compile_with_tags(&named, "p.il", &fam, Some(&table)).unwrap();
+        assert_eq!(b.code, want.code, "{}", f.display());
+        compared += 1;
+    }
+    assert_eq!(compared, 2);
+}
+
 #[test]
 fn load_errors_name_the_unknown_symbol_and_the_nearest_tag() {
     let model = catalog::find(catalog::DEFAULT_MODEL).unwrap();
@@ -370,4 +400,26 @@ fn the_taken_command_words_are_the_registry_s() {
     let mut kept: Vec<String> = name::COMMAND_WORDS.iter().map(|w| w.to_string()).collect();
     kept.sort();
     assert_eq!(kept, words, "plcsh::tags::name::COMMAND_WORDS differs from the command registry");
+}
+
+/// A program loaded with a tag file beside it is kept with the tags, so a snapshot restores
+/// it without the file (the docs' example program and tag file).
+#[test]
+fn a_snapshot_of_a_program_with_a_tag_file_restores_without_the_file() {
+    let dir = world("snapshot");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    for f in ["batch.il", "press1.csv"] {
+        std::fs::copy(root.join("docs/tags").join(f), dir.join(f)).unwrap();
+    }
+    let line = "sim program load batch.il tags=press1.csv; sim scan 2; sim snapshot save snap.json";
+    let o = plcsh_in(&dir, &["--time", "stepped", "--state", "none", "-c", line]);
+    assert!(o.status.success(), "{}", common::both(&o));
+    std::fs::remove_file(dir.join("press1.csv")).unwrap();
+    let o = plcsh_in(
+        &dir,
+        &["--time", "stepped", "--state", "none", "-c", "sim snapshot restore snap.json; sim scan 2; get VW10"],
+    );
+    assert!(o.status.success(), "{}", common::both(&o));
+    assert!(common::stdout(&o).contains("VW10  5"), "{}", common::both(&o));
+    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -57,7 +57,7 @@ impl<F: Family + ?Sized> Symbolic<'_, F> {
         }
         f(text).map_err(|e| {
             let word = text.trim();
-            let looks_like_name = name::check(word).is_ok() || word.chars().any(|c| !c.is_ascii());
+            let looks_like_name = name::check(word).is_ok() || !word.is_ascii();
             if !looks_like_name {
                 return e;
             }

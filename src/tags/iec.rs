@@ -126,10 +126,11 @@ fn tokens(text: &str, problems: &mut Problems<'_>) -> Vec<Token> {
             } else {
                 Kind::Word
             };
-            // Addresses and numbers take dots (`%MX0.3`, `1.5`) and `#` (`16#FF`, `T#5s`).
-            let more = |d: char| word_char(d) || (kind != Kind::Word && (d == '.' || d == '#'));
+            // Addresses and numbers take dots (`%MX0.3`, `1.5`); every token takes `#` (`16#FF`,
+            // `T#5s`).
+            let more = |d: char| word_char(d) || d == '#' || (kind != Kind::Word && d == '.');
             while let Some(&(k, d)) = it.peek() {
-                if !more(d) && !(kind == Kind::Word && d == '#') {
+                if !more(d) {
                     break;
                 }
                 it.next();
@@ -287,7 +288,7 @@ fn declaration(toks: &[Token], mut i: usize, tags: &mut Vec<Tag>, problems: &mut
             }
         }
     }
-    if !code(i).is_some_and(|t| t.text == ":") {
+    if code(i).is_none_or(|t| t.text != ":") {
         let (l, c, f) = code(i).map_or((name.line, name.col, ""), |t| (t.line, t.col, t.text.as_str()));
         problems.add(l, c, msg!("tags-iec-expected", expected = ":", found = f));
         return skip_to_end(i);

@@ -169,7 +169,7 @@ pub fn sim_input(sh: &mut Shell, args: Args) -> Result<Outcome> {
     Ok(o)
 }
 
-/// `sim program load FILE.il` / `sim program` on the current UMPK: an IL lab program run by
+/// `sim program load FILE.il [tags=FILE.csv]` / `sim program` on the current UMPK: an IL lab program run by
 /// the simulator on the scan engine ([`crate::umpk::sim::program`]).
 pub fn sim_program(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let words = lex::words_in(&args)?;
@@ -189,13 +189,26 @@ pub fn sim_program(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let msg = match words.get(1).map(|w| (w.0, w.1)) {
         None | Some((_, "status")) => None,
         Some((_, "load")) => {
+            let (args, tag_file) = super::simprogram::tags_option(args)?;
             let (c, path) = lex::one_path(&args, 2, "sim program load")?.ok_or_else(|| {
                 Error::usage("sim program load needs a file, e.g. sim program load scripts/umpk_lab1.il").column(col)
             })?;
             sh.session.check_read(&path).map_err(|e| e.device(&name).column(c))?;
             let text = crate::core::encoding::read_source(&path)
                 .map_err(|e| Error::io(format!("cannot read {path}: {e}")).device(&name).column(c))?;
-            let r = crate::umpk::sim::program::IlRunner::load(&text, &path, u.model).map_err(|e| e.device(&name))?;
+            let tags = match &tag_file {
+                Some((tc, t)) => {
+                    sh.session.check_read(t).map_err(|e| e.device(&name).column(*tc))?;
+                    let space = crate::umpk::space::UmpkSpace { model: u.model };
+                    Some(
+                        crate::profile::tags::load(std::path::Path::new(t), None, &space)
+                            .map_err(|p| p.into_error().device(&name).column(*tc))?,
+                    )
+                }
+                None => None,
+            };
+            let r = crate::umpk::sim::program::IlRunner::load_with_tags(&text, &path, u.model, tags.as_ref())
+                .map_err(|e| e.device(&name))?;
             let n = r.instructions();
             u.load_logic(Box::new(r));
             Some(format!("{path}: {n} instructions loaded; runs every {CYCLE_MS} ms cycle in Work mode"))

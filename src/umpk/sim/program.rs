@@ -290,8 +290,28 @@ pub struct IlRunner {
 impl IlRunner {
     /// Compiles `text` (named `file` in messages) for `model`.
     pub fn load(text: &str, file: &str, model: &'static Model) -> Result<IlRunner> {
+        IlRunner::load_with_tags(text, file, model, None)
+    }
+
+    /// [`IlRunner::load`] with the tags of a tag file beside the program (docs/tags.md). The
+    /// program is kept with those tags appended as a `VAR_GLOBAL` block after its last line,
+    /// so a snapshot loads it again without the file.
+    pub fn load_with_tags(
+        text: &str,
+        file: &str,
+        model: &'static Model,
+        tags: Option<&crate::tags::TagTable>,
+    ) -> Result<IlRunner> {
         let fam = UmpkFamily::new(model);
-        let prog = engine::compile(text, file, &fam)?;
+        let prog = engine::compile_with_tags(text, file, &fam, tags)?;
+        let kept = match tags {
+            Some(t) if !t.is_empty() => {
+                let space = crate::umpk::space::UmpkSpace { model };
+                std::borrow::Cow::Owned(format!("{text}\n{}", crate::tags::export::to_iec(t, &space)?))
+            }
+            _ => std::borrow::Cow::Borrowed(text),
+        };
+        let text: &str = &kept;
         check(&prog).map_err(crate::core::encoding::printable_error)?;
         let cpu = Cpu::new(&prog);
         let name = std::path::Path::new(file).file_name().map_or(file.into(), |n| n.to_string_lossy().into_owned());
