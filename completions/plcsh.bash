@@ -239,7 +239,7 @@ _plcsh() {
 
     case "${cmd}" in
         plcsh)
-            opts="-c -v -d -f -j -h -V --command --json --verbose --model --device --time --config --state --record --bench --read-only --fleet --jobs --lang --device-timeout --help --version models devices ports paths man completions sim agent probe run record replay lab publish tags help"
+            opts="-c -v -d -f -j -h -V --command --json --verbose --model --device --tags --time --config --state --record --bench --read-only --fleet --jobs --lang --device-timeout --help --version models devices ports paths man completions sim agent probe run record replay lab publish tags help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -262,6 +262,10 @@ _plcsh() {
                     return 0
                     ;;
                 -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tags)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -317,7 +321,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__agent)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help il check help"
+            opts="-v -d -j -h --json --verbose --model --device --tags --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help il check help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -332,6 +336,10 @@ _plcsh() {
                     return 0
                     ;;
                 -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tags)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -379,7 +387,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__agent__subcmd__check)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
+            opts="-v -d -j -h --json --verbose --model --device --tags --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -394,6 +402,10 @@ _plcsh() {
                     return 0
                     ;;
                 -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tags)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -497,7 +509,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__agent__subcmd__il)
-            opts="-v -d -j -h --model --base --json --verbose --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
+            opts="-v -d -j -h --model --base --json --verbose --device --tags --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -516,6 +528,10 @@ _plcsh() {
                     return 0
                     ;;
                 -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tags)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -563,7 +579,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__completions)
-            opts="-v -d -j -h --write --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help bash elvish fish powershell zsh"
+            opts="-v -d -j -h --write --json --verbose --model --device --tags --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help bash elvish fish powershell zsh"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -582,6 +598,10 @@ _plcsh() {
                     return 0
                     ;;
                 -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tags)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -629,7 +649,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__devices)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
+            opts="-v -d -j -h --json --verbose --model --device --tags --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -644,6 +664,10 @@ _plcsh() {
                     return 0
                     ;;
                 -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tags)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1069,7 +1093,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__lab)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help new check grade help"
+            opts="-v -d -j -h --json --verbose --model --device --tags --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help new check grade help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1084,6 +1108,10 @@ _plcsh() {
                     return 0
                     ;;
                 -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tags)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1131,7 +1159,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__lab__subcmd__check)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
+            opts="-v -d -j -h --json --verbose --model --device --tags --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1146,6 +1174,10 @@ _plcsh() {
                     return 0
                     ;;
                 -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tags)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1193,7 +1225,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__lab__subcmd__grade)
-            opts="-v -d -h --jobs --junit --show-output --json --verbose --model --device --time --config --state --record --bench --read-only --lang --device-timeout --help"
+            opts="-v -d -h --jobs --junit --show-output --json --verbose --model --device --tags --time --config --state --record --bench --read-only --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1216,6 +1248,10 @@ _plcsh() {
                     return 0
                     ;;
                 -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tags)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1325,7 +1361,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__lab__subcmd__new)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
+            opts="-v -d -j -h --json --verbose --model --device --tags --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1340,6 +1376,10 @@ _plcsh() {
                     return 0
                     ;;
                 -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tags)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1387,7 +1427,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__man)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
+            opts="-v -d -j -h --json --verbose --model --device --tags --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1402,6 +1442,10 @@ _plcsh() {
                     return 0
                     ;;
                 -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tags)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1449,7 +1493,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__models)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
+            opts="-v -d -j -h --json --verbose --model --device --tags --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1464,6 +1508,10 @@ _plcsh() {
                     return 0
                     ;;
                 -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tags)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1511,7 +1559,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__paths)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
+            opts="-v -d -j -h --json --verbose --model --device --tags --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1526,6 +1574,10 @@ _plcsh() {
                     return 0
                     ;;
                 -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tags)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1573,7 +1625,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__ports)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
+            opts="-v -d -j -h --json --verbose --model --device --tags --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1588,6 +1640,10 @@ _plcsh() {
                     return 0
                     ;;
                 -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tags)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1635,7 +1691,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__probe)
-            opts="-v -d -j -h --report --reads --scan-serial --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
+            opts="-v -d -j -h --report --reads --scan-serial --json --verbose --model --device --tags --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1658,6 +1714,10 @@ _plcsh() {
                     return 0
                     ;;
                 -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tags)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1705,7 +1765,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__publish)
-            opts="-f -v -d -j -h --broker --fleet --every --qos --on-change --deadband --buffer --mqtt-version --count --client-id --accept-writes --shard --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
+            opts="-f -v -d -j -h --broker --fleet --every --qos --on-change --deadband --buffer --mqtt-version --count --client-id --accept-writes --shard --json --verbose --model --device --tags --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1767,6 +1827,10 @@ _plcsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --tags)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 --time)
                     COMPREPLY=($(compgen -W "wall stepped" -- "${cur}"))
                     return 0
@@ -1811,7 +1875,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__record)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help show help"
+            opts="-v -d -j -h --json --verbose --model --device --tags --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help show help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1826,6 +1890,10 @@ _plcsh() {
                     return 0
                     ;;
                 -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tags)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1915,7 +1983,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__record__subcmd__show)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
+            opts="-v -d -j -h --json --verbose --model --device --tags --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1930,6 +1998,10 @@ _plcsh() {
                     return 0
                     ;;
                 -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tags)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1977,7 +2049,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__replay)
-            opts="-v -d -j -h --sim-model --snapshot --agent --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
+            opts="-v -d -j -h --sim-model --snapshot --agent --json --verbose --model --device --tags --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2004,6 +2076,10 @@ _plcsh() {
                     return 0
                     ;;
                 -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tags)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -2051,7 +2127,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__run)
-            opts="-f -v -d -j -h --sandbox --write-dir --fleet --report --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
+            opts="-f -v -d -j -h --sandbox --write-dir --fleet --json --verbose --model --device --tags --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2069,10 +2145,6 @@ _plcsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
-                --report)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
                 --model)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
@@ -2082,6 +2154,10 @@ _plcsh() {
                     return 0
                     ;;
                 -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tags)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -2129,7 +2205,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__sim)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help serve control help"
+            opts="-v -d -j -h --json --verbose --model --device --tags --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help serve control help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2144,6 +2220,10 @@ _plcsh() {
                     return 0
                     ;;
                 -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tags)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -2191,7 +2271,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__sim__subcmd__control)
-            opts="-v -d -j -h --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
+            opts="-v -d -j -h --json --verbose --model --device --tags --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2206,6 +2286,10 @@ _plcsh() {
                     return 0
                     ;;
                 -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tags)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -2309,7 +2393,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__sim__subcmd__serve)
-            opts="-v -d -j -h --tcp --rtu-pty --rtu-tcp --unit --agent --program --servo-pty --servo-tcp --servo-control --servo-id --servo-loop --servo-baud --servo-latency --servo-instant --servo-strict --fx-pty --fx-tcp --fx-link-pty --fx-link-tcp --fx-model --fx-station --fx-program --umpk-pty --umpk-tcp --umpk-model --umpk-status-bits --umpk-flash-fail --umpk-state --umpk-program --fx-control --umpk-control --k2-control --fault --max-connections --idle-timeout --strict-unit --fleet --rfc2217 --json --verbose --model --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
+            opts="-v -d -j -h --tcp --rtu-pty --rtu-tcp --unit --agent --program --servo-pty --servo-tcp --servo-control --servo-id --servo-loop --servo-baud --servo-latency --servo-instant --servo-strict --fx-pty --fx-tcp --fx-link-pty --fx-link-tcp --fx-model --fx-station --fx-program --umpk-pty --umpk-tcp --umpk-model --umpk-status-bits --umpk-flash-fail --umpk-state --umpk-program --fx-control --umpk-control --k2-control --fault --max-connections --idle-timeout --strict-unit --fleet --rfc2217 --json --verbose --model --device --tags --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2459,6 +2543,10 @@ _plcsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --tags)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 --time)
                     COMPREPLY=($(compgen -W "wall stepped" -- "${cur}"))
                     return 0
@@ -2503,7 +2591,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__tags)
-            opts="-v -d -j -h --model --format --json --verbose --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help check export help"
+            opts="-v -d -j -h --model --format --json --verbose --device --tags --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help check export help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2522,6 +2610,10 @@ _plcsh() {
                     return 0
                     ;;
                 -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tags)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -2569,7 +2661,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__tags__subcmd__check)
-            opts="-v -d -j -h --model --format --json --verbose --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
+            opts="-v -d -j -h --model --format --json --verbose --device --tags --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2588,6 +2680,10 @@ _plcsh() {
                     return 0
                     ;;
                 -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tags)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -2635,7 +2731,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__tags__subcmd__export)
-            opts="-o -v -d -j -h --to --output --model --format --json --verbose --device --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
+            opts="-o -v -d -j -h --to --output --model --format --json --verbose --device --tags --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2666,6 +2762,10 @@ _plcsh() {
                     return 0
                     ;;
                 -d)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tags)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;

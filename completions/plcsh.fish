@@ -1,6 +1,6 @@
 # Print an optspec for argparse to handle cmd's options that are independent of any subcommand.
 function __fish_plcsh_global_optspecs
-    string join \n c/command= json v/verbose model= d/device= time= config= state= record= bench= read-only f/fleet= j/jobs= lang= device-timeout= h/help V/version
+    string join \n c/command= json v/verbose model= d/device= tags= time= config= state= record= bench= read-only f/fleet= j/jobs= lang= device-timeout= h/help V/version
 end
 
 function __fish_plcsh_needs_command
@@ -27,6 +27,7 @@ end
 complete -c plcsh -n "__fish_plcsh_needs_command" -s c -l command -d 'Run these commands (separated by `;`) and exit' -r
 complete -c plcsh -n "__fish_plcsh_needs_command" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_needs_command" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_needs_command" -l tags -d 'A tag file (CSV, TOML or IEC VAR_GLOBAL) whose names work wherever an operand does: FILE for the current device, DEVICE=FILE for another (docs/tags.md). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_needs_command" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_needs_command" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
@@ -60,6 +61,7 @@ complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "tags" -d 'Tag tables (d
 complete -c plcsh -n "__fish_plcsh_needs_command" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l tags -d 'A tag file (CSV, TOML or IEC VAR_GLOBAL) whose names work wherever an operand does: FILE for the current device, DEVICE=FILE for another (docs/tags.md). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
@@ -75,6 +77,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand models" -l read-only -d 'Ref
 complete -c plcsh -n "__fish_plcsh_using_subcommand models" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l tags -d 'A tag file (CSV, TOML or IEC VAR_GLOBAL) whose names work wherever an operand does: FILE for the current device, DEVICE=FILE for another (docs/tags.md). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
@@ -90,6 +93,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -l read-only -d 'Re
 complete -c plcsh -n "__fish_plcsh_using_subcommand devices" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l tags -d 'A tag file (CSV, TOML or IEC VAR_GLOBAL) whose names work wherever an operand does: FILE for the current device, DEVICE=FILE for another (docs/tags.md). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
@@ -105,6 +109,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -l read-only -d 'Refu
 complete -c plcsh -n "__fish_plcsh_using_subcommand ports" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -l tags -d 'A tag file (CSV, TOML or IEC VAR_GLOBAL) whose names work wherever an operand does: FILE for the current device, DEVICE=FILE for another (docs/tags.md). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
@@ -120,6 +125,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -l read-only -d 'Refu
 complete -c plcsh -n "__fish_plcsh_using_subcommand paths" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c plcsh -n "__fish_plcsh_using_subcommand man" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand man" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand man" -l tags -d 'A tag file (CSV, TOML or IEC VAR_GLOBAL) whose names work wherever an operand does: FILE for the current device, DEVICE=FILE for another (docs/tags.md). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand man" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand man" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
@@ -136,6 +142,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand man" -s h -l help -d 'Print 
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l write -d 'Write every script into DIR (plcsh.bash, _plcsh, plcsh.fish, _plcsh.ps1)' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l tags -d 'A tag file (CSV, TOML or IEC VAR_GLOBAL) whose names work wherever an operand does: FILE for the current device, DEVICE=FILE for another (docs/tags.md). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
@@ -151,6 +158,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -l read-only -d
 complete -c plcsh -n "__fish_plcsh_using_subcommand completions" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve control help" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve control help" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve control help" -l tags -d 'A tag file (CSV, TOML or IEC VAR_GLOBAL) whose names work wherever an operand does: FILE for the current device, DEVICE=FILE for another (docs/tags.md). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve control help" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and not __fish_seen_subcommand_from serve control help" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
@@ -202,6 +210,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l fleet -d 'Serve N simulated K2s, each with its own memory, on N TCP ports (with --tcp: port 0 gives each a free port, port P gives P, P+1, …); the readiness line lists them under `fleet` (docs/fleets.md)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l tags -d 'A tag file (CSV, TOML or IEC VAR_GLOBAL) whose names work wherever an operand does: FILE for the current device, DEVICE=FILE for another (docs/tags.md). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
@@ -222,6 +231,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from serve" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from control" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from control" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from control" -l tags -d 'A tag file (CSV, TOML or IEC VAR_GLOBAL) whose names work wherever an operand does: FILE for the current device, DEVICE=FILE for another (docs/tags.md). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from control" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from control" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
@@ -240,6 +250,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand sim; and __fish_seen_subcommand_from help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il check help" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il check help" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il check help" -l tags -d 'A tag file (CSV, TOML or IEC VAR_GLOBAL) whose names work wherever an operand does: FILE for the current device, DEVICE=FILE for another (docs/tags.md). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il check help" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_subcommand_from il check help" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
@@ -259,6 +270,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and not __fish_seen_s
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l model -d 'The PLC\'s model: the helper runs only the pulse outputs, counters and counter modes this model has (default: the default simulated model)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l base -d 'Mailbox base: an even V byte address below the E2PROM area (VB3648)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l tags -d 'A tag file (CSV, TOML or IEC VAR_GLOBAL) whose names work wherever an operand does: FILE for the current device, DEVICE=FILE for another (docs/tags.md). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
@@ -274,6 +286,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subco
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from il" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from check" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from check" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from check" -l tags -d 'A tag file (CSV, TOML or IEC VAR_GLOBAL) whose names work wherever an operand does: FILE for the current device, DEVICE=FILE for another (docs/tags.md). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from check" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand agent; and __fish_seen_subcommand_from check" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
@@ -294,6 +307,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand probe" -l report -d 'Also wr
 complete -c plcsh -n "__fish_plcsh_using_subcommand probe" -l reads -d 'Reads timed for the response time (p50, p99)' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand probe" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand probe" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand probe" -l tags -d 'A tag file (CSV, TOML or IEC VAR_GLOBAL) whose names work wherever an operand does: FILE for the current device, DEVICE=FILE for another (docs/tags.md). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand probe" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand probe" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
@@ -313,6 +327,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand run" -s f -l fleet -d 'Run t
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l report -d 'Write a commissioning report: this HTML file and its JSON twin beside it (docs/commissioning.md). The commission runner writes its checklist there; any other script gets the devices and the log of every write it made' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l tags -d 'A tag file (CSV, TOML or IEC VAR_GLOBAL) whose names work wherever an operand does: FILE for the current device, DEVICE=FILE for another (docs/tags.md). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
@@ -329,6 +344,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand run" -l read-only -d 'Refuse
 complete -c plcsh -n "__fish_plcsh_using_subcommand run" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -l tags -d 'A tag file (CSV, TOML or IEC VAR_GLOBAL) whose names work wherever an operand does: FILE for the current device, DEVICE=FILE for another (docs/tags.md). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
@@ -346,6 +362,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and not __fish_seen_subcommand_from show help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -l tags -d 'A tag file (CSV, TOML or IEC VAR_GLOBAL) whose names work wherever an operand does: FILE for the current device, DEVICE=FILE for another (docs/tags.md). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand record; and __fish_seen_subcommand_from show" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
@@ -366,6 +383,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l snapshot -d 'Star
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l agent -d 'Run the PLC-side helper (lib/k2_agent.il) with its mailbox at this V address. Without it, the helper runs when the recording shows its status block being read' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l tags -d 'A tag file (CSV, TOML or IEC VAR_GLOBAL) whose names work wherever an operand does: FILE for the current device, DEVICE=FILE for another (docs/tags.md). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
@@ -381,6 +399,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -l read-only -d 'Ref
 complete -c plcsh -n "__fish_plcsh_using_subcommand replay" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade help" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade help" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade help" -l tags -d 'A tag file (CSV, TOML or IEC VAR_GLOBAL) whose names work wherever an operand does: FILE for the current device, DEVICE=FILE for another (docs/tags.md). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade help" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade help" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
@@ -400,6 +419,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_sub
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and not __fish_seen_subcommand_from new check grade help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from new" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from new" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from new" -l tags -d 'A tag file (CSV, TOML or IEC VAR_GLOBAL) whose names work wherever an operand does: FILE for the current device, DEVICE=FILE for another (docs/tags.md). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from new" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from new" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
@@ -415,6 +435,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from new" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from check" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from check" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from check" -l tags -d 'A tag file (CSV, TOML or IEC VAR_GLOBAL) whose names work wherever an operand does: FILE for the current device, DEVICE=FILE for another (docs/tags.md). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from check" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from check" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
@@ -432,6 +453,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcomm
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -l junit -d 'Also write the results as JUnit XML to FILE' -r -F
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -l tags -d 'A tag file (CSV, TOML or IEC VAR_GLOBAL) whose names work wherever an operand does: FILE for the current device, DEVICE=FILE for another (docs/tags.md). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand lab; and __fish_seen_subcommand_from grade" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
@@ -462,6 +484,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l client-id -d 'Th
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l shard -d 'Publish this part of the fleet only (K of N publishers; default: `shard` in the profile file\'s [mqtt])' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l model -d 'Model of the default simulated PLC' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l tags -d 'A tag file (CSV, TOML or IEC VAR_GLOBAL) whose names work wherever an operand does: FILE for the current device, DEVICE=FILE for another (docs/tags.md). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand publish" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
@@ -482,6 +505,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand tags; and not __fish_seen_su
 toml\t''
 iec\t''"
 complete -c plcsh -n "__fish_plcsh_using_subcommand tags; and not __fish_seen_subcommand_from check export help" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand tags; and not __fish_seen_subcommand_from check export help" -l tags -d 'A tag file (CSV, TOML or IEC VAR_GLOBAL) whose names work wherever an operand does: FILE for the current device, DEVICE=FILE for another (docs/tags.md). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand tags; and not __fish_seen_subcommand_from check export help" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand tags; and not __fish_seen_subcommand_from check export help" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
@@ -503,6 +527,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand tags; and __fish_seen_subcom
 toml\t''
 iec\t''"
 complete -c plcsh -n "__fish_plcsh_using_subcommand tags; and __fish_seen_subcommand_from check" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand tags; and __fish_seen_subcommand_from check" -l tags -d 'A tag file (CSV, TOML or IEC VAR_GLOBAL) whose names work wherever an operand does: FILE for the current device, DEVICE=FILE for another (docs/tags.md). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand tags; and __fish_seen_subcommand_from check" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand tags; and __fish_seen_subcommand_from check" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F
@@ -524,6 +549,7 @@ complete -c plcsh -n "__fish_plcsh_using_subcommand tags; and __fish_seen_subcom
 toml\t''
 iec\t''"
 complete -c plcsh -n "__fish_plcsh_using_subcommand tags; and __fish_seen_subcommand_from export" -s d -l device -d 'Add a device: NAME=URL, NAME=PROFILE, a bare PROFILE (opened under its name and made current) or a bare URL (which replaces `plc`). Repeatable' -r
+complete -c plcsh -n "__fish_plcsh_using_subcommand tags; and __fish_seen_subcommand_from export" -l tags -d 'A tag file (CSV, TOML or IEC VAR_GLOBAL) whose names work wherever an operand does: FILE for the current device, DEVICE=FILE for another (docs/tags.md). Repeatable' -r
 complete -c plcsh -n "__fish_plcsh_using_subcommand tags; and __fish_seen_subcommand_from export" -l time -d 'Simulator time: follow the wall clock, or move only when stepped' -r -f -a "wall\t'Simulator time follows the wall clock'
 stepped\t'Simulator time moves only when stepped (`sim step`, waits in scripts)'"
 complete -c plcsh -n "__fish_plcsh_using_subcommand tags; and __fish_seen_subcommand_from export" -l config -d 'Device profile file (default: PLCSH_CONFIG, else ~/.config/plcsh/devices.toml).' -r -F

@@ -152,8 +152,8 @@ pub fn completion(data: &[u8]) {
     let files = |_: &str| Vec::new();
     let view = View {
         devices: vec![
-            DeviceView { name: "plc", family: "k2", model: MODELS[0].name, space: &k205 },
-            DeviceView { name: "servo", family: "servo", model: "FD", space: &servo },
+            DeviceView { name: "plc", family: "k2", model: MODELS[0].name, space: &k205, names: None },
+            DeviceView { name: "servo", family: "servo", model: "FD", space: &servo, names: None },
         ],
         current: Some(0),
         profiles: Vec::new(),

@@ -14,6 +14,7 @@ pub mod fx;
 pub mod guard;
 pub mod k2;
 pub mod lab;
+pub mod names;
 pub mod output;
 pub mod paths;
 pub mod pending;

@@ -21,6 +21,20 @@ pub struct Reading {
     /// Set when a command touches several devices.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub device: Option<String>,
+    /// The operand's tag name, when the device has a tag that is exactly this operand
+    /// (`crate::names`): shown as `Tank2_Level (VD200/REAL)`, `name` beside `operand` in JSON.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub name: Option<String>,
+    /// The tag's comment, when it has one (a column of its own in text).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub comment: Option<String>,
+}
+
+impl Reading {
+    /// A reading of an operand that has no name.
+    pub fn plain(operand: String, value: Value, dtype: DataType) -> Reading {
+        Reading { operand, value, dtype, device: None, name: None, comment: None }
+    }
 }
 
 /// How a result is shown to a person.
@@ -172,9 +186,17 @@ fn render_outcome(w: &mut dyn Write, style: Style, o: &Outcome) -> io::Result<()
         View::Quiet => Ok(()),
         View::Text(t) => writeln!(w, "{t}"),
         View::Values => {
-            let width = o.values.iter().map(|r| label(r).len()).max().unwrap_or(0);
-            for r in &o.values {
-                writeln!(w, "{:<width$}  {}", label(r), show_value(&r.value, r.dtype))?;
+            let width = o.values.iter().map(|r| label(r).chars().count()).max().unwrap_or(0);
+            let commented = o.values.iter().any(|r| r.comment.is_some());
+            let shown: Vec<String> = o.values.iter().map(|r| show_value(&r.value, r.dtype)).collect();
+            let vwidth = if commented { shown.iter().map(|v| v.chars().count()).max().unwrap_or(0) } else { 0 };
+            for (r, v) in o.values.iter().zip(&shown) {
+                let l = label(r);
+                let pad = width - l.chars().count();
+                match &r.comment {
+                    Some(c) => writeln!(w, "{l}{}  {v:<vwidth$}  {c}", " ".repeat(pad))?,
+                    None => writeln!(w, "{l}{}  {v}", " ".repeat(pad))?,
+                }
             }
             Ok(())
         }
@@ -194,10 +216,12 @@ fn render_outcome(w: &mut dyn Write, style: Style, o: &Outcome) -> io::Result<()
     }
 }
 
-fn label(r: &Reading) -> String {
-    match &r.device {
-        Some(d) => format!("{d}:{}", r.operand),
-        None => r.operand.clone(),
+/// `VW100`, `press:VW100`, `Tank2_Level (VD200/REAL)`, `press:Tank2_Level (VD200/REAL)`.
+pub fn label(r: &Reading) -> String {
+    let dev = r.device.as_deref().map(|d| format!("{d}:")).unwrap_or_default();
+    match &r.name {
+        Some(n) => format!("{dev}{n} ({})", r.operand),
+        None => format!("{dev}{}", r.operand),
     }
 }
 
@@ -264,7 +288,7 @@ mod tests {
     use crate::core::ErrorKind;
 
     fn reading(op: &str, v: i64, t: DataType) -> Reading {
-        Reading { operand: op.into(), value: Value::Int(v), dtype: t, device: None }
+        Reading::plain(op.into(), Value::Int(v), t)
     }
 
     #[test]

@@ -26,6 +26,12 @@ pub struct Entry {
     /// A served simulator's control channel (`control=PATH` in the URL), where `sim fault …`
     /// and the other simulator controls go ([`crate::core::link::control`]).
     pub control: Option<std::path::PathBuf>,
+    /// The device's tag names ([`crate::names`]), resolved on its operand grammar; empty
+    /// when it has no tag file.
+    pub names: Arc<crate::names::Names>,
+    /// A tag file not resolved yet (the device was not connected when it was given): resolved
+    /// when the device is made ready.
+    pub tags: Option<Arc<crate::tags::TagTable>>,
 }
 
 /// How `set` items arrive: operand text and value text, with their columns in the line.
@@ -223,8 +229,15 @@ impl Session {
             Ok(Box::new(guarded) as Box<dyn Device>)
         });
         let device = Box::new(crate::pending::Pending::unopened(url, open, e.clone()));
-        let entry =
-            Entry { name: name.to_string(), url: url.to_string(), device, guard: None, control: control_param(url) };
+        let entry = Entry {
+            name: name.to_string(),
+            url: url.to_string(),
+            device,
+            guard: None,
+            control: control_param(url),
+            names: crate::names::none(),
+            tags: None,
+        };
         match self.devices.iter().position(|d| d.name == name) {
             Some(i) => self.devices[i] = entry,
             None => self.devices.push(entry),
@@ -247,7 +260,102 @@ impl Session {
     /// state file held by another plcsh, its link still down) comes back named by device.
     pub fn ready(&mut self, i: usize) -> Result<()> {
         let e = &mut self.devices[i];
-        e.device.ready().map_err(|err| err.device(&e.name))
+        e.device.ready().map_err(|err| err.device(&e.name))?;
+        if let Some(tags) = e.tags.clone() {
+            // A tag file given before the device was connected: resolved now, and reported on
+            // every command until it resolves (a name must not mean nothing silently).
+            let table = crate::tags::TagTable::clone(&tags);
+            e.names =
+                Arc::new(crate::names::Names::resolve(table, e.device.operands()).map_err(|err| err.device(&e.name))?);
+            e.tags = None;
+        }
+        Ok(())
+    }
+
+    /// Gives device `i` the tags of `tags` (`tags = "…"` in a profile, `--tags`,
+    /// `plc:tags_load`): resolved on its operand grammar now, or when it is connected if it
+    /// is not yet. Returns how many names the device has.
+    pub fn attach_tags(&mut self, i: usize, tags: crate::tags::TagTable) -> Result<usize> {
+        let e = &mut self.devices[i];
+        let waiting = tags.iter().next().is_some_and(|t| {
+            e.device.operands().parse(&t.address).is_err_and(|x| x.kind == crate::core::ErrorKind::Link)
+        });
+        if waiting {
+            let n = tags.len();
+            e.tags = Some(Arc::new(tags));
+            return Ok(n);
+        }
+        let names = crate::names::Names::resolve(tags, e.device.operands()).map_err(|err| err.device(&e.name))?;
+        let n = names.len();
+        e.names = Arc::new(names);
+        e.tags = None;
+        Ok(n)
+    }
+
+    /// Loads tag file `path` ([`crate::names::load`]) for device `i`, under a sandbox's rules.
+    pub fn load_tags(&mut self, i: usize, path: &std::path::Path) -> Result<usize> {
+        self.check_read(&path.to_string_lossy())?;
+        let tags = crate::names::load(path).map_err(|e| e.device(&self.devices[i].name))?;
+        self.attach_tags(i, tags)
+    }
+
+    /// The names of device `i`.
+    pub fn names(&self, i: usize) -> &crate::names::Names {
+        &self.devices[i].names
+    }
+
+    /// The tag that is exactly operand `op` of device `i`, if it has one.
+    pub fn tag_of(&self, i: usize, op: &Operand) -> Option<&crate::names::Named> {
+        self.devices[i].names.of(op)
+    }
+
+    /// How an operand is labelled in series (trace, plot, watch, recordings): its tag's name
+    /// when it has one, else its canonical text.
+    pub fn label_of(&self, i: usize, op: &Operand) -> String {
+        match self.tag_of(i, op) {
+            Some(n) => n.name.clone(),
+            None => self.name_of(i, op),
+        }
+    }
+
+    /// Parses an operand expression (a name, a range or count form from names, or an
+    /// operand) on device `i`'s grammar: the one place names become operands. Errors carry
+    /// a column within `body`; an unknown word gets the nearest names beside the grammar's
+    /// own suggestions.
+    pub fn parse_on(&self, i: usize, body: &str) -> Result<Vec<Operand>> {
+        let e = &self.devices[i];
+        let space = e.device.operands();
+        match e.names.expand(body) {
+            Some(crate::names::Expanded::One(op)) => return Ok(vec![op]),
+            Some(crate::names::Expanded::Text(t)) => {
+                let lead = body.len() - body.trim_start().len();
+                return space.parse(&t).map_err(|err| {
+                    let mut err = err;
+                    err.column = Some(lead);
+                    err
+                });
+            }
+            None => {}
+        }
+        space.parse(body).map_err(|err| {
+            let near = e.names.near(body);
+            if near.is_empty() {
+                return err;
+            }
+            // A word nearer a name than an operand: said as an unknown name, the grammar's own
+            // reading kept as the cause.
+            let word = body.trim();
+            let list: Vec<String> = near.iter().map(|n| format!("{} ({})", n.name, n.operand)).collect();
+            let mut hint: String = crate::msg!("names-hint-did-you-mean", names = list.join(", ")).into();
+            if let Some(h) = &err.hint {
+                hint = format!("{hint}; {h}");
+            }
+            let msg = crate::msg!("names-unknown", word = word, file = e.names.file.as_str());
+            Error::new(crate::core::ErrorKind::Operand, msg)
+                .cause(&err.message)
+                .hint(hint)
+                .column(body.len() - body.trim_start().len())
+        })
     }
 
     /// Makes ready the device each operand expression names (`press:VW0`, else the current one).
@@ -290,6 +398,10 @@ impl Session {
         }
         let guard = crate::profile::Guard::build(p, device.operands()).map_err(|e| e.device(name))?;
         self.add_guarded(name, &p.url, device, guard);
+        if let Some(tags) = &p.tags {
+            let i = self.index(name)?;
+            self.load_tags(i, tags).map_err(|e| e.cause(&from))?;
+        }
         Ok(())
     }
 
@@ -313,7 +425,15 @@ impl Session {
                 .logging(self.write_log.clone(), name),
         );
         let control = control_param(url);
-        let entry = Entry { name: name.to_string(), url: url.to_string(), device, guard: rules, control };
+        let entry = Entry {
+            name: name.to_string(),
+            url: url.to_string(),
+            device,
+            guard: rules,
+            control,
+            names: crate::names::none(),
+            tags: None,
+        };
         match self.devices.iter().position(|e| e.name == name) {
             Some(i) => self.devices[i] = entry,
             None => self.devices.push(entry),
@@ -391,8 +511,7 @@ impl Session {
             Some(c) => (self.index(&t[..c]).map_err(|e| e.column(lead))?, &t[c + 1..], lead + c + 1),
             None => (self.current_index()?, t, lead),
         };
-        let entry = &self.devices[device];
-        let ops = entry.device.operands().parse(body).map_err(|e| e.shift(offset).device(&entry.name))?;
+        let ops = self.parse_on(device, body).map_err(|e| e.shift(offset).device(&self.devices[device].name))?;
         Ok(Target { device, ops })
     }
 
@@ -428,10 +547,7 @@ impl Session {
             let entry = &mut self.devices[dev];
             let values = entry.device.read(&ops).map_err(|e| e.device(&entry.name))?;
             for (op, v) in ops.iter().zip(values) {
-                out.push((
-                    dev,
-                    Reading { operand: entry.device.operands().name(op), value: v, dtype: op.dtype, device: None },
-                ));
+                out.push((dev, reading(entry, op, v)));
             }
         }
         Ok(out)
@@ -470,10 +586,7 @@ impl Session {
             let entry = &mut self.devices[dev];
             entry.device.write(&batch).map_err(|e| e.device(&entry.name))?;
             for (op, v) in batch {
-                out.push((
-                    dev,
-                    Reading { operand: entry.device.operands().name(&op), value: v, dtype: op.dtype, device: None },
-                ));
+                out.push((dev, reading(entry, &op, v)));
             }
         }
         Ok(out)
@@ -513,6 +626,19 @@ impl Session {
 
     pub fn interrupted(&self) -> bool {
         self.interrupt.load(Ordering::Relaxed)
+    }
+}
+
+/// A reading of `op` on `entry`, with its tag's name and comment when it has one.
+pub fn reading(entry: &Entry, op: &Operand, value: Value) -> Reading {
+    let tag = entry.names.of(op);
+    Reading {
+        operand: entry.device.operands().name(op),
+        value,
+        dtype: op.dtype,
+        device: None,
+        name: tag.map(|t| t.name.clone()),
+        comment: tag.map(|t| t.comment.clone()).filter(|c| !c.is_empty()),
     }
 }
 

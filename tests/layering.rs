@@ -18,7 +18,10 @@ const LAYERS: &[(&str, &[&str])] = &[
     ("core", &["core"]),
     ("base", &["engine", "paths", "signals", "plot", "tags"]),
     ("families", &["k2", "servo", "umpk", "fx"]),
-    ("devices", &["wiring", "guard", "snapshot", "pending", "session", "profile", "confine", "output", "schemes"]),
+    (
+        "devices",
+        &["wiring", "guard", "snapshot", "pending", "names", "session", "profile", "confine", "output", "schemes"],
+    ),
     ("services", &["record", "dataset", "report"]),
     ("front ends", &["fleet", "lab", "script", "shell", "publish"]),
     ("cli", &["cli", "fuzzing"]),

@@ -66,6 +66,10 @@ pub struct Options {
     /// current) or a bare URL (which replaces `plc`). Repeatable.
     #[arg(long = "device", short = 'd', value_name = "NAME=URL", global = true, help_heading = GLOBAL)]
     pub devices: Vec<String>,
+    /// A tag file (CSV, TOML or IEC VAR_GLOBAL) whose names work wherever an operand does:
+    /// FILE for the current device, DEVICE=FILE for another (docs/tags.md). Repeatable.
+    #[arg(long = "tags", value_name = "[DEVICE=]FILE", global = true, help_heading = GLOBAL)]
+    pub tags: Vec<String>,
     /// Simulator time: follow the wall clock, or move only when stepped.
     #[arg(long, value_enum, default_value = "wall", global = true, help_heading = GLOBAL)]
     pub time: TimeMode,
@@ -282,6 +286,17 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
         current = named.first().map(|(n, _)| n.clone()).unwrap_or_default();
     }
     s.use_device(&current)?;
+    for t in &cli.tags {
+        // `DEVICE=FILE` when DEVICE is an open device, else a file for the current device.
+        let (i, file) = match t.split_once('=').map(|(d, f)| (s.index(d), f)) {
+            Some((Ok(i), f)) => (i, f),
+            _ => (s.current_index()?, t.as_str()),
+        };
+        s.load_tags(i, std::path::Path::new(file))?;
+        for w in &s.names(i).warnings {
+            eprintln!("plcsh: warning: {w}");
+        }
+    }
     // `sim serve --bench` opens the bench in the served simulators instead.
     if let (Some(path), false) = (&cli.bench, matches!(cli.sub, Some(Sub::Sim { .. }))) {
         let bench = crate::wiring::bench::Bench::load(path)?;
@@ -310,6 +325,7 @@ const VALUE_OPTIONS: &[&str] = &[
     "--model",
     "-d",
     "--device",
+    "--tags",
     "--time",
     "--config",
     "--state",

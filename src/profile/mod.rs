@@ -44,6 +44,9 @@ pub struct Profile {
     pub allow: Option<Vec<String>>,
     /// Where the profile is defined (`file:line`).
     pub origin: String,
+    /// The device's tag file (`tags = "press1.csv"`, relative to the profile file's folder):
+    /// its names work wherever an operand does (`crate::names`).
+    pub tags: Option<PathBuf>,
 }
 
 /// A problem in the profile file, at a line.
@@ -271,6 +274,7 @@ fn profile(
         read_only: false,
         allow: None,
         origin: origin.to_string(),
+        tags: None,
     };
     let mut extra = Vec::new();
     for (k, v) in keys {
@@ -297,6 +301,15 @@ fn profile(
                     }
                 }
             }
+            "tags" => match v.get_ref() {
+                toml::Value::String(f) => {
+                    // Relative to the folder of the file that names it, as a person reads it there.
+                    let file = origin.rsplit_once(':').map_or(origin, |(f, _)| f);
+                    let dir = Path::new(file).parent().unwrap_or(Path::new(""));
+                    p.tags = Some(dir.join(f));
+                }
+                _ => return Err((at(v), crate::msg!("names-profile-tags-not-text").into())),
+            },
             "options" => match v.get_ref() {
                 toml::Value::Table(t) => {
                     for (ok, ov) in t {

@@ -156,18 +156,20 @@ struct Dev {
 }
 
 impl Dev {
-    /// The leaf of operand `name` (made on its first reading).
-    fn leaf(&mut self, group: &str, name: &str, dtype: crate::core::DataType) -> usize {
+    /// The leaf of operand `name` (made on its first reading). A tag's name (`crate::names`)
+    /// is the topic's last level and rides in the payload as `name` beside `operand`.
+    fn leaf(&mut self, group: &str, name: &str, tag: Option<&str>, dtype: crate::core::DataType) -> usize {
         if let Some(&i) = self.leaf_of.get(name) {
             return i;
         }
         let i = self.leaves.len();
         let dtype = serde_json::to_string(&dtype).unwrap_or_else(|_| "null".into());
+        let tag_field = tag.map(|t| format!(",\"name\":{}", serde_json::Value::from(t))).unwrap_or_default();
         self.leaves.push(Leaf {
-            topic: super::topic(group, &self.name, name),
+            topic: super::topic(group, &self.name, tag.unwrap_or(name)),
             mid: format!(",\"type\":{dtype},\"ts\":"),
             tail: format!(
-                ",\"device\":{},\"operand\":{}}}",
+                ",\"device\":{},\"operand\":{}{tag_field}}}",
                 serde_json::Value::from(self.name.as_str()),
                 serde_json::Value::from(name)
             ),
@@ -190,12 +192,13 @@ impl Dev {
                 return None;
             }
             for op in target.ops {
-                named.push((op, session.name_of(target.device, &op)));
+                let tag = session.tag_of(target.device, &op).map(|t| t.name.clone());
+                named.push((op, session.name_of(target.device, &op), tag));
             }
         }
         let device = device?;
-        let leaves = named.iter().map(|(op, name)| self.leaf(group, name, op.dtype)).collect();
-        self.plan = Some(Plan { device, ops: named.into_iter().map(|(op, _)| op).collect(), leaves });
+        let leaves = named.iter().map(|(op, name, tag)| self.leaf(group, name, tag.as_deref(), op.dtype)).collect();
+        self.plan = Some(Plan { device, ops: named.into_iter().map(|(op, ..)| op).collect(), leaves });
         Some(())
     }
 }
@@ -499,14 +502,10 @@ impl Pool {
                     None => {
                         let texts: Vec<&str> = self.texts.iter().map(String::as_str).collect();
                         match session.get(&texts) {
-                            Ok(readings) => {
-                                let named: Vec<(String, crate::core::DataType, Value)> =
-                                    readings.into_iter().map(|(_, r)| (r.operand, r.dtype, r.value)).collect();
-                                Ok(named
-                                    .into_iter()
-                                    .map(|(name, dtype, value)| (d.leaf(&p.group, &name, dtype), value))
-                                    .collect())
-                            }
+                            Ok(readings) => Ok(readings
+                                .into_iter()
+                                .map(|(_, r)| (d.leaf(&p.group, &r.operand, r.name.as_deref(), r.dtype), r.value))
+                                .collect()),
                             Err(e) => Err(e),
                         }
                     }
@@ -670,6 +669,51 @@ mod tests {
         assert_eq!(j["operand"], "VW2");
         assert_eq!(j["type"], "WORD");
         assert_eq!(j["value"], 0);
+    }
+
+    /// A tag's name is the topic's last level on every poll (the first through the session's
+    /// reader, the later ones through the resolved plan), and the payload carries `name` beside
+    /// `operand` (docs/tags.md, "How names appear"); an operand without a tag keeps its topic.
+    #[test]
+    fn a_named_operand_is_published_under_its_name_with_name_and_operand_in_the_payload() {
+        let mut s = Session::new(crate::core::Clock::following());
+        s.open("press", "sim:K205-16DT").unwrap();
+        let table = crate::tags::TagTable::parse_text(
+            "name,address,type,comment\nTank2_Level,VD200,REAL,\nМотор_1_Пуск,M0.3,BOOL,\n",
+            "t.csv",
+            None,
+        )
+        .unwrap();
+        s.attach_tags(0, table).unwrap();
+        let outbox = Arc::new(Outbox::new(1000, 1));
+        let (tx, _rx) = std::sync::mpsc::channel();
+        let poll = Poll {
+            group: "g".into(),
+            operands: vec!["Tank2_Level".into(), "Мотор_1_Пуск".into(), "VW0".into()],
+            every: Duration::from_millis(5),
+            deadband: None,
+            count: Some(3),
+        };
+        let pool =
+            Pool::start(vec![Member { name: "press".into(), session: Ok(s), reopen: None }], poll, outbox.clone(), tx)
+                .unwrap();
+        pool.join();
+        let mut all = Vec::new();
+        outbox.take(usize::MAX, &mut all);
+        for (topic, operand, name) in [
+            ("plcsh/g/press/Tank2_Level", "VD200/REAL", Some("Tank2_Level")),
+            ("plcsh/g/press/Мотор_1_Пуск", "M0.3", Some("Мотор_1_Пуск")),
+            ("plcsh/g/press/VW0", "VW0", None),
+        ] {
+            let got: Vec<serde_json::Value> =
+                all.iter().filter(|m| m.topic == topic).map(|m| serde_json::from_slice(&m.payload).unwrap()).collect();
+            assert_eq!(got.len(), 3, "{topic}: every poll");
+            for j in got {
+                assert_eq!(j["operand"], operand, "{j}");
+                assert_eq!(j["device"], "press", "{j}");
+                assert_eq!(j.get("name").and_then(|n| n.as_str()), name, "{j}");
+            }
+        }
     }
 
     #[test]

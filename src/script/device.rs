@@ -19,14 +19,14 @@ use std::collections::HashMap;
 /// A device in Lua.
 pub struct Handle {
     name: String,
-    /// What the name meant when the cache was filled (url, model).
-    ident: (String, String),
+    /// What the name meant when the cache was filled (url, model, its tag names).
+    ident: (String, String, usize),
     cache: HashMap<Box<[u8]>, Operand>,
 }
 
 impl Handle {
     pub fn new(name: &str) -> Handle {
-        Handle { name: name.to_string(), ident: (String::new(), String::new()), cache: HashMap::new() }
+        Handle { name: name.to_string(), ident: (String::new(), String::new(), 0), cache: HashMap::new() }
     }
 
     /// Resolves the name now; drops the cache if the name now means another device.
@@ -36,9 +36,11 @@ impl Handle {
         sh.session.ready(i)?;
         let e = &sh.session.entries()[i];
         let model = &e.device.info().model;
-        if e.url != self.ident.0 || *model != self.ident.1 {
+        // A tag file loaded since (`plc:tags_load`) changes what a name means.
+        let names = std::sync::Arc::as_ptr(&e.names) as usize;
+        if e.url != self.ident.0 || *model != self.ident.1 || names != self.ident.2 {
             self.cache.clear();
-            self.ident = (e.url.clone(), model.clone());
+            self.ident = (e.url.clone(), model.clone(), names);
         }
         Ok(i)
     }
@@ -49,7 +51,8 @@ impl Handle {
             return Ok(*op);
         }
         let text = std::str::from_utf8(key).map_err(|_| Error::usage("operand names are text"))?;
-        let ops = sh.session.entries()[i].device.operands().parse(text).map_err(|e| e.device(&self.name))?;
+        // Names first (`plc.Conveyor_Run`, `plc["Мотор_1_Пуск"]`): the session's one parser.
+        let ops = sh.session.parse_on(i, text).map_err(|e| e.device(&self.name))?;
         let [op] = ops[..] else {
             return Err(Error::usage(format!("`{text}` names {} operands; a field is one operand", ops.len()))
                 .device(&self.name)
@@ -121,10 +124,7 @@ impl Handle {
             for n in &names {
                 match self.operand(sh, i, n.as_bytes()) {
                     Ok(op) => ops.push(op),
-                    Err(_) => {
-                        let space = sh.session.entries()[i].device.operands();
-                        ops.extend(space.parse(n).map_err(|e| e.device(&self.name))?);
-                    }
+                    Err(_) => ops.extend(sh.session.parse_on(i, n).map_err(|e| e.device(&self.name))?),
                 }
             }
             sh.session.read_values(i, &ops)
@@ -234,7 +234,7 @@ fn from_value(v: V) -> Value {
 }
 
 /// The methods every device handle has besides the bridge's (see `add_methods`).
-const METHODS: &[&str] = &["get", "set", "name", "info"];
+const METHODS: &[&str] = &["get", "set", "name", "info", "tags_load"];
 
 impl UserData for Handle {
     fn add_methods<M: UserDataMethods<Self>>(m: &mut M) {
@@ -267,6 +267,14 @@ impl UserData for Handle {
                 Ok(j)
             })?;
             api::json_to_lua(lua, &j)
+        });
+        // `plc:tags_load("press1.csv")`: the device's tag names (`crate::names`), a path
+        // relative to the working directory as `io.open` reads it; returns how many.
+        m.add_method("tags_load", |lua, this, file: String| {
+            with_shell(lua, |sh| {
+                let i = index(sh, &this.name)?;
+                sh.session.load_tags(i, std::path::Path::new(&file))
+            })
         });
         for b in BRIDGE {
             m.add_method(b.method, move |lua, this, args: MultiValue| {

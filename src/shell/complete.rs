@@ -17,6 +17,9 @@ pub struct DeviceView<'a> {
     pub family: &'a str,
     pub model: &'a str,
     pub space: &'a dyn OperandSpace,
+    /// The device's tag names (`crate::names`): completed beside its operands, their comments
+    /// as hints.
+    pub names: Option<&'a crate::names::Names>,
 }
 
 /// A device profile (from the profile file), as completion sees it.
@@ -242,10 +245,11 @@ fn devices(word: &str, view: &View, suffix: &str) -> Vec<Suggestion> {
         .collect()
 }
 
-fn from_space(space: &dyn OperandSpace, prefix: &str, word: &str) -> Vec<Suggestion> {
-    space
-        .complete(word)
+fn from_space(d: &DeviceView, prefix: &str, word: &str) -> Vec<Suggestion> {
+    let names = d.names.map(|n| n.complete(word)).unwrap_or_default();
+    names
         .into_iter()
+        .chain(d.space.complete(word))
         .map(|c| Suggestion { text: format!("{prefix}{}", c.text), meaning: c.meaning })
         .collect()
 }
@@ -255,12 +259,12 @@ fn from_space(space: &dyn OperandSpace, prefix: &str, word: &str) -> Vec<Suggest
 fn operands(word: &str, view: &View) -> Vec<Suggestion> {
     if let Some((dev, rest)) = word.split_once(':') {
         return match view.devices.iter().find(|d| d.name == dev) {
-            Some(d) => from_space(d.space, &format!("{dev}:"), rest),
+            Some(d) => from_space(d, &format!("{dev}:"), rest),
             None => Vec::new(),
         };
     }
     let mut v = match view.current.and_then(|i| view.devices.get(i)) {
-        Some(d) => from_space(d.space, "", word),
+        Some(d) => from_space(d, "", word),
         None => Vec::new(),
     };
     if !word.is_empty() {
@@ -415,10 +419,14 @@ pub fn complete(line: &str, pos: usize, view: &View) -> Completion {
 /// The meaning of a complete operand (`SMB67` → `PTO0/PWM0 (Q0.0) control byte`), through
 /// the device its prefix names.
 fn meaning(word: &str, view: &View) -> Option<String> {
-    let (space, body) = match word.split_once(':') {
-        Some((dev, rest)) => (view.devices.iter().find(|d| d.name == dev)?.space, rest),
-        None => (view.devices.get(view.current?)?.space, word),
+    let (d, body) = match word.split_once(':') {
+        Some((dev, rest)) => (view.devices.iter().find(|d| d.name == dev)?, rest),
+        None => (view.devices.get(view.current?)?, word),
     };
+    let space = d.space;
+    if let Some(n) = d.names.and_then(|n| n.get(body)) {
+        return Some(if n.comment.is_empty() { n.operand.clone() } else { format!("{} · {}", n.operand, n.comment) });
+    }
     let ops = space.parse(body).ok()?;
     let first = ops.first()?;
     let what = space.describe(first)?;
@@ -546,9 +554,9 @@ mod tests {
         let k209 = K2Space::new(catalog::find("K209M-56DT").unwrap());
         let view = View {
             devices: vec![
-                DeviceView { name: "plc", family: "k2", model: "K205-16DT", space: &k205 },
-                DeviceView { name: "press2", family: "k2", model: "K209M-56DT", space: &k209 },
-                DeviceView { name: "servo", family: "test", model: "FD124S", space: &Objects },
+                DeviceView { name: "plc", family: "k2", model: "K205-16DT", space: &k205, names: None },
+                DeviceView { name: "press2", family: "k2", model: "K209M-56DT", space: &k209, names: None },
+                DeviceView { name: "servo", family: "test", model: "FD124S", space: &Objects, names: None },
             ],
             current: Some(0),
             profiles: vec![
@@ -596,6 +604,42 @@ mod tests {
             assert!(c.items.iter().any(|s| s.text == "SMB67"));
             assert!(complete("set SMB67=16", 12, v).items.is_empty());
         });
+    }
+
+    /// A device's tag names complete beside its operands, the operand and the comment as the
+    /// meaning, also after its `device:` prefix; a whole name's hint is that meaning too.
+    #[test]
+    fn tag_names_complete_with_their_comments() {
+        let k205 = K2Space::new(catalog::find("K205-16DT").unwrap());
+        let table = crate::tags::TagTable::parse_text(
+            "name,address,type,comment\nTank2_Level,VD200,REAL,level of tank 2\nМотор_1_Пуск,Q0.0,BOOL,\n",
+            "t.csv",
+            None,
+        )
+        .unwrap();
+        let names = crate::names::Names::resolve(table, &k205).unwrap();
+        let view = View {
+            devices: vec![DeviceView {
+                name: "plc",
+                family: "k2",
+                model: "K205-16DT",
+                space: &k205,
+                names: Some(&names),
+            }],
+            current: Some(0),
+            profiles: vec![],
+            files: &fake_files,
+        };
+        let c = complete("get tank", 8, &view);
+        assert_eq!(
+            c.items,
+            vec![Suggestion { text: "Tank2_Level".into(), meaning: "VD200/REAL · level of tank 2".into() }]
+        );
+        let line = "watch plc:мот";
+        let c = complete(line, line.len(), &view);
+        assert_eq!(c.items.iter().map(|s| s.text.as_str()).collect::<Vec<_>>(), ["plc:Мотор_1_Пуск"]);
+        assert_eq!(c.items[0].meaning, "Q0.0");
+        assert_eq!(meaning("Tank2_Level", &view).as_deref(), Some("VD200/REAL · level of tank 2"));
     }
 
     #[test]

@@ -27,6 +27,7 @@ pub fn view_of<'a>(session: &'a Session, files: &'a dyn Fn(&str) -> Vec<String>)
                 family: e.device.info().family,
                 model: &e.device.info().model,
                 space: e.device.operands(),
+                names: (!e.names.is_empty()).then_some(&*e.names),
             })
             .collect(),
         current,

@@ -11,6 +11,7 @@ pub mod complete;
 pub mod files;
 pub mod helper;
 pub mod lex;
+pub mod names;
 pub mod progress;
 pub mod repl;
 pub mod sample;
@@ -105,12 +106,24 @@ fn strip_comment(line: &str) -> &str {
 /// and the words that changed, or `None` when nothing did (or the words cannot be split: the
 /// command then reports that as typed).
 pub(crate) fn fold_operands(cmd: &str, text: &str) -> Option<(String, Vec<(String, String)>)> {
+    fold_operands_except(cmd, text, |_| vec![])
+}
+
+/// [`fold_operands`], leaving alone also the words `keep` marks (tag names: `names::tag_words`).
+fn fold_operands_except(
+    cmd: &str,
+    text: &str,
+    keep: impl FnOnce(&[(usize, &str)]) -> Vec<bool>,
+) -> Option<(String, Vec<(String, String)>)> {
     if text.is_ascii() && !text.contains('%') {
         return None;
     }
     let words = lex::words(text).ok()?;
     let raw: Vec<&str> = words.iter().map(|w| w.1).collect();
-    let mask = commands::text_words(cmd, &raw);
+    let mut mask = commands::text_words(cmd, &raw);
+    for (m, k) in mask.iter_mut().zip(keep(&words)) {
+        *m |= k;
+    }
     let mut out = String::with_capacity(text.len());
     let mut changed = Vec::new();
     let (mut copied, mut k) = (0, 0);
@@ -278,9 +291,13 @@ impl Shell {
                 c.check_bench(&what).map_err(|e| (spec.name.to_string(), e.column(offset)))?;
             }
         }
-        let folded = fold_operands(spec.name, args.text);
+        let folded =
+            fold_operands_except(spec.name, args.text, |words| names::tag_words(&self.session, spec.name, words));
         let args = Args { text: folded.as_ref().map_or(args.text, |f| f.0.as_str()), offset: args.offset };
         changed.extend(folded.as_ref().map(|f| f.1.clone()).unwrap_or_default());
+        // Tag names as their operands, for the commands that read operands themselves.
+        let named = names::operands_for(&self.session, spec, args.text);
+        let args = Args { text: named.as_deref().unwrap_or(args.text), offset: args.offset };
         let mut r = match dev {
             Some(dev) => {
                 // The command acts on DEVICE as if it were the current one, for this command only.

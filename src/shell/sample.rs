@@ -127,7 +127,8 @@ pub fn parse<'a>(args: &Args<'a>, default_every: Duration, extra: &[&str], usage
     Ok(Request { operands, plan, options })
 }
 
-/// Operand labels as shown (`VW0`, or `press:VW0` when several devices are involved), checked
+/// Operand labels as shown (`VW0`, a tag's name `Tank2_Level`, or `press:VW0` when several
+/// devices are involved), checked
 /// before the first read.
 pub fn labels(session: &Session, operands: &[(usize, &str)]) -> Result<Vec<String>> {
     let mut targets = Vec::new();
@@ -138,7 +139,8 @@ pub fn labels(session: &Session, operands: &[(usize, &str)]) -> Result<Vec<Strin
     let mut out = Vec::new();
     for t in &targets {
         for op in &t.ops {
-            let name = session.name_of(t.device, op);
+            // A tag's name labels its series (`crate::names`); else the operand.
+            let name = session.label_of(t.device, op);
             out.push(if many { format!("{}:{name}", session.entries()[t.device].name) } else { name });
         }
     }

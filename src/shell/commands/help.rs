@@ -51,6 +51,28 @@ fn help(sh: &mut Shell, args: Args) -> Result<Outcome> {
     })?;
     let entry = &sh.session.entries()[target.device];
     let body = topic.rsplit(':').next().unwrap_or(topic);
+    // A tag's name (`crate::names`): what it stands for and its comment, then its operand's help.
+    if let Some(n) = entry.names.get(body) {
+        let mut text: String = crate::msg!(
+            "names-help-tag",
+            name = n.name.as_str(),
+            operand = n.operand.as_str(),
+            file = entry.names.file.as_str()
+        )
+        .into();
+        if !n.comment.is_empty() {
+            text.push_str(&format!("\n  {}", crate::msg!("names-help-comment", comment = n.comment.as_str()).text));
+        }
+        let operand = entry.device.operands().help(&n.operand).unwrap_or_default();
+        text.push_str(&format!("\n{}", operand.trim_end()));
+        let mut o = Outcome::new("help")
+            .text(text)
+            .with("name", &n.name)
+            .with("operand", &n.operand)
+            .with("comment", &n.comment);
+        o.device = Some(entry.name.clone());
+        return Ok(o);
+    }
     let text = entry.device.operands().help(body)?;
     let mut o = Outcome::new("help").text(text.trim_end().to_string());
     o.device = Some(entry.name.clone());

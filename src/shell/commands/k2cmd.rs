@@ -63,7 +63,7 @@ pub fn sim<'a>(sh: &'a mut Shell, dev: usize, what: &str) -> Result<&'a mut K2Si
 
 /// Helper writes as the output's readings.
 pub fn readings(w: &[Written]) -> Vec<Reading> {
-    w.iter().map(|w| Reading { operand: w.operand.clone(), value: w.value, dtype: w.dtype, device: None }).collect()
+    w.iter().map(|w| Reading::plain(w.operand.clone(), w.value, w.dtype)).collect()
 }
 
 /// The outcome of an executed helper: the raw writes first, then what the device did.

@@ -403,7 +403,7 @@ fn read(ops: &mut dyn ServoOps, space: &ServoSpace, rest: &[lex::Word], base: us
             "operand": o.name(), "index": o.address(), "value": v, "unit": unit.raw_label(),
             "eng": eng.map(|e| e.0), "eng_unit": eng.map(|e| e.1),
         }));
-        values.push(Reading { operand: o.name(), value: v, dtype: o.dtype, device: None });
+        values.push(Reading::plain(o.name(), v, o.dtype));
     }
     let mut out = Outcome::new("servo")
         .table(&["object", "index", "value", "unit", "engineering"], rows)

@@ -117,15 +117,17 @@ fn pulse_counts(sh: &mut Shell, operands: &[(usize, &str)]) -> Vec<(String, Stri
     for &(_, text) in operands {
         let Ok(target) = sh.session.resolve(text) else { continue };
         let dev = target.device;
-        let names: Vec<String> = target.ops.iter().map(|o| sh.session.name_of(dev, o)).collect();
+        // The operand (to find the pulse output) and its series label (a tag's name, if any).
+        let names: Vec<(String, String)> =
+            target.ops.iter().map(|o| (sh.session.name_of(dev, o), sh.session.label_of(dev, o))).collect();
         let prefix = text.trim().find(':').map(|c| text.trim()[..=c].to_string()).unwrap_or_default();
         let Some(k2) = crate::k2::ops(sh.session.entry(dev).device.as_mut()) else { continue };
         let model = k2.model();
-        for name in names {
+        for (name, shown) in names {
             let Some(p) = model.pto.iter().find(|p| p.output == name) else { continue };
             let Some(r) = crate::k2::sm_map::PTO_REGS.iter().find(|r| r.channel == p.channel) else { continue };
             let label = |n: &str| if prefix.is_empty() { n.to_string() } else { format!("{prefix}{n}") };
-            out.push((label(&name), label(&format!("SMD{}", r.pos_cv))));
+            out.push((label(&shown), label(&format!("SMD{}", r.pos_cv))));
         }
     }
     out

@@ -542,7 +542,7 @@ fn monitor(sh: &mut Shell, dev: usize, rest: &[Word]) -> Result<Outcome> {
                     'C' => m.counters >> o.index & 1 != 0,
                     _ => m.markers >> o.index & 1 != 0,
                 };
-                Reading { operand: o.name(), value: Value::Bool(on), dtype: DataType::Bool, device: None }
+                Reading::plain(o.name(), Value::Bool(on), DataType::Bool)
             })
             .collect();
         let s = Sample { index: shown, t, readings };

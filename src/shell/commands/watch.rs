@@ -84,7 +84,14 @@ impl Render {
                 if self.drawn > 0 {
                     write!(w, "\x1b[{}A", self.drawn)?;
                 }
-                let width = self.labels.iter().map(|l| l.chars().count()).max().unwrap_or(0);
+                // A tag's reading shows its operand beside its name (`Tank2_Level (VD200/REAL)`).
+                let shown: Vec<String> = self
+                    .labels
+                    .iter()
+                    .zip(&s.readings)
+                    .map(|(l, r)| if r.name.is_some() { format!("{l} ({})", r.operand) } else { l.clone() })
+                    .collect();
+                let width = shown.iter().map(|l| l.chars().count()).max().unwrap_or(0);
                 let mut header = format!(
                     "every {} · t={} · sample {} · Ctrl-C stops",
                     crate::plot::time(self.every.as_secs_f64()),
@@ -92,13 +99,16 @@ impl Render {
                     s.index + 1
                 );
                 // Cells: the text, and its width on screen (without colour codes).
-                let cells: Vec<(String, usize)> = self
-                    .labels
+                let cells: Vec<(String, usize)> = shown
                     .iter()
                     .zip(&s.readings)
                     .zip(&changed)
                     .map(|((l, r), c)| {
                         let v = show_value(&r.value, r.dtype);
+                        let v = match &r.comment {
+                            Some(text) => format!("{v}  {text}"),
+                            None => v,
+                        };
                         let shown = format!("{l:<width$}  {v}{}", if *c && !color { " *" } else { "" });
                         let n = shown.chars().count();
                         let text = match (c, color) {

@@ -1,0 +1,113 @@
+//! Tag names in the command language (docs/tags.md, "How names appear"): a name works
+//! wherever an operand does.
+//!
+//! Commands that read operands through [`crate::session::Session::resolve`] (`get`, `set`,
+//! `read`, `watch`, `trace`, `plot`, `help`) take names there, with their columns as typed.
+//! Every other command reads operand words with its family's own grammar (`sim input I0.1`,
+//! `sim wire Q0.0 -> I0.1`, `umpk monitor`, `hsc … at VB3009`): for those the shell writes a
+//! name as its operand before the command runs — one rule for every command, so a command
+//! added later takes names without knowing about them (tests/names.rs walks the registry).
+//! Text words (paths, names of devices and snapshots, Lua code, quoted words:
+//! [`super::commands::text_words`]) and the words a command's forms spell out are never
+//! names. A name is also never read in the K2 manual's spelling (`Мотор_1_Пуск` keeps its
+//! Cyrillic letters: [`super::fold_operands`] leaves the words this module names alone).
+
+use super::commands::{self, forms, CommandSpec};
+use super::lex;
+use crate::session::Session;
+
+/// Commands that resolve operand words through the session themselves (names and all).
+pub const RESOLVING: &[&str] = &["get", "set", "read", "watch", "trace", "plot", "help", "lua"];
+
+/// The device whose names a command's words use: the device word of a command that reads
+/// its own (`umpk trainer monitor …`), else the current device.
+fn device_of(session: &Session, cmd: &str, words: &[(usize, &str)]) -> Option<usize> {
+    if ["umpk", "servo", "agent"].contains(&cmd) {
+        if let Some(i) = words.first().and_then(|w| session.index(w.1).ok()) {
+            return Some(i);
+        }
+        // Without a device word, `servo …` and `umpk …` act on the current device if it is
+        // of their family, else on the first open one that is.
+        let family = if cmd == "agent" { "k2" } else { cmd };
+        let of = |i: usize| session.entries()[i].device.info().family == family;
+        if let Some(i) = session.current_index().ok().filter(|&i| of(i)) {
+            return Some(i);
+        }
+        if let Some(i) = (0..session.entries().len()).find(|&i| of(i)) {
+            return Some(i);
+        }
+    }
+    session.current_index().ok()
+}
+
+/// The pieces of an operand word that may be names: `press:Level[4]=5` → the device index
+/// and the byte ranges of `Level`; `A..B` gives both sides.
+fn name_spans(session: &Session, default: Option<usize>, word: &str) -> Option<(usize, Vec<(usize, usize)>)> {
+    let end = word.find('=').unwrap_or(word.len());
+    let body = &word[..end];
+    let (dev, from) = match body.find(':') {
+        Some(c) => (session.index(&body[..c]).ok()?, c + 1),
+        None => (default?, 0),
+    };
+    let names = session.names(dev);
+    if names.is_empty() {
+        return None;
+    }
+    let mut spans = Vec::new();
+    let mut start = from;
+    let text = &body[from..];
+    let parts: Vec<&str> = text.split("..").collect();
+    for (k, p) in parts.iter().enumerate() {
+        let base = p.find('[').map_or(*p, |b| &p[..b]);
+        if names.get(base).is_some() {
+            spans.push((start, start + base.len()));
+        }
+        start += p.len() + if k + 1 < parts.len() { 2 } else { 0 };
+    }
+    (!spans.is_empty()).then_some((dev, spans))
+}
+
+/// For each of `words` (as [`lex::words`] splits a command's arguments): true when it names a
+/// tag of its device. The manual's spelling is not read in these.
+pub fn tag_words(session: &Session, cmd: &str, words: &[(usize, &str)]) -> Vec<bool> {
+    let default = device_of(session, cmd, words);
+    words.iter().map(|w| name_spans(session, default, w.1).is_some()).collect()
+}
+
+/// The arguments of `spec` with every name written as its operand (`sim input Start freq=1kHz`
+/// → `sim input I0.1 freq=1kHz`), for the commands outside [`RESOLVING`]; `None` when no word
+/// names a tag. Text words, the words the forms spell out and option keys are left alone.
+pub fn operands_for(session: &Session, spec: &CommandSpec, text: &str) -> Option<String> {
+    if RESOLVING.contains(&spec.name) || session.entries().iter().all(|e| e.names.is_empty()) {
+        return None;
+    }
+    let words = lex::words(text).ok()?;
+    let raw: Vec<&str> = words.iter().map(|w| w.1).collect();
+    let mask = commands::text_words(spec.name, &raw);
+    let literals = forms::literals(spec, None);
+    let keys: Vec<String> = forms::options(spec, None).into_iter().map(|(k, _)| k).collect();
+    let default = device_of(session, spec.name, &words);
+    let mut out = String::with_capacity(text.len() + 16);
+    let mut copied = 0;
+    for (k, &(col, w)) in words.iter().enumerate() {
+        if mask[k] || literals.iter().any(|l| l.eq_ignore_ascii_case(w)) {
+            continue;
+        }
+        if w.split_once('=').is_some_and(|(key, _)| keys.iter().any(|k| k == key)) {
+            continue;
+        }
+        let Some((dev, spans)) = name_spans(session, default, w) else { continue };
+        let names = session.names(dev);
+        for (a, b) in spans {
+            let Some(n) = names.get(&w[a..b]) else { continue };
+            out.push_str(&text[copied..col + a]);
+            out.push_str(&n.operand);
+            copied = col + b;
+        }
+    }
+    if copied == 0 {
+        return None;
+    }
+    out.push_str(&text[copied..]);
+    Some(out)
+}

@@ -1,0 +1,237 @@
+//! A tag's name works wherever an operand does (docs/tags.md, "How names appear"): one table
+//! over the command registry. Every form whose usage takes an operand (a placeholder
+//! `OPERAND`, `RANGE`, `OBJ`, a terminal, or an operand example such as `I0.1`, `QB0=16#05`,
+//! `VB3009`) has a row here with a line that gives it names instead; the rows are run in the
+//! REPL (lines on standard input), one-shot (`-c`) and from Lua (`plcsh.exec`), and must
+//! succeed and show what the row expects (Lua's own forms — `plc.NAME`, `plc["NAME"]`,
+//! `plc:get` — are [`lua_reads_and_writes_by_name_and_loads_tags`]). A form added to the registry that takes operands
+//! and has no row fails [`every_form_that_takes_an_operand_has_a_row`] until it is given one
+//! — that is, until it takes names.
+
+mod common;
+
+use plcsh::shell::commands::forms;
+use std::path::{Path, PathBuf};
+
+/// The PLC's tags: every type the K2 has, a Cyrillic and a Chinese name.
+const PLC_TAGS: &str = "name;address;type;comment
+Tank2_Level;VD200;REAL;Tank 2 level
+Conveyor_Run;M0.3;BOOL;conveyor motor
+Мотор_1_Пуск;Q0.1;BOOL;пуск мотора
+Start_Button;I0.1;BOOL;start push button
+Encoder_B;I0.0;BOOL;
+Motor_Out;Q0.0;BOOL;
+Out_Byte;QB1;BYTE;
+Speeds;VW100;WORD;speed table
+Count_Pv;VD400;DINT;
+Pto_Table;VB3001;BYTE;
+Hsc_Table;VB3009;BYTE;
+电机速度;VW300;INT;电机
+";
+
+/// The UMPK trainer's tags.
+const UMPK_TAGS: &str = "name,address,comment\nKey_3,I3,a key\n";
+
+/// The drive's tags (objects by name).
+const SERVO_TAGS: &str = "name,address,comment\nAxis_Pos,position_actual,where the axis is\nAxis_Ctl,controlword,\n";
+
+/// Every operand-taking form: (the form as `help` shows it, a line with names, a text the
+/// result shows). The line runs on a session with a simulated K2 `plc` (current), the drive
+/// `servo` and a UMPK `trainer`.
+const ROWS: &[(&str, &str, &str)] = &[
+    ("get OPERAND…", "get Tank2_Level Conveyor_Run Мотор_1_Пуск 电机速度 Speeds[2]", "\"name\":\"Tank2_Level\""),
+    ("set OPERAND=VALUE[, OPERAND=VALUE…]", "set Tank2_Level=12.5, Conveyor_Run=1", "\"name\":\"Conveyor_Run\""),
+    ("read RANGE…", "read Speeds[4] Out_Byte", "\"name\":\"Speeds\""),
+    ("help [COMMAND [SUB]|OPERAND|all]", "help Tank2_Level", "\"comment\":\"Tank 2 level\""),
+    ("watch OPERAND… [every=200ms] [count=N]", "watch Tank2_Level Мотор_1_Пуск count=2", "\"name\":\"Мотор_1_Пуск\""),
+    ("trace OPERAND… every=10ms for=2s [to=FILE.csv]", "trace Tank2_Level Motor_Out every=10ms for=50ms", "\"operand\":\"Tank2_Level\""),
+    (
+        "plot [OPERAND…] [to=FILE.png|FILE.svg] [size=900x340] [width=60] [height=8]",
+        "trace Tank2_Level Motor_Out every=10ms for=50ms; plot Tank2_Level",
+        "Tank2_Level",
+    ),
+    ("sim input I0.1 freq=1kHz [dir=up|down]", "sim input Start_Button freq=1kHz", "I0.1"),
+    ("sim input I0.1 off", "sim input Start_Button freq=1kHz; sim input Start_Button off", "stopped"),
+    ("sim quad A B freq=1kHz [dir=up|down]", "sim quad Start_Button Encoder_B freq=1kHz", "I0.1"),
+    ("sim retain RANGE…|none", "sim retain Speeds[4]", "VB100..VB107"),
+    ("sim program stop-outputs QB0=16#05 …", "sim program stop-outputs Out_Byte=16#05", "QB1"),
+    ("sim wire FROM -> TO[,TO…] [lines=N] [delay=D]", "sim wire plc:Motor_Out -> plc:Start_Button", "Q0.0"),
+    ("sim unwire TERMINAL|all", "sim wire plc:Motor_Out -> plc:Start_Button; sim unwire plc:Motor_Out", "Q0.0"),
+    (
+        "hsc N mode=9 [rate=4x] [pv=[100,200,300]] [relative] [cyclic] [at VB3009] [cv=0] [dir=up|down] [reset=low] [start=low] [force]",
+        "hsc 0 mode=0 pv=[100] at Hsc_Table",
+        "\"ok\":true",
+    ),
+    (
+        "profile N at VB3001 [(cycle=500us, count=1000), (freq=4kHz, count=4000), …] [force] [strict] [plan [to=FILE.png|FILE.svg] [size=900x340]]",
+        "profile 0 at Pto_Table [(cycle=500us, count=1000)] plan",
+        "\"planned_writes\":6",
+    ),
+    ("umpk monitor [OPERAND…] [count=N] [for=2s] [every=100ms] [quiet]", "umpk trainer monitor Key_3 count=1", "I3"),
+    ("umpk sim input I3=1", "umpk trainer sim input Key_3=1", "I3"),
+    ("umpk sim input I3 [off] [freq=2Hz]", "umpk trainer sim input Key_3 freq=2Hz", "I3"),
+    ("umpk sim fault no-reply|stuck [I3=1] [for=D]", "umpk trainer sim fault stuck Key_3=1", "I3"),
+    ("servo read OBJ…", "servo read Axis_Pos", "position_actual"),
+    ("servo sim fault abort OBJ CODE", "servo sim fault abort Axis_Ctl 16#06090011", "6040.00"),
+];
+
+/// A placeholder of a form that stands for an operand.
+fn operand_placeholder(word: &str) -> bool {
+    let w = word.trim_matches(|c| matches!(c, '[' | ']' | '(' | ')' | ',' | '…'));
+    if w.contains("FILE") {
+        return false;
+    }
+    let head = w.split(['=', '|', ',']).next().unwrap_or(w).trim_end_matches('…');
+    if ["OPERAND", "RANGE", "OBJ", "FROM", "TO", "TERMINAL", "A", "B"].contains(&head) {
+        return true;
+    }
+    // An operand as an example: area letters, then a digit (`I0.1`, `QB0`, `VB3009`, `I3`).
+    let letters = head.chars().take_while(|c| c.is_ascii_uppercase()).count();
+    (1..=4).contains(&letters) && head[letters..].starts_with(|c: char| c.is_ascii_digit())
+}
+
+fn takes_operand(form: &str) -> bool {
+    form.split_whitespace().skip(1).flat_map(|w| w.split('|')).any(operand_placeholder)
+}
+
+#[test]
+fn every_form_that_takes_an_operand_has_a_row() {
+    let mut want: Vec<String> = forms::all().map(|(_, f)| f.text).filter(|f| takes_operand(f)).collect();
+    want.sort();
+    let mut have: Vec<String> = ROWS.iter().map(|r| r.0.to_string()).collect();
+    have.sort();
+    assert_eq!(want, have, "the forms that take operands and the rows that give them names");
+}
+
+/// The tag files in a folder of test `name`'s own.
+fn world(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("plcsh-names-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    std::fs::write(d.join("plc.csv"), PLC_TAGS).unwrap();
+    std::fs::write(d.join("umpk.csv"), UMPK_TAGS).unwrap();
+    std::fs::write(d.join("servo.csv"), SERVO_TAGS).unwrap();
+    d
+}
+
+fn plcsh(dir: &Path, json: bool) -> std::process::Command {
+    let mut c = common::plcsh();
+    c.current_dir(dir).args(["--time", "stepped", "--device", "trainer=sim-umpk:", "--device", "plc=sim:K205-16DT"]);
+    c.args(["--tags", "plc.csv", "--tags", "servo=servo.csv", "--tags", "trainer=umpk.csv"]);
+    if json {
+        c.arg("--json");
+    }
+    c
+}
+
+/// Each row's line in the three routes. One-shot and REPL must show the row's text; Lua runs
+/// the line through `plcsh.exec`, which raises if any command of it fails.
+#[test]
+fn every_row_works_with_names_in_the_repl_one_shot_and_lua() {
+    let dir = world("rows");
+    std::thread::scope(|s| {
+        for chunk in ROWS.chunks(ROWS.len().div_ceil(3)) {
+            let dir = &dir;
+            s.spawn(move || {
+                for (form, line, expect) in chunk {
+                    // One-shot.
+                    let o = plcsh(dir, true).args(["-c", line]).output().unwrap();
+                    let out = common::stdout(&o);
+                    let v = common::json_lines(&o);
+                    assert!(o.status.success(), "{form}: `{line}` one-shot:\n{out}\n{}", common::stderr(&o));
+                    assert!(v.iter().all(|j| j["ok"] != false), "{form}: `{line}`:\n{out}");
+                    assert!(out.contains(expect), "{form}: `{line}` shows no `{expect}`:\n{out}");
+                    // The REPL (lines on standard input).
+                    let child = plcsh(dir, true)
+                        .stdin(std::process::Stdio::piped())
+                        .stdout(std::process::Stdio::piped())
+                        .stderr(std::process::Stdio::piped())
+                        .spawn()
+                        .unwrap();
+                    let o = common::output_with_input(child, format!("{line}\n").as_bytes());
+                    let out = common::stdout(&o);
+                    assert!(out.contains(expect), "{form}: `{line}` in the REPL shows no `{expect}`:\n{out}");
+                    assert!(!out.contains("\"ok\":false"), "{form}: `{line}` in the REPL:\n{out}");
+                    // Lua.
+                    {
+                        let code = format!("lua plcsh.exec([==[{line}]==]) print(\"done\")");
+                        let o = plcsh(dir, false).args(["-c", &code]).output().unwrap();
+                        let out = common::both(&o);
+                        assert!(o.status.success() && out.contains("done"), "{form}: `{code}`:\n{out}");
+                    }
+                }
+            });
+        }
+    });
+}
+
+/// The Lua forms of the issue: fields by name (`plc.Conveyor_Run`, `plc["Мотор_1_Пуск"]`),
+/// `plc:get`, `plc:set`, and `plc:tags_load` on a device opened without tags.
+#[test]
+fn lua_reads_and_writes_by_name_and_loads_tags() {
+    let dir = world("lua");
+    let code = r#"
+        assert(plc:tags_load("plc.csv") == 12)
+        plc.Conveyor_Run = true
+        plc["Мотор_1_Пуск"] = 1
+        plc:set{Tank2_Level = 12.5}
+        plc:set("电机速度", -3)
+        local a, b = plc:get("Tank2_Level", "conveyor_run")
+        print(a, b, plc["Мотор_1_Пуск"], plc.VD200, plc["电机速度"])
+    "#;
+    let script = dir.join("names.lua");
+    std::fs::write(&script, code).unwrap();
+    let o = common::plcsh().current_dir(&dir).args(["--time", "stepped", "run", "names.lua"]).output().unwrap();
+    let out = common::both(&o);
+    assert!(o.status.success(), "{out}");
+    // VD200 read as a DWORD is the REAL's bits: the name picks the view.
+    assert!(out.contains("12.5\ttrue\ttrue\t1095237632\t-3"), "{out}");
+}
+
+/// Output shows the name and the operand, JSON `name` beside `operand`; an unknown name gets
+/// the nearest names; a bad tag file is refused at its line.
+#[test]
+fn output_shows_the_name_and_the_operand_and_a_misspelt_name_gets_the_nearest() {
+    let dir = world("output");
+    let o = plcsh(&dir, false).args(["-c", "set Tank2_Level=12.5; get Tank2_Level VW0"]).output().unwrap();
+    let out = common::stdout(&o);
+    assert!(out.contains("Tank2_Level (VD200/REAL)  12.5  Tank 2 level"), "{out}");
+    assert!(out.lines().any(|l| l.starts_with("VW0 ") && l.trim_end().ends_with(" 0")), "{out}");
+    let o = plcsh(&dir, true).args(["-c", "get Tank2_Levl"]).output().unwrap();
+    let v = common::json_lines(&o);
+    let hint = v[0]["error"]["hint"].as_str().unwrap_or("");
+    assert!(hint.contains("did you mean Tank2_Level (VD200/REAL)"), "{}", v[0]);
+    std::fs::write(dir.join("bad.csv"), "name,address,type\nA_1,VW0,INT\nB_1,VW99999,INT\nC_1,VB0,REAL\n").unwrap();
+    let o = common::plcsh().current_dir(&dir).args(["--json", "--tags", "bad.csv", "-c", "get VW0"]).output().unwrap();
+    let out = common::both(&o);
+    assert!(!o.status.success(), "{out}");
+    assert!(out.contains("bad.csv:3") && out.contains("bad.csv:4"), "{out}");
+}
+
+/// A profile's `tags = "…"` is read beside its devices.toml.
+#[test]
+fn a_profile_names_its_tag_file_beside_itself() {
+    let dir = world("profile");
+    let conf = dir.join("conf");
+    std::fs::create_dir_all(&conf).unwrap();
+    std::fs::write(conf.join("press.csv"), "name,address,type\nPress_Force,VW10,INT\n").unwrap();
+    std::fs::write(conf.join("devices.toml"), "[devices.press1]\nurl = \"sim:K205-16DT\"\ntags = \"press.csv\"\n")
+        .unwrap();
+    let o = common::plcsh()
+        .current_dir(&dir)
+        .args([
+            "--json",
+            "--config",
+            "conf/devices.toml",
+            "--device",
+            "press1",
+            "-c",
+            "set Press_Force=-5; get press1:Press_Force",
+        ])
+        .output()
+        .unwrap();
+    let v = common::json_lines(&o);
+    let last = v.last().unwrap_or_else(|| panic!("{}", common::both(&o)));
+    assert_eq!(last["values"][0]["name"], "Press_Force", "{last}");
+    assert_eq!(last["values"][0]["operand"], "VW10/INT", "{last}");
+    assert_eq!(last["values"][0]["value"], -5, "{last}");
+}
