@@ -328,7 +328,12 @@ macro_rules! broker_loop {
                     if stopping && stop_by.is_none() {
                         stop_by = Some(tokio::time::Instant::now() + STOP_GRACE);
                     }
-                    if connected && !disconnecting {
+                    // Nothing is handed to the client while the event loop has news waiting: after
+                    // a connection loss rumqttc has already emptied its channel, and a message
+                    // handed now would go out after the reconnect ahead of the older ones put
+                    // back at ConnAck (out of order). The event loop runs only while this task
+                    // waits, so the check holds until the handing is done.
+                    if connected && !disconnecting && erx.is_empty() {
                         // The stats first: they say how the readings fare, and must not wait
                         // behind them when plcsh falls behind (a full client channel keeps them
                         // in their slot, first for the next room).
