@@ -1415,3 +1415,51 @@ fn at_qos_0_what_a_lost_connection_took_is_dropped_not_published() {
     let received = before.lock().unwrap().len() + after.lock().unwrap().len();
     assert!(received >= published, "{received} received, {published} counted as published: {summary}");
 }
+
+/// `--read-only` refuses a write from the broker exactly as it refuses the same `set`: kind
+/// `refused`, the same message (docs/fleets.md, "Writes from the broker") — even for an
+/// operand on the profile's allow list.
+#[test]
+fn a_write_from_the_broker_to_a_read_only_session_is_refused_as_set_is() {
+    if !mosquitto_present() {
+        return;
+    }
+    let d = dir("read-only");
+    let port = free_port();
+    let _broker = Broker::start(&d, port);
+    let cfg = d.join("devices.toml");
+    std::fs::write(&cfg, "[devices.a]\nurl = \"sim:K205-16DT\"\nallow = [\"VW100\"]\n[fleets.one]\ndevices = [\"a\"]\n")
+        .unwrap();
+    let got = subscribe(port, "read-only-watch");
+    let mut child = plcsh()
+        .args(["--config", cfg.to_str().unwrap(), "--read-only", "--json", "publish", "-f", "one"])
+        .args(["--accept-writes", "--broker", &format!("mqtt://127.0.0.1:{port}"), "--every", "20ms", "VW100"])
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    wait_for(&got, "the first value", |g| g.iter().any(|(t, _, _)| t == "plcsh/one/a/VW100"));
+    let mut opts = rumqttc::MqttOptions::new("read-only-writer", "127.0.0.1", port);
+    opts.set_keep_alive(Duration::from_secs(5));
+    let (client, mut conn) = rumqttc::Client::new(opts, 10);
+    std::thread::spawn(move || for _ in conn.iter() {});
+    let body = r#"{"operand":"VW100","value":5,"id":"ro"}"#;
+    client.publish("plcsh/one/a/set", rumqttc::QoS::AtLeastOnce, false, body.as_bytes().to_vec()).unwrap();
+    wait_for(&got, "the reply", |g| g.iter().any(|(t, _, _)| t == "plcsh/one/a/reply"));
+    plcsh::core::platform::interrupt_child(&child);
+    let _ = child.wait();
+    let reply = got.lock().unwrap().iter().find(|(t, _, _)| t == "plcsh/one/a/reply").map(|(_, p, _)| json(p)).unwrap();
+    let o = run(&["--config", cfg.to_str().unwrap(), "--read-only", "--json", "-d", "a", "-c", "set VW100=5"], "");
+    let by_set = json_lines(&o).pop().unwrap_or_else(|| panic!("{}", both(&o)));
+    assert_eq!((reply["ok"].as_bool(), reply["id"].as_str()), (Some(false), Some("ro")), "{reply}");
+    assert_eq!(reply["error"]["kind"], "refused", "{reply}");
+    assert_eq!(
+        (&reply["error"]["kind"], &reply["error"]["message"]),
+        (&by_set["error"]["kind"], &by_set["error"]["message"]),
+        "the same refusal as `set`: {reply} / {by_set}"
+    );
+    assert!(
+        !got.lock().unwrap().iter().any(|(t, p, _)| t == "plcsh/one/a/VW100" && json(p)["value"] != 0),
+        "nothing was written"
+    );
+}
