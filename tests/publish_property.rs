@@ -329,7 +329,7 @@ fn generate(r: &mut Rng, case: u64, faulty: usize, devices: usize) -> Case {
     if faulty > 0 && !members.iter().any(|&m| m < faulty) {
         members.push(r.below(faulty as u64) as usize);
     }
-    let every_ms = if stop { 1 } else { r.pick(&[2, 3, 5, 10, 20, 40]) };
+    let every_ms = if stop { 1 } else { r.pick(&[2, 3, 5, 10, 20, 40, 100, 200]) };
     Case {
         members,
         operands: operands(r),
@@ -420,9 +420,13 @@ fn run_case(
     let r = &mut Rng(case.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1);
     let c = generate(r, case, plcs.len(), addrs.len());
     let group = format!("case{case}");
+    let members = if c.members.len() <= 8 {
+        format!("{:?}", c.members)
+    } else {
+        format!("{} ({:?} …)", c.members.len(), &c.members[..8])
+    };
     let name = format!(
-        "case {case}: members {:?}, {:?}, --buffer {} --every {}ms --qos {}{} {}",
-        c.members,
+        "case {case}: members {members}, {:?}, --buffer {} --every {}ms --qos {}{} {}",
         c.operands,
         c.buffer,
         c.every_ms,
