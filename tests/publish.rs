@@ -1411,7 +1411,9 @@ fn at_qos_0_what_a_lost_connection_took_is_dropped_not_published() {
     assert_eq!(status.code(), Some(1), "readings were dropped: {summary}");
     // Nothing counted as published went missing: the two brokers' subscribers got at least as many.
     let published = summary["published"].as_u64().unwrap() as usize;
-    wait_for(&after, "the goodbye", |g| g.iter().any(|(t, p, _)| t == "plcsh/single/_publisher/status" && p == b"offline"));
+    wait_for(&after, "the goodbye", |g| {
+        g.iter().any(|(t, p, _)| t == "plcsh/single/_publisher/status" && p == b"offline")
+    });
     let received = before.lock().unwrap().len() + after.lock().unwrap().len();
     assert!(received >= published, "{received} received, {published} counted as published: {summary}");
 }
@@ -1428,8 +1430,11 @@ fn a_write_from_the_broker_to_a_read_only_session_is_refused_as_set_is() {
     let port = free_port();
     let _broker = Broker::start(&d, port);
     let cfg = d.join("devices.toml");
-    std::fs::write(&cfg, "[devices.a]\nurl = \"sim:K205-16DT\"\nallow = [\"VW100\"]\n[fleets.one]\ndevices = [\"a\"]\n")
-        .unwrap();
+    std::fs::write(
+        &cfg,
+        "[devices.a]\nurl = \"sim:K205-16DT\"\nallow = [\"VW100\"]\n[fleets.one]\ndevices = [\"a\"]\n",
+    )
+    .unwrap();
     let got = subscribe(port, "read-only-watch");
     let mut child = plcsh()
         .args(["--config", cfg.to_str().unwrap(), "--read-only", "--json", "publish", "-f", "one"])

@@ -65,7 +65,9 @@ impl Broker {
         let user = if unsafe { libc::geteuid() } == 0 { "user root\n" } else { "" };
         std::fs::write(
             &conf,
-            format!("{user}listener {port} 127.0.0.1\nallow_anonymous true\nmax_queued_messages 0\npersistence false\n"),
+            format!(
+                "{user}listener {port} 127.0.0.1\nallow_anonymous true\nmax_queued_messages 0\npersistence false\n"
+            ),
         )
         .unwrap();
         let child =
@@ -237,7 +239,12 @@ impl Plc {
 /// The writer: sweeps over every device, each sweep a new epoch, words first, then bits, each
 /// area in one write; notes each write in the timeline. A device that does not answer is
 /// opened again on the next sweep.
-fn writer(addrs: Vec<String>, layout: Layout, timeline: Timeline, stop: Arc<AtomicBool>) -> std::thread::JoinHandle<()> {
+fn writer(
+    addrs: Vec<String>,
+    layout: Layout,
+    timeline: Timeline,
+    stop: Arc<AtomicBool>,
+) -> std::thread::JoinHandle<()> {
     std::thread::spawn(move || {
         let mut devices: Vec<Option<Box<dyn plcsh::core::Device>>> = addrs.iter().map(|_| None).collect();
         let mut epoch = 0u64;
@@ -388,8 +395,13 @@ fn check(case: &str, group: &str, got: &[(String, Vec<u8>)], layout: Layout, tim
             continue;
         }
         values += 1;
-        assert_eq!((j["device"].as_str(), j["operand"].as_str()), (Some(parts[2]), Some(parts[3])), "{case}: {topic} {text}");
-        let (area, idx) = operand(parts[3]).unwrap_or_else(|| panic!("{case}: an operand not asked for: {topic} {text}"));
+        assert_eq!(
+            (j["device"].as_str(), j["operand"].as_str()),
+            (Some(parts[2]), Some(parts[3])),
+            "{case}: {topic} {text}"
+        );
+        let (area, idx) =
+            operand(parts[3]).unwrap_or_else(|| panic!("{case}: an operand not asked for: {topic} {text}"));
         let ts = j["ts"].as_u64().unwrap_or_else(|| panic!("{case}: {topic} {text}"));
         assert!(j["seq"].as_u64().is_some_and(|s| s > 0), "{case}: {topic} {text}");
         let epochs = possible(&timeline[dev].lock().unwrap()[area], ts.saturating_sub(READ_WINDOW_MS), ts + 5);
@@ -445,7 +457,14 @@ fn run_case(
     let mut cmd = plcsh();
     cmd.args(["--config", cfg.to_str().unwrap(), "--json", "publish", "-f", &group])
         .args(["--broker", &format!("mqtt://127.0.0.1:{}", broker.port)])
-        .args(["--buffer", &c.buffer.to_string(), "--every", &format!("{}ms", c.every_ms), "--qos", &c.qos.to_string()]);
+        .args([
+            "--buffer",
+            &c.buffer.to_string(),
+            "--every",
+            &format!("{}ms", c.every_ms),
+            "--qos",
+            &c.qos.to_string(),
+        ]);
     if c.v5 {
         cmd.args(["--mqtt-version", "5"]);
     }
@@ -504,12 +523,8 @@ fn run_case(
                     area.push(Entry { asked: t, done: Some(t), epoch: 0 });
                 }
                 std::thread::sleep(hold / 2);
-                p.served = Some(serve(&[
-                    "--tcp",
-                    &format!("127.0.0.1:{}", p.port),
-                    "--k2-control",
-                    p.ctl.to_str().unwrap(),
-                ]));
+                p.served =
+                    Some(serve(&["--tcp", &format!("127.0.0.1:{}", p.port), "--k2-control", p.ctl.to_str().unwrap()]));
             }
             _ => chaos.push("nothing".into()),
         }
@@ -536,15 +551,17 @@ fn run_case(
     reader.join().unwrap();
     out.extend(events.try_iter());
     let took = stopped.elapsed();
-    let summary: serde_json::Value = out
-        .last()
-        .and_then(|l| serde_json::from_str(l).ok())
-        .unwrap_or_else(|| panic!("{name}: no summary: {out:?}"));
+    let summary: serde_json::Value =
+        out.last().and_then(|l| serde_json::from_str(l).ok()).unwrap_or_else(|| panic!("{name}: no summary: {out:?}"));
     assert_eq!(summary["cmd"], "publish", "{name}: {summary}");
     let n = |k: &str| summary[k].as_u64().unwrap_or_else(|| panic!("{name}: no {k}: {summary}"));
     let published = n("published");
     // The counters add up, and the exit status says whether anything went missing.
-    assert_eq!(n("dropped"), n("dropped_broker_away") + n("dropped_behind") + n("dropped_at_stop"), "{name}: {summary}");
+    assert_eq!(
+        n("dropped"),
+        n("dropped_broker_away") + n("dropped_behind") + n("dropped_at_stop"),
+        "{name}: {summary}"
+    );
     assert_eq!(n("undelivered"), n("dropped_at_stop"), "{name}: {summary}");
     assert_eq!(status.code(), Some(if summary["ok"] == true { 0 } else { 1 }), "{name}: {summary}");
     if c.count.is_none() {
@@ -572,7 +589,8 @@ fn run_case(
     // This case's messages, out of the subscriber's list.
     let case_got: Vec<(String, Vec<u8>)> = {
         let mut g = got.lock().unwrap();
-        let (m, rest): (Vec<_>, Vec<_>) = std::mem::take(&mut *g).into_iter().partition(|(t, _)| t.starts_with(&prefix));
+        let (m, rest): (Vec<_>, Vec<_>) =
+            std::mem::take(&mut *g).into_iter().partition(|(t, _)| t.starts_with(&prefix));
         *g = rest;
         m
     };
