@@ -18,6 +18,7 @@
 #   BROKER_PROPERTY=40 PROPERTY_FLEET=1000 bench/fleet.sh …: first the same invariant against a
 #   real broker (tests/publish_property.rs, 10 cases over 3 devices in CI) at plant size: that many
 #   generated cases over 3 faulted and restarted devices and PROPERTY_FLEET more, release build
+#   (BROKER_PROPERTY_PROFILE=dev: the debug build, which needs no release build of the tests)
 #
 # Use a release build for figures. Machine load is printed before each case.
 set -u
@@ -46,7 +47,7 @@ fi
 if [ "${BROKER_PROPERTY:-0}" != 0 ]; then
     echo "# $(date -u +%FT%TZ) property test with a broker: $BROKER_PROPERTY generated cases, 3 + ${PROPERTY_FLEET:-1000} devices; load: $(cut -d' ' -f1-3 /proc/loadavg)" >&2
     (cd "$here/.." && PLCSH_BENCH_PUBLISH_BROKER_CASES=$BROKER_PROPERTY PLCSH_BENCH_PUBLISH_BROKER_FLEET=${PROPERTY_FLEET:-1000} \
-        cargo test --release --test publish_property -- --nocapture 2>&1 | grep -E "^case|cases over|test result|panicked") || exit 1
+        cargo test --profile "${BROKER_PROPERTY_PROFILE:-release}" --test publish_property -- --nocapture 2>&1 | grep -E "^case|cases over|test result|panicked") || exit 1
 fi
 
 free_port() { $py -c 'import socket; s=socket.socket(); s.bind(("127.0.0.1",0)); print(s.getsockname()[1])'; }
