@@ -352,7 +352,7 @@ fn generate(r: &mut Rng, case: u64, faulty: usize, devices: usize) -> Case {
 fn operand(leaf: &str) -> Option<(usize, u64)> {
     if let Some(n) = leaf.strip_prefix("VW") {
         let n: u64 = n.parse().ok()?;
-        return (n % 2 == 0 && n / 2 < WORDS).then_some((0, n / 2));
+        return (n.is_multiple_of(2) && n / 2 < WORDS).then_some((0, n / 2));
     }
     let (b, i) = leaf.strip_prefix('M')?.split_once('.')?;
     let (b, i): (u64, u64) = (b.parse().ok()?, i.parse().ok()?);
