@@ -112,10 +112,15 @@ for c in $cases; do
     hz=${c##*:}
     period_ms=$((1000 / hz))
     echo "# $(date -u +%FT%TZ) $n devices at $hz Hz; load: $(cut -d' ' -f1-3 /proc/loadavg); $(nproc) cores" >&2
+    rm -f "$work/ready" "$work/addrs" "$work/fleet.toml"
     "$exe" --state none sim serve --fleet "$n" --tcp 127.0.0.1:0 >"$work/ready" 2>"$work/serve.err" &
     srv=$!
     pids+=("$srv")
-    for _ in $(seq 1 600); do [ -s "$work/ready" ] && break; sleep 0.1; done
+    # Ready once its whole readiness line is there (a large fleet's line is written in pieces).
+    for _ in $(seq 1 600); do
+        $py -c 'import json, sys; json.loads(open(sys.argv[1]).readline())' "$work/ready" 2>/dev/null && break
+        sleep 0.1
+    done
     $py - "$work/ready" "$work/fleet.toml" "$work/addrs" <<'PY'
 import json, sys
 r = json.loads(open(sys.argv[1]).readline())
