@@ -15,6 +15,10 @@
 #
 #   PROPERTY=100000 bench/fleet.sh …: first the publisher's property test (src/publish/property.rs,
 #   1 000 generated runs in CI) at plant size: that many generated runs, release build
+#   BROKER_PROPERTY=40 PROPERTY_FLEET=1000 bench/fleet.sh …: first the same invariant against a
+#   real broker (tests/publish_property.rs, 10 cases over 3 devices in CI) at plant size: that many
+#   generated cases over 3 faulted and restarted devices and PROPERTY_FLEET more, release build
+#   (BROKER_PROPERTY_PROFILE=dev: the debug build, which needs no release build of the tests)
 #
 # Use a release build for figures. Machine load is printed before each case.
 set -u
@@ -38,6 +42,12 @@ if [ "${PROPERTY:-0}" != 0 ]; then
     echo "# $(date -u +%FT%TZ) property test: $PROPERTY generated runs; load: $(cut -d' ' -f1-3 /proc/loadavg)" >&2
     (cd "$here/.." && PLCSH_BENCH_PUBLISH_CASES=$PROPERTY cargo test --release --lib publish::property -- --nocapture 2>&1 |
         grep -E "cases|test result|panicked") || exit 1
+fi
+
+if [ "${BROKER_PROPERTY:-0}" != 0 ]; then
+    echo "# $(date -u +%FT%TZ) property test with a broker: $BROKER_PROPERTY generated cases, 3 + ${PROPERTY_FLEET:-1000} devices; load: $(cut -d' ' -f1-3 /proc/loadavg)" >&2
+    (cd "$here/.." && PLCSH_BENCH_PUBLISH_BROKER_CASES=$BROKER_PROPERTY PLCSH_BENCH_PUBLISH_BROKER_FLEET=${PROPERTY_FLEET:-1000} \
+        cargo test --profile "${BROKER_PROPERTY_PROFILE:-release}" --test publish_property -- --nocapture 2>&1 | grep -E "^case|cases over|test result|panicked") || exit 1
 fi
 
 free_port() { $py -c 'import socket; s=socket.socket(); s.bind(("127.0.0.1",0)); print(s.getsockname()[1])'; }
@@ -102,10 +112,15 @@ for c in $cases; do
     hz=${c##*:}
     period_ms=$((1000 / hz))
     echo "# $(date -u +%FT%TZ) $n devices at $hz Hz; load: $(cut -d' ' -f1-3 /proc/loadavg); $(nproc) cores" >&2
+    rm -f "$work/ready" "$work/addrs" "$work/fleet.toml"
     "$exe" --state none sim serve --fleet "$n" --tcp 127.0.0.1:0 >"$work/ready" 2>"$work/serve.err" &
     srv=$!
     pids+=("$srv")
-    for _ in $(seq 1 600); do [ -s "$work/ready" ] && break; sleep 0.1; done
+    # Ready once its whole readiness line is there (a large fleet's line is written in pieces).
+    for _ in $(seq 1 600); do
+        $py -c 'import json, sys; json.loads(open(sys.argv[1]).readline())' "$work/ready" 2>/dev/null && break
+        sleep 0.1
+    done
     $py - "$work/ready" "$work/fleet.toml" "$work/addrs" <<'PY'
 import json, sys
 r = json.loads(open(sys.argv[1]).readline())

@@ -61,11 +61,16 @@ struct Broker {
 
 impl Broker {
     fn start(dir: &Path, port: u16) -> Broker {
+        Broker::start_with(dir, port, "")
+    }
+
+    /// The same, with more lines of configuration.
+    fn start_with(dir: &Path, port: u16, more: &str) -> Broker {
         let conf = dir.join("mosquitto.conf");
         std::fs::write(
             &conf,
             format!(
-                "{}listener {port} 127.0.0.1\nallow_anonymous true\nmax_queued_messages 0\npersistence true\npersistence_location {}/\nautosave_interval 0\n",
+                "{}listener {port} 127.0.0.1\nallow_anonymous true\nmax_queued_messages 0\npersistence true\npersistence_location {}/\nautosave_interval 0\n{more}",
                 broker_user(),
                 dir.display()
             ),
@@ -1339,4 +1344,127 @@ fn a_stop_under_overload_delivers_what_it_counts_and_counts_the_rest_as_dropped(
         }
         check_attribution(&g, |_, _| 0);
     }
+}
+
+/// At QoS 0 a message written to a connection that is then lost is not known to have arrived:
+/// it is counted as dropped with the broker away, never as published (docs/fleets.md,
+/// "Publishing to MQTT"). The broker is paused, so what plcsh writes meanwhile waits unread in
+/// its socket, and then killed, which loses it for certain.
+#[test]
+fn at_qos_0_what_a_lost_connection_took_is_dropped_not_published() {
+    if !mosquitto_present() {
+        return;
+    }
+    let (d1, d2) = (dir("qos0-lost-1"), dir("qos0-lost-2"));
+    // The second broker knows the second subscriber from the start (its saved session, QoS 0
+    // messages queued for it while it is away): it gets everything published to that broker,
+    // whenever plcsh reconnects.
+    let queue = "queue_qos0_messages true\n";
+    let early_port = free_port();
+    let early = Broker::start_with(&d2, early_port, queue);
+    {
+        let mut opts = rumqttc::MqttOptions::new("qos0-lost-after", "127.0.0.1", early_port);
+        opts.set_clean_session(false);
+        let (client, mut conn) = rumqttc::Client::new(opts, 10);
+        client.subscribe("plcsh/#", rumqttc::QoS::AtLeastOnce).unwrap();
+        for ev in conn.iter() {
+            if let Ok(rumqttc::Event::Incoming(rumqttc::Packet::SubAck(_))) = ev {
+                break;
+            }
+        }
+        client.disconnect().unwrap();
+        for ev in conn.iter() {
+            if ev.is_err() {
+                break;
+            }
+        }
+    }
+    early.stop();
+    let port = free_port();
+    let first = Broker::start(&d1, port);
+    let before = subscribe(port, "qos0-lost-before");
+    let mut child = plcsh()
+        .args(["--json", "publish", "--broker", &format!("mqtt://127.0.0.1:{port}")])
+        .args(["--every", "20ms", "--count", "150", "--qos", "0", "VW100"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let mut lines = std::io::BufReader::new(child.stdout.take().unwrap()).lines();
+    until_event(&mut lines, "broker", "connected");
+    wait_for(&before, "the first readings", |g| g.iter().filter(|(t, _, _)| t.ends_with("/VW100")).count() >= 5);
+    // SAFETY: kill(2) on the test's own child.
+    unsafe {
+        libc::kill(first.child.id() as libc::pid_t, libc::SIGSTOP);
+    }
+    std::thread::sleep(Duration::from_millis(400));
+    drop(first);
+    let _second = Broker::start_with(&d2, port, queue);
+    let after = subscribe(port, "qos0-lost-after");
+    let rest: Vec<String> = lines.map(|l| l.unwrap()).collect();
+    let status = child.wait().unwrap();
+    let summary: serde_json::Value = serde_json::from_str(rest.last().expect("a summary")).unwrap();
+    assert!(summary["reconnects"].as_u64().unwrap() >= 1, "{summary}");
+    let lost = summary["dropped_broker_away"].as_u64().unwrap();
+    assert!(lost > 0, "the readings written while the broker was paused were lost with it: {summary}");
+    assert_eq!(summary["dropped"].as_u64(), Some(lost + summary["dropped_behind"].as_u64().unwrap()), "{summary}");
+    assert_eq!(status.code(), Some(1), "readings were dropped: {summary}");
+    // Nothing counted as published went missing: the two brokers' subscribers got at least as many.
+    let published = summary["published"].as_u64().unwrap() as usize;
+    wait_for(&after, "the goodbye", |g| {
+        g.iter().any(|(t, p, _)| t == "plcsh/single/_publisher/status" && p == b"offline")
+    });
+    let received = before.lock().unwrap().len() + after.lock().unwrap().len();
+    assert!(received >= published, "{received} received, {published} counted as published: {summary}");
+}
+
+/// `--read-only` refuses a write from the broker exactly as it refuses the same `set`: kind
+/// `refused`, the same message (docs/fleets.md, "Writes from the broker") — even for an
+/// operand on the profile's allow list.
+#[test]
+fn a_write_from_the_broker_to_a_read_only_session_is_refused_as_set_is() {
+    if !mosquitto_present() {
+        return;
+    }
+    let d = dir("read-only");
+    let port = free_port();
+    let _broker = Broker::start(&d, port);
+    let cfg = d.join("devices.toml");
+    std::fs::write(
+        &cfg,
+        "[devices.a]\nurl = \"sim:K205-16DT\"\nallow = [\"VW100\"]\n[fleets.one]\ndevices = [\"a\"]\n",
+    )
+    .unwrap();
+    let got = subscribe(port, "read-only-watch");
+    let mut child = plcsh()
+        .args(["--config", cfg.to_str().unwrap(), "--read-only", "--json", "publish", "-f", "one"])
+        .args(["--accept-writes", "--broker", &format!("mqtt://127.0.0.1:{port}"), "--every", "20ms", "VW100"])
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    wait_for(&got, "the first value", |g| g.iter().any(|(t, _, _)| t == "plcsh/one/a/VW100"));
+    let mut opts = rumqttc::MqttOptions::new("read-only-writer", "127.0.0.1", port);
+    opts.set_keep_alive(Duration::from_secs(5));
+    let (client, mut conn) = rumqttc::Client::new(opts, 10);
+    std::thread::spawn(move || for _ in conn.iter() {});
+    let body = r#"{"operand":"VW100","value":5,"id":"ro"}"#;
+    client.publish("plcsh/one/a/set", rumqttc::QoS::AtLeastOnce, false, body.as_bytes().to_vec()).unwrap();
+    wait_for(&got, "the reply", |g| g.iter().any(|(t, _, _)| t == "plcsh/one/a/reply"));
+    plcsh::core::platform::interrupt_child(&child);
+    let _ = child.wait();
+    let reply = got.lock().unwrap().iter().find(|(t, _, _)| t == "plcsh/one/a/reply").map(|(_, p, _)| json(p)).unwrap();
+    let o = run(&["--config", cfg.to_str().unwrap(), "--read-only", "--json", "-d", "a", "-c", "set VW100=5"], "");
+    let by_set = json_lines(&o).pop().unwrap_or_else(|| panic!("{}", both(&o)));
+    assert_eq!((reply["ok"].as_bool(), reply["id"].as_str()), (Some(false), Some("ro")), "{reply}");
+    assert_eq!(reply["error"]["kind"], "refused", "{reply}");
+    assert_eq!(
+        (&reply["error"]["kind"], &reply["error"]["message"]),
+        (&by_set["error"]["kind"], &by_set["error"]["message"]),
+        "the same refusal as `set`: {reply} / {by_set}"
+    );
+    assert!(
+        !got.lock().unwrap().iter().any(|(t, p, _)| t == "plcsh/one/a/VW100" && json(p)["value"] != 0),
+        "nothing was written"
+    );
 }

@@ -17,7 +17,10 @@
 //! until it is written (QoS 0) or acknowledged (QoS 1), in order; when the broker comes back
 //! without the old session, rumqttc forgets what it held, and those messages go back to the
 //! front of the queue — so nothing taken while the broker was away is lost to a reconnect
-//! (at QoS 1 a message may then arrive twice, as MQTT's "at least once" allows).
+//! (at QoS 1 a message may then arrive twice, as MQTT's "at least once" allows). At QoS 0 a
+//! message written on a connection that is then lost before a proof that the broker read it
+//! ([`Proofs`]) is counted as dropped with the broker away, for its device ([`Written`]):
+//! `published` counts only what is known to have reached the broker.
 
 use super::outbox::{Msg, Outbox};
 use std::collections::VecDeque;
@@ -134,6 +137,34 @@ impl Proofs {
     fn unproven(&self) -> u64 {
         use std::sync::atomic::Ordering::SeqCst;
         self.written.load(SeqCst).saturating_sub(self.proven.load(SeqCst))
+    }
+}
+
+/// At QoS 0, the devices of the messages written and not yet proven to have arrived
+/// ([`Proofs`]), oldest first: when the connection is lost they are counted as dropped with the
+/// broker away (for their devices), never as published.
+#[derive(Default)]
+struct Written {
+    devs: VecDeque<u32>,
+    /// Messages written before `devs[0]` (proven, or lost and counted; set again after a loss).
+    before: u64,
+}
+
+impl Written {
+    /// Forgets the proven ones: the first `proven` messages ever written.
+    fn trim(&mut self, proven: u64) {
+        while self.before < proven && self.devs.pop_front().is_some() {
+            self.before += 1;
+        }
+    }
+
+    /// Counts every unproven message as dropped with the broker away; returns how many.
+    fn lose(&mut self, outbox: &Outbox) -> u64 {
+        let n = self.devs.len() as u64;
+        for dev in self.devs.drain(..) {
+            outbox.of(dev).broker_away.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        }
+        n
     }
 }
 
@@ -274,9 +305,9 @@ macro_rules! broker_loop {
                                 break;
                             }
                             Err(e) => {
-                                // What was written on the lost connection is not known either
-                                // way; it was counted when written (as before a reconnect).
-                                proved.proven.store(proved.written.load(SeqCst), SeqCst);
+                                // What was written on the lost connection without a proof is
+                                // not known to have arrived: the owner counts it as dropped
+                                // ([`Written`]); the proofs of the old connection are void.
                                 proof_points.clear();
                                 let r = etx.send(Loop::Error(e.to_string())).map_err(|_| ());
                                 tokio::time::sleep(backoff).await;
@@ -318,6 +349,7 @@ macro_rules! broker_loop {
                 let mut batch = Vec::with_capacity(BATCH);
                 let mut pending: VecDeque<Msg> = VecDeque::with_capacity(BATCH);
                 let mut handed = false;
+                let mut written = Written::default();
                 loop {
                     if std::mem::take(&mut handed) && !outbox.is_closed() {
                         // Readings keep coming: let them gather for a moment, so the pollers'
@@ -328,7 +360,12 @@ macro_rules! broker_loop {
                     if stopping && stop_by.is_none() {
                         stop_by = Some(tokio::time::Instant::now() + STOP_GRACE);
                     }
-                    if connected && !disconnecting {
+                    // Nothing is handed to the client while the event loop has news waiting: after
+                    // a connection loss rumqttc has already emptied its channel, and a message
+                    // handed now would go out after the reconnect ahead of the older ones put
+                    // back at ConnAck (out of order). The event loop runs only while this task
+                    // waits, so the check holds until the handing is done.
+                    if connected && !disconnecting && erx.is_empty() {
                         // The stats first: they say how the readings fare, and must not wait
                         // behind them when plcsh falls behind (a full client channel keeps them
                         // in their slot, first for the next room).
@@ -418,10 +455,14 @@ macro_rules! broker_loop {
                     // Confirmations first: the event loop counted them before it sent `e`
                     // (an error puts back only what was not confirmed).
                     for _ in 0..confirmations.take() {
-                        if unconfirmed.pop_front().is_some() {
+                        if let Some(m) = unconfirmed.pop_front() {
                             stats.published += 1;
+                            if !qos1 {
+                                written.devs.push_back(m.dev);
+                            }
                         }
                     }
+                    written.trim(proofs.proven.load(std::sync::atomic::Ordering::SeqCst));
                     match e {
                         Some(Loop::ConnAck(kept)) => {
                             connected = true;
@@ -459,6 +500,16 @@ macro_rules! broker_loop {
                         Some(Loop::Error(why)) => {
                             connected = false;
                             outbox.set_connected(false);
+                            if !qos1 {
+                                // Written at QoS 0 on the lost connection and never proven to
+                                // have arrived: not published, dropped with the broker away.
+                                let lost = written.lose(&outbox);
+                                stats.published = stats.published.saturating_sub(lost);
+                                use std::sync::atomic::Ordering::SeqCst;
+                                let all = proofs.written.load(SeqCst);
+                                proofs.proven.store(all, SeqCst);
+                                written.before = all;
+                            }
                             // Not handed over: back into the queue, where the bound applies.
                             outbox.put_back(pending.drain(..));
                             if let Some(f) = classify(&why) {
