@@ -2127,7 +2127,7 @@ _plcsh() {
             return 0
             ;;
         plcsh__subcmd__run)
-            opts="-f -v -d -j -h --sandbox --write-dir --fleet --json --verbose --model --device --tags --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
+            opts="-f -v -d -j -h --sandbox --write-dir --fleet --report --json --verbose --model --device --tags --time --config --state --record --bench --read-only --jobs --lang --device-timeout --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2142,6 +2142,10 @@ _plcsh() {
                     return 0
                     ;;
                 -f)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --report)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;

@@ -114,6 +114,11 @@ fn is_prose(s: &str) -> bool {
 
 const DEVELOPER: &[&str] = &["expect(", "panic!", "unreachable!", "assert", "debug_assert", "todo!", "unimplemented!"];
 
+/// Lines whose literals are the command language, which stays as it is in every language
+/// (commands, options, operands): a command's `usage:` line and the Lua bridge's `row(`
+/// templates (`"data save {}"`), which are commands plcsh runs, not sentences a person reads.
+const COMMAND_TEXT: &[&str] = &["usage:", "row("];
+
 /// Message literals per file (relative path with `/`).
 fn counts() -> BTreeMap<String, usize> {
     let mut files = Vec::new();
@@ -142,6 +147,7 @@ fn counts() -> BTreeMap<String, usize> {
                 is_prose(s)
                     && !here.starts_with("#[")
                     && !here.starts_with("//")
+                    && !COMMAND_TEXT.iter().any(|c| here.starts_with(c))
                     && !DEVELOPER
                         .iter()
                         .any(|d| here.contains(d) || before.ends_with(d) || before.ends_with(&format!("{d}(")))
