@@ -130,7 +130,8 @@ pub fn start<R: Clone + Send + 'static>(
                         let due = start + char_time(baud) * sent as u32;
                         std::thread::sleep(due.saturating_duration_since(Instant::now()));
                         let now = Instant::now();
-                        let ready = (now.saturating_duration_since(start).as_nanos() / char_time(baud).as_nanos()) as usize + 1;
+                        let ready =
+                            (now.saturating_duration_since(start).as_nanos() / char_time(baud).as_nanos()) as usize + 1;
                         let upto = ready.clamp(sent + 1, bytes.len());
                         if upto == bytes.len() {
                             *end = Some(now);
