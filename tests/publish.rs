@@ -1390,13 +1390,16 @@ fn mqtt_packet(s: &mut std::net::TcpStream) -> Option<(u8, Vec<u8>)> {
     Some((b[0], body))
 }
 
+/// What the breaking broker saw: the readings' `seq` in arrival order.
+type Seqs = Arc<Mutex<Vec<u64>>>;
+
 /// The breaking broker on a free port: the readings' `seq` in arrival order, and how many
 /// connections it broke. It closes each connection after `every` readings, `breaks` times.
-fn breaking_broker(every: usize, breaks: usize) -> (u16, Arc<Mutex<Vec<u64>>>, Arc<Mutex<usize>>) {
+fn breaking_broker(every: usize, breaks: usize) -> (u16, Seqs, Arc<Mutex<usize>>) {
     use std::io::Write;
     let listener = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
     let port = listener.local_addr().unwrap().port();
-    let seqs: Arc<Mutex<Vec<u64>>> = Arc::default();
+    let seqs: Seqs = Arc::default();
     let broken: Arc<Mutex<usize>> = Arc::default();
     let (seqs2, broken2) = (seqs.clone(), broken.clone());
     std::thread::spawn(move || {

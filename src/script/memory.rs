@@ -73,7 +73,7 @@ impl Watch {
                 watch = Some(Watch { inner });
             })?;
         }
-        watch.ok_or_else(|| mlua::Error::runtime("the memory watch could not be installed"))
+        watch.ok_or(mlua::Error::MemoryControlNotAvailable)
     }
 
     /// Puts mlua's allocator back (the memory limit is then mlua's to change again).
