@@ -90,9 +90,11 @@ fn a_silent_device_times_out_alone_and_the_table_has_one_row_per_device() {
     // An independent responder that accepts and never answers: a device that hangs.
     let silent = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
     u.insert(1, format!("tcp://{}", silent.local_addr().unwrap()));
+    // It holds the connection until the test is over (however long a loaded machine makes it).
+    let (done, over) = std::sync::mpsc::channel::<()>();
     let held = std::thread::spawn(move || {
         let c = silent.accept();
-        std::thread::sleep(std::time::Duration::from_secs(8));
+        let _ = over.recv();
         drop(c);
     });
     let list: Vec<String> = u.iter().map(|x| format!("\"{x}\"")).collect();
@@ -108,7 +110,8 @@ fn a_silent_device_times_out_alone_and_the_table_has_one_row_per_device() {
     assert!(rows[1].contains("FAILED") && (rows[1].contains("timeout") || rows[1].contains("error[")), "{out}");
     assert!(out.contains("| VW0 ") && out.contains("| VW2 "), "operands are columns: {out}");
     assert!(out.contains("1 of 3 devices failed: line-2"), "{out}");
-    drop(held);
+    drop(done);
+    held.join().unwrap();
 }
 
 #[test]

@@ -137,6 +137,24 @@ fn subscribe(port: u16, id: &str) -> Got {
     got
 }
 
+/// Publishes a marker on `plcsh/marker` from a client of the test's own and waits until the
+/// subscriber `got` has it: whatever reached the broker before (from a plcsh that has ended)
+/// has been delivered by then, so "nothing else arrived" is decided by an arrival, not by a
+/// quiet window.
+fn mark(port: u16, got: &Got) {
+    let opts = rumqttc::MqttOptions::new("marker", "127.0.0.1", port);
+    let (client, mut conn) = rumqttc::Client::new(opts, 10);
+    client.publish("plcsh/marker", rumqttc::QoS::AtLeastOnce, false, b"marker".to_vec()).unwrap();
+    let deadline = Instant::now() + Duration::from_secs(20);
+    for ev in conn.iter() {
+        assert!(Instant::now() < deadline, "the marker was never acknowledged");
+        if let Ok(rumqttc::Event::Incoming(rumqttc::Packet::PubAck(_))) = ev {
+            break;
+        }
+    }
+    wait_for(got, "the marker", |g| g.iter().any(|(t, _, _)| t == "plcsh/marker"));
+}
+
 fn wait_for(got: &Got, what: &str, f: impl Fn(&[(String, Vec<u8>, bool)]) -> bool) {
     let deadline = Instant::now() + Duration::from_secs(20);
     while !f(&got.lock().unwrap()) {
@@ -853,9 +871,9 @@ fn an_operand_no_member_has_is_one_usage_error_before_anything_connects() {
     let m = json_lines(&o)[0]["error"]["message"].as_str().unwrap().to_string();
     assert!(m.contains("AIW0") && m.contains("line-1") && !m.contains("line-2"), "{m}");
     // Nothing reached the broker: no device marked offline, no publisher status.
-    std::thread::sleep(Duration::from_millis(300));
+    mark(port, &got);
     let g = got.lock().unwrap();
-    assert!(g.is_empty(), "nothing published: {g:?}");
+    assert!(g.iter().all(|(t, _, _)| t == "plcsh/marker"), "nothing published: {g:?}");
 }
 
 /// A dropped SSH session: SIGHUP to the child.
@@ -1467,4 +1485,131 @@ fn a_write_from_the_broker_to_a_read_only_session_is_refused_as_set_is() {
         !got.lock().unwrap().iter().any(|(t, p, _)| t == "plcsh/one/a/VW100" && json(p)["value"] != 0),
         "nothing was written"
     );
+
+// ---------------------------------------------------------------------------------------------
+// A broker that breaks the connection again and again while readings flow: a minimal MQTT
+// 3.1.1 server written here (CONNECT → CONNACK without a session, PUBLISH QoS 1 → PUBACK,
+// SUBSCRIBE → SUBACK, PINGREQ → PINGRESP; MQTT 3.1.1, §3), which records every reading in the
+// order it arrived and closes the connection after a few readings. A reading taken after a
+// break must never arrive before one taken earlier (a reconnect puts what the broker did not
+// acknowledge back at the front of the queue), whatever the break interrupted.
+
+/// One MQTT control packet from `s`: its first byte and its body; `None` at the end.
+fn mqtt_packet(s: &mut std::net::TcpStream) -> Option<(u8, Vec<u8>)> {
+    use std::io::Read;
+    let mut b = [0u8; 1];
+    s.read_exact(&mut b).ok()?;
+    let (mut len, mut shift) = (0usize, 0);
+    loop {
+        let mut d = [0u8; 1];
+        s.read_exact(&mut d).ok()?;
+        len |= ((d[0] & 0x7F) as usize) << shift;
+        if d[0] & 0x80 == 0 {
+            break;
+        }
+        shift += 7;
+        if shift > 21 {
+            return None;
+        }
+    }
+    let mut body = vec![0u8; len];
+    s.read_exact(&mut body).ok()?;
+    Some((b[0], body))
+}
+
+/// What the breaking broker saw: the readings' `seq` in arrival order.
+type Seqs = Arc<Mutex<Vec<u64>>>;
+
+/// The breaking broker on a free port: the readings' `seq` in arrival order, and how many
+/// connections it broke. It closes each connection after `every` readings, `breaks` times.
+fn breaking_broker(every: usize, breaks: usize) -> (u16, Seqs, Arc<Mutex<usize>>) {
+    use std::io::Write;
+    let listener = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
+    let port = listener.local_addr().unwrap().port();
+    let seqs: Seqs = Arc::default();
+    let broken: Arc<Mutex<usize>> = Arc::default();
+    let (seqs2, broken2) = (seqs.clone(), broken.clone());
+    std::thread::spawn(move || {
+        for conn in listener.incoming() {
+            let Ok(mut s) = conn else { continue };
+            let mut taken = 0;
+            while let Some((first, body)) = mqtt_packet(&mut s) {
+                let reply: Vec<u8> = match first >> 4 {
+                    1 => vec![0x20, 2, 0, 0],
+                    3 => {
+                        let qos = (first >> 1) & 3;
+                        let tlen = u16::from_be_bytes([body[0], body[1]]) as usize;
+                        let topic = String::from_utf8_lossy(&body[2..2 + tlen]).to_string();
+                        let at = 2 + tlen + if qos > 0 { 2 } else { 0 };
+                        if topic.ends_with("/VW100") {
+                            let v: serde_json::Value = serde_json::from_slice(&body[at..]).unwrap();
+                            seqs2.lock().unwrap().push(v["seq"].as_u64().unwrap());
+                            taken += 1;
+                        }
+                        if *broken2.lock().unwrap() < breaks && taken >= every {
+                            // Gone without a word, the last reading unacknowledged.
+                            *broken2.lock().unwrap() += 1;
+                            break;
+                        }
+                        if qos > 0 {
+                            vec![0x40, 2, body[2 + tlen], body[3 + tlen]]
+                        } else {
+                            Vec::new()
+                        }
+                    }
+                    8 => vec![0x90, 3, body[0], body[1], 0],
+                    12 => vec![0xD0, 0],
+                    14 => break,
+                    _ => Vec::new(),
+                };
+                if !reply.is_empty() && s.write_all(&reply).is_err() {
+                    break;
+                }
+            }
+            let _ = s.shutdown(std::net::Shutdown::Both);
+        }
+    });
+    (port, seqs, broken)
+}
+
+#[test]
+fn readings_keep_their_order_across_many_broken_connections() {
+    let (port, seqs, broken) = breaking_broker(15, 10);
+    let o = run(
+        &[
+            "--json",
+            "publish",
+            "--broker",
+            &format!("mqtt://127.0.0.1:{port}"),
+            "--every",
+            "5ms",
+            "--count",
+            "300",
+            "--qos",
+            "1",
+            "VW100",
+            "VW102",
+            "VW104",
+            "VW106",
+        ],
+        "",
+    );
+    let l = json_lines(&o);
+    let summary = l.last().unwrap_or_else(|| panic!("{}", both(&o)));
+    assert_eq!(summary["ok"], true, "{}", both(&o));
+    assert_eq!(*broken.lock().unwrap(), 10, "{summary}");
+    assert!(summary["reconnects"].as_u64().unwrap() >= 10, "{summary}");
+    assert_eq!(summary["dropped"], 0, "{summary}");
+    let s = seqs.lock().unwrap().clone();
+    let (mut highest, mut seen) = (0, std::collections::HashSet::new());
+    for &x in &s {
+        // A repeat is a resend of what the broker did not acknowledge; a reading not seen before
+        // comes after every earlier one.
+        if seen.insert(x) {
+            assert!(x > highest, "out of order at {x}: {s:?}");
+            highest = x;
+        }
+    }
+    let skipped = summary["skipped"].as_u64().unwrap();
+    assert_eq!(seen.len() as u64 + skipped, 300, "every reading arrived: {s:?} {summary}");
 }

@@ -24,7 +24,12 @@ pub struct Budget {
     pub memory: Option<usize>,
     executed: AtomicU64,
     exceeded: Mutex<Option<String>>,
+    /// An allocation the memory limit refused, not yet known to be final ([`Budget::refused`]).
+    suspect: Mutex<Option<Allocation>>,
 }
+
+/// One request to Lua's allocator: the block, its old size, its new size.
+pub type Allocation = (usize, usize, usize);
 
 /// `600 s` → `10 simulated minutes`; `90 s` → `90 simulated seconds`.
 pub fn describe_time(d: Duration) -> String {
@@ -73,9 +78,52 @@ impl Budget {
         }
     }
 
-    /// The limit the run passed, as its verdict.
+    /// The limit the run passed, as its verdict. A refused allocation still waiting for its
+    /// retry is final by now (the retry comes at once, before any instruction): it is the
+    /// memory limit.
     pub fn exceeded(&self) -> Option<String> {
+        if self.suspect.lock().unwrap_or_else(|p| p.into_inner()).take().is_some() {
+            self.exceed_memory();
+        }
         self.exceeded.lock().unwrap_or_else(|p| p.into_inner()).clone()
+    }
+
+    /// The allocator refused `a` at the memory limit. Lua retries a refused allocation once,
+    /// at once, after an emergency collection (Lua 5.4's lmem.c, `tryagain`), and raises "not
+    /// enough memory" only when the retry fails too; some refusals it does not retry (a
+    /// string buffer's, lauxlib's `resizebox`). So a refusal is held as a suspect: the same
+    /// request granted next was the retry, and the program goes on as stock Lua would; anything
+    /// else next — another request, a failed retry, an instruction count, a protected call's
+    /// check — makes it final, and the run has passed the memory limit for good. Noted here,
+    /// where the allocation fails, it does not depend on the error reaching any handler: a
+    /// `__close` that raises in its place, however it was installed, hides nothing.
+    pub fn refused(&self, a: Allocation) {
+        let mut s = self.suspect.lock().unwrap_or_else(|p| p.into_inner());
+        if s.take().is_some() {
+            drop(s);
+            self.exceed_memory();
+        } else {
+            *s = Some(a);
+        }
+    }
+
+    /// The allocator granted `a`, a request that grows what Lua holds: a suspect refusal of
+    /// the same request was retried and rescued; a suspect refusal of another was final.
+    pub fn granted(&self, a: Allocation) {
+        let mut s = self.suspect.lock().unwrap_or_else(|p| p.into_inner());
+        match s.take() {
+            Some(r) if r == a => {}
+            Some(_) => {
+                drop(s);
+                self.exceed_memory();
+            }
+            None => {}
+        }
+    }
+
+    /// Whether a refused allocation waits for its retry (the allocator's fast path asks).
+    pub fn has_suspect(&self) -> bool {
+        self.suspect.lock().unwrap_or_else(|p| p.into_inner()).is_some()
     }
 
     fn deadline(&self) -> Option<Duration> {
@@ -170,6 +218,35 @@ mod tests {
         assert_eq!(b.tick(1000, &clock).unwrap(), "exceeded 1 MiB of Lua memory");
         assert_eq!(b.tick(9000, &clock).unwrap(), "exceeded 1 MiB of Lua memory");
         assert_eq!(b.instructions_used(), 11000);
+    }
+
+    #[test]
+    fn a_refused_allocation_is_the_memory_limit_unless_its_retry_is_granted() {
+        let clock = Clock::stepped();
+        // Rescued: the same request granted next (Lua's retry after an emergency collection).
+        let b = Budget::new(None, None, Some(1 << 20), &clock);
+        b.refused((0, 4, 4096));
+        assert!(b.has_suspect());
+        b.granted((0, 4, 4096));
+        assert!(b.exceeded().is_none());
+        // Final: the retry refused too.
+        let b = Budget::new(None, None, Some(1 << 20), &clock);
+        b.refused((0, 4, 4096));
+        b.refused((0, 4, 4096));
+        assert_eq!(b.exceeded().unwrap(), "exceeded 1 MiB of Lua memory");
+        // Final: something else granted next (no retry: a string buffer's refusal).
+        let b = Budget::new(None, None, Some(1 << 20), &clock);
+        b.refused((0, 0, 1 << 30));
+        b.granted((0, 4, 32));
+        assert_eq!(b.exceeded().unwrap(), "exceeded 1 MiB of Lua memory");
+        // Final: asked for the verdict (an instruction count, a protected call) meanwhile.
+        let b = Budget::new(None, None, Some(1 << 20), &clock);
+        b.refused((0, 0, 1 << 30));
+        assert_eq!(b.tick(1000, &clock).unwrap(), "exceeded 1 MiB of Lua memory");
+        // Once passed, for good: a later granted retry changes nothing.
+        b.refused((0, 0, 64));
+        b.granted((0, 0, 64));
+        assert_eq!(b.exceeded().unwrap(), "exceeded 1 MiB of Lua memory");
     }
 
     #[test]

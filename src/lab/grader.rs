@@ -442,12 +442,15 @@ fn run(
     let student_env = sandbox::submission_env(lua, student_rules.clone(), world, stop).map_err(script_err)?;
     install_lab(lua, lab, file, kind, student_env, budget.clone(), [rules.clone(), student_rules])
         .map_err(script_err)?;
-    engine.limit(budget.clone(), clock.clone(), interrupt.clone()).map_err(script_err)?;
+    let watch = engine.limit(budget.clone(), clock.clone(), interrupt.clone()).map_err(script_err)?;
 
     let outcome = engine.run_file(&mut shell, &lab.grader, &[]);
     let lua = engine.lua();
     lua.remove_hook();
     lua.remove_global_hook();
+    if let Some(w) = &watch {
+        w.remove(lua).ok();
+    }
     lua.set_memory_limit(0).ok();
     let plc_fault = if kind == "il" { plc_fault(&mut shell, lab, file) } else { None };
     let mut grader_errors = Vec::new();

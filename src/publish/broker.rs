@@ -247,6 +247,9 @@ macro_rules! broker_loop {
                 opts.set_last_will($will(cfg.will_topic.clone(), b"offline".to_vec(), QoS::AtLeastOnce, true));
                 let (client, mut eventloop) = <$client>::new(opts, 1000);
                 let (etx, mut erx) = unbounded_channel::<Loop>();
+                // The owner's word that it took an error in: it hands nothing more to the
+                // client until the next CONNACK (see the event loop's error arm).
+                let (atx, mut arx) = unbounded_channel::<()>();
                 let qos1 = cfg.qos1;
                 let confirmations = Arc::new(Confirmations::default());
                 let counted = confirmations.clone();
@@ -310,9 +313,21 @@ macro_rules! broker_loop {
                                 // ([`Written`]); the proofs of the old connection are void.
                                 proof_points.clear();
                                 let r = etx.send(Loop::Error(e.to_string())).map_err(|_| ());
-                                tokio::time::sleep(backoff).await;
+                                // rumqttc moved what it held (in flight, and what waited in the
+                                // client's channel) to its `pending` when the connection broke,
+                                // and drops that on a CONNACK without the old session; the owner
+                                // then puts all of it back at the front of the queue. But the
+                                // owner may have handed more to the client between the break
+                                // and taking the error in: those would wait in the channel and
+                                // go out first after the reconnect, ahead of the older readings
+                                // put back — out of order. So the reconnect waits until the
+                                // owner has taken the error in (from then on it hands nothing
+                                // over until the CONNACK), and what reached the channel
+                                // meanwhile joins `pending` behind the rest, in order.
+                                let (acked, _) = tokio::join!(arx.recv(), tokio::time::sleep(backoff));
+                                eventloop.clean();
                                 backoff = (backoff * 2).min(BACKOFF_MAX);
-                                r
+                                r.and(acked.ok_or(()))
                             }
                         };
                         if sent.is_err() {
@@ -510,6 +525,9 @@ macro_rules! broker_loop {
                                 proofs.proven.store(all, SeqCst);
                                 written.before = all;
                             }
+                            // Nothing more goes to the client until the next CONNACK: the event
+                            // loop may reconnect now (see its error arm).
+                            let _ = atx.send(());
                             // Not handed over: back into the queue, where the bound applies.
                             outbox.put_back(pending.drain(..));
                             if let Some(f) = classify(&why) {

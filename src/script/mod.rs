@@ -16,6 +16,7 @@ pub mod bridge;
 mod device;
 pub mod error;
 mod fleet;
+pub mod memory;
 pub mod paths;
 pub mod report;
 pub mod sandbox;
@@ -102,17 +103,21 @@ impl Engine {
         &self.lua
     }
 
-    /// Holds the run to a graded run's limits ([`crate::core::budget`]): Lua memory, and Lua
+    /// Holds the run to a graded run's limits ([`crate::core::budget`]): Lua memory (kept by
+    /// the allocator, which reports every refusal to the budget: [`memory::Watch`]), and Lua
     /// instructions and simulated time, checked by the instruction hook. A limit passed
-    /// raises the interrupt flag too, so no `pcall` in the script can swallow it.
+    /// raises the interrupt flag too, so no `pcall` in the script can swallow it. The memory
+    /// watch is returned, to be removed when the run is over.
     pub fn limit(
         &self,
         budget: Arc<crate::core::budget::Budget>,
         clock: crate::core::Clock,
         interrupt: Arc<AtomicBool>,
-    ) -> mlua::Result<()> {
+    ) -> mlua::Result<Option<memory::Watch>> {
+        let mut watch = None;
         if let Some(m) = budget.memory {
             self.lua.set_memory_limit(m)?;
+            watch = Some(memory::Watch::install(&self.lua, budget.clone())?);
         }
         // A global hook: every coroutine the script creates inherits it, so a loop inside a
         // coroutine is counted too (a per-thread hook would leave coroutines uncounted).
@@ -126,7 +131,8 @@ impl Engine {
             } else {
                 Ok(VmState::Continue)
             }
-        })
+        })?;
+        Ok(watch)
     }
 
     /// The status a script asked for with `os.exit`, once it has called it.

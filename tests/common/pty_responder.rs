@@ -2,7 +2,7 @@
 //! and timing against something plcsh did not write: the test frames requests with its own
 //! reading of the protocol (`frame`) and says what to answer (`answer`). A reader thread
 //! stamps each request as its last byte arrives; a writer thread answers them in order, at
-//! once or paced at a baud rate, as a line would.
+//! once or paced at a baud rate, on the line's schedule (never sooner than the line allows).
 
 use plcsh::core::link::pty::Pty;
 use std::fs::File;
@@ -34,7 +34,7 @@ pub fn char_time(baud: u32) -> Duration {
 pub struct Responder<R> {
     pub path: PathBuf,
     seen: Arc<Mutex<Vec<R>>>,
-    /// When the answer to each request was complete.
+    /// When the last character of each answer went to the line (stamped just before its write).
     ends: Arc<Mutex<Vec<Instant>>>,
     stop: Arc<AtomicBool>,
 }
@@ -44,7 +44,9 @@ impl<R: Clone> Responder<R> {
     pub fn seen(&self) -> Vec<R> {
         self.seen.lock().unwrap().clone()
     }
-    /// When each answer was complete.
+    /// When the last character of each answer went to the line (stamped just before its write,
+    /// so a quiet measured from it is never shorter than the line's); for an answer that
+    /// wrote nothing, when it was over.
     pub fn ends(&self) -> Vec<Instant> {
         self.ends.lock().unwrap().clone()
     }
@@ -111,31 +113,49 @@ pub fn start<R: Clone + Send + 'static>(
                 Err(std::sync::mpsc::RecvTimeoutError::Timeout) => continue,
                 Err(_) => break,
             };
+            // When the last character of this answer was handed to the line.
+            let mut end = None;
             for act in answer(&req, k) {
-                // One character per character time, never faster: a thread woken late (a loaded
-                // machine) does not catch up with a burst, as a line cannot.
-                let paced = |w: &mut File, bytes: &[u8], baud: u32| {
-                    let mut due = Instant::now();
-                    for b in bytes {
+                // On the line's schedule: character i goes out no earlier than i character times
+                // after the first, so a paced frame never arrives sooner than the line allows.
+                // A thread woken late (a loaded machine) writes the characters already due at
+                // once, as a USB serial adapter delivers a line's characters in bursts, so the
+                // frame keeps the line's pace on average instead of being stretched by every
+                // late wake-up. The end is stamped before the last write: a thread preempted
+                // after it cannot make the quiet that follows look shorter than it was.
+                let paced = |w: &mut File, bytes: &[u8], baud: u32, end: &mut Option<Instant>| {
+                    let start = Instant::now();
+                    let mut sent = 0;
+                    while sent < bytes.len() {
+                        let due = start + char_time(baud) * sent as u32;
                         std::thread::sleep(due.saturating_duration_since(Instant::now()));
-                        let _ = w.write_all(&[*b]);
-                        due = due.max(Instant::now()) + char_time(baud);
+                        let now = Instant::now();
+                        let ready =
+                            (now.saturating_duration_since(start).as_nanos() / char_time(baud).as_nanos()) as usize + 1;
+                        let upto = ready.clamp(sent + 1, bytes.len());
+                        if upto == bytes.len() {
+                            *end = Some(now);
+                        }
+                        let _ = w.write_all(&bytes[sent..upto]);
+                        sent = upto;
                     }
-                    std::thread::sleep(due.saturating_duration_since(Instant::now()));
+                    let done = start + char_time(baud) * bytes.len() as u32;
+                    std::thread::sleep(done.saturating_duration_since(Instant::now()));
                 };
                 match act {
                     Act::Sleep(d) => std::thread::sleep(d),
                     Act::Send(b) => {
+                        end = Some(Instant::now());
                         let _ = w.write_all(&b);
                     }
-                    Act::Paced(b, baud) => paced(&mut w, &b, baud),
+                    Act::Paced(b, baud) => paced(&mut w, &b, baud, &mut end),
                     Act::Noise(d, baud) => {
                         let n = (d.as_nanos() / char_time(baud).as_nanos()) as usize;
-                        paced(&mut w, &vec![0u8; n], baud)
+                        paced(&mut w, &vec![0u8; n], baud, &mut end)
                     }
                 }
             }
-            ends2.lock().unwrap().push(Instant::now());
+            ends2.lock().unwrap().push(end.unwrap_or_else(Instant::now));
             k += 1;
         }
     });
