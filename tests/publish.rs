@@ -1485,6 +1485,7 @@ fn a_write_from_the_broker_to_a_read_only_session_is_refused_as_set_is() {
         !got.lock().unwrap().iter().any(|(t, p, _)| t == "plcsh/one/a/VW100" && json(p)["value"] != 0),
         "nothing was written"
     );
+}
 
 // ---------------------------------------------------------------------------------------------
 // A broker that breaks the connection again and again while readings flow: a minimal MQTT
