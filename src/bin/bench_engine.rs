@@ -99,8 +99,9 @@ fn hour() {
     s.backup.path = None;
 }
 
-/// Instructions of the helper's scans on `s` while `words` (a request block, `None`: no
-/// request) is written before each of `n` scans, and the modelled scan time of the last.
+/// The helper's scans on `s`, `n` of them, with `request(ack 0's sequence)` written into the
+/// mailbox before each (a request block; `None`: nothing): instructions per scan, those of the
+/// busiest scan, wall time per scan (µs) and the busiest scan's modelled time (ns).
 fn helper_scans(
     s: &mut sim::K2Sim,
     clock: &Clock,
@@ -111,7 +112,7 @@ fn helper_scans(
     use plcsh::k2::operand::{Area, K2Operand};
     let (scans0, n0) = s.plc().map(|p| (p.stats.scans, p.stats.total_instructions)).unwrap();
     let t = Instant::now();
-    let mut max = 0;
+    let mut max = (0, 0);
     for _ in 0..n {
         let ack = s.mem.read(&K2Operand::word(Area::V, DEFAULT_BASE + OFF_ACKS)) as u16;
         if let Some(words) = request(ack) {
@@ -122,12 +123,15 @@ fn helper_scans(
         let next = s.plc().unwrap().next_scan;
         clock.step(next.saturating_sub(clock.now()).max(Duration::from_nanos(1)));
         s.advance();
-        max = max.max(s.plc().unwrap().stats.last_instructions);
+        let st = s.plc().unwrap().stats;
+        if st.last_instructions > max.0 {
+            max = (st.last_instructions, st.last_ns);
+        }
     }
     let wall = t.elapsed();
     let p = s.plc().unwrap();
     let scans = (p.stats.scans - scans0).max(1);
-    ((p.stats.total_instructions - n0) / scans, max, wall.as_secs_f64() * 1e6 / scans as f64, p.stats.last_ns)
+    ((p.stats.total_instructions - n0) / scans, max.0, wall.as_secs_f64() * 1e6 / scans as f64, max.1)
 }
 
 /// The helper alone on every model: idle scans (no request); then scans serving a request,
@@ -163,11 +167,12 @@ fn helper_cost() {
         };
         for (what, cmd) in cmds {
             // A new request whenever the last one is acknowledged; the busiest scan executes it.
-            let mut sent = 0u16;
+            let mut sent: Option<u16> = None;
             let (_, busiest, _, ns) = helper_scans(&mut s, &clock, 40, |ack| {
-                (ack == sent).then(|| {
-                    sent = next_seq(ack);
-                    request_words(sent, 0x5A5A, &cmd)
+                sent.is_none_or(|s| s == ack).then(|| {
+                    let seq = next_seq(ack);
+                    sent = Some(seq);
+                    request_words(seq, 0x5A5A, &cmd)
                 })
             });
             row.push_str(&format!("; serving {what}: {busiest} instructions, {:.3} ms", ns as f64 / 1e6));

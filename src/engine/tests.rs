@@ -705,7 +705,8 @@ fn stepping_stops_and_resumes() {
 /// sums over the instructions executed, through jumps taken and not taken, calls, a
 /// conditional return, a WDT and the end: stepping one instruction at a time (each pause
 /// names the next instruction) adds the table entry by entry, and the free-running scan
-/// must reach the same totals. Costs differ per class, so a run counted wrong shows.
+/// must reach the same totals. Costs differ per class, so a run counted wrong shows. A
+/// scan resumed inside the subroutine returns into the main program and runs it to its end.
 #[test]
 fn a_scans_time_and_count_are_the_sums_over_the_instructions_executed() {
     let src = "PROGRAM MAIN\nLD %I0.0\nMOVE 3, %VW0\nLOOP:\nLD %I0.0\nADD 1, %VW2\nSUB 1, %VW0\nLDW> %VW0, 0\nJMPC LOOP\nLD %I0.0\nCAL SUB1\nWDT\nLD %I0.0\nJMPCN SKIP\nMOVE 1, %VW4\nSKIP:\nEND_PROGRAM\nSUBROUTINE SUB1\nLD %I0.0\nADD 100, %VW6\nRETC\nMOVE 99, %VW8\nEND_SUBROUTINE";

@@ -294,7 +294,9 @@ impl Cpu {
         let mut run = pc;
         let mut left = limit;
         let mut first = true;
-        let base_depth = self.calls.len();
+        // A return with no call open ends the POU the loop started in: the main program or
+        // an interrupt routine (which runs with the interrupted calls set aside). Not the
+        // depth at entry: a scan resumed inside a subroutine (stepping) returns from it.
         // The current result and the logic stack live in locals while the loop runs (in
         // registers, not written back instruction by instruction); `count!` writes them
         // back with the totals before anything leaves the loop.
@@ -596,7 +598,7 @@ impl Cpu {
                 Ins::Ret { cond } => {
                     watchdog!();
                     if cond.is_none_or(|c| cr == c) {
-                        if self.calls.len() <= base_depth {
+                        if self.calls.is_empty() {
                             self.pc = None;
                             return Exit::Done;
                         }
@@ -606,7 +608,7 @@ impl Cpu {
                 }
                 Ins::End => {
                     watchdog!();
-                    if self.calls.len() <= base_depth {
+                    if self.calls.is_empty() {
                         self.pc = None;
                         return Exit::Done;
                     }
