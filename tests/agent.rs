@@ -378,7 +378,7 @@ fn refusal(device: Option<&str>, line: &str) -> (String, String) {
 /// disabled idle channel (the control byte's value in the words, §3.4.2.2 bit 7), PLS, PSTOP,
 /// HDEF and HSC on channels the model lacks, HDEF with a mode the counter lacks (§3.3.1),
 /// writes to SMB0 and to the read-only current positions SMD212/SMD242/SMD262 (§3.4.3.1,
-/// set through SMD208 + SM201.4).
+/// set through SMD208 + SM201.4), a date the clock cannot hold (SET_RTC).
 #[test]
 fn every_refusal_reads_the_same_through_the_helper_and_in_process() {
     let srv = Server::start(&["--agent"]);
@@ -405,6 +405,8 @@ fn every_refusal_reads_the_same_through_the_helper_and_in_process() {
         "set SMD242=-7",
         "set SMD262=1",
         "set SMW214=3",
+        "rtc set 2026-02-30T10:00:00",
+        "rtc set 2026-13-01T10:00:00",
     ];
     let mut differ = Vec::new();
     for case in cases {
