@@ -740,7 +740,7 @@ fn a_scans_time_and_count_are_the_sums_over_the_instructions_executed() {
 }
 
 /// Every instruction of a program is one element of a flat vector: keep it small (the
-/// timer's and counter's locations are boxed; an unboxed element made each one 80 bytes).
+/// timer's and counter's locations are boxed; an unboxed element made each one about 80 bytes).
 #[test]
 fn an_instruction_is_at_most_48_bytes() {
     assert!(

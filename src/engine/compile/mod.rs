@@ -163,7 +163,7 @@ pub enum Ins {
         cond: Option<bool>,
     },
     /// The element's locations are boxed (here and in `Counter`): they are read once per
-    /// timer, and an unboxed `Element` made every instruction of the program 80 bytes long.
+    /// timer, and an unboxed `Element` made every instruction of the program about 80 bytes long.
     Timer {
         kind: TimerKind,
         slot: u32,
