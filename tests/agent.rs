@@ -355,3 +355,75 @@ fn the_helper_is_printed_for_the_model_it_goes_into() {
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("K209M-56DT"), "the catalogue is named");
 }
+
+/// The error (message, hint) of the last command of `line` on `device` (or in process).
+fn refusal(device: Option<&str>, line: &str) -> (String, String) {
+    let mut args = vec!["--json", "-c", line];
+    match device {
+        Some(d) => args.extend(["--device", d]),
+        None => args.extend(["--time", "stepped", "--model", "K205-16DT"]),
+    }
+    let l = json_lines(&run(&args, ""));
+    let last = l.last().unwrap_or_else(|| panic!("{line}: no output"));
+    assert_ne!(last["ok"], true, "{line}: refused, not done: {l:?}");
+    let e = &last["error"];
+    let text = |k: &str| e[k].as_str().unwrap_or("").to_string();
+    (text("message"), text("hint"))
+}
+
+/// Every refusal a command can meet reads the same through the helper (`sim serve --agent`,
+/// the refusal read where the PLC reports it: status bits, the control byte, the helper's
+/// checks) and in process (the simulator's own pulse generator, counters and clock): the
+/// same message and the same hint. PLS with a pulse count or cycle time below 2 (K2
+/// §3.4.2.2: «Время цикла и количество импульсов должны быть больше 1», status bit 4), PLS
+/// at a frequency above the output's limit (§3.4), PWM with a cycle below 2, PLS on a
+/// disabled idle channel (the control byte's value in the words, §3.4.2.2 bit 7), PLS, PSTOP,
+/// HDEF and HSC on channels the model lacks, HDEF with a mode the counter lacks (§3.3.1),
+/// writes to SMB0 and to the read-only current positions SMD212/SMD242/SMD262 (§3.4.3.1,
+/// set through SMD208 + SM201.4), a date the clock cannot hold (SET_RTC).
+#[test]
+fn every_refusal_reads_the_same_through_the_helper_and_in_process() {
+    let srv = Server::start(&["--agent"]);
+    let url = srv.url();
+    let cases = [
+        "set SMB67=16#85, SMW68=1000, SMD72=1; pls 0",
+        "set SMB67=16#85, SMW68=1, SMD72=100; pls 0",
+        "set SMB77=16#85, SMW78=0, SMD82=0; pls 1",
+        "set SMB97=16#85, SMW98=500, SMD102=1; pls 2",
+        "set SMB67=16#85, SMW68=2, SMD72=100; pls 0",
+        "set SMB67=16#D3, SMW68=1, SMW70=0; pls 0",
+        "set SMB67=16#00; pls 0",
+        "set SMB67=16#00, SMB77=16#85; pls 0",
+        "set SMB97=16#04; pls 2",
+        "pls 3",
+        "pstop 3",
+        "hdef 0 5",
+        "hdef 2 4",
+        "hdef 1 11",
+        "hdef 4 0",
+        "hsc 4",
+        "set SMB0=1",
+        "set SMD212=5",
+        "set SMD242=-7",
+        "set SMD262=1",
+        "set SMW214=3",
+        "rtc set 2026-02-30T10:00:00",
+        "rtc set 2026-13-01T10:00:00",
+    ];
+    let mut differ = Vec::new();
+    for case in cases {
+        // The served PLC keeps its state from case to case: every case starts with the pulse
+        // channels' control bytes cleared, as the fresh simulator in process has them.
+        let line = &format!("set SMB67=16#00, SMB77=16#00, SMB97=16#00; {case}");
+        let helper = refusal(Some(&url), line);
+        let local = refusal(None, line);
+        assert!(!helper.0.is_empty(), "{line}: no message through the helper");
+        if helper != local {
+            differ.push(format!(
+                "`{line}`\n  helper:     {} | hint: {}\n  in process: {} | hint: {}",
+                helper.0, helper.1, local.0, local.1
+            ));
+        }
+    }
+    assert!(differ.is_empty(), "the routes word these refusals differently:\n{}", differ.join("\n"));
+}

@@ -203,9 +203,9 @@ fn observed() -> (Vec<String>, Vec<(String, String)>) {
 }
 
 /// The Lua script that runs `steps` on the current device and prints, per step, whether
-/// each command succeeded, the clock it read (to ten seconds) and the observed state. Not
-/// how a refusal is worded (the helper reports it from the channel's status bits, the
-/// simulator from its pulse generator); whether it is one is compared. The simulator
+/// each command succeeded, the clock it read (to ten seconds) and the observed state. Whether
+/// a command was refused is compared here; how a refusal is worded, by tests/agent.rs
+/// (`every_refusal_reads_the_same_through_the_helper_and_in_process`). The simulator
 /// follows the manual here: its PLS leaves the CR as it was (K2 §3.4.2), so the helper
 /// cannot pass by reading the CR.
 fn script(steps: &[Step]) -> String {

@@ -9,7 +9,8 @@
 //!    instructions, memory.
 //! 3. The helper's own cost per catalogue model (`plcsh agent il --model`): the
 //!    instructions of an idle scan, the modelled scan time (cost table), and the wall time
-//!    per simulated scan, the helper alone.
+//!    per simulated scan, the helper alone; then the instructions and modelled time of the
+//!    scan that serves an SM read, an SM write and a PLS (`BENCH_ONLY=helper`).
 
 use plcsh::core::{Clock, Device, OperandSpace};
 use plcsh::engine::Cpu;
@@ -98,35 +99,101 @@ fn hour() {
     s.backup.path = None;
 }
 
-/// The helper alone on every model: idle scans (no request), then one SM read per scan.
+/// The helper's scans on `s`, `n` of them, with `request(ack 0's sequence)` written into the
+/// mailbox before each (a request block; `None`: nothing): instructions per scan, those of the
+/// busiest scan, wall time per scan (µs) and the busiest scan's modelled time (ns).
+fn helper_scans(
+    s: &mut sim::K2Sim,
+    clock: &Clock,
+    n: u64,
+    mut request: impl FnMut(u16) -> Option<Vec<u16>>,
+) -> (u64, u64, f64, u64) {
+    use plcsh::k2::agent::protocol::{OFF_ACKS, OFF_REQUEST};
+    use plcsh::k2::operand::{Area, K2Operand};
+    let (scans0, n0) = s.plc().map(|p| (p.stats.scans, p.stats.total_instructions)).unwrap();
+    let t = Instant::now();
+    let mut max = (0, 0);
+    for _ in 0..n {
+        let ack = s.mem.read(&K2Operand::word(Area::V, DEFAULT_BASE + OFF_ACKS)) as u16;
+        if let Some(words) = request(ack) {
+            for (i, w) in words.iter().enumerate() {
+                s.mem.write(&K2Operand::word(Area::V, DEFAULT_BASE + OFF_REQUEST + 2 * i as u32), *w as u32);
+            }
+        }
+        let next = s.plc().unwrap().next_scan;
+        clock.step(next.saturating_sub(clock.now()).max(Duration::from_nanos(1)));
+        s.advance();
+        let st = s.plc().unwrap().stats;
+        if st.last_instructions > max.0 {
+            max = (st.last_instructions, st.last_ns);
+        }
+    }
+    let wall = t.elapsed();
+    let p = s.plc().unwrap();
+    let scans = (p.stats.scans - scans0).max(1);
+    ((p.stats.total_instructions - n0) / scans, max.0, wall.as_secs_f64() * 1e6 / scans as f64, max.1)
+}
+
+/// The helper alone on every model: idle scans (no request); then scans serving a request,
+/// one after the other (each acknowledged before the next is written): an SM read of the
+/// first pulse channel's registers (command 2), an SM write of its cycle time (command 1),
+/// and PLS on its channel with the enable bit clear (command 3: nothing to do, nothing
+/// moves). The busiest scan is the one that executes the request.
 fn helper_cost() {
+    use plcsh::k2::agent::protocol::{next_seq, request_words, Command};
     for model in plcsh::k2::catalog::MODELS {
         let clock = Clock::stepped();
         let mut s = sim::open(model.name, clock.clone()).unwrap();
         s.enable_agent(DEFAULT_BASE).unwrap();
         clock.step(Duration::from_millis(10));
         s.advance();
-        let (scans0, n0) = s.plc().map(|p| (p.stats.scans, p.stats.total_instructions)).unwrap();
-        let t = Instant::now();
-        clock.step(Duration::from_secs(60));
-        s.advance();
-        let wall = t.elapsed();
-        let p = s.plc().unwrap();
-        let scans = p.stats.scans - scans0;
-        println!(
-            "helper alone on {}: {} instructions per idle scan, modelled scan {:.3} ms (cost table), {:.2} µs wall per scan",
+        let (idle, _, wall, ns) = helper_scans(&mut s, &clock, 20_000, |_| None);
+        let mut row = format!(
+            "helper alone on {}: {idle} instructions per idle scan, modelled scan {:.3} ms (cost table), {wall:.2} µs wall per scan",
             model.name,
-            (p.stats.total_instructions - n0) / scans.max(1),
-            p.stats.last_ns as f64 / 1e6,
-            wall.as_secs_f64() * 1e6 / scans.max(1) as f64
+            ns as f64 / 1e6
         );
+        let ch = model.pto.first().map(|c| c.channel);
+        let cmds: Vec<(&str, Command)> = match ch {
+            Some(c) => {
+                let r = plcsh::k2::sm_map::PTO_REGS[c as usize];
+                vec![
+                    ("SM read", Command::SmRead { start: r.status as u16, len: 10 }),
+                    ("SM write", Command::SmWrite { start: r.cycle as u16, data: vec![0x01, 0xF4] }),
+                    ("PLS", Command::Pls(c)),
+                ]
+            }
+            None => vec![("SM read", Command::SmRead { start: 36, len: 10 })],
+        };
+        for (what, cmd) in cmds {
+            // A new request whenever the last one is acknowledged; the busiest scan executes it.
+            let mut sent: Option<u16> = None;
+            let (_, busiest, _, ns) = helper_scans(&mut s, &clock, 40, |ack| {
+                sent.is_none_or(|s| s == ack).then(|| {
+                    let seq = next_seq(ack);
+                    sent = Some(seq);
+                    request_words(seq, 0x5A5A, &cmd)
+                })
+            });
+            row.push_str(&format!("; serving {what}: {busiest} instructions, {:.3} ms", ns as f64 / 1e6));
+        }
+        println!("{row}");
         s.backup.path = None;
     }
 }
 
 fn main() {
-    raw_speed();
-    hour();
-    helper_cost();
+    // BENCH_ONLY=raw|hour|helper runs one part (callgrind counts one part at a time).
+    let only = std::env::var("BENCH_ONLY").unwrap_or_default();
+    let run = |part: &str| only.is_empty() || only == part;
+    if run("raw") {
+        raw_speed();
+    }
+    if run("hour") {
+        hour();
+    }
+    if run("helper") {
+        helper_cost();
+    }
     println!("memory: VmRSS {} kB, VmHWM {} kB", mem_kb("VmRSS:"), mem_kb("VmHWM:"));
 }

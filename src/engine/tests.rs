@@ -700,6 +700,56 @@ fn stepping_stops_and_resumes() {
     assert_eq!(o.exit, exec::Exit::Done, "resumed past the breakpoint");
 }
 
+/// The interpreter adds the cost table per straight run of instructions (prefix sums), not
+/// instruction by instruction. The scan's program time and instruction count must be the
+/// sums over the instructions executed, through jumps taken and not taken, calls, a
+/// conditional return, a WDT and the end: stepping one instruction at a time (each pause
+/// names the next instruction) adds the table entry by entry, and the free-running scan
+/// must reach the same totals. Costs differ per class, so a run counted wrong shows. A
+/// scan resumed inside the subroutine returns into the main program and runs it to its end.
+#[test]
+fn a_scans_time_and_count_are_the_sums_over_the_instructions_executed() {
+    let src = "PROGRAM MAIN\nLD %I0.0\nMOVE 3, %VW0\nLOOP:\nLD %I0.0\nADD 1, %VW2\nSUB 1, %VW0\nLDW> %VW0, 0\nJMPC LOOP\nLD %I0.0\nCAL SUB1\nWDT\nLD %I0.0\nJMPCN SKIP\nMOVE 1, %VW4\nSKIP:\nEND_PROGRAM\nSUBROUTINE SUB1\nLD %I0.0\nADD 100, %VW6\nRETC\nMOVE 99, %VW8\nEND_SUBROUTINE";
+    for on in [false, true] {
+        let mut free = load(src);
+        free.set_bit("I0.0", on);
+        let whole = free.scan();
+        let mut step = load(src);
+        step.set_bit("I0.0", on);
+        let (mut n, mut ns, mut table) = (0, 0, 0u64);
+        let mut pc = step.prog.main().entry as usize;
+        loop {
+            let o = step.cpu.scan(&step.prog, &mut step.mem, 0, 1, None);
+            assert_eq!(o.instructions, 1, "one instruction per step");
+            n += o.instructions;
+            ns += o.cost_ns;
+            table += step.prog.cost[pc] as u64;
+            match o.exit {
+                exec::Exit::Paused(next) => pc = next as usize,
+                exec::Exit::Done => break,
+                exec::Exit::Fault(f) => panic!("{f}"),
+            }
+        }
+        assert!(n > 10, "{n} instructions");
+        assert_eq!(whole.instructions, n, "I0.0 = {on}: instructions");
+        assert_eq!(ns, table, "I0.0 = {on}: stepped time is the table's sum");
+        assert_eq!(whole.cost_ns, table, "I0.0 = {on}: program time");
+        assert_eq!(free.cpu.spent_ns, table);
+        assert_eq!(free.cpu.executed, n);
+    }
+}
+
+/// Every instruction of a program is one element of a flat vector: keep it small (the
+/// timer's and counter's locations are boxed; an unboxed element made each one about 80 bytes).
+#[test]
+fn an_instruction_is_at_most_48_bytes() {
+    assert!(
+        std::mem::size_of::<crate::engine::compile::Ins>() <= 48,
+        "{}",
+        std::mem::size_of::<crate::engine::compile::Ins>()
+    );
+}
+
 // ---- load errors ----------------------------------------------------------------------
 
 #[test]

@@ -21,7 +21,7 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
             Some(o) => Some(self.bit(o)?),
             None => None,
         };
-        Ok(Ins::Timer { kind, slot, el, pt, reset })
+        Ok(Ins::Timer { kind, slot, el: Box::new(el), pt, reset })
     }
 
     /// `CTU C0, PV[, R]`, `CTUD C0, PV, CD[, R]`.
@@ -32,7 +32,7 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
             CounterKind::Ctud => (Some(self.bit(&ops[2])?), ops.get(3).map(|o| self.bit(o)).transpose()?),
             _ => (None, ops.get(2).map(|o| self.bit(o)).transpose()?),
         };
-        Ok(Ins::Counter { kind, slot, el, pv, second, reset })
+        Ok(Ins::Counter { kind, slot, el: Box::new(el), pv, second, reset })
     }
 
     pub(super) fn element(&mut self, o: &OperandText, timer: bool) -> Result<(Element, u32)> {

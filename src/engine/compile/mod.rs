@@ -162,17 +162,19 @@ pub enum Ins {
     Ret {
         cond: Option<bool>,
     },
+    /// The element's locations are boxed (here and in `Counter`): they are read once per
+    /// timer, and an unboxed `Element` made every instruction of the program about 80 bytes long.
     Timer {
         kind: TimerKind,
         slot: u32,
-        el: Element,
+        el: Box<Element>,
         pt: Opd,
         reset: Option<Loc>,
     },
     Counter {
         kind: CounterKind,
         slot: u32,
-        el: Element,
+        el: Box<Element>,
         pv: Opd,
         second: Option<Loc>,
         reset: Option<Loc>,
@@ -215,6 +217,10 @@ pub struct Program {
     pub code: Vec<Ins>,
     /// Cost of each instruction in ns (parallel to `code`).
     pub cost: Vec<u32>,
+    /// Prefix sums of `cost` (one longer than `code`): the instructions `a..b` cost
+    /// `cost_prefix[b] - cost_prefix[a]`. The interpreter adds a straight run's cost at once.
+    /// Built with `cost` ([`compile`], [`Program::set_costs`]).
+    pub cost_prefix: Vec<u64>,
     /// Cost class of each instruction (to re-cost it with another table).
     pub class: Vec<CostClass>,
     /// Source position of each instruction (parallel to `code`).
@@ -243,6 +249,7 @@ impl Program {
     /// Re-costs the program with another table (`sim program costs`).
     pub fn set_costs(&mut self, t: CostTable) {
         self.cost = self.class.iter().map(|c| t.ns(*c)).collect();
+        self.cost_prefix = prefix_sums(&self.cost);
         self.costs = t;
     }
 
@@ -281,6 +288,7 @@ fn compile_text<F: Family + ?Sized>(text: &str, file: &str, fam: &F) -> Result<P
             file: file.to_string(),
             code: Vec::new(),
             cost: Vec::new(),
+            cost_prefix: Vec::new(),
             class: Vec::new(),
             pos: Vec::new(),
             network: Vec::new(),
@@ -410,7 +418,19 @@ fn compile_text<F: Family + ?Sized>(text: &str, file: &str, fam: &F) -> Result<P
             _ => {}
         }
     }
+    cx.prog.cost_prefix = prefix_sums(&cx.prog.cost);
     Ok(cx.prog)
+}
+
+/// `[0, c0, c0 + c1, …]`: one more entry than `cost`.
+fn prefix_sums(cost: &[u32]) -> Vec<u64> {
+    let mut sum = 0u64;
+    std::iter::once(0)
+        .chain(cost.iter().map(|c| {
+            sum += *c as u64;
+            sum
+        }))
+        .collect()
 }
 
 /// The closest name within edit distance 2 (names longer than 32 characters are not compared).

@@ -283,20 +283,68 @@ impl Cpu {
         brk: Option<&[bool]>,
     ) -> Exit {
         let code = &prog.code[..];
-        let cost = &prog.cost[..];
+        // Cost and count are kept per straight run of instructions, not per instruction:
+        // `run` is where the current run started, and `flush!` adds the run's cost (from
+        // the program's prefix sums) and length to the CPU's totals. Every place that
+        // reads the totals or leaves the loop flushes first, and every jump starts a new
+        // run, so the totals are the same as adding instruction by instruction.
+        let prefix = &prog.cost_prefix[..];
         let wd = prog.costs.watchdog_ns;
         let mut pc = start as usize;
+        let mut run = pc;
         let mut left = limit;
         let mut first = true;
-        let base_depth = self.calls.len();
+        // A return with no call open ends the POU the loop started in: the main program or
+        // an interrupt routine (which runs with the interrupted calls set aside). Not the
+        // depth at entry: a scan resumed inside a subroutine (stepping) returns from it.
+        // The current result and the logic stack live in locals while the loop runs (in
+        // registers, not written back instruction by instruction); `count!` writes them
+        // back with the totals before anything leaves the loop.
+        let (mut cr, mut stack) = (self.cr, self.stack);
+        // Adds the run so far and writes the CR and stack back (before leaving the loop).
+        macro_rules! count {
+            () => {
+                self.cr = cr;
+                self.stack = stack;
+                if pc > run {
+                    let (a, b) = (run.min(prefix.len() - 1), pc.min(prefix.len() - 1));
+                    self.spent_ns += prefix[b] - prefix[a];
+                    self.executed += (pc - run) as u64;
+                }
+            };
+        }
+        // Adds the run so far and starts a new one here (before reading the totals).
+        macro_rules! flush {
+            () => {
+                count!();
+                run = pc;
+            };
+        }
+        // A jump: the run so far is counted, a new one starts at the target.
+        macro_rules! goto {
+            ($to:expr) => {
+                count!();
+                pc = $to;
+                run = pc;
+            };
+        }
+        macro_rules! fail {
+            ($f:expr) => {{
+                let f = $f;
+                count!();
+                return self.fault(prog, (pc - 1) as u32, f);
+            }};
+        }
         loop {
             if STEP {
                 if left == 0 {
+                    count!();
                     self.pc = Some(pc as u32);
                     return Exit::Paused(pc as u32);
                 }
                 if let Some(b) = brk {
                     if !first && b.get(pc).copied().unwrap_or(false) {
+                        count!();
                         self.pc = Some(pc as u32);
                         return Exit::Paused(pc as u32);
                     }
@@ -305,15 +353,15 @@ impl Cpu {
                 left -= 1;
             }
             let Some(ins) = code.get(pc) else {
+                count!();
                 return self.fault(prog, pc as u32, Fault::new(FaultKind::Instruction, "ran off the program"));
             };
-            self.spent_ns += cost.get(pc).copied().unwrap_or(0) as u64;
-            self.executed += 1;
             pc += 1;
             // Only a jump or call can make a scan run long (straight-line code ends), so
             // the watchdog is checked there and at the end of a POU.
             macro_rules! watchdog {
                 () => {
+                    flush!();
                     if self.spent_ns - self.wdt_mark_ns > wd {
                         return self.fault(prog, (pc - 1) as u32, watchdog_fault(wd));
                     }
@@ -321,39 +369,39 @@ impl Cpu {
             }
             match ins {
                 Ins::Ld { loc, neg } => {
-                    self.stack = (self.stack << 1) | self.cr as u32;
-                    self.cr = (m.get(*loc) & 1 != 0) ^ neg;
+                    stack = (stack << 1) | cr as u32;
+                    cr = (m.get(*loc) & 1 != 0) ^ neg;
                 }
                 Ins::Logic { op, loc, neg } => {
                     let v = (m.get(*loc) & 1 != 0) ^ neg;
-                    self.cr = logic(lcode(*op), self.cr, v);
+                    cr = logic(lcode(*op), cr, v);
                 }
-                Ins::St { loc, neg } => m.set(*loc, (self.cr ^ neg) as u32),
-                Ins::Not => self.cr = !self.cr,
+                Ins::St { loc, neg } => m.set(*loc, (cr ^ neg) as u32),
+                Ins::Not => cr = !cr,
                 Ins::ParOpen { op, neg, load } => {
                     if self.parens.len() >= MAX_PARENS {
                         let f = Fault::new(FaultKind::Instruction, "parentheses nested deeper than 8");
-                        return self.fault(prog, (pc - 1) as u32, f);
+                        fail!(f);
                     }
-                    self.parens.push((lcode(*op), *neg, self.cr));
+                    self.parens.push((lcode(*op), *neg, cr));
                     if let Some(l) = load {
-                        self.cr = m.get(*l) & 1 != 0;
+                        cr = m.get(*l) & 1 != 0;
                     }
                 }
                 Ins::ParClose => {
                     if let Some((op, neg, saved)) = self.parens.pop() {
-                        self.cr = logic(op, saved, self.cr ^ neg);
+                        cr = logic(op, saved, cr ^ neg);
                     }
                 }
                 Ins::Set { loc, n, on } => {
-                    if self.cr {
+                    if cr {
                         for k in 0..*n {
                             m.set(loc.nth(k), *on as u32);
                         }
                     }
                 }
                 Ins::ResetElem { timer, slot, cv, q } => {
-                    if self.cr {
+                    if cr {
                         m.set(*cv, 0);
                         m.set(*q, 0);
                         if *timer {
@@ -364,120 +412,120 @@ impl Cpu {
                     }
                 }
                 Ins::Ald => {
-                    self.cr &= self.stack & 1 != 0;
-                    self.stack >>= 1;
+                    cr &= stack & 1 != 0;
+                    stack >>= 1;
                 }
                 Ins::Old => {
-                    self.cr |= self.stack & 1 != 0;
-                    self.stack >>= 1;
+                    cr |= stack & 1 != 0;
+                    stack >>= 1;
                 }
-                Ins::Lps => self.stack = (self.stack << 1) | self.cr as u32,
-                Ins::Lrd => self.cr = self.stack & 1 != 0,
+                Ins::Lps => stack = (stack << 1) | cr as u32,
+                Ins::Lrd => cr = stack & 1 != 0,
                 Ins::Lpp => {
-                    self.cr = self.stack & 1 != 0;
-                    self.stack >>= 1;
+                    cr = stack & 1 != 0;
+                    stack >>= 1;
                 }
                 Ins::Edge { slot, rising } => {
                     let e = &mut self.edges[*slot as usize];
                     let prev = *e;
-                    *e = self.cr;
-                    self.cr = if *rising { self.cr && !prev } else { !self.cr && prev };
+                    *e = cr;
+                    cr = if *rising { cr && !prev } else { !cr && prev };
                 }
                 Ins::Compare { comb, op, ty, a, b } => {
                     let (x, y) = match (val(m, a, *ty), val(m, b, *ty)) {
                         (Some(x), Some(y)) => (x, y),
-                        _ => return self.fault(prog, (pc - 1) as u32, bad(m, &[a, b], *ty)),
+                        _ => fail!(bad(m, &[a, b], *ty)),
                     };
                     let r = compare(*ty, *op, x, y);
                     match comb {
                         Comb::Ld => {
-                            self.stack = (self.stack << 1) | self.cr as u32;
-                            self.cr = r;
+                            stack = (stack << 1) | cr as u32;
+                            cr = r;
                         }
-                        Comb::And => self.cr &= r,
-                        Comb::Or => self.cr |= r,
+                        Comb::And => cr &= r,
+                        Comb::Or => cr |= r,
                     }
                 }
                 Ins::Move { ty, a, out } => {
-                    if self.cr {
+                    if cr {
                         let ok = match val(m, a, *ty) {
                             Some(v) => put(m, out, *ty, v),
                             None => false,
                         };
                         if !ok {
-                            return self.fault(prog, (pc - 1) as u32, bad(m, &[a, out], *ty));
+                            fail!(bad(m, &[a, out], *ty));
                         }
                     }
                 }
                 Ins::Block { ty, a, out, n, fill } => {
-                    if self.cr {
+                    if cr {
                         if let Err(f) = self.block(prog, m, *ty, a, out, n, *fill, pc - 1) {
-                            return self.fault(prog, (pc - 1) as u32, f);
+                            fail!(f);
                         }
                     }
                 }
                 Ins::Arith { op, ty, a, b, out } => {
-                    if self.cr {
+                    if cr {
                         match arith(m, *op, *ty, a, b, out) {
                             Ok(eno) => {
-                                self.cr = eno;
+                                cr = eno;
                                 if !eno && matches!(op, Arith::Div | Arith::Mod) && is_zero(m, b, *ty) {
                                     self.normal_error(prog, (pc - 1) as u32, FaultKind::DivZero, "division by zero");
                                 }
                             }
-                            Err(f) => return self.fault(prog, (pc - 1) as u32, f),
+                            Err(f) => fail!(f),
                         }
                     }
                 }
                 Ins::IncDec { inc, ty, out } => {
-                    if self.cr {
+                    if cr {
                         let one = if *ty == DataType::Real { 1f32.to_bits() } else { 1 };
                         let op = if *inc { Arith::Add } else { Arith::Sub };
                         match arith(m, op, *ty, out, &Opd::Imm(one), out) {
-                            Ok(eno) => self.cr = eno,
-                            Err(f) => return self.fault(prog, (pc - 1) as u32, f),
+                            Ok(eno) => cr = eno,
+                            Err(f) => fail!(f),
                         }
                     }
                 }
                 Ins::Shift { op, ty, out, n } => {
-                    if self.cr {
+                    if cr {
                         if let Err(f) = shift_out(m, *op, *ty, out, n) {
-                            return self.fault(prog, (pc - 1) as u32, f);
+                            fail!(f);
                         }
                     }
                 }
                 Ins::WordLogic { op, ty, a, b, out } => {
-                    if self.cr {
+                    if cr {
                         if let Err(f) = word_logic(m, *op, *ty, a, b, out) {
-                            return self.fault(prog, (pc - 1) as u32, f);
+                            fail!(f);
                         }
                     }
                 }
                 Ins::Inv { ty, out } => {
-                    if self.cr {
+                    if cr {
                         if let Err(f) = invert(m, *ty, out) {
-                            return self.fault(prog, (pc - 1) as u32, f);
+                            fail!(f);
                         }
                     }
                 }
                 Ins::Unary { op, ty, a, out } => {
-                    if self.cr {
+                    if cr {
                         match unary(m, *op, *ty, a, out) {
-                            Ok(eno) => self.cr = eno,
-                            Err(f) => return self.fault(prog, (pc - 1) as u32, f),
+                            Ok(eno) => cr = eno,
+                            Err(f) => fail!(f),
                         }
                     }
                 }
                 Ins::Swap { out } => {
-                    if self.cr {
+                    if cr {
                         if let Err(f) = swap(m, out) {
-                            return self.fault(prog, (pc - 1) as u32, f);
+                            fail!(f);
                         }
                     }
                 }
                 Ins::For { ty, indx, init, fin, end } => {
-                    if !self.cr {
-                        pc = *end as usize;
+                    if !cr {
+                        goto!(*end as usize);
                     } else {
                         let r = read(m, init, *ty).and_then(|i| {
                             let f = read(m, fin, *ty)?;
@@ -485,9 +533,11 @@ impl Cpu {
                             Ok(as_i64(*ty, i) > as_i64(*ty, f))
                         });
                         match r {
-                            Ok(true) => pc = *end as usize,
+                            Ok(true) => {
+                                goto!(*end as usize);
+                            }
                             Ok(false) => {}
-                            Err(f) => return self.fault(prog, (pc - 1) as u32, f),
+                            Err(f) => fail!(f),
                         }
                     }
                 }
@@ -504,94 +554,96 @@ impl Cpu {
                         match r {
                             Ok(true) => {
                                 watchdog!();
-                                pc = *start as usize + 1;
+                                goto!(*start as usize + 1);
                                 // The body runs with the FOR's enable on (S7-200).
-                                self.cr = true;
+                                cr = true;
                             }
                             Ok(false) => {}
-                            Err(f) => return self.fault(prog, (pc - 1) as u32, f),
+                            Err(f) => fail!(f),
                         }
                     }
                 }
                 Ins::Conv { c, a, out } => {
-                    if self.cr {
+                    if cr {
                         match convert(m, *c, a, out) {
-                            Ok(eno) => self.cr = eno,
-                            Err(f) => return self.fault(prog, (pc - 1) as u32, f),
+                            Ok(eno) => cr = eno,
+                            Err(f) => fail!(f),
                         }
                     }
                 }
                 Ins::Jmp { to } => {
                     watchdog!();
-                    pc = *to as usize
+                    goto!(*to as usize);
                 }
                 Ins::Jmpc { to, neg } => {
                     watchdog!();
-                    if self.cr ^ neg {
-                        pc = *to as usize;
+                    if cr ^ neg {
+                        goto!(*to as usize);
                     }
                 }
                 Ins::Cal { pou, cond } => {
                     watchdog!();
-                    if cond.is_none_or(|c| self.cr == c) {
+                    if cond.is_none_or(|c| cr == c) {
                         if self.calls.len() >= MAX_CALL_DEPTH {
                             let f = Fault::new(
                                 FaultKind::CallDepth,
                                 format!("subroutines nested deeper than {MAX_CALL_DEPTH}"),
                             );
-                            return self.fault(prog, (pc - 1) as u32, f);
+                            fail!(f);
                         }
                         self.calls.push(pc as u32);
-                        pc = prog.pous[*pou as usize].entry as usize;
+                        goto!(prog.pous[*pou as usize].entry as usize);
                     }
                 }
                 Ins::Ret { cond } => {
                     watchdog!();
-                    if cond.is_none_or(|c| self.cr == c) {
-                        if self.calls.len() <= base_depth {
+                    if cond.is_none_or(|c| cr == c) {
+                        if self.calls.is_empty() {
                             self.pc = None;
                             return Exit::Done;
                         }
-                        pc = self.calls.pop().unwrap_or(0) as usize;
+                        let back = self.calls.pop().unwrap_or(0) as usize;
+                        goto!(back);
                     }
                 }
                 Ins::End => {
                     watchdog!();
-                    if self.calls.len() <= base_depth {
+                    if self.calls.is_empty() {
                         self.pc = None;
                         return Exit::Done;
                     }
-                    pc = self.calls.pop().unwrap_or(0) as usize;
+                    let back = self.calls.pop().unwrap_or(0) as usize;
+                    goto!(back);
                 }
                 Ins::Timer { kind, slot, el, pt, reset } => {
                     let pt = match read(m, pt, DataType::Int) {
                         Ok(v) => v as u16 as i16 as i32,
-                        Err(f) => return self.fault(prog, (pc - 1) as u32, f),
+                        Err(f) => fail!(f),
                     };
                     let rs = reset.is_some_and(|r| m.get(r) & 1 != 0);
                     let cv = m.get(el.cv) as u16 as i16 as i32;
                     let st = &mut self.timers[*slot as usize];
-                    let (cv, q) = timers::timer(*kind, st, self.cr, cv, pt, rs, self.now_ns, el.base_ns);
+                    let (cv, q) = timers::timer(*kind, st, cr, cv, pt, rs, self.now_ns, el.base_ns);
                     m.set(el.cv, cv as u16 as u32);
                     m.set(el.q, q as u32);
-                    self.cr = q;
+                    cr = q;
                 }
                 Ins::Counter { kind, slot, el, pv, second, reset } => {
                     let pv = match read(m, pv, DataType::Int) {
                         Ok(v) => v as u16 as i16 as i32,
-                        Err(f) => return self.fault(prog, (pc - 1) as u32, f),
+                        Err(f) => fail!(f),
                     };
                     let rs = reset.is_some_and(|r| m.get(r) & 1 != 0);
                     let down = second.is_some_and(|r| m.get(r) & 1 != 0);
                     let cv = m.get(el.cv) as u16 as i16 as i32;
                     let st = &mut self.counters[*slot as usize];
-                    let (cv, q) = timers::counter(*kind, st, self.cr, down, cv, pv, rs);
+                    let (cv, q) = timers::counter(*kind, st, cr, down, cv, pv, rs);
                     m.set(el.cv, cv as u16 as u32);
                     m.set(el.q, q as u32);
-                    self.cr = q;
+                    cr = q;
                 }
                 Ins::Atch { pou, event } => {
-                    if self.cr {
+                    if cr {
                         let ev = read(m, event, DataType::Int).unwrap_or(0) as u16 as usize;
                         if self.attached.len() <= ev {
                             self.attached.resize(ev + 1, None);
@@ -600,7 +652,7 @@ impl Cpu {
                     }
                 }
                 Ins::Dtch { event } => {
-                    if self.cr {
+                    if cr {
                         let ev = read(m, event, DataType::Int).unwrap_or(0) as u16 as usize;
                         if let Some(a) = self.attached.get_mut(ev) {
                             *a = None;
@@ -608,23 +660,24 @@ impl Cpu {
                     }
                 }
                 Ins::Eni => {
-                    if self.cr {
+                    if cr {
                         self.interrupts_enabled = true;
                     }
                 }
                 Ins::Disi => {
-                    if self.cr {
+                    if cr {
                         self.interrupts_enabled = false;
                     }
                 }
                 Ins::Wdt => {
-                    if self.cr {
+                    if cr {
+                        flush!();
                         self.wdt_mark_ns = self.spent_ns;
                     }
                 }
                 Ins::Nop => {}
                 Ins::Special { id, inst, edge, args, types } => {
-                    let en = self.cr;
+                    let en = cr;
                     let run = if *edge {
                         let p = &mut self.special_en[*inst as usize];
                         let r = en && !*p;
@@ -641,8 +694,8 @@ impl Cpu {
                         None
                     };
                     match done {
-                        Some(Ok(eno)) => self.cr = eno,
-                        Some(Err(f)) => return self.fault(prog, (pc - 1) as u32, f),
+                        Some(Ok(eno)) => cr = eno,
+                        Some(Err(f)) => fail!(f),
                         None => {}
                     }
                 }

@@ -33,6 +33,9 @@ pub struct AgentClient {
     /// The PLC's model: the helper's checks are the model's (`plcsh agent il --model`), and
     /// a refusal's cause names one of them.
     pub model: &'static crate::k2::catalog::Model,
+    /// The result and cause of the last command, when the helper refused it (the caller may
+    /// read registers back to word the refusal as in process).
+    pub last_refusal: Option<(ResultCode, u8)>,
 }
 
 /// A token that differs between sessions and processes (never 0).
@@ -71,6 +74,7 @@ impl AgentClient {
             poll: Duration::from_millis(1),
             commands: 0,
             model: crate::k2::catalog::lookup(crate::k2::catalog::DEFAULT_MODEL).expect("the default model"),
+            last_refusal: None,
         }
     }
 
@@ -144,6 +148,7 @@ impl AgentClient {
         let what = describe(cmd);
         let start = Instant::now();
         let mut races = 0;
+        self.last_refusal = None;
         loop {
             // 1. Wait until the mailbox is idle (no other client's request pending).
             let mut s = self.status(regs)?;
@@ -174,6 +179,7 @@ impl AgentClient {
                         ResultCode::Ok if matches!(cmd, Command::SmRead { .. } | Command::ReadRtc) => break, // reply overwritten: read again
                         ResultCode::Ok => Ok(Vec::new()),
                         rc => {
+                            self.last_refusal = Some((rc, ack.cause));
                             let (why, hint) = p::reason(self.model, cmd, rc, ack.cause);
                             let e = Error::new(
                                 ErrorKind::Refused,

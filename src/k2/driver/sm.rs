@@ -13,11 +13,12 @@
 use super::{Failure, K2Wire};
 use crate::core::{Error, ErrorKind, Operand, Result, Value};
 use crate::k2::agent::client::{AgentClient, Registers};
-use crate::k2::agent::protocol::{self, Command, DATA_MAX};
+use crate::k2::agent::protocol::{self, Command, ResultCode, StatusCause, DATA_MAX};
 use crate::k2::instr::RtcTime;
 use crate::k2::memory::Memory;
 use crate::k2::modbus_map;
 use crate::k2::operand::{Area, K2Operand, Width};
+use crate::k2::sm_map::PTO_REGS;
 use std::time::Duration;
 use tokio_modbus::Request;
 
@@ -192,7 +193,26 @@ impl K2Wire {
             while !rest.is_empty() {
                 let n = ((protocol::block_of(at).1.max(at + 1) - at) as usize).min(rest.len());
                 let what = format!("writing SMB{at}…SMB{}", at as usize + n - 1);
-                self.agent_run(&Command::SmWrite { start: at as u16, data: rest[..n].to_vec() }, &what)?;
+                if let Err(e) = self.agent_run(&Command::SmWrite { start: at as u16, data: rest[..n].to_vec() }, &what)
+                {
+                    // A read-only register, in the words the simulator uses for the operand written.
+                    let read_only =
+                        self.agent.as_ref().and_then(|c| c.last_refusal).is_some_and(|r| r.0 == ResultCode::ReadOnly);
+                    let model = self.space.model;
+                    let span = (at, at + n as u32);
+                    let named = items.iter().map(|(o, _)| K2Operand::from_key(o.key)).find_map(|k| {
+                        let hit = k.byte < span.1 && span.0 < k.byte + k.width.bytes();
+                        if hit {
+                            crate::k2::sim::sm_read_only(model, &k)
+                        } else {
+                            None
+                        }
+                    });
+                    return Err(match named {
+                        Some(w) if read_only => w,
+                        _ => e,
+                    });
+                }
                 at += n as u32;
                 rest = &rest[n..];
             }
@@ -201,7 +221,73 @@ impl K2Wire {
     }
 
     pub(super) fn instruction(&mut self, cmd: Command, what: &str) -> Result<String> {
-        self.agent_run(&cmd, what).map(|_| format!("{what}: done by the helper"))
+        match self.agent_run(&cmd, what) {
+            Ok(_) => Ok(format!("{what}: done by the helper")),
+            Err(e) => match self.agent.as_ref().and_then(|c| c.last_refusal) {
+                Some((rc, cause)) => Err(self.in_process_words(&cmd, rc, cause).unwrap_or(e)),
+                None => Err(e),
+            },
+        }
+    }
+
+    /// A refusal the helper reported, in the words the simulator uses in process for the
+    /// same refusal, where the helper's result, its cause and registers read back after it
+    /// give them: a channel or mode the model lacks (the catalogue's words); after PLS the
+    /// control byte and the cycle and count PLS loaded (the update bits set: a value PLS
+    /// kept from before is in no register) for status bit 4, and every channel's control
+    /// byte for "did nothing". `None` leaves the helper's own words.
+    fn in_process_words(&mut self, cmd: &Command, rc: ResultCode, cause: u8) -> Option<Error> {
+        use crate::k2::sim::{self as sim, pto};
+        let model = self.space.model;
+        let byte = |at: u32| K2Operand::new(Area::SM, Width::Byte, at).to_core();
+        match (rc, cmd) {
+            (ResultCode::BadChannel, Command::Pls(n) | Command::Pstop(n)) => Some(sim::no_pulse_channel(model, *n)),
+            (ResultCode::BadChannel, Command::Hdef { hsc: n, .. } | Command::Hsc(n)) => {
+                Some(sim::no_counter(model, *n))
+            }
+            (ResultCode::BadMode | ResultCode::InstructionFailed, Command::Hdef { hsc, mode })
+                if crate::k2::sm_map::hsc_mode(*hsc, *mode).is_none() =>
+            {
+                Some(sim::hsc::no_mode(*hsc, *mode))
+            }
+            (ResultCode::StatusBit, Command::Pls(n)) if cause == StatusCause::PtoInvalid as u8 => {
+                let r = PTO_REGS.iter().find(|r| r.channel == *n)?;
+                let spec = model.pto(*n)?;
+                let ops = [
+                    byte(r.control),
+                    K2Operand::new(Area::SM, Width::Word, r.cycle).to_core(),
+                    K2Operand::new(Area::SM, Width::DWord, r.count).to_core(),
+                ];
+                self.read_sm(&ops).ok()?;
+                let m = &self.sm_shadow;
+                let c = m.sm_byte(r.control);
+                let pwm = c & pto::ctl::PWM != 0;
+                let loaded = c & pto::ctl::UPDATE_CYCLE != 0 && (pwm || c & pto::ctl::UPDATE_COUNT != 0);
+                if !loaded || (!pwm && c & pto::ctl::MULTI != 0) {
+                    return None;
+                }
+                pto::invalid(r, spec, c, m.sm_word(r.cycle), m.sm_dword(r.count)).map(|w| w.error(r))
+            }
+            (ResultCode::StatusBit, Command::Pls(n)) if cause == StatusCause::NothingToDo as u8 => {
+                let r = PTO_REGS.iter().find(|r| r.channel == *n)?;
+                let spec = model.pto(*n)?;
+                for p in model.pto {
+                    self.read_sm(&[byte(PTO_REGS[p.channel as usize].control)]).ok()?;
+                }
+                let m = &self.sm_shadow;
+                let others: Vec<_> = model
+                    .pto
+                    .iter()
+                    .filter(|p| p.channel != *n)
+                    .map(|p| {
+                        let o = PTO_REGS[p.channel as usize];
+                        (o, *p, m.sm_byte(o.control))
+                    })
+                    .collect();
+                Some(pto::did_nothing(r, spec, m.sm_byte(r.control)).hint(sim::did_nothing_hint(r, &others)))
+            }
+            _ => None,
+        }
     }
 
     pub(super) fn rtc_read(&mut self) -> Result<RtcTime> {

@@ -314,20 +314,10 @@ impl K2Sim {
 
     /// Refuses writes the PLC would not accept.
     fn check_writable(&self, op: &K2Operand) -> Result<()> {
-        if op.area == Area::SM && op.byte == 0 {
-            let (msg, hint) = crate::k2::sm_map::smb0_read_only(&op.canonical());
-            return Err(Error::new(ErrorKind::Refused, msg).operand(op.canonical()).hint(hint));
+        if let Some(e) = sm_read_only(self.model(), op) {
+            return Err(e);
         }
         let (lo, hi) = (op.byte, op.byte + op.width.bytes());
-        if op.area == Area::SM {
-            for p in &self.pto {
-                let r = p.regs;
-                if lo < r.pos_cv + 4 && r.pos_cv < hi {
-                    let (msg, hint) = crate::k2::sm_map::pos_cv_read_only(&r, &op.canonical());
-                    return Err(Error::new(ErrorKind::Refused, msg).operand(op.canonical()).hint(hint));
-                }
-            }
-        }
         if op.area == Area::I {
             for s in self.inputs.sources() {
                 for p in s.pins() {
@@ -386,54 +376,13 @@ impl K2Sim {
 
     fn pto_index(&self, ch: u8) -> Result<usize> {
         let m = self.model();
-        if m.relay {
-            return Err(Error::unsupported(format!(
-                "{} has relay outputs: no PTO/PWM pulse outputs (manual §2.2.6)",
-                m.name
-            ))
-            .hint("pulse outputs need a transistor-output model, e.g. K205-16DT"));
-        }
-        self.pto.iter().position(|p| p.regs.channel == ch).ok_or_else(|| {
-            let list: Vec<String> =
-                self.pto.iter().map(|p| format!("{} ({})", p.regs.channel, p.spec.output)).collect();
-            let extra = if ch == 3 { " (Q0.5 is a pulse output only on K209M-56DT)" } else { "" };
-            Error::unsupported(format!("{} has no pulse channel {ch}{extra}", m.name)).hint(format!(
-                "pulse channels on {}: {}",
-                m.name,
-                list.join(", ")
-            ))
-        })
+        check_pulse_channel(m)?;
+        self.pto.iter().position(|p| p.regs.channel == ch).ok_or_else(|| no_pulse_channel(m, ch))
     }
 
     fn hsc_index(&self, ch: u8) -> Result<usize> {
         let m = self.model();
-        self.hsc.iter().position(|h| h.regs.channel == ch).ok_or_else(|| {
-            let list: Vec<String> = self.hsc.iter().map(|h| format!("HSC{}", h.regs.channel)).collect();
-            Error::unsupported(format!("{} has no high-speed counter HSC{ch}", m.name)).hint(format!(
-                "counters on {}: {}",
-                m.name,
-                list.join(", ")
-            ))
-        })
-    }
-
-    /// Other channels whose control byte has the enable bit set (for "did you mean").
-    fn other_enabled(&self, ch: u8) -> Vec<String> {
-        self.pto
-            .iter()
-            .filter(|p| p.regs.channel != ch)
-            .filter(|p| self.mem.sm_byte(p.regs.control) & pto::ctl::ENABLE != 0)
-            .map(|p| {
-                format!(
-                    "SMB{} = 16#{:02X} is set: that is PTO{}'s control byte ({}) — did you mean PLS {}?",
-                    p.regs.control,
-                    self.mem.sm_byte(p.regs.control),
-                    p.regs.channel,
-                    p.spec.output,
-                    p.regs.channel
-                )
-            })
-            .collect()
+        self.hsc.iter().position(|h| h.regs.channel == ch).ok_or_else(|| no_counter(m, ch))
     }
 
     // ---- simulation controls ----------------------------------------------------------
@@ -811,6 +760,85 @@ impl Device for K2Sim {
     }
 }
 
+/// A write to an SM register the CPU owns: SMB0 (system bits) or a position channel's current
+/// value SMD212 … (§3.4.3.1). In process and through the helper (`k2::driver`) alike.
+pub fn sm_read_only(m: &Model, op: &K2Operand) -> Option<Error> {
+    if op.area != Area::SM {
+        return None;
+    }
+    if op.byte == 0 {
+        let (msg, hint) = crate::k2::sm_map::smb0_read_only(&op.canonical());
+        return Some(Error::new(ErrorKind::Refused, msg).operand(op.canonical()).hint(hint));
+    }
+    let (lo, hi) = (op.byte, op.byte + op.width.bytes());
+    m.pto.iter().map(|p| PTO_REGS[p.channel as usize]).find(|r| lo < r.pos_cv + 4 && r.pos_cv < hi).map(|r| {
+        let (msg, hint) = crate::k2::sm_map::pos_cv_read_only(&r, &op.canonical());
+        Error::new(ErrorKind::Refused, msg).operand(op.canonical()).hint(hint)
+    })
+}
+
+/// Refuses pulse channel `ch` on a model with relay outputs (no pulse outputs, §2.2.6).
+/// In process and through the helper (`k2::driver`) alike.
+pub fn check_pulse_channel(m: &Model) -> Result<()> {
+    if m.relay {
+        return Err(Error::unsupported(format!(
+            "{} has relay outputs: no PTO/PWM pulse outputs (manual §2.2.6)",
+            m.name
+        ))
+        .hint("pulse outputs need a transistor-output model, e.g. K205-16DT"));
+    }
+    Ok(())
+}
+
+/// Pulse channel `ch` is not among the model's (§3.4 tables).
+pub fn no_pulse_channel(m: &Model, ch: u8) -> Error {
+    if let Err(e) = check_pulse_channel(m) {
+        return e;
+    }
+    let list: Vec<String> = m.pto.iter().map(|p| format!("{} ({})", p.channel, p.output)).collect();
+    let extra = if ch == 3 { " (Q0.5 is a pulse output only on K209M-56DT)" } else { "" };
+    Error::unsupported(format!("{} has no pulse channel {ch}{extra}", m.name)).hint(format!(
+        "pulse channels on {}: {}",
+        m.name,
+        list.join(", ")
+    ))
+}
+
+/// High-speed counter `ch` is not among the model's (§3.3.1 tables).
+pub fn no_counter(m: &Model, ch: u8) -> Error {
+    let list: Vec<String> = m.hsc.iter().map(|h| format!("HSC{}", h.channel)).collect();
+    Error::unsupported(format!("{} has no high-speed counter HSC{ch}", m.name)).hint(format!(
+        "counters on {}: {}",
+        m.name,
+        list.join(", ")
+    ))
+}
+
+/// What to try after PLS on channel `r` did nothing ([`pto::did_nothing`]): another channel
+/// whose control byte (`others`: registers, outputs, control byte) has the enable bit set is
+/// likely the one meant; otherwise set this one's. From the control bytes alone, so the
+/// helper path, which reads them back, gives the same hint.
+pub fn did_nothing_hint(
+    r: &crate::k2::sm_map::PtoRegs,
+    others: &[(crate::k2::sm_map::PtoRegs, crate::k2::catalog::PtoSpec, u8)],
+) -> String {
+    let enabled: Vec<String> = others
+        .iter()
+        .filter(|(_, _, c)| c & pto::ctl::ENABLE != 0)
+        .map(|(o, spec, c)| {
+            format!(
+                "SMB{} = 16#{:02X} is set: that is PTO{}'s control byte ({}) — did you mean PLS {}?",
+                o.control, c, o.channel, spec.output, o.channel
+            )
+        })
+        .collect();
+    if enabled.is_empty() {
+        format!("set the control byte first, e.g. set SMB{}=16#85, SMW{}=500, SMD{}=1000", r.control, r.cycle, r.count)
+    } else {
+        enabled.join("; ")
+    }
+}
+
 impl crate::k2::K2Ops for K2Sim {
     fn model(&self) -> &'static Model {
         self.space.model
@@ -824,16 +852,13 @@ impl crate::k2::K2Ops for K2Sim {
         self.wired_outputs();
         match r {
             Err(e) if e.kind == ErrorKind::State => {
-                let others = self.other_enabled(channel);
-                let hint = if others.is_empty() {
-                    format!(
-                        "set the control byte first, e.g. set SMB{}=16#85, SMW{}=500, SMD{}=1000",
-                        self.pto[i].regs.control, self.pto[i].regs.cycle, self.pto[i].regs.count
-                    )
-                } else {
-                    others.join("; ")
-                };
-                Err(e.hint(hint))
+                let others: Vec<_> = self
+                    .pto
+                    .iter()
+                    .filter(|p| p.regs.channel != channel)
+                    .map(|p| (p.regs, p.spec, self.mem.sm_byte(p.regs.control)))
+                    .collect();
+                Err(e.hint(did_nothing_hint(&self.pto[i].regs, &others)))
             }
             r => r,
         }

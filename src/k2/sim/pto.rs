@@ -281,6 +281,88 @@ fn q_pin(text: &str) -> (u32, u8) {
     (b.parse().unwrap_or(0), bit.parse().unwrap_or(0))
 }
 
+/// Why PLS refused: what, the operand to look at, and what to try.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Invalid {
+    pub msg: String,
+    pub operand: String,
+    pub hint: String,
+}
+
+impl Invalid {
+    /// The refusal as the user reads it, in process and through the helper alike.
+    pub fn error(self, r: &PtoRegs) -> Error {
+        Error::new(ErrorKind::Refused, format!("PLS {}: {}; status bit SM{}.4 set", r.channel, self.msg, r.status))
+            .operand(self.operand)
+            .hint(self.hint)
+    }
+}
+
+/// The first rule a single-segment PTO or a PWM breaks with control byte `c` and the cycle
+/// and count PLS uses (§3.4.2.2: «Время цикла и количество импульсов должны быть больше 1»;
+/// §3.4: the output's frequency limit), or `None`. A multi-segment PTO's profile table is
+/// checked apart. A function of values the PLC shows in its SM registers only, so a refusal
+/// the helper reads back (status bit 4, then the registers: `k2::driver`) is worded as in
+/// process.
+pub fn invalid(r: &PtoRegs, spec: &PtoSpec, c: u8, cycle: u16, count: u32) -> Option<Invalid> {
+    let base_ns: u64 = if c & ctl::BASE_MS != 0 { 1_000_000 } else { 1_000 };
+    let unit = if c & ctl::BASE_MS != 0 { "ms" } else { "µs" };
+    if c & ctl::PWM != 0 {
+        if cycle < 2 {
+            return Some(Invalid {
+                msg: format!("PWM cycle time {cycle} is below 2"),
+                operand: format!("SMW{}", r.cycle),
+                hint: format!("set SMW{} (2…65535) and the update bit SM{}.0, then PLS again", r.cycle, r.control),
+            });
+        }
+    } else if cycle < 2 || count < 2 {
+        let (what, operand, reg) = if cycle < 2 {
+            (format!("cycle time {cycle}"), format!("SMW{}", r.cycle), format!("SMW{} with SM{}.0", r.cycle, r.control))
+        } else {
+            (
+                format!("pulse count {count}"),
+                format!("SMD{}", r.count),
+                format!("SMD{} with SM{}.2", r.count, r.control),
+            )
+        };
+        return Some(Invalid {
+            msg: format!("{what} is below 2 ({})", crate::k2::sm_map::PTO_INVALID_RULE),
+            operand,
+            hint: format!("load {reg} set (e.g. SMB{}=16#85), then PLS again", r.control),
+        });
+    }
+    too_fast(r, spec, cycle as u64 * base_ns, format!("cycle {cycle} {unit}"))
+}
+
+/// PLS on a channel whose control byte `c` has the enable bit clear while it is idle: nothing
+/// to stop, nothing started (§3.4.2.2, bit 7). The helper reads the same byte back.
+pub fn did_nothing(r: &PtoRegs, spec: &PtoSpec, c: u8) -> Error {
+    Error::state(format!(
+        "PLS {} did nothing: the control byte SMB{} = 16#{c:02X} has the enable bit SM{}.7 clear and PTO{} ({}) is idle",
+        r.channel, r.control, r.control, r.channel, spec.output
+    ))
+    .operand(format!("SMB{}", r.control))
+}
+
+/// A cycle of `cycle_ns` above the output's frequency limit (manual §3.4), or `None`.
+fn too_fast(r: &PtoRegs, spec: &PtoSpec, cycle_ns: u64, what: String) -> Option<Invalid> {
+    let max = spec.max_hz as u64;
+    if cycle_ns * max < 1_000_000_000 {
+        let min_us = 1_000_000u64.div_ceil(max);
+        return Some(Invalid {
+            msg: format!(
+                "{what} is {} Hz, above {}'s limit of {} Hz on this model (manual §3.4)",
+                1_000_000_000 / cycle_ns,
+                spec.output,
+                max
+            ),
+            operand: format!("SMW{}", r.cycle),
+            hint: format!("the shortest cycle on {} is {min_us} µs", spec.output),
+        });
+    }
+    None
+}
+
 impl PtoChannel {
     pub fn new(regs: PtoRegs, spec: PtoSpec, mem: &mut Memory) -> PtoChannel {
         mem.set_sm_bit(regs.status, st::PTO_IDLE, true);
@@ -474,34 +556,13 @@ impl PtoChannel {
     }
 
     /// Sets the invalid bit and builds the refusal.
-    fn refuse(&self, mem: &mut Memory, msg: String, operand: String, hint: String) -> Error {
+    fn refuse(&self, mem: &mut Memory, why: Invalid) -> Error {
         mem.set_sm_bit(self.regs.status, st::INVALID, true);
-        Error::new(
-            ErrorKind::Refused,
-            format!("PLS {}: {msg}; status bit SM{}.4 set", self.regs.channel, self.regs.status),
-        )
-        .operand(operand)
-        .hint(hint)
+        why.error(&self.regs)
     }
 
-    /// Checks a cycle against the channel's frequency limit.
-    fn check_freq(&self, mem: &mut Memory, cycle_ns: u64, what: String) -> Result<()> {
-        let max = self.spec.max_hz as u64;
-        if cycle_ns * max < 1_000_000_000 {
-            let min_us = 1_000_000u64.div_ceil(max);
-            return Err(self.refuse(
-                mem,
-                format!(
-                    "{what} is {} Hz, above {}'s limit of {} Hz on this model (manual §3.4)",
-                    1_000_000_000 / cycle_ns,
-                    self.spec.output,
-                    max
-                ),
-                format!("SMW{}", self.regs.cycle),
-                format!("the shortest cycle on {} is {min_us} µs", self.spec.output),
-            ));
-        }
-        Ok(())
+    fn refuse_parts(&self, mem: &mut Memory, msg: String, operand: String, hint: String) -> Error {
+        self.refuse(mem, Invalid { msg, operand, hint })
     }
 
     /// Executes `PLS` for this channel at `now` (the caller advanced to `now` first).
@@ -512,14 +573,7 @@ impl PtoChannel {
         if c & ctl::ENABLE == 0 {
             let what = self.stop(mem);
             if what.is_empty() {
-                return Err(Error::state(format!(
-                    "PLS {} did nothing: the control byte SMB{} = 16#{c:02X} has the enable bit SM{}.7 clear and {} is idle",
-                    r.channel,
-                    r.control,
-                    r.control,
-                    self.name()
-                ))
-                .operand(format!("SMB{}", r.control)));
+                return Err(did_nothing(&r, &self.spec, c));
             }
             return Ok(format!("{} stopped ({what}; enable bit SM{}.7 is 0)", self.name(), r.control));
         }
@@ -534,18 +588,11 @@ impl PtoChannel {
         if c & ctl::UPDATE_COUNT != 0 {
             self.count = mem.sm_dword(r.count);
         }
-        let cyc = format!("SMW{}", r.cycle);
         if c & ctl::PWM != 0 {
-            if self.cycle < 2 {
-                return Err(self.refuse(
-                    mem,
-                    format!("PWM cycle time {} is below 2", self.cycle),
-                    cyc,
-                    format!("set SMW{} (2…65535) and the update bit SM{}.0, then PLS again", r.cycle, r.control),
-                ));
+            if let Some(why) = invalid(&r, &self.spec, c, self.cycle, self.count) {
+                return Err(self.refuse(mem, why));
             }
             let cycle_ns = self.cycle as u64 * base_ns;
-            self.check_freq(mem, cycle_ns, format!("cycle {} {unit}", self.cycle))?;
             let width_ns = (self.width.min(self.cycle)) as u64 * base_ns;
             let new = PwmRun { start: now, cycle_ns, width_ns };
             let sync = c & ctl::PWM_SYNC != 0;
@@ -572,26 +619,10 @@ impl PtoChannel {
         let segs: Vec<(u64, u64)> = if c & ctl::MULTI != 0 {
             self.profile_segments(mem, base_ns, unit)?
         } else {
-            if self.cycle < 2 || self.count < 2 {
-                let (what, op, reg) = if self.cycle < 2 {
-                    (format!("cycle time {}", self.cycle), cyc, format!("SMW{} with SM{}.0", r.cycle, r.control))
-                } else {
-                    (
-                        format!("pulse count {}", self.count),
-                        format!("SMD{}", r.count),
-                        format!("SMD{} with SM{}.2", r.count, r.control),
-                    )
-                };
-                return Err(self.refuse(
-                    mem,
-                    format!("{what} is below 2 ({})", crate::k2::sm_map::PTO_INVALID_RULE),
-                    op,
-                    format!("load {reg} set (e.g. SMB{}=16#85), then PLS again", r.control),
-                ));
+            if let Some(why) = invalid(&r, &self.spec, c, self.cycle, self.count) {
+                return Err(self.refuse(mem, why));
             }
-            let cycle_ns = self.cycle as u64 * base_ns;
-            self.check_freq(mem, cycle_ns, format!("cycle {} {unit}", self.cycle))?;
-            vec![(cycle_ns, self.count as u64)]
+            vec![(self.cycle as u64 * base_ns, self.count as u64)]
         };
         let train = PtoRun::new(now, &segs);
         let msg = format!(
@@ -618,7 +649,7 @@ impl PtoChannel {
         let tab = format!("SMW{}", r.profile);
         let v_len = mem.v.len() as u32;
         if start.is_multiple_of(2) {
-            return Err(self.refuse(
+            return Err(self.refuse_parts(
                 mem,
                 format!("the profile table start SMW{} = {start} is even", r.profile),
                 tab,
@@ -626,7 +657,7 @@ impl PtoChannel {
             ));
         }
         if start >= v_len {
-            return Err(self.refuse(
+            return Err(self.refuse_parts(
                 mem,
                 format!("the profile table start VB{start} is past the V area (VB{})", v_len - 1),
                 tab,
@@ -635,7 +666,7 @@ impl PtoChannel {
         }
         let n = mem.v[start as usize];
         if n == 0 || n > MAX_SEGMENTS {
-            return Err(self.refuse(
+            return Err(self.refuse_parts(
                 mem,
                 format!("the profile table at VB{start} holds {n} segments (1–{MAX_SEGMENTS} allowed)"),
                 format!("VB{start}"),
@@ -644,7 +675,7 @@ impl PtoChannel {
         }
         let end = start + 1 + 8 * n as u32;
         if end > v_len {
-            return Err(self.refuse(
+            return Err(self.refuse_parts(
                 mem,
                 format!("the profile table VB{start}…VB{} runs past the V area", end - 1),
                 format!("VB{start}"),
@@ -657,7 +688,7 @@ impl PtoChannel {
             let cycle = u16::from_be_bytes([mem.v[off], mem.v[off + 1]]);
             let count = u32::from_be_bytes([mem.v[off + 4], mem.v[off + 5], mem.v[off + 6], mem.v[off + 7]]);
             if cycle < 2 {
-                return Err(self.refuse(
+                return Err(self.refuse_parts(
                     mem,
                     format!("segment {} cycle time VW{} = {cycle} is below 2", k + 1, off),
                     format!("VW{off}"),
@@ -665,7 +696,7 @@ impl PtoChannel {
                 ));
             }
             if count < 1 {
-                return Err(self.refuse(
+                return Err(self.refuse_parts(
                     mem,
                     format!("segment {} pulse count VD{} is 0", k + 1, off + 4),
                     format!("VD{}", off + 4),
@@ -673,7 +704,9 @@ impl PtoChannel {
                 ));
             }
             let cycle_ns = cycle as u64 * base_ns;
-            self.check_freq(mem, cycle_ns, format!("segment {} cycle {cycle} {unit}", k + 1))?;
+            if let Some(why) = too_fast(&r, &self.spec, cycle_ns, format!("segment {} cycle {cycle} {unit}", k + 1)) {
+                return Err(self.refuse(mem, why));
+            }
             segs.push((cycle_ns, count as u64));
         }
         Ok(segs)

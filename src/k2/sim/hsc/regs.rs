@@ -87,14 +87,20 @@ pub fn read_table(v: &[u8], start: u32, relative: bool, cyclic: bool) -> std::re
     Ok(PvTable { pvs, relative, cyclic: cyclic && relative })
 }
 
+/// HDEF with a mode counter `ch` does not have (§3.3.1). In process and through the helper
+/// (`k2::driver`) alike.
+pub fn no_mode(ch: u8, mode: u8) -> Error {
+    let modes: Vec<String> = sm_map::hsc_modes_of(ch).iter().map(|m| m.to_string()).collect();
+    Error::new(ErrorKind::Value, format!("HSC{ch} has no mode {mode} (manual §3.3.1)"))
+        .hint(format!("HSC{ch}'s modes: {}", modes.join(", ")))
+}
+
 impl HscChannel {
     /// `HDEF n, mode`.
     pub fn hdef(&mut self, mode: u8) -> Result<String> {
         let ch = self.regs.channel;
         let Some(m) = sm_map::hsc_mode(ch, mode) else {
-            let modes: Vec<String> = sm_map::hsc_modes_of(ch).iter().map(|m| m.to_string()).collect();
-            return Err(Error::new(ErrorKind::Value, format!("HSC{ch} has no mode {mode} (manual §3.3.1)"))
-                .hint(format!("HSC{ch}'s modes: {}", modes.join(", "))));
+            return Err(no_mode(ch, mode));
         };
         self.mode = Some(m);
         self.running = false;

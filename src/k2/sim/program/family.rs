@@ -320,6 +320,18 @@ pub struct K2Machine<'a> {
     pub raised: Vec<(Duration, crate::k2::instr::EventKind)>,
 }
 
+/// Reads a raw pattern from a byte area (S7 byte order); 0 outside it.
+#[inline(always)]
+fn take(b: &[u8], w: Width, i: usize) -> u32 {
+    match w {
+        Width::Bit(k) => b.get(i).map_or(0, |v| (v >> k & 1) as u32),
+        Width::Byte => b.get(i).map_or(0, |v| *v as u32),
+        Width::Word => b.get(i..i + 2).map_or(0, |w| u16::from_be_bytes([w[0], w[1]]) as u32),
+        Width::DWord => b.get(i..i + 4).map_or(0, |w| u32::from_be_bytes([w[0], w[1], w[2], w[3]])),
+        Width::Element => 0,
+    }
+}
+
 /// Writes a raw pattern into a byte area (S7 byte order), ignoring out-of-range locations.
 #[inline(always)]
 fn put(b: &mut [u8], w: Width, i: usize, v: u32) {
@@ -396,25 +408,25 @@ impl K2Machine<'_> {
 }
 
 impl Machine for K2Machine<'_> {
+    /// One match on the area (one dispatch per read; the byte areas' width match is
+    /// inlined into each arm).
     #[inline(always)]
     fn get(&self, l: Loc) -> u32 {
         let i = l.index as usize;
         let m = &self.sim.mem;
         match l.area {
+            0 => take(&m.i, l.width, i),
+            1 => take(&m.q, l.width, i),
+            2 => take(&m.m, l.width, i),
+            3 => take(&m.v, l.width, i),
+            4 => take(&m.sm, l.width, i),
+            5 => take(&m.ai, l.width, i),
+            6 => take(&m.aq, l.width, i),
             7 => m.t.get(i).map_or(0, |v| *v as u16 as u32),
             8 => m.c.get(i).map_or(0, |v| *v as u16 as u32),
             AREA_TQ => m.tq.get(i).map_or(0, |v| *v as u32),
             AREA_CQ => m.cq.get(i).map_or(0, |v| *v as u32),
-            a => {
-                let b = self.area(a);
-                match l.width {
-                    Width::Bit(k) => b.get(i).map_or(0, |v| (v >> k & 1) as u32),
-                    Width::Byte => b.get(i).map_or(0, |v| *v as u32),
-                    Width::Word => b.get(i..i + 2).map_or(0, |w| u16::from_be_bytes([w[0], w[1]]) as u32),
-                    Width::DWord => b.get(i..i + 4).map_or(0, |w| u32::from_be_bytes([w[0], w[1], w[2], w[3]])),
-                    Width::Element => 0,
-                }
-            }
+            _ => 0,
         }
     }
 
