@@ -39,6 +39,7 @@ const SERVO_TAGS: &str = "name,address,comment\nAxis_Pos,position_actual,where t
 /// result shows). The line runs on a session with a simulated K2 `plc` (current), the drive
 /// `servo` and a UMPK `trainer`.
 const ROWS: &[(&str, &str, &str)] = &[
+    ("data save FILE OPERAND…", "data save named.toml Tank2_Level Conveyor_Run", "\"operand\":\"VD200/REAL\""),
     ("get OPERAND…", "get Tank2_Level Conveyor_Run Мотор_1_Пуск 电机速度 Speeds[2]", "\"name\":\"Tank2_Level\""),
     ("set OPERAND=VALUE[, OPERAND=VALUE…]", "set Tank2_Level=12.5, Conveyor_Run=1", "\"name\":\"Conveyor_Run\""),
     ("read RANGE…", "read Speeds[4] Out_Byte", "\"name\":\"Speeds\""),

@@ -35,6 +35,7 @@ const OPTIONS: &[(&str, Text)] = &[
     ("jobs", || msg!("cli-opt-jobs")),
     ("lang", || msg!("cli-opt-lang")),
     ("device_timeout", || msg!("cli-opt-device-timeout")),
+    ("tags", || msg!("cli-opt-tags")),
 ];
 
 /// The subcommands, by name: what each does.
@@ -53,6 +54,7 @@ const SUBCOMMANDS: &[(&str, Text)] = &[
     ("replay", || msg!("cli-sub-replay")),
     ("lab", || msg!("cli-sub-lab")),
     ("publish", || msg!("cli-sub-publish")),
+    ("tags", || msg!("cli-sub-tags")),
 ];
 
 /// Texts of the subcommands' own subcommands and options: (subcommand, its subcommand, the

@@ -150,9 +150,9 @@ pub fn summary(lab: &Lab, reports: &[Report]) -> (String, Outcome) {
     let twice: Vec<(&str, Vec<&str>)> = names.into_iter().filter(|(_, f)| f.len() > 1).collect();
     let mut head = crate::msg!("lab-grade-head", lab = cell(&lab.title), count = reports.len(), passed = passed).text;
     for (name, files) in &twice {
-        let files = files.iter().map(|f| cell(f)).collect::<Vec<_>>().join(", ");
+        let listed = files.iter().map(|f| cell(f)).collect::<Vec<_>>().join(", ");
         head.push('\n');
-        head.push_str(&crate::msg!("lab-duplicate-student", count = files.len(), student = cell(name), files = files));
+        head.push_str(&crate::msg!("lab-duplicate-student", count = files.len(), student = cell(name), files = listed));
     }
     let duplicates: Vec<serde_json::Value> =
         twice.iter().map(|(n, f)| serde_json::json!({"student": n, "files": f})).collect();

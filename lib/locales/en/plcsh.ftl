@@ -266,6 +266,7 @@ cli-opt-fleet = Run -c's commands (or `run`'s script) on every device of this fl
 cli-opt-jobs = With --fleet: how many devices are worked on at once
 cli-opt-lang = The language of messages: en, ru, zh-CN (default: PLCSH_LANG, else the system's; English when neither names one of these)
 cli-opt-device-timeout = With --fleet: a device still busy after this long is reported as a timeout (`30s`, `2m`; 0 for no limit)
+cli-opt-tags = A tag file (CSV, TOML or IEC VAR_GLOBAL) whose names work wherever an operand does: FILE for the current device, DEVICE=FILE for another (docs/tags.md). Repeatable
 cli-sub-models = List the K2 model catalogue; `models MODEL` shows one in full (areas, counters, manual notes)
 cli-sub-devices = List open devices and the device profiles (devices.toml), with problems in that file
 cli-sub-ports = List the serial ports present, with USB adapter (VID:PID, product, serial number)
@@ -283,6 +284,7 @@ cli-sub-record = Recordings made with --record: `record show FILE` prints the de
 cli-sub-replay = Replay a recording's requests against a simulator and report every reply that differs
 cli-sub-lab = Teaching labs: `lab new NAME`, `lab check LAB`, `lab grade LAB SUBMISSIONS…` (sandboxed, in parallel)
 cli-sub-publish = Poll operands on a device or a fleet and publish them to an MQTT broker (docs/fleets.md)
+cli-sub-tags = Tag tables (docs/tags.md): `tags FILE` lists the names, `tags check FILE` checks them, `tags export FILE --to csv|iec` writes them in another form
 cli-lab-new = Write a working example lab (K2 + drive with wiring, IL starter, Lua grader) into NAME
 cli-lab-new-name = The new lab's folder
 cli-lab-check = Check a lab: its lab.toml, files and start state, and the grader on the reference solution

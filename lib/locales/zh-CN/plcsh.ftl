@@ -256,6 +256,7 @@ cli-opt-fleet = 在配置文件中该设备组的每台设备上同时执行 -c 
 cli-opt-jobs = 配合 --fleet：同时处理多少台设备
 cli-opt-lang = 消息的语言：en、ru、zh-CN（默认：PLCSH_LANG，否则为系统语言；两者都不是其中之一时使用英语）
 cli-opt-device-timeout = 配合 --fleet：设备忙碌超过此时长即报告为超时（`30s`、`2m`；0 表示不限）
+cli-opt-tags = 标签文件（CSV、TOML 或 IEC VAR_GLOBAL），其中的名称可用在任何能用操作数的地方：FILE 用于当前设备，DEVICE=FILE 用于其他设备（docs/tags.md）。可重复
 cli-sub-models = 列出 K2 型号目录；`models MODEL` 显示单个型号的完整信息（存储区、计数器、手册说明）
 cli-sub-devices = 列出已打开的设备和设备配置文件（devices.toml），以及该文件中的问题
 cli-sub-ports = 列出现有的串口及其 USB 适配器（VID:PID、产品、序列号）
@@ -273,6 +274,7 @@ cli-sub-record = 用 --record 制作的记录：`record show FILE` 输出解码�
 cli-sub-replay = 在仿真器上重放记录中的请求，并报告每个不同的回复
 cli-sub-lab = 教学实验：`lab new NAME`、`lab check LAB`、`lab grade LAB SUBMISSIONS…`（在沙箱中并行）
 cli-sub-publish = 轮询设备或设备组的操作数并发布到 MQTT 代理（docs/fleets.md）
+cli-sub-tags = 标签表（docs/tags.md）：`tags FILE` 列出名称，`tags check FILE` 检查名称，`tags export FILE --to csv|iec` 以另一种形式写出
 cli-lab-new = 将一个可运行的示例实验（K2 和驱动器及接线、IL 初始文件、Lua 评分程序）写入 NAME
 cli-lab-new-name = 新实验的文件夹
 cli-lab-check = 检查实验：其 lab.toml、文件和初始状态，以及评分程序在参考答案上的结果
