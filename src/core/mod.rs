@@ -2,6 +2,7 @@
 //! and the virtual clock. Nothing here knows a PLC model or a wire protocol.
 
 pub mod budget;
+pub mod civil;
 pub mod clock;
 pub mod device;
 pub mod durable;

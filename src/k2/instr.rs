@@ -14,6 +14,7 @@
 //!   would make a user ATCH the wrong event, so these events carry only a name
 //!   (`pto1-done`, `hsc0-cv=pv`, `hsc1-reset`, `hsc1-dir`, `eeprom-wear`) and `wait event` accepts names.
 
+use crate::core::civil::civil_from_days;
 use serde::Serialize;
 use std::fmt;
 use std::time::Duration;
@@ -290,19 +291,6 @@ fn days_from_civil(y: i64, m: u32, d: u32) -> i64 {
     let doy = (153 * mp + 2) / 5 + d as i64 - 1;
     let doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
     era * 146_097 + doe - 719_468
-}
-
-fn civil_from_days(z: i64) -> (i64, u32, u32) {
-    let z = z + 719_468;
-    let era = z.div_euclid(146_097);
-    let doe = z - era * 146_097;
-    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
-    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-    let mp = (5 * doy + 2) / 153;
-    let d = (doy - (153 * mp + 2) / 5 + 1) as u32;
-    let m = if mp < 10 { mp + 3 } else { mp - 9 } as u32;
-    let y = yoe + era * 400 + i64::from(m <= 2);
-    (y, m, d)
 }
 
 /// The host's local civil time now (for `rtc sync` and a fresh simulator's clock).

@@ -330,27 +330,10 @@ pub fn json_path(html: &std::path::Path) -> std::path::PathBuf {
 /// The report's date: `SOURCE_DATE_EPOCH` (seconds, the reproducible-builds convention) when
 /// set, else now; RFC 3339 UTC.
 pub fn date_now() -> String {
-    let s = std::env::var("SOURCE_DATE_EPOCH").ok().and_then(|v| v.trim().parse::<i64>().ok()).unwrap_or_else(|| {
-        std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map(|d| d.as_secs() as i64).unwrap_or(0)
-    });
-    rfc3339(s)
+    crate::core::civil::utc_now()
 }
 
-/// Seconds since 1970 as RFC 3339 UTC (`2026-12-07T21:08:13Z`).
-pub fn rfc3339(s: i64) -> String {
-    let (days, rem) = (s.div_euclid(86_400), s.rem_euclid(86_400));
-    // Howard Hinnant's civil_from_days.
-    let z = days + 719_468;
-    let era = z.div_euclid(146_097);
-    let doe = z - era * 146_097;
-    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
-    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-    let mp = (5 * doy + 2) / 153;
-    let d = doy - (153 * mp + 2) / 5 + 1;
-    let m = if mp < 10 { mp + 3 } else { mp - 9 };
-    let y = yoe + era * 400 + i64::from(m <= 2);
-    format!("{y:04}-{m:02}-{d:02}T{:02}:{:02}:{:02}Z", rem / 3600, rem / 60 % 60, rem % 60)
-}
+pub use crate::core::civil::rfc3339;
 
 /// Writes the HTML report to `path` and its JSON twin beside it (atomically each); returns
 /// the twin's path.

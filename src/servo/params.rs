@@ -354,25 +354,10 @@ fn stopped(err: &Error, o: &Object, done: usize) -> Error {
     e
 }
 
-/// Now as RFC 3339 UTC (`2026-12-07T21:08:13Z`); `SOURCE_DATE_EPOCH` (seconds, the
-/// reproducible-builds convention) stands for now when set, so a rehearsal's saved sets and
-/// its commissioning report are the same files every time.
+/// Now as RFC 3339 UTC (`2026-12-07T21:08:13Z`), `SOURCE_DATE_EPOCH` when set
+/// ([`crate::core::civil::utc_now`]).
 pub fn utc_now() -> String {
-    let s = std::env::var("SOURCE_DATE_EPOCH").ok().and_then(|v| v.trim().parse::<i64>().ok()).unwrap_or_else(|| {
-        std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map(|d| d.as_secs()).unwrap_or(0) as i64
-    });
-    let (days, rem) = (s.div_euclid(86_400), s.rem_euclid(86_400));
-    // Howard Hinnant's civil_from_days.
-    let z = days + 719_468;
-    let era = z.div_euclid(146_097);
-    let doe = z - era * 146_097;
-    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
-    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-    let mp = (5 * doy + 2) / 153;
-    let d = doy - (153 * mp + 2) / 5 + 1;
-    let m = if mp < 10 { mp + 3 } else { mp - 9 };
-    let y = yoe + era * 400 + i64::from(m <= 2);
-    format!("{y:04}-{m:02}-{d:02}T{:02}:{:02}:{:02}Z", rem / 3600, rem / 60 % 60, rem % 60)
+    crate::core::civil::utc_now()
 }
 
 #[cfg(test)]
