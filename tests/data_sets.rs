@@ -22,6 +22,8 @@ use test_rng::Rng;
 
 fn dir(tag: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("plcsh-data-{}-{tag}", std::process::id()));
+    // Fresh: nothing a previous run left behind is read.
+    let _ = std::fs::remove_dir_all(&d);
     std::fs::create_dir_all(&d).unwrap();
     d
 }

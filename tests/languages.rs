@@ -394,7 +394,8 @@ fn the_repl_lines_up_chinese_text_in_a_terminal() {
         return;
     }
     let home = std::env::temp_dir().join(format!("plcsh-lang-tmux-{}", std::process::id()));
-    let _ = std::fs::create_dir_all(&home);
+    let _ = std::fs::remove_dir_all(&home);
+    std::fs::create_dir_all(&home).unwrap();
     let socket = format!("plcsh-lang-{}", std::process::id());
     fn on(socket: &str, args: &[&str]) -> std::process::Output {
         Command::new("tmux").args(["-u", "-L", socket]).args(args).env("LANG", "C.UTF-8").output().expect("tmux")

@@ -107,6 +107,8 @@ fn every_form_that_takes_an_operand_has_a_row() {
 /// The tag files in a folder of test `name`'s own.
 fn world(name: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("plcsh-names-{}-{name}", std::process::id()));
+    // Fresh: nothing a previous run left behind is read.
+    let _ = std::fs::remove_dir_all(&d);
     std::fs::create_dir_all(&d).unwrap();
     std::fs::write(d.join("plc.csv"), PLC_TAGS).unwrap();
     std::fs::write(d.join("umpk.csv"), UMPK_TAGS).unwrap();
