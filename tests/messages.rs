@@ -270,7 +270,7 @@ fn message_literals_bypassing_the_catalogue_only_go_down() {
 /// The ids of a catalogue file, in order.
 fn catalogue_ids(lang: &str) -> Vec<String> {
     // The files of a catalogue, in core::msg::CATALOGUE_FILES's order.
-    let text: String = ["plcsh", "tags", "names", "data", "report"]
+    let text: String = plcsh::core::msg::CATALOGUE_FILES
         .iter()
         .map(|f| std::fs::read_to_string(root().join(format!("lib/locales/{lang}/{f}.ftl"))).unwrap() + "\n")
         .collect();

@@ -226,7 +226,7 @@ fn the_message_catalogue_quotes_the_program() {
     }
     walk(Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/src")), &mut source);
     // Messages in the catalogue are the program's too (English, the reference language).
-    for file in ["plcsh", "tags", "names", "data", "report"] {
+    for file in plcsh::core::msg::CATALOGUE_FILES {
         let path = format!("{}/lib/locales/en/{file}.ftl", env!("CARGO_MANIFEST_DIR"));
         source.push_str(&std::fs::read_to_string(path).unwrap());
     }

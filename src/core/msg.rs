@@ -27,10 +27,14 @@ use std::sync::OnceLock;
 
 /// The files of one language's catalogue, by subject, in this order (tests/messages.rs reads
 /// the same list): `plcsh` (the shell and its devices), `tags` (tag tables), `names` (names
-/// where operands go), `data` (parameter and data sets), `report` (commissioning reports).
-/// One file per subject keeps a subject's messages together and lets work on two subjects go
+/// where operands go), `data` (parameter and data sets), `report` (commissioning reports),
+/// `shell` (commands and options of the shell and the command line), `devices` (drivers,
+/// links, simulators, snapshots), `tables` (descriptions of SM bytes, servo objects,
+/// instructions and elements), `lab` (labs, scripts, recordings), `agent` (the PLC-side helper
+/// and its checks). One file per subject keeps a subject's messages together and lets work on two subjects go
 /// on side by side.
-pub const CATALOGUE_FILES: [&str; 5] = ["plcsh", "tags", "names", "data", "report"];
+pub const CATALOGUE_FILES: [&str; 10] =
+    ["plcsh", "tags", "names", "data", "report", "shell", "devices", "tables", "lab", "agent"];
 
 macro_rules! catalogue {
     ($lang:literal) => {
@@ -40,6 +44,11 @@ macro_rules! catalogue {
             include_str!(concat!("../../lib/locales/", $lang, "/names.ftl")),
             include_str!(concat!("../../lib/locales/", $lang, "/data.ftl")),
             include_str!(concat!("../../lib/locales/", $lang, "/report.ftl")),
+            include_str!(concat!("../../lib/locales/", $lang, "/shell.ftl")),
+            include_str!(concat!("../../lib/locales/", $lang, "/devices.ftl")),
+            include_str!(concat!("../../lib/locales/", $lang, "/tables.ftl")),
+            include_str!(concat!("../../lib/locales/", $lang, "/lab.ftl")),
+            include_str!(concat!("../../lib/locales/", $lang, "/agent.ftl")),
         ]
     };
 }
