@@ -28,13 +28,14 @@ use std::sync::OnceLock;
 /// The files of one language's catalogue, by subject, in this order (tests/messages.rs reads
 /// the same list): `plcsh` (the shell and its devices), `tags` (tag tables), `names` (names
 /// where operands go), `data` (parameter and data sets), `report` (commissioning reports),
-/// `shell` (commands and options of the shell and the command line), `devices` (drivers,
-/// links, simulators, snapshots), `tables` (descriptions of SM bytes, servo objects,
-/// instructions and elements), `lab` (labs, scripts, recordings), `agent` (the PLC-side helper
-/// and its checks). One file per subject keeps a subject's messages together and lets work on two subjects go
-/// on side by side.
-pub const CATALOGUE_FILES: [&str; 10] =
-    ["plcsh", "tags", "names", "data", "report", "shell", "devices", "tables", "lab", "agent"];
+/// `shell` (commands and options of the shell and the command line), `devices` (the servo,
+/// UMPK and FX drivers and simulators, and the links), `tables` (descriptions of SM bytes,
+/// servo objects, instructions and elements), `lab` (labs, scripts, recordings), `agent` (the
+/// PLC-side helper and its checks), `k2` (the K2's driver, simulator, helpers, wiring and
+/// snapshots), `engine` (the IL scan engine and its compiler). One file per subject keeps a
+/// subject's messages together and lets work on two subjects go on side by side.
+pub const CATALOGUE_FILES: [&str; 12] =
+    ["plcsh", "tags", "names", "data", "report", "shell", "devices", "tables", "lab", "agent", "k2", "engine"];
 
 macro_rules! catalogue {
     ($lang:literal) => {
@@ -49,6 +50,8 @@ macro_rules! catalogue {
             include_str!(concat!("../../lib/locales/", $lang, "/tables.ftl")),
             include_str!(concat!("../../lib/locales/", $lang, "/lab.ftl")),
             include_str!(concat!("../../lib/locales/", $lang, "/agent.ftl")),
+            include_str!(concat!("../../lib/locales/", $lang, "/k2.ftl")),
+            include_str!(concat!("../../lib/locales/", $lang, "/engine.ftl")),
         ]
     };
 }

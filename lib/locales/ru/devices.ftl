@@ -1,2 +1,2 @@
-# plcsh messages (ru): devices — драйверы, линии связи, симуляторы и снимки. Same ids and arguments in en, ru and zh-CN
+# plcsh messages (ru): devices — драйверы и симуляторы сервопривода, УМПК и FX, линии связи. Same ids and arguments in en, ru and zh-CN
 # (tests/messages.rs).
