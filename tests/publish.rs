@@ -836,6 +836,26 @@ fn sim_fleet(d: &Path, n: usize) -> PathBuf {
 }
 
 /// Reads `lines` until a JSON event with `event` and `state`.
+/// Bytes received and not yet read by the listener on `port` of this machine (the sum of the
+/// receive queues of its established connections in /proc/net/tcp and tcp6): what a paused
+/// broker has been sent.
+fn bytes_waiting_at(port: u16) -> u64 {
+    let mut total = 0;
+    for table in ["/proc/net/tcp", "/proc/net/tcp6"] {
+        let Ok(text) = std::fs::read_to_string(table) else { continue };
+        for line in text.lines().skip(1) {
+            let f: Vec<&str> = line.split_whitespace().collect();
+            let (Some(local), Some(state), Some(queues)) = (f.get(1), f.get(3), f.get(4)) else { continue };
+            let local_port = local.rsplit(':').next().and_then(|p| u16::from_str_radix(p, 16).ok());
+            if local_port == Some(port) && *state == "01" {
+                let rx = queues.split(':').nth(1).and_then(|q| u64::from_str_radix(q, 16).ok());
+                total += rx.unwrap_or(0);
+            }
+        }
+    }
+    total
+}
+
 fn until_event(lines: &mut impl Iterator<Item = std::io::Result<String>>, event: &str, state: &str) {
     loop {
         let l = lines.next().unwrap_or_else(|| panic!("publish ended before {event} {state}")).unwrap();
@@ -1415,7 +1435,14 @@ fn at_qos_0_what_a_lost_connection_took_is_dropped_not_published() {
     unsafe {
         libc::kill(first.child.id() as libc::pid_t, libc::SIGSTOP);
     }
-    std::thread::sleep(Duration::from_millis(400));
+    // Wait until the paused broker's socket holds several readings plcsh wrote into it (its
+    // receive queue, as the kernel reports it), not for a time: on a busy machine 400 ms may see
+    // no poll at all.
+    let deadline = Instant::now() + Duration::from_secs(30);
+    while bytes_waiting_at(port) < 500 {
+        assert!(Instant::now() < deadline, "plcsh wrote nothing to the paused broker in 30 s");
+        std::thread::sleep(Duration::from_millis(20));
+    }
     drop(first);
     let _second = Broker::start_with(&d2, port, queue);
     let after = subscribe(port, "qos0-lost-after");
