@@ -6,12 +6,13 @@
 //! FX data registers and the UMPK's operands go the same way.
 
 mod common;
-use plcsh::core::Clock;
 use plcsh::dataset::DataSet;
-use plcsh::output::Style;
-use plcsh::session::Session;
 use plcsh::shell::Shell;
 use serde_json::Value;
+
+#[path = "common/in_process.rs"]
+mod in_process;
+use in_process::{error, run};
 use std::path::PathBuf;
 
 /// The seeded generator the property tests share (`core::test_rng`).
@@ -29,29 +30,7 @@ fn dir(tag: &str) -> PathBuf {
 }
 
 fn shell(devices: &[(&str, &str)]) -> Shell {
-    let mut s = Session::new(Clock::stepped());
-    for (name, url) in devices {
-        s.open(name, url).unwrap();
-    }
-    Shell::new(s, Style { json: true, color: false })
-}
-
-fn run(sh: &mut Shell, line: &str) -> Vec<Value> {
-    sh.exec(line)
-        .into_iter()
-        .map(|r| match r {
-            Ok(o) => serde_json::to_value(&o).unwrap(),
-            Err((cmd, e)) => panic!("`{line}`: {cmd} failed: {e}"),
-        })
-        .collect()
-}
-
-/// The error of the last command of `line`.
-fn error(sh: &mut Shell, line: &str) -> plcsh::core::Error {
-    match sh.exec(line).pop().expect("a result") {
-        Ok(o) => panic!("`{line}` succeeded: {}", serde_json::to_value(&o).unwrap()),
-        Err((_, e)) => e,
-    }
+    in_process::shell_with(devices)
 }
 
 fn read_set(f: &str) -> DataSet {

@@ -7,13 +7,14 @@
 //! parameter; a file from another drive type is refused.
 
 mod common;
-use plcsh::core::Clock;
-use plcsh::output::Style;
 use plcsh::servo::objects::{self, ObjRef};
 use plcsh::servo::params;
-use plcsh::session::Session;
 use plcsh::shell::Shell;
 use serde_json::Value;
+
+#[path = "common/in_process.rs"]
+mod in_process;
+use in_process::{error, run};
 use std::path::PathBuf;
 
 /// The seeded generator the property tests share (`core::test_rng`).
@@ -29,28 +30,7 @@ fn dir(tag: &str) -> PathBuf {
 }
 
 fn shell() -> Shell {
-    let mut s = Session::new(Clock::stepped());
-    s.open("a", "sim-servo:?id=1").unwrap();
-    s.open("b", "sim-servo:?id=1").unwrap();
-    Shell::new(s, Style { json: true, color: false })
-}
-
-fn run(sh: &mut Shell, line: &str) -> Vec<Value> {
-    sh.exec(line)
-        .into_iter()
-        .map(|r| match r {
-            Ok(o) => serde_json::to_value(&o).unwrap(),
-            Err((cmd, e)) => panic!("`{line}`: {cmd} failed: {e}"),
-        })
-        .collect()
-}
-
-/// The error of the last command of `line`.
-fn error(sh: &mut Shell, line: &str) -> plcsh::core::Error {
-    match sh.exec(line).pop().expect("a result") {
-        Ok(o) => panic!("`{line}` succeeded: {}", serde_json::to_value(&o).unwrap()),
-        Err((_, e)) => e,
-    }
+    in_process::shell_with(&[("a", "sim-servo:?id=1"), ("b", "sim-servo:?id=1")])
 }
 
 /// Requests drive `name`'s simulated line has received so far.

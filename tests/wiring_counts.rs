@@ -6,11 +6,11 @@
 //! In process (the shell on a stepped session), so a scenario can be run polled at random
 //! instants and never polled, and the two compared.
 
-use plcsh::core::Clock;
-use plcsh::output::Style;
-use plcsh::session::Session;
 use plcsh::shell::Shell;
-use serde_json::Value;
+
+#[path = "common/in_process.rs"]
+mod in_process;
+use in_process::run;
 
 /// The seeded generator the property tests share (`core::test_rng`).
 #[path = "../src/core/test_rng.rs"]
@@ -19,21 +19,7 @@ mod test_rng;
 use test_rng::Rng;
 
 fn shell() -> Shell {
-    let mut s = Session::new(Clock::stepped());
-    s.open("plc", "sim:K205-16DT").unwrap();
-    s.open("servo", "sim-servo:?id=1").unwrap();
-    Shell::new(s, Style { json: true, color: false })
-}
-
-/// Runs a line; every command must succeed. Returns the JSON of each result.
-fn run(sh: &mut Shell, line: &str) -> Vec<Value> {
-    sh.exec(line)
-        .into_iter()
-        .map(|r| match r {
-            Ok(o) => serde_json::to_value(&o).unwrap(),
-            Err((cmd, e)) => panic!("`{line}`: {cmd} failed: {e}"),
-        })
-        .collect()
+    in_process::shell_with(&[("plc", "sim:K205-16DT"), ("servo", "sim-servo:?id=1")])
 }
 
 fn get(sh: &mut Shell, op: &str) -> i64 {
