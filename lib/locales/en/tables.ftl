@@ -1,2 +1,191 @@
 # plcsh messages (en): tables — descriptions of SM bytes, servo objects, instructions and elements. Same ids and arguments in en, ru and zh-CN
 # (tests/messages.rs).
+
+## K2 special memory (src/k2/sm_map.rs; K2 manual §3.3.2, §3.3.3, §3.4.2.2, §3.4.3.1)
+
+tbl-sm-pos-cv-read-only = SMD{ $cv } is the read-only current value of position channel { $n } (manual §3.4.3.1)
+tbl-sm-pos-cv-overlap = { $written } overlaps SMD{ $cv }, the read-only current value of position channel { $n } (manual §3.4.3.1)
+tbl-sm-pos-cv-read-only-hint = load a new value through SMD{ $new } and SM{ $control }.4 (set SMD{ $new }=100, SM{ $control }.4=1), or clear it with SM{ $control }.6
+tbl-sm-pls-did-nothing = PLS { $n } did nothing: the enable bit SM{ $control }.7 of the control byte SMB{ $control } is clear and PTO{ $n } is idle
+tbl-sm-pls-did-nothing-hint = set SMB{ $control }=16#85 (enable, PTO, update cycle and count), SMW{ $cycle } and SMD{ $count }, then PLS { $n }
+tbl-sm-smb0-read-only = { $written } holds the system status bits and is read-only
+tbl-sm-smb0-read-only-hint = SM0.0 is always on, SM0.1 marks the first scan, SM0.5 is the 1-second clock
+tbl-hsc-mode-0-0 = count I0.1, direction by SM37.3
+tbl-hsc-mode-0-1 = count I0.1, reset I0.0, direction by SM37.3
+tbl-hsc-mode-0-2 = count I0.1, reset I0.0, start I0.5, direction by SM37.3
+tbl-hsc-mode-0-3 = count I0.1, direction input I0.5
+tbl-hsc-mode-0-4 = count I0.1, direction input I0.5, reset I0.0
+tbl-hsc-mode-0-6 = up I0.0 / down I0.1 (two-pulse)
+tbl-hsc-mode-0-9 = A/B quadrature, A = I0.1, B = I0.0
+tbl-hsc-mode-1-0 = count I0.3, direction by SM47.3
+tbl-hsc-mode-1-1 = count I0.3, reset I0.4, direction by SM47.3
+tbl-hsc-mode-1-2 = count I0.3, reset I0.4, start I0.6, direction by SM47.3
+tbl-hsc-mode-1-3 = count I0.3, direction input I0.2
+tbl-hsc-mode-1-4 = count I0.3, direction input I0.2, reset I0.4
+tbl-hsc-mode-1-6 = up I0.2 / down I0.3 (two-pulse)
+tbl-hsc-mode-1-7 = up I0.2 / down I0.3 (two-pulse), reset I0.4
+tbl-hsc-mode-1-9 = A/B quadrature, A = I0.3, B = I0.2
+tbl-hsc-mode-1-10 = A/B quadrature, A = I0.3, B = I0.2, reset I0.4
+tbl-hsc-mode-2-0 = count I0.5, direction by SM57.3
+tbl-hsc-mode-2-9 = A/B quadrature, A = I0.4, B = I0.5
+tbl-hsc-mode-3-0 = count I0.7, direction by SM127.3
+tbl-hsc-mode-3-9 = A/B quadrature, A = I0.6, B = I0.7
+tbl-sm-smb0 = system status bits (read-only)
+tbl-sm-sm0-0 = always on
+tbl-sm-sm0-1 = on during the first scan only
+tbl-sm-sm0-5 = 1-second clock (0.5 s on, 0.5 s off)
+tbl-sm-sm0-6 = toggles every scan
+tbl-sm-pto-control = PTO{ $n }/PWM{ $n } ({ $q }) control byte
+tbl-sm-pto-control-0 = PTO{ $n } control: update cycle time
+tbl-sm-pto-control-1 = PTO{ $n } control: update pulse width (PWM)
+tbl-sm-pto-control-2 = PTO{ $n } control: update pulse count (PTO)
+tbl-sm-pto-control-3 = PTO{ $n } control: time base: 0 = 1 µs, 1 = 1 ms
+tbl-sm-pto-control-4 = PTO{ $n } control: PWM update: 0 async, 1 sync
+tbl-sm-pto-control-5 = PTO{ $n } control: PTO mode: 0 single, 1 multi-segment
+tbl-sm-pto-control-6 = PTO{ $n } control: function: 0 PTO, 1 PWM
+tbl-sm-pto-control-7 = PTO{ $n } control: enable
+tbl-sm-pto-status = PTO{ $n }/PWM{ $n } ({ $q }) status byte
+tbl-sm-pto-status-3 = PTO{ $n } status: PWM idle
+tbl-sm-pto-status-4 = PTO{ $n } status: cycle time or pulse count invalid (must be > 1)
+tbl-sm-pto-status-5 = PTO{ $n } status: profile aborted by user command
+tbl-sm-pto-status-7 = PTO{ $n } status: PTO idle
+tbl-sm-pto-cycle = PTO{ $n }/PWM{ $n } cycle time (2…65535, in the time base)
+tbl-sm-pwm-width = PWM{ $n } pulse width (0…65535, in the time base)
+tbl-sm-pto-count = PTO{ $n } pulse count (≥ 2)
+tbl-sm-pto-profile = PTO{ $n } multi-segment profile table start (odd V offset)
+tbl-sm-pos-cv = position channel { $n } current value, pulses (read-only)
+tbl-sm-pos-new-cv = position channel { $n } new current value (loaded by bit 4 of SMB{ $control })
+tbl-sm-pos-control = position channel { $n } control byte
+tbl-sm-pos-control-7 = position channel { $n } control: emergency stop latched (set by PSTOP)
+tbl-sm-pos-control-6 = position channel { $n } control: clear current value
+tbl-sm-pos-control-4 = position channel { $n } control: load the new current value
+tbl-sm-pos-control-3 = position channel { $n } control: direction output disable
+tbl-sm-hsc-control = HSC{ $n } control byte
+tbl-sm-hsc-control-0 = HSC{ $n } control: reset active level (0 high, 1 low)
+tbl-sm-hsc-control-1 = HSC{ $n } control: start active level (0 high, 1 low)
+tbl-sm-hsc-control-2 = HSC{ $n } control: quadrature rate (0 = 1x, 1 = 4x)
+tbl-sm-hsc-control-3 = HSC{ $n } control: count direction (0 down, 1 up)
+tbl-sm-hsc-control-4 = HSC{ $n } control: write the count direction
+tbl-sm-hsc-control-5 = HSC{ $n } control: write the new preset value
+tbl-sm-hsc-control-6 = HSC{ $n } control: write the new current value
+tbl-sm-hsc-control-7 = HSC{ $n } control: enable
+tbl-sm-hsc-status = HSC{ $n } status byte
+tbl-sm-hsc-status-3 = HSC{ $n } status: multi-PV table fault
+tbl-sm-hsc-status-5 = HSC{ $n } status: current direction (1 up)
+tbl-sm-hsc-status-6 = HSC{ $n } status: CV = PV
+tbl-sm-hsc-status-7 = HSC{ $n } status: CV > PV
+tbl-sm-hsc-cv = HSC{ $n } current value (CV)
+tbl-sm-hsc-pv = HSC{ $n } preset value (PV, single-PV mode)
+tbl-sm-hsc-mpv-control = HSC{ $n } multi-PV control byte
+tbl-sm-hsc-mpv-control-0 = HSC{ $n } multi-PV control: use multiple PVs
+tbl-sm-hsc-mpv-control-1 = HSC{ $n } multi-PV control: PV type (0 absolute, 1 relative)
+tbl-sm-hsc-mpv-control-2 = HSC{ $n } multi-PV control: cyclic CV=PV interrupts (relative only)
+tbl-sm-hsc-mpv-control-4 = HSC{ $n } multi-PV control: load the PV table
+tbl-sm-hsc-mpv-control-5 = HSC{ $n } multi-PV control: reset interrupt variable (0 yes, 1 no)
+tbl-sm-hsc-table = HSC{ $n } PV table start (odd V offset)
+tbl-sm-hsc-segment = HSC{ $n } current PV segment number (from 0)
+
+## Servo object dictionary (src/servo/objects.rs; Kinco servo RS232 protocol, CiA 402)
+
+tbl-servo-not-in-table = not in the table
+tbl-servo-object-missing = an object is missing (e.g. controlword or 6040.00)
+tbl-servo-not-a-type = `/{ $suffix }` is not an object type
+tbl-servo-not-a-type-hint = use /u8, /i8, /u16, /i16, /u32 or /i32
+tbl-servo-not-an-object = `{ $text }` is not a servo object
+tbl-servo-suffix-size = { $name } ({ $address }) is { $bits } bits; /{ $suffix } is { $suffix_bits } bits
+tbl-servo-suffix-size-hint = drop the suffix, or use /{ $suffix }
+tbl-servo-size-unknown = { $address } is not in the object table, so its size is unknown
+tbl-servo-size-unknown-hint = add a type suffix, e.g. { $address }/u16 (u8, i8, u16, i16, u32, i32)
+tbl-servo-suggest-none = `help servo` or completion lists the objects; raw objects are written 6040.00
+tbl-servo-suggest = did you mean { $names }?
+tbl-servo-read-only = { $name } ({ $address }) is read-only
+tbl-servo-read-only-hint = read it with get; the drive would answer 0x80 (attempt to write a read-only object)
+tbl-servo-far-too-large = { $text } is far too large for { $dtype } ({ $lo }…{ $hi })
+tbl-servo-does-not-fit = { $text } = { $raw } does not fit { $dtype } ({ $lo }…{ $hi })
+tbl-servo-resolution-hint = encoder resolution is { $resolution } inc/rev
+tbl-servo-help-type = type { $dtype } ({ $bits } bits), range { $lo }…{ $hi }
+tbl-servo-help-access = access { $access }
+tbl-servo-help-access-unit = access { $access }, unit { $unit }
+tbl-servo-help-access-unit-example = access { $access }, unit { $unit } (write e.g. { $name }=300{ $eng }; encoder resolution { $resolution } inc/rev)
+tbl-servo-help-source = source: { $source }
+tbl-servo-controlword = DS402 controlword: 0x06 shutdown, 0x07 switch on, 0x0F enable operation, bit 4 new set-point, bit 5 change set immediately, bit 6 relative, bit 7 fault reset, bit 8 halt, bit 12 Kinco start on target write (0x103F)
+tbl-servo-statusword = DS402 statusword: state bits 0-6, bit 10 target reached, bit 11 internal limit, bit 12 set-point ack/homing attained, bit 13 following/homing error, bit 15 Kinco home found
+tbl-servo-error-code = last error code (DS402; 0 = no fault)
+tbl-servo-quickstop-option = quick stop option code: 0 coast, 1/2 stop on profile/quick-stop deceleration then switch on disabled, 5/6 the same and stay in quick stop active
+tbl-servo-shutdown-option = shutdown option code (stored; the simulator stops at once)
+tbl-servo-disable-option = disable operation option code (stored; the simulator stops at once)
+tbl-servo-halt-option = halt option code: 1 stop on profile deceleration, 2 on quick-stop deceleration
+tbl-servo-fault-reaction-option = fault reaction option code (stored; the simulator stops at once)
+tbl-servo-operating-mode = operating mode: 1 profile position, 3 profile velocity, -3 immediate velocity, 4 torque, 6 homing, -4 pulse train
+tbl-servo-mode-display = operating mode in effect (DS402; uncertain on Kinco)
+tbl-servo-position-actual = actual position (Kinco drivers use 6063, not 6064)
+tbl-servo-position-actual-value = actual position as DS402 numbers it (the same value as 6063 in the simulator; uncertain on Kinco)
+tbl-servo-max-following-error = following error window: a larger following error for longer than 6066.00 faults the drive (0x8611)
+tbl-servo-following-error-timeout = following error time-out, ms
+tbl-servo-position-window = position window for target reached
+tbl-servo-velocity-actual = actual velocity
+tbl-servo-target-torque = target torque (unit uncertain)
+tbl-servo-max-current = maximal current command (unit uncertain)
+tbl-servo-torque-actual = actual torque (unit uncertain)
+tbl-servo-current-actual = actual current (unit uncertain)
+tbl-servo-target-position = target position for profile position mode
+tbl-servo-home-offset = home offset: the position assigned at the home point after homing
+tbl-servo-soft-limit-pos = software position limit + (notes and C# client; CiA 402 calls sub 1 the minimum limit - check your drive); limits are off while + <= -
+tbl-servo-soft-limit-neg = software position limit - (notes and C# client; CiA 402 calls sub 2 the maximum limit - check your drive)
+tbl-servo-polarity = direction: 0 CCW positive, 1 CW positive
+tbl-servo-max-speed = maximum speed (unit uncertain)
+tbl-servo-profile-velocity = profile (trapezoid) speed for position moves
+tbl-servo-profile-acceleration = profile (trapezoid) acceleration
+tbl-servo-profile-deceleration = profile (trapezoid) deceleration
+tbl-servo-quickstop-deceleration = deceleration used by quick stop
+tbl-servo-homing-method = homing method: 17/18 negative/positive limit switch, 19-22 home switch, 33/34 index pulse, 35/37 current position (CiA 402 numbering)
+tbl-servo-homing-speed-switch = homing speed while searching the switch
+tbl-servo-homing-speed-zero = homing speed while searching zero
+tbl-servo-homing-offset-mode = Kinco homing offset mode: 0 home is position 0, 1 home is the offset (stored; uncertain)
+tbl-servo-homing-acceleration = homing acceleration
+tbl-servo-following-error-actual = actual following error (simulated as velocity x 2 ms)
+tbl-servo-digital-inputs = digital inputs: bit 0 negative limit, bit 1 positive limit, bit 2 home, bit 3 hardware lock
+tbl-servo-digital-outputs = digital outputs (DS402 physical outputs; stored)
+tbl-servo-target-velocity = target speed for velocity modes 3 and -3
+tbl-servo-brake-resistor = braking resistor resistance
+tbl-servo-brake-resistor-power = braking resistor power
+tbl-servo-brake-resistor-time = braking resistor time constant
+tbl-servo-velocity-kp = velocity loop proportional gain (stored)
+tbl-servo-velocity-ki = velocity loop integral gain (stored)
+tbl-servo-position-kp = position loop proportional gain (stored)
+tbl-servo-drive-id = RS232 drive id (1 default; takes effect after a restart)
+tbl-servo-din-polarity = digital input polarity (stored)
+tbl-servo-din-simulate = simulated digital inputs (stored)
+tbl-servo-din1-function = DIN1 function (stored; 0x10 positive limit, 0x20 negative limit per a public C++ client - uncertain)
+tbl-servo-din2-function = DIN2 function (stored)
+tbl-servo-din3-function = DIN3 function (stored)
+tbl-servo-din4-function = DIN4 function (stored)
+tbl-servo-din-real = digital inputs as wired (the simulator mirrors 60FD.00 bits 0-2)
+tbl-servo-dout1-function = DOUT1 function (stored)
+tbl-servo-dout2-function = DOUT2 function (stored)
+tbl-servo-dout-real = digital outputs as driven
+tbl-servo-gear-factor = electronic gear factor (pulse train mode -4)
+tbl-servo-gear-divider = electronic gear divider (pulse train mode -4; 0 is refused)
+tbl-servo-pulse-mode = pulse input mode: 0 CW/CCW, 1 pulse+direction, 2 A/B (x4, uncertain)
+tbl-servo-pulse-filter = pulse input filter (stored)
+tbl-servo-pulse-frequency-control = pulse frequency control
+tbl-servo-master-speed = pulse input frequency (unit uncertain; the simulator: pulses/ms)
+tbl-servo-error-state = Kinco error state (bit meanings uncertain; the simulator sets bit 0 while faulted)
+tbl-servo-baud-code = RS232 baud code: 1080 = 9600, 540 = 19200, 270 = 38400 (default), 90 = 115200; after a restart
+tbl-servo-store-parameters = write 1 to store all parameters
+tbl-servo-store-motor-data = write 1 to store motor data
+tbl-servo-display-select = 7-segment display select
+tbl-servo-target-speed-rpm = target speed in rpm (the FD5P manual's RS232 example writes 600 here with a 4-byte write and reads it back with a 2-byte reply, 4B; the simulator stores it)
+tbl-servo-user-password = user password
+tbl-servo-encoder-resolution = encoder (feedback) resolution used by the DEC formulas, increments per revolution
+
+## Servo engineering units (src/servo/units.rs; kinco-servo.md §4)
+
+tbl-unit-bad-resolution = encoder resolution `{ $text }` is not a whole number of increments per revolution in 1…{ $max } (e.g. 10000 or 65536)
+tbl-unit-unknown-speed = unit `{ $unit }` is not known here; write rpm or dec (the drive's unit) for a speed: { $number }rpm
+tbl-unit-unknown-accel = unit `{ $unit }` is not known here; write rps/s or dec (the drive's unit) for an acceleration: { $number }rps/s
+tbl-unit-unknown-position = unit `{ $unit }` is not known here; write rev or inc for a position: { $number }rev
+tbl-unit-not-a-number = `{ $number }` is not a number (write e.g. 300{ $suffix })
+tbl-unit-takes = this object takes { $raw } or { $eng }, not { $suffix }
+tbl-unit-takes-plain = this object takes plain numbers, not { $suffix }
+tbl-unit-not-whole = { $number }{ $suffix } is not a whole number of { $suffix }

@@ -1,2 +1,191 @@
 # plcsh messages (zh-CN): tables — SM 字节、伺服对象、指令与元件的说明. Same ids and arguments in en, ru and zh-CN
 # (tests/messages.rs).
+
+## K2 special memory (src/k2/sm_map.rs; K2 manual §3.3.2, §3.3.3, §3.4.2.2, §3.4.3.1)
+
+tbl-sm-pos-cv-read-only = SMD{ $cv } 是位置通道 { $n } 的当前值，只读（手册 §3.4.3.1）
+tbl-sm-pos-cv-overlap = { $written } 与 SMD{ $cv } 重叠，SMD{ $cv } 是位置通道 { $n } 的只读当前值（手册 §3.4.3.1）
+tbl-sm-pos-cv-read-only-hint = 通过 SMD{ $new } 和 SM{ $control }.4 装入新值（set SMD{ $new }=100, SM{ $control }.4=1），或用 SM{ $control }.6 清零
+tbl-sm-pls-did-nothing = PLS { $n } 未执行任何操作：控制字节 SMB{ $control } 的使能位 SM{ $control }.7 为 0，且 PTO{ $n } 处于空闲
+tbl-sm-pls-did-nothing-hint = 设置 SMB{ $control }=16#85（使能、PTO、更新周期时间和脉冲数）、SMW{ $cycle } 和 SMD{ $count }，然后执行 PLS { $n }
+tbl-sm-smb0-read-only = { $written } 存放系统状态位，只读
+tbl-sm-smb0-read-only-hint = SM0.0 始终为 1，SM0.1 标记第一次扫描，SM0.5 是 1 秒时钟
+tbl-hsc-mode-0-0 = 计数 I0.1，方向由 SM37.3 决定
+tbl-hsc-mode-0-1 = 计数 I0.1，复位 I0.0，方向由 SM37.3 决定
+tbl-hsc-mode-0-2 = 计数 I0.1，复位 I0.0，启动 I0.5，方向由 SM37.3 决定
+tbl-hsc-mode-0-3 = 计数 I0.1，方向输入 I0.5
+tbl-hsc-mode-0-4 = 计数 I0.1，方向输入 I0.5，复位 I0.0
+tbl-hsc-mode-0-6 = 增计数 I0.0 / 减计数 I0.1（双脉冲）
+tbl-hsc-mode-0-9 = AB相正交，A = I0.1，B = I0.0
+tbl-hsc-mode-1-0 = 计数 I0.3，方向由 SM47.3 决定
+tbl-hsc-mode-1-1 = 计数 I0.3，复位 I0.4，方向由 SM47.3 决定
+tbl-hsc-mode-1-2 = 计数 I0.3，复位 I0.4，启动 I0.6，方向由 SM47.3 决定
+tbl-hsc-mode-1-3 = 计数 I0.3，方向输入 I0.2
+tbl-hsc-mode-1-4 = 计数 I0.3，方向输入 I0.2，复位 I0.4
+tbl-hsc-mode-1-6 = 增计数 I0.2 / 减计数 I0.3（双脉冲）
+tbl-hsc-mode-1-7 = 增计数 I0.2 / 减计数 I0.3（双脉冲），复位 I0.4
+tbl-hsc-mode-1-9 = AB相正交，A = I0.3，B = I0.2
+tbl-hsc-mode-1-10 = AB相正交，A = I0.3，B = I0.2，复位 I0.4
+tbl-hsc-mode-2-0 = 计数 I0.5，方向由 SM57.3 决定
+tbl-hsc-mode-2-9 = AB相正交，A = I0.4，B = I0.5
+tbl-hsc-mode-3-0 = 计数 I0.7，方向由 SM127.3 决定
+tbl-hsc-mode-3-9 = AB相正交，A = I0.6，B = I0.7
+tbl-sm-smb0 = 系统状态位（只读）
+tbl-sm-sm0-0 = 始终为 1
+tbl-sm-sm0-1 = 仅在第一次扫描时为 1
+tbl-sm-sm0-5 = 1 秒时钟（0.5 秒为 1，0.5 秒为 0）
+tbl-sm-sm0-6 = 每次扫描翻转
+tbl-sm-pto-control = PTO{ $n }/PWM{ $n }（{ $q }）控制字节
+tbl-sm-pto-control-0 = PTO{ $n } 控制：更新周期时间
+tbl-sm-pto-control-1 = PTO{ $n } 控制：更新脉冲宽度（PWM）
+tbl-sm-pto-control-2 = PTO{ $n } 控制：更新脉冲数（PTO）
+tbl-sm-pto-control-3 = PTO{ $n } 控制：时基：0 = 1 µs，1 = 1 ms
+tbl-sm-pto-control-4 = PTO{ $n } 控制：PWM 更新方式：0 异步，1 同步
+tbl-sm-pto-control-5 = PTO{ $n } 控制：PTO 模式：0 单段，1 多段
+tbl-sm-pto-control-6 = PTO{ $n } 控制：功能：0 PTO，1 PWM
+tbl-sm-pto-control-7 = PTO{ $n } 控制：使能
+tbl-sm-pto-status = PTO{ $n }/PWM{ $n }（{ $q }）状态字节
+tbl-sm-pto-status-3 = PTO{ $n } 状态：PWM 空闲
+tbl-sm-pto-status-4 = PTO{ $n } 状态：周期时间或脉冲数无效（必须大于 1）
+tbl-sm-pto-status-5 = PTO{ $n } 状态：包络被用户命令中止
+tbl-sm-pto-status-7 = PTO{ $n } 状态：PTO 空闲
+tbl-sm-pto-cycle = PTO{ $n }/PWM{ $n } 周期时间（2…65535，以时基为单位）
+tbl-sm-pwm-width = PWM{ $n } 脉冲宽度（0…65535，以时基为单位）
+tbl-sm-pto-count = PTO{ $n } 脉冲数（≥ 2）
+tbl-sm-pto-profile = PTO{ $n } 多段包络表首地址（V 区奇数偏移）
+tbl-sm-pos-cv = 位置通道 { $n } 当前值，脉冲数（只读）
+tbl-sm-pos-new-cv = 位置通道 { $n } 新当前值（由 SMB{ $control } 的位 4 装入）
+tbl-sm-pos-control = 位置通道 { $n } 控制字节
+tbl-sm-pos-control-7 = 位置通道 { $n } 控制：急停已锁存（由 PSTOP 置位）
+tbl-sm-pos-control-6 = 位置通道 { $n } 控制：清除当前值
+tbl-sm-pos-control-4 = 位置通道 { $n } 控制：装入新当前值
+tbl-sm-pos-control-3 = 位置通道 { $n } 控制：禁止方向输出
+tbl-sm-hsc-control = HSC{ $n } 控制字节
+tbl-sm-hsc-control-0 = HSC{ $n } 控制：复位有效电平（0 高，1 低）
+tbl-sm-hsc-control-1 = HSC{ $n } 控制：启动有效电平（0 高，1 低）
+tbl-sm-hsc-control-2 = HSC{ $n } 控制：正交倍频（0 = 1倍频，1 = 4倍频）
+tbl-sm-hsc-control-3 = HSC{ $n } 控制：计数方向（0 减计数，1 增计数）
+tbl-sm-hsc-control-4 = HSC{ $n } 控制：写入计数方向
+tbl-sm-hsc-control-5 = HSC{ $n } 控制：写入新设定值
+tbl-sm-hsc-control-6 = HSC{ $n } 控制：写入新当前值
+tbl-sm-hsc-control-7 = HSC{ $n } 控制：使能
+tbl-sm-hsc-status = HSC{ $n } 状态字节
+tbl-sm-hsc-status-3 = HSC{ $n } 状态：多 PV 表故障
+tbl-sm-hsc-status-5 = HSC{ $n } 状态：当前计数方向（1 增计数）
+tbl-sm-hsc-status-6 = HSC{ $n } 状态：CV = PV
+tbl-sm-hsc-status-7 = HSC{ $n } 状态：CV > PV
+tbl-sm-hsc-cv = HSC{ $n } 当前值（CV）
+tbl-sm-hsc-pv = HSC{ $n } 设定值（PV，单 PV 模式）
+tbl-sm-hsc-mpv-control = HSC{ $n } 多 PV 控制字节
+tbl-sm-hsc-mpv-control-0 = HSC{ $n } 多 PV 控制：使用多个 PV
+tbl-sm-hsc-mpv-control-1 = HSC{ $n } 多 PV 控制：PV 类型（0 绝对，1 相对）
+tbl-sm-hsc-mpv-control-2 = HSC{ $n } 多 PV 控制：循环 CV=PV 中断（仅相对值）
+tbl-sm-hsc-mpv-control-4 = HSC{ $n } 多 PV 控制：装入 PV 表
+tbl-sm-hsc-mpv-control-5 = HSC{ $n } 多 PV 控制：复位中断变量（0 是，1 否）
+tbl-sm-hsc-table = HSC{ $n } PV 表首地址（V 区奇数偏移）
+tbl-sm-hsc-segment = HSC{ $n } 当前 PV 段号（从 0 开始）
+
+## Servo object dictionary (src/servo/objects.rs; Kinco servo RS232 protocol, CiA 402)
+
+tbl-servo-not-in-table = 不在对象表中
+tbl-servo-object-missing = 缺少对象（例如 controlword 或 6040.00）
+tbl-servo-not-a-type = `/{ $suffix }` 不是对象类型
+tbl-servo-not-a-type-hint = 请使用 /u8、/i8、/u16、/i16、/u32 或 /i32
+tbl-servo-not-an-object = `{ $text }` 不是伺服对象
+tbl-servo-suffix-size = { $name }（{ $address }）为 { $bits } 位；/{ $suffix } 为 { $suffix_bits } 位
+tbl-servo-suffix-size-hint = 去掉后缀，或使用 /{ $suffix }
+tbl-servo-size-unknown = { $address } 不在对象表中，因此长度未知
+tbl-servo-size-unknown-hint = 请加类型后缀，例如 { $address }/u16（u8、i8、u16、i16、u32、i32）
+tbl-servo-suggest-none = `help servo` 或补全可列出对象；表外对象写作 6040.00
+tbl-servo-suggest = 是否要输入 { $names }？
+tbl-servo-read-only = { $name }（{ $address }）为只读
+tbl-servo-read-only-hint = 请用 get 读取；驱动器会回复 0x80（试图写只读对象）
+tbl-servo-far-too-large = { $text } 远超 { $dtype } 的范围（{ $lo }…{ $hi }）
+tbl-servo-does-not-fit = { $text } = { $raw } 超出 { $dtype } 的范围（{ $lo }…{ $hi }）
+tbl-servo-resolution-hint = 反馈精度为 { $resolution } inc/圈
+tbl-servo-help-type = 类型 { $dtype }（{ $bits } 位），范围 { $lo }…{ $hi }
+tbl-servo-help-access = 访问 { $access }
+tbl-servo-help-access-unit = 访问 { $access }，单位 { $unit }
+tbl-servo-help-access-unit-example = 访问 { $access }，单位 { $unit }（可写作 { $name }=300{ $eng }；反馈精度 { $resolution } inc/圈）
+tbl-servo-help-source = 来源：{ $source }
+tbl-servo-controlword = DS402 控制字：0x06 关闭（shutdown），0x07 启动（switch on），0x0F 使能运行，位 4 新设定点，位 5 立即更新设定，位 6 相对，位 7 故障复位，位 8 暂停（halt），位 12 Kinco 写目标即启动（0x103F）
+tbl-servo-statusword = DS402 状态字：状态位 0-6，位 10 目标到达，位 11 内部限制，位 12 设定点确认/回原点完成，位 13 跟随误差/回原点错误，位 15 Kinco 找到原点
+tbl-servo-error-code = 最近的故障代码（DS402；0 = 无故障）
+tbl-servo-quickstop-option = 快速停止选项码：0 自由停车，1/2 按梯形减速度/快速停止减速度停止后进入禁止启动，5/6 同上但保持快速停止状态
+tbl-servo-shutdown-option = 关闭选项码（仅保存；仿真器立即停止）
+tbl-servo-disable-option = 禁止运行选项码（仅保存；仿真器立即停止）
+tbl-servo-halt-option = 暂停选项码：1 按梯形减速度停止，2 按快速停止减速度停止
+tbl-servo-fault-reaction-option = 故障反应选项码（仅保存；仿真器立即停止）
+tbl-servo-operating-mode = 工作模式：1 位置模式，3 速度模式，-3 立即速度模式，4 转矩模式，6 回原点，-4 脉冲模式
+tbl-servo-mode-display = 当前生效的工作模式（DS402；在 Kinco 上未确认）
+tbl-servo-position-actual = 实际位置（Kinco 驱动器使用 6063，而非 6064）
+tbl-servo-position-actual-value = DS402 编号的实际位置（仿真器中与 6063 相同；在 Kinco 上未确认）
+tbl-servo-max-following-error = 跟随误差窗口：跟随误差超出该值的时间长于 6066.00 时驱动器报故障（0x8611）
+tbl-servo-following-error-timeout = 跟随误差超时，ms
+tbl-servo-position-window = 目标到达的位置窗口
+tbl-servo-velocity-actual = 实际速度
+tbl-servo-target-torque = 目标转矩（单位未确认）
+tbl-servo-max-current = 最大电流指令（单位未确认）
+tbl-servo-torque-actual = 实际转矩（单位未确认）
+tbl-servo-current-actual = 实际电流（单位未确认）
+tbl-servo-target-position = 位置模式的目标位置
+tbl-servo-home-offset = 原点偏移：回原点后赋给原点的位置
+tbl-servo-soft-limit-pos = 软件位置限位 +（依据 notes 和 C# 客户端；CiA 402 称子索引 1 为最小限位，请核对驱动器）；+ <= - 时限位无效
+tbl-servo-soft-limit-neg = 软件位置限位 -（依据 notes 和 C# 客户端；CiA 402 称子索引 2 为最大限位，请核对驱动器）
+tbl-servo-polarity = 方向：0 逆时针（CCW）为正，1 顺时针（CW）为正
+tbl-servo-max-speed = 最大速度（单位未确认）
+tbl-servo-profile-velocity = 位置运动的梯形速度
+tbl-servo-profile-acceleration = 梯形加速度
+tbl-servo-profile-deceleration = 梯形减速度
+tbl-servo-quickstop-deceleration = 快速停止使用的减速度
+tbl-servo-homing-method = 回原点方式：17/18 负/正限位开关，19-22 原点开关，33/34 索引脉冲，35/37 当前位置（CiA 402 编号）
+tbl-servo-homing-speed-switch = 寻找开关时的回原点速度
+tbl-servo-homing-speed-zero = 寻找零点时的回原点速度
+tbl-servo-homing-offset-mode = Kinco 原点偏移模式：0 原点为位置 0，1 原点为偏移值（仅保存；未确认）
+tbl-servo-homing-acceleration = 回原点加速度
+tbl-servo-following-error-actual = 实际跟随误差（仿真为速度 x 2 ms）
+tbl-servo-digital-inputs = 开关量输入：位 0 负限位，位 1 正限位，位 2 原点，位 3 硬件锁
+tbl-servo-digital-outputs = 开关量输出（DS402 物理输出；仅保存）
+tbl-servo-target-velocity = 速度模式 3 和 -3 的目标速度
+tbl-servo-brake-resistor = 制动电阻阻值
+tbl-servo-brake-resistor-power = 制动电阻功率
+tbl-servo-brake-resistor-time = 制动电阻时间常数
+tbl-servo-velocity-kp = 速度环比例增益（仅保存）
+tbl-servo-velocity-ki = 速度环积分增益（仅保存）
+tbl-servo-position-kp = 位置环比例增益（仅保存）
+tbl-servo-drive-id = RS232 设备站号（默认 1；重启后生效）
+tbl-servo-din-polarity = 开关量输入极性（仅保存）
+tbl-servo-din-simulate = 模拟开关量输入（仅保存）
+tbl-servo-din1-function = DIN1 功能（仅保存；据一个公开的 C++ 客户端，0x10 正限位，0x20 负限位，未确认）
+tbl-servo-din2-function = DIN2 功能（仅保存）
+tbl-servo-din3-function = DIN3 功能（仅保存）
+tbl-servo-din4-function = DIN4 功能（仅保存）
+tbl-servo-din-real = 实际接线的开关量输入（仿真器映射 60FD.00 的位 0-2）
+tbl-servo-dout1-function = DOUT1 功能（仅保存）
+tbl-servo-dout2-function = DOUT2 功能（仅保存）
+tbl-servo-dout-real = 实际驱动的开关量输出
+tbl-servo-gear-factor = 电子齿轮分子（脉冲模式 -4）
+tbl-servo-gear-divider = 电子齿轮分母（脉冲模式 -4；不接受 0）
+tbl-servo-pulse-mode = 脉冲输入模式：0 CW/CCW，1 脉冲+方向，2 A/B（4倍频，未确认）
+tbl-servo-pulse-filter = 脉冲输入滤波（仅保存）
+tbl-servo-pulse-frequency-control = 脉冲频率控制
+tbl-servo-master-speed = 脉冲输入频率（单位未确认；仿真器：脉冲/ms）
+tbl-servo-error-state = Kinco 故障状态（位含义未确认；故障时仿真器置位 0）
+tbl-servo-baud-code = RS232 波特率代码：1080 = 9600，540 = 19200，270 = 38400（默认），90 = 115200；重启后生效
+tbl-servo-store-parameters = 写 1 保存全部参数
+tbl-servo-store-motor-data = 写 1 保存电机数据
+tbl-servo-display-select = 数码管显示设定
+tbl-servo-target-speed-rpm = 以 rpm 为单位的目标速度（FD5P 手册的 RS232 示例用 4 字节写入 600，再以 2 字节回复 4B 读回；仿真器保存该值）
+tbl-servo-user-password = 用户密码
+tbl-servo-encoder-resolution = DEC 公式使用的反馈精度（编码器分辨率），每圈增量数
+
+## Servo engineering units (src/servo/units.rs; kinco-servo.md §4)
+
+tbl-unit-bad-resolution = 反馈精度 `{ $text }` 不是 1…{ $max } 内的整数（每圈增量数，例如 10000 或 65536）
+tbl-unit-unknown-speed = 此处不识别单位 `{ $unit }`；速度请写 rpm 或 dec（驱动器单位）：{ $number }rpm
+tbl-unit-unknown-accel = 此处不识别单位 `{ $unit }`；加速度请写 rps/s 或 dec（驱动器单位）：{ $number }rps/s
+tbl-unit-unknown-position = 此处不识别单位 `{ $unit }`；位置请写 rev 或 inc：{ $number }rev
+tbl-unit-not-a-number = `{ $number }` 不是数字（请写作例如 300{ $suffix }）
+tbl-unit-takes = 此对象接受 { $raw } 或 { $eng }，不接受 { $suffix }
+tbl-unit-takes-plain = 此对象只接受普通数字，不接受 { $suffix }
+tbl-unit-not-whole = { $number }{ $suffix } 不是整数个 { $suffix }
