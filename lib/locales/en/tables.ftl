@@ -189,3 +189,23 @@ tbl-unit-not-a-number = `{ $number }` is not a number (write e.g. 300{ $suffix }
 tbl-unit-takes = this object takes { $raw } or { $eng }, not { $suffix }
 tbl-unit-takes-plain = this object takes plain numbers, not { $suffix }
 tbl-unit-not-whole = { $number }{ $suffix } is not a whole number of { $suffix }
+
+## K2 model catalogue (src/k2/catalog.rs; K2 manual §1.2, §2.1.2, §2.2.6, §3.4)
+
+tbl-model-unknown = unknown K2 model `{ $name }`
+tbl-model-unknown-hint = catalogued models: { $models }
+tbl-model-k204et-1-what = HSC2/HSC3 maximum frequency
+tbl-model-k204et-1-chosen = 200 kHz single-phase and A/B (§2.2.6)
+tbl-model-k204et-1-other = §2.1.2 lists 20 kHz single-phase / 10 kHz A/B in the CPU204 column (that column appears shifted: it matches §2.2.6's CPU209EA row)
+tbl-model-k204et-2-what = Q0.4 maximum frequency
+tbl-model-k204et-2-chosen = 200 kHz (§2.2.6, §3.4)
+tbl-model-k204et-2-other = §2.1.2 lists 10 kHz in the CPU204 column
+tbl-model-k209ea-1-what = Q0.4 maximum frequency
+tbl-model-k209ea-1-chosen = 10 kHz (§2.2.6, §3.4)
+tbl-model-k209ea-1-other = §2.1.2 lists Q0.0, Q0.1, Q0.4 at 200 kHz and a fourth output Q0.5 in the CPU209EA column (apparently CPU209M's entry, shifted)
+tbl-model-k209ea-2-what = number of high-speed counters
+tbl-model-k209ea-2-chosen = 4 (§2.2.6 gives HSC2/HSC3 frequencies for K209EA)
+tbl-model-k209ea-2-other = §2.1.2 prints 2 in the CPU209EA column (apparently CPU209M's entry, shifted)
+tbl-model-k205ea-1-what = HSC and pulse output frequencies
+tbl-model-k205ea-1-chosen = 200 kHz on all channels (§2.1.2, the only table that lists CPU205EA)
+tbl-model-k205ea-1-other = §2.2.6 and §3.4 do not list CPU205EA

@@ -189,3 +189,23 @@ tbl-unit-not-a-number = `{ $number }` — не число (пишите, нап�
 tbl-unit-takes = этот объект принимает { $raw } или { $eng }, а не { $suffix }
 tbl-unit-takes-plain = этот объект принимает простые числа, а не { $suffix }
 tbl-unit-not-whole = { $number }{ $suffix } — не целое число { $suffix }
+
+## K2 model catalogue (src/k2/catalog.rs; K2 manual §1.2, §2.1.2, §2.2.6, §3.4)
+
+tbl-model-unknown = неизвестная модель K2 `{ $name }`
+tbl-model-unknown-hint = модели каталога: { $models }
+tbl-model-k204et-1-what = максимальная частота HSC2/HSC3
+tbl-model-k204et-1-chosen = 200 кГц для одной фазы и фазы AB (§2.2.6)
+tbl-model-k204et-1-other = в §2.1.2 указано 20 кГц для одной фазы / 10 кГц для фазы AB в столбце CPU204 (столбец, по-видимому, сдвинут: он совпадает со строкой CPU209EA из §2.2.6)
+tbl-model-k204et-2-what = максимальная частота Q0.4
+tbl-model-k204et-2-chosen = 200 кГц (§2.2.6, §3.4)
+tbl-model-k204et-2-other = в §2.1.2 указано 10 кГц в столбце CPU204
+tbl-model-k209ea-1-what = максимальная частота Q0.4
+tbl-model-k209ea-1-chosen = 10 кГц (§2.2.6, §3.4)
+tbl-model-k209ea-1-other = в §2.1.2 в столбце CPU209EA указаны Q0.0, Q0.1, Q0.4 на 200 кГц и четвёртый выход Q0.5 (по-видимому, сдвинутая запись CPU209M)
+tbl-model-k209ea-2-what = количество высокоскоростных счетчиков
+tbl-model-k209ea-2-chosen = 4 (§2.2.6 приводит частоты HSC2/HSC3 для K209EA)
+tbl-model-k209ea-2-other = в §2.1.2 в столбце CPU209EA напечатано 2 (по-видимому, сдвинутая запись CPU209M)
+tbl-model-k205ea-1-what = частоты HSC и импульсных выходов
+tbl-model-k205ea-1-chosen = 200 кГц на всех каналах (§2.1.2 — единственная таблица, где есть CPU205EA)
+tbl-model-k205ea-1-other = в §2.2.6 и §3.4 нет CPU205EA

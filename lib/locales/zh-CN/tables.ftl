@@ -189,3 +189,23 @@ tbl-unit-not-a-number = `{ $number }` 不是数字（请写作例如 300{ $suffi
 tbl-unit-takes = 此对象接受 { $raw } 或 { $eng }，不接受 { $suffix }
 tbl-unit-takes-plain = 此对象只接受普通数字，不接受 { $suffix }
 tbl-unit-not-whole = { $number }{ $suffix } 不是整数个 { $suffix }
+
+## K2 model catalogue (src/k2/catalog.rs; K2 manual §1.2, §2.1.2, §2.2.6, §3.4)
+
+tbl-model-unknown = 未知的 K2 型号 `{ $name }`
+tbl-model-unknown-hint = 目录中的型号：{ $models }
+tbl-model-k204et-1-what = HSC2/HSC3 最高频率
+tbl-model-k204et-1-chosen = 单相和 AB 相均为 200 kHz（§2.2.6）
+tbl-model-k204et-1-other = §2.1.2 在 CPU204 一栏列出单相 20 kHz / AB 相 10 kHz（该栏似乎错位：与 §2.2.6 中 CPU209EA 一行相符）
+tbl-model-k204et-2-what = Q0.4 最高频率
+tbl-model-k204et-2-chosen = 200 kHz（§2.2.6，§3.4）
+tbl-model-k204et-2-other = §2.1.2 在 CPU204 一栏列出 10 kHz
+tbl-model-k209ea-1-what = Q0.4 最高频率
+tbl-model-k209ea-1-chosen = 10 kHz（§2.2.6，§3.4）
+tbl-model-k209ea-1-other = §2.1.2 在 CPU209EA 一栏列出 Q0.0、Q0.1、Q0.4 为 200 kHz，并有第四个输出 Q0.5（似乎是错位的 CPU209M 条目）
+tbl-model-k209ea-2-what = 高速计数器数量
+tbl-model-k209ea-2-chosen = 4（§2.2.6 给出了 K209EA 的 HSC2/HSC3 频率）
+tbl-model-k209ea-2-other = §2.1.2 在 CPU209EA 一栏印为 2（似乎是错位的 CPU209M 条目）
+tbl-model-k205ea-1-what = HSC 和脉冲输出频率
+tbl-model-k205ea-1-chosen = 所有通道 200 kHz（§2.1.2 是唯一列出 CPU205EA 的表）
+tbl-model-k205ea-1-other = §2.2.6 和 §3.4 未列出 CPU205EA
