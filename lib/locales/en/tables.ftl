@@ -209,3 +209,35 @@ tbl-model-k209ea-2-other = §2.1.2 prints 2 in the CPU209EA column (apparently C
 tbl-model-k205ea-1-what = HSC and pulse output frequencies
 tbl-model-k205ea-1-chosen = 200 kHz on all channels (§2.1.2, the only table that lists CPU205EA)
 tbl-model-k205ea-1-other = §2.2.6 and §3.4 do not list CPU205EA
+
+## Servo drive state machine (src/servo/ds402.rs; CiA 402 as the Kinco manual follows it). The CiA 402
+## state and command names (operation enabled, switch on …) stay as they are: JSON reports carry them.
+
+tbl-ds402-does-not-fit = { $value } does not fit { $name } ({ $lo }…{ $hi })
+tbl-ds402-or = { $a } or { $b }
+tbl-ds402-step-stuck = { $what } (controlword 16#{ $cw }) did not reach { $want }: statusword 16#{ $sw } = { $state }
+tbl-ds402-step-stuck-unknown = { $what } (controlword 16#{ $cw }) did not reach { $want }: statusword 16#{ $sw } = unknown state
+tbl-ds402-in-fault-hint = the drive is in fault: run servo fault-reset
+tbl-ds402-check-status-hint = check servo status
+tbl-ds402-in-fault = the drive is in fault (statusword 16#{ $sw })
+tbl-ds402-in-fault-enable-hint = run servo fault-reset, then servo enable
+tbl-ds402-mode-readback = operating mode reads back { $got } after writing { $mode }
+tbl-ds402-not-enabled = cannot { $what ->
+    [release-halt] release halt
+   *[other] { $what }
+}: the drive is in "{ $state }" (statusword 16#{ $sw })
+tbl-ds402-not-enabled-unknown = cannot { $what ->
+    [release-halt] release halt
+   *[other] { $what }
+}: the drive is in "unknown state" (statusword 16#{ $sw })
+tbl-ds402-not-enabled-hint = run servo enable first
+tbl-ds402-buffer-full = the drive's set-point buffer stayed full for { $seconds } s (statusword 16#{ $sw }, bit 12 high with bit 4 low)
+tbl-ds402-buffer-full-hint = wait for the running moves (servo wait target), then move again
+tbl-ds402-no-ack = the drive did not acknowledge the set-point (statusword 16#{ $sw }, bit 12 clear)
+tbl-ds402-fault-while-waiting = the drive went into fault while waiting (statusword 16#{ $sw })
+tbl-ds402-fault-while-waiting-hint = servo status shows the state; servo fault-reset clears it
+tbl-ds402-homing-error = homing ended in a homing error (statusword 16#{ $sw }, bit 13)
+tbl-ds402-homing-error-hint = check the homing method (6098.00) and the switches; servo status shows the bits
+tbl-ds402-target-timeout = target not reached within { $seconds } s (statusword 16#{ $sw })
+tbl-ds402-target-timeout-at = target not reached within { $seconds } s (statusword 16#{ $sw }, position_actual { $position })
+tbl-ds402-target-timeout-hint = a longer timeout=, or servo status to see why

@@ -209,3 +209,43 @@ tbl-model-k209ea-2-other = в §2.1.2 в столбце CPU209EA напечат�
 tbl-model-k205ea-1-what = частоты HSC и импульсных выходов
 tbl-model-k205ea-1-chosen = 200 кГц на всех каналах (§2.1.2 — единственная таблица, где есть CPU205EA)
 tbl-model-k205ea-1-other = в §2.2.6 и §3.4 нет CPU205EA
+
+## Servo drive state machine (src/servo/ds402.rs; CiA 402 as the Kinco manual follows it). The CiA 402
+## state and command names (operation enabled, switch on …) stay as they are: JSON reports carry them.
+
+tbl-ds402-does-not-fit = { $value } не помещается в { $name } ({ $lo }…{ $hi })
+tbl-ds402-or = { $a } или { $b }
+tbl-ds402-step-stuck = команда { $what } (controlword 16#{ $cw }) не привела к состоянию { $want }: statusword 16#{ $sw } = { $state }
+tbl-ds402-step-stuck-unknown = команда { $what } (controlword 16#{ $cw }) не привела к состоянию { $want }: statusword 16#{ $sw } = неизвестное состояние
+tbl-ds402-in-fault-hint = привод в состоянии неисправности: выполните servo fault-reset
+tbl-ds402-check-status-hint = проверьте servo status
+tbl-ds402-in-fault = привод в состоянии неисправности (statusword 16#{ $sw })
+tbl-ds402-in-fault-enable-hint = выполните servo fault-reset, затем servo enable
+tbl-ds402-mode-readback = после записи режима работы { $mode } читается { $got }
+tbl-ds402-not-enabled = { $what ->
+    [move] нельзя выполнить перемещение
+    [jog] нельзя выполнить Бег (JOG)
+    [home] нельзя выполнить возврат в исходное положение
+    [halt] нельзя выполнить остановку (halt)
+    [release-halt] нельзя снять остановку (halt)
+   *[other] нельзя выполнить { $what }
+}: привод в состоянии «{ $state }» (statusword 16#{ $sw })
+tbl-ds402-not-enabled-unknown = { $what ->
+    [move] нельзя выполнить перемещение
+    [jog] нельзя выполнить Бег (JOG)
+    [home] нельзя выполнить возврат в исходное положение
+    [halt] нельзя выполнить остановку (halt)
+    [release-halt] нельзя снять остановку (halt)
+   *[other] нельзя выполнить { $what }
+}: привод в неизвестном состоянии (statusword 16#{ $sw })
+tbl-ds402-not-enabled-hint = сначала выполните servo enable
+tbl-ds402-buffer-full = буфер заданий привода оставался заполненным { $seconds } с (statusword 16#{ $sw }, бит 12 установлен при сброшенном бите 4)
+tbl-ds402-buffer-full-hint = дождитесь окончания текущих перемещений (servo wait target), затем повторите
+tbl-ds402-no-ack = привод не подтвердил задание (statusword 16#{ $sw }, бит 12 сброшен)
+tbl-ds402-fault-while-waiting = привод перешёл в состояние неисправности во время ожидания (statusword 16#{ $sw })
+tbl-ds402-fault-while-waiting-hint = servo status показывает состояние; servo fault-reset сбрасывает неисправность
+tbl-ds402-homing-error = возврат в исходное положение завершился ошибкой (statusword 16#{ $sw }, бит 13)
+tbl-ds402-homing-error-hint = проверьте способ возврата (6098.00) и датчики; servo status показывает биты
+tbl-ds402-target-timeout = цель не достигнута за { $seconds } с (statusword 16#{ $sw })
+tbl-ds402-target-timeout-at = цель не достигнута за { $seconds } с (statusword 16#{ $sw }, position_actual { $position })
+tbl-ds402-target-timeout-hint = увеличьте timeout= или посмотрите причину в servo status

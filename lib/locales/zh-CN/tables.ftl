@@ -209,3 +209,43 @@ tbl-model-k209ea-2-other = §2.1.2 在 CPU209EA 一栏印为 2（似乎是错位
 tbl-model-k205ea-1-what = HSC 和脉冲输出频率
 tbl-model-k205ea-1-chosen = 所有通道 200 kHz（§2.1.2 是唯一列出 CPU205EA 的表）
 tbl-model-k205ea-1-other = §2.2.6 和 §3.4 未列出 CPU205EA
+
+## Servo drive state machine (src/servo/ds402.rs; CiA 402 as the Kinco manual follows it). The CiA 402
+## state and command names (operation enabled, switch on …) stay as they are: JSON reports carry them.
+
+tbl-ds402-does-not-fit = { $value } 超出 { $name } 的范围（{ $lo }…{ $hi }）
+tbl-ds402-or = { $a } 或 { $b }
+tbl-ds402-step-stuck = { $what }（controlword 16#{ $cw }）未到达 { $want }：statusword 16#{ $sw } = { $state }
+tbl-ds402-step-stuck-unknown = { $what }（controlword 16#{ $cw }）未到达 { $want }：statusword 16#{ $sw } = 未知状态
+tbl-ds402-in-fault-hint = 驱动器处于故障：请执行 servo fault-reset
+tbl-ds402-check-status-hint = 请查看 servo status
+tbl-ds402-in-fault = 驱动器处于故障（statusword 16#{ $sw }）
+tbl-ds402-in-fault-enable-hint = 请执行 servo fault-reset，再执行 servo enable
+tbl-ds402-mode-readback = 写入工作模式 { $mode } 后读回 { $got }
+tbl-ds402-not-enabled = { $what ->
+    [move] 无法运动
+    [jog] 无法点动
+    [home] 无法回原点
+    [halt] 无法暂停（halt）
+    [release-halt] 无法解除暂停（halt）
+   *[other] 无法执行 { $what }
+}：驱动器处于“{ $state }”（statusword 16#{ $sw }）
+tbl-ds402-not-enabled-unknown = { $what ->
+    [move] 无法运动
+    [jog] 无法点动
+    [home] 无法回原点
+    [halt] 无法暂停（halt）
+    [release-halt] 无法解除暂停（halt）
+   *[other] 无法执行 { $what }
+}：驱动器处于未知状态（statusword 16#{ $sw }）
+tbl-ds402-not-enabled-hint = 请先执行 servo enable
+tbl-ds402-buffer-full = 驱动器的设定点缓冲区持续满 { $seconds } 秒（statusword 16#{ $sw }，位 12 为 1 而位 4 为 0）
+tbl-ds402-buffer-full-hint = 等待正在进行的运动结束（servo wait target），再重新运动
+tbl-ds402-no-ack = 驱动器未确认设定点（statusword 16#{ $sw }，位 12 为 0）
+tbl-ds402-fault-while-waiting = 等待期间驱动器进入故障（statusword 16#{ $sw }）
+tbl-ds402-fault-while-waiting-hint = servo status 显示状态；servo fault-reset 清除故障
+tbl-ds402-homing-error = 回原点以回原点错误结束（statusword 16#{ $sw }，位 13）
+tbl-ds402-homing-error-hint = 请检查回原点方式（6098.00）和开关；servo status 显示各位
+tbl-ds402-target-timeout = { $seconds } 秒内未到达目标（statusword 16#{ $sw }）
+tbl-ds402-target-timeout-at = { $seconds } 秒内未到达目标（statusword 16#{ $sw }，position_actual { $position }）
+tbl-ds402-target-timeout-hint = 加长 timeout=，或用 servo status 查看原因
