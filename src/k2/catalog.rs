@@ -350,10 +350,8 @@ pub fn find(name: &str) -> Option<&'static Model> {
 /// `find`, with an error that lists the catalogue.
 pub fn lookup(name: &str) -> crate::core::Result<&'static Model> {
     find(name).ok_or_else(|| {
-        crate::core::Error::usage(msg!("tbl-model-unknown", name = name)).hint(msg!(
-            "tbl-model-unknown-hint",
-            models = MODELS.iter().map(|m| m.name).collect::<Vec<_>>().join(", ")
-        ))
+        crate::core::Error::usage(msg!("tbl-model-unknown", name = name))
+            .hint(msg!("tbl-model-unknown-hint", models = MODELS.iter().map(|m| m.name).collect::<Vec<_>>().join(", ")))
     })
 }
 
@@ -375,8 +373,12 @@ mod tests {
     #[test]
     fn every_discrepancy_has_its_text_in_every_language() {
         use crate::core::msg::Lang;
-        let used: Vec<&str> =
-            MODELS.iter().flat_map(|m| m.discrepancies).flat_map(|d| [d.what, d.chosen, d.other]).map(|p| (p.0)().id).collect();
+        let used: Vec<&str> = MODELS
+            .iter()
+            .flat_map(|m| m.discrepancies)
+            .flat_map(|d| [d.what, d.chosen, d.other])
+            .map(|p| (p.0)().id)
+            .collect();
         for lang in Lang::ALL {
             let ids = crate::core::msg::ids(*lang);
             for id in &used {
@@ -388,7 +390,10 @@ mod tests {
                 assert!(used.contains(&id.as_str()), "{id} belongs to no discrepancy");
             }
         }
-        assert_eq!(find("K205EA-18DT").unwrap().discrepancies[0].other.to_string(), "§2.2.6 and §3.4 do not list CPU205EA");
+        assert_eq!(
+            find("K205EA-18DT").unwrap().discrepancies[0].other.to_string(),
+            "§2.2.6 and §3.4 do not list CPU205EA"
+        );
     }
 
     #[test]

@@ -278,8 +278,11 @@ pub fn write(ops: &mut dyn ServoOps, name: &str, v: i64) -> Result<()> {
     let (lo, hi) = r.dtype.int_range();
     if v < lo || v > hi {
         let (v, lo, hi) = (v.to_string(), lo.to_string(), hi.to_string());
-        return Err(Error::new(ErrorKind::Value, msg!("tbl-ds402-does-not-fit", value = v, name = name, lo = lo, hi = hi))
-            .operand(name));
+        return Err(Error::new(
+            ErrorKind::Value,
+            msg!("tbl-ds402-does-not-fit", value = v, name = name, lo = lo, hi = hi),
+        )
+        .operand(name));
     }
     ops.write_raw(r, r.dtype.encode(&Value::Int(v)))
 }
@@ -307,7 +310,8 @@ fn step(ops: &mut dyn ServoOps, w: &Waiter, what: &str, cw: u16, want: &[State])
         }
         if w.clock.now() - start >= STEP_TIMEOUT {
             // "A or B or C": the states the step accepts, joined as the language joins alternatives.
-            let names = want.iter().map(|s| s.name().to_string()).reduce(|a, b| msg!("tbl-ds402-or", a = a, b = b).text);
+            let names =
+                want.iter().map(|s| s.name().to_string()).reduce(|a, b| msg!("tbl-ds402-or", a = a, b = b).text);
             let names = names.unwrap_or_default();
             let (cw, sw) = (format!("{cw:04X}"), format!("{sw:04X}"));
             let m = match st {

@@ -241,3 +241,47 @@ tbl-ds402-homing-error-hint = check the homing method (6098.00) and the switches
 tbl-ds402-target-timeout = target not reached within { $seconds } s (statusword 16#{ $sw })
 tbl-ds402-target-timeout-at = target not reached within { $seconds } s (statusword 16#{ $sw }, position_actual { $position })
 tbl-ds402-target-timeout-hint = a longer timeout=, or servo status to see why
+
+## The sandbox of graded and confined runs (src/confine.rs): bench actions a lab grants by name, and refusals
+
+tbl-bench-refused = `{ $what }` is not available to a graded submission: it { $why }, which changes the lab's machine rather than drives it
+tbl-bench-refused-hint = a submission drives the lab's devices as its program would on the real machine; a lab that needs this grants it in lab.toml: grants = ["{ $what }"]
+tbl-bench-other = changes the bench
+tbl-confine-no-write = writing { $path } is not allowed in a sandboxed run
+tbl-confine-no-write-hint = give the run a directory for its files: plcsh run --sandbox --write-dir DIR
+tbl-confine-write-outside = writing { $path } is outside { $dir }
+tbl-confine-write-outside-hint = a sandboxed run writes only under its --write-dir
+tbl-confine-real-device = { $url } is a real device: a sandboxed run opens simulated devices only
+tbl-confine-real-device-hint = in the sandbox use sim:MODEL, sim-servo:, sim-umpk:MODEL or sim-fx:MODEL
+tbl-confine-read-outside = reading { $path } is outside the sandbox's folders
+tbl-confine-read-outside-hint = a sandboxed run reads files only under { $folders }
+tbl-confine-named-snapshot = the named snapshot `{ $name }` lives in the user's data directory, which a sandboxed run may not touch
+tbl-confine-named-snapshot-hint = give a file path under the write directory, e.g. out/start.json
+tbl-confine-no-folder = no folder
+tbl-bench-sim-clock = shows or changes the simulator's clock mode
+tbl-bench-sim-input = drives a simulated input signal
+tbl-bench-sim-quad = drives a simulated encoder
+tbl-bench-sim-inputs = lists the simulated input signals
+tbl-bench-sim-retain = changes the battery-retained ranges
+tbl-bench-sim-program = loads, unloads or reads the PLC's program
+tbl-bench-sim-cpu = runs or stops the PLC's CPU
+tbl-bench-sim-stop = stops the PLC's CPU
+tbl-bench-sim-pause = pauses the PLC's CPU
+tbl-bench-sim-switch = moves the PLC's RUN/STOP switch
+tbl-bench-sim-scan = runs PLC scans by hand
+tbl-bench-sim-break = sets breakpoints in the PLC's program
+tbl-bench-sim-stepi = steps the PLC's program
+tbl-bench-sim-stepn = steps the PLC's program
+tbl-bench-sim-wire = wires simulated devices together
+tbl-bench-sim-wires = lists the wiring
+tbl-bench-sim-unwire = removes wiring
+tbl-bench-sim-snapshot = restores a saved simulated state
+tbl-bench-sim-snapshots = lists the saved states
+tbl-bench-sim-fault = injects or clears faults
+tbl-bench-sim-faults = lists the injected faults
+tbl-bench-servo-sim = controls the simulated drive
+tbl-bench-umpk-sim = controls the simulated UMPK
+tbl-bench-connect = opens a device
+tbl-bench-close = closes a device
+tbl-bench-rtc-sync = sets the PLC's clock from the host's
+tbl-bench-paths = shows the user's folders

@@ -249,3 +249,47 @@ tbl-ds402-homing-error-hint = проверьте способ возврата (
 tbl-ds402-target-timeout = цель не достигнута за { $seconds } с (statusword 16#{ $sw })
 tbl-ds402-target-timeout-at = цель не достигнута за { $seconds } с (statusword 16#{ $sw }, position_actual { $position })
 tbl-ds402-target-timeout-hint = увеличьте timeout= или посмотрите причину в servo status
+
+## The sandbox of graded and confined runs (src/confine.rs): bench actions a lab grants by name, and refusals
+
+tbl-bench-refused = `{ $what }` недоступна проверяемой работе: это действие меняет стенд лабораторной работы, а не управляет им ({ $why })
+tbl-bench-refused-hint = работа управляет устройствами лабораторной так же, как её программа на настоящей установке; лабораторная, которой это нужно, разрешает действие в lab.toml: grants = ["{ $what }"]
+tbl-bench-other = меняет стенд
+tbl-confine-no-write = запись { $path } в изолированном запуске не разрешена
+tbl-confine-no-write-hint = дайте запуску каталог для файлов: plcsh run --sandbox --write-dir DIR
+tbl-confine-write-outside = запись { $path } вне каталога { $dir }
+tbl-confine-write-outside-hint = изолированный запуск пишет только в свой --write-dir
+tbl-confine-real-device = { $url } — настоящее устройство: изолированный запуск открывает только симуляторы
+tbl-confine-real-device-hint = в изоляции используйте sim:MODEL, sim-servo:, sim-umpk:MODEL или sim-fx:MODEL
+tbl-confine-read-outside = чтение { $path } вне каталогов изолированного запуска
+tbl-confine-read-outside-hint = изолированный запуск читает файлы только в { $folders }
+tbl-confine-named-snapshot = именованный снимок `{ $name }` хранится в каталоге данных пользователя, к которому изолированный запуск не обращается
+tbl-confine-named-snapshot-hint = укажите путь к файлу в каталоге записи, например out/start.json
+tbl-confine-no-folder = нет каталогов
+tbl-bench-sim-clock = показывает или меняет режим часов симулятора
+tbl-bench-sim-input = задаёт сигнал на входе симулятора
+tbl-bench-sim-quad = вращает имитируемый энкодер
+tbl-bench-sim-inputs = перечисляет имитируемые входные сигналы
+tbl-bench-sim-retain = меняет диапазоны сохранения (поддерживаемые батареей)
+tbl-bench-sim-program = загружает, выгружает или читает программу ПЛК
+tbl-bench-sim-cpu = запускает или останавливает CPU ПЛК
+tbl-bench-sim-stop = переводит CPU ПЛК в режим STOP
+tbl-bench-sim-pause = приостанавливает CPU ПЛК
+tbl-bench-sim-switch = переключает переключатель RUN/STOP ПЛК
+tbl-bench-sim-scan = выполняет сканирования ПЛК вручную
+tbl-bench-sim-break = ставит точки останова в программе ПЛК
+tbl-bench-sim-stepi = выполняет программу ПЛК по шагам
+tbl-bench-sim-stepn = выполняет программу ПЛК по шагам
+tbl-bench-sim-wire = соединяет имитируемые устройства
+tbl-bench-sim-wires = перечисляет соединения
+tbl-bench-sim-unwire = удаляет соединения
+tbl-bench-sim-snapshot = восстанавливает сохранённое состояние симулятора
+tbl-bench-sim-snapshots = перечисляет сохранённые состояния
+tbl-bench-sim-fault = вносит или снимает неисправности
+tbl-bench-sim-faults = перечисляет внесённые неисправности
+tbl-bench-servo-sim = управляет симулятором сервопривода
+tbl-bench-umpk-sim = управляет симулятором УМПК
+tbl-bench-connect = открывает устройство
+tbl-bench-close = закрывает устройство
+tbl-bench-rtc-sync = устанавливает часы ПЛК по часам компьютера
+tbl-bench-paths = показывает каталоги пользователя

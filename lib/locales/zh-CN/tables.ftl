@@ -249,3 +249,47 @@ tbl-ds402-homing-error-hint = 请检查回原点方式（6098.00）和开关；s
 tbl-ds402-target-timeout = { $seconds } 秒内未到达目标（statusword 16#{ $sw }）
 tbl-ds402-target-timeout-at = { $seconds } 秒内未到达目标（statusword 16#{ $sw }，position_actual { $position }）
 tbl-ds402-target-timeout-hint = 加长 timeout=，或用 servo status 查看原因
+
+## The sandbox of graded and confined runs (src/confine.rs): bench actions a lab grants by name, and refusals
+
+tbl-bench-refused = 被评分的提交不能使用 `{ $what }`：该操作改变实验台本身，而不是控制它（{ $why }）
+tbl-bench-refused-hint = 提交像程序在真实设备上那样控制实验设备；需要此操作的实验可在 lab.toml 中授权：grants = ["{ $what }"]
+tbl-bench-other = 改变实验台
+tbl-confine-no-write = 沙箱运行中不允许写入 { $path }
+tbl-confine-no-write-hint = 为运行指定文件目录：plcsh run --sandbox --write-dir DIR
+tbl-confine-write-outside = 写入的 { $path } 在 { $dir } 之外
+tbl-confine-write-outside-hint = 沙箱运行只写入其 --write-dir 之下
+tbl-confine-real-device = { $url } 是真实设备：沙箱运行只打开仿真设备
+tbl-confine-real-device-hint = 在沙箱中请使用 sim:MODEL、sim-servo:、sim-umpk:MODEL 或 sim-fx:MODEL
+tbl-confine-read-outside = 读取的 { $path } 在沙箱的目录之外
+tbl-confine-read-outside-hint = 沙箱运行只读取 { $folders } 之下的文件
+tbl-confine-named-snapshot = 命名快照 `{ $name }` 位于用户数据目录，沙箱运行不能访问该目录
+tbl-confine-named-snapshot-hint = 请给出写入目录下的文件路径，例如 out/start.json
+tbl-confine-no-folder = 无目录
+tbl-bench-sim-clock = 显示或更改仿真器的时钟模式
+tbl-bench-sim-input = 驱动仿真的输入信号
+tbl-bench-sim-quad = 驱动仿真的编码器
+tbl-bench-sim-inputs = 列出仿真的输入信号
+tbl-bench-sim-retain = 更改电池供电保持的范围
+tbl-bench-sim-program = 装入、卸载或读取 PLC 的程序
+tbl-bench-sim-cpu = 运行或停止 PLC 的 CPU
+tbl-bench-sim-stop = 使 PLC 的 CPU 进入 STOP
+tbl-bench-sim-pause = 暂停 PLC 的 CPU
+tbl-bench-sim-switch = 拨动 PLC 的 RUN/STOP 开关
+tbl-bench-sim-scan = 手动执行 PLC 扫描
+tbl-bench-sim-break = 在 PLC 程序中设置断点
+tbl-bench-sim-stepi = 单步执行 PLC 程序
+tbl-bench-sim-stepn = 单步执行 PLC 程序
+tbl-bench-sim-wire = 连接仿真设备
+tbl-bench-sim-wires = 列出接线
+tbl-bench-sim-unwire = 拆除接线
+tbl-bench-sim-snapshot = 恢复已保存的仿真状态
+tbl-bench-sim-snapshots = 列出已保存的状态
+tbl-bench-sim-fault = 注入或清除故障
+tbl-bench-sim-faults = 列出已注入的故障
+tbl-bench-servo-sim = 控制仿真驱动器
+tbl-bench-umpk-sim = 控制仿真 UMPK
+tbl-bench-connect = 打开设备
+tbl-bench-close = 关闭设备
+tbl-bench-rtc-sync = 用计算机的时钟设置 PLC 的时钟
+tbl-bench-paths = 显示用户的目录
