@@ -285,3 +285,95 @@ tbl-bench-connect = opens a device
 tbl-bench-close = closes a device
 tbl-bench-rtc-sync = sets the PLC's clock from the host's
 tbl-bench-paths = shows the user's folders
+
+## FX instruction subset and its load errors (src/fx/program.rs; FX programming manual ch. 2, 4, 5)
+
+tbl-fx-unknown = unknown FX instruction { $m }
+tbl-fx-foreign-hint = { $m } is not an FX mnemonic: on an FX write { $how } (docs/il.md, The FX family)
+tbl-fx-unknown-near = did you mean { $near }? (docs/il.md lists the FX subset)
+tbl-fx-unknown-hint = docs/il.md lists the FX instructions the simulator runs
+tbl-fx-operand-count = { $m } takes { $want } operand(s), found { $found }
+tbl-fx-operand-range = { $m } takes { $lo } to { $hi } operand(s), found { $found }
+tbl-fx-needs-preset = OUT { $t } needs a preset: OUT { $t } K10 (a constant) or OUT { $t } D10 (a register)
+tbl-fx-bad-preset = { $k }: a preset is a constant K… or a data register D…
+tbl-fx-hsc-not-simulated = { $t }: high-speed counters (C235–C255) are not simulated
+tbl-fx-hsc-not-simulated-hint = use C0–C199 (16-bit) or C200–C234 (32-bit up/down)
+tbl-fx-out-one-operand = OUT { $t } takes one operand (a preset is for timers and counters)
+tbl-fx-rst-target = RST { $t }: resets Y, M, S, D, a timer T or a counter C
+tbl-fx-input-written = { $m } { $t }: inputs X cannot be written by a program
+tbl-fx-input-written-hint = write Y, M, S (as KnY0 …), D, or a timer's or counter's value
+tbl-fx-coil-target = { $m } { $t }: a program drives Y, M and S bits here
+tbl-fx-coil-target-hint = inputs X come from the field; OUT T0 K10 / OUT C0 K5 drive timers and counters
+tbl-fx-system-driven = { $m } { $t }: { $operand } is driven by the PLC
+tbl-fx-not-on-model = { $t } is not on an { $model }
+tbl-fx-no-blocks = FX lists have no labels or program blocks here
+tbl-fx-no-blocks-hint = write one instruction per line: LD X0 / OUT Y0 … END
+tbl-fx-foreign-ton = the timer as a coil with its preset: LD X0 / OUT T0 K20 (T0–T199 count 100 ms)
+tbl-fx-foreign-tof = an off-delay with a timer coil and LDI: LDI X0 / OUT T0 K20 (T0–T199 count 100 ms)
+tbl-fx-foreign-tonr = a retentive timer coil: OUT T250 K20 (T250–T255 keep their value; RST T250 clears it)
+tbl-fx-foreign-tp = a pulse from a timer coil: OUT T0 K20 with its contact (T0–T199 count 100 ms)
+tbl-fx-foreign-ctu = the counter as a coil with its preset: LD X0 / OUT C0 K10 (RST C0 clears it)
+tbl-fx-foreign-ctd = a down count with a 32-bit counter: OUT C200 K10 with M8200 on
+tbl-fx-foreign-code = { $code }
+tbl-fx-ld = start a block with a normally open contact
+tbl-fx-ldi = start a block with a normally closed contact
+tbl-fx-ldp = start a block: on for one scan when the bit rises
+tbl-fx-ldf = start a block: on for one scan when the bit falls
+tbl-fx-and = series normally open contact
+tbl-fx-ani = series normally closed contact
+tbl-fx-andp = series rising-edge contact
+tbl-fx-andf = series falling-edge contact
+tbl-fx-or = parallel normally open contact
+tbl-fx-ori = parallel normally closed contact
+tbl-fx-orp = parallel rising-edge contact
+tbl-fx-orf = parallel falling-edge contact
+tbl-fx-anb = AND the last two blocks
+tbl-fx-orb = OR the last two blocks
+tbl-fx-mps = push the operation result
+tbl-fx-mrd = read the pushed result
+tbl-fx-mpp = pop the pushed result
+tbl-fx-inv = invert the operation result
+tbl-fx-out = OUT Y/M/S: coil := result; OUT Tn K|D: timer coil with preset; OUT Cn K|D: counter coil
+tbl-fx-set = if the result is on: set Y/M/S (stays on)
+tbl-fx-rst = if the result is on: reset Y/M/S, clear D, clear a timer or counter (value 0, contact off)
+tbl-fx-pls = Y/M on for one scan after the result rises
+tbl-fx-plf = Y/M on for one scan after the result falls
+tbl-fx-mov = MOV S D: D := S (16-bit)
+tbl-fx-movp = MOV on the result's rising edge
+tbl-fx-dmov = 32-bit MOV (D0 = D0 low, D1 high)
+tbl-fx-dmovp = 32-bit MOV on the rising edge
+tbl-fx-add = ADD S1 S2 D: D := S1 + S2 (16-bit, wraps)
+tbl-fx-addp = ADD on the rising edge
+tbl-fx-dadd = 32-bit ADD
+tbl-fx-sub = SUB S1 S2 D: D := S1 − S2 (16-bit, wraps)
+tbl-fx-subp = SUB on the rising edge
+tbl-fx-dsub = 32-bit SUB
+tbl-fx-inc = D := D + 1 every scan the result is on
+tbl-fx-incp = D := D + 1 on the rising edge
+tbl-fx-dec = D := D − 1 every scan the result is on
+tbl-fx-decp = D := D − 1 on the rising edge
+tbl-fx-ld-eq = start a block: S1 = S2 (16-bit)
+tbl-fx-ld-gt = start a block: S1 > S2
+tbl-fx-ld-lt = start a block: S1 < S2
+tbl-fx-ld-ne = start a block: S1 ≠ S2
+tbl-fx-ld-le = start a block: S1 ≤ S2
+tbl-fx-ld-ge = start a block: S1 ≥ S2
+tbl-fx-and-eq = series contact: S1 = S2
+tbl-fx-and-gt = series contact: S1 > S2
+tbl-fx-and-lt = series contact: S1 < S2
+tbl-fx-and-ne = series contact: S1 ≠ S2
+tbl-fx-and-le = series contact: S1 ≤ S2
+tbl-fx-and-ge = series contact: S1 ≥ S2
+tbl-fx-or-eq = parallel contact: S1 = S2
+tbl-fx-or-gt = parallel contact: S1 > S2
+tbl-fx-or-lt = parallel contact: S1 < S2
+tbl-fx-or-ne = parallel contact: S1 ≠ S2
+tbl-fx-or-le = parallel contact: S1 ≤ S2
+tbl-fx-or-ge = parallel contact: S1 ≥ S2
+tbl-fx-ldd-eq = 32-bit: start a block: S1 = S2
+tbl-fx-ldd-gt = 32-bit: start a block: S1 > S2
+tbl-fx-ldd-lt = 32-bit: start a block: S1 < S2
+tbl-fx-andd-eq = 32-bit series contact: S1 = S2
+tbl-fx-ord-eq = 32-bit parallel contact: S1 = S2
+tbl-fx-nop = nothing
+tbl-fx-end = end of the program: what follows is not scanned

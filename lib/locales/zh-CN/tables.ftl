@@ -293,3 +293,95 @@ tbl-bench-connect = 打开设备
 tbl-bench-close = 关闭设备
 tbl-bench-rtc-sync = 用计算机的时钟设置 PLC 的时钟
 tbl-bench-paths = 显示用户的目录
+
+## FX instruction subset and its load errors (src/fx/program.rs; FX programming manual ch. 2, 4, 5)
+
+tbl-fx-unknown = 未知的 FX 指令 { $m }
+tbl-fx-foreign-hint = { $m } 不是 FX 助记符：在 FX 上请写作 { $how }（docs/il.md，The FX family）
+tbl-fx-unknown-near = 是否要输入 { $near }？（docs/il.md 列出了 FX 指令子集）
+tbl-fx-unknown-hint = docs/il.md 列出了仿真器执行的 FX 指令
+tbl-fx-operand-count = { $m } 需要 { $want } 个操作数，实际为 { $found } 个
+tbl-fx-operand-range = { $m } 需要 { $lo } 到 { $hi } 个操作数，实际为 { $found } 个
+tbl-fx-needs-preset = OUT { $t } 需要设定值：OUT { $t } K10（常数）或 OUT { $t } D10（寄存器）
+tbl-fx-bad-preset = { $k }：设定值应为常数 K… 或数据寄存器 D…
+tbl-fx-hsc-not-simulated = { $t }：不仿真高速计数器（C235–C255）
+tbl-fx-hsc-not-simulated-hint = 请使用 C0–C199（16 位）或 C200–C234（32 位增/减计数）
+tbl-fx-out-one-operand = OUT { $t } 只需一个操作数（设定值只用于计时器和计数器）
+tbl-fx-rst-target = RST { $t }：复位 Y、M、S、D、计时器 T 或计数器 C
+tbl-fx-input-written = { $m } { $t }：程序不能写输入 X
+tbl-fx-input-written-hint = 请写 Y、M、S（如 KnY0 …）、D，或计时器、计数器的值
+tbl-fx-coil-target = { $m } { $t }：此处程序只驱动 Y、M 和 S 位
+tbl-fx-coil-target-hint = 输入 X 来自现场；OUT T0 K10 / OUT C0 K5 驱动计时器和计数器
+tbl-fx-system-driven = { $m } { $t }：{ $operand } 由 PLC 驱动
+tbl-fx-not-on-model = { $model } 上没有 { $t }
+tbl-fx-no-blocks = 此处的 FX 指令表没有标号或程序块
+tbl-fx-no-blocks-hint = 每行写一条指令：LD X0 / OUT Y0 … END
+tbl-fx-foreign-ton = 带设定值的计时器线圈：LD X0 / OUT T0 K20（T0–T199 以 100 ms 计时）
+tbl-fx-foreign-tof = 用计时器线圈和 LDI 实现断开延时：LDI X0 / OUT T0 K20（T0–T199 以 100 ms 计时）
+tbl-fx-foreign-tonr = 积算计时器线圈：OUT T250 K20（T250–T255 保持当前值；RST T250 将其清除）
+tbl-fx-foreign-tp = 用计时器线圈及其触点产生脉冲：OUT T0 K20（T0–T199 以 100 ms 计时）
+tbl-fx-foreign-ctu = 带设定值的计数器线圈：LD X0 / OUT C0 K10（RST C0 将其清除）
+tbl-fx-foreign-ctd = 用 32 位计数器减计数：OUT C200 K10，并使 M8200 为 ON
+tbl-fx-foreign-code = { $code }
+tbl-fx-ld = 以常开触点开始一个块
+tbl-fx-ldi = 以常闭触点开始一个块
+tbl-fx-ldp = 开始一个块：位的上升沿时接通一个扫描周期
+tbl-fx-ldf = 开始一个块：位的下降沿时接通一个扫描周期
+tbl-fx-and = 串联常开触点
+tbl-fx-ani = 串联常闭触点
+tbl-fx-andp = 串联上升沿触点
+tbl-fx-andf = 串联下降沿触点
+tbl-fx-or = 并联常开触点
+tbl-fx-ori = 并联常闭触点
+tbl-fx-orp = 并联上升沿触点
+tbl-fx-orf = 并联下降沿触点
+tbl-fx-anb = 将最后两个块串联（AND）
+tbl-fx-orb = 将最后两个块并联（OR）
+tbl-fx-mps = 将运算结果压入堆栈
+tbl-fx-mrd = 读出已压入的结果
+tbl-fx-mpp = 弹出已压入的结果
+tbl-fx-inv = 运算结果取反
+tbl-fx-out = OUT Y/M/S：线圈 := 结果；OUT Tn K|D：带设定值的计时器线圈；OUT Cn K|D：计数器线圈
+tbl-fx-set = 结果为 ON 时：置位 Y/M/S（保持 ON）
+tbl-fx-rst = 结果为 ON 时：复位 Y/M/S，清零 D，复位计时器或计数器（当前值 0，触点断开）
+tbl-fx-pls = 结果上升沿后 Y/M 接通一个扫描周期
+tbl-fx-plf = 结果下降沿后 Y/M 接通一个扫描周期
+tbl-fx-mov = MOV S D：D := S（16 位）
+tbl-fx-movp = 结果上升沿时执行 MOV
+tbl-fx-dmov = 32 位 MOV（D0 = D0 低位，D1 高位）
+tbl-fx-dmovp = 上升沿时执行 32 位 MOV
+tbl-fx-add = ADD S1 S2 D：D := S1 + S2（16 位，溢出回绕）
+tbl-fx-addp = 上升沿时执行 ADD
+tbl-fx-dadd = 32 位 ADD
+tbl-fx-sub = SUB S1 S2 D：D := S1 − S2（16 位，溢出回绕）
+tbl-fx-subp = 上升沿时执行 SUB
+tbl-fx-dsub = 32 位 SUB
+tbl-fx-inc = 结果为 ON 的每个扫描周期 D := D + 1
+tbl-fx-incp = 上升沿时 D := D + 1
+tbl-fx-dec = 结果为 ON 的每个扫描周期 D := D − 1
+tbl-fx-decp = 上升沿时 D := D − 1
+tbl-fx-ld-eq = 开始一个块：S1 = S2（16 位）
+tbl-fx-ld-gt = 开始一个块：S1 > S2
+tbl-fx-ld-lt = 开始一个块：S1 < S2
+tbl-fx-ld-ne = 开始一个块：S1 ≠ S2
+tbl-fx-ld-le = 开始一个块：S1 ≤ S2
+tbl-fx-ld-ge = 开始一个块：S1 ≥ S2
+tbl-fx-and-eq = 串联触点：S1 = S2
+tbl-fx-and-gt = 串联触点：S1 > S2
+tbl-fx-and-lt = 串联触点：S1 < S2
+tbl-fx-and-ne = 串联触点：S1 ≠ S2
+tbl-fx-and-le = 串联触点：S1 ≤ S2
+tbl-fx-and-ge = 串联触点：S1 ≥ S2
+tbl-fx-or-eq = 并联触点：S1 = S2
+tbl-fx-or-gt = 并联触点：S1 > S2
+tbl-fx-or-lt = 并联触点：S1 < S2
+tbl-fx-or-ne = 并联触点：S1 ≠ S2
+tbl-fx-or-le = 并联触点：S1 ≤ S2
+tbl-fx-or-ge = 并联触点：S1 ≥ S2
+tbl-fx-ldd-eq = 32 位：开始一个块：S1 = S2
+tbl-fx-ldd-gt = 32 位：开始一个块：S1 > S2
+tbl-fx-ldd-lt = 32 位：开始一个块：S1 < S2
+tbl-fx-andd-eq = 32 位串联触点：S1 = S2
+tbl-fx-ord-eq = 32 位并联触点：S1 = S2
+tbl-fx-nop = 无操作
+tbl-fx-end = 程序结束：其后的内容不被扫描
