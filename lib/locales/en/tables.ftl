@@ -377,3 +377,22 @@ tbl-fx-andd-eq = 32-bit series contact: S1 = S2
 tbl-fx-ord-eq = 32-bit parallel contact: S1 = S2
 tbl-fx-nop = nothing
 tbl-fx-end = end of the program: what follows is not scanned
+
+## The K2's Modbus map (src/k2/modbus_map.rs; K2 manual §3.2.1). Modbus table names stay as they are.
+
+tbl-modbus-word-order = `word_order={ $value }` is not a word order
+tbl-modbus-word-order-hint = use word_order=high-first (S7 order, the default) or word_order=low-first
+tbl-modbus-not-in-map = { $operand } is not in the K2 Modbus map: over Modbus a K2 exposes only I, Q, M, V, AI and AQ (manual §3.2.1); { $area } ({ $meaning }) is not reachable
+tbl-modbus-not-in-map-sm-hint = install the plcsh helper program in the PLC (lib/k2_agent.il, docs/agent.md) and connect with …&agent=VB3400; the simulator (sim:MODEL) has SM directly
+tbl-modbus-not-in-map-tc-hint = copy timers and counters to V in the PLC program and read the V words; the simulator (sim:MODEL) has T and C directly
+tbl-modbus-past-end = { $operand } is past the end of the { $area } area on { $model }
+tbl-modbus-read-only = { $operand } is read-only over Modbus ({ $meaning } are { $table }, which Modbus cannot write; manual §3.2.1)
+tbl-modbus-read-only-hint = inputs follow the field wiring; write an output (Q, AQ) or memory (M, V) instead
+
+## FX timers and counters by class (src/fx/elements.rs; FX PM "Timers", "Counters")
+
+tbl-element-timer = T{ $n }: { $base } timer (T{ $first }–T{ $last }); contact T{ $n } = TS{ $n }, coil TC{ $n }, current value TN{ $n }; `OUT T{ $n } K50` in a program
+tbl-element-timer-retentive = T{ $n }: { $base } timer, retentive (RST clears it) (T{ $first }–T{ $last }); contact T{ $n } = TS{ $n }, coil TC{ $n }, current value TN{ $n }; `OUT T{ $n } K50` in a program
+tbl-element-counter = C{ $n }: 16-bit up counter (C0–C199); contact C{ $n } = CS{ $n }, coil CC{ $n }, current value CN{ $n }
+tbl-element-counter32 = C{ $n }: 32-bit up/down counter (C200–C234), counts down while M{ $relay } is on; contact C{ $n } = CS{ $n }, current value CN{ $n }
+tbl-element-hsc = C{ $n }: high-speed counter (C235–C255; not simulated)

@@ -389,3 +389,22 @@ tbl-fx-andd-eq = 32-битный последовательный контакт
 tbl-fx-ord-eq = 32-битный параллельный контакт: S1 = S2
 tbl-fx-nop = ничего
 tbl-fx-end = конец программы: то, что следует дальше, не сканируется
+
+## The K2's Modbus map (src/k2/modbus_map.rs; K2 manual §3.2.1). Modbus table names stay as they are.
+
+tbl-modbus-word-order = `word_order={ $value }` — не порядок слов
+tbl-modbus-word-order-hint = используйте word_order=high-first (порядок S7, по умолчанию) или word_order=low-first
+tbl-modbus-not-in-map = { $operand } нет в карте Modbus K2: по Modbus K2 открывает только I, Q, M, V, AI и AQ (руководство §3.2.1); { $area } ({ $meaning }) недоступна
+tbl-modbus-not-in-map-sm-hint = загрузите в ПЛК вспомогательную программу plcsh (lib/k2_agent.il, docs/agent.md) и подключайтесь с …&agent=VB3400; у симулятора (sim:MODEL) область SM доступна напрямую
+tbl-modbus-not-in-map-tc-hint = копируйте таймеры и счетчики в V в программе ПЛК и читайте слова V; у симулятора (sim:MODEL) T и C доступны напрямую
+tbl-modbus-past-end = { $operand } за концом области { $area } на { $model }
+tbl-modbus-read-only = { $operand } по Modbus только для чтения ({ $meaning } — это { $table }, которые Modbus записать не может; руководство §3.2.1)
+tbl-modbus-read-only-hint = входы определяются подключением на объекте; записывайте выход (Q, AQ) или память (M, V)
+
+## FX timers and counters by class (src/fx/elements.rs; FX PM "Timers", "Counters")
+
+tbl-element-timer = T{ $n }: таймер { $base } (T{ $first }–T{ $last }); контакт T{ $n } = TS{ $n }, катушка TC{ $n }, текущее значение TN{ $n }; в программе `OUT T{ $n } K50`
+tbl-element-timer-retentive = T{ $n }: таймер { $base } с сохранением (RST сбрасывает его) (T{ $first }–T{ $last }); контакт T{ $n } = TS{ $n }, катушка TC{ $n }, текущее значение TN{ $n }; в программе `OUT T{ $n } K50`
+tbl-element-counter = C{ $n }: 16-битный счетчик вверх (C0–C199); контакт C{ $n } = CS{ $n }, катушка CC{ $n }, текущее значение CN{ $n }
+tbl-element-counter32 = C{ $n }: 32-битный счетчик вверх/вниз (C200–C234), считает вниз, пока включён M{ $relay }; контакт C{ $n } = CS{ $n }, текущее значение CN{ $n }
+tbl-element-hsc = C{ $n }: высокоскоростной счетчик (C235–C255; не моделируется)

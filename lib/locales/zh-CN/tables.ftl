@@ -385,3 +385,22 @@ tbl-fx-andd-eq = 32 位串联触点：S1 = S2
 tbl-fx-ord-eq = 32 位并联触点：S1 = S2
 tbl-fx-nop = 无操作
 tbl-fx-end = 程序结束：其后的内容不被扫描
+
+## The K2's Modbus map (src/k2/modbus_map.rs; K2 manual §3.2.1). Modbus table names stay as they are.
+
+tbl-modbus-word-order = `word_order={ $value }` 不是字顺序
+tbl-modbus-word-order-hint = 请使用 word_order=high-first（S7 顺序，默认）或 word_order=low-first
+tbl-modbus-not-in-map = { $operand } 不在 K2 的 Modbus 映射中：K2 通过 Modbus 只开放 I、Q、M、V、AI 和 AQ（手册 §3.2.1）；无法访问 { $area }（{ $meaning }）
+tbl-modbus-not-in-map-sm-hint = 在 PLC 中安装 plcsh 辅助程序（lib/k2_agent.il，docs/agent.md），并用 …&agent=VB3400 连接；仿真器（sim:MODEL）可直接访问 SM
+tbl-modbus-not-in-map-tc-hint = 在 PLC 程序中把定时器和计数器复制到 V 区，再读取 V 字；仿真器（sim:MODEL）可直接访问 T 和 C
+tbl-modbus-past-end = { $operand } 超出 { $model } 上 { $area } 区的末尾
+tbl-modbus-read-only = { $operand } 通过 Modbus 只读（{ $meaning } 属于 { $table }，Modbus 不能写；手册 §3.2.1）
+tbl-modbus-read-only-hint = 输入由现场接线决定；请改写输出（Q、AQ）或存储区（M、V）
+
+## FX timers and counters by class (src/fx/elements.rs; FX PM "Timers", "Counters")
+
+tbl-element-timer = T{ $n }：{ $base } 计时器（T{ $first }–T{ $last }）；触点 T{ $n } = TS{ $n }，线圈 TC{ $n }，当前值 TN{ $n }；程序中写 `OUT T{ $n } K50`
+tbl-element-timer-retentive = T{ $n }：{ $base } 积算计时器（RST 将其清除）（T{ $first }–T{ $last }）；触点 T{ $n } = TS{ $n }，线圈 TC{ $n }，当前值 TN{ $n }；程序中写 `OUT T{ $n } K50`
+tbl-element-counter = C{ $n }：16 位增计数器（C0–C199）；触点 C{ $n } = CS{ $n }，线圈 CC{ $n }，当前值 CN{ $n }
+tbl-element-counter32 = C{ $n }：32 位增/减计数器（C200–C234），M{ $relay } 为 ON 时减计数；触点 C{ $n } = CS{ $n }，当前值 CN{ $n }
+tbl-element-hsc = C{ $n }：高速计数器（C235–C255；不仿真）
