@@ -38,7 +38,10 @@ fn servo_objects_their_refusals_and_units_read_in_the_users_language() {
     let out = run("ru", "set servo:statusword=1");
     assert!(out.contains("error[unsupported]: servo: statusword (6041.00) только для чтения"), "{out}");
     let out = run("ru", "set servo:target_velocity=300rps");
-    assert!(out.contains("единица `rps` здесь неизвестна; для скорости пишите rpm или dec (единица привода): 300rpm"), "{out}");
+    assert!(
+        out.contains("единица `rps` здесь неизвестна; для скорости пишите rpm или dec (единица привода): 300rpm"),
+        "{out}"
+    );
 
     let out = run("zh-CN", "help servo:target_position");
     has_line(&out, "target_position (607A.00) — 位置模式的目标位置");

@@ -24,11 +24,11 @@ use super::operand::{self, Area, FxOperand, Width as FxWidth};
 use super::space::{FxSpace, Proto};
 use crate::core::msg::{Lang, Msg};
 use crate::core::{DataType, Error, ErrorKind, Result};
-use crate::msg;
 use crate::engine::source::{self, Pos, Stmt};
 use crate::engine::{
     self, ArgKind, CostTable, Cpu, Element, Family, Loc, OperandError, Program, Resolved, SpecialDef, Width,
 };
+use crate::msg;
 
 /// What an FX mnemonic becomes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -140,35 +140,11 @@ pub static INSTRUCTIONS: &[FxDef] = &[
     fx("MRD", (0, 0), K::Plain("LRD"), |l| msg!(lang: l, "tbl-fx-mrd"), "FX PM 2, MPS, MRD and MPP"),
     fx("MPP", (0, 0), K::Plain("LPP"), |l| msg!(lang: l, "tbl-fx-mpp"), "FX PM 2, MPS, MRD and MPP"),
     fx("INV", (0, 0), K::Plain("NOT"), |l| msg!(lang: l, "tbl-fx-inv"), "FX PM 2, Inverse"),
-    fx(
-        "OUT",
-        (1, 2),
-        K::Out,
-        |l| msg!(lang: l, "tbl-fx-out"),
-        "FX PM 2, Out; Timer, Counter (Out & Reset)",
-    ),
+    fx("OUT", (1, 2), K::Out, |l| msg!(lang: l, "tbl-fx-out"), "FX PM 2, Out; Timer, Counter (Out & Reset)"),
     fx("SET", (1, 1), K::Set, |l| msg!(lang: l, "tbl-fx-set"), "FX PM 2, Set and Reset"),
-    fx(
-        "RST",
-        (1, 1),
-        K::Rst,
-        |l| msg!(lang: l, "tbl-fx-rst"),
-        "FX PM 2, Set and Reset; Timer, Counter (Out & Reset)",
-    ),
-    fx(
-        "PLS",
-        (1, 1),
-        K::Pulse { rising: true },
-        |l| msg!(lang: l, "tbl-fx-pls"),
-        "FX PM 2, Pulse (PLS, PLF)",
-    ),
-    fx(
-        "PLF",
-        (1, 1),
-        K::Pulse { rising: false },
-        |l| msg!(lang: l, "tbl-fx-plf"),
-        "FX PM 2, Pulse (PLS, PLF)",
-    ),
+    fx("RST", (1, 1), K::Rst, |l| msg!(lang: l, "tbl-fx-rst"), "FX PM 2, Set and Reset; Timer, Counter (Out & Reset)"),
+    fx("PLS", (1, 1), K::Pulse { rising: true }, |l| msg!(lang: l, "tbl-fx-pls"), "FX PM 2, Pulse (PLS, PLF)"),
+    fx("PLF", (1, 1), K::Pulse { rising: false }, |l| msg!(lang: l, "tbl-fx-plf"), "FX PM 2, Pulse (PLS, PLF)"),
     fx(
         "MOV",
         (2, 2),
@@ -211,7 +187,13 @@ pub static INSTRUCTIONS: &[FxDef] = &[
         |l| msg!(lang: l, "tbl-fx-addp"),
         "FX PM 5, FNC 20 ADD",
     ),
-    fx("DADD", (3, 3), K::Applied { engine: "ADD", wide: true, pulse: false }, |l| msg!(lang: l, "tbl-fx-dadd"), "FX PM 5, FNC 20 ADD"),
+    fx(
+        "DADD",
+        (3, 3),
+        K::Applied { engine: "ADD", wide: true, pulse: false },
+        |l| msg!(lang: l, "tbl-fx-dadd"),
+        "FX PM 5, FNC 20 ADD",
+    ),
     fx(
         "SUB",
         (3, 3),
@@ -226,7 +208,13 @@ pub static INSTRUCTIONS: &[FxDef] = &[
         |l| msg!(lang: l, "tbl-fx-subp"),
         "FX PM 5, FNC 21 SUB",
     ),
-    fx("DSUB", (3, 3), K::Applied { engine: "SUB", wide: true, pulse: false }, |l| msg!(lang: l, "tbl-fx-dsub"), "FX PM 5, FNC 21 SUB"),
+    fx(
+        "DSUB",
+        (3, 3),
+        K::Applied { engine: "SUB", wide: true, pulse: false },
+        |l| msg!(lang: l, "tbl-fx-dsub"),
+        "FX PM 5, FNC 21 SUB",
+    ),
     fx(
         "INC",
         (1, 1),
@@ -262,8 +250,20 @@ pub static INSTRUCTIONS: &[FxDef] = &[
         |l| msg!(lang: l, "tbl-fx-ld-eq"),
         "FX PM 5, FNC 224–230 LD□",
     ),
-    fx("LD>", (2, 2), K::Compare { engine: "LDW>", wide: false }, |l| msg!(lang: l, "tbl-fx-ld-gt"), "FX PM 5, FNC 224–230 LD□"),
-    fx("LD<", (2, 2), K::Compare { engine: "LDW<", wide: false }, |l| msg!(lang: l, "tbl-fx-ld-lt"), "FX PM 5, FNC 224–230 LD□"),
+    fx(
+        "LD>",
+        (2, 2),
+        K::Compare { engine: "LDW>", wide: false },
+        |l| msg!(lang: l, "tbl-fx-ld-gt"),
+        "FX PM 5, FNC 224–230 LD□",
+    ),
+    fx(
+        "LD<",
+        (2, 2),
+        K::Compare { engine: "LDW<", wide: false },
+        |l| msg!(lang: l, "tbl-fx-ld-lt"),
+        "FX PM 5, FNC 224–230 LD□",
+    ),
     fx(
         "LD<>",
         (2, 2),
@@ -619,8 +619,11 @@ impl Builder<'_> {
             // Another family's mnemonic (a K2's or IEC's `TON`): the FX way to write it, not
             // the FX mnemonic nearest in spelling (`TON` is two letters from `MOV`).
             if let Some((_, how)) = FOREIGN.iter().find(|(f, _)| f.eq_ignore_ascii_case(m)) {
-                return Err(load_err(self.file, at, msg!("tbl-fx-unknown", m = m))
-                    .hint(msg!("tbl-fx-foreign-hint", m = m, how = how().text)));
+                return Err(load_err(self.file, at, msg!("tbl-fx-unknown", m = m)).hint(msg!(
+                    "tbl-fx-foreign-hint",
+                    m = m,
+                    how = how().text
+                )));
             }
             let near = suggest(m);
             let mut e = load_err(self.file, at, msg!("tbl-fx-unknown", m = m));
@@ -662,18 +665,10 @@ impl Builder<'_> {
                     Area::TS | Area::CS => {
                         let timer = o.area == Area::TS;
                         let Some((k, kp)) = ops.get(1) else {
-                            return Err(load_err(
-                                self.file,
-                                at,
-                                msg!("tbl-fx-needs-preset", t = t.as_str()),
-                            ));
+                            return Err(load_err(self.file, at, msg!("tbl-fx-needs-preset", t = t.as_str())));
                         };
                         if constant(k).is_none() && !k.to_ascii_uppercase().starts_with('D') {
-                            return Err(load_err(
-                                self.file,
-                                *kp,
-                                msg!("tbl-fx-bad-preset", k = k.as_str()),
-                            ));
+                            return Err(load_err(self.file, *kp, msg!("tbl-fx-bad-preset", k = k.as_str())));
                         }
                         let n = o.index;
                         let special = if timer {
@@ -683,23 +678,15 @@ impl Builder<'_> {
                         } else if n <= C32_LAST {
                             "FXCNT32"
                         } else {
-                            return Err(load_err(
-                                self.file,
-                                *p,
-                                msg!("tbl-fx-hsc-not-simulated", t = t.as_str()),
-                            )
-                            .hint(msg!("tbl-fx-hsc-not-simulated-hint")));
+                            return Err(load_err(self.file, *p, msg!("tbl-fx-hsc-not-simulated", t = t.as_str()))
+                                .hint(msg!("tbl-fx-hsc-not-simulated-hint")));
                         };
                         let wide = special == "FXCNT32";
                         self.emit(at, special, &[(o.canonical(), *p), (value_text(k, wide), *kp)]);
                     }
                     _ => {
                         if ops.len() > 1 {
-                            return Err(load_err(
-                                self.file,
-                                ops[1].1,
-                                msg!("tbl-fx-out-one-operand", t = t.as_str()),
-                            ));
+                            return Err(load_err(self.file, ops[1].1, msg!("tbl-fx-out-one-operand", t = t.as_str())));
                         }
                         self.coil_target(&o, t, *p, m)?;
                         self.emit(at, "ST", &ops[..1]);
@@ -723,13 +710,7 @@ impl Builder<'_> {
                     Area::TS | Area::TN | Area::CS | Area::CN | Area::D if !matches!(o.width, FxWidth::Group(_)) => {
                         self.emit(at, "FXRST", &one(o.canonical(), *p));
                     }
-                    _ => {
-                        return Err(load_err(
-                            self.file,
-                            *p,
-                            msg!("tbl-fx-rst-target", t = t.as_str()),
-                        ))
-                    }
+                    _ => return Err(load_err(self.file, *p, msg!("tbl-fx-rst-target", t = t.as_str()))),
                 }
             }
             K::Pulse { rising } => {
@@ -747,12 +728,8 @@ impl Builder<'_> {
                 if constant(t).is_none() {
                     let o = self.parse(&value_text(t, false), *p)?;
                     if o.area == Area::X {
-                        return Err(load_err(
-                            self.file,
-                            *p,
-                            msg!("tbl-fx-input-written", m = m, t = t.as_str()),
-                        )
-                        .hint(msg!("tbl-fx-input-written-hint")));
+                        return Err(load_err(self.file, *p, msg!("tbl-fx-input-written", m = m, t = t.as_str()))
+                            .hint(msg!("tbl-fx-input-written-hint")));
                     }
                 }
                 let vals: Vec<(String, Pos)> = ops.iter().map(|(t, p)| (value_text(t, wide), *p)).collect();
@@ -774,8 +751,9 @@ impl Builder<'_> {
     /// A coil a program may drive: Y, M, S (not an input, not a special relay the CPU drives).
     fn coil_target(&self, o: &FxOperand, t: &str, p: Pos, m: &str) -> Result<()> {
         if !matches!(o.area, Area::Y | Area::M | Area::S) || o.width != FxWidth::Bit {
-            return Err(load_err(self.file, p, msg!("tbl-fx-coil-target", m = m, t = t))
-                .hint(msg!("tbl-fx-coil-target-hint")));
+            return Err(
+                load_err(self.file, p, msg!("tbl-fx-coil-target", m = m, t = t)).hint(msg!("tbl-fx-coil-target-hint"))
+            );
         }
         if operand::system_driven(o.area, o.index) {
             return Err(load_err(self.file, p, msg!("tbl-fx-system-driven", m = m, t = t, operand = o.canonical())));

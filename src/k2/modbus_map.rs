@@ -222,7 +222,11 @@ fn not_in_map(op: &K2Operand) -> Error {
         ),
     )
     .operand(op.canonical())
-    .hint(if op.area == Area::SM { msg!("tbl-modbus-not-in-map-sm-hint") } else { msg!("tbl-modbus-not-in-map-tc-hint") })
+    .hint(if op.area == Area::SM {
+        msg!("tbl-modbus-not-in-map-sm-hint")
+    } else {
+        msg!("tbl-modbus-not-in-map-tc-hint")
+    })
 }
 
 fn span_in(space: &K2Space, table: Table, op: &K2Operand) -> Result<Span> {
@@ -271,7 +275,8 @@ pub fn locate_write(space: &K2Space, op: &K2Operand) -> Result<Span> {
                     "tbl-modbus-read-only",
                     operand = op.canonical(),
                     meaning = op.area.meaning().to_string(),
-                    table = if op.area == Area::I { Table::DiscreteInputs.name() } else { Table::InputRegisters.name() }
+                    table =
+                        if op.area == Area::I { Table::DiscreteInputs.name() } else { Table::InputRegisters.name() }
                 ),
             )
             .operand(op.canonical())

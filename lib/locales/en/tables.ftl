@@ -396,3 +396,126 @@ tbl-element-timer-retentive = T{ $n }: { $base } timer, retentive (RST clears it
 tbl-element-counter = C{ $n }: 16-bit up counter (C0–C199); contact C{ $n } = CS{ $n }, coil CC{ $n }, current value CN{ $n }
 tbl-element-counter32 = C{ $n }: 32-bit up/down counter (C200–C234), counts down while M{ $relay } is on; contact C{ $n } = CS{ $n }, current value CN{ $n }
 tbl-element-hsc = C{ $n }: high-speed counter (C235–C255; not simulated)
+
+## The core IL instruction set (src/engine/isa.rs; K2 manual §3.4.3.1, K80S CPU chapter, IEC 61131-3, S7-200 convention)
+
+tbl-il-ld = CR := bit (the old CR is pushed)
+tbl-il-ldn = CR := NOT bit
+tbl-il-and = CR := CR AND bit
+tbl-il-a = CR := CR AND bit
+tbl-il-andn = CR := CR AND NOT bit
+tbl-il-an = CR := CR AND NOT bit
+tbl-il-or = CR := CR OR bit
+tbl-il-o = CR := CR OR bit
+tbl-il-orn = CR := CR OR NOT bit
+tbl-il-on = CR := CR OR NOT bit
+tbl-il-xor = CR := CR XOR bit
+tbl-il-xorn = CR := CR XOR NOT bit
+tbl-il-and-paren = open: CR := CR AND ( … )
+tbl-il-andn-paren = open: CR := CR AND NOT ( … )
+tbl-il-or-paren = open: CR := CR OR ( … )
+tbl-il-orn-paren = open: CR := CR OR NOT ( … )
+tbl-il-xor-paren = open: CR := CR XOR ( … )
+tbl-il-xorn-paren = open: CR := CR XOR NOT ( … )
+tbl-il-close = close the innermost parenthesis
+tbl-il-not = CR := NOT CR
+tbl-il-st = bit := CR
+tbl-il-assign = bit := CR
+tbl-il-stn = bit := NOT CR
+tbl-il-s = if CR: set bit (N bits with `S bit, N`; a T/C is set on)
+tbl-il-r = if CR: reset bit (N bits); a timer or counter: value and bit cleared
+tbl-il-ald = AND the top two logic-stack levels
+tbl-il-old = OR the top two logic-stack levels
+tbl-il-lps = push a copy of the CR
+tbl-il-lrd = CR := the second stack level
+tbl-il-lpp = pop the stack into the CR
+tbl-il-r-trig = CR := CR rose since this instruction last ran
+tbl-il-eu = rising edge (S7-200 name of R_TRIG)
+tbl-il-f-trig = CR := CR fell since this instruction last ran
+tbl-il-ed = falling edge (S7-200 name of F_TRIG)
+tbl-il-move = if CR: OUT := IN (type of OUT)
+tbl-il-movb = byte move
+tbl-il-movw = word move
+tbl-il-movd = double-word move
+tbl-il-movr = REAL move
+tbl-il-blkmove = if CR: copy N elements IN… → OUT…
+tbl-il-bmb = block move of N bytes
+tbl-il-bmw = block move of N words
+tbl-il-bmd = block move of N double words
+tbl-il-fill = if CR: N words from OUT := IN
+tbl-il-add = OUT := OUT + IN, or OUT := IN1 + IN2
+tbl-il-sub = OUT := OUT − IN, or IN1 − IN2
+tbl-il-mul = OUT := OUT × IN, or IN1 × IN2
+tbl-il-div = OUT := OUT ÷ IN, or IN1 ÷ IN2 (÷0: ENO = 0)
+tbl-il-mod = remainder
+tbl-il-add-i = INT add
+tbl-il-sub-i = INT subtract
+tbl-il-mul-i = INT multiply
+tbl-il-div-i = INT divide
+tbl-il-add-d = DINT add
+tbl-il-sub-d = DINT subtract
+tbl-il-mul-d = DINT multiply
+tbl-il-div-d = DINT divide
+tbl-il-add-r = REAL add
+tbl-il-sub-r = REAL subtract
+tbl-il-mul-r = REAL multiply
+tbl-il-div-r = REAL divide
+tbl-il-inc = if CR: OUT := OUT + 1
+tbl-il-dec = if CR: OUT := OUT − 1
+tbl-il-shl = OUT := OUT shifted left N bits
+tbl-il-shr = OUT := OUT shifted right N bits (logical)
+tbl-il-rol = OUT := OUT rotated left N bits
+tbl-il-ror = OUT := OUT rotated right N bits
+tbl-il-wand = OUT := OUT AND IN (bitwise)
+tbl-il-andw = bitwise AND
+tbl-il-wor = OUT := OUT OR IN (bitwise)
+tbl-il-orw = bitwise OR
+tbl-il-wxor = OUT := OUT XOR IN (bitwise)
+tbl-il-xorw = bitwise XOR
+tbl-il-inv = OUT := NOT OUT (bitwise)
+tbl-il-sqrt = if CR: OUT := √IN (REAL); IN < 0 or NaN: ENO = 0, SM1.1, OUT unchanged; +inf: OUT = +inf, ENO = 0
+tbl-il-abs = if CR: OUT := |IN| (type of OUT); −32768 / −2³¹ wrap to themselves with SM1.1 and ENO = 0; REAL NaN/inf: ENO = 0
+tbl-il-swap = if CR: exchange the high and low byte of a word
+tbl-il-for = FOR INDX, INIT, FINAL: if CR, run the instructions up to NEXT with INDX = INIT … FINAL (INT or DINT; INIT > FINAL: none; nesting ≤ 8)
+tbl-il-next = end of a FOR loop: INDX + 1, back while INDX ≤ FINAL (FINAL re-read; at the type's maximum the loop ends)
+tbl-il-i-di = INT → DINT
+tbl-il-int-to-dint = INT → DINT
+tbl-il-di-i = DINT → INT (out of range: ENO = 0)
+tbl-il-dint-to-int = DINT → INT
+tbl-il-b-i = BYTE → INT
+tbl-il-i-b = INT → BYTE (out of range: ENO = 0)
+tbl-il-di-r = DINT → REAL
+tbl-il-round = REAL → DINT, rounded
+tbl-il-trunc = REAL → DINT, truncated
+tbl-il-i-bcd = INT 0…9999 → BCD (else ENO = 0)
+tbl-il-bcd-i = BCD → INT (bad digit: ENO = 0)
+tbl-il-jmp = jump to LABEL
+tbl-il-jmpc = jump to LABEL if CR
+tbl-il-jmpcn = jump to LABEL if NOT CR
+tbl-il-cal = call subroutine NAME (if CR, in the K2's EN convention)
+tbl-il-calc = call subroutine NAME if CR
+tbl-il-calcn = call subroutine NAME if NOT CR
+tbl-il-ret = return from this POU
+tbl-il-retc = return if CR
+tbl-il-retcn = return if NOT CR
+tbl-il-cret = conditional return (S7-200 name)
+tbl-il-ton = on-delay timer Tn, PT (IN = CR; CR := Q)
+tbl-il-tof = off-delay timer Tn, PT
+tbl-il-toff = off-delay timer (MASTER-K name)
+tbl-il-tp = pulse timer Tn, PT
+tbl-il-tmr = accumulating timer Tn, PT [, reset bit]
+tbl-il-tonr = accumulating timer (S7-200 name)
+tbl-il-tmon = monostable timer Tn, PT
+tbl-il-trtg = retriggerable monostable Tn, PT
+tbl-il-ctu = up counter Cn, PV [, reset bit] (CU = CR)
+tbl-il-ctd = down counter Cn, PV [, load bit] (CD = CR)
+tbl-il-ctud = up/down counter Cn, PV, CD bit [, reset bit]
+tbl-il-ctr = ring counter Cn, PV [, reset bit]
+tbl-il-atch = attach interrupt routine INT_NAME to EVENT
+tbl-il-dtch = detach EVENT
+tbl-il-eni = enable interrupts
+tbl-il-disi = disable interrupts (events wait)
+tbl-il-wdt = restart the watchdog count
+tbl-il-wdr = restart the watchdog count (S7-200 name)
+tbl-il-nop = nothing
+tbl-il-compare = compare IN1 with IN2 and load / AND / OR the result into the CR

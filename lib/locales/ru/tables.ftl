@@ -408,3 +408,126 @@ tbl-element-timer-retentive = T{ $n }: таймер { $base } с сохране�
 tbl-element-counter = C{ $n }: 16-битный счетчик вверх (C0–C199); контакт C{ $n } = CS{ $n }, катушка CC{ $n }, текущее значение CN{ $n }
 tbl-element-counter32 = C{ $n }: 32-битный счетчик вверх/вниз (C200–C234), считает вниз, пока включён M{ $relay }; контакт C{ $n } = CS{ $n }, текущее значение CN{ $n }
 tbl-element-hsc = C{ $n }: высокоскоростной счетчик (C235–C255; не моделируется)
+
+## The core IL instruction set (src/engine/isa.rs; K2 manual §3.4.3.1, K80S CPU chapter, IEC 61131-3, S7-200 convention)
+
+tbl-il-ld = CR := бит (прежний CR сохраняется в стеке)
+tbl-il-ldn = CR := NOT бит
+tbl-il-and = CR := CR AND бит
+tbl-il-a = CR := CR AND бит
+tbl-il-andn = CR := CR AND NOT бит
+tbl-il-an = CR := CR AND NOT бит
+tbl-il-or = CR := CR OR бит
+tbl-il-o = CR := CR OR бит
+tbl-il-orn = CR := CR OR NOT бит
+tbl-il-on = CR := CR OR NOT бит
+tbl-il-xor = CR := CR XOR бит
+tbl-il-xorn = CR := CR XOR NOT бит
+tbl-il-and-paren = открыть: CR := CR AND ( … )
+tbl-il-andn-paren = открыть: CR := CR AND NOT ( … )
+tbl-il-or-paren = открыть: CR := CR OR ( … )
+tbl-il-orn-paren = открыть: CR := CR OR NOT ( … )
+tbl-il-xor-paren = открыть: CR := CR XOR ( … )
+tbl-il-xorn-paren = открыть: CR := CR XOR NOT ( … )
+tbl-il-close = закрыть самую внутреннюю скобку
+tbl-il-not = CR := NOT CR
+tbl-il-st = бит := CR
+tbl-il-assign = бит := CR
+tbl-il-stn = бит := NOT CR
+tbl-il-s = если CR: установить бит (N бит — `S bit, N`; T/C включается)
+tbl-il-r = если CR: сбросить бит (N бит); у таймера или счетчика обнуляются значение и бит
+tbl-il-ald = AND двух верхних уровней логического стека
+tbl-il-old = OR двух верхних уровней логического стека
+tbl-il-lps = сохранить копию CR в стеке
+tbl-il-lrd = CR := второй уровень стека
+tbl-il-lpp = извлечь вершину стека в CR
+tbl-il-r-trig = CR := CR вырос с прошлого выполнения этой инструкции
+tbl-il-eu = передний фронт (имя R_TRIG в S7-200)
+tbl-il-f-trig = CR := CR упал с прошлого выполнения этой инструкции
+tbl-il-ed = задний фронт (имя F_TRIG в S7-200)
+tbl-il-move = если CR: OUT := IN (тип OUT)
+tbl-il-movb = пересылка байта
+tbl-il-movw = пересылка слова
+tbl-il-movd = пересылка двойного слова
+tbl-il-movr = пересылка REAL
+tbl-il-blkmove = если CR: копировать N элементов IN… → OUT…
+tbl-il-bmb = блочная пересылка N байт
+tbl-il-bmw = блочная пересылка N слов
+tbl-il-bmd = блочная пересылка N двойных слов
+tbl-il-fill = если CR: N слов начиная с OUT := IN
+tbl-il-add = OUT := OUT + IN или OUT := IN1 + IN2
+tbl-il-sub = OUT := OUT − IN или IN1 − IN2
+tbl-il-mul = OUT := OUT × IN или IN1 × IN2
+tbl-il-div = OUT := OUT ÷ IN или IN1 ÷ IN2 (÷0: ENO = 0)
+tbl-il-mod = остаток от деления
+tbl-il-add-i = сложение INT
+tbl-il-sub-i = вычитание INT
+tbl-il-mul-i = умножение INT
+tbl-il-div-i = деление INT
+tbl-il-add-d = сложение DINT
+tbl-il-sub-d = вычитание DINT
+tbl-il-mul-d = умножение DINT
+tbl-il-div-d = деление DINT
+tbl-il-add-r = сложение REAL
+tbl-il-sub-r = вычитание REAL
+tbl-il-mul-r = умножение REAL
+tbl-il-div-r = деление REAL
+tbl-il-inc = если CR: OUT := OUT + 1
+tbl-il-dec = если CR: OUT := OUT − 1
+tbl-il-shl = OUT := OUT, сдвинутый влево на N бит
+tbl-il-shr = OUT := OUT, сдвинутый вправо на N бит (логический сдвиг)
+tbl-il-rol = OUT := OUT, циклически сдвинутый влево на N бит
+tbl-il-ror = OUT := OUT, циклически сдвинутый вправо на N бит
+tbl-il-wand = OUT := OUT AND IN (побитно)
+tbl-il-andw = побитовое AND
+tbl-il-wor = OUT := OUT OR IN (побитно)
+tbl-il-orw = побитовое OR
+tbl-il-wxor = OUT := OUT XOR IN (побитно)
+tbl-il-xorw = побитовое XOR
+tbl-il-inv = OUT := NOT OUT (побитно)
+tbl-il-sqrt = если CR: OUT := √IN (REAL); IN < 0 или NaN: ENO = 0, SM1.1, OUT не меняется; +inf: OUT = +inf, ENO = 0
+tbl-il-abs = если CR: OUT := |IN| (тип OUT); −32768 / −2³¹ остаются собой с SM1.1 и ENO = 0; REAL NaN/inf: ENO = 0
+tbl-il-swap = если CR: поменять местами старший и младший байты слова
+tbl-il-for = FOR INDX, INIT, FINAL: если CR, выполнить инструкции до NEXT с INDX = INIT … FINAL (INT или DINT; INIT > FINAL: ни разу; вложенность ≤ 8)
+tbl-il-next = конец цикла FOR: INDX + 1, возврат, пока INDX ≤ FINAL (FINAL читается заново; на максимуме типа цикл заканчивается)
+tbl-il-i-di = INT → DINT
+tbl-il-int-to-dint = INT → DINT
+tbl-il-di-i = DINT → INT (вне диапазона: ENO = 0)
+tbl-il-dint-to-int = DINT → INT
+tbl-il-b-i = BYTE → INT
+tbl-il-i-b = INT → BYTE (вне диапазона: ENO = 0)
+tbl-il-di-r = DINT → REAL
+tbl-il-round = REAL → DINT с округлением
+tbl-il-trunc = REAL → DINT с отбрасыванием дробной части
+tbl-il-i-bcd = INT 0…9999 → BCD (иначе ENO = 0)
+tbl-il-bcd-i = BCD → INT (неверная цифра: ENO = 0)
+tbl-il-jmp = переход на LABEL
+tbl-il-jmpc = переход на LABEL, если CR
+tbl-il-jmpcn = переход на LABEL, если NOT CR
+tbl-il-cal = вызов подпрограммы NAME (если CR, по соглашению EN K2)
+tbl-il-calc = вызов подпрограммы NAME, если CR
+tbl-il-calcn = вызов подпрограммы NAME, если NOT CR
+tbl-il-ret = возврат из этого POU
+tbl-il-retc = возврат, если CR
+tbl-il-retcn = возврат, если NOT CR
+tbl-il-cret = условный возврат (имя в S7-200)
+tbl-il-ton = таймер с задержкой включения Tn, PT (IN = CR; CR := Q)
+tbl-il-tof = таймер с задержкой выключения Tn, PT
+tbl-il-toff = таймер с задержкой выключения (имя в MASTER-K)
+tbl-il-tp = импульсный таймер Tn, PT
+tbl-il-tmr = накопительный таймер Tn, PT [, бит сброса]
+tbl-il-tonr = накопительный таймер (имя в S7-200)
+tbl-il-tmon = одновибратор Tn, PT
+tbl-il-trtg = одновибратор с перезапуском Tn, PT
+tbl-il-ctu = счетчик вверх Cn, PV [, бит сброса] (CU = CR)
+tbl-il-ctd = счетчик вниз Cn, PV [, бит загрузки] (CD = CR)
+tbl-il-ctud = счетчик вверх/вниз Cn, PV, бит CD [, бит сброса]
+tbl-il-ctr = кольцевой счетчик Cn, PV [, бит сброса]
+tbl-il-atch = связать программу обработки прерываний INT_NAME с событием EVENT
+tbl-il-dtch = отвязать событие EVENT
+tbl-il-eni = разрешить прерывания
+tbl-il-disi = запретить прерывания (события ждут)
+tbl-il-wdt = перезапустить счёт сторожевого таймера
+tbl-il-wdr = перезапустить счёт сторожевого таймера (имя в S7-200)
+tbl-il-nop = ничего
+tbl-il-compare = сравнить IN1 с IN2 и загрузить результат в CR / объединить по AND / по OR

@@ -404,3 +404,126 @@ tbl-element-timer-retentive = T{ $n }：{ $base } 积算计时器（RST 将其�
 tbl-element-counter = C{ $n }：16 位增计数器（C0–C199）；触点 C{ $n } = CS{ $n }，线圈 CC{ $n }，当前值 CN{ $n }
 tbl-element-counter32 = C{ $n }：32 位增/减计数器（C200–C234），M{ $relay } 为 ON 时减计数；触点 C{ $n } = CS{ $n }，当前值 CN{ $n }
 tbl-element-hsc = C{ $n }：高速计数器（C235–C255；不仿真）
+
+## The core IL instruction set (src/engine/isa.rs; K2 manual §3.4.3.1, K80S CPU chapter, IEC 61131-3, S7-200 convention)
+
+tbl-il-ld = CR := 位（原 CR 压入堆栈）
+tbl-il-ldn = CR := NOT 位
+tbl-il-and = CR := CR AND 位
+tbl-il-a = CR := CR AND 位
+tbl-il-andn = CR := CR AND NOT 位
+tbl-il-an = CR := CR AND NOT 位
+tbl-il-or = CR := CR OR 位
+tbl-il-o = CR := CR OR 位
+tbl-il-orn = CR := CR OR NOT 位
+tbl-il-on = CR := CR OR NOT 位
+tbl-il-xor = CR := CR XOR 位
+tbl-il-xorn = CR := CR XOR NOT 位
+tbl-il-and-paren = 开括号：CR := CR AND ( … )
+tbl-il-andn-paren = 开括号：CR := CR AND NOT ( … )
+tbl-il-or-paren = 开括号：CR := CR OR ( … )
+tbl-il-orn-paren = 开括号：CR := CR OR NOT ( … )
+tbl-il-xor-paren = 开括号：CR := CR XOR ( … )
+tbl-il-xorn-paren = 开括号：CR := CR XOR NOT ( … )
+tbl-il-close = 关闭最内层括号
+tbl-il-not = CR := NOT CR
+tbl-il-st = 位 := CR
+tbl-il-assign = 位 := CR
+tbl-il-stn = 位 := NOT CR
+tbl-il-s = CR 为 1 时：置位（`S bit, N` 置 N 位；T/C 置为 ON）
+tbl-il-r = CR 为 1 时：复位（N 位）；定时器或计数器：当前值和位清零
+tbl-il-ald = 逻辑堆栈顶部两层相 AND
+tbl-il-old = 逻辑堆栈顶部两层相 OR
+tbl-il-lps = 将 CR 的副本压入堆栈
+tbl-il-lrd = CR := 堆栈第二层
+tbl-il-lpp = 将堆栈弹出到 CR
+tbl-il-r-trig = CR := 自上次执行本指令以来 CR 出现上升沿
+tbl-il-eu = 上升沿（R_TRIG 的 S7-200 名称）
+tbl-il-f-trig = CR := 自上次执行本指令以来 CR 出现下降沿
+tbl-il-ed = 下降沿（F_TRIG 的 S7-200 名称）
+tbl-il-move = CR 为 1 时：OUT := IN（按 OUT 的类型）
+tbl-il-movb = 字节传送
+tbl-il-movw = 字传送
+tbl-il-movd = 双字传送
+tbl-il-movr = REAL 传送
+tbl-il-blkmove = CR 为 1 时：复制 N 个元素 IN… → OUT…
+tbl-il-bmb = N 个字节的块传送
+tbl-il-bmw = N 个字的块传送
+tbl-il-bmd = N 个双字的块传送
+tbl-il-fill = CR 为 1 时：从 OUT 起 N 个字 := IN
+tbl-il-add = OUT := OUT + IN，或 OUT := IN1 + IN2
+tbl-il-sub = OUT := OUT − IN，或 IN1 − IN2
+tbl-il-mul = OUT := OUT × IN，或 IN1 × IN2
+tbl-il-div = OUT := OUT ÷ IN，或 IN1 ÷ IN2（÷0：ENO = 0）
+tbl-il-mod = 余数
+tbl-il-add-i = INT 加法
+tbl-il-sub-i = INT 减法
+tbl-il-mul-i = INT 乘法
+tbl-il-div-i = INT 除法
+tbl-il-add-d = DINT 加法
+tbl-il-sub-d = DINT 减法
+tbl-il-mul-d = DINT 乘法
+tbl-il-div-d = DINT 除法
+tbl-il-add-r = REAL 加法
+tbl-il-sub-r = REAL 减法
+tbl-il-mul-r = REAL 乘法
+tbl-il-div-r = REAL 除法
+tbl-il-inc = CR 为 1 时：OUT := OUT + 1
+tbl-il-dec = CR 为 1 时：OUT := OUT − 1
+tbl-il-shl = OUT := OUT 左移 N 位
+tbl-il-shr = OUT := OUT 右移 N 位（逻辑移位）
+tbl-il-rol = OUT := OUT 循环左移 N 位
+tbl-il-ror = OUT := OUT 循环右移 N 位
+tbl-il-wand = OUT := OUT AND IN（按位）
+tbl-il-andw = 按位 AND
+tbl-il-wor = OUT := OUT OR IN（按位）
+tbl-il-orw = 按位 OR
+tbl-il-wxor = OUT := OUT XOR IN（按位）
+tbl-il-xorw = 按位 XOR
+tbl-il-inv = OUT := NOT OUT（按位）
+tbl-il-sqrt = CR 为 1 时：OUT := √IN（REAL）；IN < 0 或 NaN：ENO = 0，SM1.1，OUT 不变；+inf：OUT = +inf，ENO = 0
+tbl-il-abs = CR 为 1 时：OUT := |IN|（按 OUT 的类型）；−32768 / −2³¹ 保持原值，置 SM1.1 且 ENO = 0；REAL NaN/inf：ENO = 0
+tbl-il-swap = CR 为 1 时：交换字的高字节和低字节
+tbl-il-for = FOR INDX, INIT, FINAL：CR 为 1 时，以 INDX = INIT … FINAL 执行到 NEXT 为止的指令（INT 或 DINT；INIT > FINAL：不执行；嵌套 ≤ 8）
+tbl-il-next = FOR 循环结束：INDX + 1，INDX ≤ FINAL 时返回（重新读取 FINAL；到达类型最大值时循环结束）
+tbl-il-i-di = INT → DINT
+tbl-il-int-to-dint = INT → DINT
+tbl-il-di-i = DINT → INT（超出范围：ENO = 0）
+tbl-il-dint-to-int = DINT → INT
+tbl-il-b-i = BYTE → INT
+tbl-il-i-b = INT → BYTE（超出范围：ENO = 0）
+tbl-il-di-r = DINT → REAL
+tbl-il-round = REAL → DINT，四舍五入
+tbl-il-trunc = REAL → DINT，截尾取整
+tbl-il-i-bcd = INT 0…9999 → BCD（否则 ENO = 0）
+tbl-il-bcd-i = BCD → INT（数字无效：ENO = 0）
+tbl-il-jmp = 跳转到 LABEL
+tbl-il-jmpc = CR 为 1 时跳转到 LABEL
+tbl-il-jmpcn = CR 为 0 时跳转到 LABEL
+tbl-il-cal = 调用子程序 NAME（按 K2 的 EN 约定，CR 为 1 时）
+tbl-il-calc = CR 为 1 时调用子程序 NAME
+tbl-il-calcn = CR 为 0 时调用子程序 NAME
+tbl-il-ret = 从本 POU 返回
+tbl-il-retc = CR 为 1 时返回
+tbl-il-retcn = CR 为 0 时返回
+tbl-il-cret = 条件返回（S7-200 名称）
+tbl-il-ton = 接通延时定时器 Tn, PT（IN = CR；CR := Q）
+tbl-il-tof = 断开延时定时器 Tn, PT
+tbl-il-toff = 断开延时定时器（MASTER-K 名称）
+tbl-il-tp = 脉冲定时器 Tn, PT
+tbl-il-tmr = 积算定时器 Tn, PT [, 复位位]
+tbl-il-tonr = 积算定时器（S7-200 名称）
+tbl-il-tmon = 单稳态定时器 Tn, PT
+tbl-il-trtg = 可重触发单稳态定时器 Tn, PT
+tbl-il-ctu = 增计数器 Cn, PV [, 复位位]（CU = CR）
+tbl-il-ctd = 减计数器 Cn, PV [, 装载位]（CD = CR）
+tbl-il-ctud = 增/减计数器 Cn, PV, CD 位 [, 复位位]
+tbl-il-ctr = 环形计数器 Cn, PV [, 复位位]
+tbl-il-atch = 把中断服务子程序 INT_NAME 连接到中断事件 EVENT
+tbl-il-dtch = 断开中断事件 EVENT
+tbl-il-eni = 允许中断
+tbl-il-disi = 禁止中断（事件等待）
+tbl-il-wdt = 重新开始看门狗定时器计时
+tbl-il-wdr = 重新开始看门狗定时器计时（S7-200 名称）
+tbl-il-nop = 无操作
+tbl-il-compare = 比较 IN1 与 IN2，并把结果装入 CR / 与 CR 相 AND / 相 OR
