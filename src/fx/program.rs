@@ -913,8 +913,10 @@ impl FxFamily {
         let space = FxSpace::new(self.model, Proto::Port);
         let last = o.index as u32 + o.span() as u32 - 1;
         if last > u16::MAX as u32 || !space.exists(o.area, o.index) || !space.exists(o.area, last as u16) {
-            return Err(OperandError::new(format!("{} is not on an {}", o.canonical(), self.model.name))
-                .hint(self.model.summary));
+            return Err(OperandError::new(
+                msg!("tbl-fx-not-on-model", t = o.canonical(), model = self.model.name).text,
+            )
+            .hint(self.model.summary));
         }
         Ok(o)
     }
@@ -927,8 +929,8 @@ impl Family for FxFamily {
     }
 
     fn element(&self, text: &str, _want_timer: bool) -> std::result::Result<Element, OperandError> {
-        Err(OperandError::new(format!("{text}: FX timers and counters are driven by OUT"))
-            .hint("OUT T0 K50 (timer), OUT C0 K10 (counter), RST T0 / RST C0"))
+        Err(OperandError::new(msg!("tbl-fx-element-by-out", text = text).text)
+            .hint(msg!("tbl-fx-element-by-out-hint").text))
     }
 
     fn pointer(&self, _loc: Loc) -> Option<u32> {
@@ -1027,6 +1029,8 @@ mod table_tests {
             "tbl-fx-not-on-model",
             "tbl-fx-no-blocks",
             "tbl-fx-no-blocks-hint",
+            "tbl-fx-element-by-out",
+            "tbl-fx-element-by-out-hint",
         ];
         for id in crate::core::msg::ids(Lang::En) {
             if id.starts_with("tbl-fx-") {
