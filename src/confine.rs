@@ -10,8 +10,10 @@
 //! The write rule itself ([`WriteRule`], [`check_write`]) is here too: the shell's commands
 //! that write files (`trend … to=`, `eeprom dump`, …) hold one, unrestricted outside a sandbox.
 
+use crate::core::msg::Msg;
 use crate::core::url::DeviceUrl;
 use crate::core::{Error, Result};
+use crate::msg;
 use std::path::{Path, PathBuf};
 
 /// Device URL schemes a sandboxed run may open: the in-process simulators.
@@ -39,34 +41,34 @@ pub struct Confinement {
 /// program does) and `sim snapshot save`, the simulators' own controls (`servo sim`, `umpk sim`), opening and
 /// closing devices (`connect`, `close`, `plcsh.connect`), setting the PLC's clock from the
 /// host (`rtc sync`) and the user's folders (`paths`).
-pub const BENCH_ACTIONS: &[(&str, &str)] = &[
-    ("sim clock", "shows or changes the simulator's clock mode"),
-    ("sim input", "drives a simulated input signal"),
-    ("sim quad", "drives a simulated encoder"),
-    ("sim inputs", "lists the simulated input signals"),
-    ("sim retain", "changes the battery-retained ranges"),
-    ("sim program", "loads, unloads or reads the PLC's program"),
-    ("sim cpu", "runs or stops the PLC's CPU"),
-    ("sim stop", "stops the PLC's CPU"),
-    ("sim pause", "pauses the PLC's CPU"),
-    ("sim switch", "moves the PLC's RUN/STOP switch"),
-    ("sim scan", "runs PLC scans by hand"),
-    ("sim break", "sets breakpoints in the PLC's program"),
-    ("sim stepi", "steps the PLC's program"),
-    ("sim stepn", "steps the PLC's program"),
-    ("sim wire", "wires simulated devices together"),
-    ("sim wires", "lists the wiring"),
-    ("sim unwire", "removes wiring"),
-    ("sim snapshot", "restores a saved simulated state"),
-    ("sim snapshots", "lists the saved states"),
-    ("sim fault", "injects or clears faults"),
-    ("sim faults", "lists the injected faults"),
-    ("servo sim", "controls the simulated drive"),
-    ("umpk sim", "controls the simulated UMPK"),
-    ("connect", "opens a device"),
-    ("close", "closes a device"),
-    ("rtc sync", "sets the PLC's clock from the host's"),
-    ("paths", "shows the user's folders"),
+pub const BENCH_ACTIONS: &[(&str, fn() -> Msg)] = &[
+    ("sim clock", || msg!("tbl-bench-sim-clock")),
+    ("sim input", || msg!("tbl-bench-sim-input")),
+    ("sim quad", || msg!("tbl-bench-sim-quad")),
+    ("sim inputs", || msg!("tbl-bench-sim-inputs")),
+    ("sim retain", || msg!("tbl-bench-sim-retain")),
+    ("sim program", || msg!("tbl-bench-sim-program")),
+    ("sim cpu", || msg!("tbl-bench-sim-cpu")),
+    ("sim stop", || msg!("tbl-bench-sim-stop")),
+    ("sim pause", || msg!("tbl-bench-sim-pause")),
+    ("sim switch", || msg!("tbl-bench-sim-switch")),
+    ("sim scan", || msg!("tbl-bench-sim-scan")),
+    ("sim break", || msg!("tbl-bench-sim-break")),
+    ("sim stepi", || msg!("tbl-bench-sim-stepi")),
+    ("sim stepn", || msg!("tbl-bench-sim-stepn")),
+    ("sim wire", || msg!("tbl-bench-sim-wire")),
+    ("sim wires", || msg!("tbl-bench-sim-wires")),
+    ("sim unwire", || msg!("tbl-bench-sim-unwire")),
+    ("sim snapshot", || msg!("tbl-bench-sim-snapshot")),
+    ("sim snapshots", || msg!("tbl-bench-sim-snapshots")),
+    ("sim fault", || msg!("tbl-bench-sim-fault")),
+    ("sim faults", || msg!("tbl-bench-sim-faults")),
+    ("servo sim", || msg!("tbl-bench-servo-sim")),
+    ("umpk sim", || msg!("tbl-bench-umpk-sim")),
+    ("connect", || msg!("tbl-bench-connect")),
+    ("close", || msg!("tbl-bench-close")),
+    ("rtc sync", || msg!("tbl-bench-rtc-sync")),
+    ("paths", || msg!("tbl-bench-paths")),
 ];
 
 /// The bench action a command is (its [`BENCH_ACTIONS`] name), or `None` when it drives the
@@ -116,8 +118,9 @@ pub type WriteRule = Option<Option<PathBuf>>;
 pub fn check_write(rule: &WriteRule, path: &str) -> Result<()> {
     let Some(dir) = rule else { return Ok(()) };
     let Some(dir) = dir else {
-        return Err(Error::unsupported(format!("writing {path} is not allowed in a sandboxed run"))
-            .hint("give the run a directory for its files: plcsh run --sandbox --write-dir DIR"));
+        return Err(
+            Error::unsupported(msg!("tbl-confine-no-write", path = path)).hint(msg!("tbl-confine-no-write-hint"))
+        );
     };
     let dir = crate::core::fspath::canonical(dir).unwrap_or_else(|_| dir.clone());
     let p = Path::new(path);
@@ -125,8 +128,8 @@ pub fn check_write(rule: &WriteRule, path: &str) -> Result<()> {
     let resolved = crate::core::fspath::canonical(parent).ok().map(|d| d.join(p.file_name().unwrap_or_default()));
     match resolved {
         Some(r) if r.starts_with(&dir) && p.file_name().is_some() => Ok(()),
-        _ => Err(Error::unsupported(format!("writing {path} is outside {}", dir.display()))
-            .hint("a sandboxed run writes only under its --write-dir")),
+        _ => Err(Error::unsupported(msg!("tbl-confine-write-outside", path = path, dir = dir.display().to_string()))
+            .hint(msg!("tbl-confine-write-outside-hint"))),
     }
 }
 
@@ -143,13 +146,12 @@ impl Confinement {
     pub fn check_bench(&self, what: &str) -> Result<()> {
         match &self.machine {
             Some(grants) if !grants.iter().any(|g| g == what) => {
-                let why = BENCH_ACTIONS.iter().find(|(n, _)| *n == what).map_or("changes the bench", |(_, w)| *w);
-                Err(Error::unsupported(format!(
-                    "`{what}` is not available to a graded submission: it {why}, which changes the lab's machine rather than drives it"
-                ))
-                .hint(format!(
-                    "a submission drives the lab's devices as its program would on the real machine; a lab that needs this grants it in lab.toml: grants = [\"{what}\"]"
-                )))
+                let why = BENCH_ACTIONS
+                    .iter()
+                    .find(|(n, _)| *n == what)
+                    .map_or_else(|| msg!("tbl-bench-other"), |(_, w)| w());
+                Err(Error::unsupported(msg!("tbl-bench-refused", what = what, why = why.text))
+                    .hint(msg!("tbl-bench-refused-hint", what = what)))
             }
             _ => Ok(()),
         }
@@ -161,10 +163,8 @@ impl Confinement {
         let u = DeviceUrl::parse(url)?;
         let scheme = u.scheme.to_ascii_lowercase();
         if !SIMULATED.contains(&scheme.as_str()) {
-            return Err(Error::unsupported(format!(
-                "{url} is a real device: a sandboxed run opens simulated devices only"
-            ))
-            .hint("in the sandbox use sim:MODEL, sim-servo:, sim-umpk:MODEL or sim-fx:MODEL"));
+            return Err(Error::unsupported(msg!("tbl-confine-real-device", url = url))
+                .hint(msg!("tbl-confine-real-device-hint")));
         }
         if let Some(p) = u.param("program") {
             self.check_read(p)?;
@@ -179,8 +179,8 @@ impl Confinement {
     pub fn check_read(&self, path: &str) -> Result<()> {
         match resolve(Path::new(path)) {
             Some(r) if self.read.iter().any(|d| r.starts_with(d)) => Ok(()),
-            _ => Err(Error::unsupported(format!("reading {path} is outside the sandbox's folders"))
-                .hint(format!("a sandboxed run reads files only under {}", self.folders()))),
+            _ => Err(Error::unsupported(msg!("tbl-confine-read-outside", path = path))
+                .hint(msg!("tbl-confine-read-outside-hint", folders = self.folders()))),
         }
     }
 
@@ -193,10 +193,8 @@ impl Confinement {
     /// folders; a bare name (the user's data directory) is refused.
     pub fn snapshot_file(&self, name: &str, save: bool) -> Result<PathBuf> {
         if !(name.contains('/') || name.ends_with(".json")) {
-            return Err(Error::unsupported(format!(
-                "the named snapshot `{name}` lives in the user's data directory, which a sandboxed run may not touch"
-            ))
-            .hint("give a file path under the write directory, e.g. out/start.json"));
+            return Err(Error::unsupported(msg!("tbl-confine-named-snapshot", name = name))
+                .hint(msg!("tbl-confine-named-snapshot-hint")));
         }
         if save {
             self.check_write(name)?;
@@ -211,7 +209,7 @@ impl Confinement {
             return v.clone();
         }
         if self.read.is_empty() {
-            return "no folder".into();
+            return msg!("tbl-confine-no-folder").text;
         }
         self.read.iter().map(|p| p.display().to_string()).collect::<Vec<_>>().join(", ")
     }
@@ -220,6 +218,26 @@ impl Confinement {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Every bench action's description is in every language, and every `tbl-bench-…` id of
+    /// the catalogue but the refusal's own belongs to an action.
+    #[test]
+    fn every_bench_action_has_its_text_in_every_language() {
+        use crate::core::msg::Lang;
+        let used: Vec<&str> = BENCH_ACTIONS.iter().map(|(_, w)| w().id).collect();
+        for lang in Lang::ALL {
+            let ids = crate::core::msg::ids(*lang);
+            for id in &used {
+                assert!(ids.iter().any(|i| i == id), "{id} has no text in {}", lang.tag());
+            }
+        }
+        let own = ["tbl-bench-refused", "tbl-bench-refused-hint", "tbl-bench-other"];
+        for id in crate::core::msg::ids(Lang::En) {
+            if id.starts_with("tbl-bench-") {
+                assert!(used.contains(&id.as_str()) || own.contains(&id.as_str()), "{id} belongs to no action");
+            }
+        }
+    }
 
     #[test]
     fn real_devices_are_refused_and_simulators_allowed() {

@@ -7,6 +7,9 @@
 //! 61131-3 IL ("IEC") or the S7-200 convention the K2 follows for its memory map and
 //! KincoBuilder for its IL ("S7-200").
 
+use crate::core::msg::{Lang, Msg};
+use crate::msg;
+
 /// Bit-logic operations on the current result (CR).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Logic {
@@ -252,8 +255,8 @@ pub struct Def {
     /// Operand count accepted (min, max).
     pub operands: (u8, u8),
     pub cost: CostClass,
-    /// What it does, for `docs/il.md` and help.
-    pub doc: &'static str,
+    /// What it does, for `docs/il.md` (in English) and help (catalogue `tables.ftl`, ids `tbl-il-…`).
+    pub doc: fn(Lang) -> Msg,
     pub source: &'static str,
 }
 
@@ -262,7 +265,7 @@ const fn d(
     kind: Kind,
     operands: (u8, u8),
     cost: CostClass,
-    doc: &'static str,
+    doc: fn(Lang) -> Msg,
     source: &'static str,
 ) -> Def {
     Def { name, kind, operands, cost, doc, source }
@@ -272,71 +275,72 @@ use CostClass as C;
 use Kind as K;
 
 /// The core instruction set (family instructions come from the family's own table).
+#[rustfmt::skip] // one row per line: an edit to a row changes one line
 pub static CORE: &[Def] = &[
-    d("LD", K::Ld { neg: false }, (1, 1), C::Bit, "CR := bit (the old CR is pushed)", "K2 §3.4.3.1; IEC"),
-    d("LDN", K::Ld { neg: true }, (1, 1), C::Bit, "CR := NOT bit", "IEC"),
-    d("AND", K::Logic { op: Logic::And, neg: false }, (1, 1), C::Bit, "CR := CR AND bit", "IEC"),
-    d("A", K::Logic { op: Logic::And, neg: false }, (1, 1), C::Bit, "CR := CR AND bit", "S7-200"),
-    d("ANDN", K::Logic { op: Logic::And, neg: true }, (1, 1), C::Bit, "CR := CR AND NOT bit", "IEC"),
-    d("AN", K::Logic { op: Logic::And, neg: true }, (1, 1), C::Bit, "CR := CR AND NOT bit", "S7-200"),
-    d("OR", K::Logic { op: Logic::Or, neg: false }, (1, 1), C::Bit, "CR := CR OR bit", "IEC"),
-    d("O", K::Logic { op: Logic::Or, neg: false }, (1, 1), C::Bit, "CR := CR OR bit", "S7-200"),
-    d("ORN", K::Logic { op: Logic::Or, neg: true }, (1, 1), C::Bit, "CR := CR OR NOT bit", "IEC"),
-    d("ON", K::Logic { op: Logic::Or, neg: true }, (1, 1), C::Bit, "CR := CR OR NOT bit", "S7-200"),
-    d("XOR", K::Logic { op: Logic::Xor, neg: false }, (1, 1), C::Bit, "CR := CR XOR bit", "IEC"),
-    d("XORN", K::Logic { op: Logic::Xor, neg: true }, (1, 1), C::Bit, "CR := CR XOR NOT bit", "IEC"),
-    d("AND(", K::ParOpen { op: Logic::And, neg: false }, (0, 1), C::Bit, "open: CR := CR AND ( … )", "IEC"),
-    d("ANDN(", K::ParOpen { op: Logic::And, neg: true }, (0, 1), C::Bit, "open: CR := CR AND NOT ( … )", "IEC"),
-    d("OR(", K::ParOpen { op: Logic::Or, neg: false }, (0, 1), C::Bit, "open: CR := CR OR ( … )", "IEC"),
-    d("ORN(", K::ParOpen { op: Logic::Or, neg: true }, (0, 1), C::Bit, "open: CR := CR OR NOT ( … )", "IEC"),
-    d("XOR(", K::ParOpen { op: Logic::Xor, neg: false }, (0, 1), C::Bit, "open: CR := CR XOR ( … )", "IEC"),
-    d("XORN(", K::ParOpen { op: Logic::Xor, neg: true }, (0, 1), C::Bit, "open: CR := CR XOR NOT ( … )", "IEC"),
-    d(")", K::ParClose, (0, 0), C::Bit, "close the innermost parenthesis", "IEC"),
-    d("NOT", K::Not, (0, 0), C::Bit, "CR := NOT CR", "IEC"),
-    d("ST", K::St { neg: false }, (1, 1), C::Bit, "bit := CR", "K2 §3.4.3.1; IEC"),
-    d("=", K::St { neg: false }, (1, 1), C::Bit, "bit := CR", "S7-200"),
-    d("STN", K::St { neg: true }, (1, 1), C::Bit, "bit := NOT CR", "IEC"),
-    d("S", K::Set, (1, 2), C::Bit, "if CR: set bit (N bits with `S bit, N`; a T/C is set on)", "IEC; S7-200"),
+    d("LD", K::Ld { neg: false }, (1, 1), C::Bit, |l| msg!(lang: l, "tbl-il-ld"), "K2 §3.4.3.1; IEC"),
+    d("LDN", K::Ld { neg: true }, (1, 1), C::Bit, |l| msg!(lang: l, "tbl-il-ldn"), "IEC"),
+    d("AND", K::Logic { op: Logic::And, neg: false }, (1, 1), C::Bit, |l| msg!(lang: l, "tbl-il-and"), "IEC"),
+    d("A", K::Logic { op: Logic::And, neg: false }, (1, 1), C::Bit, |l| msg!(lang: l, "tbl-il-a"), "S7-200"),
+    d("ANDN", K::Logic { op: Logic::And, neg: true }, (1, 1), C::Bit, |l| msg!(lang: l, "tbl-il-andn"), "IEC"),
+    d("AN", K::Logic { op: Logic::And, neg: true }, (1, 1), C::Bit, |l| msg!(lang: l, "tbl-il-an"), "S7-200"),
+    d("OR", K::Logic { op: Logic::Or, neg: false }, (1, 1), C::Bit, |l| msg!(lang: l, "tbl-il-or"), "IEC"),
+    d("O", K::Logic { op: Logic::Or, neg: false }, (1, 1), C::Bit, |l| msg!(lang: l, "tbl-il-o"), "S7-200"),
+    d("ORN", K::Logic { op: Logic::Or, neg: true }, (1, 1), C::Bit, |l| msg!(lang: l, "tbl-il-orn"), "IEC"),
+    d("ON", K::Logic { op: Logic::Or, neg: true }, (1, 1), C::Bit, |l| msg!(lang: l, "tbl-il-on"), "S7-200"),
+    d("XOR", K::Logic { op: Logic::Xor, neg: false }, (1, 1), C::Bit, |l| msg!(lang: l, "tbl-il-xor"), "IEC"),
+    d("XORN", K::Logic { op: Logic::Xor, neg: true }, (1, 1), C::Bit, |l| msg!(lang: l, "tbl-il-xorn"), "IEC"),
+    d("AND(", K::ParOpen { op: Logic::And, neg: false }, (0, 1), C::Bit, |l| msg!(lang: l, "tbl-il-and-paren"), "IEC"),
+    d("ANDN(", K::ParOpen { op: Logic::And, neg: true }, (0, 1), C::Bit, |l| msg!(lang: l, "tbl-il-andn-paren"), "IEC"),
+    d("OR(", K::ParOpen { op: Logic::Or, neg: false }, (0, 1), C::Bit, |l| msg!(lang: l, "tbl-il-or-paren"), "IEC"),
+    d("ORN(", K::ParOpen { op: Logic::Or, neg: true }, (0, 1), C::Bit, |l| msg!(lang: l, "tbl-il-orn-paren"), "IEC"),
+    d("XOR(", K::ParOpen { op: Logic::Xor, neg: false }, (0, 1), C::Bit, |l| msg!(lang: l, "tbl-il-xor-paren"), "IEC"),
+    d("XORN(", K::ParOpen { op: Logic::Xor, neg: true }, (0, 1), C::Bit, |l| msg!(lang: l, "tbl-il-xorn-paren"), "IEC"),
+    d(")", K::ParClose, (0, 0), C::Bit, |l| msg!(lang: l, "tbl-il-close"), "IEC"),
+    d("NOT", K::Not, (0, 0), C::Bit, |l| msg!(lang: l, "tbl-il-not"), "IEC"),
+    d("ST", K::St { neg: false }, (1, 1), C::Bit, |l| msg!(lang: l, "tbl-il-st"), "K2 §3.4.3.1; IEC"),
+    d("=", K::St { neg: false }, (1, 1), C::Bit, |l| msg!(lang: l, "tbl-il-assign"), "S7-200"),
+    d("STN", K::St { neg: true }, (1, 1), C::Bit, |l| msg!(lang: l, "tbl-il-stn"), "IEC"),
+    d("S", K::Set, (1, 2), C::Bit, |l| msg!(lang: l, "tbl-il-s"), "IEC; S7-200"),
     d(
         "R",
         K::Reset,
         (1, 2),
         C::Bit,
-        "if CR: reset bit (N bits); a timer or counter: value and bit cleared",
+        |l| msg!(lang: l, "tbl-il-r"),
         "IEC; S7-200",
     ),
-    d("ALD", K::Ald, (0, 0), C::Bit, "AND the top two logic-stack levels", "S7-200"),
-    d("OLD", K::Old, (0, 0), C::Bit, "OR the top two logic-stack levels", "S7-200"),
-    d("LPS", K::Lps, (0, 0), C::Bit, "push a copy of the CR", "S7-200"),
-    d("LRD", K::Lrd, (0, 0), C::Bit, "CR := the second stack level", "S7-200"),
-    d("LPP", K::Lpp, (0, 0), C::Bit, "pop the stack into the CR", "S7-200"),
-    d("R_TRIG", K::RTrig, (0, 0), C::Bit, "CR := CR rose since this instruction last ran", "K2 §3.4.3.1; IEC"),
-    d("EU", K::RTrig, (0, 0), C::Bit, "rising edge (S7-200 name of R_TRIG)", "S7-200"),
-    d("F_TRIG", K::FTrig, (0, 0), C::Bit, "CR := CR fell since this instruction last ran", "IEC"),
-    d("ED", K::FTrig, (0, 0), C::Bit, "falling edge (S7-200 name of F_TRIG)", "S7-200"),
-    d("MOVE", K::Move { ty: TyHint::Auto }, (2, 2), C::Move, "if CR: OUT := IN (type of OUT)", "K2 §3.4.3.1"),
-    d("MOVB", K::Move { ty: TyHint::Byte }, (2, 2), C::Move, "byte move", "S7-200"),
-    d("MOVW", K::Move { ty: TyHint::Int }, (2, 2), C::Move, "word move", "S7-200"),
-    d("MOVD", K::Move { ty: TyHint::DInt }, (2, 2), C::Move, "double-word move", "S7-200"),
-    d("MOVR", K::Move { ty: TyHint::Real }, (2, 2), C::Move, "REAL move", "S7-200"),
+    d("ALD", K::Ald, (0, 0), C::Bit, |l| msg!(lang: l, "tbl-il-ald"), "S7-200"),
+    d("OLD", K::Old, (0, 0), C::Bit, |l| msg!(lang: l, "tbl-il-old"), "S7-200"),
+    d("LPS", K::Lps, (0, 0), C::Bit, |l| msg!(lang: l, "tbl-il-lps"), "S7-200"),
+    d("LRD", K::Lrd, (0, 0), C::Bit, |l| msg!(lang: l, "tbl-il-lrd"), "S7-200"),
+    d("LPP", K::Lpp, (0, 0), C::Bit, |l| msg!(lang: l, "tbl-il-lpp"), "S7-200"),
+    d("R_TRIG", K::RTrig, (0, 0), C::Bit, |l| msg!(lang: l, "tbl-il-r-trig"), "K2 §3.4.3.1; IEC"),
+    d("EU", K::RTrig, (0, 0), C::Bit, |l| msg!(lang: l, "tbl-il-eu"), "S7-200"),
+    d("F_TRIG", K::FTrig, (0, 0), C::Bit, |l| msg!(lang: l, "tbl-il-f-trig"), "IEC"),
+    d("ED", K::FTrig, (0, 0), C::Bit, |l| msg!(lang: l, "tbl-il-ed"), "S7-200"),
+    d("MOVE", K::Move { ty: TyHint::Auto }, (2, 2), C::Move, |l| msg!(lang: l, "tbl-il-move"), "K2 §3.4.3.1"),
+    d("MOVB", K::Move { ty: TyHint::Byte }, (2, 2), C::Move, |l| msg!(lang: l, "tbl-il-movb"), "S7-200"),
+    d("MOVW", K::Move { ty: TyHint::Int }, (2, 2), C::Move, |l| msg!(lang: l, "tbl-il-movw"), "S7-200"),
+    d("MOVD", K::Move { ty: TyHint::DInt }, (2, 2), C::Move, |l| msg!(lang: l, "tbl-il-movd"), "S7-200"),
+    d("MOVR", K::Move { ty: TyHint::Real }, (2, 2), C::Move, |l| msg!(lang: l, "tbl-il-movr"), "S7-200"),
     d(
         "BLKMOVE",
         K::BlkMove { ty: TyHint::Auto },
         (3, 3),
         C::Move,
-        "if CR: copy N elements IN… → OUT…",
+        |l| msg!(lang: l, "tbl-il-blkmove"),
         "IEC (KincoBuilder name)",
     ),
-    d("BMB", K::BlkMove { ty: TyHint::Byte }, (3, 3), C::Move, "block move of N bytes", "S7-200"),
-    d("BMW", K::BlkMove { ty: TyHint::Int }, (3, 3), C::Move, "block move of N words", "S7-200"),
-    d("BMD", K::BlkMove { ty: TyHint::DInt }, (3, 3), C::Move, "block move of N double words", "S7-200"),
-    d("FILL", K::Fill, (3, 3), C::Move, "if CR: N words from OUT := IN", "S7-200"),
+    d("BMB", K::BlkMove { ty: TyHint::Byte }, (3, 3), C::Move, |l| msg!(lang: l, "tbl-il-bmb"), "S7-200"),
+    d("BMW", K::BlkMove { ty: TyHint::Int }, (3, 3), C::Move, |l| msg!(lang: l, "tbl-il-bmw"), "S7-200"),
+    d("BMD", K::BlkMove { ty: TyHint::DInt }, (3, 3), C::Move, |l| msg!(lang: l, "tbl-il-bmd"), "S7-200"),
+    d("FILL", K::Fill, (3, 3), C::Move, |l| msg!(lang: l, "tbl-il-fill"), "S7-200"),
     d(
         "ADD",
         K::Arith { op: Arith::Add, ty: TyHint::Auto },
         (2, 3),
         C::Arith,
-        "OUT := OUT + IN, or OUT := IN1 + IN2",
+        |l| msg!(lang: l, "tbl-il-add"),
         "IEC; S7-200",
     ),
     d(
@@ -344,7 +348,7 @@ pub static CORE: &[Def] = &[
         K::Arith { op: Arith::Sub, ty: TyHint::Auto },
         (2, 3),
         C::Arith,
-        "OUT := OUT − IN, or IN1 − IN2",
+        |l| msg!(lang: l, "tbl-il-sub"),
         "IEC; S7-200",
     ),
     d(
@@ -352,7 +356,7 @@ pub static CORE: &[Def] = &[
         K::Arith { op: Arith::Mul, ty: TyHint::Auto },
         (2, 3),
         C::Arith,
-        "OUT := OUT × IN, or IN1 × IN2",
+        |l| msg!(lang: l, "tbl-il-mul"),
         "IEC; S7-200",
     ),
     d(
@@ -360,41 +364,41 @@ pub static CORE: &[Def] = &[
         K::Arith { op: Arith::Div, ty: TyHint::Auto },
         (2, 3),
         C::Arith,
-        "OUT := OUT ÷ IN, or IN1 ÷ IN2 (÷0: ENO = 0)",
+        |l| msg!(lang: l, "tbl-il-div"),
         "IEC; S7-200",
     ),
-    d("MOD", K::Arith { op: Arith::Mod, ty: TyHint::Auto }, (2, 3), C::Arith, "remainder", "IEC"),
-    d("+I", K::Arith { op: Arith::Add, ty: TyHint::Int }, (2, 2), C::Arith, "INT add", "S7-200"),
-    d("-I", K::Arith { op: Arith::Sub, ty: TyHint::Int }, (2, 2), C::Arith, "INT subtract", "S7-200"),
-    d("*I", K::Arith { op: Arith::Mul, ty: TyHint::Int }, (2, 2), C::Arith, "INT multiply", "S7-200"),
-    d("/I", K::Arith { op: Arith::Div, ty: TyHint::Int }, (2, 2), C::Arith, "INT divide", "S7-200"),
-    d("+D", K::Arith { op: Arith::Add, ty: TyHint::DInt }, (2, 2), C::Arith, "DINT add", "S7-200"),
-    d("-D", K::Arith { op: Arith::Sub, ty: TyHint::DInt }, (2, 2), C::Arith, "DINT subtract", "S7-200"),
-    d("*D", K::Arith { op: Arith::Mul, ty: TyHint::DInt }, (2, 2), C::Arith, "DINT multiply", "S7-200"),
-    d("/D", K::Arith { op: Arith::Div, ty: TyHint::DInt }, (2, 2), C::Arith, "DINT divide", "S7-200"),
-    d("+R", K::Arith { op: Arith::Add, ty: TyHint::Real }, (2, 2), C::Real, "REAL add", "S7-200"),
-    d("-R", K::Arith { op: Arith::Sub, ty: TyHint::Real }, (2, 2), C::Real, "REAL subtract", "S7-200"),
-    d("*R", K::Arith { op: Arith::Mul, ty: TyHint::Real }, (2, 2), C::Real, "REAL multiply", "S7-200"),
-    d("/R", K::Arith { op: Arith::Div, ty: TyHint::Real }, (2, 2), C::Real, "REAL divide", "S7-200"),
-    d("INC", K::IncDec { inc: true, ty: TyHint::Auto }, (1, 1), C::Arith, "if CR: OUT := OUT + 1", "IEC; S7-200"),
-    d("DEC", K::IncDec { inc: false, ty: TyHint::Auto }, (1, 1), C::Arith, "if CR: OUT := OUT − 1", "IEC; S7-200"),
-    d("SHL", K::Shift { op: Shift::Shl }, (2, 2), C::Arith, "OUT := OUT shifted left N bits", "IEC"),
-    d("SHR", K::Shift { op: Shift::Shr }, (2, 2), C::Arith, "OUT := OUT shifted right N bits (logical)", "IEC"),
-    d("ROL", K::Shift { op: Shift::Rol }, (2, 2), C::Arith, "OUT := OUT rotated left N bits", "IEC"),
-    d("ROR", K::Shift { op: Shift::Ror }, (2, 2), C::Arith, "OUT := OUT rotated right N bits", "IEC"),
-    d("WAND", K::WordLogic { op: Logic::And }, (2, 3), C::Arith, "OUT := OUT AND IN (bitwise)", "S7-200 (ANDW)"),
-    d("ANDW", K::WordLogic { op: Logic::And }, (2, 3), C::Arith, "bitwise AND", "S7-200"),
-    d("WOR", K::WordLogic { op: Logic::Or }, (2, 3), C::Arith, "OUT := OUT OR IN (bitwise)", "S7-200 (ORW)"),
-    d("ORW", K::WordLogic { op: Logic::Or }, (2, 3), C::Arith, "bitwise OR", "S7-200"),
-    d("WXOR", K::WordLogic { op: Logic::Xor }, (2, 3), C::Arith, "OUT := OUT XOR IN (bitwise)", "S7-200 (XORW)"),
-    d("XORW", K::WordLogic { op: Logic::Xor }, (2, 3), C::Arith, "bitwise XOR", "S7-200"),
-    d("INV", K::Inv, (1, 1), C::Arith, "OUT := NOT OUT (bitwise)", "S7-200 (INVW)"),
+    d("MOD", K::Arith { op: Arith::Mod, ty: TyHint::Auto }, (2, 3), C::Arith, |l| msg!(lang: l, "tbl-il-mod"), "IEC"),
+    d("+I", K::Arith { op: Arith::Add, ty: TyHint::Int }, (2, 2), C::Arith, |l| msg!(lang: l, "tbl-il-add-i"), "S7-200"),
+    d("-I", K::Arith { op: Arith::Sub, ty: TyHint::Int }, (2, 2), C::Arith, |l| msg!(lang: l, "tbl-il-sub-i"), "S7-200"),
+    d("*I", K::Arith { op: Arith::Mul, ty: TyHint::Int }, (2, 2), C::Arith, |l| msg!(lang: l, "tbl-il-mul-i"), "S7-200"),
+    d("/I", K::Arith { op: Arith::Div, ty: TyHint::Int }, (2, 2), C::Arith, |l| msg!(lang: l, "tbl-il-div-i"), "S7-200"),
+    d("+D", K::Arith { op: Arith::Add, ty: TyHint::DInt }, (2, 2), C::Arith, |l| msg!(lang: l, "tbl-il-add-d"), "S7-200"),
+    d("-D", K::Arith { op: Arith::Sub, ty: TyHint::DInt }, (2, 2), C::Arith, |l| msg!(lang: l, "tbl-il-sub-d"), "S7-200"),
+    d("*D", K::Arith { op: Arith::Mul, ty: TyHint::DInt }, (2, 2), C::Arith, |l| msg!(lang: l, "tbl-il-mul-d"), "S7-200"),
+    d("/D", K::Arith { op: Arith::Div, ty: TyHint::DInt }, (2, 2), C::Arith, |l| msg!(lang: l, "tbl-il-div-d"), "S7-200"),
+    d("+R", K::Arith { op: Arith::Add, ty: TyHint::Real }, (2, 2), C::Real, |l| msg!(lang: l, "tbl-il-add-r"), "S7-200"),
+    d("-R", K::Arith { op: Arith::Sub, ty: TyHint::Real }, (2, 2), C::Real, |l| msg!(lang: l, "tbl-il-sub-r"), "S7-200"),
+    d("*R", K::Arith { op: Arith::Mul, ty: TyHint::Real }, (2, 2), C::Real, |l| msg!(lang: l, "tbl-il-mul-r"), "S7-200"),
+    d("/R", K::Arith { op: Arith::Div, ty: TyHint::Real }, (2, 2), C::Real, |l| msg!(lang: l, "tbl-il-div-r"), "S7-200"),
+    d("INC", K::IncDec { inc: true, ty: TyHint::Auto }, (1, 1), C::Arith, |l| msg!(lang: l, "tbl-il-inc"), "IEC; S7-200"),
+    d("DEC", K::IncDec { inc: false, ty: TyHint::Auto }, (1, 1), C::Arith, |l| msg!(lang: l, "tbl-il-dec"), "IEC; S7-200"),
+    d("SHL", K::Shift { op: Shift::Shl }, (2, 2), C::Arith, |l| msg!(lang: l, "tbl-il-shl"), "IEC"),
+    d("SHR", K::Shift { op: Shift::Shr }, (2, 2), C::Arith, |l| msg!(lang: l, "tbl-il-shr"), "IEC"),
+    d("ROL", K::Shift { op: Shift::Rol }, (2, 2), C::Arith, |l| msg!(lang: l, "tbl-il-rol"), "IEC"),
+    d("ROR", K::Shift { op: Shift::Ror }, (2, 2), C::Arith, |l| msg!(lang: l, "tbl-il-ror"), "IEC"),
+    d("WAND", K::WordLogic { op: Logic::And }, (2, 3), C::Arith, |l| msg!(lang: l, "tbl-il-wand"), "S7-200 (ANDW)"),
+    d("ANDW", K::WordLogic { op: Logic::And }, (2, 3), C::Arith, |l| msg!(lang: l, "tbl-il-andw"), "S7-200"),
+    d("WOR", K::WordLogic { op: Logic::Or }, (2, 3), C::Arith, |l| msg!(lang: l, "tbl-il-wor"), "S7-200 (ORW)"),
+    d("ORW", K::WordLogic { op: Logic::Or }, (2, 3), C::Arith, |l| msg!(lang: l, "tbl-il-orw"), "S7-200"),
+    d("WXOR", K::WordLogic { op: Logic::Xor }, (2, 3), C::Arith, |l| msg!(lang: l, "tbl-il-wxor"), "S7-200 (XORW)"),
+    d("XORW", K::WordLogic { op: Logic::Xor }, (2, 3), C::Arith, |l| msg!(lang: l, "tbl-il-xorw"), "S7-200"),
+    d("INV", K::Inv, (1, 1), C::Arith, |l| msg!(lang: l, "tbl-il-inv"), "S7-200 (INVW)"),
     d(
         "SQRT",
         K::Unary(Unary::Sqrt),
         (2, 2),
         C::Real,
-        "if CR: OUT := √IN (REAL); IN < 0 or NaN: ENO = 0, SM1.1, OUT unchanged; +inf: OUT = +inf, ENO = 0",
+        |l| msg!(lang: l, "tbl-il-sqrt"),
         "S7-200 System Manual, Square Root (SQRT)",
     ),
     d(
@@ -402,7 +406,7 @@ pub static CORE: &[Def] = &[
         K::Unary(Unary::Abs),
         (2, 2),
         C::Arith,
-        "if CR: OUT := |IN| (type of OUT); −32768 / −2³¹ wrap to themselves with SM1.1 and ENO = 0; REAL NaN/inf: ENO = 0",
+        |l| msg!(lang: l, "tbl-il-abs"),
         "IEC 61131-3 ABS (KincoBuilder IL)",
     ),
     d(
@@ -410,7 +414,7 @@ pub static CORE: &[Def] = &[
         K::Swap,
         (1, 1),
         C::Move,
-        "if CR: exchange the high and low byte of a word",
+        |l| msg!(lang: l, "tbl-il-swap"),
         "S7-200 System Manual, Swap Bytes (SWAP)",
     ),
     d(
@@ -418,7 +422,7 @@ pub static CORE: &[Def] = &[
         K::For,
         (3, 3),
         C::Jump,
-        "FOR INDX, INIT, FINAL: if CR, run the instructions up to NEXT with INDX = INIT … FINAL (INT or DINT; INIT > FINAL: none; nesting ≤ 8)",
+        |l| msg!(lang: l, "tbl-il-for"),
         "S7-200 System Manual, For-Next Loop (FOR, NEXT)",
     ),
     d(
@@ -426,56 +430,56 @@ pub static CORE: &[Def] = &[
         K::Next,
         (0, 0),
         C::Jump,
-        "end of a FOR loop: INDX + 1, back while INDX ≤ FINAL (FINAL re-read; at the type's maximum the loop ends)",
+        |l| msg!(lang: l, "tbl-il-next"),
         "S7-200 System Manual, For-Next Loop (FOR, NEXT)",
     ),
-    d("I_DI", K::Conv(Conv::IDi), (2, 2), C::Move, "INT → DINT", "S7-200"),
-    d("INT_TO_DINT", K::Conv(Conv::IDi), (2, 2), C::Move, "INT → DINT", "IEC"),
-    d("DI_I", K::Conv(Conv::DiI), (2, 2), C::Move, "DINT → INT (out of range: ENO = 0)", "S7-200"),
-    d("DINT_TO_INT", K::Conv(Conv::DiI), (2, 2), C::Move, "DINT → INT", "IEC"),
-    d("B_I", K::Conv(Conv::BI), (2, 2), C::Move, "BYTE → INT", "S7-200"),
-    d("I_B", K::Conv(Conv::IB), (2, 2), C::Move, "INT → BYTE (out of range: ENO = 0)", "S7-200"),
-    d("DI_R", K::Conv(Conv::DiR), (2, 2), C::Real, "DINT → REAL", "S7-200"),
-    d("ROUND", K::Conv(Conv::Round), (2, 2), C::Real, "REAL → DINT, rounded", "S7-200"),
-    d("TRUNC", K::Conv(Conv::Trunc), (2, 2), C::Real, "REAL → DINT, truncated", "S7-200; IEC"),
-    d("I_BCD", K::Conv(Conv::IBcd), (2, 2), C::Move, "INT 0…9999 → BCD (else ENO = 0)", "S7-200"),
-    d("BCD_I", K::Conv(Conv::BcdI), (2, 2), C::Move, "BCD → INT (bad digit: ENO = 0)", "S7-200"),
-    d("JMP", K::Jmp, (1, 1), C::Jump, "jump to LABEL", "IEC"),
-    d("JMPC", K::Jmpc { neg: false }, (1, 1), C::Jump, "jump to LABEL if CR", "IEC"),
-    d("JMPCN", K::Jmpc { neg: true }, (1, 1), C::Jump, "jump to LABEL if NOT CR", "IEC"),
-    d("CAL", K::Cal, (1, 1), C::Call, "call subroutine NAME (if CR, in the K2's EN convention)", "IEC; K2 helper"),
-    d("CALC", K::Calc { neg: false }, (1, 1), C::Call, "call subroutine NAME if CR", "IEC"),
-    d("CALCN", K::Calc { neg: true }, (1, 1), C::Call, "call subroutine NAME if NOT CR", "IEC"),
-    d("RET", K::Ret, (0, 0), C::Jump, "return from this POU", "IEC"),
-    d("RETC", K::Retc { neg: false }, (0, 0), C::Jump, "return if CR", "IEC"),
-    d("RETCN", K::Retc { neg: true }, (0, 0), C::Jump, "return if NOT CR", "IEC"),
-    d("CRET", K::Retc { neg: false }, (0, 0), C::Jump, "conditional return (S7-200 name)", "S7-200"),
-    d("TON", K::Timer(TimerKind::Ton), (2, 2), C::Timer, "on-delay timer Tn, PT (IN = CR; CR := Q)", "K2 §2.1.2; K80S"),
-    d("TOF", K::Timer(TimerKind::Tof), (2, 2), C::Timer, "off-delay timer Tn, PT", "K2; IEC"),
-    d("TOFF", K::Timer(TimerKind::Tof), (2, 2), C::Timer, "off-delay timer (MASTER-K name)", "K80S"),
-    d("TP", K::Timer(TimerKind::Tp), (2, 2), C::Timer, "pulse timer Tn, PT", "IEC"),
-    d("TMR", K::Timer(TimerKind::Tmr), (2, 3), C::Timer, "accumulating timer Tn, PT [, reset bit]", "K80S"),
-    d("TONR", K::Timer(TimerKind::Tmr), (2, 3), C::Timer, "accumulating timer (S7-200 name)", "S7-200"),
-    d("TMON", K::Timer(TimerKind::Tmon), (2, 2), C::Timer, "monostable timer Tn, PT", "K80S"),
-    d("TRTG", K::Timer(TimerKind::Trtg), (2, 2), C::Timer, "retriggerable monostable Tn, PT", "K80S"),
-    d("CTU", K::Counter(CounterKind::Ctu), (2, 3), C::Timer, "up counter Cn, PV [, reset bit] (CU = CR)", "K80S; IEC"),
-    d("CTD", K::Counter(CounterKind::Ctd), (2, 3), C::Timer, "down counter Cn, PV [, load bit] (CD = CR)", "K80S; IEC"),
+    d("I_DI", K::Conv(Conv::IDi), (2, 2), C::Move, |l| msg!(lang: l, "tbl-il-i-di"), "S7-200"),
+    d("INT_TO_DINT", K::Conv(Conv::IDi), (2, 2), C::Move, |l| msg!(lang: l, "tbl-il-int-to-dint"), "IEC"),
+    d("DI_I", K::Conv(Conv::DiI), (2, 2), C::Move, |l| msg!(lang: l, "tbl-il-di-i"), "S7-200"),
+    d("DINT_TO_INT", K::Conv(Conv::DiI), (2, 2), C::Move, |l| msg!(lang: l, "tbl-il-dint-to-int"), "IEC"),
+    d("B_I", K::Conv(Conv::BI), (2, 2), C::Move, |l| msg!(lang: l, "tbl-il-b-i"), "S7-200"),
+    d("I_B", K::Conv(Conv::IB), (2, 2), C::Move, |l| msg!(lang: l, "tbl-il-i-b"), "S7-200"),
+    d("DI_R", K::Conv(Conv::DiR), (2, 2), C::Real, |l| msg!(lang: l, "tbl-il-di-r"), "S7-200"),
+    d("ROUND", K::Conv(Conv::Round), (2, 2), C::Real, |l| msg!(lang: l, "tbl-il-round"), "S7-200"),
+    d("TRUNC", K::Conv(Conv::Trunc), (2, 2), C::Real, |l| msg!(lang: l, "tbl-il-trunc"), "S7-200; IEC"),
+    d("I_BCD", K::Conv(Conv::IBcd), (2, 2), C::Move, |l| msg!(lang: l, "tbl-il-i-bcd"), "S7-200"),
+    d("BCD_I", K::Conv(Conv::BcdI), (2, 2), C::Move, |l| msg!(lang: l, "tbl-il-bcd-i"), "S7-200"),
+    d("JMP", K::Jmp, (1, 1), C::Jump, |l| msg!(lang: l, "tbl-il-jmp"), "IEC"),
+    d("JMPC", K::Jmpc { neg: false }, (1, 1), C::Jump, |l| msg!(lang: l, "tbl-il-jmpc"), "IEC"),
+    d("JMPCN", K::Jmpc { neg: true }, (1, 1), C::Jump, |l| msg!(lang: l, "tbl-il-jmpcn"), "IEC"),
+    d("CAL", K::Cal, (1, 1), C::Call, |l| msg!(lang: l, "tbl-il-cal"), "IEC; K2 helper"),
+    d("CALC", K::Calc { neg: false }, (1, 1), C::Call, |l| msg!(lang: l, "tbl-il-calc"), "IEC"),
+    d("CALCN", K::Calc { neg: true }, (1, 1), C::Call, |l| msg!(lang: l, "tbl-il-calcn"), "IEC"),
+    d("RET", K::Ret, (0, 0), C::Jump, |l| msg!(lang: l, "tbl-il-ret"), "IEC"),
+    d("RETC", K::Retc { neg: false }, (0, 0), C::Jump, |l| msg!(lang: l, "tbl-il-retc"), "IEC"),
+    d("RETCN", K::Retc { neg: true }, (0, 0), C::Jump, |l| msg!(lang: l, "tbl-il-retcn"), "IEC"),
+    d("CRET", K::Retc { neg: false }, (0, 0), C::Jump, |l| msg!(lang: l, "tbl-il-cret"), "S7-200"),
+    d("TON", K::Timer(TimerKind::Ton), (2, 2), C::Timer, |l| msg!(lang: l, "tbl-il-ton"), "K2 §2.1.2; K80S"),
+    d("TOF", K::Timer(TimerKind::Tof), (2, 2), C::Timer, |l| msg!(lang: l, "tbl-il-tof"), "K2; IEC"),
+    d("TOFF", K::Timer(TimerKind::Tof), (2, 2), C::Timer, |l| msg!(lang: l, "tbl-il-toff"), "K80S"),
+    d("TP", K::Timer(TimerKind::Tp), (2, 2), C::Timer, |l| msg!(lang: l, "tbl-il-tp"), "IEC"),
+    d("TMR", K::Timer(TimerKind::Tmr), (2, 3), C::Timer, |l| msg!(lang: l, "tbl-il-tmr"), "K80S"),
+    d("TONR", K::Timer(TimerKind::Tmr), (2, 3), C::Timer, |l| msg!(lang: l, "tbl-il-tonr"), "S7-200"),
+    d("TMON", K::Timer(TimerKind::Tmon), (2, 2), C::Timer, |l| msg!(lang: l, "tbl-il-tmon"), "K80S"),
+    d("TRTG", K::Timer(TimerKind::Trtg), (2, 2), C::Timer, |l| msg!(lang: l, "tbl-il-trtg"), "K80S"),
+    d("CTU", K::Counter(CounterKind::Ctu), (2, 3), C::Timer, |l| msg!(lang: l, "tbl-il-ctu"), "K80S; IEC"),
+    d("CTD", K::Counter(CounterKind::Ctd), (2, 3), C::Timer, |l| msg!(lang: l, "tbl-il-ctd"), "K80S; IEC"),
     d(
         "CTUD",
         K::Counter(CounterKind::Ctud),
         (3, 4),
         C::Timer,
-        "up/down counter Cn, PV, CD bit [, reset bit]",
+        |l| msg!(lang: l, "tbl-il-ctud"),
         "K80S; IEC",
     ),
-    d("CTR", K::Counter(CounterKind::Ctr), (2, 3), C::Timer, "ring counter Cn, PV [, reset bit]", "K80S"),
-    d("ATCH", K::Atch, (2, 2), C::Special, "attach interrupt routine INT_NAME to EVENT", "K2 §3.3, §3.4"),
-    d("DTCH", K::Dtch, (1, 1), C::Special, "detach EVENT", "K2; S7-200"),
-    d("ENI", K::Eni, (0, 0), C::Special, "enable interrupts", "K2; S7-200"),
-    d("DISI", K::Disi, (0, 0), C::Special, "disable interrupts (events wait)", "K2; S7-200"),
-    d("WDT", K::Wdt, (0, 0), C::Special, "restart the watchdog count", "K80S"),
-    d("WDR", K::Wdt, (0, 0), C::Special, "restart the watchdog count (S7-200 name)", "S7-200"),
-    d("NOP", K::Nop, (0, 1), C::Bit, "nothing", "IEC"),
+    d("CTR", K::Counter(CounterKind::Ctr), (2, 3), C::Timer, |l| msg!(lang: l, "tbl-il-ctr"), "K80S"),
+    d("ATCH", K::Atch, (2, 2), C::Special, |l| msg!(lang: l, "tbl-il-atch"), "K2 §3.3, §3.4"),
+    d("DTCH", K::Dtch, (1, 1), C::Special, |l| msg!(lang: l, "tbl-il-dtch"), "K2; S7-200"),
+    d("ENI", K::Eni, (0, 0), C::Special, |l| msg!(lang: l, "tbl-il-eni"), "K2; S7-200"),
+    d("DISI", K::Disi, (0, 0), C::Special, |l| msg!(lang: l, "tbl-il-disi"), "K2; S7-200"),
+    d("WDT", K::Wdt, (0, 0), C::Special, |l| msg!(lang: l, "tbl-il-wdt"), "K80S"),
+    d("WDR", K::Wdt, (0, 0), C::Special, |l| msg!(lang: l, "tbl-il-wdr"), "S7-200"),
+    d("NOP", K::Nop, (0, 1), C::Bit, |l| msg!(lang: l, "tbl-il-nop"), "IEC"),
 ];
 
 /// Instructions never offered as a "did you mean" for an unknown name, in any family: each
@@ -519,7 +523,7 @@ pub fn compare(m: &str) -> Option<Def> {
         kind: Kind::Compare { comb, ty, op },
         operands: (2, 2),
         cost: CostClass::Compare,
-        doc: "compare IN1 with IN2 and load / AND / OR the result into the CR",
+        doc: |l| msg!(lang: l, "tbl-il-compare"),
         source: "S7-200 (KincoBuilder IL)",
     })
 }
@@ -539,7 +543,7 @@ pub fn markdown(specials: &[super::SpecialDef], family: &str) -> String {
             format!("{}–{}", d.operands.0, d.operands.1)
         };
         let name = d.name.replace('|', "\\|");
-        s.push_str(&format!("| `{name}` | {ops} | {} | {} |\n", d.doc, d.source));
+        s.push_str(&format!("| `{name}` | {ops} | {} | {} |\n", (d.doc)(Lang::En), d.source));
     }
     s.push_str("| `LDB=` … `LDR>=`, `AB=` … `OR<>` | 2 | compare: `LD`/`A`/`O` × `B`(BYTE) `W`(INT) `D`(DINT) `R`(REAL) × `=` `<>` `<` `>` `<=` `>=` | S7-200 (KincoBuilder IL) |\n");
     for sp in specials {
@@ -548,4 +552,29 @@ pub fn markdown(specials: &[super::SpecialDef], family: &str) -> String {
         s.push_str(&format!("| `{}` ({family}) | {ops} | {} | {} |\n", sp.name, sp.doc, sp.source));
     }
     s
+}
+
+#[cfg(test)]
+mod table_tests {
+    use super::*;
+
+    /// Every instruction's description is in every language, and every `tbl-il-…` id of the
+    /// catalogue belongs to a row.
+    #[test]
+    fn every_instruction_has_its_description_in_every_language() {
+        let mut used: Vec<&str> = CORE.iter().map(|d| (d.doc)(Lang::En).id).collect();
+        used.push((lookup("LDW>=").unwrap().doc)(Lang::En).id);
+        for lang in Lang::ALL {
+            let ids = crate::core::msg::ids(*lang);
+            for id in &used {
+                assert!(ids.iter().any(|i| i == id), "{id} has no text in {}", lang.tag());
+            }
+        }
+        for id in crate::core::msg::ids(Lang::En) {
+            if id.starts_with("tbl-il-") {
+                assert!(used.contains(&id.as_str()), "{id} belongs to no instruction");
+            }
+        }
+        assert_eq!((lookup("LD").unwrap().doc)(Lang::En).text, "CR := bit (the old CR is pushed)");
+    }
 }

@@ -7,6 +7,8 @@
 //! Source: the FX Series Programming Manual (Mitsubishi JY992D48301), chapter "Devices in
 //! Detail" — cited as "FX PM".
 
+use crate::msg;
+
 /// One FX2N timer class: numbers, time base, whether it keeps its value when its coil goes
 /// off (FX PM "Timers"; the FX2N/FX1N table).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -45,20 +47,17 @@ pub fn element_note(timer: bool, n: u16) -> String {
             10_000_000 => "10 ms",
             _ => "100 ms",
         };
-        format!(
-            "T{n}: {base} timer{} (T{}–T{}); contact T{n} = TS{n}, coil TC{n}, current value TN{n}; `OUT T{n} K50` in a program",
-            if c.retentive { ", retentive (RST clears it)" } else { "" },
-            c.first,
-            c.last
-        )
+        let (first, last) = (c.first, c.last);
+        if c.retentive {
+            msg!("tbl-element-timer-retentive", n = n, base = base, first = first, last = last).text
+        } else {
+            msg!("tbl-element-timer", n = n, base = base, first = first, last = last).text
+        }
     } else if n < C32_FIRST {
-        format!("C{n}: 16-bit up counter (C0–C199); contact C{n} = CS{n}, coil CC{n}, current value CN{n}")
+        msg!("tbl-element-counter", n = n).text
     } else if n <= C32_LAST {
-        format!(
-            "C{n}: 32-bit up/down counter (C200–C234), counts down while M{} is on; contact C{n} = CS{n}, current value CN{n}",
-            DIRECTION_RELAY + n - C32_FIRST
-        )
+        msg!("tbl-element-counter32", n = n, relay = DIRECTION_RELAY + n - C32_FIRST).text
     } else {
-        format!("C{n}: high-speed counter (C235–C255; not simulated)")
+        msg!("tbl-element-hsc", n = n).text
     }
 }

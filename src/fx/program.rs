@@ -22,11 +22,13 @@ use super::elements::{C32_FIRST, C32_LAST};
 use super::model::Model;
 use super::operand::{self, Area, FxOperand, Width as FxWidth};
 use super::space::{FxSpace, Proto};
+use crate::core::msg::{Lang, Msg};
 use crate::core::{DataType, Error, ErrorKind, Result};
 use crate::engine::source::{self, Pos, Stmt};
 use crate::engine::{
     self, ArgKind, CostTable, Cpu, Element, Family, Loc, OperandError, Program, Resolved, SpecialDef, Width,
 };
+use crate::msg;
 
 /// What an FX mnemonic becomes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -70,11 +72,12 @@ pub struct FxDef {
     /// Operand count accepted (min, max).
     pub operands: (u8, u8),
     pub kind: FxKind,
-    pub doc: &'static str,
+    /// What it does (catalogue `tables.ftl`, ids `tbl-fx-…`; `docs/il.md` takes the English).
+    pub doc: fn(Lang) -> Msg,
     pub source: &'static str,
 }
 
-const fn fx(name: &'static str, operands: (u8, u8), kind: FxKind, doc: &'static str, source: &'static str) -> FxDef {
+const fn fx(name: &'static str, operands: (u8, u8), kind: FxKind, doc: fn(Lang) -> Msg, source: &'static str) -> FxDef {
     FxDef { name, operands, kind, doc, source }
 }
 
@@ -83,326 +86,326 @@ use FxKind as K;
 /// The FX instruction subset plcsh runs. Sources: FX PM chapter 2 (basic instructions, by
 /// section title) and chapter 5 (applied instructions, by FNC number).
 pub static INSTRUCTIONS: &[FxDef] = &[
-    fx("LD", (1, 1), K::Contact("LD"), "start a block with a normally open contact", "FX PM 2, Load"),
-    fx("LDI", (1, 1), K::Contact("LDN"), "start a block with a normally closed contact", "FX PM 2, Load Inverse"),
+    fx("LD", (1, 1), K::Contact("LD"), |l| msg!(lang: l, "tbl-fx-ld"), "FX PM 2, Load"),
+    fx("LDI", (1, 1), K::Contact("LDN"), |l| msg!(lang: l, "tbl-fx-ldi"), "FX PM 2, Load Inverse"),
     fx(
         "LDP",
         (1, 1),
         K::EdgeContact { rising: true, combine: None },
-        "start a block: on for one scan when the bit rises",
+        |l| msg!(lang: l, "tbl-fx-ldp"),
         "FX PM 2, Load Pulse",
     ),
     fx(
         "LDF",
         (1, 1),
         K::EdgeContact { rising: false, combine: None },
-        "start a block: on for one scan when the bit falls",
+        |l| msg!(lang: l, "tbl-fx-ldf"),
         "FX PM 2, Load Trailing Pulse",
     ),
-    fx("AND", (1, 1), K::Contact("AND"), "series normally open contact", "FX PM 2, And"),
-    fx("ANI", (1, 1), K::Contact("ANDN"), "series normally closed contact", "FX PM 2, And Inverse"),
+    fx("AND", (1, 1), K::Contact("AND"), |l| msg!(lang: l, "tbl-fx-and"), "FX PM 2, And"),
+    fx("ANI", (1, 1), K::Contact("ANDN"), |l| msg!(lang: l, "tbl-fx-ani"), "FX PM 2, And Inverse"),
     fx(
         "ANDP",
         (1, 1),
         K::EdgeContact { rising: true, combine: Some("ALD") },
-        "series rising-edge contact",
+        |l| msg!(lang: l, "tbl-fx-andp"),
         "FX PM 2, And Pulse",
     ),
     fx(
         "ANDF",
         (1, 1),
         K::EdgeContact { rising: false, combine: Some("ALD") },
-        "series falling-edge contact",
+        |l| msg!(lang: l, "tbl-fx-andf"),
         "FX PM 2, And Trailing Pulse",
     ),
-    fx("OR", (1, 1), K::Contact("OR"), "parallel normally open contact", "FX PM 2, Or"),
-    fx("ORI", (1, 1), K::Contact("ORN"), "parallel normally closed contact", "FX PM 2, Or Inverse"),
+    fx("OR", (1, 1), K::Contact("OR"), |l| msg!(lang: l, "tbl-fx-or"), "FX PM 2, Or"),
+    fx("ORI", (1, 1), K::Contact("ORN"), |l| msg!(lang: l, "tbl-fx-ori"), "FX PM 2, Or Inverse"),
     fx(
         "ORP",
         (1, 1),
         K::EdgeContact { rising: true, combine: Some("OLD") },
-        "parallel rising-edge contact",
+        |l| msg!(lang: l, "tbl-fx-orp"),
         "FX PM 2, Or Pulse",
     ),
     fx(
         "ORF",
         (1, 1),
         K::EdgeContact { rising: false, combine: Some("OLD") },
-        "parallel falling-edge contact",
+        |l| msg!(lang: l, "tbl-fx-orf"),
         "FX PM 2, Or Trailing Pulse",
     ),
-    fx("ANB", (0, 0), K::Plain("ALD"), "AND the last two blocks", "FX PM 2, And Block"),
-    fx("ORB", (0, 0), K::Plain("OLD"), "OR the last two blocks", "FX PM 2, Or Block"),
-    fx("MPS", (0, 0), K::Plain("LPS"), "push the operation result", "FX PM 2, MPS, MRD and MPP"),
-    fx("MRD", (0, 0), K::Plain("LRD"), "read the pushed result", "FX PM 2, MPS, MRD and MPP"),
-    fx("MPP", (0, 0), K::Plain("LPP"), "pop the pushed result", "FX PM 2, MPS, MRD and MPP"),
-    fx("INV", (0, 0), K::Plain("NOT"), "invert the operation result", "FX PM 2, Inverse"),
-    fx(
-        "OUT",
-        (1, 2),
-        K::Out,
-        "OUT Y/M/S: coil := result; OUT Tn K|D: timer coil with preset; OUT Cn K|D: counter coil",
-        "FX PM 2, Out; Timer, Counter (Out & Reset)",
-    ),
-    fx("SET", (1, 1), K::Set, "if the result is on: set Y/M/S (stays on)", "FX PM 2, Set and Reset"),
-    fx(
-        "RST",
-        (1, 1),
-        K::Rst,
-        "if the result is on: reset Y/M/S, clear D, clear a timer or counter (value 0, contact off)",
-        "FX PM 2, Set and Reset; Timer, Counter (Out & Reset)",
-    ),
-    fx(
-        "PLS",
-        (1, 1),
-        K::Pulse { rising: true },
-        "Y/M on for one scan after the result rises",
-        "FX PM 2, Pulse (PLS, PLF)",
-    ),
-    fx(
-        "PLF",
-        (1, 1),
-        K::Pulse { rising: false },
-        "Y/M on for one scan after the result falls",
-        "FX PM 2, Pulse (PLS, PLF)",
-    ),
+    fx("ANB", (0, 0), K::Plain("ALD"), |l| msg!(lang: l, "tbl-fx-anb"), "FX PM 2, And Block"),
+    fx("ORB", (0, 0), K::Plain("OLD"), |l| msg!(lang: l, "tbl-fx-orb"), "FX PM 2, Or Block"),
+    fx("MPS", (0, 0), K::Plain("LPS"), |l| msg!(lang: l, "tbl-fx-mps"), "FX PM 2, MPS, MRD and MPP"),
+    fx("MRD", (0, 0), K::Plain("LRD"), |l| msg!(lang: l, "tbl-fx-mrd"), "FX PM 2, MPS, MRD and MPP"),
+    fx("MPP", (0, 0), K::Plain("LPP"), |l| msg!(lang: l, "tbl-fx-mpp"), "FX PM 2, MPS, MRD and MPP"),
+    fx("INV", (0, 0), K::Plain("NOT"), |l| msg!(lang: l, "tbl-fx-inv"), "FX PM 2, Inverse"),
+    fx("OUT", (1, 2), K::Out, |l| msg!(lang: l, "tbl-fx-out"), "FX PM 2, Out; Timer, Counter (Out & Reset)"),
+    fx("SET", (1, 1), K::Set, |l| msg!(lang: l, "tbl-fx-set"), "FX PM 2, Set and Reset"),
+    fx("RST", (1, 1), K::Rst, |l| msg!(lang: l, "tbl-fx-rst"), "FX PM 2, Set and Reset; Timer, Counter (Out & Reset)"),
+    fx("PLS", (1, 1), K::Pulse { rising: true }, |l| msg!(lang: l, "tbl-fx-pls"), "FX PM 2, Pulse (PLS, PLF)"),
+    fx("PLF", (1, 1), K::Pulse { rising: false }, |l| msg!(lang: l, "tbl-fx-plf"), "FX PM 2, Pulse (PLS, PLF)"),
     fx(
         "MOV",
         (2, 2),
         K::Applied { engine: "MOVE", wide: false, pulse: false },
-        "MOV S D: D := S (16-bit)",
+        |l| msg!(lang: l, "tbl-fx-mov"),
         "FX PM 5, FNC 12 MOV",
     ),
     fx(
         "MOVP",
         (2, 2),
         K::Applied { engine: "MOVE", wide: false, pulse: true },
-        "MOV on the result's rising edge",
+        |l| msg!(lang: l, "tbl-fx-movp"),
         "FX PM 5, FNC 12 MOV",
     ),
     fx(
         "DMOV",
         (2, 2),
         K::Applied { engine: "MOVD", wide: true, pulse: false },
-        "32-bit MOV (D0 = D0 low, D1 high)",
+        |l| msg!(lang: l, "tbl-fx-dmov"),
         "FX PM 5, FNC 12 MOV",
     ),
     fx(
         "DMOVP",
         (2, 2),
         K::Applied { engine: "MOVD", wide: true, pulse: true },
-        "32-bit MOV on the rising edge",
+        |l| msg!(lang: l, "tbl-fx-dmovp"),
         "FX PM 5, FNC 12 MOV",
     ),
     fx(
         "ADD",
         (3, 3),
         K::Applied { engine: "ADD", wide: false, pulse: false },
-        "ADD S1 S2 D: D := S1 + S2 (16-bit, wraps)",
+        |l| msg!(lang: l, "tbl-fx-add"),
         "FX PM 5, FNC 20 ADD",
     ),
     fx(
         "ADDP",
         (3, 3),
         K::Applied { engine: "ADD", wide: false, pulse: true },
-        "ADD on the rising edge",
+        |l| msg!(lang: l, "tbl-fx-addp"),
         "FX PM 5, FNC 20 ADD",
     ),
-    fx("DADD", (3, 3), K::Applied { engine: "ADD", wide: true, pulse: false }, "32-bit ADD", "FX PM 5, FNC 20 ADD"),
+    fx(
+        "DADD",
+        (3, 3),
+        K::Applied { engine: "ADD", wide: true, pulse: false },
+        |l| msg!(lang: l, "tbl-fx-dadd"),
+        "FX PM 5, FNC 20 ADD",
+    ),
     fx(
         "SUB",
         (3, 3),
         K::Applied { engine: "SUB", wide: false, pulse: false },
-        "SUB S1 S2 D: D := S1 − S2 (16-bit, wraps)",
+        |l| msg!(lang: l, "tbl-fx-sub"),
         "FX PM 5, FNC 21 SUB",
     ),
     fx(
         "SUBP",
         (3, 3),
         K::Applied { engine: "SUB", wide: false, pulse: true },
-        "SUB on the rising edge",
+        |l| msg!(lang: l, "tbl-fx-subp"),
         "FX PM 5, FNC 21 SUB",
     ),
-    fx("DSUB", (3, 3), K::Applied { engine: "SUB", wide: true, pulse: false }, "32-bit SUB", "FX PM 5, FNC 21 SUB"),
+    fx(
+        "DSUB",
+        (3, 3),
+        K::Applied { engine: "SUB", wide: true, pulse: false },
+        |l| msg!(lang: l, "tbl-fx-dsub"),
+        "FX PM 5, FNC 21 SUB",
+    ),
     fx(
         "INC",
         (1, 1),
         K::Applied { engine: "INC", wide: false, pulse: false },
-        "D := D + 1 every scan the result is on",
+        |l| msg!(lang: l, "tbl-fx-inc"),
         "FX PM 5, FNC 24 INC",
     ),
     fx(
         "INCP",
         (1, 1),
         K::Applied { engine: "INC", wide: false, pulse: true },
-        "D := D + 1 on the rising edge",
+        |l| msg!(lang: l, "tbl-fx-incp"),
         "FX PM 5, FNC 24 INC",
     ),
     fx(
         "DEC",
         (1, 1),
         K::Applied { engine: "DEC", wide: false, pulse: false },
-        "D := D − 1 every scan the result is on",
+        |l| msg!(lang: l, "tbl-fx-dec"),
         "FX PM 5, FNC 25 DEC",
     ),
     fx(
         "DECP",
         (1, 1),
         K::Applied { engine: "DEC", wide: false, pulse: true },
-        "D := D − 1 on the rising edge",
+        |l| msg!(lang: l, "tbl-fx-decp"),
         "FX PM 5, FNC 25 DEC",
     ),
     fx(
         "LD=",
         (2, 2),
         K::Compare { engine: "LDW=", wide: false },
-        "start a block: S1 = S2 (16-bit)",
+        |l| msg!(lang: l, "tbl-fx-ld-eq"),
         "FX PM 5, FNC 224–230 LD□",
     ),
-    fx("LD>", (2, 2), K::Compare { engine: "LDW>", wide: false }, "start a block: S1 > S2", "FX PM 5, FNC 224–230 LD□"),
-    fx("LD<", (2, 2), K::Compare { engine: "LDW<", wide: false }, "start a block: S1 < S2", "FX PM 5, FNC 224–230 LD□"),
+    fx(
+        "LD>",
+        (2, 2),
+        K::Compare { engine: "LDW>", wide: false },
+        |l| msg!(lang: l, "tbl-fx-ld-gt"),
+        "FX PM 5, FNC 224–230 LD□",
+    ),
+    fx(
+        "LD<",
+        (2, 2),
+        K::Compare { engine: "LDW<", wide: false },
+        |l| msg!(lang: l, "tbl-fx-ld-lt"),
+        "FX PM 5, FNC 224–230 LD□",
+    ),
     fx(
         "LD<>",
         (2, 2),
         K::Compare { engine: "LDW<>", wide: false },
-        "start a block: S1 ≠ S2",
+        |l| msg!(lang: l, "tbl-fx-ld-ne"),
         "FX PM 5, FNC 224–230 LD□",
     ),
     fx(
         "LD<=",
         (2, 2),
         K::Compare { engine: "LDW<=", wide: false },
-        "start a block: S1 ≤ S2",
+        |l| msg!(lang: l, "tbl-fx-ld-le"),
         "FX PM 5, FNC 224–230 LD□",
     ),
     fx(
         "LD>=",
         (2, 2),
         K::Compare { engine: "LDW>=", wide: false },
-        "start a block: S1 ≥ S2",
+        |l| msg!(lang: l, "tbl-fx-ld-ge"),
         "FX PM 5, FNC 224–230 LD□",
     ),
     fx(
         "AND=",
         (2, 2),
         K::Compare { engine: "AW=", wide: false },
-        "series contact: S1 = S2",
+        |l| msg!(lang: l, "tbl-fx-and-eq"),
         "FX PM 5, FNC 232–238 AND□",
     ),
     fx(
         "AND>",
         (2, 2),
         K::Compare { engine: "AW>", wide: false },
-        "series contact: S1 > S2",
+        |l| msg!(lang: l, "tbl-fx-and-gt"),
         "FX PM 5, FNC 232–238 AND□",
     ),
     fx(
         "AND<",
         (2, 2),
         K::Compare { engine: "AW<", wide: false },
-        "series contact: S1 < S2",
+        |l| msg!(lang: l, "tbl-fx-and-lt"),
         "FX PM 5, FNC 232–238 AND□",
     ),
     fx(
         "AND<>",
         (2, 2),
         K::Compare { engine: "AW<>", wide: false },
-        "series contact: S1 ≠ S2",
+        |l| msg!(lang: l, "tbl-fx-and-ne"),
         "FX PM 5, FNC 232–238 AND□",
     ),
     fx(
         "AND<=",
         (2, 2),
         K::Compare { engine: "AW<=", wide: false },
-        "series contact: S1 ≤ S2",
+        |l| msg!(lang: l, "tbl-fx-and-le"),
         "FX PM 5, FNC 232–238 AND□",
     ),
     fx(
         "AND>=",
         (2, 2),
         K::Compare { engine: "AW>=", wide: false },
-        "series contact: S1 ≥ S2",
+        |l| msg!(lang: l, "tbl-fx-and-ge"),
         "FX PM 5, FNC 232–238 AND□",
     ),
     fx(
         "OR=",
         (2, 2),
         K::Compare { engine: "OW=", wide: false },
-        "parallel contact: S1 = S2",
+        |l| msg!(lang: l, "tbl-fx-or-eq"),
         "FX PM 5, FNC 240–246 OR□",
     ),
     fx(
         "OR>",
         (2, 2),
         K::Compare { engine: "OW>", wide: false },
-        "parallel contact: S1 > S2",
+        |l| msg!(lang: l, "tbl-fx-or-gt"),
         "FX PM 5, FNC 240–246 OR□",
     ),
     fx(
         "OR<",
         (2, 2),
         K::Compare { engine: "OW<", wide: false },
-        "parallel contact: S1 < S2",
+        |l| msg!(lang: l, "tbl-fx-or-lt"),
         "FX PM 5, FNC 240–246 OR□",
     ),
     fx(
         "OR<>",
         (2, 2),
         K::Compare { engine: "OW<>", wide: false },
-        "parallel contact: S1 ≠ S2",
+        |l| msg!(lang: l, "tbl-fx-or-ne"),
         "FX PM 5, FNC 240–246 OR□",
     ),
     fx(
         "OR<=",
         (2, 2),
         K::Compare { engine: "OW<=", wide: false },
-        "parallel contact: S1 ≤ S2",
+        |l| msg!(lang: l, "tbl-fx-or-le"),
         "FX PM 5, FNC 240–246 OR□",
     ),
     fx(
         "OR>=",
         (2, 2),
         K::Compare { engine: "OW>=", wide: false },
-        "parallel contact: S1 ≥ S2",
+        |l| msg!(lang: l, "tbl-fx-or-ge"),
         "FX PM 5, FNC 240–246 OR□",
     ),
     fx(
         "LDD=",
         (2, 2),
         K::Compare { engine: "LDD=", wide: true },
-        "32-bit: start a block: S1 = S2",
+        |l| msg!(lang: l, "tbl-fx-ldd-eq"),
         "FX PM 5, FNC 224 LD=",
     ),
     fx(
         "LDD>",
         (2, 2),
         K::Compare { engine: "LDD>", wide: true },
-        "32-bit: start a block: S1 > S2",
+        |l| msg!(lang: l, "tbl-fx-ldd-gt"),
         "FX PM 5, FNC 225 LD>",
     ),
     fx(
         "LDD<",
         (2, 2),
         K::Compare { engine: "LDD<", wide: true },
-        "32-bit: start a block: S1 < S2",
+        |l| msg!(lang: l, "tbl-fx-ldd-lt"),
         "FX PM 5, FNC 226 LD<",
     ),
     fx(
         "ANDD=",
         (2, 2),
         K::Compare { engine: "AD=", wide: true },
-        "32-bit series contact: S1 = S2",
+        |l| msg!(lang: l, "tbl-fx-andd-eq"),
         "FX PM 5, FNC 232 AND=",
     ),
     fx(
         "ORD=",
         (2, 2),
         K::Compare { engine: "OD=", wide: true },
-        "32-bit parallel contact: S1 = S2",
+        |l| msg!(lang: l, "tbl-fx-ord-eq"),
         "FX PM 5, FNC 240 OR=",
     ),
-    fx("NOP", (0, 0), K::Plain("NOP"), "nothing", "FX PM 2, No Operation"),
-    fx("END", (0, 0), K::End, "end of the program: what follows is not scanned", "FX PM 2, End"),
+    fx("NOP", (0, 0), K::Plain("NOP"), |l| msg!(lang: l, "tbl-fx-nop"), "FX PM 2, No Operation"),
+    fx("END", (0, 0), K::End, |l| msg!(lang: l, "tbl-fx-end"), "FX PM 2, End"),
 ];
 
 /// Looks an FX mnemonic up.
@@ -419,7 +422,7 @@ pub fn markdown() -> String {
         } else {
             format!("{}–{}", d.operands.0, d.operands.1)
         };
-        s.push_str(&format!("| `{}` (FX) | {ops} | {} | {} |\n", d.name, d.doc, d.source));
+        s.push_str(&format!("| `{}` (FX) | {ops} | {} | {} |\n", d.name, (d.doc)(Lang::En), d.source));
     }
     s
 }
@@ -513,8 +516,16 @@ impl Translation {
     }
 }
 
-fn load_err(file: &str, p: Pos, msg: impl std::fmt::Display) -> Error {
-    Error::new(ErrorKind::Syntax, format!("{file}:{}:{}: {msg}", p.line, p.col))
+/// A load error at `file:line:col:` whose text another part already wrote (an operand's or
+/// the IL reader's refusal).
+fn load_err_text(file: &str, p: Pos, text: String) -> Error {
+    Error::new(ErrorKind::Syntax, format!("{file}:{}:{}: {text}", p.line, p.col))
+}
+
+/// A load error at `file:line:col:`, keeping the message's id as the error's code.
+fn load_err(file: &str, p: Pos, m: Msg) -> Error {
+    let text = format!("{file}:{}:{}: {}", p.line, p.col, m.text);
+    Error::new(ErrorKind::Syntax, Msg { text, ..m })
 }
 
 /// `K123` → `123`, `K-5` → `-5`, `H1F` → `16#1F`; anything else is not a constant.
@@ -595,7 +606,7 @@ impl Builder<'_> {
     /// A parsed FX operand (for checks the translation makes itself).
     fn parse(&self, t: &str, p: Pos) -> Result<FxOperand> {
         operand::parse_one(t).map_err(|e| {
-            let mut x = load_err(self.file, p, format!("{t}: {}", e.message));
+            let mut x = load_err_text(self.file, p, format!("{t}: {}", e.message));
             if let Some(h) = &e.hint {
                 x = x.hint(h.clone());
             }
@@ -608,21 +619,32 @@ impl Builder<'_> {
             // Another family's mnemonic (a K2's or IEC's `TON`): the FX way to write it, not
             // the FX mnemonic nearest in spelling (`TON` is two letters from `MOV`).
             if let Some((_, how)) = FOREIGN.iter().find(|(f, _)| f.eq_ignore_ascii_case(m)) {
-                return Err(load_err(self.file, at, format!("unknown FX instruction {m}"))
-                    .hint(format!("{m} is not an FX mnemonic: on an FX write {how} (docs/il.md, The FX family)")));
+                return Err(load_err(self.file, at, msg!("tbl-fx-unknown", m = m)).hint(msg!(
+                    "tbl-fx-foreign-hint",
+                    m = m,
+                    how = how().text
+                )));
             }
             let near = suggest(m);
-            let mut e = load_err(self.file, at, format!("unknown FX instruction {m}"));
+            let mut e = load_err(self.file, at, msg!("tbl-fx-unknown", m = m));
             e = e.hint(match near {
-                Some(n) => format!("did you mean {n}? (docs/il.md lists the FX subset)"),
-                None => "docs/il.md lists the FX instructions the simulator runs".into(),
+                Some(n) => msg!("tbl-fx-unknown-near", near = n),
+                None => msg!("tbl-fx-unknown-hint"),
             });
             return Err(e);
         };
         let (lo, hi) = def.operands;
         if ops.len() < lo as usize || ops.len() > hi as usize {
-            let want = if lo == hi { lo.to_string() } else { format!("{lo} to {hi}") };
-            return Err(load_err(self.file, at, format!("{m} takes {want} operand(s), found {}", ops.len())));
+            let found = ops.len();
+            return Err(load_err(
+                self.file,
+                at,
+                if lo == hi {
+                    msg!("tbl-fx-operand-count", m = m, want = lo, found = found)
+                } else {
+                    msg!("tbl-fx-operand-range", m = m, lo = lo, hi = hi, found = found)
+                },
+            ));
         }
         let one = |s: String, p: Pos| vec![(s, p)];
         match def.kind {
@@ -643,18 +665,10 @@ impl Builder<'_> {
                     Area::TS | Area::CS => {
                         let timer = o.area == Area::TS;
                         let Some((k, kp)) = ops.get(1) else {
-                            return Err(load_err(
-                                self.file,
-                                at,
-                                format!("OUT {t} needs a preset: OUT {t} K10 (a constant) or OUT {t} D10 (a register)"),
-                            ));
+                            return Err(load_err(self.file, at, msg!("tbl-fx-needs-preset", t = t.as_str())));
                         };
                         if constant(k).is_none() && !k.to_ascii_uppercase().starts_with('D') {
-                            return Err(load_err(
-                                self.file,
-                                *kp,
-                                format!("{k}: a preset is a constant K… or a data register D…"),
-                            ));
+                            return Err(load_err(self.file, *kp, msg!("tbl-fx-bad-preset", k = k.as_str())));
                         }
                         let n = o.index;
                         let special = if timer {
@@ -664,23 +678,15 @@ impl Builder<'_> {
                         } else if n <= C32_LAST {
                             "FXCNT32"
                         } else {
-                            return Err(load_err(
-                                self.file,
-                                *p,
-                                format!("{t}: high-speed counters (C235–C255) are not simulated"),
-                            )
-                            .hint("use C0–C199 (16-bit) or C200–C234 (32-bit up/down)"));
+                            return Err(load_err(self.file, *p, msg!("tbl-fx-hsc-not-simulated", t = t.as_str()))
+                                .hint(msg!("tbl-fx-hsc-not-simulated-hint")));
                         };
                         let wide = special == "FXCNT32";
                         self.emit(at, special, &[(o.canonical(), *p), (value_text(k, wide), *kp)]);
                     }
                     _ => {
                         if ops.len() > 1 {
-                            return Err(load_err(
-                                self.file,
-                                ops[1].1,
-                                format!("OUT {t} takes one operand (a preset is for timers and counters)"),
-                            ));
+                            return Err(load_err(self.file, ops[1].1, msg!("tbl-fx-out-one-operand", t = t.as_str())));
                         }
                         self.coil_target(&o, t, *p, m)?;
                         self.emit(at, "ST", &ops[..1]);
@@ -704,13 +710,7 @@ impl Builder<'_> {
                     Area::TS | Area::TN | Area::CS | Area::CN | Area::D if !matches!(o.width, FxWidth::Group(_)) => {
                         self.emit(at, "FXRST", &one(o.canonical(), *p));
                     }
-                    _ => {
-                        return Err(load_err(
-                            self.file,
-                            *p,
-                            format!("RST {t}: resets Y, M, S, D, a timer T or a counter C"),
-                        ))
-                    }
+                    _ => return Err(load_err(self.file, *p, msg!("tbl-fx-rst-target", t = t.as_str()))),
                 }
             }
             K::Pulse { rising } => {
@@ -728,12 +728,8 @@ impl Builder<'_> {
                 if constant(t).is_none() {
                     let o = self.parse(&value_text(t, false), *p)?;
                     if o.area == Area::X {
-                        return Err(load_err(
-                            self.file,
-                            *p,
-                            format!("{m} {t}: inputs X cannot be written by a program"),
-                        )
-                        .hint("write Y, M, S (as KnY0 …), D, or a timer's or counter's value"));
+                        return Err(load_err(self.file, *p, msg!("tbl-fx-input-written", m = m, t = t.as_str()))
+                            .hint(msg!("tbl-fx-input-written-hint")));
                     }
                 }
                 let vals: Vec<(String, Pos)> = ops.iter().map(|(t, p)| (value_text(t, wide), *p)).collect();
@@ -755,14 +751,15 @@ impl Builder<'_> {
     /// A coil a program may drive: Y, M, S (not an input, not a special relay the CPU drives).
     fn coil_target(&self, o: &FxOperand, t: &str, p: Pos, m: &str) -> Result<()> {
         if !matches!(o.area, Area::Y | Area::M | Area::S) || o.width != FxWidth::Bit {
-            return Err(load_err(self.file, p, format!("{m} {t}: a program drives Y, M and S bits here"))
-                .hint("inputs X come from the field; OUT T0 K10 / OUT C0 K5 drive timers and counters"));
+            return Err(
+                load_err(self.file, p, msg!("tbl-fx-coil-target", m = m, t = t)).hint(msg!("tbl-fx-coil-target-hint"))
+            );
         }
         if operand::system_driven(o.area, o.index) {
-            return Err(load_err(self.file, p, format!("{m} {t}: {} is driven by the PLC", o.canonical())));
+            return Err(load_err(self.file, p, msg!("tbl-fx-system-driven", m = m, t = t, operand = o.canonical())));
         }
         if !FxSpace::new(self.model, Proto::Port).exists(o.area, o.index) {
-            return Err(load_err(self.file, p, format!("{t} is not on an {}", self.model.name)));
+            return Err(load_err(self.file, p, msg!("tbl-fx-not-on-model", t = t, model = self.model.name)));
         }
         Ok(())
     }
@@ -770,33 +767,34 @@ impl Builder<'_> {
 
 /// Mnemonics of the K2's and IEC 61131-3 instruction lists that an FX writes otherwise, with
 /// the FX form (FX PM 2 and 4: timers and counters are coils with a preset).
-const FOREIGN: &[(&str, &str)] = &[
-    ("TON", "the timer as a coil with its preset: LD X0 / OUT T0 K20 (T0–T199 count 100 ms)"),
-    ("TOF", "an off-delay with a timer coil and LDI: LDI X0 / OUT T0 K20 (T0–T199 count 100 ms)"),
-    ("TONR", "a retentive timer coil: OUT T250 K20 (T250–T255 keep their value; RST T250 clears it)"),
-    ("TP", "a pulse from a timer coil: OUT T0 K20 with its contact (T0–T199 count 100 ms)"),
-    ("CTU", "the counter as a coil with its preset: LD X0 / OUT C0 K10 (RST C0 clears it)"),
-    ("CTD", "a down count with a 32-bit counter: OUT C200 K10 with M8200 on"),
-    ("=", "OUT Y0"),
-    ("ST", "OUT Y0"),
-    ("LDN", "LDI X0"),
-    ("AN", "ANI X0"),
-    ("ANDN", "ANI X0"),
-    ("A", "AND X0"),
-    ("O", "OR X0"),
-    ("ON", "ORI X0"),
-    ("ORN", "ORI X0"),
-    ("ALD", "ANB"),
-    ("OLD", "ORB"),
-    ("LPS", "MPS"),
-    ("LRD", "MRD"),
-    ("LPP", "MPP"),
-    ("NOT", "INV"),
-    ("S", "SET Y0"),
-    ("R", "RST Y0"),
-    ("MOVW", "MOV K5 D0"),
-    ("MOVB", "MOV K5 D0"),
-    ("MOVD", "DMOV K5 D0"),
+#[allow(clippy::type_complexity)] // one row: mnemonic, the FX way to write it
+const FOREIGN: &[(&str, fn() -> Msg)] = &[
+    ("TON", || msg!("tbl-fx-foreign-ton")),
+    ("TOF", || msg!("tbl-fx-foreign-tof")),
+    ("TONR", || msg!("tbl-fx-foreign-tonr")),
+    ("TP", || msg!("tbl-fx-foreign-tp")),
+    ("CTU", || msg!("tbl-fx-foreign-ctu")),
+    ("CTD", || msg!("tbl-fx-foreign-ctd")),
+    ("=", || msg!("tbl-fx-foreign-code", code = "OUT Y0")),
+    ("ST", || msg!("tbl-fx-foreign-code", code = "OUT Y0")),
+    ("LDN", || msg!("tbl-fx-foreign-code", code = "LDI X0")),
+    ("AN", || msg!("tbl-fx-foreign-code", code = "ANI X0")),
+    ("ANDN", || msg!("tbl-fx-foreign-code", code = "ANI X0")),
+    ("A", || msg!("tbl-fx-foreign-code", code = "AND X0")),
+    ("O", || msg!("tbl-fx-foreign-code", code = "OR X0")),
+    ("ON", || msg!("tbl-fx-foreign-code", code = "ORI X0")),
+    ("ORN", || msg!("tbl-fx-foreign-code", code = "ORI X0")),
+    ("ALD", || msg!("tbl-fx-foreign-code", code = "ANB")),
+    ("OLD", || msg!("tbl-fx-foreign-code", code = "ORB")),
+    ("LPS", || msg!("tbl-fx-foreign-code", code = "MPS")),
+    ("LRD", || msg!("tbl-fx-foreign-code", code = "MRD")),
+    ("LPP", || msg!("tbl-fx-foreign-code", code = "MPP")),
+    ("NOT", || msg!("tbl-fx-foreign-code", code = "INV")),
+    ("S", || msg!("tbl-fx-foreign-code", code = "SET Y0")),
+    ("R", || msg!("tbl-fx-foreign-code", code = "RST Y0")),
+    ("MOVW", || msg!("tbl-fx-foreign-code", code = "MOV K5 D0")),
+    ("MOVB", || msg!("tbl-fx-foreign-code", code = "MOV K5 D0")),
+    ("MOVD", || msg!("tbl-fx-foreign-code", code = "DMOV K5 D0")),
 ];
 
 fn suggest(m: &str) -> Option<&'static str> {
@@ -826,7 +824,7 @@ fn suggest(m: &str) -> Option<&'static str> {
 
 /// Translates an FX list (named `file` in messages) into engine IL.
 pub fn translate(text: &str, file: &str, model: &'static Model) -> Result<Translation> {
-    let stmts = source::parse(text).map_err(|e| load_err(file, e.pos, e.message))?;
+    let stmts = source::parse(text).map_err(|e| load_err_text(file, e.pos, e.message))?;
     let mut b = Builder { file, model, lines: Vec::new() };
     for s in stmts {
         let Stmt::Instr { mnemonic, operands, pos } = s else {
@@ -839,8 +837,7 @@ pub fn translate(text: &str, file: &str, model: &'static Model) -> Result<Transl
             if matches!(s, Stmt::Network { .. }) {
                 continue;
             }
-            return Err(load_err(file, p, "FX lists have no labels or program blocks here")
-                .hint("write one instruction per line: LD X0 / OUT Y0 … END"));
+            return Err(load_err(file, p, msg!("tbl-fx-no-blocks")).hint(msg!("tbl-fx-no-blocks-hint")));
         };
         let mut ops = split_operands(&operands);
         // A step number in front (`0 LD X000`, as list exports print it) is skipped.
@@ -916,8 +913,10 @@ impl FxFamily {
         let space = FxSpace::new(self.model, Proto::Port);
         let last = o.index as u32 + o.span() as u32 - 1;
         if last > u16::MAX as u32 || !space.exists(o.area, o.index) || !space.exists(o.area, last as u16) {
-            return Err(OperandError::new(format!("{} is not on an {}", o.canonical(), self.model.name))
-                .hint(self.model.summary));
+            return Err(OperandError::new(
+                msg!("tbl-fx-not-on-model", t = o.canonical(), model = self.model.name).text,
+            )
+            .hint(self.model.summary));
         }
         Ok(o)
     }
@@ -930,8 +929,8 @@ impl Family for FxFamily {
     }
 
     fn element(&self, text: &str, _want_timer: bool) -> std::result::Result<Element, OperandError> {
-        Err(OperandError::new(format!("{text}: FX timers and counters are driven by OUT"))
-            .hint("OUT T0 K50 (timer), OUT C0 K10 (counter), RST T0 / RST C0"))
+        Err(OperandError::new(msg!("tbl-fx-element-by-out", text = text).text)
+            .hint(msg!("tbl-fx-element-by-out-hint").text))
     }
 
     fn pointer(&self, _loc: Loc) -> Option<u32> {
@@ -989,5 +988,55 @@ impl Loaded {
     /// STOP → RUN: edge memories and the engine's state start afresh.
     pub fn reset(&mut self) {
         self.cpu = Cpu::new(&self.prog);
+    }
+}
+
+#[cfg(test)]
+mod table_tests {
+    use super::*;
+
+    /// Every instruction's description and every foreign mnemonic's FX form is in every
+    /// language, and every `tbl-fx-…` id of the catalogue belongs to a row or is one of the
+    /// load errors above.
+    #[test]
+    fn every_row_has_its_text_in_every_language() {
+        let mut used: Vec<&str> = INSTRUCTIONS.iter().map(|d| (d.doc)(Lang::En).id).collect();
+        used.extend(FOREIGN.iter().map(|(_, how)| how().id));
+        for lang in Lang::ALL {
+            let ids = crate::core::msg::ids(*lang);
+            for id in &used {
+                assert!(ids.iter().any(|i| i == id), "{id} has no text in {}", lang.tag());
+            }
+        }
+        let errors = [
+            "tbl-fx-unknown",
+            "tbl-fx-foreign-hint",
+            "tbl-fx-unknown-near",
+            "tbl-fx-unknown-hint",
+            "tbl-fx-operand-count",
+            "tbl-fx-operand-range",
+            "tbl-fx-needs-preset",
+            "tbl-fx-bad-preset",
+            "tbl-fx-hsc-not-simulated",
+            "tbl-fx-hsc-not-simulated-hint",
+            "tbl-fx-out-one-operand",
+            "tbl-fx-rst-target",
+            "tbl-fx-input-written",
+            "tbl-fx-input-written-hint",
+            "tbl-fx-coil-target",
+            "tbl-fx-coil-target-hint",
+            "tbl-fx-system-driven",
+            "tbl-fx-not-on-model",
+            "tbl-fx-no-blocks",
+            "tbl-fx-no-blocks-hint",
+            "tbl-fx-element-by-out",
+            "tbl-fx-element-by-out-hint",
+        ];
+        for id in crate::core::msg::ids(Lang::En) {
+            if id.starts_with("tbl-fx-") {
+                assert!(used.contains(&id.as_str()) || errors.contains(&id.as_str()), "{id} belongs to no row");
+            }
+        }
+        assert_eq!((lookup("LDI").unwrap().doc)(Lang::Ru).text, "начать блок нормально закрытым контактом");
     }
 }

@@ -8,6 +8,8 @@
 //! §2.1.2 table's last columns look shifted by one: its CPU204 column matches what §2.2.6
 //! says of CPU209EA, and its CPU209EA column matches CPU209M).
 
+use crate::core::msg::Msg;
+use crate::msg;
 use serde::Serialize;
 
 /// A high-speed counter channel on a model.
@@ -34,9 +36,32 @@ pub struct PtoSpec {
 /// Where the manual's tables disagree for this model.
 #[derive(Clone, Copy, Debug, Serialize)]
 pub struct Discrepancy {
-    pub what: &'static str,
-    pub chosen: &'static str,
-    pub other: &'static str,
+    pub what: Phrase,
+    pub chosen: Phrase,
+    pub other: Phrase,
+}
+
+/// A text of the catalogue (`tables.ftl`, ids `tbl-model-…`), shown and serialised in the
+/// current language.
+#[derive(Clone, Copy)]
+pub struct Phrase(pub fn() -> Msg);
+
+impl std::fmt::Display for Phrase {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&(self.0)().text)
+    }
+}
+
+impl std::fmt::Debug for Phrase {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str((self.0)().id)
+    }
+}
+
+impl Serialize for Phrase {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(&(self.0)().text)
+    }
 }
 
 /// One K2 CPU model.
@@ -113,32 +138,32 @@ const PTO_K209M: &[PtoSpec] = &[
 
 const D_K204ET: &[Discrepancy] = &[
     Discrepancy {
-        what: "HSC2/HSC3 maximum frequency",
-        chosen: "200 kHz single-phase and A/B (§2.2.6)",
-        other: "§2.1.2 lists 20 kHz single-phase / 10 kHz A/B in the CPU204 column (that column appears shifted: it matches §2.2.6's CPU209EA row)",
+        what: Phrase(|| msg!("tbl-model-k204et-1-what")),
+        chosen: Phrase(|| msg!("tbl-model-k204et-1-chosen")),
+        other: Phrase(|| msg!("tbl-model-k204et-1-other")),
     },
     Discrepancy {
-        what: "Q0.4 maximum frequency",
-        chosen: "200 kHz (§2.2.6, §3.4)",
-        other: "§2.1.2 lists 10 kHz in the CPU204 column",
+        what: Phrase(|| msg!("tbl-model-k204et-2-what")),
+        chosen: Phrase(|| msg!("tbl-model-k204et-2-chosen")),
+        other: Phrase(|| msg!("tbl-model-k204et-2-other")),
     },
 ];
 const D_K209EA: &[Discrepancy] = &[
     Discrepancy {
-        what: "Q0.4 maximum frequency",
-        chosen: "10 kHz (§2.2.6, §3.4)",
-        other: "§2.1.2 lists Q0.0, Q0.1, Q0.4 at 200 kHz and a fourth output Q0.5 in the CPU209EA column (apparently CPU209M's entry, shifted)",
+        what: Phrase(|| msg!("tbl-model-k209ea-1-what")),
+        chosen: Phrase(|| msg!("tbl-model-k209ea-1-chosen")),
+        other: Phrase(|| msg!("tbl-model-k209ea-1-other")),
     },
     Discrepancy {
-        what: "number of high-speed counters",
-        chosen: "4 (§2.2.6 gives HSC2/HSC3 frequencies for K209EA)",
-        other: "§2.1.2 prints 2 in the CPU209EA column (apparently CPU209M's entry, shifted)",
+        what: Phrase(|| msg!("tbl-model-k209ea-2-what")),
+        chosen: Phrase(|| msg!("tbl-model-k209ea-2-chosen")),
+        other: Phrase(|| msg!("tbl-model-k209ea-2-other")),
     },
 ];
 const D_K205EA: &[Discrepancy] = &[Discrepancy {
-    what: "HSC and pulse output frequencies",
-    chosen: "200 kHz on all channels (§2.1.2, the only table that lists CPU205EA)",
-    other: "§2.2.6 and §3.4 do not list CPU205EA",
+    what: Phrase(|| msg!("tbl-model-k205ea-1-what")),
+    chosen: Phrase(|| msg!("tbl-model-k205ea-1-chosen")),
+    other: Phrase(|| msg!("tbl-model-k205ea-1-other")),
 }];
 
 /// Every catalogued model (§1.2).
@@ -325,8 +350,8 @@ pub fn find(name: &str) -> Option<&'static Model> {
 /// `find`, with an error that lists the catalogue.
 pub fn lookup(name: &str) -> crate::core::Result<&'static Model> {
     find(name).ok_or_else(|| {
-        crate::core::Error::usage(format!("unknown K2 model `{name}`"))
-            .hint(format!("catalogued models: {}", MODELS.iter().map(|m| m.name).collect::<Vec<_>>().join(", ")))
+        crate::core::Error::usage(msg!("tbl-model-unknown", name = name))
+            .hint(msg!("tbl-model-unknown-hint", models = MODELS.iter().map(|m| m.name).collect::<Vec<_>>().join(", ")))
     })
 }
 
@@ -342,6 +367,34 @@ impl Model {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Every discrepancy's three texts are in every language, and every `tbl-model-k…` id of
+    /// the catalogue belongs to a model's discrepancy.
+    #[test]
+    fn every_discrepancy_has_its_text_in_every_language() {
+        use crate::core::msg::Lang;
+        let used: Vec<&str> = MODELS
+            .iter()
+            .flat_map(|m| m.discrepancies)
+            .flat_map(|d| [d.what, d.chosen, d.other])
+            .map(|p| (p.0)().id)
+            .collect();
+        for lang in Lang::ALL {
+            let ids = crate::core::msg::ids(*lang);
+            for id in &used {
+                assert!(ids.iter().any(|i| i == id), "{id} has no text in {}", lang.tag());
+            }
+        }
+        for id in crate::core::msg::ids(Lang::En) {
+            if id.starts_with("tbl-model-k") {
+                assert!(used.contains(&id.as_str()), "{id} belongs to no discrepancy");
+            }
+        }
+        assert_eq!(
+            find("K205EA-18DT").unwrap().discrepancies[0].other.to_string(),
+            "§2.2.6 and §3.4 do not list CPU205EA"
+        );
+    }
 
     #[test]
     fn relay_models_have_no_pulse_outputs() {

@@ -25,6 +25,7 @@
 use super::operand::{Area, K2Operand, Width};
 use super::space::K2Space;
 use crate::core::{Error, ErrorKind, Result};
+use crate::msg;
 
 /// Per-request limits (manual §3.2.1): read bits 1600 (FC 01/02), write bits 800 (FC 15),
 /// read words 100 (FC 03/04), write words 100 (FC 16).
@@ -156,8 +157,7 @@ impl WordOrder {
         match s.to_ascii_lowercase().as_str() {
             "high-first" | "high" | "big" | "abcd" => Ok(WordOrder::HighFirst),
             "low-first" | "low" | "little" | "cdab" => Ok(WordOrder::LowFirst),
-            _ => Err(Error::usage(format!("`word_order={s}` is not a word order"))
-                .hint("use word_order=high-first (S7 order, the default) or word_order=low-first")),
+            _ => Err(Error::usage(msg!("tbl-modbus-word-order", value = s)).hint(msg!("tbl-modbus-word-order-hint"))),
         }
     }
 
@@ -214,18 +214,18 @@ fn bit_extent(op: &K2Operand) -> (u32, u32) {
 fn not_in_map(op: &K2Operand) -> Error {
     Error::new(
         ErrorKind::Unsupported,
-        format!(
-            "{} is not in the K2 Modbus map: over Modbus a K2 exposes only I, Q, M, V, AI and AQ (manual §3.2.1); {} ({}) is not reachable",
-            op.canonical(),
-            op.area.name(),
-            op.area.meaning()
+        msg!(
+            "tbl-modbus-not-in-map",
+            operand = op.canonical(),
+            area = op.area.name(),
+            meaning = op.area.meaning().to_string()
         ),
     )
     .operand(op.canonical())
     .hint(if op.area == Area::SM {
-        "install the plcsh helper program in the PLC (lib/k2_agent.il, docs/agent.md) and connect with …&agent=VB3400; the simulator (sim:MODEL) has SM directly"
+        msg!("tbl-modbus-not-in-map-sm-hint")
     } else {
-        "copy timers and counters to V in the PLC program and read the V words; the simulator (sim:MODEL) has T and C directly"
+        msg!("tbl-modbus-not-in-map-tc-hint")
     })
 }
 
@@ -242,7 +242,7 @@ fn span_in(space: &K2Space, table: Table, op: &K2Operand) -> Result<Span> {
         // The operand space checks bounds first; this only fires for an unchecked operand.
         return Err(Error::new(
             ErrorKind::Range,
-            format!("{} is past the end of the {} area on {}", op.canonical(), op.area.name(), space.model.name),
+            msg!("tbl-modbus-past-end", operand = op.canonical(), area = op.area.name(), model = space.model.name),
         )
         .operand(op.canonical()));
     }
@@ -271,15 +271,16 @@ pub fn locate_write(space: &K2Space, op: &K2Operand) -> Result<Span> {
         Area::I | Area::AI => {
             return Err(Error::new(
                 ErrorKind::Unsupported,
-                format!(
-                    "{} is read-only over Modbus ({} are {}, which Modbus cannot write; manual §3.2.1)",
-                    op.canonical(),
-                    op.area.meaning(),
-                    if op.area == Area::I { "discrete inputs" } else { "input registers" }
+                msg!(
+                    "tbl-modbus-read-only",
+                    operand = op.canonical(),
+                    meaning = op.area.meaning().to_string(),
+                    table =
+                        if op.area == Area::I { Table::DiscreteInputs.name() } else { Table::InputRegisters.name() }
                 ),
             )
             .operand(op.canonical())
-            .hint("inputs follow the field wiring; write an output (Q, AQ) or memory (M, V) instead"))
+            .hint(msg!("tbl-modbus-read-only-hint")))
         }
         Area::SM | Area::T | Area::C => return Err(not_in_map(op)),
     };

@@ -1,7 +1,11 @@
 //! The K2's special-memory (SM) registers, per channel (`../shared/spec/k2.md` §4–§6, §8;
 //! manual §3.3.2, §3.4.2.2, §3.4.3.1). One table of addresses per channel kind, used by
 //! the simulator, the typed helpers, `help`, hints and completion — no SM address is
-//! written anywhere else.
+//! written anywhere else. The registers' meanings, the counter modes and the refusals are
+//! read in the user's language from the catalogue (`tables.ftl`, ids `tbl-sm-…`, `tbl-hsc-mode-…`).
+
+use crate::core::msg::{Lang, Msg};
+use crate::msg;
 
 /// Registers of one pulse output channel (PTO/PWM, §3.4.2.2) and its position channel (§3.4.3.1).
 #[derive(Clone, Copy, Debug)]
@@ -91,18 +95,12 @@ pub const PTO_INVALID_RULE: &str = "cycle and count must both be > 1, §3.4.2.2"
 /// (`SMD212`, `SMB212…SMB215`). In process and through the helper alike.
 pub fn pos_cv_read_only(r: &PtoRegs, written: &str) -> (String, String) {
     let msg = if written == format!("SMD{}", r.pos_cv) {
-        format!("SMD{} is the read-only current value of position channel {} (manual §3.4.3.1)", r.pos_cv, r.channel)
+        msg!("tbl-sm-pos-cv-read-only", cv = r.pos_cv, n = r.channel)
     } else {
-        format!(
-            "{written} overlaps SMD{}, the read-only current value of position channel {} (manual §3.4.3.1)",
-            r.pos_cv, r.channel
-        )
+        msg!("tbl-sm-pos-cv-overlap", written = written, cv = r.pos_cv, n = r.channel)
     };
-    let hint = format!(
-        "load a new value through SMD{} and SM{}.4 (set SMD{}=100, SM{}.4=1), or clear it with SM{}.6",
-        r.pos_new_cv, r.pos_control, r.pos_new_cv, r.pos_control, r.pos_control
-    );
-    (msg, hint)
+    let hint = msg!("tbl-sm-pos-cv-read-only-hint", new = r.pos_new_cv, control = r.pos_control);
+    (msg.text, hint.text)
 }
 
 /// Why PLS did nothing: the channel's enable bit (SM67.7 …) is clear and it is idle, so
@@ -110,23 +108,14 @@ pub fn pos_cv_read_only(r: &PtoRegs, written: &str) -> (String, String) {
 /// through the helper alike.
 pub fn pls_did_nothing(r: &PtoRegs) -> (String, String) {
     (
-        format!(
-            "PLS {} did nothing: the enable bit SM{}.7 of the control byte SMB{} is clear and PTO{} is idle",
-            r.channel, r.control, r.control, r.channel
-        ),
-        format!(
-            "set SMB{}=16#85 (enable, PTO, update cycle and count), SMW{} and SMD{}, then PLS {}",
-            r.control, r.cycle, r.count, r.channel
-        ),
+        msg!("tbl-sm-pls-did-nothing", n = r.channel, control = r.control).text,
+        msg!("tbl-sm-pls-did-nothing-hint", n = r.channel, control = r.control, cycle = r.cycle, count = r.count).text,
     )
 }
 
 /// Why a write to SMB0 is refused: (message, hint).
 pub fn smb0_read_only(written: &str) -> (String, String) {
-    (
-        format!("{written} holds the system status bits and is read-only"),
-        "SM0.0 is always on, SM0.1 marks the first scan, SM0.5 is the 1-second clock".to_string(),
-    )
+    (msg!("tbl-sm-smb0-read-only", written = written).text, msg!("tbl-sm-smb0-read-only-hint").text)
 }
 
 /// Registers of one high-speed counter (§3.3.2, §3.3.3).
@@ -217,12 +206,14 @@ pub enum SmSize {
     DWord,
 }
 
-/// A named SM register: canonical operand text, meaning and manual section.
+/// A named SM register: canonical operand text, meaning (in the language the table was
+/// built in, and its catalogue id) and manual section.
 #[derive(Clone, Debug)]
 pub struct SmName {
     pub byte: u32,
     pub size: SmSize,
     pub meaning: String,
+    pub meaning_id: &'static str,
     pub section: &'static str,
 }
 
@@ -248,28 +239,30 @@ impl SmName {
     }
 }
 
-/// The HSC operating modes per channel and their inputs (§3.3.1).
-pub static HSC_MODES: &[(u8, u8, &str)] = &[
-    (0, 0, "count I0.1, direction by SM37.3"),
-    (0, 1, "count I0.1, reset I0.0, direction by SM37.3"),
-    (0, 2, "count I0.1, reset I0.0, start I0.5, direction by SM37.3"),
-    (0, 3, "count I0.1, direction input I0.5"),
-    (0, 4, "count I0.1, direction input I0.5, reset I0.0"),
-    (0, 6, "up I0.0 / down I0.1 (two-pulse)"),
-    (0, 9, "A/B quadrature, A = I0.1, B = I0.0"),
-    (1, 0, "count I0.3, direction by SM47.3"),
-    (1, 1, "count I0.3, reset I0.4, direction by SM47.3"),
-    (1, 2, "count I0.3, reset I0.4, start I0.6, direction by SM47.3"),
-    (1, 3, "count I0.3, direction input I0.2"),
-    (1, 4, "count I0.3, direction input I0.2, reset I0.4"),
-    (1, 6, "up I0.2 / down I0.3 (two-pulse)"),
-    (1, 7, "up I0.2 / down I0.3 (two-pulse), reset I0.4"),
-    (1, 9, "A/B quadrature, A = I0.3, B = I0.2"),
-    (1, 10, "A/B quadrature, A = I0.3, B = I0.2, reset I0.4"),
-    (2, 0, "count I0.5, direction by SM57.3"),
-    (2, 9, "A/B quadrature, A = I0.4, B = I0.5"),
-    (3, 0, "count I0.7, direction by SM127.3"),
-    (3, 9, "A/B quadrature, A = I0.6, B = I0.7"),
+/// The HSC operating modes per channel and their inputs (§3.3.1): (counter, mode, its
+/// description in a language — `Lang::En` where the text goes into a program's comments).
+#[allow(clippy::type_complexity)] // one table row: counter, mode, text
+pub static HSC_MODES: &[(u8, u8, fn(Lang) -> Msg)] = &[
+    (0, 0, |l| msg!(lang: l, "tbl-hsc-mode-0-0")),
+    (0, 1, |l| msg!(lang: l, "tbl-hsc-mode-0-1")),
+    (0, 2, |l| msg!(lang: l, "tbl-hsc-mode-0-2")),
+    (0, 3, |l| msg!(lang: l, "tbl-hsc-mode-0-3")),
+    (0, 4, |l| msg!(lang: l, "tbl-hsc-mode-0-4")),
+    (0, 6, |l| msg!(lang: l, "tbl-hsc-mode-0-6")),
+    (0, 9, |l| msg!(lang: l, "tbl-hsc-mode-0-9")),
+    (1, 0, |l| msg!(lang: l, "tbl-hsc-mode-1-0")),
+    (1, 1, |l| msg!(lang: l, "tbl-hsc-mode-1-1")),
+    (1, 2, |l| msg!(lang: l, "tbl-hsc-mode-1-2")),
+    (1, 3, |l| msg!(lang: l, "tbl-hsc-mode-1-3")),
+    (1, 4, |l| msg!(lang: l, "tbl-hsc-mode-1-4")),
+    (1, 6, |l| msg!(lang: l, "tbl-hsc-mode-1-6")),
+    (1, 7, |l| msg!(lang: l, "tbl-hsc-mode-1-7")),
+    (1, 9, |l| msg!(lang: l, "tbl-hsc-mode-1-9")),
+    (1, 10, |l| msg!(lang: l, "tbl-hsc-mode-1-10")),
+    (2, 0, |l| msg!(lang: l, "tbl-hsc-mode-2-0")),
+    (2, 9, |l| msg!(lang: l, "tbl-hsc-mode-2-9")),
+    (3, 0, |l| msg!(lang: l, "tbl-hsc-mode-3-0")),
+    (3, 9, |l| msg!(lang: l, "tbl-hsc-mode-3-9")),
 ];
 
 /// How a counter mode takes its count (§3.3.1).
@@ -361,110 +354,113 @@ pub fn hsc_modes_of(channel: u8) -> Vec<u8> {
     HSC_MODE_INPUTS.iter().filter(|m| m.channel == channel).map(|m| m.mode).collect()
 }
 
-/// Every named SM register, generated from the channel tables above plus the system bits.
+/// Every named SM register, generated from the channel tables above plus the system bits,
+/// with the meanings in the current language (one table per language, built when first asked).
 pub fn names() -> &'static [SmName] {
     use std::sync::OnceLock;
-    static NAMES: OnceLock<Vec<SmName>> = OnceLock::new();
-    NAMES.get_or_init(build_names)
+    static NAMES: [OnceLock<Vec<SmName>>; 3] = [OnceLock::new(), OnceLock::new(), OnceLock::new()];
+    let at = Lang::ALL.iter().position(|l| *l == crate::core::msg::language()).unwrap_or(0);
+    NAMES[at].get_or_init(build_names)
 }
 
 fn build_names() -> Vec<SmName> {
     let mut v = Vec::new();
-    let mut add = |byte: u32, size: SmSize, meaning: String, section: &'static str| {
-        v.push(SmName { byte, size, meaning, section })
+    let mut add = |byte: u32, size: SmSize, meaning: Msg, section: &'static str| {
+        v.push(SmName { byte, size, meaning_id: meaning.id, meaning: meaning.text, section })
     };
     // The first status byte: SM0.0 and SM0.1 as the manual's PTO/PWM examples use them
     // (§3.4.2.3, §3.4.2.4; the digest's §8), the rest by the S7-200 convention Kinco's public
     // notes follow. The texts are shown to users (`help SM0.1`): they cite what the user has.
     let ex = "§3.4.2.3, §3.4.2.4 (the manual's examples; S7-200 convention)";
-    add(0, SmSize::Byte, "system status bits (read-only)".into(), ex);
-    add(0, SmSize::Bit(0), "always on".into(), ex);
-    add(0, SmSize::Bit(1), "on during the first scan only".into(), ex);
-    add(0, SmSize::Bit(5), "1-second clock (0.5 s on, 0.5 s off)".into(), "S7-200 convention (KincoBuilder's help)");
-    add(0, SmSize::Bit(6), "toggles every scan".into(), "S7-200 convention (KincoBuilder's help)");
+    let s7 = "S7-200 convention (KincoBuilder's help)";
+    add(0, SmSize::Byte, msg!("tbl-sm-smb0"), ex);
+    add(0, SmSize::Bit(0), msg!("tbl-sm-sm0-0"), ex);
+    add(0, SmSize::Bit(1), msg!("tbl-sm-sm0-1"), ex);
+    add(0, SmSize::Bit(5), msg!("tbl-sm-sm0-5"), s7);
+    add(0, SmSize::Bit(6), msg!("tbl-sm-sm0-6"), s7);
     for r in PTO_REGS {
         let n = r.channel;
         let q = ["Q0.0", "Q0.1", "Q0.4", "Q0.5"][n as usize];
         let s = "§3.4.2.2";
-        add(r.control, SmSize::Byte, format!("PTO{n}/PWM{n} ({q}) control byte"), s);
+        add(r.control, SmSize::Byte, msg!("tbl-sm-pto-control", n = n, q = q), s);
         for (bit, m) in [
-            (0, "update cycle time"),
-            (1, "update pulse width (PWM)"),
-            (2, "update pulse count (PTO)"),
-            (3, "time base: 0 = 1 µs, 1 = 1 ms"),
-            (4, "PWM update: 0 async, 1 sync"),
-            (5, "PTO mode: 0 single, 1 multi-segment"),
-            (6, "function: 0 PTO, 1 PWM"),
-            (7, "enable"),
+            (0, msg!("tbl-sm-pto-control-0", n = n)),
+            (1, msg!("tbl-sm-pto-control-1", n = n)),
+            (2, msg!("tbl-sm-pto-control-2", n = n)),
+            (3, msg!("tbl-sm-pto-control-3", n = n)),
+            (4, msg!("tbl-sm-pto-control-4", n = n)),
+            (5, msg!("tbl-sm-pto-control-5", n = n)),
+            (6, msg!("tbl-sm-pto-control-6", n = n)),
+            (7, msg!("tbl-sm-pto-control-7", n = n)),
         ] {
-            add(r.control, SmSize::Bit(bit), format!("PTO{n} control: {m}"), s);
+            add(r.control, SmSize::Bit(bit), m, s);
         }
-        add(r.status, SmSize::Byte, format!("PTO{n}/PWM{n} ({q}) status byte"), s);
+        add(r.status, SmSize::Byte, msg!("tbl-sm-pto-status", n = n, q = q), s);
         for (bit, m) in [
-            (3, "PWM idle"),
-            (4, "cycle time or pulse count invalid (must be > 1)"),
-            (5, "profile aborted by user command"),
-            (7, "PTO idle"),
+            (3, msg!("tbl-sm-pto-status-3", n = n)),
+            (4, msg!("tbl-sm-pto-status-4", n = n)),
+            (5, msg!("tbl-sm-pto-status-5", n = n)),
+            (7, msg!("tbl-sm-pto-status-7", n = n)),
         ] {
-            add(r.status, SmSize::Bit(bit), format!("PTO{n} status: {m}"), s);
+            add(r.status, SmSize::Bit(bit), m, s);
         }
-        add(r.cycle, SmSize::Word, format!("PTO{n}/PWM{n} cycle time (2…65535, in the time base)"), s);
-        add(r.width, SmSize::Word, format!("PWM{n} pulse width (0…65535, in the time base)"), s);
-        add(r.count, SmSize::DWord, format!("PTO{n} pulse count (≥ 2)"), s);
-        add(r.profile, SmSize::Word, format!("PTO{n} multi-segment profile table start (odd V offset)"), s);
+        add(r.cycle, SmSize::Word, msg!("tbl-sm-pto-cycle", n = n), s);
+        add(r.width, SmSize::Word, msg!("tbl-sm-pwm-width", n = n), s);
+        add(r.count, SmSize::DWord, msg!("tbl-sm-pto-count", n = n), s);
+        add(r.profile, SmSize::Word, msg!("tbl-sm-pto-profile", n = n), s);
         let p = "§3.4.3.1";
-        add(r.pos_cv, SmSize::DWord, format!("position channel {n} current value, pulses (read-only)"), p);
-        add(
-            r.pos_new_cv,
-            SmSize::DWord,
-            format!("position channel {n} new current value (loaded by bit 4 of SMB{})", r.pos_control),
-            p,
-        );
-        add(r.pos_control, SmSize::Byte, format!("position channel {n} control byte"), p);
+        add(r.pos_cv, SmSize::DWord, msg!("tbl-sm-pos-cv", n = n), p);
+        add(r.pos_new_cv, SmSize::DWord, msg!("tbl-sm-pos-new-cv", n = n, control = r.pos_control), p);
+        add(r.pos_control, SmSize::Byte, msg!("tbl-sm-pos-control", n = n), p);
         for (bit, m) in [
-            (7, "emergency stop latched (set by PSTOP)"),
-            (6, "clear current value"),
-            (4, "load the new current value"),
-            (3, "direction output disable"),
+            (7, msg!("tbl-sm-pos-control-7", n = n)),
+            (6, msg!("tbl-sm-pos-control-6", n = n)),
+            (4, msg!("tbl-sm-pos-control-4", n = n)),
+            (3, msg!("tbl-sm-pos-control-3", n = n)),
         ] {
-            add(r.pos_control, SmSize::Bit(bit), format!("position channel {n} control: {m}"), p);
+            add(r.pos_control, SmSize::Bit(bit), m, p);
         }
     }
     for r in HSC_REGS {
         let n = r.channel;
         let s = "§3.3.2";
-        add(r.control, SmSize::Byte, format!("HSC{n} control byte"), s);
+        add(r.control, SmSize::Byte, msg!("tbl-sm-hsc-control", n = n), s);
         for (bit, m) in [
-            (0, "reset active level (0 high, 1 low)"),
-            (1, "start active level (0 high, 1 low)"),
-            (2, "quadrature rate (0 = 1x, 1 = 4x)"),
-            (3, "count direction (0 down, 1 up)"),
-            (4, "write the count direction"),
-            (5, "write the new preset value"),
-            (6, "write the new current value"),
-            (7, "enable"),
+            (0, msg!("tbl-sm-hsc-control-0", n = n)),
+            (1, msg!("tbl-sm-hsc-control-1", n = n)),
+            (2, msg!("tbl-sm-hsc-control-2", n = n)),
+            (3, msg!("tbl-sm-hsc-control-3", n = n)),
+            (4, msg!("tbl-sm-hsc-control-4", n = n)),
+            (5, msg!("tbl-sm-hsc-control-5", n = n)),
+            (6, msg!("tbl-sm-hsc-control-6", n = n)),
+            (7, msg!("tbl-sm-hsc-control-7", n = n)),
         ] {
-            add(r.control, SmSize::Bit(bit), format!("HSC{n} control: {m}"), s);
+            add(r.control, SmSize::Bit(bit), m, s);
         }
-        add(r.status, SmSize::Byte, format!("HSC{n} status byte"), s);
-        for (bit, m) in [(3, "multi-PV table fault"), (5, "current direction (1 up)"), (6, "CV = PV"), (7, "CV > PV")] {
-            add(r.status, SmSize::Bit(bit), format!("HSC{n} status: {m}"), s);
+        add(r.status, SmSize::Byte, msg!("tbl-sm-hsc-status", n = n), s);
+        for (bit, m) in [
+            (3, msg!("tbl-sm-hsc-status-3", n = n)),
+            (5, msg!("tbl-sm-hsc-status-5", n = n)),
+            (6, msg!("tbl-sm-hsc-status-6", n = n)),
+            (7, msg!("tbl-sm-hsc-status-7", n = n)),
+        ] {
+            add(r.status, SmSize::Bit(bit), m, s);
         }
-        add(r.cv, SmSize::DWord, format!("HSC{n} current value (CV)"), s);
-        add(r.pv, SmSize::DWord, format!("HSC{n} preset value (PV, single-PV mode)"), s);
+        add(r.cv, SmSize::DWord, msg!("tbl-sm-hsc-cv", n = n), s);
+        add(r.pv, SmSize::DWord, msg!("tbl-sm-hsc-pv", n = n), s);
         let t = "§3.3.3";
-        add(r.mpv_control, SmSize::Byte, format!("HSC{n} multi-PV control byte"), t);
+        add(r.mpv_control, SmSize::Byte, msg!("tbl-sm-hsc-mpv-control", n = n), t);
         for (bit, m) in [
-            (0, "use multiple PVs"),
-            (1, "PV type (0 absolute, 1 relative)"),
-            (2, "cyclic CV=PV interrupts (relative only)"),
-            (4, "load the PV table"),
-            (5, "reset interrupt variable (0 yes, 1 no)"),
+            (0, msg!("tbl-sm-hsc-mpv-control-0", n = n)),
+            (1, msg!("tbl-sm-hsc-mpv-control-1", n = n)),
+            (2, msg!("tbl-sm-hsc-mpv-control-2", n = n)),
+            (4, msg!("tbl-sm-hsc-mpv-control-4", n = n)),
+            (5, msg!("tbl-sm-hsc-mpv-control-5", n = n)),
         ] {
-            add(r.mpv_control, SmSize::Bit(bit), format!("HSC{n} multi-PV control: {m}"), t);
+            add(r.mpv_control, SmSize::Bit(bit), m, t);
         }
-        add(r.table, SmSize::Word, format!("HSC{n} PV table start (odd V offset)"), t);
-        add(r.segment, SmSize::Byte, format!("HSC{n} current PV segment number (from 0)"), t);
+        add(r.table, SmSize::Word, msg!("tbl-sm-hsc-table", n = n), t);
+        add(r.segment, SmSize::Byte, msg!("tbl-sm-hsc-segment", n = n), t);
     }
     v
 }
@@ -509,6 +505,7 @@ mod tests {
     fn structured_modes_match_the_text_table() {
         assert_eq!(HSC_MODES.len(), HSC_MODE_INPUTS.len());
         for &(ch, mode, text) in HSC_MODES {
+            let text = text(Lang::En).text;
             let m = hsc_mode(ch, mode).unwrap_or_else(|| panic!("HSC{ch} mode {mode} missing"));
             let pin = |p: (u32, u8)| format!("I{}.{}", p.0, p.1);
             assert!(text.contains(&pin(m.count)), "HSC{ch} mode {mode}: {text}");
@@ -524,7 +521,42 @@ mod tests {
             assert!(text.contains(word), "HSC{ch} mode {mode}: {text}");
         }
         // Mode 6's up input is listed first in the text.
-        assert!(HSC_MODES.iter().any(|m| m.0 == 0 && m.1 == 6 && m.2.starts_with("up I0.0")));
+        assert!(HSC_MODES.iter().any(|m| m.0 == 0 && m.1 == 6 && m.2(Lang::En).starts_with("up I0.0")));
+    }
+
+    /// Every row's text is in every language, and every `tbl-sm-…`/`tbl-hsc-mode-…` id of the
+    /// catalogue belongs to a row (or is one of the refusals above).
+    #[test]
+    fn every_row_has_its_text_in_every_language() {
+        let mut used: Vec<&str> = names().iter().map(|n| n.meaning_id).collect();
+        used.extend(HSC_MODES.iter().map(|m| m.2(Lang::En).id));
+        for lang in Lang::ALL {
+            let ids = crate::core::msg::ids(*lang);
+            for id in &used {
+                assert!(ids.iter().any(|i| i == id), "{id} has no text in {}", lang.tag());
+            }
+        }
+        let refusals = [
+            "tbl-sm-pos-cv-read-only",
+            "tbl-sm-pos-cv-overlap",
+            "tbl-sm-pos-cv-read-only-hint",
+            "tbl-sm-pls-did-nothing",
+            "tbl-sm-pls-did-nothing-hint",
+            "tbl-sm-smb0-read-only",
+            "tbl-sm-smb0-read-only-hint",
+        ];
+        for id in crate::core::msg::ids(Lang::En) {
+            if id.starts_with("tbl-sm-") || id.starts_with("tbl-hsc-mode-") {
+                assert!(used.contains(&id.as_str()) || refusals.contains(&id.as_str()), "{id} belongs to no row");
+            }
+        }
+        let r = &PTO_REGS[0];
+        assert_eq!(
+            pos_cv_read_only(r, "SMD212").0,
+            "SMD212 is the read-only current value of position channel 0 (manual §3.4.3.1)"
+        );
+        assert!(pls_did_nothing(r).1.starts_with("set SMB67=16#85"));
+        assert!(smb0_read_only("SMB0").0.starts_with("SMB0 holds"));
     }
 
     #[test]

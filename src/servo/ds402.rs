@@ -11,6 +11,7 @@
 use super::objects::{self, ObjRef};
 use super::ServoOps;
 use crate::core::{Clock, Error, ErrorKind, Result, Value};
+use crate::msg;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Duration;
 
@@ -276,7 +277,12 @@ pub fn write(ops: &mut dyn ServoOps, name: &str, v: i64) -> Result<()> {
     let r = obj(name);
     let (lo, hi) = r.dtype.int_range();
     if v < lo || v > hi {
-        return Err(Error::new(ErrorKind::Value, format!("{v} does not fit {name} ({lo}…{hi})")).operand(name));
+        let (v, lo, hi) = (v.to_string(), lo.to_string(), hi.to_string());
+        return Err(Error::new(
+            ErrorKind::Value,
+            msg!("tbl-ds402-does-not-fit", value = v, name = name, lo = lo, hi = hi),
+        )
+        .operand(name));
     }
     ops.write_raw(r, r.dtype.encode(&Value::Int(v)))
 }
@@ -303,16 +309,22 @@ fn step(ops: &mut dyn ServoOps, w: &Waiter, what: &str, cw: u16, want: &[State])
             return Ok(s);
         }
         if w.clock.now() - start >= STEP_TIMEOUT {
-            let names: Vec<&str> = want.iter().map(|s| s.name()).collect();
-            return Err(Error::state(format!(
-                "{what} (controlword 16#{cw:04X}) did not reach {}: statusword 16#{sw:04X} = {}",
-                names.join(" or "),
-                st.map(State::name).unwrap_or("unknown state")
-            ))
-            .hint(if sw & 0x08 != 0 {
-                "the drive is in fault: run servo fault-reset"
+            // "A or B or C": the states the step accepts, joined as the language joins alternatives.
+            let names =
+                want.iter().map(|s| s.name().to_string()).reduce(|a, b| msg!("tbl-ds402-or", a = a, b = b).text);
+            let names = names.unwrap_or_default();
+            let (cw, sw) = (format!("{cw:04X}"), format!("{sw:04X}"));
+            let m = match st {
+                Some(st) => {
+                    msg!("tbl-ds402-step-stuck", what = what, cw = &cw, want = &names, sw = &sw, state = st.name())
+                }
+                None => msg!("tbl-ds402-step-stuck-unknown", what = what, cw = &cw, want = &names, sw = &sw),
+            };
+            let faulted = u16::from_str_radix(&sw, 16).unwrap_or(0) & 0x08 != 0;
+            return Err(Error::state(m).hint(if faulted {
+                msg!("tbl-ds402-in-fault-hint")
             } else {
-                "check servo status"
+                msg!("tbl-ds402-check-status-hint")
             }));
         }
         w.sleep(POLL)?;
@@ -332,8 +344,8 @@ pub fn enable(ops: &mut dyn ServoOps, w: &Waiter) -> Result<Vec<&'static str>> {
             return Ok(vec!["enable operation"]);
         }
         Some(State::Fault | State::FaultReactionActive) => {
-            return Err(Error::state(format!("the drive is in fault (statusword 16#{sw:04X})"))
-                .hint("run servo fault-reset, then servo enable"))
+            return Err(Error::state(msg!("tbl-ds402-in-fault", sw = format!("{sw:04X}")))
+                .hint(msg!("tbl-ds402-in-fault-enable-hint")))
         }
         _ => {}
     }
@@ -385,7 +397,7 @@ pub fn set_mode(ops: &mut dyn ServoOps, mode: i8) -> Result<()> {
     write(ops, "operating_mode", mode as i64)?;
     let got = read(ops, "operating_mode")? as i8;
     if got != mode {
-        return Err(Error::state(format!("operating mode reads back {got} after writing {mode}")));
+        return Err(Error::state(msg!("tbl-ds402-mode-readback", got = got, mode = mode)));
     }
     Ok(())
 }
@@ -393,9 +405,12 @@ pub fn set_mode(ops: &mut dyn ServoOps, mode: i8) -> Result<()> {
 fn require_enabled(ops: &mut dyn ServoOps, what: &str) -> Result<()> {
     let sw = statusword(ops)?;
     if State::from_statusword(sw) != Some(State::OperationEnabled) {
-        let st = State::from_statusword(sw).map(State::name).unwrap_or("unknown state");
-        return Err(Error::state(format!("cannot {what}: the drive is in \"{st}\" (statusword 16#{sw:04X})"))
-            .hint("run servo enable first"));
+        let sw = format!("{sw:04X}");
+        let m = match State::from_statusword(u16::from_str_radix(&sw, 16).unwrap_or(0)) {
+            Some(st) => msg!("tbl-ds402-not-enabled", what = what, state = st.name(), sw = &sw),
+            None => msg!("tbl-ds402-not-enabled-unknown", what = what, sw = &sw),
+        };
+        return Err(Error::state(m).hint(msg!("tbl-ds402-not-enabled-hint")));
     }
     Ok(())
 }
@@ -437,11 +452,12 @@ pub fn move_to(ops: &mut dyn ServoOps, w: &Waiter, relative: bool, pos: i64, p: 
             break;
         }
         if w.clock.now() - start >= BUFFER_WAIT {
-            return Err(Error::state(format!(
-                "the drive's set-point buffer stayed full for {} s (statusword 16#{sw:04X}, bit 12 high with bit 4 low)",
-                BUFFER_WAIT.as_secs()
+            return Err(Error::state(msg!(
+                "tbl-ds402-buffer-full",
+                seconds = BUFFER_WAIT.as_secs(),
+                sw = format!("{sw:04X}")
             ))
-            .hint("wait for the running moves (servo wait target), then move again"));
+            .hint(msg!("tbl-ds402-buffer-full-hint")));
         }
         w.sleep(POLL)?;
     }
@@ -453,10 +469,8 @@ pub fn move_to(ops: &mut dyn ServoOps, w: &Waiter, relative: bool, pos: i64, p: 
             break;
         }
         if sw & 0x08 != 0 || w.clock.now() - start >= STEP_TIMEOUT {
-            return Err(Error::state(format!(
-                "the drive did not acknowledge the set-point (statusword 16#{sw:04X}, bit 12 clear)"
-            ))
-            .hint("check servo status"));
+            return Err(Error::state(msg!("tbl-ds402-no-ack", sw = format!("{sw:04X}")))
+                .hint(msg!("tbl-ds402-check-status-hint")));
         }
         w.sleep(POLL)?;
     }
@@ -504,24 +518,35 @@ pub fn wait_target(ops: &mut dyn ServoOps, w: &Waiter, timeout: Duration) -> Res
     loop {
         let sw = statusword(ops)?;
         if sw & 0x08 != 0 {
-            return Err(Error::state(format!("the drive went into fault while waiting (statusword 16#{sw:04X})"))
-                .hint("servo status shows the state; servo fault-reset clears it"));
+            return Err(Error::state(msg!("tbl-ds402-fault-while-waiting", sw = format!("{sw:04X}")))
+                .hint(msg!("tbl-ds402-fault-while-waiting-hint")));
         }
         let st = State::from_statusword(sw);
         if sw & (1 << 10) != 0 && matches!(st, Some(State::OperationEnabled | State::QuickStopActive)) {
             if sw & (1 << 13) != 0 && read(ops, "operating_mode")? == 6 {
-                return Err(Error::state(format!("homing ended in a homing error (statusword 16#{sw:04X}, bit 13)"))
-                    .hint("check the homing method (6098.00) and the switches; servo status shows the bits"));
+                return Err(Error::state(msg!("tbl-ds402-homing-error", sw = format!("{sw:04X}")))
+                    .hint(msg!("tbl-ds402-homing-error-hint")));
             }
             return Ok(sw);
         }
         if w.clock.now() - start >= timeout {
-            let pos = read(ops, "position_actual").map(|p| format!(", position_actual {p}")).unwrap_or_default();
             return Err(Error::new(
                 ErrorKind::Timeout,
-                format!("target not reached within {:.3} s (statusword 16#{sw:04X}{pos})", timeout.as_secs_f64()),
+                match read(ops, "position_actual") {
+                    Ok(p) => msg!(
+                        "tbl-ds402-target-timeout-at",
+                        seconds = format!("{:.3}", timeout.as_secs_f64()),
+                        sw = format!("{sw:04X}"),
+                        position = p.to_string()
+                    ),
+                    Err(_) => msg!(
+                        "tbl-ds402-target-timeout",
+                        seconds = format!("{:.3}", timeout.as_secs_f64()),
+                        sw = format!("{sw:04X}")
+                    ),
+                },
             )
-            .hint("a longer timeout=, or servo status to see why"));
+            .hint(msg!("tbl-ds402-target-timeout-hint")));
         }
         w.sleep(POLL)?;
     }
@@ -532,7 +557,7 @@ pub fn wait_target(ops: &mut dyn ServoOps, w: &Waiter, timeout: Duration) -> Res
 /// Returns the controlword written.
 pub fn halt(ops: &mut dyn ServoOps, on: bool) -> Result<u16> {
     declare(ops, &["controlword"])?;
-    require_enabled(ops, if on { "halt" } else { "release halt" })?;
+    require_enabled(ops, if on { "halt" } else { "release-halt" })?;
     let cw = read(ops, "controlword")? as u16;
     let new = if on { cw | cw::HALT } else { cw & !cw::HALT };
     write(ops, "controlword", new as i64)?;

@@ -15,7 +15,9 @@
 use super::frame::Size;
 use super::units::{self, Resolution, Unit};
 use crate::core::literal::parse_literal;
+use crate::core::msg::Msg;
 use crate::core::{Candidate, DataType, Error, ErrorKind, Operand, OperandSpace, Result, Value};
+use crate::msg;
 
 /// Who may read and write an object.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -36,7 +38,7 @@ impl Access {
 }
 
 /// One object of the dictionary.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug)]
 pub struct Object {
     pub name: &'static str,
     pub index: u16,
@@ -45,8 +47,18 @@ pub struct Object {
     pub dtype: DataType,
     pub access: Access,
     pub unit: Unit,
-    pub description: &'static str,
+    /// What it is, in the user's language (catalogue `tables.ftl`, ids `tbl-servo-…`).
+    pub description: fn() -> Msg,
     pub source: &'static str,
+}
+
+/// Two rows are the same object when their facts agree; the description follows from the
+/// name (function pointers do not compare reliably).
+impl PartialEq for Object {
+    fn eq(&self, o: &Object) -> bool {
+        (self.name, self.index, self.sub, self.dtype, self.access, self.unit, self.source)
+            == (o.name, o.index, o.sub, o.dtype, o.access, o.unit, o.source)
+    }
 }
 
 impl Object {
@@ -76,7 +88,7 @@ const fn o(
     dtype: DataType,
     access: Access,
     unit: Unit,
-    description: &'static str,
+    description: fn() -> Msg,
     source: &'static str,
 ) -> Object {
     Object { name, index, sub, dtype, access, unit, description, source }
@@ -92,76 +104,76 @@ const fn o(
 /// "DS402" the CiA 402 profile. "uncertain" marks a meaning no primary source confirms.
 #[rustfmt::skip]
 pub static OBJECTS: &[Object] = &[
-    o("controlword", 0x6040, 0, U16, RW, Unit::Bits, "DS402 controlword: 0x06 shutdown, 0x07 switch on, 0x0F enable operation, bit 4 new set-point, bit 5 change set immediately, bit 6 relative, bit 7 fault reset, bit 8 halt, bit 12 Kinco start on target write (0x103F)", "seed §3, notes, C# client, DS402"),
-    o("statusword", 0x6041, 0, U16, RO, Unit::Bits, "DS402 statusword: state bits 0-6, bit 10 target reached, bit 11 internal limit, bit 12 set-point ack/homing attained, bit 13 following/homing error, bit 15 Kinco home found", "seed §2-3, notes, DS402"),
-    o("error_code", 0x603F, 0, U16, RO, Unit::None, "last error code (DS402; 0 = no fault)", "DS402"),
-    o("quickstop_option", 0x605A, 0, I16, RW, Unit::None, "quick stop option code: 0 coast, 1/2 stop on profile/quick-stop deceleration then switch on disabled, 5/6 the same and stay in quick stop active", "C# client, DS402"),
-    o("shutdown_option", 0x605B, 0, I16, RW, Unit::None, "shutdown option code (stored; the simulator stops at once)", "C# client, DS402"),
-    o("disable_option", 0x605C, 0, I16, RW, Unit::None, "disable operation option code (stored; the simulator stops at once)", "C# client, DS402"),
-    o("halt_option", 0x605D, 0, I16, RW, Unit::None, "halt option code: 1 stop on profile deceleration, 2 on quick-stop deceleration", "C# client, DS402"),
-    o("fault_reaction_option", 0x605E, 0, I16, RW, Unit::None, "fault reaction option code (stored; the simulator stops at once)", "C# client, DS402"),
-    o("operating_mode", 0x6060, 0, I8, RW, Unit::Mode, "operating mode: 1 profile position, 3 profile velocity, -3 immediate velocity, 4 torque, 6 homing, -4 pulse train", "seed §3, notes"),
-    o("mode_display", 0x6061, 0, I8, RO, Unit::Mode, "operating mode in effect (DS402; uncertain on Kinco)", "notes"),
-    o("position_actual", 0x6063, 0, I32, RO, Unit::Increments, "actual position (Kinco drivers use 6063, not 6064)", "notes, C# client"),
-    o("position_actual_value", 0x6064, 0, I32, RO, Unit::Increments, "actual position as DS402 numbers it (the same value as 6063 in the simulator; uncertain on Kinco)", "DS402"),
-    o("max_following_error", 0x6065, 0, U32, RW, Unit::Increments, "following error window: a larger following error for longer than 6066.00 faults the drive (0x8611)", "notes, C# client, DS402"),
-    o("following_error_timeout", 0x6066, 0, U16, RW, Unit::None, "following error time-out, ms", "DS402"),
-    o("position_window", 0x6067, 0, U32, RW, Unit::Increments, "position window for target reached", "notes, C# client"),
-    o("velocity_actual", 0x606C, 0, I32, RO, Unit::Speed, "actual velocity", "notes, C# client"),
-    o("target_torque", 0x6071, 0, I16, RW, Unit::None, "target torque (unit uncertain)", "notes, C# client"),
-    o("max_current", 0x6073, 0, U16, RW, Unit::None, "maximal current command (unit uncertain)", "C# client"),
-    o("torque_actual", 0x6077, 0, I16, RO, Unit::None, "actual torque (unit uncertain)", "DS402"),
-    o("current_actual", 0x6078, 0, I16, RO, Unit::None, "actual current (unit uncertain)", "notes, C# client"),
-    o("target_position", 0x607A, 0, I32, RW, Unit::Increments, "target position for profile position mode", "seed §3, notes"),
-    o("home_offset", 0x607C, 0, I32, RW, Unit::Increments, "home offset: the position assigned at the home point after homing", "notes, C# client"),
-    o("soft_limit_pos", 0x607D, 1, I32, RW, Unit::Increments, "software position limit + (notes and C# client; CiA 402 calls sub 1 the minimum limit - check your drive); limits are off while + <= -", "notes, C# client"),
-    o("soft_limit_neg", 0x607D, 2, I32, RW, Unit::Increments, "software position limit - (notes and C# client; CiA 402 calls sub 2 the maximum limit - check your drive)", "notes, C# client"),
-    o("polarity", 0x607E, 0, U8, RW, Unit::None, "direction: 0 CCW positive, 1 CW positive", "notes, C# client"),
-    o("max_speed", 0x6080, 0, U16, RW, Unit::None, "maximum speed (unit uncertain)", "notes, C# client"),
-    o("profile_velocity", 0x6081, 0, U32, RW, Unit::Speed, "profile (trapezoid) speed for position moves", "seed §3, notes"),
-    o("profile_acceleration", 0x6083, 0, U32, RW, Unit::Accel, "profile (trapezoid) acceleration", "seed §3, notes"),
-    o("profile_deceleration", 0x6084, 0, U32, RW, Unit::Accel, "profile (trapezoid) deceleration", "seed §3, notes"),
-    o("quickstop_deceleration", 0x6085, 0, U32, RW, Unit::Accel, "deceleration used by quick stop", "notes, C# client"),
-        o("homing_method", 0x6098, 0, I8, RW, Unit::None, "homing method: 17/18 negative/positive limit switch, 19-22 home switch, 33/34 index pulse, 35/37 current position (CiA 402 numbering)", "notes, C# client, DS402"),
-    o("homing_speed_switch", 0x6099, 1, U32, RW, Unit::Speed, "homing speed while searching the switch", "notes, C# client"),
-    o("homing_speed_zero", 0x6099, 2, U32, RW, Unit::Speed, "homing speed while searching zero", "notes, C# client"),
-    o("homing_offset_mode", 0x6099, 5, U8, RW, Unit::None, "Kinco homing offset mode: 0 home is position 0, 1 home is the offset (stored; uncertain)", "C# client"),
-    o("homing_acceleration", 0x609A, 0, U32, RW, Unit::Accel, "homing acceleration", "notes, C# client"),
-    o("following_error_actual", 0x60F4, 0, I32, RO, Unit::Increments, "actual following error (simulated as velocity x 2 ms)", "DS402"),
-    o("digital_inputs", 0x60FD, 0, U32, RO, Unit::Bits, "digital inputs: bit 0 negative limit, bit 1 positive limit, bit 2 home, bit 3 hardware lock", "notes, C# client"),
-    o("digital_outputs", 0x60FE, 1, U32, RW, Unit::Bits, "digital outputs (DS402 physical outputs; stored)", "DS402"),
-    o("target_velocity", 0x60FF, 0, I32, RW, Unit::Speed, "target speed for velocity modes 3 and -3", "seed §3, notes"),
-    o("brake_resistor", 0x60F7, 1, U16, RW, Unit::Ohm, "braking resistor resistance", "seed §1"),
-    o("brake_resistor_power", 0x60F7, 2, U16, RW, Unit::Watt, "braking resistor power", "seed §1"),
-    o("brake_resistor_time", 0x60F7, 3, U16, RW, Unit::Second, "braking resistor time constant", "seed §1"),
-    o("velocity_kp", 0x60F9, 1, U16, RW, Unit::None, "velocity loop proportional gain (stored)", "C# client"),
-    o("velocity_ki", 0x60F9, 2, U16, RW, Unit::None, "velocity loop integral gain (stored)", "C# client"),
-    o("position_kp", 0x60FB, 1, U16, RW, Unit::None, "position loop proportional gain (stored)", "C# client"),
-    o("drive_id", 0x100B, 0, U8, RW, Unit::None, "RS232 drive id (1 default; takes effect after a restart)", "seed §1"),
-    o("din_polarity", 0x2010, 1, U16, RW, Unit::Bits, "digital input polarity (stored)", "C# client"),
-    o("din_simulate", 0x2010, 2, U16, RW, Unit::Bits, "simulated digital inputs (stored)", "C# client"),
-    o("din1_function", 0x2010, 3, U16, RW, Unit::None, "DIN1 function (stored; 0x10 positive limit, 0x20 negative limit per a public C++ client - uncertain)", "C# client"),
-    o("din2_function", 0x2010, 4, U16, RW, Unit::None, "DIN2 function (stored)", "C# client"),
-    o("din3_function", 0x2010, 5, U16, RW, Unit::None, "DIN3 function (stored)", "C# client"),
-    o("din4_function", 0x2010, 6, U16, RW, Unit::None, "DIN4 function (stored)", "C# client"),
-    o("din_real", 0x2010, 0x0A, U16, RO, Unit::Bits, "digital inputs as wired (the simulator mirrors 60FD.00 bits 0-2)", "C# client"),
-    o("dout1_function", 0x2010, 0x0F, U16, RW, Unit::None, "DOUT1 function (stored)", "C# client"),
-    o("dout2_function", 0x2010, 0x10, U16, RW, Unit::None, "DOUT2 function (stored)", "C# client"),
-    o("dout_real", 0x2010, 0x14, U16, RO, Unit::Bits, "digital outputs as driven", "C# client"),
-    o("gear_factor", 0x2508, 1, U16, RW, Unit::None, "electronic gear factor (pulse train mode -4)", "notes, C# client"),
-    o("gear_divider", 0x2508, 2, U16, RW, Unit::None, "electronic gear divider (pulse train mode -4; 0 is refused)", "notes, C# client"),
-    o("pulse_mode", 0x2508, 3, U16, RW, Unit::None, "pulse input mode: 0 CW/CCW, 1 pulse+direction, 2 A/B (x4, uncertain)", "notes, C# client"),
-    o("pulse_filter", 0x2508, 6, U16, RW, Unit::None, "pulse input filter (stored)", "C# client"),
-    o("pulse_frequency_control", 0x2508, 8, U16, RW, Unit::None, "pulse frequency control", "seed §1"),
-    o("master_speed", 0x2508, 0x0C, U16, RO, Unit::None, "pulse input frequency (unit uncertain; the simulator: pulses/ms)", "C# client"),
-    o("error_state", 0x2601, 0, U16, RO, Unit::Bits, "Kinco error state (bit meanings uncertain; the simulator sets bit 0 while faulted)", "notes, C# client"),
-    o("baud_code", 0x2FE0, 0, U16, RW, Unit::None, "RS232 baud code: 1080 = 9600, 540 = 19200, 270 = 38400 (default), 90 = 115200; after a restart", "seed §1, notes"),
-    o("store_parameters", 0x2FF0, 1, U8, RW, Unit::None, "write 1 to store all parameters", "notes, C# client"),
-    o("store_motor_data", 0x2FF0, 3, U8, RW, Unit::None, "write 1 to store motor data", "C# client"),
-    o("display_select", 0x2FF0, 4, U8, RW, Unit::None, "7-segment display select", "seed §1"),
-    o("target_speed_rpm", 0x2FF0, 9, I16, RW, Unit::None, "target speed in rpm (the FD5P manual's RS232 example writes 600 here with a 4-byte write and reads it back with a 2-byte reply, 4B; the simulator stores it)", "FD5P §10"),
-    o("user_password", 0x2FFD, 0, U16, RW, Unit::None, "user password", "seed §1"),
-    o("encoder_resolution", 0x6410, 3, U32, RW, Unit::Increments, "encoder (feedback) resolution used by the DEC formulas, increments per revolution", "notes"),
+    o("controlword", 0x6040, 0, U16, RW, Unit::Bits, || msg!("tbl-servo-controlword"), "seed §3, notes, C# client, DS402"),
+    o("statusword", 0x6041, 0, U16, RO, Unit::Bits, || msg!("tbl-servo-statusword"), "seed §2-3, notes, DS402"),
+    o("error_code", 0x603F, 0, U16, RO, Unit::None, || msg!("tbl-servo-error-code"), "DS402"),
+    o("quickstop_option", 0x605A, 0, I16, RW, Unit::None, || msg!("tbl-servo-quickstop-option"), "C# client, DS402"),
+    o("shutdown_option", 0x605B, 0, I16, RW, Unit::None, || msg!("tbl-servo-shutdown-option"), "C# client, DS402"),
+    o("disable_option", 0x605C, 0, I16, RW, Unit::None, || msg!("tbl-servo-disable-option"), "C# client, DS402"),
+    o("halt_option", 0x605D, 0, I16, RW, Unit::None, || msg!("tbl-servo-halt-option"), "C# client, DS402"),
+    o("fault_reaction_option", 0x605E, 0, I16, RW, Unit::None, || msg!("tbl-servo-fault-reaction-option"), "C# client, DS402"),
+    o("operating_mode", 0x6060, 0, I8, RW, Unit::Mode, || msg!("tbl-servo-operating-mode"), "seed §3, notes"),
+    o("mode_display", 0x6061, 0, I8, RO, Unit::Mode, || msg!("tbl-servo-mode-display"), "notes"),
+    o("position_actual", 0x6063, 0, I32, RO, Unit::Increments, || msg!("tbl-servo-position-actual"), "notes, C# client"),
+    o("position_actual_value", 0x6064, 0, I32, RO, Unit::Increments, || msg!("tbl-servo-position-actual-value"), "DS402"),
+    o("max_following_error", 0x6065, 0, U32, RW, Unit::Increments, || msg!("tbl-servo-max-following-error"), "notes, C# client, DS402"),
+    o("following_error_timeout", 0x6066, 0, U16, RW, Unit::None, || msg!("tbl-servo-following-error-timeout"), "DS402"),
+    o("position_window", 0x6067, 0, U32, RW, Unit::Increments, || msg!("tbl-servo-position-window"), "notes, C# client"),
+    o("velocity_actual", 0x606C, 0, I32, RO, Unit::Speed, || msg!("tbl-servo-velocity-actual"), "notes, C# client"),
+    o("target_torque", 0x6071, 0, I16, RW, Unit::None, || msg!("tbl-servo-target-torque"), "notes, C# client"),
+    o("max_current", 0x6073, 0, U16, RW, Unit::None, || msg!("tbl-servo-max-current"), "C# client"),
+    o("torque_actual", 0x6077, 0, I16, RO, Unit::None, || msg!("tbl-servo-torque-actual"), "DS402"),
+    o("current_actual", 0x6078, 0, I16, RO, Unit::None, || msg!("tbl-servo-current-actual"), "notes, C# client"),
+    o("target_position", 0x607A, 0, I32, RW, Unit::Increments, || msg!("tbl-servo-target-position"), "seed §3, notes"),
+    o("home_offset", 0x607C, 0, I32, RW, Unit::Increments, || msg!("tbl-servo-home-offset"), "notes, C# client"),
+    o("soft_limit_pos", 0x607D, 1, I32, RW, Unit::Increments, || msg!("tbl-servo-soft-limit-pos"), "notes, C# client"),
+    o("soft_limit_neg", 0x607D, 2, I32, RW, Unit::Increments, || msg!("tbl-servo-soft-limit-neg"), "notes, C# client"),
+    o("polarity", 0x607E, 0, U8, RW, Unit::None, || msg!("tbl-servo-polarity"), "notes, C# client"),
+    o("max_speed", 0x6080, 0, U16, RW, Unit::None, || msg!("tbl-servo-max-speed"), "notes, C# client"),
+    o("profile_velocity", 0x6081, 0, U32, RW, Unit::Speed, || msg!("tbl-servo-profile-velocity"), "seed §3, notes"),
+    o("profile_acceleration", 0x6083, 0, U32, RW, Unit::Accel, || msg!("tbl-servo-profile-acceleration"), "seed §3, notes"),
+    o("profile_deceleration", 0x6084, 0, U32, RW, Unit::Accel, || msg!("tbl-servo-profile-deceleration"), "seed §3, notes"),
+    o("quickstop_deceleration", 0x6085, 0, U32, RW, Unit::Accel, || msg!("tbl-servo-quickstop-deceleration"), "notes, C# client"),
+        o("homing_method", 0x6098, 0, I8, RW, Unit::None, || msg!("tbl-servo-homing-method"), "notes, C# client, DS402"),
+    o("homing_speed_switch", 0x6099, 1, U32, RW, Unit::Speed, || msg!("tbl-servo-homing-speed-switch"), "notes, C# client"),
+    o("homing_speed_zero", 0x6099, 2, U32, RW, Unit::Speed, || msg!("tbl-servo-homing-speed-zero"), "notes, C# client"),
+    o("homing_offset_mode", 0x6099, 5, U8, RW, Unit::None, || msg!("tbl-servo-homing-offset-mode"), "C# client"),
+    o("homing_acceleration", 0x609A, 0, U32, RW, Unit::Accel, || msg!("tbl-servo-homing-acceleration"), "notes, C# client"),
+    o("following_error_actual", 0x60F4, 0, I32, RO, Unit::Increments, || msg!("tbl-servo-following-error-actual"), "DS402"),
+    o("digital_inputs", 0x60FD, 0, U32, RO, Unit::Bits, || msg!("tbl-servo-digital-inputs"), "notes, C# client"),
+    o("digital_outputs", 0x60FE, 1, U32, RW, Unit::Bits, || msg!("tbl-servo-digital-outputs"), "DS402"),
+    o("target_velocity", 0x60FF, 0, I32, RW, Unit::Speed, || msg!("tbl-servo-target-velocity"), "seed §3, notes"),
+    o("brake_resistor", 0x60F7, 1, U16, RW, Unit::Ohm, || msg!("tbl-servo-brake-resistor"), "seed §1"),
+    o("brake_resistor_power", 0x60F7, 2, U16, RW, Unit::Watt, || msg!("tbl-servo-brake-resistor-power"), "seed §1"),
+    o("brake_resistor_time", 0x60F7, 3, U16, RW, Unit::Second, || msg!("tbl-servo-brake-resistor-time"), "seed §1"),
+    o("velocity_kp", 0x60F9, 1, U16, RW, Unit::None, || msg!("tbl-servo-velocity-kp"), "C# client"),
+    o("velocity_ki", 0x60F9, 2, U16, RW, Unit::None, || msg!("tbl-servo-velocity-ki"), "C# client"),
+    o("position_kp", 0x60FB, 1, U16, RW, Unit::None, || msg!("tbl-servo-position-kp"), "C# client"),
+    o("drive_id", 0x100B, 0, U8, RW, Unit::None, || msg!("tbl-servo-drive-id"), "seed §1"),
+    o("din_polarity", 0x2010, 1, U16, RW, Unit::Bits, || msg!("tbl-servo-din-polarity"), "C# client"),
+    o("din_simulate", 0x2010, 2, U16, RW, Unit::Bits, || msg!("tbl-servo-din-simulate"), "C# client"),
+    o("din1_function", 0x2010, 3, U16, RW, Unit::None, || msg!("tbl-servo-din1-function"), "C# client"),
+    o("din2_function", 0x2010, 4, U16, RW, Unit::None, || msg!("tbl-servo-din2-function"), "C# client"),
+    o("din3_function", 0x2010, 5, U16, RW, Unit::None, || msg!("tbl-servo-din3-function"), "C# client"),
+    o("din4_function", 0x2010, 6, U16, RW, Unit::None, || msg!("tbl-servo-din4-function"), "C# client"),
+    o("din_real", 0x2010, 0x0A, U16, RO, Unit::Bits, || msg!("tbl-servo-din-real"), "C# client"),
+    o("dout1_function", 0x2010, 0x0F, U16, RW, Unit::None, || msg!("tbl-servo-dout1-function"), "C# client"),
+    o("dout2_function", 0x2010, 0x10, U16, RW, Unit::None, || msg!("tbl-servo-dout2-function"), "C# client"),
+    o("dout_real", 0x2010, 0x14, U16, RO, Unit::Bits, || msg!("tbl-servo-dout-real"), "C# client"),
+    o("gear_factor", 0x2508, 1, U16, RW, Unit::None, || msg!("tbl-servo-gear-factor"), "notes, C# client"),
+    o("gear_divider", 0x2508, 2, U16, RW, Unit::None, || msg!("tbl-servo-gear-divider"), "notes, C# client"),
+    o("pulse_mode", 0x2508, 3, U16, RW, Unit::None, || msg!("tbl-servo-pulse-mode"), "notes, C# client"),
+    o("pulse_filter", 0x2508, 6, U16, RW, Unit::None, || msg!("tbl-servo-pulse-filter"), "C# client"),
+    o("pulse_frequency_control", 0x2508, 8, U16, RW, Unit::None, || msg!("tbl-servo-pulse-frequency-control"), "seed §1"),
+    o("master_speed", 0x2508, 0x0C, U16, RO, Unit::None, || msg!("tbl-servo-master-speed"), "C# client"),
+    o("error_state", 0x2601, 0, U16, RO, Unit::Bits, || msg!("tbl-servo-error-state"), "notes, C# client"),
+    o("baud_code", 0x2FE0, 0, U16, RW, Unit::None, || msg!("tbl-servo-baud-code"), "seed §1, notes"),
+    o("store_parameters", 0x2FF0, 1, U8, RW, Unit::None, || msg!("tbl-servo-store-parameters"), "notes, C# client"),
+    o("store_motor_data", 0x2FF0, 3, U8, RW, Unit::None, || msg!("tbl-servo-store-motor-data"), "C# client"),
+    o("display_select", 0x2FF0, 4, U8, RW, Unit::None, || msg!("tbl-servo-display-select"), "seed §1"),
+    o("target_speed_rpm", 0x2FF0, 9, I16, RW, Unit::None, || msg!("tbl-servo-target-speed-rpm"), "FD5P §10"),
+    o("user_password", 0x2FFD, 0, U16, RW, Unit::None, || msg!("tbl-servo-user-password"), "seed §1"),
+    o("encoder_resolution", 0x6410, 3, U32, RW, Unit::Increments, || msg!("tbl-servo-encoder-resolution"), "notes"),
 ];
 
 /// Looks an object up by `index.sub`.
@@ -252,7 +264,7 @@ fn operand_err(m: impl Into<crate::core::error::Text>) -> Error {
 pub fn parse(text: &str) -> Result<ObjRef> {
     let t = text.trim();
     if t.is_empty() {
-        return Err(operand_err("an object is missing (e.g. controlword or 6040.00)"));
+        return Err(operand_err(msg!("tbl-servo-object-missing")));
     }
     let (body, suffix) = match t.split_once('/') {
         Some((b, s)) => (b.trim(), Some((s.trim(), b.len() + 1))),
@@ -263,9 +275,9 @@ pub fn parse(text: &str) -> Result<ObjRef> {
         Some((s, col)) => match DataType::from_name(s) {
             Some(dt) if !matches!(dt, DataType::Bool | DataType::Real) => Some(dt),
             _ => {
-                return Err(operand_err(format!("`/{s}` is not an object type"))
+                return Err(operand_err(msg!("tbl-servo-not-a-type", suffix = s))
                     .column(col)
-                    .hint("use /u8, /i8, /u16, /i16, /u32 or /i32"))
+                    .hint(msg!("tbl-servo-not-a-type-hint")))
             }
         },
     };
@@ -274,29 +286,28 @@ pub fn parse(text: &str) -> Result<ObjRef> {
     } else if let Some(a) = parse_address(body) {
         a
     } else {
-        return Err(operand_err(format!("`{body}` is not a servo object")).hint(suggest(body)));
+        return Err(operand_err(msg!("tbl-servo-not-an-object", text = body)).hint(suggest(body)));
     };
     let known = lookup(index, sub);
     let dtype = match (known, suffix_type) {
         (Some(o), None) => o.dtype,
         (Some(o), Some(dt)) if dt.bits() == o.dtype.bits() => dt,
         (Some(o), Some(dt)) => {
-            return Err(operand_err(format!(
-                "{} ({}) is {} bits; /{} is {} bits",
-                o.name,
-                o.address(),
-                o.dtype.bits(),
-                short_type(dt),
-                dt.bits()
+            return Err(operand_err(msg!(
+                "tbl-servo-suffix-size",
+                name = o.name,
+                address = o.address(),
+                bits = o.dtype.bits(),
+                suffix = short_type(dt),
+                suffix_bits = dt.bits()
             ))
-            .hint(format!("drop the suffix, or use /{}", short_type(o.dtype))));
+            .hint(msg!("tbl-servo-suffix-size-hint", suffix = short_type(o.dtype))));
         }
         (None, Some(dt)) => dt,
         (None, None) => {
-            return Err(operand_err(format!(
-                "{index:04X}.{sub:02X} is not in the object table, so its size is unknown"
-            ))
-            .hint(format!("add a type suffix, e.g. {index:04X}.{sub:02X}/u16 (u8, i8, u16, i16, u32, i32)")))
+            let address = format!("{index:04X}.{sub:02X}");
+            return Err(operand_err(msg!("tbl-servo-size-unknown", address = &address))
+                .hint(msg!("tbl-servo-size-unknown-hint", address = &address)));
         }
     };
     Ok(ObjRef { index, sub, dtype })
@@ -325,9 +336,9 @@ fn suggest(word: &str) -> String {
         .collect();
     hits.truncate(6);
     if hits.is_empty() {
-        "`help servo` or completion lists the objects; raw objects are written 6040.00".into()
+        msg!("tbl-servo-suggest-none").text
     } else {
-        format!("did you mean {}?", hits.join(", "))
+        msg!("tbl-servo-suggest", names = hits.join(", ")).text
     }
 }
 
@@ -347,9 +358,12 @@ impl ServoSpace {
     pub fn check_writable(&self, r: &ObjRef) -> Result<()> {
         if let Some(o) = r.object() {
             if !o.writable() {
-                return Err(Error::new(ErrorKind::Unsupported, format!("{} ({}) is read-only", o.name, o.address()))
-                    .operand(o.name)
-                    .hint("read it with get; the drive would answer 0x80 (attempt to write a read-only object)"));
+                return Err(Error::new(
+                    ErrorKind::Unsupported,
+                    msg!("tbl-servo-read-only", name = o.name, address = o.address()),
+                )
+                .operand(o.name)
+                .hint(msg!("tbl-servo-read-only-hint")));
             }
         }
         Ok(())
@@ -371,13 +385,14 @@ impl ServoSpace {
         let (lo, hi) = r.dtype.int_range();
         if raw < lo as i128 || raw > hi as i128 {
             // A conversion that saturated (30 typed digits) has no value worth showing.
-            let what = if raw.unsigned_abs() > u64::MAX as u128 {
-                format!("{} is far too large for", text.trim())
+            let (text, dtype, lo, hi) = (text.trim(), r.dtype.name(), lo.to_string(), hi.to_string());
+            let m = if raw.unsigned_abs() > u64::MAX as u128 {
+                msg!("tbl-servo-far-too-large", text = text, dtype = dtype, lo = lo, hi = hi)
             } else {
-                format!("{} = {raw} does not fit", text.trim())
+                msg!("tbl-servo-does-not-fit", text = text, raw = raw.to_string(), dtype = dtype, lo = lo, hi = hi)
             };
-            return Err(Error::new(ErrorKind::Value, format!("{what} {} ({lo}…{hi})", r.dtype.name()))
-                .hint(format!("encoder resolution is {} inc/rev", self.resolution.get())));
+            return Err(Error::new(ErrorKind::Value, m)
+                .hint(msg!("tbl-servo-resolution-hint", resolution = self.resolution.get())));
         }
         Ok(Value::Int(raw as i64))
     }
@@ -397,28 +412,35 @@ impl OperandSpace for ServoSpace {
     }
 
     fn describe(&self, op: &Operand) -> Option<String> {
-        ObjRef::from_operand(op).object().map(|o| o.description.to_string())
+        ObjRef::from_operand(op).object().map(|o| (o.description)().text)
     }
 
     fn help(&self, text: &str) -> Result<String> {
         let r = parse(text)?;
-        let mut s = format!("{} — {}\n", r.label(), r.object().map(|o| o.description).unwrap_or("not in the table"));
+        let what = r.object().map_or_else(|| msg!("tbl-servo-not-in-table"), |o| (o.description)());
+        let mut s = format!("{} — {what}\n", r.label());
         let (lo, hi) = r.dtype.int_range();
-        s.push_str(&format!("type {} ({} bits), range {lo}…{hi}\n", r.dtype.name(), r.dtype.bits()));
+        let (lo, hi) = (lo.to_string(), hi.to_string());
+        s.push_str(&msg!("tbl-servo-help-type", dtype = r.dtype.name(), bits = r.dtype.bits(), lo = lo, hi = hi));
+        s.push('\n');
         if let Some(o) = r.object() {
-            s.push_str(&format!("access {}", o.access.label()));
-            let raw = o.unit.raw_label();
-            if !raw.is_empty() {
-                s.push_str(&format!(", unit {raw}"));
-            }
-            if let Some(e) = o.unit.eng_label() {
-                s.push_str(&format!(
-                    " (write e.g. {}=300{e}; encoder resolution {} inc/rev)",
-                    o.name,
-                    self.resolution.get()
-                ));
-            }
-            s.push_str(&format!("\nsource: {}\n", o.source));
+            let (access, unit) = (o.access.label(), o.unit.raw_label());
+            let line = match o.unit.eng_label() {
+                Some(eng) => msg!(
+                    "tbl-servo-help-access-unit-example",
+                    access = access,
+                    unit = unit,
+                    name = o.name,
+                    eng = eng,
+                    resolution = self.resolution.get()
+                ),
+                None if !unit.is_empty() => msg!("tbl-servo-help-access-unit", access = access, unit = unit),
+                None => msg!("tbl-servo-help-access", access = access),
+            };
+            s.push_str(&line);
+            s.push('\n');
+            s.push_str(&msg!("tbl-servo-help-source", source = o.source));
+            s.push('\n');
         }
         Ok(s)
     }
@@ -431,7 +453,7 @@ impl OperandSpace for ServoSpace {
                 [(o.name.to_string(), o), (o.address(), o)]
                     .into_iter()
                     .filter(|(t, _)| t.to_ascii_lowercase().starts_with(&p))
-                    .map(|(text, o)| Candidate { text, meaning: format!("{} {}", o.address(), o.description) })
+                    .map(|(text, o)| Candidate { text, meaning: format!("{} {}", o.address(), (o.description)()) })
             })
             .collect()
     }
@@ -451,6 +473,49 @@ impl OperandSpace for ServoSpace {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::core::msg::Lang;
+
+    /// Every object's description is in every language, and every `tbl-servo-…` id of the
+    /// catalogue that is not one of the messages above belongs to an object.
+    #[test]
+    fn every_object_has_its_description_in_every_language() {
+        let used: Vec<&str> = OBJECTS.iter().map(|o| (o.description)().id).collect();
+        for lang in Lang::ALL {
+            let ids = crate::core::msg::ids(*lang);
+            for id in &used {
+                assert!(ids.iter().any(|i| i == id), "{id} has no text in {}", lang.tag());
+            }
+        }
+        let messages = [
+            "tbl-servo-not-in-table",
+            "tbl-servo-object-missing",
+            "tbl-servo-not-a-type",
+            "tbl-servo-not-a-type-hint",
+            "tbl-servo-not-an-object",
+            "tbl-servo-suffix-size",
+            "tbl-servo-suffix-size-hint",
+            "tbl-servo-size-unknown",
+            "tbl-servo-size-unknown-hint",
+            "tbl-servo-suggest-none",
+            "tbl-servo-suggest",
+            "tbl-servo-read-only",
+            "tbl-servo-read-only-hint",
+            "tbl-servo-far-too-large",
+            "tbl-servo-does-not-fit",
+            "tbl-servo-resolution-hint",
+            "tbl-servo-help-type",
+            "tbl-servo-help-access",
+            "tbl-servo-help-access-unit",
+            "tbl-servo-help-access-unit-example",
+            "tbl-servo-help-source",
+        ];
+        for id in crate::core::msg::ids(Lang::En) {
+            if id.starts_with("tbl-servo-") {
+                assert!(used.contains(&id.as_str()) || messages.contains(&id.as_str()), "{id} belongs to no object");
+            }
+        }
+        assert_eq!((named("controlword").description)().id, "tbl-servo-controlword");
+    }
 
     #[test]
     fn the_table_is_consistent() {

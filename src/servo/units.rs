@@ -11,6 +11,8 @@
 //! space (which parses `300rpm`) and its driver (which can read 6410.03 from the drive) see
 //! the same value.
 
+use crate::core::msg::Msg;
+use crate::msg;
 use std::sync::atomic::{AtomicU32, Ordering};
 use std::sync::Arc;
 
@@ -41,10 +43,10 @@ impl Resolution {
 }
 
 /// Parses a resolution setting (`10000`, `65536`), refusing 0 and non-numbers.
-pub fn parse_resolution(text: &str) -> Result<u32, String> {
+pub fn parse_resolution(text: &str) -> Result<u32, Msg> {
     match text.trim().replace('_', "").parse::<u32>() {
         Ok(r) if r > 0 => Ok(r),
-        _ => Err(format!("encoder resolution `{text}` is not a whole number of increments per revolution in 1…{} (e.g. 10000 or 65536)", u32::MAX)),
+        _ => Err(msg!("tbl-unit-bad-resolution", text = text, max = u32::MAX.to_string())),
     }
 }
 
@@ -165,7 +167,7 @@ pub fn dec_to_rps2(dec: i64, r: u32) -> f64 {
 /// Converts `number + suffix` text for an object of `unit` into its raw integer.
 /// Returns `None` when the text has no engineering suffix (plain numbers and IEC
 /// literals go through the normal literal parser). Errors name what the object takes.
-pub fn parse_engineering(text: &str, unit: Unit, r: u32) -> Option<Result<i128, String>> {
+pub fn parse_engineering(text: &str, unit: Unit, r: u32) -> Option<Result<i128, Msg>> {
     let t = text.trim();
     let lower = t.to_ascii_lowercase();
     const SUFFIXES: [&str; 5] = ["rps/s", "rpm", "rev", "inc", "dec"];
@@ -176,18 +178,17 @@ pub fn parse_engineering(text: &str, unit: Unit, r: u32) -> Option<Result<i128, 
         if parse_decimal(number).is_none() || !unit_text.chars().all(|c| c.is_ascii_alphabetic() || c == '/') {
             return None;
         }
-        let write = match unit {
-            Unit::Speed => format!("write rpm or dec (the drive's unit) for a speed: {number}rpm"),
-            Unit::Accel => format!("write rps/s or dec (the drive's unit) for an acceleration: {number}rps/s"),
-            Unit::Increments => format!("write rev or inc for a position: {number}rev"),
+        return Some(Err(match unit {
+            Unit::Speed => msg!("tbl-unit-unknown-speed", unit = unit_text, number = number),
+            Unit::Accel => msg!("tbl-unit-unknown-accel", unit = unit_text, number = number),
+            Unit::Increments => msg!("tbl-unit-unknown-position", unit = unit_text, number = number),
             // Other objects read their own units (`5s`, `100W`) elsewhere.
             _ => return None,
-        };
-        return Some(Err(format!("unit `{unit_text}` is not known here; {write}")));
+        }));
     };
     let number = t[..t.len() - suffix.len()].trim();
     let Some(d) = parse_decimal(number) else {
-        return Some(Err(format!("`{number}` is not a number (write e.g. 300{suffix})")));
+        return Some(Err(msg!("tbl-unit-not-a-number", number = number, suffix = *suffix)));
     };
     let wanted = match *suffix {
         "rpm" => Unit::Speed,
@@ -203,17 +204,16 @@ pub fn parse_engineering(text: &str, unit: Unit, r: u32) -> Option<Result<i128, 
         }
     };
     if wanted != unit {
-        let takes = match unit.eng_label() {
-            Some(e) => format!("takes {} or {e}", unit.raw_label()),
-            None => "takes plain numbers".to_string(),
-        };
-        return Some(Err(format!("this object {takes}, not {suffix}")));
+        return Some(Err(match unit.eng_label() {
+            Some(e) => msg!("tbl-unit-takes", raw = unit.raw_label(), eng = e, suffix = *suffix),
+            None => msg!("tbl-unit-takes-plain", suffix = *suffix),
+        }));
     }
     let exact_int = |d: Decimal| {
         if d.scale == 0 {
             Ok(d.mantissa)
         } else {
-            Err(format!("{number}{suffix} is not a whole number of {suffix}"))
+            Err(msg!("tbl-unit-not-whole", number = number, suffix = *suffix))
         }
     };
     Some(match *suffix {

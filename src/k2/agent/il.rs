@@ -471,7 +471,7 @@ pub fn program(model: &'static Model, base: u32) -> String {
     g.net("command 4: HDEF ARG1, ARG2 - one line per counter and mode of section 3.3.1 on this model; the manual names no status for HDEF: its ENO is read");
     for &(hsc, mode, what) in HSC_MODES.iter().filter(|m| model.hsc(m.0).is_some()) {
         g.when_arg(Command::Hdef { hsc: 0, mode: 0 }.code(), hsc as u32, Some(mode as u32));
-        g.line("HDEF", &format!("{hsc}, {mode}"), what);
+        g.line("HDEF", &format!("{hsc}, {mode}"), &what(crate::core::msg::Lang::En));
         g.line("S", &format!("{ok}, 1"), "");
     }
     g.when(Command::Hdef { hsc: 0, mode: 0 }.code());

@@ -105,7 +105,11 @@ impl HscChannel {
         self.mode = Some(m);
         self.running = false;
         self.settings += 1;
-        let text = sm_map::HSC_MODES.iter().find(|t| t.0 == ch && t.1 == mode).map(|t| t.2).unwrap_or("");
+        let text = sm_map::HSC_MODES
+            .iter()
+            .find(|t| t.0 == ch && t.1 == mode)
+            .map(|t| t.2(crate::core::msg::language()).text)
+            .unwrap_or_default();
         Ok(format!("HSC{ch} mode {mode}: {text}"))
     }
 
