@@ -13,6 +13,7 @@ use super::model::{fx1s_counter, Model, MODELS};
 use super::operand::{self, Area, FxOperand, Width, AREAS, SPECIAL, SPECIAL_COUNT};
 use super::port::{self, Table};
 use crate::core::{Candidate, Error, ErrorKind, Operand, OperandSpace, Result};
+use crate::msg;
 
 /// The protocol a device is reached through.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -39,7 +40,7 @@ pub struct FxSpace {
     pub proto: Proto,
 }
 
-fn range_err(op: &FxOperand, msg: String) -> Error {
+fn range_err(op: &FxOperand, msg: impl Into<crate::core::error::Text>) -> Error {
     Error::new(ErrorKind::Range, msg).operand(op.canonical())
 }
 
@@ -92,11 +93,16 @@ impl FxSpace {
         if last > u16::MAX as u32 || !self.exists(op.area, op.index) || !self.exists(op.area, last as u16) {
             return Err(range_err(
                 op,
-                format!("{} is not on an {} ({})", op.canonical(), self.model.name, self.range_text(op.area)),
+                msg!(
+                    "fx-not-on-model",
+                    operand = op.canonical(),
+                    model = self.model.name,
+                    range = self.range_text(op.area)
+                ),
             ));
         }
         if (op.index >= SPECIAL) != (last as u16 >= SPECIAL) {
-            return Err(range_err(op, format!("{} runs from ordinary into special devices", op.canonical())));
+            return Err(range_err(op, msg!("fx-crosses-special", operand = op.canonical())));
         }
         match self.proto {
             Proto::Port => {
@@ -109,19 +115,17 @@ impl FxSpace {
                         reach.push_str(&format!(", {name}8000–{name}8255"));
                     }
                     let hint = match table {
-                        Table::Classic => format!(
-                            "on an FX3U the E-commands reach it (open it with model=FX3U); on an {} only the computer link does (fxlink:, with an FX-485 board and D8120 set)",
-                            self.model.name
-                        ),
-                        Table::Extended => "check the operand against the model (`help OPERAND`)".to_string(),
+                        Table::Classic => msg!("fx-hint-e-commands", model = self.model.name),
+                        Table::Extended => msg!("fx-hint-nak-area"),
                     };
                     return Err(range_err(
                         op,
-                        format!(
-                            "{} is past the {}'s programming-port address table ({}; it reaches {reach})",
-                            op.canonical(),
-                            self.model.name,
-                            table.commands()
+                        msg!(
+                            "fx-past-port-table",
+                            operand = op.canonical(),
+                            model = self.model.name,
+                            commands = table.commands(),
+                            reach = reach
                         ),
                     )
                     .hint(hint));
@@ -129,13 +133,13 @@ impl FxSpace {
             }
             Proto::Link => {
                 if op.area.spec().link.is_empty() {
-                    return Err(Error::unsupported(format!(
-                        "{} (a {}) is not reachable over the computer link",
-                        op.canonical(),
-                        op.area.spec().meaning
+                    return Err(Error::unsupported(msg!(
+                        "fx-not-on-link",
+                        operand = op.canonical(),
+                        meaning = op.area.meaning().text
                     ))
                     .operand(op.canonical())
-                    .hint("read the contact (TS/CS) instead, or use the programming port (fx:)"));
+                    .hint(msg!("fx-hint-not-on-link")));
                 }
             }
         }
@@ -178,34 +182,30 @@ impl OperandSpace for FxSpace {
 
     fn describe(&self, op: &Operand) -> Option<String> {
         let o = FxOperand::from_key(op.key);
-        let spec = o.area.spec();
         let mut s = match o.width {
-            Width::Group(n) => format!(
-                "{}-bit group of {} bits {}{}–{}{}",
-                4 * n,
-                spec.meaning,
-                o.area.name(),
-                FxOperand::number_text(o.area, o.index),
-                o.area.name(),
-                FxOperand::number_text(o.area, o.index + 4 * n as u16 - 1)
-            ),
-            Width::Pair if o.area == Area::D => {
-                format!("32-bit value in D{} (low) and D{} (high)", o.index, o.index + 1)
+            Width::Group(n) => {
+                msg!(
+                    "fx-describe-group",
+                    bits = 4 * n,
+                    meaning = o.area.meaning().text,
+                    first = format!("{}{}", o.area.name(), FxOperand::number_text(o.area, o.index)),
+                    last = format!("{}{}", o.area.name(), FxOperand::number_text(o.area, o.index + 4 * n as u16 - 1))
+                )
+                .text
             }
+            Width::Pair if o.area == Area::D => msg!("fx-describe-pair", low = o.index, high = o.index + 1).text,
             Width::Bit | Width::Word if o.index >= SPECIAL => match operand::special_meaning(o.area, o.index) {
-                Some(m) => m.to_string(),
-                None => format!("special {}", spec.meaning),
+                Some(m) => m.text,
+                None => msg!("fx-describe-special", meaning = o.area.meaning().text).text,
             },
-            _ if o.index >= SPECIAL => format!("special {}", spec.meaning),
-            _ => spec.meaning.to_string(),
+            _ if o.index >= SPECIAL => msg!("fx-describe-special", meaning = o.area.meaning().text).text,
+            _ => o.area.meaning().text,
         };
         if !o.group_aligned() {
-            s.push_str(&format!(
-                " — warning: group starts at {}{}; the manual advises a number ending in 0 ({}0, {}10 …)",
-                o.area.name(),
-                FxOperand::number_text(o.area, o.index),
-                o.area.name(),
-                o.area.name()
+            s.push_str(&msg!(
+                "fx-describe-unaligned",
+                first = format!("{}{}", o.area.name(), FxOperand::number_text(o.area, o.index)),
+                area = o.area.name()
             ));
         }
         Some(s)
@@ -266,7 +266,7 @@ impl OperandSpace for FxSpace {
                 continue;
             }
             if spec.name.starts_with(&p) && p.len() < spec.name.len() + 1 {
-                out.push(Candidate { text: spec.name.to_string(), meaning: spec.meaning.to_string() });
+                out.push(Candidate { text: spec.name.to_string(), meaning: spec.area.meaning().text });
             }
             if spec.groups {
                 for n in [2u8, 4, 8] {
@@ -274,16 +274,17 @@ impl OperandSpace for FxSpace {
                     if t.starts_with(&p) && p.len() < t.len() {
                         out.push(Candidate {
                             text: t,
-                            meaning: format!("{}-bit group of {} bits", 4 * n, spec.meaning),
+                            meaning: msg!("fx-complete-group", bits = 4 * n, meaning = spec.area.meaning().text).text,
                         });
                     }
                 }
             }
         }
-        for (area, index, m) in operand::SPECIALS {
+        for (area, index) in operand::SPECIALS {
             let t = format!("{}{index}", area.name());
             if t.starts_with(&p) && p.len() >= 2 {
-                out.push(Candidate { text: t, meaning: m.to_string() });
+                let meaning = operand::special_meaning(*area, *index).map(|m| m.text).unwrap_or_default();
+                out.push(Candidate { text: t, meaning });
             }
         }
         out
