@@ -409,3 +409,195 @@ fx-describe-pair = 32-bit value in D{ $low } (low) and D{ $high } (high)
 fx-describe-special = special { $meaning }
 fx-describe-unaligned =  — warning: group starts at { $first }; the manual advises a number ending in 0 ({ $area }0, { $area }10 …)
 fx-complete-group = { $bits }-bit group of { $meaning } bits
+
+## Kinco servo driver (servo::driver, servo::frame; Kinco servo RS232 notes, seed 002)
+
+# The manual's three reasons a drive stays silent (§2.4).
+servo-silence-causes = a Kinco drive does not answer (1) a wrong drive id, (2) an object that does not exist, (3) a bad checksum (manual §2.4)
+servo-port-still-gone = the serial port { $port } is still gone
+servo-port-gone = the serial port { $port } is gone
+servo-port-io = serial I/O on { $port } failed
+servo-hint-port-gone = the USB adapter may be unplugged or the port's server restarted: check the cable and the adapter (`plcsh ports` lists the ports present); the next command reopens the port once it is back
+servo-no-echo = no echo of the request on { $port } (loop mode is on)
+servo-hint-no-echo = the loop is open (cable) or the line is not in loop mode: drop echo=1 from the URL
+servo-reply-before-echo = expected the echo of the request on { $port } (echo=1), but the drive's reply came first: { $bytes }; the line is not in loop mode
+servo-hint-reply-before-echo = connect with echo=0 (or set the drive's loop mode, panel d5.15 = 1)
+servo-echo-differs = the echo differs from the request on { $port }: sent { $sent }, echoed { $echo }; likely cause: bad checksum — the drive ignores a corrupted frame
+servo-hint-baud-wiring = check the baud rate (drive default 38400, panel d5.02) and the wiring
+servo-reply-is-request = the reply to { $verb ->
+        [read] read
+        [write] write
+       *[request] request
+    } of { $object } is the request itself: the line echoes requests (RS232 loop mode)
+servo-hint-use-echo = connect with echo=1 so plcsh skips the echo
+servo-bad-reply = bad reply to { $verb ->
+        [read] read
+        [write] write
+       *[request] request
+    } of { $object }: { $reason }
+servo-hint-bad-reply = another master or drive may be talking on the line, or the baud rate is wrong
+# No reply: the head and the likely cause in one sentence.
+servo-silent = no reply from drive id { $id } to { $verb ->
+        [read] read
+        [write] write
+       *[request] request
+    } of { $object } within { $timeout }; likely cause: { $cause ->
+        [function] unknown function code { $code } — a drive answers only reads (40) and writes (23, 2B, 2F) and ignores anything else
+        [checksum] bad checksum — the frame ends in { $got }, the bytes before it need { $want }
+        [stray] bad checksum — only { $count } stray byte(s) came back ({ $bytes }), so frames are being corrupted on the line (baud rate or wiring)
+        [object] unknown object — drive id { $id } answers statusword reads, so { $object } probably does not exist on this drive
+        [stopped] the drive stopped answering — id { $id } answered before; check power and cable
+       *[id] wrong id — nothing answers on drive id { $id } (factory id 1, panel d5.01; also check power, cable and baud rate)
+    }
+servo-silent-late = no reply from drive id { $id } to { $verb ->
+        [read] read
+        [write] write
+       *[request] request
+    } of { $object } within { $timeout }; likely cause: late replies — { $what }
+servo-late-stale = a reply to another request came instead ({ $frames })
+servo-late-bytes = { $count } byte(s) came after the timeout and were dropped
+servo-hint-late = the drive answers later than the timeout: raise it (timeout= in the URL, now { $timeout }), and check that no other master talks on the line; a late reply is never taken for the next request's
+servo-refused = drive id { $id } refused the { $verb ->
+        [read] read
+        [write] write
+       *[request] request
+    } of { $object }: abort code 16#{ $code } — { $meaning }
+servo-resolution-zero = the drive reports encoder resolution 0 (6410.03)
+servo-no-option = servo devices have no option `{ $key }`
+servo-hint-options = options: encoder, timeout
+servo-flag-param = `{ $key }={ $value }` in { $url } is not 0 or 1
+servo-baud-zero = `baud=0` in { $url }: the baud rate must be positive
+servo-latency-param = `latency={ $value }` in { $url } is not a duration (e.g. 1ms)
+servo-ids-in-url = { $message } in { $url }
+servo-not-ids = `{ $list }` is not a list of drive ids (0–255), e.g. 1,2
+# What is wrong with a reply frame (servo::frame).
+servo-frame-checksum = bad checksum { $got } (the bytes before it sum to checksum { $want })
+servo-frame-reply-checksum = reply has a bad checksum { $got } (the bytes before it sum to checksum { $want })
+servo-frame-id = reply from drive id { $got }, expected id { $want }
+servo-frame-object = reply is for object { $got }, expected { $want }
+servo-frame-func = reply function code { $got } does not answer a { $request } request
+servo-frame-echo = write acknowledgement echoes data { $got }, the request sent { $want }
+# CANopen abort codes the drive answers with (function code 80).
+servo-abort = { $code ->
+    [x05040001] invalid command
+    [x06010001] attempt to read a write-only object
+    [x06010002] attempt to write a read-only object
+    [x06020000] object does not exist in the object dictionary
+    [x06040041] object cannot be mapped
+    [x06070010] data type does not match, length of service parameter does not match
+    [x06070012] data type does not match, length of service parameter too high
+    [x06090030] value range of parameter exceeded
+   *[other] unknown abort code
+    }
+
+## The simulated Kinco drive's faults and switches (servo::sim::control, servo::sim::faults; `servo sim …`)
+
+servo-sim-not-number = `{ $text }` is not a number
+servo-sim-id-range = a drive id is 0-255
+servo-sim-unknown-option = unknown option `{ $key }`
+servo-sim-count = count is 1 or more, or all
+servo-sim-all-and-count = say `all` or count=N, not both
+servo-sim-fault-extra = unexpected `{ $word }` after `fault { $kind }`: say all or count=N
+servo-sim-fault-duration = fault { $kind } needs one duration, e.g. fault { $kind } 50ms
+servo-sim-fault-abort = fault abort needs an object and an abort code, e.g. fault abort target_position 16#06090030
+servo-sim-abort-bits = an abort code is 32 bits
+servo-sim-pulses-freq = pulses needs freq=HZ
+servo-sim-pulses-count = pulses needs count=N
+servo-sim-not-freq = `{ $text }` is not a frequency in Hz
+servo-sim-pulse-count = count is 0 or more
+servo-sim-not-dir = `dir={ $dir }` is not fwd or rev
+servo-sim-unknown-word = unknown `servo sim { $word }`
+servo-sim-fault-bits = a fault code is 16 bits
+servo-sim-no-drive = no simulated drive has id { $id } (ids { $ids })
+servo-sim-several-drives = several drives ({ $ids }) on the line: say which with id=N
+servo-sim-fault-injected = drive id { $id }: fault 16#{ $code } injected
+servo-sim-fault-armed = drive id { $id }: fault 16#{ $code } armed at position { $position } inc
+servo-sim-fault-acted = { $time }s  drive id { $id }: fault 16#{ $code } at position { $position } inc (armed fault acted)
+servo-sim-no-fault-acted = no armed fault has acted
+servo-sim-line-fault = { $scope ->
+        [all] every drive
+       *[one] drive id { $id }
+    }: { $fault } for { $count ->
+        [one] the next request
+        [every] every request until `servo sim fault clear`
+       *[many] the next { $n } requests
+    }
+servo-sim-faults-cleared = line faults cleared
+servo-sim-switch = drive id { $id }: { $switch ->
+        [home] home switch
+        [neg] negative limit switch
+       *[pos] positive limit switch
+    } { $position ->
+        [off] off
+       *[at] at { $at } inc
+    }
+servo-sim-pulses = drive id { $id }: { $count } pulses at { $freq } Hz { $dir ->
+        [reverse] reverse
+       *[forward] forward
+    } from t={ $start } s to t={ $end } s
+servo-sim-strict = write sizes: { $strict ->
+        [on] sizes must match the object (0x06070010 otherwise)
+       *[off] lenient sizes
+    }
+# A line fault in words (`servo sim fault …`, `faults`).
+servo-sim-fault-kind = { $kind ->
+    [no-reply] no reply
+    [bad-checksum] bad checksum in the reply
+    [delay] reply delayed by { $ms } ms
+    [abort] abort 16#{ $code } ({ $meaning }) for { $object }
+   *[drop-echo] echo dropped
+    }
+
+## FX frames (fx::link, fx::port; the FX protocol notes, seed 004)
+
+# What is wrong with a frame (inside `a garbled frame (…): …`).
+fx-malformed = { $what ->
+    [no-crlf] no CR LF after the reply
+    [too-short] too short
+    [station-not-hex] the station or PC number is not hex
+    [code-not-hex] error code is not hex
+    [length-after-etx] wrong length after ETX
+    [sum-not-hex] sum check is not hex
+    [bytes-after-etx] bytes after ETX
+    [unknown-command] unknown command or wrong length
+    [address-not-hex] address is not hex
+    [count-not-hex] count is not hex
+    [data-length] data length differs from the count
+    [data-not-hex] data is not hex
+   *[not-read-reply] not STX data ETX sum of the asked length
+    }
+# The computer link's NAK error codes (seed 004: "若发送码有误，则有以下回应").
+fx-nak-meaning = { $code ->
+    [c02] sum check error (the sum in the request does not match its characters)
+    [c03] protocol error (the request does not follow the control procedure)
+    [c06] character area error (unknown command, or a device number or count the PLC does not have)
+    [c07] character error (data to write is not hexadecimal ASCII)
+    [c0A] PC number error (no station with this PC number)
+    [c18] remote error (RUN/STOP cannot be switched remotely)
+   *[other] unknown error code
+    }
+
+## The simulated FX PLC's control words, snapshots and server (fx::control, fx::snapshot, fx::sim)
+
+fx-sim-not-x = `{ $text }` is not an X input (X0, X17 …)
+fx-sim-no-such-input = { $operand } is not an input of the { $model } (X0–X{ $last })
+fx-sim-input-usage = input needs an input and a level: input X0=1
+fx-sim-input-extra = `{ $word }` after input { $input } is not understood
+fx-sim-input-level = `{ $input }`: write input { $input }=1 or =0
+fx-sim-inputs-none = no X input is on
+fx-sim-inputs-on = on: { $inputs }
+fx-sim-not-word = `{ $word }` is not a control word of a simulated FX PLC
+fx-snap-other-model = the snapshot is of an { $saved }, this simulator is an { $model }
+fx-snap-image = the saved device image does not fit this model
+fx-serve-cannot-read = cannot read { $file }: { $reason }
+fx-serve-stopped = the FX port stopped before it was ready
+
+## The simulated drive's homing and pulse input (servo::sim)
+
+servo-sim-homing-neg = method 17 needs a negative limit switch
+servo-sim-homing-pos = method 18 needs a positive limit switch
+servo-sim-homing-method = homing method { $method } is not simulated (methods { $methods })
+servo-sim-no-drive-id = no drive id { $id } on the simulated line
+servo-sim-pulse-ab = the drive's pulse input is set to A/B (2508.03 = 2); a PLC pulse output is pulse + direction: set 2508.03 to 1 first
+servo-sim-no-drive-short = no drive id { $id }
+servo-not-servo-any-more = the device no longer answers as a servo drive

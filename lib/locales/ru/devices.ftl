@@ -429,3 +429,195 @@ fx-describe-pair = 32-битное значение в D{ $low } (младшее
 fx-describe-special = специальный { $meaning }
 fx-describe-unaligned =  — внимание: группа начинается с { $first }; руководство советует номер, оканчивающийся на 0 ({ $area }0, { $area }10 …)
 fx-complete-group = { $bits }-битная группа битов «{ $meaning }»
+
+## Kinco servo driver (servo::driver, servo::frame; Kinco servo RS232 notes, seed 002)
+
+# The manual's three reasons a drive stays silent (§2.4).
+servo-silence-causes = привод Kinco не отвечает, если (1) неверный ID привода, (2) объект не существует, (3) неверная контрольная сумма (руководство, §2.4)
+servo-port-still-gone = последовательный порт { $port } по-прежнему отсутствует
+servo-port-gone = последовательный порт { $port } пропал
+servo-port-io = ошибка ввода-вывода на последовательном порту { $port }
+servo-hint-port-gone = возможно, USB-адаптер отключён или сервер порта перезапущен: проверьте кабель и адаптер (`plcsh ports` показывает имеющиеся порты); следующая команда снова откроет порт, когда он вернётся
+servo-no-echo = нет эха запроса на { $port } (включён режим петли)
+servo-hint-no-echo = петля разомкнута (кабель) или линия не в режиме петли: уберите echo=1 из URL
+servo-reply-before-echo = на { $port } ожидалось эхо запроса (echo=1), но первым пришёл ответ привода: { $bytes }; линия не в режиме петли
+servo-hint-reply-before-echo = подключитесь с echo=0 (или включите режим петли привода, панель d5.15 = 1)
+servo-echo-differs = эхо отличается от запроса на { $port }: отправлено { $sent }, вернулось { $echo }; вероятная причина: неверная контрольная сумма — привод игнорирует искажённый кадр
+servo-hint-baud-wiring = проверьте скорость передачи данных (по умолчанию у привода 38400, панель d5.02) и подключение
+servo-reply-is-request = ответом на { $verb ->
+        [read] чтение
+        [write] запись
+       *[request] запрос
+    } { $object } пришёл сам запрос: линия возвращает запросы эхом (режим петли RS232)
+servo-hint-use-echo = подключитесь с echo=1, чтобы plcsh пропускал эхо
+servo-bad-reply = неверный ответ на { $verb ->
+        [read] чтение
+        [write] запись
+       *[request] запрос
+    } { $object }: { $reason }
+servo-hint-bad-reply = возможно, на линии работает другой ведущий или привод, либо неверна скорость передачи данных
+# No reply: the head and the likely cause in one sentence.
+servo-silent = нет ответа от привода с ID { $id } на { $verb ->
+        [read] чтение
+        [write] запись
+       *[request] запрос
+    } { $object } за { $timeout }; вероятная причина: { $cause ->
+        [function] неизвестный код функции { $code } — привод отвечает только на чтение (40) и запись (23, 2B, 2F) и игнорирует всё остальное
+        [checksum] неверная контрольная сумма — кадр оканчивается на { $got }, а для байтов перед ней нужна { $want }
+        [stray] неверная контрольная сумма — вернулись только случайные байты ({ $count }: { $bytes }), значит, кадры искажаются на линии (скорость или подключение)
+        [object] неизвестный объект — привод с ID { $id } отвечает на чтение слова состояния, значит, { $object } на этом приводе, вероятно, не существует
+        [stopped] привод перестал отвечать — ID { $id } отвечал раньше; проверьте питание и кабель
+       *[id] неверный ID — на ID { $id } никто не отвечает (заводской ID 1, панель d5.01; проверьте также питание, кабель и скорость)
+    }
+servo-silent-late = нет ответа от привода с ID { $id } на { $verb ->
+        [read] чтение
+        [write] запись
+       *[request] запрос
+    } { $object } за { $timeout }; вероятная причина: запоздавшие ответы — { $what }
+servo-late-stale = вместо него пришёл ответ на другой запрос ({ $frames })
+servo-late-bytes = после тайм-аута пришли и отброшены байты: { $count }
+servo-hint-late = привод отвечает позже тайм-аута: увеличьте его (timeout= в URL, сейчас { $timeout }) и проверьте, что на линии нет другого ведущего; запоздавший ответ никогда не принимается за ответ на следующий запрос
+servo-refused = привод с ID { $id } отказал в { $verb ->
+        [read] чтении
+        [write] записи
+       *[request] запросе
+    } { $object }: код прерывания 16#{ $code } — { $meaning }
+servo-resolution-zero = привод сообщает разрешение энкодера 0 (6410.03)
+servo-no-option = у устройств servo нет параметра `{ $key }`
+servo-hint-options = параметры: encoder, timeout
+servo-flag-param = `{ $key }={ $value }` в { $url } — не 0 и не 1
+servo-baud-zero = `baud=0` в { $url }: скорость передачи данных должна быть больше нуля
+servo-latency-param = `latency={ $value }` в { $url } — не длительность (например, 1ms)
+servo-ids-in-url = { $message } в { $url }
+servo-not-ids = `{ $list }` — не список ID приводов (0–255), например 1,2
+# What is wrong with a reply frame (servo::frame).
+servo-frame-checksum = неверная контрольная сумма { $got } (байты перед ней дают контрольную сумму { $want })
+servo-frame-reply-checksum = в ответе неверная контрольная сумма { $got } (байты перед ней дают контрольную сумму { $want })
+servo-frame-id = ответ от привода с ID { $got }, ожидался ID { $want }
+servo-frame-object = ответ относится к объекту { $got }, ожидался { $want }
+servo-frame-func = код функции ответа { $got } не отвечает на запрос { $request }
+servo-frame-echo = подтверждение записи возвращает данные { $got }, а в запросе было { $want }
+# CANopen abort codes the drive answers with (function code 80).
+servo-abort = { $code ->
+    [x05040001] недопустимая команда
+    [x06010001] попытка чтения объекта только для записи
+    [x06010002] попытка записи объекта только для чтения
+    [x06020000] объекта нет в словаре объектов
+    [x06040041] объект нельзя отобразить
+    [x06070010] тип данных не совпадает, длина параметра службы не совпадает
+    [x06070012] тип данных не совпадает, длина параметра службы слишком велика
+    [x06090030] значение параметра вне диапазона
+   *[other] неизвестный код прерывания
+    }
+
+## The simulated Kinco drive's faults and switches (servo::sim::control, servo::sim::faults; `servo sim …`)
+
+servo-sim-not-number = `{ $text }` — не число
+servo-sim-id-range = ID привода — 0-255
+servo-sim-unknown-option = неизвестный параметр `{ $key }`
+servo-sim-count = count — 1 или больше, либо all
+servo-sim-all-and-count = укажите `all` или count=N, но не оба
+servo-sim-fault-extra = неожиданное `{ $word }` после `fault { $kind }`: укажите all или count=N
+servo-sim-fault-duration = fault { $kind } нужна одна длительность, например fault { $kind } 50ms
+servo-sim-fault-abort = fault abort нужны объект и код прерывания, например fault abort target_position 16#06090030
+servo-sim-abort-bits = код прерывания — 32 бита
+servo-sim-pulses-freq = pulses нужен freq=HZ
+servo-sim-pulses-count = pulses нужен count=N
+servo-sim-not-freq = `{ $text }` — не частота в Гц
+servo-sim-pulse-count = count — 0 или больше
+servo-sim-not-dir = `dir={ $dir }` — не fwd и не rev
+servo-sim-unknown-word = неизвестная команда `servo sim { $word }`
+servo-sim-fault-bits = код неисправности — 16 бит
+servo-sim-no-drive = нет симулируемого привода с ID { $id } (ID: { $ids })
+servo-sim-several-drives = на линии несколько приводов ({ $ids }): укажите нужный через id=N
+servo-sim-fault-injected = привод с ID { $id }: внесена неисправность 16#{ $code }
+servo-sim-fault-armed = привод с ID { $id }: неисправность 16#{ $code } взведена на положении { $position } inc
+servo-sim-fault-acted = { $time }s  привод с ID { $id }: неисправность 16#{ $code } на положении { $position } inc (сработала взведённая неисправность)
+servo-sim-no-fault-acted = ни одна взведённая неисправность не сработала
+servo-sim-line-fault = { $scope ->
+        [all] все приводы
+       *[one] привод с ID { $id }
+    }: { $fault } для { $count ->
+        [one] следующего запроса
+        [every] каждого запроса до `servo sim fault clear`
+       *[many] следующих запросов ({ $n })
+    }
+servo-sim-faults-cleared = неисправности линии сняты
+servo-sim-switch = привод с ID { $id }: { $switch ->
+        [home] датчик исходного положения
+        [neg] концевой выключатель отрицательного направления
+       *[pos] концевой выключатель положительного направления
+    } { $position ->
+        [off] выключен
+       *[at] на { $at } inc
+    }
+servo-sim-pulses = привод с ID { $id }: { $count } импульсов с частотой { $freq } Гц { $dir ->
+        [reverse] в обратном направлении
+       *[forward] в прямом направлении
+    } с t={ $start } с до t={ $end } с
+servo-sim-strict = размеры записи: { $strict ->
+        [on] размер должен совпадать с объектом (иначе 0x06070010)
+       *[off] нестрогие размеры
+    }
+# A line fault in words (`servo sim fault …`, `faults`).
+servo-sim-fault-kind = { $kind ->
+    [no-reply] нет ответа
+    [bad-checksum] неверная контрольная сумма в ответе
+    [delay] ответ задерживается на { $ms } мс
+    [abort] прерывание 16#{ $code } ({ $meaning }) для { $object }
+   *[drop-echo] эхо пропущено
+    }
+
+## FX frames (fx::link, fx::port; the FX protocol notes, seed 004)
+
+# What is wrong with a frame (inside `a garbled frame (…): …`).
+fx-malformed = { $what ->
+    [no-crlf] нет CR LF после ответа
+    [too-short] слишком короткий
+    [station-not-hex] номер станции или PC — не шестнадцатеричный
+    [code-not-hex] код ошибки — не шестнадцатеричный
+    [length-after-etx] неверная длина после ETX
+    [sum-not-hex] сумма — не шестнадцатеричная
+    [bytes-after-etx] байты после ETX
+    [unknown-command] неизвестная команда или неверная длина
+    [address-not-hex] адрес — не шестнадцатеричный
+    [count-not-hex] количество — не шестнадцатеричное
+    [data-length] длина данных не совпадает с количеством
+    [data-not-hex] данные — не шестнадцатеричные
+   *[not-read-reply] не STX данные ETX сумма запрошенной длины
+    }
+# The computer link's NAK error codes (seed 004: "若发送码有误，则有以下回应").
+fx-nak-meaning = { $code ->
+    [c02] ошибка суммы (сумма в запросе не совпадает с его символами)
+    [c03] ошибка протокола (запрос не соответствует процедуре управления)
+    [c06] ошибка области символов (неизвестная команда либо номер или количество устройств, которых у ПЛК нет)
+    [c07] ошибка символа (данные для записи — не шестнадцатеричный ASCII)
+    [c0A] ошибка номера PC (нет станции с таким номером PC)
+    [c18] ошибка удалённого управления (RUN/STOP нельзя переключить удалённо)
+   *[other] неизвестный код ошибки
+    }
+
+## The simulated FX PLC's control words, snapshots and server (fx::control, fx::snapshot, fx::sim)
+
+fx-sim-not-x = `{ $text }` — не вход X (X0, X17 …)
+fx-sim-no-such-input = { $operand } — не вход { $model } (X0–X{ $last })
+fx-sim-input-usage = input нужны вход и уровень: input X0=1
+fx-sim-input-extra = `{ $word }` после input { $input } не понято
+fx-sim-input-level = `{ $input }`: напишите input { $input }=1 или =0
+fx-sim-inputs-none = ни один вход X не включён
+fx-sim-inputs-on = включены: { $inputs }
+fx-sim-not-word = `{ $word }` — не управляющее слово симулятора ПЛК FX
+fx-snap-other-model = снимок сделан с { $saved }, а этот симулятор — { $model }
+fx-snap-image = сохранённый образ устройств не подходит к этой модели
+fx-serve-cannot-read = не удаётся прочитать { $file }: { $reason }
+fx-serve-stopped = порт FX остановился, не успев стать готовым
+
+## The simulated drive's homing and pulse input (servo::sim)
+
+servo-sim-homing-neg = методу 17 нужен концевой выключатель отрицательного направления
+servo-sim-homing-pos = методу 18 нужен концевой выключатель положительного направления
+servo-sim-homing-method = метод возврата в исходное положение { $method } не симулируется (методы { $methods })
+servo-sim-no-drive-id = на симулируемой линии нет привода с ID { $id }
+servo-sim-pulse-ab = импульсный вход привода настроен на A/B (2508.03 = 2); импульсный выход ПЛК — импульс + направление: сначала установите 2508.03 в 1
+servo-sim-no-drive-short = нет привода с ID { $id }
+servo-not-servo-any-more = устройство больше не отвечает как сервопривод

@@ -406,3 +406,195 @@ fx-describe-pair = D{ $low }（低位）和 D{ $high }（高位）中的 32 位�
 fx-describe-special = 特殊{ $meaning }
 fx-describe-unaligned =  — 警告：位组合从 { $first } 开始；手册建议编号以 0 结尾（{ $area }0、{ $area }10 …）
 fx-complete-group = { $bits } 位{ $meaning }位组合
+
+## Kinco servo driver (servo::driver, servo::frame; Kinco servo RS232 notes, seed 002)
+
+# The manual's three reasons a drive stays silent (§2.4).
+servo-silence-causes = 步科驱动器在以下情况不会回复：① 错误的驱动器 ID，② 不存在的对象，③ 校验码错误（手册 §2.4）
+servo-port-still-gone = 串口 { $port } 仍然不存在
+servo-port-gone = 串口 { $port } 已消失
+servo-port-io = 串口 { $port } 读写失败
+servo-hint-port-gone = USB 转换器可能被拔出，或串口服务器已重启：请检查电缆和转换器（`plcsh ports` 列出现有串口）；串口恢复后，下一条命令会重新打开它
+servo-no-echo = { $port } 上没有请求的回显（环路模式已开启）
+servo-hint-no-echo = 环路断开（电缆），或线路不在环路模式：请从 URL 中去掉 echo=1
+servo-reply-before-echo = { $port } 上应先收到请求的回显（echo=1），但先到的是驱动器的回复：{ $bytes }；线路不在环路模式
+servo-hint-reply-before-echo = 请用 echo=0 连接（或设置驱动器的环路模式，面板 d5.15 = 1）
+servo-echo-differs = { $port } 上的回显与请求不同：发送 { $sent }，回显 { $echo }；可能原因：校验码错误 — 驱动器忽略损坏的报文
+servo-hint-baud-wiring = 请检查波特率（驱动器默认 38400，面板 d5.02）和接线
+servo-reply-is-request = 对 { $object } 的{ $verb ->
+        [read] 读
+        [write] 写
+       *[request] 请求
+    }的回复就是请求本身：线路回显请求（RS232 环路模式）
+servo-hint-use-echo = 请用 echo=1 连接，让 plcsh 跳过回显
+servo-bad-reply = 对 { $object } 的{ $verb ->
+        [read] 读
+        [write] 写
+       *[request] 请求
+    }回复错误：{ $reason }
+servo-hint-bad-reply = 线路上可能有其他主站或驱动器在通讯，或波特率不对
+# No reply: the head and the likely cause in one sentence.
+servo-silent = 驱动器 ID { $id } 在 { $timeout } 内未回复对 { $object } 的{ $verb ->
+        [read] 读
+        [write] 写
+       *[request] 请求
+    }；可能原因：{ $cause ->
+        [function] 未知功能码 { $code } — 驱动器只回复读（40）和写（23、2B、2F），忽略其他功能码
+        [checksum] 校验码错误 — 报文以 { $got } 结尾，而前面的字节需要 { $want }
+        [stray] 校验码错误 — 只收到 { $count } 个零散字节（{ $bytes }），报文在线路上被破坏（波特率或接线）
+        [object] 对象不存在 — 驱动器 ID { $id } 能回复状态字读取，所以此驱动器上很可能没有 { $object }
+        [stopped] 驱动器停止回复 — ID { $id } 之前回复过；请检查电源和电缆
+       *[id] ID 错误 — 驱动器 ID { $id } 上没有任何回复（出厂 ID 为 1，面板 d5.01；也请检查电源、电缆和波特率）
+    }
+servo-silent-late = 驱动器 ID { $id } 在 { $timeout } 内未回复对 { $object } 的{ $verb ->
+        [read] 读
+        [write] 写
+       *[request] 请求
+    }；可能原因：回复迟到 — { $what }
+servo-late-stale = 收到的是对另一个请求的回复（{ $frames }）
+servo-late-bytes = 超时后到达 { $count } 个字节，已丢弃
+servo-hint-late = 驱动器回复晚于超时：请加大超时（URL 中的 timeout=，当前 { $timeout }），并确认线路上没有其他主站；迟到的回复绝不会当作下一个请求的回复
+servo-refused = 驱动器 ID { $id } 拒绝了对 { $object } 的{ $verb ->
+        [read] 读
+        [write] 写
+       *[request] 请求
+    }：中止代码 16#{ $code } — { $meaning }
+servo-resolution-zero = 驱动器报告的反馈精度为 0（6410.03）
+servo-no-option = servo 设备没有选项 `{ $key }`
+servo-hint-options = 选项：encoder, timeout
+servo-flag-param = { $url } 中的 `{ $key }={ $value }` 不是 0 或 1
+servo-baud-zero = { $url } 中的 `baud=0`：波特率必须为正数
+servo-latency-param = { $url } 中的 `latency={ $value }` 不是时长（例如 1ms）
+servo-ids-in-url = { $url } 中：{ $message }
+servo-not-ids = `{ $list }` 不是驱动器 ID 列表（0–255），例如 1,2
+# What is wrong with a reply frame (servo::frame).
+servo-frame-checksum = 校验码 { $got } 错误（前面的字节算出的校验码为 { $want }）
+servo-frame-reply-checksum = 回复的校验码 { $got } 错误（前面的字节算出的校验码为 { $want }）
+servo-frame-id = 回复来自驱动器 ID { $got }，应为 ID { $want }
+servo-frame-object = 回复针对对象 { $got }，应为 { $want }
+servo-frame-func = 回复的功能码 { $got } 不是对 { $request } 请求的回复
+servo-frame-echo = 写入确认回传的数据为 { $got }，而请求发送的是 { $want }
+# CANopen abort codes the drive answers with (function code 80).
+servo-abort = { $code ->
+    [x05040001] 无效命令
+    [x06010001] 试图读取只写对象
+    [x06010002] 试图写入只读对象
+    [x06020000] 对象字典中不存在该对象
+    [x06040041] 对象无法映射
+    [x06070010] 数据类型不匹配，服务参数长度不匹配
+    [x06070012] 数据类型不匹配，服务参数长度过长
+    [x06090030] 超出参数的数值范围
+   *[other] 未知的中止代码
+    }
+
+## The simulated Kinco drive's faults and switches (servo::sim::control, servo::sim::faults; `servo sim …`)
+
+servo-sim-not-number = `{ $text }` 不是数字
+servo-sim-id-range = 驱动器 ID 为 0-255
+servo-sim-unknown-option = 未知选项 `{ $key }`
+servo-sim-count = count 为 1 或以上，或 all
+servo-sim-all-and-count = 请给出 `all` 或 count=N，不能两者都给
+servo-sim-fault-extra = `fault { $kind }` 之后出现意外的 `{ $word }`：请给出 all 或 count=N
+servo-sim-fault-duration = fault { $kind } 需要一个时长，例如 fault { $kind } 50ms
+servo-sim-fault-abort = fault abort 需要一个对象和一个中止代码，例如 fault abort target_position 16#06090030
+servo-sim-abort-bits = 中止代码为 32 位
+servo-sim-pulses-freq = pulses 需要 freq=HZ
+servo-sim-pulses-count = pulses 需要 count=N
+servo-sim-not-freq = `{ $text }` 不是以 Hz 为单位的频率
+servo-sim-pulse-count = count 为 0 或以上
+servo-sim-not-dir = `dir={ $dir }` 不是 fwd 或 rev
+servo-sim-unknown-word = 未知的 `servo sim { $word }`
+servo-sim-fault-bits = 故障代码为 16 位
+servo-sim-no-drive = 没有 ID 为 { $id } 的仿真驱动器（ID：{ $ids }）
+servo-sim-several-drives = 线路上有多个驱动器（{ $ids }）：请用 id=N 指定
+servo-sim-fault-injected = 驱动器 ID { $id }：已注入故障 16#{ $code }
+servo-sim-fault-armed = 驱动器 ID { $id }：故障 16#{ $code } 已设定在位置 { $position } inc 触发
+servo-sim-fault-acted = { $time }s  驱动器 ID { $id }：在位置 { $position } inc 出现故障 16#{ $code }（设定的故障已触发）
+servo-sim-no-fault-acted = 没有设定的故障被触发
+servo-sim-line-fault = { $scope ->
+        [all] 所有驱动器
+       *[one] 驱动器 ID { $id }
+    }：{ $count ->
+        [one] 下一个请求
+        [every] 直到 `servo sim fault clear` 之前的每个请求
+       *[many] 接下来的 { $n } 个请求
+    }{ $fault }
+servo-sim-faults-cleared = 线路故障已清除
+servo-sim-switch = 驱动器 ID { $id }：{ $switch ->
+        [home] 原点开关
+        [neg] 负限位开关
+       *[pos] 正限位开关
+    }{ $position ->
+        [off] 关闭
+       *[at] 位于 { $at } inc
+    }
+servo-sim-pulses = 驱动器 ID { $id }：从 t={ $start } s 到 t={ $end } s，{ $dir ->
+        [reverse] 反向
+       *[forward] 正向
+    } { $count } 个脉冲，频率 { $freq } Hz
+servo-sim-strict = 写入长度：{ $strict ->
+        [on] 长度必须与对象一致（否则 0x06070010）
+       *[off] 宽松长度
+    }
+# A line fault in words (`servo sim fault …`, `faults`).
+servo-sim-fault-kind = { $kind ->
+    [no-reply] 无回复
+    [bad-checksum] 回复校验码错误
+    [delay] 回复延迟 { $ms } ms
+    [abort] 对 { $object } 回复中止代码 16#{ $code }（{ $meaning }）
+   *[drop-echo] 丢弃回显
+    }
+
+## FX frames (fx::link, fx::port; the FX protocol notes, seed 004)
+
+# What is wrong with a frame (inside `a garbled frame (…): …`).
+fx-malformed = { $what ->
+    [no-crlf] 回复后没有 CR LF
+    [too-short] 太短
+    [station-not-hex] 站号或 PLC 号不是十六进制
+    [code-not-hex] 错误代码不是十六进制
+    [length-after-etx] ETX 之后长度错误
+    [sum-not-hex] 和校验不是十六进制
+    [bytes-after-etx] ETX 之后还有字节
+    [unknown-command] 未知命令或长度错误
+    [address-not-hex] 地址不是十六进制
+    [count-not-hex] 数量不是十六进制
+    [data-length] 数据长度与数量不符
+    [data-not-hex] 数据不是十六进制
+   *[not-read-reply] 不是所请求长度的 STX 数据 ETX 和校验
+    }
+# The computer link's NAK error codes (seed 004: "若发送码有误，则有以下回应").
+fx-nak-meaning = { $code ->
+    [c02] 和校验错误（请求中的和校验与其字符不符）
+    [c03] 协议错误（请求不符合控制规程）
+    [c06] 字符区错误（未知命令，或 PLC 没有的元件编号或数量）
+    [c07] 字符错误（写入的数据不是十六进制 ASCII）
+    [c0A] PLC 号错误（没有该 PLC 号的站）
+    [c18] 远程错误（无法远程切换 RUN/STOP）
+   *[other] 未知错误代码
+    }
+
+## The simulated FX PLC's control words, snapshots and server (fx::control, fx::snapshot, fx::sim)
+
+fx-sim-not-x = `{ $text }` 不是 X 输入（X0、X17 …）
+fx-sim-no-such-input = { $operand } 不是 { $model } 的输入（X0–X{ $last }）
+fx-sim-input-usage = input 需要一个输入和一个电平：input X0=1
+fx-sim-input-extra = 无法理解 input { $input } 之后的 `{ $word }`
+fx-sim-input-level = `{ $input }`：请写 input { $input }=1 或 =0
+fx-sim-inputs-none = 没有接通的 X 输入
+fx-sim-inputs-on = 接通：{ $inputs }
+fx-sim-not-word = `{ $word }` 不是 FX PLC 仿真器的控制字
+fx-snap-other-model = 快照来自 { $saved }，而此仿真器是 { $model }
+fx-snap-image = 保存的元件映像与此型号不符
+fx-serve-cannot-read = 无法读取 { $file }：{ $reason }
+fx-serve-stopped = FX 端口在就绪前停止了
+
+## The simulated drive's homing and pulse input (servo::sim)
+
+servo-sim-homing-neg = 方法 17 需要负限位开关
+servo-sim-homing-pos = 方法 18 需要正限位开关
+servo-sim-homing-method = 回原点方法 { $method } 未仿真（支持的方法 { $methods }）
+servo-sim-no-drive-id = 仿真线路上没有驱动器 ID { $id }
+servo-sim-pulse-ab = 驱动器的脉冲输入设为 A/B 相（2508.03 = 2）；PLC 的脉冲输出是脉冲 + 方向：请先把 2508.03 设为 1
+servo-sim-no-drive-short = 没有驱动器 ID { $id }
+servo-not-servo-any-more = 该设备不再作为伺服驱动器应答

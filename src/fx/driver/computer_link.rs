@@ -48,7 +48,7 @@ pub(super) fn classify_link(f: &[u8], h: Header, s: Settings, expect: Expect) ->
             .text,
         ),
         (Err(fxlink::ReplyError::Malformed(m)), _) => {
-            Got::Other(msg!("fx-reply-garbled", bytes = show(f), reason = m).text)
+            Got::Other(msg!("fx-reply-garbled", bytes = show(f), reason = fxlink::malformed_text(m)).text)
         }
     }
 }

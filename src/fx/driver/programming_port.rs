@@ -50,7 +50,7 @@ pub(super) fn classify_port(f: &[u8], expect: Expect) -> Got {
                 Got::BadSum(msg!("fx-reply-sum", got = format!("{got:02X}"), want = format!("{want:02X}")).text)
             }
             Err(port::FrameError::Malformed(m)) => {
-                Got::Other(msg!("fx-reply-garbled", bytes = show(f), reason = m).text)
+                Got::Other(msg!("fx-reply-garbled", bytes = show(f), reason = crate::fx::link::malformed_text(m)).text)
             }
         },
     }
