@@ -514,7 +514,7 @@ pub async fn serve_ports(
             let p = plc.clone();
             let answer: channel::Answer =
                 Arc::new(move |text: &str| channel::reply(super::control::answer(&mut lock(&p), text)));
-            let ch = channel::Channel::open(&path, "the served FX PLC's control channel", answer, stop.clone())?;
+            let ch = channel::Channel::open(&path, &msg!("link-channel-name", device = "fx"), answer, stop.clone())?;
             ready.insert("fx_control".into(), json!(ch.path()));
             Some(ch)
         }

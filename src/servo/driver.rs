@@ -264,21 +264,27 @@ impl Driver {
     ) -> Error {
         // As exact as the user gave it (`timeout=0.5` is `0.5 ms`, never `0 ms`).
         let ms = crate::core::literal::millis_text(self.timeout);
-        let silent = |cause: &str, extra: &[(&'static str, crate::core::msg::Arg)]| {
-            let mut args: Vec<(&'static str, crate::core::msg::Arg)> = vec![
-                ("id", req.id.into()),
-                ("verb", verb(req).into()),
-                ("object", req.object().into()),
-                ("timeout", ms.as_str().into()),
-                ("cause", cause.into()),
-            ];
-            args.extend(extra.iter().cloned());
-            crate::core::msg::Msg::new("servo-silent", &args)
+        // The cause's own values (`code`, `got`/`want`, `count`/`bytes`); the others are empty.
+        let silent = |cause: &str, code: String, got_want: (String, String), count: usize, bytes: String| {
+            msg!(
+                "servo-silent",
+                id = req.id,
+                verb = verb(req),
+                object = req.object(),
+                timeout = &ms,
+                cause = cause,
+                code = code,
+                got = got_want.0,
+                want = got_want.1,
+                count = count,
+                bytes = bytes
+            )
         };
+        let none = || (String::new(), String::new());
         let likely = if !is_request_func(req.func) {
-            silent("function", &[("code", format!("{:02X}", req.func).into())])
+            silent("function", format!("{:02X}", req.func), none(), 0, String::new())
         } else if let Some(b) = bad_checksum {
-            silent("checksum", &[("got", format!("{:02X}", b.got).into()), ("want", format!("{:02X}", b.want).into())])
+            silent("checksum", String::new(), (format!("{:02X}", b.got), format!("{:02X}", b.want)), 0, String::new())
         } else if !stale.is_empty() || late > 0 {
             // A reply came, but too late or to something else: neither the id nor the object
             // is to blame, and no probe is sent.
@@ -300,9 +306,9 @@ impl Driver {
             ))
             .hint(msg!("servo-hint-late", timeout = &ms));
         } else if !partial.is_empty() {
-            silent("stray", &[("count", partial.len().into()), ("bytes", trace::hex_bytes(partial).into())])
+            silent("stray", String::new(), none(), partial.len(), trace::hex_bytes(partial))
         } else {
-            silent(self.probe(req), &[])
+            silent(self.probe(req), String::new(), none(), 0, String::new())
         };
         Error::link(likely).hint(silence_causes())
     }

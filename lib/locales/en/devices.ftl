@@ -601,3 +601,43 @@ servo-sim-no-drive-id = no drive id { $id } on the simulated line
 servo-sim-pulse-ab = the drive's pulse input is set to A/B (2508.03 = 2); a PLC pulse output is pulse + direction: set 2508.03 to 1 first
 servo-sim-no-drive-short = no drive id { $id }
 servo-not-servo-any-more = the device no longer answers as a servo drive
+
+## Links: control channels, shared lines, RFC 2217, pseudo-terminals (core::link)
+
+link-cannot-open-channel = cannot open { $what } at { $path }
+link-hint-channel-path = choose another path, or remove a stale file left by a server that was killed
+link-control-line-long = a control line is at most { $max } bytes
+link-control-line-utf8 = a control line is UTF-8 text
+link-cannot-reach-channel = cannot reach the simulator's control channel { $path }
+link-hint-reach-channel = is `plcsh sim serve` still running? Its readiness line names the control channel's path
+link-channel-answered = the control channel answered `{ $reply }`
+link-simulator-refused = the simulator refused
+# The names of the simulators' control channels (inside link-cannot-open-channel).
+link-channel-name = { $device ->
+    [servo] the servo control socket
+    [umpk] the served UMPK's control channel
+   *[fx] the served FX PLC's control channel
+    }
+link-line-settings = { $line } is already open with { $open }, not { $settings }
+link-hint-line-settings = every drive on one line uses the same baud rate and loop setting
+link-pipe-closed = the other end of the pipe closed
+link-no-reply-timeout = no reply within the timeout
+link-rfc2217 = the RFC 2217 server at { $addr } { $what ->
+        [confirm] did not confirm the line settings in time
+        [agree] did not agree to set the serial port (COM-PORT-OPTION) in time
+        [closed] closed the connection ({ $reason })
+        [refused] refused to let this side set the serial port
+       *[baud] set { $got } baud instead of { $want }
+    }
+link-hint-rfc2217 = check that the device server's channel is in RFC 2217 mode (or use +tcp:// for a raw TCP channel) and that it supports this baud rate and format
+link-pty-dup-master = cannot duplicate the pty master
+link-pty-dup-slave = cannot duplicate the pty slave
+link-pty-register = cannot register the pty master with tokio
+link-pty-open = cannot open a pseudo-terminal
+link-pty-call = { $call } on pty
+link-pty-nonblocking = cannot make the pty non-blocking
+link-not-symlink = { $path } exists and is not a symlink; choose another path
+link-cannot-symlink = cannot create the symlink { $path }
+link-control-no-port = the control file holds no port number
+link-windows-no-pty = Windows has no pseudo-terminals to serve a simulator on
+link-hint-windows-tcp = serve it on a TCP port instead (sim serve --rtu-tcp 0, --servo-tcp 0, --fx-tcp 0, --fx-link-tcp 0, --umpk-tcp 0) and connect with rtu+tcp://, kinco+tcp://, fx+tcp://, fxlink+tcp:// or umpk+tcp://

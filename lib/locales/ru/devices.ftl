@@ -621,3 +621,43 @@ servo-sim-no-drive-id = на симулируемой линии нет прив
 servo-sim-pulse-ab = импульсный вход привода настроен на A/B (2508.03 = 2); импульсный выход ПЛК — импульс + направление: сначала установите 2508.03 в 1
 servo-sim-no-drive-short = нет привода с ID { $id }
 servo-not-servo-any-more = устройство больше не отвечает как сервопривод
+
+## Links: control channels, shared lines, RFC 2217, pseudo-terminals (core::link)
+
+link-cannot-open-channel = не удаётся открыть { $what } по пути { $path }
+link-hint-channel-path = выберите другой путь или удалите старый файл, оставшийся от завершённого сервера
+link-control-line-long = управляющая строка — не больше { $max } байт
+link-control-line-utf8 = управляющая строка должна быть текстом UTF-8
+link-cannot-reach-channel = нет связи с управляющим каналом симулятора { $path }
+link-hint-reach-channel = `plcsh sim serve` ещё работает? Путь управляющего канала указан в его строке готовности
+link-channel-answered = управляющий канал ответил `{ $reply }`
+link-simulator-refused = симулятор отказал
+# The names of the simulators' control channels (inside link-cannot-open-channel).
+link-channel-name = { $device ->
+    [servo] управляющий сокет сервопривода
+    [umpk] управляющий канал обслуживаемого УМПК
+   *[fx] управляющий канал обслуживаемого ПЛК FX
+    }
+link-line-settings = { $line } уже открыта с { $open }, а не { $settings }
+link-hint-line-settings = все приводы на одной линии используют одну скорость передачи данных и одну настройку петли
+link-pipe-closed = другой конец канала закрыт
+link-no-reply-timeout = нет ответа за время тайм-аута
+link-rfc2217 = сервер RFC 2217 по адресу { $addr } { $what ->
+        [confirm] не подтвердил настройки линии вовремя
+        [agree] не согласился вовремя на настройку последовательного порта (COM-PORT-OPTION)
+        [closed] закрыл соединение ({ $reason })
+        [refused] не разрешил этой стороне настраивать последовательный порт
+       *[baud] установил { $got } бод вместо { $want }
+    }
+link-hint-rfc2217 = проверьте, что канал сервера устройств работает в режиме RFC 2217 (или используйте +tcp:// для канала raw TCP) и поддерживает эту скорость и формат
+link-pty-dup-master = не удаётся дублировать ведущую сторону псевдотерминала
+link-pty-dup-slave = не удаётся дублировать ведомую сторону псевдотерминала
+link-pty-register = не удаётся зарегистрировать ведущую сторону псевдотерминала в tokio
+link-pty-open = не удаётся открыть псевдотерминал
+link-pty-call = { $call } на псевдотерминале
+link-pty-nonblocking = не удаётся перевести псевдотерминал в неблокирующий режим
+link-not-symlink = { $path } существует и не является символической ссылкой; выберите другой путь
+link-cannot-symlink = не удаётся создать символическую ссылку { $path }
+link-control-no-port = в управляющем файле нет номера порта
+link-windows-no-pty = в Windows нет псевдотерминалов для работы симулятора
+link-hint-windows-tcp = запустите его на порту TCP (sim serve --rtu-tcp 0, --servo-tcp 0, --fx-tcp 0, --fx-link-tcp 0, --umpk-tcp 0) и подключайтесь через rtu+tcp://, kinco+tcp://, fx+tcp://, fxlink+tcp:// или umpk+tcp://

@@ -598,3 +598,43 @@ servo-sim-no-drive-id = 仿真线路上没有驱动器 ID { $id }
 servo-sim-pulse-ab = 驱动器的脉冲输入设为 A/B 相（2508.03 = 2）；PLC 的脉冲输出是脉冲 + 方向：请先把 2508.03 设为 1
 servo-sim-no-drive-short = 没有驱动器 ID { $id }
 servo-not-servo-any-more = 该设备不再作为伺服驱动器应答
+
+## Links: control channels, shared lines, RFC 2217, pseudo-terminals (core::link)
+
+link-cannot-open-channel = 无法在 { $path } 打开{ $what }
+link-hint-channel-path = 请选择其他路径，或删除被终止的服务器遗留的旧文件
+link-control-line-long = 控制行最多 { $max } 字节
+link-control-line-utf8 = 控制行必须是 UTF-8 文本
+link-cannot-reach-channel = 无法连接仿真器的控制通道 { $path }
+link-hint-reach-channel = `plcsh sim serve` 还在运行吗？它的就绪行给出了控制通道的路径
+link-channel-answered = 控制通道回复了 `{ $reply }`
+link-simulator-refused = 仿真器拒绝了
+# The names of the simulators' control channels (inside link-cannot-open-channel).
+link-channel-name = { $device ->
+    [servo] 伺服控制套接字
+    [umpk] 所服务的 UMPK 的控制通道
+   *[fx] 所服务的 FX PLC 的控制通道
+    }
+link-line-settings = { $line } 已用 { $open } 打开，而不是 { $settings }
+link-hint-line-settings = 同一线路上的所有驱动器使用相同的波特率和环路设置
+link-pipe-closed = 管道的另一端已关闭
+link-no-reply-timeout = 超时内无回复
+link-rfc2217 = { $addr } 上的 RFC 2217 服务器{ $what ->
+        [confirm] 未及时确认线路设置
+        [agree] 未及时同意设置串口（COM-PORT-OPTION）
+        [closed] 关闭了连接（{ $reason }）
+        [refused] 拒绝让本端设置串口
+       *[baud] 设置的波特率为 { $got }，而不是 { $want }
+    }
+link-hint-rfc2217 = 请确认设备服务器的通道处于 RFC 2217 模式（原始 TCP 通道请用 +tcp://），并支持该波特率和格式
+link-pty-dup-master = 无法复制伪终端主端
+link-pty-dup-slave = 无法复制伪终端从端
+link-pty-register = 无法向 tokio 注册伪终端主端
+link-pty-open = 无法打开伪终端
+link-pty-call = 伪终端上的 { $call }
+link-pty-nonblocking = 无法将伪终端设为非阻塞
+link-not-symlink = { $path } 已存在且不是符号链接；请选择其他路径
+link-cannot-symlink = 无法创建符号链接 { $path }
+link-control-no-port = 控制文件中没有端口号
+link-windows-no-pty = Windows 没有可供仿真器使用的伪终端
+link-hint-windows-tcp = 请改为在 TCP 端口上运行（sim serve --rtu-tcp 0、--servo-tcp 0、--fx-tcp 0、--fx-link-tcp 0、--umpk-tcp 0），并用 rtu+tcp://、kinco+tcp://、fx+tcp://、fxlink+tcp:// 或 umpk+tcp:// 连接

@@ -97,7 +97,7 @@ pub fn serve(
             let s = sim.clone();
             let answer: channel::Answer =
                 Arc::new(move |text: &str| channel::reply(super::control::answer(&mut lock(&s), text)));
-            Some(channel::Channel::open(&path, "the served UMPK's control channel", answer, stop.clone())?)
+            Some(channel::Channel::open(&path, &msg!("link-channel-name", device = "umpk"), answer, stop.clone())?)
         }
         None => None,
     };
