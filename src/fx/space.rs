@@ -219,12 +219,14 @@ impl OperandSpace for FxSpace {
         let (lo, hi) = o.view.int_range();
         let range = match o.width {
             Width::Group(n) if 4 * n as u32 == o.view.bits() => format!("{lo}…{hi}"),
-            Width::Group(n) => format!("0…{} (missing high bits are zero)", (1u64 << (4 * n)) - 1),
+            Width::Group(n) => msg!("fx-help-group-range", max = (1u64 << (4 * n)) - 1).text,
             _ if o.view == crate::core::DataType::Real => "IEEE 754 single".into(),
             _ => format!("{lo}…{hi}"),
         };
-        s.push_str(&format!("type {} ({} bits), range {range}\n", o.view.name(), o.bits()));
-        s.push_str(&format!("on {}: {}\n", self.model.name, self.range_text(o.area)));
+        s.push_str(&msg!("fx-help-type", dtype = o.view.name(), bits = o.bits(), range = range));
+        s.push('\n');
+        s.push_str(&msg!("fx-help-on-model", model = self.model.name, range = self.range_text(o.area)));
+        s.push('\n');
         if let Some(timer) = match o.area {
             Area::TS | Area::TC | Area::TN => Some(true),
             Area::CS | Area::CC | Area::CN => Some(false),
@@ -237,24 +239,26 @@ impl OperandSpace for FxSpace {
             Proto::Port => {
                 let table = Table::of(self.model);
                 if let Some(p) = port::place(table, &o) {
-                    s.push_str(&format!(
-                        "programming port ({}): byte address {:04X}H, {} byte(s)",
-                        table.commands(),
-                        p.addr,
-                        p.len
+                    s.push_str(&msg!(
+                        "fx-help-port",
+                        commands = table.commands(),
+                        address = format!("{:04X}", p.addr),
+                        bytes = p.len
                     ));
                     if let Some(f) = port::force_address(table, o.area, o.index).filter(|_| o.width == Width::Bit) {
-                        s.push_str(&format!(", force address {f:04X}H"));
+                        s.push_str(&msg!("fx-help-force", address = format!("{f:04X}")));
                     }
                     s.push('\n');
                 }
             }
             Proto::Link => {
                 let d = super::link::Dev { area: o.area, index: o.index };
-                s.push_str(&format!("computer link: device {}\n", d.encode()));
+                s.push_str(&msg!("fx-help-link", device = d.encode()));
+                s.push('\n');
             }
         }
-        s.push_str("manual: seed 004 (FX device groups KnX, programming-port protocol; fx-and-masterk.md A, B)\n");
+        s.push_str(&msg!("fx-help-manual"));
+        s.push('\n');
         Ok(s)
     }
 

@@ -641,3 +641,12 @@ link-cannot-symlink = cannot create the symlink { $path }
 link-control-no-port = the control file holds no port number
 link-windows-no-pty = Windows has no pseudo-terminals to serve a simulator on
 link-hint-windows-tcp = serve it on a TCP port instead (sim serve --rtu-tcp 0, --servo-tcp 0, --fx-tcp 0, --fx-link-tcp 0, --umpk-tcp 0) and connect with rtu+tcp://, kinco+tcp://, fx+tcp://, fxlink+tcp:// or umpk+tcp://
+
+# `help OPERAND` on an FX (fx::space).
+fx-help-group-range = 0…{ $max } (missing high bits are zero)
+fx-help-port = programming port ({ $commands }): byte address { $address }H, { $bytes } byte(s)
+fx-help-force = , force address { $address }H
+fx-help-link = computer link: device { $device }
+fx-help-manual = manual: seed 004 (FX device groups KnX, programming-port protocol; fx-and-masterk.md A, B)
+fx-help-type = type { $dtype } ({ $bits } bits), range { $range }
+fx-help-on-model = on { $model }: { $range }

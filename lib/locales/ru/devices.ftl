@@ -661,3 +661,12 @@ link-cannot-symlink = не удаётся создать символическ�
 link-control-no-port = в управляющем файле нет номера порта
 link-windows-no-pty = в Windows нет псевдотерминалов для работы симулятора
 link-hint-windows-tcp = запустите его на порту TCP (sim serve --rtu-tcp 0, --servo-tcp 0, --fx-tcp 0, --fx-link-tcp 0, --umpk-tcp 0) и подключайтесь через rtu+tcp://, kinco+tcp://, fx+tcp://, fxlink+tcp:// или umpk+tcp://
+
+# `help OPERAND` on an FX (fx::space).
+fx-help-group-range = 0…{ $max } (недостающие старшие биты — нули)
+fx-help-port = порт программирования ({ $commands }): байтовый адрес { $address }H, байт: { $bytes }
+fx-help-force = , адрес принудительной установки { $address }H
+fx-help-link = компьютерная связь: устройство { $device }
+fx-help-manual = руководство: seed 004 (группы устройств FX KnX, протокол порта программирования; fx-and-masterk.md A, B)
+fx-help-type = тип { $dtype } ({ $bits } бит), диапазон { $range }
+fx-help-on-model = у { $model }: { $range }

@@ -638,3 +638,12 @@ link-cannot-symlink = 无法创建符号链接 { $path }
 link-control-no-port = 控制文件中没有端口号
 link-windows-no-pty = Windows 没有可供仿真器使用的伪终端
 link-hint-windows-tcp = 请改为在 TCP 端口上运行（sim serve --rtu-tcp 0、--servo-tcp 0、--fx-tcp 0、--fx-link-tcp 0、--umpk-tcp 0），并用 rtu+tcp://、kinco+tcp://、fx+tcp://、fxlink+tcp:// 或 umpk+tcp:// 连接
+
+# `help OPERAND` on an FX (fx::space).
+fx-help-group-range = 0…{ $max }（缺少的高位为零）
+fx-help-port = 编程口（{ $commands }）：字节地址 { $address }H，{ $bytes } 字节
+fx-help-force = ，强制置位/复位地址 { $address }H
+fx-help-link = 计算机链接：元件 { $device }
+fx-help-manual = 手册：seed 004（FX 位组合 KnX、编程口协议；fx-and-masterk.md A、B）
+fx-help-type = 类型 { $dtype }（{ $bits } 位），范围 { $range }
+fx-help-on-model = { $model } 上：{ $range }
