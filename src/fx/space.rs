@@ -309,6 +309,17 @@ mod tests {
     }
 
     #[test]
+    fn an_unaligned_group_is_described_with_its_warning() {
+        // A group that does not start at a number ending in 0 (FX programming manual, KnX).
+        let s = space("FX2N", Proto::Port);
+        let op = s.parse("K2M3").unwrap();
+        assert_eq!(
+            s.describe(&op[0]).unwrap(),
+            "8-bit group of auxiliary relay bits M3–M10 — warning: group starts at M3; the manual advises a number ending in 0 (M0, M10 …)"
+        );
+    }
+
+    #[test]
     fn bounds_follow_model_and_protocol() {
         let s = space("FX1S", Proto::Port);
         assert!(s.parse_fx("D255").is_ok());

@@ -407,7 +407,7 @@ fx-hint-not-on-link = read the contact (TS/CS) instead, or use the programming p
 fx-describe-group = { $bits }-bit group of { $meaning } bits { $first }–{ $last }
 fx-describe-pair = 32-bit value in D{ $low } (low) and D{ $high } (high)
 fx-describe-special = special { $meaning }
-fx-describe-unaligned =  — warning: group starts at { $first }; the manual advises a number ending in 0 ({ $area }0, { $area }10 …)
+fx-describe-unaligned = {" "}— warning: group starts at { $first }; the manual advises a number ending in 0 ({ $area }0, { $area }10 …)
 fx-complete-group = { $bits }-bit group of { $meaning } bits
 
 ## Kinco servo driver (servo::driver, servo::frame; Kinco servo RS232 notes, seed 002)

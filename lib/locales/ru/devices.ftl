@@ -427,7 +427,7 @@ fx-hint-not-on-link = читайте вместо него контакт (TS/CS
 fx-describe-group = { $bits }-битная группа битов «{ $meaning }» { $first }–{ $last }
 fx-describe-pair = 32-битное значение в D{ $low } (младшее) и D{ $high } (старшее)
 fx-describe-special = специальный { $meaning }
-fx-describe-unaligned =  — внимание: группа начинается с { $first }; руководство советует номер, оканчивающийся на 0 ({ $area }0, { $area }10 …)
+fx-describe-unaligned = {" "}— внимание: группа начинается с { $first }; руководство советует номер, оканчивающийся на 0 ({ $area }0, { $area }10 …)
 fx-complete-group = { $bits }-битная группа битов «{ $meaning }»
 
 ## Kinco servo driver (servo::driver, servo::frame; Kinco servo RS232 notes, seed 002)
@@ -537,10 +537,14 @@ servo-sim-no-fault-acted = ни одна взведённая неисправн
 servo-sim-line-fault = { $scope ->
         [all] все приводы
        *[one] привод с ID { $id }
-    }: { $fault } для { $count ->
-        [one] следующего запроса
-        [every] каждого запроса до `servo sim fault clear`
-       *[many] следующих запросов ({ $n })
+    }: { $fault }; действует на { $count ->
+        [one] следующий запрос
+        [every] каждый запрос до `servo sim fault clear`
+       *[many] { $n ->
+            [one] следующий { $n } запрос
+            [few] следующие { $n } запроса
+           *[many] следующие { $n } запросов
+        }
     }
 servo-sim-faults-cleared = неисправности линии сняты
 servo-sim-switch = привод с ID { $id }: { $switch ->

@@ -404,7 +404,7 @@ fx-hint-not-on-link = 请改为读取触点（TS/CS），或使用编程口（fx
 fx-describe-group = { $first }–{ $last } 的 { $bits } 位{ $meaning }位组合
 fx-describe-pair = D{ $low }（低位）和 D{ $high }（高位）中的 32 位值
 fx-describe-special = 特殊{ $meaning }
-fx-describe-unaligned =  — 警告：位组合从 { $first } 开始；手册建议编号以 0 结尾（{ $area }0、{ $area }10 …）
+fx-describe-unaligned = {" "}— 警告：位组合从 { $first } 开始；手册建议编号以 0 结尾（{ $area }0、{ $area }10 …）
 fx-complete-group = { $bits } 位{ $meaning }位组合
 
 ## Kinco servo driver (servo::driver, servo::frame; Kinco servo RS232 notes, seed 002)
@@ -422,21 +422,21 @@ servo-hint-reply-before-echo = 请用 echo=0 连接（或设置驱动器的环�
 servo-echo-differs = { $port } 上的回显与请求不同：发送 { $sent }，回显 { $echo }；可能原因：校验码错误 — 驱动器忽略损坏的报文
 servo-hint-baud-wiring = 请检查波特率（驱动器默认 38400，面板 d5.02）和接线
 servo-reply-is-request = 对 { $object } 的{ $verb ->
-        [read] 读
-        [write] 写
+        [read] 读取
+        [write] 写入
        *[request] 请求
     }的回复就是请求本身：线路回显请求（RS232 环路模式）
 servo-hint-use-echo = 请用 echo=1 连接，让 plcsh 跳过回显
 servo-bad-reply = 对 { $object } 的{ $verb ->
-        [read] 读
-        [write] 写
+        [read] 读取
+        [write] 写入
        *[request] 请求
     }回复错误：{ $reason }
 servo-hint-bad-reply = 线路上可能有其他主站或驱动器在通讯，或波特率不对
 # No reply: the head and the likely cause in one sentence.
 servo-silent = 驱动器 ID { $id } 在 { $timeout } 内未回复对 { $object } 的{ $verb ->
-        [read] 读
-        [write] 写
+        [read] 读取
+        [write] 写入
        *[request] 请求
     }；可能原因：{ $cause ->
         [function] 未知功能码 { $code } — 驱动器只回复读（40）和写（23、2B、2F），忽略其他功能码
@@ -447,16 +447,16 @@ servo-silent = 驱动器 ID { $id } 在 { $timeout } 内未回复对 { $object }
        *[id] ID 错误 — 驱动器 ID { $id } 上没有任何回复（出厂 ID 为 1，面板 d5.01；也请检查电源、电缆和波特率）
     }
 servo-silent-late = 驱动器 ID { $id } 在 { $timeout } 内未回复对 { $object } 的{ $verb ->
-        [read] 读
-        [write] 写
+        [read] 读取
+        [write] 写入
        *[request] 请求
     }；可能原因：回复迟到 — { $what }
 servo-late-stale = 收到的是对另一个请求的回复（{ $frames }）
 servo-late-bytes = 超时后到达 { $count } 个字节，已丢弃
 servo-hint-late = 驱动器回复晚于超时：请加大超时（URL 中的 timeout=，当前 { $timeout }），并确认线路上没有其他主站；迟到的回复绝不会当作下一个请求的回复
 servo-refused = 驱动器 ID { $id } 拒绝了对 { $object } 的{ $verb ->
-        [read] 读
-        [write] 写
+        [read] 读取
+        [write] 写入
        *[request] 请求
     }：中止代码 16#{ $code } — { $meaning }
 servo-resolution-zero = 驱动器报告的反馈精度为 0（6410.03）
