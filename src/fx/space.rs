@@ -25,11 +25,15 @@ pub enum Proto {
 }
 
 impl Proto {
-    pub fn name(self) -> &'static str {
-        match self {
-            Proto::Port => "programming port",
-            Proto::Link => "computer link",
-        }
+    /// The protocol's name, in the current language.
+    pub fn name(self) -> crate::core::msg::Msg {
+        msg!(
+            "fx-proto",
+            proto = match self {
+                Proto::Port => "port",
+                Proto::Link => "link",
+            }
+        )
     }
 }
 

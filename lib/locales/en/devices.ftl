@@ -650,3 +650,9 @@ fx-help-link = computer link: device { $device }
 fx-help-manual = manual: seed 004 (FX device groups KnX, programming-port protocol; fx-and-masterk.md A, B)
 fx-help-type = type { $dtype } ({ $bits } bits), range { $range }
 fx-help-on-model = on { $model }: { $range }
+
+# The two ways to an FX (fx::space::Proto).
+fx-proto = { $proto ->
+    [port] programming port
+   *[link] computer link
+    }

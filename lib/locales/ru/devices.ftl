@@ -674,3 +674,9 @@ fx-help-link = компьютерная связь: устройство { $devi
 fx-help-manual = руководство: seed 004 (группы устройств FX KnX, протокол порта программирования; fx-and-masterk.md A, B)
 fx-help-type = тип { $dtype } ({ $bits } бит), диапазон { $range }
 fx-help-on-model = у { $model }: { $range }
+
+# The two ways to an FX (fx::space::Proto).
+fx-proto = { $proto ->
+    [port] порт программирования
+   *[link] компьютерная связь
+    }

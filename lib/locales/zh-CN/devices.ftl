@@ -647,3 +647,9 @@ fx-help-link = 计算机链接：元件 { $device }
 fx-help-manual = 手册：seed 004（FX 位组合 KnX、编程口协议；fx-and-masterk.md A、B）
 fx-help-type = 类型 { $dtype }（{ $bits } 位），范围 { $range }
 fx-help-on-model = { $model } 上：{ $range }
+
+# The two ways to an FX (fx::space::Proto).
+fx-proto = { $proto ->
+    [port] 编程口
+   *[link] 计算机链接
+    }
