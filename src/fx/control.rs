@@ -19,6 +19,7 @@ use super::model::Model;
 use super::operand::{parse_one, Area, FxOperand, Width};
 use crate::core::sim_faults;
 use crate::core::{Error, Result};
+use crate::msg;
 use serde_json::{json, Value as Json};
 
 /// The control words, for messages.
@@ -26,18 +27,18 @@ pub const WORDS: &str =
     "input X0=1|X0=0 | inputs | fault no-reply [for=D] | fault stuck X0=1 [for=D] | fault clear [ID] | faults | events";
 
 fn usage(msg: impl Into<crate::core::error::Text>) -> Error {
-    Error::usage(msg).hint(format!("control words: {WORDS}"))
+    Error::usage(msg).hint(msg!("umpk-sim-hint-words", words = WORDS))
 }
 
 /// An X input of the PLC's model: its number and canonical name.
 fn input(model: &Model, text: &str) -> Result<(u16, String)> {
     let o = parse_one(text.trim()).map_err(|e| usage(e.message.clone()))?;
     if o.area != Area::X || !matches!(o.width, Width::Bit) {
-        return Err(usage(format!("`{}` is not an X input (X0, X17 …)", text.trim())));
+        return Err(usage(msg!("fx-sim-not-x", text = text.trim())));
     }
     if o.index >= model.x {
         let last = FxOperand::number_text(Area::X, model.x - 1);
-        return Err(usage(format!("{} is not an input of the {} (X0–X{last})", o.canonical(), model.name)));
+        return Err(usage(msg!("fx-sim-no-such-input", operand = o.canonical(), model = model.name, last = last)));
     }
     Ok((o.index, o.canonical()))
 }
@@ -54,11 +55,11 @@ pub fn answer(mem: &mut Memory, text: &str) -> Result<(String, Json)> {
     }
     match words.first().map(|w| w.to_ascii_lowercase()).as_deref() {
         Some("input") => {
-            let spec = words.get(1).ok_or_else(|| usage("input needs an input and a level: input X0=1"))?;
+            let spec = words.get(1).ok_or_else(|| usage(msg!("fx-sim-input-usage")))?;
             if let Some(w) = words.get(2) {
-                return Err(usage(format!("`{w}` after input {spec} is not understood")));
+                return Err(usage(msg!("fx-sim-input-extra", word = *w, input = *spec)));
             }
-            let (op, v) = spec.split_once('=').ok_or_else(|| usage(format!("`{spec}`: write input {spec}=1 or =0")))?;
+            let (op, v) = spec.split_once('=').ok_or_else(|| usage(msg!("fx-sim-input-level", input = *spec)))?;
             let (i, name) = input(mem.model, op)?;
             let on = sim_faults::level(v, WORDS)?;
             mem.set_input(i, on);
@@ -66,16 +67,20 @@ pub fn answer(mem: &mut Memory, text: &str) -> Result<(String, Json)> {
         }
         Some("inputs") => {
             if let Some(w) = words.get(1) {
-                return Err(usage(format!("`inputs` takes nothing after it (got `{w}`)")));
+                return Err(usage(msg!("umpk-sim-inputs-extra", word = *w)));
             }
             let on: Vec<String> = (0..mem.model.x)
                 .filter(|i| mem.bit(Area::X, *i) == Some(true))
                 .map(|i| format!("X{}", FxOperand::number_text(Area::X, i)))
                 .collect();
-            let text = if on.is_empty() { "no X input is on".to_string() } else { format!("on: {}", on.join(" ")) };
+            let text = if on.is_empty() {
+                msg!("fx-sim-inputs-none").text
+            } else {
+                msg!("fx-sim-inputs-on", inputs = on.join(" ")).text
+            };
             Ok((text, json!({"on": on, "time_us": now_us})))
         }
-        Some(other) => Err(usage(format!("`{other}` is not a control word of a simulated FX PLC"))),
-        None => Err(usage("an empty control line")),
+        Some(other) => Err(usage(msg!("fx-sim-not-word", word = other))),
+        None => Err(usage(msg!("umpk-sim-empty-line"))),
     }
 }

@@ -21,6 +21,7 @@
 
 use super::operand::{Area, CN32_FIRST};
 use super::port::{hex2, push_hex2, ACK, ENQ, ETX, NAK, STX};
+use crate::msg;
 
 pub const CR: u8 = 0x0D;
 pub const LF: u8 = 0x0A;
@@ -40,16 +41,18 @@ pub mod code {
 }
 
 /// An error code in words (FX computer-link error codes, as the public drivers list them).
-pub fn nak_text(code: u8) -> &'static str {
-    match code {
-        0x02 => "sum check error (the sum in the request does not match its characters)",
-        0x03 => "protocol error (the request does not follow the control procedure)",
-        0x06 => "character area error (unknown command, or a device number or count the PLC does not have)",
-        0x07 => "character error (data to write is not hexadecimal ASCII)",
-        0x0A | 0x10 => "PC number error (no station with this PC number)",
-        0x18 => "remote error (RUN/STOP cannot be switched remotely)",
-        _ => "unknown error code",
-    }
+pub fn nak_text(code: u8) -> String {
+    let key = match code {
+        0x02 | 0x03 | 0x06 | 0x07 | 0x0A | 0x18 => format!("c{code:02X}"),
+        0x10 => "c0A".to_string(),
+        _ => "other".to_string(),
+    };
+    msg!("fx-nak-meaning", code = key).text
+}
+
+/// What a `Malformed` key (`too-short`, …) says, in words.
+pub fn malformed_text(key: &str) -> String {
+    msg!("fx-malformed", what = key).text
 }
 
 /// Link settings both ends must agree on.
@@ -298,41 +301,38 @@ pub enum ReplyError {
         station: u8,
         pc: u8,
     },
+    /// What is wrong, as a key of [`malformed_text`] (`too-short`, …).
     Malformed(&'static str),
 }
 
 /// Decodes a complete reply, checking the station and PC number against `h`.
 pub fn decode_reply(f: &[u8], h: Header, s: Settings) -> Result<Reply, ReplyError> {
-    let f = if s.format4 {
-        f.strip_suffix(&[CR, LF]).ok_or(ReplyError::Malformed("no CR LF after the reply"))?
-    } else {
-        f
-    };
+    let f = if s.format4 { f.strip_suffix(&[CR, LF]).ok_or(ReplyError::Malformed("no-crlf"))? } else { f };
     if f.len() < 5 {
-        return Err(ReplyError::Malformed("too short"));
+        return Err(ReplyError::Malformed("too-short"));
     }
     let (Some(station), Some(pc)) = (hex2(&f[1..3]), hex2(&f[3..5])) else {
-        return Err(ReplyError::Malformed("the station or PC number is not hex"));
+        return Err(ReplyError::Malformed("station-not-hex"));
     };
     if station != h.station || pc != h.pc {
         return Err(ReplyError::Station { station, pc });
     }
     match f[0] {
         ACK if f.len() == 5 => Ok(Reply::Ack),
-        NAK if f.len() == 7 => Ok(Reply::Nak(hex2(&f[5..7]).ok_or(ReplyError::Malformed("error code is not hex"))?)),
+        NAK if f.len() == 7 => Ok(Reply::Nak(hex2(&f[5..7]).ok_or(ReplyError::Malformed("code-not-hex"))?)),
         STX => {
             let etx = f.iter().position(|b| *b == ETX).ok_or(ReplyError::Malformed("no ETX"))?;
             if s.sum {
                 if f.len() != etx + 3 {
-                    return Err(ReplyError::Malformed("wrong length after ETX"));
+                    return Err(ReplyError::Malformed("length-after-etx"));
                 }
                 let want = super::port::sum(&f[1..=etx]);
-                let got = hex2(&f[etx + 1..]).ok_or(ReplyError::Malformed("sum check is not hex"))?;
+                let got = hex2(&f[etx + 1..]).ok_or(ReplyError::Malformed("sum-not-hex"))?;
                 if got != want {
                     return Err(ReplyError::BadSum { got, want });
                 }
             } else if f.len() != etx + 1 {
-                return Err(ReplyError::Malformed("bytes after ETX"));
+                return Err(ReplyError::Malformed("bytes-after-etx"));
             }
             Ok(Reply::Data(f[5..etx].to_vec()))
         }

@@ -23,7 +23,9 @@
 //! Ranges `D0..D9` and counts `D0[10]` step by the operand's size. Input is case-insensitive
 //! and may start with `%`; output is canonical upper case.
 
+use crate::core::msg::Msg;
 use crate::core::{DataType, Error, ErrorKind, Operand, Result};
+use crate::msg;
 
 /// Longest range one expression may name.
 pub use crate::core::operand::MAX_RANGE;
@@ -72,7 +74,6 @@ pub struct AreaSpec {
     pub area: Area,
     /// The name as written (`X`, `TS`, `CN`).
     pub name: &'static str,
-    pub meaning: &'static str,
     /// A bit device (on/off) rather than a word device.
     pub bit: bool,
     /// Numbered in octal (X and Y).
@@ -105,7 +106,6 @@ pub static AREAS: [AreaSpec; 11] = [
     AreaSpec {
         area: Area::X,
         name: "X",
-        meaning: "input",
         bit: true,
         octal: true,
         writable: true,
@@ -116,7 +116,6 @@ pub static AREAS: [AreaSpec; 11] = [
     AreaSpec {
         area: Area::Y,
         name: "Y",
-        meaning: "output",
         bit: true,
         octal: true,
         writable: true,
@@ -127,7 +126,6 @@ pub static AREAS: [AreaSpec; 11] = [
     AreaSpec {
         area: Area::M,
         name: "M",
-        meaning: "auxiliary relay",
         bit: true,
         octal: false,
         writable: true,
@@ -138,7 +136,6 @@ pub static AREAS: [AreaSpec; 11] = [
     AreaSpec {
         area: Area::S,
         name: "S",
-        meaning: "state relay",
         bit: true,
         octal: false,
         writable: true,
@@ -149,7 +146,6 @@ pub static AREAS: [AreaSpec; 11] = [
     AreaSpec {
         area: Area::TS,
         name: "TS",
-        meaning: "timer contact",
         bit: true,
         octal: false,
         writable: true,
@@ -160,7 +156,6 @@ pub static AREAS: [AreaSpec; 11] = [
     AreaSpec {
         area: Area::TC,
         name: "TC",
-        meaning: "timer coil (driven by the program; read-only)",
         bit: true,
         octal: false,
         writable: false,
@@ -171,7 +166,6 @@ pub static AREAS: [AreaSpec; 11] = [
     AreaSpec {
         area: Area::CS,
         name: "CS",
-        meaning: "counter contact",
         bit: true,
         octal: false,
         writable: true,
@@ -182,7 +176,6 @@ pub static AREAS: [AreaSpec; 11] = [
     AreaSpec {
         area: Area::CC,
         name: "CC",
-        meaning: "counter coil (driven by the program; read-only)",
         bit: true,
         octal: false,
         writable: false,
@@ -193,7 +186,6 @@ pub static AREAS: [AreaSpec; 11] = [
     AreaSpec {
         area: Area::TN,
         name: "TN",
-        meaning: "timer current value",
         bit: false,
         octal: false,
         writable: true,
@@ -204,7 +196,6 @@ pub static AREAS: [AreaSpec; 11] = [
     AreaSpec {
         area: Area::CN,
         name: "CN",
-        meaning: "counter current value (CN200–CN255 are 32-bit)",
         bit: false,
         octal: false,
         writable: true,
@@ -215,7 +206,6 @@ pub static AREAS: [AreaSpec; 11] = [
     AreaSpec {
         area: Area::D,
         name: "D",
-        meaning: "data register",
         bit: false,
         octal: false,
         writable: true,
@@ -227,21 +217,21 @@ pub static AREAS: [AreaSpec; 11] = [
 
 /// Special devices with their meaning (FX programming manual, special device lists; the ones
 /// every FX and clone has). `help`, hints and completion read this table.
-pub static SPECIALS: &[(Area, u16, &str)] = &[
-    (Area::M, 8000, "RUN monitor (on while the PLC runs)"),
-    (Area::M, 8001, "RUN monitor, inverted (off while the PLC runs)"),
-    (Area::M, 8002, "initial pulse (on for the first scan after RUN)"),
-    (Area::M, 8003, "initial pulse, inverted (off for the first scan after RUN)"),
-    (Area::M, 8011, "10 ms clock pulse (5 ms on, 5 ms off)"),
-    (Area::M, 8012, "100 ms clock pulse (50 ms on, 50 ms off)"),
-    (Area::M, 8013, "1 s clock pulse (0.5 s on, 0.5 s off)"),
-    (Area::M, 8014, "1 min clock pulse (30 s on, 30 s off)"),
-    (Area::D, 8000, "watchdog time, ms"),
-    (Area::D, 8010, "current scan time, 0.1 ms"),
-    (Area::D, 8011, "shortest scan time, 0.1 ms"),
-    (Area::D, 8012, "longest scan time, 0.1 ms"),
-    (Area::D, 8120, "communication format (computer link: baud, parity, sum check …)"),
-    (Area::D, 8121, "computer-link station number"),
+pub static SPECIALS: &[(Area, u16)] = &[
+    (Area::M, 8000),
+    (Area::M, 8001),
+    (Area::M, 8002),
+    (Area::M, 8003),
+    (Area::M, 8011),
+    (Area::M, 8012),
+    (Area::M, 8013),
+    (Area::M, 8014),
+    (Area::D, 8000),
+    (Area::D, 8010),
+    (Area::D, 8011),
+    (Area::D, 8012),
+    (Area::D, 8120),
+    (Area::D, 8121),
 ];
 
 /// Special devices the CPU drives every scan (FX PM, special device list): the RUN monitors
@@ -255,8 +245,11 @@ pub fn system_driven(area: Area, index: u16) -> bool {
 }
 
 /// The meaning of a special device, if the table has it.
-pub fn special_meaning(area: Area, index: u16) -> Option<&'static str> {
-    SPECIALS.iter().find(|(a, i, _)| *a == area && *i == index).map(|(_, _, m)| *m)
+pub fn special_meaning(area: Area, index: u16) -> Option<Msg> {
+    SPECIALS
+        .iter()
+        .find(|(a, i)| *a == area && *i == index)
+        .map(|(a, i)| msg!("fx-special-meaning", device = format!("{}{i}", a.name())))
 }
 
 /// First 32-bit counter: CN200–CN255 hold 32-bit values (4 bytes each on the programming port).
@@ -270,6 +263,10 @@ impl Area {
     }
     pub fn name(self) -> &'static str {
         self.spec().name
+    }
+    /// What the area holds, in words.
+    pub fn meaning(self) -> Msg {
+        msg!("fx-area-meaning", area = self.name())
     }
     pub fn is_bit(self) -> bool {
         self.spec().bit
@@ -427,15 +424,12 @@ pub fn parse_expr(text: &str) -> Result<Vec<FxOperand>> {
         let a = parse_one(&t[..dots]).map_err(|e| e.shift(lead))?;
         let b = parse_one(&t[dots + 2..]).map_err(|e| e.shift(lead + dots + 2))?;
         if a.area != b.area || a.width != b.width || a.view != b.view {
-            return Err(op_err(
-                lead + dots + 2,
-                format!("a range needs two operands of one kind and size: {}..{}", a.canonical(), b.canonical()),
-            ));
+            return Err(op_err(lead + dots + 2, msg!("fx-range-kind", first = a.canonical(), last = b.canonical())));
         }
         if b.index < a.index {
             return Err(op_err(
                 lead + dots + 2,
-                format!("range end {} is before its start {}", b.canonical(), a.canonical()),
+                msg!("fx-range-reversed", last = b.canonical(), first = a.canonical()),
             ));
         }
         let step = a.span() as usize;
@@ -443,11 +437,11 @@ pub fn parse_expr(text: &str) -> Result<Vec<FxOperand>> {
         if !n.is_multiple_of(step) {
             return Err(op_err(
                 lead + dots + 2,
-                format!("{} is not a whole number of steps of {step} from {}", b.canonical(), a.canonical()),
+                msg!("fx-range-steps", last = b.canonical(), step = step, first = a.canonical()),
             ));
         }
         if n / step >= MAX_RANGE {
-            return Err(op_err(lead, format!("range longer than {MAX_RANGE} operands")));
+            return Err(op_err(lead, msg!("fx-range-long", max = MAX_RANGE)));
         }
         let mut out = vec![a];
         let mut cur = a;
@@ -479,28 +473,21 @@ fn area_prefix(s: &str) -> Option<(Area, usize)> {
 /// Parses a device number in the area's numbering; `col` is where the digits start.
 fn parse_number(area: Area, digits: &str, col: usize, whole: &str) -> Result<u16> {
     if digits.is_empty() {
-        return Err(op_err(col, format!("`{whole}` needs a device number after {}", area.name())));
+        return Err(op_err(col, msg!("fx-number-missing", text = whole, area = area.name())));
     }
     if let Some((i, c)) = digits.char_indices().find(|(_, c)| !c.is_ascii_digit()) {
-        return Err(op_err(col + i, format!("`{c}` in `{whole}` is not a digit")));
+        return Err(op_err(col + i, msg!("fx-not-digit", char = c.to_string(), text = whole)));
     }
     if digits.len() > 5 {
-        return Err(op_err(col, format!("device number `{digits}` is too long")));
+        return Err(op_err(col, msg!("fx-number-long", digits = digits)));
     }
     if area.spec().octal {
         if let Some((i, c)) = digits.char_indices().find(|(_, c)| *c == '8' || *c == '9') {
-            return Err(op_err(
-                col + i,
-                format!(
-                    "{a} numbers are octal ({a}0–{a}7, {a}10–{a}17 …): `{c}` is not an octal digit in `{whole}`",
-                    a = area.name()
-                ),
-            ));
+            return Err(op_err(col + i, msg!("fx-not-octal", area = area.name(), char = c.to_string(), text = whole)));
         }
-        return u16::from_str_radix(digits, 8)
-            .map_err(|_| op_err(col, format!("`{digits}` is too large: device numbers go up to 177777 (octal)")));
+        return u16::from_str_radix(digits, 8).map_err(|_| op_err(col, msg!("fx-number-large-octal", digits = digits)));
     }
-    digits.parse().map_err(|_| op_err(col, format!("`{digits}` is too large: device numbers go up to {}", u16::MAX)))
+    digits.parse().map_err(|_| op_err(col, msg!("fx-number-large", digits = digits, max = u16::MAX)))
 }
 
 /// Parses exactly one operand.
@@ -508,7 +495,7 @@ pub fn parse_one(text: &str) -> Result<FxOperand> {
     let lead = text.len() - text.trim_start().len();
     let t0 = text.trim();
     if t0.is_empty() {
-        return Err(op_err(lead, "an operand is missing"));
+        return Err(op_err(lead, msg!("fx-operand-missing")));
     }
     let (t, lead) = match t0.strip_prefix('%') {
         Some(r) => (r, lead + 1),
@@ -517,9 +504,8 @@ pub fn parse_one(text: &str) -> Result<FxOperand> {
     let (body, view) = match t.find('/') {
         Some(slash) => {
             let name = &t[slash + 1..];
-            let v = DataType::from_name(name).ok_or_else(|| {
-                op_err(lead + slash + 1, format!("unknown type `{name}` (use WORD, INT, DWORD, DINT, REAL)"))
-            })?;
+            let v = DataType::from_name(name)
+                .ok_or_else(|| op_err(lead + slash + 1, msg!("fx-unknown-type", name = name)))?;
             (&t[..slash], Some((v, lead + slash + 1)))
         }
         None => (t, None),
@@ -529,22 +515,21 @@ pub fn parse_one(text: &str) -> Result<FxOperand> {
     let (group, rest, col) = if upper.starts_with('K') && upper.len() > 1 && upper.as_bytes()[1].is_ascii_digit() {
         let n = upper.as_bytes()[1] - b'0';
         if !(1..=8).contains(&n) {
-            return Err(op_err(lead + 1, format!("K{n}: a group has 1–8 digits of 4 bits (K1 … K8)")));
+            return Err(op_err(lead + 1, msg!("fx-group-digits", n = n)));
         }
         (Some(n), &upper[2..], lead + 2)
     } else {
         (None, &upper[..], lead)
     };
     let Some((area, len)) = area_prefix(rest).or_else(|| bare_t_or_c(rest)) else {
-        return Err(op_err(col, format!("unknown FX device `{body}`"))
-            .hint("devices: X Y M S (bits), T C or TS CS (timer/counter contacts), TC CC (coils), TN CN D (words), KnX KnY KnM KnS (groups)"));
+        return Err(op_err(col, msg!("fx-unknown-device", text = body)).hint(msg!("fx-hint-devices")));
     };
     let digits = &rest[len..];
     let index = parse_number(area, digits, col + len, body)?;
     let width = match group {
         Some(n) => {
             if !area.spec().groups {
-                return Err(op_err(lead, format!("K{n}{}: groups are made of X, Y, M or S bits", area.name())));
+                return Err(op_err(lead, msg!("fx-group-area", n = n, area = area.name())));
             }
             Width::Group(n)
         }
@@ -586,10 +571,7 @@ fn group_view_ok(n: u8, v: DataType) -> bool {
 
 fn apply_view(op: FxOperand, v: DataType, col: usize) -> Result<FxOperand> {
     let mut o = op;
-    let bad = || {
-        op_err(col, format!("{} cannot be read as {}", op.canonical(), v.name()))
-            .hint("D takes /WORD, /INT, /DWORD, /DINT, /REAL (32-bit: D and the next D); K1–K4 groups /INT, /WORD, /DINT, /DWORD; K5–K8 groups /DINT, /DWORD (K8 also /REAL)")
-    };
+    let bad = || op_err(col, msg!("fx-view", operand = op.canonical(), dtype = v.name())).hint(msg!("fx-hint-view"));
     match op.width {
         Width::Bit => {
             if v != DataType::Bool {

@@ -229,7 +229,11 @@ impl Request {
 /// Why a frame was refused (the simulator answers NAK to all of these).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum FrameError {
-    BadSum { got: u8, want: u8 },
+    BadSum {
+        got: u8,
+        want: u8,
+    },
+    /// What is wrong, as a key of [`crate::fx::link::malformed_text`] (`too-short`, …).
     Malformed(&'static str),
 }
 
@@ -240,7 +244,7 @@ pub fn decode_request(f: &[u8]) -> Result<Request, FrameError> {
         return Err(FrameError::Malformed("not STX … ETX sum"));
     }
     let want = sum(&f[1..n - 2]);
-    let got = hex2(&f[n - 2..]).ok_or(FrameError::Malformed("sum check is not hex"))?;
+    let got = hex2(&f[n - 2..]).ok_or(FrameError::Malformed("sum-not-hex"))?;
     if got != want {
         return Err(FrameError::BadSum { got, want });
     }
@@ -253,16 +257,16 @@ pub fn decode_request(f: &[u8]) -> Result<Request, FrameError> {
     // Address, count and data after the command (`0`/`1`, or `00`/`10`/`01`/`11` after E).
     let fields = |rest: &[u8], write: bool| -> Result<(u16, u8, Vec<u8>), FrameError> {
         if rest.len() < 6 || (!write && rest.len() != 6) {
-            return Err(FrameError::Malformed("unknown command or wrong length"));
+            return Err(FrameError::Malformed("unknown-command"));
         }
-        let addr = word(&rest[..4]).ok_or(FrameError::Malformed("address is not hex"))?;
-        let count = hex2(&rest[4..6]).ok_or(FrameError::Malformed("count is not hex"))?;
+        let addr = word(&rest[..4]).ok_or(FrameError::Malformed("address-not-hex"))?;
+        let count = hex2(&rest[4..6]).ok_or(FrameError::Malformed("count-not-hex"))?;
         let hex = &rest[6..];
         if write && hex.len() != 2 * count as usize {
-            return Err(FrameError::Malformed("data length differs from the count"));
+            return Err(FrameError::Malformed("data-length"));
         }
         let data: Option<Vec<u8>> = hex.chunks(2).map(hex2).collect();
-        Ok((addr, count, data.ok_or(FrameError::Malformed("data is not hex"))?))
+        Ok((addr, count, data.ok_or(FrameError::Malformed("data-not-hex"))?))
     };
     let code_len = if table == Table::Extended && matches!(body.first(), Some(b'0' | b'1')) { 2 } else { 1 };
     let (code, rest) = body.split_at(code_len.min(body.len()));
@@ -281,11 +285,11 @@ pub fn decode_request(f: &[u8]) -> Result<Request, FrameError> {
             Ok(Request::Program { write, addr, count, data })
         }
         [c] if (*c == cmd::FORCE_ON || *c == cmd::FORCE_OFF) && rest.len() == 4 => {
-            let lo = hex2(&rest[..2]).ok_or(FrameError::Malformed("address is not hex"))?;
-            let hi = hex2(&rest[2..]).ok_or(FrameError::Malformed("address is not hex"))?;
+            let lo = hex2(&rest[..2]).ok_or(FrameError::Malformed("address-not-hex"))?;
+            let hi = hex2(&rest[2..]).ok_or(FrameError::Malformed("address-not-hex"))?;
             Ok(Request::Force { table, on: *c == cmd::FORCE_ON, addr: (hi as u16) << 8 | lo as u16 })
         }
-        _ => Err(FrameError::Malformed("unknown command or wrong length")),
+        _ => Err(FrameError::Malformed("unknown-command")),
     }
 }
 
@@ -304,15 +308,15 @@ pub fn encode_read_reply(data: &[u8]) -> Vec<u8> {
 /// Decodes a read reply of `count` bytes.
 pub fn decode_read_reply(f: &[u8], count: usize) -> Result<Vec<u8>, FrameError> {
     if f.len() != 2 * count + 4 || f[0] != STX || f[f.len() - 3] != ETX {
-        return Err(FrameError::Malformed("not STX data ETX sum of the asked length"));
+        return Err(FrameError::Malformed("not-read-reply"));
     }
     let n = f.len();
     let want = sum(&f[1..n - 2]);
-    let got = hex2(&f[n - 2..]).ok_or(FrameError::Malformed("sum check is not hex"))?;
+    let got = hex2(&f[n - 2..]).ok_or(FrameError::Malformed("sum-not-hex"))?;
     if got != want {
         return Err(FrameError::BadSum { got, want });
     }
-    f[1..n - 3].chunks(2).map(|c| hex2(c).ok_or(FrameError::Malformed("data is not hex"))).collect()
+    f[1..n - 3].chunks(2).map(|c| hex2(c).ok_or(FrameError::Malformed("data-not-hex"))).collect()
 }
 
 /// Where an operand lives in the byte address space: `len` bytes from `addr`, the value's

@@ -27,6 +27,7 @@ use super::port::{self, Request, Table, ACK, ENQ, ETX, NAK, STX};
 use crate::core::link::line::Transport;
 use crate::core::link::served::{ServeOn, Served};
 use crate::core::Result;
+use crate::msg;
 use std::collections::VecDeque;
 use std::io;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -500,8 +501,9 @@ pub async fn serve_ports(
     }
     let mut mem = Memory::with_clock(m, opts.clock.clone());
     if let Some(p) = opts.program {
-        let text = crate::core::encoding::read_source(p)
-            .map_err(|e| crate::core::Error::io(format!("cannot read {}: {e}", p.display())))?;
+        let text = crate::core::encoding::read_source(p).map_err(|e| {
+            crate::core::Error::io(msg!("fx-serve-cannot-read", file = p.display().to_string(), reason = e.to_string()))
+        })?;
         mem.load_program(super::program::Loaded::load(&text, &p.display().to_string(), m)?);
         ready.insert("fx_program".into(), json!(p.display().to_string()));
     }
@@ -512,7 +514,7 @@ pub async fn serve_ports(
             let p = plc.clone();
             let answer: channel::Answer =
                 Arc::new(move |text: &str| channel::reply(super::control::answer(&mut lock(&p), text)));
-            let ch = channel::Channel::open(&path, "the served FX PLC's control channel", answer, stop.clone())?;
+            let ch = channel::Channel::open(&path, &msg!("link-channel-name", device = "fx"), answer, stop.clone())?;
             ready.insert("fx_control".into(), json!(ch.path()));
             Some(ch)
         }
@@ -543,7 +545,7 @@ pub async fn serve_ports(
                 ready.insert(key.clone(), r);
             }
             Ok(Err(e)) => return Err(e),
-            Err(_) => return Err(crate::core::Error::io("the FX port stopped before it was ready")),
+            Err(_) => return Err(crate::core::Error::io(msg!("fx-serve-stopped"))),
         }
         if key.starts_with("fx_link") {
             ready.insert("fx_station".into(), json!(station));

@@ -6,6 +6,7 @@
 use super::cpu::{Mode, Stats, TimerRun};
 use super::memory::Memory;
 use super::program::Loaded;
+use crate::msg;
 use serde::{Deserialize, Serialize};
 use std::time::Duration;
 
@@ -105,7 +106,7 @@ impl Memory {
     /// changing anything.
     pub fn restore_state(&mut self, st: &FxState) -> Result<(), String> {
         if st.model != self.model.name {
-            return Err(format!("the snapshot is of an {}, this simulator is an {}", st.model, self.model.name));
+            return Err(msg!("fx-snap-other-model", saved = &st.model, model = self.model.name).text);
         }
         let sizes_ok = st.bits.len() == self.bits.len()
             && st.bits.iter().zip(&self.bits).all(|(a, b)| a.len() == b.len())
@@ -113,13 +114,13 @@ impl Memory {
             && st.timers.len() == self.cpu.timers.len()
             && st.counter_prev.len() == self.cpu.counter_prev.len();
         if !sizes_ok {
-            return Err("the saved device image does not fit this model".into());
+            return Err(msg!("fx-snap-image").text);
         }
         if let Some(f) = st.faults.list.iter().find(|f| match f.kind {
             crate::core::sim_faults::FaultKind::Stuck { input, .. } => input >= self.model.x,
             crate::core::sim_faults::FaultKind::NoReply => false,
         }) {
-            return Err(format!("its fault {} holds an input this model does not have", f.id));
+            return Err(msg!("umpk-snap-fault-input", fault = f.id.to_string()).text);
         }
         let program = match &st.program {
             None => None,

@@ -13,6 +13,7 @@ use super::model::{fx1s_counter, Model, MODELS};
 use super::operand::{self, Area, FxOperand, Width, AREAS, SPECIAL, SPECIAL_COUNT};
 use super::port::{self, Table};
 use crate::core::{Candidate, Error, ErrorKind, Operand, OperandSpace, Result};
+use crate::msg;
 
 /// The protocol a device is reached through.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -24,11 +25,15 @@ pub enum Proto {
 }
 
 impl Proto {
-    pub fn name(self) -> &'static str {
-        match self {
-            Proto::Port => "programming port",
-            Proto::Link => "computer link",
-        }
+    /// The protocol's name, in the current language.
+    pub fn name(self) -> crate::core::msg::Msg {
+        msg!(
+            "fx-proto",
+            proto = match self {
+                Proto::Port => "port",
+                Proto::Link => "link",
+            }
+        )
     }
 }
 
@@ -39,7 +44,7 @@ pub struct FxSpace {
     pub proto: Proto,
 }
 
-fn range_err(op: &FxOperand, msg: String) -> Error {
+fn range_err(op: &FxOperand, msg: impl Into<crate::core::error::Text>) -> Error {
     Error::new(ErrorKind::Range, msg).operand(op.canonical())
 }
 
@@ -92,11 +97,16 @@ impl FxSpace {
         if last > u16::MAX as u32 || !self.exists(op.area, op.index) || !self.exists(op.area, last as u16) {
             return Err(range_err(
                 op,
-                format!("{} is not on an {} ({})", op.canonical(), self.model.name, self.range_text(op.area)),
+                msg!(
+                    "fx-not-on-model",
+                    operand = op.canonical(),
+                    model = self.model.name,
+                    range = self.range_text(op.area)
+                ),
             ));
         }
         if (op.index >= SPECIAL) != (last as u16 >= SPECIAL) {
-            return Err(range_err(op, format!("{} runs from ordinary into special devices", op.canonical())));
+            return Err(range_err(op, msg!("fx-crosses-special", operand = op.canonical())));
         }
         match self.proto {
             Proto::Port => {
@@ -109,19 +119,17 @@ impl FxSpace {
                         reach.push_str(&format!(", {name}8000–{name}8255"));
                     }
                     let hint = match table {
-                        Table::Classic => format!(
-                            "on an FX3U the E-commands reach it (open it with model=FX3U); on an {} only the computer link does (fxlink:, with an FX-485 board and D8120 set)",
-                            self.model.name
-                        ),
-                        Table::Extended => "check the operand against the model (`help OPERAND`)".to_string(),
+                        Table::Classic => msg!("fx-hint-e-commands", model = self.model.name),
+                        Table::Extended => msg!("fx-hint-nak-area"),
                     };
                     return Err(range_err(
                         op,
-                        format!(
-                            "{} is past the {}'s programming-port address table ({}; it reaches {reach})",
-                            op.canonical(),
-                            self.model.name,
-                            table.commands()
+                        msg!(
+                            "fx-past-port-table",
+                            operand = op.canonical(),
+                            model = self.model.name,
+                            commands = table.commands(),
+                            reach = reach
                         ),
                     )
                     .hint(hint));
@@ -129,13 +137,13 @@ impl FxSpace {
             }
             Proto::Link => {
                 if op.area.spec().link.is_empty() {
-                    return Err(Error::unsupported(format!(
-                        "{} (a {}) is not reachable over the computer link",
-                        op.canonical(),
-                        op.area.spec().meaning
+                    return Err(Error::unsupported(msg!(
+                        "fx-not-on-link",
+                        operand = op.canonical(),
+                        meaning = op.area.meaning().text
                     ))
                     .operand(op.canonical())
-                    .hint("read the contact (TS/CS) instead, or use the programming port (fx:)"));
+                    .hint(msg!("fx-hint-not-on-link")));
                 }
             }
         }
@@ -178,34 +186,30 @@ impl OperandSpace for FxSpace {
 
     fn describe(&self, op: &Operand) -> Option<String> {
         let o = FxOperand::from_key(op.key);
-        let spec = o.area.spec();
         let mut s = match o.width {
-            Width::Group(n) => format!(
-                "{}-bit group of {} bits {}{}–{}{}",
-                4 * n,
-                spec.meaning,
-                o.area.name(),
-                FxOperand::number_text(o.area, o.index),
-                o.area.name(),
-                FxOperand::number_text(o.area, o.index + 4 * n as u16 - 1)
-            ),
-            Width::Pair if o.area == Area::D => {
-                format!("32-bit value in D{} (low) and D{} (high)", o.index, o.index + 1)
+            Width::Group(n) => {
+                msg!(
+                    "fx-describe-group",
+                    bits = 4 * n,
+                    meaning = o.area.meaning().text,
+                    first = format!("{}{}", o.area.name(), FxOperand::number_text(o.area, o.index)),
+                    last = format!("{}{}", o.area.name(), FxOperand::number_text(o.area, o.index + 4 * n as u16 - 1))
+                )
+                .text
             }
+            Width::Pair if o.area == Area::D => msg!("fx-describe-pair", low = o.index, high = o.index + 1).text,
             Width::Bit | Width::Word if o.index >= SPECIAL => match operand::special_meaning(o.area, o.index) {
-                Some(m) => m.to_string(),
-                None => format!("special {}", spec.meaning),
+                Some(m) => m.text,
+                None => msg!("fx-describe-special", meaning = o.area.meaning().text).text,
             },
-            _ if o.index >= SPECIAL => format!("special {}", spec.meaning),
-            _ => spec.meaning.to_string(),
+            _ if o.index >= SPECIAL => msg!("fx-describe-special", meaning = o.area.meaning().text).text,
+            _ => o.area.meaning().text,
         };
         if !o.group_aligned() {
-            s.push_str(&format!(
-                " — warning: group starts at {}{}; the manual advises a number ending in 0 ({}0, {}10 …)",
-                o.area.name(),
-                FxOperand::number_text(o.area, o.index),
-                o.area.name(),
-                o.area.name()
+            s.push_str(&msg!(
+                "fx-describe-unaligned",
+                first = format!("{}{}", o.area.name(), FxOperand::number_text(o.area, o.index)),
+                area = o.area.name()
             ));
         }
         Some(s)
@@ -219,12 +223,14 @@ impl OperandSpace for FxSpace {
         let (lo, hi) = o.view.int_range();
         let range = match o.width {
             Width::Group(n) if 4 * n as u32 == o.view.bits() => format!("{lo}…{hi}"),
-            Width::Group(n) => format!("0…{} (missing high bits are zero)", (1u64 << (4 * n)) - 1),
+            Width::Group(n) => msg!("fx-help-group-range", max = (1u64 << (4 * n)) - 1).text,
             _ if o.view == crate::core::DataType::Real => "IEEE 754 single".into(),
             _ => format!("{lo}…{hi}"),
         };
-        s.push_str(&format!("type {} ({} bits), range {range}\n", o.view.name(), o.bits()));
-        s.push_str(&format!("on {}: {}\n", self.model.name, self.range_text(o.area)));
+        s.push_str(&msg!("fx-help-type", dtype = o.view.name(), bits = o.bits(), range = range));
+        s.push('\n');
+        s.push_str(&msg!("fx-help-on-model", model = self.model.name, range = self.range_text(o.area)));
+        s.push('\n');
         if let Some(timer) = match o.area {
             Area::TS | Area::TC | Area::TN => Some(true),
             Area::CS | Area::CC | Area::CN => Some(false),
@@ -237,24 +243,26 @@ impl OperandSpace for FxSpace {
             Proto::Port => {
                 let table = Table::of(self.model);
                 if let Some(p) = port::place(table, &o) {
-                    s.push_str(&format!(
-                        "programming port ({}): byte address {:04X}H, {} byte(s)",
-                        table.commands(),
-                        p.addr,
-                        p.len
+                    s.push_str(&msg!(
+                        "fx-help-port",
+                        commands = table.commands(),
+                        address = format!("{:04X}", p.addr),
+                        bytes = p.len
                     ));
                     if let Some(f) = port::force_address(table, o.area, o.index).filter(|_| o.width == Width::Bit) {
-                        s.push_str(&format!(", force address {f:04X}H"));
+                        s.push_str(&msg!("fx-help-force", address = format!("{f:04X}")));
                     }
                     s.push('\n');
                 }
             }
             Proto::Link => {
                 let d = super::link::Dev { area: o.area, index: o.index };
-                s.push_str(&format!("computer link: device {}\n", d.encode()));
+                s.push_str(&msg!("fx-help-link", device = d.encode()));
+                s.push('\n');
             }
         }
-        s.push_str("manual: seed 004 (FX device groups KnX, programming-port protocol; fx-and-masterk.md A, B)\n");
+        s.push_str(&msg!("fx-help-manual"));
+        s.push('\n');
         Ok(s)
     }
 
@@ -266,7 +274,7 @@ impl OperandSpace for FxSpace {
                 continue;
             }
             if spec.name.starts_with(&p) && p.len() < spec.name.len() + 1 {
-                out.push(Candidate { text: spec.name.to_string(), meaning: spec.meaning.to_string() });
+                out.push(Candidate { text: spec.name.to_string(), meaning: spec.area.meaning().text });
             }
             if spec.groups {
                 for n in [2u8, 4, 8] {
@@ -274,16 +282,17 @@ impl OperandSpace for FxSpace {
                     if t.starts_with(&p) && p.len() < t.len() {
                         out.push(Candidate {
                             text: t,
-                            meaning: format!("{}-bit group of {} bits", 4 * n, spec.meaning),
+                            meaning: msg!("fx-complete-group", bits = 4 * n, meaning = spec.area.meaning().text).text,
                         });
                     }
                 }
             }
         }
-        for (area, index, m) in operand::SPECIALS {
+        for (area, index) in operand::SPECIALS {
             let t = format!("{}{index}", area.name());
             if t.starts_with(&p) && p.len() >= 2 {
-                out.push(Candidate { text: t, meaning: m.to_string() });
+                let meaning = operand::special_meaning(*area, *index).map(|m| m.text).unwrap_or_default();
+                out.push(Candidate { text: t, meaning });
             }
         }
         out
@@ -301,6 +310,17 @@ mod tests {
 
     fn space(m: &str, p: Proto) -> FxSpace {
         FxSpace::new(Model::find(m).unwrap(), p)
+    }
+
+    #[test]
+    fn an_unaligned_group_is_described_with_its_warning() {
+        // A group that does not start at a number ending in 0 (FX programming manual, KnX).
+        let s = space("FX2N", Proto::Port);
+        let op = s.parse("K2M3").unwrap();
+        assert_eq!(
+            s.describe(&op[0]).unwrap(),
+            "8-bit group of auxiliary relay bits M3–M10 — warning: group starts at M3; the manual advises a number ending in 0 (M0, M10 …)"
+        );
     }
 
     #[test]

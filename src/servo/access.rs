@@ -16,6 +16,7 @@ use super::sim::SimLine;
 use super::{changes, units, ServoOps};
 use crate::core::device::{lookup, Change};
 use crate::core::{Device, Error, Result};
+use crate::msg;
 use std::path::PathBuf;
 use std::sync::{Arc, Mutex};
 
@@ -44,9 +45,7 @@ impl ServoAccess<'_> {
     /// The drive's operations, once `changes` are permitted.
     fn after(&mut self, changes: &[Change]) -> Result<&mut Driver> {
         let answer = self.dev.family(changes)?;
-        answer
-            .and_then(|a| a.downcast_mut::<Driver>())
-            .ok_or_else(|| Error::state("the device no longer answers as a servo drive"))
+        answer.and_then(|a| a.downcast_mut::<Driver>()).ok_or_else(|| Error::state(msg!("servo-not-servo-any-more")))
     }
 }
 

@@ -41,6 +41,7 @@ use crate::core::literal::parse_option_duration_us;
 use crate::core::trace::{self, Dir, Proto};
 use crate::core::url::DeviceUrl;
 use crate::core::{Clock, Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
+use crate::msg;
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
@@ -51,8 +52,9 @@ pub const DEFAULT_BAUD: u32 = 38_400;
 pub const DEFAULT_TIMEOUT: Duration = Duration::from_millis(200);
 
 /// The manual's three reasons a drive stays silent (seed §2.4).
-pub const SILENCE_CAUSES: &str =
-    "a Kinco drive does not answer (1) a wrong drive id, (2) an object that does not exist, (3) a bad checksum (manual §2.4)";
+pub fn silence_causes() -> crate::core::msg::Msg {
+    msg!("servo-silence-causes")
+}
 
 /// Bounds of the quiet awaited before every request: a few character times.
 const GAP_MIN: Duration = Duration::from_millis(2);
@@ -155,9 +157,9 @@ impl Driver {
         if gone.load(std::sync::atomic::Ordering::SeqCst) {
             if let Some(reopen) = &self.line.reopen {
                 *t = reopen().map_err(|e| {
-                    Error::link(format!("the serial port {name} is still gone"))
+                    Error::link(msg!("servo-port-still-gone", port = &name))
                         .cause(e.message.clone())
-                        .hint(PORT_GONE)
+                        .hint(msg!("servo-hint-port-gone"))
                 })?;
                 gone.store(false, std::sync::atomic::Ordering::SeqCst);
             }
@@ -167,9 +169,9 @@ impl Driver {
             // Any I/O failure of the port itself: the next request opens it again.
             gone.store(reopens, std::sync::atomic::Ordering::SeqCst);
             if port_gone(&e) {
-                Error::link(format!("the serial port {name} is gone")).cause(e).hint(PORT_GONE)
+                Error::link(msg!("servo-port-gone", port = &name)).cause(e).hint(msg!("servo-hint-port-gone"))
             } else {
-                Error::link(format!("serial I/O on {name} failed")).cause(e).hint(PORT_GONE)
+                Error::link(msg!("servo-port-io", port = &name)).cause(e).hint(msg!("servo-hint-port-gone"))
             }
         };
         t.discard_input().map_err(io_err)?;
@@ -180,8 +182,7 @@ impl Driver {
         if self.echo {
             let echo = Self::read_exact(t.as_mut(), FRAME_LEN, deadline).map_err(io_err)?;
             if echo.len() < FRAME_LEN {
-                return Err(Error::link(format!("no echo of the request on {name} (loop mode is on)"))
-                    .hint("the loop is open (cable) or the line is not in loop mode: drop echo=1 from the URL"));
+                return Err(Error::link(msg!("servo-no-echo", port = &name)).hint(msg!("servo-hint-no-echo")));
             }
             trace::frame_proto(&name, Proto::KincoServo, Dir::Received, &echo);
             if echo != bytes {
@@ -193,18 +194,20 @@ impl Driver {
                         f.id == bytes[0] && f.index == u16::from_le_bytes([bytes[2], bytes[3]]) && f.sub == bytes[4]
                     });
                 if is_reply {
-                    return Err(Error::link(format!(
-                        "expected the echo of the request on {name} (echo=1), but the drive's reply came first: {}; the line is not in loop mode",
-                        trace::hex_bytes(&echo)
+                    return Err(Error::link(msg!(
+                        "servo-reply-before-echo",
+                        port = &name,
+                        bytes = trace::hex_bytes(&echo)
                     ))
-                    .hint("connect with echo=0 (or set the drive's loop mode, panel d5.15 = 1)"));
+                    .hint(msg!("servo-hint-reply-before-echo")));
                 }
-                return Err(Error::link(format!(
-                    "the echo differs from the request on {name}: sent {}, echoed {}; likely cause: bad checksum — the drive ignores a corrupted frame",
-                    trace::hex_bytes(bytes),
-                    trace::hex_bytes(&echo)
+                return Err(Error::link(msg!(
+                    "servo-echo-differs",
+                    port = &name,
+                    sent = trace::hex_bytes(bytes),
+                    echo = trace::hex_bytes(&echo)
                 ))
-                .hint("check the baud rate (drive default 38400, panel d5.02) and the wiring"));
+                .hint(msg!("servo-hint-baud-wiring")));
             }
         }
         let mut stale = Vec::new();
@@ -229,19 +232,22 @@ impl Driver {
     pub fn transact(&mut self, req: Frame, size: Size) -> Result<Reply> {
         match self.exchange(&req.to_bytes())? {
             // Our own request came back: the line is in loop mode and we did not skip it.
-            Exchange::Reply(b) if !self.echo && b == req.to_bytes() => Err(Error::link(format!(
-                "the reply to {} of {} is the request itself: the line echoes requests (RS232 loop mode)",
-                verb(&req),
-                req.object()
-            ))
-            .hint("connect with echo=1 so plcsh skips the echo")),
+            Exchange::Reply(b) if !self.echo && b == req.to_bytes() => {
+                Err(Error::link(msg!("servo-reply-is-request", verb = verb(&req), object = req.object()))
+                    .hint(msg!("servo-hint-use-echo")))
+            }
             Exchange::Reply(b) => match decode_reply(&req, &b, size) {
                 Ok(r) => {
                     self.answered = true;
                     Ok(r)
                 }
-                Err(m) => Err(Error::link(format!("bad reply to {} of {}: {m}", verb(&req), req.object()))
-                    .hint("another master or drive may be talking on the line, or the baud rate is wrong")),
+                Err(m) => Err(Error::link(msg!(
+                    "servo-bad-reply",
+                    verb = verb(&req),
+                    object = req.object(),
+                    reason = m.to_string()
+                ))
+                .hint(msg!("servo-hint-bad-reply"))),
             },
             Exchange::Silent { partial, stale, late } => Err(self.silence(&req, &partial, &stale, late, None)),
         }
@@ -258,45 +264,57 @@ impl Driver {
     ) -> Error {
         // As exact as the user gave it (`timeout=0.5` is `0.5 ms`, never `0 ms`).
         let ms = crate::core::literal::millis_text(self.timeout);
-        let head = format!("no reply from drive id {} to {} of {} within {ms}", req.id, verb(req), req.object());
+        // The cause's own values (`code`, `got`/`want`, `count`/`bytes`); the others are empty.
+        let silent = |cause: &str, code: String, got_want: (String, String), count: usize, bytes: String| {
+            msg!(
+                "servo-silent",
+                id = req.id,
+                verb = verb(req),
+                object = req.object(),
+                timeout = &ms,
+                cause = cause,
+                code = code,
+                got = got_want.0,
+                want = got_want.1,
+                count = count,
+                bytes = bytes
+            )
+        };
+        let none = || (String::new(), String::new());
         let likely = if !is_request_func(req.func) {
-            format!(
-                "likely cause: unknown function code {:02X} — a drive answers only reads (40) and writes (23, 2B, 2F) and ignores anything else",
-                req.func
-            )
+            silent("function", format!("{:02X}", req.func), none(), 0, String::new())
         } else if let Some(b) = bad_checksum {
-            format!(
-                "likely cause: bad checksum — the frame ends in {:02X}, the bytes before it need {:02X}",
-                b.got, b.want
-            )
+            silent("checksum", String::new(), (format!("{:02X}", b.got), format!("{:02X}", b.want)), 0, String::new())
         } else if !stale.is_empty() || late > 0 {
             // A reply came, but too late or to something else: neither the id nor the object
             // is to blame, and no probe is sent.
             let mut what = Vec::new();
             if !stale.is_empty() {
                 let frames: Vec<String> = stale.iter().map(|f| trace::hex_bytes(f)).collect();
-                what.push(format!("a reply to another request came instead ({})", frames.join("; ")));
+                what.push(msg!("servo-late-stale", frames = frames.join("; ")).text);
             }
             if late > 0 {
-                what.push(format!("{late} byte(s) came after the timeout and were dropped"));
+                what.push(msg!("servo-late-bytes", count = late).text);
             }
-            return Error::link(format!("{head}; likely cause: late replies — {}", what.join(", "))).hint(format!(
-                "the drive answers later than the timeout: raise it (timeout= in the URL, now {ms}), and check that no other master talks on the line; a late reply is never taken for the next request's"
-            ));
+            return Error::link(msg!(
+                "servo-silent-late",
+                id = req.id,
+                verb = verb(req),
+                object = req.object(),
+                timeout = &ms,
+                what = what.join(", ")
+            ))
+            .hint(msg!("servo-hint-late", timeout = &ms));
         } else if !partial.is_empty() {
-            format!(
-                "likely cause: bad checksum — only {} stray byte(s) came back ({}), so frames are being corrupted on the line (baud rate or wiring)",
-                partial.len(),
-                trace::hex_bytes(partial)
-            )
+            silent("stray", String::new(), none(), partial.len(), trace::hex_bytes(partial))
         } else {
-            self.probe(req)
+            silent(self.probe(req), String::new(), none(), 0, String::new())
         };
-        Error::link(format!("{head}; {likely}")).hint(SILENCE_CAUSES)
+        Error::link(likely).hint(silence_causes())
     }
 
     /// Asks the same id for its statusword to tell "wrong id" from "unknown object".
-    fn probe(&mut self, req: &Frame) -> String {
+    fn probe(&mut self, req: &Frame) -> &'static str {
         let is_statusword = (req.index, req.sub) == (0x6041, 0) && req.func == frame::func::READ;
         let answers = if is_statusword {
             false
@@ -305,29 +323,24 @@ impl Driver {
             matches!(self.exchange(&probe.to_bytes()), Ok(Exchange::Reply(b)) if decode_reply(&probe, &b, Size::B2).is_ok())
         };
         if answers {
-            format!(
-                "likely cause: unknown object — drive id {} answers statusword reads, so {} probably does not exist on this drive",
-                req.id,
-                req.object()
-            )
+            "object"
         } else if is_statusword && self.answered && req.id == self.id {
-            format!("likely cause: the drive stopped answering — id {} answered before; check power and cable", req.id)
+            "stopped"
         } else {
-            format!(
-                "likely cause: wrong id — nothing answers on drive id {} (factory id 1, panel d5.01; also check power, cable and baud rate)",
-                req.id
-            )
+            "id"
         }
     }
 
     fn refused(&self, req: &Frame, what: &str, code: u32) -> Error {
         Error::new(
             ErrorKind::Refused,
-            format!(
-                "drive id {} refused the {} of {what}: abort code 16#{code:08X} — {}",
-                req.id,
-                verb(req),
-                abort_text(code)
+            msg!(
+                "servo-refused",
+                id = req.id,
+                verb = verb(req),
+                object = what,
+                code = format!("{code:08X}"),
+                meaning = abort_text(code)
             ),
         )
         .operand(what)
@@ -380,7 +393,7 @@ impl Driver {
     pub fn read_resolution(&mut self) -> Result<u32> {
         let r = self.read_obj(ObjRef::of(super::objects::named("encoder_resolution")))?;
         if r == 0 {
-            return Err(Error::state("the drive reports encoder resolution 0 (6410.03)"));
+            return Err(Error::state(msg!("servo-resolution-zero")));
         }
         self.space.resolution.set(r);
         Ok(r)
@@ -453,7 +466,7 @@ impl Device for Driver {
                 self.timeout = parse_timeout(value)?;
                 Ok(())
             }
-            _ => Err(Error::usage(format!("servo devices have no option `{key}`")).hint("options: encoder, timeout")),
+            _ => Err(Error::usage(msg!("servo-no-option", key = key)).hint(msg!("servo-hint-options"))),
         }
     }
 }
@@ -502,7 +515,7 @@ fn common(u: &DeviceUrl) -> Result<Common> {
     let echo = match u.param("echo").or(u.param("loop")) {
         None | Some("0") | Some("false") | Some("off") => false,
         Some("1") | Some("true") | Some("on") | Some("") => true,
-        Some(v) => return Err(Error::usage(format!("`echo={v}` in {} is not 0 or 1", u.text))),
+        Some(v) => return Err(Error::usage(msg!("servo-flag-param", key = "echo", value = v, url = &u.text))),
     };
     let timeout = u.param("timeout").map(parse_timeout).transpose()?.unwrap_or(DEFAULT_TIMEOUT);
     Ok(Common { id, echo, timeout, encoder: u.param("encoder").map(str::to_string) })
@@ -516,8 +529,6 @@ fn finish(mut d: Driver, c: &Common) -> Result<Box<dyn Device>> {
 }
 
 /// Opens `kinco:PORT?baud=38400&id=1&echo=0&timeout=200ms&encoder=10000`.
-/// What to check when a port disappears, and what plcsh does about it.
-const PORT_GONE: &str = "the USB adapter may be unplugged or the port's server restarted: check the cable and the adapter (`plcsh ports` lists the ports present); the next command reopens the port once it is back";
 
 /// Errors that mean the port itself is gone (not a slow or silent drive).
 fn port_gone(e: &std::io::Error) -> bool {
@@ -536,7 +547,7 @@ pub fn open_serial(u: &DeviceUrl) -> Result<Box<dyn Device>> {
     let c = common(u)?;
     let baud = u.param_num::<u32>("baud")?.unwrap_or(DEFAULT_BAUD);
     if baud == 0 {
-        return Err(Error::usage(format!("`baud=0` in {}: the baud rate must be positive", u.text)));
+        return Err(Error::usage(msg!("servo-baud-zero", url = &u.text)));
     }
     let carrier = Carrier::from_url(u, "kinco:COM4?id=1 or kinco:/dev/ttyUSB0?id=1")?;
     let line = link::shared_serial(&carrier, LineSettings::n81(baud))?;
@@ -564,7 +575,7 @@ pub fn open_sim(u: &DeviceUrl, clock: &Clock) -> Result<Box<dyn Device>> {
     let strict = match u.param("strict") {
         None | Some("0") | Some("false") | Some("off") => false,
         Some("1") | Some("true") | Some("on") | Some("") => true,
-        Some(v) => return Err(Error::usage(format!("`strict={v}` in {} is not 0 or 1", u.text))),
+        Some(v) => return Err(Error::usage(msg!("servo-flag-param", key = "strict", value = v, url = &u.text))),
     };
     // Line timing in-process: off unless baud= or latency= asks for it.
     let pace = match (u.param_num::<u32>("baud")?, u.param("latency")) {
@@ -572,22 +583,26 @@ pub fn open_sim(u: &DeviceUrl, clock: &Clock) -> Result<Box<dyn Device>> {
         (baud, latency) => {
             let latency = match latency {
                 None => super::sim::Pace::REALISTIC.latency,
-                Some(l) => {
-                    Duration::from_micros(parse_option_duration_us(l).ok().filter(|us| *us >= 0).ok_or_else(|| {
-                        Error::usage(format!("`latency={l}` in {} is not a duration (e.g. 1ms)", u.text))
-                    })? as u64)
-                }
+                Some(l) => Duration::from_micros(
+                    parse_option_duration_us(l)
+                        .ok()
+                        .filter(|us| *us >= 0)
+                        .ok_or_else(|| Error::usage(msg!("servo-latency-param", value = l, url = &u.text)))?
+                        as u64,
+                ),
             };
             let baud = baud.unwrap_or(DEFAULT_BAUD);
             if baud == 0 {
-                return Err(Error::usage(format!("`baud=0` in {}: the baud rate must be positive", u.text)));
+                return Err(Error::usage(msg!("servo-baud-zero", url = &u.text)));
             }
             Some(super::sim::Pace { baud, latency })
         }
     };
     let ids = match u.param("drives") {
         None => vec![c.id],
-        Some(list) => parse_ids(list).map_err(|m| Error::usage(format!("{m} in {}", u.text)))?,
+        Some(list) => {
+            parse_ids(list).map_err(|m| Error::usage(msg!("servo-ids-in-url", message = m, url = &u.text)))?
+        }
     };
     let make = || -> Result<Box<dyn Transport>> {
         let mut l = SimLine::new(&ids, clock.clone());
@@ -624,7 +639,7 @@ pub fn parse_ids(list: &str) -> std::result::Result<Vec<u8>, String> {
     let ids: std::result::Result<Vec<u8>, _> = list.split(',').map(|s| s.trim().parse::<u8>()).collect();
     match ids {
         Ok(v) if !v.is_empty() => Ok(v),
-        _ => Err(format!("`{list}` is not a list of drive ids (0–255), e.g. 1,2")),
+        _ => Err(msg!("servo-not-ids", list = list).text),
     }
 }
 

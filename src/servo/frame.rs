@@ -11,6 +11,7 @@
 //! of 1/2/4 bytes, 0x80 error with a CiA-301 abort code in the data
 //! (`../shared/spec/kinco-public-notes.md`, "Servo RS232 protocol details").
 
+use crate::msg;
 use std::fmt;
 
 /// Function codes (§2).
@@ -158,7 +159,8 @@ pub struct BadChecksum {
 
 impl fmt::Display for BadChecksum {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "bad checksum {:02X} (the bytes before it sum to checksum {:02X})", self.got, self.want)
+        let (got, want) = (format!("{:02X}", self.got), format!("{:02X}", self.want));
+        f.write_str(&msg!("servo-frame-checksum", got = got, want = want))
     }
 }
 
@@ -199,14 +201,18 @@ pub enum Mismatch {
 impl fmt::Display for Mismatch {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Mismatch::BadChecksum(b) => write!(f, "reply has a {b}"),
-            Mismatch::Id { got, want } => write!(f, "reply from drive id {got}, expected id {want}"),
-            Mismatch::Object { got, want } => write!(f, "reply is for object {got}, expected {want}"),
+            Mismatch::BadChecksum(b) => f.write_str(&msg!(
+                "servo-frame-reply-checksum",
+                got = format!("{:02X}", b.got),
+                want = format!("{:02X}", b.want)
+            )),
+            Mismatch::Id { got, want } => f.write_str(&msg!("servo-frame-id", got = *got, want = *want)),
+            Mismatch::Object { got, want } => f.write_str(&msg!("servo-frame-object", got = got, want = want)),
             Mismatch::Func { got, request } => {
-                write!(f, "reply function code {got:02X} does not answer a {request:02X} request")
+                f.write_str(&msg!("servo-frame-func", got = format!("{got:02X}"), request = format!("{request:02X}")))
             }
             Mismatch::Echo { got, want } => {
-                write!(f, "write acknowledgement echoes data {got:08X}, the request sent {want:08X}")
+                f.write_str(&msg!("servo-frame-echo", got = format!("{got:08X}"), want = format!("{want:08X}")))
             }
         }
     }
@@ -246,18 +252,18 @@ pub fn decode_reply(request: &Frame, reply: &[u8; FRAME_LEN], size: Size) -> Res
 
 /// The meaning of an abort code, in words (FD5P manual table 10-14 via the public notes;
 /// 0x06090030 is CiA 301's "value range exceeded").
-pub fn abort_text(code: u32) -> &'static str {
-    match code {
-        0x0504_0001 => "invalid command",
-        0x0601_0001 => "attempt to read a write-only object",
-        0x0601_0002 => "attempt to write a read-only object",
-        0x0602_0000 => "object does not exist in the object dictionary",
-        0x0604_0041 => "object cannot be mapped",
-        0x0607_0010 => "data type does not match, length of service parameter does not match",
-        0x0607_0012 => "data type does not match, length of service parameter too high",
-        0x0609_0030 => "value range of parameter exceeded",
-        _ => "unknown abort code",
-    }
+pub fn abort_text(code: u32) -> String {
+    abort_text_in(crate::core::msg::language(), code)
+}
+
+/// [`abort_text`] in a given language.
+pub fn abort_text_in(lang: crate::core::msg::Lang, code: u32) -> String {
+    let key = match code {
+        0x0504_0001 | 0x0601_0001 | 0x0601_0002 | 0x0602_0000 | 0x0604_0041 | 0x0607_0010 | 0x0607_0012
+        | 0x0609_0030 => format!("x{code:08X}"),
+        _ => "other".to_string(),
+    };
+    msg!(lang: lang, "servo-abort", code = key).text
 }
 
 /// Abort codes the simulator sends.

@@ -24,6 +24,8 @@
 //!   low): [`StatusLayout`], default W=5 H=4 R=3 E=2 P=1 T=0, configurable.
 //! - The error history (§4.1.8) lists the newest code first.
 
+use crate::core::msg::Msg;
+use crate::msg;
 use std::fmt;
 
 /// 57600 baud 8N1, no flow control (§3.6).
@@ -92,23 +94,24 @@ impl Command {
         Command::ALL.get(code as usize).copied()
     }
 
-    /// The manual's name (Table 6), in English.
-    pub fn name(self) -> &'static str {
-        match self {
-            Command::Reset => "reset controller",
-            Command::EchoOn => "echo on",
-            Command::EchoOff => "echo off",
-            Command::Info => "controller info",
-            Command::ProgramInfo => "program info",
-            Command::Inputs => "input states",
-            Command::Outputs => "output states",
-            Command::Errors => "error history",
-            Command::ClearErrors => "clear error history",
-            Command::Programming => "enter Programming mode",
-            Command::MonitorStart => "start real-time monitor",
-            Command::MonitorStop => "stop real-time monitor",
-            Command::Timing => "timing figures",
-        }
+    /// The manual's name (Table 6), in the current language.
+    pub fn name(self) -> Msg {
+        let key = match self {
+            Command::Reset => "reset",
+            Command::EchoOn => "echo-on",
+            Command::EchoOff => "echo-off",
+            Command::Info => "info",
+            Command::ProgramInfo => "program-info",
+            Command::Inputs => "inputs",
+            Command::Outputs => "outputs",
+            Command::Errors => "errors",
+            Command::ClearErrors => "clear-errors",
+            Command::Programming => "programming",
+            Command::MonitorStart => "monitor-start",
+            Command::MonitorStop => "monitor-stop",
+            Command::Timing => "timing",
+        };
+        msg!("umpk-command-name", command = key)
     }
 
     pub fn shape(self) -> Shape {
@@ -194,8 +197,6 @@ pub fn hex_pair(p: &[u8]) -> Option<u8> {
 /// the right form.
 pub fn check_form(text: &[u8]) -> Result<(), String> {
     let shown = String::from_utf8_lossy(text);
-    const FORMS: &str =
-        "a terminal command is ? and four hex digits, the code and a checksum that makes them sum to 100 hex (e.g. ?03FD, controller info); a HEX record is : RECLEN OFFSET TYPE DATA CHECKSUM in hex (e.g. :00000002FE, start programming)";
     match text.first() {
         Some(b'?') => {
             let body = &text[1..];
@@ -209,33 +210,38 @@ pub fn check_form(text: &[u8]) -> Result<(), String> {
                 Some([h, l]) => Some(h << 4 | l),
                 _ => None,
             };
-            let like = match code.map(|c| (c, Command::from_code(c))) {
-                Some((c, Some(cmd))) => {
-                    format!("; for {} send {}", cmd.name(), String::from_utf8_lossy(&command_bytes(c)))
-                }
-                _ => String::new(),
-            };
-            Err(format!(
-                "`{shown}` has {} character(s) after ?, and the UMPK waits for four: a terminal command is ? and four hex digits, the code and a checksum that makes them sum to 100 hex{like}",
-                body.len()
-            ))
+            Err(match code.map(|c| (c, Command::from_code(c))) {
+                Some((c, Some(cmd))) => msg!(
+                    "umpk-form-short-command-like",
+                    text = &*shown,
+                    count = body.len(),
+                    command = cmd.name().text,
+                    bytes = String::from_utf8_lossy(&command_bytes(c)).into_owned()
+                ),
+                _ => msg!("umpk-form-short-command", text = &*shown, count = body.len()),
+            }
+            .text)
         }
         Some(b':') => {
             let Some(n) = text.get(1..3).and_then(hex_pair) else {
-                return Err(format!("`{shown}` does not start with a record length (two hex digits after :): {FORMS}"));
+                return Err(msg!("umpk-form-no-reclen", text = &*shown).text);
             };
             let want = 11 + 2 * n as usize;
             if text.len() == want {
                 Ok(())
             } else {
-                Err(format!(
-                    "`{shown}` is {} characters, and a HEX record with RECLEN {n:02X} is {want}: : RECLEN(2) OFFSET(4) TYPE(2) DATA({}) CHECKSUM(2), e.g. :00000002FE (start programming)",
-                    text.len(),
-                    2 * n as usize
-                ))
+                Err(msg!(
+                    "umpk-form-record-length",
+                    text = &*shown,
+                    count = text.len(),
+                    reclen = format!("{n:02X}"),
+                    want = want,
+                    data = 2 * n as usize
+                )
+                .text)
             }
         }
-        _ => Err(format!("`{shown}` is neither a UMPK terminal command nor a HEX record: {FORMS}")),
+        _ => Err(msg!("umpk-form-neither", text = &*shown).text),
     }
 }
 
@@ -330,12 +336,11 @@ impl StatusLayout {
             .split(',')
             .map(|s| s.trim().parse::<u8>().ok().filter(|b| *b < 8))
             .collect::<Option<_>>()
-            .ok_or_else(|| format!("`{text}` is not six bit numbers 0–7 for W,H,R,E,P,T (e.g. 5,4,3,2,1,0)"))?;
-        let bits: [u8; 6] =
-            v.try_into().map_err(|_| format!("`{text}` must name six bits, for W,H,R,E,P,T (e.g. 5,4,3,2,1,0)"))?;
+            .ok_or_else(|| msg!("umpk-status-bits-not-six", text = text).text)?;
+        let bits: [u8; 6] = v.try_into().map_err(|_| msg!("umpk-status-bits-count", text = text).text)?;
         for (i, b) in bits.iter().enumerate() {
             if bits[..i].contains(b) {
-                return Err(format!("bit {b} is given twice in `{text}`"));
+                return Err(msg!("umpk-status-bits-twice", bit = *b, text = text).text);
             }
         }
         Ok(StatusLayout { bits })
@@ -442,27 +447,22 @@ pub mod syserr {
 /// The meaning of an error-history code (§4.1.8).
 pub fn error_code_text(code: u8) -> String {
     match code {
-        0 => "no error".into(),
-        1..=127 => format!("user error {code} (set by the program)"),
-        syserr::OUTPUT_OVERFLOW => "system error 255: output buffer overflow — a command was sent before the previous reply was complete (§4.1)".into(),
-        syserr::CYCLE_OVERRUN => "system error 254 (plcsh's simulator: the program overran the 10 ms cycle and was stopped; Wait mode until reset)".into(),
-        syserr::PROGRAM_FAULT => "system error 253 (plcsh's simulator: the program stopped on a fault; Wait mode until reset)".into(),
-        _ => format!("system error {code}"),
+        0 => msg!("umpk-error-none").text,
+        1..=127 => msg!("umpk-error-user", code = code).text,
+        syserr::OUTPUT_OVERFLOW => msg!("umpk-error-output-overflow").text,
+        syserr::CYCLE_OVERRUN => msg!("umpk-error-cycle-overrun").text,
+        syserr::PROGRAM_FAULT => msg!("umpk-error-program-fault").text,
+        _ => msg!("umpk-error-system", code = code).text,
     }
 }
 
 /// What each reply letter means, in words (§4.1, §4.2).
-pub fn letter_text(letter: u8) -> &'static str {
-    match letter {
-        b'E' => "E: checksum error — the command's checksum does not match its bytes",
-        b'U' => "U: unknown command",
-        b'C' => "C: the command contains an illegal character",
-        b'L' => "L: the record's data is longer than allowed (64 bytes a page, 22 bytes of program info)",
-        b'A' => "A: address out of sequence or out of range — pages must follow one another inside the program memory",
-        b'W' => "W: the flash (IAP) write failed",
-        b'X' => "X: programming is not allowed now (not in Programming mode, no start record yet, or an earlier record failed)",
-        _ => "an unknown reply letter",
-    }
+pub fn letter_text(letter: u8) -> Msg {
+    let key = match letter {
+        b'E' | b'U' | b'C' | b'L' | b'A' | b'W' | b'X' => (letter as char).to_string(),
+        _ => "other".to_string(),
+    };
+    msg!("umpk-letter", letter = key)
 }
 
 /// The 30-byte real-time monitor packet (Table 7).
@@ -564,7 +564,9 @@ pub fn parse_exchange(buf: &[u8], sent: &[u8], shape: Shape, crlf: Option<bool>)
                 match Monitor::decode(&buf[i..]) {
                     Some(m) => monitor.push(m),
                     None => {
-                        return Progress::Bad(format!("a damaged monitor packet: {}", show(&buf[i..i + MONITOR_LEN])))
+                        return Progress::Bad(
+                            msg!("umpk-bad-monitor-packet", bytes = show(&buf[i..i + MONITOR_LEN])).text,
+                        )
                     }
                 }
                 i += MONITOR_LEN;
@@ -576,7 +578,7 @@ pub fn parse_exchange(buf: &[u8], sent: &[u8], shape: Shape, crlf: Option<bool>)
                     return Progress::NeedMore;
                 }
                 if buf[i + 2] != b'\n' {
-                    return Progress::Bad(format!("`R` CR followed by {}", show(&buf[i + 2..i + 3])));
+                    return Progress::Bad(msg!("umpk-bad-r-cr", bytes = show(&buf[i + 2..i + 3])).text);
                 }
                 if buf.len() == i + 3 && shape == Shape::Ack && crlf != Some(false) {
                     // Either a reset's R or our echo-less reply with CR LF (after `?01FF`).
@@ -595,7 +597,7 @@ pub fn parse_exchange(buf: &[u8], sent: &[u8], shape: Shape, crlf: Option<bool>)
     if buf[i] == sent.first().copied().unwrap_or(0) && !sent.is_empty() {
         let n = sent.len().min(buf.len() - i);
         if buf[i..i + n] != sent[..n] {
-            return Progress::Bad(format!("the echo {} differs from the command {}", show(&buf[i..i + n]), show(sent)));
+            return Progress::Bad(msg!("umpk-bad-echo", echo = show(&buf[i..i + n]), sent = show(sent)).text);
         }
         if n < sent.len() {
             return Progress::NeedMore;
@@ -617,11 +619,11 @@ pub fn parse_exchange(buf: &[u8], sent: &[u8], shape: Shape, crlf: Option<bool>)
             Shape::Packet(_) | Shape::Ack => {
                 let Some(nn_text) = buf.get(i + 1..i + 3) else { return Progress::NeedMore };
                 let Some(nn) = hex_pair(nn_text) else {
-                    return Progress::Bad(format!("a packet with a bad length field: {}", show(&buf[i..])));
+                    return Progress::Bad(msg!("umpk-bad-length-field", bytes = show(&buf[i..])).text);
                 };
                 if let Shape::Packet(want) = shape {
                     if nn != want {
-                        return Progress::Bad(format!("a packet of {nn} bytes where {want} were expected"));
+                        return Progress::Bad(msg!("umpk-bad-packet-length", got = nn, want = want).text);
                     }
                 }
                 let end = i + 3 + 2 * nn as usize + 2;
@@ -630,20 +632,23 @@ pub fn parse_exchange(buf: &[u8], sent: &[u8], shape: Shape, crlf: Option<bool>)
                 }
                 let bytes: Option<Vec<u8>> = buf[i + 3..end].chunks(2).map(hex_pair).collect();
                 let Some(bytes) = bytes else {
-                    return Progress::Bad(format!("a packet with non-hex characters: {}", show(&buf[i..end])));
+                    return Progress::Bad(msg!("umpk-bad-packet-hex", bytes = show(&buf[i..end])).text);
                 };
                 let (data, cc) = bytes.split_at(nn as usize);
                 if !checksum_ok(nn, data, cc[0]) {
-                    return Progress::Bad(format!(
-                        "a packet with a bad checksum: {} (expected {:02X})",
-                        show(&buf[i..end]),
-                        complement(data).wrapping_sub(nn)
-                    ));
+                    return Progress::Bad(
+                        msg!(
+                            "umpk-bad-packet-checksum",
+                            bytes = show(&buf[i..end]),
+                            expected = format!("{:02X}", complement(data).wrapping_sub(nn))
+                        )
+                        .text,
+                    );
                 }
                 (Reply::Packet(data.to_vec()), end)
             }
         },
-        _ => return Progress::Bad(format!("an unexpected reply {}", show(&buf[i..buf.len().min(i + 40)]))),
+        _ => return Progress::Bad(msg!("umpk-bad-reply", bytes = show(&buf[i..buf.len().min(i + 40)])).text),
     };
     let want_crlf = crlf.unwrap_or(echoed);
     if !want_crlf {
@@ -651,9 +656,9 @@ pub fn parse_exchange(buf: &[u8], sent: &[u8], shape: Shape, crlf: Option<bool>)
     }
     match buf.get(end..end + 2) {
         Some(b"\r\n") => done(reply, echoed, true, reset_seen, monitor, end + 2),
-        Some(_) => Progress::Bad(format!("the reply does not end in CR LF: {}", show(&buf[i..]))),
+        Some(_) => Progress::Bad(msg!("umpk-bad-crlf", bytes = show(&buf[i..])).text),
         None if buf.len() == end + 1 && buf[end] != b'\r' => {
-            Progress::Bad(format!("the reply does not end in CR LF: {}", show(&buf[i..])))
+            Progress::Bad(msg!("umpk-bad-crlf", bytes = show(&buf[i..])).text)
         }
         None => Progress::NeedMore,
     }

@@ -35,9 +35,11 @@ use super::sim::{Umpk, RESET_TIME};
 use super::space::{UmpkOperand, UmpkSpace};
 use crate::core::link::line::Transport;
 use crate::core::link::serial::{Carrier, LineSettings};
+use crate::core::msg::Msg;
 use crate::core::trace::{self, Dir, Proto};
 use crate::core::url::DeviceUrl;
 use crate::core::{Clock, Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
+use crate::msg;
 use std::collections::VecDeque;
 use std::io;
 use std::sync::{Arc, Mutex};
@@ -218,14 +220,20 @@ impl Driver {
                     if !self.fill(deadline)? {
                         let partial = codec::show(&self.rx);
                         self.rx.clear();
-                        let got = if partial.len() > 2 { format!("; only {partial} came") } else { String::new() };
-                        return Err(Error::link(format!(
-                            "no complete reply to {} from the UMPK on {} within {}{got}",
-                            codec::show(sent),
-                            self.link,
-                            crate::core::literal::millis_text(wait)
-                        ))
-                        .hint("check power, the RS-232 cable (≤ 2 m) and 57600 8N1; a controller being reset is silent for ~0.6 s"));
+                        let (sent, link) = (codec::show(sent), &self.link);
+                        let timeout = crate::core::literal::millis_text(wait);
+                        let m = if partial.len() > 2 {
+                            msg!(
+                                "umpk-no-complete-reply-partial",
+                                sent = sent,
+                                link = link,
+                                timeout = timeout,
+                                partial = partial
+                            )
+                        } else {
+                            msg!("umpk-no-complete-reply", sent = sent, link = link, timeout = timeout)
+                        };
+                        return Err(Error::link(m).hint(msg!("umpk-hint-silent")));
                     }
                 }
                 Progress::Done(x) => {
@@ -244,19 +252,20 @@ impl Driver {
                     self.settle();
                     self.garbled = true;
                     self.monitor_on = false;
-                    return Err(Error::link(format!(
-                        "unexpected reply to {} on {}: {m}",
-                        codec::show(sent),
-                        self.link
+                    return Err(Error::link(msg!(
+                        "umpk-unexpected-reply",
+                        sent = codec::show(sent),
+                        link = &self.link,
+                        what = m
                     ))
-                    .hint("another program may be using the port, or the baud rate is not 57600"));
+                    .hint(msg!("umpk-hint-garbled")));
                 }
             }
         }
     }
 
-    fn refused(&self, what: &str, letter: u8, hint: Option<&str>) -> Error {
-        let e = Error::new(ErrorKind::Refused, format!("the UMPK refused {what}: {}", codec::letter_text(letter)));
+    fn refused(&self, what: Msg, hint: Option<Msg>) -> Error {
+        let e = Error::new(ErrorKind::Refused, what);
         match hint {
             Some(h) => e.hint(h),
             None => e,
@@ -284,15 +293,18 @@ impl Driver {
         }
         match x.reply {
             Reply::Letter(l) => {
-                let what = format!("?{:02X} ({})", c.code(), c.name());
+                let what = msg!(
+                    "umpk-refused-command",
+                    code = format!("{:02X}", c.code()),
+                    command = c.name().text,
+                    letter = codec::letter_text(l).text
+                );
                 let hint = match l {
-                    b'U' if !c.in_programming() => Some(
-                        "in Programming mode the UMPK answers only reset, echo on/off and controller info (manual Table 6); `umpk reset` leaves Programming mode",
-                    ),
-                    b'E' | b'C' => Some("the line corrupts bytes: check the cable and 57600 8N1"),
+                    b'U' if !c.in_programming() => Some(msg!("umpk-hint-programming-mode")),
+                    b'E' | b'C' => Some(msg!("umpk-hint-corrupted")),
                     _ => None,
                 };
-                Err(self.refused(&what, l, hint))
+                Err(self.refused(what, hint))
             }
             r => Ok(r),
         }
@@ -301,14 +313,19 @@ impl Driver {
     fn packet(&mut self, c: Command) -> Result<Vec<u8>> {
         match self.command(c)? {
             Reply::Packet(d) | Reply::Text(d) => Ok(d),
-            r => Err(Error::link(format!("the UMPK answered {r:?} to ?{:02X} ({})", c.code(), c.name()))),
+            r => Err(Error::link(msg!(
+                "umpk-answered-other",
+                reply = format!("{r:?}"),
+                code = format!("{:02X}", c.code()),
+                command = c.name().text
+            ))),
         }
     }
 
     /// Controller info (§4.1.4).
     pub fn controller_info(&mut self) -> Result<Info> {
         let d = self.packet(Command::Info)?;
-        Info::from_data(&d).ok_or_else(|| Error::link("a controller-info packet without six bytes"))
+        Info::from_data(&d).ok_or_else(|| Error::link(msg!("umpk-packet-size", what = "info")))
     }
 
     /// The 22 program-info characters (§4.1.5; spaces in Wait mode).
@@ -318,7 +335,7 @@ impl Driver {
 
     fn word(&mut self, c: Command) -> Result<u32> {
         let d = self.packet(c)?;
-        Ok(u32::from_le_bytes(d.try_into().map_err(|_| Error::link("a 4-byte packet expected"))?))
+        Ok(u32::from_le_bytes(d.try_into().map_err(|_| Error::link(msg!("umpk-packet-size", what = "other")))?))
     }
 
     pub fn inputs(&mut self) -> Result<u32> {
@@ -332,7 +349,7 @@ impl Driver {
     /// The error history, newest first (§4.1.8).
     pub fn errors(&mut self) -> Result<[u8; 8]> {
         let d = self.packet(Command::Errors)?;
-        d.try_into().map_err(|_| Error::link("an error-history packet without eight bytes"))
+        d.try_into().map_err(|_| Error::link(msg!("umpk-packet-size", what = "errors")))
     }
 
     pub fn clear_errors(&mut self) -> Result<()> {
@@ -341,7 +358,7 @@ impl Driver {
 
     pub fn timing(&mut self) -> Result<Timing> {
         let d = self.packet(Command::Timing)?;
-        Timing::from_data(&d).ok_or_else(|| Error::link("a timing packet without four bytes"))
+        Timing::from_data(&d).ok_or_else(|| Error::link(msg!("umpk-packet-size", what = "timing")))
     }
 
     /// Resets the controller and waits for its `R` (§4.1.1).
@@ -404,10 +421,10 @@ impl Driver {
             self.monitor_stop()?;
         }
         m?.ok_or_else(|| {
-            Error::link(format!(
-                "no real-time monitor packet from the UMPK on {} within {}",
-                self.link,
-                crate::core::literal::millis_text(self.timeout)
+            Error::link(msg!(
+                "umpk-no-monitor-packet",
+                link = &self.link,
+                timeout = crate::core::literal::millis_text(self.timeout)
             ))
         })
     }
@@ -416,11 +433,11 @@ impl Driver {
     pub fn send_raw(&mut self, text: &str) -> Result<Exchange> {
         let bytes = text.trim().as_bytes().to_vec();
         if bytes.is_empty() || bytes.len() > 600 {
-            return Err(Error::usage("umpk send needs a command (?03FD) or a record (:00000002FE)"));
+            return Err(Error::usage(msg!("umpk-send-empty")));
         }
         // A form the controller would wait on in silence is refused before it is sent: the
         // silence would be blamed on the cable.
-        codec::check_form(&bytes).map_err(|m| Error::usage(format!("not sent to the UMPK on {}: {m}", self.link)))?;
+        codec::check_form(&bytes).map_err(|m| Error::usage(msg!("umpk-not-sent", link = &self.link, reason = m)))?;
         let shape = match bytes.get(1..3).and_then(codec::hex_pair).and_then(Command::from_code) {
             Some(c) if bytes[0] == b'?' => c.shape(),
             _ => Shape::Ack,
@@ -456,21 +473,24 @@ impl Driver {
             match x.reply {
                 Reply::Ok => progress(k + 1, total),
                 Reply::Letter(l) => {
-                    let what = match r.kind {
-                        hex::kind::START => "the start record".to_string(),
-                        hex::kind::INFO => "the program-info record".to_string(),
-                        hex::kind::END => "the end record".to_string(),
-                        _ => format!(
-                            "the data page at 16#{:04X}..16#{:04X}",
-                            r.offset,
-                            r.offset as usize + r.data.len() - 1
-                        ),
+                    let record = match r.kind {
+                        hex::kind::START => "start",
+                        hex::kind::INFO => "info",
+                        hex::kind::END => "end",
+                        _ => "data",
                     };
-                    return Err(self.refused(&format!("record {} of {total} ({what})", k + 1), l, None).hint(
-                        "programming stopped and the new program is incomplete: run `umpk program FILE` again from the start; the controller stays in Programming mode (`umpk reset` leaves it, to Wait)",
-                    ));
+                    let what = msg!(
+                        "umpk-refused-record",
+                        n = k + 1,
+                        total = total,
+                        record = record,
+                        first = format!("{:04X}", r.offset),
+                        last = format!("{:04X}", (r.offset as usize + r.data.len()).saturating_sub(1)),
+                        letter = codec::letter_text(l).text
+                    );
+                    return Err(self.refused(what, None).hint(msg!("umpk-hint-program-incomplete")));
                 }
-                r => return Err(Error::link(format!("the UMPK answered {r:?} to a HEX record"))),
+                r => return Err(Error::link(msg!("umpk-answered-record", reply = format!("{r:?}")))),
             }
         }
         Ok(ProgramReport {
@@ -491,18 +511,18 @@ impl Driver {
         self.timeout = saved;
         let info = info?;
         let found = model::from_info(info.model, info.inputs).ok_or_else(|| {
-            Error::unsupported(format!(
-                "the controller reports model {:02X} with {} inputs and {} outputs, which is none of {}",
-                info.model,
-                info.inputs,
-                info.outputs,
-                model::names()
+            Error::unsupported(msg!(
+                "umpk-unknown-model-reported",
+                model = format!("{:02X}", info.model),
+                inputs = info.inputs,
+                outputs = info.outputs,
+                models = model::names()
             ))
         })?;
         if let Some(w) = want {
             if w.name != found.name {
-                return Err(Error::usage(format!("model={} was given but the controller is a {}", w.name, found.name))
-                    .hint(format!("drop model= or use model={}", found.name)));
+                return Err(Error::usage(msg!("umpk-model-mismatch", given = w.name, found = found.name))
+                    .hint(msg!("umpk-hint-model-mismatch", found = found.name)));
             }
         }
         self.space.model = found;
@@ -512,11 +532,7 @@ impl Driver {
 }
 
 fn not_writable(op: &str) -> Error {
-    Error::unsupported(format!(
-        "the UMPK terminal protocol has no write commands (manual §4.1, Table 6), so {op} cannot be set"
-    ))
-    .operand(op)
-    .hint("inputs are wired, outputs, timers, counters and markers belong to the program; on the simulator use `umpk sim input I3=1`")
+    Error::unsupported(msg!("umpk-not-writable", operand = op)).operand(op).hint(msg!("umpk-hint-not-writable"))
 }
 
 impl Device for Driver {
@@ -590,9 +606,7 @@ impl Device for Driver {
                 self.layout = StatusLayout::parse(value).map_err(Error::usage)?;
                 Ok(())
             }
-            _ => {
-                Err(Error::usage(format!("UMPK devices have no option `{key}`")).hint("options: timeout, status_bits"))
-            }
+            _ => Err(Error::usage(msg!("umpk-no-option", key = key)).hint(msg!("umpk-hint-options"))),
         }
     }
 }
@@ -605,8 +619,8 @@ fn model_param(u: &DeviceUrl, text: Option<&str>) -> Result<Option<&'static Mode
     text.filter(|t| !t.is_empty())
         .map(|t| {
             model::find(t).ok_or_else(|| {
-                Error::usage(format!("`{t}` in {} is not a UMPK model", u.text))
-                    .hint(format!("models: {}", model::names()))
+                Error::usage(msg!("umpk-not-model", model = t, url = &u.text))
+                    .hint(msg!("umpk-hint-models", models = model::names()))
             })
         })
         .transpose()
@@ -633,7 +647,7 @@ pub fn open_serial(u: &DeviceUrl) -> Result<Box<dyn Device>> {
     let want = model_param(u, u.param("model"))?;
     let baud = u.param_num::<u32>("baud")?.unwrap_or(codec::BAUD);
     if baud == 0 {
-        return Err(Error::usage(format!("`baud=0` in {}: the baud rate must be positive", u.text)));
+        return Err(Error::usage(msg!("umpk-baud-zero", url = &u.text)));
     }
     let line = LineSettings::n81(baud);
     let t = crate::core::link::serial::open(&carrier, line)?;
@@ -664,8 +678,9 @@ pub fn open_sim(u: &DeviceUrl, clock: &Clock) -> Result<Box<dyn Device>> {
         sim.open_state(std::path::Path::new(p))?;
     }
     if let Some(p) = u.param("program") {
-        let text = crate::core::encoding::read_source(p)
-            .map_err(|e| Error::io(format!("{}: cannot read {p}: {e}", u.text)))?;
+        let text = crate::core::encoding::read_source(p).map_err(|e| {
+            Error::io(msg!("umpk-cannot-read-program", url = &u.text, file = p, reason = e.to_string()))
+        })?;
         sim.load_logic(Box::new(super::sim::program::IlRunner::load(&text, p, m)?));
     }
     let sim = Arc::new(Mutex::new(sim));

@@ -14,6 +14,7 @@
 
 use super::codec::{complement, hex_pair, push_hex, sum, INFO_LEN};
 use super::model::PAGE;
+use crate::msg;
 use std::collections::BTreeMap;
 
 /// Record types (Table 8).
@@ -72,25 +73,30 @@ impl Record {
     /// character, `E` checksum) and a message.
     pub fn parse(text: &[u8]) -> Result<Record, (u8, String)> {
         if text.first() != Some(&b':') {
-            return Err((b'C', "a record starts with `:`".into()));
+            return Err((b'C', msg!("umpk-hex-no-colon").text));
         }
         if let Some(p) = text[1..].iter().position(|c| !c.is_ascii_hexdigit()) {
-            return Err((b'C', format!("character {} of the record is not a hex digit", p + 2)));
+            return Err((b'C', msg!("umpk-hex-not-hex-digit", position = p + 2).text));
         }
         if text.len() < 11 || text.len().is_multiple_of(2) {
-            return Err((
-                b'C',
-                format!("a record has an odd number of hex digits, at least 10; this one has {}", text.len() - 1),
-            ));
+            return Err((b'C', msg!("umpk-hex-odd-digits", count = text.len() - 1).text));
         }
         let bytes: Vec<u8> = text[1..].chunks(2).filter_map(hex_pair).collect();
         let n = bytes[0] as usize;
         if bytes.len() != n + 5 {
-            return Err((b'C', format!("RECLEN says {n} data bytes but the record holds {}", bytes.len() as i64 - 5)));
+            return Err((b'C', msg!("umpk-hex-reclen", reclen = n, count = bytes.len() as i64 - 5).text));
         }
         if sum(&bytes) != 0 {
             let want = complement(&bytes[..bytes.len() - 1]);
-            return Err((b'E', format!("checksum {:02X}, the bytes need {want:02X}", bytes[bytes.len() - 1])));
+            return Err((
+                b'E',
+                msg!(
+                    "umpk-hex-checksum",
+                    got = format!("{:02X}", bytes[bytes.len() - 1]),
+                    want = format!("{want:02X}")
+                )
+                .text,
+            ));
         }
         Ok(Record { kind: bytes[3], offset: u16::from_be_bytes([bytes[1], bytes[2]]), data: bytes[4..4 + n].to_vec() })
     }
@@ -122,23 +128,27 @@ pub fn parse_file(text: &str, memory: usize) -> Result<Program, String> {
             continue;
         }
         if ended {
-            return Err(format!("line {ln}: a record after the end record (01)"));
+            return Err(msg!("umpk-hex-after-end", line = ln).text);
         }
-        let r = Record::parse(line.as_bytes()).map_err(|(_, m)| format!("line {ln}: {m}"))?;
+        let r = Record::parse(line.as_bytes()).map_err(|(_, m)| msg!("umpk-hex-line", line = ln, message = m).text)?;
         match r.kind {
             kind::DATA => {
                 let start = r.offset as usize;
                 let end = start + r.data.len();
                 if end > memory {
-                    return Err(format!(
-                        "line {ln}: data at 16#{start:04X}..16#{:04X} is outside the program memory (16#0000..16#{:04X}, {memory} bytes)",
-                        end - 1,
-                        memory - 1
-                    ));
+                    return Err(msg!(
+                        "umpk-hex-outside-memory",
+                        line = ln,
+                        first = format!("{start:04X}"),
+                        last = format!("{:04X}", end - 1),
+                        top = format!("{:04X}", memory - 1),
+                        memory = memory
+                    )
+                    .text);
                 }
                 for (k, b) in r.data.iter().enumerate() {
                     if p.bytes.insert(start + k, *b).is_some() {
-                        return Err(format!("line {ln}: address 16#{:04X} is written twice", start + k));
+                        return Err(msg!("umpk-hex-twice", line = ln, address = format!("{:04X}", start + k)).text);
                     }
                 }
             }
@@ -147,29 +157,22 @@ pub fn parse_file(text: &str, memory: usize) -> Result<Program, String> {
             kind::START => {
                 // Standard Intel HEX calls type 02 an extended segment address (2 data bytes);
                 // to the UMPK 02 is the start record, which carries no data.
-                return Err(format!(
-                    "line {ln}: a type-02 record with {} data byte(s): the UMPK takes type 02 only as the start record without data (:00000002FE, sent by plcsh itself); in standard Intel HEX it is an extended segment address, which a program of at most 3 KB never needs — remove the line",
-                    r.data.len()
-                ));
+                return Err(msg!("umpk-hex-type-02", line = ln, count = r.data.len()).text);
             }
             kind::INFO => {
                 if r.data.is_empty() || r.data.len() > INFO_LEN {
-                    return Err(format!("line {ln}: program info holds 1–22 bytes, not {}", r.data.len()));
+                    return Err(msg!("umpk-hex-info-size", line = ln, count = r.data.len()).text);
                 }
                 p.info = Some(r.data);
             }
-            k => {
-                return Err(format!(
-                "line {ln}: record type {k:02X} is not one the UMPK takes (00 data, 01 end, 02 start, 03 program info)"
-            ))
-            }
+            k => return Err(msg!("umpk-hex-record-type", line = ln, rtype = format!("{k:02X}")).text),
         }
     }
     if !ended {
-        return Err("the file has no end record (:00000001FF)".into());
+        return Err(msg!("umpk-hex-no-end").text);
     }
     if p.bytes.is_empty() {
-        return Err("the file holds no data records".into());
+        return Err(msg!("umpk-hex-no-data").text);
     }
     Ok(p)
 }

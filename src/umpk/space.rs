@@ -7,53 +7,40 @@
 //! no command that reads them, and none that writes anything, so `set` is refused.
 
 use super::model::Model;
+use crate::core::msg::Msg;
 use crate::core::{Candidate, DataType, Error, ErrorKind, Operand, OperandSpace, Result};
+use crate::msg;
 
 /// One operand area.
 #[derive(Clone, Copy, Debug)]
 pub struct Area {
     pub letter: char,
-    pub meaning: &'static str,
     /// Its size in the model.
     pub size: fn(&Model) -> u8,
-    /// Where the value is read from.
-    pub source: &'static str,
     /// Manual section.
     pub section: &'static str,
 }
 
 /// Every area, in the order the monitor packet carries them (Table 7).
 pub static AREAS: &[Area] = &[
-    Area {
-        letter: 'I',
-        meaning: "digital input",
-        size: |m| m.inputs,
-        source: "?05FB or the monitor",
-        section: "§3.3, Table 3",
-    },
-    Area {
-        letter: 'Q',
-        meaning: "digital output (opto-relay, 48 V 0.3 A)",
-        size: |m| m.outputs,
-        source: "?06FA or the monitor",
-        section: "§3.4, Table 4",
-    },
-    Area {
-        letter: 'T',
-        meaning: "on-delay timer output",
-        size: |m| m.timers,
-        source: "the real-time monitor",
-        section: "§3.5, Table 5",
-    },
-    Area {
-        letter: 'C',
-        meaning: "counter output pulse",
-        size: |m| m.counters,
-        source: "the real-time monitor",
-        section: "§3.5",
-    },
-    Area { letter: 'M', meaning: "marker", size: |m| m.markers, source: "the real-time monitor", section: "§3.4" },
+    Area { letter: 'I', size: |m| m.inputs, section: "§3.3, Table 3" },
+    Area { letter: 'Q', size: |m| m.outputs, section: "§3.4, Table 4" },
+    Area { letter: 'T', size: |m| m.timers, section: "§3.5, Table 5" },
+    Area { letter: 'C', size: |m| m.counters, section: "§3.5" },
+    Area { letter: 'M', size: |m| m.markers, section: "§3.4" },
 ];
+
+impl Area {
+    /// What the area holds, in words.
+    pub fn meaning(&self) -> Msg {
+        msg!("umpk-area-meaning", area = self.letter.to_string())
+    }
+
+    /// Where plcsh reads the value from.
+    pub fn source(&self) -> Msg {
+        msg!("umpk-area-source", area = self.letter.to_string())
+    }
+}
 
 /// A parsed UMPK operand.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -90,22 +77,28 @@ impl UmpkSpace {
         let mut chars = t.chars();
         let letter = chars.next().unwrap_or(' ');
         let area = AREAS.iter().position(|a| a.letter == letter).ok_or_else(|| {
-            Error::new(ErrorKind::Operand, format!("`{text}` is not a UMPK operand"))
+            Error::new(ErrorKind::Operand, msg!("umpk-not-operand", text = text))
                 .column(col)
-                .hint("UMPK operands: I0…, Q0…, M0…, T0…, C0…C3 (help I0 tells more)")
+                .hint(msg!("umpk-hint-operands"))
         })?;
         let num = chars.as_str();
         let digits = !num.is_empty() && num.bytes().all(|b| b.is_ascii_digit());
         // Digits past u32 read as u32::MAX: past the end of every area, refused below.
         let index: u32 = num.parse().or_else(|e| if digits { Ok(u32::MAX) } else { Err(e) }).map_err(|_| {
-            Error::new(ErrorKind::Operand, format!("`{text}`: a number must follow {letter} (e.g. {letter}0)"))
+            Error::new(ErrorKind::Operand, msg!("umpk-number-must-follow", text = text, letter = letter.to_string()))
                 .column(col)
         })?;
         let size = (AREAS[area].size)(self.model) as u32;
         if index >= size {
             return Err(Error::new(
                 ErrorKind::Range,
-                format!("{} is past the end: the {} has {letter}0…{letter}{}", t, self.model.name, size - 1),
+                msg!(
+                    "umpk-past-end",
+                    operand = &t,
+                    model = self.model.name,
+                    letter = letter.to_string(),
+                    last = size - 1
+                ),
             )
             .column(col));
         }
@@ -125,8 +118,7 @@ impl OperandSpace for UmpkSpace {
             let first = self.one(a, lead)?;
             let last = self.one(b, lead + a.len() + 2)?;
             if first.area != last.area || last.index < first.index {
-                return Err(Error::new(ErrorKind::Operand, format!("`{t}` is not a range of one area (e.g. I0..I7)"))
-                    .column(lead));
+                return Err(Error::new(ErrorKind::Operand, msg!("umpk-not-range", text = t)).column(lead));
             }
             return Ok((first.index..=last.index)
                 .map(|i| UmpkOperand { area: first.area, index: i }.to_core())
@@ -147,24 +139,31 @@ impl OperandSpace for UmpkSpace {
 
     fn describe(&self, op: &Operand) -> Option<String> {
         let o = UmpkOperand::from_core(op);
-        Some(format!("{} {} (read from {})", o.area().meaning, o.name(), o.area().source))
+        Some(
+            msg!(
+                "umpk-describe",
+                meaning = o.area().meaning().text,
+                operand = o.name(),
+                source = o.area().source().text
+            )
+            .text,
+        )
     }
 
     fn help(&self, text: &str) -> Result<String> {
         let o = self.one(text, 0)?;
         let a = o.area();
-        Ok(format!(
-            "{}: {} of the {} ({}{}…{}{}); BOOL; read from {}; manual {}. The UMPK terminal protocol has no write commands.",
-            o.name(),
-            a.meaning,
-            self.model.name,
-            a.letter,
-            0,
-            a.letter,
-            (a.size)(self.model) - 1,
-            a.source,
-            a.section
-        ))
+        Ok(msg!(
+            "umpk-help-operand",
+            operand = o.name(),
+            meaning = a.meaning().text,
+            model = self.model.name,
+            letter = a.letter.to_string(),
+            last = (a.size)(self.model) - 1,
+            source = a.source().text,
+            section = a.section
+        )
+        .text)
     }
 
     fn complete(&self, prefix: &str) -> Vec<Candidate> {
@@ -174,7 +173,7 @@ impl OperandSpace for UmpkSpace {
             for i in 0..(a.size)(self.model) {
                 let text = format!("{}{i}", a.letter);
                 if text.starts_with(&p) {
-                    out.push(Candidate { text, meaning: a.meaning.to_string() });
+                    out.push(Candidate { text, meaning: a.meaning().text });
                 }
             }
         }

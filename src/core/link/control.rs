@@ -16,6 +16,7 @@
 
 use super::{local_connect, LocalListener, LocalStream};
 use crate::core::{Error, Result};
+use crate::msg;
 use serde_json::{json, Value as Json};
 use std::io::{BufRead, BufReader, Read, Write};
 use std::path::{Path, PathBuf};
@@ -76,9 +77,9 @@ impl Channel {
     /// ("the served K2's control channel").
     pub fn open(path: &Path, what: &str, answer: Answer, stop: Arc<AtomicBool>) -> Result<Channel> {
         let listener = LocalListener::bind(path).map_err(|e| {
-            Error::io(format!("cannot open {what} at {}", path.display()))
+            Error::io(msg!("link-cannot-open-channel", what = what, path = path.display().to_string()))
                 .cause(e)
-                .hint("choose another path, or remove a stale file left by a server that was killed")
+                .hint(msg!("link-hint-channel-path"))
         })?;
         std::thread::spawn(move || serve(listener, answer, stop));
         Ok(Channel { path: path.to_path_buf() })
@@ -120,11 +121,11 @@ fn connection(conn: LocalStream, answer: &(dyn Fn(&str) -> Json + Send + Sync)) 
         }
         let too_long = raw.len() > MAX_LINE;
         let reply = if too_long {
-            json!({"ok": false, "error": format!("a control line is at most {MAX_LINE} bytes")})
+            json!({"ok": false, "error": msg!("link-control-line-long", max = MAX_LINE).text})
         } else {
             match std::str::from_utf8(&raw) {
                 Ok(text) => answer(text.trim()),
-                Err(_) => json!({"ok": false, "error": "a control line is UTF-8 text"}),
+                Err(_) => json!({"ok": false, "error": msg!("link-control-line-utf8").text}),
             }
         };
         if writeln!(w, "{reply}").is_err() || too_long {
@@ -137,9 +138,9 @@ fn connection(conn: LocalStream, answer: &(dyn Fn(&str) -> Json + Send + Sync)) 
 /// whole reply; a refusal comes back as a usage error with the channel's hint.
 pub fn send(path: &Path, text: &str) -> Result<(String, Json)> {
     let io = |e: std::io::Error| {
-        Error::link(format!("cannot reach the simulator's control channel {}", path.display()))
+        Error::link(msg!("link-cannot-reach-channel", path = path.display().to_string()))
             .cause(e)
-            .hint("is `plcsh sim serve` still running? Its readiness line names the control channel's path")
+            .hint(msg!("link-hint-reach-channel"))
     };
     let mut s = local_connect(path).map_err(io)?;
     s.set_read_timeout(Some(Duration::from_secs(5))).map_err(io)?;
@@ -147,11 +148,14 @@ pub fn send(path: &Path, text: &str) -> Result<(String, Json)> {
     let mut reply = String::new();
     BufReader::new(&s).read_line(&mut reply).map_err(io)?;
     let j: Json = serde_json::from_str(&reply)
-        .map_err(|e| Error::link(format!("the control channel answered `{}`", reply.trim())).cause(e))?;
+        .map_err(|e| Error::link(msg!("link-channel-answered", reply = reply.trim())).cause(e))?;
     if j["ok"] == json!(true) {
         Ok((j["text"].as_str().unwrap_or_default().to_string(), j))
     } else {
-        let mut e = Error::usage(j["error"].as_str().unwrap_or("the simulator refused").to_string());
+        let mut e = match j["error"].as_str() {
+            Some(m) => Error::usage(m.to_string()),
+            None => Error::usage(msg!("link-simulator-refused")),
+        };
         if let Some(h) = j["hint"].as_str() {
             e = e.hint(h.to_string());
         }

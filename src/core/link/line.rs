@@ -10,6 +10,7 @@
 //! The registry holds weak references: the port closes with its last device.
 
 use crate::core::{Error, Result};
+use crate::msg;
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex, OnceLock, Weak};
 
@@ -68,8 +69,13 @@ fn shared_with(
     reg.retain(|_, w| w.strong_count() > 0);
     if let Some(line) = reg.get(key).and_then(Weak::upgrade) {
         if line.settings != settings {
-            return Err(Error::usage(format!("{key} is already open with {}, not {settings}", line.settings))
-                .hint("every drive on one line uses the same baud rate and loop setting"));
+            return Err(Error::usage(msg!(
+                "link-line-settings",
+                line = key,
+                open = &line.settings,
+                settings = settings
+            ))
+            .hint(msg!("link-hint-line-settings")));
         }
         return Ok(line);
     }

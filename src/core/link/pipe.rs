@@ -3,6 +3,7 @@
 //! operating system (a socket pair or a pty exists only on some).
 
 use super::transport::Transport;
+use crate::msg;
 use std::collections::VecDeque;
 use std::io;
 use std::sync::{Arc, Condvar, Mutex};
@@ -56,7 +57,7 @@ impl Transport for PipeEnd {
                 return Ok(n);
             }
             if q.1 {
-                return Err(io::Error::new(io::ErrorKind::UnexpectedEof, "the other end of the pipe closed"));
+                return Err(io::Error::new(io::ErrorKind::UnexpectedEof, msg!("link-pipe-closed").text));
             }
             let left = end.saturating_duration_since(Instant::now());
             if left.is_zero() {

@@ -17,6 +17,7 @@
 use super::traced::Traced;
 use super::transport::Transport;
 use crate::core::trace::{self, Dir, Proto};
+use crate::msg;
 use std::io;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
@@ -44,7 +45,7 @@ pub trait Port: Send {
 }
 
 pub(crate) fn timed_out() -> io::Error {
-    io::Error::new(io::ErrorKind::TimedOut, "no reply within the timeout")
+    io::Error::new(io::ErrorKind::TimedOut, msg!("link-no-reply-timeout").text)
 }
 
 /// An async stream the caller opened (any transport, an in-memory pipe in tests), polled on
@@ -79,7 +80,7 @@ impl Port for AsyncPort {
         self.rt.block_on(async {
             match tokio::time::timeout_at(deadline.into(), s.read_buf(buf)).await {
                 Err(_) => Err(timed_out()),
-                Ok(Ok(0)) => Err(io::Error::new(io::ErrorKind::UnexpectedEof, "the connection closed")),
+                Ok(Ok(0)) => Err(io::Error::new(io::ErrorKind::UnexpectedEof, msg!("link-connection-closed").text)),
                 Ok(r) => r.map(|_| ()),
             }
         })

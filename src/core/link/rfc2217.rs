@@ -14,6 +14,7 @@
 use super::settings::{LineSettings, Parity};
 use super::transport::Transport;
 use crate::core::{Error, Result};
+use crate::msg;
 use std::io::{self, Read, Write};
 use std::net::TcpStream;
 use std::time::{Duration, Instant};
@@ -188,10 +189,11 @@ impl Rfc2217 {
         Ok(l)
     }
 
-    fn refused(&self, what: String) -> Error {
-        Error::link(format!("the RFC 2217 server at {} {what}", self.addr)).hint(
-            "check that the device server's channel is in RFC 2217 mode (or use +tcp:// for a raw TCP channel) and that it supports this baud rate and format",
-        )
+    /// `what`: `confirm`, `agree`, `closed` (with `reason`), `refused`, `baud` (with `got`, `want`).
+    fn refused(&self, what: &str, reason: String, got_want: (u32, u32)) -> Error {
+        let (got, want) = got_want;
+        Error::link(msg!("link-rfc2217", addr = &self.addr, what = what, reason = reason, got = got, want = want))
+            .hint(msg!("link-hint-rfc2217"))
     }
 
     fn negotiate(&mut self, settings: LineSettings, deadline: Instant) -> Result<()> {
@@ -205,14 +207,9 @@ impl Rfc2217 {
         while !(agreed && confirmed.iter().all(|c| *c)) {
             let left = deadline.saturating_duration_since(Instant::now());
             if left.is_zero() {
-                let what = if agreed {
-                    "did not confirm the line settings in time".to_string()
-                } else {
-                    "did not agree to set the serial port (COM-PORT-OPTION) in time".to_string()
-                };
-                return Err(self.refused(what));
+                return Err(self.refused(if agreed { "confirm" } else { "agree" }, String::new(), (0, 0)));
             }
-            self.read_more(left).map_err(|e| self.refused(format!("closed the connection ({e})")))?;
+            self.read_more(left).map_err(|e| self.refused("closed", e.to_string(), (0, 0)))?;
             for ev in std::mem::take(&mut self.events) {
                 match ev {
                     Event::Option { verb: DO, option: COM_PORT } if !agreed => {
@@ -222,7 +219,7 @@ impl Rfc2217 {
                         }
                     }
                     Event::Option { verb: DONT, option: COM_PORT } => {
-                        return Err(self.refused("refused to let this side set the serial port".into()))
+                        return Err(self.refused("refused", String::new(), (0, 0)))
                     }
                     Event::Option { verb, option } => self.answer_option(verb, option)?,
                     Event::Sub { option: COM_PORT, payload } => {
@@ -233,11 +230,11 @@ impl Rfc2217 {
                                 if code == SERVER_OFFSET + SET_BAUDRATE {
                                     let got = value.get(..4).map(|b| u32::from_be_bytes([b[0], b[1], b[2], b[3]]));
                                     if got.is_some_and(|b| b != settings.baud) {
-                                        return Err(self.refused(format!(
-                                            "set {} baud instead of {}",
-                                            got.unwrap_or(0),
-                                            settings.baud
-                                        )));
+                                        return Err(self.refused(
+                                            "baud",
+                                            String::new(),
+                                            (got.unwrap_or(0), settings.baud),
+                                        ));
                                     }
                                 }
                             }
@@ -270,7 +267,7 @@ impl Rfc2217 {
     fn read_more(&mut self, timeout: Duration) -> io::Result<()> {
         self.stream.set_read_timeout(Some(timeout.max(Duration::from_micros(1))))?;
         match self.stream.read(&mut self.raw) {
-            Ok(0) => Err(io::Error::new(io::ErrorKind::UnexpectedEof, "the connection closed")),
+            Ok(0) => Err(io::Error::new(io::ErrorKind::UnexpectedEof, msg!("link-connection-closed").text)),
             Ok(n) => {
                 self.decoder.feed(&self.raw[..n], &mut self.pending, &mut self.events);
                 Ok(())

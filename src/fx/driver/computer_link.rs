@@ -15,6 +15,7 @@ use crate::core::url::DeviceUrl;
 use crate::core::{Device, DeviceInfo, Error, Result, Value};
 use crate::fx::link::{self as fxlink, Cmd, Dev, Header, Reply, Settings};
 use crate::fx::operand::{Area, FxOperand, Width, CN32_FIRST};
+use crate::msg;
 
 /// Judges a complete computer-link reply (seed 004, "FX系列PLC专用协议通信指令格式详解": the
 /// reply repeats the station and PC number; data comes as `STX … ETX sum`, a write is
@@ -24,25 +25,31 @@ use crate::fx::operand::{Area, FxOperand, Width, CN32_FIRST};
 pub(super) fn classify_link(f: &[u8], h: Header, s: Settings, expect: Expect) -> Got {
     match (fxlink::decode_reply(f, h, s), expect) {
         (Ok(Reply::Data(d)), Expect::Data { data, .. }) if d.len() == data => Got::Data(d),
-        (Ok(Reply::Data(d)), Expect::Data { data, .. }) => Got::Other(format!(
-            "a data frame with {} characters of data where {data} were asked for (the reply to another request)",
-            d.len()
-        )),
-        (Ok(Reply::Data(_)), Expect::Ack { .. }) => Got::Other(format!(
-            "a data frame ({}) where ACK should be: a write is done only when the station answers ACK",
-            show(f)
-        )),
+        (Ok(Reply::Data(d)), Expect::Data { data, .. }) => {
+            Got::Other(msg!("fx-reply-other-length", got = d.len(), want = data).text)
+        }
+        (Ok(Reply::Data(_)), Expect::Ack { .. }) => {
+            Got::Other(msg!("fx-reply-data-not-ack-link", bytes = show(f)).text)
+        }
         (Ok(Reply::Ack), Expect::Ack { .. }) => Got::Ack,
-        (Ok(Reply::Ack), Expect::Data { .. }) => Got::Other("ACK where the data should be".into()),
+        (Ok(Reply::Ack), Expect::Data { .. }) => Got::Other(msg!("fx-reply-ack-not-data").text),
         (Ok(Reply::Nak(c)), _) => Got::Nak(Some(c)),
         (Err(fxlink::ReplyError::BadSum { got, want }), _) => {
-            Got::BadSum(format!("sum check {got:02X}, the characters add up to {want:02X}"))
+            Got::BadSum(msg!("fx-reply-sum", got = format!("{got:02X}"), want = format!("{want:02X}")).text)
         }
-        (Err(fxlink::ReplyError::Station { station, pc }), _) => Got::Other(format!(
-            "a reply from station {station} (PC number {pc:02X}) where station {} (PC number {:02X}) should answer",
-            h.station, h.pc
-        )),
-        (Err(fxlink::ReplyError::Malformed(m)), _) => Got::Other(format!("a garbled frame ({}): {m}", show(f))),
+        (Err(fxlink::ReplyError::Station { station, pc }), _) => Got::Other(
+            msg!(
+                "fx-reply-station",
+                station = station,
+                pc = format!("{pc:02X}"),
+                want = h.station,
+                wantpc = format!("{:02X}", h.pc)
+            )
+            .text,
+        ),
+        (Err(fxlink::ReplyError::Malformed(m)), _) => {
+            Got::Other(msg!("fx-reply-garbled", bytes = show(f), reason = fxlink::malformed_text(m)).text)
+        }
     }
 }
 
@@ -106,20 +113,25 @@ impl Driver {
             };
             let dev = Dev { area, index: *s };
             let cmd = if bits { Cmd::Br { dev, count } } else { Cmd::Wr { dev, count } };
-            let what =
-                format!("{} of {count} point(s) from {}", if bits { "BR" } else { "WR" }, dev.text(self.settings()));
+            let what = msg!(
+                "fx-req-link-read",
+                cmd = if bits { "BR" } else { "WR" },
+                count = count,
+                device = dev.text(self.settings())
+            )
+            .text;
             let frame = self.link_frame(&cmd);
             let chars = if bits { count } else { count * dev.unit() };
             let expect = Expect::Data { chars: fxlink::data_reply_chars(chars, self.settings()), data: chars };
             let d = self.transact(&frame, expect, &what)?;
             let values = if bits {
                 if d.len() != count || !d.iter().all(|c| *c == b'0' || *c == b'1') {
-                    return Err(Error::link(format!("bad reply to {what}: {} characters of 0/1 expected", count)));
+                    return Err(Error::link(msg!("fx-bad-bits-reply", what = &what, count = count)));
                 }
                 d.iter().map(|c| (*c == b'1') as u32).collect()
             } else {
                 let v = fxlink::parse_values(&d, dev.unit()).filter(|v| v.len() == count);
-                v.ok_or_else(|| Error::link(format!("bad reply to {what}: {count} hex values expected")))?
+                v.ok_or_else(|| Error::link(msg!("fx-bad-words-reply", what = &what, count = count)))?
             };
             data.push(values);
         }
@@ -170,9 +182,9 @@ impl Driver {
         let st = self.settings();
         for c in cmds {
             let what = match &c {
-                Cmd::Bw { dev, bits } => format!("BW of {} point(s) at {}", bits.len(), dev.text(st)),
-                Cmd::Ww { dev, values } => format!("WW of {} value(s) at {}", values.len(), dev.text(st)),
-                Cmd::Wt { items } => format!("WT of {} value(s)", items.len()),
+                Cmd::Bw { dev, bits } => msg!("fx-req-link-bw", count = bits.len(), device = dev.text(st)).text,
+                Cmd::Ww { dev, values } => msg!("fx-req-link-ww", count = values.len(), device = dev.text(st)).text,
+                Cmd::Wt { items } => msg!("fx-req-link-wt", count = items.len()).text,
                 _ => String::new(),
             };
             let frame = self.link_frame(&c);
@@ -210,11 +222,8 @@ fn hex_param(u: &DeviceUrl, key: &str, default: u8, max: u8) -> Result<u8> {
         Some(v) => {
             let n = if key == "pc" { u8::from_str_radix(v, 16).ok() } else { v.parse::<u8>().ok() };
             n.filter(|n| *n <= max).ok_or_else(|| {
-                Error::usage(format!("`{key}={v}` in {} is out of range", u.text)).hint(match key {
-                    "station" => "station numbers are 0–31".to_string(),
-                    "wait" => "the wait is 0–15 (×10 ms, 0–150 ms)".to_string(),
-                    _ => "the PC number is two hex digits, FF for FX".to_string(),
-                })
+                Error::usage(msg!("fx-param-out-of-range", key = key, value = v, url = &u.text))
+                    .hint(msg!("fx-hint-param", key = key))
             })
         }
     }
@@ -233,17 +242,17 @@ pub(super) fn link_settings(u: &DeviceUrl) -> Result<Settings> {
     let sum = match u.param("sum") {
         None | Some("1") | Some("on") | Some("true") => true,
         Some("0") | Some("off") | Some("false") => false,
-        Some(v) => return Err(Error::usage(format!("`sum={v}` in {} is not 0 or 1", u.text))),
+        Some(v) => return Err(Error::usage(msg!("fx-sum-param", value = v, url = &u.text))),
     };
     let format4 = match u.param("format") {
         None | Some("1") => false,
         Some("4") => true,
-        Some(v) => return Err(Error::usage(format!("`format={v}` in {}: formats 1 and 4 are supported", u.text))),
+        Some(v) => return Err(Error::usage(msg!("fx-format-param", value = v, url = &u.text))),
     };
     let decimal_xy = match u.param("xy") {
         None | Some("octal") => false,
         Some("decimal") => true,
-        Some(v) => return Err(Error::usage(format!("`xy={v}` in {}: octal or decimal", u.text))),
+        Some(v) => return Err(Error::usage(msg!("fx-xy-param", value = v, url = &u.text))),
     };
     Ok(Settings { sum, format4, decimal_xy })
 }
@@ -260,7 +269,7 @@ pub fn open_link(u: &DeviceUrl) -> Result<Box<dyn Device>> {
     let parity = Parity::parse(u.param("parity").unwrap_or("e"));
     let stop = u.param_num::<u8>("stop")?.unwrap_or(1);
     let (Some(parity), true, true, true) = (parity, matches!(bits, 7 | 8), matches!(stop, 1 | 2), baud > 0) else {
-        return Err(Error::usage(format!("{}: bits=7|8, parity=e|o|n, stop=1|2, baud above 0", u.text)));
+        return Err(Error::usage(msg!("fx-line-params", url = &u.text)));
     };
     let line_settings = LineSettings { baud, data_bits: bits, parity, stop_bits: stop };
     let line = lines::shared_serial(&carrier, line_settings)?;

@@ -55,6 +55,7 @@ use crate::core::literal::millis_text;
 use crate::core::trace::{self, Dir, Proto as Wire};
 use crate::core::url::DeviceUrl;
 use crate::core::{Device, DeviceInfo, Error, ErrorKind, Operand, OperandSpace, Result, Value};
+use crate::msg;
 use computer_link::classify_link;
 use programming_port::{classify_port, port_len, Handshake};
 use std::time::{Duration, Instant};
@@ -127,15 +128,15 @@ impl Got {
     /// A few words for the list of attempts in a message.
     fn label(&self) -> String {
         match self {
-            Got::Data(_) => "data".into(),
+            Got::Data(_) => msg!("fx-got", got = "data").text,
             Got::Ack => "ACK".into(),
             Got::Nak(None) => "NAK".into(),
             Got::Nak(Some(c)) => format!("NAK {c:02X}H"),
-            Got::BadSum(_) => "bad sum check".into(),
-            Got::Other(_) => "another reply".into(),
-            Got::Noise(_) => "noise".into(),
-            Got::Partial(_) => "an incomplete reply".into(),
-            Got::Silent { .. } => "silence".into(),
+            Got::BadSum(_) => msg!("fx-got", got = "bad-sum").text,
+            Got::Other(_) => msg!("fx-got", got = "other").text,
+            Got::Noise(_) => msg!("fx-got", got = "noise").text,
+            Got::Partial(_) => msg!("fx-got", got = "partial").text,
+            Got::Silent { .. } => msg!("fx-got", got = "silence").text,
         }
     }
 }
@@ -154,7 +155,7 @@ fn late_text(late: usize) -> String {
     if late == 0 {
         return String::new();
     }
-    format!("; {late} characters came later and were dropped (a late reply is never taken for the next request's)")
+    msg!("fx-late", count = late).text
 }
 
 /// Bytes for a message: `31 × 00H` for a run of one byte, else hex (the first 12 and the count).
@@ -288,23 +289,26 @@ impl Driver {
     /// (`250 ms (timeout=250ms)`, `0.5 ms (timeout=0.5)`).
     fn timeout_text(&self, req: usize, reply: usize) -> String {
         if let (Some(t), Some(given)) = (self.timeout, &self.timeout_given) {
-            return format!("{} (timeout={given})", millis_text(t));
+            return msg!("fx-timeout-given", time = millis_text(t), given = given).text;
         }
         let t = self.timeout_for(req, reply).as_millis();
-        let mut parts = vec![format!(
-            "{} characters at {}: {} ms on the wire",
-            req + reply,
-            self.serial,
-            self.serial.time_of(req + reply).as_millis()
-        )];
+        let mut parts = vec![
+            msg!(
+                "fx-timeout-wire",
+                count = req + reply,
+                serial = self.serial.to_string(),
+                ms = self.serial.time_of(req + reply).as_millis() as u64
+            )
+            .text,
+        ];
         if !self.wait().is_zero() {
-            parts.push(format!("message wait {} ms", self.wait().as_millis()));
+            parts.push(msg!("fx-timeout-wait", ms = self.wait().as_millis() as u64).text);
         }
-        parts.push(format!("{} ms for the PLC to answer", TURNAROUND.as_millis()));
+        parts.push(msg!("fx-timeout-plc", ms = TURNAROUND.as_millis() as u64).text);
         if !self.allowance.is_zero() {
-            parts.push(format!("{} ms for the device server", self.allowance.as_millis()));
+            parts.push(msg!("fx-timeout-server", ms = self.allowance.as_millis() as u64).text);
         }
-        format!("{t} ms ({})", parts.join(", "))
+        msg!("fx-timeout-total", ms = t as u64, parts = parts.join(", ")).text
     }
 
     /// The quiet awaited before a request: a few character times.
@@ -330,14 +334,16 @@ impl Driver {
         let n = t.settle(gap, limit).map_err(|e| self.io_err(e))?;
         self.dropped += n as u64;
         if n > 0 && start.elapsed() >= limit {
-            return Err(Error::link(format!(
-                "the line {} did not go quiet before {what}: {n} characters arrived in {} ms",
-                self.line.name,
-                limit.as_millis()
+            return Err(Error::link(msg!(
+                "fx-not-quiet",
+                line = &self.line.name,
+                what = what,
+                count = n,
+                ms = limit.as_millis() as u64
             ))
             .hint(match &self.mode {
-                Mode::Port { .. } => "only one program may talk to the programming port: close GX Developer, an HMI or a terminal on it; check the cable for noise",
-                Mode::Link { .. } => "plcsh must be the only master on the computer link: stop other programs polling it; check the cable for noise and the RS-485 termination",
+                Mode::Port { .. } => msg!("fx-hint-not-quiet-port"),
+                Mode::Link { .. } => msg!("fx-hint-not-quiet-link"),
             }));
         }
         Ok(n)
@@ -454,22 +460,33 @@ impl Driver {
                 (Got::Ack, Expect::Ack { .. }) => return Ok(Vec::new()),
                 (Got::Silent { late }, _) => {
                     self.desync();
-                    let from = match &self.mode {
-                        Mode::Link { header, .. } => format!(" (station {})", header.station),
+                    let timeout = self.timeout_text(frame.len(), expect.chars());
+                    let line = self.line.name.clone();
+                    let m = match &self.mode {
+                        Mode::Link { header, .. } => msg!(
+                            "fx-no-reply-station",
+                            what = what,
+                            station = header.station,
+                            line = line,
+                            timeout = timeout,
+                            late = late_text(late)
+                        ),
                         Mode::Port { handshake: Handshake::Skip, .. } => {
                             // Probe again next time: the PLC may want ENQ after all.
                             self.mode = Mode::Port { synced: false, handshake: Handshake::Probe };
-                            " (sent without ENQ: it answered no ENQ either)".to_string()
+                            msg!(
+                                "fx-no-reply-no-enq",
+                                what = what,
+                                line = line,
+                                timeout = timeout,
+                                late = late_text(late)
+                            )
                         }
-                        Mode::Port { .. } => String::new(),
+                        Mode::Port { .. } => {
+                            msg!("fx-no-reply", what = what, line = line, timeout = timeout, late = late_text(late))
+                        }
                     };
-                    return Err(Error::link(format!(
-                        "no reply to {what}{from} on {} within {}{}",
-                        self.line.name,
-                        self.timeout_text(frame.len(), expect.chars()),
-                        late_text(late)
-                    ))
-                    .hint(if late > 0 {
+                    return Err(Error::link(m).hint(if late > 0 {
                         self.late_hint(frame.len(), expect.chars())
                     } else {
                         self.silence_hint()
@@ -503,107 +520,107 @@ impl Driver {
             }
         }
         let tries = match (seen.len(), labels.len()) {
-            (1, _) => "1 attempt".to_string(),
-            (n, 1) => format!("{n} attempts"),
-            (n, _) => format!(
-                "{n} attempts: {}",
-                labels.iter().map(|(l, k)| format!("{l} ×{k}")).collect::<Vec<_>>().join(", ")
-            ),
+            (n, 1) | (n @ 1, _) => msg!("fx-attempts", n = n).text,
+            (n, _) => {
+                msg!(
+                    "fx-attempts-list",
+                    n = n,
+                    list = labels.iter().map(|(l, k)| format!("{l} ×{k}")).collect::<Vec<_>>().join(", ")
+                )
+                .text
+            }
         };
-        let who = match &self.mode {
-            Mode::Link { header, .. } => format!("station {}", header.station),
-            Mode::Port { .. } => "the PLC".to_string(),
+        let (who, station) = match &self.mode {
+            Mode::Link { header, .. } => ("station", header.station),
+            Mode::Port { .. } => ("plc", 0),
         };
         match seen.last() {
             Some(Got::Nak(Some(c))) => Error::new(
                 ErrorKind::Refused,
-                format!("{who} answered NAK {c:02X}H to {what} on {name}: {}", fxlink::nak_text(*c)),
+                msg!(
+                    "fx-nak-code",
+                    who = who,
+                    station = station,
+                    code = format!("{c:02X}"),
+                    what = what,
+                    line = name,
+                    meaning = fxlink::nak_text(*c)
+                ),
             )
             .hint(match *c {
-                fxlink::code::AREA => "check the operand against the model (`help OPERAND`)",
-                fxlink::code::PC_NUMBER => "the PC number of an FX is FF (pc=FF)",
-                fxlink::code::SUM | fxlink::code::PROTOCOL => "check the sum check setting (sum=, D8120) and the line's noise",
-                _ => "check the PLC's computer-link settings (D8120, D8121)",
+                fxlink::code::AREA => msg!("fx-hint-nak-area"),
+                fxlink::code::PC_NUMBER => msg!("fx-hint-nak-pc"),
+                fxlink::code::SUM | fxlink::code::PROTOCOL => msg!("fx-hint-nak-sum"),
+                _ => msg!("fx-hint-nak-other"),
             }),
-            Some(Got::Nak(None)) => Error::new(
-                ErrorKind::Refused,
-                format!("the PLC answered NAK to {what} on {name} ({tries}): it refuses a frame with a wrong sum check or an address where it has no device"),
-            )
-            .hint(if self.space.model.extended {
-                "check the operand against the model (`help OPERAND`) and the line's noise; a PLC without the E-commands (E00/E10/E7/E8) answers them NAK: open it as model=FX2N"
-            } else {
-                "check the operand against the model (`help OPERAND`) and the line's noise"
+            Some(Got::Nak(None)) => {
+                Error::new(ErrorKind::Refused, msg!("fx-nak", what = what, line = name, tries = &tries)).hint(
+                    if self.space.model.extended { msg!("fx-hint-nak-extended") } else { msg!("fx-hint-nak-classic") },
+                )
+            }
+            Some(Got::BadSum(m)) => {
+                Error::link(msg!("fx-bad-reply", what = what, line = name, tries = &tries, reason = m)).hint(
+                    match &self.mode {
+                        Mode::Port { .. } => msg!("fx-hint-bad-sum-port"),
+                        Mode::Link { .. } => msg!("fx-hint-bad-sum-link"),
+                    },
+                )
+            }
+            Some(Got::Noise(b)) => {
+                Error::link(msg!("fx-noise", line = name, what = what, tries = &tries, bytes = show(b)))
+                    .hint(msg!("fx-hint-noise", serial = self.serial.to_string()))
+            }
+            Some(Got::Partial(p)) => Error::link(msg!(
+                "fx-incomplete",
+                what = what,
+                line = name,
+                timeout = self.timeout_text(sizes.0, sizes.1),
+                tries = &tries,
+                bytes = show(p)
+            ))
+            .hint(msg!("fx-hint-incomplete", serial = self.serial.to_string())),
+            Some(Got::Other(m)) => Error::link(msg!(
+                "fx-other-reply",
+                who = who,
+                station = station,
+                what = what,
+                line = name,
+                tries = &tries,
+                reason = m
+            ))
+            .hint(match &self.mode {
+                Mode::Port { .. } => msg!("fx-hint-other-port"),
+                Mode::Link { header, .. } => msg!("fx-hint-other-link", station = header.station),
             }),
-            Some(Got::BadSum(m)) => Error::link(format!("bad reply to {what} on {name} ({tries}): {m}"))
-                .hint(match &self.mode {
-                    Mode::Port { .. } => "noise on the line or a wrong baud rate/parity (the port runs 7E1)",
-                    Mode::Link { .. } => "noise on the line, or a baud rate or character format that differs from the PLC's (D8120)",
-                }),
-            Some(Got::Noise(b)) => Error::link(format!(
-                "noise on the line {name} instead of a reply to {what} ({tries}): {} — characters that cannot start a reply (00H is what a serial port delivers for a character with a parity or framing error)",
-                show(b)
-            ))
-            .hint(format!(
-                "check the cable's shield and ground, the converter's power and the RS-422/485 termination, and that the PLC runs {} (a different baud rate or format also reads as noise)",
-                self.serial
-            )),
-            Some(Got::Partial(p)) => Error::link(format!(
-                "incomplete reply to {what} on {name} within {} ({tries}): only {} came",
-                self.timeout_text(sizes.0, sizes.1),
-                show(p)
-            ))
-            .hint(format!("check the baud rate ({}), or raise the timeout (timeout= in the URL)", self.serial)),
-            Some(Got::Other(m)) => Error::link(format!("{who} answered {what} on {name} with something else ({tries}): {m}"))
-                .hint(match &self.mode {
-                    Mode::Port { .. } => "only one program may talk to the programming port: close GX Developer, an HMI or a terminal on it".to_string(),
-                    Mode::Link { header, .. } => format!(
-                        "check that no other station is set to station {} (D8121) and that no other program polls this line; a reply that comes after the timeout belongs to an earlier request (raise timeout=)",
-                        header.station
-                    ),
-                }),
-            _ => Error::link(format!("no usable reply to {what} on {name} ({tries})")),
+            _ => Error::link(msg!("fx-no-usable-reply", what = what, line = name, tries = &tries)),
         }
     }
 
     fn late_hint(&self, req: usize, reply: usize) -> String {
         let t = self.timeout_for(req, reply);
-        format!(
-            "the PLC answers later than {}: raise the timeout (timeout={} in the URL), or check its scan time (D8012)",
-            millis_text(t),
-            millis_text(2 * t).replace(' ', "")
-        )
+        msg!("fx-hint-late", time = millis_text(t), twice = millis_text(2 * t).replace(' ', "")).text
     }
 
     fn silence_hint(&self) -> String {
         match &self.mode {
-            Mode::Port { .. } => {
-                format!("check the cable, that this is the programming port, and that it runs {}", self.serial)
-            }
-            Mode::Link { header, .. } => format!(
-                "check station {} (the PLC's D8121), PC number FF, the baud rate and format (D8120), and the sum check setting",
-                header.station
-            ),
+            Mode::Port { .. } => msg!("fx-hint-silent-port", serial = self.serial.to_string()).text,
+            Mode::Link { header, .. } => msg!("fx-hint-silent-link", station = header.station).text,
         }
     }
 }
 
 fn read_only(o: &FxOperand) -> Error {
-    Error::unsupported(format!("{} ({}) cannot be set", o.canonical(), o.area.spec().meaning)).operand(o.canonical())
+    Error::unsupported(msg!("fx-read-only", operand = o.canonical(), meaning = o.area.meaning().text))
+        .operand(o.canonical())
 }
 
 /// A write to a special device the CPU rewrites every scan: a real PLC ignores it, so it is
 /// refused here with what to do instead.
 fn driven_by_plc(o: &FxOperand, index: u16) -> Error {
     let name = format!("{}{index}", o.area.name());
-    let what = super::operand::special_meaning(o.area, index).unwrap_or("a special device");
-    let hint = if o.area == Area::M && index <= 8003 {
-        "RUN/STOP is the PLC's switch: on the simulator `sim cpu stop` / `sim cpu run`"
-    } else {
-        "the PLC sets it every scan; read it, or use an ordinary M or D for your own flags"
-    };
-    Error::unsupported(format!("{name} — {what} — is driven by the PLC: a write would be ignored"))
-        .operand(o.canonical())
-        .hint(hint)
+    let what = super::operand::special_meaning(o.area, index).unwrap_or_else(|| msg!("fx-special-device"));
+    let hint = if o.area == Area::M && index <= 8003 { msg!("fx-hint-run-stop") } else { msg!("fx-hint-driven") };
+    Error::unsupported(msg!("fx-driven-by-plc", operand = name, meaning = what.text)).operand(o.canonical()).hint(hint)
 }
 
 impl Device for Driver {
@@ -670,11 +687,9 @@ impl Device for Driver {
                     .parse()
                     .ok()
                     .filter(|r| *r <= 10)
-                    .ok_or_else(|| Error::usage(format!("retries `{value}` must be 0–10")))?
+                    .ok_or_else(|| Error::usage(msg!("fx-retries", value = value)))?
             }
-            _ => {
-                return Err(Error::usage(format!("fx devices have no option `{key}`")).hint("options: timeout, retries"))
-            }
+            _ => return Err(Error::usage(msg!("fx-no-option", key = key)).hint(msg!("fx-hint-options"))),
         }
         Ok(())
     }

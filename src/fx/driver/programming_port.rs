@@ -20,6 +20,7 @@ use crate::core::url::DeviceUrl;
 use crate::core::{Device, DeviceInfo, Error, ErrorKind, Result, Value};
 use crate::fx::operand::{FxOperand, Width};
 use crate::fx::port::{self, Request, Table, ACK, ENQ, NAK};
+use crate::msg;
 
 /// How long the programming-port reply at the start of `f` is (`f` starts with STX, ACK or
 /// NAK): ACK and NAK are one character, a data frame ends two characters after ETX.
@@ -41,14 +42,16 @@ pub(super) fn classify_port(f: &[u8], expect: Expect) -> Got {
     match (f[0], expect) {
         (NAK, _) => Got::Nak(None),
         (ACK, Expect::Ack { .. }) => Got::Ack,
-        (ACK, Expect::Data { .. }) => Got::Other("ACK where the data should be".into()),
-        (_, Expect::Ack { .. }) => Got::Other(format!("a data frame ({}) where ACK should be", show(f))),
+        (ACK, Expect::Data { .. }) => Got::Other(msg!("fx-reply-ack-not-data").text),
+        (_, Expect::Ack { .. }) => Got::Other(msg!("fx-reply-data-not-ack", bytes = show(f)).text),
         (_, Expect::Data { data, .. }) => match port::decode_read_reply(f, data) {
             Ok(d) => Got::Data(d),
             Err(port::FrameError::BadSum { got, want }) => {
-                Got::BadSum(format!("sum check {got:02X}, the characters add up to {want:02X}"))
+                Got::BadSum(msg!("fx-reply-sum", got = format!("{got:02X}"), want = format!("{want:02X}")).text)
             }
-            Err(port::FrameError::Malformed(m)) => Got::Other(format!("a garbled frame ({}): {m}", show(f))),
+            Err(port::FrameError::Malformed(m)) => {
+                Got::Other(msg!("fx-reply-garbled", bytes = show(f), reason = crate::fx::link::malformed_text(m)).text)
+            }
         },
     }
 }
@@ -100,12 +103,8 @@ impl Driver {
             }
         }
         if seen.iter().all(|g| *g == Got::Nak(None)) {
-            return Err(Error::link(format!(
-                "the PLC answered ENQ with NAK {} times on {}",
-                seen.len(),
-                self.line.name
-            ))
-            .hint("another program may be talking to the programming port"));
+            return Err(Error::link(msg!("fx-enq-nak", count = seen.len(), line = &self.line.name))
+                .hint(msg!("fx-hint-enq-nak")));
         }
         Err(self.failure("ENQ", &seen, (1, 1)))
     }
@@ -124,7 +123,7 @@ impl Driver {
             .iter()
             .map(|o| {
                 port::place(table, o)
-                    .ok_or_else(|| Error::new(ErrorKind::Range, "past the address table").operand(o.canonical()))
+                    .ok_or_else(|| Error::new(ErrorKind::Range, msg!("fx-past-table")).operand(o.canonical()))
             })
             .collect::<Result<_>>()?;
         let mut order: Vec<usize> = (0..ops.len()).collect();
@@ -162,8 +161,9 @@ impl Driver {
             let count = (e - s) as u8;
             let req = Request::Read { table, addr: *s, count };
             let expect = Expect::Data { chars: req.reply_len(), data: count as usize };
-            let kind = if table == Table::Extended { "an E00 read" } else { "a read" };
-            let bytes = self.transact(&req.encode(), expect, &format!("{kind} of {count} bytes at {s:04X}H"))?;
+            let kind = if table == Table::Extended { "e00" } else { "read" };
+            let what = msg!("fx-req-port", kind = kind, count = count, address = format!("{s:04X}")).text;
+            let bytes = self.transact(&req.encode(), expect, &what)?;
             data.push(bytes);
         }
         Ok(ops
@@ -187,7 +187,7 @@ impl Driver {
         for (o, v) in items {
             let raw = o.view.encode(v) as u64;
             let p = port::place(table, o)
-                .ok_or_else(|| Error::new(ErrorKind::Range, "past the address table").operand(o.canonical()))?;
+                .ok_or_else(|| Error::new(ErrorKind::Range, msg!("fx-past-table")).operand(o.canonical()))?;
             match o.width {
                 Width::Bit => {
                     let addr = port::force_address(table, o.area, o.index).ok_or_else(|| read_only(o))?;
@@ -235,17 +235,20 @@ fn push_write(frames: &mut Vec<(Request, String)>, table: Table, addr: u16, data
     if let Some((Request::Write { addr: a, data: d, .. }, what)) = frames.last_mut() {
         if *a as usize + d.len() == addr as usize && d.len() + data.len() <= port::MAX_BYTES {
             d.extend(data);
-            *what = format!("{} of {} bytes at {a:04X}H", write_kind(table), d.len());
+            *what = msg!("fx-req-port", kind = write_kind(table), count = d.len(), address = format!("{a:04X}")).text;
             return;
         }
     }
-    frames.push((Request::Write { table, addr, data }, format!("{} of {}", write_kind(table), o.canonical())));
+    frames.push((
+        Request::Write { table, addr, data },
+        msg!("fx-req-port-operand", kind = write_kind(table), operand = o.canonical()).text,
+    ));
 }
 
 fn write_kind(table: Table) -> &'static str {
     match table {
-        Table::Classic => "a write",
-        Table::Extended => "an E10 write",
+        Table::Classic => "write",
+        Table::Extended => "e10",
     }
 }
 
@@ -256,7 +259,7 @@ pub fn open_port(u: &DeviceUrl) -> Result<Box<dyn Device>> {
     let model = model_of(u, None)?;
     let baud = u.param_num::<u32>("baud")?.unwrap_or(9600);
     if baud == 0 {
-        return Err(Error::usage(format!("`baud=0` in {}: the baud rate must be positive", u.text)));
+        return Err(Error::usage(msg!("fx-baud-zero", url = &u.text)));
     }
     let settings = LineSettings { baud, data_bits: 7, parity: Parity::Even, stop_bits: 1 };
     let line = lines::shared_serial(&carrier, settings)?;

@@ -11,6 +11,7 @@ use crate::core::{Clock, Device, DeviceInfo, Error, Result};
 use crate::fx::memory::Memory;
 use crate::fx::model::Model;
 use crate::fx::sim::{LinkServer, Plc, PortServer, Server, SimLink};
+use crate::msg;
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex, OnceLock, Weak};
 
@@ -28,7 +29,7 @@ pub fn sim_plc(model: &'static Model, share: Option<&str>, clock: &Clock) -> Res
     if let Some(p) = reg.get(name).and_then(Weak::upgrade) {
         let m = p.lock().unwrap_or_else(|e| e.into_inner()).model.name;
         if m != model.name {
-            return Err(Error::usage(format!("simulated PLC `{name}` is an {m}, not an {}", model.name)));
+            return Err(Error::usage(msg!("fx-sim-other-model", name = name, model = m, want = model.name)));
         }
         return Ok(p);
     }
@@ -45,7 +46,7 @@ pub fn open_sim(u: &DeviceUrl, clock: &Clock) -> Result<Box<dyn Device>> {
     let plc = sim_plc(model, u.param("share"), clock)?;
     if let Some(p) = u.param("program") {
         let text = crate::core::encoding::read_source(p)
-            .map_err(|e| Error::io(format!("{}: cannot read {p}: {e}", u.text)))?;
+            .map_err(|e| Error::io(msg!("fx-cannot-read-program", url = &u.text, file = p, reason = e.to_string())))?;
         let loaded = crate::fx::program::Loaded::load(&text, p, model)?;
         plc.lock().unwrap_or_else(|e| e.into_inner()).load_program(loaded);
     }
@@ -53,7 +54,7 @@ pub fn open_sim(u: &DeviceUrl, clock: &Clock) -> Result<Box<dyn Device>> {
     let link = match u.param("protocol") {
         None | Some("port") => false,
         Some("link") => true,
-        Some(p) => return Err(Error::usage(format!("`protocol={p}` in {}: port or link", u.text))),
+        Some(p) => return Err(Error::usage(msg!("fx-protocol-param", value = p, url = &u.text))),
     };
     let info = |what: &str| DeviceInfo {
         family: "fx",

@@ -25,6 +25,7 @@ use super::faults::{FaultKind, LineFault};
 use super::SimLine;
 use crate::core::literal::parse_option_duration_us;
 use crate::core::{Error, ErrorKind, Result};
+use crate::msg;
 use crate::servo::objects;
 use serde_json::{json, Value as Json};
 use std::path::Path;
@@ -80,7 +81,7 @@ fn number(text: &str, col: usize) -> Result<i64> {
     } else {
         t.parse::<i64>().ok().or_else(|| t.parse::<f64>().ok().filter(|f| f.fract() == 0.0).map(|f| f as i64))
     };
-    r.ok_or_else(|| usage(format!("`{text}` is not a number"), col))
+    r.ok_or_else(|| usage(msg!("servo-sim-not-number", text = text), col))
 }
 
 /// Parses the words after `servo sim` (each with its column).
@@ -91,7 +92,7 @@ pub fn parse(words: &[(usize, &str)]) -> Result<Request> {
     for &(c, w) in words {
         match w.split_once('=') {
             Some(("id", v)) => {
-                id = Some(u8::try_from(number(v, c + 3)?).map_err(|_| usage("a drive id is 0-255", c + 3))?)
+                id = Some(u8::try_from(number(v, c + 3)?).map_err(|_| usage(msg!("servo-sim-id-range"), c + 3))?)
             }
             Some((k, v)) => opts.push((c, k, v)),
             None => pos.push((c, w)),
@@ -100,7 +101,7 @@ pub fn parse(words: &[(usize, &str)]) -> Result<Request> {
     let opt = |k: &str| opts.iter().find(|o| o.1 == k).map(|o| (o.0 + k.len() + 1, o.2));
     let known = |allowed: &[&str]| -> Result<()> {
         match opts.iter().find(|o| !allowed.contains(&o.1)) {
-            Some(&(c, k, _)) => Err(usage(format!("unknown option `{k}`"), c)),
+            Some(&(c, k, _)) => Err(usage(msg!("servo-sim-unknown-option", key = k), c)),
             None => Ok(()),
         }
     };
@@ -113,7 +114,7 @@ pub fn parse(words: &[(usize, &str)]) -> Result<Request> {
                 .ok()
                 .filter(|n| *n > 0)
                 .map(Some)
-                .ok_or_else(|| usage("count is 1 or more, or all", c)),
+                .ok_or_else(|| usage(msg!("servo-sim-count"), c)),
         }
     };
     let first = pos.first().copied().unwrap_or((0, ""));
@@ -136,19 +137,17 @@ pub fn parse(words: &[(usize, &str)]) -> Result<Request> {
                         [] => Control::Line(k, count()?),
                         [(_, w)] if w.eq_ignore_ascii_case("all") => {
                             if let Some((oc, _)) = opt("count").or_else(|| opt("times")) {
-                                return Err(usage("say `all` or count=N, not both", oc));
+                                return Err(usage(msg!("servo-sim-all-and-count"), oc));
                             }
                             Control::Line(k, None)
                         }
-                        [(c, w), ..] => {
-                            return Err(usage(format!("unexpected `{w}` after `fault {kind}`: say all or count=N"), *c))
-                        }
+                        [(c, w), ..] => return Err(usage(msg!("servo-sim-fault-extra", word = *w, kind = kind), *c)),
                     }
                 }
                 "delay" | "late" => {
                     known(&["count", "times"])?;
                     let &[(c, d)] = args else {
-                        return Err(usage(format!("fault {kind} needs one duration, e.g. fault {kind} 50ms"), first.0));
+                        return Err(usage(msg!("servo-sim-fault-duration", kind = kind), first.0));
                     };
                     let us = parse_option_duration_us(d).map_err(|m| usage(m, c))?;
                     Control::Line(FaultKind::Delay(Duration::from_micros(us.max(0) as u64)), count()?)
@@ -156,10 +155,10 @@ pub fn parse(words: &[(usize, &str)]) -> Result<Request> {
                 "abort" => {
                     known(&["count", "times"])?;
                     let &[(oc, o), (cc, code)] = args else {
-                        return Err(usage("fault abort needs an object and an abort code, e.g. fault abort target_position 16#06090030", first.0));
+                        return Err(usage(msg!("servo-sim-fault-abort"), first.0));
                     };
                     let r = objects::parse(o).map_err(|e| e.column(oc))?;
-                    let code = u32::try_from(number(code, cc)?).map_err(|_| usage("an abort code is 32 bits", cc))?;
+                    let code = u32::try_from(number(code, cc)?).map_err(|_| usage(msg!("servo-sim-abort-bits"), cc))?;
                     Control::Line(FaultKind::Abort { index: r.index, sub: r.sub, code }, count()?)
                 }
                 "clear" => Control::ClearFaults,
@@ -190,22 +189,22 @@ pub fn parse(words: &[(usize, &str)]) -> Result<Request> {
         }
         ("pulses", []) => {
             known(&["freq", "count", "dir"])?;
-            let (fc, f) = opt("freq").ok_or_else(|| usage("pulses needs freq=HZ", first.0))?;
-            let (cc, n) = opt("count").ok_or_else(|| usage("pulses needs count=N", first.0))?;
+            let (fc, f) = opt("freq").ok_or_else(|| usage(msg!("servo-sim-pulses-freq"), first.0))?;
+            let (cc, n) = opt("count").ok_or_else(|| usage(msg!("servo-sim-pulses-count"), first.0))?;
             let freq = f.trim_end_matches("Hz").trim_end_matches("hz").parse::<f64>().ok().filter(|f| *f > 0.0);
-            let freq = freq.ok_or_else(|| usage(format!("`{f}` is not a frequency in Hz"), fc))?;
-            let count = u64::try_from(number(n, cc)?).map_err(|_| usage("count is 0 or more", cc))?;
+            let freq = freq.ok_or_else(|| usage(msg!("servo-sim-not-freq", text = f), fc))?;
+            let count = u64::try_from(number(n, cc)?).map_err(|_| usage(msg!("servo-sim-pulse-count"), cc))?;
             let dir = match opt("dir") {
                 None | Some((_, "fwd" | "+" | "cw" | "1")) => 1,
                 Some((_, "rev" | "-" | "ccw" | "-1")) => -1,
-                Some((c, d)) => return Err(usage(format!("`dir={d}` is not fwd or rev"), c)),
+                Some((c, d)) => return Err(usage(msg!("servo-sim-not-dir", dir = d), c)),
             };
             Control::Pulses { freq, count, dir }
         }
         ("events", []) => Control::Events,
         ("strict", [(_, "on")]) => Control::Strict(true),
         ("strict", [(_, "off")]) => Control::Strict(false),
-        (w, _) => return Err(usage(format!("unknown `servo sim {w}`"), first.0)),
+        (w, _) => return Err(usage(msg!("servo-sim-unknown-word", word = w), first.0)),
     };
     Ok(Request { control, id })
 }
@@ -222,7 +221,7 @@ fn drive_fault(code: Option<(usize, &str)>) -> Result<Control> {
     Ok(Control::DriveFault(match code {
         None => DEFAULT_FAULT,
         Some((c, s)) => u16::try_from(number(s, c)?)
-            .map_err(|_| Error::new(ErrorKind::Value, "a fault code is 16 bits").column(c))?,
+            .map_err(|_| Error::new(ErrorKind::Value, msg!("servo-sim-fault-bits")).column(c))?,
     }))
 }
 
@@ -250,19 +249,21 @@ pub fn apply(line: &mut SimLine, req: &Request, default_id: Option<u8>) -> Resul
     let drive_id = || -> Result<u8> {
         match id {
             Some(i) if line.ids().contains(&i) => Ok(i),
-            Some(i) => Err(Error::usage(format!("no simulated drive has id {i} (ids {:?})", line.ids()))),
+            Some(i) => Err(Error::usage(msg!("servo-sim-no-drive", id = i, ids = format!("{:?}", line.ids())))),
             None => match line.ids().as_slice() {
                 [one] => Ok(*one),
-                ids => Err(Error::usage(format!("several drives ({ids:?}) on the line: say which with id=N"))),
+                ids => Err(Error::usage(msg!("servo-sim-several-drives", ids = format!("{ids:?}")))),
             },
         }
     };
-    let who = |i: Option<u8>| i.map(|i| format!("drive id {i}")).unwrap_or_else(|| "every drive".into());
     Ok(match &req.control {
         Control::DriveFault(code) => {
             let i = drive_id()?;
             line.inject_fault(i, *code);
-            (format!("drive id {i}: fault 16#{code:04X} injected"), json!({"fault": code, "id": i}))
+            (
+                msg!("servo-sim-fault-injected", id = i, code = format!("{code:04X}")).text,
+                json!({"fault": code, "id": i}),
+            )
         }
         Control::DriveFaultAt(code, pos) => {
             let i = drive_id()?;
@@ -271,7 +272,7 @@ pub fn apply(line: &mut SimLine, req: &Request, default_id: Option<u8>) -> Resul
             d.advance(t);
             d.faults_at.push((*pos, *code));
             (
-                format!("drive id {i}: fault 16#{code:04X} armed at position {pos} inc"),
+                msg!("servo-sim-fault-armed", id = i, code = format!("{code:04X}"), position = pos.to_string()).text,
                 json!({"fault": code, "at": *pos as i64, "id": i}),
             )
         }
@@ -283,13 +284,20 @@ pub fn apply(line: &mut SimLine, req: &Request, default_id: Option<u8>) -> Resul
                 let d = line.drive(i).expect("listed id");
                 d.advance(t);
                 for &(te, x, code) in &d.fault_events {
-                    rows.push(format!(
-                        "{te:.6}s  drive id {i}: fault 16#{code:04X} at position {x} inc (armed fault acted)"
-                    ));
+                    rows.push(
+                        msg!(
+                            "servo-sim-fault-acted",
+                            time = format!("{te:.6}"),
+                            id = i,
+                            code = format!("{code:04X}"),
+                            position = x.to_string()
+                        )
+                        .text,
+                    );
                     list.push(json!({"time_s": te, "id": i, "fault": code, "at": x as i64}));
                 }
             }
-            let text = if rows.is_empty() { "no armed fault has acted".to_string() } else { rows.join("\n") };
+            let text = if rows.is_empty() { msg!("servo-sim-no-fault-acted").text } else { rows.join("\n") };
             (text, json!({"events": list}))
         }
         Control::Line(kind, count) => {
@@ -297,19 +305,25 @@ pub fn apply(line: &mut SimLine, req: &Request, default_id: Option<u8>) -> Resul
                 drive_id()?; // an id must name a drive on the line
             }
             line.faults.add(LineFault { kind: *kind, id, remaining: *count });
-            let n = match count {
-                Some(1) => "the next request".to_string(),
-                Some(n) => format!("the next {n} requests"),
-                None => "every request until `servo sim fault clear`".to_string(),
+            let (scope, n) = match count {
+                Some(1) => ("one", 1),
+                Some(n) => ("many", *n),
+                None => ("every", 0),
             };
-            (
-                format!("{}: {} for {n}", who(id), kind.describe()),
-                json!({"line_fault": kind.describe(), "count": count, "id": id}),
-            )
+            let text = msg!(
+                "servo-sim-line-fault",
+                scope = if id.is_some() { "one" } else { "all" },
+                id = id.unwrap_or(0),
+                fault = kind.describe(),
+                count = scope,
+                n = n
+            );
+            let english = kind.describe_in(crate::core::msg::Lang::En);
+            (text.text, json!({"line_fault": english, "count": count, "id": id}))
         }
         Control::ClearFaults => {
             line.faults.clear();
-            ("line faults cleared".into(), json!({"cleared": true}))
+            (msg!("servo-sim-faults-cleared").text, json!({"cleared": true}))
         }
         Control::Switch(which, pos) => {
             let i = drive_id()?;
@@ -317,37 +331,48 @@ pub fn apply(line: &mut SimLine, req: &Request, default_id: Option<u8>) -> Resul
             let (name, key) = match which {
                 Which::Home => {
                     d.switches.home = pos.unwrap_or(d.switches.home);
-                    ("home switch", "home_switch")
+                    ("home", "home_switch")
                 }
                 Which::NegLimit => {
                     d.switches.neg_limit = *pos;
-                    ("negative limit switch", "neg_limit")
+                    ("neg", "neg_limit")
                 }
                 Which::PosLimit => {
                     d.switches.pos_limit = *pos;
-                    ("positive limit switch", "pos_limit")
+                    ("pos", "pos_limit")
                 }
             };
-            let at = pos.map(|p| format!("at {p} inc")).unwrap_or_else(|| "off".into());
             let mut data = json!({"id": i});
             data[key] = json!(pos.map(|p| p as i64));
-            (format!("drive id {i}: {name} {at}"), data)
+            let text = msg!(
+                "servo-sim-switch",
+                id = i,
+                switch = name,
+                position = if pos.is_some() { "at" } else { "off" },
+                at = pos.map(|p| p.to_string()).unwrap_or_default()
+            );
+            (text.text, data)
         }
         Control::Pulses { freq, count, dir } => {
             let i = drive_id()?;
             let (start, end) = line.add_pulses(i, *freq, *count, *dir).map_err(Error::usage)?;
             (
-                format!(
-                    "drive id {i}: {count} pulses at {freq} Hz {} from t={start:.6} s to t={end:.6} s",
-                    if *dir < 0 { "reverse" } else { "forward" }
-                ),
+                msg!(
+                    "servo-sim-pulses",
+                    id = i,
+                    count = *count,
+                    freq = freq.to_string(),
+                    dir = if *dir < 0 { "reverse" } else { "forward" },
+                    start = format!("{start:.6}"),
+                    end = format!("{end:.6}")
+                )
+                .text,
                 json!({"pulses": count, "freq": freq, "dir": dir, "start_s": start, "end_s": end, "id": i}),
             )
         }
         Control::Strict(on) => {
             line.set_strict(*on);
-            let rule = if *on { "sizes must match the object (0x06070010 otherwise)" } else { "lenient sizes" };
-            (format!("write sizes: {rule}"), json!({"strict": on}))
+            (msg!("servo-sim-strict", strict = if *on { "on" } else { "off" }).text, json!({"strict": on}))
         }
     })
 }

@@ -6,7 +6,8 @@
 //! Each fault matches requests by drive id (any id when none is given) and, for an abort,
 //! by object; it applies to the next `count` matching requests (`None`: until cleared).
 
-use crate::servo::frame::abort_text;
+use crate::msg;
+use crate::servo::frame::abort_text_in;
 use std::time::Duration;
 
 /// What goes wrong.
@@ -25,15 +26,32 @@ pub enum FaultKind {
 }
 
 impl FaultKind {
+    /// The fault in words, in the current language.
     pub fn describe(&self) -> String {
+        self.describe_in(crate::core::msg::language())
+    }
+
+    /// The fault in words, in `lang` (JSON keeps English: scripts read it).
+    pub fn describe_in(&self, lang: crate::core::msg::Lang) -> String {
         match self {
-            FaultKind::NoReply => "no reply".into(),
-            FaultKind::BadChecksum => "bad checksum in the reply".into(),
-            FaultKind::Delay(d) => format!("reply delayed by {} ms", d.as_millis()),
-            FaultKind::Abort { index, sub, code } => {
-                format!("abort 16#{code:08X} ({}) for {index:04X}.{sub:02X}", abort_text(*code))
+            FaultKind::NoReply => msg!(lang: lang, "servo-sim-fault-kind", kind = "no-reply").text,
+            FaultKind::BadChecksum => msg!(lang: lang, "servo-sim-fault-kind", kind = "bad-checksum").text,
+            FaultKind::Delay(d) => {
+                msg!(lang: lang, "servo-sim-fault-kind", kind = "delay", ms = d.as_millis() as u64).text
             }
-            FaultKind::DropEcho => "echo dropped".into(),
+            FaultKind::Abort { index, sub, code } => {
+                let meaning = abort_text_in(lang, *code);
+                msg!(
+                    lang: lang,
+                    "servo-sim-fault-kind",
+                    kind = "abort",
+                    code = format!("{code:08X}"),
+                    meaning = meaning,
+                    object = format!("{index:04X}.{sub:02X}")
+                )
+                .text
+            }
+            FaultKind::DropEcho => msg!(lang: lang, "servo-sim-fault-kind", kind = "drop-echo").text,
         }
     }
 }

@@ -7,6 +7,8 @@
 //! zero-search speed (6099.02) to the edge or index pulse; the simulator makes one pass at
 //! the switch speed to the same end point, so homing takes slightly less time than on a drive.
 
+use crate::msg;
+
 /// The simulated switches, in position coordinates (increments).
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Switches {
@@ -67,8 +69,8 @@ pub fn plan(method: i8, p: f64, sw: &Switches, resolution: f64) -> Result<Plan, 
     let r = resolution.max(1.0);
     Ok(match method {
         // 17/18: the negative/positive limit switch's edge.
-        17 => Plan { target: sw.neg_limit.ok_or("method 17 needs a negative limit switch")?, onto: Onto::NegLimit },
-        18 => Plan { target: sw.pos_limit.ok_or("method 18 needs a positive limit switch")?, onto: Onto::PosLimit },
+        17 => Plan { target: sw.neg_limit.ok_or_else(|| msg!("servo-sim-homing-neg").text)?, onto: Onto::NegLimit },
+        18 => Plan { target: sw.pos_limit.ok_or_else(|| msg!("servo-sim-homing-pos").text)?, onto: Onto::PosLimit },
         // 19-22: the home switch's edge (19/20 approach it from below, 21/22 from above;
         // the end point is the same edge).
         19..=22 => Plan { target: sw.home, onto: Onto::Nothing },
@@ -78,10 +80,12 @@ pub fn plan(method: i8, p: f64, sw: &Switches, resolution: f64) -> Result<Plan, 
         // 35 (37 in newer CiA 402 editions): the current position is home.
         35 | 37 => Plan { target: p, onto: Onto::Nothing },
         m => {
-            return Err(format!(
-                "homing method {m} is not simulated (methods {})",
-                METHODS.iter().map(|m| m.to_string()).collect::<Vec<_>>().join(", ")
-            ))
+            return Err(msg!(
+                "servo-sim-homing-method",
+                method = m,
+                methods = METHODS.iter().map(|m| m.to_string()).collect::<Vec<_>>().join(", ")
+            )
+            .text)
         }
     })
 }

@@ -24,6 +24,7 @@ pub mod wired;
 use super::frame::{func, Frame, FrameBuffer, FRAME_LEN};
 use crate::core::link::line::Transport;
 use crate::core::Clock;
+use crate::msg;
 use drive::Drive;
 use faults::LineFaults;
 use std::collections::VecDeque;
@@ -184,7 +185,7 @@ impl SimLine {
     /// after pulses still arriving); returns when they start and end (virtual seconds).
     pub fn add_pulses(&mut self, id: u8, freq: f64, count: u64, dir: i8) -> Result<(f64, f64), String> {
         let t = self.now();
-        self.drive(id).ok_or_else(|| format!("no drive id {id}"))?.add_pulses(t, freq, count, dir)
+        self.drive(id).ok_or_else(|| msg!("servo-sim-no-drive-short", id = id).text)?.add_pulses(t, freq, count, dir)
     }
 }
 

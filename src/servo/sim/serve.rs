@@ -28,6 +28,7 @@ use crate::core::link::line::Transport;
 use crate::core::link::served::{ServeOn, Served};
 use crate::core::trace::{self, Dir};
 use crate::core::{Clock, Result};
+use crate::msg;
 use crate::servo::frame::FrameBuffer;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -147,7 +148,12 @@ pub fn serve_on_line(
             let answer: control_channel::Answer = Arc::new(move |text: &str| {
                 control::answer_line(&mut line.lock().unwrap_or_else(|p| p.into_inner()), text)
             });
-            Some(control_channel::Channel::open(&p, "the servo control socket", answer, stop.clone())?)
+            Some(control_channel::Channel::open(
+                &p,
+                &msg!("link-channel-name", device = "servo"),
+                answer,
+                stop.clone(),
+            )?)
         }
         None => None,
     };

@@ -5,6 +5,7 @@
 use super::SimLine;
 use crate::core::signal::PulseTrain;
 use crate::core::wiring::{DriveOut, Peer, Piece, Switch};
+use crate::msg;
 use crate::servo::ds402::State;
 use std::sync::{Arc, Mutex};
 
@@ -126,8 +127,8 @@ impl Peer for DrivePeer {
 
     fn check_pulse_input(&mut self) -> Result<(), String> {
         match self.with(|d| d.pulse_mode()) {
-            None => Err(format!("no drive id {} on the simulated line", self.id)),
-            Some(2 | 12) => Err("the drive's pulse input is set to A/B (2508.03 = 2); a PLC pulse output is pulse + direction: set 2508.03 to 1 first".into()),
+            None => Err(msg!("servo-sim-no-drive-id", id = self.id).text),
+            Some(2 | 12) => Err(msg!("servo-sim-pulse-ab").text),
             Some(_) => Ok(()),
         }
     }

@@ -20,13 +20,14 @@
 use super::{Umpk, CYCLE_MS};
 use crate::core::sim_faults;
 use crate::core::{Error, Result};
+use crate::msg;
 use serde_json::{json, Value as Json};
 
 /// The control words, for messages.
 pub const WORDS: &str = "input I3=1|I3=0|I3 freq=2Hz | inputs | flash-fail PAGE|off | fault no-reply [for=D] | fault stuck I3=1 [for=D] | fault clear | faults | events";
 
 fn usage(msg: impl Into<crate::core::error::Text>) -> Error {
-    Error::usage(msg).hint(format!("control words: {WORDS}"))
+    Error::usage(msg).hint(msg!("umpk-sim-hint-words", words = WORDS))
 }
 
 fn input_of(u: &Umpk, text: &str) -> Result<u8> {
@@ -38,9 +39,9 @@ fn parse_input(model: &crate::umpk::model::Model, inputs: u8, text: &str) -> Res
     let n = t
         .strip_prefix(['I', 'i'])
         .and_then(|d| d.parse::<u8>().ok())
-        .ok_or_else(|| usage(format!("`{t}` is not an input (I0…I{})", inputs - 1)))?;
+        .ok_or_else(|| usage(msg!("umpk-sim-not-input", text = t, last = inputs - 1)))?;
     if n >= inputs {
-        return Err(usage(format!("I{n} is not an input of the {} (I0…I{})", model.name, inputs - 1)));
+        return Err(usage(msg!("umpk-sim-no-such-input", n = n, model = model.name, last = inputs - 1)));
     }
     Ok(n)
 }
@@ -66,7 +67,7 @@ pub fn answer(u: &mut Umpk, text: &str) -> Result<(String, Json)> {
     }
     match words.first().map(|w| w.to_ascii_lowercase()).as_deref() {
         Some("input") => {
-            let first = words.get(1).ok_or_else(|| usage("input needs an input and a level: input I3=1"))?;
+            let first = words.get(1).ok_or_else(|| usage(msg!("umpk-sim-input-usage")))?;
             let (op, value) = match first.split_once('=') {
                 Some((o, v)) => (o, Some(v).filter(|v| !v.is_empty())),
                 None => (*first, words.get(2).copied().filter(|w| !w.contains('='))),
@@ -76,65 +77,64 @@ pub fn answer(u: &mut Umpk, text: &str) -> Result<(String, Json)> {
             let extra: Vec<&str> =
                 words[2..].iter().copied().filter(|w| !w.contains('=') && Some(*w) != value).collect();
             if let Some(w) = extra.first() {
-                return Err(usage(format!("`{w}` after input I{i} is not understood")));
+                return Err(usage(msg!("umpk-sim-input-extra", word = *w, n = i)));
             }
             if let Some(f) = opts.iter().find_map(|o| o.strip_prefix("freq=")) {
                 if value.is_some() {
-                    return Err(usage("give a level or freq=, not both"));
+                    return Err(usage(msg!("umpk-sim-level-and-freq")));
                 }
                 let hz = crate::core::literal::parse_freq_hz(f).map_err(usage)?;
                 let period = (1000.0 / hz / CYCLE_MS as f64).round();
                 if !(2.0..=1_000_000.0).contains(&period) {
-                    return Err(usage(format!("freq={f}: the 10 ms cycle sees square waves of 0.0001–50 Hz")));
+                    return Err(usage(msg!("umpk-sim-freq-range", freq = f)));
                 }
                 u.set_wave(i, period as u64);
                 return Ok((
-                    format!("I{i}: square wave, period {} ms", period as u64 * CYCLE_MS),
+                    msg!("umpk-sim-wave-set", n = i, period = period as u64 * CYCLE_MS).text,
                     json!({"input": i, "period_ms": period as u64 * CYCLE_MS, "time_us": now_us}),
                 ));
             }
             if let Some(o) = opts.first() {
-                return Err(usage(format!("`{o}` is not an input option (freq=)")));
+                return Err(usage(msg!("umpk-sim-not-input-option", option = *o)));
             }
-            let on = level(value.ok_or_else(|| usage(format!("I{i}: give =1, =0 or freq=…")))?)?;
+            let on = level(value.ok_or_else(|| usage(msg!("umpk-sim-level-missing", n = i)))?)?;
             u.set_input(i, on);
             Ok((format!("I{i} = {}", on as u8), json!({"input": i, "value": on, "time_us": now_us})))
         }
         Some("inputs") => {
             if let Some(w) = words.get(1) {
-                return Err(usage(format!("`inputs` takes nothing after it (got `{w}`)")));
+                return Err(usage(msg!("umpk-sim-inputs-extra", word = *w)));
             }
             let waves: Vec<Json> =
                 u.waves.iter().map(|w| json!({"input": w.input, "period_ms": w.period * CYCLE_MS})).collect();
-            let text = format!(
-                "inputs {:0width$b} (I{}…I0); square waves on {}",
-                u.image.inputs,
-                u.model.inputs - 1,
-                if waves.is_empty() {
-                    "none".to_string()
-                } else {
-                    u.waves.iter().map(|w| format!("I{}", w.input)).collect::<Vec<_>>().join(", ")
-                },
-                width = u.model.inputs as usize
-            );
+            let bits = format!("{:0width$b}", u.image.inputs, width = u.model.inputs as usize);
+            let last = u.model.inputs - 1;
+            let text = if waves.is_empty() {
+                msg!("umpk-sim-inputs-no-waves", bits = bits, last = last)
+            } else {
+                let on = u.waves.iter().map(|w| format!("I{}", w.input)).collect::<Vec<_>>().join(", ");
+                msg!("umpk-sim-inputs", bits = bits, last = last, waves = on)
+            }
+            .text;
             Ok((text, json!({"inputs": u.image.inputs, "waves": waves, "time_us": now_us})))
         }
         Some("flash-fail") => {
             let page = match words.get(1).copied() {
                 Some("off") => None,
-                Some(p) => Some(p.parse::<usize>().map_err(|_| usage(format!("`{p}` is not a page number")))?),
+                Some(p) => Some(p.parse::<usize>().map_err(|_| usage(msg!("umpk-sim-not-page", page = p)))?),
                 None => return Err(usage("flash-fail PAGE|off")),
             };
             u.fail_flash_page(page)?;
             let text = match page {
                 Some(p) => {
-                    format!("flash writes to page {p} (16#{:04X}) will fail with W", p * crate::umpk::model::PAGE)
+                    msg!("umpk-sim-flash-fail", page = p, address = format!("{:04X}", p * crate::umpk::model::PAGE))
+                        .text
                 }
-                None => "flash writes succeed".into(),
+                None => msg!("umpk-sim-flash-ok").text,
             };
             Ok((text, json!({"flash_fail": page, "time_us": now_us})))
         }
-        Some(other) => Err(usage(format!("`{other}` is not a control word of a simulated UMPK"))),
-        None => Err(usage("an empty control line")),
+        Some(other) => Err(usage(msg!("umpk-sim-not-word", word = other))),
+        None => Err(usage(msg!("umpk-sim-empty-line"))),
     }
 }

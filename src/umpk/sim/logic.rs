@@ -16,6 +16,7 @@
 //!   an output pulse that lasts exactly as long as that input pulse, and counting starts
 //!   over; a program reset clears the count and the output.
 
+use crate::msg;
 use std::fmt;
 
 /// The cycle time (§1, Table 1 row 11).
@@ -181,9 +182,9 @@ impl Logic {
 
     /// Sets timer `i`'s delay: `steps` (1–255) of `group`.
     pub fn set_timer(&mut self, i: usize, group: Group, steps: u8) -> Result<(), String> {
-        let t = self.timers.get_mut(i).ok_or_else(|| format!("there is no timer T{i}"))?;
+        let t = self.timers.get_mut(i).ok_or_else(|| msg!("umpk-logic-no-timer", n = i).text)?;
         if steps == 0 {
-            return Err(format!("T{i}: the delay is 1–255 steps"));
+            return Err(msg!("umpk-logic-delay", n = i).text);
         }
         t.group = group;
         t.steps = steps;
@@ -191,9 +192,9 @@ impl Logic {
     }
 
     pub fn set_ratio(&mut self, i: usize, ratio: u8) -> Result<(), String> {
-        let c = self.counters.get_mut(i).ok_or_else(|| format!("there is no counter C{i}"))?;
+        let c = self.counters.get_mut(i).ok_or_else(|| msg!("umpk-logic-no-counter", n = i).text)?;
         if ratio == 0 {
-            return Err(format!("C{i}: the division ratio is 1–255"));
+            return Err(msg!("umpk-logic-ratio", n = i).text);
         }
         c.ratio = ratio;
         Ok(())
@@ -241,7 +242,7 @@ impl Scan<'_> {
         match op.area().letter {
             'Q' => self.io.set_output(op.index, on),
             'M' => self.io.set_marker(op.index, on),
-            l => return Err(format!("{}: a program cannot assign {l} operands", op.name())),
+            l => return Err(msg!("umpk-logic-cannot-assign", operand = op.name(), area = l.to_string()).text),
         }
         Ok(())
     }

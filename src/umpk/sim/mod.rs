@@ -47,6 +47,7 @@ use super::codec::{
 use super::hex::{kind, Record};
 use super::model::{Model, PAGE};
 use crate::core::Clock;
+use crate::msg;
 use logic::{Image, Logic, Runner, Scan, CYCLE_MS};
 use std::collections::VecDeque;
 use std::time::Duration;
@@ -64,6 +65,7 @@ pub const MICROCODE: u8 = 0x01;
 
 /// What the simulator says when a binary is programmed into it (the shell after `umpk
 /// program`, `sim serve` on its standard error): it is kept, not run, and what that looks like.
+/// The English text, kept for callers that have not moved to [`binary_not_executed`].
 pub const BINARY_NOT_EXECUTED: &str = "the simulator stores and verifies a programmed binary but does not execute it (the UMPK's machine code is not published): after a reset the status shows Work mode (a program is loaded) while the outputs stay off; to run logic in the simulator, load an IL program (`sim program load FILE.il`, `sim serve --umpk-program FILE.il`; docs/il.md)";
 
 /// The controller's mode (§3.2).
@@ -168,13 +170,15 @@ impl Umpk {
     pub fn fail_flash_page(&mut self, page: Option<usize>) -> crate::core::Result<()> {
         let pages = self.model.program_bytes / PAGE;
         if let Some(p) = page.filter(|&p| p >= pages) {
-            return Err(crate::core::Error::usage(format!(
-                "flash page {p} is past the {}'s program memory: pages 0–{} ({} bytes of {PAGE}-byte pages)",
-                self.model.name,
-                pages - 1,
-                self.model.program_bytes
+            return Err(crate::core::Error::usage(msg!(
+                "umpk-sim-page-past-end",
+                page = p,
+                model = self.model.name,
+                last = pages - 1,
+                bytes = self.model.program_bytes,
+                size = PAGE
             ))
-            .hint(format!("give a page from 0 to {}, or `off`", pages - 1)));
+            .hint(msg!("umpk-sim-hint-page", last = pages - 1)));
         }
         self.flash_fail = page;
         Ok(())
@@ -237,9 +241,9 @@ impl Umpk {
     /// What the flash holds, in words.
     pub fn program_kind(&self) -> String {
         match &self.program {
-            Program::None => "none".into(),
-            Program::Binary => "a binary (stored and verified, not executed)".into(),
-            Program::Logic(r) => format!("{} (executed each cycle)", r.name()),
+            Program::None => msg!("umpk-sim-program-kind", kind = "none").text,
+            Program::Binary => msg!("umpk-sim-program-kind", kind = "binary").text,
+            Program::Logic(r) => msg!("umpk-sim-program-logic", program = r.name()).text,
         }
     }
 
@@ -681,27 +685,17 @@ impl Umpk {
 }
 
 /// The monitor's status-word meaning in words, for `umpk info`.
-pub fn describe_status(s: &Status) -> Vec<&'static str> {
-    let mut v = Vec::new();
-    if s.work {
-        v.push("W Work mode");
-    }
-    if s.errors {
-        v.push("H error history not empty");
-    }
-    if s.monitor {
-        v.push("R real-time monitor on");
-    }
-    if s.echo_off {
-        v.push("E echo switched off");
-    }
-    if s.programming {
-        v.push("P Programming mode");
-    }
-    if s.blink {
-        v.push("T LED blink phase");
-    }
-    v
+pub fn describe_status(s: &Status) -> Vec<String> {
+    [(s.work, "W"), (s.errors, "H"), (s.monitor, "R"), (s.echo_off, "E"), (s.programming, "P"), (s.blink, "T")]
+        .into_iter()
+        .filter(|(on, _)| *on)
+        .map(|(_, flag)| msg!("umpk-status-flag", flag = flag).text)
+        .collect()
+}
+
+/// What the simulator says when a binary is programmed into it, in the current language.
+pub fn binary_not_executed() -> crate::core::msg::Msg {
+    msg!("umpk-sim-binary-not-executed")
 }
 
 #[cfg(test)]

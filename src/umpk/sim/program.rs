@@ -26,6 +26,7 @@ use crate::engine::{
     self, ArgKind, CostTable, Cpu, Element, Family, Fault, Loc, Machine, Opd, OperandError, Program, Resolved,
     SpecialDef, Width,
 };
+use crate::msg;
 use crate::umpk::codec::syserr;
 use crate::umpk::model::Model;
 use crate::umpk::space::{UmpkOperand, UmpkSpace, AREAS};
@@ -118,15 +119,14 @@ impl Family for UmpkFamily {
             o
         })?;
         let [one] = ops.as_slice() else {
-            return Err(OperandError::new(format!("`{text}` is a range; a program operand is one bit")));
+            return Err(OperandError::new(msg!("umpk-il-range", text = text).text));
         };
         let op = UmpkOperand::from_core(one);
         Ok(Resolved { loc: loc(op), ty: DataType::Bool, canonical: op.name() })
     }
 
     fn element(&self, text: &str, _want_timer: bool) -> Result<Element, OperandError> {
-        Err(OperandError::new(format!("{text}: the UMPK's timers and counters are its own instructions"))
-            .hint("on-delay: TIMER T0, GROUP, STEPS (e.g. TIMER T0, 1, 20 for 2.0 s); divide-by-N: DIVIDE C0, 4[, I1]"))
+        Err(OperandError::new(msg!("umpk-il-elements", text = text).text).hint(msg!("umpk-il-hint-elements").text))
     }
 
     fn pointer(&self, _loc: Loc) -> Option<u32> {
@@ -219,9 +219,10 @@ impl UmpkMachine<'_, '_> {
 fn check(p: &Program) -> Result<()> {
     let (t, c) = (area_of('T'), area_of('C'));
     for (k, ins) in p.code.iter().enumerate() {
-        let here = |msg: String| {
+        let here = |m: crate::core::msg::Msg| {
             let pos = p.pos.get(k).copied().unwrap_or_default();
-            Error::new(ErrorKind::Syntax, format!("{}:{}:{}: {msg}", p.file, pos.line, pos.col))
+            let text = format!("{}:{}:{}: {}", p.file, pos.line, pos.col, m.text);
+            Error::new(ErrorKind::Syntax, crate::core::msg::Msg { id: m.id, text })
         };
         let text = p.text.get(k).cloned().unwrap_or_default();
         let written = match ins {
@@ -230,20 +231,20 @@ fn check(p: &Program) -> Result<()> {
         };
         if let Some(op) = written.and_then(operand_of) {
             if !matches!(op.area().letter, 'Q' | 'M') {
-                return Err(here(format!("{text}: a program cannot assign {} ({})", op.name(), op.area().meaning))
-                    .hint(
-                    "a program assigns outputs Q and markers M; timers and counters change through TIMER and DIVIDE",
-                ));
+                return Err(here(msg!(
+                    "umpk-il-cannot-assign",
+                    text = &text,
+                    operand = op.name(),
+                    meaning = op.area().meaning().text
+                ))
+                .hint(msg!("umpk-il-hint-assign")));
             }
         }
         let Ins::Special { id, args, .. } = ins else { continue };
         if *id == id::ERROR {
             match args.first() {
                 Some(Opd::Imm(v)) if (1..=127).contains(v) => continue,
-                _ => {
-                    return Err(here(format!("{text}: a user error code is 1–127 (128–255 are the system's)"))
-                        .hint("e.g. LD I7 / ERROR 12: error 12 in the history when I7 turns on"))
-                }
+                _ => return Err(here(msg!("umpk-il-user-error", text = &text)).hint(msg!("umpk-il-hint-user-error"))),
             }
         }
         let el = match args.first() {
@@ -254,19 +255,19 @@ fn check(p: &Program) -> Result<()> {
             Some(Opd::Imm(v)) => *v as i32,
             _ => -1,
         };
-        let (want, what) = if *id == id::TIMER { (t, "timer T0…") } else { (c, "counter C0…") };
+        let (want, what) = if *id == id::TIMER { (t, "timer") } else { (c, "counter") };
         if el.is_none_or(|o| o.area as u8 != want) {
-            return Err(here(format!("{text}: the first operand must be a {what}")));
+            return Err(here(msg!("umpk-il-first-operand", text = &text, what = what)));
         }
         if *id == id::TIMER {
             if !(0..=2).contains(&konst(1)) {
-                return Err(here(format!("{text}: the delay group is 0 (10 ms), 1 (0.1 s) or 2 (1 s)")));
+                return Err(here(msg!("umpk-il-delay-group", text = &text)));
             }
             if !(1..=255).contains(&konst(2)) {
-                return Err(here(format!("{text}: the delay is 1–255 steps of its group")));
+                return Err(here(msg!("umpk-il-delay-steps", text = &text)));
             }
         } else if !(1..=255).contains(&konst(1)) {
-            return Err(here(format!("{text}: the division ratio is 1–255")));
+            return Err(here(msg!("umpk-il-ratio", text = &text)));
         }
     }
     Ok(())

@@ -14,6 +14,7 @@ use crate::core::link::control as channel;
 use crate::core::link::line::Transport;
 use crate::core::link::served::{ServeOn, Served};
 use crate::core::{Clock, Error, Result};
+use crate::msg;
 use crate::umpk::model::Model;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -56,7 +57,7 @@ pub fn serve_line(line: &mut dyn Transport, sim: &Arc<Mutex<Umpk>>, stop: &Atomi
             let s = lock(sim);
             s.next_event().saturating_sub(s.clock.now()).clamp(Duration::from_micros(200), MAX_WAIT)
         };
-        let n = line.recv(&mut buf, wait).map_err(|e| Error::io("reading the UMPK's line failed").cause(e))?;
+        let n = line.recv(&mut buf, wait).map_err(|e| Error::io(msg!("umpk-serve-read-failed")).cause(e))?;
         let out = {
             let mut s = lock(sim);
             if n > 0 {
@@ -64,12 +65,12 @@ pub fn serve_line(line: &mut dyn Transport, sim: &Arc<Mutex<Umpk>>, stop: &Atomi
             }
             if s.binaries != binaries {
                 binaries = s.binaries;
-                eprintln!("simulated UMPK: a binary was programmed; {}", super::BINARY_NOT_EXECUTED);
+                eprintln!("{}", msg!("umpk-serve-binary", note = super::binary_not_executed().text));
             }
             s.take_due()
         };
         if !out.is_empty() {
-            line.send(&out).map_err(|e| Error::io("writing the UMPK's line failed").cause(e))?;
+            line.send(&out).map_err(|e| Error::io(msg!("umpk-serve-write-failed")).cause(e))?;
         }
     }
     Ok(())
@@ -96,7 +97,7 @@ pub fn serve(
             let s = sim.clone();
             let answer: channel::Answer =
                 Arc::new(move |text: &str| channel::reply(super::control::answer(&mut lock(&s), text)));
-            Some(channel::Channel::open(&path, "the served UMPK's control channel", answer, stop.clone())?)
+            Some(channel::Channel::open(&path, &msg!("link-channel-name", device = "umpk"), answer, stop.clone())?)
         }
         None => None,
     };
@@ -128,7 +129,7 @@ pub fn default_state(link: &Path, model: &Model) -> Option<PathBuf> {
 /// `--umpk-model`: a model name from the table.
 pub fn parse_model(text: &str) -> std::result::Result<&'static Model, String> {
     crate::umpk::model::find(text)
-        .ok_or_else(|| format!("`{text}` is not a UMPK model ({})", crate::umpk::model::names()))
+        .ok_or_else(|| msg!("umpk-serve-not-model", model = text, models = crate::umpk::model::names()).text)
 }
 
 /// What `plcsh sim serve --umpk-pty …` (or `--umpk-tcp …`) asks for.
@@ -158,8 +159,13 @@ pub async fn spawn(o: Options, stop: Arc<AtomicBool>) -> Result<serde_json::Map<
     // A program that does not load stops the server before it is ready.
     let runner = match &o.program {
         Some(p) => {
-            let text = crate::core::encoding::read_source(p)
-                .map_err(|e| Error::io(format!("cannot read the UMPK program {}: {e}", p.display())))?;
+            let text = crate::core::encoding::read_source(p).map_err(|e| {
+                Error::io(msg!(
+                    "umpk-serve-cannot-read-program",
+                    file = p.display().to_string(),
+                    reason = e.to_string()
+                ))
+            })?;
             Some(super::program::IlRunner::load(&text, &p.to_string_lossy(), model)?)
         }
         None => None,
@@ -191,6 +197,6 @@ pub async fn spawn(o: Options, stop: Arc<AtomicBool>) -> Result<serde_json::Map<
         Ok(Ok(serde_json::Value::Object(m))) => Ok(m),
         Ok(Ok(_)) => Ok(Default::default()),
         Ok(Err(e)) => Err(e),
-        Err(_) => Err(Error::io("the UMPK line stopped before it was ready")),
+        Err(_) => Err(Error::io(msg!("umpk-serve-line-stopped"))),
     }
 }

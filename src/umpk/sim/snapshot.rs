@@ -10,6 +10,7 @@
 use super::logic::{IlState, Image, Logic, Runner};
 use super::{Mode, Program, Programming, Umpk, Wave};
 use crate::engine::Cpu;
+use crate::msg;
 use serde::{Deserialize, Serialize};
 use std::time::Duration;
 
@@ -104,20 +105,20 @@ impl Umpk {
             binaries: _,
         } = &*self;
         if *monitor {
-            return Err("its real-time monitor is streaming (stop it with `umpk monitor off` first)".into());
+            return Err(msg!("umpk-snap-monitor").text);
         }
         if *prog != Programming::default() || *mode == Mode::Programming {
-            return Err("a programming sequence is under way (finish it or reset first)".into());
+            return Err(msg!("umpk-snap-programming").text);
         }
         if !rx.is_empty() || !out.is_empty() || *lose_reply {
-            return Err("bytes are on its serial line (a command half-received or a reply unsent)".into());
+            return Err(msg!("umpk-snap-line-busy").text);
         }
         let program = match program {
             Program::None => ProgramState::None,
             Program::Binary => ProgramState::Binary,
-            Program::Logic(r) => ProgramState::Il(Box::new(r.save().ok_or_else(|| {
-                format!("its program `{}` is built into plcsh, not IL text (load an IL file instead)", r.name())
-            })?)),
+            Program::Logic(r) => ProgramState::Il(Box::new(
+                r.save().ok_or_else(|| msg!("umpk-snap-builtin-program", program = r.name()).text)?,
+            )),
         };
         let (mode, until) = match *mode {
             Mode::Resetting(t) => ("restarting".to_string(), t.as_nanos() as u64),
@@ -153,48 +154,45 @@ impl Umpk {
     /// Restores a saved state (same model); the IL program is compiled again from its text.
     pub fn restore_snapshot(&mut self, s: &UmpkState) -> Result<(), String> {
         if s.model != self.model.name {
-            return Err(format!("the snapshot holds a {}, this device is a {}", s.model, self.model.name));
+            return Err(msg!("umpk-snap-other-model", saved = &s.model, model = self.model.name).text);
         }
         let flash: Option<Vec<u8>> =
             s.flash.as_bytes().chunks(2).map(crate::umpk::codec::hex_pair).collect::<Option<_>>();
-        let flash = flash.filter(|f| f.len() == self.flash.len()).ok_or("the flash image has the wrong size")?;
+        let flash = flash.filter(|f| f.len() == self.flash.len()).ok_or_else(|| msg!("umpk-snap-flash-size").text)?;
         if s.info.len() != self.info.len() || s.errors.len() != self.errors.len() {
-            return Err("the program info or error history has the wrong size".into());
+            return Err(msg!("umpk-snap-info-size").text);
         }
-        let markers = u128::from_str_radix(&s.markers, 16).map_err(|_| "the markers are not 32 hex digits")?;
+        let markers = u128::from_str_radix(&s.markers, 16).map_err(|_| msg!("umpk-snap-markers").text)?;
         if s.logic.timers.len() != self.logic.timers.len() || s.logic.counters.len() != self.logic.counters.len() {
-            return Err("the timers or counters do not match the model".into());
+            return Err(msg!("umpk-snap-timers").text);
         }
         if let Some(w) = s.waves.iter().find(|w| w.input >= self.model.inputs || w.period < 2) {
-            return Err(format!(
-                "a square wave on input {} every {} cycles cannot run on this model",
-                w.input, w.period
-            ));
+            return Err(msg!("umpk-snap-wave", input = w.input, period = w.period).text);
         }
         if let Some(p) = s.flash_fail.filter(|&p| p >= self.model.program_bytes / crate::umpk::model::PAGE) {
-            return Err(format!("its failing flash page {p} is past the model's program memory"));
+            return Err(msg!("umpk-snap-flash-fail-page", page = p).text);
         }
         if let Some(f) = s.faults.list.iter().find(|f| match f.kind {
             crate::core::sim_faults::FaultKind::Stuck { input, .. } => input >= u16::from(self.model.inputs),
             crate::core::sim_faults::FaultKind::NoReply => false,
         }) {
-            return Err(format!("its fault {} holds an input this model does not have", f.id));
+            return Err(msg!("umpk-snap-fault-input", fault = f.id.to_string()).text);
         }
         if s.cycle > self.clock.now().as_millis() as u64 / super::logic::CYCLE_MS + 1 {
-            return Err("its cycle count is ahead of the snapshot's clock".into());
+            return Err(msg!("umpk-snap-cycle-ahead").text);
         }
         let mode = match s.mode.as_str() {
             "Work" => Mode::Work,
             "Wait" => Mode::Wait,
             "restarting" => Mode::Resetting(Duration::from_nanos(s.restart_until_ns)),
-            other => return Err(format!("mode `{other}` cannot be restored")),
+            other => return Err(msg!("umpk-snap-mode", mode = other).text),
         };
         let program = match &s.program {
             ProgramState::None => Program::None,
             ProgramState::Binary => Program::Binary,
             ProgramState::Il(il) => {
                 let mut r = super::program::IlRunner::load(&il.text, &il.source, self.model)
-                    .map_err(|e| format!("its IL program {} does not compile: {e}", il.source))?;
+                    .map_err(|e| msg!("umpk-snap-il-compile", source = &il.source, reason = e.to_string()).text)?;
                 check_cpu(&r.cpu, &il.cpu)?;
                 r.cpu = il.cpu.clone();
                 r.fault = il.fault.clone();
@@ -239,16 +237,16 @@ fn check_cpu(fresh: &Cpu, saved: &Cpu) -> Result<(), String> {
     let len = |v: &serde_json::Value, k: &str| v[k].as_array().map(Vec::len);
     for k in ["edges", "timers", "counters", "special_en", "attached"] {
         if len(&a, k) != len(&b, k) {
-            return Err(format!("its IL program's saved state does not fit the program ({k})"));
+            return Err(msg!("umpk-snap-il-state", part = k).text);
         }
     }
     for k in ["parens", "calls"] {
         if len(&b, k) != Some(0) {
-            return Err(format!("its IL program was saved in the middle of a scan ({k})"));
+            return Err(msg!("umpk-snap-il-mid-scan-part", part = k).text);
         }
     }
     if !b["pc"].is_null() {
-        return Err("its IL program was saved in the middle of a scan".into());
+        return Err(msg!("umpk-snap-il-mid-scan").text);
     }
     Ok(())
 }

@@ -8,6 +8,7 @@
 
 use super::{Program, Umpk};
 use crate::core::{Error, Result};
+use crate::msg;
 use crate::umpk::codec::INFO_LEN;
 use serde::{Deserialize, Serialize};
 use std::path::Path;
@@ -32,7 +33,7 @@ pub fn save(u: &Umpk, path: &Path) -> Result<()> {
         errors: u.errors.to_vec(),
         flash: u.flash.iter().map(|b| format!("{b:02X}")).collect(),
     };
-    let text = serde_json::to_string_pretty(&s).map_err(|e| Error::io("cannot encode the UMPK state").cause(e))?;
+    let text = serde_json::to_string_pretty(&s).map_err(|e| Error::io(msg!("umpk-state-cannot-encode")).cause(e))?;
     crate::core::durable::write_atomic(path, text.as_bytes())
 }
 
@@ -43,22 +44,27 @@ pub fn load(u: &mut Umpk, path: &Path) -> Result<()> {
     let text = match std::fs::read_to_string(path) {
         Ok(t) => t,
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(()),
-        Err(e) => return Err(Error::io(format!("cannot read {}", path.display())).cause(e)),
+        Err(e) => return Err(Error::io(msg!("umpk-state-cannot-read", file = path.display().to_string())).cause(e)),
     };
     let bad = |m: &str| {
-        Error::io(format!("{} is not a UMPK state file: {m}", path.display()))
-            .hint("remove it to start with an empty flash")
+        Error::io(msg!("umpk-state-bad-file", file = path.display().to_string(), reason = m))
+            .hint(msg!("umpk-state-hint-remove"))
     };
     let s: Saved = serde_json::from_str(&text).map_err(|e| bad(&e.to_string()))?;
     if s.model != u.model.name {
-        return Err(Error::usage(format!("{} holds a {}'s flash, not a {}'s", path.display(), s.model, u.model.name))
-            .hint("use another state file for this model"));
+        return Err(Error::usage(msg!(
+            "umpk-state-other-model",
+            file = path.display().to_string(),
+            saved = &s.model,
+            model = u.model.name
+        ))
+        .hint(msg!("umpk-state-hint-other-file")));
     }
     let flash: Option<Vec<u8>> = s.flash.as_bytes().chunks(2).map(crate::umpk::codec::hex_pair).collect::<Option<_>>();
-    let flash = flash.filter(|f| f.len() == u.flash.len()).ok_or_else(|| bad("the flash image has the wrong size"))?;
+    let flash = flash.filter(|f| f.len() == u.flash.len()).ok_or_else(|| bad(&msg!("umpk-snap-flash-size")))?;
     let info = s.info.as_bytes();
     if info.len() != INFO_LEN || s.errors.len() != 8 {
-        return Err(bad("program info or error history has the wrong size"));
+        return Err(bad(&msg!("umpk-state-info-size")));
     }
     u.flash = flash;
     u.info.copy_from_slice(info);

@@ -11,6 +11,7 @@
 use super::fd_stream::FdStream;
 use super::pty::Pty;
 use crate::core::{Error, Result};
+use crate::msg;
 use std::fs::File;
 use std::path::Path;
 
@@ -44,11 +45,9 @@ impl AsyncPty {
 
     /// A new async stream on the master side. Must be called inside a tokio runtime.
     pub fn stream(&self) -> Result<PtyStream> {
-        let fd = self.pty.master.try_clone().map_err(|e| Error::io("cannot duplicate the pty master").cause(e))?;
-        let slave = self.pty.slave.try_clone().map_err(|e| Error::io("cannot duplicate the pty slave").cause(e))?;
-        FdStream::new(fd)
-            .map(|s| s.dropping_unread(slave))
-            .map_err(|e| Error::io("cannot register the pty master with tokio").cause(e))
+        let fd = self.pty.master.try_clone().map_err(|e| Error::io(msg!("link-pty-dup-master")).cause(e))?;
+        let slave = self.pty.slave.try_clone().map_err(|e| Error::io(msg!("link-pty-dup-slave")).cause(e))?;
+        FdStream::new(fd).map(|s| s.dropping_unread(slave)).map_err(|e| Error::io(msg!("link-pty-register")).cause(e))
     }
 }
 

@@ -5,6 +5,7 @@ use crate::core::link::port::{received, timed_out, Port, CHUNK};
 use crate::core::link::serial::LineSettings;
 use crate::core::trace::{self, Dir, Proto};
 use crate::core::{Error, Result};
+use crate::msg;
 use std::io;
 use std::os::fd::{AsRawFd, BorrowedFd};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -103,7 +104,7 @@ impl<T: AsRawFd + Send> Port for PollPort<T> {
                     if let Some(f) = &self.eof {
                         f.store(true, Ordering::Relaxed);
                     }
-                    break Err(io::Error::new(io::ErrorKind::UnexpectedEof, "the connection closed"));
+                    break Err(io::Error::new(io::ErrorKind::UnexpectedEof, msg!("link-connection-closed").text));
                 }
                 Ok(n) => break Ok(n),
                 Err(nix::errno::Errno::EAGAIN | nix::errno::Errno::EINTR) => {}

@@ -9,6 +9,7 @@
 
 use crate::core::link::line::Transport;
 use crate::core::{Error, Result};
+use crate::msg;
 use nix::poll::{poll, PollFd, PollFlags, PollTimeout};
 use nix::pty::{openpty, OpenptyResult};
 use nix::sys::termios::{self, SetArg};
@@ -32,11 +33,14 @@ impl Pty {
     /// Opens a new pair with the slave in raw mode.
     pub fn open() -> Result<Pty> {
         let OpenptyResult { master, slave } =
-            openpty(None, None).map_err(|e| Error::io("cannot open a pseudo-terminal").cause(e))?;
-        let mut t = termios::tcgetattr(slave.as_fd()).map_err(|e| Error::io("tcgetattr on pty").cause(e))?;
+            openpty(None, None).map_err(|e| Error::io(msg!("link-pty-open")).cause(e))?;
+        let mut t = termios::tcgetattr(slave.as_fd())
+            .map_err(|e| Error::io(msg!("link-pty-call", call = "tcgetattr")).cause(e))?;
         termios::cfmakeraw(&mut t);
-        termios::tcsetattr(slave.as_fd(), SetArg::TCSANOW, &t).map_err(|e| Error::io("tcsetattr on pty").cause(e))?;
-        let path = nix::unistd::ttyname(slave.as_fd()).map_err(|e| Error::io("ttyname on pty").cause(e))?;
+        termios::tcsetattr(slave.as_fd(), SetArg::TCSANOW, &t)
+            .map_err(|e| Error::io(msg!("link-pty-call", call = "tcsetattr")).cause(e))?;
+        let path = nix::unistd::ttyname(slave.as_fd())
+            .map_err(|e| Error::io(msg!("link-pty-call", call = "ttyname")).cause(e))?;
         Ok(Pty { master: File::from(master), slave: File::from(slave), path })
     }
 
@@ -54,7 +58,7 @@ impl Pty {
     /// The server's end as a line ([`ServedPty`]).
     pub fn served(self) -> Result<ServedPty> {
         super::fd_stream::set_nonblocking(&self.master)
-            .map_err(|e| Error::io("cannot make the pty non-blocking").cause(e))?;
+            .map_err(|e| Error::io(msg!("link-pty-nonblocking")).cause(e))?;
         Ok(ServedPty { pty: self })
     }
 
@@ -63,15 +67,12 @@ impl Pty {
     pub fn link(&self, link: &Path) -> Result<()> {
         if let Ok(meta) = std::fs::symlink_metadata(link) {
             if !meta.file_type().is_symlink() {
-                return Err(Error::usage(format!(
-                    "{} exists and is not a symlink; choose another path",
-                    link.display()
-                )));
+                return Err(Error::usage(msg!("link-not-symlink", path = link.display().to_string())));
             }
             std::fs::remove_file(link)?;
         }
         std::os::unix::fs::symlink(&self.path, link)
-            .map_err(|e| Error::io(format!("cannot create the symlink {}", link.display())).cause(e))
+            .map_err(|e| Error::io(msg!("link-cannot-symlink", path = link.display().to_string())).cause(e))
     }
 }
 

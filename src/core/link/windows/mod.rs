@@ -11,6 +11,7 @@ use crate::core::link::port::{Port, TransportPort};
 use crate::core::link::serial::LineSettings;
 use crate::core::trace::Proto;
 use crate::core::Result;
+use crate::msg;
 use std::io::{self, Read, Write};
 use std::net::{TcpListener, TcpStream};
 use std::path::Path;
@@ -84,15 +85,13 @@ pub fn local_connect(path: &Path) -> io::Result<LocalStream> {
     let port: u16 = text
         .trim()
         .parse()
-        .map_err(|_| io::Error::new(io::ErrorKind::InvalidData, "the control file holds no port number"))?;
+        .map_err(|_| io::Error::new(io::ErrorKind::InvalidData, msg!("link-control-no-port").text))?;
     TcpStream::connect(("127.0.0.1", port))
 }
 
 /// Why a pseudo-terminal cannot be had here, and what to use instead.
 fn no_pty() -> crate::core::Error {
-    crate::core::Error::usage("Windows has no pseudo-terminals to serve a simulator on").hint(
-        "serve it on a TCP port instead (sim serve --rtu-tcp 0, --servo-tcp 0, --fx-tcp 0, --fx-link-tcp 0, --umpk-tcp 0) and connect with rtu+tcp://, kinco+tcp://, fx+tcp://, fxlink+tcp:// or umpk+tcp://",
-    )
+    crate::core::Error::usage(msg!("link-windows-no-pty")).hint(msg!("link-hint-windows-tcp"))
 }
 
 /// Pseudo-terminals: none on Windows.
