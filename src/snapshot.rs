@@ -39,8 +39,8 @@
 //! Named snapshots live in the user's data directory (`…/plcsh/snapshots/NAME.json`);
 //! a NAME with a `/` or ending in `.json` is a file path.
 
-use crate::msg;
 use crate::core::{Error, Result};
+use crate::msg;
 use crate::session::Session;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
@@ -346,8 +346,12 @@ impl Snapshot {
                 devices.insert(name, DeviceSnap { family: "umpk".into(), sections });
             } else if dev.info().simulated {
                 let family = dev.info().family;
-                return Err(Error::unsupported(msg!("snapshot-family-not-kept", name = name.as_str(), family = family))
-                    .hint(msg!("snapshot-family-not-kept-hint")));
+                return Err(Error::unsupported(msg!(
+                    "snapshot-family-not-kept",
+                    name = name.as_str(),
+                    family = family
+                ))
+                .hint(msg!("snapshot-family-not-kept-hint")));
             }
         }
         if devices.is_empty() {
@@ -400,7 +404,12 @@ impl Snapshot {
                         model = sim.model().name,
                         article = "a"
                     ))
-                    .hint(msg!("snapshot-open-as", name = name, scheme = "sim", model = st.model.as_str())));
+                    .hint(msg!(
+                        "snapshot-open-as",
+                        name = name,
+                        scheme = "sim",
+                        model = st.model.as_str()
+                    )));
                 }
                 k2.push((i, name, st));
                 let wires = sections.wiring.unwrap_or_default();
@@ -423,7 +432,12 @@ impl Snapshot {
                         model = model,
                         article = "an"
                     ))
-                    .hint(msg!("snapshot-open-as", name = name, scheme = "sim-fx", model = st.model.as_str())));
+                    .hint(msg!(
+                        "snapshot-open-as",
+                        name = name,
+                        scheme = "sim-fx",
+                        model = st.model.as_str()
+                    )));
                 }
                 fx.push((i, name, st));
             }
@@ -438,7 +452,12 @@ impl Snapshot {
                         model = model,
                         article = "a"
                     ))
-                    .hint(msg!("snapshot-open-as", name = name, scheme = "sim-umpk", model = st.model.as_str())));
+                    .hint(msg!(
+                        "snapshot-open-as",
+                        name = name,
+                        scheme = "sim-umpk",
+                        model = st.model.as_str()
+                    )));
                 }
                 umpk.push((i, name, st));
             }
@@ -450,8 +469,9 @@ impl Snapshot {
                 sim.unwire("all")?;
             }
             for w in wires {
-                crate::wiring::setup::wire(s, &w.decl)
-                    .map_err(|e| e.cause(msg!("snapshot-restoring-wire", name = name.as_str(), wire = w.decl.as_str())))?;
+                crate::wiring::setup::wire(s, &w.decl).map_err(|e| {
+                    e.cause(msg!("snapshot-restoring-wire", name = name.as_str(), wire = w.decl.as_str()))
+                })?;
             }
         }
         s.clock.set(Duration::from_micros(self.clock_us));
@@ -524,9 +544,11 @@ impl Snapshot {
     /// value.
     pub fn encode(&self) -> Result<String> {
         let text = serde_json::to_string(self).map_err(|e| Error::io(msg!("snapshot-cannot-encode")).cause(e))?;
-        let refuse = |what: String| Error::state(msg!("snapshot-save-refused", why = what)).hint(msg!("snapshot-save-refused-hint"));
-        let back: Snapshot =
-            serde_json::from_str(&text).map_err(|e| refuse(msg!("snapshot-does-not-read-back", error = e.to_string()).into()))?;
+        let refuse = |what: String| {
+            Error::state(msg!("snapshot-save-refused", why = what)).hint(msg!("snapshot-save-refused-hint"))
+        };
+        let back: Snapshot = serde_json::from_str(&text)
+            .map_err(|e| refuse(msg!("snapshot-does-not-read-back", error = e.to_string()).into()))?;
         back.check().map_err(|e| refuse(e.message.clone()))?;
         for (name, d) in &back.devices {
             let sections = Sections::decode(name, d).map_err(|e| {

@@ -178,9 +178,9 @@ impl std::fmt::Display for Decl {
 /// Parses `plc:Q0.0 -> servo:pulse`, `servo:encoder -> plc:I0.1,I0.0 lines=1250`,
 /// `plc:Q0.1 -> plc:I0.3 delay=2ms`.
 pub fn parse(text: &str) -> Result<Decl> {
-    let (from, rest) = text.split_once("->").ok_or_else(|| {
-        Error::usage(msg!("wire-not-wire", text = text.trim())).hint(msg!("wire-not-wire-hint"))
-    })?;
+    let (from, rest) = text
+        .split_once("->")
+        .ok_or_else(|| Error::usage(msg!("wire-not-wire", text = text.trim())).hint(msg!("wire-not-wire-hint")))?;
     let mut words = rest.split_whitespace();
     let to = words.next().ok_or_else(|| Error::usage(msg!("wire-no-destination")))?;
     let mut d = Decl { from: endpoint(from)?, to: endpoint(to)?, lines: None, delay_ns: 0 };
@@ -190,9 +190,11 @@ pub fn parse(text: &str) -> Result<Decl> {
         })?;
         match k {
             "lines" => {
-                let n: u32 = v.parse().ok().filter(|n| *n > 0).ok_or_else(|| {
-                    Error::usage(msg!("wire-lines-positive", value = v))
-                })?;
+                let n: u32 = v
+                    .parse()
+                    .ok()
+                    .filter(|n| *n > 0)
+                    .ok_or_else(|| Error::usage(msg!("wire-lines-positive", value = v)))?;
                 d.lines = Some(n);
             }
             "delay" => {
@@ -206,9 +208,7 @@ pub fn parse(text: &str) -> Result<Decl> {
                     Error::usage(msg!("wire-delay-too-long", value = v, max = (u64::MAX / 1000).to_string()))
                 })?;
             }
-            _ => {
-                return Err(Error::usage(msg!("wire-no-option", key = k)).hint(msg!("wire-options-hint")))
-            }
+            _ => return Err(Error::usage(msg!("wire-no-option", key = k)).hint(msg!("wire-options-hint"))),
         }
     }
     Ok(d)
@@ -285,7 +285,8 @@ pub fn drive_terminal(ep: &Endpoint) -> Result<Role> {
     let t = ep.terminal.to_ascii_lowercase();
     let sw = |text: &str| -> Result<f64> {
         text.trim().parse::<f64>().ok().filter(|x| x.is_finite()).ok_or_else(|| {
-            Error::usage(msg!("wire-not-position", terminal = ep.to_string(), text = text)).hint("e.g. servo:home@20000")
+            Error::usage(msg!("wire-not-position", terminal = ep.to_string(), text = text))
+                .hint("e.g. servo:home@20000")
         })
     };
     Ok(match t.split_once('@') {
@@ -293,23 +294,21 @@ pub fn drive_terminal(ep: &Endpoint) -> Result<Role> {
         Some(("limit+" | "pos", p)) => Role::Switch(Switch::PosLimit(sw(p)?)),
         Some(("limit-" | "neg", p)) => Role::Switch(Switch::NegLimit(sw(p)?)),
         Some(_) => return Err(Error::usage(msg!("wire-only-switches-at", terminal = ep.to_string()))),
-        None => {
-            match t.as_str() {
-                "pulse" | "pulses" => Role::PulseIn,
-                "encoder" => Role::Encoder,
-                "target_reached" | "target" => Role::DriveOut(DriveOut::TargetReached),
-                "fault" => Role::DriveOut(DriveOut::Fault),
-                "enabled" => Role::DriveOut(DriveOut::Enabled),
-                _ => {
-                    return Err(Error::usage(msg!(
-                        "wire-unknown-drive-terminal",
-                        name = ep.terminal.as_str(),
-                        terminal = ep.to_string()
-                    ))
-                    .hint(msg!("wire-drive-terminals-hint")))
-                }
+        None => match t.as_str() {
+            "pulse" | "pulses" => Role::PulseIn,
+            "encoder" => Role::Encoder,
+            "target_reached" | "target" => Role::DriveOut(DriveOut::TargetReached),
+            "fault" => Role::DriveOut(DriveOut::Fault),
+            "enabled" => Role::DriveOut(DriveOut::Enabled),
+            _ => {
+                return Err(Error::usage(msg!(
+                    "wire-unknown-drive-terminal",
+                    name = ep.terminal.as_str(),
+                    terminal = ep.to_string()
+                ))
+                .hint(msg!("wire-drive-terminals-hint")))
             }
-        }
+        },
     })
 }
 
@@ -397,11 +396,9 @@ impl Harness {
                     DriveOut::Enabled => "enabled",
                 }
             ),
-            Kind::Switch { switch, .. } => msg!(
-                "wire-describe-switch",
-                switch = switch.name(),
-                position = switch.position().to_string()
-            ),
+            Kind::Switch { switch, .. } => {
+                msg!("wire-describe-switch", switch = switch.name(), position = switch.position().to_string())
+            }
             Kind::Loop { delay_ns, .. } => msg!("wire-describe-loop", delay = delay_ns / 1000),
             Kind::PulseLoop { channel, delay_ns, .. } => {
                 msg!("wire-describe-pulse-loop", channel = channel, delay = delay_ns / 1000)

@@ -288,7 +288,9 @@ impl OperandSpace for K2Space {
             }
             return out;
         }
-        for form in ["I", "IB", "Q", "QB", "M", "MB", "MW", "MD", "V", "VB", "VW", "VD", "SM", "AIW", "AQW", "T", "C", "K4M"] {
+        for form in
+            ["I", "IB", "Q", "QB", "M", "MB", "MW", "MD", "V", "VB", "VW", "VD", "SM", "AIW", "AQW", "T", "C", "K4M"]
+        {
             if form.starts_with(&p) && p.len() < form.len() {
                 out.push(Candidate { text: form.to_string(), meaning: msg!("k2-complete-form", form = form).into() });
             }

@@ -38,8 +38,11 @@ pub struct HscRequest {
 pub fn counter(model: &Model, n: u8) -> Result<HscRegs> {
     if model.hsc(n).is_none() {
         let list: Vec<String> = model.hsc.iter().map(|h| format!("HSC{}", h.channel)).collect();
-        return Err(Error::unsupported(msg!("k2-hsc-no-counter", model = model.name, n = n))
-            .hint(msg!("k2-hsc-no-counter-hint", model = model.name, list = list.join(", "))));
+        return Err(Error::unsupported(msg!("k2-hsc-no-counter", model = model.name, n = n)).hint(msg!(
+            "k2-hsc-no-counter-hint",
+            model = model.name,
+            list = list.join(", ")
+        )));
     }
     Ok(HSC_REGS[n as usize])
 }
@@ -50,8 +53,11 @@ pub fn plan(model: &Model, q: &HscRequest, backup: (u32, u32)) -> Result<Plan> {
     let n = q.counter;
     let m = sm_map::hsc_mode(n, q.mode).ok_or_else(|| {
         let modes: Vec<String> = sm_map::hsc_modes_of(n).iter().map(|m| m.to_string()).collect();
-        bad("mode", msg!("k2-hsc-no-mode", n = n, mode = q.mode))
-            .hint(msg!("k2-hsc-no-mode-hint", n = n, list = modes.join(", ")))
+        bad("mode", msg!("k2-hsc-no-mode", n = n, mode = q.mode)).hint(msg!(
+            "k2-hsc-no-mode-hint",
+            n = n,
+            list = modes.join(", ")
+        ))
     })?;
     if q.rate4x && m.kind != HscKind::Quadrature {
         return Err(bad("rate", msg!("k2-hsc-rate-4x", mode = q.mode)));
@@ -98,9 +104,7 @@ pub fn plan(model: &Model, q: &HscRequest, backup: (u32, u32)) -> Result<Plan> {
             p.dint(Area::SM, r.pv, q.pv[0] as i64);
             p.byte(Area::SM, r.mpv_control, 0);
         }
-        (_, None) => {
-            return Err(bad("pv", msg!("k2-hsc-table-needs-at")))
-        }
+        (_, None) => return Err(bad("pv", msg!("k2-hsc-table-needs-at"))),
         (0, Some(_)) => return Err(bad("pv", msg!("k2-hsc-at-needs-pv"))),
         (k, Some(at)) => {
             if at % 2 == 0 {
@@ -119,11 +123,8 @@ pub fn plan(model: &Model, q: &HscRequest, backup: (u32, u32)) -> Result<Plan> {
             }
             let last = last as u32;
             if overlaps_backup(at, last, backup) && !q.force {
-                return Err(bad(
-                    "at",
-                    msg!("k2-hsc-backup", at = at, last = last, first = backup.0, end = backup.1),
-                )
-                .hint(msg!("k2-table-backup-hint")));
+                return Err(bad("at", msg!("k2-hsc-backup", at = at, last = last, first = backup.0, end = backup.1))
+                    .hint(msg!("k2-table-backup-hint")));
             }
             for (i, pv) in q.pv.iter().enumerate() {
                 let ends = if q.relative {
@@ -132,10 +133,7 @@ pub fn plan(model: &Model, q: &HscRequest, backup: (u32, u32)) -> Result<Plan> {
                     i > 0 && (*pv as i64 - q.pv[i - 1] as i64).abs() <= 1
                 };
                 if ends {
-                    return Err(bad(
-                        "pv",
-                        msg!("k2-hsc-pv-ends-table", index = i + 1, pv = *pv),
-                    ));
+                    return Err(bad("pv", msg!("k2-hsc-pv-ends-table", index = i + 1, pv = *pv)));
                 }
             }
             p.byte(Area::V, at, k as i64);

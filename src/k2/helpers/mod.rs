@@ -152,7 +152,6 @@ pub fn parse_us(text: &str) -> std::result::Result<u64, String> {
     let us = crate::core::literal::parse_pulse_time_us(text)?;
     if us <= 0 {
         return Err(msg!("k2-duration-not-positive", text = text).into());
-
     }
     Ok(us as u64)
 }

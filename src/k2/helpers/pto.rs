@@ -8,8 +8,8 @@ use crate::k2::catalog::{Model, PtoSpec};
 use crate::k2::operand::{Area, K2Operand};
 use crate::k2::sim::pto::{ctl, MAX_SEGMENTS};
 use crate::k2::sm_map::{PtoRegs, PTO_REGS};
-use serde::Serialize;
 use crate::msg;
+use serde::Serialize;
 
 /// How fast: a frequency or a cycle time.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -26,8 +26,9 @@ impl Rate {
             Rate::Hz(f) => {
                 let us = (1e6 / f).round().max(1.0) as u64;
                 let actual = 1e6 / us as f64;
-                let note = ((actual - f).abs() > 1e-9 * f)
-                    .then(|| msg!("k2-pto-rounded", hz = f.to_string(), us = us, actual = format!("{actual:.3}")).into());
+                let note = ((actual - f).abs() > 1e-9 * f).then(|| {
+                    msg!("k2-pto-rounded", hz = f.to_string(), us = us, actual = format!("{actual:.3}")).into()
+                });
                 (us, note)
             }
         }
@@ -37,8 +38,9 @@ impl Rate {
 /// The channel's spec and registers, or an error naming what the model has.
 pub fn channel(model: &Model, ch: u8) -> Result<(&'static PtoSpec, PtoRegs)> {
     if model.relay {
-        return Err(Error::unsupported(msg!("k2-pto-relay-model", model = model.name))
-            .hint(msg!("k2-pto-relay-model-hint")));
+        return Err(
+            Error::unsupported(msg!("k2-pto-relay-model", model = model.name)).hint(msg!("k2-pto-relay-model-hint"))
+        );
     }
     let all: &'static [PtoSpec] = model.pto;
     let spec = all.iter().find(|p| p.channel == ch).ok_or_else(|| {
@@ -233,11 +235,8 @@ pub fn plan_profile(
     }
     let last = last as u32;
     if overlaps_backup(at, last, backup) && !force {
-        return Err(bad(
-            "at",
-            msg!("k2-profile-backup", at = at, last = last, first = backup.0, end = backup.1),
-        )
-        .hint(msg!("k2-table-backup-hint")));
+        return Err(bad("at", msg!("k2-profile-backup", at = at, last = last, first = backup.0, end = backup.1))
+            .hint(msg!("k2-table-backup-hint")));
     }
     let mut us = Vec::with_capacity(segments.len());
     let mut plan = Plan::default();
@@ -362,7 +361,6 @@ pub fn busy(dev: &mut dyn Device, model: &Model, ch: u8) -> Result<Option<String
         Some(msg!("k2-pto-busy", channel = ch, byte = r.status).into())
     } else if st & 0x08 == 0 {
         Some(msg!("k2-pwm-busy", channel = ch, byte = r.status).into())
-
     } else {
         None
     })
