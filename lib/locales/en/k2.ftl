@@ -468,3 +468,27 @@ k2-program-timers-hint = timers are T0…T255
 k2-program-counters-hint = counters are C0…C255
 k2-program-clock-buffer = an 8-byte clock buffer does not fit there
 k2-program-unknown-instruction = unknown family instruction { $id }
+
+## Restoring a K2 simulator from a snapshot (k2::sim::snapshot)
+
+k2-snapshot-model = the snapshot is of a { $saved }, this simulator is a { $model }
+k2-snapshot-area-hex = area { $area } is not hex
+k2-snapshot-area-size = area { $area } has { $n } bytes, the { $model } has { $want }
+k2-snapshot-element-counts = timer or counter counts differ from the model's
+k2-snapshot-channel-counts = pulse output or counter counts differ from the model's
+k2-snapshot-no-area = no area { $area }
+k2-snapshot-helper-program = the helper program: { $error }
+k2-snapshot-program = the snapshot's program { $source }: { $error }
+k2-snapshot-halt = the snapshot's DEBUG halt is at instruction { $at }, the program has { $n }
+k2-snapshot-breakpoint = the snapshot's breakpoint is at instruction { $at }, the program has { $n }
+
+## Simulated input signals, the helper's mailbox, the served simulator (k2::sim)
+
+k2-hsc-snapshot-mode = HSC{ $n } has no mode { $mode }
+k2-source-square = { $pin } square wave { $freq }
+k2-source-quadrature = A/B quadrature { $lead } leads { $lag } at { $freq }
+k2-source-train = { $pin } pulse train, { $pulses } pulses of { $cycle } ns
+k2-source-encoder = encoder A on { $a }, B on { $b }
+k2-helper-mailbox-address = the helper's mailbox needs an even V address with { $size } bytes free up to VB{ $top } (got VB{ $base })
+k2-serve-accept-retry = cannot accept a connection now ({ $error }); retrying
+k2-serve-stream-closed = the stream closed

@@ -574,3 +574,23 @@ fleet-skipped = fleet `{ $name }` skipped: { $reason }
 schemes-known-hint = known schemes: sim:MODEL, tcp://HOST:PORT, rtu:PORT, kinco:PORT?id=1, sim-servo:?id=1, fx:PORT, fxlink:PORT, sim-fx:FX2N, umpk:PORT, sim-umpk:UMPK16 (PORT: COM3, /dev/ttyUSB0; a serial device server: rtu+tcp://HOST:PORT, kinco+rfc2217://HOST:PORT, …)
 pending-not-connected = cannot read `{ $operand }` yet: the device is not connected
 pending-not-connected-hint = check the link (`plcsh ports`, the cable, the power); the next command tries to connect again
+
+## Device URLs, text files, options (core::url, core::encoding, core::device, core::signal)
+
+url-not-url = `{ $text }` is not a device URL
+url-not-url-hint = use sim:MODEL, tcp://HOST:PORT?unit=1, { $rtu }, rtu+tcp://HOST:PORT, { $kinco } or sim-servo:?id=1
+url-param-too-large = `{ $param }` in { $url } is too large: at most { $max }
+url-param-not-number = `{ $param }` in { $url } is not a whole number
+url-unknown-param = unknown parameter `{ $key }` in { $url }
+url-known-params-hint = known: { $list }
+# What a UTF-16 text file is, named in the two messages after it.
+encoding-utf16-kind = { $kind ->
+    [bom-le] UTF-16 text (byte-order mark FF FE)
+    [bom-be] UTF-16 text (byte-order mark FE FF)
+    [le] UTF-16 little-endian text without a byte-order mark (a NUL after each ASCII character)
+   *[be] UTF-16 big-endian text without a byte-order mark (a NUL before each ASCII character)
+}
+encoding-utf16-odd = { $what } ends in the middle of a character at byte { $byte } (save the file as UTF-8)
+encoding-utf16-surrogate = { $what }: invalid UTF-16 at byte { $byte }: lone surrogate { $surrogate } (save the file as UTF-8)
+device-no-option = { $family } devices have no option `{ $key }`
+signal-freq-positive = pulse frequency { $freq } Hz must be positive

@@ -493,3 +493,35 @@ k2-program-timers-hint = таймеры: T0…T255
 k2-program-counters-hint = счетчики: C0…C255
 k2-program-clock-buffer = 8-байтовый буфер часов туда не помещается
 k2-program-unknown-instruction = неизвестная инструкция семейства { $id }
+
+## Восстановление симулятора K2 из снимка (k2::sim::snapshot)
+
+k2-snapshot-model = снимок сделан с { $saved }, а этот симулятор — { $model }
+k2-snapshot-area-hex = область { $area } не в шестнадцатеричном виде
+k2-snapshot-area-size = в области { $area } { $n ->
+    [one] { $n } байт
+    [few] { $n } байта
+   *[many] { $n } байт
+}, а у { $model } — { $want }
+k2-snapshot-element-counts = число таймеров или счетчиков отличается от модели
+k2-snapshot-channel-counts = число импульсных выходов или счетчиков отличается от модели
+k2-snapshot-no-area = нет области { $area }
+k2-snapshot-helper-program = программа-помощник: { $error }
+k2-snapshot-program = программа снимка { $source }: { $error }
+k2-snapshot-halt = останов DEBUG в снимке на инструкции { $at }, а в программе их { $n }
+k2-snapshot-breakpoint = точка останова в снимке на инструкции { $at }, а в программе их { $n }
+
+## Симулируемые входные сигналы, почтовый ящик помощника, обслуживаемый симулятор (k2::sim)
+
+k2-hsc-snapshot-mode = у HSC{ $n } нет режима { $mode }
+k2-source-square = { $pin }: меандр { $freq }
+k2-source-quadrature = квадратурный сигнал A/B: { $lead } опережает { $lag }, { $freq }
+k2-source-train = { $pin }: последовательность импульсов, { $pulses ->
+    [one] { $pulses } импульс
+    [few] { $pulses } импульса
+   *[many] { $pulses } импульсов
+} по { $cycle } нс
+k2-source-encoder = энкодер: A на { $a }, B на { $b }
+k2-helper-mailbox-address = почтовому ящику помощника нужен чётный адрес V, от которого свободно { $size } байт до VB{ $top } (получен VB{ $base })
+k2-serve-accept-retry = сейчас не удаётся принять соединение ({ $error }); повтор
+k2-serve-stream-closed = поток закрыт

@@ -604,3 +604,22 @@ fleet-skipped = группа `{ $name }` пропущена: { $reason }
 schemes-known-hint = известные схемы: sim:MODEL, tcp://HOST:PORT, rtu:PORT, kinco:PORT?id=1, sim-servo:?id=1, fx:PORT, fxlink:PORT, sim-fx:FX2N, umpk:PORT, sim-umpk:UMPK16 (PORT: COM3, /dev/ttyUSB0; сервер последовательных устройств: rtu+tcp://HOST:PORT, kinco+rfc2217://HOST:PORT, …)
 pending-not-connected = `{ $operand }` пока не прочитать: устройство не подключено
 pending-not-connected-hint = проверьте связь (`plcsh ports`, кабель, питание); следующая команда снова попробует подключиться
+
+## URL устройств, текстовые файлы, параметры (core::url, core::encoding, core::device, core::signal)
+
+url-not-url = `{ $text }` — не URL устройства
+url-not-url-hint = используйте sim:MODEL, tcp://HOST:PORT?unit=1, { $rtu }, rtu+tcp://HOST:PORT, { $kinco } или sim-servo:?id=1
+url-param-too-large = `{ $param }` в { $url } слишком велик: не больше { $max }
+url-param-not-number = `{ $param }` в { $url } — не целое число
+url-unknown-param = неизвестный параметр `{ $key }` в { $url }
+url-known-params-hint = известные: { $list }
+encoding-utf16-kind = { $kind ->
+    [bom-le] текст UTF-16 (метка порядка байт FF FE)
+    [bom-be] текст UTF-16 (метка порядка байт FE FF)
+    [le] текст UTF-16 little-endian без метки порядка байт (NUL после каждого символа ASCII)
+   *[be] текст UTF-16 big-endian без метки порядка байт (NUL перед каждым символом ASCII)
+}
+encoding-utf16-odd = { $what } обрывается посреди символа на байте { $byte } (сохраните файл в UTF-8)
+encoding-utf16-surrogate = { $what }: неверный UTF-16 на байте { $byte }: одиночный суррогат { $surrogate } (сохраните файл в UTF-8)
+device-no-option = у устройств { $family } нет параметра `{ $key }`
+signal-freq-positive = частота импульсов { $freq } Гц должна быть положительной

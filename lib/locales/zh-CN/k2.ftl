@@ -458,3 +458,27 @@ k2-program-timers-hint = 定时器为 T0…T255
 k2-program-counters-hint = 计数器为 C0…C255
 k2-program-clock-buffer = 8 字节的时钟缓冲区放不下
 k2-program-unknown-instruction = 未知的系列指令 { $id }
+
+## 从快照恢复 K2 仿真器（k2::sim::snapshot）
+
+k2-snapshot-model = 快照来自 { $saved }，而此仿真器是 { $model }
+k2-snapshot-area-hex = 存储区 { $area } 不是十六进制
+k2-snapshot-area-size = 存储区 { $area } 有 { $n } 字节，而 { $model } 有 { $want } 字节
+k2-snapshot-element-counts = 定时器或计数器的数量与型号不符
+k2-snapshot-channel-counts = 脉冲输出或计数器的数量与型号不符
+k2-snapshot-no-area = 没有存储区 { $area }
+k2-snapshot-helper-program = 辅助程序：{ $error }
+k2-snapshot-program = 快照中的程序 { $source }：{ $error }
+k2-snapshot-halt = 快照中的 DEBUG 暂停位于第 { $at } 条指令，而程序只有 { $n } 条
+k2-snapshot-breakpoint = 快照中的断点位于第 { $at } 条指令，而程序只有 { $n } 条
+
+## 仿真输入信号、辅助程序邮箱、被服务的仿真器（k2::sim）
+
+k2-hsc-snapshot-mode = HSC{ $n } 没有模式 { $mode }
+k2-source-square = { $pin } 方波 { $freq }
+k2-source-quadrature = A/B 正交信号，{ $lead } 超前 { $lag }，{ $freq }
+k2-source-train = { $pin } 脉冲串，{ $pulses } 个脉冲，每个 { $cycle } ns
+k2-source-encoder = 编码器 A 接 { $a }，B 接 { $b }
+k2-helper-mailbox-address = 辅助程序邮箱需要一个偶数 V 地址，且其后到 VB{ $top } 有 { $size } 字节空闲（得到 VB{ $base }）
+k2-serve-accept-retry = 暂时无法接受连接（{ $error }）；正在重试
+k2-serve-stream-closed = 数据流已关闭

@@ -543,3 +543,22 @@ fleet-skipped = 已跳过设备组 `{ $name }`：{ $reason }
 schemes-known-hint = 已知方案：sim:MODEL、tcp://HOST:PORT、rtu:PORT、kinco:PORT?id=1、sim-servo:?id=1、fx:PORT、fxlink:PORT、sim-fx:FX2N、umpk:PORT、sim-umpk:UMPK16（PORT：COM3、/dev/ttyUSB0；串口设备服务器：rtu+tcp://HOST:PORT、kinco+rfc2217://HOST:PORT、…）
 pending-not-connected = 暂时无法读取 `{ $operand }`：设备未连接
 pending-not-connected-hint = 检查连接（`plcsh ports`、电缆、电源）；下一条命令会再次尝试连接
+
+## 设备 URL、文本文件、选项（core::url、core::encoding、core::device、core::signal）
+
+url-not-url = `{ $text }` 不是设备 URL
+url-not-url-hint = 使用 sim:MODEL、tcp://HOST:PORT?unit=1、{ $rtu }、rtu+tcp://HOST:PORT、{ $kinco } 或 sim-servo:?id=1
+url-param-too-large = { $url } 中的 `{ $param }` 太大：最大 { $max }
+url-param-not-number = { $url } 中的 `{ $param }` 不是整数
+url-unknown-param = { $url } 中有未知参数 `{ $key }`
+url-known-params-hint = 已知参数：{ $list }
+encoding-utf16-kind = { $kind ->
+    [bom-le] UTF-16 文本（字节顺序标记 FF FE）
+    [bom-be] UTF-16 文本（字节顺序标记 FE FF）
+    [le] 无字节顺序标记的 UTF-16 小端文本（每个 ASCII 字符后有一个 NUL）
+   *[be] 无字节顺序标记的 UTF-16 大端文本（每个 ASCII 字符前有一个 NUL）
+}
+encoding-utf16-odd = { $what } 在第 { $byte } 字节处于字符中间结束（请把文件保存为 UTF-8）
+encoding-utf16-surrogate = { $what }：第 { $byte } 字节处 UTF-16 无效：孤立代理项 { $surrogate }（请把文件保存为 UTF-8）
+device-no-option = { $family } 设备没有选项 `{ $key }`
+signal-freq-positive = 脉冲频率 { $freq } Hz 必须为正
