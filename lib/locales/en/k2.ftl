@@ -300,6 +300,7 @@ k2-input-above-hsc-limit = warning: above HSC{ $n }'s { $max } Hz limit on { $mo
 k2-input-no-source = no simulated signal drives { $pin }
 k2-input-no-source-hint = `sim inputs` lists the sources
 k2-retain-area = { $part }: only V, M and C ranges can be retained
+k2-retain-area-hint = e.g. sim retain VB0..VB99 MB0[16] C0..C15
 k2-retain-too-much = { $bytes } retained bytes asked for; { $model } retains at most { $room } (manual §2.1.2)
 k2-retain-too-much-hint = retain fewer or shorter ranges (a counter takes 2 bytes)
 k2-state-not-saved = the simulator state was not saved: { $error }

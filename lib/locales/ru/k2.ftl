@@ -296,7 +296,11 @@ k2-pls-table-even = начало таблицы профиля SMW{ $register } 
 k2-pls-table-even-hint = таблица должна начинаться с нечётного адреса V, например SMW{ $register }=3001 для VB3001 (§3.4.2.1)
 k2-pls-table-past-v = начало таблицы профиля VB{ $start } за пределами области V (VB{ $top })
 k2-pls-table-past-v-hint = укажите нечётный адрес внутри области V
-k2-pls-table-segments = таблица профиля в VB{ $start } содержит { $n } сегм. (допустимо 1–{ $max })
+k2-pls-table-segments = таблица профиля в VB{ $start } содержит { $n ->
+    [one] { $n } сегмент
+    [few] { $n } сегмента
+   *[many] { $n } сегментов
+} (допустимо 1–{ $max })
 k2-pls-table-segments-hint = запишите число сегментов в первый байт таблицы
 k2-pls-table-runs-past = таблица профиля VB{ $start }…VB{ $last } выходит за конец области V
 k2-pls-table-runs-past-hint = перенесите таблицу или уменьшите число сегментов
@@ -321,6 +325,7 @@ k2-input-above-hsc-limit = внимание: выше предела HSC{ $n } {
 k2-input-no-source = { $pin } не управляется симулируемым сигналом
 k2-input-no-source-hint = `sim inputs` перечисляет источники
 k2-retain-area = { $part }: сохраняться могут только диапазоны V, M и C
+k2-retain-area-hint = например, sim retain VB0..VB99 MB0[16] C0..C15
 k2-retain-too-much = запрошено { $bytes } байт сохранения данных; { $model } сохраняет не больше { $room } (руководство §2.1.2)
 k2-retain-too-much-hint = сохраняйте меньше или более короткие диапазоны (счетчик занимает 2 байта)
 k2-state-not-saved = состояние симулятора не сохранено: { $error }

@@ -290,6 +290,7 @@ k2-input-above-hsc-limit = 警告：超过 { $model } 上 HSC{ $n } 的 { $max }
 k2-input-no-source = 没有仿真信号驱动 { $pin }
 k2-input-no-source-hint = `sim inputs` 列出信号源
 k2-retain-area = { $part }：只有 V、M 和 C 范围可以断电保持
+k2-retain-area-hint = 例如 sim retain VB0..VB99 MB0[16] C0..C15
 k2-retain-too-much = 请求断电保持 { $bytes } 字节；{ $model } 最多保持 { $room } 字节（手册 §2.1.2）
 k2-retain-too-much-hint = 保持更少或更短的范围（一个计数器占 2 字节）
 k2-state-not-saved = 仿真器状态未保存：{ $error }

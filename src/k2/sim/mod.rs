@@ -489,8 +489,7 @@ impl K2Sim {
                 let ops = self.space.parse_k2(part)?;
                 let area = ops[0].area;
                 if !matches!(area, Area::V | Area::M | Area::C) {
-                    return Err(Error::usage(msg!("k2-retain-area", part = part))
-                        .hint("e.g. sim retain VB0..VB99 MB0[16] C0..C15"));
+                    return Err(Error::usage(msg!("k2-retain-area", part = part)).hint(msg!("k2-retain-area-hint")));
                 }
                 let first = ops.iter().map(|o| o.byte).min().unwrap_or(0);
                 let end =
