@@ -89,14 +89,13 @@ pub fn snapshot_file(name: &str) -> crate::core::Result<PathBuf> {
         return Ok(PathBuf::from(name));
     }
     if name.is_empty() || !name.chars().all(|c| c.is_ascii_alphanumeric() || "_-.".contains(c)) {
-        return Err(crate::core::Error::usage(format!(
-            "`{name}` is not a snapshot name (Latin letters A-Z a-z, digits, _ - .)"
-        ))
-        .hint("or give a file path ending in .json"));
+        return Err(crate::core::Error::usage(crate::msg!("snapshot-not-name", name = name))
+            .hint(crate::msg!("snapshot-not-name-hint")));
     }
     let d = snapshots().ok_or_else(|| {
-        crate::core::Error::io("no data directory for snapshots").hint("give a file path ending in .json")
+        crate::core::Error::io(crate::msg!("snapshot-no-data-dir")).hint(crate::msg!("snapshot-no-data-dir-hint"))
     })?;
+
     Ok(d.join(format!("{name}.json")))
 }
 

@@ -21,6 +21,7 @@
 use crate::core::device::Change;
 use crate::core::operand::{Candidate, Operand, OperandSpace};
 use crate::core::{Device, DeviceInfo, Error, ErrorKind, Result, Value};
+use crate::msg;
 
 /// A device with a step deferred to its first use.
 pub struct Pending {
@@ -141,9 +142,9 @@ impl OperandSpace for NotConnected {
         self.family
     }
     fn parse(&self, text: &str) -> Result<Vec<Operand>> {
-        Err(Error::link(format!("cannot read `{}` yet: the device is not connected", text.trim()))
+        Err(Error::link(msg!("pending-not-connected", operand = text.trim()))
             .cause(self.reason.message.clone())
-            .hint("check the link (`plcsh ports`, the cable, the power); the next command tries to connect again"))
+            .hint(msg!("pending-not-connected-hint")))
     }
     fn name(&self, op: &Operand) -> String {
         format!("{op:?}")

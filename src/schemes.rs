@@ -62,8 +62,7 @@ pub fn open_url(url: &str, clock: &Clock) -> Result<Box<dyn Device>> {
         "sim-fx" => crate::fx::driver::open_sim(&u, clock),
         "umpk" => crate::umpk::driver::open_serial(&u),
         "sim-umpk" => crate::umpk::driver::open_sim(&u, clock),
-        other => Err(Error::usage(format!("unknown device scheme `{other}:` in {url}")).hint(
-            "known schemes: sim:MODEL, tcp://HOST:PORT, rtu:PORT, kinco:PORT?id=1, sim-servo:?id=1, fx:PORT, fxlink:PORT, sim-fx:FX2N, umpk:PORT, sim-umpk:UMPK16 (PORT: COM3, /dev/ttyUSB0; a serial device server: rtu+tcp://HOST:PORT, kinco+rfc2217://HOST:PORT, …)",
-        )),
+        other => Err(Error::usage(crate::msg!("profile-unknown-scheme", scheme = other, url = url))
+            .hint(crate::msg!("schemes-known-hint"))),
     }
 }

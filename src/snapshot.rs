@@ -40,6 +40,7 @@
 //! a NAME with a `/` or ending in `.json` is a file path.
 
 use crate::core::{Error, Result};
+use crate::msg;
 use crate::session::Session;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
@@ -67,16 +68,17 @@ pub struct Snapshot {
 }
 
 fn enc(v: impl Serialize) -> Result<serde_json::Value> {
-    serde_json::to_value(v).map_err(|e| Error::io("cannot encode the snapshot").cause(e))
+    serde_json::to_value(v).map_err(|e| Error::io(msg!("snapshot-cannot-encode")).cause(e))
 }
 
 /// Decodes `device`'s `section`; a value that does not fit is named by its path.
 fn dec<T: serde::de::DeserializeOwned>(v: &serde_json::Value, device: &str, section: &str) -> Result<T> {
     serde_json::from_value(v.clone()).map_err(|e| {
-        let at = failing_field::<T>(v).map(|p| format!(" at `{p}`")).unwrap_or_default();
-        Error::usage(format!("`{device}`'s {section} section in the snapshot is not valid{at}"))
-            .cause(e)
-            .hint("the file may be damaged")
+        let m = match failing_field::<T>(v) {
+            Some(at) => msg!("snapshot-section-invalid-at", device = device, section = section, at = at),
+            None => msg!("snapshot-section-invalid", device = device, section = section),
+        };
+        Error::usage(m).cause(e).hint(msg!("snapshot-file-damaged"))
     })
 }
 
@@ -230,7 +232,7 @@ impl Sections {
             }
         }
         for w in s.wiring.iter().flatten() {
-            crate::wiring::parse(&w.decl).map_err(|e| e.cause(format!("a wire of `{name}` in the snapshot")))?;
+            crate::wiring::parse(&w.decl).map_err(|e| e.cause(msg!("snapshot-wire-of", name = name)))?;
         }
         Ok(s)
     }
@@ -336,24 +338,24 @@ impl Snapshot {
                 devices.insert(name, DeviceSnap { family: "fx".into(), sections });
             } else if let Some(u) = umpk_sim(dev) {
                 let st = u.lock().unwrap_or_else(|p| p.into_inner()).snapshot_state().map_err(|why| {
-                    Error::unsupported(format!("cannot snapshot `{name}`: {why}"))
-                        .hint("a snapshot holds every simulated device or none")
+                    Error::unsupported(msg!("snapshot-cannot-snapshot", name = name.as_str(), why = why.to_string()))
+                        .hint(msg!("snapshot-all-or-none"))
                 })?;
                 let mut sections = BTreeMap::new();
                 sections.insert("umpk".to_string(), enc(st)?);
                 devices.insert(name, DeviceSnap { family: "umpk".into(), sections });
             } else if dev.info().simulated {
                 let family = dev.info().family;
-                return Err(Error::unsupported(format!(
-                    "cannot snapshot `{name}`: a simulated {family} device's state is not kept in snapshots"
+                return Err(Error::unsupported(msg!(
+                    "snapshot-family-not-kept",
+                    name = name.as_str(),
+                    family = family
                 ))
-                .hint("close it before saving, or save without it"));
+                .hint(msg!("snapshot-family-not-kept-hint")));
             }
         }
         if devices.is_empty() {
-            return Err(Error::usage("no simulated device is open: nothing to snapshot").hint(
-                "snapshots hold simulator state (sim:MODEL, sim-servo:, sim-fx:, sim-umpk:); a real device's state is its own",
-            ));
+            return Err(Error::usage(msg!("snapshot-nothing")).hint(msg!("snapshot-nothing-hint")));
         }
         Ok(Snapshot {
             format: FORMAT.into(),
@@ -369,7 +371,7 @@ impl Snapshot {
         self.check()?;
         // Check that every device is there and of its family first.
         for (name, d) in &self.devices {
-            let i = s.index(name).map_err(|e| e.cause("the snapshot has this device"))?;
+            let i = s.index(name).map_err(|e| e.cause(msg!("snapshot-has-device")))?;
             let dev = &mut s.entry(i).device;
             let ok = match d.family.as_str() {
                 "k2" => crate::k2::simulator(dev.as_mut()).is_some(),
@@ -379,11 +381,8 @@ impl Snapshot {
                 _ => false,
             };
             if !ok {
-                return Err(Error::usage(format!(
-                    "`{name}` is not a simulated {} device, as it was when the snapshot was saved",
-                    d.family
-                ))
-                .hint("open the same simulators under the same names (e.g. --device plc=sim:MODEL)"));
+                return Err(Error::usage(msg!("snapshot-not-simulated", name = name, family = d.family.as_str()))
+                    .hint(msg!("snapshot-not-simulated-hint")));
             }
         }
         // Decode every section and check the models before anything changes.
@@ -398,12 +397,19 @@ impl Snapshot {
             if let Some(st) = sections.k2 {
                 let sim = crate::k2::simulator(s.entry(i).device.as_mut()).expect("checked above");
                 if st.model != sim.model().name {
-                    return Err(Error::usage(format!(
-                        "cannot restore `{name}`: the snapshot is of a {}, this simulator is a {}",
-                        st.model,
-                        sim.model().name
+                    return Err(Error::usage(msg!(
+                        "snapshot-model-differs",
+                        name = name,
+                        saved = st.model.as_str(),
+                        model = sim.model().name,
+                        article = "a"
                     ))
-                    .hint(format!("open it as {name}=sim:{}", st.model)));
+                    .hint(msg!(
+                        "snapshot-open-as",
+                        name = name,
+                        scheme = "sim",
+                        model = st.model.as_str()
+                    )));
                 }
                 k2.push((i, name, st));
                 let wires = sections.wiring.unwrap_or_default();
@@ -419,11 +425,19 @@ impl Snapshot {
                 let plc = fx_sim(&mut s.entry(i).device).expect("checked above");
                 let model = plc.lock().unwrap_or_else(|p| p.into_inner()).model.name;
                 if st.model != model {
-                    return Err(Error::usage(format!(
-                        "cannot restore `{name}`: the snapshot is of an {}, this simulator is an {model}",
-                        st.model
+                    return Err(Error::usage(msg!(
+                        "snapshot-model-differs",
+                        name = name,
+                        saved = st.model.as_str(),
+                        model = model,
+                        article = "an"
                     ))
-                    .hint(format!("open it as {name}=sim-fx:{}", st.model)));
+                    .hint(msg!(
+                        "snapshot-open-as",
+                        name = name,
+                        scheme = "sim-fx",
+                        model = st.model.as_str()
+                    )));
                 }
                 fx.push((i, name, st));
             }
@@ -431,11 +445,19 @@ impl Snapshot {
                 let u = umpk_sim(&mut s.entry(i).device).expect("checked above");
                 let model = u.lock().unwrap_or_else(|p| p.into_inner()).model.name;
                 if st.model != model {
-                    return Err(Error::usage(format!(
-                        "cannot restore `{name}`: the snapshot is of a {}, this simulator is a {model}",
-                        st.model
+                    return Err(Error::usage(msg!(
+                        "snapshot-model-differs",
+                        name = name,
+                        saved = st.model.as_str(),
+                        model = model,
+                        article = "a"
                     ))
-                    .hint(format!("open it as {name}=sim-umpk:{}", st.model)));
+                    .hint(msg!(
+                        "snapshot-open-as",
+                        name = name,
+                        scheme = "sim-umpk",
+                        model = st.model.as_str()
+                    )));
                 }
                 umpk.push((i, name, st));
             }
@@ -447,14 +469,16 @@ impl Snapshot {
                 sim.unwire("all")?;
             }
             for w in wires {
-                crate::wiring::setup::wire(s, &w.decl)
-                    .map_err(|e| e.cause(format!("restoring `{name}`'s wire `{}`", w.decl)))?;
+                crate::wiring::setup::wire(s, &w.decl).map_err(|e| {
+                    e.cause(msg!("snapshot-restoring-wire", name = name.as_str(), wire = w.decl.as_str()))
+                })?;
             }
         }
         s.clock.set(Duration::from_micros(self.clock_us));
         for (i, name, st) in k2 {
             let sim = crate::k2::simulator(s.entry(i).device.as_mut()).expect("checked above");
-            sim.restore_snapshot(&st).map_err(|m| Error::usage(format!("cannot restore `{name}`: {m}")))?;
+            sim.restore_snapshot(&st)
+                .map_err(|m| Error::usage(msg!("snapshot-cannot-restore", name = name, why = m.to_string())))?;
         }
         for (i, drives) in servo {
             let line = crate::servo::simulator(s.entry(i).device.as_mut()).expect("checked above");
@@ -463,18 +487,20 @@ impl Snapshot {
         for (i, name, st) in fx {
             let plc = fx_sim(&mut s.entry(i).device).expect("checked above");
             let mut m = plc.lock().unwrap_or_else(|p| p.into_inner());
-            m.restore_state(&st).map_err(|e| Error::usage(format!("cannot restore `{name}`: {e}")))?;
+            m.restore_state(&st)
+                .map_err(|e| Error::usage(msg!("snapshot-cannot-restore", name = name, why = e.to_string())))?;
         }
         for (i, name, st) in umpk {
             let u = umpk_sim(&mut s.entry(i).device).expect("checked above");
             let mut m = u.lock().unwrap_or_else(|p| p.into_inner());
-            m.restore_snapshot(&st).map_err(|e| Error::usage(format!("cannot restore `{name}`: {e}")))?;
+            m.restore_snapshot(&st)
+                .map_err(|e| Error::usage(msg!("snapshot-cannot-restore", name = name, why = e.to_string())))?;
         }
         for (i, name, wires) in wiring {
             let sim = crate::k2::simulator(s.entry(i).device.as_mut()).expect("checked above");
             let h = sim.wiring.get_or_insert_with(Default::default);
             if h.wires.len() != wires.len() {
-                return Err(Error::state(format!("restoring `{name}`: its wires did not come back as saved")));
+                return Err(Error::state(msg!("snapshot-wires-not-back", name = name)));
             }
             for (w, saved) in h.wires.iter_mut().zip(wires) {
                 w.state = saved.state;
@@ -486,22 +512,17 @@ impl Snapshot {
     /// The format, version and sections are ones this plcsh can restore.
     fn check(&self) -> Result<()> {
         if self.format != FORMAT {
-            return Err(Error::usage(format!("not a plcsh snapshot (format `{}`)", self.format)));
+            return Err(Error::usage(msg!("snapshot-not-format", format = self.format.as_str())));
         }
         if self.version > VERSION {
-            return Err(Error::usage(format!(
-                "the snapshot is version {}, this plcsh reads up to version {VERSION}",
-                self.version
-            ))
-            .hint("restore it with the newer plcsh that saved it"));
+            return Err(Error::usage(msg!("snapshot-newer-version", version = self.version, max = VERSION))
+                .hint(msg!("snapshot-newer-version-hint")));
         }
         for (name, d) in &self.devices {
             for section in d.sections.keys() {
                 if !KNOWN.iter().any(|(f, s)| *f == d.family && s == section) {
-                    return Err(Error::usage(format!(
-                        "the snapshot's `{name}` has a `{section}` section this plcsh cannot restore"
-                    ))
-                    .hint("it was saved by a newer plcsh; restoring without it would not give the same state"));
+                    return Err(Error::usage(msg!("snapshot-unknown-section", name = name, section = section))
+                        .hint(msg!("snapshot-unknown-section-hint")));
                 }
             }
         }
@@ -522,14 +543,12 @@ impl Snapshot {
     /// included). Otherwise the save is refused, naming the device, the section and the
     /// value.
     pub fn encode(&self) -> Result<String> {
-        let text = serde_json::to_string(self).map_err(|e| Error::io("cannot encode the snapshot").cause(e))?;
+        let text = serde_json::to_string(self).map_err(|e| Error::io(msg!("snapshot-cannot-encode")).cause(e))?;
         let refuse = |what: String| {
-            Error::state(format!("cannot save the snapshot: {what}")).hint(
-                "nothing was written: the file would not restore. This is a fault in plcsh; \
-                 please report it with the commands that led here",
-            )
+            Error::state(msg!("snapshot-save-refused", why = what)).hint(msg!("snapshot-save-refused-hint"))
         };
-        let back: Snapshot = serde_json::from_str(&text).map_err(|e| refuse(format!("it does not read back ({e})")))?;
+        let back: Snapshot = serde_json::from_str(&text)
+            .map_err(|e| refuse(msg!("snapshot-does-not-read-back", error = e.to_string()).into()))?;
         back.check().map_err(|e| refuse(e.message.clone()))?;
         for (name, d) in &back.devices {
             let sections = Sections::decode(name, d).map_err(|e| {
@@ -540,9 +559,9 @@ impl Snapshot {
             for (section, v) in &d.sections {
                 let Some(w) = again.get(section) else { continue };
                 if let Some(at) = first_difference(v, w) {
-                    return Err(refuse(format!(
-                        "`{name}`'s {section} section does not read back as saved: `{at}` changes"
-                    )));
+                    return Err(refuse(
+                        msg!("snapshot-section-changes", name = name, section = section, at = at).into(),
+                    ));
                 }
             }
         }
@@ -551,12 +570,12 @@ impl Snapshot {
 
     pub fn load(path: &Path) -> Result<Snapshot> {
         let text = std::fs::read_to_string(path).map_err(|e| {
-            Error::io(format!("cannot read the snapshot {}", path.display()))
+            Error::io(msg!("snapshot-cannot-read", path = path.display().to_string()))
                 .cause(e)
-                .hint("list saved snapshots with `sim snapshots`")
+                .hint(msg!("snapshot-cannot-read-hint"))
         })?;
         let s: Snapshot = serde_json::from_str(&text)
-            .map_err(|e| Error::usage(format!("{} is not a plcsh snapshot", path.display())).cause(e))?;
+            .map_err(|e| Error::usage(msg!("snapshot-not-snapshot", path = path.display().to_string())).cause(e))?;
         s.check()?;
         Ok(s)
     }
@@ -567,7 +586,8 @@ impl Snapshot {
             .devices
             .values()
             .find_map(|d| d.sections.get("k2"))
-            .ok_or_else(|| Error::usage("the snapshot holds no simulated K2"))?;
+            .ok_or_else(|| Error::usage(msg!("snapshot-no-k2")))?;
+
         let st: crate::k2::sim::snapshot::K2State = dec(v, "plc", "k2")?;
         sim.clock.set(Duration::from_micros(self.clock_us));
         sim.restore_snapshot(&st).map_err(Error::usage)

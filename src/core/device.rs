@@ -112,7 +112,7 @@ pub trait Device: Send {
     }
     /// Sets a device option given in its URL or profile (`word_order`, `encoder` …).
     fn set_option(&mut self, key: &str, _value: &str) -> Result<()> {
-        Err(crate::core::Error::usage(format!("{} devices have no option `{key}`", self.info().family)))
+        Err(crate::core::Error::usage(crate::msg!("device-no-option", family = self.info().family, key = key)))
     }
 }
 

@@ -14,6 +14,7 @@
 //! the next owner removes the leftover when it opens the file ([`remove_stale`]).
 
 use crate::core::{Error, Result};
+use crate::msg;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
@@ -38,10 +39,11 @@ pub fn remove_stale(path: &Path) {
 /// Writes `bytes` to `path` atomically and durably (module doc).
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
     let (dir, tmp) = sibling(path, "tmp");
-    std::fs::create_dir_all(&dir).map_err(|e| Error::io(format!("cannot create {}", dir.display())).cause(e))?;
+    std::fs::create_dir_all(&dir)
+        .map_err(|e| Error::io(msg!("file-cannot-create", path = dir.display().to_string())).cause(e))?;
     let fail = |e: std::io::Error| {
         let _ = std::fs::remove_file(&tmp);
-        Error::io(format!("cannot write {}", path.display())).cause(e)
+        Error::io(msg!("file-cannot-write", path = path.display().to_string())).cause(e)
     };
     let written = |f: &mut std::fs::File| f.write_all(bytes).and_then(|()| f.sync_all());
     match crate::core::platform::unnamed_file(&dir) {

@@ -86,18 +86,19 @@ pub fn decode(bytes: &[u8]) -> Result<(String, Encoding), String> {
         },
     };
     let le = enc == Encoding::Utf16Le;
-    let what = match (bom, le) {
-        (true, true) => "UTF-16 text (byte-order mark FF FE)",
-        (true, false) => "UTF-16 text (byte-order mark FE FF)",
-        (false, true) => "UTF-16 little-endian text without a byte-order mark (a NUL after each ASCII character)",
-        (false, false) => "UTF-16 big-endian text without a byte-order mark (a NUL before each ASCII character)",
+    // What the text is, as the messages name it (a noun phrase of the catalogue).
+    let what = || {
+        let kind = match (bom, le) {
+            (true, true) => "bom-le",
+            (true, false) => "bom-be",
+            (false, true) => "le",
+            (false, false) => "be",
+        };
+        crate::msg!("encoding-utf16-kind", kind = kind).text
     };
     let first = bytes.len() - body.len();
     if body.len() % 2 != 0 {
-        return Err(format!(
-            "{what} ends in the middle of a character at byte {} (save the file as UTF-8)",
-            bytes.len() - 1
-        ));
+        return Err(crate::msg!("encoding-utf16-odd", what = what(), byte = bytes.len() - 1).into());
     }
     let units =
         body.chunks_exact(2).map(
@@ -114,11 +115,13 @@ pub fn decode(bytes: &[u8]) -> Result<(String, Encoding), String> {
         match r {
             Ok(c) => out.push(c),
             Err(e) => {
-                return Err(format!(
-                    "{what}: invalid UTF-16 at byte {}: lone surrogate {:04X} (save the file as UTF-8)",
-                    first + 2 * i,
-                    e.unpaired_surrogate()
-                ))
+                return Err(crate::msg!(
+                    "encoding-utf16-surrogate",
+                    what = what(),
+                    byte = first + 2 * i,
+                    surrogate = format!("{:04X}", e.unpaired_surrogate())
+                )
+                .into())
             }
         }
     }

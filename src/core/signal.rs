@@ -71,7 +71,7 @@ impl PulseTrain {
     /// segment ends, whichever is later. Returns the segment as queued.
     pub fn push(&mut self, at: f64, freq: f64, count: u64, dir: i8) -> Result<PulseSegment, String> {
         if !(freq.is_finite() && freq > 0.0) {
-            return Err(format!("pulse frequency {freq} Hz must be positive"));
+            return Err(crate::msg!("signal-freq-positive", freq = freq.to_string()).into());
         }
         let start = self.end().map_or(at, |e| e.max(at));
         let s = PulseSegment { start, freq, count, dir: if dir < 0 { -1 } else { 1 } };

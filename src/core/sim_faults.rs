@@ -9,6 +9,7 @@
 
 use crate::core::literal::parse_option_duration_us;
 use crate::core::{Error, Result};
+use crate::msg;
 use serde_json::{json, Value as Json};
 use std::time::Duration;
 
@@ -55,8 +56,18 @@ impl Fault {
             FaultKind::NoReply => "no-reply".to_string(),
             FaultKind::Stuck { name, on, .. } => format!("stuck {name}={}", *on as u8),
         };
-        let until = self.until_us.map_or(" until cleared".to_string(), |u| format!(" until {:.3} s", u as f64 / 1e6));
-        format!("fault {}: {what} from {:.3} s{until}", self.id, self.from_us as f64 / 1e6)
+        let from = format!("{:.3}", self.from_us as f64 / 1e6);
+        match self.until_us {
+            None => msg!("sim-fault-describe", id = self.id, what = what, from = from).into(),
+            Some(u) => msg!(
+                "sim-fault-describe-until",
+                id = self.id,
+                what = what,
+                from = from,
+                until = format!("{:.3}", u as f64 / 1e6)
+            )
+            .into(),
+        }
     }
 }
 
@@ -73,7 +84,7 @@ pub struct Faults {
 }
 
 fn usage(msg: impl Into<crate::core::error::Text>, words: &str) -> Error {
-    Error::usage(msg).hint(format!("control words: {words}"))
+    Error::usage(msg).hint(msg!("sim-control-words-hint", words = words))
 }
 
 /// `1`, `on`, `true` / `0`, `off`, `false`.
@@ -81,7 +92,7 @@ pub fn level(text: &str, words: &str) -> Result<bool> {
     match text.to_ascii_lowercase().as_str() {
         "1" | "on" | "true" => Ok(true),
         "0" | "off" | "false" => Ok(false),
-        v => Err(usage(format!("`{v}` is not a level (1, 0, on, off)"), words)),
+        v => Err(usage(msg!("sim-not-level", value = v), words)),
     }
 }
 
@@ -91,10 +102,11 @@ fn for_window(words: &[&str], all: &str) -> Result<Option<Duration>> {
         match w.split_once('=') {
             Some(("for", v)) => {
                 let us = parse_option_duration_us(v).map_err(|m| usage(format!("for={v}: {m}"), all))?;
-                let us = u64::try_from(us).map_err(|_| usage(format!("for={v}: must not be negative"), all))?;
+                let us =
+                    u64::try_from(us).map_err(|_| usage(msg!("k2-fault-negative", key = "for", value = v), all))?;
                 d = Some(Duration::from_micros(us));
             }
-            _ => return Err(usage(format!("`{w}` is not an option here (for=DURATION)"), all)),
+            _ => return Err(usage(msg!("sim-not-option-here", word = *w), all)),
         }
     }
     Ok(d)
@@ -127,25 +139,33 @@ impl Faults {
         let now_us = now.as_micros() as u64;
         let r = match words.first().map(|w| w.to_ascii_lowercase()).as_deref() {
             Some("faults") => match words.get(1) {
-                Some(w) => Err(usage(format!("`faults` takes nothing after it (got `{w}`)"), all)),
+                Some(w) => Err(usage(msg!("sim-word-takes-nothing", word = "faults", rest = *w), all)),
                 None => {
                     let list: Vec<String> = self.list.iter().map(Fault::describe).collect();
-                    let text = if list.is_empty() { "no injected faults".into() } else { list.join("\n") };
+                    let text = if list.is_empty() { msg!("sim-no-faults").into() } else { list.join("\n") };
                     Ok((text, json!({"faults": self.list, "time_us": now_us})))
                 }
             },
             Some("events") => match words.get(1) {
-                Some(w) => Err(usage(format!("`events` takes nothing after it (got `{w}`)"), all)),
+                Some(w) => Err(usage(msg!("sim-word-takes-nothing", word = "events", rest = *w), all)),
                 None => {
                     let ev: Vec<Json> =
                         self.log.iter().map(|(t, id, what)| json!({"id": id, "fault": what, "time_us": t})).collect();
                     let text = if ev.is_empty() {
-                        "no injected fault has acted".to_string()
+                        msg!("sim-no-fault-acted").into()
                     } else {
                         self.log
                             .iter()
-                            .map(|(t, id, what)| format!("{:.6} s: fault {id} ({what}) acted", *t as f64 / 1e6))
-                            .collect::<Vec<_>>()
+                            .map(|(t, id, what)| {
+                                msg!(
+                                    "sim-fault-acted",
+                                    seconds = format!("{:.6}", *t as f64 / 1e6),
+                                    id = id.to_string(),
+                                    name = what
+                                )
+                                .into()
+                            })
+                            .collect::<Vec<String>>()
                             .join("\n")
                     };
                     Ok((text, json!({"events": ev, "time_us": now_us})))
@@ -170,30 +190,29 @@ impl Faults {
                 let n = match words.get(1).copied() {
                     None | Some("all") => std::mem::take(&mut self.list).len(),
                     Some(id) => {
-                        let id: u32 = id.parse().map_err(|_| usage(format!("`{id}` is not a fault id"), all))?;
+                        let id: u32 = id.parse().map_err(|_| usage(msg!("sim-not-fault-id", text = id), all))?;
                         let before = self.list.len();
                         self.list.retain(|f| f.id != id);
                         if before == self.list.len() {
-                            return Err(Error::usage(format!("there is no fault {id}")).hint("`faults` lists them"));
+                            return Err(
+                                Error::usage(msg!("sim-no-such-fault", id = id)).hint(msg!("sim-no-such-fault-hint"))
+                            );
                         }
                         1
                     }
                 };
-                Ok((format!("cleared {n} fault(s)"), json!({"cleared": n, "time_us": now_us})))
+                Ok((msg!("sim-faults-cleared", n = n).into(), json!({"cleared": n, "time_us": now_us})))
             }
             Some("no-reply") => self.add(FaultKind::NoReply, for_window(&words[1..], all)?, now),
             Some("stuck") => {
-                let spec =
-                    words.get(1).ok_or_else(|| usage("fault stuck needs an input and a level: stuck IN=1", all))?;
-                let (op, v) = spec
-                    .split_once('=')
-                    .ok_or_else(|| usage(format!("`{spec}`: write stuck {spec}=1 or stuck {spec}=0"), all))?;
+                let spec = words.get(1).ok_or_else(|| usage(msg!("sim-stuck-needs-input"), all))?;
+                let (op, v) = spec.split_once('=').ok_or_else(|| usage(msg!("sim-stuck-shape", spec = *spec), all))?;
                 let (n, name) = input(op)?;
                 let kind = FaultKind::Stuck { input: n, name, on: level(v, all)? };
                 self.add(kind, for_window(&words[2..], all)?, now)
             }
-            Some(other) => Err(usage(format!("`{other}` is not a fault here (no-reply, stuck)"), all)),
-            None => Err(usage("which fault? fault no-reply | fault stuck IN=1", all)),
+            Some(other) => Err(usage(msg!("sim-not-fault-here", kind = other), all)),
+            None => Err(usage(msg!("sim-which-fault"), all)),
         }
     }
 

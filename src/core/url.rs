@@ -18,12 +18,10 @@ impl DeviceUrl {
     pub fn parse(text: &str) -> Result<DeviceUrl> {
         let t = text.trim();
         let Some(colon) = t.find(':') else {
-            return Err(Error::usage(format!("`{t}` is not a device URL")).hint(concat!(
-                "use sim:MODEL, tcp://HOST:PORT?unit=1, rtu:",
-                crate::core::platform::words::port!(),
-                "?baud=115200, rtu+tcp://HOST:PORT, kinco:",
-                crate::core::platform::words::port!(),
-                "?id=1 or sim-servo:?id=1"
+            return Err(Error::usage(crate::msg!("url-not-url", text = t)).hint(crate::msg!(
+                "url-not-url-hint",
+                rtu = concat!("rtu:", crate::core::platform::words::port!(), "?baud=115200"),
+                kinco = concat!("kinco:", crate::core::platform::words::port!(), "?id=1")
             )));
         };
         let scheme = t[..colon].to_ascii_lowercase();
@@ -61,10 +59,11 @@ impl DeviceUrl {
             return Ok(Some(n));
         }
         let digits = !v.is_empty() && v.bytes().all(|b| b.is_ascii_digit());
+        let param = format!("{key}={v}");
         Err(Error::usage(if digits {
-            format!("`{key}={v}` in {} is too large: at most {}", self.text, T::MAX)
+            crate::msg!("url-param-too-large", param = param, url = self.text.as_str(), max = T::MAX.to_string())
         } else {
-            format!("`{key}={v}` in {} is not a whole number", self.text)
+            crate::msg!("url-param-not-number", param = param, url = self.text.as_str())
         }))
     }
 
@@ -89,8 +88,8 @@ impl DeviceUrl {
     pub fn expect_params(&self, known: &[&str]) -> Result<()> {
         for (k, _) in &self.params {
             if !known.contains(&k.as_str()) {
-                return Err(Error::usage(format!("unknown parameter `{k}` in {}", self.text))
-                    .hint(format!("known: {}", known.join(", "))));
+                return Err(Error::usage(crate::msg!("url-unknown-param", key = k.as_str(), url = self.text.as_str()))
+                    .hint(crate::msg!("url-known-params-hint", list = known.join(", "))));
             }
         }
         Ok(())

@@ -38,6 +38,7 @@
 
 use crate::core::signal::{PulseTrain, Track, Train};
 use crate::core::{Error, Result};
+use crate::msg;
 
 /// One stretch of a planned motion: from `t0` for `dur` seconds (infinite for the last),
 /// starting at position `p0` (increments) with velocity `v0` and constant acceleration `a`.
@@ -141,11 +142,11 @@ impl std::fmt::Display for Endpoint {
 pub fn endpoint(text: &str) -> Result<Endpoint> {
     let t = text.trim();
     let (d, term) = t.split_once(':').ok_or_else(|| {
-        Error::usage(format!("`{t}` is not a terminal: write DEVICE:TERMINAL"))
+        Error::usage(msg!("wire-not-terminal", text = t))
             .hint("e.g. plc:Q0.0, servo:pulse, servo:encoder, plc:I0.0,I0.1, servo:home@20000")
     })?;
     if d.is_empty() || term.is_empty() {
-        return Err(Error::usage(format!("`{t}` names no device or no terminal")).hint("e.g. plc:Q0.0"));
+        return Err(Error::usage(msg!("wire-no-device-or-terminal", text = t)).hint("e.g. plc:Q0.0"));
     }
     Ok(Endpoint { device: d.to_string(), terminal: term.to_string() })
 }
@@ -177,43 +178,37 @@ impl std::fmt::Display for Decl {
 /// Parses `plc:Q0.0 -> servo:pulse`, `servo:encoder -> plc:I0.1,I0.0 lines=1250`,
 /// `plc:Q0.1 -> plc:I0.3 delay=2ms`.
 pub fn parse(text: &str) -> Result<Decl> {
-    let (from, rest) = text.split_once("->").ok_or_else(|| {
-        Error::usage(format!("`{}` is not a wire: write FROM -> TO", text.trim()))
-            .hint("e.g. sim wire plc:Q0.0 -> servo:pulse")
-    })?;
+    let (from, rest) = text
+        .split_once("->")
+        .ok_or_else(|| Error::usage(msg!("wire-not-wire", text = text.trim())).hint(msg!("wire-not-wire-hint")))?;
     let mut words = rest.split_whitespace();
-    let to = words.next().ok_or_else(|| Error::usage("the wire has no destination after `->`"))?;
+    let to = words.next().ok_or_else(|| Error::usage(msg!("wire-no-destination")))?;
     let mut d = Decl { from: endpoint(from)?, to: endpoint(to)?, lines: None, delay_ns: 0 };
     for w in words {
         let (k, v) = w.split_once('=').ok_or_else(|| {
-            Error::usage(format!("`{w}`: wire options are key=value"))
-                .hint("options: lines=N (encoder), delay=D (loopback)")
+            Error::usage(msg!("wire-options-key-value", word = w)).hint(msg!("wire-options-short-hint"))
         })?;
         match k {
             "lines" => {
-                let n: u32 = v.parse().ok().filter(|n| *n > 0).ok_or_else(|| {
-                    Error::usage(format!("lines={v}: lines per revolution must be a positive whole number"))
-                })?;
+                let n: u32 = v
+                    .parse()
+                    .ok()
+                    .filter(|n| *n > 0)
+                    .ok_or_else(|| Error::usage(msg!("wire-lines-positive", value = v)))?;
                 d.lines = Some(n);
             }
             "delay" => {
                 let us = crate::core::literal::parse_option_duration_us(v)
                     .map_err(|m| Error::usage(format!("delay={v}: {m}")).hint("e.g. delay=2ms"))?;
                 if us < 0 {
-                    return Err(Error::usage(format!("delay={v} is negative")).hint("e.g. delay=2ms"));
+                    return Err(Error::usage(msg!("wire-delay-negative", value = v)).hint("e.g. delay=2ms"));
                 }
                 // A wire's delay is held in ns: refused past u64, not wrapped.
                 d.delay_ns = (us as u64).checked_mul(1000).ok_or_else(|| {
-                    Error::usage(format!(
-                        "delay={v} is longer than a wire holds: at most {} µs (about 584 years)",
-                        u64::MAX / 1000
-                    ))
+                    Error::usage(msg!("wire-delay-too-long", value = v, max = (u64::MAX / 1000).to_string()))
                 })?;
             }
-            _ => {
-                return Err(Error::usage(format!("wires have no option `{k}`"))
-                    .hint("options: lines=N (encoder output), delay=D (output to input)"))
-            }
+            _ => return Err(Error::usage(msg!("wire-no-option", key = k)).hint(msg!("wire-options-hint"))),
         }
     }
     Ok(d)
@@ -271,18 +266,15 @@ pub fn connect(d: &Decl, from: Role, to: Role) -> Result<Kind> {
         (Role::DigitalOut(from), Role::DigitalIn(to)) => Kind::Loop { from, to, delay_ns: d.delay_ns },
         (Role::PulseOut { channel, .. }, Role::DigitalIn(to)) => Kind::PulseLoop { channel, to, delay_ns: d.delay_ns },
         _ => {
-            return Err(Error::usage(format!("{} cannot be wired to {}", d.from, d.to)).hint(
-                "wires that work: PLC pulse output -> servo:pulse; servo:encoder -> two PLC inputs (A,B); \
-                 servo:target_reached|fault|enabled -> PLC input; servo:home@POS|limit+@POS|limit-@POS -> PLC input; \
-                 PLC output -> PLC input [delay=D]",
-            ))
+            return Err(Error::usage(msg!("wire-cannot-join", from = d.from.to_string(), to = d.to.to_string()))
+                .hint(msg!("wire-cannot-join-hint")))
         }
     };
     if d.lines.is_some() && !matches!(k, Kind::Encoder { .. }) {
-        return Err(Error::usage("lines= applies to an encoder output (servo:encoder -> …)"));
+        return Err(Error::usage(msg!("wire-lines-encoder-only")));
     }
     if d.delay_ns > 0 && !matches!(k, Kind::Loop { .. } | Kind::PulseLoop { .. }) {
-        return Err(Error::usage("delay= applies to a PLC output wired back to a PLC input"));
+        return Err(Error::usage(msg!("wire-delay-loop-only")));
     }
     Ok(k)
 }
@@ -293,26 +285,30 @@ pub fn drive_terminal(ep: &Endpoint) -> Result<Role> {
     let t = ep.terminal.to_ascii_lowercase();
     let sw = |text: &str| -> Result<f64> {
         text.trim().parse::<f64>().ok().filter(|x| x.is_finite()).ok_or_else(|| {
-            Error::usage(format!("{ep}: `{text}` is not a position in increments")).hint("e.g. servo:home@20000")
+            Error::usage(msg!("wire-not-position", terminal = ep.to_string(), text = text))
+                .hint("e.g. servo:home@20000")
         })
     };
     Ok(match t.split_once('@') {
         Some(("home", p)) => Role::Switch(Switch::Home(sw(p)?)),
         Some(("limit+" | "pos", p)) => Role::Switch(Switch::PosLimit(sw(p)?)),
         Some(("limit-" | "neg", p)) => Role::Switch(Switch::NegLimit(sw(p)?)),
-        Some(_) => return Err(Error::usage(format!("{ep}: only home, limit+ and limit- switches take @POS"))),
-        None => {
-            match t.as_str() {
-                "pulse" | "pulses" => Role::PulseIn,
-                "encoder" => Role::Encoder,
-                "target_reached" | "target" => Role::DriveOut(DriveOut::TargetReached),
-                "fault" => Role::DriveOut(DriveOut::Fault),
-                "enabled" => Role::DriveOut(DriveOut::Enabled),
-                _ => return Err(Error::usage(format!("drive terminal `{}` is unknown ({ep})", ep.terminal)).hint(
-                    "drive terminals: pulse, encoder, target_reached, fault, enabled, home@POS, limit+@POS, limit-@POS",
-                )),
+        Some(_) => return Err(Error::usage(msg!("wire-only-switches-at", terminal = ep.to_string()))),
+        None => match t.as_str() {
+            "pulse" | "pulses" => Role::PulseIn,
+            "encoder" => Role::Encoder,
+            "target_reached" | "target" => Role::DriveOut(DriveOut::TargetReached),
+            "fault" => Role::DriveOut(DriveOut::Fault),
+            "enabled" => Role::DriveOut(DriveOut::Enabled),
+            _ => {
+                return Err(Error::usage(msg!(
+                    "wire-unknown-drive-terminal",
+                    name = ep.terminal.as_str(),
+                    terminal = ep.to_string()
+                ))
+                .hint(msg!("wire-drive-terminals-hint")))
             }
-        }
+        },
     })
 }
 
@@ -387,29 +383,28 @@ impl Harness {
     /// Describes a wire for `sim wires`.
     pub fn describe(w: &Wire) -> String {
         let what = match w.kind {
-            Kind::Pulses { channel, .. } => {
-                format!("PTO{channel} pulses (with its direction output) to the pulse input")
-            }
+            Kind::Pulses { channel, .. } => msg!("wire-describe-pulses", channel = channel),
             Kind::Encoder { lines, .. } => match lines {
-                Some(l) => format!("encoder A/B, {l} lines (A/B periods) per revolution"),
-                None => "encoder A/B, a quarter period per increment".to_string(),
+                Some(l) => msg!("wire-describe-encoder-lines", lines = l),
+                None => msg!("wire-describe-encoder"),
             },
-            Kind::Output { what, .. } => format!(
-                "drive output {}",
-                match what {
-                    DriveOut::TargetReached => "target reached (statusword bit 10)",
+            Kind::Output { what, .. } => msg!(
+                "wire-describe-drive-output",
+                output = match what {
+                    DriveOut::TargetReached => "target-reached",
                     DriveOut::Fault => "fault",
-                    DriveOut::Enabled => "operation enabled",
+                    DriveOut::Enabled => "enabled",
                 }
             ),
             Kind::Switch { switch, .. } => {
-                format!("{} switch at {} increments (also the drive's own input)", switch.name(), switch.position())
+                msg!("wire-describe-switch", switch = switch.name(), position = switch.position().to_string())
             }
-            Kind::Loop { delay_ns, .. } => format!("output to input, delay {} µs", delay_ns / 1000),
+            Kind::Loop { delay_ns, .. } => msg!("wire-describe-loop", delay = delay_ns / 1000),
             Kind::PulseLoop { channel, delay_ns, .. } => {
-                format!("PTO{channel} output (pulses and level) to input, delay {} µs", delay_ns / 1000)
+                msg!("wire-describe-pulse-loop", channel = channel, delay = delay_ns / 1000)
             }
         };
+
         format!("{}  ({what})", w.decl)
     }
 }

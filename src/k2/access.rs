@@ -15,6 +15,7 @@ use super::sim::K2Sim;
 use super::{changes, Event, EventMatch, K2Ops, RtcTime};
 use crate::core::device::{lookup, Change};
 use crate::core::{Device, Error, Result};
+use crate::msg;
 use std::any::Any;
 
 /// A K2 PLC's operations behind a device's write rules (module doc).
@@ -49,7 +50,7 @@ impl K2Access<'_> {
     /// The PLC's operations, once `changes` are permitted.
     fn after(&mut self, changes: &[Change]) -> Result<&mut dyn K2Ops> {
         let answer = self.dev.family(changes)?;
-        answer.and_then(raw).ok_or_else(|| Error::state("the device no longer answers as a K2 PLC"))
+        answer.and_then(raw).ok_or_else(|| Error::state(msg!("k2-no-longer-k2")))
     }
 
     /// The PLC's operations for instruction `name` on `channel`, once what it changes is

@@ -15,6 +15,7 @@
 //!   (`pto1-done`, `hsc0-cv=pv`, `hsc1-reset`, `hsc1-dir`, `eeprom-wear`) and `wait event` accepts names.
 
 use crate::core::civil::civil_from_days;
+use crate::msg;
 use serde::Serialize;
 use std::fmt;
 use std::time::Duration;
@@ -72,18 +73,18 @@ impl EventKind {
     /// A sentence for people.
     pub fn describe(&self) -> String {
         match *self {
-            EventKind::PtoComplete { channel } => format!("PTO{channel} complete"),
-            EventKind::HscCvEqPv { channel, pv: Some(k) } => format!("HSC{channel} CV = PV{k} (multi-PV)"),
-            EventKind::HscCvEqPv { channel, pv: None } => format!("HSC{channel} CV = PV (single PV)"),
-            EventKind::HscReset { channel } => format!("HSC{channel} external reset"),
+            EventKind::PtoComplete { channel } => msg!("k2-event-pto-complete", channel = channel).into(),
+            EventKind::HscCvEqPv { channel, pv: Some(k) } => {
+                msg!("k2-event-cv-eq-pv-multi", channel = channel, k = k).into()
+            }
+            EventKind::HscCvEqPv { channel, pv: None } => msg!("k2-event-cv-eq-pv", channel = channel).into(),
+            EventKind::HscReset { channel } => msg!("k2-event-hsc-reset", channel = channel).into(),
             EventKind::HscDirection { channel, up } => {
-                format!("HSC{channel} counting direction changed to {}", if up { "up" } else { "down" })
+                msg!("k2-event-hsc-direction", channel = channel, dir = if up { "up" } else { "down" }).into()
             }
-            EventKind::EepromWear { byte, writes } => {
-                format!("E2PROM byte VB{byte} has been written {writes} times (endurance ~1 000 000, §2.2.8)")
-            }
+            EventKind::EepromWear { byte, writes } => msg!("k2-event-eeprom-wear", byte = byte, writes = writes).into(),
             EventKind::Fault { id, fault } => {
-                format!("injected fault {id} ({}) acted", crate::k2::sim::fault::FaultKind::name_of_code(fault))
+                msg!("k2-event-fault", id = id, name = crate::k2::sim::fault::FaultKind::name_of_code(fault)).into()
             }
         }
     }
@@ -150,7 +151,7 @@ pub struct RtcTime {
 impl RtcTime {
     /// Parses `2026-11-22T10:00:00` (also with a space, or without seconds).
     pub fn parse(text: &str) -> Result<RtcTime, String> {
-        let bad = || format!("`{text}` is not a date and time; write it as 2026-11-22T10:00:00");
+        let bad = || msg!("k2-rtc-not-datetime", text = text).text;
         let t = text.trim();
         let (date, time) = t.split_once(['T', 't', ' ']).ok_or_else(bad)?;
         let d: Vec<&str> = date.split('-').collect();
@@ -175,17 +176,25 @@ impl RtcTime {
     /// so 2000–2099.
     pub fn validate(&self) -> Result<(), String> {
         if !(2000..=2099).contains(&self.year) {
-            return Err(format!("year {} is outside 2000–2099 (the clock keeps two digits)", self.year));
+            return Err(msg!("k2-rtc-year", year = self.year).into());
         }
         if !(1..=12).contains(&self.month) {
-            return Err(format!("month {} is not 1–12", self.month));
+            return Err(msg!("k2-rtc-month", month = self.month).into());
         }
         let dim = days_in_month(self.year as i64, self.month as u32);
         if self.day < 1 || self.day as u32 > dim {
-            return Err(format!("day {} is not 1–{dim} for {}-{:02}", self.day, self.year, self.month));
+            return Err(msg!(
+                "k2-rtc-day",
+                day = self.day,
+                days = dim,
+                month = format!("{}-{:02}", self.year, self.month)
+            )
+            .into());
         }
         if self.hour > 23 || self.minute > 59 || self.second > 59 {
-            return Err(format!("{:02}:{:02}:{:02} is not a time of day", self.hour, self.minute, self.second));
+            return Err(
+                msg!("k2-rtc-time", time = format!("{:02}:{:02}:{:02}", self.hour, self.minute, self.second)).into()
+            );
         }
         Ok(())
     }
@@ -241,7 +250,7 @@ impl RtcTime {
     pub fn from_bcd8(b: &[u8; 8]) -> Result<RtcTime, String> {
         let d = |v: u8| -> Result<u8, String> {
             if v >> 4 > 9 || v & 0xF > 9 {
-                Err(format!("16#{v:02X} is not a BCD byte"))
+                Err(msg!("k2-rtc-not-bcd", value = format!("{v:02X}")).into())
             } else {
                 Ok((v >> 4) * 10 + (v & 0xF))
             }

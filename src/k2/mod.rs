@@ -18,6 +18,7 @@ pub mod sm_map;
 pub mod space;
 
 use crate::core::{Device, Error, Result};
+use crate::msg;
 pub use access::{ops, simulator, K2Access};
 pub use instr::{Event, EventKind, EventMatch, RtcTime};
 
@@ -74,12 +75,12 @@ pub trait K2Ops {
     /// reading it.
     fn events(&mut self, clear: bool) -> Result<Vec<Event>> {
         let _ = clear;
-        Err(not_here("event access"))
+        Err(not_here(msg!("k2-what-event-access").text))
     }
     /// Removes and returns the oldest logged event that matches, if any (`wait event`).
     fn take_event(&mut self, m: &EventMatch) -> Result<Option<Event>> {
         let _ = m;
-        Err(not_here("event access"))
+        Err(not_here(msg!("k2-what-event-access").text))
     }
     /// The E2PROM backup area as configured, first and last V byte (§2.2.8).
     fn backup_area(&self) -> (u32, u32) {
@@ -88,7 +89,7 @@ pub trait K2Ops {
     /// The state of the PLC-side helper program this connection uses for SM registers and
     /// instructions (docs/agent.md).
     fn helper_status(&mut self) -> Result<String> {
-        Err(not_here("the helper status"))
+        Err(not_here(msg!("k2-what-helper-status").text))
     }
     /// The simulator behind this device, when it is one (simulation controls).
     fn as_sim(&mut self) -> Option<&mut sim::K2Sim> {
@@ -96,9 +97,8 @@ pub trait K2Ops {
     }
 }
 
-fn not_here(what: &str) -> Error {
-    Error::unsupported(format!("{what} is not available on this connection"))
-        .hint("the simulator runs it; on a real PLC it needs the PLC-side helper program")
+fn not_here(what: impl Into<String>) -> Error {
+    Error::unsupported(msg!("k2-not-here", what = what.into())).hint(msg!("k2-not-here-hint"))
 }
 
 /// Opens a K2 device from a URL the session recognised as K2 (`sim:MODEL`).

@@ -219,28 +219,25 @@ impl OperandSpace for K2Space {
             let over = sm_map::overlapping(k.byte, k.width.bytes());
             if !over.is_empty() {
                 let names: Vec<String> = over.iter().map(|n| format!("{} ({})", n.operand(), n.meaning)).collect();
-                return Some(format!("overlaps {}", names.join(", ")));
+                return Some(msg!("k2-describe-overlaps", names = names.join(", ")).into());
             }
         }
         if k.area == Area::Q {
             for p in self.model.pto {
                 if let (Width::Bit(b), Some(spec)) = (k.width, Some(p)) {
                     if format!("Q{}.{}", k.byte, b) == spec.output {
-                        return Some(format!(
-                            "digital output; PTO{}/PWM{} pulse output (max {} kHz)",
-                            p.channel,
-                            p.channel,
-                            p.max_hz / 1000
-                        ));
+                        return Some(
+                            msg!("k2-describe-pulse-output", channel = p.channel, khz = p.max_hz / 1000).into(),
+                        );
                     }
                     if format!("Q{}.{}", k.byte, b) == spec.direction {
-                        return Some(format!("digital output; direction output of position channel {}", p.channel));
+                        return Some(msg!("k2-describe-direction-output", channel = p.channel).into());
                     }
                 }
             }
         }
         if k.area == Area::V && k.byte >= catalog::EEPROM_FIRST {
-            return Some("variable memory, in the E2PROM backup area (VB3648–VB4095, §2.2.8)".into());
+            return Some(msg!("k2-describe-v-backup").into());
         }
         Some(k.area.meaning().to_string())
     }
@@ -256,19 +253,25 @@ impl OperandSpace for K2Space {
             _ if k.view == crate::core::DataType::Real => "IEEE 754 single".into(),
             _ => format!("{lo}…{hi}"),
         };
-        s.push_str(&format!("type {} ({} bits), range {range}\n", k.view.name(), k.bits()));
+        s.push_str(&format!("{}\n", msg!("k2-help-type", dtype = k.view.name(), bits = k.bits(), range = range)));
+        let unit = if matches!(k.area, Area::T | Area::C) { "elements" } else { "bytes" };
         s.push_str(&format!(
-            "area {} ({}): {} {} on {}\n",
-            k.area.name(),
-            k.area.meaning(),
-            self.area_len(k.area),
-            if matches!(k.area, Area::T | Area::C) { "elements" } else { "bytes" },
-            self.model.name
+            "{}\n",
+            msg!(
+                "k2-help-area",
+                area = k.area.name(),
+                meaning = k.area.meaning(),
+                n = self.area_len(k.area),
+                unit = unit,
+                model = self.model.name
+            )
         ));
         match sm_name(&k) {
-            Some(n) if n.section.starts_with('§') => s.push_str(&format!("manual {}\n", n.section)),
-            Some(n) => s.push_str(&format!("source: {}\n", n.section)),
-            None => s.push_str("written as the manual and KincoBuilder write operands (S7-200 style)\n"),
+            Some(n) if n.section.starts_with('§') => {
+                s.push_str(&format!("{}\n", msg!("k2-help-manual", section = n.section)))
+            }
+            Some(n) => s.push_str(&format!("{}\n", msg!("k2-help-source", source = n.section))),
+            None => s.push_str(&format!("{}\n", msg!("k2-help-written-as"))),
         }
         Ok(s)
     }
@@ -285,30 +288,14 @@ impl OperandSpace for K2Space {
             }
             return out;
         }
-        for (form, meaning) in [
-            ("I", "input bit I0.0"),
-            ("IB", "input byte"),
-            ("Q", "output bit Q0.0"),
-            ("QB", "output byte"),
-            ("M", "memory bit M0.0"),
-            ("MB", "memory byte"),
-            ("MW", "memory word"),
-            ("MD", "memory double word"),
-            ("V", "V bit V0.0"),
-            ("VB", "V byte"),
-            ("VW", "V word"),
-            ("VD", "V double word"),
-            ("SM", "special memory"),
-            ("AIW", "analog input word"),
-            ("AQW", "analog output word"),
-            ("T", "timer"),
-            ("C", "counter"),
-            ("K4M", "16-bit group of M bits"),
-        ] {
+        for form in
+            ["I", "IB", "Q", "QB", "M", "MB", "MW", "MD", "V", "VB", "VW", "VD", "SM", "AIW", "AQW", "T", "C", "K4M"]
+        {
             if form.starts_with(&p) && p.len() < form.len() {
-                out.push(Candidate { text: form.to_string(), meaning: meaning.to_string() });
+                out.push(Candidate { text: form.to_string(), meaning: msg!("k2-complete-form", form = form).into() });
             }
         }
+
         out
     }
 }

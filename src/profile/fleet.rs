@@ -17,6 +17,7 @@
 
 use super::Profile;
 use crate::core::{Error, Result};
+use crate::msg;
 use std::collections::BTreeMap;
 use toml::Spanned;
 
@@ -57,24 +58,27 @@ pub struct Fleet {
 /// range and more than [`MAX_MEMBERS`] values.
 pub fn expand(pattern: &str) -> std::result::Result<Vec<(u64, String)>, String> {
     let Some(open) = pattern.find('{') else {
-        return Err("a URL fleet needs one range such as {11..34} in its url".into());
+        return Err(msg!("fleet-needs-range", example = "{11..34}").into());
     };
-    let close = pattern[open..].find('}').map(|c| open + c).ok_or("`{` without `}` in the url")?;
+    let close = pattern[open..].find('}').map(|c| open + c).ok_or_else(|| msg!("fleet-unclosed-brace").text)?;
     if pattern[close + 1..].contains(['{', '}']) || pattern[..open].contains('}') {
-        return Err("only one {FIRST..LAST} range is allowed in a fleet's url".into());
+        return Err(msg!("fleet-one-range", form = "{FIRST..LAST}").into());
     }
     let inner = &pattern[open + 1..close];
-    let (a, b) = inner.split_once("..").ok_or(format!("`{{{inner}}}` is not a range (write {{FIRST..LAST}})"))?;
-    let num = |s: &str| s.trim().parse::<u64>().map_err(|_| format!("`{s}` in `{{{inner}}}` is not a number"));
+    let range = format!("{{{inner}}}");
+    let (a, b) = inner
+        .split_once("..")
+        .ok_or_else(|| msg!("fleet-not-range", range = range.as_str(), form = "{FIRST..LAST}").text)?;
+    let num =
+        |s: &str| s.trim().parse::<u64>().map_err(|_| msg!("fleet-not-number", text = s, range = range.as_str()).text);
     let (a, b) = (num(a)?, num(b)?);
     if b < a {
-        return Err(format!("the range {{{inner}}} runs backwards"));
+        return Err(msg!("fleet-backwards", range = range.as_str()).into());
     }
     if b - a >= MAX_MEMBERS as u64 {
-        return Err(format!(
-            "the range {{{inner}}} names {} devices; a fleet has at most {MAX_MEMBERS}",
-            (b - a).saturating_add(1)
-        ));
+        return Err(
+            msg!("fleet-too-many", range = range.as_str(), n = (b - a).saturating_add(1), max = MAX_MEMBERS).into()
+        );
     }
     let (head, tail) = (&pattern[..open], &pattern[close + 1..]);
     Ok((a..=b).map(|v| (v, format!("{head}{v}{tail}"))).collect())
@@ -95,21 +99,29 @@ pub(crate) fn parse(
     let mut members = Vec::new();
     let spec;
     match (keys.get("devices"), keys.get("url")) {
-        (Some(_), Some(u)) => return Err((at(u), "give `devices` or `url`, not both".into())),
+        (Some(_), Some(u)) => return Err((at(u), msg!("fleet-devices-or-url").into())),
         (None, None) => {
-            return Err((None, "a fleet needs `devices = [\"press1\", …]` or `url = \"tcp://10.0.0.{11..34}\"`".into()))
+            return Err((
+                None,
+                msg!(
+                    "fleet-needs-devices",
+                    devices = "devices = [\"press1\", …]",
+                    url = "url = \"tcp://10.0.0.{11..34}\""
+                )
+                .into(),
+            ))
         }
         (Some(d), None) => {
             let list = match d.get_ref() {
                 toml::Value::Array(a) => a.iter().map(|i| i.as_str().map(str::to_string)).collect::<Option<Vec<_>>>(),
                 _ => None,
             };
-            let list = list.ok_or((at(d), "`devices` must be a list of profile names or URLs".into()))?;
+            let list = list.ok_or_else(|| (at(d), msg!("fleet-devices-list").into()))?;
             if list.is_empty() {
-                return Err((at(d), "`devices` is empty".into()));
+                return Err((at(d), msg!("fleet-devices-empty").into()));
             }
             if let Some(k) = keys.keys().find(|k| *k != "devices") {
-                return Err((at(&keys[k]), format!("`{k}`: a `devices` fleet takes its rules from each profile")));
+                return Err((at(&keys[k]), msg!("fleet-devices-rules", key = k.as_str()).into()));
             }
             for (i, item) in list.iter().enumerate() {
                 let member = if item.contains(':') {
@@ -119,14 +131,14 @@ pub(crate) fn parse(
                     Member { name: item.clone(), source: Source::Profile(item.clone()) }
                 };
                 if members.iter().any(|m: &Member| m.name == member.name) {
-                    return Err((at(d), format!("`{}` is listed twice", member.name)));
+                    return Err((at(d), msg!("fleet-listed-twice", name = member.name.as_str()).into()));
                 }
                 members.push(member);
             }
             spec = list.join(", ");
         }
         (None, Some(u)) => {
-            let pattern = u.get_ref().as_str().ok_or((at(u), "`url` must be a string".to_string()))?;
+            let pattern = u.get_ref().as_str().ok_or_else(|| (at(u), msg!("profile-url-not-string").into()))?;
             for (v, url) in expand(pattern).map_err(|m| (at(u), m))? {
                 let n = format!("{name}-{v}");
                 members.push(Member { name: n.clone(), source: Source::Made(make(&n, &url)?) });
@@ -144,7 +156,13 @@ impl Fleet {
             Source::Made(p) => Ok(p),
             Source::Profile(p) => profiles.get(p).ok_or_else(|| {
                 let mut e = profiles.unknown(p).device(&m.name);
-                e.message = format!("fleet `{}` ({}) lists `{p}`, which is no loaded profile", self.name, self.origin);
+                e.message = msg!(
+                    "fleet-lists-unknown",
+                    name = self.name.as_str(),
+                    origin = self.origin.as_str(),
+                    profile = p.as_str()
+                )
+                .into();
                 e
             }),
         }
@@ -155,10 +173,16 @@ impl Fleet {
 pub fn unknown(profiles: &crate::profile::Profiles, name: &str) -> Error {
     let names: Vec<&str> = profiles.fleets.iter().map(|f| f.name.as_str()).collect();
     let file = profiles.file.as_ref().map(|f| f.display().to_string()).unwrap_or_else(|| "devices.toml".into());
-    Error::usage(format!("no fleet named `{name}`")).hint(if names.is_empty() {
-        format!("define [fleets.{name}] with devices = [\"press1\", …] or url = \"tcp://10.0.0.{{11..34}}\" in {file}")
+    Error::usage(msg!("fleet-unknown", name = name)).hint(if names.is_empty() {
+        msg!(
+            "fleet-unknown-define-hint",
+            section = format!("[fleets.{name}]"),
+            devices = "devices = [\"press1\", …]",
+            url = "url = \"tcp://10.0.0.{11..34}\"",
+            file = file
+        )
     } else {
-        format!("fleets in {file}: {}", names.join(", "))
+        msg!("fleet-unknown-list-hint", file = file, list = names.join(", "))
     })
 }
 

@@ -25,6 +25,7 @@ pub mod tags;
 
 use crate::core::url::DeviceUrl;
 use crate::core::{Error, ErrorKind, Operand, OperandSpace, Result};
+use crate::msg;
 use serde::Deserialize;
 use std::collections::{BTreeMap, HashSet};
 use std::fmt;
@@ -117,7 +118,7 @@ impl Profiles {
                 problems: vec![Problem {
                     file: path.display().to_string(),
                     line: 0,
-                    message: format!("cannot read: {e}"),
+                    message: msg!("profile-cannot-read", error = e.to_string()).into(),
                 }],
                 file: Some(path.to_path_buf()),
                 ..Default::default()
@@ -136,7 +137,7 @@ impl Profiles {
                 out.problems.push(Problem {
                     file,
                     line,
-                    message: format!("{} (no profile from this file is loaded)", e.message().trim_end()),
+                    message: msg!("profile-file-not-loaded", error = e.message().trim_end()).into(),
                 });
                 return out;
             }
@@ -148,7 +149,7 @@ impl Profiles {
                 Ok(p) => out.list.push(p),
                 Err((at, m)) => {
                     let at = at.unwrap_or(section.span().start);
-                    out.problems.push(problem(at, format!("profile `{name}` skipped: {m}")));
+                    out.problems.push(problem(at, msg!("profile-skipped", name = name.as_str(), reason = m).into()));
                 }
             }
         }
@@ -158,14 +159,14 @@ impl Profiles {
             let parsed = if valid_name(&name) {
                 fleet::parse(&name, section.get_ref(), &origin, &make)
             } else {
-                Err((None, "a fleet name is Latin letters A-Z a-z, digits, _ and - only".into()))
+                Err((None, msg!("fleet-name-letters").into()))
             };
             match parsed {
                 Ok(f) => out.fleets.push(f),
                 Err((at, m)) => out.problems.push(Problem {
                     file: file.clone(),
                     line: line_of(text, at.unwrap_or(section.span().start)),
-                    message: format!("fleet `{name}` skipped: {m}"),
+                    message: msg!("fleet-skipped", name = name.as_str(), reason = m).into(),
                 }),
             }
         }
@@ -237,10 +238,10 @@ impl Profiles {
     pub fn unknown(&self, name: &str) -> Error {
         let names: Vec<&str> = self.list.iter().map(|p| p.name.as_str()).collect();
         let file = self.file.as_ref().map(|f| f.display().to_string()).unwrap_or_else(|| "devices.toml".into());
-        Error::usage(format!("`{name}` is neither a device URL nor a profile")).hint(if names.is_empty() {
-            format!("give a URL (sim:MODEL, tcp://HOST:PORT …) or define [devices.{name}] in {file}")
+        Error::usage(msg!("profile-unknown", name = name)).hint(if names.is_empty() {
+            msg!("profile-unknown-define-hint", section = format!("[devices.{name}]"), file = file)
         } else {
-            format!("profiles in {file}: {}", names.join(", "))
+            msg!("profile-unknown-list-hint", file = file, list = names.join(", "))
         })
     }
 }
@@ -255,16 +256,18 @@ fn profile(
     url: Option<&str>,
 ) -> std::result::Result<Profile, Bad> {
     if !valid_name(name) {
-        return Err((None, "a profile name is Latin letters A-Z a-z, digits, _ and - only (it becomes a device name, typed before operands: press1:VW0)".into()));
+        return Err((None, msg!("profile-name-letters").into()));
     }
     let at = |v: &Spanned<toml::Value>| Some(v.span().start);
     let url = match (url, keys.get("url")) {
         (Some(u), _) => u.to_string(),
         (None, Some(v)) => match v.get_ref() {
             toml::Value::String(s) => s.clone(),
-            _ => return Err((at(v), "`url` must be a string".into())),
+            _ => return Err((at(v), msg!("profile-url-not-string").into())),
         },
-        (None, None) => return Err((None, "`url` is missing (e.g. url = \"tcp://192.168.1.10:502?unit=1\")".into())),
+        (None, None) => {
+            return Err((None, msg!("profile-url-missing", example = "url = \"tcp://192.168.1.10:502?unit=1\"").into()))
+        }
     };
     let parsed = DeviceUrl::parse(&url).map_err(|e| (keys.get("url").and_then(at), e.message.clone()))?;
     let mut p = Profile {
@@ -282,7 +285,7 @@ fn profile(
             "url" | "devices" => {}
             "read_only" => match v.get_ref() {
                 toml::Value::Boolean(b) => p.read_only = *b,
-                _ => return Err((at(v), "`read_only` must be true or false".into())),
+                _ => return Err((at(v), msg!("profile-read-only-bool").into())),
             },
             "allow" => {
                 let items = match v.get_ref() {
@@ -296,7 +299,7 @@ fn profile(
                     None => {
                         return Err((
                             at(v),
-                            "`allow` must be a list of operands, e.g. [\"VW100..VW120\", \"M0.0\"]".into(),
+                            msg!("profile-allow-list", example = "[\"VW100..VW120\", \"M0.0\"]").into(),
                         ))
                     }
                 }
@@ -313,15 +316,16 @@ fn profile(
             "options" => match v.get_ref() {
                 toml::Value::Table(t) => {
                     for (ok, ov) in t {
-                        let s =
-                            scalar(ov).ok_or((at(v), format!("option `{ok}` must be a string, number or boolean")))?;
+                        let s = scalar(ov)
+                            .ok_or_else(|| (at(v), msg!("profile-option-scalar", key = ok.as_str()).into()))?;
                         p.options.push((ok.clone(), s));
                     }
                 }
-                _ => return Err((at(v), "`options` must be a table".into())),
+                _ => return Err((at(v), msg!("profile-options-table").into())),
             },
             _ => {
-                let s = scalar(v.get_ref()).ok_or((at(v), format!("`{k}` must be a string, number or boolean")))?;
+                let s =
+                    scalar(v.get_ref()).ok_or_else(|| (at(v), msg!("profile-key-scalar", key = k.as_str()).into()))?;
                 if parsed.param(k).is_none() {
                     extra.push(format!("{k}={s}"));
                 }
@@ -382,8 +386,12 @@ pub fn url_params(u: &DeviceUrl) -> Option<Vec<&'static str>> {
 fn check(p: &Profile, clock: &crate::core::Clock) -> Result<()> {
     let u = DeviceUrl::parse(&p.url)?;
     let Some(twin) = offline_twin(&u) else {
-        return Err(Error::usage(format!("unknown device scheme `{}:` in {}", u.scheme, p.url))
-            .hint("known schemes: sim:MODEL, tcp://HOST:PORT, rtu:/dev/PORT, rtu+tcp://HOST:PORT, kinco:/dev/PORT, sim-servo:, fx:/dev/PORT, fxlink:/dev/PORT, sim-fx:FX2N, umpk:/dev/PORT, sim-umpk:UMPK16"));
+        return Err(Error::usage(msg!("profile-unknown-scheme", scheme = u.scheme.as_str(), url = p.url.as_str())).hint(
+            msg!(
+                "profile-known-schemes-hint",
+                list = "sim:MODEL, tcp://HOST:PORT, rtu:/dev/PORT, rtu+tcp://HOST:PORT, kinco:/dev/PORT, sim-servo:, fx:/dev/PORT, fxlink:/dev/PORT, sim-fx:FX2N, umpk:/dev/PORT, sim-umpk:UMPK16"
+            ),
+        ));
     };
     if let Some(known) = url_params(&u) {
         u.expect_params(&known)?;
@@ -444,8 +452,14 @@ impl Guard {
                         continue;
                     }
                     let ops = space.parse(item).map_err(|e| {
-                        Error::usage(format!("profile `{}` ({}): allow item `{item}`: {}", p.name, p.origin, e.message))
-                            .hint("allow items are operands or ranges of this device, e.g. \"VW100..VW120\"")
+                        Error::usage(msg!(
+                            "profile-allow-item",
+                            name = p.name.as_str(),
+                            origin = p.origin.as_str(),
+                            item = item.as_str(),
+                            reason = e.message.as_str()
+                        ))
+                        .hint(msg!("profile-allow-item-hint"))
                     })?;
                     set.extend(ops.iter().map(|o| bare(&space.name(o)).to_string()));
                 }
@@ -464,32 +478,38 @@ impl Guard {
     /// `Q0.0`, `controlword`, or `clock`) that the profile does not allow; `what` names
     /// the instruction or action when the change is not a plain write (`PLS 0`).
     pub fn check_name(&self, name: &str, what: Option<&str>) -> Result<()> {
-        let doing = match what {
-            Some(w) => format!("{w} refused (it changes {name})"),
-            None => "write refused".to_string(),
-        };
+        // `what` is `none` for a plain write (the messages' selector).
+        let what = what.unwrap_or("none");
         if self.read_only {
             // A refusal by the write rules, as docs/json.md lists it: kind `refused`.
             return Err(Error::new(
                 ErrorKind::Refused,
-                format!("{doing}: profile `{}` is read_only ({})", self.profile, self.origin),
+                msg!(
+                    "profile-read-only-refused",
+                    what = what,
+                    name = name,
+                    profile = self.profile.as_str(),
+                    origin = self.origin.as_str()
+                ),
             )
             .operand(name.to_string())
-            .hint("reading works; to write, remove `read_only = true` from the profile"));
+            .hint(msg!("profile-read-only-refused-hint")));
         }
         if let Some((set, items)) = &self.allow {
             if !set.contains(bare(name)) {
                 return Err(Error::new(
                     ErrorKind::Refused,
-                    format!(
-                        "{doing}: {name} is not in profile `{}`'s allow list [{}] ({})",
-                        self.profile,
-                        items.join(", "),
-                        self.origin
+                    msg!(
+                        "profile-allow-refused",
+                        what = what,
+                        name = name,
+                        profile = self.profile.as_str(),
+                        list = items.join(", "),
+                        origin = self.origin.as_str()
                     ),
                 )
                 .operand(name.to_string())
-                .hint("writes are allowed only to the operands listed, with the same size"));
+                .hint(msg!("profile-allow-refused-hint")));
             }
         }
         Ok(())
@@ -508,8 +528,9 @@ impl Guard {
     /// A short description for `devices` (`read only`, `allow VW100..VW120, M0.0`).
     pub fn summary(&self) -> String {
         match (&self.allow, self.read_only) {
-            (_, true) => "read only".into(),
-            (Some((_, items)), false) => format!("allow {}", items.join(", ")),
+            (_, true) => msg!("profile-summary-read-only").into(),
+            (Some((_, items)), false) => msg!("profile-summary-allow", list = items.join(", ")).into(),
+
             (None, false) => String::new(),
         }
     }

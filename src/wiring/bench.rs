@@ -37,6 +37,7 @@
 //! `sim program load`.
 
 use crate::core::{Error, Result};
+use crate::msg;
 use crate::servo::ServoOps;
 use crate::session::{Session, SetItem};
 use serde::Deserialize;
@@ -98,7 +99,7 @@ fn inject(s: &mut Session, f: &BenchFault) -> Result<String> {
             return Ok(control::apply(&mut l, &req, Some(id))?.0);
         }
     }
-    Err(Error::unsupported(format!("{} takes no injected faults (only simulated K2 PLCs and drives do)", f.device)))
+    Err(Error::unsupported(msg!("bench-no-faults", device = f.device.as_str())))
 }
 
 /// Prefixes an error's message with where in the bench it arose.
@@ -116,12 +117,10 @@ impl Bench {
     pub fn parse(text: &str, path: &Path) -> Result<Bench> {
         let mut b: Bench = toml::from_str(text).map_err(|e| {
             let line = e.span().map(|s| format!(":{}", line_of(text, s.start))).unwrap_or_default();
-            Error::usage(format!("bench {}{line}: {}", path.display(), e.message())).hint(
-                "a bench has [devices] NAME = \"URL\", and optional wires = [\"A -> B\"], init = [\"DEV:OP=VALUE\"], [programs], [[faults]]",
-            )
+            Error::usage(format!("bench {}{line}: {}", path.display(), e.message())).hint(msg!("bench-shape-hint"))
         })?;
         if b.devices.is_empty() {
-            return Err(Error::usage(format!("bench {}: [devices] is empty", path.display()))
+            return Err(Error::usage(msg!("bench-no-devices", file = path.display().to_string()))
                 .hint("e.g. [devices] plc = \"sim:K205-16DT\""));
         }
         b.path = path.to_path_buf();
@@ -132,7 +131,7 @@ impl Bench {
     /// Reads and parses a bench file.
     pub fn load(path: &Path) -> Result<Bench> {
         let text = std::fs::read_to_string(path)
-            .map_err(|e| Error::io(format!("cannot read the bench file {}", path.display())).cause(e))?;
+            .map_err(|e| Error::io(msg!("bench-cannot-read", file = path.display().to_string())).cause(e))?;
         Bench::parse(&text, path)
     }
 }
@@ -144,48 +143,63 @@ pub fn open(s: &mut Session, bench: &Bench) -> Result<Vec<String>> {
     for (name, url) in &bench.devices {
         // Refused before anything is opened: a bench never reaches for a real port or address.
         if !url.trim_start().starts_with("sim") {
-            return Err(Error::usage(format!("bench {file}: device {name} = {url} is not a simulator"))
-                .hint("a bench file describes a simulated machine: use sim:MODEL and sim-servo:?id=N"));
+            return Err(Error::usage(msg!("bench-not-simulator", file = file.as_str(), name = name, url = url))
+                .hint(msg!("bench-not-simulator-hint")));
         }
-        s.open(name, url).map_err(|e| within(e, format!("bench {file}, device {name}")))?;
+        s.open(name, url).map_err(|e| within(e, msg!("bench-at-device", file = file.as_str(), name = name).into()))?;
         if !s.device(name)?.info().simulated {
             s.close(name)?;
-            return Err(Error::usage(format!("bench {file}: device {name} = {url} is not a simulator"))
-                .hint("a bench file describes a simulated machine: use sim:MODEL and sim-servo:?id=N"));
+            return Err(Error::usage(msg!("bench-not-simulator", file = file.as_str(), name = name, url = url))
+                .hint(msg!("bench-not-simulator-hint")));
         }
     }
     for (i, w) in bench.wires.iter().enumerate() {
-        super::setup::wire(s, w).map_err(|e| within(e, format!("bench {file}, wire {} `{w}`", i + 1)))?;
+        super::setup::wire(s, w)
+            .map_err(|e| within(e, msg!("bench-at-wire", file = file.as_str(), n = i + 1, wire = w).into()))?;
     }
     for (i, item) in bench.init.iter().enumerate() {
         let (op, value) = item.split_once('=').ok_or_else(|| {
-            Error::usage(format!("bench {file}, init {}: `{item}` is not DEVICE:OPERAND=VALUE", i + 1))
+            Error::usage(msg!("bench-init-shape", file = file.as_str(), n = i + 1, item = item))
                 .hint("e.g. init = [\"servo:gear_factor=4\", \"plc:VW0=100\"]")
         })?;
         let it =
             SetItem { operand: op.trim().to_string(), value: value.trim().to_string(), column: 0, value_column: 0 };
-        s.set(&[it]).map_err(|e| within(e, format!("bench {file}, init {} `{item}`", i + 1)))?;
+        s.set(&[it])
+            .map_err(|e| within(e, msg!("bench-at-init", file = file.as_str(), n = i + 1, item = item).into()))?;
     }
     for (i, f) in bench.faults.iter().enumerate() {
-        let what = inject(s, f).map_err(|e| within(e, format!("bench {file}, fault {} `{}`", i + 1, f.spec)))?;
-        notes.push(format!("fault on {}: {what}", f.device));
+        let what = inject(s, f).map_err(|e| {
+            within(e, msg!("bench-at-fault", file = file.as_str(), n = i + 1, fault = f.spec.as_str()).into())
+        })?;
+        notes.push(msg!("bench-fault-on", device = f.device.as_str(), what = what).into());
     }
     for (dev, prog) in &bench.programs {
-        s.index(dev).map_err(|e| within(e, format!("bench {file}, program for {dev}")))?;
+        s.index(dev).map_err(|e| within(e, msg!("bench-at-program", file = file.as_str(), device = dev).into()))?;
         let p = bench.dir.join(prog);
         if !p.is_file() {
-            return Err(Error::usage(format!("bench {file}: the program {} for {dev} does not exist", p.display())));
+            return Err(Error::usage(msg!(
+                "bench-program-missing",
+                file = file.as_str(),
+                program = p.display().to_string(),
+                device = dev
+            )));
         }
-        let text = std::fs::read_to_string(&p)
-            .map_err(|e| Error::io(format!("bench {file}: cannot read the program {}: {e}", p.display())))?;
+        let text = std::fs::read_to_string(&p).map_err(|e| {
+            Error::io(msg!(
+                "bench-program-unreadable",
+                file = file.as_str(),
+                program = p.display().to_string(),
+                error = e.to_string()
+            ))
+        })?;
         let i = s.index(dev)?;
         let sim = crate::k2::simulator(s.entry(i).device.as_mut()).ok_or_else(|| {
-            Error::usage(format!("bench {file}: a program runs in a simulated K2, and {dev} is not one"))
-                .hint("give programs for sim:MODEL devices only")
+            Error::usage(msg!("bench-program-not-k2", file = file.as_str(), device = dev))
+                .hint(msg!("bench-program-not-k2-hint"))
         })?;
         let msg = sim
             .load_program(&text, &p.display().to_string())
-            .map_err(|e| within(e, format!("bench {file}, program for {dev}")))?;
+            .map_err(|e| within(e, msg!("bench-at-program", file = file.as_str(), device = dev).into()))?;
         notes.push(format!("{dev}: {msg}"));
     }
     let current = bench.current.clone().unwrap_or_else(|| "plc".to_string());
@@ -197,12 +211,14 @@ pub fn open(s: &mut Session, bench: &Bench) -> Result<Vec<String>> {
     let name = bench.name.clone().unwrap_or_else(|| file.clone());
     notes.insert(
         0,
-        format!(
-            "bench {name}: {} device(s), {} wire(s), {} value(s)",
-            bench.devices.len(),
-            bench.wires.len(),
-            bench.init.len()
-        ),
+        msg!(
+            "bench-opened",
+            name = name,
+            devices = bench.devices.len(),
+            wires = bench.wires.len(),
+            values = bench.init.len()
+        )
+        .into(),
     );
     Ok(notes)
 }
@@ -225,9 +241,10 @@ pub fn serve_parts(path: &Path, clock: &crate::core::Clock) -> Result<ServeParts
         let dev = &mut s.entry(i).device;
         if let Some(sim) = crate::k2::simulator(dev.as_mut()) {
             if k2.is_some() {
-                return Err(Error::unsupported(format!(
-                    "bench {}: {name} is a second PLC; sim serve serves one PLC",
-                    path.display()
+                return Err(Error::unsupported(msg!(
+                    "bench-second-plc",
+                    file = path.display().to_string(),
+                    name = name.as_str()
                 )));
             }
             let fresh = crate::k2::sim::K2Sim::new(sim.model(), clock.clone());
@@ -235,11 +252,12 @@ pub fn serve_parts(path: &Path, clock: &crate::core::Clock) -> Result<ServeParts
         } else if let Some(l) = crate::servo::simulator(dev.as_mut()) {
             match &line {
                 Some(prev) if !std::sync::Arc::ptr_eq(prev, &l) => {
-                    return Err(Error::unsupported(format!(
-                        "bench {}: {name} is on a second drive line; sim serve serves one line",
-                        path.display()
+                    return Err(Error::unsupported(msg!(
+                        "bench-second-line",
+                        file = path.display().to_string(),
+                        name = name.as_str()
                     ))
-                    .hint("put the drives on one line: sim-servo:axis?id=1 and sim-servo:axis?id=2"))
+                    .hint(msg!("bench-second-line-hint")))
                 }
                 _ => line = Some(l),
             }

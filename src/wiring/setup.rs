@@ -5,6 +5,7 @@
 use super::{Decl, Role};
 use crate::core::{Error, Result};
 use crate::k2::K2Ops;
+use crate::msg;
 use crate::servo::ServoOps;
 use crate::session::Session;
 
@@ -22,8 +23,8 @@ fn resolve(s: &mut Session, ep: &super::Endpoint) -> Result<End> {
     let dev = &mut s.entry(i).device;
     if let Some(mut k2) = crate::k2::ops(dev.as_mut()) {
         let sim = k2.as_sim().ok_or_else(|| {
-            Error::unsupported(format!("{name} is a real PLC: wires join simulated devices"))
-                .hint("open a simulator, e.g. connect plc sim:K205-16DT")
+            Error::unsupported(msg!("wire-real-plc", name = name.as_str()))
+                .hint(msg!("wire-real-plc-hint"))
                 .device(&name)
         })?;
         return Ok(End::Plc(i, sim.wire_terminal(&ep.terminal).map_err(|e| e.device(&name))?));
@@ -31,13 +32,13 @@ fn resolve(s: &mut Session, ep: &super::Endpoint) -> Result<End> {
     if let Some(mut servo) = crate::servo::ops(dev.as_mut()) {
         let id = servo.drive_id();
         let line = servo.simulator().ok_or_else(|| {
-            Error::unsupported(format!("{name} is a real drive: wires join simulated devices"))
-                .hint("open a simulated drive, e.g. connect servo sim-servo:?id=1")
+            Error::unsupported(msg!("wire-real-drive", name = name.as_str()))
+                .hint(msg!("wire-real-drive-hint"))
                 .device(&name)
         })?;
         return Ok(End::Drive(super::drive_terminal(ep).map_err(|e| e.device(&name))?, line, id));
     }
-    Err(Error::unsupported(format!("{name} cannot be wired (only simulated K2 PLCs and drives can)")).device(&name))
+    Err(Error::unsupported(msg!("wire-cannot-wire", name = name.as_str())).device(&name))
 }
 
 /// Adds the wire `text` (`plc:Q0.0 -> servo:pulse`, …); returns its description.
@@ -53,17 +54,16 @@ pub fn add(s: &mut Session, decl: Decl) -> Result<String> {
     let (host, from_role, to_role, peer) = match (from, to) {
         (End::Plc(a, fr), End::Plc(b, tr)) => {
             if a != b {
-                return Err(Error::unsupported(format!(
-                    "{decl}: wires between two PLCs are not simulated; a PLC output wires back to its own inputs"
-                )));
+                return Err(Error::unsupported(msg!("wire-two-plcs", wire = decl.to_string())));
             }
             (a, fr, tr, None)
         }
         (End::Plc(a, fr), End::Drive(tr, line, id)) => (a, fr, tr, Some((decl.to.device.clone(), line, id))),
         (End::Drive(fr, line, id), End::Plc(b, tr)) => (b, fr, tr, Some((decl.from.device.clone(), line, id))),
         (End::Drive(..), End::Drive(..)) => {
-            return Err(Error::unsupported(format!("{decl}: drive-to-drive wiring is not simulated"))
-                .hint("wire drives to a simulated PLC"))
+            return Err(
+                Error::unsupported(msg!("wire-two-drives", wire = decl.to_string())).hint(msg!("wire-two-drives-hint"))
+            )
         }
     };
     let host_name = s.entries()[host].name.clone();
@@ -106,10 +106,7 @@ pub fn unwire(s: &mut Session, which: &str) -> Result<Vec<String>> {
         }
     }
     if gone.is_empty() {
-        return Err(last_err.unwrap_or_else(|| {
-            Error::usage("nothing is wired")
-                .hint("sim wire FROM -> TO adds a wire, e.g. sim wire plc:Q0.0 -> servo:pulse")
-        }));
+        return Err(last_err.unwrap_or_else(|| Error::usage(msg!("wire-nothing")).hint(msg!("wire-nothing-hint"))));
     }
     Ok(gone)
 }

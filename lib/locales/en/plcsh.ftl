@@ -489,3 +489,108 @@ servo-params-loaded-stored = wrote { $written ->
         [one] one parameter
        *[other] { $written } parameters
     }, each read back; { $unchanged } unchanged; stored in the drive's memory (2FF0.01 = 1)
+
+## Injected faults of the simulators, shared by the K2, UMPK and FX simulators (core::sim_faults, k2::sim::control)
+
+sim-fault-describe = fault { $id }: { $what } from { $from } s until cleared
+sim-fault-describe-until = fault { $id }: { $what } from { $from } s until { $until } s
+sim-control-words-hint = control words: { $words }
+sim-not-level = `{ $value }` is not a level (1, 0, on, off)
+sim-not-option-here = `{ $word }` is not an option here (for=DURATION)
+sim-word-takes-nothing = `{ $word }` takes nothing after it (got `{ $rest }`)
+sim-no-faults = no injected faults
+sim-no-fault-acted = no injected fault has acted
+sim-fault-acted = { $seconds } s: fault { $id } ({ $name }) acted
+sim-not-fault-id = `{ $text }` is not a fault id
+sim-no-such-fault = there is no fault { $id }
+sim-no-such-fault-hint = `faults` lists them
+sim-faults-cleared = cleared { $n } fault(s)
+sim-stuck-needs-input = fault stuck needs an input and a level: stuck IN=1
+sim-stuck-shape = `{ $spec }`: write stuck { $spec }=1 or stuck { $spec }=0
+sim-not-fault-here = `{ $kind }` is not a fault here (no-reply, stuck)
+sim-which-fault = which fault? fault no-reply | fault stuck IN=1
+
+## Files (core::durable)
+
+file-cannot-create = cannot create { $path }
+file-cannot-open = cannot open { $path }
+file-cannot-write = cannot write { $path }
+
+## Device profiles and fleets (profile, profile::fleet)
+
+profile-cannot-read = cannot read: { $error }
+profile-file-not-loaded = { $error } (no profile from this file is loaded)
+profile-skipped = profile `{ $name }` skipped: { $reason }
+profile-unknown = `{ $name }` is neither a device URL nor a profile
+profile-unknown-define-hint = give a URL (sim:MODEL, tcp://HOST:PORT …) or define { $section } in { $file }
+profile-unknown-list-hint = profiles in { $file }: { $list }
+profile-name-letters = a profile name is Latin letters A-Z a-z, digits, _ and - only (it becomes a device name, typed before operands: press1:VW0)
+profile-url-not-string = `url` must be a string
+profile-url-missing = `url` is missing (e.g. { $example })
+profile-read-only-bool = `read_only` must be true or false
+profile-allow-list = `allow` must be a list of operands, e.g. { $example }
+profile-option-scalar = option `{ $key }` must be a string, number or boolean
+profile-options-table = `options` must be a table
+profile-key-scalar = `{ $key }` must be a string, number or boolean
+profile-unknown-scheme = unknown device scheme `{ $scheme }:` in { $url }
+profile-known-schemes-hint = known schemes: { $list }
+profile-allow-item = profile `{ $name }` ({ $origin }): allow item `{ $item }`: { $reason }
+profile-allow-item-hint = allow items are operands or ranges of this device, e.g. "VW100..VW120"
+# `what` is the instruction or action (`PLS 0`), or `none` for a plain write.
+profile-read-only-refused = { $what ->
+    [none] write refused: profile `{ $profile }` is read_only ({ $origin })
+   *[other] { $what } refused (it changes { $name }): profile `{ $profile }` is read_only ({ $origin })
+}
+profile-read-only-refused-hint = reading works; to write, remove `read_only = true` from the profile
+profile-allow-refused = { $what ->
+    [none] write refused: { $name } is not in profile `{ $profile }`'s allow list [{ $list }] ({ $origin })
+   *[other] { $what } refused (it changes { $name }): { $name } is not in profile `{ $profile }`'s allow list [{ $list }] ({ $origin })
+}
+profile-allow-refused-hint = writes are allowed only to the operands listed, with the same size
+profile-summary-read-only = read only
+profile-summary-allow = allow { $list }
+fleet-needs-range = a URL fleet needs one range such as { $example } in its url
+fleet-unclosed-brace = `{"{"}` without `{"}"}` in the url
+fleet-one-range = only one { $form } range is allowed in a fleet's url
+fleet-not-range = `{ $range }` is not a range (write { $form })
+fleet-not-number = `{ $text }` in `{ $range }` is not a number
+fleet-backwards = the range { $range } runs backwards
+fleet-too-many = the range { $range } names { $n } devices; a fleet has at most { $max }
+fleet-devices-or-url = give `devices` or `url`, not both
+fleet-needs-devices = a fleet needs `{ $devices }` or `{ $url }`
+fleet-devices-list = `devices` must be a list of profile names or URLs
+fleet-devices-empty = `devices` is empty
+fleet-devices-rules = `{ $key }`: a `devices` fleet takes its rules from each profile
+fleet-listed-twice = `{ $name }` is listed twice
+fleet-lists-unknown = fleet `{ $name }` ({ $origin }) lists `{ $profile }`, which is no loaded profile
+fleet-unknown = no fleet named `{ $name }`
+fleet-unknown-define-hint = define { $section } with { $devices } or { $url } in { $file }
+fleet-unknown-list-hint = fleets in { $file }: { $list }
+fleet-name-letters = a fleet name is Latin letters A-Z a-z, digits, _ and - only
+fleet-skipped = fleet `{ $name }` skipped: { $reason }
+
+## Device URLs and files (schemes, paths, pending)
+
+schemes-known-hint = known schemes: sim:MODEL, tcp://HOST:PORT, rtu:PORT, kinco:PORT?id=1, sim-servo:?id=1, fx:PORT, fxlink:PORT, sim-fx:FX2N, umpk:PORT, sim-umpk:UMPK16 (PORT: COM3, /dev/ttyUSB0; a serial device server: rtu+tcp://HOST:PORT, kinco+rfc2217://HOST:PORT, …)
+pending-not-connected = cannot read `{ $operand }` yet: the device is not connected
+pending-not-connected-hint = check the link (`plcsh ports`, the cable, the power); the next command tries to connect again
+
+## Device URLs, text files, options (core::url, core::encoding, core::device, core::signal)
+
+url-not-url = `{ $text }` is not a device URL
+url-not-url-hint = use sim:MODEL, tcp://HOST:PORT?unit=1, { $rtu }, rtu+tcp://HOST:PORT, { $kinco } or sim-servo:?id=1
+url-param-too-large = `{ $param }` in { $url } is too large: at most { $max }
+url-param-not-number = `{ $param }` in { $url } is not a whole number
+url-unknown-param = unknown parameter `{ $key }` in { $url }
+url-known-params-hint = known: { $list }
+# What a UTF-16 text file is, named in the two messages after it.
+encoding-utf16-kind = { $kind ->
+    [bom-le] UTF-16 text (byte-order mark FF FE)
+    [bom-be] UTF-16 text (byte-order mark FE FF)
+    [le] UTF-16 little-endian text without a byte-order mark (a NUL after each ASCII character)
+   *[be] UTF-16 big-endian text without a byte-order mark (a NUL before each ASCII character)
+}
+encoding-utf16-odd = { $what } ends in the middle of a character at byte { $byte } (save the file as UTF-8)
+encoding-utf16-surrogate = { $what }: invalid UTF-16 at byte { $byte }: lone surrogate { $surrogate } (save the file as UTF-8)
+device-no-option = { $family } devices have no option `{ $key }`
+signal-freq-positive = pulse frequency { $freq } Hz must be positive

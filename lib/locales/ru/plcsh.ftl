@@ -516,3 +516,110 @@ servo-params-loaded-stored = { $written ->
         [few] записано { $written } параметра
        *[many] записано { $written } параметров
     }, каждый прочитан обратно; без изменений: { $unchanged }; параметры сохранены в памяти привода (2FF0.01 = 1)
+
+## Внесённые неисправности симуляторов, общие для симуляторов K2, УМПК и FX (core::sim_faults, k2::sim::control)
+
+sim-fault-describe = неисправность { $id }: { $what } с { $from } с до сброса
+sim-fault-describe-until = неисправность { $id }: { $what } с { $from } с до { $until } с
+sim-control-words-hint = управляющие слова: { $words }
+sim-not-level = `{ $value }` — не уровень (1, 0, on, off)
+sim-not-option-here = `{ $word }` здесь не параметр (for=DURATION)
+sim-word-takes-nothing = после `{ $word }` ничего не пишется (получено `{ $rest }`)
+sim-no-faults = внесённых неисправностей нет
+sim-no-fault-acted = ни одна внесённая неисправность не сработала
+sim-fault-acted = { $seconds } с: сработала неисправность { $id } ({ $name })
+sim-not-fault-id = `{ $text }` — не номер неисправности
+sim-no-such-fault = неисправности { $id } нет
+sim-no-such-fault-hint = `faults` перечисляет их
+sim-faults-cleared = { $n ->
+    [one] сброшена { $n } неисправность
+    [few] сброшено { $n } неисправности
+   *[many] сброшено { $n } неисправностей
+}
+sim-stuck-needs-input = fault stuck нужны вход и уровень: stuck IN=1
+sim-stuck-shape = `{ $spec }`: пишите stuck { $spec }=1 или stuck { $spec }=0
+sim-not-fault-here = `{ $kind }` здесь не неисправность (no-reply, stuck)
+sim-which-fault = какая неисправность? fault no-reply | fault stuck IN=1
+
+## Файлы (core::durable)
+
+file-cannot-create = не удаётся создать { $path }
+file-cannot-open = не удаётся открыть { $path }
+file-cannot-write = не удаётся записать { $path }
+
+## Профили устройств и группы (profile, profile::fleet)
+
+profile-cannot-read = не удаётся прочитать: { $error }
+profile-file-not-loaded = { $error } (ни один профиль из этого файла не загружен)
+profile-skipped = профиль `{ $name }` пропущен: { $reason }
+profile-unknown = `{ $name }` — не URL устройства и не профиль
+profile-unknown-define-hint = укажите URL (sim:MODEL, tcp://HOST:PORT …) или опишите { $section } в { $file }
+profile-unknown-list-hint = профили в { $file }: { $list }
+profile-name-letters = имя профиля — только латинские буквы A-Z a-z, цифры, _ и - (оно становится именем устройства и пишется перед операндами: press1:VW0)
+profile-url-not-string = `url` должен быть строкой
+profile-url-missing = нет `url` (например, { $example })
+profile-read-only-bool = `read_only` должен быть true или false
+profile-allow-list = `allow` должен быть списком операндов, например { $example }
+profile-option-scalar = параметр `{ $key }` должен быть строкой, числом или логическим значением
+profile-options-table = `options` должен быть таблицей
+profile-key-scalar = `{ $key }` должен быть строкой, числом или логическим значением
+profile-unknown-scheme = неизвестная схема устройства `{ $scheme }:` в { $url }
+profile-known-schemes-hint = известные схемы: { $list }
+profile-allow-item = профиль `{ $name }` ({ $origin }): элемент allow `{ $item }`: { $reason }
+profile-allow-item-hint = элементы allow — операнды или диапазоны этого устройства, например "VW100..VW120"
+profile-read-only-refused = { $what ->
+    [none] запись отклонена: профиль `{ $profile }` — read_only ({ $origin })
+   *[other] { $what } отклонено (меняет { $name }): профиль `{ $profile }` — read_only ({ $origin })
+}
+profile-read-only-refused-hint = чтение работает; чтобы записывать, уберите `read_only = true` из профиля
+profile-allow-refused = { $what ->
+    [none] запись отклонена: { $name } нет в списке allow профиля `{ $profile }` [{ $list }] ({ $origin })
+   *[other] { $what } отклонено (меняет { $name }): { $name } нет в списке allow профиля `{ $profile }` [{ $list }] ({ $origin })
+}
+profile-allow-refused-hint = запись разрешена только в перечисленные операнды, того же размера
+profile-summary-read-only = только для чтения
+profile-summary-allow = allow { $list }
+fleet-needs-range = группе по URL нужен один диапазон вида { $example } в url
+fleet-unclosed-brace = `{"{"}` без `{"}"}` в url
+fleet-one-range = в url группы допустим только один диапазон { $form }
+fleet-not-range = `{ $range }` — не диапазон (пишите { $form })
+fleet-not-number = `{ $text }` в `{ $range }` — не число
+fleet-backwards = диапазон { $range } идёт в обратную сторону
+fleet-too-many = диапазон { $range } называет устройств: { $n }; в группе не больше { $max }
+fleet-devices-or-url = укажите `devices` или `url`, но не оба
+fleet-needs-devices = группе нужен `{ $devices }` или `{ $url }`
+fleet-devices-list = `devices` должен быть списком имён профилей или URL
+fleet-devices-empty = `devices` пуст
+fleet-devices-rules = `{ $key }`: группа `devices` берёт правила из каждого профиля
+fleet-listed-twice = `{ $name }` указан дважды
+fleet-lists-unknown = группа `{ $name }` ({ $origin }) называет `{ $profile }`, но такой профиль не загружен
+fleet-unknown = группы `{ $name }` нет
+fleet-unknown-define-hint = опишите { $section } с { $devices } или { $url } в { $file }
+fleet-unknown-list-hint = группы в { $file }: { $list }
+fleet-name-letters = имя группы — только латинские буквы A-Z a-z, цифры, _ и -
+fleet-skipped = группа `{ $name }` пропущена: { $reason }
+
+## URL устройств и файлы (schemes, paths, pending)
+
+schemes-known-hint = известные схемы: sim:MODEL, tcp://HOST:PORT, rtu:PORT, kinco:PORT?id=1, sim-servo:?id=1, fx:PORT, fxlink:PORT, sim-fx:FX2N, umpk:PORT, sim-umpk:UMPK16 (PORT: COM3, /dev/ttyUSB0; сервер последовательных устройств: rtu+tcp://HOST:PORT, kinco+rfc2217://HOST:PORT, …)
+pending-not-connected = `{ $operand }` пока не прочитать: устройство не подключено
+pending-not-connected-hint = проверьте связь (`plcsh ports`, кабель, питание); следующая команда снова попробует подключиться
+
+## URL устройств, текстовые файлы, параметры (core::url, core::encoding, core::device, core::signal)
+
+url-not-url = `{ $text }` — не URL устройства
+url-not-url-hint = используйте sim:MODEL, tcp://HOST:PORT?unit=1, { $rtu }, rtu+tcp://HOST:PORT, { $kinco } или sim-servo:?id=1
+url-param-too-large = `{ $param }` в { $url } слишком велик: не больше { $max }
+url-param-not-number = `{ $param }` в { $url } — не целое число
+url-unknown-param = неизвестный параметр `{ $key }` в { $url }
+url-known-params-hint = известные: { $list }
+encoding-utf16-kind = { $kind ->
+    [bom-le] текст UTF-16 (метка порядка байт FF FE)
+    [bom-be] текст UTF-16 (метка порядка байт FE FF)
+    [le] текст UTF-16 little-endian без метки порядка байт (NUL после каждого символа ASCII)
+   *[be] текст UTF-16 big-endian без метки порядка байт (NUL перед каждым символом ASCII)
+}
+encoding-utf16-odd = { $what } обрывается посреди символа на байте { $byte } (сохраните файл в UTF-8)
+encoding-utf16-surrogate = { $what }: неверный UTF-16 на байте { $byte }: одиночный суррогат { $surrogate } (сохраните файл в UTF-8)
+device-no-option = у устройств { $family } нет параметра `{ $key }`
+signal-freq-positive = частота импульсов { $freq } Гц должна быть положительной

@@ -459,3 +459,106 @@ servo-params-saved = 已将 { $count } 个参数保存到 { $file }；拒绝或�
 servo-params-same = 没有差异
 servo-params-loaded = 已写入 { $written } 个参数，均已读回；未改变：{ $unchanged }
 servo-params-loaded-stored = 已写入 { $written } 个参数，均已读回；未改变：{ $unchanged }；参数已保存到驱动器存储器（2FF0.01 = 1）
+
+## 仿真器的注入故障，K2、UMPK 和 FX 仿真器共用（core::sim_faults、k2::sim::control）
+
+sim-fault-describe = 故障 { $id }：{ $what }，从 { $from } s 起直到清除
+sim-fault-describe-until = 故障 { $id }：{ $what }，从 { $from } s 到 { $until } s
+sim-control-words-hint = 控制字：{ $words }
+sim-not-level = `{ $value }` 不是电平（1、0、on、off）
+sim-not-option-here = `{ $word }` 在此不是选项（for=DURATION）
+sim-word-takes-nothing = `{ $word }` 后面不接任何内容（得到 `{ $rest }`）
+sim-no-faults = 没有注入的故障
+sim-no-fault-acted = 没有注入的故障起作用
+sim-fault-acted = { $seconds } s：故障 { $id }（{ $name }）起作用
+sim-not-fault-id = `{ $text }` 不是故障编号
+sim-no-such-fault = 没有故障 { $id }
+sim-no-such-fault-hint = `faults` 列出它们
+sim-faults-cleared = 已清除 { $n } 个故障
+sim-stuck-needs-input = fault stuck 需要一个输入和电平：stuck IN=1
+sim-stuck-shape = `{ $spec }`：写作 stuck { $spec }=1 或 stuck { $spec }=0
+sim-not-fault-here = `{ $kind }` 在此不是故障（no-reply、stuck）
+sim-which-fault = 哪个故障？fault no-reply | fault stuck IN=1
+
+## 文件（core::durable）
+
+file-cannot-create = 无法创建 { $path }
+file-cannot-open = 无法打开 { $path }
+file-cannot-write = 无法写入 { $path }
+
+## 设备配置与设备组（profile、profile::fleet）
+
+profile-cannot-read = 无法读取：{ $error }
+profile-file-not-loaded = { $error }（未装入此文件中的任何配置）
+profile-skipped = 已跳过配置 `{ $name }`：{ $reason }
+profile-unknown = `{ $name }` 既不是设备 URL 也不是配置
+profile-unknown-define-hint = 给出 URL（sim:MODEL、tcp://HOST:PORT …），或在 { $file } 中定义 { $section }
+profile-unknown-list-hint = { $file } 中的配置：{ $list }
+profile-name-letters = 配置名只能由拉丁字母 A-Z a-z、数字、_ 和 - 组成（它会成为设备名，写在操作数之前：press1:VW0）
+profile-url-not-string = `url` 必须是字符串
+profile-url-missing = 缺少 `url`（例如 { $example }）
+profile-read-only-bool = `read_only` 必须是 true 或 false
+profile-allow-list = `allow` 必须是操作数列表，例如 { $example }
+profile-option-scalar = 选项 `{ $key }` 必须是字符串、数字或布尔值
+profile-options-table = `options` 必须是表
+profile-key-scalar = `{ $key }` 必须是字符串、数字或布尔值
+profile-unknown-scheme = { $url } 中的设备方案 `{ $scheme }:` 未知
+profile-known-schemes-hint = 已知方案：{ $list }
+profile-allow-item = 配置 `{ $name }`（{ $origin }）：allow 项 `{ $item }`：{ $reason }
+profile-allow-item-hint = allow 项是此设备的操作数或范围，例如 "VW100..VW120"
+profile-read-only-refused = { $what ->
+    [none] 写入被拒绝：配置 `{ $profile }` 为 read_only（{ $origin }）
+   *[other] { $what } 被拒绝（它会改变 { $name }）：配置 `{ $profile }` 为 read_only（{ $origin }）
+}
+profile-read-only-refused-hint = 可以读取；若要写入，从配置中删除 `read_only = true`
+profile-allow-refused = { $what ->
+    [none] 写入被拒绝：{ $name } 不在配置 `{ $profile }` 的 allow 列表 [{ $list }] 中（{ $origin }）
+   *[other] { $what } 被拒绝（它会改变 { $name }）：{ $name } 不在配置 `{ $profile }` 的 allow 列表 [{ $list }] 中（{ $origin }）
+}
+profile-allow-refused-hint = 只允许写入列出的操作数，且大小相同
+profile-summary-read-only = 只读
+profile-summary-allow = allow { $list }
+fleet-needs-range = 按 URL 定义的设备组需要在 url 中有一个范围，例如 { $example }
+fleet-unclosed-brace = url 中的 `{"{"}` 没有对应的 `{"}"}`
+fleet-one-range = 设备组的 url 中只允许一个 { $form } 范围
+fleet-not-range = `{ $range }` 不是范围（写作 { $form }）
+fleet-not-number = `{ $range }` 中的 `{ $text }` 不是数字
+fleet-backwards = 范围 { $range } 是倒序的
+fleet-too-many = 范围 { $range } 包含 { $n } 台设备；一个设备组最多 { $max } 台
+fleet-devices-or-url = 给出 `devices` 或 `url`，不能同时给出
+fleet-needs-devices = 设备组需要 `{ $devices }` 或 `{ $url }`
+fleet-devices-list = `devices` 必须是配置名或 URL 的列表
+fleet-devices-empty = `devices` 为空
+fleet-devices-rules = `{ $key }`：`devices` 设备组的规则取自各个配置
+fleet-listed-twice = `{ $name }` 列出了两次
+fleet-lists-unknown = 设备组 `{ $name }`（{ $origin }）列出了 `{ $profile }`，但它不是已装入的配置
+fleet-unknown = 没有名为 `{ $name }` 的设备组
+fleet-unknown-define-hint = 在 { $file } 中用 { $devices } 或 { $url } 定义 { $section }
+fleet-unknown-list-hint = { $file } 中的设备组：{ $list }
+fleet-name-letters = 设备组名只能由拉丁字母 A-Z a-z、数字、_ 和 - 组成
+fleet-skipped = 已跳过设备组 `{ $name }`：{ $reason }
+
+## 设备 URL 与文件（schemes、paths、pending）
+
+schemes-known-hint = 已知方案：sim:MODEL、tcp://HOST:PORT、rtu:PORT、kinco:PORT?id=1、sim-servo:?id=1、fx:PORT、fxlink:PORT、sim-fx:FX2N、umpk:PORT、sim-umpk:UMPK16（PORT：COM3、/dev/ttyUSB0；串口设备服务器：rtu+tcp://HOST:PORT、kinco+rfc2217://HOST:PORT、…）
+pending-not-connected = 暂时无法读取 `{ $operand }`：设备未连接
+pending-not-connected-hint = 检查连接（`plcsh ports`、电缆、电源）；下一条命令会再次尝试连接
+
+## 设备 URL、文本文件、选项（core::url、core::encoding、core::device、core::signal）
+
+url-not-url = `{ $text }` 不是设备 URL
+url-not-url-hint = 使用 sim:MODEL、tcp://HOST:PORT?unit=1、{ $rtu }、rtu+tcp://HOST:PORT、{ $kinco } 或 sim-servo:?id=1
+url-param-too-large = { $url } 中的 `{ $param }` 太大：最大 { $max }
+url-param-not-number = { $url } 中的 `{ $param }` 不是整数
+url-unknown-param = { $url } 中有未知参数 `{ $key }`
+url-known-params-hint = 已知参数：{ $list }
+encoding-utf16-kind = { $kind ->
+    [bom-le] UTF-16 文本（字节顺序标记 FF FE）
+    [bom-be] UTF-16 文本（字节顺序标记 FE FF）
+    [le] 无字节顺序标记的 UTF-16 小端文本（每个 ASCII 字符后有一个 NUL）
+   *[be] 无字节顺序标记的 UTF-16 大端文本（每个 ASCII 字符前有一个 NUL）
+}
+encoding-utf16-odd = { $what } 在第 { $byte } 字节处于字符中间结束（请把文件保存为 UTF-8）
+encoding-utf16-surrogate = { $what }：第 { $byte } 字节处 UTF-16 无效：孤立代理项 { $surrogate }（请把文件保存为 UTF-8）
+device-no-option = { $family } 设备没有选项 `{ $key }`
+signal-freq-positive = 脉冲频率 { $freq } Hz 必须为正

@@ -25,6 +25,7 @@
 
 use crate::core::link::port::Port;
 use crate::k2::sim::rtu_frame::crc16;
+use crate::msg;
 use std::io;
 use std::time::Instant;
 use tokio_modbus::{ExceptionCode, Request, Response};
@@ -62,22 +63,19 @@ impl std::fmt::Display for Garbled {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         let hex = crate::core::trace::hex_bytes;
         let more = if self.total > self.arrived.len() { " …" } else { "" };
-        match &self.bad_crc {
+        let received = format!("{}{more}", hex(&self.arrived));
+        let m = match &self.bad_crc {
             Some((frame, got, want)) => {
-                write!(
-                    f,
-                    "a reply with an invalid CRC arrived: {} (CRC {}, its bytes need {})",
-                    hex(frame),
-                    hex(&got.to_le_bytes()),
-                    hex(&want.to_le_bytes())
-                )?;
+                let (frame_hex, got, want) = (hex(frame), hex(&got.to_le_bytes()), hex(&want.to_le_bytes()));
                 if *frame == self.arrived && self.total == frame.len() {
-                    return Ok(());
+                    msg!("k2-reply-bad-crc", frame = frame_hex, got = got, want = want)
+                } else {
+                    msg!("k2-reply-bad-crc-received", frame = frame_hex, got = got, want = want, received = received)
                 }
             }
-            None => write!(f, "{} byte(s) arrived but no valid reply frame", self.total)?,
-        }
-        write!(f, "; received: {}{more}", hex(&self.arrived))
+            None => msg!("k2-reply-no-frame", n = self.total, received = received),
+        };
+        f.write_str(&m)
     }
 }
 
@@ -196,7 +194,12 @@ impl ModbusClient {
                 self.frame.push((2 * words.len()) as u8);
                 words.iter().for_each(|w| self.put(*w));
             }
-            other => return Err(io::Error::new(io::ErrorKind::Unsupported, format!("{other:?} is not a K2 request"))),
+            other => {
+                return Err(io::Error::new(
+                    io::ErrorKind::Unsupported,
+                    msg!("k2-not-k2-request", request = format!("{other:?}")).text,
+                ))
+            }
         }
         self.finish();
         if let Err(code) = self.exchange(deadline)? {
@@ -245,7 +248,9 @@ impl ModbusClient {
         match self.rx[lo] {
             f if f == fc => Ok(Ok(())),
             f if f == fc | 0x80 && hi - lo == 2 => Ok(Err(ExceptionCode::new(self.rx[lo + 1]))),
-            f => Err(invalid(format!("a reply with function code {f:#04x} to a request with {fc:#04x}"))),
+            f => Err(invalid(
+                msg!("k2-reply-function-code", got = format!("{f:#04x}"), want = format!("{fc:#04x}")).into(),
+            )),
         }
     }
 
@@ -274,7 +279,7 @@ impl ModbusClient {
                 return Ok(Found::Skip);
             }
             if b[0] != self.unit {
-                return Err(invalid(format!("a reply from unit {} to a request for unit {}", b[0], self.unit)));
+                return Err(invalid(msg!("k2-reply-unit", got = b[0], want = self.unit).into()));
             }
             Ok(Found::Pdu(1, len - 2))
         } else {
@@ -283,17 +288,17 @@ impl ModbusClient {
             }
             let len = u16::from_be_bytes([b[4], b[5]]) as usize;
             if b[2..4] != [0, 0] || !(2..=254).contains(&len) {
-                return Err(invalid(format!("a reply header that is not Modbus TCP: {:02x?}", &b[..7])));
+                return Err(invalid(msg!("k2-reply-not-tcp", header = format!("{:02x?}", &b[..7])).into()));
             }
             if b.len() < 6 + len {
                 return Ok(Found::More);
             }
             let tid = u16::from_be_bytes([b[0], b[1]]);
             if tid != self.tid || b[6] != self.unit {
-                return Err(invalid(format!(
-                    "a reply for transaction {tid}, unit {} to transaction {}, unit {}",
-                    b[6], self.tid, self.unit
-                )));
+                return Err(invalid(
+                    msg!("k2-reply-transaction", tid = tid, unit = b[6], want_tid = self.tid, want_unit = self.unit)
+                        .into(),
+                ));
             }
             Ok(Found::Pdu(7, 6 + len))
         }
@@ -326,7 +331,7 @@ impl Port for Replay {
     }
     fn recv(&mut self, buf: &mut Vec<u8>, _deadline: Instant) -> io::Result<()> {
         if self.at >= self.data.len() {
-            return Err(io::Error::new(io::ErrorKind::UnexpectedEof, "no more replies"));
+            return Err(io::Error::new(io::ErrorKind::UnexpectedEof, msg!("k2-no-more-replies").text));
         }
         let end = (self.at + self.chunk).min(self.data.len());
         buf.extend_from_slice(&self.data[self.at..end]);
@@ -371,7 +376,8 @@ pub fn fuzz_replies(data: &[u8]) {
 
 /// Decodes the data of a reply to `req` (after the function code).
 fn response(req: &Request<'_>, d: &[u8]) -> io::Result<Response> {
-    let bad = || invalid(format!("a malformed reply to {req:?}: {d:02x?}"));
+    let bad = || invalid(msg!("k2-reply-malformed", request = format!("{req:?}"), data = format!("{d:02x?}")).into());
+
     let be = |at: usize| u16::from_be_bytes([d[at], d[at + 1]]);
     Ok(match req {
         Request::ReadCoils(..) | Request::ReadDiscreteInputs(..) => {

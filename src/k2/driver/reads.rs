@@ -9,6 +9,7 @@ use crate::k2::agent::client::AgentClient;
 use crate::k2::agent::protocol as p;
 use crate::k2::modbus_map::Table;
 use crate::k2::probe::{Answer, Reader};
+use crate::msg;
 use std::time::Instant;
 
 impl Reader for K2Wire {
@@ -20,7 +21,8 @@ impl Reader for K2Wire {
                 let want = if table.is_bits() { 2 } else { 3 };
                 if data.len() < want {
                     return Answer::Failed {
-                        message: format!("the reply to a read of {} {addr} was too short", table.name()),
+                        message: msg!("k2-reply-read-short", table = table.name(), addr = addr).into(),
+
                         hint: self.link.hint().to_string(),
                     };
                 }

@@ -19,6 +19,7 @@ use crate::k2::memory::Memory;
 use crate::k2::modbus_map;
 use crate::k2::operand::{Area, K2Operand, Width};
 use crate::k2::sm_map::PTO_REGS;
+use crate::msg;
 use std::time::Duration;
 use tokio_modbus::Request;
 
@@ -54,16 +55,17 @@ impl VWords<'_> {
             Failure::Link(e) => e,
             Failure::Exception(c) => Error::new(
                 ErrorKind::Refused,
-                format!(
-                    "the PLC refused {doing} the helper mailbox: {} (Modbus exception {:02})",
-                    modbus_map::exception_name(c.into()),
-                    u8::from(c)
+                msg!(
+                    "k2-mailbox-refused",
+                    doing = doing,
+                    name = modbus_map::exception_name(c.into()),
+                    code = format!("{:02}", u8::from(c))
                 ),
             )
             .hint(match u8::from(c) {
-                2 => "check that agent=VB… lies inside the V area of this model",
-                4 => "the PLC reports a device failure: check its error LED and diagnostics, then try again",
-                _ => "check that this is the PLC's Modbus port and unit (plcsh probe URL says what it answers)",
+                2 => msg!("k2-mailbox-refused-hint-2"),
+                4 => msg!("k2-mailbox-refused-hint-4"),
+                _ => msg!("k2-mailbox-refused-hint"),
             }),
         }
     }
@@ -74,7 +76,7 @@ impl Registers for VWords<'_> {
         let start = self.register(vbyte)?;
         match self.0.call(Request::ReadHoldingRegisters(start, count)) {
             Ok(tokio_modbus::Response::ReadHoldingRegisters(w)) if w.len() == count as usize => Ok(w),
-            Ok(other) => Err(Error::link(format!("unexpected reply {other:?} reading the helper mailbox"))),
+            Ok(other) => Err(Error::link(msg!("k2-mailbox-unexpected-reply", reply = format!("{other:?}")))),
             Err(f) => Err(self.failed(f, "reading")),
         }
     }
@@ -91,10 +93,7 @@ impl K2Wire {
     /// Runs one helper command, or explains that the device has no helper configured.
     pub(super) fn agent_run(&mut self, cmd: &Command, what: &str) -> Result<Vec<u8>> {
         let Some(mut client) = self.agent.take() else {
-            return Err(Error::unsupported(format!(
-                "{what} needs the plcsh helper program in the PLC; this device has none configured"
-            ))
-            .hint("install lib/k2_agent.il (docs/agent.md) and connect with …&agent=VB3400"));
+            return Err(Error::unsupported(msg!("k2-needs-helper", what = what)).hint(msg!("k2-needs-helper-hint")));
         };
         let poll = client.poll;
         let r = client.run(&mut VWords(self), cmd, &mut |_| std::thread::sleep(poll));
@@ -105,17 +104,22 @@ impl K2Wire {
     /// Checks the helper (signature, version, running heartbeat) and reports it.
     pub fn agent_status(&mut self) -> Result<String> {
         let Some(mut client) = self.agent.take() else {
-            return Err(Error::unsupported("no helper configured on this device").hint("connect with …&agent=VB3400"));
+            return Err(Error::unsupported(msg!("k2-no-helper")).hint(msg!("k2-no-helper-hint")));
         };
         let poll = client.poll;
         let r = client.check(&mut VWords(self), &mut |_| std::thread::sleep(poll));
         let base = client.base;
         self.agent = Some(client);
         let s = r?;
-        Ok(format!(
-            "helper protocol {} at VB{base}, heartbeat {}, last command {} (result {})",
-            s.version, s.heartbeat, s.acks[0].seq, s.acks[0].result
-        ))
+        Ok(msg!(
+            "k2-helper-status",
+            version = s.version.to_string(),
+            base = base,
+            heartbeat = s.heartbeat.to_string(),
+            seq = s.acks[0].seq.to_string(),
+            result = s.acks[0].result.to_string()
+        )
+        .into())
     }
 
     /// True when this batch needs the helper (it has SM operands and a helper is set).
@@ -222,7 +226,7 @@ impl K2Wire {
 
     pub(super) fn instruction(&mut self, cmd: Command, what: &str) -> Result<String> {
         match self.agent_run(&cmd, what) {
-            Ok(_) => Ok(format!("{what}: done by the helper")),
+            Ok(_) => Ok(msg!("k2-done-by-helper", what = what).into()),
             Err(e) => match self.agent.as_ref().and_then(|c| c.last_refusal) {
                 Some((rc, cause)) => Err(self.in_process_words(&cmd, rc, cause).unwrap_or(e)),
                 None => Err(e),
@@ -292,11 +296,9 @@ impl K2Wire {
 
     pub(super) fn rtc_read(&mut self) -> Result<RtcTime> {
         let b = self.agent_run(&Command::ReadRtc, "READ_RTC")?;
-        let buf: [u8; 8] = b
-            .get(..8)
-            .and_then(|s| s.try_into().ok())
-            .ok_or_else(|| Error::link("the helper's READ_RTC reply is shorter than 8 bytes"))?;
-        RtcTime::from_bcd8(&buf).map_err(|m| Error::new(ErrorKind::Refused, format!("the PLC clock reads as {m}")))
+        let buf: [u8; 8] =
+            b.get(..8).and_then(|s| s.try_into().ok()).ok_or_else(|| Error::link(msg!("k2-rtc-reply-short")))?;
+        RtcTime::from_bcd8(&buf).map_err(|m| Error::new(ErrorKind::Refused, msg!("k2-rtc-reads-as", value = m)))
     }
 }
 

@@ -9,6 +9,7 @@ use crate::k2::catalog::Model;
 use crate::k2::operand::{Area, K2Operand};
 use crate::k2::sim::hsc::{ctl, mpv, MAX_PVS};
 use crate::k2::sm_map::{self, HscKind, HscRegs, HSC_REGS};
+use crate::msg;
 
 /// What the user asked for.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -37,10 +38,10 @@ pub struct HscRequest {
 pub fn counter(model: &Model, n: u8) -> Result<HscRegs> {
     if model.hsc(n).is_none() {
         let list: Vec<String> = model.hsc.iter().map(|h| format!("HSC{}", h.channel)).collect();
-        return Err(Error::unsupported(format!("{} has no high-speed counter HSC{n}", model.name)).hint(format!(
-            "counters on {}: {}",
-            model.name,
-            list.join(", ")
+        return Err(Error::unsupported(msg!("k2-hsc-no-counter", model = model.name, n = n)).hint(msg!(
+            "k2-hsc-no-counter-hint",
+            model = model.name,
+            list = list.join(", ")
         )));
     }
     Ok(HSC_REGS[n as usize])
@@ -52,23 +53,23 @@ pub fn plan(model: &Model, q: &HscRequest, backup: (u32, u32)) -> Result<Plan> {
     let n = q.counter;
     let m = sm_map::hsc_mode(n, q.mode).ok_or_else(|| {
         let modes: Vec<String> = sm_map::hsc_modes_of(n).iter().map(|m| m.to_string()).collect();
-        bad("mode", format!("HSC{n} has no mode {} (manual §3.3.1)", q.mode))
-            .hint(format!("HSC{n}'s modes: {}", modes.join(", ")))
+        bad("mode", msg!("k2-hsc-no-mode", n = n, mode = q.mode)).hint(msg!(
+            "k2-hsc-no-mode-hint",
+            n = n,
+            list = modes.join(", ")
+        ))
     })?;
     if q.rate4x && m.kind != HscKind::Quadrature {
-        return Err(bad("rate", format!("rate=4x applies to the A/B modes (9, 10), not mode {}", q.mode)));
+        return Err(bad("rate", msg!("k2-hsc-rate-4x", mode = q.mode)));
     }
     if q.up.is_some() && m.kind != HscKind::InternalDir {
-        return Err(bad(
-            "dir",
-            format!("mode {} takes its direction from its inputs; dir= applies to modes 0–2 (§3.3.2)", q.mode),
-        ));
+        return Err(bad("dir", msg!("k2-hsc-dir", mode = q.mode)));
     }
     if q.reset_low && m.reset.is_none() {
-        return Err(bad("reset", format!("mode {} has no reset input", q.mode)));
+        return Err(bad("reset", msg!("k2-hsc-no-reset", mode = q.mode)));
     }
     if q.start_low && m.start.is_none() {
-        return Err(bad("start", format!("mode {} has no start input", q.mode)));
+        return Err(bad("start", msg!("k2-hsc-no-start", mode = q.mode)));
     }
     let mut p = Plan::default();
     let mut c = ctl::ENABLE;
@@ -92,10 +93,7 @@ pub fn plan(model: &Model, q: &HscRequest, backup: (u32, u32)) -> Result<Plan> {
         p.dint(Area::SM, r.cv, cv as i64);
     }
     if q.cyclic && !q.relative {
-        return Err(bad(
-            "cyclic",
-            "cyclic CV = PV interrupts need relative PVs (§3.3.2: SM141.2 acts only with SM141.1)",
-        ));
+        return Err(bad("cyclic", msg!("k2-hsc-cyclic-relative")));
     }
     match (q.pv.len(), q.at) {
         (0, None) => {
@@ -106,40 +104,27 @@ pub fn plan(model: &Model, q: &HscRequest, backup: (u32, u32)) -> Result<Plan> {
             p.dint(Area::SM, r.pv, q.pv[0] as i64);
             p.byte(Area::SM, r.mpv_control, 0);
         }
-        (_, None) => {
-            return Err(bad("pv", "a PV table (several PVs, relative or cyclic) needs a V address: add `at VB3009`"))
-        }
-        (0, Some(_)) => return Err(bad("pv", "`at` needs PVs: pv=[100,200,300]")),
+        (_, None) => return Err(bad("pv", msg!("k2-hsc-table-needs-at"))),
+        (0, Some(_)) => return Err(bad("pv", msg!("k2-hsc-at-needs-pv"))),
         (k, Some(at)) => {
             if at % 2 == 0 {
-                return Err(bad("at", format!("VB{at} is even: the PV table starts at an odd V address (§3.3.2)"))
-                    .hint(format!("e.g. at VB{}", at + 1)));
+                return Err(bad("at", msg!("k2-hsc-even", at = at)).hint(msg!("k2-table-odd-hint", at = at as u64 + 1)));
             }
             if k > MAX_PVS as usize {
-                return Err(bad("pv", format!("{k} PVs: a counter has at most {MAX_PVS} (§3.3.3)")));
+                return Err(bad("pv", msg!("k2-hsc-too-many-pvs", n = k, max = MAX_PVS)));
             }
             // In u64: an address near the top of u32 must be refused, not wrap past the check.
             let last = at as u64 + 4 * k as u64;
             if last >= model.v_bytes as u64 {
                 return Err(bad(
                     "at",
-                    format!(
-                        "the PV table VB{at}…VB{last} runs past the V area of {} (VB{})",
-                        model.name,
-                        model.v_bytes - 1
-                    ),
+                    msg!("k2-hsc-past-v", at = at, last = last, model = model.name, top = model.v_bytes - 1),
                 ));
             }
             let last = last as u32;
             if overlaps_backup(at, last, backup) && !q.force {
-                return Err(bad(
-                    "at",
-                    format!(
-                        "the PV table VB{at}…VB{last} overlaps the E2PROM backup area VB{}…VB{} (§2.2.8)",
-                        backup.0, backup.1
-                    ),
-                )
-                .hint("move the table below VB3648, or add `force`"));
+                return Err(bad("at", msg!("k2-hsc-backup", at = at, last = last, first = backup.0, end = backup.1))
+                    .hint(msg!("k2-table-backup-hint")));
             }
             for (i, pv) in q.pv.iter().enumerate() {
                 let ends = if q.relative {
@@ -148,13 +133,7 @@ pub fn plan(model: &Model, q: &HscRequest, backup: (u32, u32)) -> Result<Plan> {
                     i > 0 && (*pv as i64 - q.pv[i - 1] as i64).abs() <= 1
                 };
                 if ends {
-                    return Err(bad(
-                        "pv",
-                        format!(
-                            "PV{} = {pv} would end the table there (§3.3.3: relative |PV| > 1, absolute neighbours differ by > 1)",
-                            i + 1
-                        ),
-                    ));
+                    return Err(bad("pv", msg!("k2-hsc-pv-ends-table", index = i + 1, pv = *pv)));
                 }
             }
             p.byte(Area::V, at, k as i64);
@@ -171,7 +150,7 @@ pub fn plan(model: &Model, q: &HscRequest, backup: (u32, u32)) -> Result<Plan> {
             }
             p.byte(Area::SM, r.mpv_control, b as i64);
             let first = r.event_base as u32;
-            p.notes.push(format!("CV = PV events {}…{} (§3.3.4)", first, first + k as u32 - 1));
+            p.notes.push(msg!("k2-hsc-events", first = first, last = first + k as u32 - 1).into());
         }
     }
     p.writes.insert(0, (K2Operand::byte(Area::SM, r.control), crate::core::Value::Int(c as i64)));
@@ -181,16 +160,17 @@ pub fn plan(model: &Model, q: &HscRequest, backup: (u32, u32)) -> Result<Plan> {
 }
 
 /// Meanings of an HSC status byte (§3.3.2).
-pub fn decode_status(s: u8) -> Vec<&'static str> {
-    let mut w = vec![if s & 0x20 != 0 { "counting up" } else { "counting down" }];
+pub fn decode_status(s: u8) -> Vec<String> {
+    let bit = |b: &str| msg!("k2-hsc-status-bit", bit = b).text;
+    let mut w = vec![bit(if s & 0x20 != 0 { "up" } else { "down" })];
     if s & 0x40 != 0 {
-        w.push("CV = PV");
+        w.push(bit("equal"));
     }
     if s & 0x80 != 0 {
-        w.push("CV > PV");
+        w.push(bit("greater"));
     }
     if s & 0x08 != 0 {
-        w.push("PV table fault");
+        w.push(bit("fault"));
     }
     w
 }
@@ -217,30 +197,29 @@ pub fn status(dev: &mut dyn Device, model: &Model, n: u8) -> Result<Status> {
     let st = vals[0].value.as_i64() as u8;
     let c = vals[1].value.as_i64() as u8;
     let b = vals[4].value.as_i64() as u8;
-    let mut words: Vec<String> = decode_status(st).into_iter().map(String::from).collect();
-    words.insert(0, if c & ctl::ENABLE != 0 { "enabled".into() } else { "disabled".into() });
+    let mut words: Vec<String> = decode_status(st);
+    words.insert(0, msg!("k2-hsc-status-bit", bit = if c & ctl::ENABLE != 0 { "enabled" } else { "disabled" }).into());
     let smd = vals[2].value.as_i64();
     // The count wraps as a DINT, as SMD38 … shows it.
     let live = crate::k2::simulator(dev)
         .and_then(|s| s.hsc.iter().find(|h| h.regs.channel == n).map(|h| (h.cv() as i32 as i64, h.user_cv)));
     let cv = live.map_or(smd, |(cv, _)| cv);
-    words.push(format!("CV {cv}"));
+    words.push(msg!("k2-hsc-status-cv", cv = cv).into());
     if live.is_some_and(|(cv, written)| written && cv != smd) {
-        words.push(format!(
-            "SMD{} holds {smd}, written: a new CV, loaded by the next HSC {n} with SM{}.6 set (§3.3.2)",
-            r.cv, r.control
-        ));
+        words.push(msg!("k2-hsc-status-written-cv", smd = r.cv, value = smd, n = n, control = r.control).into());
     }
     if b & mpv::MULTI != 0 {
-        words.push(format!(
-            "multi-PV {}{}, segment {}",
-            if b & mpv::RELATIVE != 0 { "relative" } else { "absolute" },
-            if b & mpv::CYCLIC != 0 { " cyclic" } else { "" },
-            vals[5].value.as_i64()
-        ));
+        let kind = match (b & mpv::RELATIVE != 0, b & mpv::CYCLIC != 0) {
+            (true, false) => "relative",
+            (true, true) => "relative-cyclic",
+            (false, true) => "absolute-cyclic",
+            (false, false) => "absolute",
+        };
+        words.push(msg!("k2-hsc-status-multi-pv", kind = kind, segment = vals[5].value.as_i64()).into());
     } else {
-        words.push(format!("single PV {}", vals[3].value.as_i64()));
+        words.push(msg!("k2-hsc-status-single-pv", pv = vals[3].value.as_i64()).into());
     }
+
     Ok(Status { registers: vals, words, cv })
 }
 

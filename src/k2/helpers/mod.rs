@@ -18,6 +18,7 @@ use super::operand::{Area, K2Operand};
 use super::K2Ops;
 use crate::core::device::Change;
 use crate::core::{DataType, Device, Error, ErrorKind, Result, Value};
+use crate::msg;
 
 /// An instruction a plan runs after its writes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -107,7 +108,7 @@ pub fn execute(dev: &mut dyn Device, plan: &Plan) -> Result<Done> {
         items.push((core, v));
     }
     if !plan.then.is_empty() && super::ops(dev).is_none() {
-        return Err(Error::unsupported("this device is not a K2 PLC"));
+        return Err(Error::unsupported(msg!("k2-not-a-k2")));
     }
     // The whole plan goes past the write rules first: refused whole, nothing sent.
     let mut changes: Vec<Change> = items.iter().map(|(op, _)| Change::Write(*op)).collect();
@@ -150,7 +151,7 @@ pub use crate::core::literal::parse_freq_hz;
 pub fn parse_us(text: &str) -> std::result::Result<u64, String> {
     let us = crate::core::literal::parse_pulse_time_us(text)?;
     if us <= 0 {
-        return Err(format!("`{text}` is not a positive duration"));
+        return Err(msg!("k2-duration-not-positive", text = text).into());
     }
     Ok(us as u64)
 }

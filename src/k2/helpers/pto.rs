@@ -8,6 +8,7 @@ use crate::k2::catalog::{Model, PtoSpec};
 use crate::k2::operand::{Area, K2Operand};
 use crate::k2::sim::pto::{ctl, MAX_SEGMENTS};
 use crate::k2::sm_map::{PtoRegs, PTO_REGS};
+use crate::msg;
 use serde::Serialize;
 
 /// How fast: a frequency or a cycle time.
@@ -25,8 +26,9 @@ impl Rate {
             Rate::Hz(f) => {
                 let us = (1e6 / f).round().max(1.0) as u64;
                 let actual = 1e6 / us as f64;
-                let note = ((actual - f).abs() > 1e-9 * f)
-                    .then(|| format!("{f} Hz is not a whole number of µs: cycle {us} µs = {actual:.3} Hz"));
+                let note = ((actual - f).abs() > 1e-9 * f).then(|| {
+                    msg!("k2-pto-rounded", hz = f.to_string(), us = us, actual = format!("{actual:.3}")).into()
+                });
                 (us, note)
             }
         }
@@ -36,14 +38,15 @@ impl Rate {
 /// The channel's spec and registers, or an error naming what the model has.
 pub fn channel(model: &Model, ch: u8) -> Result<(&'static PtoSpec, PtoRegs)> {
     if model.relay {
-        return Err(Error::unsupported(format!("{} has relay outputs: no PTO/PWM (manual §2.2.6)", model.name))
-            .hint("pulse outputs need a transistor-output model, e.g. K205-16DT"));
+        return Err(
+            Error::unsupported(msg!("k2-pto-relay-model", model = model.name)).hint(msg!("k2-pto-relay-model-hint"))
+        );
     }
     let all: &'static [PtoSpec] = model.pto;
     let spec = all.iter().find(|p| p.channel == ch).ok_or_else(|| {
         let list: Vec<String> = all.iter().map(|p| format!("{} ({})", p.channel, p.output)).collect();
-        Error::unsupported(format!("{} has no pulse channel {ch}", model.name))
-            .hint(format!("pulse channels: {}", list.join(", ")))
+        Error::unsupported(msg!("k2-pto-no-channel", model = model.name, channel = ch))
+            .hint(msg!("k2-pto-no-channel-hint", list = list.join(", ")))
     })?;
     Ok((spec, PTO_REGS[ch as usize]))
 }
@@ -55,16 +58,13 @@ fn to_base(us: u64, what: &str) -> Result<(u64, bool)> {
     } else if us.is_multiple_of(1000) && us / 1000 <= 65_535 {
         Ok((us / 1000, true))
     } else {
-        Err(bad(
-            what,
-            format!("{us} µs does not fit a cycle register: up to 65 535 µs, or whole milliseconds up to 65 535 ms"),
-        ))
+        Err(bad(what, msg!("k2-pto-cycle-register", us = us)))
     }
 }
 
 fn check_freq(spec: &PtoSpec, us: u64, what: &str) -> Result<()> {
     if us < 2 {
-        return Err(bad(what, format!("a cycle of {us} µs is below the minimum of 2 (§3.4.2.2)")));
+        return Err(bad(what, msg!("k2-pto-cycle-below-minimum", us = us)));
     }
     // Saturating: a product past u64 is far above 1 000 000, and a cycle that long is
     // refused by the register's limit (to_base), not wrapped into "too fast".
@@ -73,19 +73,16 @@ fn check_freq(spec: &PtoSpec, us: u64, what: &str) -> Result<()> {
         // The cycle as typed: `cycle=2` is 2 µs, too short, not "500000 Hz".
         return Err(bad(
             what,
-            format!(
-                "a cycle of {us} µs is too short for {}: its shortest cycle is {shortest} µs ({} Hz, manual §3.4)",
-                spec.output, spec.max_hz
-            ),
+            msg!("k2-pto-cycle-too-short", us = us, output = spec.output, shortest = shortest, max = spec.max_hz),
         )
-        .hint(format!("cycle={shortest}us or longer; cycle= is in µs unless a unit is given (cycle=1ms)")));
+        .hint(msg!("k2-pto-cycle-too-short-hint", shortest = shortest)));
     }
     if us.saturating_mul(spec.max_hz as u64) < 1_000_000 {
         return Err(bad(
             what,
-            format!("{} Hz is above {}'s limit of {} Hz (manual §3.4)", 1_000_000 / us, spec.output, spec.max_hz),
+            msg!("k2-pto-freq-too-high", hz = 1_000_000 / us, output = spec.output, max = spec.max_hz),
         )
-        .hint(format!("the shortest cycle on {} is {shortest} µs", spec.output)));
+        .hint(msg!("k2-pto-freq-too-high-hint", output = spec.output, shortest = shortest)));
     }
     Ok(())
 }
@@ -97,13 +94,13 @@ pub fn plan_pto(model: &Model, ch: u8, rate: Rate, count: u64) -> Result<Plan> {
     let (us, note) = rate.cycle_us();
     check_freq(spec, us, if matches!(rate, Rate::CycleUs(_)) { "cycle" } else { "freq" })?;
     if !(2..=u32::MAX as u64).contains(&count) {
-        return Err(bad("count", format!("count={count}: a PTO needs 2 … 4 294 967 295 pulses (§3.4.2.1)")));
+        return Err(bad("count", msg!("k2-pto-count-range", count = count)));
     }
     let (cycle, ms) = to_base(us, "cycle")?;
     let mut p = Plan::default();
     p.notes.extend(note);
     if ms {
-        p.notes.push(format!("cycle {us} µs uses the 1 ms time base (SM{}.3 = 1)", r.control));
+        p.notes.push(msg!("k2-pto-ms-base", us = us, control = r.control).into());
     }
     let control = ctl::ENABLE | ctl::UPDATE_CYCLE | ctl::UPDATE_COUNT | if ms { ctl::BASE_MS } else { 0 };
     p.byte(Area::SM, r.control, control as i64);
@@ -121,10 +118,7 @@ pub fn plan_pwm(model: &Model, ch: u8, cycle_us: u64, width_us: u64, sync: bool)
     let (cycle, ms) = to_base(cycle_us, "cycle")?;
     let width = if ms {
         if !width_us.is_multiple_of(1000) {
-            return Err(bad(
-                "width",
-                format!("width={width_us} µs: with a {cycle_us} µs cycle the time base is 1 ms, so the width must be whole ms"),
-            ));
+            return Err(bad("width", msg!("k2-pwm-width-whole-ms", width = width_us, cycle = cycle_us)));
         }
         width_us / 1000
     } else {
@@ -132,9 +126,9 @@ pub fn plan_pwm(model: &Model, ch: u8, cycle_us: u64, width_us: u64, sync: bool)
     };
     let mut p = Plan::default();
     if width >= cycle {
-        p.notes.push("width ≥ cycle: 100 % duty, the output stays on (§3.4.2.1)".into());
+        p.notes.push(msg!("k2-pwm-always-on").into());
     } else if width == 0 {
-        p.notes.push("width 0: 0 % duty, the output stays off (§3.4.2.1)".into());
+        p.notes.push(msg!("k2-pwm-always-off").into());
     }
     let width = width.min(65_535);
     let control = ctl::ENABLE
@@ -225,57 +219,47 @@ pub fn plan_profile(
 ) -> Result<Profile> {
     let (spec, r) = channel(model, ch)?;
     if at.is_multiple_of(2) {
-        return Err(bad("at", format!("VB{at} is even: a profile table must start at an odd V address (§3.4.2.1)"))
-            .hint(format!("e.g. at VB{}", at + 1)));
+        return Err(bad("at", msg!("k2-profile-even", at = at)).hint(msg!("k2-table-odd-hint", at = at as u64 + 1)));
     }
     if segments.is_empty() || segments.len() > MAX_SEGMENTS as usize {
-        return Err(bad("segments", format!("{} segments: a profile has 1 … {MAX_SEGMENTS}", segments.len())));
+        return Err(bad("segments", msg!("k2-profile-segments", n = segments.len(), max = MAX_SEGMENTS)));
     }
     // In u64: an address near the top of u32 must be refused, not wrap past the check.
     let last = at as u64 + 8 * segments.len() as u64;
     if last >= model.v_bytes as u64 {
         return Err(Error::new(
             crate::core::ErrorKind::Range,
-            format!("the table VB{at}…VB{last} runs past the V area of {} (VB{})", model.name, model.v_bytes - 1),
+            msg!("k2-profile-past-v", at = at, last = last, model = model.name, top = model.v_bytes - 1),
         )
         .operand(format!("VB{at}")));
     }
     let last = last as u32;
     if overlaps_backup(at, last, backup) && !force {
-        return Err(bad(
-            "at",
-            format!(
-                "the table VB{at}…VB{last} overlaps the E2PROM backup area VB{}…VB{} (§2.2.8): every write wears it",
-                backup.0, backup.1
-            ),
-        )
-        .hint("move the table below VB3648, or add `force`"));
+        return Err(bad("at", msg!("k2-profile-backup", at = at, last = last, first = backup.0, end = backup.1))
+            .hint(msg!("k2-table-backup-hint")));
     }
     let mut us = Vec::with_capacity(segments.len());
     let mut plan = Plan::default();
     for (k, s) in segments.iter().enumerate() {
-        let what = format!("segment {}", k + 1);
+        let what = msg!("k2-profile-segment", n = k + 1).to_string();
         if s.count < 1 || s.count > u32::MAX as u64 {
-            return Err(bad(&what, format!("{what}: count={} (1 … 4 294 967 295)", s.count)));
+            return Err(bad(&what, msg!("k2-profile-segment-count", n = k + 1, count = s.count)));
         }
         let (c, note) = s.rate.cycle_us();
         check_freq(spec, c, &what).map_err(|e| {
-            let m = format!("{what}: {}", e.message);
+            let m = msg!("k2-profile-segment-error", n = k + 1, message = e.message.as_str());
             Error::new(e.kind, m).operand(what.clone()).hint(e.hint.clone().unwrap_or_default())
         })?;
-        plan.notes.extend(note.map(|n| format!("{what}: {n}")));
+        plan.notes.extend(note.map(|n| msg!("k2-profile-segment-error", n = k + 1, message = n).into()));
         us.push(c);
     }
     let base_ms = if us.iter().all(|&c| c <= 65_535) {
         false
     } else if us.iter().all(|&c| c % 1000 == 0 && c / 1000 <= 65_535) {
-        plan.notes.push(format!("the profile uses the 1 ms time base (SM{}.3 = 1)", r.control));
+        plan.notes.push(msg!("k2-profile-ms-base", control = r.control).into());
         true
     } else {
-        return Err(bad(
-            "segments",
-            "one time base serves all segments (§3.4.2.1): some cycles need 1 ms units (> 65 535 µs) but others are not whole ms",
-        ));
+        return Err(bad("segments", msg!("k2-profile-mixed-base")));
     };
     let div = if base_ms { 1000 } else { 1 };
     let table: Vec<TableSegment> = segments
@@ -298,37 +282,39 @@ pub fn plan_profile(
 }
 
 /// Meanings of a PTO control byte's set bits (§3.4.2.2).
-pub fn decode_control(c: u8) -> Vec<&'static str> {
-    let mut w = vec![if c & ctl::ENABLE != 0 { "enabled" } else { "disabled" }];
+pub fn decode_control(c: u8) -> Vec<String> {
+    let bit = |b: &str| msg!("k2-pto-control-bit", bit = b).text;
+    let mut w = vec![bit(if c & ctl::ENABLE != 0 { "enabled" } else { "disabled" })];
     if c & ctl::PWM != 0 {
-        w.push("PWM");
-        w.push(if c & ctl::PWM_SYNC != 0 { "synchronous update" } else { "asynchronous update" });
+        w.push("PWM".into());
+        w.push(bit(if c & ctl::PWM_SYNC != 0 { "sync" } else { "async" }));
     } else {
-        w.push("PTO");
-        w.push(if c & ctl::MULTI != 0 { "multi-segment" } else { "single segment" });
+        w.push("PTO".into());
+        w.push(bit(if c & ctl::MULTI != 0 { "multi" } else { "single" }));
     }
-    w.push(if c & ctl::BASE_MS != 0 { "1 ms time base" } else { "1 µs time base" });
+    w.push(bit(if c & ctl::BASE_MS != 0 { "base-ms" } else { "base-us" }));
     if c & ctl::UPDATE_CYCLE != 0 {
-        w.push("update cycle");
+        w.push(bit("cycle"));
     }
     if c & ctl::UPDATE_WIDTH != 0 {
-        w.push("update width");
+        w.push(bit("width"));
     }
     if c & ctl::UPDATE_COUNT != 0 {
-        w.push("update count");
+        w.push(bit("count"));
     }
     w
 }
 
 /// Meanings of a PTO status byte (§3.4.2.2).
-pub fn decode_status(s: u8) -> Vec<&'static str> {
-    let mut w = vec![if s & 0x80 != 0 { "PTO idle" } else { "PTO busy" }];
-    w.push(if s & 0x08 != 0 { "PWM idle" } else { "PWM running" });
+pub fn decode_status(s: u8) -> Vec<String> {
+    let bit = |b: &str| msg!("k2-pto-status-bit", bit = b).text;
+    let mut w = vec![bit(if s & 0x80 != 0 { "pto-idle" } else { "pto-busy" })];
+    w.push(bit(if s & 0x08 != 0 { "pwm-idle" } else { "pwm-running" }));
     if s & 0x10 != 0 {
-        w.push("cycle or count invalid");
+        w.push(bit("invalid"));
     }
     if s & 0x20 != 0 {
-        w.push("aborted by user command");
+        w.push(bit("aborted"));
     }
     w
 }
@@ -351,14 +337,14 @@ pub fn status(dev: &mut dyn Device, model: &Model, ch: u8) -> Result<(Vec<Writte
     let st = vals[0].value.as_i64() as u8;
     let c = vals[1].value.as_i64() as u8;
     let pc = vals[6].value.as_i64() as u8;
-    let mut words: Vec<String> = decode_status(st).into_iter().map(String::from).collect();
-    words.push(format!("control: {}", decode_control(c).join(", ")));
-    words.push(format!("position {} pulses", vals[5].value.as_i64()));
+    let mut words: Vec<String> = decode_status(st);
+    words.push(msg!("k2-pto-status-control", words = decode_control(c).join(", ")).into());
+    words.push(msg!("k2-pto-status-position", pulses = vals[5].value.as_i64()).into());
     if pc & 0x80 != 0 {
-        words.push(format!("emergency stop latched (SM{}.7)", r.pos_control));
+        words.push(msg!("k2-pto-status-estop", byte = r.pos_control).into());
     }
     if pc & 0x08 != 0 {
-        words.push(format!("direction output disabled (SM{}.3)", r.pos_control));
+        words.push(msg!("k2-pto-status-dir-off", byte = r.pos_control).into());
     }
     Ok((vals, words))
 }
@@ -372,9 +358,9 @@ pub fn busy(dev: &mut dyn Device, model: &Model, ch: u8) -> Result<Option<String
     let vals = read_ops(dev, &ops)?;
     let st = vals[0].value.as_i64() as u8;
     Ok(if st & 0x80 == 0 {
-        Some(format!("PTO{ch} is still sending a pulse train (SM{}.7 PTO idle = 0)", r.status))
+        Some(msg!("k2-pto-busy", channel = ch, byte = r.status).into())
     } else if st & 0x08 == 0 {
-        Some(format!("PWM{ch} is running (SM{}.3 PWM idle = 0)", r.status))
+        Some(msg!("k2-pwm-busy", channel = ch, byte = r.status).into())
     } else {
         None
     })

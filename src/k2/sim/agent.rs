@@ -14,11 +14,13 @@ impl K2Sim {
     pub fn enable_agent(&mut self, base: u32) -> Result<(), String> {
         let end = base + crate::k2::agent::il::TOTAL_SIZE;
         if !base.is_multiple_of(2) || end > self.mem.v.len() as u32 {
-            return Err(format!(
-                "the helper's mailbox needs an even V address with {} bytes free up to VB{} (got VB{base})",
-                crate::k2::agent::il::TOTAL_SIZE,
-                self.mem.v.len() - 1
-            ));
+            return Err(crate::msg!(
+                "k2-helper-mailbox-address",
+                size = crate::k2::agent::il::TOTAL_SIZE,
+                top = self.mem.v.len() - 1,
+                base = base
+            )
+            .into());
         }
         let text = crate::k2::agent::il::program(self.model(), base);
         self.load_helper(&text, "k2_agent.il").map_err(|e| e.to_string())?;

@@ -18,13 +18,14 @@ use super::fault::{self, USAGE};
 use super::K2Sim;
 use crate::core::{Error, Result};
 use crate::k2::instr::EventKind;
+use crate::msg;
 use serde_json::{json, Value as Json};
 
 /// The control words, for messages.
 pub const WORDS: &str = "fault KIND … | fault clear [ID|all] | faults | events | state";
 
 fn usage(msg: impl Into<crate::core::error::Text>) -> Error {
-    Error::usage(msg).hint(format!("control words: {WORDS}; faults: {USAGE}"))
+    Error::usage(msg).hint(msg!("k2-control-words-hint", words = WORDS, usage = USAGE))
 }
 
 /// Applies one control line to `sim` at its current virtual time: the text for people and
@@ -39,15 +40,15 @@ pub fn answer(sim: &mut K2Sim, text: &str, served: bool) -> Result<(String, Json
     match word.to_ascii_lowercase().as_str() {
         "faults" => {
             if !rest.is_empty() {
-                return Err(usage(format!("`faults` takes nothing after it (got `{rest}`)")));
+                return Err(usage(msg!("sim-word-takes-nothing", word = "faults", rest = rest)));
             }
             let list: Vec<String> = sim.faults.list.iter().map(|f| f.describe()).collect();
-            let text = if list.is_empty() { "no injected faults".into() } else { list.join("\n") };
+            let text = if list.is_empty() { msg!("sim-no-faults").into() } else { list.join("\n") };
             Ok((text, json!({"faults": sim.faults.list, "time_us": now_us})))
         }
         "events" => {
             if !rest.is_empty() {
-                return Err(usage(format!("`events` takes nothing after it (got `{rest}`)")));
+                return Err(usage(msg!("sim-word-takes-nothing", word = "events", rest = rest)));
             }
             let acted: Vec<Json> = sim
                 .events
@@ -63,19 +64,20 @@ pub fn answer(sim: &mut K2Sim, text: &str, served: bool) -> Result<(String, Json
                 })
                 .collect();
             let text = if acted.is_empty() {
-                "no injected fault has acted".to_string()
+                msg!("sim-no-fault-acted").into()
             } else {
                 acted
                     .iter()
                     .map(|a| {
-                        format!(
-                            "{:.6} s: fault {} ({}) acted",
-                            a["time_us"].as_u64().unwrap_or(0) as f64 / 1e6,
-                            a["id"],
-                            a["fault"].as_str().unwrap_or("")
+                        msg!(
+                            "sim-fault-acted",
+                            seconds = format!("{:.6}", a["time_us"].as_u64().unwrap_or(0) as f64 / 1e6),
+                            id = a["id"].to_string(),
+                            name = a["fault"].as_str().unwrap_or("")
                         )
+                        .into()
                     })
-                    .collect::<Vec<_>>()
+                    .collect::<Vec<String>>()
                     .join("\n")
             };
             Ok((text, json!({"events": acted, "time_us": now_us})))
@@ -84,13 +86,13 @@ pub fn answer(sim: &mut K2Sim, text: &str, served: bool) -> Result<(String, Json
             if let Some(arg) = rest.strip_prefix("clear").filter(|a| a.is_empty() || a.starts_with(' ')) {
                 let id = match arg.trim() {
                     "" | "all" => None,
-                    n => Some(n.parse::<u32>().map_err(|_| usage(format!("`{n}` is not a fault id")))?),
+                    n => Some(n.parse::<u32>().map_err(|_| usage(msg!("sim-not-fault-id", text = n)))?),
                 };
                 let n = sim.clear_faults(id);
                 if let (Some(id), 0) = (id, n) {
-                    return Err(Error::usage(format!("there is no fault {id}")).hint("`faults` lists them"));
+                    return Err(Error::usage(msg!("sim-no-such-fault", id = id)).hint(msg!("sim-no-such-fault-hint")));
                 }
-                return Ok((format!("cleared {n} fault(s)"), json!({"cleared": n, "time_us": now_us})));
+                return Ok((msg!("sim-faults-cleared", n = n).into(), json!({"cleared": n, "time_us": now_us})));
             }
             let spec = fault::parse(rest).map_err(usage)?;
             let now = sim.last;
@@ -98,7 +100,8 @@ pub fn answer(sim: &mut K2Sim, text: &str, served: bool) -> Result<(String, Json
             let f = sim.faults.list.last().expect("just added");
             let mut text = f.describe();
             if !served && !f.kind.in_process() {
-                text.push_str(" (acts when the simulator is served: sim serve --fault …, or its control channel)");
+                text.push(' ');
+                text.push_str(&msg!("k2-control-acts-when-served"));
             }
             Ok((text, json!({"id": id, "fault": f, "time_us": now_us})))
         }
@@ -106,13 +109,13 @@ pub fn answer(sim: &mut K2Sim, text: &str, served: bool) -> Result<(String, Json
             // The whole simulated state, as a snapshot holds it: a client's tests compare it
             // before and after a command that must change nothing (`plcsh probe`, `agent check`).
             if !rest.is_empty() {
-                return Err(usage(format!("`state` takes nothing after it (got `{rest}`)")));
+                return Err(usage(msg!("sim-word-takes-nothing", word = "state", rest = rest)));
             }
             let state = serde_json::to_value(sim.snapshot_state()).unwrap_or_default();
             Ok((state.to_string(), json!({"state": state, "time_us": now_us})))
         }
-        "" => Err(usage("an empty control line")),
-        other => Err(usage(format!("`{other}` is not a control word of a simulated K2"))),
+        "" => Err(usage(msg!("k2-control-empty"))),
+        other => Err(usage(msg!("k2-control-unknown-word", word = other))),
     }
 }
 

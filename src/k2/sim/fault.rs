@@ -35,6 +35,7 @@
 use super::inputs::{pin_name, Pin};
 use crate::core::literal::parse_option_duration_us;
 use crate::k2::operand::{parse_expr, Area};
+use crate::msg;
 use std::time::Duration;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
@@ -249,7 +250,7 @@ pub struct Spec {
 
 fn dur(v: &str, key: &str) -> Result<Duration, String> {
     let us = parse_option_duration_us(v).map_err(|m| format!("{key}={v}: {m}"))?;
-    u64::try_from(us).map(Duration::from_micros).map_err(|_| format!("{key}={v}: must not be negative"))
+    u64::try_from(us).map(Duration::from_micros).map_err(|_| msg!("k2-fault-negative", key = key, value = v).into())
 }
 
 fn input_pin(text: &str) -> Result<Pin, String> {
@@ -257,7 +258,7 @@ fn input_pin(text: &str) -> Result<Pin, String> {
     t.strip_prefix('I')
         .and_then(|b| b.split_once('.'))
         .and_then(|(b, bit)| Some((b.parse().ok()?, bit.parse().ok().filter(|x: &u8| *x < 8)?)))
-        .ok_or_else(|| format!("`{text}` is not an input bit (e.g. I0.1)"))
+        .ok_or_else(|| msg!("k2-fault-not-input", text = text).into())
 }
 
 /// The grammar, for messages.
@@ -268,10 +269,11 @@ pub const USAGE: &str = "sim fault no-reply|exception CODE|late DURATION|bad-crc
 pub fn parse(text: &str) -> Result<Spec, String> {
     let words: Vec<&str> = text.split_whitespace().collect();
     let Some((&kind_word, mut rest)) = words.split_first() else {
-        return Err(format!("which fault? {USAGE}"));
+        return Err(msg!("k2-fault-which", usage = USAGE).into());
     };
-    let mut take = |what: &str| -> Result<&str, String> {
-        let (w, r) = rest.split_first().ok_or_else(|| format!("`{kind_word}` needs {what}"))?;
+    // `needs`: the message when the word is missing.
+    let mut take = |needs: &dyn Fn() -> String| -> Result<&str, String> {
+        let (w, r) = rest.split_first().ok_or_else(needs)?;
         rest = r;
         Ok(w)
     };
@@ -281,60 +283,62 @@ pub fn parse(text: &str) -> Result<Spec, String> {
         "drop" => FaultKind::Drop,
         "power-loss" => FaultKind::PowerLoss,
         "exception" => {
-            let c = take("a code (1…255, e.g. 2 for illegal data address)")?;
+            let c = take(&|| msg!("k2-fault-needs-code", kind = kind_word).into())?;
             let code = c
                 .trim_start_matches("16#")
                 .parse::<u8>()
                 .ok()
                 .filter(|c| *c > 0)
-                .ok_or_else(|| format!("`{c}` is not a Modbus exception code (1…255)"))?;
+                .ok_or_else(|| msg!("k2-fault-not-code", code = c).text)?;
             FaultKind::Exception { code }
         }
         // `delay` is the drive line's word for it: one vocabulary for faults.
         "late" | "delay" => {
-            let d = dur(take("a delay (e.g. late 300ms)")?, "late")?;
+            let d = dur(take(&|| msg!("k2-fault-needs-delay", kind = kind_word).into())?, "late")?;
+
             FaultKind::Late { ms: d.as_millis() as u64 }
         }
         "stuck" => {
-            let w = take("an input and level (stuck I0.1=1)")?;
-            let (p, v) = w.split_once('=').ok_or_else(|| format!("`{w}`: write stuck I0.1=1 or stuck I0.1=0"))?;
+            let w = take(&|| msg!("k2-fault-needs-input-level", kind = kind_word).into())?;
+            let (p, v) = w.split_once('=').ok_or_else(|| msg!("k2-fault-stuck-shape", word = w).text)?;
             let (byte, bit) = input_pin(p)?;
             let on = match v {
                 "1" | "on" | "true" => true,
                 "0" | "off" | "false" => false,
-                _ => return Err(format!("`{v}` is not a level (0 or 1)")),
+                _ => return Err(msg!("k2-fault-not-level", value = v).into()),
             };
             FaultKind::Stuck { byte, bit, on }
         }
         "noisy" => {
-            let (byte, bit) = input_pin(take("an input (noisy I0.1 freq=5kHz)")?)?;
+            let (byte, bit) = input_pin(take(&|| msg!("k2-fault-needs-input", kind = kind_word).into())?)?;
             FaultKind::Noisy { byte, bit, hz: 0 }
         }
-        other => return Err(format!("`{other}` is not a fault kind; {USAGE}")),
+        other => return Err(msg!("k2-fault-not-kind", kind = other, usage = USAGE).into()),
     };
     let mut spec = Spec { kind, range: None, at: None, after: None, duration: None, times: None };
     let mut it = rest.iter();
     while let Some(&w) = it.next() {
         if w.eq_ignore_ascii_case("on") {
-            let ops_text = it.next().ok_or("`on` needs operands, e.g. on VW100..VW110")?;
+            let ops_text = it.next().ok_or_else(|| msg!("k2-fault-on-needs-operands").text)?;
             let ops = parse_expr(ops_text).map_err(|e| e.message.clone())?;
             let area = ops[0].area;
             if ops.iter().any(|o| o.area != area) {
-                return Err(format!("`{ops_text}` spans areas: give one area's range"));
+                return Err(msg!("k2-fault-spans-areas", operands = *ops_text).into());
             }
             let first = ops.iter().map(|o| o.byte).min().unwrap_or(0);
             let last = ops.iter().map(|o| o.byte + o.width.bytes().max(1) - 1).max().unwrap_or(0);
             spec.range = Some((area, first, last));
             continue;
         }
-        let (k, v) = w.split_once('=').ok_or_else(|| format!("`{w}` is not an option; {USAGE}"))?;
+        let (k, v) = w.split_once('=').ok_or_else(|| msg!("k2-fault-not-option", word = w, usage = USAGE).text)?;
         match k {
             "at" => spec.at = Some(dur(v, k)?),
             "after" => spec.after = Some(dur(v, k)?),
             "for" => spec.duration = Some(dur(v, k)?),
             // `count=` is the drive line's word for it.
             "times" | "count" => {
-                spec.times = Some(v.parse().ok().filter(|n| *n > 0).ok_or(format!("times={v}: a count from 1"))?)
+                spec.times =
+                    Some(v.parse().ok().filter(|n| *n > 0).ok_or_else(|| msg!("k2-fault-times", value = v).text)?)
             }
             "freq" => match &mut spec.kind {
                 FaultKind::Noisy { hz, .. } => {
@@ -344,28 +348,29 @@ pub fn parse(text: &str) -> Result<Spec, String> {
                     }
                     *hz = f as u64;
                 }
-                _ => return Err("freq= is for noisy inputs".into()),
+                _ => return Err(msg!("k2-fault-freq-noisy-only").into()),
             },
-            _ => return Err(format!("unknown option `{k}=`; {USAGE}")),
+            _ => return Err(msg!("k2-fault-unknown-option", key = k, usage = USAGE).into()),
         }
     }
     if let FaultKind::Noisy { hz: 0, .. } = spec.kind {
-        return Err("a noisy input needs freq= (how many random levels per second), e.g. freq=5kHz".into());
+        return Err(msg!("k2-fault-noisy-needs-freq").into());
     }
     if spec.at.is_some() && spec.after.is_some() {
-        return Err("give at= or after=, not both".into());
+        return Err(msg!("k2-fault-at-or-after").into());
     }
     if spec.kind == FaultKind::PowerLoss {
         if spec.duration.is_none() {
-            return Err("a power loss needs its length: power-loss for=5s (the PLC is back after it)".into());
+            return Err(msg!("k2-fault-power-loss-needs-for").into());
         }
         if spec.range.is_some() || spec.times.is_some() {
-            return Err("a power loss takes at=, after= and for= (it acts on the whole PLC)".into());
+            return Err(msg!("k2-fault-power-loss-options").into());
         }
     }
     if spec.range.is_some() && !spec.kind.is_request() {
-        return Err(format!("`on` is for request faults; {} names its input", spec.kind.name()));
+        return Err(msg!("k2-fault-on-request-only", kind = spec.kind.name()).into());
     }
+
     Ok(spec)
 }
 

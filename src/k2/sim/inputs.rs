@@ -193,14 +193,17 @@ impl Source {
 
     pub fn describe(&self) -> String {
         match *self {
-            Source::Freq { pin, wave } => format!("{} square wave {}", pin_name(pin), show_hz(wave.hz)),
+            Source::Freq { pin, wave } => {
+                crate::msg!("k2-source-square", pin = pin_name(pin), freq = show_hz(wave.hz)).into()
+            }
             Source::Quad { lead, lag, wave } => {
-                format!("A/B quadrature {} leads {} at {}", pin_name(lead), pin_name(lag), show_hz(wave.hz))
+                crate::msg!("k2-source-quadrature", lead = pin_name(lead), lag = pin_name(lag), freq = show_hz(wave.hz))
+                    .into()
             }
             Source::Train { pin, train } => {
-                format!("{} pulse train, {} pulses of {} ns", pin_name(pin), train.count, train.cycle_ns)
+                crate::msg!("k2-source-train", pin = pin_name(pin), pulses = train.count, cycle = train.cycle_ns).into()
             }
-            Source::Encoder { a, b, .. } => format!("encoder A on {}, B on {}", pin_name(a), pin_name(b)),
+            Source::Encoder { a, b, .. } => crate::msg!("k2-source-encoder", a = pin_name(a), b = pin_name(b)).into(),
         }
     }
 }

@@ -35,6 +35,7 @@ use crate::k2::memory::Memory;
 use crate::k2::operand::{Area, K2Operand, Width};
 use crate::k2::sm_map::{HSC_REGS, PTO_REGS};
 use crate::k2::space::K2Space;
+use crate::msg;
 use events::EventLog;
 use hsc::HscChannel;
 use inputs::{Inputs, Pin, Source};
@@ -333,14 +334,14 @@ impl K2Sim {
                     if bit_hit {
                         return Err(Error::new(
                             ErrorKind::State,
-                            format!("{} is driven by a simulated signal ({})", inputs::pin_name(p), s.describe()),
+                            msg!("k2-input-driven", pin = inputs::pin_name(p), source = s.describe()),
                         )
                         .operand(op.canonical())
                         .hint(match s {
                             Source::Train { .. } | Source::Encoder { .. } => {
-                                format!("a wire drives it: sim unwire plc:{}", inputs::pin_name(p))
+                                msg!("k2-input-driven-by-wire-hint", pin = inputs::pin_name(p))
                             }
-                            _ => format!("stop it first: sim input {} off", inputs::pin_name(p)),
+                            _ => msg!("k2-input-driven-hint", pin = inputs::pin_name(p)),
                         }));
                     }
                 }
@@ -421,13 +422,15 @@ impl K2Sim {
             }
             let quad = m.kind == crate::k2::sm_map::HscKind::Quadrature;
             let max = if quad { h.spec.max_hz_ab } else { h.spec.max_hz_single } as u64;
-            msg.push_str(&format!("; counted by HSC{} (mode {})", h.regs.channel, m.mode));
+            msg.push_str("; ");
+            msg.push_str(&msg!("k2-input-counted-by", n = h.regs.channel, mode = m.mode));
             if s.hz() > max {
-                msg.push_str(&format!(
-                    "; warning: above HSC{}'s {} Hz limit on {} (§3.3): a real PLC would miss counts",
-                    h.regs.channel,
-                    max,
-                    self.model().name
+                msg.push_str("; ");
+                msg.push_str(&msg!(
+                    "k2-input-above-hsc-limit",
+                    n = h.regs.channel,
+                    max = max,
+                    model = self.model().name
                 ));
             }
         }
@@ -439,8 +442,7 @@ impl K2Sim {
         self.check_input(pin)?;
         self.advance();
         self.inputs.remove(pin).ok_or_else(|| {
-            Error::usage(format!("no simulated signal drives {}", inputs::pin_name(pin)))
-                .hint("`sim inputs` lists the sources")
+            Error::usage(msg!("k2-input-no-source", pin = inputs::pin_name(pin))).hint(msg!("k2-input-no-source-hint"))
         })
     }
 
@@ -487,8 +489,7 @@ impl K2Sim {
                 let ops = self.space.parse_k2(part)?;
                 let area = ops[0].area;
                 if !matches!(area, Area::V | Area::M | Area::C) {
-                    return Err(Error::usage(format!("{part}: only V, M and C ranges can be retained"))
-                        .hint("e.g. sim retain VB0..VB99 MB0[16] C0..C15"));
+                    return Err(Error::usage(msg!("k2-retain-area", part = part)).hint(msg!("k2-retain-area-hint")));
                 }
                 let first = ops.iter().map(|o| o.byte).min().unwrap_or(0);
                 let end =
@@ -499,11 +500,13 @@ impl K2Sim {
         let bytes: u32 = ranges.iter().map(|r| if r.area == Area::C { 2 * r.len } else { r.len }).sum();
         let room = self.model().retentive_bytes;
         if bytes > room {
-            return Err(Error::usage(format!(
-                "{bytes} retained bytes asked for; {} retains at most {room} (manual §2.1.2)",
-                self.model().name
+            return Err(Error::usage(msg!(
+                "k2-retain-too-much",
+                bytes = bytes,
+                model = self.model().name,
+                room = room
             ))
-            .hint("retain fewer or shorter ranges (a counter takes 2 bytes)"));
+            .hint(msg!("k2-retain-too-much-hint")));
         }
         self.backup.retain = ranges;
         // The configuration is kept like the data it protects.
@@ -611,7 +614,7 @@ fn unix_now() -> i64 {
 impl Drop for K2Sim {
     fn drop(&mut self) {
         if let Err(e) = self.save_state() {
-            eprintln!("plcsh: the simulator state was not saved: {e}");
+            eprintln!("plcsh: {}", msg!("k2-state-not-saved", error = e.to_string()));
         }
     }
 }
@@ -635,17 +638,19 @@ impl K2Sim {
         Err(match kind {
             fault::FaultKind::Exception { code } => Error::new(
                 ErrorKind::Refused,
-                format!(
-                    "the PLC refused the request: Modbus exception {code:02X} {} (injected fault {id})",
-                    crate::k2::modbus_map::exception_name(code)
+                msg!(
+                    "k2-fault-exception",
+                    code = format!("{code:02X}"),
+                    name = crate::k2::modbus_map::exception_name(code),
+                    id = id
                 ),
             ),
             fault::FaultKind::PowerLoss => {
-                Error::link(format!("no reply from the PLC: it has no power (injected fault {id})"))
-                    .hint("sim faults shows when power returns; sim fault clear restores it now")
+                Error::link(msg!("k2-fault-no-power", id = id)).hint(msg!("k2-fault-no-power-hint"))
             }
-            _ => Error::link(format!("no reply from the PLC (injected fault {id}: {})", kind.name()))
-                .hint("sim faults lists the injected faults; sim fault clear removes them"),
+            _ => {
+                Error::link(msg!("k2-fault-no-reply", id = id, name = kind.name())).hint(msg!("k2-fault-no-reply-hint"))
+            }
         })
     }
 }
@@ -744,17 +749,18 @@ impl Device for K2Sim {
             "state" => self.attach_state(PathBuf::from(value)),
             "backup_last" => {
                 let n: u32 = value.trim().trim_start_matches(['V', 'B', 'v', 'b']).parse().map_err(|_| {
-                    Error::usage(format!("backup_last={value} is not a V byte address")).hint("e.g. backup_last=4095")
+                    Error::usage(msg!("k2-option-backup-last", value = value)).hint("e.g. backup_last=4095")
                 })?;
                 self.backup.set_last(n)
             }
             "retain" => self.set_retain(value),
             "program" => {
-                let text = crate::core::encoding::read_source(value)
-                    .map_err(|e| Error::io(format!("cannot read the program {value}: {e}")))?;
+                let text = crate::core::encoding::read_source(value).map_err(|e| {
+                    Error::io(msg!("k2-option-program-unreadable", file = value, error = e.to_string()))
+                })?;
                 self.load_program(&text, value).map(|_| ())
             }
-            _ => Err(Error::usage(format!("K2 simulators have no option `{key}`"))
+            _ => Err(Error::usage(msg!("k2-option-unknown", key = key))
                 .hint("options: state=FILE, backup_last=3902…4095, retain=RANGES, program=FILE.il")),
         }
     }
@@ -781,11 +787,9 @@ pub fn sm_read_only(m: &Model, op: &K2Operand) -> Option<Error> {
 /// In process and through the helper (`k2::driver`) alike.
 pub fn check_pulse_channel(m: &Model) -> Result<()> {
     if m.relay {
-        return Err(Error::unsupported(format!(
-            "{} has relay outputs: no PTO/PWM pulse outputs (manual §2.2.6)",
-            m.name
-        ))
-        .hint("pulse outputs need a transistor-output model, e.g. K205-16DT"));
+        return Err(
+            Error::unsupported(msg!("k2-sim-relay-model", model = m.name)).hint(msg!("k2-pto-relay-model-hint"))
+        );
     }
     Ok(())
 }
@@ -796,21 +800,21 @@ pub fn no_pulse_channel(m: &Model, ch: u8) -> Error {
         return e;
     }
     let list: Vec<String> = m.pto.iter().map(|p| format!("{} ({})", p.channel, p.output)).collect();
-    let extra = if ch == 3 { " (Q0.5 is a pulse output only on K209M-56DT)" } else { "" };
-    Error::unsupported(format!("{} has no pulse channel {ch}{extra}", m.name)).hint(format!(
-        "pulse channels on {}: {}",
-        m.name,
-        list.join(", ")
-    ))
+    let m2 = if ch == 3 {
+        msg!("k2-sim-no-pulse-channel-q05", model = m.name, channel = ch)
+    } else {
+        msg!("k2-pto-no-channel", model = m.name, channel = ch)
+    };
+    Error::unsupported(m2).hint(msg!("k2-sim-pulse-channels-hint", model = m.name, list = list.join(", ")))
 }
 
 /// High-speed counter `ch` is not among the model's (§3.3.1 tables).
 pub fn no_counter(m: &Model, ch: u8) -> Error {
     let list: Vec<String> = m.hsc.iter().map(|h| format!("HSC{}", h.channel)).collect();
-    Error::unsupported(format!("{} has no high-speed counter HSC{ch}", m.name)).hint(format!(
-        "counters on {}: {}",
-        m.name,
-        list.join(", ")
+    Error::unsupported(msg!("k2-hsc-no-counter", model = m.name, n = ch)).hint(msg!(
+        "k2-hsc-no-counter-hint",
+        model = m.name,
+        list = list.join(", ")
     ))
 }
 
@@ -826,14 +830,18 @@ pub fn did_nothing_hint(
         .iter()
         .filter(|(_, _, c)| c & pto::ctl::ENABLE != 0)
         .map(|(o, spec, c)| {
-            format!(
-                "SMB{} = 16#{:02X} is set: that is PTO{}'s control byte ({}) — did you mean PLS {}?",
-                o.control, c, o.channel, spec.output, o.channel
+            msg!(
+                "k2-pls-other-channel-hint",
+                control = o.control,
+                value = format!("{c:02X}"),
+                channel = o.channel,
+                output = spec.output
             )
+            .into()
         })
         .collect();
     if enabled.is_empty() {
-        format!("set the control byte first, e.g. set SMB{}=16#85, SMW{}=500, SMD{}=1000", r.control, r.cycle, r.count)
+        msg!("k2-pls-set-control-hint", control = r.control, cycle = r.cycle, count = r.count).into()
     } else {
         enabled.join("; ")
     }
@@ -883,12 +891,13 @@ impl crate::k2::K2Ops for K2Sim {
         let what = p.pstop(&mut self.mem);
         let r = p.regs;
         self.wired_outputs();
-        Ok(format!(
-            "PSTOP {channel}: {}; emergency-stop latch SM{}.7 = 1 (clear it with set SM{}.7=0)",
-            if what.is_empty() { "nothing was running".to_string() } else { format!("{what} stopped") },
-            r.pos_control,
-            r.pos_control
-        ))
+        Ok(msg!(
+            "k2-pstop",
+            channel = channel,
+            what = if what.is_empty() { "none" } else { what },
+            byte = r.pos_control
+        )
+        .into())
     }
 
     fn read_rtc(&mut self) -> Result<RtcTime> {

@@ -92,7 +92,7 @@ async fn accept_loop(listener: TcpListener, service: K2Service, limits: Limits, 
             Err(e) => {
                 // EMFILE, ENFILE, ENOBUFS, ECONNABORTED …: the server stays up.
                 if !warned {
-                    eprintln!("plcsh sim serve: cannot accept a connection now ({e}); retrying");
+                    eprintln!("plcsh sim serve: {}", crate::msg!("k2-serve-accept-retry", error = e.to_string()));
                     warned = true;
                 }
                 tokio::time::sleep(Duration::from_millis(50)).await;
@@ -241,7 +241,10 @@ where
         let frames = match read {
             Err(_) if !rx.pending() => return Ok(()),
             Err(_) => rx.silence(),
-            Ok(Ok(0)) => return Err(io::Error::new(io::ErrorKind::UnexpectedEof, "the stream closed")),
+            Ok(Ok(0)) => {
+                return Err(io::Error::new(io::ErrorKind::UnexpectedEof, crate::msg!("k2-serve-stream-closed").text))
+            }
+
             Ok(Ok(n)) => rx.bytes(&chunk[..n]),
             Ok(Err(e)) => return Err(e),
         };

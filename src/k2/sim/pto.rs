@@ -37,6 +37,7 @@ use crate::k2::catalog::PtoSpec;
 use crate::k2::instr::EventKind;
 use crate::k2::memory::Memory;
 use crate::k2::sm_map::PtoRegs;
+use crate::msg;
 use serde::{Deserialize, Serialize};
 use std::time::Duration;
 
@@ -292,7 +293,7 @@ pub struct Invalid {
 impl Invalid {
     /// The refusal as the user reads it, in process and through the helper alike.
     pub fn error(self, r: &PtoRegs) -> Error {
-        Error::new(ErrorKind::Refused, format!("PLS {}: {}; status bit SM{}.4 set", r.channel, self.msg, r.status))
+        Error::new(ErrorKind::Refused, msg!("k2-pls-refused", channel = r.channel, reason = self.msg, byte = r.status))
             .operand(self.operand)
             .hint(self.hint)
     }
@@ -310,36 +311,40 @@ pub fn invalid(r: &PtoRegs, spec: &PtoSpec, c: u8, cycle: u16, count: u32) -> Op
     if c & ctl::PWM != 0 {
         if cycle < 2 {
             return Some(Invalid {
-                msg: format!("PWM cycle time {cycle} is below 2"),
+                msg: msg!("k2-pls-pwm-cycle-below-two", cycle = cycle).into(),
                 operand: format!("SMW{}", r.cycle),
-                hint: format!("set SMW{} (2…65535) and the update bit SM{}.0, then PLS again", r.cycle, r.control),
+                hint: msg!("k2-pls-pwm-cycle-below-two-hint", register = r.cycle, control = r.control).into(),
             });
         }
     } else if cycle < 2 || count < 2 {
-        let (what, operand, reg) = if cycle < 2 {
-            (format!("cycle time {cycle}"), format!("SMW{}", r.cycle), format!("SMW{} with SM{}.0", r.cycle, r.control))
+        // The rule as the manual states it (§3.4.2.2; `sm_map::PTO_INVALID_RULE` in English).
+        let (m, operand, h) = if cycle < 2 {
+            (
+                msg!("k2-pls-cycle-below-two", cycle = cycle),
+                format!("SMW{}", r.cycle),
+                msg!("k2-pls-cycle-below-two-hint", register = r.cycle, control = r.control),
+            )
         } else {
             (
-                format!("pulse count {count}"),
+                msg!("k2-pls-count-below-two", count = count),
                 format!("SMD{}", r.count),
-                format!("SMD{} with SM{}.2", r.count, r.control),
+                msg!("k2-pls-count-below-two-hint", register = r.count, control = r.control),
             )
         };
-        return Some(Invalid {
-            msg: format!("{what} is below 2 ({})", crate::k2::sm_map::PTO_INVALID_RULE),
-            operand,
-            hint: format!("load {reg} set (e.g. SMB{}=16#85), then PLS again", r.control),
-        });
+        return Some(Invalid { msg: m.into(), operand, hint: h.into() });
     }
-    too_fast(r, spec, cycle as u64 * base_ns, format!("cycle {cycle} {unit}"))
+    too_fast(r, spec, cycle as u64 * base_ns, msg!("k2-pls-what-cycle", cycle = cycle, unit = unit).into())
 }
 
 /// PLS on a channel whose control byte `c` has the enable bit clear while it is idle: nothing
 /// to stop, nothing started (§3.4.2.2, bit 7). The helper reads the same byte back.
 pub fn did_nothing(r: &PtoRegs, spec: &PtoSpec, c: u8) -> Error {
-    Error::state(format!(
-        "PLS {} did nothing: the control byte SMB{} = 16#{c:02X} has the enable bit SM{}.7 clear and PTO{} ({}) is idle",
-        r.channel, r.control, r.control, r.channel, spec.output
+    Error::state(msg!(
+        "k2-pls-did-nothing",
+        channel = r.channel,
+        control = r.control,
+        value = format!("{c:02X}"),
+        output = spec.output
     ))
     .operand(format!("SMB{}", r.control))
 }
@@ -350,14 +355,10 @@ fn too_fast(r: &PtoRegs, spec: &PtoSpec, cycle_ns: u64, what: String) -> Option<
     if cycle_ns * max < 1_000_000_000 {
         let min_us = 1_000_000u64.div_ceil(max);
         return Some(Invalid {
-            msg: format!(
-                "{what} is {} Hz, above {}'s limit of {} Hz on this model (manual §3.4)",
-                1_000_000_000 / cycle_ns,
-                spec.output,
-                max
-            ),
+            msg: msg!("k2-pls-too-fast", what = what, hz = 1_000_000_000 / cycle_ns, output = spec.output, max = max)
+                .into(),
             operand: format!("SMW{}", r.cycle),
-            hint: format!("the shortest cycle on {} is {min_us} µs", spec.output),
+            hint: msg!("k2-pto-freq-too-high-hint", output = spec.output, shortest = min_us).into(),
         });
     }
     None
@@ -575,7 +576,7 @@ impl PtoChannel {
             if what.is_empty() {
                 return Err(did_nothing(&r, &self.spec, c));
             }
-            return Ok(format!("{} stopped ({what}; enable bit SM{}.7 is 0)", self.name(), r.control));
+            return Ok(msg!("k2-pls-stopped", name = self.name(), what = what, control = r.control).into());
         }
         let base_ns: u64 = if c & ctl::BASE_MS != 0 { 1_000_000 } else { 1_000 };
         let unit = if c & ctl::BASE_MS != 0 { "ms" } else { "µs" };
@@ -608,13 +609,16 @@ impl PtoChannel {
                 mem.set_sm_bit(r.status, b, v);
             }
             let duty = new.width_ns as f64 * 100.0 / cycle_ns as f64;
-            return Ok(format!(
-                "{}: PWM cycle {} {unit}, width {} {unit} ({duty:.1} %){}",
-                self.name(),
-                self.cycle,
-                self.width.min(self.cycle),
-                if sync { ", synchronous update" } else { "" }
-            ));
+            return Ok(msg!(
+                "k2-pls-pwm-started",
+                name = self.name(),
+                cycle = self.cycle,
+                width = self.width.min(self.cycle),
+                unit = unit,
+                duty = format!("{duty:.1}"),
+                update = if sync { "sync" } else { "async" }
+            )
+            .into());
         }
         let segs: Vec<(u64, u64)> = if c & ctl::MULTI != 0 {
             self.profile_segments(mem, base_ns, unit)?
@@ -625,14 +629,14 @@ impl PtoChannel {
             vec![(self.cycle as u64 * base_ns, self.count as u64)]
         };
         let train = PtoRun::new(now, &segs);
-        let msg = format!(
-            "{}: {} pulses in {} segment{}, {:.6} s",
-            self.name(),
-            train.total,
-            segs.len(),
-            if segs.len() == 1 { "" } else { "s" },
-            train.duration().as_secs_f64()
-        );
+        let msg: String = msg!(
+            "k2-pls-pto-started",
+            name = self.name(),
+            pulses = train.total,
+            segments = segs.len(),
+            seconds = format!("{:.6}", train.duration().as_secs_f64())
+        )
+        .into();
         self.run = Run::Pto(train);
         self.counted = 0;
         self.reverse = None;
@@ -651,35 +655,35 @@ impl PtoChannel {
         if start.is_multiple_of(2) {
             return Err(self.refuse_parts(
                 mem,
-                format!("the profile table start SMW{} = {start} is even", r.profile),
+                msg!("k2-pls-table-even", register = r.profile, start = start).into(),
                 tab,
-                format!("the table must start at an odd V address, e.g. SMW{}=3001 for VB3001 (§3.4.2.1)", r.profile),
+                msg!("k2-pls-table-even-hint", register = r.profile).into(),
             ));
         }
         if start >= v_len {
             return Err(self.refuse_parts(
                 mem,
-                format!("the profile table start VB{start} is past the V area (VB{})", v_len - 1),
+                msg!("k2-pls-table-past-v", start = start, top = v_len - 1).into(),
                 tab,
-                "point it at an odd address inside V".into(),
+                msg!("k2-pls-table-past-v-hint").into(),
             ));
         }
         let n = mem.v[start as usize];
         if n == 0 || n > MAX_SEGMENTS {
             return Err(self.refuse_parts(
                 mem,
-                format!("the profile table at VB{start} holds {n} segments (1–{MAX_SEGMENTS} allowed)"),
+                msg!("k2-pls-table-segments", start = start, n = n, max = MAX_SEGMENTS).into(),
                 format!("VB{start}"),
-                "write the segment count into the table's first byte".into(),
+                msg!("k2-pls-table-segments-hint").into(),
             ));
         }
         let end = start + 1 + 8 * n as u32;
         if end > v_len {
             return Err(self.refuse_parts(
                 mem,
-                format!("the profile table VB{start}…VB{} runs past the V area", end - 1),
+                msg!("k2-pls-table-runs-past", start = start, last = end - 1).into(),
                 format!("VB{start}"),
-                "move the table or use fewer segments".into(),
+                msg!("k2-pls-table-runs-past-hint").into(),
             ));
         }
         let mut segs = Vec::with_capacity(n as usize);
@@ -690,21 +694,22 @@ impl PtoChannel {
             if cycle < 2 {
                 return Err(self.refuse_parts(
                     mem,
-                    format!("segment {} cycle time VW{} = {cycle} is below 2", k + 1, off),
+                    msg!("k2-pls-segment-cycle", n = k + 1, word = off, cycle = cycle).into(),
                     format!("VW{off}"),
-                    "cycles are 2…65535 in the channel's time base".into(),
+                    msg!("k2-pls-segment-cycle-hint").into(),
                 ));
             }
             if count < 1 {
                 return Err(self.refuse_parts(
                     mem,
-                    format!("segment {} pulse count VD{} is 0", k + 1, off + 4),
+                    msg!("k2-pls-segment-count", n = k + 1, dword = off + 4).into(),
                     format!("VD{}", off + 4),
-                    "every segment needs at least 1 pulse".into(),
+                    msg!("k2-pls-segment-count-hint").into(),
                 ));
             }
             let cycle_ns = cycle as u64 * base_ns;
-            if let Some(why) = too_fast(&r, &self.spec, cycle_ns, format!("segment {} cycle {cycle} {unit}", k + 1)) {
+            let what = msg!("k2-pls-what-segment-cycle", n = k + 1, cycle = cycle, unit = unit).into();
+            if let Some(why) = too_fast(&r, &self.spec, cycle_ns, what) {
                 return Err(self.refuse(mem, why));
             }
             segs.push((cycle_ns, count as u64));

@@ -15,6 +15,7 @@ use super::rtc::Rtc;
 use super::state::{hex, unhex, Retain};
 use super::K2Sim;
 use crate::k2::operand::Area;
+use crate::msg;
 use serde::{Deserialize, Serialize};
 use std::time::Duration;
 
@@ -168,7 +169,7 @@ impl K2Sim {
     /// whose sizes do not fit this model.
     pub fn restore_snapshot(&mut self, s: &K2State) -> Result<(), String> {
         if s.model != self.model().name {
-            return Err(format!("the snapshot is of a {}, this simulator is a {}", s.model, self.model().name));
+            return Err(msg!("k2-snapshot-model", saved = s.model.as_str(), model = self.model().name).into());
         }
         // Programs are recompiled from their text before anything changes.
         let plc = match &s.program {
@@ -176,9 +177,16 @@ impl K2Sim {
             None => None,
         };
         let area = |name: &str, text: &str, want: usize| -> Result<Vec<u8>, String> {
-            let b = unhex(text).ok_or_else(|| format!("area {name} is not hex"))?;
+            let b = unhex(text).ok_or_else(|| msg!("k2-snapshot-area-hex", area = name).text)?;
             if b.len() != want {
-                return Err(format!("area {name} has {} bytes, the {} has {want}", b.len(), s.model));
+                return Err(msg!(
+                    "k2-snapshot-area-size",
+                    area = name,
+                    n = b.len(),
+                    model = s.model.as_str(),
+                    want = want
+                )
+                .into());
             }
             Ok(b)
         };
@@ -193,7 +201,7 @@ impl K2Sim {
             area("AQ", &s.mem.aq, m.aq.len())?,
         );
         if s.mem.t.len() != m.t.len() || s.mem.c.len() != m.c.len() {
-            return Err("timer or counter counts differ from the model's".into());
+            return Err(msg!("k2-snapshot-element-counts").into());
         }
         // Timer and counter bits: all off in a file older than them.
         let bits = |name: &str, text: &str, want: usize| {
@@ -205,14 +213,16 @@ impl K2Sim {
         };
         let (tq, cq) = (bits("T bits", &s.mem.tq, m.tq.len())?, bits("C bits", &s.mem.cq, m.cq.len())?);
         if s.pto.len() != self.pto.len() || s.hsc.len() != self.hsc.len() {
-            return Err("pulse output or counter counts differ from the model's".into());
+            return Err(msg!("k2-snapshot-channel-counts").into());
         }
         let retain = s
             .backup
             .retain
             .iter()
             .map(|(a, first, len)| {
-                area_named(a).map(|area| Retain { area, first: *first, len: *len }).ok_or(format!("no area {a}"))
+                area_named(a)
+                    .map(|area| Retain { area, first: *first, len: *len })
+                    .ok_or_else(|| msg!("k2-snapshot-no-area", area = a.as_str()).text)
             })
             .collect::<Result<Vec<_>, String>>()?;
         // Everything checked that can be: now apply. A counter mode is checked as it loads;
@@ -401,7 +411,8 @@ impl ProgramState {
         let compile = |text: &str, file: &str| sim.compile_costed(text, file, p.costs.clone());
         if let Some(base) = agent_base {
             let text = crate::k2::agent::il::program(sim.model(), base);
-            let prog = compile(&text, "k2_agent.il").map_err(|e| format!("the helper program: {e}"))?;
+            let prog = compile(&text, "k2_agent.il")
+                .map_err(|e| msg!("k2-snapshot-helper-program", error = e.to_string()).text)?;
             let mut l = Loaded::new(prog, "k2_agent.il".to_string(), &text);
             if let Some(cpu) = &self.helper_cpu {
                 l.cpu = cpu.clone();
@@ -409,7 +420,8 @@ impl ProgramState {
             p.helper = Some(l);
         }
         if let Some(u) = &self.user {
-            let prog = compile(&u.text, &u.source).map_err(|e| format!("the snapshot's program {}: {e}", u.source))?;
+            let prog = compile(&u.text, &u.source)
+                .map_err(|e| msg!("k2-snapshot-program", source = u.source.as_str(), error = e.to_string()).text)?;
             p.breaks = vec![false; prog.code.len()];
             let mut l = Loaded::new(prog, u.source.clone(), &u.text);
             l.cpu = u.cpu.clone();
@@ -434,14 +446,15 @@ impl ProgramState {
         let code_len = p.user.as_ref().map_or(0, |l| l.prog.code.len());
         if let Some(h) = self.halted {
             if h as usize >= code_len {
-                return Err(format!("the snapshot's DEBUG halt is at instruction {h}, the program has {code_len}"));
+                return Err(msg!("k2-snapshot-halt", at = h, n = code_len).into());
             }
             p.halted = Some(h);
         }
         for &b in &self.breaks {
-            let slot = p.breaks.get_mut(b as usize).ok_or_else(|| {
-                format!("the snapshot's breakpoint is at instruction {b}, the program has {code_len}")
-            })?;
+            let slot = p
+                .breaks
+                .get_mut(b as usize)
+                .ok_or_else(|| msg!("k2-snapshot-breakpoint", at = b, n = code_len).text)?;
             *slot = true;
             p.has_breaks = true;
         }

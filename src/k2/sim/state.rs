@@ -31,6 +31,7 @@ use crate::core::durable::{self, sibling};
 use crate::core::{Error, Result};
 use crate::k2::catalog::{EEPROM_ENDURANCE, EEPROM_FIRST, EEPROM_LAST_DEFAULT, EEPROM_LAST_MAX};
 use crate::k2::operand::Area;
+use crate::msg;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -84,10 +85,13 @@ impl Backup {
     /// Sets the end of the backup area (3902 default, at most 4095, §2.2.8).
     pub fn set_last(&mut self, last: u32) -> Result<()> {
         if !(EEPROM_LAST_DEFAULT..=EEPROM_LAST_MAX).contains(&last) {
-            return Err(Error::usage(format!(
-                "the E2PROM backup area ends at VB{EEPROM_LAST_DEFAULT} (default) … VB{EEPROM_LAST_MAX}, not VB{last}"
+            return Err(Error::usage(msg!(
+                "k2-backup-end",
+                default = EEPROM_LAST_DEFAULT,
+                max = EEPROM_LAST_MAX,
+                last = last
             ))
-            .hint("manual §2.2.8: VB3648–VB3902 by default, extensible to VB4095"));
+            .hint(msg!("k2-backup-end-hint")));
         }
         self.last = last;
         Ok(())
@@ -169,12 +173,12 @@ pub fn unhex(s: &str) -> Option<Vec<u8>> {
 fn read_file(path: &Path) -> Result<StateFile> {
     match std::fs::read_to_string(path) {
         Ok(text) => serde_json::from_str(&text).map_err(|e| {
-            Error::io(format!("the state file {} is not valid", path.display()))
+            Error::io(msg!("k2-state-invalid", file = path.display().to_string()))
                 .cause(e)
-                .hint("move it away to start from a fresh state")
+                .hint(msg!("k2-state-invalid-hint"))
         }),
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => Ok(StateFile { version: 1, ..Default::default() }),
-        Err(e) => Err(Error::io(format!("cannot read the state file {}", path.display())).cause(e)),
+        Err(e) => Err(Error::io(msg!("k2-state-unreadable", file = path.display().to_string())).cause(e)),
     }
 }
 
@@ -188,7 +192,7 @@ pub fn save(path: &Path, model: &str, state: ModelState) -> Result<()> {
     let mut file = read_file(path).unwrap_or_default();
     file.version = 1;
     file.models.insert(model.to_string(), state);
-    let text = serde_json::to_string_pretty(&file).map_err(|e| Error::io("cannot encode the state").cause(e))?;
+    let text = serde_json::to_string_pretty(&file).map_err(|e| Error::io(msg!("k2-state-cannot-encode")).cause(e))?;
     // Nothing changed (a read-only session): leave the file alone — no write, no fsync.
     if std::fs::read(path).is_ok_and(|old| old == text.as_bytes()) {
         return Ok(());
@@ -201,24 +205,28 @@ pub fn save(path: &Path, model: &str, state: ModelState) -> Result<()> {
 pub fn lock(path: &Path) -> Result<std::sync::Arc<std::fs::File>> {
     use std::io::{Read, Seek, Write};
     let (dir, lock) = sibling(path, "lock");
-    std::fs::create_dir_all(&dir).map_err(|e| Error::io(format!("cannot create {}", dir.display())).cause(e))?;
+    std::fs::create_dir_all(&dir)
+        .map_err(|e| Error::io(msg!("file-cannot-create", path = dir.display().to_string())).cause(e))?;
     let mut f = std::fs::OpenOptions::new()
         .read(true)
         .write(true)
         .create(true)
         .truncate(false)
         .open(&lock)
-        .map_err(|e| Error::io(format!("cannot open {}", lock.display())).cause(e))?;
+        .map_err(|e| Error::io(msg!("file-cannot-open", path = lock.display().to_string())).cause(e))?;
     // An advisory lock on Unix (flock), a mandatory one on Windows (LockFileEx): either way
     // one plcsh per state file. Released when the file closes, also on kill -9.
     if f.try_lock().is_err() {
         let mut holder = String::new();
         let _ = f.read_to_string(&mut holder);
         let holder = holder.trim();
-        let who = if holder.is_empty() { "another process".to_string() } else { format!("process {holder}") };
-        return Err(Error::usage(format!("the state file {} is in use by {who}", path.display())).hint(
-            "one plcsh per state file: give this one its own (--state FILE) or none (--state none), or stop the other",
-        ));
+        let file = path.display().to_string();
+        let m = if holder.is_empty() {
+            msg!("k2-state-in-use", file = file)
+        } else {
+            msg!("k2-state-in-use-by", file = file, pid = holder)
+        };
+        return Err(Error::usage(m).hint(msg!("k2-state-in-use-hint")));
     }
     let _ = f.set_len(0);
     let _ = f.rewind();

@@ -12,6 +12,7 @@ use crate::core::signal::PulseTrain;
 use crate::core::wiring::{self, Decl, Harness, Kind, MakePeer, Peer, Role, Wire, WireState};
 use crate::core::{Error, Result};
 use crate::k2::operand::{Area, K2Operand};
+use crate::msg;
 use std::time::Duration;
 
 /// A change of an encoder's position between two pieces larger than this (4× counts) is a
@@ -49,8 +50,8 @@ impl K2Sim {
     pub fn wire_terminal(&self, term: &str) -> Result<Role> {
         let parts: Vec<&str> = term.split(',').map(str::trim).collect();
         let bad = || {
-            Error::usage(format!("{}: `{term}` is not a PLC terminal", self.model().name))
-                .hint("PLC terminals: Q0.0 (output), Q0.0,Q0.2 (pulses + direction), I0.3 (input), I0.1,I0.0 (A,B)")
+            Error::usage(msg!("wire-not-plc-terminal", model = self.model().name, terminal = term))
+                .hint(msg!("wire-plc-terminals-hint"))
         };
         let out = |t: &str| parse_bit(t, Area::Q);
         let inp = |t: &str| parse_bit(t, Area::I);
@@ -67,8 +68,12 @@ impl K2Sim {
                 let (p, dir) = (out(q).unwrap(), out(d).unwrap());
                 self.check_bit(Area::Q, dir)?;
                 let c = self.pto.iter().find(|c| c.pins().0 == p).ok_or_else(|| {
-                    Error::usage(format!("{} has no pulse output on Q{}.{}", self.model().name, p.0, p.1))
-                        .hint("a pulse + direction pair starts with a PTO output (Q0.0 PTO0, Q0.1 PTO1 …)")
+                    Error::usage(msg!(
+                        "wire-no-pulse-output",
+                        model = self.model().name,
+                        pin = format!("Q{}.{}", p.0, p.1)
+                    ))
+                    .hint(msg!("wire-no-pulse-output-hint"))
                 })?;
                 Ok(Role::PulseOut { channel: c.regs.channel, out: p, dir })
             }
@@ -82,7 +87,7 @@ impl K2Sim {
                 self.check_input(a)?;
                 self.check_input(b)?;
                 if a == b {
-                    return Err(Error::usage(format!("A and B are both I{}.{}", a.0, a.1)));
+                    return Err(Error::usage(msg!("wire-a-b-same", pin = format!("I{}.{}", a.0, a.1))));
                 }
                 Ok(Role::QuadIn { a, b })
             }
@@ -96,8 +101,7 @@ impl K2Sim {
         let kind = wiring::connect(&decl, from, to)?;
         let needs_peer = !matches!(kind, Kind::Loop { .. } | Kind::PulseLoop { .. });
         if needs_peer != peer.is_some() {
-            return Err(Error::usage(format!("{decl}: both ends are on one device or neither is the PLC"))
-                .hint("wire a PLC terminal to a drive terminal, or a PLC output to a PLC input"));
+            return Err(Error::usage(msg!("wire-ends", wire = decl.to_string())).hint(msg!("wire-ends-hint")));
         }
         self.advance();
         let mut h = self.wiring.take().unwrap_or_default();
@@ -149,7 +153,7 @@ impl K2Sim {
     pub fn unwire(&mut self, which: &str) -> Result<Vec<String>> {
         self.advance();
         let Some(mut h) = self.wiring.take() else {
-            return Err(Error::usage("nothing is wired").hint("sim wire FROM -> TO adds a wire"));
+            return Err(Error::usage(msg!("wire-nothing")).hint(msg!("wire-nothing-short-hint")));
         };
         let all = which.trim().eq_ignore_ascii_case("all");
         let w = which.trim().to_ascii_lowercase();
@@ -165,10 +169,10 @@ impl K2Sim {
         if gone.is_empty() {
             let list: Vec<String> = h.wires.iter().map(|w| w.decl.to_string()).collect();
             self.wiring = Some(h);
-            return Err(Error::usage(format!("no wire touches `{which}`")).hint(if list.is_empty() {
-                "nothing is wired".to_string()
+            return Err(Error::usage(msg!("wire-none-touches", which = which)).hint(if list.is_empty() {
+                msg!("wire-nothing")
             } else {
-                format!("wires: {}", list.join("; "))
+                msg!("wire-list-hint", list = list.join("; "))
             }));
         }
         let t = secs(ns(self.last));

@@ -239,7 +239,7 @@ impl HscChannel {
         self.mode = match s.mode {
             Some(m) => Some(
                 sm_map::hsc_mode(self.regs.channel, m)
-                    .ok_or_else(|| format!("HSC{} has no mode {m}", self.regs.channel))?,
+                    .ok_or_else(|| crate::msg!("k2-hsc-snapshot-mode", n = self.regs.channel, mode = m).text)?,
             ),
             None => None,
         };

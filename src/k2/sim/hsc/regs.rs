@@ -9,6 +9,7 @@ use super::HscChannel;
 use crate::core::{Error, ErrorKind, Result};
 use crate::k2::memory::Memory;
 use crate::k2::sm_map::{self, HscKind};
+use crate::msg;
 use serde::{Deserialize, Serialize};
 
 /// Control byte bits (§3.3.2).
@@ -58,18 +59,18 @@ pub struct PvTable {
 /// |PV| ≤ 1, or absolute PVs within 1 of the previous one, end the table there.
 pub fn read_table(v: &[u8], start: u32, relative: bool, cyclic: bool) -> std::result::Result<PvTable, String> {
     if start.is_multiple_of(2) {
-        return Err(format!("the PV table start {start} is even (it must be an odd V offset, §3.3.2)"));
+        return Err(msg!("k2-hsc-table-even", start = start).into());
     }
     let s = start as usize;
     if s >= v.len() {
-        return Err(format!("the PV table start VB{start} is past the V area"));
+        return Err(msg!("k2-hsc-table-past-v", start = start).into());
     }
     let n = v[s];
     if n == 0 || n > MAX_PVS {
-        return Err(format!("the PV table at VB{start} holds {n} PVs (1–{MAX_PVS} allowed)"));
+        return Err(msg!("k2-hsc-table-count", start = start, n = n, max = MAX_PVS).into());
     }
     if s + 1 + 4 * n as usize > v.len() {
-        return Err(format!("the PV table at VB{start} runs past the V area"));
+        return Err(msg!("k2-hsc-table-runs-past", start = start).into());
     }
     let mut pvs: Vec<i64> = Vec::new();
     for k in 0..n as usize {
@@ -82,7 +83,7 @@ pub fn read_table(v: &[u8], start: u32, relative: bool, cyclic: bool) -> std::re
         pvs.push(pv);
     }
     if pvs.is_empty() {
-        return Err(format!("the PV table at VB{start} ends before its first PV (|PV| must be > 1)"));
+        return Err(msg!("k2-hsc-table-empty", start = start).into());
     }
     Ok(PvTable { pvs, relative, cyclic: cyclic && relative })
 }
@@ -91,8 +92,11 @@ pub fn read_table(v: &[u8], start: u32, relative: bool, cyclic: bool) -> std::re
 /// (`k2::driver`) alike.
 pub fn no_mode(ch: u8, mode: u8) -> Error {
     let modes: Vec<String> = sm_map::hsc_modes_of(ch).iter().map(|m| m.to_string()).collect();
-    Error::new(ErrorKind::Value, format!("HSC{ch} has no mode {mode} (manual §3.3.1)"))
-        .hint(format!("HSC{ch}'s modes: {}", modes.join(", ")))
+    Error::new(ErrorKind::Value, msg!("k2-hsc-no-mode", n = ch, mode = mode)).hint(msg!(
+        "k2-hsc-no-mode-hint",
+        n = ch,
+        list = modes.join(", ")
+    ))
 }
 
 impl HscChannel {
@@ -118,9 +122,10 @@ impl HscChannel {
         let r = self.regs;
         let ch = r.channel;
         let Some(m) = self.mode else {
-            return Err(Error::state(format!("HSC{ch} has no mode yet")).hint(format!(
-                "run `hdef {ch} MODE` first (HDEF, manual §3.3.5); modes: {}",
-                sm_map::hsc_modes_of(ch).iter().map(|m| m.to_string()).collect::<Vec<_>>().join(", ")
+            return Err(Error::state(msg!("k2-hsc-no-mode-yet", n = ch)).hint(msg!(
+                "k2-hsc-no-mode-yet-hint",
+                n = ch,
+                list = sm_map::hsc_modes_of(ch).iter().map(|m| m.to_string()).collect::<Vec<_>>().join(", ")
             )));
         };
         let c = mem.sm_byte(r.control);
@@ -128,7 +133,7 @@ impl HscChannel {
         self.settings += 1;
         if c & ctl::ENABLE == 0 {
             self.running = false;
-            return Ok(format!("HSC{ch} stopped (enable bit SM{}.7 is 0); CV {}", r.control, self.cv));
+            return Ok(msg!("k2-hsc-stopped", n = ch, control = r.control, cv = self.cv).into());
         }
         self.reset_low = c & ctl::RESET_LOW != 0;
         self.start_low = c & ctl::START_LOW != 0;
@@ -157,15 +162,12 @@ impl HscChannel {
                 Err(e) => {
                     self.table = None;
                     self.fault = true;
-                    notes.push(format!("PV table fault (SM{}.3 = 1): {e}", r.status));
+                    notes.push(msg!("k2-hsc-table-fault", status = r.status, reason = e).text);
                 }
             }
         } else if self.table.is_none() {
             self.fault = true;
-            notes.push(format!(
-                "PV table fault (SM{}.3 = 1): no table loaded; set SM{}.4 to load the table at SMW{}",
-                r.status, r.mpv_control, r.table
-            ));
+            notes.push(msg!("k2-hsc-table-fault-none", status = r.status, mpv = r.mpv_control, table = r.table).text);
         }
         if let Some(t) = &mut self.table {
             // The PV type and cyclic bits apply at every HSC, also to a table kept from before.
@@ -184,17 +186,22 @@ impl HscChannel {
         self.running = true;
         self.publish(mem);
         let cmp = match (&self.table, self.multi) {
-            (Some(t), true) => format!(
-                "{} {} PVs{}, next CV = PV at {}",
-                t.pvs.len(),
-                if t.relative { "relative" } else { "absolute" },
-                if t.cyclic { " (cyclic)" } else { "" },
-                self.cmp.target
+            (Some(t), true) => msg!(
+                "k2-hsc-counting-table",
+                n = t.pvs.len(),
+                kind = match (t.relative, t.cyclic) {
+                    (true, true) => "relative-cyclic",
+                    (true, false) => "relative",
+                    (false, true) => "absolute-cyclic",
+                    (false, false) => "absolute",
+                },
+                target = self.cmp.target
             ),
-            (None, true) => "no PV table".to_string(),
-            _ => format!("single PV {}", self.pv),
+            (None, true) => msg!("k2-hsc-counting-no-table"),
+            _ => msg!("k2-hsc-status-single-pv", pv = self.pv),
         };
-        let mut msg = format!("HSC{ch} counting in mode {} from CV {}; {cmp}", m.mode, self.cv);
+        let mut msg: String = msg!("k2-hsc-counting", n = ch, mode = m.mode, cv = self.cv, compare = cmp.text).into();
+
         for n in notes {
             msg.push_str("; ");
             msg.push_str(&n);

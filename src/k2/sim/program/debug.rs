@@ -11,6 +11,7 @@
 use super::super::K2Sim;
 use super::Mode;
 use crate::core::{Error, Result};
+use crate::msg;
 use serde::Serialize;
 
 /// One executed instruction, as the debugger shows it.
@@ -33,7 +34,7 @@ impl K2Sim {
             .plc
             .as_deref_mut()
             .filter(|p| p.user.is_some())
-            .ok_or_else(|| Error::state("no program is loaded").hint("sim program load FILE.il"))?;
+            .ok_or_else(|| Error::state(msg!("k2-no-program")).hint(msg!("k2-no-program-hint")))?;
         let l = p.user.as_ref().unwrap();
         // From Lua (`plc:breakpoint("network 2")`) the words arrive quoted, as one argument.
         let spec = spec.trim().trim_matches(['"', '\'']).trim();
@@ -41,22 +42,27 @@ impl K2Sim {
         let net = lower.strip_prefix("network").or_else(|| lower.strip_prefix('n')).map(str::trim);
         let idx = if let Some(n) = net.and_then(|n| n.parse::<u32>().ok()) {
             l.prog.network.iter().position(|x| *x == n).ok_or_else(|| {
-                Error::usage(format!("{} has no network {n}", l.source))
-                    .hint("networks are numbered by `(* Network n *)` comments or NETWORK lines")
+                Error::usage(msg!("k2-no-network", source = l.source.as_str(), n = n)).hint(msg!("k2-no-network-hint"))
             })?
         } else {
             let line: u32 = spec.rsplit(':').next().and_then(|x| x.parse().ok()).ok_or_else(|| {
-                Error::usage(format!("`{spec}` is not a breakpoint")).hint("sim break LINE | FILE:LINE | network N")
+                Error::usage(msg!("k2-not-breakpoint", spec = spec)).hint("sim break LINE | FILE:LINE | network N")
             })?;
             let last = l.prog.code.len().saturating_sub(1);
             l.prog.pos[..last]
                 .iter()
                 .position(|pos| pos.line >= line)
-                .ok_or_else(|| Error::usage(format!("{} has no instruction on or after line {line}", l.source)))?
+                .ok_or_else(|| Error::usage(msg!("k2-no-instruction-after", source = l.source.as_str(), line = line)))?
         };
         p.breaks[idx] = true;
         p.has_breaks = true;
-        Ok(format!("breakpoint at {}:{}: {}", l.source, l.prog.pos[idx].line, l.prog.text[idx]))
+        Ok(msg!(
+            "k2-breakpoint-at",
+            source = l.source.as_str(),
+            line = l.prog.pos[idx].line,
+            text = l.prog.text[idx].as_str()
+        )
+        .into())
     }
 
     pub fn clear_breakpoints(&mut self) {
@@ -82,7 +88,7 @@ impl K2Sim {
                 .plc
                 .as_deref_mut()
                 .filter(|p| p.user.is_some())
-                .ok_or_else(|| Error::state("no program is loaded").hint("sim program load FILE.il"))?;
+                .ok_or_else(|| Error::state(msg!("k2-no-program")).hint(msg!("k2-no-program-hint")))?;
             if p.mode == Mode::Stop && !p.faults.is_empty() && p.user.as_ref().is_some_and(|l| l.cpu.pc.is_none()) {
                 // Stepping after a fault starts afresh, as STOP → RUN does.
                 p.run_scans = 0;

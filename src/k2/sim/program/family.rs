@@ -21,6 +21,7 @@ use crate::k2::catalog;
 use crate::k2::instr::RtcTime;
 use crate::k2::operand::{Area, K2Operand, Width as KW};
 use crate::k2::space::K2Space;
+use crate::msg;
 use std::time::Duration;
 
 pub const AREA_TQ: u8 = 9;
@@ -230,7 +231,7 @@ impl K2Family {
     fn one(&self, text: &str) -> Result<K2Operand, OperandError> {
         let ops = self.space.parse_k2(text).map_err(op_err)?;
         if ops.len() != 1 {
-            return Err(OperandError::new("a program operand is one location, not a range"));
+            return Err(OperandError::new(msg!("k2-program-one-location")));
         }
         Ok(ops[0])
     }
@@ -250,8 +251,8 @@ impl Family for K2Family {
             });
         }
         let loc = to_loc(&o).ok_or_else(|| {
-            OperandError::new(format!("{} is a bit group; programs address bytes, words and bits", o.canonical()))
-                .hint("use MW/VW words or M/V bits in programs")
+            OperandError::new(msg!("k2-program-bit-group", operand = o.canonical()))
+                .hint(msg!("k2-program-bit-group-hint"))
         })?;
         Ok(Resolved { loc, ty: o.view, canonical: o.canonical() })
     }
@@ -268,11 +269,8 @@ impl Family for K2Family {
         let o = self.one(text)?;
         let (area, q, what) = if want_timer { (Area::T, AREA_TQ, "timer") } else { (Area::C, AREA_CQ, "counter") };
         if o.area != area || o.width != KW::Element {
-            return Err(OperandError::new(format!("{} is not a {what}", o.canonical())).hint(if want_timer {
-                "timers are T0…T255"
-            } else {
-                "counters are C0…C255"
-            }));
+            return Err(OperandError::new(msg!("k2-program-not-element", operand = o.canonical(), what = what))
+                .hint(if want_timer { msg!("k2-program-timers-hint") } else { msg!("k2-program-counters-hint") }));
         }
         Ok(Element {
             number: o.byte,
@@ -403,7 +401,7 @@ impl K2Machine<'_> {
     fn buf(&self, o: &Opd) -> Result<Loc, Fault> {
         engine::loc_of(self, o, DataType::Byte)?
             .filter(|l| matches!(l.width, Width::Byte) && (l.index as usize + 8) <= self.area(l.area).len())
-            .ok_or_else(|| Fault::new(FaultKind::BadAddress, "an 8-byte clock buffer does not fit there"))
+            .ok_or_else(|| Fault::new(FaultKind::BadAddress, msg!("k2-program-clock-buffer")))
     }
 }
 
@@ -578,7 +576,7 @@ impl Machine for K2Machine<'_> {
                 }
             }
             id::PREL..=id::PFLO_F => return self.position(sid, inst, args, &vals),
-            _ => return Err(Fault::new(FaultKind::Instruction, format!("unknown family instruction {sid}"))),
+            _ => return Err(Fault::new(FaultKind::Instruction, msg!("k2-program-unknown-instruction", id = sid))),
         })
     }
 
