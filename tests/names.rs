@@ -27,6 +27,7 @@ Count_Pv;VD400;DINT;
 Pto_Table;VB3001;BYTE;
 Hsc_Table;VB3009;BYTE;
 电机速度;VW300;INT;电机
+Уровень_2;VW20;INT;уровень в баке 2
 ";
 
 /// The UMPK trainer's tags.
@@ -173,7 +174,7 @@ fn every_row_works_with_names_in_the_repl_one_shot_and_lua() {
 fn lua_reads_and_writes_by_name_and_loads_tags() {
     let dir = world("lua");
     let code = r#"
-        assert(plc:tags_load("plc.csv") == 12)
+        assert(plc:tags_load("plc.csv") == 13)
         plc.Conveyor_Run = true
         plc["Мотор_1_Пуск"] = 1
         plc:set{Tank2_Level = 12.5}
@@ -237,4 +238,44 @@ fn a_profile_names_its_tag_file_beside_itself() {
     assert_eq!(last["values"][0]["name"], "Press_Force", "{last}");
     assert_eq!(last["values"][0]["operand"], "VW10/INT", "{last}");
     assert_eq!(last["values"][0]["value"], -5, "{last}");
+}
+
+/// A misspelt Cyrillic or Chinese name is searched among the names as typed: the K2 manual's
+/// Cyrillic spelling (`ВW0` is `VW0`) is read only where it makes an operand, so `Уровен_2`
+/// is not turned into a Latin-lettered word before "did you mean". In the REPL, one-shot and
+/// Lua (through the shell and through the device handle).
+#[test]
+fn a_misspelt_cyrillic_or_chinese_name_gets_the_nearest_name_as_typed() {
+    let dir = world("near");
+    for (typed, near) in [("Уровен_2", "Уровень_2 (VW20/INT)"), ("уровнь_2", "Уровень_2"), ("电机速", "电机速度 (VW300/INT)")] {
+        let line = format!("get {typed}");
+        let o = plcsh(&dir, true).args(["-c", &line]).output().unwrap();
+        let v = common::json_lines(&o);
+        assert!(!o.status.success(), "{}", common::both(&o));
+        let e = &v[0]["error"];
+        assert!(e["message"].as_str().unwrap_or("").contains(&format!("`{typed}`")), "{typed}: {e}");
+        assert!(e["hint"].as_str().unwrap_or("").contains(&format!("did you mean {near}")), "{typed}: {e}");
+        let child = plcsh(&dir, false)
+            .stdin(std::process::Stdio::piped())
+            .stdout(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .unwrap();
+        let o = common::output_with_input(child, format!("{line}\n").as_bytes());
+        let out = common::both(&o);
+        assert!(out.contains(typed) && out.contains(&format!("did you mean {near}")), "REPL `{line}`:\n{out}");
+        for code in [format!("lua plcsh.exec([==[{line}]==])"), format!("lua plc:get([==[{typed}]==])")] {
+            let o = plcsh(&dir, false).args(["-c", &code]).output().unwrap();
+            let out = common::both(&o);
+            assert!(!o.status.success() && out.contains(&format!("did you mean {near}")), "`{code}`:\n{out}");
+        }
+    }
+    // The manual's spelling still reads where it makes an operand, beside a name.
+    let o = plcsh(&dir, true).args(["-c", "set ВW0=В#16#12; get ВW0 Уровень_2"]).output().unwrap();
+    let v = common::json_lines(&o);
+    assert!(o.status.success(), "{}", common::both(&o));
+    let last = v.last().unwrap();
+    assert_eq!(last["values"][0]["operand"], "VW0", "{last}");
+    assert_eq!(last["values"][0]["value"], 18, "{last}");
+    assert_eq!(last["values"][1]["name"], "Уровень_2", "{last}");
 }

@@ -109,7 +109,8 @@ pub(crate) fn fold_operands(cmd: &str, text: &str) -> Option<(String, Vec<(Strin
     fold_operands_except(cmd, text, |_| vec![])
 }
 
-/// [`fold_operands`], leaving alone also the words `keep` marks (tag names: `names::tag_words`).
+/// [`fold_operands`], leaving alone also the words `keep` marks (tag names and words that the
+/// spelling would not make operands: `names::unfolded_words`).
 fn fold_operands_except(
     cmd: &str,
     text: &str,
@@ -292,7 +293,7 @@ impl Shell {
             }
         }
         let folded =
-            fold_operands_except(spec.name, args.text, |words| names::tag_words(&self.session, spec.name, words));
+            fold_operands_except(spec.name, args.text, |words| names::unfolded_words(&self.session, spec.name, words));
         let args = Args { text: folded.as_ref().map_or(args.text, |f| f.0.as_str()), offset: args.offset };
         changed.extend(folded.as_ref().map(|f| f.1.clone()).unwrap_or_default());
         // Tag names as their operands, for the commands that read operands themselves.
