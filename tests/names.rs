@@ -28,6 +28,7 @@ Pto_Table;VB3001;BYTE;
 Hsc_Table;VB3009;BYTE;
 电机速度;VW300;INT;电机
 Уровень_2;VW20;INT;уровень в баке 2
+启动按钮;I0.2;BOOL;启动
 ";
 
 /// The UMPK trainer's tags.
@@ -174,7 +175,7 @@ fn every_row_works_with_names_in_the_repl_one_shot_and_lua() {
 fn lua_reads_and_writes_by_name_and_loads_tags() {
     let dir = world("lua");
     let code = r#"
-        assert(plc:tags_load("plc.csv") == 13)
+        assert(plc:tags_load("plc.csv") == 14)
         plc.Conveyor_Run = true
         plc["Мотор_1_Пуск"] = 1
         plc:set{Tank2_Level = 12.5}
@@ -278,4 +279,43 @@ fn a_misspelt_cyrillic_or_chinese_name_gets_the_nearest_name_as_typed() {
     assert_eq!(last["values"][0]["operand"], "VW0", "{last}");
     assert_eq!(last["values"][0]["value"], 18, "{last}");
     assert_eq!(last["values"][1]["name"], "Уровень_2", "{last}");
+}
+
+/// A refusal points at the column of what was typed, though the command ran with each name
+/// written as its operand (`Start_Button` → `I0.1`, a shorter text) and the manual's Cyrillic
+/// spelling read as Latin (`Х0` → `X0`, fewer bytes): per family, the K2 simulator's `sim`,
+/// the UMPK's `umpk`, the drive's `servo`, and the FX's operands. The JSON column is a byte
+/// offset in the line; the caret under the text line counts terminal columns (a Chinese
+/// character is two).
+#[test]
+fn a_refusal_points_at_the_column_of_what_was_typed() {
+    let dir = world("columns");
+    std::fs::write(dir.join("fx.csv"), "name,address,comment\nFx_Start,X0,\nFx_Motor,Y0,\n").unwrap();
+    let cases = [
+        ("sim input Start_Button freq=1kQ", "freq=1kQ"),
+        ("sim quad Start_Button Encoder_B freq=1kHz dir=zz", "dir=zz"),
+        ("sim input 启动按钮 freq=1kQ", "freq=1kQ"),
+        ("sim retain Speeds[2] VQ9", "VQ9"),
+        ("umpk trainer monitor Key_3 I99", "I99"),
+        ("servo read Axis_Pos nonsuch", "nonsuch"),
+        ("servo sim fault abort Axis_Ctl 16#zz", "16#zz"),
+        ("use fx; get Fx_Start Х0 Fx_Motor X99", "99"),
+        ("use fx; watch Fx_Motor Х1 X78 count=1", "8"),
+    ];
+    for (line, at) in cases {
+        let o = plcsh(&dir, true)
+            .args(["--device", "fx=sim-fx:FX3U", "--tags", "fx=fx.csv", "-c", line])
+            .output()
+            .unwrap();
+        let v = common::json_lines(&o);
+        let e = &v.last().unwrap_or_else(|| panic!("{line}: {}", common::both(&o)))["error"];
+        let col = e["column"].as_u64().unwrap_or_else(|| panic!("{line}: no column: {e}")) as usize;
+        assert!(line.get(col..).is_some_and(|t| t.starts_with(at)), "{line}: column {col}, not at `{at}`: {e}");
+    }
+    // The caret, under the Chinese name's line.
+    let line = "sim input 启动按钮 freq=1kQ";
+    let o = plcsh(&dir, false).args(["-c", line]).output().unwrap();
+    let out = common::both(&o);
+    let caret = out.lines().find(|l| l.trim() == "^").unwrap_or_else(|| panic!("{out}"));
+    assert_eq!(caret.find('^'), Some(2 + "sim input ".len() + 8 + 1), "{out}");
 }

@@ -15,6 +15,7 @@
 //! unknown word is first a possible misspelt name.
 
 use super::commands::{self, forms, CommandSpec};
+use super::edits::Edits;
 use super::lex;
 use crate::session::Session;
 
@@ -114,9 +115,10 @@ fn folds_to_no_operand(session: &Session, default: Option<usize>, word: &str) ->
 }
 
 /// The arguments of `spec` with every name written as its operand (`sim input Start freq=1kHz`
-/// → `sim input I0.1 freq=1kHz`), for the commands outside [`RESOLVING`]; `None` when no word
-/// names a tag. Text words, the words the forms spell out and option keys are left alone.
-pub fn operands_for(session: &Session, spec: &CommandSpec, text: &str) -> Option<String> {
+/// → `sim input I0.1 freq=1kHz`), for the commands outside [`RESOLVING`], with where each
+/// operand was typed (a refusal's column goes back to the name); `None` when no word names a
+/// tag. Text words, the words the forms spell out and option keys are left alone.
+pub fn operands_for(session: &Session, spec: &CommandSpec, text: &str) -> Option<(String, Edits)> {
     if RESOLVING.contains(&spec.name) || session.entries().iter().all(|e| e.names.is_empty()) {
         return None;
     }
@@ -127,6 +129,7 @@ pub fn operands_for(session: &Session, spec: &CommandSpec, text: &str) -> Option
     let keys: Vec<String> = forms::options(spec, None).into_iter().map(|(k, _)| k).collect();
     let default = device_of(session, spec.name, &words);
     let mut out = String::with_capacity(text.len() + 16);
+    let mut edits = Edits::default();
     let mut copied = 0;
     for (k, &(col, w)) in words.iter().enumerate() {
         if mask[k] || literals.iter().any(|l| l.eq_ignore_ascii_case(w)) {
@@ -140,6 +143,7 @@ pub fn operands_for(session: &Session, spec: &CommandSpec, text: &str) -> Option
         for (a, b) in spans {
             let Some(n) = names.get(&w[a..b]) else { continue };
             out.push_str(&text[copied..col + a]);
+            edits.replaced((col + a, col + b), (out.len(), out.len() + n.operand.len()), false);
             out.push_str(&n.operand);
             copied = col + b;
         }
@@ -148,5 +152,5 @@ pub fn operands_for(session: &Session, spec: &CommandSpec, text: &str) -> Option
         return None;
     }
     out.push_str(&text[copied..]);
-    Some(out)
+    Some((out, edits))
 }
