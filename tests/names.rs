@@ -319,3 +319,72 @@ fn a_refusal_points_at_the_column_of_what_was_typed() {
     let caret = out.lines().find(|l| l.trim() == "^").unwrap_or_else(|| panic!("{out}"));
     assert_eq!(caret.find('^'), Some(2 + "sim input ".len() + 8 + 1), "{out}");
 }
+
+/// The keys of a bench file (`--bench`, a lab's `bench`) and of `lab.toml`, each with whether it
+/// takes operands. A key added to either fails
+/// [`every_bench_and_lab_key_that_takes_an_operand_takes_names`] until it is classified here —
+/// and, when it takes operands, until the bench below gives it names.
+const BENCH_KEYS: &[(&str, bool)] = &[
+    ("name", false),
+    ("current", false),
+    ("devices", false),
+    ("wires", true),
+    ("init", true),
+    ("programs", false),
+    ("faults", true),
+    ("tags", false),
+];
+
+/// `lab.toml`'s keys: none takes an operand (criteria are the grader's Lua, which takes names
+/// like any script; a lab's names come from its bench's `[tags]`).
+const LAB_KEYS: &[&str] = &[
+    "title", "bench", "devices", "snapshot", "starter", "reference", "grader", "device", "budget", "points",
+    "accepts", "shared", "language", "grants",
+];
+
+/// The keys a file accepts, as serde lists them refusing an unknown one.
+fn keys_listed(out: &str) -> Vec<String> {
+    let list = out.split("expected one of").nth(1).unwrap_or_else(|| panic!("no key list in: {out}"));
+    let list = list.lines().next().unwrap_or("");
+    let mut keys: Vec<String> = list.split(',').map(|k| k.trim().trim_matches('`').to_string()).collect();
+    keys.sort();
+    keys
+}
+
+/// A bench's wires, initial values and injected faults take the names of its `[tags]`; Lua's
+/// `plcsh.wire` takes them too.
+#[test]
+fn every_bench_and_lab_key_that_takes_an_operand_takes_names() {
+    let dir = world("bench");
+    std::fs::write(dir.join("unknown.toml"), "zzz = 1\n[devices]\nplc = \"sim:K205-16DT\"\n").unwrap();
+    let o = common::plcsh().current_dir(&dir).args(["--bench", "unknown.toml", "-c", "get VW0"]).output().unwrap();
+    let mut want: Vec<String> = BENCH_KEYS.iter().map(|k| k.0.to_string()).collect();
+    want.sort();
+    assert_eq!(keys_listed(&common::both(&o)), want, "a bench key is not classified in BENCH_KEYS");
+    std::fs::create_dir_all(dir.join("lab")).unwrap();
+    std::fs::write(dir.join("lab/lab.toml"), "title = \"x\"\nzzz = 1\n").unwrap();
+    let o = common::plcsh().current_dir(&dir).args(["lab", "check", "lab"]).output().unwrap();
+    let mut want: Vec<String> = LAB_KEYS.iter().map(|k| k.to_string()).collect();
+    want.sort();
+    assert_eq!(keys_listed(&common::both(&o)), want, "a lab.toml key is not classified in LAB_KEYS");
+    // Every operand-taking key, with names.
+    let bench = "wires = [\"plc:Motor_Out -> plc:Start_Button\"]\n\
+                 init = [\"plc:Уровень_2=7\", \"plc:电机速度=-3\"]\n\
+                 [devices]\nplc = \"sim:K205-16DT\"\n[tags]\nplc = \"plc.csv\"\n\
+                 [[faults]]\ndevice = \"plc\"\nspec = \"no-reply on Уровень_2 after=1h times=1\"\n";
+    assert!(BENCH_KEYS.iter().filter(|k| k.1).all(|k| bench.contains(k.0)), "a row for every key that takes operands");
+    std::fs::write(dir.join("named.toml"), bench).unwrap();
+    let o = common::plcsh()
+        .current_dir(&dir)
+        .args(["--time", "stepped", "--bench", "named.toml", "-c"])
+        .arg("sim wires; sim faults; get Уровень_2 电机速度; lua plcsh.wire('plc:Мотор_1_Пуск -> plc:I0.3')")
+        .output()
+        .unwrap();
+    let out = common::both(&o);
+    assert!(o.status.success(), "{out}");
+    assert!(out.contains("plc:Q0.0 -> plc:I0.1"), "wires: {out}");
+    assert!(out.contains("no-reply on VB20..VB21"), "faults: {out}");
+    assert!(out.contains("Уровень_2 (VW20/INT)") && out.contains("电机速度 (VW300/INT)"), "init: {out}");
+    assert!(out.lines().any(|l| l.starts_with("Уровень_2") && l.contains(" 7 ")), "init: {out}");
+    assert!(out.contains("plc:Q0.1 -> plc:I0.3"), "plcsh.wire: {out}");
+}

@@ -20,6 +20,8 @@
 //! ]
 //! [programs]                            # DEVICE = FILE (relative to the bench file)
 //! plc = "machine.il"
+//! [tags]                                # DEVICE = tag file: wires, init and faults may
+//! plc = "machine.csv"                   # use its names (docs/tags.md)
 //!
 //! [[faults]]                            # injected when the bench opens, in order
 //! device = "plc"                        # a PLC: the SPEC of `sim fault` / `sim serve --fault`
@@ -60,6 +62,10 @@ pub struct Bench {
     pub programs: BTreeMap<String, String>,
     #[serde(default)]
     pub faults: Vec<BenchFault>,
+    /// DEVICE = tag file (relative to the bench file): the device's names, attached before the
+    /// wires, values and faults are read, so those may use them (docs/tags.md).
+    #[serde(default)]
+    pub tags: BTreeMap<String, String>,
     /// The file's directory (program paths are relative to it).
     #[serde(skip)]
     pub dir: PathBuf,
@@ -79,6 +85,15 @@ pub struct BenchFault {
 /// the words after `servo sim fault`. Returns the description.
 fn inject(s: &mut Session, f: &BenchFault) -> Result<String> {
     let i = s.index(&f.device)?;
+    // The device's tag names in the spec as their operands (`no-reply on Tank_Level`).
+    let names = s.names(i);
+    let spec: String = if names.is_empty() {
+        f.spec.clone()
+    } else {
+        let words: Vec<&str> = f.spec.split_whitespace().collect();
+        words.iter().map(|w| names.get(w).map_or(*w, |n| n.operand.as_str())).collect::<Vec<_>>().join(" ")
+    };
+    let f = &BenchFault { device: f.device.clone(), spec };
     let dev = &mut s.entry(i).device;
     if let Some(sim) = crate::k2::simulator(dev.as_mut()) {
         let spec =
@@ -117,7 +132,7 @@ impl Bench {
         let mut b: Bench = toml::from_str(text).map_err(|e| {
             let line = e.span().map(|s| format!(":{}", line_of(text, s.start))).unwrap_or_default();
             Error::usage(format!("bench {}{line}: {}", path.display(), e.message())).hint(
-                "a bench has [devices] NAME = \"URL\", and optional wires = [\"A -> B\"], init = [\"DEV:OP=VALUE\"], [programs], [[faults]]",
+                "a bench has [devices] NAME = \"URL\", and optional wires = [\"A -> B\"], init = [\"DEV:OP=VALUE\"], [programs], [tags], [[faults]]",
             )
         })?;
         if b.devices.is_empty() {
@@ -153,6 +168,10 @@ pub fn open(s: &mut Session, bench: &Bench) -> Result<Vec<String>> {
             return Err(Error::usage(format!("bench {file}: device {name} = {url} is not a simulator"))
                 .hint("a bench file describes a simulated machine: use sim:MODEL and sim-servo:?id=N"));
         }
+    }
+    for (dev, file_name) in &bench.tags {
+        let i = s.index(dev).map_err(|e| within(e, format!("bench {file}, tags for {dev}")))?;
+        s.load_tags(i, &bench.dir.join(file_name)).map_err(|e| within(e, format!("bench {file}, tags for {dev}")))?;
     }
     for (i, w) in bench.wires.iter().enumerate() {
         super::setup::wire(s, w).map_err(|e| within(e, format!("bench {file}, wire {} `{w}`", i + 1)))?;
