@@ -388,3 +388,43 @@ fn every_bench_and_lab_key_that_takes_an_operand_takes_names() {
     assert!(out.lines().any(|l| l.starts_with("Уровень_2") && l.contains(" 7 ")), "init: {out}");
     assert!(out.contains("plc:Q0.1 -> plc:I0.3"), "plcsh.wire: {out}");
 }
+
+/// `data save` keeps each operand's tag name beside it; a set saved by name loads by name
+/// (where the tags put the name now); `data diff` shows the names; a set written before
+/// names (no `name` keys) still loads and compares.
+#[test]
+fn data_sets_keep_names_and_load_by_name() {
+    let dir = world("data");
+    let o = plcsh(&dir, false)
+        .args(["-c", "set Tank2_Level=12.5, Уровень_2=5, VW0=9; data save s.toml Tank2_Level Уровень_2 VW0"])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", common::both(&o));
+    let text = std::fs::read_to_string(dir.join("s.toml")).unwrap();
+    assert!(text.contains("operand = \"VW20/INT\", type = \"INT\", value = 5, name = \"Уровень_2\""), "{text}");
+    assert!(text.contains("{ operand = \"VW0\", type = \"WORD\", value = 9 }"), "no name for an operand without a tag: {text}");
+    // The same names on other addresses: the set goes where the names are now.
+    std::fs::write(dir.join("moved.csv"), "name;address;type\nTank2_Level;VD300;REAL\nУровень_2;VW22;INT\n").unwrap();
+    let o = common::plcsh()
+        .current_dir(&dir)
+        .args(["--time", "stepped", "--json", "--tags", "moved.csv", "-c", "data load s.toml; get VD300/REAL VW22 VW20 VW0"])
+        .output()
+        .unwrap();
+    let v = common::json_lines(&o);
+    let last = v.last().unwrap_or_else(|| panic!("{}", common::both(&o)));
+    let values: Vec<&serde_json::Value> = last["values"].as_array().unwrap().iter().map(|x| &x["value"]).collect();
+    assert_eq!(values, [&serde_json::json!(12.5), &serde_json::json!(5), &serde_json::json!(0), &serde_json::json!(9)], "{last}");
+    // `data diff` names what differs.
+    let o = plcsh(&dir, false).args(["-c", "set Уровень_2=6; data diff s.toml"]).output().unwrap();
+    let out = common::both(&o);
+    assert!(out.contains("Уровень_2 (VW20/INT)"), "{out}");
+    let o = plcsh(&dir, true).args(["-c", "set Уровень_2=6; data diff s.toml"]).output().unwrap();
+    let last = common::json_lines(&o).pop().unwrap();
+    assert_eq!(last["differences"][1]["name"], "Уровень_2", "{last}");
+    assert!(last["differences"][2].get("name").is_none(), "{last}");
+    // A file from before names: read as it was.
+    let old = text.replace(", name = \"Tank2_Level\"", "").replace(", name = \"Уровень_2\"", "");
+    std::fs::write(dir.join("old.toml"), old).unwrap();
+    let o = plcsh(&dir, false).args(["-c", "data load old.toml; get VW20"]).output().unwrap();
+    assert!(o.status.success() && common::stdout(&o).contains("5"), "{}", common::both(&o));
+}
