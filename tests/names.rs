@@ -428,3 +428,38 @@ fn data_sets_keep_names_and_load_by_name() {
     let o = plcsh(&dir, false).args(["-c", "data load old.toml; get VW20"]).output().unwrap();
     assert!(o.status.success() && common::stdout(&o).contains("5"), "{}", common::both(&o));
 }
+
+/// Series and records are labelled by name: a trace's CSV header, and a commissioning report's
+/// curves and its log of writes (the guard logs operands; the report adds the name).
+#[test]
+fn traces_and_reports_label_by_name() {
+    let dir = world("report");
+    let o = plcsh(&dir, false)
+        .args(["-c", "trace Tank2_Level Уровень_2 VW0 every=10ms for=30ms to=t.csv"])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", common::both(&o));
+    let csv = std::fs::read_to_string(dir.join("t.csv")).unwrap();
+    let header = csv.lines().next().unwrap_or("");
+    assert!(header.contains("Tank2_Level") && header.contains("Уровень_2") && header.contains("VW0"), "{header}");
+    let script = r#"
+        local commission = require("commission")
+        local plc = plcsh.device("plc")
+        local c = commission.new("names", { report = "r.html" })
+        c:step("by name", function()
+          plc["Уровень_2"] = 5
+          c:trace { plc, "Tank2_Level", "Уровень_2", every = 10, ["for"] = 30, title = "t" }
+        end)
+        c:run()
+    "#;
+    std::fs::write(dir.join("r.lua"), script).unwrap();
+    let o = plcsh(&dir, false).args(["run", "r.lua"]).output().unwrap();
+    assert!(o.status.success(), "{}", common::both(&o));
+    let r: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(dir.join("r.json")).unwrap()).unwrap();
+    let series: Vec<&str> = r["traces"][0]["series"].as_array().unwrap().iter().filter_map(|s| s["name"].as_str()).collect();
+    assert_eq!(series, ["Tank2_Level", "Уровень_2"], "{r}");
+    let w = &r["writes"][0];
+    assert_eq!((w["operand"].as_str(), w["name"].as_str()), (Some("VW20/INT"), Some("Уровень_2")), "{w}");
+    let html = std::fs::read_to_string(dir.join("r.html")).unwrap();
+    assert!(html.contains("Уровень_2 (<code>VW20/INT</code>)"), "the HTML writes table names the tag");
+}
