@@ -170,8 +170,9 @@ pub fn open(s: &mut Session, bench: &Bench) -> Result<Vec<String>> {
         }
     }
     for (dev, file_name) in &bench.tags {
-        let i = s.index(dev).map_err(|e| within(e, format!("bench {file}, tags for {dev}")))?;
-        s.load_tags(i, &bench.dir.join(file_name)).map_err(|e| within(e, format!("bench {file}, tags for {dev}")))?;
+        let at = || crate::msg!("tags-bench-tags", file = file.as_str(), device = dev.as_str()).to_string();
+        let i = s.index(dev).map_err(|e| within(e, at()))?;
+        s.load_tags(i, &bench.dir.join(file_name)).map_err(|e| within(e, at()))?;
     }
     for (i, w) in bench.wires.iter().enumerate() {
         super::setup::wire(s, w).map_err(|e| within(e, format!("bench {file}, wire {} `{w}`", i + 1)))?;
