@@ -248,7 +248,9 @@ fn a_profile_names_its_tag_file_beside_itself() {
 #[test]
 fn a_misspelt_cyrillic_or_chinese_name_gets_the_nearest_name_as_typed() {
     let dir = world("near");
-    for (typed, near) in [("Уровен_2", "Уровень_2 (VW20/INT)"), ("уровнь_2", "Уровень_2"), ("电机速", "电机速度 (VW300/INT)")] {
+    for (typed, near) in
+        [("Уровен_2", "Уровень_2 (VW20/INT)"), ("уровнь_2", "Уровень_2"), ("电机速", "电机速度 (VW300/INT)")]
+    {
         let line = format!("get {typed}");
         let o = plcsh(&dir, true).args(["-c", &line]).output().unwrap();
         let v = common::json_lines(&o);
@@ -303,10 +305,8 @@ fn a_refusal_points_at_the_column_of_what_was_typed() {
         ("use fx; watch Fx_Motor Х1 X78 count=1", "8"),
     ];
     for (line, at) in cases {
-        let o = plcsh(&dir, true)
-            .args(["--device", "fx=sim-fx:FX3U", "--tags", "fx=fx.csv", "-c", line])
-            .output()
-            .unwrap();
+        let o =
+            plcsh(&dir, true).args(["--device", "fx=sim-fx:FX3U", "--tags", "fx=fx.csv", "-c", line]).output().unwrap();
         let v = common::json_lines(&o);
         let e = &v.last().unwrap_or_else(|| panic!("{line}: {}", common::both(&o)))["error"];
         let col = e["column"].as_u64().unwrap_or_else(|| panic!("{line}: no column: {e}")) as usize;
@@ -338,8 +338,20 @@ const BENCH_KEYS: &[(&str, bool)] = &[
 /// `lab.toml`'s keys: none takes an operand (criteria are the grader's Lua, which takes names
 /// like any script; a lab's names come from its bench's `[tags]`).
 const LAB_KEYS: &[&str] = &[
-    "title", "bench", "devices", "snapshot", "starter", "reference", "grader", "device", "budget", "points",
-    "accepts", "shared", "language", "grants",
+    "title",
+    "bench",
+    "devices",
+    "snapshot",
+    "starter",
+    "reference",
+    "grader",
+    "device",
+    "budget",
+    "points",
+    "accepts",
+    "shared",
+    "language",
+    "grants",
 ];
 
 /// The keys a file accepts, as serde lists them refusing an unknown one.
@@ -402,18 +414,33 @@ fn data_sets_keep_names_and_load_by_name() {
     assert!(o.status.success(), "{}", common::both(&o));
     let text = std::fs::read_to_string(dir.join("s.toml")).unwrap();
     assert!(text.contains("operand = \"VW20/INT\", type = \"INT\", value = 5, name = \"Уровень_2\""), "{text}");
-    assert!(text.contains("{ operand = \"VW0\", type = \"WORD\", value = 9 }"), "no name for an operand without a tag: {text}");
+    assert!(
+        text.contains("{ operand = \"VW0\", type = \"WORD\", value = 9 }"),
+        "no name for an operand without a tag: {text}"
+    );
     // The same names on other addresses: the set goes where the names are now.
     std::fs::write(dir.join("moved.csv"), "name;address;type\nTank2_Level;VD300;REAL\nУровень_2;VW22;INT\n").unwrap();
     let o = common::plcsh()
         .current_dir(&dir)
-        .args(["--time", "stepped", "--json", "--tags", "moved.csv", "-c", "data load s.toml; get VD300/REAL VW22 VW20 VW0"])
+        .args([
+            "--time",
+            "stepped",
+            "--json",
+            "--tags",
+            "moved.csv",
+            "-c",
+            "data load s.toml; get VD300/REAL VW22 VW20 VW0",
+        ])
         .output()
         .unwrap();
     let v = common::json_lines(&o);
     let last = v.last().unwrap_or_else(|| panic!("{}", common::both(&o)));
     let values: Vec<&serde_json::Value> = last["values"].as_array().unwrap().iter().map(|x| &x["value"]).collect();
-    assert_eq!(values, [&serde_json::json!(12.5), &serde_json::json!(5), &serde_json::json!(0), &serde_json::json!(9)], "{last}");
+    assert_eq!(
+        values,
+        [&serde_json::json!(12.5), &serde_json::json!(5), &serde_json::json!(0), &serde_json::json!(9)],
+        "{last}"
+    );
     // `data diff` names what differs.
     let o = plcsh(&dir, false).args(["-c", "set Уровень_2=6; data diff s.toml"]).output().unwrap();
     let out = common::both(&o);
@@ -456,7 +483,8 @@ fn traces_and_reports_label_by_name() {
     let o = plcsh(&dir, false).args(["run", "r.lua"]).output().unwrap();
     assert!(o.status.success(), "{}", common::both(&o));
     let r: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(dir.join("r.json")).unwrap()).unwrap();
-    let series: Vec<&str> = r["traces"][0]["series"].as_array().unwrap().iter().filter_map(|s| s["name"].as_str()).collect();
+    let series: Vec<&str> =
+        r["traces"][0]["series"].as_array().unwrap().iter().filter_map(|s| s["name"].as_str()).collect();
     assert_eq!(series, ["Tank2_Level", "Уровень_2"], "{r}");
     let w = &r["writes"][0];
     assert_eq!((w["operand"].as_str(), w["name"].as_str()), (Some("VW20/INT"), Some("Уровень_2")), "{w}");

@@ -472,7 +472,8 @@ fn tag_names_are_topics_payloads_and_write_targets() {
         let t = t.to_string();
         move |g: &[(String, Vec<u8>, bool)]| g.iter().any(|(x, _, _)| *x == t)
     };
-    for t in ["plcsh/line/a/Tank2_Level", "plcsh/line/a/Уровень_2", "plcsh/line/a/电机速度", "plcsh/line/a/VW104"] {
+    for t in ["plcsh/line/a/Tank2_Level", "plcsh/line/a/Уровень_2", "plcsh/line/a/电机速度", "plcsh/line/a/VW104"]
+    {
         wait_for(&got, t, on(t));
     }
     let payload = |t: &str| {
@@ -480,7 +481,11 @@ fn tag_names_are_topics_payloads_and_write_targets() {
         json(&g.iter().find(|(x, _, _)| x == t).unwrap_or_else(|| panic!("{t}")).1)
     };
     let p = payload("plcsh/line/a/Tank2_Level");
-    assert_eq!((p["name"].as_str(), p["operand"].as_str(), p["type"].as_str()), (Some("Tank2_Level"), Some("VD200/REAL"), Some("REAL")), "{p}");
+    assert_eq!(
+        (p["name"].as_str(), p["operand"].as_str(), p["type"].as_str()),
+        (Some("Tank2_Level"), Some("VD200/REAL"), Some("REAL")),
+        "{p}"
+    );
     let p = payload("plcsh/line/a/电机速度");
     assert_eq!((p["name"].as_str(), p["operand"].as_str()), (Some("电机速度"), Some("VW102/INT")), "{p}");
     let p = payload("plcsh/line/a/VW104");
@@ -513,7 +518,11 @@ fn tag_names_are_topics_payloads_and_write_targets() {
     let by = |id: &str| r.iter().find(|x| x["id"] == id).unwrap_or_else(|| panic!("{id}: {r:?}")).clone();
     let c = by("cyrillic");
     assert_eq!(c["ok"], true, "{c}");
-    assert_eq!((c["writes"][0]["operand"].as_str(), c["writes"][0]["name"].as_str()), (Some("VW100/INT"), Some("Уровень_2")), "{c}");
+    assert_eq!(
+        (c["writes"][0]["operand"].as_str(), c["writes"][0]["name"].as_str()),
+        (Some("VW100/INT"), Some("Уровень_2")),
+        "{c}"
+    );
     assert_eq!(by("any-case")["ok"], true);
     let n = by("not-allowed");
     assert_eq!((n["ok"].as_bool(), n["error"]["kind"].as_str()), (Some(false), Some("refused")), "{n}");

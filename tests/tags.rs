@@ -513,7 +513,8 @@ fn fx_programs_with_symbols_run_like_programs_with_addresses() {
     let dir = world("fx-differential");
     let mut compared = 0;
     for folder in ["scripts", "fuzz/corpus/fx_il"] {
-        let mut files: Vec<PathBuf> = std::fs::read_dir(root.join(folder)).unwrap().map(|e| e.unwrap().path()).collect();
+        let mut files: Vec<PathBuf> =
+            std::fs::read_dir(root.join(folder)).unwrap().map(|e| e.unwrap().path()).collect();
         files.sort();
         for f in files.into_iter().filter(|f| f.extension().is_some_and(|e| e == "il")) {
             let file = f.file_name().unwrap().to_string_lossy().into_owned();
@@ -530,14 +531,19 @@ fn fx_programs_with_symbols_run_like_programs_with_addresses() {
             std::fs::write(&csv_path, utf16le_bom(&csv)).unwrap();
             let table = plcsh::profile::tags::load(&csv_path, None, &space).unwrap_or_else(|p| panic!("{file}: {p}"));
             let a = Loaded::load(&declared, &file, model).unwrap_or_else(|e| panic!("{file}: {e}\n{declared}"));
-            let b = Loaded::load_with_tags(&named, &file, model, Some(&table)).unwrap_or_else(|e| panic!("{file}: {e}"));
+            let b =
+                Loaded::load_with_tags(&named, &file, model, Some(&table)).unwrap_or_else(|e| panic!("{file}: {e}"));
             assert_eq!(a.prog.code, want.prog.code, "{file}: VAR_GLOBAL version compiles to other instructions");
             assert_eq!(b.prog.code, want.prog.code, "{file}: tag-file version compiles to other instructions");
             assert_eq!(b.prog.pos, want.prog.pos, "{file}: tag-file version: other source lines");
             // The block above the list moves its lines down by the block's, no more.
             let shift = tags.len() as u32 + 2;
             let moved: Vec<u32> = want.prog.pos.iter().map(|p| if p.line > 0 { p.line + shift } else { 0 }).collect();
-            assert_eq!(a.prog.pos.iter().map(|p| p.line).collect::<Vec<_>>(), moved, "{file}: VAR_GLOBAL version's lines");
+            assert_eq!(
+                a.prog.pos.iter().map(|p| p.line).collect::<Vec<_>>(),
+                moved,
+                "{file}: VAR_GLOBAL version's lines"
+            );
             let kept = Loaded::load(&b.text, &file, model).unwrap_or_else(|e| panic!("{file}: kept: {e}\n{}", b.text));
             assert_eq!(kept.prog.code, want.prog.code, "{file}: the kept list");
             let t0 = run_fx(want, model, 400);
@@ -558,8 +564,12 @@ fn fx_load_errors_name_the_unknown_symbol_and_the_nearest_tag() {
     let model = plcsh::fx::model::Model::find("FX2N").unwrap();
     let prog = "VAR_GLOBAL\n  Start_Button AT %X0 : BOOL;\n  Motor_Run AT %Y0 : BOOL;\nEND_VAR\nLD Start_Button\nOUT Motr_Run\n";
     let e = Loaded::load(prog, "p.il", model).unwrap_err();
-    assert!(e.message.starts_with("p.il:6:5: ") && e.message.contains("Motr_Run") && e.message.contains("Motor_Run"), "{e}");
-    let e = Loaded::load("VAR_GLOBAL\n  Пуск AT %X0 : BOOL;\nEND_VAR\nLD Пуск\nMOV K1 Рецепт\n", "q.il", model).unwrap_err();
+    assert!(
+        e.message.starts_with("p.il:6:5: ") && e.message.contains("Motr_Run") && e.message.contains("Motor_Run"),
+        "{e}"
+    );
+    let e = Loaded::load("VAR_GLOBAL\n  Пуск AT %X0 : BOOL;\nEND_VAR\nLD Пуск\nMOV K1 Рецепт\n", "q.il", model)
+        .unwrap_err();
     assert!(e.message.starts_with("q.il:5:8: ") && e.message.contains("`Рецепт`"), "{e}");
     let e = Loaded::load("VAR_GLOBAL\n  X_1 AT %X9 : BOOL;\nEND_VAR\nLD X_1\n", "r.il", model).unwrap_err();
     assert!(e.message.starts_with("r.il:2:3: tag `X_1`"), "{e}");

@@ -185,7 +185,8 @@ impl DataSet {
         out.push_str(&format!("operands = [{}]\n", list(&self.set.operands).join(", ")));
         out.push_str("values = [\n");
         for e in &self.set.values {
-            let name = e.name.as_ref().map(|n| format!(", name = {}", toml::Value::String(n.clone()))).unwrap_or_default();
+            let name =
+                e.name.as_ref().map(|n| format!(", name = {}", toml::Value::String(n.clone()))).unwrap_or_default();
             out.push_str(&format!(
                 "    {{ operand = {}, type = {}, value = {}{name} }},\n",
                 toml::Value::String(e.operand.clone()),

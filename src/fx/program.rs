@@ -838,7 +838,11 @@ fn symbol(file: &str, tags: &crate::tags::TagTable, (t, p): &mut (String, Pos)) 
         *t = tag.address.clone();
     } else if constant(t).is_none() {
         if let Err(e) = operand::parse_one(t) {
-            let e = engine::symbols::unknown_symbol(tags, t, OperandError { message: e.message.clone(), hint: e.hint.clone() });
+            let e = engine::symbols::unknown_symbol(
+                tags,
+                t,
+                OperandError { message: e.message.clone(), hint: e.hint.clone() },
+            );
             let mut x = load_err(file, *p, e.message);
             if let Some(h) = e.hint {
                 x = x.hint(h);

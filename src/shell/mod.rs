@@ -7,8 +7,8 @@
 //! knows the hook, not the language.
 
 pub mod commands;
-pub mod edits;
 pub mod complete;
+pub mod edits;
 pub mod files;
 pub mod helper;
 pub mod lex;
@@ -116,11 +116,7 @@ type Folded = (String, Vec<(String, String)>, edits::Edits);
 
 /// [`fold_operands`], leaving alone also the words `keep` marks (tag names and words that the
 /// spelling would not make operands: `names::unfolded_words`).
-fn fold_operands_except(
-    cmd: &str,
-    text: &str,
-    keep: impl FnOnce(&[(usize, &str)]) -> Vec<bool>,
-) -> Option<Folded> {
+fn fold_operands_except(cmd: &str, text: &str, keep: impl FnOnce(&[(usize, &str)]) -> Vec<bool>) -> Option<Folded> {
     if text.is_ascii() && !text.contains('%') {
         return None;
     }

@@ -9,7 +9,8 @@ use crate::fx::plc::Mode;
 use crate::output::Outcome;
 use crate::shell::{lex, Args, Shell};
 
-pub const USAGE: &str = "sim program load FILE.il [tags=FILE.csv] | sim program unload | sim program | sim cpu run|stop | sim stop";
+pub const USAGE: &str =
+    "sim program load FILE.il [tags=FILE.csv] | sim program unload | sim program | sim cpu run|stop | sim stop";
 
 /// True when the current device is a simulated FX PLC.
 pub fn current_is_fx_sim(sh: &mut Shell) -> bool {
