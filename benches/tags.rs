@@ -23,7 +23,7 @@ fn main() {
         csv.push_str(&format!("{name},VW{},INT,tag {i}\n", (i % 2000) * 2));
     }
     let table = TagTable::parse(csv.as_bytes(), "bench.csv", None).unwrap();
-    let bound = plcsh::tags::BoundTable::bind(table.clone(), &space).unwrap();
+    let bound = plcsh::names::Names::resolve(table.clone(), &space).unwrap();
     let names: Vec<String> = table.iter().map(|t| t.name.clone()).collect();
     let upper: Vec<String> = names.iter().map(|n| n.to_uppercase()).collect();
     let operands: Vec<String> = table.iter().map(|t| t.address.clone()).collect();
@@ -48,8 +48,8 @@ fn main() {
             }),
         ),
         (
-            "name → operand, bound table  bound.get(n)",
-            Box::new(|i| bound.get(&names[i % TAGS]).map_or(0, |(_, o)| o.bits as usize)),
+            "name → operand, bound names  Names::get(n)",
+            Box::new(|i| bound.get(&names[i % TAGS]).map_or(0, |n| n.op.bits as usize)),
         ),
     ];
     let mut best = vec![f64::MAX; cases.len()];

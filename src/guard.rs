@@ -72,6 +72,10 @@ pub struct Written {
     pub old: Option<Value>,
     /// The value after: the one written, or read back after a family operation.
     pub new: Option<Value>,
+    /// The operand's tag name: never set here (the guard sees operands only, design guide
+    /// "Names are a layer over operands"); the report fills it from the device's names.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub name: Option<String>,
     /// The device's or the rules' refusal, when the write did not happen.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub refused: Option<String>,
@@ -224,6 +228,7 @@ impl Guarded {
                     action: action.clone(),
                     old,
                     new: None,
+                    name: None,
                     refused: None,
                 };
                 self.unsettled.push(Unsettled { entry, op });
@@ -300,6 +305,7 @@ impl Guarded {
                 action: None,
                 old: old.as_ref().and_then(|o| o.get(i).copied()),
                 new: refused.is_none().then_some(*v),
+                name: None,
                 refused: refused.map(|e| e.message.to_string()),
             });
         }

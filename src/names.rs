@@ -32,13 +32,15 @@ pub struct Named {
     pub comment: String,
 }
 
-/// A device's names: both ways, name → operand and operand → name.
+/// A device's names: both ways, name → operand and operand → name. The names and their index
+/// are the tag table's ([`TagTable::position`]); what this adds is the binding to the device's
+/// operands, `list[i]` for the table's tag `i` (one place per table: `crate::tags` module docs).
 #[derive(Debug, Default)]
 pub struct Names {
     /// The file the table came from (for `help NAME` and messages).
     pub file: String,
+    table: TagTable,
     list: Vec<Named>,
-    by_name: HashMap<String, u32>,
     by_op: HashMap<Operand, u32>,
     /// What let the table load but deserves a look (overlapping addresses), `file:line: …`.
     pub warnings: Vec<String>,
@@ -66,19 +68,25 @@ impl Names {
         for t in table.iter() {
             let op = t.resolve(space)?;
             let i = n.list.len() as u32;
-            n.by_name.insert(fold(&t.name), i);
             n.by_op.entry(op).or_insert(i);
             n.list.push(Named { name: t.name.clone(), op, operand: space.name(&op), comment: t.comment.clone() });
         }
+        n.table = table;
         Ok(n)
     }
 
-    /// The tag called `name` (any case).
+    /// The tag called `name` (any case): the table's index, then the operand bound to it — a
+    /// lookup, no parse (benches/tags.rs, BENCHMARKS.md "Tags").
     pub fn get(&self, name: &str) -> Option<&Named> {
         if self.list.is_empty() {
             return None;
         }
-        self.by_name.get(&fold(name)).map(|&i| &self.list[i as usize])
+        self.table.position(name).map(|i| &self.list[i])
+    }
+
+    /// The tag table the names come from (its tags in file order, with their lines).
+    pub fn table(&self) -> &TagTable {
+        &self.table
     }
 
     /// The tag that is exactly `op` (address and view), for output.

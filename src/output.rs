@@ -266,10 +266,12 @@ pub fn write_error(w: &mut dyn Write, style: Style, cmd: &str, e: &Error, line: 
         serde_json::to_writer(&mut *w, &JsonErr { ok: false, cmd, error: e })?;
         return writeln!(w);
     }
+    // The column is a byte offset in the line; the caret goes under it on a terminal, where a
+    // Chinese character takes two columns (UAX #11) and a Cyrillic letter one.
     if let (Some(line), Some(col)) = (line, e.column) {
-        if col <= line.chars().count() {
+        if let Some(before) = line.get(..col) {
             writeln!(w, "  {line}")?;
-            writeln!(w, "  {}^", " ".repeat(col))?;
+            writeln!(w, "  {}^", " ".repeat(unicode_width::UnicodeWidthStr::width(before)))?;
         }
     }
     let (red, reset) = if style.color { ("\x1b[31m", "\x1b[0m") } else { ("", "") };

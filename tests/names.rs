@@ -27,6 +27,8 @@ Count_Pv;VD400;DINT;
 Pto_Table;VB3001;BYTE;
 Hsc_Table;VB3009;BYTE;
 电机速度;VW300;INT;电机
+Уровень_2;VW20;INT;уровень в баке 2
+启动按钮;I0.2;BOOL;启动
 ";
 
 /// The UMPK trainer's tags.
@@ -173,7 +175,7 @@ fn every_row_works_with_names_in_the_repl_one_shot_and_lua() {
 fn lua_reads_and_writes_by_name_and_loads_tags() {
     let dir = world("lua");
     let code = r#"
-        assert(plc:tags_load("plc.csv") == 12)
+        assert(plc:tags_load("plc.csv") == 14)
         plc.Conveyor_Run = true
         plc["Мотор_1_Пуск"] = 1
         plc:set{Tank2_Level = 12.5}
@@ -237,4 +239,255 @@ fn a_profile_names_its_tag_file_beside_itself() {
     assert_eq!(last["values"][0]["name"], "Press_Force", "{last}");
     assert_eq!(last["values"][0]["operand"], "VW10/INT", "{last}");
     assert_eq!(last["values"][0]["value"], -5, "{last}");
+}
+
+/// A misspelt Cyrillic or Chinese name is searched among the names as typed: the K2 manual's
+/// Cyrillic spelling (`ВW0` is `VW0`) is read only where it makes an operand, so `Уровен_2`
+/// is not turned into a Latin-lettered word before "did you mean". In the REPL, one-shot and
+/// Lua (through the shell and through the device handle).
+#[test]
+fn a_misspelt_cyrillic_or_chinese_name_gets_the_nearest_name_as_typed() {
+    let dir = world("near");
+    for (typed, near) in
+        [("Уровен_2", "Уровень_2 (VW20/INT)"), ("уровнь_2", "Уровень_2"), ("电机速", "电机速度 (VW300/INT)")]
+    {
+        let line = format!("get {typed}");
+        let o = plcsh(&dir, true).args(["-c", &line]).output().unwrap();
+        let v = common::json_lines(&o);
+        assert!(!o.status.success(), "{}", common::both(&o));
+        let e = &v[0]["error"];
+        assert!(e["message"].as_str().unwrap_or("").contains(&format!("`{typed}`")), "{typed}: {e}");
+        assert!(e["hint"].as_str().unwrap_or("").contains(&format!("did you mean {near}")), "{typed}: {e}");
+        let child = plcsh(&dir, false)
+            .stdin(std::process::Stdio::piped())
+            .stdout(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .unwrap();
+        let o = common::output_with_input(child, format!("{line}\n").as_bytes());
+        let out = common::both(&o);
+        assert!(out.contains(typed) && out.contains(&format!("did you mean {near}")), "REPL `{line}`:\n{out}");
+        for code in [format!("lua plcsh.exec([==[{line}]==])"), format!("lua plc:get([==[{typed}]==])")] {
+            let o = plcsh(&dir, false).args(["-c", &code]).output().unwrap();
+            let out = common::both(&o);
+            assert!(!o.status.success() && out.contains(&format!("did you mean {near}")), "`{code}`:\n{out}");
+        }
+    }
+    // The manual's spelling still reads where it makes an operand, beside a name.
+    let o = plcsh(&dir, true).args(["-c", "set ВW0=В#16#12; get ВW0 Уровень_2"]).output().unwrap();
+    let v = common::json_lines(&o);
+    assert!(o.status.success(), "{}", common::both(&o));
+    let last = v.last().unwrap();
+    assert_eq!(last["values"][0]["operand"], "VW0", "{last}");
+    assert_eq!(last["values"][0]["value"], 18, "{last}");
+    assert_eq!(last["values"][1]["name"], "Уровень_2", "{last}");
+}
+
+/// A refusal points at the column of what was typed, though the command ran with each name
+/// written as its operand (`Start_Button` → `I0.1`, a shorter text) and the manual's Cyrillic
+/// spelling read as Latin (`Х0` → `X0`, fewer bytes): per family, the K2 simulator's `sim`,
+/// the UMPK's `umpk`, the drive's `servo`, and the FX's operands. The JSON column is a byte
+/// offset in the line; the caret under the text line counts terminal columns (a Chinese
+/// character is two).
+#[test]
+fn a_refusal_points_at_the_column_of_what_was_typed() {
+    let dir = world("columns");
+    std::fs::write(dir.join("fx.csv"), "name,address,comment\nFx_Start,X0,\nFx_Motor,Y0,\n").unwrap();
+    let cases = [
+        ("sim input Start_Button freq=1kQ", "freq=1kQ"),
+        ("sim quad Start_Button Encoder_B freq=1kHz dir=zz", "dir=zz"),
+        ("sim input 启动按钮 freq=1kQ", "freq=1kQ"),
+        ("sim retain Speeds[2] VQ9", "VQ9"),
+        ("umpk trainer monitor Key_3 I99", "I99"),
+        ("servo read Axis_Pos nonsuch", "nonsuch"),
+        ("servo sim fault abort Axis_Ctl 16#zz", "16#zz"),
+        ("use fx; get Fx_Start Х0 Fx_Motor X99", "99"),
+        ("use fx; watch Fx_Motor Х1 X78 count=1", "8"),
+    ];
+    for (line, at) in cases {
+        let o =
+            plcsh(&dir, true).args(["--device", "fx=sim-fx:FX3U", "--tags", "fx=fx.csv", "-c", line]).output().unwrap();
+        let v = common::json_lines(&o);
+        let e = &v.last().unwrap_or_else(|| panic!("{line}: {}", common::both(&o)))["error"];
+        let col = e["column"].as_u64().unwrap_or_else(|| panic!("{line}: no column: {e}")) as usize;
+        assert!(line.get(col..).is_some_and(|t| t.starts_with(at)), "{line}: column {col}, not at `{at}`: {e}");
+    }
+    // The caret, under the Chinese name's line.
+    let line = "sim input 启动按钮 freq=1kQ";
+    let o = plcsh(&dir, false).args(["-c", line]).output().unwrap();
+    let out = common::both(&o);
+    let caret = out.lines().find(|l| l.trim() == "^").unwrap_or_else(|| panic!("{out}"));
+    assert_eq!(caret.find('^'), Some(2 + "sim input ".len() + 8 + 1), "{out}");
+}
+
+/// The keys of a bench file (`--bench`, a lab's `bench`) and of `lab.toml`, each with whether it
+/// takes operands. A key added to either fails
+/// [`every_bench_and_lab_key_that_takes_an_operand_takes_names`] until it is classified here —
+/// and, when it takes operands, until the bench below gives it names.
+const BENCH_KEYS: &[(&str, bool)] = &[
+    ("name", false),
+    ("current", false),
+    ("devices", false),
+    ("wires", true),
+    ("init", true),
+    ("programs", false),
+    ("faults", true),
+    ("tags", false),
+];
+
+/// `lab.toml`'s keys: none takes an operand (criteria are the grader's Lua, which takes names
+/// like any script; a lab's names come from its bench's `[tags]`).
+const LAB_KEYS: &[&str] = &[
+    "title",
+    "bench",
+    "devices",
+    "snapshot",
+    "starter",
+    "reference",
+    "grader",
+    "device",
+    "budget",
+    "points",
+    "accepts",
+    "shared",
+    "language",
+    "grants",
+];
+
+/// The keys a file accepts, as serde lists them refusing an unknown one.
+fn keys_listed(out: &str) -> Vec<String> {
+    let list = out.split("expected one of").nth(1).unwrap_or_else(|| panic!("no key list in: {out}"));
+    let list = list.lines().next().unwrap_or("");
+    let mut keys: Vec<String> = list.split(',').map(|k| k.trim().trim_matches('`').to_string()).collect();
+    keys.sort();
+    keys
+}
+
+/// A bench's wires, initial values and injected faults take the names of its `[tags]`; Lua's
+/// `plcsh.wire` takes them too.
+#[test]
+fn every_bench_and_lab_key_that_takes_an_operand_takes_names() {
+    let dir = world("bench");
+    std::fs::write(dir.join("unknown.toml"), "zzz = 1\n[devices]\nplc = \"sim:K205-16DT\"\n").unwrap();
+    let o = common::plcsh().current_dir(&dir).args(["--bench", "unknown.toml", "-c", "get VW0"]).output().unwrap();
+    let mut want: Vec<String> = BENCH_KEYS.iter().map(|k| k.0.to_string()).collect();
+    want.sort();
+    assert_eq!(keys_listed(&common::both(&o)), want, "a bench key is not classified in BENCH_KEYS");
+    std::fs::create_dir_all(dir.join("lab")).unwrap();
+    std::fs::write(dir.join("lab/lab.toml"), "title = \"x\"\nzzz = 1\n").unwrap();
+    let o = common::plcsh().current_dir(&dir).args(["lab", "check", "lab"]).output().unwrap();
+    let mut want: Vec<String> = LAB_KEYS.iter().map(|k| k.to_string()).collect();
+    want.sort();
+    assert_eq!(keys_listed(&common::both(&o)), want, "a lab.toml key is not classified in LAB_KEYS");
+    // Every operand-taking key, with names.
+    let bench = "wires = [\"plc:Motor_Out -> plc:Start_Button\"]\n\
+                 init = [\"plc:Уровень_2=7\", \"plc:电机速度=-3\"]\n\
+                 [devices]\nplc = \"sim:K205-16DT\"\n[tags]\nplc = \"plc.csv\"\n\
+                 [[faults]]\ndevice = \"plc\"\nspec = \"no-reply on Уровень_2 after=1h times=1\"\n";
+    assert!(BENCH_KEYS.iter().filter(|k| k.1).all(|k| bench.contains(k.0)), "a row for every key that takes operands");
+    std::fs::write(dir.join("named.toml"), bench).unwrap();
+    let o = common::plcsh()
+        .current_dir(&dir)
+        .args(["--time", "stepped", "--bench", "named.toml", "-c"])
+        .arg("sim wires; sim faults; get Уровень_2 电机速度; lua plcsh.wire('plc:Мотор_1_Пуск -> plc:I0.3')")
+        .output()
+        .unwrap();
+    let out = common::both(&o);
+    assert!(o.status.success(), "{out}");
+    assert!(out.contains("plc:Q0.0 -> plc:I0.1"), "wires: {out}");
+    assert!(out.contains("no-reply on VB20..VB21"), "faults: {out}");
+    assert!(out.contains("Уровень_2 (VW20/INT)") && out.contains("电机速度 (VW300/INT)"), "init: {out}");
+    assert!(out.lines().any(|l| l.starts_with("Уровень_2") && l.contains(" 7 ")), "init: {out}");
+    assert!(out.contains("plc:Q0.1 -> plc:I0.3"), "plcsh.wire: {out}");
+}
+
+/// `data save` keeps each operand's tag name beside it; a set saved by name loads by name
+/// (where the tags put the name now); `data diff` shows the names; a set written before
+/// names (no `name` keys) still loads and compares.
+#[test]
+fn data_sets_keep_names_and_load_by_name() {
+    let dir = world("data");
+    let o = plcsh(&dir, false)
+        .args(["-c", "set Tank2_Level=12.5, Уровень_2=5, VW0=9; data save s.toml Tank2_Level Уровень_2 VW0"])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", common::both(&o));
+    let text = std::fs::read_to_string(dir.join("s.toml")).unwrap();
+    assert!(text.contains("operand = \"VW20/INT\", type = \"INT\", value = 5, name = \"Уровень_2\""), "{text}");
+    assert!(
+        text.contains("{ operand = \"VW0\", type = \"WORD\", value = 9 }"),
+        "no name for an operand without a tag: {text}"
+    );
+    // The same names on other addresses: the set goes where the names are now.
+    std::fs::write(dir.join("moved.csv"), "name;address;type\nTank2_Level;VD300;REAL\nУровень_2;VW22;INT\n").unwrap();
+    let o = common::plcsh()
+        .current_dir(&dir)
+        .args([
+            "--time",
+            "stepped",
+            "--json",
+            "--tags",
+            "moved.csv",
+            "-c",
+            "data load s.toml; get VD300/REAL VW22 VW20 VW0",
+        ])
+        .output()
+        .unwrap();
+    let v = common::json_lines(&o);
+    let last = v.last().unwrap_or_else(|| panic!("{}", common::both(&o)));
+    let values: Vec<&serde_json::Value> = last["values"].as_array().unwrap().iter().map(|x| &x["value"]).collect();
+    assert_eq!(
+        values,
+        [&serde_json::json!(12.5), &serde_json::json!(5), &serde_json::json!(0), &serde_json::json!(9)],
+        "{last}"
+    );
+    // `data diff` names what differs.
+    let o = plcsh(&dir, false).args(["-c", "set Уровень_2=6; data diff s.toml"]).output().unwrap();
+    let out = common::both(&o);
+    assert!(out.contains("Уровень_2 (VW20/INT)"), "{out}");
+    let o = plcsh(&dir, true).args(["-c", "set Уровень_2=6; data diff s.toml"]).output().unwrap();
+    let last = common::json_lines(&o).pop().unwrap();
+    assert_eq!(last["differences"][1]["name"], "Уровень_2", "{last}");
+    assert!(last["differences"][2].get("name").is_none(), "{last}");
+    // A file from before names: read as it was.
+    let old = text.replace(", name = \"Tank2_Level\"", "").replace(", name = \"Уровень_2\"", "");
+    std::fs::write(dir.join("old.toml"), old).unwrap();
+    let o = plcsh(&dir, false).args(["-c", "data load old.toml; get VW20"]).output().unwrap();
+    assert!(o.status.success() && common::stdout(&o).contains("5"), "{}", common::both(&o));
+}
+
+/// Series and records are labelled by name: a trace's CSV header, and a commissioning report's
+/// curves and its log of writes (the guard logs operands; the report adds the name).
+#[test]
+fn traces_and_reports_label_by_name() {
+    let dir = world("report");
+    let o = plcsh(&dir, false)
+        .args(["-c", "trace Tank2_Level Уровень_2 VW0 every=10ms for=30ms to=t.csv"])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", common::both(&o));
+    let csv = std::fs::read_to_string(dir.join("t.csv")).unwrap();
+    let header = csv.lines().next().unwrap_or("");
+    assert!(header.contains("Tank2_Level") && header.contains("Уровень_2") && header.contains("VW0"), "{header}");
+    let script = r#"
+        local commission = require("commission")
+        local plc = plcsh.device("plc")
+        local c = commission.new("names", { report = "r.html" })
+        c:step("by name", function()
+          plc["Уровень_2"] = 5
+          c:trace { plc, "Tank2_Level", "Уровень_2", every = 10, ["for"] = 30, title = "t" }
+        end)
+        c:run()
+    "#;
+    std::fs::write(dir.join("r.lua"), script).unwrap();
+    let o = plcsh(&dir, false).args(["run", "r.lua"]).output().unwrap();
+    assert!(o.status.success(), "{}", common::both(&o));
+    let r: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(dir.join("r.json")).unwrap()).unwrap();
+    let series: Vec<&str> =
+        r["traces"][0]["series"].as_array().unwrap().iter().filter_map(|s| s["name"].as_str()).collect();
+    assert_eq!(series, ["Tank2_Level", "Уровень_2"], "{r}");
+    let w = &r["writes"][0];
+    assert_eq!((w["operand"].as_str(), w["name"].as_str()), (Some("VW20/INT"), Some("Уровень_2")), "{w}");
+    let html = std::fs::read_to_string(dir.join("r.html")).unwrap();
+    assert!(html.contains("Уровень_2 (<code>VW20/INT</code>)"), "the HTML writes table names the tag");
 }

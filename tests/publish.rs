@@ -435,6 +435,106 @@ fn writes_from_the_broker_only_to_allowed_operands() {
     );
 }
 
+/// Names end to end (docs/tags.md, "How names appear"): a device with a tag file publishes an
+/// operand that has a tag on the tag's topic, with `name` beside `operand` in the payload (an
+/// operand without a tag keeps its own), and a write from the broker that names a tag reaches
+/// its address — through the profile's allow list of addresses, refused when the address is
+/// not on it — and is published on the name's topic.
+#[test]
+fn tag_names_are_topics_payloads_and_write_targets() {
+    if !mosquitto_present() {
+        return;
+    }
+    let d = dir("names");
+    let port = free_port();
+    let _broker = Broker::start(&d, port);
+    std::fs::write(
+        d.join("a.csv"),
+        "name;address;type;comment\nTank2_Level;VD200;REAL;\nУровень_2;VW100;INT;уровень\n电机速度;VW102;INT;\n",
+    )
+    .unwrap();
+    let cfg = d.join("devices.toml");
+    std::fs::write(
+        &cfg,
+        "[devices.a]\nurl = \"sim:K205-16DT\"\ntags = \"a.csv\"\nallow = [\"VW100\", \"VD200\"]\n[fleets.line]\ndevices = [\"a\"]\n",
+    )
+    .unwrap();
+    let got = subscribe(port, "names-watch");
+    let mut child = plcsh()
+        .args(["--config", cfg.to_str().unwrap(), "--json", "publish", "-f", "line", "--accept-writes"])
+        .args(["--broker", &format!("mqtt://127.0.0.1:{port}"), "--every", "20ms", "--count", "1000"])
+        .args(["Tank2_Level", "Уровень_2", "电机速度", "VW104"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let on = |t: &str| {
+        let t = t.to_string();
+        move |g: &[(String, Vec<u8>, bool)]| g.iter().any(|(x, _, _)| *x == t)
+    };
+    for t in ["plcsh/line/a/Tank2_Level", "plcsh/line/a/Уровень_2", "plcsh/line/a/电机速度", "plcsh/line/a/VW104"]
+    {
+        wait_for(&got, t, on(t));
+    }
+    let payload = |t: &str| {
+        let g = got.lock().unwrap();
+        json(&g.iter().find(|(x, _, _)| x == t).unwrap_or_else(|| panic!("{t}")).1)
+    };
+    let p = payload("plcsh/line/a/Tank2_Level");
+    assert_eq!(
+        (p["name"].as_str(), p["operand"].as_str(), p["type"].as_str()),
+        (Some("Tank2_Level"), Some("VD200/REAL"), Some("REAL")),
+        "{p}"
+    );
+    let p = payload("plcsh/line/a/电机速度");
+    assert_eq!((p["name"].as_str(), p["operand"].as_str()), (Some("电机速度"), Some("VW102/INT")), "{p}");
+    let p = payload("plcsh/line/a/VW104");
+    assert_eq!((p.get("name"), p["operand"].as_str()), (None, Some("VW104")), "{p}");
+    assert!(!got.lock().unwrap().iter().any(|(t, _, _)| t == "plcsh/line/a/VW100"), "a named operand has one topic");
+    // Writes by name.
+    let mut opts = rumqttc::MqttOptions::new("names-writer", "127.0.0.1", port);
+    opts.set_keep_alive(Duration::from_secs(5));
+    let (client, mut conn) = rumqttc::Client::new(opts, 10);
+    std::thread::spawn(move || for _ in conn.iter() {});
+    let send = |body: &str| {
+        client.publish("plcsh/line/a/set", rumqttc::QoS::AtLeastOnce, false, body.as_bytes().to_vec()).unwrap()
+    };
+    send(r#"{"operand":"Уровень_2","value":-77,"id":"cyrillic"}"#);
+    send(r#"{"operand":"tank2_level","value":12.5,"id":"any-case"}"#);
+    send(r#"{"operand":"电机速度","value":5,"id":"not-allowed"}"#);
+    send(r#"{"operand":"Уровен_2","value":1,"id":"misspelt"}"#);
+    let replies = |g: &[(String, Vec<u8>, bool)]| -> Vec<serde_json::Value> {
+        g.iter().filter(|(t, _, _)| t == "plcsh/line/a/reply").map(|(_, p, _)| json(p)).collect()
+    };
+    wait_for(&got, "four replies", |g| replies(g).len() >= 4);
+    let published = |t: &'static str, want: serde_json::Value| {
+        move |g: &[(String, Vec<u8>, bool)]| g.iter().any(|(x, p, _)| x == t && json(p)["value"] == want)
+    };
+    wait_for(&got, "the level written by name", published("plcsh/line/a/Уровень_2", serde_json::json!(-77)));
+    wait_for(&got, "the REAL written by name", published("plcsh/line/a/Tank2_Level", serde_json::json!(12.5)));
+    plcsh::core::platform::interrupt_child(&child);
+    let _ = child.wait();
+    let r = replies(&got.lock().unwrap());
+    let by = |id: &str| r.iter().find(|x| x["id"] == id).unwrap_or_else(|| panic!("{id}: {r:?}")).clone();
+    let c = by("cyrillic");
+    assert_eq!(c["ok"], true, "{c}");
+    assert_eq!(
+        (c["writes"][0]["operand"].as_str(), c["writes"][0]["name"].as_str()),
+        (Some("VW100/INT"), Some("Уровень_2")),
+        "{c}"
+    );
+    assert_eq!(by("any-case")["ok"], true);
+    let n = by("not-allowed");
+    assert_eq!((n["ok"].as_bool(), n["error"]["kind"].as_str()), (Some(false), Some("refused")), "{n}");
+    let m = by("misspelt");
+    assert_eq!(m["ok"], false);
+    assert!(m["error"]["hint"].as_str().unwrap_or("").contains("Уровень_2"), "did you mean: {m}");
+    assert!(
+        !got.lock().unwrap().iter().any(|(t, p, _)| t == "plcsh/line/a/电机速度" && json(p)["value"] != 0),
+        "the address off the allow list was not written"
+    );
+}
+
 #[test]
 fn without_accept_writes_the_broker_writes_nothing() {
     if !mosquitto_present() {

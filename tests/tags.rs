@@ -423,3 +423,157 @@ fn a_snapshot_of_a_program_with_a_tag_file_restores_without_the_file() {
     assert!(common::stdout(&o).contains("VW10  5"), "{}", common::both(&o));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// An FX list with its operands replaced by generated names (Latin, Cyrillic and Chinese), and
+/// the tags (name, address, natural type). FX lists separate operands with spaces, so each
+/// operand text of the engine's lexer is split as the FX front end splits it; constants
+/// (`K50`, `H1F`) and the step numbers of a list export stay as written.
+fn symbolize_fx(text: &str, space: &dyn OperandSpace) -> (String, Vec<(String, String, String)>) {
+    let stmts = source::parse(text).expect("the list lexes");
+    let mut lines: Vec<Vec<char>> = text.split('\n').map(|l| l.chars().collect()).collect();
+    let mut tags: Vec<(String, String, String)> = Vec::new();
+    let mut edits: Vec<(usize, usize, usize, String)> = Vec::new();
+    for s in &stmts {
+        let Stmt::Instr { operands, .. } = s else { continue };
+        for o in operands {
+            let mut col = o.pos.col as usize - 1;
+            for part in o.text.split(' ') {
+                let width = part.chars().count();
+                let at = col;
+                col += width + 1;
+                let constant = part.starts_with(['K', 'H', 'k', 'h']) && !part.contains(['X', 'Y', 'M', 'S']);
+                if part.is_empty() || constant {
+                    continue;
+                }
+                let Ok(ops) = space.parse(part) else { continue };
+                if ops.len() != 1 {
+                    continue;
+                }
+                let line = o.pos.line as usize - 1;
+                let address = part.to_ascii_uppercase();
+                let i = match tags.iter().position(|t| t.1 == address) {
+                    Some(i) => i,
+                    None => {
+                        let prefix = ["Tag", "Тег", "标签"][tags.len() % 3];
+                        tags.push((format!("{prefix}_{address}"), address.clone(), ops[0].dtype.name().to_string()));
+                        tags.len() - 1
+                    }
+                };
+                edits.push((line, at, width, tags[i].0.clone()));
+            }
+        }
+    }
+    edits.sort_by_key(|e| std::cmp::Reverse((e.0, e.1)));
+    for (line, col, width, name) in edits {
+        lines[line].splice(col..col + width, name.chars());
+    }
+    let out: Vec<String> = lines.into_iter().map(|l| l.into_iter().collect()).collect();
+    (out.join("\n"), tags)
+}
+
+/// Runs an FX PLC for `n` steps of 10 ms with inputs X0–X7 that change every few steps (the
+/// same for every version) and returns its outputs, relays, states, timers, counters and
+/// data registers after each.
+fn run_fx(program: plcsh::fx::program::Loaded, model: &'static plcsh::fx::model::Model, n: usize) -> Vec<Vec<u32>> {
+    use plcsh::fx::operand::Area;
+    let clock = Clock::stepped();
+    let mut m = plcsh::fx::memory::Memory::with_clock(model, clock.clone());
+    m.load_program(program);
+    let mut trace = Vec::new();
+    for i in 0..n {
+        let pattern = (i / 3 % 256) as u8 ^ (i * 37 / 11 % 256) as u8;
+        for x in 0..8u16 {
+            m.set_input(x, pattern >> x & 1 == 1);
+        }
+        clock.step(Duration::from_millis(10));
+        m.advance();
+        let mut all = Vec::new();
+        for (area, count) in [(Area::Y, 64u16), (Area::M, 1024), (Area::S, 64), (Area::TS, 256), (Area::CS, 256)] {
+            all.extend((0..count).map(|k| u32::from(m.bit(area, k).unwrap_or(false))));
+        }
+        for (area, count) in [(Area::TN, 256u16), (Area::CN, 256), (Area::D, 512)] {
+            all.extend((0..count).map(|k| m.word(area, k).unwrap_or(0)));
+        }
+        trace.push(all);
+    }
+    trace
+}
+
+/// The FX front end reads symbols as the engine's loaders do: every FX list of the project
+/// rewritten with generated names — declared in a `VAR_GLOBAL` block, and in a UTF-16 CSV
+/// beside it — compiles to the instructions of the list written with addresses and runs the
+/// same, step for step; the list kept for a snapshot (the tag file's tags appended) loads again
+/// without the file.
+#[test]
+fn fx_programs_with_symbols_run_like_programs_with_addresses() {
+    use plcsh::fx::program::Loaded;
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let model = plcsh::fx::model::Model::find("FX3U").unwrap();
+    let space = plcsh::fx::space::FxSpace::new(model, plcsh::fx::space::Proto::Port);
+    let dir = world("fx-differential");
+    let mut compared = 0;
+    for folder in ["scripts", "fuzz/corpus/fx_il"] {
+        let mut files: Vec<PathBuf> =
+            std::fs::read_dir(root.join(folder)).unwrap().map(|e| e.unwrap().path()).collect();
+        files.sort();
+        for f in files.into_iter().filter(|f| f.extension().is_some_and(|e| e == "il")) {
+            let file = f.file_name().unwrap().to_string_lossy().into_owned();
+            let text = plcsh::core::encoding::read_source(&f).unwrap();
+            let Ok(want) = Loaded::load(&text, &file, model) else { continue }; // a K2 list, or a bad one
+            let (named, tags) = symbolize_fx(&text, &space);
+            assert!(!tags.is_empty(), "{file}: no operand found");
+            let block: String = tags.iter().map(|(n, a, t)| format!("    {n} AT %{a} : {t};\n")).collect();
+            let declared = format!("VAR_GLOBAL\n{block}END_VAR\n{named}");
+            let csv: String = std::iter::once("Имя;Адрес;Тип\n".to_string())
+                .chain(tags.iter().map(|(n, a, t)| format!("{n};{a};{t}\n")))
+                .collect();
+            let csv_path = dir.join(format!("{file}.csv"));
+            std::fs::write(&csv_path, utf16le_bom(&csv)).unwrap();
+            let table = plcsh::profile::tags::load(&csv_path, None, &space).unwrap_or_else(|p| panic!("{file}: {p}"));
+            let a = Loaded::load(&declared, &file, model).unwrap_or_else(|e| panic!("{file}: {e}\n{declared}"));
+            let b =
+                Loaded::load_with_tags(&named, &file, model, Some(&table)).unwrap_or_else(|e| panic!("{file}: {e}"));
+            assert_eq!(a.prog.code, want.prog.code, "{file}: VAR_GLOBAL version compiles to other instructions");
+            assert_eq!(b.prog.code, want.prog.code, "{file}: tag-file version compiles to other instructions");
+            assert_eq!(b.prog.pos, want.prog.pos, "{file}: tag-file version: other source lines");
+            // The block above the list moves its lines down by the block's, no more.
+            let shift = tags.len() as u32 + 2;
+            let moved: Vec<u32> = want.prog.pos.iter().map(|p| if p.line > 0 { p.line + shift } else { 0 }).collect();
+            assert_eq!(
+                a.prog.pos.iter().map(|p| p.line).collect::<Vec<_>>(),
+                moved,
+                "{file}: VAR_GLOBAL version's lines"
+            );
+            let kept = Loaded::load(&b.text, &file, model).unwrap_or_else(|e| panic!("{file}: kept: {e}\n{}", b.text));
+            assert_eq!(kept.prog.code, want.prog.code, "{file}: the kept list");
+            let t0 = run_fx(want, model, 400);
+            assert_eq!(run_fx(a, model, 400), t0, "{file}: the VAR_GLOBAL version runs differently");
+            assert_eq!(run_fx(b, model, 400), t0, "{file}: the tag-file version runs differently");
+            compared += 1;
+        }
+    }
+    assert!(compared >= 2, "only {compared} FX lists compared");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// An FX list's unknown symbol is refused at its line and column with the nearest tag; a
+/// declaration whose address is no FX operand, at the declaration.
+#[test]
+fn fx_load_errors_name_the_unknown_symbol_and_the_nearest_tag() {
+    use plcsh::fx::program::Loaded;
+    let model = plcsh::fx::model::Model::find("FX2N").unwrap();
+    let prog = "VAR_GLOBAL\n  Start_Button AT %X0 : BOOL;\n  Motor_Run AT %Y0 : BOOL;\nEND_VAR\nLD Start_Button\nOUT Motr_Run\n";
+    let e = Loaded::load(prog, "p.il", model).unwrap_err();
+    assert!(
+        e.message.starts_with("p.il:6:5: ") && e.message.contains("Motr_Run") && e.message.contains("Motor_Run"),
+        "{e}"
+    );
+    let e = Loaded::load("VAR_GLOBAL\n  Пуск AT %X0 : BOOL;\nEND_VAR\nLD Пуск\nMOV K1 Рецепт\n", "q.il", model)
+        .unwrap_err();
+    assert!(e.message.starts_with("q.il:5:8: ") && e.message.contains("`Рецепт`"), "{e}");
+    let e = Loaded::load("VAR_GLOBAL\n  X_1 AT %X9 : BOOL;\nEND_VAR\nLD X_1\n", "r.il", model).unwrap_err();
+    assert!(e.message.starts_with("r.il:2:3: tag `X_1`"), "{e}");
+    // Without symbols a list is refused as before (no unknown-symbol wording).
+    let e = Loaded::load("LD X0\nOUT Motor\n", "s.il", model).unwrap_err();
+    assert!(!e.message.contains("not a tag"), "{e}");
+}

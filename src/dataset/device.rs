@@ -70,7 +70,12 @@ pub fn read(session: &mut Session, dev: usize, asked: Vec<String>, ops: &[Operan
     let values = ops
         .into_iter()
         .zip(values)
-        .map(|((o, operand), v)| Entry { operand, dtype: o.dtype.name().to_string(), value: FileValue::of(o.dtype, v) })
+        .map(|((o, operand), v)| Entry {
+            operand,
+            dtype: o.dtype.name().to_string(),
+            value: FileValue::of(o.dtype, v),
+            name: session.tag_of(dev, &o).map(|t| t.name.clone()),
+        })
         .collect();
     Ok(DataSet { device: identity(session, dev), set: Body { operands: asked, values } })
 }
@@ -102,8 +107,10 @@ fn resolve(session: &Session, dev: usize, set: &DataSet, file: &str) -> Result<V
                 msg!("data-operand-elsewhere", operand = x.operand.as_str(), device = e.name.as_str()).into(),
             ));
         }
-        let target =
-            session.resolve(&format!("{}:{}", e.name, x.operand)).map_err(|err| unknown(err.message.to_string()))?;
+        // Saved by name: loads by name, where the device's tags put it now (an old file, or a
+        // name the device does not have, goes by its operand).
+        let by = x.name.as_deref().filter(|n| session.names(dev).get(n).is_some()).unwrap_or(&x.operand);
+        let target = session.resolve(&format!("{}:{}", e.name, by)).map_err(|err| unknown(err.message.to_string()))?;
         let op = match target.ops.as_slice() {
             [op] if op.dtype == x.data_type() => *op,
             [op] => return Err(unknown(format!("{} is {}", x.operand, op.dtype.name()))),
@@ -129,6 +136,7 @@ pub fn current(session: &mut Session, dev: usize, set: &DataSet, file: &str) -> 
             operand: e.operand.clone(),
             dtype: e.dtype.clone(),
             value: FileValue::of(o.dtype, v),
+            name: session.tag_of(dev, o).map(|t| t.name.clone()),
         })
         .collect();
     Ok(DataSet { device: identity(session, dev), set: Body { operands: set.set.operands.clone(), values } })

@@ -136,6 +136,11 @@ pub struct Entry {
     #[serde(rename = "type")]
     pub dtype: String,
     pub value: FileValue,
+    /// The operand's tag name when the device had one at saving (docs/tags.md): a set saved
+    /// by name loads by name. Absent in files written before names, and for operands without
+    /// a tag.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub name: Option<String>,
 }
 
 impl Entry {
@@ -180,8 +185,10 @@ impl DataSet {
         out.push_str(&format!("operands = [{}]\n", list(&self.set.operands).join(", ")));
         out.push_str("values = [\n");
         for e in &self.set.values {
+            let name =
+                e.name.as_ref().map(|n| format!(", name = {}", toml::Value::String(n.clone()))).unwrap_or_default();
             out.push_str(&format!(
-                "    {{ operand = {}, type = {}, value = {} }},\n",
+                "    {{ operand = {}, type = {}, value = {}{name} }},\n",
                 toml::Value::String(e.operand.clone()),
                 toml::Value::String(e.dtype.clone()),
                 e.value.text()
@@ -265,6 +272,9 @@ impl DataSet {
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Difference {
     pub operand: String,
+    /// The operand's tag name, from either side (`data diff` shows it beside the operand).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub name: Option<String>,
     #[serde(rename = "type")]
     pub dtype: String,
     /// `None` when the left set does not hold the operand.
@@ -291,6 +301,7 @@ pub fn diff(left: &DataSet, right: &DataSet) -> Vec<Difference> {
             Some(o) if o.dtype == e.dtype && o.value.bits(t) == e.value.bits(t) => {}
             other => out.push(Difference {
                 operand: e.operand.clone(),
+                name: e.name.clone().or_else(|| other.and_then(|o| o.name.clone())),
                 dtype: e.dtype.clone(),
                 left: Some(e.value),
                 right: other.map(|o| o.value),
@@ -298,7 +309,13 @@ pub fn diff(left: &DataSet, right: &DataSet) -> Vec<Difference> {
         }
     }
     for e in right.set.values.iter().filter(|e| !l.contains(e.operand.as_str())) {
-        out.push(Difference { operand: e.operand.clone(), dtype: e.dtype.clone(), left: None, right: Some(e.value) });
+        out.push(Difference {
+            operand: e.operand.clone(),
+            name: e.name.clone(),
+            dtype: e.dtype.clone(),
+            left: None,
+            right: Some(e.value),
+        });
     }
     out
 }

@@ -55,25 +55,28 @@ impl<F: Family + ?Sized> Symbolic<'_, F> {
                 hint: e.hint,
             });
         }
-        f(text).map_err(|e| {
-            let word = text.trim();
-            let looks_like_name = name::check(word).is_ok() || !word.is_ascii();
-            if !looks_like_name {
-                return e;
-            }
-            let near = self.tags.suggest(word);
-            if near.is_empty() {
-                OperandError {
-                    message: msg!("tags-unknown-symbol", name = word).into(),
-                    hint: e.hint.or(Some(e.message)),
-                }
-            } else {
-                OperandError {
-                    message: msg!("tags-unknown-symbol-near", name = word, nearest = near.join(", ")).into(),
-                    hint: None,
-                }
-            }
-        })
+        f(text).map_err(|e| unknown_symbol(self.tags, text, e))
+    }
+}
+
+/// A word of a program with symbols that is neither a tag of `tags` nor an operand (`e` is
+/// the family's refusal): when it reads as a name, refused as an unknown symbol naming the
+/// nearest tags; else the family's refusal as it is. For every loader with symbols (the
+/// engine's families through [`Symbolic`], the FX front end before its translation).
+pub fn unknown_symbol(tags: &TagTable, text: &str, e: OperandError) -> OperandError {
+    let word = text.trim();
+    let looks_like_name = name::check(word).is_ok() || !word.is_ascii();
+    if !looks_like_name {
+        return e;
+    }
+    let near = tags.suggest(word);
+    if near.is_empty() {
+        OperandError { message: msg!("tags-unknown-symbol", name = word).into(), hint: e.hint.or(Some(e.message)) }
+    } else {
+        OperandError {
+            message: msg!("tags-unknown-symbol-near", name = word, nearest = near.join(", ")).into(),
+            hint: None,
+        }
     }
 }
 
@@ -126,19 +129,22 @@ fn blank(text: &str, blocks: &[std::ops::Range<usize>]) -> String {
     out
 }
 
-/// Compiles IL `text` (named `file` in messages) for `fam`: the engine's loader
-/// ([`compile::compile`]) with the program's own `VAR_GLOBAL` tags and those of `tags` (a tag
-/// file given beside it). A problem of the declarations or of the merged table is refused as
-/// the tag table refuses it (`file:line:column: …`, every problem a cause).
-pub fn compile_with_tags<F: Family + ?Sized>(
-    text: &str,
+/// A program's symbols: its text with the `VAR_GLOBAL` blocks blanked (lines and columns
+/// stay the file's) and the tags of those blocks merged with `tags` (a tag file given beside
+/// the program). `None` for a program without either: it is an address program and loads
+/// exactly as before. `address` says why a tag's address is not an operand of the family
+/// (`Err(problem)`); such a tag is refused at its declaration, in the program or in the tag
+/// file, as is a problem of the declarations (`file:line:column: …`, every problem a cause)
+/// and a name declared in both.
+pub fn declarations<'t>(
+    text: &'t str,
     file: &str,
-    fam: &F,
     tags: Option<&TagTable>,
-) -> Result<Program> {
+    address: &dyn Fn(&str) -> std::result::Result<(), String>,
+) -> Result<Option<(std::borrow::Cow<'t, str>, TagTable)>> {
     let declared = mentions_var_global(text);
     if !declared && tags.is_none_or(|t| t.is_empty()) {
-        return compile::compile(text, file, fam);
+        return Ok(None);
     }
     let mut problems = Problems::new(file);
     let (own, blocks) = if declared { iec::blocks(text, &mut problems) } else { (Vec::new(), Vec::new()) };
@@ -174,7 +180,7 @@ pub fn compile_with_tags<F: Family + ?Sized>(
     // Every tag's address must be an operand of the family: refused at its declaration (in
     // the program or in the tag file).
     for (i, t) in table.iter().enumerate() {
-        if let Err(e) = fam.operand(&t.address) {
+        if let Err(problem) = address(&t.address) {
             let origin = if i < own_count { file } else { tags.map_or(file, |x| x.origin()) };
             return Err(Error::new(
                 ErrorKind::Syntax,
@@ -185,22 +191,36 @@ pub fn compile_with_tags<F: Family + ?Sized>(
                     column = t.column as i64,
                     name = t.name.as_str(),
                     address = t.address.as_str(),
-                    problem = e.message.as_str()
+                    problem = problem.as_str()
                 ),
             )
             .operand(t.address.clone()));
         }
-    }
-    if table.is_empty() {
-        // Only a block without declarations: the program is an address program.
-        return compile::compile(&blank(text, &blocks), file, fam);
     }
     let text = if blocks.is_empty() {
         std::borrow::Cow::Borrowed(text)
     } else {
         std::borrow::Cow::Owned(blank(text, &blocks))
     };
-    compile::compile(&text, file, &Symbolic { fam, tags: &table })
+    Ok(Some((text, table)))
+}
+
+/// Compiles IL `text` (named `file` in messages) for `fam`: the engine's loader
+/// ([`compile::compile`]) with the program's own `VAR_GLOBAL` tags and those of `tags` (a tag
+/// file given beside it), read by [`declarations`].
+pub fn compile_with_tags<F: Family + ?Sized>(
+    text: &str,
+    file: &str,
+    fam: &F,
+    tags: Option<&TagTable>,
+) -> Result<Program> {
+    let address = |a: &str| fam.operand(a).map(|_| ()).map_err(|e| e.message);
+    match declarations(text, file, tags, &address)? {
+        None => compile::compile(text, file, fam),
+        // Only a block without declarations: the program is an address program.
+        Some((text, table)) if table.is_empty() => compile::compile(&text, file, fam),
+        Some((text, table)) => compile::compile(&text, file, &Symbolic { fam, tags: &table }),
+    }
 }
 
 /// [`compile_with_tags`] without a tag file: what every loader calls (`engine::compile`).

@@ -824,6 +824,41 @@ fn suggest(m: &str) -> Option<&'static str> {
 
 /// Translates an FX list (named `file` in messages) into engine IL.
 pub fn translate(text: &str, file: &str, model: &'static Model) -> Result<Translation> {
+    translate_with(text, file, model, None)
+}
+
+/// An operand of a list with symbols as the FX grammar reads it: a tag's address (the tag's
+/// position kept, so errors name the symbol's place); a word that is neither a tag, a
+/// constant nor an FX operand, and reads as a name, is an unknown symbol naming the nearest
+/// tags ([`engine::symbols::unknown_symbol`]).
+fn symbol(file: &str, tags: &crate::tags::TagTable, (t, p): &mut (String, Pos)) -> Result<()> {
+    if let Some(tag) = tags.get(t) {
+        *t = tag.address.clone();
+    } else if constant(t).is_none() {
+        if let Err(e) = operand::parse_one(t) {
+            let e = engine::symbols::unknown_symbol(
+                tags,
+                t,
+                OperandError { message: e.message.clone(), hint: e.hint.clone() },
+            );
+            let mut x = load_err_text(file, *p, e.message);
+            if let Some(h) = e.hint {
+                x = x.hint(h);
+            }
+            return Err(x);
+        }
+    }
+    Ok(())
+}
+
+/// [`translate`] for a list with symbols: `tags` (the program's `VAR_GLOBAL` block and a tag
+/// file beside it, [`engine::symbols::declarations`]) name its operands.
+pub fn translate_with(
+    text: &str,
+    file: &str,
+    model: &'static Model,
+    tags: Option<&crate::tags::TagTable>,
+) -> Result<Translation> {
     let stmts = source::parse(text).map_err(|e| load_err_text(file, e.pos, e.message))?;
     let mut b = Builder { file, model, lines: Vec::new() };
     for s in stmts {
@@ -847,6 +882,11 @@ pub fn translate(text: &str, file: &str, model: &'static Model) -> Result<Transl
         } else {
             (mnemonic, pos)
         };
+        if let Some(tags) = tags {
+            for op in ops.iter_mut() {
+                symbol(file, tags, op)?;
+            }
+        }
         if !b.statement(&m, &ops, at)? {
             break;
         }
@@ -965,9 +1005,35 @@ pub struct Loaded {
 impl Loaded {
     /// Translates and compiles FX list `text` (named `file` in messages) for `model`.
     pub fn load(text: &str, file: &str, model: &'static Model) -> Result<Loaded> {
-        // Refusals quote the list's text: its control characters are written out.
-        let tr = translate(text, file, model).map_err(crate::core::encoding::printable_error)?;
+        Loaded::load_with_tags(text, file, model, None)
+    }
+
+    /// [`Loaded::load`] for a list with symbols: the names of its `VAR_GLOBAL` block and of
+    /// `tags` (a tag file beside it) stand for their addresses, as the K2's and the UMPK's
+    /// loaders read them ([`engine::symbols`]). The list is kept with the tag file's tags
+    /// appended as a `VAR_GLOBAL` block after its last line, so a snapshot loads it without
+    /// the file and its line numbers stay.
+    pub fn load_with_tags(
+        text: &str,
+        file: &str,
+        model: &'static Model,
+        tags: Option<&crate::tags::TagTable>,
+    ) -> Result<Loaded> {
         let fam = FxFamily { model };
+        let address = |a: &str| fam.resolve(a).map(|_| ()).map_err(|e| e.message);
+        let declared = engine::symbols::declarations(text, file, tags, &address)?;
+        let (list, symbols) = match &declared {
+            Some((list, table)) => (list.as_ref(), Some(table).filter(|t| !t.is_empty())),
+            None => (text, None),
+        };
+        let kept = match tags {
+            Some(t) if !t.is_empty() => {
+                format!("{text}\n{}", crate::tags::export::to_iec(t, &FxSpace::new(model, Proto::Port))?)
+            }
+            _ => text.to_string(),
+        };
+        // Refusals quote the list's text: its control characters are written out.
+        let tr = translate_with(list, file, model, symbols).map_err(crate::core::encoding::printable_error)?;
         let mut prog = engine::compile(&tr.text, file, &fam).map_err(|e| tr.remap(file, e))?;
         // Listings and faults name the FX source line.
         for p in prog.pos.iter_mut() {
@@ -982,7 +1048,7 @@ impl Loaded {
         };
         let cpu = Cpu::new(&prog);
         let name = std::path::Path::new(file).file_name().map_or(file.into(), |n| n.to_string_lossy().into_owned());
-        Ok(Loaded { prog, cpu, source: name, instructions, text: text.to_string() })
+        Ok(Loaded { prog, cpu, source: name, instructions, text: kept })
     }
 
     /// STOP → RUN: edge memories and the engine's state start afresh.

@@ -80,8 +80,17 @@ pub fn apply(session: &mut Session, device: &str, payload: &[u8]) -> Json {
     let item = SetItem { operand: cmd.operand.clone(), value: cmd.value.clone(), column: 0, value_column: 0 };
     match session.set(&[item]) {
         Ok(w) => {
-            let written: Vec<Json> =
-                w.iter().map(|(_, r)| json!({"operand": r.operand, "value": r.value, "type": r.dtype})).collect();
+            // A tag's name beside its operand, as every reading carries it (docs/tags.md).
+            let written: Vec<Json> = w
+                .iter()
+                .map(|(_, r)| {
+                    let mut x = json!({"operand": r.operand, "value": r.value, "type": r.dtype});
+                    if let Some(n) = &r.name {
+                        x["name"] = Json::from(n.as_str());
+                    }
+                    x
+                })
+                .collect();
             json!({"ok": true, "device": device, "operand": cmd.operand, "id": cmd.id, "writes": written})
         }
         Err(e) => refuse(e),

@@ -420,6 +420,11 @@ fn writes(h: &mut String, r: &Report, lang: Lang) {
                 Some(a) => format!("<code>{}</code> ({})", escape(&w.operand), escape(a)),
                 None => format!("<code>{}</code>", escape(&w.operand)),
             };
+            // A tag's name and its operand, as every reading shows them (docs/tags.md).
+            let operand = match &w.name {
+                Some(n) => format!("{} ({operand})", escape(n)),
+                None => operand,
+            };
             let new = match &w.refused {
                 Some(why) => format!(
                     "<span class=\"failed\">{}</span>",

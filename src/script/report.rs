@@ -45,7 +45,15 @@ pub fn write(sh: &mut Shell, run: Run, begun: &Begun, path: &str) -> crate::core
     crate::shell::files::check_write(&sh.write_rule, path)?;
     let twin = crate::report::json_path(std::path::Path::new(path));
     crate::shell::files::check_write(&sh.write_rule, &twin.display().to_string())?;
-    let (writes, writes_not_kept) = sh.session.write_log_entries();
+    let (mut writes, writes_not_kept) = sh.session.write_log_entries();
+    // Each write's tag name, from its device's names (the guard logs operands only).
+    for w in &mut writes {
+        let Ok(i) = sh.session.index(&w.device) else { continue };
+        let Ok(ops) = sh.session.entries()[i].device.operands().parse(&w.operand) else { continue };
+        if let [op] = ops.as_slice() {
+            w.name = sh.session.tag_of(i, op).map(|t| t.name.clone());
+        }
+    }
     let devices = sh
         .session
         .entries()

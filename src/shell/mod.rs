@@ -8,6 +8,7 @@
 
 pub mod commands;
 pub mod complete;
+pub mod edits;
 pub mod files;
 pub mod helper;
 pub mod lex;
@@ -106,15 +107,16 @@ fn strip_comment(line: &str) -> &str {
 /// and the words that changed, or `None` when nothing did (or the words cannot be split: the
 /// command then reports that as typed).
 pub(crate) fn fold_operands(cmd: &str, text: &str) -> Option<(String, Vec<(String, String)>)> {
-    fold_operands_except(cmd, text, |_| vec![])
+    fold_operands_except(cmd, text, |_| vec![]).map(|f| (f.0, f.1))
 }
 
-/// [`fold_operands`], leaving alone also the words `keep` marks (tag names: `names::tag_words`).
-fn fold_operands_except(
-    cmd: &str,
-    text: &str,
-    keep: impl FnOnce(&[(usize, &str)]) -> Vec<bool>,
-) -> Option<(String, Vec<(String, String)>)> {
+/// What [`fold_operands_except`] made: the new text, the words that changed, and where each
+/// piece of the new text was typed.
+type Folded = (String, Vec<(String, String)>, edits::Edits);
+
+/// [`fold_operands`], leaving alone also the words `keep` marks (tag names and words that the
+/// spelling would not make operands: `names::unfolded_words`).
+fn fold_operands_except(cmd: &str, text: &str, keep: impl FnOnce(&[(usize, &str)]) -> Vec<bool>) -> Option<Folded> {
     if text.is_ascii() && !text.contains('%') {
         return None;
     }
@@ -126,6 +128,7 @@ fn fold_operands_except(
     }
     let mut out = String::with_capacity(text.len());
     let mut changed = Vec::new();
+    let mut edits = edits::Edits::default();
     let (mut copied, mut k) = (0, 0);
     while k < words.len() {
         if mask[k] {
@@ -141,6 +144,7 @@ fn fold_operands_except(
         out.push_str(&text[copied..start]);
         match crate::core::text::fold_manual_spelling(&text[start..end]) {
             Some((f, c)) => {
+                edits.replaced((start, end), (out.len(), out.len() + f.len()), true);
                 out.push_str(&f);
                 changed.extend(c);
             }
@@ -150,7 +154,7 @@ fn fold_operands_except(
         k = j + 1;
     }
     out.push_str(&text[copied..]);
-    (out != text).then_some((out, changed))
+    (out != text).then_some((out, changed, edits))
 }
 
 /// A usage error from a command with sub-commands whose first word is none of them: the
@@ -292,12 +296,21 @@ impl Shell {
             }
         }
         let folded =
-            fold_operands_except(spec.name, args.text, |words| names::tag_words(&self.session, spec.name, words));
+            fold_operands_except(spec.name, args.text, |words| names::unfolded_words(&self.session, spec.name, words));
+        let typed_args = args;
         let args = Args { text: folded.as_ref().map_or(args.text, |f| f.0.as_str()), offset: args.offset };
         changed.extend(folded.as_ref().map(|f| f.1.clone()).unwrap_or_default());
         // Tag names as their operands, for the commands that read operands themselves.
         let named = names::operands_for(&self.session, spec, args.text);
-        let args = Args { text: named.as_deref().unwrap_or(args.text), offset: args.offset };
+        let folded_args = args;
+        let args = Args { text: named.as_ref().map_or(args.text, |n| n.0.as_str()), offset: args.offset };
+        // A refusal points at what was typed, whatever the rewriting above made of it.
+        let typed_column = |c: usize| {
+            let Some(rel) = c.checked_sub(args.offset).filter(|&r| r <= args.text.len()) else { return c };
+            let rel = named.as_ref().map_or(rel, |n| n.1.typed(folded_args.text, args.text, rel));
+            let rel = folded.as_ref().map_or(rel, |f| f.2.typed(typed_args.text, folded_args.text, rel));
+            args.offset + rel
+        };
         let mut r = match dev {
             Some(dev) => {
                 // The command acts on DEVICE as if it were the current one, for this command only.
@@ -311,6 +324,9 @@ impl Shell {
             }
             None => self.run_spec(spec, args),
         };
+        if let Err((_, e)) = r.as_mut() {
+            e.column = e.column.map(typed_column);
+        }
         if let (false, Ok(o)) = (changed.is_empty(), r.as_mut()) {
             let words: Vec<String> = changed.iter().map(|(a, b)| format!("`{a}` as `{b}`")).collect();
             o.notes.push(format!(

@@ -10,9 +10,12 @@
 //! Text words (paths, names of devices and snapshots, Lua code, quoted words:
 //! [`super::commands::text_words`]) and the words a command's forms spell out are never
 //! names. A name is also never read in the K2 manual's spelling (`Мотор_1_Пуск` keeps its
-//! Cyrillic letters: [`super::fold_operands`] leaves the words this module names alone).
+//! Cyrillic letters: [`super::fold_operands`] leaves the words this module names alone), and
+//! neither is a word that the spelling would not make an operand ([`unfolded_words`]): an
+//! unknown word is first a possible misspelt name.
 
 use super::commands::{self, forms, CommandSpec};
+use super::edits::Edits;
 use super::lex;
 use crate::session::Session;
 
@@ -67,17 +70,55 @@ fn name_spans(session: &Session, default: Option<usize>, word: &str) -> Option<(
     (!spans.is_empty()).then_some((dev, spans))
 }
 
-/// For each of `words` (as [`lex::words`] splits a command's arguments): true when it names a
-/// tag of its device. The manual's spelling is not read in these.
-pub fn tag_words(session: &Session, cmd: &str, words: &[(usize, &str)]) -> Vec<bool> {
+/// For each of `words` (as [`lex::words`] splits a command's arguments): true when the K2
+/// manual's spelling must not be read in it — a word that names a tag of its device, or one
+/// that is no operand once read in that spelling ([`folds_to_no_operand`]). Those words reach
+/// the command as typed, so a misspelt name (`Уровен_2` for `Уровень_2`) is searched among the
+/// names and the operands as the person wrote it, and a refusal quotes what they typed.
+pub fn unfolded_words(session: &Session, cmd: &str, words: &[(usize, &str)]) -> Vec<bool> {
     let default = device_of(session, cmd, words);
-    words.iter().map(|w| name_spans(session, default, w.1).is_some()).collect()
+    words
+        .iter()
+        .map(|w| name_spans(session, default, w.1).is_some() || folds_to_no_operand(session, default, w.1))
+        .collect()
+}
+
+/// True when `word`'s operand part (before `=`, after `device:`) has letters the K2 manual's
+/// spelling would change (`Уровен_2` → `Уpoвeн_2`) and the changed text is still not an
+/// operand of its device nor a value (`В#16#85`): the look-alike rule is for operands the
+/// manual spells in Cyrillic (`ВW0`, `Т5`), and applies only when the folded word is one.
+/// A device that cannot say yet (its link not up) is given the benefit of the doubt.
+fn folds_to_no_operand(session: &Session, default: Option<usize>, word: &str) -> bool {
+    if word.is_ascii() {
+        return false;
+    }
+    let body = &word[..word.find('=').unwrap_or(word.len())];
+    let (dev, body) = match body.find(':').map(|c| (session.index(&body[..c]), c)) {
+        Some((Ok(i), c)) => (i, &body[c + 1..]),
+        _ => match default {
+            Some(i) => (i, body),
+            None => return false,
+        },
+    };
+    if body.is_ascii() {
+        return false;
+    }
+    let Some((folded, _)) = crate::core::text::fold_manual_spelling(body) else { return false };
+    // A value (`В#16#85`), or its head as the manual's scanned text spaces it (`В # 16 # 85`).
+    if crate::core::literal::is_literal_head(&folded) || crate::core::literal::parse_literal(&folded).is_ok() {
+        return false;
+    }
+    match session.entries()[dev].device.operands().parse(&folded) {
+        Ok(_) => false,
+        Err(e) => e.kind != crate::core::ErrorKind::Link,
+    }
 }
 
 /// The arguments of `spec` with every name written as its operand (`sim input Start freq=1kHz`
-/// → `sim input I0.1 freq=1kHz`), for the commands outside [`RESOLVING`]; `None` when no word
-/// names a tag. Text words, the words the forms spell out and option keys are left alone.
-pub fn operands_for(session: &Session, spec: &CommandSpec, text: &str) -> Option<String> {
+/// → `sim input I0.1 freq=1kHz`), for the commands outside [`RESOLVING`], with where each
+/// operand was typed (a refusal's column goes back to the name); `None` when no word names a
+/// tag. Text words, the words the forms spell out and option keys are left alone.
+pub fn operands_for(session: &Session, spec: &CommandSpec, text: &str) -> Option<(String, Edits)> {
     if RESOLVING.contains(&spec.name) || session.entries().iter().all(|e| e.names.is_empty()) {
         return None;
     }
@@ -88,6 +129,7 @@ pub fn operands_for(session: &Session, spec: &CommandSpec, text: &str) -> Option
     let keys: Vec<String> = forms::options(spec, None).into_iter().map(|(k, _)| k).collect();
     let default = device_of(session, spec.name, &words);
     let mut out = String::with_capacity(text.len() + 16);
+    let mut edits = Edits::default();
     let mut copied = 0;
     for (k, &(col, w)) in words.iter().enumerate() {
         if mask[k] || literals.iter().any(|l| l.eq_ignore_ascii_case(w)) {
@@ -101,6 +143,7 @@ pub fn operands_for(session: &Session, spec: &CommandSpec, text: &str) -> Option
         for (a, b) in spans {
             let Some(n) = names.get(&w[a..b]) else { continue };
             out.push_str(&text[copied..col + a]);
+            edits.replaced((col + a, col + b), (out.len(), out.len() + n.operand.len()), false);
             out.push_str(&n.operand);
             copied = col + b;
         }
@@ -109,5 +152,5 @@ pub fn operands_for(session: &Session, spec: &CommandSpec, text: &str) -> Option
         return None;
     }
     out.push_str(&text[copied..]);
-    Some(out)
+    Some((out, edits))
 }

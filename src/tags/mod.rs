@@ -18,6 +18,12 @@
 //! of letters shall not have any significance in identifiers"): `conveyor_run` finds
 //! `Conveyor_Run`, `мотор_1_пуск` finds `Мотор_1_Пуск` ([`name`]).
 //!
+//! One place per table: this module owns a table's names — the file's tags and the index by
+//! name, family-free — and [`crate::names::Names`] owns the binding of those names to one
+//! device's operands (each address resolved once, when the table is attached, and the way
+//! back from an operand to its name), looking names up through this index rather than a copy
+//! of it.
+//!
 //! Every parser here reads outside input: one pass, linear in the file, never panicking,
 //! and every problem is one message with `file:line:column` ([`TagProblem`]).
 
@@ -483,48 +489,5 @@ impl TagTable {
     /// The problems found by [`TagTable::checked`] that let the table load (overlaps).
     pub fn warnings(&self) -> &[TagProblem] {
         &self.warnings
-    }
-}
-
-/// A table bound to one device's family: every tag's operand resolved once, so a name costs a
-/// lookup and no parse (benches/tags.rs, BENCHMARKS.md "Tags").
-#[derive(Clone, Debug)]
-pub struct BoundTable {
-    table: TagTable,
-    operands: Vec<Operand>,
-}
-
-impl BoundTable {
-    /// Resolves every tag of `table` in `space` ([`Tag::resolve`]); the tags that do not
-    /// resolve are the problems, at their lines.
-    pub fn bind(table: TagTable, space: &dyn OperandSpace) -> Result<BoundTable, TagProblems> {
-        let mut operands = Vec::with_capacity(table.len());
-        let mut problems = Vec::new();
-        for t in table.iter() {
-            match t.resolve(space) {
-                Ok(op) => operands.push(op),
-                Err(e) => problems.push(TagProblem {
-                    origin: table.origin().to_string(),
-                    line: t.line,
-                    column: t.column,
-                    message: Msg { id: e.code, text: e.message.clone() },
-                }),
-            }
-        }
-        if problems.is_empty() {
-            Ok(BoundTable { table, operands })
-        } else {
-            Err(TagProblems(problems))
-        }
-    }
-
-    /// The tag of this name and its operand.
-    pub fn get(&self, name: &str) -> Option<(&Tag, Operand)> {
-        let i = self.table.position(name)?;
-        Some((&self.table.tags[i], self.operands[i]))
-    }
-
-    pub fn table(&self) -> &TagTable {
-        &self.table
     }
 }

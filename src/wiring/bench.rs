@@ -20,6 +20,8 @@
 //! ]
 //! [programs]                            # DEVICE = FILE (relative to the bench file)
 //! plc = "machine.il"
+//! [tags]                                # DEVICE = tag file: wires, init and faults may
+//! plc = "machine.csv"                   # use its names (docs/tags.md)
 //!
 //! [[faults]]                            # injected when the bench opens, in order
 //! device = "plc"                        # a PLC: the SPEC of `sim fault` / `sim serve --fault`
@@ -61,6 +63,10 @@ pub struct Bench {
     pub programs: BTreeMap<String, String>,
     #[serde(default)]
     pub faults: Vec<BenchFault>,
+    /// DEVICE = tag file (relative to the bench file): the device's names, attached before the
+    /// wires, values and faults are read, so those may use them (docs/tags.md).
+    #[serde(default)]
+    pub tags: BTreeMap<String, String>,
     /// The file's directory (program paths are relative to it).
     #[serde(skip)]
     pub dir: PathBuf,
@@ -80,6 +86,15 @@ pub struct BenchFault {
 /// the words after `servo sim fault`. Returns the description.
 fn inject(s: &mut Session, f: &BenchFault) -> Result<String> {
     let i = s.index(&f.device)?;
+    // The device's tag names in the spec as their operands (`no-reply on Tank_Level`).
+    let names = s.names(i);
+    let spec: String = if names.is_empty() {
+        f.spec.clone()
+    } else {
+        let words: Vec<&str> = f.spec.split_whitespace().collect();
+        words.iter().map(|w| names.get(w).map_or(*w, |n| n.operand.as_str())).collect::<Vec<_>>().join(" ")
+    };
+    let f = &BenchFault { device: f.device.clone(), spec };
     let dev = &mut s.entry(i).device;
     if let Some(sim) = crate::k2::simulator(dev.as_mut()) {
         let spec =
@@ -152,6 +167,11 @@ pub fn open(s: &mut Session, bench: &Bench) -> Result<Vec<String>> {
             return Err(Error::usage(msg!("bench-not-simulator", file = file.as_str(), name = name, url = url))
                 .hint(msg!("bench-not-simulator-hint")));
         }
+    }
+    for (dev, file_name) in &bench.tags {
+        let at = || crate::msg!("tags-bench-tags", file = file.as_str(), device = dev.as_str()).to_string();
+        let i = s.index(dev).map_err(|e| within(e, at()))?;
+        s.load_tags(i, &bench.dir.join(file_name)).map_err(|e| within(e, at()))?;
     }
     for (i, w) in bench.wires.iter().enumerate() {
         super::setup::wire(s, w)

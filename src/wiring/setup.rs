@@ -43,7 +43,16 @@ fn resolve(s: &mut Session, ep: &super::Endpoint) -> Result<End> {
 
 /// Adds the wire `text` (`plc:Q0.0 -> servo:pulse`, …); returns its description.
 pub fn wire(s: &mut Session, text: &str) -> Result<String> {
-    let decl = super::parse(text)?;
+    let mut decl = super::parse(text)?;
+    // A tag's name for a terminal (`plc:Motor_Out`) is its operand, as everywhere operands go
+    // (Lua's `plcsh.wire`, a bench's `wires`; the shell writes names as operands before).
+    for ep in [&mut decl.from, &mut decl.to] {
+        if let Ok(i) = s.index(&ep.device) {
+            if let Some(n) = s.names(i).get(&ep.terminal) {
+                ep.terminal = n.operand.clone();
+            }
+        }
+    }
     add(s, decl)
 }
 

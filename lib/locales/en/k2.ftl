@@ -226,7 +226,7 @@ wire-nothing-hint = sim wire FROM -> TO adds a wire, e.g. sim wire plc:Q0.0 -> s
 ## Benches: a simulated machine from a file (wiring::bench)
 
 bench-no-faults = { $device } takes no injected faults (only simulated K2 PLCs and drives do)
-bench-shape-hint = a bench has [devices] NAME = "URL", and optional wires = ["A -> B"], init = ["DEV:OP=VALUE"], [programs], [[faults]]
+bench-shape-hint = a bench has [devices] NAME = "URL", and optional wires = ["A -> B"], init = ["DEV:OP=VALUE"], [programs], [tags], [[faults]]
 bench-no-devices = bench { $file }: [devices] is empty
 bench-cannot-read = cannot read the bench file { $file }
 bench-not-simulator = bench { $file }: device { $name } = { $url } is not a simulator

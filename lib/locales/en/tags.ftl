@@ -51,3 +51,4 @@ tags-check-failed = { $file }: { $count ->
     [one] { $count } problem
    *[other] { $count } problems
 }
+tags-bench-tags = bench { $file }, tags for { $device }

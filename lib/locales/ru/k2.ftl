@@ -245,7 +245,7 @@ wire-nothing-hint = sim wire ОТКУДА -> КУДА добавляет сое�
 ## Стенды: симулируемая установка из файла (wiring::bench)
 
 bench-no-faults = { $device } не принимает внесённые неисправности (их принимают только симуляторы ПЛК K2 и сервоприводов)
-bench-shape-hint = в стенде есть [devices] ИМЯ = "URL" и, по желанию, wires = ["A -> B"], init = ["DEV:OP=VALUE"], [programs], [[faults]]
+bench-shape-hint = в стенде есть [devices] ИМЯ = "URL" и, по желанию, wires = ["A -> B"], init = ["DEV:OP=VALUE"], [programs], [tags], [[faults]]
 bench-no-devices = стенд { $file }: раздел [devices] пуст
 bench-cannot-read = не удаётся прочитать файл стенда { $file }
 bench-not-simulator = стенд { $file }: устройство { $name } = { $url } — не симулятор

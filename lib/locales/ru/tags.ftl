@@ -54,3 +54,4 @@ tags-check-failed = { $file }: { $count ->
     [few] { $count } проблемы
    *[many] { $count } проблем
 }
+tags-bench-tags = стенд { $file }, теги для { $device }

@@ -221,7 +221,7 @@ wire-nothing-hint = sim wire 起点 -> 终点 添加接线，例如 sim wire plc
 ## 试验台：来自文件的仿真设备（wiring::bench）
 
 bench-no-faults = { $device } 不接受注入的故障（只有仿真的 K2 PLC 和驱动器接受）
-bench-shape-hint = 试验台文件包含 [devices] 名称 = "URL"，以及可选的 wires = ["A -> B"]、init = ["DEV:OP=VALUE"]、[programs]、[[faults]]
+bench-shape-hint = 试验台文件包含 [devices] 名称 = "URL"，以及可选的 wires = ["A -> B"]、init = ["DEV:OP=VALUE"]、[programs]、[tags]、[[faults]]
 bench-no-devices = 试验台 { $file }：[devices] 为空
 bench-cannot-read = 无法读取试验台文件 { $file }
 bench-not-simulator = 试验台 { $file }：设备 { $name } = { $url } 不是仿真器

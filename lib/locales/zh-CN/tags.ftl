@@ -42,3 +42,4 @@ tags-declared-twice = { $file }:{ $line }:{ $column }: 标签 `{ $name }` 在程
 tags-option-last = tags=FILE 指定标签文件, 放在最后: sim program load FILE.il tags=FILE.csv
 tags-warning = 警告: { $warning }
 tags-check-failed = { $file }: { $count } 个问题
+tags-bench-tags = 台架 { $file }，{ $device } 的标签

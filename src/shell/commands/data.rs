@@ -86,8 +86,13 @@ fn data(sh: &mut Shell, args: Args) -> Result<Outcome> {
             let rows: Vec<Vec<String>> = d
                 .iter()
                 .map(|x| {
+                    // A tag's name and its operand, as every reading shows them (docs/tags.md).
+                    let operand = match &x.name {
+                        Some(n) => format!("{n} ({})", x.operand),
+                        None => x.operand.clone(),
+                    };
                     vec![
-                        x.operand.clone(),
+                        operand,
                         x.dtype.clone(),
                         dataset::Difference::shown(x.left),
                         dataset::Difference::shown(x.right),

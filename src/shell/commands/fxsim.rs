@@ -9,7 +9,8 @@ use crate::fx::plc::Mode;
 use crate::output::Outcome;
 use crate::shell::{lex, Args, Shell};
 
-pub const USAGE: &str = "sim program load FILE.il | sim program unload | sim program | sim cpu run|stop | sim stop";
+pub const USAGE: &str =
+    "sim program load FILE.il [tags=FILE.csv] | sim program unload | sim program | sim cpu run|stop | sim stop";
 
 /// True when the current device is a simulated FX PLC.
 pub fn current_is_fx_sim(sh: &mut Shell) -> bool {
@@ -73,12 +74,26 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
         "program" => match arg(1) {
             None | Some((_, "status")) => None,
             Some((c, "load")) => {
+                // The tag file of the list's symbols after it (`tags=press1.csv`, docs/tags.md).
+                let (args, tag_file) = super::simprogram::tags_option(args)?;
                 let (c2, path) = lex::one_path(&args, 2, "sim program load")?
                     .ok_or_else(|| Error::usage("sim program load needs a file, e.g. scripts/fx_blink.il").column(c))?;
                 sh.session.check_read(&path).map_err(|e| e.device(&name).column(c2))?;
                 let text = crate::core::encoding::read_source(&path)
                     .map_err(|e| Error::io(format!("cannot read {path}: {e}")).device(&name).column(c2))?;
-                let loaded = crate::fx::program::Loaded::load(&text, &path, m.model).map_err(|e| e.device(&name))?;
+                let tags = match &tag_file {
+                    Some((tc, t)) => {
+                        sh.session.check_read(t).map_err(|e| e.device(&name).column(*tc))?;
+                        let space = crate::fx::space::FxSpace::new(m.model, crate::fx::space::Proto::Port);
+                        Some(
+                            crate::profile::tags::load(std::path::Path::new(t), None, &space)
+                                .map_err(|p| p.into_error().device(&name).column(*tc))?,
+                        )
+                    }
+                    None => None,
+                };
+                let loaded = crate::fx::program::Loaded::load_with_tags(&text, &path, m.model, tags.as_ref())
+                    .map_err(|e| e.device(&name))?;
                 let n = loaded.instructions;
                 m.load_program(loaded);
                 Some(format!("{path}: {n} instructions loaded; the PLC restarts in RUN"))
