@@ -1,2 +1,94 @@
 # plcsh messages (zh-CN): lab — 实验、脚本与记录. Same ids and arguments in en, ru and zh-CN
 # (tests/messages.rs).
+
+## Limits of a graded run (core::budget): the verdict names the limit passed.
+budget-exceeded-minutes = 超出 { $n } 分钟仿真时间
+budget-exceeded-seconds = 超出 { $n } 秒仿真时间
+budget-exceeded-instructions = 超出 { $count } 条 Lua 指令
+budget-exceeded-memory = 超出 Lua 内存 { $size }
+budget-size-mib = { $n } MiB
+budget-size-bytes = { $n } 字节
+
+## Verdicts of a graded submission (lab::grader, lab::runner).
+lab-grader-error = 评分程序错误：{ $error }
+lab-runtime-error = 运行错误：{ $error }
+lab-exceeded-write = 写入目录中超出 { $size }
+lab-exceeded-wall = 超出实际时间安全上限 { $seconds } s
+lab-not-graded = 未评分：被 { $cause } 停止
+lab-refused-link = 拒绝：{ $file } 是符号链接：提交的作业只能是自己的文件，不能是链接（请提交文件本身）
+lab-refused-size = 拒绝：提交的作业有 { $n } 字节，超过实验的上限 { $cap }（lab.toml 中的 [budget] submission）
+lab-not-submission-kind = 不是提交的作业：请提交 .lua 脚本或 .il 程序
+lab-not-submission-missing = 不是提交的作业：没有该文件
+lab-not-accepted = 不接受：本实验接受 { $kinds } 作业
+lab-plc-stopped = { $file }:{ $line }：PLC 已停止：{ $error }
+lab-plc-fault-code-at = { $place }：PLC 因故障 { $code }（{ $kind }）停止：{ $error }，位置 `{ $at }`
+lab-plc-fault-code = { $place }：PLC 因故障 { $code }（{ $kind }）停止：{ $error }
+lab-plc-fault-at = { $place }：PLC 停止（{ $kind }）：{ $error }，位置 `{ $at }`
+lab-plc-fault = { $place }：PLC 停止（{ $kind }）：{ $error }
+lab-device-replaced = { $file }：提交的作业关闭或替换了实验的设备 `{ $device }`
+lab-cannot-read = 无法读取 { $file }：{ $error }
+lab-cannot-start-lua = 无法启动 Lua：{ $error }
+lab-opening-devices = 打开实验的设备时
+lab-view = 提交作业自己的文件、实验的共享模块和初始文件以及写入目录
+lab-write-dir-role = 写入目录
+lab-cannot-create-write-dir = 无法为本次运行创建写入目录
+lab-write-dir-not-own = 给定的写入目录不是评分程序自己的目录
+lab-cannot-create-report-dir = 无法创建报告目录：{ $error }
+lab-cannot-create-write-dir-error = 无法创建写入目录：{ $error }
+lab-cannot-start-worker = 无法启动工作进程：{ $error }
+lab-worker-no-report = 工作进程结束（{ $status }）但没有报告
+lab-worker-error = plcsh lab 工作进程：{ $error }
+lab-worker-cannot-write = plcsh lab 工作进程：无法写入 { $file }：{ $error }
+lab-workers-running = 工作进程仍在运行
+lab-no-executable = 找不到 plcsh 可执行文件
+lab-bytes-more = … 还有 { $n } 字节
+
+## `lab grade`, `lab new`, `lab check` (lab::runner, lab, cli::lab, shell::commands::lab).
+lab-cannot-list = 无法列出 { $dir }
+lab-no-such-submission = { $file }：没有该文件或目录
+lab-hint-submissions = 请给出提交的作业文件（.lua、.il）或包含它们的目录
+lab-no-submissions = 没有找到提交的作业（.lua 或 .il 文件）
+lab-grade-stopped = lab grade 在所有作业评分完成之前被 { $cause } 停止（已评分 { $done } 份）
+lab-hint-grade-again = 请再次运行以对所有作业评分
+lab-cannot-write = 无法写入 { $file }
+lab-new-exists = { $dir } 已存在
+lab-hint-new-name = 请给出新的目录名：plcsh lab new NAME
+lab-cannot-create = 无法创建 { $dir }
+lab-cannot-create-empty-dir = 无法为空程序创建目录
+lab-cannot-write-empty = 无法写入空程序
+lab-not-in-sandbox = 在沙箱运行中不能使用 `lab`（它会启动进程并写入目录）
+lab-not-in-this-run = 本次运行中不能使用 `lab`
+lab-hint-check-table = `plcsh lab check` 的表格列出了每条评分标准的结果
+lab-bad-jobs = jobs={ $jobs }：工作进程数须 ≥ 1
+lab-needs-sub = `lab` 需要 new、check 或 grade 及其参数
+
+## lab.toml (lab::config).
+lab-cannot-read-file = 无法读取 { $file }
+lab-hint-lab-folder = 实验是一个包含 lab.toml 的目录；`plcsh lab new NAME` 会写入一个示例
+lab-cannot-open = 无法打开 { $dir }
+lab-no-such-file = { $file }：{ $key } = "{ $name }"：{ $dir } 中没有该文件
+lab-file-outside = { $file }：{ $key } = "{ $name }" 在实验目录之外
+lab-hint-files-inside = 实验的文件都放在它的目录中，这样实验可以整体复制
+lab-devices-one-way = { $file }：请用 bench = "FILE" 或 [devices] 表给出设备（二选一）
+lab-hint-devices-example = 例如 [devices] plc = "sim:K205-16DT"
+lab-budget-not-time = { $file }：[budget] { $key } = "{ $text }" 不是 plcsh 能读取的时间
+lab-budget-not-time-why = { $file }：[budget] { $key } = "{ $text }" 不是 plcsh 能读取的时间：{ $error }
+lab-hint-write-time = 请写 "{ $time }"（单位 h、min、s、ms）
+lab-hint-write-time-or = 请写 "{ $time }" 或 "{ $seconds }"（单位 h、min、s、ms）
+lab-hint-time-example = 例如 "10min"、"90s"、"1h"（单位 h、min、s、ms）
+lab-budget-not-positive = { $file }：[budget] { $key } = "{ $text }" 必须大于零
+lab-budget-not-size = { $file }：[budget] { $key } = "{ $text }" 不是大小
+lab-hint-write-size = 请写 "{ $size }"（单位 B、KiB、MiB、GiB）
+lab-hint-size-example = 例如 "256MiB"（单位 B、KiB、MiB、GiB）
+lab-budget-instructions-zero = { $file }：[budget] instructions 必须大于零
+lab-not-a-grant = { $file }：grants = ["{ $grant }"]：不是实验可以授权的操作
+lab-hint-did-you-mean-grant = 是否想输入 "{ $near }"？grants：{ $grants }
+lab-hint-grants = grants：{ $grants }
+lab-points-negative = { $file }：[points] "{ $key }" = { $value }：分数须为 ≥ 0 的数
+lab-not-a-device = { $file }：device = "{ $device }" 不是实验的设备
+lab-hint-did-you-mean-device = 是否想输入 device = "{ $near }"？实验的设备：{ $devices }
+lab-hint-devices = 实验的设备：{ $devices }
+lab-not-a-kind = { $file }：accepts = ["{ $kind }"]：不是作业类型
+lab-hint-kinds = 类型：{ $kinds }
+lab-shared-not-lua = { $file }：shared = ["{ $name }"]：共享模块是 .lua 文件
+lab-hint-shared-example = 例如 shared = ["helpers.lua"]（作业中再调用 require("helpers")）
