@@ -349,6 +349,69 @@ fn a_whole_lab_in_three_languages() {
     let _ = std::fs::remove_dir_all(&root);
 }
 
+/// A lab grades in its `language` (lab.toml), and the bytes of its grades do not depend on
+/// the grader's locale: the same Russian lab and submissions graded under a Chinese locale and
+/// under `C` give identical output, with the verdicts that are not `passed`/`failed` (a
+/// runtime error, a file that is not a submission) in Russian and their `code` in `--json`.
+#[test]
+fn a_russian_lab_grades_in_russian_whatever_the_graders_locale() {
+    let root = std::env::temp_dir().join(format!("plcsh-lang-ru-lab-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&root);
+    std::fs::create_dir_all(&root).unwrap();
+    let dir = root.join("lab");
+    let d = dir.to_str().unwrap();
+    let (code, out, err) = run(&["lab", "new", d], &[]);
+    assert_eq!(code, Some(0), "{out}{err}");
+    let toml = dir.join("lab.toml");
+    let text = std::fs::read_to_string(&toml).unwrap();
+    std::fs::write(&toml, format!("language = \"ru\"\n{text}")).unwrap();
+    let subs = root.join("subs");
+    std::fs::create_dir_all(&subs).unwrap();
+    std::fs::copy(dir.join("reference.il"), subs.join("good.il")).unwrap();
+    std::fs::copy(dir.join("starter.il"), subs.join("bad.il")).unwrap();
+    // An instruction the PLC does not have: the program does not load (a runtime error).
+    std::fs::write(subs.join("broken.il"), "LD      %I0.0\nFROB    %Q0.0\n").unwrap();
+    std::fs::write(subs.join("notes.txt"), "not a program").unwrap();
+    let files: Vec<String> =
+        ["good.il", "bad.il", "broken.il", "notes.txt"].iter().map(|f| subs.join(f).display().to_string()).collect();
+    let grade = |json: bool, env: &[(&str, &str)]| {
+        let mut args = vec!["lab", "grade", d];
+        if json {
+            args.insert(0, "--json");
+        }
+        args.extend(files.iter().map(|f| f.as_str()));
+        let (_, out, err) = run(&args, env);
+        (out, err)
+    };
+    let zh = grade(false, &[("PLCSH_LANG", ""), ("LANG", "zh_CN.UTF-8")]);
+    let c = grade(false, &[("PLCSH_LANG", ""), ("LANG", "C")]);
+    let en = grade(false, &[("PLCSH_LANG", "en")]);
+    assert_eq!(zh, c, "the grades differ with the grader's locale");
+    assert_eq!(en, c, "the grades differ with PLCSH_LANG");
+    let out = &c.0;
+    let row = |student: &str| {
+        let line = out.lines().find(|l| l.starts_with(&format!("| {student} "))).unwrap_or_else(|| panic!("{out}"));
+        cells(line)[4].clone()
+    };
+    assert_eq!(row("good"), "зачтено", "{out}");
+    assert_eq!(row("bad"), "не зачтено", "{out}");
+    assert!(row("broken").starts_with("ошибка выполнения: "), "{out}");
+    assert_eq!(row("notes"), "не сданная работа: нужен сценарий .lua или программа .il", "{out}");
+    // --json: `verdict` in the lab's language, `code` the same in every language.
+    let (json, _) = grade(true, &[("PLCSH_LANG", ""), ("LANG", "zh_CN.UTF-8")]);
+    let reports: Vec<serde_json::Value> = json
+        .lines()
+        .filter_map(|l| serde_json::from_str(l).ok())
+        .filter(|v: &serde_json::Value| v.get("student").is_some())
+        .collect();
+    let by = |s: &str| reports.iter().find(|r| r["student"] == s).unwrap_or_else(|| panic!("{json}")).clone();
+    assert_eq!(by("broken")["code"], "lab-runtime-error", "{json}");
+    assert_eq!(by("notes")["code"], "lab-not-submission-kind", "{json}");
+    assert!(by("good").get("code").is_none(), "{json}");
+    assert_eq!(by("good")["verdict"], "passed", "{json}");
+    let _ = std::fs::remove_dir_all(&root);
+}
+
 /// The README's first session, typed into the shell in each language: values read the same,
 /// the error is the language's (the values and operands themselves never change).
 #[test]
