@@ -98,3 +98,77 @@ lab-not-a-kind = { $file }: accepts = ["{ $kind }"]: not a submission kind
 lab-hint-kinds = kinds: { $kinds }
 lab-shared-not-lua = { $file }: shared = ["{ $name }"]: a shared module is a .lua file
 lab-hint-shared-example = e.g. shared = ["helpers.lua"] (a submission then calls require("helpers"))
+
+## Lua scripts (script): errors plcsh raises in Lua code.
+script-session-busy = the session is busy: { $error }
+script-no-session = no session: Lua runs only inside plcsh
+script-device-not-open = device `{ $device }` is not open (closed, or never opened)
+script-no-output = no output
+script-bad-millis = { $what }: { $ms } is not a duration in milliseconds (a number ≥ 0)
+script-json-too-deep = plcsh.json.encode: the value is nested more than { $depth } tables deep (or holds itself)
+script-hint-json-tree = JSON holds trees of tables; flatten the value
+script-hint-json-split = JSON arrays are lists 1…n without holes; objects have string keys — split the table
+script-json-mixed = plcsh.json.encode: { $path } mixes list items and keys
+script-json-sparse = plcsh.json.encode: { $path } is a sparse list ({ $items } items, highest index { $max })
+script-unknown-option = { $what }: unknown option `{ $key }`
+script-hint-did-you-mean-option = did you mean `{ $near }`? { $what } takes { $options }
+script-hint-options = { $what } takes { $options }
+script-wait-until-options = wait_until's second argument is {"{"}timeout=ms, every=ms{"}"} or a timeout, not a { $kind }
+script-wait-until-timeout = wait_until: condition still false after { $time }
+script-wait-until-timeout-what = wait_until: condition ({ $what }) still false after { $time }
+script-hint-wait-until = raise `timeout`, or check the condition with plcsh.exec/get
+script-method-error = { $method }: { $error }
+script-hint-runs-command-line = { $method } runs a command line with extra arguments appended
+script-hint-runs-template = { $method } runs `{ $template }` with extra arguments appended
+script-arg-not-utf8 = argument is not UTF-8 text
+script-cannot-pass = cannot pass a Lua { $kind } to a command
+script-option-not-utf8 = option name is not UTF-8
+script-option-not-string = option names are strings, not { $kind }
+script-missing-argument = missing argument for `{ $spec }`
+script-command-not-utf8 = command text is not UTF-8
+script-nothing-to-run = nothing to run
+script-sandbox-refused = { $what } is not available in a sandboxed run (it { $why ->
+    [program] runs a program
+    [delete] deletes a file
+    [rename] renames a file
+    [exit] ends plcsh
+    [create] creates a file
+    [environment] reads the machine's environment
+   *[library] loads a C library
+})
+script-hint-sandbox = the sandbox allows simulated devices, printing, checks and files in the lab's folders
+script-lab-frame = (a frame of the lab's)
+script-sandbox-terminal = { $function } without a file reads the terminal: not in a sandboxed run
+script-module-not-found = module '{ $name }' not found: { $own ->
+    [folder] no { $path }.lua in the submission's folder
+   *[single] a single-file submission has no modules of its own
+}; { $shared ->
+    [none] the lab shares no modules
+   *[some] the lab shares { $modules }
+}
+script-require-not-string = bad argument #1 to 'require' (string expected, got { $kind })
+script-require-loop = module '{ $name }' requires itself (a loop of require calls)
+script-hint-require = a submission requires its own modules and those the lab shares
+script-date-field-missing = field '{ $field }' missing in date table
+script-cannot-read = cannot read { $file }: { $error }
+script-os-exit = the script called os.exit({ $code })
+script-tmpname-cannot-create = os.tmpname: cannot create a file in { $dir }: { $error }
+script-tmpname-no-name = os.tmpname: no free name in { $dir }
+script-no-built-in-module = no module '{ $name }' built into plcsh
+script-sandbox-modules = (a sandboxed run loads only plcsh's modules and the lab's own)
+script-operand-not-text = operand names are text
+script-field-many-operands = `{ $text }` names { $count } operands; a field is one operand
+script-hint-read-range = read a range with { $device }:get("{ $text }")
+script-hint-methods = methods: { $methods }; operands are fields: { $device }.VW0
+script-hint-did-you-mean-method = did you mean { $count ->
+    [1] { $a }
+    [2] { $a } or { $b }
+   *[3] { $a } or { $b } or { $c }
+}?
+script-no-method = device `{ $device }` has no method or operand `{ $word }`
+script-set-pairs-only = set: pass {"{"}"OPERAND", value{"}"} pairs only
+script-set-odd-arguments = set: { $count } arguments; pass OPERAND, value, OPERAND, value …
+script-set-names-strings = set: operand names are strings
+script-set-needs-values = set needs operands and values
+script-cannot-write-value = cannot write a Lua { $kind } (use a number, a boolean or a literal such as "16#85")
+script-method-dot = `{ $method }` is a method: call it with a colon, `dev:{ $method }(…)`, not a dot `dev.{ $method }(…)`

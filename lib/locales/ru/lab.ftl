@@ -114,3 +114,85 @@ lab-not-a-kind = { $file }: accepts = ["{ $kind }"]: не вид сданной 
 lab-hint-kinds = виды: { $kinds }
 lab-shared-not-lua = { $file }: shared = ["{ $name }"]: общий модуль — это файл .lua
 lab-hint-shared-example = например, shared = ["helpers.lua"] (работа затем вызывает require("helpers"))
+
+## Lua scripts (script): errors plcsh raises in Lua code.
+script-session-busy = сеанс занят: { $error }
+script-no-session = нет сеанса: Lua выполняется только внутри plcsh
+script-device-not-open = устройство `{ $device }` не открыто (закрыто или не открывалось)
+script-no-output = нет вывода
+script-bad-millis = { $what }: { $ms } — не длительность в миллисекундах (число ≥ 0)
+script-json-too-deep = plcsh.json.encode: значение вложено глубже { $depth } таблиц (или содержит само себя)
+script-hint-json-tree = JSON хранит деревья таблиц; сделайте значение более плоским
+script-hint-json-split = массивы JSON — это списки 1…n без пропусков; у объектов строковые ключи — разделите таблицу
+script-json-mixed = plcsh.json.encode: { $path } смешивает элементы списка и ключи
+script-json-sparse = plcsh.json.encode: { $path } — список с пропусками (элементов: { $items }, наибольший индекс { $max })
+script-unknown-option = { $what }: неизвестный параметр `{ $key }`
+script-hint-did-you-mean-option = может быть, `{ $near }`? { $what } принимает { $options }
+script-hint-options = { $what } принимает { $options }
+script-wait-until-options = второй аргумент wait_until — {"{"}timeout=ms, every=ms{"}"} или тайм-аут, а не { $kind }
+script-wait-until-timeout = wait_until: условие всё ещё ложно через { $time }
+script-wait-until-timeout-what = wait_until: условие ({ $what }) всё ещё ложно через { $time }
+script-hint-wait-until = увеличьте `timeout` или проверьте условие через plcsh.exec/get
+script-method-error = { $method }: { $error }
+script-hint-runs-command-line = { $method } выполняет командную строку, дополненную остальными аргументами
+script-hint-runs-template = { $method } выполняет `{ $template }`, дополненную остальными аргументами
+script-arg-not-utf8 = аргумент — не текст в UTF-8
+script-cannot-pass = значение Lua типа { $kind } нельзя передать команде
+script-option-not-utf8 = имя параметра — не UTF-8
+script-option-not-string = имена параметров — строки, а не { $kind }
+script-missing-argument = не хватает аргумента для `{ $spec }`
+script-command-not-utf8 = текст команды — не UTF-8
+script-nothing-to-run = нечего выполнять
+script-sandbox-refused = { $what } недоступна в запуске в песочнице ({ $why ->
+    [program] она запускает программу
+    [delete] она удаляет файл
+    [rename] она переименовывает файл
+    [exit] она завершает plcsh
+    [create] она создаёт файл
+    [environment] она читает окружение машины
+   *[library] она загружает библиотеку C
+})
+script-hint-sandbox = песочница разрешает симулированные устройства, вывод, проверки и файлы в каталогах лабораторной работы
+script-lab-frame = (кадр стека лабораторной работы)
+script-sandbox-terminal = { $function } без файла читает терминал: недоступно в запуске в песочнице
+script-module-not-found = модуль '{ $name }' не найден: { $own ->
+    [folder] в каталоге работы нет { $path }.lua
+   *[single] у работы из одного файла нет собственных модулей
+}; { $shared ->
+    [none] лабораторная работа не предоставляет общих модулей
+   *[some] лабораторная работа предоставляет { $modules }
+}
+script-require-not-string = неверный аргумент №1 функции 'require' (ожидалась строка, получено { $kind })
+script-require-loop = модуль '{ $name }' требует сам себя (цикл вызовов require)
+script-hint-require = работа подключает свои модули и общие модули лабораторной работы
+script-date-field-missing = в таблице даты нет поля '{ $field }'
+script-cannot-read = не удаётся прочитать { $file }: { $error }
+script-os-exit = сценарий вызвал os.exit({ $code })
+script-tmpname-cannot-create = os.tmpname: не удаётся создать файл в { $dir }: { $error }
+script-tmpname-no-name = os.tmpname: нет свободного имени в { $dir }
+script-no-built-in-module = модуля '{ $name }' нет среди встроенных в plcsh
+script-sandbox-modules = (запуск в песочнице подключает только модули plcsh и самой лабораторной работы)
+script-operand-not-text = имена операндов — текст
+script-field-many-operands = `{ $text }` называет { $count ->
+    [one] { $count } операнд
+    [few] { $count } операнда
+   *[many] { $count } операндов
+}; поле — это один операнд
+script-hint-read-range = диапазон читается так: { $device }:get("{ $text }")
+script-hint-methods = методы: { $methods }; операнды — это поля: { $device }.VW0
+script-hint-did-you-mean-method = может быть, { $count ->
+    [1] { $a }
+    [2] { $a } или { $b }
+   *[3] { $a }, { $b } или { $c }
+}?
+script-no-method = у устройства `{ $device }` нет метода или операнда `{ $word }`
+script-set-pairs-only = set: передавайте только пары {"{"}"OPERAND", value{"}"}
+script-set-odd-arguments = set: { $count ->
+    [one] { $count } аргумент
+    [few] { $count } аргумента
+   *[many] { $count } аргументов
+}; передавайте OPERAND, value, OPERAND, value …
+script-set-names-strings = set: имена операндов — строки
+script-set-needs-values = set нужны операнды и значения
+script-cannot-write-value = нельзя записать значение Lua типа { $kind } (используйте число, логическое значение или литерал, например "16#85")
+script-method-dot = `{ $method }` — метод: вызывайте его через двоеточие, `dev:{ $method }(…)`, а не через точку `dev.{ $method }(…)`

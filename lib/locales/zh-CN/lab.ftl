@@ -92,3 +92,77 @@ lab-not-a-kind = { $file }：accepts = ["{ $kind }"]：不是作业类型
 lab-hint-kinds = 类型：{ $kinds }
 lab-shared-not-lua = { $file }：shared = ["{ $name }"]：共享模块是 .lua 文件
 lab-hint-shared-example = 例如 shared = ["helpers.lua"]（作业中再调用 require("helpers")）
+
+## Lua scripts (script): errors plcsh raises in Lua code.
+script-session-busy = 会话忙：{ $error }
+script-no-session = 没有会话：Lua 只能在 plcsh 中运行
+script-device-not-open = 设备 `{ $device }` 未打开（已关闭或从未打开）
+script-no-output = 没有输出
+script-bad-millis = { $what }：{ $ms } 不是以毫秒为单位的时长（≥ 0 的数）
+script-json-too-deep = plcsh.json.encode：值的嵌套超过 { $depth } 层表（或包含自身）
+script-hint-json-tree = JSON 保存的是表的树；请把值展平
+script-hint-json-split = JSON 数组是没有空缺的 1…n 列表；对象的键是字符串——请拆分该表
+script-json-mixed = plcsh.json.encode：{ $path } 混合了列表项和键
+script-json-sparse = plcsh.json.encode：{ $path } 是有空缺的列表（{ $items } 项，最大索引 { $max }）
+script-unknown-option = { $what }：未知选项 `{ $key }`
+script-hint-did-you-mean-option = 是否想输入 `{ $near }`？{ $what } 接受 { $options }
+script-hint-options = { $what } 接受 { $options }
+script-wait-until-options = wait_until 的第二个参数是 {"{"}timeout=ms, every=ms{"}"} 或超时时间，而不是 { $kind }
+script-wait-until-timeout = wait_until：条件在 { $time } 后仍为假
+script-wait-until-timeout-what = wait_until：条件（{ $what }）在 { $time } 后仍为假
+script-hint-wait-until = 请增大 `timeout`，或用 plcsh.exec/get 检查条件
+script-method-error = { $method }：{ $error }
+script-hint-runs-command-line = { $method } 运行一条命令行，并附加其余参数
+script-hint-runs-template = { $method } 运行 `{ $template }`，并附加其余参数
+script-arg-not-utf8 = 参数不是 UTF-8 文本
+script-cannot-pass = 不能把 Lua 的 { $kind } 传给命令
+script-option-not-utf8 = 选项名不是 UTF-8
+script-option-not-string = 选项名是字符串，而不是 { $kind }
+script-missing-argument = 缺少 `{ $spec }` 的参数
+script-command-not-utf8 = 命令文本不是 UTF-8
+script-nothing-to-run = 没有要运行的内容
+script-sandbox-refused = 沙箱运行中不能使用 { $what }（它{ $why ->
+    [program] 会运行程序
+    [delete] 会删除文件
+    [rename] 会重命名文件
+    [exit] 会结束 plcsh
+    [create] 会创建文件
+    [environment] 会读取本机的环境变量
+   *[library] 会加载 C 库
+}）
+script-hint-sandbox = 沙箱允许仿真设备、打印、检查以及实验目录中的文件
+script-lab-frame = （实验自身的栈帧）
+script-sandbox-terminal = 不带文件的 { $function } 会读取终端：沙箱运行中不可用
+script-module-not-found = 找不到模块 '{ $name }'：{ $own ->
+    [folder] 作业目录中没有 { $path }.lua
+   *[single] 单文件作业没有自己的模块
+}；{ $shared ->
+    [none] 实验没有共享模块
+   *[some] 实验共享的模块：{ $modules }
+}
+script-require-not-string = 'require' 的第 1 个参数错误（应为字符串，实际为 { $kind }）
+script-require-loop = 模块 '{ $name }' 需要它自身（require 调用成环）
+script-hint-require = 作业可以 require 自己的模块和实验共享的模块
+script-date-field-missing = 日期表中缺少字段 '{ $field }'
+script-cannot-read = 无法读取 { $file }：{ $error }
+script-os-exit = 脚本调用了 os.exit({ $code })
+script-tmpname-cannot-create = os.tmpname：无法在 { $dir } 中创建文件：{ $error }
+script-tmpname-no-name = os.tmpname：{ $dir } 中没有可用的文件名
+script-no-built-in-module = plcsh 内置模块中没有 '{ $name }'
+script-sandbox-modules = （沙箱运行只加载 plcsh 的模块和实验自己的模块）
+script-operand-not-text = 操作数名是文本
+script-field-many-operands = `{ $text }` 指定了 { $count } 个操作数；一个字段只对应一个操作数
+script-hint-read-range = 读取范围请用 { $device }:get("{ $text }")
+script-hint-methods = 方法：{ $methods }；操作数是字段：{ $device }.VW0
+script-hint-did-you-mean-method = 是否想输入 { $count ->
+    [1] { $a }
+    [2] { $a } 或 { $b }
+   *[3] { $a }、{ $b } 或 { $c }
+}？
+script-no-method = 设备 `{ $device }` 没有方法或操作数 `{ $word }`
+script-set-pairs-only = set：只能传入 {"{"}"OPERAND", value{"}"} 对
+script-set-odd-arguments = set：{ $count } 个参数；请按 OPERAND, value, OPERAND, value … 传入
+script-set-names-strings = set：操作数名是字符串
+script-set-needs-values = set 需要操作数和值
+script-cannot-write-value = 不能写入 Lua 的 { $kind }（请使用数字、布尔值或 "16#85" 这样的字面量）
+script-method-dot = `{ $method }` 是方法：请用冒号调用 `dev:{ $method }(…)`，而不是用点 `dev.{ $method }(…)`
