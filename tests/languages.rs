@@ -104,16 +104,70 @@ fn the_language_comes_from_the_flag_then_plcsh_lang_then_the_locale() {
     };
     assert_eq!(said(&["--lang", "zh-CN"], &[("PLCSH_LANG", "ru")]), "zh-CN");
     assert_eq!(said(&[], &[("PLCSH_LANG", "ru")]), "ru");
+    // The locale variables are the system's language on Unix only: Windows has the user's UI
+    // language instead (`under_wine_the_windows_ui_language_chooses` sets that one).
+    if cfg!(unix) {
+        the_locale_variables_choose(&said);
+    }
+    // A language plcsh does not speak is a usage error (status 2), in the flag's words.
+    let (code, _, err) = run(&["--lang", "de", "-c", "get VW0"], &[]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("unknown language `de`"), "{err}");
+}
+
+/// `LC_ALL`, then `LC_MESSAGES`, then `LANG` (POSIX's order for messages).
+fn the_locale_variables_choose(said: &dyn Fn(&[&str], &[(&str, &str)]) -> &'static str) {
     assert_eq!(said(&[], &[("PLCSH_LANG", ""), ("LANG", "ru_RU.UTF-8")]), "ru");
     assert_eq!(said(&[], &[("PLCSH_LANG", ""), ("LANG", "ru_RU.UTF-8"), ("LC_ALL", "zh_CN.UTF-8")]), "zh-CN");
     assert_eq!(said(&[], &[("PLCSH_LANG", ""), ("LANG", "ru_RU.UTF-8"), ("LC_MESSAGES", "C")]), "en");
     assert_eq!(said(&[], &[("PLCSH_LANG", ""), ("LANG", "de_DE.UTF-8")]), "en");
     assert_eq!(said(&[], &[("PLCSH_LANG", ""), ("LANG", "zh_TW.UTF-8")]), "en");
     assert_eq!(said(&[], &[("PLCSH_LANG", "")]), "en");
-    // A language plcsh does not speak is a usage error (status 2), in the flag's words.
-    let (code, _, err) = run(&["--lang", "de", "-c", "get VW0"], &[]);
-    assert_eq!(code, Some(2), "{err}");
-    assert!(err.contains("unknown language `de`"), "{err}");
+}
+
+/// The Windows user's UI language (GetUserDefaultUILanguage) chooses when neither `--lang`
+/// nor `PLCSH_LANG` does: Russian, Simplified Chinese, and English for a language plcsh does
+/// not speak (German) or Traditional Chinese. Run under Wine (`.ci/windows`), where a Wine
+/// process's UI language is the Unix locale it starts with (`LC_ALL`), the way a user of Wine
+/// sets it. A Windows process started from Windows code inherits its parent's language,
+/// whatever the environment it is given, so each plcsh.exe starts in a Wine process of its own:
+/// through the Unix `env`, which Wine runs as a Unix program with the locale set.
+#[cfg(windows)]
+#[test]
+fn under_wine_the_windows_ui_language_chooses() {
+    if std::env::var_os("PLCSH_WINE").is_none() {
+        skipped("Wine to set the UI language of a new process (.ci/windows runs this test; on Windows, set the display language in Settings)");
+        return;
+    }
+    // Wine's loader for 64-bit programs, where Debian puts it; else `wine` on the PATH.
+    let loader = if std::path::Path::new(r"Z:\usr\lib\wine\wine64").exists() { "/usr/lib/wine/wine64" } else { "wine" };
+    let said = |locale: &str| {
+        let o = std::process::Command::new(r"Z:\usr\bin\env")
+            .args(["-u", "PLCSH_LANG", "-u", "LANGUAGE", "-u", "LC_MESSAGES", "-u", "LANG"])
+            .arg(format!("LC_ALL={locale}"))
+            .arg("PLCSH_STATE=none")
+            .arg(loader)
+            .arg(bin())
+            .args(["-c", "set VB2=300"])
+            .stdin(std::process::Stdio::null())
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&o.stderr).into_owned();
+        if err.contains("вне диапазона") {
+            "ru"
+        } else if err.contains("超出") {
+            "zh-CN"
+        } else if err.contains("is out of range") {
+            "en"
+        } else {
+            panic!("LC_ALL={locale}: no error in any language: {err}{}", String::from_utf8_lossy(&o.stdout))
+        }
+    };
+    assert_eq!(said("ru_RU.UTF-8"), "ru");
+    assert_eq!(said("zh_CN.UTF-8"), "zh-CN");
+    assert_eq!(said("de_DE.UTF-8"), "en");
+    assert_eq!(said("zh_TW.UTF-8"), "en");
+    assert_eq!(said("C"), "en");
 }
 
 #[test]
