@@ -172,3 +172,79 @@ script-set-names-strings = set: operand names are strings
 script-set-needs-values = set needs operands and values
 script-cannot-write-value = cannot write a Lua { $kind } (use a number, a boolean or a literal such as "16#85")
 script-method-dot = `{ $method }` is a method: call it with a colon, `dev:{ $method }(…)`, not a dot `dev.{ $method }(…)`
+
+## `plcsh publish` (cli::publish): readings to an MQTT broker.
+publish-needs-broker = publish needs a broker
+publish-hint-broker = --broker mqtt://HOST:1883, or url = "mqtt://HOST:1883" under [mqtt] in the profile file
+publish-password-without-user = a broker password without a username
+publish-hint-username = set username under [mqtt] in the profile file or PLCSH_MQTT_USERNAME
+publish-cannot-read-ca = cannot read [mqtt] ca_file { $file }: { $error }
+publish-auth-refused = the broker { $broker } refused the credentials ({ $why })
+publish-hint-auth = check username under [mqtt] in the profile file (or PLCSH_MQTT_USERNAME) and PLCSH_MQTT_PASSWORD, and that the broker's ACL lets this user connect
+publish-tls-failed = TLS with the broker { $broker } failed ({ $why })
+publish-hint-tls = the broker's certificate must verify against ca_file under [mqtt] (its CA, PEM) or the system's roots, and name the host in --broker
+publish-no-broker = no MQTT broker answered at { $broker } within { $seconds } s of the start ({ $why })
+publish-hint-no-broker = is the broker running, and are the host and port in --broker right (mqtt:// 1883, mqtts:// 8883)?
+publish-not-an-operand = `{ $operand }` is not an operand of this device: { $error }
+publish-hint-fix-operand = nothing was published; fix the operand (plcsh -c 'get OPERAND' shows what the device answers)
+publish-not-an-operand-fleet = `{ $operand }` is not an operand of any member of fleet `{ $fleet }`: { $error }
+publish-not-an-operand-members = `{ $operand }` is not an operand of { $members }{ $more ->
+    [0] {""}
+   *[other] {" "}and { $more } more
+}: { $error }
+publish-hint-fix-operand-fleet = nothing was published; fix the operand (plcsh -f FLEET -c 'get OPERAND' shows what each member answers)
+publish-bad-every = --every { $every } is not a duration
+publish-hint-every = e.g. 1s, 250ms
+publish-no-mqtt-thread = cannot start the MQTT thread
+publish-no-poll-threads = cannot start the polling threads
+publish-connected = connected to { $broker }
+publish-broker-away = broker { $broker } away ({ $why }); readings are kept up to --buffer and sent when it returns
+publish-device-back = { $device } answers again
+publish-polling-stopped = polling stopped; delivering what is queued (the broker has a few seconds to take it)
+publish-summary = published { $published } messages to { $broker } (group { $group }{ $shard ->
+    [some] , shard { $shard_of }
+   *[none] {""}
+}); { $away } dropped while the broker was away, { $behind } dropped and { $skipped } polls skipped because plcsh fell behind, { $undelivered } dropped at the stop (not delivered), { $reconnects } reconnects{ $worst ->
+    [some] ; most behind: { $worst_list }
+   *[none] {""}
+}{ $offline ->
+    [some] ; offline: { $offline_list }
+   *[none] {""}
+}
+
+## `plot` pictures (plot) and fleet runs (fleet).
+plot-cannot-draw = cannot draw the plot: { $error }
+plot-bad-picture = to={ $path }: pictures are .png or .svg
+plot-hint-picture = e.g. to=ramp.png or to=ramp.svg
+plot-cannot-write = cannot write { $path }: { $error }
+plot-bad-size = size={ $text } is not WIDTHxHEIGHT (e.g. 900x400)
+plot-size-range = size={ $text }: each side is { $min }…{ $max } pixels
+fleet-internal-error = the work on this device stopped with an internal error
+fleet-no-thread = cannot start a worker thread
+fleet-timeout = no result within { $seconds } s
+fleet-hint-timeout = the device may be off or slow; raise --device-timeout, or check its link alone
+fleet-not-started = not started: the fleet run was stopped
+fleet-all-ok = fleet { $fleet }: { $count } devices, all ok ({ $ms } ms, { $jobs } at once)
+fleet-failed = fleet { $fleet }: { $failed } of { $count } devices failed: { $devices } ({ $ms } ms, { $jobs } at once)
+
+## Recordings (record): --record, `replay`.
+record-cannot-read = cannot read the recording { $file }
+record-hint-give-file = give the file written by --record FILE
+record-not-readable = { $file } is not a readable pcapng recording: { $error }
+record-hint-capture = give a file written by plcsh --record FILE, or a pcapng/pcap capture of Modbus TCP taken on an Ethernet or loopback interface (tshark -i lo -f 'tcp port 502' -w FILE.pcapng)
+record-snap-length = { $count } packets were cut short by the capture's snap length: frames in them are incomplete (capture again without -s, or with -s 0)
+record-no-tcp = its { $count } packets carry no TCP payload (no Modbus TCP traffic was captured)
+record-bytes-missing = { $lost } bytes from { $from } to { $to } are missing from the capture (frames around them may show as malformed)
+record-cannot-create = cannot create the recording { $file }
+record-hint-writable = check that the directory exists and is writable
+record-cannot-write = cannot write the recording { $file }
+record-incomplete = the recording { $file } is incomplete: { $error }
+replay-no-sim-plc = { $link }: the bench has no simulated PLC
+replay-no-sim-drive = { $link }: the bench has no simulated drive
+replay-other-protocol = { $link }: { $protocol } frames (replay covers Modbus and servo links)
+replay-undeclared-protocol = { $link }: frames of an undeclared protocol
+replay-helper-cannot-run = { $link }: the helper program cannot run: { $error }
+replay-no-reply-recorded = no reply was recorded; the simulator answers
+replay-no-reply-replayed = a reply was recorded; the simulator gives none
+replay-no-requests = { $file } holds no recorded requests
+replay-hint-record = record a session that talks to a device over Modbus or a servo line: plcsh --record FILE --device plc=tcp://…

@@ -196,3 +196,97 @@ script-set-names-strings = set: имена операндов — строки
 script-set-needs-values = set нужны операнды и значения
 script-cannot-write-value = нельзя записать значение Lua типа { $kind } (используйте число, логическое значение или литерал, например "16#85")
 script-method-dot = `{ $method }` — метод: вызывайте его через двоеточие, `dev:{ $method }(…)`, а не через точку `dev.{ $method }(…)`
+
+## `plcsh publish` (cli::publish): readings to an MQTT broker.
+publish-needs-broker = для publish нужен брокер
+publish-hint-broker = --broker mqtt://HOST:1883 или url = "mqtt://HOST:1883" в разделе [mqtt] файла профилей
+publish-password-without-user = пароль брокера без имени пользователя
+publish-hint-username = задайте username в разделе [mqtt] файла профилей или PLCSH_MQTT_USERNAME
+publish-cannot-read-ca = не удаётся прочитать [mqtt] ca_file { $file }: { $error }
+publish-auth-refused = брокер { $broker } отклонил учётные данные ({ $why })
+publish-hint-auth = проверьте username в разделе [mqtt] файла профилей (или PLCSH_MQTT_USERNAME) и PLCSH_MQTT_PASSWORD, а также что ACL брокера разрешает этому пользователю подключаться
+publish-tls-failed = TLS с брокером { $broker } не удался ({ $why })
+publish-hint-tls = сертификат брокера должен проверяться по ca_file в разделе [mqtt] (его CA, PEM) или по корневым сертификатам системы и называть узел из --broker
+publish-no-broker = ни один брокер MQTT не ответил по адресу { $broker } за { $seconds } с от запуска ({ $why })
+publish-hint-no-broker = запущен ли брокер и верны ли узел и порт в --broker (mqtt:// 1883, mqtts:// 8883)?
+publish-not-an-operand = `{ $operand }` — не операнд этого устройства: { $error }
+publish-hint-fix-operand = ничего не опубликовано; исправьте операнд (plcsh -c 'get OPERAND' показывает, что отвечает устройство)
+publish-not-an-operand-fleet = `{ $operand }` — не операнд ни одного устройства группы `{ $fleet }`: { $error }
+publish-not-an-operand-members = `{ $operand }` — не операнд устройств { $members }{ $more ->
+    [0] {""}
+   *[other] {" "}и ещё { $more }
+}: { $error }
+publish-hint-fix-operand-fleet = ничего не опубликовано; исправьте операнд (plcsh -f FLEET -c 'get OPERAND' показывает, что отвечает каждое устройство)
+publish-bad-every = --every { $every } — не длительность
+publish-hint-every = например, 1s, 250ms
+publish-no-mqtt-thread = не удаётся запустить поток MQTT
+publish-no-poll-threads = не удаётся запустить потоки опроса
+publish-connected = подключено к { $broker }
+publish-broker-away = брокер { $broker } недоступен ({ $why }); показания хранятся в пределах --buffer и отправляются, когда он вернётся
+publish-device-back = { $device } снова отвечает
+publish-polling-stopped = опрос остановлен; доставляется то, что в очереди (у брокера есть несколько секунд, чтобы принять)
+publish-summary = опубликовано сообщений: { $published } в { $broker } (группа { $group }{ $shard ->
+    [some] , часть { $shard_of }
+   *[none] {""}
+}); отброшено, пока брокер был недоступен: { $away }; отброшено: { $behind } и пропущено опросов: { $skipped }, потому что plcsh не успевал; отброшено при остановке (не доставлено): { $undelivered }; переподключений: { $reconnects }{ $worst ->
+    [some] ; больше всего отстали: { $worst_list }
+   *[none] {""}
+}{ $offline ->
+    [some] ; не в сети: { $offline_list }
+   *[none] {""}
+}
+
+## `plot` pictures (plot) and fleet runs (fleet).
+plot-cannot-draw = не удаётся нарисовать график: { $error }
+plot-bad-picture = to={ $path }: рисунки бывают .png или .svg
+plot-hint-picture = например, to=ramp.png или to=ramp.svg
+plot-cannot-write = не удаётся записать { $path }: { $error }
+plot-bad-size = size={ $text } — не ШИРИНАxВЫСОТА (например, 900x400)
+plot-size-range = size={ $text }: каждая сторона — от { $min } до { $max } пикселей
+fleet-internal-error = работа с этим устройством остановилась из-за внутренней ошибки
+fleet-no-thread = не удаётся запустить рабочий поток
+fleet-timeout = нет результата за { $seconds } с
+fleet-hint-timeout = устройство может быть выключено или медленно отвечать; увеличьте --device-timeout или проверьте его линию связи отдельно
+fleet-not-started = не запущено: выполнение для группы устройств остановлено
+fleet-all-ok = группа { $fleet }: { $count ->
+    [one] { $count } устройство
+    [few] { $count } устройства
+   *[many] { $count } устройств
+}, все в порядке ({ $ms } мс, { $jobs } одновременно)
+fleet-failed = группа { $fleet }: ошибка на { $failed } из { $count ->
+    [one] { $count } устройства
+   *[other] { $count } устройств
+}: { $devices } ({ $ms } мс, { $jobs } одновременно)
+
+## Recordings (record): --record, `replay`.
+record-cannot-read = не удаётся прочитать запись { $file }
+record-hint-give-file = укажите файл, записанный с --record FILE
+record-not-readable = { $file } — не читаемая запись pcapng: { $error }
+record-hint-capture = укажите файл, записанный plcsh --record FILE, или захват pcapng/pcap трафика Modbus TCP на интерфейсе Ethernet или loopback (tshark -i lo -f 'tcp port 502' -w FILE.pcapng)
+record-snap-length = { $count ->
+    [one] { $count } пакет обрезан
+    [few] { $count } пакета обрезаны
+   *[many] { $count } пакетов обрезаны
+} по длине захвата (snap length): кадры в них неполные (захватите снова без -s или с -s 0)
+record-no-tcp = { $count ->
+    [one] его { $count } пакет не несёт
+   *[other] его пакеты ({ $count }) не несут
+} данных TCP (трафик Modbus TCP не захвачен)
+record-bytes-missing = { $lost ->
+    [one] { $lost } байт
+    [few] { $lost } байта
+   *[many] { $lost } байт
+} от { $from } к { $to } отсутствуют в захвате (кадры рядом с ними могут показываться как искажённые)
+record-cannot-create = не удаётся создать запись { $file }
+record-hint-writable = проверьте, что каталог существует и доступен для записи
+record-cannot-write = не удаётся записать запись { $file }
+record-incomplete = запись { $file } неполная: { $error }
+replay-no-sim-plc = { $link }: на стенде нет симулированного ПЛК
+replay-no-sim-drive = { $link }: на стенде нет симулированного сервопривода
+replay-other-protocol = { $link }: кадры { $protocol } (воспроизведение охватывает линии Modbus и сервоприводов)
+replay-undeclared-protocol = { $link }: кадры необъявленного протокола
+replay-helper-cannot-run = { $link }: вспомогательная программа не может работать: { $error }
+replay-no-reply-recorded = ответ не записан; симулятор отвечает
+replay-no-reply-replayed = ответ записан; симулятор не отвечает
+replay-no-requests = в { $file } нет записанных запросов
+replay-hint-record = запишите сеанс, в котором идёт обмен с устройством по Modbus или по линии сервопривода: plcsh --record FILE --device plc=tcp://…

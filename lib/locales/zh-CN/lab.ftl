@@ -166,3 +166,79 @@ script-set-names-strings = set：操作数名是字符串
 script-set-needs-values = set 需要操作数和值
 script-cannot-write-value = 不能写入 Lua 的 { $kind }（请使用数字、布尔值或 "16#85" 这样的字面量）
 script-method-dot = `{ $method }` 是方法：请用冒号调用 `dev:{ $method }(…)`，而不是用点 `dev.{ $method }(…)`
+
+## `plcsh publish` (cli::publish): readings to an MQTT broker.
+publish-needs-broker = publish 需要一个代理服务器（broker）
+publish-hint-broker = --broker mqtt://HOST:1883，或在配置文件的 [mqtt] 下写 url = "mqtt://HOST:1883"
+publish-password-without-user = 有代理服务器密码但没有用户名
+publish-hint-username = 请在配置文件的 [mqtt] 下设置 username，或设置 PLCSH_MQTT_USERNAME
+publish-cannot-read-ca = 无法读取 [mqtt] ca_file { $file }：{ $error }
+publish-auth-refused = 代理服务器 { $broker } 拒绝了凭据（{ $why }）
+publish-hint-auth = 请检查配置文件 [mqtt] 下的 username（或 PLCSH_MQTT_USERNAME）和 PLCSH_MQTT_PASSWORD，以及代理服务器的 ACL 是否允许该用户连接
+publish-tls-failed = 与代理服务器 { $broker } 的 TLS 失败（{ $why }）
+publish-hint-tls = 代理服务器的证书必须能用 [mqtt] 下的 ca_file（其 CA，PEM 格式）或系统根证书验证，并包含 --broker 中的主机名
+publish-no-broker = 启动后 { $seconds } s 内 { $broker } 上没有 MQTT 代理服务器应答（{ $why }）
+publish-hint-no-broker = 代理服务器是否在运行？--broker 中的主机和端口是否正确（mqtt:// 1883，mqtts:// 8883）？
+publish-not-an-operand = `{ $operand }` 不是该设备的操作数：{ $error }
+publish-hint-fix-operand = 未发布任何内容；请修正操作数（plcsh -c 'get OPERAND' 显示设备的应答）
+publish-not-an-operand-fleet = `{ $operand }` 不是设备组 `{ $fleet }` 中任何成员的操作数：{ $error }
+publish-not-an-operand-members = `{ $operand }` 不是 { $members }{ $more ->
+    [0] {""}
+   *[other] {" "}等另外 { $more } 台设备
+} 的操作数：{ $error }
+publish-hint-fix-operand-fleet = 未发布任何内容；请修正操作数（plcsh -f FLEET -c 'get OPERAND' 显示每个成员的应答）
+publish-bad-every = --every { $every } 不是时长
+publish-hint-every = 例如 1s、250ms
+publish-no-mqtt-thread = 无法启动 MQTT 线程
+publish-no-poll-threads = 无法启动轮询线程
+publish-connected = 已连接到 { $broker }
+publish-broker-away = 代理服务器 { $broker } 不可用（{ $why }）；读数最多保留 --buffer 条，恢复后发送
+publish-device-back = { $device } 重新应答
+publish-polling-stopped = 轮询已停止；正在发送队列中的内容（代理服务器有几秒钟时间接收）
+publish-summary = 已向 { $broker } 发布 { $published } 条消息（组 { $group }{ $shard ->
+    [some] ，分片 { $shard_of }
+   *[none] {""}
+}）；代理服务器不可用期间丢弃 { $away } 条，因 plcsh 跟不上丢弃 { $behind } 条并跳过 { $skipped } 次轮询，停止时丢弃 { $undelivered } 条（未送达），重连 { $reconnects } 次{ $worst ->
+    [some] ；落后最多：{ $worst_list }
+   *[none] {""}
+}{ $offline ->
+    [some] ；离线：{ $offline_list }
+   *[none] {""}
+}
+
+## `plot` pictures (plot) and fleet runs (fleet).
+plot-cannot-draw = 无法绘制曲线图：{ $error }
+plot-bad-picture = to={ $path }：图片须为 .png 或 .svg
+plot-hint-picture = 例如 to=ramp.png 或 to=ramp.svg
+plot-cannot-write = 无法写入 { $path }：{ $error }
+plot-bad-size = size={ $text } 不是 宽x高（例如 900x400）
+plot-size-range = size={ $text }：每边须为 { $min }…{ $max } 像素
+fleet-internal-error = 对该设备的操作因内部错误而停止
+fleet-no-thread = 无法启动工作线程
+fleet-timeout = { $seconds } s 内没有结果
+fleet-hint-timeout = 设备可能已关闭或响应慢；请增大 --device-timeout，或单独检查它的通信链路
+fleet-not-started = 未启动：设备组的运行已停止
+fleet-all-ok = 设备组 { $fleet }：{ $count } 台设备，全部正常（{ $ms } ms，同时 { $jobs } 台）
+fleet-failed = 设备组 { $fleet }：{ $count } 台设备中 { $failed } 台失败：{ $devices }（{ $ms } ms，同时 { $jobs } 台）
+
+## Recordings (record): --record, `replay`.
+record-cannot-read = 无法读取记录 { $file }
+record-hint-give-file = 请给出 --record FILE 写入的文件
+record-not-readable = { $file } 不是可读的 pcapng 记录：{ $error }
+record-hint-capture = 请给出 plcsh --record FILE 写入的文件，或在以太网或回环接口上抓取的 Modbus TCP pcapng/pcap 文件（tshark -i lo -f 'tcp port 502' -w FILE.pcapng）
+record-snap-length = { $count } 个数据包被抓包长度（snap length）截断：其中的帧不完整（请不带 -s 或用 -s 0 重新抓包）
+record-no-tcp = 其 { $count } 个数据包不含 TCP 数据（没有抓到 Modbus TCP 通信）
+record-bytes-missing = 抓包中缺少从 { $from } 到 { $to } 的 { $lost } 字节（其附近的帧可能显示为格式错误）
+record-cannot-create = 无法创建记录 { $file }
+record-hint-writable = 请检查目录是否存在且可写
+record-cannot-write = 无法写入记录 { $file }
+record-incomplete = 记录 { $file } 不完整：{ $error }
+replay-no-sim-plc = { $link }：测试台上没有仿真 PLC
+replay-no-sim-drive = { $link }：测试台上没有仿真驱动器
+replay-other-protocol = { $link }：{ $protocol } 帧（重放只覆盖 Modbus 和伺服链路）
+replay-undeclared-protocol = { $link }：未声明协议的帧
+replay-helper-cannot-run = { $link }：辅助程序无法运行：{ $error }
+replay-no-reply-recorded = 记录中没有应答；仿真器有应答
+replay-no-reply-replayed = 记录中有应答；仿真器没有应答
+replay-no-requests = { $file } 中没有记录的请求
+replay-hint-record = 请记录一个通过 Modbus 或伺服线路与设备通信的会话：plcsh --record FILE --device plc=tcp://…
