@@ -248,3 +248,14 @@ replay-no-reply-recorded = no reply was recorded; the simulator answers
 replay-no-reply-replayed = a reply was recorded; the simulator gives none
 replay-no-requests = { $file } holds no recorded requests
 replay-hint-record = record a session that talks to a device over Modbus or a servo line: plcsh --record FILE --device plc=tcp://…
+publish-command-too-big = a command is at most { $max } bytes
+publish-command-not-json = not JSON: { $error }
+publish-command-not-object = a command is a JSON object {"{"}"operand":…, "value":…{"}"}
+publish-command-no-operand = `operand` (a string) is missing
+publish-command-no-value = `value` (a number, true/false or a literal such as "16#85") is missing
+publish-command-one-write = one operand and one value per command
+publish-write-no-allow-list = write refused: `{ $device }` has no allow list: writes from the broker need one in its profile
+publish-write-profile-no-allow-list = write refused: `{ $device }`'s profile has no allow list: writes from the broker need one
+publish-no-such-member = `{ $device }` is no device of `{ $group }` (members: { $members })
+publish-no-such-member-near = `{ $device }` is no device of `{ $group }` (members: { $members }); did you mean { $near }?
+publish-no-runtime = cannot start a runtime: { $error }

@@ -290,3 +290,14 @@ replay-no-reply-recorded = ответ не записан; симулятор о
 replay-no-reply-replayed = ответ записан; симулятор не отвечает
 replay-no-requests = в { $file } нет записанных запросов
 replay-hint-record = запишите сеанс, в котором идёт обмен с устройством по Modbus или по линии сервопривода: plcsh --record FILE --device plc=tcp://…
+publish-command-too-big = команда — не больше { $max } байт
+publish-command-not-json = не JSON: { $error }
+publish-command-not-object = команда — это объект JSON {"{"}"operand":…, "value":…{"}"}
+publish-command-no-operand = нет `operand` (строки)
+publish-command-no-value = нет `value` (числа, true/false или литерала, например "16#85")
+publish-command-one-write = одна команда — один операнд и одно значение
+publish-write-no-allow-list = запись отклонена: у `{ $device }` нет списка разрешённых операндов: записи от брокера требуют его в профиле
+publish-write-profile-no-allow-list = запись отклонена: в профиле `{ $device }` нет списка разрешённых операндов: записи от брокера требуют его
+publish-no-such-member = `{ $device }` — не устройство группы `{ $group }` (устройства: { $members })
+publish-no-such-member-near = `{ $device }` — не устройство группы `{ $group }` (устройства: { $members }); может быть, { $near }?
+publish-no-runtime = не удаётся запустить среду выполнения: { $error }

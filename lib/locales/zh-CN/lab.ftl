@@ -242,3 +242,14 @@ replay-no-reply-recorded = 记录中没有应答；仿真器有应答
 replay-no-reply-replayed = 记录中有应答；仿真器没有应答
 replay-no-requests = { $file } 中没有记录的请求
 replay-hint-record = 请记录一个通过 Modbus 或伺服线路与设备通信的会话：plcsh --record FILE --device plc=tcp://…
+publish-command-too-big = 一条命令最多 { $max } 字节
+publish-command-not-json = 不是 JSON：{ $error }
+publish-command-not-object = 命令是一个 JSON 对象 {"{"}"operand":…, "value":…{"}"}
+publish-command-no-operand = 缺少 `operand`（字符串）
+publish-command-no-value = 缺少 `value`（数字、true/false 或 "16#85" 这样的字面量）
+publish-command-one-write = 每条命令只能有一个操作数和一个值
+publish-write-no-allow-list = 写入被拒绝：`{ $device }` 没有允许列表：来自代理服务器的写入需要在其配置中设置
+publish-write-profile-no-allow-list = 写入被拒绝：`{ $device }` 的配置没有允许列表：来自代理服务器的写入需要它
+publish-no-such-member = `{ $device }` 不是 `{ $group }` 的设备（成员：{ $members }）
+publish-no-such-member-near = `{ $device }` 不是 `{ $group }` 的设备（成员：{ $members }）；是否想输入 { $near }？
+publish-no-runtime = 无法启动运行时：{ $error }
