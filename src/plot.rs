@@ -275,7 +275,9 @@ fn draw<DB: plotters::prelude::DrawingBackend>(
 ) -> Result<(), String> {
     use plotters::prelude::*;
     register_font();
-    let e = |e: plotters::drawing::DrawingAreaErrorKind<DB::ErrorType>| format!("cannot draw the plot: {e}");
+    let e = |e: plotters::drawing::DrawingAreaErrorKind<DB::ErrorType>| {
+        crate::msg!("plot-cannot-draw", error = e.to_string()).text
+    };
     root.fill(&WHITE).map_err(e)?;
     let root = root.titled(title, (FAMILY, 22)).map_err(e)?;
     let groups = panels(series);
@@ -357,11 +359,9 @@ pub fn write_picture(path: &str, series: &[Series], title: &str, (w, h): (u32, u
     } else if lower.ends_with(".svg") {
         svg(series, title, w, h).and_then(|text| std::fs::write(path, text).map_err(|e| e.to_string()))
     } else {
-        return Err(
-            Error::usage(format!("to={path}: pictures are .png or .svg")).hint("e.g. to=ramp.png or to=ramp.svg")
-        );
+        return Err(Error::usage(crate::msg!("plot-bad-picture", path = path)).hint(crate::msg!("plot-hint-picture")));
     };
-    r.map_err(|m| Error::io(format!("cannot write {path}: {m}")))
+    r.map_err(|m| Error::io(crate::msg!("plot-cannot-write", path = path, error = m)))
 }
 
 /// The default picture size: 900 wide, 300 per panel.
@@ -371,12 +371,14 @@ pub fn default_size(series: &[Series]) -> (u32, u32) {
 
 /// `size=900x400` → (900, 400).
 pub fn parse_size(text: &str) -> std::result::Result<(u32, u32), String> {
-    let (w, h) =
-        text.split_once(['x', 'X']).ok_or_else(|| format!("size={text} is not WIDTHxHEIGHT (e.g. 900x400)"))?;
+    let (w, h) = text.split_once(['x', 'X']).ok_or_else(|| crate::msg!("plot-bad-size", text = text).text)?;
     let n = |s: &str| s.trim().parse::<u32>().ok().filter(|n| PICTURE_SIDES.contains(n));
     match (n(w), n(h)) {
         (Some(w), Some(h)) => Ok((w, h)),
-        _ => Err(format!("size={text}: each side is {}…{} pixels", PICTURE_SIDES.start(), PICTURE_SIDES.end())),
+        _ => {
+            Err(crate::msg!("plot-size-range", text = text, min = *PICTURE_SIDES.start(), max = *PICTURE_SIDES.end())
+                .text)
+        }
     }
 }
 

@@ -104,16 +104,70 @@ fn the_language_comes_from_the_flag_then_plcsh_lang_then_the_locale() {
     };
     assert_eq!(said(&["--lang", "zh-CN"], &[("PLCSH_LANG", "ru")]), "zh-CN");
     assert_eq!(said(&[], &[("PLCSH_LANG", "ru")]), "ru");
+    // The locale variables are the system's language on Unix only: Windows has the user's UI
+    // language instead (`under_wine_the_windows_ui_language_chooses` sets that one).
+    if cfg!(unix) {
+        the_locale_variables_choose(&said);
+    }
+    // A language plcsh does not speak is a usage error (status 2), in the flag's words.
+    let (code, _, err) = run(&["--lang", "de", "-c", "get VW0"], &[]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("unknown language `de`"), "{err}");
+}
+
+/// `LC_ALL`, then `LC_MESSAGES`, then `LANG` (POSIX's order for messages).
+fn the_locale_variables_choose(said: &dyn Fn(&[&str], &[(&str, &str)]) -> &'static str) {
     assert_eq!(said(&[], &[("PLCSH_LANG", ""), ("LANG", "ru_RU.UTF-8")]), "ru");
     assert_eq!(said(&[], &[("PLCSH_LANG", ""), ("LANG", "ru_RU.UTF-8"), ("LC_ALL", "zh_CN.UTF-8")]), "zh-CN");
     assert_eq!(said(&[], &[("PLCSH_LANG", ""), ("LANG", "ru_RU.UTF-8"), ("LC_MESSAGES", "C")]), "en");
     assert_eq!(said(&[], &[("PLCSH_LANG", ""), ("LANG", "de_DE.UTF-8")]), "en");
     assert_eq!(said(&[], &[("PLCSH_LANG", ""), ("LANG", "zh_TW.UTF-8")]), "en");
     assert_eq!(said(&[], &[("PLCSH_LANG", "")]), "en");
-    // A language plcsh does not speak is a usage error (status 2), in the flag's words.
-    let (code, _, err) = run(&["--lang", "de", "-c", "get VW0"], &[]);
-    assert_eq!(code, Some(2), "{err}");
-    assert!(err.contains("unknown language `de`"), "{err}");
+}
+
+/// The Windows user's UI language (GetUserDefaultUILanguage) chooses when neither `--lang`
+/// nor `PLCSH_LANG` does: Russian, Simplified Chinese, and English for a language plcsh does
+/// not speak (German) or Traditional Chinese. Run under Wine (`.ci/windows`), where a Wine
+/// process's UI language is the Unix locale it starts with (`LC_ALL`), the way a user of Wine
+/// sets it. A Windows process started from Windows code inherits its parent's language,
+/// whatever the environment it is given, so each plcsh.exe starts in a Wine process of its own:
+/// through the Unix `env`, which Wine runs as a Unix program with the locale set.
+#[cfg(windows)]
+#[test]
+fn under_wine_the_windows_ui_language_chooses() {
+    if std::env::var_os("PLCSH_WINE").is_none() {
+        skipped("Wine to set the UI language of a new process (.ci/windows runs this test; on Windows, set the display language in Settings)");
+        return;
+    }
+    // Wine's loader for 64-bit programs, where Debian puts it; else `wine` on the PATH.
+    let loader = if std::path::Path::new(r"Z:\usr\lib\wine\wine64").exists() { "/usr/lib/wine/wine64" } else { "wine" };
+    let said = |locale: &str| {
+        let o = std::process::Command::new(r"Z:\usr\bin\env")
+            .args(["-u", "PLCSH_LANG", "-u", "LANGUAGE", "-u", "LC_MESSAGES", "-u", "LANG"])
+            .arg(format!("LC_ALL={locale}"))
+            .arg("PLCSH_STATE=none")
+            .arg(loader)
+            .arg(bin())
+            .args(["-c", "set VB2=300"])
+            .stdin(std::process::Stdio::null())
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&o.stderr).into_owned();
+        if err.contains("вне диапазона") {
+            "ru"
+        } else if err.contains("超出") {
+            "zh-CN"
+        } else if err.contains("is out of range") {
+            "en"
+        } else {
+            panic!("LC_ALL={locale}: no error in any language: {err}{}", String::from_utf8_lossy(&o.stdout))
+        }
+    };
+    assert_eq!(said("ru_RU.UTF-8"), "ru");
+    assert_eq!(said("zh_CN.UTF-8"), "zh-CN");
+    assert_eq!(said("de_DE.UTF-8"), "en");
+    assert_eq!(said("zh_TW.UTF-8"), "en");
+    assert_eq!(said("C"), "en");
 }
 
 #[test]
@@ -346,6 +400,69 @@ fn a_whole_lab_in_three_languages() {
     let (code, out, err) = run(&["--lang", "zh-CN", "lab", "check", dir.to_str().unwrap()], &[("LANG", "zh_CN.UTF-8")]);
     assert_eq!(code, Some(0), "{out}{err}");
     assert!(out.starts_with(&format!("{TITLE}: {}", wants[1].check_head)), "{out}");
+    let _ = std::fs::remove_dir_all(&root);
+}
+
+/// A lab grades in its `language` (lab.toml), and the bytes of its grades do not depend on
+/// the grader's locale: the same Russian lab and submissions graded under a Chinese locale and
+/// under `C` give identical output, with the verdicts that are not `passed`/`failed` (a
+/// runtime error, a file that is not a submission) in Russian and their `code` in `--json`.
+#[test]
+fn a_russian_lab_grades_in_russian_whatever_the_graders_locale() {
+    let root = std::env::temp_dir().join(format!("plcsh-lang-ru-lab-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&root);
+    std::fs::create_dir_all(&root).unwrap();
+    let dir = root.join("lab");
+    let d = dir.to_str().unwrap();
+    let (code, out, err) = run(&["lab", "new", d], &[]);
+    assert_eq!(code, Some(0), "{out}{err}");
+    let toml = dir.join("lab.toml");
+    let text = std::fs::read_to_string(&toml).unwrap();
+    std::fs::write(&toml, format!("language = \"ru\"\n{text}")).unwrap();
+    let subs = root.join("subs");
+    std::fs::create_dir_all(&subs).unwrap();
+    std::fs::copy(dir.join("reference.il"), subs.join("good.il")).unwrap();
+    std::fs::copy(dir.join("starter.il"), subs.join("bad.il")).unwrap();
+    // An instruction the PLC does not have: the program does not load (a runtime error).
+    std::fs::write(subs.join("broken.il"), "LD      %I0.0\nFROB    %Q0.0\n").unwrap();
+    std::fs::write(subs.join("notes.txt"), "not a program").unwrap();
+    let files: Vec<String> =
+        ["good.il", "bad.il", "broken.il", "notes.txt"].iter().map(|f| subs.join(f).display().to_string()).collect();
+    let grade = |json: bool, env: &[(&str, &str)]| {
+        let mut args = vec!["lab", "grade", d];
+        if json {
+            args.insert(0, "--json");
+        }
+        args.extend(files.iter().map(|f| f.as_str()));
+        let (_, out, err) = run(&args, env);
+        (out, err)
+    };
+    let zh = grade(false, &[("PLCSH_LANG", ""), ("LANG", "zh_CN.UTF-8")]);
+    let c = grade(false, &[("PLCSH_LANG", ""), ("LANG", "C")]);
+    let en = grade(false, &[("PLCSH_LANG", "en")]);
+    assert_eq!(zh, c, "the grades differ with the grader's locale");
+    assert_eq!(en, c, "the grades differ with PLCSH_LANG");
+    let out = &c.0;
+    let row = |student: &str| {
+        let line = out.lines().find(|l| l.starts_with(&format!("| {student} "))).unwrap_or_else(|| panic!("{out}"));
+        cells(line)[4].clone()
+    };
+    assert_eq!(row("good"), "зачтено", "{out}");
+    assert_eq!(row("bad"), "не зачтено", "{out}");
+    assert!(row("broken").starts_with("ошибка выполнения: "), "{out}");
+    assert_eq!(row("notes"), "не сданная работа: нужен сценарий .lua или программа .il", "{out}");
+    // --json: `verdict` in the lab's language, `code` the same in every language.
+    let (json, _) = grade(true, &[("PLCSH_LANG", ""), ("LANG", "zh_CN.UTF-8")]);
+    let reports: Vec<serde_json::Value> = json
+        .lines()
+        .filter_map(|l| serde_json::from_str(l).ok())
+        .filter(|v: &serde_json::Value| v.get("student").is_some())
+        .collect();
+    let by = |s: &str| reports.iter().find(|r| r["student"] == s).unwrap_or_else(|| panic!("{json}")).clone();
+    assert_eq!(by("broken")["code"], "lab-runtime-error", "{json}");
+    assert_eq!(by("notes")["code"], "lab-not-submission-kind", "{json}");
+    assert!(by("good").get("code").is_none(), "{json}");
+    assert_eq!(by("good")["verdict"], "passed", "{json}");
     let _ = std::fs::remove_dir_all(&root);
 }
 

@@ -99,15 +99,12 @@ pub fn run(cmd: &LabCmd, style: Style, out: &mut dyn Write) -> i32 {
                 // Stopped: the workers were ended; no summary of a partial run is printed as
                 // if it were the class's grades.
                 // (The status is the signal's: cli::run.)
-                let done = reports.iter().filter(|r| !r.verdict.starts_with("not graded")).count();
+                let done = reports.iter().filter(|r| r.code.as_deref() != Some("lab-not-graded")).count();
                 let e = crate::core::Error::new(
                     crate::core::ErrorKind::Interrupted,
-                    format!(
-                        "lab grade stopped by {} before every submission was graded ({done} graded)",
-                        crate::signals::cause()
-                    ),
+                    crate::msg!("lab-grade-stopped", cause = crate::signals::cause().to_string(), done = done),
                 )
-                .hint("run it again to grade every submission");
+                .hint(crate::msg!("lab-hint-grade-again"));
                 let _ = output::report_error(out, style, "lab", &e, None);
                 return 1;
             }
@@ -116,7 +113,8 @@ pub fn run(cmd: &LabCmd, style: Style, out: &mut dyn Write) -> i32 {
                     return fail(
                         out,
                         "lab",
-                        &crate::core::Error::io(format!("cannot write {}", path.display())).cause(e),
+                        &crate::core::Error::io(crate::msg!("lab-cannot-write", file = path.display().to_string()))
+                            .cause(e),
                     );
                 }
             }
@@ -148,7 +146,7 @@ pub fn run(cmd: &LabCmd, style: Style, out: &mut dyn Write) -> i32 {
                     }
                 }
             }
-            i32::from(reports.iter().any(|r| r.verdict.starts_with("grader error")))
+            i32::from(reports.iter().any(|r| r.code.as_deref() == Some("lab-grader-error")))
         }
         LabCmd::Worker { lab, submission, report, write_dir } => {
             crate::lab::runner::worker(lab, submission, report, write_dir.as_deref())

@@ -92,10 +92,10 @@ fn config(
     group: &str,
     shard: Option<Shard>,
 ) -> Result<broker::Config> {
-    let url = args.broker.clone().or(file.url.clone()).ok_or_else(|| {
-        Error::usage("publish needs a broker")
-            .hint("--broker mqtt://HOST:1883, or url = \"mqtt://HOST:1883\" under [mqtt] in the profile file")
-    })?;
+    let url =
+        args.broker.clone().or(file.url.clone()).ok_or_else(|| {
+            Error::usage(crate::msg!("publish-needs-broker")).hint(crate::msg!("publish-hint-broker"))
+        })?;
     let (host, port, tls) = publish::parse_broker(&url)?;
     let env = |k: &str| std::env::var(k).ok().filter(|v| !v.is_empty());
     let username = env("PLCSH_MQTT_USERNAME").or(file.username.clone());
@@ -103,15 +103,16 @@ fn config(
     let credentials = match (username, password) {
         (Some(u), p) => Some((u, p.unwrap_or_default())),
         (None, Some(_)) => {
-            return Err(Error::usage("a broker password without a username")
-                .hint("set username under [mqtt] in the profile file or PLCSH_MQTT_USERNAME"))
+            return Err(
+                Error::usage(crate::msg!("publish-password-without-user")).hint(crate::msg!("publish-hint-username"))
+            )
         }
         (None, None) => None,
     };
     let ca = match &file.ca_file {
-        Some(f) => {
-            Some(std::fs::read(f).map_err(|e| Error::io(format!("cannot read [mqtt] ca_file {}: {e}", f.display())))?)
-        }
+        Some(f) => Some(std::fs::read(f).map_err(|e| {
+            Error::io(crate::msg!("publish-cannot-read-ca", file = f.display().to_string(), error = e.to_string()))
+        })?),
         None => None,
     };
     let default_id = match shard {
@@ -165,28 +166,26 @@ pub fn run(cli: &super::Cli, shell: &mut Shell, args: &PublishArgs, style: Style
 fn fatal(f: &Fatal, broker: &str) -> (Error, i32) {
     match f {
         Fatal::Auth(why) => (
-            Error::new(ErrorKind::Refused, format!("the broker {broker} refused the credentials ({why})")).hint(
-                "check username under [mqtt] in the profile file (or PLCSH_MQTT_USERNAME) and PLCSH_MQTT_PASSWORD, \
-                 and that the broker's ACL lets this user connect",
-            ),
+            Error::new(ErrorKind::Refused, crate::msg!("publish-auth-refused", broker = broker, why = why.as_str()))
+                .hint(crate::msg!("publish-hint-auth")),
             EXIT_AUTH,
         ),
         Fatal::Tls(why) => (
-            Error::new(ErrorKind::Link, format!("TLS with the broker {broker} failed ({why})")).hint(
-                "the broker's certificate must verify against ca_file under [mqtt] (its CA, PEM) or the system's roots, \
-                 and name the host in --broker",
-            ),
+            Error::new(ErrorKind::Link, crate::msg!("publish-tls-failed", broker = broker, why = why.as_str()))
+                .hint(crate::msg!("publish-hint-tls")),
             EXIT_BROKER,
         ),
         Fatal::NeverReached(why) => (
             Error::new(
                 ErrorKind::Link,
-                format!(
-                    "no MQTT broker answered at {broker} within {} s of the start ({why})",
-                    broker::FIRST_CONTACT.as_secs()
+                crate::msg!(
+                    "publish-no-broker",
+                    broker = broker,
+                    seconds = broker::FIRST_CONTACT.as_secs(),
+                    why = why.as_str()
                 ),
             )
-            .hint("is the broker running, and are the host and port in --broker right (mqtt:// 1883, mqtts:// 8883)?"),
+            .hint(crate::msg!("publish-hint-no-broker")),
             EXIT_BROKER,
         ),
     }
@@ -214,9 +213,12 @@ fn members(
         if !waiting {
             for t in &texts {
                 if let Err(e) = shell.session.resolve(t) {
-                    let mut err = Error::usage(format!("`{t}` is not an operand of this device: {}", e.message)).hint(
-                        "nothing was published; fix the operand (plcsh -c 'get OPERAND' shows what the device answers)",
-                    );
+                    let mut err = Error::usage(crate::msg!(
+                        "publish-not-an-operand",
+                        operand = *t,
+                        error = e.message.to_string()
+                    ))
+                    .hint(crate::msg!("publish-hint-fix-operand"));
                     if let Some(h) = e.hint.clone() {
                         err = err.hint(h);
                     }
@@ -256,18 +258,24 @@ fn members(
         list.push(Member { name: m.name.clone(), session, reopen: Some(reopen) });
     }
     if let Some((op, devices, e)) = wrong.into_iter().next() {
-        let on = if devices.len() == list.len() {
-            format!("any member of fleet `{}`", f.name)
+        let shown = devices.iter().take(5).cloned().collect::<Vec<_>>().join(", ");
+        let message = if devices.len() == list.len() {
+            crate::msg!(
+                "publish-not-an-operand-fleet",
+                operand = op.as_str(),
+                fleet = f.name.as_str(),
+                error = e.message.to_string()
+            )
         } else {
-            let mut shown = devices.iter().take(5).cloned().collect::<Vec<_>>().join(", ");
-            if devices.len() > 5 {
-                shown += &format!(" and {} more", devices.len() - 5);
-            }
-            shown
+            crate::msg!(
+                "publish-not-an-operand-members",
+                operand = op.as_str(),
+                members = shown,
+                more = devices.len().saturating_sub(5),
+                error = e.message.to_string()
+            )
         };
-        let mut err = Error::usage(format!("`{op}` is not an operand of {on}: {}", e.message)).hint(
-            "nothing was published; fix the operand (plcsh -f FLEET -c 'get OPERAND' shows what each member answers)",
-        );
+        let mut err = Error::usage(message).hint(crate::msg!("publish-hint-fix-operand-fleet"));
         if let Some(h) = e.hint.clone() {
             err = err.hint(h);
         }
@@ -281,7 +289,10 @@ fn start(cli: &super::Cli, shell: &mut Shell, args: &PublishArgs, style: Style, 
         .ok()
         .filter(|us| *us > 0)
         .map(|us| Duration::from_micros(us as u64))
-        .ok_or_else(|| Error::usage(format!("--every {} is not a duration", args.every)).hint("e.g. 1s, 250ms"))?;
+        .ok_or_else(|| {
+            Error::usage(crate::msg!("publish-bad-every", every = args.every.as_str()))
+                .hint(crate::msg!("publish-hint-every"))
+        })?;
     let fleet = match &args.fleet {
         Some(name) => Some(shell.session.profiles.fleet(name)?.clone()),
         None => None,
@@ -317,8 +328,8 @@ fn start(cli: &super::Cli, shell: &mut Shell, args: &PublishArgs, style: Style, 
     };
     let outbox = Arc::new(Outbox::new(args.buffer.max(1), members.len()));
     let (notes_tx, notes) = std::sync::mpsc::channel();
-    let broker_thread =
-        broker::spawn(cfg, outbox.clone(), notes_tx).map_err(|e| Error::io("cannot start the MQTT thread").cause(e))?;
+    let broker_thread = broker::spawn(cfg, outbox.clone(), notes_tx)
+        .map_err(|e| Error::io(crate::msg!("publish-no-mqtt-thread")).cause(e))?;
     let (seen_tx, seen) = std::sync::mpsc::channel::<Seen>();
     let stop = shell.session.interrupt.clone();
     // Polling starts once the broker has answered (or after START_GRACE without it, the
@@ -346,7 +357,7 @@ fn start(cli: &super::Cli, shell: &mut Shell, args: &PublishArgs, style: Style, 
     }
     drop(early_tx);
     let pool = Pool::start(members, poll, outbox.clone(), seen_tx)
-        .map_err(|e| Error::io("cannot start the polling threads").cause(e))?;
+        .map_err(|e| Error::io(crate::msg!("publish-no-poll-threads")).cause(e))?;
     let mut offline: std::collections::BTreeSet<String> = Default::default();
     let mut failed: Option<Fatal> = None;
     let mut stopped_by_signal = false;
@@ -373,15 +384,13 @@ fn start(cli: &super::Cli, shell: &mut Shell, args: &PublishArgs, style: Style, 
                     out,
                     style,
                     json!({"ok": true, "cmd": "publish", "event": "broker", "state": "connected", "broker": broker_name}),
-                    format!("connected to {broker_name}"),
+                    crate::msg!("publish-connected", broker = broker_name.as_str()).text,
                 ),
                 Note::Away(why) => event(
                     out,
                     style,
                     json!({"ok": true, "cmd": "publish", "event": "broker", "state": "away", "broker": broker_name, "reason": why}),
-                    format!(
-                        "broker {broker_name} away ({why}); readings are kept up to --buffer and sent when it returns"
-                    ),
+                    crate::msg!("publish-broker-away", broker = broker_name.as_str(), why = why.as_str()).text,
                 ),
                 Note::Fatal(f) => failed = Some(f),
                 Note::Command(topic, payload) => {
@@ -428,7 +437,7 @@ fn start(cli: &super::Cli, shell: &mut Shell, args: &PublishArgs, style: Style, 
                     out,
                     style,
                     json!({"ok": true, "cmd": "publish", "event": "device", "device": d, "state": "online"}),
-                    format!("{d} answers again"),
+                    crate::msg!("publish-device-back", device = d.as_str()).text,
                 );
             }
             Err(RecvTimeoutError::Timeout) => {}
@@ -463,7 +472,7 @@ fn start(cli: &super::Cli, shell: &mut Shell, args: &PublishArgs, style: Style, 
         out,
         style,
         json!({"ok": true, "cmd": "publish", "event": "polling", "state": "stopped"}),
-        "polling stopped; delivering what is queued (the broker has a few seconds to take it)".into(),
+        crate::msg!("publish-polling-stopped").text,
     );
     outbox.set_stats(stats_msg(&outbox, offline.len(), 0));
     outbox.close();
@@ -534,16 +543,25 @@ fn start(cli: &super::Cli, shell: &mut Shell, args: &PublishArgs, style: Style, 
             v.sort_by_key(|b| std::cmp::Reverse(b.1));
             v.iter().take(5).map(|(k, n)| format!("{k} {n}")).collect()
         };
-        writeln!(
-            out,
-            "published {} messages to {broker_name} (group {group}{}); {away} dropped while the broker was away, {behind} dropped and {skipped} polls skipped because plcsh fell behind, {} dropped at the stop (not delivered), {} reconnects{}{}",
-            stats.published,
-            shard.map(|s| format!(", shard {}/{}", s.k, s.n)).unwrap_or_default(),
-            stats.undelivered,
-            stats.reconnects,
-            if worst.is_empty() { String::new() } else { format!("; most behind: {}", worst.join(", ")) },
-            if offline.is_empty() { String::new() } else { format!("; offline: {}", offline.join(", ")) }
-        )?;
+        let some = |b: bool| if b { "some" } else { "none" };
+        let summary = crate::msg!(
+            "publish-summary",
+            published = stats.published,
+            broker = broker_name.as_str(),
+            group = group.as_str(),
+            shard = some(shard.is_some()),
+            shard_of = shard.map(|s| format!("{}/{}", s.k, s.n)).unwrap_or_default(),
+            away = away,
+            behind = behind,
+            skipped = skipped,
+            undelivered = stats.undelivered,
+            reconnects = stats.reconnects,
+            worst = some(!worst.is_empty()),
+            worst_list = worst.join(", "),
+            offline = some(!offline.is_empty()),
+            offline_list = offline.join(", "),
+        );
+        writeln!(out, "{summary}")?;
     }
     Ok(if ok { 0 } else { 1 })
 }

@@ -2,13 +2,14 @@
 //! (waits stop at the limit, [`Budget::cap_wait`]), Lua instructions (counted by the
 //! interpreter's instruction hook) and Lua memory (the interpreter's allocator limit), with a
 //! wall-clock limit only as a safety net (the parent process ends a worker that passes it).
-//! The verdicts name the limit ("exceeded 10 simulated minutes"), so a submission gets the
+//! The verdicts name the limit ("exceeded 10 simulated minutes", from the message catalogue), so a submission gets the
 //! same verdict on an idle machine and on a loaded one.
 //!
 //! The limits are set by `plcsh lab` (`crate::lab`) and kept by the session (its waits stop at
 //! the simulated-time limit) and the Lua engine (its instruction hook): it lives in the core so
 //! that the session below the lab can hold it.
 
+use crate::core::msg::{Arg, Msg};
 use crate::core::Clock;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Mutex;
@@ -23,7 +24,7 @@ pub struct Budget {
     pub instructions: Option<u64>,
     pub memory: Option<usize>,
     executed: AtomicU64,
-    exceeded: Mutex<Option<String>>,
+    exceeded: Mutex<Option<Msg>>,
     /// An allocation the memory limit refused, not yet known to be final ([`Budget::refused`]).
     suspect: Mutex<Option<Allocation>>,
 }
@@ -31,14 +32,24 @@ pub struct Budget {
 /// One request to Lua's allocator: the block, its old size, its new size.
 pub type Allocation = (usize, usize, usize);
 
-/// `600 s` → `10 simulated minutes`; `90 s` → `90 simulated seconds`.
-pub fn describe_time(d: Duration) -> String {
+/// `600 s` → `exceeded 10 simulated minutes`; `90 s` → `exceeded 90 simulated seconds` (in
+/// the language of messages: a lab's `language`).
+pub fn exceeded_time(d: Duration) -> Msg {
     let s = d.as_secs_f64();
     if s >= 60.0 && (s / 60.0).fract() == 0.0 {
-        let m = s / 60.0;
-        format!("{m} simulated minute{}", if m == 1.0 { "" } else { "s" })
+        crate::msg!("budget-exceeded-minutes", n = whole(s / 60.0))
     } else {
-        format!("{} simulated second{}", trim(s), if s == 1.0 { "" } else { "s" })
+        crate::msg!("budget-exceeded-seconds", n = whole(s))
+    }
+}
+
+/// A figure as a plural selector reads it: a whole number as a number, any other as its
+/// digits (which take a language's "other" form: `0.5 simulated seconds`).
+fn whole(x: f64) -> Arg {
+    if x.fract() == 0.0 && x.abs() < 1e15 {
+        Arg::Int(x as i64)
+    } else {
+        Arg::Text(trim(x))
     }
 }
 
@@ -51,12 +62,12 @@ pub fn describe_count(n: u64) -> String {
     }
 }
 
-/// `268435456` → `256 MiB`.
+/// `268435456` → `256 MiB`; `1000` → `1000 bytes` (in the language of messages).
 pub fn describe_bytes(n: usize) -> String {
     if n >= 1 << 20 {
-        format!("{} MiB", trim(n as f64 / (1u64 << 20) as f64))
+        crate::msg!("budget-size-mib", n = trim(n as f64 / (1u64 << 20) as f64)).text
     } else {
-        format!("{n} bytes")
+        crate::msg!("budget-size-bytes", n = n).text
     }
 }
 
@@ -71,7 +82,7 @@ impl Budget {
     }
 
     /// Notes the first limit passed (later ones do not replace it).
-    pub fn exceed(&self, why: String) {
+    pub fn exceed(&self, why: Msg) {
         let mut e = self.exceeded.lock().unwrap_or_else(|p| p.into_inner());
         if e.is_none() {
             *e = Some(why);
@@ -82,6 +93,11 @@ impl Budget {
     /// retry is final by now (the retry comes at once, before any instruction): it is the
     /// memory limit.
     pub fn exceeded(&self) -> Option<String> {
+        self.exceeded_msg().map(|m| m.text)
+    }
+
+    /// [`Budget::exceeded`] with its message id (a lab report's `code`).
+    pub fn exceeded_msg(&self) -> Option<Msg> {
         if self.suspect.lock().unwrap_or_else(|p| p.into_inner()).take().is_some() {
             self.exceed_memory();
         }
@@ -141,7 +157,7 @@ impl Budget {
         if clock.is_stepped() && deadline > now {
             clock.step(deadline - now);
         }
-        self.exceed(format!("exceeded {}", describe_time(self.sim_time.unwrap_or_default())));
+        self.exceed(exceeded_time(self.sim_time.unwrap_or_default()));
         None
     }
 
@@ -150,12 +166,12 @@ impl Budget {
         let done = self.executed.fetch_add(n, Ordering::Relaxed) + n;
         if let Some(max) = self.instructions {
             if done > max {
-                self.exceed(format!("exceeded {} Lua instructions", describe_count(max)));
+                self.exceed(crate::msg!("budget-exceeded-instructions", count = describe_count(max)));
             }
         }
         if let Some(deadline) = self.deadline() {
             if clock.now() > deadline {
-                self.exceed(format!("exceeded {}", describe_time(self.sim_time.unwrap_or_default())));
+                self.exceed(exceeded_time(self.sim_time.unwrap_or_default()));
             }
         }
         self.exceeded()
@@ -168,8 +184,8 @@ impl Budget {
     }
 
     /// The memory verdict.
-    pub fn memory_verdict(&self) -> Option<String> {
-        self.memory.map(|m| format!("exceeded {} of Lua memory", describe_bytes(m)))
+    pub fn memory_verdict(&self) -> Option<Msg> {
+        self.memory.map(|m| crate::msg!("budget-exceeded-memory", size = describe_bytes(m)))
     }
 
     /// Notes that the memory limit was hit: from then on the run is over, whatever the Lua
@@ -193,8 +209,11 @@ mod tests {
 
     #[test]
     fn verdicts_name_the_limit() {
-        assert_eq!(describe_time(Duration::from_secs(600)), "10 simulated minutes");
-        assert_eq!(describe_time(Duration::from_secs(90)), "90 simulated seconds");
+        assert_eq!(exceeded_time(Duration::from_secs(600)), "exceeded 10 simulated minutes");
+        assert_eq!(exceeded_time(Duration::from_secs(60)), "exceeded 1 simulated minute");
+        assert_eq!(exceeded_time(Duration::from_secs(90)), "exceeded 90 simulated seconds");
+        assert_eq!(exceeded_time(Duration::from_millis(500)), "exceeded 0.5 simulated seconds");
+        assert_eq!(describe_bytes(1000), "1000 bytes");
         assert_eq!(describe_count(50_000_000), "50 M");
         assert_eq!(describe_bytes(256 << 20), "256 MiB");
     }

@@ -150,16 +150,22 @@ pub fn write(out: &mut dyn Write, style: Style, rows: &[Row], s: &Summary) -> st
     let h: Vec<&str> = headers.iter().map(String::as_str).collect();
     output::write_outcome(out, style, &Outcome::new("fleet").table(&h, table_rows))?;
     let line = if all_ok {
-        format!("fleet {}: {} devices, all ok ({:.0} ms, {} at once)", s.fleet, rows.len(), ms(s.elapsed), s.jobs)
+        crate::msg!(
+            "fleet-all-ok",
+            fleet = s.fleet,
+            count = rows.len(),
+            ms = format!("{:.0}", ms(s.elapsed)),
+            jobs = s.jobs
+        )
     } else {
-        format!(
-            "fleet {}: {} of {} devices failed: {} ({:.0} ms, {} at once)",
-            s.fleet,
-            failed.len(),
-            rows.len(),
-            failed.join(", "),
-            ms(s.elapsed),
-            s.jobs
+        crate::msg!(
+            "fleet-failed",
+            fleet = s.fleet,
+            failed = failed.len(),
+            count = rows.len(),
+            devices = failed.join(", "),
+            ms = format!("{:.0}", ms(s.elapsed)),
+            jobs = s.jobs
         )
     };
     writeln!(out, "{line}")?;

@@ -105,7 +105,7 @@ pub fn each<T: Send + 'static>(fleet: &Fleet, settings: Settings, stop: &AtomicB
             let (tx, work, f) = (tx.clone(), work.clone(), flag.clone());
             let spawned = std::thread::Builder::new().name(format!("fleet-{}", name(i))).spawn(move || {
                 let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| work(i, f)))
-                    .unwrap_or_else(|_| Err(Error::state("the work on this device stopped with an internal error")));
+                    .unwrap_or_else(|_| Err(Error::state(crate::msg!("fleet-internal-error"))));
                 let _ = tx.send((i, r));
             });
             match spawned {
@@ -113,7 +113,7 @@ pub fn each<T: Send + 'static>(fleet: &Fleet, settings: Settings, stop: &AtomicB
                     running.insert(i, (Instant::now(), flag));
                 }
                 Err(e) => {
-                    let e = Error::io("cannot start a worker thread").cause(e).device(name(i));
+                    let e = Error::io(crate::msg!("fleet-no-thread")).cause(e).device(name(i));
                     results[i] = Some(Done { device: name(i), result: Err(e), elapsed: Duration::ZERO });
                 }
             }
@@ -140,9 +140,12 @@ pub fn each<T: Send + 'static>(fleet: &Fleet, settings: Settings, stop: &AtomicB
                 if let Some((start, flag)) = running.remove(&i) {
                     flag.store(true, Ordering::Relaxed);
                     crate::core::Clock::wake_sleepers();
-                    let e = Error::new(ErrorKind::Timeout, format!("no result within {} s", t.as_secs_f64()))
-                        .device(name(i))
-                        .hint("the device may be off or slow; raise --device-timeout, or check its link alone");
+                    let e = Error::new(
+                        ErrorKind::Timeout,
+                        crate::msg!("fleet-timeout", seconds = t.as_secs_f64().to_string()),
+                    )
+                    .device(name(i))
+                    .hint(crate::msg!("fleet-hint-timeout"));
                     results[i] = Some(Done { device: name(i), result: Err(e), elapsed: start.elapsed() });
                 }
             }
@@ -160,9 +163,7 @@ pub fn each<T: Send + 'static>(fleet: &Fleet, settings: Settings, stop: &AtomicB
         .map(|(i, r)| {
             r.unwrap_or_else(|| Done {
                 device: name(i),
-                result: Err(
-                    Error::new(ErrorKind::Interrupted, "not started: the fleet run was stopped").device(name(i))
-                ),
+                result: Err(Error::new(ErrorKind::Interrupted, crate::msg!("fleet-not-started")).device(name(i))),
                 elapsed: Duration::ZERO,
             })
         })

@@ -5,6 +5,7 @@
 //! name the key and what to write.
 
 use crate::core::{Error, Result};
+use crate::msg;
 use serde::Deserialize;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -148,18 +149,29 @@ impl Lab {
 
 fn duration(key: &str, text: &str) -> Result<Duration> {
     let us = crate::core::literal::parse_duration_us(text.trim()).map_err(|e| {
-        let msg = format!("{FILE}: [budget] {key} = \"{text}\" is not a time plcsh reads");
+        let msg = msg!("lab-budget-not-time", file = FILE, key = key, text = text);
         match spelled_out(text) {
-            Some((n, short, secs)) => Error::usage(msg).hint(format!(
-                "write \"{}{short}\"{} (units h, min, s, ms)",
-                number(n),
-                if short == "s" { String::new() } else { format!(" or \"{}s\"", number(secs)) }
-            )),
-            None => Error::usage(format!("{msg}: {e}")).hint("e.g. \"10min\", \"90s\", \"1h\" (units h, min, s, ms)"),
+            Some((n, short, secs)) => Error::usage(msg).hint(if short == "s" {
+                msg!("lab-hint-write-time", time = format!("{}{short}", number(n)))
+            } else {
+                msg!(
+                    "lab-hint-write-time-or",
+                    time = format!("{}{short}", number(n)),
+                    seconds = format!("{}s", number(secs))
+                )
+            }),
+            None => Error::usage(msg!(
+                "lab-budget-not-time-why",
+                file = FILE,
+                key = key,
+                text = text,
+                error = e.to_string()
+            ))
+            .hint(msg!("lab-hint-time-example")),
         }
     })?;
     if us <= 0 {
-        return Err(Error::usage(format!("{FILE}: [budget] {key} = \"{text}\" must be more than zero")));
+        return Err(Error::usage(msg!("lab-budget-not-positive", file = FILE, key = key, text = text)));
     }
     Ok(Duration::from_micros(us as u64))
 }
@@ -203,10 +215,10 @@ fn bytes_of(key: &str, text: &str) -> Result<usize> {
         .unwrap_or((t, 1));
     match num.parse::<usize>() {
         Ok(n) if n > 0 => Ok(n.saturating_mul(mult)),
-        _ => Err(Error::usage(format!("{FILE}: [budget] {key} = \"{text}\" is not a size")).hint(
+        _ => Err(Error::usage(msg!("lab-budget-not-size", file = FILE, key = key, text = text)).hint(
             match size_in_words(t) {
-                Some(w) => format!("write \"{w}\" (units B, KiB, MiB, GiB)"),
-                None => "e.g. \"256MiB\" (units B, KiB, MiB, GiB)".into(),
+                Some(w) => msg!("lab-hint-write-size", size = w),
+                None => msg!("lab-hint-size-example"),
             },
         )),
     }
@@ -233,13 +245,13 @@ impl Lab {
     pub fn load(path: &Path) -> Result<Lab> {
         let file = if path.is_dir() { path.join(FILE) } else { path.to_path_buf() };
         let text = std::fs::read_to_string(&file).map_err(|e| {
-            Error::io(format!("cannot read {}", file.display()))
+            Error::io(msg!("lab-cannot-read-file", file = file.display().to_string()))
                 .cause(e)
-                .hint("a lab is a folder with a lab.toml; `plcsh lab new NAME` writes an example")
+                .hint(msg!("lab-hint-lab-folder"))
         })?;
         let dir = file.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
         let dir = crate::core::fspath::canonical(dir)
-            .map_err(|e| Error::io(format!("cannot open {}", dir.display())).cause(e))?;
+            .map_err(|e| Error::io(msg!("lab-cannot-open", dir = dir.display().to_string())).cause(e))?;
         Lab::parse(&text, &dir)
     }
 
@@ -255,19 +267,23 @@ impl Lab {
         let file = |key: &str, name: &str| -> Result<PathBuf> {
             let p = dir.join(name);
             let real = crate::core::fspath::canonical(&p).map_err(|e| {
-                Error::usage(format!("{FILE}: {key} = \"{name}\": no such file in {}", dir.display())).cause(e)
+                Error::usage(msg!(
+                    "lab-no-such-file",
+                    file = FILE,
+                    key = key,
+                    name = name,
+                    dir = dir.display().to_string()
+                ))
+                .cause(e)
             })?;
             if !real.starts_with(dir) {
-                return Err(Error::usage(format!("{FILE}: {key} = \"{name}\" is outside the lab folder"))
-                    .hint("a lab's files live in its folder, so the lab can be copied whole"));
+                return Err(Error::usage(msg!("lab-file-outside", file = FILE, key = key, name = name))
+                    .hint(msg!("lab-hint-files-inside")));
             }
             Ok(real)
         };
         if raw.bench.is_some() != raw.devices.is_empty() {
-            return Err(Error::usage(format!(
-                "{FILE}: give the devices as bench = \"FILE\" or as a [devices] table (one of the two)"
-            ))
-            .hint("e.g. [devices] plc = \"sim:K205-16DT\""));
+            return Err(Error::usage(msg!("lab-devices-one-way", file = FILE)).hint(msg!("lab-hint-devices-example")));
         }
         let devices: Vec<(String, String)> = raw.devices.into_iter().collect();
         let rules = crate::confine::Confinement::new(vec![dir.to_path_buf()], None);
@@ -279,7 +295,7 @@ impl Lab {
         let limits = Limits {
             sim_time: b.sim_time.as_deref().map(|t| duration("sim_time", t)).transpose()?.unwrap_or(d.sim_time),
             instructions: match b.instructions {
-                Some(0) => return Err(Error::usage(format!("{FILE}: [budget] instructions must be more than zero"))),
+                Some(0) => return Err(Error::usage(msg!("lab-budget-instructions-zero", file = FILE))),
                 Some(n) => n,
                 None => d.instructions,
             },
@@ -299,15 +315,20 @@ impl Lab {
                 let names: Vec<&str> = crate::confine::BENCH_ACTIONS.iter().map(|(n, _)| *n).collect();
                 let near = names.iter().map(|n| (crate::core::text::edit_distance(g, n), *n)).min();
                 let hint = match near {
-                    Some((d, n)) if d <= 2 => format!("did you mean \"{n}\"? grants: {}", names.join(", ")),
-                    _ => format!("grants: {}", names.join(", ")),
+                    Some((d, n)) if d <= 2 => msg!("lab-hint-did-you-mean-grant", near = n, grants = names.join(", ")),
+                    _ => msg!("lab-hint-grants", grants = names.join(", ")),
                 };
-                return Err(Error::usage(format!("{FILE}: grants = [\"{g}\"]: not an action a lab grants")).hint(hint));
+                return Err(Error::usage(msg!("lab-not-a-grant", file = FILE, grant = g.as_str())).hint(hint));
             }
         }
         for (k, v) in &raw.points {
             if !v.is_finite() || *v < 0.0 {
-                return Err(Error::usage(format!("{FILE}: [points] \"{k}\" = {v}: points are a number ≥ 0")));
+                return Err(Error::usage(msg!(
+                    "lab-points-negative",
+                    file = FILE,
+                    key = k.as_str(),
+                    value = v.to_string()
+                )));
             }
         }
         let bench = raw.bench.as_deref().map(|b| file("bench", b)).transpose()?;
@@ -321,26 +342,26 @@ impl Lab {
                 let near = names.iter().map(|n| (crate::core::text::edit_distance(want, n), n)).min();
                 let hint = match near {
                     Some((d, n)) if d <= 2 => {
-                        format!("did you mean device = \"{n}\"? the lab's devices: {}", names.join(", "))
+                        msg!("lab-hint-did-you-mean-device", near = n, devices = names.join(", "))
                     }
-                    _ => format!("the lab's devices: {}", names.join(", ")),
+                    _ => msg!("lab-hint-devices", devices = names.join(", ")),
                 };
-                return Err(Error::usage(format!("{FILE}: device = \"{want}\" is not a device of the lab")).hint(hint));
+                return Err(Error::usage(msg!("lab-not-a-device", file = FILE, device = want.as_str())).hint(hint));
             }
         }
         for k in raw.accepts.iter().flatten() {
             if !KINDS.iter().any(|(n, _)| n == k) {
                 let names: Vec<&str> = KINDS.iter().map(|(n, _)| *n).collect();
-                return Err(Error::usage(format!("{FILE}: accepts = [\"{k}\"]: not a submission kind"))
-                    .hint(format!("kinds: {}", names.join(", "))));
+                return Err(Error::usage(msg!("lab-not-a-kind", file = FILE, kind = k.as_str()))
+                    .hint(msg!("lab-hint-kinds", kinds = names.join(", "))));
             }
         }
         let mut shared = Vec::new();
         for name in &raw.shared {
             let real = file("shared", name)?;
             let module = name.strip_suffix(".lua").filter(|m| !m.is_empty()).ok_or_else(|| {
-                Error::usage(format!("{FILE}: shared = [\"{name}\"]: a shared module is a .lua file"))
-                    .hint("e.g. shared = [\"helpers.lua\"] (a submission then calls require(\"helpers\"))")
+                Error::usage(msg!("lab-shared-not-lua", file = FILE, name = name.as_str()))
+                    .hint(msg!("lab-hint-shared-example"))
             })?;
             shared.push((module.replace(['/', '\\'], "."), real, name.clone()));
         }

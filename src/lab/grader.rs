@@ -90,8 +90,14 @@ pub struct Report {
     pub points: f64,
     pub max_points: f64,
     pub criteria: Vec<Criterion>,
-    /// `passed`, `failed`, `runtime error: …`, `exceeded …`, `grader error: …`.
+    /// `passed`, `failed`, `runtime error: …`, `exceeded …`, `grader error: …` (the last three
+    /// in the lab's language).
     pub verdict: String,
+    /// The message id of a verdict other than `passed` and `failed` (`lab-runtime-error`,
+    /// `lab-grader-error`, `budget-exceeded-minutes`, …): what a script matches, whatever the
+    /// language.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub code: Option<String>,
     pub sim_time_s: f64,
     /// What the run wrote to its stdout and stderr (`print`, `io.write`), bounded: kept for
     /// the teacher, never read for a grade.
@@ -109,7 +115,7 @@ impl Report {
         self.criteria.iter().filter(|c| !c.passed).map(|c| c.name.as_str()).collect()
     }
     /// A report for a submission that could not be run at all.
-    pub fn broken(lab: &Lab, file: &str, verdict: String) -> Report {
+    pub fn broken(lab: &Lab, file: &str, verdict: crate::core::msg::Msg) -> Report {
         let criteria: Vec<Criterion> = lab.points.iter().map(|(n, p)| skipped(n, *p)).collect();
         Report {
             student: student_name(Path::new(file)),
@@ -117,7 +123,8 @@ impl Report {
             points: 0.0,
             max_points: criteria.iter().map(|c| c.max).sum(),
             criteria,
-            verdict,
+            verdict: verdict.text,
+            code: Some(verdict.id.to_string()),
             sim_time_s: 0.0,
             stdout: None,
             stderr: None,
@@ -171,7 +178,7 @@ impl WriteDir {
             match crate::core::platform::create_private_dir(&d) {
                 Ok(()) => return Ok(WriteDir(d, true)),
                 Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
-                Err(e) => return Err(Error::io("cannot create a write directory for the run").cause(e)),
+                Err(e) => return Err(Error::io(crate::msg!("lab-cannot-create-write-dir")).cause(e)),
             }
         }
     }
@@ -179,7 +186,7 @@ impl WriteDir {
     /// A folder the caller made and removes (it must be a folder, not a link to one).
     pub fn given(dir: &Path) -> crate::core::Result<WriteDir> {
         if crate::core::platform::is_link(dir) || !dir.is_dir() {
-            return Err(Error::io("the write directory given is not a folder of the grader's own"));
+            return Err(Error::io(crate::msg!("lab-write-dir-not-own")));
         }
         Ok(WriteDir(dir.to_path_buf(), false))
     }
@@ -219,35 +226,36 @@ pub fn written(dir: &Path, cap: u64) -> u64 {
 }
 
 /// The verdict of a run that left more than `cap` bytes in its write directory.
-pub fn write_verdict(cap: u64) -> String {
-    format!(
-        "exceeded {} in the write directory",
-        crate::core::budget::describe_bytes(usize::try_from(cap).unwrap_or(usize::MAX))
+pub fn write_verdict(cap: u64) -> crate::core::msg::Msg {
+    crate::msg!(
+        "lab-exceeded-write",
+        size = crate::core::budget::describe_bytes(usize::try_from(cap).unwrap_or(usize::MAX))
     )
+}
+
+/// `grader error: …`: a verdict that is the grader's (or the machine's) fault, not the
+/// submission's.
+pub fn grader_error(why: impl std::fmt::Display) -> crate::core::msg::Msg {
+    crate::msg!("lab-grader-error", error = why.to_string())
 }
 
 /// Why `file` is not a submission of its own bytes, or too big to grade: a symbolic link
 /// (the file itself, its folder for `NAME/main.lua`, or any entry in that folder), or more
 /// bytes than the lab's `[budget] submission`. Git checkouts and zip or tar archives keep
 /// links, and a link to the lab's reference would be graded as the reference.
-fn refused(lab: &Lab, file: &Path) -> Option<String> {
+fn refused(lab: &Lab, file: &Path) -> Option<crate::core::msg::Msg> {
     use crate::core::platform::is_link;
     let name = |p: &Path| crate::core::encoding::printable(&p.display().to_string()).into_owned();
-    let link = |p: &Path| {
-        Some(format!(
-            "refused: {} is a symbolic link: a submission is its own files, never a link (hand in the file itself)",
-            name(p)
-        ))
-    };
+    let link = |p: &Path| Some(crate::msg!("lab-refused-link", file = name(p)));
     if is_link(file) {
         return link(file);
     }
     let cap = lab.limits.submission;
     let too_big = |n: u64| {
-        Some(format!(
-            "refused: the submission is {} bytes, more than the lab's {} ([budget] submission in lab.toml)",
-            n,
-            crate::core::budget::describe_bytes(usize::try_from(cap).unwrap_or(usize::MAX))
+        Some(crate::msg!(
+            "lab-refused-size",
+            n = n,
+            cap = crate::core::budget::describe_bytes(usize::try_from(cap).unwrap_or(usize::MAX))
         ))
     };
     if file.file_stem().is_some_and(|s| s == "main") {
@@ -327,32 +335,32 @@ pub fn grade_to(lab: &Lab, file: &str, out: Box<dyn std::io::Write + Send>) -> R
 pub fn grade_in(lab: &Lab, file: &str, out: Box<dyn std::io::Write + Send>, write: Option<&Path>) -> Report {
     let path = Path::new(file);
     let Some(kind) = lab.kind_of(path) else {
-        return Report::broken(lab, file, "not a submission: give a .lua script or an .il program".into());
+        return Report::broken(lab, file, crate::msg!("lab-not-submission-kind"));
     };
     if let Some(why) = refused(lab, path) {
         return Report::broken(lab, file, why);
     }
     if !path.is_file() {
-        return Report::broken(lab, file, "not a submission: no such file".into());
+        return Report::broken(lab, file, crate::msg!("lab-not-submission-missing"));
     }
     if !lab.accepts.contains(&kind) {
         return Report::broken(
             lab,
             file,
-            format!("not accepted: this lab accepts {} submissions", super::config::describe_kinds(&lab.accepts)),
+            crate::msg!("lab-not-accepted", kinds = super::config::describe_kinds(&lab.accepts)),
         );
     }
     let kind = if kind == "lua" { "lua" } else { "il" };
     let write = match write.map(WriteDir::given).unwrap_or_else(WriteDir::new) {
         Ok(w) => w,
-        Err(e) => return Report::broken(lab, file, format!("grader error: {e}")),
+        Err(e) => return Report::broken(lab, file, grader_error(e)),
     };
     match run(lab, file, kind, out, &write) {
         Ok(_) if written(write.path(), lab.limits.write) > lab.limits.write => {
             Report::broken(lab, file, write_verdict(lab.limits.write))
         }
         Ok(r) => r,
-        Err(e) => Report::broken(lab, file, format!("grader error: {e}")),
+        Err(e) => Report::broken(lab, file, grader_error(e)),
     }
 }
 
@@ -366,7 +374,7 @@ fn submission_view(lab: &Lab, file: &Path, write: &Path) -> (Arc<Confinement>, s
     read.extend(lab.shared.iter().map(|(_, f, _)| f.clone()));
     read.extend(lab.starter.iter().cloned());
     let mut rules = Confinement::new(read, Some(write.to_path_buf()));
-    rules.view = Some("the submission's own files, the lab's shared and starter files and the write directory".into());
+    rules.view = Some(crate::msg!("lab-view").text);
     // The machine is the lab's: the submission drives it, and changes the bench only as granted.
     rules.machine = Some(lab.grants.clone());
     let own = folder.then(|| {
@@ -395,7 +403,7 @@ fn run(
     let sub_dir = Path::new(file).parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
     let rules = Arc::new(Confinement::new(vec![lab.dir.clone(), sub_dir.to_path_buf()], Some(write.0.clone())));
     let (student_rules, world) = submission_view(lab, Path::new(file), write.path());
-    let session = session(lab, Some(rules.clone())).map_err(|e| e.cause("opening the lab's devices"))?;
+    let session = session(lab, Some(rules.clone())).map_err(|e| e.cause(crate::msg!("lab-opening-devices").text))?;
     let clock = session.clock.clone();
     let mut shell = Shell::new(session, Style { json: false, color: false });
     shell.confine(rules.clone());
@@ -410,7 +418,8 @@ fn run(
     ));
     shell.session.budget = Some(budget.clone());
     let interrupt = shell.session.interrupt.clone();
-    let script_err = |e: mlua::Error| Error::new(ErrorKind::Script, format!("cannot start Lua: {e}"));
+    let script_err =
+        |e: mlua::Error| Error::new(ErrorKind::Script, crate::msg!("lab-cannot-start-lua", error = e.to_string()));
     let engine = Engine::new(interrupt.clone(), out).map_err(script_err)?;
     let lua = engine.lua();
     sandbox::apply(lua, rules.clone()).map_err(script_err)?;
@@ -462,31 +471,42 @@ fn run(
     }
     let student_error: Option<String> =
         lua.globals().get::<Table>("lab").and_then(|l| l.get::<Option<String>>("_student_error")).ok().flatten();
-    let verdict = if let Some(v) = budget.exceeded() {
-        v
-    } else if outcome.as_ref().is_err_and(|f| f.error.message.contains("not enough memory")) {
-        budget.memory_verdict().unwrap_or_default()
+    let runtime = |e: &str| crate::msg!("lab-runtime-error", error = e);
+    let verdict: Result<crate::core::msg::Msg, &str> = if let Some(v) = budget.exceeded_msg() {
+        Ok(v)
+    } else if let Some(v) = outcome
+        .as_ref()
+        .is_err_and(|f| f.error.message.contains("not enough memory"))
+        .then(|| budget.memory_verdict())
+        .flatten()
+    {
+        Ok(v)
     } else if let Some(e) = grader_errors.first() {
         // A mistake in the grader's own code is the teacher's, whatever the submission did.
-        format!("grader error: {e}")
+        Ok(grader_error(e))
     } else if let Some(e) = student_error {
-        format!("runtime error: {}", e.lines().next().unwrap_or_default())
+        Ok(runtime(e.lines().next().unwrap_or_default()))
     } else if let Some(fault) = plc_fault {
-        format!("runtime error: {fault}")
+        Ok(runtime(&fault))
     } else if let Err(f) = &outcome {
-        format!("grader error: {}", f.headline())
+        Ok(grader_error(f.headline()))
     } else if criteria.iter().all(|c| c.passed) {
-        "passed".into()
+        Err("passed")
     } else {
-        "failed".into()
+        Err("failed")
+    };
+    let (verdict, code) = match verdict {
+        Ok(m) => (m.text, Some(m.id.to_string())),
+        Err(word) => (word.to_string(), None),
     };
     // The write directory's name changes from run to run: reports name it by its role.
     let wd = crate::core::fspath::canonical(&write.0).unwrap_or_else(|_| write.0.clone()).display().to_string();
     // `got` holds values as JSON text, where a Windows path's `\` is written `\\`.
     let wd_json = wd.replace('\\', "\\\\");
+    let role = crate::msg!("lab-write-dir-role").text;
     let hide = |s: &mut Option<String>| {
         if let Some(t) = s {
-            *t = t.replace(&wd, "the write directory").replace(&wd_json, "the write directory");
+            *t = t.replace(&wd, &role).replace(&wd_json, &role);
         }
     };
     for c in &mut criteria {
@@ -497,7 +517,7 @@ fn run(
             c.got = g.map(serde_json::Value::String);
         }
     }
-    let verdict = no_addresses(&verdict.replace(&wd, "the write directory"));
+    let verdict = no_addresses(&verdict.replace(&wd, &role));
     Ok(Report {
         student: student_name(Path::new(file)),
         file: file.to_string(),
@@ -505,6 +525,7 @@ fn run(
         max_points: criteria.iter().map(|c| c.max).sum(),
         criteria,
         verdict,
+        code,
         sim_time_s: budget.used(&clock).as_secs_f64(),
         stdout: None,
         stderr: None,
@@ -546,15 +567,23 @@ fn plc_fault(shell: &mut Shell, lab: &Lab, file: &str) -> Option<String> {
     if let Some(why) = o.get("program").and_then(|p| p.as_str()).and_then(|p| p.split_once(" stopped: line ")) {
         let (line, msg) = why.1.split_once(": ")?;
         let msg = msg.split(" (executed").next().unwrap_or(msg);
-        return Some(format!("{file}:{line}: the PLC stopped: {msg}"));
+        return Some(crate::msg!("lab-plc-stopped", file = file, line = line, error = msg).text);
     }
     let f = o.get("faults")?.as_array()?.first()?;
     let line = f.get("line").and_then(|l| l.as_u64()).map(|l| format!(":{l}")).unwrap_or_default();
-    let code = f.get("code").and_then(|c| c.as_u64()).map(|c| format!("fault {c} ")).unwrap_or_default();
     let kind = f.get("kind").and_then(|k| k.as_str()).unwrap_or("fault");
     let msg = f.get("message").and_then(|m| m.as_str()).unwrap_or_default();
-    let at = f.get("instruction").and_then(|i| i.as_str()).map(|i| format!(" at `{i}`")).unwrap_or_default();
-    Some(format!("{file}{line}: the PLC stopped on {code}({kind}): {msg}{at}"))
+    let place = format!("{file}{line}");
+    let at = f.get("instruction").and_then(|i| i.as_str());
+    let fault = match (f.get("code").and_then(|c| c.as_u64()), at) {
+        (Some(c), Some(i)) => {
+            crate::msg!("lab-plc-fault-code-at", place = place, code = c, kind = kind, error = msg, at = i)
+        }
+        (Some(c), None) => crate::msg!("lab-plc-fault-code", place = place, code = c, kind = kind, error = msg),
+        (None, Some(i)) => crate::msg!("lab-plc-fault-at", place = place, kind = kind, error = msg, at = i),
+        (None, None) => crate::msg!("lab-plc-fault", place = place, kind = kind, error = msg),
+    };
+    Some(fault.text)
 }
 
 /// The message of a student's error: `file:line: message`, without the traceback.
@@ -627,8 +656,9 @@ fn install_lab(
         "_run_lua",
         lua.create_function(move |lua, path: String| {
             // Never through a link (the submission was checked for links before the run).
-            let code = crate::core::platform::read_no_follow(Path::new(&path), cap)
-                .map_err(|e| mlua::Error::runtime(format!("cannot read {path}: {e}")))?;
+            let code = crate::core::platform::read_no_follow(Path::new(&path), cap).map_err(|e| {
+                mlua::Error::runtime(crate::msg!("lab-cannot-read", file = path.as_str(), error = e.to_string()))
+            })?;
             let code = match sandbox::lua_text(code) {
                 Ok(c) => c,
                 Err(why) => {
@@ -682,7 +712,7 @@ fn install_lab(
             // still to run, and the verdict is the submission's.
             let after = lua.app_data_ref::<Shell>().map(|sh| machine(&sh)).unwrap_or_default();
             if let Some((name, _)) = before.iter().find(|d| !after.contains(d)) {
-                let msg = format!("{path}: the submission closed or replaced the lab's device `{name}`");
+                let msg = crate::msg!("lab-device-replaced", file = path.as_str(), device = name.as_str()).text;
                 let lab: Table = lua.globals().get("lab")?;
                 lab.raw_set("_machine_changed", msg.clone())?;
                 if r.is_ok() {

@@ -21,13 +21,15 @@ use std::path::Path;
 /// `lab new NAME`: writes the example lab into a new folder.
 pub fn new_lab(dir: &Path) -> Result<Outcome> {
     if dir.exists() {
-        return Err(Error::usage(format!("{} already exists", dir.display()))
-            .hint("give a new folder name: plcsh lab new NAME"));
+        return Err(Error::usage(crate::msg!("lab-new-exists", dir = dir.display().to_string()))
+            .hint(crate::msg!("lab-hint-new-name")));
     }
-    std::fs::create_dir_all(dir).map_err(|e| Error::io(format!("cannot create {}", dir.display())).cause(e))?;
+    std::fs::create_dir_all(dir)
+        .map_err(|e| Error::io(crate::msg!("lab-cannot-create", dir = dir.display().to_string())).cause(e))?;
     for (name, text) in example::FILES {
         let p = dir.join(name);
-        std::fs::write(&p, text).map_err(|e| Error::io(format!("cannot write {}", p.display())).cause(e))?;
+        std::fs::write(&p, text)
+            .map_err(|e| Error::io(crate::msg!("lab-cannot-write", file = p.display().to_string())).cause(e))?;
     }
     let names: Vec<&str> = example::FILES.iter().map(|(n, _)| *n).collect();
     // The command to type next, with the folder quoted as the shell reads it (`'my lab'`).
@@ -124,8 +126,7 @@ pub fn check(path: &Path) -> Result<(Outcome, String, bool)> {
 /// empty program of the lab's first kind, graded as a student's would be. A criterion such a
 /// program passes checks nothing the task asks for; each one that earns points is named.
 fn free_points(path: &Path, lab: &Lab) -> Result<Vec<String>> {
-    let dir =
-        runner::PrivateDir::new().map_err(|e| Error::io("cannot create a folder for the empty program").cause(e))?;
+    let dir = runner::PrivateDir::new().map_err(|e| Error::io(crate::msg!("lab-cannot-create-empty-dir")).cause(e))?;
     // (the starter's name, or none for the empty program; the file graded)
     let mut tries: Vec<(Option<String>, String)> = Vec::new();
     for s in &lab.starter {
@@ -136,7 +137,7 @@ fn free_points(path: &Path, lab: &Lab) -> Result<Vec<String>> {
     }
     let ext = if lab.accepts.iter().any(|k| k == "lua") { "lua" } else { "il" };
     let empty = dir.path().join(format!("empty.{ext}"));
-    std::fs::write(&empty, "").map_err(|e| Error::io("cannot write the empty program").cause(e))?;
+    std::fs::write(&empty, "").map_err(|e| Error::io(crate::msg!("lab-cannot-write-empty")).cause(e))?;
     tries.push((None, empty.display().to_string()));
     let mut out = Vec::new();
     for (starter, file) in tries {

@@ -23,7 +23,7 @@ pub fn cap(s: &str) -> String {
     while !s.is_char_boundary(end) {
         end -= 1;
     }
-    format!("{} (… {} bytes more)", &s[..end], s.len() - end)
+    format!("{} ({})", &s[..end], crate::msg!("lab-bytes-more", n = s.len() - end))
 }
 
 /// A character no output may carry as it is: C0 controls (but newline and tab, which JSON
@@ -54,7 +54,7 @@ fn clean(s: &str) -> String {
     let mut out = String::with_capacity(s.len().min(CAP + 64));
     for (i, c) in s.char_indices() {
         if out.len() >= CAP {
-            out.push_str(&format!(" (… {} bytes more)", s.len() - i));
+            out.push_str(&format!(" ({})", crate::msg!("lab-bytes-more", n = s.len() - i)));
             return out;
         }
         if hidden(c) {
@@ -127,7 +127,7 @@ pub fn json(r: &Report) -> serde_json::Value {
 /// The summary after the submissions: its first line, and the table.
 pub fn summary(lab: &Lab, reports: &[Report]) -> (String, Outcome) {
     let passed = reports.iter().filter(|r| r.verdict == "passed").count();
-    let broken = reports.iter().filter(|r| r.verdict.starts_with("grader error")).count();
+    let broken = reports.iter().filter(|r| r.code.as_deref() == Some("lab-grader-error")).count();
     let rows: Vec<Vec<String>> = reports
         .iter()
         .map(|r| {
@@ -303,8 +303,8 @@ mod tests {
         let lab = Lab::parse(text, &dir).unwrap();
         std::fs::remove_dir_all(&dir).unwrap();
         let started = std::time::Instant::now();
-        let huge = format!("runtime error: x.lua:1: {}\n| fake | row |", "A\u{1b}".repeat(10 << 20));
-        let mut r = Report::broken(&lab, "x.lua", huge);
+        let huge = format!("x.lua:1: {}\n| fake | row |", "A\u{1b}".repeat(10 << 20));
+        let mut r = Report::broken(&lab, "x.lua", crate::msg!("lab-runtime-error", error = huge));
         bound(&mut r);
         let (_, o) = summary(&lab, &[r.clone()]);
         let mut text = Vec::new();

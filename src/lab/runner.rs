@@ -12,8 +12,9 @@
 //! output — kept, bounded, for the teacher (`--show-output`, `stdout`/`stderr` in `--json`).
 
 use super::config::Lab;
-use super::grader::Report;
+use super::grader::{grader_error, Report};
 use crate::core::{Error, Result};
+use crate::msg;
 use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
@@ -27,8 +28,8 @@ pub fn submissions(args: &[PathBuf]) -> Result<Vec<String>> {
     for a in args {
         if a.is_dir() {
             let mut found: Vec<PathBuf> = Vec::new();
-            let entries =
-                std::fs::read_dir(a).map_err(|e| Error::io(format!("cannot list {}", a.display())).cause(e))?;
+            let entries = std::fs::read_dir(a)
+                .map_err(|e| Error::io(msg!("lab-cannot-list", dir = a.display().to_string())).cause(e))?;
             for e in entries.flatten() {
                 let p = e.path();
                 // A link is listed as what it names (a file, a folder's main.lua) and graded
@@ -46,12 +47,12 @@ pub fn submissions(args: &[PathBuf]) -> Result<Vec<String>> {
         } else if a.is_file() || crate::core::platform::is_link(a) {
             out.push(a.display().to_string());
         } else {
-            return Err(Error::usage(format!("{}: no such file or folder", a.display()))
-                .hint("give submission files (.lua, .il) or folders of them"));
+            return Err(Error::usage(msg!("lab-no-such-submission", file = a.display().to_string()))
+                .hint(msg!("lab-hint-submissions")));
         }
     }
     if out.is_empty() {
-        return Err(Error::usage("no submissions found (.lua or .il files)"));
+        return Err(Error::usage(msg!("lab-no-submissions")));
     }
     Ok(out)
 }
@@ -77,7 +78,7 @@ fn capture(mut r: impl Read) -> String {
     }
     let mut text = String::from_utf8_lossy(&kept).into_owned();
     if more > 0 {
-        text.push_str(&format!("(… {more} bytes more)"));
+        text.push_str(&format!("({})", msg!("lab-bytes-more", n = more)));
     }
     text
 }
@@ -147,7 +148,7 @@ fn one(exe: &Path, lab_path: &Path, lab: &Lab, file: &str) -> Report {
     let dir = match ReportDir::new() {
         Ok(d) => d,
         Err(e) => {
-            return Report::broken(lab, file, format!("grader error: cannot create a folder for the report: {e}"))
+            return Report::broken(lab, file, grader_error(msg!("lab-cannot-create-report-dir", error = e.to_string())))
         }
     };
     let report = dir.0.join("report.json");
@@ -155,7 +156,11 @@ fn one(exe: &Path, lab_path: &Path, lab: &Lab, file: &str) -> Report {
     // removed with it however the worker ends (killed at the wall-clock limit included).
     let write = dir.0.join("write");
     if let Err(e) = crate::core::platform::create_private_dir(&write) {
-        return Report::broken(lab, file, format!("grader error: cannot create the write directory: {e}"));
+        return Report::broken(
+            lab,
+            file,
+            grader_error(msg!("lab-cannot-create-write-dir-error", error = e.to_string())),
+        );
     }
     let child = Command::new(exe)
         .args(["lab", "worker"])
@@ -165,13 +170,18 @@ fn one(exe: &Path, lab_path: &Path, lab: &Lab, file: &str) -> Report {
         .arg(&report)
         .arg("--write-dir")
         .arg(&write)
+        // The worker writes in this run's language (the lab's `language`, else `--lang` or the
+        // user's): it is not given `--lang` or the lab's choice otherwise.
+        .env("PLCSH_LANG", crate::core::msg::language().tag())
         .stdin(Stdio::null())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn();
     let mut child = match child {
         Ok(c) => c,
-        Err(e) => return Report::broken(lab, file, format!("grader error: cannot start a worker: {e}")),
+        Err(e) => {
+            return Report::broken(lab, file, grader_error(msg!("lab-cannot-start-worker", error = e.to_string())))
+        }
     };
     let stdout = child.stdout.take().expect("piped");
     let stderr = child.stderr.take().expect("piped");
@@ -194,7 +204,7 @@ fn one(exe: &Path, lab_path: &Path, lab: &Lab, file: &str) -> Report {
             Ok(None) if crate::signals::exit_status().is_some() => {
                 let _ = child.kill();
                 let _ = child.wait();
-                return Report::broken(lab, file, format!("not graded: stopped by {}", crate::signals::cause()));
+                return Report::broken(lab, file, msg!("lab-not-graded", cause = crate::signals::cause().to_string()));
             }
             Ok(None) => {
                 if Instant::now() >= next_look {
@@ -217,14 +227,12 @@ fn one(exe: &Path, lab_path: &Path, lab: &Lab, file: &str) -> Report {
     let (out, err) = (hide_write_dir(out, &write), hide_write_dir(err, &write));
     let mut r = match status {
         None if flooded => Report::broken(lab, file, super::grader::write_verdict(lab.limits.write)),
-        None => Report::broken(
-            lab,
-            file,
-            format!("exceeded the wall-clock safety net of {} s", lab.limits.wall.as_secs_f64()),
-        ),
+        None => {
+            Report::broken(lab, file, msg!("lab-exceeded-wall", seconds = lab.limits.wall.as_secs_f64().to_string()))
+        }
         Some(status) => match std::fs::read(&report).ok().and_then(|b| serde_json::from_slice::<Report>(&b).ok()) {
             Some(r) => r,
-            None => Report::broken(lab, file, format!("grader error: the worker ended ({status}) without a report")),
+            None => Report::broken(lab, file, grader_error(msg!("lab-worker-no-report", status = status.to_string()))),
         },
     };
     r.stdout = Some(out).filter(|s| !s.is_empty());
@@ -235,7 +243,7 @@ fn one(exe: &Path, lab_path: &Path, lab: &Lab, file: &str) -> Report {
 /// Grades one file in a worker (`lab check` grades the reference this way too, so what it
 /// prints stays out of the check's own output).
 pub fn grade_one(lab_path: &Path, lab: &Lab, file: &str) -> Result<Report> {
-    let exe = std::env::current_exe().map_err(|e| Error::io("cannot find the plcsh executable").cause(e))?;
+    let exe = std::env::current_exe().map_err(|e| Error::io(msg!("lab-no-executable")).cause(e))?;
     Ok(one(&exe, lab_path, lab, file))
 }
 
@@ -245,7 +253,7 @@ pub fn worker(path: &Path, file: &str, report: &Path, write: Option<&Path>) -> i
     let r = match Lab::load(path) {
         Ok(lab) => super::grader::grade_in(&lab, file, Box::new(std::io::stdout()), write),
         Err(e) => {
-            eprintln!("plcsh lab worker: {e}");
+            eprintln!("{}", msg!("lab-worker-error", error = e.to_string()));
             return 1;
         }
     };
@@ -256,7 +264,10 @@ pub fn worker(path: &Path, file: &str, report: &Path, write: Option<&Path>) -> i
     match std::fs::write(report, text) {
         Ok(()) => 0,
         Err(e) => {
-            eprintln!("plcsh lab worker: cannot write {}: {e}", report.display());
+            eprintln!(
+                "{}",
+                msg!("lab-worker-cannot-write", file = report.display().to_string(), error = e.to_string())
+            );
             1
         }
     }
@@ -264,7 +275,7 @@ pub fn worker(path: &Path, file: &str, report: &Path, write: Option<&Path>) -> i
 
 /// Grades `files` with `jobs` workers at a time; reports in the order of `files`.
 pub fn grade_all(lab_path: &Path, lab: &Lab, files: &[String], jobs: usize) -> Result<Vec<Report>> {
-    let exe = std::env::current_exe().map_err(|e| Error::io("cannot find the plcsh executable").cause(e))?;
+    let exe = std::env::current_exe().map_err(|e| Error::io(msg!("lab-no-executable")).cause(e))?;
     let next = Arc::new(Mutex::new(0usize));
     let results: Arc<Mutex<Vec<Option<Report>>>> = Arc::new(Mutex::new(vec![None; files.len()]));
     std::thread::scope(|scope| {
@@ -286,7 +297,7 @@ pub fn grade_all(lab_path: &Path, lab: &Lab, files: &[String], jobs: usize) -> R
             });
         }
     });
-    let results = Arc::try_unwrap(results).map_err(|_| Error::state("workers still running"))?;
+    let results = Arc::try_unwrap(results).map_err(|_| Error::state(msg!("lab-workers-running")))?;
     Ok(results.into_inner().unwrap_or_else(|p| p.into_inner()).into_iter().flatten().collect())
 }
 

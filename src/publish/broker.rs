@@ -195,7 +195,7 @@ pub fn spawn(
         let rt = match tokio::runtime::Builder::new_current_thread().enable_all().build() {
             Ok(rt) => rt,
             Err(e) => {
-                let _ = notes.send(Note::Away(format!("cannot start a runtime: {e}")));
+                let _ = notes.send(Note::Away(crate::msg!("publish-no-runtime", error = e.to_string()).text));
                 return Stats::default();
             }
         };

@@ -29,19 +29,21 @@ pub struct Command {
 /// Parses a command payload; refuses anything but a small JSON object with `operand` and `value`.
 pub fn parse(payload: &[u8]) -> Result<Command, String> {
     if payload.len() > MAX_PAYLOAD {
-        return Err(format!("a command is at most {MAX_PAYLOAD} bytes"));
+        return Err(crate::msg!("publish-command-too-big", max = MAX_PAYLOAD).text);
     }
-    let v: Json = serde_json::from_slice(payload).map_err(|e| format!("not JSON: {e}"))?;
-    let o = v.as_object().ok_or("a command is a JSON object {\"operand\":…, \"value\":…}")?;
-    let operand = o.get("operand").and_then(Json::as_str).ok_or("`operand` (a string) is missing")?;
+    let v: Json = serde_json::from_slice(payload)
+        .map_err(|e| crate::msg!("publish-command-not-json", error = e.to_string()).text)?;
+    let o = v.as_object().ok_or_else(|| crate::msg!("publish-command-not-object").text)?;
+    let operand =
+        o.get("operand").and_then(Json::as_str).ok_or_else(|| crate::msg!("publish-command-no-operand").text)?;
     let value = match o.get("value") {
         Some(Json::Number(n)) => n.to_string(),
         Some(Json::Bool(b)) => b.to_string(),
         Some(Json::String(s)) => s.clone(),
-        _ => return Err("`value` (a number, true/false or a literal such as \"16#85\") is missing".into()),
+        _ => return Err(crate::msg!("publish-command-no-value").text),
     };
     if operand.contains(['=', ',', ';']) || value.contains([',', ';']) {
-        return Err("one operand and one value per command".into());
+        return Err(crate::msg!("publish-command-one-write").text);
     }
     Ok(Command { operand: operand.to_string(), value, id: o.get("id").cloned().unwrap_or(Json::Null) })
 }
@@ -63,18 +65,12 @@ pub fn apply(session: &mut Session, device: &str, payload: &[u8]) -> Json {
     let guarded = session.read_only() || rules.as_ref().is_some_and(|g| g.read_only());
     if !guarded {
         let refusal = match &rules {
-            None => Some(format!("`{device}` has no allow list: writes from the broker need one in its profile")),
-            Some(g) if !g.has_allow() => {
-                Some(format!("`{device}`'s profile has no allow list: writes from the broker need one"))
-            }
+            None => Some(crate::msg!("publish-write-no-allow-list", device = device)),
+            Some(g) if !g.has_allow() => Some(crate::msg!("publish-write-profile-no-allow-list", device = device)),
             Some(_) => None,
         };
         if let Some(m) = refusal {
-            return refuse(
-                Error::new(ErrorKind::Refused, format!("write refused: {m}"))
-                    .operand(cmd.operand.clone())
-                    .device(device.to_string()),
-            );
+            return refuse(Error::new(ErrorKind::Refused, m).operand(cmd.operand.clone()).device(device.to_string()));
         }
     }
     let item = SetItem { operand: cmd.operand.clone(), value: cmd.value.clone(), column: 0, value_column: 0 };
@@ -118,10 +114,18 @@ pub fn unknown_device(device: &str, group: &str, members: &[String], payload: &[
     if members.len() > 10 {
         listed.push("…");
     }
-    let mut message = format!("`{device}` is no device of `{group}` (members: {})", listed.join(", "));
-    if !close.is_empty() {
-        message += &format!("; did you mean {}?", close.join(", "));
+    let message = if close.is_empty() {
+        crate::msg!("publish-no-such-member", device = device, group = group, members = listed.join(", "))
+    } else {
+        crate::msg!(
+            "publish-no-such-member-near",
+            device = device,
+            group = group,
+            members = listed.join(", "),
+            near = close.join(", ")
+        )
     }
+    .text;
     let id = parse(payload).map(|c| c.id).unwrap_or(Json::Null);
     json!({"ok": false, "device": device, "id": id, "error": {"kind": "usage", "message": message}})
 }

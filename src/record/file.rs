@@ -64,15 +64,13 @@ pub struct Recording {
 /// Reads a recording.
 pub fn read(path: &Path) -> Result<Recording> {
     let bytes = std::fs::read(path).map_err(|e| {
-        Error::io(format!("cannot read the recording {}", path.display()))
+        Error::io(crate::msg!("record-cannot-read", file = path.display().to_string()))
             .cause(e)
-            .hint("give the file written by --record FILE")
+            .hint(crate::msg!("record-hint-give-file"))
     })?;
     parse(&bytes).map_err(|m| {
-        Error::usage(format!("{} is not a readable pcapng recording: {m}", path.display())).hint(
-            "give a file written by plcsh --record FILE, or a pcapng/pcap capture of Modbus TCP taken on an \
-             Ethernet or loopback interface (tshark -i lo -f 'tcp port 502' -w FILE.pcapng)",
-        )
+        Error::usage(crate::msg!("record-not-readable", file = path.display().to_string(), error = m))
+            .hint(crate::msg!("record-hint-capture"))
     })
 }
 
@@ -154,16 +152,10 @@ pub fn parse(bytes: &[u8]) -> std::result::Result<Recording, String> {
     }
     r.finish();
     if r.cut > 0 {
-        r.rec.notes.push(format!(
-            "{} packets were cut short by the capture's snap length: frames in them are incomplete (capture again without -s, or with -s 0)",
-            r.cut
-        ));
+        r.rec.notes.push(crate::msg!("record-snap-length", count = r.cut).text);
     }
     if r.rec.frames.is_empty() && !cap.packets.is_empty() && kinds.iter().any(|k| matches!(k, Kind::Ip)) {
-        return Err(format!(
-            "its {} packets carry no TCP payload (no Modbus TCP traffic was captured)",
-            cap.packets.len()
-        ));
+        return Err(crate::msg!("record-no-tcp", count = cap.packets.len()).text);
     }
     Ok(r.rec)
 }
@@ -321,9 +313,9 @@ impl Reader {
             if lost > 0 {
                 let (c, sv) = (self.conns[ci].0, self.conns[ci].1);
                 let (from, to) = if side == 0 { (c, sv) } else { (sv, c) };
-                self.rec.notes.push(format!(
-                    "{lost} bytes from {from} to {to} are missing from the capture (frames around them may show as malformed)"
-                ));
+                self.rec.notes.push(
+                    crate::msg!("record-bytes-missing", lost = lost, from = from.to_string(), to = to.to_string()).text,
+                );
             }
             self.emit(link, dir, out, wall, vt);
         }

@@ -108,12 +108,12 @@ impl FileRecorder {
     /// Creates (truncates) `path` and writes the pcapng section header.
     pub fn create(path: &Path, clock: Clock) -> Result<FileRecorder> {
         let f = File::create(path).map_err(|e| {
-            Error::io(format!("cannot create the recording {}", path.display()))
+            Error::io(crate::msg!("record-cannot-create", file = path.display().to_string()))
                 .cause(e)
-                .hint("check that the directory exists and is writable")
+                .hint(crate::msg!("record-hint-writable"))
         })?;
         let w = PcapNgWriter::new(BufWriter::with_capacity(64 * 1024, f))
-            .map_err(|e| Error::io(format!("cannot write the recording {}", path.display())).cause(e))?;
+            .map_err(|e| Error::io(crate::msg!("record-cannot-write", file = path.display().to_string())).cause(e))?;
         Ok(FileRecorder {
             path: path.display().to_string(),
             clock,
@@ -178,7 +178,9 @@ impl FileRecorder {
         }
         i.finished = true;
         match &i.error {
-            Some(e) => Err(Error::io(format!("the recording {} is incomplete: {e}", self.path))),
+            Some(e) => {
+                Err(Error::io(crate::msg!("record-incomplete", file = self.path.as_str(), error = e.to_string())))
+            }
             None => Ok(()),
         }
     }

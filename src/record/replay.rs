@@ -183,7 +183,7 @@ fn replay_link(
                 Some(b) => match b.k2.clone() {
                     Some(k2) => Sims { clock: b.clock.clone(), base: b.base, vt0: b.vt0, k2: Some(k2), line: None },
                     None => {
-                        skip(report, format!("{}: the bench has no simulated PLC", link.name));
+                        skip(report, crate::msg!("replay-no-sim-plc", link = link.name.as_str()).text);
                         return Ok(());
                     }
                 },
@@ -196,7 +196,7 @@ fn replay_link(
                 Some(b) => match b.line.clone() {
                     Some(line) => Sims { clock: b.clock.clone(), base: b.base, vt0: b.vt0, k2: None, line: Some(line) },
                     None => {
-                        skip(report, format!("{}: the bench has no simulated drive", link.name));
+                        skip(report, crate::msg!("replay-no-sim-drive", link = link.name.as_str()).text);
                         return Ok(());
                     }
                 },
@@ -206,13 +206,14 @@ fn replay_link(
         }
         Proto::Umpk | Proto::FxPort | Proto::FxLink => skip(
             report,
-            format!(
-                "{}: {} frames (replay covers Modbus and servo links)",
-                link.name,
-                super::packet::proto_name(link.proto)
-            ),
+            crate::msg!(
+                "replay-other-protocol",
+                link = link.name.as_str(),
+                protocol = super::packet::proto_name(link.proto)
+            )
+            .text,
         ),
-        Proto::Unknown => skip(report, format!("{}: frames of an undeclared protocol", link.name)),
+        Proto::Unknown => skip(report, crate::msg!("replay-undeclared-protocol", link = link.name.as_str()).text),
     }
     Ok(())
 }
@@ -272,7 +273,9 @@ fn modbus_link(
         let mut s = sim.lock().unwrap_or_else(|p| p.into_inner());
         if s.agent_base.is_none() {
             if let Err(e) = s.enable_agent(h.vbyte) {
-                report.skipped.push(format!("{}: the helper program cannot run: {e}", link.name));
+                report.skipped.push(
+                    crate::msg!("replay-helper-cannot-run", link = link.name.as_str(), error = e.to_string()).text,
+                );
                 helper = None;
             }
         }
@@ -337,8 +340,8 @@ fn modbus_link(
 fn modbus_detail(space: &K2Space, asked: Option<Asked>, recorded: Option<&[u8]>, replayed: Option<&[u8]>) -> String {
     let (Some(a), Some(b)) = (recorded, replayed) else {
         return match recorded {
-            None => "no reply was recorded; the simulator answers".into(),
-            Some(_) => "a reply was recorded; the simulator gives none".into(),
+            None => crate::msg!("replay-no-reply-recorded").text,
+            Some(_) => crate::msg!("replay-no-reply-replayed").text,
         };
     };
     let describe = |p: &[u8]| decode::modbus(space, 0, p, Dir::Received, asked).0;
@@ -398,7 +401,7 @@ pub fn check_not_empty(rec: &Recording, path: &std::path::Path) -> Result<()> {
     if rec.frames.iter().any(|f| f.dir == Dir::Sent) {
         Ok(())
     } else {
-        Err(Error::usage(format!("{} holds no recorded requests", path.display()))
-            .hint("record a session that talks to a device over Modbus or a servo line: plcsh --record FILE --device plc=tcp://…"))
+        Err(Error::usage(crate::msg!("replay-no-requests", file = path.display().to_string()))
+            .hint(crate::msg!("replay-hint-record")))
     }
 }

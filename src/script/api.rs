@@ -26,8 +26,8 @@ pub const ABORT_KEY: &str = "plcsh.on_abort";
 pub fn with_shell<R>(lua: &Lua, f: impl FnOnce(&mut Shell) -> crate::core::Result<R>) -> mlua::Result<R> {
     let mut sh = lua
         .try_app_data_mut::<Shell>()
-        .map_err(|e| raise(Error::state(format!("the session is busy: {e}"))))?
-        .ok_or_else(|| raise(Error::state("no session: Lua runs only inside plcsh")))?;
+        .map_err(|e| raise(Error::state(crate::msg!("script-session-busy", error = e.to_string()))))?
+        .ok_or_else(|| raise(Error::state(crate::msg!("script-no-session"))))?;
     let r = f(&mut sh);
     drop(sh);
     r.map_err(|e| super::error::raise_at(lua, e))
@@ -36,7 +36,7 @@ pub fn with_shell<R>(lua: &Lua, f: impl FnOnce(&mut Shell) -> crate::core::Resul
 /// The session index of device `name`, with an error a script user understands.
 pub fn index(sh: &Shell, name: &str) -> crate::core::Result<usize> {
     sh.session.index(name).map_err(|e| {
-        let mut err = Error::state(format!("device `{name}` is not open (closed, or never opened)")).device(name);
+        let mut err = Error::state(crate::msg!("script-device-not-open", device = name)).device(name);
         err.hint = e.hint.clone();
         err
     })
@@ -101,7 +101,7 @@ pub fn exec_on(lua: &Lua, device: Option<&str>, line: &str) -> mlua::Result<Mult
 /// Writes an outcome through the shell's output (honouring `--json`).
 pub fn show(lua: &Lua, o: &Outcome) -> mlua::Result<()> {
     let style = with_shell(lua, |sh| Ok(sh.style))?;
-    let mut sink = lua.app_data_mut::<Sink>().ok_or_else(|| raise(Error::state("no output")))?;
+    let mut sink = lua.app_data_mut::<Sink>().ok_or_else(|| raise(Error::state(crate::msg!("script-no-output"))))?;
     output::write_outcome(&mut *sink.0, style, o).and_then(|_| sink.0.flush()).map_err(|e| raise(e.into()))
 }
 
@@ -118,7 +118,7 @@ fn print_bytes(lua: &Lua, bytes: &[u8]) -> mlua::Result<()> {
     if with_shell(lua, |sh| Ok(sh.style.json))? {
         return show(lua, &lossy());
     }
-    let mut sink = lua.app_data_mut::<Sink>().ok_or_else(|| raise(Error::state("no output")))?;
+    let mut sink = lua.app_data_mut::<Sink>().ok_or_else(|| raise(Error::state(crate::msg!("script-no-output"))))?;
     let mut line = bytes.to_vec();
     line.push(b'\n');
     match sink.0.write_all(&line).and_then(|_| sink.0.flush()) {
@@ -132,7 +132,7 @@ fn print_bytes(lua: &Lua, bytes: &[u8]) -> mlua::Result<()> {
 
 fn millis(ms: f64, what: &str) -> mlua::Result<Duration> {
     if !ms.is_finite() || ms < 0.0 {
-        return Err(raise(Error::usage(format!("{what}: {ms} is not a duration in milliseconds (a number ≥ 0)"))));
+        return Err(raise(Error::usage(crate::msg!("script-bad-millis", what = what, ms = ms.to_string()))));
     }
     Ok(Duration::from_secs_f64(ms / 1000.0))
 }
@@ -170,11 +170,8 @@ fn json_shape_at(lua: &Lua, v: &Value, path: &mut String, depth: usize) -> mlua:
     if depth >= JSON_DEPTH {
         return Err(super::error::raise_at(
             lua,
-            Error::new(
-                ErrorKind::Value,
-                format!("plcsh.json.encode: the value is nested more than {JSON_DEPTH} tables deep (or holds itself)"),
-            )
-            .hint("JSON holds trees of tables; flatten the value"),
+            Error::new(ErrorKind::Value, crate::msg!("script-json-too-deep", depth = JSON_DEPTH))
+                .hint(crate::msg!("script-hint-json-tree")),
         ));
     }
     let (mut ints, mut max, mut others) = (0usize, 0i64, 0usize);
@@ -188,18 +185,14 @@ fn json_shape_at(lua: &Lua, v: &Value, path: &mut String, depth: usize) -> mlua:
             _ => others += 1,
         }
     }
-    let refuse = |msg: String| {
-        Err(super::error::raise_at(
-            lua,
-            Error::new(ErrorKind::Value, msg)
-                .hint("JSON arrays are lists 1…n without holes; objects have string keys — split the table"),
-        ))
+    let refuse = |msg: crate::core::msg::Msg| {
+        Err(super::error::raise_at(lua, Error::new(ErrorKind::Value, msg).hint(crate::msg!("script-hint-json-split"))))
     };
     if ints > 0 && others > 0 {
-        return refuse(format!("plcsh.json.encode: {path} mixes list items and keys"));
+        return refuse(crate::msg!("script-json-mixed", path = path.as_str()));
     }
     if ints > 0 && max as usize != ints {
-        return refuse(format!("plcsh.json.encode: {path} is a sparse list ({ints} items, highest index {max})"));
+        return refuse(crate::msg!("script-json-sparse", path = path.as_str(), items = ints, max = max));
     }
     for pair in t.clone().pairs::<Value, Value>() {
         let (k, item) = pair?;
@@ -231,10 +224,15 @@ pub fn check_keys(lua: &Lua, t: &Table, known: &[&str], what: &str) -> mlua::Res
         }
         let near = known.iter().map(|c| (crate::core::text::edit_distance(&key, c), *c)).min();
         let hint = match near {
-            Some((d, c)) if d <= 2 => format!("did you mean `{c}`? {what} takes {}", known.join(", ")),
-            _ => format!("{what} takes {}", known.join(", ")),
+            Some((d, c)) if d <= 2 => {
+                crate::msg!("script-hint-did-you-mean-option", near = c, what = what, options = known.join(", "))
+            }
+            _ => crate::msg!("script-hint-options", what = what, options = known.join(", ")),
         };
-        return Err(super::error::raise_at(lua, Error::usage(format!("{what}: unknown option `{key}`")).hint(hint)));
+        return Err(super::error::raise_at(
+            lua,
+            Error::usage(crate::msg!("script-unknown-option", what = what, key = key.as_str())).hint(hint),
+        ));
     }
     Ok(())
 }
@@ -255,12 +253,7 @@ fn wait_until(lua: &Lua, (f, opts): (Function, Value)) -> mlua::Result<Value> {
             }
             what = t.get::<Option<String>>("what")?;
         }
-        other => {
-            return Err(raise(Error::usage(format!(
-                "wait_until's second argument is {{timeout=ms, every=ms}} or a timeout, not a {}",
-                other.type_name()
-            ))))
-        }
+        other => return Err(raise(Error::usage(crate::msg!("script-wait-until-options", kind = other.type_name())))),
     }
     let start = now(lua)?;
     loop {
@@ -271,11 +264,11 @@ fn wait_until(lua: &Lua, (f, opts): (Function, Value)) -> mlua::Result<Value> {
         let waited = now(lua)? - start;
         let step = match timeout {
             Some(t) if waited >= t => {
-                let what = what.map(|w| format!(" ({w})")).unwrap_or_default();
-                return Err(raise(
-                    Error::new(ErrorKind::Timeout, format!("wait_until: condition{what} still false after {t:?}"))
-                        .hint("raise `timeout`, or check the condition with plcsh.exec/get"),
-                ));
+                let m = match what {
+                    Some(w) => crate::msg!("script-wait-until-timeout-what", what = w, time = format!("{t:?}")),
+                    None => crate::msg!("script-wait-until-timeout", time = format!("{t:?}")),
+                };
+                return Err(raise(Error::new(ErrorKind::Timeout, m).hint(crate::msg!("script-hint-wait-until"))));
             }
             Some(t) => every.min(t - waited),
             None => every,

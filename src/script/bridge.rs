@@ -199,10 +199,13 @@ pub static BRIDGE: &[Bridge] = &[
 /// `{ms=500, every=100}` → `for=500ms every=100ms` (`for` is a Lua keyword).
 const UMPK_MONITOR: &[Opt] = &[rename("ms", "for", "ms"), unit("every", "ms")];
 
-fn usage(b: &Bridge, msg: String) -> Error {
-    let shown = if b.template.is_empty() { "a command line".to_string() } else { format!("`{}`", b.template) };
-    Error::usage(format!("{}: {msg}", b.method))
-        .hint(format!("{} runs {shown} with extra arguments appended", b.method))
+fn usage(b: &Bridge, msg: crate::core::msg::Msg) -> Error {
+    let hint = if b.template.is_empty() {
+        crate::msg!("script-hint-runs-command-line", method = b.method)
+    } else {
+        crate::msg!("script-hint-runs-template", method = b.method, template = b.template)
+    };
+    Error::usage(crate::msg!("script-method-error", method = b.method, error = msg.text)).hint(hint)
 }
 
 fn number(n: f64) -> String {
@@ -230,7 +233,7 @@ pub fn word(v: &Value, opts: &[Opt]) -> Result<String> {
         Value::Number(n) => number(*n),
         Value::Boolean(b) => b.to_string(),
         Value::String(s) => {
-            let s = s.to_str().map_err(|_| Error::usage("argument is not UTF-8 text"))?.to_string();
+            let s = s.to_str().map_err(|_| Error::usage(crate::msg!("script-arg-not-utf8")))?.to_string();
             let plain = s.starts_with(['[', '(', '"', '\'']) || !s.contains([' ', '\t', ',', ';']);
             if plain {
                 s
@@ -248,7 +251,7 @@ pub fn word(v: &Value, opts: &[Opt]) -> Result<String> {
             format!("[{}]", items.join(", "))
         }
         Value::Table(t) => format!("({})", options(t, opts)?.join(", ")),
-        other => return Err(Error::usage(format!("cannot pass a Lua {} to a command", other.type_name()))),
+        other => return Err(Error::usage(crate::msg!("script-cannot-pass", kind = other.type_name()))),
     })
 }
 
@@ -262,8 +265,10 @@ fn options(t: &Table, opts: &[Opt]) -> Result<Vec<String>> {
     for p in t.pairs::<Value, Value>() {
         let (k, v) = p.map_err(lua_err)?;
         let key = match &k {
-            Value::String(s) => s.to_str().map_err(|_| Error::usage("option name is not UTF-8"))?.to_string(),
-            other => return Err(Error::usage(format!("option names are strings, not {}", other.type_name()))),
+            Value::String(s) => {
+                s.to_str().map_err(|_| Error::usage(crate::msg!("script-option-not-utf8")))?.to_string()
+            }
+            other => return Err(Error::usage(crate::msg!("script-option-not-string", kind = other.type_name()))),
         };
         pairs.push((key, v));
     }
@@ -341,7 +346,7 @@ pub fn render(b: &Bridge, args: &[Value]) -> Result<String> {
             None if optional => {}
             None => {
                 let spec = part.find('{').map(|o| &part[o..=part[o..].find('}').map_or(o, |c| o + c)]);
-                return Err(usage(b, format!("missing argument for `{}`", spec.unwrap_or("{}"))));
+                return Err(usage(b, crate::msg!("script-missing-argument", spec = spec.unwrap_or("{}"))));
             }
         }
         rest = next;
@@ -354,7 +359,7 @@ pub fn render(b: &Bridge, args: &[Value]) -> Result<String> {
             Value::Table(t) if !is_list(t) => options(t, b.options)?,
             Value::Nil => continue,
             Value::String(s) if raw => {
-                vec![s.to_str().map_err(|_| Error::usage("command text is not UTF-8"))?.to_string()]
+                vec![s.to_str().map_err(|_| Error::usage(crate::msg!("script-command-not-utf8")))?.to_string()]
             }
             v => vec![word(v, b.options)?],
         };
@@ -366,7 +371,7 @@ pub fn render(b: &Bridge, args: &[Value]) -> Result<String> {
         }
     }
     if out.trim().is_empty() {
-        return Err(usage(b, "nothing to run".into()));
+        return Err(usage(b, crate::msg!("script-nothing-to-run")));
     }
     Ok(out)
 }

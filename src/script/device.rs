@@ -50,13 +50,13 @@ impl Handle {
         if let Some(op) = self.cache.get(key) {
             return Ok(*op);
         }
-        let text = std::str::from_utf8(key).map_err(|_| Error::usage("operand names are text"))?;
+        let text = std::str::from_utf8(key).map_err(|_| Error::usage(crate::msg!("script-operand-not-text")))?;
         // Names first (`plc.Conveyor_Run`, `plc["Мотор_1_Пуск"]`): the session's one parser.
         let ops = sh.session.parse_on(i, text).map_err(|e| e.device(&self.name))?;
         let [op] = ops[..] else {
-            return Err(Error::usage(format!("`{text}` names {} operands; a field is one operand", ops.len()))
+            return Err(Error::usage(crate::msg!("script-field-many-operands", text = text, count = ops.len()))
                 .device(&self.name)
-                .hint(format!("read a range with {}:get(\"{text}\")", self.name)));
+                .hint(crate::msg!("script-hint-read-range", device = self.name.as_str(), text = text)));
         };
         self.cache.insert(key.into(), op);
         Ok(op)
@@ -81,13 +81,14 @@ impl Handle {
             .collect();
         near.sort();
         let hint = if near.is_empty() {
-            format!("methods: {}; operands are fields: {}.VW0", all.join(", "), self.name)
+            crate::msg!("script-hint-methods", methods = all.join(", "), device = self.name.as_str())
         } else {
             let names: Vec<String> = near.iter().take(3).map(|(_, m)| format!("{}:{m}()", self.name)).collect();
-            format!("did you mean {}?", names.join(" or "))
+            let at = |k: usize| names.get(k).cloned().unwrap_or_default();
+            crate::msg!("script-hint-did-you-mean-method", count = names.len(), a = at(0), b = at(1), c = at(2))
         };
         Some(
-            Error::usage(format!("device `{}` has no method or operand `{word}`", self.name))
+            Error::usage(crate::msg!("script-no-method", device = self.name.as_str(), word = word))
                 .device(&self.name)
                 .hint(hint),
         )
@@ -164,29 +165,27 @@ impl Handle {
             [Value::Table(_), ..] => {
                 for a in &args {
                     let Value::Table(t) = a else {
-                        return Err(raise(Error::usage("set: pass {\"OPERAND\", value} pairs only")));
+                        return Err(raise(Error::usage(crate::msg!("script-set-pairs-only"))));
                     };
                     pairs.push(pair(t)?);
                 }
             }
             [Value::String(_), ..] => {
                 if !args.len().is_multiple_of(2) {
-                    return Err(raise(Error::usage(format!(
-                        "set: {} arguments; pass OPERAND, value, OPERAND, value …",
-                        args.len()
-                    ))));
+                    return Err(raise(Error::usage(crate::msg!("script-set-odd-arguments", count = args.len()))));
                 }
                 for c in args.chunks(2) {
                     let Value::String(k) = &c[0] else {
-                        return Err(raise(Error::usage("set: operand names are strings")));
+                        return Err(raise(Error::usage(crate::msg!("script-set-names-strings"))));
                     };
                     pairs.push((k.as_bytes().to_vec(), c[1].clone()));
                 }
             }
             _ => {
                 return Err(raise(
-                    Error::usage("set needs operands and values")
-                        .hint("plc:set{SMB67=0x85}, plc:set({\"SMB67\", 0x85}, …), plc:set(\"SMB67\", 0x85), plc:set(\"SMB67=16#85\")"),
+                    Error::usage(crate::msg!("script-set-needs-values")).hint(
+                        "plc:set{SMB67=0x85}, plc:set({\"SMB67\", 0x85}, …), plc:set(\"SMB67\", 0x85), plc:set(\"SMB67=16#85\")",
+                    ),
                 ))
             }
         }
@@ -216,10 +215,7 @@ fn to_value(sh: &Shell, i: usize, op: &Operand, v: &Value) -> Result<V> {
         other => {
             return Err(named(Error::new(
                 crate::core::ErrorKind::Value,
-                format!(
-                    "cannot write a Lua {} (use a number, a boolean or a literal such as \"16#85\")",
-                    other.type_name()
-                ),
+                crate::msg!("script-cannot-write-value", kind = other.type_name()),
             )))
         }
     })

@@ -255,9 +255,7 @@ fn dot_for_colon(e: &mlua::Error) -> Option<String> {
             mlua::Error::CallbackError { cause, .. } | mlua::Error::WithContext { cause, .. } => cur = cause,
             mlua::Error::BadArgument { to: Some(to), name: Some(name), .. } if name == "self" => {
                 let method = to.rsplit('.').next().unwrap_or(to);
-                return Some(format!(
-                    "`{method}` is a method: call it with a colon, `dev:{method}(…)`, not a dot `dev.{method}(…)`"
-                ));
+                return Some(crate::msg!("script-method-dot", method = method).text);
             }
             _ => return None,
         }

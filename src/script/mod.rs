@@ -220,7 +220,11 @@ impl Engine {
         env: Option<&Table>,
     ) -> Result<(), Failure> {
         let code = std::fs::read(path).map_err(|e| Failure {
-            error: Error::io(format!("cannot read {}: {e}", path.display())),
+            error: Error::io(crate::msg!(
+                "script-cannot-read",
+                file = path.display().to_string(),
+                error = e.to_string()
+            )),
             location: None,
             traceback: None,
         })?;
@@ -302,7 +306,7 @@ fn replace_os_exit(lua: &Lua) -> mlua::Result<()> {
             _ => 1,
         };
         lua.set_named_registry_value(EXIT_KEY, n)?;
-        Err::<(), _>(error::raise(Error::new(ErrorKind::Script, format!("the script called os.exit({n})"))))
+        Err::<(), _>(error::raise(Error::new(ErrorKind::Script, crate::msg!("script-os-exit", code = n))))
     })?;
     lua.globals().get::<Table>("os")?.set("exit", exit)
 }
@@ -322,14 +326,15 @@ fn replace_os_tmpname(lua: &Lua) -> mlua::Result<()> {
                 Ok(_) => return Ok(path.display().to_string()),
                 Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
                 Err(e) => {
-                    return Err(mlua::Error::runtime(format!(
-                        "os.tmpname: cannot create a file in {}: {e}",
-                        dir.display()
+                    return Err(mlua::Error::runtime(crate::msg!(
+                        "script-tmpname-cannot-create",
+                        dir = dir.display().to_string(),
+                        error = e.to_string()
                     )))
                 }
             }
         }
-        Err(mlua::Error::runtime(format!("os.tmpname: no free name in {}", dir.display())))
+        Err(mlua::Error::runtime(crate::msg!("script-tmpname-no-name", dir = dir.display().to_string())))
     })?;
     lua.globals().get::<Table>("os")?.set("tmpname", tmpname)
 }
@@ -343,8 +348,9 @@ struct Hook {
 impl Hook {
     fn engine(&mut self) -> crate::core::Result<&Engine> {
         if self.engine.is_none() {
-            let e = Engine::new(self.interrupt.clone(), Box::new(std::io::stdout()))
-                .map_err(|e| Error::new(ErrorKind::Script, format!("cannot start Lua: {e}")))?;
+            let e = Engine::new(self.interrupt.clone(), Box::new(std::io::stdout())).map_err(|e| {
+                Error::new(ErrorKind::Script, crate::msg!("lab-cannot-start-lua", error = e.to_string()))
+            })?;
             self.engine = Some(e);
         }
         Ok(self.engine.as_ref().expect("engine"))

@@ -77,14 +77,14 @@ fn search(lua: &Lua, shared: &Shared, name: &str) -> mlua::Result<MultiValue> {
         let from = format!("plcsh:lib/{name}.lua");
         return load(lua, name, code.as_bytes(), &format!("@{from}"), &from);
     }
-    tried.push(format!("no module '{name}' built into plcsh"));
+    tried.push(crate::msg!("script-no-built-in-module", name = name).text);
     if let Some(d) = &script_dir {
         if let Some(found) = in_dir(d, &mut tried)? {
             return Ok(found);
         }
     }
     if confined {
-        tried.push("(a sandboxed run loads only plcsh's modules and the lab's own)".into());
+        tried.push(crate::msg!("script-sandbox-modules").text);
         return Ok(MultiValue::from_iter([Value::String(lua.create_string(tried.join("\n\t"))?)]));
     }
     // Lua's defaults last, as its own file searcher would do them.

@@ -21,17 +21,18 @@ use mlua::{Lua, MultiValue, Table, Value};
 use std::path::PathBuf;
 use std::sync::Arc;
 
-/// What a sandboxed run refuses, with the reason shown to the student.
+/// What a sandboxed run refuses, with the reason shown to the student (the `$why` selector
+/// of the catalogue's `script-sandbox-refused`).
 static REFUSED: &[(&str, &str, &str)] = &[
-    ("os", "execute", "runs a program"),
-    ("os", "remove", "deletes a file"),
-    ("os", "rename", "renames a file"),
-    ("os", "exit", "ends plcsh"),
-    ("os", "tmpname", "creates a file"),
-    ("os", "getenv", "reads the machine's environment"),
-    ("io", "popen", "runs a program"),
-    ("io", "tmpfile", "creates a file"),
-    ("package", "loadlib", "loads a C library"),
+    ("os", "execute", "program"),
+    ("os", "remove", "delete"),
+    ("os", "rename", "rename"),
+    ("os", "exit", "exit"),
+    ("os", "tmpname", "create"),
+    ("os", "getenv", "environment"),
+    ("io", "popen", "program"),
+    ("io", "tmpfile", "create"),
+    ("package", "loadlib", "library"),
 ];
 
 /// Globals a submission's environment gets as they are (functions without side effects).
@@ -65,8 +66,8 @@ fn refused(lua: &Lua, what: String, why: &str) -> mlua::Result<mlua::Function> {
     lua.create_function(move |lua, _: MultiValue| -> mlua::Result<()> {
         Err(raise_at(
             lua,
-            Error::unsupported(format!("{what} is not available in a sandboxed run (it {why})"))
-                .hint("the sandbox allows simulated devices, printing, checks and files in the lab's folders"),
+            Error::unsupported(crate::msg!("script-sandbox-refused", what = what.as_str(), why = why.as_str()))
+                .hint(crate::msg!("script-hint-sandbox")),
         ))
     })
 }
@@ -95,7 +96,8 @@ fn no_folders(t: &str) -> String {
             || frame.starts_with("\\\\")
             || (b.len() > 2 && b[0].is_ascii_alphabetic() && b[1] == b':' && (b[2] == b'\\' || b[2] == b'/'));
         if after && absolute {
-            out.push_str("\t(a frame of the lab's)");
+            out.push('\t');
+            out.push_str(&crate::msg!("script-lab-frame"));
         } else {
             out.push_str(line);
         }
@@ -220,7 +222,7 @@ fn install_loaders(lua: &Lua, env: &Table, rules: Arc<Confinement>) -> mlua::Res
     let rl = raw_loadfile.clone();
     let loadfile = lua.create_function(move |lua, args: MultiValue| {
         let path = arg_str(&args, 0).ok_or_else(|| {
-            raise_at(lua, Error::unsupported("loadfile without a file reads the terminal: not in a sandboxed run"))
+            raise_at(lua, Error::unsupported(crate::msg!("script-sandbox-terminal", function = "loadfile")))
         })?;
         r.check_read(&path).map_err(|e| raise_at(lua, e))?;
         let env = match args.get(2) {
@@ -232,7 +234,7 @@ fn install_loaders(lua: &Lua, env: &Table, rules: Arc<Confinement>) -> mlua::Res
     let e = env.clone();
     let dofile = lua.create_function(move |lua, path: Option<String>| {
         let path = path.ok_or_else(|| {
-            raise_at(lua, Error::unsupported("dofile without a file reads the terminal: not in a sandboxed run"))
+            raise_at(lua, Error::unsupported(crate::msg!("script-sandbox-terminal", function = "dofile")))
         })?;
         rules.check_read(&path).map_err(|err| raise_at(lua, err))?;
         let (f, err): (Option<mlua::Function>, Option<String>) =
@@ -349,18 +351,16 @@ impl World {
     }
 
     /// Why `name` was not found, naming only what the submission may see.
-    fn not_found(&self, name: &str) -> String {
-        let own = match &self.own {
-            Some(_) => format!("no {}.lua in the submission's folder", name.replace('.', "/")),
-            None => "a single-file submission has no modules of its own".into(),
-        };
-        let shared = if self.shared.is_empty() {
-            "the lab shares no modules".to_string()
-        } else {
-            let names: Vec<&str> = self.shared.iter().map(|(n, _, _)| n.as_str()).collect();
-            format!("the lab shares {}", names.join(", "))
-        };
-        format!("module '{name}' not found: {own}; {shared}")
+    fn not_found(&self, name: &str) -> crate::core::msg::Msg {
+        let names: Vec<&str> = self.shared.iter().map(|(n, _, _)| n.as_str()).collect();
+        crate::msg!(
+            "script-module-not-found",
+            name = name,
+            own = if self.own.is_some() { "folder" } else { "single" },
+            path = name.replace('.', "/"),
+            shared = if names.is_empty() { "none" } else { "some" },
+            modules = names.join(", "),
+        )
     }
 }
 
@@ -397,7 +397,7 @@ fn submission_require(lua: &Lua, env: &Table, world: World) -> mlua::Result<mlua
             other => {
                 return Err(raise_at(
                     lua,
-                    Error::usage(format!("bad argument #1 to 'require' (string expected, got {})", other.type_name())),
+                    Error::usage(crate::msg!("script-require-not-string", kind = other.type_name())),
                 ))
             }
         };
@@ -406,17 +406,10 @@ fn submission_require(lua: &Lua, env: &Table, world: World) -> mlua::Result<mlua
             return Ok(MultiValue::from_iter([done]));
         }
         if loading.lock().unwrap_or_else(|p| p.into_inner()).contains(&name) {
-            return Err(raise_at(
-                lua,
-                Error::usage(format!("module '{name}' requires itself (a loop of require calls)")),
-            ));
+            return Err(raise_at(lua, Error::usage(crate::msg!("script-require-loop", name = name.as_str()))));
         }
         let Some((code, shown)) = world.find(&name) else {
-            return Err(raise_at(
-                lua,
-                Error::usage(world.not_found(&name))
-                    .hint("a submission requires its own modules and those the lab shares"),
-            ));
+            return Err(raise_at(lua, Error::usage(world.not_found(&name)).hint(crate::msg!("script-hint-require"))));
         };
         let code = lua_text(code)
             .map_err(|why| raise_at(lua, Error::usage(format!("error loading module '{name}' from {shown}: {why}"))))?;
@@ -631,7 +624,9 @@ pub fn deterministic(
                 match (t.get::<Option<f64>>(k)?, default) {
                     (Some(v), _) => Ok(v.floor() as i64),
                     (None, Some(d)) => Ok(d),
-                    (None, None) => Err(raise_at(lua, Error::usage(format!("field '{k}' missing in date table")))),
+                    (None, None) => {
+                        Err(raise_at(lua, Error::usage(crate::msg!("script-date-field-missing", field = k))))
+                    }
                 }
             };
             let days = days_from_civil(field("year", None)?, field("month", None)?, field("day", None)?);

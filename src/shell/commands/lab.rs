@@ -20,22 +20,20 @@ pub const LAB: CommandSpec = CommandSpec {
 
 fn lab(sh: &mut Shell, args: Args) -> Result<Outcome> {
     if sh.session.confine.is_some() {
-        return Err(Error::unsupported(
-            "`lab` is not available in a sandboxed run (it starts processes and writes folders)",
-        ));
+        return Err(Error::unsupported(crate::msg!("lab-not-in-sandbox")));
     }
     // Folders and files as text: `lab check "Лабораторные/лаб 1"` (docs/commands.md, "Quoting").
     let raw = crate::shell::lex::words(args.text).map_err(|e| e.shift(args.offset))?;
     let text: Vec<_> = raw.iter().map(|w| crate::shell::lex::unquote(w.1)).collect();
     let words: Vec<&str> = text.iter().map(|w| w.as_ref()).collect();
     let usage = LAB.usage;
-    let labs = sh.labs.clone().ok_or_else(|| Error::unsupported("`lab` is not available in this run"))?;
+    let labs = sh.labs.clone().ok_or_else(|| Error::unsupported(crate::msg!("lab-not-in-this-run")))?;
     match words.as_slice() {
         ["new", name] => labs.new_lab(std::path::Path::new(name)),
         ["check", path] => {
             let (o, head, ok) = labs.check(std::path::Path::new(path))?;
             if !ok {
-                return Err(Error::state(head).hint("the table from `plcsh lab check` names each criterion's result"));
+                return Err(Error::state(head).hint(crate::msg!("lab-hint-check-table")));
             }
             Ok(o.note(head))
         }
@@ -46,10 +44,11 @@ fn lab(sh: &mut Shell, args: Args) -> Result<Outcome> {
                 // A quoted word is a file, never an option.
                 match w.strip_prefix("jobs=").filter(|_| !typed.1.starts_with(['"', '\''])) {
                     Some(n) => {
-                        jobs =
-                            n.parse().ok().filter(|n| *n > 0).ok_or_else(|| {
-                                Error::usage(format!("jobs={n}: a number of workers ≥ 1")).hint(usage)
-                            })?;
+                        jobs = n
+                            .parse()
+                            .ok()
+                            .filter(|n| *n > 0)
+                            .ok_or_else(|| Error::usage(crate::msg!("lab-bad-jobs", jobs = n)).hint(usage))?;
                     }
                     None => subs.push(std::path::PathBuf::from(w)),
                 }
@@ -57,6 +56,6 @@ fn lab(sh: &mut Shell, args: Args) -> Result<Outcome> {
             let (head, o, json) = labs.grade(std::path::Path::new(path), &subs, jobs)?;
             Ok(o.note(head).with("submissions", json))
         }
-        _ => Err(Error::usage("`lab` needs new, check or grade with its arguments").hint(usage).column(args.offset)),
+        _ => Err(Error::usage(crate::msg!("lab-needs-sub")).hint(usage).column(args.offset)),
     }
 }
