@@ -83,7 +83,7 @@ fn json_codes_do_not_depend_on_the_language() {
     };
     assert_eq!(code("frobnicate"), "shell-unknown-command");
     // A message not in the catalogue yet has its kind's code.
-    assert_eq!(code("sim wirse"), "kind-usage");
+    assert_eq!(code("servo frob"), "kind-usage");
 }
 
 #[test]

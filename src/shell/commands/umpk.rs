@@ -413,7 +413,8 @@ fn program(sh: &mut Shell, dev: usize, rest: &[Word], col: usize) -> Result<Outc
     let show = crate::core::platform::escapes(crate::core::platform::Stream::Stderr) && !sh.style.json;
     let mut progress = |k: usize, n: usize| {
         if show {
-            eprint!("\r\x1b[2Kprogramming {} record {k}/{n}", crate::shell::progress::bar(k as f64 / n as f64, 20));
+            let bar = crate::shell::progress::bar(k as f64 / n as f64, 20);
+            eprint!("\r\x1b[2K{}", crate::msg!("shell-umpk-programming", bar = bar, record = k, records = n));
             let _ = std::io::stderr().flush();
         }
     };
