@@ -379,3 +379,132 @@ shell-direction-input = ; direction input { $input } = { $value }
 shell-quad-needs-two = sim quad needs two inputs: A (leading) and B
 shell-quad-same-input = A and B must be different inputs
 shell-quad-dir = dir={ $value }: use up (A leads) or down (B leads)
+
+## Lists: devices, paths, ports; the command line's run, completions and man (shell::commands, cli)
+
+# The `writes` column of `devices` for a read-only profile or fleet.
+shell-devices-read-only = read only
+# The `writes` column of a fleet whose members have profiles of their own.
+shell-devices-per-profile = per profile
+shell-devices-count = { $count } { $count ->
+    [one] device
+   *[other] devices
+}
+shell-devices-profile-problem = profile file: { $problem }
+# The columns of `paths` (`|` between them).
+shell-paths-columns = file | path | set by
+# The columns of `ports` (`|` between them).
+shell-ports-columns = port | kind | usb id | adapter | serial number
+cli-run-no-lua = cannot start Lua: { $reason }
+cli-run-no-sandbox = cannot set up the sandbox: { $reason }
+cli-completions-cannot-write = plcsh: cannot write completions into { $dir }: { $reason }
+cli-completions-name-a-shell = plcsh completions: name a shell (bash, zsh, fish, powershell) or give --write DIR
+cli-completions-wrote = wrote { $file }
+# The manual's name in the page's header (`plcsh man`).
+cli-man-manual = plcsh manual
+
+## The simulated CPU: programs, scans, breakpoints; the FX simulator (shell::commands::simprogram, fxsim)
+
+shell-sim-no-program = { $name }: no program loaded (sim program load FILE.il)
+# The simulated K2's CPU mode (RUN, STOP, PAUSE) and its RUN/STOP switch.
+shell-sim-cpu = { $name }: CPU { $mode }{ $switch ->
+    [stop] { " " }(switch at STOP)
+   *[run] { "" }
+}
+shell-sim-loaded = { $what ->
+    [helper] helper
+   *[program] program
+}: { $source } ({ $instructions } instructions)
+# Scan counts and times of the simulated K2 (SMW22/24/26: K2 manual §3.4.2.3).
+shell-sim-scans = scans { $scans }; scan time last { $last } ms, min { $min } ms, max { $max } ms (SMW22/24/26); { $instructions } instructions in the last scan; { $interrupts } interrupt routines run
+shell-sim-costs = watchdog { $watchdog } ms, minimum scan { $min_scan } ms, overhead { $overhead } ms
+shell-sim-stopped-by-program = stopped by the program's STOP instruction (sim cpu run restarts it)
+shell-sim-fault = fault at { $at } s: { $fault }
+# The K2's Err LED after normal (non-fatal) errors: how many, and the last one.
+shell-sim-err-led = Err LED on: { $count } normal { $count ->
+    [one] error
+   *[other] errors
+} (the CPU continues); last at { $at } s: { $error }
+shell-sim-cpu-needs-mode = sim cpu needs run, stop or pause
+shell-sim-load-needs-file = sim program load needs a file, e.g. { $example }
+shell-cannot-read-because = cannot read { $file }: { $reason }
+shell-sim-stop-values = STOP values: { $values }
+shell-sim-program-unknown = unknown `sim program { $sub }`
+shell-sim-switch-form = sim switch run|stop (the simulated RUN/STOP switch)
+shell-sim-scan-count = sim scan N: N is a number of scans 1…10000000, not `{ $text }`
+shell-sim-no-breakpoints = no breakpoints
+shell-sim-breakpoints = { $count ->
+   *[other] breakpoints at lines
+} { $lines }
+shell-sim-breakpoints-cleared = breakpoints cleared
+shell-sim-stepi-count = sim stepi N: N is 1…100000, not `{ $text }`
+shell-fx-program = { $name }: { $model } { $mode }; program { $program } ({ $instructions } instructions)
+shell-fx-no-program = { $name }: { $model } { $mode }; no program (sim program load FILE.il)
+# Scan counts and times of the simulated FX PLC (D8010/D8011/D8012).
+shell-fx-scans = scans { $scans }; scan time last { $last } ms, min { $min } ms, max { $max } ms (D8010/D8011/D8012); time { $time } s
+shell-fx-fault = stopped by a fault: { $fault }
+shell-fx-not-simulator = not an FX simulator
+shell-fx-real = a real FX runs its own program
+shell-fx-loaded = { $file }: { $instructions } instructions loaded; the PLC restarts in RUN
+shell-fx-unloaded = program removed: the PLC scans an empty program
+shell-fx-program-unknown = unknown `sim program { $sub }` on an FX PLC
+shell-fx-no-pause = an FX PLC has RUN and STOP, no PAUSE
+shell-fx-cpu-needs-mode = sim cpu needs run or stop
+shell-fx-mode = { $model } in { $mode }
+shell-fx-sim-unavailable = `sim { $sub }` is not available on an FX PLC
+
+## The UMPK teaching PLC (shell::commands::umpk; UMPK8/16 manual)
+
+shell-umpk-not-umpk = `{ $name }` is not a UMPK
+shell-umpk-none-open = no UMPK is open
+# `port`: this system's word for a serial port (/dev/ttyUSB0, COM3).
+shell-hint-umpk-open = open one with --device lab=umpk:{ $port } or connect lab sim-umpk:UMPK16
+shell-umpk-several = several UMPKs are open; name one (umpk NAME info)
+shell-umpk-needs-subcommand = umpk needs a subcommand
+shell-umpk-program-info-none = program info (22 spaces: no program, Wait mode)
+shell-umpk-program-info = program info "{ $info }"
+# `umpk timing`: the longest cycle and its parts (manual: T = (LLMM − HHKK) × 0.271 µs).
+shell-umpk-timing = longest cycle { $total } µs, firmware { $firmware } µs, program { $program } µs (T = (LLMM − HHKK) × 0.271 µs; HHKK={ $hhkk } LLMM={ $llmm })
+shell-umpk-reset = reset: the controller restarted (R received; echo is on)
+shell-umpk-unknown = unknown `umpk { $sub }`
+shell-umpk-real-program = a real UMPK runs only what is programmed into it (umpk program FILE.hex); IL programs run in the simulator
+shell-umpk-il-loaded = { $file }: { $instructions } instructions loaded; runs every { $cycle } ms cycle in Work mode
+shell-umpk-sim-program-unknown = unknown `sim program { $sub }` on a UMPK
+shell-hint-umpk-sim-program = sim program load FILE.il | sim program
+shell-umpk-program-mode = program: { $program }; mode { $mode }
+shell-umpk-info-columns = field | value
+# The rows of `umpk info`, in this order (`|` between them).
+shell-umpk-info-fields = model | firmware | inputs / outputs | mode | status word | microcode | echo | program (simulator)
+shell-umpk-no-flag = no flag set
+# The UMPK's mode as its manual names it (§3.2).
+shell-umpk-mode = { $mode ->
+    [Programming] Programming
+    [Work] Work
+   *[Wait] Wait
+}
+shell-umpk-errors-cleared = error history cleared
+shell-umpk-errors-empty = the error history is empty
+shell-umpk-errors-columns = # | code | meaning (newest first; 1–127 user, 128–255 system)
+shell-umpk-send-needs = umpk send needs a command or record, e.g. umpk send ?03FD
+shell-umpk-sim-needs-simulator = umpk sim works on a simulated UMPK: in-process (sim-umpk:UMPK16), or served by plcsh sim serve --umpk-pty LINK and opened with control=LINK.ctl; a real UMPK's inputs are wired
+shell-umpk-reference-in-process = reference programs load into the in-process simulator (sim-umpk:UMPK16)
+shell-umpk-no-reference = no reference program `{ $name }`
+shell-hint-umpk-references = reference programs: { $names }
+shell-umpk-reference-loaded = reference program { $name } loaded ({ $description }); mode { $mode }
+shell-umpk-program-needs-file = umpk program needs a HEX file
+shell-umpk-program-extra = unexpected `{ $extra }` (only `run` may follow the file)
+shell-umpk-info-text = info="{ $info }": 1–22 printable ASCII characters (manual §4.2.4)
+shell-hint-umpk-hex = nothing was sent; the { $model } takes records 00/01/02/03 inside 16#0000..16#{ $last }
+shell-umpk-programmed-run = reset: the program is enabled (Work mode)
+shell-umpk-programmed-stays = the controller stays in Programming mode; `umpk reset` enables the program
+# After `umpk program`: what was written and acknowledged; `next` is one of the two messages above.
+shell-umpk-programmed = programmed { $bytes } bytes in { $pages } page(s), { $records } records acknowledged{ $named ->
+    [yes] , program info "{ $info }"
+   *[no] { "" }
+}{ $stopped ->
+    [yes] ; the controller was in Work mode: its program stopped and its outputs went off when programming began
+   *[no] { "" }
+}; { $next }
+shell-umpk-monitor-stopped = the real-time monitor stream stopped (no packet within the timeout)
+shell-umpk-monitor-cannot-write = cannot write the monitor output: { $reason }
+shell-umpk-monitor-samples = { $samples } monitor samples from { $packets } packets

@@ -410,3 +410,156 @@ shell-direction-input = ; вход направления { $input } = { $value 
 shell-quad-needs-two = sim quad требует два входа: A (опережающий) и B
 shell-quad-same-input = A и B должны быть разными входами
 shell-quad-dir = dir={ $value }: используйте up (опережает A) или down (опережает B)
+
+## Списки: устройства, пути, порты; run, completions и man командной строки (shell::commands, cli)
+
+shell-devices-read-only = только чтение
+shell-devices-per-profile = по профилю каждого
+shell-devices-count = { $count } { $count ->
+    [one] устройство
+    [few] устройства
+   *[many] устройств
+}
+shell-devices-profile-problem = файл профилей: { $problem }
+shell-paths-columns = файл | путь | чем задан
+shell-ports-columns = порт | вид | usb id | адаптер | серийный номер
+cli-run-no-lua = не удаётся запустить Lua: { $reason }
+cli-run-no-sandbox = не удаётся подготовить песочницу: { $reason }
+cli-completions-cannot-write = plcsh: не удаётся записать скрипты дополнения в { $dir }: { $reason }
+cli-completions-name-a-shell = plcsh completions: укажите оболочку (bash, zsh, fish, powershell) или --write DIR
+cli-completions-wrote = записан { $file }
+cli-man-manual = руководство plcsh
+
+## Симулируемый CPU: программы, циклы сканирования, точки останова; симулятор FX (shell::commands::simprogram, fxsim)
+
+shell-sim-no-program = { $name }: программа не загружена (sim program load FILE.il)
+shell-sim-cpu = { $name }: CPU { $mode }{ $switch ->
+    [stop] { " " }(переключатель в положении STOP)
+   *[run] { "" }
+}
+shell-sim-loaded = { $what ->
+    [helper] программа-помощник
+   *[program] программа
+}: { $source } ({ $instructions } { $instructions ->
+    [one] инструкция
+    [few] инструкции
+   *[many] инструкций
+})
+shell-sim-scans = циклов сканирования { $scans }; время сканирования последнее { $last } мс, мин. { $min } мс, макс. { $max } мс (SMW22/24/26); { $instructions } { $instructions ->
+    [one] инструкция
+    [few] инструкции
+   *[many] инструкций
+} в последнем цикле; выполнено подпрограмм прерываний: { $interrupts }
+shell-sim-costs = сторожевой таймер { $watchdog } мс, минимальный цикл сканирования { $min_scan } мс, накладные расходы { $overhead } мс
+shell-sim-stopped-by-program = остановлено инструкцией STOP программы (sim cpu run запускает снова)
+shell-sim-fault = неисправность в { $at } с: { $fault }
+shell-sim-err-led = светодиод Err горит: { $count } { $count ->
+    [one] обычная ошибка
+    [few] обычные ошибки
+   *[many] обычных ошибок
+} (CPU продолжает работу); последняя в { $at } с: { $error }
+shell-sim-cpu-needs-mode = sim cpu требует run, stop или pause
+shell-sim-load-needs-file = sim program load требует файл, например { $example }
+shell-cannot-read-because = не удаётся прочитать { $file }: { $reason }
+shell-sim-stop-values = значения в STOP: { $values }
+shell-sim-program-unknown = неизвестная `sim program { $sub }`
+shell-sim-switch-form = sim switch run|stop (симулируемый переключатель RUN/STOP)
+shell-sim-scan-count = sim scan N: N — число циклов сканирования 1…10000000, а не `{ $text }`
+shell-sim-no-breakpoints = точек останова нет
+shell-sim-breakpoints = { $count ->
+    [one] точка останова в строке
+   *[other] точки останова в строках
+} { $lines }
+shell-sim-breakpoints-cleared = точки останова удалены
+shell-sim-stepi-count = sim stepi N: N — от 1 до 100000, а не `{ $text }`
+shell-fx-program = { $name }: { $model } { $mode }; программа { $program } ({ $instructions } { $instructions ->
+    [one] инструкция
+    [few] инструкции
+   *[many] инструкций
+})
+shell-fx-no-program = { $name }: { $model } { $mode }; программы нет (sim program load FILE.il)
+shell-fx-scans = циклов сканирования { $scans }; время сканирования последнее { $last } мс, мин. { $min } мс, макс. { $max } мс (D8010/D8011/D8012); время { $time } с
+shell-fx-fault = остановлено неисправностью: { $fault }
+shell-fx-not-simulator = это не симулятор FX
+shell-fx-real = настоящий FX выполняет свою программу
+shell-fx-loaded = { $file }: { $instructions } { $instructions ->
+    [one] инструкция загружена
+    [few] инструкции загружены
+   *[many] инструкций загружено
+}; ПЛК перезапускается в режиме RUN
+shell-fx-unloaded = программа удалена: ПЛК сканирует пустую программу
+shell-fx-program-unknown = неизвестная `sim program { $sub }` для ПЛК FX
+shell-fx-no-pause = у ПЛК FX есть RUN и STOP, но нет PAUSE
+shell-fx-cpu-needs-mode = sim cpu требует run или stop
+shell-fx-mode = { $model } в режиме { $mode }
+shell-fx-sim-unavailable = `sim { $sub }` недоступна для ПЛК FX
+
+## Учебный ПЛК УМПК (shell::commands::umpk; руководство УМПК8/16)
+
+shell-umpk-not-umpk = `{ $name }` — не УМПК
+shell-umpk-none-open = ни один УМПК не открыт
+shell-hint-umpk-open = откройте его через --device lab=umpk:{ $port } или connect lab sim-umpk:UMPK16
+shell-umpk-several = открыто несколько УМПК; укажите один (umpk NAME info)
+shell-umpk-needs-subcommand = umpk требует подкоманду
+shell-umpk-program-info-none = сведения о программе (22 пробела: программы нет, режим «Ожидание»)
+shell-umpk-program-info = сведения о программе "{ $info }"
+shell-umpk-timing = самый долгий цикл { $total } мкс, встроенное ПО { $firmware } мкс, программа { $program } мкс (T = (LLMM − HHKK) × 0.271 мкс; HHKK={ $hhkk } LLMM={ $llmm })
+shell-umpk-reset = сброс: контроллер перезапущен (получен R; эхо включено)
+shell-umpk-unknown = неизвестная `umpk { $sub }`
+shell-umpk-real-program = настоящий УМПК выполняет только то, что в него запрограммировано (umpk program FILE.hex); программы IL выполняются в симуляторе
+shell-umpk-il-loaded = { $file }: { $instructions } { $instructions ->
+    [one] инструкция загружена
+    [few] инструкции загружены
+   *[many] инструкций загружено
+}; выполняется каждый цикл ПЛК { $cycle } мс в режиме «Работа»
+shell-umpk-sim-program-unknown = неизвестная `sim program { $sub }` для УМПК
+shell-hint-umpk-sim-program = sim program load FILE.il | sim program
+shell-umpk-program-mode = программа: { $program }; режим { $mode }
+shell-umpk-info-columns = поле | значение
+shell-umpk-info-fields = модель | встроенное ПО | входы / выходы | режим | слово состояния | микрокод | эхо | программа (симулятор)
+shell-umpk-no-flag = флаги не установлены
+shell-umpk-mode = { $mode ->
+    [Programming] «Программирование»
+    [Work] «Работа»
+   *[Wait] «Ожидание»
+}
+shell-umpk-errors-cleared = история ошибок очищена
+shell-umpk-errors-empty = история ошибок пуста
+shell-umpk-errors-columns = # | код | значение (сначала новые; 1–127 пользовательские, 128–255 системные)
+shell-umpk-send-needs = umpk send требует команду или запись, например umpk send ?03FD
+shell-umpk-sim-needs-simulator = umpk sim работает с симулируемым УМПК: внутри процесса (sim-umpk:UMPK16) или предоставляемым через plcsh sim serve --umpk-pty LINK и открытым с control=LINK.ctl; входы настоящего УМПК подключаются проводами
+shell-umpk-reference-in-process = эталонные программы загружаются в симулятор внутри процесса (sim-umpk:UMPK16)
+shell-umpk-no-reference = нет эталонной программы `{ $name }`
+shell-hint-umpk-references = эталонные программы: { $names }
+shell-umpk-reference-loaded = эталонная программа { $name } загружена ({ $description }); режим { $mode }
+shell-umpk-program-needs-file = umpk program требует файл HEX
+shell-umpk-program-extra = лишнее `{ $extra }` (после файла может быть только `run`)
+shell-umpk-info-text = info="{ $info }": 1–22 печатных символа ASCII (руководство, §4.2.4)
+shell-hint-umpk-hex = ничего не отправлено; { $model } принимает записи 00/01/02/03 в пределах 16#0000..16#{ $last }
+shell-umpk-programmed-run = сброс: программа включена (режим «Работа»)
+shell-umpk-programmed-stays = контроллер остаётся в режиме «Программирование»; `umpk reset` включает программу
+shell-umpk-programmed = записано { $bytes } { $bytes ->
+    [one] байт
+    [few] байта
+   *[many] байт
+} на { $pages } { $pages ->
+    [one] страницу
+    [few] страницы
+   *[many] страниц
+}, подтверждено записей: { $records }{ $named ->
+    [yes] , сведения о программе "{ $info }"
+   *[no] { "" }
+}{ $stopped ->
+    [yes] ; контроллер был в режиме «Работа»: с началом программирования его программа остановилась, а выходы отключились
+   *[no] { "" }
+}; { $next }
+shell-umpk-monitor-stopped = поток монитора реального времени прекратился (нет пакета в пределах тайм-аута)
+shell-umpk-monitor-cannot-write = не удаётся вывести данные монитора: { $reason }
+shell-umpk-monitor-samples = { $samples } { $samples ->
+    [one] выборка
+    [few] выборки
+   *[many] выборок
+} монитора из { $packets } { $packets ->
+    [one] пакета
+   *[other] пакетов
+}

@@ -336,3 +336,112 @@ shell-direction-input = ；方向输入 { $input } = { $value }
 shell-quad-needs-two = sim quad 需要两个输入：A（超前）和 B
 shell-quad-same-input = A 和 B 必须是不同的输入
 shell-quad-dir = dir={ $value }：请用 up（A 超前）或 down（B 超前）
+
+## 列表：设备、路径、端口；命令行的 run、completions 和 man (shell::commands, cli)
+
+shell-devices-read-only = 只读
+shell-devices-per-profile = 按各自配置
+shell-devices-count = { $count } 台设备
+shell-devices-profile-problem = 配置文件：{ $problem }
+shell-paths-columns = 文件 | 路径 | 设置来源
+shell-ports-columns = 端口 | 类型 | usb id | 适配器 | 序列号
+cli-run-no-lua = 无法启动 Lua：{ $reason }
+cli-run-no-sandbox = 无法设置沙箱：{ $reason }
+cli-completions-cannot-write = plcsh：无法将补全脚本写入 { $dir }：{ $reason }
+cli-completions-name-a-shell = plcsh completions：请指定 shell（bash、zsh、fish、powershell）或给出 --write DIR
+cli-completions-wrote = 已写入 { $file }
+cli-man-manual = plcsh 手册
+
+## 仿真 CPU：程序、扫描、断点；FX 仿真器 (shell::commands::simprogram, fxsim)
+
+shell-sim-no-program = { $name }：未加载程序（sim program load FILE.il）
+shell-sim-cpu = { $name }：CPU { $mode }{ $switch ->
+    [stop] （开关在 STOP 位置）
+   *[run] { "" }
+}
+shell-sim-loaded = { $what ->
+    [helper] 辅助程序
+   *[program] 程序
+}：{ $source }（{ $instructions } 条指令）
+shell-sim-scans = 扫描 { $scans } 次；扫描时间 最近 { $last } ms、最小 { $min } ms、最大 { $max } ms (SMW22/24/26)；最近一次扫描 { $instructions } 条指令；运行了 { $interrupts } 个中断程序
+shell-sim-costs = 看门狗 { $watchdog } ms，最短扫描 { $min_scan } ms，开销 { $overhead } ms
+shell-sim-stopped-by-program = 已被程序的 STOP 指令停止（sim cpu run 可重新启动）
+shell-sim-fault = { $at } 秒时故障：{ $fault }
+shell-sim-err-led = Err 指示灯亮：{ $count } 个一般错误（CPU 继续运行）；最近一个发生于 { $at } 秒：{ $error }
+shell-sim-cpu-needs-mode = sim cpu 需要 run、stop 或 pause
+shell-sim-load-needs-file = sim program load 需要一个文件，例如 { $example }
+shell-cannot-read-because = 无法读取 { $file }：{ $reason }
+shell-sim-stop-values = STOP 时的值：{ $values }
+shell-sim-program-unknown = 未知的 `sim program { $sub }`
+shell-sim-switch-form = sim switch run|stop（仿真的 RUN/STOP 开关）
+shell-sim-scan-count = sim scan N：N 是扫描次数 1…10000000，而不是 `{ $text }`
+shell-sim-no-breakpoints = 没有断点
+shell-sim-breakpoints = { $count ->
+   *[other] 断点位于第
+} { $lines } 行
+shell-sim-breakpoints-cleared = 已清除断点
+shell-sim-stepi-count = sim stepi N：N 为 1…100000，而不是 `{ $text }`
+shell-fx-program = { $name }：{ $model } { $mode }；程序 { $program }（{ $instructions } 条指令）
+shell-fx-no-program = { $name }：{ $model } { $mode }；没有程序（sim program load FILE.il）
+shell-fx-scans = 扫描 { $scans } 次；扫描时间 最近 { $last } ms、最小 { $min } ms、最大 { $max } ms (D8010/D8011/D8012)；时间 { $time } 秒
+shell-fx-fault = 因故障停止：{ $fault }
+shell-fx-not-simulator = 不是 FX 仿真器
+shell-fx-real = 真实的 FX 运行它自己的程序
+shell-fx-loaded = { $file }：已加载 { $instructions } 条指令；PLC 以 RUN 模式重新启动
+shell-fx-unloaded = 程序已删除：PLC 扫描空程序
+shell-fx-program-unknown = FX PLC 上未知的 `sim program { $sub }`
+shell-fx-no-pause = FX PLC 只有 RUN 和 STOP，没有 PAUSE
+shell-fx-cpu-needs-mode = sim cpu 需要 run 或 stop
+shell-fx-mode = { $model } 处于 { $mode }
+shell-fx-sim-unavailable = FX PLC 上不能使用 `sim { $sub }`
+
+## UMPK 教学 PLC (shell::commands::umpk; UMPK8/16 手册)
+
+shell-umpk-not-umpk = `{ $name }` 不是 UMPK
+shell-umpk-none-open = 没有打开任何 UMPK
+shell-hint-umpk-open = 请用 --device lab=umpk:{ $port } 或 connect lab sim-umpk:UMPK16 打开一个
+shell-umpk-several = 打开了多个 UMPK；请指定一个（umpk NAME info）
+shell-umpk-needs-subcommand = umpk 需要一个子命令
+shell-umpk-program-info-none = 程序信息（22 个空格：没有程序，等待模式）
+shell-umpk-program-info = 程序信息 "{ $info }"
+shell-umpk-timing = 最长周期 { $total } µs，固件 { $firmware } µs，程序 { $program } µs（T = (LLMM − HHKK) × 0.271 µs；HHKK={ $hhkk } LLMM={ $llmm }）
+shell-umpk-reset = 复位：控制器已重新启动（收到 R；回显已打开）
+shell-umpk-unknown = 未知的 `umpk { $sub }`
+shell-umpk-real-program = 真实的 UMPK 只运行写入其中的程序（umpk program FILE.hex）；IL 程序在仿真器中运行
+shell-umpk-il-loaded = { $file }：已加载 { $instructions } 条指令；在运行模式下每 { $cycle } ms 周期执行一次
+shell-umpk-sim-program-unknown = UMPK 上未知的 `sim program { $sub }`
+shell-hint-umpk-sim-program = sim program load FILE.il | sim program
+shell-umpk-program-mode = 程序：{ $program }；模式 { $mode }
+shell-umpk-info-columns = 字段 | 值
+shell-umpk-info-fields = 型号 | 固件 | 输入 / 输出 | 模式 | 状态字 | 微码 | 回显 | 程序（仿真器）
+shell-umpk-no-flag = 未设置任何标志
+shell-umpk-mode = { $mode ->
+    [Programming] 编程
+    [Work] 运行
+   *[Wait] 等待
+}
+shell-umpk-errors-cleared = 已清除错误历史
+shell-umpk-errors-empty = 错误历史为空
+shell-umpk-errors-columns = # | 代码 | 含义（最新的在前；1–127 用户，128–255 系统）
+shell-umpk-send-needs = umpk send 需要一个命令或记录，例如 umpk send ?03FD
+shell-umpk-sim-needs-simulator = umpk sim 只用于仿真的 UMPK：进程内的（sim-umpk:UMPK16），或由 plcsh sim serve --umpk-pty LINK 提供并以 control=LINK.ctl 打开的；真实 UMPK 的输入需要接线
+shell-umpk-reference-in-process = 参考程序只能加载到进程内的仿真器（sim-umpk:UMPK16）
+shell-umpk-no-reference = 没有参考程序 `{ $name }`
+shell-hint-umpk-references = 参考程序：{ $names }
+shell-umpk-reference-loaded = 已加载参考程序 { $name }（{ $description }）；模式 { $mode }
+shell-umpk-program-needs-file = umpk program 需要一个 HEX 文件
+shell-umpk-program-extra = 意外的 `{ $extra }`（文件之后只能跟 `run`）
+shell-umpk-info-text = info="{ $info }"：1–22 个可打印 ASCII 字符（手册 §4.2.4）
+shell-hint-umpk-hex = 未发送任何内容；{ $model } 接受 16#0000..16#{ $last } 范围内的 00/01/02/03 记录
+shell-umpk-programmed-run = 复位：程序已启用（运行模式）
+shell-umpk-programmed-stays = 控制器保持在编程模式；`umpk reset` 启用程序
+shell-umpk-programmed = 已写入 { $bytes } 字节，共 { $pages } 页，确认了 { $records } 条记录{ $named ->
+    [yes] ，程序信息 "{ $info }"
+   *[no] { "" }
+}{ $stopped ->
+    [yes] ；控制器原处于运行模式：编程开始时其程序已停止，输出已关闭
+   *[no] { "" }
+}；{ $next }
+shell-umpk-monitor-stopped = 实时监视数据流已停止（超时内没有数据包）
+shell-umpk-monitor-cannot-write = 无法写出监视输出：{ $reason }
+shell-umpk-monitor-samples = 来自 { $packets } 个数据包的 { $samples } 个监视采样

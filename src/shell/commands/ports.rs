@@ -47,7 +47,7 @@ pub fn outcome() -> Result<Outcome> {
     if list.is_empty() {
         o = o.text(crate::msg!("shell-no-ports").text);
     } else {
-        o = o.table(&["port", "kind", "usb id", "adapter", "serial number"], rows);
+        o = o.table(&crate::output::headings(crate::msg!("shell-ports-columns")), rows);
     }
     Ok(o)
 }
