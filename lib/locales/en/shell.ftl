@@ -508,3 +508,66 @@ shell-umpk-programmed = programmed { $bytes } bytes in { $pages } page(s), { $re
 shell-umpk-monitor-stopped = the real-time monitor stream stopped (no packet within the timeout)
 shell-umpk-monitor-cannot-write = cannot write the monitor output: { $reason }
 shell-umpk-monitor-samples = { $samples } monitor samples from { $packets } packets
+
+## The command line's fleets, probe, recordings and served simulators (cli::fleet, probe, record, serve)
+
+cli-device-timeout-bad = --device-timeout { $value } is not a duration
+cli-hint-device-timeout = e.g. 30s, 2m, 500ms; 0 for none
+cli-jobs-at-least-one = --jobs must be at least 1
+cli-fleet-all-refused = { $message } (every member of fleet `{ $fleet }` refused it; nothing ran)
+cli-fleet-no-sandbox = --sandbox runs on simulated devices only, not on a fleet
+cli-hint-fleet-no-sandbox = grade submissions with plcsh lab grade, or run the fleet script without --sandbox
+cli-fleet-checks = { $passed } checks passed, { $failed } failed
+cli-agent-check-read-only = agent check writes the helper's mailbox and the SM bytes of one pulse channel, and --read-only refuses every change
+cli-agent-check-profile = agent check writes the helper's mailbox and the SM bytes of one pulse channel, and profile `{ $profile }` ({ $origin }) limits writes
+cli-hint-agent-check-writes = run it without --read-only, with the PLC's URL, when the machine is safe to test (docs/reference/first-connection.md lists what it writes)
+cli-probe-in-process = { $url } is the in-process simulator: there is nothing on a wire to probe
+cli-hint-probe-in-process = serve it and probe that: plcsh sim serve --tcp 127.0.0.1:0 [--agent], then plcsh probe tcp://ADDRESS
+cli-probe-not-on-wire = `{ $scheme }:` is not a K2 on a wire
+cli-hint-probe-urls = give tcp://HOST:PORT, rtu:PORT?baud=…, rtu+tcp://HOST:PORT or rtu+rfc2217://HOST:PORT
+cli-probe-cannot-write-report = cannot write the report to { $file }
+cli-replay-bench-options = replay --bench runs the bench's own simulators: --sim-model and --snapshot do not apply
+cli-hint-replay-bench-options = change the model or the starting values in the bench file
+cli-replay-no-device = replay sends the recorded requests to simulators it builds itself, never to --device
+cli-hint-replay-no-device = choose the simulated model with --sim-model and its starting state with --snapshot
+cli-replay-no-reply = (no reply)
+cli-replay-recorded = recorded: { $reply }
+cli-replay-replayed = replayed: { $reply }
+cli-replay-skipped = not replayed: { $what }
+cli-replay-summary = { $requests } request(s) replayed, { $differences } difference(s)
+# `doing`: `showing` (record show) or `replaying` (replay).
+cli-record-damaged = plcsh: warning: { $file }: { $doing ->
+    [replaying] replaying
+   *[showing] showing
+} the { $frames } frames read around the damage; exit status 1
+cli-record-truncated = plcsh: warning: { $file } ends early ({ $why }); { $doing ->
+    [replaying] replaying
+   *[showing] showing
+} the { $frames } frames before
+cli-serve-not-an-address = `{ $text }` is not an address to listen on
+cli-hint-serve-address = use HOST:PORT (127.0.0.1:5020, 0.0.0.0:502) or a port (5020; 0 picks a free one)
+cli-serve-cannot-listen = cannot listen on { $addr }
+cli-hint-serve-port = choose another port (0 picks a free one); ports below 1024 need privileges
+# `sim serve -v`: an injected fault acted on the served K2 (its virtual time and what it did).
+cli-serve-fault-acted = plcsh sim serve: { $line }
+cli-serve-idle-timeout = --idle-timeout { $value } is not a duration
+cli-hint-serve-idle-timeout = e.g. 300s, 2m
+cli-serve-servo-latency = --servo-latency { $value }: not a duration
+cli-hint-serve-servo-latency = e.g. 1ms, 500us, 0
+cli-serve-servo-baud = --servo-baud must be positive (e.g. 38400)
+cli-serve-servo-line-stopped = the servo line stopped before it was ready
+cli-serve-needs-transport = sim serve needs at least one transport
+cli-hint-serve-transport = e.g. plcsh sim serve --tcp 127.0.0.1:5020 --rtu-tcp 0 --servo-tcp 0 (on Unix also --rtu-pty /tmp/k2 --servo-pty /tmp/kinco)
+cli-serve-agent-needs-k2 = --agent runs in the served K2: give --tcp, --rtu-pty or --rtu-tcp too
+cli-serve-no-signals = cannot install signal handlers
+cli-serve-no-readiness = cannot print the readiness line
+cli-serve-server-stopped = a server stopped
+cli-serve-failed = serving failed
+cli-serve-no-runtime = cannot start a runtime
+cli-serve-fleet-state = --state with --fleet: the simulators would share one state file
+cli-hint-serve-fleet-state = leave --state out (a served fleet keeps no state)
+cli-serve-fleet-bench = --bench with --fleet: a bench describes one machine
+cli-serve-fleet-ports = --tcp { $tcp } --fleet { $count }: the ports run past 65535
+cli-serve-fleet-member-stopped = a fleet member's thread stopped
+cli-serve-rfc2217-needs-tcp = --rfc2217 is for serial lines served on TCP
+cli-hint-serve-rfc2217 = give --rtu-tcp, --servo-tcp, --fx-tcp, --fx-link-tcp or --umpk-tcp too, e.g. --rtu-tcp 0 --rfc2217

@@ -563,3 +563,64 @@ shell-umpk-monitor-samples = { $samples } { $samples ->
     [one] пакета
    *[other] пакетов
 }
+
+## Группы, probe, записи и предоставляемые симуляторы командной строки (cli::fleet, probe, record, serve)
+
+cli-device-timeout-bad = --device-timeout { $value } — не длительность
+cli-hint-device-timeout = например, 30s, 2m, 500ms; 0 — без ограничения
+cli-jobs-at-least-one = --jobs должно быть не меньше 1
+cli-fleet-all-refused = { $message } (все устройства группы `{ $fleet }` отказали; ничего не выполнено)
+cli-fleet-no-sandbox = --sandbox работает только с симулируемыми устройствами, а не с группой
+cli-hint-fleet-no-sandbox = оценивайте работы через plcsh lab grade или запускайте скрипт группы без --sandbox
+cli-fleet-checks = проверок пройдено: { $passed }, не пройдено: { $failed }
+cli-agent-check-read-only = agent check записывает почтовый ящик программы-помощника и байты SM одного импульсного выхода, а --read-only запрещает любые изменения
+cli-agent-check-profile = agent check записывает почтовый ящик программы-помощника и байты SM одного импульсного выхода, а профиль `{ $profile }` ({ $origin }) ограничивает запись
+cli-hint-agent-check-writes = запускайте её без --read-only, с URL ПЛК, когда установку безопасно проверять (docs/reference/first-connection.md перечисляет, что она записывает)
+cli-probe-in-process = { $url } — симулятор внутри процесса: на линии связи нечего проверять
+cli-hint-probe-in-process = предоставьте его и проверяйте уже его: plcsh sim serve --tcp 127.0.0.1:0 [--agent], затем plcsh probe tcp://ADDRESS
+cli-probe-not-on-wire = `{ $scheme }:` — не K2 на линии связи
+cli-hint-probe-urls = укажите tcp://HOST:PORT, rtu:PORT?baud=…, rtu+tcp://HOST:PORT или rtu+rfc2217://HOST:PORT
+cli-probe-cannot-write-report = не удаётся записать отчёт в { $file }
+cli-replay-bench-options = replay --bench запускает собственные симуляторы стенда: --sim-model и --snapshot не применяются
+cli-hint-replay-bench-options = измените модель или начальные значения в файле стенда
+cli-replay-no-device = replay отправляет записанные запросы только симуляторам, которые создаёт сама, и никогда — на --device
+cli-hint-replay-no-device = модель симулятора выбирается через --sim-model, начальное состояние — через --snapshot
+cli-replay-no-reply = (нет ответа)
+cli-replay-recorded = записано: { $reply }
+cli-replay-replayed = при повторе: { $reply }
+cli-replay-skipped = не повторено: { $what }
+cli-replay-summary = повторено запросов: { $requests }, различий: { $differences }
+cli-record-damaged = plcsh: предупреждение: { $file }: { $doing ->
+    [replaying] повторяются
+   *[showing] показываются
+} { $frames } кадров, прочитанных вокруг повреждения; код завершения 1
+cli-record-truncated = plcsh: предупреждение: { $file } обрывается раньше времени ({ $why }); { $doing ->
+    [replaying] повторяются
+   *[showing] показываются
+} { $frames } кадров до обрыва
+cli-serve-not-an-address = `{ $text }` — не адрес для прослушивания
+cli-hint-serve-address = используйте HOST:PORT (127.0.0.1:5020, 0.0.0.0:502) или порт (5020; 0 — выбрать свободный)
+cli-serve-cannot-listen = не удаётся слушать { $addr }
+cli-hint-serve-port = выберите другой порт (0 — свободный); для портов ниже 1024 нужны права
+cli-serve-fault-acted = plcsh sim serve: { $line }
+cli-serve-idle-timeout = --idle-timeout { $value } — не длительность
+cli-hint-serve-idle-timeout = например, 300s, 2m
+cli-serve-servo-latency = --servo-latency { $value }: не длительность
+cli-hint-serve-servo-latency = например, 1ms, 500us, 0
+cli-serve-servo-baud = --servo-baud должно быть положительным (например, 38400)
+cli-serve-servo-line-stopped = линия сервоприводов остановилась, не успев подготовиться
+cli-serve-needs-transport = sim serve требует хотя бы один транспорт
+cli-hint-serve-transport = например, plcsh sim serve --tcp 127.0.0.1:5020 --rtu-tcp 0 --servo-tcp 0 (в Unix также --rtu-pty /tmp/k2 --servo-pty /tmp/kinco)
+cli-serve-agent-needs-k2 = --agent выполняется в предоставляемом K2: укажите также --tcp, --rtu-pty или --rtu-tcp
+cli-serve-no-signals = не удаётся установить обработчики сигналов
+cli-serve-no-readiness = не удаётся вывести строку готовности
+cli-serve-server-stopped = сервер остановился
+cli-serve-failed = предоставление симуляторов прервалось с ошибкой
+cli-serve-no-runtime = не удаётся запустить среду выполнения
+cli-serve-fleet-state = --state с --fleet: симуляторы делили бы один файл состояния
+cli-hint-serve-fleet-state = уберите --state (предоставляемая группа не хранит состояние)
+cli-serve-fleet-bench = --bench с --fleet: стенд описывает одну установку
+cli-serve-fleet-ports = --tcp { $tcp } --fleet { $count }: порты выходят за 65535
+cli-serve-fleet-member-stopped = поток одного из устройств группы остановился
+cli-serve-rfc2217-needs-tcp = --rfc2217 относится к последовательным линиям, предоставляемым по TCP
+cli-hint-serve-rfc2217 = укажите также --rtu-tcp, --servo-tcp, --fx-tcp, --fx-link-tcp или --umpk-tcp, например --rtu-tcp 0 --rfc2217

@@ -445,3 +445,64 @@ shell-umpk-programmed = 已写入 { $bytes } 字节，共 { $pages } 页，确�
 shell-umpk-monitor-stopped = 实时监视数据流已停止（超时内没有数据包）
 shell-umpk-monitor-cannot-write = 无法写出监视输出：{ $reason }
 shell-umpk-monitor-samples = 来自 { $packets } 个数据包的 { $samples } 个监视采样
+
+## 命令行的设备组、probe、记录和提供的仿真器 (cli::fleet, probe, record, serve)
+
+cli-device-timeout-bad = --device-timeout { $value } 不是时长
+cli-hint-device-timeout = 例如 30s、2m、500ms；0 表示不限
+cli-jobs-at-least-one = --jobs 至少为 1
+cli-fleet-all-refused = { $message }（设备组 `{ $fleet }` 的每个成员都拒绝了；没有执行任何内容）
+cli-fleet-no-sandbox = --sandbox 只在仿真设备上运行，不能用于设备组
+cli-hint-fleet-no-sandbox = 请用 plcsh lab grade 评分，或不带 --sandbox 运行设备组脚本
+cli-fleet-checks = { $passed } 项检查通过，{ $failed } 项失败
+cli-agent-check-read-only = agent check 会写入辅助程序的邮箱和一个脉冲输出通道的 SM 字节，而 --read-only 拒绝任何更改
+cli-agent-check-profile = agent check 会写入辅助程序的邮箱和一个脉冲输出通道的 SM 字节，而配置 `{ $profile }`（{ $origin }）限制写入
+cli-hint-agent-check-writes = 请在设备可以安全测试时，不带 --read-only、使用 PLC 的 URL 运行它（docs/reference/first-connection.md 列出了它写入的内容）
+cli-probe-in-process = { $url } 是进程内的仿真器：线路上没有可探测的设备
+cli-hint-probe-in-process = 请先提供它再探测：plcsh sim serve --tcp 127.0.0.1:0 [--agent]，然后 plcsh probe tcp://ADDRESS
+cli-probe-not-on-wire = `{ $scheme }:` 不是线路上的 K2
+cli-hint-probe-urls = 请给出 tcp://HOST:PORT、rtu:PORT?baud=…、rtu+tcp://HOST:PORT 或 rtu+rfc2217://HOST:PORT
+cli-probe-cannot-write-report = 无法将报告写入 { $file }
+cli-replay-bench-options = replay --bench 运行台架自己的仿真器：--sim-model 和 --snapshot 不适用
+cli-hint-replay-bench-options = 请在台架文件中修改型号或初始值
+cli-replay-no-device = replay 只把记录的请求发给它自己创建的仿真器，从不发给 --device
+cli-hint-replay-no-device = 请用 --sim-model 选择仿真型号，用 --snapshot 选择其初始状态
+cli-replay-no-reply = （无回复）
+cli-replay-recorded = 记录的：{ $reply }
+cli-replay-replayed = 重放的：{ $reply }
+cli-replay-skipped = 未重放：{ $what }
+cli-replay-summary = 重放了 { $requests } 个请求，{ $differences } 处不同
+cli-record-damaged = plcsh：警告：{ $file }：{ $doing ->
+    [replaying] 重放
+   *[showing] 显示
+}损坏处周围读出的 { $frames } 帧；退出状态 1
+cli-record-truncated = plcsh：警告：{ $file } 提前结束（{ $why }）；{ $doing ->
+    [replaying] 重放
+   *[showing] 显示
+}之前的 { $frames } 帧
+cli-serve-not-an-address = `{ $text }` 不是可监听的地址
+cli-hint-serve-address = 请用 HOST:PORT（127.0.0.1:5020、0.0.0.0:502）或端口（5020；0 表示选择空闲端口）
+cli-serve-cannot-listen = 无法在 { $addr } 上监听
+cli-hint-serve-port = 请选择另一个端口（0 表示空闲端口）；1024 以下的端口需要权限
+cli-serve-fault-acted = plcsh sim serve：{ $line }
+cli-serve-idle-timeout = --idle-timeout { $value } 不是时长
+cli-hint-serve-idle-timeout = 例如 300s、2m
+cli-serve-servo-latency = --servo-latency { $value }：不是时长
+cli-hint-serve-servo-latency = 例如 1ms、500us、0
+cli-serve-servo-baud = --servo-baud 必须为正数（例如 38400）
+cli-serve-servo-line-stopped = 伺服线路在就绪之前就已停止
+cli-serve-needs-transport = sim serve 至少需要一种传输方式
+cli-hint-serve-transport = 例如 plcsh sim serve --tcp 127.0.0.1:5020 --rtu-tcp 0 --servo-tcp 0（在 Unix 上还可用 --rtu-pty /tmp/k2 --servo-pty /tmp/kinco）
+cli-serve-agent-needs-k2 = --agent 在所提供的 K2 中运行：请同时给出 --tcp、--rtu-pty 或 --rtu-tcp
+cli-serve-no-signals = 无法安装信号处理程序
+cli-serve-no-readiness = 无法输出就绪行
+cli-serve-server-stopped = 一个服务器已停止
+cli-serve-failed = 提供服务失败
+cli-serve-no-runtime = 无法启动运行时
+cli-serve-fleet-state = --state 与 --fleet 同时使用：这些仿真器会共用一个状态文件
+cli-hint-serve-fleet-state = 请去掉 --state（所提供的设备组不保存状态）
+cli-serve-fleet-bench = --bench 与 --fleet 同时使用：台架只描述一台设备
+cli-serve-fleet-ports = --tcp { $tcp } --fleet { $count }：端口超过了 65535
+cli-serve-fleet-member-stopped = 设备组中一个成员的线程已停止
+cli-serve-rfc2217-needs-tcp = --rfc2217 用于通过 TCP 提供的串行线路
+cli-hint-serve-rfc2217 = 请同时给出 --rtu-tcp、--servo-tcp、--fx-tcp、--fx-link-tcp 或 --umpk-tcp，例如 --rtu-tcp 0 --rfc2217
