@@ -571,3 +571,55 @@ cli-serve-fleet-ports = --tcp { $tcp } --fleet { $count }: the ports run past 65
 cli-serve-fleet-member-stopped = a fleet member's thread stopped
 cli-serve-rfc2217-needs-tcp = --rfc2217 is for serial lines served on TCP
 cli-hint-serve-rfc2217 = give --rtu-tcp, --servo-tcp, --fx-tcp, --fx-link-tcp or --umpk-tcp too, e.g. --rtu-tcp 0 --rfc2217
+
+## Kinco servo drives (shell::commands::servo; Kinco servo RS232 notes, CiA 402 states)
+
+# A command's form, shown when its words do not fit it (the form stays as typed in every language).
+shell-usage-line = usage: { $line }
+shell-servo-needs-subcommand = servo needs a subcommand
+shell-servo-nothing-after = servo { $sub } takes nothing after it (got `{ $extra }`)
+# `operation enabled` is the CiA 402 state's name (it stays as it is).
+shell-servo-already-enabled = already in operation enabled
+shell-servo-enabled = operation enabled ({ $steps })
+shell-servo-mode-needs = servo mode needs a mode: position, velocity, immediate-velocity, homing, torque or pulse
+shell-servo-unknown-mode = unknown mode `{ $mode }`
+shell-hint-servo-modes = position (1), velocity (3), immediate-velocity (-3), homing (6), torque (4), pulse (-4)
+shell-servo-mode-set = operating mode { $number } ({ $name })
+shell-servo-halted = halted: braking to a stop and holding (controlword 16#{ $controlword })
+shell-servo-halt-released = halt released: the motion resumes (controlword 16#{ $controlword })
+shell-servo-homing = homing started (mode 6, controlword 16#000F → 16#001F)
+shell-servo-saved = parameters stored (2FF0.01 = 1)
+shell-servo-not-servo = `{ $name }` is not a servo drive
+shell-servo-none-open = no servo drive is open
+# `port`: this system's word for a serial port (/dev/ttyUSB0, COM3).
+shell-hint-servo-open = open one with --device ax=kinco:{ $port }?id=1 or connect ax sim-servo:?id=1
+shell-servo-several = several servo drives are open; name one
+shell-hint-servo-several = servo { $first } status (open: { $names })
+shell-servo-not-whole = `{ $key }={ $value }` is not a whole number
+shell-hint-servo-options = options: { $options }
+# `kind`: `abs` or `rel`; the target in encoder increments.
+shell-servo-move = { $kind ->
+    [rel] relative
+   *[abs] absolute
+} move to { $target } inc started
+shell-servo-move-speed = { $kind ->
+    [rel] relative
+   *[abs] absolute
+} move to { $target } inc started at { $rpm } rpm ({ $dec } DEC)
+shell-servo-jog-usage = usage: servo jog SPEED [acc=… dec=…], e.g. servo jog 300rpm; servo jog 0 stops
+shell-servo-jogging = jogging at { $rpm } rpm ({ $dec } DEC, mode 3)
+shell-servo-over-max = { $rpm } rpm is above the drive's maximum speed of { $max } rpm (6080.00 max_speed)
+shell-hint-servo-max = a speed up to { $max }rpm; the maximum is the drive's setting 6080.00 (servo read max_speed)
+shell-hint-servo-wait = servo wait target timeout=5s
+shell-servo-target-reached = target reached after { $seconds } s (position_actual { $position } inc)
+shell-servo-read-needs = servo read needs objects, e.g. servo read target_velocity position_actual
+# The columns of `servo read` (`|` between them).
+shell-servo-read-columns = object | index | value | unit | engineering
+shell-servo-encoder = encoder resolution { $resolution } inc/rev
+shell-servo-not-hex-byte = `{ $text }` is not a hex byte
+shell-servo-frame-length = a frame is 9 bytes (checksum added) or 10 bytes, not { $count }
+shell-hint-servo-raw = e.g. servo raw 01 40 41 60 00 00 00 00 00
+shell-servo-sim-needs = servo sim needs a control
+shell-servo-sim-needs-simulator = servo sim works on simulated drives: in-process (sim-servo:), served by plcsh sim serve --servo-pty LINK, or served with --servo-tcp ADDR --servo-control PATH and opened with control=PATH
+shell-hint-servo-sim-control = a served drive's control socket is LINK.ctl; give it as control=PATH in the kinco: URL if it is elsewhere
+shell-servo-unknown = unknown `servo { $sub }`

@@ -624,3 +624,50 @@ cli-serve-fleet-ports = --tcp { $tcp } --fleet { $count }: порты выход
 cli-serve-fleet-member-stopped = поток одного из устройств группы остановился
 cli-serve-rfc2217-needs-tcp = --rfc2217 относится к последовательным линиям, предоставляемым по TCP
 cli-hint-serve-rfc2217 = укажите также --rtu-tcp, --servo-tcp, --fx-tcp, --fx-link-tcp или --umpk-tcp, например --rtu-tcp 0 --rfc2217
+
+## Сервоприводы Kinco (shell::commands::servo; описание протокола RS232 сервоприводов Kinco, состояния CiA 402)
+
+shell-usage-line = использование: { $line }
+shell-servo-needs-subcommand = servo требует подкоманду
+shell-servo-nothing-after = после servo { $sub } ничего не пишется (указано `{ $extra }`)
+shell-servo-already-enabled = уже в состоянии operation enabled
+shell-servo-enabled = operation enabled ({ $steps })
+shell-servo-mode-needs = servo mode требует режим: position, velocity, immediate-velocity, homing, torque или pulse
+shell-servo-unknown-mode = неизвестный режим `{ $mode }`
+shell-hint-servo-modes = position (1), velocity (3), immediate-velocity (-3), homing (6), torque (4), pulse (-4)
+shell-servo-mode-set = режим работы { $number } ({ $name })
+shell-servo-halted = остановлено: торможение до останова и удержание (controlword 16#{ $controlword })
+shell-servo-halt-released = останов снят: движение продолжается (controlword 16#{ $controlword })
+shell-servo-homing = возврат в исходное положение начат (режим 6, controlword 16#000F → 16#001F)
+shell-servo-saved = параметры сохранены (2FF0.01 = 1)
+shell-servo-not-servo = `{ $name }` — не сервопривод
+shell-servo-none-open = ни один сервопривод не открыт
+shell-hint-servo-open = откройте его через --device ax=kinco:{ $port }?id=1 или connect ax sim-servo:?id=1
+shell-servo-several = открыто несколько сервоприводов; укажите один
+shell-hint-servo-several = servo { $first } status (открыты: { $names })
+shell-servo-not-whole = `{ $key }={ $value }` — не целое число
+shell-hint-servo-options = параметры: { $options }
+shell-servo-move = { $kind ->
+    [rel] относительное
+   *[abs] абсолютное
+} перемещение в { $target } inc начато
+shell-servo-move-speed = { $kind ->
+    [rel] относительное
+   *[abs] абсолютное
+} перемещение в { $target } inc начато со скоростью { $rpm } об/мин ({ $dec } DEC)
+shell-servo-jog-usage = использование: servo jog SPEED [acc=… dec=…], например servo jog 300rpm; servo jog 0 останавливает
+shell-servo-jogging = толчковое движение со скоростью { $rpm } об/мин ({ $dec } DEC, режим 3)
+shell-servo-over-max = { $rpm } об/мин больше максимальной скорости привода { $max } об/мин (6080.00 max_speed)
+shell-hint-servo-max = скорость до { $max }rpm; максимум задаётся настройкой привода 6080.00 (servo read max_speed)
+shell-hint-servo-wait = servo wait target timeout=5s
+shell-servo-target-reached = цель достигнута через { $seconds } с (position_actual { $position } inc)
+shell-servo-read-needs = servo read требует объекты, например servo read target_velocity position_actual
+shell-servo-read-columns = объект | индекс | значение | единица | в технических единицах
+shell-servo-encoder = разрешение энкодера { $resolution } inc/об
+shell-servo-not-hex-byte = `{ $text }` — не шестнадцатеричный байт
+shell-servo-frame-length = кадр — это 9 байт (контрольная сумма добавляется) или 10 байт, а не { $count }
+shell-hint-servo-raw = например, servo raw 01 40 41 60 00 00 00 00 00
+shell-servo-sim-needs = servo sim требует команду управления
+shell-servo-sim-needs-simulator = servo sim работает с симулируемыми приводами: внутри процесса (sim-servo:), предоставляемыми через plcsh sim serve --servo-pty LINK или через --servo-tcp ADDR --servo-control PATH и открытыми с control=PATH
+shell-hint-servo-sim-control = канал управления предоставляемого привода — LINK.ctl; если он в другом месте, укажите control=PATH в URL kinco:
+shell-servo-unknown = неизвестная `servo { $sub }`

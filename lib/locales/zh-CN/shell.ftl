@@ -506,3 +506,50 @@ cli-serve-fleet-ports = --tcp { $tcp } --fleet { $count }：端口超过了 6553
 cli-serve-fleet-member-stopped = 设备组中一个成员的线程已停止
 cli-serve-rfc2217-needs-tcp = --rfc2217 用于通过 TCP 提供的串行线路
 cli-hint-serve-rfc2217 = 请同时给出 --rtu-tcp、--servo-tcp、--fx-tcp、--fx-link-tcp 或 --umpk-tcp，例如 --rtu-tcp 0 --rfc2217
+
+## 步科伺服驱动器 (shell::commands::servo; 步科伺服 RS232 通讯说明，CiA 402 状态)
+
+shell-usage-line = 用法：{ $line }
+shell-servo-needs-subcommand = servo 需要一个子命令
+shell-servo-nothing-after = servo { $sub } 之后不能再有内容（给出了 `{ $extra }`）
+shell-servo-already-enabled = 已处于 operation enabled 状态
+shell-servo-enabled = operation enabled（{ $steps }）
+shell-servo-mode-needs = servo mode 需要一个模式：position、velocity、immediate-velocity、homing、torque 或 pulse
+shell-servo-unknown-mode = 未知的模式 `{ $mode }`
+shell-hint-servo-modes = position (1)、velocity (3)、immediate-velocity (-3)、homing (6)、torque (4)、pulse (-4)
+shell-servo-mode-set = 工作模式 { $number }（{ $name }）
+shell-servo-halted = 已暂停：制动到停止并保持（controlword 16#{ $controlword }）
+shell-servo-halt-released = 已解除暂停：运动继续（controlword 16#{ $controlword }）
+shell-servo-homing = 已开始原点回归（模式 6，controlword 16#000F → 16#001F）
+shell-servo-saved = 参数已保存（2FF0.01 = 1）
+shell-servo-not-servo = `{ $name }` 不是伺服驱动器
+shell-servo-none-open = 没有打开任何伺服驱动器
+shell-hint-servo-open = 请用 --device ax=kinco:{ $port }?id=1 或 connect ax sim-servo:?id=1 打开一个
+shell-servo-several = 打开了多个伺服驱动器；请指定一个
+shell-hint-servo-several = servo { $first } status（已打开：{ $names }）
+shell-servo-not-whole = `{ $key }={ $value }` 不是整数
+shell-hint-servo-options = 选项：{ $options }
+shell-servo-move = 已开始{ $kind ->
+    [rel] 相对
+   *[abs] 绝对
+}运动到 { $target } inc
+shell-servo-move-speed = 已开始以 { $rpm } rpm（{ $dec } DEC）{ $kind ->
+    [rel] 相对
+   *[abs] 绝对
+}运动到 { $target } inc
+shell-servo-jog-usage = 用法：servo jog SPEED [acc=… dec=…]，例如 servo jog 300rpm；servo jog 0 停止
+shell-servo-jogging = 以 { $rpm } rpm 点动（{ $dec } DEC，模式 3）
+shell-servo-over-max = { $rpm } rpm 超过了驱动器的最高速度 { $max } rpm（6080.00 max_speed）
+shell-hint-servo-max = 速度不超过 { $max }rpm；最高速度是驱动器的设定 6080.00（servo read max_speed）
+shell-hint-servo-wait = servo wait target timeout=5s
+shell-servo-target-reached = { $seconds } 秒后到达目标（position_actual { $position } inc）
+shell-servo-read-needs = servo read 需要对象，例如 servo read target_velocity position_actual
+shell-servo-read-columns = 对象 | 索引 | 值 | 单位 | 工程值
+shell-servo-encoder = 编码器分辨率 { $resolution } inc/rev
+shell-servo-not-hex-byte = `{ $text }` 不是十六进制字节
+shell-servo-frame-length = 一帧为 9 字节（会加上校验和）或 10 字节，而不是 { $count }
+shell-hint-servo-raw = 例如 servo raw 01 40 41 60 00 00 00 00 00
+shell-servo-sim-needs = servo sim 需要一个控制命令
+shell-servo-sim-needs-simulator = servo sim 只用于仿真的驱动器：进程内的（sim-servo:）、由 plcsh sim serve --servo-pty LINK 提供的，或以 --servo-tcp ADDR --servo-control PATH 提供并以 control=PATH 打开的
+shell-hint-servo-sim-control = 所提供驱动器的控制套接字为 LINK.ctl；如果在别处，请在 kinco: URL 中用 control=PATH 给出
+shell-servo-unknown = 未知的 `servo { $sub }`
