@@ -256,13 +256,13 @@ impl Guarded {
     /// change that is not a plain write.
     fn check_name(&self, name: &str, what: Option<&str>) -> Result<()> {
         if self.session_read_only.load(Ordering::Relaxed) {
-            let doing = match what {
-                Some(w) => format!("{w} refused (it changes {name})"),
-                None => "write refused".to_string(),
+            let message = match what {
+                Some(w) => crate::msg!("guard-read-only-action", action = w, name = name),
+                None => crate::msg!("guard-read-only-write"),
             };
-            return Err(Error::new(ErrorKind::Refused, format!("{doing}: the session is read-only (--read-only)"))
+            return Err(Error::new(ErrorKind::Refused, message)
                 .operand(name.to_string())
-                .hint("reading works; start plcsh without --read-only to write"));
+                .hint(crate::msg!("guard-hint-read-only")));
         }
         match &self.rules {
             Some(g) => g.check_name(name, what),

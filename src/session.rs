@@ -169,10 +169,8 @@ impl Session {
         if name.is_empty() || !name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-') {
             // ASCII only: a device name is typed before operands (`press1:VW0`), where Cyrillic
             // look-alikes are read as the Latin letters the manual means (core::text).
-            return Err(Error::usage(format!(
-                "`{name}` is not a device name: Latin letters A-Z a-z, digits, _ and - only"
-            ))
-            .hint("e.g. connect press1 sim:K209EA-50DX (the name is typed before operands: press1:VW0)"));
+            return Err(Error::usage(crate::msg!("session-bad-device-name", name = name))
+                .hint(crate::msg!("session-hint-device-name")));
         }
         if let Some(c) = &self.confine {
             // A profile brings the user's options (state files, …): a sandboxed run opens
@@ -180,9 +178,9 @@ impl Session {
             if !url.contains(':') {
                 let real = self.profiles.get(url).is_some_and(|p| c.check_url(&p.url).is_err());
                 return Err(crate::core::Error::unsupported(if real {
-                    format!("`{url}` is a profile of a real device: a sandboxed run opens simulated devices only")
+                    crate::msg!("session-sandbox-real-profile", url = url)
                 } else {
-                    format!("`{url}` is not a device URL: a sandboxed run opens simulated devices by URL only")
+                    crate::msg!("session-sandbox-not-url", url = url)
                 })
                 .hint("e.g. plcsh.connect(\"sim:K205-16DT\")")
                 .device(name));
@@ -390,7 +388,7 @@ impl Session {
     /// Opens profile `p` under device name `name` (also a fleet member's own profile): its
     /// URL, its options, its write rules as the entry's guard.
     pub fn open_profile(&mut self, name: &str, p: &crate::profile::Profile) -> Result<()> {
-        let from = format!("from profile `{}` ({})", p.name, p.origin);
+        let from = crate::msg!("session-from-profile", profile = p.name.as_str(), origin = p.origin.to_string()).text;
         crate::core::trace::name_device(&p.url, name);
         let mut device = open_url(&p.url, &self.clock).map_err(|e| e.device(name).cause(&from))?;
         for (k, v) in &p.options {
@@ -461,10 +459,10 @@ impl Session {
     pub fn index(&self, name: &str) -> Result<usize> {
         self.devices.iter().position(|e| e.name == name).ok_or_else(|| {
             let names: Vec<&str> = self.devices.iter().map(|e| e.name.as_str()).collect();
-            Error::usage(format!("no device named `{name}`")).hint(if names.is_empty() {
-                "no device is open; add one with --device NAME=URL".to_string()
+            Error::usage(crate::msg!("session-no-device-named", name = name)).hint(if names.is_empty() {
+                crate::msg!("session-hint-none-open")
             } else {
-                format!("open devices: {}", names.join(", "))
+                crate::msg!("session-hint-open-devices", names = names.join(", "))
             })
         })
     }
@@ -497,7 +495,7 @@ impl Session {
     /// The current device's index, or an error when none is open.
     pub fn current_index(&self) -> Result<usize> {
         if self.devices.is_empty() {
-            Err(Error::usage("no device is open").hint("add one with --device NAME=URL or `connect NAME URL`"))
+            Err(Error::usage(crate::msg!("session-none-open")).hint(crate::msg!("session-hint-add-device")))
         } else {
             Ok(self.current)
         }

@@ -75,10 +75,7 @@ pub fn start_watcher() {
                     if s != sig {
                         since = Some((sig, Instant::now()));
                     } else if t.elapsed() > ABORT_GRACE {
-                        eprintln!(
-                            "plcsh: stopped: the stop did not finish within {} s (abort handlers still running?)",
-                            ABORT_GRACE.as_secs()
-                        );
+                        eprintln!("{}", crate::msg!("shell-stop-overdue", seconds = ABORT_GRACE.as_secs()));
                         std::process::exit(crate::core::exit::for_signal(sig));
                     }
                 }

@@ -69,12 +69,12 @@ pub fn run(shell: Option<Shell>, write: Option<&Path>, out: &mut dyn std::io::Wr
         return match write_all(dir) {
             Ok(paths) => {
                 for p in paths {
-                    let _ = writeln!(out, "wrote {p}");
+                    let _ = writeln!(out, "{}", crate::msg!("cli-completions-wrote", file = p.to_string()));
                 }
                 0
             }
             Err(e) => {
-                eprintln!("plcsh: cannot write completions into {}: {e}", dir.display());
+                eprintln!("{}", crate::msg!("cli-completions-cannot-write", dir = dir.display().to_string(), reason = e.to_string()));
                 1
             }
         };
@@ -82,7 +82,7 @@ pub fn run(shell: Option<Shell>, write: Option<&Path>, out: &mut dyn std::io::Wr
     match shell {
         Some(s) => i32::from(out.write_all(&script(s)).is_err()),
         None => {
-            eprintln!("plcsh completions: name a shell (bash, zsh, fish, powershell) or give --write DIR");
+            eprintln!("{}", crate::msg!("cli-completions-name-a-shell"));
             2
         }
     }

@@ -23,13 +23,13 @@ pub fn settings(cli: &super::Cli) -> crate::core::Result<Settings> {
         "0" | "none" => None,
         t => {
             let us = crate::core::literal::parse_option_duration_us(t).ok().filter(|us| *us > 0).ok_or_else(|| {
-                Error::usage(format!("--device-timeout {t} is not a duration")).hint("e.g. 30s, 2m, 500ms; 0 for none")
+                Error::usage(crate::msg!("cli-device-timeout-bad", value = t)).hint(crate::msg!("cli-hint-device-timeout"))
             })?;
             Some(Duration::from_micros(us as u64))
         }
     };
     if cli.jobs == 0 {
-        return Err(Error::usage("--jobs must be at least 1"));
+        return Err(Error::usage(crate::msg!("cli-jobs-at-least-one")));
     }
     Ok(Settings { jobs: cli.jobs, timeout })
 }
@@ -119,7 +119,7 @@ fn same_usage_error(done: &[run::Done<Vec<crate::shell::CmdResult>>], fleet: &st
     let (cmd, e) = first?;
     let mut e = e.clone();
     e.device = None;
-    e.message = format!("{} (every member of fleet `{fleet}` refused it; nothing ran)", e.message);
+    e.message = crate::msg!("cli-fleet-all-refused", message = e.message.as_str(), fleet = fleet).text;
     Some((cmd.clone(), e))
 }
 
@@ -138,8 +138,7 @@ pub fn script(
 ) -> i32 {
     if args.sandbox {
         // The sandbox is for simulated devices only (docs/teaching.md); a fleet is machines.
-        let e = Error::usage("--sandbox runs on simulated devices only, not on a fleet")
-            .hint("grade submissions with plcsh lab grade, or run the fleet script without --sandbox");
+        let e = Error::usage(crate::msg!("cli-fleet-no-sandbox")).hint(crate::msg!("cli-hint-fleet-no-sandbox"));
         return usage(out, style, "run", &e);
     }
     let (fleet, settings, base) = match prepare(cli, shell, name) {
@@ -152,12 +151,12 @@ pub fn script(
         let mut sh = base.open(&members, &members.members[i], stop.clone())?;
         let printed = Arc::new(Mutex::new(Vec::new()));
         let engine = crate::script::Engine::new(stop, Box::new(Shared(printed.clone())))
-            .map_err(|e| Error::new(ErrorKind::Script, format!("cannot start Lua: {e}")))?;
+            .map_err(|e| Error::new(ErrorKind::Script, crate::msg!("cli-run-no-lua", reason = e.to_string())))?;
         // The member's name, so one script serves a fleet and a single device:
         // `plcsh.device(plcsh.fleet_member or "plc")`.
         let member = members.members[i].name.clone();
         let set = engine.lua().globals().get::<mlua::Table>("plcsh").and_then(|p| p.set("fleet_member", member));
-        set.map_err(|e| Error::new(ErrorKind::Script, format!("cannot start Lua: {e}")))?;
+        set.map_err(|e| Error::new(ErrorKind::Script, crate::msg!("cli-run-no-lua", reason = e.to_string())))?;
         let r = engine.run_file(&mut sh, &script, &script_args);
         let (checks, failed) = super::run::checks(&engine);
         let output = String::from_utf8_lossy(&printed.lock().unwrap_or_else(|p| p.into_inner())).into_owned();
@@ -183,7 +182,10 @@ pub fn script(
                         j["error"]["kind"].as_str().unwrap_or("script"),
                         j["error"]["message"].as_str().unwrap_or("")
                     ),
-                    None => format!("{} checks passed, {} failed", r.checks.saturating_sub(r.failed), r.failed),
+                    None => {
+                        let passed = r.checks.saturating_sub(r.failed);
+                        crate::msg!("cli-fleet-checks", passed = passed, failed = r.failed).text
+                    }
                 };
                 if !r.output.is_empty() || r.failure.is_some() {
                     let human = r.failure.as_ref().map(|(_, h)| h.clone()).unwrap_or_default();

@@ -4,6 +4,7 @@
 //! One file per subcommand (`models.rs` …), each a thin call into the library.
 
 mod agent;
+mod clap_error;
 pub mod completions;
 mod fleet;
 mod lab;
@@ -209,8 +210,8 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
     if let Some(path) = &cli.config {
         // A file named on the command line must exist (a typo would silently load nothing).
         if !path.exists() {
-            return Err(crate::core::Error::usage(format!("--config {}: no such file", path.display()))
-                .hint("give an existing devices.toml, or leave --config out to use the default"));
+            return Err(crate::core::Error::usage(crate::msg!("cli-config-missing", file = path.display().to_string()))
+                .hint(crate::msg!("cli-hint-config-missing")));
         }
     }
     if let Some(path) = &cli.record {
@@ -251,11 +252,7 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
                     return Err(e);
                 }
                 s.open("plc", &url)?;
-                eprintln!(
-                    "plcsh: warning: {}: this shell's plc starts fresh and keeps nothing (as with --state none); \
-                     to keep its own, start it with --state FILE",
-                    e.message.trim_end_matches('.')
-                );
+                eprintln!("{}", crate::msg!("shell-state-taken", reason = e.message.trim_end_matches('.')));
             }
         }
     }
@@ -268,7 +265,7 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
             // A shell opened before the cabinet is powered stays open: the device is marked not
             // connected and every command tries again. A one-shot still fails with the link error.
             if let Some(e) = s.open_or_later(&name, &url)? {
-                eprintln!("plcsh: {name}: {} — not connected; the next command tries again", e.message);
+                eprintln!("{}", crate::msg!("shell-not-connected-yet", device = name.as_str(), reason = e.message.as_str()));
             }
         } else if matches!(&cli.sub, Some(Sub::Publish(p)) if p.fleet.is_none()) {
             // A publisher waits for its device like a fleet's member: offline (the reason on its
@@ -481,19 +478,24 @@ fn run_cli() -> i32 {
             c
         }
         Err(e) => {
+            // The answer (help, an error) in the language `--lang` names, if it names one.
+            if let Some(lang) = lang_in(&argv) {
+                crate::core::msg::set_choice(lang);
+            }
             if let Some(msg) = unknown_subcommand(&argv, &e) {
                 eprintln!("{msg}");
                 return exit::USAGE;
             }
             // Help in the language of messages: the parser again, with the catalogue's texts
-            // (only here, so a line that parses costs nothing). clap's own error sentences
-            // have no translations: an error stays as clap writes it.
+            // (only here, so a line that parses costs nothing). An error is clap's in English,
+            // else written from the catalogue with clap's facts (cli::clap_error).
             use clap::error::ErrorKind;
+            if let Some(text) = clap_error::render(&e) {
+                eprint!("{text}");
+                return exit::USAGE;
+            }
             let e = if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand)
             {
-                if let Some(lang) = lang_in(&argv) {
-                    crate::core::msg::set_choice(lang);
-                }
                 localise::command(<Cli as clap::CommandFactory>::command())
                     .try_get_matches_from(argv.iter())
                     .err()
@@ -598,8 +600,13 @@ fn unknown_subcommand(argv: &[std::ffi::OsString], e: &clap::Error) -> Option<St
         .map(|s| s.get_name().to_string())
         .filter(|n| n != "help")
         .collect();
-    let mut msg =
-        format!("plcsh: `{}` has no subcommand `{bad}`; its subcommands: {}", path.join(" "), subs.join(", "));
+    let mut msg = crate::msg!(
+        "cli-no-such-subcommand",
+        command = path.join(" "),
+        subcommand = bad.as_str(),
+        subcommands = subs.join(", ")
+    )
+    .text;
     let shell_line = format!("{} {bad}", path[1..].join(" "));
     let shell_line = shell_line.trim();
     if let Some(c) = crate::shell::commands::find(shell_line.split(' ').next().unwrap_or("")) {
@@ -608,7 +615,7 @@ fn unknown_subcommand(argv: &[std::ffi::OsString], e: &clap::Error) -> Option<St
             msg.push_str(&format!("\n  {}", crate::msg!("label-hint", hint = hint.text)));
         }
     }
-    msg.push_str(&format!("\n  `{} --help` describes each", path.join(" ")));
+    msg.push_str(&format!("\n  {}", crate::msg!("cli-help-describes-each", command = path.join(" "))));
     Some(msg)
 }
 
@@ -621,10 +628,8 @@ fn run(cli: &Cli, mut shell: Shell, style: Style, mut out: std::io::StdoutLock<'
             }
             (None, Some(cmds)) => fleet::commands(cli, &shell, name, cmds, style, &mut out),
             _ => {
-                let e = crate::core::Error::usage(
-                    "--fleet runs -c COMMANDS or run SCRIPT.lua on every device of the fleet",
-                )
-                .hint(format!("e.g. plcsh -f {name} -c 'get VW100', or plcsh run --fleet {name} check.lua"));
+                let e = crate::core::Error::usage(crate::msg!("cli-fleet-needs-work"))
+                    .hint(crate::msg!("cli-hint-fleet-needs-work", fleet = name.as_str()));
                 let _ = output::report_error(&mut out, style, "fleet", &e, None);
                 2
             }

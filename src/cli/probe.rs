@@ -42,31 +42,27 @@ pub struct CheckArgs {
 /// command writes (`agent check`), so a read-only session (`--read-only`) or a profile that
 /// limits writes (`read_only`, `allow`) refuses it before anything is opened.
 fn resolve(shell: &Shell, target: &str, writes: bool) -> Result<(DeviceUrl, Vec<(String, String)>)> {
-    let refuse = |why: String| {
-        Error::new(crate::core::ErrorKind::Refused, format!("agent check writes the helper's mailbox and the SM bytes of one pulse channel, and {why}"))
-            .hint("run it without --read-only, with the PLC's URL, when the machine is safe to test (docs/reference/first-connection.md lists what it writes)")
+    let refuse = |why: crate::core::msg::Msg| {
+        Error::new(crate::core::ErrorKind::Refused, why).hint(crate::msg!("cli-hint-agent-check-writes"))
     };
     if writes && shell.session.read_only() {
-        return Err(refuse("--read-only refuses every change".into()));
+        return Err(refuse(crate::msg!("cli-agent-check-read-only")));
     }
     let (text, options) = if target.contains(':') {
         (target.to_string(), Vec::new())
     } else {
         let p = shell.session.profiles.get(target).ok_or_else(|| shell.session.profiles.unknown(target))?;
         if writes && (p.read_only || p.allow.is_some()) {
-            return Err(refuse(format!("profile `{target}` ({}) limits writes", p.origin)));
+            return Err(refuse(crate::msg!("cli-agent-check-profile", profile = target, origin = p.origin.as_str())));
         }
         (p.url.clone(), p.options.clone())
     };
     let url = DeviceUrl::parse(&text)?.without("control");
     match url.base_scheme() {
         "tcp" | "rtu" => Ok((url, options)),
-        "sim" => Err(Error::usage(format!("{text} is the in-process simulator: there is nothing on a wire to probe"))
-            .hint(
-                "serve it and probe that: plcsh sim serve --tcp 127.0.0.1:0 [--agent], then plcsh probe tcp://ADDRESS",
-            )),
-        s => Err(Error::usage(format!("`{s}:` is not a K2 on a wire"))
-            .hint("give tcp://HOST:PORT, rtu:PORT?baud=…, rtu+tcp://HOST:PORT or rtu+rfc2217://HOST:PORT")),
+        "sim" => Err(Error::usage(crate::msg!("cli-probe-in-process", url = text.as_str()))
+            .hint(crate::msg!("cli-hint-probe-in-process"))),
+        s => Err(Error::usage(crate::msg!("cli-probe-not-on-wire", scheme = s)).hint(crate::msg!("cli-hint-probe-urls"))),
     }
 }
 
@@ -145,7 +141,7 @@ pub fn probe(args: &ProbeArgs, shell: &Shell, style: Style, out: &mut dyn Write)
     let version = env!("CARGO_PKG_VERSION");
     if let Some(path) = &args.report {
         if let Err(e) = std::fs::write(path, probe::markdown(&result, &args.url, serial.as_deref(), version)) {
-            let e = Error::io(format!("cannot write the report to {}", path.display())).cause(e);
+            let e = Error::io(crate::msg!("cli-probe-cannot-write-report", file = path.display().to_string())).cause(e);
             return fail(out, style, "probe", &e);
         }
     }

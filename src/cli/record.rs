@@ -70,17 +70,13 @@ pub fn replay(
 ) -> i32 {
     let run = || -> crate::core::Result<replay::Report> {
         if bench.is_some() && (args.sim_model.is_some() || args.snapshot.is_some()) {
-            return Err(crate::core::Error::usage(
-                "replay --bench runs the bench's own simulators: --sim-model and --snapshot do not apply",
-            )
-            .hint("change the model or the starting values in the bench file"));
+            return Err(crate::core::Error::usage(crate::msg!("cli-replay-bench-options"))
+                .hint(crate::msg!("cli-hint-replay-bench-options")));
         }
         if devices_given {
             // Replaying recorded writes at a machine could move it: only simulators built here.
-            return Err(crate::core::Error::usage(
-                "replay sends the recorded requests to simulators it builds itself, never to --device",
-            )
-            .hint("choose the simulated model with --sim-model and its starting state with --snapshot"));
+            return Err(crate::core::Error::usage(crate::msg!("cli-replay-no-device"))
+                .hint(crate::msg!("cli-hint-replay-no-device")));
         }
         let rec = file::read(&args.file)?;
         warn(&rec, &args.file, "replaying");
@@ -120,13 +116,17 @@ pub fn replay(
                 let vt = d.vt.map(|v| format!(" at {v:.6} s")).unwrap_or_default();
                 writeln!(out, "frame {} ({}{vt}): {}", d.frame, d.device, d.request)?;
                 writeln!(out, "  {}", d.detail)?;
-                writeln!(out, "  recorded: {}", if d.recorded.is_empty() { "(no reply)" } else { &d.recorded })?;
-                writeln!(out, "  replayed: {}", if d.replayed.is_empty() { "(no reply)" } else { &d.replayed })?;
+                let no_reply = || crate::msg!("cli-replay-no-reply").text;
+                let recorded = if d.recorded.is_empty() { no_reply() } else { d.recorded.clone() };
+                let replayed = if d.replayed.is_empty() { no_reply() } else { d.replayed.clone() };
+                writeln!(out, "  {}", crate::msg!("cli-replay-recorded", reply = recorded))?;
+                writeln!(out, "  {}", crate::msg!("cli-replay-replayed", reply = replayed))?;
             }
             for s in &report.skipped {
-                writeln!(out, "not replayed: {s}")?;
+                writeln!(out, "{}", crate::msg!("cli-replay-skipped", what = s.as_str()))?;
             }
-            writeln!(out, "{} request(s) replayed, {} difference(s)", report.requests, report.differences.len())
+            let (requests, differences) = (report.requests, report.differences.len());
+            writeln!(out, "{}", crate::msg!("cli-replay-summary", requests = requests, differences = differences))
         })()
     };
     if let Err(e) = r {
@@ -143,18 +143,12 @@ fn warn(rec: &file::Recording, path: &std::path::Path, doing: &str) {
         eprintln!("plcsh: warning: {}: {d}", path.display());
     }
     if !rec.damaged.is_empty() {
-        eprintln!(
-            "plcsh: warning: {}: {doing} the {} frames read around the damage; exit status 1",
-            path.display(),
-            rec.frames.len()
-        );
+        let (file, frames) = (path.display().to_string(), rec.frames.len());
+        eprintln!("{}", crate::msg!("cli-record-damaged", file = file, doing = doing, frames = frames));
     }
     if let Some(why) = &rec.truncated {
-        eprintln!(
-            "plcsh: warning: {} ends early ({why}); {doing} the {} frames before",
-            path.display(),
-            rec.frames.len()
-        );
+        let (file, frames) = (path.display().to_string(), rec.frames.len());
+        eprintln!("{}", crate::msg!("cli-record-truncated", file = file, why = why.as_str(), doing = doing, frames = frames));
     }
     for n in &rec.notes {
         eprintln!("plcsh: note: {}: {n}", path.display());

@@ -54,7 +54,7 @@ pub fn main(shell: &mut Shell, args: &RunArgs, style: Style) -> i32 {
     let engine = match Engine::for_shell(shell) {
         Ok(e) => e,
         Err(e) => {
-            eprintln!("cannot start Lua: {e}");
+            eprintln!("{}", crate::msg!("cli-run-no-lua", reason = e.to_string()));
             return 1;
         }
     };
@@ -75,7 +75,7 @@ pub fn main(shell: &mut Shell, args: &RunArgs, style: Style) -> i32 {
         match setup() {
             Ok(e) => env = Some(e),
             Err(e) => {
-                eprintln!("cannot set up the sandbox: {e}");
+                eprintln!("{}", crate::msg!("cli-run-no-sandbox", reason = e.to_string()));
                 return 1;
             }
         }

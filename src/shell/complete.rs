@@ -295,7 +295,7 @@ fn servo_modes(word: &str) -> Vec<Suggestion> {
         .iter()
         .map(|n| crate::servo::ds402::mode_name(*n))
         .filter(|m| starts_with_ci(m, word))
-        .map(|m| Suggestion { text: m.to_string(), meaning: "operating mode".into() })
+        .map(|m| Suggestion { text: m.to_string(), meaning: crate::msg!("shell-complete-operating-mode").text })
         .collect()
 }
 
@@ -382,7 +382,7 @@ pub fn complete(line: &str, pos: usize, view: &View) -> Completion {
         Kind::Profiles => {
             let mut v = profiles(word, view);
             v.extend(devices(word, view, "").into_iter().map(|mut s| {
-                s.meaning = format!("open device ({}); connect NAME URL replaces it", s.meaning);
+                s.meaning = crate::msg!("shell-complete-open-device", profile = s.meaning.as_str()).text;
                 s
             }));
             v

@@ -15,9 +15,7 @@ use std::borrow::Cow;
 
 /// The error for quoted text that is never closed, at its opening quote.
 fn unclosed(at: usize, q: char) -> Error {
-    Error::syntax(format!("unclosed {q}")).column(at).hint(
-        "close the quote; inside double quotes write \\\" for a quote and \\\\ for a backslash, or use single quotes",
-    )
+    Error::syntax(format!("unclosed {q}")).column(at).hint(crate::msg!("shell-hint-close-quote"))
 }
 
 /// Tracks brackets outside quotes; `Err` at an unbalanced closing one.
@@ -123,11 +121,16 @@ pub fn one_path(args: &super::Args, skip: usize, form: &str) -> Result<Option<(u
             let typed: Vec<&str> = more.iter().map(|w| w.1).collect();
             // A quoted path is one word already: the words after it are extra, not part of it.
             let hint = if typed[0].contains(['"', '\'']) {
-                format!("one file only: {form} {}", typed[0])
+                crate::msg!("shell-hint-one-file", line = format!("{form} {}", typed[0]))
             } else {
-                format!("a path with spaces goes in quotes: {form} {}", quote(&typed.join(" ")))
+                crate::msg!("shell-hint-quote-path", line = format!("{form} {}", quote(&typed.join(" "))))
             };
-            Err(Error::usage(format!("{form} takes one file, not {} words (`{}`)", more.len(), typed.join("`, `")))
+            Err(Error::usage(crate::msg!(
+                "shell-one-file-only",
+                form = form,
+                count = more.len(),
+                words = typed.join("`, `")
+            ))
                 .hint(hint)
                 .column(more[1].0))
         }

@@ -188,22 +188,22 @@ pub fn batch(shell: &mut Shell, input: &mut dyn BufRead, out: &mut dyn Write) ->
 /// The prompt: the current device's name, `(sim)` when it is simulated (`plc(sim)>`
 /// against `press1>`), and `read-only` while the session-wide switch is on.
 pub fn prompt(s: &Session) -> String {
-    let mut marks = Vec::new();
+    let mut marks: Vec<String> = Vec::new();
     let name = match s.current_index() {
         Ok(i) => {
             let e = &s.entries()[i];
             if e.device.info().simulated {
-                marks.push("sim");
+                marks.push("sim".into());
             }
             if crate::pending::is_not_connected(e.device.info()) {
-                marks.push("not connected");
+                marks.push(crate::msg!("shell-prompt-not-connected").text);
             }
             e.name.clone()
         }
         Err(_) => "plcsh".to_string(),
     };
     if s.read_only() {
-        marks.push("read-only");
+        marks.push("read-only".into());
     }
     if marks.is_empty() {
         format!("{name}> ")

@@ -52,17 +52,19 @@ impl Stats {
     }
     /// `25 samples in 4.801 s wall (5.2 Hz) …` for `--verbose`.
     pub fn report(&self, cmd: &str, plan: &Plan) -> String {
-        format!(
-            "{cmd}: {} samples over {:.3} s of clock time ({:.1} Hz; asked {:.1} Hz), {:.3} s wall ({:.1} Hz), {} requests{}",
-            self.samples,
-            self.clock.as_secs_f64(),
-            self.clock_rate(),
-            1.0 / plan.every.as_secs_f64(),
-            self.wall.as_secs_f64(),
-            self.wall_rate(),
-            self.requests,
-            if self.interrupted { ", interrupted" } else { "" }
+        crate::msg!(
+            "shell-sample-report",
+            command = cmd,
+            samples = self.samples,
+            clock = format!("{:.3}", self.clock.as_secs_f64()),
+            clock_rate = format!("{:.1}", self.clock_rate()),
+            asked_rate = format!("{:.1}", 1.0 / plan.every.as_secs_f64()),
+            wall = format!("{:.3}", self.wall.as_secs_f64()),
+            wall_rate = format!("{:.1}", self.wall_rate()),
+            requests = self.requests,
+            interrupted = if self.interrupted { "yes" } else { "no" }
         )
+        .text
     }
 }
 
@@ -87,7 +89,7 @@ pub struct Request<'a> {
 fn duration(col: usize, key: &str, v: &str) -> Result<Duration> {
     let us = parse_option_duration_us(v).map_err(|m| Error::usage(format!("{key}={v}: {m}")).column(col))?;
     if us <= 0 {
-        return Err(Error::usage(format!("{key} must be more than zero")).column(col));
+        return Err(Error::usage(crate::msg!("shell-option-positive", key = key)).column(col));
     }
     Ok(Duration::from_micros(us as u64))
 }
@@ -97,7 +99,7 @@ pub fn parse<'a>(args: &Args<'a>, default_every: Duration, extra: &[&str], usage
     let words = lex::words(args.text).map_err(|e| e.shift(args.offset))?;
     let (pos, opts) = lex::options(&words);
     if pos.is_empty() {
-        return Err(Error::usage("name at least one operand").hint(usage.to_string()).column(args.offset));
+        return Err(Error::usage(crate::msg!("shell-name-an-operand")).hint(usage.to_string()).column(args.offset));
     }
     let mut plan = Plan { every: default_every, count: None, span: None };
     let mut options = Vec::new();
@@ -107,9 +109,9 @@ pub fn parse<'a>(args: &Args<'a>, default_every: Duration, extra: &[&str], usage
             "every" => plan.every = duration(col, k, v)?,
             "for" => plan.span = Some(duration(col, k, v)?),
             "count" => {
-                let n: u64 = v.parse().map_err(|_| Error::usage(format!("count={v} is not a number")).column(col))?;
+                let n: u64 = v.parse().map_err(|_| Error::usage(crate::msg!("shell-count-not-number", value = v)).column(col))?;
                 if n == 0 {
-                    return Err(Error::usage("count must be at least 1").column(col));
+                    return Err(Error::usage(crate::msg!("shell-count-at-least-one")).column(col));
                 }
                 plan.count = Some(n);
             }
@@ -117,9 +119,9 @@ pub fn parse<'a>(args: &Args<'a>, default_every: Duration, extra: &[&str], usage
             _ => {
                 let mut known = vec!["every", "count", "for"];
                 known.extend_from_slice(extra);
-                return Err(Error::usage(format!("unknown option `{k}`"))
+                return Err(Error::usage(crate::msg!("shell-unknown-option", key = k))
                     .column(col)
-                    .hint(format!("options: {}; {usage}", known.join(", "))));
+                    .hint(crate::msg!("shell-hint-options", options = known.join(", "), usage = usage)));
             }
         }
     }
@@ -239,8 +241,8 @@ impl Recording {
                 .iter()
                 .map(|n| {
                     self.labels.iter().position(|l| l.eq_ignore_ascii_case(n)).ok_or_else(|| {
-                        Error::usage(format!("`{n}` is not in the last trace"))
-                            .hint(format!("traced: {}", self.labels.join(", ")))
+                        Error::usage(crate::msg!("shell-not-traced", name = *n))
+                            .hint(crate::msg!("shell-hint-traced", names = self.labels.join(", ")))
                     })
                 })
                 .collect::<Result<_>>()?

@@ -36,11 +36,10 @@ pub(super) async fn serve(
     ready: &mut Map<String, Json>,
 ) -> Result<()> {
     if cli.state.as_ref().is_some_and(|p| p.as_os_str() != "none") {
-        return Err(Error::usage("--state with --fleet: the simulators would share one state file")
-            .hint("leave --state out (a served fleet keeps no state)"));
+        return Err(Error::usage(crate::msg!("cli-serve-fleet-state")).hint(crate::msg!("cli-hint-serve-fleet-state")));
     }
     if cli.bench.is_some() {
-        return Err(Error::usage("--bench with --fleet: a bench describes one machine"));
+        return Err(Error::usage(crate::msg!("cli-serve-fleet-bench")));
     }
     let tcp = args.tcp.as_deref().unwrap_or("0");
     let first = super::listen_addr(tcp)?;
@@ -55,7 +54,7 @@ pub(super) async fn serve(
             first
                 .port()
                 .checked_add(k)
-                .ok_or_else(|| Error::usage(format!("--tcp {tcp} --fleet {n}: the ports run past 65535")))?
+                .ok_or_else(|| Error::usage(crate::msg!("cli-serve-fleet-ports", tcp = tcp, count = n)))?
         };
         let mut fields = Map::new();
         let sim = make_k2(cli, args, clock, &mut fields, None)?;
@@ -90,7 +89,7 @@ pub(super) async fn serve(
         })?;
         // A member's end (an error, or its thread gone) ends the server, as for one K2.
         tasks.spawn(async move {
-            done.await.unwrap_or_else(|_| Err(std::io::Error::other("a fleet member's thread stopped")))
+            done.await.unwrap_or_else(|_| Err(std::io::Error::other(crate::msg!("cli-serve-fleet-member-stopped").text)))
         });
     }
     ready.insert("tcp".into(), json!(addrs[0]));

@@ -223,17 +223,16 @@ pub fn listen_addr(text: &str) -> Result<SocketAddr> {
         t.to_string()
     };
     full.parse().map_err(|_| {
-        Error::usage(format!("`{text}` is not an address to listen on"))
-            .hint("use HOST:PORT (127.0.0.1:5020, 0.0.0.0:502) or a port (5020; 0 picks a free one)")
+        Error::usage(crate::msg!("cli-serve-not-an-address", text = text)).hint(crate::msg!("cli-hint-serve-address"))
     })
 }
 
 pub(super) async fn bind(text: &str) -> Result<TcpListener> {
     let addr = listen_addr(text)?;
     TcpListener::bind(addr).await.map_err(|e| {
-        Error::io(format!("cannot listen on {addr}"))
+        Error::io(crate::msg!("cli-serve-cannot-listen", addr = addr.to_string()))
             .cause(e)
-            .hint("choose another port (0 picks a free one); ports below 1024 need privileges")
+            .hint(crate::msg!("cli-hint-serve-port"))
     })
 }
 
@@ -271,7 +270,7 @@ fn report_faults(sim: Arc<Mutex<crate::k2::sim::K2Sim>>, stop: Arc<AtomicBool>) 
                     .collect()
             };
             for l in lines {
-                eprintln!("plcsh sim serve: {l}");
+                eprintln!("{}", crate::msg!("cli-serve-fault-acted", line = l.as_str()));
             }
             std::thread::sleep(std::time::Duration::from_millis(50));
         }
@@ -332,7 +331,9 @@ pub(super) fn make_k2(
     }
     if let Some(p) = &args.program {
         let text = crate::core::encoding::read_source(p)
-            .map_err(|e| Error::io(format!("cannot read {}: {e}", p.display())))?;
+            .map_err(|e| {
+                Error::io(crate::msg!("shell-cannot-read-because", file = p.display().to_string(), reason = e.to_string()))
+            })?;
         sim.load_program(&text, &p.display().to_string())?;
         ready.insert("program".into(), json!(p.display().to_string()));
     }
@@ -343,7 +344,10 @@ pub(super) fn make_k2(
 pub(super) fn limits(args: &ServeArgs) -> Result<modbus_net::Limits> {
     let idle =
         crate::core::literal::parse_option_duration_us(&args.idle_timeout).ok().filter(|us| *us > 0).ok_or_else(
-            || Error::usage(format!("--idle-timeout {} is not a duration", args.idle_timeout)).hint("e.g. 300s, 2m"),
+            || {
+                Error::usage(crate::msg!("cli-serve-idle-timeout", value = args.idle_timeout.as_str()))
+                    .hint(crate::msg!("cli-hint-serve-idle-timeout"))
+            },
         )?;
     Ok(modbus_net::Limits {
         max_connections: args.max_connections,
@@ -428,10 +432,11 @@ async fn serve_servo(
         .ok()
         .filter(|us| *us >= 0)
         .ok_or_else(|| {
-            Error::usage(format!("--servo-latency {}: not a duration", args.servo_latency)).hint("e.g. 1ms, 500us, 0")
+            Error::usage(crate::msg!("cli-serve-servo-latency", value = args.servo_latency.as_str()))
+                .hint(crate::msg!("cli-hint-serve-servo-latency"))
         })?;
     if args.servo_baud == 0 {
-        return Err(Error::usage("--servo-baud must be positive (e.g. 38400)"));
+        return Err(Error::usage(crate::msg!("cli-serve-servo-baud")));
     }
     let pace =
         crate::servo::sim::Pace { baud: args.servo_baud, latency: std::time::Duration::from_micros(latency as u64) };
@@ -470,7 +475,7 @@ async fn serve_servo(
             Ok(())
         }
         Ok(Err(e)) => Err(e),
-        Err(_) => Err(Error::io("the servo line stopped before it was ready")),
+        Err(_) => Err(Error::io(crate::msg!("cli-serve-servo-line-stopped"))),
     }
 }
 
@@ -482,14 +487,13 @@ async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
     let fx = (serve_on(&args.fx_pty, &args.fx_tcp)?, serve_on(&args.fx_link_pty, &args.fx_link_tcp)?);
     let umpk = serve_on(&args.umpk_pty, &args.umpk_tcp)?;
     if !args.serves_k2() && servo.is_none() && fx.0.is_none() && fx.1.is_none() && umpk.is_none() {
-        return Err(Error::usage("sim serve needs at least one transport")
-            .hint("e.g. plcsh sim serve --tcp 127.0.0.1:5020 --rtu-tcp 0 --servo-tcp 0 (on Unix also --rtu-pty /tmp/k2 --servo-pty /tmp/kinco)"));
+        return Err(Error::usage(crate::msg!("cli-serve-needs-transport")).hint(crate::msg!("cli-hint-serve-transport")));
     }
     if args.agent.is_some() && !args.serves_k2() {
-        return Err(Error::usage("--agent runs in the served K2: give --tcp, --rtu-pty or --rtu-tcp too"));
+        return Err(Error::usage(crate::msg!("cli-serve-agent-needs-k2")));
     }
     let stopped =
-        crate::core::platform::stop_signal().map_err(|e| Error::io("cannot install signal handlers").cause(e))?;
+        crate::core::platform::stop_signal().map_err(|e| Error::io(crate::msg!("cli-serve-no-signals")).cause(e))?;
     let clock = match cli.time {
         super::TimeMode::Wall => Clock::following(),
         super::TimeMode::Stepped => Clock::stepped(),
@@ -551,18 +555,18 @@ async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
         ready.insert("rfc2217".into(), json!(true));
         tasks.spawn(task);
     }
-    serde_json::to_writer(&mut *out, &ready).map_err(|e| Error::io("cannot print the readiness line").cause(e))?;
+    serde_json::to_writer(&mut *out, &ready).map_err(|e| Error::io(crate::msg!("cli-serve-no-readiness")).cause(e))?;
     writeln!(out)?;
     out.flush()?;
     tokio::select! {
         () = stopped => Ok(()),
         Some(r) = tasks.join_next() => {
             let e = match r {
-                Ok(Ok(())) => "a server stopped".to_string(),
+                Ok(Ok(())) => crate::msg!("cli-serve-server-stopped").text,
                 Ok(Err(e)) => e.to_string(),
                 Err(e) => e.to_string(),
             };
-            Err(Error::io("serving failed").cause(e))
+            Err(Error::io(crate::msg!("cli-serve-failed")).cause(e))
         }
     }
 }
@@ -603,7 +607,7 @@ pub fn run(cli: &Cli, args: &ServeArgs, style: Style, out: &mut dyn Write) -> i3
     let rt = match tokio::runtime::Builder::new_current_thread().enable_all().build() {
         Ok(rt) => rt,
         Err(e) => {
-            let _ = output::report_error(out, style, "sim", &Error::io("cannot start a runtime").cause(e), None);
+            let _ = output::report_error(out, style, "sim", &Error::io(crate::msg!("cli-serve-no-runtime")).cause(e), None);
             return 1;
         }
     };

@@ -243,9 +243,9 @@ pub async fn front(
     inner: SocketAddr,
 ) -> crate::core::Result<(SocketAddr, impl std::future::Future<Output = std::io::Result<()>>)> {
     let l = TcpListener::bind(listen).await.map_err(|e| {
-        crate::core::Error::io(format!("cannot listen on {listen}"))
+        crate::core::Error::io(crate::msg!("cli-serve-cannot-listen", addr = listen.to_string()))
             .cause(e)
-            .hint("choose another port (0 picks a free one); ports below 1024 need privileges")
+            .hint(crate::msg!("cli-hint-serve-port"))
     })?;
     let addr = l.local_addr()?;
     Ok((addr, async move {
@@ -317,9 +317,8 @@ pub fn behind_fronts(
         }
     }
     if fronts.is_empty() {
-        return Err(crate::core::Error::usage("--rfc2217 is for serial lines served on TCP").hint(
-            "give --rtu-tcp, --servo-tcp, --fx-tcp, --fx-link-tcp or --umpk-tcp too, e.g. --rtu-tcp 0 --rfc2217",
-        ));
+        return Err(crate::core::Error::usage(crate::msg!("cli-serve-rfc2217-needs-tcp"))
+            .hint(crate::msg!("cli-hint-serve-rfc2217")));
     }
     Ok((Some(inner), fronts))
 }

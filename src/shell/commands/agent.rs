@@ -21,11 +21,9 @@ pub const AGENT: CommandSpec = CommandSpec {
 fn agent(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let words: Vec<&str> = args.text.split_whitespace().collect();
     if words.first() == Some(&"il") {
-        return Err(crate::core::Error::usage(
-            "`agent il` is a command-line command: it prints the helper program for KincoBuilder",
-        )
-        .hint("plcsh agent il > k2_agent.il (see plcsh agent il --help)")
-        .column(args.offset));
+        return Err(crate::core::Error::usage(crate::msg!("shell-agent-il-cli"))
+            .hint(crate::msg!("shell-hint-agent-il-cli"))
+            .column(args.offset));
     }
     // `agent`, `agent status`, `agent DEVICE`, `agent DEVICE status`, `agent status DEVICE`.
     let (device, rest): (Option<&str>, Vec<&str>) = match words.as_slice() {
@@ -48,7 +46,7 @@ fn agent(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let name = k2cmd::name(sh, dev);
     let mut k2 = k2cmd::k2(sh, dev)?;
     let text = if k2.as_sim().is_some() {
-        "simulator: SM registers and instructions are reached directly (no helper needed)".to_string()
+        crate::msg!("shell-agent-simulator").text
     } else {
         k2.helper_status().map_err(|e| e.device(&name))?
     };

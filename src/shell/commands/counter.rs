@@ -28,17 +28,18 @@ pub const HSC: CommandSpec = CommandSpec {
     run: hsc,
 };
 
+/// `what`: `mode` (a counter mode), `cv` (a current value) or `pv` (a preset value).
 fn number<T: std::str::FromStr>(w: Word, what: &str) -> Result<T> {
-    w.1.parse().map_err(|_| value_err(w.0, format!("`{}` is not {what}", w.1)))
+    w.1.parse().map_err(|_| value_err(w.0, crate::msg!("shell-hsc-not-a-number", text = w.1, what = what)))
 }
 
 fn hdef(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let w = lex::words_in(&args)?;
     if w.len() != 2 {
-        return Err(Error::usage("hdef takes a counter and a mode").column(args.offset).hint(HDEF.usage));
+        return Err(Error::usage(crate::msg!("shell-hdef-needs-two")).column(args.offset).hint(HDEF.usage));
     }
     let (dev, n) = k2cmd::channel(sh, w[0], "counter", 3)?;
-    let mode: u8 = number(w[1], "a mode number")?;
+    let mode: u8 = number(w[1], "mode")?;
     let name = k2cmd::name(sh, dev);
     let r = k2cmd::k2(sh, dev)?.hdef(n, mode).map_err(|e| e.device(&name).column(w[1].0))?;
     let mut o = Outcome::new("hdef").text(r.clone()).with("report", r);
@@ -64,7 +65,7 @@ fn hsc(sh: &mut Shell, args: Args) -> Result<Outcome> {
         return Ok(o);
     }
     let word =
-        *pos.first().ok_or_else(|| Error::usage("hsc needs a counter number").column(args.offset).hint(HSC.usage))?;
+        *pos.first().ok_or_else(|| Error::usage(crate::msg!("shell-hsc-needs-counter")).column(args.offset).hint(HSC.usage))?;
     let (dev, n) = k2cmd::channel(sh, word, "counter", 3)?;
     let name = k2cmd::name(sh, dev);
     if pos.len() == 1 && opts.is_empty() {
@@ -75,8 +76,8 @@ fn hsc(sh: &mut Shell, args: Args) -> Result<Outcome> {
     }
     check_options(&opts, &["mode", "rate", "pv", "cv", "dir", "reset", "start"], HSC.usage)?;
     let mut q = hh::HscRequest { counter: n, ..Default::default() };
-    let (mc, mt) = opt(&opts, "mode").ok_or_else(|| Error::usage("the hsc helper needs mode=").hint(HSC.usage))?;
-    q.mode = number((mc, mt), "a mode number")?;
+    let (mc, mt) = opt(&opts, "mode").ok_or_else(|| Error::usage(crate::msg!("shell-hsc-needs-mode")).hint(HSC.usage))?;
+    q.mode = number((mc, mt), "mode")?;
     if let Some((c, r)) = opt(&opts, "rate") {
         q.rate4x = match r.to_ascii_lowercase().as_str() {
             "4x" | "4" => true,
@@ -88,7 +89,7 @@ fn hsc(sh: &mut Shell, args: Args) -> Result<Outcome> {
         q.up = Some(match d.to_ascii_lowercase().as_str() {
             "up" => true,
             "down" => false,
-            _ => return Err(value_err(c, format!("dir={d}: use up or down"))),
+            _ => return Err(value_err(c, crate::msg!("shell-hsc-dir", value = d))),
         });
     }
     for (key, slot) in [("reset", &mut q.reset_low), ("start", &mut q.start_low)] {
@@ -96,19 +97,19 @@ fn hsc(sh: &mut Shell, args: Args) -> Result<Outcome> {
             *slot = match v.to_ascii_lowercase().as_str() {
                 "low" => true,
                 "high" => false,
-                _ => return Err(value_err(c, format!("{key}={v}: the active level is high or low"))),
+                _ => return Err(value_err(c, crate::msg!("shell-hsc-level", key = key, value = v))),
             };
         }
     }
     if let Some((c, v)) = opt(&opts, "cv") {
-        q.cv = Some(number((c, v), "a DINT current value")?);
+        q.cv = Some(number((c, v), "cv")?);
     }
     if let Some((c, v)) = opt(&opts, "pv") {
         let inner = v.strip_prefix('[').and_then(|t| t.strip_suffix(']')).unwrap_or(v);
         for (k, p) in lex::split_top(inner, ',')? {
             let p = p.trim();
             if !p.is_empty() {
-                q.pv.push(number((c + 4 + k, p), "a DINT preset value")?);
+                q.pv.push(number((c + 4 + k, p), "pv")?);
             }
         }
     }
@@ -121,17 +122,17 @@ fn hsc(sh: &mut Shell, args: Args) -> Result<Outcome> {
             "cyclic" => q.cyclic = true,
             "force" => q.force = true,
             "at" => {
-                let (c2, a) = *pos.get(i + 1).ok_or_else(|| Error::usage("`at` needs a V address").column(c))?;
+                let (c2, a) = *pos.get(i + 1).ok_or_else(|| Error::usage(crate::msg!("shell-at-needs-v-address")).column(c))?;
                 q.at = Some(
                     a.to_ascii_uppercase()
                         .trim_start_matches('%')
                         .strip_prefix("VB")
                         .and_then(|n| n.parse().ok())
-                        .ok_or_else(|| value_err(c2, format!("`{a}` is not a V byte address (e.g. VB3009)")))?,
+                        .ok_or_else(|| value_err(c2, crate::msg!("shell-not-a-v-byte", text = a, example = "VB3009")))?,
                 );
                 i += 1;
             }
-            _ => return Err(Error::usage(format!("unexpected `{t}`")).column(c).hint(HSC.usage)),
+            _ => return Err(Error::usage(crate::msg!("shell-unexpected", extra = t)).column(c).hint(HSC.usage)),
         }
         i += 1;
     }

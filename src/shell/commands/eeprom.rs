@@ -36,9 +36,9 @@ fn eeprom(sh: &mut Shell, args: Args) -> Result<Outcome> {
                 ["all"] => EEPROM_LAST_MAX,
                 _ => {
                     return Err(Error::usage("eeprom dump FILE [all]")
-                        .hint(format!(
-                            "a path with spaces goes in quotes: eeprom dump {}",
-                            crate::shell::lex::quote(&parts[1..].join(" "))
+                        .hint(crate::msg!(
+                            "shell-hint-quote-path",
+                            line = format!("eeprom dump {}", crate::shell::lex::quote(&parts[1..].join(" ")))
                         ))
                         .column(args.offset))
                 }
@@ -49,20 +49,24 @@ fn eeprom(sh: &mut Shell, args: Args) -> Result<Outcome> {
             let bytes: Vec<u8> = vals.iter().map(|v| v.as_i64() as u8).collect();
             crate::core::durable::write_atomic(std::path::Path::new(file), &bytes)?;
             Outcome::new("eeprom")
-                .text(format!("saved VB{first}…VB{end} ({} bytes) to {file}", bytes.len()))
+                .text(crate::msg!("shell-eeprom-saved", first = first, last = end, bytes = bytes.len(), file = *file).text)
                 .with("bytes", bytes.len())
                 .with("file", file)
         }
         ["restore", file] => {
             sh.session.check_read(file)?;
-            let bytes = std::fs::read(file).map_err(|e| Error::io(format!("cannot read {file}")).cause(e))?;
+            let bytes = std::fs::read(file).map_err(|e| Error::io(crate::msg!("shell-cannot-read", file = *file)).cause(e))?;
             let room = (last - first + 1) as usize;
             if bytes.len() > room {
-                return Err(Error::usage(format!(
-                    "{file} holds {} bytes but the backup area VB{first}…VB{last} has {room}",
-                    bytes.len()
+                return Err(Error::usage(crate::msg!(
+                    "shell-eeprom-too-big",
+                    file = *file,
+                    bytes = bytes.len(),
+                    first = first,
+                    last = last,
+                    room = room
                 ))
-                .hint("extend the area first: eeprom area 4095"));
+                .hint(crate::msg!("shell-hint-eeprom-area")));
             }
             let items: Vec<_> = ops(first + bytes.len() as u32 - 1)
                 .iter()
@@ -71,44 +75,54 @@ fn eeprom(sh: &mut Shell, args: Args) -> Result<Outcome> {
                 .collect();
             sh.session.write_values(dev, &items)?;
             Outcome::new("eeprom")
-                .text(format!(
-                    "restored {} bytes into VB{first}…VB{} from {file}",
-                    bytes.len(),
-                    first + bytes.len() as u32 - 1
-                ))
+                .text(
+                    crate::msg!(
+                        "shell-eeprom-restored",
+                        bytes = bytes.len(),
+                        first = first,
+                        last = first + bytes.len() as u32 - 1,
+                        file = *file
+                    )
+                    .text,
+                )
                 .with("bytes", bytes.len())
         }
         ["status"] => {
             let s = k2cmd::sim(sh, dev, "eeprom status")?;
             s.advance();
-            let mut lines = vec![format!("backup area VB{first}…VB{last} ({} bytes)", last - first + 1)];
+            let mut lines = vec![crate::msg!("shell-eeprom-area-size", first = first, last = last, bytes = last - first + 1).text];
             let mut warn = None;
             let elapsed = s.last.saturating_sub(s.backup.since).as_secs_f64();
             let mut data = serde_json::Map::new();
             if let Some((byte, total, session)) = s.backup.hottest() {
-                lines.push(format!(
-                    "most-written byte VB{byte}: {total} writes ({:.3} % of ~{EEPROM_ENDURANCE})",
-                    total as f64 * 100.0 / EEPROM_ENDURANCE as f64
-                ));
+                lines.push(
+                    crate::msg!(
+                        "shell-eeprom-hottest",
+                        byte = byte,
+                        writes = total,
+                        share = format!("{:.3}", total as f64 * 100.0 / EEPROM_ENDURANCE as f64),
+                        endurance = EEPROM_ENDURANCE
+                    )
+                    .text,
+                );
                 data.insert("hottest".into(), serde_json::json!({"byte": byte, "writes": total, "session": session}));
                 if session > 0 && elapsed > 0.0 {
                     let rate = session as f64 / elapsed;
                     let left = EEPROM_ENDURANCE.saturating_sub(total) as f64 / rate;
-                    lines.push(format!(
-                        "at this session's rate ({rate:.1} writes/s of virtual time) it wears out in {}",
-                        human(left)
-                    ));
+                    lines.push(
+                        crate::msg!("shell-eeprom-wear", rate = format!("{rate:.1}"), left = human(left)).text,
+                    );
                     if left < 10.0 * 365.0 * 86_400.0 {
-                        warn = Some("this would wear the E2PROM within 10 years; keep frequently changing data out of the backup area (§2.2.8)");
+                        warn = Some(crate::msg!("shell-eeprom-wear-warning"));
                     }
                     data.insert("wear_out_s".into(), serde_json::json!(left));
                 }
             } else {
-                lines.push("no writes counted".into());
+                lines.push(crate::msg!("shell-eeprom-no-writes").text);
             }
             let mut o = Outcome::new("eeprom").text(lines.join("\n")).with("first", first).with("last", last);
             if let Some(w) = warn {
-                o = o.note(format!("warning: {w}"));
+                o = o.note(crate::msg!("label-warning", warning = w.text).text);
             }
             o.data.extend(data);
             o
@@ -117,17 +131,19 @@ fn eeprom(sh: &mut Shell, args: Args) -> Result<Outcome> {
             let n = n.trim_start_matches(['V', 'B', 'v', 'b']);
             sh.session.entry(dev).device.set_option("backup_last", n).map_err(|e| e.device(&name))?;
             let (_, last) = k2cmd::k2(sh, dev)?.backup_area();
-            Outcome::new("eeprom").text(format!("backup area VB{EEPROM_FIRST}…VB{last}")).with("last", last)
+            Outcome::new("eeprom")
+                .text(crate::msg!("shell-eeprom-area", first = EEPROM_FIRST, last = last).text)
+                .with("last", last)
         }
         ["restore", more @ ..] if more.len() > 1 => {
-            return Err(Error::usage(format!("eeprom restore takes one file, not {} words", more.len()))
-                .hint(format!(
-                    "a path with spaces goes in quotes: eeprom restore {}",
-                    crate::shell::lex::quote(&more.join(" "))
+            return Err(Error::usage(crate::msg!("shell-one-file-only-plain", form = "eeprom restore", count = more.len()))
+                .hint(crate::msg!(
+                    "shell-hint-quote-path",
+                    line = format!("eeprom restore {}", crate::shell::lex::quote(&more.join(" ")))
                 ))
                 .column(args.offset))
         }
-        _ => return Err(Error::usage("unknown eeprom command").column(args.offset).hint(EEPROM.usage)),
+        _ => return Err(Error::usage(crate::msg!("shell-eeprom-unknown")).column(args.offset).hint(EEPROM.usage)),
     };
     o.device = Some(name);
     Ok(o)

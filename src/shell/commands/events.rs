@@ -63,7 +63,7 @@ fn events(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let dropped = k2cmd::sim(sh, dev, "events").map(|s| s.events.dropped).unwrap_or(0);
     let list = k2cmd::k2(sh, dev)?.events(!keep).map_err(|e| e.device(&name))?;
     let mut o = if list.is_empty() {
-        Outcome::new("events").text("no events")
+        Outcome::new("events").text(crate::msg!("shell-no-events").text)
     } else {
         Outcome::new("events").table(&["seq", "time", "event", "name", "what"], list.iter().map(row).collect())
     };
@@ -78,7 +78,7 @@ fn wait(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let (pos, opts) = lex::options(&w);
     k2cmd::check_options(&opts, &["timeout"], WAIT.usage)?;
     if pos.first().map(|p| p.1.to_ascii_lowercase()) != Some("event".into()) || pos.len() != 2 {
-        return Err(Error::usage("wait needs `event N`").column(args.offset).hint(WAIT.usage));
+        return Err(Error::usage(crate::msg!("shell-wait-needs-event")).column(args.offset).hint(WAIT.usage));
     }
     let m = EventMatch::parse(pos[1].1);
     let timeout = match opt(&opts, "timeout") {
@@ -96,28 +96,32 @@ fn wait(sh: &mut Shell, args: Args) -> Result<Outcome> {
     loop {
         if let Some(e) = k2cmd::k2(sh, dev)?.take_event(&m).map_err(|e| e.device(&name))? {
             let waited = clock.now().saturating_sub(start);
-            let num = e.kind.number().map(|n| format!("event {n} ")).unwrap_or_default();
+            let (event, what, at, after) =
+                (e.kind.name(), e.kind.describe(), format_time(e.time), format_time(waited));
+            let text = match e.kind.number() {
+                Some(n) => {
+                    crate::msg!("shell-wait-event-number", number = n, name = event, what = what, at = at, waited = after)
+                }
+                None => crate::msg!("shell-wait-event", name = event, what = what, at = at, waited = after),
+            };
             let mut o = Outcome::new("wait")
-                .text(format!(
-                    "{num}{} ({}) at {} after waiting {}",
-                    e.kind.name(),
-                    e.kind.describe(),
-                    format_time(e.time),
-                    format_time(waited)
-                ))
+                .text(text.text)
                 .with("event", event_json(&e))
                 .with("waited_us", waited.as_micros() as u64);
             o.device = Some(name);
             return Ok(o);
         }
         if sh.session.interrupted() {
-            return Err(Error::new(ErrorKind::Interrupted, format!("wait for {m} interrupted")).device(name));
+            return Err(Error::new(ErrorKind::Interrupted, crate::msg!("shell-wait-interrupted", event = m.to_string())).device(name));
         }
         let now = clock.now();
         if now >= deadline {
-            return Err(Error::new(ErrorKind::Timeout, format!("no {m} within {}", format_time(timeout)))
-                .device(name)
-                .hint("`events keep` lists what arrived; `pto N status` / `hsc N status` show whether anything runs"));
+            return Err(Error::new(
+                ErrorKind::Timeout,
+                crate::msg!("shell-wait-timeout", event = m.to_string(), timeout = format_time(timeout)),
+            )
+            .device(name)
+            .hint(crate::msg!("shell-hint-wait-timeout")));
         }
         // Jumping the clock to the next event is for simulators; with a device on a wire
         // open the wait is real (Session::sleep), never a timeout that expires in no time.

@@ -19,7 +19,7 @@ pub fn run(sh: &mut Shell, sub: &str, rest: &str) -> Result<Outcome> {
         channel::send(&path, &line).map_err(|e| e.device(&name))?
     } else {
         let sim = k2cmd::sim(sh, dev, "sim fault").map_err(|e| {
-            e.hint("a served K2 takes faults on its control channel: open it with control=PATH (the server's readiness line names it)")
+            e.hint(crate::msg!("shell-hint-fault-served"))
         })?;
         crate::k2::sim::control::answer(sim, &line, false).map_err(|e| e.device(&name))?
     };

@@ -366,8 +366,8 @@ pub fn check(c: &CommandSpec, args: Args) -> Result<()> {
         if grammars.iter().all(|g| g.keys.is_empty()) {
             if let Some(&(col, k, _)) = opts.first() {
                 let forms: Vec<&str> = fits.iter().map(|g| g.text.as_str()).collect();
-                return Err(Error::usage(format!("`{}` takes no options (got `{k}=`)", forms.join("` | `")))
-                    .hint(format!("the form is {}; `help {}` shows every form", forms.join(" | "), c.name))
+                return Err(Error::usage(crate::msg!("shell-no-options", forms = forms.join("` | `"), key = k))
+                    .hint(crate::msg!("shell-hint-the-form", forms = forms.join(" | "), command = c.name))
                     .column(col));
             }
         }
@@ -397,15 +397,16 @@ pub fn check(c: &CommandSpec, args: Args) -> Result<()> {
         // A path typed in quotes is already one word: the word after it is the extra one
         // (never folded into the file name).
         let hint = if words[n..end].iter().any(|w| w.contains(['"', '\''])) {
-            format!("nothing goes after the {}; `{help}` shows every form", if end - n == 1 { "file" } else { "files" })
+            crate::msg!("shell-hint-nothing-after-files", files = end - n, help = help.as_str())
         } else {
             let path = words[n..].join(" ");
-            format!("a path or name with spaces goes in quotes: {} {}", head.join(" "), lex::quote(&path))
+            crate::msg!("shell-hint-quote-name", line = format!("{} {}", head.join(" "), lex::quote(&path)))
         };
-        return Err(Error::usage(format!(
-            "unexpected `{extra}` after `{}`: the form is {}",
-            typed.join(" "),
-            forms.join(" | ")
+        return Err(Error::usage(crate::msg!(
+            "shell-unexpected-after",
+            extra = extra,
+            typed = typed.join(" "),
+            forms = forms.join(" | ")
         ))
         .hint(hint)
         .column(col));
@@ -417,20 +418,21 @@ pub fn check(c: &CommandSpec, args: Args) -> Result<()> {
             .chain(words[..end - 1].iter().map(|w| w.to_string()))
             .chain(std::iter::once(format!("{num}{extra}")))
             .collect();
-        return Err(Error::usage(format!(
-            "unexpected `{extra}` after `{}`: the form is {}",
-            typed.join(" "),
-            forms.join(" | ")
+        return Err(Error::usage(crate::msg!(
+            "shell-unexpected-after",
+            extra = extra,
+            typed = typed.join(" "),
+            forms = forms.join(" | ")
         ))
-        .hint(format!("a number and its unit are one word: {}", fixed.join(" ")))
+        .hint(crate::msg!("shell-hint-number-and-unit", line = fixed.join(" ")))
         .column(col));
     }
     let message = if forms == [c.name] {
-        format!("unexpected `{extra}`: `{}` takes no arguments", c.name)
+        crate::msg!("shell-no-arguments", extra = extra, command = c.name)
     } else {
-        format!("unexpected `{extra}` after `{}`: the form is {}", typed.join(" "), forms.join(" | "))
+        crate::msg!("shell-unexpected-after", extra = extra, typed = typed.join(" "), forms = forms.join(" | "))
     };
-    Err(Error::usage(message).hint(format!("nothing goes after it; `{help}` shows every form")).column(col))
+    Err(Error::usage(message).hint(crate::msg!("shell-hint-nothing-after", help = help.as_str())).column(col))
 }
 
 /// The forms of `c` that `text` (the words after the command's name) fits, options aside.

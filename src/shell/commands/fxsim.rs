@@ -27,25 +27,28 @@ fn status(m: &Memory, name: &str, msg: Option<String>) -> Outcome {
     let c = &m.cpu;
     let program = c.program.as_ref().map(|p| p.source.clone());
     let mut lines: Vec<String> = msg.into_iter().collect();
-    lines.push(format!(
-        "{name}: {} {}; {}",
-        m.model.name,
-        c.mode.name(),
-        match &program {
-            Some(p) => format!("program {p} ({} instructions)", c.program.as_ref().map_or(0, |p| p.instructions)),
-            None => "no program (sim program load FILE.il)".into(),
+    let (model, mode) = (m.model.name, c.mode.name());
+    lines.push(match &program {
+        Some(p) => {
+            let n = c.program.as_ref().map_or(0, |p| p.instructions);
+            crate::msg!("shell-fx-program", name = name, model = model, mode = mode, program = p.as_str(), instructions = n)
+                .text
         }
-    ));
-    lines.push(format!(
-        "scans {}; scan time last {} ms, min {} ms, max {} ms (D8010/D8011/D8012); time {:.3} s",
-        c.stats.scans,
-        ms(c.stats.last_ns),
-        ms(c.stats.min_ns),
-        ms(c.stats.max_ns),
-        m.time().as_secs_f64()
-    ));
+        None => crate::msg!("shell-fx-no-program", name = name, model = model, mode = mode).text,
+    });
+    lines.push(
+        crate::msg!(
+            "shell-fx-scans",
+            scans = c.stats.scans,
+            last = ms(c.stats.last_ns).to_string(),
+            min = ms(c.stats.min_ns).to_string(),
+            max = ms(c.stats.max_ns).to_string(),
+            time = format!("{:.3}", m.time().as_secs_f64())
+        )
+        .text,
+    );
     if let Some(f) = &c.fault {
-        lines.push(format!("stopped by a fault: {f}"));
+        lines.push(crate::msg!("shell-fx-fault", fault = f.to_string()).text);
     }
     Outcome::new("sim")
         .text(lines.join("\n"))
@@ -65,8 +68,8 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
     let name = sh.session.entries()[dev].name.clone();
     let col = words.first().map_or(args.offset, |w| w.0);
     let ops = crate::fx::driver::ops(sh.session.entry(dev).device.as_mut(), &[])?;
-    let d = ops.ok_or_else(|| Error::usage("not an FX simulator"))?;
-    let plc = d.sim.clone().ok_or_else(|| Error::unsupported("a real FX runs its own program").device(&name))?;
+    let d = ops.ok_or_else(|| Error::usage(crate::msg!("shell-fx-not-simulator")))?;
+    let plc = d.sim.clone().ok_or_else(|| Error::unsupported(crate::msg!("shell-fx-real")).device(&name))?;
     let mut m = plc.lock().unwrap_or_else(|p| p.into_inner());
     m.advance();
     let arg = |k: usize| words.get(k).map(|w| (w.0, w.1));
@@ -77,10 +80,16 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
                 // The tag file of the list's symbols after it (`tags=press1.csv`, docs/tags.md).
                 let (args, tag_file) = super::simprogram::tags_option(args)?;
                 let (c2, path) = lex::one_path(&args, 2, "sim program load")?
-                    .ok_or_else(|| Error::usage("sim program load needs a file, e.g. scripts/fx_blink.il").column(c))?;
+                    .ok_or_else(|| {
+                        Error::usage(crate::msg!("shell-sim-load-needs-file", example = "scripts/fx_blink.il")).column(c)
+                    })?;
                 sh.session.check_read(&path).map_err(|e| e.device(&name).column(c2))?;
                 let text = crate::core::encoding::read_source(&path)
-                    .map_err(|e| Error::io(format!("cannot read {path}: {e}")).device(&name).column(c2))?;
+                    .map_err(|e| {
+                        Error::io(crate::msg!("shell-cannot-read-because", file = path.as_str(), reason = e.to_string()))
+                            .device(&name)
+                            .column(c2)
+                    })?;
                 let tags = match &tag_file {
                     Some((tc, t)) => {
                         sh.session.check_read(t).map_err(|e| e.device(&name).column(*tc))?;
@@ -96,14 +105,14 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
                     .map_err(|e| e.device(&name))?;
                 let n = loaded.instructions;
                 m.load_program(loaded);
-                Some(format!("{path}: {n} instructions loaded; the PLC restarts in RUN"))
+                Some(crate::msg!("shell-fx-loaded", file = path.as_str(), instructions = n).text)
             }
             Some((_, "unload")) => {
                 m.unload_program();
-                Some("program removed: the PLC scans an empty program".to_string())
+                Some(crate::msg!("shell-fx-unloaded").text)
             }
             Some((c, other)) => {
-                return Err(Error::usage(format!("unknown `sim program {other}` on an FX PLC"))
+                return Err(Error::usage(crate::msg!("shell-fx-program-unknown", sub = other))
                     .hint(USAGE)
                     .device(&name)
                     .column(c))
@@ -115,18 +124,18 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
                 "run" => Mode::Run,
                 "stop" => Mode::Stop,
                 "pause" => {
-                    return Err(Error::usage("an FX PLC has RUN and STOP, no PAUSE")
+                    return Err(Error::usage(crate::msg!("shell-fx-no-pause"))
                         .hint("sim cpu run | sim cpu stop")
                         .device(&name)
                         .column(c))
                 }
-                _ => return Err(Error::usage("sim cpu needs run or stop").hint(USAGE).column(c)),
+                _ => return Err(Error::usage(crate::msg!("shell-fx-cpu-needs-mode")).hint(USAGE).column(c)),
             };
             m.set_mode(mode);
-            Some(format!("{} in {}", m.model.name, mode.name()))
+            Some(crate::msg!("shell-fx-mode", model = m.model.name, mode = mode.name()).text)
         }
         other => {
-            return Err(Error::usage(format!("`sim {other}` is not available on an FX PLC"))
+            return Err(Error::usage(crate::msg!("shell-fx-sim-unavailable", sub = other))
                 .hint(USAGE)
                 .device(&name)
                 .column(col))

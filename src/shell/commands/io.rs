@@ -36,7 +36,7 @@ pub const READ: CommandSpec = CommandSpec {
 fn operand_words<'a>(args: &Args<'a>, what: &str) -> Result<Vec<(usize, &'a str)>> {
     let w = lex::words(args.text).map_err(|e| e.shift(args.offset))?;
     if w.is_empty() {
-        return Err(Error::usage(format!("{what} needs at least one operand")).column(args.offset));
+        return Err(Error::usage(crate::msg!("shell-needs-operand", command = what)).column(args.offset));
     }
     Ok(w)
 }
@@ -77,7 +77,7 @@ fn count_requests(sh: &Shell, before: u64, o: Outcome) -> Outcome {
     }
     let n = requests_total(sh).saturating_sub(before);
     if !sh.style.json {
-        eprintln!("{}: {n} request(s) on the wire", o.cmd);
+        eprintln!("{}", crate::msg!("shell-requests-on-wire", command = o.cmd.as_str(), count = n));
     }
     o.with("requests", n)
 }
@@ -93,7 +93,7 @@ fn get(sh: &mut Shell, args: Args) -> Result<Outcome> {
 
 fn set(sh: &mut Shell, args: Args) -> Result<Outcome> {
     if args.text.is_empty() {
-        return Err(Error::usage("set needs OPERAND=VALUE items").hint(SET.usage).column(args.offset));
+        return Err(Error::usage(crate::msg!("shell-set-needs-items")).hint(SET.usage).column(args.offset));
     }
     let mut items = Vec::new();
     for (col, piece) in lex::split_top(args.text, ',').map_err(|e| e.shift(args.offset))? {
@@ -101,13 +101,13 @@ fn set(sh: &mut Shell, args: Args) -> Result<Outcome> {
         let p = piece.trim();
         let column = args.offset + col + lead;
         let Some(eq) = p.find('=') else {
-            return Err(Error::syntax(format!("`{p}` is not OPERAND=VALUE")).column(column).hint(SET.usage));
+            return Err(Error::syntax(crate::msg!("shell-set-not-item", item = p)).column(column).hint(SET.usage));
         };
         if p[..eq].ends_with(':') {
-            return Err(Error::syntax(format!(
-                "`:=` is the ST assignment; plcsh writes `{}={}`",
-                p[..eq - 1].trim(),
-                p[eq + 1..].trim()
+            return Err(Error::syntax(crate::msg!(
+                "shell-set-st-assignment",
+                operand = p[..eq - 1].trim(),
+                value = p[eq + 1..].trim()
             ))
             .column(column + eq - 1)
             .hint(SET.usage));
@@ -120,7 +120,7 @@ fn set(sh: &mut Shell, args: Args) -> Result<Outcome> {
             let after = v[sp..].trim_start();
             if after.split_whitespace().next().is_some_and(|w| w.contains('=') && !w.starts_with('=')) {
                 let at = column + eq + 1 + vlead + (v.len() - after.len());
-                return Err(Error::syntax(format!("writes are separated by commas: `set {}`", comma_line(args.text)))
+                return Err(Error::syntax(crate::msg!("shell-set-commas", line = comma_line(args.text)))
                     .column(at)
                     .hint(SET.usage));
             }

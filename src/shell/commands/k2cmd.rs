@@ -11,7 +11,8 @@ use crate::session::Reading;
 use crate::shell::lex::{Opt, Word};
 use crate::shell::Shell;
 
-/// `0` or `press:0` → (device index, channel number).
+/// `0` or `press:0` → (device index, channel number). `what` is `pulse` (a pulse output's
+/// channel) or `counter`.
 pub fn channel(sh: &Shell, word: Word, what: &str, max: u8) -> Result<(usize, u8)> {
     let (col, text) = word;
     let (dev, num, off) = match text.rsplit_once(':') {
@@ -22,20 +23,20 @@ pub fn channel(sh: &Shell, word: Word, what: &str, max: u8) -> Result<(usize, u8
         .parse()
         .ok()
         .filter(|n| *n <= max)
-        .ok_or_else(|| Error::usage(format!("`{num}` is not a {what} number (0…{max})")).column(col + off))?;
+        .ok_or_else(|| Error::usage(crate::msg!("shell-not-a-channel", num = num, what = what, max = max)).column(col + off))?;
     Ok((dev, n))
 }
 
 /// The channel of a status form: `CMD N status` (the channel first, as in every `CMD N …`
 /// form) or `CMD status N`; `None` when the words are not a status form. `example` is the
-/// form to show (`pto 0 status`).
+/// form to show (`pto 0 status`); `what` as for [`channel`].
 pub fn status_channel<'a>(pos: &[Word<'a>], col: usize, what: &str, example: &str) -> Option<Result<Word<'a>>> {
     let at = pos.iter().take(2).position(|p| p.1.eq_ignore_ascii_case("status"))?;
     let Some(word) = pos.get(1 - at) else {
-        return Some(Err(Error::usage(format!("a status form needs a {what} number, e.g. {example}")).column(col)));
+        return Some(Err(Error::usage(crate::msg!("shell-status-needs-channel", what = what, example = example)).column(col)));
     };
     if let Some(extra) = pos.get(2) {
-        return Some(Err(Error::usage(format!("unexpected `{}`", extra.1)).column(extra.0).hint(example.to_string())));
+        return Some(Err(Error::usage(crate::msg!("shell-unexpected", extra = extra.1)).column(extra.0).hint(example.to_string())));
     }
     Some(Ok(*word))
 }
@@ -49,7 +50,7 @@ pub fn name(sh: &Shell, dev: usize) -> String {
 pub fn k2(sh: &mut Shell, dev: usize) -> Result<K2Access<'_>> {
     let name = name(sh, dev);
     crate::k2::ops(sh.session.entry(dev).device.as_mut())
-        .ok_or_else(|| Error::unsupported(format!("{name} is not a K2 PLC")).device(name))
+        .ok_or_else(|| Error::unsupported(crate::msg!("shell-not-a-k2", name = name.as_str())).device(name))
 }
 
 /// The simulator behind device `dev`, or an error saying the control is simulator-only.
@@ -57,7 +58,7 @@ pub fn sim<'a>(sh: &'a mut Shell, dev: usize, what: &str) -> Result<&'a mut K2Si
     let name = name(sh, dev);
     k2(sh, dev)?;
     crate::k2::simulator(sh.session.entry(dev).device.as_mut()).ok_or_else(|| {
-        Error::unsupported(format!("{what} is a simulator control; {name} is not simulated")).device(name)
+        Error::unsupported(crate::msg!("shell-simulator-only", command = what, name = name.as_str())).device(name)
     })
 }
 
@@ -98,13 +99,14 @@ pub fn check_options(opts: &[Opt], known: &[&str], usage: &str) -> Result<()> {
     for &(col, k, _) in opts {
         if !known.contains(&k) {
             let near = known.iter().map(|c| (crate::core::text::edit_distance(k, c), *c)).min();
-            let mean = match near {
-                Some((d, c)) if d <= 2 => format!("did you mean `{c}=`? "),
-                _ => String::new(),
+            let options = known.join(", ");
+            let hint = match near {
+                Some((d, c)) if d <= 2 => {
+                    crate::msg!("shell-hint-option-near", near = c, options = options, usage = usage)
+                }
+                _ => crate::msg!("shell-hint-option-usage", options = options, usage = usage),
             };
-            return Err(Error::usage(format!("unknown option `{k}=`"))
-                .column(col)
-                .hint(format!("{mean}options: {}; usage: {usage}", known.join(", "))));
+            return Err(Error::usage(crate::msg!("shell-unknown-key", key = k)).column(col).hint(hint));
         }
     }
     Ok(())

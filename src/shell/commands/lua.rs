@@ -22,8 +22,7 @@ pub const LUA: CommandSpec = CommandSpec {
 
 fn lua(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let Some(mut hook) = sh.script.take() else {
-        return Err(Error::unsupported("Lua cannot run here")
-            .hint("a `lua` line inside a running Lua chunk (plcsh.exec) is not allowed; call Lua directly instead"));
+        return Err(Error::unsupported(crate::msg!("shell-lua-cannot-run")).hint(crate::msg!("shell-hint-lua-nested")));
     };
     let r = hook.run(sh, args.text);
     sh.script = Some(hook);

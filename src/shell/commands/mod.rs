@@ -217,17 +217,17 @@ pub fn no_arguments(name: &str, args: Args) -> Result<()> {
 
 /// Commands of the command line that the shell does not have, with where they belong and
 /// what the shell offers instead.
-const COMMAND_LINE_ONLY: &[(&str, &str)] = &[
-    ("run", "`run` is a command-line command: plcsh run SCRIPT.lua [ARGS…]; in the shell, lua dofile(\"SCRIPT.lua\")"),
-    ("replay", "`replay` is a command-line command: plcsh replay FILE.pcapng (it builds its own simulators)"),
-    ("record", "`record` is a command-line command: plcsh record show FILE.pcapng; to record this session start plcsh with --record FILE"),
-    ("completions", "`completions` is a command-line command: plcsh completions bash|zsh|fish|powershell"),
-    ("serve", "serving is a command-line command: plcsh sim serve --tcp 5020 …"),
+const COMMAND_LINE_ONLY: &[(&str, fn() -> crate::core::msg::Msg)] = &[
+    ("run", || crate::msg!("shell-cli-only-run")),
+    ("replay", || crate::msg!("shell-cli-only-replay")),
+    ("record", || crate::msg!("shell-cli-only-record")),
+    ("completions", || crate::msg!("shell-cli-only-completions")),
+    ("serve", || crate::msg!("shell-cli-only-serve")),
 ];
 
 pub fn suggest(name: &str) -> String {
     if let Some((_, where_)) = COMMAND_LINE_ONLY.iter().find(|(n, _)| *n == name) {
-        return where_.to_string();
+        return where_().text;
     }
     let mut best: Vec<(usize, &str)> =
         COMMANDS.iter().map(|c| (crate::core::text::edit_distance(name, c.name), c.name)).collect();

@@ -42,19 +42,25 @@ pub fn outcome(model: Option<&str>) -> Result<Outcome> {
                 ]
             })
             .collect();
-        let head = ["model", "DI/DO/DIO", "AI/AO", "HSC", "pulse outputs", "manual notes"].map(String::from);
+        let mut head: [String; 6] = Default::default();
+        for (h, t) in head.iter_mut().zip(crate::output::headings(crate::msg!("shell-models-columns"))) {
+            *h = t;
+        }
+        // Aligned by display width: a Chinese heading takes two columns a character.
+        let width = crate::shell::term::width;
         let mut w = [0usize; 6];
         for r in std::iter::once(&head).chain(&rows) {
             for (i, c) in r.iter().enumerate() {
-                w[i] = w[i].max(c.chars().count());
+                w[i] = w[i].max(width(c));
             }
         }
         let line = |r: &[String; 6]| {
-            let cells: Vec<String> = r.iter().enumerate().map(|(i, c)| format!("{c:<width$}", width = w[i])).collect();
+            let cells: Vec<String> =
+                r.iter().enumerate().map(|(i, c)| format!("{c}{}", " ".repeat(w[i] - width(c)))).collect();
             cells.join("  ").trim_end().to_string()
         };
         let mut text: Vec<String> = std::iter::once(&head).chain(&rows).map(line).collect();
-        text.push("`models MODEL` shows one model in full (areas, counters, manual notes)".into());
+        text.push(crate::msg!("shell-models-footer").text);
         return Ok(Outcome::new("models").text(text.join("\n")).with("models", catalog::MODELS));
     };
     let m = catalog::lookup(name)?;
@@ -80,10 +86,11 @@ fn detail(m: &Model) -> String {
         ));
     }
     if m.pto.is_empty() {
-        lines.push("  pulses      none (relay outputs)".into());
+        lines.push(format!("  pulses      {}", crate::msg!("shell-models-no-pulses")));
     }
     for p in m.pto {
-        lines.push(format!("  PTO{}        {} up to {} kHz", p.channel, p.output, p.max_hz / 1000));
+        let up_to = crate::msg!("shell-models-pto", output = p.output, khz = p.max_hz / 1000);
+        lines.push(format!("  PTO{}        {up_to}", p.channel));
     }
     for d in m.discrepancies {
         let note = format!("{}: chose {}; {}", d.what, d.chosen, d.other);

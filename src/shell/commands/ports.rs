@@ -19,7 +19,7 @@ pub const PORTS: CommandSpec = CommandSpec {
 
 fn ports(_sh: &mut Shell, args: Args) -> Result<Outcome> {
     if !args.text.trim().is_empty() {
-        return Err(crate::core::Error::usage(format!("ports takes no arguments (got `{}`)", args.text.trim()))
+        return Err(crate::core::Error::usage(crate::msg!("shell-ports-no-arguments", extra = args.text.trim()))
             .hint("ports")
             .column(args.offset));
     }
@@ -45,9 +45,9 @@ pub fn outcome() -> Result<Outcome> {
         .collect();
     let mut o = Outcome::new("ports").with("ports", &list);
     if list.is_empty() {
-        o = o.text("no serial ports found (plug in the USB adapter, then run `ports` again)");
+        o = o.text(crate::msg!("shell-no-ports").text);
     } else {
-        o = o.table(&["port", "kind", "usb id", "adapter", "serial number"], rows);
+        o = o.table(&crate::output::headings(crate::msg!("shell-ports-columns")), rows);
     }
     Ok(o)
 }

@@ -30,7 +30,7 @@ pub fn devices_and_profiles(s: &Session) -> (Vec<Vec<String>>, Outcome) {
         let open = s.entries().iter().any(|e| e.name == p.name);
         if !open {
             let writes = match (&p.allow, p.read_only) {
-                (_, true) => "read only".to_string(),
+                (_, true) => crate::msg!("shell-devices-read-only").text,
                 (Some(a), false) => format!("allow {}", a.join(", ")),
                 (None, false) => String::new(),
             };
@@ -44,16 +44,16 @@ pub fn devices_and_profiles(s: &Session) -> (Vec<Vec<String>>, Outcome) {
         let n = f.members.len();
         // A URL fleet's members share its rules; a list's members have their own profiles.
         let writes = match f.members.first().map(|m| &m.source) {
-            Some(crate::profile::fleet::Source::Made(p)) if p.read_only => "read only".to_string(),
+            Some(crate::profile::fleet::Source::Made(p)) if p.read_only => crate::msg!("shell-devices-read-only").text,
             Some(crate::profile::fleet::Source::Made(p)) => {
                 p.allow.as_ref().map(|a| format!("allow {}", a.join(", "))).unwrap_or_default()
             }
-            _ => "per profile".to_string(),
+            _ => crate::msg!("shell-devices-per-profile").text,
         };
         rows.push(vec![
             f.name.clone(),
             "(fleet)".into(),
-            format!("{n} device{}", if n == 1 { "" } else { "s" }),
+            crate::msg!("shell-devices-count", count = n).text,
             f.spec.clone(),
             writes,
         ]);
@@ -65,7 +65,7 @@ pub fn devices_and_profiles(s: &Session) -> (Vec<Vec<String>>, Outcome) {
     // A problem is a message of its own line (`note: …`), never a table cell: one bad profile
     // leaves the rows as narrow as the devices make them.
     for p in &problems {
-        o.notes.push(format!("profile file: {p}"));
+        o.notes.push(crate::msg!("shell-devices-profile-problem", problem = p.as_str()).text);
     }
     if !fleets.is_empty() {
         o = o.with("fleets", fleets);

@@ -61,12 +61,12 @@ fn instruction(sh: &mut Shell, args: Args, cmd: &str, usage: &str) -> Result<Out
     let strict = cmd == "pls" && w.iter().any(|(_, t)| t.eq_ignore_ascii_case("strict"));
     w.retain(|(_, t)| cmd != "pls" || !t.eq_ignore_ascii_case("strict"));
     let Some(&word) = w.first() else {
-        return Err(Error::usage(format!("a pulse channel number is missing: {usage}")).column(args.offset));
+        return Err(Error::usage(crate::msg!("shell-pulse-channel-missing", usage = usage)).column(args.offset));
     };
     if w.len() > 1 {
-        return Err(Error::usage(format!("{cmd} takes one channel number")).column(w[1].0).hint(usage.to_string()));
+        return Err(Error::usage(crate::msg!("shell-pulse-one-channel", command = cmd)).column(w[1].0).hint(usage.to_string()));
     }
-    let (dev, ch) = k2cmd::channel(sh, word, "pulse channel", 3)?;
+    let (dev, ch) = k2cmd::channel(sh, word, "pulse", 3)?;
     let name = k2cmd::name(sh, dev);
     let warning = if cmd == "pls" { busy_check(sh, dev, ch, strict, "PLS")? } else { None };
     let mut k2 = k2cmd::k2(sh, dev)?;
@@ -90,11 +90,11 @@ fn busy_check(sh: &mut Shell, dev: usize, ch: u8, strict: bool, by: &str) -> Res
         return Ok(None);
     }
     if strict {
-        return Err(Error::state(format!("{what}: {by} {ch} would replace it; nothing was written"))
+        return Err(Error::state(crate::msg!("shell-pulse-busy-strict", busy = what.as_str(), by = by, channel = ch))
             .device(&name)
-            .hint(format!("wait for it (pto {ch} status), stop it (pstop {ch}), or drop `strict` to replace it")));
+            .hint(crate::msg!("shell-hint-pulse-busy", channel = ch)));
     }
-    Ok(Some(format!("{what}; {by} {ch} replaced it (add `strict` to refuse instead)")))
+    Ok(Some(crate::msg!("shell-pulse-busy-replaced", busy = what.as_str(), by = by, channel = ch).text))
 }
 
 fn pls(sh: &mut Shell, args: Args) -> Result<Outcome> {
@@ -108,7 +108,7 @@ fn pstop(sh: &mut Shell, args: Args) -> Result<Outcome> {
 /// `freq=` or `cycle=` → a rate.
 fn rate(opts: &[lex::Opt]) -> Result<Option<hp::Rate>> {
     match (opt(opts, "freq"), opt(opts, "cycle")) {
-        (Some(_), Some((c, _))) => Err(Error::usage("give freq= or cycle=, not both").column(c)),
+        (Some(_), Some((c, _))) => Err(Error::usage(crate::msg!("shell-freq-or-cycle")).column(c)),
         (Some((c, f)), None) => Ok(Some(hp::Rate::Hz(helpers::parse_freq_hz(f).map_err(|m| value_err(c, m))?))),
         (None, Some((c, t))) => Ok(Some(hp::Rate::CycleUs(helpers::parse_us(t).map_err(|m| value_err(c, m))?))),
         (None, None) => Ok(None),
@@ -123,12 +123,9 @@ fn count(opts: &[lex::Opt], key: &str) -> Result<Option<u64>> {
             let t = v.replace('_', "");
             t.parse::<u64>().map_err(|_| {
                 if !t.is_empty() && t.bytes().all(|b| b.is_ascii_digit()) {
-                    value_err(c, format!("{key}={v} is too many pulses: a PTO counts up to 4 294 967 295 (§3.4.2.1)"))
+                    value_err(c, crate::msg!("shell-too-many-pulses", key = key, value = v))
                 } else {
-                    value_err(
-                        c,
-                        format!("{key} must be a positive whole number of pulses, 1 … 4 294 967 295 (got {key}={v})"),
-                    )
+                    value_err(c, crate::msg!("shell-pulses-not-whole", key = key, value = v))
                 }
             })
         })
@@ -151,9 +148,9 @@ fn run_plan(sh: &mut Shell, dev: usize, cmd: &str, plan: &helpers::Plan) -> Resu
 fn pto(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let w = lex::words_in(&args)?;
     let (pos, opts) = lex::options(&w);
-    if let Some(word) = k2cmd::status_channel(&pos, args.offset, "pulse channel", "pto 0 status") {
+    if let Some(word) = k2cmd::status_channel(&pos, args.offset, "pulse", "pto 0 status") {
         let word = word?;
-        let (dev, ch) = k2cmd::channel(sh, word, "pulse channel", 3)?;
+        let (dev, ch) = k2cmd::channel(sh, word, "pulse", 3)?;
         let name = k2cmd::name(sh, dev);
         let (model, _) = model_of(sh, dev)?;
         let (vals, words) =
@@ -168,13 +165,13 @@ fn pto(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let pos: Vec<_> = pos.into_iter().filter(|(_, t)| !t.eq_ignore_ascii_case("strict")).collect();
     let word = *pos.first().ok_or_else(|| Error::usage(PTO.usage).column(args.offset))?;
     if let Some(extra) = pos.get(1) {
-        return Err(Error::usage(format!("unexpected `{}`", extra.1)).column(extra.0).hint(PTO.usage));
+        return Err(Error::usage(crate::msg!("shell-unexpected", extra = extra.1)).column(extra.0).hint(PTO.usage));
     }
-    let (dev, ch) = k2cmd::channel(sh, word, "pulse channel", 3)?;
+    let (dev, ch) = k2cmd::channel(sh, word, "pulse", 3)?;
     let rate =
-        rate(&opts)?.ok_or_else(|| Error::usage("pto needs freq= or cycle=").column(args.offset).hint(PTO.usage))?;
+        rate(&opts)?.ok_or_else(|| Error::usage(crate::msg!("shell-pto-needs-rate")).column(args.offset).hint(PTO.usage))?;
     let n =
-        count(&opts, "count")?.ok_or_else(|| Error::usage("pto needs count=").column(args.offset).hint(PTO.usage))?;
+        count(&opts, "count")?.ok_or_else(|| Error::usage(crate::msg!("shell-pto-needs-count")).column(args.offset).hint(PTO.usage))?;
     let (model, _) = model_of(sh, dev)?;
     let name = k2cmd::name(sh, dev);
     // A refused rate points at the option as typed (`cycle=2`).
@@ -203,7 +200,7 @@ fn pwm(sh: &mut Shell, args: Args) -> Result<Outcome> {
             _ => return Err(Error::usage(format!("unexpected `{}`", p.1)).column(p.0).hint(PWM.usage)),
         }
     }
-    let (dev, ch) = k2cmd::channel(sh, word, "pulse channel", 3)?;
+    let (dev, ch) = k2cmd::channel(sh, word, "pulse", 3)?;
     let (model, _) = model_of(sh, dev)?;
     let name = k2cmd::name(sh, dev);
     let plan = pwm_plan(model, ch, &opts, sync, args.offset).map_err(|e| e.device(&name))?;
@@ -227,12 +224,12 @@ fn pwm_plan(
         Some(hp::Rate::CycleUs(us)) => us,
         // A float past u64 saturates; the cycle register's limit refuses it in plan_pwm.
         Some(hp::Rate::Hz(f)) => (1e6 / f).round() as u64,
-        None => return Err(Error::usage("pwm needs cycle= (or freq=)").column(col).hint(PWM.usage)),
+        None => return Err(Error::usage(crate::msg!("shell-pwm-needs-cycle")).column(col).hint(PWM.usage)),
     };
-    let (wc, wt) = opt(opts, "width").ok_or_else(|| Error::usage("pwm needs width=").hint(PWM.usage))?;
+    let (wc, wt) = opt(opts, "width").ok_or_else(|| Error::usage(crate::msg!("shell-pwm-needs-width")).hint(PWM.usage))?;
     let width = crate::core::literal::parse_pulse_time_us(wt).map_err(|m| value_err(wc, m))?;
     if width < 0 {
-        return Err(value_err(wc, "the width cannot be negative"));
+        return Err(value_err(wc, crate::msg!("shell-pwm-negative-width")));
     }
     hp::plan_pwm(model, ch, cycle, width as u64, sync)
 }
@@ -261,7 +258,7 @@ pub fn fuzz_options(text: &str) {
 /// `[(cycle=500us, count=1000), …]` → segments.
 fn segments(text: &str, col: usize) -> Result<Vec<hp::Segment>> {
     let inner = text.strip_prefix('[').and_then(|t| t.strip_suffix(']')).ok_or_else(|| {
-        Error::syntax("the segment list goes in brackets: [(cycle=500us, count=1000), …]").column(col)
+        Error::syntax(crate::msg!("shell-segments-in-brackets")).column(col)
     })?;
     let mut out = Vec::new();
     for (c, item) in lex::split_top(inner, ',').map_err(|e| e.shift(col + 1))? {
@@ -271,16 +268,16 @@ fn segments(text: &str, col: usize) -> Result<Vec<hp::Segment>> {
         }
         let at = col + 1 + c + (item.len() - item.trim_start().len());
         let body = t.strip_prefix('(').and_then(|t| t.strip_suffix(')')).ok_or_else(|| {
-            Error::syntax(format!("`{t}` is not a segment: write (cycle=500us, count=1000)")).column(at)
+            Error::syntax(crate::msg!("shell-not-a-segment", text = t)).column(at)
         })?;
         let ws: Vec<Word> = lex::words(body)?.into_iter().map(|(c2, w)| (at + 1 + c2, w)).collect();
         let (pos, opts) = lex::options(&ws);
         if let Some(p) = pos.first() {
-            return Err(Error::syntax(format!("unexpected `{}` in a segment", p.1)).column(p.0));
+            return Err(Error::syntax(crate::msg!("shell-unexpected-in-segment", extra = p.1)).column(p.0));
         }
         check_options(&opts, &["cycle", "freq", "count"], PROFILE.usage)?;
-        let rate = rate(&opts)?.ok_or_else(|| Error::usage("a segment needs cycle= or freq=").column(at))?;
-        let count = count(&opts, "count")?.ok_or_else(|| Error::usage("a segment needs count=").column(at))?;
+        let rate = rate(&opts)?.ok_or_else(|| Error::usage(crate::msg!("shell-segment-needs-rate")).column(at))?;
+        let count = count(&opts, "count")?.ok_or_else(|| Error::usage(crate::msg!("shell-segment-needs-count")).column(at))?;
         out.push(hp::Segment { rate, count });
     }
     Ok(out)
@@ -289,7 +286,7 @@ fn segments(text: &str, col: usize) -> Result<Vec<hp::Segment>> {
 fn profile(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let w = lex::words_in(&args)?;
     let word = *w.first().ok_or_else(|| Error::usage(PROFILE.usage).column(args.offset))?;
-    let (dev, ch) = k2cmd::channel(sh, word, "pulse channel", 3)?;
+    let (dev, ch) = k2cmd::channel(sh, word, "pulse", 3)?;
     let (mut at, mut list, mut force, mut plan_only, mut svg_to) = (None, None, false, false, None);
     let (mut strict, mut size) = (false, None);
     let mut i = 1;
@@ -298,13 +295,13 @@ fn profile(sh: &mut Shell, args: Args) -> Result<Outcome> {
         match t.to_ascii_lowercase().as_str() {
             "at" => {
                 let (c2, a) =
-                    *w.get(i + 1).ok_or_else(|| Error::usage("`at` needs a V address, e.g. at VB3001").column(c))?;
+                    *w.get(i + 1).ok_or_else(|| Error::usage(crate::msg!("shell-at-needs-address")).column(c))?;
                 let n = a
                     .to_ascii_uppercase()
                     .trim_start_matches('%')
                     .strip_prefix("VB")
                     .and_then(|n| n.parse::<u32>().ok())
-                    .ok_or_else(|| value_err(c2, format!("`{a}` is not a V byte address (e.g. VB3001)")))?;
+                    .ok_or_else(|| value_err(c2, crate::msg!("shell-not-a-v-byte", text = a, example = "VB3001")))?;
                 at = Some(n);
                 i += 1;
             }
@@ -317,12 +314,12 @@ fn profile(sh: &mut Shell, args: Args) -> Result<Outcome> {
                 size = Some(crate::plot::parse_size(&t[5..]).map_err(|m| Error::usage(m).column(c))?)
             }
             _ if t.starts_with('[') => list = Some(segments(t, c)?),
-            _ => return Err(Error::usage(format!("unexpected `{t}`")).column(c).hint(PROFILE.usage)),
+            _ => return Err(Error::usage(crate::msg!("shell-unexpected", extra = t)).column(c).hint(PROFILE.usage)),
         }
         i += 1;
     }
-    let at = at.ok_or_else(|| Error::usage("profile needs `at VBxxxx` (an odd V address)").hint(PROFILE.usage))?;
-    let list = list.ok_or_else(|| Error::usage("profile needs a segment list [(cycle=…, count=…), …]"))?;
+    let at = at.ok_or_else(|| Error::usage(crate::msg!("shell-profile-needs-at")).hint(PROFILE.usage))?;
+    let list = list.ok_or_else(|| Error::usage(crate::msg!("shell-profile-needs-segments")))?;
     let (model, backup) = model_of(sh, dev)?;
     let name = k2cmd::name(sh, dev);
     let pr = hp::plan_profile(model, ch, at, &list, force, backup).map_err(|e| e.device(&name))?;
@@ -333,28 +330,35 @@ fn profile(sh: &mut Shell, args: Args) -> Result<Outcome> {
         if let Some(last) = tl.points.last() {
             points.push((last.end_us as f64 / 1e6, last.freq_hz));
         }
-        let series = crate::plot::Series::new(format!("PTO{ch} frequency"), "Hz", points).stepped();
+        let series = crate::plot::Series::new(crate::msg!("shell-profile-series", channel = ch).text, "Hz", points).stepped();
         if let Some(path) = &svg_to {
             crate::shell::files::check_write(&sh.write_rule, path)?;
             let one = std::slice::from_ref(&series);
-            let title = format!("PTO{ch} profile plan: {} pulses, {} segments", tl.total_pulses, tl.points.len());
+            let title = crate::msg!(
+                "shell-profile-plan-title",
+                channel = ch,
+                pulses = tl.total_pulses,
+                segments = tl.points.len()
+            )
+            .text;
             crate::plot::write_picture(path, one, &title, size.unwrap_or_else(|| crate::plot::default_size(one)))?;
         }
         let mut text = crate::plot::terminal(std::slice::from_ref(&series), 64, 8);
         for (k, p) in tl.points.iter().enumerate() {
-            text.push_str(&format!(
-                "segment {}: {:.6}–{:.6} s  {:.1} Hz  {} pulses\n",
-                k + 1,
-                p.start_us as f64 / 1e6,
-                p.end_us as f64 / 1e6,
-                p.freq_hz,
-                p.pulses
-            ));
+            let line = crate::msg!(
+                "shell-profile-plan-segment",
+                segment = k + 1,
+                from = format!("{:.6}", p.start_us as f64 / 1e6),
+                to = format!("{:.6}", p.end_us as f64 / 1e6),
+                hz = format!("{:.1}", p.freq_hz),
+                pulses = p.pulses
+            );
+            text.push_str(&format!("{line}\n"));
         }
-        text.push_str(&format!(
-            "total: {} pulses in {:.6} s; nothing was written (drop `plan` to run it)",
-            tl.total_pulses,
-            tl.duration_us as f64 / 1e6
+        text.push_str(&crate::msg!(
+            "shell-profile-plan-total",
+            pulses = tl.total_pulses,
+            seconds = format!("{:.6}", tl.duration_us as f64 / 1e6)
         ));
         let mut o =
             Outcome::new("profile").text(text).with("timeline", &tl).with("planned_writes", pr.plan.writes.len());

@@ -57,7 +57,7 @@ fn servo(sh: &mut Shell, args: Args) -> Result<Outcome> {
     })?;
     sh.session.ready(dev)?;
     let Some(&(col, sub)) = rest.first() else {
-        return Err(Error::usage("servo needs a subcommand").hint(SERVO.usage).column(args.offset));
+        return Err(Error::usage(crate::msg!("shell-servo-needs-subcommand")).hint(SERVO.usage).column(args.offset));
     };
     let rest = &rest[1..];
     let name = sh.session.entries()[dev].name.clone();
@@ -76,7 +76,7 @@ fn servo(sh: &mut Shell, args: Args) -> Result<Outcome> {
     if let (true, Some(&(c, w))) =
         (matches!(sub, "status" | "enable" | "disable" | "fault-reset" | "quickstop"), rest.first())
     {
-        return Err(Error::usage(format!("servo {sub} takes nothing after it (got `{w}`)"))
+        return Err(Error::usage(crate::msg!("shell-servo-nothing-after", sub = sub, extra = w))
             .hint(format!("servo {sub}"))
             .column(at(c))
             .device(&name));
@@ -87,9 +87,9 @@ fn servo(sh: &mut Shell, args: Args) -> Result<Outcome> {
         "enable" => {
             let steps = ds402::enable(ops, &w)?;
             let msg = if steps.is_empty() {
-                "already in operation enabled".to_string()
+                crate::msg!("shell-servo-already-enabled").text
             } else {
-                format!("operation enabled ({})", steps.join(" → "))
+                crate::msg!("shell-servo-enabled", steps = steps.join(" → ")).text
             };
             Ok(Outcome::new("servo").text(msg).with("state", "operation enabled").with("steps", steps))
         }
@@ -98,19 +98,16 @@ fn servo(sh: &mut Shell, args: Args) -> Result<Outcome> {
         "quickstop" => state_outcome(ds402::quickstop(ops, &w)?),
         "mode" => {
             let Some(&(c, m)) = rest.first() else {
-                return Err(Error::usage(
-                    "servo mode needs a mode: position, velocity, immediate-velocity, homing, torque or pulse",
-                )
-                .column(at(col)));
+                return Err(Error::usage(crate::msg!("shell-servo-mode-needs")).column(at(col)));
             };
             let n = ds402::mode_number(m).ok_or_else(|| {
-                Error::usage(format!("unknown mode `{m}`"))
+                Error::usage(crate::msg!("shell-servo-unknown-mode", mode = m))
                     .column(at(c))
-                    .hint("position (1), velocity (3), immediate-velocity (-3), homing (6), torque (4), pulse (-4)")
+                    .hint(crate::msg!("shell-hint-servo-modes"))
             })?;
             ds402::set_mode(ops, n)?;
             Ok(Outcome::new("servo")
-                .text(format!("operating mode {n} ({})", ds402::mode_name(n)))
+                .text(crate::msg!("shell-servo-mode-set", number = n, name = ds402::mode_name(n)).text)
                 .with("mode", n)
                 .with("mode_name", ds402::mode_name(n)))
         }
@@ -120,12 +117,17 @@ fn servo(sh: &mut Shell, args: Args) -> Result<Outcome> {
             let on = match rest {
                 [] | [(_, "on")] => true,
                 [(_, "off")] => false,
-                _ => return Err(Error::usage("usage: servo halt [on|off]").column(at(col))),
+                _ => return Err(Error::usage(crate::msg!("shell-usage-line", line = "servo halt [on|off]")).column(at(col))),
             };
             let cw = ds402::halt(ops, on)?;
-            let text = if on { "halted: braking to a stop and holding" } else { "halt released: the motion resumes" };
+            let cw_hex = format!("{cw:04X}");
+            let text = if on {
+                crate::msg!("shell-servo-halted", controlword = cw_hex)
+            } else {
+                crate::msg!("shell-servo-halt-released", controlword = cw_hex)
+            };
             Ok(Outcome::new("servo")
-                .text(format!("{text} (controlword 16#{cw:04X})"))
+                .text(text.text)
                 .with("halt", on)
                 .with("controlword", cw))
         }
@@ -133,18 +135,18 @@ fn servo(sh: &mut Shell, args: Args) -> Result<Outcome> {
             let (_, opts) = lex::options(rest);
             let method = opt_int(&opts, "method", at)?;
             ds402::home(ops, method)?;
-            Ok(Outcome::new("servo").text("homing started (mode 6, controlword 16#000F → 16#001F)"))
+            Ok(Outcome::new("servo").text(crate::msg!("shell-servo-homing").text))
         }
         "wait" => wait(ops, &w, rest, args.offset, at(col)),
         "save" => {
             ds402::save(ops)?;
-            Ok(Outcome::new("servo").text("parameters stored (2FF0.01 = 1)"))
+            Ok(Outcome::new("servo").text(crate::msg!("shell-servo-saved").text))
         }
         "read" => read(ops, &space, rest, args.offset, at(col)),
         "encoder" => encoder(ops, rest, args.offset, at(col)),
         "raw" => raw(ops, rest, args.offset, at(col)),
         "sim" => sim(ops, rest, args.offset, at(col)),
-        other => Err(Error::usage(format!("unknown `servo {other}`")).column(at(col)).hint(SERVO.usage)),
+        other => Err(Error::usage(crate::msg!("shell-servo-unknown", sub = other)).column(at(col)).hint(SERVO.usage)),
     })();
     r.map(|mut o| {
         if matches!(sub, "enable" | "move" | "jog" | "home") {
@@ -164,7 +166,7 @@ fn pick_device<'a>(sh: &mut Shell, words: &'a [lex::Word<'a>]) -> Result<(usize,
         if !SERVO.subcommands.contains(&first) {
             if let Ok(i) = sh.session.index(first) {
                 if !is_servo(sh, i) {
-                    return Err(Error::usage(format!("`{first}` is not a servo drive")).column(col));
+                    return Err(Error::usage(crate::msg!("shell-servo-not-servo", name = first)).column(col));
                 }
                 return Ok((i, &words[1..]));
             }
@@ -178,18 +180,12 @@ fn pick_device<'a>(sh: &mut Shell, words: &'a [lex::Word<'a>]) -> Result<(usize,
     let servos: Vec<usize> = (0..sh.session.entries().len()).filter(|&i| is_servo(sh, i)).collect();
     match servos.as_slice() {
         [i] => Ok((*i, words)),
-        [] => Err(Error::usage("no servo drive is open").hint(concat!(
-            "open one with --device ax=kinco:",
-            crate::core::platform::words::port!(),
-            "?id=1 or connect ax sim-servo:?id=1"
-        ))),
+        [] => Err(Error::usage(crate::msg!("shell-servo-none-open"))
+            .hint(crate::msg!("shell-hint-servo-open", port = crate::core::platform::words::port!()))),
         many => {
             let names: Vec<String> = many.iter().map(|&i| sh.session.entries()[i].name.clone()).collect();
-            Err(Error::usage("several servo drives are open; name one").hint(format!(
-                "servo {} status (open: {})",
-                names[0],
-                names.join(", ")
-            )))
+            Err(Error::usage(crate::msg!("shell-servo-several"))
+                .hint(crate::msg!("shell-hint-servo-several", first = names[0].as_str(), names = names.join(", "))))
         }
     }
 }
@@ -246,7 +242,7 @@ fn opt_int(opts: &[lex::Opt], key: &str, at: impl Fn(usize) -> usize) -> Result<
     match opts.iter().find(|o| o.1 == key) {
         None => Ok(None),
         Some(&(c, _, v)) => {
-            v.parse().map(Some).map_err(|_| Error::usage(format!("`{key}={v}` is not a whole number")).column(at(c)))
+            v.parse().map(Some).map_err(|_| Error::usage(crate::msg!("shell-servo-not-whole", key = key, value = v)).column(at(c)))
         }
     }
 }
@@ -261,9 +257,9 @@ fn profile(space: &ServoSpace, opts: &[lex::Opt], known: &[&str], at: usize, wit
             "acc" => p.acc = Some(value_for(space, "profile_acceleration", v, v_col)?),
             "dec" => p.dec = Some(value_for(space, "profile_deceleration", v, v_col)?),
             _ => {
-                return Err(Error::usage(format!("unknown option `{k}`"))
+                return Err(Error::usage(crate::msg!("shell-unknown-option", key = k))
                     .column(c)
-                    .hint(format!("options: {}", known.join(", "))))
+                    .hint(crate::msg!("shell-hint-servo-options", options = known.join(", "))))
             }
         }
     }
@@ -282,9 +278,11 @@ fn move_cmd(
     let (kind, target) = match pos.as_slice() {
         [(_, k), (c, p)] if *k == "abs" || *k == "rel" => (*k, value_for(space, "target_position", p, base + c)?),
         _ => {
-            return Err(
-                Error::usage("usage: servo move abs|rel POS [speed=300rpm acc=100rps/s dec=100rps/s]").column(col)
-            )
+            return Err(Error::usage(crate::msg!(
+                "shell-usage-line",
+                line = "servo move abs|rel POS [speed=300rpm acc=100rps/s dec=100rps/s]"
+            ))
+            .column(col))
         }
     };
     let p = profile(space, &opts, &["speed", "acc", "dec"], base, true)?;
@@ -293,10 +291,13 @@ fn move_cmd(
     }
     ds402::move_to(ops, w, kind == "rel", target, p)?;
     let r = space.resolution.get();
-    let mut text = format!("{} move to {target} inc started", if kind == "rel" { "relative" } else { "absolute" });
-    if let Some(s) = p.speed {
-        text.push_str(&format!(" at {} rpm ({s} DEC)", units::show(units::dec_to_rpm(s, r))));
-    }
+    let text = match p.speed {
+        Some(s) => {
+            let rpm = units::show(units::dec_to_rpm(s, r));
+            crate::msg!("shell-servo-move-speed", kind = kind, target = target, rpm = rpm, dec = s).text
+        }
+        None => crate::msg!("shell-servo-move", kind = kind, target = target).text,
+    };
     let mut o = Outcome::new("servo").text(text).with("move", kind).with("target_position", target);
     for (k, v) in [("profile_velocity", p.speed), ("profile_acceleration", p.acc), ("profile_deceleration", p.dec)] {
         if let Some(v) = v {
@@ -309,9 +310,7 @@ fn move_cmd(
 fn jog(ops: &mut dyn ServoOps, space: &ServoSpace, rest: &[lex::Word], base: usize, col: usize) -> Result<Outcome> {
     let (pos, opts) = lex::options(rest);
     let [(c, s)] = pos.as_slice() else {
-        return Err(
-            Error::usage("usage: servo jog SPEED [acc=… dec=…], e.g. servo jog 300rpm; servo jog 0 stops").column(col)
-        );
+        return Err(Error::usage(crate::msg!("shell-servo-jog-usage")).column(col));
     };
     let speed = value_for(space, "target_velocity", s, base + c)?;
     within_max_speed(ops, space, speed, base + c)?;
@@ -319,7 +318,7 @@ fn jog(ops: &mut dyn ServoOps, space: &ServoSpace, rest: &[lex::Word], base: usi
     ds402::jog(ops, speed, p)?;
     let rpm = units::dec_to_rpm(speed, space.resolution.get());
     Ok(Outcome::new("servo")
-        .text(format!("jogging at {} rpm ({speed} DEC, mode 3)", units::show(rpm)))
+        .text(crate::msg!("shell-servo-jogging", rpm = units::show(rpm), dec = speed).text)
         .with("target_velocity", speed)
         .with("rpm", rpm))
 }
@@ -335,13 +334,11 @@ fn within_max_speed(ops: &mut dyn ServoOps, space: &ServoSpace, speed: i64, col:
     if max_rpm > 0.0 && rpm.abs() > max_rpm {
         return Err(Error::new(
             crate::core::ErrorKind::Range,
-            format!("{} rpm is above the drive's maximum speed of {max_rpm} rpm (6080.00 max_speed)", units::show(rpm)),
+            crate::msg!("shell-servo-over-max", rpm = units::show(rpm), max = max_rpm.to_string()),
         )
         .operand("max_speed")
         .column(col)
-        .hint(format!(
-            "a speed up to {max_rpm}rpm; the maximum is the drive's setting 6080.00 (servo read max_speed)"
-        )));
+        .hint(crate::msg!("shell-hint-servo-max", max = max_rpm.to_string())));
     }
     Ok(())
 }
@@ -349,14 +346,14 @@ fn within_max_speed(ops: &mut dyn ServoOps, space: &ServoSpace, speed: i64, col:
 fn wait(ops: &mut dyn ServoOps, w: &Waiter, rest: &[lex::Word], base: usize, col: usize) -> Result<Outcome> {
     let (pos, opts) = lex::options(rest);
     if !matches!(pos.as_slice(), [(_, "target")]) {
-        return Err(Error::usage("usage: servo wait target [timeout=5s]").column(col));
+        return Err(Error::usage(crate::msg!("shell-usage-line", line = "servo wait target [timeout=5s]")).column(col));
     }
     let mut timeout = DEFAULT_WAIT;
     for &(c, k, v) in &opts {
         if k != "timeout" {
-            return Err(Error::usage(format!("unknown option `{k}`"))
+            return Err(Error::usage(crate::msg!("shell-unknown-option", key = k))
                 .column(base + c)
-                .hint("servo wait target timeout=5s"));
+                .hint(crate::msg!("shell-hint-servo-wait")));
         }
         let us = parse_option_duration_us(v).map_err(|m| Error::usage(m).column(base + c + k.len() + 1))?;
         timeout = Duration::from_micros(us.max(0) as u64);
@@ -366,7 +363,7 @@ fn wait(ops: &mut dyn ServoOps, w: &Waiter, rest: &[lex::Word], base: usize, col
     let took = w.clock.now() - start;
     let pos = ds402::read(ops, "position_actual")?;
     Ok(Outcome::new("servo")
-        .text(format!("target reached after {:.3} s (position_actual {pos} inc)", took.as_secs_f64()))
+        .text(crate::msg!("shell-servo-target-reached", seconds = format!("{:.3}", took.as_secs_f64()), position = pos).text)
         .with("statusword", sw)
         .with("position_actual", pos)
         .with("waited_s", took.as_secs_f64()))
@@ -376,9 +373,7 @@ fn wait(ops: &mut dyn ServoOps, w: &Waiter, rest: &[lex::Word], base: usize, col
 /// plus `objects: [{operand, index, value, unit, eng, eng_unit}]`.
 fn read(ops: &mut dyn ServoOps, space: &ServoSpace, rest: &[lex::Word], base: usize, col: usize) -> Result<Outcome> {
     if rest.is_empty() {
-        return Err(
-            Error::usage("servo read needs objects, e.g. servo read target_velocity position_actual").column(col)
-        );
+        return Err(Error::usage(crate::msg!("shell-servo-read-needs")).column(col));
     }
     let r = space.resolution.get();
     let mut rows = Vec::new();
@@ -406,7 +401,7 @@ fn read(ops: &mut dyn ServoOps, space: &ServoSpace, rest: &[lex::Word], base: us
         values.push(Reading::plain(o.name(), v, o.dtype));
     }
     let mut out = Outcome::new("servo")
-        .table(&["object", "index", "value", "unit", "engineering"], rows)
+        .table(&crate::output::headings(crate::msg!("shell-servo-read-columns")), rows)
         .with("objects", objs)
         .with("encoder_resolution", r);
     out.values = values;
@@ -421,10 +416,11 @@ fn encoder(ops: &mut dyn ServoOps, rest: &[lex::Word], base: usize, col: usize) 
             ops.read_resolution()?;
         }
         [(c, v)] => res.set(units::parse_resolution(v).map_err(|m| Error::usage(m).column(base + c))?),
-        _ => return Err(Error::usage("usage: servo encoder [N|auto]").column(col)),
+        _ => return Err(Error::usage(crate::msg!("shell-usage-line", line = "servo encoder [N|auto]")).column(col)),
     }
     let r = res.get();
-    Ok(Outcome::new("servo").text(format!("encoder resolution {r} inc/rev")).with("encoder_resolution", r))
+    let text = crate::msg!("shell-servo-encoder", resolution = r.to_string()).text;
+    Ok(Outcome::new("servo").text(text).with("encoder_resolution", r))
 }
 
 /// `servo raw 01 40 41 60 00 00 00 00 00 [CS]`: 9 bytes get their checksum appended;
@@ -434,7 +430,7 @@ fn raw(ops: &mut dyn ServoOps, rest: &[lex::Word], base: usize, col: usize) -> R
     for &(c, w) in rest {
         let h = w.trim_start_matches("0x").trim_start_matches("16#");
         let b =
-            u8::from_str_radix(h, 16).map_err(|_| Error::usage(format!("`{w}` is not a hex byte")).column(base + c))?;
+            u8::from_str_radix(h, 16).map_err(|_| Error::usage(crate::msg!("shell-servo-not-hex-byte", text = w)).column(base + c))?;
         bytes.push(b);
     }
     let frame: [u8; FRAME_LEN] = match bytes.len() {
@@ -446,9 +442,9 @@ fn raw(ops: &mut dyn ServoOps, rest: &[lex::Word], base: usize, col: usize) -> R
         }
         10 => bytes.try_into().expect("10 bytes"),
         n => {
-            return Err(Error::usage(format!("a frame is 9 bytes (checksum added) or 10 bytes, not {n}"))
+            return Err(Error::usage(crate::msg!("shell-servo-frame-length", count = n))
                 .column(col)
-                .hint("e.g. servo raw 01 40 41 60 00 00 00 00 00"))
+                .hint(crate::msg!("shell-hint-servo-raw")))
         }
     };
     let reply = ops.raw_frame(frame)?;
@@ -501,7 +497,7 @@ fn sim(ops: &mut dyn ServoOps, rest: &[lex::Word], base: usize, col: usize) -> R
     let id = ops.drive_id();
     let words: Vec<(usize, &str)> = rest.iter().map(|&(c, w)| (base + c, w)).collect();
     if words.is_empty() {
-        return Err(Error::usage("servo sim needs a control").column(col).hint(control::USAGE));
+        return Err(Error::usage(crate::msg!("shell-servo-sim-needs")).column(col).hint(control::USAGE));
     }
     let req = control::parse(&words)?;
     let (text, data) = if let Some(line) = ops.simulator() {
@@ -514,11 +510,9 @@ fn sim(ops: &mut dyn ServoOps, rest: &[lex::Word], base: usize, col: usize) -> R
         }
         control::send(&path, &line)?
     } else {
-        return Err(Error::unsupported(
-            "servo sim works on simulated drives: in-process (sim-servo:), served by plcsh sim serve --servo-pty LINK, or served with --servo-tcp ADDR --servo-control PATH and opened with control=PATH",
-        )
-        .column(col)
-        .hint("a served drive's control socket is LINK.ctl; give it as control=PATH in the kinco: URL if it is elsewhere"));
+        return Err(Error::unsupported(crate::msg!("shell-servo-sim-needs-simulator"))
+            .column(col)
+            .hint(crate::msg!("shell-hint-servo-sim-control")));
     };
     let mut o = Outcome::new("servo").text(text);
     if let serde_json::Value::Object(m) = data {

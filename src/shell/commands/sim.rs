@@ -36,9 +36,9 @@ fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
         _ => usize::MAX,
     };
     if let Some(w) = args.text.split_whitespace().nth(1 + takes.min(8)).filter(|_| takes != usize::MAX) {
-        let form = if sub == "step" { "sim step DURATION (e.g. sim step 1s, sim step 500ms)" } else { SIM.usage };
-        return Err(Error::usage(format!("unexpected `{w}` after `sim {sub}`"))
-            .hint(form.to_string())
+        let form = if sub == "step" { crate::msg!("shell-sim-step-form").text } else { SIM.usage.to_string() };
+        return Err(Error::usage(crate::msg!("shell-unexpected-after-sim", extra = w, sub = sub))
+            .hint(form)
             .column(args.offset + args.text.find(w).unwrap_or(0)));
     }
     match sub {
@@ -46,16 +46,17 @@ fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
         "step" => {
             let d = it
                 .next()
-                .ok_or_else(|| Error::usage("sim step needs a duration, e.g. sim step 500ms").column(args.offset))?;
+                .ok_or_else(|| Error::usage(crate::msg!("shell-sim-step-needs-duration")).column(args.offset))?;
             let us = parse_option_duration_us(d).map_err(|m| Error::usage(m).column(args.offset + 5))?;
             if us < 0 {
-                return Err(Error::usage("time only moves forward"));
+                return Err(Error::usage(crate::msg!("shell-sim-time-forward")));
             }
             let step = Duration::from_micros(us as u64);
             if clock.now().checked_add(step).is_none_or(|t| t > Clock::LATEST) {
-                return Err(Error::usage(format!(
-                    "sim step {d} would take the simulated clock past {:.0} s (about 584 years), the latest time it counts",
-                    Clock::LATEST.as_secs_f64()
+                return Err(Error::usage(crate::msg!(
+                    "shell-sim-step-too-far",
+                    step = d,
+                    latest = format!("{:.0}", Clock::LATEST.as_secs_f64())
                 ))
                 .column(args.offset + 5));
             }
@@ -67,28 +68,26 @@ fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
             // Under a simulated-time limit (a graded run) the clock stays simulated: the
             // wall clock would make the run's results depend on the machine's speed.
             Some("real") if sh.session.budget.is_some() => {
-                return Err(Error::unsupported(
-                    "`sim clock real` is not available in a graded run: its clock is simulated",
-                )
-                .hint("wait with sim step DURATION or plcsh.sleep(ms)"))
+                return Err(Error::unsupported(crate::msg!("shell-sim-clock-graded"))
+                    .hint(crate::msg!("shell-hint-sim-clock-graded")))
             }
             Some("real") => clock.run(),
             Some("stepped") => clock.step(Duration::ZERO),
             Some(w) => {
-                return Err(Error::usage(format!("`{w}` is not a clock mode"))
-                    .hint("sim clock real (follow the wall clock) | sim clock stepped (move only with sim step)")
+                return Err(Error::usage(crate::msg!("shell-sim-not-clock-mode", mode = w))
+                    .hint(crate::msg!("shell-hint-sim-clock-modes"))
                     .column(args.offset + args.text.find(w).unwrap_or(0)))
             }
         },
         "run" => {
-            return Err(Error::usage("`sim run` is ambiguous: say which runs")
+            return Err(Error::usage(crate::msg!("shell-sim-run-ambiguous"))
                 // Within 80 columns after `  hint: `.
-                .hint("sim clock real: time follows the clock; sim cpu run: the program runs")
+                .hint(crate::msg!("shell-hint-sim-run-ambiguous"))
                 .column(args.offset));
         }
         "serve" | "control" => {
-            return Err(Error::usage(format!("`sim {sub}` is a command-line command, not a shell command"))
-                .hint(format!("in another terminal: plcsh sim {sub} … (plcsh sim {sub} --help lists its options)"))
+            return Err(Error::usage(crate::msg!("shell-sim-cli-only", sub = sub))
+                .hint(crate::msg!("shell-hint-sim-cli-only", sub = sub))
                 .column(args.offset))
         }
         "input" if super::umpk::current_is_umpk(sh) => return super::umpk::sim_input(sh, args),
@@ -111,21 +110,22 @@ fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
             let words = crate::shell::lex::words_in(&args)?;
             if sub == "fault" && words.get(1).is_some_and(|w| w.1.eq_ignore_ascii_case("clear")) {
                 const FORM: &str = "sim fault clear [ID|all]";
-                const HINT: &str =
-                    "sim fault clear (every fault) | sim fault clear 2 (fault 2; `sim faults` lists the ids)";
+                let hint = || crate::msg!("shell-hint-fault-clear");
                 if let Some(&(col, extra)) = words.get(3) {
                     let typed: Vec<&str> = words[..3].iter().map(|w| w.1).collect();
-                    return Err(Error::usage(format!(
-                        "unexpected `{extra}` after `sim {}`: the form is {FORM}",
-                        typed.join(" ")
+                    return Err(Error::usage(crate::msg!(
+                        "shell-unexpected-after",
+                        extra = extra,
+                        typed = format!("sim {}", typed.join(" ")),
+                        forms = FORM
                     ))
-                    .hint(HINT)
+                    .hint(hint())
                     .column(col));
                 }
                 if let Some(&(col, id)) = words.get(2) {
                     if !id.eq_ignore_ascii_case("all") && id.parse::<u32>().is_err() {
-                        return Err(Error::usage(format!("`{id}` is not a fault id: the form is {FORM}"))
-                            .hint(HINT)
+                        return Err(Error::usage(crate::msg!("shell-not-a-fault-id", id = id, form = FORM))
+                            .hint(hint())
                             .column(col));
                     }
                 }
@@ -142,7 +142,7 @@ fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
                     .session
                     .current_index()
                     .ok()
-                    .and_then(|d| super::k2cmd::sim(sh, d, "sim scan").ok())
+                    .and_then(|d| super::k2cmd::sim(sh, d, &format!("sim {sub}")).ok())
                     .map(|s| s.last)
                 {
                     let now = clock.now();
@@ -153,12 +153,12 @@ fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
             }
             return Ok(o);
         }
-        other => return Err(Error::usage(format!("unknown `sim {other}`")).hint(SIM.usage).column(args.offset)),
+        other => return Err(Error::usage(crate::msg!("shell-sim-unknown", sub = other)).hint(SIM.usage).column(args.offset)),
     }
     let now = clock.now();
-    let mode = if clock.is_stepped() { "stepped" } else { "following the wall clock" };
+    let mode = if clock.is_stepped() { "stepped" } else { "wall" };
     Ok(Outcome::new("sim")
-        .text(format!("simulator time {} ({mode})", format_time(now)))
+        .text(crate::msg!("shell-sim-time", time = format_time(now), mode = mode).text)
         .with("time_us", now.as_micros() as u64)
         .with("stepped", clock.is_stepped()))
 }

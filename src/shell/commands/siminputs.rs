@@ -19,14 +19,14 @@ fn pin(w: Word) -> Result<Pin> {
     let body = t.trim_start_matches('%').strip_prefix('I');
     body.and_then(|b| b.split_once('.'))
         .and_then(|(b, bit)| Some((b.parse().ok()?, bit.parse().ok().filter(|x: &u8| *x < 8)?)))
-        .ok_or_else(|| value_err(w.0, format!("`{}` is not an input bit (e.g. I0.1)", w.1)))
+        .ok_or_else(|| value_err(w.0, crate::msg!("shell-not-an-input-bit", text = w.1)))
 }
 
 fn hz(opts: &[lex::Opt]) -> Result<u64> {
-    let (c, f) = opt(opts, "freq").ok_or_else(|| Error::usage("a signal needs freq=, e.g. freq=1kHz").hint(USAGE))?;
+    let (c, f) = opt(opts, "freq").ok_or_else(|| Error::usage(crate::msg!("shell-signal-needs-freq")).hint(USAGE))?;
     let hz = parse_freq_hz(f).map_err(|m| value_err(c, m))?;
     if hz.fract() != 0.0 || hz > 10_000_000.0 {
-        return Err(value_err(c, format!("freq={f}: whole Hz up to 10 MHz")));
+        return Err(value_err(c, crate::msg!("shell-signal-freq", value = f)));
     }
     Ok(hz as u64)
 }
@@ -37,15 +37,17 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
     let (pos, opts) = lex::options(w);
     let dev = sh.session.current_index()?;
     let name = k2cmd::name(sh, dev);
+    // The command as typed (`sim input`), for the simulator-only error.
+    let command = format!("sim {sub}");
     let mut o = match sub {
         "inputs" => {
             if let Some(w) = args.text.split_whitespace().nth(1) {
-                return Err(Error::usage(format!("sim inputs takes nothing after it (got `{w}`)")).hint(USAGE));
+                return Err(Error::usage(crate::msg!("shell-sim-inputs-alone", extra = w)).hint(USAGE));
             }
-            let s = k2cmd::sim(sh, dev, "sim inputs")?;
+            let s = k2cmd::sim(sh, dev, &command)?;
             let list: Vec<String> = s.inputs.sources().iter().map(|s| s.describe()).collect();
             Outcome::new("sim")
-                .text(if list.is_empty() { "no simulated input signals".into() } else { list.join("\n") })
+                .text(if list.is_empty() { crate::msg!("shell-no-input-signals").text } else { list.join("\n") })
                 .with("sources", &list)
         }
         "retain" => {
@@ -54,11 +56,11 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
             // read as an operand named `none`.
             if let Some(at) = w.iter().position(|x| x.1.eq_ignore_ascii_case("none")).filter(|_| w.len() > 1) {
                 let other = if at == 0 { w[1] } else { w[0] };
-                return Err(Error::usage(format!("`sim retain none` stands alone (got `{}` beside it)", other.1))
-                    .hint("sim retain none (retain nothing) | sim retain VB0..VB99 MB0[8] (these ranges)")
+                return Err(Error::usage(crate::msg!("shell-retain-none-alone", extra = other.1))
+                    .hint(crate::msg!("shell-hint-retain-forms"))
                     .column(other.0));
             }
-            let s = k2cmd::sim(sh, dev, "sim retain")?;
+            let s = k2cmd::sim(sh, dev, &command)?;
             if !text.is_empty() {
                 // A range that is not an operand is named at its column.
                 for x in w {
@@ -76,9 +78,9 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
                 .collect();
             Outcome::new("sim")
                 .text(if list.is_empty() {
-                    "no retained ranges".into()
+                    crate::msg!("shell-no-retained").text
                 } else {
-                    format!("retained: {}", list.join(" "))
+                    crate::msg!("shell-retained", ranges = list.join(" ")).text
                 })
                 .with("retain", &list)
         }
@@ -86,12 +88,12 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
             check_options(&opts, &["freq", "dir"], USAGE)?;
             let p = pin(*pos.first().ok_or_else(|| Error::usage(USAGE).column(args.offset))?)?;
             if pos.get(1).is_some_and(|w| w.1.eq_ignore_ascii_case("off")) {
-                let s = k2cmd::sim(sh, dev, "sim input")?;
+                let s = k2cmd::sim(sh, dev, &command)?;
                 let old = s.remove_source(p).map_err(|e| e.device(&name))?;
-                Outcome::new("sim").text(format!("stopped: {}", old.describe()))
+                Outcome::new("sim").text(crate::msg!("shell-signal-stopped", signal = old.describe()).text)
             } else {
                 if let Some(x) = pos.get(1) {
-                    return Err(Error::usage(format!("unexpected `{}`", x.1)).column(x.0).hint(USAGE));
+                    return Err(Error::usage(crate::msg!("shell-unexpected", extra = x.1)).column(x.0).hint(USAGE));
                 }
                 let f = hz(&opts)?;
                 let mut msg = String::new();
@@ -99,7 +101,7 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
                     let up = match d.to_ascii_lowercase().as_str() {
                         "up" => true,
                         "down" => false,
-                        _ => return Err(value_err(c, format!("dir={d}: use up or down"))),
+                        _ => return Err(value_err(c, crate::msg!("shell-hsc-dir", value = d))),
                     };
                     // The direction input paired with this count input (modes 3/4, §3.3.1).
                     let dir = HSC_MODE_INPUTS
@@ -107,13 +109,13 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
                         .find(|m| m.kind == HscKind::ExternalDir && m.count == p)
                         .and_then(|m| m.dir)
                         .ok_or_else(|| {
-                            value_err(c, format!("{} has no direction input: dir= applies to I0.1 (direction I0.5) and I0.3 (direction I0.2)", pin_name(p)))
+                            value_err(c, crate::msg!("shell-no-direction-input", input = pin_name(p)))
                         })?;
                     let op = crate::k2::operand::K2Operand::bit(crate::k2::operand::Area::I, dir.0, dir.1).to_core();
                     sh.session.write_values(dev, &[(op, Value::Bool(up))])?;
-                    msg = format!("; direction input {} = {}", pin_name(dir), u8::from(up));
+                    msg = crate::msg!("shell-direction-input", input = pin_name(dir), value = u8::from(up)).text;
                 }
-                let s = k2cmd::sim(sh, dev, "sim input")?;
+                let s = k2cmd::sim(sh, dev, &command)?;
                 let d = s
                     .add_source(Source::Freq { pin: p, wave: Wave::new(f, Duration::ZERO) })
                     .map_err(|e| e.device(&name))?;
@@ -123,23 +125,23 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
         "quad" => {
             check_options(&opts, &["freq", "dir"], USAGE)?;
             if pos.len() != 2 {
-                return Err(Error::usage("sim quad needs two inputs: A (leading) and B")
+                return Err(Error::usage(crate::msg!("shell-quad-needs-two"))
                     .column(args.offset)
                     .hint(USAGE));
             }
             let (mut a, mut b) = (pin(pos[0])?, pin(pos[1])?);
             if a == b {
-                return Err(value_err(pos[1].0, "A and B must be different inputs"));
+                return Err(value_err(pos[1].0, crate::msg!("shell-quad-same-input")));
             }
             if let Some((c, d)) = opt(&opts, "dir") {
                 match d.to_ascii_lowercase().as_str() {
                     "up" => {}
                     "down" => std::mem::swap(&mut a, &mut b),
-                    _ => return Err(value_err(c, format!("dir={d}: use up (A leads) or down (B leads)"))),
+                    _ => return Err(value_err(c, crate::msg!("shell-quad-dir", value = d))),
                 }
             }
             let f = hz(&opts)?;
-            let s = k2cmd::sim(sh, dev, "sim quad")?;
+            let s = k2cmd::sim(sh, dev, &command)?;
             let d = s
                 .add_source(Source::Quad { lead: a, lag: b, wave: Wave::new(f, Duration::ZERO) })
                 .map_err(|e| e.device(&name))?;

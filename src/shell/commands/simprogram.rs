@@ -21,45 +21,58 @@ fn ms(ns: u64) -> f64 {
 pub fn status(s: &K2Sim, name: &str) -> Outcome {
     let Some(p) = s.plc() else {
         return Outcome::new("sim")
-            .text(format!("{name}: no program loaded (sim program load FILE.il)"))
+            .text(crate::msg!("shell-sim-no-program", name = name).text)
             .with("mode", "RUN");
     };
     let st = p.stats;
-    let mut lines =
-        vec![format!("{name}: CPU {}{}", p.mode.name(), if p.switch_run { "" } else { " (switch at STOP)" })];
+    let switch = if p.switch_run { "run" } else { "stop" };
+    let mut lines = vec![crate::msg!("shell-sim-cpu", name = name, mode = p.mode.name(), switch = switch).text];
     for (what, l) in [("program", &p.user), ("helper", &p.helper)] {
         if let Some(l) = l {
-            lines.push(format!("{what}: {} ({} instructions)", l.source, l.prog.source_instructions));
+            let source = l.source.to_string();
+            let n = l.prog.source_instructions;
+            lines.push(crate::msg!("shell-sim-loaded", what = what, source = source, instructions = n).text);
         }
     }
-    lines.push(format!(
-        "scans {}; scan time last {} ms, min {} ms, max {} ms (SMW22/24/26); {} instructions in the last scan; {} interrupt routines run",
-        st.scans,
-        ms(st.last_ns),
-        ms(st.min_ns),
-        ms(st.max_ns),
-        st.last_instructions,
-        st.interrupts
-    ));
-    lines.push(format!(
-        "watchdog {} ms, minimum scan {} ms, overhead {} ms",
-        ms(p.costs.watchdog_ns),
-        ms(p.costs.min_scan_ns),
-        ms(p.costs.overhead_ns)
-    ));
+    lines.push(
+        crate::msg!(
+            "shell-sim-scans",
+            scans = st.scans,
+            last = ms(st.last_ns).to_string(),
+            min = ms(st.min_ns).to_string(),
+            max = ms(st.max_ns).to_string(),
+            instructions = st.last_instructions,
+            interrupts = st.interrupts
+        )
+        .text,
+    );
+    lines.push(
+        crate::msg!(
+            "shell-sim-costs",
+            watchdog = ms(p.costs.watchdog_ns).to_string(),
+            min_scan = ms(p.costs.min_scan_ns).to_string(),
+            overhead = ms(p.costs.overhead_ns).to_string()
+        )
+        .text,
+    );
     if p.mode == Mode::Stop && p.stopped_by_program {
-        lines.push("stopped by the program's STOP instruction (sim cpu run restarts it)".to_string());
+        lines.push(crate::msg!("shell-sim-stopped-by-program").text);
     }
     for f in &p.faults {
-        lines.push(format!("fault at {:.3} s: {f}", f.at_ns as f64 / 1e9));
+        lines.push(
+            crate::msg!("shell-sim-fault", at = format!("{:.3}", f.at_ns as f64 / 1e9), fault = f.to_string()).text,
+        );
     }
     if let Some(last) = p.errors.last() {
-        lines.push(format!(
-            "Err LED on: {} normal error{} (the CPU continues); last at {:.3} s: {last}",
-            p.error_count,
-            if p.error_count == 1 { "" } else { "s" },
-            last.at_ns as f64 / 1e9
-        ));
+        lines.push(
+            crate::msg!(
+                "shell-sim-err-led",
+                count = p.error_count,
+                at = format!("{:.3}", last.at_ns as f64 / 1e9),
+                error = last.to_string()
+            )
+            .text,
+        );
     }
     let record = |f: &crate::engine::Fault| {
         serde_json::json!({"code": f.kind.code(), "kind": f.kind.name(), "message": f.message,
@@ -129,16 +142,20 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
             Some("run") => Ok(Mode::Run),
             Some("stop") => Ok(Mode::Stop),
             Some("pause") => Ok(Mode::Pause),
-            _ => Err(Error::usage("sim cpu needs run, stop or pause").hint(USAGE)),
+            _ => Err(Error::usage(crate::msg!("shell-sim-cpu-needs-mode")).hint(USAGE)),
         }
     };
     match sub {
         "program" => match words.get(1).copied() {
             None | Some("status") => Ok(status(s, &name)),
             Some("load") => {
-                let (c, path) = file.ok_or_else(|| Error::usage("sim program load needs a file, e.g. prog.il"))?;
+                let (c, path) = file.ok_or_else(|| Error::usage(crate::msg!("shell-sim-load-needs-file", example = "prog.il")))?;
                 let text = crate::core::encoding::read_source(&path)
-                    .map_err(|e| Error::io(format!("cannot read {path}: {e}")).device(name.clone()).column(c))?;
+                    .map_err(|e| {
+                        Error::io(crate::msg!("shell-cannot-read-because", file = path.as_str(), reason = e.to_string()))
+                            .device(name.clone())
+                            .column(c)
+                    })?;
                 let tags = match &tag_file {
                     Some((c, t)) => Some(
                         crate::profile::tags::load(std::path::Path::new(t), None, s.space())
@@ -168,13 +185,14 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
             Some("stop-outputs") => {
                 let b = s.set_stop_outputs(&words[2..].join(" ")).map_err(|e| e.device(name.clone()))?;
                 let text: Vec<String> = b.iter().enumerate().map(|(i, v)| format!("QB{i}=16#{v:02X}")).collect();
-                Ok(Outcome::new("sim").text(format!("STOP values: {}", text.join(" "))).with("stop_outputs", b))
+                let text = crate::msg!("shell-sim-stop-values", values = text.join(" ")).text;
+                Ok(Outcome::new("sim").text(text).with("stop_outputs", b))
             }
             Some("unload") => {
                 s.unload_program();
                 Ok(status(s, &name))
             }
-            Some(o) => Err(Error::usage(format!("unknown `sim program {o}`")).hint(USAGE)),
+            Some(o) => Err(Error::usage(crate::msg!("shell-sim-program-unknown", sub = o)).hint(USAGE)),
         },
         "cpu" | "stop" | "pause" => {
             let m = if sub == "cpu" { mode(words.get(1))? } else { mode(Some(&sub))? };
@@ -185,7 +203,7 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
             let run = match words.get(1).map(|w| w.to_ascii_lowercase()).as_deref() {
                 Some("run") => true,
                 Some("stop") => false,
-                _ => return Err(Error::usage("sim switch run|stop (the simulated RUN/STOP switch)")),
+                _ => return Err(Error::usage(crate::msg!("shell-sim-switch-form"))),
             };
             s.set_switch(run).map_err(|e| e.device(name.clone()))?;
             Ok(status(s, &name))
@@ -194,7 +212,7 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
             let n: u64 =
                 match words.get(1) {
                     Some(w) => w.parse().ok().filter(|n| (1..=10_000_000).contains(n)).ok_or_else(|| {
-                        Error::usage(format!("sim scan N: N is a number of scans 1…10000000, not `{w}`"))
+                        Error::usage(crate::msg!("shell-sim-scan-count", text = *w))
                     })?,
                     None => 1,
                 };
@@ -212,17 +230,15 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
                 "" => {
                     let b = s.breakpoints();
                     if b.is_empty() {
-                        "no breakpoints".to_string()
+                        crate::msg!("shell-sim-no-breakpoints").text
                     } else {
-                        format!(
-                            "breakpoints at lines {}",
-                            b.iter().map(|l| l.to_string()).collect::<Vec<_>>().join(", ")
-                        )
+                        let lines = b.iter().map(|l| l.to_string()).collect::<Vec<_>>().join(", ");
+                        crate::msg!("shell-sim-breakpoints", count = b.len(), lines = lines).text
                     }
                 }
                 "clear" => {
                     s.clear_breakpoints();
-                    "breakpoints cleared".to_string()
+                    crate::msg!("shell-sim-breakpoints-cleared").text
                 }
                 spec => s.set_breakpoint(spec).map_err(|e| e.device(name.clone()))?,
             };
@@ -235,7 +251,7 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
                     .parse()
                     .ok()
                     .filter(|n| (1..=100_000).contains(n))
-                    .ok_or_else(|| Error::usage(format!("sim stepi N: N is 1…100000, not `{w}`")))?,
+                    .ok_or_else(|| Error::usage(crate::msg!("shell-sim-stepi-count", text = *w)))?,
                 _ => 1,
             };
             let steps = s.debug_step(n, sub == "stepn").map_err(|e| e.device(name.clone()))?;

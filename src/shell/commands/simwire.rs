@@ -12,7 +12,7 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
     match sub {
         "wire" => {
             if rest.is_empty() {
-                return Err(Error::usage("sim wire needs FROM -> TO").hint(USAGE).column(args.offset));
+                return Err(Error::usage(crate::msg!("shell-wire-needs-ends")).hint(USAGE).column(args.offset));
             }
             let msg = crate::wiring::setup::wire(&mut sh.session, rest)?;
             let wires = crate::wiring::setup::list(&mut sh.session);
@@ -20,12 +20,12 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
         }
         "wires" => {
             let wires = crate::wiring::setup::list(&mut sh.session);
-            let text = if wires.is_empty() { "nothing is wired".to_string() } else { wires.join("\n") };
+            let text = if wires.is_empty() { crate::msg!("shell-nothing-wired").text } else { wires.join("\n") };
             Ok(Outcome::new("sim").text(text).with("wires", &wires))
         }
         _ => {
             if rest.is_empty() {
-                return Err(Error::usage("sim unwire needs a terminal or `all`").hint(USAGE).column(args.offset));
+                return Err(Error::usage(crate::msg!("shell-unwire-needs-terminal")).hint(USAGE).column(args.offset));
             }
             let gone = crate::wiring::setup::unwire(&mut sh.session, rest)?;
             Ok(Outcome::new("sim").text(format!("unwired {}", gone.join("; "))).with("removed", &gone))

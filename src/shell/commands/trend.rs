@@ -33,7 +33,7 @@ pub const PLOT: CommandSpec = CommandSpec {
 
 fn write_file(sh: &Shell, path: &str, text: &str, col: usize) -> Result<()> {
     crate::shell::files::check_write(&sh.write_rule, path).map_err(|e| e.column(col))?;
-    std::fs::write(path, text).map_err(|e| Error::io(format!("cannot write {path}: {e}")).column(col))
+    std::fs::write(path, text).map_err(|e| Error::io(crate::msg!("shell-cannot-write", file = path, reason = e.to_string())).column(col))
 }
 
 fn trace(sh: &mut Shell, args: Args) -> Result<Outcome> {
@@ -67,7 +67,7 @@ fn trace(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let mut progress = Progress::new("trace", total.filter(|_| !sh.session.clock.is_stepped()));
     let stats = sample::run(&mut sh.session, &texts, &plan, |s| {
         rec.push(s);
-        progress.update(s.t, &format!("{} samples", s.index + 1));
+        progress.update(s.t, &crate::msg!("shell-samples", count = s.index + 1));
         Ok(())
     })?;
     progress.finish();
@@ -143,18 +143,18 @@ fn plot(sh: &mut Shell, args: Args) -> Result<Outcome> {
             v.parse()
                 .ok()
                 .filter(|n| (2..=1000).contains(n))
-                .ok_or_else(|| Error::usage(format!("{k}={v} is not a size (2…1000 characters)")).column(col))
+                .ok_or_else(|| Error::usage(crate::msg!("shell-plot-not-a-size", key = k, value = v)).column(col))
         };
         match k {
             "to" => to = Some((col, lex::unquote(v))),
             "width" => width = num(v)?,
             "height" => height = num(v)?,
             "size" => size = Some(crate::plot::parse_size(v).map_err(|m| Error::usage(m).column(col))?),
-            _ => return Err(Error::usage(format!("unknown option `{k}`")).column(col).hint(PLOT.usage)),
+            _ => return Err(Error::usage(crate::msg!("shell-unknown-option", key = k)).column(col).hint(PLOT.usage)),
         }
     }
     let rec = sh.last_trace.as_ref().ok_or_else(|| {
-        Error::usage("nothing to plot yet").hint("record first, e.g. trace SMD72 every=10ms for=2s").column(args.offset)
+        Error::usage(crate::msg!("shell-plot-nothing")).hint(crate::msg!("shell-hint-plot-nothing")).column(args.offset)
     })?;
     let names: Vec<&str> = names.iter().map(|(_, n)| *n).collect();
     let series = rec.series(&names).map_err(|e| e.column(args.offset))?;

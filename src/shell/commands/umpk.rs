@@ -47,7 +47,7 @@ fn pick<'a>(sh: &mut Shell, words: &'a [Word<'a>]) -> Result<(usize, &'a [Word<'
         if !UMPK.subcommands.contains(&first) {
             if let Ok(i) = sh.session.index(first) {
                 if !is_umpk(sh, i) {
-                    return Err(Error::usage(format!("`{first}` is not a UMPK")).column(col));
+                    return Err(Error::usage(crate::msg!("shell-umpk-not-umpk", name = first)).column(col));
                 }
                 return Ok((i, &words[1..]));
             }
@@ -61,12 +61,9 @@ fn pick<'a>(sh: &mut Shell, words: &'a [Word<'a>]) -> Result<(usize, &'a [Word<'
     let all: Vec<usize> = (0..sh.session.entries().len()).filter(|&i| is_umpk(sh, i)).collect();
     match all.as_slice() {
         [i] => Ok((*i, words)),
-        [] => Err(Error::usage("no UMPK is open").hint(concat!(
-            "open one with --device lab=umpk:",
-            crate::core::platform::words::port!(),
-            " or connect lab sim-umpk:UMPK16"
-        ))),
-        _ => Err(Error::usage("several UMPKs are open; name one (umpk NAME info)")),
+        [] => Err(Error::usage(crate::msg!("shell-umpk-none-open"))
+            .hint(crate::msg!("shell-hint-umpk-open", port = crate::core::platform::words::port!()))),
+        _ => Err(Error::usage(crate::msg!("shell-umpk-several"))),
     }
 }
 
@@ -92,7 +89,7 @@ fn umpk(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let (dev, rest) = pick(sh, &words)?;
     sh.session.ready(dev)?;
     let Some(&(col, sub)) = rest.first() else {
-        return Err(Error::usage("umpk needs a subcommand").hint(UMPK.usage).column(args.offset));
+        return Err(Error::usage(crate::msg!("shell-umpk-needs-subcommand")).hint(UMPK.usage).column(args.offset));
     };
     let rest = &rest[1..];
     let name = sh.session.entries()[dev].name.clone();
@@ -102,25 +99,28 @@ fn umpk(sh: &mut Shell, args: Args) -> Result<Outcome> {
             let t = driver(sh, dev).program_info()?;
             let text = String::from_utf8_lossy(&t).into_owned();
             let shown = if text.trim().is_empty() {
-                "(22 spaces: no program, Wait mode)".to_string()
+                crate::msg!("shell-umpk-program-info-none")
             } else {
-                format!("\"{text}\"")
+                crate::msg!("shell-umpk-program-info", info = text.as_str())
             };
-            Ok(Outcome::new("umpk").text(format!("program info {shown}")).with("program_info", text))
+            Ok(Outcome::new("umpk").text(shown.text).with("program_info", text))
         }
         "errors" if rest.first().is_some_and(|w| w.1 == "clear") => errors(changing(sh, dev, "errors-clear")?, rest),
         "errors" => errors(driver(sh, dev), rest),
         "timing" => {
             let t = driver(sh, dev).timing()?;
             Ok(Outcome::new("umpk")
-                .text(format!(
-                    "longest cycle {:.1} µs, firmware {:.1} µs, program {:.1} µs (T = (LLMM − HHKK) × 0.271 µs; HHKK={:04X} LLMM={:04X})",
-                    t.total_us(),
-                    t.firmware_us(),
-                    t.program_us(),
-                    t.firmware,
-                    t.total
-                ))
+                .text(
+                    crate::msg!(
+                        "shell-umpk-timing",
+                        total = format!("{:.1}", t.total_us()),
+                        firmware = format!("{:.1}", t.firmware_us()),
+                        program = format!("{:.1}", t.program_us()),
+                        hhkk = format!("{:04X}", t.firmware),
+                        llmm = format!("{:04X}", t.total)
+                    )
+                    .text,
+                )
                 .with("firmware_counts", t.firmware)
                 .with("total_counts", t.total)
                 .with("program_us", t.program_us())
@@ -129,7 +129,7 @@ fn umpk(sh: &mut Shell, args: Args) -> Result<Outcome> {
         }
         "reset" => {
             changing(sh, dev, "reset")?.reset()?;
-            Ok(Outcome::new("umpk").text("reset: the controller restarted (R received; echo is on)"))
+            Ok(Outcome::new("umpk").text(crate::msg!("shell-umpk-reset").text))
         }
         "echo" => {
             let on = match rest.first().map(|w| w.1) {
@@ -144,7 +144,7 @@ fn umpk(sh: &mut Shell, args: Args) -> Result<Outcome> {
         "program" => program(sh, dev, rest, col),
         "send" => send(changing(sh, dev, "send")?, rest, col),
         "sim" => sim(sh, dev, rest, col),
-        other => Err(Error::usage(format!("unknown `umpk {other}`")).column(col).hint(UMPK.usage)),
+        other => Err(Error::usage(crate::msg!("shell-umpk-unknown", sub = other)).column(col).hint(UMPK.usage)),
     };
     r.map(|mut o| {
         o.device = Some(name.clone());
@@ -177,10 +177,7 @@ pub fn sim_program(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let name = sh.session.entries()[dev].name.clone();
     let col = words.first().map_or(args.offset, |w| w.0);
     let s = driver(sh, dev).simulator().ok_or_else(|| {
-        Error::unsupported(
-            "a real UMPK runs only what is programmed into it (umpk program FILE.hex); IL programs run in the simulator",
-        )
-        .device(&name)
+        Error::unsupported(crate::msg!("shell-umpk-real-program")).device(&name)
         .column(col)
     })?;
     let mut u = s.lock().unwrap_or_else(|p| p.into_inner());
@@ -191,11 +188,16 @@ pub fn sim_program(sh: &mut Shell, args: Args) -> Result<Outcome> {
         Some((_, "load")) => {
             let (args, tag_file) = super::simprogram::tags_option(args)?;
             let (c, path) = lex::one_path(&args, 2, "sim program load")?.ok_or_else(|| {
-                Error::usage("sim program load needs a file, e.g. sim program load scripts/umpk_lab1.il").column(col)
+                Error::usage(crate::msg!("shell-sim-load-needs-file", example = "sim program load scripts/umpk_lab1.il"))
+                    .column(col)
             })?;
             sh.session.check_read(&path).map_err(|e| e.device(&name).column(c))?;
             let text = crate::core::encoding::read_source(&path)
-                .map_err(|e| Error::io(format!("cannot read {path}: {e}")).device(&name).column(c))?;
+                .map_err(|e| {
+                    Error::io(crate::msg!("shell-cannot-read-because", file = path.as_str(), reason = e.to_string()))
+                        .device(&name)
+                        .column(c)
+                })?;
             let tags = match &tag_file {
                 Some((tc, t)) => {
                     sh.session.check_read(t).map_err(|e| e.device(&name).column(*tc))?;
@@ -211,18 +213,18 @@ pub fn sim_program(sh: &mut Shell, args: Args) -> Result<Outcome> {
                 .map_err(|e| e.device(&name))?;
             let n = r.instructions();
             u.load_logic(Box::new(r));
-            Some(format!("{path}: {n} instructions loaded; runs every {CYCLE_MS} ms cycle in Work mode"))
+            Some(crate::msg!("shell-umpk-il-loaded", file = path.as_str(), instructions = n, cycle = CYCLE_MS).text)
         }
         Some((c, other)) => {
-            return Err(Error::usage(format!("unknown `sim program {other}` on a UMPK"))
-                .hint("sim program load FILE.il | sim program")
+            return Err(Error::usage(crate::msg!("shell-umpk-sim-program-unknown", sub = other))
+                .hint(crate::msg!("shell-hint-umpk-sim-program"))
                 .device(&name)
                 .column(c))
         }
     };
     let kind = u.program_kind();
     let mode = u.mode().name();
-    let text = format!("program: {kind}; mode {mode}");
+    let text = crate::msg!("shell-umpk-program-mode", program = kind.as_str(), mode = mode).text;
     let mut o = Outcome::new("sim")
         .text(msg.map_or(text.clone(), |m| format!("{m}\n{text}")))
         .with("program", kind)
@@ -245,24 +247,25 @@ fn info(d: &mut Driver) -> Result<Outcome> {
     let bits = describe_status(&st);
     let model = d.model().name;
     let echo = d.echo.unwrap_or(true);
+    // The fields' names, in the order of the rows (`|` between them in the catalogue).
+    let fields = crate::output::headings(crate::msg!("shell-umpk-info-fields"));
+    let field = |k: usize| fields.get(k).cloned().unwrap_or_default();
+    let flags = if bits.is_empty() { crate::msg!("shell-umpk-no-flag").text } else { bits.join(", ") };
     let mut rows = vec![
-        vec!["model".into(), format!("{model} (MM={:02X})", i.model)],
-        vec!["firmware".into(), format!("{} (VV={:02X})", i.version, i.version.0)],
-        vec!["inputs / outputs".into(), format!("{} / {}", i.inputs, i.outputs)],
-        vec!["mode".into(), mode.into()],
-        vec![
-            "status word".into(),
-            format!("{:02X}: {}", i.status, if bits.is_empty() { "no flag set".into() } else { bits.join(", ") }),
-        ],
-        vec!["microcode".into(), format!("{:02X}", i.microcode)],
-        vec!["echo".into(), if echo { "on" } else { "off" }.into()],
+        vec![field(0), format!("{model} (MM={:02X})", i.model)],
+        vec![field(1), format!("{} (VV={:02X})", i.version, i.version.0)],
+        vec![field(2), format!("{} / {}", i.inputs, i.outputs)],
+        vec![field(3), crate::msg!("shell-umpk-mode", mode = mode).text],
+        vec![field(4), format!("{:02X}: {flags}", i.status)],
+        vec![field(5), format!("{:02X}", i.microcode)],
+        vec![field(6), if echo { "on" } else { "off" }.into()],
     ];
     let sim = d.simulator();
     if let Some(s) = &sim {
-        rows.push(vec!["program (simulator)".into(), s.lock().unwrap_or_else(|p| p.into_inner()).program_kind()]);
+        rows.push(vec![field(7), s.lock().unwrap_or_else(|p| p.into_inner()).program_kind()]);
     }
     Ok(Outcome::new("umpk")
-        .table(&["field", "value"], rows)
+        .table(&crate::output::headings(crate::msg!("shell-umpk-info-columns")), rows)
         .with("model", model)
         .with("model_code", i.model)
         .with("firmware", i.version.to_string())
@@ -278,7 +281,7 @@ fn info(d: &mut Driver) -> Result<Outcome> {
 fn errors(d: &mut Driver, rest: &[Word]) -> Result<Outcome> {
     if rest.first().is_some_and(|w| w.1 == "clear") {
         d.clear_errors()?;
-        return Ok(Outcome::new("umpk").text("error history cleared"));
+        return Ok(Outcome::new("umpk").text(crate::msg!("shell-umpk-errors-cleared").text));
     }
     let e = d.errors()?;
     let codes: Vec<u8> = e.iter().copied().filter(|&c| c != 0).collect();
@@ -286,15 +289,15 @@ fn errors(d: &mut Driver, rest: &[Word]) -> Result<Outcome> {
         e.iter().enumerate().map(|(k, &c)| vec![(k + 1).to_string(), c.to_string(), error_code_text(c)]).collect();
     let o = Outcome::new("umpk").with("errors", e.to_vec()).with("codes", &codes);
     Ok(if codes.is_empty() {
-        o.text("the error history is empty")
+        o.text(crate::msg!("shell-umpk-errors-empty").text)
     } else {
-        o.table(&["#", "code", "meaning (newest first; 1–127 user, 128–255 system)"], rows)
+        o.table(&crate::output::headings(crate::msg!("shell-umpk-errors-columns")), rows)
     })
 }
 
 fn send(d: &mut Driver, rest: &[Word], col: usize) -> Result<Outcome> {
     let Some(&(_, text)) = rest.first() else {
-        return Err(Error::usage("umpk send needs a command or record, e.g. umpk send ?03FD").column(col));
+        return Err(Error::usage(crate::msg!("shell-umpk-send-needs")).column(col));
     };
     let text = lex::unquote(text);
     let x = d.send_raw(&text)?;
@@ -327,10 +330,7 @@ fn sim(sh: &mut Shell, dev: usize, rest: &[Word], col: usize) -> Result<Outcome>
             }
             (None, Some(path)) => crate::core::link::control::send(&path, &line).map_err(|e| e.column(col))?,
             (None, None) => {
-                return Err(Error::unsupported(
-                    "umpk sim works on a simulated UMPK: in-process (sim-umpk:UMPK16), or served by plcsh sim serve --umpk-pty LINK and opened with control=LINK.ctl; a real UMPK's inputs are wired",
-                )
-                .column(col))
+                return Err(Error::unsupported(crate::msg!("shell-umpk-sim-needs-simulator")).column(col))
             }
         };
         let mut o = Outcome::new("umpk").text(text);
@@ -345,7 +345,7 @@ fn sim(sh: &mut Shell, dev: usize, rest: &[Word], col: usize) -> Result<Outcome>
     }
     let d = driver(sh, dev);
     let s = d.simulator().ok_or_else(|| {
-        Error::unsupported("reference programs load into the in-process simulator (sim-umpk:UMPK16)").column(col)
+        Error::unsupported(crate::msg!("shell-umpk-reference-in-process")).column(col)
     })?;
     let mut u = s.lock().unwrap_or_else(|p| p.into_inner());
     let (pos, _) = lex::options(rest.get(1..).unwrap_or(&[]));
@@ -358,13 +358,21 @@ fn sim(sh: &mut Shell, dev: usize, rest: &[Word], col: usize) -> Result<Outcome>
                 return Ok(Outcome::new("umpk").text(list.join("\n")).with("references", reference::names()));
             };
             let r = reference::find(name).ok_or_else(|| {
-                value_err(c, format!("no reference program `{name}`"))
-                    .hint(format!("reference programs: {}", reference::names()))
+                value_err(c, crate::msg!("shell-umpk-no-reference", name = name))
+                    .hint(crate::msg!("shell-hint-umpk-references", names = reference::names()))
             })?;
             let runner = (r.build)(&mut u.logic);
             u.load_logic(runner);
             Ok(Outcome::new("umpk")
-                .text(format!("reference program {} loaded ({}); mode {}", r.name, r.description, u.mode().name()))
+                .text(
+                    crate::msg!(
+                        "shell-umpk-reference-loaded",
+                        name = r.name,
+                        description = r.description,
+                        mode = u.mode().name()
+                    )
+                    .text,
+                )
                 .with("program", r.name)
                 .with("mode", u.mode().name()))
         }
@@ -376,13 +384,13 @@ fn program(sh: &mut Shell, dev: usize, rest: &[Word], col: usize) -> Result<Outc
     let (pos, opts) = lex::options(rest);
     check_options(&opts, &["info"], UMPK.usage)?;
     let Some(&(fc, file)) = pos.first() else {
-        return Err(Error::usage("umpk program needs a HEX file").column(col).hint(UMPK.usage));
+        return Err(Error::usage(crate::msg!("shell-umpk-program-needs-file")).column(col).hint(UMPK.usage));
     };
     let run = match pos.get(1) {
         None => false,
         Some((_, "run")) => true,
         Some(&(c, w)) => {
-            return Err(Error::usage(format!("unexpected `{w}` (only `run` may follow the file)")).column(c))
+            return Err(Error::usage(crate::msg!("shell-umpk-program-extra", extra = w)).column(c))
         }
     };
     let info = match opt(&opts, "info") {
@@ -390,7 +398,7 @@ fn program(sh: &mut Shell, dev: usize, rest: &[Word], col: usize) -> Result<Outc
         Some((c, v)) => {
             let v = lex::unquote(v);
             if v.is_empty() || v.len() > INFO_LEN || !v.bytes().all(|b| (0x20..0x7F).contains(&b)) {
-                return Err(value_err(c, format!("info=\"{v}\": 1–22 printable ASCII characters (manual §4.2.4)")));
+                return Err(value_err(c, crate::msg!("shell-umpk-info-text", info = &*v)));
             }
             Some(v.as_bytes().to_vec())
         }
@@ -400,20 +408,21 @@ fn program(sh: &mut Shell, dev: usize, rest: &[Word], col: usize) -> Result<Outc
     let file = file.as_ref();
     sh.session.check_read(file).map_err(|e| e.column(fc))?;
     let text =
-        std::fs::read_to_string(file).map_err(|e| Error::io(format!("cannot read {file}")).cause(e).column(fc))?;
+        std::fs::read_to_string(file).map_err(|e| Error::io(crate::msg!("shell-cannot-read", file = file)).cause(e).column(fc))?;
     let d = driver(sh, dev);
     let memory = d.model().program_bytes;
     let prog = hex::parse_file(&text, memory).map_err(|m| {
-        Error::new(crate::core::ErrorKind::Value, format!("{file}: {m}")).hint(format!(
-            "nothing was sent; the {} takes records 00/01/02/03 inside 16#0000..16#{:04X}",
-            d.model().name,
-            memory - 1
+        Error::new(crate::core::ErrorKind::Value, format!("{file}: {m}")).hint(crate::msg!(
+            "shell-hint-umpk-hex",
+            model = d.model().name,
+            last = format!("{:04X}", memory - 1)
         ))
     })?;
     let show = crate::core::platform::escapes(crate::core::platform::Stream::Stderr) && !sh.style.json;
     let mut progress = |k: usize, n: usize| {
         if show {
-            eprint!("\r\x1b[2Kprogramming {} record {k}/{n}", crate::shell::progress::bar(k as f64 / n as f64, 20));
+            let bar = crate::shell::progress::bar(k as f64 / n as f64, 20);
+            eprint!("\r\x1b[2K{}", crate::msg!("shell-umpk-programming", bar = bar, record = k, records = n));
             let _ = std::io::stderr().flush();
         }
     };
@@ -426,27 +435,25 @@ fn program(sh: &mut Shell, dev: usize, rest: &[Word], col: usize) -> Result<Outc
     if run {
         d.reset()?;
     }
-    let stopped = if r.was_running {
-        "; the controller was in Work mode: its program stopped and its outputs went off when programming began"
-    } else {
-        ""
-    };
-    let next = if run {
-        "reset: the program is enabled (Work mode)"
-    } else {
-        "the controller stays in Programming mode; `umpk reset` enables the program"
-    };
+    let next = if run { crate::msg!("shell-umpk-programmed-run") } else { crate::msg!("shell-umpk-programmed-stays") };
     // The simulator keeps a binary but cannot run it: said here, not discovered from dead outputs.
     let simulated = d.simulator().is_some();
     let note = if simulated { format!("\nnote: {}", crate::umpk::sim::BINARY_NOT_EXECUTED) } else { String::new() };
     let mut out = Outcome::new("umpk")
-        .text(format!(
-            "programmed {} bytes in {} page(s), {} records acknowledged{}{stopped}; {next}{note}",
-            r.bytes,
-            r.pages,
-            r.records,
-            if r.info.is_empty() { String::new() } else { format!(", program info \"{}\"", r.info) }
-        ))
+        .text(
+            crate::msg!(
+                "shell-umpk-programmed",
+                bytes = r.bytes,
+                pages = r.pages,
+                records = r.records,
+                info = r.info.as_str(),
+                named = if r.info.is_empty() { "no" } else { "yes" },
+                stopped = if r.was_running { "yes" } else { "no" },
+                next = next.text
+            )
+            .text
+                + &note,
+        )
         .with("bytes", r.bytes)
         .with("pages", r.pages)
         .with("records", r.records)
@@ -474,7 +481,7 @@ fn monitor(sh: &mut Shell, dev: usize, rest: &[Word]) -> Result<Outcome> {
             .transpose()
     };
     let mut count: Option<u64> = opt(&opts, "count")
-        .map(|(c, v)| v.parse().map_err(|_| value_err(c, format!("count={v} is not a number"))))
+        .map(|(c, v)| v.parse().map_err(|_| value_err(c, crate::msg!("shell-count-not-number", value = v))))
         .transpose()?;
     let span = dur("for")?;
     if quiet && count.is_none() && span.is_none() {
@@ -522,7 +529,7 @@ fn monitor(sh: &mut Shell, dev: usize, rest: &[Word]) -> Result<Outcome> {
             return Ok(());
         }
         let Some(m) = d.monitor_next(d.timeout)? else {
-            return Err(Error::link("the real-time monitor stream stopped (no packet within the timeout)"));
+            return Err(Error::link(crate::msg!("shell-umpk-monitor-stopped")));
         };
         let t = Duration::from_millis(packets * CYCLE_MS);
         if span.is_some_and(|s| t > s) {
@@ -547,7 +554,7 @@ fn monitor(sh: &mut Shell, dev: usize, rest: &[Word]) -> Result<Outcome> {
             .collect();
         let s = Sample { index: shown, t, readings };
         if !quiet {
-            render.sample(&s, &mut out).map_err(|e| Error::io(format!("cannot write the monitor output: {e}")))?;
+            render.sample(&s, &mut out).map_err(|e| Error::io(crate::msg!("shell-umpk-monitor-cannot-write", reason = e.to_string())))?;
         }
         rec.push(&s);
         shown += 1;
@@ -572,5 +579,5 @@ fn monitor(sh: &mut Shell, dev: usize, rest: &[Word]) -> Result<Outcome> {
         .with("span_ms", packets * CYCLE_MS)
         .with("t_ms", t_ms)
         .with("columns", columns);
-    Ok(if quiet { o.text(format!("{shown} monitor samples from {packets} packets")) } else { o.quiet() })
+    Ok(if quiet { o.text(crate::msg!("shell-umpk-monitor-samples", samples = shown, packets = packets).text) } else { o.quiet() })
 }

@@ -177,7 +177,7 @@ pub fn watch_into(
     w: &mut dyn Write,
 ) -> Result<Stats> {
     sample::run(session, texts, plan, |s| {
-        render.sample(s, w).map_err(|e| Error::io(format!("cannot write the watch output: {e}")))
+        render.sample(s, w).map_err(|e| Error::io(crate::msg!("shell-watch-cannot-write", reason = e.to_string())))
     })
 }
 
