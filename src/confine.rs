@@ -41,6 +41,7 @@ pub struct Confinement {
 /// program does) and `sim snapshot save`, the simulators' own controls (`servo sim`, `umpk sim`), opening and
 /// closing devices (`connect`, `close`, `plcsh.connect`), setting the PLC's clock from the
 /// host (`rtc sync`) and the user's folders (`paths`).
+#[allow(clippy::type_complexity)] // one row: the name a lab grants, what the action does
 pub const BENCH_ACTIONS: &[(&str, fn() -> Msg)] = &[
     ("sim clock", || msg!("tbl-bench-sim-clock")),
     ("sim input", || msg!("tbl-bench-sim-input")),
