@@ -344,8 +344,9 @@ pub fn error_kinds_markdown() -> String {
 pub fn message_ids_markdown() -> String {
     use crate::core::msg::{self, Arg, Lang};
     let mut t = String::from("| id | en | ru | zh-CN |\n|---|---|---|---|\n");
+    let mut variables = msg::variables_by_id(Lang::En);
     for id in msg::ids(Lang::En) {
-        let vars = msg::variables(Lang::En, &id);
+        let vars = variables.remove(&id).unwrap_or_default();
         let args: Vec<(&str, Arg)> = vars.iter().map(|v| (v.as_str(), Arg::Text(format!("${v}")))).collect();
         let texts: Vec<String> = Lang::ALL.iter().map(|&l| cell(&msg::format_in(l, &id, &args))).collect();
         t.push_str(&format!("| `{id}` | {} |\n", texts.join(" | ")));
