@@ -528,8 +528,6 @@ fn finish(mut d: Driver, c: &Common) -> Result<Box<dyn Device>> {
     Ok(Box::new(d))
 }
 
-/// Opens `kinco:PORT?baud=38400&id=1&echo=0&timeout=200ms&encoder=10000`.
-
 /// Errors that mean the port itself is gone (not a slow or silent drive).
 fn port_gone(e: &std::io::Error) -> bool {
     crate::core::link::port_gone(e)
@@ -539,6 +537,7 @@ fn port_gone(e: &std::io::Error) -> bool {
 pub const SERIAL_PARAMS: &[&str] = &["id", "baud", "echo", "loop", "timeout", "encoder", "control"];
 pub const SIM_PARAMS: &[&str] = &["id", "drives", "echo", "loop", "timeout", "encoder", "strict", "baud", "latency"];
 
+/// Opens `kinco:PORT?baud=38400&id=1&echo=0&timeout=200ms&encoder=10000`.
 ///
 /// The line may be a port (`kinco:COM4`, `kinco:/dev/ttyUSB0`), a serial device server's
 /// raw TCP port (`kinco+tcp://HOST:PORT`) or its RFC 2217 port (`kinco+rfc2217://HOST:PORT`).
