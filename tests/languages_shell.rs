@@ -18,9 +18,12 @@ fn run(args: &[&str], env: &[(&str, &str)]) -> (Option<i32>, String, String) {
     (o.status.code(), String::from_utf8_lossy(&o.stdout).into_owned(), String::from_utf8_lossy(&o.stderr).into_owned())
 }
 
+/// Variables set for one run.
+type Env = &'static [(&'static str, &'static str)];
+
 #[test]
 fn an_unknown_option_reads_in_the_chosen_language() {
-    let cases: [(&[&str], &[(&str, &str)], &str); 4] = [
+    let cases: [(&[&str], Env, &str); 4] = [
         (
             &["--jsn"],
             &[],
@@ -65,7 +68,10 @@ fn missing_and_invalid_values_name_the_option_and_what_it_takes() {
             &["--lang", "zh-CN", "--time", "sometimes"],
             "错误：'--time <TIME>' 的值 'sometimes' 无效\n  [可选值：wall, stepped]\n\n更多信息请尝试 '--help'。\n",
         ),
-        (&["--lang", "ru", "sim", "serve", "--tcp"], "ошибка: для '--tcp <ADDR>' нужно значение, но оно не задано\n\nПодробнее: '--help'.\n"),
+        (
+            &["--lang", "ru", "sim", "serve", "--tcp"],
+            "ошибка: для '--tcp <ADDR>' нужно значение, но оно не задано\n\nПодробнее: '--help'.\n",
+        ),
         (
             &["--lang", "ru", "tags", "export"],
             "ошибка: не заданы обязательные аргументы:\n  --to <TO>\n  <FILE>\n\n\
@@ -85,7 +91,10 @@ fn missing_and_invalid_values_name_the_option_and_what_it_takes() {
     // The English stays clap's own.
     let (code, _, err) = run(&["--time", "sometimes"], &[]);
     assert_eq!(code, Some(2));
-    assert!(err.starts_with("error: invalid value 'sometimes' for '--time <TIME>'\n  [possible values: wall, stepped]"), "{err}");
+    assert!(
+        err.starts_with("error: invalid value 'sometimes' for '--time <TIME>'\n  [possible values: wall, stepped]"),
+        "{err}"
+    );
 }
 
 #[test]
@@ -99,7 +108,10 @@ fn an_unknown_subcommand_lists_the_subcommands_in_the_chosen_language() {
     );
     let (code, _, err) = run(&["--lang", "zh-CN", "sim", "srve"], &[]);
     assert_eq!(code, Some(2), "{err}");
-    assert_eq!(err, "plcsh：`plcsh sim` 没有子命令 `srve`；它的子命令：serve, control\n  `plcsh sim --help` 说明每一个子命令\n");
+    assert_eq!(
+        err,
+        "plcsh：`plcsh sim` 没有子命令 `srve`；它的子命令：serve, control\n  `plcsh sim --help` 说明每一个子命令\n"
+    );
 }
 
 #[test]
@@ -147,9 +159,11 @@ fn progress_lines_take_the_languages_plural_forms() {
         let report = err.lines().last().unwrap_or("").to_string() + "\n";
         assert!(report.starts_with(head) && report.ends_with(tail), "{lang} {count}:\n{err}");
     }
-    for (lang, want) in
-        [("ru", "get: 0 запросов по линии связи\n"), ("zh-CN", "get：线路上发送了 0 个请求\n"), ("en", "get: 0 request(s) on the wire\n")]
-    {
+    for (lang, want) in [
+        ("ru", "get: 0 запросов по линии связи\n"),
+        ("zh-CN", "get：线路上发送了 0 个请求\n"),
+        ("en", "get: 0 request(s) on the wire\n"),
+    ] {
         let (code, _, err) = run(&["--lang", lang, "--state", "none", "-v", "-c", "get VW0"], &[]);
         assert_eq!(code, Some(0), "{err}");
         assert!(err.ends_with(want), "{lang}:\n{err}");

@@ -97,7 +97,9 @@ pub fn render(e: &clap::Error) -> Option<String> {
             let arg = arg.or_else(|| text(ContextKind::InvalidSubcommand))?;
             match e.get(ContextKind::PriorArg) {
                 Some(ContextValue::String(prior)) if *prior == arg => msg!("cli-error-used-twice", arg = arg),
-                Some(ContextValue::String(prior)) => msg!("cli-error-conflict", arg = arg, other = quoted(&[prior.clone()])),
+                Some(ContextValue::String(prior)) => {
+                    msg!("cli-error-conflict", arg = arg, other = quoted(std::slice::from_ref(prior)))
+                }
                 Some(ContextValue::Strings(prior)) => msg!("cli-error-conflict", arg = arg, other = quoted(prior)),
                 _ => msg!("cli-error-conflict-others", arg = arg),
             }
@@ -107,11 +109,9 @@ pub fn render(e: &clap::Error) -> Option<String> {
     };
     // The "did you mean" tips, as clap gives them.
     let mut tips: Vec<Msg> = Vec::new();
-    for (kind, id) in [
-        (ContextKind::SuggestedSubcommand, 0),
-        (ContextKind::SuggestedArg, 1),
-        (ContextKind::SuggestedValue, 2),
-    ] {
+    for (kind, id) in
+        [(ContextKind::SuggestedSubcommand, 0), (ContextKind::SuggestedArg, 1), (ContextKind::SuggestedValue, 2)]
+    {
         let similar = list(kind);
         if similar.is_empty() {
             continue;

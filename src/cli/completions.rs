@@ -74,7 +74,14 @@ pub fn run(shell: Option<Shell>, write: Option<&Path>, out: &mut dyn std::io::Wr
                 0
             }
             Err(e) => {
-                eprintln!("{}", crate::msg!("cli-completions-cannot-write", dir = dir.display().to_string(), reason = e.to_string()));
+                eprintln!(
+                    "{}",
+                    crate::msg!(
+                        "cli-completions-cannot-write",
+                        dir = dir.display().to_string(),
+                        reason = e.to_string()
+                    )
+                );
                 1
             }
         };

@@ -23,7 +23,8 @@ pub fn settings(cli: &super::Cli) -> crate::core::Result<Settings> {
         "0" | "none" => None,
         t => {
             let us = crate::core::literal::parse_option_duration_us(t).ok().filter(|us| *us > 0).ok_or_else(|| {
-                Error::usage(crate::msg!("cli-device-timeout-bad", value = t)).hint(crate::msg!("cli-hint-device-timeout"))
+                Error::usage(crate::msg!("cli-device-timeout-bad", value = t))
+                    .hint(crate::msg!("cli-hint-device-timeout"))
             })?;
             Some(Duration::from_micros(us as u64))
         }

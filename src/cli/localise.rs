@@ -342,7 +342,9 @@ mod tests {
             for sub in c.get_subcommands().filter(|s| !s.is_hide_set()) {
                 let p: Vec<&str> = path.iter().copied().chain([sub.get_name()]).collect();
                 let here = |q: &[&str]| q == p.as_slice();
-                if !path.is_empty() && sub.get_about().is_some() && !NESTED.iter().any(|(q, a, _)| here(q) && a.is_none())
+                if !path.is_empty()
+                    && sub.get_about().is_some()
+                    && !NESTED.iter().any(|(q, a, _)| here(q) && a.is_none())
                 {
                     out.push(p.join(" "));
                 }

@@ -52,7 +52,11 @@ fn portable(page: &str) -> String {
 pub fn page() -> Vec<u8> {
     let cmd = super::localise::command(super::Cli::command());
     let version = concat!("plcsh ", env!("CARGO_PKG_VERSION"));
-    let man = clap_mangen::Man::new(cmd).title("PLCSH").date(date()).source(version).manual(crate::msg!("cli-man-manual").text);
+    let man = clap_mangen::Man::new(cmd)
+        .title("PLCSH")
+        .date(date())
+        .source(version)
+        .manual(crate::msg!("cli-man-manual").text);
     let mut buf = Vec::new();
     // Writing into a Vec cannot fail.
     let _ = man.render_title(&mut buf);

@@ -210,8 +210,11 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
     if let Some(path) = &cli.config {
         // A file named on the command line must exist (a typo would silently load nothing).
         if !path.exists() {
-            return Err(crate::core::Error::usage(crate::msg!("cli-config-missing", file = path.display().to_string()))
-                .hint(crate::msg!("cli-hint-config-missing")));
+            return Err(crate::core::Error::usage(crate::msg!(
+                "cli-config-missing",
+                file = path.display().to_string()
+            ))
+            .hint(crate::msg!("cli-hint-config-missing")));
         }
     }
     if let Some(path) = &cli.record {
@@ -265,7 +268,10 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
             // A shell opened before the cabinet is powered stays open: the device is marked not
             // connected and every command tries again. A one-shot still fails with the link error.
             if let Some(e) = s.open_or_later(&name, &url)? {
-                eprintln!("{}", crate::msg!("shell-not-connected-yet", device = name.as_str(), reason = e.message.as_str()));
+                eprintln!(
+                    "{}",
+                    crate::msg!("shell-not-connected-yet", device = name.as_str(), reason = e.message.as_str())
+                );
             }
         } else if matches!(&cli.sub, Some(Sub::Publish(p)) if p.fleet.is_none()) {
             // A publisher waits for its device like a fleet's member: offline (the reason on its

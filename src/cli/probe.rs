@@ -62,7 +62,9 @@ fn resolve(shell: &Shell, target: &str, writes: bool) -> Result<(DeviceUrl, Vec<
         "tcp" | "rtu" => Ok((url, options)),
         "sim" => Err(Error::usage(crate::msg!("cli-probe-in-process", url = text.as_str()))
             .hint(crate::msg!("cli-hint-probe-in-process"))),
-        s => Err(Error::usage(crate::msg!("cli-probe-not-on-wire", scheme = s)).hint(crate::msg!("cli-hint-probe-urls"))),
+        s => {
+            Err(Error::usage(crate::msg!("cli-probe-not-on-wire", scheme = s)).hint(crate::msg!("cli-hint-probe-urls")))
+        }
     }
 }
 

@@ -148,7 +148,10 @@ fn warn(rec: &file::Recording, path: &std::path::Path, doing: &str) {
     }
     if let Some(why) = &rec.truncated {
         let (file, frames) = (path.display().to_string(), rec.frames.len());
-        eprintln!("{}", crate::msg!("cli-record-truncated", file = file, why = why.as_str(), doing = doing, frames = frames));
+        eprintln!(
+            "{}",
+            crate::msg!("cli-record-truncated", file = file, why = why.as_str(), doing = doing, frames = frames)
+        );
     }
     for n in &rec.notes {
         eprintln!("plcsh: note: {}: {n}", path.display());

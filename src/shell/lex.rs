@@ -131,8 +131,8 @@ pub fn one_path(args: &super::Args, skip: usize, form: &str) -> Result<Option<(u
                 count = more.len(),
                 words = typed.join("`, `")
             ))
-                .hint(hint)
-                .column(more[1].0))
+            .hint(hint)
+            .column(more[1].0))
         }
     }
 }

@@ -109,7 +109,9 @@ pub fn parse<'a>(args: &Args<'a>, default_every: Duration, extra: &[&str], usage
             "every" => plan.every = duration(col, k, v)?,
             "for" => plan.span = Some(duration(col, k, v)?),
             "count" => {
-                let n: u64 = v.parse().map_err(|_| Error::usage(crate::msg!("shell-count-not-number", value = v)).column(col))?;
+                let n: u64 = v
+                    .parse()
+                    .map_err(|_| Error::usage(crate::msg!("shell-count-not-number", value = v)).column(col))?;
                 if n == 0 {
                     return Err(Error::usage(crate::msg!("shell-count-at-least-one")).column(col));
                 }
@@ -119,9 +121,11 @@ pub fn parse<'a>(args: &Args<'a>, default_every: Duration, extra: &[&str], usage
             _ => {
                 let mut known = vec!["every", "count", "for"];
                 known.extend_from_slice(extra);
-                return Err(Error::usage(crate::msg!("shell-unknown-option", key = k))
-                    .column(col)
-                    .hint(crate::msg!("shell-hint-options", options = known.join(", "), usage = usage)));
+                return Err(Error::usage(crate::msg!("shell-unknown-option", key = k)).column(col).hint(crate::msg!(
+                    "shell-hint-options",
+                    options = known.join(", "),
+                    usage = usage
+                )));
             }
         }
     }

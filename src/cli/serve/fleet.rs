@@ -89,7 +89,8 @@ pub(super) async fn serve(
         })?;
         // A member's end (an error, or its thread gone) ends the server, as for one K2.
         tasks.spawn(async move {
-            done.await.unwrap_or_else(|_| Err(std::io::Error::other(crate::msg!("cli-serve-fleet-member-stopped").text)))
+            done.await
+                .unwrap_or_else(|_| Err(std::io::Error::other(crate::msg!("cli-serve-fleet-member-stopped").text)))
         });
     }
     ready.insert("tcp".into(), json!(addrs[0]));

@@ -330,10 +330,9 @@ pub(super) fn make_k2(
         sim.faults.add(&spec, now);
     }
     if let Some(p) = &args.program {
-        let text = crate::core::encoding::read_source(p)
-            .map_err(|e| {
-                Error::io(crate::msg!("shell-cannot-read-because", file = p.display().to_string(), reason = e.to_string()))
-            })?;
+        let text = crate::core::encoding::read_source(p).map_err(|e| {
+            Error::io(crate::msg!("shell-cannot-read-because", file = p.display().to_string(), reason = e.to_string()))
+        })?;
         sim.load_program(&text, &p.display().to_string())?;
         ready.insert("program".into(), json!(p.display().to_string()));
     }
@@ -342,13 +341,13 @@ pub(super) fn make_k2(
 
 /// How the served K2s treat their network connections (`--max-connections`, `--idle-timeout`, `--strict-unit`).
 pub(super) fn limits(args: &ServeArgs) -> Result<modbus_net::Limits> {
-    let idle =
-        crate::core::literal::parse_option_duration_us(&args.idle_timeout).ok().filter(|us| *us > 0).ok_or_else(
-            || {
-                Error::usage(crate::msg!("cli-serve-idle-timeout", value = args.idle_timeout.as_str()))
-                    .hint(crate::msg!("cli-hint-serve-idle-timeout"))
-            },
-        )?;
+    let idle = crate::core::literal::parse_option_duration_us(&args.idle_timeout)
+        .ok()
+        .filter(|us| *us > 0)
+        .ok_or_else(|| {
+            Error::usage(crate::msg!("cli-serve-idle-timeout", value = args.idle_timeout.as_str()))
+                .hint(crate::msg!("cli-hint-serve-idle-timeout"))
+        })?;
     Ok(modbus_net::Limits {
         max_connections: args.max_connections,
         idle: std::time::Duration::from_micros(idle as u64),
@@ -487,7 +486,9 @@ async fn serve(cli: &Cli, args: &ServeArgs, out: &mut dyn Write) -> Result<()> {
     let fx = (serve_on(&args.fx_pty, &args.fx_tcp)?, serve_on(&args.fx_link_pty, &args.fx_link_tcp)?);
     let umpk = serve_on(&args.umpk_pty, &args.umpk_tcp)?;
     if !args.serves_k2() && servo.is_none() && fx.0.is_none() && fx.1.is_none() && umpk.is_none() {
-        return Err(Error::usage(crate::msg!("cli-serve-needs-transport")).hint(crate::msg!("cli-hint-serve-transport")));
+        return Err(
+            Error::usage(crate::msg!("cli-serve-needs-transport")).hint(crate::msg!("cli-hint-serve-transport"))
+        );
     }
     if args.agent.is_some() && !args.serves_k2() {
         return Err(Error::usage(crate::msg!("cli-serve-agent-needs-k2")));
@@ -607,7 +608,8 @@ pub fn run(cli: &Cli, args: &ServeArgs, style: Style, out: &mut dyn Write) -> i3
     let rt = match tokio::runtime::Builder::new_current_thread().enable_all().build() {
         Ok(rt) => rt,
         Err(e) => {
-            let _ = output::report_error(out, style, "sim", &Error::io(crate::msg!("cli-serve-no-runtime")).cause(e), None);
+            let _ =
+                output::report_error(out, style, "sim", &Error::io(crate::msg!("cli-serve-no-runtime")).cause(e), None);
             return 1;
         }
     };

@@ -64,8 +64,9 @@ fn hsc(sh: &mut Shell, args: Args) -> Result<Outcome> {
         o.values = k2cmd::readings(&st.registers);
         return Ok(o);
     }
-    let word =
-        *pos.first().ok_or_else(|| Error::usage(crate::msg!("shell-hsc-needs-counter")).column(args.offset).hint(HSC.usage))?;
+    let word = *pos
+        .first()
+        .ok_or_else(|| Error::usage(crate::msg!("shell-hsc-needs-counter")).column(args.offset).hint(HSC.usage))?;
     let (dev, n) = k2cmd::channel(sh, word, "counter", 3)?;
     let name = k2cmd::name(sh, dev);
     if pos.len() == 1 && opts.is_empty() {
@@ -76,7 +77,8 @@ fn hsc(sh: &mut Shell, args: Args) -> Result<Outcome> {
     }
     check_options(&opts, &["mode", "rate", "pv", "cv", "dir", "reset", "start"], HSC.usage)?;
     let mut q = hh::HscRequest { counter: n, ..Default::default() };
-    let (mc, mt) = opt(&opts, "mode").ok_or_else(|| Error::usage(crate::msg!("shell-hsc-needs-mode")).hint(HSC.usage))?;
+    let (mc, mt) =
+        opt(&opts, "mode").ok_or_else(|| Error::usage(crate::msg!("shell-hsc-needs-mode")).hint(HSC.usage))?;
     q.mode = number((mc, mt), "mode")?;
     if let Some((c, r)) = opt(&opts, "rate") {
         q.rate4x = match r.to_ascii_lowercase().as_str() {
@@ -122,13 +124,16 @@ fn hsc(sh: &mut Shell, args: Args) -> Result<Outcome> {
             "cyclic" => q.cyclic = true,
             "force" => q.force = true,
             "at" => {
-                let (c2, a) = *pos.get(i + 1).ok_or_else(|| Error::usage(crate::msg!("shell-at-needs-v-address")).column(c))?;
+                let (c2, a) =
+                    *pos.get(i + 1).ok_or_else(|| Error::usage(crate::msg!("shell-at-needs-v-address")).column(c))?;
                 q.at = Some(
                     a.to_ascii_uppercase()
                         .trim_start_matches('%')
                         .strip_prefix("VB")
                         .and_then(|n| n.parse().ok())
-                        .ok_or_else(|| value_err(c2, crate::msg!("shell-not-a-v-byte", text = a, example = "VB3009")))?,
+                        .ok_or_else(|| {
+                            value_err(c2, crate::msg!("shell-not-a-v-byte", text = a, example = "VB3009"))
+                        })?,
                 );
                 i += 1;
             }

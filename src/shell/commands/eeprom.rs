@@ -49,13 +49,17 @@ fn eeprom(sh: &mut Shell, args: Args) -> Result<Outcome> {
             let bytes: Vec<u8> = vals.iter().map(|v| v.as_i64() as u8).collect();
             crate::core::durable::write_atomic(std::path::Path::new(file), &bytes)?;
             Outcome::new("eeprom")
-                .text(crate::msg!("shell-eeprom-saved", first = first, last = end, bytes = bytes.len(), file = *file).text)
+                .text(
+                    crate::msg!("shell-eeprom-saved", first = first, last = end, bytes = bytes.len(), file = *file)
+                        .text,
+                )
                 .with("bytes", bytes.len())
                 .with("file", file)
         }
         ["restore", file] => {
             sh.session.check_read(file)?;
-            let bytes = std::fs::read(file).map_err(|e| Error::io(crate::msg!("shell-cannot-read", file = *file)).cause(e))?;
+            let bytes =
+                std::fs::read(file).map_err(|e| Error::io(crate::msg!("shell-cannot-read", file = *file)).cause(e))?;
             let room = (last - first + 1) as usize;
             if bytes.len() > room {
                 return Err(Error::usage(crate::msg!(
@@ -90,7 +94,8 @@ fn eeprom(sh: &mut Shell, args: Args) -> Result<Outcome> {
         ["status"] => {
             let s = k2cmd::sim(sh, dev, "eeprom status")?;
             s.advance();
-            let mut lines = vec![crate::msg!("shell-eeprom-area-size", first = first, last = last, bytes = last - first + 1).text];
+            let mut lines =
+                vec![crate::msg!("shell-eeprom-area-size", first = first, last = last, bytes = last - first + 1).text];
             let mut warn = None;
             let elapsed = s.last.saturating_sub(s.backup.since).as_secs_f64();
             let mut data = serde_json::Map::new();
@@ -109,9 +114,7 @@ fn eeprom(sh: &mut Shell, args: Args) -> Result<Outcome> {
                 if session > 0 && elapsed > 0.0 {
                     let rate = session as f64 / elapsed;
                     let left = EEPROM_ENDURANCE.saturating_sub(total) as f64 / rate;
-                    lines.push(
-                        crate::msg!("shell-eeprom-wear", rate = format!("{rate:.1}"), left = human(left)).text,
-                    );
+                    lines.push(crate::msg!("shell-eeprom-wear", rate = format!("{rate:.1}"), left = human(left)).text);
                     if left < 10.0 * 365.0 * 86_400.0 {
                         warn = Some(crate::msg!("shell-eeprom-wear-warning"));
                     }
@@ -136,12 +139,16 @@ fn eeprom(sh: &mut Shell, args: Args) -> Result<Outcome> {
                 .with("last", last)
         }
         ["restore", more @ ..] if more.len() > 1 => {
-            return Err(Error::usage(crate::msg!("shell-one-file-only-plain", form = "eeprom restore", count = more.len()))
-                .hint(crate::msg!(
-                    "shell-hint-quote-path",
-                    line = format!("eeprom restore {}", crate::shell::lex::quote(&more.join(" ")))
-                ))
-                .column(args.offset))
+            return Err(Error::usage(crate::msg!(
+                "shell-one-file-only-plain",
+                form = "eeprom restore",
+                count = more.len()
+            ))
+            .hint(crate::msg!(
+                "shell-hint-quote-path",
+                line = format!("eeprom restore {}", crate::shell::lex::quote(&more.join(" ")))
+            ))
+            .column(args.offset))
         }
         _ => return Err(Error::usage(crate::msg!("shell-eeprom-unknown")).column(args.offset).hint(EEPROM.usage)),
     };

@@ -96,11 +96,17 @@ fn wait(sh: &mut Shell, args: Args) -> Result<Outcome> {
     loop {
         if let Some(e) = k2cmd::k2(sh, dev)?.take_event(&m).map_err(|e| e.device(&name))? {
             let waited = clock.now().saturating_sub(start);
-            let (event, what, at, after) =
-                (e.kind.name(), e.kind.describe(), format_time(e.time), format_time(waited));
+            let (event, what, at, after) = (e.kind.name(), e.kind.describe(), format_time(e.time), format_time(waited));
             let text = match e.kind.number() {
                 Some(n) => {
-                    crate::msg!("shell-wait-event-number", number = n, name = event, what = what, at = at, waited = after)
+                    crate::msg!(
+                        "shell-wait-event-number",
+                        number = n,
+                        name = event,
+                        what = what,
+                        at = at,
+                        waited = after
+                    )
                 }
                 None => crate::msg!("shell-wait-event", name = event, what = what, at = at, waited = after),
             };
@@ -112,7 +118,11 @@ fn wait(sh: &mut Shell, args: Args) -> Result<Outcome> {
             return Ok(o);
         }
         if sh.session.interrupted() {
-            return Err(Error::new(ErrorKind::Interrupted, crate::msg!("shell-wait-interrupted", event = m.to_string())).device(name));
+            return Err(Error::new(
+                ErrorKind::Interrupted,
+                crate::msg!("shell-wait-interrupted", event = m.to_string()),
+            )
+            .device(name));
         }
         let now = clock.now();
         if now >= deadline {

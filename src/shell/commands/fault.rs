@@ -18,9 +18,7 @@ pub fn run(sh: &mut Shell, sub: &str, rest: &str) -> Result<Outcome> {
     let (text, data) = if let Some(path) = sh.session.entries()[dev].control.clone() {
         channel::send(&path, &line).map_err(|e| e.device(&name))?
     } else {
-        let sim = k2cmd::sim(sh, dev, "sim fault").map_err(|e| {
-            e.hint(crate::msg!("shell-hint-fault-served"))
-        })?;
+        let sim = k2cmd::sim(sh, dev, "sim fault").map_err(|e| e.hint(crate::msg!("shell-hint-fault-served")))?;
         crate::k2::sim::control::answer(sim, &line, false).map_err(|e| e.device(&name))?
     };
     let mut o = Outcome::new("sim").text(text);

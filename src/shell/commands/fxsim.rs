@@ -30,8 +30,15 @@ fn status(m: &Memory, name: &str, msg: Option<String>) -> Outcome {
     lines.push(match &program {
         Some(p) => {
             let n = c.program.as_ref().map_or(0, |p| p.instructions);
-            crate::msg!("shell-fx-program", name = name, model = model, mode = mode, program = p.as_str(), instructions = n)
-                .text
+            crate::msg!(
+                "shell-fx-program",
+                name = name,
+                model = model,
+                mode = mode,
+                program = p.as_str(),
+                instructions = n
+            )
+            .text
         }
         None => crate::msg!("shell-fx-no-program", name = name, model = model, mode = mode).text,
     });
@@ -76,17 +83,15 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
         "program" => match arg(1) {
             None | Some((_, "status")) => None,
             Some((c, "load")) => {
-                let (c2, path) = lex::one_path(&args, 2, "sim program load")?
-                    .ok_or_else(|| {
-                        Error::usage(crate::msg!("shell-sim-load-needs-file", example = "scripts/fx_blink.il")).column(c)
-                    })?;
+                let (c2, path) = lex::one_path(&args, 2, "sim program load")?.ok_or_else(|| {
+                    Error::usage(crate::msg!("shell-sim-load-needs-file", example = "scripts/fx_blink.il")).column(c)
+                })?;
                 sh.session.check_read(&path).map_err(|e| e.device(&name).column(c2))?;
-                let text = crate::core::encoding::read_source(&path)
-                    .map_err(|e| {
-                        Error::io(crate::msg!("shell-cannot-read-because", file = path.as_str(), reason = e.to_string()))
-                            .device(&name)
-                            .column(c2)
-                    })?;
+                let text = crate::core::encoding::read_source(&path).map_err(|e| {
+                    Error::io(crate::msg!("shell-cannot-read-because", file = path.as_str(), reason = e.to_string()))
+                        .device(&name)
+                        .column(c2)
+                })?;
                 let loaded = crate::fx::program::Loaded::load(&text, &path, m.model).map_err(|e| e.device(&name))?;
                 let n = loaded.instructions;
                 m.load_program(loaded);

@@ -19,11 +19,9 @@ pub fn channel(sh: &Shell, word: Word, what: &str, max: u8) -> Result<(usize, u8
         Some((d, n)) => (sh.session.index(d).map_err(|e| e.column(col))?, n, d.len() + 1),
         None => (sh.session.current_index()?, text, 0),
     };
-    let n: u8 = num
-        .parse()
-        .ok()
-        .filter(|n| *n <= max)
-        .ok_or_else(|| Error::usage(crate::msg!("shell-not-a-channel", num = num, what = what, max = max)).column(col + off))?;
+    let n: u8 = num.parse().ok().filter(|n| *n <= max).ok_or_else(|| {
+        Error::usage(crate::msg!("shell-not-a-channel", num = num, what = what, max = max)).column(col + off)
+    })?;
     Ok((dev, n))
 }
 
@@ -33,10 +31,14 @@ pub fn channel(sh: &Shell, word: Word, what: &str, max: u8) -> Result<(usize, u8
 pub fn status_channel<'a>(pos: &[Word<'a>], col: usize, what: &str, example: &str) -> Option<Result<Word<'a>>> {
     let at = pos.iter().take(2).position(|p| p.1.eq_ignore_ascii_case("status"))?;
     let Some(word) = pos.get(1 - at) else {
-        return Some(Err(Error::usage(crate::msg!("shell-status-needs-channel", what = what, example = example)).column(col)));
+        return Some(Err(
+            Error::usage(crate::msg!("shell-status-needs-channel", what = what, example = example)).column(col)
+        ));
     };
     if let Some(extra) = pos.get(2) {
-        return Some(Err(Error::usage(crate::msg!("shell-unexpected", extra = extra.1)).column(extra.0).hint(example.to_string())));
+        return Some(Err(Error::usage(crate::msg!("shell-unexpected", extra = extra.1))
+            .column(extra.0)
+            .hint(example.to_string())));
     }
     Some(Ok(*word))
 }

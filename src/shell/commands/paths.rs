@@ -23,5 +23,7 @@ fn paths(_sh: &mut Shell, args: Args) -> Result<Outcome> {
     let json: serde_json::Map<String, serde_json::Value> =
         places.iter().map(|p| (p.name.to_string(), p.path.clone().into())).collect();
     let rows = places.iter().map(|p| vec![p.name.to_string(), p.path.clone(), p.set_by.to_string()]).collect();
-    Ok(Outcome::new("paths").with("paths", json).table(&crate::output::headings(crate::msg!("shell-paths-columns")), rows))
+    Ok(Outcome::new("paths")
+        .with("paths", json)
+        .table(&crate::output::headings(crate::msg!("shell-paths-columns")), rows))
 }

@@ -64,7 +64,9 @@ fn instruction(sh: &mut Shell, args: Args, cmd: &str, usage: &str) -> Result<Out
         return Err(Error::usage(crate::msg!("shell-pulse-channel-missing", usage = usage)).column(args.offset));
     };
     if w.len() > 1 {
-        return Err(Error::usage(crate::msg!("shell-pulse-one-channel", command = cmd)).column(w[1].0).hint(usage.to_string()));
+        return Err(Error::usage(crate::msg!("shell-pulse-one-channel", command = cmd))
+            .column(w[1].0)
+            .hint(usage.to_string()));
     }
     let (dev, ch) = k2cmd::channel(sh, word, "pulse", 3)?;
     let name = k2cmd::name(sh, dev);
@@ -168,10 +170,10 @@ fn pto(sh: &mut Shell, args: Args) -> Result<Outcome> {
         return Err(Error::usage(crate::msg!("shell-unexpected", extra = extra.1)).column(extra.0).hint(PTO.usage));
     }
     let (dev, ch) = k2cmd::channel(sh, word, "pulse", 3)?;
-    let rate =
-        rate(&opts)?.ok_or_else(|| Error::usage(crate::msg!("shell-pto-needs-rate")).column(args.offset).hint(PTO.usage))?;
-    let n =
-        count(&opts, "count")?.ok_or_else(|| Error::usage(crate::msg!("shell-pto-needs-count")).column(args.offset).hint(PTO.usage))?;
+    let rate = rate(&opts)?
+        .ok_or_else(|| Error::usage(crate::msg!("shell-pto-needs-rate")).column(args.offset).hint(PTO.usage))?;
+    let n = count(&opts, "count")?
+        .ok_or_else(|| Error::usage(crate::msg!("shell-pto-needs-count")).column(args.offset).hint(PTO.usage))?;
     let (model, _) = model_of(sh, dev)?;
     let name = k2cmd::name(sh, dev);
     // A refused rate points at the option as typed (`cycle=2`).
@@ -226,7 +228,8 @@ fn pwm_plan(
         Some(hp::Rate::Hz(f)) => (1e6 / f).round() as u64,
         None => return Err(Error::usage(crate::msg!("shell-pwm-needs-cycle")).column(col).hint(PWM.usage)),
     };
-    let (wc, wt) = opt(opts, "width").ok_or_else(|| Error::usage(crate::msg!("shell-pwm-needs-width")).hint(PWM.usage))?;
+    let (wc, wt) =
+        opt(opts, "width").ok_or_else(|| Error::usage(crate::msg!("shell-pwm-needs-width")).hint(PWM.usage))?;
     let width = crate::core::literal::parse_pulse_time_us(wt).map_err(|m| value_err(wc, m))?;
     if width < 0 {
         return Err(value_err(wc, crate::msg!("shell-pwm-negative-width")));
@@ -257,9 +260,10 @@ pub fn fuzz_options(text: &str) {
 
 /// `[(cycle=500us, count=1000), …]` → segments.
 fn segments(text: &str, col: usize) -> Result<Vec<hp::Segment>> {
-    let inner = text.strip_prefix('[').and_then(|t| t.strip_suffix(']')).ok_or_else(|| {
-        Error::syntax(crate::msg!("shell-segments-in-brackets")).column(col)
-    })?;
+    let inner = text
+        .strip_prefix('[')
+        .and_then(|t| t.strip_suffix(']'))
+        .ok_or_else(|| Error::syntax(crate::msg!("shell-segments-in-brackets")).column(col))?;
     let mut out = Vec::new();
     for (c, item) in lex::split_top(inner, ',').map_err(|e| e.shift(col + 1))? {
         let t = item.trim();
@@ -267,9 +271,10 @@ fn segments(text: &str, col: usize) -> Result<Vec<hp::Segment>> {
             continue;
         }
         let at = col + 1 + c + (item.len() - item.trim_start().len());
-        let body = t.strip_prefix('(').and_then(|t| t.strip_suffix(')')).ok_or_else(|| {
-            Error::syntax(crate::msg!("shell-not-a-segment", text = t)).column(at)
-        })?;
+        let body = t
+            .strip_prefix('(')
+            .and_then(|t| t.strip_suffix(')'))
+            .ok_or_else(|| Error::syntax(crate::msg!("shell-not-a-segment", text = t)).column(at))?;
         let ws: Vec<Word> = lex::words(body)?.into_iter().map(|(c2, w)| (at + 1 + c2, w)).collect();
         let (pos, opts) = lex::options(&ws);
         if let Some(p) = pos.first() {
@@ -277,7 +282,8 @@ fn segments(text: &str, col: usize) -> Result<Vec<hp::Segment>> {
         }
         check_options(&opts, &["cycle", "freq", "count"], PROFILE.usage)?;
         let rate = rate(&opts)?.ok_or_else(|| Error::usage(crate::msg!("shell-segment-needs-rate")).column(at))?;
-        let count = count(&opts, "count")?.ok_or_else(|| Error::usage(crate::msg!("shell-segment-needs-count")).column(at))?;
+        let count =
+            count(&opts, "count")?.ok_or_else(|| Error::usage(crate::msg!("shell-segment-needs-count")).column(at))?;
         out.push(hp::Segment { rate, count });
     }
     Ok(out)
@@ -330,7 +336,8 @@ fn profile(sh: &mut Shell, args: Args) -> Result<Outcome> {
         if let Some(last) = tl.points.last() {
             points.push((last.end_us as f64 / 1e6, last.freq_hz));
         }
-        let series = crate::plot::Series::new(crate::msg!("shell-profile-series", channel = ch).text, "Hz", points).stepped();
+        let series =
+            crate::plot::Series::new(crate::msg!("shell-profile-series", channel = ch).text, "Hz", points).stepped();
         if let Some(path) = &svg_to {
             crate::shell::files::check_write(&sh.write_rule, path)?;
             let one = std::slice::from_ref(&series);

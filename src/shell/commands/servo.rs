@@ -117,7 +117,11 @@ fn servo(sh: &mut Shell, args: Args) -> Result<Outcome> {
             let on = match rest {
                 [] | [(_, "on")] => true,
                 [(_, "off")] => false,
-                _ => return Err(Error::usage(crate::msg!("shell-usage-line", line = "servo halt [on|off]")).column(at(col))),
+                _ => {
+                    return Err(
+                        Error::usage(crate::msg!("shell-usage-line", line = "servo halt [on|off]")).column(at(col))
+                    )
+                }
             };
             let cw = ds402::halt(ops, on)?;
             let cw_hex = format!("{cw:04X}");
@@ -126,10 +130,7 @@ fn servo(sh: &mut Shell, args: Args) -> Result<Outcome> {
             } else {
                 crate::msg!("shell-servo-halt-released", controlword = cw_hex)
             };
-            Ok(Outcome::new("servo")
-                .text(text.text)
-                .with("halt", on)
-                .with("controlword", cw))
+            Ok(Outcome::new("servo").text(text.text).with("halt", on).with("controlword", cw))
         }
         "home" => {
             let (_, opts) = lex::options(rest);
@@ -184,8 +185,11 @@ fn pick_device<'a>(sh: &mut Shell, words: &'a [lex::Word<'a>]) -> Result<(usize,
             .hint(crate::msg!("shell-hint-servo-open", port = crate::core::platform::words::port!()))),
         many => {
             let names: Vec<String> = many.iter().map(|&i| sh.session.entries()[i].name.clone()).collect();
-            Err(Error::usage(crate::msg!("shell-servo-several"))
-                .hint(crate::msg!("shell-hint-servo-several", first = names[0].as_str(), names = names.join(", "))))
+            Err(Error::usage(crate::msg!("shell-servo-several")).hint(crate::msg!(
+                "shell-hint-servo-several",
+                first = names[0].as_str(),
+                names = names.join(", ")
+            )))
         }
     }
 }
@@ -241,9 +245,10 @@ fn value_for(space: &ServoSpace, name: &str, text: &str, col: usize) -> Result<i
 fn opt_int(opts: &[lex::Opt], key: &str, at: impl Fn(usize) -> usize) -> Result<Option<i64>> {
     match opts.iter().find(|o| o.1 == key) {
         None => Ok(None),
-        Some(&(c, _, v)) => {
-            v.parse().map(Some).map_err(|_| Error::usage(crate::msg!("shell-servo-not-whole", key = key, value = v)).column(at(c)))
-        }
+        Some(&(c, _, v)) => v
+            .parse()
+            .map(Some)
+            .map_err(|_| Error::usage(crate::msg!("shell-servo-not-whole", key = key, value = v)).column(at(c))),
     }
 }
 
@@ -363,7 +368,10 @@ fn wait(ops: &mut dyn ServoOps, w: &Waiter, rest: &[lex::Word], base: usize, col
     let took = w.clock.now() - start;
     let pos = ds402::read(ops, "position_actual")?;
     Ok(Outcome::new("servo")
-        .text(crate::msg!("shell-servo-target-reached", seconds = format!("{:.3}", took.as_secs_f64()), position = pos).text)
+        .text(
+            crate::msg!("shell-servo-target-reached", seconds = format!("{:.3}", took.as_secs_f64()), position = pos)
+                .text,
+        )
         .with("statusword", sw)
         .with("position_actual", pos)
         .with("waited_s", took.as_secs_f64()))
@@ -429,8 +437,8 @@ fn raw(ops: &mut dyn ServoOps, rest: &[lex::Word], base: usize, col: usize) -> R
     let mut bytes = Vec::new();
     for &(c, w) in rest {
         let h = w.trim_start_matches("0x").trim_start_matches("16#");
-        let b =
-            u8::from_str_radix(h, 16).map_err(|_| Error::usage(crate::msg!("shell-servo-not-hex-byte", text = w)).column(base + c))?;
+        let b = u8::from_str_radix(h, 16)
+            .map_err(|_| Error::usage(crate::msg!("shell-servo-not-hex-byte", text = w)).column(base + c))?;
         bytes.push(b);
     }
     let frame: [u8; FRAME_LEN] = match bytes.len() {

@@ -153,7 +153,9 @@ fn sim(sh: &mut Shell, args: Args) -> Result<Outcome> {
             }
             return Ok(o);
         }
-        other => return Err(Error::usage(crate::msg!("shell-sim-unknown", sub = other)).hint(SIM.usage).column(args.offset)),
+        other => {
+            return Err(Error::usage(crate::msg!("shell-sim-unknown", sub = other)).hint(SIM.usage).column(args.offset))
+        }
     }
     let now = clock.now();
     let mode = if clock.is_stepped() { "stepped" } else { "wall" };

@@ -108,9 +108,7 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
                         .iter()
                         .find(|m| m.kind == HscKind::ExternalDir && m.count == p)
                         .and_then(|m| m.dir)
-                        .ok_or_else(|| {
-                            value_err(c, crate::msg!("shell-no-direction-input", input = pin_name(p)))
-                        })?;
+                        .ok_or_else(|| value_err(c, crate::msg!("shell-no-direction-input", input = pin_name(p))))?;
                     let op = crate::k2::operand::K2Operand::bit(crate::k2::operand::Area::I, dir.0, dir.1).to_core();
                     sh.session.write_values(dev, &[(op, Value::Bool(up))])?;
                     msg = crate::msg!("shell-direction-input", input = pin_name(dir), value = u8::from(up)).text;
@@ -125,9 +123,7 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
         "quad" => {
             check_options(&opts, &["freq", "dir"], USAGE)?;
             if pos.len() != 2 {
-                return Err(Error::usage(crate::msg!("shell-quad-needs-two"))
-                    .column(args.offset)
-                    .hint(USAGE));
+                return Err(Error::usage(crate::msg!("shell-quad-needs-two")).column(args.offset).hint(USAGE));
             }
             let (mut a, mut b) = (pin(pos[0])?, pin(pos[1])?);
             if a == b {

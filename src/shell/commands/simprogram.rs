@@ -20,9 +20,7 @@ fn ms(ns: u64) -> f64 {
 /// The status outcome (`sim program`).
 pub fn status(s: &K2Sim, name: &str) -> Outcome {
     let Some(p) = s.plc() else {
-        return Outcome::new("sim")
-            .text(crate::msg!("shell-sim-no-program", name = name).text)
-            .with("mode", "RUN");
+        return Outcome::new("sim").text(crate::msg!("shell-sim-no-program", name = name).text).with("mode", "RUN");
     };
     let st = p.stats;
     let switch = if p.switch_run { "run" } else { "stop" };
@@ -149,13 +147,13 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
         "program" => match words.get(1).copied() {
             None | Some("status") => Ok(status(s, &name)),
             Some("load") => {
-                let (c, path) = file.ok_or_else(|| Error::usage(crate::msg!("shell-sim-load-needs-file", example = "prog.il")))?;
-                let text = crate::core::encoding::read_source(&path)
-                    .map_err(|e| {
-                        Error::io(crate::msg!("shell-cannot-read-because", file = path.as_str(), reason = e.to_string()))
-                            .device(name.clone())
-                            .column(c)
-                    })?;
+                let (c, path) =
+                    file.ok_or_else(|| Error::usage(crate::msg!("shell-sim-load-needs-file", example = "prog.il")))?;
+                let text = crate::core::encoding::read_source(&path).map_err(|e| {
+                    Error::io(crate::msg!("shell-cannot-read-because", file = path.as_str(), reason = e.to_string()))
+                        .device(name.clone())
+                        .column(c)
+                })?;
                 let tags = match &tag_file {
                     Some((c, t)) => Some(
                         crate::profile::tags::load(std::path::Path::new(t), None, s.space())
@@ -209,13 +207,14 @@ pub fn run(sh: &mut Shell, sub: &str, args: Args) -> Result<Outcome> {
             Ok(status(s, &name))
         }
         "scan" => {
-            let n: u64 =
-                match words.get(1) {
-                    Some(w) => w.parse().ok().filter(|n| (1..=10_000_000).contains(n)).ok_or_else(|| {
-                        Error::usage(crate::msg!("shell-sim-scan-count", text = *w))
-                    })?,
-                    None => 1,
-                };
+            let n: u64 = match words.get(1) {
+                Some(w) => w
+                    .parse()
+                    .ok()
+                    .filter(|n| (1..=10_000_000).contains(n))
+                    .ok_or_else(|| Error::usage(crate::msg!("shell-sim-scan-count", text = *w)))?,
+                None => 1,
+            };
             let before = s.plc().map_or(0, |p| p.stats.scans);
             s.scan_n(n).map_err(|e| e.device(name.clone()))?;
             // The clock stays where it is; the scans ran at their modelled times.

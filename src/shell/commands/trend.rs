@@ -33,7 +33,8 @@ pub const PLOT: CommandSpec = CommandSpec {
 
 fn write_file(sh: &Shell, path: &str, text: &str, col: usize) -> Result<()> {
     crate::shell::files::check_write(&sh.write_rule, path).map_err(|e| e.column(col))?;
-    std::fs::write(path, text).map_err(|e| Error::io(crate::msg!("shell-cannot-write", file = path, reason = e.to_string())).column(col))
+    std::fs::write(path, text)
+        .map_err(|e| Error::io(crate::msg!("shell-cannot-write", file = path, reason = e.to_string())).column(col))
 }
 
 fn trace(sh: &mut Shell, args: Args) -> Result<Outcome> {

@@ -176,10 +176,9 @@ pub fn sim_program(sh: &mut Shell, args: Args) -> Result<Outcome> {
     let dev = sh.session.current_index()?;
     let name = sh.session.entries()[dev].name.clone();
     let col = words.first().map_or(args.offset, |w| w.0);
-    let s = driver(sh, dev).simulator().ok_or_else(|| {
-        Error::unsupported(crate::msg!("shell-umpk-real-program")).device(&name)
-        .column(col)
-    })?;
+    let s = driver(sh, dev)
+        .simulator()
+        .ok_or_else(|| Error::unsupported(crate::msg!("shell-umpk-real-program")).device(&name).column(col))?;
     let mut u = s.lock().unwrap_or_else(|p| p.into_inner());
     let now = u.clock.now();
     u.advance(now);
@@ -188,16 +187,18 @@ pub fn sim_program(sh: &mut Shell, args: Args) -> Result<Outcome> {
         Some((_, "load")) => {
             let (args, tag_file) = super::simprogram::tags_option(args)?;
             let (c, path) = lex::one_path(&args, 2, "sim program load")?.ok_or_else(|| {
-                Error::usage(crate::msg!("shell-sim-load-needs-file", example = "sim program load scripts/umpk_lab1.il"))
-                    .column(col)
+                Error::usage(crate::msg!(
+                    "shell-sim-load-needs-file",
+                    example = "sim program load scripts/umpk_lab1.il"
+                ))
+                .column(col)
             })?;
             sh.session.check_read(&path).map_err(|e| e.device(&name).column(c))?;
-            let text = crate::core::encoding::read_source(&path)
-                .map_err(|e| {
-                    Error::io(crate::msg!("shell-cannot-read-because", file = path.as_str(), reason = e.to_string()))
-                        .device(&name)
-                        .column(c)
-                })?;
+            let text = crate::core::encoding::read_source(&path).map_err(|e| {
+                Error::io(crate::msg!("shell-cannot-read-because", file = path.as_str(), reason = e.to_string()))
+                    .device(&name)
+                    .column(c)
+            })?;
             let tags = match &tag_file {
                 Some((tc, t)) => {
                     sh.session.check_read(t).map_err(|e| e.device(&name).column(*tc))?;
@@ -329,9 +330,7 @@ fn sim(sh: &mut Shell, dev: usize, rest: &[Word], col: usize) -> Result<Outcome>
                 crate::umpk::sim::control::answer(&mut u, &line).map_err(|e| e.column(col))?
             }
             (None, Some(path)) => crate::core::link::control::send(&path, &line).map_err(|e| e.column(col))?,
-            (None, None) => {
-                return Err(Error::unsupported(crate::msg!("shell-umpk-sim-needs-simulator")).column(col))
-            }
+            (None, None) => return Err(Error::unsupported(crate::msg!("shell-umpk-sim-needs-simulator")).column(col)),
         };
         let mut o = Outcome::new("umpk").text(text);
         if let serde_json::Value::Object(m) = data {
@@ -344,9 +343,8 @@ fn sim(sh: &mut Shell, dev: usize, rest: &[Word], col: usize) -> Result<Outcome>
         return Ok(o);
     }
     let d = driver(sh, dev);
-    let s = d.simulator().ok_or_else(|| {
-        Error::unsupported(crate::msg!("shell-umpk-reference-in-process")).column(col)
-    })?;
+    let s =
+        d.simulator().ok_or_else(|| Error::unsupported(crate::msg!("shell-umpk-reference-in-process")).column(col))?;
     let mut u = s.lock().unwrap_or_else(|p| p.into_inner());
     let (pos, _) = lex::options(rest.get(1..).unwrap_or(&[]));
     match rest.first().map(|w| w.1) {
@@ -389,9 +387,7 @@ fn program(sh: &mut Shell, dev: usize, rest: &[Word], col: usize) -> Result<Outc
     let run = match pos.get(1) {
         None => false,
         Some((_, "run")) => true,
-        Some(&(c, w)) => {
-            return Err(Error::usage(crate::msg!("shell-umpk-program-extra", extra = w)).column(c))
-        }
+        Some(&(c, w)) => return Err(Error::usage(crate::msg!("shell-umpk-program-extra", extra = w)).column(c)),
     };
     let info = match opt(&opts, "info") {
         None => None,
@@ -407,8 +403,8 @@ fn program(sh: &mut Shell, dev: usize, rest: &[Word], col: usize) -> Result<Outc
     let file = lex::unquote(file);
     let file = file.as_ref();
     sh.session.check_read(file).map_err(|e| e.column(fc))?;
-    let text =
-        std::fs::read_to_string(file).map_err(|e| Error::io(crate::msg!("shell-cannot-read", file = file)).cause(e).column(fc))?;
+    let text = std::fs::read_to_string(file)
+        .map_err(|e| Error::io(crate::msg!("shell-cannot-read", file = file)).cause(e).column(fc))?;
     let d = driver(sh, dev);
     let memory = d.model().program_bytes;
     let prog = hex::parse_file(&text, memory).map_err(|m| {
@@ -554,7 +550,9 @@ fn monitor(sh: &mut Shell, dev: usize, rest: &[Word]) -> Result<Outcome> {
             .collect();
         let s = Sample { index: shown, t, readings };
         if !quiet {
-            render.sample(&s, &mut out).map_err(|e| Error::io(crate::msg!("shell-umpk-monitor-cannot-write", reason = e.to_string())))?;
+            render
+                .sample(&s, &mut out)
+                .map_err(|e| Error::io(crate::msg!("shell-umpk-monitor-cannot-write", reason = e.to_string())))?;
         }
         rec.push(&s);
         shown += 1;
@@ -579,5 +577,9 @@ fn monitor(sh: &mut Shell, dev: usize, rest: &[Word]) -> Result<Outcome> {
         .with("span_ms", packets * CYCLE_MS)
         .with("t_ms", t_ms)
         .with("columns", columns);
-    Ok(if quiet { o.text(crate::msg!("shell-umpk-monitor-samples", samples = shown, packets = packets).text) } else { o.quiet() })
+    Ok(if quiet {
+        o.text(crate::msg!("shell-umpk-monitor-samples", samples = shown, packets = packets).text)
+    } else {
+        o.quiet()
+    })
 }
