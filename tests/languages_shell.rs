@@ -18,9 +18,12 @@ fn run(args: &[&str], env: &[(&str, &str)]) -> (Option<i32>, String, String) {
     (o.status.code(), String::from_utf8_lossy(&o.stdout).into_owned(), String::from_utf8_lossy(&o.stderr).into_owned())
 }
 
+/// Variables set for one run.
+type Env = &'static [(&'static str, &'static str)];
+
 #[test]
 fn an_unknown_option_reads_in_the_chosen_language() {
-    let cases: [(&[&str], &[(&str, &str)], &str); 4] = [
+    let cases: [(&[&str], Env, &str); 4] = [
         (
             &["--jsn"],
             &[],

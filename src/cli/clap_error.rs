@@ -98,7 +98,7 @@ pub fn render(e: &clap::Error) -> Option<String> {
             match e.get(ContextKind::PriorArg) {
                 Some(ContextValue::String(prior)) if *prior == arg => msg!("cli-error-used-twice", arg = arg),
                 Some(ContextValue::String(prior)) => {
-                    msg!("cli-error-conflict", arg = arg, other = quoted(&[prior.clone()]))
+                    msg!("cli-error-conflict", arg = arg, other = quoted(std::slice::from_ref(prior)))
                 }
                 Some(ContextValue::Strings(prior)) => msg!("cli-error-conflict", arg = arg, other = quoted(prior)),
                 _ => msg!("cli-error-conflict-others", arg = arg),

@@ -593,11 +593,19 @@ cli-replay-summary = повторено запросов: { $requests }, раз�
 cli-record-damaged = plcsh: предупреждение: { $file }: { $doing ->
     [replaying] повторяются
    *[showing] показываются
-} { $frames } кадров, прочитанных вокруг повреждения; код завершения 1
+} { $frames } { $frames ->
+    [one] кадр, прочитанный
+    [few] кадра, прочитанных
+   *[many] кадров, прочитанных
+} вокруг повреждения; код завершения 1
 cli-record-truncated = plcsh: предупреждение: { $file } обрывается раньше времени ({ $why }); { $doing ->
     [replaying] повторяются
    *[showing] показываются
-} { $frames } кадров до обрыва
+} { $frames } { $frames ->
+    [one] кадр
+    [few] кадра
+   *[many] кадров
+} до обрыва
 cli-serve-not-an-address = `{ $text }` — не адрес для прослушивания
 cli-hint-serve-address = используйте HOST:PORT (127.0.0.1:5020, 0.0.0.0:502) или порт (5020; 0 — выбрать свободный)
 cli-serve-cannot-listen = не удаётся слушать { $addr }

@@ -217,7 +217,10 @@ pub fn no_arguments(name: &str, args: Args) -> Result<()> {
 
 /// Commands of the command line that the shell does not have, with where they belong and
 /// what the shell offers instead.
-const COMMAND_LINE_ONLY: &[(&str, fn() -> crate::core::msg::Msg)] = &[
+/// A message of the catalogue, made when it is shown (in the language of that moment).
+type Where = fn() -> crate::core::msg::Msg;
+
+const COMMAND_LINE_ONLY: &[(&str, Where)] = &[
     ("run", || crate::msg!("shell-cli-only-run")),
     ("replay", || crate::msg!("shell-cli-only-replay")),
     ("record", || crate::msg!("shell-cli-only-record")),
