@@ -251,7 +251,7 @@ pub fn build_session(cli: &Cli) -> crate::core::Result<Session> {
             // plc that keeps nothing rather than refusing every command on it.
             let i = s.index("plc")?;
             if let Err(e) = s.ready(i) {
-                if !e.message.contains("is in use by") {
+                if !matches!(e.code, "k2-state-in-use" | "k2-state-in-use-by") {
                     return Err(e);
                 }
                 s.open("plc", &url)?;

@@ -8,6 +8,7 @@
 label-hint = hint: { $hint }
 # The label before a warning (lab check's free points).
 label-warning = warning: { $warning }
+label-note = note: { $note }
 
 # What each `error.kind` means and what to do (the table of docs/reference/errors.md).
 error-kind-cause = { $kind ->

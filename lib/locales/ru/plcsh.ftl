@@ -5,6 +5,7 @@
 
 label-hint = подсказка: { $hint }
 label-warning = Внимание: { $warning }
+label-note = примечание: { $note }
 
 error-kind-cause = { $kind ->
     [syntax] строка не разбирается: лишний символ, незакрытая кавычка, нет `=` в `set`

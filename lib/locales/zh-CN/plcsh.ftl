@@ -5,6 +5,7 @@
 
 label-hint = 提示：{ $hint }
 label-warning = 警告：{ $warning }
+label-note = 注：{ $note }
 
 error-kind-cause = { $kind ->
     [syntax] 该行无法解析：多余的字符、未闭合的引号、`set` 中缺少 `=`

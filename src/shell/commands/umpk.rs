@@ -434,7 +434,11 @@ fn program(sh: &mut Shell, dev: usize, rest: &[Word], col: usize) -> Result<Outc
     let next = if run { crate::msg!("shell-umpk-programmed-run") } else { crate::msg!("shell-umpk-programmed-stays") };
     // The simulator keeps a binary but cannot run it: said here, not discovered from dead outputs.
     let simulated = d.simulator().is_some();
-    let note = if simulated { format!("\nnote: {}", crate::umpk::sim::BINARY_NOT_EXECUTED) } else { String::new() };
+    let note = if simulated {
+        format!("\n{}", crate::msg!("label-note", note = crate::umpk::sim::binary_not_executed().text))
+    } else {
+        String::new()
+    };
     let mut out = Outcome::new("umpk")
         .text(
             crate::msg!(
@@ -457,7 +461,7 @@ fn program(sh: &mut Shell, dev: usize, rest: &[Word], col: usize) -> Result<Outc
         .with("run", run)
         .with("was_running", r.was_running);
     if simulated {
-        out = out.with("executed", false).with("note", crate::umpk::sim::BINARY_NOT_EXECUTED);
+        out = out.with("executed", false).with("note", crate::umpk::sim::binary_not_executed().text);
     }
     Ok(out)
 }

@@ -63,11 +63,6 @@ pub const OUTPUT_LIMIT: usize = 4096;
 pub const VERSION: Version = Version::new(1, 2, 'B');
 pub const MICROCODE: u8 = 0x01;
 
-/// What the simulator says when a binary is programmed into it (the shell after `umpk
-/// program`, `sim serve` on its standard error): it is kept, not run, and what that looks like.
-/// The English text, kept for callers that have not moved to [`binary_not_executed`].
-pub const BINARY_NOT_EXECUTED: &str = "the simulator stores and verifies a programmed binary but does not execute it (the UMPK's machine code is not published): after a reset the status shows Work mode (a program is loaded) while the outputs stay off; to run logic in the simulator, load an IL program (`sim program load FILE.il`, `sim serve --umpk-program FILE.il`; docs/il.md)";
-
 /// The controller's mode (§3.2).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Mode {
@@ -693,7 +688,9 @@ pub fn describe_status(s: &Status) -> Vec<String> {
         .collect()
 }
 
-/// What the simulator says when a binary is programmed into it, in the current language.
+/// What the simulator says when a binary is programmed into it (the shell after `umpk
+/// program`, `sim serve` on its standard error), in the current language: it is kept, not run,
+/// and what that looks like.
 pub fn binary_not_executed() -> crate::core::msg::Msg {
     msg!("umpk-sim-binary-not-executed")
 }
