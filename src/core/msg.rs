@@ -8,9 +8,9 @@
 //! (no text glued from translated pieces), and a maintained Rust implementation
 //! (fluent-bundle) that needs no system library.
 //!
-//! Cost: nothing at start-up. The language is decided, and a catalogue parsed, on the first
-//! message only ([`language`], [`bundle`]); a one-shot that prints values and no message
-//! parses none. Unicode isolation marks around arguments are off, so an operand in a
+//! Cost: nothing at start-up. The language is decided on the first message only
+//! ([`language`]), and a message parses only the catalogue file it is in ([`index`],
+//! [`bundle`]); a one-shot that prints values and no message parses none. Unicode isolation marks around arguments are off, so an operand in a
 //! message is the same bytes as the operand typed.
 //!
 //! The language, first match wins: `--lang` ([`set_choice`]), `PLCSH_LANG`, then the
@@ -109,14 +109,7 @@ impl Lang {
     /// The whole catalogue of the language: its files ([`CATALOGUE_FILES`]) one after the other.
     fn source(self) -> &'static str {
         static JOINED: [OnceLock<String>; 3] = [OnceLock::new(), OnceLock::new(), OnceLock::new()];
-        JOINED[self.index() as usize - 1].get_or_init(|| {
-            let files: &[&str] = match self {
-                Lang::En => &catalogue!("en"),
-                Lang::Ru => &catalogue!("ru"),
-                Lang::ZhCn => &catalogue!("zh-CN"),
-            };
-            files.join("\n")
-        })
+        JOINED[self.index() as usize - 1].get_or_init(|| files(self).join("\n"))
     }
 }
 
@@ -178,19 +171,54 @@ fn decide(choice: Option<Lang>, env: impl Fn(&str) -> Option<String>, system: im
     system().and_then(|s| Lang::from_tag(&s)).unwrap_or(Lang::En)
 }
 
-static BUNDLES: [OnceLock<FluentBundle<FluentResource>>; 3] = [OnceLock::new(), OnceLock::new(), OnceLock::new()];
+/// One parsed file of one language's catalogue, built on first use (index: language, then
+/// [`CATALOGUE_FILES`]'s order).
+type Bundle = FluentBundle<FluentResource>;
+static BUNDLES: [[OnceLock<Bundle>; CATALOGUE_FILES.len()]; 3] =
+    [const { [const { OnceLock::new() }; CATALOGUE_FILES.len()] }; 3];
 
-/// How many catalogues this process has parsed so far (tests: a one-shot that prints values
-/// parses none).
+/// How many catalogue files this process has parsed so far (tests: a one-shot that prints
+/// values parses none).
 pub fn catalogues_parsed() -> usize {
-    BUNDLES.iter().filter(|b| b.get().is_some()).count()
+    BUNDLES.iter().flatten().filter(|b| b.get().is_some()).count()
 }
 
-/// The parsed catalogue of `lang`, built on first use.
-fn bundle(lang: Lang) -> &'static FluentBundle<FluentResource> {
-    BUNDLES[lang.index() as usize - 1].get_or_init(|| {
+/// The files of `lang`'s catalogue, as compiled in.
+fn files(lang: Lang) -> [&'static str; CATALOGUE_FILES.len()] {
+    match lang {
+        Lang::En => catalogue!("en"),
+        Lang::Ru => catalogue!("ru"),
+        Lang::ZhCn => catalogue!("zh-CN"),
+    }
+}
+
+/// Which file of `lang`'s catalogue defines each id: one pass over the text (a message starts
+/// a line with `id =`; its other lines are indented, comments start with `#`), far cheaper than
+/// parsing, so a message parses only the file it is in — a K2 error reads the K2's messages,
+/// not the lab's or the servo's.
+fn index(lang: Lang) -> &'static std::collections::HashMap<&'static str, u8> {
+    static INDEX: [OnceLock<std::collections::HashMap<&'static str, u8>>; 3] =
+        [OnceLock::new(), OnceLock::new(), OnceLock::new()];
+    INDEX[lang.index() as usize - 1].get_or_init(|| {
+        let mut map = std::collections::HashMap::new();
+        for (i, text) in files(lang).into_iter().enumerate() {
+            for line in text.lines() {
+                let Some((id, _)) = line.split_once(" =") else { continue };
+                if !id.is_empty() && id.bytes().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == b'-') {
+                    map.insert(id, i as u8);
+                }
+            }
+        }
+        map
+    })
+}
+
+/// The parsed file `file` of `lang`'s catalogue, built on first use.
+fn bundle(lang: Lang, file: usize) -> &'static Bundle {
+    BUNDLES[lang.index() as usize - 1][file].get_or_init(|| {
         // The catalogues are checked by the tests below: a parse error cannot ship.
-        let res = FluentResource::try_new(lang.source().to_string()).unwrap_or_else(|(res, _)| res);
+        let text = files(lang)[file];
+        let res = FluentResource::try_new(text.to_string()).unwrap_or_else(|(res, _)| res);
         let id: unic_langid::LanguageIdentifier = lang.tag().parse().unwrap_or_default();
         let mut b = FluentBundle::new_concurrent(vec![id]);
         b.set_use_isolating(false);
@@ -271,7 +299,8 @@ pub fn format_in(lang: Lang, id: &str, args: &[(&str, Arg)]) -> String {
         fargs.set(*k, v.value());
     }
     for l in [lang, Lang::En] {
-        let b = bundle(l);
+        let Some(&file) = index(l).get(id) else { continue };
+        let b = bundle(l, file as usize);
         if let Some(p) = b.get_message(id).and_then(|m| m.value()) {
             let mut errors = Vec::new();
             return b.format_pattern(p, Some(&fargs), &mut errors).into_owned();
