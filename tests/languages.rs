@@ -142,17 +142,26 @@ fn under_wine_the_windows_ui_language_chooses() {
     // Wine's loader for 64-bit programs, where Debian puts it; else `wine` on the PATH.
     let loader = if std::path::Path::new(r"Z:\usr\lib\wine\wine64").exists() { "/usr/lib/wine/wine64" } else { "wine" };
     let said = |locale: &str| {
-        let o = std::process::Command::new(r"Z:\usr\bin\env")
+        use std::io::Read;
+        use std::process::Stdio;
+        let mut child = std::process::Command::new(r"Z:\usr\bin\env")
             .args(["-u", "PLCSH_LANG", "-u", "LANGUAGE", "-u", "LC_MESSAGES", "-u", "LANG"])
             .arg(format!("LC_ALL={locale}"))
             .arg("PLCSH_STATE=none")
             .arg(loader)
             .arg(bin())
             .args(["-c", "set VB2=300"])
-            .stdin(std::process::Stdio::null())
-            .output()
+            .stdin(Stdio::null())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
             .unwrap();
-        let err = String::from_utf8_lossy(&o.stderr).into_owned();
+        // Read to the end (the pipes close when plcsh exits; it writes a line or two). Wine
+        // gives a Unix program it starts no process handle to wait on: the wait is not asked.
+        let (mut out, mut err) = (String::new(), String::new());
+        child.stderr.take().unwrap().read_to_string(&mut err).unwrap();
+        child.stdout.take().unwrap().read_to_string(&mut out).unwrap();
+        let _ = child.wait();
         if err.contains("вне диапазона") {
             "ru"
         } else if err.contains("超出") {
@@ -160,7 +169,7 @@ fn under_wine_the_windows_ui_language_chooses() {
         } else if err.contains("is out of range") {
             "en"
         } else {
-            panic!("LC_ALL={locale}: no error in any language: {err}{}", String::from_utf8_lossy(&o.stdout))
+            panic!("LC_ALL={locale}: no error in any language: {err}{out}")
         }
     };
     assert_eq!(said("ru_RU.UTF-8"), "ru");
