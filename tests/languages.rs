@@ -106,8 +106,14 @@ fn the_language_comes_from_the_flag_then_plcsh_lang_then_the_locale() {
     assert_eq!(said(&[], &[("PLCSH_LANG", "ru")]), "ru");
     // The locale variables are the system's language on Unix only: Windows has the user's UI
     // language instead (`under_wine_the_windows_ui_language_chooses` sets that one).
+    // On Unix: `LC_ALL`, then `LC_MESSAGES`, then `LANG` (POSIX's order for messages).
     if cfg!(unix) {
-        the_locale_variables_choose(&said);
+        assert_eq!(said(&[], &[("PLCSH_LANG", ""), ("LANG", "ru_RU.UTF-8")]), "ru");
+        assert_eq!(said(&[], &[("PLCSH_LANG", ""), ("LANG", "ru_RU.UTF-8"), ("LC_ALL", "zh_CN.UTF-8")]), "zh-CN");
+        assert_eq!(said(&[], &[("PLCSH_LANG", ""), ("LANG", "ru_RU.UTF-8"), ("LC_MESSAGES", "C")]), "en");
+        assert_eq!(said(&[], &[("PLCSH_LANG", ""), ("LANG", "de_DE.UTF-8")]), "en");
+        assert_eq!(said(&[], &[("PLCSH_LANG", ""), ("LANG", "zh_TW.UTF-8")]), "en");
+        assert_eq!(said(&[], &[("PLCSH_LANG", "")]), "en");
     }
     // A language plcsh does not speak is a usage error (status 2), in the flag's words.
     let (code, _, err) = run(&["--lang", "de", "-c", "get VW0"], &[]);
@@ -115,23 +121,16 @@ fn the_language_comes_from_the_flag_then_plcsh_lang_then_the_locale() {
     assert!(err.contains("unknown language `de`"), "{err}");
 }
 
-/// `LC_ALL`, then `LC_MESSAGES`, then `LANG` (POSIX's order for messages).
-fn the_locale_variables_choose(said: &dyn Fn(&[&str], &[(&str, &str)]) -> &'static str) {
-    assert_eq!(said(&[], &[("PLCSH_LANG", ""), ("LANG", "ru_RU.UTF-8")]), "ru");
-    assert_eq!(said(&[], &[("PLCSH_LANG", ""), ("LANG", "ru_RU.UTF-8"), ("LC_ALL", "zh_CN.UTF-8")]), "zh-CN");
-    assert_eq!(said(&[], &[("PLCSH_LANG", ""), ("LANG", "ru_RU.UTF-8"), ("LC_MESSAGES", "C")]), "en");
-    assert_eq!(said(&[], &[("PLCSH_LANG", ""), ("LANG", "de_DE.UTF-8")]), "en");
-    assert_eq!(said(&[], &[("PLCSH_LANG", ""), ("LANG", "zh_TW.UTF-8")]), "en");
-    assert_eq!(said(&[], &[("PLCSH_LANG", "")]), "en");
-}
-
 /// The Windows user's UI language (GetUserDefaultUILanguage) chooses when neither `--lang`
 /// nor `PLCSH_LANG` does: Russian, Simplified Chinese, and English for a language plcsh does
 /// not speak (German) or Traditional Chinese. Run under Wine (`.ci/windows`), where a Wine
 /// process's UI language is the Unix locale it starts with (`LC_ALL`), the way a user of Wine
 /// sets it. A Windows process started from Windows code inherits its parent's language,
-/// whatever the environment it is given, so each plcsh.exe starts in a Wine process of its own:
-/// through the Unix `env`, which Wine runs as a Unix program with the locale set.
+/// whatever the environment it is given, so each plcsh.exe starts in a Wine process of its own,
+/// from a Unix shell (Wine runs a Unix program as it is). Wine gives such a program its own
+/// standard streams (not the pipes a Windows parent made) and no process handle to wait on:
+/// the shell writes plcsh's stderr to a file under /tmp (`Z:\tmp` here) and renames it when
+/// plcsh is done, and the test waits for that file.
 #[cfg(windows)]
 #[test]
 fn under_wine_the_windows_ui_language_chooses() {
@@ -141,18 +140,29 @@ fn under_wine_the_windows_ui_language_chooses() {
     }
     // Wine's loader for 64-bit programs, where Debian puts it; else `wine` on the PATH.
     let loader = if std::path::Path::new(r"Z:\usr\lib\wine\wine64").exists() { "/usr/lib/wine/wine64" } else { "wine" };
+    // No double quotes in the script: the Windows command line carries it to the shell whole.
+    const SCRIPT: &str = "f=$1 l=$2 x=$3 c=$4; env -u PLCSH_LANG -u LANGUAGE -u LC_MESSAGES -u LANG \
+        LC_ALL=$c PLCSH_STATE=none $l $x -c 'set VB2=300' </dev/null >$f.out 2>$f.part; mv $f.part $f";
     let said = |locale: &str| {
-        let o = std::process::Command::new(r"Z:\usr\bin\env")
-            .args(["-u", "PLCSH_LANG", "-u", "LANGUAGE", "-u", "LC_MESSAGES", "-u", "LANG"])
-            .arg(format!("LC_ALL={locale}"))
-            .arg("PLCSH_STATE=none")
-            .arg(loader)
-            .arg(bin())
-            .args(["-c", "set VB2=300"])
+        let name = format!("plcsh-wine-lang-{}-{}", std::process::id(), locale.replace('.', "-"));
+        let unix = format!("/tmp/{name}");
+        let windows = std::path::PathBuf::from(format!(r"Z:\tmp\{name}"));
+        let _ = std::fs::remove_file(&windows);
+        let mut child = std::process::Command::new(r"Z:\bin\sh")
+            .args(["-c", SCRIPT, "sh", &unix, loader, bin(), locale])
             .stdin(std::process::Stdio::null())
-            .output()
+            .spawn()
             .unwrap();
-        let err = String::from_utf8_lossy(&o.stderr).into_owned();
+        let deadline = std::time::Instant::now() + std::time::Duration::from_secs(60);
+        while !windows.exists() {
+            assert!(std::time::Instant::now() < deadline, "LC_ALL={locale}: plcsh.exe did not finish within 60 s");
+            std::thread::sleep(std::time::Duration::from_millis(50));
+        }
+        let _ = child.try_wait();
+        let err = std::fs::read_to_string(&windows).unwrap_or_default();
+        let out = std::fs::read_to_string(format!(r"Z:\tmp\{name}.out")).unwrap_or_default();
+        let _ = std::fs::remove_file(&windows);
+        let _ = std::fs::remove_file(format!(r"Z:\tmp\{name}.out"));
         if err.contains("вне диапазона") {
             "ru"
         } else if err.contains("超出") {
@@ -160,7 +170,7 @@ fn under_wine_the_windows_ui_language_chooses() {
         } else if err.contains("is out of range") {
             "en"
         } else {
-            panic!("LC_ALL={locale}: no error in any language: {err}{}", String::from_utf8_lossy(&o.stdout))
+            panic!("LC_ALL={locale}: no error in any language: {err}{out}")
         }
     };
     assert_eq!(said("ru_RU.UTF-8"), "ru");

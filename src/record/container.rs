@@ -85,11 +85,11 @@ pub fn parse(bytes: &[u8]) -> Result<Capture<'_>, String> {
     match magic {
         Some(SHB) => pcapng(bytes),
         Some(0xA1B2_C3D4 | 0xD4C3_B2A1 | 0xA1B2_3C4D | 0x4D3C_B2A1) => pcap(bytes),
-        _ if bytes.is_empty() => Err("it is empty (0 bytes)".to_string()),
-        _ => Err(format!(
-            "it starts with {} instead of a pcapng section header (0A 0D 0D 0A) or a pcap file header",
-            crate::core::trace::hex_bytes(&bytes[..bytes.len().min(4)])
-        )),
+        _ if bytes.is_empty() => Err(crate::msg!("capture-empty").text),
+        _ => {
+            Err(crate::msg!("capture-bad-start", bytes = crate::core::trace::hex_bytes(&bytes[..bytes.len().min(4)]))
+                .text)
+        }
     }
 }
 
@@ -183,25 +183,37 @@ fn pcapng(bytes: &[u8]) -> Result<Capture<'_>, String> {
         };
         // Scan forward for the next block that holds together.
         let next = (pos + 1..bytes.len().saturating_sub(11)).find(|&q| plausible(bytes, q, e).is_some());
-        let state = if cut { "cut short" } else { "damaged" };
+        let state = if cut { "cut" } else { "damaged" };
         match next {
             Some(q) => {
-                cap.damaged.push(format!(
-                    "bytes {pos}…{} ({} bytes) are damaged ({why}); reading on at the block at offset {q}",
-                    q - 1,
-                    q - pos
-                ));
+                cap.damaged.push(
+                    crate::msg!(
+                        "capture-damaged-block",
+                        from = pos,
+                        to = q - 1,
+                        count = q - pos,
+                        why = why.as_str(),
+                        next = q
+                    )
+                    .text,
+                );
                 pos = q;
             }
             None if whole == 0 => {
-                let what = if pos == 0 { "the section header" } else { "the block" };
-                return Err(format!(
-                    "it holds no complete block ({} bytes): {what} at offset {pos} is {state} ({why})",
-                    bytes.len()
-                ));
+                let what = if pos == 0 { "header" } else { "block" };
+                return Err(crate::msg!(
+                    "capture-no-block",
+                    size = bytes.len(),
+                    what = what,
+                    at = pos,
+                    state = state,
+                    why = why.as_str()
+                )
+                .text);
             }
             None => {
-                cap.truncated = Some(format!("the block at offset {pos} is {state}: {why}"));
+                cap.truncated =
+                    Some(crate::msg!("capture-block-truncated", at = pos, state = state, why = why.as_str()).text);
                 break;
             }
         }
@@ -220,23 +232,23 @@ fn header_fault(bytes: &[u8], pos: usize, e: Endian) -> (String, bool) {
         (true, Some(0x4D3C_2B1A)) => Endian { big: true },
         (true, Some(_)) => {
             let magic = crate::core::trace::hex_bytes(&bytes[pos + 8..pos + 12]);
-            return (format!("its byte-order magic {magic} is neither 4D 3C 2B 1A nor 1A 2B 3C 4D"), false);
+            return (crate::msg!("capture-bad-magic", magic = magic).text, false);
         }
-        (true, None) => return (format!("{left} bytes left, less than a section header's first 12"), true),
+        (true, None) => return (crate::msg!("capture-short-section", left = left).text, true),
         (false, _) => e,
     };
     let (Some(t), Some(total)) = (e.u32(bytes, pos), e.u32(bytes, pos + 4)) else {
-        return (format!("{left} bytes left, less than a block header"), true);
+        return (crate::msg!("capture-short-block", left = left).text, true);
     };
     let total = total as usize;
     if !KNOWN.contains(&t) && !shb {
-        (format!("unknown block type {t:#010X}"), false)
+        (crate::msg!("capture-unknown-block", kind = format!("{t:#010X}")).text, false)
     } else if total < 12 || !total.is_multiple_of(4) {
-        (format!("block length {total} is not a multiple of 4 of at least 12"), false)
+        (crate::msg!("capture-bad-block-length", total = total).text, false)
     } else if total > left {
-        (format!("block length {total} but {left} bytes left"), true)
+        (crate::msg!("capture-block-past-end", total = total, left = left).text, true)
     } else {
-        ("its trailing length differs from its leading length".to_string(), false)
+        (crate::msg!("capture-lengths-differ").text, false)
     }
 }
 
@@ -252,14 +264,14 @@ fn block<'a>(
     match t {
         SHB => {
             if body.len() < 16 {
-                return Err("section header shorter than 16 bytes".into());
+                return Err(short("section", 16));
             }
             section.clear();
         }
         1 => {
-            let linktype = u32::from(e.u16(body, 0).ok_or("interface description shorter than 8 bytes")?);
+            let linktype = u32::from(e.u16(body, 0).ok_or_else(|| short("interface", 8))?);
             if body.len() < 8 {
-                return Err("interface description shorter than 8 bytes".into());
+                return Err(short("interface", 8));
             }
             let mut iface = Interface { linktype, name: String::new(), description: String::new(), offset: pos };
             let (mut resol, mut tsoffset) = (6u8, 0i64);
@@ -281,24 +293,24 @@ fn block<'a>(
             // SPB: orig len, data (interface 0, no timestamp).
             let (id, ts_units, caplen, data_at): (usize, u64, usize, usize) = match t {
                 6 => {
-                    let f = |at| e.u32(body, at).ok_or("enhanced packet block shorter than 20 bytes");
+                    let f = |at| e.u32(body, at).ok_or_else(|| short("enhanced", 20));
                     (f(0)? as usize, (u64::from(f(4)?) << 32) | u64::from(f(8)?), f(12)? as usize, 20)
                 }
                 2 => {
-                    let f = |at| e.u32(body, at).ok_or("packet block shorter than 20 bytes");
-                    let id = usize::from(e.u16(body, 0).ok_or("packet block shorter than 20 bytes")?);
+                    let f = |at| e.u32(body, at).ok_or_else(|| short("packet", 20));
+                    let id = usize::from(e.u16(body, 0).ok_or_else(|| short("packet", 20))?);
                     (id, (u64::from(f(4)?) << 32) | u64::from(f(8)?), f(12)? as usize, 20)
                 }
                 _ => {
-                    let orig = e.u32(body, 0).ok_or("simple packet block shorter than 4 bytes")? as usize;
+                    let orig = e.u32(body, 0).ok_or_else(|| short("simple", 4))? as usize;
                     (0, 0, orig.min(body.len() - 4), 4)
                 }
             };
             let data = body
                 .get(data_at..data_at.saturating_add(caplen))
-                .ok_or_else(|| format!("packet length {caplen} runs past its block"))?;
+                .ok_or_else(|| crate::msg!("capture-packet-past-block", length = caplen).text)?;
             let Some(&(iface, resol, tsoffset)) = section.get(id) else {
-                return Err(format!("a packet names interface {id}, which no interface description declared"));
+                return Err(crate::msg!("capture-no-interface", id = id).text);
             };
             let mut p = Packet {
                 iface,
@@ -337,9 +349,14 @@ fn pcap_record(bytes: &[u8], pos: usize, e: Endian, frac_max: u32) -> Option<usi
         .then_some(incl as usize)
 }
 
+/// `section header shorter than 16 bytes` (a pcapng block too short for its fixed fields).
+fn short(block: &str, bytes: usize) -> String {
+    crate::msg!("capture-block-short", block = block, bytes = bytes).text
+}
+
 fn pcap(bytes: &[u8]) -> Result<Capture<'_>, String> {
     if bytes.len() < 24 {
-        return Err(format!("{} bytes: shorter than a pcap file header (24)", bytes.len()));
+        return Err(crate::msg!("capture-short-pcap", size = bytes.len()).text);
     }
     let le = u32::from_le_bytes([bytes[0], bytes[1], bytes[2], bytes[3]]);
     let e = Endian { big: matches!(le, 0xD4C3_B2A1 | 0x4D3C_B2A1) };
@@ -368,24 +385,30 @@ fn pcap(bytes: &[u8]) -> Result<Capture<'_>, String> {
         }
         let left = bytes.len() - pos;
         let why = match (e.u32(bytes, pos + 8), e.u32(bytes, pos + 12)) {
-            _ if left < 16 => format!("{left} bytes left, less than a record header"),
+            _ if left < 16 => crate::msg!("capture-short-record", left = left).text,
             (Some(incl), _) if incl as usize > left - 16 => {
-                format!("record length {incl} but {} bytes left", left - 16)
+                crate::msg!("capture-record-past-end", length = incl, left = left - 16).text
             }
-            (Some(incl), Some(orig)) => format!("record lengths {incl}/{orig} or time fraction impossible"),
-            _ => "unreadable record header".to_string(),
+            (Some(incl), Some(orig)) => crate::msg!("capture-record-impossible", length = incl, original = orig).text,
+            _ => crate::msg!("capture-record-unreadable").text,
         };
         match (pos + 1..bytes.len().saturating_sub(15)).find(|&q| chained(q)) {
             Some(q) => {
-                cap.damaged.push(format!(
-                    "bytes {pos}…{} ({} bytes) are damaged ({why}); reading on at the record at offset {q}",
-                    q - 1,
-                    q - pos
-                ));
+                cap.damaged.push(
+                    crate::msg!(
+                        "capture-damaged-record",
+                        from = pos,
+                        to = q - 1,
+                        count = q - pos,
+                        why = why.as_str(),
+                        next = q
+                    )
+                    .text,
+                );
                 pos = q;
             }
             None => {
-                cap.truncated = Some(format!("the record at offset {pos} is cut short or damaged ({why})"));
+                cap.truncated = Some(crate::msg!("capture-record-truncated", at = pos, why = why.as_str()).text);
                 break;
             }
         }

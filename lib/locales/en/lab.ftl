@@ -259,3 +259,42 @@ publish-write-profile-no-allow-list = write refused: `{ $device }`'s profile has
 publish-no-such-member = `{ $device }` is no device of `{ $group }` (members: { $members })
 publish-no-such-member-near = `{ $device }` is no device of `{ $group }` (members: { $members }); did you mean { $near }?
 publish-no-runtime = cannot start a runtime: { $error }
+
+## Capture files (record::container): pcapng and pcap, as read for `replay` and `decode`.
+capture-empty = it is empty (0 bytes)
+capture-bad-start = it starts with { $bytes } instead of a pcapng section header (0A 0D 0D 0A) or a pcap file header
+capture-damaged-block = bytes { $from }…{ $to } ({ $count } bytes) are damaged ({ $why }); reading on at the block at offset { $next }
+capture-no-block = it holds no complete block ({ $size } bytes): { $what ->
+    [header] the section header
+   *[block] the block
+} at offset { $at } is { $state ->
+    [cut] cut short
+   *[damaged] damaged
+} ({ $why })
+capture-block-truncated = the block at offset { $at } is { $state ->
+    [cut] cut short
+   *[damaged] damaged
+}: { $why }
+capture-bad-magic = its byte-order magic { $magic } is neither 4D 3C 2B 1A nor 1A 2B 3C 4D
+capture-short-section = { $left } bytes left, less than a section header's first 12
+capture-short-block = { $left } bytes left, less than a block header
+capture-unknown-block = unknown block type { $kind }
+capture-bad-block-length = block length { $total } is not a multiple of 4 of at least 12
+capture-block-past-end = block length { $total } but { $left } bytes left
+capture-lengths-differ = its trailing length differs from its leading length
+capture-block-short = { $block ->
+    [section] section header
+    [interface] interface description
+    [enhanced] enhanced packet block
+    [packet] packet block
+   *[simple] simple packet block
+} shorter than { $bytes } bytes
+capture-packet-past-block = packet length { $length } runs past its block
+capture-no-interface = a packet names interface { $id }, which no interface description declared
+capture-short-pcap = { $size } bytes: shorter than a pcap file header (24)
+capture-short-record = { $left } bytes left, less than a record header
+capture-record-past-end = record length { $length } but { $left } bytes left
+capture-record-impossible = record lengths { $length }/{ $original } or time fraction impossible
+capture-record-unreadable = unreadable record header
+capture-damaged-record = bytes { $from }…{ $to } ({ $count } bytes) are damaged ({ $why }); reading on at the record at offset { $next }
+capture-record-truncated = the record at offset { $at } is cut short or damaged ({ $why })

@@ -301,3 +301,42 @@ publish-write-profile-no-allow-list = запись отклонена: в про
 publish-no-such-member = `{ $device }` — не устройство группы `{ $group }` (устройства: { $members })
 publish-no-such-member-near = `{ $device }` — не устройство группы `{ $group }` (устройства: { $members }); может быть, { $near }?
 publish-no-runtime = не удаётся запустить среду выполнения: { $error }
+
+## Capture files (record::container): pcapng and pcap, as read for `replay` and `decode`.
+capture-empty = файл пуст (0 байт)
+capture-bad-start = файл начинается с { $bytes }, а не с заголовка секции pcapng (0A 0D 0D 0A) или заголовка файла pcap
+capture-damaged-block = байты { $from }…{ $to } ({ $count } байт) повреждены ({ $why }); чтение продолжается с блока по смещению { $next }
+capture-no-block = в файле нет ни одного целого блока ({ $size } байт): { $what ->
+    [header] заголовок секции
+   *[block] блок
+} по смещению { $at } { $state ->
+    [cut] обрезан
+   *[damaged] повреждён
+} ({ $why })
+capture-block-truncated = блок по смещению { $at } { $state ->
+    [cut] обрезан
+   *[damaged] повреждён
+}: { $why }
+capture-bad-magic = его признак порядка байтов { $magic } — ни 4D 3C 2B 1A, ни 1A 2B 3C 4D
+capture-short-section = осталось { $left } байт, меньше первых 12 байт заголовка секции
+capture-short-block = осталось { $left } байт, меньше заголовка блока
+capture-unknown-block = неизвестный тип блока { $kind }
+capture-bad-block-length = длина блока { $total } не кратна 4 или меньше 12
+capture-block-past-end = длина блока { $total }, а осталось { $left } байт
+capture-lengths-differ = его длина в конце не совпадает с длиной в начале
+capture-block-short = { $block ->
+    [section] заголовок секции
+    [interface] описание интерфейса
+    [enhanced] расширенный блок пакета
+    [packet] блок пакета
+   *[simple] простой блок пакета
+} короче { $bytes } байт
+capture-packet-past-block = длина пакета { $length } выходит за пределы его блока
+capture-no-interface = пакет ссылается на интерфейс { $id }, который не объявлен ни одним описанием интерфейса
+capture-short-pcap = { $size } байт: короче заголовка файла pcap (24)
+capture-short-record = осталось { $left } байт, меньше заголовка записи
+capture-record-past-end = длина записи { $length }, а осталось { $left } байт
+capture-record-impossible = длины записи { $length }/{ $original } или доля секунды невозможны
+capture-record-unreadable = нечитаемый заголовок записи
+capture-damaged-record = байты { $from }…{ $to } ({ $count } байт) повреждены ({ $why }); чтение продолжается с записи по смещению { $next }
+capture-record-truncated = запись по смещению { $at } обрезана или повреждена ({ $why })

@@ -253,3 +253,42 @@ publish-write-profile-no-allow-list = 写入被拒绝：`{ $device }` 的配置�
 publish-no-such-member = `{ $device }` 不是 `{ $group }` 的设备（成员：{ $members }）
 publish-no-such-member-near = `{ $device }` 不是 `{ $group }` 的设备（成员：{ $members }）；是否想输入 { $near }？
 publish-no-runtime = 无法启动运行时：{ $error }
+
+## Capture files (record::container): pcapng and pcap, as read for `replay` and `decode`.
+capture-empty = 文件为空（0 字节）
+capture-bad-start = 文件以 { $bytes } 开头，而不是 pcapng 节头（0A 0D 0D 0A）或 pcap 文件头
+capture-damaged-block = 字节 { $from }…{ $to }（{ $count } 字节）已损坏（{ $why }）；从偏移 { $next } 处的块继续读取
+capture-no-block = 文件中没有完整的块（{ $size } 字节）：偏移 { $at } 处的{ $what ->
+    [header] 节头
+   *[block] 块
+}{ $state ->
+    [cut] 被截断
+   *[damaged] 已损坏
+}（{ $why }）
+capture-block-truncated = 偏移 { $at } 处的块{ $state ->
+    [cut] 被截断
+   *[damaged] 已损坏
+}：{ $why }
+capture-bad-magic = 其字节序标记 { $magic } 既不是 4D 3C 2B 1A 也不是 1A 2B 3C 4D
+capture-short-section = 剩余 { $left } 字节，不足节头的前 12 字节
+capture-short-block = 剩余 { $left } 字节，不足一个块头
+capture-unknown-block = 未知的块类型 { $kind }
+capture-bad-block-length = 块长度 { $total } 不是不小于 12 的 4 的倍数
+capture-block-past-end = 块长度为 { $total }，但只剩 { $left } 字节
+capture-lengths-differ = 其结尾长度与开头长度不同
+capture-block-short = { $block ->
+    [section] 节头
+    [interface] 接口描述
+    [enhanced] 增强数据包块
+    [packet] 数据包块
+   *[simple] 简单数据包块
+}短于 { $bytes } 字节
+capture-packet-past-block = 数据包长度 { $length } 超出其所在的块
+capture-no-interface = 数据包引用了接口 { $id }，但没有接口描述声明它
+capture-short-pcap = { $size } 字节：短于 pcap 文件头（24）
+capture-short-record = 剩余 { $left } 字节，不足一个记录头
+capture-record-past-end = 记录长度为 { $length }，但只剩 { $left } 字节
+capture-record-impossible = 记录长度 { $length }/{ $original } 或时间小数部分不可能
+capture-record-unreadable = 无法读取的记录头
+capture-damaged-record = 字节 { $from }…{ $to }（{ $count } 字节）已损坏（{ $why }）；从偏移 { $next } 处的记录继续读取
+capture-record-truncated = 偏移 { $at } 处的记录被截断或已损坏（{ $why }）
