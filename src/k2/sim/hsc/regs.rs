@@ -8,7 +8,7 @@ use super::modes::level;
 use super::HscChannel;
 use crate::core::{Error, ErrorKind, Result};
 use crate::k2::memory::Memory;
-use crate::k2::sm_map::{self, HscKind};
+use crate::k2::sm_map::{self, HscKind, HscRegs};
 use serde::{Deserialize, Serialize};
 
 /// Control byte bits (§3.3.2).
@@ -87,6 +87,24 @@ pub fn read_table(v: &[u8], start: u32, relative: bool, cyclic: bool) -> std::re
     Ok(PvTable { pvs, relative, cyclic: cyclic && relative })
 }
 
+/// The note HSC adds when the multi-PV table it read breaks a rule (`why`, from
+/// [`read_table`]): status bit 3, «Неисправность в нескольких табличных значениях PV»
+/// (§3.3.2). The counter runs all the same. In process and through the helper (`k2::driver`,
+/// reading the registers and the table back after the helper saw the bit) alike.
+pub fn table_fault_note(r: &HscRegs, why: &str) -> String {
+    format!("PV table fault (SM{}.3 = 1): {why}", r.status)
+}
+
+/// The note HSC adds in multi-PV mode with no table to use: SM141.4 clear («HSC будет
+/// игнорировать данные в таблице PV», §3.3.3) and none loaded before. In process and through
+/// the helper alike.
+pub fn no_table_note(r: &HscRegs) -> String {
+    format!(
+        "PV table fault (SM{}.3 = 1): no table loaded; set SM{}.4 to load the table at SMW{}",
+        r.status, r.mpv_control, r.table
+    )
+}
+
 /// HDEF with a mode counter `ch` does not have (§3.3.1). In process and through the helper
 /// (`k2::driver`) alike.
 pub fn no_mode(ch: u8, mode: u8) -> Error {
@@ -153,15 +171,12 @@ impl HscChannel {
                 Err(e) => {
                     self.table = None;
                     self.fault = true;
-                    notes.push(format!("PV table fault (SM{}.3 = 1): {e}", r.status));
+                    notes.push(table_fault_note(&r, &e));
                 }
             }
         } else if self.table.is_none() {
             self.fault = true;
-            notes.push(format!(
-                "PV table fault (SM{}.3 = 1): no table loaded; set SM{}.4 to load the table at SMW{}",
-                r.status, r.mpv_control, r.table
-            ));
+            notes.push(no_table_note(&r));
         }
         if let Some(t) = &mut self.table {
             // The PV type and cyclic bits apply at every HSC, also to a table kept from before.
