@@ -492,7 +492,7 @@ fn every_refusal_reads_the_same_through_the_helper_and_in_process() {
         // is named as kept, a loaded one with its rule even when a kept one breaks a rule too.
         if case.contains('\n') {
             let loaded = case.ends_with("SMD72=1; pls 0");
-            let want = if loaded { "pulse count 1 is below 2" } else { "kept from an earlier PLS" };
+            let want = if loaded { "pulse count 1 is below 2" } else { "kept from before" };
             assert!(helper.0.contains(want), "{line}: {}", helper.0);
         }
         if helper != local {
