@@ -395,8 +395,10 @@ fn kept_values_profile_tables_and_pv_table_faults_match_the_simulator() {
         "set VB3101=2, VD3102=100, VD3106=300, SMW142=3101",
         "hsc 0",
     ];
-    let steps: Vec<Step> =
-        lines.iter().map(|l| Step { line: l.to_string(), wait: l.starts_with("pls").then(|| idle.clone()).flatten() }).collect();
+    let steps: Vec<Step> = lines
+        .iter()
+        .map(|l| Step { line: l.to_string(), wait: l.starts_with("pls").then(|| idle.clone()).flatten() })
+        .collect();
     let wire = compare("kept values and tables", &steps);
     let ok: Vec<bool> = wire.iter().map(|s| s["ok"].as_bool().unwrap()).collect();
     // PLS refused three times, the valid profile runs (10 + 5 pulses); HSC runs both times.

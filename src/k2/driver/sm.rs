@@ -19,8 +19,8 @@ use crate::k2::memory::Memory;
 use crate::k2::modbus_map;
 use crate::k2::operand::{Area, K2Operand, Width};
 use crate::k2::sm_map::PTO_REGS;
-use std::time::Duration;
 use crate::msg;
+use std::time::Duration;
 use tokio_modbus::Request;
 
 /// Gaps up to this many bytes are read through rather than split into two commands.

@@ -348,7 +348,8 @@ pub fn explain(r: &PtoRegs, spec: &PtoSpec, c: u8, cycle: u16, count: u32) -> In
     let cycle_kept = c & ctl::UPDATE_CYCLE == 0;
     let count_kept = !pwm && c & ctl::UPDATE_COUNT == 0;
     // A kept value stands in as one that breaks no rule: what fails then is a loaded value.
-    let loaded = invalid(r, spec, c, if cycle_kept { u16::MAX } else { cycle }, if count_kept { u32::MAX } else { count });
+    let loaded =
+        invalid(r, spec, c, if cycle_kept { u16::MAX } else { cycle }, if count_kept { u32::MAX } else { count });
     if let Some(why) = loaded {
         return why;
     }
