@@ -356,19 +356,70 @@ fn the_helper_is_printed_for_the_model_it_goes_into() {
     assert!(String::from_utf8_lossy(&o.stderr).contains("K209M-56DT"), "the catalogue is named");
 }
 
-/// The error (message, hint) of the last command of `line` on `device` (or in process).
+/// The error (message, hint) of the last command of `line` on `device` (or in process). A
+/// line stops at its first error, so lines that run on past one (an earlier refusal that
+/// leaves a value behind) come in on standard input, one after the other.
 fn refusal(device: Option<&str>, line: &str) -> (String, String) {
-    let mut args = vec!["--json", "-c", line];
+    let mut args = vec!["--json"];
+    let stdin = if line.contains('\n') {
+        format!("{line}\n")
+    } else {
+        args.extend(["-c", line]);
+        String::new()
+    };
     match device {
         Some(d) => args.extend(["--device", d]),
         None => args.extend(["--time", "stepped", "--model", "K205-16DT"]),
     }
-    let l = json_lines(&run(&args, ""));
+    let l = json_lines(&run(&args, &stdin));
     let last = l.last().unwrap_or_else(|| panic!("{line}: no output"));
     assert_ne!(last["ok"], true, "{line}: refused, not done: {l:?}");
     let e = &last["error"];
     let text = |k: &str| e[k].as_str().unwrap_or("").to_string();
     (text("message"), text("hint"))
+}
+
+/// HSC with a fault in its multi-PV table: the PLC reports it in the counter's status bit 3
+/// (K2 §3.3.2: «Неисправность в нескольких табличных значениях PV: 0 = нет, 1 = да») and the
+/// manual does not say HSC is refused, so the counter runs and the command succeeds with the
+/// fault named — in process and through the helper (which reads SMB141, SMW142 and the V
+/// table back), with the same note: no table loaded (SM141.4 clear, §3.3.3), an even start, a
+/// start past V, no PVs, a table that ends before its first PV.
+#[test]
+fn an_hsc_table_fault_is_noted_alike_through_the_helper_and_in_process() {
+    let srv = Server::start(&["--agent"]);
+    let url = srv.url();
+    let note = |device: Option<&str>, line: &str| -> String {
+        let mut args = vec!["--json", "-c", line];
+        match device {
+            Some(d) => args.extend(["--device", d]),
+            None => args.extend(["--time", "stepped", "--model", "K205-16DT"]),
+        }
+        let l = json_lines(&run(&args, ""));
+        let last = l.last().unwrap_or_else(|| panic!("{line}: no output"));
+        assert_eq!(last["ok"], true, "{line}: HSC runs, the fault is a note: {l:?}");
+        let text = last.to_string();
+        let at = text.find("PV table fault").unwrap_or_else(|| panic!("{line}: no note in {text}"));
+        text[at..].split('"').next().unwrap().to_string()
+    };
+    // The first case runs first on the served PLC: no table was ever loaded on HSC1.
+    let cases = [
+        "hdef 1 0; set SMB151=16#01, SMB47=16#80; hsc 1",
+        "hdef 0 0; set SMB141=16#11, SMW142=3000, SMB37=16#80; hsc 0",
+        "hdef 0 0; set SMB141=16#11, SMW142=9001, SMB37=16#80; hsc 0",
+        "hdef 0 0; set VB3101=0, SMB141=16#11, SMW142=3101, SMB37=16#80; hsc 0",
+        "hdef 0 0; set VB3101=2, VD3102=1, VD3106=50, SMB141=16#13, SMW142=3101, SMB37=16#80; hsc 0",
+    ];
+    for line in cases {
+        let helper = note(Some(&url), line);
+        let local = note(None, line);
+        assert_eq!(helper, local, "`{line}`: the routes word the fault differently");
+        assert!(helper.contains("SM36.3 = 1") || helper.contains("SM46.3 = 1"), "{helper}");
+    }
+    // And the counter counts through the helper as in process: its status bit 3 is set, its
+    // enable bit on.
+    let l = json_lines(&run(&["--json", "--device", &url, "-c", "get SM36.3, SMB37"], ""));
+    assert!(l.last().unwrap().to_string().contains("true"), "{l:?}");
 }
 
 /// Every refusal a command can meet reads the same through the helper (`sim serve --agent`,
@@ -380,7 +431,10 @@ fn refusal(device: Option<&str>, line: &str) -> (String, String) {
 /// disabled idle channel (the control byte's value in the words, §3.4.2.2 bit 7), PLS, PSTOP,
 /// HDEF and HSC on channels the model lacks, HDEF with a mode the counter lacks (§3.3.1),
 /// writes to SMB0 and to the read-only current positions SMD212/SMD242/SMD262 (§3.4.3.1,
-/// set through SMD208 + SM201.4), a date the clock cannot hold (SET_RTC).
+/// set through SMD208 + SM201.4), a date the clock cannot hold (SET_RTC); PLS on a value an
+/// earlier PLS left behind, its update bit clear (§3.4.2.2: named as kept, no register shows
+/// it), and on a multi-segment profile table that breaks a rule of §3.4.2.1 (read back over
+/// Modbus).
 #[test]
 fn every_refusal_reads_the_same_through_the_helper_and_in_process() {
     let srv = Server::start(&["--agent"]);
@@ -409,6 +463,22 @@ fn every_refusal_reads_the_same_through_the_helper_and_in_process() {
         "set SMW214=3",
         "rtc set 2026-02-30T10:00:00",
         "rtc set 2026-13-01T10:00:00",
+        // An update bit clear (§3.4.2.2, SM67.0 / SM67.2 «0 = нет»): PLS keeps the value an
+        // earlier PLS loaded — here one a refused PLS loaded — which no register shows.
+        "set SMB67=16#85, SMW68=1000, SMD72=1; pls 0\nset SMB67=16#81, SMW68=1000; pls 0",
+        "set SMB77=16#85, SMW78=1, SMD82=100; pls 1\nset SMB77=16#84, SMD82=100; pls 1",
+        "set SMB97=16#85, SMW98=1, SMD102=1; pls 2\nset SMB97=16#80; pls 2",
+        "set SMB67=16#85, SMW68=1, SMD72=100; pls 0\nset SMB67=16#84, SMD72=1; pls 0",
+        "set SMB67=16#D3, SMW68=1, SMW70=0; pls 0\nset SMB67=16#C2, SMW70=0; pls 0",
+        // A multi-segment PTO (§3.4.2.1): the table PLS reads, its start in SMW168 ….
+        "set SMW168=3000, SMB67=16#A0; pls 0",
+        "set SMW168=9001, SMB67=16#A0; pls 0",
+        "set VB3001=0, SMW168=3001, SMB67=16#A0; pls 0",
+        "set VB3001=1, VW3002=1, VD3006=10, SMW168=3001, SMB67=16#A0; pls 0",
+        "set VB3001=1, VW3002=100, VD3006=0, SMW168=3001, SMB67=16#A0; pls 0",
+        "set VB3001=2, VW3002=100, VD3006=10, VW3010=1, VD3014=5, SMW178=3001, SMB77=16#A0; pls 1",
+        "set VB3001=1, VW3002=2, VD3006=10, SMW168=3001, SMB67=16#A0; pls 0",
+        "set VB3001=1, VW3002=2, VD3006=10, SMW218=3001, SMB97=16#A0; pls 2",
     ];
     let mut differ = Vec::new();
     for case in cases {
@@ -418,6 +488,13 @@ fn every_refusal_reads_the_same_through_the_helper_and_in_process() {
         let helper = refusal(Some(&url), line);
         let local = refusal(None, line);
         assert!(!helper.0.is_empty(), "{line}: no message through the helper");
+        // The second PLS of a two-line case meets the value the first one left: a kept value
+        // is named as kept, a loaded one with its rule even when a kept one breaks a rule too.
+        if case.contains('\n') {
+            let loaded = case.ends_with("SMD72=1; pls 0");
+            let want = if loaded { "pulse count 1 is below 2" } else { "kept from before" };
+            assert!(helper.0.contains(want), "{line}: {}", helper.0);
+        }
         if helper != local {
             differ.push(format!(
                 "`{line}`\n  helper:     {} | hint: {}\n  in process: {} | hint: {}",

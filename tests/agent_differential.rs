@@ -366,3 +366,47 @@ fn repeated_pls_and_pstop_on_every_channel_match_the_simulator() {
         assert!(state.contains(&json!(latch)), "{latch}: {state:?}");
     }
 }
+
+/// The refusals the helper used to report in its own words, and the HSC table fault it used to
+/// report as a refusal, as one sequence: PLS on a value an earlier refused PLS left behind
+/// (update bit clear, K2 §3.4.2.2), multi-segment profile tables that break §3.4.2.1's rules and
+/// then one that is valid, and HSC with a faulty multi-PV table (§3.3.2: the status bit reports
+/// it; the counter runs). Through the helper and in process, every step has the same outcome
+/// (refused or done) and leaves the same state.
+#[test]
+fn kept_values_profile_tables_and_pv_table_faults_match_the_simulator() {
+    let idle = Some("SM66.7".to_string());
+    let lines = [
+        "set SMB67=16#85, SMW68=1000, SMD72=1",
+        "pls 0",
+        "set SMB67=16#81, SMW68=500",
+        "pls 0",
+        "set SMB67=16#84, SMD72=1",
+        "pls 0",
+        "set SMW168=3000, SMB67=16#A0",
+        "pls 0",
+        "set VB3001=2, VW3002=100, VD3006=10, VW3010=1, VD3014=5, SMW168=3001",
+        "pls 0",
+        "set VW3010=200",
+        "pls 0",
+        "hdef 0 0",
+        "set SMB141=16#11, SMW142=3000, SMB37=16#80",
+        "hsc 0",
+        "set VB3101=2, VD3102=100, VD3106=300, SMW142=3101",
+        "hsc 0",
+    ];
+    let steps: Vec<Step> = lines
+        .iter()
+        .map(|l| Step { line: l.to_string(), wait: l.starts_with("pls").then(|| idle.clone()).flatten() })
+        .collect();
+    let wire = compare("kept values and tables", &steps);
+    let ok: Vec<bool> = wire.iter().map(|s| s["ok"].as_bool().unwrap()).collect();
+    // PLS refused three times, the valid profile runs (10 + 5 pulses); HSC runs both times.
+    assert_eq!(
+        ok,
+        [true, false, true, false, true, false, true, false, true, false, true, true, true, true, true, true, true],
+        "{wire:?}"
+    );
+    let state = wire.last().unwrap()["state"].as_array().unwrap().clone();
+    assert!(state.contains(&json!("SMD212=15")), "the profile's 15 pulses: {state:?}");
+}

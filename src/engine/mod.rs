@@ -238,6 +238,17 @@ pub trait Machine {
     /// Writes a raw pattern. A family may ignore writes to locations its CPU owns
     /// (read-only system registers), as the real PLC does.
     fn set(&mut self, l: Loc, v: u32);
+    /// The bit at `l` (`LD`, `A`, `O` …): bit 0 of [`Machine::get`]. A family may give a
+    /// shorter way for bit locations (the scan engine's hottest read); the result is the same.
+    #[inline(always)]
+    fn get_bit(&self, l: Loc) -> bool {
+        self.get(l) & 1 != 0
+    }
+    /// Writes the bit at `l` (`ST`): [`Machine::set`] of 0 or 1, or a shorter way to the same.
+    #[inline(always)]
+    fn set_bit(&mut self, l: Loc, v: bool) {
+        self.set(l, v as u32)
+    }
     /// The location a pointer designates at width `w`, or `None` (a fault: bad indirect address).
     fn deref(&self, ptr: u32, w: Width) -> Option<Loc>;
     /// Executes family instruction `id` (its operands already checked); `inst` numbers

@@ -80,6 +80,33 @@ pub(super) fn is_zero<M: Machine>(m: &M, b: &Opd, ty: DataType) -> bool {
     }
 }
 
+/// [`arith`]'s integer add, subtract and multiply, on the hot path: the same result, status
+/// and ENO, without a `Result` that could carry a fault. `None` — and nothing written, status
+/// included — for everything else (REAL, division, a pointer outside memory), which
+/// [`arith`] then does as it always has.
+#[inline(always)]
+pub(super) fn arith_int<M: Machine>(m: &mut M, op: Arith, ty: DataType, a: &Opd, b: &Opd, out: &Opd) -> Option<bool> {
+    if ty == DataType::Real {
+        return None;
+    }
+    let out_loc = match *out {
+        Opd::Loc(l) => l,
+        _ => return None,
+    };
+    let (x, y) = (as_i64(ty, val(m, a, ty)?), as_i64(ty, val(m, b, ty)?));
+    let r = match op {
+        Arith::Add => x + y,
+        Arith::Sub => x - y,
+        Arith::Mul => x.wrapping_mul(y),
+        Arith::Div | Arith::Mod => return None,
+    };
+    let overflow = !fits(ty, r);
+    let raw = mask(ty, r);
+    m.flags(Flags { zero: raw == 0, overflow, negative: as_i64(ty, raw) < 0, div_zero: false });
+    m.set(out_loc, raw);
+    Some(!overflow)
+}
+
 /// Arithmetic with S7-200 status: result wraps to the type's width, overflow is flagged;
 /// division by zero leaves the output unchanged and returns ENO = 0 (SM1.3 on the K2).
 pub(super) fn arith<M: Machine>(

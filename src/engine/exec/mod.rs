@@ -24,7 +24,7 @@ use super::isa::{Arith, Comb};
 use super::timers::{self, CounterState, TimerState};
 use super::{read, write, Machine, Opd};
 use crate::core::DataType;
-use arith::{arith, as_i64, convert, fits, invert, is_zero, mask, shift_out, unary, word_logic};
+use arith::{arith, arith_int, as_i64, convert, fits, invert, is_zero, mask, shift_out, unary, word_logic};
 use logic::{compare, lcode, logic};
 use moves::swap;
 use operands::{bad, put, val};
@@ -370,13 +370,13 @@ impl Cpu {
             match ins {
                 Ins::Ld { loc, neg } => {
                     stack = (stack << 1) | cr as u32;
-                    cr = (m.get(*loc) & 1 != 0) ^ neg;
+                    cr = m.get_bit(*loc) ^ neg;
                 }
                 Ins::Logic { op, loc, neg } => {
-                    let v = (m.get(*loc) & 1 != 0) ^ neg;
+                    let v = m.get_bit(*loc) ^ neg;
                     cr = logic(lcode(*op), cr, v);
                 }
-                Ins::St { loc, neg } => m.set(*loc, (cr ^ neg) as u32),
+                Ins::St { loc, neg } => m.set_bit(*loc, cr ^ neg),
                 Ins::Not => cr = !cr,
                 Ins::ParOpen { op, neg, load } => {
                     if self.parens.len() >= MAX_PARENS {
@@ -385,7 +385,7 @@ impl Cpu {
                     }
                     self.parens.push((lcode(*op), *neg, cr));
                     if let Some(l) = load {
-                        cr = m.get(*l) & 1 != 0;
+                        cr = m.get_bit(*l);
                     }
                 }
                 Ins::ParClose => {
@@ -466,6 +466,10 @@ impl Cpu {
                 }
                 Ins::Arith { op, ty, a, b, out } => {
                     if cr {
+                        if let Some(eno) = arith_int(m, *op, *ty, a, b, out) {
+                            cr = eno;
+                            continue;
+                        }
                         match arith(m, *op, *ty, a, b, out) {
                             Ok(eno) => {
                                 cr = eno;
@@ -481,6 +485,10 @@ impl Cpu {
                     if cr {
                         let one = if *ty == DataType::Real { 1f32.to_bits() } else { 1 };
                         let op = if *inc { Arith::Add } else { Arith::Sub };
+                        if let Some(eno) = arith_int(m, op, *ty, out, &Opd::Imm(one), out) {
+                            cr = eno;
+                            continue;
+                        }
                         match arith(m, op, *ty, out, &Opd::Imm(one), out) {
                             Ok(eno) => cr = eno,
                             Err(f) => fail!(f),

@@ -228,6 +228,16 @@ impl K2Wire {
         match self.agent_run(&cmd, what) {
             Ok(_) => Ok(msg!("k2-done-by-helper", what = what).into()),
             Err(e) => match self.agent.as_ref().and_then(|c| c.last_refusal) {
+                // HSC ran and counts; its status bit 3 reports a fault in the multi-PV table
+                // (manual §3.3.2), which the simulator notes in process: the same outcome
+                // and the same note here.
+                Some((ResultCode::StatusBit, cause)) if cause == StatusCause::PvTable as u8 => {
+                    let Command::Hsc(n) = cmd else { return Err(e) };
+                    match self.pv_table_note(n) {
+                        Some(note) => Ok(msg!("agent-done-with-note", what = what, note = note).text),
+                        None => Err(e),
+                    }
+                }
                 Some((rc, cause)) => Err(self.in_process_words(&cmd, rc, cause).unwrap_or(e)),
                 None => Err(e),
             },
@@ -265,12 +275,15 @@ impl K2Wire {
                 self.read_sm(&ops).ok()?;
                 let m = &self.sm_shadow;
                 let c = m.sm_byte(r.control);
-                let pwm = c & pto::ctl::PWM != 0;
-                let loaded = c & pto::ctl::UPDATE_CYCLE != 0 && (pwm || c & pto::ctl::UPDATE_COUNT != 0);
-                if !loaded || (!pwm && c & pto::ctl::MULTI != 0) {
-                    return None;
+                if c & pto::ctl::PWM == 0 && c & pto::ctl::MULTI != 0 {
+                    // A multi-segment PTO: the table PLS read, SMW168 … through the helper and the
+                    // table itself over Modbus (V), checked as in process.
+                    self.read_sm(&[K2Operand::new(Area::SM, Width::Word, r.profile).to_core()]).ok()?;
+                    let start = self.sm_shadow.sm_word(r.profile);
+                    let v = self.profile_table(start).ok()?;
+                    return pto::profile(r, spec, c, start, &v).err().map(|w| w.error(r));
                 }
-                pto::invalid(r, spec, c, m.sm_word(r.cycle), m.sm_dword(r.count)).map(|w| w.error(r))
+                Some(pto::explain(r, spec, c, m.sm_word(r.cycle), m.sm_dword(r.count)).error(r))
             }
             (ResultCode::StatusBit, Command::Pls(n)) if cause == StatusCause::NothingToDo as u8 => {
                 let r = PTO_REGS.iter().find(|r| r.channel == *n)?;
@@ -292,6 +305,70 @@ impl K2Wire {
             }
             _ => None,
         }
+    }
+
+    /// A table in V that PLS or HSC reads (a multi-segment profile, §3.4.2.1; a PV table,
+    /// §3.3.3): a copy of the V area holding the count byte at the odd offset `start` and the
+    /// `entry` bytes of each of its entries, read over Modbus (V is in the Modbus map, §3.2);
+    /// the rest of the copy is 0. Nothing past the count byte is read when the start or the
+    /// count breaks the table's rules (the check then names that).
+    fn v_table(&mut self, start: u16, entry: u32, max: u8) -> Result<Vec<u8>> {
+        let len = self.space.area_len(Area::V);
+        let mut v = vec![0u8; len as usize];
+        let start = start as u32;
+        if start.is_multiple_of(2) || start >= len {
+            return Ok(v);
+        }
+        let w = VWords(self).read_v(start - 1, 1)?;
+        let n = w.first().map_or(0, |w| *w as u8);
+        v[start as usize] = n;
+        let end = start + 1 + entry * n as u32;
+        if n == 0 || n > max || end > len {
+            return Ok(v);
+        }
+        // Entries from the even byte after the count, at most 120 words a read.
+        let mut at = start + 1;
+        while at < end {
+            let words = ((end - at).div_ceil(2)).min(120);
+            let got = VWords(self).read_v(at, words as u16)?;
+            for (k, w) in got.iter().enumerate() {
+                let b = at as usize + 2 * k;
+                for (i, x) in w.to_be_bytes().into_iter().enumerate() {
+                    if let Some(slot) = v.get_mut(b + i) {
+                        *slot = x;
+                    }
+                }
+            }
+            at += 2 * words;
+        }
+        Ok(v)
+    }
+
+    /// A multi-segment profile table at `start` (8 bytes a segment, §3.4.2.1).
+    fn profile_table(&mut self, start: u16) -> Result<Vec<u8>> {
+        self.v_table(start, 8, crate::k2::sim::pto::MAX_SEGMENTS)
+    }
+
+    /// HSC `n` ran and the helper found its multi-PV fault bit set (result 8, cause 3): the
+    /// note the simulator adds in process, from the registers and the V table read back
+    /// (manual §3.3.2: the status bit reports a fault in the table; the counter runs, as
+    /// HSC started it). `None` when a read fails or the table reads as valid now.
+    fn pv_table_note(&mut self, n: u8) -> Option<String> {
+        use crate::k2::sim::hsc;
+        let r = crate::k2::sm_map::HSC_REGS.iter().find(|r| r.channel == n)?;
+        let ops = [
+            K2Operand::new(Area::SM, Width::Byte, r.mpv_control).to_core(),
+            K2Operand::new(Area::SM, Width::Word, r.table).to_core(),
+        ];
+        self.read_sm(&ops).ok()?;
+        let (b, start) = (self.sm_shadow.sm_byte(r.mpv_control), self.sm_shadow.sm_word(r.table));
+        if b & hsc::mpv::LOAD == 0 {
+            return Some(hsc::no_table_note(r));
+        }
+        let v = self.v_table(start, 4, hsc::MAX_PVS).ok()?;
+        hsc::read_table(&v, start as u32, b & hsc::mpv::RELATIVE != 0, b & hsc::mpv::CYCLIC != 0)
+            .err()
+            .map(|e| hsc::table_fault_note(r, &e))
     }
 
     pub(super) fn rtc_read(&mut self) -> Result<RtcTime> {

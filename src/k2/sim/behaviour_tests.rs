@@ -184,9 +184,11 @@ fn invalid_cycle_or_count_sets_bit_4_and_refuses() {
     set(&mut s, "SMW78=1, SMD82=100");
     let e = s.pls(1).unwrap_err();
     assert_eq!(e.operand.as_deref(), Some("SMW78"));
-    // 16#84 after power-up: the cycle was never loaded.
+    // 16#84 after power-up: the cycle was never loaded (0, §3.4.2.2: «Все значения по
+    // умолчанию … = 0»); named as the kept value, as the helper's route can name it.
     set(&mut s, "SMB97=16#84, SMD102=100");
-    assert!(s.pls(2).unwrap_err().message.contains("cycle time 0"));
+    let e = s.pls(2).unwrap_err();
+    assert!(e.message.contains("cycle time kept from before") && e.message.contains("SM97.0"), "{}", e.message);
     assert!(bit(&mut s, 96, 4));
 }
 

@@ -336,6 +336,44 @@ pub fn invalid(r: &PtoRegs, spec: &PtoSpec, c: u8, cycle: u16, count: u32) -> Op
     too_fast(r, spec, cycle as u64 * base_ns, msg!("k2-pls-what-cycle", cycle = cycle, unit = unit).into())
 }
 
+/// Why PLS refused with control byte `c`, in words made only of what the PLC's registers
+/// show: `cycle` and `count` are SMW68 and SMD72 … as they read. A value whose update bit is
+/// set is the one PLS loaded and is named with the rule it breaks ([`invalid`]'s words and
+/// order); one whose update bit is clear is the value PLS kept from an earlier PLS (§3.4.2.2:
+/// SM67.0 «Следует ли обновлять время цикла: 0 = нет», SM67.2 likewise for the pulse count),
+/// which no register shows, so it is named as kept. The rules on loaded values come first. In
+/// process ([`PtoChannel::pls`], once [`invalid`] refused the values it used) and through the
+/// helper (`k2::driver`, reading the registers back after status bit 4) alike.
+pub fn explain(r: &PtoRegs, spec: &PtoSpec, c: u8, cycle: u16, count: u32) -> Invalid {
+    let pwm = c & ctl::PWM != 0;
+    let cycle_kept = c & ctl::UPDATE_CYCLE == 0;
+    let count_kept = !pwm && c & ctl::UPDATE_COUNT == 0;
+    // A kept value stands in as one that breaks no rule: what fails then is a loaded value.
+    let loaded =
+        invalid(r, spec, c, if cycle_kept { u16::MAX } else { cycle }, if count_kept { u32::MAX } else { count });
+    if let Some(why) = loaded {
+        return why;
+    }
+    let (control, cyc, cnt) = (r.control, r.cycle, r.count);
+    match (cycle_kept, count_kept) {
+        (true, false) => Invalid {
+            msg: msg!("agent-pls-kept-cycle", control = control, cycle = cyc).text,
+            operand: format!("SMW{cyc}"),
+            hint: msg!("agent-pls-kept-cycle-hint", control = control, cycle = cyc).text,
+        },
+        (false, true) => Invalid {
+            msg: msg!("agent-pls-kept-count", control = control, count = cnt).text,
+            operand: format!("SMD{cnt}"),
+            hint: msg!("agent-pls-kept-count-hint", control = control, count = cnt).text,
+        },
+        _ => Invalid {
+            msg: msg!("agent-pls-kept-both", control = control, cycle = cyc, count = cnt).text,
+            operand: format!("SMB{control}"),
+            hint: msg!("agent-pls-kept-both-hint", control = control, cycle = cyc, count = cnt).text,
+        },
+    }
+}
+
 /// PLS on a channel whose control byte `c` has the enable bit clear while it is idle: nothing
 /// to stop, nothing started (§3.4.2.2, bit 7). The helper reads the same byte back.
 pub fn did_nothing(r: &PtoRegs, spec: &PtoSpec, c: u8) -> Error {
@@ -562,10 +600,6 @@ impl PtoChannel {
         why.error(&self.regs)
     }
 
-    fn refuse_parts(&self, mem: &mut Memory, msg: String, operand: String, hint: String) -> Error {
-        self.refuse(mem, Invalid { msg, operand, hint })
-    }
-
     /// Executes `PLS` for this channel at `now` (the caller advanced to `now` first).
     /// `v` is the V area (profile tables).
     pub fn pls(&mut self, mem: &mut Memory, now: Duration) -> Result<String> {
@@ -590,7 +624,8 @@ impl PtoChannel {
             self.count = mem.sm_dword(r.count);
         }
         if c & ctl::PWM != 0 {
-            if let Some(why) = invalid(&r, &self.spec, c, self.cycle, self.count) {
+            if invalid(&r, &self.spec, c, self.cycle, self.count).is_some() {
+                let why = explain(&r, &self.spec, c, mem.sm_word(r.cycle), mem.sm_dword(r.count));
                 return Err(self.refuse(mem, why));
             }
             let cycle_ns = self.cycle as u64 * base_ns;
@@ -621,9 +656,10 @@ impl PtoChannel {
             .into());
         }
         let segs: Vec<(u64, u64)> = if c & ctl::MULTI != 0 {
-            self.profile_segments(mem, base_ns, unit)?
+            self.profile_segments(mem)?
         } else {
-            if let Some(why) = invalid(&r, &self.spec, c, self.cycle, self.count) {
+            if invalid(&r, &self.spec, c, self.cycle, self.count).is_some() {
+                let why = explain(&r, &self.spec, c, mem.sm_word(r.cycle), mem.sm_dword(r.count));
                 return Err(self.refuse(mem, why));
             }
             vec![(self.cycle as u64 * base_ns, self.count as u64)]
@@ -647,75 +683,89 @@ impl PtoChannel {
     }
 
     /// Reads and checks the multi-segment profile table at SMW168 … (§3.4.2.1).
-    fn profile_segments(&self, mem: &mut Memory, base_ns: u64, unit: &str) -> Result<Vec<(u64, u64)>> {
+    fn profile_segments(&self, mem: &mut Memory) -> Result<Vec<(u64, u64)>> {
         let r = self.regs;
-        let start = mem.sm_word(r.profile) as u32;
-        let tab = format!("SMW{}", r.profile);
-        let v_len = mem.v.len() as u32;
-        if start.is_multiple_of(2) {
-            return Err(self.refuse_parts(
-                mem,
-                msg!("k2-pls-table-even", register = r.profile, start = start).into(),
-                tab,
-                msg!("k2-pls-table-even-hint", register = r.profile).into(),
-            ));
-        }
-        if start >= v_len {
-            return Err(self.refuse_parts(
-                mem,
-                msg!("k2-pls-table-past-v", start = start, top = v_len - 1).into(),
-                tab,
-                msg!("k2-pls-table-past-v-hint").into(),
-            ));
-        }
-        let n = mem.v[start as usize];
-        if n == 0 || n > MAX_SEGMENTS {
-            return Err(self.refuse_parts(
-                mem,
-                msg!("k2-pls-table-segments", start = start, n = n, max = MAX_SEGMENTS).into(),
-                format!("VB{start}"),
-                msg!("k2-pls-table-segments-hint").into(),
-            ));
-        }
-        let end = start + 1 + 8 * n as u32;
-        if end > v_len {
-            return Err(self.refuse_parts(
-                mem,
-                msg!("k2-pls-table-runs-past", start = start, last = end - 1).into(),
-                format!("VB{start}"),
-                msg!("k2-pls-table-runs-past-hint").into(),
-            ));
-        }
-        let mut segs = Vec::with_capacity(n as usize);
-        for k in 0..n as u32 {
-            let off = (start + 1 + 8 * k) as usize;
-            let cycle = u16::from_be_bytes([mem.v[off], mem.v[off + 1]]);
-            let count = u32::from_be_bytes([mem.v[off + 4], mem.v[off + 5], mem.v[off + 6], mem.v[off + 7]]);
-            if cycle < 2 {
-                return Err(self.refuse_parts(
-                    mem,
-                    msg!("k2-pls-segment-cycle", n = k + 1, word = off, cycle = cycle).into(),
-                    format!("VW{off}"),
-                    msg!("k2-pls-segment-cycle-hint").into(),
-                ));
-            }
-            if count < 1 {
-                return Err(self.refuse_parts(
-                    mem,
-                    msg!("k2-pls-segment-count", n = k + 1, dword = off + 4).into(),
-                    format!("VD{}", off + 4),
-                    msg!("k2-pls-segment-count-hint").into(),
-                ));
-            }
-            let cycle_ns = cycle as u64 * base_ns;
-            let what = msg!("k2-pls-what-segment-cycle", n = k + 1, cycle = cycle, unit = unit).into();
-            if let Some(why) = too_fast(&r, &self.spec, cycle_ns, what) {
-                return Err(self.refuse(mem, why));
-            }
-            segs.push((cycle_ns, count as u64));
-        }
-        Ok(segs)
+        let c = mem.sm_byte(r.control);
+        profile(&r, &self.spec, c, mem.sm_word(r.profile), &mem.v).map_err(|why| self.refuse(mem, why))
     }
+}
+
+/// The segments ((cycle ns, pulses) each) of the multi-segment profile table PLS reads with
+/// control byte `c`, table start `start` (SMW168 …) and the V area `v`, or the first rule the
+/// table breaks (§3.4.2.1: 1 to 64 segments, each a cycle time of 2 to 65535 in the channel's
+/// time base and a pulse count of at least 1; «начальная позиция в таблице профилей должна
+/// быть нечетным адрес в V области»; §3.4: the output's frequency limit). A function of what
+/// the PLC shows (SMW168 and V), so a refusal the helper reads back (status bit 4, then SMW168
+/// through the helper and the table over Modbus: `k2::driver`) is worded as in process.
+pub fn profile(
+    r: &PtoRegs,
+    spec: &PtoSpec,
+    c: u8,
+    start: u16,
+    v: &[u8],
+) -> std::result::Result<Vec<(u64, u64)>, Invalid> {
+    let base_ns: u64 = if c & ctl::BASE_MS != 0 { 1_000_000 } else { 1_000 };
+    let unit = if c & ctl::BASE_MS != 0 { "ms" } else { "µs" };
+    let start = start as u32;
+    let tab = format!("SMW{}", r.profile);
+    let v_len = v.len() as u32;
+    let refuse = |msg: String, operand: String, hint: String| Err(Invalid { msg, operand, hint });
+    if start.is_multiple_of(2) {
+        return refuse(
+            msg!("k2-pls-table-even", register = r.profile, start = start).into(),
+            tab,
+            msg!("k2-pls-table-even-hint", register = r.profile).into(),
+        );
+    }
+    if start >= v_len {
+        return refuse(
+            msg!("k2-pls-table-past-v", start = start, top = v_len.saturating_sub(1)).into(),
+            tab,
+            msg!("k2-pls-table-past-v-hint").into(),
+        );
+    }
+    let n = v[start as usize];
+    if n == 0 || n > MAX_SEGMENTS {
+        return refuse(
+            msg!("k2-pls-table-segments", start = start, n = n, max = MAX_SEGMENTS).into(),
+            format!("VB{start}"),
+            msg!("k2-pls-table-segments-hint").into(),
+        );
+    }
+    let end = start + 1 + 8 * n as u32;
+    if end > v_len {
+        return refuse(
+            msg!("k2-pls-table-runs-past", start = start, last = end - 1).into(),
+            format!("VB{start}"),
+            msg!("k2-pls-table-runs-past-hint").into(),
+        );
+    }
+    let mut segs = Vec::with_capacity(n as usize);
+    for k in 0..n as u32 {
+        let off = (start + 1 + 8 * k) as usize;
+        let cycle = u16::from_be_bytes([v[off], v[off + 1]]);
+        let count = u32::from_be_bytes([v[off + 4], v[off + 5], v[off + 6], v[off + 7]]);
+        if cycle < 2 {
+            return refuse(
+                msg!("k2-pls-segment-cycle", n = k + 1, word = off, cycle = cycle).into(),
+                format!("VW{off}"),
+                msg!("k2-pls-segment-cycle-hint").into(),
+            );
+        }
+        if count < 1 {
+            return refuse(
+                msg!("k2-pls-segment-count", n = k + 1, dword = off + 4).into(),
+                format!("VD{}", off + 4),
+                msg!("k2-pls-segment-count-hint").into(),
+            );
+        }
+        let cycle_ns = cycle as u64 * base_ns;
+        if let Some(why) = too_fast(r, spec, cycle_ns, msg!("k2-pls-what-segment-cycle", n = k + 1, cycle = cycle, unit = unit).into()) {
+            return Err(why);
+        }
+        segs.push((cycle_ns, count as u64));
+    }
+    Ok(segs)
 }
 
 /// A channel's state for snapshots (`crate::snapshot`); the registers and the model's

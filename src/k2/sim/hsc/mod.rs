@@ -48,7 +48,7 @@ mod events;
 mod modes;
 mod regs;
 
-pub use regs::{ctl, mpv, no_mode, read_table, st, PvTable, MAX_PVS};
+pub use regs::{ctl, mpv, no_mode, no_table_note, read_table, st, table_fault_note, PvTable, MAX_PVS};
 
 use crate::k2::catalog::HscSpec;
 use crate::k2::sm_map::{self, HscModeInputs, HscRegs};

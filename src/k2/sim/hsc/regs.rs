@@ -8,7 +8,7 @@ use super::modes::level;
 use super::HscChannel;
 use crate::core::{Error, ErrorKind, Result};
 use crate::k2::memory::Memory;
-use crate::k2::sm_map::{self, HscKind};
+use crate::k2::sm_map::{self, HscKind, HscRegs};
 use crate::msg;
 use serde::{Deserialize, Serialize};
 
@@ -88,6 +88,21 @@ pub fn read_table(v: &[u8], start: u32, relative: bool, cyclic: bool) -> std::re
     Ok(PvTable { pvs, relative, cyclic: cyclic && relative })
 }
 
+/// The note HSC adds when the multi-PV table it read breaks a rule (`why`, from
+/// [`read_table`]): status bit 3, «Неисправность в нескольких табличных значениях PV»
+/// (§3.3.2). The counter runs all the same. In process and through the helper (`k2::driver`,
+/// reading the registers and the table back after the helper saw the bit) alike.
+pub fn table_fault_note(r: &HscRegs, why: &str) -> String {
+    msg!("k2-hsc-table-fault", status = r.status, reason = why).text
+}
+
+/// The note HSC adds in multi-PV mode with no table to use: SM141.4 clear («HSC будет
+/// игнорировать данные в таблице PV», §3.3.3) and none loaded before. In process and through
+/// the helper alike.
+pub fn no_table_note(r: &HscRegs) -> String {
+    msg!("k2-hsc-table-fault-none", status = r.status, mpv = r.mpv_control, table = r.table).text
+}
+
 /// HDEF with a mode counter `ch` does not have (§3.3.1). In process and through the helper
 /// (`k2::driver`) alike.
 pub fn no_mode(ch: u8, mode: u8) -> Error {
@@ -162,12 +177,12 @@ impl HscChannel {
                 Err(e) => {
                     self.table = None;
                     self.fault = true;
-                    notes.push(msg!("k2-hsc-table-fault", status = r.status, reason = e).text);
+                    notes.push(table_fault_note(&r, &e));
                 }
             }
         } else if self.table.is_none() {
             self.fault = true;
-            notes.push(msg!("k2-hsc-table-fault-none", status = r.status, mpv = r.mpv_control, table = r.table).text);
+            notes.push(no_table_note(&r));
         }
         if let Some(t) = &mut self.table {
             // The PV type and cyclic bits apply at every HSC, also to a table kept from before.

@@ -74,6 +74,9 @@ const D: ArgKind = A::Value(Some(DataType::DWord));
 const DI: ArgKind = A::Value(Some(DataType::DInt));
 const B: ArgKind = A::Out(Some(DataType::Byte));
 
+/// Most operands a K2 instruction takes (PHOME's 12; `SPECIALS`).
+pub(super) const MAX_ARGS: usize = 12;
+
 /// The K2's own instructions (K2 manual §3.3, §3.4; PSTOP parameters from the KincoBuilder
 /// help as quoted in `../shared/spec/kinco-public-notes.md`).
 pub static SPECIALS: &[SpecialDef] = &[
@@ -428,6 +431,45 @@ impl Machine for K2Machine<'_> {
         }
     }
 
+    /// A bit of I, Q, M, V or SM read straight from its byte (no width dispatch); anything else
+    /// through [`Machine::get`]. The same bit either way.
+    #[inline(always)]
+    fn get_bit(&self, l: Loc) -> bool {
+        if let Width::Bit(k) = l.width {
+            let m = &self.sim.mem;
+            let b: &[u8] = match l.area {
+                0 => &m.i,
+                1 => &m.q,
+                2 => &m.m,
+                3 => &m.v,
+                4 => &m.sm,
+                _ => return self.get(l) & 1 != 0,
+            };
+            return b.get(l.index as usize).is_some_and(|v| v >> k & 1 != 0);
+        }
+        self.get(l) & 1 != 0
+    }
+
+    /// A bit of I, Q or M written straight into its byte (plain memory: no bookkeeping, as in
+    /// [`Machine::set`]); anything else through [`Machine::set`].
+    #[inline(always)]
+    fn set_bit(&mut self, l: Loc, v: bool) {
+        if let Width::Bit(k) = l.width {
+            let m = &mut self.sim.mem;
+            let b: &mut [u8] = match l.area {
+                0 => &mut m.i,
+                1 => &mut m.q,
+                2 => &mut m.m,
+                _ => return self.set(l, v as u32),
+            };
+            if let Some(x) = b.get_mut(l.index as usize) {
+                *x = (*x & !(1 << k)) | ((v as u8) << k);
+            }
+            return;
+        }
+        self.set(l, v as u32)
+    }
+
     #[inline(always)]
     fn set(&mut self, l: Loc, v: u32) {
         let i = l.index as usize;
@@ -489,8 +531,13 @@ impl Machine for K2Machine<'_> {
     }
 
     fn special(&mut self, sid: u16, inst: u32, args: &[Opd], types: &[DataType]) -> Result<bool, Fault> {
-        let vals: Vec<u32> =
-            args.iter().zip(types).map(|(a, t)| engine::read(&*self, a, *t)).collect::<Result<_, _>>()?;
+        // The operands' values on the stack (no allocation: PSTOP runs every scan of the
+        // helper); a K2 instruction has at most 12 operands (PHOME), and `SPECIALS` is the list.
+        let mut buf = [0u32; MAX_ARGS];
+        for (slot, (a, t)) in buf.iter_mut().zip(args.iter().zip(types)) {
+            *slot = engine::read(&*self, a, *t)?;
+        }
+        let vals = &buf[..args.len().min(MAX_ARGS)];
         let c = |k: usize| -> Result<u32, Fault> { Ok(vals[k]) };
         let now = self.now;
         let sim = &mut *self.sim;
@@ -575,7 +622,7 @@ impl Machine for K2Machine<'_> {
                     _ => false,
                 }
             }
-            id::PREL..=id::PFLO_F => return self.position(sid, inst, args, &vals),
+            id::PREL..=id::PFLO_F => return self.position(sid, inst, args, vals),
             _ => return Err(Fault::new(FaultKind::Instruction, msg!("k2-program-unknown-instruction", id = sid))),
         })
     }

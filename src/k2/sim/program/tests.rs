@@ -1,7 +1,7 @@
 //! The simulated K2 running programs: scan cycle, system bits, scan-time registers,
 //! modes, watchdog, the manual's IL snippets, and K2 instructions from a program.
 
-use super::Mode;
+use super::{family, Mode};
 use crate::core::{Clock, Device, OperandSpace, Value};
 use crate::engine::FaultKind;
 use crate::k2::sim::{self, K2Sim};
@@ -1524,4 +1524,12 @@ fn scan_statistics_and_costs_survive_a_snapshot() {
     let (pa, pb) = (a.plc().unwrap(), b.plc().unwrap());
     assert_eq!(pb.stats, pa.stats, "the scan count and times");
     assert_eq!(pb.costs, pa.costs);
+}
+
+/// The operands of a K2 instruction fit the stack buffer `K2Machine::special` reads them
+/// into (PHOME has the most: 12).
+#[test]
+fn every_k2_instruction_fits_the_operand_buffer() {
+    let most = family::SPECIALS.iter().map(|s| s.args.len()).max().unwrap();
+    assert_eq!(most, family::MAX_ARGS);
 }
