@@ -760,7 +760,9 @@ pub fn profile(
             );
         }
         let cycle_ns = cycle as u64 * base_ns;
-        if let Some(why) = too_fast(r, spec, cycle_ns, msg!("k2-pls-what-segment-cycle", n = k + 1, cycle = cycle, unit = unit).into()) {
+        if let Some(why) =
+            too_fast(r, spec, cycle_ns, msg!("k2-pls-what-segment-cycle", n = k + 1, cycle = cycle, unit = unit).into())
+        {
             return Err(why);
         }
         segs.push((cycle_ns, count as u64));
