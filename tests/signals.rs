@@ -407,7 +407,16 @@ fn every_long_running_command_stops_on_every_listed_signal_with_the_documented_s
             let deadline = std::time::Instant::now() + std::time::Duration::from_secs(30);
             match case.ready {
                 Ready::FirstLine => {
-                    let first = lines.next().unwrap_or_else(|| panic!("{}: no first line", case.what)).unwrap();
+                    let first = lines.next().unwrap_or_else(|| {
+                        // Ended before its first line: what it said on its error output is the why.
+                        let mut err = String::new();
+                        if let Some(mut e) = child.stderr.take() {
+                            use std::io::Read;
+                            let _ = e.read_to_string(&mut err);
+                        }
+                        panic!("{} ({sig}): no first line; status {:?}; error output: {err}", case.what, child.wait())
+                    });
+                    let first = first.unwrap();
                     assert!(!first.is_empty(), "{}", case.what);
                 }
                 Ready::AChild => {
