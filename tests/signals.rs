@@ -22,12 +22,19 @@ if arg[2] == "exit" then os.exit(3) end
 plcsh.wait_until(function() return false end, {timeout = 60000, every = 20})
 "#;
 
+/// The script's file, written once per test process: tests run side by side, and a rewrite
+/// (truncate, then write) while another test's plcsh reads it would hand that plcsh an empty
+/// script, which ends before its first line.
 fn script() -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("plcsh-signals-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let f = dir.join("wait.lua");
-    std::fs::write(&f, SCRIPT).unwrap();
-    f
+    static FILE: std::sync::OnceLock<std::path::PathBuf> = std::sync::OnceLock::new();
+    FILE.get_or_init(|| {
+        let dir = std::env::temp_dir().join(format!("plcsh-signals-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let f = dir.join("wait.lua");
+        std::fs::write(&f, SCRIPT).unwrap();
+        f
+    })
+    .clone()
 }
 
 fn read_back(device: &str, op: &str) -> i64 {
