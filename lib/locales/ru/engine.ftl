@@ -50,10 +50,10 @@ engine-timer-rounded = { $time } не делится на единицы это�
    *[many] единиц
 }), задержка не короче заданной
 
-## Выполнение: ошибки (K2 §2.2.1, серьёзные и нормальные ошибки)
+## Выполнение: неисправности (K2 §2.2.1, серьёзные и нормальные ошибки)
 
-engine-fault = ошибка { $code } ({ $name }): { $message }
-engine-fault-at = ошибка { $code } ({ $name }): { $message }, строка { $line } `{ $instruction }`
+engine-fault = неисправность { $code } ({ $name }): { $message }
+engine-fault-at = неисправность { $code } ({ $name }): { $message }, строка { $line } `{ $instruction }`
 engine-fault-watchdog = сторожевой таймер
 engine-fault-bad-address = неверный косвенный адрес
 engine-fault-call-depth = глубина вызовов
