@@ -7,6 +7,7 @@
 //! `<!-- generated: NAME … -->` and `<!-- end generated: NAME -->`; tests/reference_docs.rs
 //! compares them (and `PLCSH_BLESS=1 cargo test --test reference_docs` rewrites them).
 
+use crate::core::msg::Lang;
 use crate::core::{exit, ErrorKind};
 use crate::k2::catalog::{self, MODELS};
 use crate::k2::modbus_map::{self, Table, REGIONS};
@@ -158,7 +159,7 @@ pub fn environment_markdown() -> String {
 pub fn exit_markdown() -> String {
     let mut t = String::from("| status | name | when |\n|---|---|---|\n");
     for s in exit::STATUSES {
-        t.push_str(&format!("| **{}** | {} | {} |\n", s.code, s.name, cell(s.when)));
+        t.push_str(&format!("| **{}** | {} | {} |\n", s.code, (s.name)(Lang::En), cell(&(s.when)(Lang::En))));
     }
     t
 }

@@ -3,8 +3,10 @@
 //! stop signals return these constants, and the guide's reference page (docs/reference/exit-status.md)
 //! is made from [`STATUSES`], so the page and the program cannot disagree.
 
+use super::msg::{Lang, Msg};
 use super::platform::code;
 use super::ErrorKind;
+use crate::msg;
 
 /// Every command (or the script) succeeded.
 pub const OK: i32 = 0;
@@ -29,60 +31,38 @@ pub const TERMINATED: i32 = 128 + code::TERM;
 #[derive(Clone, Copy, Debug)]
 pub struct Status {
     pub code: i32,
-    pub name: &'static str,
-    pub when: &'static str,
+    /// Its short name and when it happens, from the catalogue (`engine.ftl`, ids `exit-…`);
+    /// the reference page formats them in English.
+    pub name: fn(Lang) -> Msg,
+    pub when: fn(Lang) -> Msg,
 }
 
 /// The exit statuses, in order. A Lua script's `os.exit(N)` returns N (after its abort
 /// handlers ran), which is not a status of plcsh's own and so not listed.
 pub static STATUSES: &[Status] = &[
-    Status {
-        code: OK,
-        name: "ok",
-        when: "every command succeeded; a script finished; every device of a fleet answered; \
-               `sim serve` stopped by SIGTERM, SIGHUP or Ctrl-C; `publish` stopped by Ctrl-C, \
-               SIGTERM or SIGHUP after every reading was delivered",
-    },
-    Status {
-        code: FAILED,
-        name: "failed",
-        when: "a command, a script or a check failed (the `error[KIND]` message says which); one \
-               device of a fleet failed; a lab criterion failed; a damaged recording was shown in part",
-    },
-    Status {
-        code: USAGE,
-        name: "usage",
-        when: "the command line is wrong: unknown flag or subcommand, missing or bad value, a file \
-               named with --config that does not exist, an unreadable recording",
-    },
+    Status { code: OK, name: |l| msg!(lang: l, "exit-ok-name"), when: |l| msg!(lang: l, "exit-ok-when") },
+    Status { code: FAILED, name: |l| msg!(lang: l, "exit-failed-name"), when: |l| msg!(lang: l, "exit-failed-when") },
+    Status { code: USAGE, name: |l| msg!(lang: l, "exit-usage-name"), when: |l| msg!(lang: l, "exit-usage-when") },
     Status {
         code: BROKER_AUTH,
-        name: "broker refused",
-        when: "`publish`: the MQTT broker refused the credentials (username, password or its ACL)",
+        name: |l| msg!(lang: l, "exit-broker-refused-name"),
+        when: |l| msg!(lang: l, "exit-broker-refused-when"),
     },
     Status {
         code: BROKER_UNREACHABLE,
-        name: "broker unreachable",
-        when: "`publish`: the broker's TLS certificate did not verify, or no broker answered within \
-               10 s of the start",
+        name: |l| msg!(lang: l, "exit-broker-unreachable-name"),
+        when: |l| msg!(lang: l, "exit-broker-unreachable-when"),
     },
-    Status {
-        code: HANGUP,
-        name: "SIGHUP",
-        when: "the terminal went away (a dropped SSH session; Windows: the console window closed); \
-               the running command stopped and the abort handlers ran",
-    },
+    Status { code: HANGUP, name: |l| msg!(lang: l, "exit-hangup-name"), when: |l| msg!(lang: l, "exit-hangup-when") },
     Status {
         code: INTERRUPTED,
-        name: "Ctrl-C",
-        when: "Ctrl-C stopped a one-shot, a script or a fleet run; the abort handlers ran (in the \
-               interactive shell Ctrl-C returns to the prompt instead)",
+        name: |l| msg!(lang: l, "exit-interrupted-name"),
+        when: |l| msg!(lang: l, "exit-interrupted-when"),
     },
     Status {
         code: TERMINATED,
-        name: "SIGTERM",
-        when: "SIGTERM (`timeout`, `systemctl stop`, CI; Windows: Ctrl-Break) stopped the work; the \
-               abort handlers ran",
+        name: |l| msg!(lang: l, "exit-terminated-name"),
+        when: |l| msg!(lang: l, "exit-terminated-when"),
     },
 ];
 

@@ -549,7 +549,7 @@ pub fn markdown(specials: &[super::SpecialDef], family: &str) -> String {
     for sp in specials {
         let n = sp.args.len();
         let ops = if sp.optional > 0 { format!("{}–{n}", n - sp.optional as usize) } else { n.to_string() };
-        s.push_str(&format!("| `{}` ({family}) | {ops} | {} | {} |\n", sp.name, sp.doc, sp.source));
+        s.push_str(&format!("| `{}` ({family}) | {ops} | {} | {} |\n", sp.name, (sp.doc)(Lang::En), sp.source));
     }
     s
 }

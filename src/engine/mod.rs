@@ -151,7 +151,9 @@ pub struct SpecialDef {
     /// Whether it acts on the rising edge of its enable input (K2 PLS, §3.4.2) rather
     /// than whenever the CR is on.
     pub edge: bool,
-    pub doc: &'static str,
+    /// What it does (docs/il.md shows it in English; catalogue `engine.ftl`, ids
+    /// `engine-doc-FAMILY-…`, one row per family instruction).
+    pub doc: fn(crate::core::msg::Lang) -> crate::core::msg::Msg,
     pub source: &'static str,
 }
 
@@ -301,7 +303,9 @@ pub fn loc_of<M: Machine + ?Sized>(m: &M, o: &Opd, ty: DataType) -> Result<Optio
 fn deref<M: Machine + ?Sized>(m: &M, p: Loc, ty: DataType) -> Result<Loc, Fault> {
     let ptr = m.get(p);
     let w = width_of(ty);
-    m.deref(ptr, w).ok_or_else(|| Fault::new(FaultKind::BadAddress, format!("bad indirect address 16#{ptr:08X}")))
+    m.deref(ptr, w).ok_or_else(|| {
+        Fault::new(FaultKind::BadAddress, crate::msg!("engine-bad-address-at", pointer = format!("16#{ptr:08X}")))
+    })
 }
 
 /// The location width that holds a type.

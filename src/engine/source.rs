@@ -9,6 +9,8 @@
 //! `MNEMONIC operand, operand, …`. Every statement keeps its line and column so load
 //! errors can name `file:line:column`.
 
+use crate::msg;
+
 /// Where a statement or operand came from (1-based line and column).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
 pub struct Pos {
@@ -105,7 +107,7 @@ pub fn parse(text: &str) -> Result<Vec<Stmt>, LexError> {
                 }
             }
             let Some(end) = closed else {
-                return Err(LexError { pos: start, message: "comment `(*` is never closed with `*)`".into() });
+                return Err(LexError { pos: start, message: msg!("engine-comment-unclosed").into() });
             };
             if let Some(n) = network_number(&text[body_start..end]) {
                 networks.push((n, start));
@@ -145,7 +147,7 @@ pub fn parse(text: &str) -> Result<Vec<Stmt>, LexError> {
         if l.trim().chars().count() > MAX_LINE {
             return Err(LexError {
                 pos: Pos { line, col: 1 },
-                message: format!("line longer than {MAX_LINE} characters"),
+                message: msg!("engine-line-too-long", max = MAX_LINE).into(),
             });
         }
         statement(l, line, &mut out)?;
@@ -248,7 +250,7 @@ fn instruction(l: &str, from: usize, line: u32, out: &mut Vec<Stmt>) -> Result<(
             let lead = part.len() - part.trim_start().len();
             let at = Pos { line, col: col_of(l, args_off + off + lead) };
             if t.is_empty() {
-                return Err(LexError { pos: at, message: format!("empty operand in `{}`", body.trim_end()) });
+                return Err(LexError { pos: at, message: msg!("engine-empty-operand", text = body.trim_end()).into() });
             }
             operands.push(OperandText { text: squeeze(t), pos: at });
             off += part.len() + 1;

@@ -104,7 +104,7 @@ impl Family for Toy {
             args: &[ArgKind::Const, ArgKind::Out(Some(DataType::Int))],
             optional: 0,
             edge: true,
-            doc: "toy: writes its constant to OUT",
+            doc: |_| crate::core::msg::Msg { id: "toy", text: "toy: writes its constant to OUT".into() },
             source: "test",
         }];
         &S

@@ -443,7 +443,7 @@ pub static SPECIALS: &[SpecialDef] = &[
         args: &[ArgKind::Bit, ArgKind::Value(Some(DataType::Int))],
         optional: 0,
         edge: false,
-        doc: "OUT Tn K|D: FX timer coil (input = CR, CR unchanged)",
+        doc: |l| msg!(lang: l, "engine-doc-fx-fxtim"),
         source: "FX PM 2, Out; 4, Timers",
     },
     SpecialDef {
@@ -452,7 +452,7 @@ pub static SPECIALS: &[SpecialDef] = &[
         args: &[ArgKind::Bit, ArgKind::Value(Some(DataType::Int))],
         optional: 0,
         edge: false,
-        doc: "OUT Cn K|D: FX 16-bit counter coil",
+        doc: |l| msg!(lang: l, "engine-doc-fx-fxcnt"),
         source: "FX PM 2, Out; 4, Counters",
     },
     SpecialDef {
@@ -461,7 +461,7 @@ pub static SPECIALS: &[SpecialDef] = &[
         args: &[ArgKind::Bit, ArgKind::Value(Some(DataType::DInt))],
         optional: 0,
         edge: false,
-        doc: "OUT Cn K|D: FX 32-bit up/down counter coil",
+        doc: |l| msg!(lang: l, "engine-doc-fx-fxcnt32"),
         source: "FX PM 2, Out; 4, Counters",
     },
     SpecialDef {
@@ -470,7 +470,7 @@ pub static SPECIALS: &[SpecialDef] = &[
         args: &[ArgKind::Value(None)],
         optional: 0,
         edge: false,
-        doc: "RST D/T/C: clear a register, timer or counter",
+        doc: |l| msg!(lang: l, "engine-doc-fx-fxrst"),
         source: "FX PM 2, Set and Reset",
     },
 ];

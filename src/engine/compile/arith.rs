@@ -9,6 +9,7 @@ use crate::core::{DataType, Result};
 use crate::engine::isa::{Arith, Conv, Logic, Shift, TyHint, Unary};
 use crate::engine::source::{OperandText, Pos};
 use crate::engine::{Family, Opd};
+use crate::msg;
 
 impl<F: Family + ?Sized> Ctx<'_, F> {
     /// `+I IN1, IN2, OUT` (or `IN, OUT`: OUT := OUT op IN).
@@ -16,7 +17,7 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
         let (t, a, b, out) = self.binary(ops, |all| {
             let t = signed(self.value_ty(m, ty, all)?);
             if t == DataType::Bool {
-                return Err(self.e(pos, format!("{m} works on numbers, not bits")));
+                return Err(self.e_m(pos, msg!("engine-numbers-not-bits", mnemonic = m)));
             }
             Ok(t)
         })?;
@@ -87,7 +88,7 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
             Unary::Abs => signed(self.value_ty(m, TyHint::Auto, &[(&ops[1], &out), (&ops[0], &a)])?),
         };
         if t == DataType::Bool || t == DataType::Byte {
-            return Err(self.e(pos, format!("{m} works on INT, DINT or REAL values")));
+            return Err(self.e_m(pos, msg!("engine-int-dint-real", mnemonic = m)));
         }
         Ok(Ins::Unary { op, ty: t, a: self.typed(&ops[0], &a, t)?, out: self.typed(&ops[1], &out, t)? })
     }

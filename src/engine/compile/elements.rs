@@ -11,6 +11,7 @@ use crate::core::{DataType, Result};
 use crate::engine::isa::{CounterKind, TimerKind};
 use crate::engine::source::OperandText;
 use crate::engine::{Element, Family, Opd};
+use crate::msg;
 
 impl<F: Family + ?Sized> Ctx<'_, F> {
     /// `TON T37, PT[, R]`.
@@ -71,25 +72,27 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
                 let units = (ns + base - 1).div_euclid(base);
                 if !(0..=32767).contains(&units) {
                     let longest = 32767 * base / 1_000_000;
-                    return Err(self.e(
+                    return Err(self.e_m(
                         o.pos,
-                        format!(
-                            "{t} is {units} units of this {} ms timer; the preset must be 0…32767 (at most {}.{:03} s)",
-                            base / 1_000_000,
-                            longest / 1000,
-                            longest % 1000
+                        msg!(
+                            "engine-timer-preset-range",
+                            time = t,
+                            units = units as i64,
+                            base = (base / 1_000_000).to_string(),
+                            longest = format!("{}.{:03}", longest / 1000, longest % 1000)
                         ),
                     ));
                 }
                 if units * base != ns {
                     let got = units * base / 1_000_000;
-                    self.prog.warnings.push(format!(
-                        "{}:{}:{}: {t} is not a whole number of this timer's {} ms units: rounded up to {got} ms ({units} units), never shorter than asked",
-                        self.prog.file,
-                        o.pos.line,
-                        o.pos.col,
-                        base / 1_000_000
-                    ));
+                    let m = msg!(
+                        "engine-timer-rounded",
+                        time = t,
+                        base = (base / 1_000_000).to_string(),
+                        got = got.to_string(),
+                        units = units as i64
+                    );
+                    self.prog.warnings.push(format!("{}:{}:{}: {m}", self.prog.file, o.pos.line, o.pos.col));
                 }
                 return Ok(Opd::Imm(units as u16 as u32));
             }

@@ -9,6 +9,7 @@ use crate::core::{DataType, Result};
 use crate::engine::isa::{Kind, TyHint};
 use crate::engine::source::{OperandText, Pos};
 use crate::engine::{Family, Opd};
+use crate::msg;
 
 impl<F: Family + ?Sized> Ctx<'_, F> {
     /// `FOR INDX, INIT, FINAL`: INT or DINT; its end is filled in at the matching `NEXT`.
@@ -56,9 +57,9 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
         let event = self.typed(&ops[1], &r, DataType::Int)?;
         if let Opd::Imm(v) = event {
             if (v as i16) < 0 || !self.fam.event_exists(v as i16 as u32) {
-                return Err(self.e(
+                return Err(self.e_m(
                     ops[1].pos,
-                    format!("ATCH: no interrupt event {} (events: {})", v as i16, self.fam.event_list()),
+                    msg!("engine-no-event", event = (v as i16).to_string(), events = self.fam.event_list()),
                 ));
             }
         }

@@ -23,8 +23,10 @@ use super::isa::{
 };
 use super::source::{self, OperandText, Pos, PouKind, Stmt};
 use super::{ArgKind, CostTable, Element, Family, Loc, Opd, SpecialDef};
+use crate::core::msg::Msg;
 use crate::core::text::edit_distance;
 use crate::core::{DataType, Error, ErrorKind, Result};
+use crate::msg;
 use operands::Raw;
 use std::collections::HashMap;
 
@@ -272,6 +274,13 @@ fn err(file: &str, pos: Pos, msg: impl std::fmt::Display) -> Error {
     Error::new(ErrorKind::Syntax, format!("{file}:{}:{}: {msg}", pos.line, pos.col))
 }
 
+/// A load error at `file:line:col:` from the catalogue, keeping the message's id as the
+/// error's code.
+fn err_m(file: &str, pos: Pos, m: Msg) -> Error {
+    let text = format!("{file}:{}:{}: {}", pos.line, pos.col, m.text);
+    Error::new(ErrorKind::Syntax, Msg { text, ..m })
+}
+
 /// Compiles IL `text` (named `file` in messages) for `fam`. Statements before any POU
 /// header form the main program. A refusal quoting the text writes its control characters
 /// out ([`crate::core::encoding::printable`]).
@@ -332,13 +341,12 @@ fn compile_text<F: Family + ?Sized>(text: &str, file: &str, fam: &F) -> Result<P
     } else {
         let p = &pous[0];
         if p.0 != PouKind::Program && pous.iter().all(|q| q.0 != PouKind::Program) && pous.len() > 1 {
-            return Err(err(file, p.2, "no PROGRAM in the file: the main program runs every scan")
-                .hint("start the main program with `PROGRAM MAIN` (or put it before the first SUBROUTINE)"));
+            return Err(err_m(file, p.2, msg!("engine-no-program")).hint(msg!("engine-no-program-hint")));
         }
     }
     for (i, p) in pous.iter().enumerate() {
         if pous[..i].iter().any(|q| q.1 == p.1) {
-            return Err(err(file, p.2, format!("{} is defined twice", p.1)));
+            return Err(err_m(file, p.2, msg!("engine-pou-twice", name = &p.1)));
         }
         cx.prog.pous.push(Pou { name: p.1.clone(), kind: p.0, entry: 0 });
     }
@@ -354,7 +362,11 @@ fn compile_text<F: Family + ?Sized>(text: &str, file: &str, fam: &F) -> Result<P
             match s {
                 Stmt::Network { n, .. } => network = *n,
                 Stmt::Label { name, pos } if labels.insert(name.clone(), cx.prog.code.len() as u32).is_some() => {
-                    return Err(err(file, *pos, format!("label {name} is defined twice in {}", cx.prog.pous[pi].name)));
+                    return Err(err_m(
+                        file,
+                        *pos,
+                        msg!("engine-label-twice", name = name, pou = &cx.prog.pous[pi].name),
+                    ));
                 }
                 Stmt::Instr { mnemonic, operands, pos } => {
                     let (mut ins, class) = cx.instr(mnemonic, operands, *pos, &mut jumps, &mut calls)?;
@@ -362,14 +374,14 @@ fn compile_text<F: Family + ?Sized>(text: &str, file: &str, fam: &F) -> Result<P
                     match &mut ins {
                         Ins::For { .. } => {
                             if fors.len() >= MAX_FOR_NESTING {
-                                return Err(err(file, *pos, format!("FOR loops nested deeper than {MAX_FOR_NESTING}")));
+                                return Err(err_m(file, *pos, msg!("engine-for-too-deep", max = MAX_FOR_NESTING)));
                             }
                             fors.push((here, *pos));
                         }
                         Ins::Next { start } => {
                             let Some((f, _)) = fors.pop() else {
-                                return Err(err(file, *pos, "NEXT without a FOR".to_string())
-                                    .hint("a loop is FOR INDX, INIT, FINAL … NEXT in the same POU"));
+                                return Err(err_m(file, *pos, msg!("engine-next-without-for"))
+                                    .hint(msg!("engine-next-without-for-hint")));
                             };
                             *start = f as u32;
                             if let Ins::For { end, .. } = &mut cx.prog.code[f] {
@@ -385,15 +397,15 @@ fn compile_text<F: Family + ?Sized>(text: &str, file: &str, fam: &F) -> Result<P
             }
         }
         if let Some((_, pos)) = fors.last() {
-            return Err(err(file, *pos, format!("FOR without a NEXT in {}", cx.prog.pous[pi].name)));
+            return Err(err_m(file, *pos, msg!("engine-for-without-next", pou = &cx.prog.pous[pi].name)));
         }
         cx.push(Ins::End, CostClass::Jump, Pos::default(), network, "(end)", &[]);
         for (at, name, pos) in jumps {
             let Some(&to) = labels.get(&name) else {
                 let near = suggest(&name, labels.keys().map(|s| s.as_str()));
-                let mut e = err(file, pos, format!("no label {name} in {}", cx.prog.pous[pi].name));
+                let mut e = err_m(file, pos, msg!("engine-no-label", name = &name, pou = &cx.prog.pous[pi].name));
                 if let Some(n) = near {
-                    e = e.hint(format!("did you mean {n}?"));
+                    e = e.hint(msg!("engine-did-you-mean", name = n));
                 }
                 return Err(e);
             };
@@ -406,10 +418,10 @@ fn compile_text<F: Family + ?Sized>(text: &str, file: &str, fam: &F) -> Result<P
     for (at, name, pos) in calls {
         let Some(p) = cx.prog.pou(&name) else {
             let near = suggest(&name, cx.prog.pous.iter().map(|p| p.name.as_str()));
-            let mut e = err(file, pos, format!("no subroutine or interrupt routine {name} in {file}"));
+            let mut e = err_m(file, pos, msg!("engine-no-routine", name = &name, file = file));
             e = e.hint(match near {
-                Some(n) => format!("did you mean {n}?"),
-                None => "define it with `SUBROUTINE NAME` (or `INTERRUPT NAME`) … `END_SUBROUTINE`".into(),
+                Some(n) => msg!("engine-did-you-mean", name = n),
+                None => msg!("engine-no-routine-hint"),
             });
             return Err(e);
         };
@@ -461,6 +473,11 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
         err(self.file, pos, msg)
     }
 
+    /// [`err_m`] at `pos` of this file.
+    fn e_m(&self, pos: Pos, m: Msg) -> Error {
+        err_m(self.file, pos, m)
+    }
+
     #[allow(clippy::type_complexity)]
     fn instr(
         &mut self,
@@ -485,7 +502,7 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
                 let (opd, ty) = match k {
                     ArgKind::Const => {
                         let Raw::Lit(t) = &r else {
-                            return Err(self.e(o.pos, format!("{m}: {} must be a constant", o.text)));
+                            return Err(self.e_m(o.pos, msg!("engine-needs-constant", mnemonic = m, operand = &o.text)));
                         };
                         (Opd::Imm(self.literal(o, t, DataType::DInt)?), DataType::DInt)
                     }
@@ -512,11 +529,11 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
             .map(|d| d.name)
             .chain(self.specials.iter().map(|s| s.name))
             .chain(["LDW=", "LDW<>", "LDW>", "LDW<", "LDD=", "LDR>", "AW=", "OW="].iter().copied());
-        let mut e = self.e(pos, format!("unknown instruction {m}"));
+        let mut e = self.e_m(pos, msg!("engine-unknown-instruction", mnemonic = m));
         let names = names.filter(|n| !isa::NEVER_SUGGESTED.contains(n));
         e = e.hint(match suggest(m, names) {
-            Some(n) => format!("did you mean {n}? (docs/il.md lists the instructions)"),
-            None => "docs/il.md lists the instructions this simulator runs".into(),
+            Some(n) => msg!("engine-unknown-instruction-near", name = n),
+            None => msg!("engine-unknown-instruction-hint"),
         });
         Err(e)
     }

@@ -7,6 +7,7 @@ use crate::core::{DataType, Result};
 use crate::engine::isa::TyHint;
 use crate::engine::source::OperandText;
 use crate::engine::{Family, Opd};
+use crate::msg;
 
 impl<F: Family + ?Sized> Ctx<'_, F> {
     /// `MOV… IN, OUT`.
@@ -26,7 +27,7 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
         let n = self.typed(&ops[2], &n_raw, DataType::Int)?;
         if let Opd::Imm(v) = n {
             if !(1..=255).contains(&(v as u16 as i16)) {
-                return Err(self.e(ops[2].pos, format!("{m}: N must be 1…255, found {}", v as i16)));
+                return Err(self.e_m(ops[2].pos, msg!("engine-block-n", mnemonic = m, n = (v as i16).to_string())));
             }
         }
         Ok(Ins::Block { ty: t, a: self.typed(&ops[0], &a, t)?, out: self.typed(&ops[1], &out, t)?, n, fill })

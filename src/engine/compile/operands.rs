@@ -5,10 +5,12 @@
 
 use super::Ctx;
 use crate::core::literal::parse_literal;
+use crate::core::msg::Msg;
 use crate::core::{DataType, Result};
 use crate::engine::isa::TyHint;
 use crate::engine::source::OperandText;
 use crate::engine::{Family, Loc, Opd, Width};
+use crate::msg;
 
 fn bits_of(ty: DataType) -> u32 {
     ty.bits()
@@ -48,16 +50,16 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
             let r = self.fam.operand(rest).map_err(fail)?;
             if r.loc.width != Width::DWord {
                 return Err(self
-                    .e(o.pos, format!("{t}: a pointer is a double word, {rest} is not"))
-                    .hint(format!("keep pointers in double words, e.g. *%VD{}", r.loc.index)));
+                    .e_m(o.pos, msg!("engine-pointer-not-dword", operand = t, target = rest))
+                    .hint(msg!("engine-pointer-not-dword-hint", index = r.loc.index)));
             }
             return Ok(Raw::Ind(r.loc));
         }
         if let Some(rest) = t.strip_prefix('&') {
             let r = self.fam.operand(rest).map_err(fail)?;
             let p = self.fam.pointer(r.loc).ok_or_else(|| {
-                self.e(o.pos, format!("{t}: {} cannot be pointed to", r.canonical))
-                    .hint("point to V, M, I, Q or SM bytes")
+                self.e_m(o.pos, msg!("engine-not-pointable", operand = t, target = &r.canonical))
+                    .hint(msg!("engine-not-pointable-hint"))
             })?;
             return Ok(Raw::Ptr(p));
         }
@@ -81,7 +83,7 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
             Raw::Loc(l, t, name) => {
                 if bits_of(*t) != bits_of(ty) {
                     return Err(self
-                        .e(o.pos, format!("{name} is a {} but this operation works on {}", t.name(), ty.name()))
+                        .e_m(o.pos, msg!("engine-operand-type", name = name, have = t.name(), want = ty.name()))
                         .operand(name.clone())
                         .hint(conversion_hint(*t, ty)));
                 }
@@ -90,7 +92,7 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
             Raw::Ind(l) => Ok(Opd::Ind(*l)),
             Raw::Ptr(p) => {
                 if bits_of(ty) != 32 {
-                    return Err(self.e(o.pos, format!("{}: a pointer needs a double word", o.text)));
+                    return Err(self.e_m(o.pos, msg!("engine-pointer-needs-dword", operand = &o.text)));
                 }
                 Ok(Opd::Imm(*p))
             }
@@ -115,9 +117,7 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
 
     pub(super) fn out_loc(&self, o: &OperandText, r: &Raw) -> Result<()> {
         match r {
-            Raw::Lit(_) | Raw::Ptr(_) => {
-                Err(self.e(o.pos, format!("{} cannot be written: the output must be a memory location", o.text)))
-            }
+            Raw::Lit(_) | Raw::Ptr(_) => Err(self.e_m(o.pos, msg!("engine-output-not-location", operand = &o.text))),
             _ => Ok(()),
         }
     }
@@ -139,17 +139,17 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
         match raw {
             Raw::Loc(l, DataType::Bool, _) => Ok(l),
             Raw::Loc(_, t, name) => Err(self
-                .e(o.pos, format!("{name} is a {}, not a bit", t.name()))
+                .e_m(o.pos, msg!("engine-not-a-bit", name = &name, have = t.name()))
                 .operand(name.clone())
-                .hint("bit operands look like %M0.0, %I0.1, %SM0.0 (or T5/C5 for a timer's or counter's bit)")),
-            _ => Err(self.e(o.pos, format!("{}: a bit location is needed here", o.text))),
+                .hint(msg!("engine-not-a-bit-hint"))),
+            _ => Err(self.e_m(o.pos, msg!("engine-bit-needed", operand = &o.text))),
         }
     }
 
     pub(super) fn count(&self, o: &OperandText) -> Result<u32> {
         let v = self.literal(o, &o.text, DataType::DInt)? as i32;
         if !(1..=255).contains(&v) {
-            return Err(self.e(o.pos, format!("{}: expected a count 1…255", o.text)));
+            return Err(self.e_m(o.pos, msg!("engine-count-range", operand = &o.text)));
         }
         Ok(v as u32)
     }
@@ -181,12 +181,13 @@ impl<F: Family + ?Sized> Ctx<'_, F> {
     }
 }
 
-fn conversion_hint(from: DataType, to: DataType) -> String {
+fn conversion_hint(from: DataType, to: DataType) -> Msg {
+    let convert = |how: &str| msg!("engine-convert-first", how = how);
     match (from.bits(), to.bits()) {
-        (16, 32) => "convert first: I_DI IN, %VDn (INT → DINT)".into(),
-        (32, 16) => "convert first: DI_I IN, %VWn (DINT → INT)".into(),
-        (8, 16) => "convert first: B_I IN, %VWn (BYTE → INT)".into(),
-        (16, 8) => "convert first: I_B IN, %VBn (INT → BYTE)".into(),
-        _ => "use operands of the same size (B, W, D)".into(),
+        (16, 32) => convert("I_DI IN, %VDn (INT → DINT)"),
+        (32, 16) => convert("DI_I IN, %VWn (DINT → INT)"),
+        (8, 16) => convert("B_I IN, %VWn (BYTE → INT)"),
+        (16, 8) => convert("I_B IN, %VBn (INT → BYTE)"),
+        _ => msg!("engine-same-size"),
     }
 }

@@ -23,7 +23,9 @@ use super::compile::{Ins, Program};
 use super::isa::{Arith, Comb};
 use super::timers::{self, CounterState, TimerState};
 use super::{read, write, Machine, Opd};
+use crate::core::msg::Msg;
 use crate::core::DataType;
+use crate::msg;
 use arith::{arith, arith_int, as_i64, convert, fits, invert, is_zero, mask, shift_out, unary, word_logic};
 use logic::{compare, lcode, logic};
 use moves::swap;
@@ -57,6 +59,7 @@ impl FaultKind {
             FaultKind::DivZero => 5,
         }
     }
+    /// The fault's name in JSON (`"kind"`): a fixed English word, the same in every language.
     pub fn name(self) -> &'static str {
         match self {
             FaultKind::Watchdog => "watchdog",
@@ -64,6 +67,17 @@ impl FaultKind {
             FaultKind::CallDepth => "call depth",
             FaultKind::Instruction => "instruction",
             FaultKind::DivZero => "division by zero",
+        }
+    }
+    /// What the fault is called in its report (`fault 2 (bad indirect address): …`), in the
+    /// user's language.
+    pub fn label(self) -> Msg {
+        match self {
+            FaultKind::Watchdog => msg!("engine-fault-watchdog"),
+            FaultKind::BadAddress => msg!("engine-fault-bad-address"),
+            FaultKind::CallDepth => msg!("engine-fault-call-depth"),
+            FaultKind::Instruction => msg!("engine-fault-instruction"),
+            FaultKind::DivZero => msg!("engine-fault-div-zero"),
         }
     }
     /// Serious errors stop the CPU; normal ones are recorded and it continues (K2 §2.2.1).
@@ -92,11 +106,20 @@ impl Fault {
 
 impl std::fmt::Display for Fault {
     fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-        write!(f, "fault {} ({}): {}", self.kind.code(), self.kind.name(), self.message)?;
-        if self.line > 0 {
-            write!(f, " at line {} `{}`", self.line, self.instruction)?;
-        }
-        Ok(())
+        let (code, name, message) = (self.kind.code(), self.kind.label().text, self.message.as_str());
+        let m = if self.line > 0 {
+            msg!(
+                "engine-fault-at",
+                code = code,
+                name = &name,
+                message = message,
+                line = self.line,
+                instruction = &self.instruction
+            )
+        } else {
+            msg!("engine-fault", code = code, name = &name, message = message)
+        };
+        f.write_str(&m)
     }
 }
 
@@ -354,7 +377,7 @@ impl Cpu {
             }
             let Some(ins) = code.get(pc) else {
                 count!();
-                return self.fault(prog, pc as u32, Fault::new(FaultKind::Instruction, "ran off the program"));
+                return self.fault(prog, pc as u32, Fault::new(FaultKind::Instruction, msg!("engine-ran-off")));
             };
             pc += 1;
             // Only a jump or call can make a scan run long (straight-line code ends), so
@@ -380,7 +403,7 @@ impl Cpu {
                 Ins::Not => cr = !cr,
                 Ins::ParOpen { op, neg, load } => {
                     if self.parens.len() >= MAX_PARENS {
-                        let f = Fault::new(FaultKind::Instruction, "parentheses nested deeper than 8");
+                        let f = Fault::new(FaultKind::Instruction, msg!("engine-parens-too-deep", max = MAX_PARENS));
                         fail!(f);
                     }
                     self.parens.push((lcode(*op), *neg, cr));
@@ -474,7 +497,8 @@ impl Cpu {
                             Ok(eno) => {
                                 cr = eno;
                                 if !eno && matches!(op, Arith::Div | Arith::Mod) && is_zero(m, b, *ty) {
-                                    self.normal_error(prog, (pc - 1) as u32, FaultKind::DivZero, "division by zero");
+                                    let what = msg!("engine-division-by-zero");
+                                    self.normal_error(prog, (pc - 1) as u32, FaultKind::DivZero, &what);
                                 }
                             }
                             Err(f) => fail!(f),
@@ -593,10 +617,8 @@ impl Cpu {
                     watchdog!();
                     if cond.is_none_or(|c| cr == c) {
                         if self.calls.len() >= MAX_CALL_DEPTH {
-                            let f = Fault::new(
-                                FaultKind::CallDepth,
-                                format!("subroutines nested deeper than {MAX_CALL_DEPTH}"),
-                            );
+                            let f =
+                                Fault::new(FaultKind::CallDepth, msg!("engine-calls-too-deep", max = MAX_CALL_DEPTH));
                             fail!(f);
                         }
                         self.calls.push(pc as u32);
@@ -715,8 +737,5 @@ impl Cpu {
 /// The watchdog fault: the scan's program time passed the limit.
 #[cold]
 fn watchdog_fault(wd: u64) -> Fault {
-    Fault::new(
-        FaultKind::Watchdog,
-        format!("the scan ran past the watchdog limit of {} ms (an endless loop?)", wd as f64 / 1e6),
-    )
+    Fault::new(FaultKind::Watchdog, msg!("engine-watchdog", ms = (wd as f64 / 1e6).to_string()))
 }

@@ -7,6 +7,7 @@ use super::{Cpu, Fault, FaultKind};
 use crate::core::DataType;
 use crate::engine::compile::Program;
 use crate::engine::{read, write, Machine, Opd};
+use crate::msg;
 
 impl Cpu {
     #[allow(clippy::too_many_arguments)]
@@ -23,13 +24,14 @@ impl Cpu {
     ) -> Result<(), Fault> {
         let n = read(m, n, DataType::Int)? as u16 as i16;
         if !(1..=255).contains(&n) {
-            return Err(Fault::new(FaultKind::Instruction, format!("block length {n} is not 1…255")));
+            return Err(Fault::new(FaultKind::Instruction, msg!("engine-block-length", n = n.to_string())));
         }
         self.spent_ns += prog.costs.per_element_ns as u64 * n as u64;
         let w = crate::engine::width_of(ty);
         let src = crate::engine::loc_of(m, a, ty)?;
-        let dst =
-            crate::engine::loc_of(m, out, ty)?.ok_or_else(|| Fault::new(FaultKind::BadAddress, "no destination"))?;
+        let dst = crate::engine::loc_of(m, out, ty)?
+            .ok_or_else(|| Fault::new(FaultKind::BadAddress, msg!("engine-no-destination")))?;
+
         let _ = w;
         // Read all first: overlapping blocks copy as if through a buffer.
         let vals: Vec<u32> = match (fill, src) {

@@ -5,6 +5,7 @@
 use super::{Fault, FaultKind};
 use crate::core::DataType;
 use crate::engine::{read, Machine, Opd};
+use crate::msg;
 
 /// An operand's raw value without building a fault (the hot path); `None` only for a
 /// pointer outside memory.
@@ -41,5 +42,5 @@ pub(super) fn put<M: Machine>(m: &mut M, o: &Opd, ty: DataType, v: u32) -> bool 
 pub(super) fn bad<M: Machine>(m: &M, ops: &[&Opd], ty: DataType) -> Fault {
     ops.iter()
         .find_map(|o| read(m, o, ty).err())
-        .unwrap_or_else(|| Fault::new(FaultKind::BadAddress, "bad indirect address"))
+        .unwrap_or_else(|| Fault::new(FaultKind::BadAddress, msg!("engine-bad-address")))
 }

@@ -46,7 +46,7 @@ pub static SPECIALS: &[SpecialDef] = &[
         args: &[ArgKind::Bit, ArgKind::Const, ArgKind::Const],
         optional: 0,
         edge: false,
-        doc: "TIMER Tn, GROUP, STEPS: on-delay timer, input = CR, delay STEPS (1–255) × GROUP (0: 10 ms, 1: 0.1 s, 2: 1 s); CR := Tn",
+        doc: |l| msg!(lang: l, "engine-doc-umpk-timer"),
         source: "UMPK §3.5, Table 5",
     },
     SpecialDef {
@@ -55,7 +55,7 @@ pub static SPECIALS: &[SpecialDef] = &[
         args: &[ArgKind::Bit, ArgKind::Const, ArgKind::Bit],
         optional: 1,
         edge: false,
-        doc: "DIVIDE Cn, RATIO[, RESET]: divide-by-N counter of the CR's pulses (RATIO 1–255); the output pulse lasts as long as the input pulse; RESET on clears it; CR := Cn",
+        doc: |l| msg!(lang: l, "engine-doc-umpk-divide"),
         source: "UMPK §3.5",
     },
     SpecialDef {
@@ -64,7 +64,7 @@ pub static SPECIALS: &[SpecialDef] = &[
         args: &[ArgKind::Const],
         optional: 0,
         edge: true,
-        doc: "ERROR CODE: on the CR's rising edge, puts user error CODE (1–127) into the error history (?07F9); the program keeps running",
+        doc: |l| msg!(lang: l, "engine-doc-umpk-error"),
         source: "UMPK §4.1.8 (codes 1–127 are the user's); the instruction is plcsh's",
     },
 ];

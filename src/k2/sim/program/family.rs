@@ -86,7 +86,7 @@ pub static SPECIALS: &[SpecialDef] = &[
         args: &[A::Const],
         optional: 0,
         edge: true,
-        doc: "PLS q: load the channel's SM settings and start PTO/PWM (on the rising edge of EN); the CR is left as it was — a refusal sets only the status bit SM66.4 …",
+        doc: |l| msg!(lang: l, "engine-doc-k2-pls"),
         source: "K2 §3.4.2",
     },
     SpecialDef {
@@ -95,7 +95,7 @@ pub static SPECIALS: &[SpecialDef] = &[
         args: &[A::Const, A::Const],
         optional: 0,
         edge: false,
-        doc: "HDEF hsc, mode: assign a counting mode",
+        doc: |l| msg!(lang: l, "engine-doc-k2-hdef"),
         source: "K2 §3.3.1, §3.3.5",
     },
     SpecialDef {
@@ -104,7 +104,7 @@ pub static SPECIALS: &[SpecialDef] = &[
         args: &[A::Const],
         optional: 0,
         edge: false,
-        doc: "HSC n: apply the control byte and start or stop the counter",
+        doc: |l| msg!(lang: l, "engine-doc-k2-hsc"),
         source: "K2 §3.3.5",
     },
     SpecialDef {
@@ -113,7 +113,7 @@ pub static SPECIALS: &[SpecialDef] = &[
         args: &[A::Const, A::Bit, A::Bit, A::Out(Some(DataType::Word))],
         optional: 3,
         edge: false,
-        doc: "PSTOP AXIS[, EXEC, DONE, ERRID]: emergency stop on the rising edge of EXEC (or of EN without EXEC); latches SM201.7",
+        doc: |l| msg!(lang: l, "engine-doc-k2-pstop"),
         source: "K2 §3.4.3; KincoBuilder help (kinco-public-notes)",
     },
     SpecialDef {
@@ -122,7 +122,7 @@ pub static SPECIALS: &[SpecialDef] = &[
         args: &[A::Const, A::Bit, W, D, W, DI, A::Bit, A::Bit, B],
         optional: 0,
         edge: false,
-        doc: "PREL AXIS, EXEC, MINF, MAXF, TIME, DIST, DONE, ERR, ERRID: relative move with a MINF→MAXF ramp over TIME ms, on EXEC's rising edge",
+        doc: |l| msg!(lang: l, "engine-doc-k2-prel"),
         source: "K2 §3.4.3; KincoBuilder help (kinco-public-notes)",
     },
     SpecialDef {
@@ -131,7 +131,7 @@ pub static SPECIALS: &[SpecialDef] = &[
         args: &[A::Const, A::Bit, W, D, W, DI, A::Bit, A::Bit, B],
         optional: 0,
         edge: false,
-        doc: "PABS AXIS, EXEC, MINF, MAXF, TIME, POS, DONE, ERR, ERRID: absolute move to POS (SMD212 …)",
+        doc: |l| msg!(lang: l, "engine-doc-k2-pabs"),
         source: "K2 §3.4.3; KincoBuilder help (kinco-public-notes)",
     },
     SpecialDef {
@@ -140,7 +140,7 @@ pub static SPECIALS: &[SpecialDef] = &[
         args: &[A::Const, A::Bit, A::Bit, A::Bit, W, W, W, D, W, A::Bit, A::Bit, B],
         optional: 0,
         edge: false,
-        doc: "PHOME AXIS, EXEC, HOME, NHOME, MODE, DIRC, MINF, MAXF, TIME, DONE, ERR, ERRID: run in DIRC until HOME (MODE 0: creep at MINF after NHOME)",
+        doc: |l| msg!(lang: l, "engine-doc-k2-phome"),
         source: "K2 §3.4.3.1; KincoBuilder help (kinco-public-notes)",
     },
     SpecialDef {
@@ -149,7 +149,7 @@ pub static SPECIALS: &[SpecialDef] = &[
         args: &[A::Const, A::Bit, D, W, A::Bit, A::Bit, B],
         optional: 0,
         edge: false,
-        doc: "PJOG AXIS, EXEC, MAXF, DIRC, DONE, ERR, ERRID: run at MAXF (re-read every scan) while EXEC is on",
+        doc: |l| msg!(lang: l, "engine-doc-k2-pjog"),
         source: "K2 §3.4.3.2; KincoBuilder help (kinco-public-notes)",
     },
     SpecialDef {
@@ -158,7 +158,7 @@ pub static SPECIALS: &[SpecialDef] = &[
         args: &[A::Const, A::Bit, D, W, W, DI, A::Bit, A::Bit, B],
         optional: 0,
         edge: false,
-        doc: "PFLO_F AXIS, EXEC, F, NUM, DENOM, COUNT, DONE, ERR, ERRID: follow F × NUM / DENOM Hz for COUNT pulses (≥ 30 Hz)",
+        doc: |l| msg!(lang: l, "engine-doc-k2-pflo-f"),
         source: "K2 §3.4.3 (parameters named there; order ours)",
     },
     SpecialDef {
@@ -167,7 +167,7 @@ pub static SPECIALS: &[SpecialDef] = &[
         args: &[A::Out(Some(DataType::Byte))],
         optional: 0,
         edge: false,
-        doc: "READ_RTC buf: 8 BCD bytes yy mm dd hh mm ss 00 weekday",
+        doc: |l| msg!(lang: l, "engine-doc-k2-read-rtc"),
         source: "K2 §2.2.10; S7-200 buffer layout",
     },
     SpecialDef {
@@ -176,7 +176,7 @@ pub static SPECIALS: &[SpecialDef] = &[
         args: &[A::Out(Some(DataType::Byte))],
         optional: 0,
         edge: false,
-        doc: "SET_RTC buf: set the clock from 8 BCD bytes (invalid: ENO = 0)",
+        doc: |l| msg!(lang: l, "engine-doc-k2-set-rtc"),
         source: "K2 §2.2.10; S7-200 buffer layout",
     },
     SpecialDef {
@@ -185,7 +185,7 @@ pub static SPECIALS: &[SpecialDef] = &[
         args: &[],
         optional: 0,
         edge: false,
-        doc: "if CR: the CPU goes to STOP at the end of this scan (outputs to their STOP values; `sim cpu run` restarts)",
+        doc: |l| msg!(lang: l, "engine-doc-k2-stop"),
         source: "K80S 5.4.5 (the program's STOP changes the mode); timing: S7-200 System Manual, STOP instruction",
     },
 ];
