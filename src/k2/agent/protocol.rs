@@ -169,14 +169,17 @@ pub fn parse_base(text: &str) -> Result<u32, String> {
         .trim_start_matches('%')
         .trim_start_matches("VB")
         .parse()
-        .map_err(|_| format!("`{text}` is not a V byte address (e.g. VB{DEFAULT_BASE})"))?;
+        .map_err(|_| crate::msg!("agent-base-not-vb", text = text, base = DEFAULT_BASE).to_string())?;
     let total = TOTAL_SIZE;
     // `n + total` in u64: a base near u32::MAX must be refused, not wrap past the check.
     if !n.is_multiple_of(2) || n as u64 + total as u64 > crate::k2::catalog::EEPROM_FIRST as u64 {
-        return Err(format!(
-            "the helper's mailbox needs an even address with {total} bytes free below the E2PROM area VB{} (got VB{n})",
-            crate::k2::catalog::EEPROM_FIRST
-        ));
+        return Err(crate::msg!(
+            "agent-base-range",
+            total = total,
+            eeprom = crate::k2::catalog::EEPROM_FIRST,
+            n = n
+        )
+        .to_string());
     }
     Ok(n)
 }
@@ -575,22 +578,19 @@ impl ResultCode {
 
 impl fmt::Display for ResultCode {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(match self {
-            ResultCode::Ok => "done",
-            ResultCode::UnknownCommand => "the helper does not know this command (update lib/k2_agent.il)",
-            ResultCode::BadRange => "SM range outside the registers the manual names or longer than 64 bytes",
-            ResultCode::ReadOnly => "the SM bytes are read-only",
-            ResultCode::BadChannel => "no such channel on this PLC",
-            ResultCode::BadMode => "the counter does not have this mode",
-            ResultCode::InstructionFailed => "the PLC instruction reported an error (its ENO)",
-            ResultCode::BadClock => "the date or time is not valid",
-            ResultCode::StatusBit => "the instruction's status bit reports a refusal",
-            ResultCode::Other(_) => "unknown result code",
-        })?;
-        if let ResultCode::Other(c) = self {
-            write!(f, " {c}")?;
-        }
-        Ok(())
+        let m = match self {
+            ResultCode::Ok => crate::msg!("agent-result-done"),
+            ResultCode::UnknownCommand => crate::msg!("agent-result-unknown-command"),
+            ResultCode::BadRange => crate::msg!("agent-result-bad-range"),
+            ResultCode::ReadOnly => crate::msg!("agent-result-read-only"),
+            ResultCode::BadChannel => crate::msg!("agent-result-bad-channel"),
+            ResultCode::BadMode => crate::msg!("agent-result-bad-mode"),
+            ResultCode::InstructionFailed => crate::msg!("agent-result-instruction-failed"),
+            ResultCode::BadClock => crate::msg!("agent-result-bad-clock"),
+            ResultCode::StatusBit => crate::msg!("agent-result-status-bit"),
+            ResultCode::Other(c) => crate::msg!("agent-result-other", code = *c),
+        };
+        f.write_str(&m)
     }
 }
 
@@ -602,15 +602,12 @@ pub fn reason(model: &Model, cmd: &Command, result: ResultCode, cause: u8) -> (S
     match (result, cmd) {
         (ResultCode::StatusBit, Command::Pls(n)) if cause == StatusCause::PtoInvalid as u8 => match pto(*n) {
             Some(r) => (
-                format!(
-                    "the PLC set status bit SM{}.4 after PLS {n}: cycle time or pulse count invalid ({}); no pulses were sent",
-                    r.status,
-                    sm_map::PTO_INVALID_RULE
+                // The rule in the message is sm_map::PTO_INVALID_RULE's, in each language.
+                crate::msg!("agent-pls-invalid", status = r.status, n = *n).to_string(),
+                Some(
+                    crate::msg!("agent-pls-invalid-hint", cycle = r.cycle, control = r.control, count = r.count)
+                        .to_string(),
                 ),
-                Some(format!(
-                    "load SMW{} with SM{}.0 and SMD{} with SM{}.2 set (e.g. SMB{}=16#85), then PLS again",
-                    r.cycle, r.control, r.count, r.control, r.control
-                )),
             ),
             None => (result.to_string(), None),
         },
@@ -623,25 +620,16 @@ pub fn reason(model: &Model, cmd: &Command, result: ResultCode, cause: u8) -> (S
         },
         (ResultCode::StatusBit, Command::Pstop(n)) if cause == StatusCause::NotLatched as u8 => match pto(*n) {
             Some(r) => (
-                format!(
-                    "the emergency-stop bit SM{}.7 did not latch after PSTOP {n} (manual §3.4.3.1: PSTOP sets it)",
-                    r.pos_control
-                ),
-                Some("check that the PLC runs the current helper and that position channel exists on it".into()),
+                crate::msg!("agent-pstop-not-latched", control = r.pos_control, n = *n).to_string(),
+                Some(crate::msg!("agent-pstop-not-latched-hint").to_string()),
             ),
             None => (result.to_string(), None),
         },
         (ResultCode::StatusBit, Command::Hsc(n)) if cause == StatusCause::PvTable as u8 => {
             match sm_map::HSC_REGS.iter().find(|r| r.channel == *n) {
                 Some(r) => (
-                    format!(
-                        "the PLC set status bit SM{}.3 after HSC {n}: fault in the multi-PV table (manual §3.3.2)",
-                        r.status
-                    ),
-                    Some(format!(
-                        "check the PV table at SMW{} (an odd V address, a count of 1..32, PVs that differ by more than 1; §3.3.3)",
-                        r.table
-                    )),
+                    crate::msg!("agent-hsc-pv-table", status = r.status, n = *n).to_string(),
+                    Some(crate::msg!("agent-hsc-pv-table-hint", table = r.table).to_string()),
                 ),
                 None => (result.to_string(), None),
             }
