@@ -92,3 +92,37 @@ agent-check-proves = proves: { $text }
 agent-check-todo = what to do: { $text }
 agent-check-passed = every step passed
 agent-check-failed = the check FAILED
+
+# The client of the helper's mailbox (docs/agent.md): what a request did, whether the helper
+# is there and current, and why a request did not run.
+agent-what-sm-write = writing SMB{ $start }…SMB{ $end }
+agent-what-sm-read = reading SMB{ $start }…SMB{ $end }
+agent-no-helper = no plcsh helper answers in VB{ $base }…VB{ $last } (signature 16#{ $got }, expected 16#{ $want })
+agent-no-helper-hint = SM registers and instructions need the helper program in the PLC: `plcsh agent il --base VB{ $base }` prints it (also lib/k2_agent.il); docs/agent.md says how to install it; or check agent=VB… matches the program
+agent-helper-v2 = the helper in the PLC is version 2, which reports a refused PLS as done (it read the CR, which PLS leaves as it was, manual §3.4.2)
+agent-helper-v1 = the helper in the PLC is version 1, which runs a repeated PLS or PSTOP on a channel only the first time
+agent-helper-old-hint = download the current helper (version { $version }) into the PLC: `plcsh agent il --model MODEL` prints it (lib/k2_agent.il)
+agent-helper-version = the helper in the PLC speaks mailbox protocol version { $got }; this plcsh speaks { $want }
+agent-helper-version-hint = download the current helper: `plcsh agent il` (lib/k2_agent.il)
+agent-mailbox-busy = mailbox busy: { $what } could not be sent
+agent-mailbox-busy-hint = another client's request (sequence { $pending }) has waited { $ms } ms for the helper; is the PLC in RUN? try again
+agent-reply-short = the helper's reply to { $what } is shorter than asked
+agent-refused = the helper refused { $what }: { $why } (result { $result }, cause { $cause })
+agent-no-ack = the helper did not acknowledge { $what } within { $ms } ms
+agent-no-ack-stopped = the helper's heartbeat stopped: the PLC is probably in STOP, or the helper is no longer called every scan
+agent-no-ack-busy = the helper runs but did not take the request; another client may be using the mailbox
+agent-mailbox-races = mailbox busy: { $what } lost { $races } races to other clients
+agent-mailbox-races-hint = another plcsh (or program) is sending helper commands to this PLC at the same time; try again
+agent-heartbeat-stopped = the plcsh helper is installed but its heartbeat did not move in { $ms } ms
+agent-heartbeat-stopped-hint = the PLC is probably in STOP, or PLCSH_AGENT is not called every scan (LD %SM0.0 / CAL PLCSH_AGENT)
+
+# The probe's Markdown report (`plcsh probe … --report FILE`): its title, lines and headings.
+agent-probe-report-title = plcsh probe report
+agent-probe-report-device = device: `{ $url }`
+agent-probe-report-requests = requests sent: { $requests } (reads only: FC 01, 02, 03, 04)
+agent-probe-report-areas = Modbus areas
+agent-probe-report-models = Catalogue models that fit
+agent-probe-report-no-models = none
+agent-probe-report-timing = Response time
+agent-probe-report-timed = { $reads } reads of { $what }: { $failed } failed; p50 { $p50 }, p99 { $p99 }, max { $max }
+agent-probe-report-verdicts = Verdicts

@@ -100,3 +100,41 @@ agent-check-proves = доказывает: { $text }
 agent-check-todo = что делать: { $text }
 agent-check-passed = все шаги пройдены
 agent-check-failed = проверка НЕ ПРОЙДЕНА
+
+# The client of the helper's mailbox (docs/agent.md): what a request did, whether the helper
+# is there and current, and why a request did not run.
+agent-what-sm-write = запись SMB{ $start }…SMB{ $end }
+agent-what-sm-read = чтение SMB{ $start }…SMB{ $end }
+agent-no-helper = в VB{ $base }…VB{ $last } не отвечает программа-помощник plcsh (подпись 16#{ $got }, ожидалась 16#{ $want })
+agent-no-helper-hint = для регистров SM и инструкций в ПЛК нужна программа-помощник: её выводит `plcsh agent il --base VB{ $base }` (также lib/k2_agent.il); как её установить, описано в docs/agent.md; или проверьте, что agent=VB… совпадает с программой
+agent-helper-v2 = программа-помощник в ПЛК версии 2, она сообщает об отвергнутой PLS как о выполненной (читает CR, который PLS оставляет без изменений, §3.4.2 руководства)
+agent-helper-v1 = программа-помощник в ПЛК версии 1, она выполняет повторную PLS или PSTOP на канале только в первый раз
+agent-helper-old-hint = загрузите в ПЛК текущую программу-помощник (версии { $version }): её выводит `plcsh agent il --model MODEL` (lib/k2_agent.il)
+agent-helper-version = программа-помощник в ПЛК говорит на версии { $got } протокола почтового ящика; этот plcsh — на версии { $want }
+agent-helper-version-hint = загрузите текущую программу-помощник: `plcsh agent il` (lib/k2_agent.il)
+agent-mailbox-busy = почтовый ящик занят: не удалось отправить { $what }
+agent-mailbox-busy-hint = запрос другого клиента (номер { $pending }) ждёт программу-помощник уже { $ms } мс; ПЛК в режиме RUN? повторите попытку
+agent-reply-short = ответ программы-помощника на { $what } короче запрошенного
+agent-refused = программа-помощник отвергла { $what }: { $why } (результат { $result }, причина { $cause })
+agent-no-ack = программа-помощник не подтвердила { $what } за { $ms } мс
+agent-no-ack-stopped = счетчик циклов программы-помощника остановился: вероятно, ПЛК в режиме STOP или программа-помощник больше не вызывается в каждом цикле сканирования
+agent-no-ack-busy = программа-помощник работает, но не приняла запрос; возможно, почтовым ящиком пользуется другой клиент
+agent-mailbox-races = почтовый ящик занят: { $what } — другие клиенты опередили этот запрос { $races } { $races ->
+        [one] раз
+        [few] раза
+       *[many] раз
+    }
+agent-mailbox-races-hint = другой plcsh (или программа) одновременно отправляет этому ПЛК команды программы-помощника; повторите попытку
+agent-heartbeat-stopped = программа-помощник plcsh установлена, но её счетчик циклов не изменился за { $ms } мс
+agent-heartbeat-stopped-hint = вероятно, ПЛК в режиме STOP или PLCSH_AGENT вызывается не в каждом цикле сканирования (LD %SM0.0 / CAL PLCSH_AGENT)
+
+# The probe's Markdown report (`plcsh probe … --report FILE`): its title, lines and headings.
+agent-probe-report-title = Отчёт plcsh probe
+agent-probe-report-device = устройство: `{ $url }`
+agent-probe-report-requests = отправлено запросов: { $requests } (только чтение: FC 01, 02, 03, 04)
+agent-probe-report-areas = Области Modbus
+agent-probe-report-models = Подходящие модели из каталога
+agent-probe-report-no-models = нет
+agent-probe-report-timing = Время ответа
+agent-probe-report-timed = чтений { $what }: { $reads }, неудачных: { $failed }; p50 { $p50 }, p99 { $p99 }, max { $max }
+agent-probe-report-verdicts = Заключения

@@ -92,3 +92,37 @@ agent-check-proves = 证明：{ $text }
 agent-check-todo = 怎么办：{ $text }
 agent-check-passed = 所有步骤均通过
 agent-check-failed = 检查未通过
+
+# The client of the helper's mailbox (docs/agent.md): what a request did, whether the helper
+# is there and current, and why a request did not run.
+agent-what-sm-write = 写入 SMB{ $start }…SMB{ $end }
+agent-what-sm-read = 读取 SMB{ $start }…SMB{ $end }
+agent-no-helper = VB{ $base }…VB{ $last } 中没有 plcsh 辅助程序应答（签名 16#{ $got }，应为 16#{ $want }）
+agent-no-helper-hint = SM 寄存器和指令需要 PLC 中的辅助程序：`plcsh agent il --base VB{ $base }` 会输出它（另见 lib/k2_agent.il）；安装方法见 docs/agent.md；或检查 agent=VB… 是否与程序一致
+agent-helper-v2 = PLC 中的辅助程序是版本 2，它会把被拒绝的 PLS 报告为已完成（它读取的是 CR，而 PLS 不改变 CR，手册 §3.4.2）
+agent-helper-v1 = PLC 中的辅助程序是版本 1，它对同一通道重复的 PLS 或 PSTOP 只执行第一次
+agent-helper-old-hint = 请将当前的辅助程序（版本 { $version }）下载到 PLC：`plcsh agent il --model MODEL` 会输出它（lib/k2_agent.il）
+agent-helper-version = PLC 中的辅助程序使用邮箱协议版本 { $got }；此 plcsh 使用 { $want }
+agent-helper-version-hint = 请下载当前的辅助程序：`plcsh agent il`（lib/k2_agent.il）
+agent-mailbox-busy = 邮箱忙：无法发送{ $what }
+agent-mailbox-busy-hint = 另一个客户端的请求（序号 { $pending }）已等待辅助程序 { $ms } ms；PLC 是否处于 RUN？请重试
+agent-reply-short = 辅助程序对{ $what }的应答短于所请求的长度
+agent-refused = 辅助程序拒绝了{ $what }：{ $why }（结果 { $result }，原因 { $cause }）
+agent-no-ack = 辅助程序在 { $ms } ms 内没有确认{ $what }
+agent-no-ack-stopped = 辅助程序的心跳停止了：PLC 可能处于 STOP，或辅助程序不再在每个扫描周期被调用
+agent-no-ack-busy = 辅助程序在运行，但没有接收该请求；可能有另一个客户端在使用邮箱
+agent-mailbox-races = 邮箱忙：{ $what }有 { $races } 次被其他客户端抢先
+agent-mailbox-races-hint = 另一个 plcsh（或程序）正同时向此 PLC 发送辅助程序命令；请重试
+agent-heartbeat-stopped = plcsh 辅助程序已安装，但其心跳在 { $ms } ms 内没有变化
+agent-heartbeat-stopped-hint = PLC 可能处于 STOP，或 PLCSH_AGENT 没有在每个扫描周期被调用（LD %SM0.0 / CAL PLCSH_AGENT）
+
+# The probe's Markdown report (`plcsh probe … --report FILE`): its title, lines and headings.
+agent-probe-report-title = plcsh probe 报告
+agent-probe-report-device = 设备：`{ $url }`
+agent-probe-report-requests = 已发送请求：{ $requests } 个（只读：FC 01、02、03、04）
+agent-probe-report-areas = Modbus 区域
+agent-probe-report-models = 符合的目录型号
+agent-probe-report-no-models = 无
+agent-probe-report-timing = 响应时间
+agent-probe-report-timed = 读取 { $what } { $reads } 次：{ $failed } 次失败；p50 { $p50 }，p99 { $p99 }，max { $max }
+agent-probe-report-verdicts = 结论
