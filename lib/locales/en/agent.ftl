@@ -126,3 +126,19 @@ agent-probe-report-no-models = none
 agent-probe-report-timing = Response time
 agent-probe-report-timed = { $reads } reads of { $what }: { $failed } failed; p50 { $p50 }, p99 { $p99 }, max { $max }
 agent-probe-report-verdicts = Verdicts
+
+# The helper's checks (k2::agent::protocol::checks): the reason of each row, in the helper
+# program's comments and docs/agent.md (English) and in a refusal a person reads.
+agent-row-commands = the helper knows commands 1..9
+agent-row-smb0 = SMB0 holds the system status bits and is read-only
+agent-row-length = 1..{ $max } bytes at once
+agent-row-start = the start is SMB0..SMB{ $last }, the registers the manual names
+agent-row-end = the last byte is SMB{ $last } at most (SMD{ $dword } is the highest register the manual names)
+agent-row-block = SMB{ $first }..SMB{ $last } is one block: split there
+agent-row-gap = { $bytes }: no register of { $model } the manual names
+agent-row-pos-cv = SMD{ $at } is read-only (section 3.4.3.1)
+agent-row-no-pto = { $model } has no pulse outputs
+agent-row-no-hsc = { $model } has no high-speed counters
+agent-row-pto = { $model } has pulse outputs 0..{ $last }
+agent-row-hsc = { $model } has high-speed counters 0..{ $last }
+agent-result-because = { $result }: { $why }

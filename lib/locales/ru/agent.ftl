@@ -138,3 +138,19 @@ agent-probe-report-no-models = нет
 agent-probe-report-timing = Время ответа
 agent-probe-report-timed = чтений { $what }: { $reads }, неудачных: { $failed }; p50 { $p50 }, p99 { $p99 }, max { $max }
 agent-probe-report-verdicts = Заключения
+
+# The helper's checks (k2::agent::protocol::checks): the reason of each row, in the helper
+# program's comments and docs/agent.md (English) and in a refusal a person reads.
+agent-row-commands = программа-помощник знает команды 1..9
+agent-row-smb0 = SMB0 содержит биты состояния системы и доступен только для чтения
+agent-row-length = за один раз 1..{ $max } байт
+agent-row-start = начало — SMB0..SMB{ $last }, регистры, названные в руководстве
+agent-row-end = последний байт — не дальше SMB{ $last } (SMD{ $dword } — последний регистр, названный в руководстве)
+agent-row-block = SMB{ $first }..SMB{ $last } — один блок: разделите запрос на его границе
+agent-row-gap = { $bytes }: руководство не называет здесь регистров { $model }
+agent-row-pos-cv = SMD{ $at } только для чтения (§3.4.3.1)
+agent-row-no-pto = у { $model } нет импульсных выходов
+agent-row-no-hsc = у { $model } нет высокоскоростных счетчиков
+agent-row-pto = у { $model } импульсные выходы 0..{ $last }
+agent-row-hsc = у { $model } высокоскоростные счетчики 0..{ $last }
+agent-result-because = { $result }: { $why }

@@ -407,7 +407,8 @@ fn refusal(
                     control = c.control,
                     value = format!("{:02X}", before[at(c.control)]),
                     count = c.count,
-                    pulses = u32::from_be_bytes(before[at(c.count)..at(c.count) + 4].try_into().expect("4 bytes")).to_string()
+                    pulses = u32::from_be_bytes(before[at(c.count)..at(c.count) + 4].try_into().expect("4 bytes"))
+                        .to_string()
                 )
                 .to_string(),
             ),

@@ -99,18 +99,12 @@ impl AgentClient {
             .hint(crate::msg!("agent-no-helper-hint", base = self.base)));
         }
         if s.version == 2 {
-            return Err(Error::new(
-                ErrorKind::Unsupported,
-                crate::msg!("agent-helper-v2"),
-            )
-            .hint(crate::msg!("agent-helper-old-hint", version = p::VERSION)));
+            return Err(Error::new(ErrorKind::Unsupported, crate::msg!("agent-helper-v2"))
+                .hint(crate::msg!("agent-helper-old-hint", version = p::VERSION)));
         }
         if s.version == 1 {
-            return Err(Error::new(
-                ErrorKind::Unsupported,
-                crate::msg!("agent-helper-v1"),
-            )
-            .hint(crate::msg!("agent-helper-old-hint", version = p::VERSION)));
+            return Err(Error::new(ErrorKind::Unsupported, crate::msg!("agent-helper-v1"))
+                .hint(crate::msg!("agent-helper-old-hint", version = p::VERSION)));
         }
         if s.version != p::VERSION {
             return Err(Error::new(
@@ -232,11 +226,8 @@ impl AgentClient {
 }
 
 fn stopped(t: Duration) -> Error {
-    Error::new(
-        ErrorKind::State,
-        crate::msg!("agent-heartbeat-stopped", ms = t.as_millis() as u64),
-    )
-    .hint(crate::msg!("agent-heartbeat-stopped-hint"))
+    Error::new(ErrorKind::State, crate::msg!("agent-heartbeat-stopped", ms = t.as_millis() as u64))
+        .hint(crate::msg!("agent-heartbeat-stopped-hint"))
 }
 
 #[cfg(test)]

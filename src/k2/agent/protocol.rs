@@ -173,13 +173,8 @@ pub fn parse_base(text: &str) -> Result<u32, String> {
     let total = TOTAL_SIZE;
     // `n + total` in u64: a base near u32::MAX must be refused, not wrap past the check.
     if !n.is_multiple_of(2) || n as u64 + total as u64 > crate::k2::catalog::EEPROM_FIRST as u64 {
-        return Err(crate::msg!(
-            "agent-base-range",
-            total = total,
-            eeprom = crate::k2::catalog::EEPROM_FIRST,
-            n = n
-        )
-        .to_string());
+        return Err(crate::msg!("agent-base-range", total = total, eeprom = crate::k2::catalog::EEPROM_FIRST, n = n)
+            .to_string());
     }
     Ok(n)
 }
@@ -347,8 +342,26 @@ pub struct Check {
     pub test: Test,
     pub result: ResultCode,
     /// Why, for the program's comments and docs/agent.md (ASCII: the program is pasted
-    /// into KincoBuilder).
+    /// into KincoBuilder): always English, the program's language.
     pub why: String,
+    /// The same reason in the current language, for a refusal a person reads ([`reason`]).
+    pub said: String,
+}
+
+/// A row's reason: (English for the program and the docs, the current language for a person).
+macro_rules! row_msg {
+    ($id:literal $(, $k:ident = $v:expr)* $(,)?) => {
+        (
+            crate::msg!(lang: crate::core::msg::Lang::En, $id $(, $k = $v)*).text,
+            crate::msg!($id $(, $k = $v)*).text,
+        )
+    };
+}
+
+impl Check {
+    fn new(commands: Option<(u16, u16)>, test: Test, result: ResultCode, (why, said): (String, String)) -> Check {
+        Check { commands, test, result, why, said }
+    }
 }
 
 impl Check {
@@ -381,48 +394,40 @@ pub fn checks(model: &Model) -> Vec<Check> {
     let sm_last = end - 1;
     let sm = Some((1, 2));
     let mut v = vec![
-        Check {
-            commands: None,
-            test: Test::Outside(Field::Command, 1, 9),
-            result: ResultCode::UnknownCommand,
-            why: "the helper knows commands 1..9".into(),
-        },
-        Check {
-            commands: Some((1, 1)),
-            test: Test::Is(Field::Arg1, 0),
-            result: ResultCode::ReadOnly,
-            why: "SMB0 holds the system status bits and is read-only".into(),
-        },
-        Check {
-            commands: sm,
-            test: Test::Outside(Field::Arg2, 1, DATA_MAX as u16),
-            result: ResultCode::BadRange,
-            why: format!("1..{DATA_MAX} bytes at once"),
-        },
-        Check {
-            commands: sm,
-            test: Test::Outside(Field::Arg1, 0, sm_last),
-            result: ResultCode::BadRange,
-            why: format!("the start is SMB0..SMB{sm_last}, the registers the manual names"),
-        },
-        Check {
-            commands: sm,
-            test: Test::EndAbove(end),
-            result: ResultCode::BadRange,
-            why: format!(
-                "the last byte is SMB{sm_last} at most (SMD{} is the highest register the manual names)",
-                sm_last - 3
-            ),
-        },
+        Check::new(
+            None,
+            Test::Outside(Field::Command, 1, 9),
+            ResultCode::UnknownCommand,
+            row_msg!("agent-row-commands"),
+        ),
+        Check::new(Some((1, 1)), Test::Is(Field::Arg1, 0), ResultCode::ReadOnly, row_msg!("agent-row-smb0")),
+        Check::new(
+            sm,
+            Test::Outside(Field::Arg2, 1, DATA_MAX as u16),
+            ResultCode::BadRange,
+            row_msg!("agent-row-length", max = DATA_MAX),
+        ),
+        Check::new(
+            sm,
+            Test::Outside(Field::Arg1, 0, sm_last),
+            ResultCode::BadRange,
+            row_msg!("agent-row-start", last = sm_last),
+        ),
+        Check::new(
+            sm,
+            Test::EndAbove(end),
+            ResultCode::BadRange,
+            row_msg!("agent-row-end", last = sm_last, dword = sm_last - 3),
+        ),
     ];
     for (s, e) in sm_blocks() {
         if e < end as u32 {
-            v.push(Check {
-                commands: sm,
-                test: Test::Span(s as u16, e as u16 - 1, e as u16),
-                result: ResultCode::BadRange,
-                why: format!("SMB{s}..SMB{} is one block: split there", e - 1),
-            });
+            v.push(Check::new(
+                sm,
+                Test::Span(s as u16, e as u16 - 1, e as u16),
+                ResultCode::BadRange,
+                row_msg!("agent-row-block", first = s, last = e - 1),
+            ));
         }
     }
     let rows = sm_rows(model);
@@ -437,38 +442,40 @@ pub fn checks(model: &Model) -> Vec<Check> {
             b += 1;
         }
         let name = if b - gap == 1 { format!("SMB{gap}") } else { format!("SMB{gap}..SMB{}", b - 1) };
-        v.push(Check {
-            commands: sm,
-            test: Test::Overlaps(gap as u16, b as u16),
-            result: ResultCode::BadRange,
-            why: format!("{name}: no register of {} the manual names", model.name),
-        });
+        v.push(Check::new(
+            sm,
+            Test::Overlaps(gap as u16, b as u16),
+            ResultCode::BadRange,
+            row_msg!("agent-row-gap", bytes = name.as_str(), model = model.name),
+        ));
     }
     for r in PTO_REGS.iter().filter(|r| model.pto(r.channel).is_some()) {
         let at = r.pos_cv as u16;
-        v.push(Check {
-            commands: Some((1, 1)),
-            test: Test::Overlaps(at, at + 4),
-            result: ResultCode::ReadOnly,
-            why: format!("SMD{at} is read-only (section 3.4.3.1)"),
-        });
+        v.push(Check::new(
+            Some((1, 1)),
+            Test::Overlaps(at, at + 4),
+            ResultCode::ReadOnly,
+            row_msg!("agent-row-pos-cv", at = at),
+        ));
     }
-    let channels = |n: usize, cmds: (u16, u16), what: &str| Check {
-        commands: Some(cmds),
-        test: if n == 0 { Test::Always } else { Test::Outside(Field::Arg1, 0, n as u16 - 1) },
-        result: ResultCode::BadChannel,
-        why: if n == 0 {
-            format!("{} has no {what}", model.name)
-        } else {
-            format!("{} has {what} 0..{}", model.name, n - 1)
-        },
+    // Pulse outputs (`pto`) or high-speed counters, 0..n-1.
+    let channels = |n: usize, cmds: (u16, u16), pto: bool| {
+        let m = model.name;
+        let said = match (n, pto) {
+            (0, true) => row_msg!("agent-row-no-pto", model = m),
+            (0, false) => row_msg!("agent-row-no-hsc", model = m),
+            (_, true) => row_msg!("agent-row-pto", model = m, last = n - 1),
+            (_, false) => row_msg!("agent-row-hsc", model = m, last = n - 1),
+        };
+        let test = if n == 0 { Test::Always } else { Test::Outside(Field::Arg1, 0, n as u16 - 1) };
+        Check::new(Some(cmds), test, ResultCode::BadChannel, said)
     };
     // The catalogue numbers channels and counters from 0 without gaps.
     debug_assert!(model.pto.iter().enumerate().all(|(i, c)| c.channel as usize == i));
     debug_assert!(model.hsc.iter().enumerate().all(|(i, c)| c.channel as usize == i));
-    v.push(channels(model.pto.len(), (3, 3), "pulse outputs"));
-    v.push(channels(model.hsc.len(), (4, 5), "high-speed counters"));
-    v.push(channels(model.pto.len(), (6, 6), "pulse outputs"));
+    v.push(channels(model.pto.len(), (3, 3), true));
+    v.push(channels(model.hsc.len(), (4, 5), false));
+    v.push(channels(model.pto.len(), (6, 6), true));
     v
 }
 
@@ -636,8 +643,7 @@ pub fn reason(model: &Model, cmd: &Command, result: ResultCode, cause: u8) -> (S
         }
         (ResultCode::ReadOnly, Command::SmWrite { start, data }) => {
             let (s, e) = (*start as u32, *start as u32 + data.len().max(1) as u32);
-            let written =
-                if e - s == 1 { format!("SMB{s}") } else { format!("SMB{s}…SMB{}", e - 1) };
+            let written = if e - s == 1 { format!("SMB{s}") } else { format!("SMB{s}…SMB{}", e - 1) };
             if s == 0 {
                 let (m, h) = sm_map::smb0_read_only(&written);
                 return (m, Some(h));
@@ -652,7 +658,10 @@ pub fn reason(model: &Model, cmd: &Command, result: ResultCode, cause: u8) -> (S
             }
         }
         _ => match checks(model).get((cause as usize).wrapping_sub(1)) {
-            Some(c) if c.result == result => (format!("{result}: {}", c.why.replace("..", "…")), None),
+            Some(c) if c.result == result => (
+                crate::msg!("agent-result-because", result = result.to_string(), why = c.said.replace("..", "…")).text,
+                None,
+            ),
             _ => (result.to_string(), None),
         },
     }
