@@ -94,8 +94,7 @@ fn a_helper_refusal_reads_in_each_language() {
             .collect();
         assert_eq!(errors, want, "{lang}:\n{err}");
         let (_, out, _) = run_in(lang, &["--json", "--device", &url, "-c", line]);
-        let last: serde_json::Value =
-            out.lines().filter_map(|l| serde_json::from_str(l).ok()).last().unwrap_or_default();
+        let last: serde_json::Value = out.lines().rev().find_map(|l| serde_json::from_str(l).ok()).unwrap_or_default();
         assert_eq!(last["error"]["code"], "agent-refused", "{lang}: {last}");
     }
 }
