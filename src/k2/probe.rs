@@ -413,19 +413,23 @@ pub const HEADERS: &[&str] = &["table", "FC", "area", "first", "last", "units", 
 /// The probe as a Markdown report a user can attach: the link, the areas, the models, the
 /// timing, the verdicts.
 pub fn markdown(p: &Probe, url: &str, serial: Option<&str>, version: &str) -> String {
-    let mut s = format!("# plcsh probe report\n\n- plcsh {version}\n- device: `{url}`\n");
+    let mut s = format!(
+        "# {}\n\n- plcsh {version}\n- {}\n",
+        crate::msg!("agent-probe-report-title"),
+        crate::msg!("agent-probe-report-device", url = url)
+    );
     if let Some(line) = serial {
-        s.push_str(&format!("- serial settings that answered: {line}\n"));
+        s.push_str(&format!("- {}\n", crate::msg!("probe-serial-answered", settings = line)));
     }
-    s.push_str(&format!("- requests sent: {} (reads only: FC 01, 02, 03, 04)\n\n", p.requests));
-    s.push_str("## Modbus areas\n\n");
+    s.push_str(&format!("- {}\n\n", crate::msg!("agent-probe-report-requests", requests = p.requests)));
+    s.push_str(&format!("## {}\n\n", crate::msg!("agent-probe-report-areas")));
     s.push_str(&format!("| {} |\n|{}\n", HEADERS.join(" | "), "---|".repeat(HEADERS.len())));
     for r in rows(p) {
         s.push_str(&format!("| {} |\n", r.join(" | ")));
     }
-    s.push_str("\n## Catalogue models that fit\n\n");
+    s.push_str(&format!("\n## {}\n\n", crate::msg!("agent-probe-report-models")));
     if p.models.is_empty() {
-        s.push_str("none\n");
+        s.push_str(&format!("{}\n", crate::msg!("agent-probe-report-no-models")));
     } else {
         for m in &p.models {
             s.push_str(&format!("- {m}\n"));
@@ -433,20 +437,24 @@ pub fn markdown(p: &Probe, url: &str, serial: Option<&str>, version: &str) -> St
     }
     if let Some(t) = &p.timing {
         s.push_str(&format!(
-            "\n## Response time\n\n{} reads of {}: {} failed; p50 {}, p99 {}, max {}\n",
-            t.reads,
-            t.what,
-            t.failed,
-            ms(t.p50_ms),
-            ms(t.p99_ms),
-            ms(t.max_ms)
+            "\n## {}\n\n{}\n",
+            crate::msg!("agent-probe-report-timing"),
+            crate::msg!(
+                "agent-probe-report-timed",
+                reads = t.reads,
+                what = t.what.as_str(),
+                failed = t.failed,
+                p50 = ms(t.p50_ms),
+                p99 = ms(t.p99_ms),
+                max = ms(t.max_ms)
+            )
         ));
     }
-    s.push_str("\n## Verdicts\n\n");
+    s.push_str(&format!("\n## {}\n\n", crate::msg!("agent-probe-report-verdicts")));
     for v in &p.verdicts {
         s.push_str(&format!("- {} {}\n", if v.ok { "ok:" } else { "FAILED:" }, v.what));
         if let Some(t) = &v.todo {
-            s.push_str(&format!("  - what to do: {t}\n"));
+            s.push_str(&format!("  - {}\n", crate::msg!("probe-what-to-do", todo = t.as_str())));
         }
     }
     s

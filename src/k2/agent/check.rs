@@ -61,7 +61,7 @@ pub struct Step {
     pub name: &'static str,
     pub outcome: Outcome,
     /// What a pass proves.
-    pub proves: &'static str,
+    pub proves: String,
     /// What was seen.
     pub seen: String,
     /// What to do (when it failed).
@@ -88,26 +88,33 @@ impl Report {
     }
 }
 
-const PROVES: [(&str, &str); 6] = [
-    ("signature", "the helper program runs with its mailbox at this base (plcsh reads its own signature there)"),
-    ("protocol", "the helper speaks the mailbox protocol this plcsh speaks"),
-    ("heartbeat", "the helper is called every scan, so commands are taken within a scan or two; the rate gives the scan time"),
-    ("system bits", "the helper's SM copy reaches the system status bits: a command goes in, its reply comes back, and the bytes are the PLC's own"),
-    ("clock", "READ_RTC works through the helper and the PLC's real-time clock runs"),
-    ("refusal", "a PLC instruction the PLC refuses is reported as refused (status bit 4), not as done, and the refusal moves nothing"),
-];
+/// The steps' names (the JSON `name`, the same in every language).
+const NAMES: [&str; 6] = ["signature", "protocol", "heartbeat", "system bits", "clock", "refusal"];
+
+/// What step `i` proves when it passes, in the current language.
+fn proves(i: usize) -> String {
+    match i {
+        0 => crate::msg!("agent-check-proves-signature"),
+        1 => crate::msg!("agent-check-proves-protocol"),
+        2 => crate::msg!("agent-check-proves-heartbeat"),
+        3 => crate::msg!("agent-check-proves-system-bits"),
+        4 => crate::msg!("agent-check-proves-clock"),
+        _ => crate::msg!("agent-check-proves-refusal"),
+    }
+    .to_string()
+}
 
 fn step(i: usize, ok: bool, seen: String, todo: Option<String>) -> Step {
     Step {
-        name: PROVES[i].0,
+        name: NAMES[i],
         outcome: if ok { Outcome::Passed } else { Outcome::Failed },
-        proves: PROVES[i].1,
+        proves: proves(i),
         seen,
         todo: if ok { None } else { todo },
     }
 }
 
-fn failed(i: usize, e: &Error, default_todo: &str) -> Step {
+fn failed(i: usize, e: &Error, default_todo: crate::core::msg::Msg) -> Step {
     let todo = e.hint.clone().unwrap_or_else(|| default_todo.to_string());
     step(i, false, e.message.clone(), Some(todo))
 }
@@ -124,13 +131,13 @@ pub fn run(client: &mut AgentClient, regs: &mut dyn Registers, model: &'static M
     steps(client, regs, model, time, &mut r);
     // Steps that did not run because an earlier one failed.
     let done = r.steps.len();
-    for (name, proves) in PROVES.iter().skip(done) {
+    for (i, name) in NAMES.iter().enumerate().skip(done) {
         r.steps.push(Step {
             name,
             outcome: Outcome::Failed,
-            proves,
-            seen: "not run: an earlier step failed".into(),
-            todo: Some("fix the first failed step, then run plcsh agent check again".into()),
+            proves: proves(i),
+            seen: crate::msg!("agent-check-not-run").to_string(),
+            todo: Some(crate::msg!("agent-check-not-run-todo").to_string()),
         });
     }
     r
@@ -148,14 +155,12 @@ fn steps(
     r: &mut Report,
 ) {
     let base = client.base;
-    let install = format!(
-        "load the helper into the PLC (plcsh agent il --base VB{base} prints it; docs/reference/first-connection.md), or give the base it was made for (agent=VB…)"
-    );
+    let install = crate::msg!("agent-check-install", base = base).to_string();
     // 1. Signature.
     let s = match read_status(client, regs) {
         Ok(s) => s,
         Err(e) => {
-            r.steps.push(failed(0, &e, "check the link (plcsh probe URL says what the PLC answers)"));
+            r.steps.push(failed(0, &e, crate::msg!("agent-check-link-probe")));
             return;
         }
     };
@@ -163,7 +168,13 @@ fn steps(
     r.steps.push(step(
         0,
         ok,
-        format!("VW{base} = 16#{:04X} (the helper writes 16#{:04X})", s.signature, p::SIGNATURE),
+        crate::msg!(
+            "agent-check-signature-seen",
+            base = base,
+            got = format!("{:04X}", s.signature),
+            want = format!("{:04X}", p::SIGNATURE)
+        )
+        .to_string(),
         Some(install.clone()),
     ));
     if !ok {
@@ -174,8 +185,8 @@ fn steps(
     r.steps.push(step(
         1,
         ok,
-        format!("version {} (this plcsh speaks {})", s.version, p::VERSION),
-        Some("download the current helper: plcsh agent il (then run plcsh agent check again)".into()),
+        crate::msg!("agent-check-version-seen", got = s.version, want = p::VERSION).to_string(),
+        Some(crate::msg!("agent-check-version-todo").to_string()),
     ));
     if !ok {
         return;
@@ -186,7 +197,7 @@ fn steps(
     let s1 = match read_status(client, regs) {
         Ok(s) => s,
         Err(e) => {
-            r.steps.push(failed(2, &e, "check the link"));
+            r.steps.push(failed(2, &e, crate::msg!("agent-check-link")));
             return;
         }
     };
@@ -196,8 +207,8 @@ fn steps(
         r.steps.push(step(
             2,
             false,
-            format!("the heartbeat stayed at {hb0} for {} ms", dt.as_millis()),
-            Some("put the PLC in RUN, and check that the main program calls the helper every scan (LD %SM0.0 / CAL PLCSH_AGENT)".into()),
+            crate::msg!("agent-check-heartbeat-stopped", hb = hb0, ms = dt.as_millis() as u64).to_string(),
+            Some(crate::msg!("agent-check-heartbeat-todo").to_string()),
         ));
         return;
     }
@@ -206,11 +217,14 @@ fn steps(
     r.steps.push(step(
         2,
         true,
-        format!(
-            "{scans} scans in {} ms: {:.0} scans a second, scan time about {scan_ms:.2} ms",
-            dt.as_millis(),
-            scans as f64 / dt.as_secs_f64().max(1e-9)
-        ),
+        crate::msg!(
+            "agent-check-heartbeat-seen",
+            scans = scans,
+            ms = dt.as_millis() as u64,
+            rate = format!("{:.0}", scans as f64 / dt.as_secs_f64().max(1e-9)),
+            scan = format!("{scan_ms:.2}")
+        )
+        .to_string(),
         None,
     ));
     // 4. SMB0.
@@ -220,9 +234,9 @@ fn steps(
             let ok = sm00 && !sm01;
             let mut todo = String::new();
             if !sm00 {
-                todo.push_str("SM0.0 reads 0 but is always 1 in a running PLC (manual, SM table): the helper's SM copy reads other memory; check that the helper was made for this model (plcsh agent il) and attach plcsh agent check --json when asking");
+                todo.push_str(&crate::msg!("agent-check-sm00-todo"));
             } else if sm01 {
-                todo.push_str("SM0.1 (first scan) reads 1 long after the first scan: the helper's SM copy does not follow the PLC's SM bytes; load the current helper (plcsh agent il)");
+                todo.push_str(&crate::msg!("agent-check-sm01-todo"));
             }
             r.steps.push(step(
                 3,
@@ -238,13 +252,13 @@ fn steps(
             r.steps.push(step(
                 3,
                 false,
-                format!("the reply holds {} bytes, not 1", b.len()),
-                Some("load the current helper (plcsh agent il)".into()),
+                crate::msg!("agent-check-reply-length", n = b.len()).to_string(),
+                Some(crate::msg!("agent-check-load-current-il").to_string()),
             ));
             return;
         }
         Err(e) => {
-            r.steps.push(failed(3, &e, "check that no other client uses the mailbox, then run the check again"));
+            r.steps.push(failed(3, &e, crate::msg!("agent-check-mailbox-todo")));
             return;
         }
     }
@@ -255,10 +269,10 @@ fn steps(
             let buf: [u8; 8] = b
                 .get(..8)
                 .and_then(|s| s.try_into().ok())
-                .ok_or_else(|| Error::link("the helper's READ_RTC reply is shorter than 8 bytes"))?;
+                .ok_or_else(|| Error::link(crate::msg!("agent-check-rtc-short")))?;
             RtcTime::from_bcd8(&buf).map_err(|m| {
-                Error::new(ErrorKind::Refused, format!("the PLC clock reads as {m}"))
-                    .hint("set it: plcsh -d URL -c 'rtc set YYYY-MM-DDTHH:MM:SS' (the clock battery may be flat)")
+                Error::new(ErrorKind::Refused, crate::msg!("agent-check-rtc-invalid", reading = m.to_string()))
+                    .hint(crate::msg!("agent-check-rtc-invalid-hint"))
             })
         };
     let first = read_rtc(client, regs, time);
@@ -273,15 +287,22 @@ fn steps(
             r.steps.push(step(
                 4,
                 ok,
-                format!("{a}, then {b} {dt:.1} s later ({moved} s on the PLC's clock)"),
-                Some("the PLC's clock does not run: check the clock battery and set the clock (rtc set …)".into()),
+                crate::msg!(
+                    "agent-check-clock-seen",
+                    first = a.to_string(),
+                    second = b.to_string(),
+                    dt = format!("{dt:.1}"),
+                    moved = moved
+                )
+                .to_string(),
+                Some(crate::msg!("agent-check-clock-todo").to_string()),
             ));
             if !ok {
                 return;
             }
         }
         (Err(e), _) | (_, Some(Err(e))) => {
-            r.steps.push(failed(4, &e, "load the current helper (plcsh agent il)"));
+            r.steps.push(failed(4, &e, crate::msg!("agent-check-load-current-il")));
             return;
         }
         (Ok(_), None) => unreachable!("a second read follows a good first"),
@@ -305,10 +326,10 @@ fn refusal(
     const I: usize = 5;
     if model.pto.is_empty() {
         r.steps.push(Step {
-            name: PROVES[I].0,
+            name: NAMES[I],
             outcome: Outcome::NotApplicable,
-            proves: PROVES[I].1,
-            seen: format!("{} has relay outputs and no pulse channel (manual §2.2.6): nothing to try", model.name),
+            proves: proves(I),
+            seen: crate::msg!("agent-check-relay-model", model = model.name).to_string(),
             todo: None,
         });
         return;
@@ -323,7 +344,7 @@ fn refusal(
             Ok(b) if b.len() == len as usize => b,
             Ok(_) => continue,
             Err(e) => {
-                r.steps.push(failed(I, &e, "run the check again"));
+                r.steps.push(failed(I, &e, crate::msg!("agent-check-again")));
                 return;
             }
         };
@@ -339,8 +360,8 @@ fn refusal(
         r.steps.push(step(
             I,
             false,
-            format!("every pulse channel has its enable bit set ({}): the program uses them", busy.join(", ")),
-            Some("the check tries PLS only on a channel the program leaves disabled; run it when the program does not use a pulse channel (a test program, or the machine's outputs disconnected)".into()),
+            crate::msg!("agent-check-all-enabled", bytes = busy.join(", ")).to_string(),
+            Some(crate::msg!("agent-check-all-enabled-todo").to_string()),
         ));
         return;
     };
@@ -372,32 +393,41 @@ fn refusal(
     r.sm_written = written.clone();
     let name = format!("PLS {} (control SMB{} = 16#84, count SMD{} = 0)", c.channel, c.control, c.count);
     if let Err(e) = &setup {
-        r.steps.push(failed(I, e, "run the check again"));
+        r.steps.push(failed(I, e, crate::msg!("agent-check-again")));
         return;
     }
     if let Err(e) = &restore {
         r.steps.push(step(
             I,
             false,
-            format!("{name}: the bytes could not be written back: {}", e.message),
-            Some(format!(
-                "write them back by hand: SMB{} = 16#{:02X}, SMD{} = {}",
-                c.control,
-                before[at(c.control)],
-                c.count,
-                u32::from_be_bytes(before[at(c.count)..at(c.count) + 4].try_into().expect("4 bytes"))
-            )),
+            crate::msg!("agent-check-restore-failed", name = name.as_str(), error = e.message.as_str()).to_string(),
+            Some(
+                crate::msg!(
+                    "agent-check-restore-todo",
+                    control = c.control,
+                    value = format!("{:02X}", before[at(c.control)]),
+                    count = c.count,
+                    pulses = u32::from_be_bytes(before[at(c.count)..at(c.count) + 4].try_into().expect("4 bytes"))
+                        .to_string()
+                )
+                .to_string(),
+            ),
         ));
         return;
     }
     let (after, cv_before, cv_after) = match (after, cv_before, cv_after) {
         (Ok(a), Ok(b), Ok(c)) if a.len() == before.len() => (a, b, c),
         (Err(e), ..) | (_, Err(e), _) | (.., Err(e)) => {
-            r.steps.push(failed(I, &e, "run the check again"));
+            r.steps.push(failed(I, &e, crate::msg!("agent-check-again")));
             return;
         }
         _ => {
-            r.steps.push(step(I, false, "a reply had the wrong length".into(), Some("load the current helper".into())));
+            r.steps.push(step(
+                I,
+                false,
+                crate::msg!("agent-check-wrong-length").to_string(),
+                Some(crate::msg!("agent-check-load-current").to_string()),
+            ));
             return;
         }
     };
@@ -406,29 +436,35 @@ fn refusal(
     let idle_kept = (status ^ before[at(c.status)]) & 0x80 == 0;
     let still = cv_before == cv_after;
     let (helper, reported_done) = match pls.expect("the setup succeeded") {
-        Ok(_) => ("the helper reported it done".to_string(), true),
-        Err(e) if e.kind == ErrorKind::Refused => (format!("the helper reported: {}", e.message), false),
+        Ok(_) => (crate::msg!("agent-check-reported-done").to_string(), true),
+        Err(e) if e.kind == ErrorKind::Refused => {
+            (crate::msg!("agent-check-reported", message = e.message.as_str()).to_string(), false)
+        }
         Err(e) => {
-            r.steps.push(failed(I, &e, "run the check again"));
+            r.steps.push(failed(I, &e, crate::msg!("agent-check-again")));
             return;
         }
     };
     let ok = bit4 && idle_kept && still && !reported_done;
-    let seen = format!(
-        "{name}: status SMB{} 16#{:02X} → 16#{status:02X} (bit 4 {}), position SMD{} {}; {helper}; {} written back",
-        c.status,
-        before[at(c.status)],
-        if bit4 { "set" } else { "clear" },
-        c.pos_cv,
-        if still { "unchanged" } else { "CHANGED" },
-        written.join(", ")
-    );
+    let seen = crate::msg!(
+        "agent-check-refusal-seen",
+        name = name.as_str(),
+        status = c.status,
+        before = format!("{:02X}", before[at(c.status)]),
+        after = format!("{status:02X}"),
+        bit4 = if bit4 { "set" } else { "clear" },
+        cv = c.pos_cv,
+        moved = if still { "unchanged" } else { "changed" },
+        helper = helper.as_str(),
+        written = written.join(", ")
+    )
+    .to_string();
     let todo = if !bit4 {
-        "the PLC did not flag the invalid count in its status byte (manual §3.4.2.2, bit 4): the helper may address the wrong SM bytes on this PLC; attach plcsh agent check --json when asking".to_string()
+        crate::msg!("agent-check-no-bit4-todo").to_string()
     } else if reported_done {
-        "the helper takes PLS's CR as success, which a K2 leaves as it was (§3.4.2, IL): a refused PLS would read as done; load the current helper (plcsh agent il)".to_string()
+        crate::msg!("agent-check-cr-todo").to_string()
     } else {
-        format!("the channel moved: stop the machine and check channel {} before using pulse outputs", c.channel)
+        crate::msg!("agent-check-moved-todo", channel = c.channel).to_string()
     };
     r.steps.push(step(I, ok, seen, Some(todo)));
 }
@@ -440,7 +476,7 @@ pub fn run_wall(client: &mut AgentClient, regs: &mut dyn Registers, model: &'sta
 
 /// The report as text: one line a step, then what to do for each failed one.
 pub fn text(r: &Report) -> String {
-    let mut s = format!("helper at {} on {}\n", r.base, r.model);
+    let mut s = format!("{}\n", crate::msg!("agent-check-title", base = r.base.as_str(), model = r.model));
     for (i, st) in r.steps.iter().enumerate() {
         let mark = match st.outcome {
             Outcome::Passed => "pass",
@@ -448,12 +484,13 @@ pub fn text(r: &Report) -> String {
             Outcome::NotApplicable => "n/a ",
         };
         s.push_str(&format!("{}. {mark} {}: {}\n", i + 1, st.name, st.seen));
-        s.push_str(&format!("   proves: {}\n", st.proves));
+        s.push_str(&format!("   {}\n", crate::msg!("agent-check-proves", text = st.proves.as_str())));
         if let Some(t) = &st.todo {
-            s.push_str(&format!("   what to do: {t}\n"));
+            s.push_str(&format!("   {}\n", crate::msg!("agent-check-todo", text = t.as_str())));
         }
     }
-    s.push_str(if r.passed() { "every step passed\n" } else { "the check FAILED\n" });
+    let verdict = if r.passed() { crate::msg!("agent-check-passed") } else { crate::msg!("agent-check-failed") };
+    s.push_str(&format!("{verdict}\n"));
     s
 }
 

@@ -53,8 +53,12 @@ fn new_token() -> u16 {
 
 fn describe(cmd: &Command) -> String {
     match cmd {
-        Command::SmWrite { start, data } => format!("writing SMB{start}…SMB{}", *start as usize + data.len() - 1),
-        Command::SmRead { start, len } => format!("reading SMB{start}…SMB{}", start + len - 1),
+        Command::SmWrite { start, data } => {
+            crate::msg!("agent-what-sm-write", start = *start, end = *start as usize + data.len() - 1).to_string()
+        }
+        Command::SmRead { start, len } => {
+            crate::msg!("agent-what-sm-read", start = *start, end = start + len - 1).to_string()
+        }
         Command::Pls(n) => format!("PLS {n}"),
         Command::Hdef { hsc, mode } => format!("HDEF {hsc}, {mode}"),
         Command::Hsc(n) => format!("HSC {n}"),
@@ -84,45 +88,30 @@ impl AgentClient {
         if s.signature != p::SIGNATURE {
             return Err(Error::new(
                 ErrorKind::Unsupported,
-                format!(
-                    "no plcsh helper answers in VB{}…VB{} (signature 16#{:04X}, expected 16#{:04X})",
-                    self.base,
-                    self.base + p::SIZE - 1,
-                    s.signature,
-                    p::SIGNATURE
+                crate::msg!(
+                    "agent-no-helper",
+                    base = self.base,
+                    last = self.base + p::SIZE - 1,
+                    got = format!("{:04X}", s.signature),
+                    want = format!("{:04X}", p::SIGNATURE)
                 ),
             )
-            .hint(format!(
-                "SM registers and instructions need the helper program in the PLC: `plcsh agent il --base VB{}` prints it (also lib/k2_agent.il); docs/agent.md says how to install it; or check agent=VB… matches the program",
-                self.base
-            )));
+            .hint(crate::msg!("agent-no-helper-hint", base = self.base)));
         }
         if s.version == 2 {
-            return Err(Error::new(
-                ErrorKind::Unsupported,
-                "the helper in the PLC is version 2, which reports a refused PLS as done (it read the CR, which PLS leaves as it was, manual §3.4.2)"
-                    .to_string(),
-            )
-            .hint(format!("download the current helper (version {}) into the PLC: `plcsh agent il --model MODEL` prints it (lib/k2_agent.il)", p::VERSION)));
+            return Err(Error::new(ErrorKind::Unsupported, crate::msg!("agent-helper-v2"))
+                .hint(crate::msg!("agent-helper-old-hint", version = p::VERSION)));
         }
         if s.version == 1 {
-            return Err(Error::new(
-                ErrorKind::Unsupported,
-                "the helper in the PLC is version 1, which runs a repeated PLS or PSTOP on a channel only the first time"
-                    .to_string(),
-            )
-            .hint(format!("download the current helper (version {}) into the PLC: `plcsh agent il --model MODEL` prints it (lib/k2_agent.il)", p::VERSION)));
+            return Err(Error::new(ErrorKind::Unsupported, crate::msg!("agent-helper-v1"))
+                .hint(crate::msg!("agent-helper-old-hint", version = p::VERSION)));
         }
         if s.version != p::VERSION {
             return Err(Error::new(
                 ErrorKind::Unsupported,
-                format!(
-                    "the helper in the PLC speaks mailbox protocol version {}; this plcsh speaks {}",
-                    s.version,
-                    p::VERSION
-                ),
+                crate::msg!("agent-helper-version", got = s.version, want = p::VERSION),
             )
-            .hint("download the current helper: `plcsh agent il` (lib/k2_agent.il)"));
+            .hint(crate::msg!("agent-helper-version-hint")));
         }
         Ok(s)
     }
@@ -155,8 +144,12 @@ impl AgentClient {
             let mut pending = self.pending(regs)?;
             while pending != s.acks[0].seq {
                 if start.elapsed() > self.timeout {
-                    return Err(Error::new(ErrorKind::State, format!("mailbox busy: {what} could not be sent"))
-                        .hint(format!("another client's request (sequence {pending}) has waited {} ms for the helper; is the PLC in RUN? try again", self.timeout.as_millis())));
+                    return Err(Error::new(ErrorKind::State, crate::msg!("agent-mailbox-busy", what = what.as_str()))
+                        .hint(crate::msg!(
+                            "agent-mailbox-busy-hint",
+                            pending = pending,
+                            ms = self.timeout.as_millis() as u64
+                        )));
                 }
                 sleep(self.poll);
                 s = self.status(regs)?;
@@ -175,7 +168,7 @@ impl AgentClient {
                 if let Some((i, ack)) = s.find(seq, self.token) {
                     return match ack.result {
                         ResultCode::Ok if i == 0 => p::reply_of(cmd, &s.reply)
-                            .ok_or_else(|| Error::link(format!("the helper's reply to {what} is shorter than asked"))),
+                            .ok_or_else(|| Error::link(crate::msg!("agent-reply-short", what = what.as_str()))),
                         ResultCode::Ok if matches!(cmd, Command::SmRead { .. } | Command::ReadRtc) => break, // reply overwritten: read again
                         ResultCode::Ok => Ok(Vec::new()),
                         rc => {
@@ -183,7 +176,13 @@ impl AgentClient {
                             let (why, hint) = p::reason(self.model, cmd, rc, ack.cause);
                             let e = Error::new(
                                 ErrorKind::Refused,
-                                format!("the helper refused {what}: {why} (result {}, cause {})", rc.code(), ack.cause),
+                                crate::msg!(
+                                    "agent-refused",
+                                    what = what.as_str(),
+                                    why = why,
+                                    result = rc.code(),
+                                    cause = ack.cause
+                                ),
                             );
                             Err(match hint {
                                 Some(h) => e.hint(h),
@@ -198,13 +197,13 @@ impl AgentClient {
                 }
                 if sent.elapsed() > self.timeout {
                     let hint = if s.heartbeat == heartbeat {
-                        "the helper's heartbeat stopped: the PLC is probably in STOP, or the helper is no longer called every scan"
+                        crate::msg!("agent-no-ack-stopped")
                     } else {
-                        "the helper runs but did not take the request; another client may be using the mailbox"
+                        crate::msg!("agent-no-ack-busy")
                     };
                     return Err(Error::new(
                         ErrorKind::Timeout,
-                        format!("the helper did not acknowledge {what} within {} ms", self.timeout.as_millis()),
+                        crate::msg!("agent-no-ack", what = what.as_str(), ms = self.timeout.as_millis() as u64),
                     )
                     .hint(hint));
                 }
@@ -213,11 +212,9 @@ impl AgentClient {
             if races > RACE_RETRIES {
                 return Err(Error::new(
                     ErrorKind::State,
-                    format!("mailbox busy: {what} lost {races} races to other clients"),
+                    crate::msg!("agent-mailbox-races", what = what.as_str(), races = races),
                 )
-                .hint(
-                    "another plcsh (or program) is sending helper commands to this PLC at the same time; try again",
-                ));
+                .hint(crate::msg!("agent-mailbox-races-hint")));
             }
         }
     }
@@ -229,11 +226,8 @@ impl AgentClient {
 }
 
 fn stopped(t: Duration) -> Error {
-    Error::new(
-        ErrorKind::State,
-        format!("the plcsh helper is installed but its heartbeat did not move in {} ms", t.as_millis()),
-    )
-    .hint("the PLC is probably in STOP, or PLCSH_AGENT is not called every scan (LD %SM0.0 / CAL PLCSH_AGENT)")
+    Error::new(ErrorKind::State, crate::msg!("agent-heartbeat-stopped", ms = t.as_millis() as u64))
+        .hint(crate::msg!("agent-heartbeat-stopped-hint"))
 }
 
 #[cfg(test)]

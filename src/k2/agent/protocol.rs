@@ -169,14 +169,12 @@ pub fn parse_base(text: &str) -> Result<u32, String> {
         .trim_start_matches('%')
         .trim_start_matches("VB")
         .parse()
-        .map_err(|_| format!("`{text}` is not a V byte address (e.g. VB{DEFAULT_BASE})"))?;
+        .map_err(|_| crate::msg!("agent-base-not-vb", text = text, base = DEFAULT_BASE).to_string())?;
     let total = TOTAL_SIZE;
     // `n + total` in u64: a base near u32::MAX must be refused, not wrap past the check.
     if !n.is_multiple_of(2) || n as u64 + total as u64 > crate::k2::catalog::EEPROM_FIRST as u64 {
-        return Err(format!(
-            "the helper's mailbox needs an even address with {total} bytes free below the E2PROM area VB{} (got VB{n})",
-            crate::k2::catalog::EEPROM_FIRST
-        ));
+        return Err(crate::msg!("agent-base-range", total = total, eeprom = crate::k2::catalog::EEPROM_FIRST, n = n)
+            .to_string());
     }
     Ok(n)
 }
@@ -344,8 +342,26 @@ pub struct Check {
     pub test: Test,
     pub result: ResultCode,
     /// Why, for the program's comments and docs/agent.md (ASCII: the program is pasted
-    /// into KincoBuilder).
+    /// into KincoBuilder): always English, the program's language.
     pub why: String,
+    /// The same reason in the current language, for a refusal a person reads ([`reason`]).
+    pub said: String,
+}
+
+/// A row's reason: (English for the program and the docs, the current language for a person).
+macro_rules! row_msg {
+    ($id:literal $(, $k:ident = $v:expr)* $(,)?) => {
+        (
+            crate::msg!(lang: crate::core::msg::Lang::En, $id $(, $k = $v)*).text,
+            crate::msg!($id $(, $k = $v)*).text,
+        )
+    };
+}
+
+impl Check {
+    fn new(commands: Option<(u16, u16)>, test: Test, result: ResultCode, (why, said): (String, String)) -> Check {
+        Check { commands, test, result, why, said }
+    }
 }
 
 impl Check {
@@ -378,48 +394,40 @@ pub fn checks(model: &Model) -> Vec<Check> {
     let sm_last = end - 1;
     let sm = Some((1, 2));
     let mut v = vec![
-        Check {
-            commands: None,
-            test: Test::Outside(Field::Command, 1, 9),
-            result: ResultCode::UnknownCommand,
-            why: "the helper knows commands 1..9".into(),
-        },
-        Check {
-            commands: Some((1, 1)),
-            test: Test::Is(Field::Arg1, 0),
-            result: ResultCode::ReadOnly,
-            why: "SMB0 holds the system status bits and is read-only".into(),
-        },
-        Check {
-            commands: sm,
-            test: Test::Outside(Field::Arg2, 1, DATA_MAX as u16),
-            result: ResultCode::BadRange,
-            why: format!("1..{DATA_MAX} bytes at once"),
-        },
-        Check {
-            commands: sm,
-            test: Test::Outside(Field::Arg1, 0, sm_last),
-            result: ResultCode::BadRange,
-            why: format!("the start is SMB0..SMB{sm_last}, the registers the manual names"),
-        },
-        Check {
-            commands: sm,
-            test: Test::EndAbove(end),
-            result: ResultCode::BadRange,
-            why: format!(
-                "the last byte is SMB{sm_last} at most (SMD{} is the highest register the manual names)",
-                sm_last - 3
-            ),
-        },
+        Check::new(
+            None,
+            Test::Outside(Field::Command, 1, 9),
+            ResultCode::UnknownCommand,
+            row_msg!("agent-row-commands"),
+        ),
+        Check::new(Some((1, 1)), Test::Is(Field::Arg1, 0), ResultCode::ReadOnly, row_msg!("agent-row-smb0")),
+        Check::new(
+            sm,
+            Test::Outside(Field::Arg2, 1, DATA_MAX as u16),
+            ResultCode::BadRange,
+            row_msg!("agent-row-length", max = DATA_MAX),
+        ),
+        Check::new(
+            sm,
+            Test::Outside(Field::Arg1, 0, sm_last),
+            ResultCode::BadRange,
+            row_msg!("agent-row-start", last = sm_last),
+        ),
+        Check::new(
+            sm,
+            Test::EndAbove(end),
+            ResultCode::BadRange,
+            row_msg!("agent-row-end", last = sm_last, dword = sm_last - 3),
+        ),
     ];
     for (s, e) in sm_blocks() {
         if e < end as u32 {
-            v.push(Check {
-                commands: sm,
-                test: Test::Span(s as u16, e as u16 - 1, e as u16),
-                result: ResultCode::BadRange,
-                why: format!("SMB{s}..SMB{} is one block: split there", e - 1),
-            });
+            v.push(Check::new(
+                sm,
+                Test::Span(s as u16, e as u16 - 1, e as u16),
+                ResultCode::BadRange,
+                row_msg!("agent-row-block", first = s, last = e - 1),
+            ));
         }
     }
     let rows = sm_rows(model);
@@ -434,38 +442,40 @@ pub fn checks(model: &Model) -> Vec<Check> {
             b += 1;
         }
         let name = if b - gap == 1 { format!("SMB{gap}") } else { format!("SMB{gap}..SMB{}", b - 1) };
-        v.push(Check {
-            commands: sm,
-            test: Test::Overlaps(gap as u16, b as u16),
-            result: ResultCode::BadRange,
-            why: format!("{name}: no register of {} the manual names", model.name),
-        });
+        v.push(Check::new(
+            sm,
+            Test::Overlaps(gap as u16, b as u16),
+            ResultCode::BadRange,
+            row_msg!("agent-row-gap", bytes = name.as_str(), model = model.name),
+        ));
     }
     for r in PTO_REGS.iter().filter(|r| model.pto(r.channel).is_some()) {
         let at = r.pos_cv as u16;
-        v.push(Check {
-            commands: Some((1, 1)),
-            test: Test::Overlaps(at, at + 4),
-            result: ResultCode::ReadOnly,
-            why: format!("SMD{at} is read-only (section 3.4.3.1)"),
-        });
+        v.push(Check::new(
+            Some((1, 1)),
+            Test::Overlaps(at, at + 4),
+            ResultCode::ReadOnly,
+            row_msg!("agent-row-pos-cv", at = at),
+        ));
     }
-    let channels = |n: usize, cmds: (u16, u16), what: &str| Check {
-        commands: Some(cmds),
-        test: if n == 0 { Test::Always } else { Test::Outside(Field::Arg1, 0, n as u16 - 1) },
-        result: ResultCode::BadChannel,
-        why: if n == 0 {
-            format!("{} has no {what}", model.name)
-        } else {
-            format!("{} has {what} 0..{}", model.name, n - 1)
-        },
+    // Pulse outputs (`pto`) or high-speed counters, 0..n-1.
+    let channels = |n: usize, cmds: (u16, u16), pto: bool| {
+        let m = model.name;
+        let said = match (n, pto) {
+            (0, true) => row_msg!("agent-row-no-pto", model = m),
+            (0, false) => row_msg!("agent-row-no-hsc", model = m),
+            (_, true) => row_msg!("agent-row-pto", model = m, last = n - 1),
+            (_, false) => row_msg!("agent-row-hsc", model = m, last = n - 1),
+        };
+        let test = if n == 0 { Test::Always } else { Test::Outside(Field::Arg1, 0, n as u16 - 1) };
+        Check::new(Some(cmds), test, ResultCode::BadChannel, said)
     };
     // The catalogue numbers channels and counters from 0 without gaps.
     debug_assert!(model.pto.iter().enumerate().all(|(i, c)| c.channel as usize == i));
     debug_assert!(model.hsc.iter().enumerate().all(|(i, c)| c.channel as usize == i));
-    v.push(channels(model.pto.len(), (3, 3), "pulse outputs"));
-    v.push(channels(model.hsc.len(), (4, 5), "high-speed counters"));
-    v.push(channels(model.pto.len(), (6, 6), "pulse outputs"));
+    v.push(channels(model.pto.len(), (3, 3), true));
+    v.push(channels(model.hsc.len(), (4, 5), false));
+    v.push(channels(model.pto.len(), (6, 6), true));
     v
 }
 
@@ -575,22 +585,19 @@ impl ResultCode {
 
 impl fmt::Display for ResultCode {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(match self {
-            ResultCode::Ok => "done",
-            ResultCode::UnknownCommand => "the helper does not know this command (update lib/k2_agent.il)",
-            ResultCode::BadRange => "SM range outside the registers the manual names or longer than 64 bytes",
-            ResultCode::ReadOnly => "the SM bytes are read-only",
-            ResultCode::BadChannel => "no such channel on this PLC",
-            ResultCode::BadMode => "the counter does not have this mode",
-            ResultCode::InstructionFailed => "the PLC instruction reported an error (its ENO)",
-            ResultCode::BadClock => "the date or time is not valid",
-            ResultCode::StatusBit => "the instruction's status bit reports a refusal",
-            ResultCode::Other(_) => "unknown result code",
-        })?;
-        if let ResultCode::Other(c) = self {
-            write!(f, " {c}")?;
-        }
-        Ok(())
+        let m = match self {
+            ResultCode::Ok => crate::msg!("agent-result-done"),
+            ResultCode::UnknownCommand => crate::msg!("agent-result-unknown-command"),
+            ResultCode::BadRange => crate::msg!("agent-result-bad-range"),
+            ResultCode::ReadOnly => crate::msg!("agent-result-read-only"),
+            ResultCode::BadChannel => crate::msg!("agent-result-bad-channel"),
+            ResultCode::BadMode => crate::msg!("agent-result-bad-mode"),
+            ResultCode::InstructionFailed => crate::msg!("agent-result-instruction-failed"),
+            ResultCode::BadClock => crate::msg!("agent-result-bad-clock"),
+            ResultCode::StatusBit => crate::msg!("agent-result-status-bit"),
+            ResultCode::Other(c) => crate::msg!("agent-result-other", code = *c),
+        };
+        f.write_str(&m)
     }
 }
 
@@ -602,15 +609,12 @@ pub fn reason(model: &Model, cmd: &Command, result: ResultCode, cause: u8) -> (S
     match (result, cmd) {
         (ResultCode::StatusBit, Command::Pls(n)) if cause == StatusCause::PtoInvalid as u8 => match pto(*n) {
             Some(r) => (
-                format!(
-                    "the PLC set status bit SM{}.4 after PLS {n}: cycle time or pulse count invalid ({}); no pulses were sent",
-                    r.status,
-                    sm_map::PTO_INVALID_RULE
+                // The rule in the message is sm_map::PTO_INVALID_RULE's, in each language.
+                crate::msg!("agent-pls-invalid", status = r.status, n = *n).to_string(),
+                Some(
+                    crate::msg!("agent-pls-invalid-hint", cycle = r.cycle, control = r.control, count = r.count)
+                        .to_string(),
                 ),
-                Some(format!(
-                    "load SMW{} with SM{}.0 and SMD{} with SM{}.2 set (e.g. SMB{}=16#85), then PLS again",
-                    r.cycle, r.control, r.count, r.control, r.control
-                )),
             ),
             None => (result.to_string(), None),
         },
@@ -623,33 +627,23 @@ pub fn reason(model: &Model, cmd: &Command, result: ResultCode, cause: u8) -> (S
         },
         (ResultCode::StatusBit, Command::Pstop(n)) if cause == StatusCause::NotLatched as u8 => match pto(*n) {
             Some(r) => (
-                format!(
-                    "the emergency-stop bit SM{}.7 did not latch after PSTOP {n} (manual §3.4.3.1: PSTOP sets it)",
-                    r.pos_control
-                ),
-                Some("check that the PLC runs the current helper and that position channel exists on it".into()),
+                crate::msg!("agent-pstop-not-latched", control = r.pos_control, n = *n).to_string(),
+                Some(crate::msg!("agent-pstop-not-latched-hint").to_string()),
             ),
             None => (result.to_string(), None),
         },
         (ResultCode::StatusBit, Command::Hsc(n)) if cause == StatusCause::PvTable as u8 => {
             match sm_map::HSC_REGS.iter().find(|r| r.channel == *n) {
                 Some(r) => (
-                    format!(
-                        "the PLC set status bit SM{}.3 after HSC {n}: fault in the multi-PV table (manual §3.3.2)",
-                        r.status
-                    ),
-                    Some(format!(
-                        "check the PV table at SMW{} (an odd V address, a count of 1..32, PVs that differ by more than 1; §3.3.3)",
-                        r.table
-                    )),
+                    crate::msg!("agent-hsc-pv-table", status = r.status, n = *n).to_string(),
+                    Some(crate::msg!("agent-hsc-pv-table-hint", table = r.table).to_string()),
                 ),
                 None => (result.to_string(), None),
             }
         }
         (ResultCode::ReadOnly, Command::SmWrite { start, data }) => {
             let (s, e) = (*start as u32, *start as u32 + data.len().max(1) as u32);
-            let written =
-                if e - s == 1 { format!("SMB{s}") } else { format!("SMB{s}…SMB{}", e - 1) };
+            let written = if e - s == 1 { format!("SMB{s}") } else { format!("SMB{s}…SMB{}", e - 1) };
             if s == 0 {
                 let (m, h) = sm_map::smb0_read_only(&written);
                 return (m, Some(h));
@@ -664,7 +658,10 @@ pub fn reason(model: &Model, cmd: &Command, result: ResultCode, cause: u8) -> (S
             }
         }
         _ => match checks(model).get((cause as usize).wrapping_sub(1)) {
-            Some(c) if c.result == result => (format!("{result}: {}", c.why.replace("..", "…")), None),
+            Some(c) if c.result == result => (
+                crate::msg!("agent-result-because", result = result.to_string(), why = c.said.replace("..", "…")).text,
+                None,
+            ),
             _ => (result.to_string(), None),
         },
     }
