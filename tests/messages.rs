@@ -133,7 +133,8 @@ fn test_modules(files: &[PathBuf]) -> Vec<PathBuf> {
                 continue;
             }
             let stem = f.file_stem().unwrap().to_string_lossy();
-            let dir = if stem == "mod" || stem == "lib" { f.parent().unwrap().to_path_buf() } else { f.with_extension("") };
+            let dir =
+                if stem == "mod" || stem == "lib" { f.parent().unwrap().to_path_buf() } else { f.with_extension("") };
             out.push(dir.join(format!("{name}.rs")));
             out.push(dir.join(name).join("mod.rs"));
         }
