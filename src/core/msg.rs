@@ -200,12 +200,16 @@ fn index(lang: Lang) -> &'static std::collections::HashMap<&'static str, u8> {
     static INDEX: [OnceLock<std::collections::HashMap<&'static str, u8>>; 3] =
         [OnceLock::new(), OnceLock::new(), OnceLock::new()];
     INDEX[lang.index() as usize - 1].get_or_init(|| {
-        let mut map = std::collections::HashMap::new();
-        for (i, text) in files(lang).into_iter().enumerate() {
+        let files = files(lang);
+        let lines: usize = files.iter().map(|t| t.len() / 64).sum();
+        let mut map = std::collections::HashMap::with_capacity(lines);
+        for (i, text) in files.into_iter().enumerate() {
             for line in text.lines() {
-                let Some((id, _)) = line.split_once(" =") else { continue };
-                if !id.is_empty() && id.bytes().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == b'-') {
-                    map.insert(id, i as u8);
+                // `id =` at the start of the line: lower-case letters, digits and `-`, then ` =`.
+                let b = line.as_bytes();
+                let n = b.iter().take_while(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || **c == b'-').count();
+                if n > 0 && b.get(n) == Some(&b' ') && b.get(n + 1) == Some(&b'=') {
+                    map.insert(&line[..n], i as u8);
                 }
             }
         }

@@ -580,7 +580,7 @@ fn same_batch(a: &[Operand], b: &[Operand]) -> bool {
 
 /// Connects to `addr` (`HOST:PORT`) within `timeout` ([`crate::core::link::tcp::connect`]).
 fn tcp_connect(addr: &str, timeout: Duration) -> Result<std::net::TcpStream> {
-    crate::core::link::tcp::connect(addr, timeout, &String::from(msg!("k2-hint-connect")))
+    crate::core::link::tcp::connect(addr, timeout, || msg!("k2-hint-connect").into())
 }
 
 fn with_port(target: &str) -> String {

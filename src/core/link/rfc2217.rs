@@ -176,7 +176,7 @@ pub struct Rfc2217 {
 impl Rfc2217 {
     /// Connects, negotiates COM-PORT-OPTION and sets the line, all within `timeout`.
     pub fn connect(addr: &str, settings: LineSettings, timeout: Duration) -> Result<Rfc2217> {
-        let stream = super::tcp::connect(addr, timeout, &super::tcp::server_hint())?;
+        let stream = super::tcp::connect(addr, timeout, super::tcp::server_hint)?;
         let mut l = Rfc2217 {
             stream,
             addr: addr.to_string(),

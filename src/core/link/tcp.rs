@@ -36,9 +36,11 @@ pub fn with_port(target: &str, u: &DeviceUrl) -> Result<String> {
 
 /// Connects to `addr` (`HOST:PORT`; every address it resolves to is tried) within `timeout`.
 /// A host name is looked up on a thread of its own, so a name server that does not answer
-/// costs the timeout, not a hang. `hint` says what to check when nothing answers.
-pub fn connect(addr: &str, timeout: Duration, hint: &str) -> Result<TcpStream> {
-    let refused = |e: io::Error| Error::link(msg!("link-cannot-connect", addr = addr)).cause(e).hint(hint.to_string());
+/// costs the timeout, not a hang. `hint` says what to check when nothing answers; it is
+/// written only then (a message costs a catalogue lookup, which a connection that works must
+/// not pay: one-shot start-up).
+pub fn connect(addr: &str, timeout: Duration, hint: fn() -> String) -> Result<TcpStream> {
+    let refused = |e: io::Error| Error::link(msg!("link-cannot-connect", addr = addr)).cause(e).hint(hint());
     let start = Instant::now();
     let addrs: Vec<SocketAddr> = match addr.parse::<SocketAddr>() {
         Ok(a) => vec![a],
@@ -74,8 +76,7 @@ pub fn connect(addr: &str, timeout: Duration, hint: &str) -> Result<TcpStream> {
     }
     Err(match last {
         Some(e) if e.kind() == io::ErrorKind::TimedOut => {
-            Error::link(msg!("link-connect-timeout", addr = addr, ms = timeout.as_millis() as u64))
-                .hint(hint.to_string())
+            Error::link(msg!("link-connect-timeout", addr = addr, ms = timeout.as_millis() as u64)).hint(hint())
         }
         Some(e) => refused(e),
         None => refused(io::Error::new(io::ErrorKind::NotFound, String::from(msg!("link-no-address")))),
@@ -122,7 +123,7 @@ pub struct TcpLine {
 
 impl TcpLine {
     pub fn connect(addr: &str, timeout: Duration) -> Result<TcpLine> {
-        Ok(TcpLine { stream: connect(addr, timeout, &server_hint())? })
+        Ok(TcpLine { stream: connect(addr, timeout, server_hint)? })
     }
 
     pub fn from_stream(stream: TcpStream) -> TcpLine {
