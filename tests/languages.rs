@@ -143,9 +143,14 @@ fn under_wine_the_windows_ui_language_chooses() {
     // No double quotes in the script: the Windows command line carries it to the shell whole.
     const SCRIPT: &str = "f=$1 l=$2 x=$3 c=$4; env -u PLCSH_LANG -u LANGUAGE -u LC_MESSAGES -u LANG \
         LC_ALL=$c PLCSH_STATE=none $l $x -c 'set VB2=300' </dev/null >$f.out 2>$f.part; mv $f.part $f";
+    // A fresh folder of this test's own under /tmp (`Z:\tmp` here): the shell writes there by
+    // its Unix path, the test reads there by its Windows path.
+    let own = format!("plcsh-wine-lang-{}", std::process::id());
+    let _ = std::fs::remove_dir_all(format!(r"Z:\tmp\{own}"));
+    std::fs::create_dir_all(format!(r"Z:\tmp\{own}")).unwrap();
     let said = |locale: &str| {
-        let name = format!("plcsh-wine-lang-{}-{}", std::process::id(), locale.replace('.', "-"));
-        let unix = format!("/tmp/{name}");
+        let name = format!(r"{own}\{}", locale.replace('.', "-"));
+        let unix = format!("/tmp/{}", name.replace('\\', "/"));
         let windows = std::path::PathBuf::from(format!(r"Z:\tmp\{name}"));
         let _ = std::fs::remove_file(&windows);
         let mut child = std::process::Command::new(r"Z:\bin\sh")

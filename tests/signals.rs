@@ -29,6 +29,8 @@ fn script() -> std::path::PathBuf {
     static FILE: std::sync::OnceLock<std::path::PathBuf> = std::sync::OnceLock::new();
     FILE.get_or_init(|| {
         let dir = std::env::temp_dir().join(format!("plcsh-signals-{}", std::process::id()));
+        // Fresh: nothing a previous run left is read.
+        let _ = std::fs::remove_dir_all(&dir);
         std::fs::create_dir_all(&dir).unwrap();
         let f = dir.join("wait.lua");
         std::fs::write(&f, SCRIPT).unwrap();
