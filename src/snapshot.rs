@@ -397,19 +397,7 @@ impl Snapshot {
             if let Some(st) = sections.k2 {
                 let sim = crate::k2::simulator(s.entry(i).device.as_mut()).expect("checked above");
                 if st.model != sim.model().name {
-                    return Err(Error::usage(msg!(
-                        "snapshot-model-differs",
-                        name = name,
-                        saved = st.model.as_str(),
-                        model = sim.model().name,
-                        article = "a"
-                    ))
-                    .hint(msg!(
-                        "snapshot-open-as",
-                        name = name,
-                        scheme = "sim",
-                        model = st.model.as_str()
-                    )));
+                    return Err(model_differs(name, &st.model, sim.model().name, "sim"));
                 }
                 k2.push((i, name, st));
                 let wires = sections.wiring.unwrap_or_default();
@@ -425,19 +413,7 @@ impl Snapshot {
                 let plc = fx_sim(&mut s.entry(i).device).expect("checked above");
                 let model = plc.lock().unwrap_or_else(|p| p.into_inner()).model.name;
                 if st.model != model {
-                    return Err(Error::usage(msg!(
-                        "snapshot-model-differs",
-                        name = name,
-                        saved = st.model.as_str(),
-                        model = model,
-                        article = "an"
-                    ))
-                    .hint(msg!(
-                        "snapshot-open-as",
-                        name = name,
-                        scheme = "sim-fx",
-                        model = st.model.as_str()
-                    )));
+                    return Err(model_differs(name, &st.model, model, "sim-fx"));
                 }
                 fx.push((i, name, st));
             }
@@ -445,19 +421,7 @@ impl Snapshot {
                 let u = umpk_sim(&mut s.entry(i).device).expect("checked above");
                 let model = u.lock().unwrap_or_else(|p| p.into_inner()).model.name;
                 if st.model != model {
-                    return Err(Error::usage(msg!(
-                        "snapshot-model-differs",
-                        name = name,
-                        saved = st.model.as_str(),
-                        model = model,
-                        article = "a"
-                    ))
-                    .hint(msg!(
-                        "snapshot-open-as",
-                        name = name,
-                        scheme = "sim-umpk",
-                        model = st.model.as_str()
-                    )));
+                    return Err(model_differs(name, &st.model, model, "sim-umpk"));
                 }
                 umpk.push((i, name, st));
             }
@@ -620,6 +584,15 @@ pub fn list() -> Vec<(String, PathBuf)> {
         .collect();
     out.sort();
     out
+}
+
+/// The refusal to restore a saved `saved` into `name`, a simulator of `model` opened with
+/// `scheme` (`sim`, `sim-fx`, `sim-umpk`), and how to open the right one. The English article
+/// goes with how the family's name is said ("an FX3U", "a K205", "a UMPK").
+fn model_differs(name: &str, saved: &str, model: &str, scheme: &str) -> Error {
+    let article = if scheme == "sim-fx" { "an" } else { "a" };
+    Error::usage(msg!("snapshot-model-differs", name = name, saved = saved, model = model, article = article))
+        .hint(msg!("snapshot-open-as", name = name, scheme = scheme, model = saved))
 }
 
 #[cfg(test)]
